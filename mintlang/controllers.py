@@ -1,0 +1,157 @@
+"""What each controller supports: channel ranges, name-table and nesting limits.
+
+Figures from the Mint v4 reference guide (MN1262): the "Dot Parameters" table
+(section 10.2, line 5613), the interpreter limitations of section 3.9 (lines
+1904-1976), the #INx and #FASTINx entries (lines 5848-5950) and the 255
+character line limit (line 255).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from mintlang.keyworddb.model import Controller
+
+
+@dataclass(frozen=True, slots=True)
+class ChannelRange:
+    """Inclusive range of valid numbers; ``None`` where the controller has none."""
+
+    low: int
+    high: int
+
+    def __contains__(self, value: object) -> bool:
+        return isinstance(value, int) and self.low <= value <= self.high
+
+    def __str__(self) -> str:
+        return str(self.low) if self.low == self.high else f"{self.low} to {self.high}"
+
+
+@dataclass(frozen=True, slots=True)
+class NestingLimits:
+    if_blocks: int
+    for_loops: int
+    gosub: int
+    other_loops: int  # WHILE, LOOP and REPEAT combined
+    loops_and_ifs: int  # the three loop kinds plus IF blocks
+
+
+@dataclass(frozen=True, slots=True)
+class ControllerProfile:
+    controller: Controller
+    title: str
+    axes: ChannelRange
+    digital_inputs: ChannelRange
+    digital_outputs: ChannelRange
+    adc: ChannelRange
+    dac: ChannelRange | None
+    auxiliary_dac: ChannelRange | None
+    encoders: ChannelRange
+    auxiliary_encoders: ChannelRange
+    fast_inputs: frozenset[int]  # x of the #FASTINx handlers the controller calls
+    max_variables: int
+    max_labels: int
+    max_macros: int
+    nesting: NestingLimits
+    max_line_length: int = 255
+
+    @property
+    def axis_count(self) -> int:
+        return self.axes.high + 1
+
+
+_FULL_NESTING = NestingLimits(if_blocks=255, for_loops=50, gosub=100, other_loops=50, loops_and_ifs=255)
+_PC_NESTING = NestingLimits(if_blocks=100, for_loops=20, gosub=50, other_loops=20, loops_and_ifs=255)
+
+PROFILES: dict[Controller, ControllerProfile] = {
+    Controller.NEXTMOVE_PCI: ControllerProfile(
+        Controller.NEXTMOVE_PCI,
+        "NextMove PCI",
+        axes=ChannelRange(0, 11),
+        digital_inputs=ChannelRange(0, 19),  # 39 / 59 with expansion cards (footnote 8)
+        digital_outputs=ChannelRange(0, 11),
+        adc=ChannelRange(0, 11),
+        dac=ChannelRange(0, 11),
+        auxiliary_dac=None,
+        encoders=ChannelRange(0, 11),
+        auxiliary_encoders=ChannelRange(0, 2),
+        fast_inputs=frozenset({0, 1, 2, 3}),
+        max_variables=255,
+        max_labels=255,
+        max_macros=255,
+        nesting=_FULL_NESTING,
+    ),
+    Controller.NEXTMOVE_PC: ControllerProfile(
+        Controller.NEXTMOVE_PC,
+        "NextMove PC",
+        axes=ChannelRange(0, 7),
+        digital_inputs=ChannelRange(0, 23),
+        digital_outputs=ChannelRange(0, 11),
+        adc=ChannelRange(0, 7),
+        dac=ChannelRange(0, 7),
+        auxiliary_dac=None,
+        encoders=ChannelRange(0, 7),
+        auxiliary_encoders=ChannelRange(0, 0),
+        fast_inputs=frozenset({0}),
+        max_variables=100,
+        max_labels=100,
+        max_macros=100,
+        nesting=_PC_NESTING,
+    ),
+    Controller.NEXTMOVE_BX: ControllerProfile(
+        Controller.NEXTMOVE_BX,
+        "NextMove BX",
+        axes=ChannelRange(0, 7),
+        digital_inputs=ChannelRange(0, 15),
+        digital_outputs=ChannelRange(0, 7),
+        adc=ChannelRange(0, 7),
+        dac=ChannelRange(0, 3),
+        auxiliary_dac=None,
+        encoders=ChannelRange(0, 3),
+        auxiliary_encoders=ChannelRange(0, 0),
+        fast_inputs=frozenset({0, 1, 2, 3}),
+        max_variables=255,
+        max_labels=255,
+        max_macros=255,
+        nesting=_FULL_NESTING,
+    ),
+    Controller.MINTDRIVE: ControllerProfile(
+        Controller.MINTDRIVE,
+        "MintDrive",
+        axes=ChannelRange(0, 0),
+        digital_inputs=ChannelRange(0, 17),
+        digital_outputs=ChannelRange(0, 8),
+        adc=ChannelRange(0, 3),
+        dac=None,
+        auxiliary_dac=ChannelRange(0, 3),
+        encoders=ChannelRange(0, 0),
+        auxiliary_encoders=ChannelRange(0, 0),
+        fast_inputs=frozenset({0, 2}),
+        max_variables=255,
+        max_labels=255,
+        max_macros=255,
+        nesting=_FULL_NESTING,
+    ),
+    Controller.SERVONODE51: ControllerProfile(
+        Controller.SERVONODE51,
+        "ServoNode 51",
+        axes=ChannelRange(0, 0),
+        digital_inputs=ChannelRange(0, 5),
+        digital_outputs=ChannelRange(0, 2),
+        adc=ChannelRange(0, 0),
+        dac=None,
+        auxiliary_dac=ChannelRange(0, 1),
+        encoders=ChannelRange(0, 0),
+        auxiliary_encoders=ChannelRange(0, 0),
+        fast_inputs=frozenset({0, 2}),
+        max_variables=255,
+        max_labels=255,
+        max_macros=255,
+        nesting=_FULL_NESTING,
+    ),
+}
+
+
+def profile(controller: Controller | str) -> ControllerProfile:
+    """The profile of a controller given by enum or id (``"nextmove-bx"``)."""
+    return PROFILES[Controller(controller)]

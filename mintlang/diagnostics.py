@@ -1,0 +1,100 @@
+"""Diagnostics: findings about a source, as values.
+
+Expected problems in user programs are reported as ``Diagnostic`` values, never
+raised. Positions are character offsets into the decoded source; ``LineIndex``
+turns them into the 1-based lines and columns that users and editors see.
+"""
+
+from __future__ import annotations
+
+import re
+from bisect import bisect_right
+from dataclasses import dataclass, field
+from enum import StrEnum
+from typing import NamedTuple
+
+_LINE_BREAK = re.compile(r"\r\n|\r|\n")
+
+
+class Severity(StrEnum):
+    ERROR = "error"
+    WARNING = "warning"
+    INFO = "info"
+
+
+class Span(NamedTuple):
+    """A half-open range of character offsets ``[start, end)``.
+
+    A named tuple, not a dataclass: every token and node has one, and tuple
+    construction is several times cheaper.
+    """
+
+    start: int
+    end: int
+
+
+@dataclass(frozen=True, slots=True)
+class Edit:
+    """Replace the text of ``span`` with ``text``."""
+
+    span: Span
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class Fix:
+    """A named set of edits that resolves a diagnostic."""
+
+    title: str
+    edits: tuple[Edit, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Diagnostic:
+    """One finding.
+
+    ``code`` is ``E<n>`` for the controller's own error numbers (``mint_error``
+    then holds ``n``) and ``W…``/``I…`` for the toolchain's own checks.
+    """
+
+    code: str
+    severity: Severity
+    span: Span
+    message: str
+    mint_error: int | None = None
+    fixes: tuple[Fix, ...] = field(default=())
+    path: str | None = None  # set when a diagnostic concerns another file (configuration)
+
+
+@dataclass(frozen=True, slots=True)
+class Position:
+    line: int  # 1-based
+    column: int  # 1-based, in characters
+
+
+class LineIndex:
+    """Maps offsets to lines and columns; built once per source text."""
+
+    __slots__ = ("_starts", "_length")
+
+    def __init__(self, text: str) -> None:
+        self._starts = [0, *(match.end() for match in _LINE_BREAK.finditer(text))]
+        self._length = len(text)
+
+    @property
+    def line_count(self) -> int:
+        return len(self._starts)
+
+    def line_start(self, line: int) -> int:
+        """Offset of the first character of 1-based ``line``."""
+        return self._starts[line - 1]
+
+    def position(self, offset: int) -> Position:
+        offset = max(0, min(offset, self._length))
+        line = bisect_right(self._starts, offset)
+        return Position(line, offset - self._starts[line - 1] + 1)
+
+    def offset(self, line: int, column: int) -> int:
+        """Offset of a 1-based line and column, clamped to the text."""
+        line = max(1, min(line, len(self._starts)))
+        return min(self._starts[line - 1] + column - 1, self._length)

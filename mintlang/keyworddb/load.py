@@ -1,0 +1,188 @@
+"""Load the generated keyword database into the typed records of ``model``.
+
+The JSON is package data; it is read once per process and indexed so that
+every lookup the lexer makes is a dictionary hit.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field
+from functools import cache
+from importlib import resources
+from types import MappingProxyType
+from typing import Any, TypeVar
+
+from mintlang.keyworddb.model import (
+    Addressing,
+    Attributes,
+    Constant,
+    Controller,
+    ErrorCode,
+    ErrorKind,
+    Keyword,
+    KeywordKind,
+    MigrationClass,
+    Rename,
+    V3Constant,
+    V3Keyword,
+    ValueRange,
+)
+
+_Record = TypeVar("_Record")
+_CHANNEL_GLUED = re.compile(r"^(?P<base>.*?\D)(?P<channel>\d+)$")
+
+
+def _read(name: str) -> list[dict[str, Any]]:
+    text = resources.files("mintlang.keyworddb").joinpath("data", name).read_text(encoding="utf-8")
+    return json.loads(text)
+
+
+def _range(raw: dict[str, Any] | None) -> ValueRange | None:
+    return None if raw is None else ValueRange(raw["text"], raw["minimum"], raw["maximum"], raw["fractional"])
+
+
+def _attributes(raw: dict[str, Any]) -> Attributes:
+    return Attributes(
+        controllers=tuple(Controller(c) for c in raw["controllers"]),
+        read=raw["read"],
+        write=raw["write"],
+        command=raw["command"],
+        multi_axis=raw["multi_axis"],
+        scaled=raw["scaled"],
+        default=raw["default"],
+        range=_range(raw["range"]),
+    )
+
+
+def _keyword(raw: dict[str, Any]) -> Keyword:
+    return Keyword(
+        name=raw["name"],
+        abbreviations=tuple(raw["abbreviations"]),
+        kind=KeywordKind(raw["kind"]),
+        addressing=Addressing(raw["addressing"]),
+        channel_suffix=raw["channel_suffix"],
+        parameters=tuple(raw["parameters"]),
+        attributes=tuple(_attributes(row) for row in raw["attributes"]),
+        controllers=tuple(Controller(c) for c in raw["controllers"]),
+        formats=tuple(raw["formats"]),
+        constants=tuple(raw["constants"]),
+        see_also=tuple(raw["see_also"]),
+        summary=raw["summary"],
+        documented=raw["documented"],
+        line=raw["line"],
+        notes=tuple(raw["notes"]),
+    )
+
+
+def _v3_keyword(raw: dict[str, Any]) -> V3Keyword:
+    return V3Keyword(
+        name=raw["name"],
+        abbreviations=tuple(raw["abbreviations"]),
+        read=raw["read"],
+        write=raw["write"],
+        command=raw["command"],
+        addressing=Addressing(raw["addressing"]),
+        v4_names=tuple(raw["v4_names"]),
+        status=raw["status"],
+        migration=MigrationClass(raw["migration"]),
+        line=raw["line"],
+    )
+
+
+def _rename(raw: dict[str, Any]) -> Rename:
+    return Rename(raw["old"], raw["old_abbreviation"], tuple(raw["new"]), raw["status"], raw["line"])
+
+
+def _index(
+    records: Iterable[_Record], *keys: Callable[[_Record], Iterable[str]], fixed: Mapping[str, _Record] | None = None
+) -> Mapping[str, _Record]:
+    """Upper-cased word -> record.  ``fixed`` entries come first, then every name
+    before any abbreviation, each in record order; the first claim wins."""
+    index: dict[str, _Record] = dict(fixed or {})
+    records = list(records)
+    for key in keys:
+        for record in records:
+            for word in key(record):
+                index.setdefault(word.upper(), record)
+    return MappingProxyType(index)
+
+
+@dataclass(frozen=True)
+class KeywordDatabase:
+    """Everything the manuals say about keywords, constants and errors, indexed for lookup."""
+
+    keywords: Mapping[str, Keyword]
+    constants: Mapping[str, Constant]
+    errors: Mapping[int, ErrorCode]
+    v3_keywords: Mapping[str, V3Keyword]
+    v3_constants: Mapping[str, V3Constant]
+    renames: tuple[Rename, ...]
+    _words: Mapping[str, Keyword] = field(repr=False)
+    _v3_words: Mapping[str, V3Keyword] = field(repr=False)
+    _old_words: Mapping[str, Rename] = field(repr=False)
+
+    def lookup(self, word: str) -> Keyword | None:
+        """The v4 keyword ``word`` names or abbreviates, in any case.
+
+        A channel glued to a keyword that allows it (``IN3``, ``#FASTIN2``)
+        resolves to that keyword.
+        """
+        upper = word.upper()
+        if (found := self._words.get(upper)) is not None:
+            return found
+        match = _CHANNEL_GLUED.match(upper)
+        if match and (base := self._words.get(match["base"])) is not None and base.channel_suffix:
+            return base
+        return None
+
+    def lookup_v3(self, word: str) -> V3Keyword | None:
+        """The v3 keyword ``word`` names or abbreviates, in any case."""
+        return self._v3_words.get(word.upper())
+
+    def rename_of(self, word: str) -> Rename | None:
+        """The rename record of an old v3 name or abbreviation the v4 guide retires."""
+        return self._old_words.get(word.upper())
+
+
+def _by_name(records: Iterable[_Record], name: Callable[[_Record], str]) -> Mapping[str, _Record]:
+    return MappingProxyType({name(record).upper(): record for record in records})
+
+
+def _abbreviation_choices(keywords: Mapping[str, Keyword]) -> dict[str, Keyword]:
+    """The generator's resolution of abbreviations the guide gives to two keywords."""
+    return {
+        conflict["subject"].upper(): keywords[conflict["resolved_to"]]
+        for conflict in _read("conflicts.json")
+        if conflict["kind"] == "abbreviation"
+    }
+
+
+@cache
+def database() -> KeywordDatabase:
+    """The database shipped with the package, loaded once per process."""
+    keywords = [_keyword(raw) for raw in _read("keywords_v4.json")]
+    v3_keywords = [_v3_keyword(raw) for raw in _read("keywords_v3.json")]
+    renames = tuple(_rename(raw) for raw in _read("renames_v3_to_v4.json"))
+    constants = [Constant(r["name"], r["value"], r["keyword"], r["line"]) for r in _read("constants_v4.json")]
+    errors = [
+        ErrorCode(r["code"], ErrorKind(r["kind"]), r["title"], r["constant"], r["line"]) for r in _read("errors.json")
+    ]
+    v3_constants = [V3Constant(r["name"], r["value"], r["v4_name"], r["line"]) for r in _read("constants_v3.json")]
+    by_name = _by_name(keywords, lambda k: k.name)
+    preferred = sorted(keywords, key=lambda k: (not k.documented, k.line))
+    return KeywordDatabase(
+        keywords=by_name,
+        constants=_by_name(constants, lambda c: c.name),
+        errors=MappingProxyType({error.code: error for error in errors}),
+        v3_keywords=_by_name(v3_keywords, lambda k: k.name),
+        v3_constants=_by_name(v3_constants, lambda c: c.name),
+        renames=renames,
+        _words=_index(
+            preferred, lambda k: (k.name,), lambda k: k.abbreviations, fixed=_abbreviation_choices(by_name)
+        ),
+        _v3_words=_index(v3_keywords, lambda k: (k.name,), lambda k: k.abbreviations),
+        _old_words=_index(renames, lambda r: (r.old,), lambda r: (r.old_abbreviation,) if r.old_abbreviation else ()),
+    )

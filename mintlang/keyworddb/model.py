@@ -1,0 +1,161 @@
+"""Typed records of the keyword database.
+
+The JSON files beside this module are generated from the manuals by
+``tools/keyworddb``; these frozen dataclasses are the only shape the rest of the
+project sees, so the generator and the consumers agree on one contract.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import StrEnum
+
+
+class Controller(StrEnum):
+    """Controllers the Mint v4 reference guide documents."""
+
+    NEXTMOVE_PCI = "nextmove-pci"
+    NEXTMOVE_PC = "nextmove-pc"
+    NEXTMOVE_BX = "nextmove-bx"
+    MINTDRIVE = "mintdrive"
+    SERVONODE51 = "servonode51"
+
+
+class Addressing(StrEnum):
+    """What the dot parameter or bracket list of a keyword selects."""
+
+    AXIS = "axis"
+    CHANNEL = "channel"
+    NONE = "none"
+
+
+class KeywordKind(StrEnum):
+    """How a keyword takes part in the grammar."""
+
+    PARAMETER = "parameter"  # read and/or written value, e.g. SPEED, POS, IN
+    COMMAND = "command"  # does something, e.g. GO, STOP, LOCATE
+    FUNCTION = "function"  # returns a value from bracketed arguments, e.g. SIN, POW
+    OPERATOR = "operator"  # AND, OR, XOR, NOT, MOD
+    STATEMENT = "statement"  # block and flow words: IF, FOR, GOSUB, DIM, PRINT, REM ...
+    EVENT = "event"  # reserved labels: #ONERROR, #IN0 .. #INx ...
+    COMMAND_LINE = "command_line"  # only valid at the command line: NEW, EDIT, LIST ...
+
+
+@dataclass(frozen=True, slots=True)
+class ValueRange:
+    """A keyword's accepted values as the attributes table prints them."""
+
+    text: str
+    minimum: float | None
+    maximum: float | None
+    fractional: bool  # the printed range has a decimal part, so fractions are accepted
+
+
+@dataclass(frozen=True, slots=True)
+class Attributes:
+    """One row of a keyword's attributes table, for the controllers it names."""
+
+    controllers: tuple[Controller, ...]
+    read: bool
+    write: bool
+    command: bool
+    multi_axis: bool
+    scaled: bool
+    default: str | None
+    range: ValueRange | None
+
+
+@dataclass(frozen=True, slots=True)
+class Keyword:
+    """A Mint v4 keyword from chapter 10 of the reference guide."""
+
+    name: str
+    abbreviations: tuple[str, ...]
+    kind: KeywordKind
+    addressing: Addressing
+    channel_suffix: bool  # also written with the channel glued on: IN3, OUT1, ADC0
+    parameters: tuple[str, ...]  # bracketed arguments, e.g. POW -> ("x", "y")
+    attributes: tuple[Attributes, ...]
+    controllers: tuple[Controller, ...]
+    formats: tuple[str, ...]
+    constants: tuple[str, ...]
+    see_also: tuple[str, ...]
+    summary: str  # our own words, for hover
+    documented: bool  # False for keywords only listed (advanced and CAN stubs)
+    line: int  # line of the entry in the v4 guide
+    notes: tuple[str, ...]  # conflicts the manual itself contains about this keyword
+
+    def attributes_for(self, controller: Controller) -> Attributes | None:
+        """The attributes row that applies to ``controller``, if the manual gives one."""
+        for row in self.attributes:
+            if controller in row.controllers:
+                return row
+        return None
+
+
+@dataclass(frozen=True, slots=True)
+class Constant:
+    """A predefined constant (``_TRUE``, ``_hmPOSITIVE_SWITCH`` ...)."""
+
+    name: str
+    value: float
+    keyword: str | None  # the keyword whose entry defines it; None for general constants
+    line: int
+
+
+class ErrorKind(StrEnum):
+    MML = "mml"  # motion library errors 0 .. 108
+    MINT = "mint"  # language errors 500 .. 502, 2000 .. 2021, 3000 .. 3007
+
+
+@dataclass(frozen=True, slots=True)
+class ErrorCode:
+    code: int
+    kind: ErrorKind
+    title: str  # the short title as the controller reports it
+    constant: str | None  # e.g. _erINVALID_AXIS
+    line: int
+
+
+class MigrationClass(StrEnum):
+    NONE = "none"  # unchanged in v4
+    MECHANICAL = "mechanical"
+    SEMI = "semi"
+    MANUAL = "manual"
+
+
+@dataclass(frozen=True, slots=True)
+class V3Keyword:
+    """A keyword of the Mint v3 programming guide and what became of it in v4."""
+
+    name: str
+    abbreviations: tuple[str, ...]
+    read: bool
+    write: bool
+    command: bool
+    addressing: Addressing
+    v4_names: tuple[str, ...]  # the v4 keyword(s) it maps to; empty when removed
+    status: str  # "same", "renamed", "replaced", "removed", "changed"
+    migration: MigrationClass
+    line: int  # line of the entry in the v3 guide
+
+
+@dataclass(frozen=True, slots=True)
+class Rename:
+    """One of the old keywords the v4 guide marks as replaced or removed."""
+
+    old: str
+    old_abbreviation: str | None
+    new: tuple[str, ...]  # empty when removed without replacement
+    status: str  # "replaced" or "removed"
+    line: int  # line in the v4 guide
+
+
+@dataclass(frozen=True, slots=True)
+class V3Constant:
+    """A predefined constant of Mint v3 and its v4 counterpart, if any."""
+
+    name: str
+    value: float
+    v4_name: str | None
+    line: int  # line in the v3 guide

@@ -1,0 +1,163 @@
+"""Matching block openers with their closers, as the controller's compiler does.
+
+The grammar leaves IF..DO/ELSE/ENDIF, FOR/NEXT, REPEAT/UNTIL, WHILE/ENDW and
+LOOP/ENDL as separate statements; a stack matches them here. A closer whose
+opener is not on top of the stack is the controller's error 2009 (NEXT),
+2011 (ELSE/ENDIF), 2012 (ENDW), 2013 (UNTIL) or 2014 (ENDL); it is then
+ignored, so one misplaced closer gives one error. The nesting limits of
+section 3.9 give error 2015.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import StrEnum
+
+from mintlang.controllers import ControllerProfile, NestingLimits
+from mintlang.diagnostics import Diagnostic, Severity, Span
+from mintlang.syntax import nodes as n
+
+
+class BlockKind(StrEnum):
+    IF = "IF"
+    FOR = "FOR"
+    REPEAT = "REPEAT"
+    WHILE = "WHILE"
+    LOOP = "LOOP"
+
+
+_CLOSERS: dict[str, tuple[BlockKind, int, str]] = {
+    "ENDIF": (BlockKind.IF, 2011, "ENDIF without IF .. DO"),
+    "NEXT": (BlockKind.FOR, 2009, "NEXT without FOR"),
+    "ENDW": (BlockKind.WHILE, 2012, "ENDW without WHILE"),
+    "ENDL": (BlockKind.LOOP, 2014, "ENDL without LOOP"),
+}
+_CLOSING_WORD = {
+    BlockKind.IF: "ENDIF",
+    BlockKind.FOR: "NEXT",
+    BlockKind.REPEAT: "UNTIL",
+    BlockKind.WHILE: "ENDW",
+    BlockKind.LOOP: "ENDL",
+}
+LOOPS = frozenset({BlockKind.FOR, BlockKind.REPEAT, BlockKind.WHILE, BlockKind.LOOP})
+
+
+@dataclass(frozen=True, slots=True)
+class Block:
+    """A matched (or unclosed) block; the LSP folds it, the runtime compiles its jumps."""
+
+    kind: BlockKind
+    opener: n.Statement
+    opener_line: int
+    middle: n.Statement | None  # the ELSE of an IF block
+    closer: n.Statement | None  # None when never closed
+    closer_line: int | None
+
+
+@dataclass(frozen=True, slots=True)
+class Structure:
+    blocks: tuple[Block, ...]
+    diagnostics: tuple[Diagnostic, ...]
+
+
+@dataclass(slots=True)
+class _Open:
+    kind: BlockKind
+    opener: n.Statement
+    line: int
+    middle: n.Statement | None = None
+
+
+def _opener_kind(statement: n.Statement) -> BlockKind | None:
+    match statement:
+        case n.IfDo():
+            return BlockKind.IF
+        case n.For():
+            return BlockKind.FOR
+        case n.While():
+            return BlockKind.WHILE
+        case n.BlockWord(word="REPEAT"):
+            return BlockKind.REPEAT
+        case n.BlockWord(word="LOOP"):
+            return BlockKind.LOOP
+    return None
+
+
+def _error(code: int, span: Span, message: str) -> Diagnostic:
+    return Diagnostic(f"E{code}", Severity.ERROR, span, message, mint_error=code)
+
+
+def match_blocks(lines: tuple[n.Line, ...], controller: ControllerProfile) -> Structure:
+    """Match the blocks of one file and check the nesting limits."""
+    blocks: list[Block] = []
+    diagnostics: list[Diagnostic] = []
+    stack: list[_Open] = []
+    limits = controller.nesting
+    for line in lines:
+        for statement in n.walk_statements(line.statements):
+            kind = _opener_kind(statement)
+            if kind is not None:
+                stack.append(_Open(kind, statement, line.number))
+                problem = _nesting_problem(stack, limits)
+                if problem is not None:
+                    diagnostics.append(_error(2015, statement.span, problem))
+                continue
+            if isinstance(statement, n.Until):
+                _close(stack, BlockKind.REPEAT, statement, line.number, blocks, diagnostics, 2013, "UNTIL without REPEAT")
+            elif isinstance(statement, n.BlockWord):
+                if statement.word == "ELSE":
+                    top = stack[-1] if stack else None
+                    if top is None or top.kind is not BlockKind.IF or top.middle is not None:
+                        diagnostics.append(_error(2011, statement.span, "ELSE without IF .. DO"))
+                    else:
+                        top.middle = statement
+                elif statement.word in _CLOSERS:
+                    expected, code, message = _CLOSERS[statement.word]
+                    _close(stack, expected, statement, line.number, blocks, diagnostics, code, message)
+    for unclosed in stack:
+        blocks.append(Block(unclosed.kind, unclosed.opener, unclosed.line, unclosed.middle, None, None))
+        word = _CLOSING_WORD[unclosed.kind]
+        diagnostics.append(
+            Diagnostic(
+                "W110",
+                Severity.WARNING,
+                unclosed.opener.span,
+                f"this {unclosed.kind.value} block is never closed with {word}",
+            )
+        )
+    blocks.sort(key=lambda block: block.opener.span.start)
+    return Structure(tuple(blocks), tuple(diagnostics))
+
+
+def _close(
+    stack: list[_Open],
+    kind: BlockKind,
+    closer: n.Statement,
+    line: int,
+    blocks: list[Block],
+    diagnostics: list[Diagnostic],
+    code: int,
+    message: str,
+) -> None:
+    if not stack or stack[-1].kind is not kind:
+        if stack:
+            message += f" (the innermost open block is {stack[-1].kind.value} on line {stack[-1].line})"
+        diagnostics.append(_error(code, closer.span, message))
+        return
+    top = stack.pop()
+    blocks.append(Block(kind, top.opener, top.line, top.middle, closer, line))
+
+
+def _nesting_problem(stack: list[_Open], limits: NestingLimits) -> str | None:
+    ifs = sum(1 for entry in stack if entry.kind is BlockKind.IF)
+    fors = sum(1 for entry in stack if entry.kind is BlockKind.FOR)
+    others = len(stack) - ifs - fors
+    if ifs > limits.if_blocks:
+        return f"IF blocks nested more than {limits.if_blocks} deep"
+    if fors > limits.for_loops:
+        return f"FOR loops nested more than {limits.for_loops} deep"
+    if others > limits.other_loops:
+        return f"WHILE, LOOP and REPEAT blocks nested more than {limits.other_loops} deep together"
+    if others + ifs > limits.loops_and_ifs:
+        return f"loops and IF blocks nested more than {limits.loops_and_ifs} deep together"
+    return None

@@ -1,0 +1,212 @@
+"""The symbol table of a configuration file and a program file.
+
+Names are identified as the controller identifies them: case-insensitive, first
+ten characters significant (``identity``). Variables and macros of the
+configuration are visible in the program; labels are not shared between the
+two files. Declarations count in compile order (configuration first, then the
+program, each top to bottom), so every reference records whether its name was
+already declared when the compiler reached it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass, field
+from enum import StrEnum
+
+from mintlang.diagnostics import Span
+from mintlang.dialect import Dialect
+from mintlang.syntax import nodes as n
+from mintlang.syntax.parser import Document
+
+
+class Unit(StrEnum):
+    """Which file of an application a name lives in."""
+
+    CONFIGURATION = "configuration"
+    PROGRAM = "program"
+
+
+class SymbolKind(StrEnum):
+    VARIABLE = "variable"
+    ARRAY = "array"
+    LABEL = "label"
+    MACRO = "macro"
+
+
+@dataclass(frozen=True, slots=True)
+class Occurrence:
+    """One place a name is written."""
+
+    unit: Unit
+    span: Span
+    spelling: str
+    declared_before: bool  # the name was declared earlier in compile order
+    is_write: bool = False
+
+
+@dataclass(slots=True)
+class Symbol:
+    """A user name with its definition and every reference.
+
+    Mutable only while the table is being built; the table hands out no way
+    to change it afterwards.
+    """
+
+    kind: SymbolKind
+    identity: str
+    unit: Unit
+    definitions: list[Occurrence] = field(default_factory=list)  # DIMs, labels, DEFINEs
+    references: list[Occurrence] = field(default_factory=list)
+    array_size: int | None = None  # elements, when given by a constant
+
+    @property
+    def name(self) -> str:
+        """The spelling of the first definition (or first use)."""
+        first = self.definitions[0] if self.definitions else self.references[0]
+        return first.spelling
+
+    @property
+    def definition(self) -> Occurrence | None:
+        return self.definitions[0] if self.definitions else None
+
+    def occurrences(self) -> Iterator[Occurrence]:
+        yield from self.definitions
+        yield from self.references
+
+
+@dataclass(frozen=True, slots=True)
+class SymbolTable:
+    variables: Mapping[str, Symbol]  # variables and arrays, shared by both files
+    macros: Mapping[str, Symbol]  # shared by both files
+    labels: Mapping[Unit, Mapping[str, Symbol]]  # per file
+
+    def all(self) -> Iterator[Symbol]:
+        yield from self.variables.values()
+        yield from self.macros.values()
+        for table in self.labels.values():
+            yield from table.values()
+
+    def at(self, unit: Unit, offset: int) -> tuple[Symbol, Occurrence] | None:
+        """The symbol written at ``offset`` of ``unit``, for go-to-definition and rename."""
+        for symbol in self.all():
+            for occurrence in symbol.occurrences():
+                if occurrence.unit is unit and occurrence.span.start <= offset <= occurrence.span.end:
+                    return symbol, occurrence
+        return None
+
+
+class _Collector:
+    """Walks the statements of both files in compile order."""
+
+    def __init__(self, dialect: Dialect) -> None:
+        self.implicit_declarations = dialect is Dialect.V3  # v3: any assignment declares
+        self.variables: dict[str, Symbol] = {}
+        self.macros: dict[str, Symbol] = {}
+        self.labels: dict[Unit, dict[str, Symbol]] = {Unit.CONFIGURATION: {}, Unit.PROGRAM: {}}
+
+    def collect(self, document: Document, unit: Unit) -> None:
+        for definition in document.definitions:
+            symbol = self.macros.setdefault(
+                n.identity(definition.name), Symbol(SymbolKind.MACRO, n.identity(definition.name), unit)
+            )
+            symbol.definitions.append(Occurrence(unit, definition.name_span, definition.name, True))
+        for expansion in document.expansions:
+            symbol = self.macros.get(expansion.macro)
+            if symbol is not None:
+                symbol.references.append(Occurrence(unit, expansion.span, expansion.macro, True))
+        labels = self.labels[unit]
+        for line in document.lines:
+            if line.label is not None:
+                self._label(labels, line.label, unit).definitions.append(
+                    Occurrence(unit, line.label.span, line.label.text, True)
+                )
+        for line in document.lines:
+            for statement in n.walk_statements(line.statements):
+                self._statement(statement, unit, labels)
+
+    def _label(self, labels: dict[str, Symbol], name: n.Name, unit: Unit) -> Symbol:
+        return labels.setdefault(name.identity, Symbol(SymbolKind.LABEL, name.identity, unit))
+
+    def _declare(self, name: n.Name, unit: Unit, size: n.Expression | None) -> None:
+        kind = SymbolKind.ARRAY if size is not None else SymbolKind.VARIABLE
+        symbol = self.variables.get(name.identity)
+        declared = symbol is not None and bool(symbol.definitions)
+        if symbol is None:
+            symbol = self.variables[name.identity] = Symbol(kind, name.identity, unit)
+        if size is not None:
+            symbol.kind = SymbolKind.ARRAY
+            if isinstance(size, n.Number) and size.value == int(size.value):
+                symbol.array_size = int(size.value)
+        symbol.definitions.append(Occurrence(unit, name.span, name.text, declared, is_write=True))
+
+    def _use(self, name: n.Name, unit: Unit, *, write: bool = False, element: bool = False) -> None:
+        symbol = self.variables.get(name.identity)
+        if symbol is None and write and self.implicit_declarations:
+            self._declare(name, unit, None)
+            return
+        declared = symbol is not None and bool(symbol.definitions)
+        if symbol is None:
+            kind = SymbolKind.ARRAY if element else SymbolKind.VARIABLE
+            symbol = self.variables[name.identity] = Symbol(kind, name.identity, unit)
+        symbol.references.append(Occurrence(unit, name.span, name.text, declared, is_write=write))
+
+    def _statement(self, statement: n.Statement, unit: Unit, labels: dict[str, Symbol]) -> None:
+        match statement:
+            case n.Dim(name=name, size=size, values=values):
+                self._expressions((size, *values), unit)
+                self._declare(name, unit, size)
+            case n.Assignment(target=target, value=value):
+                self._expressions((value,), unit)
+                if isinstance(target, n.ElementRef):
+                    self._expressions((target.index,), unit)
+                self._use(target.name, unit, write=True, element=isinstance(target, n.ElementRef))
+            case n.For(variable=variable, start=start, end=end, step=step):
+                self._use(variable, unit, write=True)
+                self._expressions((start, end, step), unit)
+            case n.Input(target=target, terminal=terminal, using=using):
+                self._expressions((terminal, *using), unit)
+                if isinstance(target, n.ElementRef):
+                    self._expressions((target.index,), unit)
+                self._use(target.name, unit, write=True, element=isinstance(target, n.ElementRef))
+            case n.Jump(label=label):
+                self._label(labels, label, unit).references.append(
+                    Occurrence(unit, label.span, label.text, label.identity in labels and bool(labels[label.identity].definitions))
+                )
+            case n.BareName(name=name):
+                pass  # an unknown word, not a variable reference (3007)
+            case _:
+                self._expressions(_expressions_of(statement), unit)
+
+    def _expressions(self, expressions: tuple[n.Expression | n.StringLiteral | None, ...], unit: Unit) -> None:
+        for expression in expressions:
+            for node in n.walk_expression(expression):
+                if isinstance(node, n.VariableRef | n.ElementRef):
+                    self._use(node.name, unit, element=isinstance(node, n.ElementRef))
+
+
+def _expressions_of(statement: n.Statement) -> tuple[n.Expression | n.StringLiteral | None, ...]:
+    """The expressions a statement reads (statements that write names are handled apart)."""
+    match statement:
+        case n.KeywordStatement(keyword=keyword, terminal=terminal, values=values, arguments=arguments):
+            return (keyword, terminal, *(values or ()), *arguments)
+        case n.FunctionStatement(call=call, values=values):
+            return (call, *(values or ()))
+        case n.IfThen(condition=condition) | n.IfDo(condition=condition):
+            return (condition,)
+        case n.Until(condition=condition) | n.While(condition=condition) | n.Pause(condition=condition):
+            return (condition,)
+        case n.Axes(selector=selector) if selector is not None:
+            return selector.items
+        case n.Print(terminal=terminal, items=items, using=using):
+            return (terminal, *(item.value for item in items), *using)
+    return ()
+
+
+def build_symbols(program: Document, configuration: Document | None = None) -> SymbolTable:
+    """The symbol table of an application: its configuration (if any) and its program."""
+    collector = _Collector(program.dialect)
+    if configuration is not None:
+        collector.collect(configuration, Unit.CONFIGURATION)
+    collector.collect(program, Unit.PROGRAM)
+    return SymbolTable(collector.variables, collector.macros, collector.labels)

@@ -1,0 +1,276 @@
+"""The lossless, line-oriented Mint lexer.
+
+One compiled regular expression finds the next lexeme; a little state decides
+what it means where Mint's grammar depends on position:
+
+* ``#name`` is a label only as the first non-blank of a line (else ``#`` selects a terminal);
+* ``.`` right after a keyword is the dot parameter (``SPEED.1``), elsewhere it starts a number (``.5``);
+* ``REM`` comments the rest of the line; ``IN3`` is keyword IN with channel 3;
+* a number with a leading zero is binary (``011011``), so ``05`` is invalid.
+
+Lexing a line depends only on the line's text, so results are cached per line:
+programs repeat lines (``GO``, ``PAUSE IDLE``, ``RETURN``) and the language
+server re-lexes on every keystroke.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import lru_cache
+
+from mintlang.diagnostics import Diagnostic, Edit, Fix, Severity, Span
+from mintlang.dialect import Dialect
+from mintlang.syntax.tokens import TRIVIA, Token, TokenKind
+from mintlang.syntax.vocabulary import Vocabulary, vocabulary
+
+_K = TokenKind
+
+_LEXEME = re.compile(
+    r"""
+    (?P<ws>[ \t\f\v\u00a0\ufeff]+)
+  | (?P<word>[A-Za-z_][A-Za-z0-9_]*)
+  | (?P<number>0[xX][0-9A-Za-z_]*|[0-9][0-9A-Za-z_]*(?:\.[0-9]*)?|\.[0-9]+)
+  | (?P<string>["\u201c\u201d\u201e\u201f\u2033][^"\u201c\u201d\u201e\u201f\u2033\r\n]*["\u201c\u201d\u201e\u201f\u2033]?)
+  | (?P<char>'[^'\r\n]?'?)
+  | (?P<hash>\#[A-Za-z0-9_]*)
+  | (?P<punct><>|<=|>=|[-<>=+*/%&|!~^()\[\],;:?.])
+  | (?P<invalid>[^ \t\f\v\u00a0\ufeff\r\nA-Za-z0-9_"\u201c\u201d\u201e\u201f\u2033'\#<>=+*/%&|!~^()\[\],;:?.-]+)
+    """,
+    re.VERBOSE,
+)
+_LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)?")
+_DIGITS_AFTER_DOT = re.compile(r"[0-9]+")
+
+_PUNCTUATION: dict[str, TokenKind] = {
+    "<>": _K.NOTEQUAL,
+    "<=": _K.LESSEQUAL,
+    ">=": _K.MOREEQUAL,
+    "<": _K.LESSTHAN,
+    ">": _K.MORETHAN,
+    "=": _K.EQUAL,
+    "+": _K.PLUS,
+    "-": _K.MINUS,
+    "*": _K.STAR,
+    "/": _K.SLASH,
+    "%": _K.MOD,
+    "&": _K.AND,
+    "|": _K.OR,
+    "!": _K.NOT,
+    "~": _K.TILDE,
+    "^": _K.CIRCUMFLEX,
+    "(": _K.LPAR,
+    ")": _K.RPAR,
+    "[": _K.LSQB,
+    "]": _K.RSQB,
+    ",": _K.COMMA,
+    ";": _K.SEMICOLON,
+    ":": _K.COLON,
+    "?": _K.PRINT,
+    ".": _K.DOT,
+}
+# After these (with no space between), "." is the dot parameter, not a number.
+_DOT_OWNERS = frozenset({_K.KEYWORD, _K.FUNCTION, _K.DOT, _K.AXES})
+
+_TYPOGRAPHIC_QUOTES = "\u201c\u201d\u201e\u201f\u2033"
+
+
+@dataclass(frozen=True, slots=True)
+class LexedLine:
+    """One physical line, lexed: offsets are relative to the line's start.
+
+    Besides all its tokens, it keeps the significant ones as parallel arrays,
+    which is the form the parser consumes.
+    """
+
+    tokens: tuple[Token, ...]
+    issues: tuple[Diagnostic, ...]
+    kinds: tuple[TokenKind, ...]  # significant tokens only
+    texts: tuple[str, ...]
+    starts: tuple[int, ...]
+    ends: tuple[int, ...]
+    comment_end: int  # end of a REM comment, or 0: comments belong to the line's span
+    length: int  # including the line break
+
+
+def _number_issue(text: str, dialect: Dialect) -> str | None:
+    """Why a number lexeme is not a valid Mint number, or None when it is."""
+    if text[:2] in ("0x", "0X"):
+        if dialect is Dialect.V3:
+            return "hexadecimal numbers need Mint v4"
+        digits = text[2:].replace("_", "")
+        if not digits or any(c not in "0123456789abcdefABCDEF" for c in digits):
+            return f"'{text}' is not a valid hexadecimal number"
+        return None
+    integer, _, fraction = text.partition(".")
+    if not integer.replace("_", "").isdigit() and integer:
+        return f"'{text}' is not a valid number"
+    if not fraction.isdigit() and fraction:
+        return f"'{text}' is not a valid number"
+    if "_" in integer:
+        if dialect is Dialect.V3:
+            return "digit separators need Mint v4"
+        if not (integer.startswith("0") and "." not in text):
+            return "'_' separates digits only in binary and hexadecimal numbers"
+    if len(integer) > 1 and integer.startswith("0") and "." not in text:
+        if any(c not in "01_" for c in integer):
+            return f"'{text}' is not a valid binary number (a leading zero makes a number binary)"
+    return None
+
+
+def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
+    tokens: list[Token] = []
+    issues: list[Diagnostic] = []
+    append = tokens.append
+    classify = words.classify
+    match = _LEXEME.match
+    position = 0
+    length = len(line)
+    content_end = length - (2 if line.endswith("\r\n") else 1 if line.endswith(("\n", "\r")) else 0)
+    line_start = True  # no significant token yet on this line
+    previous = _K.NEWLINE
+
+    while position < content_end:
+        found = match(line, position, content_end)
+        assert found is not None  # the alternatives cover every character
+        group = found.lastgroup
+        text = found.group()
+        kind: TokenKind
+        if text[0] == "." and previous in _DOT_OWNERS:
+            append(Token(_K.DOT, ".", position))
+            previous = _K.DOT
+            position += 1
+            line_start = False
+            continue
+        if group == "ws":
+            append(Token(_K.WS, text, position))
+            previous = _K.WS
+            position = found.end()
+            continue
+        if group == "word":
+            if text.upper() == "REM":
+                append(Token(_K.COMMENT, line[position:content_end], position))
+                position = content_end
+                break
+            kind = classify(text)
+        elif group == "number":
+            if previous is _K.DOT:
+                digits = _DIGITS_AFTER_DOT.match(line, position, content_end)
+                if digits is not None:
+                    text = digits.group()
+            problem = _number_issue(text, dialect) if previous is not _K.DOT else None
+            if problem is not None:
+                kind = _K.INVALID
+                issues.append(_syntax_issue(position, len(text), problem))
+            else:
+                kind = _K.NUMBER
+        elif group == "punct":
+            kind = _PUNCTUATION[text]
+        elif group == "string":
+            kind = _K.STRING
+            issues.extend(_string_issues(text, position))
+        elif group == "char":
+            if len(text) == 3:
+                kind = _K.CHAR
+            else:
+                kind = _K.INVALID
+                issues.append(_syntax_issue(position, len(text), "a character constant is one character in single quotes"))
+        elif group == "hash":
+            if line_start and len(text) > 1:
+                kind = _K.LABEL
+            else:
+                text = "#"
+                kind = _K.HASH
+        else:
+            kind = _K.INVALID
+            issues.append(_syntax_issue(position, len(text), f"unexpected character {text[0]!r}"))
+        append(Token(kind, text, position))
+        position += len(text)
+        previous = kind
+        line_start = False
+
+    comment_end = 0
+    if tokens and tokens[-1].kind is _K.COMMENT:
+        comment_end = content_end
+    if content_end < length:
+        append(Token(_K.NEWLINE, line[content_end:], content_end))
+    significant = [token for token in tokens if token.kind not in TRIVIA]
+    return LexedLine(
+        tuple(tokens),
+        tuple(issues),
+        tuple(token.kind for token in significant),
+        tuple(token.text for token in significant),
+        tuple(token.start for token in significant),
+        tuple(token.start + len(token.text) for token in significant),
+        comment_end,
+        length,
+    )
+
+
+def _syntax_issue(start: int, length: int, message: str) -> Diagnostic:
+    return Diagnostic("E2003", Severity.ERROR, Span(start, start + length), message, mint_error=2003)
+
+
+def _string_issues(text: str, start: int) -> list[Diagnostic]:
+    issues: list[Diagnostic] = []
+    closed = len(text) > 1 and text[-1] in '"' + _TYPOGRAPHIC_QUOTES
+    if not closed:
+        issues.append(_syntax_issue(start, len(text), "string is not closed before the end of the line"))
+    typographic = [i for i, char in enumerate(text) if char in _TYPOGRAPHIC_QUOTES and (i == 0 or i == len(text) - 1)]
+    if typographic:
+        edits = tuple(Edit(Span(start + i, start + i + 1), '"') for i in typographic)
+        issues.append(
+            Diagnostic(
+                "W101",
+                Severity.WARNING,
+                Span(start, start + len(text)),
+                "typographic quotes: the controller expects plain double quotes (\")",
+                fixes=(Fix("Replace with plain quotes", edits),),
+            )
+        )
+    return issues
+
+
+@lru_cache(maxsize=65536)
+def _lex_line_cached(line: str, dialect: Dialect) -> LexedLine:
+    return _lex_line(line, dialect, vocabulary(dialect))
+
+
+def _relocate(diagnostic: Diagnostic, offset: int) -> Diagnostic:
+    span = Span(diagnostic.span.start + offset, diagnostic.span.end + offset)
+    fixes = tuple(
+        Fix(fix.title, tuple(Edit(Span(e.span.start + offset, e.span.end + offset), e.text) for e in fix.edits))
+        for fix in diagnostic.fixes
+    )
+    return Diagnostic(diagnostic.code, diagnostic.severity, span, diagnostic.message, diagnostic.mint_error, fixes)
+
+
+@dataclass(frozen=True, slots=True)
+class LexResult:
+    tokens: tuple[Token, ...]
+    issues: tuple[Diagnostic, ...]
+    lines: tuple[tuple[int, LexedLine], ...]  # each physical line with its offset
+
+
+def lex(source: str, dialect: Dialect = Dialect.V4) -> LexResult:
+    """Split ``source`` into tokens whose texts join back to ``source`` exactly."""
+    tokens: list[Token] = []
+    issues: list[Diagnostic] = []
+    lines: list[tuple[int, LexedLine]] = []
+    offset = 0
+    lex_line: Callable[[str, Dialect], LexedLine] = _lex_line_cached
+    new_token = tuple.__new__  # skips the named tuple's Python-level constructor
+    for physical in _LINE.findall(source):
+        if not physical:
+            continue
+        lexed = lex_line(physical, dialect)
+        lines.append((offset, lexed))
+        if offset:
+            tokens.extend([new_token(Token, (t[0], t[1], t[2] + offset)) for t in lexed.tokens])
+            issues.extend(_relocate(issue, offset) for issue in lexed.issues)
+        else:
+            tokens.extend(lexed.tokens)
+            issues.extend(lexed.issues)
+        offset += lexed.length
+    return LexResult(tuple(tokens), tuple(issues), tuple(lines))

@@ -1,0 +1,155 @@
+"""From the token stream to logical lines ready for the grammar.
+
+A logical line is one physical line, or several when a DIM initialiser list
+ends a line with a comma. This step also gives ``DEFINE`` its raw body and
+expands macros at token level: each expanded token keeps the span of the
+macro's use, so the parser and every diagnostic point where the user wrote
+the macro's name.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, MutableMapping
+from dataclasses import dataclass
+
+from mintlang.diagnostics import Span
+from mintlang.syntax.nodes import identity
+from mintlang.syntax.lexer import LexResult
+from mintlang.syntax.tokens import TokenKind
+
+_K = TokenKind
+
+
+@dataclass(frozen=True, slots=True)
+class MacroDefinition:
+    """A macro's name and body as significant tokens (kind, text)."""
+
+    name: str
+    name_span: Span
+    body: tuple[tuple[TokenKind, str], ...]
+    body_span: Span | None
+    from_configuration: bool
+
+
+@dataclass(frozen=True, slots=True)
+class Expansion:
+    """Where a macro was used; the LSP shows its value there."""
+
+    span: Span
+    macro: str  # identity of the macro
+
+
+@dataclass(slots=True)
+class LogicalLine:
+    """The significant tokens of one logical line, as parallel arrays the grammar reads."""
+
+    number: int  # 1-based physical line where it starts
+    start: int  # offset of its first character
+    end: int  # offset after its last character (a trailing REM included, the line break not)
+    kinds: list[TokenKind]
+    texts: list[str]
+    starts: list[int]
+    ends: list[int]
+    expanded: list[bool]  # True for tokens that came from a macro body
+
+    @property
+    def span(self) -> Span:
+        return Span(self.start, self.end)
+
+    def token_span(self, index: int) -> Span:
+        return Span(self.starts[index], self.ends[index])
+
+
+def _is_statement_start(kinds: list[TokenKind], index: int) -> bool:
+    return index == 0 or kinds[index - 1] in (_K.COLON, _K.LABEL, _K.THEN)
+
+
+def logical_lines(lexed: LexResult) -> list[LogicalLine]:
+    """Group significant tokens into logical lines (DIM lists continue after a trailing comma)."""
+    lines: list[LogicalLine] = []
+    current: LogicalLine | None = None
+    comma, dim = _K.COMMA, _K.DIM
+    for number, (offset, line) in enumerate(lexed.lines, start=1):
+        kinds = line.kinds
+        if not kinds:
+            continue
+        starts = [start + offset for start in line.starts]
+        ends = [end + offset for end in line.ends]
+        end = offset + line.comment_end if line.comment_end else ends[-1]
+        if current is None:
+            current = LogicalLine(number, starts[0], end, list(kinds), list(line.texts), starts, ends, [False] * len(kinds))
+        else:
+            current.kinds.extend(kinds)
+            current.texts.extend(line.texts)
+            current.starts.extend(starts)
+            current.ends.extend(ends)
+            current.expanded.extend([False] * len(kinds))
+            current.end = end
+        if not (kinds[-1] is comma and dim in current.kinds):
+            lines.append(current)
+            current = None
+    if current is not None:
+        lines.append(current)
+    return lines
+
+
+def take_macro_body(line: LogicalLine, from_configuration: bool) -> list[MacroDefinition]:
+    """Collapse each ``DEFINE name = ...`` body into one MACRO_BODY token; return the definitions."""
+    definitions: list[MacroDefinition] = []
+    kinds = line.kinds
+    for index, kind in enumerate(kinds):
+        if kind is not _K.DEFINE or not _is_statement_start(kinds, index):
+            continue
+        if index + 1 >= len(kinds):
+            break
+        name_span = line.token_span(index + 1)
+        body_start = index + 3
+        has_body = index + 2 < len(kinds) and kinds[index + 2] is _K.EQUAL and body_start < len(kinds)
+        body = tuple(zip(kinds[body_start:], line.texts[body_start:], strict=True)) if has_body else ()
+        body_span = Span(line.starts[body_start], line.ends[-1]) if has_body else None
+        definitions.append(MacroDefinition(line.texts[index + 1], name_span, body, body_span, from_configuration))
+        if has_body and body_span is not None:
+            text = " ".join(line.texts[body_start:])
+            del kinds[body_start:], line.texts[body_start:], line.starts[body_start:], line.ends[body_start:]
+            del line.expanded[body_start:]
+            kinds.append(_K.MACRO_BODY)
+            line.texts.append(text)
+            line.starts.append(body_span.start)
+            line.ends.append(body_span.end)
+            line.expanded.append(False)
+        break  # the body runs to the end of the line: no second DEFINE on it
+    return definitions
+
+
+def expand_macros(line: LogicalLine, macros: Mapping[str, MacroDefinition], expansions: list[Expansion]) -> None:
+    """Replace uses of known macros by their bodies, in place."""
+    kinds = line.kinds
+    if _K.NAME not in kinds:
+        return
+    index = 0
+    while index < len(kinds):
+        if kinds[index] is _K.NAME and not _is_definition_or_target(kinds, index):
+            macro = macros.get(identity(line.texts[index]))
+            if macro is not None and macro.body:
+                use = line.token_span(index)
+                count = len(macro.body)
+                kinds[index : index + 1] = [kind for kind, _ in macro.body]
+                line.texts[index : index + 1] = [text for _, text in macro.body]
+                line.starts[index : index + 1] = [use.start] * count
+                line.ends[index : index + 1] = [use.end] * count
+                line.expanded[index : index + 1] = [True] * count
+                expansions.append(Expansion(use, identity(macro.name)))
+                index += count
+                continue
+        index += 1
+
+
+def _is_definition_or_target(kinds: list[TokenKind], index: int) -> bool:
+    """The name after DEFINE, GOSUB or GOTO is not expanded."""
+    return index > 0 and kinds[index - 1] in (_K.DEFINE, _K.GOSUB, _K.GOTO)
+
+
+def register(macros: MutableMapping[str, MacroDefinition], definitions: list[MacroDefinition]) -> None:
+    """Make definitions visible to later lines; the first definition of a name wins."""
+    for definition in definitions:
+        macros.setdefault(identity(definition.name), definition)

@@ -1,0 +1,380 @@
+"""The syntax tree: frozen records with exact source spans.
+
+Every node carries the ``Span`` of the source text it was parsed from. Tokens
+that came from a macro expansion carry the span of the macro's use, so
+diagnostics inside expanded text point at the macro name the user wrote.
+Names keep their spelling; ``identity`` gives the controller's view of a name
+(upper case, first ten characters significant).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from mintlang.diagnostics import Span
+
+SIGNIFICANT_CHARACTERS = 10  # names: only the first ten characters count (v4 guide 3.2.5, 3.9)
+
+
+def identity(name: str) -> str:
+    """The controller's identity of a user name: case-folded, first ten characters."""
+    return name[:SIGNIFICANT_CHARACTERS].upper()
+
+
+@dataclass(frozen=True, slots=True)
+class Name:
+    """A user name as written: variable, array, macro or label."""
+
+    text: str
+    span: Span
+
+    @property
+    def identity(self) -> str:
+        return identity(self.text)
+
+
+# ---------------------------------------------------------------- expressions
+
+
+@dataclass(frozen=True, slots=True)
+class Number:
+    span: Span
+    text: str
+    value: float
+
+
+@dataclass(frozen=True, slots=True)
+class CharConstant:
+    span: Span
+    text: str
+    value: int  # upper-case ASCII code: 'a' and 'A' are both 65
+
+
+@dataclass(frozen=True, slots=True)
+class StringLiteral:
+    span: Span
+    text: str  # with its quotes
+    value: str  # without them
+
+
+@dataclass(frozen=True, slots=True)
+class ConstantRef:
+    span: Span
+    name: str
+
+
+@dataclass(frozen=True, slots=True)
+class VariableRef:
+    span: Span
+    name: Name
+
+
+@dataclass(frozen=True, slots=True)
+class ElementRef:
+    """``name(index)``: an array element."""
+
+    span: Span
+    name: Name
+    index: Expression
+
+
+@dataclass(frozen=True, slots=True)
+class Selector:
+    """Which axes or channel a keyword addresses: ``[0,1]`` or ``.1`` / ``.(a+1)``.
+
+    ``items`` holds ``None`` for an empty place (``[0,,2]``, error 2001).
+    """
+
+    span: Span
+    dot: bool
+    items: tuple[Expression | None, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class KeywordRef:
+    """A keyword as written: full name, abbreviation or with a glued channel (``IN3``)."""
+
+    span: Span
+    keyword: str  # canonical upper-case name
+    spelling: str
+    spelling_span: Span
+    selector: Selector | None
+    channel: int | None  # from a glued channel number
+
+
+@dataclass(frozen=True, slots=True)
+class Call:
+    """A function keyword: ``POW(x, y)``, ``COMMS(1)`` or bracketless ``SIN 90``."""
+
+    span: Span
+    function: str  # canonical upper-case name
+    spelling: str
+    spelling_span: Span
+    arguments: tuple[Expression, ...]
+    bracketed: bool
+
+
+@dataclass(frozen=True, slots=True)
+class Unary:
+    span: Span
+    operator: str  # "-", "+", "~", "NOT"
+    operand: Expression
+
+
+@dataclass(frozen=True, slots=True)
+class Binary:
+    span: Span
+    operator: str  # "+", "-", "*", "/", "MOD", "=", "<>", "<", ">", "<=", ">=", "AND", "OR", "XOR"
+    left: Expression
+    right: Expression
+
+
+@dataclass(frozen=True, slots=True)
+class Parenthesised:
+    span: Span
+    expression: Expression
+
+
+Expression = (
+    Number
+    | CharConstant
+    | ConstantRef
+    | VariableRef
+    | ElementRef
+    | KeywordRef
+    | Call
+    | Unary
+    | Binary
+    | Parenthesised
+)
+
+
+# ----------------------------------------------------------------- statements
+
+
+@dataclass(frozen=True, slots=True)
+class Assignment:
+    """``name = expr`` or ``name(index) = expr``."""
+
+    span: Span
+    target: VariableRef | ElementRef
+    value: Expression
+
+
+@dataclass(frozen=True, slots=True)
+class KeywordStatement:
+    """A keyword used as a statement.
+
+    ``values`` is set for a write (``SPEED[0,1] = 10,20;``, ``None`` marks a
+    skipped place as in ``SPEED = ,10``; ``fill`` is the trailing ``;``);
+    ``arguments`` for a command with operands (``LOCATE 1,1``).
+    """
+
+    span: Span
+    keyword: KeywordRef
+    terminal: Expression | None
+    values: tuple[Expression | None, ...] | None
+    fill: bool
+    arguments: tuple[Expression, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class FunctionStatement:
+    """``COMMS(1) = 5`` or ``CAMTABLE(0, positions, increments)``."""
+
+    span: Span
+    call: Call
+    values: tuple[Expression | None, ...] | None
+    fill: bool
+
+
+@dataclass(frozen=True, slots=True)
+class BareName:
+    """A user word standing alone: an unknown keyword (3007) unless a macro explains it."""
+
+    span: Span
+    name: Name
+
+
+@dataclass(frozen=True, slots=True)
+class IfThen:
+    span: Span
+    condition: Expression
+    body: tuple[Statement, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class IfDo:
+    span: Span
+    condition: Expression
+
+
+@dataclass(frozen=True, slots=True)
+class For:
+    span: Span
+    variable: Name
+    start: Expression
+    end: Expression
+    step: Expression | None
+
+
+@dataclass(frozen=True, slots=True)
+class Until:
+    span: Span
+    condition: Expression
+
+
+@dataclass(frozen=True, slots=True)
+class While:
+    span: Span
+    condition: Expression
+
+
+@dataclass(frozen=True, slots=True)
+class BlockWord:
+    """A statement that is one word: ELSE ENDIF NEXT REPEAT ENDW LOOP ENDL EXIT RETURN END."""
+
+    span: Span
+    word: str  # canonical upper-case keyword
+
+
+@dataclass(frozen=True, slots=True)
+class Jump:
+    """``GOSUB label`` or ``GOTO label``."""
+
+    span: Span
+    word: str  # "GOSUB" or "GOTO"
+    label: Name
+
+
+@dataclass(frozen=True, slots=True)
+class Pause:
+    span: Span
+    condition: Expression | None
+
+
+@dataclass(frozen=True, slots=True)
+class Dim:
+    """``DIM name``, ``DIM name = value`` or ``DIM name(size) = v1, v2 ...;``."""
+
+    span: Span
+    name: Name
+    size: Expression | None
+    values: tuple[Expression, ...]
+    fill: bool
+
+
+@dataclass(frozen=True, slots=True)
+class Define:
+    """``DEFINE name = body``: ``body_span`` is the raw text the macro stands for."""
+
+    span: Span
+    name: Name
+    name_is_word: bool  # False for e.g. DEFINE 100 = "100" (error 3005)
+    body_span: Span | None
+
+
+@dataclass(frozen=True, slots=True)
+class Axes:
+    span: Span
+    selector: Selector | None
+
+
+@dataclass(frozen=True, slots=True)
+class PrintItem:
+    """One PRINT operand; ``separator`` is the "," or ";" written after it, if any."""
+
+    span: Span
+    value: Expression | StringLiteral | None
+    format: str | None  # "HEX", "BIN" or None
+    separator: str | None
+
+
+@dataclass(frozen=True, slots=True)
+class Print:
+    span: Span
+    terminal: Expression | None
+    items: tuple[PrintItem, ...]
+    using: tuple[Expression, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Input:
+    span: Span
+    terminal: Expression | None
+    prompt: StringLiteral | None
+    target: VariableRef | ElementRef
+    using: tuple[Expression, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class SyntaxError_:
+    """A statement that could not be parsed; its diagnostic is in ``Document.diagnostics``."""
+
+    span: Span
+
+
+Statement = (
+    Assignment
+    | KeywordStatement
+    | FunctionStatement
+    | BareName
+    | IfThen
+    | IfDo
+    | For
+    | Until
+    | While
+    | BlockWord
+    | Jump
+    | Pause
+    | Dim
+    | Define
+    | Axes
+    | Print
+    | Input
+    | SyntaxError_
+)
+
+
+@dataclass(frozen=True, slots=True)
+class Line:
+    """One logical line: an optional label and its statements.
+
+    ``number`` is the 1-based physical line it starts on; a DIM list continued
+    with trailing commas spans several physical lines.
+    """
+
+    span: Span
+    number: int
+    label: Name | None
+    statements: tuple[Statement, ...]
+
+
+def walk_statements(statements: tuple[Statement, ...]) -> Iterator[Statement]:
+    """Statements in source order, descending into IF .. THEN bodies."""
+    for statement in statements:
+        yield statement
+        if isinstance(statement, IfThen):
+            yield from walk_statements(statement.body)
+
+
+def walk_expression(expression: Expression | StringLiteral | None) -> Iterator[Expression]:
+    """An expression and all its subexpressions, outermost first."""
+    stack = [expression]
+    while stack:
+        node = stack.pop()
+        if node is None or isinstance(node, StringLiteral):
+            continue
+        yield node
+        match node:
+            case Binary(left=left, right=right):
+                stack.extend((right, left))
+            case Unary(operand=operand) | Parenthesised(expression=operand):
+                stack.append(operand)
+            case ElementRef(index=index):
+                stack.append(index)
+            case Call(arguments=arguments):
+                stack.extend(reversed(arguments))
+            case KeywordRef(selector=Selector(items=items)):
+                stack.extend(reversed(items))

@@ -1,0 +1,192 @@
+"""Parsing a whole source: lexing, logical lines, macros, grammar, recovery.
+
+Each logical line is parsed on its own, so a syntax error never stops the rest
+of the file from being parsed; inside a failing line, the statements between
+``:`` separators are retried one by one so that only the broken statement is
+lost. Parse errors get the controller's error numbers where the manual gives
+one: 2003 syntax error, 2004 brackets, 2006 keyword used as a variable, 2007
+THEN or DO expected, 2008 TO expected.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from lark import Tree
+
+from mintlang.diagnostics import Diagnostic, LineIndex, Severity, Span
+from mintlang.dialect import Dialect
+from mintlang.syntax import nodes as n
+from mintlang.syntax.build import LineBuilder
+from mintlang.syntax.grammar import ParseFailure, parse_kinds
+from mintlang.syntax.lexer import lex
+from mintlang.syntax.lines import (
+    Expansion,
+    LogicalLine,
+    MacroDefinition,
+    expand_macros,
+    logical_lines,
+    register,
+    take_macro_body,
+)
+from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, Token, TokenKind
+from mintlang.syntax.vocabulary import Vocabulary, vocabulary
+
+_K = TokenKind
+_KEYWORD_KINDS = GRAMMAR_KEYWORDS | {_K.KEYWORD, _K.FUNCTION}
+
+
+@dataclass(frozen=True, slots=True)
+class Document:
+    """A parsed source: the lossless token stream and the syntax tree of its lines.
+
+    ``macros`` holds every macro visible at the end of the file (those of a
+    configuration passed in included); ``expansions`` where macros were used.
+    """
+
+    source: str
+    dialect: Dialect
+    tokens: tuple[Token, ...]
+    lines: tuple[n.Line, ...]
+    diagnostics: tuple[Diagnostic, ...]
+    macros: Mapping[str, MacroDefinition]
+    definitions: tuple[MacroDefinition, ...]  # the macros this file defines, in order
+    expansions: tuple[Expansion, ...]
+    line_index: LineIndex
+
+    def statements(self) -> list[tuple[n.Line, n.Statement]]:
+        """Every statement with its line, IF .. THEN bodies included, in source order."""
+        return [(line, statement) for line in self.lines for statement in n.walk_statements(line.statements)]
+
+
+def parse(
+    source: str,
+    dialect: Dialect | str = Dialect.V4,
+    *,
+    macros: Mapping[str, MacroDefinition] | None = None,
+    from_configuration: bool = False,
+) -> Document:
+    """Parse ``source``; ``macros`` are those already defined (by the configuration file)."""
+    dialect = Dialect(dialect)
+    words = vocabulary(dialect)
+    lexed = lex(source, dialect)
+    diagnostics = list(lexed.issues)
+    visible: dict[str, MacroDefinition] = dict(macros or {})
+    definitions: list[MacroDefinition] = []
+    expansions: list[Expansion] = []
+    lines: list[n.Line] = []
+    for logical in logical_lines(lexed):
+        defined = take_macro_body(logical, from_configuration)
+        expand_macros(logical, visible, expansions)
+        register(visible, defined)
+        definitions.extend(defined)
+        lines.append(_parse_line(logical, words, diagnostics))
+    return Document(
+        source,
+        dialect,
+        lexed.tokens,
+        tuple(lines),
+        tuple(diagnostics),
+        visible,
+        tuple(definitions),
+        tuple(expansions),
+        LineIndex(source),
+    )
+
+
+def _parse_line(line: LogicalLine, words: Vocabulary, diagnostics: list[Diagnostic]) -> n.Line:
+    result = parse_kinds(tuple(line.kinds))
+    builder = LineBuilder(line, words)
+    if isinstance(result, Tree):
+        label, statements = builder.line(result)
+        return n.Line(line.span, line.number, label, statements)
+    return _recover(line, builder, result, diagnostics)
+
+
+def _recover(line: LogicalLine, builder: LineBuilder, failure: ParseFailure, diagnostics: list[Diagnostic]) -> n.Line:
+    """Parse the ``:``-separated statements of a failing line one at a time."""
+    kinds = line.kinds
+    label: n.Name | None = None
+    start = 0
+    if kinds and kinds[0] is _K.LABEL:
+        label = n.Name(line.texts[0][1:], line.token_span(0))
+        start = 1
+    statements: list[n.Statement] = []
+    for begin, end in _segments(kinds, start):
+        if begin == end:
+            continue
+        segment_kinds = tuple(kinds[begin:end])
+        result = parse_kinds(segment_kinds)
+        if isinstance(result, Tree):
+            statements.extend(LineBuilder(_slice(line, begin, end), builder._words).line(result)[1])  # noqa: SLF001
+            continue
+        span = Span(line.starts[begin], line.ends[end - 1])
+        statements.append(n.SyntaxError_(span))
+        issue = _describe(line, begin, end, result)
+        if issue is not None:
+            diagnostics.append(issue)
+    if not statements and failure.index < len(kinds) and kinds[failure.index] is _K.LABEL:
+        diagnostics.append(_describe(line, 0, len(kinds), failure) or _error(2003, line.token_span(0), "syntax error"))
+    return n.Line(line.span, line.number, label, tuple(statements))
+
+
+def _segments(kinds: list[TokenKind], start: int) -> list[tuple[int, int]]:
+    """Index ranges between top-level ``:`` separators."""
+    segments: list[tuple[int, int]] = []
+    depth = 0
+    begin = start
+    for index in range(start, len(kinds)):
+        kind = kinds[index]
+        if kind in (_K.LPAR, _K.LSQB):
+            depth += 1
+        elif kind in (_K.RPAR, _K.RSQB):
+            depth = max(0, depth - 1)
+        elif kind is _K.COLON and depth == 0:
+            segments.append((begin, index))
+            begin = index + 1
+    segments.append((begin, len(kinds)))
+    return segments
+
+
+def _slice(line: LogicalLine, begin: int, end: int) -> LogicalLine:
+    return LogicalLine(
+        line.number,
+        line.starts[begin],
+        line.ends[end - 1],
+        line.kinds[begin:end],
+        line.texts[begin:end],
+        line.starts[begin:end],
+        line.ends[begin:end],
+        line.expanded[begin:end],
+    )
+
+
+def _error(code: int, span: Span, message: str) -> Diagnostic:
+    return Diagnostic(f"E{code}", Severity.ERROR, span, message, mint_error=code)
+
+
+def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) -> Diagnostic | None:
+    """The diagnostic for a statement the grammar rejected, numbered as the controller would."""
+    kinds = line.kinds
+    index = begin + failure.index
+    at_end = index >= end
+    span = Span(line.ends[end - 1], line.ends[end - 1]) if at_end else line.token_span(index)
+    if not at_end and kinds[index] is _K.INVALID:
+        return None  # the lexer already reported it
+    segment = kinds[begin:end]
+    opened = segment.count(_K.LPAR) - segment.count(_K.RPAR)
+    expected = failure.expected
+    found = "the end of the statement" if at_end else f"'{line.texts[index]}'"
+    if opened != 0 or (not at_end and kinds[index] is _K.RPAR):
+        return _error(2004, span, "brackets do not match: " + ("a ')' is missing" if opened > 0 else "too many ')'"))
+    if segment[0] is _K.IF and ("THEN" in expected or "DO" in expected) and not ({"THEN", "DO"} - expected):
+        return _error(2007, span, f"THEN or DO expected, found {found}")
+    if segment[0] is _K.FOR and "TO" in expected:
+        return _error(2008, span, f"TO expected, found {found}")
+    if not at_end and kinds[index] in _KEYWORD_KINDS and "NAME" in expected:
+        word = line.texts[index]
+        return _error(2006, span, f"'{word}' is a reserved keyword and cannot be used as a name")
+    if line.expanded[index if not at_end else end - 1]:
+        return _error(2003, span, f"syntax error in the text of a macro: unexpected {found}")
+    return _error(2003, span, f"syntax error: unexpected {found}")

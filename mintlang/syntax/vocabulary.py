@@ -1,0 +1,109 @@
+"""What each word means to the lexer, per dialect.
+
+Mint words are case-insensitive and keywords may be abbreviated, so the lexer
+needs one table from every spelling (upper-cased) to its token kind. The table
+is derived from the keyword database once per dialect.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from functools import cache
+
+from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import KeywordKind
+from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
+
+_ROLES: Mapping[str, TokenKind] = {kind.value: kind for kind in GRAMMAR_KEYWORDS}
+
+
+@dataclass(frozen=True, slots=True)
+class Vocabulary:
+    """Spelling tables of one dialect."""
+
+    dialect: Dialect
+    words: Mapping[str, TokenKind]  # upper-case spelling -> kind (names and abbreviations)
+    canonical: Mapping[str, str]  # upper-case spelling -> the keyword's full name
+    suffixed: frozenset[str]  # keywords that also take a glued channel number: IN3, OUT1
+    constants: frozenset[str]  # upper-case names of predefined constants
+
+    def classify(self, word: str) -> TokenKind:
+        """The token kind of ``word``; unknown words are user names."""
+        upper = word.upper()
+        kind = self.words.get(upper)
+        if kind is not None:
+            return kind
+        if upper[0] == "_":
+            return TokenKind.CONSTANT if upper in self.constants else TokenKind.NAME
+        if upper[-1].isdigit() and self.split_channel(upper) is not None:
+            return TokenKind.KEYWORD
+        return TokenKind.NAME
+
+    def split_channel(self, word: str) -> tuple[str, int] | None:
+        """``IN12`` -> ``("IN", 12)`` when IN takes a glued channel number."""
+        upper = word.upper()
+        stem = upper.rstrip("0123456789")
+        if stem == upper or stem not in self.suffixed:
+            return None
+        return self.canonical[stem], int(upper[len(stem) :])
+
+    def keyword_name(self, word: str) -> str | None:
+        """Full keyword name for a spelling, abbreviation or channel-suffixed form."""
+        upper = word.upper()
+        name = self.canonical.get(upper)
+        if name is not None:
+            return name
+        split = self.split_channel(upper)
+        return split[0] if split else None
+
+
+def _kind_of(name: str, kind: KeywordKind, has_parameters: bool) -> TokenKind:
+    role = _ROLES.get(name)
+    if role is not None:
+        return role
+    if has_parameters or kind is KeywordKind.FUNCTION:
+        return TokenKind.FUNCTION
+    return TokenKind.KEYWORD
+
+
+@cache
+def vocabulary(dialect: Dialect) -> Vocabulary:
+    """The spelling tables of ``dialect``, built once per process."""
+    db = database()
+    words: dict[str, TokenKind] = {}
+    canonical: dict[str, str] = {}
+    suffixed: set[str] = set()
+
+    def add(spelling: str, name: str, kind: TokenKind) -> None:
+        upper = spelling.upper()
+        if upper.replace("_", "").isalnum() and upper not in words:
+            words[upper] = kind
+            canonical[upper] = name
+
+    if dialect is Dialect.V4:
+        for keyword in db.keywords.values():
+            if keyword.kind is KeywordKind.EVENT:
+                continue
+            kind = _kind_of(keyword.name, keyword.kind, bool(keyword.parameters))
+            add(keyword.name, keyword.name, kind)
+            if keyword.channel_suffix:
+                suffixed.add(keyword.name)
+        for keyword in db.keywords.values():
+            if keyword.kind is not KeywordKind.EVENT:
+                kind = _kind_of(keyword.name, keyword.kind, bool(keyword.parameters))
+                for abbreviation in keyword.abbreviations:
+                    add(abbreviation, keyword.name, kind)
+        constants = frozenset(db.constants)
+    else:
+        for v3 in db.v3_keywords.values():
+            v4 = db.keywords.get(v3.name)
+            kind = _kind_of(v3.name, v4.kind, bool(v4.parameters)) if v4 else _ROLES.get(v3.name, TokenKind.KEYWORD)
+            add(v3.name, v3.name, kind)
+            for abbreviation in v3.abbreviations:
+                add(abbreviation, v3.name, kind)
+            if v4 is not None and v4.channel_suffix:
+                suffixed.add(v3.name)
+        constants = frozenset(db.v3_constants)
+    return Vocabulary(dialect, words, canonical, frozenset(suffixed), constants)

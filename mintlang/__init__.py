@@ -1,0 +1,64 @@
+"""mintlang: the language core of the Mint toolchain.
+
+One parser and one semantic model, shared by ``mint check``, the migrator,
+the language server and the runtime::
+
+    import mintlang
+    document = mintlang.parse(source)                 # lossless: tokens join back to source
+    diagnostics = mintlang.check(source, controller="nextmove-bx")
+"""
+
+from __future__ import annotations
+
+from mintlang.analysis.analyser import Analysis, analyse
+from mintlang.diagnostics import Diagnostic, Edit, Fix, LineIndex, Position, Severity, Span
+from mintlang.dialect import Dialect
+from mintlang.keyworddb.model import Controller
+from mintlang.semantic.model import SemanticModel, build_model
+from mintlang.syntax.parser import Document, parse
+
+__all__ = [
+    "Analysis",
+    "Controller",
+    "Diagnostic",
+    "Dialect",
+    "Document",
+    "Edit",
+    "Fix",
+    "LineIndex",
+    "Position",
+    "SemanticModel",
+    "Severity",
+    "Span",
+    "analyse",
+    "build_model",
+    "check",
+    "check_application",
+    "parse",
+]
+
+
+def check_application(
+    source: str,
+    *,
+    dialect: Dialect | str = Dialect.V4,
+    controller: Controller | str = Controller.NEXTMOVE_PCI,
+    config: str | None = None,
+    select: tuple[str, ...] | None = None,
+    ignore: tuple[str, ...] = (),
+) -> Analysis:
+    """Parse and analyse a program with its optional configuration file; diagnostics per file."""
+    configuration = parse(config, dialect, from_configuration=True) if config is not None else None
+    program = parse(source, dialect, macros=configuration.macros if configuration else None)
+    return analyse(build_model(program, configuration, controller), select=select, ignore=ignore)
+
+
+def check(
+    source: str,
+    *,
+    dialect: Dialect | str = Dialect.V4,
+    controller: Controller | str = Controller.NEXTMOVE_PCI,
+    config: str | None = None,
+) -> list[Diagnostic]:
+    """The diagnostics of a program (those of its configuration file are not included)."""
+    return list(check_application(source, dialect=dialect, controller=controller, config=config).program)

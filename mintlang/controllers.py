@@ -1,7 +1,7 @@
 """What each controller supports: channel ranges, name-table and nesting limits.
 
 Figures from the Mint v4 reference guide (MN1262): the "Dot Parameters" table
-(section 10.2, line 5613), the interpreter limitations of section 3.9 (lines
+(section 10.2, line 5613), the digital I/O of sections 7.2 and 7.3, the interpreter limitations of section 3.9 (lines
 1904-1976), the #INx and #FASTINx entries (lines 5848-5950) and the 255
 character line limit (line 255).
 """
@@ -68,8 +68,10 @@ PROFILES: dict[Controller, ControllerProfile] = {
         Controller.NEXTMOVE_PCI,
         "NextMove PCI",
         axes=ChannelRange(0, 11),
-        digital_inputs=ChannelRange(0, 19),  # 39 / 59 with expansion cards (footnote 8)
-        digital_outputs=ChannelRange(0, 11),
+        # Two expansion cards add inputs 20-59 and outputs 12-35 (7.2, 7.3); the checker
+        # cannot know what is fitted, so it accepts the largest configuration.
+        digital_inputs=ChannelRange(0, 59),
+        digital_outputs=ChannelRange(0, 35),
         adc=ChannelRange(0, 11),
         dac=ChannelRange(0, 11),
         auxiliary_dac=None,

@@ -180,9 +180,7 @@ def database() -> KeywordDatabase:
         v3_keywords=_by_name(v3_keywords, lambda k: k.name),
         v3_constants=_by_name(v3_constants, lambda c: c.name),
         renames=renames,
-        _words=_index(
-            preferred, lambda k: (k.name,), lambda k: k.abbreviations, fixed=_abbreviation_choices(by_name)
-        ),
+        _words=_index(preferred, lambda k: (k.name,), lambda k: k.abbreviations, fixed=_abbreviation_choices(by_name)),
         _v3_words=_index(v3_keywords, lambda k: (k.name,), lambda k: k.abbreviations),
         _old_words=_index(renames, lambda r: (r.old,), lambda r: (r.old_abbreviation,) if r.old_abbreviation else ()),
     )

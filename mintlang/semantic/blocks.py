@@ -14,7 +14,8 @@ from dataclasses import dataclass
 from enum import StrEnum
 
 from mintlang.controllers import ControllerProfile, NestingLimits
-from mintlang.diagnostics import Diagnostic, Severity, Span
+from mintlang.codes import mint_error, own
+from mintlang.diagnostics import Diagnostic
 from mintlang.syntax import nodes as n
 
 
@@ -80,11 +81,12 @@ def _opener_kind(statement: n.Statement) -> BlockKind | None:
             return BlockKind.REPEAT
         case n.BlockWord(word="LOOP"):
             return BlockKind.LOOP
+        case n.SyntaxError_(opens=str(kind)):
+            return BlockKind(kind)
     return None
 
 
-def _error(code: int, span: Span, message: str) -> Diagnostic:
-    return Diagnostic(f"E{code}", Severity.ERROR, span, message, mint_error=code)
+_error = mint_error
 
 
 def match_blocks(lines: tuple[n.Line, ...], controller: ControllerProfile) -> Structure:
@@ -117,14 +119,8 @@ def match_blocks(lines: tuple[n.Line, ...], controller: ControllerProfile) -> St
     for unclosed in stack:
         blocks.append(Block(unclosed.kind, unclosed.opener, unclosed.line, unclosed.middle, None, None))
         word = _CLOSING_WORD[unclosed.kind]
-        diagnostics.append(
-            Diagnostic(
-                "W110",
-                Severity.WARNING,
-                unclosed.opener.span,
-                f"this {unclosed.kind.value} block is never closed with {word}",
-            )
-        )
+        detail = f"this {unclosed.kind.value} block is never closed with {word}"
+        diagnostics.append(own("W110", unclosed.opener.span, detail))
     blocks.sort(key=lambda block: block.opener.span.start)
     return Structure(tuple(blocks), tuple(diagnostics))
 

@@ -114,7 +114,8 @@ class _Collector:
         for expansion in document.expansions:
             symbol = self.macros.get(expansion.macro)
             if symbol is not None:
-                symbol.references.append(Occurrence(unit, expansion.span, expansion.macro, True))
+                spelling = document.source[expansion.span.start : expansion.span.end]
+                symbol.references.append(Occurrence(unit, expansion.span, spelling, True))
         labels = self.labels[unit]
         for line in document.lines:
             if line.label is not None:
@@ -173,34 +174,18 @@ class _Collector:
                 self._label(labels, label, unit).references.append(
                     Occurrence(unit, label.span, label.text, label.identity in labels and bool(labels[label.identity].definitions))
                 )
-            case n.BareName(name=name):
+            case n.BareName():
                 pass  # an unknown word, not a variable reference (3007)
+            case n.KeywordStatement(keyword=n.KeywordRef(keyword="PROTECT"), values=None):
+                pass  # PROTECT <password>: the word is the password, not a variable
             case _:
-                self._expressions(_expressions_of(statement), unit)
+                self._expressions(tuple(n.expressions_of(statement)), unit)
 
     def _expressions(self, expressions: tuple[n.Expression | n.StringLiteral | None, ...], unit: Unit) -> None:
         for expression in expressions:
             for node in n.walk_expression(expression):
                 if isinstance(node, n.VariableRef | n.ElementRef):
                     self._use(node.name, unit, element=isinstance(node, n.ElementRef))
-
-
-def _expressions_of(statement: n.Statement) -> tuple[n.Expression | n.StringLiteral | None, ...]:
-    """The expressions a statement reads (statements that write names are handled apart)."""
-    match statement:
-        case n.KeywordStatement(keyword=keyword, terminal=terminal, values=values, arguments=arguments):
-            return (keyword, terminal, *(values or ()), *arguments)
-        case n.FunctionStatement(call=call, values=values):
-            return (call, *(values or ()))
-        case n.IfThen(condition=condition) | n.IfDo(condition=condition):
-            return (condition,)
-        case n.Until(condition=condition) | n.While(condition=condition) | n.Pause(condition=condition):
-            return (condition,)
-        case n.Axes(selector=selector) if selector is not None:
-            return selector.items
-        case n.Print(terminal=terminal, items=items, using=using):
-            return (terminal, *(item.value for item in items), *using)
-    return ()
 
 
 def build_symbols(program: Document, configuration: Document | None = None) -> SymbolTable:

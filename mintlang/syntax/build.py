@@ -68,14 +68,11 @@ class LineBuilder:
         return n.Name(self._text(token), self._span(token))
 
     def _first(self, child: Child) -> int:
-        while isinstance(child, Tree):
-            child = child.children[0]
-        return child.start_pos  # type: ignore[return-value]
+        """Index of the first token under ``child`` (empty subtrees hold none)."""
+        return _edge_token(child, 0)
 
     def _last(self, child: Child) -> int:
-        while isinstance(child, Tree):
-            child = child.children[-1]
-        return child.start_pos  # type: ignore[return-value]
+        return _edge_token(child, -1)
 
     def _tree_span(self, tree: Child) -> Span:
         return Span(self._line.starts[self._first(tree)], self._line.ends[self._last(tree)])
@@ -133,7 +130,8 @@ class LineBuilder:
         terminal: n.Expression | None = None
         values: tuple[n.Expression | None, ...] | None = None
         fill = False
-        arguments: tuple[n.Expression, ...] = ()
+        arguments: tuple[n.Expression | n.StringLiteral, ...] = ()
+        using: tuple[n.Expression, ...] = ()
         for child in tree.children[1:]:
             if isinstance(child, Token):
                 continue
@@ -143,10 +141,22 @@ class LineBuilder:
                 terminal = self._terminal(child)
             elif child.data == "values":
                 values, fill = self._values(child)
-            elif child.data == "arguments":
-                arguments = self._arguments(child)
+            elif child.data == "command_arguments":
+                arguments, using = self._command_arguments(child)
         ref = self._keyword_ref(keyword_token, selector)  # type: ignore[arg-type]
-        return n.KeywordStatement(self._tree_span(tree), ref, terminal, values, fill, arguments)
+        return n.KeywordStatement(self._tree_span(tree), ref, terminal, values, fill, arguments, using)
+
+    def _command_arguments(self, tree: Tree) -> tuple[tuple[n.Expression | n.StringLiteral, ...], tuple[n.Expression, ...]]:
+        arguments: list[n.Expression | n.StringLiteral] = []
+        using: tuple[n.Expression, ...] = ()
+        for child in tree.children:
+            if isinstance(child, Tree) and child.data == "using":
+                using = self._using(child)
+            elif isinstance(child, Token) and child.type == "STRING":
+                arguments.append(self._string(child))
+            elif not _is_comma(child):
+                arguments.append(self.expression(child))
+        return tuple(arguments), using
 
     def _function_statement(self, tree: Tree) -> n.FunctionStatement:
         function, _, arguments, close, *rest = tree.children
@@ -315,13 +325,13 @@ class LineBuilder:
                 self.expression(item.children[0]) if item.children else None for item in self._trees(items_tree)
             )
             return n.Selector(span, False, items)
-        value = tree.children[-1]
-        assert isinstance(value, Tree)
+        values = [child for child in tree.children if isinstance(child, Tree) and child.data == "dot_value"]
+        return n.Selector(span, True, tuple(self._dot_value(value) for value in values))
+
+    def _dot_value(self, value: Tree) -> n.Expression:
         if len(value.children) == 3:  # ( expr )
-            inner: n.Expression = n.Parenthesised(self._tree_span(value), self.expression(value.children[1]))
-        else:
-            inner = self._leaf_expression(value.children[0])  # type: ignore[arg-type]
-        return n.Selector(span, True, (inner,))
+            return n.Parenthesised(self._tree_span(value), self.expression(value.children[1]))
+        return self._leaf_expression(value.children[0])  # type: ignore[arg-type]
 
     # --------------------------------------------------------- expressions
 
@@ -433,6 +443,18 @@ _EXPRESSIONS: dict[str, Callable[[LineBuilder, Tree], n.Expression]] = {
     "element": _B._element,
     "keyword_read": _B._keyword_read,
 }
+
+
+def _edge_token(child: Child, end: int) -> int:
+    """Index of the first (end=0) or last (end=-1) token of a subtree; -1 when it has none."""
+    if isinstance(child, Token):
+        return child.start_pos  # type: ignore[return-value]
+    children = child.children if end == 0 else reversed(child.children)
+    for grandchild in children:
+        index = _edge_token(grandchild, end)
+        if index >= 0:
+            return index
+    return -1
 
 
 def _is_comma(child: Child) -> bool:

@@ -20,7 +20,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
 
-from mintlang.diagnostics import Diagnostic, Edit, Fix, Severity, Span
+from mintlang.codes import mint_error, own
+from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.syntax.tokens import TRIVIA, Token, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
@@ -33,10 +34,10 @@ _LEXEME = re.compile(
   | (?P<word>[A-Za-z_][A-Za-z0-9_]*)
   | (?P<number>0[xX][0-9A-Za-z_]*|[0-9][0-9A-Za-z_]*(?:\.[0-9]*)?|\.[0-9]+)
   | (?P<string>["\u201c\u201d\u201e\u201f\u2033][^"\u201c\u201d\u201e\u201f\u2033\r\n]*["\u201c\u201d\u201e\u201f\u2033]?)
-  | (?P<char>'[^'\r\n]?'?)
+  | (?P<char>['\u2018\u2019][^'\u2018\u2019\r\n]?['\u2018\u2019]?)
   | (?P<hash>\#[A-Za-z0-9_]*)
   | (?P<punct><>|<=|>=|[-<>=+*/%&|!~^()\[\],;:?.])
-  | (?P<invalid>[^ \t\f\v\u00a0\ufeff\r\nA-Za-z0-9_"\u201c\u201d\u201e\u201f\u2033'\#<>=+*/%&|!~^()\[\],;:?.-]+)
+  | (?P<invalid>[^ \t\f\v\u00a0\ufeff\r\nA-Za-z0-9_"\u201c\u201d\u201e\u201f\u2033'\u2018\u2019\#<>=+*/%&|!~^()\[\],;:?.-]+)
     """,
     re.VERBOSE,
 )
@@ -74,6 +75,7 @@ _PUNCTUATION: dict[str, TokenKind] = {
 _DOT_OWNERS = frozenset({_K.KEYWORD, _K.FUNCTION, _K.DOT, _K.AXES})
 
 _TYPOGRAPHIC_QUOTES = "\u201c\u201d\u201e\u201f\u2033"
+_TYPOGRAPHIC_APOSTROPHES = "\u2018\u2019"
 
 
 @dataclass(frozen=True, slots=True)
@@ -130,6 +132,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
     content_end = length - (2 if line.endswith("\r\n") else 1 if line.endswith(("\n", "\r")) else 0)
     line_start = True  # no significant token yet on this line
     previous = _K.NEWLINE
+    dot_number = False  # the previous token is the number of a dot parameter: ".2" in REMOTEIN.2.65
 
     while position < content_end:
         found = match(line, position, content_end)
@@ -137,7 +140,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
         group = found.lastgroup
         text = found.group()
         kind: TokenKind
-        if text[0] == "." and previous in _DOT_OWNERS:
+        if text[0] == "." and (previous in _DOT_OWNERS or dot_number):
             append(Token(_K.DOT, ".", position))
             previous = _K.DOT
             position += 1
@@ -146,6 +149,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
         if group == "ws":
             append(Token(_K.WS, text, position))
             previous = _K.WS
+            dot_number = False
             position = found.end()
             continue
         if group == "word":
@@ -173,6 +177,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
         elif group == "char":
             if len(text) == 3:
                 kind = _K.CHAR
+                issues.extend(_quote_issues(text, position, _TYPOGRAPHIC_APOSTROPHES, "'"))
             else:
                 kind = _K.INVALID
                 issues.append(_syntax_issue(position, len(text), "a character constant is one character in single quotes"))
@@ -187,6 +192,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
             issues.append(_syntax_issue(position, len(text), f"unexpected character {text[0]!r}"))
         append(Token(kind, text, position))
         position += len(text)
+        dot_number = kind is _K.NUMBER and previous is _K.DOT
         previous = kind
         line_start = False
 
@@ -209,7 +215,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
 
 
 def _syntax_issue(start: int, length: int, message: str) -> Diagnostic:
-    return Diagnostic("E2003", Severity.ERROR, Span(start, start + length), message, mint_error=2003)
+    return mint_error(2003, Span(start, start + length), message)
 
 
 def _string_issues(text: str, start: int) -> list[Diagnostic]:
@@ -217,19 +223,18 @@ def _string_issues(text: str, start: int) -> list[Diagnostic]:
     closed = len(text) > 1 and text[-1] in '"' + _TYPOGRAPHIC_QUOTES
     if not closed:
         issues.append(_syntax_issue(start, len(text), "string is not closed before the end of the line"))
-    typographic = [i for i, char in enumerate(text) if char in _TYPOGRAPHIC_QUOTES and (i == 0 or i == len(text) - 1)]
-    if typographic:
-        edits = tuple(Edit(Span(start + i, start + i + 1), '"') for i in typographic)
-        issues.append(
-            Diagnostic(
-                "W101",
-                Severity.WARNING,
-                Span(start, start + len(text)),
-                "typographic quotes: the controller expects plain double quotes (\")",
-                fixes=(Fix("Replace with plain quotes", edits),),
-            )
-        )
+    issues.extend(_quote_issues(text, start, _TYPOGRAPHIC_QUOTES, '"'))
     return issues
+
+
+def _quote_issues(text: str, start: int, typographic: str, plain: str) -> list[Diagnostic]:
+    """A warning with a fix when a literal is delimited by word-processor quotes."""
+    places = [i for i in (0, len(text) - 1) if text[i] in typographic]
+    if not places:
+        return []
+    edits = tuple(Edit(Span(start + i, start + i + 1), plain) for i in sorted(set(places)))
+    detail = f"typographic quotes: the controller expects plain quotes ({plain})"
+    return [own("W101", Span(start, start + len(text)), detail, fixes=(Fix("Replace with plain quotes", edits),))]
 
 
 @lru_cache(maxsize=65536)

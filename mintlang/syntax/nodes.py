@@ -176,7 +176,8 @@ class KeywordStatement:
     terminal: Expression | None
     values: tuple[Expression | None, ...] | None
     fill: bool
-    arguments: tuple[Expression, ...]
+    arguments: tuple[Expression | StringLiteral, ...]
+    using: tuple[Expression, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -310,9 +311,14 @@ class Input:
 
 @dataclass(frozen=True, slots=True)
 class SyntaxError_:
-    """A statement that could not be parsed; its diagnostic is in ``Document.diagnostics``."""
+    """A statement that could not be parsed; its diagnostic is in ``Document.diagnostics``.
+
+    ``opens`` names the block it still opens (``FOR loop = 1 TO 10`` opens a
+    FOR even though ``loop`` is a keyword), so its closer matches.
+    """
 
     span: Span
+    opens: str | None = None
 
 
 Statement = (
@@ -378,3 +384,42 @@ def walk_expression(expression: Expression | StringLiteral | None) -> Iterator[E
                 stack.extend(reversed(arguments))
             case KeywordRef(selector=Selector(items=items)):
                 stack.extend(reversed(items))
+
+
+def expressions_of(statement: Statement) -> Iterator[Expression | StringLiteral | None]:
+    """The expressions a statement evaluates, in source order."""
+    match statement:
+        case Assignment(target=target, value=value):
+            if isinstance(target, ElementRef):
+                yield target.index
+            yield value
+        case KeywordStatement(keyword=keyword, terminal=terminal, values=values, arguments=arguments, using=using):
+            if keyword.selector is not None:
+                yield from keyword.selector.items
+            yield terminal
+            yield from values or ()
+            yield from arguments
+            yield from using
+        case FunctionStatement(call=call, values=values):
+            yield from call.arguments
+            yield from values or ()
+        case IfThen(condition=condition) | IfDo(condition=condition):
+            yield condition
+        case Until(condition=condition) | While(condition=condition) | Pause(condition=condition):
+            yield condition
+        case For(start=start, end=end, step=step):
+            yield from (start, end, step)
+        case Dim(size=size, values=values):
+            yield size
+            yield from values
+        case Axes(selector=selector) if selector is not None:
+            yield from selector.items
+        case Print(terminal=terminal, items=items, using=using):
+            yield terminal
+            yield from (item.value for item in items)
+            yield from using
+        case Input(terminal=terminal, target=target, using=using):
+            yield terminal
+            if isinstance(target, ElementRef):
+                yield target.index
+            yield from using

@@ -15,7 +15,8 @@ from dataclasses import dataclass
 
 from lark import Tree
 
-from mintlang.diagnostics import Diagnostic, LineIndex, Severity, Span
+from mintlang.codes import mint_error
+from mintlang.diagnostics import Diagnostic, LineIndex, Span
 from mintlang.dialect import Dialect
 from mintlang.syntax import nodes as n
 from mintlang.syntax.build import LineBuilder
@@ -35,6 +36,7 @@ from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 _K = TokenKind
 _KEYWORD_KINDS = GRAMMAR_KEYWORDS | {_K.KEYWORD, _K.FUNCTION}
+_OPERATORS = frozenset({_K.AND, _K.OR, _K.XOR, _K.NOT, _K.MOD})
 
 
 @dataclass(frozen=True, slots=True)
@@ -122,13 +124,23 @@ def _recover(line: LogicalLine, builder: LineBuilder, failure: ParseFailure, dia
             statements.extend(LineBuilder(_slice(line, begin, end), builder._words).line(result)[1])  # noqa: SLF001
             continue
         span = Span(line.starts[begin], line.ends[end - 1])
-        statements.append(n.SyntaxError_(span))
+        statements.append(n.SyntaxError_(span, _opened_block(kinds[begin:end])))
         issue = _describe(line, begin, end, result)
         if issue is not None:
             diagnostics.append(issue)
     if not statements and failure.index < len(kinds) and kinds[failure.index] is _K.LABEL:
         diagnostics.append(_describe(line, 0, len(kinds), failure) or _error(2003, line.token_span(0), "syntax error"))
     return n.Line(line.span, line.number, label, tuple(statements))
+
+
+def _opened_block(kinds: list[TokenKind]) -> str | None:
+    """The block a broken statement still opens, so its closer does not cascade into 2009-2014."""
+    first = kinds[0]
+    if first in (_K.FOR, _K.WHILE, _K.REPEAT, _K.LOOP):
+        return first.value
+    if first is _K.IF and _K.DO in kinds:
+        return "IF"
+    return None
 
 
 def _segments(kinds: list[TokenKind], start: int) -> list[tuple[int, int]]:
@@ -162,8 +174,7 @@ def _slice(line: LogicalLine, begin: int, end: int) -> LogicalLine:
     )
 
 
-def _error(code: int, span: Span, message: str) -> Diagnostic:
-    return Diagnostic(f"E{code}", Severity.ERROR, span, message, mint_error=code)
+_error = mint_error
 
 
 def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) -> Diagnostic | None:
@@ -178,15 +189,20 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) ->
     opened = segment.count(_K.LPAR) - segment.count(_K.RPAR)
     expected = failure.expected
     found = "the end of the statement" if at_end else f"'{line.texts[index]}'"
-    if opened != 0 or (not at_end and kinds[index] is _K.RPAR):
-        return _error(2004, span, "brackets do not match: " + ("a ')' is missing" if opened > 0 else "too many ')'"))
-    if segment[0] is _K.IF and ("THEN" in expected or "DO" in expected) and not ({"THEN", "DO"} - expected):
+    # The manual's examples: a missing ")" is a syntax error (2003), one ")" too many is 2004.
+    if opened < 0 or (not at_end and kinds[index] is _K.RPAR and opened <= 0):
+        return _error(2004, span, "there is a ')' too many")
+    if opened > 0:
+        return _error(2003, span, "a ')' is missing")
+    if segment[0] is _K.IF and {"THEN", "DO"} <= expected and (at_end or kinds[index] not in _OPERATORS):
         return _error(2007, span, f"THEN or DO expected, found {found}")
     if segment[0] is _K.FOR and "TO" in expected:
         return _error(2008, span, f"TO expected, found {found}")
     if not at_end and kinds[index] in _KEYWORD_KINDS and "NAME" in expected:
         word = line.texts[index]
-        return _error(2006, span, f"'{word}' is a reserved keyword and cannot be used as a name")
+        if segment[0] is _K.DIM:
+            return _error(2003, span, f"'{word}' is a keyword and cannot be declared as a variable")
+        return _error(2006, span, f"'{word}' is a reserved keyword and cannot be used as a variable")
     if line.expanded[index if not at_end else end - 1]:
         return _error(2003, span, f"syntax error in the text of a macro: unexpected {found}")
     return _error(2003, span, f"syntax error: unexpected {found}")

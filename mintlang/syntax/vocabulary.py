@@ -106,4 +106,6 @@ def vocabulary(dialect: Dialect) -> Vocabulary:
             if v4 is not None and v4.channel_suffix:
                 suffixed.add(v3.name)
         constants = frozenset(db.v3_constants)
+    # CAMTABLE's "no table" argument: a reserved word, not a keyword entry (v4 guide line 7958).
+    words.setdefault("NULL", TokenKind.CONSTANT)
     return Vocabulary(dialect, words, canonical, frozenset(suffixed), constants)

@@ -1,0 +1,1 @@
+"""The analyser: rules over the semantic model that produce diagnostics."""

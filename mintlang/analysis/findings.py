@@ -1,0 +1,17 @@
+"""A diagnostic together with the file of the application it concerns."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from mintlang.codes import mint_error, own
+from mintlang.diagnostics import Diagnostic
+from mintlang.semantic.symbols import Unit
+
+__all__ = ["Finding", "mint_error", "own"]
+
+
+@dataclass(frozen=True, slots=True)
+class Finding:
+    unit: Unit
+    diagnostic: Diagnostic

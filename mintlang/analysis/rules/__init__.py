@@ -1,0 +1,51 @@
+"""The analyser's rules, one module each, in the order they run."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+
+from mintlang.analysis.findings import Finding
+from mintlang.analysis.rules import (
+    addressing,
+    arrays,
+    collisions,
+    declarations,
+    events,
+    flow,
+    hints,
+    keyword_usage,
+    limits,
+    unused,
+    v3_keywords,
+    values,
+)
+from mintlang.semantic.model import SemanticModel
+
+
+@dataclass(frozen=True, slots=True)
+class Rule:
+    name: str
+    check: Callable[[SemanticModel], Iterator[Finding]]
+
+    @property
+    def summary(self) -> str:
+        """The first line of the rule module's docstring."""
+        module = __import__(self.check.__module__, fromlist=["__doc__"])
+        return (module.__doc__ or "").strip().splitlines()[0]
+
+
+RULES: tuple[Rule, ...] = (
+    Rule("declarations", declarations.check),
+    Rule("keyword-usage", keyword_usage.check),
+    Rule("addressing", addressing.check),
+    Rule("values", values.check),
+    Rule("arrays", arrays.check),
+    Rule("events", events.check),
+    Rule("v3-keywords", v3_keywords.check),
+    Rule("flow", flow.check),
+    Rule("limits", limits.check),
+    Rule("collisions", collisions.check),
+    Rule("unused", unused.check),
+    Rule("hints", hints.check),
+)

@@ -1,0 +1,204 @@
+"""Axis and channel numbers, checked against the keyword and the controller.
+
+Brackets list axes (3.1.1): an empty place is 2001, more axes than the
+controller has or more values than listed axes is 2017, an axis listed twice
+is 2018, and only constants or simple variables may stand in them (an
+expression is a syntax error, 2003). Channel keywords take the dot only
+(``ADC[1]`` is invalid). Constant numbers out of the controller's range give
+the motion library's errors: 2 axis, 4 channel, 7 input, 8 output, 26 CAN
+node, 31 CAN bus, 35/36 terminal (Dot Parameters table, chapter 12.2).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+
+from mintlang.analysis.findings import Finding, mint_error
+from mintlang.analysis.traversal import KeywordUse, Use, keyword_uses, statements
+from mintlang.controllers import ChannelRange, ControllerProfile
+from mintlang.diagnostics import Span
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Addressing
+from mintlang.semantic.constants import constant_integer
+from mintlang.semantic.model import SemanticModel
+from mintlang.semantic.symbols import Unit
+from mintlang.syntax import nodes as n
+
+_CAPTURE_CHANNELS = ChannelRange(0, 5)  # the same on every controller
+_CAN_BUSES = ChannelRange(1, 2)
+_CAN_NODES = ChannelRange(0, 63)  # chapter 12, error 26
+_SERIAL_TERMINALS = frozenset({"_TMRS232", "_TMRS485"})
+_MORE_VALUES_THAN_AXES = frozenset({"CIRCLEA", "CIRCLER"})  # centre, centre, angle on two axes
+
+# Which range a channel keyword's number is checked against, and the error it gives.
+_Channels = Callable[[ControllerProfile], ChannelRange | None]
+_CHANNEL_FAMILIES: tuple[tuple[frozenset[str], _Channels, int], ...] = (
+    (frozenset({"IN", "INSTATE"}), lambda p: p.digital_inputs, 7),
+    (frozenset({"OUT"}), lambda p: p.digital_outputs, 8),
+    (frozenset({"ADC", "ADCMODE"}), lambda p: p.adc, 4),
+    (frozenset({"AUXDAC"}), lambda p: p.auxiliary_dac, 4),
+    (frozenset({"DAC", "DACLIMITMAX"}), lambda p: p.dac, 4),
+    (
+        frozenset({"AUXENCODER", "AUXENCODERSCALE", "AUXENCODERVEL", "AUXENCODERWRAP", "FASTAUXENCODER"}),
+        lambda p: p.auxiliary_encoders,
+        4,
+    ),
+    (
+        frozenset({"ENCODER", "ENCODERPRESCALE", "ENCODERSCALE", "ENCODERVEL", "ENCODERWRAP", "FASTENCODER"}),
+        lambda p: p.encoders,
+        4,
+    ),
+)
+
+
+def _channel_family(keyword: str) -> tuple[_Channels, int] | None:
+    if keyword.startswith("CAPTURE"):
+        return (lambda _: _CAPTURE_CHANNELS), 4
+    for names, channels, code in _CHANNEL_FAMILIES:
+        if keyword in names:
+            return channels, code
+    return None
+
+
+def check(model: SemanticModel) -> Iterator[Finding]:
+    db = database()
+    for use in keyword_uses(model):
+        keyword = db.keywords.get(use.keyword.keyword)
+        if keyword is None:
+            continue
+        if keyword.name.startswith("REMOTE"):
+            yield from _can_address(use)
+        elif keyword.name in ("COMMSMODE", "SERIALBAUD"):
+            yield from _terminal(use, model)
+        elif keyword.addressing is Addressing.AXIS:
+            yield from _axes(use, model, keyword.name)
+        elif keyword.addressing is Addressing.CHANNEL or _channel_family(keyword.name):
+            yield from _channel(use, model)
+    for unit, _, statement in statements(model):
+        if isinstance(statement, n.Axes):
+            yield from _axes_statement(unit, statement, model)
+
+
+def _axes(use: KeywordUse, model: SemanticModel, name: str) -> Iterator[Finding]:
+    selector = use.keyword.selector
+    if selector is None:
+        return
+    if not selector.dot:
+        yield from _axis_list(use.unit, selector, model)
+        statement = use.statement
+        if (
+            use.use is Use.WRITE
+            and isinstance(statement, n.KeywordStatement)
+            and statement.values is not None
+            and len(statement.values) > len(selector.items)
+            and name not in _MORE_VALUES_THAN_AXES
+        ):
+            extra = statement.values[len(selector.items)]
+            span = extra.span if extra is not None else statement.span
+            detail = f"{len(statement.values)} values for {len(selector.items)} axes"
+            yield Finding(use.unit, mint_error(2017, span, detail))
+        return
+    for item in selector.items[:1]:
+        yield from _axis_number(use.unit, item, model)
+
+
+def _axis_list(unit: Unit, selector: n.Selector, model: SemanticModel) -> Iterator[Finding]:
+    too_many = len(selector.items) > model.controller.axis_count
+    if too_many:
+        detail = f"{len(selector.items)} axes listed, {model.controller.title} has {model.controller.axis_count}"
+        yield Finding(unit, mint_error(2017, selector.span, detail))
+    seen: set[int] = set()
+    for item in selector.items:
+        if item is None:
+            yield Finding(unit, mint_error(2001, selector.span, "an axis number is missing between the commas"))
+            continue
+        if not isinstance(item, n.Number | n.VariableRef | n.ConstantRef):
+            detail = "an axis number in brackets must be a number or a simple variable (use the dot: KW.(a+1))"
+            yield Finding(unit, mint_error(2003, item.span, detail))
+            continue
+        axis = constant_integer(item, model.program.dialect)
+        if axis is not None and axis in seen:
+            yield Finding(unit, mint_error(2018, item.span, f"axis {axis} is listed twice"))
+        elif axis is not None:
+            seen.add(axis)
+            if not too_many:  # 2017 already says the list does not fit
+                yield from _axis_number(unit, item, model)
+
+
+def _axis_number(unit: Unit, item: n.Expression | None, model: SemanticModel) -> Iterator[Finding]:
+    axis = constant_integer(item, model.program.dialect)
+    if item is not None and axis is not None and axis not in model.controller.axes:
+        detail = f"axis {axis} does not exist on {model.controller.title} (axes {model.controller.axes})"
+        yield Finding(unit, mint_error(2, item.span, detail))
+
+
+def _channel(use: KeywordUse, model: SemanticModel) -> Iterator[Finding]:
+    ref = use.keyword
+    selector = ref.selector
+    if selector is not None and not selector.dot:
+        detail = f"{ref.keyword} addresses a channel: write {ref.keyword}.{_first_text(selector)}, not brackets"
+        yield Finding(use.unit, mint_error(2003, selector.span, detail))
+        return
+    family = _channel_family(ref.keyword)
+    if family is None:
+        return
+    channels, code = family
+    span: Span
+    if ref.channel is not None:
+        number, span = ref.channel, ref.spelling_span
+    elif selector is not None and selector.items:
+        item = selector.items[0]
+        number = constant_integer(item, model.program.dialect)
+        span = item.span if item is not None else selector.span
+    else:
+        return
+    valid = channels(model.controller)
+    if number is not None and (valid is None or number not in valid):
+        available = f"channels {valid}" if valid is not None else "none"
+        detail = f"{ref.keyword} channel {number} does not exist on {model.controller.title} ({available})"
+        yield Finding(use.unit, mint_error(code, span, detail))
+
+
+def _first_text(selector: n.Selector) -> str:
+    first = selector.items[0] if selector.items else None
+    return first.text if isinstance(first, n.Number) else "channel"
+
+
+def _can_address(use: KeywordUse) -> Iterator[Finding]:
+    selector = use.keyword.selector
+    if selector is None or not selector.dot or len(selector.items) < 2:
+        return
+    bus_item, node_item = selector.items[0], selector.items[1]
+    bus, node = constant_integer(bus_item), constant_integer(node_item)
+    if bus is not None and bus_item is not None and bus not in _CAN_BUSES:
+        yield Finding(use.unit, mint_error(31, bus_item.span, f"CAN bus {bus} does not exist (buses {_CAN_BUSES})"))
+    if node is not None and node_item is not None and node not in _CAN_NODES:
+        yield Finding(use.unit, mint_error(26, node_item.span, f"CAN node {node} is out of range ({_CAN_NODES})"))
+
+
+def _terminal(use: KeywordUse, model: SemanticModel) -> Iterator[Finding]:
+    """COMMSMODE and SERIALBAUD take a serial terminal: _tmRS232 or _tmRS485."""
+    selector = use.keyword.selector
+    if selector is None or not selector.dot or not selector.items:
+        return
+    item = selector.items[0]
+    value = constant_integer(item, model.program.dialect)
+    if value is None or item is None:
+        return
+    terminals = {name: int(record.value) for name, record in database().constants.items() if name.startswith("_TM")}
+    serial = {terminals[name] for name in _SERIAL_TERMINALS if name in terminals}
+    if value in serial:
+        return
+    if value in terminals.values():
+        detail = f"{use.keyword.keyword} applies to the serial terminals (_tmRS232, _tmRS485) only"
+        yield Finding(use.unit, mint_error(36, item.span, detail))
+    else:
+        yield Finding(use.unit, mint_error(35, item.span, f"there is no terminal {value}"))
+
+
+def _axes_statement(unit: Unit, statement: n.Axes, model: SemanticModel) -> Iterator[Finding]:
+    if statement.selector is None:
+        detail = "AXES without an axis list only reports the axes at the command line; in a program it fails"
+        yield Finding(unit, mint_error(2005, statement.span, detail))
+        return
+    yield from _axis_list(unit, statement.selector, model)

@@ -1,0 +1,110 @@
+"""Names used before they are declared, labels that do not exist, invalid macros.
+
+Mint v4 declares variables at compile time with DIM, in compile order
+(configuration, then program, top to bottom): a use earlier in the text than
+the DIM is error 3001 even if the DIM follows. GOSUB/GOTO to an unknown label
+and a label defined twice are error 3004; a macro name that is not a name, or
+a macro defined twice (also across configuration and program) is 3005; a macro
+whose text uses another macro fails with a syntax error (3.5).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from mintlang.analysis.findings import Finding, mint_error
+from mintlang.diagnostics import Edit, Fix, Span
+from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
+from mintlang.semantic.model import SemanticModel
+from mintlang.semantic.symbols import Symbol, SymbolKind, Unit
+from mintlang.syntax import nodes as n
+from mintlang.syntax.tokens import TokenKind
+
+
+def check(model: SemanticModel) -> Iterator[Finding]:
+    if model.program.dialect is Dialect.V4:
+        yield from _undeclared_variables(model)
+    yield from _labels(model)
+    yield from _macros(model)
+
+
+def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
+    renames = database()
+    for symbol in model.symbols.variables.values():
+        if renames.rename_of(symbol.name) is not None:
+            continue  # an old v3 keyword: the v3-keyword rule explains it
+        for index, occurrence in enumerate(symbol.references):
+            if occurrence.declared_before:
+                continue
+            fixes = (_add_dim(model, symbol, occurrence.unit, occurrence.span),) if index == 0 else ()
+            later = " (its DIM comes later: declarations must come first)" if symbol.definitions else ""
+            yield Finding(
+                occurrence.unit,
+                mint_error(3001, occurrence.span, f"'{occurrence.spelling}' is not declared{later}", fixes=fixes),
+            )
+
+
+def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span) -> Fix:
+    """Insert ``DIM name`` on its own line above the line of the first use."""
+    document = model.configuration if unit is Unit.CONFIGURATION and model.configuration else model.program
+    index = document.line_index
+    line = index.position(span.start).line
+    start = index.line_start(line)
+    text = document.source
+    indent_end = start
+    while indent_end < len(text) and text[indent_end] in " \t":
+        indent_end += 1
+    newline = "\r\n" if "\r\n" in text else "\n"
+    declaration = f"{text[start:indent_end]}DIM {symbol.name}{newline}"
+    return Fix(f"Declare '{symbol.name}' with DIM", (Edit(Span(start, start), declaration),))
+
+
+def _labels(model: SemanticModel) -> Iterator[Finding]:
+    for unit, table in model.symbols.labels.items():
+        for symbol in table.values():
+            for duplicate in symbol.definitions[1:]:
+                first = symbol.definitions[0].spelling
+                yield Finding(unit, mint_error(3004, duplicate.span, f"label #{first} is defined twice"))
+            if not symbol.definitions:
+                for reference in symbol.references:
+                    elsewhere = _defined_in_other_file(model, unit, symbol)
+                    detail = f"no label #{reference.spelling} in this file" + elsewhere
+                    yield Finding(unit, mint_error(3004, reference.span, detail))
+
+
+def _defined_in_other_file(model: SemanticModel, unit: Unit, symbol: Symbol) -> str:
+    other = Unit.PROGRAM if unit is Unit.CONFIGURATION else Unit.CONFIGURATION
+    if symbol.identity in model.symbols.labels[other] and model.symbols.labels[other][symbol.identity].definitions:
+        return f" (it is in the {other.value} file, and subroutines are not shared between the two)"
+    return ""
+
+
+def _macros(model: SemanticModel) -> Iterator[Finding]:
+    for unit, document in model.documents():
+        for line in document.lines:
+            for statement in n.walk_statements(line.statements):
+                if isinstance(statement, n.Define) and not statement.name_is_word:
+                    yield Finding(
+                        unit, mint_error(3005, statement.name.span, f"'{statement.name.text}' cannot name a macro")
+                    )
+    for symbol in model.symbols.macros.values():
+        if symbol.kind is not SymbolKind.MACRO:
+            continue
+        first = symbol.definitions[0]
+        for duplicate in symbol.definitions[1:]:
+            same = "" if duplicate.spelling.upper() == first.spelling.upper() else f" ('{first.spelling}' has the same first ten characters)"
+            yield Finding(
+                duplicate.unit, mint_error(3005, duplicate.span, f"macro '{duplicate.spelling}' is already defined{same}")
+            )
+    yield from _macro_in_macro(model)
+
+
+def _macro_in_macro(model: SemanticModel) -> Iterator[Finding]:
+    for unit, document in model.documents():
+        for definition in document.definitions:
+            for kind, text in definition.body:
+                if kind is TokenKind.NAME and n.identity(text) in model.symbols.macros and definition.body_span:
+                    detail = f"the text of macro '{definition.name}' uses macro '{text}', which Mint does not expand"
+                    yield Finding(unit, mint_error(2003, definition.body_span, detail))
+                    break

@@ -1,0 +1,33 @@
+"""The manual's execution-speed advice: one axis by dot, not brackets.
+
+``POS.1`` is smaller and faster than ``POS[1]`` (3.1.2); offered with a fix.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from mintlang.analysis.findings import Finding, own
+from mintlang.analysis.traversal import keyword_uses
+from mintlang.diagnostics import Edit, Fix
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Addressing
+from mintlang.semantic.model import SemanticModel
+from mintlang.syntax import nodes as n
+
+
+def check(model: SemanticModel) -> Iterator[Finding]:
+    db = database()
+    for use in keyword_uses(model):
+        selector = use.keyword.selector
+        if selector is None or selector.dot or len(selector.items) != 1:
+            continue
+        item = selector.items[0]
+        keyword = db.keywords.get(use.keyword.keyword)
+        if keyword is None or keyword.addressing is not Addressing.AXIS:
+            continue
+        if isinstance(item, n.Number | n.VariableRef):
+            text = item.text if isinstance(item, n.Number) else item.name.text
+            fix = Fix(f"Write .{text}", (Edit(selector.span, f".{text}"),))
+            detail = f"{use.keyword.spelling}.{text} is faster and smaller than {use.keyword.spelling}[{text}]"
+            yield Finding(use.unit, own("I201", selector.span, detail, fixes=(fix,)))

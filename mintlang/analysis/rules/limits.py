@@ -1,0 +1,42 @@
+"""The controller's table limits (3.9) and the 255-character line.
+
+Too many variables is 3002, too many labels 3000, too many macros 2015.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+
+from mintlang.analysis.findings import Finding, mint_error, own
+from mintlang.diagnostics import Span
+from mintlang.semantic.model import SemanticModel
+from mintlang.semantic.symbols import Symbol, Unit
+
+
+def check(model: SemanticModel) -> Iterator[Finding]:
+    controller = model.controller
+    symbols = model.symbols
+    yield from _over(symbols.variables.values(), controller.max_variables, 3002, "variables", controller.title)
+    yield from _over(symbols.macros.values(), controller.max_macros, 2015, "macros", controller.title)
+    for table in symbols.labels.values():
+        yield from _over(table.values(), controller.max_labels, 3000, "labels", controller.title)
+    limit = controller.max_line_length
+    for unit, document in model.documents():
+        offset = 0
+        for line in document.source.splitlines(keepends=True):
+            text = line.rstrip("\r\n")
+            if len(text) > limit:
+                detail = f"line has {len(text)} characters; the controller accepts {limit}"
+                yield Finding(unit, own("W111", Span(offset + limit, offset + len(text)), detail))
+            offset += len(line)
+
+
+def _over(symbols: Iterable[Symbol], limit: int, code: int, what: str, title: str) -> Iterator[Finding]:
+    """Report the first definition past the limit, in compile order."""
+    definitions = sorted(
+        (symbol.definitions[0] for symbol in symbols if symbol.definitions),
+        key=lambda occurrence: (occurrence.unit is not Unit.CONFIGURATION, occurrence.span.start),
+    )
+    if len(definitions) > limit:
+        extra = definitions[limit]
+        yield Finding(extra.unit, mint_error(code, extra.span, f"{len(definitions)} {what} defined; {title} holds {limit}"))

@@ -1,0 +1,68 @@
+"""Mint v3 words in v4 code: old keywords, labels and constants, with their replacements.
+
+The v4 guide keeps an entry for each replaced keyword ("replaced by … in Mint
+v4"); v4 reads such a word as an undeclared variable or an unknown keyword, so
+this rule says what it became and offers the rename when there is exactly one.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from mintlang.analysis.findings import Finding, own
+from mintlang.analysis.traversal import nodes_of, statements
+from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
+from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
+from mintlang.semantic.events import EventKind, event_of
+from mintlang.semantic.model import SemanticModel
+from mintlang.syntax import nodes as n
+
+
+def check(model: SemanticModel) -> Iterator[Finding]:
+    if model.program.dialect is not Dialect.V4:
+        return
+    for unit, _, statement in statements(model):
+        for name in _words(statement):
+            diagnostic = _old_word(name.text, name.span)
+            if diagnostic is not None:
+                yield Finding(unit, diagnostic)
+    for unit, document in model.documents():
+        for line in document.lines:
+            label = line.label
+            if label is not None:
+                event = event_of(label.text, Dialect.V3)
+                if event is not None and event.kind is EventKind.FASTPOS:
+                    new = f"#FASTIN{event.number if event.number is not None else ''}"
+                    fix = Fix(f"Rename to {new}", (Edit(label.span, new),))
+                    yield Finding(unit, own("W102", label.span, f"#{label.text} is Mint v3: v4 uses {new}", fixes=(fix,)))
+
+
+def _words(statement: n.Statement) -> Iterator[n.Name]:
+    match statement:
+        case n.BareName(name=name):
+            yield name
+        case n.Assignment(target=target):
+            yield target.name
+    for node in nodes_of(statement):
+        if isinstance(node, n.VariableRef):
+            yield node.name
+
+
+def _old_word(word: str, span: Span) -> Diagnostic | None:
+    db = database()
+    rename = db.rename_of(word)
+    if rename is not None:
+        if len(rename.new) == 1:
+            new = rename.new[0]
+            fix = Fix(f"Replace with {new}", (Edit(span, new),))
+            return own("W102", span, f"{word} is a Mint v3 keyword: v4 replaced it by {new}", fixes=(fix,))
+        replacement = " or ".join(rename.new) if rename.new else "nothing (it was removed)"
+        return own("W102", span, f"{word} is a Mint v3 keyword: v4 replaced it by {replacement}")
+    constant = db.v3_constants.get(word.upper())
+    if constant is not None and word.startswith("_"):
+        if constant.v4_name:
+            fix = Fix(f"Replace with {constant.v4_name}", (Edit(span, constant.v4_name),))
+            return own("W102", span, f"{word} is a Mint v3 constant: v4 uses {constant.v4_name}", fixes=(fix,))
+        return own("W102", span, f"{word} is a Mint v3 constant with no v4 equivalent")
+    return None

@@ -1,0 +1,41 @@
+"""Constant values written to a keyword, checked against its range (error 3).
+
+Only unscaled keywords are checked: for scaled ones the printed range applies
+to the value times the scale factor, which is not known before run time
+(10.2, Attributes).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from mintlang.analysis.findings import Finding, mint_error
+from mintlang.analysis.traversal import Use, keyword_uses
+from mintlang.keyworddb import database
+from mintlang.semantic.constants import constant_value
+from mintlang.semantic.model import SemanticModel
+from mintlang.syntax import nodes as n
+
+
+def check(model: SemanticModel) -> Iterator[Finding]:
+    db = database()
+    dialect = model.program.dialect
+    for use in keyword_uses(model):
+        if use.use is not Use.WRITE or not isinstance(use.statement, n.KeywordStatement):
+            continue
+        keyword = db.keywords.get(use.keyword.keyword)
+        attributes = keyword.attributes_for(model.controller.controller) if keyword else None
+        if attributes is None or attributes.scaled or attributes.range is None:
+            continue
+        low, high = attributes.range.minimum, attributes.range.maximum
+        if low is None or high is None:
+            continue
+        for value in use.statement.values or ():
+            number = constant_value(value, dialect)
+            if value is None or number is None:
+                continue
+            # Whole-number ranges are not enforced: the manual prints "0 ≤ x ≤ 10000" for KDERIV
+            # and then writes KDERIV = 1.5 in its example.
+            if number < low or number > high:
+                detail = f"{number:g} is outside the range of {use.keyword.keyword} ({attributes.range.text})"
+                yield Finding(use.unit, mint_error(3, value.span, detail))

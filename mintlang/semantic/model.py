@@ -1,0 +1,45 @@
+"""The semantic model of an application: configuration file plus program file.
+
+Built once per check and shared by every tool: the analyser's rules, the
+language server's navigation and the runtime's compiler all read the same
+symbol table and block structure, so no tool re-derives them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass
+
+from mintlang.controllers import ControllerProfile, profile
+from mintlang.keyworddb.model import Controller
+from mintlang.semantic.blocks import Structure, match_blocks
+from mintlang.semantic.symbols import SymbolTable, Unit, build_symbols
+from mintlang.syntax.parser import Document
+
+
+@dataclass(frozen=True, slots=True)
+class SemanticModel:
+    program: Document
+    configuration: Document | None
+    controller: ControllerProfile
+    symbols: SymbolTable
+    structures: Mapping[Unit, Structure]
+
+    def documents(self) -> Iterator[tuple[Unit, Document]]:
+        """The files in compile order: configuration first."""
+        if self.configuration is not None:
+            yield Unit.CONFIGURATION, self.configuration
+        yield Unit.PROGRAM, self.program
+
+
+def build_model(
+    program: Document,
+    configuration: Document | None = None,
+    controller: Controller | str = Controller.NEXTMOVE_PCI,
+) -> SemanticModel:
+    """Resolve names and blocks of a program and its optional configuration file."""
+    target = profile(controller)
+    structures = {Unit.PROGRAM: match_blocks(program.lines, target)}
+    if configuration is not None:
+        structures[Unit.CONFIGURATION] = match_blocks(configuration.lines, target)
+    return SemanticModel(program, configuration, target, build_symbols(program, configuration), structures)

@@ -75,7 +75,7 @@ class Position:
 class LineIndex:
     """Maps offsets to lines and columns; built once per source text."""
 
-    __slots__ = ("_starts", "_length")
+    __slots__ = ("_length", "_starts")
 
     def __init__(self, text: str) -> None:
         self._starts = [0, *(match.end() for match in _LINE_BREAK.finditer(text))]

@@ -47,7 +47,9 @@ def read_case(path: Path) -> CorpusCase:
         if found := _SETTING.match(stripped):
             settings[found.group(1).lower()] = found.group(2).lower()
     configuration_path = path.with_suffix(".cfg")
-    configuration = configuration_path.read_text("utf-8") if path.suffix == ".mnt" and configuration_path.exists() else None
+    configuration = (
+        configuration_path.read_text("utf-8") if path.suffix == ".mnt" and configuration_path.exists() else None
+    )
     return CorpusCase(
         path, source, configuration, fragment, settings["controller"], settings["dialect"], frozenset(expected)
     )

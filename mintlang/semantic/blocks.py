@@ -13,8 +13,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from enum import StrEnum
 
-from mintlang.controllers import ControllerProfile, NestingLimits
 from mintlang.codes import mint_error, own
+from mintlang.controllers import ControllerProfile, NestingLimits
 from mintlang.diagnostics import Diagnostic
 from mintlang.syntax import nodes as n
 
@@ -89,59 +89,61 @@ def _opener_kind(statement: n.Statement) -> BlockKind | None:
 _error = mint_error
 
 
+class _Matcher:
+    """The compiler's block stack over one file."""
+
+    def __init__(self, limits: NestingLimits) -> None:
+        self.limits = limits
+        self.stack: list[_Open] = []
+        self.blocks: list[Block] = []
+        self.diagnostics: list[Diagnostic] = []
+
+    def statement(self, statement: n.Statement, line: int) -> None:
+        kind = _opener_kind(statement)
+        if kind is not None:
+            self.stack.append(_Open(kind, statement, line))
+            problem = _nesting_problem(self.stack, self.limits)
+            if problem is not None:
+                self.diagnostics.append(_error(2015, statement.span, problem))
+        elif isinstance(statement, n.Until):
+            self.close(BlockKind.REPEAT, statement, line, 2013, "UNTIL without REPEAT")
+        elif isinstance(statement, n.BlockWord) and statement.word == "ELSE":
+            top = self.stack[-1] if self.stack else None
+            if top is None or top.kind is not BlockKind.IF or top.middle is not None:
+                self.diagnostics.append(_error(2011, statement.span, "ELSE without IF .. DO"))
+            else:
+                top.middle = statement
+        elif isinstance(statement, n.BlockWord) and statement.word in _CLOSERS:
+            expected, code, message = _CLOSERS[statement.word]
+            self.close(expected, statement, line, code, message)
+
+    def close(self, kind: BlockKind, closer: n.Statement, line: int, code: int, message: str) -> None:
+        stack = self.stack
+        if not stack or stack[-1].kind is not kind:
+            if stack:
+                message += f" (the innermost open block is {stack[-1].kind.value} on line {stack[-1].line})"
+            self.diagnostics.append(_error(code, closer.span, message))
+            return
+        top = stack.pop()
+        self.blocks.append(Block(kind, top.opener, top.line, top.middle, closer, line))
+
+    def finish(self) -> Structure:
+        for unclosed in self.stack:
+            self.blocks.append(Block(unclosed.kind, unclosed.opener, unclosed.line, unclosed.middle, None, None))
+            word = _CLOSING_WORD[unclosed.kind]
+            detail = f"this {unclosed.kind.value} block is never closed with {word}"
+            self.diagnostics.append(own("W110", unclosed.opener.span, detail))
+        self.blocks.sort(key=lambda block: block.opener.span.start)
+        return Structure(tuple(self.blocks), tuple(self.diagnostics))
+
+
 def match_blocks(lines: tuple[n.Line, ...], controller: ControllerProfile) -> Structure:
     """Match the blocks of one file and check the nesting limits."""
-    blocks: list[Block] = []
-    diagnostics: list[Diagnostic] = []
-    stack: list[_Open] = []
-    limits = controller.nesting
+    matcher = _Matcher(controller.nesting)
     for line in lines:
         for statement in n.walk_statements(line.statements):
-            kind = _opener_kind(statement)
-            if kind is not None:
-                stack.append(_Open(kind, statement, line.number))
-                problem = _nesting_problem(stack, limits)
-                if problem is not None:
-                    diagnostics.append(_error(2015, statement.span, problem))
-                continue
-            if isinstance(statement, n.Until):
-                _close(stack, BlockKind.REPEAT, statement, line.number, blocks, diagnostics, 2013, "UNTIL without REPEAT")
-            elif isinstance(statement, n.BlockWord):
-                if statement.word == "ELSE":
-                    top = stack[-1] if stack else None
-                    if top is None or top.kind is not BlockKind.IF or top.middle is not None:
-                        diagnostics.append(_error(2011, statement.span, "ELSE without IF .. DO"))
-                    else:
-                        top.middle = statement
-                elif statement.word in _CLOSERS:
-                    expected, code, message = _CLOSERS[statement.word]
-                    _close(stack, expected, statement, line.number, blocks, diagnostics, code, message)
-    for unclosed in stack:
-        blocks.append(Block(unclosed.kind, unclosed.opener, unclosed.line, unclosed.middle, None, None))
-        word = _CLOSING_WORD[unclosed.kind]
-        detail = f"this {unclosed.kind.value} block is never closed with {word}"
-        diagnostics.append(own("W110", unclosed.opener.span, detail))
-    blocks.sort(key=lambda block: block.opener.span.start)
-    return Structure(tuple(blocks), tuple(diagnostics))
-
-
-def _close(
-    stack: list[_Open],
-    kind: BlockKind,
-    closer: n.Statement,
-    line: int,
-    blocks: list[Block],
-    diagnostics: list[Diagnostic],
-    code: int,
-    message: str,
-) -> None:
-    if not stack or stack[-1].kind is not kind:
-        if stack:
-            message += f" (the innermost open block is {stack[-1].kind.value} on line {stack[-1].line})"
-        diagnostics.append(_error(code, closer.span, message))
-        return
-    top = stack.pop()
-    blocks.append(Block(kind, top.opener, top.line, top.middle, closer, line))
+            matcher.statement(statement, line.number)
+    return matcher.finish()
 
 
 def _nesting_problem(stack: list[_Open], limits: NestingLimits) -> str | None:

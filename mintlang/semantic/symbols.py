@@ -172,7 +172,12 @@ class _Collector:
                 self._use(target.name, unit, write=True, element=isinstance(target, n.ElementRef))
             case n.Jump(label=label):
                 self._label(labels, label, unit).references.append(
-                    Occurrence(unit, label.span, label.text, label.identity in labels and bool(labels[label.identity].definitions))
+                    Occurrence(
+                        unit,
+                        label.span,
+                        label.text,
+                        label.identity in labels and bool(labels[label.identity].definitions),
+                    )
                 )
             case n.BareName():
                 pass  # an unknown word, not a variable reference (3007)

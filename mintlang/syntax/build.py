@@ -146,7 +146,9 @@ class LineBuilder:
         ref = self._keyword_ref(keyword_token, selector)  # type: ignore[arg-type]
         return n.KeywordStatement(self._tree_span(tree), ref, terminal, values, fill, arguments, using)
 
-    def _command_arguments(self, tree: Tree) -> tuple[tuple[n.Expression | n.StringLiteral, ...], tuple[n.Expression, ...]]:
+    def _command_arguments(
+        self, tree: Tree
+    ) -> tuple[tuple[n.Expression | n.StringLiteral, ...], tuple[n.Expression, ...]]:
         arguments: list[n.Expression | n.StringLiteral] = []
         using: tuple[n.Expression, ...] = ()
         for child in tree.children:
@@ -169,9 +171,7 @@ class LineBuilder:
         return n.FunctionStatement(self._tree_span(tree), call, values, fill)
 
     def _values(self, tree: Tree) -> tuple[tuple[n.Expression | None, ...], bool]:
-        values = tuple(
-            self.expression(child.children[0]) if child.children else None for child in self._trees(tree)
-        )
+        values = tuple(self.expression(child.children[0]) if child.children else None for child in self._trees(tree))
         last = tree.children[-1]
         fill = isinstance(last, Token) and last.type == "SEMICOLON"
         return values, fill
@@ -217,17 +217,20 @@ class LineBuilder:
 
     def _dim(self, tree: Tree) -> n.Dim:
         children = tree.children
-        name = self._name(children[1])  # type: ignore[arg-type]
+        modifier = children[1] if isinstance(children[1], Token) and children[1].type == "KEYWORD" else None
+        rest = children[2:] if modifier is not None else children[1:]
+        name = self._name(rest[0])  # type: ignore[arg-type]
         size: n.Expression | None = None
         values: tuple[n.Expression, ...] = ()
         fill = False
-        if len(children) > 2 and isinstance(children[2], Token) and children[2].type == "LPAR":
-            size = self.expression(children[3])
+        if len(rest) > 1 and isinstance(rest[1], Token) and rest[1].type == "LPAR":
+            size = self.expression(rest[2])
         last = children[-1]
         if isinstance(last, Tree) and last.data == "dim_values":
-            values = tuple(self.expression(child) for child in last.children if isinstance(child, Tree | Token) and not _is_separator(child))
+            values = tuple(self.expression(child) for child in last.children if not _is_separator(child))
             fill = isinstance(last.children[-1], Token) and last.children[-1].type == "SEMICOLON"
-        return n.Dim(self._tree_span(tree), name, size, values, fill)
+        offline = self._text(modifier).upper() if modifier is not None else None
+        return n.Dim(self._tree_span(tree), name, size, values, fill, offline)
 
     def _define(self, tree: Tree) -> n.Define:
         children = tree.children
@@ -312,7 +315,7 @@ class LineBuilder:
 
     def _string(self, token: Token) -> n.StringLiteral:
         text = self._text(token)
-        closed = len(text) > 1 and not text[-1].isalnum() and text[-1] in "\"\u201c\u201d\u201e\u201f\u2033"
+        closed = len(text) > 1 and not text[-1].isalnum() and text[-1] in '"\u201c\u201d\u201e\u201f\u2033'
         return n.StringLiteral(self._span(token), text, text[1:-1] if closed else text[1:])
 
     # ----------------------------------------------------------- selectors
@@ -358,7 +361,10 @@ class LineBuilder:
     def _binary(self, tree: Tree) -> n.Binary:
         left, operator, right = tree.children
         return n.Binary(
-            self._tree_span(tree), _OPERATORS[operator.type], self.expression(left), self.expression(right)  # type: ignore[union-attr]
+            self._tree_span(tree),
+            _OPERATORS[operator.type],
+            self.expression(left),
+            self.expression(right),  # type: ignore[union-attr]
         )
 
     def _unary(self, tree: Tree) -> n.Unary:

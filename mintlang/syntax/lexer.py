@@ -28,18 +28,24 @@ from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 _K = TokenKind
 
+_SPACE = " \t\f\v\u00a0\ufeff"
+_TYPOGRAPHIC_QUOTES = "\u201c\u201d\u201e\u201f\u2033"
+_TYPOGRAPHIC_APOSTROPHES = "\u2018\u2019"
+_DOUBLE = '"' + _TYPOGRAPHIC_QUOTES
+_SINGLE = "'" + _TYPOGRAPHIC_APOSTROPHES
 _LEXEME = re.compile(
-    r"""
-    (?P<ws>[ \t\f\v\u00a0\ufeff]+)
-  | (?P<word>[A-Za-z_][A-Za-z0-9_]*)
-  | (?P<number>0[xX][0-9A-Za-z_]*|[0-9][0-9A-Za-z_]*(?:\.[0-9]*)?|\.[0-9]+)
-  | (?P<string>["\u201c\u201d\u201e\u201f\u2033][^"\u201c\u201d\u201e\u201f\u2033\r\n]*["\u201c\u201d\u201e\u201f\u2033]?)
-  | (?P<char>['\u2018\u2019][^'\u2018\u2019\r\n]?['\u2018\u2019]?)
-  | (?P<hash>\#[A-Za-z0-9_]*)
-  | (?P<punct><>|<=|>=|[-<>=+*/%&|!~^()\[\],;:?.])
-  | (?P<invalid>[^ \t\f\v\u00a0\ufeff\r\nA-Za-z0-9_"\u201c\u201d\u201e\u201f\u2033'\u2018\u2019\#<>=+*/%&|!~^()\[\],;:?.-]+)
-    """,
-    re.VERBOSE,
+    "|".join(
+        (
+            f"(?P<ws>[{_SPACE}]+)",
+            r"(?P<word>[A-Za-z_][A-Za-z0-9_]*)",
+            r"(?P<number>0[xX][0-9A-Za-z_]*|[0-9][0-9A-Za-z_]*(?:\.[0-9]*)?|\.[0-9]+)",
+            f"(?P<string>[{_DOUBLE}][^{_DOUBLE}\r\n]*[{_DOUBLE}]?)",
+            f"(?P<char>[{_SINGLE}][^{_SINGLE}\r\n]?[{_SINGLE}]?)",
+            r"(?P<hash>\#[A-Za-z0-9_]*)",
+            r"(?P<punct><>|<=|>=|[-<>=+*/%&|!~^()\[\],;:?.])",
+            f"(?P<invalid>[^{_SPACE}\r\nA-Za-z0-9_{_DOUBLE}{_SINGLE}#<>=+*/%&|!~^()\\[\\],;:?.\\-]+)",
+        )
+    )
 )
 _LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)?")
 _DIGITS_AFTER_DOT = re.compile(r"[0-9]+")
@@ -73,9 +79,6 @@ _PUNCTUATION: dict[str, TokenKind] = {
 }
 # After these (with no space between), "." is the dot parameter, not a number.
 _DOT_OWNERS = frozenset({_K.KEYWORD, _K.FUNCTION, _K.DOT, _K.AXES})
-
-_TYPOGRAPHIC_QUOTES = "\u201c\u201d\u201e\u201f\u2033"
-_TYPOGRAPHIC_APOSTROPHES = "\u2018\u2019"
 
 
 @dataclass(frozen=True, slots=True)
@@ -115,9 +118,9 @@ def _number_issue(text: str, dialect: Dialect) -> str | None:
             return "digit separators need Mint v4"
         if not (integer.startswith("0") and "." not in text):
             return "'_' separates digits only in binary and hexadecimal numbers"
-    if len(integer) > 1 and integer.startswith("0") and "." not in text:
-        if any(c not in "01_" for c in integer):
-            return f"'{text}' is not a valid binary number (a leading zero makes a number binary)"
+    binary = len(integer) > 1 and integer.startswith("0") and "." not in text
+    if binary and any(c not in "01_" for c in integer):
+        return f"'{text}' is not a valid binary number (a leading zero makes a number binary)"
     return None
 
 
@@ -180,7 +183,9 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
                 issues.extend(_quote_issues(text, position, _TYPOGRAPHIC_APOSTROPHES, "'"))
             else:
                 kind = _K.INVALID
-                issues.append(_syntax_issue(position, len(text), "a character constant is one character in single quotes"))
+                issues.append(
+                    _syntax_issue(position, len(text), "a character constant is one character in single quotes")
+                )
         elif group == "hash":
             if line_start and len(text) > 1:
                 kind = _K.LABEL

@@ -13,8 +13,8 @@ from collections.abc import Mapping, MutableMapping
 from dataclasses import dataclass
 
 from mintlang.diagnostics import Span
-from mintlang.syntax.nodes import identity
 from mintlang.syntax.lexer import LexResult
+from mintlang.syntax.nodes import identity
 from mintlang.syntax.tokens import TokenKind
 
 _K = TokenKind
@@ -77,7 +77,9 @@ def logical_lines(lexed: LexResult) -> list[LogicalLine]:
         ends = [end + offset for end in line.ends]
         end = offset + line.comment_end if line.comment_end else ends[-1]
         if current is None:
-            current = LogicalLine(number, starts[0], end, list(kinds), list(line.texts), starts, ends, [False] * len(kinds))
+            current = LogicalLine(
+                number, starts[0], end, list(kinds), list(line.texts), starts, ends, [False] * len(kinds)
+            )
         else:
             current.kinds.extend(kinds)
             current.texts.extend(line.texts)

@@ -137,16 +137,7 @@ class Parenthesised:
 
 
 Expression = (
-    Number
-    | CharConstant
-    | ConstantRef
-    | VariableRef
-    | ElementRef
-    | KeywordRef
-    | Call
-    | Unary
-    | Binary
-    | Parenthesised
+    Number | CharConstant | ConstantRef | VariableRef | ElementRef | KeywordRef | Call | Unary | Binary | Parenthesised
 )
 
 
@@ -264,6 +255,7 @@ class Dim:
     size: Expression | None
     values: tuple[Expression, ...]
     fill: bool
+    modifier: str | None = None  # Mint v3's OFFLINE (a keyword anywhere else is an error)
 
 
 @dataclass(frozen=True, slots=True)

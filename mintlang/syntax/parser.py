@@ -121,7 +121,7 @@ def _recover(line: LogicalLine, builder: LineBuilder, failure: ParseFailure, dia
         segment_kinds = tuple(kinds[begin:end])
         result = parse_kinds(segment_kinds)
         if isinstance(result, Tree):
-            statements.extend(LineBuilder(_slice(line, begin, end), builder._words).line(result)[1])  # noqa: SLF001
+            statements.extend(LineBuilder(_slice(line, begin, end), builder._words).line(result)[1])
             continue
         span = Span(line.starts[begin], line.ends[end - 1])
         statements.append(n.SyntaxError_(span, _opened_block(kinds[begin:end])))
@@ -198,10 +198,11 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) ->
         return _error(2007, span, f"THEN or DO expected, found {found}")
     if segment[0] is _K.FOR and "TO" in expected:
         return _error(2008, span, f"TO expected, found {found}")
+    if segment[0] is _K.DIM and index > begin + 1 and kinds[index - 1] in _KEYWORD_KINDS:
+        word = line.texts[index - 1]
+        return _error(2003, line.token_span(index - 1), f"'{word}' is a keyword and cannot be declared as a variable")
     if not at_end and kinds[index] in _KEYWORD_KINDS and "NAME" in expected:
         word = line.texts[index]
-        if segment[0] is _K.DIM:
-            return _error(2003, span, f"'{word}' is a keyword and cannot be declared as a variable")
         return _error(2006, span, f"'{word}' is a reserved keyword and cannot be used as a variable")
     if line.expanded[index if not at_end else end - 1]:
         return _error(2003, span, f"syntax error in the text of a macro: unexpected {found}")

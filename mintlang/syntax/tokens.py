@@ -101,9 +101,11 @@ TRIVIA = frozenset({TokenKind.WS, TokenKind.NEWLINE, TokenKind.COMMENT})
 GRAMMAR_KEYWORDS = frozenset(
     TokenKind(name)
     for name in (
-        "IF THEN DO ELSE ENDIF FOR TO STEP NEXT REPEAT UNTIL WHILE ENDW LOOP ENDL EXIT "
-        "GOSUB GOTO RETURN END PAUSE DIM DEFINE AXES PRINT INPUT USING HEX BIN AND OR XOR NOT MOD"
-    ).split()
+        *("IF", "THEN", "DO", "ELSE", "ENDIF", "FOR", "TO", "STEP", "NEXT"),
+        *("REPEAT", "UNTIL", "WHILE", "ENDW", "LOOP", "ENDL", "EXIT"),
+        *("GOSUB", "GOTO", "RETURN", "END", "PAUSE", "DIM", "DEFINE", "AXES"),
+        *("PRINT", "INPUT", "USING", "HEX", "BIN", "AND", "OR", "XOR", "NOT", "MOD"),
+    )
 )
 
 # Every kind a word of letters can lex to.

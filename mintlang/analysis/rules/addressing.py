@@ -17,6 +17,7 @@ from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import KeywordUse, Use, keyword_uses, statements
 from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.diagnostics import Span
+from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing
 from mintlang.semantic.constants import constant_integer
@@ -61,6 +62,8 @@ def _channel_family(keyword: str) -> tuple[_Channels, int] | None:
 
 
 def check(model: SemanticModel) -> Iterator[Finding]:
+    if model.program.dialect is not Dialect.V4:
+        return  # the attributes are those of v4 keywords; v3 code is read to be migrated
     db = database()
     for use in keyword_uses(model):
         keyword = db.keywords.get(use.keyword.keyword)

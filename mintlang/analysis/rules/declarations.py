@@ -93,9 +93,14 @@ def _macros(model: SemanticModel) -> Iterator[Finding]:
             continue
         first = symbol.definitions[0]
         for duplicate in symbol.definitions[1:]:
-            same = "" if duplicate.spelling.upper() == first.spelling.upper() else f" ('{first.spelling}' has the same first ten characters)"
+            same = (
+                ""
+                if duplicate.spelling.upper() == first.spelling.upper()
+                else f" ('{first.spelling}' has the same first ten characters)"
+            )
             yield Finding(
-                duplicate.unit, mint_error(3005, duplicate.span, f"macro '{duplicate.spelling}' is already defined{same}")
+                duplicate.unit,
+                mint_error(3005, duplicate.span, f"macro '{duplicate.spelling}' is already defined{same}"),
             )
     yield from _macro_in_macro(model)
 

@@ -10,6 +10,7 @@ from collections.abc import Iterator
 from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.traversal import keyword_uses
 from mintlang.diagnostics import Edit, Fix
+from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing
 from mintlang.semantic.model import SemanticModel
@@ -17,6 +18,8 @@ from mintlang.syntax import nodes as n
 
 
 def check(model: SemanticModel) -> Iterator[Finding]:
+    if model.program.dialect is not Dialect.V4:
+        return  # the attributes are those of v4 keywords; v3 code is read to be migrated
     db = database()
     for use in keyword_uses(model):
         selector = use.keyword.selector

@@ -13,6 +13,7 @@ from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import Use, keyword_uses, statements
+from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Keyword, KeywordKind
 from mintlang.semantic.model import SemanticModel
@@ -20,6 +21,8 @@ from mintlang.syntax import nodes as n
 
 
 def check(model: SemanticModel) -> Iterator[Finding]:
+    if model.program.dialect is not Dialect.V4:
+        return  # the attributes are those of v4 keywords; v3 code is read to be migrated
     db = database()
     controller = model.controller.controller
     for use in keyword_uses(model):

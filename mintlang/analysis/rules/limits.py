@@ -39,4 +39,6 @@ def _over(symbols: Iterable[Symbol], limit: int, code: int, what: str, title: st
     )
     if len(definitions) > limit:
         extra = definitions[limit]
-        yield Finding(extra.unit, mint_error(code, extra.span, f"{len(definitions)} {what} defined; {title} holds {limit}"))
+        yield Finding(
+            extra.unit, mint_error(code, extra.span, f"{len(definitions)} {what} defined; {title} holds {limit}")
+        )

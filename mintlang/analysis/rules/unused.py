@@ -17,7 +17,9 @@ def check(model: SemanticModel) -> Iterator[Finding]:
     for symbol in symbols.variables.values():
         if symbol.definitions and not symbol.references:
             first = symbol.definitions[0]
-            yield Finding(first.unit, own("W103", first.span, f"variable '{first.spelling}' is declared but never used"))
+            yield Finding(
+                first.unit, own("W103", first.span, f"variable '{first.spelling}' is declared but never used")
+            )
     for symbol in symbols.macros.values():
         if symbol.definitions and not symbol.references:
             first = symbol.definitions[0]

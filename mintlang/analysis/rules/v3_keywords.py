@@ -35,7 +35,9 @@ def check(model: SemanticModel) -> Iterator[Finding]:
                 if event is not None and event.kind is EventKind.FASTPOS:
                     new = f"#FASTIN{event.number if event.number is not None else ''}"
                     fix = Fix(f"Rename to {new}", (Edit(label.span, new),))
-                    yield Finding(unit, own("W102", label.span, f"#{label.text} is Mint v3: v4 uses {new}", fixes=(fix,)))
+                    yield Finding(
+                        unit, own("W102", label.span, f"#{label.text} is Mint v3: v4 uses {new}", fixes=(fix,))
+                    )
 
 
 def _words(statement: n.Statement) -> Iterator[n.Name]:

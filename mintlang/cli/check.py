@@ -1,0 +1,122 @@
+"""``mint check``: the static analyser on the command line.
+
+Exit status: 0 when no diagnostic of error severity was found, 1 when one was,
+2 for a usage or I/O problem (reported in one line, never as a traceback).
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import click
+from rich.console import Console
+
+from mintlang import check_application
+from mintlang.cli.files import collect, is_configuration
+from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, render_text
+from mintlang.diagnostics import Severity
+from mintlang.dialect import Dialect
+from mintlang.keyworddb.model import Controller
+from mintlang.source import SourceFile, read_source
+
+_USAGE_ERROR = 2
+
+
+def _codes(value: str | None) -> tuple[str, ...] | None:
+    if value is None:
+        return None
+    return tuple(code.strip().upper() for code in value.split(",") if code.strip())
+
+
+def _fail(message: str) -> None:
+    click.echo(f"mint check: {message}", err=True)
+    sys.exit(_USAGE_ERROR)
+
+
+@click.command()
+@click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path))
+@click.option("--dialect", type=click.Choice([d.value for d in Dialect]), default="v4", show_default=True)
+@click.option(
+    "--controller",
+    type=click.Choice([c.value for c in Controller]),
+    default=Controller.NEXTMOVE_PCI.value,
+    show_default=True,
+)
+@click.option(
+    "--config",
+    "config_path",
+    type=click.Path(path_type=Path),
+    help="Configuration file whose variables and macros the programs see.",
+)
+@click.option(
+    "--format",
+    "output_format",
+    type=click.Choice(["text", "json", "sarif", "github"]),
+    default="text",
+    show_default=True,
+)
+@click.option("--select", help="Only these codes or code prefixes, comma-separated (E2,W103).")
+@click.option("--ignore", help="Leave out these codes or code prefixes, comma-separated.")
+def check(
+    paths: tuple[Path, ...],
+    dialect: str,
+    controller: str,
+    config_path: Path | None,
+    output_format: str,
+    select: str | None,
+    ignore: str | None,
+) -> None:
+    """Check Mint programs (.mnt; directories are searched) for the controller's errors and more."""
+    try:
+        files = collect(paths)
+        configuration = read_source(config_path) if config_path is not None else None
+    except FileNotFoundError as missing:
+        _fail(f"no such file or directory: {missing.args[0]}")
+        return
+    except OSError as error:
+        _fail(f"cannot read {error.filename}: {error.strerror}")
+        return
+    if not files:
+        _fail("no .mnt files found in " + ", ".join(str(p) for p in paths))
+
+    options: dict[str, object] = {
+        "dialect": dialect,
+        "controller": controller,
+        "select": _codes(select),
+        "ignore": _codes(ignore) or (),
+    }
+    reports: list[FileReport] = []
+    if configuration is not None:
+        reports.append(_configuration_report(configuration, options))
+    for path in files:
+        try:
+            source = read_source(path)
+        except OSError as error:
+            _fail(f"cannot read {path}: {error.strerror}")
+            return
+        if is_configuration(path):
+            reports.append(_configuration_report(source, options))
+        else:
+            config_text = configuration.text if configuration is not None else None
+            analysis = check_application(source.text, config=config_text, **options)  # type: ignore[arg-type]
+            reports.append(FileReport(str(path), source.text, analysis.program))
+
+    if output_format == "json":
+        click.echo(as_json(reports))
+    elif output_format == "sarif":
+        click.echo(as_sarif(reports))
+    elif output_format == "github":
+        output = as_github(reports)
+        if output:
+            click.echo(output)
+    else:
+        render_text(reports, Console(highlight=False))
+    failed = any(d.severity is Severity.ERROR for report in reports for d in report.diagnostics)
+    sys.exit(1 if failed else 0)
+
+
+def _configuration_report(source: SourceFile, options: dict[str, object]) -> FileReport:
+    """A configuration file checked on its own (with an empty program)."""
+    analysis = check_application("", config=source.text, **options)  # type: ignore[arg-type]
+    return FileReport(str(source.path), source.text, analysis.configuration)

@@ -1,0 +1,147 @@
+"""Rendering diagnostics: code frames for people, JSON, SARIF and GitHub annotations for tools."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from rich.console import Console
+from rich.markup import escape
+
+from mintlang.codes import OWN_CODES
+from mintlang.diagnostics import Diagnostic, LineIndex, Severity
+from mintlang.keyworddb import database
+
+
+@dataclass(frozen=True, slots=True)
+class FileReport:
+    """The diagnostics of one file, with what is needed to show where they are."""
+
+    path: str
+    source: str
+    diagnostics: tuple[Diagnostic, ...]
+
+    def located(self) -> list[tuple[Diagnostic, int, int, int, int]]:
+        """Each diagnostic with 1-based start line/column and end line/column (end exclusive)."""
+        index = LineIndex(self.source)
+        result = []
+        for diagnostic in self.diagnostics:
+            start = index.position(diagnostic.span.start)
+            end = index.position(diagnostic.span.end)
+            result.append((diagnostic, start.line, start.column, end.line, end.column))
+        return result
+
+
+_STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.INFO: "bold cyan"}
+
+
+def render_text(reports: Sequence[FileReport], console: Console) -> None:
+    """rustc/ruff-style code frames and a closing count."""
+    counts = dict.fromkeys(Severity, 0)
+    for report in reports:
+        lines = report.source.splitlines()
+        for diagnostic, line, column, end_line, end_column in report.located():
+            counts[diagnostic.severity] += 1
+            style = _STYLE[diagnostic.severity]
+            console.print(f"[{style}]{diagnostic.severity.value}[{diagnostic.code}][/]: {escape(diagnostic.message)}")
+            console.print(f"  [blue]-->[/] {escape(report.path)}:{line}:{column}")
+            text = lines[line - 1] if 0 < line <= len(lines) else ""
+            gutter = " " * len(str(line))
+            width = max(1, (end_column if end_line == line else len(text) + 1) - column)
+            console.print(f"  {gutter} [blue]|[/]")
+            console.print(f"  [blue]{line} |[/] {escape(text.expandtabs(1))}", highlight=False)
+            console.print(f"  {gutter} [blue]|[/] {' ' * (column - 1)}[{style}]{'^' * width}[/]")
+            for fix in diagnostic.fixes:
+                console.print(f"  {gutter} [blue]=[/] fix: {escape(fix.title)}")
+            console.print()
+    summary = ", ".join(f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity)
+    console.print(f"[bold]{len(reports)} file{'s' if len(reports) != 1 else ''} checked:[/] {summary}")
+
+
+def as_json(reports: Sequence[FileReport]) -> str:
+    records = [
+        {
+            "path": report.path,
+            "code": diagnostic.code,
+            "mint_error": diagnostic.mint_error,
+            "severity": diagnostic.severity.value,
+            "message": diagnostic.message,
+            "line": line,
+            "column": column,
+            "end_line": end_line,
+            "end_column": end_column,
+        }
+        for report in reports
+        for diagnostic, line, column, end_line, end_column in report.located()
+    ]
+    return json.dumps(records, indent=2, ensure_ascii=False)
+
+
+def _title(code: str) -> str:
+    if code.startswith("E"):
+        record = database().errors.get(int(code[1:]))
+        return record.title if record else code
+    return OWN_CODES.get(code, code)
+
+
+_SARIF_LEVEL = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
+
+
+def as_sarif(reports: Sequence[FileReport]) -> str:
+    """SARIF 2.1.0, the format code-scanning services read."""
+    results = []
+    codes: set[str] = set()
+    for report in reports:
+        for diagnostic, line, column, end_line, end_column in report.located():
+            codes.add(diagnostic.code)
+            results.append(
+                {
+                    "ruleId": diagnostic.code,
+                    "level": _SARIF_LEVEL[diagnostic.severity],
+                    "message": {"text": diagnostic.message},
+                    "locations": [
+                        {
+                            "physicalLocation": {
+                                "artifactLocation": {"uri": report.path},
+                                "region": {
+                                    "startLine": line,
+                                    "startColumn": column,
+                                    "endLine": end_line,
+                                    "endColumn": end_column,
+                                },
+                            }
+                        }
+                    ],
+                }
+            )
+    rules = [{"id": code, "shortDescription": {"text": _title(code)}} for code in sorted(codes)]
+    document = {
+        "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
+        "version": "2.1.0",
+        "runs": [{"tool": {"driver": {"name": "mint check", "rules": rules}}, "results": results}],
+    }
+    return json.dumps(document, indent=2, ensure_ascii=False)
+
+
+_GITHUB_LEVEL = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
+
+
+def as_github(reports: Sequence[FileReport]) -> str:
+    """GitHub Actions workflow commands: one annotation a line."""
+
+    def escape_data(text: str) -> str:
+        return text.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
+
+    def escape_property(text: str) -> str:
+        return escape_data(text).replace(":", "%3A").replace(",", "%2C")
+
+    lines = []
+    for report in reports:
+        for diagnostic, line, column, end_line, end_column in report.located():
+            properties = (
+                f"file={escape_property(report.path)},line={line},col={column},"
+                f"endLine={end_line},endColumn={end_column},title={escape_property(diagnostic.code)}"
+            )
+            lines.append(f"::{_GITHUB_LEVEL[diagnostic.severity]} {properties}::{escape_data(diagnostic.message)}")
+    return "\n".join(lines)

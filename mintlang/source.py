@@ -1,0 +1,43 @@
+"""Reading and writing Mint source files byte-exactly.
+
+Old Windows tools saved programs in cp1252 or latin-1. A file is decoded as
+UTF-8 when it is valid UTF-8, else as cp1252, else as latin-1 (which maps
+every byte); encoding the text again with the same codec gives back the same
+bytes, so tools that rewrite a file never change what they did not mean to.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+_ENCODINGS = ("utf-8", "cp1252", "latin-1")
+
+
+@dataclass(frozen=True, slots=True)
+class SourceFile:
+    path: Path
+    text: str
+    encoding: str
+
+    def encode(self, text: str | None = None) -> bytes:
+        """``text`` (default: the file's own) in the file's encoding."""
+        return (self.text if text is None else text).encode(self.encoding)
+
+
+def decode(data: bytes) -> tuple[str, str]:
+    """The text of ``data`` and the encoding that reproduces ``data`` exactly."""
+    for encoding in _ENCODINGS:
+        try:
+            text = data.decode(encoding)
+        except UnicodeDecodeError:
+            continue
+        if text.encode(encoding) == data:
+            return text, encoding
+    raise AssertionError("latin-1 decodes every byte string")  # pragma: no cover
+
+
+def read_source(path: Path) -> SourceFile:
+    """Read a source file; raises OSError when it cannot be read."""
+    text, encoding = decode(path.read_bytes())
+    return SourceFile(path, text, encoding)

@@ -1,0 +1,1 @@
+"""Developer tools of the Mint toolchain (not shipped with the package)."""

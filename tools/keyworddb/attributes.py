@@ -1,0 +1,180 @@
+"""Parse the garbled "Attributes" tables of chapter 10 and their value ranges.
+
+A row is ``<controllers> <Read> <Write> <Command> <Multi-Axis> <Scaled>
+<Default> <Range>``; the five flag cells are ticks or nothing, one space apart
+(see ``checkmarks``).  Long controller labels, defaults and ranges wrap onto
+lines of their own, which this module glues back to their row.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from mintlang.keyworddb.model import Attributes, Controller, ValueRange
+from tools.keyworddb.checkmarks import TICK
+
+_NUMBER = r"-?\d[\d,]*(?:\.\d+)*"
+_DASH = "[-\u2013]"  # the guide prints ranges with hyphens and en dashes
+_LABEL = re.compile(
+    r"^(?P<label>(?:All|N(?:e|en)xt[Mm]ove|NM|MintDrive|ServoNode)"
+    r"(?: ?(?:PCI|PC|BX|51|&|,))*)\d*,?(?=\s|$)"
+)
+_HEADER = re.compile(r"^(Controller Read|Axis$|Scaled Default Range)")
+_STOP = re.compile(r"^(On |LOOPTIME|Figure |Keyword Reference|MN1262|[A-Z][a-z]+ [a-z]+ )")
+_RANGE_START = re.compile(rf"^(?:{_NUMBER}\s*(?:[<≤]|{_DASH}|to\b|\.\.|,|or\b)|[Ss]ee\b|{_NUMBER}$)")
+_WHOLE_INTERVAL = re.compile(rf"^{_NUMBER}\s*[<≤]")
+"""A range cell that starts the text at once: the Default cell was empty."""
+_INTERVAL = re.compile(rf"^(?P<min>{_NUMBER})\s*[<≤]\s*x\s*[<≤]\s*(?P<max>{_NUMBER})\s*(?:ms)?$")
+_SPAN = re.compile(rf"^(?P<min>{_NUMBER})\s*(?:{_DASH}|to|\.\.)\s*(?P<max>{_NUMBER})$")
+_CHOICES = re.compile(rf"^{_NUMBER}(?:\s*(?:,|,? or)\s*{_NUMBER})*$")
+_FLAG_COUNT = 5
+
+
+@dataclass
+class _Row:
+    label: str
+    flags: list[bool]
+    rest: list[str]
+    line: int
+    shifted: tuple[list[bool], str] | None = None  # the reading with one leading empty cell restored
+
+
+def controllers_of_label(label: str, supported: tuple[Controller, ...]) -> tuple[Controller, ...]:
+    """The controllers a row label names, limited to those supporting the keyword."""
+    named: set[Controller] = set()
+    if re.search(r"\bPCI\b", label):
+        named.add(Controller.NEXTMOVE_PCI)
+    if re.search(r"\bPC\b", label):
+        named.add(Controller.NEXTMOVE_PC)
+    if re.search(r"\bBX\b", label):
+        named.add(Controller.NEXTMOVE_BX)
+    if not named and re.search(r"(?i)next?move", label):
+        named.update({Controller.NEXTMOVE_PCI, Controller.NEXTMOVE_PC, Controller.NEXTMOVE_BX})
+    if "MintDrive" in label:
+        named.add(Controller.MINTDRIVE)
+    if "ServoNode" in label:
+        named.add(Controller.SERVONODE51)
+    if not named:  # "All", or no label at all
+        named = set(Controller)
+    return tuple(c for c in supported if c in named) or tuple(c for c in Controller if c in named)
+
+
+def _take_flags(text: str) -> tuple[list[bool], str] | None:
+    """Consume the five flag cells from the start of ``text``; the rest follows."""
+    flags = []
+    for _ in range(_FLAG_COUNT):
+        if text.startswith(TICK):
+            flags.append(True)
+            text = text[1:]
+        elif text.startswith(" ") or not text:
+            flags.append(False)
+        else:
+            return None
+        text = text[1:] if text.startswith(" ") else text
+    return flags, text
+
+
+def _split_row(raw: str) -> tuple[str, str] | None:
+    """Split a table line into its controller label and the cells after it."""
+    text = raw.lstrip(" ")
+    if text.startswith(TICK):
+        return "", text
+    match = _LABEL.match(text)
+    if not match or TICK not in text[match.end() :]:
+        return None
+    return match["label"], text[match.end() + 1 :]
+
+
+def _rows(lines: list[tuple[int, str]]) -> list[_Row]:
+    rows: list[_Row] = []
+    pending_label: list[str] = []
+    for number, raw in lines:
+        text = raw.strip()
+        if not text or _HEADER.match(text):
+            continue
+        if _STOP.match(text):
+            break
+        split = _split_row(raw.rstrip("\n").removesuffix(" "))
+        taken = _take_flags(split[1]) if split else None
+        if split and taken:
+            label = " ".join([*pending_label, split[0]])
+            shifted = _take_flags(" " + split[1]) if pending_label and not split[0] else None
+            rows.append(_Row(label, taken[0], [taken[1]], number, shifted))
+            pending_label = []
+        elif _LABEL.match(text):
+            pending_label.append(text)
+        elif rows:
+            rows[-1].rest.append(text)
+    return [_realign(row, rows) for row in rows]
+
+
+def _realign(row: _Row, rows: list[_Row]) -> _Row:
+    """Undo a lost leading empty cell on a row whose label wrapped onto lines of its own.
+
+    The conversion sometimes drops that cell (FLY, CAMTABLE on MintDrive); the
+    shifted reading is taken only when it then agrees with another row of the
+    same table and the literal reading agrees with none.
+    """
+    others = [other.flags for other in rows if other is not row]
+    if row.shifted is None or row.flags in others or row.shifted[0] not in others:
+        return row
+    return _Row(row.label, row.shifted[0], [row.shifted[1], *row.rest[1:]], row.line)
+
+
+def _default_and_range(rest: list[str]) -> tuple[str | None, str | None]:
+    """Split the text after the flags into the Default and Range cells."""
+    first, *more = rest
+    if first.startswith(" ") or not first.strip():
+        text = " ".join([first.strip(), *more]).strip()
+        return None, text or None
+    words = " ".join([first, *more]).split()
+    if _WHOLE_INTERVAL.match(" ".join(words)):
+        return None, " ".join(words)
+    for cut in range(1, len(words)):
+        candidate = " ".join(words[cut:])
+        if _RANGE_START.match(candidate):
+            return " ".join(words[:cut]), candidate
+    return " ".join(words), None
+
+
+def _number(text: str) -> float:
+    """A printed number; "-83886.07.0" (ENCODERVEL) is a misplaced point, so drop all but the last."""
+    whole, _, fraction = text.replace(",", "").rpartition(".")
+    return float(f"{whole.replace('.', '')}.{fraction}" if whole else fraction)
+
+
+def parse_range(text: str) -> ValueRange:
+    """Numbers where the manual prints an interval or a list of numbers; else text only."""
+    fractional = re.search(r"\d\.\d", text) is not None
+    compact = re.sub(r"\s+", " ", text.strip())
+    bounds: tuple[float, float] | None = None
+    if match := _INTERVAL.match(compact) or _SPAN.match(compact):
+        bounds = _number(match["min"]), _number(match["max"])
+    elif _CHOICES.match(compact):
+        values = [_number(v) for v in re.findall(_NUMBER, compact)]
+        bounds = min(values), max(values)
+    if bounds is None:
+        return ValueRange(compact, None, None, fractional)
+    return ValueRange(compact, bounds[0], bounds[1], fractional)
+
+
+def parse_attributes(lines: list[tuple[int, str]], supported: tuple[Controller, ...]) -> tuple[Attributes, ...]:
+    """One ``Attributes`` per table row; ``lines`` are the raw lines of the section."""
+    result = []
+    for row in _rows(lines):
+        default, range_text = _default_and_range(row.rest)
+        read, write, command, multi_axis, scaled = row.flags
+        result.append(
+            Attributes(
+                controllers=controllers_of_label(row.label, supported),
+                read=read,
+                write=write,
+                command=command,
+                multi_axis=multi_axis,
+                scaled=scaled,
+                default=default,
+                range=parse_range(range_text) if range_text else None,
+            )
+        )
+    return tuple(result)

@@ -1,6 +1,7 @@
 """Test settings shared by every part: hypothesis profiles.
 
-``HYPOTHESIS_PROFILE=long`` runs the generated-input tests ten times longer.
+``HYPOTHESIS_PROFILE=long`` runs the property tests ten times longer; the fuzz
+tests scale with ``MINT_FUZZ_SCALE`` (see ``tests/fuzzing.py``).
 """
 
 from __future__ import annotations

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 
 from mintlang.analysis.findings import Finding
 from mintlang.analysis.rules import RULES
+from mintlang.analysis.traversal import gather
 from mintlang.diagnostics import Diagnostic
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
@@ -34,8 +35,9 @@ def analyse(model: SemanticModel, *, select: Iterable[str] | None = None, ignore
     for unit, document in model.documents():
         findings.extend(Finding(unit, diagnostic) for diagnostic in document.diagnostics)
         findings.extend(Finding(unit, diagnostic) for diagnostic in model.structures[unit].diagnostics)
+    facts = gather(model)
     for rule in RULES:
-        findings.extend(rule.check(model))
+        findings.extend(rule.check(facts))
     per_unit: dict[Unit, list[Diagnostic]] = {Unit.PROGRAM: [], Unit.CONFIGURATION: []}
     seen: set[tuple[Unit, str, int, int]] = set()
     for finding in findings:

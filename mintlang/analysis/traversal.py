@@ -1,22 +1,18 @@
-"""Shared walks over the semantic model, so each rule states only its check."""
+"""One walk over the semantic model, shared by every rule.
+
+The rules ask the same questions (every statement, every keyword and how it
+is used, every array element); gathering the answers once keeps a check fast
+enough to run on every keystroke in the language server.
+"""
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from dataclasses import dataclass
 from enum import StrEnum
 
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
-
-
-def statements(model: SemanticModel) -> Iterator[tuple[Unit, n.Line, n.Statement]]:
-    """Every statement of both files in compile order, IF .. THEN bodies included."""
-    for unit, document in model.documents():
-        for line in document.lines:
-            for statement in n.walk_statements(line.statements):
-                yield unit, line, statement
 
 
 class Use(StrEnum):
@@ -35,18 +31,44 @@ class KeywordUse:
     use: Use
 
 
-def nodes_of(statement: n.Statement) -> Iterator[n.Expression]:
-    """Every expression node a statement evaluates (not descending into IF .. THEN bodies)."""
-    for expression in n.expressions_of(statement):
-        yield from n.walk_expression(expression)
+@dataclass(frozen=True, slots=True)
+class Facts:
+    """The model and what one walk over it found, in compile order."""
+
+    model: SemanticModel
+    statements: tuple[tuple[Unit, n.Line, n.Statement], ...]  # IF .. THEN bodies included
+    keyword_uses: tuple[KeywordUse, ...]
+    elements: tuple[tuple[Unit, n.ElementRef], ...]  # array elements read or written
+    names: tuple[tuple[Unit, n.Name], ...]  # user words: variables read or written, bare words
 
 
-def keyword_uses(model: SemanticModel) -> Iterator[KeywordUse]:
-    """Every keyword written in either file, with how it is used there."""
-    for unit, _, statement in statements(model):
-        if isinstance(statement, n.KeywordStatement):
-            use = Use.WRITE if statement.values is not None else Use.COMMAND
-            yield KeywordUse(unit, statement, statement.keyword, use)
-        for node in nodes_of(statement):
-            if isinstance(node, n.KeywordRef):
-                yield KeywordUse(unit, statement, node, Use.READ)
+def gather(model: SemanticModel) -> Facts:
+    statements: list[tuple[Unit, n.Line, n.Statement]] = []
+    uses: list[KeywordUse] = []
+    elements: list[tuple[Unit, n.ElementRef]] = []
+    names: list[tuple[Unit, n.Name]] = []
+    for unit, document in model.documents():
+        for line in document.lines:
+            for statement in n.walk_statements(line.statements):
+                statements.append((unit, line, statement))
+                match statement:
+                    case n.KeywordStatement(keyword=keyword, values=values):
+                        uses.append(
+                            KeywordUse(unit, statement, keyword, Use.WRITE if values is not None else Use.COMMAND)
+                        )
+                    case n.Assignment(target=target) | n.Input(target=target):
+                        names.append((unit, target.name))
+                        if isinstance(target, n.ElementRef):
+                            elements.append((unit, target))
+                    case n.BareName(name=name):
+                        names.append((unit, name))
+                for expression in n.expressions_of(statement):
+                    for node in n.walk_expression(expression):
+                        if isinstance(node, n.KeywordRef):
+                            uses.append(KeywordUse(unit, statement, node, Use.READ))
+                        elif isinstance(node, n.ElementRef):
+                            elements.append((unit, node))
+                            names.append((unit, node.name))
+                        elif isinstance(node, n.VariableRef):
+                            names.append((unit, node.name))
+    return Facts(model, tuple(statements), tuple(uses), tuple(elements), tuple(names))

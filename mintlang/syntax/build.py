@@ -67,15 +67,13 @@ class LineBuilder:
     def _name(self, token: Token) -> n.Name:
         return n.Name(self._text(token), self._span(token))
 
-    def _first(self, child: Child) -> int:
-        """Index of the first token under ``child`` (empty subtrees hold none)."""
-        return _edge_token(child, 0)
-
-    def _last(self, child: Child) -> int:
-        return _edge_token(child, -1)
-
     def _tree_span(self, tree: Child) -> Span:
-        return Span(self._line.starts[self._first(tree)], self._line.ends[self._last(tree)])
+        if isinstance(tree, Token):
+            return self._span(tree)
+        meta = tree.meta
+        if meta.empty:  # an empty optional part: a zero-width span where its parent starts
+            return Span(0, 0)
+        return Span(self._line.starts[meta.start_pos], self._line.ends[meta.end_pos])
 
     @staticmethod
     def _trees(tree: Tree) -> list[Tree]:
@@ -449,18 +447,6 @@ _EXPRESSIONS: dict[str, Callable[[LineBuilder, Tree], n.Expression]] = {
     "element": _B._element,
     "keyword_read": _B._keyword_read,
 }
-
-
-def _edge_token(child: Child, end: int) -> int:
-    """Index of the first (end=0) or last (end=-1) token of a subtree; -1 when it has none."""
-    if isinstance(child, Token):
-        return child.start_pos  # type: ignore[return-value]
-    children = child.children if end == 0 else reversed(child.children)
-    for grandchild in children:
-        index = _edge_token(grandchild, end)
-        if index >= 0:
-            return index
-    return -1
 
 
 def _is_comma(child: Child) -> bool:

@@ -3,8 +3,9 @@
 An LR parse depends only on the sequence of terminal kinds, never on token
 texts, so the tree shape computed for ``KEYWORD EQUAL NUMBER`` serves every
 ``SPEED = 10`` and ``ACCEL = 2000`` of a program. Leaves of cached trees hold
-the position of their token in the line (``Token.start_pos``); the builder
-reads texts and spans from the line itself.
+the position of their token in the line (``Token.start_pos``), and subtrees
+the positions of their first and last token (``Tree.meta``); the builder reads
+texts and spans from the line itself.
 """
 
 from __future__ import annotations
@@ -35,21 +36,38 @@ class _PresetTokens(Lexer):
 @cache
 def _parser() -> Lark:
     grammar = resources.files("mintlang.syntax").joinpath("grammar.lark").read_text(encoding="utf-8")
-    return Lark(grammar, parser="lalr", lexer=_PresetTokens, strict=True, propagate_positions=False)
+    # propagate_positions gives every subtree the positions of its first and last token, which
+    # here are token indices: computed once per cached tree, they make node spans O(1).
+    return Lark(grammar, parser="lalr", lexer=_PresetTokens, strict=True, propagate_positions=True)
+
+
+# Beyond these the line is not analysed: the controller takes 255 characters a line,
+# and the tree builder and the rules recurse once per level of nesting.
+MAX_TOKENS = 20_000
+MAX_DEPTH = 200
 
 
 @dataclass(frozen=True, slots=True)
 class ParseFailure:
-    """Where the grammar stopped: the index of the offending token (len = end of line)."""
+    """Where the grammar stopped: the index of the offending token (len = end of line).
+
+    ``too_complex`` is set instead when the line is too long or too deeply
+    nested to analyse.
+    """
 
     index: int
     expected: frozenset[str]
+    too_complex: str | None = None
 
 
 ParseResult = Tree | ParseFailure
 
 _results: dict[tuple[TokenKind, ...], ParseResult] = {}
 _CACHE_LIMIT = 200_000
+
+
+def clear_cache() -> None:
+    _results.clear()
 
 
 def parse_kinds(kinds: tuple[TokenKind, ...]) -> ParseResult:
@@ -64,11 +82,28 @@ def parse_kinds(kinds: tuple[TokenKind, ...]) -> ParseResult:
 
 
 def _parse(kinds: tuple[TokenKind, ...]) -> ParseResult:
-    stream = [Token(kind.value, kind.value, start_pos=index) for index, kind in enumerate(kinds)]
+    if len(kinds) > MAX_TOKENS:
+        return ParseFailure(0, frozenset(), f"{len(kinds)} tokens on one line")
+    stream = [Token(kind.value, kind.value, start_pos=index, end_pos=index) for index, kind in enumerate(kinds)]
     try:
-        return _parser().parse(stream)  # type: ignore[arg-type]
+        tree = _parser().parse(stream)  # type: ignore[arg-type]
     except UnexpectedToken as error:
         index = error.token.start_pos if error.token.type != "$END" else len(kinds)
         return ParseFailure(index if index is not None else len(kinds), frozenset(error.expected))
     except UnexpectedInput:
         return ParseFailure(len(kinds), frozenset())
+    depth = _depth(tree)
+    if depth > MAX_DEPTH:
+        return ParseFailure(0, frozenset(), f"expressions nested {depth} deep")
+    return tree
+
+
+def _depth(tree: Tree) -> int:
+    """Height of a tree, measured without recursion."""
+    deepest = 0
+    stack = [(tree, 1)]
+    while stack:
+        node, depth = stack.pop()
+        deepest = max(deepest, depth)
+        stack.extend((child, depth + 1) for child in node.children if isinstance(child, Tree))
+    return deepest

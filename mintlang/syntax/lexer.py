@@ -247,6 +247,10 @@ def _lex_line_cached(line: str, dialect: Dialect) -> LexedLine:
     return _lex_line(line, dialect, vocabulary(dialect))
 
 
+def clear_cache() -> None:
+    _lex_line_cached.cache_clear()
+
+
 def _relocate(diagnostic: Diagnostic, offset: int) -> Diagnostic:
     span = Span(diagnostic.span.start + offset, diagnostic.span.end + offset)
     fixes = tuple(

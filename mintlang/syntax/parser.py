@@ -21,6 +21,8 @@ from mintlang.dialect import Dialect
 from mintlang.syntax import nodes as n
 from mintlang.syntax.build import LineBuilder
 from mintlang.syntax.grammar import ParseFailure, parse_kinds
+from mintlang.syntax.grammar import clear_cache as clear_parse_cache
+from mintlang.syntax.lexer import clear_cache as clear_lex_cache
 from mintlang.syntax.lexer import lex
 from mintlang.syntax.lines import (
     Expansion,
@@ -60,6 +62,12 @@ class Document:
     def statements(self) -> list[tuple[n.Line, n.Statement]]:
         """Every statement with its line, IF .. THEN bodies included, in source order."""
         return [(line, statement) for line in self.lines for statement in n.walk_statements(line.statements)]
+
+
+def clear_caches() -> None:
+    """Forget lexed lines and parsed token sequences (benchmarks measure cold runs with this)."""
+    clear_lex_cache()
+    clear_parse_cache()
 
 
 def parse(
@@ -115,6 +123,10 @@ def _recover(line: LogicalLine, builder: LineBuilder, failure: ParseFailure, dia
         label = n.Name(line.texts[0][1:], line.token_span(0))
         start = 1
     statements: list[n.Statement] = []
+    if failure.too_complex is not None:  # retrying the parts would not make it simpler
+        statements.append(n.SyntaxError_(line.span))
+        diagnostics.append(_describe(line, 0, len(kinds), failure) or _error(2003, line.span, "syntax error"))
+        return n.Line(line.span, line.number, label, tuple(statements))
     for begin, end in _segments(kinds, start):
         if begin == end:
             continue
@@ -179,6 +191,9 @@ _error = mint_error
 
 def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) -> Diagnostic | None:
     """The diagnostic for a statement the grammar rejected, numbered as the controller would."""
+    if failure.too_complex is not None:
+        span = Span(line.starts[begin], line.ends[end - 1])
+        return _error(2015, span, f"too complex to analyse: {failure.too_complex}")
     kinds = line.kinds
     index = begin + failure.index
     at_end = index >= end

@@ -20,13 +20,13 @@ from mintlang.analysis.rules import (
     v3_keywords,
     values,
 )
-from mintlang.semantic.model import SemanticModel
+from mintlang.analysis.traversal import Facts
 
 
 @dataclass(frozen=True, slots=True)
 class Rule:
     name: str
-    check: Callable[[SemanticModel], Iterator[Finding]]
+    check: Callable[[Facts], Iterator[Finding]]
 
     @property
     def summary(self) -> str:

@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.traversal import KeywordUse, Use, keyword_uses, statements
+from mintlang.analysis.traversal import Facts, KeywordUse, Use
 from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
@@ -61,11 +61,12 @@ def _channel_family(keyword: str) -> tuple[_Channels, int] | None:
     return None
 
 
-def check(model: SemanticModel) -> Iterator[Finding]:
+def check(facts: Facts) -> Iterator[Finding]:
+    model = facts.model
     if model.program.dialect is not Dialect.V4:
         return  # the attributes are those of v4 keywords; v3 code is read to be migrated
     db = database()
-    for use in keyword_uses(model):
+    for use in facts.keyword_uses:
         keyword = db.keywords.get(use.keyword.keyword)
         if keyword is None:
             continue
@@ -77,7 +78,7 @@ def check(model: SemanticModel) -> Iterator[Finding]:
             yield from _axes(use, model, keyword.name)
         elif keyword.addressing is Addressing.CHANNEL or _channel_family(keyword.name):
             yield from _channel(use, model)
-    for unit, _, statement in statements(model):
+    for unit, _, statement in facts.statements:
         if isinstance(statement, n.Axes):
             yield from _axes_statement(unit, statement, model)
 

@@ -10,10 +10,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, own
-from mintlang.semantic.model import SemanticModel
+from mintlang.analysis.traversal import Facts
 
 
-def check(model: SemanticModel) -> Iterator[Finding]:
+def check(facts: Facts) -> Iterator[Finding]:
+    model = facts.model
     for symbol in model.symbols.all():
         first = next(symbol.occurrences(), None)
         if first is None:

@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
+from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
@@ -22,7 +23,8 @@ from mintlang.syntax import nodes as n
 from mintlang.syntax.tokens import TokenKind
 
 
-def check(model: SemanticModel) -> Iterator[Finding]:
+def check(facts: Facts) -> Iterator[Finding]:
+    model = facts.model
     if model.program.dialect is Dialect.V4:
         yield from _undeclared_variables(model)
     yield from _labels(model)

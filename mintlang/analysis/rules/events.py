@@ -10,15 +10,16 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error, own
+from mintlang.analysis.traversal import Facts
 from mintlang.controllers import ControllerProfile
 from mintlang.semantic.events import Event, EventKind, event_of
-from mintlang.semantic.model import SemanticModel
 
 _COMMS = range(1, 6)
 _CAN = range(1, 3)
 
 
-def check(model: SemanticModel) -> Iterator[Finding]:
+def check(facts: Facts) -> Iterator[Finding]:
+    model = facts.model
     dialect = model.program.dialect
     for unit, labels in model.symbols.labels.items():
         handlers = [

@@ -16,6 +16,7 @@ import math
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error, own
+from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Severity
 from mintlang.semantic.blocks import LOOPS, Block
 from mintlang.semantic.model import SemanticModel
@@ -40,7 +41,8 @@ def _receives_flow(statement: n.Statement) -> bool:
     return isinstance(statement, n.Until) or (isinstance(statement, n.BlockWord) and statement.word in _RECEIVERS)
 
 
-def check(model: SemanticModel) -> Iterator[Finding]:
+def check(facts: Facts) -> Iterator[Finding]:
+    model = facts.model
     for unit, document in model.documents():
         yield from _reachability(unit, document)
         yield from _jumps_out_of_blocks(unit, document, model)

@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.traversal import Use, keyword_uses, statements
+from mintlang.analysis.traversal import Facts, Use
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Keyword, KeywordKind
@@ -20,12 +20,13 @@ from mintlang.semantic.model import SemanticModel
 from mintlang.syntax import nodes as n
 
 
-def check(model: SemanticModel) -> Iterator[Finding]:
+def check(facts: Facts) -> Iterator[Finding]:
+    model = facts.model
     if model.program.dialect is not Dialect.V4:
         return  # the attributes are those of v4 keywords; v3 code is read to be migrated
     db = database()
     controller = model.controller.controller
-    for use in keyword_uses(model):
+    for use in facts.keyword_uses:
         ref = use.keyword
         keyword = db.keywords.get(ref.keyword)
         if keyword is None:
@@ -44,7 +45,7 @@ def check(model: SemanticModel) -> Iterator[Finding]:
         if problem is not None:
             code, detail = problem
             yield Finding(use.unit, mint_error(code, ref.spelling_span, detail))
-    for unit, _, statement in statements(model):
+    for unit, _, statement in facts.statements:
         if isinstance(statement, n.BareName) and db.rename_of(statement.name.text) is None:
             detail = f"'{statement.name.text}' is not a keyword (check the spelling and the abbreviation)"
             yield Finding(unit, mint_error(3007, statement.span, detail))

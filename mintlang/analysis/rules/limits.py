@@ -8,12 +8,13 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 
 from mintlang.analysis.findings import Finding, mint_error, own
+from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Span
-from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Symbol, Unit
 
 
-def check(model: SemanticModel) -> Iterator[Finding]:
+def check(facts: Facts) -> Iterator[Finding]:
+    model = facts.model
     controller = model.controller
     symbols = model.symbols
     yield from _over(symbols.variables.values(), controller.max_variables, 3002, "variables", controller.title)

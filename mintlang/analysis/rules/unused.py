@@ -8,11 +8,12 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, own
+from mintlang.analysis.traversal import Facts
 from mintlang.semantic.events import event_of
-from mintlang.semantic.model import SemanticModel
 
 
-def check(model: SemanticModel) -> Iterator[Finding]:
+def check(facts: Facts) -> Iterator[Finding]:
+    model = facts.model
     symbols = model.symbols
     for symbol in symbols.variables.values():
         if symbol.definitions and not symbol.references:

@@ -10,23 +10,21 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, own
-from mintlang.analysis.traversal import nodes_of, statements
+from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.semantic.events import EventKind, event_of
-from mintlang.semantic.model import SemanticModel
-from mintlang.syntax import nodes as n
 
 
-def check(model: SemanticModel) -> Iterator[Finding]:
+def check(facts: Facts) -> Iterator[Finding]:
+    model = facts.model
     if model.program.dialect is not Dialect.V4:
         return
-    for unit, _, statement in statements(model):
-        for name in _words(statement):
-            diagnostic = _old_word(name.text, name.span)
-            if diagnostic is not None:
-                yield Finding(unit, diagnostic)
+    for unit, name in facts.names:
+        diagnostic = _old_word(name.text, name.span)
+        if diagnostic is not None:
+            yield Finding(unit, diagnostic)
     for unit, document in model.documents():
         for line in document.lines:
             label = line.label
@@ -38,17 +36,6 @@ def check(model: SemanticModel) -> Iterator[Finding]:
                     yield Finding(
                         unit, own("W102", label.span, f"#{label.text} is Mint v3: v4 uses {new}", fixes=(fix,))
                     )
-
-
-def _words(statement: n.Statement) -> Iterator[n.Name]:
-    match statement:
-        case n.BareName(name=name):
-            yield name
-        case n.Assignment(target=target):
-            yield target.name
-    for node in nodes_of(statement):
-        if isinstance(node, n.VariableRef):
-            yield node.name
 
 
 def _old_word(word: str, span: Span) -> Diagnostic | None:

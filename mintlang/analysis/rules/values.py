@@ -10,20 +10,20 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.traversal import Use, keyword_uses
+from mintlang.analysis.traversal import Facts, Use
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.semantic.constants import constant_value
-from mintlang.semantic.model import SemanticModel
 from mintlang.syntax import nodes as n
 
 
-def check(model: SemanticModel) -> Iterator[Finding]:
+def check(facts: Facts) -> Iterator[Finding]:
+    model = facts.model
     if model.program.dialect is not Dialect.V4:
         return  # the attributes are those of v4 keywords; v3 code is read to be migrated
     db = database()
     dialect = model.program.dialect
-    for use in keyword_uses(model):
+    for use in facts.keyword_uses:
         if use.use is not Use.WRITE or not isinstance(use.statement, n.KeywordStatement):
             continue
         keyword = db.keywords.get(use.keyword.keyword)

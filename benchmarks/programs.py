@@ -1,0 +1,75 @@
+"""Realistic generated Mint programs and Python files of the same length, for benchmarks.
+
+The program is what a machine builder writes: declarations, set-up of
+several axes, a main loop of moves with I/O handshakes, a menu over the
+terminal, homing and event handlers. A fixed seed makes it the same on
+every run.
+"""
+
+from __future__ import annotations
+
+import random
+
+_BLOCKS = (
+    lambda r, i: [f"DIM speed{i % 30}", f"DIM target{i % 30}(20) = {r.randint(1, 99)},{r.randint(1, 99)};"],
+    lambda r, i: [
+        f"SPEED[0,1] = {r.randint(10, 500)},{r.randint(10, 500)}",
+        f"ACCEL = {r.randint(100, 5000)};",
+        f"MOVEA = target{i % 30}(1), target{i % 30}(2) : GO[0,1]",
+        "PAUSE IDLE[0,1]",
+    ],
+    lambda r, i: [
+        f"IF IN{i % 16} AND speed{i % 30} > {r.randint(1, 100)} DO",
+        f"  OUT{i % 8} = _ON : WAIT = {r.randint(10, 200)}",
+        "ELSE",
+        f'  PRINT "speed ", speed{i % 30}; " at ", POS.0 USING 5,2',
+        "ENDIF",
+    ],
+    lambda r, i: [
+        f"FOR speed{i % 30} = 1 TO {r.randint(2, 20)} STEP 2",
+        f"  MOVER.{i % 4} = speed{i % 30} * 1.5 + SIN {r.randint(0, 90)} : GO.{i % 4}",
+        "  PAUSE IDLE.0",
+        "NEXT",
+    ],
+    lambda r, i: ["REM ---- next station ----", ""],
+    lambda r, i: [
+        f"WHILE !IN{i % 16}",
+        f"  JOG.1 = ADC.0 * {r.randint(1, 9)} - 127 : REM follow the joystick",
+        "ENDW",
+        "STOP.1",
+    ],
+)
+
+
+def mint_program(lines: int, seed: int = 2002) -> str:
+    """A well-formed Mint v4 program of exactly ``lines`` lines."""
+    rng = random.Random(seed)
+    body: list[str] = ["REM Generated benchmark program", "DIM key", "GOSUB init", "LOOP"]
+    index = 0
+    while len(body) < lines - 12:
+        index += 1
+        body.extend("  " + text if text else text for text in rng.choice(_BLOCKS)(rng, index))
+    body[1:1] = [f"DIM speed{n}" for n in range(30)] + [f"DIM target{n}(20)" for n in range(30)]
+    body = body[: lines - 8]
+    body += ["  key = INKEY", "  IF key = 'Q' THEN EXIT", "ENDL", "END", "#init", "AXES[0,1,2,3]", "RETURN", "#ONERROR"]
+    body += ["PRINT ERR : RETURN"]
+    return "\n".join(body[:lines]) + "\n"
+
+
+def python_program(lines: int, seed: int = 2002) -> str:
+    """A Python file of ``lines`` lines with statements of similar size, for ``ast.parse``."""
+    rng = random.Random(seed)
+    text = []
+    for number in range(lines):
+        choice = number % 5
+        if choice == 0:
+            text.append(f"speed{number % 30} = target[{rng.randint(1, 20)}] * 1.5 + {rng.randint(1, 99)}")
+        elif choice == 1:
+            text.append(f"if inputs[{number % 16}] and speed > {rng.randint(1, 100)}: move(0, 1, speed)")
+        elif choice == 2:
+            text.append(f"print('speed ', speed, ' at ', position(0), sep='')")
+        elif choice == 3:
+            text.append("# ---- next station ----")
+        else:
+            text.append(f"for step in range(1, {rng.randint(2, 20)}, 2): jog(1, adc(0) * {rng.randint(1, 9)} - 127)")
+    return "\n".join(text) + "\n"

@@ -21,9 +21,10 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
 
-import mintlang  # noqa: E402
-from mintlang.syntax.parser import clear_caches  # noqa: E402
-from programs import mint_program, python_program  # noqa: E402
+from programs import mint_program, python_program
+
+import mintlang
+from mintlang.syntax.parser import clear_caches
 
 
 def _median_seconds(action: Callable[[], object], repeat: int, before: Callable[[], None] | None = None) -> float:

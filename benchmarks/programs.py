@@ -67,7 +67,7 @@ def python_program(lines: int, seed: int = 2002) -> str:
         elif choice == 1:
             text.append(f"if inputs[{number % 16}] and speed > {rng.randint(1, 100)}: move(0, 1, speed)")
         elif choice == 2:
-            text.append(f"print('speed ', speed, ' at ', position(0), sep='')")
+            text.append("print('speed ', speed, ' at ', position(0), sep='')")
         elif choice == 3:
             text.append("# ---- next station ----")
         else:

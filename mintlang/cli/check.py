@@ -72,7 +72,7 @@ def check(
         files = collect(paths)
         configuration = read_source(config_path) if config_path is not None else None
     except FileNotFoundError as missing:
-        _fail(f"no such file or directory: {missing.args[0]}")
+        _fail(f"no such file or directory: {missing.filename or missing.args[0]}")
         return
     except OSError as error:
         _fail(f"cannot read {error.filename}: {error.strerror}")

@@ -17,6 +17,7 @@ from mintlang.syntax.lines import LogicalLine
 from mintlang.syntax.vocabulary import Vocabulary
 
 Child = Tree | Token
+_new = tuple.__new__  # builds Span without its Python-level constructor: spans are made per node
 
 _OPERATORS = {
     "AND": "AND",
@@ -62,7 +63,7 @@ class LineBuilder:
 
     def _span(self, token: Token) -> Span:
         index = token.start_pos
-        return Span(self._line.starts[index], self._line.ends[index])  # type: ignore[index]
+        return _new(Span, (self._line.starts[index], self._line.ends[index]))  # type: ignore[index]
 
     def _name(self, token: Token) -> n.Name:
         return n.Name(self._text(token), self._span(token))
@@ -73,7 +74,7 @@ class LineBuilder:
         meta = tree.meta
         if meta.empty:  # an empty optional part: a zero-width span where its parent starts
             return Span(0, 0)
-        return Span(self._line.starts[meta.start_pos], self._line.ends[meta.end_pos])
+        return _new(Span, (self._line.starts[meta.start_pos], self._line.ends[meta.end_pos]))
 
     @staticmethod
     def _trees(tree: Tree) -> list[Tree]:

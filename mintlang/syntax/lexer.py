@@ -77,8 +77,9 @@ _PUNCTUATION: dict[str, TokenKind] = {
     "?": _K.PRINT,
     ".": _K.DOT,
 }
-# After these (with no space between), "." is the dot parameter, not a number.
-_DOT_OWNERS = frozenset({_K.KEYWORD, _K.FUNCTION, _K.DOT, _K.AXES})
+# After these (with no space between), "." is the dot parameter, not a number. A user
+# name counts too: "DRIVENABLE.0" is a misspelt keyword (3007), never a name and ".0".
+_DOT_OWNERS = frozenset({_K.KEYWORD, _K.FUNCTION, _K.DOT, _K.AXES, _K.NAME})
 
 
 @dataclass(frozen=True, slots=True)
@@ -130,6 +131,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
     append = tokens.append
     classify = words.classify
     match = _LEXEME.match
+    new = tuple.__new__  # builds the named tuple without its Python-level constructor
     position = 0
     length = len(line)
     content_end = length - (2 if line.endswith("\r\n") else 1 if line.endswith(("\n", "\r")) else 0)
@@ -150,7 +152,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
             line_start = False
             continue
         if group == "ws":
-            append(Token(_K.WS, text, position))
+            append(new(Token, (_K.WS, text, position)))
             previous = _K.WS
             dot_number = False
             position = found.end()
@@ -195,7 +197,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
         else:
             kind = _K.INVALID
             issues.append(_syntax_issue(position, len(text), f"unexpected character {text[0]!r}"))
-        append(Token(kind, text, position))
+        append(new(Token, (kind, text, position)))
         position += len(text)
         dot_number = kind is _K.NUMBER and previous is _K.DOT
         previous = kind

@@ -38,6 +38,7 @@ from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 _K = TokenKind
 _KEYWORD_KINDS = GRAMMAR_KEYWORDS | {_K.KEYWORD, _K.FUNCTION}
+_UNREADABLE = "the line cannot be read"
 _OPERATORS = frozenset({_K.AND, _K.OR, _K.XOR, _K.NOT, _K.MOD})
 
 
@@ -125,7 +126,7 @@ def _recover(line: LogicalLine, builder: LineBuilder, failure: ParseFailure, dia
     statements: list[n.Statement] = []
     if failure.too_complex is not None:  # retrying the parts would not make it simpler
         statements.append(n.SyntaxError_(line.span))
-        diagnostics.append(_describe(line, 0, len(kinds), failure) or _error(2003, line.span, "syntax error"))
+        diagnostics.append(_describe(line, 0, len(kinds), failure) or _error(2003, line.span, _UNREADABLE))
         return n.Line(line.span, line.number, label, tuple(statements))
     for begin, end in _segments(kinds, start):
         if begin == end:
@@ -141,7 +142,7 @@ def _recover(line: LogicalLine, builder: LineBuilder, failure: ParseFailure, dia
         if issue is not None:
             diagnostics.append(issue)
     if not statements and failure.index < len(kinds) and kinds[failure.index] is _K.LABEL:
-        diagnostics.append(_describe(line, 0, len(kinds), failure) or _error(2003, line.token_span(0), "syntax error"))
+        diagnostics.append(_describe(line, 0, len(kinds), failure) or _error(2003, line.token_span(0), _UNREADABLE))
     return n.Line(line.span, line.number, label, tuple(statements))
 
 
@@ -210,9 +211,9 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) ->
     if opened > 0:
         return _error(2003, span, "a ')' is missing")
     if segment[0] is _K.IF and {"THEN", "DO"} <= expected and (at_end or kinds[index] not in _OPERATORS):
-        return _error(2007, span, f"THEN or DO expected, found {found}")
+        return _error(2007, span, f"found {found}")
     if segment[0] is _K.FOR and "TO" in expected:
-        return _error(2008, span, f"TO expected, found {found}")
+        return _error(2008, span, f"found {found}")
     if segment[0] is _K.DIM and index > begin + 1 and kinds[index - 1] in _KEYWORD_KINDS:
         word = line.texts[index - 1]
         return _error(2003, line.token_span(index - 1), f"'{word}' is a keyword and cannot be declared as a variable")
@@ -220,5 +221,5 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) ->
         word = line.texts[index]
         return _error(2006, span, f"'{word}' is a reserved keyword and cannot be used as a variable")
     if line.expanded[index if not at_end else end - 1]:
-        return _error(2003, span, f"syntax error in the text of a macro: unexpected {found}")
-    return _error(2003, span, f"syntax error: unexpected {found}")
+        return _error(2003, span, f"unexpected {found} in the text of a macro")
+    return _error(2003, span, f"unexpected {found}")

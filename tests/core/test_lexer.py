@@ -52,9 +52,9 @@ def apply(source: str, edits) -> str:
     ("source", "value"),
     [
         ("a = 10", 10),
-        ("a = 20.5", 20.5),  # line 789
+        ("a = 20.5", 20.5),  # line 790: SPEED = 20.5
         ("a = 0.5", 0.5),  # line 761: a leading zero before the point is still decimal
-        ("a = .5", 0.5),  # line 653: KINT = .1
+        ("a = .5", 0.5),  # line 654: KINT = .1;
         ("a = 11", 11),  # line 753: "not a valid binary number and will assign the value of 11"
     ],
 )
@@ -175,7 +175,7 @@ def test_two_dot_parameters_follow_each_other() -> None:
 
 
 def test_rem_comments_out_the_rest_of_the_line() -> None:
-    # line 15509: "All characters after the REM until the end of line are ignored"
+    # line 15510: "All characters after the REM until the end of line are ignored"
     source = "PRINT REM This also prints a blank line\nSPEED = 1\n"
     tokens = [(t.kind, t.text) for t in mintlang.parse(source).tokens]
     assert (K.COMMENT, "REM This also prints a blank line") in tokens

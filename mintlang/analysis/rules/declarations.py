@@ -48,10 +48,14 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
 
 
 def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span) -> Fix:
-    """Insert ``DIM name`` on its own line above the line of the first use."""
+    """Insert ``DIM name`` on its own line above the statement of the first use.
+
+    Above its first physical line: a DIM list continued over lines must stay whole.
+    """
     document = model.configuration if unit is Unit.CONFIGURATION and model.configuration else model.program
     index = document.line_index
-    line = index.position(span.start).line
+    containing = [line for line in document.lines if line.span.start <= span.start]
+    line = containing[-1].number if containing else index.position(span.start).line
     start = index.line_start(line)
     text = document.source
     indent_end = start

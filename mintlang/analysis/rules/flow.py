@@ -8,17 +8,22 @@
 * GOTO out of an open IF block or loop: the block is never closed, and done
   repeatedly this overflows the controller's stack (2015, see GOTO in 10.3).
 * EXIT outside any loop (W112).
+
+An endless loop (LOOP, WHILE 1, REPEAT .. UNTIL 0) that no EXIT or GOTO leaves
+never falls through: a main program ending in one needs no END.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from dataclasses import dataclass
 
 from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Severity
 from mintlang.semantic.blocks import LOOPS, Block
+from mintlang.semantic.constants import constant_value
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
@@ -44,58 +49,98 @@ def _receives_flow(statement: n.Statement) -> bool:
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     for unit, document in model.documents():
-        yield from _reachability(unit, document)
+        yield from _Flow(unit, document).findings()
         yield from _jumps_out_of_blocks(unit, document, model)
 
 
-def _reachability(unit: Unit, document: Document) -> Iterator[Finding]:
-    reachable = True
-    reported = False  # one W106 per unreachable run
-    running = False  # some statement has run since the last entry point
-    subroutine: n.Name | None = None  # None while in the main program
-    falling_from_main = False
-    loops = 0
-    for line in document.lines:
-        if line.label is not None:
-            if reachable and running:
-                if subroutine is None:
-                    falling_from_main = True
-                else:
-                    detail = f"#{subroutine.text} has no RETURN here and runs on into #{line.label.text}"
-                    yield Finding(unit, own("W107", line.label.span, detail))
-            elif falling_from_main:
-                falling_from_main = False
-            subroutine, reachable, reported, running = line.label, True, False, False
-        for statement in line.statements:
-            if _receives_flow(statement):
-                reachable = True
-            elif not reachable and not reported:
-                yield Finding(unit, own("W106", statement.span, "this code can never run"))
-                reported = True
-            running = running or reachable
-            loops = _loop_depth(statement, loops)
-            if isinstance(statement, n.BlockWord) and statement.word == "EXIT" and loops == 0:
-                yield Finding(unit, own("W112", statement.span, "EXIT is not inside a FOR, REPEAT, WHILE or LOOP"))
-            for inner in n.walk_statements((statement,)):
-                if falling_from_main and isinstance(inner, n.BlockWord) and inner.word == "RETURN":
-                    detail = (
-                        "the main program has no END and runs on into "
-                        f"#{subroutine.text if subroutine else ''}, so this RETURN has no GOSUB to return to"
-                    )
-                    yield Finding(unit, mint_error(2010, inner.span, detail, severity=Severity.WARNING))
-                    falling_from_main = False
-            if _ends_flow(statement):
-                reachable = False
-                falling_from_main = False
+@dataclass(slots=True)
+class _Loop:
+    endless: bool  # LOOP, WHILE with a true constant, or a REPEAT that may end up endless
+    left: bool = False  # an EXIT or GOTO inside may leave it
 
 
-def _loop_depth(statement: n.Statement, depth: int) -> int:
-    match statement:
-        case n.For() | n.While() | n.BlockWord(word="REPEAT" | "LOOP"):
-            return depth + 1
-        case n.Until() | n.BlockWord(word="NEXT" | "ENDW" | "ENDL"):
-            return max(0, depth - 1)
-    return depth
+class _Flow:
+    """Follows one file top to bottom, as the controller runs it when nothing jumps."""
+
+    def __init__(self, unit: Unit, document: Document) -> None:
+        self.unit = unit
+        self.document = document
+        self.reachable = True
+        self.reported = False  # one W106 per unreachable run
+        self.running = False  # some statement has run since the last entry point
+        self.subroutine: n.Name | None = None  # None while in the main program
+        self.falling_from_main = False
+        self.loops: list[_Loop] = []
+
+    def findings(self) -> Iterator[Finding]:
+        for line in self.document.lines:
+            if line.label is not None:
+                yield from self._entry(line.label)
+            for statement in line.statements:
+                yield from self._statement(statement)
+
+    def _entry(self, label: n.Name) -> Iterator[Finding]:
+        if self.reachable and self.running:
+            if self.subroutine is None:
+                self.falling_from_main = True
+            else:
+                detail = f"#{self.subroutine.text} has no RETURN here and runs on into #{label.text}"
+                yield Finding(self.unit, own("W107", label.span, detail))
+        else:
+            self.falling_from_main = False
+        self.subroutine, self.reachable, self.reported, self.running = label, True, False, False
+
+    def _statement(self, statement: n.Statement) -> Iterator[Finding]:
+        if _receives_flow(statement):
+            self.reachable = True
+        elif not self.reachable and not self.reported:
+            yield Finding(self.unit, own("W106", statement.span, "this code can never run"))
+            self.reported = True
+        self.running = self.running or self.reachable
+        for inner in n.walk_statements((statement,)):
+            yield from self._jumps(inner)
+        self._loop_bounds(statement)
+        if _ends_flow(statement):
+            self.reachable = False
+            self.falling_from_main = False
+
+    def _jumps(self, statement: n.Statement) -> Iterator[Finding]:
+        """EXIT, GOTO and RETURN, also inside IF .. THEN."""
+        if isinstance(statement, n.BlockWord) and statement.word == "EXIT":
+            if not self.loops:
+                yield Finding(self.unit, own("W112", statement.span, "EXIT is not inside a FOR, REPEAT, WHILE or LOOP"))
+            else:
+                self.loops[-1].left = True
+        elif isinstance(statement, n.Jump) and statement.word == "GOTO":
+            for loop in self.loops:
+                loop.left = True
+        elif self.falling_from_main and isinstance(statement, n.BlockWord) and statement.word == "RETURN":
+            into = self.subroutine.text if self.subroutine else ""
+            detail = f"the main program has no END and runs on into #{into}, so this RETURN has no GOSUB to return to"
+            yield Finding(self.unit, mint_error(2010, statement.span, detail, severity=Severity.WARNING))
+            self.falling_from_main = False
+
+    def _loop_bounds(self, statement: n.Statement) -> None:
+        """Open and close loops; after an endless loop nothing that follows runs."""
+        dialect = self.document.dialect
+        match statement:
+            case n.BlockWord(word="LOOP"):
+                self.loops.append(_Loop(endless=True))
+            case n.While(condition=condition):
+                self.loops.append(_Loop(endless=bool(constant_value(condition, dialect))))
+            case n.BlockWord(word="REPEAT") | n.For():
+                self.loops.append(_Loop(endless=isinstance(statement, n.BlockWord)))
+            case n.BlockWord(word="ENDL" | "ENDW" | "NEXT") if self.loops:
+                self._close(self.loops.pop())
+            case n.Until(condition=condition) if self.loops:
+                loop = self.loops.pop()
+                loop.endless = loop.endless and constant_value(condition, dialect) == 0
+                self._close(loop)
+
+    def _close(self, loop: _Loop) -> None:
+        if loop.endless and not loop.left:
+            self.reachable = False
+            self.falling_from_main = False
 
 
 def _jumps_out_of_blocks(unit: Unit, document: Document, model: SemanticModel) -> Iterator[Finding]:

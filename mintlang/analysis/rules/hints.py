@@ -13,6 +13,7 @@ from mintlang.diagnostics import Edit, Fix
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing
+from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
 
 
@@ -30,7 +31,11 @@ def check(facts: Facts) -> Iterator[Finding]:
         if keyword is None or keyword.addressing is not Addressing.AXIS:
             continue
         if isinstance(item, n.Number | n.VariableRef):
-            text = item.text if isinstance(item, n.Number) else item.name.text
-            fix = Fix(f"Write .{text}", (Edit(selector.span, f".{text}"),))
-            detail = f"{use.keyword.spelling}.{text} is faster and smaller than {use.keyword.spelling}[{text}]"
+            document = model.configuration if use.unit is Unit.CONFIGURATION and model.configuration else model.program
+            written = document.source[item.span.start : item.span.end]
+            value = item.text if isinstance(item, n.Number) else item.name.text
+            # A macro needs a delimiter before it, or the dot is ignored: MOVER..xAxis (3.5)
+            dotted = f".{written}" if written.upper() == value.upper() else f"..{written}"
+            fix = Fix(f"Write {dotted}", (Edit(selector.span, dotted),))
+            detail = f"{use.keyword.spelling}{dotted} is faster and smaller than {use.keyword.spelling}[{written}]"
             yield Finding(use.unit, own("I201", selector.span, detail, fixes=(fix,)))

@@ -21,7 +21,10 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     if model.program.dialect is not Dialect.V4:
         return
+    declared = {identity for identity, symbol in model.symbols.variables.items() if symbol.definitions}
     for unit, name in facts.names:
+        if name.identity in declared:
+            continue  # the user's own variable that happens to share an old keyword's name
         diagnostic = _old_word(name.text, name.span)
         if diagnostic is not None:
             yield Finding(unit, diagnostic)

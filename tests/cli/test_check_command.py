@@ -1,0 +1,248 @@
+"""``mint check`` on the command line: exit status, output formats, options, file discovery."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner, Result
+
+from mintlang.cli import main
+
+CLEAN = "DIM a\na = 1\nPRINT a\n"
+UNDECLARED = "DIM a\na = 1\nPRINT b\n"  # b: E3001 on line 3, columns 7 to 8
+
+
+def mint_check(*arguments: str | Path) -> Result:
+    return CliRunner().invoke(main, ["check", *(str(argument) for argument in arguments)])
+
+
+def write(directory: Path, name: str, text: str) -> Path:
+    path = directory / name
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def json_records(*arguments: str | Path) -> list[dict]:
+    result = mint_check("--format", "json", *arguments)
+    assert result.exit_code in (0, 1), result.output
+    return json.loads(result.stdout)
+
+
+# ----------------------------------------------------------------- exit status
+
+
+def test_a_clean_file_exits_with_0(tmp_path: Path) -> None:
+    result = mint_check(write(tmp_path, "clean.mnt", CLEAN))
+    assert result.exit_code == 0
+    assert "1 file checked: 0 errors, 0 warnings, 0 infos" in result.stdout
+
+
+def test_a_file_with_an_error_exits_with_1(tmp_path: Path) -> None:
+    result = mint_check(write(tmp_path, "bad.mnt", UNDECLARED))
+    assert result.exit_code == 1
+    assert "error[E3001]" in result.stdout
+    assert "bad.mnt:3:7" in result.stdout
+
+
+def test_warnings_alone_exit_with_0(tmp_path: Path) -> None:
+    result = mint_check(write(tmp_path, "warn.mnt", "DIM spare\n"))
+    assert result.exit_code == 0
+    assert "warning[W103]" in result.stdout
+
+
+def test_a_missing_path_exits_with_2_and_a_one_line_message(tmp_path: Path) -> None:
+    missing = tmp_path / "missing.mnt"
+    result = mint_check(missing)
+    assert result.exit_code == 2
+    assert result.stderr.strip() == f"mint check: no such file or directory: {missing}"
+    assert result.stdout == ""
+    assert "Traceback" not in result.output
+
+
+def test_a_directory_without_mint_files_exits_with_2(tmp_path: Path) -> None:
+    write(tmp_path, "notes.txt", "PRINT b\n")
+    result = mint_check(tmp_path)
+    assert result.exit_code == 2
+    assert result.stderr.startswith("mint check: no .mnt files found in ")
+    assert "Traceback" not in result.output
+
+
+def test_an_unknown_controller_is_a_usage_error(tmp_path: Path) -> None:
+    result = mint_check("--controller", "nextmove-xyz", write(tmp_path, "clean.mnt", CLEAN))
+    assert result.exit_code == 2
+
+
+# --------------------------------------------------------------------- formats
+
+
+def test_json_output_is_one_array_of_records_with_one_based_positions(tmp_path: Path) -> None:
+    path = write(tmp_path, "bad.mnt", UNDECLARED)
+    assert json_records(path) == [
+        {
+            "path": str(path),
+            "code": "E3001",
+            "mint_error": 3001,
+            "severity": "error",
+            "message": "Variable undefined, use DIM: 'b' is not declared",
+            "line": 3,
+            "column": 7,
+            "end_line": 3,
+            "end_column": 8,
+        }
+    ]
+
+
+def test_json_records_have_exactly_the_documented_keys(tmp_path: Path) -> None:
+    path = write(tmp_path, "several.mnt", "DIM spare\nSPEED\nPRINT q\n")
+    records = json_records(path)
+    assert [record["code"] for record in records] == ["W103", "E2005", "E3001"]
+    keys = {"path", "code", "mint_error", "severity", "message", "line", "column", "end_line", "end_column"}
+    assert all(set(record) == keys for record in records)
+    assert [record["mint_error"] for record in records] == [None, 2005, 3001]
+
+
+def test_json_output_of_a_clean_file_is_an_empty_array(tmp_path: Path) -> None:
+    assert json_records(write(tmp_path, "clean.mnt", CLEAN)) == []
+
+
+def test_json_end_positions_are_exclusive_and_count_characters(tmp_path: Path) -> None:
+    path = write(tmp_path, "wide.mnt", 'PRINT "é"\r\nDIM a\r\nPRINT a, undeclared\r\n')
+    (record,) = json_records(path)
+    assert (record["line"], record["column"], record["end_line"], record["end_column"]) == (3, 10, 3, 20)
+
+
+def test_sarif_output_is_sarif_2_1_0(tmp_path: Path) -> None:
+    path = write(tmp_path, "bad.mnt", UNDECLARED)
+    result = mint_check("--format", "sarif", path)
+    assert result.exit_code == 1
+    document = json.loads(result.stdout)
+    assert document["version"] == "2.1.0"
+    (run,) = document["runs"]
+    assert run["tool"]["driver"]["rules"] == [
+        {"id": "E3001", "shortDescription": {"text": "Variable undefined, use DIM"}}
+    ]
+    (finding,) = run["results"]
+    assert finding["ruleId"] == "E3001"
+    assert finding["level"] == "error"
+    (location,) = finding["locations"]
+    assert location["physicalLocation"]["artifactLocation"]["uri"] == str(path)
+    assert location["physicalLocation"]["region"] == {"startLine": 3, "startColumn": 7, "endLine": 3, "endColumn": 8}
+
+
+def test_sarif_levels_for_warnings_and_hints(tmp_path: Path) -> None:
+    path = write(tmp_path, "soft.mnt", "DIM spare\nDIM b\nb = POS[1]\n")
+    document = json.loads(mint_check("--format", "sarif", path).stdout)
+    assert [(r["ruleId"], r["level"]) for r in document["runs"][0]["results"]] == [
+        ("W103", "warning"),
+        ("I201", "note"),
+    ]
+
+
+def test_github_output_is_one_workflow_command_per_diagnostic(tmp_path: Path) -> None:
+    path = write(tmp_path, "bad.mnt", "DIM spare\nPRINT b\n")
+    result = mint_check("--format", "github", path)
+    assert result.exit_code == 1
+    lines = result.stdout.splitlines()
+    assert lines == [
+        f"::warning file={path},line=1,col=5,endLine=1,endColumn=10,title=W103::"
+        "variable 'spare' is declared but never used",
+        f"::error file={path},line=2,col=7,endLine=2,endColumn=8,title=E3001::"
+        "Variable undefined, use DIM: 'b' is not declared",
+    ]
+
+
+# --------------------------------------------------------------------- options
+
+
+def test_select_keeps_only_the_selected_codes(tmp_path: Path) -> None:
+    path = write(tmp_path, "mixed.mnt", "DIM spare\nSPEED\nPRINT q\n")
+    assert [r["code"] for r in json_records("--select", "E3001", path)] == ["E3001"]
+    assert [r["code"] for r in json_records("--select", "W,E2005", path)] == ["W103", "E2005"]
+
+
+def test_select_decides_the_exit_status(tmp_path: Path) -> None:
+    path = write(tmp_path, "mixed.mnt", "DIM spare\nPRINT q\n")
+    assert mint_check("--select", "W", path).exit_code == 0
+    assert mint_check("--select", "e3001", path).exit_code == 1
+
+
+def test_ignore_drops_a_prefix_of_codes(tmp_path: Path) -> None:
+    path = write(tmp_path, "mixed.mnt", "DIM spare\nSPEED\nPRINT q\n")
+    assert [r["code"] for r in json_records("--ignore", "W", path)] == ["E2005", "E3001"]
+    assert [r["code"] for r in json_records("--ignore", "E3001,W103", path)] == ["E2005"]
+
+
+def test_the_controller_changes_the_results(tmp_path: Path) -> None:
+    # axis 8 exists on NextMove PCI (0 to 11) but not on NextMove BX (0 to 7)
+    path = write(tmp_path, "axis.mnt", "SPEED.8 = 1\n")
+    assert mint_check(path).exit_code == 0
+    result = mint_check("--controller", "nextmove-bx", "--format", "json", path)
+    assert result.exit_code == 1
+    assert [(r["code"], r["line"]) for r in json.loads(result.stdout)] == [("E2", 1)]
+
+
+def test_the_controller_changes_the_message_of_speed_12(tmp_path: Path) -> None:
+    path = write(tmp_path, "axis.mnt", "SPEED.12 = 1\n")
+    (record,) = json_records("--controller", "nextmove-bx", path)
+    assert record["code"] == "E2"
+    assert "NextMove BX" in record["message"]
+
+
+def test_the_dialect_option_reads_mint_v3(tmp_path: Path) -> None:
+    path = write(tmp_path, "old.mnt", "HMSPEED = 10\n")
+    assert [r["code"] for r in json_records(path)] == ["W102"]
+    assert json_records("--dialect", "v3", path) == []
+
+
+def test_config_makes_its_variables_visible_to_the_program(tmp_path: Path) -> None:
+    program = write(tmp_path, "main.mnt", "PRINT jobCount\n")
+    config = write(tmp_path, "setup.cfg", "DIM jobCount = 1\n")
+    assert mint_check(program).exit_code == 1
+    result = mint_check("--config", config, "--format", "json", program)
+    assert result.exit_code == 0
+    assert [(r["path"], r["code"]) for r in json.loads(result.stdout) if r["path"] == str(program)] == []
+
+
+def test_a_missing_config_file_exits_with_2(tmp_path: Path) -> None:
+    program = write(tmp_path, "main.mnt", CLEAN)
+    result = mint_check("--config", tmp_path / "absent.cfg", program)
+    assert result.exit_code == 2
+    assert result.stderr.startswith("mint check: ")
+    assert "absent.cfg" in result.stderr
+    assert "Traceback" not in result.output
+
+
+# --------------------------------------------------------------------- files
+
+
+def test_directories_are_searched_recursively_for_mnt_files(tmp_path: Path) -> None:
+    top = write(tmp_path, "top.mnt", UNDECLARED)
+    deep = write(tmp_path, "a/b/c/deep.MNT", UNDECLARED)
+    write(tmp_path, "a/readme.txt", "PRINT b\n")
+    records = json_records(tmp_path)
+    assert sorted(r["path"] for r in records) == sorted([str(top), str(deep)])
+
+
+def test_several_paths_are_each_reported_once(tmp_path: Path) -> None:
+    path = write(tmp_path, "bad.mnt", UNDECLARED)
+    records = json_records(path, tmp_path)
+    assert [r["path"] for r in records] == [str(path)]
+
+
+def test_a_cp1252_file_is_read_without_error(tmp_path: Path) -> None:
+    path = tmp_path / "legacy.mnt"
+    path.write_bytes("REM Réglage de la vitesse\r\nDIM a\r\na = 1\r\nPRINT a\r\n".encode("cp1252"))
+    assert b"\xe9" in path.read_bytes()
+    result = mint_check("--format", "json", path)
+    assert result.exit_code == 0
+    assert json.loads(result.stdout) == []
+    assert result.stderr == ""
+
+
+@pytest.mark.parametrize("output_format", ["text", "json", "sarif", "github"])
+def test_every_format_exits_with_1_for_an_error(tmp_path: Path, output_format: str) -> None:
+    path = write(tmp_path, "bad.mnt", UNDECLARED)
+    assert mint_check("--format", output_format, path).exit_code == 1

@@ -1,0 +1,480 @@
+"""The analyser's rules, one section per rule module of mintlang/analysis/rules.
+
+Each test states the complete list of diagnostics a small program gets, as
+(code, severity, 1-based line). Line numbers in comments refer to the Mint v4
+programming guide (/work/shared/seeds/000_f3c82d19754128dd.txt).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import mintlang
+from mintlang import Diagnostic
+
+ERROR, WARNING, INFO = "error", "warning", "info"
+
+
+def found(source: str, *, controller: str = "nextmove-pci", config: str | None = None) -> list[tuple[str, str, int]]:
+    """The program's diagnostics as (code, severity, line)."""
+    index = mintlang.LineIndex(source)
+    return [
+        (d.code, d.severity.value, index.position(d.span.start).line)
+        for d in mintlang.check(source, controller=controller, config=config)
+    ]
+
+
+def only(source: str, code: str, **options) -> Diagnostic:
+    """The single diagnostic of ``code`` in the program."""
+    (diagnostic,) = [d for d in mintlang.check(source, **options) if d.code == code]
+    return diagnostic
+
+
+def covered(source: str, diagnostic: Diagnostic) -> str:
+    return source[diagnostic.span.start : diagnostic.span.end]
+
+
+def apply(source: str, edits) -> str:
+    for edit in sorted(edits, key=lambda e: e.span.start, reverse=True):
+        source = source[: edit.span.start] + edit.text + source[edit.span.end :]
+    return source
+
+
+# ------------------------------------------------------------ declarations
+
+
+def test_a_variable_that_is_never_declared_is_error_3001_at_each_use() -> None:
+    # line 19073: #3001 Variable undefined, use DIM
+    assert found("PRINT 1\nspeedVal = 10\nPRINT speedVal\n") == [("E3001", ERROR, 2), ("E3001", ERROR, 3)]
+
+
+def test_a_use_before_the_dim_is_error_3001_even_if_the_dim_follows() -> None:
+    # line 897: variables must be declared before being used
+    assert found("PRINT late\nDIM late\nPRINT late\n") == [("E3001", ERROR, 1)]
+
+
+def test_the_3001_fix_inserts_a_dim_line_before_the_first_use() -> None:
+    source = "REM start\n  speedVal = 10\nPRINT speedVal\n"
+    first, second = [d for d in mintlang.check(source) if d.code == "E3001"]
+    assert second.fixes == ()  # one fix, offered at the first use
+    (fix,) = first.fixes
+    (edit,) = fix.edits
+    line_two = source.index("  speedVal")
+    assert (edit.span.start, edit.span.end) == (line_two, line_two)
+    assert edit.text == "  DIM speedVal\n"
+
+
+@pytest.mark.parametrize(
+    "source",
+    ["PRINT 1 : x = 2\nPRINT x\n", "\tIF 1 THEN x = 2\n", "a = 1\r\nPRINT a\r\n", "DIM y(3) = b,\n1, 2\nPRINT y(1)\n"],
+)
+def test_applying_the_3001_fix_removes_the_error(source: str) -> None:
+    fix = next(d for d in mintlang.check(source) if d.code == "E3001").fixes[0]
+    fixed = apply(source, fix.edits)
+    assert [code for code, _, _ in found(fixed) if code.startswith("E")] == []
+
+
+def test_the_3001_fix_keeps_the_files_line_breaks() -> None:
+    (edit,) = next(d for d in mintlang.check("a = 1\r\nPRINT a\r\n") if d.code == "E3001").fixes[0].edits
+    assert edit.text == "DIM a\r\n"
+
+
+def test_the_3001_fix_keeps_a_dim_list_continued_over_lines_whole() -> None:
+    source = "DIM y(3) = 1,\nb, 2\n"
+    (fix,) = only(source, "E3001").fixes
+    fixed = apply(source, fix.edits)
+    assert fixed == "DIM b\nDIM y(3) = 1,\nb, 2\n"
+    assert [code for code, severity, _ in found(fixed) if severity == ERROR] == []
+
+
+def test_gosub_to_an_unknown_label_is_error_3004() -> None:
+    # line 19099: #3004 Invalid label
+    assert found("GOSUB nowhere\nEND\n") == [("E3004", ERROR, 1)]
+    assert found("DIM a\nIF a THEN GOTO nowhere\n") == [("E3004", ERROR, 2)]
+
+
+def test_a_label_defined_twice_is_error_3004_at_the_second() -> None:
+    # line 1844: "If two labels have the same name, an 'Invalid label' error is generated"
+    assert found("GOSUB twice\nEND\n#twice\nRETURN\n#TWICE\nRETURN\n") == [("E3004", ERROR, 5)]
+
+
+def test_a_number_cannot_name_a_macro() -> None:
+    # line 19103: DEFINE 100 = "100" is not valid (3005); nothing uses it either (W105)
+    assert found('DEFINE 100 = "100"\n') == [("E3005", ERROR, 1), ("W105", WARNING, 1)]
+
+
+def test_a_macro_redefined_is_error_3005() -> None:
+    assert found("DEFINE top = 10\nDEFINE top = 20\nPRINT top\n") == [("E3005", ERROR, 2)]
+
+
+def test_a_macro_whose_text_uses_another_macro_is_a_syntax_error() -> None:
+    # line 1549: "A macro cannot contain the reference to another macro"
+    source = "DEFINE myMacro = 1\nDEFINE myMove = MOVEA.myMacro = 100 : GO.myMacro\n"
+    assert ("E2003", ERROR, 2) in found(source)
+
+
+# ----------------------------------------------------------- keyword usage
+
+
+def test_writing_a_read_only_keyword_is_error_2000() -> None:
+    # line 18905: e.g. CAMINDEX = 4
+    assert found("CAMINDEX = 4\n") == [("E2000", ERROR, 1)]
+
+
+def test_reading_a_write_only_keyword_is_error_2002() -> None:
+    # line 18915: PRINT "Acceleration time is ", ACCELTIME
+    assert found("DIM a\na = ACCELTIME\n") == [("E2002", ERROR, 2)]
+    assert found('PRINT "Acceleration time is ", ACCELTIME\n') == [("E2002", ERROR, 1)]
+
+
+def test_a_parameter_alone_as_a_statement_is_error_2005() -> None:
+    # line 18930: SPEED : REM ** Axis Slew Speed **
+    assert found("SPEED\n") == [("E2005", ERROR, 1)]
+    assert found("SPEED : REM ** Axis Slew Speed **\n") == [("E2005", ERROR, 1)]
+
+
+def test_an_editor_command_in_a_program_is_error_2006() -> None:
+    # line 18939: "command line editor command (e.g. NEW, EDIT, etc) cannot be used within a program"
+    assert found("NEW\n") == [("E2006", ERROR, 1)]
+
+
+def test_a_misspelt_keyword_with_a_dot_parameter_is_error_3007() -> None:
+    # line 4771 misprints DRIVEENABLE as DRIVENABLE; line 19111: #3007 Keyword not defined
+    assert found("DRIVENABLE.0 = 1\n") == [("E3007", ERROR, 1)]
+
+
+def test_an_unknown_word_as_a_statement_is_error_3007() -> None:
+    # line 19111: #3007 Keyword not defined
+    assert found("GO\nFOO\n") == [("E3007", ERROR, 2)]
+
+
+def test_a_misspelt_keyword_with_an_axis_list_is_error_3007() -> None:
+    diagnostic = only("DRIVENABLE[0] = 1\n", "E3007")
+    assert covered("DRIVENABLE[0] = 1\n", diagnostic) == "DRIVENABLE"
+    assert found("DRIVENABLE[0] = 1\n") == [("E3007", ERROR, 1)]
+
+
+def test_a_misspelt_keyword_with_a_variable_dot_parameter_is_error_3007() -> None:
+    assert found("DIM a\nDRIVENABLE.a = 1\n") == [("E3007", ERROR, 2)]
+
+
+def test_a_keyword_the_controller_lacks_is_error_17() -> None:
+    # line 9420: DRIVEENABLESWITCH has attributes for MintDrive only; line 18570: #17
+    assert found("DIM a\na = DRIVEENABLESWITCH\n") == [("E17", ERROR, 2)]
+    assert found("DIM a\na = DRIVEENABLESWITCH\n", controller="mintdrive") == []
+
+
+def test_abbreviations_are_checked_like_the_full_keyword() -> None:
+    assert found("sp\n") == [("E2005", ERROR, 1)]
+    assert found("sp = 10\n") == []
+
+
+# -------------------------------------------------------------- addressing
+
+
+@pytest.mark.parametrize("source", ["SPEED[0,,2]=1000;\n", "SPEED[0,1,]=1000;\n"])
+def test_an_empty_place_in_an_axis_list_is_error_2001(source: str) -> None:
+    # line 18909: both examples of #2001
+    assert found(source) == [("E2001", ERROR, 1)]
+
+
+def test_more_axes_than_the_controller_has_is_error_2017() -> None:
+    # line 19047: SPEED[0,1,3] = 5000; is valid on a 4 axes controller, invalid on a single axis one
+    assert found("AXES[0,1,3]\nSPEED[0,1,3] = 5000;\n") == []
+    assert found("AXES[0,1,3]\nSPEED[0,1,3] = 5000;\n", controller="mintdrive") == [
+        ("E2017", ERROR, 1),
+        ("E2017", ERROR, 2),
+    ]
+
+
+def test_more_values_than_listed_axes_is_error_2017() -> None:
+    # line 575: MOVEA[0,1] = 100,150,500 is invalid; line 578: MOVEA[0,1,2] = 10,20 is valid
+    source = "MOVEA[0,1] = 1,2,3\n"
+    diagnostic = only(source, "E2017")
+    assert covered(source, diagnostic) == "3"
+    assert found("MOVEA[0,1] = 100,150,500\n") == [("E2017", ERROR, 1)]
+    assert found("MOVEA[0,1,2] = 10,20\n") == []
+
+
+def test_an_axis_listed_twice_is_error_2018() -> None:
+    # line 19053: AXES[0,1,1,2] and SPEED [2,2,3] = 5000;
+    assert found("SPEED[2,2,3] = 5000;\n") == [("E2018", ERROR, 1)]
+    assert found("AXES[0,1,1,2]\n") == [("E2018", ERROR, 1)]
+
+
+def test_an_axis_beyond_the_controller_is_error_2() -> None:
+    # line 5613: NextMove BX axes 0 to 7; line 18514: #2 Axis specified out of range
+    assert found("SPEED.12 = 1\n", controller="nextmove-bx") == [("E2", ERROR, 1)]
+    assert found("SPEED.8 = 1\n", controller="nextmove-bx") == [("E2", ERROR, 1)]
+    assert found("SPEED.7 = 1\n", controller="nextmove-bx") == []
+    assert found("SPEED.8 = 1\n", controller="nextmove-pci") == []
+
+
+@pytest.mark.parametrize(
+    ("source", "controller", "code"),
+    [
+        # line 5613, the Dot Parameters table; errors 4, 7 and 8 of section 12.2 (line 18522)
+        ("DIM v\nv = ADC.8\n", "nextmove-bx", "E4"),
+        ("DIM v\nv = ADC.4\n", "mintdrive", "E4"),
+        ("DIM v\nv = IN16\n", "nextmove-bx", "E7"),
+        ("DIM v\nv = IN.16\n", "nextmove-bx", "E7"),
+        ("DIM v\nv = IN60\n", "nextmove-pci", "E7"),
+        ("OUT8 = 1\n", "nextmove-bx", "E8"),
+        ("OUT.3 = 1\n", "servonode51", "E8"),
+    ],
+)
+def test_a_channel_beyond_the_controller_is_an_error(source: str, controller: str, code: str) -> None:
+    line = source.count("\n")
+    assert found(source, controller=controller) == [(code, ERROR, line)]
+
+
+@pytest.mark.parametrize(
+    ("source", "controller"),
+    [
+        ("DIM v\nv = ADC.7\n", "nextmove-bx"),
+        ("DIM v\nv = IN15\n", "nextmove-bx"),
+        ("DIM v\nv = IN59\n", "nextmove-pci"),
+        ("OUT7 = 1\n", "nextmove-bx"),
+        ("OUT.2 = 1\n", "servonode51"),
+    ],
+)
+def test_the_highest_channel_of_the_controller_is_accepted(source: str, controller: str) -> None:
+    assert found(source, controller=controller) == []
+
+
+def test_an_expression_in_an_axis_list_is_a_syntax_error() -> None:
+    # line 586: MOVER[a+1] = 100 is invalid; line 583: MOVER[a] = 100 is valid
+    source = "DIM a\nMOVER[a+1] = 100\n"
+    assert found(source) == [("E2003", ERROR, 2)]
+    assert covered(source, only(source, "E2003")) == "a+1"
+    assert [code for code, _, _ in found("DIM a\nMOVER[a] = 100\n") if code.startswith("E")] == []
+
+
+def test_a_channel_keyword_with_brackets_is_a_syntax_error() -> None:
+    # line 708: v = ADC[1] is invalid; v = ADC.1 is the channel syntax
+    assert found("DIM v\nv = ADC[1]\n") == [("E2003", ERROR, 2)]
+    assert found("DIM v\nv = ADC.1\n") == []
+
+
+# ------------------------------------------------------------------ values
+
+
+def test_a_constant_outside_the_keywords_range_is_error_3() -> None:
+    # line 534: SCALE = -1 gives "Out of range" (#3, line 18518)
+    assert found("SCALE = -1\n") == [("E3", ERROR, 1)]
+    assert found("SCALE = 10\n") == []
+
+
+def test_scaled_keywords_are_not_range_checked() -> None:
+    # the range of a scaled keyword applies to the value times the scale factor (line 5649)
+    assert found("SPEED = -5\n") == []
+    assert found("SPEED = 0.5\n") == []
+
+
+# ------------------------------------------------------------------ arrays
+
+
+def test_a_constant_index_outside_the_array_is_error_2016() -> None:
+    # line 19038: indices are in the range 1 <= index <= size
+    source = "DIM a(10)\na(0) = 1\na(11) = 2\na(10) = 3\na(1) = 4\nPRINT a(12)\n"
+    assert found(source) == [("E2016", ERROR, 2), ("E2016", ERROR, 3), ("E2016", ERROR, 6)]
+
+
+def test_the_manuals_invalid_index_example() -> None:
+    # line 19041
+    source = "DIM axis_speeds(100)\naxis_speeds(0) = 1000\naxis_speeds(101) = 2000\n"
+    assert found(source) == [("E2016", ERROR, 2), ("E2016", ERROR, 3)]
+
+
+# ------------------------------------------------------------------ events
+
+
+def test_fastin_and_fastinx_together_are_error_3006() -> None:
+    # line 19108: #3006 #FASTIN conflicts with #FASTINx
+    assert found("END\n#FASTIN\nRETURN\n#FASTIN2\nRETURN\n") == [("E3006", ERROR, 4)]
+
+
+def test_an_input_handler_for_an_input_the_controller_lacks_is_a_warning() -> None:
+    # NextMove BX has digital inputs 0 to 15 (line 5613)
+    assert found("END\n#IN20\nRETURN\n", controller="nextmove-bx") == [("W109", WARNING, 2)]
+    assert found("END\n#IN15\nRETURN\n", controller="nextmove-bx") == []
+
+
+def test_only_comms_locations_one_to_five_raise_an_event() -> None:
+    # line 1898: #COMMS1 .. #COMMS5
+    assert found("END\n#COMMS6\nRETURN\n") == [("W109", WARNING, 2)]
+    assert found("END\n#COMMS5\nRETURN\n") == []
+
+
+# ------------------------------------------------------------- v3 keywords
+
+
+def test_a_mint_v3_keyword_is_a_warning_with_its_v4_replacement() -> None:
+    source = "HMSPEED = 10\n"
+    assert found(source) == [("W102", WARNING, 1)]
+    (fix,) = only(source, "W102").fixes
+    fixed = apply(source, fix.edits)
+    assert fixed == "HOMESPEED = 10\n"
+    assert found(fixed) == []
+
+
+def test_a_declared_variable_named_like_an_old_keyword_is_not_renamed() -> None:
+    assert [code for code, _, _ in found("DIM gain\nPRINT gain\n")] == []
+
+
+def test_v3_keywords_are_not_reported_in_v3_code() -> None:
+    assert mintlang.check("HMSPEED = 10\n", dialect="v3") == []
+
+
+# ------------------------------------------------------------------ unused
+
+
+def test_a_variable_declared_and_never_used_is_a_warning() -> None:
+    assert found("DIM spare\nDIM used\nPRINT used\n") == [("W103", WARNING, 1)]
+
+
+def test_a_subroutine_never_called_is_a_warning() -> None:
+    assert found("GOSUB called\nEND\n#called\nRETURN\n#orphan\nRETURN\n") == [("W104", WARNING, 5)]
+
+
+def test_a_macro_never_used_is_a_warning() -> None:
+    assert found("DEFINE slowSpeed = 1000\nDEFINE fastSpeed = 5\nSPEED = fastSpeed\n") == [("W105", WARNING, 1)]
+
+
+def test_event_handlers_are_never_unused() -> None:
+    assert found("END\n#ONERROR\nRETURN\n#TIMER\nRETURN\n#IN1\nRETURN\n") == []
+
+
+# -------------------------------------------------------------------- flow
+
+
+def test_code_after_end_is_unreachable() -> None:
+    assert found("PRINT 1\nEND\nPRINT 2\nPRINT 3\n") == [("W106", WARNING, 3)]
+
+
+def test_a_label_after_end_is_reachable() -> None:
+    assert found("GOSUB sub\nEND\n#sub\nPRINT 2\nRETURN\n") == []
+
+
+def test_main_program_falling_into_a_subroutine_is_2010_as_a_warning_at_the_return() -> None:
+    # line 18965: the manual's own example of #2010 RETURN w/o GOSUB
+    source = (
+        "DIM running\nREM ** Main Program **\nWHILE running\nREM ** Execution code **\nENDW\n"
+        'PRINT "Program terminating"\n#ONERROR\nREM ** Error handler code\nRETURN\n'
+    )
+    assert found(source) == [("E2010", WARNING, 9)]
+    assert found(source.replace('terminating"\n', 'terminating"\nEND\n')) == []
+
+
+def test_a_subroutine_without_return_running_into_the_next_is_a_warning() -> None:
+    assert found("GOSUB a\nGOSUB b\nEND\n#a\nPRINT 1\n#b\nPRINT 2\nRETURN\n") == [("W107", WARNING, 6)]
+
+
+def test_goto_out_of_a_loop_is_a_stack_overflow() -> None:
+    # line 19033: #2015 also for the nesting of GOTOs
+    source = "DIM i\nFOR i = 1 TO 10\nGOTO out\nNEXT\n#out\nEND\n"
+    assert found(source) == [("E2015", ERROR, 3)]
+
+
+def test_goto_inside_its_own_loop_is_fine() -> None:
+    assert found("DIM i\nFOR i = 1 TO 10\nIF i = 5 THEN GOTO skip\n#skip\nNEXT\n") == []
+
+
+def test_exit_outside_a_loop_is_a_warning() -> None:
+    # line 1828: EXIT "is used to force the termination of a loop"
+    assert found("PRINT 1\nEXIT\n") == [("W112", WARNING, 2)]
+    assert found("LOOP\nIF IN7 = 1 THEN EXIT\nENDL\n") == []
+
+
+def test_exit_inside_if_then_outside_a_loop_is_a_warning() -> None:
+    assert found("IF IN1 THEN EXIT\n") == [("W112", WARNING, 1)]
+
+
+@pytest.mark.parametrize("loop", [("LOOP", "ENDL"), ("WHILE 1", "ENDW"), ("REPEAT", "UNTIL 0")])
+def test_a_main_program_ending_in_an_endless_loop_does_not_fall_into_subroutines(loop) -> None:
+    opener, closer = loop
+    assert found(f"{opener}\nGOSUB s\n{closer}\n#s\nRETURN\n") == []
+
+
+def test_code_after_an_endless_loop_is_unreachable_unless_an_exit_leaves_it() -> None:
+    assert found("LOOP\nGO\nENDL\nPRINT 1\n") == [("W106", WARNING, 4)]
+    assert found("LOOP\nIF IN1 THEN EXIT\nENDL\nPRINT 1\n") == []
+
+
+# ------------------------------------------------------------------ limits
+
+
+def declarations(count: int) -> str:
+    return "".join(f"DIM v{i}\n" for i in range(count)) + "".join(f"PRINT v{i}\n" for i in range(count))
+
+
+def test_the_256th_variable_is_error_3002_on_nextmove_pci() -> None:
+    # line 1909 (3.9): 255 variables; line 19085: #3002 Too many variables
+    assert found(declarations(255)) == []
+    assert found(declarations(256)) == [("E3002", ERROR, 256)]
+
+
+def test_the_101st_variable_is_error_3002_on_nextmove_pc() -> None:
+    # line 1909 (3.9): NextMove PC 100 variables
+    assert found(declarations(100), controller="nextmove-pc") == []
+    assert found(declarations(101), controller="nextmove-pc") == [("E3002", ERROR, 101)]
+
+
+def test_the_256th_macro_is_a_stack_overflow() -> None:
+    # line 1453: up to 255 macros; line 19033: #2015 "more macros than can be supported"
+    source = "".join(f"DEFINE m{i} = {i}\n" for i in range(256)) + "".join(f"PRINT m{i}\n" for i in range(256))
+    assert found(source) == [("E2015", ERROR, 256)]
+
+
+def test_the_256th_label_is_error_3000() -> None:
+    # line 1881: "A maximum of 255 subroutines"; line 19071: #3000 Too many labels
+    source = "".join(f"GOSUB l{i}\n" for i in range(256)) + "END\n" + "".join(f"#l{i}\nRETURN\n" for i in range(256))
+    first_label_line = 256 + 2  # after the GOSUBs and the END; each label takes two lines
+    assert found(source) == [("E3000", ERROR, first_label_line + 2 * 255)]
+
+
+def test_a_line_longer_than_255_characters_is_a_warning() -> None:
+    # line 255 and line 18455: "The maximum line length is 255 characters, including comments"
+    long_line = "PRINT " + '"' + "x" * 292 + '"'
+    assert len(long_line) == 300
+    source = "PRINT 1\n" + long_line + "\n"
+    assert found(source) == [("W111", WARNING, 2)]
+    assert found("REM " + "y" * 251 + "\n") == []
+
+
+# ------------------------------------------------------------------- hints
+
+
+def test_one_axis_in_brackets_gets_a_hint_to_use_the_dot() -> None:
+    # lines 682-688: b = POS.1 is smaller and faster than b = POS[1]
+    source = "DIM b\nb = POS[1]\n"
+    assert found(source) == [("I201", INFO, 2)]
+    (fix,) = only(source, "I201").fixes
+    fixed = apply(source, fix.edits)
+    assert fixed == "DIM b\nb = POS.1\n"
+    assert found(fixed) == []
+
+
+def test_the_dot_hint_keeps_a_macro_with_the_delimiter_it_needs() -> None:
+    # lines 1508-1516: MOVER..xAxis, since a dot before a macro is ignored
+    source = "DEFINE xAxis = 0\nMOVER[xAxis] = 10\n"
+    (fix,) = only(source, "I201").fixes
+    assert apply(source, fix.edits) == "DEFINE xAxis = 0\nMOVER..xAxis = 10\n"
+    assert "I201" not in [code for code, _, _ in found(apply(source, fix.edits))]
+
+
+def test_several_axes_in_brackets_get_no_hint() -> None:
+    assert found("PAUSE IDLE[0,1]\n") == []
+
+
+# -------------------------------------------------------------- collisions
+
+
+def test_two_spellings_of_one_name_are_a_warning_at_the_second() -> None:
+    # line 887: only the first ten characters of a name count
+    source = "DIM thisIsAVariable1\nthisIsAVaraible2 = 1\nPRINT thisIsAVariable1\n"
+    assert found(source) == [("W108", WARNING, 2)]
+
+
+def test_two_spellings_of_one_label_are_a_warning() -> None:
+    assert found("GOSUB thisIsALabel2\nEND\n#thisIsALabel1\nRETURN\n") == [("W108", WARNING, 1)]

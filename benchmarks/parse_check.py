@@ -27,39 +27,52 @@ import mintlang
 from mintlang.syntax.parser import clear_caches
 
 
-def _median_seconds(action: Callable[[], object], repeat: int, before: Callable[[], None] | None = None) -> float:
-    times = []
-    for _ in range(repeat):
-        if before is not None:
-            before()
-        start = time.perf_counter()
-        action()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
+def _seconds(action: Callable[[], object]) -> float:
+    start = time.perf_counter()
+    action()
+    return time.perf_counter() - start
 
 
 def main() -> None:
     options = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     options.add_argument("--lines", type=int, default=5000)
-    options.add_argument("--repeat", type=int, default=7)
+    options.add_argument("--repeat", type=int, default=15)
     arguments = options.parse_args()
     mint, python = mint_program(arguments.lines), python_program(arguments.lines)
     mintlang.check(mint)  # build the grammar and load the keyword database once
 
-    reference = _median_seconds(lambda: ast.parse(python), arguments.repeat)
-    rows = [
-        ("ast.parse (CPython, reference)", reference),
-        ("mintlang.parse, cold", _median_seconds(lambda: mintlang.parse(mint), arguments.repeat, clear_caches)),
-        (
-            "mintlang.check (parse + check), cold",
-            _median_seconds(lambda: mintlang.check(mint), arguments.repeat, clear_caches),
-        ),
-        ("mintlang.check (parse + check), warm", _median_seconds(lambda: mintlang.check(mint), arguments.repeat)),
-    ]
-    print(f"{arguments.lines} lines, median of {arguments.repeat} runs")
+    def cold(action: Callable[[], object]) -> Callable[[], object]:
+        def run() -> object:
+            clear_caches()
+            return action()
+
+        return run
+
+    measured: dict[str, Callable[[], object]] = {
+        "ast.parse (CPython, reference)": lambda: ast.parse(python),
+        "mintlang.parse, cold": cold(lambda: mintlang.parse(mint)),
+        "mintlang.check (parse + check), cold": cold(lambda: mintlang.check(mint)),
+        "mintlang.check (parse + check), warm": lambda: mintlang.check(mint),
+    }
+    # Paired rounds: each round times the reference and every variant back to back, so a
+    # noisy machine slows both sides of a ratio alike; the medians of the per-round ratios
+    # are reported.
+    seconds: dict[str, list[float]] = {name: [] for name in measured}
+    ratios: dict[str, list[float]] = {name: [] for name in measured}
+    for _ in range(arguments.repeat):
+        reference = _seconds(measured["ast.parse (CPython, reference)"])
+        seconds["ast.parse (CPython, reference)"].append(reference)
+        ratios["ast.parse (CPython, reference)"].append(1.0)
+        for name, action in list(measured.items())[1:]:
+            elapsed = _seconds(action)
+            seconds[name].append(elapsed)
+            ratios[name].append(elapsed / reference)
+    print(f"{arguments.lines} lines, medians of {arguments.repeat} paired rounds")
     print(f"{'':40} {'ms':>8} {'lines/s':>10} {'x ast.parse':>12}")
-    for name, seconds in rows:
-        print(f"{name:40} {seconds * 1000:8.1f} {arguments.lines / seconds:10.0f} {seconds / reference:12.2f}")
+    for name in measured:
+        median = statistics.median(seconds[name])
+        ratio = statistics.median(ratios[name])
+        print(f"{name:40} {median * 1000:8.1f} {arguments.lines / median:10.0f} {ratio:12.2f}")
 
 
 if __name__ == "__main__":

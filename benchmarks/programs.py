@@ -56,20 +56,46 @@ def mint_program(lines: int, seed: int = 2002) -> str:
     return "\n".join(body[:lines]) + "\n"
 
 
+_PYTHON_BLOCKS = (
+    lambda r, i: [f"speed{i % 30} = 0", f"target{i % 30} = [{r.randint(1, 99)}, {r.randint(1, 99)}] * 10"],
+    lambda r, i: [
+        f"speed[0], speed[1] = {r.randint(10, 500)}, {r.randint(10, 500)}",
+        f"accel = {r.randint(100, 5000)}",
+        f"move_to(target{i % 30}[1], target{i % 30}[2]); go(0, 1)",
+        "wait_idle(0, 1)",
+    ],
+    lambda r, i: [
+        f"if inputs[{i % 16}] and speed{i % 30} > {r.randint(1, 100)}:",
+        f"    outputs[{i % 8}] = ON; wait({r.randint(10, 200)})",
+        "else:",
+        f'    print("speed ", speed{i % 30}, " at ", pos[0])',
+        "    pass",
+    ],
+    lambda r, i: [
+        f"for speed{i % 30} in range(1, {r.randint(2, 20)}, 2):",
+        f"    mover[{i % 4}] = speed{i % 30} * 1.5 + sin({r.randint(0, 90)}); go({i % 4})",
+        "    wait_idle(0)",
+        "    pass",
+    ],
+    lambda r, i: ["# ---- next station ----", ""],
+    lambda r, i: [
+        f"while not inputs[{i % 16}]:",
+        f"    jog[1] = adc[0] * {r.randint(1, 9)} - 127  # follow the joystick",
+        "    pass",
+        "stop(1)",
+    ],
+)
+
+
 def python_program(lines: int, seed: int = 2002) -> str:
-    """A Python file of ``lines`` lines with statements of similar size, for ``ast.parse``."""
+    """The Python counterpart of ``mint_program``: the same blocks, lines and about as many tokens."""
     rng = random.Random(seed)
-    text = []
-    for number in range(lines):
-        choice = number % 5
-        if choice == 0:
-            text.append(f"speed{number % 30} = target[{rng.randint(1, 20)}] * 1.5 + {rng.randint(1, 99)}")
-        elif choice == 1:
-            text.append(f"if inputs[{number % 16}] and speed > {rng.randint(1, 100)}: move(0, 1, speed)")
-        elif choice == 2:
-            text.append("print('speed ', speed, ' at ', position(0), sep='')")
-        elif choice == 3:
-            text.append("# ---- next station ----")
-        else:
-            text.append(f"for step in range(1, {rng.randint(2, 20)}, 2): jog(1, adc(0) * {rng.randint(1, 9)} - 127)")
-    return "\n".join(text) + "\n"
+    body: list[str] = ["# Generated benchmark program", "key = 0", "init()", "while True:"]
+    index = 0
+    while len(body) < lines - 3:
+        index += 1
+        block = rng.randrange(len(_PYTHON_BLOCKS))
+        body.extend("    " + text if text else text for text in _PYTHON_BLOCKS[block](rng, index))
+    body = body[: lines - 3]
+    body += ["    key = inkey()", "    if key == 'Q': break", "print(err)"]
+    return "\n".join(body[:lines]) + "\n"

@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+from mintlang.allocation import without_collector
 from mintlang.analysis.findings import Finding
 from mintlang.analysis.rules import RULES
 from mintlang.analysis.traversal import gather
@@ -27,6 +28,7 @@ def _selected(code: str, select: Iterable[str] | None, ignore: Iterable[str]) ->
     return select is None or any(code.startswith(prefix) for prefix in select)
 
 
+@without_collector
 def analyse(model: SemanticModel, *, select: Iterable[str] | None = None, ignore: Iterable[str] = ()) -> Analysis:
     """All diagnostics of an application, per file, sorted by position."""
     select = tuple(select) if select is not None else None

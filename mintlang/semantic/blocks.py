@@ -69,20 +69,21 @@ class _Open:
     middle: n.Statement | None = None
 
 
+_OPENING_WORDS = {"REPEAT": BlockKind.REPEAT, "LOOP": BlockKind.LOOP}
+
+
 def _opener_kind(statement: n.Statement) -> BlockKind | None:
-    match statement:
-        case n.IfDo():
-            return BlockKind.IF
-        case n.For():
-            return BlockKind.FOR
-        case n.While():
-            return BlockKind.WHILE
-        case n.BlockWord(word="REPEAT"):
-            return BlockKind.REPEAT
-        case n.BlockWord(word="LOOP"):
-            return BlockKind.LOOP
-        case n.SyntaxError_(opens=str(kind)):
-            return BlockKind(kind)
+    kind = type(statement)
+    if kind is n.BlockWord:
+        return _OPENING_WORDS.get(statement.word)  # type: ignore[union-attr]
+    if kind is n.IfDo:
+        return BlockKind.IF
+    if kind is n.For:
+        return BlockKind.FOR
+    if kind is n.While:
+        return BlockKind.WHILE
+    if kind is n.SyntaxError_ and statement.opens is not None:  # type: ignore[union-attr]
+        return BlockKind(statement.opens)  # type: ignore[union-attr]
     return None
 
 
@@ -141,7 +142,7 @@ def match_blocks(lines: tuple[n.Line, ...], controller: ControllerProfile) -> St
     """Match the blocks of one file and check the nesting limits."""
     matcher = _Matcher(controller.nesting)
     for line in lines:
-        for statement in n.walk_statements(line.statements):
+        for statement in n.flatten_statements(line.statements):
             matcher.statement(statement, line.number)
     return matcher.finish()
 

@@ -10,9 +10,11 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 
+from mintlang.allocation import without_collector
 from mintlang.controllers import ControllerProfile, profile
 from mintlang.keyworddb.model import Controller
 from mintlang.semantic.blocks import Structure, match_blocks
+from mintlang.semantic.index import SyntaxIndex, index_syntax
 from mintlang.semantic.symbols import SymbolTable, Unit, build_symbols
 from mintlang.syntax.parser import Document
 
@@ -24,6 +26,7 @@ class SemanticModel:
     controller: ControllerProfile
     symbols: SymbolTable
     structures: Mapping[Unit, Structure]
+    index: SyntaxIndex  # every statement, keyword use, element and name, in compile order
 
     def documents(self) -> Iterator[tuple[Unit, Document]]:
         """The files in compile order: configuration first."""
@@ -32,6 +35,7 @@ class SemanticModel:
         yield Unit.PROGRAM, self.program
 
 
+@without_collector
 def build_model(
     program: Document,
     configuration: Document | None = None,
@@ -42,4 +46,7 @@ def build_model(
     structures = {Unit.PROGRAM: match_blocks(program.lines, target)}
     if configuration is not None:
         structures[Unit.CONFIGURATION] = match_blocks(configuration.lines, target)
-    return SemanticModel(program, configuration, target, build_symbols(program, configuration), structures)
+    documents = [(Unit.CONFIGURATION, configuration)] if configuration is not None else []
+    index = index_syntax([*documents, (Unit.PROGRAM, program)])
+    symbols = build_symbols(program, configuration, index)
+    return SemanticModel(program, configuration, target, symbols, structures, index)

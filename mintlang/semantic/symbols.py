@@ -16,15 +16,12 @@ from enum import StrEnum
 
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
+from mintlang.semantic.index import NameUse, SyntaxIndex
+from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
 
-
-class Unit(StrEnum):
-    """Which file of an application a name lives in."""
-
-    CONFIGURATION = "configuration"
-    PROGRAM = "program"
+__all__ = ["Occurrence", "Symbol", "SymbolKind", "SymbolTable", "Unit", "build_symbols"]
 
 
 class SymbolKind(StrEnum):
@@ -97,7 +94,7 @@ class SymbolTable:
 
 
 class _Collector:
-    """Walks the statements of both files in compile order."""
+    """Replays what the syntax index saw, in compile order."""
 
     def __init__(self, dialect: Dialect) -> None:
         self.implicit_declarations = dialect is Dialect.V3  # v3: any assignment declares
@@ -105,7 +102,7 @@ class _Collector:
         self.macros: dict[str, Symbol] = {}
         self.labels: dict[Unit, dict[str, Symbol]] = {Unit.CONFIGURATION: {}, Unit.PROGRAM: {}}
 
-    def collect(self, document: Document, unit: Unit) -> None:
+    def macros_and_labels(self, document: Document, unit: Unit) -> None:
         for definition in document.definitions:
             symbol = self.macros.setdefault(
                 n.identity(definition.name), Symbol(SymbolKind.MACRO, n.identity(definition.name), unit)
@@ -122,14 +119,16 @@ class _Collector:
                 self._label(labels, line.label, unit).definitions.append(
                     Occurrence(unit, line.label.span, line.label.text, True)
                 )
-        for line in document.lines:
-            for statement in n.walk_statements(line.statements):
-                self._statement(statement, unit, labels)
+
+    def jump(self, unit: Unit, label: n.Name) -> None:
+        labels = self.labels[unit]
+        defined = label.identity in labels and bool(labels[label.identity].definitions)
+        self._label(labels, label, unit).references.append(Occurrence(unit, label.span, label.text, defined))
 
     def _label(self, labels: dict[str, Symbol], name: n.Name, unit: Unit) -> Symbol:
         return labels.setdefault(name.identity, Symbol(SymbolKind.LABEL, name.identity, unit))
 
-    def _declare(self, name: n.Name, unit: Unit, size: n.Expression | None) -> None:
+    def declare(self, name: n.Name, unit: Unit, size: n.Expression | None) -> None:
         kind = SymbolKind.ARRAY if size is not None else SymbolKind.VARIABLE
         symbol = self.variables.get(name.identity)
         declared = symbol is not None and bool(symbol.definitions)
@@ -141,10 +140,10 @@ class _Collector:
                 symbol.array_size = int(size.value)
         symbol.definitions.append(Occurrence(unit, name.span, name.text, declared, is_write=True))
 
-    def _use(self, name: n.Name, unit: Unit, *, write: bool = False, element: bool = False) -> None:
+    def use(self, name: n.Name, unit: Unit, *, write: bool, element: bool) -> None:
         symbol = self.variables.get(name.identity)
         if symbol is None and write and self.implicit_declarations:
-            self._declare(name, unit, None)
+            self.declare(name, unit, None)
             return
         declared = symbol is not None and bool(symbol.definitions)
         if symbol is None:
@@ -152,51 +151,19 @@ class _Collector:
             symbol = self.variables[name.identity] = Symbol(kind, name.identity, unit)
         symbol.references.append(Occurrence(unit, name.span, name.text, declared, is_write=write))
 
-    def _statement(self, statement: n.Statement, unit: Unit, labels: dict[str, Symbol]) -> None:
-        match statement:
-            case n.Dim(name=name, size=size, values=values):
-                self._expressions((size, *values), unit)
-                self._declare(name, unit, size)
-            case n.Assignment(target=target, value=value):
-                self._expressions((value,), unit)
-                if isinstance(target, n.ElementRef):
-                    self._expressions((target.index,), unit)
-                self._use(target.name, unit, write=True, element=isinstance(target, n.ElementRef))
-            case n.For(variable=variable, start=start, end=end, step=step):
-                self._use(variable, unit, write=True)
-                self._expressions((start, end, step), unit)
-            case n.Input(target=target, terminal=terminal, using=using):
-                self._expressions((terminal, *using), unit)
-                if isinstance(target, n.ElementRef):
-                    self._expressions((target.index,), unit)
-                self._use(target.name, unit, write=True, element=isinstance(target, n.ElementRef))
-            case n.Jump(label=label):
-                self._label(labels, label, unit).references.append(
-                    Occurrence(
-                        unit,
-                        label.span,
-                        label.text,
-                        label.identity in labels and bool(labels[label.identity].definitions),
-                    )
-                )
-            case n.BareName():
-                pass  # an unknown word, not a variable reference (3007)
-            case n.KeywordStatement(keyword=n.KeywordRef(keyword="PROTECT"), values=None):
-                pass  # PROTECT <password>: the word is the password, not a variable
-            case _:
-                self._expressions(tuple(n.expressions_of(statement)), unit)
 
-    def _expressions(self, expressions: tuple[n.Expression | n.StringLiteral | None, ...], unit: Unit) -> None:
-        for expression in expressions:
-            for node in n.walk_expression(expression):
-                if isinstance(node, n.VariableRef | n.ElementRef):
-                    self._use(node.name, unit, element=isinstance(node, n.ElementRef))
-
-
-def build_symbols(program: Document, configuration: Document | None = None) -> SymbolTable:
-    """The symbol table of an application: its configuration (if any) and its program."""
+def build_symbols(program: Document, configuration: Document | None, index: SyntaxIndex) -> SymbolTable:
+    """The symbol table of an application from its documents and their syntax index."""
     collector = _Collector(program.dialect)
     if configuration is not None:
-        collector.collect(configuration, Unit.CONFIGURATION)
-    collector.collect(program, Unit.PROGRAM)
+        collector.macros_and_labels(configuration, Unit.CONFIGURATION)
+    collector.macros_and_labels(program, Unit.PROGRAM)
+    for event in index.names:
+        if event.use is NameUse.DECLARE:
+            collector.declare(event.name, event.unit, event.size)
+        elif event.use is not NameUse.BARE:
+            collector.use(event.name, event.unit, write=event.use is NameUse.WRITE, element=event.element)
+    for unit, _, statement in index.statements:
+        if isinstance(statement, n.Jump):
+            collector.jump(unit, statement.label)
     return SymbolTable(collector.variables, collector.macros, collector.labels)

@@ -1,13 +1,18 @@
-"""Turns a (possibly cached) lark tree of one logical line into syntax nodes.
+"""Compiles a lark tree of one logical line into a function that builds its syntax nodes.
 
-Tree leaves only say which token of the line they stand for; texts and spans
-come from the ``LogicalLine``, so one cached tree serves every line with the
-same token kinds.
+A parse depends only on the line's token kinds, so one tree serves every line
+with the same kinds (``grammar.py`` caches them). Walking that tree again for
+every such line would repeat the same decisions (which child is the selector,
+which token the name); instead the tree is compiled once into nested closures
+that only read the line's texts and offsets and create the nodes. Tree leaves
+hold their token's index in the line (``Token.start_pos``) and subtrees the
+indices of their first and last token (``Tree.meta``).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TypeVar
 
 from lark import Token, Tree
 
@@ -17,6 +22,11 @@ from mintlang.syntax.lines import LogicalLine
 from mintlang.syntax.vocabulary import Vocabulary
 
 Child = Tree | Token
+T = TypeVar("T")
+Make = Callable[[LogicalLine, Vocabulary], T]
+LineResult = tuple[n.Name | None, tuple[n.Statement, ...]]
+LineBuilder = Callable[[LogicalLine, Vocabulary], LineResult]
+
 _new = tuple.__new__  # builds Span without its Python-level constructor: spans are made per node
 
 _OPERATORS = {
@@ -37,10 +47,13 @@ _OPERATORS = {
     "SLASH": "/",
     "TILDE": "~",
 }
+_QUOTES = '"\u201c\u201d\u201e\u201f\u2033'
 
 
 def number_value(text: str) -> float:
     """The value of a valid Mint number literal: decimal, binary (leading 0) or 0x hex."""
+    if text.isdigit() and (text[0] != "0" or len(text) == 1):
+        return float(text)  # the common case
     digits = text.replace("_", "")
     if digits[:2] in ("0x", "0X"):
         return float(int(digits[2:], 16))
@@ -49,410 +62,546 @@ def number_value(text: str) -> float:
     return float(digits)
 
 
-class LineBuilder:
-    """Builds the statements of one logical line."""
-
-    def __init__(self, line: LogicalLine, words: Vocabulary) -> None:
-        self._line = line
-        self._words = words
-
-    # ------------------------------------------------------------- helpers
-
-    def _text(self, token: Token) -> str:
-        return self._line.texts[token.start_pos]  # type: ignore[index]
-
-    def _span(self, token: Token) -> Span:
-        index = token.start_pos
-        return _new(Span, (self._line.starts[index], self._line.ends[index]))  # type: ignore[index]
-
-    def _name(self, token: Token) -> n.Name:
-        return n.Name(self._text(token), self._span(token))
-
-    def _tree_span(self, tree: Child) -> Span:
-        if isinstance(tree, Token):
-            return self._span(tree)
-        meta = tree.meta
-        if meta.empty:  # an empty optional part: a zero-width span where its parent starts
-            return Span(0, 0)
-        return _new(Span, (self._line.starts[meta.start_pos], self._line.ends[meta.end_pos]))
-
-    @staticmethod
-    def _trees(tree: Tree) -> list[Tree]:
-        return [child for child in tree.children if isinstance(child, Tree)]
-
-    # ----------------------------------------------------------- the line
-
-    def line(self, tree: Tree) -> tuple[n.Name | None, tuple[n.Statement, ...]]:
-        label: n.Name | None = None
-        body = tree.children[-1]
-        first = tree.children[0]
-        if isinstance(first, Token) and first.type == "LABEL":
-            text = self._text(first)
-            label = n.Name(text[1:], self._span(first))
-        return label, self.body(body)  # type: ignore[arg-type]
-
-    def body(self, tree: Tree) -> tuple[n.Statement, ...]:
-        statements: list[n.Statement] = []
-        for part in self._trees(tree):  # segment* and last
-            for statement in self._trees(part):
-                statements.append(self.statement(statement))
-        return tuple(statements)
-
-    def statement(self, tree: Tree) -> n.Statement:
-        rule = _STATEMENTS.get(tree.data)  # type: ignore[arg-type]
-        if rule is not None:
-            return rule(self, tree)  # type: ignore[return-value]
-        token = tree.children[0]
-        return n.BlockWord(self._tree_span(tree), token.type)  # type: ignore[union-attr]
-
-    # ---------------------------------------------------------- statements
-
-    def _assignment(self, tree: Tree) -> n.Assignment:
-        name, _, value = tree.children
-        return n.Assignment(
-            self._tree_span(tree), n.VariableRef(self._span(name), self._name(name)), self.expression(value)
-        )
-
-    def _element_assignment(self, tree: Tree) -> n.Assignment:
-        name, _, index, close, _, value = tree.children
-        target_span = Span(self._span(name).start, self._span(close).end)  # type: ignore[arg-type]
-        target = n.ElementRef(target_span, self._name(name), self.expression(index))  # type: ignore[arg-type]
-        return n.Assignment(self._tree_span(tree), target, self.expression(value))
-
-    def _bare_name(self, tree: Tree) -> n.BareName:
-        token = tree.children[0]
-        return n.BareName(self._span(token), self._name(token))  # type: ignore[arg-type]
-
-    def _keyword_statement(self, tree: Tree) -> n.KeywordStatement:
-        keyword_token = tree.children[0]
-        selector: n.Selector | None = None
-        terminal: n.Expression | None = None
-        values: tuple[n.Expression | None, ...] | None = None
-        fill = False
-        arguments: tuple[n.Expression | n.StringLiteral, ...] = ()
-        using: tuple[n.Expression, ...] = ()
-        for child in tree.children[1:]:
-            if isinstance(child, Token):
-                continue
-            if child.data in ("bracket_selector", "dot_selector"):
-                selector = self.selector(child)
-            elif child.data == "terminal":
-                terminal = self._terminal(child)
-            elif child.data == "values":
-                values, fill = self._values(child)
-            elif child.data == "command_arguments":
-                arguments, using = self._command_arguments(child)
-        ref = self._keyword_ref(keyword_token, selector)  # type: ignore[arg-type]
-        return n.KeywordStatement(self._tree_span(tree), ref, terminal, values, fill, arguments, using)
-
-    def _command_arguments(
-        self, tree: Tree
-    ) -> tuple[tuple[n.Expression | n.StringLiteral, ...], tuple[n.Expression, ...]]:
-        arguments: list[n.Expression | n.StringLiteral] = []
-        using: tuple[n.Expression, ...] = ()
-        for child in tree.children:
-            if isinstance(child, Tree) and child.data == "using":
-                using = self._using(child)
-            elif isinstance(child, Token) and child.type == "STRING":
-                arguments.append(self._string(child))
-            elif not _is_comma(child):
-                arguments.append(self.expression(child))
-        return tuple(arguments), using
-
-    def _function_statement(self, tree: Tree) -> n.FunctionStatement:
-        function, _, arguments, close, *rest = tree.children
-        span = Span(self._span(function).start, self._span(close).end)  # type: ignore[arg-type]
-        call = self._make_call(function, span, self._arguments(arguments), bracketed=True)  # type: ignore[arg-type]
-        values: tuple[n.Expression | None, ...] | None = None
-        fill = False
-        if rest:
-            values, fill = self._values(rest[-1])  # type: ignore[arg-type]
-        return n.FunctionStatement(self._tree_span(tree), call, values, fill)
-
-    def _values(self, tree: Tree) -> tuple[tuple[n.Expression | None, ...], bool]:
-        values = tuple(self.expression(child.children[0]) if child.children else None for child in self._trees(tree))
-        last = tree.children[-1]
-        fill = isinstance(last, Token) and last.type == "SEMICOLON"
-        return values, fill
-
-    def _arguments(self, tree: Tree) -> tuple[n.Expression, ...]:
-        return tuple(self.expression(child) for child in tree.children if not _is_comma(child))
-
-    def _terminal(self, tree: Tree) -> n.Expression:
-        return self._leaf_expression(tree.children[1])  # type: ignore[arg-type]
-
-    def _if_then(self, tree: Tree) -> n.IfThen:
-        _, condition, _, body = tree.children
-        return n.IfThen(self._tree_span(tree), self.expression(condition), self.body(body))  # type: ignore[arg-type]
-
-    def _if_do(self, tree: Tree) -> n.IfDo:
-        return n.IfDo(self._tree_span(tree), self.expression(tree.children[1]))
-
-    def _for(self, tree: Tree) -> n.For:
-        children = tree.children
-        step = self.expression(children[7]) if len(children) > 7 else None
-        return n.For(
-            self._tree_span(tree),
-            self._name(children[1]),  # type: ignore[arg-type]
-            self.expression(children[3]),
-            self.expression(children[5]),
-            step,
-        )
-
-    def _until(self, tree: Tree) -> n.Until:
-        return n.Until(self._tree_span(tree), self.expression(tree.children[1]))
-
-    def _while(self, tree: Tree) -> n.While:
-        return n.While(self._tree_span(tree), self.expression(tree.children[1]))
-
-    def _jump(self, tree: Tree) -> n.Jump:
-        word, target = tree.children
-        label = target.children[0]  # type: ignore[union-attr]
-        return n.Jump(self._tree_span(tree), word.type, self._name(label))  # type: ignore[union-attr, arg-type]
-
-    def _pause(self, tree: Tree) -> n.Pause:
-        condition = self.expression(tree.children[1]) if len(tree.children) > 1 else None
-        return n.Pause(self._tree_span(tree), condition)
-
-    def _dim(self, tree: Tree) -> n.Dim:
-        children = tree.children
-        modifier = children[1] if isinstance(children[1], Token) and children[1].type == "KEYWORD" else None
-        rest = children[2:] if modifier is not None else children[1:]
-        name = self._name(rest[0])  # type: ignore[arg-type]
-        size: n.Expression | None = None
-        values: tuple[n.Expression, ...] = ()
-        fill = False
-        if len(rest) > 1 and isinstance(rest[1], Token) and rest[1].type == "LPAR":
-            size = self.expression(rest[2])
-        last = children[-1]
-        if isinstance(last, Tree) and last.data == "dim_values":
-            values = tuple(self.expression(child) for child in last.children if not _is_separator(child))
-            fill = isinstance(last.children[-1], Token) and last.children[-1].type == "SEMICOLON"
-        offline = self._text(modifier).upper() if modifier is not None else None
-        return n.Dim(self._tree_span(tree), name, size, values, fill, offline)
-
-    def _define(self, tree: Tree) -> n.Define:
-        children = tree.children
-        name_token = children[1].children[0]  # type: ignore[union-attr]
-        body_span = self._span(children[3]) if len(children) > 3 else None  # type: ignore[arg-type]
-        return n.Define(
-            self._tree_span(tree),
-            self._name(name_token),  # type: ignore[arg-type]
-            name_token.type == "NAME",  # type: ignore[union-attr]
-            body_span,
-        )
-
-    def _axes(self, tree: Tree) -> n.Axes:
-        selector = self.selector(tree.children[1]) if len(tree.children) > 1 else None  # type: ignore[arg-type]
-        return n.Axes(self._tree_span(tree), selector)
-
-    def _print(self, tree: Tree) -> n.Print:
-        terminal: n.Expression | None = None
-        items: tuple[n.PrintItem, ...] = ()
-        using: tuple[n.Expression, ...] = ()
-        for child in self._trees(tree):
-            if child.data == "terminal":
-                terminal = self._terminal(child)
-            elif child.data == "print_items":
-                items = self._print_items(child)
-            elif child.data == "using":
-                using = self._using(child)
-        return n.Print(self._tree_span(tree), terminal, items, using)
-
-    def _print_items(self, tree: Tree) -> tuple[n.PrintItem, ...]:
-        items: list[n.PrintItem] = []
-        pending: Tree | None = None
-        for child in tree.children:
-            assert isinstance(child, Tree)
-            if child.data == "separator":
-                separator = self._text(child.children[0])  # type: ignore[arg-type]
-                span = self._tree_span(pending) if pending is not None else self._tree_span(child)
-                span = Span(span.start, self._tree_span(child).end)
-                items.append(n.PrintItem(span, *self._print_value(pending), separator))
-                pending = None
-            else:
-                pending = child
-        if pending is not None:
-            items.append(n.PrintItem(self._tree_span(pending), *self._print_value(pending), None))
-        return tuple(items)
-
-    def _print_value(self, item: Tree | None) -> tuple[n.Expression | n.StringLiteral | None, str | None]:
-        if item is None:
-            return None, None
-        if item.data == "print_item":
-            return self._string(item.children[0]), None  # type: ignore[arg-type]
-        if item.data == "print_value":
-            return self.expression(item.children[0]), None
-        return self.expression(item.children[1]), "HEX" if item.data == "print_hex" else "BIN"
-
-    def _using(self, tree: Tree) -> tuple[n.Expression, ...]:
-        return tuple(self.expression(child) for child in tree.children[1:] if not _is_comma(child))
-
-    def _input(self, tree: Tree) -> n.Input:
-        terminal: n.Expression | None = None
-        prompt: n.StringLiteral | None = None
-        target: n.VariableRef | n.ElementRef | None = None
-        using: tuple[n.Expression, ...] = ()
-        for child in tree.children[1:]:
-            if isinstance(child, Token):
-                if child.type == "STRING":
-                    prompt = self._string(child)
-            elif child.data == "terminal":
-                terminal = self._terminal(child)
-            elif child.data == "input_target":
-                target = self._target(child)
-            elif child.data == "using":
-                using = self._using(child)
-        assert target is not None  # the grammar requires it
-        return n.Input(self._tree_span(tree), terminal, prompt, target, using)
-
-    def _target(self, tree: Tree) -> n.VariableRef | n.ElementRef:
-        name = self._name(tree.children[0])  # type: ignore[arg-type]
-        if len(tree.children) == 1:
-            return n.VariableRef(name.span, name)
-        return n.ElementRef(self._tree_span(tree), name, self.expression(tree.children[2]))
-
-    def _string(self, token: Token) -> n.StringLiteral:
-        text = self._text(token)
-        closed = len(text) > 1 and not text[-1].isalnum() and text[-1] in '"\u201c\u201d\u201e\u201f\u2033'
-        return n.StringLiteral(self._span(token), text, text[1:-1] if closed else text[1:])
-
-    # ----------------------------------------------------------- selectors
-
-    def selector(self, tree: Tree) -> n.Selector:
-        span = self._tree_span(tree)
-        if tree.data == "bracket_selector":
-            items_tree = next(child for child in self._trees(tree) if child.data == "axis_items")
-            items = tuple(
-                self.expression(item.children[0]) if item.children else None for item in self._trees(items_tree)
-            )
-            return n.Selector(span, False, items)
-        values = [child for child in tree.children if isinstance(child, Tree) and child.data == "dot_value"]
-        return n.Selector(span, True, tuple(self._dot_value(value) for value in values))
-
-    def _dot_value(self, value: Tree) -> n.Expression:
-        if len(value.children) == 3:  # ( expr )
-            return n.Parenthesised(self._tree_span(value), self.expression(value.children[1]))
-        return self._leaf_expression(value.children[0])  # type: ignore[arg-type]
-
-    # --------------------------------------------------------- expressions
-
-    def expression(self, tree: Child) -> n.Expression:
-        if isinstance(tree, Token):
-            return self._leaf_expression(tree)
-        return _EXPRESSIONS[tree.data](self, tree)  # type: ignore[index]
-
-    def _leaf_expression(self, token: Token) -> n.Expression:
-        kind = token.type
-        if kind == "NUMBER":
-            text = self._text(token)
-            return n.Number(self._span(token), text, number_value(text))
-        if kind == "CONSTANT":
-            return n.ConstantRef(self._span(token), self._text(token).upper())
-        if kind == "CHAR":
-            text = self._text(token)
-            return n.CharConstant(self._span(token), text, ord(text[1].upper()))
-        if kind == "KEYWORD":
-            return self._keyword_ref(token, None)
-        name = self._name(token)
-        return n.VariableRef(name.span, name)
-
-    def _binary(self, tree: Tree) -> n.Binary:
-        left, operator, right = tree.children
-        return n.Binary(
-            self._tree_span(tree),
-            _OPERATORS[operator.type],
-            self.expression(left),
-            self.expression(right),  # type: ignore[union-attr]
-        )
-
-    def _unary(self, tree: Tree) -> n.Unary:
-        operator, operand = tree.children
-        return n.Unary(self._tree_span(tree), _OPERATORS[operator.type], self.expression(operand))  # type: ignore[union-attr]
-
-    def _bare_call(self, tree: Tree) -> n.Call:
-        function, operand = tree.children
-        return self._make_call(function, self._tree_span(tree), (self.expression(operand),), bracketed=False)  # type: ignore[arg-type]
-
-    def _call(self, tree: Tree) -> n.Call:
-        function, _, arguments, _ = tree.children
-        return self._make_call(function, self._tree_span(tree), self._arguments(arguments), bracketed=True)  # type: ignore[arg-type]
-
-    def _make_call(
-        self, function: Token, span: Span, arguments: tuple[n.Expression, ...], *, bracketed: bool
-    ) -> n.Call:
-        spelling = self._text(function)
-        name = self._words.keyword_name(spelling) or spelling.upper()
-        return n.Call(span, name, spelling, self._span(function), arguments, bracketed)
-
-    def _parenthesised(self, tree: Tree) -> n.Parenthesised:
-        return n.Parenthesised(self._tree_span(tree), self.expression(tree.children[1]))
-
-    def _number(self, tree: Tree) -> n.Expression:
-        """Number, character, constant and variable leaves."""
-        return self._leaf_expression(tree.children[0])  # type: ignore[arg-type]
-
-    def _element(self, tree: Tree) -> n.ElementRef:
-        name = self._name(tree.children[0])  # type: ignore[arg-type]
-        return n.ElementRef(self._tree_span(tree), name, self.expression(tree.children[2]))
-
-    def _keyword_read(self, tree: Tree) -> n.KeywordRef:
-        selector = self.selector(tree.children[1]) if len(tree.children) > 1 else None  # type: ignore[arg-type]
-        return self._keyword_ref(tree.children[0], selector)  # type: ignore[arg-type]
-
-    def _keyword_ref(self, token: Token, selector: n.Selector | None) -> n.KeywordRef:
-        spelling = self._text(token)
-        spelling_span = self._span(token)
-        words = self._words
-        name = words.keyword_name(spelling) or spelling.upper()
-        channel: int | None = None
-        if spelling.upper() not in words.canonical:
-            split = words.split_channel(spelling)
-            if split is not None:
-                name, channel = split
-        end = selector.span.end if selector is not None else spelling_span.end
-        return n.KeywordRef(Span(spelling_span.start, end), name, spelling, spelling_span, selector, channel)
+# --------------------------------------------------------------- small pieces
 
 
-_B = LineBuilder
-_STATEMENTS: dict[str, Callable[[LineBuilder, Tree], n.Statement]] = {
-    "assignment": _B._assignment,
-    "element_assignment": _B._element_assignment,
-    "bare_name": _B._bare_name,
-    "keyword_statement": _B._keyword_statement,
-    "function_statement": _B._function_statement,
-    "if_do": _B._if_do,
-    "for_": _B._for,
-    "until": _B._until,
-    "while_": _B._while,
-    "gosub": _B._jump,
-    "goto": _B._jump,
-    "pause": _B._pause,
-    "dim": _B._dim,
-    "define": _B._define,
-    "axes": _B._axes,
-    "print_": _B._print,
-    "input_": _B._input,
-    "if_then": _B._if_then,
-}
-_EXPRESSIONS: dict[str, Callable[[LineBuilder, Tree], n.Expression]] = {
-    "binary": _B._binary,
-    "unary": _B._unary,
-    "bare_call": _B._bare_call,
-    "call": _B._call,
-    "parenthesised": _B._parenthesised,
-    "number": _B._number,
-    "char": _B._number,
-    "constant": _B._number,
-    "variable": _B._number,
-    "element": _B._element,
-    "keyword_read": _B._keyword_read,
-}
+def _index(token: Child) -> int:
+    return token.start_pos  # type: ignore[union-attr, return-value]
 
 
-def _is_comma(child: Child) -> bool:
-    return isinstance(child, Token) and child.type == "COMMA"
+def _edges(tree: Child) -> tuple[int, int]:
+    """Indices of the first and last token under ``tree``."""
+    if isinstance(tree, Token):
+        return _index(tree), _index(tree)
+    return tree.meta.start_pos, tree.meta.end_pos
+
+
+def _span_of(first: int, last: int) -> Make[Span]:
+    def make(line: LogicalLine, _: Vocabulary) -> Span:
+        return _new(Span, (line.starts[first], line.ends[last]))
+
+    return make
+
+
+def _tree_span(tree: Child) -> Make[Span]:
+    return _span_of(*_edges(tree))
+
+
+def _trees(tree: Tree) -> list[Tree]:
+    return [child for child in tree.children if isinstance(child, Tree)]
+
+
+def _is_token(child: Child, kind: str) -> bool:
+    return isinstance(child, Token) and child.type == kind
 
 
 def _is_separator(child: Child) -> bool:
-    return isinstance(child, Token) and child.type in ("COMMA", "SEMICOLON")
+    return _is_token(child, "COMMA") or _is_token(child, "SEMICOLON")
+
+
+def _constant(value: T) -> Make[T]:
+    return lambda line, words: value
+
+
+def _sequence(makers: list[Make[T]]) -> Make[tuple[T, ...]]:
+    if not makers:
+        return _constant(())
+    if len(makers) == 1:
+        (only,) = makers
+        return lambda line, words: (only(line, words),)
+    return lambda line, words: tuple(make(line, words) for make in makers)
+
+
+def _optional(child: Child | None, compile_child: Callable[[Child], Make[T]]) -> Make[T | None]:
+    return compile_child(child) if child is not None else _constant(None)
+
+
+def _name(token: Child) -> Make[n.Name]:
+    index = _index(token)
+
+    def make(line: LogicalLine, _: Vocabulary) -> n.Name:
+        return n.Name(line.texts[index], _new(Span, (line.starts[index], line.ends[index])))
+
+    return make
+
+
+def _string(token: Child) -> Make[n.StringLiteral]:
+    index = _index(token)
+
+    def make(line: LogicalLine, _: Vocabulary) -> n.StringLiteral:
+        text = line.texts[index]
+        closed = len(text) > 1 and text[-1] in _QUOTES
+        span = _new(Span, (line.starts[index], line.ends[index]))
+        return n.StringLiteral(span, text, text[1:-1] if closed else text[1:])
+
+    return make
+
+
+# ----------------------------------------------------------------- the line
+
+
+def compile_line(tree: Tree) -> LineBuilder:
+    """A builder for every line whose token kinds parsed to ``tree``."""
+    first = tree.children[0]
+    body = _body(tree.children[-1])  # type: ignore[arg-type]
+    if not _is_token(first, "LABEL"):
+        return lambda line, words: (None, body(line, words))
+    index = _index(first)
+
+    def make(line: LogicalLine, words: Vocabulary) -> LineResult:
+        label = n.Name(line.texts[index][1:], _new(Span, (line.starts[index], line.ends[index])))
+        return label, body(line, words)
+
+    return make
+
+
+def _body(tree: Tree) -> Make[tuple[n.Statement, ...]]:
+    return _sequence([_statement(statement) for part in _trees(tree) for statement in _trees(part)])
+
+
+def _statement(tree: Tree) -> Make[n.Statement]:
+    compile_rule = _STATEMENTS.get(tree.data)  # type: ignore[arg-type]
+    if compile_rule is not None:
+        return compile_rule(tree)
+    span = _tree_span(tree)
+    word = tree.children[0].type  # type: ignore[union-attr]
+    return lambda line, words: n.BlockWord(span(line, words), word)
+
+
+# -------------------------------------------------------------- statements
+
+
+def _assignment(tree: Tree) -> Make[n.Statement]:
+    name_token, _, value = tree.children
+    span, name, expression = _tree_span(tree), _name(name_token), _expression(value)
+
+    def make(line: LogicalLine, words: Vocabulary) -> n.Statement:
+        written = name(line, words)
+        return n.Assignment(span(line, words), n.VariableRef(written.span, written), expression(line, words))
+
+    return make
+
+
+def _element_assignment(tree: Tree) -> Make[n.Statement]:
+    name_token, _, index, close, _, value = tree.children
+    span, target_span = _tree_span(tree), _span_of(_index(name_token), _index(close))
+    name, index_of, expression = _name(name_token), _expression(index), _expression(value)
+
+    def make(line: LogicalLine, words: Vocabulary) -> n.Statement:
+        target = n.ElementRef(target_span(line, words), name(line, words), index_of(line, words))
+        return n.Assignment(span(line, words), target, expression(line, words))
+
+    return make
+
+
+def _bare_name(tree: Tree) -> Make[n.Statement]:
+    name = _name(tree.children[0])
+
+    def make(line: LogicalLine, words: Vocabulary) -> n.Statement:
+        written = name(line, words)
+        return n.BareName(written.span, written)
+
+    return make
+
+
+def _keyword_statement(tree: Tree) -> Make[n.Statement]:
+    parts = {child.data: child for child in _trees(tree)}
+    selector_tree = parts.get("bracket_selector") or parts.get("dot_selector")
+    keyword = _keyword_ref(tree.children[0], selector_tree)  # type: ignore[arg-type]
+    terminal = _optional(parts.get("terminal"), _terminal)
+    values, fill = _values(parts["values"]) if "values" in parts else (_constant(None), False)
+    arguments, using = (
+        _command_arguments(parts["command_arguments"])
+        if "command_arguments" in parts
+        else (
+            _constant(()),
+            _constant(()),
+        )
+    )
+    span = _tree_span(tree)
+
+    def make(line: LogicalLine, words: Vocabulary) -> n.Statement:
+        return n.KeywordStatement(
+            span(line, words),
+            keyword(line, words),
+            terminal(line, words),
+            values(line, words),
+            fill,
+            arguments(line, words),
+            using(line, words),
+        )
+
+    return make
+
+
+def _command_arguments(
+    tree: Tree,
+) -> tuple[Make[tuple[n.Expression | n.StringLiteral, ...]], Make[tuple[n.Expression, ...]]]:
+    arguments: list[Make[n.Expression | n.StringLiteral]] = []
+    using: Make[tuple[n.Expression, ...]] = _constant(())
+    for child in tree.children:
+        if isinstance(child, Tree) and child.data == "using":
+            using = _using(child)
+        elif _is_token(child, "STRING"):
+            arguments.append(_string(child))
+        elif not _is_token(child, "COMMA"):
+            arguments.append(_expression(child))
+    return _sequence(arguments), using
+
+
+def _function_statement(tree: Tree) -> Make[n.Statement]:
+    function, _, arguments, close, *rest = tree.children
+    call = _call_of(function, _span_of(_index(function), _index(close)), _arguments(arguments), bracketed=True)  # type: ignore[arg-type]
+    values, fill = _values(rest[-1]) if rest else (_constant(None), False)  # type: ignore[arg-type]
+    span = _tree_span(tree)
+    return lambda line, words: n.FunctionStatement(span(line, words), call(line, words), values(line, words), fill)
+
+
+def _values(tree: Tree) -> tuple[Make[tuple[n.Expression | None, ...]], bool]:
+    places = [_expression(child.children[0]) if child.children else _constant(None) for child in _trees(tree)]
+    return _sequence(places), _is_token(tree.children[-1], "SEMICOLON")  # type: ignore[arg-type]
+
+
+def _arguments(tree: Tree) -> Make[tuple[n.Expression, ...]]:
+    return _sequence([_expression(child) for child in tree.children if not _is_token(child, "COMMA")])
+
+
+def _terminal(tree: Child) -> Make[n.Expression]:
+    return _leaf(tree.children[1])  # type: ignore[union-attr]
+
+
+def _if_then(tree: Tree) -> Make[n.Statement]:
+    _, condition, _, body = tree.children
+    span, test, statements = _tree_span(tree), _expression(condition), _body(body)  # type: ignore[arg-type]
+    return lambda line, words: n.IfThen(span(line, words), test(line, words), statements(line, words))
+
+
+def _condition_statement(node: Callable[..., n.Statement]) -> Callable[[Tree], Make[n.Statement]]:
+    """IF .. DO, UNTIL and WHILE: a keyword and one condition."""
+
+    def compile_rule(tree: Tree) -> Make[n.Statement]:
+        span, condition = _tree_span(tree), _expression(tree.children[1])
+        return lambda line, words: node(span(line, words), condition(line, words))
+
+    return compile_rule
+
+
+def _for(tree: Tree) -> Make[n.Statement]:
+    children = tree.children
+    span, variable = _tree_span(tree), _name(children[1])
+    start, end = _expression(children[3]), _expression(children[5])
+    step = _expression(children[7]) if len(children) > 7 else _constant(None)
+
+    def make(line: LogicalLine, words: Vocabulary) -> n.Statement:
+        return n.For(span(line, words), variable(line, words), start(line, words), end(line, words), step(line, words))
+
+    return make
+
+
+def _jump(tree: Tree) -> Make[n.Statement]:
+    word, target = tree.children
+    span, label, kind = _tree_span(tree), _name(target.children[0]), word.type  # type: ignore[union-attr]
+    return lambda line, words: n.Jump(span(line, words), kind, label(line, words))
+
+
+def _pause(tree: Tree) -> Make[n.Statement]:
+    span = _tree_span(tree)
+    condition = _expression(tree.children[1]) if len(tree.children) > 1 else _constant(None)
+    return lambda line, words: n.Pause(span(line, words), condition(line, words))
+
+
+def _dim(tree: Tree) -> Make[n.Statement]:
+    children = tree.children
+    modifier = children[1] if _is_token(children[1], "KEYWORD") else None
+    rest = children[2:] if modifier is not None else children[1:]
+    name = _name(rest[0])
+    has_size = len(rest) > 1 and _is_token(rest[1], "LPAR")
+    size = _expression(rest[2]) if has_size else _constant(None)
+    last = children[-1]
+    listed = isinstance(last, Tree) and last.data == "dim_values"
+    values = _sequence(
+        [
+            _expression(child)
+            for child in last.children
+            if not _is_token(child, "COMMA") and not _is_token(child, "SEMICOLON")
+        ]  # type: ignore[union-attr]
+        if listed
+        else []
+    )
+    fill = listed and _is_token(last.children[-1], "SEMICOLON")  # type: ignore[union-attr]
+    modifier_index = _index(modifier) if modifier is not None else None
+    span = _tree_span(tree)
+
+    def make(line: LogicalLine, words: Vocabulary) -> n.Statement:
+        offline = line.texts[modifier_index].upper() if modifier_index is not None else None
+        return n.Dim(span(line, words), name(line, words), size(line, words), values(line, words), fill, offline)
+
+    return make
+
+
+def _define(tree: Tree) -> Make[n.Statement]:
+    children = tree.children
+    name_token = children[1].children[0]  # type: ignore[union-attr]
+    is_word = name_token.type == "NAME"  # type: ignore[union-attr]
+    body = _tree_span(children[3]) if len(children) > 3 else _constant(None)
+    span, name = _tree_span(tree), _name(name_token)
+    return lambda line, words: n.Define(span(line, words), name(line, words), is_word, body(line, words))
+
+
+def _axes(tree: Tree) -> Make[n.Statement]:
+    span = _tree_span(tree)
+    selector = _selector(tree.children[1]) if len(tree.children) > 1 else _constant(None)  # type: ignore[arg-type]
+    return lambda line, words: n.Axes(span(line, words), selector(line, words))
+
+
+def _print(tree: Tree) -> Make[n.Statement]:
+    parts = {child.data: child for child in _trees(tree)}
+    terminal = _optional(parts.get("terminal"), _terminal)
+    items = _print_items(parts["print_items"])
+    using = _using(parts["using"]) if "using" in parts else _constant(())
+    span = _tree_span(tree)
+    return lambda line, words: n.Print(span(line, words), terminal(line, words), items(line, words), using(line, words))
+
+
+def _print_items(tree: Tree) -> Make[tuple[n.PrintItem, ...]]:
+    items: list[Make[n.PrintItem]] = []
+    pending: Tree | None = None
+    for child in tree.children:
+        assert isinstance(child, Tree)
+        if child.data == "separator":
+            first = _edges(pending)[0] if pending is not None else _edges(child)[0]
+            items.append(_print_item(pending, _span_of(first, _edges(child)[1]), child.children[0]))
+            pending = None
+        else:
+            pending = child
+    if pending is not None:
+        items.append(_print_item(pending, _tree_span(pending), None))
+    return _sequence(items)
+
+
+def _print_item(item: Tree | None, span: Make[Span], separator: Child | None) -> Make[n.PrintItem]:
+    value: Make[n.Expression | n.StringLiteral | None]
+    style: str | None = None
+    if item is None:
+        value = _constant(None)
+    elif item.data == "print_item":
+        value = _string(item.children[0])
+    elif item.data == "print_value":
+        value = _expression(item.children[0])
+    else:
+        value, style = _expression(item.children[1]), "HEX" if item.data == "print_hex" else "BIN"
+    separator_index = _index(separator) if separator is not None else None
+
+    def make(line: LogicalLine, words: Vocabulary) -> n.PrintItem:
+        written = line.texts[separator_index] if separator_index is not None else None
+        return n.PrintItem(span(line, words), value(line, words), style, written)
+
+    return make
+
+
+def _using(tree: Tree) -> Make[tuple[n.Expression, ...]]:
+    return _sequence([_expression(child) for child in tree.children[1:] if not _is_token(child, "COMMA")])
+
+
+def _input(tree: Tree) -> Make[n.Statement]:
+    parts = {child.data: child for child in _trees(tree)}
+    prompt_token = next((child for child in tree.children if _is_token(child, "STRING")), None)
+    prompt = _optional(prompt_token, _string)
+    terminal = _optional(parts.get("terminal"), _terminal)
+    target = _target(parts["input_target"])
+    using = _using(parts["using"]) if "using" in parts else _constant(())
+    span = _tree_span(tree)
+
+    def make(line: LogicalLine, words: Vocabulary) -> n.Statement:
+        return n.Input(
+            span(line, words), terminal(line, words), prompt(line, words), target(line, words), using(line, words)
+        )
+
+    return make
+
+
+def _target(tree: Tree) -> Make[n.VariableRef | n.ElementRef]:
+    if len(tree.children) == 1:
+        return _variable(tree.children[0])
+    return _element(tree)
+
+
+# ---------------------------------------------------------------- selectors
+
+
+def _selector(tree: Tree) -> Make[n.Selector]:
+    span = _tree_span(tree)
+    if tree.data == "bracket_selector":
+        items_tree = next(child for child in _trees(tree) if child.data == "axis_items")
+        places = [_expression(item.children[0]) if item.children else _constant(None) for item in _trees(items_tree)]
+        items, dot = _sequence(places), False
+    else:
+        items, dot = _sequence([_dot_value(child) for child in _trees(tree) if child.data == "dot_value"]), True
+    return lambda line, words: n.Selector(span(line, words), dot, items(line, words))
+
+
+def _dot_value(tree: Tree) -> Make[n.Expression]:
+    if len(tree.children) == 3:  # ( expr )
+        span, inner = _tree_span(tree), _expression(tree.children[1])
+        return lambda line, words: n.Parenthesised(span(line, words), inner(line, words))
+    return _leaf(tree.children[0])
+
+
+# -------------------------------------------------------------- expressions
+
+
+def _expression(tree: Child) -> Make[n.Expression]:
+    if isinstance(tree, Token):
+        return _leaf(tree)
+    return _EXPRESSIONS[tree.data](tree)  # type: ignore[index]
+
+
+def _leaf(token: Child) -> Make[n.Expression]:
+    kind = token.type  # type: ignore[union-attr]
+    index = _index(token)
+    if kind == "NUMBER":
+
+        def number(line: LogicalLine, _: Vocabulary) -> n.Expression:
+            text = line.texts[index]
+            return n.Number(_new(Span, (line.starts[index], line.ends[index])), text, number_value(text))
+
+        return number
+    if kind == "CONSTANT":
+
+        def constant(line: LogicalLine, _: Vocabulary) -> n.Expression:
+            return n.ConstantRef(_new(Span, (line.starts[index], line.ends[index])), line.texts[index].upper())
+
+        return constant
+    if kind == "CHAR":
+
+        def char(line: LogicalLine, _: Vocabulary) -> n.Expression:
+            text = line.texts[index]
+            return n.CharConstant(_new(Span, (line.starts[index], line.ends[index])), text, ord(text[1].upper()))
+
+        return char
+    if kind == "KEYWORD":
+        return _keyword_ref(token, None)
+    return _variable(token)
+
+
+def _variable(token: Child) -> Make[n.VariableRef]:
+    name = _name(token)
+
+    def make(line: LogicalLine, words: Vocabulary) -> n.VariableRef:
+        written = name(line, words)
+        return n.VariableRef(written.span, written)
+
+    return make
+
+
+def _binary(tree: Tree) -> Make[n.Expression]:
+    left_tree, operator, right_tree = tree.children
+    span, symbol = _tree_span(tree), _OPERATORS[operator.type]  # type: ignore[union-attr]
+    left, right = _expression(left_tree), _expression(right_tree)
+    return lambda line, words: n.Binary(span(line, words), symbol, left(line, words), right(line, words))
+
+
+def _unary(tree: Tree) -> Make[n.Expression]:
+    operator, operand_tree = tree.children
+    span, symbol, operand = _tree_span(tree), _OPERATORS[operator.type], _expression(operand_tree)  # type: ignore[union-attr]
+    return lambda line, words: n.Unary(span(line, words), symbol, operand(line, words))
+
+
+def _bare_call(tree: Tree) -> Make[n.Expression]:
+    function, operand = tree.children
+    return _call_of(function, _tree_span(tree), _sequence([_expression(operand)]), bracketed=False)
+
+
+def _call(tree: Tree) -> Make[n.Expression]:
+    function, _, arguments, _ = tree.children
+    return _call_of(function, _tree_span(tree), _arguments(arguments), bracketed=True)  # type: ignore[arg-type]
+
+
+def _call_of(
+    function: Child, span: Make[Span], arguments: Make[tuple[n.Expression, ...]], *, bracketed: bool
+) -> Make[n.Call]:
+    index = _index(function)
+
+    def make(line: LogicalLine, words: Vocabulary) -> n.Call:
+        spelling = line.texts[index]
+        name = words.keyword_name(spelling) or spelling.upper()
+        spelling_span = _new(Span, (line.starts[index], line.ends[index]))
+        return n.Call(span(line, words), name, spelling, spelling_span, arguments(line, words), bracketed)
+
+    return make
+
+
+def _parenthesised(tree: Tree) -> Make[n.Expression]:
+    span, inner = _tree_span(tree), _expression(tree.children[1])
+    return lambda line, words: n.Parenthesised(span(line, words), inner(line, words))
+
+
+def _single_leaf(tree: Tree) -> Make[n.Expression]:
+    """Number, character, constant and variable leaves wrapped in a one-token tree."""
+    return _leaf(tree.children[0])
+
+
+def _element(tree: Tree) -> Make[n.ElementRef]:
+    span, name, index = _tree_span(tree), _name(tree.children[0]), _expression(tree.children[2])
+    return lambda line, words: n.ElementRef(span(line, words), name(line, words), index(line, words))
+
+
+def _keyword_read(tree: Tree) -> Make[n.Expression]:
+    selector = tree.children[1] if len(tree.children) > 1 else None
+    return _keyword_ref(tree.children[0], selector)  # type: ignore[arg-type]
+
+
+def _keyword_ref(token: Child, selector_tree: Tree | None) -> Make[n.KeywordRef]:
+    index = _index(token)
+    selector = _selector(selector_tree) if selector_tree is not None else _constant(None)
+    last = _edges(selector_tree)[1] if selector_tree is not None else index
+
+    def make(line: LogicalLine, words: Vocabulary) -> n.KeywordRef:
+        spelling = line.texts[index]
+        upper = spelling.upper()
+        name = words.canonical.get(upper)
+        channel: int | None = None
+        if name is None:
+            split = words.split_channel(upper)
+            name, channel = split if split is not None else (upper, None)
+        start = line.starts[index]
+        spelling_span = _new(Span, (start, line.ends[index]))
+        span = _new(Span, (start, line.ends[last]))
+        return n.KeywordRef(span, name, spelling, spelling_span, selector(line, words), channel)
+
+    return make
+
+
+_STATEMENTS: dict[str, Callable[[Tree], Make[n.Statement]]] = {
+    "assignment": _assignment,
+    "element_assignment": _element_assignment,
+    "bare_name": _bare_name,
+    "keyword_statement": _keyword_statement,
+    "function_statement": _function_statement,
+    "if_do": _condition_statement(n.IfDo),
+    "for_": _for,
+    "until": _condition_statement(n.Until),
+    "while_": _condition_statement(n.While),
+    "gosub": _jump,
+    "goto": _jump,
+    "pause": _pause,
+    "dim": _dim,
+    "define": _define,
+    "axes": _axes,
+    "print_": _print,
+    "input_": _input,
+    "if_then": _if_then,
+}
+_EXPRESSIONS: dict[str, Callable[[Tree], Make[n.Expression]]] = {
+    "binary": _binary,
+    "unary": _unary,
+    "bare_call": _bare_call,
+    "call": _call,
+    "parenthesised": _parenthesised,
+    "number": _single_leaf,
+    "char": _single_leaf,
+    "constant": _single_leaf,
+    "variable": _single_leaf,
+    "element": _element,
+    "keyword_read": _keyword_read,
+}

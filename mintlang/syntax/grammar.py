@@ -2,7 +2,8 @@
 
 An LR parse depends only on the sequence of terminal kinds, never on token
 texts, so the tree shape computed for ``KEYWORD EQUAL NUMBER`` serves every
-``SPEED = 10`` and ``ACCEL = 2000`` of a program. Leaves of cached trees hold
+``SPEED = 10`` and ``ACCEL = 2000`` of a program; the cache keeps it compiled
+into a builder (``build.py``). Leaves of cached trees hold
 the position of their token in the line (``Token.start_pos``), and subtrees
 the positions of their first and last token (``Tree.meta``); the builder reads
 texts and spans from the line itself.
@@ -20,6 +21,7 @@ from lark.common import LexerConf
 from lark.exceptions import UnexpectedInput, UnexpectedToken
 from lark.lexer import Lexer
 
+from mintlang.syntax.build import LineBuilder, compile_line
 from mintlang.syntax.tokens import TokenKind
 
 
@@ -60,7 +62,7 @@ class ParseFailure:
     too_complex: str | None = None
 
 
-ParseResult = Tree | ParseFailure
+ParseResult = LineBuilder | ParseFailure
 
 _results: dict[tuple[TokenKind, ...], ParseResult] = {}
 _CACHE_LIMIT = 200_000
@@ -71,7 +73,7 @@ def clear_cache() -> None:
 
 
 def parse_kinds(kinds: tuple[TokenKind, ...]) -> ParseResult:
-    """Parse a line given as its terminal kinds; the tree's leaves carry token positions."""
+    """The builder for lines with these token kinds, or where the grammar rejects them."""
     result = _results.get(kinds)
     if result is None:
         result = _parse(kinds)
@@ -95,7 +97,9 @@ def _parse(kinds: tuple[TokenKind, ...]) -> ParseResult:
     depth = _depth(tree)
     if depth > MAX_DEPTH:
         return ParseFailure(0, frozenset(), f"expressions nested {depth} deep")
-    return tree
+    for subtree in tree.iter_subtrees():
+        subtree.data = str(subtree.data)  # lark names rules with Tokens, slow to hash
+    return compile_line(tree)
 
 
 def _depth(tree: Tree) -> int:

@@ -16,14 +16,15 @@ server re-lexes on every keystroke.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import overload
 
 from mintlang.codes import mint_error, own
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.dialect import Dialect
-from mintlang.syntax.tokens import TRIVIA, Token, TokenKind
+from mintlang.syntax.tokens import Token, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 _K = TokenKind
@@ -86,18 +87,48 @@ _DOT_OWNERS = frozenset({_K.KEYWORD, _K.FUNCTION, _K.DOT, _K.AXES, _K.NAME})
 class LexedLine:
     """One physical line, lexed: offsets are relative to the line's start.
 
-    Besides all its tokens, it keeps the significant ones as parallel arrays,
-    which is the form the parser consumes.
+    Only the significant tokens are kept, as the parallel arrays the parser
+    reads. Trivia need not be stored: between significant tokens there is only
+    white space, and after them white space, a REM comment and the line break,
+    so ``tokens()`` rebuilds the lossless list when a tool asks for it.
     """
 
-    tokens: tuple[Token, ...]
+    text: str
     issues: tuple[Diagnostic, ...]
-    kinds: tuple[TokenKind, ...]  # significant tokens only
+    kinds: tuple[TokenKind, ...]
     texts: tuple[str, ...]
     starts: tuple[int, ...]
     ends: tuple[int, ...]
-    comment_end: int  # end of a REM comment, or 0: comments belong to the line's span
+    comment_start: int  # where a REM comment starts, or -1
+    content_end: int  # where the line break starts
     length: int  # including the line break
+
+    @property
+    def comment_end(self) -> int:
+        """End of the REM comment (0 without one): comments belong to the line's span."""
+        return self.content_end if self.comment_start >= 0 else 0
+
+    def tokens(self, offset: int = 0) -> list[Token]:
+        """Every token of the line, trivia included, at ``offset`` in the source."""
+        new = tuple.__new__  # builds the named tuple without its Python-level constructor
+        text = self.text
+        tokens: list[Token] = []
+        position = 0
+        for kind, token_text, start in zip(self.kinds, self.texts, self.starts, strict=True):
+            if start > position:
+                tokens.append(new(Token, (_WS, text[position:start], position + offset)))
+            tokens.append(new(Token, (kind, token_text, start + offset)))
+            position = start + len(token_text)
+        end = self.comment_start if self.comment_start >= 0 else self.content_end
+        if end > position:
+            tokens.append(new(Token, (_WS, text[position:end], position + offset)))
+        if self.comment_start >= 0:
+            tokens.append(
+                new(Token, (_COMMENT, text[self.comment_start : self.content_end], self.comment_start + offset))
+            )
+        if self.content_end < self.length:
+            tokens.append(new(Token, (_NEWLINE, text[self.content_end :], self.content_end + offset)))
+        return tokens
 
 
 def _number_issue(text: str, dialect: Dialect) -> str | None:
@@ -125,98 +156,92 @@ def _number_issue(text: str, dialect: Dialect) -> str | None:
     return None
 
 
+# Kinds as module constants: reading an Enum member through its class costs a lookup in the
+# metaclass, and the lexer reads them for every token.
+_WS, _DOT, _NUMBER, _NAME, _COMMENT, _NEWLINE = _K.WS, _K.DOT, _K.NUMBER, _K.NAME, _K.COMMENT, _K.NEWLINE
+_INVALID, _STRING, _CHAR, _LABEL, _HASH = _K.INVALID, _K.STRING, _K.CHAR, _K.LABEL, _K.HASH
+
+
 def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
-    tokens: list[Token] = []
     issues: list[Diagnostic] = []
-    append = tokens.append
+    kinds: list[TokenKind] = []  # the significant tokens, as parallel arrays
+    texts: list[str] = []
+    starts: list[int] = []
+    spellings = words.words
     classify = words.classify
     match = _LEXEME.match
-    new = tuple.__new__  # builds the named tuple without its Python-level constructor
     position = 0
     length = len(line)
     content_end = length - (2 if line.endswith("\r\n") else 1 if line.endswith(("\n", "\r")) else 0)
-    line_start = True  # no significant token yet on this line
-    previous = _K.NEWLINE
+    previous = _NEWLINE  # kind of the previous token, whitespace included
     dot_number = False  # the previous token is the number of a dot parameter: ".2" in REMOTEIN.2.65
+    comment_start = -1
 
     while position < content_end:
         found = match(line, position, content_end)
         assert found is not None  # the alternatives cover every character
         group = found.lastgroup
         text = found.group()
-        kind: TokenKind
-        if text[0] == "." and (previous in _DOT_OWNERS or dot_number):
-            append(Token(_K.DOT, ".", position))
-            previous = _K.DOT
-            position += 1
-            line_start = False
-            continue
         if group == "ws":
-            append(new(Token, (_K.WS, text, position)))
-            previous = _K.WS
+            previous = _WS
             dot_number = False
-            position = found.end()
+            position += len(text)
             continue
-        if group == "word":
-            if text.upper() == "REM":
-                append(Token(_K.COMMENT, line[position:content_end], position))
-                position = content_end
+        if text[0] == "." and (previous in _DOT_OWNERS or dot_number):
+            kind, text = _DOT, "."
+        elif group == "word":
+            upper = text.upper()
+            if upper == "REM":
+                comment_start = position
                 break
-            kind = classify(text)
-        elif group == "number":
-            if previous is _K.DOT:
-                digits = _DIGITS_AFTER_DOT.match(line, position, content_end)
-                if digits is not None:
-                    text = digits.group()
-            problem = _number_issue(text, dialect) if previous is not _K.DOT else None
-            if problem is not None:
-                kind = _K.INVALID
-                issues.append(_syntax_issue(position, len(text), problem))
-            else:
-                kind = _K.NUMBER
+            kind = spellings.get(upper) or classify(text)
         elif group == "punct":
             kind = _PUNCTUATION[text]
+        elif group == "number":
+            if previous is _DOT:  # a dot parameter: digits only, "2.65" is ".2" then ".65"
+                text = _DIGITS_AFTER_DOT.match(line, position, content_end).group()  # type: ignore[union-attr]
+            if text.isdigit() and (text[0] != "0" or len(text) == 1):
+                kind = _NUMBER  # the common case: a plain decimal integer
+            else:
+                problem = _number_issue(text, dialect)
+                kind = _NUMBER if problem is None else _INVALID
+                if problem is not None:
+                    issues.append(_syntax_issue(position, len(text), problem))
         elif group == "string":
-            kind = _K.STRING
+            kind = _STRING
             issues.extend(_string_issues(text, position))
         elif group == "char":
             if len(text) == 3:
-                kind = _K.CHAR
+                kind = _CHAR
                 issues.extend(_quote_issues(text, position, _TYPOGRAPHIC_APOSTROPHES, "'"))
             else:
-                kind = _K.INVALID
-                issues.append(
-                    _syntax_issue(position, len(text), "a character constant is one character in single quotes")
-                )
+                kind = _INVALID
+                detail = "a character constant is one character in single quotes"
+                issues.append(_syntax_issue(position, len(text), detail))
         elif group == "hash":
-            if line_start and len(text) > 1:
-                kind = _K.LABEL
+            if not kinds and len(text) > 1:
+                kind = _LABEL
             else:
-                text = "#"
-                kind = _K.HASH
+                kind, text = _HASH, "#"
         else:
-            kind = _K.INVALID
+            kind = _INVALID
             issues.append(_syntax_issue(position, len(text), f"unexpected character {text[0]!r}"))
-        append(new(Token, (kind, text, position)))
+        kinds.append(kind)
+        texts.append(text)
+        starts.append(position)
         position += len(text)
-        dot_number = kind is _K.NUMBER and previous is _K.DOT
+        dot_number = kind is _NUMBER and previous is _DOT
         previous = kind
-        line_start = False
 
-    comment_end = 0
-    if tokens and tokens[-1].kind is _K.COMMENT:
-        comment_end = content_end
-    if content_end < length:
-        append(Token(_K.NEWLINE, line[content_end:], content_end))
-    significant = [token for token in tokens if token.kind not in TRIVIA]
     return LexedLine(
-        tuple(tokens),
+        line,
         tuple(issues),
-        tuple(token.kind for token in significant),
-        tuple(token.text for token in significant),
-        tuple(token.start for token in significant),
-        tuple(token.start + len(token.text) for token in significant),
-        comment_end,
+        tuple(kinds),
+        tuple(texts),
+        tuple(starts),
+        tuple(start + len(text) for start, text in zip(starts, texts, strict=True)),
+        comment_start,
+        content_end,
         length,
     )
 
@@ -262,31 +287,62 @@ def _relocate(diagnostic: Diagnostic, offset: int) -> Diagnostic:
     return Diagnostic(diagnostic.code, diagnostic.severity, span, diagnostic.message, diagnostic.mint_error, fixes)
 
 
+class TokenStream(Sequence[Token]):
+    """All tokens of a source with absolute offsets, made on first use.
+
+    Checking a file needs only the significant tokens of each line; the full
+    lossless stream (trivia included) is for the tools that rewrite or colour
+    text, so it is built from the per-line results when first asked for.
+    """
+
+    __slots__ = ("_lines", "_tokens")
+
+    def __init__(self, lines: tuple[tuple[int, LexedLine], ...]) -> None:
+        self._lines = lines
+        self._tokens: tuple[Token, ...] | None = None
+
+    def _all(self) -> tuple[Token, ...]:
+        if self._tokens is None:
+            self._tokens = tuple(token for offset, line in self._lines for token in line.tokens(offset))
+        return self._tokens
+
+    def __len__(self) -> int:
+        return len(self._all())
+
+    @overload
+    def __getitem__(self, index: int) -> Token: ...
+    @overload
+    def __getitem__(self, index: slice) -> Sequence[Token]: ...
+    def __getitem__(self, index: int | slice) -> Token | Sequence[Token]:
+        return self._all()[index]
+
+    def __iter__(self) -> Iterator[Token]:
+        return iter(self._all())
+
+    def __repr__(self) -> str:
+        return f"TokenStream({len(self)} tokens)"
+
+
 @dataclass(frozen=True, slots=True)
 class LexResult:
-    tokens: tuple[Token, ...]
+    tokens: TokenStream
     issues: tuple[Diagnostic, ...]
     lines: tuple[tuple[int, LexedLine], ...]  # each physical line with its offset
 
 
 def lex(source: str, dialect: Dialect = Dialect.V4) -> LexResult:
     """Split ``source`` into tokens whose texts join back to ``source`` exactly."""
-    tokens: list[Token] = []
     issues: list[Diagnostic] = []
     lines: list[tuple[int, LexedLine]] = []
     offset = 0
     lex_line: Callable[[str, Dialect], LexedLine] = _lex_line_cached
-    new_token = tuple.__new__  # skips the named tuple's Python-level constructor
     for physical in _LINE.findall(source):
         if not physical:
             continue
         lexed = lex_line(physical, dialect)
         lines.append((offset, lexed))
-        if offset:
-            tokens.extend([new_token(Token, (t[0], t[1], t[2] + offset)) for t in lexed.tokens])
+        if lexed.issues:
             issues.extend(_relocate(issue, offset) for issue in lexed.issues)
-        else:
-            tokens.extend(lexed.tokens)
-            issues.extend(lexed.issues)
         offset += lexed.length
-    return LexResult(tuple(tokens), tuple(issues), tuple(lines))
+    frozen = tuple(lines)
+    return LexResult(TokenStream(frozen), tuple(issues), frozen)

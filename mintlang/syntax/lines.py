@@ -18,6 +18,7 @@ from mintlang.syntax.nodes import identity
 from mintlang.syntax.tokens import TokenKind
 
 _K = TokenKind
+_DEFINE, _NAME = _K.DEFINE, _K.NAME  # module constants: read per line
 
 
 @dataclass(frozen=True, slots=True)
@@ -99,6 +100,8 @@ def take_macro_body(line: LogicalLine, from_configuration: bool) -> list[MacroDe
     """Collapse each ``DEFINE name = ...`` body into one MACRO_BODY token; return the definitions."""
     definitions: list[MacroDefinition] = []
     kinds = line.kinds
+    if _DEFINE not in kinds:
+        return definitions
     for index, kind in enumerate(kinds):
         if kind is not _K.DEFINE or not _is_statement_start(kinds, index):
             continue
@@ -126,7 +129,7 @@ def take_macro_body(line: LogicalLine, from_configuration: bool) -> list[MacroDe
 def expand_macros(line: LogicalLine, macros: Mapping[str, MacroDefinition], expansions: list[Expansion]) -> None:
     """Replace uses of known macros by their bodies, in place."""
     kinds = line.kinds
-    if _K.NAME not in kinds:
+    if not macros or _NAME not in kinds:
         return
     index = 0
     while index < len(kinds):

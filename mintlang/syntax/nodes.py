@@ -353,29 +353,49 @@ def walk_statements(statements: tuple[Statement, ...]) -> Iterator[Statement]:
     """Statements in source order, descending into IF .. THEN bodies."""
     for statement in statements:
         yield statement
-        if isinstance(statement, IfThen):
+        if type(statement) is IfThen:
             yield from walk_statements(statement.body)
 
 
+def flatten_statements(statements: tuple[Statement, ...]) -> tuple[Statement, ...]:
+    """``walk_statements`` as a tuple; the statements themselves when no IF .. THEN nests any."""
+    if not any(type(statement) is IfThen for statement in statements):
+        return statements
+    return tuple(walk_statements(statements))
+
+
+_LEAVES = frozenset({Number, CharConstant, ConstantRef, VariableRef, StringLiteral})
+
+
 def walk_expression(expression: Expression | StringLiteral | None) -> Iterator[Expression]:
-    """An expression and all its subexpressions, outermost first."""
+    """An expression and all its subexpressions, outermost first.
+
+    Dispatches on the exact type rather than with ``match``: every check walks
+    every expression, and this is several times faster.
+    """
     stack = [expression]
+    pop, push = stack.pop, stack.append
     while stack:
-        node = stack.pop()
-        if node is None or isinstance(node, StringLiteral):
+        node = pop()
+        kind = type(node)
+        if node is None or kind is StringLiteral:
             continue
-        yield node
-        match node:
-            case Binary(left=left, right=right):
-                stack.extend((right, left))
-            case Unary(operand=operand) | Parenthesised(expression=operand):
-                stack.append(operand)
-            case ElementRef(index=index):
-                stack.append(index)
-            case Call(arguments=arguments):
-                stack.extend(reversed(arguments))
-            case KeywordRef(selector=Selector(items=items)):
-                stack.extend(reversed(items))
+        yield node  # type: ignore[misc]
+        if kind in _LEAVES:
+            continue
+        if kind is Binary:
+            push(node.right)  # type: ignore[union-attr]
+            push(node.left)  # type: ignore[union-attr]
+        elif kind is Unary:
+            push(node.operand)  # type: ignore[union-attr]
+        elif kind is Parenthesised:
+            push(node.expression)  # type: ignore[union-attr]
+        elif kind is ElementRef:
+            push(node.index)  # type: ignore[union-attr]
+        elif kind is Call:
+            stack.extend(reversed(node.arguments))  # type: ignore[union-attr]
+        elif kind is KeywordRef and node.selector is not None:  # type: ignore[union-attr]
+            stack.extend(reversed(node.selector.items))  # type: ignore[union-attr]
 
 
 def expressions_of(statement: Statement) -> Iterator[Expression | StringLiteral | None]:

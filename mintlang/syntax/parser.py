@@ -13,17 +13,15 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from lark import Tree
-
+from mintlang.allocation import without_collector
 from mintlang.codes import mint_error
 from mintlang.diagnostics import Diagnostic, LineIndex, Span
 from mintlang.dialect import Dialect
 from mintlang.syntax import nodes as n
-from mintlang.syntax.build import LineBuilder
 from mintlang.syntax.grammar import ParseFailure, parse_kinds
 from mintlang.syntax.grammar import clear_cache as clear_parse_cache
+from mintlang.syntax.lexer import TokenStream, lex
 from mintlang.syntax.lexer import clear_cache as clear_lex_cache
-from mintlang.syntax.lexer import lex
 from mintlang.syntax.lines import (
     Expansion,
     LogicalLine,
@@ -33,7 +31,7 @@ from mintlang.syntax.lines import (
     register,
     take_macro_body,
 )
-from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, Token, TokenKind
+from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 _K = TokenKind
@@ -52,7 +50,7 @@ class Document:
 
     source: str
     dialect: Dialect
-    tokens: tuple[Token, ...]
+    tokens: TokenStream  # lossless: the texts join back to the source
     lines: tuple[n.Line, ...]
     diagnostics: tuple[Diagnostic, ...]
     macros: Mapping[str, MacroDefinition]
@@ -71,6 +69,7 @@ def clear_caches() -> None:
     clear_parse_cache()
 
 
+@without_collector
 def parse(
     source: str,
     dialect: Dialect | str = Dialect.V4,
@@ -108,14 +107,13 @@ def parse(
 
 def _parse_line(line: LogicalLine, words: Vocabulary, diagnostics: list[Diagnostic]) -> n.Line:
     result = parse_kinds(tuple(line.kinds))
-    builder = LineBuilder(line, words)
-    if isinstance(result, Tree):
-        label, statements = builder.line(result)
-        return n.Line(line.span, line.number, label, statements)
-    return _recover(line, builder, result, diagnostics)
+    if isinstance(result, ParseFailure):
+        return _recover(line, words, result, diagnostics)
+    label, statements = result(line, words)
+    return n.Line(line.span, line.number, label, statements)
 
 
-def _recover(line: LogicalLine, builder: LineBuilder, failure: ParseFailure, diagnostics: list[Diagnostic]) -> n.Line:
+def _recover(line: LogicalLine, words: Vocabulary, failure: ParseFailure, diagnostics: list[Diagnostic]) -> n.Line:
     """Parse the ``:``-separated statements of a failing line one at a time."""
     kinds = line.kinds
     label: n.Name | None = None
@@ -131,10 +129,9 @@ def _recover(line: LogicalLine, builder: LineBuilder, failure: ParseFailure, dia
     for begin, end in _segments(kinds, start):
         if begin == end:
             continue
-        segment_kinds = tuple(kinds[begin:end])
-        result = parse_kinds(segment_kinds)
-        if isinstance(result, Tree):
-            statements.extend(LineBuilder(_slice(line, begin, end), builder._words).line(result)[1])
+        result = parse_kinds(tuple(kinds[begin:end]))
+        if not isinstance(result, ParseFailure):
+            statements.extend(result(_slice(line, begin, end), words)[1])
             continue
         span = Span(line.starts[begin], line.ends[end - 1])
         statements.append(n.SyntaxError_(span, _opened_block(kinds[begin:end])))

@@ -63,3 +63,8 @@ def test_arbitrary_text_never_raises(source: str) -> None:
 )
 def test_extreme_input_gives_diagnostics_not_exceptions(source: str) -> None:
     _check_everything(source)
+
+
+def test_a_dot_parameter_written_as_an_invalid_binary_number_is_a_syntax_error() -> None:
+    # found by the fuzz test: "05" after a dot was taken as a number without checking it
+    assert [d.code for d in mintlang.check("SPEED..05 = 1\n")] == ["E2003"]

@@ -97,8 +97,11 @@ class _Flow:
             yield Finding(self.unit, own("W106", statement.span, "this code can never run"))
             self.reported = True
         self.running = self.running or self.reachable
-        for inner in n.walk_statements((statement,)):
-            yield from self._jumps(inner)
+        if type(statement) is n.IfThen:
+            for inner in n.walk_statements((statement,)):
+                yield from self._jumps(inner)
+        elif type(statement) in (n.BlockWord, n.Jump):
+            yield from self._jumps(statement)
         self._loop_bounds(statement)
         if _ends_flow(statement):
             self.reachable = False

@@ -1,0 +1,118 @@
+"""One walk over the syntax of an application, in compile order.
+
+The symbol table, the analyser's rules and the tools all need the same lists:
+every statement, every keyword and how it is used, every array element and
+every user name with what happens to it. Walking the trees once and keeping
+the lists is what keeps a check fast enough for every keystroke.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+from enum import StrEnum
+
+from mintlang.semantic.units import Unit
+from mintlang.syntax import nodes as n
+from mintlang.syntax.parser import Document
+
+
+class Use(StrEnum):
+    """How a keyword is used where it is written."""
+
+    READ = "read"  # inside an expression
+    WRITE = "write"  # KW = value
+    COMMAND = "command"  # KW or KW args as a statement
+
+
+@dataclass(frozen=True, slots=True)
+class KeywordUse:
+    unit: Unit
+    statement: n.Statement
+    keyword: n.KeywordRef
+    use: Use
+
+
+class NameUse(StrEnum):
+    """What a statement does with a user name."""
+
+    READ = "read"
+    WRITE = "write"  # assigned, a FOR variable, an INPUT target
+    DECLARE = "declare"  # DIM
+    BARE = "bare"  # a word alone as a statement: an unknown keyword, not a variable
+
+
+@dataclass(frozen=True, slots=True)
+class NameEvent:
+    unit: Unit
+    name: n.Name
+    use: NameUse
+    element: bool  # written with an index: name(i)
+    size: n.Expression | None = None  # the array size of a DIM
+
+
+@dataclass(frozen=True, slots=True)
+class SyntaxIndex:
+    statements: tuple[tuple[Unit, n.Line, n.Statement], ...]  # IF .. THEN bodies included
+    keyword_uses: tuple[KeywordUse, ...]
+    elements: tuple[tuple[Unit, n.ElementRef], ...]  # array elements read or written
+    names: tuple[NameEvent, ...]  # in compile order: a DIM after its values, a write after its value
+
+
+class _Walker:
+    def __init__(self) -> None:
+        self.statements: list[tuple[Unit, n.Line, n.Statement]] = []
+        self.uses: list[KeywordUse] = []
+        self.elements: list[tuple[Unit, n.ElementRef]] = []
+        self.names: list[NameEvent] = []
+
+    def statement(self, unit: Unit, line: n.Line, statement: n.Statement) -> None:
+        self.statements.append((unit, line, statement))
+        kind = type(statement)  # exact-type dispatch: this runs for every statement of every check
+        if kind is n.KeywordStatement:
+            keyword = statement.keyword  # type: ignore[union-attr]
+            use = Use.WRITE if statement.values is not None else Use.COMMAND  # type: ignore[union-attr]
+            self.uses.append(KeywordUse(unit, statement, keyword, use))
+            if keyword.keyword != "PROTECT" or use is Use.WRITE:  # PROTECT <password>: not a variable
+                self.expressions(unit, statement)
+        elif kind is n.Dim:
+            self.expressions(unit, statement)
+            size = statement.size  # type: ignore[union-attr]
+            self.names.append(NameEvent(unit, statement.name, NameUse.DECLARE, size is not None, size))  # type: ignore[union-attr]
+        elif kind is n.Assignment or kind is n.Input:
+            self.expressions(unit, statement)
+            target = statement.target  # type: ignore[union-attr]
+            element = type(target) is n.ElementRef
+            if element:
+                self.elements.append((unit, target))
+            self.names.append(NameEvent(unit, target.name, NameUse.WRITE, element))
+        elif kind is n.For:
+            self.names.append(NameEvent(unit, statement.variable, NameUse.WRITE, False))  # type: ignore[union-attr]
+            self.expressions(unit, statement)
+        elif kind is n.BareName:
+            self.names.append(NameEvent(unit, statement.name, NameUse.BARE, False))  # type: ignore[union-attr]
+        elif kind is not n.BlockWord:
+            self.expressions(unit, statement)
+
+    def expressions(self, unit: Unit, statement: n.Statement) -> None:
+        names, uses, elements = self.names, self.uses, self.elements
+        for expression in n.expressions_of(statement):
+            for node in n.walk_expression(expression):
+                kind = type(node)
+                if kind is n.VariableRef:
+                    names.append(NameEvent(unit, node.name, NameUse.READ, False))  # type: ignore[union-attr]
+                elif kind is n.KeywordRef:
+                    uses.append(KeywordUse(unit, statement, node, Use.READ))  # type: ignore[arg-type]
+                elif kind is n.ElementRef:
+                    elements.append((unit, node))  # type: ignore[arg-type]
+                    names.append(NameEvent(unit, node.name, NameUse.READ, True))  # type: ignore[union-attr]
+
+
+def index_syntax(documents: Iterable[tuple[Unit, Document]]) -> SyntaxIndex:
+    """Walk the documents (configuration first) once."""
+    walker = _Walker()
+    for unit, document in documents:
+        for line in document.lines:
+            for statement in n.flatten_statements(line.statements):
+                walker.statement(unit, line, statement)
+    return SyntaxIndex(tuple(walker.statements), tuple(walker.uses), tuple(walker.elements), tuple(walker.names))

@@ -39,7 +39,8 @@ def analyse(model: SemanticModel, *, select: Iterable[str] | None = None, ignore
         findings.extend(Finding(unit, diagnostic) for diagnostic in model.structures[unit].diagnostics)
     facts = gather(model)
     for rule in RULES:
-        findings.extend(rule.check(facts))
+        if model.program.dialect in rule.dialects:
+            findings.extend(rule.check(facts))
     per_unit: dict[Unit, list[Diagnostic]] = {Unit.PROGRAM: [], Unit.CONFIGURATION: []}
     seen: set[tuple[Unit, str, int, int]] = set()
     for finding in findings:

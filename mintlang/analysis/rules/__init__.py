@@ -21,12 +21,14 @@ from mintlang.analysis.rules import (
     values,
 )
 from mintlang.analysis.traversal import Facts
+from mintlang.dialect import Dialect
 
 
 @dataclass(frozen=True, slots=True)
 class Rule:
     name: str
     check: Callable[[Facts], Iterator[Finding]]
+    dialects: frozenset[Dialect] = frozenset(Dialect)
 
     @property
     def summary(self) -> str:
@@ -35,11 +37,14 @@ class Rule:
         return (module.__doc__ or "").strip().splitlines()[0]
 
 
+# Rules that read the keywords' v4 attributes; v3 code is only read to be migrated.
+_V4_ATTRIBUTES = frozenset({Dialect.V4})
+
 RULES: tuple[Rule, ...] = (
     Rule("declarations", declarations.check),
-    Rule("keyword-usage", keyword_usage.check),
-    Rule("addressing", addressing.check),
-    Rule("values", values.check),
+    Rule("keyword-usage", keyword_usage.check, _V4_ATTRIBUTES),
+    Rule("addressing", addressing.check, _V4_ATTRIBUTES),
+    Rule("values", values.check, _V4_ATTRIBUTES),
     Rule("arrays", arrays.check),
     Rule("events", events.check),
     Rule("v3-keywords", v3_keywords.check),
@@ -47,5 +52,5 @@ RULES: tuple[Rule, ...] = (
     Rule("limits", limits.check),
     Rule("collisions", collisions.check),
     Rule("unused", unused.check),
-    Rule("hints", hints.check),
+    Rule("hints", hints.check, _V4_ATTRIBUTES),
 )

@@ -17,7 +17,6 @@ from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import Facts, KeywordUse, Use
 from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.diagnostics import Span
-from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing
 from mintlang.semantic.constants import constant_integer
@@ -63,8 +62,6 @@ def _channel_family(keyword: str) -> tuple[_Channels, int] | None:
 
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
-    if model.program.dialect is not Dialect.V4:
-        return  # the attributes are those of v4 keywords; v3 code is read to be migrated
     db = database()
     for use in facts.keyword_uses:
         keyword = db.keywords.get(use.keyword.keyword)

@@ -10,7 +10,6 @@ from collections.abc import Iterator
 from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Edit, Fix
-from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing
 from mintlang.semantic.symbols import Unit
@@ -19,8 +18,6 @@ from mintlang.syntax import nodes as n
 
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
-    if model.program.dialect is not Dialect.V4:
-        return  # the attributes are those of v4 keywords; v3 code is read to be migrated
     db = database()
     for use in facts.keyword_uses:
         selector = use.keyword.selector

@@ -11,7 +11,6 @@ from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import Facts, Use
-from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.semantic.constants import constant_value
 from mintlang.syntax import nodes as n
@@ -19,8 +18,6 @@ from mintlang.syntax import nodes as n
 
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
-    if model.program.dialect is not Dialect.V4:
-        return  # the attributes are those of v4 keywords; v3 code is read to be migrated
     db = database()
     dialect = model.program.dialect
     for use in facts.keyword_uses:

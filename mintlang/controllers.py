@@ -1,7 +1,8 @@
 """What each controller supports: channel ranges, name-table and nesting limits.
 
 Figures from the Mint v4 reference guide (MN1262): the "Dot Parameters" table
-(section 10.2, line 5613), the digital I/O of sections 7.2 and 7.3, the interpreter limitations of section 3.9 (lines
+(section 10.2, line 5613), the digital I/O of sections 7.2 and 7.3, the memory
+map of 9.1, the interpreter limitations of section 3.9 (lines
 1904-1976), the #INx and #FASTINx entries (lines 5848-5950) and the 255
 character line limit (line 255).
 """
@@ -53,6 +54,8 @@ class ControllerProfile:
     max_labels: int
     max_macros: int
     nesting: NestingLimits
+    user_memory: int  # bytes for the compiled code and the arrays (9.1)
+    configuration_buffer: int  # bytes for the configuration file's source (9.1)
     max_line_length: int = 255
 
     @property
@@ -82,6 +85,8 @@ PROFILES: dict[Controller, ControllerProfile] = {
         max_labels=255,
         max_macros=255,
         nesting=_FULL_NESTING,
+        user_memory=1024 * 1024,
+        configuration_buffer=8 * 1024,
     ),
     Controller.NEXTMOVE_PC: ControllerProfile(
         Controller.NEXTMOVE_PC,
@@ -99,6 +104,8 @@ PROFILES: dict[Controller, ControllerProfile] = {
         max_labels=100,
         max_macros=100,
         nesting=_PC_NESTING,
+        user_memory=100 * 1024,
+        configuration_buffer=8 * 1024,
     ),
     Controller.NEXTMOVE_BX: ControllerProfile(
         Controller.NEXTMOVE_BX,
@@ -116,6 +123,8 @@ PROFILES: dict[Controller, ControllerProfile] = {
         max_labels=255,
         max_macros=255,
         nesting=_FULL_NESTING,
+        user_memory=248 * 1024,
+        configuration_buffer=8 * 1024,
     ),
     Controller.MINTDRIVE: ControllerProfile(
         Controller.MINTDRIVE,
@@ -133,6 +142,8 @@ PROFILES: dict[Controller, ControllerProfile] = {
         max_labels=255,
         max_macros=255,
         nesting=_FULL_NESTING,
+        user_memory=40 * 1024,
+        configuration_buffer=4 * 1024,
     ),
     Controller.SERVONODE51: ControllerProfile(
         Controller.SERVONODE51,
@@ -150,6 +161,8 @@ PROFILES: dict[Controller, ControllerProfile] = {
         max_labels=255,
         max_macros=255,
         nesting=_FULL_NESTING,
+        user_memory=40 * 1024,
+        configuration_buffer=4 * 1024,
     ),
 }
 

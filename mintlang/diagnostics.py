@@ -81,10 +81,6 @@ class LineIndex:
         self._starts = [0, *(match.end() for match in _LINE_BREAK.finditer(text))]
         self._length = len(text)
 
-    @property
-    def line_count(self) -> int:
-        return len(self._starts)
-
     def line_start(self, line: int) -> int:
         """Offset of the first character of 1-based ``line``."""
         return self._starts[line - 1]

@@ -319,15 +319,8 @@ def _dim(tree: Tree) -> Make[n.Statement]:
     size = _expression(rest[2]) if has_size else _constant(None)
     last = children[-1]
     listed = isinstance(last, Tree) and last.data == "dim_values"
-    values = _sequence(
-        [
-            _expression(child)
-            for child in last.children
-            if not _is_token(child, "COMMA") and not _is_token(child, "SEMICOLON")
-        ]  # type: ignore[union-attr]
-        if listed
-        else []
-    )
+    listed_values = [child for child in last.children if not _is_separator(child)] if listed else []  # type: ignore[union-attr]
+    values = _sequence([_expression(child) for child in listed_values])
     fill = listed and _is_token(last.children[-1], "SEMICOLON")  # type: ignore[union-attr]
     modifier_index = _index(modifier) if modifier is not None else None
     span = _tree_span(tree)

@@ -433,6 +433,20 @@ def test_the_256th_label_is_error_3000() -> None:
     assert found(source) == [("E3000", ERROR, first_label_line + 2 * 255)]
 
 
+def test_arrays_beyond_the_user_memory_are_error_3003() -> None:
+    # 9.1 (line 5094): MintDrive has 40 KB of Mint user memory, NextMove PCI 1 MB; 4 bytes an element
+    source = "DIM big(20000)\nbig(1) = 1\n"
+    assert found(source, controller="mintdrive") == [("E3003", ERROR, 1)]
+    assert found(source, controller="nextmove-pci") == []
+
+
+def test_a_configuration_beyond_its_buffer_is_error_3003() -> None:
+    # 9.1: the configuration buffer of MintDrive is 4 KB
+    configuration = "REM " + "x" * 5000 + "\n"
+    analysis = mintlang.check_application("", controller="mintdrive", config=configuration)
+    assert [d.code for d in analysis.configuration] == ["E3003", "W111"]
+
+
 def test_a_line_longer_than_255_characters_is_a_warning() -> None:
     # line 255 and line 18455: "The maximum line length is 255 characters, including comments"
     long_line = "PRINT " + '"' + "x" * 292 + '"'

@@ -1,0 +1,56 @@
+// Wiring only: each job lives in its own module.
+import * as fs from "node:fs";
+import * as vscode from "vscode";
+
+import { registerCommands } from "./commands";
+import { currentSettings } from "./host";
+import { LANGUAGE_ID } from "./language";
+import { isPairedConfig } from "./pairing";
+import { mintServer, type Server } from "./server";
+import { SERVER_SETTINGS } from "./settings";
+
+let server: Server | undefined;
+
+function listFolder(folder: string): string[] {
+  try {
+    return fs.readdirSync(folder);
+  } catch {
+    return [];
+  }
+}
+
+/** Opens conveyor.cfg as Mint when conveyor.mnt is beside it (see src/pairing.ts). */
+function pairConfig(document: vscode.TextDocument): void {
+  if (
+    document.uri.scheme === "file" &&
+    document.languageId !== LANGUAGE_ID &&
+    currentSettings().pairConfigFiles &&
+    isPairedConfig(document.uri.fsPath, listFolder)
+  ) {
+    void vscode.languages.setTextDocumentLanguage(document, LANGUAGE_ID);
+  }
+}
+
+export function activate(context: vscode.ExtensionContext): void {
+  const output = vscode.window.createOutputChannel("Mint");
+  server = mintServer(output);
+  const running = server;
+  context.subscriptions.push(
+    output,
+    ...registerCommands(output),
+    vscode.workspace.onDidOpenTextDocument(pairConfig),
+    vscode.workspace.onDidChangeConfiguration((event) => {
+      if (SERVER_SETTINGS.some((setting) => event.affectsConfiguration(setting))) {
+        void running.restart();
+      }
+    }),
+    // The workspace's .venv is only looked at in a trusted workspace.
+    vscode.workspace.onDidGrantWorkspaceTrust(() => void running.restart()),
+  );
+  vscode.workspace.textDocuments.forEach(pairConfig);
+  void running.restart();
+}
+
+export function deactivate(): Promise<void> | undefined {
+  return server?.stop();
+}

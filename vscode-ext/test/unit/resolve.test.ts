@@ -1,0 +1,152 @@
+import assert from "node:assert/strict";
+import { test } from "node:test";
+
+import { displayCommand, fileCommand, isMissingModule, resolveTool, toolArguments, type Host, type Resolution } from "../../src/resolve";
+
+const NONE = { serverPath: "", pythonPath: "", controller: "nextmove-pci" } as const;
+
+function posix(files: readonly string[], options: { folders?: readonly string[]; path?: string } = {}): Host {
+  return {
+    platform: "linux",
+    pathEnv: options.path ?? "/usr/local/bin:/usr/bin",
+    workspaceFolders: options.folders ?? ["/work/robot"],
+    isExecutable: (file) => files.includes(file),
+  };
+}
+
+function commandOf(resolution: Resolution): readonly string[] {
+  assert.ok(resolution.ok, resolution.ok ? "" : resolution.message);
+  return [resolution.command.command, ...resolution.command.args];
+}
+
+test("the workspace .venv comes before PATH", () => {
+  const host = posix(["/work/robot/.venv/bin/mint-lsp", "/usr/bin/mint-lsp"]);
+  const resolution = resolveTool("mint-lsp", NONE, host);
+  assert.deepEqual(commandOf(resolution), ["/work/robot/.venv/bin/mint-lsp"]);
+  assert.equal(resolution.ok && resolution.command.source, "the workspace's .venv");
+});
+
+test("every workspace folder's .venv is searched, in order", () => {
+  const host = posix(["/work/b/.venv/bin/mint-lsp"], { folders: ["/work/a", "/work/b"] });
+  assert.deepEqual(commandOf(resolveTool("mint-lsp", NONE, host)), ["/work/b/.venv/bin/mint-lsp"]);
+});
+
+test("PATH is searched in order when there is no .venv", () => {
+  const host = posix(["/usr/bin/mint-lsp", "/opt/bin/mint-lsp"], { path: "/usr/local/bin::/usr/bin:/opt/bin" });
+  assert.deepEqual(commandOf(resolveTool("mint-lsp", NONE, host)), ["/usr/bin/mint-lsp"]);
+});
+
+test("an untrusted workspace (no folders) falls through to PATH", () => {
+  const host = posix(["/work/robot/.venv/bin/mint-lsp", "/usr/bin/mint-lsp"], { folders: [] });
+  assert.deepEqual(commandOf(resolveTool("mint-lsp", NONE, host)), ["/usr/bin/mint-lsp"]);
+});
+
+test("mint.serverPath wins over everything", () => {
+  const host = posix(["/opt/mint/bin/mint-lsp", "/work/robot/.venv/bin/mint-lsp"]);
+  const settings = { serverPath: "/opt/mint/bin/mint-lsp", pythonPath: "/usr/bin/python3" };
+  assert.deepEqual(commandOf(resolveTool("mint-lsp", settings, host)), ["/opt/mint/bin/mint-lsp"]);
+});
+
+test("mint.serverPath may be relative to the workspace or use ${workspaceFolder}", () => {
+  const host = posix(["/work/robot/tools/mint-lsp"]);
+  assert.deepEqual(commandOf(resolveTool("mint-lsp", { ...NONE, serverPath: "tools/mint-lsp" }, host)), [
+    "/work/robot/tools/mint-lsp",
+  ]);
+  assert.deepEqual(commandOf(resolveTool("mint-lsp", { ...NONE, serverPath: "${workspaceFolder}/tools/mint-lsp" }, host)), [
+    "/work/robot/tools/mint-lsp",
+  ]);
+});
+
+test("a mint.serverPath that does not exist is an error, not skipped", () => {
+  const host = posix(["/usr/bin/mint-lsp"]);
+  const resolution = resolveTool("mint-lsp", { ...NONE, serverPath: "/nowhere/mint-lsp" }, host);
+  assert.equal(resolution.ok, false);
+  assert.match(resolution.ok ? "" : resolution.message, /mint\.serverPath is set to '\/nowhere\/mint-lsp'/);
+});
+
+test("mint.pythonPath runs the server as a module", () => {
+  const host = posix(["/work/robot/.venv/bin/python", "/usr/bin/mint-lsp"]);
+  const resolution = resolveTool("mint-lsp", { ...NONE, pythonPath: ".venv/bin/python" }, host);
+  assert.deepEqual(commandOf(resolution), ["/work/robot/.venv/bin/python", "-m", "mintlang.lsp"]);
+});
+
+test("a bare mint.pythonPath is looked up on PATH", () => {
+  const host = posix(["/usr/bin/python3"]);
+  assert.deepEqual(commandOf(resolveTool("mint-lsp", { ...NONE, pythonPath: "python3" }, host)), [
+    "/usr/bin/python3",
+    "-m",
+    "mintlang.lsp",
+  ]);
+});
+
+test("a mint.pythonPath that does not exist is an error", () => {
+  const resolution = resolveTool("mint-migrate", { ...NONE, pythonPath: "/nowhere/python" }, posix([]));
+  assert.equal(resolution.ok, false);
+  assert.match(resolution.ok ? "" : resolution.message, /mint\.pythonPath/);
+});
+
+test("nothing found: the message names the tool and where it looked", () => {
+  const resolution = resolveTool("mint-run", NONE, posix(["/usr/bin/mint-lsp"]));
+  assert.equal(resolution.ok, false);
+  const message = resolution.ok ? "" : resolution.message;
+  assert.match(message, /^mint-run was not found/);
+  assert.match(message, /\/work\/robot\/\.venv, PATH/);
+  assert.match(message, /mint\.serverPath or mint\.pythonPath/);
+});
+
+test("the tools are found beside mint.serverPath, else by the usual search", () => {
+  const settings = { ...NONE, serverPath: "/opt/mint/bin/mint-lsp" };
+  const host = posix(["/opt/mint/bin/mint-lsp", "/opt/mint/bin/mint-migrate", "/usr/bin/mint-run"]);
+  assert.deepEqual(commandOf(resolveTool("mint-migrate", settings, host)), ["/opt/mint/bin/mint-migrate"]);
+  assert.deepEqual(commandOf(resolveTool("mint-run", settings, host)), ["/usr/bin/mint-run"]);
+});
+
+test("Windows: Scripts folder, .exe names, ; in PATH", () => {
+  const host: Host = {
+    platform: "win32",
+    pathEnv: "C:\\Windows;C:\\Python312\\Scripts",
+    workspaceFolders: ["C:\\work\\robot"],
+    isExecutable: (file) => ["C:\\work\\robot\\.venv\\Scripts\\mint-lsp.exe", "C:\\Python312\\Scripts\\mint-run.exe"].includes(file),
+  };
+  assert.deepEqual(commandOf(resolveTool("mint-lsp", NONE, host)), ["C:\\work\\robot\\.venv\\Scripts\\mint-lsp.exe"]);
+  assert.deepEqual(commandOf(resolveTool("mint-run", NONE, host)), ["C:\\Python312\\Scripts\\mint-run.exe"]);
+});
+
+test("migrate rewrites the file in place for the configured controller; run takes the file alone", () => {
+  assert.deepEqual(toolArguments("mint-migrate", "/p/a.mnt", "nextmove-bx"), ["--write", "--controller", "nextmove-bx", "/p/a.mnt"]);
+  assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", "nextmove-bx"), ["/p/a.mnt"]);
+});
+
+test("file commands append the file arguments to the resolved command", () => {
+  const host = posix(["/work/robot/.venv/bin/mint-migrate", "/usr/bin/python3"]);
+  assert.deepEqual(commandOf(fileCommand("mint-migrate", "/work/robot/a b.mnt", NONE, host)), [
+    "/work/robot/.venv/bin/mint-migrate",
+    "--write",
+    "--controller",
+    "nextmove-pci",
+    "/work/robot/a b.mnt",
+  ]);
+  assert.deepEqual(commandOf(fileCommand("mint-run", "/work/robot/a.mnt", { ...NONE, pythonPath: "python3" }, host)), [
+    "/usr/bin/python3",
+    "-m",
+    "mintlang.runtime",
+    "/work/robot/a.mnt",
+  ]);
+  assert.equal(fileCommand("mint-run", "/work/robot/a.mnt", NONE, host).ok, false);
+});
+
+test("a missing module is recognised in Python's message, and only the tool's own", () => {
+  assert.equal(isMissingModule("/usr/bin/python3: No module named mintlang.runtime\n", "mint-run"), true);
+  assert.equal(isMissingModule("/usr/bin/python3: No module named mintlang\n", "mint-run"), true);
+  assert.equal(isMissingModule("ModuleNotFoundError: No module named 'mintlang'\n", "mint-migrate"), true);
+  assert.equal(isMissingModule("ModuleNotFoundError: No module named 'lark'\n", "mint-run"), false);
+  assert.equal(isMissingModule("No module named mintlang.runtime\n", "mint-migrate"), false);
+  assert.equal(isMissingModule("error[E3001]: Variable undefined\n", "mint-run"), false);
+});
+
+test("command lines are shown quoted as a shell would need", () => {
+  assert.equal(
+    displayCommand({ command: "/usr/bin/mint-migrate", args: ["--write", "/p/my file's.mnt"], source: "PATH" }),
+    "/usr/bin/mint-migrate --write '/p/my file'\\''s.mnt'",
+  );
+});

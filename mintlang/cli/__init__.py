@@ -2,7 +2,8 @@
 
 ``mint check`` lives in the core. The tools add their own subcommands
 (``mint migrate``, ``mint run``) through the ``mintlang.commands`` entry-point
-group, so the core never imports them.
+group, so the core never imports them; they are loaded only when ``mint``
+runs, so importing this package imports no tool.
 """
 
 from __future__ import annotations
@@ -14,12 +15,23 @@ import click
 from mintlang.cli.check import check
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+class _Commands(click.Group):
+    """The core's commands plus those the installed tools register."""
+
+    def _tools(self) -> dict[str, click.Command]:
+        return {entry.name: entry.load() for entry in entry_points(group="mintlang.commands")}
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return sorted({*super().list_commands(ctx), *self._tools()})
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        return super().get_command(ctx, cmd_name) or self._tools().get(cmd_name)
+
+
+@click.group(cls=_Commands, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(package_name="mintlang")
 def main() -> None:
     """Tools for Mint, the motion-control language of Baldor/ABB controllers."""
 
 
 main.add_command(check)
-for _entry in entry_points(group="mintlang.commands"):
-    main.add_command(_entry.load(), _entry.name)

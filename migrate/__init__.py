@@ -1,0 +1,32 @@
+"""mint-migrate: the Mint v3 → v4 migrator (``mintlang.migrate``).
+
+A rule engine over the shared parser: every rule is a small named unit (see
+``rules()`` or ``mint-migrate --list-rules``) that yields span edits or manual
+items; the engine applies them to the original text, so everything a rule does
+not touch survives byte for byte::
+
+    from mintlang.migrate import migrate, rules_at
+    result = migrate(v3_source, config=v3_config, controller="nextmove-pci")
+    result.text, result.changes, result.manual, result.rule_counts, result.edits()
+    rules_at(v3_source, offset)  # single-rule quick fixes at a position
+"""
+
+from __future__ import annotations
+
+from mintlang.migrate.api import DEFAULT_CONTROLLER, UnknownRule, migrate, rules, rules_at, select
+from mintlang.migrate.model import Change, ManualItem, MigrationResult, Phase, RuleClass, RuleInfo
+
+__all__ = [
+    "DEFAULT_CONTROLLER",
+    "Change",
+    "ManualItem",
+    "MigrationResult",
+    "Phase",
+    "RuleClass",
+    "RuleInfo",
+    "UnknownRule",
+    "migrate",
+    "rules",
+    "rules_at",
+    "select",
+]

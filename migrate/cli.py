@@ -1,0 +1,179 @@
+"""``mint-migrate`` (also ``mint migrate``): migrate Mint v3 files to Mint v4.
+
+Default is a dry run that prints a unified diff and the report. ``--write``
+rewrites the files in place (atomically, in their own encoding and newlines),
+``--check`` only says whether anything would change, ``--stdout`` prints the
+migrated text of one file. Exit status: 0 when there is nothing to do or all
+was written, 1 when changes are pending (``--check``) or manual items are left,
+2 for a usage or I/O problem (one line, never a traceback).
+"""
+
+from __future__ import annotations
+
+import difflib
+import json
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+import click
+from rich.console import Console
+
+from mintlang.cli.files import collect, is_configuration
+from mintlang.keyworddb.model import Controller
+from mintlang.migrate.api import DEFAULT_CONTROLLER, UnknownRule, rules, select
+from mintlang.migrate.api import migrate as migrate_text
+from mintlang.migrate.atomic import write_atomic
+from mintlang.migrate.model import MigrationResult
+from mintlang.migrate.report import FileEntry, render_text, report
+from mintlang.source import SourceFile, read_source
+
+_PENDING = 1
+_USAGE_ERROR = 2
+
+
+class _Usage(Exception):
+    """A problem with the command line or a file: reported in one line, exit status 2."""
+
+
+@dataclass(frozen=True)
+class _Job:
+    """One application to migrate: a program, its configuration file, or both."""
+
+    program: SourceFile | None
+    configuration: SourceFile | None
+
+    def run(
+        self, controller: str, only: tuple[str, ...] | None, skip: tuple[str, ...]
+    ) -> list[tuple[SourceFile, FileEntry]]:
+        config = self.configuration.text if self.configuration is not None else None
+        result = migrate_text(
+            self.program.text if self.program else "", config=config, controller=controller, only=only, skip=skip
+        )
+        pairs = []
+        if self.configuration is not None and result.configuration is not None:
+            pairs.append((self.configuration, _entry(self.configuration, "configuration", result.configuration)))
+        if self.program is not None:
+            pairs.append((self.program, _entry(self.program, "program", result)))
+        return pairs
+
+
+def _entry(file: SourceFile, role: str, result: MigrationResult) -> FileEntry:
+    return FileEntry(str(file.path), role, result)
+
+
+def _read(path: Path) -> SourceFile:
+    try:
+        return read_source(path)
+    except OSError as error:
+        raise _Usage(f"cannot read {path}: {error.strerror or error}") from None
+
+
+def _jobs(paths: tuple[Path, ...], config: Path | None) -> list[_Job]:
+    try:
+        found = collect(paths)
+    except FileNotFoundError as error:
+        raise _Usage(f"no such file or directory: {error.args[0]}") from None
+    if config is not None:
+        if len(found) > 1 or any(is_configuration(path) for path in found):
+            raise _Usage("--config pairs one configuration file with one program file")
+        return [_Job(_read(found[0]) if found else None, _read(config))]
+    if not found:
+        raise _Usage("no .mnt or .cfg files to migrate")
+    return [_Job(None, _read(p)) if is_configuration(p) else _Job(_read(p), None) for p in found]
+
+
+def _diff(file: SourceFile, text: str) -> str:
+    lines = difflib.unified_diff(
+        file.text.splitlines(), text.splitlines(), f"a/{file.path}", f"b/{file.path}", lineterm=""
+    )
+    return "\n".join(lines)
+
+
+def _list_rules(console: Console) -> None:
+    for info in rules():
+        console.print(f"[bold]{info.id:<14}[/bold] {info.rule_class.value:<10} {info.summary}", highlight=False)
+        console.print(f"{'':<25} {info.evidence}", style="dim", highlight=False)
+
+
+@click.command(name="migrate", context_settings={"help_option_names": ["-h", "--help"]})
+@click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
+@click.option("--write", "mode", flag_value="write", help="Rewrite the files in place.")
+@click.option("--check", "mode", flag_value="check", help="Exit 1 when anything would change; write nothing.")
+@click.option("--stdout", "mode", flag_value="stdout", help="Print the migrated text of one file.")
+@click.option(
+    "--config",
+    "config",
+    type=click.Path(path_type=Path),
+    help="Configuration file migrated together with the program (its variables are visible there).",
+)
+@click.option(
+    "--controller",
+    type=click.Choice([c.value for c in Controller]),
+    default=DEFAULT_CONTROLLER.value,
+    show_default=True,
+    help="The Mint v4 controller to migrate to.",
+)
+@click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text", show_default=True)
+@click.option("--only", multiple=True, metavar="RULE", help="Run only this rule (repeatable).")
+@click.option("--skip", multiple=True, metavar="RULE", help="Do not run this rule (repeatable).")
+@click.option("--list-rules", is_flag=True, help="List the rules and exit.")
+def migrate(  # noqa: PLR0917 - click passes every option as an argument
+    paths: tuple[Path, ...],
+    mode: str | None,
+    config: Path | None,
+    controller: str,
+    output_format: str,
+    only: tuple[str, ...],
+    skip: tuple[str, ...],
+    list_rules: bool,
+) -> None:
+    """Migrate Mint v3 programs (.mnt) and configuration files (.cfg) to Mint v4."""
+    out = Console(highlight=False, soft_wrap=True)
+    if list_rules:
+        _list_rules(out)
+        return
+    try:
+        select(only or None, skip)
+        jobs = _jobs(paths, config)
+        if mode == "stdout" and sum((job.program is not None) + (job.configuration is not None) for job in jobs) > 1:
+            raise _Usage("--stdout prints one file: name one program or one configuration file")
+        migrated = [pair for job in jobs for pair in job.run(controller, only or None, skip)]
+        _output(migrated, mode, output_format, controller)
+        for file, entry in migrated if mode == "write" else ():
+            if entry.result.changed:
+                write_atomic(file.path, file.encode(entry.result.text))
+    except (_Usage, UnknownRule) as error:
+        click.echo(f"mint-migrate: {error}", err=True)
+        sys.exit(_USAGE_ERROR)
+    except OSError as error:
+        click.echo(f"mint-migrate: cannot write {error.filename}: {error.strerror or error}", err=True)
+        sys.exit(_USAGE_ERROR)
+    manual = any(entry.result.manual for _, entry in migrated)
+    pending = mode == "check" and any(entry.result.changed for _, entry in migrated)
+    sys.exit(_PENDING if manual or pending else 0)
+
+
+def _output(
+    migrated: list[tuple[SourceFile, FileEntry]], mode: str | None, output_format: str, controller: str
+) -> None:
+    data = report((entry for _, entry in migrated), controller)
+    to_stderr = mode == "stdout"
+    console = Console(highlight=False, soft_wrap=True, stderr=to_stderr)
+    if mode == "stdout":
+        file, entry = migrated[0]
+        sys.stdout.buffer.write(file.encode(entry.result.text))
+        sys.stdout.buffer.flush()
+    elif mode is None and output_format == "text":
+        for file, entry in migrated:
+            if entry.result.changed:
+                click.echo(_diff(file, entry.result.text))
+    if output_format == "json":
+        click.echo(json.dumps(data, indent=2, ensure_ascii=False), err=to_stderr)
+    else:
+        render_text(data, console)
+
+
+def main() -> None:
+    """Entry point of the ``mint-migrate`` script."""
+    migrate()

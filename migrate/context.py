@@ -1,0 +1,149 @@
+"""What a rule sees: the files of one application, parsed as Mint v3, with the semantic model.
+
+The engine builds a new ``Context`` for every pass, from the current text, so a
+rule always looks at spans of the text it edits. Helpers here answer the
+questions several rules ask (where does this line start, what is its
+indentation, which newline does the file use, does the target controller have
+this keyword), so no rule re-derives them.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass
+from functools import cached_property
+
+import mintlang
+from mintlang.controllers import ControllerProfile, profile
+from mintlang.diagnostics import Span
+from mintlang.keyworddb import database
+from mintlang.keyworddb.load import KeywordDatabase
+from mintlang.semantic.index import KeywordUse
+from mintlang.semantic.units import Unit
+from mintlang.syntax import nodes as n
+from mintlang.syntax.parser import Document
+
+_NEWLINE = re.compile(r"\r\n|\r|\n")
+MARKER = "REM MIGRATE:"
+
+
+@dataclass(frozen=True)
+class FileView:
+    """One file of the application as the current pass sees it."""
+
+    unit: Unit
+    text: str
+    document: Document
+
+    @cached_property
+    def newline(self) -> str:
+        """The file's own line break (the first one found; ``\\n`` for a one-line file)."""
+        found = _NEWLINE.search(self.text)
+        return found.group() if found else "\n"
+
+    def line_start(self, offset: int) -> int:
+        index = self.document.line_index
+        return index.line_start(index.position(offset).line)
+
+    def line_end(self, offset: int) -> int:
+        """Offset of the line break ending the line of ``offset`` (or of the end of the text)."""
+        found = _NEWLINE.search(self.text, offset)
+        return found.start() if found else len(self.text)
+
+    def indentation(self, offset: int) -> str:
+        start = self.line_start(offset)
+        line = self.text[start : self.line_end(offset)]
+        return line[: len(line) - len(line.lstrip(" \t"))]
+
+    def line_number(self, offset: int) -> int:
+        return self.document.line_index.position(offset).line
+
+    def lines_above(self, offset: int) -> Iterator[str]:
+        """The physical lines above the line of ``offset``, nearest first, stripped."""
+        start = self.line_start(offset)
+        while start > 0:
+            previous = self.line_start(start - 1)
+            yield self.text[previous:start].strip()
+            start = previous
+
+    def slice(self, span: Span) -> str:
+        return self.text[span.start : span.end]
+
+    def statement_alone(self, statement: n.Statement) -> bool:
+        """Whether ``statement`` is the only thing on its line apart from a trailing comment."""
+        before = self.text[self.line_start(statement.span.start) : statement.span.start]
+        after = self.text[statement.span.end : self.line_end(statement.span.end)].strip()
+        return before.strip() == "" and (after == "" or after.upper().startswith(("REM", ": REM", ":REM")))
+
+
+@dataclass(frozen=True)
+class Context:
+    """The application (configuration file, if any, then program) for one pass of the engine."""
+
+    files: Mapping[Unit, FileView]
+    model: mintlang.SemanticModel
+    controller: ControllerProfile
+
+    @classmethod
+    def build(cls, texts: Mapping[Unit, str], controller: str) -> Context:
+        configuration = None
+        if Unit.CONFIGURATION in texts:
+            configuration = mintlang.parse(texts[Unit.CONFIGURATION], "v3", from_configuration=True)
+        program = mintlang.parse(
+            texts[Unit.PROGRAM], "v3", macros=configuration.macros if configuration is not None else None
+        )
+        documents = {Unit.PROGRAM: program}
+        if configuration is not None:
+            documents[Unit.CONFIGURATION] = configuration
+        files = {unit: FileView(unit, texts[unit], documents[unit]) for unit in texts}
+        model = mintlang.build_model(program, configuration, controller)
+        return cls(files, model, profile(controller))
+
+    @property
+    def db(self) -> KeywordDatabase:
+        return database()
+
+    def statements(self) -> Iterator[tuple[FileView, n.Line, n.Statement]]:
+        """Every statement in compile order (configuration first), IF .. THEN bodies included."""
+        for unit, line, statement in self.model.index.statements:
+            yield self.files[unit], line, statement
+
+    def keyword_uses(self, *keywords: str) -> Iterator[tuple[FileView, KeywordUse]]:
+        """Uses of the named keywords (canonical v3 names), however they were spelled."""
+        wanted = frozenset(keywords)
+        for use in self.model.index.keyword_uses:
+            if use.keyword.keyword in wanted:
+                yield self.files[use.unit], use
+
+    def supports(self, keyword: str) -> bool:
+        """Whether the target controller has the v4 keyword (its "Controllers Supported" list)."""
+        entry = self.db.keywords.get(keyword.upper())
+        return entry is not None and self.controller.controller in entry.controllers
+
+    def parents(self, statement: n.Statement) -> dict[int, n.Expression]:
+        """``id(expression) -> enclosing expression`` for every expression of ``statement``."""
+        found: dict[int, n.Expression] = {}
+        for root in n.expressions_of(statement):
+            for node in n.walk_expression(root):
+                for child in children(node):
+                    found[id(child)] = node
+        return found
+
+
+def children(node: n.Expression) -> tuple[n.Expression, ...]:
+    """The direct subexpressions of ``node``."""
+    match node:
+        case n.Binary(left=left, right=right):
+            return (left, right)
+        case n.Unary(operand=operand):
+            return (operand,)
+        case n.Parenthesised(expression=inner):
+            return (inner,)
+        case n.ElementRef(index=index):
+            return (index,)
+        case n.Call(arguments=arguments):
+            return arguments
+        case n.KeywordRef(selector=selector) if selector is not None:
+            return tuple(item for item in selector.items if item is not None)
+    return ()

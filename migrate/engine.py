@@ -1,0 +1,208 @@
+"""Running the rules: phases in the spec's order, non-overlapping span edits, a fixed point.
+
+Each phase re-parses the current text, asks its rules for actions, applies the
+edits that do not overlap an earlier rule's edit (the rest wait for the next
+pass of the same phase, on the re-parsed text) and repeats until the phase has
+nothing left to do. Flags become ``REM MIGRATE:`` lines above the flagged line,
+with its indentation and the file's own newline; a marker already there is not
+written twice, which is what makes a second migration a no-op.
+
+Text outside the edited spans is copied, never regenerated: comments, spacing,
+case, blank lines, CRLF and characters of any code page survive as they were.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+
+from mintlang.diagnostics import LineIndex, Severity, Span
+from mintlang.migrate.context import MARKER, Context, FileView
+from mintlang.migrate.model import Change, ManualItem, Phase
+from mintlang.migrate.rules.base import Flag, Replace, Rule
+from mintlang.semantic.units import Unit
+
+MAX_PASSES = 6  # a phase that still edits after this many passes has a rule that is not idempotent
+_MARKER_LINE = re.compile(rf"^[ \t]*{re.escape(MARKER)}[ \t]*(?P<rule>[A-Z]+-[A-Z0-9-]+):[ \t]*(?P<reason>.*?)[ \t]*$")
+
+
+@dataclass(frozen=True, slots=True)
+class _Edit:
+    rule: str
+    span: Span
+    text: str
+
+
+@dataclass
+class _FileState:
+    """One file through the phases: its current text and how each pass changed it."""
+
+    source: str
+    text: str
+    index: LineIndex
+    batches: list[list[_Edit]] = field(default_factory=list)  # applied edits, per pass, on the text before it
+    changes: list[Change] = field(default_factory=list)
+    counts: Counter[str] = field(default_factory=Counter)
+
+
+@dataclass(frozen=True, slots=True)
+class FileOutcome:
+    source: str
+    text: str
+    changes: tuple[Change, ...]
+    manual: tuple[ManualItem, ...]
+    counts: Mapping[str, int]
+    errors: tuple[str, ...]  # what the v3 parser could not read in the original
+
+
+def run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> dict[Unit, FileOutcome]:
+    """Migrate the files of one application with ``rules`` (already filtered and ordered)."""
+    states = {unit: _FileState(text, text, LineIndex(text)) for unit, text in texts.items()}
+    original = Context.build(texts, controller)
+    errors = {unit: _unreadable(file) for unit, file in original.files.items()}
+    for phase in Phase:
+        active = [rule for rule in rules if rule.phase is phase]
+        if not active:
+            continue
+        for _ in range(MAX_PASSES):
+            context = Context.build({unit: state.text for unit, state in states.items()}, controller)
+            if not _apply_pass(context, active, states):
+                break
+        else:  # pragma: no cover - guards against a rule that never settles
+            raise RuntimeError(f"phase {phase} did not reach a fixed point")
+    return {unit: _outcome(state, errors[unit]) for unit, state in states.items()}
+
+
+def _unreadable(file: FileView) -> tuple[str, ...]:
+    index = file.document.line_index
+    return tuple(
+        f"line {index.position(d.span.start).line}: {d.code} {d.message}"
+        for d in file.document.diagnostics
+        if d.severity is Severity.ERROR
+    )
+
+
+def _apply_pass(context: Context, rules: Sequence[Rule], states: dict[Unit, _FileState]) -> bool:
+    wanted: dict[Unit, list[_Edit]] = {unit: [] for unit in states}
+    flagged: set[tuple[Unit, int, str]] = set()
+    for rule in rules:
+        for action in rule.apply(context):
+            file = context.files[action.unit]
+            if isinstance(action, Replace):
+                wanted[action.unit].append(_Edit(rule.id, action.span, action.text))
+            elif isinstance(action, Flag):
+                edit = _marker(file, rule.id, action, flagged)
+                if edit is not None:
+                    wanted[action.unit].append(edit)
+    changed = False
+    for unit, edits in wanted.items():
+        accepted = _non_overlapping(edits)
+        if accepted:
+            _apply(states[unit], accepted)
+            changed = True
+    return changed
+
+
+def _marker(file: FileView, rule: str, flag: Flag, flagged: set[tuple[Unit, int, str]]) -> _Edit | None:
+    """The ``REM MIGRATE:`` line for a flag, unless that line already carries it."""
+    reason = " ".join(flag.reason.split())
+    text = f"{MARKER} {rule}: {reason}"
+    start = file.line_start(flag.span.start)
+    key = (file.unit, start, text)
+    if key in flagged:
+        return None
+    flagged.add(key)
+    for above in file.lines_above(flag.span.start):
+        if not above.upper().startswith(MARKER):
+            break
+        if above == text:
+            return None
+    return _Edit(rule, Span(start, start), f"{file.indentation(flag.span.start)}{text}{file.newline}")
+
+
+def _non_overlapping(edits: list[_Edit]) -> list[_Edit]:
+    """The edits that touch no earlier-accepted edit (rule order decides), sorted by position.
+
+    Insertions at one point keep the order they were asked for; an insertion may
+    sit at either end of a replacement, never inside it.
+    """
+    accepted: list[_Edit] = []
+    for edit in edits:
+        if all(_compatible(edit.span, other.span) for other in accepted):
+            accepted.append(edit)
+    return sorted(accepted, key=lambda edit: (edit.span.start, edit.span.end))
+
+
+def _compatible(a: Span, b: Span) -> bool:
+    if a.start == a.end or b.start == b.end:  # an insertion may not fall strictly inside a replacement
+        return not (b.start < a.start < b.end or a.start < b.start < a.end)
+    return a.end <= b.start or b.end <= a.start
+
+
+def _apply(state: _FileState, edits: list[_Edit]) -> None:
+    parts: list[str] = []
+    position = 0
+    for edit in edits:
+        parts.append(state.text[position : edit.span.start])
+        parts.append(edit.text)
+        position = edit.span.end
+        if not edit.text.lstrip().startswith(MARKER):
+            original = _to_source(state, edit.span)
+            line = state.index.position(original.start).line
+            state.changes.append(
+                Change(edit.rule, original, line, state.source[original.start : original.end], edit.text)
+            )
+            state.counts[edit.rule] += 1
+    parts.append(state.text[position:])
+    state.batches.append(edits)
+    state.text = "".join(parts)
+
+
+def _to_source(state: _FileState, span: Span) -> Span:
+    """``span`` of the current text mapped back to the original source.
+
+    Offsets outside earlier edits shift by those edits' growth; an offset inside
+    text an earlier edit wrote maps to the whole span that edit replaced.
+    """
+    start, end = span
+    for batch in reversed(state.batches):
+        start = _back(batch, start, at_start=True)
+        end = start if span.start == span.end else _back(batch, end, at_start=False)
+    return Span(start, max(start, end))
+
+
+def _back(batch: list[_Edit], offset: int, *, at_start: bool) -> int:
+    shift = 0
+    for edit in batch:
+        new_start = edit.span.start + shift
+        new_end = new_start + len(edit.text)
+        if offset < new_start or (offset == new_start and at_start and edit.span.start != edit.span.end):
+            break
+        if offset < new_end or (offset == new_end and not at_start and offset > new_start):
+            return edit.span.start if at_start else edit.span.end
+        shift += len(edit.text) - (edit.span.end - edit.span.start)
+    return offset - shift
+
+
+def _outcome(state: _FileState, errors: tuple[str, ...]) -> FileOutcome:
+    manual = tuple(_manual_items(state.text))
+    counts = Counter(state.counts)
+    for item in manual:
+        counts[item.rule] += 1
+    return FileOutcome(state.source, state.text, tuple(state.changes), manual, dict(sorted(counts.items())), errors)
+
+
+def _manual_items(text: str) -> list[ManualItem]:
+    """Every ``REM MIGRATE:`` line of the text, with the line it flags (the next non-marker line)."""
+    items: list[ManualItem] = []
+    pending: list[tuple[str, str]] = []
+    for number, line in enumerate(text.splitlines(), start=1):
+        found = _MARKER_LINE.match(line)
+        if found:
+            pending.append((found["rule"], found["reason"]))
+            continue
+        items.extend(ManualItem(rule, number, reason) for rule, reason in pending)
+        pending = []
+    return items

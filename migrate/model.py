@@ -1,0 +1,96 @@
+"""The values the migrator hands out: rule descriptions, changes, manual items, results.
+
+All frozen: a result can be cached by the language server and compared in tests.
+Offsets are character offsets into decoded text (``mintlang.source`` decodes
+files so that encoding the text again gives back the same bytes).
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from enum import StrEnum
+
+from mintlang.diagnostics import Edit, Span
+
+
+class RuleClass(StrEnum):
+    """How much a rule can be trusted to run unattended (migration spec, "Classes")."""
+
+    MECHANICAL = "mechanical"  # provably equivalent token rewrite or insertion
+    SEMI = "semi"  # automatic when the context is proven, a manual item otherwise
+    MANUAL = "manual"  # only flags: the original stays, a REM MIGRATE line explains
+
+
+class Phase(StrEnum):
+    """The processing order of the migration spec (section 1); each phase re-parses."""
+
+    ABBREVIATIONS = "abbreviations"  # several v3 abbreviations name other keywords in v4
+    RENAMES = "renames"  # keywords, labels, constants, user names
+    CONTEXT = "context"  # rewrites that need the statement around the keyword
+    INSERTIONS = "insertions"  # DIM, AXES, input edge modes
+    MANUAL = "manual"  # whatever is still Mint v3 gets a marker
+
+
+@dataclass(frozen=True, slots=True)
+class RuleInfo:
+    """What ``--list-rules`` shows: id, class, phase, what it does and the manual's evidence."""
+
+    id: str
+    rule_class: RuleClass
+    phase: Phase
+    summary: str
+    evidence: str
+
+
+@dataclass(frozen=True, slots=True)
+class Change:
+    """One rewrite: ``span`` and ``line`` locate the replaced text in the original source."""
+
+    rule: str
+    span: Span
+    line: int
+    original: str
+    replacement: str
+
+
+@dataclass(frozen=True, slots=True)
+class ManualItem:
+    """Something left for the user; ``line`` is the flagged line of the migrated text."""
+
+    rule: str
+    line: int
+    reason: str
+
+
+@dataclass(frozen=True, slots=True)
+class MigrationResult:
+    """The migration of one file; ``configuration`` holds that of the configuration file, if any."""
+
+    source: str
+    text: str
+    changes: tuple[Change, ...]
+    manual: tuple[ManualItem, ...]
+    rule_counts: Mapping[str, int]
+    errors: tuple[str, ...] = ()  # lines the migrator could not read (left untouched)
+    configuration: MigrationResult | None = field(default=None, repr=False)
+
+    @property
+    def changed(self) -> bool:
+        return self.text != self.source
+
+    def edits(self) -> tuple[Edit, ...]:
+        """Minimal non-overlapping edits on ``source`` that produce ``text`` (for an editor's
+        "migrate this file": one text edit per changed run of lines)."""
+        old = self.source.splitlines(keepends=True)
+        new = self.text.splitlines(keepends=True)
+        starts = [0]
+        for line in old:
+            starts.append(starts[-1] + len(line))
+        edits = []
+        matcher = difflib.SequenceMatcher(None, old, new, autojunk=False)
+        for tag, i1, i2, j1, j2 in matcher.get_opcodes():
+            if tag != "equal":
+                edits.append(Edit(Span(starts[i1], starts[i2]), "".join(new[j1:j2])))
+        return tuple(edits)

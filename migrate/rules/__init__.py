@@ -1,0 +1,125 @@
+"""Every migration rule, in the order the engine runs them (phase by phase, then this order)."""
+
+from __future__ import annotations
+
+from mintlang.migrate.rules.abbreviations import ExpandAbbreviations
+from mintlang.migrate.rules.base import Action, Flag, Replace, Rule
+from mintlang.migrate.rules.channels import Channels
+from mintlang.migrate.rules.declarations import DeclareVariables, DefaultAxes, InputEdges
+from mintlang.migrate.rules.expressions import ByteToggle, Precedence, Trigonometry
+from mintlang.migrate.rules.manual import (
+    AbsentFeatures,
+    AnalogueUnits,
+    AxisConfiguration,
+    ChangedMeaning,
+    DacUnits,
+    EnableOutput,
+    ErrorCodes,
+    ExpansionBoards,
+    FastLatch,
+    HostTransfer,
+    IncrementalMoves,
+    InvalidInV3,
+    Keypad,
+    LeftoverV3,
+    OnError,
+    Platform,
+    PulseFollowing,
+    ServoOnAgain,
+    Trigger,
+)
+from mintlang.migrate.rules.reads import ErrorTest, ModeTest, ReadRenames
+from mintlang.migrate.rules.renames import (
+    RenameConstants,
+    RenameEventLabels,
+    RenameFastPos,
+    RenameKeywords,
+    RenameReservedNames,
+)
+from mintlang.migrate.rules.statements import (
+    Boost,
+    Contouring,
+    DropOffline,
+    Interrupts,
+    Limits,
+    NotAvailable,
+    ServoOff,
+    ServoOn,
+    Zero,
+)
+from mintlang.migrate.rules.writes import (
+    AccelAlsoDecel,
+    ConfigValues,
+    CurrentLimit,
+    Echo,
+    ErrorInput,
+    IdleWindow,
+    IntegerScale,
+    OffsetNeedsGo,
+    Ramp,
+    Terminal,
+)
+
+RULES: tuple[Rule, ...] = (
+    # abbreviations
+    ExpandAbbreviations(),
+    # renames
+    RenameKeywords(),
+    RenameFastPos(),
+    RenameConstants(),
+    RenameEventLabels(),
+    RenameReservedNames(),
+    # context rewrites: statements, then companions, then expressions
+    Zero(),
+    Boost(),
+    NotAvailable(),
+    DropOffline(),
+    Contouring(),
+    ServoOff(),
+    ServoOn(),
+    Limits(),
+    Interrupts(),
+    IdleWindow(),
+    CurrentLimit(),
+    Ramp(),
+    Terminal(),
+    ConfigValues(),
+    Echo(),
+    ErrorInput(),
+    Channels(),
+    AccelAlsoDecel(),
+    OffsetNeedsGo(),
+    IntegerScale(),
+    ReadRenames(),
+    ModeTest(),
+    ErrorTest(),
+    Trigonometry(),
+    ByteToggle(),
+    Precedence(),
+    # insertions
+    DefaultAxes(),
+    InputEdges(),
+    DeclareVariables(),
+    # manual items: specific reasons first, the catch-all last
+    PulseFollowing(),
+    IncrementalMoves(),
+    ServoOnAgain(),
+    Trigger(),
+    ExpansionBoards(),
+    Keypad(),
+    HostTransfer(),
+    AxisConfiguration(),
+    AbsentFeatures(),
+    EnableOutput(),
+    ErrorCodes(),
+    AnalogueUnits(),
+    DacUnits(),
+    ChangedMeaning(),
+    OnError(),
+    FastLatch(),
+    InvalidInV3(),
+    Platform(),
+    LeftoverV3(),
+)
+
+__all__ = ["RULES", "Action", "Flag", "Replace", "Rule"]

@@ -1,0 +1,45 @@
+"""M-ABBR: expand every Mint v3 abbreviation to its full v3 keyword name, first of all.
+
+Several v3 abbreviations are other keywords in v4 (``DE`` DECEL → DRIVEENABLE,
+``IM`` IMASK → INPUTMODE, ``MD`` MODE → MOTORDIRECTION, ``GR`` GEARN → GEARING,
+``DT`` DATETIME → DRIVETYPE, ``EO`` ECHO → the old ENOUTPUT): left alone, they
+would still compile and do something else. Writing the full v3 name first lets
+every later rule match full names only, and the output never depends on what
+two letters mean in which version.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from mintlang.diagnostics import Span
+from mintlang.dialect import Dialect
+from mintlang.migrate.context import Context
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.base import Action, Rule
+from mintlang.migrate.rules.spelling import like
+from mintlang.syntax.tokens import WORDS
+from mintlang.syntax.vocabulary import vocabulary
+
+
+class ExpandAbbreviations(Rule):
+    """A v3 abbreviation (``MA``, ``SP``, ``DE``, ``I3``, ``A1``) becomes the full v3 name.
+
+    Symbols (``?``, ``&``, ``|``, ``!``, ``%``) mean the same in v4 and stay.
+    """
+
+    id = "M-ABBR"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.ABBREVIATIONS
+    summary = "v3 abbreviation (MA, DE, IM, MD, GR, DT, I3, A1 ...) -> full v3 keyword name"
+    evidence = "spec M-ABBR, §9; v3 keyword entries; v4:9258 DE, v4:12313 IM, v4:14092 MD, v4:10949 GR, v4:9517 DT"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        words = vocabulary(Dialect.V3)
+        for file in context.files.values():
+            for token in file.document.tokens:
+                if token.kind not in WORDS or not token.text.isalnum():
+                    continue
+                name = words.canonical.get(token.text.upper())  # not IN12 -> IN: a glued channel stays
+                if name is not None and name != token.text.upper():
+                    yield self.replace(file, Span(token.start, token.end), like(token.text, name))

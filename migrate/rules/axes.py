@@ -1,0 +1,48 @@
+"""Which axes a bracket-less keyword addresses: the AXES default in force at a statement.
+
+v3 powers up with ``AXES[0,1,2]`` (v3:1029-1033). Configuration files set AXES
+once, in straight-line code, so the default at a statement is taken from the
+last ``AXES[...]`` with constant axes written before it, in compile order
+(configuration, then program). An AXES inside a block or with a computed list
+makes the default unknown, and the rules that need it fall back to a manual item.
+"""
+
+from __future__ import annotations
+
+from mintlang.migrate.context import Context, FileView
+from mintlang.syntax import nodes as n
+
+V3_POWER_UP_AXES = (0, 1, 2)
+
+
+def default_axes(context: Context, file: FileView, offset: int) -> tuple[int, ...] | None:
+    """The axes bracket-less keywords address at ``offset`` of ``file``, or None when unknown."""
+    axes: tuple[int, ...] | None = V3_POWER_UP_AXES
+    for current, line, statement in context.statements():
+        if current is file and statement.span.start >= offset:
+            break
+        if isinstance(statement, n.Axes):
+            axes = constant_axes(statement.selector) if _top_level(line, statement) else None
+    return axes
+
+
+def constant_axes(selector: n.Selector | None) -> tuple[int, ...] | None:
+    if selector is None:
+        return None
+    found = []
+    for item in selector.items:
+        if not isinstance(item, n.Number) or item.value != int(item.value):
+            return None
+        found.append(int(item.value))
+    return tuple(found)
+
+
+def selector_axes(keyword: n.KeywordRef) -> tuple[int, ...] | None:
+    """The constant axes a keyword names itself (``[0,1]``, ``.1``, ``IN3``), else None."""
+    if keyword.channel is not None:
+        return (keyword.channel,)
+    return constant_axes(keyword.selector)
+
+
+def _top_level(line: n.Line, statement: n.Statement) -> bool:
+    return statement in line.statements

@@ -1,0 +1,177 @@
+"""Insertions: DIM for v3's implicit variables, the v3 default AXES, input edge modes.
+
+All three go at the top of a file (the migration spec §5): after the ``AUTO``
+that must stay first in a configuration file, after the ``PROTECT`` that must
+stay first in a program, and otherwise after the comment block that opens the
+file, so a header stays a header.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from mintlang.diagnostics import Span
+from mintlang.migrate.context import MARKER, Context, FileView
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.base import Action, Replace, Rule
+from mintlang.semantic.events import EventKind, event_of
+from mintlang.semantic.symbols import Symbol, SymbolKind
+from mintlang.semantic.units import Unit
+from mintlang.syntax import nodes as n
+
+V3_DEFAULT_AXES = 3  # power-up AXES[0,1,2] (v3:1029-1033)
+
+
+def top_of(file: FileView) -> int:
+    """Where declarations go: after a leading AUTO (configuration) or PROTECT (program)
+    statement, else after the comment lines the file starts with (a REM MIGRATE line
+    belongs to the line below it, so it ends the header)."""
+    for line in file.document.lines:
+        first = line.statements[0] if line.statements else None
+        if first is None and line.label is None:
+            continue
+        word = first.keyword.keyword if isinstance(first, n.KeywordStatement) else None
+        if (file.unit is Unit.CONFIGURATION and word == "AUTO") or (file.unit is Unit.PROGRAM and word == "PROTECT"):
+            return _next_line(file, line.span.end)
+        break
+    position = 0
+    for raw in file.text.splitlines(keepends=True):
+        comment = raw.strip().upper()
+        if not comment.startswith("REM") or comment.startswith(MARKER):  # a marker belongs to the line below
+            break
+        position += len(raw)
+    return position
+
+
+def _next_line(file: FileView, offset: int) -> int:
+    end = file.line_end(offset)
+    return end + len(file.newline) if end < len(file.text) else end
+
+
+def insert_lines(file: FileView, lines: list[str]) -> Replace:
+    """One insertion of whole lines at the top of ``file``, with its own newline."""
+    at = top_of(file)
+    text = "".join(f"{line}{file.newline}" for line in lines)
+    if at == len(file.text) and file.text and not file.text.endswith(("\n", "\r")):
+        text = file.newline + text.removesuffix(file.newline)
+    return Replace(file.unit, Span(at, at), text)
+
+
+def prologue_file(context: Context) -> FileView:
+    """The configuration file when there is one (it runs first), else the program."""
+    return context.files.get(Unit.CONFIGURATION) or context.files[Unit.PROGRAM]
+
+
+class DeclareVariables(Rule):
+    """Every variable v3 declared implicitly (assignment, FOR, INPUT, or a read) gets a bare
+    ``DIM name`` at the top of the file that first uses it, in first-use order.
+
+    v4 declares only with DIM, at compile time, before first use in the text; a bare DIM
+    keeps an existing value, so the v3 non-volatile idiom still works (a ``DIM x = v``
+    would not). A variable of the configuration file is declared there and is visible in
+    the program. An array used without a DIM cannot be sized here: manual item.
+    """
+
+    id = "M-DIM"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.INSERTIONS
+    summary = "implicitly declared v3 variable -> 'DIM name' at the top of the file (first-use order)"
+    evidence = "spec M-DIM, §5; v3:1352-1367, v3:1425; v4:897-910, v4:969-970, v4:19073 (#3001)"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        declared = _dimmed(context)
+        indexed = {event.name.identity for event in context.model.index.names if event.element}
+        for unit, file in context.files.items():
+            wanted: dict[str, tuple[int, str]] = {}
+            for symbol in context.model.symbols.variables.values():
+                if not _user_name(context, symbol.name):
+                    continue
+                uses = [o for o in symbol.occurrences() if o.unit is unit]
+                visible = declared[unit] | (declared[Unit.CONFIGURATION] if unit is Unit.PROGRAM else set())
+                if not uses or symbol.identity in visible:
+                    continue
+                if symbol.kind is SymbolKind.ARRAY or symbol.identity in indexed:
+                    yield self.flag(file, uses[0].span, f"array '{symbol.name}' is used but never dimensioned")
+                    continue
+                if unit is Unit.PROGRAM and _first_use_in_configuration(symbol):
+                    continue
+                first = min(uses, key=lambda o: o.span.start)
+                wanted[symbol.identity] = (first.span.start, first.spelling)
+            if wanted:
+                names = [spelling for _, spelling in sorted(wanted.values())]
+                yield insert_lines(file, [f"DIM {name}" for name in names])
+
+
+def _user_name(context: Context, name: str) -> bool:
+    """Not a constant and not a v4 keyword (migrated text read as v3 shows KPROP as a name)."""
+    return not name.startswith("_") and context.db.lookup(name) is None
+
+
+def _first_use_in_configuration(symbol: Symbol) -> bool:
+    first = next(symbol.occurrences(), None)
+    return first is not None and first.unit is Unit.CONFIGURATION
+
+
+def _dimmed(context: Context) -> dict[Unit, set[str]]:
+    """Identities each file declares with DIM (scalars and arrays)."""
+    found: dict[Unit, set[str]] = {Unit.CONFIGURATION: set(), Unit.PROGRAM: set()}
+    for file, _, statement in context.statements():
+        if isinstance(statement, n.Dim):
+            found[file.unit].add(statement.name.identity)
+    return found
+
+
+class DefaultAxes(Rule):
+    """An application that never sets AXES gets ``AXES[0,1,2]``: v3 powered up with three
+    default axes, v4 with all the controller's axes, so bracket-less STOP, GO, RESET or
+    ``SPEED = …;`` would act on more axes. Not needed when the controller has at most three.
+    """
+
+    id = "M-AXES"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.INSERTIONS
+    summary = "no AXES anywhere -> 'AXES[0,1,2]' first in the configuration file (or program)"
+    evidence = "spec M-AXES; v3:1029-1033; v4:605-608, v4:144-182"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        if context.controller.axis_count <= V3_DEFAULT_AXES:
+            return
+        if any(isinstance(statement, n.Axes) for _, _, statement in context.statements()):
+            return
+        axes = ",".join(str(axis) for axis in range(V3_DEFAULT_AXES))
+        yield insert_lines(prologue_file(context), [f"AXES[{axes}]"])
+
+
+class InputEdges(Rule):
+    """Each ``#INn`` handler's input is made negative-edge triggered, as v3 called #INn once
+    per falling (active to inactive) edge; v4 inputs are level triggered by default and a
+    level-triggered handler is called again and again while the input is active.
+    """
+
+    id = "S-INEDGE"
+    rule_class = RuleClass.SEMI
+    phase = Phase.INSERTIONS
+    summary = "#INn handlers -> 'INPUTMODE = INPUTMODE | m' and 'INPUTNEGTRIGGER = INPUTNEGTRIGGER | m'"
+    evidence = "spec S-INEDGE; v3:2525; v4:4085-4088, v4:5024-5040, v4:12379-12421"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        program = context.files[Unit.PROGRAM]
+        mask = 0
+        for line in program.document.lines:
+            event = event_of(line.label.text) if line.label is not None else None
+            if event is not None and event.kind is EventKind.IN and event.number is not None:
+                mask |= 1 << event.number
+        if not mask or _sets_input_mode(context):
+            return
+        yield insert_lines(
+            prologue_file(context),
+            [f"INPUTMODE = INPUTMODE | {mask}", f"INPUTNEGTRIGGER = INPUTNEGTRIGGER | {mask}"],
+        )
+
+
+def _sets_input_mode(context: Context) -> bool:
+    """Whether the application already writes INPUTMODE (a name to the v3 reader)."""
+    for _, _, statement in context.statements():
+        if isinstance(statement, n.Assignment) and statement.target.name.identity == "INPUTMODE":
+            return True
+    return False

@@ -1,0 +1,135 @@
+"""Expression rewrites that keep v3 values where v4 computes differently.
+
+Each recognises its own output (``(SIN(x) * 1000)``, ``(~x & 255)``, a bracketed
+AND inside an OR), so migrating migrated text changes nothing.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from mintlang.diagnostics import Span
+from mintlang.migrate.context import Context
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.base import Action, Rule
+from mintlang.syntax import nodes as n
+
+
+def _wrapped(parents: dict[int, n.Expression], node: n.Expression, operator: str, number: float) -> bool:
+    """Whether ``node`` already sits in ``(node <operator> number)``."""
+    parent = parents.get(id(node))
+    return (
+        isinstance(parent, n.Binary)
+        and parent.operator == operator
+        and parent.left is node
+        and isinstance(parent.right, n.Number)
+        and parent.right.value == number
+        and isinstance(parents.get(id(parent)), n.Parenthesised)
+    )
+
+
+def _expressions(context: Context) -> Iterator[tuple[object, n.Statement, n.Expression]]:
+    for file, _, statement in context.statements():
+        for root in n.expressions_of(statement):
+            for node in n.walk_expression(root):
+                yield file, statement, node
+
+
+class Trigonometry(Rule):
+    """v3 SIN, COS and TAN return the value times 1000 (COS(30) = 866, TAN(45) = 1000); v4
+    returns the fraction. ``SIN(x)`` becomes ``(SIN(x) * 1000)``; the unbracketed ``SIN 90 + a``
+    keeps its v3 binding as ``(SIN(90) * 1000) + a``. (v3 used a 0.1 degree table, so the last
+    digit can differ.)"""
+
+    id = "M-TRIG"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.CONTEXT
+    summary = "SIN(x), COS(x), TAN(x) -> (SIN(x) * 1000) ... (v3 returned thousandths)"
+    evidence = "spec M-TRIG; v3:2063-2081, v3:7045, v3:11771, v3:11975; v4:8676-8679"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        parents_of: dict[int, dict[int, n.Expression]] = {}
+        for file, statement, node in _expressions(context):
+            if not isinstance(node, n.Call) or node.function not in ("SIN", "COS", "TAN"):
+                continue
+            parents = parents_of.setdefault(id(statement), context.parents(statement))
+            if _wrapped(parents, node, "*", 1000):
+                continue
+            text = file.slice(node.span)  # type: ignore[attr-defined]
+            if not node.bracketed:
+                argument = node.arguments[0]
+                text = f"{node.spelling}({file.slice(argument.span)})"  # type: ignore[attr-defined]
+            yield self.replace(file, node.span, f"({text} * 1000)")  # type: ignore[arg-type]
+
+
+class ByteToggle(Rule):
+    """v3 ``~`` toggles the 8 bits of a byte; v4 ``~`` works on 24 bits. ``~x`` becomes
+    ``(~x & 255)``, which gives the v3 value for any byte."""
+
+    id = "M-TILDE"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.CONTEXT
+    summary = "~x -> (~x & 255) (v3 toggled 8 bits, v4 toggles 24)"
+    evidence = "spec M-TILDE; v3:1978; v4:5707-5708, v4:1340"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        parents_of: dict[int, dict[int, n.Expression]] = {}
+        for file, statement, node in _expressions(context):
+            if not isinstance(node, n.Unary) or node.operator != "~":
+                continue
+            parents = parents_of.setdefault(id(statement), context.parents(statement))
+            if not _wrapped(parents, node, "AND", 255):
+                yield self.replace(file, node.span, f"({file.slice(node.span)} & 255)")  # type: ignore[attr-defined]
+
+
+class Precedence(Rule):
+    """v3 binds AND tighter than OR; the v4 table lists ``|`` above ``&``. In a chain mixing
+    the two, every run of operands joined by AND gets brackets, which reads the same under
+    either rule. The shared parser builds one tree for both dialects (v4 precedence), so the
+    chain is flattened to its operands in source order and regrouped the v3 way here."""
+
+    id = "M-PREC"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.CONTEXT
+    summary = "a AND b OR c -> (a AND b) OR c, bracketed as v3 binds it"
+    evidence = "spec M-PREC; v3:1986-1995; v4:1417-1429"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        parents_of: dict[int, dict[int, n.Expression]] = {}
+        for file, statement, node in _expressions(context):
+            if not _logical(node):
+                continue
+            parents = parents_of.setdefault(id(statement), context.parents(statement))
+            if _logical(parents.get(id(node))):
+                continue  # not the top of its chain
+            operands, operators = _flatten(node)
+            if not {"AND", "OR"} <= set(operators):
+                continue
+            for first, last in _and_runs(operators):
+                span = (operands[first].span.start, operands[last].span.end)
+                text = file.text[span[0] : span[1]]  # type: ignore[attr-defined]
+                yield self.replace(file, Span(*span), f"({text})")  # type: ignore[arg-type]
+
+
+def _logical(node: n.Expression | None) -> bool:
+    return isinstance(node, n.Binary) and node.operator in ("AND", "OR")
+
+
+def _flatten(node: n.Expression) -> tuple[list[n.Expression], list[str]]:
+    """The operands and AND/OR operators of a chain, in source order."""
+    if not _logical(node):
+        return [node], []
+    assert isinstance(node, n.Binary)
+    left, left_ops = _flatten(node.left)
+    right, right_ops = _flatten(node.right)
+    return [*left, *right], [*left_ops, node.operator, *right_ops]
+
+
+def _and_runs(operators: list[str]) -> Iterator[tuple[int, int]]:
+    """Operand index ranges joined only by AND (two operands or more)."""
+    start = 0
+    for index, operator in enumerate([*operators, "OR"]):
+        if operator == "OR":
+            if index > start:
+                yield start, index
+            start = index + 1

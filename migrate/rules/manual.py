@@ -1,0 +1,354 @@
+"""Manual items: what cannot be rewritten safely is flagged, never dropped or guessed.
+
+The original statement stays; a ``REM MIGRATE: <rule>: <reason>`` line above it
+says what to do, and the report lists it. The last rule of this phase flags any
+Mint v3 word still left, so nothing reaches the output silently unmigrated.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from typing import ClassVar
+
+import mintlang
+from mintlang.diagnostics import Severity
+from mintlang.dialect import Dialect
+from mintlang.migrate.context import MARKER, Context, FileView
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.base import Action, Rule
+from mintlang.migrate.rules.renames import same_value_constants
+from mintlang.semantic.events import EventKind, event_of
+from mintlang.syntax import nodes as n
+
+
+def keyword_nodes(context: Context) -> Iterator[tuple[FileView, n.Statement, str, n.KeywordRef | n.Call]]:
+    """Every keyword and function written in an expression or as a statement, canonical name first."""
+    for use in context.model.index.keyword_uses:
+        yield context.files[use.unit], use.statement, use.keyword.keyword, use.keyword
+    for file, _, statement in context.statements():
+        for root in n.expressions_of(statement):
+            for node in n.walk_expression(root):
+                if isinstance(node, n.Call):
+                    yield file, statement, node.function, node
+        if isinstance(statement, n.FunctionStatement):
+            yield file, statement, statement.call.function, statement.call
+
+
+class ManualKeywords(Rule):
+    """Flags every use of some v3 keywords with one reason (subclasses set both)."""
+
+    rule_class = RuleClass.MANUAL
+    phase = Phase.MANUAL
+    keywords: ClassVar[frozenset[str]]
+    reason: ClassVar[str] = ""
+    reasons: ClassVar[Mapping[str, str]] = {}  # per keyword, where one reason does not fit all
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file, statement, keyword, _ in keyword_nodes(context):
+            if keyword in self.keywords:
+                yield self.flag(file, statement.span, f"{keyword}: {self.reasons.get(keyword, self.reason)}")
+
+
+class PulseFollowing(ManualKeywords):
+    """v3 PULSE follows a pulse/direction input with a ramp; the v4 guide's "PULSE replaced by
+    STEPPERIO" is a different keyword. The v4 equivalent is FOLLOW (FOLLOWMODE 1) on a master
+    source wired to an encoder input: a hardware decision."""
+
+    id = "X-PULSE"
+    summary = "PULSE, PULSEVEL, TIMER, WRAP -> manual (FOLLOW with a master source; not STEPPERIO)"
+    evidence = "spec X-PULSE; v3:11133-11157; v4:15431, v4:3524-3527, v4:2436"
+    keywords = frozenset({"PULSE", "PULSEVEL", "TIMER", "WRAP"})
+    reason = "pulse-train input: use FOLLOW with MASTERSOURCE on an encoder input (not STEPPERIO)"
+
+
+class IncrementalMoves(ManualKeywords):
+    """v3 INCA/INCR change the end point of a running MOVEA/MOVER and read back a success flag;
+    v4 INCA/INCR are a move type of their own that starts from idle with GO."""
+
+    id = "X-INCA"
+    summary = "INCA, INCR -> manual (v4 INCA/INCR are their own move type; start the move as INCA/INCR)"
+    evidence = "spec X-INCA; v3:3200-3224, v3:9049; v4:12037-12053, v4:3142-3172, v4:4975"
+    keywords = frozenset({"INCA", "INCR"})
+    reason = "v4 cannot modify a running MOVEA/MOVER: start the move itself as INCA/INCR with GO"
+
+
+class ServoOnAgain(ManualKeywords):
+    """v3 SERVON returns the axis to where it was at SERVOFF; v4 needs the position saved
+    when the servo went off, then CANCEL and a MOVEA back."""
+
+    id = "X-SERVON"
+    summary = "SERVON -> manual (save POS at SERVOFF; CANCEL : MOVEA = saved : GO)"
+    evidence = "spec X-SERVON; v3:11757; v4:15899, v4:2770-2778"
+    keywords = frozenset({"SERVON"})
+    reason = "save POS where the servo went off, then CANCEL : MOVEA = saved : GO"
+
+
+class Trigger(ManualKeywords):
+    """v3 TRIGGER starts moves on an input; v4 has no equivalent apart from CAM triggers on the
+    fast latch: the move must move into an #INn handler."""
+
+    id = "X-TRIGGER"
+    summary = "TRIGGER -> manual (start the move from an #INn handler)"
+    evidence = "spec X-TRIGGER; v3:4184-4192, v3:12199-12214; v4:7613-7619"
+    keywords = frozenset({"TRIGGER"})
+    reason = "no v4 equivalent: start the triggered move from an #INn handler"
+
+
+class ExpansionBoards(ManualKeywords):
+    """The 24-bit I/O board and the 3-channel encoder board of v3 do not exist in v4: remote
+    I/O is on CAN, extra encoders are AUXENCODER channels."""
+
+    id = "X-IO-EXP"
+    summary = "XIO, XIO0..7, XOUT, XENCODER -> manual (CAN remote I/O, AUXENCODER)"
+    evidence = "spec X-IO-EXP; v4:6693-6720"
+    keywords = frozenset({"XIO", "XOUT", "XENCODER", *(f"XIO{i}" for i in range(8))})
+    reason = "expansion board not in Mint v4: use CAN remote I/O or AUXENCODER.channel"
+
+
+class Keypad(ManualKeywords):
+    """The bus keypad, LCD and status LED of v3 are gone; v4 keypads are CAN keypadNodes."""
+
+    id = "X-KEYPAD"
+    summary = "KEYS, READKEY, LED -> manual (CAN keypadNode, KEYPADNODE)"
+    evidence = "spec X-KEYPAD; v3:9408-9469, v3:2884-2898; v4:2077, v4:15447-15448"
+    keywords = frozenset({"KEYS", "READKEY", "LED"})
+    reason = "keypad/LED hardware is a CAN keypadNode in v4 (KEYPADNODE): redesign"
+
+
+class HostTransfer(ManualKeywords):
+    """Program/array upload, memory card, card select and MINT/3.28 host keywords have no v4
+    keyword: Mint WorkBench transfers data; PEEK/POKE address another memory."""
+
+    id = "X-HOST"
+    summary = "LOAD, SAVE, PEEK, POKE, PO, MP, VN, ZZ, $ -> manual (no v4 keyword)"
+    evidence = "spec X-HOST; v3:1937-1956; v4:1127-1129, v4:15066-15080, v4:2224"
+    keywords = frozenset({"LOAD", "SAVE", "PEEK", "POKE", "PO", "MP", "VN", "ZZ", "$"})
+    reason = "no Mint v4 keyword (Mint WorkBench transfers programs and arrays): remove or redesign"
+
+
+class AxisConfiguration(ManualKeywords):
+    """AXISCON bits map to different v4 features (bit 0 DECEL, 1 aux encoder hardware,
+    2 FOLERRORMODE, 3 POSTARGET)."""
+
+    id = "X-AXISCON"
+    summary = "AXISCON -> manual (bit by bit: DECEL, AUXENCODER, FOLERRORMODE, POSTARGET)"
+    evidence = "spec X-AXISCON; v3:6024-6031"
+    keywords = frozenset({"AXISCON"})
+    reason = "no v4 keyword: bit 0 is v4 behaviour, bit 2 is FOLERRORMODE, bit 3 reads POSTARGET"
+
+
+class AbsentFeatures(ManualKeywords):
+    """Commissioning and hardware features with a different v4 model (DAC monitor, data
+    capture, inverters, frequency output)."""
+
+    id = "X-MISC-ABSENT"
+    summary = "AUX, CAPTURE, DATETIME, DIR, FREQ, LOOPTIME -> manual"
+    evidence = "spec X-MISC-ABSENT, §8; v4:8084, v4:10931, v4:6171-6175"
+    keywords = frozenset({"AUX", "CAPTURE", "DATETIME", "DIR", "FREQ", "LOOPTIME"})
+    reasons: ClassVar[Mapping[str, str]] = {
+        "AUX": "no v4 keyword: the DAC monitor is DACMONITORAXIS/DACMONITORMODE (advanced)",
+        "CAPTURE": "v4 data capture is CAPTUREMODE and friends (advanced)",
+        "DATETIME": "no v4 keyword: capture duration is set with the v4 CAPTURE keywords (advanced)",
+        "DIR": "no v4 keyword (inverter direction); if a variable was meant, DIM it",
+        "FREQ": "FREQ is an advanced v4 feature with other units",
+        "LOOPTIME": "v4 LOOPTIME is in microseconds (advanced)",
+    }
+
+
+class EnableOutput(ManualKeywords):
+    """v3 ENABLE drives the common enable output; v4 has RELAY or per-axis DRIVEENABLE,
+    depending on the wiring."""
+
+    id = "X-ENABLE"
+    summary = "ENABLE -> manual (RELAY.0 or DRIVEENABLE[axes], as wired)"
+    evidence = "spec X-ENABLE; v3:7567, v3:11729; v4:9577, v4:9258-9305"
+    keywords = frozenset({"ENABLE"})
+    reason = "RELAY.0 if the relay is the enable signal, else DRIVEENABLE[axes]"
+
+
+class ErrorCodes(ManualKeywords):
+    """v3 ERR codes 0..15 have no 1:1 v4 counterpart (motion errors are ERR = 500 plus
+    AXISERROR bits)."""
+
+    id = "X-ERR"
+    summary = "ERR tests -> manual (v4: ERR = 500 for motion errors, AXISERROR bits)"
+    evidence = "spec X-ERR; v3:4918-4937; v4:18503-18893"
+    keywords = frozenset({"ERR"})
+    reason = "v3 error numbers differ: motion errors are ERR = 500 with AXISERROR bits in v4"
+
+
+class AnalogueUnits(ManualKeywords):
+    """ANALOGUEn became ADC.(n-1) in percent (-100..100) where v3 read 0..1023; the factor
+    depends on the input range jumper, so the arithmetic is left to the user: the spec's
+    semi-mechanical rewrite is implemented as a manual item carrying the formula."""
+
+    id = "S-ANALOG"
+    summary = "ANALOGUE1..3 -> manual with the formula ((ADC.n + 100) * 1023 / 200 for +-10 V)"
+    evidence = "spec S-ANALOG; v3:5748-5760, v3:2318; v4:6537, v4:6358-6363, v4:1785"
+    keywords = frozenset({"ANALOGUE1", "ANALOGUE2", "ANALOGUE3"})
+    reason = "use ADC.(n-1) in % : v3 value = (ADC.(n-1) + 100) * 1023 / 200 for +-10 V inputs"
+
+
+class DacUnits(ManualKeywords):
+    """DAC, AUXDAC and DEMAND moved to channel syntax and percent (v3: +-2047 counts); flagged
+    with the conversion rather than rewritten (the spec's S-DAC rewrite is not implemented)."""
+
+    id = "S-DAC"
+    summary = "DAC, AUXDAC, DEMAND -> manual with the formula (DAC.n = v * 100 / 2047)"
+    evidence = "spec S-DAC; v3:7110-7135, v3:5943; v4:8737-8752, v4:6680-6686, v4:9149"
+    keywords = frozenset({"DAC", "AUXDAC", "DEMAND"})
+    reason = "channel keyword in % in v4: DAC.n = v * 100 / 2047 (DEMAND reads DAC.n)"
+
+
+class ChangedMeaning(ManualKeywords):
+    """Keywords whose v4 form needs context this migrator does not compute yet (the spec's
+    S-IMASK, S-CAM, S-GEAR, S-MASTER, S-BINARY, S-BAUD, S-CARD and M-DISPLAY): each use is
+    flagged with the v4 form to write."""
+
+    id = "X-CHANGED"
+    summary = "IMASK, CAM, CAMA, GEARN, GEARD, FOLLOWAXIS, BINARY, BAUD, DISPLAY, CARD -> manual with the v4 form"
+    evidence = "spec S-IMASK, S-CAM, S-GEAR, S-MASTER, S-BINARY, S-BAUD, S-CARD, M-DISPLAY"
+    keywords = frozenset(
+        {
+            *("IMASK", "CAM", "CAMA", "GEARN", "GEARD", "FOLLOWAXIS", "BINARY", "BAUD", "DISPLAY", "CARD"),
+        }
+    )
+    reasons: ClassVar[Mapping[str, str]] = {
+        "IMASK": "v4 IMASK covers all inputs (default all ones): keep bits 8 and up set",
+        "CAM": "v4 cams need CAMTABLE(axis, positions, masters) and GO; modes are _cm bits",
+        "CAMA": "use CAM with _cmABSOLUTE after CAMTABLE, then GO",
+        "GEARN": "use FOLLOW (FOLLOWDENOM for the denominator, range -128..127)",
+        "GEARD": "use FOLLOWDENOM (1..128)",
+        "FOLLOWAXIS": "use MASTERSOURCE and MASTERCHANNEL (-2, the pulse timer, has no equivalent)",
+        "BINARY": "use PRINT BIN (no 8-bit zero padding in v4)",
+        "BAUD": "use SERIALBAUD._tmRS232 with a rate the controller supports",
+        "DISPLAY": "use VIEW VAR / VIEW ARRAY at the command line",
+        "CARD": "use NODE (the software node number, v4:14643) if a user name NODE does not clash",
+    }
+
+
+class OnError(Rule):
+    """Every #ONERROR needs review: v4 also calls it for interpreter errors (a ``RESET : RUN``
+    handler can loop), the default error actions may have disabled the drive, and CANCEL
+    does not re-enable it."""
+
+    id = "X-ONERROR"
+    rule_class = RuleClass.MANUAL
+    phase = Phase.MANUAL
+    summary = "#ONERROR -> manual review (interpreter errors too; drive may be disabled)"
+    evidence = "spec X-ONERROR; v3:4916; v4:4579-4619, v4:4743-4747, v4:6087-6088"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file in context.files.values():
+            for line in file.document.lines:
+                event = event_of(line.label.text) if line.label is not None else None
+                if event is not None and event.kind is EventKind.ONERROR:
+                    yield self.flag(
+                        file, line.span, "v4 also calls #ONERROR for program errors; drive may stay disabled"
+                    )
+
+
+class FastLatch(Rule):
+    """The fast-latch handler behaves differently in v4: the latch is held until the handler
+    returns, FASTPOS must be re-armed, and the fast input is chosen per controller."""
+
+    id = "X-FASTLATCH"
+    rule_class = RuleClass.MANUAL
+    phase = Phase.MANUAL
+    summary = "#FASTPOS/#FASTIN handler -> manual review (latch re-arming, FASTSELECT)"
+    evidence = "spec X-FASTLATCH; v3:5468, v3:7375; v4:4962-4963, v4:10444-10446, v4:5865-5888"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file in context.files.values():
+            for line in file.document.lines:
+                event = event_of(line.label.text, Dialect.V3) if line.label else None
+                v4_event = event_of(line.label.text) if line.label else None
+                if (event and event.kind is EventKind.FASTPOS) or (v4_event and v4_event.kind is EventKind.FASTIN):
+                    yield self.flag(file, line.span, "v4 holds the latch until the handler returns; check FASTSELECT")
+
+
+class InvalidInV3(Rule):
+    """A line that neither Mint v3 nor Mint v4 can read, or an unknown word used as a
+    statement (``COMMON``, ``RME``), was already broken in the v3 listing: it is reported,
+    not "fixed"."""
+
+    id = "X-COMMENTED"
+    rule_class = RuleClass.MANUAL
+    phase = Phase.MANUAL
+    summary = "line invalid in v3 already (misprint, unknown word) -> manual"
+    evidence = "spec X-COMMENTED"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file in context.files.values():
+            v4_lines = _error_lines(mintlang.parse(file.text, "v4").diagnostics, file)
+            for diagnostic in file.document.diagnostics:
+                line = file.line_number(diagnostic.span.start)
+                if diagnostic.severity is Severity.ERROR and line in v4_lines:
+                    yield self.flag(file, diagnostic.span, f"not valid Mint v3 either ({diagnostic.message})")
+        for file, _, statement in context.statements():
+            if isinstance(statement, n.BareName) and context.db.lookup(statement.name.text) is None:
+                yield self.flag(file, statement.span, f"'{statement.name.text}' is not a Mint keyword (misprint?)")
+        for unit, structure in context.model.structures.items():
+            for diagnostic in structure.diagnostics:
+                if diagnostic.severity is Severity.ERROR:
+                    yield self.flag(context.files[unit], diagnostic.span, f"blocks do not match: {diagnostic.message}")
+        for unit, labels in context.model.symbols.labels.items():
+            for label in labels.values():
+                for duplicate in label.definitions[1:]:
+                    yield self.flag(context.files[unit], duplicate.span, f"label #{label.name} is defined twice")
+                if not label.definitions:
+                    for jump in label.references:
+                        yield self.flag(context.files[unit], jump.span, f"label #{label.name} is not in this file")
+
+
+def _error_lines(diagnostics: tuple[mintlang.Diagnostic, ...], file: FileView) -> set[int]:
+    return {file.line_number(d.span.start) for d in diagnostics if d.severity is Severity.ERROR}
+
+
+class Platform(Rule):
+    """A keyword the target controller does not have (its "Controllers Supported" list), such
+    as AUTO on NextMove PCI."""
+
+    id = "X-PLATFORM"
+    rule_class = RuleClass.MANUAL
+    phase = Phase.MANUAL
+    summary = "keyword not available on the target controller -> manual"
+    evidence = "v4 chapter 10 'Controllers Supported' of each keyword (e.g. v4:6633 AUTO)"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file, statement, keyword, _ in keyword_nodes(context):
+            if keyword in context.db.keywords and not context.supports(keyword):
+                yield self.flag(file, statement.span, f"{keyword} is not available on {context.controller.title}")
+
+
+class LeftoverV3(Rule):
+    """Whatever is still Mint v3 after every other rule: a keyword v4 does not have (or
+    lists as replaced), a v3 constant whose v4 value differs. Nothing is left silently."""
+
+    id = "X-V3"
+    rule_class = RuleClass.MANUAL
+    phase = Phase.MANUAL
+    summary = "any Mint v3 keyword or constant no rule could rewrite -> manual"
+    evidence = "spec §1 step 7, §8, §11; v4 'replaced by' entries"
+    covered: ClassVar[frozenset[str]] = frozenset().union(*(rule.keywords for rule in ManualKeywords.__subclasses__()))
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        db = context.db
+        for file, statement, keyword, _ in keyword_nodes(context):
+            if keyword in self.covered or _flagged(file, statement):
+                continue
+            if db.lookup(keyword) is None or db.rename_of(keyword) is not None:
+                yield self.flag(file, statement.span, f"{keyword} is Mint v3 only: no automatic rewrite")
+        same = same_value_constants(context)
+        for file, _, statement in context.statements():
+            if _flagged(file, statement):
+                continue
+            for root in n.expressions_of(statement):
+                for node in n.walk_expression(root):
+                    if isinstance(node, n.ConstantRef) and node.name in db.v3_constants and node.name not in same:
+                        yield self.flag(file, statement.span, f"{node.name.lower()} has another value in v4")
+
+
+def _flagged(file: FileView, statement: n.Statement) -> bool:
+    """Whether an earlier rule already put a manual item on the statement's line."""
+    return next(file.lines_above(statement.span.start), "").upper().startswith(MARKER)

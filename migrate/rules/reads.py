@@ -1,0 +1,135 @@
+"""Reads whose meaning moved to another keyword, and MODE/ERROR tests that became bit tests."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from types import MappingProxyType
+
+from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.base import Action, Rule, selector_text
+from mintlang.migrate.rules.spelling import like
+from mintlang.semantic.index import Use
+from mintlang.syntax import nodes as n
+
+# v3 keyword read -> v4 keyword giving the same value.
+READ_RENAMES: Mapping[str, str] = MappingProxyType(
+    {"MOVEA": "POSTARGET", "MOVER": "POSTARGET", "OFFSET": "POSREMAINING", "HOME": "HOMESWITCH"}
+)
+
+
+class ReadRenames(Rule):
+    """Reading MOVEA/MOVER gave the move's end position (v4: POSTARGET, MOVEA is write-only),
+    reading OFFSET the distance left (POSREMAINING), HOME the home switch (HOMESWITCH: v4
+    HOME reads the homing phase). Reading INCA/INCR (success
+    flag) or CAM (segment size) has no v4 counterpart: manual item."""
+
+    id = "S-READ"
+    rule_class = RuleClass.SEMI
+    phase = Phase.CONTEXT
+    summary = "read of MOVEA/MOVER -> POSTARGET, OFFSET -> POSREMAINING, HOME -> HOMESWITCH"
+    evidence = "spec S-READ; v3:3185-3186, v3:10415-10433, v3:3509; v4:14507, v4:14517, v4:3129-3141, v4:11454"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file, use in context.keyword_uses(*READ_RENAMES, "INCA", "INCR", "CAM"):
+            keyword = use.keyword
+            if use.use is not Use.READ:
+                continue
+            new = READ_RENAMES.get(keyword.keyword)
+            if new is None:
+                yield self.flag(file, keyword.span, f"reading {keyword.keyword} has no v4 counterpart")
+            elif context.supports(new):
+                yield self.replace(file, keyword.spelling_span, like(keyword.spelling, new))
+            else:
+                yield self.flag(file, keyword.span, f"reading {keyword.keyword}: {new} is not on this controller")
+
+
+# v3 MODE value -> v4 AXISMODE bit (v3:10040-10061 vs v4:7139-7171); 0 means idle.
+MODE_BITS: Mapping[int, str] = MappingProxyType(
+    {
+        1: "_mdTORQUE",  # _servoff: SERVOFF is TORQUE = 0 after S-SERVOFF
+        2: "_mdLINEAR",
+        3: "_mdJOG",
+        4: "_mdCIRCULAR",
+        6: "_mdTORQUE",
+        7: "_mdHOMING",
+        8: "_mdOFFSET",
+        9: "_mdFOLLOW",
+        15: "_mdFLY",
+        16: "_mdCAM",
+        18: "_mdFOLLOW",
+    }
+)
+# v3 ERROR value -> v4 AXISERROR bits (v3:4995-5010 vs v4:6967-7081).
+ERROR_BITS: Mapping[int, str] = MappingProxyType(
+    {1: "_erABORT", 2: "_erFOLLOWING_ERROR", 3: "(_erFWD_HARD_LIMIT | _erREV_HARD_LIMIT)", 11: "_erERROR_INPUT"}
+)
+
+
+class BitTest(Rule):
+    """Base of S-MODE and S-ERROR: ``KW[.n] = k`` and ``KW[.n] <> k`` become bit tests of
+    the v4 keyword; any other use of the v3 value is flagged."""
+
+    phase = Phase.CONTEXT
+    rule_class = RuleClass.SEMI
+    keyword: str
+    target: str
+    bits: Mapping[int, str]
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file, use in context.keyword_uses(self.keyword):
+            parent = context.parents(use.statement).get(id(use.keyword)) if use.use is Use.READ else None
+            value = self._compared_value(context, use.keyword, parent)
+            if value is None or (value != 0 and value not in self.bits):
+                yield self.flag(file, use.keyword.span, self.refusal)
+                continue
+            assert isinstance(parent, n.Binary)
+            yield self.replace(file, parent.span, self._test(file, use.keyword, parent.operator, value))
+
+    def _compared_value(self, context: Context, keyword: n.KeywordRef, parent: n.Expression | None) -> int | None:
+        if not isinstance(parent, n.Binary) or parent.operator not in ("=", "<>"):
+            return None
+        other = parent.right if parent.left is keyword else parent.left
+        constants = context.db.v3_constants
+        if isinstance(other, n.Number) and other.value == int(other.value):
+            return int(other.value)
+        if isinstance(other, n.ConstantRef) and other.name in constants:
+            return int(constants[other.name].value)
+        return None
+
+    def _test(self, file: FileView, keyword: n.KeywordRef, operator: str, value: int) -> str:
+        read = like(keyword.spelling, self.target) + selector_text(file, keyword)
+        if value == 0:
+            return f"{read} {operator} 0"
+        test = f"({read} & {self.bits[value]})"
+        return test if operator == "=" else f"{test} = 0"
+
+    @property
+    def refusal(self) -> str:
+        return f"{self.keyword} was a value, {self.target} is a bit pattern: rewrite this use as a bit test"
+
+
+class ModeTest(BitTest):
+    """v3 MODE returned one mode number; v4 AXISMODE is a bit pattern, so ``MODE = _jog``
+    becomes ``(AXISMODE & _mdJOG)``. Modes with no v4 bit (5 pulse following, 11, 17),
+    order comparisons and arithmetic on MODE are flagged."""
+
+    id = "S-MODE"
+    summary = "MODE[.n] = k / <> k -> (AXISMODE[.n] & _mdX) / ... = 0; MODE = 0 -> AXISMODE = 0"
+    evidence = "spec S-MODE; v3:10040-10061; v4:14045, v4:7094-7176"
+    keyword = "MODE"
+    target = "AXISMODE"
+    bits = MODE_BITS
+
+
+class ErrorTest(BitTest):
+    """v3 ERROR returned one error number; v4 AXISERROR is a bit pattern ("Note the use of the
+    error constants as bits and not values"). _limit is both hard-limit bits, spelled out
+    because the v4 text swaps the names of the combined constants."""
+
+    id = "S-ERROR"
+    summary = "ERROR[.n] = _limit/_maxfe/_abort/_external -> (AXISERROR[.n] & <bits>); ERROR = 0 -> AXISERROR = 0"
+    evidence = "spec S-ERROR; v3:4995-5010; v4:9962, v4:6967-7081, v4:7035-7037"
+    keyword = "ERROR"
+    target = "AXISERROR"
+    bits = ERROR_BITS

@@ -1,0 +1,182 @@
+"""Renames: keywords, event labels, constants and user names whose meaning did not change.
+
+Only words are replaced here, never the statement around them, so every
+rename is a one-token edit and the rest of the line is copied as written.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from types import MappingProxyType
+
+from mintlang.diagnostics import Span
+from mintlang.dialect import Dialect
+from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.base import Action, Rule
+from mintlang.migrate.rules.spelling import like
+from mintlang.migrate.rules.vocabulary import is_reserved_user_name, unique_rename
+from mintlang.semantic.events import EventKind, event_of
+from mintlang.semantic.symbols import Symbol
+from mintlang.semantic.units import Unit
+from mintlang.syntax import nodes as n
+
+# v3 name -> (v4 name, the v4 guide's "replaced by" line). Values keep their meaning
+# (STOPMODE 1/2: v3:11920-11929 = v4:16489-16504); gains and defaults differ (X-UNITS, S-DEFAULTS).
+KEYWORD_RENAMES: Mapping[str, tuple[str, int]] = MappingProxyType(
+    {
+        "BACKOFF": ("HOMEBACKOFF", 7312),
+        "HMSPEED": ("HOMESPEED", 11357),
+        "GAIN": ("KPROP", 10945),
+        "KINTRANGE": ("KINTLIMIT", 12909),
+        "MASTERINC": ("MASTERDISTANCE", 13893),
+        "FOLERR": ("FOLERROR", 10584),
+        "STOPSW": ("STOPSWITCH", 16544),
+        "STOPMODE": ("STOPINPUTMODE", 16539),
+        "MFOLERR": ("FOLERRORFATAL", 14002),
+    }
+)
+
+
+class RenameKeywords(Rule):
+    """A v3 keyword the v4 guide says was "replaced by" another name, with the same values.
+
+    Refused (manual item) when the target controller lacks the new keyword.
+    """
+
+    id = "M-REN"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.RENAMES
+    summary = "BACKOFF HMSPEED GAIN KINTRANGE MASTERINC FOLERR STOPSW STOPMODE MFOLERR -> their v4 names"
+    evidence = "spec M-REN; v4:7312, 11357, 10945, 12909, 13893, 10584, 16544, 16539, 14002"
+    writes = frozenset(new for new, _ in KEYWORD_RENAMES.values())
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file, use in context.keyword_uses(*KEYWORD_RENAMES):
+            new, line = KEYWORD_RENAMES[use.keyword.keyword]
+            if context.supports(new):
+                yield self.replace(file, use.keyword.spelling_span, like(use.keyword.spelling, new))
+            else:
+                yield self.flag(
+                    file,
+                    use.keyword.span,
+                    f"{use.keyword.keyword} became {new} (v4:{line}), which {context.controller.title} does not have",
+                )
+
+
+class RenameFastPos(Rule):
+    """``#FASTPOS`` becomes ``#FASTIN``: v3 has one fast latch input, and v4 calls the
+    generic #FASTIN for any fast input (defining #FASTIN0 as well would be error 3006)."""
+
+    id = "M-FASTPOS"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.RENAMES
+    summary = "#FASTPOS handler -> #FASTIN"
+    evidence = "spec M-FASTPOS; v4:5910, v4:4955, v4:19108"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file in context.files.values():
+            for line in file.document.lines:
+                label = line.label
+                if label is not None and label.text.upper() == "FASTPOS":
+                    yield self.replace(file, _label_name_span(label), like(label.text, "FASTIN"))
+
+
+class RenameConstants(Rule):
+    """A v3 constant whose v4 counterpart has the same value (``_servo`` → ``_cfSERVO``,
+    ``_neg`` → ``_hmNEGATIVE_SWITCH``).
+
+    Constants whose value changed (MODE, ERROR and TERM constants became bit
+    values) are left to the rules that understand their context (S-MODE,
+    S-ERROR, S-TERM); the final pass flags any left over.
+    """
+
+    id = "M-CONST"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.RENAMES
+    summary = "v3 constant -> v4 constant of equal value (_servo -> _cfSERVO, _pos -> _hmPOSITIVE_SWITCH ...)"
+    evidence = "spec M-CONST, v3-language §2.6; v3:1309-1336; values checked against the v4 constant table"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        renames = same_value_constants(context)
+        for file, _, statement in context.statements():
+            for root in n.expressions_of(statement):
+                for node in n.walk_expression(root):
+                    if isinstance(node, n.ConstantRef) and node.name in renames:
+                        written = file.slice(node.span)
+                        if written.upper() != renames[node.name].upper():
+                            yield self.replace(file, node.span, renames[node.name])
+
+
+def same_value_constants(context: Context) -> dict[str, str]:
+    """Upper-case v3 constant -> v4 name, for the constants whose value is the same in v4."""
+    found = {}
+    for name, constant in context.db.v3_constants.items():
+        v4 = context.db.constants.get((constant.v4_name or "").upper())
+        if v4 is not None and v4.value == constant.value:
+            found[name] = v4.name
+    return found
+
+
+class RenameEventLabels(Rule):
+    """A user label that v4 would call as an event handler (``#TIMER``, ``#CAN1``,
+    ``#COMMS3``, ``#FASTIN2`` ...) is renamed, with every GOSUB/GOTO to it.
+
+    ``#FASTIN`` itself is what M-FASTPOS writes, so it is taken as that handler.
+    """
+
+    id = "M-LABEL"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.RENAMES
+    summary = "user label named like a v4 event (#TIMER, #CANn, #COMMSn, #FASTINn) -> renamed with its jumps"
+    evidence = "spec M-LABEL; v4:1884-1900"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for labels in context.model.symbols.labels.values():
+            taken = set(labels)
+            for symbol in labels.values():
+                event = event_of(symbol.identity, Dialect.V4)
+                if event is None or event_of(symbol.identity, Dialect.V3) is not None:
+                    continue
+                if event.kind is EventKind.FASTIN and event.number is None:
+                    continue
+                yield from _rename_symbol(self, context.files, symbol, taken)
+
+
+class RenameReservedNames(Rule):
+    """A user variable or array named like a v4 keyword or abbreviation (``node``, ``view``,
+    ``kp``) is renamed everywhere: v4 reserves those words (error 2006).
+
+    The new name keeps the ten significant characters unique. Names the migrator
+    itself writes as v4 keywords (KPROP, AXISMODE ...) are not user names.
+    """
+
+    id = "M-IDENT"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.RENAMES
+    summary = "user variable named like a v4 keyword/abbreviation (node, view, kp ...) -> renamed everywhere"
+    evidence = "spec M-IDENT; v4:882-890, v4:18940-18943 (#2006)"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        variables = context.model.symbols.variables
+        taken = set(variables)
+        for symbol in variables.values():
+            if is_reserved_user_name(symbol.name):
+                yield from _rename_symbol(self, context.files, symbol, taken)
+
+
+def _rename_symbol(rule: Rule, files: Mapping[Unit, FileView], symbol: Symbol, taken: set[str]) -> Iterator[Action]:
+    """Every occurrence of ``symbol`` renamed alike: its first characters, then a suffix."""
+    keep, suffix = unique_rename(symbol.name, taken)
+    taken.add(n.identity(symbol.name[:keep] + suffix))
+    for occurrence in symbol.occurrences():
+        file = files[occurrence.unit]
+        span = occurrence.span
+        if file.text.startswith("#", span.start):  # a label definition: keep the #
+            span = Span(span.start + 1, span.end)
+        yield rule.replace(file, span, file.slice(span)[:keep] + suffix)
+
+
+def _label_name_span(label: n.Name) -> Span:
+    """A label definition's span includes its ``#``; this is the name after it."""
+    return Span(label.span.start + 1, label.span.end)

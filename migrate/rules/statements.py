@@ -1,0 +1,214 @@
+"""Statement rewrites: a v3 command or write becomes the v4 statement(s) that do the same.
+
+Each rule rewrites whole statements it can prove equivalent and flags the rest;
+the statement's selector (``[0,1]``, ``.1``) and values are copied as written.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import ClassVar
+
+from mintlang.diagnostics import Span
+from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.base import Action, Rule, selector_text
+from mintlang.migrate.rules.spelling import like
+from mintlang.syntax import nodes as n
+
+
+class Refusal(str):
+    """Why a rule cannot rewrite a statement: the text of the manual item."""
+
+
+class StatementRule(Rule):
+    """A rule over the statements of some v3 keywords: ``rewrite`` gives the new text or a refusal."""
+
+    keywords: ClassVar[frozenset[str]]
+    phase = Phase.CONTEXT
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file, _, statement in context.statements():
+            if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in self.keywords:
+                result = self.rewrite(context, file, statement)
+                if isinstance(result, Refusal):
+                    yield self.flag(file, statement.span, result)
+                elif result is not None:
+                    yield self.replace(file, statement.span, result)
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        raise NotImplementedError
+
+    @staticmethod
+    def unsupported(context: Context, keyword: str) -> Refusal | None:
+        if context.supports(keyword):
+            return None
+        return Refusal(f"{keyword} is not available on {context.controller.title}")
+
+
+def fill(selector: str) -> str:
+    """``;`` fills every axis of a bracket or default list; a dot names one axis."""
+    return "" if selector.startswith(".") else ";"
+
+
+def write(file: FileView, statement: n.KeywordStatement, keyword: str, value: str) -> str:
+    """``KEYWORD<selector> = value`` with the statement's own selector, filling its axes."""
+    selector = selector_text(file, statement.keyword)
+    return f"{like(statement.keyword.spelling, keyword)}{selector} = {value}{fill(selector)}"
+
+
+class Zero(StatementRule):
+    """``ZERO[axes]`` becomes ``POS[axes] = 0;``: the v4 guide says ZERO was replaced by POS,
+    and the trailing ``;`` zeroes every listed (or default) axis as ZERO did."""
+
+    id = "M-ZERO"
+    rule_class = RuleClass.MECHANICAL
+    summary = "ZERO[axes] -> POS[axes] = 0;"
+    evidence = "spec M-ZERO; v4:17428; v3:1109"
+    keywords = frozenset({"ZERO"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        return write(file, statement, "POS", "0")
+
+
+class Boost(StatementRule):
+    """``BOOSTON``/``BOOSTOFF`` become ``BOOST[axes] = 1;``/``= 0;`` (BOOST exists on NextMove PC only)."""
+
+    id = "M-BOOST"
+    rule_class = RuleClass.MECHANICAL
+    summary = "BOOSTON[axes]/BOOSTOFF[axes] -> BOOST[axes] = 1;/0;"
+    evidence = "spec M-BOOST; v4:7425-7461; v3:6293"
+    keywords = frozenset({"BOOSTON", "BOOSTOFF"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        return self.unsupported(context, "BOOST") or write(
+            file, statement, "BOOST", "1" if statement.keyword.keyword == "BOOSTON" else "0"
+        )
+
+
+class NotAvailable(StatementRule):
+    """COMMSON/COMMSOFF (v4 decodes comms packets by itself) and BEEPON/BEEPOFF (no keypad
+    key-click) have no v4 statement: the statement becomes a REM saying so. A statement that
+    shares its line with others is flagged instead, so that nothing after it is commented out."""
+
+    id = "M-NOTAVAIL"
+    rule_class = RuleClass.MECHANICAL
+    summary = "COMMSON, COMMSOFF, BEEPON, BEEPOFF -> REM line stating they are not available in v4"
+    evidence = "spec M-NOTAVAIL; v4:8379-8387, v4:2299-2302, v4:7392-7397"
+    keywords = frozenset({"COMMSON", "COMMSOFF", "BEEPON", "BEEPOFF"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        word = statement.keyword.keyword
+        line = 8379 if word.startswith("COMMS") else 7392
+        if not file.statement_alone(statement):
+            return Refusal(f"{word} is not available in Mint v4 (v4:{line}): delete it")
+        return f"REM {file.slice(statement.span)}: not available in Mint v4 (v4:{line}), removed by mint-migrate"
+
+
+class Contouring(StatementRule):
+    """``CONTON``/``CONTOFF`` become ``CONTOURMODE[0,1,2] = 1;``/``= 0;``: v3 contouring is
+    card-wide ("all three axes"), v4 sets it per axis; CONTOURMODE is NextMove only."""
+
+    id = "S-CONT"
+    rule_class = RuleClass.SEMI
+    summary = "CONTON/CONTOFF -> CONTOURMODE[0,1,2] = 1;/0; (NextMove only)"
+    evidence = "spec S-CONT; v3:7033; v4:8505, v4:8510, v4:8567, v4:8571-8575"
+    keywords = frozenset({"CONTON", "CONTOFF"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        value = "1" if statement.keyword.keyword == "CONTON" else "0"
+        selector = selector_text(file, statement.keyword) or "[0,1,2]"
+        keyword = like(statement.keyword.spelling, "CONTOURMODE")
+        return self.unsupported(context, "CONTOURMODE") or f"{keyword}{selector} = {value}{fill(selector)}"
+
+
+class ServoOff(StatementRule):
+    """``SERVOFF[axes]`` becomes ``TORQUE[axes] = 0;``: the v4 guide replaces SERVOFF by TORQUE
+    and uses ``TQ.0 = 0`` to let a shaft be turned by hand; v3 SERVOFF kept the amplifier
+    enabled with zero demand, which is what TORQUE = 0 does on a current-mode amplifier."""
+
+    id = "S-SERVOFF"
+    rule_class = RuleClass.SEMI
+    summary = "SERVOFF[axes] -> TORQUE[axes] = 0;"
+    evidence = "spec S-SERVOFF; v3:11722; v4:15892, v4:2748-2767"
+    keywords = frozenset({"SERVOFF"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        return self.unsupported(context, "TORQUE") or write(file, statement, "TORQUE", "0")
+
+
+class ServoOn(StatementRule):
+    """``SERVOC[axes]`` becomes ``CANCEL[axes]``, which "starts the axis servoing in its
+    current position but retains all positional data"."""
+
+    id = "S-SERVOC"
+    rule_class = RuleClass.SEMI
+    summary = "SERVOC[axes] -> CANCEL[axes]"
+    evidence = "spec S-SERVOC; v4:15887, v4:2764-2767"
+    keywords = frozenset({"SERVOC"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        return f"{like(statement.keyword.spelling, 'CANCEL')}{selector_text(file, statement.keyword)}"
+
+
+class Limits(StatementRule):
+    """``DISLIMIT[axes]`` becomes ``LIMITMODE[axes] = 0; : CANCEL[axes]`` (v3 DISLIMIT also
+    cancelled the limit error) and ``ENLIMIT[axes]`` becomes ``LIMITMODE[axes] = 1;``."""
+
+    id = "S-LIMIT"
+    rule_class = RuleClass.SEMI
+    summary = "DISLIMIT -> LIMITMODE[axes] = 0; : CANCEL[axes]; ENLIMIT -> LIMITMODE[axes] = 1;"
+    evidence = "spec S-LIMIT; v3:7453; v4:9239, v4:9863, v4:13478-13497"
+    keywords = frozenset({"DISLIMIT", "ENLIMIT"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        if statement.keyword.keyword == "ENLIMIT":
+            return write(file, statement, "LIMITMODE", "1")
+        cancel = like(statement.keyword.spelling, "CANCEL") + selector_text(file, statement.keyword)
+        return f"{write(file, statement, 'LIMITMODE', '0')} : {cancel}"
+
+
+class Interrupts(StatementRule):
+    """``DINT``/``EINT`` disable/enable the #INn and #FASTPOS handlers: in v4 that is the
+    fast-latch and digital-input bits of EVENTDISABLE (NextMove bits 5 and 7) or of
+    HANDLERDISABLE (MintDrive bits 1 and 6). Pending flags stay set in both versions."""
+
+    id = "S-INT"
+    rule_class = RuleClass.SEMI
+    summary = "DINT/EINT -> EVENTDISABLE = EVENTDISABLE | 0xA0 / & 0x15F (MintDrive: HANDLERDISABLE 0x42)"
+    evidence = "spec S-INT; v3:2554, v3:7375; v4:9229, v4:9572, v4:4358-4367, v4:10140-10162, v4:4530-4539"
+    keywords = frozenset({"DINT", "EINT"})
+    masks: ClassVar[dict[str, tuple[int, int]]] = {"EVENTDISABLE": (0xA0, 0x1FF), "HANDLERDISABLE": (0x42, 0x1FF)}
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        for keyword, (bits, width) in self.masks.items():
+            if context.supports(keyword):
+                word = like(statement.keyword.spelling, keyword)
+                if statement.keyword.keyword == "DINT":
+                    return f"{word} = {word} | 0x{bits:X}"
+                return f"{word} = {word} & 0x{width & ~bits:X}"
+        return Refusal(f"{context.controller.title} has neither EVENTDISABLE nor HANDLERDISABLE")
+
+
+class DropOffline(Rule):
+    """``DIM OFFLINE name(n)`` kept an array on the v3 memory card; v4 has no memory card,
+    so the word OFFLINE is dropped and the array lives in ordinary memory."""
+
+    id = "M-OFFLINE"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.CONTEXT
+    summary = "DIM OFFLINE name(n) -> DIM name(n)"
+    evidence = "spec §11 (OFFLINE: drop from DIM OFFLINE), X-HOST; v3:1588"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file, _, statement in context.statements():
+            if isinstance(statement, n.Dim) and statement.modifier is not None:
+                for token in file.document.tokens:
+                    if (
+                        statement.span.start <= token.start < statement.name.span.start
+                        and token.text.upper() == "OFFLINE"
+                    ):
+                        end = token.end
+                        while end < statement.name.span.start and file.text[end] in " \t":
+                            end += 1
+                        yield self.replace(file, Span(token.start, end), "")

@@ -1,0 +1,42 @@
+"""Which words are v4 keywords, which of them the migrator writes, and safe new user names."""
+
+from __future__ import annotations
+
+from mintlang.keyworddb import database
+from mintlang.syntax.nodes import SIGNIFICANT_CHARACTERS, identity
+
+# v4 keywords the rules write that the v3 reader takes for user names (v3's predefined
+# comms array is v4's COMMS keyword, v3:13204, v4:8289). Kept explicit and short: a v3
+# variable with one of these names cannot be told from the migrator's own output, so it
+# is not renamed (the v4 check then reports it); every other v4 word is renamed.
+_WRITTEN = frozenset(
+    {
+        *("KPROP", "HOMEBACKOFF", "HOMESPEED", "KINTLIMIT", "MASTERDISTANCE", "FOLERROR", "STOPSWITCH"),
+        *("STOPINPUTMODE", "FOLERRORFATAL", "POSTARGET", "POSREMAINING", "HOMESWITCH", "IDLEPOS"),
+        *("DACLIMITMAX", "CURRENTLIMIT", "SRAMP", "TERMINAL", "CONTOURMODE", "LIMITMODE", "EVENTDISABLE"),
+        *("HANDLERDISABLE", "AXISMODE", "AXISERROR", "BOOST", "DRIVEENABLE", "INPUTMODE", "INPUTNEGTRIGGER"),
+        *("DECELTIME", "COMMS", "ENCODERWRAP", "FASTENCODER", "ENCODERPRESCALE", "ERRORINPUT"),
+    }
+)
+
+
+def migrator_words() -> frozenset[str]:
+    """v4 keywords the migrator may write (see ``_WRITTEN``)."""
+    return _WRITTEN
+
+
+def is_reserved_user_name(name: str) -> bool:
+    """Whether a user name is a v4 keyword, abbreviation or glued-channel form (v4 error 2006)."""
+    upper = name.upper()
+    return not upper.startswith("_") and database().lookup(upper) is not None and upper not in migrator_words()
+
+
+def unique_rename(name: str, taken: set[str]) -> tuple[int, str]:
+    """How to rename ``name``: keep its first ``n`` characters and add a suffix, so that the
+    new ten-character identity is neither taken nor a v4 word."""
+    for suffix in ("_u", *(f"_u{i}" for i in range(2, 100))):
+        keep = min(len(name), SIGNIFICANT_CHARACTERS - len(suffix))
+        candidate = name[:keep] + suffix
+        if identity(candidate) not in taken and database().lookup(candidate) is None:
+            return keep, suffix
+    raise ValueError(f"no free name for {name}")  # pragma: no cover - 98 suffixes cannot all be taken

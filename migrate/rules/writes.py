@@ -1,0 +1,344 @@
+"""Rewrites of keyword writes whose values, companions or target keyword changed in v4."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import ClassVar
+
+from mintlang.diagnostics import Span
+from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.axes import default_axes, selector_axes
+from mintlang.migrate.rules.base import Action, Rule, selector_text, values_text
+from mintlang.migrate.rules.spelling import like
+from mintlang.migrate.rules.statements import Refusal, StatementRule
+from mintlang.syntax import nodes as n
+
+
+def followers(context: Context) -> dict[int, n.Statement]:
+    """``id(statement) -> the statement written right after it on the same line``."""
+    found: dict[int, n.Statement] = {}
+    previous: tuple[n.Line, n.Statement] | None = None
+    for _, line, statement in context.statements():
+        if previous is not None and previous[0] is line:
+            found[id(previous[1])] = statement
+        previous = (line, statement)
+    return found
+
+
+def _writes(statement: n.Statement | None, keyword: str) -> n.KeywordStatement | None:
+    if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == keyword:
+        return statement
+    return None
+
+
+class AccelAlsoDecel(Rule):
+    """In v3 writing ACCEL (ACCELTIME) also set DECEL unless AXISCON bit 0 was set, and a DECEL
+    write had no effect without that bit; in v4 the two are independent. So every ACCEL
+    write gets ``: DECEL<axes> = <same values>`` after it (unless a DECEL of the same axes
+    already follows it on the line), and any other DECEL write is flagged. A program that
+    touches AXISCON is left to the user."""
+
+    id = "S-ACCEL"
+    rule_class = RuleClass.SEMI
+    phase = Phase.CONTEXT
+    summary = "ACCEL[axes] = v -> ACCEL[axes] = v : DECEL[axes] = v (ACCELTIME likewise with DECELTIME)"
+    evidence = "spec S-ACCEL; v3:5662, v3:5728, v3:7203; v4:6178, v4:8900, v4:244"
+    pairs: ClassVar[dict[str, str]] = {"ACCEL": "DECEL", "ACCELTIME": "DECELTIME"}
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        axiscon = next(iter(context.keyword_uses("AXISCON")), None) is not None
+        after = followers(context)
+        companions: set[int] = set()
+        for file, _, statement in context.statements():
+            accel = _writes(statement, "ACCEL") or _writes(statement, "ACCELTIME")
+            if accel is None:
+                continue
+            decel = self.pairs[accel.keyword.keyword]
+            if axiscon:
+                yield self.flag(file, accel.span, f"AXISCON is used: decide whether {decel} must follow this write")
+                continue
+            companion = _writes(after.get(id(accel)), decel)
+            if companion is not None and _same_axes(file, accel, companion):
+                companions.add(id(companion))
+                continue
+            text = f" : {like(accel.keyword.spelling, decel)}{selector_text(file, accel.keyword)} = "
+            yield self.replace(file, Span(accel.span.end, accel.span.end), text + values_text(file, accel))
+        for file, _, statement in context.statements():
+            decel = _writes(statement, "DECEL") or _writes(statement, "DECELTIME")
+            if decel is not None and decel.values is not None and id(decel) not in companions and not axiscon:
+                yield self.flag(
+                    file, decel.span, f"v3 ignored {decel.keyword.keyword} unless AXISCON bit 0 was set; v4 obeys it"
+                )
+
+
+def _same_axes(file: FileView, first: n.KeywordStatement, second: n.KeywordStatement) -> bool:
+    return selector_text(file, first.keyword) == selector_text(file, second.keyword)
+
+
+class IdleWindow(StatementRule):
+    """Writing ``IDLE`` set v3's idle following-error window; v4 IDLE is read-only and the
+    window is IDLEPOS. Writing ``VEL`` (idle velocity in counts per servo cycle) has a unit
+    change as well (IDLEVEL), so it is flagged."""
+
+    id = "S-WRITE"
+    rule_class = RuleClass.SEMI
+    summary = "IDLE[axes] = v -> IDLEPOS[axes] = v; VEL[axes] = v -> manual (IDLEVEL, other units)"
+    evidence = "spec S-WRITE; v3:8762-8780, v3:12480-12488; v4:11738, v4:11747-11748, v4:3046-3050"
+    keywords = frozenset({"IDLE", "VEL"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        if statement.values is None:
+            return None
+        if statement.keyword.keyword == "VEL":
+            return Refusal("VEL written: v4 IDLEVEL takes the idle velocity in other units (v4:3046)")
+        keyword = statement.keyword
+        rest = file.slice(Span(keyword.spelling_span.end, statement.span.end))
+        return self.unsupported(context, "IDLEPOS") or like(keyword.spelling, "IDLEPOS") + rest
+
+
+class CurrentLimit(StatementRule):
+    """``CURRLIMIT`` is DACLIMITMAX on NextMove (one write per DAC channel: channel keywords
+    take dot syntax only) and CURRENTLIMIT on MintDrive; both are percentages as in v3."""
+
+    id = "S-CURR"
+    rule_class = RuleClass.SEMI
+    summary = "CURRLIMIT[axes] = v -> DACLIMITMAX.n = v per axis (NextMove) / CURRENTLIMIT = v (MintDrive)"
+    evidence = "spec S-CURR; v4:8712, v4:444-445, v4:9015-9016"
+    keywords = frozenset({"CURRLIMIT"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        if statement.values is None:
+            return Refusal("CURRLIMIT read: DACLIMITMAX (NextMove) or CURRENTLIMIT (MintDrive) in v4")
+        if context.supports("DACLIMITMAX"):
+            return per_channel(context, file, statement, "DACLIMITMAX")
+        if context.supports("CURRENTLIMIT"):
+            keyword = like(statement.keyword.spelling, "CURRENTLIMIT")
+            return f"{keyword}{selector_text(file, statement.keyword)} = {values_text(file, statement)}"
+        return Refusal(f"{context.controller.title} has no current limit keyword")
+
+
+def per_channel(context: Context, file: FileView, statement: n.KeywordStatement, keyword: str) -> str | Refusal:
+    """A multi-axis write as one dot-syntax write per channel (channel keywords address one)."""
+    axes = selector_axes(statement.keyword)
+    if axes is None and statement.keyword.selector is None and statement.keyword.channel is None:
+        axes = default_axes(context, file, statement.span.start)
+    if axes is None or statement.values is None:
+        return Refusal(f"{keyword} takes one channel per write and the axes here are not constant")
+    values = list(statement.values)
+    if statement.fill and values:
+        values += [values[-1]] * (len(axes) - len(values))
+    writes = [
+        f"{like(statement.keyword.spelling, keyword)}.{axis} = {file.slice(value.span)}"
+        for axis, value in zip(axes, values, strict=False)
+        if value is not None
+    ]
+    return " : ".join(writes) if writes else Refusal(f"{keyword}: no value to write")
+
+
+class Ramp(StatementRule):
+    """``RAMP`` (S-ramp 0..10) became ``SRAMP`` (0..100): the value is multiplied by 10."""
+
+    id = "S-RAMP"
+    rule_class = RuleClass.SEMI
+    summary = "RAMP[axes] = v -> SRAMP[axes] = v * 10"
+    evidence = "spec S-RAMP; v3:11212; v4:15444, v4:2837-2839"
+    keywords = frozenset({"RAMP"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        if statement.values is None or any(value is None for value in statement.values):
+            return Refusal("RAMP read or written with skipped places: SRAMP ranges 0..100 where RAMP ranged 0..10")
+        values = ", ".join(_times_ten(file, value) for value in statement.values if value is not None)
+        selector = selector_text(file, statement.keyword)
+        fill = ";" if statement.fill else ""
+        return self.unsupported(context, "SRAMP") or (
+            f"{like(statement.keyword.spelling, 'SRAMP')}{selector} = {values}{fill}"
+        )
+
+
+def _times_ten(file: FileView, value: n.Expression) -> str:
+    if isinstance(value, n.Number):
+        return f"{value.value * 10:g}"
+    text = file.slice(value.span)
+    return f"{text} * 10" if isinstance(value, n.VariableRef | n.KeywordRef | n.Parenthesised) else f"({text}) * 10"
+
+
+class IntegerScale(Rule):
+    """v3 SCALE takes integers and truncates a fraction; NextMove v4 accepts fractional SCALE.
+    A value that is not an integer literal (or already INT(...)) is wrapped in ``INT()``."""
+
+    id = "M-SCALE"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.CONTEXT
+    summary = "SCALE[...] = e (not an integer literal) -> SCALE[...] = INT(e)"
+    evidence = "spec M-SCALE; v3:4759-4760, v3:11610; v4:15783"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file, _, statement in context.statements():
+            scale = _writes(statement, "SCALE")
+            for value in scale.values or () if scale is not None else ():
+                if value is None or _integral(value):
+                    continue
+                yield self.replace(file, value.span, f"INT({file.slice(value.span)})")
+
+
+def _integral(value: n.Expression) -> bool:
+    if isinstance(value, n.Number):
+        return value.value == int(value.value)
+    return isinstance(value, n.Call) and value.function == "INT"
+
+
+_TERMINALS = {1: "_tmLCD1", 2: "_tmRS232", 3: "_tmRS232 + _tmLCD1"}
+_TERM_CONSTANTS = {"_LCD": 1, "_SERIAL": 2, "_BOTH": 3}
+
+
+class Terminal(StatementRule):
+    """``TERM = v`` becomes ``TERMINAL = <bits>``: v3 values 1 LCD, 2 serial, 3 both became
+    the bit constants _tmLCD1 (8) and _tmRS232 (1); +4 (VT52 mode) has no v4 equivalent."""
+
+    id = "S-TERM"
+    rule_class = RuleClass.SEMI
+    summary = "TERM = 1/2/3 (_lcd/_serial/_both) -> TERMINAL = _tmLCD1 / _tmRS232 / _tmRS232 + _tmLCD1"
+    evidence = "spec S-TERM; v3:12016-12020; v4:16653, v4:16683-16704, v4:2077"
+    keywords = frozenset({"TERM"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        value = statement.values[0] if statement.values and len(statement.values) == 1 else None
+        code = None
+        if isinstance(value, n.Number):
+            code = int(value.value) if value.value == int(value.value) else None
+        elif isinstance(value, n.ConstantRef):
+            code = _TERM_CONSTANTS.get(value.name)
+        if code not in _TERMINALS:
+            return Refusal("TERM value is not 1, 2 or 3 (VT52 mode and computed values have no v4 equivalent)")
+        return f"{like(statement.keyword.spelling, 'TERMINAL')} = {_TERMINALS[code]}"
+
+
+class OffsetNeedsGo(Rule):
+    """On NextMove a v4 OFFSET is a buffered move that starts with GO; v3 OFFSET needed none.
+    ``: GO<axes>`` is added after each OFFSET write (MintDrive keeps the v3 form)."""
+
+    id = "S-OFFSET"
+    rule_class = RuleClass.SEMI
+    phase = Phase.CONTEXT
+    summary = "OFFSET[axes] = v -> OFFSET[axes] = v : GO[axes] (NextMove)"
+    evidence = "spec S-OFFSET; v3:10402-10404; v4:14780-14784, v4:14822, v4:3506-3510"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        if not context.controller.controller.startswith("nextmove"):
+            return
+        after = followers(context)
+        for file, _, statement in context.statements():
+            offset = _writes(statement, "OFFSET")
+            if offset is None or offset.values is None:
+                continue
+            go = _writes(after.get(id(offset)), "GO")
+            selector = selector_text(file, offset.keyword)
+            if go is not None and selector_text(file, go.keyword) == selector:
+                continue
+            yield self.replace(
+                file, Span(offset.span.end, offset.span.end), f" : {like(offset.keyword.spelling, 'GO')}{selector}"
+            )
+
+
+_CONFIG_VALUES = {3: "_cfSTEPPER"}
+_CONFIG_CONSTANTS = {"_MICRO": "_cfSTEPPER"}
+
+
+class ConfigValues(StatementRule):
+    """CONFIG values: v3 3/_micro (microstepper) is a stepper in v4 (3 is now _cfPWM); 4
+    (_inverter) has no v4 equivalent. v4 CONFIG needs the drive disabled, and v3 files
+    RESET (which in v4 enables the drive) before CONFIG: a CONFIG that follows a RESET in
+    the same file is wrapped in ``DRIVEENABLE<axes> = 0;`` ... ``DRIVEENABLE<axes> = 1;``,
+    which gives back the enabled state RESET left, as v3's CONFIG did not touch it."""
+
+    id = "S-CONFIG"
+    rule_class = RuleClass.SEMI
+    summary = (
+        "CONFIG = _micro/3 -> _cfSTEPPER; _inverter/4 -> manual; after RESET: DRIVEENABLE 0 / CONFIG / DRIVEENABLE 1"
+    )
+    evidence = "spec S-CONFIG; v3:4624-4649, v3:827-828; v4:8431-8443, v4:8481-8482, v4:15624-15629"
+    keywords = frozenset({"CONFIG"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        if statement.values is None:
+            return None
+        text = file.slice(statement.span)
+        base = statement.span.start
+        for value in reversed([v for v in statement.values if v is not None]):
+            new = None
+            if (isinstance(value, n.Number) and value.value in (4,)) or (
+                isinstance(value, n.ConstantRef) and value.name == "_INVERTER"
+            ):
+                return Refusal("CONFIG = _inverter: Mint v4 has no inverter configuration")
+            if isinstance(value, n.Number) and value.value in _CONFIG_VALUES:
+                new = _CONFIG_VALUES[int(value.value)]
+            elif isinstance(value, n.ConstantRef):
+                new = _CONFIG_CONSTANTS.get(value.name)
+            if new is not None:
+                text = text[: value.span.start - base] + new + text[value.span.end - base :]
+        if self._after_reset(context, file, statement):
+            selector = selector_text(file, statement.keyword)
+            disable = like(statement.keyword.spelling, "DRIVEENABLE") + selector
+            fill = "" if selector.startswith(".") else ";"
+            text = f"{disable} = 0{fill} : {text} : {disable} = 1{fill}"
+        return None if text == file.slice(statement.span) else text
+
+    @staticmethod
+    def _after_reset(context: Context, file: FileView, statement: n.KeywordStatement) -> bool:
+        before = file.text[file.line_start(statement.span.start) : statement.span.start]
+        if "DRIVEENABLE" in before.upper():
+            return False
+        return any(
+            use.keyword.keyword == "RESET" and use.statement.span.start < statement.span.start
+            for current, use in context.keyword_uses("RESET")
+            if current is file
+        )
+
+
+class Echo(StatementRule):
+    """v3 ECHO had two bits (echo, error messages) and PON/POFF switched the prompt; v4 ECHO
+    has the prompt as bit 2 ("ECHO replaces POFF and PON"). ``ECHO = v`` keeps the current
+    prompt bit (``ECHO = v | (ECHO & 4)``), ``POFF`` clears it and ``PON`` sets it. A value
+    that already reads ECHO is left alone. (v3 POFF also hid the INPUT prompt; v4 does not
+    say that ECHO does.)"""
+
+    id = "S-ECHO"
+    rule_class = RuleClass.SEMI
+    summary = "ECHO = v -> ECHO = v | (ECHO & 4); POFF -> ECHO = ECHO & 3; PON -> ECHO = ECHO | 4"
+    evidence = "spec S-ECHO; v3:7504-7523, v3:10791-10847; v4:9539-9557, v4:15075, v4:15084"
+    keywords = frozenset({"ECHO", "PON", "POFF"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        word = like(statement.keyword.spelling, "ECHO")
+        if statement.keyword.keyword == "PON":
+            return f"{word} = {word} | 4"
+        if statement.keyword.keyword == "POFF":
+            return f"{word} = {word} & 3"
+        values = statement.values
+        if values is None or len(values) != 1 or values[0] is None:
+            return Refusal("ECHO takes one value")
+        if any(isinstance(node, n.KeywordRef) and node.keyword == "ECHO" for node in n.walk_expression(values[0])):
+            return None
+        value = file.slice(values[0].span)
+        if not isinstance(values[0], n.Number | n.VariableRef | n.Parenthesised):
+            value = f"({value})"
+        return f"{word} = {value} | ({word} & 4)"
+
+
+class ErrorInput(StatementRule):
+    """v3 ``ERRORIN`` chose the error input's active level (0 low, 1 high, 2 disabled); v4
+    ERRORINPUT chooses the input channel (-1 none). ``ERRORIN = 2`` is ``ERRORINPUT = -1;``
+    on every default axis; levels 0 and 1 need the input's number: manual item."""
+
+    id = "S-ERRORIN"
+    rule_class = RuleClass.SEMI
+    summary = "ERRORIN = 2 -> ERRORINPUT = -1; (0/1 -> manual: ERRORINPUT = <input> + INPUTACTIVELEVEL)"
+    evidence = "spec S-ERRORIN; v3:7861-7876; v4:10018, v4:10048-10064"
+    keywords = frozenset({"ERRORIN"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        values = statement.values or ()
+        if len(values) == 1 and isinstance(values[0], n.Number) and values[0].value == 2:
+            return self.unsupported(context, "ERRORINPUT") or f"{like(statement.keyword.spelling, 'ERRORINPUT')} = -1;"
+        return Refusal("ERRORINPUT takes the error input's number (-1 none); set its level with INPUTACTIVELEVEL")

@@ -1,0 +1,181 @@
+"""The mechanical rules: each rewrite, and each case the rule must leave alone or refuse."""
+
+from __future__ import annotations
+
+import pytest
+
+from mintlang.keyworddb import database
+from mintlang.migrate.rules.renames import KEYWORD_RENAMES
+from tests.migrate.helpers import flagged, one_rule, rewritten
+
+
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        ("MA = 10 : GO\n", "MOVEA = 10 : GO\n"),
+        ("SP.1 = 5\n", "SPEED.1 = 5\n"),
+        ("DE = 2000\n", "DECEL = 2000\n"),  # v4 DE is DRIVEENABLE
+        ("IM = 15\n", "IMASK = 15\n"),  # v4 IM is INPUTMODE
+        ("x = MD.0\n", "x = MODE.0\n"),  # v4 MD is MOTORDIRECTION
+        ("GR = 3\n", "GEARN = 3\n"),  # v4 GR is GEARING
+        ("PAUSE I3\n", "PAUSE IN3\n"),
+        ("ma = 1\n", "movea = 1\n"),  # lower case stays lower case
+        ("? IN12 & 1\n", "? IN12 & 1\n"),  # symbols and glued channels stay
+    ],
+)
+def test_abbreviations_become_full_v3_names(source: str, expected: str) -> None:
+    assert rewritten("M-ABBR", source) == expected
+
+
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        ("GAIN = 2;\n", "KPROP = 2;\n"),
+        ("HMSPEED[0,1] = 10,20\n", "HOMESPEED[0,1] = 10,20\n"),
+        ("x = backoff.1\n", "x = homebackoff.1\n"),
+        ("GN = 1\n", "KPROP = 1\n"),  # the abbreviation is matched by meaning
+        ("MFOLERR = 2 : STOPMODE = 1\n", "FOLERRORFATAL = 2 : STOPINPUTMODE = 1\n"),
+        ("KINTRANGE = 25 : MASTERINC.0 = 100\n", "KINTLIMIT = 25 : MASTERDISTANCE.0 = 100\n"),
+    ],
+)
+def test_renamed_keywords(source: str, expected: str) -> None:
+    assert rewritten("M-REN", source) == expected
+
+
+def test_renames_cover_the_v4_guides_replaced_by_entries() -> None:
+    for old, (new, line) in KEYWORD_RENAMES.items():
+        rename = database().rename_of(old)
+        assert rename is not None and rename.new == (new,), old
+        assert abs(rename.line - line) <= 1, old
+
+
+def test_fastpos_handler_becomes_fastin() -> None:
+    assert rewritten("M-FASTPOS", "#FASTPOS\n  a = FASTPOS.0\nRETURN\n") == "#FASTIN\n  a = FASTPOS.0\nRETURN\n"
+
+
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        ("CONFIG = _servo, _stepper\n", "CONFIG = _cfSERVO, _cfSTEPPER\n"),
+        ("HOME = _negindex\n", "HOME = _hmNEGATIVE_SWITCH_INDEX\n"),
+        ("OUT1 = _on : OUT2 = _false\n", "OUT1 = _on : OUT2 = _false\n"),  # same name in v4: untouched
+        ("x = _jog\n", "x = _jog\n"),  # value differs in v4: left to S-MODE / the final flag
+    ],
+)
+def test_constants_are_renamed_only_when_the_value_is_the_same(source: str, expected: str) -> None:
+    assert rewritten("M-CONST", source) == expected
+
+
+def test_user_labels_named_like_v4_events_are_renamed_with_their_jumps() -> None:
+    source = "GOSUB timer\nGOTO Can1\nEND\n#timer\nRETURN\n#Can1\nRETURN\n#fastin\nRETURN\n"
+    assert rewritten("M-LABEL", source) == (
+        "GOSUB timer_u\nGOTO Can1_u\nEND\n#timer_u\nRETURN\n#Can1_u\nRETURN\n#fastin\nRETURN\n"
+    )
+
+
+def test_user_names_that_are_v4_keywords_are_renamed_everywhere() -> None:
+    source = "node = 1\nView = node + 1\nPRINT VIEW, NODE\nkp = 2\n"
+    assert rewritten("M-IDENT", source) == "node_u = 1\nView_u = node_u + 1\nPRINT VIEW_u, NODE_u\nkp_u = 2\n"
+
+
+def test_renamed_names_stay_unique_in_ten_characters() -> None:
+    assert rewritten("M-IDENT", "node = 1\nnode_u = 2\n") == "node_u2 = 1\nnode_u = 2\n"
+    assert rewritten("M-IDENT", "inputactivelevel = 1\n") == "inputact_u = 1\n"  # ten significant characters
+
+
+def test_zero_becomes_pos_zero_on_every_axis() -> None:
+    assert rewritten("M-ZERO", "ZERO[0,1]\nZERO.2\nZERO\n") == "POS[0,1] = 0;\nPOS.2 = 0\nPOS = 0;\n"
+
+
+def test_boost_is_written_where_the_controller_has_it() -> None:
+    source = "BOOSTON[4,5] : BOOSTOFF.1\n"
+    assert rewritten("M-BOOST", source, controller="nextmove-pc") == "BOOST[4,5] = 1; : BOOST.1 = 0\n"
+    assert flagged("M-BOOST", source) == ["BOOST is not available on NextMove PCI"]  # one line, one marker
+
+
+def test_not_available_statements_become_comments() -> None:
+    assert rewritten("M-NOTAVAIL", "COMMSON\n  BEEPOFF : REM quiet\n") == (
+        "REM COMMSON: not available in Mint v4 (v4:8379), removed by mint-migrate\n"
+        "  REM BEEPOFF: not available in Mint v4 (v4:7392), removed by mint-migrate : REM quiet\n"
+    )
+
+
+def test_not_available_statement_sharing_a_line_is_flagged() -> None:
+    assert flagged("M-NOTAVAIL", "COMMSON : a = 1\n") == ["COMMSON is not available in Mint v4 (v4:8379): delete it"]
+
+
+def test_offline_arrays_lose_the_word_offline() -> None:
+    assert rewritten("M-OFFLINE", "DIM OFFLINE xpos(1000)\n") == "DIM xpos(1000)\n"
+
+
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        ("x = SIN(30)\n", "x = (SIN(30) * 1000)\n"),
+        ("x = SIN 90 + a\n", "x = (SIN(90) * 1000) + a\n"),  # v3 binding of the bracketless call
+        ("x = cos(a) * tan(b)\n", "x = (cos(a) * 1000) * (tan(b) * 1000)\n"),
+        ("x = (SIN(30) * 1000)\n", "x = (SIN(30) * 1000)\n"),  # its own output
+    ],
+)
+def test_trigonometry_keeps_v3_thousandths(source: str, expected: str) -> None:
+    assert rewritten("M-TRIG", source) == expected
+
+
+def test_tilde_keeps_eight_bits() -> None:
+    assert rewritten("M-TILDE", "OUT = ~OUT\nx = (~y & 255)\n") == "OUT = (~OUT & 255)\nx = (~y & 255)\n"
+
+
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        ("IF a = 1 AND b = 2 OR c THEN d = 1\n", "IF (a = 1 AND b = 2) OR c THEN d = 1\n"),
+        ("x = a | b & c | d\n", "x = a | (b & c) | d\n"),
+        ("x = a AND b\n", "x = a AND b\n"),
+        ("x = (a OR b) AND c\n", "x = (a OR b) AND c\n"),
+    ],
+)
+def test_mixed_and_or_get_v3_brackets(source: str, expected: str) -> None:
+    assert rewritten("M-PREC", source) == expected
+
+
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        ("SCALE = 2.5\n", "SCALE = INT(2.5)\n"),
+        ("SCALE[0,1] = 400, s / 2\n", "SCALE[0,1] = 400, INT(s / 2)\n"),
+        ("SCALE = 400;\n", "SCALE = 400;\n"),
+        ("SCALE = INT(s)\n", "SCALE = INT(s)\n"),
+    ],
+)
+def test_scale_stays_an_integer(source: str, expected: str) -> None:
+    assert rewritten("M-SCALE", source) == expected
+
+
+def test_variables_are_declared_at_the_top_in_first_use_order() -> None:
+    source = "REM title\nREM\nGOSUB init\nEND\n#init\n  b = 2\n  FOR a = 1 TO b : INPUT c : NEXT\nRETURN\n"
+    assert rewritten("M-DIM", source) == (
+        "REM title\nREM\nDIM b\nDIM a\nDIM c\n"
+        "GOSUB init\nEND\n#init\n  b = 2\n  FOR a = 1 TO b : INPUT c : NEXT\nRETURN\n"
+    )
+
+
+def test_declarations_follow_protect_and_auto() -> None:
+    assert rewritten("M-DIM", "PROTECT abc\nx = 1\n").startswith("PROTECT abc\nDIM x\n")
+    result = one_rule("M-DIM", "y = x\n", config="AUTO\nx = 1\n")
+    assert result.configuration is not None and result.configuration.text == "AUTO\nDIM x\nx = 1\n"
+    assert result.text == "DIM y\ny = x\n"  # x is declared in the configuration file and visible here
+
+
+def test_arrays_are_not_redeclared_and_undimensioned_arrays_are_flagged() -> None:
+    assert rewritten("M-DIM", "DIM d(5)\nFOR d = 1 TO 5 : d(d) = 0 : NEXT\n") == (
+        "DIM d(5)\nFOR d = 1 TO 5 : d(d) = 0 : NEXT\n"
+    )
+    assert flagged("M-DIM", "DIM x\nx = pos_x(1)\n") == ["array 'pos_x' is used but never dimensioned"]
+
+
+def test_default_axes_depend_on_the_controller() -> None:
+    assert rewritten("M-AXES", "STOP\n", controller="nextmove-bx") == "AXES[0,1,2]\nSTOP\n"
+    assert rewritten("M-AXES", "STOP\n", controller="mintdrive") == "STOP\n"
+    assert rewritten("M-AXES", "AXES[0]\nSTOP\n") == "AXES[0]\nSTOP\n"
+    result = one_rule("M-AXES", "STOP\n", config="AUTO\nRESET\n")
+    assert result.configuration is not None and result.configuration.text == "AUTO\nAXES[0,1,2]\nRESET\n"

@@ -128,22 +128,23 @@ class _Collector:
     def _label(self, labels: dict[str, Symbol], name: n.Name, unit: Unit) -> Symbol:
         return labels.setdefault(name.identity, Symbol(SymbolKind.LABEL, name.identity, unit))
 
-    def declare(self, name: n.Name, unit: Unit, size: n.Expression | None) -> None:
-        kind = SymbolKind.ARRAY if size is not None else SymbolKind.VARIABLE
+    def declare(self, name: n.Name, unit: Unit, size: n.Expression | None, *, array: bool = False) -> None:
+        """A DIM, or in v3 the first write; ``array`` for an implicit v3 array written as name(i)."""
+        kind = SymbolKind.ARRAY if size is not None or array else SymbolKind.VARIABLE
         symbol = self.variables.get(name.identity)
         declared = symbol is not None and bool(symbol.definitions)
         if symbol is None:
             symbol = self.variables[name.identity] = Symbol(kind, name.identity, unit)
-        if size is not None:
+        if kind is SymbolKind.ARRAY:
             symbol.kind = SymbolKind.ARRAY
-            if isinstance(size, n.Number) and size.value == int(size.value):
-                symbol.array_size = int(size.value)
+        if isinstance(size, n.Number) and size.value == int(size.value):
+            symbol.array_size = int(size.value)
         symbol.definitions.append(Occurrence(unit, name.span, name.text, declared, is_write=True))
 
     def use(self, name: n.Name, unit: Unit, *, write: bool, element: bool) -> None:
         symbol = self.variables.get(name.identity)
         if symbol is None and write and self.implicit_declarations:
-            self.declare(name, unit, None)
+            self.declare(name, unit, None, array=element)
             return
         declared = symbol is not None and bool(symbol.definitions)
         if symbol is None:

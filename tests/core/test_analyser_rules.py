@@ -280,6 +280,11 @@ def test_a_constant_index_outside_the_array_is_error_2016() -> None:
     assert found(source) == [("E2016", ERROR, 2), ("E2016", ERROR, 3), ("E2016", ERROR, 6)]
 
 
+def test_an_element_of_a_plain_variable_is_error_2016() -> None:
+    # 3.3: an array is declared with its size, DIM name(n); a plain variable has no elements
+    assert found("DIM y\ny(2) = 1\n") == [("E2016", ERROR, 2)]
+
+
 def test_the_manuals_invalid_index_example() -> None:
     # line 19041
     source = "DIM axis_speeds(100)\naxis_speeds(0) = 1000\naxis_speeds(101) = 2000\n"

@@ -1,4 +1,6 @@
-"""Array indices known at compile time must lie in 1 .. size (error 2016)."""
+"""Array elements: indices known at compile time must lie in 1 .. size, and only
+arrays have elements (error 2016, "Invalid index", 12.4).
+"""
 
 from __future__ import annotations
 
@@ -15,7 +17,13 @@ def check(facts: Facts) -> Iterator[Finding]:
     dialect = model.program.dialect
     for unit, element in facts.elements:
         symbol = model.symbols.variables.get(element.name.identity)
-        if symbol is None or symbol.kind is not SymbolKind.ARRAY or symbol.array_size is None:
+        if symbol is None or not symbol.definitions:
+            continue  # undeclared: 3001 says so
+        if symbol.kind is not SymbolKind.ARRAY:
+            detail = f"'{element.name.text}' is a variable, not an array: declare it with DIM {symbol.name}(size)"
+            yield Finding(unit, mint_error(2016, element.span, detail))
+            continue
+        if symbol.array_size is None:
             continue
         index = constant_integer(element.index, dialect)
         if index is not None and not 1 <= index <= symbol.array_size:

@@ -21,6 +21,7 @@ from lark.common import LexerConf
 from lark.exceptions import UnexpectedInput, UnexpectedToken
 from lark.lexer import Lexer
 
+from mintlang.dialect import Dialect
 from mintlang.syntax.build import LineBuilder, compile_line
 from mintlang.syntax.tokens import TokenKind
 
@@ -35,9 +36,28 @@ class _PresetTokens(Lexer):
         return iter(data)
 
 
+# Mint v3 binds AND tighter than OR (v3 guide 4.2, lines 1986-1995), v4 the other way round
+# (3.4.7): the v3 grammar is the v4 one with the two levels swapped.
+_V4_LOGIC = """?expr: and_expr
+?and_expr: and_expr AND or_expr -> binary
+    | or_expr
+?or_expr: or_expr (OR | XOR) eq_expr -> binary
+    | eq_expr
+"""
+_V3_LOGIC = """?expr: or_expr
+?or_expr: or_expr (OR | XOR) and_expr -> binary
+    | and_expr
+?and_expr: and_expr AND eq_expr -> binary
+    | eq_expr
+"""
+
+
 @cache
-def _parser() -> Lark:
+def _parser(dialect: Dialect) -> Lark:
     grammar = resources.files("mintlang.syntax").joinpath("grammar.lark").read_text(encoding="utf-8")
+    assert _V4_LOGIC in grammar, "grammar.lark must state the v4 precedence of AND and OR as _V4_LOGIC"
+    if dialect is Dialect.V3:
+        grammar = grammar.replace(_V4_LOGIC, _V3_LOGIC)
     # propagate_positions gives every subtree the positions of its first and last token, which
     # here are token indices: computed once per cached tree, they make node spans O(1).
     return Lark(grammar, parser="lalr", lexer=_PresetTokens, strict=True, propagate_positions=True)
@@ -64,7 +84,7 @@ class ParseFailure:
 
 ParseResult = LineBuilder | ParseFailure
 
-_results: dict[tuple[TokenKind, ...], ParseResult] = {}
+_results: dict[tuple[Dialect, tuple[TokenKind, ...]], ParseResult] = {}
 _CACHE_LIMIT = 200_000
 
 
@@ -72,23 +92,24 @@ def clear_cache() -> None:
     _results.clear()
 
 
-def parse_kinds(kinds: tuple[TokenKind, ...]) -> ParseResult:
+def parse_kinds(kinds: tuple[TokenKind, ...], dialect: Dialect = Dialect.V4) -> ParseResult:
     """The builder for lines with these token kinds, or where the grammar rejects them."""
-    result = _results.get(kinds)
+    key = (dialect, kinds)
+    result = _results.get(key)
     if result is None:
-        result = _parse(kinds)
+        result = _parse(kinds, dialect)
         if len(_results) >= _CACHE_LIMIT:
             _results.clear()
-        _results[kinds] = result
+        _results[key] = result
     return result
 
 
-def _parse(kinds: tuple[TokenKind, ...]) -> ParseResult:
+def _parse(kinds: tuple[TokenKind, ...], dialect: Dialect) -> ParseResult:
     if len(kinds) > MAX_TOKENS:
         return ParseFailure(0, frozenset(), f"{len(kinds)} tokens on one line")
     stream = [Token(kind.value, kind.value, start_pos=index, end_pos=index) for index, kind in enumerate(kinds)]
     try:
-        tree = _parser().parse(stream)  # type: ignore[arg-type]
+        tree = _parser(dialect).parse(stream)  # type: ignore[arg-type]
     except UnexpectedToken as error:
         index = error.token.start_pos if error.token.type != "$END" else len(kinds)
         return ParseFailure(index if index is not None else len(kinds), frozenset(error.expected))

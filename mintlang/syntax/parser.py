@@ -91,7 +91,7 @@ def parse(
         expand_macros(logical, visible, expansions)
         register(visible, defined)
         definitions.extend(defined)
-        lines.append(_parse_line(logical, words, diagnostics))
+        lines.append(_parse_line(logical, words, dialect, diagnostics))
     return Document(
         source,
         dialect,
@@ -105,15 +105,17 @@ def parse(
     )
 
 
-def _parse_line(line: LogicalLine, words: Vocabulary, diagnostics: list[Diagnostic]) -> n.Line:
-    result = parse_kinds(tuple(line.kinds))
+def _parse_line(line: LogicalLine, words: Vocabulary, dialect: Dialect, diagnostics: list[Diagnostic]) -> n.Line:
+    result = parse_kinds(tuple(line.kinds), dialect)
     if isinstance(result, ParseFailure):
-        return _recover(line, words, result, diagnostics)
+        return _recover(line, words, dialect, result, diagnostics)
     label, statements = result(line, words)
     return n.Line(line.span, line.number, label, statements)
 
 
-def _recover(line: LogicalLine, words: Vocabulary, failure: ParseFailure, diagnostics: list[Diagnostic]) -> n.Line:
+def _recover(
+    line: LogicalLine, words: Vocabulary, dialect: Dialect, failure: ParseFailure, diagnostics: list[Diagnostic]
+) -> n.Line:
     """Parse the ``:``-separated statements of a failing line one at a time."""
     kinds = line.kinds
     label: n.Name | None = None
@@ -129,7 +131,7 @@ def _recover(line: LogicalLine, words: Vocabulary, failure: ParseFailure, diagno
     for begin, end in _segments(kinds, start):
         if begin == end:
             continue
-        result = parse_kinds(tuple(kinds[begin:end]))
+        result = parse_kinds(tuple(kinds[begin:end]), dialect)
         if not isinstance(result, ParseFailure):
             statements.extend(result(_slice(line, begin, end), words)[1])
             continue

@@ -34,3 +34,14 @@ def test_v3_keeps_its_own_keywords_and_offline_arrays() -> None:
     first, second = (line.statements[0] for line in document.lines)
     assert first.keyword.keyword == "HMSPEED"
     assert (second.name.text, second.modifier) == ("table", "OFFLINE")
+
+
+def test_v3_binds_and_tighter_than_or_unlike_v4() -> None:
+    # v3 guide 4.2 (lines 1986-1995): AND above OR; v4 guide 3.4.7 (line 1412): | above &
+    def top(dialect: str) -> tuple[str, str]:
+        (statement,) = mintlang.parse("PAUSE a AND b OR c\n", dialect).lines[0].statements
+        condition = statement.condition
+        return condition.operator, type(condition.left).__name__
+
+    assert top("v3") == ("OR", "Binary")  # (a AND b) OR c
+    assert top("v4") == ("AND", "VariableRef")  # a AND (b OR c)

@@ -1,0 +1,28 @@
+"""``mint-lsp [--tcp PORT]``: stdio by default, or TCP on 127.0.0.1."""
+
+from __future__ import annotations
+
+import logging
+
+import click
+
+from mintlang.lsp import __version__
+
+
+@click.command()
+@click.option("--tcp", "port", type=click.IntRange(1, 65535), help="Listen on 127.0.0.1:PORT instead of stdio.")
+@click.option("--log-level", type=click.Choice(["debug", "info", "warning", "error"]), default="warning")
+@click.option("--log-file", type=click.Path(dir_okay=False), help="Log here instead of stderr.")
+@click.version_option(__version__, prog_name="mint-lsp")
+def main(port: int | None, log_level: str, log_file: str | None) -> None:
+    """The Mint language server: diagnostics, hover, completion, navigation and formatting for Mint programs."""
+    logging.basicConfig(
+        filename=log_file, level=log_level.upper(), format="%(asctime)s mint-lsp %(levelname)s %(name)s: %(message)s"
+    )
+    from mintlang.lsp.server import create_server  # noqa: PLC0415  (--help stays fast)
+
+    server = create_server()
+    if port is None:
+        server.start_io()
+    else:
+        server.start_tcp("127.0.0.1", port)

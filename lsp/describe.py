@@ -1,0 +1,93 @@
+"""Markdown descriptions of keywords, constants and user symbols (hover, completion details)."""
+
+from __future__ import annotations
+
+from mintlang.controllers import profile
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Addressing, Controller, Keyword, V3Keyword
+from mintlang.lsp.workspace import Snapshot
+from mintlang.semantic.events import event_of
+from mintlang.semantic.symbols import Symbol, SymbolKind
+from mintlang.semantic.units import Unit
+
+
+def _access(read: bool, write: bool, command: bool) -> str:
+    return ", ".join(word for word, flag in (("read", read), ("write", write), ("command", command)) if flag) or "—"
+
+
+def keyword(word: Keyword, controller: Controller, spelling: str = "") -> str:
+    """Full name, formats, access, addressing, default, range, controllers and summary."""
+    title = f"**{word.name}**"
+    if word.abbreviations:
+        title += f" (abbreviation {', '.join(word.abbreviations)})"
+    lines = [f"{title} — {word.kind.value}", "", "```mint", *word.formats, "```", ""]
+    if word.summary:
+        lines += [word.summary, ""]
+    row = word.attributes_for(controller) or (word.attributes[0] if word.attributes else None)
+    if row is not None:
+        lines.append(f"- Access: {_access(row.read, row.write, row.command)}")
+    if word.addressing is not Addressing.NONE:
+        lines.append(f"- Addressing: by {word.addressing.value}")
+    channel = spelling[len(spelling.rstrip("0123456789")) :] if word.channel_suffix else ""
+    if channel and spelling.upper() != word.name:
+        lines.append(f"- Written here for channel {int(channel)}")
+    if row is not None and row.default:
+        lines.append(f"- Default: {row.default}")
+    if row is not None and row.range is not None:
+        lines.append(f"- Range: {row.range.text}")
+    lines.append(f"- Controllers: {', '.join(profile(c).title for c in word.controllers)}")
+    if controller not in word.controllers:
+        lines.append(f"- **Not available on {profile(controller).title}**")
+    return "\n".join(lines)
+
+
+def v3_keyword(word: V3Keyword) -> str:
+    lines = [f"**{word.name}** — Mint v3 keyword", ""]
+    lines.append(f"- Access: {_access(word.read, word.write, word.command)}")
+    if word.v4_names:
+        lines.append(f"- Mint v4: {', '.join(word.v4_names)} ({word.status})")
+    else:
+        lines.append(f"- Mint v4: {word.status}")
+    return "\n".join(lines)
+
+
+def constant(name: str) -> str | None:
+    record = database().constants.get(name.upper())
+    if record is None:
+        return None
+    value = int(record.value) if record.value == int(record.value) else record.value
+    text = f"**{record.name}** = `{value}` — predefined constant"
+    return f"{text} of {record.keyword}" if record.keyword else text
+
+
+def _where(snapshot: Snapshot, unit: Unit, offset: int) -> str:
+    file = snapshot.files.get(unit)
+    line = file.positions.position(offset).line + 1 if file is not None else None
+    place = "the configuration file" if unit is Unit.CONFIGURATION else "the program"
+    return f"line {line} of {place}" if line is not None else place
+
+
+def macro_body(snapshot: Snapshot, symbol: Symbol) -> str | None:
+    """The text a macro stands for, as written in its definition."""
+    definition = snapshot.model.program.macros.get(symbol.identity)
+    if definition is None:
+        return None
+    return " ".join(text for _, text in definition.body)
+
+
+def symbol(snapshot: Snapshot, found: Symbol) -> str:
+    definition = found.definition
+    where = f"declared at {_where(snapshot, definition.unit, definition.span.start)}" if definition else "not declared"
+    if found.kind is SymbolKind.ARRAY:
+        size = f"({found.array_size})" if found.array_size is not None else "()"
+        return f"**{found.name}**{size} — array, {where}"
+    if found.kind is SymbolKind.VARIABLE:
+        return f"**{found.name}** — variable, {where}"
+    if found.kind is SymbolKind.MACRO:
+        body = macro_body(snapshot, found)
+        value = f"\n\n```mint\nDEFINE {found.name} = {body}\n```" if body is not None else ""
+        return f"**{found.name}** — macro, {where.replace('declared', 'defined')}{value}"
+    event = event_of(found.name, snapshot.settings.dialect)
+    kind = f"event handler ({event.kind.value})" if event else "label"
+    where = f"at {_where(snapshot, definition.unit, definition.span.start)}" if definition else "never defined"
+    return f"**#{found.name}** — {kind}, {where}"

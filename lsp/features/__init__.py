@@ -1,0 +1,33 @@
+"""One module per LSP feature; each exposes ``register(server)``."""
+
+from mintlang.lsp.features import (
+    code_actions,
+    completion,
+    diagnostics,
+    folding,
+    formatting,
+    hover,
+    inlay_hints,
+    navigation,
+    rename,
+    semantic_tokens,
+    settings,
+    signature,
+    symbols,
+)
+
+FEATURES = (
+    settings,
+    diagnostics,
+    hover,
+    completion,
+    signature,
+    navigation,
+    rename,
+    symbols,
+    folding,
+    semantic_tokens,
+    formatting,
+    code_actions,
+    inlay_hints,
+)

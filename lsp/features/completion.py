@@ -1,0 +1,173 @@
+"""Completion: only what is valid at the cursor, without waiting for a new analysis.
+
+The cursor's line is lexed as typed; user names come from the last analysis.
+
+After GOSUB/GOTO: labels; after ``#`` at the start of a line: event handlers
+of the controller; after ``_``: predefined constants; at the start of a
+statement: commands, writable parameters, variables, macros and block
+snippets; inside an expression: readable keywords, functions, variables,
+arrays and macros. Nothing inside comments and strings.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from lsprotocol import types
+
+from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Keyword, KeywordKind
+from mintlang.lsp import describe
+from mintlang.lsp.lookup import WORD_KINDS, prefix_tokens, significant
+from mintlang.lsp.server import MintServer
+from mintlang.lsp.workspace import Snapshot
+from mintlang.semantic.events import event_of
+from mintlang.semantic.symbols import SymbolKind
+from mintlang.syntax.tokens import Token, TokenKind
+
+SNIPPETS = {
+    "IF … DO … ENDIF": "IF ${1:condition} DO\n\t$0\nENDIF",
+    "FOR … NEXT": "FOR ${1:i} = ${2:1} TO ${3:10}\n\t$0\nNEXT",
+    "WHILE … ENDW": "WHILE ${1:condition}\n\t$0\nENDW",
+    "LOOP … ENDL": "LOOP\n\t$0\nENDL",
+    "REPEAT … UNTIL": "REPEAT\n\t$0\nUNTIL ${1:condition}",
+}
+_STATEMENT_STARTERS = frozenset({TokenKind.COLON, TokenKind.THEN, TokenKind.DO, TokenKind.ELSE, TokenKind.LABEL})
+_PARTIAL_WORDS = WORD_KINDS | {TokenKind.HASH}
+_HIDDEN = frozenset({KeywordKind.EVENT, KeywordKind.COMMAND_LINE})
+_SYMBOL_KINDS = {
+    SymbolKind.VARIABLE: types.CompletionItemKind.Variable,
+    SymbolKind.ARRAY: types.CompletionItemKind.Variable,
+    SymbolKind.MACRO: types.CompletionItemKind.Constant,
+}
+
+
+def _keyword_item(word: Keyword) -> types.CompletionItem:
+    kind = types.CompletionItemKind.Function if word.kind is KeywordKind.FUNCTION else types.CompletionItemKind.Keyword
+    detail = (
+        f"{word.kind.value}, abbreviation {', '.join(word.abbreviations)}" if word.abbreviations else word.kind.value
+    )
+    return types.CompletionItem(label=word.name, kind=kind, detail=detail, data={"keyword": word.name})
+
+
+def _keywords(snapshot: Snapshot, statement: bool) -> Iterator[types.CompletionItem]:
+    if snapshot.settings.dialect is Dialect.V3:
+        for old in database().v3_keywords.values():
+            if old.name[:1].isalpha() and (old.write or old.command if statement else old.read):
+                detail = f"Mint v3, abbreviation {', '.join(old.abbreviations)}" if old.abbreviations else "Mint v3"
+                yield types.CompletionItem(label=old.name, kind=types.CompletionItemKind.Keyword, detail=detail)
+        return
+    controller = snapshot.settings.controller
+    for word in database().keywords.values():
+        if word.kind in _HIDDEN or controller not in word.controllers:
+            continue
+        row = word.attributes_for(controller)
+        if statement:
+            valid = word.kind in (KeywordKind.STATEMENT, KeywordKind.COMMAND) or row is None or row.write or row.command
+        else:
+            valid = word.kind in (KeywordKind.FUNCTION, KeywordKind.OPERATOR) or (
+                row.read if row else word.kind is KeywordKind.PARAMETER
+            )
+        if valid:
+            yield _keyword_item(word)
+
+
+def _symbols(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
+    symbols = snapshot.model.symbols
+    for symbol in (*symbols.variables.values(), *symbols.macros.values()):
+        if symbol.definitions:
+            yield types.CompletionItem(
+                label=symbol.name, kind=_SYMBOL_KINDS[symbol.kind], detail=describe.symbol(snapshot, symbol)
+            )
+
+
+def _labels(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
+    for label in snapshot.model.symbols.labels[snapshot.unit].values():
+        if label.definitions and event_of(label.name, snapshot.settings.dialect) is None:
+            yield types.CompletionItem(label=label.name, kind=types.CompletionItemKind.Function)
+
+
+def event_names(snapshot: Snapshot) -> list[str]:
+    """The handlers the configured controller calls: #ONERROR, #IN0 .. #INx, #FASTINx ..."""
+    target = snapshot.model.controller
+    numbered = {
+        "IN": range(target.digital_inputs.low, target.digital_inputs.high + 1),
+        "FASTIN": sorted(target.fast_inputs),
+        "COMMS": range(1, 6),
+    }
+    names: list[str] = []
+    for word in database().keywords.values():
+        if word.kind is not KeywordKind.EVENT or snapshot.settings.controller not in word.controllers:
+            continue
+        base = word.name.lstrip("#")
+        if event_of(base, snapshot.settings.dialect) is not None:
+            names.append(base)
+        names.extend(f"{base}{number}" for number in numbered.get(base, ()))
+    return names
+
+
+def _constants() -> Iterator[types.CompletionItem]:
+    for record in database().constants.values():
+        yield types.CompletionItem(
+            label=record.name, kind=types.CompletionItemKind.EnumMember, detail=describe.constant(record.name)
+        )
+
+
+def _snippets() -> Iterator[types.CompletionItem]:
+    for label, body in SNIPPETS.items():
+        yield types.CompletionItem(
+            label=label,
+            kind=types.CompletionItemKind.Snippet,
+            insert_text=body,
+            insert_text_format=types.InsertTextFormat.Snippet,
+            filter_text=label.split()[0],
+        )
+
+
+def _inside_text(token: Token) -> bool:
+    """A comment runs to the end of the line; a string is open until its closing quote."""
+    if token.kind is TokenKind.COMMENT:
+        return True
+    return token.kind is TokenKind.STRING and (len(token.text) < 2 or token.text[-1] != token.text[0])
+
+
+def complete(snapshot: Snapshot, prefix: str) -> list[types.CompletionItem]:
+    """Items for the cursor at the end of ``prefix`` (its line so far); names come from ``snapshot``."""
+    tokens = prefix_tokens(prefix, snapshot.settings.dialect)
+    if tokens and _inside_text(tokens[-1]):
+        return []
+    before = significant(tokens)
+    partial: Token | None = None
+    if before and before[-1].end == len(prefix) and before[-1].kind in _PARTIAL_WORDS:
+        partial = before.pop()  # the word being typed
+    if partial is not None and partial.text.startswith("#"):
+        return [types.CompletionItem(label=name, kind=types.CompletionItemKind.Event) for name in event_names(snapshot)]
+    if partial is not None and partial.text.startswith("_"):
+        return list(_constants())
+    previous = before[-1] if before else None
+    if previous is not None and previous.kind in (TokenKind.GOSUB, TokenKind.GOTO):
+        return list(_labels(snapshot))
+    statement = previous is None or previous.kind in _STATEMENT_STARTERS
+    items = [*_keywords(snapshot, statement), *_symbols(snapshot)]
+    return items + list(_snippets()) if statement else items
+
+
+def register(server: MintServer) -> None:
+    @server.feature(
+        types.TEXT_DOCUMENT_COMPLETION,
+        types.CompletionOptions(trigger_characters=["_", "#"], resolve_provider=True),
+    )
+    def completion(params: types.CompletionParams) -> types.CompletionList:
+        typing = server.typing(params.text_document.uri, params.position)
+        items = complete(*typing) if typing is not None else []
+        return types.CompletionList(is_incomplete=False, items=items)
+
+    @server.feature(types.COMPLETION_ITEM_RESOLVE)
+    def resolve(item: types.CompletionItem) -> types.CompletionItem:
+        name = item.data.get("keyword") if isinstance(item.data, dict) else None
+        word = database().lookup(name) if name else None
+        if word is not None:
+            text = describe.keyword(word, server.analyses.settings.controller)
+            item.documentation = types.MarkupContent(kind=types.MarkupKind.Markdown, value=text)
+        return item

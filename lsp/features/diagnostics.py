@@ -1,0 +1,138 @@
+"""Diagnostics, pushed on open/change/save (debounced while typing) and pulled on request.
+
+Codes are the controller's error numbers (``E3001``) and the toolchain's own
+(``W103``); the core's messages already start with the manual's title.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import logging
+import time
+
+from lsprotocol import types
+
+import mintlang
+from mintlang.codes import OWN_CODES
+from mintlang.lsp.server import MintServer
+from mintlang.lsp.workspace import Snapshot, partner
+
+log = logging.getLogger(__name__)
+_SEVERITY = {
+    mintlang.Severity.ERROR: types.DiagnosticSeverity.Error,
+    mintlang.Severity.WARNING: types.DiagnosticSeverity.Warning,
+    mintlang.Severity.INFO: types.DiagnosticSeverity.Information,
+}
+_UNNECESSARY = frozenset({"W103", "W104", "W105", "W106"})  # unused or unreachable: clients grey it out
+
+
+def to_lsp(diagnostic: mintlang.Diagnostic, snapshot: Snapshot) -> types.Diagnostic:
+    message = diagnostic.message
+    if diagnostic.code in OWN_CODES and not message.startswith(OWN_CODES[diagnostic.code]):
+        message = f"{OWN_CODES[diagnostic.code]}: {message}"
+    return types.Diagnostic(
+        range=snapshot.positions.range(diagnostic.span),
+        message=message,
+        severity=_SEVERITY[diagnostic.severity],
+        code=diagnostic.code,
+        source="mint",
+        tags=[types.DiagnosticTag.Unnecessary] if diagnostic.code in _UNNECESSARY else None,
+    )
+
+
+def lsp_diagnostics(snapshot: Snapshot) -> list[types.Diagnostic]:
+    if snapshot.skipped is not None:
+        start = types.Position(line=0, character=0)
+        return [
+            types.Diagnostic(
+                range=types.Range(start=start, end=start),
+                message=snapshot.skipped,
+                severity=types.DiagnosticSeverity.Information,
+                source="mint",
+            )
+        ]
+    return [to_lsp(diagnostic, snapshot) for diagnostic in snapshot.diagnostics if diagnostic.path is None]
+
+
+def publish(server: MintServer, uri: str) -> None:
+    start = time.perf_counter()
+    snapshot = server.snapshot(uri)
+    if snapshot is not None:
+        log.debug("diagnostics of %s v%s in %.1f ms", uri, snapshot.version, (time.perf_counter() - start) * 1000)
+        server.text_document_publish_diagnostics(
+            types.PublishDiagnosticsParams(uri=uri, version=snapshot.version, diagnostics=lsp_diagnostics(snapshot))
+        )
+
+
+class _Debouncer:
+    """Publishes a document's diagnostics once typing pauses for ``debounce_ms``."""
+
+    def __init__(self, server: MintServer) -> None:
+        self.server = server
+        self.pending: dict[str, asyncio.Task[None]] = {}
+
+    def now(self, uri: str) -> None:
+        self.cancel(uri)
+        publish(self.server, uri)
+        self.partner(uri)
+
+    def later(self, uri: str) -> None:
+        self.cancel(uri)
+        delay = self.server.analyses.settings.debounce_ms / 1000
+        if delay <= 0:
+            self.now(uri)
+        else:
+            self.pending[uri] = asyncio.get_running_loop().create_task(self._after(uri, delay))
+
+    def cancel(self, uri: str) -> None:
+        task = self.pending.pop(uri, None)
+        if task is not None:
+            task.cancel()
+
+    def partner(self, uri: str) -> None:
+        """The other file of the application is analysed with this one: refresh it too."""
+        _, other = partner(uri, self.server.analyses.settings)
+        if other is not None and other in self.server.workspace.text_documents:
+            publish(self.server, other)
+
+    async def _after(self, uri: str, delay: float) -> None:
+        await asyncio.sleep(delay)
+        self.pending.pop(uri, None)
+        try:
+            publish(self.server, uri)
+            self.partner(uri)
+        except Exception:  # a task of our own: nobody else would see the failure
+            log.exception("diagnostics of %s failed", uri)
+
+
+def register(server: MintServer) -> None:
+    debouncer = _Debouncer(server)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
+    def did_open(params: types.DidOpenTextDocumentParams) -> None:
+        debouncer.now(params.text_document.uri)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
+    async def did_change(params: types.DidChangeTextDocumentParams) -> None:
+        debouncer.later(params.text_document.uri)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
+    def did_save(params: types.DidSaveTextDocumentParams) -> None:
+        debouncer.now(params.text_document.uri)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
+    def did_close(params: types.DidCloseTextDocumentParams) -> None:
+        uri = params.text_document.uri
+        debouncer.cancel(uri)
+        server.analyses.forget(uri)
+        server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+        debouncer.partner(uri)
+
+    @server.feature(
+        types.TEXT_DOCUMENT_DIAGNOSTIC,
+        types.DiagnosticOptions(identifier="mint", inter_file_dependencies=True, workspace_diagnostics=False),
+    )
+    def pull(params: types.DocumentDiagnosticParams) -> types.RelatedFullDocumentDiagnosticReport:
+        snapshot = server.snapshot(params.text_document.uri)
+        items = lsp_diagnostics(snapshot) if snapshot is not None else []
+        return types.RelatedFullDocumentDiagnosticReport(items=items)

@@ -1,0 +1,40 @@
+"""Folding ranges: matched blocks (an IF's two branches apart) and labelled subroutines."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from lsprotocol import types
+
+from mintlang.lsp.features.symbols import sections
+from mintlang.lsp.server import MintServer
+from mintlang.lsp.workspace import Snapshot
+
+
+def _fold(first: int, last: int) -> Iterator[types.FoldingRange]:
+    """Lines ``first`` .. ``last`` (0-based), the first staying visible; nothing for one line."""
+    if last > first:
+        yield types.FoldingRange(start_line=first, end_line=last, kind=types.FoldingRangeKind.Region)
+
+
+def folding_ranges(snapshot: Snapshot) -> Iterator[types.FoldingRange]:
+    positions = snapshot.positions
+    for block in snapshot.model.structures[snapshot.unit].blocks:
+        if block.closer_line is None:
+            continue
+        opener, closer = block.opener_line - 1, block.closer_line - 1
+        if block.middle is not None:
+            middle = positions.position(block.middle.span.start).line
+            yield from _fold(opener, middle - 1)
+            yield from _fold(middle, closer - 1)
+        else:
+            yield from _fold(opener, closer - 1)
+    for section in sections(snapshot):
+        yield from _fold(section.first_line, section.last_line)
+
+
+def register(server: MintServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_FOLDING_RANGE)
+    def folding(params: types.FoldingRangeParams) -> list[types.FoldingRange]:
+        snapshot = server.snapshot(params.text_document.uri)
+        return list(folding_ranges(snapshot)) if snapshot is not None else []

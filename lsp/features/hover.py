@@ -1,0 +1,52 @@
+"""Hover: keywords (any spelling), predefined constants and user symbols."""
+
+from __future__ import annotations
+
+from lsprotocol import types
+
+from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
+from mintlang.lsp import describe
+from mintlang.lsp.lookup import token_at
+from mintlang.lsp.server import MintServer
+from mintlang.lsp.workspace import Snapshot
+from mintlang.syntax.tokens import TokenKind
+from mintlang.syntax.vocabulary import vocabulary
+
+
+def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
+    """Markdown for the word at ``offset`` and the span it describes."""
+    token = token_at(snapshot.document, offset)
+    if token is None:
+        return None
+    found = snapshot.model.symbols.at(snapshot.unit, offset)
+    if found is not None:
+        return describe.symbol(snapshot, found[0]), found[1].span.start, found[1].span.end
+    if token.kind is TokenKind.CONSTANT:
+        text = describe.constant(token.text)
+    elif token.kind in (TokenKind.NAME, TokenKind.LABEL):
+        text = None
+    elif snapshot.settings.dialect is Dialect.V3:
+        word = database().lookup_v3(token.text)
+        text = describe.v3_keyword(word) if word is not None else None
+    else:
+        name = vocabulary(snapshot.settings.dialect).keyword_name(token.text)
+        word = database().lookup(name or token.text)
+        text = describe.keyword(word, snapshot.settings.controller, token.text) if word is not None else None
+    return (text, token.start, token.end) if text is not None else None
+
+
+def register(server: MintServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_HOVER)
+    def hover(params: types.HoverParams) -> types.Hover | None:
+        snapshot = server.snapshot(params.text_document.uri)
+        if snapshot is None:
+            return None
+        found = hover_text(snapshot, snapshot.positions.offset(params.position))
+        if found is None:
+            return None
+        text, start, end = found
+        return types.Hover(
+            contents=types.MarkupContent(kind=types.MarkupKind.Markdown, value=text),
+            range=types.Range(start=snapshot.positions.position(start), end=snapshot.positions.position(end)),
+        )

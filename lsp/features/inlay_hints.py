@@ -1,0 +1,53 @@
+"""Inlay hints: the full name after an abbreviated keyword, the value after a macro use."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from lsprotocol import types
+
+from mintlang.diagnostics import Span
+from mintlang.lsp.lookup import token_index
+from mintlang.lsp.server import MintServer
+from mintlang.lsp.workspace import Snapshot
+from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
+from mintlang.syntax.vocabulary import vocabulary
+
+_KEYWORD_KINDS = GRAMMAR_KEYWORDS | {TokenKind.KEYWORD, TokenKind.FUNCTION}
+
+
+def _hint(snapshot: Snapshot, offset: int, label: str) -> types.InlayHint:
+    return types.InlayHint(position=snapshot.positions.position(offset), label=label, padding_left=True)
+
+
+def hints(snapshot: Snapshot, span: Span) -> Iterator[types.InlayHint]:
+    document = snapshot.document
+    words = vocabulary(snapshot.settings.dialect)
+    tokens = document.tokens
+    for index in range(max(0, token_index(document, span.start)), len(tokens)):
+        token = tokens[index]
+        if token.start > span.end:
+            break
+        if token.kind not in _KEYWORD_KINDS or not token.text.isalnum():
+            continue
+        name = words.keyword_name(token.text)
+        spelled = token.text.upper()
+        if name is not None and spelled != name and not (words.split_channel(spelled) and spelled.startswith(name)):
+            yield _hint(snapshot, token.end, f"({name})")
+    for expansion in document.expansions:
+        if span.start <= expansion.span.start <= span.end:
+            definition = document.macros.get(expansion.macro)
+            if definition is not None:
+                yield _hint(snapshot, expansion.span.end, "= " + " ".join(text for _, text in definition.body))
+
+
+def register(server: MintServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_INLAY_HINT)
+    def inlay(params: types.InlayHintParams) -> list[types.InlayHint]:
+        snapshot = server.snapshot(params.text_document.uri)
+        if snapshot is None or snapshot.skipped is not None:
+            return []
+        return sorted(
+            hints(snapshot, snapshot.positions.span(params.range)),
+            key=lambda hint: (hint.position.line, hint.position.character),
+        )

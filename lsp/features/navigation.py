@@ -1,0 +1,65 @@
+"""Go to definition, find references and document highlight for user symbols.
+
+Identity is the controller's (case-insensitive, ten significant characters),
+as resolved by the core's symbol table; macros and variables of the
+configuration file are found from the program and back.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from lsprotocol import types
+
+from mintlang.lsp.server import MintServer
+from mintlang.lsp.workspace import Snapshot
+from mintlang.semantic.symbols import Occurrence, Symbol
+
+
+def symbol_at(snapshot: Snapshot, position: types.Position) -> tuple[Symbol, Occurrence] | None:
+    return snapshot.model.symbols.at(snapshot.unit, snapshot.positions.offset(position))
+
+
+def locations(snapshot: Snapshot, occurrences: Iterable[Occurrence]) -> list[types.Location]:
+    """LSP locations of occurrences in whichever file of the application holds them."""
+    found = []
+    for occurrence in occurrences:
+        file = snapshot.files.get(occurrence.unit)
+        if file is not None:
+            found.append(types.Location(uri=file.uri, range=file.positions.range(occurrence.span)))
+    return found
+
+
+def register(server: MintServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_DEFINITION)
+    def definition(params: types.DefinitionParams) -> list[types.Location] | None:
+        snapshot = server.snapshot(params.text_document.uri)
+        found = symbol_at(snapshot, params.position) if snapshot else None
+        if snapshot is None or found is None:
+            return None
+        return locations(snapshot, found[0].definitions) or None
+
+    @server.feature(types.TEXT_DOCUMENT_REFERENCES)
+    def references(params: types.ReferenceParams) -> list[types.Location] | None:
+        snapshot = server.snapshot(params.text_document.uri)
+        found = symbol_at(snapshot, params.position) if snapshot else None
+        if snapshot is None or found is None:
+            return None
+        symbol = found[0]
+        wanted = symbol.occurrences() if params.context.include_declaration else symbol.references
+        return locations(snapshot, wanted)
+
+    @server.feature(types.TEXT_DOCUMENT_DOCUMENT_HIGHLIGHT)
+    def highlight(params: types.DocumentHighlightParams) -> list[types.DocumentHighlight] | None:
+        snapshot = server.snapshot(params.text_document.uri)
+        found = symbol_at(snapshot, params.position) if snapshot else None
+        if snapshot is None or found is None:
+            return None
+        return [
+            types.DocumentHighlight(
+                range=snapshot.positions.range(occurrence.span),
+                kind=types.DocumentHighlightKind.Write if occurrence.is_write else types.DocumentHighlightKind.Read,
+            )
+            for occurrence in found[0].occurrences()
+            if occurrence.unit is snapshot.unit
+        ]

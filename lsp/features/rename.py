@@ -1,0 +1,83 @@
+"""Rename variables, arrays, labels and macros; keywords and colliding names are refused.
+
+A new name must lex as a user name of the dialect (not a keyword, constant or
+abbreviation) and must not equal another symbol in its first ten characters,
+which the controller would take for the same name.
+"""
+
+from __future__ import annotations
+
+from lsprotocol import types
+from pygls.exceptions import JsonRpcException
+
+from mintlang.diagnostics import Span
+from mintlang.lsp.lookup import token_at
+from mintlang.lsp.server import MintServer
+from mintlang.lsp.workspace import Snapshot
+from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind
+from mintlang.syntax.lexer import lex
+from mintlang.syntax.nodes import identity
+from mintlang.syntax.tokens import TokenKind
+
+
+class RenameRefused(JsonRpcException):
+    CODE = -32803  # LSP RequestFailed: the request was valid but cannot be honoured
+
+
+def _spelling(occurrence: Occurrence) -> Span:
+    """The span of the name itself (a label definition's span also covers its ``#``)."""
+    return Span(occurrence.span.end - len(occurrence.spelling), occurrence.span.end)
+
+
+def _target(snapshot: Snapshot, offset: int) -> tuple[Symbol, Occurrence]:
+    found = snapshot.model.symbols.at(snapshot.unit, offset)
+    if found is not None:
+        return found
+    token = token_at(snapshot.document, offset)
+    if token is not None and token.kind not in (TokenKind.NAME, TokenKind.LABEL):
+        raise RenameRefused(f"{token.text} is a Mint keyword or constant: only user names can be renamed")
+    raise RenameRefused("There is no variable, array, label or macro here")
+
+
+def _check_name(snapshot: Snapshot, symbol: Symbol, name: str) -> None:
+    tokens = [token for token in lex(name, snapshot.settings.dialect).tokens if token.kind is not TokenKind.NEWLINE]
+    if len(tokens) != 1 or tokens[0].kind is not TokenKind.NAME or tokens[0].text != name:
+        raise RenameRefused(f"'{name}' is not a valid Mint name (a keyword, a constant or not a single word)")
+    table = snapshot.model.symbols
+    if symbol.kind is SymbolKind.LABEL:
+        others = list(table.labels[symbol.unit].values())
+    else:
+        others = [*table.variables.values(), *table.macros.values()]
+    for other in others:
+        if other is not symbol and other.identity == identity(name):
+            raise RenameRefused(
+                f"'{name}' would be the same name as '{other.name}' to the controller (first ten characters count)"
+            )
+
+
+def register(server: MintServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_PREPARE_RENAME)
+    def prepare(params: types.PrepareRenameParams) -> types.PrepareRenamePlaceholder | None:
+        snapshot = server.snapshot(params.text_document.uri)
+        if snapshot is None:
+            return None
+        _, occurrence = _target(snapshot, snapshot.positions.offset(params.position))
+        return types.PrepareRenamePlaceholder(
+            range=snapshot.positions.range(_spelling(occurrence)), placeholder=occurrence.spelling
+        )
+
+    @server.feature(types.TEXT_DOCUMENT_RENAME, types.RenameOptions(prepare_provider=True))
+    def rename(params: types.RenameParams) -> types.WorkspaceEdit | None:
+        snapshot = server.snapshot(params.text_document.uri)
+        if snapshot is None:
+            return None
+        symbol, _ = _target(snapshot, snapshot.positions.offset(params.position))
+        name = params.new_name.removeprefix("#") if symbol.kind is SymbolKind.LABEL else params.new_name
+        _check_name(snapshot, symbol, name)
+        changes: dict[str, list[types.TextEdit]] = {}
+        for occurrence in symbol.occurrences():
+            file = snapshot.files.get(occurrence.unit)
+            if file is not None:
+                edit = types.TextEdit(range=file.positions.range(_spelling(occurrence)), new_text=name)
+                changes.setdefault(file.uri, []).append(edit)
+        return types.WorkspaceEdit(changes=changes)

@@ -1,0 +1,49 @@
+"""``mint.*`` settings from ``initializationOptions`` and ``workspace/configuration``."""
+
+from __future__ import annotations
+
+import logging
+
+from lsprotocol import types
+
+from mintlang.lsp.server import MintServer
+from mintlang.lsp.workspace import Settings
+
+log = logging.getLogger(__name__)
+
+
+def register(server: MintServer) -> None:
+    @server.feature(types.INITIALIZE)
+    def initialize(params: types.InitializeParams) -> None:
+        server.analyses.settings = Settings.from_options(params.initialization_options)
+        server.analyses.encoding = server.workspace.position_encoding or types.PositionEncodingKind.Utf16
+
+    @server.feature(types.INITIALIZED)
+    async def initialized(_: types.InitializedParams) -> None:
+        await _pull(server)
+
+    @server.feature(types.WORKSPACE_DID_CHANGE_CONFIGURATION)
+    async def changed(params: types.DidChangeConfigurationParams) -> None:
+        if params.settings:
+            server.analyses.settings = Settings.from_options(params.settings, server.analyses.settings)
+        await _pull(server)
+        from mintlang.lsp.features.diagnostics import publish  # noqa: PLC0415  (a sibling feature)
+
+        for uri in list(server.workspace.text_documents):
+            publish(server, uri)
+
+
+async def _pull(server: MintServer) -> None:
+    """Ask a client that supports it for the ``mint`` section; keep what we have otherwise."""
+    workspace = server.client_capabilities.workspace
+    if workspace is None or not workspace.configuration:
+        return
+    try:
+        answer = await server.workspace_configuration_async(
+            types.ConfigurationParams(items=[types.ConfigurationItem(section="mint")])
+        )
+    except Exception as error:  # a client that fails the request leaves the settings as they are
+        log.warning("workspace/configuration failed: %s", error)
+        return
+    if answer:
+        server.analyses.settings = Settings.from_options(answer[0], server.analyses.settings)

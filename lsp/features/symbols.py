@@ -1,0 +1,112 @@
+"""Document outline (subroutines, event handlers, variables, macros) and workspace symbols."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from lsprotocol import types
+
+from mintlang.lsp.features.navigation import locations
+from mintlang.lsp.server import MintServer
+from mintlang.lsp.workspace import Snapshot
+from mintlang.semantic.events import event_of
+from mintlang.semantic.symbols import Symbol, SymbolKind
+
+_KINDS = {
+    SymbolKind.VARIABLE: types.SymbolKind.Variable,
+    SymbolKind.ARRAY: types.SymbolKind.Array,
+    SymbolKind.MACRO: types.SymbolKind.Constant,
+}
+
+
+@dataclass(frozen=True, slots=True)
+class Section:
+    """A labelled part of a file: from its label to its last line before the next label (0-based lines)."""
+
+    symbol: Symbol
+    first_line: int
+    last_line: int
+    is_event: bool
+
+
+def sections(snapshot: Snapshot) -> list[Section]:
+    labels = sorted(
+        (label for label in snapshot.model.symbols.labels[snapshot.unit].values() if label.definitions),
+        key=lambda label: label.definitions[0].span.start,
+    )
+    lines = [snapshot.positions.position(label.definitions[0].span.start).line for label in labels]
+    ends = [line - 1 for line in lines[1:]] + [snapshot.positions.line_count - 1]
+    dialect = snapshot.settings.dialect
+    return [
+        Section(label, first, _last_written(snapshot, first, last), event_of(label.name, dialect) is not None)
+        for label, first, last in zip(labels, lines, ends, strict=True)
+    ]
+
+
+def _last_written(snapshot: Snapshot, first: int, last: int) -> int:
+    """``last`` moved up over blank lines, so a section does not swallow the gap before the next."""
+    source, positions = snapshot.document.source, snapshot.positions
+    while last > first:
+        start = positions.line_start(last)
+        end = positions.line_start(last + 1) if last + 1 < positions.line_count else len(source)
+        if source[start:end].strip():
+            break
+        last -= 1
+    return last
+
+
+def _document_symbols(snapshot: Snapshot) -> Iterator[types.DocumentSymbol]:
+    positions = snapshot.positions
+    for section in sections(snapshot):
+        definition = section.symbol.definitions[0]
+        end = positions.line_start(section.last_line + 1) if section.last_line + 1 < positions.line_count else None
+        whole = types.Range(
+            start=types.Position(line=section.first_line, character=0),
+            end=positions.position(end) if end is not None else positions.position(len(snapshot.document.source)),
+        )
+        yield types.DocumentSymbol(
+            name=f"#{section.symbol.name}",
+            kind=types.SymbolKind.Event if section.is_event else types.SymbolKind.Function,
+            detail="event handler" if section.is_event else "subroutine",
+            range=whole if whole.end.line >= whole.start.line else positions.range(definition.span),
+            selection_range=positions.range(definition.span),
+        )
+    table = snapshot.model.symbols
+    for symbol in (*table.variables.values(), *table.macros.values()):
+        definition = symbol.definition
+        if definition is not None and definition.unit is snapshot.unit:
+            yield types.DocumentSymbol(
+                name=symbol.name,
+                kind=_KINDS[symbol.kind],
+                detail=symbol.kind.value,
+                range=positions.range(definition.span),
+                selection_range=positions.range(definition.span),
+            )
+
+
+def register(server: MintServer) -> None:
+    @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
+    def outline(params: types.DocumentSymbolParams) -> list[types.DocumentSymbol]:
+        snapshot = server.snapshot(params.text_document.uri)
+        if snapshot is None:
+            return []
+        return sorted(_document_symbols(snapshot), key=lambda s: (s.range.start.line, s.range.start.character))
+
+    @server.feature(types.WORKSPACE_SYMBOL)
+    def workspace_symbols(params: types.WorkspaceSymbolParams) -> list[types.WorkspaceSymbol]:
+        query = params.query.upper()
+        found: dict[tuple[str, int, int], types.WorkspaceSymbol] = {}
+        for uri in list(server.workspace.text_documents):
+            snapshot = server.snapshot(uri)
+            if snapshot is None:
+                continue
+            for symbol in snapshot.model.symbols.all():
+                if not symbol.definitions or query not in symbol.name.upper():
+                    continue
+                kind = _KINDS.get(symbol.kind, types.SymbolKind.Function)
+                name = f"#{symbol.name}" if symbol.kind is SymbolKind.LABEL else symbol.name
+                for location in locations(snapshot, symbol.definitions[:1]):
+                    key = (location.uri, location.range.start.line, location.range.start.character)
+                    found[key] = types.WorkspaceSymbol(name=name, kind=kind, location=location)
+        return list(found.values())

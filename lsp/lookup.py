@@ -1,0 +1,50 @@
+"""Finding tokens of the core's lossless token stream at an offset, or of the line being typed."""
+
+from __future__ import annotations
+
+from bisect import bisect_right
+from operator import attrgetter
+
+from lsprotocol import types
+
+from mintlang.dialect import Dialect
+from mintlang.lsp.positions import Positions
+from mintlang.syntax.lexer import lex
+from mintlang.syntax.parser import Document
+from mintlang.syntax.tokens import TRIVIA, WORDS, Token, TokenKind
+
+_START = attrgetter("start")
+WORD_KINDS = WORDS | {TokenKind.LABEL}
+
+
+def token_index(document: Document, offset: int) -> int:
+    """Index of the token containing ``offset`` (the last token at the end of the text); -1 if none."""
+    return bisect_right(document.tokens, offset, key=_START) - 1
+
+
+def token_at(document: Document, offset: int) -> Token | None:
+    """The word token under the cursor: containing ``offset``, or ending there (cursor after a word)."""
+    tokens = document.tokens
+    index = token_index(document, offset)
+    for candidate in (index, index - 1):
+        if 0 <= candidate < len(tokens):
+            token = tokens[candidate]
+            if token.kind in WORD_KINDS and token.start <= offset <= token.end:
+                return token
+    return None
+
+
+def line_prefix(positions: Positions, text: str, position: types.Position) -> str:
+    """The text of the cursor's line up to the cursor."""
+    offset = positions.offset(position)
+    return text[positions.line_start(position.line) : offset]
+
+
+def prefix_tokens(prefix: str, dialect: Dialect) -> list[Token]:
+    """The core lexer's tokens of a line prefix; completion and signature help read the line being
+    typed this way, without waiting for the whole file to be analysed again."""
+    return [token for token in lex(prefix, dialect).tokens if token.kind is not TokenKind.NEWLINE]
+
+
+def significant(tokens: list[Token]) -> list[Token]:
+    return [token for token in tokens if token.kind not in TRIVIA]

@@ -1,0 +1,73 @@
+"""The language server object: shared state and the registration of every feature.
+
+One ``MintServer`` holds the open documents (pygls' workspace) and their
+analyses; each module of ``features`` registers the handlers of one LSP
+feature on it. pygls answers any exception raised in a request handler with
+an error response and logs it, so no handler can stop the server.
+"""
+
+from __future__ import annotations
+
+import logging
+from pathlib import Path
+
+from lsprotocol import types
+from pygls.lsp.server import LanguageServer
+from pygls.uris import to_fs_path
+
+from mintlang.lsp import __version__
+from mintlang.lsp.lookup import line_prefix
+from mintlang.lsp.positions import Positions
+from mintlang.lsp.workspace import MAX_CHARACTERS, Analyses, Snapshot
+from mintlang.source import decode
+
+log = logging.getLogger(__name__)
+
+
+class MintServer(LanguageServer):
+    def __init__(self) -> None:
+        super().__init__("mint-lsp", __version__)
+        self.analyses = Analyses(read=self.read_text)
+
+    def read_text(self, uri: str) -> str | None:
+        """The text of an open document, else of the file on disk; None when there is none."""
+        document = self.workspace.text_documents.get(uri)
+        if document is not None:
+            return document.source
+        path = to_fs_path(uri)
+        if path is None:
+            return None
+        file = Path(path)
+        try:
+            if not file.is_file() or file.stat().st_size > 4 * MAX_CHARACTERS:
+                return None
+            return decode(file.read_bytes())[0]  # cp1252 and latin-1 files as mint check reads them
+        except OSError as error:
+            log.warning("cannot read %s: %s", path, error)
+            return None
+
+    def snapshot(self, uri: str) -> Snapshot | None:
+        """The analysis of an open document; None for documents the client never opened."""
+        document = self.workspace.text_documents.get(uri)
+        if document is None:
+            return None
+        return self.analyses.snapshot(uri, document.source, document.version)
+
+    def typing(self, uri: str, position: types.Position) -> tuple[Snapshot, str] | None:
+        """The last analysis of a document (maybe a few keystrokes old) and its current line up to
+        ``position``: enough for completion and signature help, which must not wait for a new check."""
+        document = self.workspace.text_documents.get(uri)
+        if document is None:
+            return None
+        snapshot = self.analyses.latest(uri) or self.analyses.snapshot(uri, document.source, document.version)
+        positions = Positions(document.source, self.analyses.encoding)
+        return snapshot, line_prefix(positions, document.source, position)
+
+
+def create_server() -> MintServer:
+    from mintlang.lsp.features import FEATURES  # noqa: PLC0415  (features import MintServer)
+
+    server = MintServer()
+    for feature in FEATURES:
+        feature.register(server)
+    return server

@@ -1,0 +1,191 @@
+"""Per-document analyses, cached by version, with the paired configuration file.
+
+Every feature reads a ``Snapshot``: the text of one version, the core's
+semantic model and diagnostics for it, and how to turn its offsets into LSP
+positions. A snapshot is computed at most once per (version, partner text,
+settings), so hover and completion after a check cost no re-analysis.
+"""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from pygls.uris import from_fs_path, to_fs_path
+
+import mintlang
+from mintlang.dialect import Dialect
+from mintlang.keyworddb.model import Controller
+from mintlang.lsp.positions import Positions
+from mintlang.semantic.model import SemanticModel
+from mintlang.semantic.units import Unit
+from mintlang.syntax.parser import Document
+
+log = logging.getLogger(__name__)
+
+MAX_CHARACTERS = 500_000  # larger files are not analysed (about 25,000 lines, a second of checking)
+PROGRAM_SUFFIX = ".mnt"
+
+
+@dataclass(frozen=True, slots=True)
+class Settings:
+    """The ``mint.*`` settings; ``configPairing`` names the configuration file of ``<name>.mnt``."""
+
+    controller: Controller = Controller.NEXTMOVE_PCI
+    dialect: Dialect = Dialect.V4
+    config_pairing: str = "<name>.cfg"
+    debounce_ms: int = 150
+
+    @classmethod
+    def from_options(cls, options: object, base: Settings | None = None) -> Settings:
+        """Settings from ``initializationOptions`` or a configuration answer; bad values keep ``base``."""
+        base = base or cls()
+        if isinstance(options, Mapping) and isinstance(options.get("mint"), Mapping):
+            options = options["mint"]
+        if not isinstance(options, Mapping):
+            return base
+        values = {
+            "controller": base.controller,
+            "dialect": base.dialect,
+            "config_pairing": base.config_pairing,
+            "debounce_ms": base.debounce_ms,
+        }
+        for key, name, convert in (
+            ("controller", "controller", Controller),
+            ("dialect", "dialect", Dialect),
+            ("configPairing", "config_pairing", str),
+            ("debounceMs", "debounce_ms", int),
+        ):
+            if options.get(key) is not None:
+                try:
+                    values[name] = convert(options[key])
+                except (ValueError, TypeError):
+                    log.warning("ignoring setting mint.%s = %r", key, options[key])
+        return cls(**values)
+
+
+@dataclass(frozen=True, slots=True)
+class File:
+    uri: str
+    positions: Positions
+
+
+@dataclass(frozen=True, slots=True)
+class Snapshot:
+    """One analysed version of a document (program or configuration file)."""
+
+    uri: str
+    version: int | None
+    unit: Unit
+    model: SemanticModel
+    diagnostics: tuple[mintlang.Diagnostic, ...]
+    files: Mapping[Unit, File]
+    settings: Settings
+    skipped: str | None = None  # why the text was not analysed (binary, too large)
+
+    @property
+    def document(self) -> Document:
+        document = self.model.configuration if self.unit is Unit.CONFIGURATION else self.model.program
+        assert document is not None
+        return document
+
+    @property
+    def positions(self) -> Positions:
+        return self.files[self.unit].positions
+
+
+TextReader = Callable[[str], str | None]  # uri -> text of an open document or file on disk, if any
+
+
+def _pairing(pattern: str) -> tuple[str, str] | None:
+    if "<name>" not in pattern:
+        return None
+    prefix, _, suffix = pattern.partition("<name>")
+    return prefix, suffix
+
+
+def partner(uri: str, settings: Settings) -> tuple[Unit, str | None]:
+    """Which file ``uri`` is, and the URI of the other file of its application."""
+    path = to_fs_path(uri)
+    pairing = _pairing(settings.config_pairing)
+    if path is None or pairing is None:
+        return Unit.PROGRAM, None
+    file = Path(path)
+    prefix, suffix = pairing
+    if file.name.lower().endswith(suffix.lower()) and file.name.startswith(prefix) and suffix:
+        stem = file.name[len(prefix) : len(file.name) - len(suffix)]
+        return Unit.CONFIGURATION, from_fs_path(str(file.with_name(stem + PROGRAM_SUFFIX)))
+    if file.suffix.lower() == PROGRAM_SUFFIX:
+        return Unit.PROGRAM, from_fs_path(str(file.with_name(prefix + file.stem + suffix)))
+    return Unit.PROGRAM, None
+
+
+def _unreadable(text: str) -> str | None:
+    if "\x00" in text:
+        return "binary file: not analysed"
+    if len(text) > MAX_CHARACTERS:
+        return f"file larger than {MAX_CHARACTERS} characters: not analysed"
+    return None
+
+
+@dataclass
+class Analyses:
+    """The cache of snapshots, one per open document."""
+
+    read: TextReader
+    settings: Settings = field(default_factory=Settings)
+    encoding: str = "utf-16"  # the position encoding negotiated with the client
+    _cache: dict[str, tuple[tuple[object, ...], Snapshot]] = field(default_factory=dict)
+
+    def snapshot(self, uri: str, text: str, version: int | None) -> Snapshot:
+        """The analysis of ``text``, reused while neither it, its partner nor the settings change."""
+        settings = self.settings
+        unit, other = partner(uri, settings)
+        other_text = self.read(other) if other is not None else None
+        key = (version, text, other_text, settings, self.encoding)
+        cached = self._cache.get(uri)
+        if cached is not None and cached[0] == key:
+            return cached[1]
+        snapshot = self._analyse(uri, text, version, unit=unit, other=other, other_text=other_text, settings=settings)
+        self._cache[uri] = (key, snapshot)
+        return snapshot
+
+    def latest(self, uri: str) -> Snapshot | None:
+        """The last snapshot of ``uri`` whatever its version."""
+        cached = self._cache.get(uri)
+        return cached[1] if cached is not None else None
+
+    def forget(self, uri: str) -> None:
+        self._cache.pop(uri, None)
+
+    def _analyse(
+        self,
+        uri: str,
+        text: str,
+        version: int | None,
+        *,
+        unit: Unit,
+        other: str | None,
+        other_text: str | None,
+        settings: Settings,
+    ) -> Snapshot:
+        skipped = _unreadable(text)
+        if other_text is not None and _unreadable(other_text):
+            other_text = None
+        mine = "" if skipped else text
+        if unit is Unit.CONFIGURATION:
+            program, config = other_text or "", mine
+        else:
+            program, config = mine, other_text
+        analysis = mintlang.check_application(
+            program, dialect=settings.dialect, controller=settings.controller, config=config
+        )
+        files = {unit: File(uri, Positions(text, self.encoding))}
+        if other is not None and other_text is not None:
+            files[Unit.PROGRAM if unit is Unit.CONFIGURATION else Unit.CONFIGURATION] = File(
+                other, Positions(other_text, self.encoding)
+            )
+        own = analysis.configuration if unit is Unit.CONFIGURATION else analysis.program
+        return Snapshot(uri, version, unit, analysis.model, own, files, settings, skipped)

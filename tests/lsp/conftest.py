@@ -1,0 +1,78 @@
+"""A real ``mint-lsp`` over stdio for every test, and helpers to drive it like an editor."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest_lsp
+from lsprotocol import types
+from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
+
+CORPUS = Path(__file__).parents[1] / "corpus" / "v4" / "valid"
+SERVER = [sys.executable, "-m", "mintlang.lsp"]
+
+
+@pytest_lsp.fixture(config=ClientServerConfig(server_command=SERVER))
+async def client(lsp_client: LanguageClient):
+    params = types.InitializeParams(
+        capabilities=client_capabilities("visual-studio-code"),
+        initialization_options={"mint": {"debounceMs": 20}},
+    )
+    await lsp_client.initialize_session(params)
+    yield
+    await lsp_client.shutdown_session()
+
+
+def corpus(name: str) -> str:
+    return (CORPUS / name).read_text(encoding="utf-8")
+
+
+def uri_of(path: Path) -> str:
+    return path.resolve().as_uri()
+
+
+async def open_document(client: LanguageClient, uri: str, text: str, version: int = 1) -> list[types.Diagnostic]:
+    """Open ``text`` and return the diagnostics the server publishes for it."""
+    client.text_document_did_open(
+        types.DidOpenTextDocumentParams(
+            text_document=types.TextDocumentItem(uri=uri, language_id="mint", version=version, text=text)
+        )
+    )
+    return await published(client, uri)
+
+
+async def published(client: LanguageClient, uri: str) -> list[types.Diagnostic]:
+    """Wait for the next diagnostics of ``uri``."""
+    while True:
+        params = await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+        if params.uri == uri:
+            return list(params.diagnostics)
+
+
+Place = tuple[int, int]  # line, character
+
+
+def change(client: LanguageClient, uri: str, version: int, where: tuple[Place, Place], text: str) -> None:
+    """An incremental edit: replace the range ``where`` with ``text``."""
+    start, end = where
+    edit_range = types.Range(
+        start=types.Position(line=start[0], character=start[1]), end=types.Position(line=end[0], character=end[1])
+    )
+    client.text_document_did_change(
+        types.DidChangeTextDocumentParams(
+            text_document=types.VersionedTextDocumentIdentifier(uri=uri, version=version),
+            content_changes=[types.TextDocumentContentChangePartial(range=edit_range, text=text)],
+        )
+    )
+
+
+def position(text: str, needle: str, shift: int = 0) -> types.Position:
+    """The position of the first ``needle`` in ``text`` (ASCII), moved ``shift`` characters right."""
+    offset = text.index(needle) + shift
+    line = text.count("\n", 0, offset)
+    return types.Position(line=line, character=offset - (text.rfind("\n", 0, offset) + 1))
+
+
+def document(uri: str) -> types.TextDocumentIdentifier:
+    return types.TextDocumentIdentifier(uri=uri)

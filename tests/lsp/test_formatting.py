@@ -1,0 +1,82 @@
+"""Formatting: upper-case keywords and block indentation, nothing else touched."""
+
+from __future__ import annotations
+
+import pytest
+from lsprotocol import types
+
+from tests.lsp.conftest import document, open_document, uri_of
+
+pytestmark = pytest.mark.asyncio
+SPACES = types.FormattingOptions(tab_size=2, insert_spaces=True)
+
+
+def apply(text: str, edits: list[types.TextEdit]) -> str:
+    lines = text.split("\n")
+    for edit in sorted(edits, key=lambda e: (e.range.start.line, e.range.start.character), reverse=True):
+        start, end = edit.range.start, edit.range.end
+        assert start.line == end.line
+        line = lines[start.line]
+        lines[start.line] = line[: start.character] + edit.new_text + line[end.character :]
+    return "\n".join(lines)
+
+
+SOURCE = """\
+rem keep   THIS comment
+dim i
+#main
+loop
+for i = 1 to 10
+if in1 do
+print "if in1 do"  :  REM   spacing kept
+   else
+   out1=0
+endif
+next
+endl
+return
+"""
+FORMATTED = """\
+rem keep   THIS comment
+DIM i
+#main
+LOOP
+  FOR i = 1 TO 10
+    IF IN1 DO
+      PRINT "if in1 do"  :  REM   spacing kept
+    ELSE
+      OUT1=0
+    ENDIF
+  NEXT
+ENDL
+RETURN
+"""
+
+
+async def test_whole_document(client, tmp_path):
+    uri = uri_of(tmp_path / "messy.mnt")
+    await open_document(client, uri, SOURCE)
+    edits = await client.text_document_formatting_async(
+        types.DocumentFormattingParams(text_document=document(uri), options=SPACES)
+    )
+    assert apply(SOURCE, edits) == FORMATTED
+
+
+async def test_formatted_text_is_stable(client, tmp_path):
+    uri = uri_of(tmp_path / "tidy.mnt")
+    await open_document(client, uri, FORMATTED)
+    edits = await client.text_document_formatting_async(
+        types.DocumentFormattingParams(text_document=document(uri), options=SPACES)
+    )
+    assert not edits
+
+
+async def test_range_formats_only_those_lines(client, tmp_path):
+    uri = uri_of(tmp_path / "part.mnt")
+    await open_document(client, uri, SOURCE)
+    selection = types.Range(start=types.Position(line=4, character=0), end=types.Position(line=4, character=3))
+    edits = await client.text_document_range_formatting_async(
+        types.DocumentRangeFormattingParams(text_document=document(uri), range=selection, options=SPACES)
+    )
+    assert {e.range.start.line for e in edits} == {4}
+    assert apply(SOURCE, edits).split("\n")[4] == "  FOR i = 1 TO 10"

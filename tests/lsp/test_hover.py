@@ -1,0 +1,60 @@
+"""Hover on keywords in any spelling, constants, variables, arrays, macros and labels."""
+
+from __future__ import annotations
+
+import pytest
+from lsprotocol import types
+
+from tests.lsp.conftest import corpus, document, open_document, position, uri_of
+
+pytestmark = pytest.mark.asyncio
+
+
+async def hover_at(client, uri, text, needle, shift=0) -> str | None:
+    found = await client.text_document_hover_async(
+        types.HoverParams(text_document=document(uri), position=position(text, needle, shift))
+    )
+    return found.contents.value if found is not None else None
+
+
+async def test_keyword_full_abbreviated_and_lower_case(client, tmp_path):
+    text = "DIM a\nSPEED[0] = 10\nsp.1 = 20\na = In3\n"
+    uri = uri_of(tmp_path / "keywords.mnt")
+    await open_document(client, uri, text)
+    full = await hover_at(client, uri, text, "SPEED")
+    assert "**SPEED** (abbreviation SP)" in full
+    assert "SPEED[axes] = <expression>" in full
+    assert "Addressing: by axis" in full
+    assert "Access: read, write" in full
+    assert "Controllers: NextMove PCI" in full
+    assert "Slew speed" in full
+    assert await hover_at(client, uri, text, "sp.1") == full
+    glued = await hover_at(client, uri, text, "In3", 1)
+    assert "**IN**" in glued and "channel 3" in glued
+
+
+async def test_constant_shows_its_value(client, tmp_path):
+    text = "DIM a\na = _TRUE\n"
+    uri = uri_of(tmp_path / "constant.mnt")
+    await open_document(client, uri, text)
+    assert "= `1`" in await hover_at(client, uri, text, "_TRUE", 2)
+
+
+async def test_symbols_say_where_they_are_declared(client, tmp_path):
+    text = corpus("ch01_l0144_xy_example.mnt") + "DEFINE fast = 100 * 2\nDIM b\nb = fast\n"
+    uri = uri_of(tmp_path / "xy.mnt")
+    await open_document(client, uri, text)
+    array = await hover_at(client, uri, text, "xpos(a)")
+    assert array == "**xpos**(10) — array, declared at line 7 of the program"
+    assert "variable, declared at line 21" in await hover_at(client, uri, text, "a = 1 to", 0)
+    assert "label, at line 14" in await hover_at(client, uri, text, "GOSUB init", 7)
+    macro = await hover_at(client, uri, text, "b = fast", 5)
+    assert "macro, defined at line 41" in macro and "DEFINE fast = 100 * 2" in macro
+
+
+async def test_event_handler_and_nothing_on_blank(client, tmp_path):
+    text = "END\n#ONERROR\nRETURN\n\n"
+    uri = uri_of(tmp_path / "events.mnt")
+    await open_document(client, uri, text)
+    assert "event handler (ONERROR)" in await hover_at(client, uri, text, "#ONERROR", 2)
+    assert await hover_at(client, uri, text, "\n\n", 1) is None

@@ -1,0 +1,20 @@
+"""Inlay hints: full names of abbreviated keywords and the values of macros."""
+
+from __future__ import annotations
+
+import pytest
+from lsprotocol import types
+
+from tests.lsp.conftest import document, open_document, uri_of
+
+pytestmark = pytest.mark.asyncio
+
+
+async def test_abbreviations_and_macros(client, tmp_path):
+    text = "DEFINE fast = 100 * 2\nsp.0 = fast\nSPEED.1 = 10\nDIM a\na = IN3\n"
+    uri = uri_of(tmp_path / "hints.mnt")
+    await open_document(client, uri, text)
+    whole = types.Range(start=types.Position(line=0, character=0), end=types.Position(line=5, character=0))
+    hints = await client.text_document_inlay_hint_async(types.InlayHintParams(text_document=document(uri), range=whole))
+    found = [((h.position.line, h.position.character), h.label) for h in hints]
+    assert found == [((1, 2), "(SPEED)"), ((1, 11), "= 100 * 2")]

@@ -1,0 +1,71 @@
+"""Definition, references and highlights across the program and its configuration file."""
+
+from __future__ import annotations
+
+import pytest
+from lsprotocol import types
+
+from tests.lsp.conftest import corpus, document, open_document, position, uri_of
+
+pytestmark = pytest.mark.asyncio
+XY = corpus("ch01_l0144_xy_example.mnt")
+
+
+async def test_definition_of_a_label_and_an_array(client, tmp_path):
+    uri = uri_of(tmp_path / "xy.mnt")
+    await open_document(client, uri, XY)
+    [label] = await client.text_document_definition_async(
+        types.DefinitionParams(text_document=document(uri), position=position(XY, "GOSUB main", 7))
+    )
+    assert label.range.start == types.Position(line=19, character=0)
+    [array] = await client.text_document_definition_async(
+        types.DefinitionParams(text_document=document(uri), position=position(XY, "ypos(a)"))
+    )
+    assert array.range.start == types.Position(line=7, character=4)
+
+
+async def test_references_and_highlights(client, tmp_path):
+    uri = uri_of(tmp_path / "xy.mnt")
+    await open_document(client, uri, XY)
+    where = position(XY, "GOSUB init", 7)
+    context = types.ReferenceContext(include_declaration=True)
+    found = await client.text_document_references_async(
+        types.ReferenceParams(text_document=document(uri), position=where, context=context)
+    )
+    assert sorted(location.range.start.line for location in found) == [9, 13, 35]
+    highlights = await client.text_document_document_highlight_async(
+        types.DocumentHighlightParams(text_document=document(uri), position=position(XY, "FOR a", 4))
+    )
+    kinds = {h.range.start.line: h.kind for h in highlights}
+    assert kinds[20] == types.DocumentHighlightKind.Write and kinds[27] == types.DocumentHighlightKind.Read
+
+
+async def test_ten_significant_characters(client, tmp_path):
+    text = "DIM position_x\nposition_xyz = 1\n"
+    uri = uri_of(tmp_path / "identity.mnt")
+    await open_document(client, uri, text)
+    [found] = await client.text_document_definition_async(
+        types.DefinitionParams(text_document=document(uri), position=position(text, "position_xyz"))
+    )
+    assert found.range.start == types.Position(line=0, character=4)
+
+
+async def test_macro_defined_in_the_configuration_file(client, tmp_path):
+    (tmp_path / "cell.cfg").write_text("REM axes\nDEFINE fast = 500\n", encoding="utf-8")
+    text = "SPEED = fast\n"
+    uri = uri_of(tmp_path / "cell.mnt")
+    await open_document(client, uri, text)
+    [found] = await client.text_document_definition_async(
+        types.DefinitionParams(text_document=document(uri), position=position(text, "fast"))
+    )
+    assert found.uri == uri_of(tmp_path / "cell.cfg")
+    assert found.range.start == types.Position(line=1, character=7)
+
+
+async def test_keywords_have_no_definition(client, tmp_path):
+    uri = uri_of(tmp_path / "xy.mnt")
+    await open_document(client, uri, XY)
+    found = await client.text_document_definition_async(
+        types.DefinitionParams(text_document=document(uri), position=position(XY, "MOVEA"))
+    )
+    assert found is None

@@ -1,0 +1,67 @@
+"""Rename: every occurrence, keywords refused, ten-character collisions rejected."""
+
+from __future__ import annotations
+
+import pytest
+from lsprotocol import types
+from pygls.exceptions import JsonRpcException
+
+from tests.lsp.conftest import corpus, document, open_document, position, uri_of
+
+pytestmark = pytest.mark.asyncio
+XY = corpus("ch01_l0144_xy_example.mnt")
+
+
+async def test_prepare_rename(client, tmp_path):
+    uri = uri_of(tmp_path / "xy.mnt")
+    await open_document(client, uri, XY)
+    prepared = await client.text_document_prepare_rename_async(
+        types.PrepareRenameParams(text_document=document(uri), position=position(XY, "#init", 2))
+    )
+    assert prepared.placeholder == "init"
+    assert prepared.range.start == types.Position(line=13, character=1)
+    with pytest.raises(JsonRpcException, match="keyword"):
+        await client.text_document_prepare_rename_async(
+            types.PrepareRenameParams(text_document=document(uri), position=position(XY, "MOVEA"))
+        )
+
+
+async def test_rename_an_array_and_a_label(client, tmp_path):
+    uri = uri_of(tmp_path / "xy.mnt")
+    await open_document(client, uri, XY)
+    edit = await client.text_document_rename_async(
+        types.RenameParams(text_document=document(uri), position=position(XY, "xpos(a)"), new_name="x_positions")
+    )
+    assert sorted(e.range.start.line for e in edit.changes[uri]) == [6, 27]
+    assert {e.new_text for e in edit.changes[uri]} == {"x_positions"}
+    edit = await client.text_document_rename_async(
+        types.RenameParams(text_document=document(uri), position=position(XY, "GOSUB init", 7), new_name="#setup")
+    )
+    assert sorted((e.range.start.line, e.range.start.character) for e in edit.changes[uri]) == [
+        (9, 6),
+        (13, 1),
+        (35, 6),
+    ]
+
+
+@pytest.mark.parametrize(
+    ("new_name", "reason"),
+    [("ypos", "same name as 'ypos'"), ("SPEED", "not a valid Mint name"), ("two words", "not a valid")],
+)
+async def test_rename_refusals(client, tmp_path, new_name, reason):
+    uri = uri_of(tmp_path / "xy.mnt")
+    await open_document(client, uri, XY)
+    with pytest.raises(JsonRpcException, match=reason):
+        await client.text_document_rename_async(
+            types.RenameParams(text_document=document(uri), position=position(XY, "xpos(a)"), new_name=new_name)
+        )
+
+
+async def test_collision_in_the_first_ten_characters(client, tmp_path):
+    text = "DIM axis_speed_x\nDIM count\ncount = axis_speed_x\n"
+    uri = uri_of(tmp_path / "ten.mnt")
+    await open_document(client, uri, text)
+    with pytest.raises(JsonRpcException, match="first ten characters"):
+        await client.text_document_rename_async(
+            types.RenameParams(text_document=document(uri), position=position(text, "count"), new_name="axis_speed_y")
+        )

@@ -1,0 +1,73 @@
+"""Outline, workspace symbols, folding ranges and semantic tokens."""
+
+from __future__ import annotations
+
+import pytest
+from lsprotocol import types
+
+from mintlang.lsp.features.semantic_tokens import TOKEN_TYPES
+from tests.lsp.conftest import corpus, document, open_document, uri_of
+
+pytestmark = pytest.mark.asyncio
+XY = corpus("ch01_l0144_xy_example.mnt")
+
+
+async def test_outline(client, tmp_path):
+    text = XY + "#ONERROR\nRETURN\nDEFINE fast = 10\n"
+    uri = uri_of(tmp_path / "xy.mnt")
+    await open_document(client, uri, text)
+    symbols = await client.text_document_document_symbol_async(types.DocumentSymbolParams(text_document=document(uri)))
+    outline = [(s.name, s.kind) for s in symbols]
+    assert outline == [
+        ("xpos", types.SymbolKind.Array),
+        ("ypos", types.SymbolKind.Array),
+        ("#init", types.SymbolKind.Function),
+        ("#main", types.SymbolKind.Function),
+        ("a", types.SymbolKind.Variable),
+        ("#ONERROR", types.SymbolKind.Event),
+        ("fast", types.SymbolKind.Constant),
+    ]
+    init = symbols[2]
+    assert (init.range.start.line, init.range.end.line) == (13, 18)
+
+
+async def test_workspace_symbols_span_open_documents(client, tmp_path):
+    await open_document(client, uri_of(tmp_path / "xy.mnt"), XY)
+    await open_document(client, uri_of(tmp_path / "menu.mnt"), corpus("ch03_l0815_main_menu_inkey.mnt"))
+    found = await client.workspace_symbol_async(types.WorkspaceSymbolParams(query="ma"))
+    assert {(s.name, s.location.uri.rsplit("/", 1)[1]) for s in found} >= {
+        ("#main", "xy.mnt"),
+        ("#mainMenu", "menu.mnt"),
+    }
+
+
+async def test_folding_blocks_and_subroutines(client, tmp_path):
+    text = "IF IN1 DO\n  OUT1 = 1\nELSE\n  OUT1 = 0\nENDIF\n" + XY
+    uri = uri_of(tmp_path / "fold.mnt")
+    await open_document(client, uri, text)
+    ranges = await client.text_document_folding_range_async(types.FoldingRangeParams(text_document=document(uri)))
+    spans = {(r.start_line, r.end_line) for r in ranges}
+    assert {(0, 1), (2, 3)} <= spans  # the IF's two branches
+    assert {(28, 42), (30, 38)} <= spans  # LOOP .. ENDL, FOR .. NEXT of the XY example (shifted 5 lines)
+    assert (18, 22) in spans  # #init
+
+
+async def test_semantic_tokens(client, tmp_path):
+    text = 'DEFINE fast = 10\nDIM a\na = fast + _TRUE : REM note\nPRINT "x"\n'
+    uri = uri_of(tmp_path / "colour.mnt")
+    await open_document(client, uri, text)
+    tokens = await client.text_document_semantic_tokens_full_async(
+        types.SemanticTokensParams(text_document=document(uri))
+    )
+    data, line, column, decoded = list(tokens.data), 0, 0, []
+    for index in range(0, len(data), 5):
+        delta_line, delta_start, length, kind, _ = data[index : index + 5]
+        line += delta_line
+        column = delta_start if delta_line else column + delta_start
+        decoded.append((text.splitlines()[line][column : column + length], TOKEN_TYPES[kind]))
+    assert ("DEFINE", "keyword") in decoded
+    assert decoded.count(("fast", "macro")) == 2
+    assert ("a", "variable") in decoded
+    assert ("_TRUE", "enumMember") in decoded
+    assert ("REM note", "comment") in decoded
+    assert ('"x"', "string") in decoded

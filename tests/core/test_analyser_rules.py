@@ -323,6 +323,19 @@ def test_a_mint_v3_keyword_is_a_warning_with_its_v4_replacement() -> None:
     assert found(fixed) == []
 
 
+def test_an_old_keyword_with_a_dot_parameter_is_named_too() -> None:
+    (diagnostic,) = mintlang.check("HMSPEED.0 = 10\n")
+    assert (diagnostic.code, [fix.title for fix in diagnostic.fixes]) == ("W102", ["Replace with HOMESPEED"])
+
+
+def test_no_rename_is_offered_to_a_keyword_the_controller_lacks() -> None:
+    # CURRLIMIT became CURRENTLIMIT, which the chapter 10 entry lists for MintDrive and ServoNode only
+    (on_pci,) = mintlang.check("CURRLIMIT = 2\n")
+    assert on_pci.code == "W102" and on_pci.fixes == () and "NextMove PCI lacks" in on_pci.message
+    (on_mintdrive,) = mintlang.check("CURRLIMIT = 2\n", controller="mintdrive")
+    assert [fix.title for fix in on_mintdrive.fixes] == ["Replace with CURRENTLIMIT"]
+
+
 def test_a_declared_variable_named_like_an_old_keyword_is_not_renamed() -> None:
     assert [code for code, _, _ in found("DIM gain\nPRINT gain\n")] == []
 

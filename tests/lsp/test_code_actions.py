@@ -37,9 +37,9 @@ async def test_declare_with_dim(client, tmp_path):
 
 async def test_replace_a_v3_keyword(client, tmp_path):
     uri = uri_of(tmp_path / "v3.mnt")
-    diagnostics = await open_document(client, uri, "CURRLIMIT = 2\n")
+    diagnostics = await open_document(client, uri, "HMSPEED = 2\n")
     fixes = [a for a in await actions(client, uri, diagnostics, 0) if a.kind == types.CodeActionKind.QuickFix]
-    assert "Replace with CURRENTLIMIT" in [a.title for a in fixes]
+    assert "Replace with HOMESPEED" in [a.title for a in fixes]
 
 
 async def test_plain_quotes(client, tmp_path):

@@ -11,6 +11,7 @@ from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.traversal import Facts
+from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
@@ -22,10 +23,17 @@ def check(facts: Facts) -> Iterator[Finding]:
     if model.program.dialect is not Dialect.V4:
         return
     declared = {identity for identity, symbol in model.symbols.variables.items() if symbol.definitions}
-    for unit, name in facts.names:
-        if name.identity in declared:
-            continue  # the user's own variable that happens to share an old keyword's name
-        diagnostic = _old_word(name.text, name.span)
+    db = database()
+    controller = model.controller
+    words = [(unit, name.text, name.span) for unit, name in facts.names if name.identity not in declared]
+    # An old keyword written with a selector (HMSPEED.0 = 10) reads as an unknown keyword.
+    words += [
+        (use.unit, use.keyword.spelling, use.keyword.spelling_span)
+        for use in facts.keyword_uses
+        if use.keyword.keyword not in db.keywords
+    ]
+    for unit, word, span in words:
+        diagnostic = _old_word(word, span, controller)
         if diagnostic is not None:
             yield Finding(unit, diagnostic)
     for unit, document in model.documents():
@@ -41,12 +49,20 @@ def check(facts: Facts) -> Iterator[Finding]:
                     )
 
 
-def _old_word(word: str, span: Span) -> Diagnostic | None:
+def _old_word(word: str, span: Span, controller: ControllerProfile) -> Diagnostic | None:
     db = database()
     rename = db.rename_of(word)
     if rename is not None:
         if len(rename.new) == 1:
             new = rename.new[0]
+            replacement = db.keywords.get(new)
+            if (
+                replacement is not None
+                and replacement.controllers
+                and controller.controller not in replacement.controllers
+            ):
+                detail = f"{word} is a Mint v3 keyword: v4 replaced it by {new}, which {controller.title} lacks"
+                return own("W102", span, detail + " (mint-migrate knows the alternatives)")
             fix = Fix(f"Replace with {new}", (Edit(span, new),))
             return own("W102", span, f"{word} is a Mint v3 keyword: v4 replaced it by {new}", fixes=(fix,))
         replacement = " or ".join(rename.new) if rename.new else "nothing (it was removed)"

@@ -20,8 +20,8 @@ import click
 from rich.console import Console
 
 from mintlang.cli.files import collect, is_configuration
-from mintlang.keyworddb.model import Controller
-from mintlang.migrate.api import DEFAULT_CONTROLLER, UnknownRule, rules, select
+from mintlang.cli.options import controller_option
+from mintlang.migrate.api import UnknownRule, rules, select
 from mintlang.migrate.api import migrate as migrate_text
 from mintlang.migrate.atomic import write_atomic
 from mintlang.migrate.model import MigrationResult
@@ -107,13 +107,7 @@ def _list_rules(console: Console) -> None:
     type=click.Path(path_type=Path),
     help="Configuration file migrated together with the program (its variables are visible there).",
 )
-@click.option(
-    "--controller",
-    type=click.Choice([c.value for c in Controller]),
-    default=DEFAULT_CONTROLLER.value,
-    show_default=True,
-    help="The Mint v4 controller to migrate to.",
-)
+@controller_option("The Mint v4 controller to migrate to.")
 @click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text", show_default=True)
 @click.option("--only", multiple=True, metavar="RULE", help="Run only this rule (repeatable).")
 @click.option("--skip", multiple=True, metavar="RULE", help="Do not run this rule (repeatable).")

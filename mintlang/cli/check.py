@@ -14,10 +14,10 @@ from rich.console import Console
 
 from mintlang import check_application
 from mintlang.cli.files import collect, is_configuration
+from mintlang.cli.options import controller_option
 from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, render_text
 from mintlang.diagnostics import Severity
 from mintlang.dialect import Dialect
-from mintlang.keyworddb.model import Controller
 from mintlang.source import SourceFile, read_source
 
 _USAGE_ERROR = 2
@@ -37,12 +37,7 @@ def _fail(message: str) -> None:
 @click.command()
 @click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path))
 @click.option("--dialect", type=click.Choice([d.value for d in Dialect]), default="v4", show_default=True)
-@click.option(
-    "--controller",
-    type=click.Choice([c.value for c in Controller]),
-    default=Controller.NEXTMOVE_PCI.value,
-    show_default=True,
-)
+@controller_option("The controller the programs run on.")
 @click.option(
     "--config",
     "config_path",

@@ -9,7 +9,7 @@ Names keep their spelling; ``identity`` gives the controller's view of a name
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 from mintlang.diagnostics import Span
@@ -398,40 +398,48 @@ def walk_expression(expression: Expression | StringLiteral | None) -> Iterator[E
             stack.extend(reversed(node.selector.items))  # type: ignore[union-attr]
 
 
-def expressions_of(statement: Statement) -> Iterator[Expression | StringLiteral | None]:
-    """The expressions a statement evaluates, in source order."""
-    match statement:
-        case Assignment(target=target, value=value):
-            if isinstance(target, ElementRef):
-                yield target.index
-            yield value
-        case KeywordStatement(keyword=keyword, terminal=terminal, values=values, arguments=arguments, using=using):
-            if keyword.selector is not None:
-                yield from keyword.selector.items
-            yield terminal
-            yield from values or ()
-            yield from arguments
-            yield from using
-        case FunctionStatement(call=call, values=values):
-            yield from call.arguments
-            yield from values or ()
-        case IfThen(condition=condition) | IfDo(condition=condition):
-            yield condition
-        case Until(condition=condition) | While(condition=condition) | Pause(condition=condition):
-            yield condition
-        case For(start=start, end=end, step=step):
-            yield from (start, end, step)
-        case Dim(size=size, values=values):
-            yield size
-            yield from values
-        case Axes(selector=selector) if selector is not None:
-            yield from selector.items
-        case Print(terminal=terminal, items=items, using=using):
-            yield terminal
-            yield from (item.value for item in items)
-            yield from using
-        case Input(terminal=terminal, target=target, using=using):
-            yield terminal
-            if isinstance(target, ElementRef):
-                yield target.index
-            yield from using
+Evaluated = tuple[Expression | StringLiteral | None, ...]
+
+
+def _element_index(target: VariableRef | ElementRef) -> Evaluated:
+    return (target.index,) if type(target) is ElementRef else ()
+
+
+def _keyword_statement(statement: KeywordStatement) -> Evaluated:
+    selector = statement.keyword.selector
+    return (
+        *(selector.items if selector is not None else ()),
+        statement.terminal,
+        *(statement.values or ()),
+        *statement.arguments,
+        *statement.using,
+    )
+
+
+def _condition(statement: IfThen | IfDo | Until | While | Pause) -> Evaluated:
+    return (statement.condition,)
+
+
+# The expressions of each kind of statement, looked up by exact type: every check asks this
+# for every statement, and a dictionary beats a chain of class patterns.
+_EVALUATED: dict[type, Callable[..., Evaluated]] = {
+    Assignment: lambda s: (*_element_index(s.target), s.value),
+    KeywordStatement: _keyword_statement,
+    FunctionStatement: lambda s: (*s.call.arguments, *(s.values or ())),
+    IfThen: _condition,
+    IfDo: _condition,
+    Until: _condition,
+    While: _condition,
+    Pause: _condition,
+    For: lambda s: (s.start, s.end, s.step),
+    Dim: lambda s: (s.size, *s.values),
+    Axes: lambda s: s.selector.items if s.selector is not None else (),
+    Print: lambda s: (s.terminal, *(item.value for item in s.items), *s.using),
+    Input: lambda s: (s.terminal, *_element_index(s.target), *s.using),
+}
+
+
+def expressions_of(statement: Statement) -> Evaluated:
+    """The expressions a statement evaluates, in source order (``None`` for absent parts)."""
+    evaluated = _EVALUATED.get(type(statement))
+    return evaluated(statement) if evaluated is not None else ()

@@ -34,16 +34,15 @@ _RECEIVERS = frozenset({"ELSE", "ENDIF", "NEXT", "ENDW", "ENDL"})  # reached fro
 
 
 def _ends_flow(statement: n.Statement) -> bool:
-    match statement:
-        case n.BlockWord(word=word):
-            return word in _TERMINATORS
-        case n.Jump(word="GOTO"):
-            return True
-    return False
+    kind = type(statement)
+    if kind is n.BlockWord:
+        return statement.word in _TERMINATORS  # type: ignore[union-attr]
+    return kind is n.Jump and statement.word == "GOTO"  # type: ignore[union-attr]
 
 
 def _receives_flow(statement: n.Statement) -> bool:
-    return isinstance(statement, n.Until) or (isinstance(statement, n.BlockWord) and statement.word in _RECEIVERS)
+    kind = type(statement)
+    return kind is n.Until or (kind is n.BlockWord and statement.word in _RECEIVERS)  # type: ignore[union-attr]
 
 
 def check(facts: Facts) -> Iterator[Finding]:
@@ -126,19 +125,21 @@ class _Flow:
     def _loop_bounds(self, statement: n.Statement) -> None:
         """Open and close loops; after an endless loop nothing that follows runs."""
         dialect = self.document.dialect
-        match statement:
-            case n.BlockWord(word="LOOP"):
-                self.loops.append(_Loop(endless=True))
-            case n.While(condition=condition):
-                self.loops.append(_Loop(endless=bool(constant_value(condition, dialect))))
-            case n.BlockWord(word="REPEAT") | n.For():
-                self.loops.append(_Loop(endless=isinstance(statement, n.BlockWord)))
-            case n.BlockWord(word="ENDL" | "ENDW" | "NEXT") if self.loops:
+        kind = type(statement)
+        if kind is n.BlockWord:
+            word = statement.word  # type: ignore[union-attr]
+            if word in ("LOOP", "REPEAT"):
+                self.loops.append(_Loop(endless=True))  # a REPEAT is endless only if UNTIL says so
+            elif word in ("ENDL", "ENDW", "NEXT") and self.loops:
                 self._close(self.loops.pop())
-            case n.Until(condition=condition) if self.loops:
-                loop = self.loops.pop()
-                loop.endless = loop.endless and constant_value(condition, dialect) == 0
-                self._close(loop)
+        elif kind is n.While:
+            self.loops.append(_Loop(endless=bool(constant_value(statement.condition, dialect))))  # type: ignore[union-attr]
+        elif kind is n.For:
+            self.loops.append(_Loop(endless=False))
+        elif kind is n.Until and self.loops:
+            loop = self.loops.pop()
+            loop.endless = loop.endless and constant_value(statement.condition, dialect) == 0  # type: ignore[union-attr]
+            self._close(loop)
 
     def _close(self, loop: _Loop) -> None:
         if loop.endless and not loop.left:

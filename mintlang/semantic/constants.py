@@ -11,28 +11,29 @@ from mintlang.syntax import nodes as n
 
 def constant_value(expression: n.Expression | None, dialect: Dialect = Dialect.V4) -> float | None:
     """The value of ``expression`` when it is known before the program runs, else None."""
-    match expression:
-        case n.Number(value=value):
-            return value
-        case n.CharConstant(value=value):
-            return float(value)
-        case n.ConstantRef(name=name):
-            db = database()
-            table = db.constants if dialect is Dialect.V4 else db.v3_constants
-            record = table.get(name)
-            return record.value if record is not None else None
-        case n.Parenthesised(expression=inner):
-            return constant_value(inner, dialect)
-        case n.Unary(operator=operator, operand=operand):
-            value = constant_value(operand, dialect)
-            if value is None:
-                return None
-            return {"-": -value, "+": value, "NOT": float(value == 0)}.get(operator)
-        case n.Binary(operator=operator, left=left, right=right):
-            a, b = constant_value(left, dialect), constant_value(right, dialect)
-            if a is None or b is None:
-                return None
-            return _binary(operator, a, b)
+    kind = type(expression)  # exact types, not class patterns: rules ask this for every axis and value
+    if kind is n.Number:
+        return expression.value  # type: ignore[union-attr]
+    if kind is n.CharConstant:
+        return float(expression.value)  # type: ignore[union-attr]
+    if kind is n.ConstantRef:
+        db = database()
+        table = db.constants if dialect is Dialect.V4 else db.v3_constants
+        record = table.get(expression.name)  # type: ignore[union-attr]
+        return record.value if record is not None else None
+    if kind is n.Parenthesised:
+        return constant_value(expression.expression, dialect)  # type: ignore[union-attr]
+    if kind is n.Unary:
+        value = constant_value(expression.operand, dialect)  # type: ignore[union-attr]
+        if value is None:
+            return None
+        return {"-": -value, "+": value, "NOT": float(value == 0)}.get(expression.operator)  # type: ignore[union-attr]
+    if kind is n.Binary:
+        left = constant_value(expression.left, dialect)  # type: ignore[union-attr]
+        right = constant_value(expression.right, dialect)  # type: ignore[union-attr]
+        if left is None or right is None:
+            return None
+        return _binary(expression.operator, left, right)  # type: ignore[union-attr]
     return None
 
 

@@ -59,6 +59,9 @@ class SyntaxIndex:
     names: tuple[NameEvent, ...]  # in compile order: a DIM after its values, a write after its value
 
 
+_CONSTANTS = frozenset({n.Number, n.CharConstant, n.ConstantRef, n.StringLiteral, type(None)})
+
+
 class _Walker:
     def __init__(self) -> None:
         self.statements: list[tuple[Unit, n.Line, n.Statement]] = []
@@ -97,6 +100,8 @@ class _Walker:
     def expressions(self, unit: Unit, statement: n.Statement) -> None:
         names, uses, elements = self.names, self.uses, self.elements
         for expression in n.expressions_of(statement):
+            if type(expression) in _CONSTANTS:
+                continue  # most values are plain numbers: no walk needed
             for node in n.walk_expression(expression):
                 kind = type(node)
                 if kind is n.VariableRef:

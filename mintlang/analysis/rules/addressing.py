@@ -64,6 +64,8 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     db = database()
     for use in facts.keyword_uses:
+        if use.keyword.selector is None and use.keyword.channel is None:
+            continue  # nothing addressed: the default axes, or a keyword that takes none
         keyword = db.keywords.get(use.keyword.keyword)
         if keyword is None:
             continue

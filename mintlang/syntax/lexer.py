@@ -167,6 +167,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
     kinds: list[TokenKind] = []  # the significant tokens, as parallel arrays
     texts: list[str] = []
     starts: list[int] = []
+    ends: list[int] = []
     spellings = words.words
     classify = words.classify
     match = _LEXEME.match
@@ -179,14 +180,13 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
 
     while position < content_end:
         found = match(line, position, content_end)
-        assert found is not None  # the alternatives cover every character
-        group = found.lastgroup
-        text = found.group()
+        group = found.lastgroup  # type: ignore[union-attr]  # the alternatives cover every character
         if group == "ws":
             previous = _WS
             dot_number = False
-            position += len(text)
+            position = found.end()  # type: ignore[union-attr]
             continue
+        text = found[0]  # type: ignore[index]
         if text[0] == "." and (previous in _DOT_OWNERS or dot_number):
             kind, text = _DOT, "."
         elif group == "word":
@@ -230,6 +230,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
         texts.append(text)
         starts.append(position)
         position += len(text)
+        ends.append(position)
         dot_number = kind is _NUMBER and previous is _DOT
         previous = kind
 
@@ -239,7 +240,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
         tuple(kinds),
         tuple(texts),
         tuple(starts),
-        tuple(start + len(text) for start, text in zip(starts, texts, strict=True)),
+        tuple(ends),
         comment_start,
         content_end,
         length,

@@ -5,14 +5,16 @@ from __future__ import annotations
 from mintlang.migrate.rules.abbreviations import ExpandAbbreviations
 from mintlang.migrate.rules.base import Action, Flag, Replace, Rule
 from mintlang.migrate.rules.channels import Channels
+from mintlang.migrate.rules.dac import DacUnits
 from mintlang.migrate.rules.declarations import DeclareVariables, DefaultAxes, InputEdges
 from mintlang.migrate.rules.expressions import ByteToggle, Precedence, Trigonometry
+from mintlang.migrate.rules.following import MasterSource
+from mintlang.migrate.rules.inputs import InputByte, InputMask
 from mintlang.migrate.rules.manual import (
     AbsentFeatures,
     AnalogueUnits,
     AxisConfiguration,
     ChangedMeaning,
-    DacUnits,
     EnableOutput,
     ErrorCodes,
     ExpansionBoards,
@@ -36,6 +38,7 @@ from mintlang.migrate.rules.renames import (
     RenameKeywords,
     RenameReservedNames,
 )
+from mintlang.migrate.rules.reset import ResetSideEffects
 from mintlang.migrate.rules.statements import (
     Boost,
     Contouring,
@@ -47,6 +50,7 @@ from mintlang.migrate.rules.statements import (
     ServoOn,
     Zero,
 )
+from mintlang.migrate.rules.terminal import Baud, BinaryOutput
 from mintlang.migrate.rules.writes import (
     AccelAlsoDecel,
     ConfigValues,
@@ -87,6 +91,13 @@ RULES: tuple[Rule, ...] = (
     Echo(),
     ErrorInput(),
     Channels(),
+    InputMask(),
+    InputByte(),
+    BinaryOutput(),
+    Baud(),
+    DacUnits(),
+    ResetSideEffects(),
+    MasterSource(),
     AccelAlsoDecel(),
     OffsetNeedsGo(),
     IntegerScale(),
@@ -113,7 +124,6 @@ RULES: tuple[Rule, ...] = (
     EnableOutput(),
     ErrorCodes(),
     AnalogueUnits(),
-    DacUnits(),
     ChangedMeaning(),
     OnError(),
     FastLatch(),

@@ -88,3 +88,21 @@ def values_text(file: FileView, statement: n.KeywordStatement) -> str:
     start = statement.keyword.span.end
     text = file.slice(Span(start, statement.span.end))
     return text.split("=", 1)[1].strip() if "=" in text else ""
+
+
+def keyword_refs(context: Context, *keywords: str) -> Iterator[tuple[FileView, n.Statement, n.KeywordRef]]:
+    """Every use of the named keywords (canonical names), v4-only keywords included (the
+    semantic index lists Mint v3 keywords only); ``written`` tells a write from a read."""
+    wanted = frozenset(keywords)
+    for file, _, statement in context.statements():
+        if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in wanted:
+            yield file, statement, statement.keyword
+        for root in n.expressions_of(statement):
+            for node in n.walk_expression(root):
+                if isinstance(node, n.KeywordRef) and node.keyword in wanted:
+                    yield file, statement, node
+
+
+def written(statement: n.Statement, keyword: n.KeywordRef) -> bool:
+    """Whether ``keyword`` is the target of a write (``KW = value``) in ``statement``."""
+    return isinstance(statement, n.KeywordStatement) and statement.keyword is keyword and statement.values is not None

@@ -189,39 +189,24 @@ class AnalogueUnits(ManualKeywords):
     reason = "use ADC.(n-1) in % : v3 value = (ADC.(n-1) + 100) * 1023 / 200 for +-10 V inputs"
 
 
-class DacUnits(ManualKeywords):
-    """DAC, AUXDAC and DEMAND moved to channel syntax and percent (v3: +-2047 counts); flagged
-    with the conversion rather than rewritten (the spec's S-DAC rewrite is not implemented)."""
-
-    id = "S-DAC"
-    summary = "DAC, AUXDAC, DEMAND -> manual with the formula (DAC.n = v * 100 / 2047)"
-    evidence = "spec S-DAC; v3:7110-7135, v3:5943; v4:8737-8752, v4:6680-6686, v4:9149"
-    keywords = frozenset({"DAC", "AUXDAC", "DEMAND"})
-    reason = "channel keyword in % in v4: DAC.n = v * 100 / 2047 (DEMAND reads DAC.n)"
-
-
 class ChangedMeaning(ManualKeywords):
     """Keywords whose v4 form needs context this migrator does not compute yet (the spec's
-    S-IMASK, S-CAM, S-GEAR, S-MASTER, S-BINARY, S-BAUD, S-CARD and M-DISPLAY): each use is
+    S-CAM, S-GEAR, S-CARD and M-DISPLAY): each use is
     flagged with the v4 form to write."""
 
     id = "X-CHANGED"
-    summary = "IMASK, CAM, CAMA, GEARN, GEARD, FOLLOWAXIS, BINARY, BAUD, DISPLAY, CARD -> manual with the v4 form"
-    evidence = "spec S-IMASK, S-CAM, S-GEAR, S-MASTER, S-BINARY, S-BAUD, S-CARD, M-DISPLAY"
+    summary = "CAM, CAMA, GEARN, GEARD, DISPLAY, CARD -> manual with the v4 form"
+    evidence = "spec S-CAM, S-GEAR, S-CARD, M-DISPLAY"
     keywords = frozenset(
         {
-            *("IMASK", "CAM", "CAMA", "GEARN", "GEARD", "FOLLOWAXIS", "BINARY", "BAUD", "DISPLAY", "CARD"),
+            *("CAM", "CAMA", "GEARN", "GEARD", "DISPLAY", "CARD"),
         }
     )
     reasons: ClassVar[Mapping[str, str]] = {
-        "IMASK": "v4 IMASK covers all inputs (default all ones): keep bits 8 and up set",
         "CAM": "v4 cams need CAMTABLE(axis, positions, masters) and GO; modes are _cm bits",
         "CAMA": "use CAM with _cmABSOLUTE after CAMTABLE, then GO",
         "GEARN": "use FOLLOW (FOLLOWDENOM for the denominator, range -128..127)",
         "GEARD": "use FOLLOWDENOM (1..128)",
-        "FOLLOWAXIS": "use MASTERSOURCE and MASTERCHANNEL (-2, the pulse timer, has no equivalent)",
-        "BINARY": "use PRINT BIN (no 8-bit zero padding in v4)",
-        "BAUD": "use SERIALBAUD._tmRS232 with a rate the controller supports",
         "DISPLAY": "use VIEW VAR / VIEW ARRAY at the command line",
         "CARD": "use NODE (the software node number, v4:14643) if a user name NODE does not clash",
     }

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import pytest
 
+from mintlang.migrate import migrate
 from tests.migrate.helpers import flagged, one_rule, rewritten
 
 
@@ -197,3 +198,199 @@ def test_error_input() -> None:
     assert flagged("S-ERRORIN", "ERRORIN = 1\n") == [
         "ERRORINPUT takes the error input's number (-1 none); set its level with INPUTACTIVELEVEL"
     ]
+
+
+@pytest.mark.parametrize(
+    ("controller", "source", "expected"),
+    [
+        ("nextmove-pci", "IMASK = 15\n", "IMASK = 15 | 0xFFF00\n"),
+        ("nextmove-pc", "IM = 000001111\n", "IMASK = 000001111 | 0xFFFF00\n"),
+        ("nextmove-bx", "IMASK = IMASK AND 011\n", "IMASK = IMASK AND (011 | 0xFF00)\n"),
+        ("mintdrive", "IMASK = 255\n", "IMASK = 255 | 0x3FF00\n"),
+        ("nextmove-pci", "IMASK = IMASK OR 4\n", "IMASK = IMASK OR 4\n"),
+        ("nextmove-pci", "x = IMASK : PRINT IMASK & 3\n", "x = (IMASK & 255) : PRINT IMASK & 3\n"),
+        ("servonode51", "IMASK = 15\n", "IMASK = 15\n"),
+    ],
+)
+def test_input_mask_keeps_the_handlers_of_inputs_above_7_enabled(controller: str, source: str, expected: str) -> None:
+    assert migrate(source, only=["M-ABBR", "S-IMASK"], controller=controller).text == expected
+
+
+@pytest.mark.parametrize("source", ["IMASK = a\n", "IMASK = 256\n", "IMASK = IMASK AND b\n", "IMASK = IMASK + 1\n"])
+def test_input_mask_computed_or_out_of_range_is_flagged(source: str) -> None:
+    assert flagged("S-IMASK", source) == [
+        "v4 IMASK has a bit per input (default 0xFFFFF): keep the bits of inputs 8 and up set"
+    ]
+
+
+def test_input_byte_is_masked_to_the_v3_inputs() -> None:
+    source = "JOG = IN\nBINARY IN\nIF IN & 15 THEN x = 1\nPAUSE IN AND 12\ny = IN3 + IN.2\n"
+    assert rewritten("S-IN", source) == (
+        "JOG = (IN & 255)\nBINARY (IN & 255)\nIF IN & 15 THEN x = 1\nPAUSE IN AND 12\ny = IN3 + IN.2\n"
+    )
+    assert rewritten("S-IN", "a = IN & 511\n") == "a = (IN & 255) & 511\n"
+    assert rewritten("S-IN", "JOG = IN\n", controller="servonode51") == "JOG = IN\n"
+
+
+def test_input_byte_with_input_handlers_is_flagged() -> None:
+    assert flagged("S-IN", "JOG = IN\n#IN1\nRETURN\n") == [
+        "IN reads all inputs and clears edge latches of #INn inputs in v4: mask with & 255"
+    ]
+
+
+def test_binary_becomes_print_bin_before_each_number() -> None:
+    result = one_rule("S-BINARY", 'BINARY "12 in binary is : ",12\nBINARY a, " ", b\n')
+    assert result.text == (
+        "REM MIGRATE: S-BINARY: v4 PRINT BIN has no 8-digit zero padding (v3 00001100, v4 1100);"
+        " v3 also dropped fractions\n"
+        'PRINT "12 in binary is : ",BIN 12\n'
+        "REM MIGRATE: S-BINARY: v4 PRINT BIN has no 8-digit zero padding (v3 00001100, v4 1100);"
+        " v3 also dropped fractions\n"
+        'PRINT BIN a, " ", BIN b\n'
+    )
+    assert migrate("binary in\n", only=["S-IN", "S-BINARY"]).text.endswith("print bin (in & 255)\n")
+
+
+def test_binary_output_migrates_once() -> None:
+    """BIN is a v4 word the v3 reader takes for a name: it must not be renamed on a second run."""
+    first = migrate('BINARY "x", IN\n').text
+    assert migrate(first).text == first
+
+
+def test_baud_9600_is_the_rate_every_serial_controller_has() -> None:
+    assert rewritten("S-BAUD", "BAUD = 9600\n", controller="mintdrive") == "SERIALBAUD._tmRS232 = 9600\n"
+    assert flagged("S-BAUD", "BAUD = 1200 : REM slow\n", controller="nextmove-bx") == [
+        "use SERIALBAUD._tmRS232 = <rate> with a rate the v4:15856-15863 table lists"
+    ]
+    assert flagged("S-BAUD", "BAUD = b\n", controller="servonode51") == [
+        "use SERIALBAUD._tmRS232 = <rate> with a rate the v4:15856-15863 table lists"
+    ]
+    assert flagged("S-BAUD", "BAUD = 9600\n") == ["SERIALBAUD is not available on NextMove PCI"]
+
+
+def test_dac_counts_become_percent_one_channel_per_write() -> None:
+    source = "AXES[0,1]\nDAC = 1024, a + b\nDAC[2] = -5;\nx = DAC[1]\n"
+    assert rewritten("S-DAC", source) == (
+        "AXES[0,1]\nDAC.0 = 1024 * 100 / 2047 : DAC.1 = (a + b) * 100 / 2047\n"
+        "DAC.2 = (-5) * 100 / 2047\nx = (DAC.1 * 2047 / 100)\n"
+    )
+    assert rewritten("S-DAC", "AUXDAC = 3\n", controller="mintdrive") == "AUXDAC.0 = 3 * 100 / 2047\n"
+
+
+def test_dac_on_a_stepper_application_is_rewritten_and_flagged() -> None:
+    result = one_rule("S-DAC", "CONFIG.0 = _stepper\nDAC.0 = 4\n")
+    assert result.text == (
+        "CONFIG.0 = _stepper\n"
+        "REM MIGRATE: S-DAC: v4 writes DAC only on an axis with CONFIG = _cfOFF (v3 also allowed a stepper axis)\n"
+        "DAC.0 = 4 * 100 / 2047\n"
+    )
+
+
+@pytest.mark.parametrize(
+    ("source", "reason"),
+    [
+        ("DAC.0 = DAC.0 + 1\n", "DAC value reads an analog output: convert by hand"),
+        ("AXES[a]\nDAC = 4\n", "DAC: the axes are not constant; DAC.n = v * 100 / 2047"),
+        ("x = DAC\n", "DAC: read one constant channel as DAC.n (v4 % of 10 V)"),
+        ("? DEMAND.1\n", "DEMAND: read DAC.n (v4 % of +-10 V, as DEMAND was %)"),
+    ],
+)
+def test_dac_refusals(source: str, reason: str) -> None:
+    assert flagged("S-DAC", source) == [reason]
+
+
+def test_dac_on_a_controller_without_it_is_left_to_the_platform_rule() -> None:
+    result = migrate("AUXDAC = 3\n", only=["S-DAC", "X-PLATFORM"])
+    assert [item.rule for item in result.manual] == ["X-PLATFORM"]
+
+
+def test_reset_that_nothing_relies_on_is_left_alone() -> None:
+    assert migrate("RESET[0,1]\nMOVEA = 10 : GO\n", only=["S-RESET"]).manual == ()
+    startup = migrate("OUT0 = 1\nx = TIME\n", config="AUTO\nRESET\n", only=["S-RESET"])
+    assert startup.manual == () and startup.configuration is not None and startup.configuration.manual == ()
+
+
+@pytest.mark.parametrize(
+    ("source", "reason"),
+    [
+        ("OUT0 = 1\nRESET\n", "v3 RESET also did OUT = 0; v4 RESET does not: add what later code relies on"),
+        (
+            "RESET[0,1]\nx = TIME : IMASK = 3\n",
+            "v3 RESET also did TIME = 0 : IMASK = <all ones>; v4 RESET does not: add what later code relies on",
+        ),
+    ],
+)
+def test_reset_in_a_program_using_what_v3_cleared_is_flagged(source: str, reason: str) -> None:
+    assert flagged("S-RESET", source) == [reason]
+
+
+def test_reset_in_the_configuration_after_an_output_write_is_flagged() -> None:
+    result = migrate("x = 1\n", config="AUTO\nOUT = 3\nRESET\n", only=["S-RESET"])
+    assert result.configuration is not None
+    assert [item.reason for item in result.configuration.manual] == [
+        "v3 RESET also did OUT = 0; v4 RESET does not: add what later code relies on"
+    ]
+
+
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        ("FOLLOWAXIS[0] = 2\n", "MASTERSOURCE[0] = _msPOS; : MASTERCHANNEL[0] = 2\n"),
+        ("AXES[0,1]\nFOLLOWAXIS = 2,2\n", "AXES[0,1]\nMASTERSOURCE = _msPOS; : MASTERCHANNEL = 2,2\n"),
+        ("followaxis.1 = 0 : REM master\n", "mastersource.1 = _msPOS : masterchannel.1 = 0 : REM master\n"),
+        ("FOLLOWAXIS[0,1] = -1,-1\n", "MASTERSOURCE[0,1] = _msSPEED;\n"),
+        ("SCALE = 1,1\nFOLLOWAXIS.0 = 1\n", "SCALE = 1,1\nMASTERSOURCE.0 = _msPOS : MASTERCHANNEL.0 = 1\n"),
+    ],
+)
+def test_followaxis_becomes_master_source_and_channel(source: str, expected: str) -> None:
+    assert rewritten("S-MASTER", source) == expected
+
+
+@pytest.mark.parametrize(
+    ("source", "reason", "controller"),
+    [
+        ("FOLLOWAXIS = -2\n", "FOLLOWAXIS = -2 follows the pulse timer input: no v4 master source (see X-PULSE)", ""),
+        (
+            "FOLLOWAXIS = 4\n",
+            "encoder-board master: MASTERSOURCE = _msAUXENCODER : MASTERCHANNEL = m - 3, if so wired",
+            "",
+        ),
+        (
+            "FOLLOWAXIS = 2, -1\n",
+            "FOLLOWAXIS values are not all constant axes 0..2 (or all -1): set MASTERSOURCE by hand",
+            "",
+        ),
+        (
+            "SCALE = 400\nFOLLOWAXIS = 1\n",
+            "SCALE is set: v4 scales the master into the slave's user units, v3 by the master's SCALE",
+            "",
+        ),
+        (
+            "CONFIG.1 = _off\nFOLLOWAXIS = 1\n",
+            "an axis is configured off: follow its encoder with MASTERSOURCE = _msENCODER if it is the master",
+            "",
+        ),
+        (
+            "FOLLOWAXIS.0 = 1\nMASTERINC.0 = 100\nFOLLOW.0 = 1\n",
+            "FOLLOW with MASTERINC: v4 MASTERDISTANCE acts on FOLLOW only in FOLLOWMODE 2/3; set the master by hand",
+            "",
+        ),
+        ("FOLLOWAXIS = 1\n", "MintDrive cannot follow an axis position (MASTERSOURCE 2 or 3 only)", "mintdrive"),
+    ],
+)
+def test_followaxis_refusals(source: str, reason: str, controller: str) -> None:
+    assert flagged("S-MASTER", source, controller=controller or "nextmove-pci") == [reason]
+
+
+def test_followaxis_speed_on_mintdrive() -> None:
+    assert rewritten("S-MASTER", "FOLLOWAXIS = -1\n", controller="mintdrive") == "MASTERSOURCE = _msSPEED;\n"
+
+
+@pytest.mark.parametrize("controller", ["nextmove-pci", "nextmove-bx", "mintdrive"])
+def test_input_terminal_dac_master_and_reset_rewrites_migrate_once(controller: str) -> None:
+    source = (
+        "IMASK = 000001111 : IMASK = IMASK AND 3 : x = IMASK\nJOG = IN\nBINARY IN\nDAC[0] = 1024\n"
+        "y = DAC[1]\nAUXDAC = 5\nBAUD = 9600\nFOLLOWAXIS[0] = 1\nFOLLOWAXIS.1 = -1\nOUT0 = 1\nRESET\n"
+    )
+    first = migrate(source, controller=controller).text
+    assert migrate(first, controller=controller).text == first

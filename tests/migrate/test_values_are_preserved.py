@@ -26,6 +26,10 @@ def _evaluate(expression: n.Expression, dialect: str, names: dict[str, float]) -
                 return number
             case n.VariableRef(name=name) | n.ConstantRef(name=name):
                 return names[str(name.text if isinstance(name, n.Name) else name).upper()]
+            case n.KeywordRef(keyword=keyword, selector=selector) if selector is not None:
+                return names[f"{keyword}.{selector.items[0].value:g}"]  # type: ignore[union-attr]
+            case n.Unary(operator="-", operand=operand):
+                return -value(operand)
             case n.Parenthesised(expression=inner):
                 return value(inner)
             case n.Call(function=function, arguments=(argument,)):
@@ -37,6 +41,7 @@ def _evaluate(expression: n.Expression, dialect: str, names: dict[str, float]) -
                 a, b = value(left), value(right)
                 return {
                     "+": lambda: a + b,
+                    "-": lambda: a - b,
                     "*": lambda: a * b,
                     "/": lambda: a / b,
                     "=": lambda: float(a == b),
@@ -118,3 +123,46 @@ def test_analogue_formula_in_the_manual_item_maps_the_v3_range() -> None:
     """(ADC + 100) * 1023 / 200 maps v4's -100..100 % onto v3's 0..1023 counts (+-10 V)."""
     formula = lambda adc: (adc + 100) * 1023 / 200  # noqa: E731
     assert (formula(-100), formula(0), formula(100)) == (0, 511.5, 1023)
+
+
+@pytest.mark.parametrize("mask", ["0", "15", "000001111", "0101", "255"])
+def test_input_mask_keeps_the_v3_bits_and_enables_the_rest(mask: str) -> None:
+    """v3 IMASK bits 0..7 are kept; bits 8..19 (NextMove PCI, v4:11896) stay at v4's default 1."""
+    migrated = migrate(f"IMASK = {mask}\n", only=["S-IMASK"]).text
+    v3 = mintlang.parse(f"IMASK = {mask}\n", "v3").lines[0].statements[0]
+    v4 = mintlang.parse(migrated, "v4").lines[0].statements[0]
+    assert isinstance(v3, n.KeywordStatement) and v3.values and v3.values[0] is not None
+    assert isinstance(v4, n.KeywordStatement) and v4.values and v4.values[0] is not None
+    value = int(_evaluate(v4.values[0], "v4", {}))
+    assert value & 255 == int(_evaluate(v3.values[0], "v3", {}))
+    assert value >> 8 == 0xFFF
+
+
+@pytest.mark.parametrize("inputs", [0, 0x5A31C, 0xFFFFF, 0x000FF, 0x12300])
+def test_input_byte_reads_the_v3_inputs(inputs: int) -> None:
+    """v4 IN returns all 20 inputs of a NextMove PCI; (IN & 255) is what v3 IN returned."""
+    migrated = migrate("x = IN\n", only=["S-IN"]).text
+    statement = mintlang.parse(migrated, "v4").lines[0].statements[0]
+    assert isinstance(statement, n.Assignment) and isinstance(statement.value, n.Parenthesised)
+    masked = statement.value.expression
+    assert isinstance(masked, n.Binary) and isinstance(masked.left, n.KeywordRef) and masked.left.keyword == "IN"
+    assert isinstance(masked.right, n.Number)
+    assert inputs & int(masked.right.value) == inputs & 0xFF  # v3:8927 inputs 0 to 7
+
+
+@pytest.mark.parametrize("counts", [-2047, -1024, 0, 1, 1024, 2047])
+def test_dac_counts_give_the_same_voltage(counts: int) -> None:
+    """v3 -2047..2047 counts = -10..+10 V (v3:5943, v3:7126); v4 -100..100 % = -10..+10 V (v4:8750-8752)."""
+    migrated = migrate(f"DAC.0 = {counts}\n", only=["S-DAC"]).text
+    written = mintlang.parse(migrated, "v4").lines[0].statements[0]
+    assert isinstance(written, n.KeywordStatement) and written.values and written.values[0] is not None
+    volts = _evaluate(written.values[0], "v4", {}) * 10 / 100
+    assert volts == pytest.approx(counts * 10 / 2047)
+
+
+@pytest.mark.parametrize("percent", [-100, -50, 0, 12.5, 100])
+def test_dac_read_gives_the_v3_counts(percent: float) -> None:
+    migrated = migrate("x = DAC[0]\n", only=["S-DAC"]).text
+    statement = mintlang.parse(migrated, "v4").lines[0].statements[0]
+    assert isinstance(statement, n.Assignment)
+    assert _evaluate(statement.value, "v4", {"DAC.0": percent}) == pytest.approx(percent * 2047 / 100)

@@ -1,0 +1,116 @@
+"""Following: v3 chose the master with FOLLOWAXIS, v4 with MASTERSOURCE and MASTERCHANNEL."""
+
+from __future__ import annotations
+
+from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.model import RuleClass
+from mintlang.migrate.rules.base import keyword_refs, selector_text, values_text, written
+from mintlang.migrate.rules.spelling import like
+from mintlang.migrate.rules.statements import Refusal, StatementRule, fill
+from mintlang.syntax import nodes as n
+
+_OFF_CONSTANTS = frozenset({"_OFF", "_CFOFF"})
+
+
+def _literal(value: n.Expression | None) -> int | None:
+    """An integer literal, with its sign (``-1`` parses as a unary minus)."""
+    sign = 1
+    if isinstance(value, n.Unary) and value.operator == "-":
+        sign, value = -1, value.operand
+    if isinstance(value, n.Number) and value.value == int(value.value):
+        return sign * int(value.value)
+    return None
+
+
+class MasterSource(StatementRule):
+    """FOLLOWAXIS becomes MASTERSOURCE and MASTERCHANNEL, which "replace the FOLLOWAXIS keyword"
+    (v4:13949):
+
+    * ``FOLLOWAXIS<axes> = m, ...`` with every m an axis 0..2 ->
+      ``MASTERSOURCE<axes> = _msPOS; : MASTERCHANNEL<axes> = m, ...`` (MASTERSOURCE first:
+      changing it resets MASTERCHANNEL, v4:13947);
+    * every m = -1 (follow the SPEED demand) -> ``MASTERSOURCE<axes> = _msSPEED;`` whose
+      default channel is the axis itself (v4:13967).
+
+    Refused (manual item): -2, the pulse timer input (X-PULSE); 3..5, the v3 encoder
+    board, which is AUXENCODER hardware in v4 (X-IO-EXP); mixed or computed values; a
+    master axis position where the application configures an axis off (v4 then wants
+    _msENCODER, v4:13938); MintDrive and ServoNode 51, whose MASTERSOURCE takes 2 and 3
+    only (v4:13926-13928); and an application that writes SCALE: v3 scaled MASTERINC by the
+    master axis' SCALE (v3:3771-3777), v4 scales the master into the slave's user units
+    (v4:13972-13977), so unscaled counts (SCALE never written, or written as 1) are the
+    only case proven the same. Also refused: an application whose FOLLOW moves use a
+    MASTERINC (MASTERDISTANCE) but choose no FOLLOWMODE, as v4 applies MASTERDISTANCE to
+    FOLLOW only in the clutch modes (v4:13870-13873; S-GEAR): the v3 ramp needs review.
+    """
+
+    id = "S-MASTER"
+    rule_class = RuleClass.SEMI
+    summary = (
+        "FOLLOWAXIS = 0..2 -> MASTERSOURCE = _msPOS; : MASTERCHANNEL = m; FOLLOWAXIS = -1 -> MASTERSOURCE = _msSPEED;"
+    )
+    evidence = "spec S-MASTER; v3:3771-3777, v3:8199-8209; v4:10773, v4:13925-13977"
+    keywords = frozenset({"FOLLOWAXIS"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        if statement.values is None:
+            return Refusal("FOLLOWAXIS read: the master is MASTERSOURCE and MASTERCHANNEL in v4")
+        masters = {_literal(value) for value in statement.values if value is not None}
+        if masters & {-2}:
+            return Refusal("FOLLOWAXIS = -2 follows the pulse timer input: no v4 master source (see X-PULSE)")
+        if masters & {3, 4, 5}:
+            return Refusal("encoder-board master: MASTERSOURCE = _msAUXENCODER : MASTERCHANNEL = m - 3, if so wired")
+        speed = masters == {-1}
+        if not speed and not (masters and masters <= {0, 1, 2}):
+            return Refusal("FOLLOWAXIS values are not all constant axes 0..2 (or all -1): set MASTERSOURCE by hand")
+        if not speed and context.controller.controller in ("mintdrive", "servonode51"):
+            return Refusal(f"{context.controller.title} cannot follow an axis position (MASTERSOURCE 2 or 3 only)")
+        if not speed and _configures_off(context):
+            return Refusal(
+                "an axis is configured off: follow its encoder with MASTERSOURCE = _msENCODER if it is the master"
+            )
+        if _clutch(context):
+            return Refusal(
+                "FOLLOW with MASTERINC: v4 MASTERDISTANCE acts on FOLLOW only in FOLLOWMODE 2/3; set the master by hand"
+            )
+        if _scaled(context):
+            return Refusal("SCALE is set: v4 scales the master into the slave's user units, v3 by the master's SCALE")
+        selector = selector_text(file, statement.keyword)
+        source = f"{like(statement.keyword.spelling, 'MASTERSOURCE')}{selector}"
+        if speed:
+            return f"{source} = _msSPEED{fill(selector)}"
+        channel = f"{like(statement.keyword.spelling, 'MASTERCHANNEL')}{selector} = {values_text(file, statement)}"
+        return f"{source} = _msPOS{fill(selector)} : {channel}"
+
+
+def _clutch(context: Context) -> bool:
+    """Whether FOLLOW moves run with a master distance but no FOLLOWMODE is chosen."""
+
+    def used(*keywords: str) -> bool:
+        return next(keyword_refs(context, *keywords), None) is not None
+
+    return used("MASTERINC", "MASTERDISTANCE") and used("FOLLOW") and not used("FOLLOWMODE")
+
+
+def _scaled(context: Context) -> bool:
+    """Whether any axis may have a SCALE other than 1 (every use a write of literal 1s is not)."""
+    for _, statement, keyword in keyword_refs(context, "SCALE"):
+        if not (
+            isinstance(statement, n.KeywordStatement)
+            and written(statement, keyword)
+            and statement.values
+            and all(isinstance(value, n.Number) and value.value == 1 for value in statement.values)
+        ):
+            return True
+    return False
+
+
+def _configures_off(context: Context) -> bool:
+    for _, _, statement in context.statements():
+        if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "CONFIG":
+            for value in statement.values or ():
+                if (isinstance(value, n.Number) and value.value == 0) or (
+                    isinstance(value, n.ConstantRef) and value.name in _OFF_CONSTANTS
+                ):
+                    return True
+    return False

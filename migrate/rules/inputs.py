@@ -1,0 +1,169 @@
+"""The digital inputs read or masked as one byte: v3 had 8 user inputs, v4 has up to 24.
+
+v3 ``IN`` read inputs 0..7 as an 8-bit number and ``IMASK`` (default 255, range
+0..255) enabled the handlers #IN0..#IN7 (v3:8884-8947). In v4 both cover every
+input of the controller: IMASK defaults to all ones over the controller's inputs
+and IN returns them all (v4:11877-11978). The rewrites below keep the v3 values
+of bits 0..7 and leave the bits above as v4 starts them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from mintlang.keyworddb.model import Controller
+from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.base import Action, Rule
+from mintlang.semantic.events import EventKind, event_of
+from mintlang.semantic.units import Unit
+from mintlang.syntax import nodes as n
+
+# IMASK's default (= all inputs enabled) per controller: the attribute table at v4:11896-11900.
+# ServoNode 51 is not in that table; with 6 inputs it has no input above 7 to keep enabled.
+IMASK_ALL_ONES = {
+    Controller.NEXTMOVE_PCI: 1048575,
+    Controller.NEXTMOVE_PC: 16777215,
+    Controller.NEXTMOVE_BX: 65535,
+    Controller.MINTDRIVE: 262143,
+}
+
+
+def _byte(node: n.Expression | None) -> bool:
+    """An integer literal 0..255: a value v3 IMASK or IN could hold."""
+    return isinstance(node, n.Number) and node.value == int(node.value) and 0 <= node.value <= 255
+
+
+def _plain(node: n.Expression | None, keyword: str) -> bool:
+    """``keyword`` without axes or channel (``IN``, not ``IN3`` or ``IN.3``)."""
+    return isinstance(node, n.KeywordRef) and node.keyword == keyword and node.selector is None and node.channel is None
+
+
+def _keyword_refs(statement: n.Statement, keyword: str) -> Iterator[n.KeywordRef]:
+    for root in n.expressions_of(statement):
+        for node in n.walk_expression(root):
+            if _plain(node, keyword):
+                assert isinstance(node, n.KeywordRef)
+                yield node
+
+
+class InputMask(Rule):
+    """v3 IMASK held 8 bits (default 255); v4 IMASK holds one bit per input of the controller
+    and defaults to all ones, so an 8-bit literal written as in v3 would also disable the
+    handlers of inputs 8 and up. Bit set = handler enabled in both (v3:8894-8902,
+    v4:11915-11916). The rewrites:
+
+    * ``IMASK = k`` (k a literal 0..255) -> ``IMASK = k | <all ones above bit 7>``;
+    * ``IMASK = IMASK AND k`` -> ``IMASK = IMASK AND (k | <all ones above bit 7>)``;
+    * ``IMASK = IMASK OR e`` is kept (it only sets bits);
+    * a read of IMASK anywhere else -> ``(IMASK & 255)``, the v3 value.
+
+    The ones above bit 7 come from the v4 range table of the target controller; any other
+    write (a computed value, a literal above 255) is a manual item.
+    """
+
+    id = "S-IMASK"
+    rule_class = RuleClass.SEMI
+    phase = Phase.CONTEXT
+    summary = "IMASK = k -> IMASK = k | <v4 bits 8 and up>; IMASK AND k likewise; IMASK read -> (IMASK & 255)"
+    evidence = "spec S-IMASK; v3:8884-8902; v4:11877-11925 (default per controller v4:11896-11900)"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        ones = IMASK_ALL_ONES.get(context.controller.controller)
+        if ones is None:
+            return  # ServoNode 51: no input above 7, v3 values mean the same
+        high = ones & ~255
+        for file, _, statement in context.statements():
+            if (
+                isinstance(statement, n.KeywordStatement)
+                and statement.keyword.keyword == "IMASK"
+                and statement.values is not None
+            ):
+                yield from self._write(file, statement, high)
+                continue
+            parents = context.parents(statement)
+            for read in _keyword_refs(statement, "IMASK"):
+                if not _masked(parents.get(id(read)), read):
+                    yield self.replace(file, read.span, f"({file.slice(read.span)} & 255)")
+
+    def _write(self, file: FileView, statement: n.KeywordStatement, high: int) -> Iterator[Action]:
+        values = statement.values or ()
+        value = values[0] if len(values) == 1 and statement.keyword.selector is None else None
+        if _byte(value):
+            assert value is not None
+            yield self.replace(file, value.span, f"{file.slice(value.span)} | 0x{high:X}")
+            return
+        if _widened(value, high):
+            return
+        if isinstance(value, n.Binary) and value.operator in ("AND", "OR"):
+            own, other = (value.left, value.right) if _plain(value.left, "IMASK") else (value.right, value.left)
+            if _plain(own, "IMASK") and value.operator == "OR":
+                return
+            if _plain(own, "IMASK") and _widened(other, high):
+                return
+            if _plain(own, "IMASK") and _byte(other):
+                yield self.replace(file, other.span, f"({file.slice(other.span)} | 0x{high:X})")
+                return
+        reason = f"v4 IMASK has a bit per input (default 0x{high | 255:X}): keep the bits of inputs 8 and up set"
+        yield self.flag(file, statement.span, reason)
+
+
+class InputByte(Rule):
+    """v3 ``IN`` read inputs 0..7 as a byte; v4 ``IN`` returns every input, so a plain read
+    becomes ``(IN & 255)``, as the v4 guide itself rewrote ``JOG = IN`` (v3:2336 vs v4:1802).
+    ``IN & k`` / ``IN AND k`` with a literal k of 0..255 already masks and is kept; ``INx``
+    and ``IN.x`` read one input and are unchanged (M-BIT).
+
+    v4 reading IN also clears the latch of an edge-triggered input (v4:11976-11978), and
+    S-INEDGE makes the inputs of #INn handlers edge triggered: in a program with #INn
+    handlers a read of IN is therefore a manual item.
+    """
+
+    id = "S-IN"
+    rule_class = RuleClass.SEMI
+    phase = Phase.CONTEXT
+    summary = "IN read as a byte -> (IN & 255) (IN & k with k <= 255 kept; manual with #INn handlers)"
+    evidence = "spec S-IN; v3:8927-8947, v3:2336; v4:11951-11978, v4:1802"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        if context.controller.digital_inputs.high <= 7:
+            return  # no input above 7: IN reads the same byte
+        handlers = _has_input_handlers(context)
+        for file, _, statement in context.statements():
+            parents = context.parents(statement)
+            for read in _keyword_refs(statement, "IN"):
+                if _masked(parents.get(id(read)), read):
+                    continue
+                if handlers:
+                    reason = "IN reads all inputs and clears edge latches of #INn inputs in v4: mask with & 255"
+                    yield self.flag(file, statement.span, reason)
+                    break
+                yield self.replace(file, read.span, f"({file.slice(read.span)} & 255)")
+
+
+def _masked(parent: n.Expression | None, read: n.KeywordRef) -> bool:
+    """Whether ``read`` is already ANDed with a literal of 0..255 (``IN & 15``, ``(IMASK & 255)``)."""
+    if isinstance(parent, n.Binary) and parent.operator == "AND":
+        return _byte(parent.right if parent.left is read else parent.left)
+    return False
+
+
+def _widened(value: n.Expression | None, high: int) -> bool:
+    """``k | <high>`` (possibly bracketed) with k of 0..255: a value this rule already wrote."""
+    while isinstance(value, n.Parenthesised):
+        value = value.expression
+    return (
+        isinstance(value, n.Binary)
+        and value.operator == "OR"
+        and _byte(value.left)
+        and isinstance(value.right, n.Number)
+        and value.right.value == high
+    )
+
+
+def _has_input_handlers(context: Context) -> bool:
+    for line in context.files[Unit.PROGRAM].document.lines:
+        event = event_of(line.label.text) if line.label is not None else None
+        if event is not None and event.kind is EventKind.IN:
+            return True
+    return False

@@ -73,13 +73,23 @@ class Position:
 
 
 class LineIndex:
-    """Maps offsets to lines and columns; built once per source text."""
+    """Maps offsets to lines and columns; the line starts are found on first use.
 
-    __slots__ = ("_length", "_starts")
+    Every parse makes one, but a check that finds nothing never needs it.
+    """
+
+    __slots__ = ("_length", "_starts_cache", "_text")
 
     def __init__(self, text: str) -> None:
-        self._starts = [0, *(match.end() for match in _LINE_BREAK.finditer(text))]
+        self._text = text
         self._length = len(text)
+        self._starts_cache: list[int] | None = None
+
+    @property
+    def _starts(self) -> list[int]:
+        if self._starts_cache is None:
+            self._starts_cache = [0, *(match.end() for match in _LINE_BREAK.finditer(self._text))]
+        return self._starts_cache
 
     def line_start(self, line: int) -> int:
         """Offset of the first character of 1-based ``line``."""
@@ -87,10 +97,12 @@ class LineIndex:
 
     def position(self, offset: int) -> Position:
         offset = max(0, min(offset, self._length))
-        line = bisect_right(self._starts, offset)
-        return Position(line, offset - self._starts[line - 1] + 1)
+        starts = self._starts
+        line = bisect_right(starts, offset)
+        return Position(line, offset - starts[line - 1] + 1)
 
     def offset(self, line: int, column: int) -> int:
         """Offset of a 1-based line and column, clamped to the text."""
-        line = max(1, min(line, len(self._starts)))
-        return min(self._starts[line - 1] + column - 1, self._length)
+        starts = self._starts
+        line = max(1, min(line, len(starts)))
+        return min(starts[line - 1] + column - 1, self._length)

@@ -109,7 +109,7 @@ def _sequence(makers: list[Make[T]]) -> Make[tuple[T, ...]]:
     if len(makers) == 1:
         (only,) = makers
         return lambda line, words: (only(line, words),)
-    return lambda line, words: tuple(make(line, words) for make in makers)
+    return lambda line, words: tuple([make(line, words) for make in makers])
 
 
 def _optional(child: Child | None, compile_child: Callable[[Child], Make[T]]) -> Make[T | None]:

@@ -41,6 +41,7 @@ _CLOSING_WORD = {
     BlockKind.LOOP: "ENDL",
 }
 LOOPS = frozenset({BlockKind.FOR, BlockKind.REPEAT, BlockKind.WHILE, BlockKind.LOOP})
+_BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.For, n.While, n.Until, n.SyntaxError_})
 
 
 @dataclass(frozen=True, slots=True)
@@ -100,6 +101,8 @@ class _Matcher:
         self.diagnostics: list[Diagnostic] = []
 
     def statement(self, statement: n.Statement, line: int) -> None:
+        if type(statement) not in _BLOCK_STATEMENTS:
+            return  # most statements open and close nothing
         kind = _opener_kind(statement)
         if kind is not None:
             self.stack.append(_Open(kind, statement, line))

@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 from enum import StrEnum
+from typing import NamedTuple
 
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -25,8 +26,9 @@ class Use(StrEnum):
     COMMAND = "command"  # KW or KW args as a statement
 
 
-@dataclass(frozen=True, slots=True)
-class KeywordUse:
+class KeywordUse(NamedTuple):
+    """A keyword and how a statement uses it (a named tuple: there is one per keyword written)."""
+
     unit: Unit
     statement: n.Statement
     keyword: n.KeywordRef
@@ -42,8 +44,9 @@ class NameUse(StrEnum):
     BARE = "bare"  # a word alone as a statement: an unknown keyword, not a variable
 
 
-@dataclass(frozen=True, slots=True)
-class NameEvent:
+class NameEvent(NamedTuple):
+    """What a statement does with a user name (a named tuple: there is one per name written)."""
+
     unit: Unit
     name: n.Name
     use: NameUse

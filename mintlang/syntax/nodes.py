@@ -359,9 +359,10 @@ def walk_statements(statements: tuple[Statement, ...]) -> Iterator[Statement]:
 
 def flatten_statements(statements: tuple[Statement, ...]) -> tuple[Statement, ...]:
     """``walk_statements`` as a tuple; the statements themselves when no IF .. THEN nests any."""
-    if not any(type(statement) is IfThen for statement in statements):
-        return statements
-    return tuple(walk_statements(statements))
+    for statement in statements:
+        if type(statement) is IfThen:
+            return tuple(walk_statements(statements))
+    return statements
 
 
 _LEAVES = frozenset({Number, CharConstant, ConstantRef, VariableRef, StringLiteral})

@@ -28,7 +28,7 @@ def check(facts: Facts) -> Iterator[Finding]:
     if model.program.dialect is Dialect.V4:
         yield from _undeclared_variables(model)
     yield from _labels(model)
-    yield from _macros(model)
+    yield from _macros(facts)
 
 
 def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
@@ -86,14 +86,12 @@ def _defined_in_other_file(model: SemanticModel, unit: Unit, symbol: Symbol) -> 
     return ""
 
 
-def _macros(model: SemanticModel) -> Iterator[Finding]:
-    for unit, document in model.documents():
-        for line in document.lines:
-            for statement in n.walk_statements(line.statements):
-                if isinstance(statement, n.Define) and not statement.name_is_word:
-                    yield Finding(
-                        unit, mint_error(3005, statement.name.span, f"'{statement.name.text}' cannot name a macro")
-                    )
+def _macros(facts: Facts) -> Iterator[Finding]:
+    model = facts.model
+    for unit, _, statement in facts.statements:
+        if type(statement) is n.Define and not statement.name_is_word:
+            detail = f"'{statement.name.text}' cannot name a macro"
+            yield Finding(unit, mint_error(3005, statement.name.span, detail))
     for symbol in model.symbols.macros.values():
         if symbol.kind is not SymbolKind.MACRO:
             continue

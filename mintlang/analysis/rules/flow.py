@@ -49,7 +49,7 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     for unit, document in model.documents():
         yield from _Flow(unit, document).findings()
-        yield from _jumps_out_of_blocks(unit, document, model)
+        yield from _jumps_out_of_blocks(unit, document, model, facts.statements)
 
 
 @dataclass(slots=True)
@@ -147,25 +147,30 @@ class _Flow:
             self.falling_from_main = False
 
 
-def _jumps_out_of_blocks(unit: Unit, document: Document, model: SemanticModel) -> Iterator[Finding]:
+def _jumps_out_of_blocks(
+    unit: Unit, document: Document, model: SemanticModel, statements: tuple[tuple[Unit, n.Line, n.Statement], ...]
+) -> Iterator[Finding]:
     blocks = model.structures[unit].blocks
     labels = {line.label.identity: line.number for line in document.lines if line.label is not None}
-    for line in document.lines:
-        for statement in n.walk_statements(line.statements):
-            if not (isinstance(statement, n.Jump) and statement.word == "GOTO"):
-                continue
-            target = labels.get(statement.label.identity)
-            if target is None:
-                continue
-            left = [block for block in blocks if _contains(block, line.number) and not _contains(block, target)]
-            if left:
-                kind = left[-1].kind
-                what = "loop" if kind in LOOPS else "IF block"
-                detail = (
-                    f"GOTO {statement.label.text} leaves the {kind.value} {what} of line {left[-1].opener_line} "
-                    "open; repeated, this overflows the stack"
-                )
-                yield Finding(unit, mint_error(2015, statement.span, detail))
+    gotos = [
+        (line, statement)
+        for file, line, statement in statements
+        if file is unit and type(statement) is n.Jump and statement.word == "GOTO"
+    ]
+    for line, statement in gotos:
+        target = labels.get(statement.label.identity)
+        if target is None:
+            continue
+        left = [block for block in blocks if _contains(block, line.number) and not _contains(block, target)]
+        if left:
+            kind = left[-1].kind
+            what = "loop" if kind in LOOPS else "IF block"
+            detail = (
+                f"GOTO {statement.label.text} leaves the {kind.value} {what} of line {left[-1].opener_line} "
+                "open; repeated, this overflows the stack"
+            )
+            yield Finding(unit, mint_error(2015, statement.span, detail))
+
 
 
 def _contains(block: Block, line: int) -> bool:

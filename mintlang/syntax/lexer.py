@@ -103,11 +103,6 @@ class LexedLine:
     content_end: int  # where the line break starts
     length: int  # including the line break
 
-    @property
-    def comment_end(self) -> int:
-        """End of the REM comment (0 without one): comments belong to the line's span."""
-        return self.content_end if self.comment_start >= 0 else 0
-
     def tokens(self, offset: int = 0) -> list[Token]:
         """Every token of the line, trivia included, at ``offset`` in the source."""
         new = tuple.__new__  # builds the named tuple without its Python-level constructor
@@ -169,7 +164,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
     starts: list[int] = []
     ends: list[int] = []
     spellings = words.words
-    classify = words.classify
+    classify_unlisted = words.classify_unlisted
     match = _LEXEME.match
     position = 0
     length = len(line)
@@ -194,7 +189,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
             if upper == "REM":
                 comment_start = position
                 break
-            kind = spellings.get(upper) or classify(text)
+            kind = spellings.get(upper) or classify_unlisted(upper)
         elif group == "punct":
             kind = _PUNCTUATION[text]
         elif group == "number":

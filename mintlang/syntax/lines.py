@@ -76,7 +76,7 @@ def logical_lines(lexed: LexResult) -> list[LogicalLine]:
             continue
         starts = [start + offset for start in line.starts]
         ends = [end + offset for end in line.ends]
-        end = offset + line.comment_end if line.comment_end else ends[-1]
+        end = offset + line.content_end if line.comment_start >= 0 else ends[-1]  # a REM belongs to the line
         if current is None:
             current = LogicalLine(
                 number, starts[0], end, list(kinds), list(line.texts), starts, ends, [False] * len(kinds)

@@ -86,11 +86,14 @@ def parse(
     definitions: list[MacroDefinition] = []
     expansions: list[Expansion] = []
     lines: list[n.Line] = []
+    define = TokenKind.DEFINE
     for logical in logical_lines(lexed):
-        defined = take_macro_body(logical, from_configuration)
-        expand_macros(logical, visible, expansions)
-        register(visible, defined)
-        definitions.extend(defined)
+        defined = take_macro_body(logical, from_configuration) if define in logical.kinds else None
+        if visible:
+            expand_macros(logical, visible, expansions)
+        if defined:
+            register(visible, defined)
+            definitions.extend(defined)
         lines.append(_parse_line(logical, words, dialect, diagnostics))
     return Document(
         source,

@@ -33,8 +33,10 @@ class Vocabulary:
         """The token kind of ``word``; unknown words are user names."""
         upper = word.upper()
         kind = self.words.get(upper)
-        if kind is not None:
-            return kind
+        return kind if kind is not None else self.classify_unlisted(upper)
+
+    def classify_unlisted(self, upper: str) -> TokenKind:
+        """The kind of an upper-case word that is no keyword spelling: constant, IN3-style or a name."""
         if upper[0] == "_":
             return TokenKind.CONSTANT if upper in self.constants else TokenKind.NAME
         if upper[-1].isdigit() and self.split_channel(upper) is not None:

@@ -16,6 +16,7 @@ from enum import StrEnum
 
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
+from mintlang.records import node
 from mintlang.semantic.index import NameUse, SyntaxIndex
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -31,7 +32,7 @@ class SymbolKind(StrEnum):
     MACRO = "macro"
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Occurrence:
     """One place a name is written."""
 

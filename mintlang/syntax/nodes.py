@@ -10,9 +10,9 @@ Names keep their spelling; ``identity`` gives the controller's view of a name
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 
 from mintlang.diagnostics import Span
+from mintlang.records import node
 
 SIGNIFICANT_CHARACTERS = 10  # names: only the first ten characters count (v4 guide 3.2.5, 3.9)
 
@@ -22,7 +22,7 @@ def identity(name: str) -> str:
     return name[:SIGNIFICANT_CHARACTERS].upper()
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Name:
     """A user name as written: variable, array, macro or label."""
 
@@ -37,40 +37,40 @@ class Name:
 # ---------------------------------------------------------------- expressions
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Number:
     span: Span
     text: str
     value: float
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class CharConstant:
     span: Span
     text: str
     value: int  # upper-case ASCII code: 'a' and 'A' are both 65
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class StringLiteral:
     span: Span
     text: str  # with its quotes
     value: str  # without them
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ConstantRef:
     span: Span
     name: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class VariableRef:
     span: Span
     name: Name
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ElementRef:
     """``name(index)``: an array element."""
 
@@ -79,7 +79,7 @@ class ElementRef:
     index: Expression
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Selector:
     """Which axes or channel a keyword addresses: ``[0,1]`` or ``.1`` / ``.(a+1)``.
 
@@ -91,7 +91,7 @@ class Selector:
     items: tuple[Expression | None, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class KeywordRef:
     """A keyword as written: full name, abbreviation or with a glued channel (``IN3``)."""
 
@@ -103,7 +103,7 @@ class KeywordRef:
     channel: int | None  # from a glued channel number
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Call:
     """A function keyword: ``POW(x, y)``, ``COMMS(1)`` or bracketless ``SIN 90``."""
 
@@ -115,14 +115,14 @@ class Call:
     bracketed: bool
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Unary:
     span: Span
     operator: str  # "-", "+", "~", "NOT"
     operand: Expression
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Binary:
     span: Span
     operator: str  # "+", "-", "*", "/", "MOD", "=", "<>", "<", ">", "<=", ">=", "AND", "OR", "XOR"
@@ -130,7 +130,7 @@ class Binary:
     right: Expression
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Parenthesised:
     span: Span
     expression: Expression
@@ -144,7 +144,7 @@ Expression = (
 # ----------------------------------------------------------------- statements
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Assignment:
     """``name = expr`` or ``name(index) = expr``."""
 
@@ -153,7 +153,7 @@ class Assignment:
     value: Expression
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class KeywordStatement:
     """A keyword used as a statement.
 
@@ -171,7 +171,7 @@ class KeywordStatement:
     using: tuple[Expression, ...] = ()
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class FunctionStatement:
     """``COMMS(1) = 5`` or ``CAMTABLE(0, positions, increments)``."""
 
@@ -181,7 +181,7 @@ class FunctionStatement:
     fill: bool
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class BareName:
     """A user word standing alone: an unknown keyword (3007) unless a macro explains it."""
 
@@ -189,20 +189,20 @@ class BareName:
     name: Name
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfThen:
     span: Span
     condition: Expression
     body: tuple[Statement, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfDo:
     span: Span
     condition: Expression
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class For:
     span: Span
     variable: Name
@@ -211,19 +211,19 @@ class For:
     step: Expression | None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Until:
     span: Span
     condition: Expression
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class While:
     span: Span
     condition: Expression
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class BlockWord:
     """A statement that is one word: ELSE ENDIF NEXT REPEAT ENDW LOOP ENDL EXIT RETURN END."""
 
@@ -231,7 +231,7 @@ class BlockWord:
     word: str  # canonical upper-case keyword
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Jump:
     """``GOSUB label`` or ``GOTO label``."""
 
@@ -240,13 +240,13 @@ class Jump:
     label: Name
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Pause:
     span: Span
     condition: Expression | None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Dim:
     """``DIM name``, ``DIM name = value`` or ``DIM name(size) = v1, v2 ...;``."""
 
@@ -258,7 +258,7 @@ class Dim:
     modifier: str | None = None  # Mint v3's OFFLINE (a keyword anywhere else is an error)
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Define:
     """``DEFINE name = body``: ``body_span`` is the raw text the macro stands for."""
 
@@ -268,13 +268,13 @@ class Define:
     body_span: Span | None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Axes:
     span: Span
     selector: Selector | None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class PrintItem:
     """One PRINT operand; ``separator`` is the "," or ";" written after it, if any."""
 
@@ -284,7 +284,7 @@ class PrintItem:
     separator: str | None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Print:
     span: Span
     terminal: Expression | None
@@ -292,7 +292,7 @@ class Print:
     using: tuple[Expression, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Input:
     span: Span
     terminal: Expression | None
@@ -301,7 +301,7 @@ class Input:
     using: tuple[Expression, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class SyntaxError_:
     """A statement that could not be parsed; its diagnostic is in ``Document.diagnostics``.
 
@@ -335,7 +335,7 @@ Statement = (
 )
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Line:
     """One logical line: an optional label and its statements.
 

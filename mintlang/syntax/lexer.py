@@ -24,6 +24,7 @@ from typing import overload
 from mintlang.codes import mint_error, own
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.dialect import Dialect
+from mintlang.records import node
 from mintlang.syntax.tokens import Token, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
@@ -83,7 +84,7 @@ _PUNCTUATION: dict[str, TokenKind] = {
 _DOT_OWNERS = frozenset({_K.KEYWORD, _K.FUNCTION, _K.DOT, _K.AXES, _K.NAME})
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class LexedLine:
     """One physical line, lexed: offsets are relative to the line's start.
 

@@ -172,7 +172,6 @@ def _jumps_out_of_blocks(
             yield Finding(unit, mint_error(2015, statement.span, detail))
 
 
-
 def _contains(block: Block, line: int) -> bool:
     end = block.closer_line if block.closer_line is not None else math.inf
     return block.opener_line <= line <= end

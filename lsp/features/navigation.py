@@ -31,35 +31,40 @@ def locations(snapshot: Snapshot, occurrences: Iterable[Occurrence]) -> list[typ
 
 
 def register(server: MintServer) -> None:
+    def lookup(uri: str, position: types.Position) -> tuple[Snapshot, Symbol] | None:
+        """The analysed document and the symbol at ``position``, if both exist."""
+        snapshot = server.snapshot(uri)
+        found = symbol_at(snapshot, position) if snapshot is not None else None
+        return (snapshot, found[0]) if snapshot is not None and found is not None else None
+
     @server.feature(types.TEXT_DOCUMENT_DEFINITION)
     def definition(params: types.DefinitionParams) -> list[types.Location] | None:
-        snapshot = server.snapshot(params.text_document.uri)
-        found = symbol_at(snapshot, params.position) if snapshot else None
-        if snapshot is None or found is None:
+        found = lookup(params.text_document.uri, params.position)
+        if found is None:
             return None
-        return locations(snapshot, found[0].definitions) or None
+        snapshot, symbol = found
+        return locations(snapshot, symbol.definitions) or None
 
     @server.feature(types.TEXT_DOCUMENT_REFERENCES)
     def references(params: types.ReferenceParams) -> list[types.Location] | None:
-        snapshot = server.snapshot(params.text_document.uri)
-        found = symbol_at(snapshot, params.position) if snapshot else None
-        if snapshot is None or found is None:
+        found = lookup(params.text_document.uri, params.position)
+        if found is None:
             return None
-        symbol = found[0]
+        snapshot, symbol = found
         wanted = symbol.occurrences() if params.context.include_declaration else symbol.references
         return locations(snapshot, wanted)
 
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_HIGHLIGHT)
     def highlight(params: types.DocumentHighlightParams) -> list[types.DocumentHighlight] | None:
-        snapshot = server.snapshot(params.text_document.uri)
-        found = symbol_at(snapshot, params.position) if snapshot else None
-        if snapshot is None or found is None:
+        found = lookup(params.text_document.uri, params.position)
+        if found is None:
             return None
+        snapshot, symbol = found
         return [
             types.DocumentHighlight(
                 range=snapshot.positions.range(occurrence.span),
                 kind=types.DocumentHighlightKind.Write if occurrence.is_write else types.DocumentHighlightKind.Read,
             )
-            for occurrence in found[0].occurrences()
+            for occurrence in symbol.occurrences()
             if occurrence.unit is snapshot.unit
         ]

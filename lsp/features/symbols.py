@@ -4,14 +4,18 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from dataclasses import dataclass
+from pathlib import Path
 
 from lsprotocol import types
+from pygls.uris import from_fs_path, to_fs_path
 
 from mintlang.lsp.features.navigation import locations
 from mintlang.lsp.server import MintServer
-from mintlang.lsp.workspace import Snapshot
+from mintlang.lsp.workspace import PROGRAM_SUFFIX, Snapshot
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import Symbol, SymbolKind
+
+MAX_FILES = 2000  # workspace symbols read at most this many programs from disk
 
 _KINDS = {
     SymbolKind.VARIABLE: types.SymbolKind.Variable,
@@ -97,8 +101,8 @@ def register(server: MintServer) -> None:
     def workspace_symbols(params: types.WorkspaceSymbolParams) -> list[types.WorkspaceSymbol]:
         query = params.query.upper()
         found: dict[tuple[str, int, int], types.WorkspaceSymbol] = {}
-        for uri in list(server.workspace.text_documents):
-            snapshot = server.snapshot(uri)
+        for uri in dict.fromkeys([*server.workspace.text_documents, *_workspace_programs(server)]):
+            snapshot = server.snapshot(uri) or _from_disk(server, uri)
             if snapshot is None:
                 continue
             for symbol in snapshot.model.symbols.all():
@@ -110,3 +114,21 @@ def register(server: MintServer) -> None:
                     key = (location.uri, location.range.start.line, location.range.start.character)
                     found[key] = types.WorkspaceSymbol(name=name, kind=kind, location=location)
         return list(found.values())
+
+
+def _workspace_programs(server: MintServer) -> list[str]:
+    """URIs of the programs under the workspace folders, open or not (the first MAX_FILES, by path)."""
+    roots = [to_fs_path(folder.uri) for folder in server.workspace.folders.values()]
+    if not roots and server.workspace.root_path:
+        roots = [server.workspace.root_path]
+    paths: list[Path] = []
+    for root in roots:
+        if root is not None and Path(root).is_dir():
+            paths.extend(path for path in Path(root).rglob("*") if path.suffix.lower() == PROGRAM_SUFFIX)
+    return [from_fs_path(str(path)) or "" for path in sorted(paths)[:MAX_FILES]]
+
+
+def _from_disk(server: MintServer, uri: str) -> Snapshot | None:
+    """The analysis of a program the client has not opened, read from disk (cached by its text)."""
+    text = server.read_text(uri)
+    return server.analyses.snapshot(uri, text, None) if text is not None else None

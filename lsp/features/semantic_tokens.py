@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from lsprotocol import types
 
+from mintlang.diagnostics import Span
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.syntax.nodes import identity
@@ -32,14 +33,16 @@ for _kind in (TokenKind.AND, TokenKind.OR, TokenKind.NOT, TokenKind.MOD, TokenKi
     _BY_KIND[_kind] = _TYPE["operator"]
 
 
-def encode(snapshot: Snapshot) -> list[int]:
-    """The relative five-integer encoding of every coloured token."""
+def encode(snapshot: Snapshot, within: Span | None = None) -> list[int]:
+    """The relative five-integer encoding of every coloured token (of those in ``within``, if given)."""
     symbols = snapshot.model.symbols
     macros, labels = symbols.macros, symbols.labels[snapshot.unit]
     data: list[int] = []
     previous_line = previous_start = 0
     positions = snapshot.positions
     for token in snapshot.document.tokens:
+        if within is not None and not within.start <= token.start < within.end:
+            continue
         kind = _BY_KIND.get(token.kind)
         if token.kind is TokenKind.NAME:
             name = identity(token.text)
@@ -67,3 +70,14 @@ def register(server: MintServer) -> None:
     def full(params: types.SemanticTokensParams) -> types.SemanticTokens:
         snapshot = server.snapshot(params.text_document.uri)
         return types.SemanticTokens(data=encode(snapshot) if snapshot is not None else [])
+
+    @server.feature(
+        types.TEXT_DOCUMENT_SEMANTIC_TOKENS_RANGE,
+        types.SemanticTokensLegend(token_types=TOKEN_TYPES, token_modifiers=TOKEN_MODIFIERS),
+    )
+    def in_range(params: types.SemanticTokensRangeParams) -> types.SemanticTokens:
+        """The visible part first: editors ask for it before the whole of a large file."""
+        snapshot = server.snapshot(params.text_document.uri)
+        if snapshot is None:
+            return types.SemanticTokens(data=[])
+        return types.SemanticTokens(data=encode(snapshot, snapshot.positions.span(params.range)))

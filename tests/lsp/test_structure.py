@@ -71,3 +71,18 @@ async def test_semantic_tokens(client, tmp_path):
     assert ("_TRUE", "enumMember") in decoded
     assert ("REM note", "comment") in decoded
     assert ('"x"', "string") in decoded
+
+
+async def test_semantic_tokens_of_a_range_are_those_of_its_lines(client, tmp_path):
+    text = "DIM a\na = 1\nPRINT a\n"
+    uri = uri_of(tmp_path / "range.mnt")
+    await open_document(client, uri, text)
+    visible = types.Range(start=types.Position(line=1, character=0), end=types.Position(line=2, character=0))
+    tokens = await client.text_document_semantic_tokens_range_async(
+        types.SemanticTokensRangeParams(text_document=document(uri), range=visible)
+    )
+    data = list(tokens.data)
+    first_line = data[0]  # relative to the start of the document: the range starts on line 1
+    kinds = [TOKEN_TYPES[data[index + 3]] for index in range(0, len(data), 5)]
+    assert (first_line, kinds) == (1, ["variable", "number"])  # "a = 1" only
+

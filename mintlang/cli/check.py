@@ -106,7 +106,7 @@ def check(
         if output:
             click.echo(output)
     else:
-        render_text(reports, Console(highlight=False))
+        render_text(reports, Console(highlight=False, soft_wrap=True))
     failed = any(d.severity is Severity.ERROR for report in reports for d in report.diagnostics)
     sys.exit(1 if failed else 0)
 

@@ -79,6 +79,18 @@ def test_the_3001_fix_keeps_the_files_line_breaks() -> None:
     assert edit.text == "DIM a\r\n"
 
 
+def test_a_misspelt_variable_gets_the_declared_name_it_resembles() -> None:
+    source = "DIM target\ntarget = 1\nPRINT targt\n"
+    diagnostic = only(source, "E3001")
+    assert diagnostic.message.endswith("did you mean 'target'?")
+    replace, declare = diagnostic.fixes
+    assert (replace.title, apply(source, replace.edits)) == (
+        "Replace with target",
+        "DIM target\ntarget = 1\nPRINT target\n",
+    )
+    assert declare.title == "Declare 'targt' with DIM"
+
+
 def test_the_3001_fix_keeps_a_dim_list_continued_over_lines_whole() -> None:
     source = "DIM y(3) = 1,\nb, 2\n"
     (fix,) = only(source, "E3001").fixes

@@ -85,4 +85,3 @@ async def test_semantic_tokens_of_a_range_are_those_of_its_lines(client, tmp_pat
     first_line = data[0]  # relative to the start of the document: the range starts on line 1
     kinds = [TOKEN_TYPES[data[index + 3]] for index in range(0, len(data), 5)]
     assert (first_line, kinds) == (1, ["variable", "number"])  # "a = 1" only
-

@@ -11,6 +11,7 @@ whose text uses another macro fails with a syntax error (3.5).
 from __future__ import annotations
 
 from collections.abc import Iterator
+from difflib import get_close_matches
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import Facts
@@ -33,6 +34,7 @@ def check(facts: Facts) -> Iterator[Finding]:
 
 def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
     renames = database()
+    declared = [symbol.name for symbol in model.symbols.variables.values() if symbol.definitions]
     for symbol in model.symbols.variables.values():
         if renames.rename_of(symbol.name) is not None:
             continue  # an old v3 keyword: the v3-keyword rule explains it
@@ -40,11 +42,13 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
             if occurrence.declared_before:
                 continue
             fixes = (_add_dim(model, symbol, occurrence.unit, occurrence.span),) if index == 0 else ()
-            later = " (its DIM comes later: declarations must come first)" if symbol.definitions else ""
-            yield Finding(
-                occurrence.unit,
-                mint_error(3001, occurrence.span, f"'{occurrence.spelling}' is not declared{later}", fixes=fixes),
-            )
+            detail = f"'{occurrence.spelling}' is not declared"
+            if symbol.definitions:
+                detail += " (its DIM comes later: declarations must come first)"
+            elif close := get_close_matches(occurrence.spelling, declared, n=1, cutoff=0.8):
+                detail += f"; did you mean '{close[0]}'?"
+                fixes = (Fix(f"Replace with {close[0]}", (Edit(occurrence.span, close[0]),)), *fixes)
+            yield Finding(occurrence.unit, mint_error(3001, occurrence.span, detail, fixes=fixes))
 
 
 def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span) -> Fix:

@@ -89,7 +89,7 @@ class Context:
     def build(cls, texts: Mapping[Unit, str], controller: str) -> Context:
         configuration = None
         if Unit.CONFIGURATION in texts:
-            configuration = mintlang.parse(texts[Unit.CONFIGURATION], "v3", from_configuration=True)
+            configuration = mintlang.parse(texts[Unit.CONFIGURATION], "v3")
         program = mintlang.parse(
             texts[Unit.PROGRAM], "v3", macros=configuration.macros if configuration is not None else None
         )

@@ -48,7 +48,7 @@ def check_application(
     ignore: tuple[str, ...] = (),
 ) -> Analysis:
     """Parse and analyse a program with its optional configuration file; diagnostics per file."""
-    configuration = parse(config, dialect, from_configuration=True) if config is not None else None
+    configuration = parse(config, dialect) if config is not None else None
     program = parse(source, dialect, macros=configuration.macros if configuration else None)
     return analyse(build_model(program, configuration, controller), select=select, ignore=ignore)
 

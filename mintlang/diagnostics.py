@@ -63,7 +63,6 @@ class Diagnostic:
     message: str
     mint_error: int | None = None
     fixes: tuple[Fix, ...] = field(default=())
-    path: str | None = None  # set when a diagnostic concerns another file (configuration)
 
 
 @dataclass(frozen=True, slots=True)

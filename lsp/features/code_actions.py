@@ -36,7 +36,7 @@ def _edits(snapshot: Snapshot, edits: tuple[mintlang.Edit, ...]) -> types.Worksp
 def quick_fixes(snapshot: Snapshot, selection: types.Range) -> Iterator[types.CodeAction]:
     start, end = snapshot.positions.span(selection)
     for diagnostic in snapshot.diagnostics:
-        if diagnostic.path is not None or not _overlaps(diagnostic.span, start, end):
+        if not _overlaps(diagnostic.span, start, end):
             continue
         for fix in diagnostic.fixes:
             yield types.CodeAction(

@@ -51,7 +51,7 @@ def lsp_diagnostics(snapshot: Snapshot) -> list[types.Diagnostic]:
                 source="mint",
             )
         ]
-    return [to_lsp(diagnostic, snapshot) for diagnostic in snapshot.diagnostics if diagnostic.path is None]
+    return [to_lsp(diagnostic, snapshot) for diagnostic in snapshot.diagnostics]
 
 
 def publish(server: MintServer, uri: str) -> None:

@@ -29,7 +29,6 @@ class MacroDefinition:
     name_span: Span
     body: tuple[tuple[TokenKind, str], ...]
     body_span: Span | None
-    from_configuration: bool
 
 
 @dataclass(frozen=True, slots=True)
@@ -96,7 +95,7 @@ def logical_lines(lexed: LexResult) -> list[LogicalLine]:
     return lines
 
 
-def take_macro_body(line: LogicalLine, from_configuration: bool) -> list[MacroDefinition]:
+def take_macro_body(line: LogicalLine) -> list[MacroDefinition]:
     """Collapse each ``DEFINE name = ...`` body into one MACRO_BODY token; return the definitions."""
     definitions: list[MacroDefinition] = []
     kinds = line.kinds
@@ -112,7 +111,7 @@ def take_macro_body(line: LogicalLine, from_configuration: bool) -> list[MacroDe
         has_body = index + 2 < len(kinds) and kinds[index + 2] is _K.EQUAL and body_start < len(kinds)
         body = tuple(zip(kinds[body_start:], line.texts[body_start:], strict=True)) if has_body else ()
         body_span = Span(line.starts[body_start], line.ends[-1]) if has_body else None
-        definitions.append(MacroDefinition(line.texts[index + 1], name_span, body, body_span, from_configuration))
+        definitions.append(MacroDefinition(line.texts[index + 1], name_span, body, body_span))
         if has_body and body_span is not None:
             text = " ".join(line.texts[body_start:])
             del kinds[body_start:], line.texts[body_start:], line.starts[body_start:], line.ends[body_start:]

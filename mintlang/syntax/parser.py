@@ -58,10 +58,6 @@ class Document:
     expansions: tuple[Expansion, ...]
     line_index: LineIndex
 
-    def statements(self) -> list[tuple[n.Line, n.Statement]]:
-        """Every statement with its line, IF .. THEN bodies included, in source order."""
-        return [(line, statement) for line in self.lines for statement in n.walk_statements(line.statements)]
-
 
 def clear_caches() -> None:
     """Forget lexed lines and parsed token sequences (benchmarks measure cold runs with this)."""
@@ -75,7 +71,6 @@ def parse(
     dialect: Dialect | str = Dialect.V4,
     *,
     macros: Mapping[str, MacroDefinition] | None = None,
-    from_configuration: bool = False,
 ) -> Document:
     """Parse ``source``; ``macros`` are those already defined (by the configuration file)."""
     dialect = Dialect(dialect)
@@ -88,7 +83,7 @@ def parse(
     lines: list[n.Line] = []
     define = TokenKind.DEFINE
     for logical in logical_lines(lexed):
-        defined = take_macro_body(logical, from_configuration) if define in logical.kinds else None
+        defined = take_macro_body(logical) if define in logical.kinds else None
         if visible:
             expand_macros(logical, visible, expansions)
         if defined:

@@ -29,12 +29,6 @@ class Vocabulary:
     suffixed: frozenset[str]  # keywords that also take a glued channel number: IN3, OUT1
     constants: frozenset[str]  # upper-case names of predefined constants
 
-    def classify(self, word: str) -> TokenKind:
-        """The token kind of ``word``; unknown words are user names."""
-        upper = word.upper()
-        kind = self.words.get(upper)
-        return kind if kind is not None else self.classify_unlisted(upper)
-
     def classify_unlisted(self, upper: str) -> TokenKind:
         """The kind of an upper-case word that is no keyword spelling: constant, IN3-style or a name."""
         if upper[0] == "_":

@@ -1,0 +1,1 @@
+"""mint-run: the reference runtime that executes Mint programs against simulated axes, I/O and a host."""

@@ -1,0 +1,35 @@
+"""Run-time errors with the controller's numbers.
+
+A Mint program that fails at run time fails with one of the manual's error
+codes (``ERR``), optionally tied to an axis or channel (``ERRAXIS``). The
+interpreter turns a raised ``MintError`` into ``#ONERROR`` or into the end of
+the run; nothing else in the runtime should raise for a program's mistake.
+"""
+
+from __future__ import annotations
+
+from mintlang.keyworddb import database
+
+
+class MintError(Exception):
+    """A run-time error the controller would report with ``code`` (and ``axis``, its ``ERRAXIS``)."""
+
+    def __init__(self, code: int, axis: int | None = None, detail: str = "") -> None:
+        self.code = code
+        self.axis = axis
+        self.detail = detail
+        super().__init__(self.describe())
+
+    @property
+    def title(self) -> str:
+        record = database().errors.get(self.code)
+        return record.title if record is not None else f"error {self.code}"
+
+    def describe(self) -> str:
+        """``R0003: Data specified out of range [axis/channel 0]``, as the controller prints it."""
+        text = f"R{self.code:04d}: {self.title}"
+        if self.axis is not None:
+            text += f" [axis/channel {self.axis}]"
+        if self.detail:
+            text += f" ({self.detail})"
+        return text

@@ -1,0 +1,147 @@
+"""The simulated operator terminal: one merged output stream and one keyboard buffer (spec PR-4, PR-5).
+
+Output is plain text meant for a log, so screen-control commands degrade to
+what a log can show: ``CLS`` ends the current line, ``LOCATE`` pads with spaces
+to the column, ``BEEP`` writes the BEL character. The column is tracked because
+``;`` tab stops depend on it.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import deque
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.numbers import f32
+
+TAB_WIDTH = 8
+NEWLINE = "\n"
+BELL = "\a"
+_LINE_ENDS = "\r\n"
+_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)")
+
+
+@dataclass(frozen=True, slots=True)
+class NumberEntry:
+    """A line typed at ``INPUT``: a number, ``value=None`` for an empty line (keep the variable), or ``retry``.
+
+    The manual asks for the number again when the entry is not numeric, and keeps
+    the variable's value on a bare return; the runtime prints its prompt again on ``retry``.
+    """
+
+    value: float | None
+    retry: bool = False
+
+
+class Terminal:
+    """Collects everything the program prints and serves scripted keystrokes to ``INKEY`` and ``INPUT``."""
+
+    def __init__(self, echo: Callable[[str], None] | None = None) -> None:
+        """``echo`` receives each piece of output as it is written, so a caller can stream it live."""
+        self._chunks: list[str] = []
+        self._echo = echo
+        self._keys: deque[str] = deque()
+        self.column = 0
+
+    @property
+    def text(self) -> str:
+        """Everything written so far."""
+        return "".join(self._chunks)
+
+    def write(self, text: str) -> None:
+        """Append raw text; CR or LF returns the column to 0, other control characters take no column."""
+        if not text:
+            return
+        self._chunks.append(text)
+        if self._echo is not None:
+            self._echo(text)
+        line_start = max(text.rfind("\r"), text.rfind("\n")) + 1
+        tail = text[line_start:]
+        width = len(tail) if tail.isprintable() else sum(character.isprintable() for character in tail)
+        self.column = width if line_start else self.column + width
+
+    def newline(self) -> None:
+        self.write(NEWLINE)
+
+    def tab(self) -> None:
+        """Move to the next tab stop; at a stop already, move to the following one."""
+        self.write(" " * (TAB_WIDTH - self.column % TAB_WIDTH))
+
+    def print_items(self, items: Sequence[tuple[str, str | None]], newline: bool) -> None:
+        """Render one ``PRINT`` from already formatted items, each with the separator after it.
+
+        ``,`` joins the next item directly, ``;`` moves to the next tab stop. A
+        separator after the last item suppresses the line feed (PR-4 RC), and the
+        ``;`` padding still happens. ``newline=False`` never ends the line, for prompts.
+        """
+        for text, separator in items:
+            self.write(text)
+            if separator == ";":
+                self.tab()
+        if newline and (not items or items[-1][1] is None):
+            self.newline()
+
+    def cls(self) -> None:
+        """``CLS``: a log cannot be cleared, so only the current line is ended and the cursor is at column 0."""
+        if self.column:
+            self.newline()
+
+    def beep(self) -> None:
+        """``BEEP``: the BEL character, the same byte ``PRINT CHR(7)`` sends."""
+        self.write(BELL)
+
+    def locate(self, column: int, row: int) -> None:
+        """``LOCATE``: rows are ignored; the column is reached with spaces, on a new line if already past it.
+
+        Out-of-range coordinates (below 1) leave the cursor where it is, as the manual describes.
+        """
+        if column < 1 or row < 1:
+            return
+        target = column - 1
+        if target < self.column:
+            self.newline()
+        self.write(" " * (target - self.column))
+
+    def type_keys(self, text: str) -> None:
+        """Queue scripted keystrokes; ``INKEY`` and ``INPUT`` consume them in order."""
+        self._keys.extend(text)
+
+    def inkey(self) -> int:
+        """``INKEY``: 0 when nothing is waiting, else the oldest key's code with a-z upper-cased (PR-5)."""
+        if not self._keys:
+            return 0
+        key = self._keys.popleft()
+        return ord(key.upper() if "a" <= key <= "z" else key)
+
+    def read_line(self) -> str | None:
+        """One line for ``INPUT``, or None until a CR or LF has been typed (the runtime retries next tick).
+
+        CR LF counts as one line end. The typed line is echoed to the output, as a
+        terminal shows what the operator typed, so the log reads like the session.
+        """
+        end = next((index for index, key in enumerate(self._keys) if key in _LINE_ENDS), None)
+        if end is None:
+            return None
+        line = "".join(self._keys.popleft() for _ in range(end))
+        if self._keys.popleft() == "\r" and self._keys and self._keys[0] == "\n":
+            self._keys.popleft()
+        self.write(line)
+        self.newline()
+        return line
+
+    def read_number(self) -> NumberEntry | None:
+        """A line for ``INPUT`` read as a number; None until a line is complete."""
+        line = self.read_line()
+        if line is None:
+            return None
+        entry = line.strip()
+        if not entry:
+            return NumberEntry(None)
+        if _NUMBER.fullmatch(entry) is None:
+            return NumberEntry(None, retry=True)
+        try:
+            return NumberEntry(f32(float(entry)))
+        except MintError:
+            return NumberEntry(None, retry=True)

@@ -1,0 +1,198 @@
+"""The host port: host packets over TCP on 127.0.0.1, applied by the simulation thread at tick boundaries.
+
+A daemon thread only moves bytes (accepts, receives into per-connection inboxes, sends queued
+replies). Decoding and every effect on the comms array happen in ``service``, which the simulation
+calls once per servo tick, so a run's behaviour depends only on which tick the bytes arrived in,
+and replies leave at the next tick (CM-6 RC).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import selectors
+import socket
+import threading
+from dataclasses import dataclass, field
+from types import TracebackType
+from typing import Self
+
+from mintlang.runtime.comms.packets import HostEndpoint, PacketDecoder
+
+_RECEIVE_SIZE = 4096
+_INBOX_LIMIT = 1 << 16
+"""Bytes held per connection before reading pauses: a flooding client is slowed by TCP, not by memory."""
+
+
+@dataclass(slots=True, eq=False)
+class _Connection:
+    """One client; ``decoder`` belongs to the simulation thread, the rest is shared under the server's lock."""
+
+    sock: socket.socket
+    decoder: PacketDecoder = field(default_factory=PacketDecoder)
+    inbox: bytearray = field(default_factory=bytearray)
+    outbox: bytearray = field(default_factory=bytearray)
+    watched: int = 0
+    open: bool = True
+
+
+class HostPortServer:
+    """A TCP host port; each connection is its own byte stream with its own packet decoder.
+
+    Threading contract: create, ``service`` and ``close`` from the simulation thread; ``port`` from
+    anywhere. Client misbehaviour (garbage, half packets, resets) never raises here: a closed
+    connection's received bytes are still serviced once, and its replies are dropped.
+    """
+
+    def __init__(self, port: int = 0) -> None:
+        self._listener = socket.create_server(("127.0.0.1", port))
+        self._listener.setblocking(False)
+        self._wake_reader, self._wake_writer = socket.socketpair()
+        self._wake_reader.setblocking(False)
+        self._wake_writer.setblocking(False)
+        self._selector = selectors.DefaultSelector()
+        self._selector.register(self._listener, selectors.EVENT_READ)
+        self._selector.register(self._wake_reader, selectors.EVENT_READ)
+        self._lock = threading.Lock()
+        self._connections: list[_Connection] = []
+        self._closing = threading.Event()
+        self._thread = threading.Thread(target=self._run, name="mint-host-port", daemon=True)
+        self._thread.start()
+
+    @property
+    def port(self) -> int:
+        """The bound port, useful when the server was asked for port 0."""
+        return self._listener.getsockname()[1]
+
+    def service(self, endpoint: HostEndpoint) -> None:
+        """Decode the bytes received since the last call, apply them through ``endpoint`` and queue the replies."""
+        with self._lock:
+            batch = [(connection, bytes(connection.inbox)) for connection in self._connections if connection.inbox]
+            for connection, _ in batch:
+                connection.inbox.clear()
+            self._connections = [connection for connection in self._connections if connection.open]
+        if not batch:
+            return
+        replies = [
+            (connection, b"".join(endpoint.answer(request) for request in connection.decoder.feed(data)))
+            for connection, data in batch
+        ]
+        with self._lock:
+            for connection, reply in replies:
+                if connection.open:
+                    connection.outbox += reply
+        self._wake()
+
+    def close(self) -> None:
+        """Stop the I/O thread and close every socket; calling it again does nothing."""
+        if self._closing.is_set():
+            return
+        self._closing.set()
+        self._wake()
+        self._thread.join()
+        with self._lock:
+            connections, self._connections = self._connections, []
+        for connection in connections:
+            connection.open = False
+            connection.sock.close()
+        self._selector.close()
+        for sock in (self._listener, self._wake_reader, self._wake_writer):
+            sock.close()
+
+    def __enter__(self) -> Self:
+        return self
+
+    def __exit__(
+        self, kind: type[BaseException] | None, error: BaseException | None, traceback: TracebackType | None
+    ) -> None:
+        self.close()
+
+    def _wake(self) -> None:
+        """Interrupt the I/O thread's ``select``; a full wake-up socket already means a wake-up is pending."""
+        with contextlib.suppress(OSError):
+            self._wake_writer.send(b"\0")
+
+    def _run(self) -> None:
+        while not self._closing.is_set():
+            self._update_watches()
+            for key, events in self._selector.select():
+                if key.fileobj is self._listener:
+                    self._accept()
+                elif key.fileobj is self._wake_reader:
+                    with contextlib.suppress(OSError):
+                        self._wake_reader.recv(_RECEIVE_SIZE)
+                else:
+                    connection: _Connection = key.data
+                    if events & selectors.EVENT_READ:
+                        self._receive(connection)
+                    if events & selectors.EVENT_WRITE and connection.open:
+                        self._send(connection)
+
+    def _update_watches(self) -> None:
+        """Read while the inbox has room, write while replies wait; a connection wanting neither is unregistered."""
+        with self._lock:
+            wanted = [
+                (
+                    connection,
+                    (selectors.EVENT_READ if len(connection.inbox) < _INBOX_LIMIT else 0)
+                    | (selectors.EVENT_WRITE if connection.outbox else 0),
+                )
+                for connection in self._connections
+                if connection.open
+            ]
+        for connection, events in wanted:
+            if events == connection.watched:
+                continue
+            if not connection.watched:
+                self._selector.register(connection.sock, events, connection)
+            elif not events:
+                self._selector.unregister(connection.sock)
+            else:
+                self._selector.modify(connection.sock, events, connection)
+            connection.watched = events
+
+    def _accept(self) -> None:
+        try:
+            sock, _ = self._listener.accept()
+        except OSError:
+            return
+        sock.setblocking(False)
+        sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+        with self._lock:
+            self._connections.append(_Connection(sock))
+
+    def _receive(self, connection: _Connection) -> None:
+        try:
+            data = connection.sock.recv(_RECEIVE_SIZE)
+        except BlockingIOError:
+            return
+        except OSError:
+            data = b""
+        if not data:
+            self._drop(connection)
+            return
+        with self._lock:
+            connection.inbox += data
+
+    def _send(self, connection: _Connection) -> None:
+        with self._lock:
+            pending = bytes(connection.outbox)
+        try:
+            sent = connection.sock.send(pending)
+        except BlockingIOError:
+            return
+        except OSError:
+            self._drop(connection)
+            return
+        with self._lock:
+            del connection.outbox[:sent]
+
+    def _drop(self, connection: _Connection) -> None:
+        """Close a finished client; its unserviced bytes stay for one last ``service``."""
+        if connection.watched:
+            self._selector.unregister(connection.sock)
+            connection.watched = 0
+        connection.sock.close()
+        with self._lock:
+            connection.open = False
+            if not connection.inbox:
+                self._connections.remove(connection)

@@ -1,0 +1,234 @@
+"""What a run must show, and whether it did.
+
+An expectation is checked against an ``Observer``, the simulator's view of
+the controller at one moment, so that this module knows nothing about how
+the run is made and the simulator nothing about how expectations are written.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+from enum import StrEnum
+from typing import TYPE_CHECKING, Protocol
+
+from rich.console import Console
+from rich.table import Table
+from rich.text import Text
+
+from mintlang.runtime.scenario.targets import Target
+
+if TYPE_CHECKING:
+    from mintlang.runtime.scenario.stimulus import Scenario
+
+STOP_REASONS = ("end", "error", "until", "deadlock", "wall-limit")
+"""Why a run stops: the program ended, an error ended it, ``--until`` ran out, W-4 deadlock, the wall-clock limit."""
+
+
+class Comparison(StrEnum):
+    """How an actual value must relate to the expected one, within the tolerance."""
+
+    EQUAL = "="
+    NOT_EQUAL = "<>"
+    AT_LEAST = ">="
+    AT_MOST = "<="
+
+    def holds(self, actual: float, expected: float, tolerance: float) -> bool:
+        match self:
+            case Comparison.EQUAL:
+                return abs(actual - expected) <= tolerance
+            case Comparison.NOT_EQUAL:
+                return abs(actual - expected) > tolerance
+            case Comparison.AT_LEAST:
+                return actual >= expected - tolerance
+            case Comparison.AT_MOST:
+                return actual <= expected + tolerance
+
+
+@dataclass(frozen=True, slots=True)
+class Origin:
+    """Where an expectation was written, for the report."""
+
+    source: str
+    line: int
+
+    def __str__(self) -> str:
+        return f"{self.source}:{self.line}"
+
+
+def _number(value: float) -> str:
+    """A value as people write it: ``1000``, ``0.5``, never ``1000.0`` or ``-0``."""
+    return f"{value + 0.0:.15g}"
+
+
+@dataclass(frozen=True, slots=True)
+class ValueExpectation:
+    """A keyword, variable or array element compared with a number."""
+
+    target: Target
+    comparison: Comparison
+    value: float
+    tolerance: float
+    at_ms: int | None  # None: at the end of the run
+    origin: Origin
+
+    @property
+    def what(self) -> str:
+        return self.target.text
+
+    @property
+    def expected(self) -> str:
+        text = f"{self.comparison.value} {_number(self.value)}"
+        return f"{text} ± {_number(self.tolerance)}" if self.tolerance else text
+
+
+@dataclass(frozen=True, slots=True)
+class TerminalExpectation:
+    """Text the program must have printed to the terminal by then."""
+
+    text: str
+    at_ms: int | None
+    origin: Origin
+
+    @property
+    def what(self) -> str:
+        return "terminal"
+
+    @property
+    def expected(self) -> str:
+        return f"contains {self.text!r}"
+
+
+@dataclass(frozen=True, slots=True)
+class StoppedExpectation:
+    """Why the run must stop; known only at the end, so it has no time."""
+
+    reason: str  # one of STOP_REASONS
+    origin: Origin
+
+    @property
+    def at_ms(self) -> None:
+        return None
+
+    @property
+    def what(self) -> str:
+        return "stopped"
+
+    @property
+    def expected(self) -> str:
+        return self.reason
+
+
+Expectation = ValueExpectation | TerminalExpectation | StoppedExpectation
+
+
+class Observer(Protocol):
+    """The simulator's view of the controller at the moment expectations are checked."""
+
+    @property
+    def terminal(self) -> str:
+        """Everything printed to the terminal so far."""
+        ...
+
+    @property
+    def stopped(self) -> str:
+        """Why the run stopped (one of ``STOP_REASONS``); asked only at the end."""
+        ...
+
+    @property
+    def axes(self) -> tuple[int, ...]:
+        """The axes of the controller, for an axis keyword written without its axis."""
+        ...
+
+    def value(self, target: str) -> float | None:
+        """The value of a canonical target (``POS.0``, ``OUT``, ``COMMS(5)``, ``COUNT``); None if it does not exist."""
+        ...
+
+
+@dataclass(frozen=True, slots=True)
+class Outcome:
+    """The verdict on one expectation, with what was seen, in words for the report."""
+
+    expectation: Expectation
+    held: bool
+    actual: str
+    detail: str  # why it failed, or ""
+
+
+def evaluate(expectation: Expectation, observe: Observer) -> Outcome:
+    """Check one expectation now; the simulator calls this at ``expectation.at_ms`` or at the end."""
+    match expectation:
+        case ValueExpectation():
+            return _evaluate_value(expectation, observe)
+        case TerminalExpectation(text=text):
+            printed = observe.terminal
+            held = text in printed
+            detail = "" if held else f"not among the {len(printed)} characters printed"
+            return Outcome(expectation, held, _last_line(printed), detail)
+        case StoppedExpectation(reason=reason):
+            return Outcome(expectation, observe.stopped == reason, observe.stopped, "")
+
+
+def _evaluate_value(expectation: ValueExpectation, observe: Observer) -> Outcome:
+    target = expectation.target
+    names = [target.on_axis(axis) for axis in observe.axes] if target.every_axis else [target.text]
+    if not names:
+        return Outcome(expectation, False, "no axes", "the controller has no axes to check")
+    readings = {name: observe.value(name) for name in names}
+    missing = [name for name, value in readings.items() if value is None]
+    if missing:
+        return Outcome(expectation, False, "missing", f"no such thing in this run: {', '.join(missing)}")
+    values = {name: value for name, value in readings.items() if value is not None}
+    failing = [
+        name
+        for name, value in values.items()
+        if not expectation.comparison.holds(value, expectation.value, expectation.tolerance)
+    ]
+    if not target.every_axis:
+        (actual,) = values.values()
+        off = f"off by {_number(actual - expectation.value)}" if failing else ""
+        return Outcome(expectation, not failing, _number(actual), off)
+    if len(set(values.values())) == 1:
+        shown = f"{_number(next(iter(values.values())))} on every axis"
+    else:
+        shown = ", ".join(f"{name} = {_number(value)}" for name, value in values.items())
+    return Outcome(expectation, not failing, shown, f"fails on {', '.join(failing)}" if failing else "")
+
+
+def _last_line(printed: str) -> str:
+    lines = [line for line in printed.splitlines() if line.strip()]
+    if not lines:
+        return "(nothing printed)"
+    last = lines[-1] if len(lines[-1]) <= 40 else "…" + lines[-1][-39:]
+    return f"last line {last!r}"
+
+
+def expectations_at(scenario: Scenario) -> tuple[int, ...]:
+    """The simulated times (ms) at which the run must pause and check expectations, in order."""
+    return tuple(sorted({e.at_ms for e in scenario.expectations if e.at_ms is not None}))
+
+
+def all_held(outcomes: Iterable[Outcome]) -> bool:
+    return all(outcome.held for outcome in outcomes)
+
+
+def render_outcomes(outcomes: Iterable[Outcome], console: Console) -> None:
+    """A table of every expectation with what was seen, then a one-line verdict."""
+    outcomes = tuple(outcomes)
+    table = Table("expectation", "when", "expected", "actual", "result")
+    for outcome in outcomes:
+        expectation = outcome.expectation
+        what = Text(expectation.what)
+        what.append(f"\n{expectation.origin}", style="dim")
+        actual = Text(outcome.actual)
+        if outcome.detail:
+            actual.append(f"\n{outcome.detail}", style="dim")
+        result = Text("✓", style="green") if outcome.held else Text("✗", style="bold red")
+        when = "end" if expectation.at_ms is None else f"{expectation.at_ms} ms"
+        table.add_row(what, when, Text(expectation.expected), actual, result)
+    console.print(table)
+    failed = sum(not outcome.held for outcome in outcomes)
+    if failed:
+        console.print(Text(f"{failed} of {len(outcomes)} expectations failed.", style="bold red"))
+    else:
+        console.print(Text(f"All {len(outcomes)} expectations held.", style="green"))

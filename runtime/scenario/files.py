@@ -1,0 +1,239 @@
+"""The file front end: a scenario written in TOML (``mint-run --stimulus/--expect FILE``).
+
+Every table is read through checks that name the key and its line, and all
+mistakes of a file are gathered before one ``ScenarioFileError`` is raised.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from collections.abc import Callable, Mapping
+from functools import partial
+from pathlib import Path
+
+from mintlang.runtime.scenario import builders
+from mintlang.runtime.scenario.collect import Collector
+from mintlang.runtime.scenario.expectations import Comparison, Expectation, Origin
+from mintlang.runtime.scenario.phrase import Phrase
+from mintlang.runtime.scenario.problems import Invalid, ScenarioError, ScenarioFileError
+from mintlang.runtime.scenario.stimulus import Scenario, WorldRecord
+from mintlang.runtime.scenario.toml_layout import Layout, Section
+
+_TOML_LINE = re.compile(r"at line (\d+)")
+_COMPARISONS = {
+    "equals": Comparison.EQUAL,
+    "not_equal": Comparison.NOT_EQUAL,
+    "at_least": Comparison.AT_LEAST,
+    "at_most": Comparison.AT_MOST,
+}
+
+
+class _Entry:
+    """One table of the file; each read checks the value's type and blames the key's line."""
+
+    __slots__ = ("_section", "_values", "name", "origin")
+
+    def __init__(self, name: str, values: Mapping[str, object], section: Section, source: str) -> None:
+        self.name = name
+        self._values = values
+        self._section = section
+        self.origin = Origin(source, section.line)
+
+    def __contains__(self, key: str) -> bool:
+        return key in self._values
+
+    def line_of(self, key: str) -> int:
+        return self._section.line_of(key)
+
+    def allow(self, *keys: str) -> None:
+        """Refuse any key not in ``keys``, naming the keys that would do."""
+        if unexpected := [key for key in self._values if key not in keys]:
+            listed = ", ".join(repr(key) for key in unexpected)
+            message = f"unknown key {listed} in {self.name}; it takes {', '.join(keys)}"
+            raise Invalid(message, self.line_of(unexpected[0]))
+
+    def value(self, key: str) -> object:
+        if key not in self._values:
+            raise Invalid(f"{self.name} needs {key}", self._section.line)
+        return self._values[key]
+
+    def _wrong(self, key: str, kind: str) -> Invalid:
+        return Invalid(f"{key} must be {kind}, not {self._values[key]!r}", self.line_of(key))
+
+    def integer(self, key: str, default: int | None = None) -> int:
+        if default is not None and key not in self:
+            return default
+        value = self.value(key)
+        if isinstance(value, int) and not isinstance(value, bool):
+            return value
+        raise self._wrong(key, "a whole number")
+
+    def number(self, key: str, default: float | None = None) -> float:
+        if default is not None and key not in self:
+            return default
+        value = self.value(key)
+        if isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value):
+            return float(value)
+        raise self._wrong(key, "a number")
+
+    def text(self, key: str) -> str:
+        value = self.value(key)
+        if isinstance(value, str):
+            return value
+        raise self._wrong(key, "text in quotes")
+
+
+def _one_of(entry: _Entry, keys: tuple[str, ...]) -> str:
+    """The one key of ``keys`` the entry has; an entry has exactly one."""
+    present = [key for key in keys if key in entry]
+    if len(present) != 1:
+        problem = "has both " + " and ".join(present) if present else "needs one of " + ", ".join(keys)
+        raise Invalid(f"{entry.name} {problem}", entry.line_of(present[-1]) if present else entry.origin.line)
+    return present[0]
+
+
+def _input(entry: _Entry) -> WorldRecord:
+    if "when" in entry:
+        entry.allow("channel", "when")
+        return builders.position_input(entry.integer("channel"), Phrase(entry.text("when")))
+    entry.allow("channel", "level", "at_ms")
+    return builders.input_level(entry.integer("at_ms"), entry.integer("channel"), entry.integer("level"))
+
+
+def _index(entry: _Entry) -> WorldRecord:
+    entry.allow("axis", "every", "width")
+    return builders.index_pulse(entry.integer("axis"), entry.integer("every"), entry.integer("width", 1))
+
+
+def _fastin(entry: _Entry) -> WorldRecord:
+    entry.allow("channel", "at_ms")
+    return builders.fast_input(entry.integer("at_ms"), entry.integer("channel"))
+
+
+def _adc(entry: _Entry) -> WorldRecord:
+    entry.allow("channel", "percent", "at_ms")
+    return builders.adc_level(entry.integer("at_ms"), entry.integer("channel"), entry.number("percent"))
+
+
+def _key(entry: _Entry) -> WorldRecord:
+    entry.allow("text", "at_ms")
+    return builders.keys(entry.integer("at_ms"), entry.text("text"))
+
+
+def _host(entry: _Entry) -> WorldRecord:
+    match _one_of(entry, ("write", "read", "raw")):
+        case "write":
+            entry.allow("write", "data", "node", "at_ms")
+            node = entry.integer("node", builders.DEFAULT_NODE)
+            return builders.host_write(entry.integer("at_ms"), entry.integer("write"), entry.text("data"), node)
+        case "read":
+            entry.allow("read", "node", "at_ms")
+            node = entry.integer("node", builders.DEFAULT_NODE)
+            return builders.host_read(entry.integer("at_ms"), entry.integer("read"), node)
+        case _:
+            entry.allow("raw", "at_ms")
+            return builders.host_raw(entry.integer("at_ms"), entry.text("raw"))
+
+
+def _when(entry: _Entry) -> int | None:
+    """``at = "end"``, ``at_ms = <ms>`` or neither: None stands for the end of the run."""
+    if "at" in entry and "at_ms" in entry:
+        raise Invalid(f"{entry.name} has both at and at_ms", entry.line_of("at_ms"))
+    if "at" in entry and entry.value("at") != "end":
+        message = f'at is "end"; for a time write at_ms = <ms>, not at = {entry.value("at")!r}'
+        raise Invalid(message, entry.line_of("at"))
+    return entry.integer("at_ms") if "at_ms" in entry else None
+
+
+def _expect(entry: _Entry) -> Expectation:
+    match _one_of(entry, ("what", "terminal_contains", "stopped")):
+        case "what":
+            key = _one_of(entry, tuple(_COMPARISONS))
+            entry.allow("what", key, "tolerance", "at", "at_ms")
+            return builders.value_expectation(
+                entry.text("what"),
+                _COMPARISONS[key],
+                entry.number(key),
+                tolerance=entry.number("tolerance", 0.0),
+                at_ms=_when(entry),
+                origin=entry.origin,
+            )
+        case "terminal_contains":
+            entry.allow("terminal_contains", "at", "at_ms")
+            return builders.terminal_expectation(entry.text("terminal_contains"), _when(entry), entry.origin)
+        case _:
+            entry.allow("stopped")
+            return builders.stopped_expectation(entry.text("stopped"), entry.origin)
+
+
+_ARRAYS: dict[str, Callable[[_Entry], WorldRecord | Expectation]] = {
+    "input": _input,
+    "index": _index,
+    "fastin": _fastin,
+    "adc": _adc,
+    "key": _key,
+    "host": _host,
+    "expect": _expect,
+}
+
+
+def _plant(axis_key: str, choice: object, section: Section, source: str) -> WorldRecord:
+    """``<axis> = "<model>"`` or ``<axis> = { model = "<model>", <parameter> = <number> ... }``."""
+    if not axis_key.isdigit():
+        raise Invalid(f"the keys of [plant] are axis numbers, not {axis_key!r}")
+    if isinstance(choice, str):
+        return builders.plant(int(axis_key), choice, {})
+    if not isinstance(choice, dict):
+        raise Invalid(f'plant {axis_key} is a model ("ideal") or a table ({{ model = "velamp", k = 40 }})')
+    entry = _Entry(f"plant {axis_key}", choice, Section(section.line_of(axis_key), {}), source)
+    parameters = {key: entry.number(key) for key in choice if key != "model"}
+    return builders.plant(int(axis_key), entry.text("model"), parameters)
+
+
+def _read(document: Mapping[str, object], layout: Layout, collector: Collector) -> None:
+    for name, value in document.items():
+        if name == "plant" and isinstance(value, dict):
+            section = layout.table(name)
+            for axis_key, choice in value.items():
+                build = partial(_plant, axis_key, choice, section, collector.source)
+                collector.add(section.line_of(axis_key), build)
+        elif name in _ARRAYS and isinstance(value, list) and all(isinstance(item, dict) for item in value):
+            for index, table in enumerate(value):
+                entry = _Entry(f"[[{name}]]", table, layout.entry(name, index), collector.source)
+                collector.add(entry.origin.line, partial(_ARRAYS[name], entry))
+        elif name in _ARRAYS or name == "plant":
+            shape = "a table: write [plant]" if name == "plant" else f"a list of tables: write [[{name}]]"
+            collector.error(layout.top_line(name), f"{name} is {shape}")
+        else:
+            known = ", ".join(["plant", *_ARRAYS])
+            collector.error(layout.top_line(name), f"unknown table {name!r}; a scenario has {known}")
+
+
+def _document(path: Path) -> tuple[str, dict[str, object]]:
+    source = str(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as problem:
+        raise ScenarioFileError([ScenarioError(source, 0, f"cannot read the file: {problem.strerror}")]) from None
+    except UnicodeDecodeError:
+        raise ScenarioFileError([ScenarioError(source, 0, "the file is not UTF-8 text")]) from None
+    try:
+        return text, tomllib.loads(text)
+    except tomllib.TOMLDecodeError as problem:
+        found = _TOML_LINE.search(str(problem))
+        line = int(found[1]) if found else 0
+        raise ScenarioFileError([ScenarioError(source, line, f"not valid TOML: {problem}")]) from None
+
+
+def load_scenario(path: str | Path) -> Scenario:
+    """The scenario a TOML file describes; ``ScenarioFileError`` lists every mistake with its line."""
+    path = Path(path)
+    text, document = _document(path)
+    collector = Collector(str(path))
+    _read(document, Layout(text), collector)
+    scenario, errors = collector.result()
+    if errors:
+        raise ScenarioFileError(sorted(errors, key=lambda error: error.line))
+    return scenario

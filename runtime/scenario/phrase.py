@@ -1,0 +1,102 @@
+"""Reading the one-line scenario language word by word.
+
+``REM @sim`` directives, ``REM @expect`` sentences and the ``when`` condition
+of a scenario file share their words: numbers, quoted text with ``\\r`` and
+``\\n``, comparison operators and ``name=value`` pairs. One reader keeps their
+spelling and their error messages the same everywhere.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from mintlang.runtime.scenario.problems import Invalid
+
+_WORD = re.compile(r'"(?:[^"\\]|\\.)*"?|<=|>=|<>|[<>=±]|\+-|[^\s"<>=±(]+(?:\([^)]*\)?)?|\S')
+_ESCAPES = {"r": "\r", "n": "\n", "t": "\t", '"': '"', "\\": "\\"}
+_ESCAPE = re.compile(r"\\(.)")
+
+
+def _unescape(quoted: str) -> str:
+    def one(found: re.Match[str]) -> str:
+        if found[1] not in _ESCAPES:
+            raise Invalid(f'unknown escape \\{found[1]} in {quoted} (known: \\r \\n \\t \\" \\\\)')
+        return _ESCAPES[found[1]]
+
+    return _ESCAPE.sub(one, quoted[1:-1])
+
+
+def to_number(word: str, what: str) -> float:
+    """``word`` as a finite number, or ``Invalid`` naming ``what`` was expected."""
+    try:
+        value = float(word)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value):
+        raise Invalid(f"expected {what} as a number, not {word!r}")
+    return value
+
+
+class Phrase:
+    """The words of one directive, taken from the left; each reader raises ``Invalid`` with what it expected."""
+
+    __slots__ = ("_next", "_words")
+
+    def __init__(self, text: str) -> None:
+        self._words = _WORD.findall(text)
+        self._next = 0
+
+    def word(self, what: str) -> str:
+        if self._next == len(self._words):
+            raise Invalid(f"expected {what} at the end")
+        self._next += 1
+        return self._words[self._next - 1]
+
+    def peek(self) -> str | None:
+        """The next word, not taken; None at the end."""
+        return self._words[self._next] if self._next < len(self._words) else None
+
+    def accept(self, word: str) -> bool:
+        """Take the next word if it is ``word`` (any case)."""
+        taken = (self.peek() or "").lower() == word
+        self._next += taken
+        return taken
+
+    def keyword(self, word: str) -> None:
+        """Take the word ``word`` (any case), which must come next."""
+        if not self.accept(word):
+            found = self.peek()
+            raise Invalid(f"expected '{word}'" + (" at the end" if found is None else f", not {found!r}"))
+
+    def choice(self, what: str, choices: tuple[str, ...]) -> str:
+        word = self.word(what).lower()
+        if word not in choices:
+            raise Invalid(f"expected {what} ({', '.join(choices)}), not {word!r}")
+        return word
+
+    def number(self, what: str) -> float:
+        return to_number(self.word(what), what)
+
+    def integer(self, what: str) -> int:
+        word = self.word(what)
+        try:
+            return int(word)
+        except ValueError:
+            raise Invalid(f"expected {what} as a whole number, not {word!r}") from None
+
+    def milliseconds(self) -> int:
+        """``<ms>`` or ``<ms> ms``, after ``at``."""
+        value = self.integer("a time in ms")
+        self.accept("ms")
+        return value
+
+    def text(self, what: str) -> str:
+        word = self.word(what)
+        if len(word) < 2 or not word.startswith('"') or not word.endswith('"'):
+            raise Invalid(f"expected {what} in double quotes, not {word}")
+        return _unescape(word)
+
+    def end(self) -> None:
+        if self._next < len(self._words):
+            raise Invalid(f"unexpected {' '.join(self._words[self._next :])!r} at the end")

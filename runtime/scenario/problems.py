@@ -1,0 +1,40 @@
+"""Mistakes in a scenario, as values with a position.
+
+A scenario is user input: a wrong line must come back as a message that names
+the file and line, never as a traceback, and every mistake of a file is
+reported at once so that one run fixes them all.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True, slots=True)
+class ScenarioError:
+    """One mistake: ``source`` is a file path or ``"program"``; ``line`` 0 means the whole source."""
+
+    source: str
+    line: int
+    message: str
+
+    def __str__(self) -> str:
+        where = f"{self.source}:{self.line}" if self.line else self.source
+        return f"{where}: {self.message}"
+
+
+class ScenarioFileError(Exception):
+    """A scenario file that cannot be used, with every mistake found in it."""
+
+    def __init__(self, errors: Iterable[ScenarioError]) -> None:
+        self.errors = tuple(errors)
+        super().__init__("\n".join(str(error) for error in self.errors))
+
+
+class Invalid(ValueError):
+    """A phrase or value that breaks the scenario grammar; the front end adds the position unless ``line`` is known."""
+
+    def __init__(self, message: str, line: int | None = None) -> None:
+        super().__init__(message)
+        self.line = line

@@ -1,0 +1,149 @@
+"""The scripted world of a run: plant models, input levels, keys, host packets, and what to expect.
+
+These records are all the simulator reads. Program directives (``REM @sim``)
+and scenario files (TOML) both produce them, so the simulator has one shape
+to follow whichever way the user wrote the world.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field, fields
+from itertools import chain
+from types import MappingProxyType
+from typing import Literal, Protocol, TypeVar
+
+from mintlang.runtime.scenario.expectations import Expectation
+
+PlantModel = Literal["ideal", "stalled", "velamp", "torque"]
+EncoderOperator = Literal["<=", ">=", "<", ">"]
+
+
+@dataclass(frozen=True, slots=True)
+class PlantChoice:
+    """The plant of one axis (W-1); axes without a choice use ``ideal``."""
+
+    axis: int
+    model: PlantModel
+    parameters: Mapping[str, float] = field(default_factory=lambda: MappingProxyType({}))
+
+
+@dataclass(frozen=True, slots=True)
+class InputLevel:
+    """Digital input ``channel`` is electrically ``level`` from ``time_ms`` on."""
+
+    time_ms: int
+    channel: int
+    level: int
+
+
+@dataclass(frozen=True, slots=True)
+class PositionInput:
+    """Input ``channel`` is high while the physical count of ``axis`` satisfies ``operator counts`` (a limit switch)."""
+
+    channel: int
+    axis: int
+    operator: EncoderOperator
+    counts: int
+
+
+@dataclass(frozen=True, slots=True)
+class IndexPulse:
+    """The encoder of ``axis`` gives a Z pulse every ``every_counts``, ``width_counts`` wide."""
+
+    axis: int
+    every_counts: int
+    width_counts: int
+
+
+@dataclass(frozen=True, slots=True)
+class FastInput:
+    """Fast-latch input ``channel`` fires at ``time_ms``."""
+
+    time_ms: int
+    channel: int
+
+
+@dataclass(frozen=True, slots=True)
+class AdcLevel:
+    """Analog input ``channel`` reads ``percent`` of its range from ``time_ms`` on."""
+
+    time_ms: int
+    channel: int
+    percent: float
+
+
+@dataclass(frozen=True, slots=True)
+class Keys:
+    """``text`` arrives at the terminal at ``time_ms``, one key after another."""
+
+    time_ms: int
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class HostPacket:
+    """Bytes a host sends on the serial line at ``time_ms``."""
+
+    time_ms: int
+    data: bytes
+
+
+WorldRecord = PlantChoice | InputLevel | PositionInput | IndexPulse | FastInput | AdcLevel | Keys | HostPacket
+
+
+class _Timed(Protocol):
+    @property
+    def time_ms(self) -> int: ...
+
+
+_T = TypeVar("_T", bound=_Timed)
+_R = TypeVar("_R")
+
+
+def _in_time_order(records: Iterable[_T]) -> tuple[_T, ...]:
+    return tuple(sorted(records, key=lambda record: record.time_ms))  # sorted is stable: equal times keep file order
+
+
+@dataclass(frozen=True, slots=True)
+class Scenario:
+    """Everything scripted for one run; timed records in time order, equal times in the order written."""
+
+    plants: tuple[PlantChoice, ...] = ()  # by axis
+    inputs: tuple[InputLevel, ...] = ()
+    position_inputs: tuple[PositionInput, ...] = ()
+    index_pulses: tuple[IndexPulse, ...] = ()  # by axis
+    fast_inputs: tuple[FastInput, ...] = ()
+    adc: tuple[AdcLevel, ...] = ()
+    keys: tuple[Keys, ...] = ()
+    host_packets: tuple[HostPacket, ...] = ()
+    expectations: tuple[Expectation, ...] = ()  # in the order written
+
+    def records(self) -> tuple[WorldRecord | Expectation, ...]:
+        """Every record, the world's first; ``scenario_of`` sorts them back into a ``Scenario``."""
+        return tuple(chain.from_iterable(getattr(self, part.name) for part in fields(self)))
+
+
+def scenario_of(records: Iterable[WorldRecord | Expectation]) -> Scenario:
+    """Sort records, given in the order written, into a ``Scenario``; a later plant or index of an axis wins."""
+    records = tuple(records)
+
+    def kind(cls: type[_R]) -> list[_R]:
+        return [record for record in records if isinstance(record, cls)]
+
+    return Scenario(
+        plants=tuple(sorted({p.axis: p for p in kind(PlantChoice)}.values(), key=lambda p: p.axis)),
+        inputs=_in_time_order(kind(InputLevel)),
+        position_inputs=tuple(kind(PositionInput)),
+        index_pulses=tuple(sorted({p.axis: p for p in kind(IndexPulse)}.values(), key=lambda p: p.axis)),
+        fast_inputs=_in_time_order(kind(FastInput)),
+        adc=_in_time_order(kind(AdcLevel)),
+        keys=_in_time_order(kind(Keys)),
+        host_packets=_in_time_order(kind(HostPacket)),
+        expectations=tuple(record for record in records if not isinstance(record, WorldRecord)),
+    )
+
+
+def merge(program: Scenario, file: Scenario) -> Scenario:
+    """The program's directives overlaid by a scenario file: the file's plant and index choices win per axis."""
+    return scenario_of((*program.records(), *file.records()))

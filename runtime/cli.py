@@ -1,0 +1,231 @@
+"""``mint-run`` (also ``mint run``): run a Mint program on the simulated controller.
+
+Terminal output goes to stdout as the controller prints it; what stopped the
+run goes to stderr. Exit status: 0 when the program ended (or reached
+``--until-ms``), 1 when it stopped on an error, a deadlock or the wall-clock
+limit, or when an expectation failed; 2 for a usage or I/O problem. With
+``--expect`` the expectations alone decide 0 or 1.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+import click
+from rich.console import Console
+from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+from mintlang.cli.options import controller_option
+from mintlang.keyworddb.model import Controller as ControllerName
+from mintlang.runtime.interpreter.vm import StopReason
+from mintlang.runtime.report import as_json
+from mintlang.runtime.run import RunResult, run_source
+from mintlang.runtime.scenario import (
+    ScenarioFileError,
+    all_held,
+    load_scenario,
+    merge,
+    parse_directives,
+    render_outcomes,
+)
+from mintlang.runtime.scenario.stimulus import Scenario
+from mintlang.runtime.simulation import Controller, Limits
+from mintlang.runtime.trace import PlotUnavailable, Trace
+from mintlang.source import read_source
+
+_USAGE_ERROR = 2
+_FAILED = 1
+_PROGRESS_AFTER_MS = 10_000  # runs shorter than this in simulated time finish too fast for a bar
+
+
+class _Usage(Exception):
+    pass
+
+
+def _axes_list(text: str | None) -> tuple[int, ...] | None:
+    if text is None:
+        return None
+    try:
+        return tuple(int(part) for part in text.split(",") if part.strip())
+    except ValueError:
+        raise click.BadParameter("a comma-separated list of axis numbers, e.g. 0,1") from None
+
+
+@click.command()
+@click.argument("program", type=click.Path(path_type=Path))
+@click.option(
+    "--config", "config_path", type=click.Path(path_type=Path), help="Configuration file run before the program."
+)
+@controller_option("The controller to simulate.")
+@click.option(
+    "--stimulus",
+    "stimulus_paths",
+    multiple=True,
+    type=click.Path(path_type=Path),
+    help="TOML scenario: inputs, keys, host packets, plants (repeatable).",
+)
+@click.option(
+    "--expect",
+    "expect_paths",
+    multiple=True,
+    type=click.Path(path_type=Path),
+    help="TOML scenario whose expectations decide the exit status (repeatable).",
+)
+@click.option("--until-ms", type=click.IntRange(min=0), help="Stop after this much simulated time.")
+@click.option(
+    "--max-wall-s",
+    type=click.FloatRange(min=0),
+    default=60.0,
+    show_default=True,
+    help="Stop after this much real time.",
+)
+@click.option(
+    "--trace",
+    "trace_path",
+    type=click.Path(path_type=Path),
+    help="Write every tick's axis and I/O state to this CSV file.",
+)
+@click.option(
+    "--plot",
+    "plot_path",
+    type=click.Path(path_type=Path),
+    help="Draw position, velocity and following error to this image (needs matplotlib).",
+)
+@click.option("--trace-axes", help="Axes to trace and plot, e.g. 0,1 (default: every axis).")
+@click.option(
+    "--report", "report_format", type=click.Choice(["json"]), help="Print a report of the final state at the end."
+)
+@click.option("--realtime", is_flag=True, help="Pace the simulation to real time.")
+@click.option(
+    "--host-port",
+    type=click.IntRange(min=0, max=65535),
+    help="Serve the host comms protocol on this TCP port of 127.0.0.1.",
+)
+def run(  # noqa: PLR0917 - click passes every option as an argument
+    program: Path,
+    config_path: Path | None,
+    controller: str,
+    stimulus_paths: tuple[Path, ...],
+    expect_paths: tuple[Path, ...],
+    until_ms: int | None,
+    max_wall_s: float,
+    trace_path: Path | None,
+    plot_path: Path | None,
+    trace_axes: str | None,
+    report_format: str | None,
+    realtime: bool,
+    host_port: int | None,
+) -> None:
+    """Run a Mint program against simulated axes, I/O and a host."""
+    errors = Console(stderr=True, highlight=False, soft_wrap=True)
+    try:
+        source = read_source(program).text
+        config = read_source(config_path).text if config_path is not None else None
+        scenario = _scenario(source, (*stimulus_paths, *expect_paths))
+    except ScenarioFileError as error:
+        click.echo(f"mint-run: {error}", err=True)
+        sys.exit(_USAGE_ERROR)
+    except _Usage as error:
+        click.echo(f"mint-run: {error}", err=True)
+        sys.exit(_USAGE_ERROR)
+    except OSError as error:
+        click.echo(f"mint-run: cannot read {error.filename}: {error.strerror or error}", err=True)
+        sys.exit(_USAGE_ERROR)
+    tracing = trace_path is not None or plot_path is not None
+    limits = Limits(
+        until_ms=until_ms, max_wall_s=max_wall_s, realtime=realtime, every_tick=tracing, host_port=host_port
+    )
+    axes = _axes_list(trace_axes)
+    trace = Trace(axes) if tracing and axes is not None else None
+    recorders = _Recorders(trace, tracing, errors, until_ms)
+    with recorders.progress:
+        result = run_source(
+            source,
+            config=config,
+            controller=ControllerName(controller),
+            scenario=scenario,
+            limits=limits,
+            echo=_echo,
+            on_tick=recorders.on_tick,
+        )
+    sys.stdout.flush()
+    try:
+        _outputs(result, recorders.trace, trace_path, plot_path)
+    except (OSError, PlotUnavailable) as error:
+        click.echo(f"mint-run: {error}", err=True)
+        sys.exit(_USAGE_ERROR)
+    _describe_stop(result, errors)
+    if result.outcomes:
+        render_outcomes(result.outcomes, errors)
+    if report_format == "json":
+        if result.terminal and not result.terminal.endswith("\n"):
+            click.echo()
+        click.echo(json.dumps(as_json(result), indent=2))
+    if expect_paths:
+        sys.exit(0 if all_held(result.outcomes) else _FAILED)
+    normal = result.stop.reason in (StopReason.END, StopReason.UNTIL)
+    sys.exit(0 if normal and all_held(result.outcomes) else _FAILED)
+
+
+def _echo(text: str) -> None:
+    sys.stdout.write(text)
+
+
+def _scenario(source: str, paths: tuple[Path, ...]) -> Scenario:
+    scenario, problems = parse_directives(source)
+    if problems:
+        raise _Usage("; ".join(str(problem) for problem in problems))
+    for path in paths:
+        scenario = merge(scenario, load_scenario(path))
+    return scenario
+
+
+class _Recorders:
+    """The per-tick observers of a run: the trace and the progress bar."""
+
+    def __init__(self, trace: Trace | None, tracing: bool, console: Console, until_ms: int | None) -> None:
+        self.trace = trace
+        self.tracing = tracing
+        self.progress = Progress(
+            TextColumn("simulated"),
+            BarColumn(),
+            TextColumn("{task.completed:.0f} / {task.total:.0f} ms"),
+            TimeElapsedColumn(),
+            console=console,
+            transient=True,
+            disable=not console.is_terminal or until_ms is None or until_ms < _PROGRESS_AFTER_MS,
+        )
+        self.task = self.progress.add_task("run", total=until_ms or 0)
+
+    def on_tick(self, controller: Controller, tick: int) -> None:
+        if self.tracing:
+            if self.trace is None:
+                self.trace = Trace(tuple(range(len(controller.axes))))
+            self.trace.record(controller, tick)
+        if tick % 100 == 0:
+            self.progress.update(self.task, completed=tick)
+
+
+def _outputs(result: RunResult, trace: Trace | None, trace_path: Path | None, plot_path: Path | None) -> None:
+    if trace is None:
+        return
+    if trace_path is not None:
+        with trace_path.open("w", encoding="utf-8", newline="") as stream:
+            trace.write_csv(stream)
+    if plot_path is not None:
+        trace.plot(plot_path)
+
+
+def _describe_stop(result: RunResult, console: Console) -> None:
+    stop = result.stop
+    where = f" at {stop.unit} line {stop.line}: {stop.statement}" if stop.line is not None else ""
+    message = f" — {stop.message}" if stop.message else ""
+    style = "green" if stop.reason in (StopReason.END, StopReason.UNTIL) else "bold red"
+    console.print(f"[{style}]{stop.reason.value}[/] after {stop.time_ms} ms{where}{message}", highlight=False)
+
+
+def main() -> None:
+    """Entry point of the ``mint-run`` script."""
+    run()

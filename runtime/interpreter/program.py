@@ -1,0 +1,169 @@
+"""Linking an application into one operation list: configuration file first, then program.
+
+Variables are shared by both files and allocated in compile order; arrays are
+sized and initialised now, as the controller's compiler does (``DIM a(3) =
+1,2;`` fills the rest with the last value). Labels stay per file: the two
+files cannot call each other's subroutines. ``END`` in the configuration, or
+running off its end, continues with the program; in the program it ends the run.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.interpreter.expressions import ExpressionCompiler, Names
+from mintlang.runtime.interpreter.statements import FileLayout, StatementCompiler, layout_size
+from mintlang.runtime.interpreter.vm import Interpreter, Site, StopReason
+from mintlang.runtime.keywords import KeywordTable
+from mintlang.runtime.terminal import Terminal
+from mintlang.semantic.blocks import Block
+from mintlang.semantic.model import SemanticModel
+from mintlang.semantic.units import Unit
+from mintlang.syntax import nodes as n
+from mintlang.syntax.parser import Document
+
+
+@dataclass(frozen=True, slots=True)
+class Linked:
+    """What the rest of the runtime needs to know about the compiled application."""
+
+    handlers: Mapping[str, int]  # event handler label identity (ONERROR, IN3, TIMER ...) -> pc
+    names: Names
+
+
+def link(model: SemanticModel, vm: Interpreter, table: KeywordTable, terminal: Terminal) -> Linked:
+    """Compile ``model`` into ``vm``; raises ``NotSimulated`` or ``MintError`` for what cannot run."""
+    names = Names()
+    _allocate(model, vm, names)
+    expressions = ExpressionCompiler(vm, table, names)
+    handlers: dict[str, int] = {}
+    units = list(model.documents())
+    start = 0
+    for position, (unit, document) in enumerate(units):
+        positions, labels, size = _layout(document, start)
+        end_of_unit = start + size
+        last_unit = position == len(units) - 1
+        blocks = _blocks_by_statement(model.structures[unit].blocks)
+        on_end = _end_of_program(vm) if last_unit else _continue_with_program(vm, end_of_unit)
+        layout = FileLayout(positions, blocks, labels, end_of_unit, on_end)
+        compiler = StatementCompiler(vm, table, terminal, expressions, layout)
+        if unit is Unit.PROGRAM:
+            vm.program_start = start
+            handlers.update(labels)
+        else:
+            for label, pc in labels.items():
+                handlers.setdefault(label, pc)
+        text_of = _Text(document)
+        for line in document.lines:
+            for statement in line.statements:
+                _emit(compiler, vm, statement, unit=unit, line=line.number, text_of=text_of)
+        start = end_of_unit
+    return Linked(handlers, names)
+
+
+def _emit(
+    compiler: StatementCompiler, vm: Interpreter, statement: n.Statement, *, unit: Unit, line: int, text_of: _Text
+) -> None:
+    pc = len(vm.operations)
+    vm.operations.append(compiler.compile(statement, pc))
+    vm.sites.append(Site(unit.value, line, text_of(statement)))
+    if type(statement) is n.IfThen:
+        for inner in statement.body:
+            _emit(compiler, vm, inner, unit=unit, line=line, text_of=text_of)
+
+
+class _Text:
+    def __init__(self, document: Document) -> None:
+        self.source = document.source
+
+    def __call__(self, statement: n.Statement) -> str:
+        return self.source[statement.span.start : statement.span.end].strip()
+
+
+def _layout(document: Document, start: int) -> tuple[dict[int, int], dict[str, int], int]:
+    """The pc of every statement and label of one file, starting at ``start``."""
+    positions: dict[int, int] = {}
+    labels: dict[str, int] = {}
+    pc = start
+
+    def place(statement: n.Statement) -> None:
+        nonlocal pc
+        positions[id(statement)] = pc
+        pc += 1
+        if type(statement) is n.IfThen:
+            for inner in statement.body:
+                place(inner)
+
+    for line in document.lines:
+        if line.label is not None:
+            labels.setdefault(line.label.identity, pc)
+        for statement in line.statements:
+            place(statement)
+    assert pc - start == sum(layout_size(s) for line in document.lines for s in line.statements)
+    return positions, labels, pc - start
+
+
+def _blocks_by_statement(blocks: tuple[Block, ...]) -> dict[int, Block]:
+    found: dict[int, Block] = {}
+    for block in blocks:
+        for statement in (block.opener, block.middle, block.closer):
+            if statement is not None:
+                found[id(statement)] = block
+    return found
+
+
+def _allocate(model: SemanticModel, vm: Interpreter, names: Names) -> None:
+    """Slots for every variable and array, arrays sized and initialised from their DIM."""
+    for symbol in model.symbols.variables.values():
+        names.scalars[symbol.identity] = len(vm.scalars)
+        vm.scalars.append(0.0)
+    for unit, _, statement in model.index.statements:
+        if type(statement) is n.Dim and statement.size is not None:
+            _dim_array(statement, vm, names, unit)
+
+
+def _dim_array(statement: n.Dim, vm: Interpreter, names: Names, unit: Unit) -> None:
+    size = _constant(statement.size)
+    if size is None or size < 1 or size != int(size):
+        raise MintError(2016, detail=f"the size of array {statement.name.text} must be a whole number from 1")
+    values = [_constant(value) for value in statement.values]
+    if any(value is None for value in values):
+        raise MintError(2003, detail=f"array {statement.name.text} is initialised with values that are not constants")
+    initial = [float(value) for value in values if value is not None][: int(size)]
+    if statement.fill and initial:
+        initial += [initial[-1]] * (int(size) - len(initial))
+    initial += [0.0] * (int(size) - len(initial))
+    identity = statement.name.identity
+    if identity in names.arrays:
+        vm.arrays[names.arrays[identity]][:] = initial
+        return
+    names.arrays[identity] = len(vm.arrays)
+    vm.arrays.append(initial)
+
+
+def _constant(expression: n.Expression | None) -> float | None:
+    """The value of a literal, possibly negated; arrays are initialised from constants only."""
+    if type(expression) is n.Number or type(expression) is n.CharConstant:
+        return float(expression.value)  # type: ignore[union-attr]
+    if type(expression) is n.Unary and expression.operator in ("-", "+"):
+        inner = _constant(expression.operand)
+        return None if inner is None else (-inner if expression.operator == "-" else inner)
+    if type(expression) is n.Parenthesised:
+        return _constant(expression.expression)
+    return None
+
+
+def _end_of_program(vm: Interpreter):
+    def end() -> None:
+        vm.stop(StopReason.END)
+
+    return end
+
+
+def _continue_with_program(vm: Interpreter, program_start: int):
+    def end() -> None:
+        vm.pc = program_start
+
+    return end

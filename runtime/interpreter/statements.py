@@ -1,0 +1,546 @@
+"""Compiling statements into operations.
+
+Each statement becomes one operation (an ``IF .. THEN`` line becomes a
+conditional jump followed by its body), laid out in a flat list; block
+statements jump to positions resolved before any closure is built, so a loop
+iteration is a comparison and an integer assignment.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+from mintlang.runtime.clock import NEVER
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.interpreter.expressions import Evaluate, ExpressionCompiler, NotSimulated
+from mintlang.runtime.interpreter.vm import Interpreter, Loop, Operation
+from mintlang.runtime.keywords import KeywordTable
+from mintlang.runtime.numbers import f32
+from mintlang.runtime.printing import format_bin, format_chr, format_hex, format_number, format_using
+from mintlang.runtime.terminal import Terminal
+from mintlang.semantic.blocks import Block
+from mintlang.syntax import nodes as n
+
+WRITE_OF_READ_ONLY = 2000
+NO_EXPRESSION = 2005
+UNDEFINED_KEYWORD = 3007
+SYNTAX_ERROR = 2003
+TOO_MANY_VALUES = 2017
+
+
+def layout_size(statement: n.Statement) -> int:
+    """How many operations a statement compiles to."""
+    if type(statement) is n.IfThen:
+        return 1 + sum(layout_size(inner) for inner in statement.body)
+    return 1
+
+
+@dataclass(frozen=True, slots=True)
+class FileLayout:
+    """Where everything of one file sits in the operation list."""
+
+    positions: Mapping[int, int]  # id(statement) -> pc
+    blocks: Mapping[int, Block]  # id(opener, middle or closer) -> its block
+    labels: Mapping[str, int]  # label identity -> pc
+    end: int  # the pc after the file's last operation
+    on_end: Callable[[], None]  # what END does in this file
+
+
+class StatementCompiler:
+    """Builds the operation of one statement, given where every block statement sits."""
+
+    def __init__(
+        self,
+        vm: Interpreter,
+        table: KeywordTable,
+        terminal: Terminal,
+        expressions: ExpressionCompiler,
+        layout: FileLayout,
+    ) -> None:
+        self.vm = vm
+        self.table = table
+        self.terminal = terminal
+        self.expressions = expressions
+        self.positions = layout.positions
+        self.blocks = layout.blocks
+        self.labels = layout.labels
+        self.end_of_unit = layout.end
+        self.on_end = layout.on_end
+
+    def compile(self, statement: n.Statement, pc: int) -> Operation:
+        kind = type(statement)
+        method = _DISPATCH.get(kind)
+        if method is None:
+            raise NotSimulated(kind.__name__, "statement")
+        return method(self, statement, pc)
+
+    # ---------------------------------------------------------------- helpers
+
+    def _after(self, statement: n.Statement | None) -> int:
+        """The pc after a block statement; the end of the file when the block is never closed."""
+        return self.end_of_unit if statement is None else self.positions[id(statement)] + 1
+
+    def _block(self, statement: n.Statement) -> Block:
+        return self.blocks[id(statement)]
+
+    # ----------------------------------------------------------- assignments
+
+    def assignment(self, statement: n.Assignment, pc: int) -> Operation:
+        value = self.expressions.compile(statement.value)
+        return self._store(statement.target, value)
+
+    def _store(self, target: n.VariableRef | n.ElementRef, value: Evaluate) -> Operation:
+        if type(target) is n.VariableRef:
+            self.expressions.variable(target.name)
+            scalars = self.vm.scalars
+            slot = self.expressions.names.scalars[target.name.identity]
+
+            def store_scalar() -> None:
+                scalars[slot] = f32(value())
+
+            return store_scalar
+        element: n.ElementRef = target  # type: ignore[assignment]
+        values = self.expressions.element_slot(element.name)
+        index = self.expressions.compile(element.index)
+        size = len(values)
+
+        def store_element() -> None:
+            position = int(index())
+            if not 1 <= position <= size:
+                raise MintError(2016, detail=f"index {position} outside 1 to {size}")
+            values[position - 1] = f32(value())
+
+        return store_element
+
+    def dim(self, statement: n.Dim, pc: int) -> Operation:
+        if statement.size is not None or not statement.values:
+            return _nothing  # arrays are initialised when the program is compiled, not when DIM runs
+        return self._store(
+            n.VariableRef(statement.name.span, statement.name), self.expressions.compile(statement.values[0])
+        )
+
+    # -------------------------------------------------------------- keywords
+
+    def _channels(self, reference: n.KeywordRef) -> Callable[[], tuple[int, ...] | None]:
+        found = self.expressions.channels(reference)
+        if found is None:
+            return lambda: None
+        if found is True:
+            vm = self.vm
+            return lambda: vm.default_axes
+        expressions = found
+
+        def evaluate() -> tuple[int, ...]:
+            return tuple(int(channel()) for channel in expressions)  # type: ignore[operator]
+
+        return evaluate
+
+    def keyword_statement(self, statement: n.KeywordStatement, pc: int) -> Operation:
+        reference = statement.keyword
+        if reference.keyword == "WAIT":
+            return self._wait(statement, pc)
+        access = self.table.get(reference.keyword)
+        channels = self._channels(reference)
+        clock = self.vm.clock
+        if statement.values is not None:
+            if access is None or access.write is None:
+                if access is not None and access.read is not None:
+                    raise MintError(WRITE_OF_READ_ONLY, detail=reference.keyword)
+                raise NotSimulated(reference.keyword, "write")
+            write = access.write
+            values = tuple(self.expressions.compile(value) if value is not None else None for value in statement.values)
+            fill = statement.fill
+
+            def write_values() -> bool:
+                addressed = channels()
+                evaluated = tuple(value() if value is not None else None for value in values)
+                if addressed is not None and fill and len(evaluated) < len(addressed):
+                    evaluated += (evaluated[-1],) * (len(addressed) - len(evaluated))
+                clock.horizon = NEVER
+                return write(addressed, evaluated)
+
+            return write_values
+        if access is None or access.command is None:
+            if access is not None and access.read is not None:
+                raise MintError(NO_EXPRESSION, detail=f"{reference.keyword} needs a value")
+            raise NotSimulated(reference.keyword, "command")
+        command = access.command
+        arguments = tuple(
+            self.expressions.compile(argument)
+            for argument in statement.arguments
+            if type(argument) is not n.StringLiteral
+        )
+
+        def run_command() -> bool:
+            clock.horizon = NEVER
+            return command(channels(), tuple(argument() for argument in arguments))
+
+        return run_command
+
+    def _wait(self, statement: n.KeywordStatement, pc: int) -> Operation:
+        if not statement.values or statement.values[0] is None:
+            raise MintError(NO_EXPRESSION, detail="WAIT needs a time in milliseconds")
+        duration = self.expressions.compile(statement.values[0])
+        vm = self.vm
+        clock = vm.clock
+        waits = vm.waits
+
+        def wait() -> bool:
+            key = (len(vm.frames), pc)
+            deadline = waits.get(key)
+            if deadline is None:
+                deadline = waits[key] = clock.now + max(int(duration()), 0)
+            if clock.now >= deadline:
+                del waits[key]
+                return False
+            vm.wake_at = deadline
+            return True
+
+        return wait
+
+    def function_statement(self, statement: n.FunctionStatement, pc: int) -> Operation:
+        call = statement.call
+        access = self.table.get(call.function)
+        arguments = tuple(self.expressions.compile(argument) for argument in call.arguments)
+        if statement.values is None:
+            if access is None or access.command is None:
+                raise NotSimulated(call.function, "command")
+            command = access.command
+            return lambda: command(None, tuple(argument() for argument in arguments))
+        if access is None or access.write is None:
+            raise NotSimulated(call.function, "write")
+        if len(arguments) != 1:
+            raise NotSimulated(call.function, f"write with {len(arguments)} arguments")
+        write = access.write
+        (index,) = arguments
+        values = tuple(self.expressions.compile(value) if value is not None else None for value in statement.values)
+        return lambda: write((int(index()),), tuple(value() if value is not None else None for value in values))
+
+    def bare_name(self, statement: n.BareName, pc: int) -> Operation:
+        name = statement.name.text
+
+        def undefined() -> None:
+            raise MintError(UNDEFINED_KEYWORD, detail=name)
+
+        return undefined
+
+    def syntax_error(self, statement: n.SyntaxError_, pc: int) -> Operation:
+        def fail() -> None:
+            raise MintError(SYNTAX_ERROR)
+
+        return fail
+
+    def axes(self, statement: n.Axes, pc: int) -> Operation:
+        if statement.selector is None:
+
+            def alone() -> None:
+                raise MintError(NO_EXPRESSION, detail="AXES needs a list of axes in a program")
+
+            return alone
+        items = tuple(self.expressions.compile(item) for item in statement.selector.items if item is not None)
+        vm = self.vm
+        table = self.table
+        validate = table.get("AXES")
+
+        def set_axes() -> None:
+            axes = tuple(int(item()) for item in items)
+            if validate is not None and validate.command is not None:
+                validate.command(axes, ())
+            vm.default_axes = axes
+
+        return set_axes
+
+    # ------------------------------------------------------------ flow of control
+
+    def if_then(self, statement: n.IfThen, pc: int) -> Operation:
+        condition = self.expressions.compile(statement.condition)
+        vm = self.vm
+        skip = pc + layout_size(statement)
+
+        def branch() -> None:
+            if not condition():
+                vm.pc = skip
+
+        return branch
+
+    def if_do(self, statement: n.IfDo, pc: int) -> Operation:
+        block = self._block(statement)
+        condition = self.expressions.compile(statement.condition)
+        otherwise = self._after(block.middle) if block.middle is not None else self._after(block.closer)
+        vm = self.vm
+
+        def branch() -> None:
+            if not condition():
+                vm.pc = otherwise
+
+        return branch
+
+    def for_(self, statement: n.For, pc: int) -> Operation:
+        block = self._block(statement)
+        self.expressions.variable(statement.variable)
+        slot = self.expressions.names.scalars[statement.variable.identity]
+        start = self.expressions.compile(statement.start)
+        end = self.expressions.compile(statement.end)
+        step = self.expressions.compile(statement.step) if statement.step is not None else (lambda: 1.0)
+        exit_pc = self._after(block.closer)
+        vm = self.vm
+        scalars = vm.scalars
+
+        def enter() -> None:
+            first, last, increment = start(), end(), step()
+            scalars[slot] = first
+            if (increment >= 0 and first > last) or (increment < 0 and first < last):
+                vm.pc = exit_pc  # the body never runs; the variable keeps the start value (NM-9 RC)
+                return
+            vm.leave_loop(pc)
+            vm.enter_loop(Loop(pc, exit_pc, True, slot, last, increment))
+
+        return enter
+
+    def block_word(self, statement: n.BlockWord, pc: int) -> Operation:
+        word = statement.word
+        vm = self.vm
+        if word in ("ENDIF", "ENDW", "NEXT", "ENDL", "ELSE", "REPEAT", "LOOP"):
+            block = self.blocks.get(id(statement))
+            if block is None:
+                return _nothing  # an unmatched closer is a compile error; an unclosed opener runs once
+            return getattr(self, "_" + word.lower())(block, pc)
+        if word == "EXIT":
+            return self._exit()
+        if word == "RETURN":
+            return vm.return_
+        if word == "END":
+            return self.on_end
+        raise NotSimulated(word, "statement")
+
+    def _endif(self, block: Block, pc: int) -> Operation:
+        return _nothing
+
+    def _else(self, block: Block, pc: int) -> Operation:
+        after = self._after(block.closer)
+        vm = self.vm
+
+        def skip() -> None:
+            vm.pc = after
+
+        return skip
+
+    def _next(self, block: Block, pc: int) -> Operation:
+        opener = self.positions[id(block.opener)]
+        vm = self.vm
+        scalars = vm.scalars
+
+        def next_() -> None:
+            loop = vm.innermost_loop(opener)
+            if loop is None:
+                raise MintError(2009, detail="NEXT reached outside its FOR loop")
+            candidate = f32(scalars[loop.slot] + loop.step)
+            if (loop.step >= 0 and candidate > loop.end) or (loop.step < 0 and candidate < loop.end):
+                vm.leave_loop(opener)  # the variable keeps the last value the body ran with (NM-9)
+                return
+            scalars[loop.slot] = candidate
+            vm.pc = opener + 1
+
+        return next_
+
+    def _repeat(self, block: Block, pc: int) -> Operation:
+        return self._open_loop(block, pc)
+
+    def _loop(self, block: Block, pc: int) -> Operation:
+        return self._open_loop(block, pc)
+
+    def _open_loop(self, block: Block, pc: int) -> Operation:
+        exit_pc = self._after(block.closer)
+        vm = self.vm
+
+        def enter() -> None:
+            vm.leave_loop(pc)
+            vm.enter_loop(Loop(pc, exit_pc, False))
+
+        return enter
+
+    def _endl(self, block: Block, pc: int) -> Operation:
+        opener = self.positions[id(block.opener)]
+        vm = self.vm
+
+        def again() -> None:
+            vm.pc = opener + 1
+
+        return again
+
+    def until(self, statement: n.Until, pc: int) -> Operation:
+        block = self.blocks.get(id(statement))
+        condition = self.expressions.compile(statement.condition)
+        if block is None:
+            return lambda: bool(condition()) and None
+        opener = self.positions[id(block.opener)]
+        vm = self.vm
+
+        def until() -> None:
+            if condition():
+                vm.leave_loop(opener)
+            else:
+                vm.pc = opener + 1
+
+        return until
+
+    def while_(self, statement: n.While, pc: int) -> Operation:
+        block = self._block(statement)
+        condition = self.expressions.compile(statement.condition)
+        exit_pc = self._after(block.closer)
+        vm = self.vm
+
+        def while_() -> None:
+            if condition():
+                if vm.innermost_loop(pc) is None:
+                    vm.enter_loop(Loop(pc, exit_pc, False))
+            else:
+                vm.leave_loop(pc)
+                vm.pc = exit_pc
+
+        return while_
+
+    def _endw(self, block: Block, pc: int) -> Operation:
+        opener = self.positions[id(block.opener)]
+        vm = self.vm
+
+        def again() -> None:
+            vm.pc = opener
+
+        return again
+
+    def _exit(self) -> Operation:
+        vm = self.vm
+
+        def exit_() -> None:
+            if not vm.loops:
+                raise MintError(SYNTAX_ERROR, detail="EXIT outside a loop")
+            loop = vm.loops.pop()
+            vm.pc = loop.exit
+
+        return exit_
+
+    def jump(self, statement: n.Jump, pc: int) -> Operation:
+        target = self.labels.get(statement.label.identity)
+        if target is None:
+            raise MintError(3004, detail=f"#{statement.label.text}")
+        vm = self.vm
+        if statement.word == "GOSUB":
+            return lambda: vm.call(target)
+
+        def goto() -> None:
+            vm.pc = target
+
+        return goto
+
+    def pause(self, statement: n.Pause, pc: int) -> Operation:
+        if statement.condition is None:
+            raise MintError(NO_EXPRESSION, detail="PAUSE needs a condition")
+        condition = self.expressions.compile(statement.condition)
+        vm = self.vm
+        clock = vm.clock
+
+        def pause() -> bool:
+            clock.horizon = NEVER
+            if condition():
+                return False
+            vm.wake_at = clock.horizon
+            return True
+
+        return pause
+
+    # ------------------------------------------------------------------ terminal
+
+    def print_(self, statement: n.Print, pc: int) -> Operation:
+        using = tuple(self.expressions.compile(value) for value in statement.using)
+        parts = tuple(self._print_item(item, using) for item in statement.items)
+        terminal = self.terminal
+
+        def print_() -> None:
+            terminal.print_items([(render(), separator) for render, separator in parts], newline=True)
+
+        return print_
+
+    def _print_item(self, item: n.PrintItem, using: tuple[Evaluate, ...]) -> tuple[Callable[[], str], str | None]:
+        value = item.value
+        if value is None:
+            return (lambda: ""), item.separator
+        if type(value) is n.StringLiteral:
+            text = value.value
+            return (lambda: text), item.separator
+        if type(value) is n.Call and value.function == "CHR":
+            code = self.expressions.compile(value)
+            return (lambda: format_chr(code())), item.separator
+        number = self.expressions.compile(value)  # type: ignore[arg-type]
+        if item.format == "HEX":
+            return (lambda: format_hex(number())), item.separator
+        if item.format == "BIN":
+            return (lambda: format_bin(number())), item.separator
+        if using:
+            whole = using[0]
+            fraction = using[1] if len(using) > 1 else None
+            return (
+                lambda: format_using(number(), int(whole()), int(fraction()) if fraction is not None else None)
+            ), item.separator
+        return (lambda: format_number(number())), item.separator
+
+    def input_(self, statement: n.Input, pc: int) -> Operation:
+        prompt = statement.prompt.value if statement.prompt is not None else ""
+        terminal = self.terminal
+        vm = self.vm
+        clock = vm.clock
+        entered: list[float] = []
+        store = self._store(statement.target, lambda: entered[-1])
+        prompted: set[tuple[int, int]] = set()
+
+        def input_() -> bool:
+            key = (len(vm.frames), pc)
+            if key not in prompted:
+                terminal.print_items([(prompt, ",")] if prompt else [], newline=False)
+                prompted.add(key)
+            entry = terminal.read_number()
+            if entry is None:
+                clock.horizon = NEVER
+                vm.wake_at = NEVER  # only a keystroke (a scheduled world change) can wake it
+                return True
+            if entry.retry:
+                prompted.discard(key)
+                return True
+            prompted.discard(key)
+            if entry.value is not None:
+                entered.append(entry.value)
+                store()
+                entered.clear()
+            return False
+
+        return input_
+
+    def nothing(self, statement: n.Statement, pc: int) -> Operation:
+        return _nothing
+
+
+def _nothing() -> None:
+    return None
+
+
+_DISPATCH: dict[type, Callable[[StatementCompiler, n.Statement, int], Operation]] = {
+    n.Assignment: StatementCompiler.assignment,  # type: ignore[dict-item]
+    n.KeywordStatement: StatementCompiler.keyword_statement,  # type: ignore[dict-item]
+    n.FunctionStatement: StatementCompiler.function_statement,  # type: ignore[dict-item]
+    n.BareName: StatementCompiler.bare_name,  # type: ignore[dict-item]
+    n.IfThen: StatementCompiler.if_then,  # type: ignore[dict-item]
+    n.IfDo: StatementCompiler.if_do,  # type: ignore[dict-item]
+    n.For: StatementCompiler.for_,  # type: ignore[dict-item]
+    n.Until: StatementCompiler.until,  # type: ignore[dict-item]
+    n.While: StatementCompiler.while_,  # type: ignore[dict-item]
+    n.BlockWord: StatementCompiler.block_word,  # type: ignore[dict-item]
+    n.Jump: StatementCompiler.jump,  # type: ignore[dict-item]
+    n.Pause: StatementCompiler.pause,  # type: ignore[dict-item]
+    n.Dim: StatementCompiler.dim,  # type: ignore[dict-item]
+    n.Define: StatementCompiler.nothing,
+    n.Axes: StatementCompiler.axes,  # type: ignore[dict-item]
+    n.Print: StatementCompiler.print_,  # type: ignore[dict-item]
+    n.Input: StatementCompiler.input_,  # type: ignore[dict-item]
+    n.SyntaxError_: StatementCompiler.syntax_error,  # type: ignore[dict-item]
+}

@@ -1,0 +1,223 @@
+"""The interpreter: runs compiled statements in slices between servo ticks.
+
+A program is a flat list of operations (closures built once by the compiler);
+each returns ``True`` when it has to block, and is then retried in a later
+slice. Control flow is the program counter ``pc``, the GOSUB/event frame stack
+and the loop stack, which also enforce the controller's nesting limits (error
+2015). Run-time errors become ``ERR``/``ERL``/``ERRAXIS`` and a call of
+``#ONERROR``, or end the run.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from enum import StrEnum
+from typing import Protocol
+
+from mintlang.controllers import NestingLimits
+from mintlang.runtime.clock import NEVER, Clock
+from mintlang.runtime.errors import MintError
+
+Operation = Callable[[], bool | None]
+
+STACK_OVERFLOW = 2015
+RETURN_WITHOUT_GOSUB = 2010
+
+
+class StopReason(StrEnum):
+    END = "end"
+    ERROR = "error"
+    UNTIL = "until"
+    DEADLOCK = "deadlock"
+    WALL_LIMIT = "wall-limit"
+
+
+@dataclass(frozen=True, slots=True)
+class Site:
+    """Where an operation came from, for ``ERL`` and for reports."""
+
+    unit: str  # "program" or "configuration"
+    line: int
+    text: str  # the statement as written
+
+
+@dataclass(slots=True)
+class Loop:
+    opener: int  # pc of the FOR/WHILE/REPEAT/LOOP operation
+    exit: int  # pc after the closer, where EXIT continues
+    is_for: bool
+    slot: int = -1  # FOR: the loop variable
+    end: float = 0.0
+    step: float = 0.0
+
+
+@dataclass(slots=True)
+class Frame:
+    return_pc: int
+    loops: int  # loop stack depth at the call: loops left open inside a subroutine end with it
+    rank: int | None  # the event class rank of a handler frame, None for GOSUB
+
+
+class EventSource(Protocol):
+    """What the interpreter needs from the event system."""
+
+    pending: int  # non-zero while some event may be dispatched
+
+    def take(self, running_rank: int | None) -> tuple[int, int] | None:
+        """The (rank, handler pc) of the event to run now, given the rank of the running handler."""
+        ...
+
+    def handler_returned(self, rank: int) -> None: ...
+
+    def error_handler(self) -> int | None:
+        """The pc of ``#ONERROR``, if the program has one."""
+        ...
+
+
+class Interpreter:
+    """The state of a running program; the compiler fills ``operations`` and ``sites``."""
+
+    def __init__(self, clock: Clock, nesting: NestingLimits, slice_statements: int = 20) -> None:
+        self.clock = clock
+        self.nesting = nesting  # the controller's limits (v4 guide 3.9); events count as GOSUB calls
+        self.slice_statements = slice_statements  # statements per servo tick (RTM RC K = 20)
+        self.operations: list[Operation] = []
+        self.sites: list[Site] = []
+        self.program_start = 0  # where the program file begins, after the configuration file
+        self.scalars: list[float] = []
+        self.arrays: list[list[float]] = []
+        self.pc = 0
+        self.frames: list[Frame] = []
+        self.loops: list[Loop] = []
+        self.default_axes: tuple[int, ...] = (0,)
+        self.waits: dict[tuple[int, int], int] = {}  # (frame depth, pc) -> tick a WAIT ends
+        self.blocked = False
+        self.wake_at = NEVER  # while blocked: the earliest tick the blocking statement may pass
+        self.stopped: StopReason | None = None
+        self.stop_site: Site | None = None
+        self.message = ""  # why the run ended, for an error
+        self.err = -1.0
+        self.erl = 0.0
+        self.erraxis = -1.0
+        self.on_fatal: Callable[[], None] = lambda: None  # an unhandled error aborts every axis
+        self.events: EventSource | None = None
+
+    # ------------------------------------------------------------------ running
+
+    def run_slice(self) -> None:
+        """Run up to ``slice_statements`` statements, or until the program blocks or ends."""
+        operations = self.operations
+        count = len(operations)
+        budget = self.slice_statements
+        self.blocked = False
+        events = self.events
+        while budget > 0 and self.stopped is None:
+            if events is not None and events.pending:
+                self._dispatch(events)
+            pc = self.pc
+            if pc >= count:
+                self._finish()
+                return
+            self.pc = pc + 1
+            try:
+                if operations[pc]():
+                    self.pc = pc
+                    self.blocked = True
+                    return
+            except MintError as error:
+                self.fail(error, pc)
+            budget -= 1
+
+    def current_site(self) -> Site | None:
+        sites = self.sites
+        return sites[self.pc] if self.pc < len(sites) else (sites[-1] if sites else None)
+
+    def stop(self, reason: StopReason, message: str = "") -> None:
+        if self.stopped is None:
+            self.stopped = reason
+            self.stop_site = self.current_site()
+            self.message = message
+
+    def _finish(self) -> None:
+        self.stop(StopReason.END)
+
+    # ------------------------------------------------------------- subroutines
+
+    def call(self, target: int, rank: int | None = None, return_pc: int | None = None) -> None:
+        if len(self.frames) >= self.nesting.gosub:
+            raise MintError(STACK_OVERFLOW, detail=f"more than {self.nesting.gosub} nested GOSUB calls and events")
+        self.frames.append(Frame(self.pc if return_pc is None else return_pc, len(self.loops), rank))
+        self.pc = target
+
+    def return_(self) -> None:
+        if not self.frames:
+            raise MintError(RETURN_WITHOUT_GOSUB)
+        frame = self.frames.pop()
+        del self.loops[frame.loops :]
+        self.pc = frame.return_pc
+        if frame.rank is not None and self.events is not None:
+            self.events.handler_returned(frame.rank)
+
+    def running_rank(self) -> int | None:
+        """The rank of the innermost running event handler (lower ranks pre-empt higher ones)."""
+        for frame in reversed(self.frames):
+            if frame.rank is not None:
+                return frame.rank
+        return None
+
+    def _dispatch(self, events: EventSource) -> None:
+        chosen = events.take(self.running_rank())
+        if chosen is None:
+            return
+        rank, handler = chosen
+        if len(self.frames) >= self.nesting.gosub:
+            return  # the manual: an event waits while the GOSUB stack is full
+        self.call(handler, rank)
+
+    # ------------------------------------------------------------------- loops
+
+    def enter_loop(self, loop: Loop) -> None:
+        loops = self.loops
+        same_kind = sum(1 for entry in loops if entry.is_for == loop.is_for) + 1
+        if same_kind > (self.nesting.for_loops if loop.is_for else self.nesting.other_loops):
+            kind = "FOR loops" if loop.is_for else "WHILE, LOOP and REPEAT blocks"
+            raise MintError(STACK_OVERFLOW, detail=f"{kind} nested too deep")
+        loops.append(loop)
+
+    def leave_loop(self, opener: int) -> None:
+        """Drop the loop opened at ``opener`` and anything a GOTO left open inside it."""
+        loops = self.loops
+        for depth in range(len(loops) - 1, -1, -1):
+            if loops[depth].opener == opener:
+                del loops[depth:]
+                return
+
+    def innermost_loop(self, opener: int) -> Loop | None:
+        loops = self.loops
+        return loops[-1] if loops and loops[-1].opener == opener else None
+
+    # ------------------------------------------------------------------ errors
+
+    def fail(self, error: MintError, pc: int) -> None:
+        """A run-time error at ``pc``: record it, then call ``#ONERROR`` or end the run."""
+        site = self.sites[pc] if pc < len(self.sites) else None
+        self.record_error(error.code, site.line if site else 0, error.axis)
+        handler = self.events.error_handler() if self.events is not None else None
+        inside_handler = any(frame.rank == 0 for frame in self.frames)
+        if handler is not None and not inside_handler:
+            try:
+                self.call(handler, 0, return_pc=pc + 1)  # RETURN resumes after the failing statement (EV-19 RC)
+                return
+            except MintError:
+                pass
+        self.pc = pc
+        where = f" [line {site.line}]" if site else ""
+        unit = f" {site.unit.upper()}" if site else ""
+        self.stop(StopReason.ERROR, error.describe().replace(":", ":" + unit, 1) + where)
+        self.on_fatal()
+
+    def record_error(self, code: int, line: int, axis: int | None) -> None:
+        self.err = float(code)
+        self.erl = float(line)
+        self.erraxis = float(axis) if axis is not None else -1.0

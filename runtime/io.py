@@ -1,0 +1,165 @@
+"""Digital inputs and outputs, the relay and the analog inputs (spec §8).
+
+Inputs are sampled once per servo tick from the world's electrical levels.
+``INPUTACTIVELEVEL`` turns a level into an active state; edge-triggered inputs
+(``INPUTMODE``) latch the edges ``INPUTPOSTRIGGER``/``INPUTNEGTRIGGER`` select,
+and reading ``IN`` clears the latches it returns. Outputs and the relay only
+record what the program drives, for the report and the trace.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from mintlang.controllers import ChannelRange, ControllerProfile
+from mintlang.runtime.clock import Clock
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.events import EventClass, Events
+from mintlang.runtime.keywords import KeywordTable, per_channel
+
+INVALID_INPUT = 7
+INVALID_OUTPUT = 8
+INVALID_CHANNEL = 4
+OUT_OF_RANGE = 3
+
+
+def _check(channel: int, channels: ChannelRange, code: int) -> int:
+    if channel not in channels:
+        raise MintError(code, channel, f"channels are {channels}")
+    return channel
+
+
+class DigitalIO:
+    def __init__(self, profile: ControllerProfile, clock: Clock, events: Events) -> None:
+        self.inputs = profile.digital_inputs
+        self.outputs = profile.digital_outputs
+        self.adc_channels = profile.adc
+        self.clock = clock
+        self.events = events
+        self.next_input_change: Callable[[], int] = lambda: clock.now + 1  # the world tells when a level may change
+        all_inputs = (1 << (self.inputs.high + 1)) - 1
+        self.levels = 0  # electrical levels, bit per input
+        self.active = 0  # active states after INPUTACTIVELEVEL
+        self.active_level = all_inputs  # INPUTACTIVELEVEL: 1 = active high (the default)
+        self.edge_mode = 0  # INPUTMODE: 1 = edge-triggered
+        self.positive_trigger = all_inputs  # INPUTPOSTRIGGER
+        self.negative_trigger = 0  # INPUTNEGTRIGGER
+        self.latched = 0  # edges seen and not yet read
+        self.out = 0  # OUT as last written
+        self.output_active_level = (1 << (self.outputs.high + 1)) - 1
+        self.relay = 0
+        self.adc = [0.0] * (self.adc_channels.high + 1)
+
+    # ------------------------------------------------------------------ ticks
+
+    def sample(self, levels: int) -> None:
+        """One servo tick of input sampling: edges latch, handlers become pending."""
+        previous = self.active
+        self.levels = levels
+        active = ~(levels ^ self.active_level) & ((1 << (self.inputs.high + 1)) - 1)
+        self.active = active
+        rising = active & ~previous
+        falling = previous & ~active
+        edges = ((rising & self.positive_trigger) | (falling & self.negative_trigger)) & self.edge_mode
+        self.latched |= edges
+        events = self.events
+        raising = edges | (active & ~self.edge_mode)  # level inputs raise #INx every tick they are active
+        number = 0
+        while raising:
+            if raising & 1 and events.has_handler(EventClass.INPUT, number):
+                events.raise_event(EventClass.INPUT, number)
+            raising >>= 1
+            number += 1
+
+    def is_active(self, channel: int) -> bool:
+        return bool(self.active >> channel & 1)
+
+    def level_trigger_pending(self) -> bool:
+        """Some level-triggered input with a handler is active, so events arrive every tick."""
+        return bool(self.active & ~self.edge_mode)
+
+    # --------------------------------------------------------------- keywords
+
+    def register(self, table: KeywordTable) -> None:
+        table.register("IN", read=self._read_in)
+        table.register("INSTATE", read=self._read_instate)
+        for name, attribute in (
+            ("INPUTACTIVELEVEL", "active_level"),
+            ("INPUTMODE", "edge_mode"),
+            ("INPUTPOSTRIGGER", "positive_trigger"),
+            ("INPUTNEGTRIGGER", "negative_trigger"),
+        ):
+            table.register(name, read=self._bank_reader(attribute), write=per_channel(self._bank_writer(attribute)))
+        table.register("OUT", read=self._read_out, write=per_channel(self._write_out))
+        table.register(
+            "OUTPUTACTIVELEVEL", read=lambda _: float(self.output_active_level), write=per_channel(self._write_oal)
+        )
+        table.register("RELAY", read=lambda _: float(self.relay), write=per_channel(self._write_relay))
+        table.register("ADC", read=self._read_adc)
+
+    def _watch(self) -> None:
+        self.clock.changes_at(self.next_input_change())
+
+    def _read_in(self, channel: int | None) -> float:
+        self._watch()
+        if channel is None:
+            value = (self.active & ~self.edge_mode) | (self.latched & self.edge_mode)
+            self.latched = 0
+            return float(value)
+        _check(channel, self.inputs, INVALID_INPUT)
+        if self.edge_mode >> channel & 1:
+            value = self.latched >> channel & 1
+            self.latched &= ~(1 << channel)
+            return float(value)
+        return float(self.active >> channel & 1)
+
+    def _read_instate(self, channel: int | None) -> float:
+        self._watch()
+        if channel is None:
+            return float(self.active)
+        return float(self.active >> _check(channel, self.inputs, INVALID_INPUT) & 1)
+
+    def _bank_reader(self, attribute: str) -> Callable[[int | None], float]:
+        def read(channel: int | None) -> float:
+            value = getattr(self, attribute)
+            return float(value if channel is None else value >> _check(channel, self.inputs, INVALID_INPUT) & 1)
+
+        return read
+
+    def _bank_writer(self, attribute: str) -> Callable[[int | None, float], None]:
+        def write(channel: int | None, value: float) -> None:
+            if channel is None:
+                setattr(self, attribute, int(value) & 0xFFFFFF)
+                return
+            bit = 1 << _check(channel, self.inputs, INVALID_INPUT)
+            current = getattr(self, attribute)
+            setattr(self, attribute, current | bit if value else current & ~bit)
+
+        return write
+
+    def _read_out(self, channel: int | None) -> float:
+        if channel is None:
+            return float(self.out)
+        return float(self.out >> _check(channel, self.outputs, INVALID_OUTPUT) & 1)
+
+    def _write_out(self, channel: int | None, value: float) -> None:
+        if channel is None:
+            limit = 1 << (self.outputs.high + 1)
+            if not 0 <= value < limit:
+                raise MintError(OUT_OF_RANGE, detail=f"OUT takes 0 to {limit - 1}")
+            self.out = int(value)
+            return
+        bit = 1 << _check(channel, self.outputs, INVALID_OUTPUT)
+        self.out = self.out | bit if value else self.out & ~bit
+
+    def _write_oal(self, _: int | None, value: float) -> None:
+        self.output_active_level = int(value) & 0xFFFFFF
+
+    def _write_relay(self, _: int | None, value: float) -> None:
+        self.relay = 1 if value else 0
+
+    def _read_adc(self, channel: int | None) -> float:
+        if channel is None:
+            channel = 0
+        self._watch()
+        return self.adc[_check(channel, self.adc_channels, INVALID_CHANNEL)]

@@ -1,0 +1,68 @@
+"""The keyword table: what each Mint keyword does on the simulated controller.
+
+The compiler resolves every keyword of a program to one ``KeywordAccess`` once,
+so executing a statement is a direct call. Handlers take the channels the
+program addressed (axes or I/O channels, already reduced to integers) and
+values already evaluated; a writer or command answers ``True`` when it cannot
+proceed yet (a move buffer is full) and has then changed nothing, so the
+interpreter can retry the whole statement on a later tick.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+
+Channels = tuple[int, ...]
+Values = tuple[float | None, ...]  # None: a skipped place, as in SPEED = ,10
+Reader = Callable[[int | None], float]  # channel None: written without a selector (IN, OUT, TIME)
+Writer = Callable[[Channels | None, Values], bool]
+Command = Callable[[Channels | None, tuple[float, ...]], bool]
+
+
+@dataclass(frozen=True, slots=True)
+class KeywordAccess:
+    read: Reader | None = None
+    write: Writer | None = None
+    command: Command | None = None
+
+
+class KeywordTable:
+    """Handlers by canonical keyword name; each part of the controller registers its own."""
+
+    def __init__(self) -> None:
+        self._entries: dict[str, KeywordAccess] = {}
+
+    def register(
+        self,
+        name: str,
+        *,
+        read: Reader | None = None,
+        write: Writer | None = None,
+        command: Command | None = None,
+    ) -> None:
+        if name in self._entries:
+            raise ValueError(f"keyword {name} registered twice")
+        self._entries[name] = KeywordAccess(read, write, command)
+
+    def get(self, name: str) -> KeywordAccess | None:
+        return self._entries.get(name)
+
+    def names(self) -> Iterator[str]:
+        return iter(sorted(self._entries))
+
+
+def per_channel(write_one: Callable[[int | None, float], None]) -> Writer:
+    """A writer from a function of one channel: ``KW[0,1] = a, b`` writes each channel in turn."""
+
+    def write(channels: Channels | None, values: Values) -> bool:
+        if channels is None:
+            if values[0] is not None:
+                write_one(None, values[0])
+            return False
+        for channel, value in zip(channels, values, strict=False):
+            if value is not None:
+                write_one(channel, value)
+        return False
+
+    return write

@@ -1,0 +1,272 @@
+"""One simulated axis: parameters, move buffer, demand, plant, servo loop, errors.
+
+The demand of an axis is a function of time between commands (its ``Move``),
+so with the ideal plant the simulator can evaluate it at any tick without
+stepping through the ones in between; an axis whose plant needs integration
+(torque or velocity amplifier) or whose move is live asks for every tick.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from mintlang.keyworddb.model import Controller
+from mintlang.runtime.clock import NEVER, Clock
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.motion.moves import PROFILER_TICK_MS, Move, next_profiler_tick
+from mintlang.runtime.motion.parameters import DEFAULTS, GAINS, SCALED, bounds, check_range
+from mintlang.runtime.motion.plants import IdealPlant, Plant, round_half_away
+from mintlang.runtime.motion.servo import ServoGains, ServoLoop
+
+# AXISMODE bits (AX-1) and AXISERROR bits (AX-5)
+MD_LINEAR, MD_JOG, MD_CIRCULAR, MD_TORQUE, MD_HOMING = 2, 4, 8, 16, 32
+MD_OFFSET, MD_FOLLOW, MD_FLY, MD_CAM, MD_INCREMENT = 64, 128, 512, 1024, 16384
+ER_ABORT, ER_FWD_HARD, ER_REV_HARD, ER_FWD_SOFT, ER_REV_SOFT, ER_FOLLOWING = 1, 2, 4, 8, 16, 32
+ER_STOP_INPUT, ER_ERROR_INPUT = 64, 128
+
+MOTION_IN_PROGRESS = 10
+MOTION_ERROR = 12
+DRIVE_NOT_ENABLED = 40
+SERVO_TICK_S = 0.001
+
+
+@dataclass(frozen=True, slots=True)
+class Request:
+    """A move waiting in the buffer; ``build`` makes it a ``Move`` at its start tick."""
+
+    mode: int
+    axes: tuple[int, ...]
+    build: Callable[[int], Move | None]  # start tick -> the move, or None when there is nothing to do
+
+
+class Axis:
+    def __init__(self, number: int, controller: Controller, clock: Clock, plant: Plant | None = None) -> None:
+        self.number = number
+        self.clock = clock
+        self.parameters: dict[str, float] = dict(DEFAULTS)
+        self._bounds = {name: bounds(name, controller) for name in DEFAULTS}
+        self.plant: Plant = plant if plant is not None else IdealPlant()
+        self.servo = ServoLoop()
+        self.enabled = False  # drives start disabled (IO-7 RC)
+        self.axiserror = 0  # latched (AXISERROR)
+        self.status = 0  # instantaneous conditions (AXISSTATUS)
+        self.move: Move | None = None
+        self.index_in_move = 0
+        self.buffer: deque[Request] = deque()
+        self.triggered = 0  # how many requests at the head of the buffer GO has triggered
+        self.pending_mode = 0  # a mode bit shown from the moment it is issued (JOG, HOME, TORQUE, FOLLOW)
+        self.hold = 0.0  # demand while no move runs, counts
+        self.target = 0.0  # POSTARGET, counts
+        self.jog_speed = 0.0  # JOG as last written, counts/s
+        self.position_offset = 0.0  # POS = (measured - offset) / SCALE
+        self.encoder_offset = 0.0
+        self.measured = 0
+        self.previous_measured = 0
+        self.demand = 0.0
+        self.dac = 0.0
+        self.torque: float | None = None  # TORQUE mode: the DAC command
+        self.last_tick = 0
+
+    # -------------------------------------------------------------- parameters
+
+    @property
+    def scale(self) -> float:
+        return self.parameters["SCALE"]
+
+    def get(self, name: str) -> float:
+        value = self.parameters[name]
+        return value / self.scale if name in SCALED else value
+
+    def set(self, name: str, value: float) -> None:
+        check_range(name, value, self._bounds[name], self.number)
+        if name == "SCALE":
+            if value <= 0:
+                raise MintError(3, self.number, "SCALE must be positive")
+            if self.busy():
+                raise MintError(MOTION_IN_PROGRESS, self.number, "SCALE can only change on an idle axis")
+        self.parameters[name] = value * self.scale if name in SCALED else value
+        if name in GAINS:
+            p = self.parameters
+            self.servo.gains = ServoGains(
+                kprop=p["KPROP"],
+                kint=p["KINT"],
+                kintlimit=p["KINTLIMIT"],
+                kintmode=int(p["KINTMODE"]),
+                kderiv=p["KDERIV"],
+                kvel=p["KVEL"],
+                kvelff=p["KVELFF"],
+                kaccel=p["KACCEL"],
+                daclimitmax=p["DACLIMITMAX"],
+            )
+        if name in ("SPEED", "ACCEL", "DECEL") and self.move is not None and self.move.axes[0] == self.number:
+            p = self.parameters
+            tick = next_profiler_tick(self.clock.now)
+            self.move = self.move.replan(tick, p["SPEED"], p["ACCEL"], p["DECEL"], p["SRAMP"])
+
+    # ------------------------------------------------------------------ state
+
+    def busy(self) -> bool:
+        return self.move is not None or bool(self.buffer) or bool(self.pending_mode)
+
+    @property
+    def axismode(self) -> int:
+        return self.move.mode if self.move is not None else self.pending_mode
+
+    def demand_at(self, tick: int) -> float:
+        """The servo demand at ``tick``: profiler set-points every 2 ms, linearly interpolated between (T-6)."""
+        move = self.move
+        if move is None:
+            return self.hold
+        index = self.index_in_move
+        if tick % PROFILER_TICK_MS:
+            return (move.demand(index, tick - 1) + move.demand(index, tick + 1)) / 2.0
+        return move.demand(index, tick)
+
+    def velocity_demand(self, tick: int) -> float:
+        """Demand velocity in counts/s (its sign decides which limits apply, AX-14 RC)."""
+        return self.move.velocity(self.index_in_move, tick) if self.move is not None else 0.0
+
+    def idle(self) -> bool:
+        """IDLE (AX-3): no move, none triggered, within IDLEPOS and IDLEVEL; a disabled axis is idle."""
+        if not self.enabled:
+            return True
+        if self.axismode or self.triggered:
+            return False
+        p = self.parameters
+        return abs(self.demand - self.measured) <= p["IDLEPOS"] and abs(self.velocity_counts()) <= p["IDLEVEL"]
+
+    def velocity_counts(self) -> float:
+        return (self.measured - self.previous_measured) / SERVO_TICK_S
+
+    def settling(self) -> bool:
+        """The measured position changed on the last tick, so VEL and IDLE change on the next."""
+        return self.measured != self.previous_measured
+
+    def next_event(self, now: int) -> int:
+        """The next tick at which this axis changes in a way that matters beyond its demand value."""
+        move = self.move
+        if self.plant.closed_loop or (move is not None and move.live) or self.settling():
+            return now + 1
+        if move is not None:
+            return max(move.end, now + 1)
+        if self.triggered:
+            return next_profiler_tick(now)
+        return NEVER
+
+    # --------------------------------------------------------------- loading
+
+    def require_ready(self) -> None:
+        if self.axiserror:
+            raise MintError(MOTION_ERROR, self.number, "clear the axis error with CANCEL or RESET first")
+        if not self.enabled:
+            raise MintError(DRIVE_NOT_ENABLED, self.number)
+
+    def buffer_free(self) -> int:
+        running = 1 if self.move is not None and self.move.buffered else 0
+        return int(self.parameters["MOVEBUFFERSIZE"]) - len(self.buffer) - running
+
+    def reference(self) -> float:
+        """Where a relative move starts from: the last loaded target, or the demand (MP-12 RC)."""
+        if self.buffer or (self.move is not None and self.move.buffered):
+            return self.target
+        return self.demand_at(next_profiler_tick(self.clock.now)) if self.move is not None else self.hold
+
+    def go(self) -> None:
+        if self.move is not None and not self.move.buffered and not self.buffer and self.move.mode != MD_LINEAR:
+            raise MintError(MOTION_IN_PROGRESS, self.number, "GO on an axis that is jogging, homing or following")
+        self.triggered = len(self.buffer)
+
+    # ---------------------------------------------------------------- ticks
+
+    def profiler(self, tick: int, start_group: Callable[[Request, int], None]) -> None:
+        """A profiler tick: let a live move update, finish a completed move, start the next triggered one."""
+        move = self.move
+        if move is not None:
+            move.profiler(tick)
+            if tick >= move.end:
+                self.hold = move.demand(self.index_in_move, move.end)
+                self.move = None
+                if move.mode == self.pending_mode:
+                    self.pending_mode = 0
+        if self.move is None and self.triggered and self.buffer:
+            start_group(self.buffer[0], tick)
+
+    def begin(self, move: Move, index: int) -> None:
+        self.move = move
+        self.index_in_move = index
+
+    def servo_tick(self, tick: int) -> None:
+        """The servo loop at ``tick``: read the encoder, then compute the DAC for the next tick (SL-1)."""
+        demand = self.demand_at(tick)
+        self.demand = demand
+        plant = self.plant
+        servoing = self.enabled and self.torque is None
+        if not plant.closed_loop:
+            if servoing:
+                self.previous_measured = (
+                    self.measured if tick - self.last_tick == 1 else round_half_away(self.demand_at(tick - 1))
+                )
+                self.measured = plant.step(demand, 0.0, SERVO_TICK_S)
+            else:
+                self.previous_measured = self.measured
+                self.measured = plant.step(None, 0.0, SERVO_TICK_S)
+            self.dac = self.torque if self.torque is not None and self.enabled else 0.0
+        else:
+            self.previous_measured = self.measured
+            self.measured = plant.step(demand if servoing else None, self.dac, SERVO_TICK_S)
+            if not self.enabled:
+                self.dac = 0.0
+            elif self.torque is not None:
+                self.dac = self.torque
+            else:
+                previous = self.demand_at(tick - 1)
+                velocity = demand - previous
+                acceleration = velocity - (previous - self.demand_at(tick - 2))
+                moved = self.measured - self.previous_measured
+                self.dac = self.servo.step(demand, velocity, acceleration, self.measured, moved)
+        self.last_tick = tick
+
+    # ---------------------------------------------------------------- stopping
+
+    def controlled_stop(self, tick: int, decel: float) -> Move | None:
+        """Decelerate at ``decel`` from ``tick`` where the move allows it; the buffer is emptied (MP-22)."""
+        self.buffer.clear()
+        self.triggered = 0
+        move = self.move
+        if move is None:
+            self.pending_mode = 0
+            return None
+        stopped = move.stop(tick, decel)
+        if stopped is None:
+            self.crash_stop()
+            return None
+        self.move = stopped
+        self.target = stopped.demand(self.index_in_move, stopped.end) if stopped.end < NEVER else self.target
+        return stopped
+
+    def crash_stop(self) -> None:
+        """Demand velocity to 0 at once; the demand stays where it is (MP-24 RC)."""
+        if self.move is not None:
+            self.hold = self.demand_at(self.clock.now)
+        self.move = None
+        self.buffer.clear()
+        self.triggered = 0
+        self.pending_mode = 0
+        self.torque = None
+        self.target = self.hold
+
+    def resync(self) -> None:
+        """Demand := measured, so the following error is 0 (SL-10 RC)."""
+        self.hold = float(self.measured)
+        self.demand = self.hold
+        self.target = self.hold
+        self.servo.reset()
+
+    def latch(self, bit: int) -> None:
+        self.axiserror |= bit
+
+    def disable(self) -> None:
+        self.enabled = False
+        self.dac = 0.0

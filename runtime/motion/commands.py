@@ -1,0 +1,344 @@
+"""Motion keywords on the simulated axes: moves, GO, stops, errors and what they read (spec §3, §4).
+
+Every handler validates first and changes state second, so a statement that
+fails or has to wait for buffer space leaves the axes as they were.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+
+from mintlang.controllers import ControllerProfile
+from mintlang.runtime.clock import Clock
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.keywords import Channels, KeywordTable, Values, per_channel
+from mintlang.runtime.motion.axis import (
+    ER_ABORT,
+    MD_JOG,
+    MD_LINEAR,
+    MD_TORQUE,
+    MOTION_ERROR,
+    MOTION_IN_PROGRESS,
+    Axis,
+    Request,
+)
+from mintlang.runtime.motion.moves import Geometry, PlannedMove, next_profiler_tick
+from mintlang.runtime.motion.parameters import DEFAULTS
+from mintlang.runtime.motion.profile import plan_move, plan_velocity
+from mintlang.runtime.scenario.stimulus import IndexPulse
+
+INVALID_AXIS = 2
+MISSING_PARAMETER = 2001
+TOO_MANY_VALUES = 2017
+SAME_AXIS_TWICE = 2018
+
+
+class Motion:
+    """The axes of the controller and the keywords that drive them."""
+
+    def __init__(self, axes: Sequence[Axis], profile: ControllerProfile, clock: Clock) -> None:
+        self.axes = list(axes)
+        self.profile = profile
+        self.clock = clock
+        self.on_error: Callable[[Axis, int], None] = lambda axis, bit: None  # latch + default action + #ONERROR
+        self.input_active: Callable[[int], bool] = lambda channel: False  # a digital input's state this tick
+        self.index_pulses: dict[int, IndexPulse] = {}  # Z pulses of the scripted encoders, by axis
+
+    def index_active(self, axis: Axis) -> bool:
+        """The Z pulse of ``axis`` at its current physical count (active high, HM-8 RC)."""
+        pulse = self.index_pulses.get(axis.number)
+        return pulse is not None and axis.measured % pulse.every_counts < pulse.width_counts
+
+    # --------------------------------------------------------------- addressing
+
+    def axis(self, number: int | None) -> Axis:
+        if number is None:
+            number = 0
+        if not 0 <= number < len(self.axes):
+            raise MintError(INVALID_AXIS, number, f"axes are 0 to {len(self.axes) - 1}")
+        return self.axes[number]
+
+    def addressed(self, channels: Channels | None) -> list[Axis]:
+        numbers = channels if channels is not None else (0,)
+        if len(set(numbers)) != len(numbers):
+            raise MintError(SAME_AXIS_TWICE, detail="an axis is named twice")
+        return [self.axis(number) for number in numbers]
+
+    def _pairs(self, channels: Channels | None, values: Values) -> list[tuple[Axis, float]]:
+        """The addressed axes with the value each gets; a skipped place leaves its axis out."""
+        axes = self.addressed(channels)
+        if len(values) > len(axes):
+            raise MintError(TOO_MANY_VALUES, detail="more values than axes")
+        return [(axis, value) for axis, value in zip(axes, values, strict=False) if value is not None]
+
+    # ----------------------------------------------------------------- moves
+
+    def linear(self, *, relative: bool, interpolated: bool) -> Callable[[Channels | None, Values], bool]:
+        """MOVEA/MOVER load one move per axis, each at its own SPEED (MP-13); VECTORA/VECTORR load one
+        straight line through every addressed axis with the first as master (MP-14)."""
+
+        def write(channels: Channels | None, values: Values) -> bool:
+            axes = self.addressed(channels)
+            if len(values) > len(axes):
+                raise MintError(TOO_MANY_VALUES, detail="more values than axes")
+            if interpolated and (len(values) < len(axes) or None in values):
+                raise MintError(MISSING_PARAMETER, detail="a vector needs a value for every axis")
+            pairs = [(axis, value) for axis, value in zip(axes, values, strict=False) if value is not None]
+            for axis, _ in pairs:
+                axis.require_ready()
+                if (axis.move is not None and axis.move.mode != MD_LINEAR) or axis.pending_mode:
+                    raise MintError(MOTION_IN_PROGRESS, axis.number)
+            if any(axis.buffer_free() <= 0 for axis, _ in pairs):
+                for axis, _ in pairs:
+                    self._watch_buffer(axis)
+                return True
+            targets = [
+                axis.reference() + value * axis.scale if relative else value * axis.scale + axis.position_offset
+                for axis, value in pairs
+            ]
+            if interpolated:
+                self._load_line(axes[0], tuple(axes), tuple(targets), MD_LINEAR)
+            else:
+                for (axis, _), target in zip(pairs, targets, strict=True):
+                    self._load_line(axis, (axis,), (target,), MD_LINEAR)
+            return False
+
+        return write
+
+    def _watch_buffer(self, axis: Axis) -> None:
+        """A full buffer frees when the running move ends."""
+        if axis.move is not None:
+            self.clock.changes_at(axis.move.end)
+
+    def _load_line(self, master: Axis, axes: tuple[Axis, ...], targets: tuple[float, ...], mode: int) -> None:
+        for axis, target in zip(axes, targets, strict=True):
+            axis.target = target
+        numbers = tuple(axis.number for axis in axes)
+
+        def build(tick: int) -> PlannedMove | None:
+            origin = tuple(axis.hold for axis in axes)
+            deltas = [target - start for target, start in zip(targets, origin, strict=True)]
+            length = math.sqrt(sum(delta * delta for delta in deltas))
+            if length == 0.0:
+                return None  # a move to where the axes already are generates no motion (MP-13)
+            geometry = Geometry(origin, tuple(delta / length for delta in deltas))
+            p = master.parameters
+            profile = plan_move(length, p["SPEED"], p["ACCEL"], p["DECEL"], sramp=p["SRAMP"])
+            return PlannedMove(mode, numbers, geometry, profile, tick, 0.0, length, targets)
+
+        request = Request(mode, numbers, build)
+        for axis in axes:
+            axis.buffer.append(request)
+
+    def start_group(self, request: Request, tick: int) -> None:
+        """Start a triggered request once every axis it moves has it at the head of its buffer and is free."""
+        axes = [self.axes[number] for number in request.axes]
+        if any(axis.move is not None or not axis.triggered or axis.buffer[0] is not request for axis in axes):
+            return
+        for axis in axes:
+            axis.buffer.popleft()
+            axis.triggered -= 1
+        move = request.build(tick)
+        if move is not None:
+            for index, axis in enumerate(axes):
+                axis.begin(move, index)
+
+    def go(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        for axis in self.addressed(channels):
+            axis.go()
+            for request in list(axis.buffer)[: axis.triggered]:
+                for number in request.axes:  # GO on one axis of a vector starts them all (MP-28)
+                    other = self.axes[number]
+                    if other is not axis:
+                        other.triggered = max(other.triggered, list(other.buffer).index(request) + 1)
+        return False
+
+    def jog(self, channels: Channels | None, values: Values) -> bool:
+        """JOG: ramp to a constant speed at once, no GO (MP-16); JOG = 0 ramps down and ends the move."""
+        pairs = self._pairs(channels, values)
+        for axis, _ in pairs:
+            axis.require_ready()
+            move = axis.move
+            if move is not None and (move.mode not in (MD_JOG, MD_LINEAR) or len(move.axes) > 1):
+                raise MintError(MOTION_IN_PROGRESS, axis.number, "JOG cannot blend from this move")
+        start = next_profiler_tick(self.clock.now)
+        for axis, value in pairs:
+            speed = value * axis.scale
+            p = axis.parameters
+            move = axis.move
+            origin = axis.demand_at(start) if move is not None else axis.hold
+            velocity = move.velocity(axis.index_in_move, start) if move is not None else 0.0
+            axis.buffer.clear()
+            axis.triggered = 0
+            ramp = plan_velocity(velocity, speed, p["ACCEL"], p["DECEL"])
+            if ramp.duration == 0.0 and speed == 0.0:
+                axis.move = None
+                axis.hold = origin
+            else:
+                axis.begin(
+                    PlannedMove(MD_JOG, (axis.number,), Geometry((origin,), (1.0,)), ramp, start, buffered=False), 0
+                )
+            axis.jog_speed = speed
+            axis.pending_mode = MD_JOG if speed else 0
+            axis.target = origin
+        return False
+
+    def torque(self, channels: Channels | None, values: Values) -> bool:
+        """TORQUE: the DAC at once, servo loop off, until a stop (SL-9)."""
+        for axis, value in self._pairs(channels, values):
+            axis.require_ready()
+            if axis.move is not None and axis.move.mode != MD_TORQUE:
+                axis.crash_stop()
+            axis.torque = value
+            axis.pending_mode = MD_TORQUE
+        return False
+
+    # -------------------------------------------------------------- stopping
+
+    def stop(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        """STOP: decelerate at DECEL where the move allows it, crash stop otherwise (MP-22)."""
+        tick = next_profiler_tick(self.clock.now)
+        for axis in self.addressed(channels):
+            if axis.torque is not None:
+                axis.crash_stop()
+                continue
+            stopped = axis.controlled_stop(tick, axis.parameters["DECEL"])
+            for number in stopped.axes if stopped is not None else ():
+                other = self.axes[number]
+                if other is not axis:
+                    other.buffer.clear()
+                    other.triggered = 0
+                    other.move = stopped
+        return False
+
+    def cancel(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        """CANCEL: crash stop, errors cleared, demand := measured; the drive stays as it is (EV-19)."""
+        for axis in self.addressed(channels):
+            axis.crash_stop()
+            axis.axiserror = 0
+            axis.resync()
+        return False
+
+    def reset(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        """RESET: CANCEL, then POS = 0 and the drive enabled (MP-21)."""
+        for axis in self.addressed(channels):
+            axis.crash_stop()
+            axis.axiserror = 0
+            axis.resync()
+            axis.position_offset = float(axis.measured)
+            axis.enabled = True
+        return False
+
+    def abort(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        """ABORT: a motion error on every axis: crash stop, drives disabled (MP-21, AX-8)."""
+        for axis in self.axes:
+            self.on_error(axis, ER_ABORT)
+        return False
+
+    def all_axes(self, command: Callable[[Channels | None, tuple[float, ...]], bool]) -> Callable[..., bool]:
+        return lambda channels, arguments: command(tuple(range(len(self.axes))), arguments)
+
+    # --------------------------------------------------------------- keywords
+
+    def register(self, table: KeywordTable) -> None:
+        table.register("MOVEA", write=self.linear(relative=False, interpolated=False))
+        table.register("MOVER", write=self.linear(relative=True, interpolated=False))
+        table.register("VECTORA", write=self.linear(relative=False, interpolated=True))
+        table.register("VECTORR", write=self.linear(relative=True, interpolated=True))
+        table.register("JOG", read=lambda ch: self.axis(ch).jog_speed / self.axis(ch).scale, write=self.jog)
+        table.register("TORQUE", read=lambda ch: self.axis(ch).torque or 0.0, write=self.torque)
+        table.register("GO", command=self.go)
+        table.register("STOP", command=self.stop)
+        table.register("CANCEL", command=self.cancel)
+        table.register("CANCELALL", command=self.all_axes(self.cancel))
+        table.register("RESET", command=self.reset)
+        table.register("RESETALL", command=self.all_axes(self.reset))
+        table.register("ABORT", command=self.abort)
+        table.register("AXES", command=self._validate_axes)
+        for name in DEFAULTS:
+            table.register(name, read=self._parameter_reader(name), write=per_channel(self._parameter_writer(name)))
+        table.register("DRIVEENABLE", read=lambda ch: float(self.axis(ch).enabled), write=per_channel(self._enable))
+        table.register("POS", read=self._pos, write=per_channel(self._write_pos))
+        table.register("ENCODER", read=self._encoder, write=per_channel(self._write_encoder))
+        table.register("VEL", read=self._vel)
+        table.register("FOLERROR", read=self._folerror)
+        table.register("DEMAND", read=lambda ch: self._watch(self.axis(ch), moving=True) or 0.0)
+        table.register("AXISMODE", read=lambda ch: float(self._watch(self.axis(ch)).axismode))
+        table.register("AXISERROR", read=lambda ch: float(self.axis(ch).axiserror))
+        table.register("AXISSTATUS", read=lambda ch: float(self.axis(ch).status | self.axis(ch).axiserror))
+        table.register("IDLE", read=lambda ch: float(self._watch(self.axis(ch), moving=True).idle()))
+        table.register("POSTARGET", read=self._postarget)
+        table.register("POSREMAINING", read=self._posremaining)
+        table.register("MOVEBUFFERFREE", read=lambda ch: float(self._watch(self.axis(ch)).buffer_free()))
+        table.register("DAC", read=lambda ch: self._watch(self.axis(ch), moving=True).dac)
+
+    def _validate_axes(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        self.addressed(channels)
+        return False
+
+    def _watch(self, axis: Axis, *, moving: bool = False) -> Axis:
+        """Reading axis state: it may change when the move ends, or every tick while moving."""
+        now = self.clock.now
+        self.clock.changes_at(axis.next_event(now))
+        if moving and (axis.move is not None or axis.settling()):
+            self.clock.changes_at(now + 1)
+        return axis
+
+    def _parameter_reader(self, name: str) -> Callable[[int | None], float]:
+        return lambda channel: self.axis(channel).get(name)
+
+    def _parameter_writer(self, name: str) -> Callable[[int | None, float], None]:
+        def write(channel: int | None, value: float) -> None:
+            self.axis(channel).set(name, value)
+
+        return write
+
+    def _enable(self, channel: int | None, value: float) -> None:
+        axis = self.axis(channel)
+        if value and axis.axiserror:
+            raise MintError(MOTION_ERROR, axis.number, "clear the axis error before enabling the drive")
+        if value and not axis.enabled:
+            axis.resync() if axis.plant.closed_loop else None
+        axis.enabled = bool(value)
+        if not value:
+            axis.crash_stop()
+            axis.disable()
+
+    def _pos(self, channel: int | None) -> float:
+        axis = self._watch(self.axis(channel), moving=True)
+        return (axis.measured - axis.position_offset) / axis.scale
+
+    def _write_pos(self, channel: int | None, value: float) -> None:
+        axis = self.axis(channel)
+        if axis.busy():
+            raise MintError(MOTION_IN_PROGRESS, axis.number, "POS can only be written on an idle axis")
+        axis.position_offset = axis.measured - value * axis.scale
+
+    def _encoder(self, channel: int | None) -> float:
+        axis = self._watch(self.axis(channel), moving=True)
+        return axis.measured - axis.encoder_offset
+
+    def _write_encoder(self, channel: int | None, value: float) -> None:
+        axis = self.axis(channel)
+        axis.encoder_offset = axis.measured - value
+
+    def _vel(self, channel: int | None) -> float:
+        axis = self._watch(self.axis(channel), moving=True)
+        return axis.velocity_counts() / axis.scale
+
+    def _folerror(self, channel: int | None) -> float:
+        axis = self._watch(self.axis(channel), moving=True)
+        return (axis.demand - axis.measured) / axis.scale
+
+    def _postarget(self, channel: int | None) -> float:
+        axis = self.axis(channel)
+        if axis.axismode == MD_JOG:
+            return 0.0
+        return (axis.target - axis.position_offset) / axis.scale
+
+    def _posremaining(self, channel: int | None) -> float:
+        axis = self._watch(self.axis(channel), moving=True)
+        if axis.move is None or not axis.move.buffered:
+            return 0.0
+        return abs(axis.target - axis.demand) / axis.scale

@@ -1,0 +1,103 @@
+"""Axis parameters: defaults, ranges and scaling (spec MP-1..MP-3, the DEFAULT table [000:9008-9058]).
+
+Scaled parameters are stored in encoder counts, so changing ``SCALE`` changes
+what reads back (``SPEED`` of 20000 counts/s reads 200 after ``SCALE = 100``)
+while the motion itself is unchanged (MP-1 RC). Ranges come from the keyword
+database's attributes table for the target controller; a value outside raises
+error 3, as the controller does.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from types import MappingProxyType
+
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Controller
+from mintlang.runtime.errors import MintError
+
+OUT_OF_RANGE = 3
+
+# Servo-axis defaults from the DEFAULT table, in counts (SCALE 1). Where the keyword entry and the
+# table disagree the table wins (HOMESPEED 40000, HOMEINPUT -1, MASTERDISTANCE 1000: spec HM-2, FG-2).
+DEFAULTS: Mapping[str, float] = MappingProxyType(
+    {
+        "ACCEL": 300_000.0,
+        "DECEL": 300_000.0,
+        "ERRORDECEL": 300_000.0,
+        "SPEED": 20_000.0,
+        "SRAMP": 0.0,
+        "SCALE": 1.0,
+        "HOMESPEED": 40_000.0,
+        "HOMEBACKOFF": 10.0,
+        "HOMEINPUT": -1.0,
+        "FOLERRORFATAL": 1000.0,
+        "FOLERRORMODE": 1.0,
+        "IDLEPOS": 1000.0,
+        "IDLEVEL": 0.0,
+        "KPROP": 0.0,
+        "KINT": 0.0,
+        "KINTLIMIT": 100.0,
+        "KINTMODE": 1.0,
+        "KDERIV": 0.0,
+        "KVEL": 0.0,
+        "KVELFF": 0.0,
+        "KACCEL": 0.0,
+        "DACLIMITMAX": 100.0,
+        "SOFTLIMITFORWARD": 8_388_607.0,
+        "SOFTLIMITREVERSE": -8_388_607.0,
+        "SOFTLIMITMODE": 0.0,
+        "LIMITFORWARDINPUT": -1.0,
+        "LIMITREVERSEINPUT": -1.0,
+        "LIMITMODE": 1.0,
+        "ERRORINPUT": -1.0,
+        "ERRORINPUTMODE": 1.0,
+        "STOPINPUT": -1.0,
+        "STOPINPUTMODE": 1.0,
+        "MOVEBUFFERSIZE": 2.0,
+        "CONFIG": 1.0,
+        "DRIVEENABLEOUTPUT": -1.0,
+    }
+)
+SCALED: frozenset[str] = frozenset(
+    {
+        "ACCEL",
+        "DECEL",
+        "ERRORDECEL",
+        "SPEED",
+        "HOMESPEED",
+        "FOLERRORFATAL",
+        "IDLEPOS",
+        "IDLEVEL",
+        "SOFTLIMITFORWARD",
+        "SOFTLIMITREVERSE",
+    }
+)
+GAINS: frozenset[str] = frozenset(
+    {"KPROP", "KINT", "KINTLIMIT", "KINTMODE", "KDERIV", "KVEL", "KVELFF", "KACCEL", "DACLIMITMAX"}
+)
+
+
+@dataclass(frozen=True, slots=True)
+class Bounds:
+    minimum: float | None
+    maximum: float | None
+    exclusive_minimum: bool  # ACCEL: 0.0 < x
+
+
+def bounds(keyword: str, controller: Controller) -> Bounds:
+    """The accepted values of ``keyword`` on ``controller`` (unbounded when the manual gives none)."""
+    record = database().keywords.get(keyword)
+    row = record.attributes_for(controller) if record is not None else None
+    if row is None or row.range is None:
+        return Bounds(None, None, False)
+    return Bounds(row.range.minimum, row.range.maximum, row.range.text.replace(" ", "").startswith("0.0<x"))
+
+
+def check_range(keyword: str, value: float, limits: Bounds, axis: int) -> float:
+    low, high = limits.minimum, limits.maximum
+    too_low = low is not None and (value <= low if limits.exclusive_minimum else value < low)
+    if too_low or (high is not None and value > high):
+        raise MintError(OUT_OF_RANGE, axis, f"{keyword} = {value:g}")
+    return value

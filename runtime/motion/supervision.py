@@ -1,0 +1,88 @@
+"""Asynchronous motion errors: detection every servo tick and the default actions (spec §4).
+
+A condition first shows in ``AXISSTATUS``; unless its mode is "ignore" it is
+latched in ``AXISERROR``, the mode's default action runs at once and
+``#ONERROR`` becomes pending. The modes share one table (``LIMITMODE``'s, as
+the spec recommends for the Advanced-only ones): 0 ignore, 1 crash stop and
+disable, 2 crash stop, 3 ramp down at ``ERRORDECEL``, 5 only call the handler.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from mintlang.runtime.motion.axis import (
+    ER_ERROR_INPUT,
+    ER_FOLLOWING,
+    ER_FWD_HARD,
+    ER_FWD_SOFT,
+    ER_REV_HARD,
+    ER_REV_SOFT,
+    ER_STOP_INPUT,
+    Axis,
+)
+from mintlang.runtime.motion.moves import next_profiler_tick
+
+IGNORE, CRASH_STOP_DISABLE, CRASH_STOP, ERROR_DECEL, CALL_HANDLER = 0, 1, 2, 3, 5
+MODE_OF_ERROR = {
+    ER_FOLLOWING: "FOLERRORMODE",
+    ER_FWD_HARD: "LIMITMODE",
+    ER_REV_HARD: "LIMITMODE",
+    ER_FWD_SOFT: "SOFTLIMITMODE",
+    ER_REV_SOFT: "SOFTLIMITMODE",
+    ER_ERROR_INPUT: "ERRORINPUTMODE",
+}
+
+
+class Supervisor:
+    """Checks each enabled axis once per servo tick and applies the default actions."""
+
+    def __init__(self, is_active: Callable[[int], bool], raise_error: Callable[[Axis], None]) -> None:
+        self.is_active = is_active  # digital input channel -> active now
+        self.raise_error = raise_error  # #ONERROR pending (or the end of the run without a handler)
+
+    def check(self, axis: Axis, tick: int) -> None:
+        p = axis.parameters
+        status = 0
+        velocity = axis.velocity_demand(tick)
+        if axis.enabled and abs(axis.demand - axis.measured) > p["FOLERRORFATAL"]:
+            status |= ER_FOLLOWING
+        forward = int(p["LIMITFORWARDINPUT"])
+        reverse = int(p["LIMITREVERSEINPUT"])
+        if forward >= 0 and self.is_active(forward) and velocity >= 0:
+            status |= ER_FWD_HARD
+        if reverse >= 0 and self.is_active(reverse) and velocity <= 0:
+            status |= ER_REV_HARD
+        position = axis.demand - axis.position_offset
+        if position > p["SOFTLIMITFORWARD"] and velocity > 0:
+            status |= ER_FWD_SOFT
+        if position < p["SOFTLIMITREVERSE"] and velocity < 0:
+            status |= ER_REV_SOFT
+        error_input = int(p["ERRORINPUT"])
+        if error_input >= 0 and self.is_active(error_input):
+            status |= ER_ERROR_INPUT
+        stop_input = int(p["STOPINPUT"])
+        if stop_input >= 0 and self.is_active(stop_input):
+            status |= ER_STOP_INPUT
+        axis.status = status
+        fresh = status & ~axis.axiserror & ~ER_STOP_INPUT
+        bit = 1
+        while fresh:
+            if fresh & 1:
+                self.error(axis, bit, tick)
+            fresh >>= 1
+            bit <<= 1
+
+    def error(self, axis: Axis, bit: int, tick: int) -> None:
+        """Latch ``bit`` unless its mode ignores it, run the default action, make #ONERROR pending."""
+        mode = int(axis.parameters[MODE_OF_ERROR[bit]]) if bit in MODE_OF_ERROR else CRASH_STOP_DISABLE
+        if mode == IGNORE:
+            return
+        axis.latch(bit)
+        if mode in (CRASH_STOP_DISABLE, CRASH_STOP) or (mode == ERROR_DECEL and axis.move is None):
+            axis.crash_stop()
+            if mode == CRASH_STOP_DISABLE:
+                axis.disable()
+        elif mode == ERROR_DECEL:
+            axis.controlled_stop(next_profiler_tick(tick), axis.parameters["ERRORDECEL"])
+        self.raise_error(axis)

@@ -1,0 +1,106 @@
+"""Running an application from source: check, compile, simulate, collect the result.
+
+The controller compiles a program before running it, so a compile-time error
+(3001 undeclared variable, a mismatched block …) stops the run before its
+first statement, with the error where the checker reports it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import mintlang
+from mintlang.diagnostics import Severity
+from mintlang.keyworddb.model import Controller as ControllerName
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.interpreter.expressions import NotSimulated
+from mintlang.runtime.interpreter.vm import StopReason
+from mintlang.runtime.scenario.expectations import Outcome, evaluate
+from mintlang.runtime.scenario.stimulus import Scenario
+from mintlang.runtime.simulation import (
+    AxisState,
+    Controller,
+    Limits,
+    Observation,
+    Simulator,
+    Stop,
+    axis_state,
+    build_controller,
+)
+
+
+@dataclass(frozen=True, slots=True)
+class RunResult:
+    stop: Stop
+    err: float
+    erl: float
+    outputs: int
+    relay: int
+    axes: tuple[AxisState, ...]
+    terminal: str
+    host_replies: tuple[tuple[int, bytes], ...]
+    outcomes: tuple[Outcome, ...]
+
+
+def _not_run(reason: str, message: str, line: int | None, unit: str | None, statement: str | None) -> RunResult:
+    stop = Stop(StopReason.ERROR, 0, unit, line, statement, message)
+    del reason
+    return RunResult(stop, -1.0, 0.0, 0, 0, (), "", (), ())
+
+
+def run_source(
+    source: str,
+    *,
+    config: str | None = None,
+    controller: ControllerName | str = ControllerName.NEXTMOVE_PCI,
+    scenario: Scenario | None = None,
+    limits: Limits | None = None,
+    echo: Callable[[str], None] | None = None,
+    on_tick: Callable[[Controller, int], None] | None = None,
+) -> RunResult:
+    """Run a program (and its configuration file) to the end or a limit; never raises for the program's faults."""
+    scenario = scenario or Scenario()
+    limits = limits or Limits()
+    analysis = mintlang.check_application(source, controller=controller, config=config)
+    for unit, diagnostics, document in (
+        ("configuration", analysis.configuration, analysis.model.configuration),
+        ("program", analysis.program, analysis.model.program),
+    ):
+        for diagnostic in diagnostics:
+            if diagnostic.severity is Severity.ERROR and document is not None:
+                line = document.line_index.position(diagnostic.span.start).line + 1
+                text = document.source[diagnostic.span.start : diagnostic.span.end]
+                message = f"C{diagnostic.mint_error or 0:04d}: {unit.upper()} {diagnostic.message} [line {line}]"
+                return _not_run("compile", message, line, unit, text)
+    try:
+        built = build_controller(analysis.model, scenario, limits, echo)
+    except NotSimulated as missing:
+        return _not_run("unsupported", str(missing), None, None, None)
+    except MintError as error:
+        return _not_run("compile", error.describe(), None, None, None)
+    simulator = Simulator(built, limits)
+    outcomes: list[Outcome] = []
+    end_expectations = []
+    for expectation in scenario.expectations:
+        at = expectation.at_ms
+        if at is None:
+            end_expectations.append(expectation)
+        else:
+            simulator.at(at, lambda expectation=expectation: outcomes.append(evaluate(expectation, Observation(built))))
+    if on_tick is not None:
+        simulator.on_tick = lambda tick: on_tick(built, tick)
+    stop = simulator.run()
+    final = Observation(built, stop.reason.value)
+    outcomes.extend(evaluate(expectation, final) for expectation in end_expectations)
+    return RunResult(
+        stop,
+        built.vm.err,
+        built.vm.erl,
+        built.io.out,
+        built.io.relay,
+        tuple(axis_state(axis) for axis in built.axes),
+        built.terminal.text,
+        tuple(built.world.host_replies),
+        tuple(outcomes),
+    )

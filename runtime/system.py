@@ -1,0 +1,125 @@
+"""Controller-wide keywords: time, error state, terminal, node, comms array, fast latches."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from mintlang.runtime.clock import Clock
+from mintlang.runtime.comms.array import CommsArray, system_element
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.interpreter.vm import Interpreter
+from mintlang.runtime.keywords import Channels, KeywordTable, per_channel
+from mintlang.runtime.motion.axis import Axis
+from mintlang.runtime.terminal import Terminal
+
+TIME_LIMIT = 16_777_216  # TIME wraps after 16777215 (T-7 RC)
+DEFAULT_NODE = 2
+
+
+class System:
+    def __init__(
+        self, clock: Clock, vm: Interpreter, terminal: Terminal, axes: Sequence[Axis], table: KeywordTable
+    ) -> None:
+        self.clock = clock
+        self.vm = vm
+        self.terminal = terminal
+        self.axes = axes
+        self.table = table
+        self.time_origin = 0
+        self.node = DEFAULT_NODE
+        self.comms = CommsArray(self._system_read, self._system_write)
+        self.fast_positions: list[float] = [0.0] * len(axes)  # FASTPOS per axis, counts
+        self.fast_encoders: list[float] = [0.0] * len(axes)
+        self.fast_armed = True
+
+    def time(self) -> int:
+        return (self.clock.now - self.time_origin) % TIME_LIMIT
+
+    def register(self, table: KeywordTable) -> None:
+        clock = self.clock
+        vm = self.vm
+
+        def read_time(_: int | None) -> float:
+            clock.changes_next_tick()
+            return float(self.time())
+
+        def write_time(_: int | None, value: float) -> None:
+            self.time_origin = clock.now - int(value)
+
+        table.register("TIME", read=read_time, write=per_channel(write_time))
+        table.register("ERR", read=lambda _: vm.err)
+        table.register("ERL", read=lambda _: vm.erl)
+        table.register("ERRAXIS", read=lambda _: vm.erraxis)
+        table.register("INKEY", read=lambda _: float(self.terminal.inkey()))
+        table.register("CLS", command=self._cls)
+        table.register("BEEP", command=self._beep)
+        table.register("LOCATE", command=self._locate)
+        table.register("NODE", read=lambda _: float(self.node), write=per_channel(self._write_node))
+        table.register("COMMS", read=lambda channel: self.comms.read(channel or 0), write=self._write_comms)
+        table.register("FASTPOS", read=self._fastpos)
+        table.register("FASTENCODER", read=lambda channel: self.fast_encoders[self._axis(channel)])
+
+    def _cls(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        self.terminal.cls()
+        return False
+
+    def _beep(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        self.terminal.beep()
+        return False
+
+    def _locate(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        if len(arguments) != 2:
+            raise MintError(2001, detail="LOCATE needs a column and a row")
+        self.terminal.locate(int(arguments[0]), int(arguments[1]))
+        return False
+
+    def _write_node(self, _: int | None, value: float) -> None:
+        if not 0 <= value <= 15:
+            raise MintError(3, detail="NODE takes 0 to 15 here")
+        self.node = int(value)
+
+    def _write_comms(self, channels: Channels | None, values: tuple[float | None, ...]) -> bool:
+        address = channels[0] if channels else 0
+        for offset, value in enumerate(values):
+            if value is not None:
+                self.comms.write(address + offset, value, external=False)
+        return False
+
+    def _axis(self, channel: int | None) -> int:
+        number = channel or 0
+        if not 0 <= number < len(self.axes):
+            raise MintError(2, number)
+        return number
+
+    def _fastpos(self, channel: int | None) -> float:
+        number = self._axis(channel)
+        axis = self.axes[number]
+        return (self.fast_positions[number] - axis.position_offset) / axis.scale
+
+    def latch_fast_input(self) -> bool:
+        """A fast input fired: latch every axis unless the last latch is still being handled (EV-9 RC)."""
+        if not self.fast_armed:
+            return False
+        for number, axis in enumerate(self.axes):
+            self.fast_positions[number] = float(axis.measured)
+            self.fast_encoders[number] = axis.measured - axis.encoder_offset
+        return True
+
+    def _system_read(self, address: int) -> float | None:
+        element = system_element(address)
+        if element is None:
+            return None
+        access = self.table.get(element.keyword)
+        if access is None or access.read is None:
+            return None
+        return access.read(element.channel)
+
+    def _system_write(self, address: int, value: float) -> bool:
+        element = system_element(address)
+        if element is None or not element.writable:
+            return False
+        access = self.table.get(element.keyword)
+        if access is None or access.write is None:
+            return False
+        access.write((element.channel,) if element.channel is not None else None, (value,))
+        return True

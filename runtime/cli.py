@@ -27,7 +27,6 @@ from mintlang.runtime.scenario import (
     all_held,
     load_scenario,
     merge,
-    parse_directives,
     render_outcomes,
 )
 from mintlang.runtime.scenario.stimulus import Scenario
@@ -38,10 +37,6 @@ from mintlang.source import read_source
 _USAGE_ERROR = 2
 _FAILED = 1
 _PROGRESS_AFTER_MS = 10_000  # runs shorter than this in simulated time finish too fast for a bar
-
-
-class _Usage(Exception):
-    pass
 
 
 def _axes_list(text: str | None) -> tuple[int, ...] | None:
@@ -123,11 +118,8 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     try:
         source = read_source(program).text
         config = read_source(config_path).text if config_path is not None else None
-        scenario = _scenario(source, (*stimulus_paths, *expect_paths))
+        scenario = _scenario((*stimulus_paths, *expect_paths))
     except ScenarioFileError as error:
-        click.echo(f"mint-run: {error}", err=True)
-        sys.exit(_USAGE_ERROR)
-    except _Usage as error:
         click.echo(f"mint-run: {error}", err=True)
         sys.exit(_USAGE_ERROR)
     except OSError as error:
@@ -140,16 +132,20 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     axes = _axes_list(trace_axes)
     trace = Trace(axes) if tracing and axes is not None else None
     recorders = _Recorders(trace, tracing, errors, until_ms)
-    with recorders.progress:
-        result = run_source(
-            source,
-            config=config,
-            controller=ControllerName(controller),
-            scenario=scenario,
-            limits=limits,
-            echo=_echo,
-            on_tick=recorders.on_tick,
-        )
+    try:
+        with recorders.progress:
+            result = run_source(
+                source,
+                config=config,
+                controller=ControllerName(controller),
+                scenario=scenario,
+                limits=limits,
+                echo=_echo,
+                on_tick=recorders.on_tick,
+            )
+    except ScenarioFileError as error:
+        click.echo(f"mint-run: {error}", err=True)
+        sys.exit(_USAGE_ERROR)
     sys.stdout.flush()
     try:
         _outputs(result, recorders.trace, trace_path, plot_path)
@@ -173,10 +169,8 @@ def _echo(text: str) -> None:
     sys.stdout.write(text)
 
 
-def _scenario(source: str, paths: tuple[Path, ...]) -> Scenario:
-    scenario, problems = parse_directives(source)
-    if problems:
-        raise _Usage("; ".join(str(problem) for problem in problems))
+def _scenario(paths: tuple[Path, ...]) -> Scenario:
+    scenario = Scenario()
     for path in paths:
         scenario = merge(scenario, load_scenario(path))
     return scenario

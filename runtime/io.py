@@ -74,9 +74,16 @@ class DigitalIO:
     def is_active(self, channel: int) -> bool:
         return bool(self.active >> channel & 1)
 
-    def level_trigger_pending(self) -> bool:
-        """Some level-triggered input with a handler is active, so events arrive every tick."""
-        return bool(self.active & ~self.edge_mode)
+    def raises_every_tick(self) -> bool:
+        """A level-triggered input with a handler is active, so its event arrives on every tick."""
+        level = self.active & ~self.edge_mode & self.events.imask
+        number = 0
+        while level:
+            if level & 1 and self.events.has_handler(EventClass.INPUT, number):
+                return True
+            level >>= 1
+            number += 1
+        return False
 
     # --------------------------------------------------------------- keywords
 

@@ -16,6 +16,7 @@ from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.interpreter.expressions import NotSimulated
 from mintlang.runtime.interpreter.vm import StopReason
+from mintlang.runtime.scenario import ScenarioFileError, merge, parse_directives
 from mintlang.runtime.scenario.expectations import Outcome, evaluate
 from mintlang.runtime.scenario.stimulus import Scenario
 from mintlang.runtime.simulation import (
@@ -59,8 +60,15 @@ def run_source(
     echo: Callable[[str], None] | None = None,
     on_tick: Callable[[Controller, int], None] | None = None,
 ) -> RunResult:
-    """Run a program (and its configuration file) to the end or a limit; never raises for the program's faults."""
-    scenario = scenario or Scenario()
+    """Run a program (and its configuration file) to the end or a limit; never raises for the program's faults.
+
+    The program's own ``REM @sim`` directives are merged under ``scenario``; a
+    directive that cannot be read raises ``ScenarioFileError`` before anything runs.
+    """
+    directives, problems = parse_directives(source)
+    if problems:
+        raise ScenarioFileError(problems)
+    scenario = merge(directives, scenario) if scenario is not None else directives
     limits = limits or Limits()
     analysis = mintlang.check_application(source, controller=controller, config=config)
     for unit, diagnostics, document in (
@@ -69,7 +77,7 @@ def run_source(
     ):
         for diagnostic in diagnostics:
             if diagnostic.severity is Severity.ERROR and document is not None:
-                line = document.line_index.position(diagnostic.span.start).line + 1
+                line = document.line_index.position(diagnostic.span.start).line
                 text = document.source[diagnostic.span.start : diagnostic.span.end]
                 message = f"C{diagnostic.mint_error or 0:04d}: {unit.upper()} {diagnostic.message} [line {line}]"
                 return _not_run("compile", message, line, unit, text)

@@ -156,13 +156,8 @@ def build_controller(
     vm.on_fatal = abort_all
     events.errors_latched = lambda: any(axis.axiserror for axis in axes)
 
-    def fast_input(channel: int) -> None:
-        if system.latch_fast_input() and events.has_handler(EventClass.FASTIN, channel):
-            system.fast_armed = False
-            events.raise_event(EventClass.FASTIN, channel)
-
     events.on_fastin_return = lambda number: setattr(system, "fast_armed", True)
-    world = World(scenario, io=io, axes=axes, terminal=terminal, host=endpoint.receive, fast_input=fast_input)
+    world = World(scenario, io=io, axes=axes, terminal=terminal, host=endpoint.receive)
     io.next_input_change = lambda: world.next_change(clock.now)
     server = HostPortServer(limits.host_port) if limits.host_port is not None else None
     return Controller(
@@ -192,6 +187,9 @@ class Simulator:
                 axis.profiler(t, c.motion.start_group)
         for axis in c.axes:
             axis.servo_tick(t)
+        for channel in c.world.fast_inputs_due:
+            self.fast_input(channel)
+        c.world.fast_inputs_due.clear()
         for axis in c.axes:
             if axis.enabled or axis.parameters["STOPINPUT"] >= 0:
                 c.supervisor.check(axis, t)
@@ -205,13 +203,18 @@ class Simulator:
         for callback in self.checkpoints.pop(t, ()):
             callback()
 
-    def next_tick(self, t: int) -> int:
+    def fast_input(self, channel: int) -> None:
+        """A fast input fired: latch the positions just measured and call its handler (EV-9)."""
+        c = self.c
+        if c.system.latch_fast_input() and c.events.has_handler(EventClass.FASTIN, channel):
+            c.system.fast_armed = False
+            c.events.raise_event(EventClass.FASTIN, channel)
+
+    def next_change(self, t: int) -> int:
         """The next tick at which anything can change (``NEVER`` when nothing ever will)."""
         c = self.c
         vm = c.vm
-        if self.limits.every_tick or c.server is not None or c.events.pending:
-            return t + 1
-        if not vm.blocked:
+        if c.server is not None or c.events.pending or not vm.blocked or c.io.raises_every_tick():
             return t + 1
         candidates = [vm.wake_at, c.world.next_change(t), c.events.next_timer]
         candidates.extend(axis.next_event(t) for axis in c.axes)
@@ -234,10 +237,12 @@ class Simulator:
                     self.on_tick(t)
                 if vm.stopped is not None:
                     break
-                following = self.next_tick(t)
+                following = self.next_change(t)
                 if following >= NEVER:
                     vm.stop(StopReason.DEADLOCK, "blocked, and nothing scheduled or moving can ever wake the program")
                     break
+                if limits.every_tick:
+                    following = t + 1
                 if following > until:
                     c.clock.now = until
                     vm.stop(StopReason.UNTIL, f"reached --until-ms {until}")

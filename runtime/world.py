@@ -29,13 +29,12 @@ class World:
         axes: Sequence[Axis],
         terminal: Terminal,
         host: Callable[[bytes], bytes],
-        fast_input: Callable[[int], None],
     ) -> None:
         self.io = io
         self.axes = axes
         self.terminal = terminal
         self.host = host
-        self.fast_input = fast_input
+        self.fast_inputs_due: list[int] = []  # fast inputs fired this tick; latched after the servo loop (T-6 RC)
         self.position_inputs = scenario.position_inputs
         self.watched_axes = tuple(sorted({record.axis for record in scenario.position_inputs}))
         timed: list[tuple[int, int, Callable[[], None]]] = []
@@ -97,7 +96,7 @@ class World:
         return lambda: self.terminal.type_keys(text)
 
     def _fast(self, channel: int) -> Callable[[], None]:
-        return lambda: self.fast_input(channel)
+        return lambda: self.fast_inputs_due.append(channel)
 
     def _packet(self, data: bytes) -> Callable[[], None]:
         def apply() -> None:

@@ -102,6 +102,7 @@ class Interpreter:
         self.erraxis = -1.0
         self.on_fatal: Callable[[], None] = lambda: None  # an unhandled error aborts every axis
         self.events: EventSource | None = None
+        self.executing: int | None = None  # the pc of the operation running now, outside a slice None
 
     # ------------------------------------------------------------------ running
 
@@ -120,6 +121,7 @@ class Interpreter:
                 self._finish()
                 return
             self.pc = pc + 1
+            self.executing = pc
             try:
                 if operations[pc]():
                     self.pc = pc
@@ -127,11 +129,15 @@ class Interpreter:
                     return
             except MintError as error:
                 self.fail(error, pc)
+            finally:
+                self.executing = None
             budget -= 1
 
     def current_site(self) -> Site | None:
+        """The statement running now, or between slices the one the program continues with."""
         sites = self.sites
-        return sites[self.pc] if self.pc < len(sites) else (sites[-1] if sites else None)
+        pc = self.executing if self.executing is not None else self.pc
+        return sites[pc] if pc < len(sites) else (sites[-1] if sites else None)
 
     def stop(self, reason: StopReason, message: str = "") -> None:
         if self.stopped is None:

@@ -1,0 +1,131 @@
+"""Event handlers run when and in the order a NextMove runs them (spec §7)."""
+
+from __future__ import annotations
+
+from mintlang.runtime.comms.packets import ACK, encode_write
+from mintlang.runtime.interpreter.vm import StopReason
+from mintlang.runtime.scenario.stimulus import HostPacket, Scenario
+from tests.runtime.running import simulate
+
+
+def test_the_timer_event_runs_every_timerevent_milliseconds() -> None:
+    source = """DIM ticks = 0
+TIMEREVENT = 100
+WAIT = 1050
+PRINT ticks
+END
+#TIMER
+ticks = ticks + 1
+RETURN
+"""
+    assert simulate(source).terminal == "10\n"
+
+
+def test_timerevent_below_ten_is_rounded_up_and_odd_values_to_even() -> None:
+    assert simulate("TIMEREVENT = 3\nPRINT TIMEREVENT\nTIMEREVENT = 25\nPRINT TIMEREVENT\n").terminal == "10\n26\n"
+
+
+def test_a_level_input_calls_its_handler_while_active_and_an_edge_input_once() -> None:
+    source = """REM @sim input 1 1 at 100
+REM @sim input 1 0 at 105
+REM @sim input 2 1 at 100
+REM @sim input 2 0 at 105
+DIM level = 0
+DIM edge = 0
+INPUTMODE = 4
+WAIT = 200
+PRINT level, " ", edge
+END
+#IN1
+level = level + 1
+RETURN
+#IN2
+edge = edge + 1
+RETURN
+"""
+    assert simulate(source).terminal == "5 1\n"
+
+
+def test_eventdisable_keeps_the_event_pending_until_enabled() -> None:
+    source = """REM @sim input 3 1 at 10
+REM @sim input 3 0 at 12
+INPUTMODE = 8
+EVENTDISABLE = 128
+WAIT = 50
+PRINT "pending ", EVENTPENDING
+EVENTDISABLE = 0
+WAIT = 2
+PRINT "after ", EVENTPENDING
+END
+#IN3
+PRINT "handled"
+RETURN
+"""
+    assert simulate(source).terminal == "pending 128\nhandled\nafter 0\n"
+
+
+def test_an_error_handler_preempts_a_lower_handler() -> None:
+    source = """REM @sim input 0 1 at 10
+REM @sim input 0 0 at 12
+INPUTMODE = 1
+WAIT = 100
+END
+#IN0
+PRINT "in0 start"
+DIM zero = 0
+zero = 1 / zero
+PRINT "in0 end"
+RETURN
+#ONERROR
+PRINT "error ", ERR
+RETURN
+"""
+    assert simulate(source).terminal == "in0 start\nerror 2021\nin0 end\n"
+
+
+def test_events_interrupt_a_wait_without_extending_it() -> None:
+    source = """REM @sim input 4 1 at 100
+REM @sim input 4 0 at 102
+INPUTMODE = 16
+WAIT = 300
+PRINT "woke at ", TIME
+END
+#IN4
+PRINT "event at ", TIME
+RETURN
+"""
+    assert simulate(source).terminal == "event at 100\nwoke at 300\n"
+
+
+def test_a_host_write_to_comms_1_to_5_calls_its_comms_handler() -> None:
+    packet = HostPacket(200, encode_write(2, 3, [42]))
+    source = """PAUSE COMMS(3) = 42
+PRINT "seen at ", TIME
+WAIT = 10
+END
+#COMMS3
+PRINT "event ", COMMS(3)
+RETURN
+"""
+    result = simulate(source, scenario=Scenario(host_packets=(packet,)))
+    assert result.terminal == "event 42\nseen at 200\n"
+    assert result.host_replies == ((200, ACK),)
+
+
+def test_a_program_write_to_comms_does_not_call_the_handler() -> None:
+    source = 'COMMS(2) = 5\nWAIT = 10\nPRINT COMMS(2)\nEND\n#COMMS2\nPRINT "never"\nRETURN\n'
+    assert simulate(source).terminal == "5\n"
+
+
+def test_the_fast_input_latches_positions_for_its_handler() -> None:
+    source = """REM @sim fastin 0 at 150
+JOG.0 = 1000
+WAIT = 300
+END
+#FASTIN0
+PRINT FASTPOS.0
+RETURN
+"""
+    result = simulate(source)
+    assert result.stop.reason is StopReason.END
+    assert 140 <= float(result.terminal) <= 150

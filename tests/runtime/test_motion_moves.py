@@ -1,0 +1,101 @@
+"""Positional moves, vectors and jogs follow the manual's profile, buffer and GO rules (spec §3)."""
+
+from __future__ import annotations
+
+import math
+
+from mintlang.runtime.interpreter.vm import StopReason
+from tests.runtime.running import simulate
+
+
+def trapezoid_ms(distance: float, speed: float, accel: float, decel: float) -> float:
+    """The closed form of MP-8, in milliseconds."""
+    ramps = speed * speed / (2 * accel) + speed * speed / (2 * decel)
+    if distance >= ramps:
+        return 1000 * (speed / accel + speed / decel + (distance - ramps) / speed)
+    peak = math.sqrt(2 * distance * accel * decel / (accel + decel))
+    return 1000 * (peak / accel + peak / decel)
+
+
+def test_a_move_starts_on_the_next_profiler_tick_and_ends_on_the_first_one_after_its_duration() -> None:
+    # RTM: GO at t=0 starts at 2 ms; the move is over at the first profiler tick with tau >= T
+    result = simulate('MOVER.0 = 4000 : GO.0\nPAUSE IDLE.0\nPRINT TIME, " ", POS.0\n')
+    duration = trapezoid_ms(4000, 20000, 300000, 300000)
+    end = 2 + 2 * math.ceil(duration / 2)
+    assert result.terminal == f"{end} 4000\n"
+
+
+def test_separate_accel_and_decel_shape_a_triangle_when_the_move_is_short() -> None:
+    source = "ACCEL.0 = 100000 : DECEL.0 = 400000\nMOVER.0 = 500 : GO.0\nPAUSE IDLE.0\nPRINT TIME\n"
+    end = 2 + 2 * math.ceil(trapezoid_ms(500, 20000, 100000, 400000) / 2)
+    assert simulate(source).terminal == f"{end}\n"
+
+
+def test_relative_moves_are_relative_to_the_last_target() -> None:
+    # [000:15247-15255] and [000:3112-3117]
+    source = "MOVEA.0 = 100 : GO.0\nPRINT POSTARGET.0\nMOVER.0 = 50 : GO.0\nPRINT POSTARGET.0\n"
+    source += "PAUSE IDLE.0\nPRINT POS.0\n"
+    assert simulate(source).terminal == "100\n150\n150\n"
+
+
+def test_one_move_in_a_buffer_of_two_leaves_one_free() -> None:
+    # [000:2978-2984]
+    assert simulate("MOVER.0 = 100\nPRINT MOVEBUFFERFREE.0\n").terminal == "1\n"
+
+
+def test_a_vector_ends_every_axis_on_its_target_together() -> None:
+    source = 'VECTORA[0,1] = 300, 400 : GO[0,1]\nPAUSE IDLE[0,1]\nPRINT POS.0, " ", POS.1, " ", TIME\n'
+    end = 2 + 2 * math.ceil(trapezoid_ms(500, 20000, 300000, 300000) / 2)
+    assert simulate(source).terminal == f"300 400 {end}\n"
+
+
+def test_vector_targets_follow_the_manuals_example() -> None:
+    # [000:17055-17060]
+    source = "VECTORA[1,2] = 100, 100 : GO[1,2]\nVECTORR[1,2] = 100, 200 : GO[1,2]\n"
+    source += 'PAUSE IDLE[1,2]\nPRINT POS.1, " ", POS.2\n'
+    assert simulate(source).terminal == "200 300\n"
+
+
+def test_scale_converts_user_units_to_counts() -> None:
+    # [000:2801-2806]: SCALE = 100 : SPEED = 10 is 1000 counts/s
+    source = "SCALE.0 = 100 : SPEED.0 = 10\nMOVER.0 = 2 : GO.0\n"
+    source += 'PAUSE IDLE.0\nPRINT POS.0, " ", ENCODER.0, " ", SPEED.0\n'
+    assert simulate(source).terminal == "2 200 10\n"
+
+
+def test_jog_runs_until_stopped_and_stop_decelerates_at_decel() -> None:
+    source = """JOG.0 = 1000
+WAIT = 500
+PRINT AXISMODE.0, " ", VEL.0
+STOP.0
+PAUSE IDLE.0
+PRINT AXISMODE.0
+"""
+    result = simulate(source)
+    assert result.terminal == "4 1000\n0\n"
+    assert 480 <= result.axes[0].pos <= 500
+
+
+def test_a_move_on_a_disabled_drive_is_error_40() -> None:
+    result = simulate("MOVER.0 = 10\n", enable=False)
+    assert (result.stop.reason, result.err) == (StopReason.ERROR, 40)
+
+
+def test_go_on_a_jogging_axis_is_motion_in_progress() -> None:
+    # [000:11119-11128], kept in the corpus as a run-time-only error
+    source = "AXES[0,1]\nJOG[1] = 100\nMA = 10 : GO\n"
+    result = simulate(source)
+    assert (result.err, result.erl) == (10, 3)
+
+
+def test_speed_written_during_a_move_changes_the_move_in_progress() -> None:
+    slow = simulate("MOVER.0 = 4000 : GO.0\nPAUSE IDLE.0\nPRINT TIME\n").terminal
+    fast = simulate('MOVER.0 = 4000 : GO.0\nWAIT = 50\nSPEED.0 = 40000\nPAUSE IDLE.0\nPRINT TIME, " ", POS.0\n')
+    finished, position = fast.terminal.split()
+    assert int(finished) < int(slow)
+    assert position == "4000"
+
+
+def test_cancel_stops_at_once_and_reset_zeroes_the_position() -> None:
+    source = 'JOG.0 = 2000\nWAIT = 100\nCANCEL.0\nWAIT = 10\nPRINT VEL.0, " ", FOLERROR.0\nRESET.0\nPRINT POS.0\n'
+    assert simulate(source).terminal == "0 0\n0\n"

@@ -1,0 +1,173 @@
+"""The interpreter runs Mint's statements and blocks as the v4 guide describes them."""
+
+from __future__ import annotations
+
+import pytest
+
+from mintlang.runtime.interpreter.vm import StopReason
+from tests.runtime.running import simulate
+
+
+def printed(source: str, **options: object) -> str:
+    result = simulate(source, **options)  # type: ignore[arg-type]
+    assert result.stop.reason is StopReason.END, result.stop
+    return result.terminal
+
+
+def test_a_for_loop_leaves_its_variable_at_the_upper_limit() -> None:
+    # NM-9: unlike BASIC, the variable equals the limit when the loop ends
+    assert printed("DIM a\nFOR a = 1 TO 5\nNEXT\nPRINT a\n") == "5\n"
+
+
+def test_a_for_loop_whose_start_is_past_its_limit_never_runs_its_body() -> None:
+    assert printed('DIM a\nFOR a = 7 TO 5\nPRINT "body"\nNEXT\nPRINT a\n') == "7\n"
+
+
+def test_a_for_loop_counts_down_with_a_negative_step() -> None:
+    assert printed("DIM a\nFOR a = 3 TO 1 STEP -1\nPRINT a;\nNEXT\nPRINT\n") == "3       2       1       \n"
+
+
+def test_nested_loops_and_exit_leave_only_the_innermost_loop() -> None:
+    source = """DIM i
+DIM j
+FOR i = 1 TO 3
+  LOOP
+    j = j + 1
+    IF j > 5 THEN EXIT
+  ENDL
+NEXT
+PRINT i, " ", j
+"""
+    assert printed(source) == "3 8\n"
+
+
+def test_repeat_runs_at_least_once_and_while_may_never_run() -> None:
+    source = """DIM n = 10
+REPEAT
+  n = n + 1
+UNTIL n > 0
+WHILE n < 0
+  n = 0
+ENDW
+PRINT n
+"""
+    assert printed(source) == "11\n"
+
+
+def test_if_do_else_takes_one_branch() -> None:
+    source = """DIM x = 2
+IF x = 1 DO
+  PRINT "one"
+ELSE
+  PRINT "not one"
+ENDIF
+IF x = 2 THEN PRINT "two" : PRINT "still two"
+IF x = 3 THEN PRINT "three" : PRINT "never"
+"""
+    assert printed(source) == "not one\ntwo\nstill two\n"
+
+
+def test_gosub_returns_after_the_call_and_goto_jumps() -> None:
+    source = """GOSUB greet
+GOTO finish
+PRINT "skipped"
+#finish
+PRINT "end"
+END
+#greet
+PRINT "hello"
+RETURN
+"""
+    assert printed(source) == "hello\nend\n"
+
+
+def test_arrays_are_one_based_and_filled_from_their_dim() -> None:
+    source = "DIM table(4) = 1, 2;\nPRINT table(1), table(2), table(3), table(4)\n"
+    assert printed(source) == "1222\n"
+
+
+def test_an_index_outside_the_array_is_error_2016_on_its_line() -> None:
+    result = simulate("DIM table(3)\nDIM i = 4\nDIM x\nx = table(i)\n")
+    assert (result.stop.reason, result.err, result.erl) == (StopReason.ERROR, 2016, 4)
+    assert "R2016" in result.stop.message and "[line 4]" in result.stop.message
+
+
+def test_the_configuration_runs_first_and_its_end_moves_on_to_the_program() -> None:
+    config = 'DIM shared = 7\nPRINT "config"\nEND\nPRINT "never"\n'
+    assert printed('PRINT "program ", shared\n', config=config) == "config\nprogram 7\n"
+
+
+def test_recursion_beyond_the_gosub_limit_is_a_stack_overflow() -> None:
+    result = simulate("#down\nGOSUB down\n")
+    assert (result.stop.reason, result.err) == (StopReason.ERROR, 2015)
+
+
+def test_a_return_without_gosub_is_error_2010() -> None:
+    result = simulate('PRINT "x"\nRETURN\n')
+    assert (result.err, result.erl) == (2010, 2)
+
+
+def test_onerror_sees_err_erl_and_resumes_after_the_failing_statement() -> None:
+    source = """DIM a = 0
+a = 1 / a
+PRINT "resumed"
+END
+#ONERROR
+PRINT "error ", ERR, " on line ", ERL
+RETURN
+"""
+    assert printed(source) == "error 2021 on line 2\nresumed\n"
+
+
+def test_an_error_in_a_keyword_names_its_axis_in_erraxis() -> None:
+    # the manual's example: MOVER.8 = 20 on a 4-axis controller gives ERR 2, ERRAXIS 8 [000:9949-9956]
+    source = 'DIM a\na = 8\nMOVER.a = 20\nEND\n#ONERROR\nPRINT ERR, " ", ERL, " ", ERRAXIS\nRETURN\n'
+    assert printed(source, controller="nextmove-bx") == "2 3 8\n"
+
+
+def test_a_compile_error_stops_the_run_before_the_first_statement() -> None:
+    result = simulate('PRINT "never"\nx = 1\n')
+    assert result.stop.reason is StopReason.ERROR
+    assert result.terminal == ""
+    assert result.stop.message.startswith("C3001") and result.stop.line == 2
+
+
+def test_wait_suspends_for_its_milliseconds() -> None:
+    assert printed("PRINT TIME\nWAIT = 250\nPRINT TIME\n") == "0\n250\n"
+
+
+def test_input_reads_a_typed_number_and_inkey_a_key() -> None:
+    source = """REM @sim key "42\\r" at 100
+REM @sim key "q" at 300
+DIM n
+INPUT "n? ", n
+PRINT n * 2
+PAUSE INKEY = 'Q'
+PRINT "quit at ", TIME
+"""
+    assert printed(source) == "n? 42\n84\nquit at 300\n"
+
+
+def test_a_program_blocked_for_ever_is_a_deadlock() -> None:
+    # three moves into a two-move buffer and no GO: the third waits for ever [000:2962-2969]
+    result = simulate('MOVER.0 = 10\nMOVER.0 = 10\nMOVER.0 = 10\nPRINT "never"\n')
+    assert (result.stop.reason, result.stop.line) == (StopReason.DEADLOCK, 3)
+
+
+def test_a_busy_loop_stops_at_until_ms_and_says_where() -> None:
+    result = simulate("DIM n\nLOOP\n  n = n + 1\nENDL\n", until_ms=50)
+    assert result.stop.reason is StopReason.UNTIL and result.stop.time_ms == 50
+    assert result.stop.line in (3, 4)
+
+
+@pytest.mark.parametrize(
+    ("statement", "shown"),
+    [
+        ("PRINT 1 + 0.555", "1.555"),
+        ("PRINT HEX 74", "4A"),
+        ("PRINT BIN 27", "11011"),
+        ("PRINT -123.5 USING -5, 1", "-00123.5"),
+    ],
+)
+def test_print_formats_numbers_as_the_manual_shows(statement: str, shown: str) -> None:
+    assert printed(statement + "\n") == shown + "\n"

@@ -214,7 +214,7 @@ class Simulator:
         """The next tick at which anything can change (``NEVER`` when nothing ever will)."""
         c = self.c
         vm = c.vm
-        if c.server is not None or c.events.pending or not vm.blocked or c.io.raises_every_tick():
+        if vm.progressed or not vm.blocked or c.events.pending or c.server is not None or c.io.raises_every_tick():
             return t + 1
         candidates = [vm.wake_at, c.world.next_change(t), c.events.next_timer]
         candidates.extend(axis.next_event(t) for axis in c.axes)

@@ -93,6 +93,7 @@ class Interpreter:
         self.default_axes: tuple[int, ...] = (0,)
         self.waits: dict[tuple[int, int], int] = {}  # (frame depth, pc) -> tick a WAIT ends
         self.blocked = False
+        self.progressed = False  # the last slice completed a statement: anything may have changed
         self.wake_at = NEVER  # while blocked: the earliest tick the blocking statement may pass
         self.stopped: StopReason | None = None
         self.stop_site: Site | None = None
@@ -112,6 +113,7 @@ class Interpreter:
         count = len(operations)
         budget = self.slice_statements
         self.blocked = False
+        self.progressed = False
         events = self.events
         while budget > 0 and self.stopped is None:
             if events is not None and events.pending:
@@ -131,6 +133,7 @@ class Interpreter:
                 self.fail(error, pc)
             finally:
                 self.executing = None
+            self.progressed = True
             budget -= 1
 
     def current_site(self) -> Site | None:

@@ -1,0 +1,112 @@
+"""Asynchronous motion errors: detection, default actions, #ONERROR and recovery (spec §4, EV-13..EV-19)."""
+
+from __future__ import annotations
+
+from mintlang.runtime.interpreter.vm import StopReason
+from mintlang.runtime.scenario.stimulus import PlantChoice, Scenario
+from tests.runtime.running import simulate
+
+TUNED = "KPROP.0 = 0.5 : KDERIV.0 = 6 : KVELFF.0 = 0.2 : KACCEL.0 = 20\n"
+
+
+def torque_plant() -> Scenario:
+    return Scenario(plants=(PlantChoice(0, "torque"),))
+
+
+def test_a_tuned_torque_plant_follows_a_move_to_its_target() -> None:
+    result = simulate(TUNED + "MOVER.0 = 4000 : GO.0\nPAUSE IDLE.0\nWAIT = 200\n", scenario=torque_plant())
+    assert result.stop.reason is StopReason.END
+    assert abs(result.axes[0].pos - 4000) <= 2
+    assert result.axes[0].axiserror == 0
+
+
+def test_a_saturated_dac_trips_the_following_error_and_disables_the_drive() -> None:
+    source = TUNED + "DACLIMITMAX.0 = 1\nMOVER.0 = 40000 : GO.0\nPAUSE IDLE.0\n"
+    result = simulate(source, scenario=torque_plant())
+    assert result.stop.reason is StopReason.ERROR
+    assert result.stop.message.startswith("R0500")
+    axis = result.axes[0]
+    assert axis.axiserror & 32 and not axis.enabled
+
+
+def test_onerror_reads_err_500_and_the_axis_and_cancel_clears_the_error() -> None:
+    source = (
+        TUNED
+        + """DACLIMITMAX.0 = 1
+MOVER.0 = 40000 : GO.0
+PAUSE IDLE.0
+PRINT "after ", AXISERROR.0, " ", DRIVEENABLE.0
+END
+#ONERROR
+PRINT ERR, " axis ", ERRAXIS, " bits ", AXISERROR.0
+CANCEL.0
+RETURN
+"""
+    )
+    result = simulate(source, scenario=torque_plant())
+    assert result.terminal == "500 axis 0 bits 32\nafter 0 0\n"
+
+
+def test_a_forward_limit_switch_crash_stops_and_disables_by_default() -> None:
+    source = """REM @sim input 6 when enc 0 >= 1000
+LIMITFORWARDINPUT.0 = 6
+MOVER.0 = 5000 : GO.0
+PAUSE IDLE.0
+"""
+    result = simulate(source)
+    assert result.stop.reason is StopReason.ERROR
+    axis = result.axes[0]
+    assert axis.axiserror & 2 and not axis.enabled
+    assert 1000 <= axis.pos < 1100
+    assert result.stop.message.startswith("R0500")
+
+
+def test_limitmode_ignore_only_shows_the_switch_in_axisstatus() -> None:
+    source = """REM @sim input 6 when enc 0 >= 1000
+LIMITFORWARDINPUT.0 = 6 : LIMITMODE.0 = 0
+MOVER.0 = 2000 : GO.0
+PAUSE IDLE.0
+PRINT POS.0, " ", AXISERROR.0, " ", AXISSTATUS.0
+"""
+    assert simulate(source).terminal == "2000 0 2\n"
+
+
+def test_a_reverse_limit_counts_only_when_stationary_or_moving_in_reverse() -> None:
+    # AX-14 RC: crossing an active reverse limit while moving forward is fine; resting on it is not
+    source = """REM @sim input 7 when enc 0 >= 100
+LIMITREVERSEINPUT.0 = 7
+MOVER.0 = 500 : GO.0
+PAUSE POS.0 > 300
+PRINT "moving ", AXISERROR.0
+PAUSE IDLE.0
+"""
+    result = simulate(source)
+    assert result.terminal == "moving 0\n"
+    assert result.axes[0].axiserror & 4 and result.axes[0].pos == 500
+
+
+def test_a_software_limit_in_error_decel_mode_ramps_down_and_keeps_the_drive() -> None:
+    source = """SOFTLIMITFORWARD.0 = 1000 : SOFTLIMITMODE.0 = 3 : ERRORDECEL.0 = 1000000
+MOVER.0 = 5000 : GO.0
+PAUSE IDLE.0
+END
+#ONERROR
+PAUSE IDLE.0
+PRINT AXISERROR.0, " ", DRIVEENABLE.0
+RETURN
+"""
+    result = simulate(source)
+    assert result.terminal.startswith("8 1\n")
+    assert 1000 < result.axes[0].pos < 1300
+
+
+def test_abort_latches_an_abort_error_on_every_axis() -> None:
+    result = simulate("JOG[0,1] = 100, 200\nWAIT = 50\nABORT\n")
+    assert result.stop.reason is StopReason.ERROR
+    assert all(axis.axiserror & 1 and not axis.enabled for axis in result.axes)
+
+
+def test_a_move_while_an_error_is_latched_is_error_12() -> None:
+    source = "ABORT\nEND\n#ONERROR\nDIM tried = 0\nIF tried = 0 DO\n  tried = 1\n  MOVER.0 = 10\nENDIF\nRETURN\n"
+    result = simulate(source)
+    assert result.err == 12

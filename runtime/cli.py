@@ -182,6 +182,7 @@ class _Recorders:
     def __init__(self, trace: Trace | None, tracing: bool, console: Console, until_ms: int | None) -> None:
         self.trace = trace
         self.tracing = tracing
+        self.console = console
         self.progress = Progress(
             TextColumn("simulated"),
             BarColumn(),
@@ -194,6 +195,8 @@ class _Recorders:
         self.task = self.progress.add_task("run", total=until_ms or 0)
 
     def on_tick(self, controller: Controller, tick: int) -> None:
+        if tick == 0 and controller.server is not None:
+            self.console.print(f"host port: 127.0.0.1:{controller.server.port}", highlight=False)
         if self.tracing:
             if self.trace is None:
                 self.trace = Trace(tuple(range(len(controller.axes))))

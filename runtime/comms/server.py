@@ -12,6 +12,7 @@ import contextlib
 import selectors
 import socket
 import threading
+import time
 from dataclasses import dataclass, field
 from types import TracebackType
 from typing import Self
@@ -19,6 +20,7 @@ from typing import Self
 from mintlang.runtime.comms.packets import HostEndpoint, PacketDecoder
 
 _RECEIVE_SIZE = 4096
+_FLUSH_SECONDS = 1.0
 _INBOX_LIMIT = 1 << 16
 """Bytes held per connection before reading pauses: a flooding client is slowed by TCP, not by memory."""
 
@@ -83,9 +85,16 @@ class HostPortServer:
         self._wake()
 
     def close(self) -> None:
-        """Stop the I/O thread and close every socket; calling it again does nothing."""
+        """Send the replies still queued (for up to a second), then stop the I/O thread and close every socket.
+
+        A run often ends on the tick that applied a host's last write; its ACK must still reach the host.
+        Calling ``close`` again does nothing.
+        """
         if self._closing.is_set():
             return
+        deadline = time.monotonic() + _FLUSH_SECONDS
+        while time.monotonic() < deadline and self._replies_pending():
+            time.sleep(0.001)
         self._closing.set()
         self._wake()
         self._thread.join()
@@ -97,6 +106,10 @@ class HostPortServer:
         self._selector.close()
         for sock in (self._listener, self._wake_reader, self._wake_writer):
             sock.close()
+
+    def _replies_pending(self) -> bool:
+        with self._lock:
+            return any(connection.open and connection.outbox for connection in self._connections)
 
     def __enter__(self) -> Self:
         return self

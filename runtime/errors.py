@@ -33,3 +33,11 @@ class MintError(Exception):
         if self.detail:
             text += f" ({self.detail})"
         return text
+
+
+class NotSimulated(Exception):
+    """A keyword or use the simulator does not model: the run stops and says which, instead of guessing."""
+
+    def __init__(self, keyword: str, use: str) -> None:
+        super().__init__(f"{keyword} ({use}) is not simulated by mint-run")
+        self.keyword = keyword

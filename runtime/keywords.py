@@ -18,6 +18,8 @@ Values = tuple[float | None, ...]  # None: a skipped place, as in SPEED = ,10
 Reader = Callable[[int | None], float]  # channel None: written without a selector (IN, OUT, TIME)
 Writer = Callable[[Channels | None, Values], bool]
 Command = Callable[[Channels | None, tuple[float, ...]], bool]
+ArrayArgument = float | list[float]  # an array named bare arrives as its storage, by reference
+ArrayCommand = Callable[[tuple[ArrayArgument, ...]], bool]  # a function-style command taking arrays (CAMTABLE)
 
 
 @dataclass(frozen=True, slots=True)
@@ -25,6 +27,7 @@ class KeywordAccess:
     read: Reader | None = None
     write: Writer | None = None
     command: Command | None = None
+    array_command: ArrayCommand | None = None
 
 
 class KeywordTable:
@@ -40,10 +43,11 @@ class KeywordTable:
         read: Reader | None = None,
         write: Writer | None = None,
         command: Command | None = None,
+        array_command: ArrayCommand | None = None,
     ) -> None:
         if name in self._entries:
             raise ValueError(f"keyword {name} registered twice")
-        self._entries[name] = KeywordAccess(read, write, command)
+        self._entries[name] = KeywordAccess(read, write, command, array_command)
 
     def get(self, name: str) -> KeywordAccess | None:
         return self._entries.get(name)

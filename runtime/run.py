@@ -13,8 +13,7 @@ from dataclasses import dataclass
 import mintlang
 from mintlang.diagnostics import Severity
 from mintlang.keyworddb.model import Controller as ControllerName
-from mintlang.runtime.errors import MintError
-from mintlang.runtime.interpreter.expressions import NotSimulated
+from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.scenario import ScenarioFileError, merge, parse_directives
 from mintlang.runtime.scenario.expectations import Outcome, evaluate

@@ -182,15 +182,16 @@ class Simulator:
         c = self.c
         c.clock.now = t
         c.io.sample(c.world.apply(t))
+        axes = [axis for axis in c.axes if not axis.dormant()]
         if t % 2 == 0:
-            for axis in c.axes:
+            for axis in axes:
                 axis.profiler(t, c.motion.start_group)
-        for axis in c.axes:
+        for axis in axes:
             axis.servo_tick(t)
         for channel in c.world.fast_inputs_due:
             self.fast_input(channel)
         c.world.fast_inputs_due.clear()
-        for axis in c.axes:
+        for axis in axes:
             if axis.enabled or axis.parameters["STOPINPUT"] >= 0:
                 c.supervisor.check(axis, t)
         c.events.tick()
@@ -216,11 +217,14 @@ class Simulator:
         vm = c.vm
         if vm.progressed or not vm.blocked or c.events.pending or c.server is not None or c.io.raises_every_tick():
             return t + 1
-        candidates = [vm.wake_at, c.world.next_change(t), c.events.next_timer]
-        candidates.extend(axis.next_event(t) for axis in c.axes)
+        soonest = min(vm.wake_at, c.world.next_change(t), c.events.next_timer)
+        for axis in c.axes:
+            if soonest <= t + 1:
+                return t + 1
+            soonest = min(soonest, axis.next_event(t))
         if self.checkpoints:
-            candidates.append(min(self.checkpoints))
-        return max(min(candidates), t + 1)
+            soonest = min(soonest, *self.checkpoints)
+        return max(soonest, t + 1)
 
     def run(self) -> Stop:
         c = self.c

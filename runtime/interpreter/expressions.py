@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.keywords import KeywordTable
 from mintlang.runtime.numbers import BINARY_OPERATORS, FUNCTIONS, UNARY_OPERATORS, bits24, f32
@@ -26,14 +26,6 @@ Evaluate = Callable[[], float]
 READ_OF_WRITE_ONLY = 2002
 INVALID_INDEX = 2016
 INVALID_COMMAND = 2006
-
-
-class NotSimulated(Exception):
-    """A keyword the simulator does not model: the run stops and says which, instead of guessing."""
-
-    def __init__(self, keyword: str, use: str) -> None:
-        super().__init__(f"{keyword} ({use}) is not simulated by mint-run")
-        self.keyword = keyword
 
 
 @dataclass(slots=True)

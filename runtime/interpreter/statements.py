@@ -12,10 +12,10 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from mintlang.runtime.clock import NEVER
-from mintlang.runtime.errors import MintError
-from mintlang.runtime.interpreter.expressions import Evaluate, ExpressionCompiler, NotSimulated
+from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.interpreter.expressions import Evaluate, ExpressionCompiler
 from mintlang.runtime.interpreter.vm import Interpreter, Loop, Operation
-from mintlang.runtime.keywords import KeywordTable
+from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordTable
 from mintlang.runtime.numbers import f32
 from mintlang.runtime.printing import format_bin, format_chr, format_hex, format_number, format_using
 from mintlang.runtime.terminal import Terminal
@@ -202,6 +202,8 @@ class StatementCompiler:
     def function_statement(self, statement: n.FunctionStatement, pc: int) -> Operation:
         call = statement.call
         access = self.table.get(call.function)
+        if statement.values is None and access is not None and access.array_command is not None:
+            return self._array_command(call, access.array_command)
         arguments = tuple(self.expressions.compile(argument) for argument in call.arguments)
         if statement.values is None:
             if access is None or access.command is None:
@@ -216,6 +218,19 @@ class StatementCompiler:
         (index,) = arguments
         values = tuple(self.expressions.compile(value) if value is not None else None for value in statement.values)
         return lambda: write((int(index()),), tuple(value() if value is not None else None for value in values))
+
+    def _array_command(self, call: n.Call, command: ArrayCommand) -> Operation:
+        """``CAMTABLE(0, table, NULL)``: a bare array name passes the array itself, ``NULL`` passes 0."""
+        arguments = tuple(self._array_argument(argument) for argument in call.arguments)
+        return lambda: command(tuple(argument() for argument in arguments))
+
+    def _array_argument(self, argument: n.Expression) -> Callable[[], ArrayArgument]:
+        if type(argument) is n.VariableRef and argument.name.identity in self.expressions.names.arrays:
+            values = self.expressions.element_slot(argument.name)
+            return lambda: values
+        if type(argument) is n.ConstantRef and argument.name.upper() == "NULL":
+            return lambda: 0.0
+        return self.expressions.compile(argument)
 
     def bare_name(self, statement: n.BareName, pc: int) -> Operation:
         name = statement.name.text

@@ -17,7 +17,7 @@ from typing import Protocol
 
 from mintlang.controllers import NestingLimits
 from mintlang.runtime.clock import NEVER, Clock
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import MintError, NotSimulated
 
 Operation = Callable[[], bool | None]
 
@@ -131,6 +131,10 @@ class Interpreter:
                     return
             except MintError as error:
                 self.fail(error, pc)
+            except NotSimulated as missing:
+                self.stop(StopReason.ERROR, str(missing))
+                self.on_fatal()
+                return
             finally:
                 self.executing = None
             self.progressed = True

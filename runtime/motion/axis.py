@@ -60,6 +60,8 @@ class Axis:
         self.hold = 0.0  # demand while no move runs, counts
         self.target = 0.0  # POSTARGET, counts
         self.jog_speed = 0.0  # JOG as last written, counts/s
+        self.contour_mode = 0  # CONTOURMODE, stored with each path move as it is loaded (MP-32)
+        self.contour_angle = 15.0  # CONTOURANGLE in degrees, read when segments join (MP-33)
         self.position_offset = 0.0  # POS = (measured - offset) / SCALE
         self.encoder_offset = 0.0
         self.measured = 0
@@ -68,6 +70,9 @@ class Axis:
         self.dac = 0.0
         self.torque: float | None = None  # TORQUE mode: the DAC command
         self.last_tick = 0
+        self._setpoints: tuple[Move | None, int, float, int, float] = (None, -1, 0.0, -1, 0.0)
+        self._last_demand = 0.0  # demand and demand velocity of the previous servo tick, for the feed-forwards
+        self._last_velocity = 0.0
 
     # -------------------------------------------------------------- parameters
 
@@ -100,10 +105,6 @@ class Axis:
                 kaccel=p["KACCEL"],
                 daclimitmax=p["DACLIMITMAX"],
             )
-        if name in ("SPEED", "ACCEL", "DECEL") and self.move is not None and self.move.axes[0] == self.number:
-            p = self.parameters
-            tick = next_profiler_tick(self.clock.now)
-            self.move = self.move.replan(tick, p["SPEED"], p["ACCEL"], p["DECEL"], p["SRAMP"])
 
     # ------------------------------------------------------------------ state
 
@@ -119,10 +120,23 @@ class Axis:
         move = self.move
         if move is None:
             return self.hold
-        index = self.index_in_move
         if tick % PROFILER_TICK_MS:
-            return (move.demand(index, tick - 1) + move.demand(index, tick + 1)) / 2.0
-        return move.demand(index, tick)
+            return (self._setpoint(move, tick - 1) + self._setpoint(move, tick + 1)) / 2.0
+        return self._setpoint(move, tick)
+
+    def _setpoint(self, move: Move, tick: int) -> float:
+        """A profiler set-point; the last two are remembered, as the servo ticks between them read them twice."""
+        if move.live:
+            return move.demand(self.index_in_move, tick)  # a live move may still change before that tick
+        cache = self._setpoints
+        if cache[0] is move:
+            if cache[1] == tick:
+                return cache[2]
+            if cache[3] == tick:
+                return cache[4]
+        value = move.demand(self.index_in_move, tick)
+        self._setpoints = (move, tick, value, cache[1], cache[2]) if cache[0] is move else (move, tick, value, -1, 0.0)
+        return value
 
     def velocity_demand(self, tick: int) -> float:
         """Demand velocity in counts/s (its sign decides which limits apply, AX-14 RC)."""
@@ -140,6 +154,29 @@ class Axis:
     def velocity_counts(self) -> float:
         return (self.measured - self.previous_measured) / SERVO_TICK_S
 
+    def dormant(self) -> bool:
+        """Disabled, still and on a plant that cannot move by itself: a tick would change nothing.
+
+        Its stop input still counts, so an axis with one is never dormant.
+        """
+        return (
+            not self.enabled
+            and self.move is None
+            and not self.buffer
+            and not self.plant.closed_loop
+            and self.measured == self.previous_measured
+            and self.parameters["STOPINPUT"] < 0
+        )
+
+    def watched_while_moving(self) -> bool:
+        """A software limit or a following-error limit under half a count can trip between two events."""
+        p = self.parameters
+        return (
+            p["SOFTLIMITFORWARD"] < DEFAULTS["SOFTLIMITFORWARD"]
+            or p["SOFTLIMITREVERSE"] > DEFAULTS["SOFTLIMITREVERSE"]
+            or p["FOLERRORFATAL"] < 0.5
+        )
+
     def settling(self) -> bool:
         """The measured position changed on the last tick, so VEL and IDLE change on the next."""
         return self.measured != self.previous_measured
@@ -147,10 +184,12 @@ class Axis:
     def next_event(self, now: int) -> int:
         """The next tick at which this axis changes in a way that matters beyond its demand value."""
         move = self.move
-        if self.plant.closed_loop or (move is not None and move.live) or self.settling():
+        if self.plant.closed_loop or (move is not None and move.live):
             return now + 1
         if move is not None:
-            return max(move.end, now + 1)
+            return now + 1 if self.watched_while_moving() else max(move.end, now + 1)
+        if self.settling():
+            return now + 1
         if self.triggered:
             return next_profiler_tick(now)
         return NEVER
@@ -216,14 +255,16 @@ class Axis:
         else:
             self.previous_measured = self.measured
             self.measured = plant.step(demand if servoing else None, self.dac, SERVO_TICK_S)
+            consecutive = tick - self.last_tick == 1
+            previous = self._last_demand if consecutive else self.demand_at(tick - 1)
+            velocity = demand - previous
+            acceleration = velocity - (self._last_velocity if consecutive else previous - self.demand_at(tick - 2))
+            self._last_demand, self._last_velocity = demand, velocity
             if not self.enabled:
                 self.dac = 0.0
             elif self.torque is not None:
                 self.dac = self.torque
             else:
-                previous = self.demand_at(tick - 1)
-                velocity = demand - previous
-                acceleration = velocity - (previous - self.demand_at(tick - 2))
                 moved = self.measured - self.previous_measured
                 self.dac = self.servo.step(demand, velocity, acceleration, self.measured, moved)
         self.last_tick = tick

@@ -6,7 +6,6 @@ fails or has to wait for buffer space leaves the axes as they were.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Sequence
 
 from mintlang.controllers import ControllerProfile
@@ -25,10 +24,12 @@ from mintlang.runtime.motion.axis import (
 )
 from mintlang.runtime.motion.moves import Geometry, PlannedMove, next_profiler_tick
 from mintlang.runtime.motion.parameters import DEFAULTS
-from mintlang.runtime.motion.profile import plan_move, plan_velocity
+from mintlang.runtime.motion.paths import PATH_MODES, PathSegment
+from mintlang.runtime.motion.profile import plan_velocity
 from mintlang.runtime.scenario.stimulus import IndexPulse
 
 INVALID_AXIS = 2
+_PROFILE_RATES = frozenset({"SPEED", "ACCEL", "DECEL"})
 MISSING_PARAMETER = 2001
 TOO_MANY_VALUES = 2017
 SAME_AXIS_TWICE = 2018
@@ -87,7 +88,7 @@ class Motion:
             pairs = [(axis, value) for axis, value in zip(axes, values, strict=False) if value is not None]
             for axis, _ in pairs:
                 axis.require_ready()
-                if (axis.move is not None and axis.move.mode != MD_LINEAR) or axis.pending_mode:
+                if (axis.move is not None and axis.move.mode not in PATH_MODES) or axis.pending_mode:
                     raise MintError(MOTION_IN_PROGRESS, axis.number)
             if any(axis.buffer_free() <= 0 for axis, _ in pairs):
                 for axis, _ in pairs:
@@ -114,20 +115,8 @@ class Motion:
     def _load_line(self, master: Axis, axes: tuple[Axis, ...], targets: tuple[float, ...], mode: int) -> None:
         for axis, target in zip(axes, targets, strict=True):
             axis.target = target
-        numbers = tuple(axis.number for axis in axes)
-
-        def build(tick: int) -> PlannedMove | None:
-            origin = tuple(axis.hold for axis in axes)
-            deltas = [target - start for target, start in zip(targets, origin, strict=True)]
-            length = math.sqrt(sum(delta * delta for delta in deltas))
-            if length == 0.0:
-                return None  # a move to where the axes already are generates no motion (MP-13)
-            geometry = Geometry(origin, tuple(delta / length for delta in deltas))
-            p = master.parameters
-            profile = plan_move(length, p["SPEED"], p["ACCEL"], p["DECEL"], sramp=p["SRAMP"])
-            return PlannedMove(mode, numbers, geometry, profile, tick, 0.0, length, targets)
-
-        request = Request(mode, numbers, build)
+        segment = PathSegment(mode, axes, master.contour_mode, targets)
+        request = Request(mode, segment.numbers, segment)
         for axis in axes:
             axis.buffer.append(request)
 
@@ -267,7 +256,7 @@ class Motion:
         table.register("AXISMODE", read=lambda ch: float(self._watch(self.axis(ch)).axismode))
         table.register("AXISERROR", read=lambda ch: float(self.axis(ch).axiserror))
         table.register("AXISSTATUS", read=lambda ch: float(self.axis(ch).status | self.axis(ch).axiserror))
-        table.register("IDLE", read=lambda ch: float(self._watch(self.axis(ch), moving=True).idle()))
+        table.register("IDLE", read=lambda ch: float(self._watch(self.axis(ch)).idle()))
         table.register("POSTARGET", read=self._postarget)
         table.register("POSREMAINING", read=self._posremaining)
         table.register("MOVEBUFFERFREE", read=lambda ch: float(self._watch(self.axis(ch)).buffer_free()))
@@ -290,9 +279,22 @@ class Motion:
 
     def _parameter_writer(self, name: str) -> Callable[[int | None, float], None]:
         def write(channel: int | None, value: float) -> None:
-            self.axis(channel).set(name, value)
+            axis = self.axis(channel)
+            axis.set(name, value)
+            if name in _PROFILE_RATES and axis.move is not None and axis.move.axes[0] == axis.number:
+                self._replan(axis)
 
         return write
+
+    def _replan(self, master: Axis) -> None:
+        """A rate of the master changed: every axis of its move continues on the re-planned move (MP-10)."""
+        old = master.move
+        assert old is not None
+        p = master.parameters
+        new = old.replan(next_profiler_tick(self.clock.now), p["SPEED"], p["ACCEL"], p["DECEL"], p["SRAMP"])
+        for number in old.axes:
+            if self.axes[number].move is old:
+                self.axes[number].move = new
 
     def _enable(self, channel: int | None, value: float) -> None:
         axis = self.axis(channel)

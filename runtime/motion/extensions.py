@@ -9,8 +9,19 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from mintlang.runtime.keywords import KeywordTable
+from mintlang.runtime.motion import cams, circles, contouring, flying, following, homing, incremental, master, offset
 from mintlang.runtime.motion.commands import Motion
 
 Extension = Callable[[KeywordTable, Motion], None]
 
-EXTENSIONS: tuple[Extension, ...] = ()
+EXTENSIONS: tuple[Extension, ...] = (
+    homing.register,
+    circles.register,
+    incremental.register,
+    offset.register,
+    contouring.register,
+    master.register,
+    following.register,
+    flying.register,
+    cams.register,
+)

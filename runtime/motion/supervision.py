@@ -44,20 +44,22 @@ class Supervisor:
     def check(self, axis: Axis, tick: int) -> None:
         p = axis.parameters
         status = 0
-        velocity = axis.velocity_demand(tick)
         if axis.enabled and abs(axis.demand - axis.measured) > p["FOLERRORFATAL"]:
             status |= ER_FOLLOWING
         forward = int(p["LIMITFORWARDINPUT"])
         reverse = int(p["LIMITREVERSEINPUT"])
-        if forward >= 0 and self.is_active(forward) and velocity >= 0:
-            status |= ER_FWD_HARD
-        if reverse >= 0 and self.is_active(reverse) and velocity <= 0:
-            status |= ER_REV_HARD
         position = axis.demand - axis.position_offset
-        if position > p["SOFTLIMITFORWARD"] and velocity > 0:
-            status |= ER_FWD_SOFT
-        if position < p["SOFTLIMITREVERSE"] and velocity < 0:
-            status |= ER_REV_SOFT
+        beyond = position > p["SOFTLIMITFORWARD"] or position < p["SOFTLIMITREVERSE"]
+        if forward >= 0 or reverse >= 0 or beyond:
+            velocity = axis.velocity_demand(tick)
+            if forward >= 0 and self.is_active(forward) and velocity >= 0:
+                status |= ER_FWD_HARD
+            if reverse >= 0 and self.is_active(reverse) and velocity <= 0:
+                status |= ER_REV_HARD
+            if position > p["SOFTLIMITFORWARD"] and velocity > 0:
+                status |= ER_FWD_SOFT
+            if position < p["SOFTLIMITREVERSE"] and velocity < 0:
+                status |= ER_REV_SOFT
         error_input = int(p["ERRORINPUT"])
         if error_input >= 0 and self.is_active(error_input):
             status |= ER_ERROR_INPUT
@@ -66,6 +68,8 @@ class Supervisor:
             status |= ER_STOP_INPUT
         axis.status = status
         fresh = status & ~axis.axiserror & ~ER_STOP_INPUT
+        if not fresh:
+            return
         bit = 1
         while fresh:
             if fresh & 1:

@@ -1,0 +1,34 @@
+"""CONTOURMODE and CONTOURANGLE: how consecutive path moves blend (spec MP-32, MP-33).
+
+The blending itself lives with the path segments (``paths.Chain``); these
+keywords only set what the master axis stores with each MOVE, VECTOR or
+CIRCLE as it is loaded (CONTOURMODE) and the corner angle read when two
+segments join (CONTOURANGLE, global and not buffered).
+"""
+
+from __future__ import annotations
+
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.keywords import KeywordTable, per_channel
+from mintlang.runtime.motion.commands import Motion
+from mintlang.runtime.motion.parameters import OUT_OF_RANGE
+from mintlang.runtime.motion.paths import CONTOUR_ON, VECTOR_ANGLE_ON
+
+MAX_ANGLE = 180.0
+
+
+def register(table: KeywordTable, motion: Motion) -> None:
+    def write_mode(channel: int | None, value: float) -> None:
+        axis = motion.axis(channel)
+        if value not in (0, CONTOUR_ON, CONTOUR_ON | VECTOR_ANGLE_ON):
+            raise MintError(OUT_OF_RANGE, axis.number, "CONTOURMODE is 0, 1 or 3 (bit 1 needs bit 0)")
+        axis.contour_mode = int(value)
+
+    def write_angle(channel: int | None, value: float) -> None:
+        axis = motion.axis(channel)
+        if not 0.0 <= value <= MAX_ANGLE:
+            raise MintError(OUT_OF_RANGE, axis.number, "CONTOURANGLE is 0 to 180 degrees")
+        axis.contour_angle = value
+
+    table.register("CONTOURMODE", read=lambda ch: float(motion.axis(ch).contour_mode), write=per_channel(write_mode))
+    table.register("CONTOURANGLE", read=lambda ch: motion.axis(ch).contour_angle, write=per_channel(write_angle))

@@ -1,0 +1,183 @@
+"""Master selection for FOLLOW, FLY and CAM: MASTERSOURCE, MASTERCHANNEL, MASTERDISTANCE (spec FG-1, FG-2).
+
+A slave reads its master once per profiler tick. What it reads is the master's
+state at the last servo tick (the encoder sample, or the demand), so the order
+in which axes are profiled does not matter. Only changes of the master position
+move the slave, so position offsets (``POS`` written on an idle master) cancel
+out unless they change while the slave follows.
+
+The settings belong to the slave axis; they live beside it in a weak mapping so
+that the three master-slave modules share them without widening ``Axis``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from weakref import WeakKeyDictionary
+
+from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.keywords import KeywordTable, per_channel
+from mintlang.runtime.motion.axis import Axis
+from mintlang.runtime.motion.commands import Motion
+from mintlang.runtime.motion.moves import PROFILER_TICK_MS
+from mintlang.runtime.motion.parameters import OUT_OF_RANGE
+
+MS_POS, MS_ENCODER, MS_AUXENCODER, MS_SPEED, MS_DEMAND = 0, 1, 2, 3, 4
+INVALID_MASTER_CHANNEL = 70
+CONFIG_OFF = 0
+DEFAULT_MASTER_DISTANCE = 1000.0  # FG-2 RC: the DEFAULT table's value
+MAX_DISTANCE = 8_388_607.0
+
+
+@dataclass(slots=True)
+class MasterSettings:
+    """What a slave axis follows; ``channel`` None means the default for the source (FG-1)."""
+
+    source: int = MS_POS
+    channel: int | None = None
+    distance: float = DEFAULT_MASTER_DISTANCE  # master user units
+
+    def channel_of(self, slave: int) -> int:
+        if self.channel is not None:
+            return self.channel
+        return slave if self.source == MS_SPEED else 0
+
+
+_SETTINGS: WeakKeyDictionary[Axis, MasterSettings] = WeakKeyDictionary()
+
+
+def settings(axis: Axis) -> MasterSettings:
+    found = _SETTINGS.get(axis)
+    if found is None:
+        found = _SETTINGS[axis] = MasterSettings()
+    return found
+
+
+class Master:
+    """The master position of one master-slave move, in master encoder counts, sampled each profiler tick."""
+
+    __slots__ = ("axis", "position", "source")
+
+    def __init__(self, axis: Axis, source: int) -> None:
+        self.axis = axis
+        self.source = MS_ENCODER if source == MS_POS and axis.parameters["CONFIG"] == CONFIG_OFF else source
+        self.position = 0.0  # the virtual master of _msSPEED starts at 0 (FG-1 RC)
+
+    def sample(self) -> float:
+        """The master position now; called once per profiler tick (a virtual master advances here)."""
+        axis = self.axis
+        source = self.source
+        if source == MS_POS:
+            return axis.measured - axis.position_offset
+        if source == MS_ENCODER:
+            return axis.measured - axis.encoder_offset
+        if source == MS_DEMAND:
+            return axis.demand - axis.position_offset
+        self.position += axis.parameters["SPEED"] * PROFILER_TICK_MS / 1000.0
+        return self.position
+
+
+@dataclass(frozen=True, slots=True)
+class Link:
+    """A slave's view of its master at load time: the sampler, and the unit conversions."""
+
+    master: Master
+    slave_per_master: float  # slave counts per master count at ratio 1 (user units on both sides, FG-1)
+    master_scale: float  # master counts per master user unit (MASTERDISTANCE is in master units, FG-2)
+
+    def distance_counts(self, distance: float) -> float:
+        return distance * self.master_scale
+
+
+class SetPoints:
+    """A live slave's profiler set-points: the servo interpolates between the last two and extrapolates beyond
+    the latest, since the next one depends on a master sample not taken yet (T-6)."""
+
+    __slots__ = ("last", "origin", "previous", "started")
+
+    def __init__(self, origin: float) -> None:
+        self.origin = origin
+        self.started = False
+        self.previous = (0, origin)
+        self.last = (0, origin)
+
+    def start(self, tick: int) -> None:
+        self.started = True
+        self.last = (tick - PROFILER_TICK_MS, self.origin)
+
+    def record(self, tick: int, position: float) -> None:
+        self.previous, self.last = self.last, (tick, position)
+
+    @property
+    def position(self) -> float:
+        return self.last[1]
+
+    def at(self, tick: int, ended: bool) -> float:
+        (t0, p0), (t1, p1) = self.previous, self.last
+        if not self.started:
+            return self.origin
+        if tick <= t0:
+            return p0
+        if ended and tick >= t1:
+            return p1
+        return p0 + (p1 - p0) * (tick - t0) / (t1 - t0)
+
+    def velocity(self, tick: int, ended: bool) -> float:
+        """Counts/s over the last profiler period."""
+        (t0, p0), (t1, p1) = self.previous, self.last
+        return 0.0 if ended or not self.started else (p1 - p0) * 1000.0 / (t1 - t0)
+
+
+def link(motion: Motion, slave: Axis) -> Link:
+    """The master of ``slave`` as its settings say; error 70 if it would follow itself."""
+    chosen = settings(slave)
+    if chosen.source == MS_AUXENCODER:
+        raise NotSimulated("MASTERSOURCE", "_msAUXENCODER: the auxiliary encoder has no simulated input")
+    channel = chosen.channel_of(slave.number)
+    master = motion.axis(channel)
+    if master is slave and chosen.source != MS_SPEED:
+        raise MintError(INVALID_MASTER_CHANNEL, slave.number, "a slave cannot follow itself")
+    return Link(Master(master, chosen.source), slave.scale / master.scale, master.scale)
+
+
+def master_distance(motion: Motion, slave: Axis) -> float:
+    """MASTERDISTANCE of ``slave`` in master counts (scaled by the master channel, FG-2)."""
+    chosen = settings(slave)
+    return chosen.distance * motion.axis(chosen.channel_of(slave.number)).scale
+
+
+def register(table: KeywordTable, motion: Motion) -> None:
+    def write_source(channel: int | None, value: float) -> None:
+        axis = motion.axis(channel)
+        if value != int(value) or not MS_POS <= value <= MS_DEMAND:
+            raise MintError(OUT_OF_RANGE, axis.number, f"MASTERSOURCE = {value:g}")
+        chosen = settings(axis)
+        chosen.source = int(value)
+        chosen.channel = None  # writing the source resets the channel (FG-1)
+
+    def write_channel(channel: int | None, value: float) -> None:
+        axis = motion.axis(channel)
+        if value != int(value):
+            raise MintError(OUT_OF_RANGE, axis.number, f"MASTERCHANNEL = {value:g}")
+        motion.axis(int(value))
+        settings(axis).channel = int(value)
+
+    def write_distance(channel: int | None, value: float) -> None:
+        axis = motion.axis(channel)
+        if abs(value) > MAX_DISTANCE:
+            raise MintError(OUT_OF_RANGE, axis.number, f"MASTERDISTANCE = {value:g}")
+        settings(axis).distance = value
+
+    def source(channel: int | None) -> float:
+        return float(settings(motion.axis(channel)).source)
+
+    def master_channel(channel: int | None) -> float:
+        axis = motion.axis(channel)
+        return float(settings(axis).channel_of(axis.number))
+
+    def distance(channel: int | None) -> float:
+        return settings(motion.axis(channel)).distance
+
+    table.register("MASTERSOURCE", read=source, write=per_channel(write_source))
+    table.register("MASTERCHANNEL", read=master_channel, write=per_channel(write_channel))
+    table.register("MASTERDISTANCE", read=distance, write=per_channel(write_distance))

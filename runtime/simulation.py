@@ -184,25 +184,30 @@ class Simulator:
         c.io.sample(c.world.apply(t))
         axes = [axis for axis in c.axes if not axis.dormant()]
         if t % 2 == 0:
+            start_group = c.motion.start_group
             for axis in axes:
-                axis.profiler(t, c.motion.start_group)
+                axis.profiler(t, start_group)
         for axis in axes:
             axis.servo_tick(t)
-        for channel in c.world.fast_inputs_due:
-            self.fast_input(channel)
-        c.world.fast_inputs_due.clear()
+        if c.world.fast_inputs_due:
+            for channel in c.world.fast_inputs_due:
+                self.fast_input(channel)
+            c.world.fast_inputs_due.clear()
+        check = c.supervisor.check
         for axis in axes:
             if axis.enabled or axis.parameters["STOPINPUT"] >= 0:
-                c.supervisor.check(axis, t)
+                check(axis, t)
         c.events.tick()
-        for address in c.system.comms.take_external_writes():
-            if c.events.has_handler(EventClass.COMMS, address):
-                c.events.raise_event(EventClass.COMMS, address)
+        if c.system.comms.external_writes_pending():
+            for address in c.system.comms.take_external_writes():
+                if c.events.has_handler(EventClass.COMMS, address):
+                    c.events.raise_event(EventClass.COMMS, address)
         if c.server is not None:
             c.server.service(c.endpoint)
         c.vm.run_slice()
-        for callback in self.checkpoints.pop(t, ()):
-            callback()
+        if t in self.checkpoints:
+            for callback in self.checkpoints.pop(t):
+                callback()
 
     def fast_input(self, channel: int) -> None:
         """A fast input fired: latch the positions just measured and call its handler (EV-9)."""

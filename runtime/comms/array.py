@@ -119,6 +119,10 @@ class CommsArray:
         if external and address in EVENT_ELEMENTS:
             self._external.add(address)
 
+    def external_writes_pending(self) -> bool:
+        """Cheap to ask on every tick: whether ``take_external_writes`` has anything."""
+        return bool(self._external)
+
     def take_external_writes(self) -> tuple[int, ...]:
         """Elements 1..5 written externally since the last call, ascending; several writes to one element count once."""
         taken = tuple(sorted(self._external))

@@ -128,6 +128,17 @@ class ExpressionCompiler:
                 only = single[0]
                 return lambda: read(int(only()))
 
+            constant = _constants(reference)
+            if constant is not None:  # IDLE[0,1,2,3] in a PAUSE is read every tick: no channel to evaluate
+
+                def read_fixed() -> float:
+                    result = 0xFFFFFF
+                    for number in constant:
+                        result &= bits24(read(number))
+                    return float(result)
+
+                return read_fixed
+
             def read_all() -> float:
                 result = 0xFFFFFF
                 for channel in single:
@@ -165,6 +176,14 @@ class ExpressionCompiler:
             raise NotSimulated(call.function, f"{len(arguments)} arguments")
         (index,) = arguments
         return lambda: read(int(index()))
+
+
+def _constants(reference: n.KeywordRef) -> tuple[int, ...] | None:
+    """The axes of a selector written with literal numbers only, such as ``[0,1]``."""
+    selector = reference.selector
+    if selector is None or not all(type(item) is n.Number for item in selector.items):
+        return None
+    return tuple(int(item.value) for item in selector.items)  # type: ignore[union-attr]
 
 
 def _missing() -> float:

@@ -256,7 +256,7 @@ class Motion:
         table.register("AXISMODE", read=lambda ch: float(self._watch(self.axis(ch)).axismode))
         table.register("AXISERROR", read=lambda ch: float(self.axis(ch).axiserror))
         table.register("AXISSTATUS", read=lambda ch: float(self.axis(ch).status | self.axis(ch).axiserror))
-        table.register("IDLE", read=lambda ch: float(self._watch(self.axis(ch)).idle()))
+        table.register("IDLE", read=self._idle)
         table.register("POSTARGET", read=self._postarget)
         table.register("POSREMAINING", read=self._posremaining)
         table.register("MOVEBUFFERFREE", read=lambda ch: float(self._watch(self.axis(ch)).buffer_free()))
@@ -265,6 +265,13 @@ class Motion:
     def _validate_axes(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         self.addressed(channels)
         return False
+
+    def _idle(self, channel: int | None) -> float:
+        """IDLE, read on every tick by ``PAUSE IDLE`` loops: kept to the fewest calls."""
+        axis = self.axis(channel)
+        clock = self.clock
+        clock.changes_at(clock.now + 1 if axis.plant.closed_loop else axis.next_event(clock.now))
+        return 1.0 if axis.idle() else 0.0
 
     def _watch(self, axis: Axis, *, moving: bool = False) -> Axis:
         """Reading axis state: it may change when the move ends, or every tick while moving."""

@@ -28,11 +28,11 @@ def round_half_away(value: float) -> int:
     Python's ``round`` rounds halves to even, which would make +0.5 and +1.5
     counts of demand land asymmetrically.
     """
-    magnitude = abs(value)
-    whole = math.floor(magnitude)
-    if magnitude - whole >= 0.5:
-        whole += 1
-    return int(math.copysign(whole, value))
+    if value >= 0.0:
+        whole = int(value)  # exact: the fraction left, value - whole, is representable
+        return whole + 1 if value - whole >= 0.5 else whole
+    whole = int(-value)
+    return -(whole + 1) if -value - whole >= 0.5 else -whole
 
 
 class Plant(Protocol):

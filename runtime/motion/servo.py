@@ -82,23 +82,27 @@ class ServoLoop:
         """
         gains = self.gains
         error = demand_position - measured_position
-        mode = gains.kintmode
-        if gains.kint == 0.0 or mode == KintMode.NEVER:
+        kint = gains.kint
+        integral = 0.0
+        if kint == 0.0 or gains.kintmode == KintMode.NEVER:
             self._error_sum = 0.0
-        elif (
-            mode == KintMode.ALWAYS
-            or (mode == KintMode.AT_REST and demand_velocity == 0.0)
-            or (mode == KintMode.SMART and demand_velocity != 0.0 and demand_acceleration == 0.0)
-        ):
-            bound = gains.kintlimit / gains.kint
-            self._error_sum = max(-bound, min(bound, self._error_sum + error))
+        else:
+            mode = gains.kintmode
+            if (
+                mode == KintMode.ALWAYS
+                or (mode == KintMode.AT_REST and demand_velocity == 0.0)
+                or (mode == KintMode.SMART and demand_velocity != 0.0 and demand_acceleration == 0.0)
+            ):
+                bound = gains.kintlimit / kint
+                self._error_sum = max(-bound, min(bound, self._error_sum + error))
+            integral = self.integral
         demand = (
             gains.kprop * error
             + gains.kderiv * (error - self._previous_error)
             - gains.kvel * measured_velocity
             + gains.kvelff * demand_velocity
             + gains.kaccel * demand_acceleration
-            + self.integral
+            + integral
         )
         self._previous_error = error
         limit = gains.daclimitmax

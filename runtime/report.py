@@ -22,6 +22,7 @@ def as_json(result: RunResult) -> dict[str, Any]:
         "outputs": result.outputs,
         "relay": result.relay,
         "axes": {str(number): asdict(state) for number, state in enumerate(result.axes)},
+        "inert_settings": list(result.inert_settings),
         "host_replies": [{"time_ms": time_ms, "bytes": data.hex(" ")} for time_ms, data in result.host_replies],
         "expectations": [
             {

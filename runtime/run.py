@@ -41,6 +41,7 @@ class RunResult:
     terminal: str
     host_replies: tuple[tuple[int, bytes], ...]
     outcomes: tuple[Outcome, ...]
+    inert_settings: tuple[str, ...] = ()  # settings the program wrote that the simulation does not model
 
 
 def _not_run(reason: str, message: str, line: int | None, unit: str | None, statement: str | None) -> RunResult:
@@ -110,4 +111,5 @@ def run_source(
         built.terminal.text,
         tuple(built.world.host_replies),
         tuple(outcomes),
+        tuple(sorted(built.inert.used)),
     )

@@ -21,6 +21,7 @@ from mintlang.runtime.comms.packets import HostEndpoint
 from mintlang.runtime.comms.server import HostPortServer
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.events import EventClass, Events
+from mintlang.runtime.inert import InertSettings
 from mintlang.runtime.interpreter.program import Linked, link
 from mintlang.runtime.interpreter.vm import Interpreter, StopReason
 from mintlang.runtime.io import DigitalIO
@@ -100,6 +101,7 @@ class Controller:
     supervisor: Supervisor
     linked: Linked
     endpoint: HostEndpoint
+    inert: InertSettings
     server: HostPortServer | None = None
     watchers: list[Callable[[int], None]] = field(default_factory=list)
 
@@ -123,7 +125,8 @@ def build_controller(
     events = Events(clock, handlers, lambda message: vm.stop(StopReason.ERROR, message))
     io = DigitalIO(profile, clock, events)
     system = System(clock, vm, terminal, axes, table)
-    for part in (motion, io, events, system):
+    inert = InertSettings()
+    for part in (motion, io, events, system, inert):
         part.register(table)
     for extend in EXTENSIONS:
         extend(table, motion)
@@ -161,7 +164,7 @@ def build_controller(
     io.next_input_change = lambda: world.next_change(clock.now)
     server = HostPortServer(limits.host_port) if limits.host_port is not None else None
     return Controller(
-        clock, table, vm, terminal, axes, motion, io, events, system, world, supervisor, linked, endpoint, server
+        clock, table, vm, terminal, axes, motion, io, events, system, world, supervisor, linked, endpoint, inert, server
     )
 
 

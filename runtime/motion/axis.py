@@ -69,6 +69,7 @@ class Axis:
         self.demand = 0.0
         self.dac = 0.0
         self.torque: float | None = None  # TORQUE mode: the DAC command
+        self.open_loop_dac: float | None = None  # DAC written by the program on an axis configured off
         self.last_tick = 0
         self._setpoints: tuple[Move | None, int, float, int, float] = (None, -1, 0.0, -1, 0.0)
         self._last_demand = 0.0  # demand and demand velocity of the previous servo tick, for the feed-forwards
@@ -86,6 +87,8 @@ class Axis:
 
     def set(self, name: str, value: float) -> None:
         check_range(name, value, self._bounds[name], self.number)
+        if name == "CONFIG" and value != 0:
+            self.open_loop_dac = None  # back to servo (or stepper) control: the loop drives the DAC again
         if name == "SCALE":
             if value <= 0:
                 raise MintError(3, self.number, "SCALE must be positive")
@@ -251,7 +254,10 @@ class Axis:
             else:
                 self.previous_measured = self.measured
                 self.measured = plant.step(None, 0.0, SERVO_TICK_S)
-            self.dac = self.torque if self.torque is not None and self.enabled else 0.0
+            if self.open_loop_dac is not None:
+                self.dac = self.open_loop_dac
+            else:
+                self.dac = self.torque if self.torque is not None and self.enabled else 0.0
         else:
             self.previous_measured = self.measured
             self.measured = plant.step(demand if servoing else None, self.dac, SERVO_TICK_S)

@@ -37,7 +37,7 @@ class CamSettings:
     positions: list[float] | None = None
     masters: list[float] | None = None
     start: int = 1
-    end: int = 0
+    end: int | None = None  # None: the table's last segment, whatever it holds when the cam starts
     index: int = 0
     mode: int = 0
 
@@ -56,9 +56,18 @@ class CamSettings:
     def range(self) -> tuple[int, int]:
         """CAMSTART and CAMEND, checked against the table (error 13)."""
         count = self.segments()
-        if not 1 <= self.start <= self.end <= count:
-            raise MintError(TABLE_ERROR, detail=f"segments {self.start} to {self.end} of a {count}-segment table")
-        return self.start, self.end
+        end = count if self.end is None else self.end
+        if not 1 <= self.start <= end <= count:
+            raise MintError(TABLE_ERROR, detail=f"segments {self.start} to {end} of a {count}-segment table")
+        return self.start, end
+
+    def last(self) -> int:
+        """CAMEND as read: the table's segment count until the program sets it (0 while no table holds one)."""
+        if self.end is not None:
+            return self.end
+        positions = self.positions
+        count = positions[0] if positions else 0.0
+        return int(count) if count == int(count) and 1 <= count < len(positions or ()) else 0
 
 
 class CamMove:
@@ -207,7 +216,6 @@ def register(table: KeywordTable, motion: Motion) -> None:
         if not isinstance(positions, list) or not (isinstance(masters, list) or masters == 0.0):
             raise MintError(TABLE_ERROR, detail="CAMTABLE needs array names (and NULL for no master table)")
         chosen = CamSettings(positions, masters if isinstance(masters, list) else None, mode=state[axis.number].mode)
-        chosen.end = chosen.segments()
         state[axis.number] = chosen
         return False
 
@@ -254,5 +262,5 @@ def register(table: KeywordTable, motion: Motion) -> None:
         "CAMSTART", read=lambda ch: float(state[motion.axis(ch).number].start), write=per_channel(segment_writer(False))
     )
     table.register(
-        "CAMEND", read=lambda ch: float(state[motion.axis(ch).number].end), write=per_channel(segment_writer(True))
+        "CAMEND", read=lambda ch: float(state[motion.axis(ch).number].last()), write=per_channel(segment_writer(True))
     )

@@ -29,7 +29,16 @@ from mintlang.runtime.motion.profile import plan_velocity
 from mintlang.runtime.scenario.stimulus import IndexPulse
 
 INVALID_AXIS = 2
+WRONG_CONFIGURATION = 11
+CONFIG_OFF = 0
 _PROFILE_RATES = frozenset({"SPEED", "ACCEL", "DECEL"})
+_SWITCHES: dict[str, tuple[str, ...]] = {
+    "LIMIT": ("LIMITFORWARDINPUT", "LIMITREVERSEINPUT"),
+    "LIMITFORWARD": ("LIMITFORWARDINPUT",),
+    "LIMITREVERSE": ("LIMITREVERSEINPUT",),
+    "STOPSWITCH": ("STOPINPUT",),
+    "ERRORSWITCH": ("ERRORINPUT",),
+}
 MISSING_PARAMETER = 2001
 TOO_MANY_VALUES = 2017
 SAME_AXIS_TWICE = 2018
@@ -83,8 +92,10 @@ class Motion:
             axes = self.addressed(channels)
             if len(values) > len(axes):
                 raise MintError(TOO_MANY_VALUES, detail="more values than axes")
-            if interpolated and (len(values) < len(axes) or None in values):
-                raise MintError(MISSING_PARAMETER, detail="a vector needs a value for every axis")
+            if interpolated:
+                if None in values:
+                    raise MintError(MISSING_PARAMETER, detail="a vector needs a value for each of its axes")
+                axes = axes[: len(values)]  # VECTORA = 30,40 with AXES[0,1,2,3] interpolates axes 0 and 1
             pairs = [(axis, value) for axis, value in zip(axes, values, strict=False) if value is not None]
             for axis, _ in pairs:
                 axis.require_ready()
@@ -247,6 +258,10 @@ class Motion:
         table.register("AXES", command=self._validate_axes)
         for name in DEFAULTS:
             table.register(name, read=self._parameter_reader(name), write=per_channel(self._parameter_writer(name)))
+        for name, inputs in _SWITCHES.items():
+            table.register(name, read=self._switch(inputs))
+        for name, rate in (("ACCELTIME", "ACCEL"), ("DECELTIME", "DECEL")):
+            table.register(name, write=per_channel(self._ramp_time(rate)))
         table.register("DRIVEENABLE", read=lambda ch: float(self.axis(ch).enabled), write=per_channel(self._enable))
         table.register("POS", read=self._pos, write=per_channel(self._write_pos))
         table.register("ENCODER", read=self._encoder, write=per_channel(self._write_encoder))
@@ -260,7 +275,41 @@ class Motion:
         table.register("POSTARGET", read=self._postarget)
         table.register("POSREMAINING", read=self._posremaining)
         table.register("MOVEBUFFERFREE", read=lambda ch: float(self._watch(self.axis(ch)).buffer_free()))
-        table.register("DAC", read=lambda ch: self._watch(self.axis(ch), moving=True).dac)
+        table.register("DAC", read=lambda ch: self._watch(self.axis(ch), moving=True).dac, write=per_channel(self._dac))
+
+    def _switch(self, inputs: tuple[str, ...]) -> Callable[[int | None], float]:
+        """LIMIT, LIMITFORWARD, STOPSWITCH ...: whether an assigned input is active (0 when none is assigned)."""
+
+        def read(channel: int | None) -> float:
+            axis = self.axis(channel)
+            self.clock.changes_next_tick()
+            for parameter in inputs:
+                number = int(axis.parameters[parameter])
+                if number >= 0 and self.input_active(number):
+                    return 1.0
+            return 0.0
+
+        return read
+
+    def _ramp_time(self, rate: str) -> Callable[[int | None, float], None]:
+        """ACCELTIME / DECELTIME (ms): the rate that reaches the current SPEED in that time (MP-4 RC)."""
+
+        def write(channel: int | None, value: float) -> None:
+            axis = self.axis(channel)
+            if value <= 0:
+                raise MintError(3, axis.number, f"{rate}TIME = {value:g}")
+            axis.set(rate, axis.get("SPEED") / (value / 1000.0))
+
+        return write
+
+    def _dac(self, channel: int | None, value: float) -> None:
+        """DAC = v drives the output directly, only on an axis configured off (SL-11)."""
+        axis = self.axis(channel)
+        if axis.parameters["CONFIG"] != CONFIG_OFF:
+            raise MintError(WRONG_CONFIGURATION, axis.number, "DAC can be written only when CONFIG is _cfOFF")
+        if not -100.0 <= value <= 100.0:
+            raise MintError(3, axis.number, f"DAC = {value:g}")
+        axis.open_loop_dac = value
 
     def _validate_axes(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         self.addressed(channels)

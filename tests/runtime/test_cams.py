@@ -80,8 +80,10 @@ def test_a_master_distance_of_zero_is_axiserror_bit_11() -> None:
     assert not result.axes[1].enabled
 
 
-def test_a_bad_table_is_error_13() -> None:
-    assert simulate("DIM t(3) = 5, 1, 2\nCAMTABLE(1, t, NULL)\n", until_ms=100).err == 13
+def test_a_bad_table_is_error_13_when_the_cam_is_loaded() -> None:
+    # CAMTABLE only selects the arrays (the manual selects empty ones and fills them later); CAM checks them
+    assert simulate('DIM t(3) = 5, 1, 2\nCAMTABLE(1, t, NULL)\nPRINT "selected"\n', until_ms=100).err == -1
+    assert simulate("DIM t(3) = 5, 1, 2\nCAMTABLE(1, t, NULL)\nCAM.1 = 0\n", until_ms=100).err == 13
     assert simulate("DIM t(3) = 2, 1, 2\nCAM.1 = 0\n", until_ms=100).err == 13
 
 

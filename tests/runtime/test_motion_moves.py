@@ -99,3 +99,44 @@ def test_speed_written_during_a_move_changes_the_move_in_progress() -> None:
 def test_cancel_stops_at_once_and_reset_zeroes_the_position() -> None:
     source = 'JOG.0 = 2000\nWAIT = 100\nCANCEL.0\nWAIT = 10\nPRINT VEL.0, " ", FOLERROR.0\nRESET.0\nPRINT POS.0\n'
     assert simulate(source).terminal == "0 0\n0\n"
+
+
+def test_a_vector_with_fewer_values_than_default_axes_interpolates_the_first_ones() -> None:
+    # [000:3208]: VECTORA = 30,40 with the default AXES moves axes 0 and 1 along one line
+    source = 'VECTORA = 30, 40 : GO\nPAUSE IDLE[0,1]\nPRINT POS.0, " ", POS.1, " ", POS.2\n'
+    assert simulate(source).terminal == "30 40 0\n"
+
+
+def test_a_rate_change_during_a_vector_keeps_its_axes_on_one_line() -> None:
+    source = """VECTORA[0,1] = 3000, 4000 : GO[0,1]
+WAIT = 50
+SPEED.0 = 40000
+WAIT = 20
+PRINT POS.0 * 4 - POS.1 * 3
+PAUSE IDLE[0,1]
+PRINT POS.0, " ", POS.1
+"""
+    first, last = simulate(source).terminal.splitlines()
+    assert abs(float(first)) <= 4  # both axes re-planned together: still on the line 4x = 3y
+    assert last == "3000 4000"
+
+
+def test_dac_is_written_directly_only_on_an_axis_configured_off() -> None:
+    assert simulate("CONFIG.2 = _cfOFF\nDAC.2 = 25\nWAIT = 5\nPRINT DAC.2\n").terminal == "25\n"
+    assert simulate("DAC.2 = 25\n").err == 11
+
+
+def test_acceltime_sets_the_rate_that_reaches_speed_in_that_time() -> None:
+    # MP-4: SPEED = 5 : DECELTIME = 5000 gives DECEL = 1 [000:8965-8969]
+    source = 'SPEED.0 = 5 : DECELTIME.0 = 5000 : ACCELTIME.0 = 2500\nPRINT DECEL.0, " ", ACCEL.0\n'
+    assert simulate(source).terminal == "1 2\n"
+
+
+def test_switch_keywords_read_the_inputs_assigned_to_the_axis() -> None:
+    source = """REM @sim input 4 1 at 10
+LIMITFORWARDINPUT.0 = 4 : LIMITMODE.0 = 0 : STOPINPUT.1 = 4 : STOPINPUTMODE.1 = 0
+PRINT LIMIT.0, STOPSWITCH.1, LIMITREVERSE.0
+WAIT = 20
+PRINT LIMIT.0, LIMITFORWARD.0, STOPSWITCH.1, LIMITREVERSE.0, ERRORSWITCH.0
+"""
+    assert simulate(source).terminal == "000\n11100\n"

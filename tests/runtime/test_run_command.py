@@ -145,3 +145,10 @@ def test_a_host_program_talks_to_the_running_simulation_over_tcp(tmp_path: Path)
         process.kill()
     assert process.returncode == 0
     assert stdout == "host wrote 7\n"
+
+
+def test_the_report_lists_settings_the_simulation_does_not_model(tmp_path: Path) -> None:
+    result = mint_run(write(tmp_path, "settings.mnt", "ECHO = 0\nGEARING = 50\nPRINT GEARING\n"), "--report", "json")
+    report = json.loads(result.stdout[result.stdout.index("{") :])
+    assert result.stdout.startswith("50\n")
+    assert report["inert_settings"] == ["ECHO", "GEARING"]

@@ -1,0 +1,49 @@
+"""Settings the simulator accepts and remembers but that change nothing it models.
+
+They configure hardware the simulation has no counterpart for: terminal
+channels and echo (the simulator has one merged terminal), keypads, ADC input
+ranges (the scenario gives ADC values in percent directly), DAC output modes
+and gearing compensation (the ideal plant has no lag to compensate, spec FG-7).
+A program that sets them runs on; reading one back gives what was written. The
+report lists the ones a run used, so nobody mistakes them for simulated.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from mintlang.runtime.keywords import KeywordTable, per_channel
+
+INERT_SETTINGS: dict[str, float] = {
+    "TERMINAL": 123.0,
+    "ECHO": 7.0,
+    "PROTECT": 0.0,
+    "KEYPADNODE": 0.0,
+    "ADCMODE": 0.0,
+    "DACMODE": 0.0,
+    "GEARING": 0.0,
+    "GEARINGMODE": 0.0,
+}
+
+
+class InertSettings:
+    def __init__(self) -> None:
+        self.values: dict[tuple[str, int | None], float] = {}
+        self.used: set[str] = set()
+
+    def register(self, table: KeywordTable) -> None:
+        for name, default in INERT_SETTINGS.items():
+            table.register(name, read=self._reader(name, default), write=per_channel(self._writer(name)))
+
+    def _reader(self, name: str, default: float) -> Callable[[int | None], float]:
+        def read(channel: int | None) -> float:
+            return self.values.get((name, channel), default)
+
+        return read
+
+    def _writer(self, name: str) -> Callable[[int | None, float], None]:
+        def write(channel: int | None, value: float) -> None:
+            self.used.add(name)
+            self.values[(name, channel)] = value
+
+        return write

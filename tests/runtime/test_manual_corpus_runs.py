@@ -1,0 +1,37 @@
+"""The manual's examples on the simulator: run-time errors where the guide shows them, and never a crash.
+
+``tests/corpus/v4/runtime`` holds the errors only a running controller raises;
+each is run with every drive enabled (as a configuration file would) and must
+stop with the error number and line its header names. Every other v4 example
+must run to some ending - its end, an error, a deadlock, the time limit or a
+keyword the simulator says it does not model - without a Python exception.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from mintlang.runtime.interpreter.vm import StopReason
+from mintlang.runtime.run import run_source
+from mintlang.runtime.simulation import Limits
+from tests.corpus_files import CorpusCase, cases
+
+ENABLE_DRIVES = "RESETALL\n"
+
+
+@pytest.mark.parametrize("case", cases("v4/runtime"), ids=lambda case: case.name)
+def test_a_run_time_error_of_the_manual_is_raised_on_its_line(case: CorpusCase) -> None:
+    ((code, line),) = case.expected
+    result = run_source(case.source, config=ENABLE_DRIVES, controller=case.controller, limits=Limits(until_ms=1000))
+    assert result.stop.reason is StopReason.ERROR, result.stop
+    assert (f"E{int(result.err)}", int(result.erl)) == (code, line), result.stop.message
+
+
+@pytest.mark.parametrize("case", cases("v4/valid"), ids=lambda case: case.name)
+def test_every_example_of_the_manual_runs_to_an_ending(case: CorpusCase) -> None:
+    result = run_source(
+        case.source, config=ENABLE_DRIVES, controller=case.controller, limits=Limits(until_ms=300, max_wall_s=5.0)
+    )
+    assert result.stop.reason in set(StopReason)
+    if result.stop.reason is StopReason.ERROR:
+        assert result.stop.message, "an error ending always says why"

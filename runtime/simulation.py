@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.comms.packets import HostEndpoint
 from mintlang.runtime.comms.server import HostPortServer
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.events import EventClass, Events
 from mintlang.runtime.inert import InertSettings
 from mintlang.runtime.interpreter.program import Linked, link
@@ -30,6 +30,7 @@ from mintlang.runtime.motion.axis import ER_ABORT, Axis
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.extensions import EXTENSIONS
 from mintlang.runtime.motion.plants import IdealPlant, Plant, StalledPlant, TorquePlant, VelocityPlant
+from mintlang.runtime.motion.stop_input import StopInputs
 from mintlang.runtime.motion.supervision import Supervisor
 from mintlang.runtime.scenario.stimulus import PlantChoice, Scenario
 from mintlang.runtime.system import System
@@ -154,7 +155,12 @@ def build_controller(
             axis.crash_stop()
             axis.disable()
 
-    supervisor = Supervisor(io.is_active, raise_axis_error)
+    def raise_stop() -> None:
+        if events.has_handler(EventClass.STOP):
+            events.raise_event(EventClass.STOP)
+
+    stop_inputs = StopInputs(motion, raise_stop)
+    supervisor = Supervisor(motion, raise_axis_error, stop_inputs)
     motion.on_error = lambda axis, bit: supervisor.error(axis, bit, clock.now)
     vm.on_fatal = abort_all
     events.errors_latched = lambda: any(axis.axiserror for axis in axes)
@@ -244,7 +250,11 @@ class Simulator:
         t = 0
         try:
             while True:
-                self.tick(t)
+                try:
+                    self.tick(t)
+                except (MintError, NotSimulated) as fault:  # raised by the motion between two statements
+                    vm.stop(StopReason.ERROR, fault.describe() if isinstance(fault, MintError) else str(fault))
+                    vm.on_fatal()
                 if self.on_tick is not None:
                     self.on_tick(t)
                 if vm.stopped is not None:

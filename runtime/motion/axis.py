@@ -70,6 +70,7 @@ class Axis:
         self.dac = 0.0
         self.torque: float | None = None  # TORQUE mode: the DAC command
         self.open_loop_dac: float | None = None  # DAC written by the program on an axis configured off
+        self.held = False  # a stop input holds the axis (STOPINPUTMODE 1): its move stays, at rest, until released
         self.last_tick = 0
         self._setpoints: tuple[Move | None, int, float, int, float] = (None, -1, 0.0, -1, 0.0)
         self._last_demand = 0.0  # demand and demand velocity of the previous servo tick, for the feed-forwards
@@ -190,10 +191,12 @@ class Axis:
         if self.plant.closed_loop or (move is not None and move.live):
             return now + 1
         if move is not None:
+            if self.held and now >= move.end:
+                return NEVER  # at rest on a stop input: only the input clearing moves it on
             return now + 1 if self.watched_while_moving() else max(move.end, now + 1)
         if self.settling():
             return now + 1
-        if self.triggered:
+        if self.triggered and not self.held:
             return next_profiler_tick(now)
         return NEVER
 
@@ -227,12 +230,12 @@ class Axis:
         move = self.move
         if move is not None:
             move.profiler(tick)
-            if tick >= move.end:
+            if tick >= move.end and not self.held:
                 self.hold = move.demand(self.index_in_move, move.end)
                 self.move = None
                 if move.mode == self.pending_mode:
                     self.pending_mode = 0
-        if self.move is None and self.triggered and self.buffer:
+        if self.move is None and self.triggered and self.buffer and not self.held:
             start_group(self.buffer[0], tick)
 
     def begin(self, move: Move, index: int) -> None:
@@ -281,6 +284,7 @@ class Axis:
         """Decelerate at ``decel`` from ``tick`` where the move allows it; the buffer is emptied (MP-22)."""
         self.buffer.clear()
         self.triggered = 0
+        self.held = False
         move = self.move
         if move is None:
             self.pending_mode = 0
@@ -300,6 +304,7 @@ class Axis:
         self.move = None
         self.buffer.clear()
         self.triggered = 0
+        self.held = False
         self.pending_mode = 0
         self.torque = None
         self.target = self.hold

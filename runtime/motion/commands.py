@@ -10,7 +10,7 @@ from collections.abc import Callable, Sequence
 
 from mintlang.controllers import ControllerProfile
 from mintlang.runtime.clock import Clock
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, per_channel
 from mintlang.runtime.motion.axis import (
     ER_ABORT,
@@ -30,6 +30,7 @@ from mintlang.runtime.scenario.stimulus import IndexPulse
 
 INVALID_AXIS = 2
 WRONG_CONFIGURATION = 11
+SMART_SOFT_LIMITS = 4
 CONFIG_OFF = 0
 _PROFILE_RATES = frozenset({"SPEED", "ACCEL", "DECEL"})
 _SWITCHES: dict[str, tuple[str, ...]] = {
@@ -201,16 +202,33 @@ class Motion:
         tick = next_profiler_tick(self.clock.now)
         for axis in self.addressed(channels):
             if axis.torque is not None:
-                axis.crash_stop()
-                continue
-            stopped = axis.controlled_stop(tick, axis.parameters["DECEL"])
-            for number in stopped.axes if stopped is not None else ():
-                other = self.axes[number]
-                if other is not axis:
-                    other.buffer.clear()
-                    other.triggered = 0
-                    other.move = stopped
+                self.crash_group(axis)
+            else:
+                self.stop_group(axis, tick, axis.parameters["DECEL"])
         return False
+
+    def stop_group(self, axis: Axis, tick: int, decel: float) -> None:
+        """A controlled stop of ``axis`` and of every axis interpolating with it (they share one move)."""
+        moving = axis.move
+        stopped = axis.controlled_stop(tick, decel)
+        for number in moving.axes if moving is not None else ():
+            other = self.axes[number]
+            if other is not axis and other.move is moving:
+                other.buffer.clear()
+                other.triggered = 0
+                if stopped is None:
+                    other.crash_stop()
+                else:
+                    other.move = stopped
+
+    def crash_group(self, axis: Axis) -> None:
+        """A crash stop of ``axis`` and of every axis interpolating with it."""
+        moving = axis.move
+        axis.crash_stop()
+        for number in moving.axes if moving is not None else ():
+            other = self.axes[number]
+            if other.move is moving:
+                other.crash_stop()
 
     def cancel(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         """CANCEL: crash stop, errors cleared, demand := measured; the drive stays as it is (EV-19)."""
@@ -336,6 +354,8 @@ class Motion:
     def _parameter_writer(self, name: str) -> Callable[[int | None, float], None]:
         def write(channel: int | None, value: float) -> None:
             axis = self.axis(channel)
+            if name == "SOFTLIMITMODE" and value == SMART_SOFT_LIMITS:
+                raise NotSimulated("SOFTLIMITMODE", "smart mode 4")
             axis.set(name, value)
             if name in _PROFILE_RATES and axis.move is not None and axis.move.axes[0] == axis.number:
                 self._replan(axis)

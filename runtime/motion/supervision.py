@@ -21,7 +21,9 @@ from mintlang.runtime.motion.axis import (
     ER_STOP_INPUT,
     Axis,
 )
+from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.moves import next_profiler_tick
+from mintlang.runtime.motion.stop_input import StopInputs
 
 IGNORE, CRASH_STOP_DISABLE, CRASH_STOP, ERROR_DECEL, CALL_HANDLER = 0, 1, 2, 3, 5
 MODE_OF_ERROR = {
@@ -37,9 +39,11 @@ MODE_OF_ERROR = {
 class Supervisor:
     """Checks each enabled axis once per servo tick and applies the default actions."""
 
-    def __init__(self, is_active: Callable[[int], bool], raise_error: Callable[[Axis], None]) -> None:
-        self.is_active = is_active  # digital input channel -> active now
+    def __init__(self, motion: Motion, raise_error: Callable[[Axis], None], stop_inputs: StopInputs) -> None:
+        self.motion = motion
+        self.is_active = motion.input_active  # digital input channel -> active now
         self.raise_error = raise_error  # #ONERROR pending (or the end of the run without a handler)
+        self.stop_inputs = stop_inputs
 
     def check(self, axis: Axis, tick: int) -> None:
         p = axis.parameters
@@ -64,8 +68,11 @@ class Supervisor:
         if error_input >= 0 and self.is_active(error_input):
             status |= ER_ERROR_INPUT
         stop_input = int(p["STOPINPUT"])
-        if stop_input >= 0 and self.is_active(stop_input):
-            status |= ER_STOP_INPUT
+        if stop_input >= 0:
+            active = self.is_active(stop_input)
+            if active:
+                status |= ER_STOP_INPUT
+            self.stop_inputs.update(axis, active, tick)
         axis.status = status
         fresh = status & ~axis.axiserror & ~ER_STOP_INPUT
         if not fresh:
@@ -84,9 +91,9 @@ class Supervisor:
             return
         axis.latch(bit)
         if mode in (CRASH_STOP_DISABLE, CRASH_STOP) or (mode == ERROR_DECEL and axis.move is None):
-            axis.crash_stop()
+            self.motion.crash_group(axis)
             if mode == CRASH_STOP_DISABLE:
                 axis.disable()
         elif mode == ERROR_DECEL:
-            axis.controlled_stop(next_profiler_tick(tick), axis.parameters["ERRORDECEL"])
+            self.motion.stop_group(axis, next_profiler_tick(tick), axis.parameters["ERRORDECEL"])
         self.raise_error(axis)

@@ -30,6 +30,17 @@ MOTION_IN_PROGRESS = 10
 MOTION_ERROR = 12
 DRIVE_NOT_ENABLED = 40
 SERVO_TICK_S = 0.001
+GUARDS = frozenset(
+    {
+        "LIMITFORWARDINPUT",
+        "LIMITREVERSEINPUT",
+        "ERRORINPUT",
+        "STOPINPUT",
+        "SOFTLIMITFORWARD",
+        "SOFTLIMITREVERSE",
+        "SCALE",
+    }
+)
 
 
 @dataclass(frozen=True, slots=True)
@@ -70,6 +81,7 @@ class Axis:
         self.dac = 0.0
         self.torque: float | None = None  # TORQUE mode: the DAC command
         self.open_loop_dac: float | None = None  # DAC written by the program on an axis configured off
+        self.guarded = False  # some limit, error or stop input, or a software limit, needs checking each tick
         self.held = False  # a stop input holds the axis (STOPINPUTMODE 1): its move stays, at rest, until released
         self.last_tick = 0
         self._setpoints: tuple[Move | None, int, float, int, float] = (None, -1, 0.0, -1, 0.0)
@@ -96,6 +108,8 @@ class Axis:
             if self.busy():
                 raise MintError(MOTION_IN_PROGRESS, self.number, "SCALE can only change on an idle axis")
         self.parameters[name] = value * self.scale if name in SCALED else value
+        if name in GUARDS:
+            self.guarded = self._guarded()
         if name in GAINS:
             p = self.parameters
             self.servo.gains = ServoGains(
@@ -157,6 +171,14 @@ class Axis:
 
     def velocity_counts(self) -> float:
         return (self.measured - self.previous_measured) / SERVO_TICK_S
+
+    def _guarded(self) -> bool:
+        p = self.parameters
+        return (
+            any(p[name] >= 0 for name in ("LIMITFORWARDINPUT", "LIMITREVERSEINPUT", "ERRORINPUT", "STOPINPUT"))
+            or p["SOFTLIMITFORWARD"] != DEFAULTS["SOFTLIMITFORWARD"]
+            or p["SOFTLIMITREVERSE"] != DEFAULTS["SOFTLIMITREVERSE"]
+        )
 
     def dormant(self) -> bool:
         """Disabled, still and on a plant that cannot move by itself: a tick would change nothing.

@@ -47,9 +47,13 @@ class Supervisor:
 
     def check(self, axis: Axis, tick: int) -> None:
         p = axis.parameters
-        status = 0
-        if axis.enabled and abs(axis.demand - axis.measured) > p["FOLERRORFATAL"]:
-            status |= ER_FOLLOWING
+        following = axis.enabled and abs(axis.demand - axis.measured) > p["FOLERRORFATAL"]
+        if not axis.guarded:  # no limit, error or stop input and default software limits: the common case
+            axis.status = ER_FOLLOWING if following else 0
+            if following and not axis.axiserror & ER_FOLLOWING:
+                self.error(axis, ER_FOLLOWING, tick)
+            return
+        status = ER_FOLLOWING if following else 0
         forward = int(p["LIMITFORWARDINPUT"])
         reverse = int(p["LIMITREVERSEINPUT"])
         position = axis.demand - axis.position_offset

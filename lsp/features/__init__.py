@@ -13,6 +13,7 @@ from mintlang.lsp.features import (
     semantic_tokens,
     settings,
     signature,
+    simulator,
     symbols,
 )
 
@@ -30,4 +31,5 @@ FEATURES = (
     formatting,
     code_actions,
     inlay_hints,
+    simulator,
 )

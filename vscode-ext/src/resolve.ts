@@ -126,7 +126,10 @@ export function resolveTool(tool: Tool, settings: ToolSettings, host: Host): Res
 
 /** The arguments a command-line tool takes for one file; migration targets the configured controller. */
 export function toolArguments(tool: FileTool, file: string, controller: Controller): string[] {
-  return tool === "mint-migrate" ? ["--write", "--controller", controller, file] : [file];
+  // A simulated run is bounded in real time, so a program that never ends cannot hang the editor.
+  return tool === "mint-migrate"
+    ? ["--write", "--controller", controller, file]
+    : ["--controller", controller, "--max-wall-s", "30", file];
 }
 
 /** The command line that runs `tool` on `file`, or why there is none. */

@@ -112,9 +112,15 @@ test("Windows: Scripts folder, .exe names, ; in PATH", () => {
   assert.deepEqual(commandOf(resolveTool("mint-run", NONE, host)), ["C:\\Python312\\Scripts\\mint-run.exe"]);
 });
 
-test("migrate rewrites the file in place for the configured controller; run takes the file alone", () => {
+test("migrate rewrites the file in place and run simulates it, both for the configured controller", () => {
   assert.deepEqual(toolArguments("mint-migrate", "/p/a.mnt", "nextmove-bx"), ["--write", "--controller", "nextmove-bx", "/p/a.mnt"]);
-  assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", "nextmove-bx"), ["/p/a.mnt"]);
+  assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", "nextmove-bx"), [
+    "--controller",
+    "nextmove-bx",
+    "--max-wall-s",
+    "30",
+    "/p/a.mnt",
+  ]);
 });
 
 test("file commands append the file arguments to the resolved command", () => {
@@ -130,6 +136,10 @@ test("file commands append the file arguments to the resolved command", () => {
     "/usr/bin/python3",
     "-m",
     "mintlang.runtime",
+    "--controller",
+    "nextmove-pci",
+    "--max-wall-s",
+    "30",
     "/work/robot/a.mnt",
   ]);
   assert.equal(fileCommand("mint-run", "/work/robot/a.mnt", NONE, host).ok, false);

@@ -129,3 +129,24 @@ RETURN
     result = simulate(source)
     assert result.stop.reason is StopReason.END
     assert 140 <= float(result.terminal) <= 150
+
+
+def test_events_of_one_tick_run_in_nextmove_priority_order() -> None:
+    # EV-2: #FASTINx before #TIMER before #INx, whatever order they were raised in
+    source = """REM @sim input 5 1 at 100
+REM @sim fastin 1 at 100
+INPUTMODE = 32
+TIMEREVENT = 100
+WAIT = 150
+END
+#IN5
+PRINT "in5"
+RETURN
+#TIMER
+PRINT "timer"
+RETURN
+#FASTIN1
+PRINT "fastin1"
+RETURN
+"""
+    assert simulate(source).terminal == "fastin1\ntimer\nin5\n"

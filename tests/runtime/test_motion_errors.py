@@ -110,3 +110,17 @@ def test_a_move_while_an_error_is_latched_is_error_12() -> None:
     source = "ABORT\nEND\n#ONERROR\nDIM tried = 0\nIF tried = 0 DO\n  tried = 1\n  MOVER.0 = 10\nENDIF\nRETURN\n"
     result = simulate(source)
     assert result.err == 12
+
+
+def test_the_error_input_crash_stops_and_removes_the_drive_enable() -> None:
+    # AX-16: ERRORINPUT raises _erERROR_INPUT (bit 7) with the default action of mode 1
+    source = """REM @sim input 9 1 at 50
+ERRORINPUT.0 = 9
+JOG.0 = 1000
+WAIT = 100
+END
+#ONERROR
+PRINT "error ", ERR, " bits ", AXISERROR.0, " drive ", DRIVEENABLE.0, " switch ", ERRORSWITCH.0
+RETURN
+"""
+    assert simulate(source).terminal.startswith("error 500 bits 128 drive 0 switch 1\n")

@@ -140,3 +140,16 @@ WAIT = 20
 PRINT LIMIT.0, LIMITFORWARD.0, STOPSWITCH.1, LIMITREVERSE.0, ERRORSWITCH.0
 """
     assert simulate(source).terminal == "000\n11100\n"
+
+
+def test_loading_into_a_full_buffer_waits_until_a_move_finishes() -> None:
+    # MP-25: the third move of a two-move buffer suspends the program until the first one is done
+    source = """MOVER.0 = 1000 : GO.0
+MOVER.0 = 1000 : GO.0
+MOVER.0 = 1000 : GO.0
+PRINT "third loaded at ", TIME, " free ", MOVEBUFFERFREE.0
+PAUSE IDLE.0
+PRINT POS.0
+"""
+    first_move_ends = 2 + 2 * math.ceil(trapezoid_ms(1000, 20000, 300000, 300000) / 2)
+    assert simulate(source).terminal == f"third loaded at {first_move_ends} free 0\n3000\n"

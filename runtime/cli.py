@@ -19,6 +19,7 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
 from mintlang.cli.options import controller_option
 from mintlang.keyworddb.model import Controller as ControllerName
+from mintlang.runtime.controller import Controller
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.report import as_json
 from mintlang.runtime.run import RunResult, run_source
@@ -30,7 +31,7 @@ from mintlang.runtime.scenario import (
     render_outcomes,
 )
 from mintlang.runtime.scenario.stimulus import Scenario
-from mintlang.runtime.simulation import Controller, Limits
+from mintlang.runtime.simulation import Limits
 from mintlang.runtime.trace import PlotUnavailable, Trace
 from mintlang.source import read_source
 

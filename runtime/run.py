@@ -13,21 +13,14 @@ from dataclasses import dataclass
 import mintlang
 from mintlang.diagnostics import Severity
 from mintlang.keyworddb.model import Controller as ControllerName
+from mintlang.runtime.controller import Controller, build_controller
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter.vm import StopReason
+from mintlang.runtime.observation import AxisState, Observation, axis_state
 from mintlang.runtime.scenario import ScenarioFileError, merge, parse_directives
 from mintlang.runtime.scenario.expectations import Outcome, evaluate
 from mintlang.runtime.scenario.stimulus import Scenario
-from mintlang.runtime.simulation import (
-    AxisState,
-    Controller,
-    Limits,
-    Observation,
-    Simulator,
-    Stop,
-    axis_state,
-    build_controller,
-)
+from mintlang.runtime.simulation import Limits, Simulator, Stop
 
 
 @dataclass(frozen=True, slots=True)
@@ -82,7 +75,9 @@ def run_source(
                 message = f"C{diagnostic.mint_error or 0:04d}: {unit.upper()} {diagnostic.message} [line {line}]"
                 return _not_run("compile", message, line, unit, text)
     try:
-        built = build_controller(analysis.model, scenario, limits, echo)
+        built = build_controller(
+            analysis.model, scenario, slice_statements=limits.slice_statements, host_port=limits.host_port, echo=echo
+        )
     except NotSimulated as missing:
         return _not_run("unsupported", str(missing), None, None, None)
     except MintError as error:

@@ -11,7 +11,7 @@ import csv
 from pathlib import Path
 from typing import IO
 
-from mintlang.runtime.simulation import Controller
+from mintlang.runtime.controller import Controller
 
 AXIS_COLUMNS = ("demand", "pos", "vel", "folerror", "axismode", "axiserror", "dac")
 

@@ -50,7 +50,7 @@ class Motion:
 
     def __init__(self, axes: Sequence[Axis], profile: ControllerProfile, clock: Clock) -> None:
         self.axes = list(axes)
-        self.profile = profile
+        self.profile = profile  # the controller, for what only some support (OFFSET without GO on MintDrive)
         self.clock = clock
         self.on_error: Callable[[Axis, int], None] = lambda axis, bit: None  # latch + default action + #ONERROR
         self.input_active: Callable[[int], bool] = lambda channel: False  # a digital input's state this tick

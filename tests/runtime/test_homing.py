@@ -17,9 +17,10 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from mintlang.runtime.controller import Controller
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.run import RunResult, run_source
-from mintlang.runtime.simulation import Controller, Limits
+from mintlang.runtime.simulation import Limits
 from tests.runtime.running import observable, simulate
 
 SWITCH_BELOW = "REM @sim input 5 when enc 0 <= -2000\nHOMEINPUT.0 = 5\n"  # the switch for a negative seek

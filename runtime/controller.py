@@ -1,0 +1,139 @@
+"""The simulated controller wired together: axes, I/O, events, terminal, comms, world and the program.
+
+``build_controller`` compiles the application into the interpreter and
+connects every part: motion errors reach ``#ONERROR`` (or end the run), stop
+inputs reach ``#STOP``, host writes reach ``#COMMSx``, and an unhandled error
+aborts every axis, as a NextMove does.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from mintlang.runtime.clock import Clock
+from mintlang.runtime.comms.packets import HostEndpoint
+from mintlang.runtime.comms.server import HostPortServer
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.events import EventClass, Events
+from mintlang.runtime.inert import InertSettings
+from mintlang.runtime.interpreter.program import Linked, link
+from mintlang.runtime.interpreter.vm import Interpreter, StopReason
+from mintlang.runtime.io import DigitalIO
+from mintlang.runtime.keywords import KeywordTable
+from mintlang.runtime.motion.axis import ER_ABORT, Axis
+from mintlang.runtime.motion.commands import Motion
+from mintlang.runtime.motion.extensions import EXTENSIONS
+from mintlang.runtime.motion.plants import IdealPlant, Plant, StalledPlant, TorquePlant, VelocityPlant
+from mintlang.runtime.motion.stop_input import StopInputs
+from mintlang.runtime.motion.supervision import Supervisor
+from mintlang.runtime.scenario.stimulus import PlantChoice, Scenario
+from mintlang.runtime.system import System
+from mintlang.runtime.terminal import Terminal
+from mintlang.runtime.world import World
+from mintlang.semantic.model import SemanticModel
+
+AXIS_ERROR_PRESENT = 500  # ERR in #ONERROR for an asynchronous motion error (EV-17 RC)
+
+
+def build_plant(choice: PlantChoice | None) -> Plant:
+    if choice is None or choice.model == "ideal":
+        return IdealPlant()
+    if choice.model == "stalled":
+        return StalledPlant()
+    if choice.model == "velamp":
+        return VelocityPlant(**{"counts_per_second": 1000.0, **choice.parameters})
+    return TorquePlant(**dict(choice.parameters))
+
+
+@dataclass(slots=True)
+class Controller:
+    """Every part of the simulated controller, wired together."""
+
+    clock: Clock
+    table: KeywordTable
+    vm: Interpreter
+    terminal: Terminal
+    axes: list[Axis]
+    motion: Motion
+    io: DigitalIO
+    events: Events
+    system: System
+    world: World
+    supervisor: Supervisor
+    linked: Linked
+    endpoint: HostEndpoint
+    inert: InertSettings
+    server: HostPortServer | None = None
+
+
+def build_controller(
+    model: SemanticModel,
+    scenario: Scenario,
+    *,
+    slice_statements: int = 20,
+    host_port: int | None = None,
+    echo: Callable[[str], None] | None = None,
+) -> Controller:
+    """Assemble the controller for ``model``; raises ``NotSimulated`` or ``MintError`` when it cannot compile."""
+    profile = model.controller
+    clock = Clock()
+    table = KeywordTable()
+    terminal = Terminal(echo)
+    vm = Interpreter(clock, profile.nesting, slice_statements)
+    plants = {choice.axis: choice for choice in scenario.plants}
+    axes = [
+        Axis(number, profile.controller, clock, build_plant(plants.get(number))) for number in range(profile.axis_count)
+    ]
+    vm.default_axes = tuple(range(len(axes)))
+    motion = Motion(axes, profile, clock)
+    handlers: dict[str, int] = {}
+    events = Events(clock, handlers, lambda message: vm.stop(StopReason.ERROR, message))
+    io = DigitalIO(profile, clock, events)
+    system = System(clock, vm, terminal, axes, table)
+    inert = InertSettings()
+    for part in (motion, io, events, system, inert):
+        part.register(table)
+    for extend in EXTENSIONS:
+        extend(table, motion)
+    motion.input_active = io.is_active
+    motion.index_pulses = {pulse.axis: pulse for pulse in scenario.index_pulses}
+    linked = link(model, vm, table, terminal)
+    handlers.update(linked.handlers)
+    vm.events = events
+    endpoint = HostEndpoint(system.comms, lambda: system.node)
+
+    def raise_axis_error(axis: Axis) -> None:
+        site = vm.current_site()
+        vm.record_error(AXIS_ERROR_PRESENT, site.line if site else 0, axis.number)
+        if events.error_handler() is not None:
+            events.raise_event(EventClass.ERROR)
+            return
+        vm.stop(
+            StopReason.ERROR, MintError(AXIS_ERROR_PRESENT, axis.number).describe() + f" (AXISERROR {axis.axiserror})"
+        )
+        abort_all()
+
+    def abort_all() -> None:
+        for axis in axes:
+            axis.latch(ER_ABORT)
+            axis.crash_stop()
+            axis.disable()
+
+    def raise_stop() -> None:
+        if events.has_handler(EventClass.STOP):
+            events.raise_event(EventClass.STOP)
+
+    stop_inputs = StopInputs(motion, raise_stop)
+    supervisor = Supervisor(motion, raise_axis_error, stop_inputs)
+    motion.on_error = lambda axis, bit: supervisor.error(axis, bit, clock.now)
+    vm.on_fatal = abort_all
+    events.errors_latched = lambda: any(axis.axiserror for axis in axes)
+
+    events.on_fastin_return = lambda number: setattr(system, "fast_armed", True)
+    world = World(scenario, io=io, axes=axes, terminal=terminal, host=endpoint.receive)
+    io.next_input_change = lambda: world.next_change(clock.now)
+    server = HostPortServer(host_port) if host_port is not None else None
+    return Controller(
+        clock, table, vm, terminal, axes, motion, io, events, system, world, supervisor, linked, endpoint, inert, server
+    )

@@ -1,0 +1,81 @@
+"""What a run looks like from outside: the final state of each axis, and answers to expectations."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from mintlang.runtime.controller import Controller
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.motion.axis import Axis
+
+
+@dataclass(frozen=True, slots=True)
+class AxisState:
+    pos: float
+    vel: float
+    folerror: float
+    axismode: int
+    axiserror: int
+    axisstatus: int
+    dac: float
+    idle: bool
+    enabled: bool
+
+
+def axis_state(axis: Axis) -> AxisState:
+    return AxisState(
+        pos=(axis.measured - axis.position_offset) / axis.scale,
+        vel=axis.velocity_counts() / axis.scale,
+        folerror=(axis.demand - axis.measured) / axis.scale,
+        axismode=axis.axismode,
+        axiserror=axis.axiserror,
+        axisstatus=axis.status | axis.axiserror,
+        dac=axis.dac,
+        idle=axis.idle(),
+        enabled=axis.enabled,
+    )
+
+
+_TARGET = re.compile(r"(?P<name>[A-Z_][A-Z0-9_]*)(?:\.(?P<channel>\d+))?(?:\((?P<index>-?\d+)\))?")
+
+
+class Observation:
+    """Answers expectations about a running controller (the ``Observer`` of the scenario layer)."""
+
+    def __init__(self, controller: Controller, stopped: str = "") -> None:
+        self.c = controller
+        self.stopped = stopped
+
+    @property
+    def terminal(self) -> str:
+        return self.c.terminal.text
+
+    @property
+    def axes(self) -> tuple[int, ...]:
+        return tuple(range(len(self.c.axes)))
+
+    def value(self, target: str) -> float | None:
+        found = _TARGET.fullmatch(target)
+        if found is None:
+            return None
+        name, channel, index = found["name"], found["channel"], found["index"]
+        access = self.c.table.get(name)
+        try:
+            if access is not None and access.read is not None:
+                if index is not None:
+                    return access.read(int(index))
+                return access.read(int(channel) if channel is not None else None)
+            names = self.c.linked.names
+            identity = name[:10]
+            if index is not None:
+                slot = names.arrays.get(identity)
+                if slot is None:
+                    return None
+                values = self.c.vm.arrays[slot]
+                position = int(index)
+                return values[position - 1] if 1 <= position <= len(values) else None
+            slot = names.scalars.get(identity)
+            return self.c.vm.scalars[slot] if slot is not None else None
+        except MintError:
+            return None

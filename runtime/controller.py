@@ -15,7 +15,7 @@ from mintlang.runtime.clock import Clock
 from mintlang.runtime.comms.packets import HostEndpoint
 from mintlang.runtime.comms.server import HostPortServer
 from mintlang.runtime.errors import MintError
-from mintlang.runtime.events import EventClass, Events
+from mintlang.runtime.events import MINTDRIVE, NEXTMOVE, EventClass, Events
 from mintlang.runtime.inert import InertSettings
 from mintlang.runtime.interpreter.program import Linked, link
 from mintlang.runtime.interpreter.vm import Interpreter, StopReason
@@ -88,7 +88,8 @@ def build_controller(
     vm.default_axes = tuple(range(len(axes)))
     motion = Motion(axes, profile, clock)
     handlers: dict[str, int] = {}
-    events = Events(clock, handlers, lambda message: vm.stop(StopReason.ERROR, message))
+    dispatch = NEXTMOVE if profile.controller.value.startswith("nextmove") else MINTDRIVE
+    events = Events(clock, handlers, lambda message: vm.stop(StopReason.ERROR, message), dispatch)
     io = DigitalIO(profile, clock, events)
     system = System(clock, vm, terminal, axes, table)
     inert = InertSettings()

@@ -1,10 +1,13 @@
-"""Mint events: which handler runs when, as a NextMove dispatches them (spec §7).
+"""Mint events: which handler runs when, as the controller dispatches them (spec §7).
 
-Each event class has a rank (its priority, 0 highest) and the bit that
-``EVENTDISABLE`` and ``EVENTPENDING`` use for it. A pending event runs at the
-next statement boundary if its class is enabled, its handler exists and it
-outranks the handler already running; a handler of the same class waits until
-the running one returns. A disabled class keeps its pending flag.
+Each event class has a rank (its priority, 0 highest) and a bit in the
+controller's disable and pending masks. A pending event runs at the next
+statement boundary if its class is enabled and its handler exists. On NextMove
+it pre-empts a lower-ranked handler that is running (a handler of the same
+class waits until the running one returns); on MintDrive and ServoNode 51
+handlers do not pre-empt one another, except ``#ONERROR``, and the order and
+the mask layout (``HANDLERDISABLE``/``HANDLERPENDING``) differ (EV-2, EV-3, EV-5).
+A disabled class keeps its pending flag.
 """
 
 from __future__ import annotations
@@ -18,11 +21,10 @@ from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
 
 ONERROR_REENTRY_LIMIT = 100  # consecutive re-entries of #ONERROR with an error still latched (AX-7 RC)
-TIMER_MINIMUM_MS = 10
 
 
 class EventClass(IntEnum):
-    """Classes in NextMove priority order (EV-2); the value is the rank."""
+    """The event classes, in NextMove priority order (EV-2)."""
 
     ERROR = 0
     CAN1 = 1
@@ -34,38 +36,70 @@ class EventClass(IntEnum):
     COMMS = 7
 
 
-@dataclass(frozen=True, slots=True)
-class _ClassInfo:
-    bit: int  # EVENTDISABLE / EVENTPENDING
-    label: str  # the handler label, followed by the event's number where it has one
-
-
-_CLASSES: Mapping[EventClass, _ClassInfo] = {
-    EventClass.ERROR: _ClassInfo(1 << 1, "ONERROR"),
-    EventClass.CAN1: _ClassInfo(1 << 2, "CAN1"),
-    EventClass.CAN2: _ClassInfo(1 << 3, "CAN2"),
-    EventClass.STOP: _ClassInfo(1 << 4, "STOP"),
-    EventClass.FASTIN: _ClassInfo(1 << 5, "FASTIN"),
-    EventClass.TIMER: _ClassInfo(1 << 6, "TIMER"),
-    EventClass.INPUT: _ClassInfo(1 << 7, "IN"),
-    EventClass.COMMS: _ClassInfo(1 << 8, "COMMS"),
+_LABELS: Mapping[EventClass, str] = {  # the handler label, followed by the event's number where it has one
+    EventClass.ERROR: "ONERROR",
+    EventClass.CAN1: "CAN1",
+    EventClass.CAN2: "CAN2",
+    EventClass.STOP: "STOP",
+    EventClass.FASTIN: "FASTIN",
+    EventClass.TIMER: "TIMER",
+    EventClass.INPUT: "IN",
+    EventClass.COMMS: "COMMS",
 }
 _NUMBERED = frozenset({EventClass.FASTIN, EventClass.INPUT, EventClass.COMMS})
+_E = EventClass
+
+
+@dataclass(frozen=True, slots=True)
+class Dispatch:
+    """How a controller dispatches events: priority order, pre-emption and its mask keywords."""
+
+    order: tuple[EventClass, ...]  # highest priority first; the index is the rank the interpreter sees
+    preemptive: bool
+    disable_keyword: str
+    pending_keyword: str
+    bits: Mapping[EventClass, int]  # the class's bit in those masks
+    timer_minimum_ms: int  # the shortest TIMEREVENT period (T-11)
+
+
+NEXTMOVE = Dispatch(
+    order=(_E.ERROR, _E.CAN1, _E.CAN2, _E.STOP, _E.FASTIN, _E.TIMER, _E.INPUT, _E.COMMS),
+    preemptive=True,
+    disable_keyword="EVENTDISABLE",
+    pending_keyword="EVENTPENDING",
+    bits={_E.ERROR: 2, _E.CAN1: 4, _E.CAN2: 8, _E.STOP: 16, _E.FASTIN: 32, _E.TIMER: 64, _E.INPUT: 128, _E.COMMS: 256},
+    timer_minimum_ms=10,
+)
+MINTDRIVE = Dispatch(
+    order=(_E.ERROR, _E.FASTIN, _E.STOP, _E.CAN1, _E.CAN2, _E.TIMER, _E.INPUT, _E.COMMS),
+    preemptive=False,
+    disable_keyword="HANDLERDISABLE",
+    pending_keyword="HANDLERPENDING",
+    bits={_E.ERROR: 1, _E.FASTIN: 2, _E.STOP: 4, _E.CAN1: 8, _E.CAN2: 16, _E.TIMER: 32, _E.INPUT: 64, _E.COMMS: 256},
+    timer_minimum_ms=40,
+)
 
 
 class Events:
     """Pending events and their dispatch; the interpreter polls ``pending`` between statements."""
 
-    def __init__(self, clock: Clock, handlers: Mapping[str, int], on_runaway: Callable[[str], None]) -> None:
+    def __init__(
+        self,
+        clock: Clock,
+        handlers: Mapping[str, int],
+        on_runaway: Callable[[str], None],
+        dispatch: Dispatch = NEXTMOVE,
+    ) -> None:
         self.clock = clock
+        self.dispatch = dispatch
         self.handlers = handlers  # label identity -> pc
         self.on_runaway = on_runaway
         self.errors_latched: Callable[[], bool] = lambda: False
         self.on_fastin_return: Callable[[int], None] = lambda number: None
-        self.disabled = 0  # EVENTDISABLE
+        self.disabled: frozenset[EventClass] = frozenset()  # EVENTDISABLE / HANDLERDISABLE
         self.imask = 0xFFFFFF  # IMASK: every input may raise #INx
         self._pending: dict[EventClass, set[int]] = {kind: set() for kind in EventClass}
-        self.pending = 0  # EVENTPENDING bits; non-zero when anything may be dispatched
+        self.pending = 0  # the pending mask (EVENTPENDING or HANDLERPENDING); non-zero when anything may be dispatched
         self.timer_period = 0  # TIMEREVENT, ms; 0 = off
         self.next_timer = NEVER
         self._onerror_entries = 0
@@ -75,13 +109,13 @@ class Events:
 
     def raise_event(self, kind: EventClass, number: int = 0) -> None:
         self._pending[kind].add(number)
-        self.pending |= _CLASSES[kind].bit
+        self.pending |= self.dispatch.bits[kind]
 
     def has_handler(self, kind: EventClass, number: int = 0) -> bool:
         return self._handler(kind, number) is not None
 
     def _handler(self, kind: EventClass, number: int) -> int | None:
-        label = _CLASSES[kind].label
+        label = _LABELS[kind]
         if kind in _NUMBERED:
             found = self.handlers.get(f"{label}{number}")
             if found is None and kind is EventClass.FASTIN:
@@ -95,12 +129,14 @@ class Events:
     # ------------------------------------------------------------ dispatching
 
     def take(self, running_rank: int | None) -> tuple[int, int] | None:
-        for kind in EventClass:
+        """The (rank, handler pc) to call now, given the rank of the handler running (None: the program)."""
+        dispatch = self.dispatch
+        for rank, kind in enumerate(dispatch.order):
             numbers = self._pending[kind]
-            if not numbers or self.disabled & _CLASSES[kind].bit:
+            if not numbers or kind in self.disabled:
                 continue
-            if running_rank is not None and kind >= running_rank:
-                return None  # a handler of this class or a higher one is running: wait for it
+            if running_rank is not None and (rank >= running_rank or (not dispatch.preemptive and rank)):
+                return None  # wait for the running handler (only #ONERROR interrupts without pre-emption)
             for number in sorted(numbers):
                 if kind is EventClass.INPUT and not self.imask >> number & 1:
                     continue
@@ -108,15 +144,15 @@ class Events:
                 handler = self._handler(kind, number)
                 if handler is not None:
                     self._refresh()
-                    self._running_number[kind] = number
+                    self._running_number[rank] = number
                     if kind is EventClass.ERROR:
                         self._onerror_entries += 1
-                    return int(kind), handler
+                    return rank, handler
             self._refresh()
         return None
 
     def handler_returned(self, rank: int) -> None:
-        kind = EventClass(rank)
+        kind = self.dispatch.order[rank]
         number = self._running_number.pop(rank, 0)
         if kind is EventClass.FASTIN:
             self.on_fastin_return(number)
@@ -134,17 +170,18 @@ class Events:
         self.raise_event(EventClass.ERROR)
 
     def _refresh(self) -> None:
-        self.pending = sum(_CLASSES[kind].bit for kind, numbers in self._pending.items() if numbers)
+        self.pending = sum(self.dispatch.bits[kind] for kind, numbers in self._pending.items() if numbers)
 
     # ------------------------------------------------------------------ timer
 
     def set_timer(self, period: float) -> None:
-        """``TIMEREVENT``: 0 stops it; otherwise at least 10 ms, odd values rounded up (T-11 RC)."""
+        """``TIMEREVENT``: 0 stops it; otherwise at least the controller's minimum, odd values rounded up (T-11 RC)."""
         value = int(period)
         if value < 0:
             raise MintError(3, detail="TIMEREVENT cannot be negative")
-        if value and value < TIMER_MINIMUM_MS:
-            value = TIMER_MINIMUM_MS
+        minimum = self.dispatch.timer_minimum_ms
+        if value and value < minimum:
+            value = minimum
         value += value % 2
         self.timer_period = value
         self.next_timer = self.clock.now + value if value else NEVER
@@ -159,24 +196,44 @@ class Events:
     # ------------------------------------------------------------- keywords
 
     def register(self, table: KeywordTable) -> None:
-        table.register("EVENTDISABLE", read=lambda _: float(self.disabled), write=per_channel(self._disable))
-        table.register("EVENTPENDING", read=lambda _: float(self.pending), write=per_channel(self._force))
+        for dispatch in (NEXTMOVE, MINTDRIVE):
+            table.register(
+                dispatch.disable_keyword, read=self._disabled_mask(dispatch), write=per_channel(self._disable(dispatch))
+            )
+            table.register(
+                dispatch.pending_keyword, read=self._pending_mask(dispatch), write=per_channel(self._force(dispatch))
+            )
         table.register("IMASK", read=lambda _: float(self.imask), write=per_channel(self._mask))
         table.register("IPEND", read=lambda _: float(self._bits(EventClass.INPUT)), write=per_channel(self._ipend))
         table.register("TIMEREVENT", read=lambda _: float(self.timer_period), write=per_channel(self._timer))
 
-    def _disable(self, _: int | None, value: float) -> None:
-        self.disabled = int(value) & 0x1FF
+    def _disabled_mask(self, dispatch: Dispatch) -> Callable[[int | None], float]:
+        return lambda _: float(sum(bit for kind, bit in dispatch.bits.items() if kind in self.disabled))
 
-    def _force(self, _: int | None, value: float) -> None:
-        bits = int(value)
-        for kind, info in _CLASSES.items():
-            if bits & info.bit:
-                if not self._pending[kind]:
-                    self._pending[kind].add(0)
-            else:
-                self._pending[kind].clear()
-        self._refresh()
+    def _pending_mask(self, dispatch: Dispatch) -> Callable[[int | None], float]:
+        return lambda _: float(sum(bit for kind, bit in dispatch.bits.items() if self._pending[kind]))
+
+    def _disable(self, dispatch: Dispatch) -> Callable[[int | None, float], None]:
+        def write(_: int | None, value: float) -> None:
+            bits = int(value)
+            self.disabled = frozenset(kind for kind, bit in dispatch.bits.items() if bits & bit)
+
+        return write
+
+    def _force(self, dispatch: Dispatch) -> Callable[[int | None, float], None]:
+        """Writing the pending mask forces (bit set) or clears (bit clear) each class's pending event."""
+
+        def write(_: int | None, value: float) -> None:
+            bits = int(value)
+            for kind, bit in dispatch.bits.items():
+                if bits & bit:
+                    if not self._pending[kind]:
+                        self._pending[kind].add(0)
+                else:
+                    self._pending[kind].clear()
+            self._refresh()
+
+        return write
 
     def _mask(self, _: int | None, value: float) -> None:
         self.imask = int(value) & 0xFFFFFF

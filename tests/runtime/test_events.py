@@ -150,3 +150,48 @@ PRINT "fastin1"
 RETURN
 """
     assert simulate(source).terminal == "fastin1\ntimer\nin5\n"
+
+
+PREEMPTION = """REM @sim input 2 1 at 100
+REM @sim input 2 0 at 102
+DIM fired = 0
+INPUTMODE = 4
+TIMEREVENT = 110
+WAIT = 200
+END
+#IN2
+PRINT "in2 start"
+WAIT = 30
+PRINT "in2 end"
+RETURN
+#TIMER
+IF fired = 0 THEN PRINT "timer"
+fired = 1
+RETURN
+"""
+
+
+def test_on_nextmove_a_higher_priority_event_preempts_a_running_handler() -> None:
+    assert simulate(PREEMPTION, controller="nextmove-bx").terminal == "in2 start\ntimer\nin2 end\n"
+
+
+def test_on_mintdrive_handlers_run_to_completion_before_the_next_event() -> None:
+    # EV-3: MintDrive and ServoNode 51 do not pre-empt (only #ONERROR does)
+    assert simulate(PREEMPTION, controller="mintdrive").terminal == "in2 start\nin2 end\ntimer\n"
+
+
+def test_mintdrive_masks_events_with_handlerdisable_in_its_own_bit_layout() -> None:
+    source = """REM @sim input 3 1 at 10
+REM @sim input 3 0 at 12
+INPUTMODE = 8
+HANDLERDISABLE = 64
+WAIT = 50
+PRINT "pending ", HANDLERPENDING
+HANDLERDISABLE = 0
+WAIT = 2
+END
+#IN3
+PRINT "handled"
+RETURN
+"""
+    assert simulate(source, controller="mintdrive").terminal == "pending 64\nhandled\n"

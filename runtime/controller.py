@@ -42,7 +42,7 @@ def build_plant(choice: PlantChoice | None) -> Plant:
     if choice.model == "stalled":
         return StalledPlant()
     if choice.model == "velamp":
-        return VelocityPlant(**{"counts_per_second": 1000.0, **choice.parameters})
+        return VelocityPlant(counts_per_second=choice.parameters["k"])  # the scenario requires k
     return TorquePlant(**dict(choice.parameters))
 
 

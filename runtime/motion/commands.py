@@ -135,6 +135,9 @@ class Motion:
     def start_group(self, request: Request, tick: int) -> None:
         """Start a triggered request once every axis it moves has it at the head of its buffer and is free."""
         axes = [self.axes[number] for number in request.axes]
+        if any(request not in axis.buffer for axis in axes):
+            self._drop_orphan(request, axes)
+            return
         if any(axis.move is not None or not axis.triggered or axis.buffer[0] is not request for axis in axes):
             return
         for axis in axes:
@@ -151,9 +154,19 @@ class Motion:
             for request in list(axis.buffer)[: axis.triggered]:
                 for number in request.axes:  # GO on one axis of a vector starts them all (MP-28)
                     other = self.axes[number]
-                    if other is not axis:
+                    if other is not axis and request in other.buffer:
                         other.triggered = max(other.triggered, list(other.buffer).index(request) + 1)
         return False
+
+    @staticmethod
+    def _drop_orphan(request: Request, axes: list[Axis]) -> None:
+        """A stop or an error emptied the buffer of one axis of an interpolated move: it can never run."""
+        for axis in axes:
+            if request in axis.buffer:
+                position = list(axis.buffer).index(request)
+                del axis.buffer[position]
+                if position < axis.triggered:
+                    axis.triggered -= 1
 
     def jog(self, channels: Channels | None, values: Values) -> bool:
         """JOG: ramp to a constant speed at once, no GO (MP-16); JOG = 0 ramps down and ends the move."""

@@ -84,10 +84,31 @@ class Bounds:
     minimum: float | None
     maximum: float | None
     exclusive_minimum: bool  # ACCEL: 0.0 < x
+    allowed: frozenset[float] | None = None  # a mode keyword's values, where they are not a range
+
+
+_ERROR_MODES = Bounds(0.0, 5.0, False, frozenset({0.0, 1.0, 2.0, 3.0, 5.0}))
+# Ranges the keyword database cannot give (Advanced-guide keywords, or tables the text states elsewhere),
+# from the spec items cited; the profiler and the error checks rely on them.
+_KNOWN_RANGES: Mapping[str, Bounds] = MappingProxyType(
+    {
+        "SRAMP": Bounds(0.0, 100.0, False),  # MP-9
+        "LIMITMODE": _ERROR_MODES,  # AX-13: 0..3 and 5
+        "FOLERRORMODE": _ERROR_MODES,  # AX-10 RC: the LIMITMODE table
+        "ERRORINPUTMODE": _ERROR_MODES,  # AX-16 RC: the LIMITMODE table
+        "KINTMODE": Bounds(0.0, 3.0, False, frozenset({0.0, 1.0, 2.0, 3.0})),  # SL-5 RC
+        "KACCEL": Bounds(0.0, 10000.0, False),  # SL-2 RC: as KVELFF
+        "IDLEPOS": Bounds(0.0, 8388607.0, False),
+        "IDLEVEL": Bounds(0.0, 8388607.0, False),
+        "MOVEBUFFERSIZE": Bounds(2.0, 100.0, False),  # MP-25
+    }
+)
 
 
 def bounds(keyword: str, controller: Controller) -> Bounds:
-    """The accepted values of ``keyword`` on ``controller`` (unbounded when the manual gives none)."""
+    """The accepted values of ``keyword`` on ``controller`` (unbounded when nothing gives any)."""
+    if keyword in _KNOWN_RANGES:
+        return _KNOWN_RANGES[keyword]
     record = database().keywords.get(keyword)
     row = record.attributes_for(controller) if record is not None else None
     if row is None or row.range is None:
@@ -96,6 +117,8 @@ def bounds(keyword: str, controller: Controller) -> Bounds:
 
 
 def check_range(keyword: str, value: float, limits: Bounds, axis: int) -> float:
+    if limits.allowed is not None and value not in limits.allowed:
+        raise MintError(OUT_OF_RANGE, axis, f"{keyword} = {value:g}")
     low, high = limits.minimum, limits.maximum
     too_low = low is not None and (value <= low if limits.exclusive_minimum else value < low)
     if too_low or (high is not None and value > high):

@@ -124,3 +124,10 @@ PRINT "error ", ERR, " bits ", AXISERROR.0, " drive ", DRIVEENABLE.0, " switch "
 RETURN
 """
     assert simulate(source).terminal.startswith("error 500 bits 128 drive 0 switch 1\n")
+
+
+def test_a_velocity_amplifier_plant_moves_at_k_counts_per_second_per_percent() -> None:
+    # W-1 velamp: with only proportional gain the axis follows its demand through the DAC
+    source = "REM @sim plant 0 velamp 1000\nKPROP.0 = 1\nMOVER.0 = 2000 : GO.0\nPAUSE IDLE.0\nWAIT = 300\n"
+    result = simulate(source)
+    assert abs(result.axes[0].pos - 2000) <= 2

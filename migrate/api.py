@@ -24,12 +24,16 @@ def rules() -> tuple[RuleInfo, ...]:
     return tuple(rule.info() for rule in RULES)
 
 
-def select(only: Iterable[str] | None = None, skip: Iterable[str] = ()) -> tuple[Rule, ...]:
-    """The rules to run: ``only`` those ids (default all), minus ``skip``."""
+def select(only: Iterable[str] | None = None, skip: Iterable[str] = (), opt_in: Iterable[str] = ()) -> tuple[Rule, ...]:
+    """The rules to run: ``only`` those ids (default: every rule that is not optional, plus the
+    optional ones named in ``opt_in``), minus ``skip``. Naming an optional rule in ``only`` is
+    asking for it too."""
     known = {rule.id for rule in RULES}
-    wanted = {rule.upper() for rule in only} if only is not None else known
+    extra = {rule.upper() for rule in opt_in}
+    default = {rule.id for rule in RULES if not rule.optional}
+    wanted = {rule.upper() for rule in only} if only is not None else default | extra
     skipped = {rule.upper() for rule in skip}
-    unknown = sorted((wanted | skipped) - known)
+    unknown = sorted((wanted | skipped | extra) - known)
     if unknown:
         raise UnknownRule(f"unknown rule: {', '.join(unknown)} (see --list-rules)")
     return tuple(rule for rule in RULES if rule.id in wanted - skipped)
@@ -42,12 +46,14 @@ def migrate(
     controller: Controller | str = DEFAULT_CONTROLLER,
     only: Iterable[str] | None = None,
     skip: Iterable[str] = (),
+    opt_in: Iterable[str] = (),
 ) -> MigrationResult:
-    """Migrate a v3 program (and its configuration file, whose result is ``.configuration``)."""
+    """Migrate a v3 program (and its configuration file, whose result is ``.configuration``);
+    ``only``/``skip``/``opt_in`` choose the rules as ``select`` does."""
     texts = {Unit.PROGRAM: source}
     if config is not None:
         texts = {Unit.CONFIGURATION: config, **texts}
-    outcomes = engine.run(texts, select(only, skip), str(Controller(controller)))
+    outcomes = engine.run(texts, select(only, skip, opt_in), str(Controller(controller)))
     results = {unit: _result(outcome) for unit, outcome in outcomes.items()}
     program = results[Unit.PROGRAM]
     if Unit.CONFIGURATION in results:

@@ -44,12 +44,11 @@ class _Job:
     configuration: SourceFile | None
 
     def run(
-        self, controller: str, only: tuple[str, ...] | None, skip: tuple[str, ...]
+        self, controller: str, only: tuple[str, ...] | None, skip: tuple[str, ...], opt_in: tuple[str, ...]
     ) -> list[tuple[SourceFile, FileEntry]]:
         config = self.configuration.text if self.configuration is not None else None
-        result = migrate_text(
-            self.program.text if self.program else "", config=config, controller=controller, only=only, skip=skip
-        )
+        program = self.program.text if self.program else ""
+        result = migrate_text(program, config=config, controller=controller, only=only, skip=skip, opt_in=opt_in)
         pairs = []
         if self.configuration is not None and result.configuration is not None:
             pairs.append((self.configuration, _entry(self.configuration, "configuration", result.configuration)))
@@ -92,8 +91,9 @@ def _diff(file: SourceFile, text: str) -> str:
 
 def _list_rules(console: Console) -> None:
     for info in rules():
-        console.print(f"[bold]{info.id:<14}[/bold] {info.rule_class.value:<10} {info.summary}", highlight=False)
-        console.print(f"{'':<25} {info.evidence}", style="dim", highlight=False)
+        kind = f"{info.rule_class.value}{' (optional)' if info.optional else ''}"
+        console.print(f"[bold]{info.id:<14}[/bold] {kind:<21} {info.summary}", highlight=False)
+        console.print(f"{'':<36} {info.evidence}", style="dim", highlight=False)
 
 
 @click.command(name="migrate", context_settings={"help_option_names": ["-h", "--help"]})
@@ -111,6 +111,7 @@ def _list_rules(console: Console) -> None:
 @click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text", show_default=True)
 @click.option("--only", multiple=True, metavar="RULE", help="Run only this rule (repeatable).")
 @click.option("--skip", multiple=True, metavar="RULE", help="Do not run this rule (repeatable).")
+@click.option("--with", "opt_in", multiple=True, metavar="RULE", help="Also run this optional rule (repeatable).")
 @click.option("--list-rules", is_flag=True, help="List the rules and exit.")
 def migrate(  # noqa: PLR0917 - click passes every option as an argument
     paths: tuple[Path, ...],
@@ -120,6 +121,7 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
     output_format: str,
     only: tuple[str, ...],
     skip: tuple[str, ...],
+    opt_in: tuple[str, ...],
     list_rules: bool,
 ) -> None:
     """Migrate Mint v3 programs (.mnt) and configuration files (.cfg) to Mint v4."""
@@ -128,11 +130,11 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
         _list_rules(out)
         return
     try:
-        select(only or None, skip)
+        select(only or None, skip, opt_in)
         jobs = _jobs(paths, config)
         if mode == "stdout" and sum((job.program is not None) + (job.configuration is not None) for job in jobs) > 1:
             raise _Usage("--stdout prints one file: name one program or one configuration file")
-        migrated = [pair for job in jobs for pair in job.run(controller, only or None, skip)]
+        migrated = [pair for job in jobs for pair in job.run(controller, only or None, skip, opt_in)]
         _output(migrated, mode, output_format, controller)
         for file, entry in migrated if mode == "write" else ():
             if entry.result.changed:

@@ -35,13 +35,15 @@ class Phase(StrEnum):
 
 @dataclass(frozen=True, slots=True)
 class RuleInfo:
-    """What ``--list-rules`` shows: id, class, phase, what it does and the manual's evidence."""
+    """What ``--list-rules`` shows: id, class, phase, what it does and the manual's evidence;
+    an optional rule runs only when asked for (``--with``)."""
 
     id: str
     rule_class: RuleClass
     phase: Phase
     summary: str
     evidence: str
+    optional: bool = False
 
 
 @dataclass(frozen=True, slots=True)

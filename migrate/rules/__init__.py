@@ -3,16 +3,23 @@
 from __future__ import annotations
 
 from mintlang.migrate.rules.abbreviations import ExpandAbbreviations
+from mintlang.migrate.rules.analog import AnalogueInputs
 from mintlang.migrate.rules.base import Action, Flag, Replace, Rule
+from mintlang.migrate.rules.bit_syntax import DotBits
+from mintlang.migrate.rules.cams import Cams
+from mintlang.migrate.rules.card import NodeNumber
 from mintlang.migrate.rules.channels import Channels
 from mintlang.migrate.rules.dac import DacUnits
 from mintlang.migrate.rules.declarations import DeclareVariables, DefaultAxes, InputEdges
+from mintlang.migrate.rules.defaults import KeepV3Defaults, ReportDefaults
+from mintlang.migrate.rules.explicit_axes import ExplicitAxes
 from mintlang.migrate.rules.expressions import ByteToggle, Precedence, Trigonometry
 from mintlang.migrate.rules.following import MasterSource
+from mintlang.migrate.rules.gearing import Gearing
 from mintlang.migrate.rules.inputs import InputByte, InputMask
+from mintlang.migrate.rules.looptime import LoopTime
 from mintlang.migrate.rules.manual import (
     AbsentFeatures,
-    AnalogueUnits,
     AxisConfiguration,
     ChangedMeaning,
     EnableOutput,
@@ -30,7 +37,10 @@ from mintlang.migrate.rules.manual import (
     ServoOnAgain,
     Trigger,
 )
+from mintlang.migrate.rules.numbers import FixedPoint
+from mintlang.migrate.rules.prologue import IoPrologue
 from mintlang.migrate.rules.reads import ErrorTest, ModeTest, ReadRenames
+from mintlang.migrate.rules.remarks import RemColon
 from mintlang.migrate.rules.renames import (
     RenameConstants,
     RenameEventLabels,
@@ -39,6 +49,7 @@ from mintlang.migrate.rules.renames import (
     RenameReservedNames,
 )
 from mintlang.migrate.rules.reset import ResetSideEffects
+from mintlang.migrate.rules.reviews import ChangedUnits, ConfigurationArrays, OutputFormat
 from mintlang.migrate.rules.statements import (
     Boost,
     Contouring,
@@ -51,6 +62,7 @@ from mintlang.migrate.rules.statements import (
     Zero,
 )
 from mintlang.migrate.rules.terminal import Baud, BinaryOutput
+from mintlang.migrate.rules.timing import GoTiming
 from mintlang.migrate.rules.writes import (
     AccelAlsoDecel,
     ConfigValues,
@@ -73,6 +85,8 @@ RULES: tuple[Rule, ...] = (
     RenameConstants(),
     RenameEventLabels(),
     RenameReservedNames(),
+    DotBits(),
+    RemColon(),
     # context rewrites: statements, then companions, then expressions
     Zero(),
     Boost(),
@@ -95,9 +109,14 @@ RULES: tuple[Rule, ...] = (
     InputByte(),
     BinaryOutput(),
     Baud(),
+    NodeNumber(),
+    LoopTime(),
     DacUnits(),
+    AnalogueInputs(),
     ResetSideEffects(),
     MasterSource(),
+    Gearing(),
+    Cams(),
     AccelAlsoDecel(),
     OffsetNeedsGo(),
     IntegerScale(),
@@ -111,7 +130,11 @@ RULES: tuple[Rule, ...] = (
     DefaultAxes(),
     InputEdges(),
     DeclareVariables(),
-    # manual items: specific reasons first, the catch-all last
+    KeepV3Defaults(),
+    ExplicitAxes(),
+    # manual items: application-wide notes, specific reasons, the catch-all last
+    IoPrologue(),
+    ReportDefaults(),
     PulseFollowing(),
     IncrementalMoves(),
     ServoOnAgain(),
@@ -123,10 +146,14 @@ RULES: tuple[Rule, ...] = (
     AbsentFeatures(),
     EnableOutput(),
     ErrorCodes(),
-    AnalogueUnits(),
     ChangedMeaning(),
     OnError(),
     FastLatch(),
+    GoTiming(),
+    FixedPoint(),
+    ConfigurationArrays(),
+    OutputFormat(),
+    ChangedUnits(),
     InvalidInV3(),
     Platform(),
     LeftoverV3(),

@@ -46,3 +46,28 @@ def selector_axes(keyword: n.KeywordRef) -> tuple[int, ...] | None:
 
 def _top_level(line: n.Line, statement: n.Statement) -> bool:
     return statement in line.statements
+
+
+def axis_values(
+    context: Context, file: FileView, statement: n.KeywordStatement
+) -> tuple[tuple[int, n.Expression], ...]:
+    """The (axis, value) pairs a keyword write assigns, or () when its axes are not constant.
+
+    Values go to the named axes (or the AXES default) in order, a ``;`` fill repeats
+    the last value, and a skipped place leaves its axis alone.
+    """
+    keyword = statement.keyword
+    axes = selector_axes(keyword)
+    if axes is None and keyword.selector is None:
+        axes = default_axes(context, file, statement.span.start)
+    if axes is None or not statement.values:
+        return ()
+    values = list(statement.values)
+    if statement.fill:
+        values += [values[-1]] * (len(axes) - len(values))
+    return tuple((axis, value) for axis, value in zip(axes, values, strict=False) if value is not None)
+
+
+def selector_for(axes: tuple[int, ...]) -> str:
+    """The explicit selector of ``axes``: ``.n`` for one axis, ``[a,b]`` for several."""
+    return f".{axes[0]}" if len(axes) == 1 else f"[{','.join(str(axis) for axis in axes)}]"

@@ -44,7 +44,9 @@ class Rule:
     """Base of every rule; subclasses set the class attributes and implement ``apply``.
 
     ``summary`` says what the rule matches and writes, the docstring says why,
-    ``evidence`` gives the migration spec id and the manuals' lines.
+    ``evidence`` gives the migration spec id and the manuals' lines. An ``optional``
+    rule (the spec's "optional" rewrites, or a choice the user must make) only runs
+    when asked for by id.
     """
 
     id: ClassVar[str]
@@ -52,13 +54,14 @@ class Rule:
     phase: ClassVar[Phase]
     summary: ClassVar[str]
     evidence: ClassVar[str]
+    optional: ClassVar[bool] = False
 
     def apply(self, context: Context) -> Iterator[Action]:
         raise NotImplementedError
 
     @classmethod
     def info(cls) -> RuleInfo:
-        return RuleInfo(cls.id, cls.rule_class, cls.phase, cls.summary, cls.evidence)
+        return RuleInfo(cls.id, cls.rule_class, cls.phase, cls.summary, cls.evidence, cls.optional)
 
     # Helpers shared by the rules: they keep actions tied to the file they come from.
 

@@ -5,21 +5,12 @@ from __future__ import annotations
 from mintlang.migrate.context import Context, FileView
 from mintlang.migrate.model import RuleClass
 from mintlang.migrate.rules.base import keyword_refs, selector_text, values_text, written
+from mintlang.migrate.rules.literals import integer_literal
 from mintlang.migrate.rules.spelling import like
 from mintlang.migrate.rules.statements import Refusal, StatementRule, fill
 from mintlang.syntax import nodes as n
 
 _OFF_CONSTANTS = frozenset({"_OFF", "_CFOFF"})
-
-
-def _literal(value: n.Expression | None) -> int | None:
-    """An integer literal, with its sign (``-1`` parses as a unary minus)."""
-    sign = 1
-    if isinstance(value, n.Unary) and value.operator == "-":
-        sign, value = -1, value.operand
-    if isinstance(value, n.Number) and value.value == int(value.value):
-        return sign * int(value.value)
-    return None
 
 
 class MasterSource(StatementRule):
@@ -55,7 +46,7 @@ class MasterSource(StatementRule):
     def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
         if statement.values is None:
             return Refusal("FOLLOWAXIS read: the master is MASTERSOURCE and MASTERCHANNEL in v4")
-        masters = {_literal(value) for value in statement.values if value is not None}
+        masters = {integer_literal(value) for value in statement.values if value is not None}
         if masters & {-2}:
             return Refusal("FOLLOWAXIS = -2 follows the pulse timer input: no v4 master source (see X-PULSE)")
         if masters & {3, 4, 5}:
@@ -73,7 +64,7 @@ class MasterSource(StatementRule):
             return Refusal(
                 "FOLLOW with MASTERINC: v4 MASTERDISTANCE acts on FOLLOW only in FOLLOWMODE 2/3; set the master by hand"
             )
-        if _scaled(context):
+        if scale_is_set(context):
             return Refusal("SCALE is set: v4 scales the master into the slave's user units, v3 by the master's SCALE")
         selector = selector_text(file, statement.keyword)
         source = f"{like(statement.keyword.spelling, 'MASTERSOURCE')}{selector}"
@@ -92,7 +83,7 @@ def _clutch(context: Context) -> bool:
     return used("MASTERINC", "MASTERDISTANCE") and used("FOLLOW") and not used("FOLLOWMODE")
 
 
-def _scaled(context: Context) -> bool:
+def scale_is_set(context: Context) -> bool:
     """Whether any axis may have a SCALE other than 1 (every use a write of literal 1s is not)."""
     for _, statement, keyword in keyword_refs(context, "SCALE"):
         if not (

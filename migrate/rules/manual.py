@@ -142,16 +142,15 @@ class AbsentFeatures(ManualKeywords):
     capture, inverters, frequency output)."""
 
     id = "X-MISC-ABSENT"
-    summary = "AUX, CAPTURE, DATETIME, DIR, FREQ, LOOPTIME -> manual"
-    evidence = "spec X-MISC-ABSENT, §8; v4:8084, v4:10931, v4:6171-6175"
-    keywords = frozenset({"AUX", "CAPTURE", "DATETIME", "DIR", "FREQ", "LOOPTIME"})
+    summary = "AUX, CAPTURE, DATETIME, DIR, FREQ -> manual (LOOPTIME: S-LOOPTIME)"
+    evidence = "spec X-MISC-ABSENT, §8; v4:8084, v4:10931"
+    keywords = frozenset({"AUX", "CAPTURE", "DATETIME", "DIR", "FREQ"})
     reasons: ClassVar[Mapping[str, str]] = {
         "AUX": "no v4 keyword: the DAC monitor is DACMONITORAXIS/DACMONITORMODE (advanced)",
         "CAPTURE": "v4 data capture is CAPTUREMODE and friends (advanced)",
         "DATETIME": "no v4 keyword: capture duration is set with the v4 CAPTURE keywords (advanced)",
         "DIR": "no v4 keyword (inverter direction); if a variable was meant, DIM it",
         "FREQ": "FREQ is an advanced v4 feature with other units",
-        "LOOPTIME": "v4 LOOPTIME is in microseconds (advanced)",
     }
 
 
@@ -177,39 +176,16 @@ class ErrorCodes(ManualKeywords):
     reason = "v3 error numbers differ: motion errors are ERR = 500 with AXISERROR bits in v4"
 
 
-class AnalogueUnits(ManualKeywords):
-    """ANALOGUEn became ADC.(n-1) in percent (-100..100) where v3 read 0..1023; the factor
-    depends on the input range jumper, so the arithmetic is left to the user: the spec's
-    semi-mechanical rewrite is implemented as a manual item carrying the formula."""
-
-    id = "S-ANALOG"
-    summary = "ANALOGUE1..3 -> manual with the formula ((ADC.n + 100) * 1023 / 200 for +-10 V)"
-    evidence = "spec S-ANALOG; v3:5748-5760, v3:2318; v4:6537, v4:6358-6363, v4:1785"
-    keywords = frozenset({"ANALOGUE1", "ANALOGUE2", "ANALOGUE3"})
-    reason = "use ADC.(n-1) in % : v3 value = (ADC.(n-1) + 100) * 1023 / 200 for +-10 V inputs"
-
-
 class ChangedMeaning(ManualKeywords):
     """Keywords whose v4 form needs context this migrator does not compute yet (the spec's
-    S-CAM, S-GEAR, S-CARD and M-DISPLAY): each use is
-    flagged with the v4 form to write."""
+    M-DISPLAY): each use is flagged with the v4 form to write. CAM/CAMA, GEARN/GEARD and
+    CARD have rules of their own (S-CAM, S-GEAR, S-CARD), which flag what they cannot prove."""
 
     id = "X-CHANGED"
-    summary = "CAM, CAMA, GEARN, GEARD, DISPLAY, CARD -> manual with the v4 form"
-    evidence = "spec S-CAM, S-GEAR, S-CARD, M-DISPLAY"
-    keywords = frozenset(
-        {
-            *("CAM", "CAMA", "GEARN", "GEARD", "DISPLAY", "CARD"),
-        }
-    )
-    reasons: ClassVar[Mapping[str, str]] = {
-        "CAM": "v4 cams need CAMTABLE(axis, positions, masters) and GO; modes are _cm bits",
-        "CAMA": "use CAM with _cmABSOLUTE after CAMTABLE, then GO",
-        "GEARN": "use FOLLOW (FOLLOWDENOM for the denominator, range -128..127)",
-        "GEARD": "use FOLLOWDENOM (1..128)",
-        "DISPLAY": "use VIEW VAR / VIEW ARRAY at the command line",
-        "CARD": "use NODE (the software node number, v4:14643) if a user name NODE does not clash",
-    }
+    summary = "DISPLAY -> manual with the v4 form"
+    evidence = "spec M-DISPLAY"
+    keywords = frozenset({"DISPLAY"})
+    reason = "use VIEW VAR / VIEW ARRAY at the command line"
 
 
 class OnError(Rule):

@@ -15,7 +15,7 @@ from mintlang.migrate.context import Context, FileView
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.migrate.rules.spelling import like
-from mintlang.migrate.rules.vocabulary import is_reserved_user_name, unique_rename
+from mintlang.migrate.rules.vocabulary import is_migrator_read, is_reserved_user_name, unique_rename
 from mintlang.semantic.events import EventKind, event_of
 from mintlang.semantic.symbols import Symbol
 from mintlang.semantic.units import Unit
@@ -148,7 +148,8 @@ class RenameReservedNames(Rule):
     ``kp``) is renamed everywhere: v4 reserves those words (error 2006).
 
     The new name keeps the ten significant characters unique. Names the migrator
-    itself writes as v4 keywords (KPROP, AXISMODE ...) are not user names.
+    itself writes as v4 keywords (KPROP, AXISMODE ..., a NODE that is only read) are not
+    user names.
     """
 
     id = "M-IDENT"
@@ -161,7 +162,7 @@ class RenameReservedNames(Rule):
         variables = context.model.symbols.variables
         taken = set(variables)
         for symbol in variables.values():
-            if is_reserved_user_name(symbol.name):
+            if is_reserved_user_name(symbol.name) and not is_migrator_read(symbol):
                 yield from _rename_symbol(self, context.files, symbol, taken)
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from mintlang.keyworddb import database
+from mintlang.semantic.symbols import Symbol
 from mintlang.syntax.nodes import SIGNIFICANT_CHARACTERS, identity
 
 # v4 keywords the rules write that the v3 reader takes for user names (v3's predefined
@@ -19,10 +20,22 @@ _WRITTEN = frozenset(
     }
 )
 
+# v4 keywords the rules write only where a value is read (S-CARD writes NODE for CARD). The
+# v3 reader takes them for user names as well, but these can be told apart: v3 declares a
+# variable by its first assignment (or FOR, INPUT, DIM) and rejects reading one not declared
+# before (v3:1352-1367, v3:1425-1429), so a name that is never written is the migrator's keyword.
+_READ_ONLY_WRITTEN = frozenset({"NODE"})
+
 
 def migrator_words() -> frozenset[str]:
     """v4 keywords the migrator may write (see ``_WRITTEN``)."""
     return _WRITTEN
+
+
+def is_migrator_read(symbol: Symbol) -> bool:
+    """Whether ``symbol`` is a v4 keyword the migrator wrote as a read (see ``_READ_ONLY_WRITTEN``)."""
+    written = bool(symbol.definitions) or any(reference.is_write for reference in symbol.references)
+    return symbol.identity in _READ_ONLY_WRITTEN and not written
 
 
 def is_reserved_user_name(name: str) -> bool:

@@ -6,11 +6,13 @@ from mintlang.migrate import RuleClass, migrate, rules, rules_at
 
 
 def test_result_carries_text_changes_manual_items_and_counts() -> None:
-    source = "GAIN = 2\nLOAD 3\n"
+    source = "HMSPEED = 2\nLOAD 3\n"
     result = migrate(source, controller="mintdrive")
     reason = "LOAD: no Mint v4 keyword (Mint WorkBench transfers programs and arrays): remove or redesign"
-    assert result.text == f"KPROP = 2\nREM MIGRATE: X-HOST: {reason}\nLOAD 3\n"
-    assert [(c.rule, c.line, c.original, c.replacement) for c in result.changes] == [("M-REN", 1, "GAIN", "KPROP")]
+    assert result.text == f"HOMESPEED = 2\nREM MIGRATE: X-HOST: {reason}\nLOAD 3\n"
+    assert [(c.rule, c.line, c.original, c.replacement) for c in result.changes] == [
+        ("M-REN", 1, "HMSPEED", "HOMESPEED")
+    ]
     assert [(m.rule, m.line) for m in result.manual] == [("X-HOST", 3)]
     assert result.rule_counts == {"M-REN": 1, "X-HOST": 1}
 

@@ -26,7 +26,10 @@ def _without_inserted_lines(text: str) -> str:
 def test_crlf_tabs_and_odd_spacing_survive() -> None:
     source = "REM  Odd\tspacing\r\n\r\n\tGaIn  =  2;\t: rem  keep   me\r\n\tx=1 :REM x\r\n"
     result = migrate(source, controller="mintdrive")
-    assert result.text == "REM  Odd\tspacing\r\nDIM x\r\n\r\n\tKPROP  =  2;\t: rem  keep   me\r\n\tx=1 :REM x\r\n"
+    flag = "\tREM MIGRATE: X-UNITS: servo gains changed units and loop rate in v4: re-tune\r\n"  # indented as its line
+    assert (
+        result.text == f"REM  Odd\tspacing\r\nDIM x\r\n\r\n{flag}\tKPROP  =  2;\t: rem  keep   me\r\n\tx=1 :REM x\r\n"
+    )
     assert "\n" not in result.text.replace("\r\n", "")
 
 

@@ -32,8 +32,7 @@ def test_marker_goes_above_with_the_same_indentation() -> None:
         ("X-MISC-ABSENT", "DATETIME = 4000\n"),
         ("X-ENABLE", "ENABLE = 1\n"),
         ("X-ERR", "IF ERR = 15 THEN x = 1\n"),
-        ("S-ANALOG", "x = A1 - 512\n"),
-        ("X-CHANGED", "GEARD = 2\n"),
+        ("X-CHANGED", "DISPLAY\n"),
         ("X-ONERROR", "#ONERROR\nRETURN\n"),
         ("X-FASTLATCH", "#FASTPOS\nRETURN\n"),
         ("X-COMMENTED", "RME Project\n"),
@@ -54,7 +53,7 @@ def test_invalid_v3_structure_and_labels_are_reported() -> None:
 
 
 def test_leftover_catch_all_does_not_repeat_an_earlier_item() -> None:
-    result = migrate("x = CARD\n", only=["X-CHANGED", "X-V3"])
+    result = migrate("DISPLAY\n", only=["X-CHANGED", "X-V3"])
     assert [item.rule for item in result.manual] == ["X-CHANGED"]
 
 

@@ -1,0 +1,87 @@
+"""Which axes a motion statement acts on, and which axes an application moves.
+
+A keyword with a bracket list or dot names its axes; a bracket-less one takes
+the AXES default in force (``axes.default_axes``), one axis per value written
+(``MOVEA = 10`` moves the first default axis only, ``SPEED = ,10`` the second, v3:1080-1109), all of them
+for a command (``GO``) or a ``;`` fill. The circle moves take two axes and
+three values. Several rules need these answers: the defaults and prologue
+notes (which axes rely on v3 hardware and defaults) and the explicit-axes rewrite.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.rules.axes import default_axes, selector_axes
+from mintlang.migrate.rules.base import keyword_refs, written
+from mintlang.syntax import nodes as n
+
+CIRCLES = frozenset({"CIRCLEA", "CIRCLER"})  # two axes, three values (centre x, centre y, angle)
+POSITIONAL = frozenset({"MOVEA", "MOVER", "VECTORA", "VECTORR", "FLY", *CIRCLES})  # profiled with SPEED
+MOVES = frozenset({*POSITIONAL, "JOG", "HOME", "OFFSET", "FOLLOW", "CAM", "CAMA", "PULSE", "GEARN", "INCA", "INCR"})
+
+
+def addressed_axes(context: Context, file: FileView, statement: n.KeywordStatement) -> tuple[int, ...] | None:
+    """The axes ``statement`` acts on, or None when a list is computed or the default unknown."""
+    keyword = statement.keyword
+    if keyword.selector is not None or keyword.channel is not None:
+        return selector_axes(keyword)
+    default = default_axes(context, file, statement.span.start)
+    if default is None:
+        return None
+    if keyword.keyword in CIRCLES:
+        return default[:2] if len(default) >= 2 else None
+    if statement.values is None or statement.fill:
+        return default
+    return default[: len(statement.values)] if len(statement.values) <= len(default) else None
+
+
+def moved_axes(context: Context, keywords: Iterable[str]) -> tuple[int, ...] | None:
+    """The sorted axes the application writes any of ``keywords`` on (``()`` when it never
+    does), or None when one of those writes has axes that cannot be known."""
+    found: set[int] = set()
+    for file, statement, keyword in keyword_refs(context, *keywords):
+        if not written(statement, keyword):
+            continue
+        assert isinstance(statement, n.KeywordStatement)  # written() holds only for keyword statements
+        axes = addressed_axes(context, file, statement)
+        if axes is None:
+            return None
+        found.update(axes)
+    return tuple(sorted(found))
+
+
+def writes_any(context: Context, names: Iterable[str]) -> bool:
+    """Whether the application writes one of ``names``: a keyword the v3 reader knows
+    (``MFOLERR = 5``) or a v4-only keyword it reads as a variable (``HOMESPEED = 5``)."""
+    wanted = frozenset(names)
+    for _, statement, keyword in keyword_refs(context, *wanted):
+        if written(statement, keyword):
+            return True
+    for _, _, statement in context.statements():
+        if isinstance(statement, n.Assignment) and statement.target.name.identity in wanted:
+            return True
+    return False
+
+
+def axis_list(axes: tuple[int, ...]) -> str:
+    return f"[{','.join(str(axis) for axis in axes)}]"
+
+
+def read_axes(context: Context, keywords: Iterable[str]) -> tuple[int, ...] | None:
+    """The sorted axes the application reads any of ``keywords`` on; a bracket-less read is
+    the first default axis (v3:1127). None when one of them cannot be known."""
+    found: set[int] = set()
+    for file, statement, keyword in keyword_refs(context, *keywords):
+        if written(statement, keyword):
+            continue
+        if keyword.selector is not None or keyword.channel is not None:
+            axes = selector_axes(keyword)
+        else:
+            default = default_axes(context, file, statement.span.start)
+            axes = default[:1] if default else None
+        if axes is None:
+            return None
+        found.update(axes)
+    return tuple(sorted(found))

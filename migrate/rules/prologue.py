@@ -1,0 +1,124 @@
+"""S-PROLOGUE: the I/O assignments v3 hardware made and v4 leaves to the program.
+
+v3 controllers had a dedicated limit input per axis (one for both directions,
+v3:4600), home and stop inputs and an amplifier enable; v4 user I/O has no
+default assignments (v4:4058-4061) and a move on a disabled drive fails with
+error 40 (v4:2704-2713). Which pin is which is wiring, so nothing is guessed:
+the spec's ``= ?`` placeholders would stop the file compiling, so instead each
+missing assignment becomes a ``REM MIGRATE:`` line at the top of the application
+carrying the exact v4 statement with an ``<input>``/``<output>`` to fill in. Only
+what the program needs is listed: moves need the drive enable and the limits,
+HOME needs HOMEINPUT, a #STOP handler or the stop switch needs STOPINPUT.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+
+from mintlang.dialect import Dialect
+from mintlang.migrate.context import Context
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.addressed import MOVES, axis_list, moved_axes, writes_any
+from mintlang.migrate.rules.base import Action, Rule, keyword_refs
+from mintlang.migrate.rules.notes import prologue_notes
+from mintlang.semantic.events import EventKind, event_of
+
+
+@dataclass(frozen=True, slots=True)
+class Assignment:
+    """One v4 statement the hardware did for v3, and which axes of a program need it."""
+
+    statement: str  # with {axes} for the axis list
+    written_as: frozenset[str]  # keywords whose write means the program already does it
+    axes: Callable[[Context], tuple[int, ...] | None]  # the axes needing it; () none, None unknown
+    why: str
+    done_by: frozenset[str] = frozenset()  # commands that do it too (v4 RESET enables the drive)
+
+    def done(self, context: Context) -> bool:
+        return writes_any(context, self.written_as) or next(keyword_refs(context, *self.done_by), None) is not None
+
+
+def _moving(context: Context) -> tuple[int, ...] | None:
+    return moved_axes(context, MOVES)
+
+
+def _homing(context: Context) -> tuple[int, ...] | None:
+    """The axes HOME moves; all of them when the home switch is only read."""
+    axes = moved_axes(context, ("HOME",))
+    return None if axes == () and _mentions(context, frozenset({"HOME", "HOMESWITCH"})) else axes
+
+
+def _stopping(context: Context) -> tuple[int, ...] | None:
+    """The moved axes (all when none is known) if the program has a #STOP handler, reads the
+    stop switch or sets its mode."""
+    handler = any(
+        event is not None and event.kind is EventKind.STOP
+        for file in context.files.values()
+        for line in file.document.lines
+        for event in [event_of(line.label.text, Dialect.V3) if line.label is not None else None]
+    )
+    if not handler and not _mentions(context, frozenset({"STOPSW", "STOPSWITCH", "STOPMODE", "STOPINPUTMODE"})):
+        return ()
+    return _moving(context) or None
+
+
+def _mentions(context: Context, names: frozenset[str]) -> bool:
+    """Any use of ``names``, as a v3 keyword or as a v4 keyword the v3 reader takes for a name."""
+    if next(keyword_refs(context, *names), None) is not None:
+        return True
+    return any(event.name.identity in names for event in context.model.index.names)
+
+
+ASSIGNMENTS: tuple[Assignment, ...] = (
+    Assignment(
+        "DRIVEENABLEOUTPUT{axes} = <output>;",
+        frozenset({"DRIVEENABLEOUTPUT"}),
+        _moving,
+        "v3 amplifier enable was dedicated; -1 if none is wired",
+    ),
+    Assignment(
+        "DRIVEENABLE{axes} = 1;",
+        frozenset({"DRIVEENABLE"}),
+        _moving,
+        "before the first move (after CONFIG); v4 error 40 otherwise",
+        frozenset({"RESET"}),
+    ),
+    Assignment(
+        "LIMITFORWARDINPUT{axes} = <input>;",
+        frozenset({"LIMITFORWARDINPUT"}),
+        _moving,
+        "v3 had one limit input per axis for both directions",
+    ),
+    Assignment(
+        "LIMITREVERSEINPUT{axes} = <input>;",
+        frozenset({"LIMITREVERSEINPUT"}),
+        _moving,
+        "the same input as forward if wired as in v3",
+    ),
+    Assignment(
+        "HOMEINPUT{axes} = <input>;", frozenset({"HOMEINPUT", "HMINPUT"}), _homing, "v3 home input was dedicated"
+    ),
+    Assignment("STOPINPUT{axes} = <input>;", frozenset({"STOPINPUT"}), _stopping, "v3 had a stop input"),
+)
+
+
+class IoPrologue(Rule):
+    """Lists the v4 I/O assignments the program needs and does not make, as comments carrying
+    the statement to complete, at the top of the configuration file (or program)."""
+
+    id = "S-PROLOGUE"
+    rule_class = RuleClass.MANUAL
+    phase = Phase.MANUAL
+    summary = "moves/HOME/#STOP without v4 I/O assignments -> REM MIGRATE lines with the statements to fill in"
+    evidence = "spec S-PROLOGUE; v3:4600, v3:2508-2521; v4:4058-4061, v4:2704-2713, v4:15624-15629"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        every = tuple(range(context.controller.axis_count))
+        notes = []
+        for assignment in ASSIGNMENTS:
+            axes = assignment.axes(context)
+            if axes == () or assignment.done(context):
+                continue
+            notes.append(f"{assignment.statement.format(axes=axis_list(axes or every))} : REM {assignment.why}")
+        yield from prologue_notes(context, self.id, notes)

@@ -1,0 +1,40 @@
+"""M-REMCOLON (optional): ``stmt REM text`` becomes ``stmt : REM text``.
+
+Both versions accept a REM that follows a statement without a colon (v3:11344-11350,
+v4:15510-15515); the v3 guide recommends the colon for future compatibility. A REM
+after a label or a THEN is left alone: a colon there would change nothing useful
+and a label line takes no statement separator.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from mintlang.diagnostics import Span
+from mintlang.migrate.context import Context
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.base import Action, Rule
+from mintlang.syntax.tokens import TokenKind
+
+_NO_COLON_AFTER = frozenset({TokenKind.NEWLINE, TokenKind.COLON, TokenKind.LABEL, TokenKind.THEN, TokenKind.MACRO_BODY})
+_TRIVIA = frozenset({TokenKind.WS})
+
+
+class RemColon(Rule):
+    """Inserts ``: `` before a REM that directly follows a statement on its line."""
+
+    id = "M-REMCOLON"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.RENAMES
+    optional = True
+    summary = "'stmt REM text' -> 'stmt : REM text'"
+    evidence = "spec M-REMCOLON; v3:11344-11350; v4:15510-15515"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file in context.files.values():
+            previous = TokenKind.NEWLINE
+            for token in file.document.tokens:
+                if token.kind is TokenKind.COMMENT and previous not in _NO_COLON_AFTER:
+                    yield self.replace(file, Span(token.start, token.start), ": ")
+                if token.kind not in _TRIVIA:
+                    previous = token.kind

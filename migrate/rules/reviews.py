@@ -1,0 +1,127 @@
+"""Manual reviews the spec lists without a rewrite: arrays in the configuration file
+(X-ARRAY-CFG), output formats a host may parse (X-PRINT), and values whose units
+changed (X-UNITS). Each flags only the statements its spec row names.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+
+from mintlang.keyworddb.model import Controller
+from mintlang.migrate.context import Context
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.base import Action, Rule
+from mintlang.semantic.units import Unit
+from mintlang.syntax import nodes as n
+
+_DELETED = "v4 deletes array data when the configuration runs: {} it in the program"
+_GAINS = frozenset({"GAIN", "KPROP", "KVEL", "KVELFF", "KINT", "KDERIV", "KACCEL"})
+# written in the same tuning block as the gains: they continue the block without an item of their own
+_TUNING = _GAINS | {"KINTLIMIT", "KINTRANGE", "KINTMODE", "DACLIMITMAX", "CURRENTLIMIT", "CURRLIMIT"}
+
+
+class ConfigurationArrays(Rule):
+    """v4 deletes array data whenever the configuration file runs (and RELEASE does too), so an
+    array dimensioned or filled there does not keep its values as it did in v3."""
+
+    id = "X-ARRAY-CFG"
+    rule_class = RuleClass.MANUAL
+    phase = Phase.MANUAL
+    summary = "array DIMed or filled in the configuration file -> manual (move it to the program)"
+    evidence = "spec X-ARRAY-CFG; v3:1675-1738; v4:15749-15750, v4:5543"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        file = context.files.get(Unit.CONFIGURATION)
+        if file is None:
+            return
+        for current, _, statement in context.statements():
+            if current is not file:
+                continue
+            if isinstance(statement, n.Dim) and statement.size is not None:
+                yield self.flag(
+                    file, statement.span, "v4 deletes array data when the configuration runs: DIM it in the program"
+                )
+            elif isinstance(statement, n.Assignment) and isinstance(statement.target, n.ElementRef):
+                yield self.flag(
+                    file, statement.span, "v4 deletes array data when the configuration runs: fill it in the program"
+                )
+
+
+class OutputFormat(Rule):
+    """Text a host program or an operator reads: PRINT/INPUT USING layouts, BINARY, and
+    strings in the format of the v3 ``ERROR: Program: ...`` message (v3:4978-5008) that a host parses; v4
+    reports errors as ``R0003: ...``. Other strings that merely mention an error are not flagged."""
+
+    id = "X-PRINT"
+    rule_class = RuleClass.MANUAL
+    phase = Phase.MANUAL
+    summary = "PRINT/INPUT USING, BINARY, printed 'ERROR' text -> manual (v4 number and message formats)"
+    evidence = "spec X-PRINT; v3:4978-5008, v3:6209-6239; v4:729, v4:764-767, v4:4584-4589, v4:15299-15366"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file, _, statement in context.statements():
+            reason = _format_reason(statement)
+            if reason is not None:
+                yield self.flag(file, statement.span, reason)
+
+
+def _format_reason(statement: n.Statement) -> str | None:
+    if isinstance(statement, n.Print | n.Input) and statement.using:
+        return "USING layout: v4 prints numbers with up to 4 decimals; check what reads this output"
+    if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "BINARY":
+        return "BINARY output: v4 prints with PRINT BIN, without the 8-digit padding"
+    if isinstance(statement, n.Print) and any(
+        isinstance(item.value, n.StringLiteral) and item.value.value.upper().startswith("ERROR:")
+        for item in statement.items
+    ):
+        return "v4 error messages read 'R0003: ...': a host parsing v3 'ERROR:' text must change"
+    return None
+
+
+class ChangedUnits(Rule):
+    """Servo gains are 0..255 in 1/256 steps in v3 and floats up to 10000 on a 1 kHz NextMove loop
+    in v4 (re-tune); on MintDrive TORQUE 100 is nominal current, where v3 100 was peak."""
+
+    id = "X-UNITS"
+    rule_class = RuleClass.MANUAL
+    phase = Phase.MANUAL
+    summary = "servo gain writes, TORQUE writes on MintDrive -> manual (units changed: re-tune)"
+    evidence = "spec X-UNITS; v3:12131; v4:13015, v4:345-351, v4:16847-16848"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        """One item for each run of gain writes on consecutive lines: a tuning block is re-tuned as a whole."""
+        mintdrive = context.controller.controller is Controller.MINTDRIVE
+        block_end: dict[Unit, int] = {}  # the last line of the tuning block each file is in
+        for file, line, statement in context.statements():
+            name = _written_name(statement) or _v4_name_written(file.text[statement.span.start : statement.span.end])
+            if name in _TUNING:
+                previous = block_end.get(file.unit)
+                block_end[file.unit] = line.number
+                if name in _GAINS and (previous is None or line.number - previous > 1):
+                    yield self.flag(file, statement.span, "servo gains changed units and loop rate in v4: re-tune")
+            elif name == "TORQUE" and mintdrive and not _all_zero(statement):
+                yield self.flag(file, statement.span, "MintDrive TORQUE 100 is nominal current (v3 100 was peak)")
+
+
+def _written_name(statement: n.Statement) -> str | None:
+    """The keyword a statement writes, v4-only keywords (read as names by v3) included."""
+    if isinstance(statement, n.KeywordStatement) and statement.values is not None:
+        return statement.keyword.keyword
+    if isinstance(statement, n.Assignment) and isinstance(statement.target, n.VariableRef):
+        return statement.target.name.identity
+    return None
+
+
+_WRITE = re.compile(r"\s*([A-Za-z_]\w*)\s*(?:[.\[]|=)")
+
+
+def _v4_name_written(text: str) -> str | None:
+    """The word a statement the v3 reader could not parse writes (``KPROP = 1.5;`` after M-REN), if any."""
+    found = _WRITE.match(text)
+    return found[1].upper() if found else None
+
+
+def _all_zero(statement: n.Statement) -> bool:
+    values = statement.values if isinstance(statement, n.KeywordStatement) else None
+    return bool(values) and all(isinstance(value, n.Number) and value.value == 0 for value in values or ())

@@ -1,0 +1,83 @@
+"""X-GO-TIMING: statements that v3's blocking GO delayed run earlier in v4.
+
+v3 buffers one move per axis: a GO on an axis whose previous move is still
+running waits for it to end, so the statement after that GO runs when the
+previous segment finishes (v3:3405-3412); the v3 guide places OUT statements
+one FLY segment late on purpose (v3:4146-4158, v3:8052-8062). v4 buffers more
+moves and GO never waits (v4:2938-2944, v4:11080-11089). Flagged: the statement
+right after a GO that follows an earlier GO on a shared axis with no PAUSE IDLE
+between them (in text order; a label starts afresh), and ``PAUSE`` on TRIGGER.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.addressed import MOVES, addressed_axes
+from mintlang.migrate.rules.base import Action, Rule
+from mintlang.syntax import nodes as n
+
+_DELAYED = "v3 ran this when the previous move ended (GO waited); v4 GO does not wait: use PAUSE or MOVEBUFFERFREE"
+_TRIGGER = "PAUSE on TRIGGER relied on v3's one-move buffer; v4 buffers more moves (MOVEBUFFERFREE)"
+
+
+Running = frozenset[int] | None  # axes with a move started since the last wait; None: not known
+_IDLE: Running = frozenset()
+
+
+def _overlaps(running: Running, axes: tuple[int, ...] | None) -> bool:
+    if running == _IDLE:
+        return False
+    return running is None or axes is None or not running.isdisjoint(axes)
+
+
+def _started(running: Running, axes: tuple[int, ...] | None) -> Running:
+    return None if running is None or axes is None else running | frozenset(axes)
+
+
+class GoTiming(Rule):
+    """Flags what a blocking v3 GO delayed, and PAUSE on TRIGGER."""
+
+    id = "X-GO-TIMING"
+    rule_class = RuleClass.MANUAL
+    phase = Phase.MANUAL
+    summary = "statement after a GO that v3 delayed, PAUSE on TRIGGER -> manual (v4 GO never waits)"
+    evidence = "spec X-GO-TIMING; v3:3405-3412, v3:4146-4158, v3:8052-8062; v4:2938-2944, v4:11080-11089"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file in context.files.values():
+            yield from self._file(context, file)
+
+    def _file(self, context: Context, file: FileView) -> Iterator[Action]:
+        running, delayed = _IDLE, False
+        for line in file.document.lines:
+            if line.label is not None:
+                running, delayed = _IDLE, False
+            for statement in n.walk_statements(line.statements):
+                if delayed and not _moves(statement):
+                    yield self.flag(file, statement.span, _DELAYED)
+                delayed = False
+                if isinstance(statement, n.Pause):
+                    if _mentions(statement, "TRIGGER"):
+                        yield self.flag(file, statement.span, _TRIGGER)
+                    if _mentions(statement, "IDLE"):
+                        running = _IDLE
+                elif isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "GO":
+                    axes = addressed_axes(context, file, statement)
+                    delayed = _overlaps(running, axes)
+                    running = _started(running, axes)
+
+
+def _moves(statement: n.Statement) -> bool:
+    """A move set-up, another GO or a wait: its timing is the move's own."""
+    if isinstance(statement, n.Pause):
+        return True
+    return isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in {*MOVES, "GO"}
+
+
+def _mentions(statement: n.Pause, keyword: str) -> bool:
+    return any(
+        isinstance(node, n.KeywordRef) and node.keyword == keyword for node in n.walk_expression(statement.condition)
+    )

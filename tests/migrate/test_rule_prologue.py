@@ -1,0 +1,51 @@
+"""S-PROLOGUE: the I/O assignments v3 hardware made, as commented v4 statements to fill in."""
+
+from __future__ import annotations
+
+import mintlang
+from mintlang.diagnostics import Severity
+from tests.migrate.helpers import one_rule, rewritten
+
+
+def _notes(source: str, **options: str) -> list[str]:
+    return [item.reason for item in one_rule("S-PROLOGUE", source, **options).manual if item.rule == "S-PROLOGUE"]
+
+
+def test_moves_need_the_drive_enable_and_the_limits() -> None:
+    assert _notes("AXES[0,1]\nMOVEA = 1,2 : GO\n") == [
+        "DRIVEENABLEOUTPUT[0,1] = <output>; : REM v3 amplifier enable was dedicated; -1 if none is wired",
+        "DRIVEENABLE[0,1] = 1; : REM before the first move (after CONFIG); v4 error 40 otherwise",
+        "LIMITFORWARDINPUT[0,1] = <input>; : REM v3 had one limit input per axis for both directions",
+        "LIMITREVERSEINPUT[0,1] = <input>; : REM the same input as forward if wired as in v3",
+    ]
+
+
+def test_home_and_stop_need_their_inputs() -> None:
+    notes = _notes("HOME.1 = 0\n#STOP\nRETURN\n")
+    assert "HOMEINPUT[1] = <input>; : REM v3 home input was dedicated" in notes
+    assert "STOPINPUT[1] = <input>; : REM v3 had a stop input" in notes
+    assert _notes("#STOP\nRETURN\n", controller="mintdrive") == ["STOPINPUT[0] = <input>; : REM v3 had a stop input"]
+
+
+def test_what_the_program_already_assigns_is_not_listed() -> None:
+    source = "DRIVEENABLEOUTPUT.0 = 3\nRESET.0\nLIMITFORWARDINPUT.0 = 1\nLIMITREVERSEINPUT.0 = 1\nJOG.0 = 5\n"
+    assert _notes(source) == []
+
+
+def test_nothing_without_motion() -> None:
+    assert rewritten("S-PROLOGUE", "x = 1\nPRINT x\n") == "x = 1\nPRINT x\n"
+
+
+def test_the_output_still_compiles_and_is_idempotent() -> None:
+    source = "REM header\nAXES[0,1]\nMOVEA = 1,2 : GO\n"
+    once = rewritten("S-PROLOGUE", source)
+    assert once.startswith("REM header\nREM MIGRATE: S-PROLOGUE: DRIVEENABLEOUTPUT[0,1] = <output>;")
+    assert [line for line in once.splitlines() if "REM MIGRATE" not in line] == source.splitlines()
+    assert not [d for d in mintlang.parse(once, "v4").diagnostics if d.severity is Severity.ERROR]
+    assert rewritten("S-PROLOGUE", once) == once
+
+
+def test_the_notes_go_into_the_configuration_file() -> None:
+    result = one_rule("S-PROLOGUE", "MOVEA = 1 : GO\n", config="AUTO\n")
+    assert result.configuration is not None
+    assert result.configuration.text.startswith("AUTO\nREM MIGRATE: S-PROLOGUE: DRIVEENABLEOUTPUT[0] = <output>;")

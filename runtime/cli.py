@@ -37,7 +37,7 @@ from mintlang.source import read_source
 
 _USAGE_ERROR = 2
 _FAILED = 1
-_PROGRESS_AFTER_MS = 10_000  # runs shorter than this in simulated time finish too fast for a bar
+_PROGRESS_STEP_MS = 100  # simulated time between updates of the progress bar
 
 
 def _axes_list(text: str | None) -> tuple[int, ...] | None:
@@ -185,15 +185,18 @@ class _Recorders:
         self.tracing = tracing
         self.console = console
         self.progress = Progress(
-            TextColumn("simulated"),
-            BarColumn(),
-            TextColumn("{task.completed:.0f} / {task.total:.0f} ms"),
+            TextColumn("simulated {task.completed:.0f} ms"),
+            BarColumn(),  # a bar toward --until-ms, a pulse when the run has no bound in simulated time
             TimeElapsedColumn(),
             console=console,
             transient=True,
-            disable=not console.is_terminal or until_ms is None or until_ms < _PROGRESS_AFTER_MS,
+            disable=not console.is_terminal,
+            # on one screen, what the program prints goes above the bar; piped, it goes to its file untouched
+            redirect_stdout=sys.stdout.isatty(),
+            redirect_stderr=False,
         )
-        self.task = self.progress.add_task("run", total=until_ms or 0)
+        self.task = self.progress.add_task("run", total=until_ms)
+        self.shown = 0
 
     def on_tick(self, controller: Controller, tick: int) -> None:
         if tick == 0 and controller.server is not None:
@@ -202,7 +205,8 @@ class _Recorders:
             if self.trace is None:
                 self.trace = Trace(tuple(range(len(controller.axes))))
             self.trace.record(controller, tick)
-        if tick % 100 == 0:
+        if tick - self.shown >= _PROGRESS_STEP_MS:
+            self.shown = tick
             self.progress.update(self.task, completed=tick)
 
 

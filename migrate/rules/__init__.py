@@ -14,7 +14,7 @@ from mintlang.migrate.rules.declarations import DeclareVariables, DefaultAxes, I
 from mintlang.migrate.rules.defaults import KeepV3Defaults, ReportDefaults
 from mintlang.migrate.rules.explicit_axes import ExplicitAxes
 from mintlang.migrate.rules.expressions import ByteToggle, Precedence, Trigonometry
-from mintlang.migrate.rules.following import MasterSource
+from mintlang.migrate.rules.following import DefaultMaster, MasterSource
 from mintlang.migrate.rules.gearing import Gearing
 from mintlang.migrate.rules.inputs import InputByte, InputMask
 from mintlang.migrate.rules.looptime import LoopTime
@@ -130,6 +130,7 @@ RULES: tuple[Rule, ...] = (
     DefaultAxes(),
     InputEdges(),
     DeclareVariables(),
+    DefaultMaster(),
     KeepV3Defaults(),
     ExplicitAxes(),
     # manual items: application-wide notes, specific reasons, the catch-all last

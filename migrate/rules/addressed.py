@@ -10,6 +10,7 @@ notes (which axes rely on v3 hardware and defaults) and the explicit-axes rewrit
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 
 from mintlang.migrate.context import Context, FileView
@@ -18,8 +19,9 @@ from mintlang.migrate.rules.base import keyword_refs, written
 from mintlang.syntax import nodes as n
 
 CIRCLES = frozenset({"CIRCLEA", "CIRCLER"})  # two axes, three values (centre x, centre y, angle)
-POSITIONAL = frozenset({"MOVEA", "MOVER", "VECTORA", "VECTORR", "FLY", *CIRCLES})  # profiled with SPEED
-MOVES = frozenset({*POSITIONAL, "JOG", "HOME", "OFFSET", "FOLLOW", "CAM", "CAMA", "PULSE", "GEARN", "INCA", "INCR"})
+POSITIONAL = frozenset({"MOVEA", "MOVER", "VECTORA", "VECTORR", *CIRCLES})  # profiled with SPEED
+RAMPED = frozenset({*POSITIONAL, "JOG", "HOME", "OFFSET", "INCA", "INCR"})  # ramped with ACCEL and DECEL
+MOVES = frozenset({*RAMPED, "FLY", "FOLLOW", "CAM", "CAMA", "PULSE", "GEARN"})
 
 
 def addressed_axes(context: Context, file: FileView, statement: n.KeywordStatement) -> tuple[int, ...] | None:
@@ -59,10 +61,24 @@ def writes_any(context: Context, names: Iterable[str]) -> bool:
     for _, statement, keyword in keyword_refs(context, *wanted):
         if written(statement, keyword):
             return True
-    for _, _, statement in context.statements():
+    for file, _, statement in context.statements():
         if isinstance(statement, n.Assignment) and statement.target.name.identity in wanted:
             return True
+        if (
+            type(statement) is n.SyntaxError_
+            and unparsed_write(file.text[statement.span.start : statement.span.end]) in wanted
+        ):
+            return True  # FOLERRORFATAL = 2; — a v4 fill the v3 reader cannot parse
     return False
+
+
+_WRITE = re.compile(r"\s*([A-Za-z_]\w*)\s*(?:[.\[]|=)")
+
+
+def unparsed_write(text: str) -> str | None:
+    """The word a statement the v3 reader could not parse writes (``KPROP = 1.5;`` after M-REN), if any."""
+    found = _WRITE.match(text)
+    return found[1].upper() if found else None
 
 
 def axis_list(axes: tuple[int, ...]) -> str:

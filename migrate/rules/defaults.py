@@ -13,8 +13,10 @@ production machine: FOLERRORFATAL 16000 trips 16 times later than v4's 1000;
 an engineer porting a machine that must behave exactly as before asks for them,
 everyone else decides per parameter from the report. Where the v3 manual gives
 two defaults (SPEED, ACCEL, HMSPEED) nothing is written, only reported. Values
-are written at the top, before any SCALE, so they are counts, as the v3
-power-up defaults were.
+are written where the prologue notes go: after the last CONFIG (a v4 CONFIG
+calls DEFAULT, which resets them and SCALE, v4:8481-8482, v4:9006-9059), else at
+the top; either way before the program's own SCALE, so they are counts, as the
+v3 power-up defaults were.
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import (
     MOVES,
     POSITIONAL,
+    RAMPED,
     addressed_axes,
     axis_list,
     moved_axes,
@@ -34,8 +37,7 @@ from mintlang.migrate.rules.addressed import (
     writes_any,
 )
 from mintlang.migrate.rules.base import Action, Rule, keyword_refs, written
-from mintlang.migrate.rules.declarations import insert_lines, prologue_file
-from mintlang.migrate.rules.notes import prologue_notes
+from mintlang.migrate.rules.notes import after_configuration, prologue_notes
 from mintlang.syntax import nodes as n
 
 _STEPPER_VALUES = frozenset({"_STEPPER", "_MICRO", "_CFSTEPPER"})  # CONFIG 2 and 3: v3:6931-6936
@@ -64,6 +66,10 @@ def _profiled(context: Context) -> tuple[int, ...] | None:
     return moved_axes(context, POSITIONAL)
 
 
+def _ramped(context: Context) -> tuple[int, ...] | None:
+    return moved_axes(context, RAMPED)
+
+
 def _homing(context: Context) -> tuple[int, ...] | None:
     return moved_axes(context, ("HOME",))
 
@@ -88,7 +94,7 @@ DEFAULTS: tuple[Default, ...] = (
         None,
         "300000 (3000000 in the CONFIG table)",
         300000,
-        _moving,
+        _ramped,
     ),
     Default(
         ("HOMESPEED",), frozenset({"HMSPEED", "HOMESPEED"}), None, "40000 (20000 in the CONFIG table)", 40000, _homing
@@ -176,4 +182,4 @@ class KeepV3Defaults(Rule):
             if default.v3_value is not None
         ]
         if lines:
-            yield insert_lines(prologue_file(context), lines)
+            yield after_configuration(context, lines)

@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 from mintlang.migrate.context import Context, FileView
-from mintlang.migrate.model import RuleClass
-from mintlang.migrate.rules.base import keyword_refs, selector_text, values_text, written
+from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.addressed import addressed_axes, writes_any
+from mintlang.migrate.rules.base import Action, Rule, keyword_refs, selector_text, values_text, written
 from mintlang.migrate.rules.literals import integer_literal
+from mintlang.migrate.rules.notes import after_configuration
 from mintlang.migrate.rules.spelling import like
 from mintlang.migrate.rules.statements import Refusal, StatementRule, fill
 from mintlang.syntax import nodes as n
@@ -105,3 +109,40 @@ def _configures_off(context: Context) -> bool:
                 ):
                     return True
     return False
+
+
+class DefaultMaster(Rule):
+    """The master a v3 slave followed without a FOLLOWAXIS: by default axis 0 followed axis 1 and
+    axis 1 axis 0 (v3:8199). v4's default master is channel 0's position for every axis
+    (v4:9048-9050, v4:13925), the same for axis 1 but axis 0 itself for axis 0 (error 70,
+    v4:18757-18761). So an application whose axis 0 follows (FOLLOW, FLY, CAM, a gearbox) and
+    never chooses a master gets ``MASTERSOURCE.0 = _msPOS : MASTERCHANNEL.0 = 1``, as the v4
+    guide's own port of the flying shear does (v4:3781-3804); an axis above 1 that follows with
+    no FOLLOWAXIS has no documented v3 default: manual item."""
+
+    id = "S-MASTER-DEFAULT"
+    rule_class = RuleClass.SEMI
+    phase = Phase.INSERTIONS
+    summary = "axis 0 follows with no FOLLOWAXIS -> 'MASTERSOURCE.0 = _msPOS : MASTERCHANNEL.0 = 1' (v3's default)"
+    evidence = "spec S-MASTER; v3:8199; v4:9048-9050, v4:13925, v4:3781-3804, v4:18757-18761"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        if writes_any(context, ("FOLLOWAXIS", "MASTERSOURCE", "MASTERCHANNEL")):
+            return
+        followers: set[int] = set()
+        for file, statement, keyword in keyword_refs(context, *_FOLLOWING):
+            if not written(statement, keyword):
+                continue
+            axes = addressed_axes(context, file, statement) if isinstance(statement, n.KeywordStatement) else None
+            if axes is None:
+                yield self.flag(file, statement.span, "the axes here are not known: choose the master (v3 default)")
+                continue
+            for axis in axes:
+                if axis > 1 and axis not in followers:
+                    yield self.flag(file, statement.span, f"axis {axis} follows with no FOLLOWAXIS: choose its master")
+            followers.update(axes)
+        if 0 in followers and context.supports("MASTERCHANNEL"):
+            yield after_configuration(context, ["MASTERSOURCE.0 = _msPOS : MASTERCHANNEL.0 = 1"])
+
+
+_FOLLOWING = ("FOLLOW", "FLY", "CAM", "CAMA", "GEARN")

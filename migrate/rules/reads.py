@@ -75,6 +75,7 @@ class BitTest(Rule):
     keyword: str
     target: str
     bits: Mapping[int, str]
+    exact: frozenset[int] = frozenset()  # values that mean "this bit and no other"
 
     def apply(self, context: Context) -> Iterator[Action]:
         for file, use in context.keyword_uses(self.keyword):
@@ -101,6 +102,8 @@ class BitTest(Rule):
         read = like(keyword.spelling, self.target) + selector_text(file, keyword)
         if value == 0:
             return f"{read} {operator} 0"
+        if value in self.exact:
+            return f"{read} {operator} {self.bits[value]}"
         test = f"({read} & {self.bits[value]})"
         return test if operator == "=" else f"{test} = 0"
 
@@ -111,7 +114,9 @@ class BitTest(Rule):
 
 class ModeTest(BitTest):
     """v3 MODE returned one mode number; v4 AXISMODE is a bit pattern, so ``MODE = _jog``
-    becomes ``(AXISMODE & _mdJOG)``. Modes with no v4 bit (5 pulse following, 11, 17),
+    becomes ``(AXISMODE & _mdJOG)``. Mode 18 (gearing, clutch finished) becomes
+    ``AXISMODE = _mdFOLLOW``: during a v4 clutch the FLY bit is set too (v4:14791-14793), so only
+    the exact pattern says the clutch is over. Modes with no v4 bit (5 pulse following, 11, 17),
     order comparisons and arithmetic on MODE are flagged."""
 
     id = "S-MODE"
@@ -120,6 +125,7 @@ class ModeTest(BitTest):
     keyword = "MODE"
     target = "AXISMODE"
     bits = MODE_BITS
+    exact = frozenset({18})
 
 
 class ErrorTest(BitTest):

@@ -5,12 +5,12 @@ changed (X-UNITS). Each flags only the statements its spec row names.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from mintlang.keyworddb.model import Controller
 from mintlang.migrate.context import Context
 from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.rules.addressed import unparsed_write
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -94,7 +94,7 @@ class ChangedUnits(Rule):
         mintdrive = context.controller.controller is Controller.MINTDRIVE
         block_end: dict[Unit, int] = {}  # the last line of the tuning block each file is in
         for file, line, statement in context.statements():
-            name = _written_name(statement) or _v4_name_written(file.text[statement.span.start : statement.span.end])
+            name = _written_name(statement) or unparsed_write(file.text[statement.span.start : statement.span.end])
             if name in _TUNING:
                 previous = block_end.get(file.unit)
                 block_end[file.unit] = line.number
@@ -111,15 +111,6 @@ def _written_name(statement: n.Statement) -> str | None:
     if isinstance(statement, n.Assignment) and isinstance(statement.target, n.VariableRef):
         return statement.target.name.identity
     return None
-
-
-_WRITE = re.compile(r"\s*([A-Za-z_]\w*)\s*(?:[.\[]|=)")
-
-
-def _v4_name_written(text: str) -> str | None:
-    """The word a statement the v3 reader could not parse writes (``KPROP = 1.5;`` after M-REN), if any."""
-    found = _WRITE.match(text)
-    return found[1].upper() if found else None
 
 
 def _all_zero(statement: n.Statement) -> bool:

@@ -35,9 +35,15 @@ class StatementRule(Rule):
                     yield self.flag(file, statement.span, result)
                 elif result is not None:
                     yield self.replace(file, statement.span, result)
+                    if (caveat := self.caveat(statement)) is not None:
+                        yield self.flag(file, statement.span, caveat)
 
     def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
         raise NotImplementedError
+
+    def caveat(self, statement: n.KeywordStatement) -> str | None:
+        """What the user must still check about a rewrite, reported as a manual item beside it."""
+        return None
 
     @staticmethod
     def unsupported(context: Context, keyword: str) -> Refusal | None:
@@ -136,28 +142,36 @@ class ServoOff(StatementRule):
     def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
         return self.unsupported(context, "TORQUE") or write(file, statement, "TORQUE", "0")
 
+    def caveat(self, statement: n.KeywordStatement) -> str | None:
+        return "TORQUE = 0 suits a current (torque) amplifier; a velocity drive needs DRIVEENABLE = 0 instead"
+
 
 class ServoOn(StatementRule):
-    """``SERVOC[axes]`` becomes ``CANCEL[axes]``, which "starts the axis servoing in its
-    current position but retains all positional data"."""
+    """``SERVOC[axes]`` becomes ``CANCEL[axes] : DRIVEENABLE[axes] = 1;``. CANCEL "starts the axis
+    servoing in its current position but retains all positional data", but leaves the drive as it
+    is (v4:4743, v4:8016), and the default action of a v4 limit or following error disables it
+    (v4:13497, v4:10677): v3's servo-on after such an error needs the drive enabled again, as the
+    v4 guide's own handler does (v4:4769-4771). Enabling a drive that is on changes nothing."""
 
     id = "S-SERVOC"
     rule_class = RuleClass.SEMI
-    summary = "SERVOC[axes] -> CANCEL[axes]"
-    evidence = "spec S-SERVOC; v4:15887, v4:2764-2767"
+    summary = "SERVOC[axes] -> CANCEL[axes] : DRIVEENABLE[axes] = 1;"
+    evidence = "spec S-SERVOC; v4:15887, v4:2764-2767, v4:4743-4747, v4:4769-4771"
     keywords = frozenset({"SERVOC"})
 
     def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
-        return f"{like(statement.keyword.spelling, 'CANCEL')}{selector_text(file, statement.keyword)}"
+        cancel = f"{like(statement.keyword.spelling, 'CANCEL')}{selector_text(file, statement.keyword)}"
+        return f"{cancel} : {write(file, statement, 'DRIVEENABLE', '1')}"
 
 
 class Limits(StatementRule):
-    """``DISLIMIT[axes]`` becomes ``LIMITMODE[axes] = 0; : CANCEL[axes]`` (v3 DISLIMIT also
-    cancelled the limit error) and ``ENLIMIT[axes]`` becomes ``LIMITMODE[axes] = 1;``."""
+    """``DISLIMIT[axes]`` becomes ``LIMITMODE[axes] = 0; : CANCEL[axes] : DRIVEENABLE[axes] = 1;``
+    (v3 DISLIMIT also cancelled the limit error; CANCEL leaves the drive the error disabled off, so
+    it is enabled again, as the spec's S-LIMIT asks) and ``ENLIMIT[axes]`` becomes ``LIMITMODE[axes] = 1;``."""
 
     id = "S-LIMIT"
     rule_class = RuleClass.SEMI
-    summary = "DISLIMIT -> LIMITMODE[axes] = 0; : CANCEL[axes]; ENLIMIT -> LIMITMODE[axes] = 1;"
+    summary = "DISLIMIT -> LIMITMODE[axes] = 0; : CANCEL[axes] : DRIVEENABLE[axes] = 1;; ENLIMIT -> LIMITMODE = 1;"
     evidence = "spec S-LIMIT; v3:7453; v4:9239, v4:9863, v4:13478-13497"
     keywords = frozenset({"DISLIMIT", "ENLIMIT"})
 
@@ -165,7 +179,8 @@ class Limits(StatementRule):
         if statement.keyword.keyword == "ENLIMIT":
             return write(file, statement, "LIMITMODE", "1")
         cancel = like(statement.keyword.spelling, "CANCEL") + selector_text(file, statement.keyword)
-        return f"{write(file, statement, 'LIMITMODE', '0')} : {cancel}"
+        enable = write(file, statement, "DRIVEENABLE", "1")  # CANCEL leaves the drive the error disabled off
+        return f"{write(file, statement, 'LIMITMODE', '0')} : {cancel} : {enable}"
 
 
 class Interrupts(StatementRule):

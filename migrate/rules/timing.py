@@ -4,9 +4,13 @@ v3 buffers one move per axis: a GO on an axis whose previous move is still
 running waits for it to end, so the statement after that GO runs when the
 previous segment finishes (v3:3405-3412); the v3 guide places OUT statements
 one FLY segment late on purpose (v3:4146-4158, v3:8052-8062). v4 buffers more
-moves and GO never waits (v4:2938-2944, v4:11080-11089). Flagged: the statement
-right after a GO that follows an earlier GO on a shared axis with no PAUSE IDLE
-between them (in text order; a label starts afresh), and ``PAUSE`` on TRIGGER.
+moves and GO never waits (v4:2938-2944, v4:11080-11089). Flagged: after a GO
+that follows an earlier GO on a shared axis with no PAUSE IDLE between them (in
+text order; a label starts afresh), the first statement with an effect outside
+the program (an output, the relay, a DAC, the terminal, the comms array, a
+subroutine) before the next move, GO or PAUSE; and ``PAUSE`` on TRIGGER. Setting
+up the next move (MASTERDISTANCE, SPEED …) is not flagged: it applies to the move
+loaded next in both versions (v4:3805-3816).
 """
 
 from __future__ import annotations
@@ -56,9 +60,11 @@ class GoTiming(Rule):
             if line.label is not None:
                 running, delayed = _IDLE, False
             for statement in n.walk_statements(line.statements):
-                if delayed and not _moves(statement):
+                if _moves(statement):
+                    delayed = False
+                elif delayed and _visible(statement):
                     yield self.flag(file, statement.span, _DELAYED)
-                delayed = False
+                    delayed = False
                 if isinstance(statement, n.Pause):
                     if _mentions(statement, "TRIGGER"):
                         yield self.flag(file, statement.span, _TRIGGER)
@@ -75,6 +81,22 @@ def _moves(statement: n.Statement) -> bool:
     if isinstance(statement, n.Pause):
         return True
     return isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in {*MOVES, "GO"}
+
+
+_EFFECTS = frozenset({"OUT", "RELAY", "DAC", "AUXDAC", "BEEP", "CLS", "LOCATE", "COMMS"})
+
+
+def _visible(statement: n.Statement) -> bool:
+    """Whether the statement acts outside the program, so running it earlier shows."""
+    kind = type(statement)
+    if kind is n.Print or (kind is n.Jump and statement.word == "GOSUB"):  # type: ignore[union-attr]
+        return True
+    if kind is n.FunctionStatement:
+        return statement.call.function == "COMMS"  # type: ignore[union-attr]
+    if kind is not n.KeywordStatement:
+        return False
+    word = statement.keyword.keyword  # type: ignore[union-attr]
+    return word in _EFFECTS or (word.startswith("OUT") and word[3:].isdigit())  # v3's OUT0..OUT7
 
 
 def _mentions(statement: n.Pause, keyword: str) -> bool:

@@ -107,6 +107,11 @@ class CurrentLimit(StatementRule):
     evidence = "spec S-CURR; v4:8712, v4:444-445, v4:9015-9016"
     keywords = frozenset({"CURRLIMIT"})
 
+    def caveat(self, statement: n.KeywordStatement) -> str | None:
+        if any(isinstance(value, n.Number) and value.value < 1 for value in statement.values or ()):
+            return "CURRLIMIT below v3's 1..100: the v4 limit 0 holds the output at 0 V"  # v3:7073, v4:8815
+        return None
+
     def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
         if statement.values is None:
             return Refusal("CURRLIMIT read: DACLIMITMAX (NextMove) or CURRENTLIMIT (MintDrive) in v4")
@@ -144,6 +149,11 @@ class Ramp(StatementRule):
     summary = "RAMP[axes] = v -> SRAMP[axes] = v * 10"
     evidence = "spec S-RAMP; v3:11212; v4:15444, v4:2837-2839"
     keywords = frozenset({"RAMP"})
+
+    def caveat(self, statement: n.KeywordStatement) -> str | None:
+        if all(isinstance(value, n.Number) and value.value == 0 for value in statement.values or ()):
+            return None  # no smoothing in either version
+        return "SRAMP shapes the ramps differently from v3 RAMP: check the motion"  # spec S-RAMP
 
     def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
         if statement.values is None or any(value is None for value in statement.values):

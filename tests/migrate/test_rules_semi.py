@@ -409,8 +409,7 @@ def test_input_terminal_dac_master_and_reset_rewrites_migrate_once(controller: s
 def test_a_current_limit_of_zero_is_rewritten_and_reported() -> None:
     # v3 CURRLIMIT ranges 1..100 (v3:7073); v4 DACLIMITMAX = 0 is legal and holds the output at 0 V (v4:8815)
     assert rewritten("S-CURR", "CURRLIMIT[2] = 0\n") == (
-        "REM MIGRATE: S-CURR: CURRLIMIT below v3's 1..100: the v4 limit 0 holds the output at 0 V\n"
-        "DACLIMITMAX.2 = 0\n"
+        "REM MIGRATE: S-CURR: CURRLIMIT below v3's 1..100: the v4 limit 0 holds the output at 0 V\nDACLIMITMAX.2 = 0\n"
     )
 
 

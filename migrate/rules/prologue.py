@@ -20,6 +20,7 @@ from mintlang.dialect import Dialect
 from mintlang.migrate.context import Context
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import MOVES, axis_list, moved_axes, writes_any
+from mintlang.migrate.rules.axes import default_axes, selector_axes
 from mintlang.migrate.rules.base import Action, Rule, keyword_refs
 from mintlang.migrate.rules.notes import prologue_notes
 from mintlang.semantic.events import EventKind, event_of
@@ -41,6 +42,27 @@ class Assignment:
 
 def _moving(context: Context) -> tuple[int, ...] | None:
     return moved_axes(context, MOVES)
+
+
+def _limited(context: Context) -> tuple[int, ...] | None:
+    """The moved axes, or those whose limit switches the program only reads or handles: with no
+    input assigned v4's LIMIT reads 0 and no limit error ever happens (v4:13321-13332)."""
+    moved = _moving(context)
+    if moved != ():
+        return moved
+    axes: set[int] = set()
+    for file, statement, keyword in keyword_refs(context, *_LIMIT_WORDS):
+        named = selector_axes(keyword)
+        if named is None and keyword.selector is None:
+            default = default_axes(context, file, statement.span.start)
+            named = default[:1] if default and keyword.keyword.startswith("LIMIT") else default  # a read: the first
+        if named is None:
+            return None
+        axes.update(named)
+    return tuple(sorted(axes))
+
+
+_LIMIT_WORDS = ("LIMIT", "LIMITFORWARD", "LIMITREVERSE", "DISLIMIT", "ENLIMIT")
 
 
 def _homing(context: Context) -> tuple[int, ...] | None:
@@ -87,13 +109,13 @@ ASSIGNMENTS: tuple[Assignment, ...] = (
     Assignment(
         "LIMITFORWARDINPUT{axes} = <input>;",
         frozenset({"LIMITFORWARDINPUT"}),
-        _moving,
+        _limited,
         "v3 had one limit input per axis for both directions",
     ),
     Assignment(
         "LIMITREVERSEINPUT{axes} = <input>;",
         frozenset({"LIMITREVERSEINPUT"}),
-        _moving,
+        _limited,
         "the same input as forward if wired as in v3",
     ),
     Assignment(

@@ -44,6 +44,7 @@ class ReadRenames(Rule):
                 yield self.flag(file, keyword.span, f"reading {keyword.keyword}: {new} is not on this controller")
 
 
+PULSE = 5  # v3 MODE _pulse: pulse following (v3:10040-10061)
 # v3 MODE value -> v4 AXISMODE bit (v3:10040-10061 vs v4:7139-7171); 0 means idle.
 MODE_BITS: Mapping[int, str] = MappingProxyType(
     {
@@ -81,6 +82,11 @@ class BitTest(Rule):
         for file, use in context.keyword_uses(self.keyword):
             parent = context.parents(use.statement).get(id(use.keyword)) if use.use is Use.READ else None
             value = self._compared_value(context, use.keyword, parent)
+            special = self._special(context, file, use.statement, parent, value)
+            if special is not None:
+                assert isinstance(parent, n.Binary)
+                yield self.replace(file, parent.span, special)
+                continue
             if value is None or (value != 0 and value not in self.bits):
                 yield self.flag(file, use.keyword.span, self.refusal)
                 continue
@@ -96,6 +102,12 @@ class BitTest(Rule):
             return int(other.value)
         if isinstance(other, n.ConstantRef) and other.name in constants:
             return int(constants[other.name].value)
+        return None
+
+    def _special(
+        self, context: Context, file: FileView, statement: n.Statement, parent: n.Expression | None, value: int | None
+    ) -> str | None:
+        """A use whose v4 form is not a bit test of the same value (none by default)."""
         return None
 
     def _test(self, file: FileView, keyword: n.KeywordRef, operator: str, value: int) -> str:
@@ -126,6 +138,21 @@ class ModeTest(BitTest):
     target = "AXISMODE"
     bits = MODE_BITS
     exact = frozenset({18})
+
+    def _special(
+        self, context: Context, file: FileView, statement: n.Statement, parent: n.Expression | None, value: int | None
+    ) -> str | None:
+        """``PAUSE MODE = _pulse`` in a program that offsets waits for the OFFSET to end, the axis back in
+        pulse following (v3:4274-4278): ``PAUSE !(AXISMODE & _mdOFFSET)`` (v4:14809), as the spec says."""
+        if value != PULSE or type(statement) is not n.Pause or statement.condition is not parent:
+            return None
+        if not isinstance(parent, n.Binary) or parent.operator != "=":
+            return None
+        if next(context.keyword_uses("OFFSET"), None) is None:
+            return None
+        keyword = parent.left if isinstance(parent.left, n.KeywordRef) else parent.right
+        assert isinstance(keyword, n.KeywordRef)
+        return f"!({like(keyword.spelling, self.target)}{selector_text(file, keyword)} & _mdOFFSET)"
 
 
 class ErrorTest(BitTest):

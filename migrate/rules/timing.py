@@ -10,7 +10,9 @@ text order; a label starts afresh), the first statement with an effect outside
 the program (an output, the relay, a DAC, the terminal, the comms array, a
 subroutine) before the next move, GO or PAUSE; and ``PAUSE`` on TRIGGER. Setting
 up the next move (MASTERDISTANCE, SPEED …) is not flagged: it applies to the move
-loaded next in both versions (v4:3805-3816).
+loaded next in both versions (v4:3805-3816). Also flagged: a move loaded on an axis
+that is still homing (no PAUSE IDLE since its HOME), which v3's blocking GO
+sequenced and v4 refuses with error 10 (v4:11473-11475).
 """
 
 from __future__ import annotations
@@ -25,6 +27,7 @@ from mintlang.syntax import nodes as n
 
 _DELAYED = "v3 ran this when the previous move ended (GO waited); v4 GO does not wait: use PAUSE or MOVEBUFFERFREE"
 _TRIGGER = "PAUSE on TRIGGER relied on v3's one-move buffer; v4 buffers more moves (MOVEBUFFERFREE)"
+_HOMING = "v3 GO waited for the datum; v4 loads no move while the axis homes (error 10): PAUSE IDLE first"
 
 
 Running = frozenset[int] | None  # axes with a move started since the last wait; None: not known
@@ -55,21 +58,28 @@ class GoTiming(Rule):
             yield from self._file(context, file)
 
     def _file(self, context: Context, file: FileView) -> Iterator[Action]:
-        running, delayed = _IDLE, False
+        running, homing, delayed = _IDLE, _IDLE, False
         for line in file.document.lines:
             if line.label is not None:
-                running, delayed = _IDLE, False
+                running, homing, delayed = _IDLE, _IDLE, False
             for statement in n.walk_statements(line.statements):
                 if _moves(statement):
                     delayed = False
                 elif delayed and _visible(statement):
                     yield self.flag(file, statement.span, _DELAYED)
                     delayed = False
+                if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in MOVES:
+                    axes = addressed_axes(context, file, statement)
+                    if statement.keyword.keyword == "HOME" and statement.values is not None:
+                        homing = _started(homing, axes)
+                    elif _overlaps(homing, axes):
+                        yield self.flag(file, statement.span, _HOMING)
+                        homing = _IDLE
                 if isinstance(statement, n.Pause):
                     if _mentions(statement, "TRIGGER"):
                         yield self.flag(file, statement.span, _TRIGGER)
-                    if _mentions(statement, "IDLE"):
-                        running = _IDLE
+                    if _mentions(statement, "IDLE") or _mentions(statement, "HOME"):
+                        running, homing = _IDLE, _IDLE
                 elif isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "GO":
                     axes = addressed_axes(context, file, statement)
                     delayed = _overlaps(running, axes)

@@ -87,3 +87,11 @@ def test_markers_are_idempotent_and_leave_the_bytes(rule: str) -> None:
     assert once != source
     assert "".join(line for line in once.splitlines(keepends=True) if "REM MIGRATE:" not in line) == source
     assert one_rule(rule, once).text == once
+
+
+def test_a_move_loaded_while_the_axis_homes_is_flagged() -> None:
+    # v3's GO waited for the datum; v4 refuses a move on a homing axis (v4:11473-11475)
+    assert flagged("X-GO-TIMING", "AXES[0,1]\nHOME = 1;\nVECTORA = 10, 20 : GO\n") == [
+        "v3 GO waited for the datum; v4 loads no move while the axis homes (error 10): PAUSE IDLE first"
+    ]
+    assert flagged("X-GO-TIMING", "AXES[0,1]\nHOME = 1;\nPAUSE IDLE\nVECTORA = 10, 20 : GO\n") == []

@@ -49,3 +49,8 @@ def test_the_notes_go_into_the_configuration_file() -> None:
     result = one_rule("S-PROLOGUE", "MOVEA = 1 : GO\n", config="AUTO\n")
     assert result.configuration is not None
     assert result.configuration.text.startswith("AUTO\nREM MIGRATE: S-PROLOGUE: DRIVEENABLEOUTPUT[0] = <output>;")
+
+
+def test_limit_switches_read_without_moves_still_need_their_inputs() -> None:
+    notes = rewritten("S-PROLOGUE", "AXES[0,1]\nPAUSE LIMIT.0 = 0 & LIMIT.1 = 0\n")
+    assert "LIMITFORWARDINPUT[0,1] = <input>;" in notes and "LIMITREVERSEINPUT[0,1] = <input>;" in notes

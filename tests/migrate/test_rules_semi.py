@@ -423,3 +423,9 @@ def test_axis_0_following_without_followaxis_gets_v3s_default_master() -> None:
 
 def test_an_axis_above_1_following_without_followaxis_is_left_to_the_user() -> None:
     assert flagged("S-MASTER-DEFAULT", "FOLLOW.2 = 1\n") == ["axis 2 follows with no FOLLOWAXIS: choose its master"]
+
+
+def test_pause_until_pulse_following_after_an_offset_waits_for_the_offset_to_end() -> None:
+    # v3:4274-4278: the axis is back in pulse following when the offset is done; v4:14809
+    source = "OFFSET = 100 : GO\nPAUSE MODE = _pulse\n"
+    assert rewritten("S-MODE", source) == "OFFSET = 100 : GO\nPAUSE !(AXISMODE & _mdOFFSET)\n"

@@ -14,7 +14,7 @@ from mintlang.migrate.rules.declarations import DeclareVariables, DefaultAxes, I
 from mintlang.migrate.rules.defaults import KeepV3Defaults, ReportDefaults
 from mintlang.migrate.rules.explicit_axes import ExplicitAxes
 from mintlang.migrate.rules.expressions import ByteToggle, Precedence, Trigonometry
-from mintlang.migrate.rules.following import DefaultMaster, MasterSource
+from mintlang.migrate.rules.following import Clutch, DefaultMaster, MasterSource
 from mintlang.migrate.rules.gearing import Gearing
 from mintlang.migrate.rules.inputs import InputByte, InputMask
 from mintlang.migrate.rules.looptime import LoopTime
@@ -115,6 +115,7 @@ RULES: tuple[Rule, ...] = (
     AnalogueInputs(),
     ResetSideEffects(),
     MasterSource(),
+    Clutch(),
     Gearing(),
     Cams(),
     AccelAlsoDecel(),

@@ -8,6 +8,7 @@ from mintlang.migrate.context import Context, FileView
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import addressed_axes, writes_any
 from mintlang.migrate.rules.base import Action, Rule, keyword_refs, selector_text, values_text, written
+from mintlang.migrate.rules.gearing import master_increments
 from mintlang.migrate.rules.literals import integer_literal
 from mintlang.migrate.rules.notes import after_configuration
 from mintlang.migrate.rules.spelling import like
@@ -34,9 +35,7 @@ class MasterSource(StatementRule):
     only (v4:13926-13928); and an application that writes SCALE: v3 scaled MASTERINC by the
     master axis' SCALE (v3:3771-3777), v4 scales the master into the slave's user units
     (v4:13972-13977), so unscaled counts (SCALE never written, or written as 1) are the
-    only case proven the same. Also refused: an application whose FOLLOW moves use a
-    MASTERINC (MASTERDISTANCE) but choose no FOLLOWMODE, as v4 applies MASTERDISTANCE to
-    FOLLOW only in the clutch modes (v4:13870-13873; S-GEAR): the v3 ramp needs review.
+    only case proven the same. The ramp a MASTERINC gave FOLLOW is S-CLUTCH's.
     """
 
     id = "S-MASTER"
@@ -64,10 +63,6 @@ class MasterSource(StatementRule):
             return Refusal(
                 "an axis is configured off: follow its encoder with MASTERSOURCE = _msENCODER if it is the master"
             )
-        if _clutch(context):
-            return Refusal(
-                "FOLLOW with MASTERINC: v4 MASTERDISTANCE acts on FOLLOW only in FOLLOWMODE 2/3; set the master by hand"
-            )
         if scale_is_set(context):
             return Refusal("SCALE is set: v4 scales the master into the slave's user units, v3 by the master's SCALE")
         selector = selector_text(file, statement.keyword)
@@ -76,15 +71,6 @@ class MasterSource(StatementRule):
             return f"{source} = _msSPEED{fill(selector)}"
         channel = f"{like(statement.keyword.spelling, 'MASTERCHANNEL')}{selector} = {values_text(file, statement)}"
         return f"{source} = _msPOS{fill(selector)} : {channel}"
-
-
-def _clutch(context: Context) -> bool:
-    """Whether FOLLOW moves run with a master distance but no FOLLOWMODE is chosen."""
-
-    def used(*keywords: str) -> bool:
-        return next(keyword_refs(context, *keywords), None) is not None
-
-    return used("MASTERINC", "MASTERDISTANCE") and used("FOLLOW") and not used("FOLLOWMODE")
 
 
 def scale_is_set(context: Context) -> bool:
@@ -146,3 +132,34 @@ class DefaultMaster(Rule):
 
 
 _FOLLOWING = ("FOLLOW", "FLY", "CAM", "CAMA", "GEARN")
+
+
+class Clutch(StatementRule):
+    """v3 FOLLOW ramped up to (and down from) its ratio over MASTERINC when one was set
+    (v3:3716-3730); v4 does that only in FOLLOWMODE 2, ``_fmCLUTCH`` (v4:3529-3535, v4:3605-3630),
+    its default mode 0 starting and stopping at once (v4:3491-3492, v4:3546). So a FOLLOW on an
+    axis whose MASTERINC is a literal other than 1 becomes ``FOLLOWMODE.a = _fmCLUTCH : FOLLOW.a = r``
+    in an application that chooses no FOLLOWMODE; a MASTERINC that may be 1 (no clutch in v3) or
+    is computed leaves the choice to the user."""
+
+    id = "S-CLUTCH"
+    rule_class = RuleClass.SEMI
+    summary = "FOLLOW on an axis with MASTERINC -> FOLLOWMODE = _fmCLUTCH : FOLLOW (v3 ramped over MASTERINC)"
+    evidence = "spec S-GEAR, S-MASTER; v3:3716-3730; v4:3491-3492, v4:3529-3535, v4:3546, v4:3605-3630"
+    keywords = frozenset({"FOLLOW"})
+
+    def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
+        if statement.values is None or writes_any(context, ("FOLLOWMODE",)):
+            return None
+        increments = master_increments(context)
+        axes = addressed_axes(context, file, statement)
+        if increments is None or axes is None:
+            return Refusal("MASTERINC or FOLLOW axes are computed: choose FOLLOWMODE (clutch or not) by hand")
+        written = [increments.get(axis, set()) for axis in axes]
+        if not any(written):
+            return None
+        if any(None in values or 1 in values for values in written):
+            return Refusal("a MASTERINC here may be 1 (v3: no clutch): choose FOLLOWMODE by hand")
+        selector = selector_text(file, statement.keyword)
+        mode = f"{like(statement.keyword.spelling, 'FOLLOWMODE')}{selector} = _fmCLUTCH{fill(selector)}"
+        return f"{mode} : {file.slice(statement.span)}"

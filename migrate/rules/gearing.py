@@ -156,7 +156,7 @@ def _gears(context: Context) -> dict[int, Gear | Refusal]:
             found = denominators if statement.keyword.keyword == "GEARD" else numerators
             for axis, value in axis_values(context, file, statement):
                 found.setdefault(axis, set()).add(integer_literal(value))
-    increments = _master_increments(context)
+    increments = master_increments(context)
     gears: dict[int, Gear | Refusal] = {}
     for axis in denominators.keys() | numerators.keys():
         gears[axis] = _gear(axis, denominators.get(axis, set()), numerators.get(axis, set()), increments)
@@ -184,7 +184,7 @@ def _gear(
     return Gear(denominator, known, bool(written))
 
 
-def _master_increments(context: Context) -> dict[int, set[int | None]] | None:
+def master_increments(context: Context) -> dict[int, set[int | None]] | None:
     """The literal MASTERINC (MASTERDISTANCE after M-REN) values per axis; None for computed axes.
 
     A MASTERDISTANCE written without axes reads to the v3 parser as an assignment to a name.

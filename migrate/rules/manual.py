@@ -249,6 +249,10 @@ class InvalidInV3(Rule):
         for file, _, statement in context.statements():
             if isinstance(statement, n.BareName) and context.db.lookup(statement.name.text) is None:
                 yield self.flag(file, statement.span, f"'{statement.name.text}' is not a Mint keyword (misprint?)")
+            elif isinstance(statement, n.KeywordStatement) and statement.arguments and statement.values is None:
+                keyword = context.db.keywords.get(statement.keyword.keyword)
+                if keyword is not None and not keyword.takes_operands:  # STOP following: a REM missing
+                    yield self.flag(file, statement.span, f"{keyword.name} takes no operands (a comment missing REM?)")
         for unit, structure in context.model.structures.items():
             for diagnostic in structure.diagnostics:
                 if diagnostic.severity is Severity.ERROR:

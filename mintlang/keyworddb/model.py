@@ -7,8 +7,11 @@ project sees, so the generator and the consumers agree on one contract.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from enum import StrEnum
+
+_ADDRESSING = re.compile(r"\[[^\]]*\]|\{#<terminal>\}|\{?\.<[^>]*>\}?")  # [axes], {#<terminal>}, .<channel>
 
 
 class Controller(StrEnum):
@@ -84,6 +87,20 @@ class Keyword:
     documented: bool  # False for keywords only listed (advanced and CAN stubs)
     line: int  # line of the entry in the v4 guide
     notes: tuple[str, ...]  # conflicts the manual itself contains about this keyword
+
+    @property
+    def takes_operands(self) -> bool:
+        """Whether a documented format has operands after the axes (``LOCATE 1,2`` yes, ``STOP[axes]`` no);
+        a keyword without a documented format is given the benefit of the doubt."""
+        if not self.formats:
+            return True
+        for layout in self.formats:
+            text = layout.strip()
+            if not text.upper().startswith(self.name):
+                return True
+            if _ADDRESSING.sub("", text[len(self.name) :]).strip():
+                return True
+        return False
 
     def attributes_for(self, controller: Controller) -> Attributes | None:
         """The attributes row that applies to ``controller``, if the manual gives one."""

@@ -60,3 +60,8 @@ def test_leftover_catch_all_does_not_repeat_an_earlier_item() -> None:
 def test_migrated_text_that_is_already_v4_is_not_flagged() -> None:
     source = "KPROP = 2;\nEVENTDISABLE = EVENTDISABLE | 0xA0\nIF (AXISMODE & _mdJOG) THEN x = 1\n"
     assert migrate(source, only=["X-COMMENTED", "X-V3", "X-PLATFORM"]).manual == ()
+
+
+def test_a_comment_missing_its_rem_after_a_command_is_reported() -> None:
+    # "STOP following" in the v3 listings (v3:3727, v3:3790): STOP takes no operands in either version
+    assert flagged("X-COMMENTED", "STOP.0 : STOP following\n") == ["STOP takes no operands (a comment missing REM?)"]

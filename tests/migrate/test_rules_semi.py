@@ -380,11 +380,6 @@ def test_followaxis_becomes_master_source_and_channel(source: str, expected: str
             "an axis is configured off: follow its encoder with MASTERSOURCE = _msENCODER if it is the master",
             "",
         ),
-        (
-            "FOLLOWAXIS.0 = 1\nMASTERINC.0 = 100\nFOLLOW.0 = 1\n",
-            "FOLLOW with MASTERINC: v4 MASTERDISTANCE acts on FOLLOW only in FOLLOWMODE 2/3; set the master by hand",
-            "",
-        ),
         ("FOLLOWAXIS = 1\n", "MintDrive cannot follow an axis position (MASTERSOURCE 2 or 3 only)", "mintdrive"),
     ],
 )
@@ -429,3 +424,13 @@ def test_pause_until_pulse_following_after_an_offset_waits_for_the_offset_to_end
     # v3:4274-4278: the axis is back in pulse following when the offset is done; v4:14809
     source = "OFFSET = 100 : GO\nPAUSE MODE = _pulse\n"
     assert rewritten("S-MODE", source) == "OFFSET = 100 : GO\nPAUSE !(AXISMODE & _mdOFFSET)\n"
+
+
+def test_a_follow_with_a_master_increment_gets_the_clutch_mode_v3_ramped_with() -> None:
+    # v3 FOLLOW ramped over MASTERINC (v3:3716-3730); v4 only in FOLLOWMODE 2 (v4:3529-3535)
+    source = "MASTERINC.0 = 100\nFOLLOW.0 = 1\n"
+    assert rewritten("S-CLUTCH", source) == "MASTERINC.0 = 100\nFOLLOWMODE.0 = _fmCLUTCH : FOLLOW.0 = 1\n"
+    assert rewritten("S-CLUTCH", "FOLLOW.0 = 1\n") == "FOLLOW.0 = 1\n"  # no master increment: no clutch
+    assert flagged("S-CLUTCH", "MASTERINC.0 = 1\nFOLLOW.0 = 1\n") == [
+        "a MASTERINC here may be 1 (v3: no clutch): choose FOLLOWMODE by hand"
+    ]

@@ -2,7 +2,8 @@
 
 Writing a keyword that is read-only or a command is error 2000 (``CAMINDEX = 4``);
 reading one that is write-only is 2002 (``PRINT ACCELTIME``); naming a
-parameter on its own as a statement is 2005 (``SPEED``); editor commands in a
+parameter on its own as a statement is 2005 (``SPEED``); operands after a command
+that takes only axes are 2003 (``STOP following``, a comment missing its REM); editor commands in a
 program are 2006 (``NEW``); a word that is no keyword of the target
 controller is 3007.
 """
@@ -65,4 +66,6 @@ def _verdict(name: str, spelling: str, controller: Controller, use: Use, has_arg
         if not has_arguments:
             return 2005, f"{name} must be read or given a value here (for example '{name} = …')"
         return 2003, f"{name} takes a value with '=': '{name} = …'"
+    if use is Use.COMMAND and has_arguments and not keyword.takes_operands:
+        return 2003, f"{name} takes no operands, only its axes ('{keyword.formats[0]}')"
     return None

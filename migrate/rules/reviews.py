@@ -39,13 +39,9 @@ class ConfigurationArrays(Rule):
             if current is not file:
                 continue
             if isinstance(statement, n.Dim) and statement.size is not None:
-                yield self.flag(
-                    file, statement.span, "v4 deletes array data when the configuration runs: DIM it in the program"
-                )
+                yield self.flag(file, statement.span, _DELETED.format("DIM"))
             elif isinstance(statement, n.Assignment) and isinstance(statement.target, n.ElementRef):
-                yield self.flag(
-                    file, statement.span, "v4 deletes array data when the configuration runs: fill it in the program"
-                )
+                yield self.flag(file, statement.span, _DELETED.format("fill"))
 
 
 class OutputFormat(Rule):

@@ -25,7 +25,6 @@ Evaluate = Callable[[], float]
 
 READ_OF_WRITE_ONLY = 2002
 INVALID_INDEX = 2016
-INVALID_COMMAND = 2006
 
 
 @dataclass(slots=True)

@@ -316,11 +316,12 @@ class StatementCompiler:
     def block_word(self, statement: n.BlockWord, pc: int) -> Operation:
         word = statement.word
         vm = self.vm
-        if word in ("ENDIF", "ENDW", "NEXT", "ENDL", "ELSE", "REPEAT", "LOOP"):
+        block_word = _BLOCK_WORDS.get(word)
+        if block_word is not None:
             block = self.blocks.get(id(statement))
             if block is None:
                 return _nothing  # an unmatched closer is a compile error; an unclosed opener runs once
-            return getattr(self, "_" + word.lower())(block, pc)
+            return block_word(self, block, pc)
         if word == "EXIT":
             return self._exit()
         if word == "RETURN":
@@ -358,12 +359,6 @@ class StatementCompiler:
             vm.pc = opener + 1
 
         return next_
-
-    def _repeat(self, block: Block, pc: int) -> Operation:
-        return self._open_loop(block, pc)
-
-    def _loop(self, block: Block, pc: int) -> Operation:
-        return self._open_loop(block, pc)
 
     def _open_loop(self, block: Block, pc: int) -> Operation:
         exit_pc = self._after(block.closer)
@@ -538,6 +533,16 @@ class StatementCompiler:
 def _nothing() -> None:
     return None
 
+
+_BLOCK_WORDS: dict[str, Callable[[StatementCompiler, Block, int], Operation]] = {
+    "ENDIF": StatementCompiler._endif,
+    "ELSE": StatementCompiler._else,
+    "NEXT": StatementCompiler._next,
+    "REPEAT": StatementCompiler._open_loop,
+    "LOOP": StatementCompiler._open_loop,
+    "ENDL": StatementCompiler._endl,
+    "ENDW": StatementCompiler._endw,
+}
 
 _DISPATCH: dict[type, Callable[[StatementCompiler, n.Statement, int], Operation]] = {
     n.Assignment: StatementCompiler.assignment,  # type: ignore[dict-item]

@@ -75,7 +75,7 @@ def _axes_list(text: str | None) -> tuple[int, ...] | None:
     type=click.FloatRange(min=0),
     default=60.0,
     show_default=True,
-    help="Stop after this much real time.",
+    help="Stop after this much real time (raise it for long --realtime runs).",
 )
 @click.option(
     "--trace",

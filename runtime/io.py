@@ -110,15 +110,17 @@ class DigitalIO:
     def _read_in(self, channel: int | None) -> float:
         self._watch()
         if channel is None:
-            value = (self.active & ~self.edge_mode) | (self.latched & self.edge_mode)
+            value = self.peek(None)
             self.latched = 0
-            return float(value)
-        _check(channel, self.inputs, INVALID_INPUT)
-        if self.edge_mode >> channel & 1:
-            value = self.latched >> channel & 1
-            self.latched &= ~(1 << channel)
-            return float(value)
-        return float(self.active >> channel & 1)
+            return value
+        value = self.peek(_check(channel, self.inputs, INVALID_INPUT))
+        self.latched &= ~(1 << channel)
+        return value
+
+    def peek(self, channel: int | None) -> float:
+        """What reading IN would return, without clearing any latch (for observers, not programs)."""
+        value = (self.active & ~self.edge_mode) | (self.latched & self.edge_mode)
+        return float(value if channel is None else value >> channel & 1)
 
     def _read_instate(self, channel: int | None) -> float:
         self._watch()

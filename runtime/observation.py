@@ -60,6 +60,8 @@ class Observation:
         if found is None:
             return None
         name, channel, index = found["name"], found["channel"], found["index"]
+        if name in _CONSUMING:  # reading these changes the controller: look without touching
+            return _CONSUMING[name](self.c, int(channel) if channel is not None else None)
         access = self.c.table.get(name)
         try:
             if access is not None and access.read is not None:
@@ -79,3 +81,17 @@ class Observation:
             return self.c.vm.scalars[slot] if slot is not None else None
         except MintError:
             return None
+
+
+def _inputs(controller: Controller, channel: int | None) -> float:
+    """IN as the program would read it, without clearing the edge latches a read clears."""
+    return controller.io.peek(channel)
+
+
+def _next_key(controller: Controller, channel: int | None) -> float:
+    """INKEY as the program would read it, without taking the key."""
+    return float(controller.terminal.peek_key())
+
+
+# Keywords whose read changes state (IO-1, PR-5): an expectation must not change the run it checks.
+_CONSUMING = {"IN": _inputs, "INKEY": _next_key}

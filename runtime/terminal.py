@@ -110,9 +110,16 @@ class Terminal:
 
     def inkey(self) -> int:
         """``INKEY``: 0 when nothing is waiting, else the oldest key's code with a-z upper-cased (PR-5)."""
+        code = self.peek_key()
+        if self._keys:
+            self._keys.popleft()
+        return code
+
+    def peek_key(self) -> int:
+        """What ``inkey`` would return, leaving the key where it is (for observers, not programs)."""
         if not self._keys:
             return 0
-        key = self._keys.popleft()
+        key = self._keys[0]
         return ord(key.upper() if "a" <= key <= "z" else key)
 
     def read_line(self) -> str | None:

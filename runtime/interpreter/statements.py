@@ -91,13 +91,18 @@ class StatementCompiler:
         return self._store(statement.target, value)
 
     def _store(self, target: n.VariableRef | n.ElementRef, value: Evaluate) -> Operation:
+        setter = self._setter(target)
+        return lambda: setter(value())
+
+    def _setter(self, target: n.VariableRef | n.ElementRef) -> Callable[[float], None]:
+        """A function that stores a value in the variable or array element ``target`` names."""
         if type(target) is n.VariableRef:
             self.expressions.variable(target.name)
             scalars = self.vm.scalars
             slot = self.expressions.names.scalars[target.name.identity]
 
-            def store_scalar() -> None:
-                scalars[slot] = f32(value())
+            def store_scalar(value: float) -> None:
+                scalars[slot] = f32(value)
 
             return store_scalar
         element: n.ElementRef = target  # type: ignore[assignment]
@@ -105,11 +110,11 @@ class StatementCompiler:
         index = self.expressions.compile(element.index)
         size = len(values)
 
-        def store_element() -> None:
+        def store_element(value: float) -> None:
             position = int(index())
             if not 1 <= position <= size:
                 raise MintError(2016, detail=f"index {position} outside 1 to {size}")
-            values[position - 1] = f32(value())
+            values[position - 1] = f32(value)
 
         return store_element
 
@@ -500,8 +505,7 @@ class StatementCompiler:
         terminal = self.terminal
         vm = self.vm
         clock = vm.clock
-        entered: list[float] = []
-        store = self._store(statement.target, lambda: entered[-1])
+        store = self._setter(statement.target)
         prompted: set[tuple[int, int]] = set()
 
         def input_() -> bool:
@@ -514,14 +518,12 @@ class StatementCompiler:
                 clock.horizon = NEVER
                 vm.wake_at = NEVER  # only a keystroke (a scheduled world change) can wake it
                 return True
-            if entry.retry:
-                prompted.discard(key)
-                return True
             prompted.discard(key)
+            if entry.retry:  # not a number: ask again, at once if more keys are already typed
+                vm.wake_at = clock.now + 1
+                return True
             if entry.value is not None:
-                entered.append(entry.value)
-                store()
-                entered.clear()
+                store(entry.value)
             return False
 
         return input_

@@ -171,3 +171,8 @@ def test_a_busy_loop_stops_at_until_ms_and_says_where() -> None:
 )
 def test_print_formats_numbers_as_the_manual_shows(statement: str, shown: str) -> None:
     assert printed(statement + "\n") == shown + "\n"
+
+
+def test_input_asks_again_when_the_entry_is_not_a_number() -> None:
+    source = 'REM @sim key "abc\\r7\\r" at 10\nDIM n\nINPUT "n? ", n\nPRINT n\n'
+    assert printed(source) == "n? abc\nn? 7\n7\n"

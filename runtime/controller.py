@@ -91,6 +91,7 @@ def build_controller(
     dispatch = NEXTMOVE if profile.controller.value.startswith("nextmove") else MINTDRIVE
     events = Events(clock, handlers, lambda message: vm.stop(StopReason.ERROR, message), dispatch)
     io = DigitalIO(profile, clock, events)
+    events.imask = io.all_inputs  # IMASK: every input of the controller may raise #INx (EV-7)
     system = System(clock, vm, terminal, axes, table)
     inert = InertSettings()
     for part in (motion, io, events, system, inert):
@@ -110,9 +111,8 @@ def build_controller(
         if events.error_handler() is not None:
             events.raise_event(EventClass.ERROR)
             return
-        vm.stop(
-            StopReason.ERROR, MintError(AXIS_ERROR_PRESENT, axis.number).describe() + f" (AXISERROR {axis.axiserror})"
-        )
+        error = MintError(AXIS_ERROR_PRESENT, axis.number, f"AXISERROR {axis.axiserror}")
+        vm.stop(StopReason.ERROR, vm.error_message(error, site))
         abort_all()
 
     def abort_all() -> None:

@@ -38,6 +38,7 @@ class DigitalIO:
         self.events = events
         self.next_input_change: Callable[[], int] = lambda: clock.now + 1  # the world tells when a level may change
         all_inputs = (1 << (self.inputs.high + 1)) - 1
+        self.all_inputs = all_inputs & 0xFFFFFF  # a 24-bit mask holds inputs 0..23
         self.levels = 0  # electrical levels, bit per input
         self.active = 0  # active states after INPUTACTIVELEVEL
         self.active_level = all_inputs  # INPUTACTIVELEVEL: 1 = active high (the default)

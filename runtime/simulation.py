@@ -88,6 +88,20 @@ class Simulator:
             for callback in self.checkpoints.pop(t):
                 callback()
 
+    def _step(self, t: int) -> None:
+        """Process tick ``t``; a fault the motion raises between two statements ends the run."""
+        vm = self.c.vm
+        try:
+            self.tick(t)
+        except MintError as fault:
+            vm.stop(StopReason.ERROR, vm.error_message(fault, vm.current_site()))
+            vm.on_fatal()
+        except NotSimulated as missing:
+            vm.stop(StopReason.ERROR, str(missing))
+            vm.on_fatal()
+        if self.on_tick is not None:
+            self.on_tick(t)
+
     def fast_input(self, channel: int) -> None:
         """A fast input fired: latch the positions just measured and call its handler (EV-9)."""
         c = self.c
@@ -120,13 +134,7 @@ class Simulator:
         t = 0
         try:
             while True:
-                try:
-                    self.tick(t)
-                except (MintError, NotSimulated) as fault:  # raised by the motion between two statements
-                    vm.stop(StopReason.ERROR, fault.describe() if isinstance(fault, MintError) else str(fault))
-                    vm.on_fatal()
-                if self.on_tick is not None:
-                    self.on_tick(t)
+                self._step(t)
                 if vm.stopped is not None:
                     break
                 following = self.next_change(t)
@@ -136,6 +144,8 @@ class Simulator:
                 if limits.every_tick:
                     following = t + 1
                 if following > until:
+                    if t < until:  # the state at the limit, as stepping every tick would leave it
+                        self._step(until)
                     c.clock.now = until
                     vm.stop(StopReason.UNTIL, f"reached --until-ms {until}")
                     break

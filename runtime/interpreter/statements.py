@@ -147,7 +147,8 @@ class StatementCompiler:
             return self._wait(statement, pc)
         access = self.table.get(reference.keyword)
         channels = self._channels(reference)
-        clock = self.vm.clock
+        vm = self.vm
+        clock = vm.clock
         if statement.values is not None:
             if access is None or access.write is None:
                 if access is not None and access.read is not None:
@@ -163,7 +164,10 @@ class StatementCompiler:
                 if addressed is not None and fill and len(evaluated) < len(addressed):
                     evaluated += (evaluated[-1],) * (len(addressed) - len(evaluated))
                 clock.horizon = NEVER
-                return write(addressed, evaluated)
+                if write(addressed, evaluated):
+                    vm.wake_at = clock.horizon  # a full buffer frees when the running move ends
+                    return True
+                return False
 
             return write_values
         if access is None or access.command is None:
@@ -179,7 +183,10 @@ class StatementCompiler:
 
         def run_command() -> bool:
             clock.horizon = NEVER
-            return command(channels(), tuple(argument() for argument in arguments))
+            if command(channels(), tuple(argument() for argument in arguments)):
+                vm.wake_at = clock.horizon
+                return True
+            return False
 
         return run_command
 

@@ -225,10 +225,15 @@ class Interpreter:
             except MintError:
                 pass
         self.pc = pc
-        where = f" [line {site.line}]" if site else ""
-        unit = f" {site.unit.upper()}" if site else ""
-        self.stop(StopReason.ERROR, error.describe().replace(":", ":" + unit, 1) + where)
+        self.stop(StopReason.ERROR, self.error_message(error, site))
         self.on_fatal()
+
+    @staticmethod
+    def error_message(error: MintError, site: Site | None) -> str:
+        """``R0003: PROGRAM Data specified out of range [axis/channel 0] [line 20]`` (EV-13 RC)."""
+        if site is None:
+            return error.describe()
+        return error.describe().replace(":", f": {site.unit.upper()}", 1) + f" [line {site.line}]"
 
     def record_error(self, code: int, line: int, axis: int | None) -> None:
         self.err = float(code)

@@ -210,8 +210,8 @@ class Axis:
     def next_event(self, now: int) -> int:
         """The next tick at which this axis changes in a way that matters beyond its demand value."""
         move = self.move
-        if self.plant.closed_loop or (move is not None and move.live):
-            return now + 1
+        if self.plant.closed_loop or (move is not None and (move.live or type(self.plant) is not IdealPlant)):
+            return now + 1  # the demand leaves a stalled encoder behind: its following error grows every tick
         if move is not None:
             if self.held and now >= move.end:
                 return NEVER  # at rest on a stop input: only the input clearing moves it on
@@ -272,9 +272,9 @@ class Axis:
         servoing = self.enabled and self.torque is None
         if not plant.closed_loop:
             if servoing:
-                self.previous_measured = (
-                    self.measured if tick - self.last_tick == 1 else round_half_away(self.demand_at(tick - 1))
-                )
+                skipped = tick - self.last_tick > 1 and type(plant) is IdealPlant
+                # after skipped ticks the ideal encoder read the rounded demand of the tick before
+                self.previous_measured = round_half_away(self.demand_at(tick - 1)) if skipped else self.measured
                 self.measured = plant.step(demand, 0.0, SERVO_TICK_S)
             else:
                 self.previous_measured = self.measured

@@ -54,3 +54,8 @@ JOG.0 = 100
 PRINT IDLE, " ", IDLE[0,1], " ", IDLE.1
 """
     assert simulate(source).terminal == "1 0 1\n"
+
+
+def test_imask_starts_with_every_input_of_the_controller() -> None:
+    # EV-7: by default every input may call its handler, e.g. 65535 on a NextMove BX
+    assert simulate("PRINT IMASK\n").terminal == "65535\n"

@@ -62,6 +62,10 @@ class Simulator:
         c.clock.now = t
         c.io.sample(c.world.apply(t))
         axes = [axis for axis in c.axes if not axis.dormant()]
+        for axis in axes:
+            move = axis.move
+            if move is not None and t >= move.end:
+                axis.complete(t)  # a move that ended between two processed ticks
         if t % 2 == 0:
             start_group = c.motion.start_group
             for axis in axes:
@@ -74,7 +78,7 @@ class Simulator:
             c.world.fast_inputs_due.clear()
         check = c.supervisor.check
         for axis in axes:
-            if axis.enabled or axis.parameters["STOPINPUT"] >= 0:
+            if axis.enabled or axis.guarded:  # a disabled axis still has its stop input checked
                 check(axis, t)
         c.events.tick()
         if c.system.comms.external_writes_pending():
@@ -119,7 +123,7 @@ class Simulator:
         for axis in c.axes:
             if soonest <= t + 1:
                 return t + 1
-            soonest = min(soonest, axis.next_event(t))
+            soonest = min(soonest, axis.next_required(t))
         if self.checkpoints:
             soonest = min(soonest, *self.checkpoints)
         return max(soonest, t + 1)

@@ -10,14 +10,15 @@ keywords written without a selector read the first of the default axes
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing
+from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter.vm import Interpreter
-from mintlang.runtime.keywords import KeywordTable
+from mintlang.runtime.keywords import KeywordTable, Reader
 from mintlang.runtime.numbers import BINARY_OPERATORS, FUNCTIONS, UNARY_OPERATORS, bits24, f32
 from mintlang.syntax import nodes as n
 
@@ -127,24 +128,11 @@ class ExpressionCompiler:
                 only = single[0]
                 return lambda: read(int(only()))
 
+            clock = self.vm.clock
             constant = _constants(reference)
             if constant is not None:  # IDLE[0,1,2,3] in a PAUSE is read every tick: no channel to evaluate
-
-                def read_fixed() -> float:
-                    result = 0xFFFFFF
-                    for number in constant:
-                        result &= bits24(read(number))
-                    return float(result)
-
-                return read_fixed
-
-            def read_all() -> float:
-                result = 0xFFFFFF
-                for channel in single:
-                    result &= bits24(read(int(channel())))
-                return float(result)
-
-            return read_all
+                return lambda: _and_of_reads(read, constant, clock)
+            return lambda: _and_of_reads(read, [int(channel()) for channel in single], clock)
         default_axes = channels
         vm = self.vm
         return lambda: read(vm.default_axes[0]) if default_axes else read(None)
@@ -175,6 +163,32 @@ class ExpressionCompiler:
             raise NotSimulated(call.function, f"{len(arguments)} arguments")
         (index,) = arguments
         return lambda: read(int(index()))
+
+
+def _and_of_reads(read: Reader, channels: Iterable[int], clock: Clock) -> float:
+    """Several axes read at once, ANDed bitwise (v4 guide 3.1.1).
+
+    For flags (every value 0 or 1) that AND to 0, the result can only change once every axis
+    reading 0 has changed, so it stays valid until the latest of their horizons: a PAUSE on
+    ``IDLE[0,1,2,3]`` sleeps until the last axis can stop, not the first.
+    """
+    outer = clock.horizon
+    result = 0xFFFFFF
+    soonest, latest_zero, flags = NEVER, -1, True
+    for channel in channels:
+        clock.horizon = NEVER
+        number = read(channel)
+        value = 1 if number == 1.0 else 0 if number == 0.0 else bits24(number)
+        horizon = clock.horizon
+        soonest = min(soonest, horizon)
+        if value == 0:
+            latest_zero = max(latest_zero, horizon)
+        elif value != 1:
+            flags = False
+        result &= value
+    valid = latest_zero if flags and result == 0 else soonest
+    clock.horizon = min(outer, valid)
+    return float(result)
 
 
 def _constants(reference: n.KeywordRef) -> tuple[int, ...] | None:

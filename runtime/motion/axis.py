@@ -164,10 +164,11 @@ class Axis:
         """IDLE (AX-3): no move, none triggered, within IDLEPOS and IDLEVEL; a disabled axis is idle."""
         if not self.enabled:
             return True
-        if self.axismode or self.triggered:
+        if self.move is not None or self.pending_mode or self.triggered:
             return False
         p = self.parameters
-        return abs(self.demand - self.measured) <= p["IDLEPOS"] and abs(self.velocity_counts()) <= p["IDLEVEL"]
+        moved = abs(self.measured - self.previous_measured) / SERVO_TICK_S
+        return abs(self.demand - self.measured) <= p["IDLEPOS"] and moved <= p["IDLEVEL"]
 
     def velocity_counts(self) -> float:
         return (self.measured - self.previous_measured) / SERVO_TICK_S
@@ -221,6 +222,38 @@ class Axis:
         if self.triggered and not self.held:
             return next_profiler_tick(now)
         return NEVER
+
+    def next_required(self, now: int) -> int:
+        """The next tick the simulator must process for this axis's sake (readers use ``next_event``).
+
+        A move that ends with nothing triggered behind it can be completed at any later tick (its
+        end state is a function of time, and ``complete`` dates it back), and the settling tick after
+        it only changes what VEL and IDLE read: those ticks matter only to a program that reads the
+        axis, whose reads ask for them. Limits, error and stop inputs need the exact tick.
+        """
+        move = self.move
+        if (
+            self.plant.closed_loop
+            or self.guarded
+            or (move is not None and (move.live or type(self.plant) is not IdealPlant))
+        ):
+            return self.next_event(now)
+        if move is None:
+            return next_profiler_tick(now) if self.triggered and not self.held else NEVER
+        if self.watched_while_moving():
+            return now + 1
+        if self.triggered and not self.held:
+            return max(move.end, now + 1)
+        return NEVER
+
+    def complete(self, tick: int) -> None:
+        """Finish a move whose end has passed: its end state, as if the tick it ended had been processed."""
+        move = self.move
+        if move is not None and tick >= move.end and not self.held and not move.live:
+            self.hold = move.demand(self.index_in_move, move.end)
+            self.move = None
+            if move.mode == self.pending_mode:
+                self.pending_mode = 0
 
     # --------------------------------------------------------------- loading
 

@@ -348,9 +348,11 @@ class Motion:
 
     def _idle(self, channel: int | None) -> float:
         """IDLE, read on every tick by ``PAUSE IDLE`` loops: kept to the fewest calls."""
-        axis = self.axis(channel)
+        axes = self.axes
+        # the axis straight from the list; self.axis (error 2) only for one the controller lacks
+        axis = axes[channel] if channel is not None and 0 <= channel < len(axes) else self.axis(channel)
         clock = self.clock
-        clock.changes_at(clock.now + 1 if axis.plant.closed_loop else axis.next_event(clock.now))
+        clock.horizon = min(clock.horizon, clock.now + 1 if axis.plant.closed_loop else axis.next_event(clock.now))
         return 1.0 if axis.idle() else 0.0
 
     def _watch(self, axis: Axis, *, moving: bool = False) -> Axis:

@@ -40,7 +40,7 @@ def sections(snapshot: Snapshot) -> list[Section]:
         key=lambda label: label.definitions[0].span.start,
     )
     lines = [snapshot.positions.position(label.definitions[0].span.start).line for label in labels]
-    ends = [line - 1 for line in lines[1:]] + [snapshot.positions.line_count - 1]
+    ends = [line - 1 for line in lines[1:]] + [snapshot.positions.line_count - 1] if lines else []
     dialect = snapshot.settings.dialect
     return [
         Section(label, first, _last_written(snapshot, first, last), event_of(label.name, dialect) is not None)

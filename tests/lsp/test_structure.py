@@ -31,6 +31,15 @@ async def test_outline(client, tmp_path):
     assert (init.range.start.line, init.range.end.line) == (13, 18)
 
 
+async def test_outline_and_folding_of_a_program_without_subroutines(client, tmp_path):
+    uri = uri_of(tmp_path / "flat.mnt")
+    await open_document(client, uri, "DIM a\nFOR a = 1 TO 3\n  PRINT a\nNEXT\n")
+    symbols = await client.text_document_document_symbol_async(types.DocumentSymbolParams(text_document=document(uri)))
+    assert [(s.name, s.kind) for s in symbols] == [("a", types.SymbolKind.Variable)]
+    ranges = await client.text_document_folding_range_async(types.FoldingRangeParams(text_document=document(uri)))
+    assert [(r.start_line, r.end_line) for r in ranges] == [(1, 2)]
+
+
 async def test_workspace_symbols_span_open_documents(client, tmp_path):
     await open_document(client, uri_of(tmp_path / "xy.mnt"), XY)
     await open_document(client, uri_of(tmp_path / "menu.mnt"), corpus("ch03_l0815_main_menu_inkey.mnt"))

@@ -2,9 +2,15 @@
 
 User names are told apart by the symbol table: macros, labels and arrays get
 their own types, so a keyword abbreviation and a variable never look alike.
+Clients that ask for deltas get only what changed since their last result:
+the encoding is relative, so typing on one line changes a few integers of
+tens of thousands.
 """
 
 from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
 
 from lsprotocol import types
 
@@ -62,14 +68,65 @@ def encode(snapshot: Snapshot, within: Span | None = None) -> list[int]:
     return data
 
 
+def difference(old: Sequence[int], new: Sequence[int]) -> list[types.SemanticTokensEdit]:
+    """One edit turning ``old`` into ``new`` (none when they are equal): what lies between their
+    common beginning and their common end is replaced."""
+    limit = min(len(old), len(new))
+    prefix = 0
+    while prefix < limit and old[prefix] == new[prefix]:
+        prefix += 1
+    suffix = 0
+    while suffix < limit - prefix and old[-1 - suffix] == new[-1 - suffix]:
+        suffix += 1
+    if prefix == len(old) == len(new):
+        return []
+    return [types.SemanticTokensEdit(prefix, len(old) - prefix - suffix, list(new[prefix : len(new) - suffix]))]
+
+
+class _Results:
+    """The last tokens sent for each document, under the result id a delta request names."""
+
+    def __init__(self) -> None:
+        self._last: dict[str, tuple[str, list[int]]] = {}
+        self._ids = itertools.count(1)
+
+    def remember(self, uri: str, data: list[int]) -> str:
+        result_id = str(next(self._ids))
+        self._last[uri] = (result_id, data)
+        return result_id
+
+    def previous(self, uri: str, result_id: str) -> list[int] | None:
+        last = self._last.get(uri)
+        return last[1] if last is not None and last[0] == result_id else None
+
+    def forget(self, uri: str) -> None:
+        self._last.pop(uri, None)
+
+
 def register(server: MintServer) -> None:
+    results = _Results()
+
     @server.feature(
         types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL,
         types.SemanticTokensLegend(token_types=TOKEN_TYPES, token_modifiers=TOKEN_MODIFIERS),
     )
     def full(params: types.SemanticTokensParams) -> types.SemanticTokens:
-        snapshot = server.snapshot(params.text_document.uri)
-        return types.SemanticTokens(data=encode(snapshot) if snapshot is not None else [])
+        uri = params.text_document.uri
+        snapshot = server.snapshot(uri)
+        if snapshot is None:
+            results.forget(uri)
+            return types.SemanticTokens(data=[])
+        data = encode(snapshot)
+        return types.SemanticTokens(data=data, result_id=results.remember(uri, data))
+
+    @server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL_DELTA)
+    def delta(params: types.SemanticTokensDeltaParams) -> types.SemanticTokens | types.SemanticTokensDelta:
+        uri = params.text_document.uri
+        previous = results.previous(uri, params.previous_result_id)
+        answer = full(types.SemanticTokensParams(text_document=params.text_document))
+        if previous is None or answer.result_id is None:
+            return answer
+        return types.SemanticTokensDelta(edits=difference(previous, answer.data), result_id=answer.result_id)
 
     @server.feature(
         types.TEXT_DOCUMENT_SEMANTIC_TOKENS_RANGE,

@@ -102,13 +102,15 @@ def build_controller(
     motion.index_pulses = {pulse.axis: pulse for pulse in scenario.index_pulses}
     linked = link(model, vm, table, terminal)
     handlers.update(linked.handlers)
+    events.configuration_handlers = linked.configuration_handlers
+    events.in_configuration = vm.in_configuration
     vm.events = events
     endpoint = HostEndpoint(system.comms, lambda: system.node)
 
     def raise_axis_error(axis: Axis) -> None:
         site = vm.current_site()
         vm.record_error(AXIS_ERROR_PRESENT, site.line if site else 0, axis.number)
-        if events.error_handler() is not None:
+        if events.has_handler(EventClass.ERROR):
             events.raise_event(EventClass.ERROR)
             return
         error = MintError(AXIS_ERROR_PRESENT, axis.number, f"AXISERROR {axis.axiserror}")

@@ -7,7 +7,8 @@ it pre-empts a lower-ranked handler that is running (a handler of the same
 class waits until the running one returns); on MintDrive and ServoNode 51
 handlers do not pre-empt one another, except ``#ONERROR``, and the order and
 the mask layout (``HANDLERDISABLE``/``HANDLERPENDING``) differ (EV-2, EV-3, EV-5).
-A disabled class keeps its pending flag.
+A disabled class keeps its pending flag. Handlers serve their own file: the
+configuration file's while it runs, then the program's.
 """
 
 from __future__ import annotations
@@ -92,7 +93,9 @@ class Events:
     ) -> None:
         self.clock = clock
         self.dispatch = dispatch
-        self.handlers = handlers  # label identity -> pc
+        self.handlers = handlers  # the program's handlers: label identity -> pc
+        self.configuration_handlers: Mapping[str, int] = {}
+        self.in_configuration: Callable[[], bool] = lambda: False  # whether the configuration file is running
         self.on_runaway = on_runaway
         self.errors_latched: Callable[[], bool] = lambda: False
         self.on_fastin_return: Callable[[int], None] = lambda number: None
@@ -114,17 +117,31 @@ class Events:
     def has_handler(self, kind: EventClass, number: int = 0) -> bool:
         return self._handler(kind, number) is not None
 
+    def _running_handlers(self) -> Mapping[str, int]:
+        """The handlers of the file running: neither file can call the other's subroutines."""
+        return self.configuration_handlers if self.in_configuration() else self.handlers
+
     def _handler(self, kind: EventClass, number: int) -> int | None:
         label = _LABELS[kind]
+        handlers = self._running_handlers()
         if kind in _NUMBERED:
-            found = self.handlers.get(f"{label}{number}")
+            found = handlers.get(f"{label}{number}")
             if found is None and kind is EventClass.FASTIN:
-                return self.handlers.get(label)  # #FASTIN serves every fast input
+                return handlers.get(label)  # #FASTIN serves every fast input
             return found
-        return self.handlers.get(label)
+        return handlers.get(label)
 
     def error_handler(self) -> int | None:
-        return self.handlers.get("ONERROR")
+        """``#ONERROR`` for a synchronous error; None also while it is disabled, so the error ends the run."""
+        if EventClass.ERROR in self.disabled:
+            return None
+        return self._handler(EventClass.ERROR, 0)
+
+    def _lowest_handled(self, kind: EventClass) -> int:
+        """The number of the class's lowest-numbered handler (0 when there is none): what a forced event runs."""
+        label = _LABELS[kind]
+        numbers = (name[len(label) :] for name in self._running_handlers() if name.startswith(label))
+        return min((int(number) for number in numbers if number.isdigit()), default=0)
 
     # ------------------------------------------------------------ dispatching
 
@@ -228,7 +245,7 @@ class Events:
             for kind, bit in dispatch.bits.items():
                 if bits & bit:
                     if not self._pending[kind]:
-                        self._pending[kind].add(0)
+                        self._pending[kind].add(self._lowest_handled(kind) if kind in _NUMBERED else 0)
                 else:
                     self._pending[kind].clear()
             self._refresh()

@@ -3,8 +3,9 @@
 Variables are shared by both files and allocated in compile order; arrays are
 sized and initialised now, as the controller's compiler does (``DIM a(3) =
 1,2;`` fills the rest with the last value). Labels stay per file: the two
-files cannot call each other's subroutines. ``END`` in the configuration, or
-running off its end, continues with the program; in the program it ends the run.
+files cannot call each other's subroutines, event handlers included. ``END`` in
+the configuration, or running off its end, continues with the program; in the
+program it ends the run.
 """
 
 from __future__ import annotations
@@ -29,7 +30,8 @@ from mintlang.syntax.parser import Document
 class Linked:
     """What the rest of the runtime needs to know about the compiled application."""
 
-    handlers: Mapping[str, int]  # event handler label identity (ONERROR, IN3, TIMER ...) -> pc
+    handlers: Mapping[str, int]  # the program's labels by identity (ONERROR, IN3, TIMER ...) -> pc
+    configuration_handlers: Mapping[str, int]  # the configuration file's
     names: Names
 
 
@@ -38,7 +40,7 @@ def link(model: SemanticModel, vm: Interpreter, table: KeywordTable, terminal: T
     names = Names()
     _allocate(model, vm, names)
     expressions = ExpressionCompiler(vm, table, names)
-    handlers: dict[str, int] = {}
+    handlers: dict[Unit, Mapping[str, int]] = {}
     units = list(model.documents())
     start = 0
     for position, (unit, document) in enumerate(units):
@@ -51,16 +53,13 @@ def link(model: SemanticModel, vm: Interpreter, table: KeywordTable, terminal: T
         compiler = StatementCompiler(vm, table, terminal, expressions, layout)
         if unit is Unit.PROGRAM:
             vm.program_start = start
-            handlers.update(labels)
-        else:
-            for label, pc in labels.items():
-                handlers.setdefault(label, pc)
+        handlers[unit] = labels
         text_of = _Text(document)
         for line in document.lines:
             for statement in line.statements:
                 _emit(compiler, vm, statement, unit=unit, line=line.number, text_of=text_of)
         start = end_of_unit
-    return Linked(handlers, names)
+    return Linked(handlers.get(Unit.PROGRAM, {}), handlers.get(Unit.CONFIGURATION, {}), names)
 
 
 def _emit(

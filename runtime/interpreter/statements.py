@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter.expressions import Evaluate, ExpressionCompiler
-from mintlang.runtime.interpreter.vm import Interpreter, Loop, Operation
+from mintlang.runtime.interpreter.vm import Interpreter, Loop, Operation, Recovery
 from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordTable
 from mintlang.runtime.numbers import f32
 from mintlang.runtime.printing import format_bin, format_chr, format_hex, format_number, format_using
@@ -83,6 +83,10 @@ class StatementCompiler:
 
     def _block(self, statement: n.Statement) -> Block:
         return self.blocks[id(statement)]
+
+    def _recover(self, pc: int, resume: int, loop: int | None = None) -> None:
+        """An error in the block statement at ``pc`` resumes at ``resume``, leaving ``loop``, not in the block."""
+        self.vm.recoveries[pc] = Recovery(resume, loop)
 
     # ----------------------------------------------------------- assignments
 
@@ -284,6 +288,7 @@ class StatementCompiler:
         condition = self.expressions.compile(statement.condition)
         vm = self.vm
         skip = pc + layout_size(statement)
+        self._recover(pc, skip)
 
         def branch() -> None:
             if not condition():
@@ -295,6 +300,7 @@ class StatementCompiler:
         block = self._block(statement)
         condition = self.expressions.compile(statement.condition)
         otherwise = self._after(block.middle) if block.middle is not None else self._after(block.closer)
+        self._recover(pc, self._after(block.closer))
         vm = self.vm
 
         def branch() -> None:
@@ -311,6 +317,7 @@ class StatementCompiler:
         end = self.expressions.compile(statement.end)
         step = self.expressions.compile(statement.step) if statement.step is not None else (lambda: 1.0)
         exit_pc = self._after(block.closer)
+        self._recover(pc, exit_pc, pc)
         vm = self.vm
         scalars = vm.scalars
 
@@ -356,6 +363,7 @@ class StatementCompiler:
 
     def _next(self, block: Block, pc: int) -> Operation:
         opener = self.positions[id(block.opener)]
+        self._recover(pc, pc + 1, opener)
         vm = self.vm
         scalars = vm.scalars
 
@@ -374,6 +382,7 @@ class StatementCompiler:
 
     def _open_loop(self, block: Block, pc: int) -> Operation:
         exit_pc = self._after(block.closer)
+        self._recover(pc, exit_pc, pc)
         vm = self.vm
 
         def enter() -> None:
@@ -397,6 +406,7 @@ class StatementCompiler:
         if block is None:
             return lambda: bool(condition()) and None
         opener = self.positions[id(block.opener)]
+        self._recover(pc, pc + 1, opener)
         vm = self.vm
 
         def until() -> None:
@@ -411,6 +421,7 @@ class StatementCompiler:
         block = self._block(statement)
         condition = self.expressions.compile(statement.condition)
         exit_pc = self._after(block.closer)
+        self._recover(pc, exit_pc, pc)
         vm = self.vm
 
         def while_() -> None:
@@ -436,9 +447,9 @@ class StatementCompiler:
         vm = self.vm
 
         def exit_() -> None:
-            if not vm.loops:
+            loop = vm.exit_loop()
+            if loop is None:  # a loop of the caller cannot be left from a subroutine or an event handler
                 raise MintError(SYNTAX_ERROR, detail="EXIT outside a loop")
-            loop = vm.loops.pop()
             vm.pc = loop.exit
 
         return exit_

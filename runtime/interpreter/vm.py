@@ -52,6 +52,14 @@ class Loop:
     step: float = 0.0
 
 
+@dataclass(frozen=True, slots=True)
+class Recovery:
+    """Where ``RETURN`` from ``#ONERROR`` resumes after an error in a block statement: never inside its block."""
+
+    resume: int  # the pc after the whole construct (for a loop closer: the loop's exit)
+    loop: int | None = None  # the opener whose loop entry the error leaves
+
+
 @dataclass(slots=True)
 class Frame:
     return_pc: int
@@ -71,7 +79,7 @@ class EventSource(Protocol):
     def handler_returned(self, rank: int) -> None: ...
 
     def error_handler(self) -> int | None:
-        """The pc of ``#ONERROR``, if the program has one."""
+        """The pc of the ``#ONERROR`` that serves a synchronous error now, if any."""
         ...
 
 
@@ -85,6 +93,7 @@ class Interpreter:
         self.operations: list[Operation] = []
         self.sites: list[Site] = []
         self.program_start = 0  # where the program file begins, after the configuration file
+        self.recoveries: dict[int, Recovery] = {}  # pc of a block statement -> how an error in it resumes
         self.scalars: list[float] = []
         self.arrays: list[list[float]] = []
         self.pc = 0
@@ -179,14 +188,18 @@ class Interpreter:
                 return frame.rank
         return None
 
+    def in_configuration(self) -> bool:
+        """Whether the statement running (or, between statements, the next one) is in the configuration file."""
+        pc = self.executing if self.executing is not None else self.pc
+        return pc < self.program_start
+
     def _dispatch(self, events: EventSource) -> None:
-        chosen = events.take(self.running_rank())
-        if chosen is None:
-            return
-        rank, handler = chosen
         if len(self.frames) >= self.nesting.gosub:
-            return  # the manual: an event waits while the GOSUB stack is full
-        self.call(handler, rank)
+            return  # an event stays pending while the GOSUB stack is full (EV-6)
+        chosen = events.take(self.running_rank())
+        if chosen is not None:
+            rank, handler = chosen
+            self.call(handler, rank)
 
     # ------------------------------------------------------------------- loops
 
@@ -198,17 +211,25 @@ class Interpreter:
             raise MintError(STACK_OVERFLOW, detail=f"{kind} nested too deep")
         loops.append(loop)
 
+    def frame_loops(self) -> int:
+        """Where the running subroutine's or handler's loops start on the loop stack; those below are its callers'."""
+        return self.frames[-1].loops if self.frames else 0
+
     def leave_loop(self, opener: int) -> None:
-        """Drop the loop opened at ``opener`` and anything a GOTO left open inside it."""
+        """Drop the loop opened at ``opener`` and anything a GOTO left open inside it, in the running frame only."""
         loops = self.loops
-        for depth in range(len(loops) - 1, -1, -1):
+        for depth in range(len(loops) - 1, self.frame_loops() - 1, -1):
             if loops[depth].opener == opener:
                 del loops[depth:]
                 return
 
     def innermost_loop(self, opener: int) -> Loop | None:
         loops = self.loops
-        return loops[-1] if loops and loops[-1].opener == opener else None
+        return loops[-1] if len(loops) > self.frame_loops() and loops[-1].opener == opener else None
+
+    def exit_loop(self) -> Loop | None:
+        """Pop the running frame's innermost loop for ``EXIT``; None when the frame has none open."""
+        return self.loops.pop() if len(self.loops) > self.frame_loops() else None
 
     # ------------------------------------------------------------------ errors
 
@@ -219,8 +240,11 @@ class Interpreter:
         handler = self.events.error_handler() if self.events is not None else None
         inside_handler = any(frame.rank == 0 for frame in self.frames)
         if handler is not None and not inside_handler:
+            recovery = self.recoveries.get(pc)  # RETURN resumes after the failing statement (EV-19 RC)
+            if recovery is not None and recovery.loop is not None:
+                self.leave_loop(recovery.loop)
             try:
-                self.call(handler, 0, return_pc=pc + 1)  # RETURN resumes after the failing statement (EV-19 RC)
+                self.call(handler, 0, return_pc=pc + 1 if recovery is None else recovery.resume)
                 return
             except MintError:
                 pass

@@ -195,3 +195,73 @@ PRINT "handled"
 RETURN
 """
     assert simulate(source, controller="mintdrive").terminal == "pending 64\nhandled\n"
+
+
+def test_exit_in_a_handler_cannot_leave_the_programs_loop() -> None:
+    # NM-8: EXIT leaves a loop of its own handler; the program's LOOP is out of its reach
+    source = """TIMEREVENT = 10
+LOOP
+  WAIT = 2
+ENDL
+#TIMER
+EXIT
+RETURN
+"""
+    result = simulate(source, until_ms=100)
+    assert (result.stop.reason, result.stop.time_ms, result.err, result.erl) == (StopReason.ERROR, 10, 2003, 6)
+
+
+def test_an_event_waits_while_the_gosub_stack_is_full() -> None:
+    # EV-6: at the nesting limit (100 on a NextMove BX) the forced timer event runs once one level is released
+    source = """DIM depth
+GOSUB deep
+END
+#deep
+depth = depth + 1
+IF depth < 100 THEN GOSUB deep
+IF depth = 100 THEN EVENTPENDING = 64 : WAIT = 5 : PRINT "full"
+depth = 0
+RETURN
+#TIMER
+PRINT "timer"
+RETURN
+"""
+    assert simulate(source).terminal == "full\ntimer\n"
+
+
+def test_eventdisable_stops_onerror_for_a_synchronous_error_which_then_ends_the_run() -> None:
+    # EV-5: a set error bit stops #ONERROR being called, so the error is unhandled
+    source = 'DIM a\nEVENTDISABLE = 2\na = 1 / a\nPRINT "continued"\nEND\n#ONERROR\nPRINT "handler"\nRETURN\n'
+    result = simulate(source)
+    assert (result.stop.reason, result.err, result.terminal) == (StopReason.ERROR, 2021, "")
+
+
+def test_each_file_is_served_by_its_own_event_handlers() -> None:
+    # neither file can call the other's subroutines: the configuration's #ONERROR serves only the configuration
+    config = 'DIM q\nRESETALL\nq = 1 / q\nPRINT "config goes on"\nEND\n#ONERROR\nPRINT "config handler"\nRETURN\n'
+    program = 'q = 1 / q\nPRINT "never"\nEND\n'
+    result = simulate(program, config=config)
+    assert result.terminal == "config handler\nconfig goes on\n"
+    assert "R2021: PROGRAM" in result.stop.message and (result.err, result.erl) == (2021, 1)
+    program_handler = 'PRINT "program"\nEND\n#ONERROR\nPRINT "program handler"\nRETURN\n'
+    result = simulate(program_handler, config="DIM q\nRESETALL\nq = 1 / q\n")
+    assert "R2021: CONFIGURATION" in result.stop.message and result.terminal == ""
+
+
+def test_forcing_a_numbered_class_runs_its_lowest_numbered_handler() -> None:
+    # EV-5: EVENTPENDING forces one event of the class; #COMMS0 and #IN0 do not exist here
+    source = """EVENTPENDING = 256 + 128
+WAIT = 2
+PRINT EVENTPENDING
+END
+#COMMS4
+PRINT "comms4"
+RETURN
+#COMMS2
+PRINT "comms2"
+RETURN
+#IN7
+PRINT "in7"
+RETURN
+"""
+    assert simulate(source).terminal == "in7\ncomms2\n0\n"

@@ -176,3 +176,66 @@ def test_print_formats_numbers_as_the_manual_shows(statement: str, shown: str) -
 def test_input_asks_again_when_the_entry_is_not_a_number() -> None:
     source = 'REM @sim key "abc\\r7\\r" at 10\nDIM n\nINPUT "n? ", n\nPRINT n\n'
     assert printed(source) == "n? abc\nn? 7\n7\n"
+
+
+def test_exit_cannot_leave_the_loop_of_a_subroutines_caller() -> None:
+    # NM-8: EXIT leaves the innermost loop of its own subroutine; a caller's loop is out of its reach
+    source = """DIM i
+FOR i = 1 TO 3
+  GOSUB sub
+NEXT
+END
+#sub
+EXIT
+RETURN
+"""
+    result = simulate(source)
+    assert (result.stop.reason, result.err, result.erl) == (StopReason.ERROR, 2003, 7)
+
+
+ONERROR_REPORTS = '\nEND\n#ONERROR\nPRINT "error ", ERR\nRETURN\n'
+
+
+@pytest.mark.parametrize(
+    ("construct", "shown"),
+    [
+        ('IF 1 / zero > 0 THEN PRINT "guarded"\nPRINT "after"', "error 2021\nafter\n"),
+        ('IF 1 / zero > 0 DO\n  PRINT "guarded"\nELSE\n  PRINT "else"\nENDIF\nPRINT "after"', "error 2021\nafter\n"),
+        ('WHILE 1 / zero > 0\n  PRINT "guarded"\nENDW\nPRINT "after"', "error 2021\nafter\n"),
+        ('FOR i = 1 TO 1 / zero\n  PRINT "guarded"\nNEXT\nPRINT "after"', "error 2021\nafter\n"),
+        ('REPEAT\n  PRINT "body"\nUNTIL 1 / zero\nPRINT "after"', "body\nerror 2021\nafter\n"),
+    ],
+)
+def test_onerror_returns_after_a_failing_block_statement_never_into_its_block(construct: str, shown: str) -> None:
+    # EV-19 RC: the statement after the failing one is the one after the whole construct
+    assert printed("DIM zero\nDIM i\n" + construct + ONERROR_REPORTS) == shown
+
+
+def test_an_until_that_fails_leaves_its_loop_so_the_enclosing_for_goes_on() -> None:
+    source = "DIM zero\nDIM k\nFOR k = 1 TO 60\n  REPEAT\n  UNTIL 1 / zero\nNEXT\nPRINT k\nEND\n#ONERROR\nRETURN\n"
+    assert printed(source) == "60\n"
+
+
+def test_a_subroutine_reentered_from_an_event_keeps_its_own_loop_limits() -> None:
+    # the timer calls count while the program is inside count's FOR: the call's FOR 1 TO 1 does not replace
+    # the program's FOR 1 TO 3, which goes on from the clobbered i = 1 (body runs: i = 1, 2, 2, 3, and one call)
+    source = """DIM i
+DIM runs
+DIM upto = 3
+TIMEREVENT = 10
+GOSUB count
+PRINT runs
+END
+#count
+FOR i = 1 TO upto
+  WAIT = 8
+  runs = runs + 1
+NEXT
+RETURN
+#TIMER
+TIMEREVENT = 0
+upto = 1
+GOSUB count
+RETURN
+"""
+    assert printed(source) == "5\n"

@@ -14,6 +14,7 @@ from mintlang.runtime.terminal import Terminal
 
 TIME_LIMIT = 16_777_216  # TIME wraps after 16777215 (T-7 RC)
 DEFAULT_NODE = 2
+BUILD_NUMBER = 0.0  # COMMS(239): the simulator has no firmware build
 
 
 class System:
@@ -28,6 +29,12 @@ class System:
         self.time_origin = 0
         self.node = DEFAULT_NODE
         self.comms = CommsArray(self._system_read, self._system_write)
+        self._unnamed = {  # the misc comms elements no keyword reads (CM-1)
+            "EXECUTION_STATUS": self._execution_status,
+            "BUFFER": self._buffer,
+            "LINE": self._line,
+            "FIRMWAREREVISION": lambda: BUILD_NUMBER,
+        }
         self.fast_positions: list[float] = [0.0] * len(axes)  # FASTPOS per axis, counts
         self.fast_encoders: list[float] = [0.0] * len(axes)
         self.fast_armed = True
@@ -79,10 +86,13 @@ class System:
         self.node = int(value)
 
     def _write_comms(self, channels: Channels | None, values: tuple[float | None, ...]) -> bool:
+        """``COMMS(i) = a, b, ...`` writes consecutive elements, all or none: every address is checked first."""
         address = channels[0] if channels else 0
-        for offset, value in enumerate(values):
-            if value is not None:
-                self.comms.write(address + offset, value, external=False)
+        writes = [(address + offset, value) for offset, value in enumerate(values) if value is not None]
+        for target, _ in writes:
+            self.comms.check_write(target)
+        for target, value in writes:
+            self.comms.write(target, value, external=False)
         return False
 
     def _axis(self, channel: int | None) -> int:
@@ -109,10 +119,27 @@ class System:
         element = system_element(address)
         if element is None:
             return None
+        unnamed = self._unnamed.get(element.keyword)
+        if unnamed is not None:
+            return unnamed()
         access = self.table.get(element.keyword)
         if access is None or access.read is None:
             return None
         return access.read(element.channel)
+
+    def _execution_status(self) -> float:
+        """2 while the program runs (it is the only reader: a host cannot address it); 0, the command line, after."""
+        return 0.0 if self.vm.stopped is not None else 2.0
+
+    def _buffer(self) -> float:
+        """The file running: 1 the program, 2 the configuration; 0, the command line, after the run."""
+        if self.vm.stopped is not None:
+            return 0.0
+        return 2.0 if self.vm.in_configuration() else 1.0
+
+    def _line(self) -> float:
+        site = self.vm.current_site()
+        return float(site.line) if site is not None else 0.0
 
     def _system_write(self, address: int, value: float) -> bool:
         element = system_element(address)

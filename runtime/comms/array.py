@@ -46,7 +46,8 @@ class SystemElement:
     """What a system element (100..255) shows: a keyword, its axis or channel, and whether it may be written.
 
     ``EXECUTION_STATUS`` (0 command line, 1 compiling, 2 running), ``BUFFER`` (0 command line,
-    1 program, 2 configuration) and ``LINE`` (the line being executed) have no Mint keyword.
+    1 program, 2 configuration), ``LINE`` (the line being executed) and ``FIRMWAREREVISION``
+    (the build number) have no Mint keyword; the runtime answers them itself.
     """
 
     keyword: str
@@ -118,6 +119,15 @@ class CommsArray:
                 raise MintError(_ERR_READ_ONLY, detail=f"COMMS({address})")
         if external and address in EVENT_ELEMENTS:
             self._external.add(address)
+
+    def check_write(self, address: int) -> None:
+        """Raise the error ``write`` would give ``address``, writing nothing: a multi-value write is all or none."""
+        if address in USER_ELEMENTS:
+            return
+        self._read_system(address)
+        element = system_element(address)
+        if element is None or not element.writable:
+            raise MintError(_ERR_READ_ONLY, detail=f"COMMS({address})")
 
     def external_writes_pending(self) -> bool:
         """Cheap to ask on every tick: whether ``take_external_writes`` has anything."""

@@ -8,7 +8,9 @@ import pytest
 
 from mintlang.runtime.comms.array import CommsArray, SystemElement, system_element
 from mintlang.runtime.errors import MintError
+from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.numbers import f32
+from tests.runtime.running import simulate
 
 
 class FakeController:
@@ -139,3 +141,19 @@ def test_system_map_io_and_misc_block() -> None:
 def test_only_100_to_255_belong_to_the_system_map() -> None:
     assert system_element(99) is None and system_element(256) is None
     assert sum(system_element(a) is not None for a in range(100, 256)) == 8 * 8 + 8 + 9
+
+
+def test_a_program_reads_its_execution_status_buffer_and_line_from_the_misc_block() -> None:
+    # CM-1: 235 running (2), 236 the file (1 program, 2 configuration), 237 the line, 239 the build number
+    config = "RESETALL\nPRINT COMMS(235), COMMS(236), COMMS(237)\n"
+    result = simulate("DIM x\nPRINT COMMS(235), COMMS(236), COMMS(237), COMMS(239)\n", config=config)
+    assert result.terminal == "222\n2120\n"
+
+
+def test_a_program_write_of_several_values_changes_nothing_when_one_element_refuses_it() -> None:
+    # like a host write (CM-7 RC), all values or none: COMMS(100) is read-only
+    result = simulate("COMMS(98) = 1, 2, 3\n")
+    assert (result.stop.reason, result.err) == (StopReason.ERROR, 45)
+    source = "COMMS(98) = 1, 2, 3\nEND\n#ONERROR\nPRINT COMMS(98), COMMS(99)\nRETURN\n"
+    assert simulate(source).terminal == "00\n"
+    assert simulate("COMMS(97) = 1, 2, 3\nPRINT COMMS(97), COMMS(98), COMMS(99)\n").terminal == "123\n"

@@ -19,10 +19,8 @@ def main(port: int | None, log_level: str, log_file: str | None) -> None:
     logging.basicConfig(
         filename=log_file, level=log_level.upper(), format="%(asctime)s mint-lsp %(levelname)s %(name)s: %(message)s"
     )
-    from mintlang.lsp.memory import IdleCollector  # noqa: PLC0415  (--help stays fast)
-    from mintlang.lsp.server import create_server  # noqa: PLC0415
+    from mintlang.lsp.server import create_server  # noqa: PLC0415  (--help stays fast)
 
-    IdleCollector.take_over()
     server = create_server()
     if port is None:
         server.start_io()

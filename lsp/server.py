@@ -17,7 +17,6 @@ from pygls.uris import to_fs_path
 
 from mintlang.lsp import __version__
 from mintlang.lsp.lookup import line_prefix
-from mintlang.lsp.memory import IdleCollector
 from mintlang.lsp.positions import Positions
 from mintlang.lsp.workspace import MAX_CHARACTERS, Analyses, Snapshot
 from mintlang.source import decode
@@ -28,8 +27,7 @@ log = logging.getLogger(__name__)
 class MintServer(LanguageServer):
     def __init__(self) -> None:
         super().__init__("mint-lsp", __version__)
-        self.collector = IdleCollector()
-        self.analyses = Analyses(read=self.read_text, analysed=self.collector.arm)
+        self.analyses = Analyses(read=self.read_text)
 
     def read_text(self, uri: str) -> str | None:
         """The text of an open document, else of the file on disk; None when there is none."""

@@ -137,7 +137,6 @@ class Analyses:
     read: TextReader
     settings: Settings = field(default_factory=Settings)
     encoding: str = "utf-16"  # the position encoding negotiated with the client
-    analysed: Callable[[], None] = lambda: None  # called after each new analysis
     _cache: dict[str, tuple[tuple[object, ...], Snapshot]] = field(default_factory=dict)
 
     def snapshot(self, uri: str, text: str, version: int | None) -> Snapshot:
@@ -151,7 +150,6 @@ class Analyses:
             return cached[1]
         snapshot = self._analyse(uri, text, version, unit=unit, other=other, other_text=other_text, settings=settings)
         self._cache[uri] = (key, snapshot)
-        self.analysed()
         return snapshot
 
     def latest(self, uri: str) -> Snapshot | None:

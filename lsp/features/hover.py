@@ -8,6 +8,7 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.lsp import describe
 from mintlang.lsp.lookup import token_at
+from mintlang.lsp.occurrences import symbol_at
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.syntax.tokens import TokenKind
@@ -19,7 +20,7 @@ def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
     token = token_at(snapshot.document, offset)
     if token is None:
         return None
-    found = snapshot.model.symbols.at(snapshot.unit, offset)
+    found = symbol_at(snapshot, offset)
     if found is not None:
         return describe.symbol(snapshot, found[0]), found[1].span.start, found[1].span.end
     if token.kind is TokenKind.CONSTANT:

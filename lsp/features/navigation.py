@@ -11,13 +11,10 @@ from collections.abc import Iterable
 
 from lsprotocol import types
 
+from mintlang.lsp.occurrences import symbol_at, written
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.semantic.symbols import Occurrence, Symbol
-
-
-def symbol_at(snapshot: Snapshot, position: types.Position) -> tuple[Symbol, Occurrence] | None:
-    return snapshot.model.symbols.at(snapshot.unit, snapshot.positions.offset(position))
 
 
 def locations(snapshot: Snapshot, occurrences: Iterable[Occurrence]) -> list[types.Location]:
@@ -34,7 +31,7 @@ def register(server: MintServer) -> None:
     def lookup(uri: str, position: types.Position) -> tuple[Snapshot, Symbol] | None:
         """The analysed document and the symbol at ``position``, if both exist."""
         snapshot = server.snapshot(uri)
-        found = symbol_at(snapshot, position) if snapshot is not None else None
+        found = symbol_at(snapshot, snapshot.positions.offset(position)) if snapshot is not None else None
         return (snapshot, found[0]) if snapshot is not None and found is not None else None
 
     @server.feature(types.TEXT_DOCUMENT_DEFINITION)
@@ -51,7 +48,9 @@ def register(server: MintServer) -> None:
         if found is None:
             return None
         snapshot, symbol = found
-        wanted = symbol.occurrences() if params.context.include_declaration else symbol.references
+        wanted = written(snapshot, symbol)
+        if not params.context.include_declaration:
+            wanted = [occurrence for occurrence in wanted if occurrence not in symbol.definitions]
         return locations(snapshot, wanted)
 
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_HIGHLIGHT)
@@ -63,8 +62,10 @@ def register(server: MintServer) -> None:
         return [
             types.DocumentHighlight(
                 range=snapshot.positions.range(occurrence.span),
-                kind=types.DocumentHighlightKind.Write if occurrence.is_write else types.DocumentHighlightKind.Read,
+                kind=types.DocumentHighlightKind.Write
+                if occurrence.is_write or occurrence in symbol.definitions
+                else types.DocumentHighlightKind.Read,
             )
-            for occurrence in symbol.occurrences()
+            for occurrence in written(snapshot, symbol)
             if occurrence.unit is snapshot.unit
         ]

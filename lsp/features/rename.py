@@ -2,7 +2,9 @@
 
 A new name must lex as a user name of the dialect (not a keyword, constant or
 abbreviation) and must not equal another symbol in its first ten characters,
-which the controller would take for the same name.
+which the controller would take for the same name. Event handlers keep their
+names, and no subroutine is renamed into one: the controller calls handlers
+by name.
 """
 
 from __future__ import annotations
@@ -12,8 +14,10 @@ from pygls.exceptions import JsonRpcException
 
 from mintlang.diagnostics import Span
 from mintlang.lsp.lookup import token_at
+from mintlang.lsp.occurrences import symbol_at, written
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
+from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind
 from mintlang.syntax.lexer import lex
 from mintlang.syntax.nodes import identity
@@ -30,8 +34,11 @@ def _spelling(occurrence: Occurrence) -> Span:
 
 
 def _target(snapshot: Snapshot, offset: int) -> tuple[Symbol, Occurrence]:
-    found = snapshot.model.symbols.at(snapshot.unit, offset)
+    found = symbol_at(snapshot, offset)
     if found is not None:
+        symbol, occurrence = found
+        if symbol.kind is SymbolKind.LABEL and event_of(occurrence.spelling, snapshot.settings.dialect) is not None:
+            raise RenameRefused(f"#{occurrence.spelling} is an event handler: the controller calls it by this name")
         return found
     token = token_at(snapshot.document, offset)
     if token is not None and token.kind not in (TokenKind.NAME, TokenKind.LABEL):
@@ -43,6 +50,8 @@ def _check_name(snapshot: Snapshot, symbol: Symbol, name: str) -> None:
     tokens = [token for token in lex(name, snapshot.settings.dialect).tokens if token.kind is not TokenKind.NEWLINE]
     if len(tokens) != 1 or tokens[0].kind is not TokenKind.NAME or tokens[0].text != name:
         raise RenameRefused(f"'{name}' is not a valid Mint name (a keyword, a constant or not a single word)")
+    if symbol.kind is SymbolKind.LABEL and event_of(name, snapshot.settings.dialect) is not None:
+        raise RenameRefused(f"#{name} names an event handler: the subroutine would become one")
     table = snapshot.model.symbols
     if symbol.kind is SymbolKind.LABEL:
         others = list(table.labels[symbol.unit].values())
@@ -75,7 +84,7 @@ def register(server: MintServer) -> None:
         name = params.new_name.removeprefix("#") if symbol.kind is SymbolKind.LABEL else params.new_name
         _check_name(snapshot, symbol, name)
         changes: dict[str, list[types.TextEdit]] = {}
-        for occurrence in symbol.occurrences():
+        for occurrence in written(snapshot, symbol):
             file = snapshot.files.get(occurrence.unit)
             if file is not None:
                 edit = types.TextEdit(range=file.positions.range(_spelling(occurrence)), new_text=name)

@@ -85,14 +85,6 @@ class SymbolTable:
         for table in self.labels.values():
             yield from table.values()
 
-    def at(self, unit: Unit, offset: int) -> tuple[Symbol, Occurrence] | None:
-        """The symbol written at ``offset`` of ``unit``, for go-to-definition and rename."""
-        for symbol in self.all():
-            for occurrence in symbol.occurrences():
-                if occurrence.unit is unit and occurrence.span.start <= offset <= occurrence.span.end:
-                    return symbol, occurrence
-        return None
-
 
 class _Collector:
     """Replays what the syntax index saw, in compile order."""

@@ -69,3 +69,44 @@ async def test_keywords_have_no_definition(client, tmp_path):
         types.DefinitionParams(text_document=document(uri), position=position(XY, "MOVEA"))
     )
     assert found is None
+
+
+async def test_a_macro_use_is_the_macro_and_the_names_in_its_body_are_found(client, tmp_path):
+    text = "DIM target = 10\nDEFINE fast = SPEED.0 = target\nfast\nPRINT target\n"
+    uri = uri_of(tmp_path / "macro.mnt")
+    await open_document(client, uri, text)
+    [found] = await client.text_document_definition_async(
+        types.DefinitionParams(text_document=document(uri), position=position(text, "fast\n"))
+    )
+    assert found.range.start == types.Position(line=1, character=7)  # the DEFINE, not the DIM of target
+    [found] = await client.text_document_definition_async(
+        types.DefinitionParams(text_document=document(uri), position=position(text, "= target", 3))
+    )
+    assert found.range.start == types.Position(line=0, character=4)
+    context = types.ReferenceContext(include_declaration=True)
+    found = await client.text_document_references_async(
+        types.ReferenceParams(text_document=document(uri), position=position(text, "PRINT target", 7), context=context)
+    )
+    assert [(location.range.start.line, location.range.start.character) for location in found] == [
+        (0, 4),
+        (1, 24),
+        (3, 6),
+    ]
+    highlights = await client.text_document_document_highlight_async(
+        types.DocumentHighlightParams(text_document=document(uri), position=position(text, "DIM target", 4))
+    )
+    assert {(h.range.start.line, h.kind) for h in highlights} == {
+        (0, types.DocumentHighlightKind.Write),
+        (1, types.DocumentHighlightKind.Read),
+        (3, types.DocumentHighlightKind.Read),
+    }
+
+
+async def test_a_label_definition_is_highlighted_as_written(client, tmp_path):
+    uri = uri_of(tmp_path / "xy.mnt")
+    await open_document(client, uri, XY)
+    highlights = await client.text_document_document_highlight_async(
+        types.DocumentHighlightParams(text_document=document(uri), position=position(XY, "GOSUB init", 7))
+    )
+    kinds = {h.range.start.line: h.kind for h in highlights}
+    assert kinds[13] == types.DocumentHighlightKind.Write and kinds[9] == types.DocumentHighlightKind.Read

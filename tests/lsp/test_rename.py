@@ -65,3 +65,40 @@ async def test_collision_in_the_first_ten_characters(client, tmp_path):
         await client.text_document_rename_async(
             types.RenameParams(text_document=document(uri), position=position(text, "count"), new_name="axis_speed_y")
         )
+
+
+MACRO = "DIM target = 10\nDEFINE fast = SPEED.0 = target\nfast\nPRINT target\n"
+
+
+async def test_a_variable_a_macro_mentions_is_renamed_in_the_macros_body_not_at_its_uses(client, tmp_path):
+    uri = uri_of(tmp_path / "macro.mnt")
+    await open_document(client, uri, MACRO)
+    edit = await client.text_document_rename_async(
+        types.RenameParams(text_document=document(uri), position=position(MACRO, "PRINT target", 7), new_name="goal")
+    )
+    places = sorted((e.range.start.line, e.range.start.character, e.range.end.character) for e in edit.changes[uri])
+    assert places == [(0, 4, 10), (1, 24, 30), (3, 6, 12)]  # the DIM, the macro's body, the PRINT: never "fast"
+    prepared = await client.text_document_prepare_rename_async(
+        types.PrepareRenameParams(text_document=document(uri), position=position(MACRO, "= target", 3))
+    )
+    assert prepared.placeholder == "target"
+
+
+@pytest.mark.parametrize("new_name", ["onerror", "#TIMER", "fastin0"])
+async def test_a_subroutine_is_not_renamed_into_an_event_handler(client, tmp_path, new_name):
+    uri = uri_of(tmp_path / "xy.mnt")
+    await open_document(client, uri, XY)
+    with pytest.raises(JsonRpcException, match="event handler"):
+        await client.text_document_rename_async(
+            types.RenameParams(text_document=document(uri), position=position(XY, "#init", 2), new_name=new_name)
+        )
+
+
+async def test_an_event_handler_keeps_its_name(client, tmp_path):
+    text = XY + "#ONERROR\nRETURN\n"
+    uri = uri_of(tmp_path / "xy.mnt")
+    await open_document(client, uri, text)
+    with pytest.raises(JsonRpcException, match="event handler"):
+        await client.text_document_prepare_rename_async(
+            types.PrepareRenameParams(text_document=document(uri), position=position(text, "#ONERROR", 3))
+        )

@@ -20,7 +20,9 @@ def keyword(word: Keyword, controller: Controller, spelling: str = "") -> str:
     title = f"**{word.name}**"
     if word.abbreviations:
         title += f" (abbreviation {', '.join(word.abbreviations)})"
-    lines = [f"{title} — {word.kind.value}", "", "```mint", *word.formats, "```", ""]
+    lines = [f"{title} — {word.kind.value}", ""]
+    if word.formats:
+        lines += ["```mint", *word.formats, "```", ""]
     if word.summary:
         lines += [word.summary, ""]
     row = word.attributes_for(controller) or (word.attributes[0] if word.attributes else None)
@@ -67,12 +69,16 @@ def _where(snapshot: Snapshot, unit: Unit, offset: int) -> str:
     return f"line {line} of {place}" if line is not None else place
 
 
-def macro_body(snapshot: Snapshot, symbol: Symbol) -> str | None:
-    """The text a macro stands for, as written in its definition."""
-    definition = snapshot.model.program.macros.get(symbol.identity)
-    if definition is None:
+def macro_body(snapshot: Snapshot, name: str) -> str | None:
+    """The text the macro ``name`` (an identity) stands for, exactly as its definition writes it."""
+    model = snapshot.model
+    definition = model.program.macros.get(name)
+    symbol = model.symbols.macros.get(name)
+    where = symbol.definition if symbol is not None else None
+    if definition is None or definition.body_span is None or where is None:
         return None
-    return " ".join(text for _, text in definition.body)
+    document = model.configuration if where.unit is Unit.CONFIGURATION else model.program
+    return document.source[definition.body_span.start : definition.body_span.end] if document is not None else None
 
 
 def symbol(snapshot: Snapshot, found: Symbol) -> str:
@@ -84,7 +90,7 @@ def symbol(snapshot: Snapshot, found: Symbol) -> str:
     if found.kind is SymbolKind.VARIABLE:
         return f"**{found.name}** — variable, {where}"
     if found.kind is SymbolKind.MACRO:
-        body = macro_body(snapshot, found)
+        body = macro_body(snapshot, found.identity)
         value = f"\n\n```mint\nDEFINE {found.name} = {body}\n```" if body is not None else ""
         return f"**{found.name}** — macro, {where.replace('declared', 'defined')}{value}"
     event = event_of(found.name, snapshot.settings.dialect)

@@ -6,7 +6,10 @@ After GOSUB/GOTO: labels; after ``#`` at the start of a line: event handlers
 of the controller; after ``_``: predefined constants; at the start of a
 statement: commands, writable parameters, variables, macros and block
 snippets; inside an expression: readable keywords, functions, variables,
-arrays and macros. Nothing inside comments and strings.
+arrays and macros; after a complete operand: the operators and the words that
+continue a statement (THEN, TO ...). Nothing inside comments, strings and
+character constants, after a dot (an axis or a decimal follows), or where a
+new name is being declared (DIM, DEFINE).
 """
 
 from __future__ import annotations
@@ -17,7 +20,7 @@ from lsprotocol import types
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Keyword, KeywordKind
+from mintlang.keyworddb.model import Attributes, Keyword, KeywordKind
 from mintlang.lsp import describe
 from mintlang.lsp.lookup import WORD_KINDS, prefix_tokens, significant
 from mintlang.lsp.server import MintServer
@@ -34,6 +37,12 @@ SNIPPETS = {
     "REPEAT … UNTIL": "REPEAT\n\t$0\nUNTIL ${1:condition}",
 }
 _STATEMENT_STARTERS = frozenset({TokenKind.COLON, TokenKind.THEN, TokenKind.DO, TokenKind.ELSE, TokenKind.LABEL})
+_OPERAND_ENDS = frozenset(
+    {TokenKind.NUMBER, TokenKind.CHAR, TokenKind.STRING, TokenKind.CONSTANT, TokenKind.NAME, TokenKind.RPAR}
+)
+_NEW_NAME = frozenset({TokenKind.DIM, TokenKind.DEFINE})
+_CONTINUATIONS = frozenset({"THEN", "DO", "TO", "STEP", "USING"})  # statement words that follow an operand
+_SINGLE_QUOTES = "'\u2018\u2019"
 _PARTIAL_WORDS = WORD_KINDS | {TokenKind.HASH}
 _HIDDEN = frozenset({KeywordKind.EVENT, KeywordKind.COMMAND_LINE})
 _SYMBOL_KINDS = {
@@ -51,6 +60,21 @@ def _keyword_item(word: Keyword) -> types.CompletionItem:
     return types.CompletionItem(label=word.name, kind=kind, detail=detail, data={"keyword": word.name})
 
 
+def _starts_statement(word: Keyword, row: Attributes | None) -> bool:
+    if word.kind is KeywordKind.STATEMENT:
+        return word.name[:1].isalpha() and word.name not in _CONTINUATIONS
+    return word.kind is KeywordKind.COMMAND or (
+        word.kind is KeywordKind.PARAMETER and (row is None or row.write or row.command)
+    )
+
+
+def _continuations() -> Iterator[types.CompletionItem]:
+    """After a complete operand: operators, and the words that go on with the statement."""
+    for word in database().keywords.values():
+        if (word.kind is KeywordKind.OPERATOR and word.name.isalpha()) or word.name in _CONTINUATIONS:
+            yield _keyword_item(word)
+
+
 def _keywords(snapshot: Snapshot, statement: bool) -> Iterator[types.CompletionItem]:
     if snapshot.settings.dialect is Dialect.V3:
         for old in database().v3_keywords.values():
@@ -64,7 +88,7 @@ def _keywords(snapshot: Snapshot, statement: bool) -> Iterator[types.CompletionI
             continue
         row = word.attributes_for(controller)
         if statement:
-            valid = word.kind in (KeywordKind.STATEMENT, KeywordKind.COMMAND) or row is None or row.write or row.command
+            valid = _starts_statement(word, row)
         else:
             valid = word.kind in (KeywordKind.FUNCTION, KeywordKind.OPERATOR) or (
                 row.read if row else word.kind is KeywordKind.PARAMETER
@@ -78,7 +102,12 @@ def _symbols(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
     for symbol in (*symbols.variables.values(), *symbols.macros.values()):
         if symbol.definitions:
             yield types.CompletionItem(
-                label=symbol.name, kind=_SYMBOL_KINDS[symbol.kind], detail=describe.symbol(snapshot, symbol)
+                label=symbol.name,
+                kind=_SYMBOL_KINDS[symbol.kind],
+                detail=symbol.kind.value,
+                documentation=types.MarkupContent(
+                    kind=types.MarkupKind.Markdown, value=describe.symbol(snapshot, symbol)
+                ),
             )
 
 
@@ -125,30 +154,52 @@ def _snippets() -> Iterator[types.CompletionItem]:
         )
 
 
-def _inside_text(token: Token) -> bool:
-    """A comment runs to the end of the line; a string is open until its closing quote."""
-    if token.kind is TokenKind.COMMENT:
+def _inside_text(tokens: list[Token]) -> bool:
+    """A comment runs to the end of the line; a string or character constant is open until its closing quote."""
+    last = tokens[-1]
+    if last.kind is TokenKind.COMMENT:
         return True
-    return token.kind is TokenKind.STRING and (len(token.text) < 2 or token.text[-1] != token.text[0])
+    if last.kind is TokenKind.STRING:
+        return len(last.text) < 2 or last.text[-1] != last.text[0]
+    quoted = [token for token in tokens if token.text[:1] in _SINGLE_QUOTES]
+    return bool(quoted) and (len(quoted[-1].text) < 2 or quoted[-1].text[-1] not in _SINGLE_QUOTES)
 
 
-def complete(snapshot: Snapshot, prefix: str) -> list[types.CompletionItem]:
+def _events(snapshot: Snapshot, hash_: Token, cursor: types.Position) -> list[types.CompletionItem]:
+    """Handler names replacing the ``#...`` typed so far, whichever characters the client counts as a word."""
+    typed = types.Range(start=types.Position(cursor.line, cursor.character - len(hash_.text)), end=cursor)
+    return [
+        types.CompletionItem(
+            label=f"#{name}",
+            kind=types.CompletionItemKind.Event,
+            filter_text=f"#{name}",
+            text_edit=types.TextEdit(range=typed, new_text=f"#{name}"),
+        )
+        for name in event_names(snapshot)
+    ]
+
+
+def complete(snapshot: Snapshot, prefix: str, cursor: types.Position) -> list[types.CompletionItem]:
     """Items for the cursor at the end of ``prefix`` (its line so far); names come from ``snapshot``."""
     tokens = prefix_tokens(prefix, snapshot.settings.dialect)
-    if tokens and _inside_text(tokens[-1]):
+    if tokens and _inside_text(tokens):
         return []
     before = significant(tokens)
     partial: Token | None = None
     if before and before[-1].end == len(prefix) and before[-1].kind in _PARTIAL_WORDS:
         partial = before.pop()  # the word being typed
     if partial is not None and partial.text.startswith("#"):
-        return [types.CompletionItem(label=name, kind=types.CompletionItemKind.Event) for name in event_names(snapshot)]
+        return _events(snapshot, partial, cursor) if partial.kind is TokenKind.LABEL or not before else []
     if partial is not None and partial.text.startswith("_"):
         return list(_constants())
     previous = before[-1] if before else None
+    if previous is not None and (previous.kind in _NEW_NAME or previous.text.endswith(".")):
+        return []  # a new name, an axis or channel number, or the decimals of a number
     if previous is not None and previous.kind in (TokenKind.GOSUB, TokenKind.GOTO):
         return list(_labels(snapshot))
     statement = previous is None or previous.kind in _STATEMENT_STARTERS
+    if not statement and previous is not None and previous.kind in _OPERAND_ENDS:
+        return list(_continuations())
     items = [*_keywords(snapshot, statement), *_symbols(snapshot)]
     return items + list(_snippets()) if statement else items
 
@@ -160,7 +211,7 @@ def register(server: MintServer) -> None:
     )
     def completion(params: types.CompletionParams) -> types.CompletionList:
         typing = server.typing(params.text_document.uri, params.position)
-        items = complete(*typing) if typing is not None else []
+        items = complete(*typing, params.position) if typing is not None else []
         return types.CompletionList(is_incomplete=False, items=items)
 
     @server.feature(types.COMPLETION_ITEM_RESOLVE)

@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from lsprotocol import types
 
 from mintlang.diagnostics import Span
+from mintlang.lsp.describe import macro_body
 from mintlang.lsp.lookup import token_index
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
@@ -14,6 +15,7 @@ from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
 from mintlang.syntax.vocabulary import vocabulary
 
 _KEYWORD_KINDS = GRAMMAR_KEYWORDS | {TokenKind.KEYWORD, TokenKind.FUNCTION}
+_SYMBOL_STATEMENTS = {"?": "PRINT"}  # a statement written as a symbol; operators (&, |, !) read as they are
 
 
 def _hint(snapshot: Snapshot, offset: int, label: str) -> types.InlayHint:
@@ -28,6 +30,9 @@ def hints(snapshot: Snapshot, span: Span) -> Iterator[types.InlayHint]:
         token = tokens[index]
         if token.start > span.end:
             break
+        if token.text in _SYMBOL_STATEMENTS:
+            yield _hint(snapshot, token.end, f"({_SYMBOL_STATEMENTS[token.text]})")
+            continue
         if token.kind not in _KEYWORD_KINDS or not token.text.isalnum():
             continue
         name = words.keyword_name(token.text)
@@ -36,9 +41,9 @@ def hints(snapshot: Snapshot, span: Span) -> Iterator[types.InlayHint]:
             yield _hint(snapshot, token.end, f"({name})")
     for expansion in document.expansions:
         if span.start <= expansion.span.start <= span.end:
-            definition = document.macros.get(expansion.macro)
-            if definition is not None:
-                yield _hint(snapshot, expansion.span.end, "= " + " ".join(text for _, text in definition.body))
+            body = macro_body(snapshot, expansion.macro)
+            if body is not None:
+                yield _hint(snapshot, expansion.span.end, "= " + body)
 
 
 def register(server: MintServer) -> None:

@@ -58,7 +58,60 @@ async def test_event_handlers_after_hash_at_line_start(client, tmp_path):
     uri = uri_of(tmp_path / "events.mnt")
     await open_document(client, uri, text)
     items = await labels_at(client, uri, text, "#", 1)
-    assert {"ONERROR", "STOP", "TIMER", "IN0", "FASTIN0", "COMMS1"} <= set(items)
+    assert {"#ONERROR", "#STOP", "#TIMER", "#IN0", "#FASTIN0", "#COMMS1"} <= set(items)
+    typed = items["#ONERROR"].text_edit  # replaces the "#" typed, whatever the client takes for a word
+    assert (typed.new_text, typed.range.start.character, typed.range.end.character) == ("#ONERROR", 0, 1)
+
+
+async def test_a_terminal_number_after_print_hash_gets_no_handler_names(client, tmp_path):
+    text = "PRINT #\n"
+    uri = uri_of(tmp_path / "terminal.mnt")
+    await open_document(client, uri, text)
+    assert await labels_at(client, uri, text, "#", 1) == {}
+
+
+async def test_statement_start_offers_no_functions_operators_or_continuations(client, tmp_path):
+    text = "DIM a\n\n"
+    uri = uri_of(tmp_path / "start.mnt")
+    await open_document(client, uri, text)
+    items = set(await labels_at(client, uri, text, "a\n", 2))
+    assert {"GO", "PRINT", "ELSE", "a"} <= items
+    assert not items & {"SIN", "ABS", "AND", "NOT", "~", "THEN", "TO", "STEP", "USING", "DO", "#", ":"}
+
+
+@pytest.mark.parametrize(
+    ("line", "reason"),
+    [
+        ("DIM ", "a new name is declared"),
+        ("DEFINE ", "a new name is defined"),
+        ("SPEED.", "an axis number follows the dot"),
+        ("a = 1.", "decimals follow"),
+        ("a = 'b", "inside a character constant"),
+    ],
+)
+async def test_nothing_where_no_word_of_the_list_can_go(client, tmp_path, line, reason):
+    text = f"DIM a\n{line}\n"
+    uri = uri_of(tmp_path / "nothing.mnt")
+    await open_document(client, uri, text)
+    assert await labels_at(client, uri, text, line, len(line)) == {}, reason
+
+
+async def test_after_an_operand_the_operators_and_continuations(client, tmp_path):
+    text = "DIM a\nIF a \n"
+    uri = uri_of(tmp_path / "operand.mnt")
+    await open_document(client, uri, text)
+    items = set(await labels_at(client, uri, text, "IF a ", 5))
+    assert {"AND", "OR", "XOR", "MOD", "THEN", "DO"} <= items
+    assert not items & {"POS", "SIN", "a"}
+
+
+async def test_symbol_details_are_plain_text_and_the_description_is_markdown(client, tmp_path):
+    text = "DIM a\nDEFINE fast = SPEED.0 = 500\na = \n"
+    uri = uri_of(tmp_path / "details.mnt")
+    await open_document(client, uri, text)
+    items = await labels_at(client, uri, text, "a = ", 4)
+    assert (items["a"].detail, items["fast"].detail) == ("variable", "macro")
+    assert "DEFINE fast = SPEED.0 = 500" in items["fast"].documentation.value  # as written, not re-spaced
 
 
 async def test_nothing_inside_comments_and_strings(client, tmp_path):

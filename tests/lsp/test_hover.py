@@ -33,6 +33,14 @@ async def test_keyword_full_abbreviated_and_lower_case(client, tmp_path):
     assert "**IN**" in glued and "channel 3" in glued
 
 
+async def test_a_keyword_without_a_format_has_no_empty_code_block(client, tmp_path):
+    text = "DIM a\nIF a THEN a = 1\n"
+    uri = uri_of(tmp_path / "then.mnt")
+    await open_document(client, uri, text)
+    then = await hover_at(client, uri, text, "THEN")
+    assert "**THEN**" in then and "```" not in then
+
+
 async def test_constant_shows_its_value(client, tmp_path):
     text = "DIM a\na = _TRUE\n"
     uri = uri_of(tmp_path / "constant.mnt")

@@ -18,3 +18,13 @@ async def test_abbreviations_and_macros(client, tmp_path):
     hints = await client.text_document_inlay_hint_async(types.InlayHintParams(text_document=document(uri), range=whole))
     found = [((h.position.line, h.position.character), h.label) for h in hints]
     assert found == [((1, 2), "(SPEED)"), ((1, 11), "= 100 * 2")]
+
+
+async def test_macro_text_as_written_and_the_print_abbreviation(client, tmp_path):
+    text = "DEFINE go0 = SPEED.0 = 500 : GO.0\ngo0\n? 1\n"
+    uri = uri_of(tmp_path / "hints.mnt")
+    await open_document(client, uri, text)
+    whole = types.Range(start=types.Position(line=0, character=0), end=types.Position(line=3, character=0))
+    hints = await client.text_document_inlay_hint_async(types.InlayHintParams(text_document=document(uri), range=whole))
+    found = [((h.position.line, h.position.character), h.label) for h in hints]
+    assert found == [((1, 3), "= SPEED.0 = 500 : GO.0"), ((2, 1), "(PRINT)")]

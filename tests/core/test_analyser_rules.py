@@ -56,7 +56,7 @@ def test_a_use_before_the_dim_is_error_3001_even_if_the_dim_follows() -> None:
 def test_the_3001_fix_inserts_a_dim_line_before_the_first_use() -> None:
     source = "REM start\n  speedVal = 10\nPRINT speedVal\n"
     first, second = [d for d in mintlang.check(source) if d.code == "E3001"]
-    assert second.fixes == ()  # one fix, offered at the first use
+    assert second.fixes == first.fixes  # each use offers the one DIM, placed above the first use
     (fix,) = first.fixes
     (edit,) = fix.edits
     line_two = source.index("  speedVal")
@@ -89,6 +89,19 @@ def test_a_misspelt_variable_gets_the_declared_name_it_resembles() -> None:
         "DIM target\ntarget = 1\nPRINT target\n",
     )
     assert declare.title == "Declare 'targt' with DIM"
+
+
+def test_every_use_of_an_undeclared_variable_offers_the_dim_above_its_first_use() -> None:
+    source = "LOOP\n  total = total + 1\nENDL\n"
+    diagnostics = [d for d in mintlang.check(source) if d.code == "E3001"]
+    assert len(diagnostics) == 2
+    fixed = {apply(source, d.fixes[0].edits) for d in diagnostics}
+    assert fixed == {"LOOP\n  DIM total\n  total = total + 1\nENDL\n"}
+
+
+def test_no_second_dim_is_offered_when_the_dim_comes_later() -> None:
+    diagnostic = only("a = 1\nDIM a\n", "E3001")
+    assert "comes later" in diagnostic.message and diagnostic.fixes == ()
 
 
 def test_the_3001_fix_keeps_a_dim_list_continued_over_lines_whole() -> None:
@@ -346,6 +359,18 @@ def test_no_rename_is_offered_to_a_keyword_the_controller_lacks() -> None:
     assert on_pci.code == "W102" and on_pci.fixes == () and "NextMove PCI lacks" in on_pci.message
     (on_mintdrive,) = mintlang.check("CURRLIMIT = 2\n", controller="mintdrive")
     assert [fix.title for fix in on_mintdrive.fixes] == ["Replace with CURRENTLIMIT"]
+
+
+def test_an_old_analog_input_is_not_renamed_alone_because_the_units_changed() -> None:
+    (analogue,) = mintlang.check("DIM v\nv = ANALOGUE.1\n")
+    assert analogue.code == "W102" and analogue.fixes == () and "percent" in analogue.message
+
+
+def test_a_whole_v3_keyword_used_as_a_variable_is_not_offered_a_dim() -> None:
+    keyword, abbreviation = [d for d in mintlang.check("DIM x\nx = ANALOGUE1 + A2\n") if d.code == "E3001"]
+    assert "in Mint v3 it was a keyword; v4: ADC" in keyword.message and keyword.fixes == ()
+    assert "abbreviation of ANALOGUE2" in abbreviation.message  # a2 may well be a variable
+    assert [fix.title for fix in abbreviation.fixes] == ["Declare 'A2' with DIM"]
 
 
 def test_a_declared_variable_named_like_an_old_keyword_is_not_renamed() -> None:

@@ -38,12 +38,24 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
     for symbol in model.symbols.variables.values():
         if renames.rename_of(symbol.name) is not None:
             continue  # an old v3 keyword: the v3-keyword rule explains it
-        for index, occurrence in enumerate(symbol.references):
-            if occurrence.declared_before:
-                continue
-            fixes = (_add_dim(model, symbol, occurrence.unit, occurrence.span),) if index == 0 else ()
+        undeclared = [occurrence for occurrence in symbol.references if not occurrence.declared_before]
+        if not undeclared:
+            continue
+        # Every squiggle offers the same DIM, above the first use in the text (configuration first);
+        # none when a later DIM exists (a second one would be a double declaration) or when the name
+        # is a whole v3 keyword (a variable would silently read 0 where the v3 program read an input).
+        old = renames.lookup_v3(symbol.name)
+        was_keyword = old is not None and old.name == symbol.name.upper()
+        first = min(undeclared, key=lambda use: (use.unit is Unit.PROGRAM, use.span.start))
+        declare = () if symbol.definitions or was_keyword else (_add_dim(model, symbol, first.unit, first.span),)
+        for occurrence in undeclared:
+            fixes: tuple[Fix, ...] = declare
             detail = f"'{occurrence.spelling}' is not declared"
-            if symbol.definitions:
+            if old is not None:
+                v4 = ", ".join(old.v4_names) if old.v4_names else "nothing"
+                what = "a keyword" if was_keyword else f"the abbreviation of {old.name}"
+                detail += f" (in Mint v3 it was {what}; v4: {v4}, see mint-migrate)"
+            elif symbol.definitions:
                 detail += " (its DIM comes later: declarations must come first)"
             elif close := get_close_matches(occurrence.spelling, declared, n=1, cutoff=0.8):
                 detail += f"; did you mean '{close[0]}'?"

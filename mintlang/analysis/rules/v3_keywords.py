@@ -17,6 +17,9 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.semantic.events import EventKind, event_of
 
+# Replacements that read other units: renaming alone would change every value computed from them.
+_OTHER_UNITS = {"ADC": "ADC reads percent of the input's range where v3 read counts"}
+
 
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
@@ -63,6 +66,9 @@ def _old_word(word: str, span: Span, controller: ControllerProfile) -> Diagnosti
             ):
                 detail = f"{word} is a Mint v3 keyword: v4 replaced it by {new}, which {controller.title} lacks"
                 return own("W102", span, detail + " (mint-migrate knows the alternatives)")
+            if new in _OTHER_UNITS:
+                detail = f"{word} is a Mint v3 keyword: v4 replaced it by {new}; {_OTHER_UNITS[new]}"
+                return own("W102", span, detail + " (mint-migrate converts)")
             fix = Fix(f"Replace with {new}", (Edit(span, new),))
             return own("W102", span, f"{word} is a Mint v3 keyword: v4 replaced it by {new}", fixes=(fix,))
         replacement = " or ".join(rename.new) if rename.new else "nothing (it was removed)"

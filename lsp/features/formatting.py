@@ -1,7 +1,7 @@
 """Formatting: keywords in upper case and block bodies indented; nothing else changes.
 
-Comments, strings, macro bodies, user names and the spacing inside lines are
-left byte for byte. Indentation follows the core's block matching: the lines
+Comments (but for their REM), strings, macro bodies, user names and the
+spacing inside lines are left byte for byte. Indentation follows the core's block matching: the lines
 between an opener and its closer go one level deeper, ELSE sits with its IF,
 labels stay at the margin, and continuation lines of a DIM list keep theirs.
 """
@@ -13,9 +13,10 @@ from lsprotocol import types
 from mintlang.diagnostics import Span
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
-from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, Token, TokenKind
+from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
 
 _UPPER_CASED = GRAMMAR_KEYWORDS | {TokenKind.KEYWORD, TokenKind.FUNCTION}
+_REM = len("REM")  # a comment token starts with its keyword
 
 
 def _depths(snapshot: Snapshot) -> list[int]:
@@ -68,15 +69,22 @@ def _indentations(snapshot: Snapshot, options: types.FormattingOptions, lines: r
     return wanted
 
 
-def _keywords(snapshot: Snapshot, lines: range) -> dict[int, list[Token]]:
-    """Per 0-based line: its keywords not written in upper case."""
+def _keywords(snapshot: Snapshot, lines: range) -> dict[int, list[Span]]:
+    """Per 0-based line: the spans of its keywords not written in upper case (a comment's REM included)."""
     positions = snapshot.positions
-    found: dict[int, list[Token]] = {}
+    found: dict[int, list[Span]] = {}
     for token in snapshot.document.tokens:
-        if token.kind in _UPPER_CASED and token.text != token.text.upper():
+        if token.kind in _UPPER_CASED:
+            span = Span(token.start, token.end)
+        elif token.kind is TokenKind.COMMENT:
+            span = Span(token.start, token.start + _REM)
+        else:
+            continue
+        text = snapshot.document.source[span.start : span.end]
+        if text != text.upper():
             line = positions.position(token.start).line
             if line in lines:
-                found.setdefault(line, []).append(token)
+                found.setdefault(line, []).append(span)
     return found
 
 
@@ -90,11 +98,11 @@ def format_lines(snapshot: Snapshot, options: types.FormattingOptions, lines: ra
     for line in sorted(indentations.keys() | keywords.keys()):
         start = positions.line_start(line)
         cursor, pieces = (indentations[line][0], [indentations[line][1]]) if line in indentations else (start, [])
-        tokens = keywords.get(line, [])
-        end = max([cursor, *(token.end for token in tokens)])
-        for token in tokens:
-            pieces += [source[cursor : token.start], token.text.upper()]
-            cursor = token.end
+        spans = keywords.get(line, [])
+        end = max([cursor, *(span.end for span in spans)])
+        for span in spans:
+            pieces += [source[cursor : span.start], source[span.start : span.end].upper()]
+            cursor = span.end
         pieces.append(source[cursor:end])
         new_text = "".join(pieces)
         if new_text != source[start:end]:
@@ -115,4 +123,6 @@ def register(server: MintServer) -> None:
         snapshot = server.snapshot(params.text_document.uri)
         if snapshot is None:
             return []
-        return format_lines(snapshot, params.options, range(params.range.start.line, params.range.end.line + 1))
+        start, end = params.range.start, params.range.end
+        last = end.line - 1 if end.character == 0 and end.line > start.line else end.line  # whole lines selected
+        return format_lines(snapshot, params.options, range(start.line, last + 1))

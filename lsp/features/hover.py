@@ -7,17 +7,27 @@ from lsprotocol import types
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.lsp import describe
-from mintlang.lsp.lookup import token_at
+from mintlang.lsp.lookup import token_at, token_index
 from mintlang.lsp.occurrences import symbol_at
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
-from mintlang.syntax.tokens import TokenKind
+from mintlang.syntax.parser import Document
+from mintlang.syntax.tokens import Token, TokenKind
 from mintlang.syntax.vocabulary import vocabulary
+
+
+def _comment_keyword(document: Document, offset: int) -> Token | None:
+    """The ``REM`` that starts a comment, as a keyword token, when ``offset`` is on it."""
+    index = token_index(document, offset)
+    comment = document.tokens[index] if index >= 0 else None
+    if comment is None or comment.kind is not TokenKind.COMMENT or offset > comment.start + len("REM"):
+        return None
+    return Token(TokenKind.KEYWORD, comment.text[: len("REM")], comment.start)
 
 
 def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
     """Markdown for the word at ``offset`` and the span it describes."""
-    token = token_at(snapshot.document, offset)
+    token = token_at(snapshot.document, offset) or _comment_keyword(snapshot.document, offset)
     if token is None:
         return None
     found = symbol_at(snapshot, offset)

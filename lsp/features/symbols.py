@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -22,6 +23,9 @@ _KINDS = {
     SymbolKind.ARRAY: types.SymbolKind.Array,
     SymbolKind.MACRO: types.SymbolKind.Constant,
 }
+
+
+_COMMENT_ONLY = re.compile(r"[ \t]*(?:REM\b[^\r\n]*)?[ \t]*(?:\r\n|\r|\n)?$", re.IGNORECASE)
 
 
 @dataclass(frozen=True, slots=True)
@@ -49,12 +53,13 @@ def sections(snapshot: Snapshot) -> list[Section]:
 
 
 def _last_written(snapshot: Snapshot, first: int, last: int) -> int:
-    """``last`` moved up over blank lines, so a section does not swallow the gap before the next."""
+    """``last`` moved up over blank and comment-only lines: the gap before the next section, and the
+    comment that introduces it, are not part of this one."""
     source, positions = snapshot.document.source, snapshot.positions
     while last > first:
         start = positions.line_start(last)
         end = positions.line_start(last + 1) if last + 1 < positions.line_count else len(source)
-        if source[start:end].strip():
+        if not _COMMENT_ONLY.match(source, start, end):
             break
         last -= 1
     return last

@@ -37,7 +37,7 @@ endl
 return
 """
 FORMATTED = """\
-rem keep   THIS comment
+REM keep   THIS comment
 DIM i
 #main
 LOOP
@@ -80,3 +80,13 @@ async def test_range_formats_only_those_lines(client, tmp_path):
     )
     assert {e.range.start.line for e in edits} == {4}
     assert apply(SOURCE, edits).split("\n")[4] == "  FOR i = 1 TO 10"
+
+
+async def test_a_selection_of_whole_lines_ends_before_the_next_line(client, tmp_path):
+    uri = uri_of(tmp_path / "lines.mnt")
+    await open_document(client, uri, SOURCE)
+    selection = types.Range(start=types.Position(line=4, character=0), end=types.Position(line=5, character=0))
+    edits = await client.text_document_range_formatting_async(
+        types.DocumentRangeFormattingParams(text_document=document(uri), range=selection, options=SPACES)
+    )
+    assert {e.range.start.line for e in edits} == {4}

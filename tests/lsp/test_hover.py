@@ -41,6 +41,14 @@ async def test_a_keyword_without_a_format_has_no_empty_code_block(client, tmp_pa
     assert "**THEN**" in then and "```" not in then
 
 
+async def test_the_rem_of_a_comment_is_a_keyword(client, tmp_path):
+    text = "rem a note\n"
+    uri = uri_of(tmp_path / "rem.mnt")
+    await open_document(client, uri, text)
+    assert "**REM**" in await hover_at(client, uri, text, "rem", 1)
+    assert await hover_at(client, uri, text, "note", 1) is None
+
+
 async def test_constant_shows_its_value(client, tmp_path):
     text = "DIM a\na = _TRUE\n"
     uri = uri_of(tmp_path / "constant.mnt")

@@ -40,6 +40,17 @@ async def test_outline_and_folding_of_a_program_without_subroutines(client, tmp_
     assert [(r.start_line, r.end_line) for r in ranges] == [(1, 2)]
 
 
+async def test_a_section_ends_before_the_comment_that_introduces_the_next(client, tmp_path):
+    text = "GOSUB init\nEND\n#init\n  SPEED.0 = 10\nRETURN\n\nREM helpers below\n#onerror\nRETURN\n"
+    uri = uri_of(tmp_path / "sections.mnt")
+    await open_document(client, uri, text)
+    ranges = await client.text_document_folding_range_async(types.FoldingRangeParams(text_document=document(uri)))
+    assert (2, 4) in {(r.start_line, r.end_line) for r in ranges}
+    symbols = await client.text_document_document_symbol_async(types.DocumentSymbolParams(text_document=document(uri)))
+    init = next(symbol for symbol in symbols if symbol.name == "#init")
+    assert init.range.end == types.Position(line=5, character=0)
+
+
 async def test_workspace_symbols_span_open_documents(client, tmp_path):
     await open_document(client, uri_of(tmp_path / "xy.mnt"), XY)
     await open_document(client, uri_of(tmp_path / "menu.mnt"), corpus("ch03_l0815_main_menu_inkey.mnt"))

@@ -109,7 +109,9 @@ def build_controller(
 
     def raise_axis_error(axis: Axis) -> None:
         site = vm.current_site()
-        vm.record_error(AXIS_ERROR_PRESENT, site.line if site else 0, axis.number)
+        if not (events.is_pending(EventClass.ERROR) and 0 <= vm.erraxis < axis.number):
+            # several axes in error before #ONERROR runs (ABORT): ERRAXIS names the lowest-numbered
+            vm.record_error(AXIS_ERROR_PRESENT, site.line if site else 0, axis.number)
         if events.has_handler(EventClass.ERROR):
             events.raise_event(EventClass.ERROR)
             return

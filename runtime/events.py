@@ -114,6 +114,9 @@ class Events:
         self._pending[kind].add(number)
         self.pending |= self.dispatch.bits[kind]
 
+    def is_pending(self, kind: EventClass) -> bool:
+        return bool(self._pending[kind])
+
     def has_handler(self, kind: EventClass, number: int = 0) -> bool:
         return self._handler(kind, number) is not None
 

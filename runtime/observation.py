@@ -25,7 +25,7 @@ class AxisState:
 
 def axis_state(axis: Axis) -> AxisState:
     return AxisState(
-        pos=(axis.measured - axis.position_offset) / axis.scale,
+        pos=axis.position(axis.measured),
         vel=axis.velocity_counts() / axis.scale,
         folerror=(axis.demand - axis.measured) / axis.scale,
         axismode=axis.axismode,

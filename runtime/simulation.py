@@ -78,8 +78,10 @@ class Simulator:
             c.world.fast_inputs_due.clear()
         check = c.supervisor.check
         for axis in axes:
-            if axis.enabled or axis.guarded:  # a disabled axis still has its stop input checked
+            if axis.enabled or axis.guarded:  # a disabled axis still shows its inputs and has its stop input
                 check(axis, t)
+        if c.supervisor.stopping:
+            c.supervisor.at_rest()
         c.events.tick()
         if c.system.comms.external_writes_pending():
             for address in c.system.comms.take_external_writes():

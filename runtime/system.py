@@ -104,7 +104,7 @@ class System:
     def _fastpos(self, channel: int | None) -> float:
         number = self._axis(channel)
         axis = self.axes[number]
-        return (self.fast_positions[number] - axis.position_offset) / axis.scale
+        return axis.position(self.fast_positions[number])
 
     def latch_fast_input(self) -> bool:
         """A fast input fired: latch every axis unless the last latch is still being handled (EV-9 RC)."""

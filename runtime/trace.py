@@ -39,8 +39,8 @@ class Trace:
             axis = controller.axes[number]
             scale = axis.scale
             row += [
-                (axis.demand - axis.position_offset) / scale,
-                (axis.measured - axis.position_offset) / scale,
+                axis.position(axis.demand),
+                axis.position(axis.measured),
                 axis.velocity_counts() / scale,
                 (axis.demand - axis.measured) / scale,
                 float(axis.axismode),

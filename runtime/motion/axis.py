@@ -26,6 +26,8 @@ MD_OFFSET, MD_FOLLOW, MD_FLY, MD_CAM, MD_INCREMENT = 64, 128, 512, 1024, 16384
 ER_ABORT, ER_FWD_HARD, ER_REV_HARD, ER_FWD_SOFT, ER_REV_SOFT, ER_FOLLOWING = 1, 2, 4, 8, 16, 32
 ER_STOP_INPUT, ER_ERROR_INPUT = 64, 128
 
+POSITION_HALF_SPAN = float(1 << 23)  # the position counter wraps modulo 2^24 counts into [-2^23, 2^23) (MP-5 RC)
+NOISE = 1e-6  # counts: closed-form set-points are exact only to ~1e-9 counts; limit tests ignore less than this
 MOTION_IN_PROGRESS = 10
 MOTION_ERROR = 12
 DRIVE_NOT_ENABLED = 40
@@ -41,6 +43,11 @@ GUARDS = frozenset(
         "SCALE",
     }
 )
+
+
+def wrap(counts: float) -> float:
+    """A position in counts as the 24-bit position counter holds it (MP-5 RC)."""
+    return (counts + POSITION_HALF_SPAN) % (2.0 * POSITION_HALF_SPAN) - POSITION_HALF_SPAN
 
 
 @dataclass(frozen=True, slots=True)
@@ -129,6 +136,16 @@ class Axis:
     def busy(self) -> bool:
         return self.move is not None or bool(self.buffer) or bool(self.pending_mode)
 
+    def position(self, counts: float) -> float:
+        """POS of a physical count (measured, demand, target), in user units, as the wrapping counter reads it."""
+        return wrap(counts - self.position_offset) / self.scale
+
+    def absolute(self, counts: float) -> float:
+        """The physical count at which the counter reads ``counts`` in the period the axis will be in when
+        a move loaded now starts: an absolute move after a wrap moves by the difference from what POS reads."""
+        reference = self.reference() - self.position_offset
+        return counts + self.position_offset + reference - wrap(reference)
+
     @property
     def axismode(self) -> int:
         return self.move.mode if self.move is not None else self.pending_mode
@@ -138,8 +155,12 @@ class Axis:
         move = self.move
         if move is None:
             return self.hold
+        if tick == self.last_tick:
+            return self.demand  # already output: a move swapped in since then starts at the next profiler tick
         if tick % PROFILER_TICK_MS:
-            return (self._setpoint(move, tick - 1) + self._setpoint(move, tick + 1)) / 2.0
+            # the set-point output at tick - 1 may belong to the move a command has just replaced
+            before = self.demand if tick - 1 == self.last_tick else self._setpoint(move, tick - 1)
+            return (before + self._setpoint(move, tick + 1)) / 2.0
         return self._setpoint(move, tick)
 
     def _setpoint(self, move: Move, tick: int) -> float:
@@ -168,7 +189,7 @@ class Axis:
             return False
         p = self.parameters
         moved = abs(self.measured - self.previous_measured) / SERVO_TICK_S
-        return abs(self.demand - self.measured) <= p["IDLEPOS"] and moved <= p["IDLEVEL"]
+        return abs(self.demand - self.measured) - NOISE <= p["IDLEPOS"] and moved <= p["IDLEVEL"]
 
     def velocity_counts(self) -> float:
         return (self.measured - self.previous_measured) / SERVO_TICK_S
@@ -184,7 +205,7 @@ class Axis:
     def dormant(self) -> bool:
         """Disabled, still and on a plant that cannot move by itself: a tick would change nothing.
 
-        Its stop input still counts, so an axis with one is never dormant.
+        Its inputs and software limits still show in AXISSTATUS, so a guarded axis is never dormant.
         """
         return (
             not self.enabled
@@ -192,7 +213,7 @@ class Axis:
             and not self.buffer
             and not self.plant.closed_loop
             and self.measured == self.previous_measured
-            and self.parameters["STOPINPUT"] < 0
+            and not self.guarded
         )
 
     def watched_while_moving(self) -> bool:
@@ -316,6 +337,8 @@ class Axis:
                 self.dac = self.open_loop_dac
             else:
                 self.dac = self.torque if self.torque is not None and self.enabled else 0.0
+            if self.torque is not None:
+                self.track_measured()
         else:
             self.previous_measured = self.measured
             self.measured = plant.step(demand if servoing else None, self.dac, SERVO_TICK_S)
@@ -328,10 +351,17 @@ class Axis:
                 self.dac = 0.0
             elif self.torque is not None:
                 self.dac = self.torque
+                self.track_measured()
             else:
                 moved = self.measured - self.previous_measured
                 self.dac = self.servo.step(demand, velocity, acceleration, self.measured, moved)
         self.last_tick = tick
+
+    def track_measured(self) -> None:
+        """In TORQUE mode the position loop is not in control: the demand follows the axis, so there is
+        no following error and servoing resumes where the axis is when torque mode ends."""
+        self.hold = self.demand = self._last_demand = float(self.measured)
+        self._last_velocity = 0.0
 
     # ---------------------------------------------------------------- stopping
 
@@ -361,19 +391,24 @@ class Axis:
         self.triggered = 0
         self.held = False
         self.pending_mode = 0
-        self.torque = None
+        if self.torque is not None:
+            self.torque = None
+            self.servo.reset()  # the loop restarts from the position reached, with no history
         self.target = self.hold
 
     def resync(self) -> None:
-        """Demand := measured, so the following error is 0 (SL-10 RC)."""
+        """Demand := measured, so the following error is 0 (SL-10 RC) and AXISSTATUS stops showing one."""
         self.hold = float(self.measured)
         self.demand = self.hold
         self.target = self.hold
+        self.status &= ~ER_FOLLOWING
         self.servo.reset()
 
     def latch(self, bit: int) -> None:
         self.axiserror |= bit
 
     def disable(self) -> None:
+        """Drive off; a disabled axis has no following error, so AXISSTATUS stops showing one."""
         self.enabled = False
         self.dac = 0.0
+        self.status &= ~ER_FOLLOWING

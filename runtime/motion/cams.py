@@ -142,7 +142,7 @@ class CamMove:
         if not self.bits & ABSOLUTE:
             self.to_position = self.from_position + value
         elif self.bits & TRUE_ABSOLUTE:
-            self.to_position = value + self.axis.position_offset
+            self.to_position = self.axis.absolute(value)
         else:
             self.to_position = self.cycle_base + value
         return True

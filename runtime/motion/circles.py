@@ -47,7 +47,7 @@ def circle(motion: Motion, *, relative: bool) -> Callable[[Channels | None, Valu
         if relative:
             centre = (start[0] + c0 * axes[0].scale, start[1] + c1 * axes[1].scale)
         else:
-            centre = (c0 * axes[0].scale + axes[0].position_offset, c1 * axes[1].scale + axes[1].position_offset)
+            centre = (axes[0].absolute(c0 * axes[0].scale), axes[1].absolute(c1 * axes[1].scale))
         master = axes[0]
         segment = PathSegment(MD_CIRCULAR, (master, axes[1]), master.contour_mode, arc=Arc(centre, degrees))
         for axis, target in zip(axes, segment.shape(start).targets, strict=True):

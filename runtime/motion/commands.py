@@ -14,6 +14,8 @@ from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, per_channel
 from mintlang.runtime.motion.axis import (
     ER_ABORT,
+    MD_CIRCULAR,
+    MD_HOMING,
     MD_JOG,
     MD_LINEAR,
     MD_TORQUE,
@@ -107,7 +109,7 @@ class Motion:
                     self._watch_buffer(axis)
                 return True
             targets = [
-                axis.reference() + value * axis.scale if relative else value * axis.scale + axis.position_offset
+                axis.reference() + value * axis.scale if relative else axis.absolute(value * axis.scale)
                 for axis, value in pairs
             ]
             if interpolated:
@@ -199,13 +201,23 @@ class Motion:
         return False
 
     def torque(self, channels: Channels | None, values: Values) -> bool:
-        """TORQUE: the DAC at once, servo loop off, until a stop (SL-9)."""
-        for axis, value in self._pairs(channels, values):
+        """TORQUE: the DAC at once, servo loop off, until a stop (SL-9); it cannot blend from a
+        homing cycle, a vector or a circle [000:16865-16871]."""
+        pairs = self._pairs(channels, values)
+        for axis, _ in pairs:
             axis.require_ready()
-            if axis.move is not None and axis.move.mode != MD_TORQUE:
-                axis.crash_stop()
+            move = axis.move
+            homing = axis.pending_mode == MD_HOMING or (move is not None and move.mode == MD_HOMING)
+            if homing or (move is not None and (move.mode == MD_CIRCULAR or len(move.axes) > 1)):
+                raise MintError(MOTION_IN_PROGRESS, axis.number, "TORQUE cannot blend from this move")
+        for axis, value in pairs:
+            if axis.move is not None or axis.buffer:
+                self.crash_group(axis)
             axis.torque = value
             axis.pending_mode = MD_TORQUE
+            axis.track_measured()
+            if axis.open_loop_dac is None:
+                axis.dac = value  # the output changes at once, before the next servo tick
         return False
 
     # -------------------------------------------------------------- stopping
@@ -246,7 +258,7 @@ class Motion:
     def cancel(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         """CANCEL: crash stop, errors cleared, demand := measured; the drive stays as it is (EV-19)."""
         for axis in self.addressed(channels):
-            axis.crash_stop()
+            self.crash_group(axis)
             axis.axiserror = 0
             axis.resync()
         return False
@@ -254,7 +266,7 @@ class Motion:
     def reset(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         """RESET: CANCEL, then POS = 0 and the drive enabled (MP-21)."""
         for axis in self.addressed(channels):
-            axis.crash_stop()
+            self.crash_group(axis)
             axis.axiserror = 0
             axis.resync()
             axis.position_offset = float(axis.measured)
@@ -298,7 +310,7 @@ class Motion:
         table.register("ENCODER", read=self._encoder, write=per_channel(self._write_encoder))
         table.register("VEL", read=self._vel)
         table.register("FOLERROR", read=self._folerror)
-        table.register("DEMAND", read=lambda ch: self._watch(self.axis(ch), moving=True) or 0.0)
+        table.register("DEMAND", read=lambda ch: self._watch(self.axis(ch), moving=True).dac)  # v3's name for DAC
         table.register("AXISMODE", read=lambda ch: float(self._watch(self.axis(ch)).axismode))
         table.register("AXISERROR", read=lambda ch: float(self.axis(ch).axiserror))
         table.register("AXISSTATUS", read=lambda ch: float(self.axis(ch).status | self.axis(ch).axiserror))
@@ -395,12 +407,12 @@ class Motion:
             axis.resync() if axis.plant.closed_loop else None
         axis.enabled = bool(value)
         if not value:
-            axis.crash_stop()
+            self.crash_group(axis)
             axis.disable()
 
     def _pos(self, channel: int | None) -> float:
         axis = self._watch(self.axis(channel), moving=True)
-        return (axis.measured - axis.position_offset) / axis.scale
+        return axis.position(axis.measured)
 
     def _write_pos(self, channel: int | None, value: float) -> None:
         axis = self.axis(channel)
@@ -428,7 +440,7 @@ class Motion:
         axis = self.axis(channel)
         if axis.axismode == MD_JOG:
             return 0.0
-        return (axis.target - axis.position_offset) / axis.scale
+        return axis.position(axis.target)
 
     def _posremaining(self, channel: int | None) -> float:
         axis = self._watch(self.axis(channel), moving=True)

@@ -23,7 +23,7 @@ from enum import Enum
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
-from mintlang.runtime.motion.axis import MD_HOMING, MOTION_IN_PROGRESS, Axis
+from mintlang.runtime.motion.axis import MD_HOMING, MOTION_IN_PROGRESS, Axis, wrap
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.moves import Geometry, PlannedMove, completion_tick, next_profiler_tick
 from mintlang.runtime.motion.parameters import OUT_OF_RANGE
@@ -230,7 +230,7 @@ class HomingMove:
         """Crash stop on the count the transition was seen at; it becomes POS 0 (HM-3 RC, HM-6)."""
         axis = self.axis
         self.datum = float(axis.measured)
-        self.on_datum(self.datum - axis.position_offset)
+        self.on_datum(wrap(self.datum - axis.position_offset))
         axis.position_offset = self.datum
         axis.target = self.datum
         self.stage = Stage.DONE

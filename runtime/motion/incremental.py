@@ -93,7 +93,7 @@ def incremental(motion: Motion, *, relative: bool) -> Callable[[Channels | None,
                 base = axis.target if _running(axis) or _waiting(axis) else axis.reference()
                 target = base + value * axis.scale
             else:
-                target = value * axis.scale + axis.position_offset
+                target = axis.absolute(value * axis.scale)
             running = _running(axis)
             if running is not None:
                 running.retarget(target, tick)

@@ -19,7 +19,9 @@ from mintlang.runtime.motion.axis import (
     ER_REV_HARD,
     ER_REV_SOFT,
     ER_STOP_INPUT,
+    NOISE,
     Axis,
+    wrap,
 )
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.moves import next_profiler_tick
@@ -44,10 +46,18 @@ class Supervisor:
         self.is_active = motion.input_active  # digital input channel -> active now
         self.raise_error = raise_error  # #ONERROR pending (or the end of the run without a handler)
         self.stop_inputs = stop_inputs
+        self.stopping: list[Axis] = []  # ramping down at ERRORDECEL: #ONERROR waits until they are at rest
+
+    def at_rest(self) -> None:
+        """Make #ONERROR pending for error ramps that have ended (mode 3 calls it at rest, AX-13, AX-15)."""
+        for axis in [axis for axis in self.stopping if axis.move is None]:
+            self.stopping.remove(axis)
+            if axis.axiserror:
+                self.raise_error(axis)
 
     def check(self, axis: Axis, tick: int) -> None:
         p = axis.parameters
-        following = axis.enabled and abs(axis.demand - axis.measured) > p["FOLERRORFATAL"]
+        following = axis.enabled and abs(axis.demand - axis.measured) - NOISE > p["FOLERRORFATAL"]
         if not axis.guarded:  # no limit, error or stop input and default software limits: the common case
             axis.status = ER_FOLLOWING if following else 0
             if following and not axis.axiserror & ER_FOLLOWING:
@@ -56,17 +66,18 @@ class Supervisor:
         status = ER_FOLLOWING if following else 0
         forward = int(p["LIMITFORWARDINPUT"])
         reverse = int(p["LIMITREVERSEINPUT"])
-        position = axis.demand - axis.position_offset
-        beyond = position > p["SOFTLIMITFORWARD"] or position < p["SOFTLIMITREVERSE"]
-        if forward >= 0 or reverse >= 0 or beyond:
+        position = wrap(axis.demand - axis.position_offset)
+        forward_soft = position - NOISE > p["SOFTLIMITFORWARD"]
+        reverse_soft = position + NOISE < p["SOFTLIMITREVERSE"]
+        if forward >= 0 or reverse >= 0 or forward_soft or reverse_soft:
             velocity = axis.velocity_demand(tick)
             if forward >= 0 and self.is_active(forward) and velocity >= 0:
                 status |= ER_FWD_HARD
             if reverse >= 0 and self.is_active(reverse) and velocity <= 0:
                 status |= ER_REV_HARD
-            if position > p["SOFTLIMITFORWARD"] and velocity > 0:
+            if forward_soft and velocity > 0:
                 status |= ER_FWD_SOFT
-            if position < p["SOFTLIMITREVERSE"] and velocity < 0:
+            if reverse_soft and velocity < 0:
                 status |= ER_REV_SOFT
         error_input = int(p["ERRORINPUT"])
         if error_input >= 0 and self.is_active(error_input):
@@ -79,7 +90,7 @@ class Supervisor:
             self.stop_inputs.update(axis, active, tick)
         axis.status = status
         fresh = status & ~axis.axiserror & ~ER_STOP_INPUT
-        if not fresh:
+        if not fresh or not axis.enabled:  # a disabled axis shows its switches but latches nothing
             return
         bit = 1
         while fresh:
@@ -100,4 +111,10 @@ class Supervisor:
                 axis.disable()
         elif mode == ERROR_DECEL:
             self.motion.stop_group(axis, next_profiler_tick(tick), axis.parameters["ERRORDECEL"])
+            if axis.move is not None:
+                if axis not in self.stopping:
+                    self.stopping.append(axis)
+                return
+        if axis in self.stopping:
+            self.stopping.remove(axis)
         self.raise_error(axis)

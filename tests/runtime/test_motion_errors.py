@@ -131,3 +131,82 @@ def test_a_velocity_amplifier_plant_moves_at_k_counts_per_second_per_percent() -
     source = "REM @sim plant 0 velamp 1000\nKPROP.0 = 1\nMOVER.0 = 2000 : GO.0\nPAUSE IDLE.0\nWAIT = 300\n"
     result = simulate(source)
     assert abs(result.axes[0].pos - 2000) <= 2
+
+
+def test_error_decel_mode_calls_onerror_once_the_axis_is_at_rest() -> None:
+    # [000:13505-13506] LIMITMODE 3: the handler runs once the demanded speed is zero (AX-13)
+    source = """REM @sim input 1 1 at 300
+REM @sim input 1 0 at 320
+SPEED.0 = 1000 : ACCEL.0 = 10000 : DECEL.0 = 10000 : ERRORDECEL.0 = 2000
+LIMITFORWARDINPUT.0 = 1 : LIMITMODE.0 = 3
+MOVER.0 = 2000 : GO.0
+PAUSE AXISERROR.0
+PRINT "tripped ", TIME, " ", AXISMODE.0
+PAUSE TIME > 2000
+END
+#ONERROR
+PRINT "handler ", TIME, " ", AXISMODE.0, " ", VEL.0, " ", AXISERROR.0, " ", DRIVEENABLE.0
+CANCEL.0
+RETURN
+"""
+    # 1000 counts/s ramped down at 2000 counts/s² take 500 ms
+    assert simulate(source).terminal == "tripped 300 2\nhandler 802 0 0 2 1\n"
+
+
+def test_a_software_limit_trips_only_once_the_demand_is_past_it() -> None:
+    # AX-15 RC: POS > SOFTLIMITFORWARD; the profile's rounding noise at exactly 500 does not count
+    source = """SPEED.0 = 1000 : ACCEL.0 = 10000 : DECEL.0 = 10000
+SOFTLIMITFORWARD.0 = 500 : SOFTLIMITMODE.0 = 1
+MOVER.0 = 1000 : GO.0
+PAUSE IDLE.0
+END
+#ONERROR
+PRINT TIME, " ", POS.0, " ", AXISERROR.0
+CANCEL.0
+RETURN
+"""
+    assert simulate(source).terminal == "553 501 8\n"
+
+
+def test_axisstatus_of_a_disabled_axis_shows_its_switches_as_they_are() -> None:
+    # AX-6: AXISSTATUS is instantaneous; a disabled axis latches nothing (BEHAVIOUR, AX-5)
+    source = """REM @sim plant 0 stalled
+REM @sim input 1 1 at 1000
+REM @sim input 1 0 at 1100
+FOLERRORFATAL.0 = 100
+MOVER.0 = 1000 : GO.0
+PAUSE TIME = 500
+LIMITFORWARDINPUT.0 = 1
+PAUSE TIME = 1050
+PRINT AXISSTATUS.0, " ", AXISERROR.0, " ", LIMITFORWARD.0
+PAUSE TIME = 1150
+PRINT AXISSTATUS.0, " ", AXISERROR.0
+END
+#ONERROR
+CANCEL.0
+PRINT "cancelled ", AXISSTATUS.0, " ", DRIVEENABLE.0
+RETURN
+"""
+    assert simulate(source).terminal == "cancelled 0 0\n2 0 1\n0 0\n"
+
+
+def test_errraxis_after_abort_names_the_first_axis() -> None:
+    source = 'ABORT\nEND\n#ONERROR\nPRINT ERR, " ", ERRAXIS\nCANCELALL\nRETURN\n'
+    assert simulate(source).terminal == "500 0\n"
+
+
+def test_in_torque_mode_the_demand_follows_the_axis_and_stop_holds_where_it_is() -> None:
+    # [000:2740-2767]: TORQUE turns the position loop off (no following error, so the default
+    # FOLERRORFATAL does not trip); servoing restarts at the position the axis has reached
+    source = (
+        TUNED
+        + """TORQUE.0 = 2
+WAIT = 100
+PRINT FOLERROR.0, " ", AXISERROR.0
+DIM moved = POS.0
+STOP.0
+WAIT = 300
+PRINT AXISMODE.0, " ", ABS(POS.0 - moved) < 20, " ", POS.0 > 200
+"""
+    )
+    assert simulate(source, scenario=torque_plant()).terminal == "0 0\n0 1 1\n"

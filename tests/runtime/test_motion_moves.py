@@ -2,9 +2,14 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 
+import pytest
+
 from mintlang.runtime.interpreter.vm import StopReason
+from mintlang.runtime.run import run_source
+from mintlang.runtime.simulation import Limits
 from tests.runtime.running import simulate
 
 
@@ -153,3 +158,83 @@ PRINT POS.0
 """
     first_move_ends = 2 + 2 * math.ceil(trapezoid_ms(1000, 20000, 300000, 300000) / 2)
     assert simulate(source).terminal == f"third loaded at {first_move_ends} free 0\n3000\n"
+
+
+@pytest.mark.parametrize("command", ["CANCEL.0", "CANCEL.1", "RESET.0", "DRIVEENABLE.0 = 0"])
+def test_cancelling_or_disabling_one_axis_of_a_vector_stops_its_partner_too(command: str) -> None:
+    # MP-14: the axes of a vector share one path; BEHAVIOUR "Interpolated moves and stops"
+    source = f"""SPEED.0 = 1000 : ACCEL.0 = 10000 : DECEL.0 = 10000
+VECTORR[0,1] = 3000, 4000 : GO.1
+WAIT = 500
+{command}
+PRINT AXISMODE.0, " ", AXISMODE.1
+WAIT = 100
+PRINT VEL.0, " ", VEL.1
+"""
+    assert simulate(source).terminal == "0 0\n0 0\n"
+
+
+def demands(source: str) -> list[float]:
+    """The servo demand of axis 0 at every tick."""
+    points: list[float] = []
+    run_source(
+        source,
+        config="RESETALL\n",
+        controller="nextmove-bx",
+        limits=Limits(until_ms=60_000, every_tick=True),
+        on_tick=lambda c, tick: points.append(c.axes[0].demand),
+    )
+    return points
+
+
+@pytest.mark.parametrize("command", ["SPEED.0 = 10001", "DECEL.0 = 200000", "STOP.0"])
+def test_a_command_issued_on_an_even_tick_leaves_no_step_in_the_demand(command: str) -> None:
+    # T-6: the command acts at the next profiler tick; the tick between is the mean of the set-points
+    # either side, the one already output and the first of the new plan (the WAIT ends on tick 500)
+    source = f"SPEED.0 = 10000 : ACCEL.0 = 100000 : DECEL.0 = 100000\nJOG.0 = 10000\nWAIT = 500\n{command}\nWAIT = 50\n"
+    steps = [after - before for before, after in itertools.pairwise(demands(source)[495:510])]
+    assert steps[:6] == [10.0] * 6
+    assert max(steps) <= 10.0 + 1e-9 and min(steps) >= 0.0
+    simulate(source)
+
+
+def test_torque_cannot_blend_from_a_vector_a_circle_or_a_homing_cycle() -> None:
+    # [000:16865-16871]: error 10, and the move goes on
+    source = """VECTORR[0,1] = 10000, 10000 : GO.0
+WAIT = 10
+TORQUE.0 = 5
+PRINT AXISMODE.0, " ", AXISMODE.1
+CIRCLER[0,1] = 10, 0, 90 : GO.0
+TORQUE.1 = 5
+HOMEINPUT.2 = 5 : HOME.2 = 0
+TORQUE.2 = 5
+PRINT AXISMODE.2
+END
+#ONERROR
+PRINT "error ", ERR, " axis ", ERRAXIS
+RETURN
+"""
+    assert simulate(source).terminal == "error 10 axis 0\n2 2\nerror 10 axis 1\nerror 10 axis 2\n32\n"
+
+
+def test_torque_writes_the_dac_at_once() -> None:
+    # [000:16865-16867]: the DAC output changes as TORQUE is written
+    assert simulate('TORQUE.0 = 50 : PRINT DAC.0, " ", AXISMODE.0\n').terminal == "50 16\n"
+
+
+def test_demand_is_mint_v3s_name_for_the_dac() -> None:
+    assert simulate("TORQUE.0 = 25\nPRINT DEMAND.0\n").terminal == "25\n"
+
+
+def test_the_position_counter_wraps_past_8388607_and_absolute_moves_go_from_where_it_reads() -> None:
+    # [000:14617-14618], MP-5 RC: the counter wraps modulo 2^24 counts into [-8388608, 8388607]
+    source = """POS.0 = 8388000
+MOVER.0 = 1000 : GO.0
+PRINT POSTARGET.0
+PAUSE IDLE.0
+PRINT POS.0, " ", ENCODER.0
+MOVEA.0 = -8388000 : GO.0
+PAUSE IDLE.0
+PRINT POS.0, " ", ENCODER.0
+"""
+    assert simulate(source).terminal == "-8388216\n-8388216 1000\n-8388000 1216\n"

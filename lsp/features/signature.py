@@ -1,6 +1,16 @@
-"""Signature help: the manual's formats of the keyword whose operands the cursor is in."""
+"""Signature help: the manual's formats of the keyword whose operands the cursor is in.
+
+The parameters are read from each format itself: the comma-separated items in
+the brackets after a function's name, or after the ``=`` of a keyword written
+to (braces, the manual's optional parts, are trimmed off). A repeated last
+item (``{,<expression> ...}``) stays active for every further value. In an
+expression the read form (``v = ...``) comes first, at the start of a
+statement the written one.
+"""
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 from lsprotocol import types
 
@@ -14,10 +24,24 @@ from mintlang.syntax.vocabulary import vocabulary
 
 _STATEMENT_BREAKS = frozenset({TokenKind.COLON, TokenKind.THEN, TokenKind.DO, TokenKind.ELSE, TokenKind.LABEL})
 _KEYWORDS = frozenset({TokenKind.KEYWORD, TokenKind.FUNCTION, TokenKind.PRINT, TokenKind.INPUT, TokenKind.PAUSE})
+_FUNCTION = TokenKind.FUNCTION
+_TRIM = " {}"
 
 
-def _callee(tokens: list[Token]) -> tuple[Token, int] | None:
-    """The keyword the cursor's operands belong to, and the index of the operand under the cursor."""
+@dataclass(frozen=True, slots=True)
+class _Callee:
+    keyword: Token
+    operand: int  # index of the operand under the cursor
+    bracketed: bool  # the cursor is inside the brackets after a function's name
+    in_expression: bool
+
+
+def _starts_statement(tokens: list[Token], index: int) -> bool:
+    return index == 0 or tokens[index - 1].kind in _STATEMENT_BREAKS
+
+
+def _callee(tokens: list[Token]) -> _Callee | None:
+    """The keyword the cursor's operands belong to, and where the cursor is among them."""
     depth = commas = 0
     for index in range(len(tokens) - 1, -1, -1):
         token = tokens[index]
@@ -26,38 +50,78 @@ def _callee(tokens: list[Token]) -> tuple[Token, int] | None:
         if token.kind in (TokenKind.RPAR, TokenKind.RSQB):
             depth += 1
         elif token.kind in (TokenKind.LPAR, TokenKind.LSQB):
-            if (
-                depth == 0
-                and token.kind is TokenKind.LPAR
-                and index > 0
-                and tokens[index - 1].kind is TokenKind.FUNCTION
-            ):
-                return tokens[index - 1], commas
+            if depth == 0 and token.kind is TokenKind.LPAR and index > 0 and tokens[index - 1].kind is _FUNCTION:
+                return _Callee(tokens[index - 1], commas, True, not _starts_statement(tokens, index - 1))
             depth = max(0, depth - 1)
         elif token.kind is TokenKind.COMMA and depth == 0:
             commas += 1
-        elif token.kind in _KEYWORDS and depth == 0 and (index == 0 or tokens[index - 1].kind in _STATEMENT_BREAKS):
-            return token, commas
+        elif token.kind in _KEYWORDS and depth == 0 and _starts_statement(tokens, index):
+            return _Callee(token, commas, False, False)
     return None
 
 
-def _signature(word: Keyword, text: str) -> types.SignatureInformation:
-    parameters = [types.ParameterInformation(label=name) for name in word.parameters if name in text]
-    return types.SignatureInformation(label=text, documentation=word.summary or None, parameters=parameters or None)
+def _items(label: str, start: int, end: int) -> list[tuple[int, int]]:
+    """Offsets of the comma-separated items of ``label[start:end]``, spaces and braces trimmed."""
+    items = []
+    for piece in label[start:end].split(","):
+        first, last = start, start + len(piece)
+        while first < last and label[first] in _TRIM:
+            first += 1
+        while last > first and label[last - 1] in _TRIM:
+            last -= 1
+        if first < last:
+            items.append((first, last))
+        start += len(piece) + 1
+    return items
+
+
+def _parameters(label: str, name: str, bracketed: bool) -> list[tuple[int, int]]:
+    """The operands of one format: inside the brackets after ``name``, after its ``=``, or after the
+    name of a statement (PRINT, PAUSE)."""
+    at = label.upper().find(name)
+    if at < 0:
+        return []
+    after = at + len(name)
+    if bracketed:
+        opening = label.find("(", after)
+        closing = label.rfind(")")
+        return _items(label, opening + 1, closing) if 0 <= opening < closing else []
+    equals = label.find("=", after)
+    if equals >= 0:
+        return _items(label, equals + 1, len(label))
+    if label[after : after + 1] == "[":  # a command's axes: GO[axes]
+        after = label.find("]", after) + 1
+    return _items(label, after, len(label))
+
+
+def _signature(word: Keyword, label: str, callee: _Callee) -> types.SignatureInformation:
+    parameters = _parameters(label, word.name, callee.bracketed)
+    active = callee.operand
+    if parameters and active >= len(parameters) and "..." in label[slice(*parameters[-1])]:
+        active = len(parameters) - 1  # a repeated last operand
+    return types.SignatureInformation(
+        label=label,
+        documentation=word.summary or None,
+        parameters=[types.ParameterInformation(label=item) for item in parameters] or None,
+        active_parameter=active if parameters else None,
+    )
 
 
 def signature_help(prefix: str, dialect: Dialect) -> types.SignatureHelp | None:
     """The formats of the keyword whose operands end ``prefix`` (the cursor's line so far)."""
-    found = _callee(significant(prefix_tokens(prefix, dialect)))
-    if found is None:
+    callee = _callee(significant(prefix_tokens(prefix, dialect)))
+    if callee is None:
         return None
-    token, operand = found
-    name = vocabulary(dialect).keyword_name(token.text)
-    word = database().lookup(name or token.text)
-    if word is None or not word.formats:
+    name = vocabulary(dialect).keyword_name(callee.keyword.text)
+    word = database().lookup(name or callee.keyword.text)
+    formats = [label for label in word.formats if word.name in label.upper()] if word is not None else []
+    if word is None or not formats:
         return None
-    signatures = [_signature(word, text) for text in word.formats]
-    return types.SignatureHelp(signatures=signatures, active_signature=0, active_parameter=operand)
+    formats.sort(key=lambda label: label.startswith("v =") != callee.in_expression)  # the form in use first
+    signatures = [_signature(word, label, callee) for label in formats]
+    return types.SignatureHelp(
+        signatures=signatures, active_signature=0, active_parameter=signatures[0].active_parameter
+    )
 
 
 def register(server: MintServer) -> None:

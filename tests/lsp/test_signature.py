@@ -39,3 +39,31 @@ async def test_nothing_outside_keywords(client, tmp_path):
     uri = uri_of(tmp_path / "plain.mnt")
     await open_document(client, uri, text)
     assert await help_at(client, uri, text, "1\n") is None
+
+
+async def active(client, uri, text, needle, shift=0) -> tuple[str, str | None]:
+    """The first signature's label and the text of its active parameter."""
+    found = await help_at(client, uri, text, needle, shift)
+    signature = found.signatures[0]
+    if signature.parameters is None or found.active_parameter is None:
+        return signature.label, None
+    start, end = signature.parameters[found.active_parameter].label
+    return signature.label, signature.label[start:end]
+
+
+@pytest.mark.parametrize(
+    ("line", "label", "parameter"),
+    [
+        ("CAMTABLE(0, arr, ", "CAMTABLE ( axis, position array, {master increment array} )", "master increment array"),
+        ("COMMS(1, ", "COMMS( {node, } element) = <expression>", "element"),
+        ("a = COMMS(1, ", "v = COMMS( {node, } element)", "element"),
+        ("MOVEA.0 = 1, 2, ", "MOVEA[axes] = <expression> {,<expression ...}", "<expression ..."),
+        ("CIRCLEA[0,1] = 1, 2, ", "CIRCLEA[axis0,axis1] = <centre0>,<centre1>,<angle>", "<angle>"),
+        ("PAUSE ", "PAUSE <condition>", "<condition>"),
+    ],
+)
+async def test_the_operand_under_the_cursor_is_highlighted_in_the_form_in_use(client, tmp_path, line, label, parameter):
+    text = f"DIM a\nDIM arr(3)\n{line}\n"
+    uri = uri_of(tmp_path / "operands.mnt")
+    await open_document(client, uri, text)
+    assert await active(client, uri, text, line, len(line)) == (label, parameter)

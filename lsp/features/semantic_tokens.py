@@ -1,7 +1,7 @@
 """Semantic tokens from the core's lexer: the editor colours what the compiler sees.
 
-User names are told apart by the symbol table: macros, labels and arrays get
-their own types, so a keyword abbreviation and a variable never look alike.
+User names are told apart by the symbol table: macros and labels get their
+own types, so a keyword abbreviation and a variable never look alike.
 Clients that ask for deltas get only what changed since their last result:
 the encoding is relative, so typing on one line changes a few integers of
 tens of thousands.

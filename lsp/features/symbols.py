@@ -83,8 +83,8 @@ def _document_symbols(snapshot: Snapshot) -> Iterator[types.DocumentSymbol]:
         )
     table = snapshot.model.symbols
     for symbol in (*table.variables.values(), *table.macros.values()):
-        definition = symbol.definition
-        if definition is not None and definition.unit is snapshot.unit:
+        definition = next((place for place in symbol.definitions if place.unit is snapshot.unit), None)
+        if definition is not None:  # this file's own declaration, even when the other file has one too
             yield types.DocumentSymbol(
                 name=symbol.name,
                 kind=_KINDS[symbol.kind],

@@ -223,6 +223,13 @@ def test_v3_lookups(db: KeywordDatabase) -> None:
     assert in3 is not None and in3.name == "IN3" and in3.v4_names == ("IN",)
 
 
+def test_a_range_printed_on_two_lines_keeps_them_apart(db: KeywordDatabase) -> None:
+    # 000:11961-11962: IN reads the whole word (0 ≤ x ≤ 1048575 on NextMove PCI) or one channel (0 or 1)
+    row = db.keywords["IN"].attributes_for(Controller.NEXTMOVE_PCI)
+    assert row is not None and row.range is not None
+    assert row.range.text == "0 ≤ x ≤ 1048575; one channel: 0 or 1"
+
+
 def test_v3_constants(db: KeywordDatabase) -> None:
     posindex = db.v3_constants["_POSINDEX"]  # v3:1333
     assert posindex.value == 3 and posindex.v4_name == "_hmPOSITIVE_SWITCH_INDEX"

@@ -144,10 +144,15 @@ def _number(text: str) -> float:
     return float(f"{whole.replace('.', '')}.{fraction}" if whole else fraction)
 
 
+_CHANNEL_RANGE = re.compile(r"(\d) (0 or 1)$")
+
+
 def parse_range(text: str) -> ValueRange:
     """Numbers where the manual prints an interval or a list of numbers; else text only."""
     fractional = re.search(r"\d\.\d", text) is not None
     compact = re.sub(r"\s+", " ", text.strip())
+    # IN, OUT: the range of the whole word, then on its own line that of one channel ("0 or 1").
+    compact = _CHANNEL_RANGE.sub(r"\1; one channel: \2", compact)
     bounds: tuple[float, float] | None = None
     if match := _INTERVAL.match(compact) or _SPAN.match(compact):
         bounds = _number(match["min"]), _number(match["max"])

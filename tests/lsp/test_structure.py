@@ -105,3 +105,11 @@ async def test_semantic_tokens_of_a_range_are_those_of_its_lines(client, tmp_pat
     first_line = data[0]  # relative to the start of the document: the range starts on line 1
     kinds = [TOKEN_TYPES[data[index + 3]] for index in range(0, len(data), 5)]
     assert (first_line, kinds) == (1, ["variable", "number"])  # "a = 1" only
+
+
+async def test_the_outline_lists_a_files_own_declaration_when_the_other_file_has_one_too(client, tmp_path):
+    (tmp_path / "cell.cfg").write_text("DIM shared\n", encoding="utf-8")
+    uri = uri_of(tmp_path / "cell.mnt")
+    await open_document(client, uri, "DIM shared\nDIM own\n")
+    symbols = await client.text_document_document_symbol_async(types.DocumentSymbolParams(text_document=document(uri)))
+    assert [s.name for s in symbols] == ["shared", "own"]

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import logging
+import sys
 
 import click
 
@@ -16,13 +17,22 @@ from mintlang.lsp import __version__
 @click.version_option(__version__, prog_name="mint-lsp")
 def main(port: int | None, log_level: str, log_file: str | None) -> None:
     """The Mint language server: diagnostics, hover, completion, navigation and formatting for Mint programs."""
-    logging.basicConfig(
-        filename=log_file, level=log_level.upper(), format="%(asctime)s mint-lsp %(levelname)s %(name)s: %(message)s"
-    )
+    try:
+        logging.basicConfig(
+            filename=log_file,
+            level=log_level.upper(),
+            format="%(asctime)s mint-lsp %(levelname)s %(name)s: %(message)s",
+        )
+    except OSError as error:
+        raise click.BadParameter(f"cannot write {log_file}: {error.strerror}", param_hint="--log-file") from None
     from mintlang.lsp.server import create_server  # noqa: PLC0415  (--help stays fast)
 
     server = create_server()
     if port is None:
         server.start_io()
-    else:
+        return
+    try:
         server.start_tcp("127.0.0.1", port)
+    except OSError as error:
+        click.echo(f"mint-lsp: cannot listen on 127.0.0.1:{port}: {error.strerror}", err=True)
+        sys.exit(2)

@@ -28,6 +28,11 @@ OWN_CODES: dict[str, str] = {
 }
 
 
+def known_codes() -> frozenset[str]:
+    """Every code a diagnostic can carry: ``E<n>`` for the manual's errors, and the toolchain's own."""
+    return frozenset(f"E{number}" for number in database().errors) | OWN_CODES.keys()
+
+
 def mint_error(
     code: int,
     span: Span,

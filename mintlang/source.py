@@ -8,6 +8,8 @@ bytes, so tools that rewrite a file never change what they did not mean to.
 
 from __future__ import annotations
 
+import errno
+import stat
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -38,6 +40,11 @@ def decode(data: bytes) -> tuple[str, str]:
 
 
 def read_source(path: Path) -> SourceFile:
-    """Read a source file; raises OSError when it cannot be read."""
+    """Read a source file; raises OSError when it cannot be read or is not a regular file.
+
+    A pipe would block a check forever and a device such as /dev/zero never ends.
+    """
+    if not stat.S_ISREG(path.stat().st_mode):
+        raise OSError(errno.EINVAL, "not a regular file", str(path))
     text, encoding = decode(path.read_bytes())
     return SourceFile(path, text, encoding)

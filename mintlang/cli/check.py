@@ -16,6 +16,7 @@ from mintlang import check_application
 from mintlang.cli.files import collect, is_configuration
 from mintlang.cli.options import controller_option
 from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, render_text
+from mintlang.codes import known_codes
 from mintlang.diagnostics import Severity
 from mintlang.dialect import Dialect
 from mintlang.source import SourceFile, read_source
@@ -23,10 +24,18 @@ from mintlang.source import SourceFile, read_source
 _USAGE_ERROR = 2
 
 
-def _codes(value: str | None) -> tuple[str, ...] | None:
+def _codes(value: str | None, option: str) -> tuple[str, ...] | None:
+    """The codes or prefixes of ``--select``/``--ignore``; a typo would silently hide findings, so none passes."""
     if value is None:
         return None
-    return tuple(code.strip().upper() for code in value.split(",") if code.strip())
+    codes = tuple(code.strip().upper() for code in value.split(",") if code.strip())
+    if not codes:
+        raise click.BadParameter("give at least one code or prefix (E2, W103 ...)", param_hint=option)
+    known = known_codes()
+    for code in codes:
+        if not any(name.startswith(code) for name in known):
+            raise click.BadParameter(f"'{code}' is no code and begins none (E2003, W1, I201 ...)", param_hint=option)
+    return codes
 
 
 def _fail(message: str) -> None:
@@ -63,6 +72,12 @@ def check(
     ignore: str | None,
 ) -> None:
     """Check Mint programs (.mnt; directories are searched) for the controller's errors and more."""
+    options: dict[str, object] = {
+        "dialect": dialect,
+        "controller": controller,
+        "select": _codes(select, "--select"),
+        "ignore": _codes(ignore, "--ignore") or (),
+    }
     try:
         files = collect(paths)
         configuration = read_source(config_path) if config_path is not None else None
@@ -75,12 +90,6 @@ def check(
     if not files:
         _fail("no .mnt files found in " + ", ".join(str(p) for p in paths))
 
-    options: dict[str, object] = {
-        "dialect": dialect,
-        "controller": controller,
-        "select": _codes(select),
-        "ignore": _codes(ignore) or (),
-    }
     reports: list[FileReport] = []
     if configuration is not None:
         reports.append(_configuration_report(configuration, options))

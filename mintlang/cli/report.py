@@ -6,6 +6,7 @@ import json
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from rich.cells import cell_len
 from rich.console import Console
 from rich.markup import escape
 
@@ -34,6 +35,24 @@ class FileReport:
 
 
 _STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.INFO: "bold cyan"}
+_CONTEXT = 60  # characters shown either side of the marked text on a long line (and twice that marked)
+# Control characters of the source are shown as their pictures (one cell each), never sent to the terminal.
+_VISIBLE = {code: chr(0x2400 + code) for code in range(0x20)} | {0x7F: "\u2421", ord("\t"): " "}
+
+
+def _frame(text: str, start: int, end: int) -> tuple[str, int, int]:
+    """The part of a source line to show, and the cells before and under the marked characters.
+
+    Columns are characters; the terminal counts cells (CJK and emoji take two), so
+    the caret is placed by cell width. A long line is cut to the marked text and
+    some context either side.
+    """
+    end = min(end, start + 2 * _CONTEXT)  # a long marked stretch is cut too
+    first, last = max(0, start - _CONTEXT), min(len(text), end + _CONTEXT)
+    head, tail = ("…" if first > 0 else ""), ("…" if last < len(text) else "")
+    visible = text[first:last].translate(_VISIBLE)
+    before = head + visible[: start - first]
+    return head + visible + tail, cell_len(before), cell_len(visible[start - first : end - first])
 
 
 def render_text(reports: Sequence[FileReport], console: Console) -> None:
@@ -48,10 +67,11 @@ def render_text(reports: Sequence[FileReport], console: Console) -> None:
             console.print(f"  [blue]-->[/] {escape(report.path)}:{line}:{column}")
             text = lines[line - 1] if 0 < line <= len(lines) else ""
             gutter = " " * len(str(line))
-            width = max(1, (end_column if end_line == line else len(text) + 1) - column)
+            end = end_column if end_line == line else len(text) + 1
+            shown, before, marked = _frame(text, column - 1, max(column, end) - 1)
             console.print(f"  {gutter} [blue]|[/]")
-            console.print(f"  [blue]{line} |[/] {escape(text.expandtabs(1))}", highlight=False)
-            console.print(f"  {gutter} [blue]|[/] {' ' * (column - 1)}[{style}]{'^' * width}[/]")
+            console.print(f"  [blue]{line} |[/] {escape(shown)}", highlight=False)
+            console.print(f"  {gutter} [blue]|[/] {' ' * before}[{style}]{'^' * max(1, marked)}[/]")
             for fix in diagnostic.fixes:
                 console.print(f"  {gutter} [blue]=[/] fix: {escape(fix.title)}")
             console.print()

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 import pytest
@@ -246,3 +247,57 @@ def test_a_cp1252_file_is_read_without_error(tmp_path: Path) -> None:
 def test_every_format_exits_with_1_for_an_error(tmp_path: Path, output_format: str) -> None:
     path = write(tmp_path, "bad.mnt", UNDECLARED)
     assert mint_check("--format", output_format, path).exit_code == 1
+
+
+# ----------------------------------------------------------- paths that fail
+
+
+def test_a_link_loop_and_a_path_under_a_file_say_what_is_wrong(tmp_path: Path) -> None:
+    loop = tmp_path / "loop.mnt"
+    loop.symlink_to(loop)
+    assert mint_check(loop).stderr.strip() == f"mint check: cannot read {loop}: Too many levels of symbolic links"
+    under = write(tmp_path, "clean.mnt", CLEAN) / "x.mnt"
+    assert mint_check(under).stderr.strip() == f"mint check: cannot read {under}: Not a directory"
+
+
+def test_a_dangling_link_below_a_directory_is_reported_not_skipped(tmp_path: Path) -> None:
+    write(tmp_path, "clean.mnt", CLEAN)
+    (tmp_path / "gone.mnt").symlink_to(tmp_path / "nowhere.mnt")
+    result = mint_check(tmp_path)
+    assert result.exit_code == 2 and "gone.mnt" in result.stderr
+
+
+def test_a_pipe_is_refused_instead_of_waited_on(tmp_path: Path) -> None:
+    fifo = tmp_path / "pipe.mnt"
+    os.mkfifo(fifo)
+    result = mint_check(fifo)
+    assert (result.exit_code, result.stderr.strip()) == (2, f"mint check: cannot read {fifo}: not a regular file")
+
+
+@pytest.mark.parametrize(("option", "value"), [("--select", ""), ("--select", "E30001"), ("--ignore", "W9")])
+def test_a_code_that_matches_nothing_is_a_usage_error(tmp_path: Path, option: str, value: str) -> None:
+    result = mint_check(option, value, write(tmp_path, "bad.mnt", UNDECLARED))
+    assert result.exit_code == 2 and option in result.stderr
+
+
+# ------------------------------------------------------------ the code frame
+
+
+def test_control_characters_of_the_source_never_reach_the_terminal(tmp_path: Path) -> None:
+    result = mint_check(write(tmp_path, "escape.mnt", 'PRINT "\x1b]0;title\x07" b\n'))
+    assert "\x1b" not in result.stdout and "\x07" not in result.stdout
+    assert "\u241b]0;title\u2407" in result.stdout
+
+
+def test_the_caret_counts_the_cells_of_wide_characters(tmp_path: Path) -> None:
+    result = mint_check(write(tmp_path, "wide.mnt", 'PRINT "日本語" c\n'))
+    source_line, caret_line = [line for line in result.stdout.splitlines() if "|" in line][1:3]
+    cells_before_c = len('  1 | PRINT "') + 6 + len('" ')
+    assert caret_line.index("^") == cells_before_c
+    assert source_line.endswith("c")
+
+
+def test_a_long_line_is_shown_around_the_marked_text(tmp_path: Path) -> None:
+    result = mint_check(write(tmp_path, "long.mnt", "DIM a\na = " + "1+" * 5000 + "1 : PRINT a\n"))
+    assert max(len(line) for line in result.stdout.splitlines()) < 400
+    assert "…" in result.stdout

@@ -49,3 +49,21 @@ def test_tcp_session_on_localhost():
     finally:
         server.kill()
         server.wait(timeout=10)
+
+
+def test_a_log_file_that_cannot_be_written_is_a_usage_error(tmp_path):
+    missing = tmp_path / "no" / "such" / "server.log"
+    result = subprocess.run([*SERVER, "--log-file", str(missing)], capture_output=True, text=True, timeout=30)
+    assert result.returncode == 2
+    assert "cannot write" in result.stderr and "Traceback" not in result.stderr
+
+
+def test_a_port_in_use_is_said_in_one_line():
+    with socket.socket() as taken:
+        taken.bind(("127.0.0.1", 0))
+        taken.listen()
+        port = taken.getsockname()[1]
+        result = subprocess.run([*SERVER, "--tcp", str(port)], capture_output=True, text=True, timeout=30)
+    assert result.returncode == 2
+    assert result.stderr.startswith(f"mint-lsp: cannot listen on 127.0.0.1:{port}")
+    assert "Traceback" not in result.stderr

@@ -16,6 +16,7 @@ from pathlib import Path
 import click
 from rich.console import Console
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+from rich.text import Text
 
 from mintlang.cli.options import controller_option
 from mintlang.keyworddb.model import Controller as ControllerName
@@ -221,11 +222,16 @@ def _outputs(result: RunResult, trace: Trace | None, trace_path: Path | None, pl
 
 
 def _describe_stop(result: RunResult, console: Console) -> None:
+    """The stop line; the statement and message are the program's text, so they are never read as markup."""
     stop = result.stop
-    where = f" at {stop.unit} line {stop.line}: {stop.statement}" if stop.line is not None else ""
-    message = f" — {stop.message}" if stop.message else ""
     style = "green" if stop.reason in (StopReason.END, StopReason.UNTIL) else "bold red"
-    console.print(f"[{style}]{stop.reason.value}[/] after {stop.time_ms} ms{where}{message}", highlight=False)
+    line = Text(stop.reason.value, style=style)
+    line.append(f" after {stop.time_ms} ms")
+    if stop.line is not None:
+        line.append(f" at {stop.unit} line {stop.line}: {stop.statement}")
+    if stop.message:
+        line.append(f" — {stop.message}")
+    console.print(line, highlight=False)
 
 
 def main() -> None:

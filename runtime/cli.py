@@ -4,7 +4,7 @@ Terminal output goes to stdout as the controller prints it; what stopped the
 run goes to stderr. Exit status: 0 when the program ended (or reached
 ``--until-ms``), 1 when it stopped on an error, a deadlock or the wall-clock
 limit, or when an expectation failed; 2 for a usage or I/O problem. With
-``--expect`` the expectations alone decide 0 or 1.
+``--expect`` the expectations decide 0 or 1 (``expectations_pass``).
 """
 
 from __future__ import annotations
@@ -27,6 +27,7 @@ from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import (
     ScenarioFileError,
     all_held,
+    expectations_pass,
     load_scenario,
     merge,
     render_outcomes,
@@ -162,7 +163,11 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
             click.echo()
         click.echo(json.dumps(as_json(result), indent=2))
     if expect_paths:
-        sys.exit(0 if all_held(result.outcomes) else _FAILED)
+        if not result.outcomes:
+            click.echo(
+                "mint-run: no expectations to check: --expect needs [[expect]] entries or REM @expect lines", err=True
+            )
+        sys.exit(0 if expectations_pass(result.outcomes, result.stop.reason.value) else _FAILED)
     normal = result.stop.reason in (StopReason.END, StopReason.UNTIL)
     sys.exit(0 if normal and all_held(result.outcomes) else _FAILED)
 

@@ -19,6 +19,7 @@ from mintlang.runtime.scenario.expectations import (
     all_held,
     evaluate,
     expectations_at,
+    expectations_pass,
     render_outcomes,
 )
 from mintlang.runtime.scenario.files import load_scenario
@@ -60,6 +61,7 @@ __all__ = [
     "all_held",
     "evaluate",
     "expectations_at",
+    "expectations_pass",
     "load_scenario",
     "merge",
     "parse_directives",

@@ -7,7 +7,7 @@ the run is made and the simulator nothing about how expectations are written.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from enum import StrEnum
 from typing import TYPE_CHECKING, Protocol
@@ -23,6 +23,8 @@ if TYPE_CHECKING:
 
 STOP_REASONS = ("end", "error", "until", "deadlock", "wall-limit")
 """Why a run stops: the program ended, an error ended it, ``--until`` ran out, W-4 deadlock, the wall-clock limit."""
+NORMAL_STOPS = ("end", "until")
+"""The stops of a run that went as planned; the others fail ``--expect`` unless a ``stopped`` expectation names them."""
 
 
 class Comparison(StrEnum):
@@ -169,6 +171,11 @@ def evaluate(expectation: Expectation, observe: Observer) -> Outcome:
             return Outcome(expectation, observe.stopped == reason, observe.stopped, "")
 
 
+def not_reached(expectation: Expectation, stopped_ms: int) -> Outcome:
+    """The verdict on a timed expectation the run stopped before: not held, since nothing was checked."""
+    return Outcome(expectation, False, "not checked", f"the run stopped at {stopped_ms} ms, before this check")
+
+
 def _evaluate_value(expectation: ValueExpectation, observe: Observer) -> Outcome:
     target = expectation.target
     names = [target.on_axis(axis) for axis in observe.axes] if target.every_axis else [target.text]
@@ -210,6 +217,16 @@ def expectations_at(scenario: Scenario) -> tuple[int, ...]:
 
 def all_held(outcomes: Iterable[Outcome]) -> bool:
     return all(outcome.held for outcome in outcomes)
+
+
+def expectations_pass(outcomes: Sequence[Outcome], stopped: str) -> bool:
+    """The verdict of ``--expect``: some expectations, all held, and a normal stop unless one says how it stops.
+
+    A run that crashed, deadlocked or ran out of wall time passes only when a
+    ``stopped`` expectation asked for exactly that; no expectations is no pass.
+    """
+    chosen = any(isinstance(outcome.expectation, StoppedExpectation) for outcome in outcomes)
+    return bool(outcomes) and all_held(outcomes) and (chosen or stopped in NORMAL_STOPS)
 
 
 def render_outcomes(outcomes: Iterable[Outcome], console: Console) -> None:

@@ -1,9 +1,10 @@
-"""Expectations observe a run without changing it."""
+"""Expectations observe a run without changing it, and none goes unchecked."""
 
 from __future__ import annotations
 
 from mintlang.runtime.run import run_source
 from mintlang.runtime.scenario import parse_directives
+from mintlang.runtime.simulation import Limits
 
 
 def test_expecting_an_edge_input_or_a_key_mid_run_leaves_them_to_the_program() -> None:
@@ -20,3 +21,18 @@ PRINT IN.2, " ", INKEY
     result = run_source(source, controller="nextmove-bx")
     assert result.terminal == "1 65\n"
     assert all(outcome.held for outcome in result.outcomes)
+
+
+def test_an_expectation_timed_after_the_run_stopped_fails_and_says_why() -> None:
+    source = 'REM @expect terminal contains "late" at 1000\nREM @expect TIME >= 0 at 5\nWAIT = 30\nPRINT "early"\n'
+    result = run_source(source, controller="nextmove-bx")
+    late, early = sorted(result.outcomes, key=lambda outcome: outcome.expectation.at_ms or 0, reverse=True)
+    assert early.held
+    assert not late.held
+    assert late.detail == "the run stopped at 30 ms, before this check"
+
+
+def test_an_expectation_after_until_ms_is_not_reached_either() -> None:
+    result = run_source("REM @expect POS.0 = 0 at 500\nLOOP\nENDL\n", limits=Limits(until_ms=10))
+    (outcome,) = result.outcomes
+    assert not outcome.held and "stopped at 10 ms" in outcome.detail

@@ -31,3 +31,33 @@ def test_a_compile_error_quoting_markup_keeps_its_line(tmp_path: Path) -> None:
     result = mint_run(write(tmp_path, "markup.mnt", 'DIM x\nPRINT x "[/b]"\n'))
     assert result.exit_code == 1
     assert '"[/b]"' in result.stderr and "[line 2]" in result.stderr
+
+
+def test_expect_fails_when_the_run_stops_before_a_timed_expectation(tmp_path: Path) -> None:
+    program = write(tmp_path, "short.mnt", "WAIT = 30\n")
+    late = write(tmp_path, "late.toml", '[[expect]]\nterminal_contains = "never"\nat_ms = 1000\n')
+    result = mint_run(program, "--expect", late)
+    assert result.exit_code == 1
+    assert "not checked" in result.stderr
+
+
+def test_expect_with_no_expectations_is_not_a_pass(tmp_path: Path) -> None:
+    program = write(tmp_path, "fine.mnt", "PRINT 1\n")
+    stimulus_only = write(tmp_path, "stimulus.toml", "[[input]]\nchannel = 1\nlevel = 1\nat_ms = 5\n")
+    result = mint_run(program, "--expect", stimulus_only)
+    assert result.exit_code == 1
+    assert "no expectations to check" in result.stderr
+
+
+def test_expect_fails_a_run_that_stops_on_an_error_even_when_its_expectations_held(tmp_path: Path) -> None:
+    program = write(tmp_path, "crash.mnt", "DIM x = 0\nPRINT 1 / x\n")
+    held = write(tmp_path, "held.toml", '[[expect]]\nwhat = "x"\nequals = 0\n')
+    result = mint_run(program, "--expect", held)
+    assert result.exit_code == 1
+    assert "All 1 expectations held" in result.stderr and "R2021" in result.stderr
+
+
+def test_expect_passes_an_error_that_a_stopped_expectation_asks_for(tmp_path: Path) -> None:
+    program = write(tmp_path, "crash.mnt", "DIM x = 0\nPRINT 1 / x\n")
+    crash = write(tmp_path, "crash.toml", '[[expect]]\nstopped = "error"\n')
+    assert mint_run(program, "--expect", crash).exit_code == 0

@@ -10,6 +10,7 @@ limit, or when an expectation failed; 2 for a usage or I/O problem. With
 from __future__ import annotations
 
 import json
+import math
 import sys
 from pathlib import Path
 
@@ -19,6 +20,7 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
 from mintlang.cli.options import controller_option
+from mintlang.controllers import ControllerProfile, profile
 from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.interpreter.vm import StopReason
@@ -39,16 +41,31 @@ from mintlang.source import read_source
 
 _USAGE_ERROR = 2
 _FAILED = 1
+_TRACE_AXES = "'--trace-axes'"
 _PROGRESS_STEP_MS = 100  # simulated time between updates of the progress bar
 
 
-def _axes_list(text: str | None) -> tuple[int, ...] | None:
+def _axes_list(text: str | None, controller: ControllerProfile) -> tuple[int, ...] | None:
+    """The axes ``--trace-axes`` names, each one the controller has, once."""
     if text is None:
         return None
     try:
-        return tuple(int(part) for part in text.split(",") if part.strip())
+        axes = tuple(int(part) for part in text.split(",") if part.strip())
     except ValueError:
-        raise click.BadParameter("a comma-separated list of axis numbers, e.g. 0,1") from None
+        raise click.BadParameter("a comma-separated list of axis numbers, e.g. 0,1", param_hint=_TRACE_AXES) from None
+    for axis in axes:
+        if axis not in controller.axes:
+            message = f"axis {axis}: the {controller.title} has axes {controller.axes}"
+            raise click.BadParameter(message, param_hint=_TRACE_AXES)
+    if len(set(axes)) != len(axes):
+        raise click.BadParameter(f"{text!r} names an axis twice", param_hint=_TRACE_AXES)
+    return axes
+
+
+def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float) -> float:
+    if math.isnan(seconds):  # a limit no elapsed time exceeds: the run would never stop
+        raise click.BadParameter("give a number of seconds, or inf for no limit")
+    return seconds
 
 
 @click.command()
@@ -75,9 +92,10 @@ def _axes_list(text: str | None) -> tuple[int, ...] | None:
 @click.option(
     "--max-wall-s",
     type=click.FloatRange(min=0),
+    callback=_no_nan,
     default=60.0,
     show_default=True,
-    help="Stop after this much real time (raise it for long --realtime runs).",
+    help="Stop after this much real time (raise it for long --realtime runs; inf for no limit).",
 )
 @click.option(
     "--trace",
@@ -132,7 +150,9 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     limits = Limits(
         until_ms=until_ms, max_wall_s=max_wall_s, realtime=realtime, every_tick=tracing, host_port=host_port
     )
-    axes = _axes_list(trace_axes)
+    if trace_axes is not None and not tracing:
+        raise click.UsageError("--trace-axes chooses the axes of --trace or --plot; give one of them")
+    axes = _axes_list(trace_axes, profile(controller))
     trace = Trace(axes) if tracing and axes is not None else None
     recorders = _Recorders(trace, tracing, errors, until_ms)
     try:

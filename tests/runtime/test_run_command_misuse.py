@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner, Result
 
 from mintlang.cli import main
@@ -61,3 +62,30 @@ def test_expect_passes_an_error_that_a_stopped_expectation_asks_for(tmp_path: Pa
     program = write(tmp_path, "crash.mnt", "DIM x = 0\nPRINT 1 / x\n")
     crash = write(tmp_path, "crash.toml", '[[expect]]\nstopped = "error"\n')
     assert mint_run(program, "--expect", crash).exit_code == 0
+
+
+def test_a_wall_clock_limit_that_is_not_a_number_is_refused(tmp_path: Path) -> None:
+    result = mint_run(write(tmp_path, "forever.mnt", "LOOP\nENDL\n"), "--max-wall-s", "nan")
+    assert result.exit_code == 2
+    assert "--max-wall-s" in result.stderr
+
+
+def test_an_infinite_wall_clock_limit_means_none(tmp_path: Path) -> None:
+    assert mint_run(write(tmp_path, "short.mnt", "WAIT = 5\n"), "--max-wall-s", "inf").exit_code == 0
+
+
+@pytest.mark.parametrize(
+    ("axes", "complaint"),
+    [("12", "axis 12: the NextMove PCI has axes 0 to 11"), ("-1", "axis -1"), ("0,0", "names an axis twice")],
+)
+def test_trace_axes_must_be_axes_of_the_controller_each_once(tmp_path: Path, axes: str, complaint: str) -> None:
+    result = mint_run(write(tmp_path, "p.mnt", "WAIT = 5\n"), "--trace", tmp_path / "t.csv", "--trace-axes", axes)
+    assert result.exit_code == 2
+    assert complaint in result.stderr
+    assert not (tmp_path / "t.csv").exists()
+
+
+def test_trace_axes_without_a_trace_or_plot_is_a_usage_error(tmp_path: Path) -> None:
+    result = mint_run(write(tmp_path, "p.mnt", "WAIT = 5\n"), "--trace-axes", "0")
+    assert result.exit_code == 2
+    assert "--trace or --plot" in result.stderr

@@ -139,7 +139,7 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     try:
         source = read_source(program).text
         config = read_source(config_path).text if config_path is not None else None
-        scenario = _scenario((*stimulus_paths, *expect_paths))
+        scenario = _scenario((*stimulus_paths, *expect_paths), profile(controller))
     except ScenarioFileError as error:
         click.echo(f"mint-run: {error}", err=True)
         sys.exit(_USAGE_ERROR)
@@ -196,10 +196,10 @@ def _echo(text: str) -> None:
     sys.stdout.write(text)
 
 
-def _scenario(paths: tuple[Path, ...]) -> Scenario:
+def _scenario(paths: tuple[Path, ...], controller: ControllerProfile) -> Scenario:
     scenario = Scenario()
     for path in paths:
-        scenario = merge(scenario, load_scenario(path))
+        scenario = merge(scenario, load_scenario(path, controller))
     return scenario
 
 

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from functools import partial
 
 import mintlang
+from mintlang.controllers import profile
 from mintlang.diagnostics import Severity
 from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.runtime.controller import Controller, build_controller
@@ -59,7 +60,7 @@ def run_source(
     The program's own ``REM @sim`` directives are merged under ``scenario``; a
     directive that cannot be read raises ``ScenarioFileError`` before anything runs.
     """
-    directives, problems = parse_directives(source)
+    directives, problems = parse_directives(source, controller=profile(controller))
     if problems:
         raise ScenarioFileError(problems)
     scenario = merge(directives, scenario) if scenario is not None else directives

@@ -9,18 +9,22 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from mintlang.controllers import ControllerProfile
 from mintlang.runtime.scenario.expectations import Expectation
 from mintlang.runtime.scenario.problems import Invalid, ScenarioError
+from mintlang.runtime.scenario.reach import check_reach
 from mintlang.runtime.scenario.stimulus import IndexPulse, PlantChoice, Scenario, WorldRecord, scenario_of
 
 
 class Collector:
     """The records and errors of one source (a file path or ``"program"``)."""
 
-    __slots__ = ("_per_axis", "errors", "records", "source")
+    __slots__ = ("_per_axis", "controller", "errors", "records", "source")
 
-    def __init__(self, source: str) -> None:
+    def __init__(self, source: str, controller: ControllerProfile | None = None) -> None:
+        """With ``controller``, a record that drives an axis or channel it lacks is a mistake too."""
         self.source = source
+        self.controller = controller
         self.records: list[WorldRecord | Expectation] = []
         self.errors: list[ScenarioError] = []
         self._per_axis: dict[tuple[type, int], int] = {}  # (record kind, axis) -> line first given
@@ -32,6 +36,8 @@ class Collector:
         """Keep what ``build`` makes, or record why it could not."""
         try:
             record = build()
+            if self.controller is not None:
+                check_reach(record, self.controller)
         except Invalid as problem:
             self.error(problem.line or line, str(problem))
             return

@@ -12,6 +12,7 @@ from collections.abc import Callable
 from functools import partial
 from typing import cast
 
+from mintlang.controllers import ControllerProfile
 from mintlang.runtime.scenario import builders
 from mintlang.runtime.scenario.collect import Collector
 from mintlang.runtime.scenario.expectations import Comparison, Expectation, Origin
@@ -23,9 +24,14 @@ from mintlang.syntax.lexer import lex
 _DIRECTIVE = re.compile(r"REM\s*@(?P<kind>sim|expect)\b(?P<body>.*)", re.IGNORECASE)
 
 
-def parse_directives(source_text: str, source: str = "program") -> tuple[Scenario, list[ScenarioError]]:
-    """The world and expectations a program's comments script, and every directive that could not be read."""
-    collector = Collector(source)
+def parse_directives(
+    source_text: str, source: str = "program", controller: ControllerProfile | None = None
+) -> tuple[Scenario, list[ScenarioError]]:
+    """The world and expectations a program's comments script, and every directive that could not be read.
+
+    With ``controller``, a directive for an axis or channel it does not have is one of them.
+    """
+    collector = Collector(source, controller)
     for number, (_, line) in enumerate(lex(source_text).lines, start=1):
         if line.comment_start < 0:
             continue

@@ -13,6 +13,7 @@ from collections.abc import Callable, Mapping
 from functools import partial
 from pathlib import Path
 
+from mintlang.controllers import ControllerProfile
 from mintlang.runtime.scenario import builders
 from mintlang.runtime.scenario.collect import Collector
 from mintlang.runtime.scenario.expectations import Comparison, Expectation, Origin
@@ -227,11 +228,14 @@ def _document(path: Path) -> tuple[str, dict[str, object]]:
         raise ScenarioFileError([ScenarioError(source, line, f"not valid TOML: {problem}")]) from None
 
 
-def load_scenario(path: str | Path) -> Scenario:
-    """The scenario a TOML file describes; ``ScenarioFileError`` lists every mistake with its line."""
+def load_scenario(path: str | Path, controller: ControllerProfile | None = None) -> Scenario:
+    """The scenario a TOML file describes; ``ScenarioFileError`` lists every mistake with its line.
+
+    With ``controller``, an entry for an axis or channel it does not have is a mistake too.
+    """
     path = Path(path)
     text, document = _document(path)
-    collector = Collector(str(path))
+    collector = Collector(str(path), controller)
     _read(document, Layout(text), collector)
     scenario, errors = collector.result()
     if errors:

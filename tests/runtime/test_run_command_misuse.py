@@ -89,3 +89,10 @@ def test_trace_axes_without_a_trace_or_plot_is_a_usage_error(tmp_path: Path) -> 
     result = mint_run(write(tmp_path, "p.mnt", "WAIT = 5\n"), "--trace-axes", "0")
     assert result.exit_code == 2
     assert "--trace or --plot" in result.stderr
+
+
+def test_stimulus_for_a_missing_axis_is_a_usage_error_with_its_line(tmp_path: Path) -> None:
+    stimulus = write(tmp_path, "switch.toml", '[[input]]\nchannel = 1\nwhen = "enc 99 >= 5"\n')
+    result = mint_run(write(tmp_path, "p.mnt", "WAIT = 10\n"), "--stimulus", stimulus)
+    assert result.exit_code == 2
+    assert "switch.toml:1: the NextMove PCI has no axis 99" in result.stderr

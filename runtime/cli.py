@@ -22,6 +22,7 @@ from rich.text import Text
 from mintlang.cli.options import controller_option
 from mintlang.controllers import ControllerProfile, profile
 from mintlang.keyworddb.model import Controller as ControllerName
+from mintlang.runtime.comms.server import PortUnavailable
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.report import as_json
@@ -166,7 +167,7 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
                 echo=_echo,
                 on_tick=recorders.on_tick,
             )
-    except ScenarioFileError as error:
+    except (ScenarioFileError, PortUnavailable) as error:
         click.echo(f"mint-run: {error}", err=True)
         sys.exit(_USAGE_ERROR)
     sys.stdout.flush()

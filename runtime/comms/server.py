@@ -9,6 +9,7 @@ and replies leave at the next tick (CM-6 RC).
 from __future__ import annotations
 
 import contextlib
+import os
 import selectors
 import socket
 import threading
@@ -23,6 +24,10 @@ _RECEIVE_SIZE = 4096
 _FLUSH_SECONDS = 1.0
 _INBOX_LIMIT = 1 << 16
 """Bytes held per connection before reading pauses: a flooding client is slowed by TCP, not by memory."""
+
+
+class PortUnavailable(Exception):
+    """The host port cannot be opened; the message says which port and why."""
 
 
 @dataclass(slots=True, eq=False)
@@ -46,7 +51,11 @@ class HostPortServer:
     """
 
     def __init__(self, port: int = 0) -> None:
-        self._listener = socket.create_server(("127.0.0.1", port))
+        try:
+            self._listener = socket.create_server(("127.0.0.1", port))
+        except OSError as problem:  # in use, or a privileged port
+            reason = os.strerror(problem.errno) if problem.errno else str(problem)  # not create_server's long wording
+            raise PortUnavailable(f"cannot listen on 127.0.0.1:{port}: {reason}") from None
         self._listener.setblocking(False)
         self._wake_reader, self._wake_writer = socket.socketpair()
         self._wake_reader.setblocking(False)

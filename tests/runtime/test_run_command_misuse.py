@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import socket
 from pathlib import Path
 
 import pytest
@@ -96,3 +97,11 @@ def test_stimulus_for_a_missing_axis_is_a_usage_error_with_its_line(tmp_path: Pa
     result = mint_run(write(tmp_path, "p.mnt", "WAIT = 10\n"), "--stimulus", stimulus)
     assert result.exit_code == 2
     assert "switch.toml:1: the NextMove PCI has no axis 99" in result.stderr
+
+
+def test_a_host_port_in_use_is_a_usage_error_that_names_it(tmp_path: Path) -> None:
+    with socket.create_server(("127.0.0.1", 0)) as taken:
+        port = taken.getsockname()[1]
+        result = mint_run(write(tmp_path, "p.mnt", "WAIT = 5\n"), "--host-port", str(port))
+    assert result.exit_code == 2
+    assert result.stderr == f"mint-run: cannot listen on 127.0.0.1:{port}: Address already in use\n"

@@ -10,9 +10,10 @@ this keyword), so no rule re-derives them.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator, Mapping
-from dataclasses import dataclass
-from functools import cached_property
+from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass, field
+from functools import cached_property, wraps
+from typing import Any, TypeVar
 
 import mintlang
 from mintlang.controllers import ControllerProfile, profile
@@ -23,6 +24,8 @@ from mintlang.semantic.index import KeywordUse
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
+
+T = TypeVar("T")
 
 _NEWLINE = re.compile(r"\r\n|\r|\n")
 MARKER = "REM MIGRATE:"
@@ -84,6 +87,7 @@ class Context:
     files: Mapping[Unit, FileView]
     model: mintlang.SemanticModel
     controller: ControllerProfile
+    _memo: dict[Callable[[Any], Any], Any] = field(default_factory=dict, init=False, repr=False, compare=False)
 
     @classmethod
     def build(cls, texts: Mapping[Unit, str], controller: str) -> Context:
@@ -99,6 +103,13 @@ class Context:
         files = {unit: FileView(unit, texts[unit], documents[unit]) for unit in texts}
         model = mintlang.build_model(program, configuration, controller)
         return cls(files, model, profile(controller))
+
+    def memo(self, compute: Callable[[Context], T]) -> T:
+        """``compute(self)``, worked out once per pass: rules ask some whole-application
+        questions at every statement, and rescanning each time made large files quadratic."""
+        if compute not in self._memo:
+            self._memo[compute] = compute(self)
+        return self._memo[compute]
 
     @property
     def db(self) -> KeywordDatabase:
@@ -129,6 +140,17 @@ class Context:
                 for child in children(node):
                     found[id(child)] = node
         return found
+
+
+def per_pass(compute: Callable[[Context], T]) -> Callable[[Context], T]:
+    """``compute`` worked out once per context (see ``Context.memo``); its result is shared, so
+    callers must not change it."""
+
+    @wraps(compute)
+    def cached(context: Context) -> T:
+        return context.memo(compute)
+
+    return cached
 
 
 def children(node: n.Expression) -> tuple[n.Expression, ...]:

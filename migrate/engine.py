@@ -14,6 +14,7 @@ case, blank lines, CRLF and characters of any code page survive as they were.
 from __future__ import annotations
 
 import re
+from bisect import bisect_left, bisect_right, insort
 from collections import Counter
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
@@ -35,6 +36,26 @@ class _Edit:
     text: str
 
 
+@dataclass(frozen=True, slots=True)
+class _Batch:
+    """The edits of one pass, sorted, with where each ends in the text they produced and how much
+    the edits before it grew the text (one more: all of them), so that mapping an offset back
+    is a bisection instead of a walk over every edit."""
+
+    edits: list[_Edit]
+    new_ends: list[int]
+    shifts: list[int]
+
+    @classmethod
+    def of(cls, edits: list[_Edit]) -> _Batch:
+        new_ends: list[int] = []
+        shifts = [0]
+        for edit in edits:
+            new_ends.append(edit.span.start + shifts[-1] + len(edit.text))
+            shifts.append(shifts[-1] + len(edit.text) - (edit.span.end - edit.span.start))
+        return cls(edits, new_ends, shifts)
+
+
 @dataclass
 class _FileState:
     """One file through the phases: its current text and how each pass changed it."""
@@ -42,7 +63,7 @@ class _FileState:
     source: str
     text: str
     index: LineIndex
-    batches: list[list[_Edit]] = field(default_factory=list)  # applied edits, per pass, on the text before it
+    batches: list[_Batch] = field(default_factory=list)  # applied edits, per pass, on the text before it
     changes: list[Change] = field(default_factory=list)
     counts: Counter[str] = field(default_factory=Counter)
 
@@ -126,19 +147,29 @@ def _non_overlapping(edits: list[_Edit]) -> list[_Edit]:
     """The edits that touch no earlier-accepted edit (rule order decides), sorted by position.
 
     Insertions at one point keep the order they were asked for; an insertion may
-    sit at either end of a replacement, never inside it.
+    sit at either end of a replacement, never inside it. The accepted replacements
+    (which never overlap) and insertion points are kept sorted, so each check is a
+    bisection, not a comparison with every edit accepted so far.
     """
     accepted: list[_Edit] = []
+    replacements: list[tuple[int, int]] = []
+    points: list[int] = []
     for edit in edits:
-        if all(_compatible(edit.span, other.span) for other in accepted):
-            accepted.append(edit)
+        start, end = edit.span
+        before = bisect_left(replacements, (end, end)) - 1  # the last replacement starting before ``end``
+        if start == end:
+            if before >= 0 and replacements[before][0] < start < replacements[before][1]:
+                continue
+            insort(points, start)
+        else:
+            if before >= 0 and replacements[before][1] > start:
+                continue
+            inside = bisect_right(points, start)
+            if inside < len(points) and points[inside] < end:
+                continue
+            insort(replacements, (start, end))
+        accepted.append(edit)
     return sorted(accepted, key=lambda edit: (edit.span.start, edit.span.end))
-
-
-def _compatible(a: Span, b: Span) -> bool:
-    if a.start == a.end or b.start == b.end:  # an insertion may not fall strictly inside a replacement
-        return not (b.start < a.start < b.end or a.start < b.start < a.end)
-    return a.end <= b.start or b.end <= a.start
 
 
 def _apply(state: _FileState, edits: list[_Edit]) -> None:
@@ -156,7 +187,7 @@ def _apply(state: _FileState, edits: list[_Edit]) -> None:
             )
             state.counts[edit.rule] += 1
     parts.append(state.text[position:])
-    state.batches.append(edits)
+    state.batches.append(_Batch.of(edits))
     state.text = "".join(parts)
 
 
@@ -173,9 +204,10 @@ def _to_source(state: _FileState, span: Span) -> Span:
     return Span(start, max(start, end))
 
 
-def _back(batch: list[_Edit], offset: int, *, at_start: bool) -> int:
-    shift = 0
-    for edit in batch:
+def _back(batch: _Batch, offset: int, *, at_start: bool) -> int:
+    first = bisect_left(batch.new_ends, offset)  # the edits before it end before ``offset``
+    shift = batch.shifts[first]
+    for edit in batch.edits[first:]:
         new_start = edit.span.start + shift
         new_end = new_start + len(edit.text)
         if offset < new_start or (offset == new_start and at_start and edit.span.start != edit.span.end):

@@ -13,7 +13,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.context import Context, FileView, per_pass
 from mintlang.migrate.rules.axes import default_axes, selector_axes
 from mintlang.migrate.rules.base import keyword_refs, written
 from mintlang.syntax import nodes as n
@@ -61,15 +61,22 @@ def writes_any(context: Context, names: Iterable[str]) -> bool:
     for _, statement, keyword in keyword_refs(context, *wanted):
         if written(statement, keyword):
             return True
+    return not wanted.isdisjoint(_assigned_names(context))
+
+
+@per_pass
+def _assigned_names(context: Context) -> frozenset[str]:
+    """The names assigned as variables, and the words unparsable statements write
+    (``FOLERRORFATAL = 2;``, a v4 fill the v3 reader cannot parse)."""
+    found: set[str] = set()
     for file, _, statement in context.statements():
-        if isinstance(statement, n.Assignment) and statement.target.name.identity in wanted:
-            return True
-        if (
-            type(statement) is n.SyntaxError_
-            and unparsed_write(file.text[statement.span.start : statement.span.end]) in wanted
-        ):
-            return True  # FOLERRORFATAL = 2; — a v4 fill the v3 reader cannot parse
-    return False
+        if isinstance(statement, n.Assignment):
+            found.add(statement.target.name.identity)
+        elif type(statement) is n.SyntaxError_:
+            word = unparsed_write(file.text[statement.span.start : statement.span.end])
+            if word is not None:
+                found.add(word)
+    return frozenset(found)
 
 
 _WRITE = re.compile(r"\s*([A-Za-z_]\w*)\s*(?:[.\[]|=)")

@@ -9,21 +9,48 @@ makes the default unknown, and the rules that need it fall back to a manual item
 
 from __future__ import annotations
 
+from bisect import bisect_left
+from dataclasses import dataclass
+
 from mintlang.migrate.context import Context, FileView
+from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
 V3_POWER_UP_AXES = (0, 1, 2)
 
 
 def default_axes(context: Context, file: FileView, offset: int) -> tuple[int, ...] | None:
-    """The axes bracket-less keywords address at ``offset`` of ``file``, or None when unknown."""
-    axes: tuple[int, ...] | None = V3_POWER_UP_AXES
-    for current, line, statement in context.statements():
-        if current is file and statement.span.start >= offset:
-            break
-        if isinstance(statement, n.Axes):
-            axes = constant_axes(statement.selector) if _top_level(line, statement) else None
-    return axes
+    """The axes bracket-less keywords address at ``offset`` of ``file``, or None when unknown:
+    the default in force before the first statement of ``file`` starting at or after ``offset``."""
+    timeline = context.memo(_Timeline.build)
+    starts, positions = timeline.files.get(file.unit, ((), ()))
+    found = bisect_left(starts, offset)
+    return timeline.before[positions[found] if found < len(positions) else -1]
+
+
+@dataclass(frozen=True, slots=True)
+class _Timeline:
+    """The AXES default before each statement in compile order (one more at the end, after the
+    last), and for each file the running maximum of its statements' starts with their positions,
+    so a lookup is a bisection (the maximum keeps it right if a body were listed out of order)."""
+
+    before: tuple[tuple[int, ...] | None, ...]
+    files: dict[Unit, tuple[list[int], list[int]]]
+
+    @classmethod
+    def build(cls, context: Context) -> _Timeline:
+        axes: tuple[int, ...] | None = V3_POWER_UP_AXES
+        before = []
+        files: dict[Unit, tuple[list[int], list[int]]] = {}
+        for position, (file, line, statement) in enumerate(context.statements()):
+            before.append(axes)
+            starts, positions = files.setdefault(file.unit, ([], []))
+            starts.append(max(statement.span.start, starts[-1] if starts else 0))
+            positions.append(position)
+            if isinstance(statement, n.Axes):
+                axes = constant_axes(statement.selector) if _top_level(line, statement) else None
+        before.append(axes)
+        return cls(tuple(before), files)
 
 
 def constant_axes(selector: n.Selector | None) -> tuple[int, ...] | None:

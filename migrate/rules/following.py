@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.context import Context, FileView, per_pass
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import addressed_axes, writes_any
 from mintlang.migrate.rules.base import Action, Rule, keyword_refs, selector_text, values_text, written
@@ -73,6 +73,7 @@ class MasterSource(StatementRule):
         return f"{source} = _msPOS{fill(selector)} : {channel}"
 
 
+@per_pass
 def scale_is_set(context: Context) -> bool:
     """Whether any axis may have a SCALE other than 1 (every use a write of literal 1s is not)."""
     for _, statement, keyword in keyword_refs(context, "SCALE"):
@@ -86,6 +87,7 @@ def scale_is_set(context: Context) -> bool:
     return False
 
 
+@per_pass
 def _configures_off(context: Context) -> bool:
     for _, _, statement in context.statements():
         if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "CONFIG":

@@ -14,7 +14,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from fractions import Fraction
 
-from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.context import Context, FileView, per_pass
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.axes import axis_values, default_axes, selector_for
 from mintlang.migrate.rules.base import Action, Rule
@@ -184,6 +184,7 @@ def _gear(
     return Gear(denominator, known, bool(written))
 
 
+@per_pass
 def master_increments(context: Context) -> dict[int, set[int | None]] | None:
     """The literal MASTERINC (MASTERDISTANCE after M-REN) values per axis; None for computed axes.
 

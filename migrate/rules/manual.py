@@ -13,7 +13,7 @@ from typing import ClassVar
 import mintlang
 from mintlang.diagnostics import Severity
 from mintlang.dialect import Dialect
-from mintlang.migrate.context import MARKER, Context, FileView
+from mintlang.migrate.context import MARKER, Context, FileView, per_pass
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.migrate.rules.renames import same_value_constants
@@ -21,17 +21,22 @@ from mintlang.semantic.events import EventKind, event_of
 from mintlang.syntax import nodes as n
 
 
-def keyword_nodes(context: Context) -> Iterator[tuple[FileView, n.Statement, str, n.KeywordRef | n.Call]]:
-    """Every keyword and function written in an expression or as a statement, canonical name first."""
-    for use in context.model.index.keyword_uses:
-        yield context.files[use.unit], use.statement, use.keyword.keyword, use.keyword
+@per_pass
+def keyword_nodes(context: Context) -> tuple[tuple[FileView, n.Statement, str, n.KeywordRef | n.Call], ...]:
+    """Every keyword and function written in an expression or as a statement, canonical name
+    first (listed once per pass: a dozen rules go through them)."""
+    found: list[tuple[FileView, n.Statement, str, n.KeywordRef | n.Call]] = [
+        (context.files[use.unit], use.statement, use.keyword.keyword, use.keyword)
+        for use in context.model.index.keyword_uses
+    ]
     for file, _, statement in context.statements():
         for root in n.expressions_of(statement):
             for node in n.walk_expression(root):
                 if isinstance(node, n.Call):
-                    yield file, statement, node.function, node
+                    found.append((file, statement, node.function, node))
         if isinstance(statement, n.FunctionStatement):
-            yield file, statement, statement.call.function, statement.call
+            found.append((file, statement, statement.call.function, statement.call))
+    return tuple(found)
 
 
 class ManualKeywords(Rule):

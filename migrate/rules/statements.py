@@ -6,6 +6,7 @@ the statement's selector (``[0,1]``, ``.1``) and values are copied as written.
 
 from __future__ import annotations
 
+from bisect import bisect_left
 from collections.abc import Iterator
 from typing import ClassVar
 
@@ -218,11 +219,13 @@ class DropOffline(Rule):
     def apply(self, context: Context) -> Iterator[Action]:
         for file, _, statement in context.statements():
             if isinstance(statement, n.Dim) and statement.modifier is not None:
-                for token in file.document.tokens:
-                    if (
-                        statement.span.start <= token.start < statement.name.span.start
-                        and token.text.upper() == "OFFLINE"
-                    ):
+                tokens = file.document.tokens
+                first = bisect_left(tokens, statement.span.start, key=lambda token: token.start)
+                for index in range(first, len(tokens)):  # a slice would copy the rest of the file
+                    token = tokens[index]
+                    if token.start >= statement.name.span.start:
+                        break
+                    if token.text.upper() == "OFFLINE":
                         end = token.end
                         while end < statement.name.span.start and file.text[end] in " \t":
                             end += 1

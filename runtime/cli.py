@@ -25,6 +25,7 @@ from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.runtime.comms.server import PortUnavailable
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.interpreter.vm import StopReason
+from mintlang.runtime.outputs import OutputProblem, check_plot, check_trace
 from mintlang.runtime.report import as_json
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import (
@@ -147,6 +148,11 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     except OSError as error:
         click.echo(f"mint-run: cannot read {error.filename}: {error.strerror or error}", err=True)
         sys.exit(_USAGE_ERROR)
+    inputs = dict.fromkeys((*stimulus_paths, *expect_paths), "a scenario file")
+    if config_path is not None:
+        inputs[config_path] = "the configuration"
+    inputs[program] = "the program"
+    _check_outputs(trace_path, plot_path, inputs)
     tracing = trace_path is not None or plot_path is not None
     limits = Limits(
         until_ms=until_ms, max_wall_s=max_wall_s, realtime=realtime, every_tick=tracing, host_port=host_port
@@ -171,11 +177,6 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
         click.echo(f"mint-run: {error}", err=True)
         sys.exit(_USAGE_ERROR)
     sys.stdout.flush()
-    try:
-        _outputs(result, recorders.trace, trace_path, plot_path)
-    except (OSError, PlotUnavailable) as error:
-        click.echo(f"mint-run: {error}", err=True)
-        sys.exit(_USAGE_ERROR)
     _describe_stop(result, errors)
     if result.outcomes:
         render_outcomes(result.outcomes, errors)
@@ -183,6 +184,11 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
         if result.terminal and not result.terminal.endswith("\n"):
             click.echo()
         click.echo(json.dumps(as_json(result), indent=2))
+    try:  # after the report, so a file that vanished during the run does not take the results with it
+        _outputs(recorders.trace, trace_path, plot_path)
+    except OSError as error:
+        click.echo(f"mint-run: cannot write {error.filename}: {error.strerror or error}", err=True)
+        sys.exit(_USAGE_ERROR)
     if expect_paths:
         if not result.outcomes:
             click.echo(
@@ -237,7 +243,20 @@ class _Recorders:
             self.progress.update(self.task, completed=tick)
 
 
-def _outputs(result: RunResult, trace: Trace | None, trace_path: Path | None, plot_path: Path | None) -> None:
+def _check_outputs(trace_path: Path | None, plot_path: Path | None, inputs: dict[Path, str]) -> None:
+    """Refuse, before the run, an output that cannot be written or would replace an input (path to its role)."""
+    try:
+        if trace_path is not None:
+            check_trace(trace_path, inputs)
+            inputs[trace_path] = "the --trace file"
+        if plot_path is not None:
+            check_plot(plot_path, inputs)
+    except (OutputProblem, PlotUnavailable) as problem:
+        click.echo(f"mint-run: {problem}", err=True)
+        sys.exit(_USAGE_ERROR)
+
+
+def _outputs(trace: Trace | None, trace_path: Path | None, plot_path: Path | None) -> None:
     if trace is None:
         return
     if trace_path is not None:

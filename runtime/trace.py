@@ -14,6 +14,7 @@ from typing import IO
 from mintlang.runtime.controller import Controller
 
 AXIS_COLUMNS = ("demand", "pos", "vel", "folerror", "axismode", "axiserror", "dac")
+FIRST_COLUMN = "time_ms"
 
 
 class PlotUnavailable(Exception):
@@ -28,7 +29,7 @@ class Trace:
         self.rows: list[tuple[float, ...]] = []
 
     def header(self) -> list[str]:
-        columns = ["time_ms"]
+        columns = [FIRST_COLUMN]
         for number in self.axes:
             columns += [f"{name}.{number}" for name in AXIS_COLUMNS]
         return [*columns, "in", "out", "relay"]
@@ -58,13 +59,9 @@ class Trace:
 
     def plot(self, path: Path) -> None:
         """Position, velocity and following error against time, one line per axis."""
-        try:
-            import matplotlib  # noqa: PLC0415 - optional dependency, loaded only when plotting
+        _matplotlib()
+        from matplotlib import pyplot  # noqa: PLC0415 - optional dependency, loaded only when plotting
 
-            matplotlib.use("Agg")
-            from matplotlib import pyplot  # noqa: PLC0415
-        except ImportError as missing:
-            raise PlotUnavailable("plotting needs matplotlib: pip install 'mintlang[plot]'") from missing
         figure, panels = pyplot.subplots(3, 1, sharex=True, figsize=(10, 8))
         times = [row[0] for row in self.rows]
         for offset, number in enumerate(self.axes):
@@ -79,3 +76,19 @@ class Trace:
         figure.tight_layout()
         figure.savefig(path)
         pyplot.close(figure)
+
+
+def _matplotlib() -> None:
+    try:
+        import matplotlib  # noqa: PLC0415 - optional dependency, loaded only when plotting
+    except ImportError as missing:
+        raise PlotUnavailable("plotting needs matplotlib: pip install 'mintlang[plot]'") from missing
+    matplotlib.use("Agg")
+
+
+def image_types() -> frozenset[str]:
+    """The file extensions ``plot`` can write (it picks the format by the extension)."""
+    _matplotlib()
+    from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: PLC0415
+
+    return frozenset(FigureCanvasAgg.get_supported_filetypes())

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import errno
+import importlib.util
+import json
 import socket
 from pathlib import Path
 
@@ -9,6 +12,7 @@ import pytest
 from click.testing import CliRunner, Result
 
 from mintlang.cli import main
+from mintlang.runtime.trace import Trace
 
 
 def mint_run(*arguments: str | Path) -> Result:
@@ -105,3 +109,72 @@ def test_a_host_port_in_use_is_a_usage_error_that_names_it(tmp_path: Path) -> No
         result = mint_run(write(tmp_path, "p.mnt", "WAIT = 5\n"), "--host-port", str(port))
     assert result.exit_code == 2
     assert result.stderr == f"mint-run: cannot listen on 127.0.0.1:{port}: Address already in use\n"
+
+
+@pytest.mark.parametrize("option", ["--trace", "--plot"])
+def test_an_output_never_replaces_the_program(tmp_path: Path, option: str) -> None:
+    program = write(tmp_path, "p.mnt", "WAIT = 5\n")
+    result = mint_run(program, option, program)
+    assert result.exit_code == 2
+    assert result.stderr == f"mint-run: cannot write {program}: it is also the program\n"
+    assert program.read_text() == "WAIT = 5\n"
+
+
+def test_a_trace_never_replaces_the_configuration_or_a_scenario(tmp_path: Path) -> None:
+    program = write(tmp_path, "p.mnt", "WAIT = 5\n")
+    config = write(tmp_path, "c.mnt", "RESETALL\n")
+    scenario = write(tmp_path, "s.toml", '[[expect]]\nstopped = "end"\n')
+    assert "it is also the configuration" in mint_run(program, "--config", config, "--trace", config).stderr
+    assert "it is also a scenario file" in mint_run(program, "--expect", scenario, "--trace", scenario).stderr
+
+
+def test_a_trace_replaces_an_earlier_trace_but_no_other_file(tmp_path: Path) -> None:
+    program = write(tmp_path, "p.mnt", "WAIT = 5\n")
+    trace = tmp_path / "t.csv"
+    assert mint_run(program, "--trace", trace).exit_code == 0
+    assert mint_run(program, "--trace", trace).exit_code == 0
+    notes = write(tmp_path, "notes.txt", "keep me\n")
+    result = mint_run(program, "--trace", notes)
+    assert result.exit_code == 2
+    assert "it exists and is not a trace" in result.stderr
+    assert notes.read_text() == "keep me\n"
+
+
+@pytest.mark.skipif(importlib.util.find_spec("matplotlib") is None, reason="the plot extra is not installed")
+@pytest.mark.parametrize("name", ["out.xyz", "out"])
+def test_a_plot_needs_an_image_extension_before_the_run(tmp_path: Path, name: str) -> None:
+    result = mint_run(write(tmp_path, "p.mnt", 'PRINT "ran"\n'), "--plot", tmp_path / name)
+    assert result.exit_code == 2
+    assert "name an image by its extension (" in result.stderr and "png" in result.stderr
+    assert result.stdout == ""  # refused before running
+
+
+@pytest.mark.parametrize("option", ["--trace", "--plot"])
+def test_an_output_in_a_missing_directory_is_refused_before_the_run(tmp_path: Path, option: str) -> None:
+    target = tmp_path / "absent" / "out.png"
+    result = mint_run(write(tmp_path, "p.mnt", 'PRINT "ran"\n'), option, target)
+    assert result.exit_code == 2
+    assert result.stderr == f"mint-run: cannot write {target}: {target.parent}: no such directory\n"
+    assert result.stdout == ""
+
+
+def test_an_output_that_is_a_directory_is_refused(tmp_path: Path) -> None:
+    result = mint_run(write(tmp_path, "p.mnt", "WAIT = 5\n"), "--trace", tmp_path)
+    assert result.exit_code == 2
+    assert result.stderr == f"mint-run: cannot write {tmp_path}: it is a directory\n"
+
+
+def test_a_trace_that_fails_to_write_after_the_run_keeps_the_report(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    trace = tmp_path / "t.csv"
+
+    def full_disk(self: Trace, stream: object) -> None:
+        raise OSError(errno.ENOSPC, "No space left on device", str(trace))
+
+    monkeypatch.setattr(Trace, "write_csv", full_disk)
+    result = mint_run(write(tmp_path, "p.mnt", "WAIT = 5\n"), "--trace", trace, "--report", "json")
+    assert result.exit_code == 2
+    assert json.loads(result.stdout)["stopped"] == "end"
+    assert "end after 5 ms" in result.stderr
+    assert result.stderr.endswith(f"mint-run: cannot write {trace}: No space left on device\n")

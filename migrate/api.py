@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
+from dataclasses import replace
 
-from mintlang.diagnostics import Edit
+from mintlang.diagnostics import Edit, Span
 from mintlang.keyworddb.model import Controller
 from mintlang.migrate import engine
 from mintlang.migrate.context import Context
@@ -13,10 +14,14 @@ from mintlang.migrate.rules import RULES, Replace, Rule
 from mintlang.semantic.units import Unit
 
 DEFAULT_CONTROLLER = Controller.NEXTMOVE_PCI
+# A UTF-8 file may start with a byte-order mark. The rules migrate the text after it: a
+# prologue inserted at offset 0 would otherwise push the mark into the middle of the file.
+_BOM = "\ufeff"
 
 
 class UnknownRule(ValueError):
-    """``only``/``skip`` named a rule id that does not exist."""
+    """``only``/``skip``/``opt_in`` named a rule id that does not exist, or ``opt_in`` one that
+    is not optional (asking for it would do nothing, which a typo deserves to hear)."""
 
 
 def rules() -> tuple[RuleInfo, ...]:
@@ -36,6 +41,11 @@ def select(only: Iterable[str] | None = None, skip: Iterable[str] = (), opt_in: 
     unknown = sorted((wanted | skipped | extra) - known)
     if unknown:
         raise UnknownRule(f"unknown rule: {', '.join(unknown)} (see --list-rules)")
+    if extra & default:
+        optional = ", ".join(rule.id for rule in RULES if rule.optional)
+        raise UnknownRule(
+            f"not an optional rule: {', '.join(sorted(extra & default))} runs anyway (the optional ones: {optional})"
+        )
     return tuple(rule for rule in RULES if rule.id in wanted - skipped)
 
 
@@ -53,8 +63,10 @@ def migrate(
     texts = {Unit.PROGRAM: source}
     if config is not None:
         texts = {Unit.CONFIGURATION: config, **texts}
+    marks = {unit: _BOM if text.startswith(_BOM) else "" for unit, text in texts.items()}
+    texts = {unit: text.removeprefix(marks[unit]) for unit, text in texts.items()}
     outcomes = engine.run(texts, select(only, skip, opt_in), str(Controller(controller)))
-    results = {unit: _result(outcome) for unit, outcome in outcomes.items()}
+    results = {unit: _result(outcome, marks[unit]) for unit, outcome in outcomes.items()}
     program = results[Unit.PROGRAM]
     if Unit.CONFIGURATION in results:
         return MigrationResult(
@@ -69,9 +81,14 @@ def migrate(
     return program
 
 
-def _result(outcome: engine.FileOutcome) -> MigrationResult:
+def _result(outcome: engine.FileOutcome, mark: str) -> MigrationResult:
+    """The outcome with the byte-order mark the rules did not see put back in front."""
+    changes = tuple(
+        replace(change, span=Span(change.span.start + len(mark), change.span.end + len(mark)))
+        for change in outcome.changes
+    )
     return MigrationResult(
-        outcome.source, outcome.text, outcome.changes, outcome.manual, outcome.counts, outcome.errors
+        mark + outcome.source, mark + outcome.text, changes, outcome.manual, outcome.counts, outcome.errors
     )
 
 

@@ -1,7 +1,9 @@
 """The migration report: per-file counts, per-rule counts and every manual item with its line.
 
 One data shape (``report``) feeds both formats, so the JSON the golden tests
-compare and the text a user reads always agree.
+compare and the text a user reads always agree. Paths, reasons and errors quote
+the user's files, so the text report escapes them: ``[/b]`` in a program is text,
+not Rich markup.
 """
 
 from __future__ import annotations
@@ -12,7 +14,9 @@ from dataclasses import dataclass
 from typing import Any
 
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
+from rich.text import Text
 
 from mintlang.migrate.model import MigrationResult
 
@@ -79,16 +83,22 @@ def render_text(data: Mapping[str, Any], console: Console) -> None:
     for row in data["files"]:
         status = "changed" if row["changed"] else "unchanged"
         files.add_row(
-            row["path"], row["role"], status, str(len(row["changes"])), str(len(row["manual"])), str(len(row["errors"]))
+            Text(row["path"]),
+            row["role"],
+            status,
+            str(len(row["changes"])),
+            str(len(row["manual"])),
+            str(len(row["errors"])),
         )
     console.print(files)
     for row in data["files"]:
+        path = escape(row["path"])
         for item in row["manual"]:
             console.print(
-                f"{row['path']}:{item['line']}: [bold]{item['rule']}[/bold] {item['reason']}", highlight=False
+                f"{path}:{item['line']}: [bold]{item['rule']}[/bold] {escape(item['reason'])}", highlight=False
             )
         for error in row["errors"]:
-            console.print(f"{row['path']}: unreadable v3 {error}", highlight=False)
+            console.print(f"{path}: unreadable v3 {escape(error)}", highlight=False)
     if data["rules"]:
         console.print(
             "rules: " + ", ".join(f"{rule} {count}" for rule, count in data["rules"].items()), highlight=False

@@ -133,7 +133,9 @@ PROFILES: dict[Controller, ControllerProfile] = {
         digital_inputs=ChannelRange(0, 17),
         digital_outputs=ChannelRange(0, 8),
         adc=ChannelRange(0, 3),
-        dac=None,
+        # The channel table prints N/A, but DAC is the drive's speed demand on MintDrive (8720-8793) and
+        # footnote 7 (5666) says MintDrive does not tell axis keywords from channel keywords: axis 0.
+        dac=ChannelRange(0, 0),
         auxiliary_dac=ChannelRange(0, 3),
         encoders=ChannelRange(0, 0),
         auxiliary_encoders=ChannelRange(0, 0),

@@ -90,7 +90,8 @@ def vocabulary(dialect: Dialect) -> Vocabulary:
             if keyword.kind is not KeywordKind.EVENT:
                 kind = _kind_of(keyword.name, keyword.kind, bool(keyword.parameters))
                 for abbreviation in keyword.abbreviations:
-                    add(abbreviation, keyword.name, kind)
+                    if db.lookup(abbreviation) is keyword:  # shared ones go where conflicts.json resolved them
+                        add(abbreviation, keyword.name, kind)
         constants = frozenset(db.constants)
     else:
         for v3 in db.v3_keywords.values():

@@ -189,9 +189,32 @@ def test_a_keyword_the_controller_lacks_is_error_17() -> None:
     assert found("DIM a\na = DRIVEENABLESWITCH\n", controller="mintdrive") == []
 
 
+def test_dac_of_the_one_axis_is_read_on_mintdrive() -> None:
+    # 000:8778-8793 reads DAC on MintDrive; footnote 7 (5666): no difference between axis and channel keywords
+    assert found("DIM d\nd = DAC.0\nPRINT d\n", controller="mintdrive") == []
+    assert [code for code, _, _ in found("DIM d\nd = DAC.1\nPRINT d\n", controller="mintdrive")] == ["E4"]
+
+
+def test_release_is_allowed_in_a_configuration_file_only() -> None:
+    # 000:935-939: RELEASE cannot be used in a program; the configuration file is where it belongs
+    assert found("PRINT 1\n", config="RELEASE\n") == []
+    assert found("RELEASE\n") == [("E2006", ERROR, 1)]
+
+
+def test_a_keyword_whose_formats_only_read_it_cannot_be_written() -> None:
+    # ERR (v = ERR), ERL and INKEY have no attribute table; their formats only read them
+    assert [code for code, _, _ in found("ERR = 0\nERL = 0\nINKEY = 5\n")] == ["E2000"] * 3
+
+
 def test_abbreviations_are_checked_like_the_full_keyword() -> None:
     assert found("sp\n") == [("E2005", ERROR, 1)]
     assert found("sp = 10\n") == []
+
+
+def test_an_abbreviation_two_keywords_share_means_the_one_recorded_in_conflicts() -> None:
+    # SI: STOPINPUT (16408, quick reference 17768), not the advanced STEPPERIO (quick reference SIO, 18181)
+    assert found("SI[0,1] = 10,10\n", controller="nextmove-bx") == []
+    assert found("SI[0,1] = 10,10\n", controller="mintdrive") == [("E2017", ERROR, 1)]  # one axis only
 
 
 # -------------------------------------------------------------- addressing

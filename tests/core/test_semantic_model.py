@@ -258,14 +258,15 @@ def channel_table(controller: str) -> dict[str, tuple[int, int] | None]:
 
 
 # line 5613, the Dot Parameters table, in the order of its columns. NextMove PCI inputs and outputs
-# include the two expansion cards: inputs 20-59 (line 4078), outputs 12-35 (line 4126).
+# include the two expansion cards: inputs 20-59 (line 4078), outputs 12-35 (line 4126). MintDrive's DAC is
+# its one axis, not N/A: footnote 7 (line 5666) and the DAC entry's MintDrive example (lines 8778-8793).
 COLUMNS = ("axes", "inputs", "outputs", "adc", "dac", "aux dac", "encoders", "aux encoders")
 DOT_PARAMETERS = {
     "nextmove-pci": ((0, 11), (0, 59), (0, 35), (0, 11), (0, 11), None, (0, 11), (0, 2)),
     "nextmove-pc": ((0, 7), (0, 23), (0, 11), (0, 7), (0, 7), None, (0, 7), (0, 0)),
     "nextmove-bx": ((0, 7), (0, 15), (0, 7), (0, 7), (0, 3), None, (0, 3), (0, 0)),
     "servonode51": ((0, 0), (0, 5), (0, 2), (0, 0), None, (0, 1), (0, 0), (0, 0)),
-    "mintdrive": ((0, 0), (0, 17), (0, 8), (0, 3), None, (0, 3), (0, 0), (0, 0)),
+    "mintdrive": ((0, 0), (0, 17), (0, 8), (0, 3), (0, 0), (0, 3), (0, 0), (0, 0)),
 }
 
 

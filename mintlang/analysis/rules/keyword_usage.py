@@ -4,8 +4,10 @@ Writing a keyword that is read-only or a command is error 2000 (``CAMINDEX = 4``
 reading one that is write-only is 2002 (``PRINT ACCELTIME``); naming a
 parameter on its own as a statement is 2005 (``SPEED``); operands after a command
 that takes only axes are 2003 (``STOP following``, a comment missing its REM); editor commands in a
-program are 2006 (``NEW``); a word that is no keyword of the target
-controller is 3007.
+program are 2006 (``NEW``), but for RELEASE in a configuration file, where the
+manual recommends it; a word that is no keyword of the target controller is 3007.
+Keywords the manual gives no attribute table are read only when every format
+of theirs reads them (``v = ERR``).
 """
 
 from __future__ import annotations
@@ -18,7 +20,10 @@ from mintlang.analysis.traversal import Facts, Use
 from mintlang.controllers import profile
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, KeywordKind
+from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
+
+_CONFIGURATION_COMMANDS = frozenset({"RELEASE"})  # clears the variables before each run (000:935-939)
 
 
 def check(facts: Facts) -> Iterator[Finding]:
@@ -26,6 +31,8 @@ def check(facts: Facts) -> Iterator[Finding]:
     controller = model.controller
     for use in facts.keyword_uses:
         ref = use.keyword
+        if use.unit is Unit.CONFIGURATION and ref.keyword in _CONFIGURATION_COMMANDS:
+            continue
         statement = use.statement
         has_arguments = isinstance(statement, n.KeywordStatement) and bool(statement.arguments)
         verdict = _verdict(ref.keyword, ref.spelling.upper(), controller.controller, use.use, has_arguments)
@@ -54,7 +61,8 @@ def _verdict(name: str, spelling: str, controller: Controller, use: Use, has_arg
         return 17, f"{keyword.name} is not available on {profile(controller).title}"
     attributes = keyword.attributes_for(controller)
     if attributes is None:
-        return None
+        read_only = bool(keyword.formats) and all(text.startswith("v =") for text in keyword.formats)
+        return (2000, f"{name} is read only and cannot be given a value") if use is Use.WRITE and read_only else None
     if use is Use.WRITE and not attributes.write:
         what = "a command" if attributes.command else "read only"
         return 2000, f"{name} is {what} and cannot be given a value"

@@ -1,11 +1,13 @@
 """``mint-migrate`` (also ``mint migrate``): migrate Mint v3 files to Mint v4.
 
 Default is a dry run that prints a unified diff and the report. ``--write``
-rewrites the files in place (atomically, in their own encoding and newlines),
-``--check`` only says whether anything would change, ``--stdout`` prints the
-migrated text of one file. Exit status: 0 when there is nothing to do or all
-was written, 1 when changes are pending (``--check``) or manual items are left,
-2 for a usage or I/O problem (one line, never a traceback).
+rewrites the files in place (atomically, in their own encoding and newlines,
+through symbolic links; see ``atomic``), ``--check`` only says whether anything
+would change, ``--stdout`` prints the migrated text of one file; the modes
+exclude each other. Every file to write is checked before the first is written.
+Exit status: 0 when there is nothing to do or all was written, 1 when changes
+are pending (``--check``) or manual items are left, 2 for a usage or I/O problem
+(one line, never a traceback).
 """
 
 from __future__ import annotations
@@ -23,7 +25,8 @@ from mintlang.cli.files import collect, is_configuration
 from mintlang.cli.options import controller_option
 from mintlang.migrate.api import UnknownRule, rules, select
 from mintlang.migrate.api import migrate as migrate_text
-from mintlang.migrate.atomic import write_atomic
+from mintlang.migrate.atomic import Unwritable, target
+from mintlang.migrate.atomic import write as write_file
 from mintlang.migrate.model import MigrationResult
 from mintlang.migrate.report import FileEntry, render_text, report
 from mintlang.source import SourceFile, read_source
@@ -63,23 +66,44 @@ def _entry(file: SourceFile, role: str, result: MigrationResult) -> FileEntry:
 
 def _read(path: Path) -> SourceFile:
     try:
-        return read_source(path)
+        file = read_source(path)
     except OSError as error:
         raise _Usage(f"cannot read {path}: {error.strerror or error}") from None
+    if "\0" in file.text:  # binary: migrating it would scatter REM lines through it
+        offset = file.text.index("\0")
+        line = file.text.count("\n", 0, offset) + 1
+        column = offset - file.text.rfind("\n", 0, offset)
+        raise _Usage(f"{path}:{line}:{column}: not Mint text (a NUL byte): nothing migrated")
+    return file
 
 
 def _jobs(paths: tuple[Path, ...], config: Path | None) -> list[_Job]:
     try:
         found = collect(paths)
     except FileNotFoundError as error:
-        raise _Usage(f"no such file or directory: {error.args[0]}") from None
+        raise _Usage(f"no such file or directory: {error.filename or error.args[0]}") from None
+    except OSError as error:  # a link loop, a path under a file, a folder that cannot be read
+        raise _Usage(f"cannot read {error.filename}: {error.strerror or error}") from None
     if config is not None:
         if len(found) > 1 or any(is_configuration(path) for path in found):
             raise _Usage("--config pairs one configuration file with one program file")
+        if found:
+            _refuse_same(found[0], config)
         return [_Job(_read(found[0]) if found else None, _read(config))]
     if not found:
         raise _Usage("no .mnt or .cfg files to migrate")
     return [_Job(None, _read(p)) if is_configuration(p) else _Job(_read(p), None) for p in found]
+
+
+def _refuse_same(program: Path, config: Path) -> None:
+    """The program as its own --config would be migrated in two roles, and with --write the
+    second write would silently undo the first."""
+    try:
+        same = program.samefile(config)
+    except OSError as error:
+        raise _Usage(f"cannot read {error.filename}: {error.strerror or error}") from None
+    if same:
+        raise _Usage(f"--config {config} is the program {program} itself: name the configuration file")
 
 
 def _diff(file: SourceFile, text: str) -> str:
@@ -98,9 +122,9 @@ def _list_rules(console: Console) -> None:
 
 @click.command(name="migrate", context_settings={"help_option_names": ["-h", "--help"]})
 @click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
-@click.option("--write", "mode", flag_value="write", help="Rewrite the files in place.")
-@click.option("--check", "mode", flag_value="check", help="Exit 1 when anything would change; write nothing.")
-@click.option("--stdout", "mode", flag_value="stdout", help="Print the migrated text of one file.")
+@click.option("--write", is_flag=True, help="Rewrite the files in place.")
+@click.option("--check", is_flag=True, help="Exit 1 when anything would change; write nothing.")
+@click.option("--stdout", "to_stdout", is_flag=True, help="Print the migrated text of one file.")
 @click.option(
     "--config",
     "config",
@@ -115,7 +139,9 @@ def _list_rules(console: Console) -> None:
 @click.option("--list-rules", is_flag=True, help="List the rules and exit.")
 def migrate(  # noqa: PLR0917 - click passes every option as an argument
     paths: tuple[Path, ...],
-    mode: str | None,
+    write: bool,
+    check: bool,
+    to_stdout: bool,
     config: Path | None,
     controller: str,
     output_format: str,
@@ -130,24 +156,54 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
         _list_rules(out)
         return
     try:
+        mode = _mode(write=write, check=check, to_stdout=to_stdout)
         select(only or None, skip, opt_in)
         jobs = _jobs(paths, config)
         if mode == "stdout" and sum((job.program is not None) + (job.configuration is not None) for job in jobs) > 1:
             raise _Usage("--stdout prints one file: name one program or one configuration file")
         migrated = [pair for job in jobs for pair in job.run(controller, only or None, skip, opt_in)]
+        changed = [(file, entry) for file, entry in migrated if entry.result.changed]
+        writes = _targets(changed) if mode == "write" else []
         _output(migrated, mode, output_format, controller)
-        for file, entry in migrated if mode == "write" else ():
-            if entry.result.changed:
-                write_atomic(file.path, file.encode(entry.result.text))
-    except (_Usage, UnknownRule) as error:
+        _write(writes)
+    except (_Usage, UnknownRule, Unwritable) as error:
         click.echo(f"mint-migrate: {error}", err=True)
         sys.exit(_USAGE_ERROR)
-    except OSError as error:
-        click.echo(f"mint-migrate: cannot write {error.filename}: {error.strerror or error}", err=True)
-        sys.exit(_USAGE_ERROR)
     manual = any(entry.result.manual for _, entry in migrated)
-    pending = mode == "check" and any(entry.result.changed for _, entry in migrated)
+    pending = mode == "check" and bool(changed)
     sys.exit(_PENDING if manual or pending else 0)
+
+
+def _mode(*, write: bool, check: bool, to_stdout: bool) -> str | None:
+    """The one mode asked for: ``--check --write`` must not write, so two are a usage error."""
+    given = [name for name, on in (("write", write), ("check", check), ("stdout", to_stdout)) if on]
+    if len(given) > 1:
+        raise _Usage(f"{', '.join('--' + name for name in given)}: choose one of these modes")
+    return given[0] if given else None
+
+
+def _targets(changed: list[tuple[SourceFile, FileEntry]]) -> list[tuple[Path, SourceFile, FileEntry]]:
+    """Each changed file with the real file to write, all checked before the first is written."""
+    try:
+        return [(target(file.path), file, entry) for file, entry in changed]
+    except Unwritable as error:
+        raise Unwritable(f"{error}; nothing was written") from None
+
+
+def _write(writes: list[tuple[Path, SourceFile, FileEntry]]) -> None:
+    """Write each changed file to its real file, stopping at the first that fails: the message
+    names it and says which files were already written and which were left as they were."""
+    for done, (real, file, entry) in enumerate(writes):
+        try:
+            write_file(real, file.encode(entry.result.text))
+        except OSError as error:
+            written = [str(other.path) for _, other, _ in writes[:done]]
+            left = [str(other.path) for _, other, _ in writes[done + 1 :]]
+            message = f"cannot write {real}: {error.strerror or error}"
+            message += f"; written: {', '.join(written)}" if written else "; nothing was written"
+            if left:
+                message += f"; not written: {', '.join(left)}"
+            raise Unwritable(message) from None
 
 
 def _output(

@@ -3,13 +3,18 @@ nothing is written that should not be (links, read-only files, binaries, half-do
 
 from __future__ import annotations
 
+import errno
+import os
+import stat
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
 from click.testing import CliRunner, Result
 
+from mintlang.migrate import atomic, migrate
 from mintlang.migrate import cli as migrate_cli
-from mintlang.migrate import migrate
+from mintlang.migrate.context import Context
 
 V3 = "DIM a\nPRINT a\nEND\n"
 V4 = "AXES[0,1,2]\nDIM a\nPRINT a\nEND\n"
@@ -31,6 +36,9 @@ def one_line_usage_error(result: Result) -> str:
     return result.stderr.strip()
 
 
+# ------------------------------------------------------------------ the report
+
+
 @pytest.mark.parametrize("name", ["demo.mnt", "x[/v3].mnt"])
 def test_markup_in_a_program_or_its_path_is_printed_as_text(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch, name: str
@@ -44,9 +52,119 @@ def test_markup_in_a_program_or_its_path_is_printed_as_text(
     assert any(line.startswith(f" {name} ") and "program" in line for line in result.output.splitlines())
 
 
+# ----------------------------------------------------------------- the modes
+
+
+@pytest.mark.parametrize("modes", [["--check", "--write"], ["--write", "--check"], ["--write", "--stdout"]])
+def test_two_modes_are_a_usage_error_and_nothing_is_written(tmp_path: Path, modes: list[str]) -> None:
+    path = program(tmp_path, "a.mnt")
+    assert "choose one of these modes" in one_line_usage_error(run(*modes, path))
+    assert path.read_text() == V3
+
+
+def test_the_program_as_its_own_configuration_is_a_usage_error(tmp_path: Path) -> None:
+    path = program(tmp_path, "a.mnt")
+    link = tmp_path / "link.cfg"
+    link.symlink_to(path)
+    for config in (path, link):
+        message = one_line_usage_error(run("--write", "--config", config, path))
+        assert message == f"mint-migrate: --config {config} is the program {path} itself: name the configuration file"
+    assert path.read_text() == V3
+
+
 def test_with_takes_optional_rules_only() -> None:
     message = one_line_usage_error(run("--with", "M-ABBR", "unused.mnt"))
     assert "not an optional rule: M-ABBR" in message and "M-BIT" in message and "S-IDLEAXES" in message
+
+
+# ------------------------------------------------------------ what is written
+
+
+def test_write_through_a_symbolic_link_rewrites_the_real_file_and_keeps_the_link(tmp_path: Path) -> None:
+    real = program(tmp_path, "real.mnt")
+    link = tmp_path / "link.mnt"
+    link.symlink_to(real.name)
+    assert run("--write", link).exit_code == 0
+    assert link.is_symlink() and os.readlink(link) == "real.mnt"
+    assert real.read_text() == V4
+
+
+def test_write_keeps_hard_links_and_the_mode(tmp_path: Path) -> None:
+    path = program(tmp_path, "a.mnt")
+    path.chmod(0o640)
+    other = tmp_path / "b.mnt"
+    os.link(path, other)
+    assert run("--write", path).exit_code == 0
+    assert other.read_text() == V4 and path.stat().st_ino == other.stat().st_ino
+    assert stat.S_IMODE(path.stat().st_mode) == 0o640
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.mnt", "b.mnt"]  # no backup left
+
+
+def test_a_failed_overwrite_of_a_hard_linked_file_puts_the_original_back(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    path = program(tmp_path, "a.mnt")
+    os.link(path, tmp_path / "b.mnt")
+    fill = atomic._fill
+
+    def full_disk(stream: object, data: bytes) -> None:
+        monkeypatch.setattr(atomic, "_fill", fill)  # the restore goes through
+        stream.write(data[:3])  # type: ignore[attr-defined]
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(atomic, "_fill", full_disk)
+    message = one_line_usage_error(run("--write", path))
+    assert message == f"mint-migrate: cannot write {path}: No space left on device; nothing was written"
+    assert path.read_text() == V3
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.mnt", "b.mnt"]
+
+
+def test_a_read_only_file_is_refused_even_for_root(tmp_path: Path) -> None:
+    path = program(tmp_path, "a.mnt")
+    path.chmod(0o444)
+    link = tmp_path / "link.mnt"
+    link.symlink_to(path)
+    message = one_line_usage_error(run("--write", path))
+    assert message == f"mint-migrate: cannot write {path}: the file is read-only; nothing was written"
+    message = one_line_usage_error(run("--write", link))
+    assert message == f"mint-migrate: cannot write {link} (link to {path}): the file is read-only; nothing was written"
+    assert path.read_text() == V3
+
+
+def test_files_that_are_not_regular_are_never_replaced(tmp_path: Path) -> None:
+    pipe = tmp_path / "pipe.mnt"
+    os.mkfifo(pipe)
+    assert one_line_usage_error(run("--write", pipe)) == f"mint-migrate: cannot read {pipe}: not a regular file"
+    with pytest.raises(atomic.Unwritable, match="not a regular file"):
+        atomic.target(pipe)
+    assert stat.S_ISFIFO(pipe.stat().st_mode)
+
+
+def test_every_file_is_checked_before_the_first_is_written(tmp_path: Path) -> None:
+    first = program(tmp_path, "a.mnt")
+    locked = program(tmp_path, "b.mnt")
+    locked.chmod(0o444)
+    assert "b.mnt: the file is read-only; nothing was written" in one_line_usage_error(run("--write", tmp_path))
+    assert first.read_text() == V3
+
+
+def test_a_write_that_fails_midway_names_the_file_and_what_was_written(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    paths = [program(tmp_path, name) for name in ("a.mnt", "b.mnt", "c.mnt")]
+    write = migrate_cli.write_file
+
+    def fails_on_b(real: Path, data: bytes) -> None:
+        if real.name == "b.mnt":
+            raise OSError(errno.ENOSPC, "No space left on device")
+        write(real, data)
+
+    monkeypatch.setattr(migrate_cli, "write_file", fails_on_b)
+    message = one_line_usage_error(run("--write", tmp_path))
+    assert message == (
+        f"mint-migrate: cannot write {paths[1]}: No space left on device; written: {paths[0]}; not written: {paths[2]}"
+    )
+    assert [path.read_text() for path in paths] == [V4, V3, V3]
 
 
 def test_a_byte_order_mark_stays_first(tmp_path: Path) -> None:
@@ -61,3 +179,66 @@ def test_a_byte_order_mark_does_not_move_the_changes() -> None:
     assert result.text == "\ufeffHOMESPEED = 10\n"
     change = result.changes[0]
     assert result.source[change.span.start : change.span.end] == change.original == "HMSPEED"
+
+
+def test_a_binary_file_is_refused_and_left_alone(tmp_path: Path) -> None:
+    path = tmp_path / "binary.mnt"
+    data = b"DIM a\nPR\x00\x01\x02INT a\n"
+    path.write_bytes(data)
+    message = one_line_usage_error(run("--write", path))
+    assert message == f"mint-migrate: {path}:2:3: not Mint text (a NUL byte): nothing migrated"
+    assert path.read_bytes() == data
+
+
+# --------------------------------------------------------------- finding files
+
+
+def test_a_link_loop_and_a_path_under_a_file_say_what_is_wrong(tmp_path: Path) -> None:
+    loop = tmp_path / "loop.mnt"
+    loop.symlink_to(loop)
+    assert one_line_usage_error(run(loop)) == f"mint-migrate: cannot read {loop}: Too many levels of symbolic links"
+    under = program(tmp_path, "plain.txt") / "x.mnt"
+    assert one_line_usage_error(run(under)) == f"mint-migrate: cannot read {under}: Not a directory"
+
+
+def test_an_unreadable_folder_is_reported_not_skipped(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    program(tmp_path, "a.mnt")
+    locked = tmp_path / "locked"
+    locked.mkdir()
+    program(locked, "b.mnt")
+    scandir = os.scandir
+
+    def denied(path: str | Path = ".") -> Iterator[os.DirEntry[str]]:
+        if Path(path) == locked:  # what mode 000 does to anyone without root's override
+            raise PermissionError(errno.EACCES, "Permission denied", str(path))
+        return scandir(path)
+
+    monkeypatch.setattr(os, "scandir", denied)
+    assert one_line_usage_error(run("--write", tmp_path)) == f"mint-migrate: cannot read {locked}: Permission denied"
+    assert (tmp_path / "a.mnt").read_text() == V3
+
+
+# ------------------------------------------------------------------ large input
+
+
+def test_the_work_grows_linearly_with_the_program(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Rules used to rescan the whole application at each statement (5 MB took minutes)."""
+    corpus = "".join(path.read_text() for path in sorted(Path("tests/corpus/v3/programs").glob("*.mnt")))
+    visited = 0
+    statements = Context.statements
+
+    def counted(self: Context) -> Iterator[object]:
+        nonlocal visited
+        for item in statements(self):
+            visited += 1
+            yield item
+
+    monkeypatch.setattr(Context, "statements", counted)
+
+    def work(copies: int) -> int:
+        nonlocal visited
+        visited = 0
+        migrate(corpus * copies)
+        return visited
+
+    assert work(4) <= 2.2 * work(2)

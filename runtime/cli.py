@@ -4,13 +4,16 @@ Terminal output goes to stdout as the controller prints it; what stopped the
 run goes to stderr. Exit status: 0 when the program ended (or reached
 ``--until-ms``), 1 when it stopped on an error, a deadlock or the wall-clock
 limit, or when an expectation failed; 2 for a usage or I/O problem. With
-``--expect`` the expectations decide 0 or 1 (``expectations_pass``).
+``--expect`` the expectations decide 0 or 1 (``expectations_pass``). Ctrl-C
+stops the run where it is, still reports it and writes the trace, and exits
+130; a reader that goes away (``| head``) does the same with 141.
 """
 
 from __future__ import annotations
 
 import json
 import math
+import os
 import sys
 from pathlib import Path
 
@@ -37,12 +40,14 @@ from mintlang.runtime.scenario import (
     render_outcomes,
 )
 from mintlang.runtime.scenario.stimulus import Scenario
-from mintlang.runtime.simulation import Limits
+from mintlang.runtime.simulation import Interrupt, Limits
 from mintlang.runtime.trace import PlotUnavailable, Trace
 from mintlang.source import read_source
 
 _USAGE_ERROR = 2
 _FAILED = 1
+_INTERRUPTED = 130  # 128 + SIGINT: what a shell reports for a program Ctrl-C ended
+_BROKEN_PIPE = 141  # 128 + SIGPIPE: what a shell reports for a writer whose reader went away
 _TRACE_AXES = "'--trace-axes'"
 _PROGRESS_STEP_MS = 100  # simulated time between updates of the progress bar
 
@@ -59,6 +64,8 @@ def _axes_list(text: str | None, controller: ControllerProfile) -> tuple[int, ..
         if axis not in controller.axes:
             message = f"axis {axis}: the {controller.title} has axes {controller.axes}"
             raise click.BadParameter(message, param_hint=_TRACE_AXES)
+    if not axes:
+        raise click.BadParameter("name at least one axis, e.g. 0", param_hint=_TRACE_AXES)
     if len(set(axes)) != len(axes):
         raise click.BadParameter(f"{text!r} names an axis twice", param_hint=_TRACE_AXES)
     return axes
@@ -159,9 +166,10 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     )
     if trace_axes is not None and not tracing:
         raise click.UsageError("--trace-axes chooses the axes of --trace or --plot; give one of them")
-    axes = _axes_list(trace_axes, profile(controller))
-    trace = Trace(axes) if tracing and axes is not None else None
-    recorders = _Recorders(trace, tracing, errors, until_ms)
+    simulated = profile(controller)
+    axes = _axes_list(trace_axes, simulated) or tuple(range(simulated.axis_count))
+    recorders = _Recorders(Trace(axes) if tracing else None, errors, until_ms)
+    stdout = _Stdout()
     try:
         with recorders.progress:
             result = run_source(
@@ -170,13 +178,13 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
                 controller=ControllerName(controller),
                 scenario=scenario,
                 limits=limits,
-                echo=_echo,
+                echo=stdout.write,
                 on_tick=recorders.on_tick,
             )
     except (ScenarioFileError, PortUnavailable) as error:
         click.echo(f"mint-run: {error}", err=True)
         sys.exit(_USAGE_ERROR)
-    sys.stdout.flush()
+    stdout.flush()
     _describe_stop(result, errors)
     if result.outcomes:
         render_outcomes(result.outcomes, errors)
@@ -189,6 +197,8 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     except OSError as error:
         click.echo(f"mint-run: cannot write {error.filename}: {error.strerror or error}", err=True)
         sys.exit(_USAGE_ERROR)
+    if result.stop.reason is StopReason.INTERRUPTED:
+        sys.exit(_BROKEN_PIPE if stdout.closed else _INTERRUPTED)
     if expect_paths:
         if not result.outcomes:
             click.echo(
@@ -199,8 +209,29 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     sys.exit(0 if normal and all_held(result.outcomes) else _FAILED)
 
 
-def _echo(text: str) -> None:
-    sys.stdout.write(text)
+class _Stdout:
+    """Where the program's terminal output streams; a reader that goes away (``| head``) ends the run quietly."""
+
+    def __init__(self) -> None:
+        self.closed = False
+
+    def write(self, text: str) -> None:
+        try:
+            sys.stdout.write(text)
+        except BrokenPipeError:
+            self.close()
+            raise Interrupt("stdout was closed (broken pipe)") from None
+
+    def flush(self) -> None:
+        try:
+            sys.stdout.flush()
+        except BrokenPipeError:
+            self.close()
+
+    def close(self) -> None:
+        """Send what is still to come (buffered output, the JSON report) nowhere, without another error at exit."""
+        self.closed = True
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
 
 
 def _scenario(paths: tuple[Path, ...], controller: ControllerProfile) -> Scenario:
@@ -213,9 +244,8 @@ def _scenario(paths: tuple[Path, ...], controller: ControllerProfile) -> Scenari
 class _Recorders:
     """The per-tick observers of a run: the trace and the progress bar."""
 
-    def __init__(self, trace: Trace | None, tracing: bool, console: Console, until_ms: int | None) -> None:
+    def __init__(self, trace: Trace | None, console: Console, until_ms: int | None) -> None:
         self.trace = trace
-        self.tracing = tracing
         self.console = console
         self.progress = Progress(
             TextColumn("simulated {task.completed:.0f} ms"),
@@ -234,9 +264,7 @@ class _Recorders:
     def on_tick(self, controller: Controller, tick: int) -> None:
         if tick == 0 and controller.server is not None:
             self.console.print(f"host port: 127.0.0.1:{controller.server.port}", highlight=False)
-        if self.tracing:
-            if self.trace is None:
-                self.trace = Trace(tuple(range(len(controller.axes))))
+        if self.trace is not None:
             self.trace.record(controller, tick)
         if tick - self.shown >= _PROGRESS_STEP_MS:
             self.shown = tick

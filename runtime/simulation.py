@@ -24,6 +24,10 @@ from mintlang.runtime.interpreter.vm import StopReason
 WALL_CHECK_EVERY = 256  # processed ticks between looks at the wall clock
 
 
+class Interrupt(Exception):
+    """Raised by an observer of the run (the terminal's echo, a tick callback) to end it now; the message says why."""
+
+
 @dataclass(frozen=True, slots=True)
 class Limits:
     until_ms: int | None = None
@@ -131,6 +135,7 @@ class Simulator:
         return max(soonest, t + 1)
 
     def run(self) -> Stop:
+        """Run to the end, a limit, a deadlock, Ctrl-C or an ``Interrupt``; each becomes the ``Stop`` it returns."""
         c = self.c
         vm = c.vm
         limits = self.limits
@@ -164,6 +169,10 @@ class Simulator:
                     if limits.realtime and following / 1000.0 > elapsed:
                         time.sleep(following / 1000.0 - elapsed)
                 t = following
+        except KeyboardInterrupt:  # stop where the program is, so the report and trace still come out
+            vm.stop(StopReason.INTERRUPTED, "Ctrl-C")
+        except Interrupt as why:
+            vm.stop(StopReason.INTERRUPTED, str(why))
         finally:
             if c.server is not None:
                 c.server.close()

@@ -31,6 +31,7 @@ class StopReason(StrEnum):
     UNTIL = "until"
     DEADLOCK = "deadlock"
     WALL_LIMIT = "wall-limit"
+    INTERRUPTED = "interrupted"  # Ctrl-C, or whoever reads the output went away
 
 
 @dataclass(frozen=True, slots=True)

@@ -5,18 +5,22 @@ from __future__ import annotations
 import errno
 import importlib.util
 import json
+import os
+import signal
 import socket
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
 from click.testing import CliRunner, Result
 
-from mintlang.cli import main
+from mintlang.runtime.cli import run
 from mintlang.runtime.trace import Trace
 
 
 def mint_run(*arguments: str | Path) -> Result:
-    return CliRunner().invoke(main, ["run", *(str(argument) for argument in arguments)])
+    return CliRunner().invoke(run, [str(argument) for argument in arguments])
 
 
 def write(directory: Path, name: str, text: str) -> Path:
@@ -81,7 +85,12 @@ def test_an_infinite_wall_clock_limit_means_none(tmp_path: Path) -> None:
 
 @pytest.mark.parametrize(
     ("axes", "complaint"),
-    [("12", "axis 12: the NextMove PCI has axes 0 to 11"), ("-1", "axis -1"), ("0,0", "names an axis twice")],
+    [
+        ("12", "axis 12: the NextMove PCI has axes 0 to 11"),
+        ("-1", "axis -1"),
+        ("0,0", "names an axis twice"),
+        (",", "name at least one axis"),
+    ],
 )
 def test_trace_axes_must_be_axes_of_the_controller_each_once(tmp_path: Path, axes: str, complaint: str) -> None:
     result = mint_run(write(tmp_path, "p.mnt", "WAIT = 5\n"), "--trace", tmp_path / "t.csv", "--trace-axes", axes)
@@ -178,3 +187,49 @@ def test_a_trace_that_fails_to_write_after_the_run_keeps_the_report(
     assert json.loads(result.stdout)["stopped"] == "end"
     assert "end after 5 ms" in result.stderr
     assert result.stderr.endswith(f"mint-run: cannot write {trace}: No space left on device\n")
+
+
+def start(program: Path, *arguments: str | Path) -> subprocess.Popen[str]:
+    """``mint-run`` in its own process, with Ctrl-C at its default (a shell's background job ignores it)."""
+    return subprocess.Popen(
+        [sys.executable, "-m", "mintlang.runtime", str(program), *(str(argument) for argument in arguments)],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env={**os.environ, "COLUMNS": "200", "PYTHONUNBUFFERED": "1"},  # each line as soon as it is printed
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),  # noqa: PLW1509 - no threads yet
+    )
+
+
+def test_ctrl_c_stops_the_run_and_still_reports_it_and_writes_the_trace(tmp_path: Path) -> None:
+    program = write(tmp_path, "forever.mnt", 'PRINT "started"\nDIM i\nLOOP\n  i = i + 1\nENDL\n')
+    trace = tmp_path / "t.csv"
+    process = start(program, "--max-wall-s", "30", "--trace", trace, "--report", "json")
+    try:
+        assert process.stdout is not None
+        assert process.stdout.readline() == "started\n"
+        process.send_signal(signal.SIGINT)
+        stdout, stderr = process.communicate(timeout=30)
+    finally:
+        process.kill()
+    assert process.returncode == 130
+    assert "Traceback" not in stderr
+    assert "interrupted after" in stderr and "— Ctrl-C" in stderr
+    assert json.loads(stdout)["stopped"] == "interrupted"
+    assert trace.read_text().startswith("time_ms,")
+
+
+def test_a_reader_that_goes_away_ends_the_run_quietly(tmp_path: Path) -> None:
+    program = write(tmp_path, "flood.mnt", f'LOOP\n  PRINT "{"x" * 80}"\nENDL\n')
+    process = start(program, "--max-wall-s", "30")
+    try:
+        assert process.stdout is not None and process.stderr is not None
+        process.stdout.readline()
+        process.stdout.close()  # as `| head -1` does after its line
+        stderr = process.stderr.read()
+        process.wait(timeout=30)
+    finally:
+        process.kill()
+    assert process.returncode == 141
+    assert "Traceback" not in stderr and "Exception ignored" not in stderr
+    assert "stdout was closed (broken pipe)" in stderr

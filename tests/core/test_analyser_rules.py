@@ -322,6 +322,14 @@ def test_scaled_keywords_are_not_range_checked() -> None:
 # ------------------------------------------------------------------ arrays
 
 
+def test_an_arrays_size_and_values_are_numbers_not_expressions() -> None:
+    # 000:9171: <no_of_elements> and <array values> are Mint numbers and not expressions
+    source = "DIM n = 5\nDIM a(n)\nDIM b(2*5)\nDIM c(2) = n, 2\nPRINT n, a(1), b(1), c(1)\n"
+    assert found(source) == [("E2003", ERROR, 2), ("E2003", ERROR, 3), ("E2003", ERROR, 4)]
+    numbers = "DIM e(4) = -1, 0x10, 'A', _TRUE\nPRINT e(1)\n"
+    assert found(numbers) == []
+
+
 def test_a_constant_index_outside_the_array_is_error_2016() -> None:
     # line 19038: indices are in the range 1 <= index <= size
     source = "DIM a(10)\na(0) = 1\na(11) = 2\na(10) = 3\na(1) = 4\nPRINT a(12)\n"

@@ -1,5 +1,7 @@
-"""Array elements: indices known at compile time must lie in 1 .. size, and only
-arrays have elements (error 2016, "Invalid index", 12.4).
+"""Arrays: indices known at compile time must lie in 1 .. size, and only arrays
+have elements (error 2016, "Invalid index", 12.4); an array's size and initial
+values are numbers written in its DIM, not expressions (DIM, 000:9167-9171),
+because the compiler reserves and fills the array (2003 otherwise).
 """
 
 from __future__ import annotations
@@ -10,9 +12,33 @@ from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import Facts
 from mintlang.semantic.constants import constant_integer
 from mintlang.semantic.symbols import SymbolKind
+from mintlang.syntax import nodes as n
+
+_NUMBERS = (n.Number, n.CharConstant, n.ConstantRef)
+
+
+def _is_number(expression: n.Expression) -> bool:
+    """A number as written: a literal, a character, a predefined constant, or one of them negated."""
+    if isinstance(expression, n.Unary) and expression.operator in ("-", "+"):
+        expression = expression.operand
+    return isinstance(expression, _NUMBERS)
+
+
+def _compile_time_values(facts: Facts) -> Iterator[Finding]:
+    for unit, _, statement in facts.statements:
+        if not isinstance(statement, n.Dim) or statement.size is None:
+            continue
+        if not _is_number(statement.size):
+            detail = f"the size of {statement.name.text} must be a number, not an expression"
+            yield Finding(unit, mint_error(2003, statement.size.span, detail))
+        for value in statement.values:
+            if not _is_number(value):
+                detail = f"the values of {statement.name.text} must be numbers, not expressions"
+                yield Finding(unit, mint_error(2003, value.span, detail))
 
 
 def check(facts: Facts) -> Iterator[Finding]:
+    yield from _compile_time_values(facts)
     model = facts.model
     dialect = model.program.dialect
     for unit, element in facts.elements:

@@ -24,6 +24,7 @@ OWN_CODES: dict[str, str] = {
     "W110": "Block never closed",
     "W111": "Line too long",
     "W112": "EXIT outside a loop",
+    "W113": "GOTO out of a block",
     "I201": "Faster dot syntax",
 }
 

@@ -1,12 +1,16 @@
 """Control flow a reader can get wrong: dead code, falling into subroutines, jumps out of blocks.
 
 * Statements after END, RETURN, GOTO or EXIT that nothing can reach (W106).
+  A lone END or RETURN right after an endless main loop is the manual's own
+  program structure (line 279: "#main / LOOP .. ENDL / RETURN") and is not reported.
 * Main program code that runs on into the first subroutine without END:
   its RETURN then fails with error 2010 (the manual's own example, 12.4).
   Reported at that RETURN as a warning: the file may be a fragment.
-* A subroutine without RETURN that runs on into the next one (W107).
-* GOTO out of an open IF block or loop: the block is never closed, and done
-  repeatedly this overflows the controller's stack (2015, see GOTO in 10.3).
+* A subroutine without RETURN that runs on into the next one (W107). A label
+  that only GOTO reaches is a place in the code around it, not a subroutine.
+* GOTO out of an open IF block or loop (W113): the block is never closed, and
+  done repeatedly this "will eventually" overflow the controller's stack (GOTO
+  in 10.3). The overflow happens at run time, so the analyser only warns.
 * EXIT outside any loop (W112).
 
 An endless loop (LOOP, WHILE 1, REPEAT .. UNTIL 0) that no EXIT or GOTO leaves
@@ -22,15 +26,17 @@ from dataclasses import dataclass
 from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Severity
-from mintlang.semantic.blocks import LOOPS, Block
+from mintlang.semantic.blocks import Block
 from mintlang.semantic.constants import constant_value
+from mintlang.semantic.events import event_of
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
 
 _TERMINATORS = frozenset({"END", "RETURN", "EXIT"})
-_RECEIVERS = frozenset({"ELSE", "ENDIF", "NEXT", "ENDW", "ENDL"})  # reached from elsewhere in their block
+_RECEIVERS = frozenset({"NEXT", "ENDW", "ENDL"})  # reached from elsewhere in their block
+_LAST_WORDS = frozenset({"END", "RETURN"})
 
 
 def _ends_flow(statement: n.Statement) -> bool:
@@ -48,8 +54,24 @@ def _receives_flow(statement: n.Statement) -> bool:
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     for unit, document in model.documents():
-        yield from _Flow(unit, document).findings()
+        yield from _Flow(unit, document, _subroutines(unit, model, facts.statements)).findings()
         yield from _jumps_out_of_blocks(unit, document, model, facts.statements)
+
+
+def _subroutines(
+    unit: Unit, model: SemanticModel, statements: tuple[tuple[Unit, n.Line, n.Statement], ...]
+) -> frozenset[str]:
+    """Labels that start a subroutine: called by GOSUB, called by the controller, or never jumped to at all."""
+    gosubs = {
+        statement.label.identity  # type: ignore[union-attr]
+        for file, _, statement in statements
+        if file is unit and type(statement) is n.Jump and statement.word == "GOSUB"  # type: ignore[union-attr]
+    }
+    return frozenset(
+        identity
+        for identity, symbol in model.symbols.labels[unit].items()
+        if identity in gosubs or not symbol.references or event_of(symbol.name, model.program.dialect) is not None
+    )
 
 
 @dataclass(slots=True)
@@ -58,18 +80,29 @@ class _Loop:
     left: bool = False  # an EXIT or GOTO inside may leave it
 
 
+@dataclass(slots=True)
+class _If:
+    """An open IF .. DO: the code after ENDIF runs if either branch gets there."""
+
+    entered: bool  # the IF .. DO itself can run
+    through_then: bool | None = None  # the THEN branch runs to its end; None before the ELSE
+
+
 class _Flow:
     """Follows one file top to bottom, as the controller runs it when nothing jumps."""
 
-    def __init__(self, unit: Unit, document: Document) -> None:
+    def __init__(self, unit: Unit, document: Document, subroutines: frozenset[str]) -> None:
         self.unit = unit
         self.document = document
+        self.subroutines = subroutines
         self.reachable = True
         self.reported = False  # one W106 per unreachable run
+        self.after_endless_loop = False  # unreachable only because an endless loop just closed
         self.running = False  # some statement has run since the last entry point
         self.subroutine: n.Name | None = None  # None while in the main program
         self.falling_from_main = False
         self.loops: list[_Loop] = []
+        self.ifs: list[_If] = []
 
     def findings(self) -> Iterator[Finding]:
         for line in self.document.lines:
@@ -79,6 +112,9 @@ class _Flow:
                 yield from self._statement(statement)
 
     def _entry(self, label: n.Name) -> Iterator[Finding]:
+        if label.identity not in self.subroutines:  # a GOTO target: the same routine goes on
+            self.reachable, self.reported = True, False
+            return
         if self.reachable and self.running:
             if self.subroutine is None:
                 self.falling_from_main = True
@@ -90,12 +126,15 @@ class _Flow:
         self.subroutine, self.reachable, self.reported, self.running = label, True, False, False
 
     def _statement(self, statement: n.Statement) -> Iterator[Finding]:
+        if_bound = self._if_bounds(statement)  # ELSE and ENDIF are never dead code themselves
         if _receives_flow(statement):
             self.reachable = True
-        elif not self.reachable and not self.reported:
+        elif not (if_bound or self.reachable or self.reported or self._closes_main_loop(statement)):
             yield Finding(self.unit, own("W106", statement.span, "this code can never run"))
             self.reported = True
-        self.running = self.running or self.reachable
+        self.after_endless_loop = False
+        if self.reachable:
+            self.reported, self.running = False, True
         if type(statement) is n.IfThen:
             for inner in n.walk_statements((statement,)):
                 yield from self._jumps(inner)
@@ -122,6 +161,31 @@ class _Flow:
             yield Finding(self.unit, mint_error(2010, statement.span, detail, severity=Severity.WARNING))
             self.falling_from_main = False
 
+    def _closes_main_loop(self, statement: n.Statement) -> bool:
+        """A lone END or RETURN straight after an endless loop: the manual's program structure."""
+        return self.after_endless_loop and type(statement) is n.BlockWord and statement.word in _LAST_WORDS  # type: ignore[union-attr]
+
+    def _if_bounds(self, statement: n.Statement) -> bool:
+        """Follow IF .. DO, ELSE and ENDIF; True for ELSE and ENDIF, which are never dead code themselves."""
+        kind = type(statement)
+        if kind is n.IfDo:
+            self.ifs.append(_If(entered=self.reachable))
+            return False
+        if kind is not n.BlockWord or statement.word not in ("ELSE", "ENDIF"):  # type: ignore[union-attr]
+            return False
+        if not self.ifs:  # a closer without IF (2011): reached from nowhere the flow knows
+            self.reachable = True
+            return True
+        block = self.ifs[-1]
+        if statement.word == "ELSE":  # type: ignore[union-attr]
+            block.through_then = self.reachable
+            self.reachable = block.entered  # the condition was false
+        else:
+            self.ifs.pop()
+            skipped = block.entered if block.through_then is None else block.through_then
+            self.reachable = self.reachable or skipped
+        return True
+
     def _loop_bounds(self, statement: n.Statement) -> None:
         """Open and close loops; after an endless loop nothing that follows runs."""
         dialect = self.document.dialect
@@ -144,6 +208,7 @@ class _Flow:
     def _close(self, loop: _Loop) -> None:
         if loop.endless and not loop.left:
             self.reachable = False
+            self.after_endless_loop = True
             self.falling_from_main = False
 
 
@@ -163,13 +228,11 @@ def _jumps_out_of_blocks(
             continue
         left = [block for block in blocks if _contains(block, line.number) and not _contains(block, target)]
         if left:
-            kind = left[-1].kind
-            what = "loop" if kind in LOOPS else "IF block"
             detail = (
-                f"GOTO {statement.label.text} leaves the {kind.value} {what} of line {left[-1].opener_line} "
-                "open; repeated, this overflows the stack"
+                f"GOTO {statement.label.text} leaves the {left[-1].kind.value} block of line {left[-1].opener_line} "
+                "open; done repeatedly, this overflows the stack (error 2015)"
             )
-            yield Finding(unit, mint_error(2015, statement.span, detail))
+            yield Finding(unit, own("W113", statement.span, detail))
 
 
 def _contains(block: Block, line: int) -> bool:

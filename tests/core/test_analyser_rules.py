@@ -427,6 +427,16 @@ def test_a_macro_never_used_is_a_warning() -> None:
     assert found("DEFINE slowSpeed = 1000\nDEFINE fastSpeed = 5\nSPEED = fastSpeed\n") == [("W105", WARNING, 1)]
 
 
+def test_a_routine_of_only_dims_never_called_keeps_variables_non_volatile() -> None:
+    # line 958: "non-volatile variables can be set-up by assigning them in a subroutine, but never calling the routine"
+    source = (
+        "GOSUB init\nEND\n#non_volatile\nDIM my_var1\nREM kept\nDIM my_var2\n\nRETURN\n"
+        "#init\nmy_var1 = my_var1 + my_var2\nRETURN\n"
+    )
+    assert found(source) == []
+    assert found(source.replace("REM kept", "PRINT 1")) == [("W104", WARNING, 3)]
+
+
 def test_event_handlers_are_never_unused() -> None:
     assert found("END\n#ONERROR\nRETURN\n#TIMER\nRETURN\n#IN1\nRETURN\n") == []
 

@@ -244,6 +244,13 @@ def test_more_values_than_listed_axes_is_error_2017() -> None:
     assert found("MOVEA[0,1,2] = 10,20\n") == []
 
 
+def test_a_one_axis_controller_takes_one_value_for_its_default_axes() -> None:
+    # 000:572: no more values than axes; on MintDrive and ServoNode the axes can only be [0] (#2017, 19047)
+    source = "SPEED = 1,2\nSPEED = ,5\nSPEED = 3\n"
+    assert found(source, controller="mintdrive") == [("E2017", ERROR, 1), ("E2017", ERROR, 2)]
+    assert found(source) == []  # NextMove PCI: the default axes may be several
+
+
 def test_an_axis_listed_twice_is_error_2018() -> None:
     # line 19053: AXES[0,1,1,2] and SPEED [2,2,3] = 5000;
     assert found("SPEED[2,2,3] = 5000;\n") == [("E2018", ERROR, 1)]

@@ -64,10 +64,14 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     db = database()
     for use in facts.keyword_uses:
-        if use.keyword.selector is None and use.keyword.channel is None:
-            continue  # nothing addressed: the default axes, or a keyword that takes none
         keyword = db.keywords.get(use.keyword.keyword)
         if keyword is None:
+            continue
+        if use.keyword.selector is None and use.keyword.channel is None:
+            # Nothing addressed: the default axes, whatever AXES made them, except on a one-axis
+            # controller, where they can only be axis 0 (000:572, #2017 at 19047).
+            if keyword.addressing is Addressing.AXIS and model.controller.axis_count == 1:
+                yield from _values_for_axes(use, 1, keyword.name)
             continue
         if keyword.name.startswith("REMOTE"):
             yield from _can_address(use)
@@ -88,21 +92,26 @@ def _axes(use: KeywordUse, model: SemanticModel, name: str) -> Iterator[Finding]
         return
     if not selector.dot:
         yield from _axis_list(use.unit, selector, model)
-        statement = use.statement
-        if (
-            use.use is Use.WRITE
-            and isinstance(statement, n.KeywordStatement)
-            and statement.values is not None
-            and len(statement.values) > len(selector.items)
-            and name not in _MORE_VALUES_THAN_AXES
-        ):
-            extra = statement.values[len(selector.items)]
-            span = extra.span if extra is not None else statement.span
-            detail = f"{len(statement.values)} values for {len(selector.items)} axes"
-            yield Finding(use.unit, mint_error(2017, span, detail))
+        yield from _values_for_axes(use, len(selector.items), name)
         return
     for item in selector.items[:1]:
         yield from _axis_number(use.unit, item, model)
+
+
+def _values_for_axes(use: KeywordUse, axes: int, name: str) -> Iterator[Finding]:
+    """More values written than there are axes to take them: 2017 at the first one too many."""
+    statement = use.statement
+    if (
+        use.use is Use.WRITE
+        and isinstance(statement, n.KeywordStatement)
+        and statement.values is not None
+        and len(statement.values) > axes
+        and name not in _MORE_VALUES_THAN_AXES
+    ):
+        extra = statement.values[axes]
+        span = extra.span if extra is not None else statement.span
+        detail = f"{len(statement.values)} values for {axes} ax{'is' if axes == 1 else 'es'}"
+        yield Finding(use.unit, mint_error(2017, span, detail))
 
 
 def _axis_list(unit: Unit, selector: n.Selector, model: SemanticModel) -> Iterator[Finding]:

@@ -7,6 +7,7 @@ Exit status: 0 when no diagnostic of error severity was found, 1 when one was,
 from __future__ import annotations
 
 import sys
+from collections import Counter
 from pathlib import Path
 
 import click
@@ -17,11 +18,12 @@ from mintlang.cli.files import collect, is_configuration
 from mintlang.cli.options import controller_option
 from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, render_text
 from mintlang.codes import known_codes
-from mintlang.diagnostics import Severity
+from mintlang.diagnostics import Diagnostic, Severity
 from mintlang.dialect import Dialect
 from mintlang.source import SourceFile, read_source
 
 _USAGE_ERROR = 2
+_USE_FINDINGS = frozenset({"W103", "W105"})  # unused variable, macro: a use in any program counts
 
 
 def _codes(value: str | None, option: str) -> tuple[str, ...] | None:
@@ -91,9 +93,10 @@ def check(
         _fail("no .mnt files found in " + ", ".join(str(p) for p in paths))
 
     reports: list[FileReport] = []
-    if configuration is not None:
-        reports.append(_configuration_report(configuration, options))
+    seen_by_programs: list[tuple[Diagnostic, ...]] = []  # the configuration's findings with each program
     for path in files:
+        if configuration is not None and is_configuration(path) and _same_file(path, configuration.path):
+            continue  # named twice, as --config and as a path: checked once, with the programs
         try:
             source = read_source(path)
         except OSError as error:
@@ -105,6 +108,13 @@ def check(
             config_text = configuration.text if configuration is not None else None
             analysis = check_application(source.text, config=config_text, **options)  # type: ignore[arg-type]
             reports.append(FileReport(str(path), source.text, analysis.program))
+            seen_by_programs.append(analysis.configuration)
+    if configuration is not None:
+        if seen_by_programs:
+            diagnostics = _configuration_with_programs(seen_by_programs)
+            reports.insert(0, FileReport(str(configuration.path), configuration.text, diagnostics))
+        else:
+            reports.insert(0, _configuration_report(configuration, options))
 
     if output_format == "json":
         click.echo(as_json(reports))
@@ -118,6 +128,20 @@ def check(
         render_text(reports, Console(highlight=False, soft_wrap=True))
     failed = any(d.severity is Severity.ERROR for report in reports for d in report.diagnostics)
     sys.exit(1 if failed else 0)
+
+
+def _same_file(path: Path, other: Path) -> bool:
+    try:
+        return path.samefile(other)
+    except OSError:
+        return False
+
+
+def _configuration_with_programs(seen_by_programs: list[tuple[Diagnostic, ...]]) -> tuple[Diagnostic, ...]:
+    """The configuration's findings, each once; a name is unused only if no program uses it."""
+    counts: Counter[Diagnostic] = Counter(d for diagnostics in seen_by_programs for d in dict.fromkeys(diagnostics))
+    kept = [d for d, count in counts.items() if d.code not in _USE_FINDINGS or count == len(seen_by_programs)]
+    return tuple(sorted(kept, key=lambda d: (d.span.start, d.span.end, d.code)))
 
 
 def _configuration_report(source: SourceFile, options: dict[str, object]) -> FileReport:

@@ -207,6 +207,22 @@ def test_config_makes_its_variables_visible_to_the_program(tmp_path: Path) -> No
     assert [(r["path"], r["code"]) for r in json.loads(result.stdout) if r["path"] == str(program)] == []
 
 
+def test_a_configuration_name_any_program_uses_is_not_unused(tmp_path: Path) -> None:
+    config = write(tmp_path, "setup.cfg", "DEFINE fast = 100\nDIM jobCount = 1\nDIM spare\n")
+    uses = write(tmp_path, "uses.mnt", "SPEED = fast\nPRINT jobCount\n")
+    other = write(tmp_path, "other.mnt", CLEAN)
+    records = json_records("--config", config, uses, other)
+    assert [(r["code"], r["line"]) for r in records if r["path"] == str(config)] == [("W103", 3)]
+
+
+def test_a_configuration_named_as_config_and_as_a_path_is_reported_once(tmp_path: Path) -> None:
+    config = write(tmp_path, "setup.cfg", "DIM spare\nPRINT missing\n")
+    program = write(tmp_path, "main.mnt", CLEAN)
+    once = json_records("--config", config, program)
+    assert json_records("--config", config, config, program) == once
+    assert [r["code"] for r in once if r["path"] == str(config)] == ["W103", "E3001"]
+
+
 def test_a_missing_config_file_exits_with_2(tmp_path: Path) -> None:
     program = write(tmp_path, "main.mnt", CLEAN)
     result = mint_check("--config", tmp_path / "absent.cfg", program)

@@ -19,6 +19,7 @@ from collections import Counter
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
+from mintlang.allocation import without_collector
 from mintlang.diagnostics import LineIndex, Severity, Span
 from mintlang.migrate.context import MARKER, Context, FileView
 from mintlang.migrate.model import Change, ManualItem, Phase
@@ -78,19 +79,26 @@ class FileOutcome:
     errors: tuple[str, ...]  # what the v3 parser could not read in the original
 
 
+@without_collector  # the parse trees are acyclic and large: collections would walk them again and again
 def run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> dict[Unit, FileOutcome]:
-    """Migrate the files of one application with ``rules`` (already filtered and ordered)."""
+    """Migrate the files of one application with ``rules`` (already filtered and ordered).
+
+    A pass that changed nothing leaves its context valid: the next phase starts from it
+    instead of parsing the same text again.
+    """
     states = {unit: _FileState(text, text, LineIndex(text)) for unit, text in texts.items()}
-    original = Context.build(texts, controller)
-    errors = {unit: _unreadable(file) for unit, file in original.files.items()}
+    context: Context | None = Context.build(texts, controller)
+    errors = {unit: _unreadable(file) for unit, file in context.files.items()}
     for phase in Phase:
         active = [rule for rule in rules if rule.phase is phase]
         if not active:
             continue
         for _ in range(MAX_PASSES):
-            context = Context.build({unit: state.text for unit, state in states.items()}, controller)
+            if context is None:
+                context = Context.build({unit: state.text for unit, state in states.items()}, controller)
             if not _apply_pass(context, active, states):
                 break
+            context = None  # stale: dropped before the next parse, so two trees are never alive at once
         else:  # pragma: no cover - guards against a rule that never settles
             raise RuntimeError(f"phase {phase} did not reach a fixed point")
     return {unit: _outcome(state, errors[unit]) for unit, state in states.items()}

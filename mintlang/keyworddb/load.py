@@ -41,7 +41,10 @@ def _read(name: str) -> list[dict[str, Any]]:
 
 
 def _range(raw: dict[str, Any] | None) -> ValueRange | None:
-    return None if raw is None else ValueRange(raw["text"], raw["minimum"], raw["maximum"], raw["fractional"])
+    if raw is None:
+        return None
+    included = raw.get("minimum_included", True), raw.get("maximum_included", True)
+    return ValueRange(raw["text"], raw["minimum"], raw["maximum"], raw["fractional"], *included)
 
 
 def _attributes(raw: dict[str, Any]) -> Attributes:

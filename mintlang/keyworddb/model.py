@@ -52,6 +52,14 @@ class ValueRange:
     minimum: float | None
     maximum: float | None
     fractional: bool  # the printed range has a decimal part, so fractions are accepted
+    minimum_included: bool = True  # "0 < x" leaves the bound out
+    maximum_included: bool = True  # "x < 4096" likewise
+
+    def holds(self, value: float) -> bool:
+        """Whether ``value`` lies in the range (True when a bound is not known)."""
+        above = self.minimum is None or value > self.minimum or (self.minimum_included and value == self.minimum)
+        below = self.maximum is None or value < self.maximum or (self.maximum_included and value == self.maximum)
+        return above and below
 
 
 @dataclass(frozen=True, slots=True)

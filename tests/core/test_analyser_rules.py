@@ -320,6 +320,12 @@ def test_a_constant_outside_the_keywords_range_is_error_3() -> None:
     assert found("SCALE = 10\n") == []
 
 
+def test_a_bound_printed_with_less_than_is_left_out() -> None:
+    # 000:14910-14913: OUT is 0 ≤ x < 4096 on NextMove PCI and 0 ≤ x < 256 on NextMove BX
+    assert found("OUT = 4096\nOUT = 4095\n") == [("E3", ERROR, 1)]
+    assert found("OUT = 256\nOUT = 255\n", controller="nextmove-bx") == [("E3", ERROR, 1)]
+
+
 def test_scaled_keywords_are_not_range_checked() -> None:
     # the range of a scaled keyword applies to the value times the scale factor (line 5649)
     assert found("SPEED = -5\n") == []

@@ -223,6 +223,13 @@ def test_v3_lookups(db: KeywordDatabase) -> None:
     assert in3 is not None and in3.name == "IN3" and in3.v4_names == ("IN",)
 
 
+def test_a_range_knows_which_bounds_it_includes(db: KeywordDatabase) -> None:
+    out = db.keywords["OUT"].attributes_for(Controller.NEXTMOVE_PCI)
+    assert out is not None and out.range is not None
+    assert (out.range.minimum_included, out.range.maximum_included) == (True, False)  # 0 ≤ x < 4096
+    assert out.range.holds(0) and out.range.holds(4095) and not out.range.holds(4096)
+
+
 def test_a_range_printed_on_two_lines_keeps_them_apart(db: KeywordDatabase) -> None:
     # 000:11961-11962: IN reads the whole word (0 ≤ x ≤ 1048575 on NextMove PCI) or one channel (0 or 1)
     row = db.keywords["IN"].attributes_for(Controller.NEXTMOVE_PCI)

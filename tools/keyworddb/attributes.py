@@ -25,7 +25,7 @@ _STOP = re.compile(r"^(On |LOOPTIME|Figure |Keyword Reference|MN1262|[A-Z][a-z]+
 _RANGE_START = re.compile(rf"^(?:{_NUMBER}\s*(?:[<≤]|{_DASH}|to\b|\.\.|,|or\b)|[Ss]ee\b|{_NUMBER}$)")
 _WHOLE_INTERVAL = re.compile(rf"^{_NUMBER}\s*[<≤]")
 """A range cell that starts the text at once: the Default cell was empty."""
-_INTERVAL = re.compile(rf"^(?P<min>{_NUMBER})\s*[<≤]\s*x\s*[<≤]\s*(?P<max>{_NUMBER})\s*(?:ms)?$")
+_INTERVAL = re.compile(rf"^(?P<min>{_NUMBER})\s*(?P<low>[<≤])\s*x\s*(?P<high>[<≤])\s*(?P<max>{_NUMBER})\s*(?:ms)?$")
 _SPAN = re.compile(rf"^(?P<min>{_NUMBER})\s*(?:{_DASH}|to|\.\.)\s*(?P<max>{_NUMBER})$")
 _CHOICES = re.compile(rf"^{_NUMBER}(?:\s*(?:,|,? or)\s*{_NUMBER})*$")
 _FLAG_COUNT = 5
@@ -153,8 +153,11 @@ def parse_range(text: str) -> ValueRange:
     compact = re.sub(r"\s+", " ", text.strip())
     # IN, OUT: the range of the whole word, then on its own line that of one channel ("0 or 1").
     compact = _CHANNEL_RANGE.sub(r"\1; one channel: \2", compact)
+    if match := _INTERVAL.match(compact):  # "0 ≤ x < 4096": a "<" leaves the bound out
+        low, high = _number(match["min"]), _number(match["max"])
+        return ValueRange(compact, low, high, fractional, match["low"] == "≤", match["high"] == "≤")
     bounds: tuple[float, float] | None = None
-    if match := _INTERVAL.match(compact) or _SPAN.match(compact):
+    if match := _SPAN.match(compact):
         bounds = _number(match["min"]), _number(match["max"])
     elif _CHOICES.match(compact):
         values = [_number(v) for v in re.findall(_NUMBER, compact)]

@@ -27,8 +27,7 @@ def check(facts: Facts) -> Iterator[Finding]:
         attributes = keyword.attributes_for(model.controller.controller) if keyword else None
         if attributes is None or attributes.scaled or attributes.range is None:
             continue
-        low, high = attributes.range.minimum, attributes.range.maximum
-        if low is None or high is None:
+        if attributes.range.minimum is None or attributes.range.maximum is None:
             continue
         for value in use.statement.values or ():
             number = constant_value(value, dialect)
@@ -36,6 +35,6 @@ def check(facts: Facts) -> Iterator[Finding]:
                 continue
             # Whole-number ranges are not enforced: the manual prints "0 ≤ x ≤ 10000" for KDERIV
             # and then writes KDERIV = 1.5 in its example.
-            if number < low or number > high:
+            if not attributes.range.holds(number):
                 detail = f"{number:g} is outside the range of {use.keyword.keyword} ({attributes.range.text})"
                 yield Finding(use.unit, mint_error(3, value.span, detail))

@@ -109,8 +109,11 @@ class _Matcher:
             problem = _nesting_problem(self.stack, self.limits)
             if problem is not None:
                 self.diagnostics.append(_error(2015, statement.span, problem))
-        elif isinstance(statement, n.Until):
+        elif isinstance(statement, n.Until) or (isinstance(statement, n.SyntaxError_) and statement.closes == "UNTIL"):
             self.close(BlockKind.REPEAT, statement, line, 2013, "UNTIL without REPEAT")
+        elif isinstance(statement, n.SyntaxError_) and statement.closes in _CLOSERS:
+            expected, code, message = _CLOSERS[statement.closes]
+            self.close(expected, statement, line, code, message)
         elif isinstance(statement, n.BlockWord) and statement.word == "ELSE":
             top = self.stack[-1] if self.stack else None
             if top is None or top.kind is not BlockKind.IF or top.middle is not None:

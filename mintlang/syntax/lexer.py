@@ -42,7 +42,8 @@ _LEXEME = re.compile(
             r"(?P<word>[A-Za-z_][A-Za-z0-9_]*)",
             r"(?P<number>0[xX][0-9A-Za-z_]*|[0-9][0-9A-Za-z_]*(?:\.[0-9]*)?|\.[0-9]+)",
             f"(?P<string>[{_DOUBLE}][^{_DOUBLE}\r\n]*[{_DOUBLE}]?)",
-            f"(?P<char>[{_SINGLE}][^{_SINGLE}\r\n]?[{_SINGLE}]?)",
+            # up to the closing quote, so that 'ab' is one bad constant, not two
+            f"(?P<char>[{_SINGLE}](?:[^{_SINGLE}\r\n]*[{_SINGLE}]|[^{_SINGLE}\r\n]?))",
             r"(?P<hash>\#[A-Za-z0-9_]*)",
             r"(?P<punct><>|<=|>=|[-<>=+*/%&|!~^()\[\],;:?.])",
             f"(?P<invalid>[^{_SPACE}\r\nA-Za-z0-9_{_DOUBLE}{_SINGLE}#<>=+*/%&|!~^()\\[\\],;:?.\\-]+)",

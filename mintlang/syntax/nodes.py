@@ -306,11 +306,13 @@ class SyntaxError_:
     """A statement that could not be parsed; its diagnostic is in ``Document.diagnostics``.
 
     ``opens`` names the block it still opens (``FOR loop = 1 TO 10`` opens a
-    FOR even though ``loop`` is a keyword), so its closer matches.
+    FOR even though ``loop`` is a keyword), so its closer matches; ``closes``
+    the closing word it still is (``NEXT a``), so its block is not left open.
     """
 
     span: Span
     opens: str | None = None
+    closes: str | None = None
 
 
 Statement = (

@@ -134,7 +134,8 @@ def _recover(
             statements.extend(result(_slice(line, begin, end), words)[1])
             continue
         span = Span(line.starts[begin], line.ends[end - 1])
-        statements.append(n.SyntaxError_(span, _opened_block(kinds[begin:end])))
+        broken = kinds[begin:end]
+        statements.append(n.SyntaxError_(span, _opened_block(broken), _closing_word(broken)))
         issue = _describe(line, begin, end, result)
         if issue is not None:
             diagnostics.append(issue)
@@ -151,6 +152,14 @@ def _opened_block(kinds: list[TokenKind]) -> str | None:
     if first is _K.IF and _K.DO in kinds:
         return "IF"
     return None
+
+
+_CLOSING_WORDS = frozenset({_K.NEXT, _K.ENDIF, _K.ENDW, _K.ENDL, _K.UNTIL})
+
+
+def _closing_word(kinds: list[TokenKind]) -> str | None:
+    """The closer a broken statement still is (``NEXT a``), so its block is not reported unclosed as well."""
+    return kinds[0].value if kinds[0] in _CLOSING_WORDS else None
 
 
 def _segments(kinds: list[TokenKind], start: int) -> list[tuple[int, int]]:

@@ -421,6 +421,17 @@ def test_a_declared_variable_named_like_an_old_keyword_is_not_renamed() -> None:
     assert [code for code, _, _ in found("DIM gain\nPRINT gain\n")] == []
 
 
+def test_a_character_constant_of_two_characters_is_one_syntax_error() -> None:
+    source = "DIM c\nc = 'ab'\nPRINT c\n"
+    assert found(source) == [("E2003", ERROR, 2)]
+    assert covered(source, only(source, "E2003")) == "'ab'"
+
+
+def test_next_with_its_index_name_is_a_syntax_error_that_still_closes_the_for() -> None:
+    # line 1712: "you must not append the index name after the NEXT statement"
+    assert found("DIM a\nFOR a = 1 TO 3\nNEXT a\n") == [("E2003", ERROR, 3)]
+
+
 def test_v3_keywords_are_not_reported_in_v3_code() -> None:
     assert mintlang.check("HMSPEED = 10\n", dialect="v3") == []
 

@@ -123,13 +123,22 @@ def test_a_label_defined_twice_is_error_3004_at_the_second() -> None:
     assert found("GOSUB twice\nEND\n#twice\nRETURN\n#TWICE\nRETURN\n") == [("E3004", ERROR, 5)]
 
 
-def test_a_number_cannot_name_a_macro() -> None:
-    # line 19103: DEFINE 100 = "100" is not valid (3005); nothing uses it either (W105)
-    assert found('DEFINE 100 = "100"\n') == [("E3005", ERROR, 1), ("W105", WARNING, 1)]
+def test_a_number_or_keyword_cannot_name_a_macro_and_defines_none_that_could_be_unused() -> None:
+    # line 19103: DEFINE 100 = "100" is not valid (3005)
+    assert found('DEFINE 100 = "100"\nDEFINE speed = 3\n') == [("E3005", ERROR, 1), ("E3005", ERROR, 2)]
 
 
 def test_a_macro_redefined_is_error_3005() -> None:
     assert found("DEFINE top = 10\nDEFINE top = 20\nPRINT top\n") == [("E3005", ERROR, 2)]
+
+
+def test_a_name_redefined_within_its_first_ten_characters_is_the_error_alone() -> None:
+    # line 1480: example_No1 and example_No2 are one macro; 3005 says why, W108 would say it again
+    macros = "DEFINE example_No1 = 1\nDEFINE example_No2 = 2\nPRINT example_No1\nPRINT example_No2\n"
+    assert found(macros) == [("E3005", ERROR, 2)]
+    labels = "GOSUB example_No1\nEND\n#example_No1\nRETURN\n#example_No2\nRETURN\n"
+    assert found(labels) == [("E3004", ERROR, 5)]
+    assert "('example_No1' has the same first ten characters)" in only(labels, "E3004").message
 
 
 def test_a_macro_whose_text_uses_another_macro_is_a_syntax_error() -> None:
@@ -459,6 +468,12 @@ def test_a_routine_of_only_dims_never_called_keeps_variables_non_volatile() -> N
     )
     assert found(source) == []
     assert found(source.replace("REM kept", "PRINT 1")) == [("W104", WARNING, 3)]
+
+
+@pytest.mark.parametrize("broken", ["FOR a = b 10\nNEXT\n", "IF (a<b) PRINT a\n"])
+def test_variables_named_in_a_statement_that_does_not_parse_are_not_called_unused(broken: str) -> None:
+    codes = [code for code, _, _ in found("DIM a\nDIM b\n" + broken)]
+    assert "W103" not in codes and len(codes) == 1
 
 
 def test_event_handlers_are_never_unused() -> None:

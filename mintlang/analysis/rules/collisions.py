@@ -2,7 +2,8 @@
 
 Only the first ten characters of a name count (3.2.5): ``thisIsAVariable1``
 and ``thisIsAVaraible2`` are one variable, which is rarely what the author
-meant.
+meant. A second definition of a macro or label is already an error (3005,
+3004) that says so, and gets no warning as well.
 """
 
 from __future__ import annotations
@@ -11,6 +12,9 @@ from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.traversal import Facts
+from mintlang.semantic.symbols import SymbolKind
+
+_DEFINED_ONCE = frozenset({SymbolKind.MACRO, SymbolKind.LABEL})
 
 
 def check(facts: Facts) -> Iterator[Finding]:
@@ -20,11 +24,14 @@ def check(facts: Facts) -> Iterator[Finding]:
         if first is None:
             continue
         reported: set[str] = {first.spelling.upper()}
+        redefinitions = symbol.definitions[1:] if symbol.kind in _DEFINED_ONCE else []
         for occurrence in symbol.occurrences():
             spelling = occurrence.spelling.upper()
             if spelling in reported:
                 continue
             reported.add(spelling)
+            if occurrence in redefinitions:
+                continue
             detail = (
                 f"'{occurrence.spelling}' is the same {symbol.kind.value} as '{first.spelling}': "
                 "only the first ten characters of a name count"

@@ -85,9 +85,10 @@ def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span) -> Fi
 def _labels(model: SemanticModel) -> Iterator[Finding]:
     for unit, table in model.symbols.labels.items():
         for symbol in table.values():
+            first = symbol.definitions[0].spelling if symbol.definitions else ""
             for duplicate in symbol.definitions[1:]:
-                first = symbol.definitions[0].spelling
-                yield Finding(unit, mint_error(3004, duplicate.span, f"label #{first} is defined twice"))
+                detail = f"label #{duplicate.spelling} is already defined{_same_ten(duplicate.spelling, first)}"
+                yield Finding(unit, mint_error(3004, duplicate.span, detail))
             if not symbol.definitions:
                 for reference in symbol.references:
                     elsewhere = _defined_in_other_file(model, unit, symbol)
@@ -113,16 +114,14 @@ def _macros(facts: Facts) -> Iterator[Finding]:
             continue
         first = symbol.definitions[0]
         for duplicate in symbol.definitions[1:]:
-            same = (
-                ""
-                if duplicate.spelling.upper() == first.spelling.upper()
-                else f" ('{first.spelling}' has the same first ten characters)"
-            )
-            yield Finding(
-                duplicate.unit,
-                mint_error(3005, duplicate.span, f"macro '{duplicate.spelling}' is already defined{same}"),
-            )
+            detail = f"macro '{duplicate.spelling}' is already defined{_same_ten(duplicate.spelling, first.spelling)}"
+            yield Finding(duplicate.unit, mint_error(3005, duplicate.span, detail))
     yield from _macro_in_macro(model)
+
+
+def _same_ten(spelling: str, first: str) -> str:
+    """Why two different spellings are one name."""
+    return "" if spelling.upper() == first.upper() else f" ('{first}' has the same first ten characters)"
 
 
 def _macro_in_macro(model: SemanticModel) -> Iterator[Finding]:

@@ -2,11 +2,14 @@
 
 Event handlers are called by the controller, so they are never unused. Nor is
 a routine of nothing but DIMs: never calling it is the manual's way to keep
-variables non-volatile (3.2.5).
+variables non-volatile (3.2.5). A variable named in a statement that could not
+be parsed may be used there, and a DEFINE that cannot name a macro (3005)
+defines none: neither gets a second finding.
 """
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, own
@@ -21,15 +24,21 @@ from mintlang.syntax.parser import Document
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     symbols = model.symbols
-    for symbol in symbols.variables.values():
-        if symbol.definitions and not symbol.references:
+    unused = [symbol for symbol in symbols.variables.values() if symbol.definitions and not symbol.references]
+    broken = _names_in_broken_statements(facts) if unused else set()
+    for symbol in unused:
+        if symbol.identity not in broken:
             first = symbol.definitions[0]
-            yield Finding(
-                first.unit, own("W103", first.span, f"variable '{first.spelling}' is declared but never used")
-            )
+            detail = f"variable '{first.spelling}' is declared but never used"
+            yield Finding(first.unit, own("W103", first.span, detail))
+    not_macros = {
+        (unit, statement.name.span)
+        for unit, _, statement in facts.statements
+        if type(statement) is n.Define and not statement.name_is_word
+    }
     for symbol in symbols.macros.values():
-        if symbol.definitions and not symbol.references:
-            first = symbol.definitions[0]
+        first = symbol.definitions[0] if symbol.definitions else None
+        if first is not None and not symbol.references and (first.unit, first.span) not in not_macros:
             yield Finding(first.unit, own("W105", first.span, f"macro '{first.spelling}' is defined but never used"))
     dialect = model.program.dialect
     never_called = [
@@ -44,6 +53,19 @@ def check(facts: Facts) -> Iterator[Finding]:
             first = symbol.definitions[0]
             detail = f"subroutine #{first.spelling} is never called by GOSUB or GOTO"
             yield Finding(first.unit, own("W104", first.span, detail))
+
+
+_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
+def _names_in_broken_statements(facts: Facts) -> set[str]:
+    sources = {unit: document.source for unit, document in facts.model.documents()}
+    return {
+        n.identity(word)
+        for unit, _, statement in facts.statements
+        if type(statement) is n.SyntaxError_
+        for word in _WORD.findall(sources[unit], statement.span.start, statement.span.end)
+    }
 
 
 def _declaring_routines(model: SemanticModel) -> set[tuple[Unit, str]]:

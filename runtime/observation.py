@@ -52,6 +52,13 @@ class Observation:
         return self.c.terminal.text
 
     @property
+    def printed(self) -> int:
+        return self.c.terminal.printed
+
+    def has_printed(self, text: str) -> bool:
+        return self.c.terminal.has_printed(text)
+
+    @property
     def axes(self) -> tuple[int, ...]:
         return tuple(range(len(self.c.axes)))
 

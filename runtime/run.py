@@ -20,7 +20,7 @@ from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.observation import AxisState, Observation, axis_state
 from mintlang.runtime.scenario import ScenarioFileError, merge, parse_directives
-from mintlang.runtime.scenario.expectations import Expectation, Outcome, evaluate, not_reached
+from mintlang.runtime.scenario.expectations import Expectation, Outcome, TerminalExpectation, evaluate, not_reached
 from mintlang.runtime.scenario.stimulus import Scenario
 from mintlang.runtime.simulation import Limits, Simulator, Stop
 
@@ -33,10 +33,11 @@ class RunResult:
     outputs: int
     relay: int
     axes: tuple[AxisState, ...]
-    terminal: str
+    terminal: str  # the output, or its last TRANSCRIPT_LIMIT characters (mint-run streams all of it)
     host_replies: tuple[tuple[int, bytes], ...]
     outcomes: tuple[Outcome, ...]
     inert_settings: tuple[str, ...] = ()  # settings the program wrote that the simulation does not model
+    terminal_dropped: int = 0  # characters printed before those ``terminal`` keeps
 
 
 def _not_run(reason: str, message: str, line: int | None, unit: str | None, statement: str | None) -> RunResult:
@@ -98,6 +99,9 @@ def run_source(
         else:
             unchecked[number] = expectation
             simulator.at(expectation.at_ms, partial(check, number))
+    for expectation in scenario.expectations:
+        if isinstance(expectation, TerminalExpectation):
+            built.terminal.watch(expectation.text)  # found in all the output, not only in what is kept
     if on_tick is not None:
         simulator.on_tick = lambda tick: on_tick(built, tick)
     stop = simulator.run()
@@ -116,4 +120,5 @@ def run_source(
         tuple(built.world.host_replies),
         tuple(outcomes),
         tuple(sorted(built.inert.used)),
+        built.terminal.dropped,
     )

@@ -1,5 +1,9 @@
 """The simulated operator terminal: one merged output stream and one keyboard buffer (spec PR-4, PR-5).
 
+The output streams to the caller as it is written and only its latest part is
+kept, so a run that prints for minutes stays small; text an expectation looks
+for is watched as it streams past, so a check does not depend on what is kept.
+
 Output is plain text meant for a log, so screen-control commands degrade to
 what a log can show: ``CLS`` ends the current line, ``LOCATE`` pads with spaces
 to the column, ``BEEP`` writes the BEL character. The column is tracked because
@@ -17,6 +21,8 @@ from mintlang.runtime.errors import MintError
 from mintlang.runtime.numbers import f32
 
 TAB_WIDTH = 8
+TRANSCRIPT_LIMIT = 1 << 20
+"""Characters of output a run keeps, the latest; a program printing in a loop must not fill the memory."""
 NEWLINE = "\n"
 BELL = "\a"
 _LINE_ENDS = "\r\n"
@@ -41,20 +47,53 @@ class Terminal:
     def __init__(self, echo: Callable[[str], None] | None = None) -> None:
         """``echo`` receives each piece of output as it is written, so a caller can stream it live."""
         self._chunks: list[str] = []
+        self._kept = 0  # characters in _chunks
         self._echo = echo
         self._keys: deque[str] = deque()
+        self._watched: dict[str, str | None] = {}  # text -> the output that may begin it, None once printed
         self.column = 0
+        self.printed = 0  # characters written in all, kept or not
 
     @property
     def text(self) -> str:
-        """Everything written so far."""
-        return "".join(self._chunks)
+        """What was written so far: all of it, or its last ``TRANSCRIPT_LIMIT`` characters."""
+        return "".join(self._chunks)[-TRANSCRIPT_LIMIT:]
+
+    @property
+    def dropped(self) -> int:
+        """Characters written that ``text`` no longer holds."""
+        return self.printed - min(self._kept, TRANSCRIPT_LIMIT)
+
+    def watch(self, text: str) -> None:
+        """Look for ``text`` in everything written from now on, so ``has_printed`` knows however much is dropped."""
+        if text not in self._watched:
+            self._watched[text] = None if text in self.text else self._carry(text, self.text)
+
+    def has_printed(self, text: str) -> bool:
+        """Whether ``text`` was written (across writes and lines); exact for watched text, else within ``text``."""
+        if text in self._watched:
+            return self._watched[text] is None
+        return text in self.text
+
+    @staticmethod
+    def _carry(wanted: str, window: str) -> str:
+        """The end of ``window`` that the next write could complete into ``wanted``."""
+        return window[max(0, len(window) - len(wanted) + 1) :]
 
     def write(self, text: str) -> None:
         """Append raw text; CR or LF returns the column to 0, other control characters take no column."""
         if not text:
             return
+        for wanted, carry in self._watched.items():
+            if carry is not None:
+                window = carry + text
+                self._watched[wanted] = None if wanted in window else self._carry(wanted, window)
         self._chunks.append(text)
+        self._kept += len(text)
+        self.printed += len(text)
+        if self._kept > 2 * TRANSCRIPT_LIMIT:  # trimming only now and then keeps writing cheap
+            self._chunks = [self.text]
+            self._kept = TRANSCRIPT_LIMIT
         if self._echo is not None:
             self._echo(text)
         line_start = max(text.rfind("\r"), text.rfind("\n")) + 1

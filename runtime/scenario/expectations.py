@@ -129,7 +129,16 @@ class Observer(Protocol):
 
     @property
     def terminal(self) -> str:
-        """Everything printed to the terminal so far."""
+        """What was printed to the terminal so far, or its latest part when that is long."""
+        ...
+
+    @property
+    def printed(self) -> int:
+        """How many characters were printed so far, kept in ``terminal`` or not."""
+        ...
+
+    def has_printed(self, text: str) -> bool:
+        """Whether ``text`` appears anywhere in what was printed so far, across lines."""
         ...
 
     @property
@@ -163,10 +172,9 @@ def evaluate(expectation: Expectation, observe: Observer) -> Outcome:
         case ValueExpectation():
             return _evaluate_value(expectation, observe)
         case TerminalExpectation(text=text):
-            printed = observe.terminal
-            held = text in printed
-            detail = "" if held else f"not among the {len(printed)} characters printed"
-            return Outcome(expectation, held, _last_line(printed), detail)
+            held = observe.has_printed(text)
+            detail = "" if held else f"not among the {observe.printed} characters printed"
+            return Outcome(expectation, held, _last_line(observe.terminal), detail)
         case StoppedExpectation(reason=reason):
             return Outcome(expectation, observe.stopped == reason, observe.stopped, "")
 

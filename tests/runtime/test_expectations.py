@@ -30,6 +30,13 @@ class FakeRun:
     stopped: str = "end"
     axes: tuple[int, ...] = (0, 1, 2, 3)
 
+    @property
+    def printed(self) -> int:
+        return len(self.terminal)
+
+    def has_printed(self, text: str) -> bool:
+        return text in self.terminal
+
     def value(self, target: str) -> float | None:
         return self.values.get(target)
 

@@ -1,10 +1,13 @@
-"""The simulated terminal: PRINT separators and tab stops, INKEY and INPUT (spec PR-4, PR-5)."""
+"""The simulated terminal: PRINT separators and tab stops, INKEY and INPUT (spec PR-4, PR-5), bounded memory."""
 
 from __future__ import annotations
 
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from mintlang.runtime import terminal as terminal_module
+from mintlang.runtime.run import run_source
 from mintlang.runtime.terminal import NumberEntry, Terminal
 
 # PR-4: separators
@@ -186,3 +189,43 @@ def test_input_before_a_line_is_complete_is_none() -> None:
     terminal = Terminal()
     terminal.type_keys("7")
     assert terminal.read_number() is None
+
+
+def test_only_the_latest_output_is_kept_and_the_rest_is_counted(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(terminal_module, "TRANSCRIPT_LIMIT", 10)
+    terminal = Terminal()
+    for line in range(100):
+        terminal.write(f"line {line:02}\n")
+    assert terminal.text == "8\nline 99\n"
+    assert terminal.printed == 800
+    assert terminal.dropped == 790
+
+
+def test_watched_text_is_found_across_writes_however_much_is_dropped(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(terminal_module, "TRANSCRIPT_LIMIT", 10)
+    terminal = Terminal()
+    terminal.watch("Homed")
+    terminal.watch("never")
+    for piece in ("Ho", "m", "ed\n", *["x" * 9 + "\n"] * 50):
+        terminal.write(piece)
+    assert terminal.has_printed("Homed")
+    assert not terminal.has_printed("never")
+    assert not terminal.has_printed("Homed\n") and terminal.has_printed("xx\n")  # unwatched: what is kept
+
+
+def test_a_terminal_expectation_sees_output_printed_before_the_kept_part(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(terminal_module, "TRANSCRIPT_LIMIT", 100)
+    source = 'REM @expect terminal contains "ready"\nDIM i\nPRINT "ready"\nFOR i = 1 TO 50\n  PRINT "filler"\nNEXT\n'
+    result = run_source(source, controller="nextmove-bx")
+    (outcome,) = result.outcomes
+    assert outcome.held
+    assert len(result.terminal) == 100 and result.terminal_dropped == len("ready\n") + 50 * len("filler\n") - 100
+
+
+@given(st.lists(st.text("ab\n", max_size=4), max_size=12), st.text("ab\n", min_size=1, max_size=4))
+def test_watched_text_is_found_exactly_when_the_whole_output_contains_it(pieces: list[str], wanted: str) -> None:
+    terminal = Terminal()
+    terminal.watch(wanted)
+    for piece in pieces:
+        terminal.write(piece)
+    assert terminal.has_printed(wanted) == (wanted in "".join(pieces))

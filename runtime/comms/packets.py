@@ -209,6 +209,9 @@ def _framed(address: int, data: bytes) -> bytes:
 def encode_write(node: int, address: int, values: str | Sequence[float]) -> bytes:
     """A host write packet. A ``str`` is sent verbatim, so scripted hosts and tests can also send invalid data."""
     data = values if isinstance(values, str) else ",".join(_decimal(value) for value in values)
+    if not data.isascii():  # the serial protocol carries bytes of ASCII text (CM-4)
+        position, character = next((place, char) for place, char in enumerate(data) if not char.isascii())
+        raise ValueError(f"the data must be ASCII text; {character!r} at position {position} is not")
     return _header(node) + _framed(address, data.encode("ascii"))
 
 

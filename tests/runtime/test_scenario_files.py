@@ -185,6 +185,11 @@ def test_unknown_tables_and_keys_are_named(tmp_path: Path) -> None:
         ("[[host]]\nat_ms = 0", 2, "[[host]] needs one of write, read, raw"),
         ("[[host]]\nread = 1\nraw = '05'\nat_ms = 0", 4, "[[host]] has both read and raw"),
         ("[[host]]\nread = 1\nnode = 16\nat_ms = 0", 2, "cannot build the host packet: node 16 has no ID character"),
+        (
+            '[[host]]\nwrite = 1\ndata = "1é"\nat_ms = 0',
+            2,
+            "cannot build the host packet: the data must be ASCII text; 'é' at position 1 is not",
+        ),
         ("[[expect]]\nequals = 1", 2, "[[expect]] needs one of what, terminal_contains, stopped"),
         ("[[expect]]\nwhat = 'POS.0'", 2, "[[expect]] needs one of equals, not_equal, at_least, at_most"),
         (

@@ -204,6 +204,10 @@ def test_dac_of_the_one_axis_is_read_on_mintdrive() -> None:
     assert [code for code, _, _ in found("DIM d\nd = DAC.1\nPRINT d\n", controller="mintdrive")] == ["E4"]
 
 
+def test_a_keyword_the_controller_lacks_is_not_also_a_channel_out_of_range() -> None:
+    assert found("DIM d\nd = AUXDAC.0\nPRINT d\n") == [("E17", ERROR, 2)]
+
+
 def test_release_is_allowed_in_a_configuration_file_only() -> None:
     # 000:935-939: RELEASE cannot be used in a program; the configuration file is where it belongs
     assert found("PRINT 1\n", config="RELEASE\n") == []

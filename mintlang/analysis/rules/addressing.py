@@ -65,8 +65,8 @@ def check(facts: Facts) -> Iterator[Finding]:
     db = database()
     for use in facts.keyword_uses:
         keyword = db.keywords.get(use.keyword.keyword)
-        if keyword is None:
-            continue
+        if keyword is None or (keyword.controllers and model.controller.controller not in keyword.controllers):
+            continue  # not a keyword of this controller: 17 (keyword usage) says so, its channels are moot
         if use.keyword.selector is None and use.keyword.channel is None:
             # Nothing addressed: the default axes, whatever AXES made them, except on a one-axis
             # controller, where they can only be axis 0 (000:572, #2017 at 19047).

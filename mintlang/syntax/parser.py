@@ -220,12 +220,15 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) ->
         return _error(2007, span, f"found {found}")
     if segment[0] is _K.FOR and "TO" in expected:
         return _error(2008, span, f"found {found}")
-    if segment[0] is _K.DIM and index > begin + 1 and kinds[index - 1] in _KEYWORD_KINDS:
-        word = line.texts[index - 1]
-        return _error(2003, line.token_span(index - 1), f"'{word}' is a keyword and cannot be declared as a variable")
+    if segment[0] is _K.DIM:  # DIM of a keyword is a syntax error (DIM, 000:9189-9192), whichever kind it lexes as
+        named = index if index == begin + 1 and not at_end else index - 1
+        if named > begin and kinds[named] in _KEYWORD_KINDS:
+            word = line.texts[named]
+            return _error(2003, line.token_span(named), f"'{word}' is a keyword and cannot be declared as a variable")
     if not at_end and kinds[index] in _KEYWORD_KINDS and "NAME" in expected:
         word = line.texts[index]
-        return _error(2006, span, f"'{word}' is a reserved keyword and cannot be used as a variable")
+        role = "a label" if index > begin and kinds[index - 1] in (_K.GOSUB, _K.GOTO) else "a variable"
+        return _error(2006, span, f"'{word}' is a reserved keyword and cannot be used as {role}")
     if line.expanded[index if not at_end else end - 1]:
         return _error(2003, span, f"unexpected {found} in the text of a macro")
     return _error(2003, span, f"unexpected {found}")

@@ -353,6 +353,9 @@ def test_lines_after_a_syntax_error_are_parsed() -> None:
         # 2006 reserved keyword used as a variable (line 18940)
         ("FOR loop = 1 TO 10\n", [("E2006", "loop")]),
         ('INPUT "Enter speed", SPEED\n', [("E2006", "SPEED")]),
+        # a keyword after DIM is a syntax error whatever its kind (DIM, line 9189)
+        ("DIM loop\n", [("E2003", "loop")]),
+        ("DIM speed\n", [("E2003", "speed")]),
         # 2007 THEN or DO expected (line 18946)
         ("IF a PRINT 1\n", [("E2007", "PRINT")]),
         ('IF (a < b) PRINT "a is less than b"\n', [("E2007", "PRINT")]),
@@ -363,6 +366,11 @@ def test_lines_after_a_syntax_error_are_parsed() -> None:
 def test_parse_errors_carry_the_controllers_error_numbers(source: str, expected: list[tuple[str, str]]) -> None:
     assert errors(source) == expected
     assert all(d.severity is Severity.ERROR for d in mintlang.parse(source).diagnostics)
+
+
+def test_a_keyword_after_gosub_is_refused_as_a_label() -> None:
+    (diagnostic,) = mintlang.parse("GOSUB loop\n").diagnostics
+    assert diagnostic.code == "E2006" and diagnostic.message.endswith("cannot be used as a label")
 
 
 def test_a_for_loop_with_a_keyword_variable_still_opens_a_block() -> None:

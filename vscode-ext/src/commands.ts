@@ -4,9 +4,10 @@ import { spawn } from "node:child_process";
 import * as path from "node:path";
 import * as vscode from "vscode";
 
-import { currentHost, currentSettings } from "./host";
+import { currentHost, currentSettings, listFolder } from "./host";
 import { LANGUAGE_ID } from "./language";
 import { showError } from "./notify";
+import { configurationOf } from "./pairing";
 import { displayCommand, fileCommand, isMissingModule, MODULES, type Command, type FileTool } from "./resolve";
 
 interface Outcome {
@@ -28,10 +29,13 @@ function run(command: Command, cwd: string, output: vscode.OutputChannel, token:
   return new Promise((resolve, reject) => {
     const child = spawn(command.command, [...command.args], { cwd });
     let stderr = "";
-    child.stdout.on("data", (chunk: Buffer) => output.append(chunk.toString()));
-    child.stderr.on("data", (chunk: Buffer) => {
-      stderr += chunk.toString();
-      output.append(chunk.toString());
+    // Decoded as streams, so a character split between two chunks is not garbled.
+    child.stdout.setEncoding("utf8");
+    child.stderr.setEncoding("utf8");
+    child.stdout.on("data", (chunk: string) => output.append(chunk));
+    child.stderr.on("data", (chunk: string) => {
+      stderr += chunk;
+      output.append(chunk);
     });
     const cancel = token.onCancellationRequested(() => child.kill());
     child.on("error", (error) => {
@@ -56,7 +60,9 @@ async function runTool(tool: FileTool, title: string, uri: unknown, output: vsco
     return;
   }
   const file = document.uri.fsPath;
-  const resolution = fileCommand(tool, file, currentSettings(), currentHost());
+  const settings = currentSettings();
+  const config = tool === "mint-run" ? configurationOf(file, listFolder, settings.configPairing) : undefined;
+  const resolution = fileCommand(tool, file, settings, currentHost(), config);
   if (!resolution.ok) {
     void showError(`${title}: ${resolution.message}`, output);
     return;

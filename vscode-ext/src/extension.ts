@@ -1,9 +1,8 @@
 // Wiring only: each job lives in its own module.
-import * as fs from "node:fs";
 import * as vscode from "vscode";
 
 import { registerCommands } from "./commands";
-import { currentSettings } from "./host";
+import { currentSettings, listFolder } from "./host";
 import { LANGUAGE_ID } from "./language";
 import { isPairedConfig } from "./pairing";
 import { mintServer, type Server } from "./server";
@@ -11,21 +10,14 @@ import { SERVER_SETTINGS } from "./settings";
 
 let server: Server | undefined;
 
-function listFolder(folder: string): string[] {
-  try {
-    return fs.readdirSync(folder);
-  } catch {
-    return [];
-  }
-}
-
-/** Opens conveyor.cfg as Mint when conveyor.mnt is beside it (see src/pairing.ts). */
+/** Opens conveyor.cfg as Mint when conveyor.mnt is beside it (mint.configPairing; see src/pairing.ts). */
 function pairConfig(document: vscode.TextDocument): void {
+  const settings = currentSettings();
   if (
     document.uri.scheme === "file" &&
     document.languageId !== LANGUAGE_ID &&
-    currentSettings().pairConfigFiles &&
-    isPairedConfig(document.uri.fsPath, listFolder)
+    settings.pairConfigFiles &&
+    isPairedConfig(document.uri.fsPath, listFolder, settings.configPairing)
   ) {
     void vscode.languages.setTextDocumentLanguage(document, LANGUAGE_ID);
   }

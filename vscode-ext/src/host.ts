@@ -9,6 +9,15 @@ export function currentSettings(): MintSettings {
   return readSettings(vscode.workspace.getConfiguration("mint"));
 }
 
+/** The names in a folder; none when it cannot be read. */
+export function listFolder(folder: string): string[] {
+  try {
+    return fs.readdirSync(folder);
+  } catch {
+    return [];
+  }
+}
+
 function isExecutable(file: string): boolean {
   try {
     fs.accessSync(file, fs.constants.X_OK);

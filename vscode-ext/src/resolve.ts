@@ -8,11 +8,22 @@ import type { Controller, MintSettings } from "./settings";
 export type Tool = "mint-lsp" | "mint-migrate" | "mint-run";
 export type FileTool = Exclude<Tool, "mint-lsp">;
 
-/** The Python module behind each tool, for `<python> -m <module>`. */
+/** The Python module behind each tool: what Python names when mintlang is not installed. */
 export const MODULES: Readonly<Record<Tool, string>> = {
   "mint-lsp": "mintlang.lsp",
   "mint-migrate": "mintlang.migrate",
   "mint-run": "mintlang.runtime",
+};
+
+/**
+ * How `mint.pythonPath` runs each tool. mintlang.migrate has no __main__ module, so
+ * `python -m mintlang.migrate` fails; it is started through its console script's entry point
+ * (pyproject.toml: mint-migrate = "mintlang.migrate.cli:main"), named as the script would be.
+ */
+export const PYTHON_ARGUMENTS: Readonly<Record<Tool, readonly string[]>> = {
+  "mint-lsp": ["-m", "mintlang.lsp"],
+  "mint-migrate": ["-c", "import sys; sys.argv[0] = 'mint-migrate'; from mintlang.migrate.cli import main; main()"],
+  "mint-run": ["-m", "mintlang.runtime"],
 };
 
 /** What resolution needs to know about the machine. */
@@ -103,7 +114,7 @@ export function resolveTool(tool: Tool, settings: ToolSettings, host: Host): Res
     const python = locateSetting(settings.pythonPath, host);
     return python === undefined
       ? notExecutable("mint.pythonPath", settings.pythonPath)
-      : found(python, ["-m", MODULES[tool]], "mint.pythonPath");
+      : found(python, PYTHON_ARGUMENTS[tool], "mint.pythonPath");
   }
   const venvs = host.workspaceFolders.map((folder) => paths.join(folder, ".venv"));
   for (const venv of venvs) {
@@ -124,31 +135,37 @@ export function resolveTool(tool: Tool, settings: ToolSettings, host: Host): Res
   };
 }
 
-/** The arguments a command-line tool takes for one file; migration targets the configured controller. */
-export function toolArguments(tool: FileTool, file: string, controller: Controller): string[] {
+/**
+ * The arguments a command-line tool takes for one file; both target the configured controller.
+ * A simulated run gets the program's configuration file when it has one (`config`), as the
+ * language server's "Run in simulator" lens does.
+ */
+export function toolArguments(tool: FileTool, file: string, controller: Controller, config?: string): string[] {
+  if (tool === "mint-migrate") {
+    return ["--write", "--controller", controller, file];
+  }
   // A simulated run is bounded in real time, so a program that never ends cannot hang the editor.
-  return tool === "mint-migrate"
-    ? ["--write", "--controller", controller, file]
-    : ["--controller", controller, "--max-wall-s", "30", file];
+  return [...(config === undefined ? [] : ["--config", config]), "--controller", controller, "--max-wall-s", "30", file];
 }
 
-/** The command line that runs `tool` on `file`, or why there is none. */
+/** The command line that runs `tool` on `file` (with its configuration file `config`), or why there is none. */
 export function fileCommand(
   tool: FileTool,
   file: string,
   settings: ToolSettings & Pick<MintSettings, "controller">,
   host: Host,
+  config?: string,
 ): Resolution {
   const resolution = resolveTool(tool, settings, host);
   if (!resolution.ok) {
     return resolution;
   }
   const { command, args, source } = resolution.command;
-  return found(command, [...args, ...toolArguments(tool, file, settings.controller)], source);
+  return found(command, [...args, ...toolArguments(tool, file, settings.controller, config)], source);
 }
 
 /**
- * Whether a `<python> -m` run failed because the tool's module, or mintlang itself, is not
+ * Whether a mint.pythonPath run failed because the tool's module, or mintlang itself, is not
  * installed: Python then prints "No module named mintlang.runtime" before the tool could start.
  */
 export function isMissingModule(stderr: string, tool: Tool): boolean {

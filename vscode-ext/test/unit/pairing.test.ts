@@ -1,7 +1,7 @@
 import assert from "node:assert/strict";
 import { test } from "node:test";
 
-import { isPairedConfig } from "../../src/pairing";
+import { configurationOf, isPairedConfig } from "../../src/pairing";
 
 const folder = (names: readonly string[]) => (dir: string) => {
   assert.equal(dir, "/project");
@@ -25,4 +25,33 @@ test("only .cfg files are paired, and the folder is not read for others", () => 
   assert.equal(isPairedConfig("/project/conveyor.ini", unread), false);
   assert.equal(isPairedConfig("/project/conveyor.mnt", unread), false);
   assert.equal(isPairedConfig("/project/cfg", unread), false);
+});
+
+test("mint.configPairing decides which files are configurations, as in the server", () => {
+  const names = folder(["conveyor.mnt", "setup_conveyor.cfg", "conveyor.cfg", "conveyor.ini"]);
+  assert.equal(isPairedConfig("/project/setup_conveyor.cfg", names, "setup_<name>.cfg"), true);
+  assert.equal(isPairedConfig("/project/conveyor.cfg", names, "setup_<name>.cfg"), false);
+  assert.equal(isPairedConfig("/project/conveyor.ini", names, "<name>.ini"), true);
+  // The prefix compares with case, the suffix without (lsp/workspace.py, partner()).
+  assert.equal(isPairedConfig("/project/SETUP_conveyor.cfg", names, "setup_<name>.cfg"), false);
+  assert.equal(isPairedConfig("/project/setup_conveyor.CFG", names, "setup_<name>.cfg"), true);
+});
+
+test("a pattern without <name> or without a suffix pairs nothing, and a program is never a configuration", () => {
+  const unread = () => assert.fail("the folder must not be listed");
+  assert.equal(isPairedConfig("/project/conveyor.cfg", unread, ""), false);
+  assert.equal(isPairedConfig("/project/conveyor.cfg", unread, "config.cfg"), false);
+  assert.equal(isPairedConfig("/project/conveyor", unread, "<name>"), false);
+  assert.equal(isPairedConfig("/project/a.mnt", unread, "<name>.mnt"), false);
+});
+
+test("a program's configuration file is the exact name the pattern gives, when it exists", () => {
+  const names = folder(["conveyor.mnt", "conveyor.cfg", "setup_conveyor.cfg", "OTHER.MNT", "other.CFG"]);
+  assert.equal(configurationOf("/project/conveyor.mnt", names), "/project/conveyor.cfg");
+  assert.equal(configurationOf("/project/conveyor.mnt", names, "setup_<name>.cfg"), "/project/setup_conveyor.cfg");
+  assert.equal(configurationOf("/project/OTHER.MNT", names), undefined);
+  assert.equal(configurationOf("/project/missing.mnt", names), undefined);
+  const unread = () => assert.fail("the folder must not be listed");
+  assert.equal(configurationOf("/project/conveyor.mnt", unread, ""), undefined);
+  assert.equal(configurationOf("/project/conveyor.cfg", unread), undefined);
 });

@@ -1,7 +1,20 @@
 import assert from "node:assert/strict";
+import { spawnSync } from "node:child_process";
+import { existsSync } from "node:fs";
+import * as path from "node:path";
 import { test } from "node:test";
 
-import { displayCommand, fileCommand, isMissingModule, resolveTool, toolArguments, type Host, type Resolution } from "../../src/resolve";
+import {
+  displayCommand,
+  fileCommand,
+  isMissingModule,
+  PYTHON_ARGUMENTS,
+  resolveTool,
+  toolArguments,
+  type Host,
+  type Resolution,
+  type Tool,
+} from "../../src/resolve";
 
 const NONE = { serverPath: "", pythonPath: "", controller: "nextmove-pci" } as const;
 
@@ -121,6 +134,45 @@ test("migrate rewrites the file in place and run simulates it, both for the conf
     "30",
     "/p/a.mnt",
   ]);
+});
+
+test("a simulated run gets the program's configuration file, migration does not", () => {
+  assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", "mintdrive", "/p/a.cfg"), [
+    "--config",
+    "/p/a.cfg",
+    "--controller",
+    "mintdrive",
+    "--max-wall-s",
+    "30",
+    "/p/a.mnt",
+  ]);
+  assert.deepEqual(toolArguments("mint-migrate", "/p/a.mnt", "mintdrive", "/p/a.cfg"), ["--write", "--controller", "mintdrive", "/p/a.mnt"]);
+  const host = posix(["/usr/bin/mint-run"]);
+  assert.deepEqual(commandOf(fileCommand("mint-run", "/p/a.mnt", NONE, host, "/p/a.cfg")).slice(0, 3), [
+    "/usr/bin/mint-run",
+    "--config",
+    "/p/a.cfg",
+  ]);
+});
+
+test("mint.pythonPath starts mint-migrate through its entry point: mintlang.migrate has no __main__", () => {
+  const host = posix(["/usr/bin/python3"]);
+  const [python, flag, code, ...rest] = commandOf(fileCommand("mint-migrate", "/p/a.mnt", { ...NONE, pythonPath: "python3" }, host));
+  assert.equal(python, "/usr/bin/python3");
+  assert.equal(flag, "-c");
+  assert.match(code ?? "", /from mintlang\.migrate\.cli import main; main\(\)/);
+  assert.deepEqual(rest, ["--write", "--controller", "nextmove-pci", "/p/a.mnt"]);
+});
+
+// The Python of the mintlang checkout this extension lives in, when it has been set up.
+const CHECKOUT_PYTHON = path.resolve(__dirname, "..", "..", "..", "..", ".venv", "bin", "python");
+
+test("every mint.pythonPath command line starts its tool", { skip: !existsSync(CHECKOUT_PYTHON) && "no ../.venv" }, () => {
+  for (const tool of Object.keys(PYTHON_ARGUMENTS) as Tool[]) {
+    const run = spawnSync(CHECKOUT_PYTHON, [...PYTHON_ARGUMENTS[tool], "--help"], { encoding: "utf8", timeout: 60_000 });
+    assert.equal(run.status, 0, `${tool}: ${run.stderr}`);
+    assert.match(run.stdout, /Usage: /, tool);
+  }
 });
 
 test("file commands append the file arguments to the resolved command", () => {

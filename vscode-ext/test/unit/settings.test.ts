@@ -12,6 +12,8 @@ test("an empty configuration gives the defaults", () => {
     controller: "nextmove-pci",
     dialect: "v4",
     pairConfigFiles: true,
+    configPairing: "<name>.cfg",
+    debounceMs: 150,
   });
 });
 
@@ -34,7 +36,25 @@ test("values of the wrong type or outside the enums fall back to the defaults", 
   assert.equal(settings.pairConfigFiles, true);
 });
 
-test("the server is initialised with the controller and the dialect only", () => {
-  const settings = readSettings(section({ controller: "servonode51", dialect: "v3", serverPath: "/x" }));
-  assert.deepEqual(initializationOptions(settings), { controller: "servonode51", dialect: "v3" });
+test("the server's own settings are read, bad ones fall back to its defaults", () => {
+  const settings = readSettings(section({ configPairing: " setup_<name>.cfg ", debounceMs: 400 }));
+  assert.equal(settings.configPairing, "setup_<name>.cfg");
+  assert.equal(settings.debounceMs, 400);
+  // An empty pattern is kept: the server then pairs no configuration file.
+  assert.equal(readSettings(section({ configPairing: "" })).configPairing, "");
+  for (const debounceMs of [-1, 1.5, "200", null]) {
+    assert.equal(readSettings(section({ debounceMs })).debounceMs, 150, String(debounceMs));
+  }
+});
+
+test("the server is initialised with every setting it reads, and no paths", () => {
+  const settings = readSettings(
+    section({ controller: "servonode51", dialect: "v3", configPairing: "<name>.ini", debounceMs: 0, serverPath: "/x" }),
+  );
+  assert.deepEqual(initializationOptions(settings), {
+    controller: "servonode51",
+    dialect: "v3",
+    configPairing: "<name>.ini",
+    debounceMs: 0,
+  });
 });

@@ -35,6 +35,9 @@ export function activate(context: vscode.ExtensionContext): void {
       if (SERVER_SETTINGS.some((setting) => event.affectsConfiguration(setting))) {
         void running.restart();
       }
+      if (event.affectsConfiguration("mint.pairConfigFiles") || event.affectsConfiguration("mint.configPairing")) {
+        vscode.workspace.textDocuments.forEach(pairConfig);
+      }
     }),
     // The workspace's .venv is only looked at in a trusted workspace.
     vscode.workspace.onDidGrantWorkspaceTrust(() => void running.restart()),

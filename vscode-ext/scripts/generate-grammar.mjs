@@ -166,9 +166,14 @@ export function generateGrammar(keywords) {
       number: {
         patterns: [
           { match: "\\b0[xX][0-9A-Fa-f_]+\\b", name: "constant.numeric.hex.mint-motion" },
-          // A leading zero makes a number binary: 011011, 0110_1001.
-          { match: "\\b0[01_]+\\b", name: "constant.numeric.binary.mint-motion" },
-          { match: "\\b0[0-9A-Za-z_]+\\b", name: "invalid.illegal.numeric.mint-motion" },
+          // A leading zero makes a whole number binary: 011011, 0110_1001. With a fraction it is a
+          // decimal (01.5, 05.25), as the lexer reads it (mintlang/syntax/lexer.py, _number_issue).
+          { match: "\\b0[01_]+\\b(?!\\.)", name: "constant.numeric.binary.mint-motion" },
+          {
+            // 05, 0xZZ, and digits run into letters or '_' (12abc, 1_000): one bad number to the lexer.
+            match: "\\b(?:0[0-9A-Za-z_]+\\b(?!\\.)|[0-9]+[A-Za-z_][0-9A-Za-z_]*(?:\\.[0-9]*)?)",
+            name: "invalid.illegal.numeric.mint-motion",
+          },
           {
             // After a keyword, '.n' is the dot parameter (SPEED.1), not the number .n.
             match: "(?<=[A-Za-z0-9_\\]])(\\.)([0-9]+)",

@@ -7,8 +7,12 @@ The tools' folders are mapped into the ``mintlang`` namespace (``migrate/`` is
 
 from __future__ import annotations
 
+import subprocess
+import sys
 import tomllib
 from pathlib import Path
+
+import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -30,3 +34,10 @@ def test_every_package_folder_is_listed() -> None:
 def test_tool_folders_install_inside_the_mintlang_namespace() -> None:
     # Generic top-level names such as "migrate" or "lsp" would collide with other distributions.
     assert all(package == "mintlang" or package.startswith("mintlang.") for package in _configuration()["packages"])
+
+
+@pytest.mark.parametrize("tool", ["mintlang.lsp", "mintlang.migrate", "mintlang.runtime"])
+def test_every_tool_runs_with_python_dash_m(tool: str) -> None:
+    """Editors started through a configured Python (mint.pythonPath) run the tools this way."""
+    result = subprocess.run([sys.executable, "-m", tool, "--help"], capture_output=True, text=True, check=False)
+    assert result.returncode == 0 and result.stdout.startswith("Usage:"), result.stderr

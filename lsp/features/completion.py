@@ -40,7 +40,12 @@ _STATEMENT_STARTERS = frozenset({TokenKind.COLON, TokenKind.THEN, TokenKind.DO, 
 _OPERAND_ENDS = frozenset(
     {TokenKind.NUMBER, TokenKind.CHAR, TokenKind.STRING, TokenKind.CONSTANT, TokenKind.NAME, TokenKind.RPAR}
 )
-_NEW_NAME = frozenset({TokenKind.DIM, TokenKind.DEFINE})
+# After these only a new name or the end of the statement can come.
+_NOTHING_AFTER = frozenset(
+    {TokenKind.DIM, TokenKind.DEFINE, TokenKind.RETURN, TokenKind.END, TokenKind.ENDIF, TokenKind.ENDW}
+    | {TokenKind.ENDL, TokenKind.NEXT, TokenKind.LOOP, TokenKind.REPEAT}
+)
+_UNARY = frozenset({"NOT", "~"})  # the operators that can start an operand
 _CONTINUATIONS = frozenset({"THEN", "DO", "TO", "STEP", "USING"})  # statement words that follow an operand
 _SINGLE_QUOTES = "'\u2018\u2019"
 _PARTIAL_WORDS = WORD_KINDS | {TokenKind.HASH}
@@ -71,7 +76,8 @@ def _starts_statement(word: Keyword, row: Attributes | None) -> bool:
 def _continuations() -> Iterator[types.CompletionItem]:
     """After a complete operand: operators, and the words that go on with the statement."""
     for word in database().keywords.values():
-        if (word.kind is KeywordKind.OPERATOR and word.name.isalpha()) or word.name in _CONTINUATIONS:
+        binary = word.kind is KeywordKind.OPERATOR and word.name.isalpha() and word.name not in _UNARY
+        if binary or word.name in _CONTINUATIONS:
             yield _keyword_item(word)
 
 
@@ -90,8 +96,10 @@ def _keywords(snapshot: Snapshot, statement: bool) -> Iterator[types.CompletionI
         if statement:
             valid = _starts_statement(word, row)
         else:
-            valid = word.kind in (KeywordKind.FUNCTION, KeywordKind.OPERATOR) or (
-                row.read if row else word.kind is KeywordKind.PARAMETER
+            valid = (
+                word.kind is KeywordKind.FUNCTION
+                or word.name in _UNARY
+                or (row.read if row else word.kind is KeywordKind.PARAMETER)
             )
         if valid:
             yield _keyword_item(word)
@@ -190,14 +198,19 @@ def complete(snapshot: Snapshot, prefix: str, cursor: types.Position) -> list[ty
         partial = before.pop()  # the word being typed
     if partial is not None and partial.text.startswith("#"):
         return _events(snapshot, partial, cursor) if partial.kind is TokenKind.LABEL or not before else []
+    previous = before[-1] if before else None
+    if previous is not None and (previous.kind in _NOTHING_AFTER or previous.text.endswith(".")):
+        return []  # a new name, a complete statement, an axis or channel number, or the decimals of a number
     if partial is not None and partial.text.startswith("_"):
         return list(_constants())
-    previous = before[-1] if before else None
-    if previous is not None and (previous.kind in _NEW_NAME or previous.text.endswith(".")):
-        return []  # a new name, an axis or channel number, or the decimals of a number
     if previous is not None and previous.kind in (TokenKind.GOSUB, TokenKind.GOTO):
         return list(_labels(snapshot))
     statement = previous is None or previous.kind in _STATEMENT_STARTERS
+    if previous is not None and previous.kind is TokenKind.KEYWORD:
+        # A keyword that starts the statement is a command or a parameter (GO, SPEED): what follows is
+        # its axes or "=", nothing to complete; anywhere else it is a value read (IF IN3 ...).
+        starts = len(before) == 1 or before[-2].kind in _STATEMENT_STARTERS
+        return [] if starts else list(_continuations())
     if not statement and previous is not None and previous.kind in _OPERAND_ENDS:
         return list(_continuations())
     items = [*_keywords(snapshot, statement), *_symbols(snapshot)]

@@ -141,3 +141,21 @@ async def test_completion_while_typing_uses_the_line_as_typed(client, tmp_path):
         types.CompletionParams(text_document=document(uri), position=types.Position(line=end, character=7))
     )
     assert {item.label for item in found.items} == {"mainMenu", "start", "setup"}
+
+
+@pytest.mark.parametrize("line", ["RETURN ", "END ", "ENDIF ", "NEXT ", "GO ", "SPEED ", "DIM _"])
+async def test_nothing_after_a_complete_statement_or_a_command_awaiting_its_axes(client, tmp_path, line):
+    text = f"DIM a\n{line}\n"
+    uri = uri_of(tmp_path / "complete.mnt")
+    await open_document(client, uri, text)
+    assert await labels_at(client, uri, text, line, len(line)) == {}
+
+
+async def test_a_keyword_read_is_an_operand_and_binary_operators_wait_for_one(client, tmp_path):
+    text = "DIM a\nIF IN3 \na = \n"
+    uri = uri_of(tmp_path / "operands.mnt")
+    await open_document(client, uri, text)
+    after = set(await labels_at(client, uri, text, "IF IN3 ", 7))
+    assert {"AND", "OR", "THEN", "DO"} <= after and not after & {"NOT", "POS", "a"}
+    before = set(await labels_at(client, uri, text, "a = ", 4))
+    assert {"NOT", "POS", "a"} <= before and not before & {"AND", "OR", "MOD", "XOR"}

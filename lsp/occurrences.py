@@ -10,15 +10,18 @@ macro mentions edits the macro's body and never the macro's uses.
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 
 from mintlang.diagnostics import Span
 from mintlang.lsp.lookup import token_index
 from mintlang.lsp.workspace import Snapshot
-from mintlang.semantic.symbols import Occurrence, Symbol
+from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind
 from mintlang.semantic.units import Unit
 from mintlang.syntax.nodes import identity
 from mintlang.syntax.parser import Document
-from mintlang.syntax.tokens import TokenKind
+from mintlang.syntax.tokens import TRIVIA, TokenKind
+
+_JUMPS = frozenset({TokenKind.GOSUB, TokenKind.GOTO})
 
 
 def _documents(snapshot: Snapshot) -> Iterator[tuple[Unit, Document]]:
@@ -35,7 +38,13 @@ def _is_written(document: Document, occurrence: Occurrence) -> bool:
     return identity(text) == identity(occurrence.spelling)
 
 
-def _mentions(unit: Unit, document: Document, offset: int | None = None) -> Iterator[Occurrence]:
+@dataclass(frozen=True, slots=True)
+class _Mention:
+    occurrence: Occurrence
+    label: bool  # the target of a GOSUB or GOTO, else a variable, array or macro
+
+
+def _mentions(unit: Unit, document: Document, offset: int | None = None) -> Iterator[_Mention]:
     """The user names written inside the bodies of this file's macros (of the body at ``offset``, if given)."""
     tokens = document.tokens
     for definition in document.definitions:
@@ -43,11 +52,21 @@ def _mentions(unit: Unit, document: Document, offset: int | None = None) -> Iter
         if body is None or (offset is not None and not body.start <= offset <= body.end):
             continue
         index = max(token_index(document, body.start), 0)
+        previous: TokenKind | None = None
         while index < len(tokens) and tokens[index].start < body.end:
             token = tokens[index]
             if token.kind is TokenKind.NAME and token.start >= body.start:
-                yield Occurrence(unit, Span(token.start, token.end), token.text, True)
+                occurrence = Occurrence(unit, Span(token.start, token.end), token.text, True)
+                yield _Mention(occurrence, previous in _JUMPS)
+            if token.kind not in TRIVIA:
+                previous = token.kind
             index += 1
+
+
+def _mentioned_in(symbol: Symbol, unit: Unit) -> bool:
+    """Whether a mention in ``unit``'s macros can mean ``symbol``: labels belong to one file, but a
+    configuration file's macros are expanded in the program."""
+    return symbol.kind is not SymbolKind.LABEL or unit is symbol.unit or unit is Unit.CONFIGURATION
 
 
 def written(snapshot: Snapshot, symbol: Symbol) -> list[Occurrence]:
@@ -58,10 +77,14 @@ def written(snapshot: Snapshot, symbol: Symbol) -> list[Occurrence]:
         for occurrence in symbol.occurrences()
         if occurrence.unit in documents and _is_written(documents[occurrence.unit], occurrence)
     ]
-    if symbol.identity in snapshot.model.symbols.variables:
-        for unit, document in documents.items():
-            mentions = _mentions(unit, document)
-            found.extend(mention for mention in mentions if identity(mention.spelling) == symbol.identity)
+    label = symbol.kind is SymbolKind.LABEL
+    for unit, document in documents.items():
+        if _mentioned_in(symbol, unit):
+            found.extend(
+                mention.occurrence
+                for mention in _mentions(unit, document)
+                if mention.label == label and identity(mention.occurrence.spelling) == symbol.identity
+            )
     definitions = [occurrence for occurrence in found if occurrence in symbol.definitions]
     order = {Unit.CONFIGURATION: 0, Unit.PROGRAM: 1}
     others = sorted(
@@ -71,14 +94,23 @@ def written(snapshot: Snapshot, symbol: Symbol) -> list[Occurrence]:
     return definitions + others
 
 
+def _mentioned(snapshot: Snapshot, mention: _Mention) -> Symbol | None:
+    table = snapshot.model.symbols
+    name = identity(mention.occurrence.spelling)
+    if mention.label:
+        return table.labels[snapshot.unit].get(name) or table.labels[Unit.PROGRAM].get(name)
+    return table.variables.get(name) or table.macros.get(name)
+
+
 def symbol_at(snapshot: Snapshot, offset: int) -> tuple[Symbol, Occurrence] | None:
     """The user symbol whose name is written at ``offset`` of the snapshot's file."""
     document = snapshot.document
     table = snapshot.model.symbols
     for mention in _mentions(snapshot.unit, document, offset):
-        if mention.span.start <= offset <= mention.span.end:
-            symbol = table.variables.get(identity(mention.spelling))
-            return (symbol, mention) if symbol is not None else None
+        span = mention.occurrence.span
+        if span.start <= offset <= span.end:
+            symbol = _mentioned(snapshot, mention)
+            return (symbol, mention.occurrence) if symbol is not None else None
     for symbol in table.all():
         for occurrence in symbol.occurrences():
             span = occurrence.span

@@ -102,3 +102,14 @@ async def test_an_event_handler_keeps_its_name(client, tmp_path):
         await client.text_document_prepare_rename_async(
             types.PrepareRenameParams(text_document=document(uri), position=position(text, "#ONERROR", 3))
         )
+
+
+async def test_a_label_a_macro_jumps_to_is_renamed_in_the_macros_body_too(client, tmp_path):
+    text = "DEFINE doit = GOSUB worker\ndoit\nEND\n#worker\nRETURN\n"
+    uri = uri_of(tmp_path / "jump.mnt")
+    await open_document(client, uri, text)
+    edit = await client.text_document_rename_async(
+        types.RenameParams(text_document=document(uri), position=position(text, "#worker", 2), new_name="job")
+    )
+    places = sorted((e.range.start.line, e.range.start.character, e.range.end.character) for e in edit.changes[uri])
+    assert places == [(0, 20, 26), (3, 1, 7)]

@@ -3,7 +3,8 @@
 The parameters are read from each format itself: the comma-separated items in
 the brackets after a function's name, or after the ``=`` of a keyword written
 to (braces, the manual's optional parts, are trimmed off). A repeated last
-item (``{,<expression> ...}``) stays active for every further value. In an
+item (``{,<expression> ...}``, or a value per axis) stays active for every
+further value; a terminal (``PRINT #1, ...``) is not counted as an operand. In an
 expression the read form (``v = ...``) comes first, at the start of a
 statement the written one.
 """
@@ -56,7 +57,8 @@ def _callee(tokens: list[Token]) -> _Callee | None:
         elif token.kind is TokenKind.COMMA and depth == 0:
             commas += 1
         elif token.kind in _KEYWORDS and depth == 0 and _starts_statement(tokens, index):
-            return _Callee(token, commas, False, False)
+            terminal = index + 1 < len(tokens) and tokens[index + 1].kind is TokenKind.HASH
+            return _Callee(token, commas - 1 if terminal and commas else commas, False, False)  # PRINT #1, ...
     return None
 
 
@@ -91,14 +93,17 @@ def _parameters(label: str, name: str, bracketed: bool) -> list[tuple[int, int]]
         return _items(label, equals + 1, len(label))
     if label[after : after + 1] == "[":  # a command's axes: GO[axes]
         after = label.find("]", after) + 1
+    if label[after:].lstrip().startswith("{#"):  # the terminal (PRINT #1, ...) is no operand
+        after = label.find("}", after) + 1
     return _items(label, after, len(label))
 
 
 def _signature(word: Keyword, label: str, callee: _Callee) -> types.SignatureInformation:
     parameters = _parameters(label, word.name, callee.bracketed)
     active = callee.operand
-    if parameters and active >= len(parameters) and "..." in label[slice(*parameters[-1])]:
-        active = len(parameters) - 1  # a repeated last operand
+    repeated = "..." in label[slice(*parameters[-1])] or "[axes]" in label if parameters else False
+    if repeated and active >= len(parameters):
+        active = len(parameters) - 1  # a repeated last operand, or one value per axis
     return types.SignatureInformation(
         label=label,
         documentation=word.summary or None,

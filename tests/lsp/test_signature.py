@@ -60,6 +60,8 @@ async def active(client, uri, text, needle, shift=0) -> tuple[str, str | None]:
         ("MOVEA.0 = 1, 2, ", "MOVEA[axes] = <expression> {,<expression ...}", "<expression ..."),
         ("CIRCLEA[0,1] = 1, 2, ", "CIRCLEA[axis0,axis1] = <centre0>,<centre1>,<angle>", "<angle>"),
         ("PAUSE ", "PAUSE <condition>", "<condition>"),
+        ("LOCATE #1, 5, ", "LOCATE {#<terminal>} <column>,<row>", "<row>"),
+        ("CAMEND[0,1] = 1, 2, ", "CAMEND[axes] = <expression> {,<expression>}", "<expression>"),
     ],
 )
 async def test_the_operand_under_the_cursor_is_highlighted_in_the_form_in_use(client, tmp_path, line, label, parameter):

@@ -19,10 +19,10 @@ from mintlang.syntax.vocabulary import vocabulary
 def _comment_keyword(document: Document, offset: int) -> Token | None:
     """The ``REM`` that starts a comment, as a keyword token, when ``offset`` is on it."""
     index = token_index(document, offset)
-    comment = document.tokens[index] if index >= 0 else None
-    if comment is None or comment.kind is not TokenKind.COMMENT or offset > comment.start + len("REM"):
-        return None
-    return Token(TokenKind.KEYWORD, comment.text[: len("REM")], comment.start)
+    for comment in (document.tokens[i] for i in (index, index - 1) if i >= 0):  # the cursor may sit just after it
+        if comment.kind is TokenKind.COMMENT and comment.start <= offset <= comment.start + len("REM"):
+            return Token(TokenKind.KEYWORD, comment.text[: len("REM")], comment.start)
+    return None
 
 
 def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:

@@ -47,6 +47,9 @@ async def test_the_rem_of_a_comment_is_a_keyword(client, tmp_path):
     await open_document(client, uri, text)
     assert "**REM**" in await hover_at(client, uri, text, "rem", 1)
     assert await hover_at(client, uri, text, "note", 1) is None
+    bare = "REM\n"
+    await open_document(client, uri_of(tmp_path / "bare.mnt"), bare)
+    assert "**REM**" in await hover_at(client, uri_of(tmp_path / "bare.mnt"), bare, "REM", 3)
 
 
 async def test_constant_shows_its_value(client, tmp_path):

@@ -116,10 +116,21 @@ def partner(uri: str, settings: Settings) -> tuple[Unit, str | None]:
     prefix, suffix = pairing
     if file.name.lower().endswith(suffix.lower()) and file.name.startswith(prefix) and suffix:
         stem = file.name[len(prefix) : len(file.name) - len(suffix)]
-        return Unit.CONFIGURATION, from_fs_path(str(file.with_name(stem + PROGRAM_SUFFIX)))
+        return Unit.CONFIGURATION, from_fs_path(str(_sibling(file, stem + PROGRAM_SUFFIX)))
     if file.suffix.lower() == PROGRAM_SUFFIX:
-        return Unit.PROGRAM, from_fs_path(str(file.with_name(prefix + file.stem + suffix)))
+        return Unit.PROGRAM, from_fs_path(str(_sibling(file, prefix + file.stem + suffix)))
     return Unit.PROGRAM, None
+
+
+def _sibling(file: Path, name: str) -> Path:
+    """``name`` beside ``file``, matched without regard to case as on the controller's PC (APP.MNT, app.cfg)."""
+    exact = file.with_name(name)
+    if exact.exists():
+        return exact
+    try:
+        return next((path for path in file.parent.iterdir() if path.name.lower() == name.lower()), exact)
+    except OSError:
+        return exact
 
 
 def _unreadable(text: str) -> str | None:

@@ -70,6 +70,11 @@ async def test_configuration_file_beside_the_program(client, tmp_path):
     assert "E3001" in {d.code for d in await open_document(client, lonely, "counter = 1\n")}
 
 
+async def test_the_configuration_file_is_found_whatever_the_case_of_its_name(client, tmp_path):
+    (tmp_path / "app.cfg").write_text("DIM counter\n", encoding="utf-8")
+    assert errors(await open_document(client, uri_of(tmp_path / "APP.MNT"), "counter = 1\n")) == set()
+
+
 async def test_editing_the_configuration_refreshes_the_program(client, tmp_path):
     (tmp_path / "cell.cfg").write_text("DIM counter\n", encoding="utf-8")
     program, config = uri_of(tmp_path / "cell.mnt"), uri_of(tmp_path / "cell.cfg")

@@ -21,7 +21,7 @@ from pathlib import Path
 import click
 from rich.console import Console
 
-from mintlang.cli.files import collect, is_configuration
+from mintlang.cli.files import collect, is_configuration, program_as_own_configuration
 from mintlang.cli.options import controller_option
 from mintlang.migrate.api import UnknownRule, rules, select
 from mintlang.migrate.api import migrate as migrate_text
@@ -87,23 +87,13 @@ def _jobs(paths: tuple[Path, ...], config: Path | None) -> list[_Job]:
     if config is not None:
         if len(found) > 1 or any(is_configuration(path) for path in found):
             raise _Usage("--config pairs one configuration file with one program file")
-        if found:
-            _refuse_same(found[0], config)
+        itself = program_as_own_configuration(found, config)
+        if itself is not None:  # read in both roles; with --write the second write would undo the first
+            raise _Usage(f"--config {config} is the program {itself} itself: name the configuration file")
         return [_Job(_read(found[0]) if found else None, _read(config))]
     if not found:
         raise _Usage("no .mnt or .cfg files to migrate")
     return [_Job(None, _read(p)) if is_configuration(p) else _Job(_read(p), None) for p in found]
-
-
-def _refuse_same(program: Path, config: Path) -> None:
-    """The program as its own --config would be migrated in two roles, and with --write the
-    second write would silently undo the first."""
-    try:
-        same = program.samefile(config)
-    except OSError as error:
-        raise _Usage(f"cannot read {error.filename}: {error.strerror or error}") from None
-    if same:
-        raise _Usage(f"--config {config} is the program {program} itself: name the configuration file")
 
 
 def _diff(file: SourceFile, text: str) -> str:

@@ -22,6 +22,7 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
+from mintlang.cli.files import program_as_own_configuration
 from mintlang.cli.options import controller_option
 from mintlang.controllers import ControllerProfile, profile
 from mintlang.keyworddb.model import Controller as ControllerName
@@ -145,6 +146,8 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
 ) -> None:
     """Run a Mint program against simulated axes, I/O and a host."""
     errors = Console(stderr=True, highlight=False, soft_wrap=True)
+    if config_path is not None and program_as_own_configuration([program], config_path):
+        raise click.UsageError(f"--config {config_path} is the program {program} itself: name the configuration file")
     try:
         source = read_source(program).text
         config = read_source(config_path).text if config_path is not None else None
@@ -169,7 +172,7 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     simulated = profile(controller)
     axes = _axes_list(trace_axes, simulated) or tuple(range(simulated.axis_count))
     recorders = _Recorders(Trace(axes) if tracing else None, errors, until_ms)
-    stdout = _Stdout()
+    stdout = _Stdout(live=realtime or host_port is not None)
     try:
         with recorders.progress:
             result = run_source(
@@ -210,14 +213,22 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
 
 
 class _Stdout:
-    """Where the program's terminal output streams; a reader that goes away (``| head``) ends the run quietly."""
+    """Where the program's terminal output streams; a reader that goes away (``| head``) ends the run quietly.
 
-    def __init__(self) -> None:
+    A ``live`` run (paced to real time, or talking to a host) is watched as it
+    happens, so each write is flushed even into a pipe (``| tee log``); a fast
+    run keeps the pipe's buffering, which a program printing in a loop needs.
+    """
+
+    def __init__(self, *, live: bool) -> None:
         self.closed = False
+        self.live = live
 
     def write(self, text: str) -> None:
         try:
             sys.stdout.write(text)
+            if self.live:
+                sys.stdout.flush()
         except BrokenPipeError:
             self.close()
             raise Interrupt("stdout was closed (broken pipe)") from None

@@ -14,7 +14,7 @@ import click
 from rich.console import Console
 
 from mintlang import check_application
-from mintlang.cli.files import collect, is_configuration
+from mintlang.cli.files import collect, is_configuration, program_as_own_configuration, same_file
 from mintlang.cli.options import controller_option
 from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, render_text
 from mintlang.codes import known_codes
@@ -91,11 +91,14 @@ def check(
         return
     if not files:
         _fail("no .mnt files found in " + ", ".join(str(p) for p in paths))
+    itself = program_as_own_configuration(files, config_path) if config_path is not None else None
+    if itself is not None:
+        _fail(f"--config {config_path} is the program {itself} itself: name the configuration file")
 
     reports: list[FileReport] = []
     seen_by_programs: list[tuple[Diagnostic, ...]] = []  # the configuration's findings with each program
     for path in files:
-        if configuration is not None and is_configuration(path) and _same_file(path, configuration.path):
+        if configuration is not None and is_configuration(path) and same_file(path, configuration.path):
             continue  # named twice, as --config and as a path: checked once, with the programs
         try:
             source = read_source(path)
@@ -128,13 +131,6 @@ def check(
         render_text(reports, Console(highlight=False, soft_wrap=True))
     failed = any(d.severity is Severity.ERROR for report in reports for d in report.diagnostics)
     sys.exit(1 if failed else 0)
-
-
-def _same_file(path: Path, other: Path) -> bool:
-    try:
-        return path.samefile(other)
-    except OSError:
-        return False
 
 
 def _configuration_with_programs(seen_by_programs: list[tuple[Diagnostic, ...]]) -> tuple[Diagnostic, ...]:

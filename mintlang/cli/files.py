@@ -45,3 +45,16 @@ def collect(paths: Iterable[Path]) -> list[Path]:
 
 def is_configuration(path: Path) -> bool:
     return path.suffix.lower() in CONFIGURATION_SUFFIXES
+
+
+def same_file(path: Path, other: Path) -> bool:
+    """Whether two names reach one file (through links, or case-insensitive names); False if one is missing."""
+    try:
+        return path.samefile(other)
+    except OSError:
+        return False
+
+
+def program_as_own_configuration(programs: Iterable[Path], configuration: Path) -> Path | None:
+    """The program also named as ``--config``: read in both roles, its names would be declared twice."""
+    return next((path for path in programs if not is_configuration(path) and same_file(path, configuration)), None)

@@ -223,6 +223,13 @@ def test_a_configuration_named_as_config_and_as_a_path_is_reported_once(tmp_path
     assert [r["code"] for r in once if r["path"] == str(config)] == ["W103", "E3001"]
 
 
+def test_a_program_named_as_its_own_configuration_exits_with_2(tmp_path: Path) -> None:
+    program = write(tmp_path, "app.mnt", CLEAN)
+    result = mint_check("--config", program, program)
+    assert result.exit_code == 2
+    assert f"--config {program} is the program {program} itself: name the configuration file" in result.stderr
+
+
 def test_a_missing_config_file_exits_with_2(tmp_path: Path) -> None:
     program = write(tmp_path, "main.mnt", CLEAN)
     result = mint_check("--config", tmp_path / "absent.cfg", program)

@@ -10,6 +10,7 @@ import signal
 import socket
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -189,14 +190,21 @@ def test_a_trace_that_fails_to_write_after_the_run_keeps_the_report(
     assert result.stderr.endswith(f"mint-run: cannot write {trace}: No space left on device\n")
 
 
-def start(program: Path, *arguments: str | Path) -> subprocess.Popen[str]:
-    """``mint-run`` in its own process, with Ctrl-C at its default (a shell's background job ignores it)."""
+def start(program: Path, *arguments: str | Path, unbuffered: bool = True) -> subprocess.Popen[str]:
+    """``mint-run`` in its own process, with Ctrl-C at its default (a shell's background job ignores it).
+
+    ``unbuffered`` makes Python flush each line into the pipe; without it the
+    pipe is block-buffered, as when a user pipes ``mint-run`` into ``tee``.
+    """
+    environment = {key: value for key, value in os.environ.items() if key != "PYTHONUNBUFFERED"}
+    if unbuffered:
+        environment["PYTHONUNBUFFERED"] = "1"
     return subprocess.Popen(
         [sys.executable, "-m", "mintlang.runtime", str(program), *(str(argument) for argument in arguments)],
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
-        env={**os.environ, "COLUMNS": "200", "PYTHONUNBUFFERED": "1"},  # each line as soon as it is printed
+        env={**environment, "COLUMNS": "200"},
         preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),  # noqa: PLW1509 - no threads yet
     )
 
@@ -233,3 +241,23 @@ def test_a_reader_that_goes_away_ends_the_run_quietly(tmp_path: Path) -> None:
     assert process.returncode == 141
     assert "Traceback" not in stderr and "Exception ignored" not in stderr
     assert "stdout was closed (broken pipe)" in stderr
+
+
+def test_a_run_paced_to_real_time_shows_each_line_in_a_pipe_as_it_is_printed(tmp_path: Path) -> None:
+    program = write(tmp_path, "slow.mnt", 'PRINT "homing"\nWAIT = 20000\nPRINT "homed"\n')
+    process = start(program, "--realtime", "--max-wall-s", "60", unbuffered=False)
+    started = time.monotonic()
+    try:
+        assert process.stdout is not None
+        assert process.stdout.readline() == "homing\n"
+        assert time.monotonic() - started < 15  # during the 20 s wait, not when the run ends and flushes
+    finally:
+        process.kill()
+        process.communicate()
+
+
+def test_the_program_cannot_be_its_own_configuration(tmp_path: Path) -> None:
+    program = write(tmp_path, "app.mnt", "DIM a\nPRINT a\n")
+    result = mint_run(program, "--config", program)
+    assert result.exit_code == 2
+    assert f"--config {program} is the program {program} itself: name the configuration file" in result.stderr

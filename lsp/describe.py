@@ -9,6 +9,7 @@ from mintlang.lsp.workspace import Snapshot
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import Symbol, SymbolKind
 from mintlang.semantic.units import Unit
+from mintlang.syntax.nodes import character_code
 
 
 def _access(read: bool, write: bool, command: bool) -> str:
@@ -51,6 +52,13 @@ def v3_keyword(word: V3Keyword) -> str:
     else:
         lines.append(f"- Mint v4: {word.status}")
     return "\n".join(lines)
+
+
+def character(text: str) -> str:
+    """A character constant counts as the code of its upper case, which is worth saying for ``'a'``."""
+    code = character_code(text)
+    note = f" (as '{chr(code)}': character constants count in upper case)" if chr(code) != text[1] else ""
+    return f"**{text}** = `{code}` — character constant{note}"
 
 
 def constant(name: str) -> str | None:

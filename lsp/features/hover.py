@@ -16,17 +16,28 @@ from mintlang.syntax.tokens import Token, TokenKind
 from mintlang.syntax.vocabulary import vocabulary
 
 
+def _touching(document: Document, offset: int, kind: TokenKind) -> Token | None:
+    """The token of ``kind`` under the cursor, or just before it."""
+    index = token_index(document, offset)
+    for candidate in (document.tokens[i] for i in (index, index - 1) if i >= 0):
+        if candidate.kind is kind and candidate.start <= offset <= candidate.end:
+            return candidate
+    return None
+
+
 def _comment_keyword(document: Document, offset: int) -> Token | None:
     """The ``REM`` that starts a comment, as a keyword token, when ``offset`` is on it."""
-    index = token_index(document, offset)
-    for comment in (document.tokens[i] for i in (index, index - 1) if i >= 0):  # the cursor may sit just after it
-        if comment.kind is TokenKind.COMMENT and comment.start <= offset <= comment.start + len("REM"):
-            return Token(TokenKind.KEYWORD, comment.text[: len("REM")], comment.start)
+    comment = _touching(document, offset, TokenKind.COMMENT)
+    if comment is not None and offset <= comment.start + len("REM"):
+        return Token(TokenKind.KEYWORD, comment.text[: len("REM")], comment.start)
     return None
 
 
 def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
     """Markdown for the word at ``offset`` and the span it describes."""
+    character = _touching(snapshot.document, offset, TokenKind.CHAR)
+    if character is not None:
+        return describe.character(character.text), character.start, character.end
     token = token_at(snapshot.document, offset) or _comment_keyword(snapshot.document, offset)
     if token is None:
         return None

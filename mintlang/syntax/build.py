@@ -469,7 +469,7 @@ def _leaf(token: Child) -> Make[n.Expression]:
 
         def char(line: LogicalLine, _: Vocabulary) -> n.Expression:
             text = line.texts[index]
-            return n.CharConstant(_new(Span, (line.starts[index], line.ends[index])), text, ord(text[1].upper()))
+            return n.CharConstant(_new(Span, (line.starts[index], line.ends[index])), text, n.character_code(text))
 
         return char
     if kind == "KEYWORD":

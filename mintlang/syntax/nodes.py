@@ -44,11 +44,16 @@ class Number:
     value: float
 
 
+def character_code(text: str) -> int:
+    """The value of a character constant written ``'a'``: the code of its upper case (v4 guide 3.2.3), here 65."""
+    return ord(text[1].upper())
+
+
 @node
 class CharConstant:
     span: Span
     text: str
-    value: int  # upper-case ASCII code: 'a' and 'A' are both 65
+    value: int  # character_code(text): 'a' and 'A' are both 65
 
 
 @node

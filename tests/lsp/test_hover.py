@@ -59,6 +59,15 @@ async def test_constant_shows_its_value(client, tmp_path):
     assert "= `1`" in await hover_at(client, uri, text, "_TRUE", 2)
 
 
+async def test_a_character_constant_shows_its_code_in_upper_case(client, tmp_path):
+    text = "DIM k\nk = INKEY\nIF k = 'y' OR k = 'N' THEN PRINT k\n"
+    uri = uri_of(tmp_path / "keys.mnt")
+    await open_document(client, uri, text)
+    lower = await hover_at(client, uri, text, "'y'", 1)
+    assert lower.startswith("**'y'** = `89` — character constant") and "'Y'" in lower
+    assert await hover_at(client, uri, text, "'N'", 3) == "**'N'** = `78` — character constant"
+
+
 async def test_symbols_say_where_they_are_declared(client, tmp_path):
     text = corpus("ch01_l0144_xy_example.mnt") + "DEFINE fast = 100 * 2\nDIM b\nb = fast\n"
     uri = uri_of(tmp_path / "xy.mnt")

@@ -22,6 +22,7 @@ from mintlang.lsp.positions import Positions
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
 from mintlang.syntax.parser import Document
+from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 log = logging.getLogger(__name__)
 
@@ -37,6 +38,11 @@ class Settings:
     dialect: Dialect = Dialect.V4
     config_pairing: str = "<name>.cfg"
     debounce_ms: int = 150
+
+    @property
+    def words(self) -> Vocabulary:
+        """How keywords are spelt in the dialect, an abbreviation two keywords share naming the controller's one."""
+        return vocabulary(self.dialect, self.controller)
 
     @classmethod
     def from_options(cls, options: object, base: Settings | None = None) -> Settings:

@@ -48,8 +48,9 @@ def check_application(
     ignore: tuple[str, ...] = (),
 ) -> Analysis:
     """Parse and analyse a program with its optional configuration file; diagnostics per file."""
-    configuration = parse(config, dialect) if config is not None else None
-    program = parse(source, dialect, macros=configuration.macros if configuration else None)
+    configuration = parse(config, dialect, controller=controller) if config is not None else None
+    macros = configuration.macros if configuration else None
+    program = parse(source, dialect, macros=macros, controller=controller)
     return analyse(build_model(program, configuration, controller), select=select, ignore=ignore)
 
 

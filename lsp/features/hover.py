@@ -13,7 +13,6 @@ from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.syntax.parser import Document
 from mintlang.syntax.tokens import Token, TokenKind
-from mintlang.syntax.vocabulary import vocabulary
 
 
 def _touching(document: Document, offset: int, kind: TokenKind) -> Token | None:
@@ -52,7 +51,7 @@ def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
         word = database().lookup_v3(token.text)
         text = describe.v3_keyword(word) if word is not None else None
     else:
-        name = vocabulary(snapshot.settings.dialect).keyword_name(token.text)
+        name = snapshot.settings.words.keyword_name(token.text)
         word = database().lookup(name or token.text)
         text = describe.keyword(word, snapshot.settings.controller, token.text) if word is not None else None
     return (text, token.start, token.end) if text is not None else None

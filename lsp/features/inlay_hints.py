@@ -12,7 +12,6 @@ from mintlang.lsp.lookup import token_index
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
-from mintlang.syntax.vocabulary import vocabulary
 
 _KEYWORD_KINDS = GRAMMAR_KEYWORDS | {TokenKind.KEYWORD, TokenKind.FUNCTION}
 _SYMBOL_STATEMENTS = {"?": "PRINT"}  # a statement written as a symbol; operators (&, |, !) read as they are
@@ -24,7 +23,7 @@ def _hint(snapshot: Snapshot, offset: int, label: str) -> types.InlayHint:
 
 def hints(snapshot: Snapshot, span: Span) -> Iterator[types.InlayHint]:
     document = snapshot.document
-    words = vocabulary(snapshot.settings.dialect)
+    words = snapshot.settings.words
     tokens = document.tokens
     for index in range(max(0, token_index(document, span.start)), len(tokens)):
         token = tokens[index]

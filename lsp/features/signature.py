@@ -15,13 +15,12 @@ from dataclasses import dataclass
 
 from lsprotocol import types
 
-from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Keyword
 from mintlang.lsp.lookup import prefix_tokens, significant
 from mintlang.lsp.server import MintServer
+from mintlang.lsp.workspace import Settings
 from mintlang.syntax.tokens import Token, TokenKind
-from mintlang.syntax.vocabulary import vocabulary
 
 _STATEMENT_BREAKS = frozenset({TokenKind.COLON, TokenKind.THEN, TokenKind.DO, TokenKind.ELSE, TokenKind.LABEL})
 _KEYWORDS = frozenset({TokenKind.KEYWORD, TokenKind.FUNCTION, TokenKind.PRINT, TokenKind.INPUT, TokenKind.PAUSE})
@@ -112,12 +111,12 @@ def _signature(word: Keyword, label: str, callee: _Callee) -> types.SignatureInf
     )
 
 
-def signature_help(prefix: str, dialect: Dialect) -> types.SignatureHelp | None:
+def signature_help(prefix: str, settings: Settings) -> types.SignatureHelp | None:
     """The formats of the keyword whose operands end ``prefix`` (the cursor's line so far)."""
-    callee = _callee(significant(prefix_tokens(prefix, dialect)))
+    callee = _callee(significant(prefix_tokens(prefix, settings.dialect)))
     if callee is None:
         return None
-    name = vocabulary(dialect).keyword_name(callee.keyword.text)
+    name = settings.words.keyword_name(callee.keyword.text)
     word = database().lookup(name or callee.keyword.text)
     formats = [label for label in word.formats if word.name in label.upper()] if word is not None else []
     if word is None or not formats:
@@ -136,4 +135,4 @@ def register(server: MintServer) -> None:
     )
     def help_(params: types.SignatureHelpParams) -> types.SignatureHelp | None:
         typing = server.typing(params.text_document.uri, params.position)
-        return signature_help(typing[1], server.analyses.settings.dialect) if typing is not None else None
+        return signature_help(typing[1], server.analyses.settings) if typing is not None else None

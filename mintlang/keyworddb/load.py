@@ -126,14 +126,22 @@ class KeywordDatabase:
     _words: Mapping[str, Keyword] = field(repr=False)
     _v3_words: Mapping[str, V3Keyword] = field(repr=False)
     _old_words: Mapping[str, Rename] = field(repr=False)
+    _shared: Mapping[str, tuple[Keyword, ...]] = field(repr=False)  # abbreviation -> the keywords it is given to
 
-    def lookup(self, word: str) -> Keyword | None:
+    def lookup(self, word: str, controller: Controller | None = None) -> Keyword | None:
         """The v4 keyword ``word`` names or abbreviates, in any case.
 
         A channel glued to a keyword that allows it (``IN3``, ``#FASTIN2``)
-        resolves to that keyword.
+        resolves to that keyword. An abbreviation the guide gives to two
+        keywords names, on ``controller``, the only one of them that controller
+        has (HP is HOMEPOS on a NextMove, HANDLERPENDING on a MintDrive);
+        otherwise, or without a controller, the one conflicts.json resolved it to.
         """
         upper = word.upper()
+        if controller is not None and (shared := self._shared.get(upper)) is not None:
+            available = [keyword for keyword in shared if controller in keyword.controllers]
+            if len(available) == 1:
+                return available[0]
         if (found := self._words.get(upper)) is not None:
             return found
         match = _CHANNEL_GLUED.match(upper)
@@ -154,13 +162,23 @@ def _by_name(records: Iterable[_Record], name: Callable[[_Record], str]) -> Mapp
     return MappingProxyType({name(record).upper(): record for record in records})
 
 
+def _abbreviation_conflicts() -> list[dict[str, Any]]:
+    return [conflict for conflict in _read("conflicts.json") if conflict["kind"] == "abbreviation"]
+
+
 def _abbreviation_choices(keywords: Mapping[str, Keyword]) -> dict[str, Keyword]:
     """The generator's resolution of abbreviations the guide gives to two keywords."""
-    return {
-        conflict["subject"].upper(): keywords[conflict["resolved_to"]]
-        for conflict in _read("conflicts.json")
-        if conflict["kind"] == "abbreviation"
-    }
+    return {conflict["subject"].upper(): keywords[conflict["resolved_to"]] for conflict in _abbreviation_conflicts()}
+
+
+def _shared_abbreviations(keywords: Mapping[str, Keyword]) -> Mapping[str, tuple[Keyword, ...]]:
+    """Each abbreviation the guide gives to two keywords, with both."""
+    return MappingProxyType(
+        {
+            conflict["subject"].upper(): tuple(keywords[name] for name in conflict["keywords"])
+            for conflict in _abbreviation_conflicts()
+        }
+    )
 
 
 @cache
@@ -186,4 +204,5 @@ def database() -> KeywordDatabase:
         _words=_index(preferred, lambda k: (k.name,), lambda k: k.abbreviations, fixed=_abbreviation_choices(by_name)),
         _v3_words=_index(v3_keywords, lambda k: (k.name,), lambda k: k.abbreviations),
         _old_words=_index(renames, lambda r: (r.old,), lambda r: (r.old_abbreviation,) if r.old_abbreviation else ()),
+        _shared=_shared_abbreviations(by_name),
     )

@@ -17,6 +17,7 @@ from mintlang.allocation import without_collector
 from mintlang.codes import mint_error
 from mintlang.diagnostics import Diagnostic, LineIndex, Span
 from mintlang.dialect import Dialect
+from mintlang.keyworddb.model import Controller
 from mintlang.syntax import nodes as n
 from mintlang.syntax.grammar import ParseFailure, parse_kinds
 from mintlang.syntax.grammar import clear_cache as clear_parse_cache
@@ -71,10 +72,15 @@ def parse(
     dialect: Dialect | str = Dialect.V4,
     *,
     macros: Mapping[str, MacroDefinition] | None = None,
+    controller: Controller | str | None = None,
 ) -> Document:
-    """Parse ``source``; ``macros`` are those already defined (by the configuration file)."""
+    """Parse ``source``; ``macros`` are those already defined (by the configuration file).
+
+    ``controller`` decides the abbreviations two keywords share (HP: HOMEPOS or
+    HANDLERPENDING); without one they resolve as conflicts.json says.
+    """
     dialect = Dialect(dialect)
-    words = vocabulary(dialect)
+    words = vocabulary(dialect, Controller(controller) if controller is not None else None)
     lexed = lex(source, dialect)
     diagnostics = list(lexed.issues)
     visible: dict[str, MacroDefinition] = dict(macros or {})

@@ -2,7 +2,9 @@
 
 Mint words are case-insensitive and keywords may be abbreviated, so the lexer
 needs one table from every spelling (upper-cased) to its token kind. The table
-is derived from the keyword database once per dialect.
+is derived from the keyword database once per dialect (and controller: an
+abbreviation the guide gives to two keywords names the one the controller has,
+while its token kind is the same on every controller, so lexing needs none).
 """
 
 from __future__ import annotations
@@ -13,7 +15,7 @@ from functools import cache
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import KeywordKind
+from mintlang.keyworddb.model import Controller, KeywordKind
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
 
 _ROLES: Mapping[str, TokenKind] = {kind.value: kind for kind in GRAMMAR_KEYWORDS}
@@ -65,8 +67,8 @@ def _kind_of(name: str, kind: KeywordKind, has_parameters: bool) -> TokenKind:
 
 
 @cache
-def vocabulary(dialect: Dialect) -> Vocabulary:
-    """The spelling tables of ``dialect``, built once per process."""
+def vocabulary(dialect: Dialect, controller: Controller | None = None) -> Vocabulary:
+    """The spelling tables of ``dialect`` on ``controller`` (any, when None), built once per process."""
     db = database()
     words: dict[str, TokenKind] = {}
     canonical: dict[str, str] = {}
@@ -90,7 +92,7 @@ def vocabulary(dialect: Dialect) -> Vocabulary:
             if keyword.kind is not KeywordKind.EVENT:
                 kind = _kind_of(keyword.name, keyword.kind, bool(keyword.parameters))
                 for abbreviation in keyword.abbreviations:
-                    if db.lookup(abbreviation) is keyword:  # shared ones go where conflicts.json resolved them
+                    if db.lookup(abbreviation, controller) is keyword:  # a shared one goes to one keyword
                         add(abbreviation, keyword.name, kind)
         constants = frozenset(db.constants)
     else:

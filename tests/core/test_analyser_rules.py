@@ -230,6 +230,14 @@ def test_an_abbreviation_two_keywords_share_means_the_one_recorded_in_conflicts(
     assert found("SI[0,1] = 10,10\n", controller="mintdrive") == [("E2017", ERROR, 1)]  # one axis only
 
 
+def test_an_abbreviation_two_keywords_share_means_the_one_the_controller_has() -> None:
+    # HP is HOMEPOS on a NextMove (v4:11581) and HANDLERPENDING on a MintDrive (v4:11314)
+    assert found("DIM a\na = HP.1\n", controller="nextmove-pci") == []
+    for controller, keyword in (("nextmove-pci", "HOMEPOS"), ("mintdrive", "HANDLERPENDING")):
+        printed = mintlang.parse("PRINT HP\n", controller=controller).lines[0].statements[0].items[0].value
+        assert printed.keyword == keyword
+
+
 # -------------------------------------------------------------- addressing
 
 

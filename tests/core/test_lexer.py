@@ -10,8 +10,11 @@ import pytest
 
 import mintlang
 from mintlang import Severity
+from mintlang.dialect import Dialect
+from mintlang.keyworddb.model import Controller
 from mintlang.syntax import nodes as n
 from mintlang.syntax.tokens import TRIVIA, TokenKind
+from mintlang.syntax.vocabulary import vocabulary
 
 K = TokenKind
 
@@ -297,3 +300,9 @@ def test_every_line_break_convention_ends_a_line(newline: str) -> None:
     assert [line.number for line in document.lines] == [1, 2, 3]
     assert document.diagnostics == ()
     assert [token.text for token in document.tokens if token.kind is K.NEWLINE] == [newline] * 3
+
+
+def test_no_controller_changes_the_kind_of_a_word() -> None:
+    # the lexer caches lines per dialect alone: only the keyword a shared abbreviation names may differ
+    for dialect in Dialect:
+        assert all(vocabulary(dialect, controller).words == vocabulary(dialect).words for controller in Controller)

@@ -169,6 +169,19 @@ def test_shared_abbreviations_resolve_as_recorded(db: KeywordDatabase) -> None:
     assert any("SI is given to" in note for note in db.keywords["STEPPERIO"].notes)
 
 
+def test_a_shared_abbreviation_names_the_keyword_the_controller_has(db: KeywordDatabase) -> None:
+    # v4:11314 HANDLERPENDING/HP (MintDrive only), v4:11581 HOMEPOS/HP (NextMove only)
+    assert db.lookup("HP", Controller.NEXTMOVE_PCI) is db.keywords["HOMEPOS"]
+    assert db.lookup("hp", Controller.MINTDRIVE) is db.keywords["HANDLERPENDING"]
+    # v4:16233 SPEEDDEMAND/SPD (MintDrive, ServoNode), v4:16289 SPLINESUSPENDTIME/SPD (NextMove)
+    assert db.lookup("SPD", Controller.NEXTMOVE_BX) is db.keywords["SPLINESUSPENDTIME"]
+    assert db.lookup("SPD", Controller.SERVONODE51) is db.keywords["SPEEDDEMAND"]
+    # without a controller, or where the controller has both or neither, the recorded choice stands
+    assert db.lookup("HP") is db.keywords["HANDLERPENDING"]
+    assert db.lookup("HP", Controller.SERVONODE51) is db.keywords["HANDLERPENDING"]
+    assert db.lookup("SI", Controller.NEXTMOVE_BX) is db.keywords["STOPINPUT"]
+
+
 def test_chapter_disagreements_are_noted(db: KeywordDatabase) -> None:
     # v4:10777 "FOLLOWDENOM/FLD" but v4:17621 "FOLLOWDENOM FD"
     assert db.keywords["FOLLOWDENOM"].abbreviations == ("FLD", "FD")

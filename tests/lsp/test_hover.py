@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 from lsprotocol import types
 
-from tests.lsp.conftest import corpus, document, open_document, position, uri_of
+from tests.lsp.conftest import corpus, document, open_document, position, published, uri_of
 
 pytestmark = pytest.mark.asyncio
 
@@ -57,6 +57,18 @@ async def test_constant_shows_its_value(client, tmp_path):
     uri = uri_of(tmp_path / "constant.mnt")
     await open_document(client, uri, text)
     assert "= `1`" in await hover_at(client, uri, text, "_TRUE", 2)
+
+
+async def test_an_abbreviation_two_keywords_share_names_the_controllers_one(client, tmp_path):
+    text = "DIM a\na = HP.0\n"
+    uri = uri_of(tmp_path / "home.mnt")
+    assert await open_document(client, uri, text) == []  # NextMove PCI: HOMEPOS, available
+    assert "**HOMEPOS**" in await hover_at(client, uri, text, "HP", 1)
+    client.workspace_did_change_configuration(
+        types.DidChangeConfigurationParams(settings={"mint": {"controller": "mintdrive"}})
+    )
+    await published(client, uri)
+    assert "**HANDLERPENDING**" in await hover_at(client, uri, text, "HP", 1)
 
 
 async def test_a_character_constant_shows_its_code_in_upper_case(client, tmp_path):

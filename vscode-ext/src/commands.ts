@@ -7,8 +7,8 @@ import * as vscode from "vscode";
 import { currentHost, currentSettings, listFolder } from "./host";
 import { LANGUAGE_ID } from "./language";
 import { showError } from "./notify";
-import { configurationOf } from "./pairing";
-import { displayCommand, fileCommand, isMissingModule, MODULES, type Command, type FileTool } from "./resolve";
+import { applicationOf, configurationOf, type Application } from "./pairing";
+import { displayCommand, fileCommand, isMissingModule, MODULES, outcomeOf, type Command, type FileTool } from "./resolve";
 
 interface Outcome {
   readonly code: number | null;
@@ -23,6 +23,31 @@ async function targetDocument(uri: unknown): Promise<vscode.TextDocument | undef
   }
   const document = vscode.window.activeTextEditor?.document;
   return document?.languageId === LANGUAGE_ID ? document : undefined;
+}
+
+const filesOf = (application: Application): string[] =>
+  application.config === undefined ? [application.program] : [application.program, application.config];
+
+/**
+ * What `tool` acts on when invoked on `file`, and how messages name it. mint-migrate rewrites a
+ * program and its configuration file together, whichever of the two it is invoked on: the
+ * configuration declares variables of the program, so neither migrates right without the other.
+ * A simulated run is of a program, which reads its configuration file.
+ */
+function targetOf(tool: FileTool, file: string, pattern: string): { application: Application; label: string } {
+  if (tool === "mint-migrate") {
+    const application = applicationOf(file, listFolder, pattern);
+    return { application, label: filesOf(application).map((name) => path.basename(name)).join(" and ") };
+  }
+  return { application: { program: file, config: configurationOf(file, listFolder, pattern) }, label: path.basename(file) };
+}
+
+/** Saves those of `files` open with unsaved changes: the tools read them from disk, and mint-migrate rewrites them there. */
+async function saveOpen(files: readonly string[]): Promise<boolean> {
+  const unsaved = vscode.workspace.textDocuments.filter(
+    (document) => document.uri.scheme === "file" && document.isDirty && files.includes(document.uri.fsPath),
+  );
+  return (await Promise.all(unsaved.map((document) => document.save()))).every((saved) => saved);
 }
 
 function run(command: Command, cwd: string, output: vscode.OutputChannel, token: vscode.CancellationToken): Promise<Outcome> {
@@ -55,14 +80,13 @@ async function runTool(tool: FileTool, title: string, uri: unknown, output: vsco
     void vscode.window.showErrorMessage(`${title}: open a Mint (.mnt) file saved on disk first.`);
     return;
   }
-  // The tools read the file from disk, and mint-migrate rewrites it there.
-  if (document.isDirty && !(await document.save())) {
+  const settings = currentSettings();
+  const { application, label } = targetOf(tool, document.uri.fsPath, settings.configPairing);
+  if (!(await saveOpen(filesOf(application)))) {
     return;
   }
-  const file = document.uri.fsPath;
-  const settings = currentSettings();
-  const config = tool === "mint-run" ? configurationOf(file, listFolder, settings.configPairing) : undefined;
-  const resolution = fileCommand(tool, file, settings, currentHost(), config);
+  const file = application.program;
+  const resolution = fileCommand(tool, file, settings, currentHost(), application.config);
   if (!resolution.ok) {
     void showError(`${title}: ${resolution.message}`, output);
     return;
@@ -70,7 +94,7 @@ async function runTool(tool: FileTool, title: string, uri: unknown, output: vsco
   const command = resolution.command;
   output.show(true);
   output.appendLine(`$ ${displayCommand(command)}`);
-  const progress = { location: vscode.ProgressLocation.Notification, title: `${title}: ${path.basename(file)}`, cancellable: true };
+  const progress = { location: vscode.ProgressLocation.Notification, title: `${title}: ${label}`, cancellable: true };
   let outcome: Outcome;
   try {
     outcome = await vscode.window.withProgress(progress, (_, token) => run(command, path.dirname(file), output, token));
@@ -83,10 +107,16 @@ async function runTool(tool: FileTool, title: string, uri: unknown, output: vsco
   if (outcome.cancelled) {
     return;
   }
-  if (outcome.code === 0) {
-    void vscode.window.showInformationMessage(`${title}: ${path.basename(file)} done.`);
-  } else if (command.source === "mint.pythonPath" && isMissingModule(outcome.stderr, tool)) {
+  const meaning = outcomeOf(tool, outcome.code);
+  // Python exits 1 when the module is missing, so that is told apart before a migration's exit 1.
+  if (meaning !== "done" && command.source === "mint.pythonPath" && isMissingModule(outcome.stderr, tool)) {
     void showError(`${title}: ${tool} was not found: ${command.command} has no module ${MODULES[tool]}.`, output);
+  } else if (meaning === "done") {
+    void vscode.window.showInformationMessage(`${title}: ${label} done.`);
+  } else if (meaning === "review") {
+    void vscode.window.showWarningMessage(
+      `${title}: ${label} migrated; some statements need you: see the REM MIGRATE lines and the Mint output.`,
+    );
   } else {
     void showError(`${title}: ${tool} failed (exit ${outcome.code ?? "killed"}); see the Mint output.`, output);
   }

@@ -2,8 +2,9 @@
 // every file, but a configuration file named like a program beside it (conveyor.cfg next to
 // conveyor.mnt) is the controller's configuration for that program. The name follows the
 // mint.configPairing setting, read the way the language server reads it (lsp/workspace.py,
-// partner()), so the editor and the server agree on which file is paired with which.
-// No vscode import: unit-tested under plain node.
+// partner()), so the editor and the server agree on which file is paired with which; as there,
+// the pair is found whatever the case of the names (APP.MNT with app.cfg), as on the Windows PCs
+// Mint programs come from. No vscode import: unit-tested under plain node.
 import * as path from "node:path";
 
 export const DEFAULT_PAIRING = "<name>.cfg";
@@ -15,6 +16,19 @@ function splitPattern(pattern: string): { prefix: string; suffix: string } | und
   return at < 0 ? undefined : { prefix: pattern.slice(0, at), suffix: pattern.slice(at + "<name>".length) };
 }
 
+/** Whether `name` is a program's: a program is never a configuration file, whatever the pattern says. */
+const isProgram = (name: string): boolean => name.toLowerCase().endsWith(PROGRAM_SUFFIX);
+
+/**
+ * `name` in `folder` as it is listed there: that exact name, else one differing only in case (as
+ * the server's _sibling()), so the path handed to a tool names a file that exists.
+ */
+function sibling(folder: string, name: string, listFolder: (folder: string) => readonly string[]): string | undefined {
+  const names = listFolder(folder);
+  const listed = names.includes(name) ? name : names.find((other) => other.toLowerCase() === name.toLowerCase());
+  return listed === undefined ? undefined : path.join(folder, listed);
+}
+
 /**
  * The program name `fileName` would be the configuration of under `pattern` ("conveyor" for
  * conveyor.cfg under "<name>.cfg"), or undefined. As in the server, the prefix compares with
@@ -23,7 +37,7 @@ function splitPattern(pattern: string): { prefix: string; suffix: string } | und
 function programStem(fileName: string, pattern: string): string | undefined {
   const parts = splitPattern(pattern);
   const name = path.basename(fileName);
-  if (parts === undefined || parts.suffix === "" || name.toLowerCase().endsWith(PROGRAM_SUFFIX)) {
+  if (parts === undefined || parts.suffix === "" || isProgram(name)) {
     return undefined;
   }
   const { prefix, suffix } = parts;
@@ -35,27 +49,31 @@ function programStem(fileName: string, pattern: string): string | undefined {
 }
 
 /**
- * Whether `fileName` is the configuration file of a program in its folder under `pattern`
- * (mint.configPairing). `listFolder` is only called for names that fit the pattern; program
- * names compare without case, as on the DOS-era tools Mint comes from.
+ * The program whose configuration file `fileName` is under `pattern` (mint.configPairing), if it
+ * is in the same folder. `listFolder` is only called for names that fit the pattern.
  */
+export function programOf(
+  fileName: string,
+  listFolder: (folder: string) => readonly string[],
+  pattern: string = DEFAULT_PAIRING,
+): string | undefined {
+  const stem = programStem(fileName, pattern);
+  return stem === undefined ? undefined : sibling(path.dirname(fileName), `${stem}${PROGRAM_SUFFIX}`, listFolder);
+}
+
+/** Whether `fileName` is the configuration file of a program in its folder under `pattern` (mint.configPairing). */
 export function isPairedConfig(
   fileName: string,
   listFolder: (folder: string) => readonly string[],
   pattern: string = DEFAULT_PAIRING,
 ): boolean {
-  const stem = programStem(fileName, pattern);
-  if (stem === undefined) {
-    return false;
-  }
-  const program = `${stem}${PROGRAM_SUFFIX}`.toLowerCase();
-  return listFolder(path.dirname(fileName)).some((name) => name.toLowerCase() === program);
+  return programOf(fileName, listFolder, pattern) !== undefined;
 }
 
 /**
  * The configuration file of the program `programFile` under `pattern`, if it is in the program's
- * folder: what `mint-run --config` gets. The name is exact, as the server builds it for its
- * "Run in simulator" lens and its checks (conveyor.mnt -> conveyor.cfg).
+ * folder: what the tools get with `--config` (conveyor.mnt -> conveyor.cfg), as the server pairs
+ * them for its checks, its "Run in simulator" lens and its migration.
  */
 export function configurationOf(
   programFile: string,
@@ -67,7 +85,30 @@ export function configurationOf(
   if (parts === undefined || parts.suffix === "" || extension.toLowerCase() !== PROGRAM_SUFFIX) {
     return undefined;
   }
-  const folder = path.dirname(programFile);
   const wanted = `${parts.prefix}${path.basename(programFile, extension)}${parts.suffix}`;
-  return listFolder(folder).includes(wanted) ? path.join(folder, wanted) : undefined;
+  return isProgram(wanted) ? undefined : sibling(path.dirname(programFile), wanted, listFolder);
+}
+
+/**
+ * A program and its configuration file: one application, as the tools and the server call it.
+ * A file that is neither a program nor a paired configuration file stands alone as `program`.
+ */
+export interface Application {
+  readonly program: string;
+  readonly config: string | undefined;
+}
+
+/**
+ * The application `file` belongs to, found from either of its files: a program with its
+ * configuration file if it has one, a paired configuration file with its program.
+ */
+export function applicationOf(
+  file: string,
+  listFolder: (folder: string) => readonly string[],
+  pattern: string = DEFAULT_PAIRING,
+): Application {
+  const program = programOf(file, listFolder, pattern);
+  return program === undefined
+    ? { program: file, config: configurationOf(file, listFolder, pattern) }
+    : { program, config: file };
 }

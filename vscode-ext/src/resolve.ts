@@ -136,16 +136,32 @@ export function resolveTool(tool: Tool, settings: ToolSettings, host: Host): Res
 }
 
 /**
- * The arguments a command-line tool takes for one file; both target the configured controller.
- * A simulated run gets the program's configuration file when it has one (`config`), as the
- * language server's "Run in simulator" lens does.
+ * The arguments a command-line tool takes for one file and, when it has one, the program's
+ * configuration file (`config`); both tools target the configured controller. The configuration
+ * goes with the program as in the language server: its variables are the program's, so
+ * mint-migrate rewrites the two files together (the server's "Migrate this file to Mint v4"), and
+ * a simulated run starts from it (the server's "Run in simulator" lens).
  */
 export function toolArguments(tool: FileTool, file: string, controller: Controller, config?: string): string[] {
+  const configuration = config === undefined ? [] : ["--config", config];
   if (tool === "mint-migrate") {
-    return ["--write", "--controller", controller, file];
+    return ["--write", ...configuration, "--controller", controller, file];
   }
   // A simulated run is bounded in real time, so a program that never ends cannot hang the editor.
-  return [...(config === undefined ? [] : ["--config", config]), "--controller", controller, "--max-wall-s", "30", file];
+  return [...configuration, "--controller", controller, "--max-wall-s", "30", file];
+}
+
+/**
+ * What a tool's exit status means to the user. mint-migrate --write exits 1 when it wrote the files
+ * but left statements only a person can port (each marked by a REM MIGRATE line): the migration
+ * happened, so that is a call for review, not a failure. mint-run exits 1 when the program stopped
+ * on an error or an expectation failed, which the run's own output explains.
+ */
+export function outcomeOf(tool: FileTool, code: number | null): "done" | "review" | "failed" {
+  if (code === 0) {
+    return "done";
+  }
+  return tool === "mint-migrate" && code === 1 ? "review" : "failed";
 }
 
 /** The command line that runs `tool` on `file` (with its configuration file `config`), or why there is none. */

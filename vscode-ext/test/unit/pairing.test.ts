@@ -1,7 +1,7 @@
 import assert from "node:assert/strict";
 import { test } from "node:test";
 
-import { configurationOf, isPairedConfig } from "../../src/pairing";
+import { applicationOf, configurationOf, isPairedConfig, programOf } from "../../src/pairing";
 
 const folder = (names: readonly string[]) => (dir: string) => {
   assert.equal(dir, "/project");
@@ -45,13 +45,52 @@ test("a pattern without <name> or without a suffix pairs nothing, and a program 
   assert.equal(isPairedConfig("/project/a.mnt", unread, "<name>.mnt"), false);
 });
 
-test("a program's configuration file is the exact name the pattern gives, when it exists", () => {
+test("a program's configuration file is the name the pattern gives, as it is listed, when it exists", () => {
   const names = folder(["conveyor.mnt", "conveyor.cfg", "setup_conveyor.cfg", "OTHER.MNT", "other.CFG"]);
   assert.equal(configurationOf("/project/conveyor.mnt", names), "/project/conveyor.cfg");
   assert.equal(configurationOf("/project/conveyor.mnt", names, "setup_<name>.cfg"), "/project/setup_conveyor.cfg");
-  assert.equal(configurationOf("/project/OTHER.MNT", names), undefined);
+  // Whatever the case of the names, as in the server (lsp/workspace.py, _sibling()).
+  assert.equal(configurationOf("/project/OTHER.MNT", names), "/project/other.CFG");
   assert.equal(configurationOf("/project/missing.mnt", names), undefined);
   const unread = () => assert.fail("the folder must not be listed");
   assert.equal(configurationOf("/project/conveyor.mnt", unread, ""), undefined);
   assert.equal(configurationOf("/project/conveyor.cfg", unread), undefined);
+});
+
+test("the exact name wins over one differing only in case", () => {
+  const names = folder(["APP.CFG", "app.cfg", "app.mnt", "APP.mnt"]);
+  assert.equal(configurationOf("/project/app.mnt", names), "/project/app.cfg");
+  assert.equal(programOf("/project/APP.CFG", names), "/project/APP.mnt");
+});
+
+test("a program is never its own configuration file, whatever the pattern says", () => {
+  const names = folder(["conveyor.mnt", "conveyor_setup.mnt"]);
+  assert.equal(configurationOf("/project/conveyor.mnt", names, "<name>.mnt"), undefined);
+  assert.equal(configurationOf("/project/conveyor.mnt", names, "<name>_setup.MNT"), undefined);
+});
+
+test("a configuration file's program is found beside it, as it is listed", () => {
+  const names = folder(["conveyor.mnt", "conveyor.cfg", "setup_conveyor.cfg", "Other.Mnt", "other.cfg", "lone.cfg"]);
+  assert.equal(programOf("/project/conveyor.cfg", names), "/project/conveyor.mnt");
+  assert.equal(programOf("/project/setup_conveyor.cfg", names, "setup_<name>.cfg"), "/project/conveyor.mnt");
+  assert.equal(programOf("/project/other.cfg", names), "/project/Other.Mnt");
+  assert.equal(programOf("/project/lone.cfg", names), undefined);
+  const unread = () => assert.fail("the folder must not be listed");
+  assert.equal(programOf("/project/conveyor.mnt", unread), undefined);
+  assert.equal(programOf("/project/conveyor.cfg", unread, ""), undefined);
+});
+
+test("an application is found from either of its files; other files stand alone", () => {
+  const names = folder(["conveyor.mnt", "conveyor.cfg", "lone.mnt", "orphan.cfg"]);
+  const pair = { program: "/project/conveyor.mnt", config: "/project/conveyor.cfg" };
+  assert.deepEqual(applicationOf("/project/conveyor.mnt", names), pair);
+  assert.deepEqual(applicationOf("/project/conveyor.cfg", names), pair);
+  assert.deepEqual(applicationOf("/project/lone.mnt", names), { program: "/project/lone.mnt", config: undefined });
+  assert.deepEqual(applicationOf("/project/orphan.cfg", names), { program: "/project/orphan.cfg", config: undefined });
+  // mint.configPairing decides, in both directions; empty, nothing is paired.
+  assert.deepEqual(applicationOf("/project/conveyor.cfg", names, "setup_<name>.cfg"), {
+    program: "/project/conveyor.cfg",
+    config: undefined,
+  });
+  assert.deepEqual(applicationOf("/project/conveyor.mnt", names, ""), { program: "/project/conveyor.mnt", config: undefined });
 });

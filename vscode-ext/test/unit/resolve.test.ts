@@ -4,10 +4,12 @@ import { existsSync } from "node:fs";
 import * as path from "node:path";
 import { test } from "node:test";
 
+import { applicationOf } from "../../src/pairing";
 import {
   displayCommand,
   fileCommand,
   isMissingModule,
+  outcomeOf,
   PYTHON_ARGUMENTS,
   resolveTool,
   toolArguments,
@@ -136,7 +138,7 @@ test("migrate rewrites the file in place and run simulates it, both for the conf
   ]);
 });
 
-test("a simulated run gets the program's configuration file, migration does not", () => {
+test("both tools get the program's configuration file before the program", () => {
   assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", "mintdrive", "/p/a.cfg"), [
     "--config",
     "/p/a.cfg",
@@ -146,7 +148,14 @@ test("a simulated run gets the program's configuration file, migration does not"
     "30",
     "/p/a.mnt",
   ]);
-  assert.deepEqual(toolArguments("mint-migrate", "/p/a.mnt", "mintdrive", "/p/a.cfg"), ["--write", "--controller", "mintdrive", "/p/a.mnt"]);
+  assert.deepEqual(toolArguments("mint-migrate", "/p/a.mnt", "mintdrive", "/p/a.cfg"), [
+    "--write",
+    "--config",
+    "/p/a.cfg",
+    "--controller",
+    "mintdrive",
+    "/p/a.mnt",
+  ]);
   const host = posix(["/usr/bin/mint-run"]);
   assert.deepEqual(commandOf(fileCommand("mint-run", "/p/a.mnt", NONE, host, "/p/a.cfg")).slice(0, 3), [
     "/usr/bin/mint-run",
@@ -162,6 +171,23 @@ test("mint.pythonPath starts mint-migrate through its entry point: mintlang.migr
   assert.equal(flag, "-c");
   assert.match(code ?? "", /from mintlang\.migrate\.cli import main; main\(\)/);
   assert.deepEqual(rest, ["--write", "--controller", "nextmove-pci", "/p/a.mnt"]);
+});
+
+test("migration rewrites a program and its configuration file together, invoked on either", () => {
+  const host = posix(["/usr/bin/mint-migrate"]);
+  const listFolder = (folder: string) => {
+    assert.equal(folder, "/p");
+    return ["conveyor.mnt", "conveyor.cfg", "lone.mnt", "orphan.cfg"];
+  };
+  const migrate = (file: string) => {
+    const { program, config } = applicationOf(file, listFolder);
+    return commandOf(fileCommand("mint-migrate", program, NONE, host, config));
+  };
+  const pair = ["/usr/bin/mint-migrate", "--write", "--config", "/p/conveyor.cfg", "--controller", "nextmove-pci", "/p/conveyor.mnt"];
+  assert.deepEqual(migrate("/p/conveyor.mnt"), pair);
+  assert.deepEqual(migrate("/p/conveyor.cfg"), pair);
+  assert.deepEqual(migrate("/p/lone.mnt"), ["/usr/bin/mint-migrate", "--write", "--controller", "nextmove-pci", "/p/lone.mnt"]);
+  assert.deepEqual(migrate("/p/orphan.cfg"), ["/usr/bin/mint-migrate", "--write", "--controller", "nextmove-pci", "/p/orphan.cfg"]);
 });
 
 // The Python of the mintlang checkout this extension lives in, when it has been set up.
@@ -211,4 +237,12 @@ test("command lines are shown quoted as a shell would need", () => {
     displayCommand({ command: "/usr/bin/mint-migrate", args: ["--write", "/p/my file's.mnt"], source: "PATH" }),
     "/usr/bin/mint-migrate --write '/p/my file'\\''s.mnt'",
   );
+});
+
+test("a migration that left statements for a person is a call for review, not a failure", () => {
+  assert.equal(outcomeOf("mint-migrate", 0), "done");
+  assert.equal(outcomeOf("mint-migrate", 1), "review");
+  assert.equal(outcomeOf("mint-migrate", 2), "failed");
+  assert.equal(outcomeOf("mint-migrate", null), "failed");
+  assert.equal(outcomeOf("mint-run", 1), "failed");
 });

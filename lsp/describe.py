@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from mintlang.controllers import profile
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Addressing, Controller, Keyword, V3Keyword
+from mintlang.keyworddb.model import Addressing, Controller, Keyword, MigrationClass, V3Keyword
 from mintlang.lsp.workspace import Snapshot
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import Symbol, SymbolKind
@@ -44,13 +44,31 @@ def keyword(word: Keyword, controller: Controller, spelling: str = "") -> str:
     return "\n".join(lines)
 
 
+_MIGRATION = {
+    MigrationClass.NONE: "nothing to do",
+    MigrationClass.MECHANICAL: "mint-migrate rewrites it",
+    MigrationClass.SEMI: "mint-migrate rewrites it where the statement shows what it means, and flags it otherwise",
+    MigrationClass.MANUAL: "mint-migrate flags it with a REM MIGRATE line for you to port",
+}
+
+
 def v3_keyword(word: V3Keyword) -> str:
-    lines = [f"**{word.name}** — Mint v3 keyword", ""]
+    """What a v3 keyword was and what porting it to v4 takes: the question of anyone reading a v3 file."""
+    title = f"**{word.name}**"
+    if word.abbreviations:
+        title += f" (abbreviation {', '.join(word.abbreviations)})"
+    lines = [f"{title} — Mint v3 keyword", ""]
     lines.append(f"- Access: {_access(word.read, word.write, word.command)}")
+    if word.addressing is not Addressing.NONE:
+        lines.append(f"- Addressing: by {word.addressing.value}")
     if word.v4_names:
         lines.append(f"- Mint v4: {', '.join(word.v4_names)} ({word.status})")
     else:
         lines.append(f"- Mint v4: {word.status}")
+    lines.append(f"- Migration: {_MIGRATION[word.migration]}")
+    successor = next((found for name in word.v4_names if (found := database().keywords.get(name)) is not None), None)
+    if successor is not None and successor.summary:
+        lines += ["", f"In Mint v4, {successor.name}: {successor.summary}"]
     return "\n".join(lines)
 
 

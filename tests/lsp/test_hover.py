@@ -71,6 +71,19 @@ async def test_an_abbreviation_two_keywords_share_names_the_controllers_one(clie
     assert "**HANDLERPENDING**" in await hover_at(client, uri, text, "HP", 1)
 
 
+async def test_a_v3_keyword_says_what_it_became_and_what_migrating_it_takes(client, tmp_path):
+    client.workspace_did_change_configuration(types.DidChangeConfigurationParams(settings={"mint": {"dialect": "v3"}}))
+    text = "HS.0 = 100\nKEYS\n"
+    uri = uri_of(tmp_path / "old.mnt")
+    await open_document(client, uri, text)
+    renamed = await hover_at(client, uri, text, "HS", 1)
+    assert renamed.startswith("**HMSPEED** (abbreviation HS) — Mint v3 keyword")
+    assert "- Addressing: by axis" in renamed and "- Mint v4: HOMESPEED (renamed)" in renamed
+    assert "- Migration: mint-migrate rewrites it" in renamed and "In Mint v4, HOMESPEED: " in renamed
+    removed = await hover_at(client, uri, text, "KEYS", 1)
+    assert "- Mint v4: removed" in removed and "REM MIGRATE" in removed
+
+
 async def test_a_character_constant_shows_its_code_in_upper_case(client, tmp_path):
     text = "DIM k\nk = INKEY\nIF k = 'y' OR k = 'N' THEN PRINT k\n"
     uri = uri_of(tmp_path / "keys.mnt")

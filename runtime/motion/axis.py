@@ -3,7 +3,8 @@
 The demand of an axis is a function of time between commands (its ``Move``),
 so with the ideal plant the simulator can evaluate it at any tick without
 stepping through the ones in between; an axis whose plant needs integration
-(torque or velocity amplifier) or whose move is live asks for every tick.
+(torque or velocity amplifier) or whose move is live asks for every tick, and
+so does a stalled axis while its servo law still changes the DAC.
 """
 
 from __future__ import annotations
@@ -238,11 +239,28 @@ class Axis:
             if self.held and now >= move.end:
                 return NEVER  # at rest on a stop input: only the input clearing moves it on
             return now + 1 if self.watched_while_moving() else max(move.end, now + 1)
-        if self.settling():
+        if self.settling() or not self._law_settled():
             return now + 1
         if self.triggered and not self.held:
             return next_profiler_tick(now)
         return NEVER
+
+    def _law_settled(self) -> bool:
+        """At rest, the DAC and the loop history stay as they are from the next tick on: always where the law
+        is not in control, and on a stalled encoder once its derivative and integrator have done acting."""
+        if (
+            type(self.plant) is IdealPlant
+            or not self.enabled
+            or self.torque is not None
+            or self.open_loop_dac is not None
+        ):
+            return True
+        hold = self.hold
+        return (
+            self._last_demand == hold
+            and self._last_velocity == 0.0
+            and self.servo.settled(hold, self.measured, self.dac)
+        )
 
     def next_required(self, now: int) -> int:
         """The next tick the simulator must process for this axis's sake (readers use ``next_event``).
@@ -253,11 +271,7 @@ class Axis:
         axis, whose reads ask for them. Limits, error and stop inputs need the exact tick.
         """
         move = self.move
-        if (
-            self.plant.closed_loop
-            or self.guarded
-            or (move is not None and (move.live or type(self.plant) is not IdealPlant))
-        ):
+        if type(self.plant) is not IdealPlant or self.guarded or (move is not None and move.live):
             return self.next_event(now)
         if move is None:
             return next_profiler_tick(now) if self.triggered and not self.held else NEVER
@@ -319,26 +333,26 @@ class Axis:
         self.index_in_move = index
 
     def servo_tick(self, tick: int) -> None:
-        """The servo loop at ``tick``: read the encoder, then compute the DAC for the next tick (SL-1)."""
+        """The servo loop at ``tick``: read the encoder, then compute the DAC for the next tick (SL-1).
+
+        The law runs on every plant but the ideal one, whose encoder reads the demand whatever the DAC:
+        there it would act on rounding alone, so the DAC reads 0. A stalled encoder does not answer the
+        DAC either, but its following error is real, and the DAC shows the law pushing against it.
+        """
         demand = self.demand_at(tick)
         self.demand = demand
         plant = self.plant
         servoing = self.enabled and self.torque is None
-        if not plant.closed_loop:
+        if type(plant) is IdealPlant:
             if servoing:
-                skipped = tick - self.last_tick > 1 and type(plant) is IdealPlant
-                # after skipped ticks the ideal encoder read the rounded demand of the tick before
+                # after skipped ticks the encoder read the rounded demand of the tick before
+                skipped = tick - self.last_tick > 1
                 self.previous_measured = round_half_away(self.demand_at(tick - 1)) if skipped else self.measured
                 self.measured = plant.step(demand, 0.0, SERVO_TICK_S)
             else:
                 self.previous_measured = self.measured
                 self.measured = plant.step(None, 0.0, SERVO_TICK_S)
-            if self.open_loop_dac is not None:
-                self.dac = self.open_loop_dac
-            else:
-                self.dac = self.torque if self.torque is not None and self.enabled else 0.0
-            if self.torque is not None:
-                self.track_measured()
+            self._unservoed_dac()
         else:
             self.previous_measured = self.measured
             self.measured = plant.step(demand if servoing else None, self.dac, SERVO_TICK_S)
@@ -347,15 +361,22 @@ class Axis:
             velocity = demand - previous
             acceleration = velocity - (self._last_velocity if consecutive else previous - self.demand_at(tick - 2))
             self._last_demand, self._last_velocity = demand, velocity
-            if not self.enabled:
-                self.dac = 0.0
-            elif self.torque is not None:
-                self.dac = self.torque
-                self.track_measured()
-            else:
+            if servoing and self.open_loop_dac is None:
                 moved = self.measured - self.previous_measured
                 self.dac = self.servo.step(demand, velocity, acceleration, self.measured, moved)
+            else:
+                self._unservoed_dac()
         self.last_tick = tick
+
+    def _unservoed_dac(self) -> None:
+        """The DAC while the law is not in control: as written on an axis configured off (SL-11), the
+        TORQUE value (SL-9), or 0 on a disabled drive."""
+        if self.open_loop_dac is not None:
+            self.dac = self.open_loop_dac
+        else:
+            self.dac = self.torque if self.torque is not None and self.enabled else 0.0
+        if self.torque is not None:
+            self.track_measured()
 
     def track_measured(self) -> None:
         """In TORQUE mode the position loop is not in control: the demand follows the axis, so there is
@@ -406,6 +427,13 @@ class Axis:
 
     def latch(self, bit: int) -> None:
         self.axiserror |= bit
+
+    def enable(self) -> None:
+        """Drive on. Where the servo law runs, it restarts from where the axis is, with no history (SL-10):
+        a jammed axis enabled again does not push against the error it had before it was disabled."""
+        if not self.enabled and type(self.plant) is not IdealPlant:
+            self.resync()
+        self.enabled = True
 
     def disable(self) -> None:
         """Drive off; a disabled axis has no following error, so AXISSTATUS stops showing one."""

@@ -403,12 +403,12 @@ class Motion:
         axis = self.axis(channel)
         if value and axis.axiserror:
             raise MintError(MOTION_ERROR, axis.number, "clear the axis error before enabling the drive")
-        if value and not axis.enabled:
-            axis.resync() if axis.plant.closed_loop else None
-        axis.enabled = bool(value)
-        if not value:
-            self.crash_group(axis)
-            axis.disable()
+        if value:
+            axis.enable()
+            return
+        axis.enabled = False
+        self.crash_group(axis)
+        axis.disable()
 
     def _pos(self, channel: int | None) -> float:
         axis = self._watch(self.axis(channel), moving=True)

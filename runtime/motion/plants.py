@@ -8,7 +8,9 @@ answers the encoder count at that tick, and then runs the servo law on it:
     dac = loop.step(demand, velocity, acceleration, measured, measured - previous)
 
 so the DAC is a zero-order hold over the tick that follows its computation.
-Only plants with ``closed_loop`` respond to the DAC, so only they need the law.
+Only plants with ``closed_loop`` respond to the DAC. The runtime runs the law
+on every plant but the ideal one, so a stalled axis's DAC still shows the
+controller pushing against its following error.
 ``demand`` is the tick's demand position, or None while nothing servoes the
 axis (drive disabled, open-loop ``TORQUE``). Positions are physical counts
 since power-up; ``POS`` offsets belong to the runtime.
@@ -39,7 +41,8 @@ class Plant(Protocol):
     """A per-axis model of motor, load and encoder.
 
     ``closed_loop`` tells the runtime whether the DAC moves anything, that is
-    whether the servo law has to run for the axis to follow its demand.
+    whether the plant has to be integrated every tick for the axis to follow
+    its demand.
     """
 
     closed_loop: ClassVar[bool]

@@ -107,3 +107,19 @@ class ServoLoop:
         self._previous_error = error
         limit = gains.daclimitmax
         return max(-limit, min(limit, demand))
+
+    def settled(self, demand_position: float, measured_position: float, output: float) -> bool:
+        """Whether every sample from now on, with demand and axis at rest at these positions, outputs ``output``
+        and leaves the history as it is: only then may the simulator skip samples.
+
+        On a stalled axis the derivative and the integrator keep acting on a steady error for a while. The
+        answer comes from ``step`` itself, run on a copy, so it cannot drift from the law: one sample that
+        changes nothing means none ever will.
+        """
+        probe = ServoLoop(self.gains)
+        probe._error_sum, probe._previous_error = self._error_sum, self._previous_error
+        return (
+            probe.step(demand_position, 0.0, 0.0, measured_position, 0.0) == output
+            and probe._error_sum == self._error_sum
+            and probe._previous_error == self._previous_error
+        )

@@ -3,6 +3,8 @@
 The ideal and stalled plants pin the checkable scenarios; the torque plant
 makes the servo gains, DACLIMITMAX and following-error trips behave as on a
 real motor: no gains, no motion; too little DAC, a growing following error.
+A stalled axis still runs the servo law, so its DAC shows the controller
+pushing against the jam.
 """
 
 from __future__ import annotations
@@ -11,6 +13,7 @@ import math
 
 import pytest
 
+from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.motion.plants import (
     TORQUE_PLANT_GAINS,
     IdealPlant,
@@ -22,6 +25,7 @@ from mintlang.runtime.motion.plants import (
 )
 from mintlang.runtime.motion.profile import plan_move
 from mintlang.runtime.motion.servo import ServoGains, ServoLoop
+from tests.runtime.running import simulate
 
 TICK = 0.001  # the NM-REF servo tick, spec T-1
 FOLERRORFATAL = 1000  # its default, spec AX-9
@@ -53,6 +57,66 @@ def test_stalled_plant_never_moves() -> None:
     assert not StalledPlant.closed_loop
 
 
+class TestStalledAxisServoes:
+    """The law runs on the real following error of a jammed axis: its DAC grows with it and saturates (SL-1, SL-3)."""
+
+    STALLED = "REM @sim plant 0 stalled\n"
+
+    @pytest.mark.parametrize("distance", [200, -200])
+    def test_the_dac_is_kprop_times_the_following_error(self, distance: int) -> None:
+        # KPROP 0.25 alone: once the move has ended the error is the whole distance, so DAC = 0.25·distance.
+        source = self.STALLED + f"KPROP.0 = 0.25\nMOVER.0 = {distance} : GO.0\nWAIT = 500\n"
+        source += 'PRINT FOLERROR.0, " ", DAC.0, " ", DEMAND.0\n'
+        assert simulate(source).terminal == f"{distance} {distance // 4} {distance // 4}\n"
+
+    @pytest.mark.parametrize("distance", [2000, -2000])
+    def test_mid_move_the_dac_pushes_toward_the_demand(self, distance: int) -> None:
+        source = self.STALLED + f"KPROP.0 = 0.25\nMOVER.0 = {distance} : GO.0\nPAUSE IDLE.0\n"
+        axis = simulate(source, until_ms=31).axes[0]
+        assert axis.pos == 0 and 0 < abs(axis.dac) < 100
+        assert math.copysign(1.0, axis.dac) == math.copysign(1.0, distance)
+        assert axis.dac == 0.25 * axis.folerror
+
+    @pytest.mark.parametrize(("distance", "dac"), [(4000, 30.0), (-4000, -30.0)])
+    def test_a_large_following_error_saturates_the_dac_at_daclimitmax(self, distance: int, dac: float) -> None:
+        source = self.STALLED + "KPROP.0 = 1 : DACLIMITMAX.0 = 30 : FOLERRORFATAL.0 = 5000\n"
+        source += f"MOVER.0 = {distance} : GO.0\nWAIT = 500\n"
+        axis = simulate(source).axes[0]
+        assert (axis.folerror, axis.dac) == (distance, dac)
+
+    def test_the_following_error_trips_with_the_dac_saturated_and_cancel_stops_the_push(self) -> None:
+        # FOLERRORMODE 2 crash-stops and leaves the drive on; CANCEL sets demand = measured (SL-10).
+        source = self.STALLED + "KPROP.0 = 1 : DACLIMITMAX.0 = 30 : FOLERRORFATAL.0 = 100 : FOLERRORMODE.0 = 2\n"
+        source += 'MOVER.0 = 2000 : GO.0\nPAUSE IDLE.0\nWAIT = 2\nPRINT "after ", DAC.0\nEND\n'
+        source += '#ONERROR\nPRINT AXISERROR.0, " ", DRIVEENABLE.0, " ", DAC.0\nCANCEL.0\nRETURN\n'
+        assert simulate(source).terminal == "32 1 30\nafter 0\n"
+
+    def test_the_integrator_winds_up_at_rest_to_kintlimit_every_tick(self) -> None:
+        # At rest the error is 100 counts, so KI·Σe grows by 0.001·100 = 0.1 % a tick until it reaches KINTLIMIT;
+        # the idle ticks in between are processed, not skipped (``simulate`` checks both ways agree).
+        source = self.STALLED + "KINT.0 = 0.001 : KINTLIMIT.0 = 50\nMOVER.0 = 100 : GO.0\nPAUSE AXISMODE.0 = 0\n"
+        source += "WAIT = 2000\n"
+        early, later, settled = (simulate(source, until_ms=ms).axes[0].dac for ms in (200, 300, 3000))
+        assert later - early == pytest.approx(10.0, rel=1e-6)
+        assert settled == 50.0
+
+    def test_a_program_waiting_on_nothing_is_a_deadlock_once_the_integrator_is_full(self) -> None:
+        source = self.STALLED + "KINT.0 = 0.001 : KINTLIMIT.0 = 50\nMOVER.0 = 100 : GO.0\nPAUSE IN.1\n"
+        result = simulate(source)
+        assert result.stop.reason is StopReason.DEADLOCK
+        assert result.axes[0].dac == 50.0
+
+    def test_enabling_the_drive_again_restarts_the_law_where_the_axis_is(self) -> None:
+        # SL-10: demand := measured on enable, so the error from before the drive went off is not pushed against
+        source = self.STALLED + "KPROP.0 = 0.25 : KINT.0 = 0.001\nMOVER.0 = 200 : GO.0\nWAIT = 500\n"
+        source += 'DRIVEENABLE.0 = 0\nDRIVEENABLE.0 = 1\nWAIT = 10\nPRINT FOLERROR.0, " ", DAC.0\n'
+        assert simulate(source).terminal == "0 0\n"
+
+    def test_a_dac_written_on_an_axis_configured_off_holds(self) -> None:
+        source = self.STALLED + "KPROP.0 = 1\nCONFIG.0 = _cfOFF\nDAC.0 = 25\nMOVER.0 = 500 : GO.0\nWAIT = 50\n"
+        assert simulate(source).axes[0].dac == 25.0
+
+
 def test_velocity_plant_turns_at_k_counts_per_second_per_percent() -> None:
     plant = VelocityPlant(1000.0)
     readings = [plant.step(None, 10.0, TICK) for _ in range(1000)]
@@ -60,6 +124,14 @@ def test_velocity_plant_turns_at_k_counts_per_second_per_percent() -> None:
     assert readings[-1] == 10_000
     assert plant.step(None, 0.0, TICK) == 10_000
     assert VelocityPlant.closed_loop
+
+
+def test_a_dac_written_on_an_axis_configured_off_drives_a_velocity_amplifier() -> None:
+    # SL-11: the program's DAC, not the servo law, drives the amplifier: 10 % at 1000 counts/s per %.
+    source = "REM @sim plant 0 velamp 1000\nKPROP.0 = 1\nCONFIG.0 = _cfOFF\nDAC.0 = 10\nWAIT = 100\n"
+    axis = simulate(source).axes[0]
+    assert (axis.dac, axis.vel) == (10.0, 10_000.0)
+    assert axis.pos > 900
 
 
 class TestTorquePlant:

@@ -134,3 +134,33 @@ def test_history_survives_retuning_and_reset_forgets_it() -> None:
     loop.reset()
     assert loop.integral == 0.0
     assert drive(loop, 10.0) == 10.0 + 10.0 + 10.0
+
+
+class TestSettled:
+    """Whether samples at rest would change nothing, so the simulator may skip them (a stalled axis at rest)."""
+
+    def test_a_proportional_loop_is_settled_once_the_derivative_has_acted(self) -> None:
+        loop = ServoLoop(ServoGains(kprop=0.5, kderiv=2.0))
+        output = drive(loop, 10.0)  # the derivative acts on the step from 0 to 10 this sample only
+        assert not loop.settled(10.0, 0.0, output)
+        output = drive(loop, 10.0)
+        assert output == 5.0 and loop.settled(10.0, 0.0, output)
+
+    def test_an_integrator_is_settled_only_once_it_reaches_kintlimit(self) -> None:
+        loop = ServoLoop(ServoGains(kint=0.5, kintlimit=20.0))
+        outputs = [drive(loop, 10.0) for _ in range(4)]
+        assert outputs == [5.0, 10.0, 15.0, 20.0]
+        assert loop.settled(10.0, 0.0, 20.0)
+        assert not loop.settled(0.0, 10.0, 20.0)  # an error the other way unwinds it
+
+    def test_retuning_unsettles_the_loop(self) -> None:
+        loop = ServoLoop(ServoGains(kprop=0.5))
+        output = drive(loop, 10.0)
+        loop.gains = ServoGains(kprop=1.0)
+        assert not loop.settled(10.0, 0.0, output)
+
+    def test_asking_changes_nothing(self) -> None:
+        loop = ServoLoop(ServoGains(kint=0.1, kderiv=1.0))
+        drive(loop, 10.0)
+        loop.settled(10.0, 0.0, 0.0)
+        assert (loop.integral, drive(loop, 10.0)) == (pytest.approx(1.0), pytest.approx(2.0))

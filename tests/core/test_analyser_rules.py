@@ -91,6 +91,25 @@ def test_a_misspelt_variable_gets_the_declared_name_it_resembles() -> None:
     assert declare.title == "Declare 'targt' with DIM"
 
 
+def test_a_misspelling_inside_a_macro_gets_no_replacement_of_the_macro_name() -> None:
+    # the error points at the use of the macro; replacing that with 'counter' would drop the "+ 1"
+    source = "DIM counter\nDEFINE inc = countr + 1\ncounter = inc\nPRINT counter\n"
+    diagnostic = only(source, "E3001")
+    assert diagnostic.message.endswith("did you mean 'counter'?")
+    assert [fix.title for fix in diagnostic.fixes] == ["Declare 'countr' with DIM"]
+
+
+def test_the_dim_offered_in_each_file_goes_into_that_file() -> None:
+    # first used in the configuration: the program's squiggle still declares it in the program, above its own use
+    config = "REM set-up\nfoo = 5\n"
+    program = "PRINT 1\nPRINT foo\n"
+    analysis = mintlang.check_application(program, config=config)
+    (in_program,) = [d for d in analysis.program if d.code == "E3001"]
+    (in_configuration,) = [d for d in analysis.configuration if d.code == "E3001"]
+    assert apply(program, in_program.fixes[0].edits) == "PRINT 1\nDIM foo\nPRINT foo\n"
+    assert apply(config, in_configuration.fixes[0].edits) == "REM set-up\nDIM foo\nfoo = 5\n"
+
+
 def test_every_use_of_an_undeclared_variable_offers_the_dim_above_its_first_use() -> None:
     source = "LOOP\n  total = total + 1\nENDL\n"
     diagnostics = [d for d in mintlang.check(source) if d.code == "E3001"]

@@ -21,6 +21,7 @@ from mintlang.keyworddb import database
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Symbol, SymbolKind, Unit
 from mintlang.syntax import nodes as n
+from mintlang.syntax.parser import Document
 from mintlang.syntax.tokens import TokenKind
 
 
@@ -41,15 +42,19 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
         undeclared = [occurrence for occurrence in symbol.references if not occurrence.declared_before]
         if not undeclared:
             continue
-        # Every squiggle offers the same DIM, above the first use in the text (configuration first);
-        # none when a later DIM exists (a second one would be a double declaration) or when the name
-        # is a whole v3 keyword (a variable would silently read 0 where the v3 program read an input).
+        # Every squiggle of a file offers the same DIM, above the first use in that file (a fix edits
+        # the file of its diagnostic); none when a later DIM exists (a second one would be a double
+        # declaration) or when the name is a whole v3 keyword (a variable would silently read 0 where
+        # the v3 program read an input).
         old = renames.lookup_v3(symbol.name)
         was_keyword = old is not None and old.name == symbol.name.upper()
-        first = min(undeclared, key=lambda use: (use.unit is Unit.PROGRAM, use.span.start))
-        declare = () if symbol.definitions or was_keyword else (_add_dim(model, symbol, first.unit, first.span),)
+        declare: dict[Unit, tuple[Fix, ...]] = {}
+        if not symbol.definitions and not was_keyword:
+            for use in sorted(undeclared, key=lambda use: use.span.start):
+                if use.unit not in declare:
+                    declare[use.unit] = (_add_dim(model, symbol, use.unit, use.span),)
         for occurrence in undeclared:
-            fixes: tuple[Fix, ...] = declare
+            fixes = declare.get(occurrence.unit, ())
             detail = f"'{occurrence.spelling}' is not declared"
             if old is not None:
                 v4 = ", ".join(old.v4_names) if old.v4_names else "nothing"
@@ -59,8 +64,18 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
                 detail += " (its DIM comes later: declarations must come first)"
             elif close := get_close_matches(occurrence.spelling, declared, n=1, cutoff=0.8):
                 detail += f"; did you mean '{close[0]}'?"
-                fixes = (Fix(f"Replace with {close[0]}", (Edit(occurrence.span, close[0]),)), *fixes)
+                if _written_at(model, occurrence.unit, occurrence.span) == occurrence.spelling:  # not from a macro
+                    fixes = (Fix(f"Replace with {close[0]}", (Edit(occurrence.span, close[0]),)), *fixes)
             yield Finding(occurrence.unit, mint_error(3001, occurrence.span, detail, fixes=fixes))
+
+
+def _document(model: SemanticModel, unit: Unit) -> Document:
+    return model.configuration if unit is Unit.CONFIGURATION and model.configuration else model.program
+
+
+def _written_at(model: SemanticModel, unit: Unit, span: Span) -> str:
+    """The text at ``span``: a name's own spelling, or the name of the macro whose text it came from."""
+    return _document(model, unit).source[span.start : span.end]
 
 
 def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span) -> Fix:
@@ -68,7 +83,7 @@ def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span) -> Fi
 
     Above its first physical line: a DIM list continued over lines must stay whole.
     """
-    document = model.configuration if unit is Unit.CONFIGURATION and model.configuration else model.program
+    document = _document(model, unit)
     index = document.line_index
     containing = [line for line in document.lines if line.span.start <= span.start]
     line = containing[-1].number if containing else index.position(span.start).line

@@ -1,7 +1,9 @@
-"""Diagnostics, pushed on open/change/save (debounced while typing) and pulled on request.
+"""Diagnostics, pulled by clients that can, pushed to the others (debounced while typing).
 
-Codes are the controller's error numbers (``E3001``) and the toolchain's own
-(``W103``); the core's messages already start with the manual's title.
+Never both: a client that pulls keeps pulled and pushed diagnostics in separate
+collections, so VS Code would list every problem twice. Codes are the
+controller's error numbers (``E3001``) and the toolchain's own (``W103``); the
+core's messages already start with the manual's title.
 """
 
 from __future__ import annotations
@@ -54,6 +56,27 @@ def lsp_diagnostics(snapshot: Snapshot) -> list[types.Diagnostic]:
     return [to_lsp(diagnostic, snapshot) for diagnostic in snapshot.diagnostics]
 
 
+def _pulls(server: MintServer) -> bool:
+    text_document = server.client_capabilities.text_document
+    return text_document is not None and text_document.diagnostic is not None
+
+
+def _refresh_pulled(server: MintServer) -> None:
+    """Ask a pulling client to pull again: what it holds for other documents may be out of date."""
+    workspace = server.client_capabilities.workspace
+    if workspace is not None and workspace.diagnostics is not None and workspace.diagnostics.refresh_support:
+        server.workspace_diagnostic_refresh(None)
+
+
+def refresh_all(server: MintServer) -> None:
+    """Settings changed: every open document's diagnostics may have."""
+    if _pulls(server):
+        _refresh_pulled(server)
+        return
+    for uri in list(server.workspace.text_documents):
+        publish(server, uri)
+
+
 def publish(server: MintServer, uri: str) -> None:
     start = time.perf_counter()
     snapshot = server.snapshot(uri)
@@ -73,7 +96,8 @@ class _Debouncer:
 
     def now(self, uri: str) -> None:
         self.cancel(uri)
-        publish(self.server, uri)
+        if not _pulls(self.server):  # a pulling client asks for this document's own
+            publish(self.server, uri)
         self.partner(uri)
 
     def later(self, uri: str) -> None:
@@ -92,15 +116,18 @@ class _Debouncer:
     def partner(self, uri: str) -> None:
         """The other file of the application is analysed with this one: refresh it too."""
         _, other = partner(uri, self.server.analyses.settings)
-        if other is not None and other in self.server.workspace.text_documents:
+        if other is None or other not in self.server.workspace.text_documents:
+            return
+        if _pulls(self.server):
+            _refresh_pulled(self.server)
+        else:
             publish(self.server, other)
 
     async def _after(self, uri: str, delay: float) -> None:
         await asyncio.sleep(delay)
         self.pending.pop(uri, None)
         try:
-            publish(self.server, uri)
-            self.partner(uri)
+            self.now(uri)
         except Exception:  # a task of our own: nobody else would see the failure
             log.exception("diagnostics of %s failed", uri)
 
@@ -125,7 +152,8 @@ def register(server: MintServer) -> None:
         uri = params.text_document.uri
         debouncer.cancel(uri)
         server.analyses.forget(uri)
-        server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+        if not _pulls(server):
+            server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
         debouncer.partner(uri)
 
     @server.feature(

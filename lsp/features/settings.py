@@ -27,10 +27,9 @@ def register(server: MintServer) -> None:
         if params.settings:
             server.analyses.settings = Settings.from_options(params.settings, server.analyses.settings)
         await _pull(server)
-        from mintlang.lsp.features.diagnostics import publish  # noqa: PLC0415  (a sibling feature)
+        from mintlang.lsp.features.diagnostics import refresh_all  # noqa: PLC0415  (a sibling feature)
 
-        for uri in list(server.workspace.text_documents):
-            publish(server, uri)
+        refresh_all(server)
 
 
 async def _pull(server: MintServer) -> None:

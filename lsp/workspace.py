@@ -12,8 +12,9 @@ import logging
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from urllib.parse import quote, unquote
 
-from pygls.uris import from_fs_path, to_fs_path
+from pygls.uris import to_fs_path
 
 import mintlang
 from mintlang.dialect import Dialect
@@ -61,7 +62,7 @@ class Settings:
         for key, name, convert in (
             ("controller", "controller", Controller),
             ("dialect", "dialect", Dialect),
-            ("configPairing", "config_pairing", str),
+            ("configPairing", "config_pairing", _pairing_pattern),
             ("debounceMs", "debounce_ms", int),
         ):
             if options.get(key) is not None:
@@ -105,6 +106,14 @@ class Snapshot:
 TextReader = Callable[[str], str | None]  # uri -> text of an open document or file on disk, if any
 
 
+def _pairing_pattern(value: object) -> str:
+    """A configuration file name with ``<name>`` for the program's: beside the program, so no folders."""
+    pattern = str(value)
+    if "/" in pattern or "\\" in pattern:
+        raise ValueError("the configuration file is beside its program: a name, not a path")
+    return pattern
+
+
 def _pairing(pattern: str) -> tuple[str, str] | None:
     if "<name>" not in pattern:
         return None
@@ -113,30 +122,39 @@ def _pairing(pattern: str) -> tuple[str, str] | None:
 
 
 def partner(uri: str, settings: Settings) -> tuple[Unit, str | None]:
-    """Which file ``uri`` is, and the URI of the other file of its application."""
-    path = to_fs_path(uri)
+    """Which file ``uri`` is, and the URI of the other file of its application.
+
+    The other URI is ``uri`` with its last segment replaced, so it is written as the
+    client writes URIs (VS Code sends ``file:///c%3A/...`` where a path round trip
+    would give ``file:///c:/...``, and the two would name different documents).
+    """
+    folder, slash, segment = uri.rpartition("/")
     pairing = _pairing(settings.config_pairing)
-    if path is None or pairing is None:
+    if not slash or pairing is None:
         return Unit.PROGRAM, None
-    file = Path(path)
+    name = unquote(segment)
     prefix, suffix = pairing
-    if file.name.lower().endswith(suffix.lower()) and file.name.startswith(prefix) and suffix:
-        stem = file.name[len(prefix) : len(file.name) - len(suffix)]
-        return Unit.CONFIGURATION, from_fs_path(str(_sibling(file, stem + PROGRAM_SUFFIX)))
-    if file.suffix.lower() == PROGRAM_SUFFIX:
-        return Unit.PROGRAM, from_fs_path(str(_sibling(file, prefix + file.stem + suffix)))
+    if name.lower().endswith(PROGRAM_SUFFIX):
+        configuration = prefix + name[: -len(PROGRAM_SUFFIX)] + suffix
+        return Unit.PROGRAM, None if configuration.lower().endswith(PROGRAM_SUFFIX) else _sibling(folder, configuration)
+    if suffix and name.lower().endswith(suffix.lower()) and name.startswith(prefix):
+        stem = name[len(prefix) : len(name) - len(suffix)]
+        return Unit.CONFIGURATION, _sibling(folder, stem + PROGRAM_SUFFIX)
     return Unit.PROGRAM, None
 
 
-def _sibling(file: Path, name: str) -> Path:
-    """``name`` beside ``file``, matched without regard to case as on the controller's PC (APP.MNT, app.cfg)."""
-    exact = file.with_name(name)
-    if exact.exists():
+def _sibling(folder: str, name: str) -> str:
+    """The URI of ``name`` in the folder URI ``folder``, matched on disk without regard to case as on the
+    controller's PC (APP.MNT, app.cfg)."""
+    exact = f"{folder}/{quote(name)}"
+    path = to_fs_path(exact)
+    if path is None or Path(path).exists():
         return exact
     try:
-        return next((path for path in file.parent.iterdir() if path.name.lower() == name.lower()), exact)
+        found = next((entry.name for entry in Path(path).parent.iterdir() if entry.name.lower() == name.lower()), None)
     except OSError:
         return exact
+    return exact if found is None else f"{folder}/{quote(found)}"
 
 
 def _unreadable(text: str) -> str | None:

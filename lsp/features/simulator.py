@@ -57,14 +57,18 @@ def register(server: MintServer) -> None:
 
     @server.command(SIMULATE)
     async def simulate(ls: MintServer, uri: str) -> dict[str, Any] | None:
-        source = ls.read_text(uri)
+        settings = ls.analyses.settings
+        unit, other = partner(uri, settings)
+        # asked for a configuration file, run the program it configures
+        program_uri, configuration_uri = (other, uri) if unit is Unit.CONFIGURATION and other else (uri, other)
+        source = ls.read_text(program_uri)
         if source is None:
             ls.window_show_message(
-                types.ShowMessageParams(type=types.MessageType.Error, message=f"Cannot read {uri} to simulate it")
+                types.ShowMessageParams(
+                    type=types.MessageType.Error, message=f"Cannot read {program_uri} to simulate it"
+                )
             )
             return None
-        settings = ls.analyses.settings
-        _, configuration_uri = partner(uri, settings)
         configuration = ls.read_text(configuration_uri) if configuration_uri is not None else None
         try:
             result = await asyncio.to_thread(

@@ -53,6 +53,20 @@ async def test_the_command_runs_the_program_with_its_configuration(client: Langu
 
 
 @pytest.mark.asyncio
+async def test_asked_for_the_configuration_file_it_runs_the_program_it_configures(
+    client: LanguageClient, tmp_path: Path
+) -> None:
+    (tmp_path / "cell.mnt").write_text(PROGRAM, encoding="utf-8")
+    configuration = tmp_path / "cell.cfg"
+    configuration.write_text(CONFIGURATION, encoding="utf-8")
+    report = await client.workspace_execute_command_async(
+        types.ExecuteCommandParams(command="mint.simulateFile", arguments=[uri_of(configuration)])
+    )
+    assert report["stopped"] == "end" and report["axes"]["0"]["pos"] == 1000
+    assert any("at 1000 with 7" in message.message for message in client.log_messages)
+
+
+@pytest.mark.asyncio
 async def test_a_failing_program_is_reported_as_an_error(client: LanguageClient, tmp_path: Path) -> None:
     program = tmp_path / "fails.mnt"
     text = "DIM a = 0\nPRINT 1 / a\n"

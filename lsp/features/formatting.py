@@ -1,7 +1,8 @@
 """Formatting: keywords in upper case and block bodies indented; nothing else changes.
 
-Comments (but for their REM), strings, macro bodies, user names and the
-spacing inside lines are left byte for byte. Indentation follows the core's block matching: the lines
+Comments (but for their REM), strings, user names and the spacing inside
+lines are left byte for byte; a macro's text is Mint too, so its keywords are
+upper-cased like any others. Indentation follows the core's block matching: the lines
 between an opener and its closer go one level deeper, ELSE sits with its IF,
 labels stay at the margin, and continuation lines of a DIM list keep theirs.
 """
@@ -125,4 +126,5 @@ def register(server: MintServer) -> None:
             return []
         start, end = params.range.start, params.range.end
         last = end.line - 1 if end.character == 0 and end.line > start.line else end.line  # whole lines selected
-        return format_lines(snapshot, params.options, range(start.line, last + 1))
+        count = snapshot.positions.line_count  # some clients send "everything" as a range past the end
+        return format_lines(snapshot, params.options, range(min(start.line, count), min(last + 1, count)))

@@ -9,6 +9,8 @@ by name.
 
 from __future__ import annotations
 
+import logging
+
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException
 
@@ -26,6 +28,14 @@ from mintlang.syntax.tokens import TokenKind
 
 class RenameRefused(JsonRpcException):
     CODE = -32803  # LSP RequestFailed: the request was valid but cannot be honoured
+
+
+class _RefusalsAreAnswers(logging.Filter):
+    """pygls logs every error response with a traceback; a refused rename is the user's answer, not a
+    fault of the server, and a log full of them would hide the real ones."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        return not (record.exc_info and isinstance(record.exc_info[1], RenameRefused))
 
 
 def _spelling(occurrence: Occurrence) -> Span:
@@ -65,6 +75,8 @@ def _check_name(snapshot: Snapshot, symbol: Symbol, name: str) -> None:
 
 
 def register(server: MintServer) -> None:
+    logging.getLogger("pygls.protocol.json_rpc").addFilter(_RefusalsAreAnswers())
+
     @server.feature(types.TEXT_DOCUMENT_PREPARE_RENAME)
     def prepare(params: types.PrepareRenameParams) -> types.PrepareRenamePlaceholder | None:
         snapshot = server.snapshot(params.text_document.uri)

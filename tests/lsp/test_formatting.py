@@ -90,3 +90,26 @@ async def test_a_selection_of_whole_lines_ends_before_the_next_line(client, tmp_
         types.DocumentRangeFormattingParams(text_document=document(uri), range=selection, options=SPACES)
     )
     assert {e.range.start.line for e in edits} == {4}
+
+
+async def test_a_range_running_past_the_end_formats_up_to_the_end(client, tmp_path):
+    # some clients send "the whole file" as a range past its last line; the last line has no line end here
+    text = "DIM a\nloop\n  a = 1\nendl"
+    uri = uri_of(tmp_path / "open_end.mnt")
+    await open_document(client, uri, text)
+    for start, end in ((0, 99), (5, 8)):
+        selection = types.Range(start=types.Position(line=start, character=0), end=types.Position(line=end, character=9))
+        edits = await client.text_document_range_formatting_async(
+            types.DocumentRangeFormattingParams(text_document=document(uri), range=selection, options=SPACES)
+        )
+        assert apply(text, edits) == (text.replace("loop", "LOOP").replace("endl", "ENDL") if start == 0 else text)
+
+
+async def test_keywords_in_the_text_of_a_macro_are_upper_cased_too(client, tmp_path):
+    text = 'define m = print 1 : print "a"\n'
+    uri = uri_of(tmp_path / "macro.mnt")
+    await open_document(client, uri, text)
+    edits = await client.text_document_formatting_async(
+        types.DocumentFormattingParams(text_document=document(uri), options=SPACES)
+    )
+    assert apply(text, edits) == 'DEFINE m = PRINT 1 : PRINT "a"\n'

@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import sys
+
 import pytest
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException
+from pygls.lsp.client import LanguageClient
 
 from tests.lsp.conftest import corpus, document, open_document, position, uri_of
 
@@ -113,3 +116,21 @@ async def test_a_label_a_macro_jumps_to_is_renamed_in_the_macros_body_too(client
     )
     places = sorted((e.range.start.line, e.range.start.character, e.range.end.character) for e in edit.changes[uri])
     assert places == [(0, 20, 26), (3, 1, 7)]
+
+
+async def test_a_refused_rename_is_an_answer_not_a_logged_fault(tmp_path):
+    log = tmp_path / "server.log"
+    client = LanguageClient("refusals", "1")
+    await client.start_io(sys.executable, "-m", "mintlang.lsp", "--log-file", str(log))
+    await client.initialize_async(types.InitializeParams(capabilities=types.ClientCapabilities()))
+    uri = uri_of(tmp_path / "xy.mnt")
+    opened = types.TextDocumentItem(uri=uri, language_id="mint", version=1, text=XY)
+    client.text_document_did_open(types.DidOpenTextDocumentParams(text_document=opened))
+    with pytest.raises(JsonRpcException, match="keyword"):
+        await client.text_document_prepare_rename_async(
+            types.PrepareRenameParams(text_document=document(uri), position=position(XY, "MOVEA"))
+        )
+    await client.shutdown_async(None)
+    client.exit(None)
+    await client.stop()
+    assert "Traceback" not in log.read_text(encoding="utf-8")

@@ -98,7 +98,8 @@ async def test_a_range_running_past_the_end_formats_up_to_the_end(client, tmp_pa
     uri = uri_of(tmp_path / "open_end.mnt")
     await open_document(client, uri, text)
     for start, end in ((0, 99), (5, 8)):
-        selection = types.Range(start=types.Position(line=start, character=0), end=types.Position(line=end, character=9))
+        beyond = types.Position(line=end, character=9)
+        selection = types.Range(start=types.Position(line=start, character=0), end=beyond)
         edits = await client.text_document_range_formatting_async(
             types.DocumentRangeFormattingParams(text_document=document(uri), range=selection, options=SPACES)
         )

@@ -13,7 +13,6 @@ setting for the document class: its ``Workspace`` makes documents in
 
 from __future__ import annotations
 
-import re
 from collections.abc import Generator, Sequence
 from typing import Any
 
@@ -21,9 +20,8 @@ from lsprotocol import types
 from pygls.protocol import LanguageServerProtocol, lsp_method
 from pygls.workspace import TextDocument, Workspace
 
+from mintlang.diagnostics import split_lines
 from mintlang.lsp.positions import Positions
-
-_LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+\Z")  # a line with its end; the last may have none
 
 
 class LspTextDocument(TextDocument):
@@ -33,7 +31,7 @@ class LspTextDocument(TextDocument):
     def lines(self) -> Sequence[str]:
         """``splitlines(keepends=True)`` at the LSP's line ends only: the lines pygls' own position
         helpers index (``offset_at_position``, ``word_at_position``)."""
-        return tuple(_LINE.findall(self.source))
+        return tuple(split_lines(self.source, keepends=True))
 
     def _apply_incremental_change(self, change: types.TextDocumentContentChangePartial) -> None:
         """Replace the change's range, found exactly as every feature finds positions: with ``Positions``

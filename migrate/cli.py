@@ -23,6 +23,7 @@ from rich.console import Console
 
 from mintlang.cli.files import collect, is_configuration, program_as_own_configuration
 from mintlang.cli.options import controller_option
+from mintlang.diagnostics import split_lines
 from mintlang.migrate.api import UnknownRule, rules, select
 from mintlang.migrate.api import migrate as migrate_text
 from mintlang.migrate.atomic import Unwritable, target
@@ -98,7 +99,7 @@ def _jobs(paths: tuple[Path, ...], config: Path | None) -> list[_Job]:
 
 def _diff(file: SourceFile, text: str) -> str:
     lines = difflib.unified_diff(
-        file.text.splitlines(), text.splitlines(), f"a/{file.path}", f"b/{file.path}", lineterm=""
+        split_lines(file.text), split_lines(text), f"a/{file.path}", f"b/{file.path}", lineterm=""
     )
     return "\n".join(lines)
 

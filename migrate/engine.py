@@ -20,7 +20,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
 from mintlang.allocation import without_collector
-from mintlang.diagnostics import LineIndex, Severity, Span
+from mintlang.diagnostics import LineIndex, Severity, Span, split_lines
 from mintlang.migrate.context import MARKER, Context, FileView
 from mintlang.migrate.model import Change, ManualItem, Phase
 from mintlang.migrate.rules.base import Flag, Replace, Rule
@@ -238,7 +238,7 @@ def _manual_items(text: str) -> list[ManualItem]:
     """Every ``REM MIGRATE:`` line of the text, with the line it flags (the next non-marker line)."""
     items: list[ManualItem] = []
     pending: list[tuple[str, str]] = []
-    for number, line in enumerate(text.splitlines(), start=1):
+    for number, line in enumerate(split_lines(text), start=1):
         found = _MARKER_LINE.match(line)
         if found:
             pending.append((found["rule"], found["reason"]))

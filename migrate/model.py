@@ -12,7 +12,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from enum import StrEnum
 
-from mintlang.diagnostics import Edit, Span
+from mintlang.diagnostics import Edit, Span, split_lines
 
 
 class RuleClass(StrEnum):
@@ -85,8 +85,8 @@ class MigrationResult:
     def edits(self) -> tuple[Edit, ...]:
         """Minimal non-overlapping edits on ``source`` that produce ``text`` (for an editor's
         "migrate this file": one text edit per changed run of lines)."""
-        old = self.source.splitlines(keepends=True)
-        new = self.text.splitlines(keepends=True)
+        old = split_lines(self.source, keepends=True)
+        new = split_lines(self.text, keepends=True)
         starts = [0]
         for line in old:
             starts.append(starts[-1] + len(line))

@@ -14,6 +14,17 @@ from enum import StrEnum
 from typing import NamedTuple
 
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")
+_LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+\Z")  # a line with its end; the last may have none
+
+
+def split_lines(text: str, *, keepends: bool = False) -> list[str]:
+    """``str.splitlines`` at the line ends Mint, editors and the LSP know (\\r\\n, \\r, \\n) only.
+
+    Python's also ends a line at a form feed, NEL (\\x85) and a few others, so a listing
+    with page breaks would be numbered unlike ``LineIndex`` and every editor.
+    """
+    lines = _LINE.findall(text)
+    return lines if keepends else [line.rstrip("\r\n") for line in lines]
 
 
 class Severity(StrEnum):

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from mintlang.diagnostics import Span
+from mintlang.diagnostics import Span, split_lines
 from mintlang.migrate.context import MARKER, Context, FileView
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Replace, Rule
@@ -35,7 +35,7 @@ def top_of(file: FileView) -> int:
             return _next_line(file, line.span.end)
         break
     position = 0
-    for raw in file.text.splitlines(keepends=True):
+    for raw in split_lines(file.text, keepends=True):
         comment = raw.strip().upper()
         if not comment.startswith("REM") or comment.startswith(MARKER):  # a marker belongs to the line below
             break

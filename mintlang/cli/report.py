@@ -11,7 +11,7 @@ from rich.console import Console
 from rich.markup import escape
 
 from mintlang.codes import OWN_CODES
-from mintlang.diagnostics import Diagnostic, LineIndex, Severity
+from mintlang.diagnostics import Diagnostic, LineIndex, Severity, split_lines
 from mintlang.keyworddb import database
 
 
@@ -59,7 +59,7 @@ def render_text(reports: Sequence[FileReport], console: Console) -> None:
     """rustc/ruff-style code frames and a closing count."""
     counts = dict.fromkeys(Severity, 0)
     for report in reports:
-        lines = report.source.splitlines()
+        lines = split_lines(report.source)
         for diagnostic, line, column, end_line, end_column in report.located():
             counts[diagnostic.severity] += 1
             style = _STYLE[diagnostic.severity]

@@ -320,6 +320,13 @@ def test_the_caret_counts_the_cells_of_wide_characters(tmp_path: Path) -> None:
     assert source_line.endswith("c")
 
 
+def test_the_line_shown_is_the_line_of_the_error_after_a_page_break(tmp_path: Path) -> None:
+    result = mint_check(write(tmp_path, "listing.mnt", "REM page one\x0cpage two\nPRINT missing\n"))
+    assert "listing.mnt:2:7" in result.stdout
+    source_line = next(line for line in result.stdout.splitlines() if line.startswith("  2 |"))
+    assert source_line == "  2 | PRINT missing"
+
+
 def test_a_long_line_is_shown_around_the_marked_text(tmp_path: Path) -> None:
     result = mint_check(write(tmp_path, "long.mnt", "DIM a\na = " + "1+" * 5000 + "1 : PRINT a\n"))
     assert max(len(line) for line in result.stdout.splitlines()) < 400

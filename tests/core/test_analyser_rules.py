@@ -648,6 +648,11 @@ def test_a_line_longer_than_255_characters_is_a_warning() -> None:
     assert found("REM " + "y" * 251 + "\n") == []
 
 
+def test_a_form_feed_does_not_end_a_line_for_its_length() -> None:
+    # a page break of an old listing is a character of the line, as for the controller and editors
+    assert found("REM " + "y" * 150 + "\x0c" + "z" * 150 + "\n") == [("W111", WARNING, 1)]
+
+
 # ------------------------------------------------------------------- hints
 
 

@@ -17,6 +17,13 @@ def test_result_carries_text_changes_manual_items_and_counts() -> None:
     assert result.rule_counts == {"M-REN": 1, "X-HOST": 1}
 
 
+def test_manual_items_are_numbered_as_editors_number_lines() -> None:
+    # a form feed (page break) is not a line end: the item flags line 3 as the editor shows it
+    result = migrate("REM page one\x0cpage two\nHMSPEED = 2\nLOAD 3\n", controller="mintdrive")
+    assert [(m.rule, m.line) for m in result.manual] == [("X-HOST", 4)]
+    assert result.text.split("\n")[3] == "LOAD 3"
+
+
 def test_change_spans_point_into_the_original() -> None:
     source = "a = 1 : HS = 10\n"
     result = migrate(source, controller="mintdrive", only=["M-ABBR", "M-REN"])

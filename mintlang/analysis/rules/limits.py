@@ -13,7 +13,7 @@ from collections.abc import Iterable, Iterator
 
 from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import Facts
-from mintlang.diagnostics import Span
+from mintlang.diagnostics import Span, split_lines
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Symbol, Unit
 
@@ -30,7 +30,7 @@ def check(facts: Facts) -> Iterator[Finding]:
     limit = controller.max_line_length
     for unit, document in model.documents():
         offset = 0
-        for line in document.source.splitlines(keepends=True):
+        for line in split_lines(document.source, keepends=True):
             text = line.rstrip("\r\n")
             if len(text) > limit:
                 detail = f"line has {len(text)} characters; the controller accepts {limit}"

@@ -242,6 +242,8 @@ def _command_arguments(
     for child in tree.children:
         if isinstance(child, Tree) and child.data == "using":
             using = _using(child)
+        elif isinstance(child, Tree) and child.data == "modified_argument":
+            arguments.append(_expression(child.children[1]))  # HEX, DEC or BIN: how LINE prints it, no value
         elif _is_token(child, "STRING"):
             arguments.append(_string(child))
         elif not _is_token(child, "COMMA"):
@@ -372,6 +374,9 @@ def _print_items(tree: Tree) -> Make[tuple[n.PrintItem, ...]]:
     return _sequence(items)
 
 
+_PRINT_MODIFIERS = {"print_hex": "HEX", "print_dec": "DEC", "print_bin": "BIN"}
+
+
 def _print_item(item: Tree | None, span: Make[Span], separator: Child | None) -> Make[n.PrintItem]:
     value: Make[n.Expression | n.StringLiteral | None]
     style: str | None = None
@@ -382,7 +387,7 @@ def _print_item(item: Tree | None, span: Make[Span], separator: Child | None) ->
     elif item.data == "print_value":
         value = _expression(item.children[0])
     else:
-        value, style = _expression(item.children[1]), "HEX" if item.data == "print_hex" else "BIN"
+        value, style = _expression(item.children[1]), _PRINT_MODIFIERS[item.data]
     separator_index = _index(separator) if separator is not None else None
 
     def make(line: LogicalLine, words: Vocabulary) -> n.PrintItem:

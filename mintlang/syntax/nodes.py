@@ -285,7 +285,7 @@ class PrintItem:
 
     span: Span
     value: Expression | StringLiteral | None
-    format: str | None  # "HEX", "BIN" or None
+    format: str | None  # the modifier written before the value: "HEX", "DEC", "BIN" or None
     separator: str | None
 
 

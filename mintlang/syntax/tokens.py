@@ -65,6 +65,7 @@ class TokenKind(StrEnum):
     INPUT = "INPUT"
     USING = "USING"
     HEX = "HEX"
+    DEC = "DEC"
     BIN = "BIN"
     AND = "AND"  # also &
     OR = "OR"  # also |
@@ -104,7 +105,7 @@ GRAMMAR_KEYWORDS = frozenset(
         *("IF", "THEN", "DO", "ELSE", "ENDIF", "FOR", "TO", "STEP", "NEXT"),
         *("REPEAT", "UNTIL", "WHILE", "ENDW", "LOOP", "ENDL", "EXIT"),
         *("GOSUB", "GOTO", "RETURN", "END", "PAUSE", "DIM", "DEFINE", "AXES"),
-        *("PRINT", "INPUT", "USING", "HEX", "BIN", "AND", "OR", "XOR", "NOT", "MOD"),
+        *("PRINT", "INPUT", "USING", "HEX", "DEC", "BIN", "AND", "OR", "XOR", "NOT", "MOD"),
     )
 )
 

@@ -279,6 +279,15 @@ def test_dim_with_a_semicolon_fills_the_array() -> None:
 # ------------------------------------------------------------------- macros
 
 
+def test_print_modifiers_dec_hex_and_bin_each_mark_the_value_after_them() -> None:
+    # lines 15352-15359: DEC, HEX and BIN convert the number that follows
+    (statement,) = statements("DIM a\nPRINT DEC a, hex a; BIN -a, a\n")[1:]
+    assert isinstance(statement, n.Print)
+    assert [item.format for item in statement.items] == ["DEC", "HEX", "BIN", None]
+    # lines 13651-13653: LINE takes the same modifiers
+    assert mintlang.check("DIM a\nLINE 1, DEC a, HEX a, BIN a\n") == []
+
+
 def test_a_macro_use_on_a_later_line_is_replaced_by_its_text() -> None:
     # line 1456: DEFINE mac = ? "OK" - where mac is found, ? "OK" is executed
     source = 'DEFINE mac = ? "OK"\nmac\n'

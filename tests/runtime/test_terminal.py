@@ -229,3 +229,8 @@ def test_watched_text_is_found_exactly_when_the_whole_output_contains_it(pieces:
     for piece in pieces:
         terminal.write(piece)
     assert terminal.has_printed(wanted) == (wanted in "".join(pieces))
+
+
+def test_dec_prints_a_number_as_it_prints_anyway() -> None:
+    # PRINT modifiers (v4 guide 15352-15359): DEC is decimal, the default, between HEX and BIN items
+    assert run_source("DIM a = 26\nPRINT HEX a; DEC a; BIN a\n").terminal == "1A      26      11010\n"

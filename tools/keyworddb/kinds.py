@@ -15,7 +15,7 @@ STATEMENTS = frozenset(
         *("IF", "THEN", "DO", "ELSE", "ENDIF", "FOR", "TO", "STEP", "NEXT"),
         *("REPEAT", "UNTIL", "WHILE", "ENDW", "LOOP", "ENDL", "EXIT"),
         *("GOSUB", "GOTO", "RETURN", "END", "PAUSE", "DIM", "DEFINE"),
-        *("PRINT", "INPUT", "REM", "AXES", "USING", "HEX", "BIN", ":", "#"),
+        *("PRINT", "INPUT", "REM", "AXES", "USING", "HEX", "DEC", "BIN", ":", "#"),
     }
 )
 COMMAND_LINE = frozenset({"CON", "DEL", "EDIT", "FREE", "INS", "LIST", "NEW", "PROG", "RELEASE", "VIEW"})

@@ -122,6 +122,7 @@ SUMMARIES: dict[str, str] = {
     "DACMONITORMODE": "Which quantity the analog monitor output shows (advanced).",
     "DACOFFSET": "Constant offset voltage added to an analog output (advanced).",
     "DACRAMP": "Rate at which an analog output falls off on an error (advanced).",
+    "DEC": "PRINT modifier that shows the next number in decimal, as numbers print anyway.",
     "DECEL": "Deceleration rate of the motion profile, in user units per second squared.",
     "DECELTIME": "Deceleration given as the time in milliseconds to stop from the current SPEED.",
     "DEFAULT": "Restores the power-up motion settings of the given axes.",

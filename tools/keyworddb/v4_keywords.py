@@ -28,6 +28,7 @@ STRUCTURE_WORDS = {
     "ENDL": ("LOOP", "ENDL"),
     "USING": ("PRINT",),
     "HEX": ("PRINT",),
+    "DEC": ("PRINT",),
     "BIN": ("PRINT",),
 }
 """Words that only exist inside another keyword's construct, with the entry that shows them."""

@@ -249,6 +249,12 @@ def test_an_abbreviation_two_keywords_share_means_the_one_recorded_in_conflicts(
     assert found("SI[0,1] = 10,10\n", controller="mintdrive") == [("E2017", ERROR, 1)]  # one axis only
 
 
+def test_relay_is_read_and_written_as_its_formats_show() -> None:
+    # v4:15460-15461; reading IDLE is fine, writing it is not (v4:11738 "IDLE returns ...")
+    assert found("DIM value\nvalue = RELAY.0\nRELAY.0 = 1\nvalue = IDLE.0\n") == []
+    assert [code for code, _, _ in found("IDLE.0 = 1\n")] == ["E2000"]
+
+
 def test_an_abbreviation_two_keywords_share_means_the_one_the_controller_has() -> None:
     # HP is HOMEPOS on a NextMove (v4:11581) and HANDLERPENDING on a MintDrive (v4:11314)
     assert found("DIM a\na = HP.1\n", controller="nextmove-pci") == []

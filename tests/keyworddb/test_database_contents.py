@@ -94,6 +94,18 @@ def test_acceltime_is_write_only_as_the_error_2002_example_says(db: KeywordDatab
     assert any("#2002" in note and "error example is followed" in note for note in acceltime.notes)
 
 
+def test_an_access_the_formats_show_but_the_table_lost_is_kept(db: KeywordDatabase) -> None:
+    # v4:15460-15461 "RELAY.channel = <expression>" and "value = RELAY.channel"; the table row has one tick
+    for name in ("RELAY", "BOOST", "SEXTANT"):
+        (row,) = db.keywords[name].attributes
+        assert (row.read, row.write) == (True, True), name
+        assert any("formats are followed" in note for note in db.keywords[name].notes)
+    # v4:11716-11738: IDLE "returns" whether the axis is idle; its write format is a misprint
+    (idle,) = db.keywords["IDLE"].attributes
+    assert (idle.read, idle.write) == (True, False)
+    assert any("table is followed" in note for note in db.keywords["IDLE"].notes)
+
+
 def test_scale_range_is_positive(db: KeywordDatabase) -> None:
     nextmove, mintdrive = db.keywords["SCALE"].attributes  # v4:15783-15784
     assert nextmove.range is not None and mintdrive.range is not None

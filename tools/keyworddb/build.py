@@ -8,7 +8,7 @@ from typing import Any
 
 from mintlang.keyworddb.model import Constant, ErrorCode, Keyword
 from tools.keyworddb.abbreviations import shared_abbreviations
-from tools.keyworddb.access import apply_access_examples
+from tools.keyworddb.access import apply_access_examples, apply_format_access
 from tools.keyworddb.conflicts import Conflict, sort_key
 from tools.keyworddb.constants import add_constant, error_constants, general_constants, keyword_constants
 from tools.keyworddb.entries import EntryKind, v4_entries
@@ -58,8 +58,9 @@ def build(seeds: Path, spec: Path) -> dict[str, Any]:
     conflicts += shared_abbreviations(keywords, chapter10_abbreviations(v4))
     errors = build_errors(v4)
     constants, constant_conflicts, keywords = _constants(v4, keywords, errors)
+    keywords, format_conflicts = apply_format_access(keywords)
     keywords, access_conflicts = apply_access_examples(v4, errors, keywords)
-    conflicts += constant_conflicts + shared_constants(errors) + access_conflicts
+    conflicts += constant_conflicts + shared_constants(errors) + format_conflicts + access_conflicts
     keywords = with_summaries(_with_notes(keywords, conflicts))
     renames = build_renames(v4, keywords)
     return {

@@ -70,11 +70,9 @@ def _read(path: Path) -> SourceFile:
         file = read_source(path)
     except OSError as error:
         raise _Usage(f"cannot read {path}: {error.strerror or error}") from None
-    if "\0" in file.text:  # binary: migrating it would scatter REM lines through it
-        offset = file.text.index("\0")
-        line = file.text.count("\n", 0, offset) + 1
-        column = offset - file.text.rfind("\n", 0, offset)
-        raise _Usage(f"{path}:{line}:{column}: not Mint text (a NUL byte): nothing migrated")
+    binary = file.binary()
+    if binary is not None:
+        raise _Usage(f"{binary}: nothing migrated")
     return file
 
 

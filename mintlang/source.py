@@ -13,6 +13,8 @@ import stat
 from dataclasses import dataclass
 from pathlib import Path
 
+from mintlang.diagnostics import LineIndex
+
 _ENCODINGS = ("utf-8", "cp1252", "latin-1")
 
 
@@ -25,6 +27,18 @@ class SourceFile:
     def encode(self, text: str | None = None) -> bytes:
         """``text`` (default: the file's own) in the file's encoding."""
         return (self.text if text is None else text).encode(self.encoding)
+
+    def binary(self) -> str | None:
+        """Why the file is not Mint text, with where (``path:line:column``), or None.
+
+        A NUL byte never occurs in a program; a tool that read on would answer a
+        binary file with hundreds of syntax errors, or scatter REM lines through it.
+        """
+        offset = self.text.find("\0")
+        if offset < 0:
+            return None
+        position = LineIndex(self.text).position(offset)
+        return f"{self.path}:{position.line}:{position.column}: not Mint text (a NUL byte)"
 
 
 def decode(data: bytes) -> tuple[str, str]:

@@ -149,8 +149,7 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     if config_path is not None and program_as_own_configuration([program], config_path):
         raise click.UsageError(f"--config {config_path} is the program {program} itself: name the configuration file")
     try:
-        source = read_source(program).text
-        config = read_source(config_path).text if config_path is not None else None
+        files = [read_source(path) for path in (program, config_path) if path is not None]
         scenario = _scenario((*stimulus_paths, *expect_paths), profile(controller))
     except ScenarioFileError as error:
         click.echo(f"mint-run: {error}", err=True)
@@ -158,6 +157,11 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     except OSError as error:
         click.echo(f"mint-run: cannot read {error.filename}: {error.strerror or error}", err=True)
         sys.exit(_USAGE_ERROR)
+    for file in files:
+        if (binary := file.binary()) is not None:
+            click.echo(f"mint-run: {binary}: not run", err=True)
+            sys.exit(_USAGE_ERROR)
+    source, config = files[0].text, files[1].text if len(files) > 1 else None
     inputs = dict.fromkeys((*stimulus_paths, *expect_paths), "a scenario file")
     if config_path is not None:
         inputs[config_path] = "the configuration"

@@ -89,6 +89,8 @@ def check(
     except OSError as error:
         _fail(f"cannot read {error.filename}: {error.strerror}")
         return
+    if configuration is not None and (binary := configuration.binary()) is not None:
+        _fail(f"{binary}: not checked")
     if not files:
         _fail("no .mnt files found in " + ", ".join(str(p) for p in paths))
     itself = program_as_own_configuration(files, config_path) if config_path is not None else None
@@ -105,6 +107,9 @@ def check(
         except OSError as error:
             _fail(f"cannot read {path}: {error.strerror}")
             return
+        binary = source.binary()
+        if binary is not None:
+            _fail(f"{binary}: not checked")
         if is_configuration(path):
             reports.append(_configuration_report(source, options))
         else:

@@ -223,6 +223,15 @@ def test_a_configuration_named_as_config_and_as_a_path_is_reported_once(tmp_path
     assert [r["code"] for r in once if r["path"] == str(config)] == ["W103", "E3001"]
 
 
+def test_a_binary_file_is_refused_with_where_its_nul_byte_is(tmp_path: Path) -> None:
+    binary = tmp_path / "image.mnt"
+    binary.write_bytes(b"PRINT 1\n\x89PNG\x00\x1a\n" * 50)
+    result = mint_check(binary)
+    assert result.exit_code == 2
+    assert result.stderr == f"mint check: {binary}:2:5: not Mint text (a NUL byte): not checked\n"
+    assert mint_check("--config", binary, write(tmp_path, "app.mnt", CLEAN)).exit_code == 2
+
+
 def test_a_program_named_as_its_own_configuration_exits_with_2(tmp_path: Path) -> None:
     program = write(tmp_path, "app.mnt", CLEAN)
     result = mint_check("--config", program, program)

@@ -261,3 +261,11 @@ def test_the_program_cannot_be_its_own_configuration(tmp_path: Path) -> None:
     result = mint_run(program, "--config", program)
     assert result.exit_code == 2
     assert f"--config {program} is the program {program} itself: name the configuration file" in result.stderr
+
+
+def test_a_binary_file_is_refused_before_the_run(tmp_path: Path) -> None:
+    binary = tmp_path / "dump.mnt"
+    binary.write_bytes(b"\x00\x01\x02")
+    result = mint_run(binary)
+    assert result.exit_code == 2
+    assert result.stderr == f"mint-run: {binary}:1:1: not Mint text (a NUL byte): not run\n"

@@ -25,6 +25,7 @@ OWN_CODES: dict[str, str] = {
     "W111": "Line too long",
     "W112": "EXIT outside a loop",
     "W113": "GOTO out of a block",
+    "W114": "AUTO ignored",
     "I201": "Faster dot syntax",
 }
 

@@ -249,6 +249,20 @@ def test_an_abbreviation_two_keywords_share_means_the_one_recorded_in_conflicts(
     assert found("SI[0,1] = 10,10\n", controller="mintdrive") == [("E2017", ERROR, 1)]  # one axis only
 
 
+def test_auto_anywhere_but_first_in_the_configuration_file_is_ignored() -> None:
+    # AUTO (v4:6645-6648): first command of the configuration file, REM included; ignored anywhere else
+    def codes(config: str, program: str = "PRINT 1\n") -> tuple[list[str], list[str]]:
+        analysis = mintlang.check_application(program, config=config, controller="nextmove-bx")
+        return [d.code for d in analysis.configuration], [d.code for d in analysis.program]
+
+    assert codes("AUTO\nREM set-up\n") == ([], [])
+    assert codes("\ufeff\n  auto : SCALE = 1\n") == ([], [])
+    assert codes("REM set-up\nAUTO\n") == (["W114"], [])
+    assert codes("REM set-up\n", "AUTO\nPRINT 1\n") == ([], ["W114"])
+    # NextMove PCI has no AUTO at all: error 17 says so, without W114
+    assert found("AUTO\nPRINT 1\n") == [("E17", ERROR, 1)]
+
+
 def test_relay_is_read_and_written_as_its_formats_show() -> None:
     # v4:15460-15461; reading IDLE is fine, writing it is not (v4:11738 "IDLE returns ...")
     assert found("DIM value\nvalue = RELAY.0\nRELAY.0 = 1\nvalue = IDLE.0\n") == []

@@ -9,17 +9,66 @@ and ``\\n`` in both.
 
 from __future__ import annotations
 
+import re
+from collections.abc import Iterable
+
 from lsprotocol import types
 
 from mintlang.diagnostics import LineIndex, Span
 
+_BEYOND_ASCII = re.compile(r"[^\x00-\x7f]")  # two to four UTF-8 units
+_BEYOND_BMP = re.compile(r"[\U00010000-\U0010ffff]")  # two UTF-16 units
 
-def _units(character: str, encoding: str) -> int:
+
+def columns(line: str, offsets: Iterable[int], encoding: str) -> list[int]:
+    """Columns in code units of the character ``offsets`` (not decreasing) within ``line``.
+
+    One forward pass that adds, to each offset, the extra units of the wide
+    characters before it: the tokens of a line cost its length once, where a
+    ``Positions.position`` per token would convert it from its start each time.
+    """
+    wide = _wide(encoding)
+    if wide is None or line.isascii():
+        return list(offsets)
+    extras = [(match.start(), _length(match.group(), encoding) - 1) for match in wide.finditer(line)]
+    found: list[int] = []
+    extra = passed = 0
+    for offset in offsets:
+        while passed < len(extras) and extras[passed][0] < offset:
+            extra += extras[passed][1]
+            passed += 1
+        found.append(offset + extra)
+    return found
+
+
+def _wide(encoding: str) -> re.Pattern[str] | None:
+    """The characters that take more than one code unit of ``encoding`` (none in UTF-32)."""
     if encoding == types.PositionEncodingKind.Utf8:
-        return len(character.encode("utf-8"))
+        return _BEYOND_ASCII
     if encoding == types.PositionEncodingKind.Utf16:
-        return 2 if ord(character) > 0xFFFF else 1
-    return 1
+        return _BEYOND_BMP
+    return None
+
+
+# Codec and bytes per code unit of each encoding: text measured by encoding it, at the codec's speed.
+_CODECS = {types.PositionEncodingKind.Utf8: ("utf-8", 1), types.PositionEncodingKind.Utf16: ("utf-16-le", 2)}
+
+
+def _length(text: str, encoding: str) -> int:
+    """``text``'s length in code units of ``encoding``."""
+    codec, size = _CODECS.get(encoding, ("", 0))
+    return len(text.encode(codec, errors="surrogatepass")) // size if codec else len(text)
+
+
+def _characters(line: str, units: int, encoding: str) -> int:
+    """How many characters of ``line`` the first ``units`` code units reach; a unit inside a character
+    counts the whole character, and units past the end stop there."""
+    codec, size = _CODECS.get(encoding, ("", 0))
+    if not codec:
+        return min(units, len(line))
+    head = line.encode(codec, errors="surrogatepass")[: units * size].decode(codec, errors="ignore")  # drops a cut one
+    reached = len(head)
+    return reached + 1 if _length(head, encoding) < units and reached < len(line) else reached
 
 
 class Positions:
@@ -35,6 +84,11 @@ class Positions:
         self._plain = text.isascii() or encoding == types.PositionEncodingKind.Utf32  # a unit per character
 
     @property
+    def encoding(self) -> str:
+        """The negotiated position encoding, for callers that convert columns themselves."""
+        return self._encoding
+
+    @property
     def line_count(self) -> int:
         return self._line_count
 
@@ -47,7 +101,7 @@ class Positions:
         column = where.column - 1
         if not self._plain:
             start = self._index.line_start(where.line)
-            column = sum(_units(character, self._encoding) for character in self._text[start : start + column])
+            column = _length(self._text[start : start + column], self._encoding)
         return types.Position(line=where.line - 1, character=column)
 
     def range(self, span: Span) -> types.Range:
@@ -62,12 +116,7 @@ class Positions:
         line = self._text[start:end].rstrip("\r\n")
         if self._plain:
             return start + min(position.character, len(line))
-        units = 0
-        for column, character in enumerate(line):
-            if units >= position.character:
-                return start + column
-            units += _units(character, self._encoding)
-        return start + len(line)
+        return start + _characters(line, position.character, self._encoding)
 
     def span(self, range_: types.Range) -> Span:
         return Span(self.offset(range_.start), self.offset(range_.end))

@@ -27,6 +27,29 @@ def test_a_difference_applied_to_the_old_tokens_gives_the_new(old, new):
     assert (edits == []) == (old == new)
 
 
+def common_ends(old: list[int], new: list[int]) -> tuple[int, int]:
+    """The longest common beginning and end (not overlapping), an item at a time."""
+    limit, prefix, suffix = min(len(old), len(new)), 0, 0
+    while prefix < limit and old[prefix] == new[prefix]:
+        prefix += 1
+    while suffix < limit - prefix and old[-1 - suffix] == new[-1 - suffix]:
+        suffix += 1
+    return prefix, suffix
+
+
+@given(st.binary(min_size=600, max_size=2000), st.integers(0, 2000), st.integers(0, 30), st.binary(max_size=30))
+def test_a_difference_of_long_encodings_replaces_only_what_lies_between_their_common_ends(data, at, removed, inserted):
+    """Long enough to be compared a block at a time; a few values only, so that blocks nearly match."""
+    old = [byte % 4 for byte in data]
+    new = old[:at] + [byte % 4 for byte in inserted] + old[at + removed :]
+    edits = difference(old, new)
+    assert apply(old, edits) == new
+    if old != new:
+        prefix, suffix = common_ends(old, new)
+        (edit,) = edits
+        assert (edit.start, edit.delete_count) == (prefix, len(old) - prefix - suffix)
+
+
 def test_a_difference_keeps_the_common_beginning_and_end():
     (edit,) = difference([1, 2, 3, 4, 5], [1, 2, 9, 4, 5])
     assert (edit.start, edit.delete_count, edit.data) == (2, 1, [9])

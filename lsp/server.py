@@ -16,6 +16,7 @@ from pygls.lsp.server import LanguageServer
 from pygls.uris import to_fs_path
 
 from mintlang.lsp import __version__
+from mintlang.lsp.collector import Collector
 from mintlang.lsp.documents import LspProtocol
 from mintlang.lsp.lookup import line_prefix
 from mintlang.lsp.positions import Positions
@@ -28,7 +29,7 @@ log = logging.getLogger(__name__)
 class MintServer(LanguageServer):
     def __init__(self) -> None:
         super().__init__("mint-lsp", __version__, protocol_cls=LspProtocol)  # documents with LSP line ends
-        self.analyses = Analyses(read=self.read_text)
+        self.analyses = Analyses(read=self.read_text, collector=Collector())
 
     def read_text(self, uri: str) -> str | None:
         """The text of an open document, else of the file on disk; None when there is none."""

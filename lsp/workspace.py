@@ -19,6 +19,7 @@ from pygls.uris import to_fs_path
 import mintlang
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
+from mintlang.lsp.collector import Collector
 from mintlang.lsp.positions import Positions
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
@@ -172,6 +173,7 @@ class Analyses:
     read: TextReader
     settings: Settings = field(default_factory=Settings)
     encoding: str = "utf-16"  # the position encoding negotiated with the client
+    collector: Collector | None = None  # told of each new snapshot, to keep it out of the collector's scans
     _cache: dict[str, tuple[tuple[object, ...], Snapshot]] = field(default_factory=dict)
 
     def snapshot(self, uri: str, text: str, version: int | None) -> Snapshot:
@@ -185,6 +187,8 @@ class Analyses:
             return cached[1]
         snapshot = self._analyse(uri, text, version, unit=unit, other=other, other_text=other_text, settings=settings)
         self._cache[uri] = (key, snapshot)
+        if self.collector is not None:
+            self.collector.analysed()
         return snapshot
 
     def latest(self, uri: str) -> Snapshot | None:

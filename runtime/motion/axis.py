@@ -58,6 +58,7 @@ class Request:
     mode: int
     axes: tuple[int, ...]
     build: Callable[[int], Move | None]  # start tick -> the move, or None when there is nothing to do
+    targets: tuple[float, ...] | None = None  # each axis's end in counts, where known when it is loaded
 
 
 class Axis:
@@ -191,6 +192,18 @@ class Axis:
         p = self.parameters
         moved = abs(self.measured - self.previous_measured) / SERVO_TICK_S
         return abs(self.demand - self.measured) - NOISE <= p["IDLEPOS"] and moved <= p["IDLEVEL"]
+
+    def remaining(self) -> float:
+        """POSREMAINING (MP-11), counts: what is left of the move in progress, not of the moves queued behind
+        it; a move GO has triggered counts whole until it starts at the next profiler tick."""
+        move = self.move
+        if move is not None:
+            if not move.buffered or move.end == NEVER:
+                return 0.0
+            return abs(move.demand(self.index_in_move, move.end) - self.demand)
+        if self.triggered and self.buffer and (targets := self.buffer[0].targets) is not None:
+            return abs(targets[self.buffer[0].axes.index(self.number)] - self.demand)
+        return 0.0
 
     def velocity_counts(self) -> float:
         return (self.measured - self.previous_measured) / SERVO_TICK_S

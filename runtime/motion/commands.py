@@ -130,7 +130,7 @@ class Motion:
         for axis, target in zip(axes, targets, strict=True):
             axis.target = target
         segment = PathSegment(mode, axes, master.contour_mode, targets)
-        request = Request(mode, segment.numbers, segment)
+        request = Request(mode, segment.numbers, segment, targets)
         for axis in axes:
             axis.buffer.append(request)
 
@@ -444,6 +444,4 @@ class Motion:
 
     def _posremaining(self, channel: int | None) -> float:
         axis = self._watch(self.axis(channel), moving=True)
-        if axis.move is None or not axis.move.buffered:
-            return 0.0
-        return abs(axis.target - axis.demand) / axis.scale
+        return axis.remaining() / axis.scale

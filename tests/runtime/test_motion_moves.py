@@ -238,3 +238,23 @@ PAUSE IDLE.0
 PRINT POS.0, " ", ENCODER.0
 """
     assert simulate(source).terminal == "-8388216\n-8388216 1000\n-8388000 1216\n"
+
+
+def test_posremaining_right_after_go_is_the_whole_move() -> None:
+    # v4 guide 3129-3134: MR = 200 : GO.0 then ? POSREMAINING "will return 200"
+    assert simulate("RESET.0\nMR = 200 : GO.0\n? POSREMAINING\n").terminal == "200\n"
+
+
+def test_pause_posremaining_waits_for_the_end_of_the_move() -> None:
+    # v4 guide 15195-15205. Defaults SPEED 20000, ACCEL = DECEL 300000: under 100 counts are left once the
+    # speed falls below sqrt(2 * 300000 * 100) = 7746 counts/s, 25.8 ms before the end at 2 + 566.7 ms.
+    source = "RESET.0\nMOVER = 10000 : GO\nPAUSE POSREMAINING < 100\nOUT.2 = 1\nPRINT TIME\n"
+    result = simulate(source)
+    assert result.terminal == "543\n"
+
+
+def test_posremaining_counts_the_move_in_progress_not_those_queued_behind_it() -> None:
+    # v4 guide 15198 "the remaining distance to go for the current move" (MP-11); POSTARGET is the last one loaded
+    source = "RESET.0\nSPEED.0 = 1000 : ACCEL.0 = 10000 : DECEL.0 = 10000\nMOVER.0 = 1000\nMOVER.0 = 1000\nGO.0\n"
+    source += 'WAIT = 500\nPRINT POS.0, " ", POSREMAINING.0, " ", POSTARGET.0\n'
+    assert simulate(source).terminal == "448 552 2000\n"

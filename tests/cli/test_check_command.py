@@ -194,7 +194,7 @@ def test_the_controller_changes_the_message_of_speed_12(tmp_path: Path) -> None:
 
 def test_the_dialect_option_reads_mint_v3(tmp_path: Path) -> None:
     path = write(tmp_path, "old.mnt", "HMSPEED = 10\n")
-    assert [r["code"] for r in json_records(path)] == ["W102"]
+    assert [r["code"] for r in json_records(path)] == ["E3001"]
     assert json_records("--dialect", "v3", path) == []
 
 

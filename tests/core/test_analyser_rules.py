@@ -443,31 +443,40 @@ def test_only_comms_locations_one_to_five_raise_an_event() -> None:
 # ------------------------------------------------------------- v3 keywords
 
 
-def test_a_mint_v3_keyword_is_a_warning_with_its_v4_replacement() -> None:
+def test_a_mint_v3_keyword_is_an_undeclared_variable_that_says_what_it_became() -> None:
+    # v4 has no HMSPEED ("replaced by HOMESPEED", v4 guide's HMSPEED entry): the controller rejects it as 3001
     source = "HMSPEED = 10\n"
-    assert found(source) == [("W102", WARNING, 1)]
-    (fix,) = only(source, "W102").fixes
+    assert found(source) == [("E3001", ERROR, 1)]
+    diagnostic = only(source, "E3001")
+    assert "a Mint v3 keyword, replaced by HOMESPEED in v4" in diagnostic.message
+    (fix,) = diagnostic.fixes  # the rename; no DIM for a whole old keyword
     fixed = apply(source, fix.edits)
     assert fixed == "HOMESPEED = 10\n"
     assert found(fixed) == []
 
 
-def test_an_old_keyword_with_a_dot_parameter_is_named_too() -> None:
+def test_an_old_keyword_with_a_dot_parameter_is_an_unknown_keyword_named_too() -> None:
     (diagnostic,) = mintlang.check("HMSPEED.0 = 10\n")
-    assert (diagnostic.code, [fix.title for fix in diagnostic.fixes]) == ("W102", ["Replace with HOMESPEED"])
+    assert (diagnostic.code, [fix.title for fix in diagnostic.fixes]) == ("E3007", ["Replace with HOMESPEED"])
 
 
 def test_no_rename_is_offered_to_a_keyword_the_controller_lacks() -> None:
     # CURRLIMIT became CURRENTLIMIT, which the chapter 10 entry lists for MintDrive and ServoNode only
     (on_pci,) = mintlang.check("CURRLIMIT = 2\n")
-    assert on_pci.code == "W102" and on_pci.fixes == () and "NextMove PCI lacks" in on_pci.message
+    assert on_pci.code == "E3001" and on_pci.fixes == () and "NextMove PCI lacks" in on_pci.message
     (on_mintdrive,) = mintlang.check("CURRLIMIT = 2\n", controller="mintdrive")
     assert [fix.title for fix in on_mintdrive.fixes] == ["Replace with CURRENTLIMIT"]
 
 
 def test_an_old_analog_input_is_not_renamed_alone_because_the_units_changed() -> None:
     (analogue,) = mintlang.check("DIM v\nv = ANALOGUE.1\n")
-    assert analogue.code == "W102" and analogue.fixes == () and "percent" in analogue.message
+    assert analogue.code == "E3007" and analogue.fixes == () and "percent" in analogue.message
+
+
+def test_a_mint_v3_constant_says_what_v4_calls_it() -> None:
+    (constant,) = mintlang.check("CONFIG = _servo\n")
+    assert constant.code == "E3001" and "a Mint v3 constant; v4 uses _cfSERVO" in constant.message
+    assert [fix.title for fix in constant.fixes] == ["Replace with _cfSERVO"]
 
 
 def test_a_whole_v3_keyword_used_as_a_variable_is_not_offered_a_dim() -> None:

@@ -269,3 +269,10 @@ def test_a_binary_file_is_refused_before_the_run(tmp_path: Path) -> None:
     result = mint_run(binary)
     assert result.exit_code == 2
     assert result.stderr == f"mint-run: {binary}:1:1: not Mint text (a NUL byte): not run\n"
+
+
+def test_a_mint_v3_keyword_stops_the_run_before_it_starts(tmp_path: Path) -> None:
+    # GAIN is no v4 keyword (replaced by KPROP): the controller rejects it, so a run must not treat it as a variable
+    result = mint_run(write(tmp_path, "old.mnt", "GAIN = 2\nPRINT KPROP.0\n"))
+    assert result.exit_code == 1 and result.stdout == ""
+    assert "C3001" in result.stderr and "replaced by KPROP" in result.stderr

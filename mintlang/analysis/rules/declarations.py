@@ -14,6 +14,7 @@ from collections.abc import Iterator
 from difflib import get_close_matches
 
 from mintlang.analysis.findings import Finding, mint_error
+from mintlang.analysis.rules.v3_keywords import successor
 from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.dialect import Dialect
@@ -37,17 +38,17 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
     renames = database()
     declared = [symbol.name for symbol in model.symbols.variables.values() if symbol.definitions]
     for symbol in model.symbols.variables.values():
-        if renames.rename_of(symbol.name) is not None:
-            continue  # an old v3 keyword: the v3-keyword rule explains it
         undeclared = [occurrence for occurrence in symbol.references if not occurrence.declared_before]
         if not undeclared:
             continue
+        # A Mint v3 word (GAIN, _servo) says what it became, with the rename where that is enough.
         # Every squiggle of a file offers the same DIM, above the first use in that file (a fix edits
         # the file of its diagnostic); none when a later DIM exists (a second one would be a double
         # declaration) or when the name is a whole v3 keyword (a variable would silently read 0 where
         # the v3 program read an input).
-        old = renames.lookup_v3(symbol.name)
-        was_keyword = old is not None and old.name == symbol.name.upper()
+        was = successor(symbol.name, model.controller)
+        old = renames.lookup_v3(symbol.name) if was is None else None
+        was_keyword = (was is not None and was.whole_keyword) or (old is not None and old.name == symbol.name.upper())
         declare: dict[Unit, tuple[Fix, ...]] = {}
         if not symbol.definitions and not was_keyword:
             for use in sorted(undeclared, key=lambda use: use.span.start):
@@ -56,7 +57,11 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
         for occurrence in undeclared:
             fixes = declare.get(occurrence.unit, ())
             detail = f"'{occurrence.spelling}' is not declared"
-            if old is not None:
+            as_written = _written_at(model, occurrence.unit, occurrence.span) == occurrence.spelling  # not a macro's
+            if was is not None:
+                detail += f": it is {was.detail}"
+                fixes = (*was.fixes(occurrence.span), *fixes) if as_written else fixes
+            elif old is not None:
                 v4 = ", ".join(old.v4_names) if old.v4_names else "nothing"
                 what = "a keyword" if was_keyword else f"the abbreviation of {old.name}"
                 detail += f" (in Mint v3 it was {what}; v4: {v4}, see mint-migrate)"
@@ -64,7 +69,7 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
                 detail += " (its DIM comes later: declarations must come first)"
             elif close := get_close_matches(occurrence.spelling, declared, n=1, cutoff=0.8):
                 detail += f"; did you mean '{close[0]}'?"
-                if _written_at(model, occurrence.unit, occurrence.span) == occurrence.spelling:  # not from a macro
+                if as_written:
                     fixes = (Fix(f"Replace with {close[0]}", (Edit(occurrence.span, close[0]),)), *fixes)
             yield Finding(occurrence.unit, mint_error(3001, occurrence.span, detail, fixes=fixes))
 

@@ -1,15 +1,19 @@
 """Mint v3 words in v4 code: old keywords, labels and constants, with their replacements.
 
 The v4 guide keeps an entry for each replaced keyword ("replaced by … in Mint
-v4"); v4 reads such a word as an undeclared variable or an unknown keyword, so
-this rule says what it became and offers the rename when there is exactly one.
+v4"); v4 reads such a word as an undeclared variable (error 3001, reported by
+the declarations rule with what the word became) or, written with an axis
+(``HMSPEED.0 = 10``), as an unknown keyword: error 3007 here, saying what it
+became and offering the rename when there is exactly one. An old label
+(``#FASTPOS``) compiles but is never called: W102.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 
-from mintlang.analysis.findings import Finding, own
+from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import Facts
 from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
@@ -17,28 +21,71 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.semantic.events import EventKind, event_of
 
+_V3 = "Mint v3"  # every finding about a v3 word names the old language, and only those do
+
+
+def about_v3(diagnostic: Diagnostic) -> bool:
+    """Whether ``diagnostic`` is about a Mint v3 word left in v4 code: a file that mint-migrate would help."""
+    return diagnostic.code in ("E3001", "E3007", "W102") and _V3 in diagnostic.message
+
+
 # Replacements that read other units: renaming alone would change every value computed from them.
 _OTHER_UNITS = {"ADC": "ADC reads percent of the input's range where v3 read counts"}
+
+
+@dataclass(frozen=True, slots=True)
+class Successor:
+    """What a Mint v3 word became in v4, for a message, and the word to write instead where renaming is enough."""
+
+    detail: str
+    rename: str | None
+    whole_keyword: bool  # the old keyword's full name, not an abbreviation that may be a user's variable
+
+    def fixes(self, span: Span) -> tuple[Fix, ...]:
+        return (Fix(f"Replace with {self.rename}", (Edit(span, self.rename),)),) if self.rename else ()
+
+
+def successor(word: str, controller: ControllerProfile) -> Successor | None:
+    """What the v3 keyword or constant ``word`` became in v4 on ``controller`` ("a Mint v3 keyword, ...");
+    None for other words."""
+    db = database()
+    rename = db.rename_of(word)
+    if rename is not None:
+        whole = rename.old == word.upper()
+        if not rename.new:
+            return Successor(f"a {_V3} keyword that v4 removed", None, whole)
+        detail = f"a {_V3} keyword, replaced by {' or '.join(rename.new)} in v4"
+        if len(rename.new) > 1:
+            return Successor(detail, None, whole)
+        new = rename.new[0]
+        replacement = db.keywords.get(new)
+        if replacement is not None and replacement.controllers and controller.controller not in replacement.controllers:
+            lacking = f"{detail}, which {controller.title} lacks (mint-migrate knows the alternatives)"
+            return Successor(lacking, None, whole)
+        if new in _OTHER_UNITS:
+            return Successor(f"{detail}; {_OTHER_UNITS[new]} (mint-migrate converts)", None, whole)
+        return Successor(detail, new, whole)
+    constant = db.v3_constants.get(word.upper())
+    if constant is not None and word.startswith("_"):
+        if constant.v4_name:
+            return Successor(f"a {_V3} constant; v4 uses {constant.v4_name}", constant.v4_name, True)
+        return Successor(f"a {_V3} constant with no v4 equivalent", None, True)
+    return None
 
 
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     if model.program.dialect is not Dialect.V4:
         return
-    declared = {identity for identity, symbol in model.symbols.variables.items() if symbol.definitions}
     db = database()
-    controller = model.controller
-    words = [(unit, name.text, name.span) for unit, name in facts.names if name.identity not in declared]
-    # An old keyword written with a selector (HMSPEED.0 = 10) reads as an unknown keyword.
-    words += [
-        (use.unit, use.keyword.spelling, use.keyword.spelling_span)
-        for use in facts.keyword_uses
-        if use.keyword.keyword not in db.keywords
-    ]
-    for unit, word, span in words:
-        diagnostic = _old_word(word, span, controller)
-        if diagnostic is not None:
-            yield Finding(unit, diagnostic)
+    for use in facts.keyword_uses:
+        if use.keyword.keyword in db.keywords:
+            continue
+        span = use.keyword.spelling_span
+        found = successor(use.keyword.spelling, model.controller)
+        if found is not None:
+            detail = f"'{use.keyword.spelling}' is not a Mint v4 keyword: it is {found.detail}"
+            yield Finding(use.unit, mint_error(3007, span, detail, fixes=found.fixes(span)))
     for unit, document in model.documents():
         for line in document.lines:
             label = line.label
@@ -47,36 +94,4 @@ def check(facts: Facts) -> Iterator[Finding]:
                 if event is not None and event.kind is EventKind.FASTPOS:
                     new = f"#FASTIN{event.number if event.number is not None else ''}"
                     fix = Fix(f"Rename to {new}", (Edit(label.span, new),))
-                    yield Finding(
-                        unit, own("W102", label.span, f"#{label.text} is Mint v3: v4 uses {new}", fixes=(fix,))
-                    )
-
-
-def _old_word(word: str, span: Span, controller: ControllerProfile) -> Diagnostic | None:
-    db = database()
-    rename = db.rename_of(word)
-    if rename is not None:
-        if len(rename.new) == 1:
-            new = rename.new[0]
-            replacement = db.keywords.get(new)
-            if (
-                replacement is not None
-                and replacement.controllers
-                and controller.controller not in replacement.controllers
-            ):
-                detail = f"{word} is a Mint v3 keyword: v4 replaced it by {new}, which {controller.title} lacks"
-                return own("W102", span, detail + " (mint-migrate knows the alternatives)")
-            if new in _OTHER_UNITS:
-                detail = f"{word} is a Mint v3 keyword: v4 replaced it by {new}; {_OTHER_UNITS[new]}"
-                return own("W102", span, detail + " (mint-migrate converts)")
-            fix = Fix(f"Replace with {new}", (Edit(span, new),))
-            return own("W102", span, f"{word} is a Mint v3 keyword: v4 replaced it by {new}", fixes=(fix,))
-        replacement = " or ".join(rename.new) if rename.new else "nothing (it was removed)"
-        return own("W102", span, f"{word} is a Mint v3 keyword: v4 replaced it by {replacement}")
-    constant = db.v3_constants.get(word.upper())
-    if constant is not None and word.startswith("_"):
-        if constant.v4_name:
-            fix = Fix(f"Replace with {constant.v4_name}", (Edit(span, constant.v4_name),))
-            return own("W102", span, f"{word} is a Mint v3 constant: v4 uses {constant.v4_name}", fixes=(fix,))
-        return own("W102", span, f"{word} is a Mint v3 constant with no v4 equivalent")
-    return None
+                    yield Finding(unit, own("W102", label.span, f"#{label.text} is {_V3}: v4 uses {new}", fixes=(fix,)))

@@ -187,6 +187,7 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
                 limits=limits,
                 echo=stdout.write,
                 on_tick=recorders.on_tick,
+                name=str(program),
             )
     except (ScenarioFileError, PortUnavailable) as error:
         click.echo(f"mint-run: {error}", err=True)

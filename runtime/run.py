@@ -40,9 +40,8 @@ class RunResult:
     terminal_dropped: int = 0  # characters printed before those ``terminal`` keeps
 
 
-def _not_run(reason: str, message: str, line: int | None, unit: str | None, statement: str | None) -> RunResult:
+def _not_run(message: str, line: int | None, unit: str | None, statement: str | None) -> RunResult:
     stop = Stop(StopReason.ERROR, 0, unit, line, statement, message)
-    del reason
     return RunResult(stop, -1.0, 0.0, 0, 0, (), "", (), ())
 
 
@@ -55,13 +54,15 @@ def run_source(
     limits: Limits | None = None,
     echo: Callable[[str], None] | None = None,
     on_tick: Callable[[Controller, int], None] | None = None,
+    name: str = "program",
 ) -> RunResult:
     """Run a program (and its configuration file) to the end or a limit; never raises for the program's faults.
 
     The program's own ``REM @sim`` directives are merged under ``scenario``; a
-    directive that cannot be read raises ``ScenarioFileError`` before anything runs.
+    directive that cannot be read raises ``ScenarioFileError`` before anything runs,
+    naming the program ``name`` (its path, on the command line).
     """
-    directives, problems = parse_directives(source, controller=profile(controller))
+    directives, problems = parse_directives(source, name, controller=profile(controller))
     if problems:
         raise ScenarioFileError(problems)
     scenario = merge(directives, scenario) if scenario is not None else directives
@@ -76,15 +77,15 @@ def run_source(
                 line = document.line_index.position(diagnostic.span.start).line
                 text = document.source[diagnostic.span.start : diagnostic.span.end]
                 message = f"C{diagnostic.mint_error or 0:04d}: {unit.upper()} {diagnostic.message} [line {line}]"
-                return _not_run("compile", message, line, unit, text)
+                return _not_run(message, line, unit, text)
     try:
         built = build_controller(
             analysis.model, scenario, slice_statements=limits.slice_statements, host_port=limits.host_port, echo=echo
         )
     except NotSimulated as missing:
-        return _not_run("unsupported", str(missing), None, None, None)
+        return _not_run(str(missing), None, None, None)
     except MintError as error:
-        return _not_run("compile", error.describe(), None, None, None)
+        return _not_run(error.describe(), None, None, None)
     simulator = Simulator(built, limits)
     outcomes: list[Outcome] = []
     end_expectations = []

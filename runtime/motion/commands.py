@@ -310,7 +310,6 @@ class Motion:
         table.register("ENCODER", read=self._encoder, write=per_channel(self._write_encoder))
         table.register("VEL", read=self._vel)
         table.register("FOLERROR", read=self._folerror)
-        table.register("DEMAND", read=lambda ch: self._watch(self.axis(ch), moving=True).dac)  # v3's name for DAC
         table.register("AXISMODE", read=lambda ch: float(self._watch(self.axis(ch)).axismode))
         table.register("AXISERROR", read=lambda ch: float(self.axis(ch).axiserror))
         table.register("AXISSTATUS", read=lambda ch: float(self.axis(ch).status | self.axis(ch).axiserror))

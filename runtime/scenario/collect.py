@@ -2,7 +2,8 @@
 
 Both front ends build each record through a ``Collector``: a bad record
 becomes a ``ScenarioError`` at its line and the rest are still read, and an
-axis given two plants or two index pulses is caught the same way in both.
+axis given two plants or two index pulses, or an input given two position
+switches (only one could decide its level), is caught the same way in both.
 """
 
 from __future__ import annotations
@@ -13,13 +14,20 @@ from mintlang.controllers import ControllerProfile
 from mintlang.runtime.scenario.expectations import Expectation
 from mintlang.runtime.scenario.problems import Invalid, ScenarioError
 from mintlang.runtime.scenario.reach import check_reach
-from mintlang.runtime.scenario.stimulus import IndexPulse, PlantChoice, Scenario, WorldRecord, scenario_of
+from mintlang.runtime.scenario.stimulus import (
+    IndexPulse,
+    PlantChoice,
+    PositionInput,
+    Scenario,
+    WorldRecord,
+    scenario_of,
+)
 
 
 class Collector:
     """The records and errors of one source (a file path or ``"program"``)."""
 
-    __slots__ = ("_per_axis", "controller", "errors", "records", "source")
+    __slots__ = ("_first", "controller", "errors", "records", "source")
 
     def __init__(self, source: str, controller: ControllerProfile | None = None) -> None:
         """With ``controller``, a record that drives an axis or channel it lacks is a mistake too."""
@@ -27,7 +35,7 @@ class Collector:
         self.controller = controller
         self.records: list[WorldRecord | Expectation] = []
         self.errors: list[ScenarioError] = []
-        self._per_axis: dict[tuple[type, int], int] = {}  # (record kind, axis) -> line first given
+        self._first: dict[tuple[type, int], int] = {}  # (record kind, axis or channel) -> line first given
 
     def error(self, line: int, message: str) -> None:
         self.errors.append(ScenarioError(self.source, line, message))
@@ -41,14 +49,25 @@ class Collector:
         except Invalid as problem:
             self.error(problem.line or line, str(problem))
             return
-        if isinstance(record, PlantChoice | IndexPulse):
-            key = (type(record), record.axis)
-            if key in self._per_axis:
-                what = "a plant" if isinstance(record, PlantChoice) else "an index pulse"
-                self.error(line, f"axis {record.axis} already has {what} (line {self._per_axis[key]})")
+        once = _once(record)
+        if once is not None:
+            key, what = (type(record), once[0]), once[1]
+            if key in self._first:
+                self.error(line, f"{what} (line {self._first[key]})")
                 return
-            self._per_axis[key] = line
+            self._first[key] = line
         self.records.append(record)
 
     def result(self) -> tuple[Scenario, list[ScenarioError]]:
         return scenario_of(self.records), self.errors
+
+
+def _once(record: WorldRecord | Expectation) -> tuple[int, str] | None:
+    """For a record that may be given once per axis or channel: that number, and what a second one is told."""
+    if isinstance(record, PlantChoice):
+        return record.axis, f"axis {record.axis} already has a plant"
+    if isinstance(record, IndexPulse):
+        return record.axis, f"axis {record.axis} already has an index pulse"
+    if isinstance(record, PositionInput):
+        return record.channel, f"input {record.channel} already follows a position"
+    return None

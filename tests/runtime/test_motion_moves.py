@@ -222,8 +222,10 @@ def test_torque_writes_the_dac_at_once() -> None:
     assert simulate('TORQUE.0 = 50 : PRINT DAC.0, " ", AXISMODE.0\n').terminal == "50 16\n"
 
 
-def test_demand_is_mint_v3s_name_for_the_dac() -> None:
-    assert simulate("TORQUE.0 = 25\nPRINT DEMAND.0\n").terminal == "25\n"
+def test_demand_is_mint_v3s_name_for_the_dac_and_no_v4_keyword() -> None:
+    result = simulate("TORQUE.0 = 25\nPRINT DEMAND.0\n")
+    assert result.stop.reason is StopReason.ERROR and result.terminal == ""
+    assert "C3007" in result.stop.message and "replaced by DAC" in result.stop.message
 
 
 def test_the_position_counter_wraps_past_8388607_and_absolute_moves_go_from_where_it_reads() -> None:

@@ -276,3 +276,10 @@ def test_a_mint_v3_keyword_stops_the_run_before_it_starts(tmp_path: Path) -> Non
     result = mint_run(write(tmp_path, "old.mnt", "GAIN = 2\nPRINT KPROP.0\n"))
     assert result.exit_code == 1 and result.stdout == ""
     assert "C3001" in result.stderr and "replaced by KPROP" in result.stderr
+
+
+def test_a_directive_of_the_program_is_reported_at_the_programs_path(tmp_path: Path) -> None:
+    program = write(tmp_path, "press.mnt", "REM @sim plant 0 stalled\nREM @sim plant 0 ideal\nPRINT 1\n")
+    result = mint_run(program)
+    assert result.exit_code == 2
+    assert f"{program}:2: axis 0 already has a plant (line 1)" in result.stderr

@@ -232,6 +232,13 @@ def test_an_axis_given_two_plants_is_an_error_at_the_second() -> None:
     assert result.plants == (PlantChoice(0, "ideal"),)
 
 
+def test_an_input_given_two_position_switches_is_an_error_at_the_second() -> None:
+    # only one could decide the input's level: the second used to win silently
+    program = "REM @sim input 9 when enc 0 <= -2000\nREM @sim input 9 when enc 0 >= -2100\n"
+    _, problems = parse_directives(program)
+    assert problems == [ScenarioError("program", 2, "input 9 already follows a position (line 1)")]
+
+
 def test_every_bad_line_is_reported_and_the_good_ones_are_kept() -> None:
     program = "REM @sim input 1 7 at 0\nREM @sim input 2 1 at 0\nREM @sim adc 0 at 1\n"
     result, problems = parse_directives(program)

@@ -29,6 +29,8 @@ T = TypeVar("T")
 
 _NEWLINE = re.compile(r"\r\n|\r|\n")
 MARKER = "REM MIGRATE:"
+# A manual item's line: ``REM MIGRATE: <rule>: <reason>``.
+MARKER_LINE = re.compile(rf"^[ \t]*{re.escape(MARKER)}[ \t]*(?P<rule>[A-Z]+-[A-Z0-9-]+):[ \t]*(?P<reason>.*?)[ \t]*$")
 
 
 @dataclass(frozen=True)
@@ -69,6 +71,27 @@ class FileView:
             previous = self.line_start(start - 1)
             yield self.text[previous:start].strip()
             start = previous
+
+    @cached_property
+    def opening(self) -> n.Line | None:
+        """The line of the command that must stay the first of the file, REM lines included, or
+        None: AUTO in a configuration file (v4:6647-6649, v3:5838), PROTECT in a program
+        (v4:15393, v3:11079). Nothing the migrator writes may go above it."""
+        word = "AUTO" if self.unit is Unit.CONFIGURATION else "PROTECT"
+        for line in self.document.lines:
+            if not line.statements and line.label is None:
+                continue
+            first = line.statements[0] if line.statements else None
+            return line if isinstance(first, n.KeywordStatement) and first.keyword.keyword == word else None
+        return None
+
+    def markers_above(self, offset: int) -> Iterator[str]:
+        """The rules of the ``REM MIGRATE:`` lines right above the line of ``offset``, nearest first."""
+        for above in self.lines_above(offset):
+            found = MARKER_LINE.match(above)
+            if found is None:
+                return
+            yield found["rule"]
 
     def slice(self, span: Span) -> str:
         return self.text[span.start : span.end]

@@ -4,8 +4,9 @@ Each phase re-parses the current text, asks its rules for actions, applies the
 edits that do not overlap an earlier rule's edit (the rest wait for the next
 pass of the same phase, on the re-parsed text) and repeats until the phase has
 nothing left to do. Flags become ``REM MIGRATE:`` lines above the flagged line,
-with its indentation and the file's own newline; a marker already there is not
-written twice, which is what makes a second migration a no-op.
+with its indentation and the file's own newline (a statement after the AUTO or
+PROTECT that must open its file first gets a line of its own); a marker already
+there is not written twice, which is what makes a second migration a no-op.
 
 Text outside the edited spans is copied, never regenerated: comments, spacing,
 case, blank lines, CRLF and characters of any code page survive as they were.
@@ -13,7 +14,6 @@ case, blank lines, CRLF and characters of any code page survive as they were.
 
 from __future__ import annotations
 
-import re
 from bisect import bisect_left, bisect_right, insort
 from collections import Counter
 from collections.abc import Mapping, Sequence
@@ -21,13 +21,12 @@ from dataclasses import dataclass, field
 
 from mintlang.allocation import without_collector
 from mintlang.diagnostics import LineIndex, Severity, Span, split_lines
-from mintlang.migrate.context import MARKER, Context, FileView
+from mintlang.migrate.context import MARKER, MARKER_LINE, Context, FileView
 from mintlang.migrate.model import Change, ManualItem, Phase
 from mintlang.migrate.rules.base import Flag, Replace, Rule
 from mintlang.semantic.units import Unit
 
 MAX_PASSES = 6  # a phase that still edits after this many passes has a rule that is not idempotent
-_MARKER_LINE = re.compile(rf"^[ \t]*{re.escape(MARKER)}[ \t]*(?P<rule>[A-Z]+-[A-Z0-9-]+):[ \t]*(?P<reason>.*?)[ \t]*$")
 
 
 @dataclass(frozen=True, slots=True)
@@ -135,20 +134,41 @@ def _apply_pass(context: Context, rules: Sequence[Rule], states: dict[Unit, _Fil
 
 
 def _marker(file: FileView, rule: str, flag: Flag, flagged: set[tuple[Unit, int, str]]) -> _Edit | None:
-    """The ``REM MIGRATE:`` line for a flag, unless that line already carries it."""
+    """The ``REM MIGRATE:`` line for a flag, unless that line already carries it.
+
+    Nothing may go above the command that must open the file (AUTO, PROTECT): a flag for a
+    statement after it on its line breaks the line there instead (a line end separates
+    statements as ``:`` does), so the statement gets a line of its own with the marker above.
+    """
     reason = " ".join(flag.reason.split())
     text = f"{MARKER} {rule}: {reason}"
-    start = file.line_start(flag.span.start)
+    indentation = file.indentation(flag.span.start)
+    split = _after_opening(file, flag.span.start)
+    start = file.line_start(flag.span.start) if split is None else split.start
     key = (file.unit, start, text)
     if key in flagged:
         return None
     flagged.add(key)
+    if split is not None:
+        return _Edit(rule, split, f"{file.newline}{indentation}{text}{file.newline}{indentation}")
     for above in file.lines_above(flag.span.start):
         if not above.upper().startswith(MARKER):
             break
         if above == text:
             return None
-    return _Edit(rule, Span(start, start), f"{file.indentation(flag.span.start)}{text}{file.newline}")
+    return _Edit(rule, Span(start, start), f"{indentation}{text}{file.newline}")
+
+
+def _after_opening(file: FileView, offset: int) -> Span | None:
+    """The separator (`` : ``) after the command that opens the file, when ``offset`` lies in a
+    statement following that command on its line; None otherwise."""
+    line = file.opening
+    if line is None or len(line.statements) < 2:
+        return None
+    command, following = line.statements[:2]
+    if not command.span.end <= offset < line.span.end:
+        return None
+    return Span(command.span.end, following.span.start)
 
 
 def _non_overlapping(edits: list[_Edit]) -> list[_Edit]:
@@ -187,7 +207,7 @@ def _apply(state: _FileState, edits: list[_Edit]) -> None:
         parts.append(state.text[position : edit.span.start])
         parts.append(edit.text)
         position = edit.span.end
-        if not edit.text.lstrip().startswith(MARKER):
+        if edit.span.start != edit.span.end or not edit.text.lstrip().startswith(MARKER):  # a line split counts
             original = _to_source(state, edit.span)
             line = state.index.position(original.start).line
             state.changes.append(
@@ -239,7 +259,7 @@ def _manual_items(text: str) -> list[ManualItem]:
     items: list[ManualItem] = []
     pending: list[tuple[str, str]] = []
     for number, line in enumerate(split_lines(text), start=1):
-        found = _MARKER_LINE.match(line)
+        found = MARKER_LINE.match(line)
         if found:
             pending.append((found["rule"], found["reason"]))
             continue

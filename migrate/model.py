@@ -31,6 +31,7 @@ class Phase(StrEnum):
     CONTEXT = "context"  # rewrites that need the statement around the keyword
     INSERTIONS = "insertions"  # DIM, AXES, input edge modes
     MANUAL = "manual"  # whatever is still Mint v3 gets a marker
+    CHECK = "check"  # the result read as Mint v4 for the target: a line still invalid gets a marker
 
 
 @dataclass(frozen=True, slots=True)

@@ -35,6 +35,7 @@ from mintlang.migrate.rules.manual import (
     Platform,
     PulseFollowing,
     ServoOnAgain,
+    StillInvalid,
     Trigger,
 )
 from mintlang.migrate.rules.numbers import FixedPoint
@@ -159,6 +160,8 @@ RULES: tuple[Rule, ...] = (
     InvalidInV3(),
     Platform(),
     LeftoverV3(),
+    # the result read as Mint v4 on the target: a line still invalid and not flagged yet
+    StillInvalid(),
 )
 
 __all__ = ["RULES", "Action", "Flag", "Replace", "Rule"]

@@ -26,14 +26,8 @@ def top_of(file: FileView) -> int:
     """Where declarations go: after a leading AUTO (configuration) or PROTECT (program)
     statement, else after the comment lines the file starts with (a REM MIGRATE line
     belongs to the line below it, so it ends the header)."""
-    for line in file.document.lines:
-        first = line.statements[0] if line.statements else None
-        if first is None and line.label is None:
-            continue
-        word = first.keyword.keyword if isinstance(first, n.KeywordStatement) else None
-        if (file.unit is Unit.CONFIGURATION and word == "AUTO") or (file.unit is Unit.PROGRAM and word == "PROTECT"):
-            return _next_line(file, line.span.end)
-        break
+    if file.opening is not None:
+        return _next_line(file, file.opening.span.end)
     position = 0
     for raw in split_lines(file.text, keepends=True):
         comment = raw.strip().upper()

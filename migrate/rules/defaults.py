@@ -33,6 +33,7 @@ from mintlang.migrate.rules.addressed import (
     addressed_axes,
     axis_list,
     moved_axes,
+    on_target,
     read_axes,
     writes_any,
 )
@@ -103,14 +104,12 @@ DEFAULTS: tuple[Default, ...] = (
 
 
 def relied_on(context: Context) -> Iterator[tuple[Default, tuple[int, ...]]]:
-    """Each changed default the application relies on, with the servo axes that rely on it."""
+    """Each changed default the application relies on, with the servo axes of the target that rely on it."""
     steppers = _stepper_axes(context)
-    every = tuple(range(context.controller.axis_count))
     for default in DEFAULTS:
         if writes_any(context, default.written_as):
             continue
-        axes = default.users(context)
-        servo = tuple(axis for axis in (every if axes is None else axes) if axis not in steppers)
+        servo = tuple(axis for axis in on_target(context, default.users(context)) if axis not in steppers)
         if servo:
             yield default, servo
 

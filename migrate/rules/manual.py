@@ -2,22 +2,28 @@
 
 The original statement stays; a ``REM MIGRATE: <rule>: <reason>`` line above it
 says what to do, and the report lists it. The last rule of this phase flags any
-Mint v3 word still left, so nothing reaches the output silently unmigrated.
+Mint v3 word still left, so nothing reaches the output silently unmigrated; then,
+with every marker in place, X-CHECK reads the result as Mint v4 for the target
+controller and flags each line still in error that carries no marker yet.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from bisect import bisect_right
+from collections.abc import Iterable, Iterator, Mapping
 from typing import ClassVar
 
 import mintlang
-from mintlang.diagnostics import Severity
+from mintlang.diagnostics import Diagnostic, Severity, Span
 from mintlang.dialect import Dialect
-from mintlang.migrate.context import MARKER, Context, FileView, per_pass
+from mintlang.migrate.context import Context, FileView, per_pass
 from mintlang.migrate.model import Phase, RuleClass
-from mintlang.migrate.rules.base import Action, Rule
+from mintlang.migrate.rules.base import Action, Flag, Rule
+from mintlang.migrate.rules.defaults import ReportDefaults
+from mintlang.migrate.rules.prologue import IoPrologue
 from mintlang.migrate.rules.renames import same_value_constants
 from mintlang.semantic.events import EventKind, event_of
+from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
 
@@ -233,24 +239,82 @@ class FastLatch(Rule):
                     yield self.flag(file, line.span, "v4 holds the latch until the handler returns; check FASTSELECT")
 
 
+@per_pass
+def v4_errors(context: Context) -> tuple[tuple[FileView, tuple[Diagnostic, ...]], ...]:
+    """Each file with the errors ``mint check`` finds in it as Mint v4 on the target controller."""
+    files = context.files
+    configuration = files.get(Unit.CONFIGURATION)
+    analysis = mintlang.check_application(
+        files[Unit.PROGRAM].text,
+        dialect="v4",
+        controller=context.controller.controller,
+        config=configuration.text if configuration is not None else None,
+    )
+    return _per_file(context, analysis)
+
+
+@per_pass
+def v3_errors(context: Context) -> tuple[tuple[FileView, tuple[Diagnostic, ...]], ...]:
+    """Each file with the errors ``mint check --dialect v3`` finds in it (the pass's own parse)."""
+    return _per_file(context, mintlang.analyse(context.model))
+
+
+def _per_file(context: Context, analysis: mintlang.Analysis) -> tuple[tuple[FileView, tuple[Diagnostic, ...]], ...]:
+    found = [(Unit.PROGRAM, analysis.program), (Unit.CONFIGURATION, analysis.configuration)]
+    return tuple(
+        (context.files[unit], tuple(d for d in diagnostics if d.severity is Severity.ERROR))
+        for unit, diagnostics in found
+        if unit in context.files
+    )
+
+
+def by_statement(file: FileView, diagnostics: Iterable[Diagnostic]) -> dict[Span, list[Diagnostic]]:
+    """Diagnostics grouped by the statement holding them (an IF .. THEN with its body is one), so
+    that one marker goes above the line the statement starts on, not inside a DIM list that
+    continues over several lines; a diagnostic outside every statement keeps its own span."""
+    lines = file.document.lines
+    starts = [line.span.start for line in lines]
+    groups: dict[Span, list[Diagnostic]] = {}
+    for diagnostic in diagnostics:
+        offset = diagnostic.span.start
+        found = bisect_right(starts, offset) - 1
+        holding = [s for s in lines[found].statements if s.span.start <= offset] if found >= 0 else []
+        groups.setdefault(holding[-1].span if holding else diagnostic.span, []).append(diagnostic)
+    return groups
+
+
+def _messages(diagnostics: Iterable[Diagnostic], *, codes: bool = False) -> str:
+    """The different messages of some diagnostics, in order, each once."""
+    return "; ".join(dict.fromkeys(f"{d.code} {d.message}" if codes else d.message for d in diagnostics))
+
+
 class InvalidInV3(Rule):
-    """A line that neither Mint v3 nor Mint v4 can read, or an unknown word used as a
-    statement (``COMMON``, ``RME``), was already broken in the v3 listing: it is reported,
-    not "fixed"."""
+    """A line that is already an error in Mint v3 (what ``mint check --dialect v3`` reports) and
+    still the same error in v4, or an unknown word used as a statement (``COMMON``, ``RME``),
+    was already broken in the v3 listing: it is reported, not "fixed". The error must be the
+    same in v4 (same place, same code) because the rule reads the migrated text: the v4 it
+    wrote is no Mint v3, and migrating it again must flag nothing."""
 
     id = "X-COMMENTED"
     rule_class = RuleClass.MANUAL
     phase = Phase.MANUAL
-    summary = "line invalid in v3 already (misprint, unknown word) -> manual"
-    evidence = "spec X-COMMENTED"
+    summary = "line invalid in v3 already (mint check --dialect v3 errors, misprints, unknown words) -> manual"
+    evidence = "spec X-COMMENTED; v3:7345-7350 (the v3 guide's own error examples)"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file in context.files.values():
-            v4_lines = _error_lines(mintlang.parse(file.text, "v4").diagnostics, file)
-            for diagnostic in file.document.diagnostics:
-                line = file.line_number(diagnostic.span.start)
-                if diagnostic.severity is Severity.ERROR and line in v4_lines:
-                    yield self.flag(file, diagnostic.span, f"not valid Mint v3 either ({diagnostic.message})")
+        named = list(self._named(context))
+        yield from named
+        lines = {(flag.unit, context.files[flag.unit].line_number(flag.span.start)) for flag in named}
+        in_v4 = {(file.unit, d.span.start, d.code) for file, errors in v4_errors(context) for d in errors}
+        for file, errors in v3_errors(context):
+            both = [d for d in errors if (file.unit, d.span.start, d.code) in in_v4]
+            for span, diagnostics in by_statement(file, both).items():
+                if (file.unit, file.line_number(span.start)) not in lines:
+                    yield self.flag(file, span, f"not valid Mint v3 either ({_messages(diagnostics)})")
+
+    def _named(self, context: Context) -> Iterator[Flag]:
+        """The errors given a reason of their own: unknown words, a comment missing its REM,
+        unmatched blocks and labels."""
         for file, _, statement in context.statements():
             if isinstance(statement, n.BareName) and context.db.lookup(statement.name.text) is None:
                 yield self.flag(file, statement.span, f"'{statement.name.text}' is not a Mint keyword (misprint?)")
@@ -269,10 +333,6 @@ class InvalidInV3(Rule):
                 if not label.definitions:
                     for jump in label.references:
                         yield self.flag(context.files[unit], jump.span, f"label #{label.name} is not in this file")
-
-
-def _error_lines(diagnostics: tuple[mintlang.Diagnostic, ...], file: FileView) -> set[int]:
-    return {file.line_number(d.span.start) for d in diagnostics if d.severity is Severity.ERROR}
 
 
 class Platform(Rule):
@@ -305,13 +365,13 @@ class LeftoverV3(Rule):
     def apply(self, context: Context) -> Iterator[Action]:
         db = context.db
         for file, statement, keyword, _ in keyword_nodes(context):
-            if keyword in self.covered or _flagged(file, statement):
+            if keyword in self.covered or _flagged(file, statement.span.start):
                 continue
             if db.lookup(keyword) is None or db.rename_of(keyword) is not None:
                 yield self.flag(file, statement.span, f"{keyword} is Mint v3 only: no automatic rewrite")
         same = same_value_constants(context)
         for file, _, statement in context.statements():
-            if _flagged(file, statement):
+            if _flagged(file, statement.span.start):
                 continue
             for root in n.expressions_of(statement):
                 for node in n.walk_expression(root):
@@ -319,6 +379,33 @@ class LeftoverV3(Rule):
                         yield self.flag(file, statement.span, f"{node.name.lower()} has another value in v4")
 
 
-def _flagged(file: FileView, statement: n.Statement) -> bool:
-    """Whether an earlier rule already put a manual item on the statement's line."""
-    return next(file.lines_above(statement.span.start), "").upper().startswith(MARKER)
+class StillInvalid(Rule):
+    """The migrator promises valid Mint v4 except on flagged lines: the result is read again as
+    Mint v4 for the target controller (spec §1 step 8), and a line with an error no rule could
+    rewrite gets a marker with the checker's message. Most are what a smaller controller lacks:
+    a second or third axis on a one-axis MintDrive or ServoNode 51 (#2017, #2), an input channel
+    (#7) or a value (#3), also in lines the migrator wrote from the v3 ones. A line that already
+    carries a marker is not flagged again; this runs last so that it sees every marker."""
+
+    id = "X-CHECK"
+    rule_class = RuleClass.MANUAL
+    phase = Phase.CHECK
+    summary = "line still invalid Mint v4 on the target (axes, channels, values it lacks) -> manual"
+    evidence = "spec §1 step 8; v4:18514-18532 (#2, #3, #7), v4:19047 (#2017)"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        title = context.controller.title
+        for file, errors in v4_errors(context):
+            for span, diagnostics in by_statement(file, errors).items():
+                if not _flagged(file, span.start):
+                    yield self.flag(file, span, f"not valid Mint v4 on {title}: {_messages(diagnostics, codes=True)}")
+
+
+# Rules whose markers are notes for the whole application: they sit above the first line of code
+# (notes.py), but say nothing about it.
+_APPLICATION_NOTES = frozenset({IoPrologue.id, ReportDefaults.id})
+
+
+def _flagged(file: FileView, offset: int) -> bool:
+    """Whether an earlier rule already put a manual item on the line of ``offset``."""
+    return any(rule not in _APPLICATION_NOTES for rule in file.markers_above(offset))

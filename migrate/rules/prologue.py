@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from mintlang.dialect import Dialect
 from mintlang.migrate.context import Context
 from mintlang.migrate.model import Phase, RuleClass
-from mintlang.migrate.rules.addressed import MOVES, axis_list, moved_axes, writes_any
+from mintlang.migrate.rules.addressed import MOVES, axis_list, moved_axes, on_target, writes_any
 from mintlang.migrate.rules.axes import default_axes, selector_axes
 from mintlang.migrate.rules.base import Action, Rule, keyword_refs
 from mintlang.migrate.rules.notes import prologue_notes
@@ -136,11 +136,11 @@ class IoPrologue(Rule):
     evidence = "spec S-PROLOGUE; v3:4600, v3:2508-2521; v4:4058-4061, v4:2704-2713, v4:15624-15629"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        every = tuple(range(context.controller.axis_count))
         notes = []
         for assignment in ASSIGNMENTS:
             axes = assignment.axes(context)
             if axes == () or assignment.done(context):
                 continue
-            notes.append(f"{assignment.statement.format(axes=axis_list(axes or every))} : REM {assignment.why}")
+            listed = axis_list(on_target(context, axes))
+            notes.append(f"{assignment.statement.format(axes=listed)} : REM {assignment.why}")
         yield from prologue_notes(context, self.id, notes)

@@ -5,9 +5,10 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping
 from types import MappingProxyType
 
-from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.context import Context, FileView, per_pass
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule, selector_text
+from mintlang.migrate.rules.renames import same_value_constants
 from mintlang.migrate.rules.spelling import like
 from mintlang.semantic.index import Use
 from mintlang.syntax import nodes as n
@@ -67,9 +68,42 @@ ERROR_BITS: Mapping[int, str] = MappingProxyType(
 )
 
 
+# The statements whose condition is only tested for zero or not (v3:2009, v3:13999, v4:1439-1440).
+CONDITIONS = (n.IfThen, n.IfDo, n.While, n.Until, n.Pause)
+
+
+def truth_only(context: Context, statement: n.Statement, node: n.Expression) -> bool:
+    """Whether only the truth of ``node`` is used: it is the condition of an IF, WHILE, UNTIL or
+    PAUSE, or reaches it through brackets, NOT and OR, which treat every non-zero value alike.
+    AND does not: it is bitwise (v3:14033-14039, v4:1306-1307), so the masks of two different bits
+    AND to 0; as a value (``a = MODE = _jog``), an operand of ``+`` or ``=``, v3's 1 or 0 is used."""
+    parents = context.parents(statement)
+    while (parent := parents.get(id(node))) is not None:
+        logical = (isinstance(parent, n.Unary) and parent.operator == "NOT") or (
+            isinstance(parent, n.Binary) and parent.operator == "OR"
+        )
+        if not (logical or isinstance(parent, n.Parenthesised)):
+            return False
+        node = parent
+    return isinstance(statement, CONDITIONS) and statement.condition is node
+
+
+@per_pass
+def _constant_values(context: Context) -> dict[str, int]:
+    """Upper-case constant -> its v3 value: the v3 constants, and the v4 names M-CONST gives
+    those whose value did not change (shared across a pass; callers must not change it)."""
+    constants = context.db.v3_constants
+    values = {name: int(constant.value) for name, constant in constants.items()}
+    for name, v4 in same_value_constants(context).items():
+        values.setdefault(v4.upper(), values[name])
+    return values
+
+
 class BitTest(Rule):
     """Base of S-MODE and S-ERROR: ``KW[.n] = k`` and ``KW[.n] <> k`` become bit tests of
-    the v4 keyword; any other use of the v3 value is flagged."""
+    the v4 keyword that give v3's 1 or 0 (``(AXISMODE & _mdJOG) <> 0``); where only the truth
+    of the test is used (a condition) the bare mask says the same. Any other use of the v3
+    value is flagged."""
 
     phase = Phase.CONTEXT
     rule_class = RuleClass.SEMI
@@ -91,17 +125,22 @@ class BitTest(Rule):
                 yield self.flag(file, use.keyword.span, self.refusal)
                 continue
             assert isinstance(parent, n.Binary)
-            yield self.replace(file, parent.span, self._test(file, use.keyword, parent.operator, value))
+            truth = truth_only(context, use.statement, parent)
+            yield self.replace(file, parent.span, self._test(file, use.keyword, parent.operator, value, truth=truth))
 
     def _compared_value(self, context: Context, keyword: n.KeywordRef, parent: n.Expression | None) -> int | None:
+        """The constant ``keyword`` is compared with by ``=`` or ``<>``, as a v3 value. A v4
+        constant M-CONST wrote for a v3 one of the same value (``_idle`` -> ``_mdIDLE``,
+        ``_abort`` -> ``_erABORT``) stands for that value: the renames run first."""
         if not isinstance(parent, n.Binary) or parent.operator not in ("=", "<>"):
             return None
         other = parent.right if parent.left is keyword else parent.left
-        constants = context.db.v3_constants
         if isinstance(other, n.Number) and other.value == int(other.value):
             return int(other.value)
-        if isinstance(other, n.ConstantRef) and other.name in constants:
-            return int(constants[other.name].value)
+        if isinstance(other, n.ConstantRef):
+            return _constant_values(context).get(other.name)
+        if isinstance(other, n.VariableRef):  # the v3 reader takes a v4 constant for a name
+            return _constant_values(context).get(other.name.text.upper())
         return None
 
     def _special(
@@ -110,14 +149,18 @@ class BitTest(Rule):
         """A use whose v4 form is not a bit test of the same value (none by default)."""
         return None
 
-    def _test(self, file: FileView, keyword: n.KeywordRef, operator: str, value: int) -> str:
+    def _test(self, file: FileView, keyword: n.KeywordRef, operator: str, value: int, *, truth: bool) -> str:
+        """The v4 test; a v3 comparison gave 1 or 0, and so does every form written here except
+        the bare mask ``(AXISMODE & _mdJOG)``, which is kept where only its truth is used."""
         read = like(keyword.spelling, self.target) + selector_text(file, keyword)
         if value == 0:
             return f"{read} {operator} 0"
         if value in self.exact:
             return f"{read} {operator} {self.bits[value]}"
         test = f"({read} & {self.bits[value]})"
-        return test if operator == "=" else f"{test} = 0"
+        if operator == "<>":
+            return f"{test} = 0"
+        return test if truth else f"{test} <> 0"
 
     @property
     def refusal(self) -> str:
@@ -126,13 +169,16 @@ class BitTest(Rule):
 
 class ModeTest(BitTest):
     """v3 MODE returned one mode number; v4 AXISMODE is a bit pattern, so ``MODE = _jog``
-    becomes ``(AXISMODE & _mdJOG)``. Mode 18 (gearing, clutch finished) becomes
-    ``AXISMODE = _mdFOLLOW``: during a v4 clutch the FLY bit is set too (v4:14791-14793), so only
-    the exact pattern says the clutch is over. Modes with no v4 bit (5 pulse following, 11, 17),
-    order comparisons and arithmetic on MODE are flagged."""
+    becomes ``(AXISMODE & _mdJOG) <> 0``, or ``(AXISMODE & _mdJOG)`` as a condition. Mode 18
+    (gearing, clutch finished) becomes ``AXISMODE = _mdFOLLOW``: during a v4 clutch the FLY bit is
+    set too (v4:14791-14793), so only the exact pattern says the clutch is over. Modes with no v4
+    bit (5 pulse following, 11, 17), order comparisons and arithmetic on MODE are flagged."""
 
     id = "S-MODE"
-    summary = "MODE[.n] = k / <> k -> (AXISMODE[.n] & _mdX) / ... = 0; MODE = 0 -> AXISMODE = 0"
+    summary = (
+        "MODE[.n] = k / <> k -> (AXISMODE[.n] & _mdX) <> 0 / ... = 0 (the bare mask as a condition); "
+        "MODE = 0 or _idle -> AXISMODE = 0"
+    )
     evidence = "spec S-MODE; v3:10040-10061; v4:14045, v4:7094-7176"
     keyword = "MODE"
     target = "AXISMODE"
@@ -161,7 +207,7 @@ class ErrorTest(BitTest):
     because the v4 text swaps the names of the combined constants."""
 
     id = "S-ERROR"
-    summary = "ERROR[.n] = _limit/_maxfe/_abort/_external -> (AXISERROR[.n] & <bits>); ERROR = 0 -> AXISERROR = 0"
+    summary = "ERROR[.n] = _limit/_maxfe/_abort/_external -> (AXISERROR[.n] & <bits>) <> 0; ERROR = 0 -> AXISERROR = 0"
     evidence = "spec S-ERROR; v3:4995-5010; v4:9962, v4:6967-7081, v4:7035-7037"
     keyword = "ERROR"
     target = "AXISERROR"

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import mintlang
+from mintlang.diagnostics import LineIndex, Severity
 from mintlang.migrate import MigrationResult, migrate
 
 
@@ -19,3 +21,24 @@ def flagged(rule: str, source: str, **options: str) -> list[str]:
     marker_free = "".join(line for line in result.text.splitlines(keepends=True) if "REM MIGRATE:" not in line)
     assert marker_free == source, "a refused rewrite must leave the original as it was"
     return [item.reason for item in result.manual if item.rule == rule]
+
+
+def unflagged_errors(result: MigrationResult, diagnostics: tuple[mintlang.Diagnostic, ...]) -> list[str]:
+    """The error diagnostics of the migrated text that sit on no line a manual item flags."""
+    flagged_lines = {item.line for item in result.manual}
+    index = LineIndex(result.text)
+    return [
+        f"{index.position(d.span.start).line}: {d.code} {d.message}"
+        for d in diagnostics
+        if d.severity is Severity.ERROR and index.position(d.span.start).line not in flagged_lines
+    ]
+
+
+def errors_left_unflagged(result: MigrationResult, controller: str) -> list[str]:
+    """``unflagged_errors`` of ``mint check`` on the program and its configuration file, if any."""
+    config = result.configuration.text if result.configuration is not None else None
+    analysis = mintlang.check_application(result.text, dialect="v4", controller=controller, config=config)
+    left = unflagged_errors(result, analysis.program)
+    if result.configuration is not None:
+        left += [f"configuration {error}" for error in unflagged_errors(result.configuration, analysis.configuration)]
+    return left

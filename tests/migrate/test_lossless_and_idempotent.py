@@ -41,6 +41,16 @@ def test_cp1252_bytes_survive_a_rewrite() -> None:
     assert migrated == data.replace(b"HMSPEED", b"HOMESPEED")
 
 
+def test_breaking_the_auto_line_changes_only_its_separator() -> None:
+    """A flag for a statement after AUTO breaks the line after AUTO (nothing may go above it,
+    v4:6647-6649): without the marker, the text is the original with that `` : `` a line end."""
+    config = "AUTO : ERRORIN = 1 : REM  keep\tme\r\n\tx=1 :REM x\r\n"
+    result = migrate("", config=config, only=["S-ERRORIN"]).configuration
+    assert result is not None
+    assert _without_inserted_lines(result.text) == config.replace(" : ", "\r\n", 1)
+    assert [(change.line, change.original) for change in result.changes] == [(1, " : ")]
+
+
 def test_untouched_lines_are_byte_identical_in_the_corpus() -> None:
     for case in CASES:
         result = case.migrate()

@@ -18,6 +18,36 @@ def test_marker_goes_above_with_the_same_indentation() -> None:
     assert [(item.rule, item.line) for item in result.manual] == [("X-HOST", 3)]
 
 
+_RAMP = "REM MIGRATE: S-RAMP: SRAMP shapes the ramps differently from v3 RAMP: check the motion"
+
+
+def test_nothing_goes_above_auto_its_line_is_broken_after_it() -> None:
+    """AUTO must be the first command of the configuration file, REM lines included, or the
+    application does not start at power-up (v4:6647-6649): a flag for a statement after it on its
+    line breaks the line after AUTO (a line end separates statements as ``:`` does)."""
+    result = migrate("", config="AUTO : RAMP = 5;\nSCALE = 1;\n", controller="nextmove-bx")
+    configuration = result.configuration
+    assert configuration is not None
+    assert configuration.text == f"AUTO\nAXES[0,1,2]\n{_RAMP}\nSRAMP = 50;\nSCALE = 1;\n"
+    assert [(item.rule, item.line) for item in configuration.manual] == [("S-RAMP", 4)]
+    assert [(c.line, c.original) for c in configuration.changes if c.rule == "S-RAMP"] == [(1, " : "), (1, "RAMP = 5;")]
+    again = migrate("", config=configuration.text, controller="nextmove-bx").configuration
+    assert again is not None and again.text == configuration.text and again.changes == ()
+
+
+def test_a_flag_alone_after_auto_or_protect_breaks_only_the_separator() -> None:
+    result = migrate("x = 1\r\n", config="AUTO : ERRORIN = 1\r\nSCALE = 1\r\n", only=["S-ERRORIN"])
+    assert result.configuration is not None
+    marker = "REM MIGRATE: S-ERRORIN: ERRORINPUT takes the error input's number (-1 none); set its level with "
+    marker += "INPUTACTIVELEVEL"
+    assert result.configuration.text == f"AUTO\r\n{marker}\r\nERRORIN = 1\r\nSCALE = 1\r\n"
+    assert [(item.rule, item.line) for item in result.configuration.manual] == [("S-ERRORIN", 3)]
+    # PROTECT must be the first line of the program in the same way (v4:15393)
+    program = migrate("PROTECT pw : INCR = 5\n", only=["X-INCA"])
+    assert program.text.startswith("PROTECT pw\nREM MIGRATE: X-INCA: ")
+    assert program.text.endswith("\nINCR = 5\n") and [item.line for item in program.manual] == [3]
+
+
 @pytest.mark.parametrize(
     ("rule", "source"),
     [

@@ -160,6 +160,46 @@ def test_error_tests_become_bit_tests(source: str, expected: str) -> None:
     assert rewritten("S-ERROR", source) == expected
 
 
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        # a comparison used as a value is 1 or 0 in v3: the bare mask would be 32, 4 ...
+        ("a = MODE.0 = _homing\n", "a = (AXISMODE.0 & _mdHOMING) <> 0\n"),
+        ("PRINT ERROR.1 = _maxfe\n", "PRINT (AXISERROR.1 & _erFOLLOWING_ERROR) <> 0\n"),
+        ("b = b + (MODE = _jog)\n", "b = b + ((AXISMODE & _mdJOG) <> 0)\n"),
+        # AND is bitwise: (AXISMODE & 4) AND 1 is 0, so its operands get the 1-or-0 form too
+        (
+            "IF MODE = _jog AND ERROR = 0 THEN x = 1\n",
+            "IF (AXISMODE & _mdJOG) <> 0 AND AXISERROR = 0 THEN x = 1\n",
+        ),
+        # OR and NOT only ask whether a value is zero: the bare mask stays in a condition
+        (
+            "WHILE MODE = _jog OR !(ERROR.1 = _maxfe)\n",
+            "WHILE (AXISMODE & _mdJOG) OR !((AXISERROR.1 & _erFOLLOWING_ERROR))\n",
+        ),
+        ("REPEAT : UNTIL MODE.2 = _offset\n", "REPEAT : UNTIL (AXISMODE.2 & _mdOFFSET)\n"),
+    ],
+)
+def test_a_test_used_as_a_value_keeps_the_v3_one_or_zero(source: str, expected: str) -> None:
+    assert migrate(source, only=["S-MODE", "S-ERROR"]).text == expected
+
+
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        # M-CONST renames _idle (0) to _mdIDLE and _abort (1) to _erABORT before S-MODE/S-ERROR run
+        ("PAUSE MODE = _idle\n", "PAUSE AXISMODE = 0\n"),
+        ("IF MODE.1 <> _idle THEN x = 1\n", "IF AXISMODE.1 <> 0 THEN x = 1\n"),
+        ("IF ERROR = _abort THEN x = 1\n", "IF (AXISERROR & _erABORT) THEN x = 1\n"),
+        ("IF MODE = _linear THEN x = 1\n", "IF (AXISMODE & _mdLINEAR) THEN x = 1\n"),
+    ],
+)
+def test_constants_renamed_first_are_still_tested(source: str, expected: str) -> None:
+    result = migrate(source, only=["M-CONST", "S-MODE", "S-ERROR"])
+    assert result.text == expected
+    assert result.manual == ()
+
+
 def test_error_13_has_no_bit() -> None:
     assert flagged("S-ERROR", "IF ERROR = 13 THEN x = 1\n") == [
         "ERROR was a value, AXISERROR is a bit pattern: rewrite this use as a bit test"

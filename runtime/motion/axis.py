@@ -252,21 +252,17 @@ class Axis:
             if self.held and now >= move.end:
                 return NEVER  # at rest on a stop input: only the input clearing moves it on
             return now + 1 if self.watched_while_moving() else max(move.end, now + 1)
-        if self.settling() or not self._law_settled():
+        if self.settling() or (type(self.plant) is not IdealPlant and not self._law_settled()):
             return now + 1
         if self.triggered and not self.held:
             return next_profiler_tick(now)
         return NEVER
 
     def _law_settled(self) -> bool:
-        """At rest, the DAC and the loop history stay as they are from the next tick on: always where the law
-        is not in control, and on a stalled encoder once its derivative and integrator have done acting."""
-        if (
-            type(self.plant) is IdealPlant
-            or not self.enabled
-            or self.torque is not None
-            or self.open_loop_dac is not None
-        ):
+        """At rest on a plant the law drives (not the ideal one), the DAC and the loop history stay as they are
+        from the next tick on: always where the law is not in control, and on a stalled encoder once its
+        derivative and integrator have done acting."""
+        if not self.enabled or self.torque is not None or self.open_loop_dac is not None:
             return True
         hold = self.hold
         return (

@@ -7,8 +7,10 @@ scanning all of them: 20-150 ms on a 5,000-line program. The trees are acyclic
 and live until the next version replaces them, so the server freezes them out
 of the collector's sight as soon as they are built; reference counting still
 frees them. Freezing would also hide any garbage cycle alive at that moment
-(an asyncio task, an exception's traceback), so once the editor has been quiet
-for a while everything is thawed and collected in full, where nobody waits.
+(an asyncio task, an exception's traceback, a simulation's objects on its
+worker thread: freezing is process-wide), so once the editor has been quiet for
+a while everything is thawed and collected in full, where nobody waits, and
+during long typing at least once every ``AT_MOST_S``.
 """
 
 from __future__ import annotations
@@ -17,17 +19,21 @@ import asyncio
 import gc
 
 IDLE_S = 5.0  # quiet time before the full collection
+AT_MOST_S = 60.0  # the longest a frozen cycle waits, however long the typing goes on
 
 
 class Collector:
-    """Freezes each new analysis; a full collection follows when the server has been idle ``idle_s``."""
+    """Freezes each new analysis; a full collection follows once the server has been idle ``idle_s``,
+    and no later than ``at_most_s`` after the first freeze since the last one."""
 
-    def __init__(self, idle_s: float = IDLE_S) -> None:
+    def __init__(self, idle_s: float = IDLE_S, at_most_s: float = AT_MOST_S) -> None:
         self.idle_s = idle_s
+        self.at_most_s = at_most_s
         self._pending: asyncio.TimerHandle | None = None
+        self._first_freeze: float | None = None  # loop time of the first freeze since the last collection
 
     def analysed(self) -> None:
-        """A snapshot was just built: freeze it, and postpone the full collection."""
+        """A snapshot was just built: freeze it, and postpone the full collection (within the limit)."""
         gc.freeze()
         if self._pending is not None:
             self._pending.cancel()
@@ -36,11 +42,15 @@ class Collector:
             loop = asyncio.get_running_loop()
         except RuntimeError:  # analysed outside the server's loop: nothing to schedule
             return
-        self._pending = loop.call_later(self.idle_s, self.collect)
+        now = loop.time()
+        if self._first_freeze is None:
+            self._first_freeze = now
+        delay = min(self.idle_s, max(0.0, self._first_freeze + self.at_most_s - now))
+        self._pending = loop.call_later(delay, self.collect)
 
     def collect(self) -> None:
-        """Everything thawed and collected in full, then frozen again until the next edit."""
+        """Everything thawed and collected in full; the next analysis freezes again."""
         self._pending = None
+        self._first_freeze = None
         gc.unfreeze()
         gc.collect()
-        gc.freeze()

@@ -13,7 +13,7 @@ from mintlang.keyworddb import database
 # The toolchain's own checks: code -> short title.
 OWN_CODES: dict[str, str] = {
     "W101": "Typographic quotes",
-    "W102": "Mint v3 keyword",
+    "W102": "Mint v3 label",
     "W103": "Unused variable",
     "W104": "Unused label",
     "W105": "Unused macro",

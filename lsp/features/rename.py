@@ -75,7 +75,9 @@ def _check_name(snapshot: Snapshot, symbol: Symbol, name: str) -> None:
 
 
 def register(server: MintServer) -> None:
-    logging.getLogger("pygls.protocol.json_rpc").addFilter(_RefusalsAreAnswers())
+    pygls_log = logging.getLogger("pygls.protocol.json_rpc")
+    if not any(isinstance(existing, _RefusalsAreAnswers) for existing in pygls_log.filters):  # once per process
+        pygls_log.addFilter(_RefusalsAreAnswers())
 
     @server.feature(types.TEXT_DOCUMENT_PREPARE_RENAME)
     def prepare(params: types.PrepareRenameParams) -> types.PrepareRenamePlaceholder | None:

@@ -9,6 +9,7 @@ from __future__ import annotations
 import sys
 from collections import Counter
 from pathlib import Path
+from typing import NoReturn
 
 import click
 from rich.console import Console
@@ -40,7 +41,7 @@ def _codes(value: str | None, option: str) -> tuple[str, ...] | None:
     return codes
 
 
-def _fail(message: str) -> None:
+def _fail(message: str) -> NoReturn:
     click.echo(f"mint check: {message}", err=True)
     sys.exit(_USAGE_ERROR)
 
@@ -85,10 +86,8 @@ def check(
         configuration = read_source(config_path) if config_path is not None else None
     except FileNotFoundError as missing:
         _fail(f"no such file or directory: {missing.filename or missing.args[0]}")
-        return
     except OSError as error:
         _fail(f"cannot read {error.filename}: {error.strerror}")
-        return
     if configuration is not None and (binary := configuration.binary()) is not None:
         _fail(f"{binary}: not checked")
     if not files:
@@ -106,7 +105,6 @@ def check(
             source = read_source(path)
         except OSError as error:
             _fail(f"cannot read {path}: {error.strerror}")
-            return
         binary = source.binary()
         if binary is not None:
             _fail(f"{binary}: not checked")

@@ -45,8 +45,12 @@ class Number:
 
 
 def character_code(text: str) -> int:
-    """The value of a character constant written ``'a'``: the code of its upper case (v4 guide 3.2.3), here 65."""
-    return ord(text[1].upper())
+    """The value of a character constant written ``'a'``: the code of its upper case (v4 guide 3.2.3), here 65.
+
+    A character whose upper case is two (``'ß'`` is ``SS``) keeps its own code.
+    """
+    upper = text[1].upper()
+    return ord(upper) if len(upper) == 1 else ord(text[1])
 
 
 @node

@@ -99,15 +99,25 @@ def test_a_misspelling_inside_a_macro_gets_no_replacement_of_the_macro_name() ->
     assert [fix.title for fix in diagnostic.fixes] == ["Declare 'countr' with DIM"]
 
 
-def test_the_dim_offered_in_each_file_goes_into_that_file() -> None:
-    # first used in the configuration: the program's squiggle still declares it in the program, above its own use
+def test_the_dim_goes_into_the_file_of_the_first_use_and_declares_it_for_both() -> None:
+    # compiled first, the configuration's DIM serves the program too; a fix edits its own diagnostic's file,
+    # so the program's squiggle offers no DIM (one there would leave the configuration's use undeclared)
     config = "REM set-up\nfoo = 5\n"
     program = "PRINT 1\nPRINT foo\n"
     analysis = mintlang.check_application(program, config=config)
     (in_program,) = [d for d in analysis.program if d.code == "E3001"]
     (in_configuration,) = [d for d in analysis.configuration if d.code == "E3001"]
-    assert apply(program, in_program.fixes[0].edits) == "PRINT 1\nDIM foo\nPRINT foo\n"
-    assert apply(config, in_configuration.fixes[0].edits) == "REM set-up\nDIM foo\nfoo = 5\n"
+    assert in_program.fixes == ()
+    fixed_config = apply(config, in_configuration.fixes[0].edits)
+    assert fixed_config == "REM set-up\nDIM foo\nfoo = 5\n"
+    assert not [d for d in mintlang.check_application(program, config=fixed_config).program if d.code == "E3001"]
+    # used in the program alone: the DIM goes into the program
+    (alone,) = [d for d in mintlang.check_application(program, config="REM set-up\n").program if d.code == "E3001"]
+    assert apply(program, alone.fixes[0].edits) == "PRINT 1\nDIM foo\nPRINT foo\n"
+
+
+def test_a_character_whose_upper_case_is_two_keeps_its_own_code() -> None:
+    assert mintlang.check("DIM a\na = 'ß'\nPRINT a\n") == []
 
 
 def test_every_use_of_an_undeclared_variable_offers_the_dim_above_its_first_use() -> None:

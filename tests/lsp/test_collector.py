@@ -61,3 +61,16 @@ def test_each_new_analysis_postpones_the_full_collection() -> None:
         return watched() is not None
 
     assert asyncio.run(session())
+
+
+def test_long_typing_still_gets_a_full_collection_within_the_limit() -> None:
+    async def session() -> bool:
+        collector = Collector(idle_s=0.5, at_most_s=0.3)
+        watched = garbage_cycle()
+        collector.analysed()
+        for _ in range(7):  # never 0.5 s of quiet, but 0.7 s in all: the 0.3 s limit passes
+            await asyncio.sleep(0.1)
+            collector.analysed()
+        return watched() is None
+
+    assert asyncio.run(session())

@@ -107,7 +107,7 @@ async function runTool(tool: FileTool, title: string, uri: unknown, output: vsco
   if (outcome.cancelled) {
     return;
   }
-  const meaning = outcomeOf(tool, outcome.code);
+  const meaning = outcomeOf(tool, outcome.code, outcome.stderr);
   // Python exits 1 when the module is missing, so that is told apart before a migration's exit 1.
   if (meaning !== "done" && command.source === "mint.pythonPath" && isMissingModule(outcome.stderr, tool)) {
     void showError(`${title}: ${tool} was not found: ${command.command} has no module ${MODULES[tool]}.`, output);

@@ -154,14 +154,16 @@ export function toolArguments(tool: FileTool, file: string, controller: Controll
 /**
  * What a tool's exit status means to the user. mint-migrate --write exits 1 when it wrote the files
  * but left statements only a person can port (each marked by a REM MIGRATE line): the migration
- * happened, so that is a call for review, not a failure. mint-run exits 1 when the program stopped
- * on an error or an expectation failed, which the run's own output explains.
+ * happened, so that is a call for review, not a failure. Python also exits 1 when a tool crashes,
+ * so a traceback on stderr is a failure whatever the status. mint-run exits 1 when the program
+ * stopped on an error or an expectation failed, which the run's own output explains.
  */
-export function outcomeOf(tool: FileTool, code: number | null): "done" | "review" | "failed" {
+export function outcomeOf(tool: FileTool, code: number | null, stderr = ""): "done" | "review" | "failed" {
   if (code === 0) {
     return "done";
   }
-  return tool === "mint-migrate" && code === 1 ? "review" : "failed";
+  const crashed = stderr.includes("Traceback (most recent call last)");
+  return tool === "mint-migrate" && code === 1 && !crashed ? "review" : "failed";
 }
 
 /** The command line that runs `tool` on `file` (with its configuration file `config`), or why there is none. */

@@ -42,18 +42,18 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
         if not undeclared:
             continue
         # A Mint v3 word (GAIN, _servo) says what it became, with the rename where that is enough.
-        # Every squiggle of a file offers the same DIM, above the first use in that file (a fix edits
-        # the file of its diagnostic); none when a later DIM exists (a second one would be a double
-        # declaration) or when the name is a whole v3 keyword (a variable would silently read 0 where
-        # the v3 program read an input).
+        # The squiggles of the file of the first use (the configuration, compiled first, if it uses
+        # the name) offer the one DIM that declares it for both files, above that use; a fix edits
+        # the file of its diagnostic, so the other file's squiggles offer none. No DIM either when a
+        # later DIM exists (a second one would be a double declaration) or when the name is a whole
+        # v3 keyword (a variable would silently read 0 where the v3 program read an input).
         was = successor(symbol.name, model.controller)
         old = renames.lookup_v3(symbol.name) if was is None else None
         was_keyword = (was is not None and was.whole_keyword) or (old is not None and old.name == symbol.name.upper())
         declare: dict[Unit, tuple[Fix, ...]] = {}
         if not symbol.definitions and not was_keyword:
-            for use in sorted(undeclared, key=lambda use: use.span.start):
-                if use.unit not in declare:
-                    declare[use.unit] = (_add_dim(model, symbol, use.unit, use.span),)
+            first = min(undeclared, key=lambda use: (use.unit is Unit.PROGRAM, use.span.start))
+            declare[first.unit] = (_add_dim(model, symbol, first.unit, first.span),)
         for occurrence in undeclared:
             fixes = declare.get(occurrence.unit, ())
             detail = f"'{occurrence.spelling}' is not declared"

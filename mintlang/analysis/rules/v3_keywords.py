@@ -21,12 +21,16 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.semantic.events import EventKind, event_of
 
-_V3 = "Mint v3"  # every finding about a v3 word names the old language, and only those do
+_V3 = "Mint v3"
+_V3_WORD = f"it is a {_V3} "  # how an error says a word is v3's ("… it is a Mint v3 keyword, replaced by …")
 
 
 def about_v3(diagnostic: Diagnostic) -> bool:
-    """Whether ``diagnostic`` is about a Mint v3 word left in v4 code: a file that mint-migrate would help."""
-    return diagnostic.code in ("E3001", "E3007", "W102") and _V3 in diagnostic.message
+    """Whether ``diagnostic`` is about a Mint v3 word left in v4 code: a file that mint-migrate would help.
+
+    A name that merely looks like a v3 abbreviation (``A2``) is not: it may well be a v4 variable.
+    """
+    return diagnostic.code == "W102" or (diagnostic.code in ("E3001", "E3007") and _V3_WORD in diagnostic.message)
 
 
 # Replacements that read other units: renaming alone would change every value computed from them.

@@ -246,3 +246,9 @@ test("a migration that left statements for a person is a call for review, not a 
   assert.equal(outcomeOf("mint-migrate", null), "failed");
   assert.equal(outcomeOf("mint-run", 1), "failed");
 });
+
+test("a migration that crashed is a failure, though Python's exit status is 1 too", () => {
+  const stderr = 'Traceback (most recent call last):\n  File "cli.py", line 1\nTypeError: boom\n';
+  assert.equal(outcomeOf("mint-migrate", 1, stderr), "failed");
+  assert.equal(outcomeOf("mint-migrate", 1, "mint-migrate: 2 manual items\n"), "review");
+});

@@ -103,8 +103,7 @@ def macro_body(snapshot: Snapshot, name: str) -> str | None:
     where = symbol.definition if symbol is not None else None
     if definition is None or definition.body_span is None or where is None:
         return None
-    document = model.configuration if where.unit is Unit.CONFIGURATION else model.program
-    return document.source[definition.body_span.start : definition.body_span.end] if document is not None else None
+    return model.document(where.unit).source[definition.body_span.start : definition.body_span.end]
 
 
 def symbol(snapshot: Snapshot, found: Symbol) -> str:

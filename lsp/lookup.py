@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from bisect import bisect_right
+from collections.abc import Collection
 from operator import attrgetter
 
 from lsprotocol import types
@@ -22,14 +23,15 @@ def token_index(document: Document, offset: int) -> int:
     return bisect_right(document.tokens, offset, key=_START) - 1
 
 
-def token_at(document: Document, offset: int) -> Token | None:
-    """The word token under the cursor: containing ``offset``, or ending there (cursor after a word)."""
+def token_at(document: Document, offset: int, kinds: Collection[TokenKind] = WORD_KINDS) -> Token | None:
+    """The token of ``kinds`` (a word, by default) under the cursor: containing ``offset``, or ending there
+    (cursor after a word)."""
     tokens = document.tokens
     index = token_index(document, offset)
     for candidate in (index, index - 1):
         if 0 <= candidate < len(tokens):
             token = tokens[candidate]
-            if token.kind in WORD_KINDS and token.start <= offset <= token.end:
+            if token.kind in kinds and token.start <= offset <= token.end:
                 return token
     return None
 

@@ -95,9 +95,7 @@ class Snapshot:
 
     @property
     def document(self) -> Document:
-        document = self.model.configuration if self.unit is Unit.CONFIGURATION else self.model.program
-        assert document is not None
-        return document
+        return self.model.document(self.unit)
 
     @property
     def positions(self) -> Positions:

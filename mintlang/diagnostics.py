@@ -59,6 +59,11 @@ class Fix:
     title: str
     edits: tuple[Edit, ...]
 
+    @classmethod
+    def replace(cls, span: Span, text: str) -> Fix:
+        """Write ``text`` in place of the word at ``span``: a misspelling's or an old keyword's fix."""
+        return cls(f"Replace with {text}", (Edit(span, text),))
+
 
 @dataclass(frozen=True, slots=True)
 class Diagnostic:

@@ -7,26 +7,19 @@ from lsprotocol import types
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.lsp import describe
-from mintlang.lsp.lookup import token_at, token_index
+from mintlang.lsp.lookup import token_at
 from mintlang.lsp.occurrences import symbol_at
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.syntax.parser import Document
 from mintlang.syntax.tokens import Token, TokenKind
 
-
-def _touching(document: Document, offset: int, kind: TokenKind) -> Token | None:
-    """The token of ``kind`` under the cursor, or just before it."""
-    index = token_index(document, offset)
-    for candidate in (document.tokens[i] for i in (index, index - 1) if i >= 0):
-        if candidate.kind is kind and candidate.start <= offset <= candidate.end:
-            return candidate
-    return None
+_COMMENT, _CHARACTER = frozenset({TokenKind.COMMENT}), frozenset({TokenKind.CHAR})
 
 
 def _comment_keyword(document: Document, offset: int) -> Token | None:
     """The ``REM`` that starts a comment, as a keyword token, when ``offset`` is on it."""
-    comment = _touching(document, offset, TokenKind.COMMENT)
+    comment = token_at(document, offset, _COMMENT)
     if comment is not None and offset <= comment.start + len("REM"):
         return Token(TokenKind.KEYWORD, comment.text[: len("REM")], comment.start)
     return None
@@ -34,7 +27,7 @@ def _comment_keyword(document: Document, offset: int) -> Token | None:
 
 def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
     """Markdown for the word at ``offset`` and the span it describes."""
-    character = _touching(snapshot.document, offset, TokenKind.CHAR)
+    character = token_at(snapshot.document, offset, _CHARACTER)
     if character is not None:
         return describe.character(character.text), character.start, character.end
     token = token_at(snapshot.document, offset) or _comment_keyword(snapshot.document, offset)

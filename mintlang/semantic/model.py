@@ -28,6 +28,13 @@ class SemanticModel:
     structures: Mapping[Unit, Structure]
     index: SyntaxIndex  # every statement, keyword use, element and name, in compile order
 
+    def document(self, unit: Unit) -> Document:
+        """The file of ``unit``: something found in the configuration means there is one."""
+        if unit is Unit.CONFIGURATION:
+            assert self.configuration is not None, "no configuration file was analysed"
+            return self.configuration
+        return self.program
+
     def documents(self) -> Iterator[tuple[Unit, Document]]:
         """The files in compile order: configuration first."""
         if self.configuration is not None:

@@ -76,3 +76,13 @@ def position(text: str, needle: str, shift: int = 0) -> types.Position:
 
 def document(uri: str) -> types.TextDocumentIdentifier:
     return types.TextDocumentIdentifier(uri=uri)
+
+
+def units(text: str, encoding: str) -> int:
+    """Code units of ``text`` in an LSP position encoding, as Python's codecs count them: the tests'
+    reference, written apart from the server's own conversions."""
+    if encoding == types.PositionEncodingKind.Utf8:
+        return len(text.encode("utf-8"))
+    if encoding == types.PositionEncodingKind.Utf16:
+        return len(text.encode("utf-16-le")) // 2
+    return len(text)

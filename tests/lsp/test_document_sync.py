@@ -16,7 +16,7 @@ from lsprotocol import types
 from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
 
 from mintlang.lsp.documents import LspWorkspace
-from tests.lsp.conftest import SERVER, document, uri_of
+from tests.lsp.conftest import SERVER, document, units, uri_of
 
 # str.splitlines breaks at these; the LSP does not
 NOT_LINE_ENDS = ("\x0b", "\x0c", "\x1c", "\x1d", "\x1e", "\x85", "\u2028", "\u2029")
@@ -46,14 +46,6 @@ def _content(line: str) -> str:
         if line.endswith(end):
             return line[: -len(end)]
     return line
-
-
-def units(text: str, encoding: str) -> int:
-    if encoding == types.PositionEncodingKind.Utf8:
-        return len(text.encode("utf-8"))
-    if encoding == types.PositionEncodingKind.Utf16:
-        return len(text.encode("utf-16-le")) // 2
-    return len(text)
 
 
 def editor_offset(text: str, position: types.Position, encoding: str) -> int:

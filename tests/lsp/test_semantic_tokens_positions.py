@@ -22,6 +22,7 @@ from mintlang.lsp.positions import Positions, columns
 from mintlang.lsp.workspace import Analyses, Snapshot
 from mintlang.syntax.nodes import identity
 from mintlang.syntax.tokens import TRIVIA, TokenKind
+from tests.lsp.conftest import units
 
 ENCODINGS = [types.PositionEncodingKind.Utf16, types.PositionEncodingKind.Utf8, types.PositionEncodingKind.Utf32]
 CAM = "DIM cam(2000) = " + ", ".join(str(i % 97) for i in range(2000)) + " : REM cam profile in µm\nPRINT cam(1)\n"
@@ -30,15 +31,6 @@ MIXED = 'DIM a\r\n\tREM 😀 é\r\nPRINT "😀µ" ; a : a = 2 : REM 𝄞 ° \rla
 
 def snapshot_of(text: str, encoding: str) -> Snapshot:
     return Analyses(read=lambda uri: None, encoding=encoding).snapshot("file:///colours.mnt", text, 1)
-
-
-def units(text: str, encoding: str) -> int:
-    """Code units of ``text``, as Python's codecs count them."""
-    if encoding == types.PositionEncodingKind.Utf8:
-        return len(text.encode("utf-8"))
-    if encoding == types.PositionEncodingKind.Utf16:
-        return len(text.encode("utf-16-le")) // 2
-    return len(text)
 
 
 def reference(snapshot: Snapshot, within: Span | None = None) -> list[tuple[int, int, int, str]]:

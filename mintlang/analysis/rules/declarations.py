@@ -22,7 +22,6 @@ from mintlang.keyworddb import database
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Symbol, SymbolKind, Unit
 from mintlang.syntax import nodes as n
-from mintlang.syntax.parser import Document
 from mintlang.syntax.tokens import TokenKind
 
 
@@ -70,17 +69,13 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
             elif close := get_close_matches(occurrence.spelling, declared, n=1, cutoff=0.8):
                 detail += f"; did you mean '{close[0]}'?"
                 if as_written:
-                    fixes = (Fix(f"Replace with {close[0]}", (Edit(occurrence.span, close[0]),)), *fixes)
+                    fixes = (Fix.replace(occurrence.span, close[0]), *fixes)
             yield Finding(occurrence.unit, mint_error(3001, occurrence.span, detail, fixes=fixes))
-
-
-def _document(model: SemanticModel, unit: Unit) -> Document:
-    return model.configuration if unit is Unit.CONFIGURATION and model.configuration else model.program
 
 
 def _written_at(model: SemanticModel, unit: Unit, span: Span) -> str:
     """The text at ``span``: a name's own spelling, or the name of the macro whose text it came from."""
-    return _document(model, unit).source[span.start : span.end]
+    return model.document(unit).source[span.start : span.end]
 
 
 def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span) -> Fix:
@@ -88,7 +83,7 @@ def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span) -> Fi
 
     Above its first physical line: a DIM list continued over lines must stay whole.
     """
-    document = _document(model, unit)
+    document = model.document(unit)
     index = document.line_index
     containing = [line for line in document.lines if line.span.start <= span.start]
     line = containing[-1].number if containing else index.position(span.start).line

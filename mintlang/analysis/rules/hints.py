@@ -12,7 +12,6 @@ from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Edit, Fix
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing
-from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
 
 
@@ -28,8 +27,7 @@ def check(facts: Facts) -> Iterator[Finding]:
         if keyword is None or keyword.addressing is not Addressing.AXIS:
             continue
         if isinstance(item, n.Number | n.VariableRef):
-            document = model.configuration if use.unit is Unit.CONFIGURATION and model.configuration else model.program
-            written = document.source[item.span.start : item.span.end]
+            written = model.document(use.unit).source[item.span.start : item.span.end]
             value = item.text if isinstance(item, n.Number) else item.name.text
             # A macro needs a delimiter before it, or the dot is ignored: MOVER..xAxis (3.5)
             dotted = f".{written}" if written.upper() == value.upper() else f"..{written}"

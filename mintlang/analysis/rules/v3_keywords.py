@@ -46,7 +46,7 @@ class Successor:
     whole_keyword: bool  # the old keyword's full name, not an abbreviation that may be a user's variable
 
     def fixes(self, span: Span) -> tuple[Fix, ...]:
-        return (Fix(f"Replace with {self.rename}", (Edit(span, self.rename),)),) if self.rename else ()
+        return (Fix.replace(span, self.rename),) if self.rename else ()
 
 
 def successor(word: str, controller: ControllerProfile) -> Successor | None:

@@ -11,11 +11,14 @@ the language server and the runtime::
 from __future__ import annotations
 
 from mintlang.analysis.analyser import Analysis, analyse
+from mintlang.analysis.analyser import clear_cache as clear_findings_cache
 from mintlang.diagnostics import Diagnostic, Edit, Fix, LineIndex, Position, Severity, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
+from mintlang.semantic.index import clear_cache as clear_index_cache
 from mintlang.semantic.model import SemanticModel, build_model
 from mintlang.syntax.parser import Document, parse
+from mintlang.syntax.parser import clear_caches as clear_syntax_caches
 
 __all__ = [
     "Analysis",
@@ -34,8 +37,16 @@ __all__ = [
     "build_model",
     "check",
     "check_application",
+    "clear_caches",
     "parse",
 ]
+
+
+def clear_caches() -> None:
+    """Forget every line lexed, parsed, indexed and checked: the next check runs as in a fresh process."""
+    clear_syntax_caches()
+    clear_index_cache()
+    clear_findings_cache()
 
 
 def check_application(

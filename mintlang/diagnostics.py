@@ -43,6 +43,9 @@ class Span(NamedTuple):
     start: int
     end: int
 
+    def shifted(self, offset: int) -> Span:
+        return Span(self.start + offset, self.end + offset)
+
 
 @dataclass(frozen=True, slots=True)
 class Edit:
@@ -51,6 +54,9 @@ class Edit:
     span: Span
     text: str
 
+    def shifted(self, offset: int) -> Edit:
+        return Edit(self.span.shifted(offset), self.text)
+
 
 @dataclass(frozen=True, slots=True)
 class Fix:
@@ -58,6 +64,9 @@ class Fix:
 
     title: str
     edits: tuple[Edit, ...]
+
+    def shifted(self, offset: int) -> Fix:
+        return Fix(self.title, tuple(edit.shifted(offset) for edit in self.edits))
 
     @classmethod
     def replace(cls, span: Span, text: str) -> Fix:
@@ -79,6 +88,11 @@ class Diagnostic:
     message: str
     mint_error: int | None = None
     fixes: tuple[Fix, ...] = field(default=())
+
+    def shifted(self, offset: int) -> Diagnostic:
+        """The same finding ``offset`` characters further on: found in a line, placed in its file."""
+        fixes = tuple(fix.shifted(offset) for fix in self.fixes)
+        return Diagnostic(self.code, self.severity, self.span.shifted(offset), self.message, self.mint_error, fixes)
 
 
 @dataclass(frozen=True, slots=True)

@@ -18,13 +18,12 @@ def _fold(first: int, last: int) -> Iterator[types.FoldingRange]:
 
 
 def folding_ranges(snapshot: Snapshot) -> Iterator[types.FoldingRange]:
-    positions = snapshot.positions
     for block in snapshot.model.structures[snapshot.unit].blocks:
         if block.closer_line is None:
             continue
         opener, closer = block.opener_line - 1, block.closer_line - 1
-        if block.middle is not None:
-            middle = positions.position(block.middle.span.start).line
+        if block.middle_line is not None:
+            middle = block.middle_line - 1
             yield from _fold(opener, middle - 1)
             yield from _fold(middle, closer - 1)
         else:

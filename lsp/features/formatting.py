@@ -31,8 +31,8 @@ def _depths(snapshot: Snapshot) -> list[int]:
         if first < last:
             change[first] += 1
             change[last] -= 1
-        if block.middle is not None:
-            middle = positions.position(block.middle.span.start).line
+        if block.middle_line is not None:
+            middle = block.middle_line - 1
             change[middle] -= 1
             change[middle + 1] += 1
     depths, depth = [], 0
@@ -46,10 +46,10 @@ def _fixed_lines(snapshot: Snapshot) -> set[int]:
     """Lines whose indentation is not the formatter's: labels and continuations of logical lines."""
     positions = snapshot.positions
     fixed: set[int] = set()
-    for line in snapshot.document.lines:
-        first = line.number - 1
-        fixed.update(range(first + 1, positions.position(line.span.end).line + 1))
-        if line.label is not None and positions.position(line.label.span.start).line == first:
+    for line in snapshot.document.placed:
+        first, syntax = line.number - 1, line.syntax
+        fixed.update(range(first + 1, positions.position(line.span(syntax.span).end).line + 1))
+        if syntax.label is not None and positions.position(line.span(syntax.label.span).start).line == first:
             fixed.add(first)
     return fixed
 

@@ -1,4 +1,10 @@
-"""Runs the parser's, the block matcher's and every rule's findings together."""
+"""Runs the parser's, the block matcher's and every rule's findings together.
+
+The line rules run once per line syntax, unit, controller and dialect: after an
+edit only the changed lines are checked again, and the whole-application rules
+(declarations, flow, limits, unused names ...) run over the index the model
+already holds.
+"""
 
 from __future__ import annotations
 
@@ -7,11 +13,16 @@ from dataclasses import dataclass
 
 from mintlang.allocation import without_collector
 from mintlang.analysis.findings import Finding
-from mintlang.analysis.rules import RULES
-from mintlang.analysis.traversal import gather
+from mintlang.analysis.rules import RULES, Rule
+from mintlang.analysis.traversal import LineScope, gather
+from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Diagnostic
+from mintlang.dialect import Dialect
+from mintlang.keyworddb.model import Controller
+from mintlang.semantic.index import LineFacts
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
+from mintlang.syntax import nodes as n
 
 
 @dataclass(frozen=True, slots=True)
@@ -28,6 +39,41 @@ def _selected(code: str, select: Iterable[str] | None, ignore: Iterable[str]) ->
     return select is None or any(code.startswith(prefix) for prefix in select)
 
 
+_LineKey = tuple[Unit, int, Controller, Dialect]  # id() of the line syntax, which the entry keeps alive
+_line_findings: dict[_LineKey, tuple[n.LineSyntax, tuple[Diagnostic, ...]]] = {}
+_CACHE_LIMIT = 100_000
+
+
+def clear_cache() -> None:
+    _line_findings.clear()
+
+
+def _rules_for(dialect: Dialect) -> tuple[tuple[Rule, ...], tuple[Rule, ...]]:
+    """The rules that read one line, and those that read the whole application."""
+    rules = [rule for rule in RULES if dialect in rule.dialects]
+    return tuple(rule for rule in rules if rule.each_line), tuple(rule for rule in rules if rule.check)
+
+
+def _findings_of_line(
+    unit: Unit, syntax: n.LineSyntax, facts: LineFacts, controller: ControllerProfile, dialect: Dialect
+) -> tuple[Diagnostic, ...]:
+    """What the line rules find in one line, at its own offsets: computed once per line syntax."""
+    key = (unit, id(syntax), controller.controller, dialect)
+    cached = _line_findings.get(key)
+    if cached is not None:
+        return cached[1]
+    scope = LineScope(unit, syntax, facts, controller, dialect)
+    found = tuple(
+        finding.diagnostic
+        for rule in _rules_for(dialect)[0]
+        for finding in rule.each_line(scope)  # type: ignore[misc]
+    )
+    if len(_line_findings) >= _CACHE_LIMIT:
+        _line_findings.clear()
+    _line_findings[key] = (syntax, found)
+    return found
+
+
 @without_collector
 def analyse(model: SemanticModel, *, select: Iterable[str] | None = None, ignore: Iterable[str] = ()) -> Analysis:
     """All diagnostics of an application, per file, sorted by position."""
@@ -37,10 +83,14 @@ def analyse(model: SemanticModel, *, select: Iterable[str] | None = None, ignore
     for unit, document in model.documents():
         findings.extend(Finding(unit, diagnostic) for diagnostic in document.diagnostics)
         findings.extend(Finding(unit, diagnostic) for diagnostic in model.structures[unit].diagnostics)
+    dialect, controller = model.program.dialect, model.controller
+    for unit, line, facts in model.lines:
+        found = _findings_of_line(unit, line.syntax, facts, controller, dialect)
+        if found:
+            findings.extend(Finding(unit, diagnostic.shifted(line.origin)) for diagnostic in found)
     facts = gather(model)
-    for rule in RULES:
-        if model.program.dialect in rule.dialects:
-            findings.extend(rule.check(facts))
+    for rule in _rules_for(dialect)[1]:
+        findings.extend(rule.check(facts))  # type: ignore[misc]
     per_unit: dict[Unit, list[Diagnostic]] = {Unit.PROGRAM: [], Unit.CONFIGURATION: []}
     seen: set[tuple[Unit, str, int, int]] = set()
     for finding in findings:

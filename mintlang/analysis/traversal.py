@@ -1,33 +1,71 @@
-"""What the rules read: the semantic model and its syntax index.
+"""What the rules read: the semantic model and the index of each of its lines.
 
-The index is built once with the model (``mintlang.semantic.index``); the
-rules only filter it.
+The index is built once per line with the model (``mintlang.semantic.index``);
+the rules only filter it. Its nodes are the lines' position-free syntax: a rule
+that reads the whole application (``Facts``) places what it reports with
+``PlacedLine.span``; a rule that reads one line at a time (``LineScope``)
+reports at the line's own offsets, and the analyser keeps its findings for as
+long as the line's syntax does not change.
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import dataclass
 
-from mintlang.semantic.index import KeywordUse, NameUse, Use
-from mintlang.semantic.model import SemanticModel
+from mintlang.controllers import ControllerProfile
+from mintlang.dialect import Dialect
+from mintlang.semantic.index import KeywordUse, LineFacts, NameUse, Use
+from mintlang.semantic.model import IndexedLine, SemanticModel
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
-__all__ = ["Facts", "KeywordUse", "Use", "gather"]
+__all__ = ["Facts", "KeywordUse", "LineScope", "Use", "gather"]
+
+
+@dataclass(frozen=True, slots=True)
+class LineScope:
+    """One logical line of one file, with what a rule may know beside it: the controller and the dialect."""
+
+    unit: Unit
+    syntax: n.LineSyntax
+    facts: LineFacts
+    controller: ControllerProfile
+    dialect: Dialect  # the program's
 
 
 @dataclass(frozen=True, slots=True)
 class Facts:
-    """The model and the parts of its index the rules ask for."""
+    """The model and its lines, with the lists the rules ask for."""
 
     model: SemanticModel
-    statements: tuple[tuple[Unit, n.Line, n.Statement], ...]
-    keyword_uses: tuple[KeywordUse, ...]
-    elements: tuple[tuple[Unit, n.ElementRef], ...]
-    names: tuple[tuple[Unit, n.Name], ...]  # user words written, read, or standing alone
+    lines: tuple[IndexedLine, ...]
+
+    def statements(self) -> Iterator[tuple[Unit, n.PlacedLine, n.Statement]]:
+        """Every statement, IF .. THEN bodies included, in compile order."""
+        for unit, line, facts in self.lines:
+            for statement in facts.statements:
+                yield unit, line, statement
+
+    def keyword_uses(self) -> Iterator[tuple[n.PlacedLine, KeywordUse]]:
+        for _, line, facts in self.lines:
+            for use in facts.keyword_uses:
+                yield line, use
+
+    def elements(self) -> Iterator[tuple[Unit, n.PlacedLine, n.ElementRef]]:
+        """Array elements read or written."""
+        for unit, line, facts in self.lines:
+            for element in facts.elements:
+                yield unit, line, element
+
+    def names(self) -> Iterator[tuple[Unit, n.PlacedLine, n.Name]]:
+        """User words written, read, or standing alone (not those a DIM declares)."""
+        declare = NameUse.DECLARE
+        for unit, line, facts in self.lines:
+            for event in facts.names:
+                if event.use is not declare:
+                    yield unit, line, event.name
 
 
 def gather(model: SemanticModel) -> Facts:
-    index = model.index
-    names = tuple((event.unit, event.name) for event in index.names if event.use is not NameUse.DECLARE)
-    return Facts(model, index.statements, index.keyword_uses, index.elements, names)
+    return Facts(model, model.lines)

@@ -46,12 +46,16 @@ _BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.For, n.While, n.Until, n.S
 
 @dataclass(frozen=True, slots=True)
 class Block:
-    """A matched (or unclosed) block; the LSP folds it, the runtime compiles its jumps."""
+    """A matched (or unclosed) block; the LSP folds it, the runtime compiles its jumps.
+
+    The statements are those of the lines' position-free syntax (``Document.placed``).
+    """
 
     kind: BlockKind
     opener: n.Statement
     opener_line: int
     middle: n.Statement | None  # the ELSE of an IF block
+    middle_line: int | None
     closer: n.Statement | None  # None when never closed
     closer_line: int | None
 
@@ -67,7 +71,9 @@ class _Open:
     kind: BlockKind
     opener: n.Statement
     line: int
+    origin: int  # of the opener's line: where its diagnostics go
     middle: n.Statement | None = None
+    middle_line: int | None = None
 
 
 _OPENING_WORDS = {"REPEAT": BlockKind.REPEAT, "LOOP": BlockKind.LOOP}
@@ -100,15 +106,15 @@ class _Matcher:
         self.blocks: list[Block] = []
         self.diagnostics: list[Diagnostic] = []
 
-    def statement(self, statement: n.Statement, line: int) -> None:
+    def statement(self, statement: n.Statement, line: n.PlacedLine) -> None:
         if type(statement) not in _BLOCK_STATEMENTS:
             return  # most statements open and close nothing
         kind = _opener_kind(statement)
         if kind is not None:
-            self.stack.append(_Open(kind, statement, line))
+            self.stack.append(_Open(kind, statement, line.number, line.origin))
             problem = _nesting_problem(self.stack, self.limits)
             if problem is not None:
-                self.diagnostics.append(_error(2015, statement.span, problem))
+                self.diagnostics.append(_error(2015, line.span(statement.span), problem))
         elif isinstance(statement, n.Until) or (isinstance(statement, n.SyntaxError_) and statement.closes == "UNTIL"):
             self.close(BlockKind.REPEAT, statement, line, 2013, "UNTIL without REPEAT")
         elif isinstance(statement, n.SyntaxError_) and statement.closes in _CLOSERS:
@@ -117,39 +123,42 @@ class _Matcher:
         elif isinstance(statement, n.BlockWord) and statement.word == "ELSE":
             top = self.stack[-1] if self.stack else None
             if top is None or top.kind is not BlockKind.IF or top.middle is not None:
-                self.diagnostics.append(_error(2011, statement.span, "ELSE without IF .. DO"))
+                self.diagnostics.append(_error(2011, line.span(statement.span), "ELSE without IF .. DO"))
             else:
-                top.middle = statement
+                top.middle, top.middle_line = statement, line.number
         elif isinstance(statement, n.BlockWord) and statement.word in _CLOSERS:
             expected, code, message = _CLOSERS[statement.word]
             self.close(expected, statement, line, code, message)
 
-    def close(self, kind: BlockKind, closer: n.Statement, line: int, code: int, message: str) -> None:
+    def close(self, kind: BlockKind, closer: n.Statement, line: n.PlacedLine, code: int, message: str) -> None:
         stack = self.stack
         if not stack or stack[-1].kind is not kind:
             if stack:
                 message += f" (the innermost open block is {stack[-1].kind.value} on line {stack[-1].line})"
-            self.diagnostics.append(_error(code, closer.span, message))
+            self.diagnostics.append(_error(code, line.span(closer.span), message))
             return
         top = stack.pop()
-        self.blocks.append(Block(kind, top.opener, top.line, top.middle, closer, line))
+        self.blocks.append(Block(kind, top.opener, top.line, top.middle, top.middle_line, closer, line.number))
 
     def finish(self) -> Structure:
         for unclosed in self.stack:
-            self.blocks.append(Block(unclosed.kind, unclosed.opener, unclosed.line, unclosed.middle, None, None))
+            opener = unclosed.opener
+            self.blocks.append(
+                Block(unclosed.kind, opener, unclosed.line, unclosed.middle, unclosed.middle_line, None, None)
+            )
             word = _CLOSING_WORD[unclosed.kind]
             detail = f"this {unclosed.kind.value} block is never closed with {word}"
-            self.diagnostics.append(own("W110", unclosed.opener.span, detail))
-        self.blocks.sort(key=lambda block: block.opener.span.start)
+            self.diagnostics.append(own("W110", opener.span.shifted(unclosed.origin), detail))
+        self.blocks.sort(key=lambda block: (block.opener_line, block.opener.span.start))
         return Structure(tuple(self.blocks), tuple(self.diagnostics))
 
 
-def match_blocks(lines: tuple[n.Line, ...], controller: ControllerProfile) -> Structure:
+def match_blocks(lines: tuple[n.PlacedLine, ...], controller: ControllerProfile) -> Structure:
     """Match the blocks of one file and check the nesting limits."""
     matcher = _Matcher(controller.nesting)
     for line in lines:
-        for statement in n.flatten_statements(line.statements):
-            matcher.statement(statement, line.number)
+        for statement in n.flatten_statements(line.syntax.statements):
+            matcher.statement(statement, line)
     return matcher.finish()
 
 

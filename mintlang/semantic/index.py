@@ -4,6 +4,11 @@ The symbol table, the analyser's rules and the tools all need the same lists:
 every statement, every keyword and how it is used, every array element and
 every user name with what happens to it. Walking the trees once and keeping
 the lists is what keeps a check fast enough for every keystroke.
+
+The analyser reads them per line (``line_facts``), at the line's relative
+offsets, so a line the parser gave back unchanged after an edit is not walked
+again; the tools read them for the whole application with offsets into the
+files (``index_syntax``).
 """
 
 from __future__ import annotations
@@ -65,15 +70,23 @@ class SyntaxIndex:
 _CONSTANTS = frozenset({n.Number, n.CharConstant, n.ConstantRef, n.StringLiteral, type(None)})
 
 
+@dataclass(frozen=True, slots=True)
+class LineFacts:
+    """The index of one line: its statements (IF .. THEN bodies included), keywords, elements and names."""
+
+    statements: tuple[n.Statement, ...]
+    keyword_uses: tuple[KeywordUse, ...]
+    elements: tuple[n.ElementRef, ...]
+    names: tuple[NameEvent, ...]
+
+
 class _Walker:
     def __init__(self) -> None:
-        self.statements: list[tuple[Unit, n.Line, n.Statement]] = []
         self.uses: list[KeywordUse] = []
         self.elements: list[tuple[Unit, n.ElementRef]] = []
         self.names: list[NameEvent] = []
 
-    def statement(self, unit: Unit, line: n.Line, statement: n.Statement) -> None:
-        self.statements.append((unit, line, statement))
+    def statement(self, unit: Unit, statement: n.Statement) -> None:
         kind = type(statement)  # exact-type dispatch: this runs for every statement of every check
         if kind is n.KeywordStatement:
             keyword = statement.keyword  # type: ignore[union-attr]
@@ -119,8 +132,37 @@ class _Walker:
 def index_syntax(documents: Iterable[tuple[Unit, Document]]) -> SyntaxIndex:
     """Walk the documents (configuration first) once."""
     walker = _Walker()
+    statements: list[tuple[Unit, n.Line, n.Statement]] = []
     for unit, document in documents:
         for line in document.lines:
             for statement in n.flatten_statements(line.statements):
-                walker.statement(unit, line, statement)
-    return SyntaxIndex(tuple(walker.statements), tuple(walker.uses), tuple(walker.elements), tuple(walker.names))
+                statements.append((unit, line, statement))
+                walker.statement(unit, statement)
+    return SyntaxIndex(tuple(statements), tuple(walker.uses), tuple(walker.elements), tuple(walker.names))
+
+
+_facts: dict[tuple[Unit, int], tuple[n.LineSyntax, LineFacts]] = {}  # by id(syntax), which the entry keeps alive
+_CACHE_LIMIT = 100_000
+
+
+def clear_cache() -> None:
+    _facts.clear()
+
+
+def line_facts(unit: Unit, syntax: n.LineSyntax) -> LineFacts:
+    """The index of one line of ``unit``, walked once per line syntax (the parser shares unchanged ones)."""
+    key = (unit, id(syntax))
+    cached = _facts.get(key)
+    if cached is not None:
+        return cached[1]
+    walker = _Walker()
+    statements = n.flatten_statements(syntax.statements)
+    for statement in statements:
+        walker.statement(unit, statement)
+    facts = LineFacts(
+        statements, tuple(walker.uses), tuple(element for _, element in walker.elements), tuple(walker.names)
+    )
+    if len(_facts) >= _CACHE_LIMIT:
+        _facts.clear()
+    _facts[key] = (syntax, facts)
+    return facts

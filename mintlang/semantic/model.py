@@ -9,24 +9,40 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
+from functools import cached_property
 
 from mintlang.allocation import without_collector
 from mintlang.controllers import ControllerProfile, profile
 from mintlang.keyworddb.model import Controller
 from mintlang.semantic.blocks import Structure, match_blocks
-from mintlang.semantic.index import SyntaxIndex, index_syntax
+from mintlang.semantic.index import LineFacts, SyntaxIndex, index_syntax, line_facts
 from mintlang.semantic.symbols import SymbolTable, Unit, build_symbols
+from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
 
+IndexedLine = tuple[Unit, n.PlacedLine, LineFacts]
 
-@dataclass(frozen=True, slots=True)
+
+@dataclass(frozen=True)  # not slotted: ``index`` is computed on first use
 class SemanticModel:
+    """Names and blocks resolved.
+
+    ``lines`` and ``structures`` hold the position-free syntax of each line
+    (``PlacedLine.span`` places it), which the analyser reads; ``index`` the
+    same facts at offsets into the files, made when a tool first asks.
+    """
+
     program: Document
     configuration: Document | None
     controller: ControllerProfile
     symbols: SymbolTable
     structures: Mapping[Unit, Structure]
-    index: SyntaxIndex  # every statement, keyword use, element and name, in compile order
+    lines: tuple[IndexedLine, ...]  # every logical line of both files, in compile order, with its index
+
+    @cached_property
+    def index(self) -> SyntaxIndex:
+        """Every statement, keyword use, element and name, in compile order."""
+        return index_syntax(list(self.documents()))
 
     def document(self, unit: Unit) -> Document:
         """The file of ``unit``: something found in the configuration means there is one."""
@@ -50,10 +66,14 @@ def build_model(
 ) -> SemanticModel:
     """Resolve names and blocks of a program and its optional configuration file."""
     target = profile(controller)
-    structures = {Unit.PROGRAM: match_blocks(program.lines, target)}
+    structures = {Unit.PROGRAM: match_blocks(program.placed, target)}
     if configuration is not None:
-        structures[Unit.CONFIGURATION] = match_blocks(configuration.lines, target)
+        structures[Unit.CONFIGURATION] = match_blocks(configuration.placed, target)
     documents = [(Unit.CONFIGURATION, configuration)] if configuration is not None else []
-    index = index_syntax([*documents, (Unit.PROGRAM, program)])
-    symbols = build_symbols(program, configuration, index)
-    return SemanticModel(program, configuration, target, symbols, structures, index)
+    lines = tuple(
+        (unit, placed, line_facts(unit, placed.syntax))
+        for unit, document in [*documents, (Unit.PROGRAM, program)]
+        for placed in document.placed
+    )
+    symbols = build_symbols(program, configuration, lines)
+    return SemanticModel(program, configuration, target, symbols, structures, lines)

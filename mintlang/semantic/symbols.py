@@ -10,14 +10,14 @@ already declared when the compiler reached it.
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from enum import StrEnum
 
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.records import node
-from mintlang.semantic.index import NameUse, SyntaxIndex
+from mintlang.semantic.index import LineFacts, NameUse
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
@@ -107,21 +107,22 @@ class _Collector:
                 spelling = document.source[expansion.span.start : expansion.span.end]
                 symbol.references.append(Occurrence(unit, expansion.span, spelling, True))
         labels = self.labels[unit]
-        for line in document.lines:
-            if line.label is not None:
-                self._label(labels, line.label, unit).definitions.append(
-                    Occurrence(unit, line.label.span, line.label.text, True)
+        for line in document.placed:
+            label = line.syntax.label
+            if label is not None:
+                self._label(labels, label, unit).definitions.append(
+                    Occurrence(unit, line.span(label.span), label.text, True)
                 )
 
-    def jump(self, unit: Unit, label: n.Name) -> None:
+    def jump(self, unit: Unit, label: n.Name, span: Span) -> None:
         labels = self.labels[unit]
         defined = label.identity in labels and bool(labels[label.identity].definitions)
-        self._label(labels, label, unit).references.append(Occurrence(unit, label.span, label.text, defined))
+        self._label(labels, label, unit).references.append(Occurrence(unit, span, label.text, defined))
 
     def _label(self, labels: dict[str, Symbol], name: n.Name, unit: Unit) -> Symbol:
         return labels.setdefault(name.identity, Symbol(SymbolKind.LABEL, name.identity, unit))
 
-    def declare(self, name: n.Name, unit: Unit, size: n.Expression | None, *, array: bool = False) -> None:
+    def declare(self, name: n.Name, span: Span, unit: Unit, size: n.Expression | None, *, array: bool = False) -> None:
         """A DIM, or in v3 the first write; ``array`` for an implicit v3 array written as name(i)."""
         kind = SymbolKind.ARRAY if size is not None or array else SymbolKind.VARIABLE
         symbol = self.variables.get(name.identity)
@@ -132,32 +133,41 @@ class _Collector:
             symbol.kind = SymbolKind.ARRAY
         if isinstance(size, n.Number) and size.value == int(size.value):
             symbol.array_size = int(size.value)
-        symbol.definitions.append(Occurrence(unit, name.span, name.text, declared, is_write=True))
+        symbol.definitions.append(Occurrence(unit, span, name.text, declared, is_write=True))
 
-    def use(self, name: n.Name, unit: Unit, *, write: bool, element: bool) -> None:
+    def use(self, name: n.Name, span: Span, unit: Unit, *, write: bool, element: bool) -> None:
         symbol = self.variables.get(name.identity)
         if symbol is None and write and self.implicit_declarations:
-            self.declare(name, unit, None, array=element)
+            self.declare(name, span, unit, None, array=element)
             return
         declared = symbol is not None and bool(symbol.definitions)
         if symbol is None:
             kind = SymbolKind.ARRAY if element else SymbolKind.VARIABLE
             symbol = self.variables[name.identity] = Symbol(kind, name.identity, unit)
-        symbol.references.append(Occurrence(unit, name.span, name.text, declared, is_write=write))
+        symbol.references.append(Occurrence(unit, span, name.text, declared, is_write=write))
 
 
-def build_symbols(program: Document, configuration: Document | None, index: SyntaxIndex) -> SymbolTable:
-    """The symbol table of an application from its documents and their syntax index."""
+def build_symbols(
+    program: Document, configuration: Document | None, lines: Iterable[tuple[Unit, n.PlacedLine, LineFacts]]
+) -> SymbolTable:
+    """The symbol table of an application from its documents and the index of their lines, in compile order."""
     collector = _Collector(program.dialect)
     if configuration is not None:
         collector.macros_and_labels(configuration, Unit.CONFIGURATION)
     collector.macros_and_labels(program, Unit.PROGRAM)
-    for event in index.names:
-        if event.use is NameUse.DECLARE:
-            collector.declare(event.name, event.unit, event.size)
-        elif event.use is not NameUse.BARE:
-            collector.use(event.name, event.unit, write=event.use is NameUse.WRITE, element=event.element)
-    for unit, _, statement in index.statements:
-        if isinstance(statement, n.Jump):
-            collector.jump(unit, statement.label)
+    jumps: list[tuple[Unit, n.Name, Span]] = []
+    declare, bare = NameUse.DECLARE, NameUse.BARE
+    for unit, line, facts in lines:
+        for event in facts.names:
+            kind = event.use
+            if kind is declare:
+                collector.declare(event.name, line.span(event.name.span), unit, event.size)
+            elif kind is not bare:
+                span = line.span(event.name.span)
+                collector.use(event.name, span, unit, write=kind is NameUse.WRITE, element=event.element)
+        for statement in facts.statements:
+            if type(statement) is n.Jump:
+                jumps.append((unit, statement.label, line.span(statement.label.span)))
+    for unit, label, span in jumps:
+        collector.jump(unit, label, span)
     return SymbolTable(collector.variables, collector.macros, collector.labels)

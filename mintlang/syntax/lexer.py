@@ -276,15 +276,6 @@ def clear_cache() -> None:
     _lex_line_cached.cache_clear()
 
 
-def _relocate(diagnostic: Diagnostic, offset: int) -> Diagnostic:
-    span = Span(diagnostic.span.start + offset, diagnostic.span.end + offset)
-    fixes = tuple(
-        Fix(fix.title, tuple(Edit(Span(e.span.start + offset, e.span.end + offset), e.text) for e in fix.edits))
-        for fix in diagnostic.fixes
-    )
-    return Diagnostic(diagnostic.code, diagnostic.severity, span, diagnostic.message, diagnostic.mint_error, fixes)
-
-
 class TokenStream(Sequence[Token]):
     """All tokens of a source with absolute offsets, made on first use.
 
@@ -340,7 +331,7 @@ def lex(source: str, dialect: Dialect = Dialect.V4) -> LexResult:
         lexed = lex_line(physical, dialect)
         lines.append((offset, lexed))
         if lexed.issues:
-            issues.extend(_relocate(issue, offset) for issue in lexed.issues)
+            issues.extend(issue.shifted(offset) for issue in lexed.issues)
         offset += lexed.length
     frozen = tuple(lines)
     return LexResult(TokenStream(frozen), tuple(issues), frozen)

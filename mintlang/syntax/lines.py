@@ -9,11 +9,11 @@ the macro's name.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, MutableMapping
+from collections.abc import Iterator, Mapping, MutableMapping
 from dataclasses import dataclass
 
 from mintlang.diagnostics import Span
-from mintlang.syntax.lexer import LexResult
+from mintlang.syntax.lexer import LexedLine, LexResult
 from mintlang.syntax.nodes import identity
 from mintlang.syntax.tokens import TokenKind
 
@@ -30,6 +30,10 @@ class MacroDefinition:
     body: tuple[tuple[TokenKind, str], ...]
     body_span: Span | None
 
+    def shifted(self, offset: int) -> MacroDefinition:
+        body_span = self.body_span.shifted(offset) if self.body_span is not None else None
+        return MacroDefinition(self.name, self.name_span.shifted(offset), self.body, body_span)
+
 
 @dataclass(frozen=True, slots=True)
 class Expansion:
@@ -38,10 +42,61 @@ class Expansion:
     span: Span
     macro: str  # identity of the macro
 
+    def shifted(self, offset: int) -> Expansion:
+        return Expansion(self.span.shifted(offset), self.macro)
+
+
+PhysicalLine = tuple[int, LexedLine]  # a lexed line and its offset in the source
+
+
+@dataclass(frozen=True, slots=True)
+class LineGroup:
+    """The physical lines of one logical line: one, or several for a DIM list continued after commas."""
+
+    number: int  # 1-based physical line where it starts
+    physical: tuple[PhysicalLine, ...]
+
+    @property
+    def origin(self) -> int:
+        return self.physical[0][0]
+
+    @property
+    def text(self) -> str:
+        """Everything the line's syntax depends on, its indentation included."""
+        if len(self.physical) == 1:
+            return self.physical[0][1].text
+        return "".join(line.text for _, line in self.physical)
+
+    def names(self) -> Iterator[str]:
+        """The user words written on the line: the ones a macro may stand for."""
+        for _, line in self.physical:
+            if _NAME in line.kinds:
+                yield from (text for kind, text in zip(line.kinds, line.texts, strict=True) if kind is _NAME)
+
+    def tokens(self) -> LogicalLine:
+        """The significant tokens, at offsets relative to the start of the first physical line."""
+        origin = self.origin
+        kinds: list[TokenKind] = []
+        texts: list[str] = []
+        starts: list[int] = []
+        ends: list[int] = []
+        end = 0
+        for offset, line in self.physical:
+            shift = offset - origin
+            kinds.extend(line.kinds)
+            texts.extend(line.texts)
+            starts.extend(start + shift for start in line.starts)
+            ends.extend(stop + shift for stop in line.ends)
+            end = shift + line.content_end if line.comment_start >= 0 else ends[-1]  # a REM belongs to the line
+        return LogicalLine(self.number, starts[0], end, kinds, texts, starts, ends, [False] * len(kinds))
+
 
 @dataclass(slots=True)
 class LogicalLine:
-    """The significant tokens of one logical line, as parallel arrays the grammar reads."""
+    """The significant tokens of one logical line, as parallel arrays the grammar reads.
+
+    Offsets are relative to the start of the line's first physical line.
+    """
 
     number: int  # 1-based physical line where it starts
     start: int  # offset of its first character
@@ -64,35 +119,27 @@ def _is_statement_start(kinds: list[TokenKind], index: int) -> bool:
     return index == 0 or kinds[index - 1] in (_K.COLON, _K.LABEL, _K.THEN)
 
 
-def logical_lines(lexed: LexResult) -> list[LogicalLine]:
-    """Group significant tokens into logical lines (DIM lists continue after a trailing comma)."""
-    lines: list[LogicalLine] = []
-    current: LogicalLine | None = None
+def logical_lines(lexed: LexResult) -> list[LineGroup]:
+    """Group the physical lines that hold tokens into logical lines (DIM lists continue after a trailing comma)."""
+    groups: list[LineGroup] = []
+    pending: list[PhysicalLine] = []
+    pending_number = 0
+    has_dim = False
     comma, dim = _K.COMMA, _K.DIM
-    for number, (offset, line) in enumerate(lexed.lines, start=1):
-        kinds = line.kinds
+    for number, physical in enumerate(lexed.lines, start=1):
+        kinds = physical[1].kinds
         if not kinds:
             continue
-        starts = [start + offset for start in line.starts]
-        ends = [end + offset for end in line.ends]
-        end = offset + line.content_end if line.comment_start >= 0 else ends[-1]  # a REM belongs to the line
-        if current is None:
-            current = LogicalLine(
-                number, starts[0], end, list(kinds), list(line.texts), starts, ends, [False] * len(kinds)
-            )
-        else:
-            current.kinds.extend(kinds)
-            current.texts.extend(line.texts)
-            current.starts.extend(starts)
-            current.ends.extend(ends)
-            current.expanded.extend([False] * len(kinds))
-            current.end = end
-        if not (kinds[-1] is comma and dim in current.kinds):
-            lines.append(current)
-            current = None
-    if current is not None:
-        lines.append(current)
-    return lines
+        if not pending:
+            pending_number = number
+        pending.append(physical)
+        has_dim = has_dim or dim in kinds
+        if not (kinds[-1] is comma and has_dim):
+            groups.append(LineGroup(pending_number, tuple(pending)))
+            pending, has_dim = [], False
+    if pending:
+        groups.append(LineGroup(pending_number, tuple(pending)))
+    return groups
 
 
 def take_macro_body(line: LogicalLine) -> list[MacroDefinition]:

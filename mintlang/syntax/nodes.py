@@ -10,10 +10,12 @@ Names keep their spelling; ``identity`` gives the controller's view of a name
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
+from typing import TypeVar
 
 from mintlang.diagnostics import Span
 from mintlang.records import node
 
+T = TypeVar("T")
 SIGNIFICANT_CHARACTERS = 10  # names: only the first ten characters count (v4 guide 3.2.5, 3.9)
 
 
@@ -358,6 +360,65 @@ class Line:
     number: int
     label: Name | None
     statements: tuple[Statement, ...]
+
+
+@node
+class LineSyntax:
+    """One logical line as the parser sees it, wherever it stands.
+
+    Its spans are relative to the start of its first physical line, so a line
+    whose text did not change parses to the same ``LineSyntax`` after an edit
+    above it: the language server re-parses, re-indexes and re-checks only what
+    changed.
+    """
+
+    text: str  # from the start of its first physical line: what ``span`` and the spans inside index
+    span: Span
+    label: Name | None
+    statements: tuple[Statement, ...]
+
+
+@node
+class PlacedLine:
+    """A ``LineSyntax`` at its place in a file: ``origin`` is the offset of its first physical line."""
+
+    origin: int
+    number: int  # 1-based physical line it starts on
+    syntax: LineSyntax
+
+    def span(self, relative: Span) -> Span:
+        """Where ``relative``, a span of this line's syntax, is in the file."""
+        origin = self.origin
+        return _new(Span, (relative.start + origin, relative.end + origin))
+
+    def absolute(self) -> Line:
+        """The line with every span an offset into its file."""
+        syntax = relocate(self.syntax, self.origin)
+        return Line(syntax.span, self.number, syntax.label, syntax.statements)
+
+
+_new = tuple.__new__  # builds Span without its Python-level constructor
+_FIELDS: dict[type, tuple[str, ...]] = {}
+
+
+def _node_fields(kind: type) -> tuple[str, ...] | None:
+    names = _FIELDS.get(kind)
+    if names is None and hasattr(kind, "__dataclass_fields__"):
+        names = _FIELDS[kind] = tuple(kind.__dataclass_fields__)
+    return names
+
+
+def relocate(node: T, offset: int) -> T:
+    """A copy of ``node`` with every span ``offset`` characters further on."""
+    kind = type(node)
+    if kind is Span:
+        return _new(Span, (node.start + offset, node.end + offset))  # type: ignore[attr-defined, return-value]
+    if kind is tuple:
+        return tuple([relocate(item, offset) for item in node])  # type: ignore[attr-defined, return-value]
+    names = _node_fields(kind)
+    if names is None:
+        return node  # a text, a number, a flag or None
+    return kind(*[relocate(getattr(node, name), offset) for name in names])
 
 
 def walk_statements(statements: tuple[Statement, ...]) -> Iterator[Statement]:

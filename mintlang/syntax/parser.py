@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import cached_property
 
 from mintlang.allocation import without_collector
 from mintlang.codes import mint_error
@@ -25,6 +26,7 @@ from mintlang.syntax.lexer import TokenStream, lex
 from mintlang.syntax.lexer import clear_cache as clear_lex_cache
 from mintlang.syntax.lines import (
     Expansion,
+    LineGroup,
     LogicalLine,
     MacroDefinition,
     expand_macros,
@@ -32,6 +34,7 @@ from mintlang.syntax.lines import (
     register,
     take_macro_body,
 )
+from mintlang.syntax.nodes import identity
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
@@ -41,29 +44,53 @@ _UNREADABLE = "the line cannot be read"
 _OPERATORS = frozenset({_K.AND, _K.OR, _K.XOR, _K.NOT, _K.MOD})
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True)  # not slotted: ``lines`` is computed on first use
 class Document:
-    """A parsed source: the lossless token stream and the syntax tree of its lines.
+    """A parsed source: the lossless token stream and the syntax of its lines.
 
-    ``macros`` holds every macro visible at the end of the file (those of a
-    configuration passed in included); ``expansions`` where macros were used.
+    ``placed`` holds each logical line's position-free syntax at its place;
+    ``lines`` the same lines with spans that are offsets into the source, made
+    when a tool first asks for them (the analyser never does). ``macros`` holds
+    every macro visible at the end of the file (those of a configuration passed
+    in included); ``expansions`` where macros were used.
     """
 
     source: str
     dialect: Dialect
     tokens: TokenStream  # lossless: the texts join back to the source
-    lines: tuple[n.Line, ...]
+    placed: tuple[n.PlacedLine, ...]
     diagnostics: tuple[Diagnostic, ...]
     macros: Mapping[str, MacroDefinition]
     definitions: tuple[MacroDefinition, ...]  # the macros this file defines, in order
     expansions: tuple[Expansion, ...]
     line_index: LineIndex
 
+    @cached_property
+    def lines(self) -> tuple[n.Line, ...]:
+        return tuple(line.absolute() for line in self.placed)
+
+
+@dataclass(frozen=True, slots=True)
+class _ParsedLine:
+    """What parsing one logical line gives, at offsets relative to its first physical line."""
+
+    syntax: n.LineSyntax
+    diagnostics: tuple[Diagnostic, ...]
+    definitions: tuple[MacroDefinition, ...]
+    expansions: tuple[Expansion, ...]
+
+
+_MacroBody = tuple[tuple[TokenKind, str], ...]
+_ParseKey = tuple[Dialect, Controller | None, str, tuple[_MacroBody | None, ...]]
+_parsed: dict[_ParseKey, _ParsedLine] = {}
+_CACHE_LIMIT = 100_000
+
 
 def clear_caches() -> None:
-    """Forget lexed lines and parsed token sequences (benchmarks measure cold runs with this)."""
+    """Forget lexed and parsed lines (benchmarks measure cold runs with this)."""
     clear_lex_cache()
     clear_parse_cache()
+    _parsed.clear()
 
 
 @without_collector
@@ -77,30 +104,42 @@ def parse(
     """Parse ``source``; ``macros`` are those already defined (by the configuration file).
 
     ``controller`` decides the abbreviations two keywords share (HP: HOMEPOS or
-    HANDLERPENDING); without one they resolve as conflicts.json says.
+    HANDLERPENDING); without one they resolve as conflicts.json says. A logical
+    line is parsed once per text and macro context: an edit re-parses only the
+    lines it touched.
     """
     dialect = Dialect(dialect)
-    words = vocabulary(dialect, Controller(controller) if controller is not None else None)
+    target = Controller(controller) if controller is not None else None
     lexed = lex(source, dialect)
     diagnostics = list(lexed.issues)
     visible: dict[str, MacroDefinition] = dict(macros or {})
     definitions: list[MacroDefinition] = []
     expansions: list[Expansion] = []
-    lines: list[n.Line] = []
-    define = TokenKind.DEFINE
-    for logical in logical_lines(lexed):
-        defined = take_macro_body(logical) if define in logical.kinds else None
-        if visible:
-            expand_macros(logical, visible, expansions)
-        if defined:
+    placed: list[n.PlacedLine] = []
+    for group in logical_lines(lexed):
+        context = tuple(_body(visible.get(identity(name))) for name in group.names()) if visible else ()
+        key = (dialect, target, group.text, context)
+        parsed = _parsed.get(key)
+        if parsed is None:
+            parsed = _parse_group(group, visible, vocabulary(dialect, target), dialect)
+            if len(_parsed) >= _CACHE_LIMIT:
+                _parsed.clear()
+            _parsed[key] = parsed
+        origin = group.origin
+        if parsed.definitions:
+            defined = [definition.shifted(origin) for definition in parsed.definitions]
             register(visible, defined)
             definitions.extend(defined)
-        lines.append(_parse_line(logical, words, dialect, diagnostics))
+        if parsed.expansions:
+            expansions.extend(expansion.shifted(origin) for expansion in parsed.expansions)
+        if parsed.diagnostics:
+            diagnostics.extend(diagnostic.shifted(origin) for diagnostic in parsed.diagnostics)
+        placed.append(n.PlacedLine(origin, group.number, parsed.syntax))
     return Document(
         source,
         dialect,
         lexed.tokens,
-        tuple(lines),
+        tuple(placed),
         tuple(diagnostics),
         visible,
         tuple(definitions),
@@ -109,17 +148,32 @@ def parse(
     )
 
 
-def _parse_line(line: LogicalLine, words: Vocabulary, dialect: Dialect, diagnostics: list[Diagnostic]) -> n.Line:
+def _body(macro: MacroDefinition | None) -> _MacroBody | None:
+    """What a line's parse depends on of a macro it names: where the macro was defined does not count."""
+    return macro.body if macro is not None else None
+
+
+def _parse_group(
+    group: LineGroup, visible: Mapping[str, MacroDefinition], words: Vocabulary, dialect: Dialect
+) -> _ParsedLine:
+    line = group.tokens()
+    defined = take_macro_body(line) if TokenKind.DEFINE in line.kinds else []
+    expansions: list[Expansion] = []
+    if visible:
+        expand_macros(line, visible, expansions)
+    diagnostics: list[Diagnostic] = []
     result = parse_kinds(tuple(line.kinds), dialect)
     if isinstance(result, ParseFailure):
-        return _recover(line, words, dialect, result, diagnostics)
-    label, statements = result(line, words)
-    return n.Line(line.span, line.number, label, statements)
+        label, statements = _recover(line, words, dialect, result, diagnostics)
+    else:
+        label, statements = result(line, words)
+    syntax = n.LineSyntax(group.text, line.span, label, statements)
+    return _ParsedLine(syntax, tuple(diagnostics), tuple(defined), tuple(expansions))
 
 
 def _recover(
     line: LogicalLine, words: Vocabulary, dialect: Dialect, failure: ParseFailure, diagnostics: list[Diagnostic]
-) -> n.Line:
+) -> tuple[n.Name | None, tuple[n.Statement, ...]]:
     """Parse the ``:``-separated statements of a failing line one at a time."""
     kinds = line.kinds
     label: n.Name | None = None
@@ -131,7 +185,7 @@ def _recover(
     if failure.too_complex is not None:  # retrying the parts would not make it simpler
         statements.append(n.SyntaxError_(line.span))
         diagnostics.append(_describe(line, 0, len(kinds), failure) or _error(2003, line.span, _UNREADABLE))
-        return n.Line(line.span, line.number, label, tuple(statements))
+        return label, tuple(statements)
     for begin, end in _segments(kinds, start):
         if begin == end:
             continue
@@ -147,7 +201,7 @@ def _recover(
             diagnostics.append(issue)
     if not statements and failure.index < len(kinds) and kinds[failure.index] is _K.LABEL:
         diagnostics.append(_describe(line, 0, len(kinds), failure) or _error(2003, line.token_span(0), _UNREADABLE))
-    return n.Line(line.span, line.number, label, tuple(statements))
+    return label, tuple(statements)
 
 
 def _opened_block(kinds: list[TokenKind]) -> str | None:

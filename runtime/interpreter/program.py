@@ -54,31 +54,23 @@ def link(model: SemanticModel, vm: Interpreter, table: KeywordTable, terminal: T
         if unit is Unit.PROGRAM:
             vm.program_start = start
         handlers[unit] = labels
-        text_of = _Text(document)
-        for line in document.lines:
-            for statement in line.statements:
-                _emit(compiler, vm, statement, unit=unit, line=line.number, text_of=text_of)
+        for line in document.placed:
+            for statement in line.syntax.statements:
+                _emit(compiler, vm, statement, unit=unit, line=line.number, text=line.syntax.text)
         start = end_of_unit
     return Linked(handlers.get(Unit.PROGRAM, {}), handlers.get(Unit.CONFIGURATION, {}), names)
 
 
 def _emit(
-    compiler: StatementCompiler, vm: Interpreter, statement: n.Statement, *, unit: Unit, line: int, text_of: _Text
+    compiler: StatementCompiler, vm: Interpreter, statement: n.Statement, *, unit: Unit, line: int, text: str
 ) -> None:
+    """Compile one statement of a line whose syntax was parsed from ``text``."""
     pc = len(vm.operations)
     vm.operations.append(compiler.compile(statement, pc))
-    vm.sites.append(Site(unit.value, line, text_of(statement)))
+    vm.sites.append(Site(unit.value, line, text[statement.span.start : statement.span.end].strip()))
     if type(statement) is n.IfThen:
         for inner in statement.body:
-            _emit(compiler, vm, inner, unit=unit, line=line, text_of=text_of)
-
-
-class _Text:
-    def __init__(self, document: Document) -> None:
-        self.source = document.source
-
-    def __call__(self, statement: n.Statement) -> str:
-        return self.source[statement.span.start : statement.span.end].strip()
+            _emit(compiler, vm, inner, unit=unit, line=line, text=text)
 
 
 def _layout(document: Document, start: int) -> tuple[dict[int, int], dict[str, int], int]:
@@ -95,12 +87,13 @@ def _layout(document: Document, start: int) -> tuple[dict[int, int], dict[str, i
             for inner in statement.body:
                 place(inner)
 
-    for line in document.lines:
-        if line.label is not None:
-            labels.setdefault(line.label.identity, pc)
-        for statement in line.statements:
+    for line in document.placed:
+        syntax = line.syntax
+        if syntax.label is not None:
+            labels.setdefault(syntax.label.identity, pc)
+        for statement in syntax.statements:
             place(statement)
-    assert pc - start == sum(layout_size(s) for line in document.lines for s in line.statements)
+    assert pc - start == sum(layout_size(s) for line in document.placed for s in line.syntax.statements)
     return positions, labels, pc - start
 
 
@@ -118,9 +111,10 @@ def _allocate(model: SemanticModel, vm: Interpreter, names: Names) -> None:
     for symbol in model.symbols.variables.values():
         names.scalars[symbol.identity] = len(vm.scalars)
         vm.scalars.append(0.0)
-    for unit, _, statement in model.index.statements:
-        if type(statement) is n.Dim and statement.size is not None:
-            _dim_array(statement, vm, names, unit)
+    for unit, _, facts in model.lines:
+        for statement in facts.statements:
+            if type(statement) is n.Dim and statement.size is not None:
+                _dim_array(statement, vm, names, unit)
 
 
 def _dim_array(statement: n.Dim, vm: Interpreter, names: Names, unit: Unit) -> None:

@@ -1,4 +1,9 @@
-"""The analyser's rules, one module each, in the order they run."""
+"""The analyser's rules, one module each, in the order they run.
+
+A rule reads the whole application (``check``), or one line at a time
+(``each_line``: what it finds depends on nothing outside the line, so the
+analyser keeps it while the line is unchanged), or both.
+"""
 
 from __future__ import annotations
 
@@ -21,20 +26,25 @@ from mintlang.analysis.rules import (
     v3_keywords,
     values,
 )
-from mintlang.analysis.traversal import Facts
+from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.dialect import Dialect
+
+_ALL_DIALECTS = frozenset(Dialect)
 
 
 @dataclass(frozen=True, slots=True)
 class Rule:
     name: str
-    check: Callable[[Facts], Iterator[Finding]]
-    dialects: frozenset[Dialect] = frozenset(Dialect)
+    check: Callable[[Facts], Iterator[Finding]] | None = None
+    each_line: Callable[[LineScope], Iterator[Finding]] | None = None
+    dialects: frozenset[Dialect] = _ALL_DIALECTS
 
     @property
     def summary(self) -> str:
         """The first line of the rule module's docstring."""
-        module = __import__(self.check.__module__, fromlist=["__doc__"])
+        function = self.check or self.each_line
+        assert function is not None, f"rule {self.name} checks nothing"
+        module = __import__(function.__module__, fromlist=["__doc__"])
         return (module.__doc__ or "").strip().splitlines()[0]
 
 
@@ -42,17 +52,17 @@ class Rule:
 _V4_ATTRIBUTES = frozenset({Dialect.V4})
 
 RULES: tuple[Rule, ...] = (
-    Rule("declarations", declarations.check),
-    Rule("keyword-usage", keyword_usage.check, _V4_ATTRIBUTES),
-    Rule("addressing", addressing.check, _V4_ATTRIBUTES),
-    Rule("values", values.check, _V4_ATTRIBUTES),
-    Rule("arrays", arrays.check),
+    Rule("declarations", declarations.check, declarations.each_line),
+    Rule("keyword-usage", each_line=keyword_usage.each_line, dialects=_V4_ATTRIBUTES),
+    Rule("addressing", each_line=addressing.each_line, dialects=_V4_ATTRIBUTES),
+    Rule("values", each_line=values.each_line, dialects=_V4_ATTRIBUTES),
+    Rule("arrays", arrays.check, arrays.each_line),
     Rule("events", events.check),
-    Rule("v3-keywords", v3_keywords.check),
+    Rule("v3-keywords", each_line=v3_keywords.each_line),
     Rule("flow", flow.check),
     Rule("limits", limits.check),
     Rule("startup", startup.check),
     Rule("collisions", collisions.check),
     Rule("unused", unused.check),
-    Rule("hints", hints.check, _V4_ATTRIBUTES),
+    Rule("hints", each_line=hints.each_line, dialects=_V4_ATTRIBUTES),
 )

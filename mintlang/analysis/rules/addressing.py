@@ -14,13 +14,12 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.traversal import Facts, KeywordUse, Use
+from mintlang.analysis.traversal import KeywordUse, LineScope, Use
 from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.diagnostics import Span
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing
 from mintlang.semantic.constants import constant_integer
-from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
 
@@ -60,42 +59,44 @@ def _channel_family(keyword: str) -> tuple[_Channels, int] | None:
     return None
 
 
-def check(facts: Facts) -> Iterator[Finding]:
-    model = facts.model
-    db = database()
-    for use in facts.keyword_uses:
-        keyword = db.keywords.get(use.keyword.keyword)
-        if keyword is None or (keyword.controllers and model.controller.controller not in keyword.controllers):
-            continue  # not a keyword of this controller: 17 (keyword usage) says so, its channels are moot
-        if use.keyword.selector is None and use.keyword.channel is None:
-            # Nothing addressed: the default axes, whatever AXES made them, except on a one-axis
-            # controller, where they can only be axis 0 (000:572, #2017 at 19047).
-            if keyword.addressing is Addressing.AXIS and model.controller.axis_count == 1:
-                yield from _values_for_axes(use, 1, keyword.name)
-            continue
-        if keyword.name.startswith("REMOTE"):
-            yield from _can_address(use)
-        elif keyword.name in ("COMMSMODE", "SERIALBAUD"):
-            yield from _terminal(use, model)
-        elif keyword.addressing is Addressing.AXIS:
-            yield from _axes(use, model, keyword.name)
-        elif keyword.addressing is Addressing.CHANNEL or _channel_family(keyword.name):
-            yield from _channel(use, model)
-    for unit, _, statement in facts.statements:
+def each_line(scope: LineScope) -> Iterator[Finding]:
+    for use in scope.facts.keyword_uses:
+        yield from _keyword(use, scope)
+    for statement in scope.facts.statements:
         if isinstance(statement, n.Axes):
-            yield from _axes_statement(unit, statement, model)
+            yield from _axes_statement(scope.unit, statement, scope)
 
 
-def _axes(use: KeywordUse, model: SemanticModel, name: str) -> Iterator[Finding]:
+def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
+    keyword = database().keywords.get(use.keyword.keyword)
+    if keyword is None or (keyword.controllers and scope.controller.controller not in keyword.controllers):
+        return  # not a keyword of this controller: 17 (keyword usage) says so, its channels are moot
+    if use.keyword.selector is None and use.keyword.channel is None:
+        # Nothing addressed: the default axes, whatever AXES made them, except on a one-axis
+        # controller, where they can only be axis 0 (000:572, #2017 at 19047).
+        if keyword.addressing is Addressing.AXIS and scope.controller.axis_count == 1:
+            yield from _values_for_axes(use, 1, keyword.name)
+        return
+    if keyword.name.startswith("REMOTE"):
+        yield from _can_address(use)
+    elif keyword.name in ("COMMSMODE", "SERIALBAUD"):
+        yield from _terminal(use, scope)
+    elif keyword.addressing is Addressing.AXIS:
+        yield from _axes(use, scope, keyword.name)
+    elif keyword.addressing is Addressing.CHANNEL or _channel_family(keyword.name):
+        yield from _channel(use, scope)
+
+
+def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:
     selector = use.keyword.selector
     if selector is None:
         return
     if not selector.dot:
-        yield from _axis_list(use.unit, selector, model)
+        yield from _axis_list(use.unit, selector, scope)
         yield from _values_for_axes(use, len(selector.items), name)
         return
     for item in selector.items[:1]:
-        yield from _axis_number(use.unit, item, model)
+        yield from _axis_number(use.unit, item, scope)
 
 
 def _values_for_axes(use: KeywordUse, axes: int, name: str) -> Iterator[Finding]:
@@ -114,10 +115,10 @@ def _values_for_axes(use: KeywordUse, axes: int, name: str) -> Iterator[Finding]
         yield Finding(use.unit, mint_error(2017, span, detail))
 
 
-def _axis_list(unit: Unit, selector: n.Selector, model: SemanticModel) -> Iterator[Finding]:
-    too_many = len(selector.items) > model.controller.axis_count
+def _axis_list(unit: Unit, selector: n.Selector, scope: LineScope) -> Iterator[Finding]:
+    too_many = len(selector.items) > scope.controller.axis_count
     if too_many:
-        detail = f"{len(selector.items)} axes listed, {model.controller.title} has {model.controller.axis_count}"
+        detail = f"{len(selector.items)} axes listed, {scope.controller.title} has {scope.controller.axis_count}"
         yield Finding(unit, mint_error(2017, selector.span, detail))
     seen: set[int] = set()
     for item in selector.items:
@@ -128,23 +129,23 @@ def _axis_list(unit: Unit, selector: n.Selector, model: SemanticModel) -> Iterat
             detail = "an axis number in brackets must be a number or a simple variable (use the dot: KW.(a+1))"
             yield Finding(unit, mint_error(2003, item.span, detail))
             continue
-        axis = constant_integer(item, model.program.dialect)
+        axis = constant_integer(item, scope.dialect)
         if axis is not None and axis in seen:
             yield Finding(unit, mint_error(2018, item.span, f"axis {axis} is listed twice"))
         elif axis is not None:
             seen.add(axis)
             if not too_many:  # 2017 already says the list does not fit
-                yield from _axis_number(unit, item, model)
+                yield from _axis_number(unit, item, scope)
 
 
-def _axis_number(unit: Unit, item: n.Expression | None, model: SemanticModel) -> Iterator[Finding]:
-    axis = constant_integer(item, model.program.dialect)
-    if item is not None and axis is not None and axis not in model.controller.axes:
-        detail = f"axis {axis} does not exist on {model.controller.title} (axes {model.controller.axes})"
+def _axis_number(unit: Unit, item: n.Expression | None, scope: LineScope) -> Iterator[Finding]:
+    axis = constant_integer(item, scope.dialect)
+    if item is not None and axis is not None and axis not in scope.controller.axes:
+        detail = f"axis {axis} does not exist on {scope.controller.title} (axes {scope.controller.axes})"
         yield Finding(unit, mint_error(2, item.span, detail))
 
 
-def _channel(use: KeywordUse, model: SemanticModel) -> Iterator[Finding]:
+def _channel(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
     ref = use.keyword
     selector = ref.selector
     if selector is not None and not selector.dot:
@@ -160,14 +161,14 @@ def _channel(use: KeywordUse, model: SemanticModel) -> Iterator[Finding]:
         number, span = ref.channel, ref.spelling_span
     elif selector is not None and selector.items:
         item = selector.items[0]
-        number = constant_integer(item, model.program.dialect)
+        number = constant_integer(item, scope.dialect)
         span = item.span if item is not None else selector.span
     else:
         return
-    valid = channels(model.controller)
+    valid = channels(scope.controller)
     if number is not None and (valid is None or number not in valid):
         available = f"channels {valid}" if valid is not None else "none"
-        detail = f"{ref.keyword} channel {number} does not exist on {model.controller.title} ({available})"
+        detail = f"{ref.keyword} channel {number} does not exist on {scope.controller.title} ({available})"
         yield Finding(use.unit, mint_error(code, span, detail))
 
 
@@ -188,13 +189,13 @@ def _can_address(use: KeywordUse) -> Iterator[Finding]:
         yield Finding(use.unit, mint_error(26, node_item.span, f"CAN node {node} is out of range ({_CAN_NODES})"))
 
 
-def _terminal(use: KeywordUse, model: SemanticModel) -> Iterator[Finding]:
+def _terminal(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
     """COMMSMODE and SERIALBAUD take a serial terminal: _tmRS232 or _tmRS485."""
     selector = use.keyword.selector
     if selector is None or not selector.dot or not selector.items:
         return
     item = selector.items[0]
-    value = constant_integer(item, model.program.dialect)
+    value = constant_integer(item, scope.dialect)
     if value is None or item is None:
         return
     terminals = {name: int(record.value) for name, record in database().constants.items() if name.startswith("_TM")}
@@ -208,9 +209,9 @@ def _terminal(use: KeywordUse, model: SemanticModel) -> Iterator[Finding]:
         yield Finding(use.unit, mint_error(35, item.span, f"there is no terminal {value}"))
 
 
-def _axes_statement(unit: Unit, statement: n.Axes, model: SemanticModel) -> Iterator[Finding]:
+def _axes_statement(unit: Unit, statement: n.Axes, scope: LineScope) -> Iterator[Finding]:
     if statement.selector is None:
         detail = "AXES without an axis list only reports the axes at the command line; in a program it fails"
         yield Finding(unit, mint_error(2005, statement.span, detail))
         return
-    yield from _axis_list(unit, statement.selector, model)
+    yield from _axis_list(unit, statement.selector, scope)

@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.traversal import Facts
+from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.semantic.constants import constant_integer
 from mintlang.semantic.symbols import SymbolKind
 from mintlang.syntax import nodes as n
@@ -24,34 +24,35 @@ def _is_number(expression: n.Expression) -> bool:
     return isinstance(expression, _NUMBERS)
 
 
-def _compile_time_values(facts: Facts) -> Iterator[Finding]:
-    for unit, _, statement in facts.statements:
+def each_line(scope: LineScope) -> Iterator[Finding]:
+    """Sizes and values of DIM written as expressions."""
+    for statement in scope.facts.statements:
         if not isinstance(statement, n.Dim) or statement.size is None:
             continue
         if not _is_number(statement.size):
             detail = f"the size of {statement.name.text} must be a number, not an expression"
-            yield Finding(unit, mint_error(2003, statement.size.span, detail))
+            yield Finding(scope.unit, mint_error(2003, statement.size.span, detail))
         for value in statement.values:
             if not _is_number(value):
                 detail = f"the values of {statement.name.text} must be numbers, not expressions"
-                yield Finding(unit, mint_error(2003, value.span, detail))
+                yield Finding(scope.unit, mint_error(2003, value.span, detail))
 
 
 def check(facts: Facts) -> Iterator[Finding]:
-    yield from _compile_time_values(facts)
+    """Elements of what is not an array, or beyond its size."""
     model = facts.model
     dialect = model.program.dialect
-    for unit, element in facts.elements:
+    for unit, line, element in facts.elements():
         symbol = model.symbols.variables.get(element.name.identity)
         if symbol is None or not symbol.definitions:
             continue  # undeclared: 3001 says so
         if symbol.kind is not SymbolKind.ARRAY:
             detail = f"'{element.name.text}' is a variable, not an array: declare it with DIM {symbol.name}(size)"
-            yield Finding(unit, mint_error(2016, element.span, detail))
+            yield Finding(unit, mint_error(2016, line.span(element.span), detail))
             continue
         if symbol.array_size is None:
             continue
         index = constant_integer(element.index, dialect)
         if index is not None and not 1 <= index <= symbol.array_size:
             detail = f"{element.name.text}({index}) is outside 1 to {symbol.array_size}"
-            yield Finding(unit, mint_error(2016, element.index.span, detail))
+            yield Finding(unit, mint_error(2016, line.span(element.index.span), detail))

@@ -15,7 +15,7 @@ from difflib import get_close_matches
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.rules.v3_keywords import successor
-from mintlang.analysis.traversal import Facts
+from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
@@ -30,7 +30,7 @@ def check(facts: Facts) -> Iterator[Finding]:
     if model.program.dialect is Dialect.V4:
         yield from _undeclared_variables(model)
     yield from _labels(model)
-    yield from _macros(facts)
+    yield from _macros(model)
 
 
 def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
@@ -85,7 +85,7 @@ def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span) -> Fi
     """
     document = model.document(unit)
     index = document.line_index
-    containing = [line for line in document.lines if line.span.start <= span.start]
+    containing = [line for line in document.placed if line.origin + line.syntax.span.start <= span.start]
     line = containing[-1].number if containing else index.position(span.start).line
     start = index.line_start(line)
     text = document.source
@@ -118,12 +118,15 @@ def _defined_in_other_file(model: SemanticModel, unit: Unit, symbol: Symbol) -> 
     return ""
 
 
-def _macros(facts: Facts) -> Iterator[Finding]:
-    model = facts.model
-    for unit, _, statement in facts.statements:
+def each_line(scope: LineScope) -> Iterator[Finding]:
+    """A DEFINE whose name is no name."""
+    for statement in scope.facts.statements:
         if type(statement) is n.Define and not statement.name_is_word:
             detail = f"'{statement.name.text}' cannot name a macro"
-            yield Finding(unit, mint_error(3005, statement.name.span, detail))
+            yield Finding(scope.unit, mint_error(3005, statement.name.span, detail))
+
+
+def _macros(model: SemanticModel) -> Iterator[Finding]:
     for symbol in model.symbols.macros.values():
         if symbol.kind is not SymbolKind.MACRO:
             continue

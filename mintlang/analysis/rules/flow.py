@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import Facts
-from mintlang.diagnostics import Severity
+from mintlang.diagnostics import Severity, Span
 from mintlang.semantic.blocks import Block
 from mintlang.semantic.constants import constant_value
 from mintlang.semantic.events import event_of
@@ -54,17 +54,15 @@ def _receives_flow(statement: n.Statement) -> bool:
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     for unit, document in model.documents():
-        yield from _Flow(unit, document, _subroutines(unit, model, facts.statements)).findings()
-        yield from _jumps_out_of_blocks(unit, document, model, facts.statements)
+        yield from _Flow(unit, document, _subroutines(unit, model, facts)).findings()
+        yield from _jumps_out_of_blocks(unit, document, model, facts)
 
 
-def _subroutines(
-    unit: Unit, model: SemanticModel, statements: tuple[tuple[Unit, n.Line, n.Statement], ...]
-) -> frozenset[str]:
+def _subroutines(unit: Unit, model: SemanticModel, facts: Facts) -> frozenset[str]:
     """Labels that start a subroutine: called by GOSUB, called by the controller, or never jumped to at all."""
     gosubs = {
         statement.label.identity  # type: ignore[union-attr]
-        for file, _, statement in statements
+        for file, _, statement in facts.statements()
         if file is unit and type(statement) is n.Jump and statement.word == "GOSUB"  # type: ignore[union-attr]
     }
     return frozenset(
@@ -103,12 +101,15 @@ class _Flow:
         self.falling_from_main = False
         self.loops: list[_Loop] = []
         self.ifs: list[_If] = []
+        self.line = n.PlacedLine(0, 0, n.LineSyntax("", Span(0, 0), None, ()))  # the line being followed
 
     def findings(self) -> Iterator[Finding]:
-        for line in self.document.lines:
-            if line.label is not None:
-                yield from self._entry(line.label)
-            for statement in line.statements:
+        for line in self.document.placed:
+            self.line = line
+            syntax = line.syntax
+            if syntax.label is not None:
+                yield from self._entry(syntax.label)
+            for statement in syntax.statements:
                 yield from self._statement(statement)
 
     def _entry(self, label: n.Name) -> Iterator[Finding]:
@@ -120,7 +121,7 @@ class _Flow:
                 self.falling_from_main = True
             else:
                 detail = f"#{self.subroutine.text} has no RETURN here and runs on into #{label.text}"
-                yield Finding(self.unit, own("W107", label.span, detail))
+                yield Finding(self.unit, own("W107", self.line.span(label.span), detail))
         else:
             self.falling_from_main = False
         self.subroutine, self.reachable, self.reported, self.running = label, True, False, False
@@ -130,7 +131,7 @@ class _Flow:
         if _receives_flow(statement):
             self.reachable = True
         elif not (if_bound or self.reachable or self.reported or self._closes_main_loop(statement)):
-            yield Finding(self.unit, own("W106", statement.span, "this code can never run"))
+            yield Finding(self.unit, own("W106", self.line.span(statement.span), "this code can never run"))
             self.reported = True
         self.after_endless_loop = False
         if self.reachable:
@@ -149,7 +150,8 @@ class _Flow:
         """EXIT, GOTO and RETURN, also inside IF .. THEN."""
         if isinstance(statement, n.BlockWord) and statement.word == "EXIT":
             if not self.loops:
-                yield Finding(self.unit, own("W112", statement.span, "EXIT is not inside a FOR, REPEAT, WHILE or LOOP"))
+                detail = "EXIT is not inside a FOR, REPEAT, WHILE or LOOP"
+                yield Finding(self.unit, own("W112", self.line.span(statement.span), detail))
             else:
                 self.loops[-1].left = True
         elif isinstance(statement, n.Jump) and statement.word == "GOTO":
@@ -158,7 +160,8 @@ class _Flow:
         elif self.falling_from_main and isinstance(statement, n.BlockWord) and statement.word == "RETURN":
             into = self.subroutine.text if self.subroutine else ""
             detail = f"the main program has no END and runs on into #{into}, so this RETURN has no GOSUB to return to"
-            yield Finding(self.unit, mint_error(2010, statement.span, detail, severity=Severity.WARNING))
+            span = self.line.span(statement.span)
+            yield Finding(self.unit, mint_error(2010, span, detail, severity=Severity.WARNING))
             self.falling_from_main = False
 
     def _closes_main_loop(self, statement: n.Statement) -> bool:
@@ -212,14 +215,12 @@ class _Flow:
             self.falling_from_main = False
 
 
-def _jumps_out_of_blocks(
-    unit: Unit, document: Document, model: SemanticModel, statements: tuple[tuple[Unit, n.Line, n.Statement], ...]
-) -> Iterator[Finding]:
+def _jumps_out_of_blocks(unit: Unit, document: Document, model: SemanticModel, facts: Facts) -> Iterator[Finding]:
     blocks = model.structures[unit].blocks
-    labels = {line.label.identity: line.number for line in document.lines if line.label is not None}
+    labels = {line.syntax.label.identity: line.number for line in document.placed if line.syntax.label is not None}
     gotos = [
         (line, statement)
-        for file, line, statement in statements
+        for file, line, statement in facts.statements()
         if file is unit and type(statement) is n.Jump and statement.word == "GOTO"
     ]
     for line, statement in gotos:
@@ -232,7 +233,7 @@ def _jumps_out_of_blocks(
                 f"GOTO {statement.label.text} leaves the {left[-1].kind.value} block of line {left[-1].opener_line} "
                 "open; done repeatedly, this overflows the stack (error 2015)"
             )
-            yield Finding(unit, own("W113", statement.span, detail))
+            yield Finding(unit, own("W113", line.span(statement.span), detail))
 
 
 def _contains(block: Block, line: int) -> bool:

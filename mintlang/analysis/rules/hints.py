@@ -8,17 +8,16 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, own
-from mintlang.analysis.traversal import Facts
+from mintlang.analysis.traversal import LineScope
 from mintlang.diagnostics import Edit, Fix
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing
 from mintlang.syntax import nodes as n
 
 
-def check(facts: Facts) -> Iterator[Finding]:
-    model = facts.model
+def each_line(scope: LineScope) -> Iterator[Finding]:
     db = database()
-    for use in facts.keyword_uses:
+    for use in scope.facts.keyword_uses:
         selector = use.keyword.selector
         if selector is None or selector.dot or len(selector.items) != 1:
             continue
@@ -27,7 +26,7 @@ def check(facts: Facts) -> Iterator[Finding]:
         if keyword is None or keyword.addressing is not Addressing.AXIS:
             continue
         if isinstance(item, n.Number | n.VariableRef):
-            written = model.document(use.unit).source[item.span.start : item.span.end]
+            written = scope.syntax.text[item.span.start : item.span.end]
             value = item.text if isinstance(item, n.Number) else item.name.text
             # A macro needs a delimiter before it, or the dot is ignored: MOVER..xAxis (3.5)
             dotted = f".{written}" if written.upper() == value.upper() else f"..{written}"

@@ -16,7 +16,7 @@ from collections.abc import Iterator
 from functools import cache
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.traversal import Facts, Use
+from mintlang.analysis.traversal import LineScope, Use
 from mintlang.controllers import profile
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, KeywordKind
@@ -26,21 +26,21 @@ from mintlang.syntax import nodes as n
 _CONFIGURATION_COMMANDS = frozenset({"RELEASE"})  # clears the variables before each run (000:935-939)
 
 
-def check(facts: Facts) -> Iterator[Finding]:
-    model = facts.model
-    controller = model.controller
-    for use in facts.keyword_uses:
+def each_line(scope: LineScope) -> Iterator[Finding]:
+    controller = scope.controller.controller
+    unit = scope.unit
+    for use in scope.facts.keyword_uses:
         ref = use.keyword
-        if use.unit is Unit.CONFIGURATION and ref.keyword in _CONFIGURATION_COMMANDS:
+        if unit is Unit.CONFIGURATION and ref.keyword in _CONFIGURATION_COMMANDS:
             continue
         statement = use.statement
         has_arguments = isinstance(statement, n.KeywordStatement) and bool(statement.arguments)
-        verdict = _verdict(ref.keyword, ref.spelling.upper(), controller.controller, use.use, has_arguments)
+        verdict = _verdict(ref.keyword, ref.spelling.upper(), controller, use.use, has_arguments)
         if verdict is not None:
             code, detail = verdict
-            yield Finding(use.unit, mint_error(code, ref.spelling_span, detail))
+            yield Finding(unit, mint_error(code, ref.spelling_span, detail))
     db = database()
-    for unit, _, statement in facts.statements:
+    for statement in scope.facts.statements:
         if isinstance(statement, n.BareName) and db.rename_of(statement.name.text) is None:
             detail = f"'{statement.name.text}' is not a keyword (check the spelling and the abbreviation)"
             yield Finding(unit, mint_error(3007, statement.span, detail))

@@ -23,10 +23,10 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     if model.controller.controller not in database().keywords["AUTO"].controllers:
         return
-    for use in facts.keyword_uses:
+    for line, use in facts.keyword_uses():
         if use.keyword.keyword != "AUTO":
             continue
-        span = use.keyword.spelling_span
+        span = line.span(use.keyword.spelling_span)
         if use.unit is Unit.PROGRAM:
             detail = "AUTO in the program file is ignored: it belongs first in the configuration file"
         elif _text_before(model.configuration.source if model.configuration else "", span.start):

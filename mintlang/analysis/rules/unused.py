@@ -32,8 +32,8 @@ def check(facts: Facts) -> Iterator[Finding]:
             detail = f"variable '{first.spelling}' is declared but never used"
             yield Finding(first.unit, own("W103", first.span, detail))
     not_macros = {
-        (unit, statement.name.span)
-        for unit, _, statement in facts.statements
+        (unit, line.span(statement.name.span))
+        for unit, line, statement in facts.statements()
         if type(statement) is n.Define and not statement.name_is_word
     }
     for symbol in symbols.macros.values():
@@ -62,9 +62,9 @@ def _names_in_broken_statements(facts: Facts) -> set[str]:
     sources = {unit: document.source for unit, document in facts.model.documents()}
     return {
         n.identity(word)
-        for unit, _, statement in facts.statements
+        for unit, line, statement in facts.statements()
         if type(statement) is n.SyntaxError_
-        for word in _WORD.findall(sources[unit], statement.span.start, statement.span.end)
+        for word in _WORD.findall(sources[unit], *line.span(statement.span))
     }
 
 
@@ -75,11 +75,12 @@ def _declaring_routines(model: SemanticModel) -> set[tuple[Unit, str]]:
 
 def _only_dims(document: Document) -> Iterator[n.Name]:
     routines: list[tuple[n.Name, list[n.Statement]]] = []
-    for line in document.lines:
-        if line.label is not None:
-            routines.append((line.label, []))
+    for line in document.placed:
+        syntax = line.syntax
+        if syntax.label is not None:
+            routines.append((syntax.label, []))
         if routines:
-            routines[-1][1].extend(line.statements)
+            routines[-1][1].extend(syntax.statements)
     for label, body in routines:
         if any(type(s) is n.Dim for s in body) and all(type(s) is n.Dim or _is_return(s) for s in body):
             yield label

@@ -14,7 +14,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from mintlang.analysis.findings import Finding, mint_error, own
-from mintlang.analysis.traversal import Facts
+from mintlang.analysis.traversal import LineScope
 from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.dialect import Dialect
@@ -77,25 +77,22 @@ def successor(word: str, controller: ControllerProfile) -> Successor | None:
     return None
 
 
-def check(facts: Facts) -> Iterator[Finding]:
-    model = facts.model
-    if model.program.dialect is not Dialect.V4:
+def each_line(scope: LineScope) -> Iterator[Finding]:
+    if scope.dialect is not Dialect.V4:
         return
     db = database()
-    for use in facts.keyword_uses:
+    for use in scope.facts.keyword_uses:
         if use.keyword.keyword in db.keywords:
             continue
         span = use.keyword.spelling_span
-        found = successor(use.keyword.spelling, model.controller)
+        found = successor(use.keyword.spelling, scope.controller)
         if found is not None:
             detail = f"'{use.keyword.spelling}' is not a Mint v4 keyword: it is {found.detail}"
             yield Finding(use.unit, mint_error(3007, span, detail, fixes=found.fixes(span)))
-    for unit, document in model.documents():
-        for line in document.lines:
-            label = line.label
-            if label is not None:
-                event = event_of(label.text, Dialect.V3)
-                if event is not None and event.kind is EventKind.FASTPOS:
-                    new = f"#FASTIN{event.number if event.number is not None else ''}"
-                    fix = Fix(f"Rename to {new}", (Edit(label.span, new),))
-                    yield Finding(unit, own("W102", label.span, f"#{label.text} is {_V3}: v4 uses {new}", fixes=(fix,)))
+    label = scope.syntax.label
+    if label is not None:
+        event = event_of(label.text, Dialect.V3)
+        if event is not None and event.kind is EventKind.FASTPOS:
+            new = f"#FASTIN{event.number if event.number is not None else ''}"
+            fix = Fix(f"Rename to {new}", (Edit(label.span, new),))
+            yield Finding(scope.unit, own("W102", label.span, f"#{label.text} is {_V3}: v4 uses {new}", fixes=(fix,)))

@@ -10,21 +10,20 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.traversal import Facts, Use
+from mintlang.analysis.traversal import LineScope, Use
 from mintlang.keyworddb import database
 from mintlang.semantic.constants import constant_value
 from mintlang.syntax import nodes as n
 
 
-def check(facts: Facts) -> Iterator[Finding]:
-    model = facts.model
+def each_line(scope: LineScope) -> Iterator[Finding]:
     db = database()
-    dialect = model.program.dialect
-    for use in facts.keyword_uses:
+    controller, dialect = scope.controller.controller, scope.dialect
+    for use in scope.facts.keyword_uses:
         if use.use is not Use.WRITE or not isinstance(use.statement, n.KeywordStatement):
             continue
         keyword = db.keywords.get(use.keyword.keyword)
-        attributes = keyword.attributes_for(model.controller.controller) if keyword else None
+        attributes = keyword.attributes_for(controller) if keyword else None
         if attributes is None or attributes.scaled or attributes.range is None:
             continue
         if attributes.range.minimum is None or attributes.range.maximum is None:

@@ -1,0 +1,96 @@
+"""After an edit, only the lines it touched are parsed, indexed and checked again.
+
+The syntax of a line is position-free (its spans count from the start of its
+first physical line), so an unchanged line keeps its syntax wherever the edit
+moved it, and the analyser keeps what it found there. Whatever the caches hold,
+a check must report exactly what a check from nothing reports.
+"""
+
+from __future__ import annotations
+
+from hypothesis import given
+from hypothesis import strategies as st
+
+import mintlang
+from mintlang.semantic.symbols import Unit
+from tests.corpus_files import CorpusCase, cases
+
+CASES = [case for folder in ("v4/valid", "v4/invalid") for case in cases(folder)]
+MACRO_CASES = [case for case in CASES if "DEFINE" in case.source.upper()]
+TYPED = ["x", "1", " ", ":", ",", ";", "(", ")", '"', "'", "#", "\n", "\r\n", "REM ", "DIM ", "IF ", "ENDIF"]
+
+
+def _check(case: CorpusCase, source: str) -> mintlang.Analysis:
+    return mintlang.check_application(
+        source, dialect=case.dialect, controller=case.controller, config=case.configuration
+    )
+
+
+def test_a_line_below_an_edit_keeps_its_syntax_at_its_new_place() -> None:
+    source = "DIM speed\nspeed = 10\nJOG.0 = speed\n"
+    before = mintlang.parse(source)
+    after = mintlang.parse("REM moved\n" + source)
+    assert after.placed[-1].syntax is before.placed[-1].syntax
+    assert after.placed[-1].origin == before.placed[-1].origin + len("REM moved\n")
+    assert after.placed[-1].number == before.placed[-1].number + 1
+
+
+def test_a_line_that_names_a_macro_is_parsed_again_when_the_macro_changes() -> None:
+    before = mintlang.parse("DEFINE gain = 2\nKPROP.0 = gain\n")
+    after = mintlang.parse("DEFINE gain = 3\nKPROP.0 = gain\n")
+    assert after.placed[-1].syntax is not before.placed[-1].syntax
+    value = after.lines[-1].statements[0].values[0]  # type: ignore[union-attr]
+    assert value.value == 3
+
+
+def test_the_analyser_reads_only_the_position_free_syntax() -> None:
+    analysis = mintlang.check_application("DIM a\na = 1\nIF a > 0 DO\n  PRINT a\nENDIF\n")
+    assert "lines" not in vars(analysis.model.program)  # the tree with file offsets is made for tools only
+    assert "index" not in vars(analysis.model)
+
+
+def test_the_tree_with_file_offsets_matches_the_text() -> None:
+    source = "REM top\n  DIM speed\n  speed = 10 : JOG.0 = speed\n"
+    line = mintlang.parse(source).lines[-1]
+    assert source[line.span.start : line.span.end] == "speed = 10 : JOG.0 = speed"
+    jog = line.statements[1]
+    assert source[jog.span.start : jog.span.end] == "JOG.0 = speed"
+
+
+def _edit_and_compare(case: CorpusCase, where: float, removed: int, typed: str) -> None:
+    _check(case, case.source)  # the caches now hold every line of the file before the edit
+    offset = int(where * len(case.source))
+    edited = case.source[:offset] + typed + case.source[offset + removed :]
+    warm = _check(case, edited)
+    mintlang.clear_caches()
+    cold = _check(case, edited)
+    assert warm.program == cold.program
+    assert warm.configuration == cold.configuration
+    assert warm.model.program.lines == cold.model.program.lines
+    assert warm.model.structures[Unit.PROGRAM] == cold.model.structures[Unit.PROGRAM]
+    occurrences = [(symbol.identity, list(symbol.occurrences())) for symbol in warm.model.symbols.all()]
+    assert occurrences == [(symbol.identity, list(symbol.occurrences())) for symbol in cold.model.symbols.all()]
+
+
+@given(
+    case=st.sampled_from(CASES),
+    where=st.floats(min_value=0, max_value=1),
+    removed=st.integers(min_value=0, max_value=3),
+    typed=st.sampled_from(["", *TYPED]),
+)
+def test_a_check_after_an_edit_reports_what_a_check_from_nothing_reports(
+    case: CorpusCase, where: float, removed: int, typed: str
+) -> None:
+    _edit_and_compare(case, where, removed, typed)
+
+
+@given(
+    case=st.sampled_from(MACRO_CASES),
+    where=st.floats(min_value=0, max_value=1),
+    removed=st.integers(min_value=0, max_value=1),
+    typed=st.sampled_from(["", "1", "x", " ", ".", ","]),
+)
+def test_an_edit_to_a_macro_changes_every_line_that_uses_it(
+    case: CorpusCase, where: float, removed: int, typed: str
+) -> None:
+    _edit_and_compare(case, where, removed, typed)

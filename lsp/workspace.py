@@ -17,6 +17,7 @@ from urllib.parse import quote, unquote
 from pygls.uris import to_fs_path
 
 import mintlang
+from mintlang.allocation import collector_paused
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.lsp.collector import Collector
@@ -183,10 +184,13 @@ class Analyses:
         cached = self._cache.get(uri)
         if cached is not None and cached[0] == key:
             return cached[1]
-        snapshot = self._analyse(uri, text, version, unit=unit, other=other, other_text=other_text, settings=settings)
-        self._cache[uri] = (key, snapshot)
-        if self.collector is not None:
-            self.collector.analysed()
+        with collector_paused():  # frozen before the collector runs again, which then has nothing new to scan
+            snapshot = self._analyse(
+                uri, text, version, unit=unit, other=other, other_text=other_text, settings=settings
+            )
+            self._cache[uri] = (key, snapshot)
+            if self.collector is not None:
+                self.collector.analysed()
         return snapshot
 
     def latest(self, uri: str) -> Snapshot | None:

@@ -10,6 +10,7 @@ the language server and the runtime::
 
 from __future__ import annotations
 
+from mintlang.allocation import without_collector
 from mintlang.analysis.analyser import Analysis, analyse
 from mintlang.analysis.analyser import clear_cache as clear_findings_cache
 from mintlang.diagnostics import Diagnostic, Edit, Fix, LineIndex, Position, Severity, Span
@@ -49,6 +50,7 @@ def clear_caches() -> None:
     clear_findings_cache()
 
 
+@without_collector  # one pause for the three steps: each would otherwise end with a collection of the last
 def check_application(
     source: str,
     *,

@@ -41,11 +41,19 @@ class Facts:
     model: SemanticModel
     lines: tuple[IndexedLine, ...]
 
-    def statements(self) -> Iterator[tuple[Unit, n.PlacedLine, n.Statement]]:
-        """Every statement, IF .. THEN bodies included, in compile order."""
+    def statements(self, *kinds: type) -> Iterator[tuple[Unit, n.PlacedLine, n.Statement]]:
+        """Every statement (of these types, if any are given), IF .. THEN bodies included, in compile order."""
+        if not kinds:
+            for unit, line, facts in self.lines:
+                for statement in facts.statements:
+                    yield unit, line, statement
+            return
+        wanted = frozenset(kinds)
         for unit, line, facts in self.lines:
-            for statement in facts.statements:
-                yield unit, line, statement
+            if not facts.kinds.isdisjoint(wanted):
+                for statement in facts.statements:
+                    if type(statement) in wanted:
+                        yield unit, line, statement
 
     def keyword_uses(self) -> Iterator[tuple[n.PlacedLine, KeywordUse]]:
         for _, line, facts in self.lines:

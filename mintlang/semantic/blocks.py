@@ -10,12 +10,14 @@ section 3.9 give error 2015.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from enum import StrEnum
 
 from mintlang.codes import mint_error, own
 from mintlang.controllers import ControllerProfile, NestingLimits
 from mintlang.diagnostics import Diagnostic
+from mintlang.semantic.index import LineFacts
 from mintlang.syntax import nodes as n
 
 
@@ -108,7 +110,7 @@ class _Matcher:
 
     def statement(self, statement: n.Statement, line: n.PlacedLine) -> None:
         if type(statement) not in _BLOCK_STATEMENTS:
-            return  # most statements open and close nothing
+            return
         kind = _opener_kind(statement)
         if kind is not None:
             self.stack.append(_Open(kind, statement, line.number, line.origin))
@@ -153,12 +155,13 @@ class _Matcher:
         return Structure(tuple(self.blocks), tuple(self.diagnostics))
 
 
-def match_blocks(lines: tuple[n.PlacedLine, ...], controller: ControllerProfile) -> Structure:
+def match_blocks(lines: Iterable[tuple[n.PlacedLine, LineFacts]], controller: ControllerProfile) -> Structure:
     """Match the blocks of one file and check the nesting limits."""
     matcher = _Matcher(controller.nesting)
-    for line in lines:
-        for statement in n.flatten_statements(line.syntax.statements):
-            matcher.statement(statement, line)
+    for line, facts in lines:
+        if not facts.kinds.isdisjoint(_BLOCK_STATEMENTS):  # most lines open and close nothing
+            for statement in facts.statements:
+                matcher.statement(statement, line)
     return matcher.finish()
 
 

@@ -78,6 +78,7 @@ class LineFacts:
     keyword_uses: tuple[KeywordUse, ...]
     elements: tuple[n.ElementRef, ...]
     names: tuple[NameEvent, ...]
+    kinds: frozenset[type]  # the types of its statements: passes that look for a few skip the other lines
 
 
 class _Walker:
@@ -159,9 +160,8 @@ def line_facts(unit: Unit, syntax: n.LineSyntax) -> LineFacts:
     statements = n.flatten_statements(syntax.statements)
     for statement in statements:
         walker.statement(unit, statement)
-    facts = LineFacts(
-        statements, tuple(walker.uses), tuple(element for _, element in walker.elements), tuple(walker.names)
-    )
+    elements = tuple(element for _, element in walker.elements)
+    facts = LineFacts(statements, tuple(walker.uses), elements, tuple(walker.names), frozenset(map(type, statements)))
     if len(_facts) >= _CACHE_LIMIT:
         _facts.clear()
     _facts[key] = (syntax, facts)

@@ -66,14 +66,15 @@ def build_model(
 ) -> SemanticModel:
     """Resolve names and blocks of a program and its optional configuration file."""
     target = profile(controller)
-    structures = {Unit.PROGRAM: match_blocks(program.placed, target)}
-    if configuration is not None:
-        structures[Unit.CONFIGURATION] = match_blocks(configuration.placed, target)
     documents = [(Unit.CONFIGURATION, configuration)] if configuration is not None else []
     lines = tuple(
         (unit, placed, line_facts(unit, placed.syntax))
         for unit, document in [*documents, (Unit.PROGRAM, program)]
         for placed in document.placed
     )
+    structures = {
+        unit: match_blocks(((placed, facts) for file, placed, facts in lines if file is unit), target)
+        for unit, _ in [*documents, (Unit.PROGRAM, program)]
+    }
     symbols = build_symbols(program, configuration, lines)
     return SemanticModel(program, configuration, target, symbols, structures, lines)

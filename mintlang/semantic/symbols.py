@@ -165,9 +165,10 @@ def build_symbols(
             elif kind is not bare:
                 span = line.span(event.name.span)
                 collector.use(event.name, span, unit, write=kind is NameUse.WRITE, element=event.element)
-        for statement in facts.statements:
-            if type(statement) is n.Jump:
-                jumps.append((unit, statement.label, line.span(statement.label.span)))
+        if n.Jump in facts.kinds:
+            for statement in facts.statements:
+                if type(statement) is n.Jump:
+                    jumps.append((unit, statement.label, line.span(statement.label.span)))
     for unit, label, span in jumps:
         collector.jump(unit, label, span)
     return SymbolTable(collector.variables, collector.macros, collector.labels)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, MutableMapping
 from dataclasses import dataclass
+from typing import NamedTuple
 
 from mintlang.diagnostics import Span
 from mintlang.syntax.lexer import LexedLine, LexResult
@@ -49,23 +50,16 @@ class Expansion:
 PhysicalLine = tuple[int, LexedLine]  # a lexed line and its offset in the source
 
 
-@dataclass(frozen=True, slots=True)
-class LineGroup:
-    """The physical lines of one logical line: one, or several for a DIM list continued after commas."""
+class LineGroup(NamedTuple):
+    """The physical lines of one logical line: one, or several for a DIM list continued after commas.
+
+    A named tuple: there is one per line of every check.
+    """
 
     number: int  # 1-based physical line where it starts
+    origin: int  # offset of the first physical line
+    text: str  # everything the line's syntax depends on, its indentation included
     physical: tuple[PhysicalLine, ...]
-
-    @property
-    def origin(self) -> int:
-        return self.physical[0][0]
-
-    @property
-    def text(self) -> str:
-        """Everything the line's syntax depends on, its indentation included."""
-        if len(self.physical) == 1:
-            return self.physical[0][1].text
-        return "".join(line.text for _, line in self.physical)
 
     def names(self) -> Iterator[str]:
         """The user words written on the line: the ones a macro may stand for."""
@@ -122,23 +116,31 @@ def _is_statement_start(kinds: list[TokenKind], index: int) -> bool:
 def logical_lines(lexed: LexResult) -> list[LineGroup]:
     """Group the physical lines that hold tokens into logical lines (DIM lists continue after a trailing comma)."""
     groups: list[LineGroup] = []
-    pending: list[PhysicalLine] = []
+    pending: list[PhysicalLine] = []  # the lines of a DIM list so far
+    texts: list[str] = []  # and their texts, with those of the blank or comment lines between them
     pending_number = 0
-    has_dim = False
     comma, dim = _K.COMMA, _K.DIM
+    new = tuple.__new__  # builds the named tuple without its Python-level constructor
     for number, physical in enumerate(lexed.lines, start=1):
-        kinds = physical[1].kinds
+        line = physical[1]
+        kinds = line.kinds
         if not kinds:
+            if pending:
+                texts.append(line.text)
+            continue
+        continued = kinds[-1] is comma and (dim in kinds or any(dim in earlier.kinds for _, earlier in pending))
+        if not pending and not continued:  # the common case: one physical line
+            groups.append(new(LineGroup, (number, physical[0], line.text, (physical,))))
             continue
         if not pending:
             pending_number = number
         pending.append(physical)
-        has_dim = has_dim or dim in kinds
-        if not (kinds[-1] is comma and has_dim):
-            groups.append(LineGroup(pending_number, tuple(pending)))
-            pending, has_dim = [], False
+        texts.append(line.text)
+        if not continued:
+            groups.append(LineGroup(pending_number, pending[0][0], "".join(texts), tuple(pending)))
+            pending, texts = [], []
     if pending:
-        groups.append(LineGroup(pending_number, tuple(pending)))
+        groups.append(LineGroup(pending_number, pending[0][0], "".join(texts), tuple(pending)))
     return groups
 
 

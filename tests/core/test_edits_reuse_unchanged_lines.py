@@ -43,6 +43,15 @@ def test_a_line_that_names_a_macro_is_parsed_again_when_the_macro_changes() -> N
     assert value.value == 3
 
 
+def test_a_dim_list_continued_past_a_comment_is_placed_by_the_comment_s_length() -> None:
+    short = "DIM a(3) = 1,\nREM c\n2, 3\n"
+    long = "DIM a(3) = 1,\nREM a longer comment\n2, 3\n"
+    mintlang.parse(short)
+    for source in (short, long):
+        value = mintlang.parse(source).lines[0].statements[0].values[1]  # type: ignore[union-attr]
+        assert source[value.span.start : value.span.end] == "2"
+
+
 def test_the_analyser_reads_only_the_position_free_syntax() -> None:
     analysis = mintlang.check_application("DIM a\na = 1\nIF a > 0 DO\n  PRINT a\nENDIF\n")
     assert "lines" not in vars(analysis.model.program)  # the tree with file offsets is made for tools only

@@ -20,15 +20,17 @@ never falls through: a main program ending in one needs no END.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Severity, Span
+from mintlang.dialect import Dialect
 from mintlang.semantic.blocks import Block
 from mintlang.semantic.constants import constant_value
 from mintlang.semantic.events import event_of
+from mintlang.semantic.index import LineFacts
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
@@ -37,6 +39,8 @@ from mintlang.syntax.parser import Document
 _TERMINATORS = frozenset({"END", "RETURN", "EXIT"})
 _RECEIVERS = frozenset({"NEXT", "ENDW", "ENDL"})  # reached from elsewhere in their block
 _LAST_WORDS = frozenset({"END", "RETURN"})
+# What changes the flow; a line of other statements only runs, when it can be reached at all.
+_FLOW_STATEMENTS = frozenset({n.BlockWord, n.Jump, n.IfDo, n.IfThen, n.While, n.For, n.Until})
 
 
 def _ends_flow(statement: n.Statement) -> bool:
@@ -54,7 +58,8 @@ def _receives_flow(statement: n.Statement) -> bool:
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     for unit, document in model.documents():
-        yield from _Flow(unit, document, _subroutines(unit, model, facts)).findings()
+        lines = [(line, indexed) for file, line, indexed in facts.lines if file is unit]
+        yield from _Flow(unit, document.dialect, _subroutines(unit, model, facts)).findings(lines)
         yield from _jumps_out_of_blocks(unit, document, model, facts)
 
 
@@ -62,8 +67,8 @@ def _subroutines(unit: Unit, model: SemanticModel, facts: Facts) -> frozenset[st
     """Labels that start a subroutine: called by GOSUB, called by the controller, or never jumped to at all."""
     gosubs = {
         statement.label.identity  # type: ignore[union-attr]
-        for file, _, statement in facts.statements()
-        if file is unit and type(statement) is n.Jump and statement.word == "GOSUB"  # type: ignore[union-attr]
+        for file, _, statement in facts.statements(n.Jump)
+        if file is unit and statement.word == "GOSUB"  # type: ignore[union-attr]
     }
     return frozenset(
         identity
@@ -89,9 +94,9 @@ class _If:
 class _Flow:
     """Follows one file top to bottom, as the controller runs it when nothing jumps."""
 
-    def __init__(self, unit: Unit, document: Document, subroutines: frozenset[str]) -> None:
+    def __init__(self, unit: Unit, dialect: Dialect, subroutines: frozenset[str]) -> None:
         self.unit = unit
-        self.document = document
+        self.dialect = dialect
         self.subroutines = subroutines
         self.reachable = True
         self.reported = False  # one W106 per unreachable run
@@ -103,12 +108,15 @@ class _Flow:
         self.ifs: list[_If] = []
         self.line = n.PlacedLine(0, 0, n.LineSyntax("", Span(0, 0), None, ()))  # the line being followed
 
-    def findings(self) -> Iterator[Finding]:
-        for line in self.document.placed:
+    def findings(self, lines: Iterable[tuple[n.PlacedLine, LineFacts]]) -> Iterator[Finding]:
+        for line, facts in lines:
             self.line = line
             syntax = line.syntax
             if syntax.label is not None:
                 yield from self._entry(syntax.label)
+            if self.reachable and facts.kinds.isdisjoint(_FLOW_STATEMENTS):
+                self.reported, self.running, self.after_endless_loop = False, True, False  # ran, and goes on
+                continue
             for statement in syntax.statements:
                 yield from self._statement(statement)
 
@@ -191,7 +199,7 @@ class _Flow:
 
     def _loop_bounds(self, statement: n.Statement) -> None:
         """Open and close loops; after an endless loop nothing that follows runs."""
-        dialect = self.document.dialect
+        dialect = self.dialect
         kind = type(statement)
         if kind is n.BlockWord:
             word = statement.word  # type: ignore[union-attr]
@@ -220,8 +228,8 @@ def _jumps_out_of_blocks(unit: Unit, document: Document, model: SemanticModel, f
     labels = {line.syntax.label.identity: line.number for line in document.placed if line.syntax.label is not None}
     gotos = [
         (line, statement)
-        for file, line, statement in facts.statements()
-        if file is unit and type(statement) is n.Jump and statement.word == "GOTO"
+        for file, line, statement in facts.statements(n.Jump)
+        if file is unit and statement.word == "GOTO"
     ]
     for line, statement in gotos:
         target = labels.get(statement.label.identity)

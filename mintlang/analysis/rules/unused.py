@@ -33,8 +33,8 @@ def check(facts: Facts) -> Iterator[Finding]:
             yield Finding(first.unit, own("W103", first.span, detail))
     not_macros = {
         (unit, line.span(statement.name.span))
-        for unit, line, statement in facts.statements()
-        if type(statement) is n.Define and not statement.name_is_word
+        for unit, line, statement in facts.statements(n.Define)
+        if not statement.name_is_word
     }
     for symbol in symbols.macros.values():
         first = symbol.definitions[0] if symbol.definitions else None
@@ -62,8 +62,7 @@ def _names_in_broken_statements(facts: Facts) -> set[str]:
     sources = {unit: document.source for unit, document in facts.model.documents()}
     return {
         n.identity(word)
-        for unit, line, statement in facts.statements()
-        if type(statement) is n.SyntaxError_
+        for unit, line, statement in facts.statements(n.SyntaxError_)
         for word in _WORD.findall(sources[unit], *line.span(statement.span))
     }
 

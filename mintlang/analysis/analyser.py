@@ -84,8 +84,10 @@ def analyse(model: SemanticModel, *, select: Iterable[str] | None = None, ignore
         findings.extend(Finding(unit, diagnostic) for diagnostic in document.diagnostics)
         findings.extend(Finding(unit, diagnostic) for diagnostic in model.structures[unit].diagnostics)
     dialect, controller = model.program.dialect, model.controller
+    get, target = _line_findings.get, controller.controller
     for unit, line, facts in model.lines:
-        found = _findings_of_line(unit, line.syntax, facts, controller, dialect)
+        cached = get((unit, id(line.syntax), target, dialect))  # the common case, without a call
+        found = cached[1] if cached is not None else _findings_of_line(unit, line.syntax, facts, controller, dialect)
         if found:
             findings.extend(Finding(unit, diagnostic.shifted(line.origin)) for diagnostic in found)
     facts = gather(model)

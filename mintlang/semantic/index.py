@@ -150,6 +150,17 @@ def clear_cache() -> None:
     _facts.clear()
 
 
+def index_lines(unit: Unit, lines: Iterable[n.PlacedLine]) -> list[tuple[Unit, n.PlacedLine, LineFacts]]:
+    """Each line of a file of ``unit`` with its index: looked up in the cache here, walked on a miss."""
+    indexed = []
+    get = _facts.get
+    for line in lines:
+        syntax = line.syntax
+        cached = get((unit, id(syntax)))
+        indexed.append((unit, line, cached[1] if cached is not None else line_facts(unit, syntax)))
+    return indexed
+
+
 def line_facts(unit: Unit, syntax: n.LineSyntax) -> LineFacts:
     """The index of one line of ``unit``, walked once per line syntax (the parser shares unchanged ones)."""
     key = (unit, id(syntax))

@@ -15,7 +15,7 @@ from mintlang.allocation import without_collector
 from mintlang.controllers import ControllerProfile, profile
 from mintlang.keyworddb.model import Controller
 from mintlang.semantic.blocks import Structure, match_blocks
-from mintlang.semantic.index import LineFacts, SyntaxIndex, index_syntax, line_facts
+from mintlang.semantic.index import LineFacts, SyntaxIndex, index_lines, index_syntax
 from mintlang.semantic.symbols import SymbolTable, Unit, build_symbols
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
@@ -68,9 +68,9 @@ def build_model(
     target = profile(controller)
     documents = [(Unit.CONFIGURATION, configuration)] if configuration is not None else []
     lines = tuple(
-        (unit, placed, line_facts(unit, placed.syntax))
+        indexed
         for unit, document in [*documents, (Unit.PROGRAM, program)]
-        for placed in document.placed
+        for indexed in index_lines(unit, document.placed)
     )
     structures = {
         unit: match_blocks(((placed, facts) for file, placed, facts in lines if file is unit), target)

@@ -17,7 +17,7 @@ from enum import StrEnum
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.records import node
-from mintlang.semantic.index import LineFacts, NameUse
+from mintlang.semantic.index import LineFacts, NameEvent, NameUse
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
@@ -30,6 +30,9 @@ class SymbolKind(StrEnum):
     ARRAY = "array"
     LABEL = "label"
     MACRO = "macro"
+
+
+_BARE, _DECLARE, _WRITE = NameUse.BARE, NameUse.DECLARE, NameUse.WRITE
 
 
 @node
@@ -135,16 +138,31 @@ class _Collector:
             symbol.array_size = int(size.value)
         symbol.definitions.append(Occurrence(unit, span, name.text, declared, is_write=True))
 
-    def use(self, name: n.Name, span: Span, unit: Unit, *, write: bool, element: bool) -> None:
-        symbol = self.variables.get(name.identity)
-        if symbol is None and write and self.implicit_declarations:
-            self.declare(name, span, unit, None, array=element)
-            return
-        declared = symbol is not None and bool(symbol.definitions)
-        if symbol is None:
-            kind = SymbolKind.ARRAY if element else SymbolKind.VARIABLE
-            symbol = self.variables[name.identity] = Symbol(kind, name.identity, unit)
-        symbol.references.append(Occurrence(unit, span, name.text, declared, is_write=write))
+    def uses(self, unit: Unit, line: n.PlacedLine, events: tuple[NameEvent, ...]) -> None:
+        """What one line does with names: declarations and references, in order.
+
+        One loop for the line rather than a call per name: every check runs it for every name.
+        """
+        variables, origin, new = self.variables, line.origin, tuple.__new__
+        for event in events:
+            kind = event.use
+            if kind is _BARE:
+                continue
+            name = event.name
+            span = new(Span, (name.span.start + origin, name.span.end + origin))
+            if kind is _DECLARE:
+                self.declare(name, span, unit, event.size)
+                continue
+            write = kind is _WRITE
+            identity = n.identity(name.text)
+            symbol = variables.get(identity)
+            if symbol is None:
+                if write and self.implicit_declarations:
+                    self.declare(name, span, unit, None, array=event.element)
+                    continue
+                kind_of = SymbolKind.ARRAY if event.element else SymbolKind.VARIABLE
+                symbol = variables[identity] = Symbol(kind_of, identity, unit)
+            symbol.references.append(Occurrence(unit, span, name.text, bool(symbol.definitions), write))
 
 
 def build_symbols(
@@ -156,15 +174,9 @@ def build_symbols(
         collector.macros_and_labels(configuration, Unit.CONFIGURATION)
     collector.macros_and_labels(program, Unit.PROGRAM)
     jumps: list[tuple[Unit, n.Name, Span]] = []
-    declare, bare = NameUse.DECLARE, NameUse.BARE
     for unit, line, facts in lines:
-        for event in facts.names:
-            kind = event.use
-            if kind is declare:
-                collector.declare(event.name, line.span(event.name.span), unit, event.size)
-            elif kind is not bare:
-                span = line.span(event.name.span)
-                collector.use(event.name, span, unit, write=kind is NameUse.WRITE, element=event.element)
+        if facts.names:
+            collector.uses(unit, line, facts.names)
         if n.Jump in facts.kinds:
             for statement in facts.statements:
                 if type(statement) is n.Jump:

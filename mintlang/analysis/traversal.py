@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
-from mintlang.semantic.index import KeywordUse, LineFacts, NameUse, Use
+from mintlang.semantic.index import KeywordUse, LineFacts, Use
 from mintlang.semantic.model import IndexedLine, SemanticModel
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -42,15 +42,10 @@ class Facts:
     lines: tuple[IndexedLine, ...]
 
     def statements(self, *kinds: type) -> Iterator[tuple[Unit, n.PlacedLine, n.Statement]]:
-        """Every statement (of these types, if any are given), IF .. THEN bodies included, in compile order."""
-        if not kinds:
-            for unit, line, facts in self.lines:
-                for statement in facts.statements:
-                    yield unit, line, statement
-            return
+        """The statements of these types, IF .. THEN bodies included, in compile order."""
         wanted = frozenset(kinds)
         for unit, line, facts in self.lines:
-            if not facts.kinds.isdisjoint(wanted):
+            if not facts.kinds.isdisjoint(wanted):  # most lines have none
                 for statement in facts.statements:
                     if type(statement) in wanted:
                         yield unit, line, statement
@@ -65,14 +60,6 @@ class Facts:
         for unit, line, facts in self.lines:
             for element in facts.elements:
                 yield unit, line, element
-
-    def names(self) -> Iterator[tuple[Unit, n.PlacedLine, n.Name]]:
-        """User words written, read, or standing alone (not those a DIM declares)."""
-        declare = NameUse.DECLARE
-        for unit, line, facts in self.lines:
-            for event in facts.names:
-                if event.use is not declare:
-                    yield unit, line, event.name
 
 
 def gather(model: SemanticModel) -> Facts:

@@ -21,7 +21,7 @@ from mintlang.diagnostics import Span
 from mintlang.lsp.positions import columns
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
-from mintlang.syntax.lexer import LexedLine, lex
+from mintlang.syntax.lexer import LexedLine
 from mintlang.syntax.nodes import identity
 from mintlang.syntax.parser import Document
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
@@ -77,11 +77,10 @@ def encode(snapshot: Snapshot, within: Span | None = None) -> list[int]:
 def _lines(document: Document, within: Span | None) -> Iterable[tuple[int, _Line]]:
     """The numbered physical lines that may hold tokens starting in ``within`` (all without it).
 
-    Lexed again rather than read from ``document.tokens``: the lexer caches
-    lines, so this costs a few milliseconds on thousands of lines, where the
-    lossless token stream is tens of thousands of objects built per version.
+    Read from the lexed lines rather than ``document.tokens``: the lossless
+    token stream is tens of thousands of objects built per version.
     """
-    lines = lex(document.source, document.dialect).lines
+    lines = document.physical
     if within is None:
         return enumerate(lines)
     first = max(0, bisect_right(lines, within.start, key=_offset) - 1)

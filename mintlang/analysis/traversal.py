@@ -10,7 +10,7 @@ long as the line's syntax does not change.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 
 from mintlang.controllers import ControllerProfile
@@ -34,21 +34,22 @@ class LineScope:
     dialect: Dialect  # the program's
 
 
+PlacedStatement = tuple[Unit, n.PlacedLine, n.Statement]
+# The statements whole-application rules look for; few lines have any, so one pass finds them all.
+_SOUGHT = frozenset({n.Jump, n.Define, n.SyntaxError_})
+
+
 @dataclass(frozen=True, slots=True)
 class Facts:
     """The model and its lines, with the lists the rules ask for."""
 
     model: SemanticModel
     lines: tuple[IndexedLine, ...]
+    sought: Mapping[type, tuple[PlacedStatement, ...]]  # GOSUB/GOTO, DEFINE, and what could not be parsed
 
-    def statements(self, *kinds: type) -> Iterator[tuple[Unit, n.PlacedLine, n.Statement]]:
-        """The statements of these types, IF .. THEN bodies included, in compile order."""
-        wanted = frozenset(kinds)
-        for unit, line, facts in self.lines:
-            if not facts.kinds.isdisjoint(wanted):  # most lines have none
-                for statement in facts.statements:
-                    if type(statement) in wanted:
-                        yield unit, line, statement
+    def statements(self, kind: type) -> tuple[PlacedStatement, ...]:
+        """The statements of one of the sought types, IF .. THEN bodies included, in compile order."""
+        return self.sought[kind]
 
     def keyword_uses(self) -> Iterator[tuple[n.PlacedLine, KeywordUse]]:
         for _, line, facts in self.lines:
@@ -63,4 +64,10 @@ class Facts:
 
 
 def gather(model: SemanticModel) -> Facts:
-    return Facts(model, model.lines)
+    sought: dict[type, list[PlacedStatement]] = {kind: [] for kind in _SOUGHT}
+    for unit, line, facts in model.lines:
+        if not facts.kinds.isdisjoint(_SOUGHT):  # most lines have none
+            for statement in facts.statements:
+                if type(statement) in _SOUGHT:
+                    sought[type(statement)].append((unit, line, statement))
+    return Facts(model, model.lines, {kind: tuple(found) for kind, found in sought.items()})

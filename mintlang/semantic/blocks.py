@@ -105,16 +105,17 @@ class _Matcher:
     def __init__(self, limits: NestingLimits) -> None:
         self.limits = limits
         self.stack: list[_Open] = []
+        self.open = {BlockKind.IF: 0, BlockKind.FOR: 0, BlockKind.REPEAT: 0, BlockKind.WHILE: 0, BlockKind.LOOP: 0}
         self.blocks: list[Block] = []
         self.diagnostics: list[Diagnostic] = []
 
     def statement(self, statement: n.Statement, line: n.PlacedLine) -> None:
-        if type(statement) not in _BLOCK_STATEMENTS:
-            return
+        """One statement of ``_BLOCK_STATEMENTS``."""
         kind = _opener_kind(statement)
         if kind is not None:
             self.stack.append(_Open(kind, statement, line.number, line.origin))
-            problem = _nesting_problem(self.stack, self.limits)
+            self.open[kind] += 1
+            problem = _nesting_problem(self.open, self.limits)
             if problem is not None:
                 self.diagnostics.append(_error(2015, line.span(statement.span), problem))
         elif isinstance(statement, n.Until) or (isinstance(statement, n.SyntaxError_) and statement.closes == "UNTIL"):
@@ -140,6 +141,7 @@ class _Matcher:
             self.diagnostics.append(_error(code, line.span(closer.span), message))
             return
         top = stack.pop()
+        self.open[kind] -= 1
         self.blocks.append(Block(kind, top.opener, top.line, top.middle, top.middle_line, closer, line.number))
 
     def finish(self) -> Structure:
@@ -161,14 +163,15 @@ def match_blocks(lines: Iterable[tuple[n.PlacedLine, LineFacts]], controller: Co
     for line, facts in lines:
         if not facts.kinds.isdisjoint(_BLOCK_STATEMENTS):  # most lines open and close nothing
             for statement in facts.statements:
-                matcher.statement(statement, line)
+                if type(statement) in _BLOCK_STATEMENTS:
+                    matcher.statement(statement, line)
     return matcher.finish()
 
 
-def _nesting_problem(stack: list[_Open], limits: NestingLimits) -> str | None:
-    ifs = sum(1 for entry in stack if entry.kind is BlockKind.IF)
-    fors = sum(1 for entry in stack if entry.kind is BlockKind.FOR)
-    others = len(stack) - ifs - fors
+def _nesting_problem(open_: dict[BlockKind, int], limits: NestingLimits) -> str | None:
+    """What limit the blocks open now exceed, if any (``open_`` counts them by kind)."""
+    ifs, fors = open_[BlockKind.IF], open_[BlockKind.FOR]
+    others = open_[BlockKind.REPEAT] + open_[BlockKind.WHILE] + open_[BlockKind.LOOP]
     if ifs > limits.if_blocks:
         return f"IF blocks nested more than {limits.if_blocks} deep"
     if fors > limits.for_loops:

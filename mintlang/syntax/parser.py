@@ -29,6 +29,7 @@ from mintlang.syntax.lines import (
     LineGroup,
     LogicalLine,
     MacroDefinition,
+    PhysicalLine,
     expand_macros,
     logical_lines,
     register,
@@ -58,6 +59,7 @@ class Document:
     source: str
     dialect: Dialect
     tokens: TokenStream  # lossless: the texts join back to the source
+    physical: tuple[PhysicalLine, ...]  # every physical line, lexed, with its offset
     placed: tuple[n.PlacedLine, ...]
     diagnostics: tuple[Diagnostic, ...]
     macros: Mapping[str, MacroDefinition]
@@ -139,6 +141,7 @@ def parse(
         source,
         dialect,
         lexed.tokens,
+        lexed.lines,
         tuple(placed),
         tuple(diagnostics),
         visible,

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import Facts
-from mintlang.diagnostics import Severity, Span
+from mintlang.diagnostics import Diagnostic, Severity, Span
 from mintlang.dialect import Dialect
 from mintlang.semantic.blocks import Block
 from mintlang.semantic.constants import constant_value
@@ -107,20 +107,25 @@ class _Flow:
         self.loops: list[_Loop] = []
         self.ifs: list[_If] = []
         self.line = n.PlacedLine(0, 0, n.LineSyntax("", Span(0, 0), None, ()))  # the line being followed
+        self.found: list[Finding] = []
 
-    def findings(self, lines: Iterable[tuple[n.PlacedLine, LineFacts]]) -> Iterator[Finding]:
+    def findings(self, lines: Iterable[tuple[n.PlacedLine, LineFacts]]) -> list[Finding]:
         for line, facts in lines:
             self.line = line
             syntax = line.syntax
             if syntax.label is not None:
-                yield from self._entry(syntax.label)
+                self._entry(syntax.label)
             if self.reachable and facts.kinds.isdisjoint(_FLOW_STATEMENTS):
                 self.reported, self.running, self.after_endless_loop = False, True, False  # ran, and goes on
                 continue
             for statement in syntax.statements:
-                yield from self._statement(statement)
+                self._statement(statement)
+        return self.found
 
-    def _entry(self, label: n.Name) -> Iterator[Finding]:
+    def _report(self, diagnostic: Diagnostic) -> None:
+        self.found.append(Finding(self.unit, diagnostic))
+
+    def _entry(self, label: n.Name) -> None:
         if label.identity not in self.subroutines:  # a GOTO target: the same routine goes on
             self.reachable, self.reported = True, False
             return
@@ -129,37 +134,41 @@ class _Flow:
                 self.falling_from_main = True
             else:
                 detail = f"#{self.subroutine.text} has no RETURN here and runs on into #{label.text}"
-                yield Finding(self.unit, own("W107", self.line.span(label.span), detail))
+                self._report(own("W107", self.line.span(label.span), detail))
         else:
             self.falling_from_main = False
         self.subroutine, self.reachable, self.reported, self.running = label, True, False, False
 
-    def _statement(self, statement: n.Statement) -> Iterator[Finding]:
+    def _statement(self, statement: n.Statement) -> None:
+        kind = type(statement)
+        if kind not in _FLOW_STATEMENTS and self.reachable:  # runs, and changes nothing
+            self.reported, self.running, self.after_endless_loop = False, True, False
+            return
         if_bound = self._if_bounds(statement)  # ELSE and ENDIF are never dead code themselves
         if _receives_flow(statement):
             self.reachable = True
         elif not (if_bound or self.reachable or self.reported or self._closes_main_loop(statement)):
-            yield Finding(self.unit, own("W106", self.line.span(statement.span), "this code can never run"))
+            self._report(own("W106", self.line.span(statement.span), "this code can never run"))
             self.reported = True
         self.after_endless_loop = False
         if self.reachable:
             self.reported, self.running = False, True
-        if type(statement) is n.IfThen:
+        if kind is n.IfThen:
             for inner in n.walk_statements((statement,)):
-                yield from self._jumps(inner)
-        elif type(statement) in (n.BlockWord, n.Jump):
-            yield from self._jumps(statement)
+                self._jumps(inner)
+        elif kind is n.BlockWord or kind is n.Jump:
+            self._jumps(statement)
         self._loop_bounds(statement)
         if _ends_flow(statement):
             self.reachable = False
             self.falling_from_main = False
 
-    def _jumps(self, statement: n.Statement) -> Iterator[Finding]:
+    def _jumps(self, statement: n.Statement) -> None:
         """EXIT, GOTO and RETURN, also inside IF .. THEN."""
         if isinstance(statement, n.BlockWord) and statement.word == "EXIT":
             if not self.loops:
                 detail = "EXIT is not inside a FOR, REPEAT, WHILE or LOOP"
-                yield Finding(self.unit, own("W112", self.line.span(statement.span), detail))
+                self._report(own("W112", self.line.span(statement.span), detail))
             else:
                 self.loops[-1].left = True
         elif isinstance(statement, n.Jump) and statement.word == "GOTO":
@@ -169,7 +178,7 @@ class _Flow:
             into = self.subroutine.text if self.subroutine else ""
             detail = f"the main program has no END and runs on into #{into}, so this RETURN has no GOSUB to return to"
             span = self.line.span(statement.span)
-            yield Finding(self.unit, mint_error(2010, span, detail, severity=Severity.WARNING))
+            self._report(mint_error(2010, span, detail, severity=Severity.WARNING))
             self.falling_from_main = False
 
     def _closes_main_loop(self, statement: n.Statement) -> bool:

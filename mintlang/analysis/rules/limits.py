@@ -13,7 +13,7 @@ from collections.abc import Iterable, Iterator
 
 from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import Facts
-from mintlang.diagnostics import Span, split_lines
+from mintlang.diagnostics import Span
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Symbol, Unit
 
@@ -29,13 +29,11 @@ def check(facts: Facts) -> Iterator[Finding]:
     yield from _memory(model)
     limit = controller.max_line_length
     for unit, document in model.documents():
-        offset = 0
-        for line in split_lines(document.source, keepends=True):
-            text = line.rstrip("\r\n")
-            if len(text) > limit:
-                detail = f"line has {len(text)} characters; the controller accepts {limit}"
-                yield Finding(unit, own("W111", Span(offset + limit, offset + len(text)), detail))
-            offset += len(line)
+        for offset, line in document.physical:
+            length = line.content_end  # without the line break
+            if length > limit:
+                detail = f"line has {length} characters; the controller accepts {limit}"
+                yield Finding(unit, own("W111", Span(offset + limit, offset + length), detail))
 
 
 def _over(symbols: Iterable[Symbol], limit: int, code: int, what: str, title: str) -> Iterator[Finding]:

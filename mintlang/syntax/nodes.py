@@ -10,6 +10,7 @@ Names keep their spelling; ``identity`` gives the controller's view of a name
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
+from operator import attrgetter
 from typing import TypeVar
 
 from mintlang.diagnostics import Span
@@ -398,27 +399,34 @@ class PlacedLine:
 
 
 _new = tuple.__new__  # builds Span without its Python-level constructor
-_FIELDS: dict[type, tuple[str, ...]] = {}
+_LEAVES = frozenset({str, int, float, bool, type(None)})  # what holds no span
+_FIELDS: dict[type, Callable[[object], tuple[object, ...]] | None] = {}
 
 
-def _node_fields(kind: type) -> tuple[str, ...] | None:
-    names = _FIELDS.get(kind)
-    if names is None and hasattr(kind, "__dataclass_fields__"):
-        names = _FIELDS[kind] = tuple(kind.__dataclass_fields__)
-    return names
+def _fields_of(kind: type) -> Callable[[object], tuple[object, ...]] | None:
+    """Reads every field of a node at once (one call, not one per field); None for what is no node."""
+    if not hasattr(kind, "__dataclass_fields__"):
+        return None  # a text of a str subclass, an enumeration member
+    names = tuple(kind.__dataclass_fields__)
+    if len(names) == 1:
+        (name,) = names
+        return lambda node: (getattr(node, name),)
+    return attrgetter(*names)
 
 
 def relocate(node: T, offset: int) -> T:
-    """A copy of ``node`` with every span ``offset`` characters further on."""
+    """A copy of the syntax ``node`` with every span ``offset`` characters further on."""
     kind = type(node)
     if kind is Span:
         return _new(Span, (node.start + offset, node.end + offset))  # type: ignore[attr-defined, return-value]
     if kind is tuple:
-        return tuple([relocate(item, offset) for item in node])  # type: ignore[attr-defined, return-value]
-    names = _node_fields(kind)
-    if names is None:
-        return node  # a text, a number, a flag or None
-    return kind(*[relocate(getattr(node, name), offset) for name in names])
+        return tuple([item if type(item) in _LEAVES else relocate(item, offset) for item in node])  # type: ignore[attr-defined, return-value]
+    if kind not in _FIELDS:
+        _FIELDS[kind] = _fields_of(kind)
+    fields = _FIELDS[kind]
+    if fields is None:
+        return node
+    return kind(*[value if type(value) in _LEAVES else relocate(value, offset) for value in fields(node)])
 
 
 def walk_statements(statements: tuple[Statement, ...]) -> Iterator[Statement]:

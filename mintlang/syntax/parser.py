@@ -14,7 +14,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property
 
-from mintlang.allocation import without_collector
+from mintlang.allocation import collector_paused, without_collector
 from mintlang.codes import mint_error
 from mintlang.diagnostics import Diagnostic, LineIndex, Span
 from mintlang.dialect import Dialect
@@ -69,7 +69,8 @@ class Document:
 
     @cached_property
     def lines(self) -> tuple[n.Line, ...]:
-        return tuple(line.absolute() for line in self.placed)
+        with collector_paused():  # tens of thousands of acyclic nodes
+            return tuple(line.absolute() for line in self.placed)
 
 
 @dataclass(frozen=True, slots=True)

@@ -399,7 +399,7 @@ class PlacedLine:
 
 
 _new = tuple.__new__  # builds Span without its Python-level constructor
-_LEAVES = frozenset({str, int, float, bool, type(None)})  # what holds no span
+_SPANLESS = frozenset({str, int, float, bool, type(None)})  # field values with no span inside
 _FIELDS: dict[type, Callable[[object], tuple[object, ...]] | None] = {}
 
 
@@ -420,13 +420,13 @@ def relocate(node: T, offset: int) -> T:
     if kind is Span:
         return _new(Span, (node.start + offset, node.end + offset))  # type: ignore[attr-defined, return-value]
     if kind is tuple:
-        return tuple([item if type(item) in _LEAVES else relocate(item, offset) for item in node])  # type: ignore[attr-defined, return-value]
+        return tuple([item if type(item) in _SPANLESS else relocate(item, offset) for item in node])  # type: ignore[attr-defined, return-value]
     if kind not in _FIELDS:
         _FIELDS[kind] = _fields_of(kind)
     fields = _FIELDS[kind]
     if fields is None:
         return node
-    return kind(*[value if type(value) in _LEAVES else relocate(value, offset) for value in fields(node)])
+    return kind(*[value if type(value) in _SPANLESS else relocate(value, offset) for value in fields(node)])
 
 
 def walk_statements(statements: tuple[Statement, ...]) -> Iterator[Statement]:

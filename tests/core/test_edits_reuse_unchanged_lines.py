@@ -8,11 +8,16 @@ a check must report exactly what a check from nothing reports.
 
 from __future__ import annotations
 
+from dataclasses import fields, is_dataclass
+
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
 import mintlang
+from mintlang.diagnostics import Span
 from mintlang.semantic.symbols import Unit
+from mintlang.syntax import nodes as n
 from tests.corpus_files import CorpusCase, cases
 
 CASES = [case for folder in ("v4/valid", "v4/invalid") for case in cases(folder)]
@@ -41,6 +46,27 @@ def test_a_line_that_names_a_macro_is_parsed_again_when_the_macro_changes() -> N
     assert after.placed[-1].syntax is not before.placed[-1].syntax
     value = after.lines[-1].statements[0].values[0]  # type: ignore[union-attr]
     assert value.value == 3
+
+
+def _written(node: object) -> list[tuple[str, Span]]:
+    """Every literal and name in a tree, with its span."""
+    found: list[tuple[str, Span]] = []
+    if isinstance(node, tuple):
+        for item in node:
+            found.extend(_written(item))
+    elif is_dataclass(node):
+        if isinstance(node, n.Number | n.StringLiteral | n.Name):
+            found.append((node.text, node.span))
+        for field in fields(node):
+            found.extend(_written(getattr(node, field.name)))
+    return found
+
+
+@pytest.mark.parametrize("case", [case for case in CASES if case not in MACRO_CASES], ids=lambda case: case.name)
+def test_every_literal_and_name_of_the_tree_with_file_offsets_spans_its_own_text(case: CorpusCase) -> None:
+    source = case.source
+    for written, span in _written(mintlang.parse(source, case.dialect).lines):
+        assert source[span.start : span.end].removeprefix("#") == written  # a label's span holds its '#'
 
 
 def test_a_dim_list_continued_past_a_comment_is_placed_by_the_comment_s_length() -> None:

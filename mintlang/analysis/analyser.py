@@ -15,6 +15,7 @@ from mintlang.allocation import without_collector
 from mintlang.analysis.findings import Finding
 from mintlang.analysis.rules import RULES, Rule
 from mintlang.analysis.traversal import LineScope, gather
+from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Diagnostic
 from mintlang.dialect import Dialect
@@ -40,8 +41,7 @@ def _selected(code: str, select: Iterable[str] | None, ignore: Iterable[str]) ->
 
 
 _LineKey = tuple[Unit, int, Controller, Dialect]  # id() of the line syntax, which the entry keeps alive
-_line_findings: dict[_LineKey, tuple[n.LineSyntax, tuple[Diagnostic, ...]]] = {}
-_CACHE_LIMIT = 100_000
+_line_findings: RecentCache[_LineKey, tuple[n.LineSyntax, tuple[Diagnostic, ...]]] = RecentCache(LINES_KEPT)
 
 
 def clear_cache() -> None:
@@ -68,9 +68,7 @@ def _findings_of_line(
         for rule in _rules_for(dialect)[0]
         for finding in rule.each_line(scope)  # type: ignore[misc]
     )
-    if len(_line_findings) >= _CACHE_LIMIT:
-        _line_findings.clear()
-    _line_findings[key] = (syntax, found)
+    _line_findings.put(key, (syntax, found))
     return found
 
 
@@ -84,10 +82,8 @@ def analyse(model: SemanticModel, *, select: Iterable[str] | None = None, ignore
         findings.extend(Finding(unit, diagnostic) for diagnostic in document.diagnostics)
         findings.extend(Finding(unit, diagnostic) for diagnostic in model.structures[unit].diagnostics)
     dialect, controller = model.program.dialect, model.controller
-    get, target = _line_findings.get, controller.controller
     for unit, line, facts in model.lines:
-        cached = get((unit, id(line.syntax), target, dialect))  # the common case, without a call
-        found = cached[1] if cached is not None else _findings_of_line(unit, line.syntax, facts, controller, dialect)
+        found = _findings_of_line(unit, line.syntax, facts, controller, dialect)
         if found:
             findings.extend(Finding(unit, diagnostic.shifted(line.origin)) for diagnostic in found)
     facts = gather(model)

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from enum import StrEnum
 from typing import NamedTuple
 
+from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
@@ -142,8 +143,8 @@ def index_syntax(documents: Iterable[tuple[Unit, Document]]) -> SyntaxIndex:
     return SyntaxIndex(tuple(statements), tuple(walker.uses), tuple(walker.elements), tuple(walker.names))
 
 
-_facts: dict[tuple[Unit, int], tuple[n.LineSyntax, LineFacts]] = {}  # by id(syntax), which the entry keeps alive
-_CACHE_LIMIT = 100_000
+# By id(syntax): each entry keeps its syntax alive, so the id is not reused while the entry lasts.
+_facts: RecentCache[tuple[Unit, int], tuple[n.LineSyntax, LineFacts]] = RecentCache(LINES_KEPT)
 
 
 def clear_cache() -> None:
@@ -151,14 +152,8 @@ def clear_cache() -> None:
 
 
 def index_lines(unit: Unit, lines: Iterable[n.PlacedLine]) -> list[tuple[Unit, n.PlacedLine, LineFacts]]:
-    """Each line of a file of ``unit`` with its index: looked up in the cache here, walked on a miss."""
-    indexed = []
-    get = _facts.get
-    for line in lines:
-        syntax = line.syntax
-        cached = get((unit, id(syntax)))
-        indexed.append((unit, line, cached[1] if cached is not None else line_facts(unit, syntax)))
-    return indexed
+    """Each line of a file of ``unit`` with its index."""
+    return [(unit, line, line_facts(unit, line.syntax)) for line in lines]
 
 
 def line_facts(unit: Unit, syntax: n.LineSyntax) -> LineFacts:
@@ -173,7 +168,5 @@ def line_facts(unit: Unit, syntax: n.LineSyntax) -> LineFacts:
         walker.statement(unit, statement)
     elements = tuple(element for _, element in walker.elements)
     facts = LineFacts(statements, tuple(walker.uses), elements, tuple(walker.names), frozenset(map(type, statements)))
-    if len(_facts) >= _CACHE_LIMIT:
-        _facts.clear()
-    _facts[key] = (syntax, facts)
+    _facts.put(key, (syntax, facts))
     return facts

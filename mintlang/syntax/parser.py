@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from functools import cached_property
 
 from mintlang.allocation import collector_paused, without_collector
+from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import mint_error
 from mintlang.diagnostics import Diagnostic, LineIndex, Span
 from mintlang.dialect import Dialect
@@ -85,8 +86,7 @@ class _ParsedLine:
 
 _MacroBody = tuple[tuple[TokenKind, str], ...]
 _ParseKey = tuple[Dialect, Controller | None, str, tuple[_MacroBody | None, ...]]
-_parsed: dict[_ParseKey, _ParsedLine] = {}
-_CACHE_LIMIT = 100_000
+_parsed: RecentCache[_ParseKey, _ParsedLine] = RecentCache(LINES_KEPT)
 
 
 def clear_caches() -> None:
@@ -125,9 +125,7 @@ def parse(
         parsed = _parsed.get(key)
         if parsed is None:
             parsed = _parse_group(group, visible, vocabulary(dialect, target), dialect)
-            if len(_parsed) >= _CACHE_LIMIT:
-                _parsed.clear()
-            _parsed[key] = parsed
+            _parsed.put(key, parsed)
         origin = group.origin
         if parsed.definitions:
             defined = [definition.shifted(origin) for definition in parsed.definitions]

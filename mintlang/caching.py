@@ -1,0 +1,46 @@
+"""A bounded cache for what recent checks used: the per-line caches of the parser, index and analyser.
+
+A language server checks a file on every keystroke for hours; each edit leaves
+behind the lines it replaced. Two generations bound the memory without an LRU
+list to maintain per lookup: new entries go to the young one, an entry found in
+the old one moves to the young one, and when the young one is full it becomes
+the old one, dropping whatever no check has asked for since the last turn.
+"""
+
+from __future__ import annotations
+
+from typing import Generic, TypeVar
+
+K = TypeVar("K")
+V = TypeVar("V")
+
+LINES_KEPT = 60_000  # per generation: the lines of the two largest files a server analyses, and room to edit
+
+
+class RecentCache(Generic[K, V]):
+    __slots__ = ("_old", "_size", "_young")
+
+    def __init__(self, size: int) -> None:
+        self._size = size  # entries per generation
+        self._young: dict[K, V] = {}
+        self._old: dict[K, V] = {}
+
+    def __len__(self) -> int:
+        return len(self._young) + len(self._old)
+
+    def get(self, key: K) -> V | None:
+        value = self._young.get(key)
+        if value is None:
+            value = self._old.pop(key, None)
+            if value is not None:
+                self.put(key, value)
+        return value
+
+    def put(self, key: K, value: V) -> None:
+        self._young[key] = value
+        if len(self._young) >= self._size:
+            self._old, self._young = self._young, {}
+
+    def clear(self) -> None:
+        self._young.clear()
+        self._old.clear()

@@ -17,11 +17,11 @@ from pygls.uris import to_fs_path
 
 from mintlang.lsp import __version__
 from mintlang.lsp.collector import Collector
+from mintlang.lsp.disk import read_text
 from mintlang.lsp.documents import LspProtocol
 from mintlang.lsp.lookup import line_prefix
 from mintlang.lsp.positions import Positions
 from mintlang.lsp.workspace import MAX_CHARACTERS, Analyses, Snapshot
-from mintlang.source import decode
 
 log = logging.getLogger(__name__)
 
@@ -37,16 +37,7 @@ class MintServer(LanguageServer):
         if document is not None:
             return document.source
         path = to_fs_path(uri)
-        if path is None:
-            return None
-        file = Path(path)
-        try:
-            if not file.is_file() or file.stat().st_size > 4 * MAX_CHARACTERS:
-                return None
-            return decode(file.read_bytes())[0]  # cp1252 and latin-1 files as mint check reads them
-        except OSError as error:
-            log.warning("cannot read %s: %s", path, error)
-            return None
+        return read_text(Path(path), 4 * MAX_CHARACTERS) if path is not None else None
 
     def snapshot(self, uri: str) -> Snapshot | None:
         """The analysis of an open document; None for documents the client never opened."""

@@ -21,6 +21,7 @@ from mintlang.allocation import collector_paused
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.lsp.collector import Collector
+from mintlang.lsp.disk import names_in
 from mintlang.lsp.positions import Positions
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
@@ -148,12 +149,12 @@ def _sibling(folder: str, name: str) -> str:
     controller's PC (APP.MNT, app.cfg)."""
     exact = f"{folder}/{quote(name)}"
     path = to_fs_path(exact)
-    if path is None or Path(path).exists():
+    if path is None:
         return exact
-    try:
-        found = next((entry.name for entry in Path(path).parent.iterdir() if entry.name.lower() == name.lower()), None)
-    except OSError:
+    names = names_in(Path(path).parent)
+    if name in names:
         return exact
+    found = next((entry for entry in names if entry.lower() == name.lower()), None)
     return exact if found is None else f"{folder}/{quote(found)}"
 
 

@@ -42,14 +42,15 @@ def mint_error(
     *,
     severity: Severity = Severity.ERROR,
     fixes: tuple[Fix, ...] = (),
+    from_v3: bool = False,
 ) -> Diagnostic:
     """A diagnostic numbered as the controller numbers it, titled as the manual titles it."""
     record = database().errors.get(code)
     message = f"{record.title}: {detail}" if record is not None else detail
-    return Diagnostic(f"E{code}", severity, span, message, mint_error=code, fixes=fixes)
+    return Diagnostic(f"E{code}", severity, span, message, mint_error=code, fixes=fixes, from_v3=from_v3)
 
 
-def own(code: str, span: Span, detail: str, *, fixes: tuple[Fix, ...] = ()) -> Diagnostic:
+def own(code: str, span: Span, detail: str, *, fixes: tuple[Fix, ...] = (), from_v3: bool = False) -> Diagnostic:
     """A diagnostic of the toolchain's own (W… warnings, I… hints)."""
     severity = Severity.WARNING if code.startswith("W") else Severity.INFO
-    return Diagnostic(code, severity, span, detail, fixes=fixes)
+    return Diagnostic(code, severity, span, detail, fixes=fixes, from_v3=from_v3)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 from bisect import bisect_right
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from enum import StrEnum
 from typing import NamedTuple
 
@@ -88,11 +88,12 @@ class Diagnostic:
     message: str
     mint_error: int | None = None
     fixes: tuple[Fix, ...] = field(default=())
+    from_v3: bool = False  # about a Mint v3 word left in v4 code: a file mint-migrate would help
 
     def shifted(self, offset: int) -> Diagnostic:
         """The same finding ``offset`` characters further on: found in a line, placed in its file."""
         fixes = tuple(fix.shifted(offset) for fix in self.fixes)
-        return Diagnostic(self.code, self.severity, self.span.shifted(offset), self.message, self.mint_error, fixes)
+        return replace(self, span=self.span.shifted(offset), fixes=fixes)
 
 
 @dataclass(frozen=True, slots=True)

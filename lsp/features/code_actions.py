@@ -13,7 +13,6 @@ from collections.abc import Iterator
 from lsprotocol import types
 
 import mintlang
-from mintlang.analysis.rules.v3_keywords import about_v3
 from mintlang.dialect import Dialect
 from mintlang.lsp.features.diagnostics import to_lsp
 from mintlang.lsp.server import MintServer
@@ -52,7 +51,7 @@ def quick_fixes(snapshot: Snapshot, selection: types.Range) -> Iterator[types.Co
 def _wants_migration(snapshot: Snapshot) -> bool:
     if snapshot.unit is not Unit.PROGRAM or snapshot.skipped is not None:
         return False
-    return snapshot.settings.dialect is Dialect.V3 or any(about_v3(d) for d in snapshot.diagnostics)
+    return snapshot.settings.dialect is Dialect.V3 or any(d.from_v3 for d in snapshot.diagnostics)
 
 
 def _wanted(kind: str, only: list[str] | None) -> bool:

@@ -496,6 +496,13 @@ def test_a_whole_v3_keyword_used_as_a_variable_is_not_offered_a_dim() -> None:
     assert [fix.title for fix in abbreviation.fixes] == ["Declare 'A2' with DIM"]
 
 
+def test_a_diagnostic_about_a_v3_word_says_so_but_not_one_about_a_name_that_looks_like_one() -> None:
+    # the language server offers "migrate this file" for these
+    source = "DIM x\nx = ANALOGUE1 + A2 + GAIN\nHMSPEED.0 = 10\nEND\n#FASTPOS\nRETURN\n"
+    about_v3 = {covered(source, d): d.from_v3 for d in mintlang.check(source) if d.code != "W104"}
+    assert about_v3 == {"ANALOGUE1": True, "A2": False, "GAIN": True, "HMSPEED": True, "#FASTPOS": True}
+
+
 def test_a_declared_variable_named_like_an_old_keyword_is_not_renamed() -> None:
     assert [code for code, _, _ in found("DIM gain\nPRINT gain\n")] == []
 

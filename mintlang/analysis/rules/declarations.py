@@ -70,7 +70,8 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
                 detail += f"; did you mean '{close[0]}'?"
                 if as_written:
                     fixes = (Fix.replace(occurrence.span, close[0]), *fixes)
-            yield Finding(occurrence.unit, mint_error(3001, occurrence.span, detail, fixes=fixes))
+            error = mint_error(3001, occurrence.span, detail, fixes=fixes, from_v3=was is not None or was_keyword)
+            yield Finding(occurrence.unit, error)
 
 
 def _written_at(model: SemanticModel, unit: Unit, span: Span) -> str:

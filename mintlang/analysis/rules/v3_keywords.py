@@ -16,21 +16,12 @@ from dataclasses import dataclass
 from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import LineScope
 from mintlang.controllers import ControllerProfile
-from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
+from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.semantic.events import EventKind, event_of
 
 _V3 = "Mint v3"
-_V3_WORD = f"it is a {_V3} "  # how an error says a word is v3's ("… it is a Mint v3 keyword, replaced by …")
-
-
-def about_v3(diagnostic: Diagnostic) -> bool:
-    """Whether ``diagnostic`` is about a Mint v3 word left in v4 code: a file that mint-migrate would help.
-
-    A name that merely looks like a v3 abbreviation (``A2``) is not: it may well be a v4 variable.
-    """
-    return diagnostic.code == "W102" or (diagnostic.code in ("E3001", "E3007") and _V3_WORD in diagnostic.message)
 
 
 # Replacements that read other units: renaming alone would change every value computed from them.
@@ -88,11 +79,12 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         found = successor(use.keyword.spelling, scope.controller)
         if found is not None:
             detail = f"'{use.keyword.spelling}' is not a Mint v4 keyword: it is {found.detail}"
-            yield Finding(use.unit, mint_error(3007, span, detail, fixes=found.fixes(span)))
+            yield Finding(use.unit, mint_error(3007, span, detail, fixes=found.fixes(span), from_v3=True))
     label = scope.syntax.label
     if label is not None:
         event = event_of(label.text, Dialect.V3)
         if event is not None and event.kind is EventKind.FASTPOS:
             new = f"#FASTIN{event.number if event.number is not None else ''}"
             fix = Fix(f"Rename to {new}", (Edit(label.span, new),))
-            yield Finding(scope.unit, own("W102", label.span, f"#{label.text} is {_V3}: v4 uses {new}", fixes=(fix,)))
+            detail = f"#{label.text} is {_V3}: v4 uses {new}"
+            yield Finding(scope.unit, own("W102", label.span, detail, fixes=(fix,), from_v3=True))

@@ -9,6 +9,7 @@ an error response and logs it, so no handler can stop the server.
 from __future__ import annotations
 
 import logging
+from collections.abc import Collection
 from pathlib import Path
 
 from lsprotocol import types
@@ -29,7 +30,11 @@ log = logging.getLogger(__name__)
 class MintServer(LanguageServer):
     def __init__(self) -> None:
         super().__init__("mint-lsp", __version__, protocol_cls=LspProtocol)  # documents with LSP line ends
-        self.analyses = Analyses(read=self.read_text, collector=Collector())
+        self.analyses = Analyses(read=self.read_text, opened=self.opened, collector=Collector())
+
+    def opened(self) -> Collection[str]:
+        """The URIs of the documents open in the editor."""
+        return self.workspace.text_documents.keys()
 
     def read_text(self, uri: str) -> str | None:
         """The text of an open document, else of the file on disk; None when there is none."""

@@ -9,7 +9,7 @@ settings), so hover and completion after a check cost no re-analysis.
 from __future__ import annotations
 
 import logging
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from urllib.parse import quote, unquote
@@ -122,12 +122,13 @@ def _pairing(pattern: str) -> tuple[str, str] | None:
     return prefix, suffix
 
 
-def partner(uri: str, settings: Settings) -> tuple[Unit, str | None]:
+def partner(uri: str, settings: Settings, opened: Collection[str] = ()) -> tuple[Unit, str | None]:
     """Which file ``uri`` is, and the URI of the other file of its application.
 
     The other URI is ``uri`` with its last segment replaced, so it is written as the
     client writes URIs (VS Code sends ``file:///c%3A/...`` where a path round trip
     would give ``file:///c:/...``, and the two would name different documents).
+    ``opened`` are the URIs of the documents open in the editor: one may not be on disk yet.
     """
     folder, slash, segment = uri.rpartition("/")
     pairing = _pairing(settings.config_pairing)
@@ -137,17 +138,26 @@ def partner(uri: str, settings: Settings) -> tuple[Unit, str | None]:
     prefix, suffix = pairing
     if name.lower().endswith(PROGRAM_SUFFIX):
         configuration = prefix + name[: -len(PROGRAM_SUFFIX)] + suffix
-        return Unit.PROGRAM, None if configuration.lower().endswith(PROGRAM_SUFFIX) else _sibling(folder, configuration)
+        if configuration.lower().endswith(PROGRAM_SUFFIX):
+            return Unit.PROGRAM, None
+        return Unit.PROGRAM, _sibling(folder, configuration, opened)
     if suffix and name.lower().endswith(suffix.lower()) and name.startswith(prefix):
         stem = name[len(prefix) : len(name) - len(suffix)]
-        return Unit.CONFIGURATION, _sibling(folder, stem + PROGRAM_SUFFIX)
+        return Unit.CONFIGURATION, _sibling(folder, stem + PROGRAM_SUFFIX, opened)
     return Unit.PROGRAM, None
 
 
-def _sibling(folder: str, name: str) -> str:
-    """The URI of ``name`` in the folder URI ``folder``, matched on disk without regard to case as on the
-    controller's PC (APP.MNT, app.cfg)."""
+def _sibling(folder: str, name: str, opened: Collection[str]) -> str:
+    """The URI of ``name`` in the folder URI ``folder``, matched without regard to case as on the
+    controller's PC (APP.MNT, app.cfg): among the open documents first, then on disk."""
     exact = f"{folder}/{quote(name)}"
+    if exact in opened:
+        return exact
+    lowered = name.lower()
+    for uri in opened:
+        other_folder, _, segment = uri.rpartition("/")
+        if other_folder == folder and unquote(segment).lower() == lowered:
+            return uri
     path = to_fs_path(exact)
     if path is None:
         return exact
@@ -171,6 +181,7 @@ class Analyses:
     """The cache of snapshots, one per open document."""
 
     read: TextReader
+    opened: Callable[[], Collection[str]] = tuple  # the URIs of the documents open in the editor
     settings: Settings = field(default_factory=Settings)
     encoding: str = "utf-16"  # the position encoding negotiated with the client
     collector: Collector | None = None  # told of each new snapshot, to keep it out of the collector's scans
@@ -179,7 +190,7 @@ class Analyses:
     def snapshot(self, uri: str, text: str, version: int | None) -> Snapshot:
         """The analysis of ``text``, reused while neither it, its partner nor the settings change."""
         settings = self.settings
-        unit, other = partner(uri, settings)
+        unit, other = partner(uri, settings, self.opened())
         other_text = self.read(other) if other is not None else None
         key = (version, text, other_text, settings, self.encoding)
         cached = self._cache.get(uri)

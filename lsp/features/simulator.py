@@ -58,7 +58,7 @@ def register(server: MintServer) -> None:
     @server.command(SIMULATE)
     async def simulate(ls: MintServer, uri: str) -> dict[str, Any] | None:
         settings = ls.analyses.settings
-        unit, other = partner(uri, settings)
+        unit, other = partner(uri, settings, ls.opened())
         # asked for a configuration file, run the program it configures
         program_uri, configuration_uri = (other, uri) if unit is Unit.CONFIGURATION and other else (uri, other)
         source = ls.read_text(program_uri)

@@ -29,6 +29,14 @@ def test_a_partner_on_disk_is_found_whatever_the_case_of_its_name(tmp_path: Path
     assert partner((tmp_path / "app.cfg").as_uri(), DEFAULT) == (Unit.CONFIGURATION, (tmp_path / "APP.MNT").as_uri())
 
 
+def test_an_open_document_not_yet_on_disk_is_found_whatever_the_case_of_its_name(tmp_path: Path) -> None:
+    program = (tmp_path / "APP.MNT").as_uri()
+    unsaved = (tmp_path / "app.cfg").as_uri()  # opened in the editor, never saved
+    elsewhere = (tmp_path / "other" / "app.cfg").as_uri()
+    assert partner(program, DEFAULT, opened=[elsewhere, unsaved]) == (Unit.PROGRAM, unsaved)
+    assert partner(program, DEFAULT, opened=[elsewhere]) == (Unit.PROGRAM, (tmp_path / "APP.cfg").as_uri())
+
+
 def test_a_pattern_names_a_file_beside_the_program_never_a_folder() -> None:
     assert Settings.from_options({"mint": {"configPairing": "cfg/<name>.cfg"}}).config_pairing == "<name>.cfg"
     assert Settings.from_options({"mint": {"configPairing": "setup_<name>.txt"}}).config_pairing == "setup_<name>.txt"

@@ -26,6 +26,8 @@ OWN_CODES: dict[str, str] = {
     "W112": "EXIT outside a loop",
     "W113": "GOTO out of a block",
     "W114": "AUTO ignored",
+    "W115": "Recursive GOSUB",
+    "W116": "GOSUB nested too deep",
     "I201": "Faster dot syntax",
 }
 

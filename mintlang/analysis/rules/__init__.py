@@ -14,6 +14,7 @@ from mintlang.analysis.findings import Finding
 from mintlang.analysis.rules import (
     addressing,
     arrays,
+    calls,
     collisions,
     declarations,
     events,
@@ -60,6 +61,7 @@ RULES: tuple[Rule, ...] = (
     Rule("events", events.check),
     Rule("v3-keywords", each_line=v3_keywords.each_line),
     Rule("flow", flow.check),
+    Rule("calls", calls.check),
     Rule("limits", limits.check),
     Rule("startup", startup.check),
     Rule("collisions", collisions.check),

@@ -59,11 +59,11 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     for unit, document in model.documents():
         lines = [(line, indexed) for file, line, indexed in facts.lines if file is unit]
-        yield from _Flow(unit, document.dialect, _subroutines(unit, model, facts)).findings(lines)
+        yield from _Flow(unit, document.dialect, subroutines(unit, model, facts)).findings(lines)
         yield from _jumps_out_of_blocks(unit, document, model, facts)
 
 
-def _subroutines(unit: Unit, model: SemanticModel, facts: Facts) -> frozenset[str]:
+def subroutines(unit: Unit, model: SemanticModel, facts: Facts) -> frozenset[str]:
     """Labels that start a subroutine: called by GOSUB, called by the controller, or never jumped to at all."""
     gosubs = {
         statement.label.identity  # type: ignore[union-attr]

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from bisect import bisect_right
-from collections.abc import Collection
+from collections.abc import Collection, Sequence
 from operator import attrgetter
 
 from lsprotocol import types
@@ -18,16 +18,16 @@ _START = attrgetter("start")
 WORD_KINDS = WORDS | {TokenKind.LABEL}
 
 
-def token_index(document: Document, offset: int) -> int:
+def token_index(tokens: Sequence[Token], offset: int) -> int:
     """Index of the token containing ``offset`` (the last token at the end of the text); -1 if none."""
-    return bisect_right(document.tokens, offset, key=_START) - 1
+    return bisect_right(tokens, offset, key=_START) - 1
 
 
 def token_at(document: Document, offset: int, kinds: Collection[TokenKind] = WORD_KINDS) -> Token | None:
     """The token of ``kinds`` (a word, by default) under the cursor: containing ``offset``, or ending there
-    (cursor after a word)."""
-    tokens = document.tokens
-    index = token_index(document, offset)
+    (cursor after a word). Only the cursor's line is looked at: a word never runs over a line break."""
+    tokens = document.tokens_in(offset, offset)
+    index = token_index(tokens, offset)
     for candidate in (index, index - 1):
         if 0 <= candidate < len(tokens):
             token = tokens[candidate]

@@ -46,12 +46,12 @@ class _Mention:
 
 def _mentions(unit: Unit, document: Document, offset: int | None = None) -> Iterator[_Mention]:
     """The user names written inside the bodies of this file's macros (of the body at ``offset``, if given)."""
-    tokens = document.tokens
     for definition in document.definitions:
         body = definition.body_span
         if body is None or (offset is not None and not body.start <= offset <= body.end):
             continue
-        index = max(token_index(document, body.start), 0)
+        tokens = document.tokens_in(body.start, body.end)
+        index = max(token_index(tokens, body.start), 0)
         previous: TokenKind | None = None
         while index < len(tokens) and tokens[index].start < body.end:
             token = tokens[index]

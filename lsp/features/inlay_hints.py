@@ -24,8 +24,8 @@ def _hint(snapshot: Snapshot, offset: int, label: str) -> types.InlayHint:
 def hints(snapshot: Snapshot, span: Span) -> Iterator[types.InlayHint]:
     document = snapshot.document
     words = snapshot.settings.words
-    tokens = document.tokens
-    for index in range(max(0, token_index(document, span.start)), len(tokens)):
+    tokens = document.tokens_in(span.start, span.end)
+    for index in range(max(0, token_index(tokens, span.start)), len(tokens)):
         token = tokens[index]
         if token.start > span.end:
             break

@@ -10,6 +10,7 @@ THEN or DO expected, 2008 TO expected.
 
 from __future__ import annotations
 
+from bisect import bisect_right
 from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property
@@ -37,7 +38,7 @@ from mintlang.syntax.lines import (
     take_macro_body,
 )
 from mintlang.syntax.nodes import identity
-from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
+from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, Token, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 _K = TokenKind
@@ -72,6 +73,25 @@ class Document:
     def lines(self) -> tuple[n.Line, ...]:
         with collector_paused():  # tens of thousands of acyclic nodes
             return tuple(line.absolute() for line in self.placed)
+
+    def tokens_in(self, start: int, end: int) -> list[Token]:
+        """The lossless tokens of the physical lines that hold offsets ``start`` to ``end``.
+
+        What a request about a few lines needs, without the whole file's stream (``tokens``):
+        that is tens of thousands of objects, made again for every version.
+        """
+        lines = self.physical
+        index = max(0, bisect_right(lines, start, key=_offset_of) - 1)
+        found: list[Token] = []
+        while index < len(lines) and lines[index][0] <= end:
+            offset, line = lines[index]
+            found.extend(line.tokens(offset))
+            index += 1
+        return found
+
+
+def _offset_of(line: PhysicalLine) -> int:
+    return line[0]
 
 
 @dataclass(frozen=True, slots=True)

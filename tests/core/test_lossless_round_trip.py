@@ -72,3 +72,17 @@ def test_files_in_old_encodings_decode_to_the_same_bytes(data: bytes, encoding: 
 def test_any_bytes_decode_and_round_trip(data: bytes) -> None:
     text, encoding = decode(data)
     assert _joined(text).encode(encoding) == data
+
+
+@given(st.lists(MINT_FRAGMENTS, max_size=40).map("".join), st.integers(0, 400), st.integers(0, 400))
+def test_the_tokens_of_a_range_are_its_whole_lines_of_the_stream(source: str, start: int, length: int) -> None:
+    document = mintlang.parse(source)
+    start = min(start, len(source))
+    end = min(start + length, len(source))
+    found = document.tokens_in(start, end)
+    touching = [token for token in document.tokens if token.start <= end and start <= token.end]
+    assert all(token in found for token in touching)
+    if found:
+        first, joined = found[0].start, "".join(token.text for token in found)
+        assert source[first : first + len(joined)] == joined  # whole lines, in order, nothing left out
+        assert first == 0 or source[first - 1] in "\r\n"

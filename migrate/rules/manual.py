@@ -176,15 +176,42 @@ class EnableOutput(ManualKeywords):
     reason = "RELAY.0 if the relay is the enable signal, else DRIVEENABLE[axes]"
 
 
-class ErrorCodes(ManualKeywords):
+class ErrorCodes(Rule):
     """v3 ERR codes 0..15 have no 1:1 v4 counterpart (motion errors are ERR = 500 plus
-    AXISERROR bits)."""
+    AXISERROR bits): each comparison of ERR with a value is flagged. Reading ERR otherwise
+    (``PRINT ERR``, ``IF ERR``: is there an error at all) means the same in v4."""
 
     id = "X-ERR"
+    rule_class = RuleClass.MANUAL
+    phase = Phase.MANUAL
     summary = "ERR tests -> manual (v4: ERR = 500 for motion errors, AXISERROR bits)"
     evidence = "spec X-ERR; v3:4918-4937; v4:18503-18893"
-    keywords = frozenset({"ERR"})
-    reason = "v3 error numbers differ: motion errors are ERR = 500 with AXISERROR bits in v4"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file, statement, keyword, node in keyword_nodes(context):
+            if keyword == "ERR" and _compared(statement, node):
+                reason = "v3 error numbers differ: motion errors are ERR = 500 with AXISERROR bits in v4"
+                yield self.flag(file, statement.span, f"ERR: {reason}")
+
+
+_COMPARISONS = frozenset({"=", "<>", "<", ">", "<=", ">="})
+
+
+def _compared(statement: n.Statement, node: n.KeywordRef | n.Call) -> bool:
+    """Whether ``node`` is a side of a comparison in ``statement`` (brackets around it included)."""
+    return any(
+        type(expression) is n.Binary
+        and expression.operator in _COMPARISONS  # type: ignore[union-attr]
+        and (_unbracketed(expression.left) is node or _unbracketed(expression.right) is node)  # type: ignore[union-attr]
+        for root in n.expressions_of(statement)
+        for expression in n.walk_expression(root)
+    )
+
+
+def _unbracketed(expression: n.Expression) -> n.Expression:
+    while type(expression) is n.Parenthesised:
+        expression = expression.expression  # type: ignore[union-attr]
+    return expression
 
 
 class ChangedMeaning(ManualKeywords):

@@ -74,6 +74,12 @@ def test_each_manual_rule_flags_and_keeps_the_original(rule: str, source: str) -
     assert len(flagged(rule, source)) == 1
 
 
+def test_only_comparisons_of_err_with_a_number_are_flagged() -> None:
+    # v3 numbered errors 0 .. 15 (v3:4918-4937); whether there is an error at all reads the same in v4
+    assert len(flagged("X-ERR", "IF (ERR) >= 10 AND ERR < 15 THEN x = 1\n")) == 1  # one flag a statement
+    assert flagged("X-ERR", "PRINT ERR\nIF ERR THEN x = 1\ncode = ERR\n") == []
+
+
 def test_invalid_v3_structure_and_labels_are_reported() -> None:
     assert flagged("X-COMMENTED", "GOSUB missing\n#a\nRETURN\n#a\nRETURN\nENDIF\n") == [
         "label #missing is not in this file",

@@ -17,6 +17,7 @@ from collections.abc import Iterable, Sequence
 
 from lsprotocol import types
 
+from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.diagnostics import Span
 from mintlang.lsp.positions import columns
 from mintlang.lsp.server import MintServer
@@ -56,15 +57,26 @@ def encode(snapshot: Snapshot, within: Span | None = None) -> list[int]:
     Line by line from the lexer: a physical line is an LSP line, its tokens
     come as parallel arrays (no token objects, no trivia), and its columns are
     converted to code units once, in a forward pass, and only if it is not ASCII.
+    Within a line the encoding is relative to the line's first token, so each
+    line's is kept while its text and the kinds of user names stay the same:
+    after a keystroke only the edited line is coloured again.
     """
     name_types = _NameTypes(snapshot)
     encoding = snapshot.positions.encoding
     data: list[int] = []
-    previous_line = previous_column = 0
+    previous_line = 0
+    if within is None:
+        for number, (_, line) in _lines(snapshot.document, None):
+            code = _line_code(line, name_types, encoding)
+            if code is not None:
+                start, length, kind, rest = code
+                data.extend((number - previous_line, start, length, kind, 0))
+                data.extend(rest)
+                previous_line = number
+        return data
+    previous_column = 0
     for number, (offset, line) in _lines(snapshot.document, within):
-        tokens = _coloured(line, name_types)
-        if within is not None:
-            tokens = [token for token in tokens if within.start <= offset + token[0] < within.end]
+        tokens = [token for token in _coloured(line, name_types) if within.start <= offset + token[0] < within.end]
         if tokens and not line.text.isascii():
             tokens = _in_code_units(line.text, tokens, encoding)
         for start, end, kind in tokens:
@@ -72,6 +84,31 @@ def encode(snapshot: Snapshot, within: Span | None = None) -> list[int]:
             data.extend((number - previous_line, delta_start, end - start, kind, 0))
             previous_line, previous_column = number, start
     return data
+
+
+_LineCode = tuple[int, int, int, tuple[int, ...]]  # the first token's column, length and type; the others encoded
+_line_codes: RecentCache[tuple[int, str, object], tuple[LexedLine, _LineCode | None]] = RecentCache(LINES_KEPT)
+
+
+def _line_code(line: LexedLine, name_types: _NameTypes, encoding: str) -> _LineCode | None:
+    """The encoding of a line's coloured tokens, none when it has none (kept per line text, encoding and
+    the way user names are coloured: by id, the entry keeping the lexed line alive)."""
+    key = (id(line), encoding, name_types.kinds)
+    cached = _line_codes.get(key)
+    if cached is not None:
+        return cached[1]
+    tokens = _coloured(line, name_types)
+    if tokens and not line.text.isascii():
+        tokens = _in_code_units(line.text, tokens, encoding)
+    code: _LineCode | None = None
+    if tokens:
+        (start, end, kind), encoded, previous = tokens[0], [], tokens[0][0]
+        for later, stop, later_kind in tokens[1:]:
+            encoded.extend((0, later - previous, stop - later, later_kind, 0))
+            previous = later
+        code = (start, end - start, kind, tuple(encoded))
+    _line_codes.put(key, (line, code))
+    return code
 
 
 def _lines(document: Document, within: Span | None) -> Iterable[tuple[int, _Line]]:
@@ -100,6 +137,8 @@ class _NameTypes(dict[str, int]):
         super().__init__()
         symbols = snapshot.model.symbols
         self._macros, self._labels, self._variables = symbols.macros, symbols.labels[snapshot.unit], symbols.variables
+        # Everything the colours of names depend on: the macros, and the labels that are no variable.
+        self.kinds = (frozenset(self._macros), frozenset(self._labels.keys() - self._variables.keys()))
 
     def __missing__(self, text: str) -> int:
         name = identity(text)

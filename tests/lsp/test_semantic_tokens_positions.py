@@ -106,3 +106,17 @@ def test_columns_in_one_pass_are_those_of_positions(lines, data):
             offsets = sorted(data.draw(st.lists(st.integers(0, content), max_size=8)))
             expected = [positions.position(start + offset).character for offset in offsets]
             assert columns(line, offsets, encoding) == expected
+
+
+BASE = 'DEFINE speed = 10\nDIM a\n#lbl\na = speed\nGOSUB lbl\nPRINT a ; "é"\nRETURN\n'
+TYPED = ["speed", "lbl", "a", "\n", "DEFINE lbl = 2\n", "DIM lbl\n", "DIM speed\n", " ", "é😀", ":"]
+
+
+@given(st.integers(0, len(BASE)), st.integers(0, 4), st.sampled_from(["", *TYPED]), st.sampled_from(ENCODINGS))
+def test_after_an_edit_each_line_gets_the_colours_of_its_names_now(where, removed, typed, encoding):
+    # a line's encoding is kept while its text and the colours of names stay the same: a DEFINE or
+    # a DIM added elsewhere recolours the lines that use the name
+    encode(snapshot_of(BASE, encoding))
+    text = BASE[:where] + typed + BASE[where + removed :]
+    edited = snapshot_of(text, encoding)
+    assert encode(edited) == encode(edited, Span(0, len(text)))  # a range is coloured afresh, token by token

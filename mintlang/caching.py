@@ -14,7 +14,7 @@ from typing import Generic, TypeVar
 K = TypeVar("K")
 V = TypeVar("V")
 
-LINES_KEPT = 60_000  # per generation: the lines of the two largest files a server analyses, and room to edit
+LINES_KEPT = 30_000  # per generation: more than the lines of the largest file a server analyses (25,000)
 
 
 class RecentCache(Generic[K, V]):

@@ -15,7 +15,7 @@ import stat
 from pathlib import Path
 from typing import TypeVar
 
-from mintlang.source import decode
+from mintlang.source import read_source
 
 T = TypeVar("T")
 
@@ -41,7 +41,7 @@ def read_text(path: Path, max_bytes: int) -> str | None:
     if kept is not None and kept[0] == stamp:
         return kept[1]
     try:
-        text = decode(path.read_bytes())[0]
+        text = read_source(path).text
     except OSError as error:
         log.warning("cannot read %s: %s", path, error)
         return None

@@ -12,7 +12,6 @@ costing its length once, and the two encodings are compared a block at a time.
 from __future__ import annotations
 
 import itertools
-from bisect import bisect_left, bisect_right
 from collections.abc import Iterable, Sequence
 
 from lsprotocol import types
@@ -23,6 +22,7 @@ from mintlang.lsp.positions import columns
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.syntax.lexer import LexedLine
+from mintlang.syntax.lines import PhysicalLine
 from mintlang.syntax.nodes import identity
 from mintlang.syntax.parser import Document
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
@@ -47,7 +47,6 @@ for _kind in (TokenKind.AND, TokenKind.OR, TokenKind.NOT, TokenKind.MOD, TokenKi
 _NAME = TokenKind.NAME
 
 
-_Line = tuple[int, LexedLine]  # a physical line and its offset, as the lexer gives them
 _Coloured = tuple[int, int, int]  # start and end in its line, type
 
 
@@ -111,7 +110,7 @@ def _line_code(line: LexedLine, name_types: _NameTypes, encoding: str) -> _LineC
     return code
 
 
-def _lines(document: Document, within: Span | None) -> Iterable[tuple[int, _Line]]:
+def _lines(document: Document, within: Span | None) -> Iterable[tuple[int, PhysicalLine]]:
     """The numbered physical lines that may hold tokens starting in ``within`` (all without it).
 
     Read from the lexed lines rather than ``document.tokens``: the lossless
@@ -120,13 +119,8 @@ def _lines(document: Document, within: Span | None) -> Iterable[tuple[int, _Line
     lines = document.physical
     if within is None:
         return enumerate(lines)
-    first = max(0, bisect_right(lines, within.start, key=_offset) - 1)
-    last = bisect_left(lines, within.end, key=_offset)
-    return enumerate(lines[first:last], first)
-
-
-def _offset(line: _Line) -> int:
-    return line[0]
+    indices = document.physical_between(within.start, within.end)
+    return enumerate(lines[indices.start : indices.stop], indices.start)
 
 
 class _NameTypes(dict[str, int]):

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
+from functools import cache
 
 from mintlang.allocation import without_collector
 from mintlang.analysis.findings import Finding
@@ -48,6 +49,7 @@ def clear_cache() -> None:
     _line_findings.clear()
 
 
+@cache
 def _rules_for(dialect: Dialect) -> tuple[tuple[Rule, ...], tuple[Rule, ...]]:
     """The rules that read one line, and those that read the whole application."""
     rules = [rule for rule in RULES if dialect in rule.dialects]

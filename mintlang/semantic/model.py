@@ -66,15 +66,12 @@ def build_model(
 ) -> SemanticModel:
     """Resolve names and blocks of a program and its optional configuration file."""
     target = profile(controller)
-    documents = [(Unit.CONFIGURATION, configuration)] if configuration is not None else []
-    lines = tuple(
-        indexed
-        for unit, document in [*documents, (Unit.PROGRAM, program)]
-        for indexed in index_lines(unit, document.placed)
-    )
+    configured = [(Unit.CONFIGURATION, configuration)] if configuration is not None else []
+    documents = [*configured, (Unit.PROGRAM, program)]  # in compile order
+    lines = tuple(indexed for unit, document in documents for indexed in index_lines(unit, document.placed))
     structures = {
         unit: match_blocks(((placed, facts) for file, placed, facts in lines if file is unit), target)
-        for unit, _ in [*documents, (Unit.PROGRAM, program)]
+        for unit, _ in documents
     }
     symbols = build_symbols(program, configuration, lines)
     return SemanticModel(program, configuration, target, symbols, structures, lines)

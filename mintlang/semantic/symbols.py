@@ -149,7 +149,7 @@ class _Collector:
             if kind is _BARE:
                 continue
             name = event.name
-            span = new(Span, (name.span.start + origin, name.span.end + origin))
+            span = new(Span, (name.span.start + origin, name.span.end + origin))  # line.span(), inlined: per name
             if kind is _DECLARE:
                 self.declare(name, span, unit, event.size)
                 continue

@@ -74,6 +74,12 @@ class Document:
         with collector_paused():  # tens of thousands of acyclic nodes
             return tuple(line.absolute() for line in self.placed)
 
+    def physical_between(self, start: int, end: int) -> range:
+        """The indices in ``physical`` of the lines that hold offsets ``start`` to ``end``."""
+        lines = self.physical
+        first = max(0, bisect_right(lines, start, key=_offset_of) - 1)
+        return range(first, max(first, bisect_right(lines, end, key=_offset_of)))
+
     def tokens_in(self, start: int, end: int) -> list[Token]:
         """The lossless tokens of the physical lines that hold offsets ``start`` to ``end``.
 
@@ -81,12 +87,10 @@ class Document:
         that is tens of thousands of objects, made again for every version.
         """
         lines = self.physical
-        index = max(0, bisect_right(lines, start, key=_offset_of) - 1)
         found: list[Token] = []
-        while index < len(lines) and lines[index][0] <= end:
+        for index in self.physical_between(start, end):
             offset, line = lines[index]
             found.extend(line.tokens(offset))
-            index += 1
         return found
 
 
@@ -179,7 +183,7 @@ def _parse_group(
     group: LineGroup, visible: Mapping[str, MacroDefinition], words: Vocabulary, dialect: Dialect
 ) -> _ParsedLine:
     line = group.tokens()
-    defined = take_macro_body(line) if TokenKind.DEFINE in line.kinds else []
+    defined = take_macro_body(line)
     expansions: list[Expansion] = []
     if visible:
         expand_macros(line, visible, expansions)

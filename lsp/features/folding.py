@@ -19,11 +19,11 @@ def _fold(first: int, last: int) -> Iterator[types.FoldingRange]:
 
 def folding_ranges(snapshot: Snapshot) -> Iterator[types.FoldingRange]:
     for block in snapshot.model.structures[snapshot.unit].blocks:
-        if block.closer_line is None:
+        if block.closer is None:
             continue
-        opener, closer = block.opener_line - 1, block.closer_line - 1
-        if block.middle_line is not None:
-            middle = block.middle_line - 1
+        opener, closer = block.opener.line - 1, block.closer.line - 1
+        if block.middle is not None:
+            middle = block.middle.line - 1
             yield from _fold(opener, middle - 1)
             yield from _fold(middle, closer - 1)
         else:

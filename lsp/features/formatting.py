@@ -26,13 +26,13 @@ def _depths(snapshot: Snapshot) -> list[int]:
     count = positions.line_count
     change = [0] * (count + 1)
     for block in snapshot.model.structures[snapshot.unit].blocks:
-        first = block.opener_line  # 0-based line after the opener
-        last = block.closer_line - 1 if block.closer_line is not None else count  # 0-based closer, excluded
+        first = block.opener.line  # 0-based line after the opener
+        last = block.closer.line - 1 if block.closer is not None else count  # 0-based closer, excluded
         if first < last:
             change[first] += 1
             change[last] -= 1
-        if block.middle_line is not None:
-            middle = block.middle_line - 1
+        if block.middle is not None:
+            middle = block.middle.line - 1
             change[middle] -= 1
             change[middle + 1] += 1
     depths, depth = [], 0

@@ -18,6 +18,7 @@ from lsprotocol import types
 
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.diagnostics import Span
+from mintlang.dialect import Dialect
 from mintlang.lsp.positions import columns
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
@@ -66,7 +67,7 @@ def encode(snapshot: Snapshot, within: Span | None = None) -> list[int]:
     previous_line = 0
     if within is None:
         for number, (_, line) in _lines(snapshot.document, None):
-            code = _line_code(line, name_types, encoding)
+            code = _line_code(line, snapshot.document.dialect, name_types, encoding)
             if code is not None:
                 start, length, kind, rest = code
                 data.extend((number - previous_line, start, length, kind, 0))
@@ -86,16 +87,16 @@ def encode(snapshot: Snapshot, within: Span | None = None) -> list[int]:
 
 
 _LineCode = tuple[int, int, int, tuple[int, ...]]  # the first token's column, length and type; the others encoded
-_line_codes: RecentCache[tuple[int, str, object], tuple[LexedLine, _LineCode | None]] = RecentCache(LINES_KEPT)
+_line_codes: RecentCache[tuple[str, Dialect, str, object], tuple[_LineCode | None]] = RecentCache(LINES_KEPT)
 
 
-def _line_code(line: LexedLine, name_types: _NameTypes, encoding: str) -> _LineCode | None:
-    """The encoding of a line's coloured tokens, none when it has none (kept per line text, encoding and
-    the way user names are coloured: by id, the entry keeping the lexed line alive)."""
-    key = (id(line), encoding, name_types.kinds)
+def _line_code(line: LexedLine, dialect: Dialect, name_types: _NameTypes, encoding: str) -> _LineCode | None:
+    """The encoding of a line's coloured tokens, none when it has none (kept per line text, dialect, encoding
+    and the way user names are coloured)."""
+    key = (line.text, dialect, encoding, name_types.kinds)
     cached = _line_codes.get(key)
     if cached is not None:
-        return cached[1]
+        return cached[0]
     tokens = _coloured(line, name_types)
     if tokens and not line.text.isascii():
         tokens = _in_code_units(line.text, tokens, encoding)
@@ -106,7 +107,7 @@ def _line_code(line: LexedLine, name_types: _NameTypes, encoding: str) -> _LineC
             encoded.extend((0, later - previous, stop - later, later_kind, 0))
             previous = later
         code = (start, end - start, kind, tuple(encoded))
-    _line_codes.put(key, (line, code))
+    _line_codes.put(key, (code,))
     return code
 
 

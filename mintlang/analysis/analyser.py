@@ -8,7 +8,7 @@ already holds.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Hashable, Iterable
 from dataclasses import dataclass
 from functools import cache
 
@@ -41,8 +41,8 @@ def _selected(code: str, select: Iterable[str] | None, ignore: Iterable[str]) ->
     return select is None or any(code.startswith(prefix) for prefix in select)
 
 
-_LineKey = tuple[Unit, int, Controller, Dialect]  # id() of the line syntax, which the entry keeps alive
-_line_findings: RecentCache[_LineKey, tuple[n.LineSyntax, tuple[Diagnostic, ...]]] = RecentCache(LINES_KEPT)
+_LineKey = tuple[Unit, Hashable, Controller, Dialect]  # what the line was parsed from, and where it is checked
+_line_findings: RecentCache[_LineKey, tuple[Diagnostic, ...]] = RecentCache(LINES_KEPT)
 
 
 def clear_cache() -> None:
@@ -57,20 +57,20 @@ def _rules_for(dialect: Dialect) -> tuple[tuple[Rule, ...], tuple[Rule, ...]]:
 
 
 def _findings_of_line(
-    unit: Unit, syntax: n.LineSyntax, facts: LineFacts, controller: ControllerProfile, dialect: Dialect
+    unit: Unit, line: n.PlacedLine, facts: LineFacts, controller: ControllerProfile, dialect: Dialect
 ) -> tuple[Diagnostic, ...]:
-    """What the line rules find in one line, at its own offsets: computed once per line syntax."""
-    key = (unit, id(syntax), controller.controller, dialect)
+    """What the line rules find in one line, at its own offsets: computed once per line text."""
+    key = (unit, line.content, controller.controller, dialect)
     cached = _line_findings.get(key)
     if cached is not None:
-        return cached[1]
-    scope = LineScope(unit, syntax, facts, controller, dialect)
+        return cached
+    scope = LineScope(unit, line.syntax, facts, controller, dialect)
     found = tuple(
         finding.diagnostic
         for rule in _rules_for(dialect)[0]
         for finding in rule.each_line(scope)  # type: ignore[misc]
     )
-    _line_findings.put(key, (syntax, found))
+    _line_findings.put(key, found)
     return found
 
 
@@ -85,7 +85,7 @@ def analyse(model: SemanticModel, *, select: Iterable[str] | None = None, ignore
         findings.extend(Finding(unit, diagnostic) for diagnostic in model.structures[unit].diagnostics)
     dialect, controller = model.program.dialect, model.controller
     for unit, line, facts in model.lines:
-        found = _findings_of_line(unit, line.syntax, facts, controller, dialect)
+        found = _findings_of_line(unit, line, facts, controller, dialect)
         if found:
             findings.extend(Finding(unit, diagnostic.shifted(line.origin)) for diagnostic in found)
     facts = gather(model)

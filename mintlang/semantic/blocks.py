@@ -13,10 +13,11 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 from enum import StrEnum
+from typing import NamedTuple
 
 from mintlang.codes import mint_error, own
 from mintlang.controllers import ControllerProfile, NestingLimits
-from mintlang.diagnostics import Diagnostic
+from mintlang.diagnostics import Diagnostic, Span
 from mintlang.semantic.index import LineFacts
 from mintlang.syntax import nodes as n
 
@@ -46,20 +47,27 @@ LOOPS = frozenset({BlockKind.FOR, BlockKind.REPEAT, BlockKind.WHILE, BlockKind.L
 _BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.For, n.While, n.Until, n.SyntaxError_})
 
 
-@dataclass(frozen=True, slots=True)
-class Block:
-    """A matched (or unclosed) block; the LSP folds it, the runtime compiles its jumps.
+class Place(NamedTuple):
+    """Where a statement stands in its file: the line it starts on and its index among that line's statements.
 
-    The statements are those of the lines' position-free syntax (``Document.placed``).
+    The index counts the statements of ``LineFacts.statements``, so the body of an
+    ``IF .. THEN`` counts after its ``IF``. Tools key what they know about a
+    statement by its place: the syntax objects are shared by every line of the
+    same text (see ``mintlang.syntax.parser``), so they can never name one.
     """
 
+    line: int
+    index: int
+
+
+@dataclass(frozen=True, slots=True)
+class Block:
+    """A matched (or unclosed) block, by the places of its statements; the LSP folds it, the runtime compiles it."""
+
     kind: BlockKind
-    opener: n.Statement
-    opener_line: int
-    middle: n.Statement | None  # the ELSE of an IF block
-    middle_line: int | None
-    closer: n.Statement | None  # None when never closed
-    closer_line: int | None
+    opener: Place
+    middle: Place | None  # the ELSE of an IF block
+    closer: Place | None  # None when never closed
 
 
 @dataclass(frozen=True, slots=True)
@@ -71,11 +79,9 @@ class Structure:
 @dataclass(slots=True)
 class _Open:
     kind: BlockKind
-    opener: n.Statement
-    line: int
-    origin: int  # of the opener's line: where its diagnostics go
-    middle: n.Statement | None = None
-    middle_line: int | None = None
+    opener: Place
+    span: Span  # of the opener, in its file: where its diagnostics go
+    middle: Place | None = None
 
 
 _OPENING_WORDS = {"REPEAT": BlockKind.REPEAT, "LOOP": BlockKind.LOOP}
@@ -109,51 +115,49 @@ class _Matcher:
         self.blocks: list[Block] = []
         self.diagnostics: list[Diagnostic] = []
 
-    def statement(self, statement: n.Statement, line: n.PlacedLine) -> None:
-        """One statement of ``_BLOCK_STATEMENTS``."""
+    def statement(self, statement: n.Statement, line: n.PlacedLine, index: int) -> None:
+        """One statement of ``_BLOCK_STATEMENTS``, the ``index``-th of its line."""
         kind = _opener_kind(statement)
+        place = Place(line.number, index)
         if kind is not None:
-            self.stack.append(_Open(kind, statement, line.number, line.origin))
+            self.stack.append(_Open(kind, place, line.span(statement.span)))
             self.open[kind] += 1
             problem = _nesting_problem(self.open, self.limits)
             if problem is not None:
                 self.diagnostics.append(_error(2015, line.span(statement.span), problem))
         elif isinstance(statement, n.Until) or (isinstance(statement, n.SyntaxError_) and statement.closes == "UNTIL"):
-            self.close(BlockKind.REPEAT, statement, line, 2013, "UNTIL without REPEAT")
+            self.close(BlockKind.REPEAT, place, line.span(statement.span), 2013, "UNTIL without REPEAT")
         elif isinstance(statement, n.SyntaxError_) and statement.closes in _CLOSERS:
             expected, code, message = _CLOSERS[statement.closes]
-            self.close(expected, statement, line, code, message)
+            self.close(expected, place, line.span(statement.span), code, message)
         elif isinstance(statement, n.BlockWord) and statement.word == "ELSE":
             top = self.stack[-1] if self.stack else None
             if top is None or top.kind is not BlockKind.IF or top.middle is not None:
                 self.diagnostics.append(_error(2011, line.span(statement.span), "ELSE without IF .. DO"))
             else:
-                top.middle, top.middle_line = statement, line.number
+                top.middle = place
         elif isinstance(statement, n.BlockWord) and statement.word in _CLOSERS:
             expected, code, message = _CLOSERS[statement.word]
-            self.close(expected, statement, line, code, message)
+            self.close(expected, place, line.span(statement.span), code, message)
 
-    def close(self, kind: BlockKind, closer: n.Statement, line: n.PlacedLine, code: int, message: str) -> None:
+    def close(self, kind: BlockKind, closer: Place, span: Span, code: int, message: str) -> None:
         stack = self.stack
         if not stack or stack[-1].kind is not kind:
             if stack:
-                message += f" (the innermost open block is {stack[-1].kind.value} on line {stack[-1].line})"
-            self.diagnostics.append(_error(code, line.span(closer.span), message))
+                message += f" (the innermost open block is {stack[-1].kind.value} on line {stack[-1].opener.line})"
+            self.diagnostics.append(_error(code, span, message))
             return
         top = stack.pop()
         self.open[kind] -= 1
-        self.blocks.append(Block(kind, top.opener, top.line, top.middle, top.middle_line, closer, line.number))
+        self.blocks.append(Block(kind, top.opener, top.middle, closer))
 
     def finish(self) -> Structure:
         for unclosed in self.stack:
-            opener = unclosed.opener
-            self.blocks.append(
-                Block(unclosed.kind, opener, unclosed.line, unclosed.middle, unclosed.middle_line, None, None)
-            )
+            self.blocks.append(Block(unclosed.kind, unclosed.opener, unclosed.middle, None))
             word = _CLOSING_WORD[unclosed.kind]
             detail = f"this {unclosed.kind.value} block is never closed with {word}"
-            self.diagnostics.append(own("W110", opener.span.shifted(unclosed.origin), detail))
-        self.blocks.sort(key=lambda block: (block.opener_line, block.opener.span.start))
+            self.diagnostics.append(own("W110", unclosed.span, detail))
+        self.blocks.sort(key=lambda block: block.opener)
         return Structure(tuple(self.blocks), tuple(self.diagnostics))
 
 
@@ -162,9 +166,9 @@ def match_blocks(lines: Iterable[tuple[n.PlacedLine, LineFacts]], controller: Co
     matcher = _Matcher(controller.nesting)
     for line, facts in lines:
         if not facts.kinds.isdisjoint(_BLOCK_STATEMENTS):  # most lines open and close nothing
-            for statement in facts.statements:
+            for index, statement in enumerate(facts.statements):
                 if type(statement) in _BLOCK_STATEMENTS:
-                    matcher.statement(statement, line)
+                    matcher.statement(statement, line, index)
     return matcher.finish()
 
 

@@ -13,7 +13,7 @@ files (``index_syntax``).
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Hashable, Iterable
 from dataclasses import dataclass
 from enum import StrEnum
 from typing import NamedTuple
@@ -143,8 +143,8 @@ def index_syntax(documents: Iterable[tuple[Unit, Document]]) -> SyntaxIndex:
     return SyntaxIndex(tuple(statements), tuple(walker.uses), tuple(walker.elements), tuple(walker.names))
 
 
-# By id(syntax): each entry keeps its syntax alive, so the id is not reused while the entry lasts.
-_facts: RecentCache[tuple[Unit, int], tuple[n.LineSyntax, LineFacts]] = RecentCache(LINES_KEPT)
+# By what the line was parsed from: the facts hold no place, so equal lines share them.
+_facts: RecentCache[tuple[Unit, Hashable], LineFacts] = RecentCache(LINES_KEPT)
 
 
 def clear_cache() -> None:
@@ -153,20 +153,20 @@ def clear_cache() -> None:
 
 def index_lines(unit: Unit, lines: Iterable[n.PlacedLine]) -> list[tuple[Unit, n.PlacedLine, LineFacts]]:
     """Each line of a file of ``unit`` with its index."""
-    return [(unit, line, line_facts(unit, line.syntax)) for line in lines]
+    return [(unit, line, line_facts(unit, line)) for line in lines]
 
 
-def line_facts(unit: Unit, syntax: n.LineSyntax) -> LineFacts:
-    """The index of one line of ``unit``, walked once per line syntax (the parser shares unchanged ones)."""
-    key = (unit, id(syntax))
+def line_facts(unit: Unit, line: n.PlacedLine) -> LineFacts:
+    """The index of one line of ``unit``, walked once per line text (the parser shares unchanged ones)."""
+    key = (unit, line.content)
     cached = _facts.get(key)
     if cached is not None:
-        return cached[1]
+        return cached
     walker = _Walker()
-    statements = n.flatten_statements(syntax.statements)
+    statements = n.flatten_statements(line.syntax.statements)
     for statement in statements:
         walker.statement(unit, statement)
     elements = tuple(element for _, element in walker.elements)
     facts = LineFacts(statements, tuple(walker.uses), elements, tuple(walker.names), frozenset(map(type, statements)))
-    _facts.put(key, (syntax, facts))
+    _facts.put(key, facts)
     return facts

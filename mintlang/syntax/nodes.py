@@ -9,7 +9,7 @@ Names keep their spelling; ``identity`` gives the controller's view of a name
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Hashable, Iterator
 from operator import attrgetter
 from typing import TypeVar
 
@@ -381,11 +381,17 @@ class LineSyntax:
 
 @node
 class PlacedLine:
-    """A ``LineSyntax`` at its place in a file: ``origin`` is the offset of its first physical line."""
+    """A ``LineSyntax`` at its place in a file: ``origin`` is the offset of its first physical line.
+
+    Equal lines share one ``syntax`` object, so the syntax names no place: what
+    is known of a statement's place is keyed by ``number`` and the statement's
+    index, and what is cached per line text by ``content``.
+    """
 
     origin: int
     number: int  # 1-based physical line it starts on
     syntax: LineSyntax
+    content: Hashable  # what the syntax was parsed from (text, dialect, controller, macros named): a cache key
 
     def span(self, relative: Span) -> Span:
         """Where ``relative``, a span of this line's syntax, is in the file."""

@@ -1,7 +1,12 @@
 """Parsing a whole source: lexing, logical lines, macros, grammar, recovery.
 
 Each logical line is parsed on its own, so a syntax error never stops the rest
-of the file from being parsed; inside a failing line, the statements between
+of the file from being parsed. Lines are parsed once per text and macro
+context, and every line of the same text shares the one syntax object: never
+use a syntax object (its ``id()``, or its value) to name a line or a statement.
+A statement is named by its place (file, line number, index among the line's
+statements: ``mintlang.semantic.blocks.Place``); what is cached per line is
+keyed by ``PlacedLine.content``, the text it was parsed from; inside a failing line, the statements between
 ``:`` separators are retried one by one so that only the broken statement is
 lost. Parse errors get the controller's error numbers where the manual gives
 one: 2003 syntax error, 2004 brackets, 2006 keyword used as a variable, 2007
@@ -159,7 +164,7 @@ def parse(
             expansions.extend(expansion.shifted(origin) for expansion in parsed.expansions)
         if parsed.diagnostics:
             diagnostics.extend(diagnostic.shifted(origin) for diagnostic in parsed.diagnostics)
-        placed.append(n.PlacedLine(origin, group.number, parsed.syntax))
+        placed.append(n.PlacedLine(origin, group.number, parsed.syntax, key))
     return Document(
         source,
         dialect,

@@ -15,11 +15,11 @@ from dataclasses import dataclass
 
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.interpreter.expressions import ExpressionCompiler, Names
-from mintlang.runtime.interpreter.statements import FileLayout, StatementCompiler, layout_size
+from mintlang.runtime.interpreter.statements import FileLayout, StatementCompiler
 from mintlang.runtime.interpreter.vm import Interpreter, Site, StopReason
 from mintlang.runtime.keywords import KeywordTable
 from mintlang.runtime.terminal import Terminal
-from mintlang.semantic.blocks import Block
+from mintlang.semantic.blocks import Block, Place
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -47,7 +47,7 @@ def link(model: SemanticModel, vm: Interpreter, table: KeywordTable, terminal: T
         positions, labels, size = _layout(document, start)
         end_of_unit = start + size
         last_unit = position == len(units) - 1
-        blocks = _blocks_by_statement(model.structures[unit].blocks)
+        blocks = _blocks_by_place(model.structures[unit].blocks)
         on_end = _end_of_program(vm) if last_unit else _continue_with_program(vm, end_of_unit)
         layout = FileLayout(positions, blocks, labels, end_of_unit, on_end)
         compiler = StatementCompiler(vm, table, terminal, expressions, layout)
@@ -55,54 +55,36 @@ def link(model: SemanticModel, vm: Interpreter, table: KeywordTable, terminal: T
             vm.program_start = start
         handlers[unit] = labels
         for line in document.placed:
-            for statement in line.syntax.statements:
-                _emit(compiler, vm, statement, unit=unit, line=line.number, text=line.syntax.text)
+            text = line.syntax.text
+            for index, statement in enumerate(n.flatten_statements(line.syntax.statements)):
+                pc = len(vm.operations)
+                vm.operations.append(compiler.compile(statement, Place(line.number, index), pc))
+                vm.sites.append(Site(unit.value, line.number, text[statement.span.start : statement.span.end].strip()))
         start = end_of_unit
     return Linked(handlers.get(Unit.PROGRAM, {}), handlers.get(Unit.CONFIGURATION, {}), names)
 
 
-def _emit(
-    compiler: StatementCompiler, vm: Interpreter, statement: n.Statement, *, unit: Unit, line: int, text: str
-) -> None:
-    """Compile one statement of a line whose syntax was parsed from ``text``."""
-    pc = len(vm.operations)
-    vm.operations.append(compiler.compile(statement, pc))
-    vm.sites.append(Site(unit.value, line, text[statement.span.start : statement.span.end].strip()))
-    if type(statement) is n.IfThen:
-        for inner in statement.body:
-            _emit(compiler, vm, inner, unit=unit, line=line, text=text)
-
-
-def _layout(document: Document, start: int) -> tuple[dict[int, int], dict[str, int], int]:
-    """The pc of every statement and label of one file, starting at ``start``."""
-    positions: dict[int, int] = {}
+def _layout(document: Document, start: int) -> tuple[dict[Place, int], dict[str, int], int]:
+    """The pc of every statement (by its place: equal lines share their syntax) and label of one file."""
+    positions: dict[Place, int] = {}
     labels: dict[str, int] = {}
     pc = start
-
-    def place(statement: n.Statement) -> None:
-        nonlocal pc
-        positions[id(statement)] = pc
-        pc += 1
-        if type(statement) is n.IfThen:
-            for inner in statement.body:
-                place(inner)
-
     for line in document.placed:
         syntax = line.syntax
         if syntax.label is not None:
             labels.setdefault(syntax.label.identity, pc)
-        for statement in syntax.statements:
-            place(statement)
-    assert pc - start == sum(layout_size(s) for line in document.placed for s in line.syntax.statements)
+        for index in range(len(n.flatten_statements(syntax.statements))):
+            positions[Place(line.number, index)] = pc
+            pc += 1
     return positions, labels, pc - start
 
 
-def _blocks_by_statement(blocks: tuple[Block, ...]) -> dict[int, Block]:
-    found: dict[int, Block] = {}
+def _blocks_by_place(blocks: tuple[Block, ...]) -> dict[Place, Block]:
+    found: dict[Place, Block] = {}
     for block in blocks:
-        for statement in (block.opener, block.middle, block.closer):
-            if statement is not None:
-                found[id(statement)] = block
+        for place in (block.opener, block.middle, block.closer):
+            if place is not None:
+                found[place] = block
     return found
 
 

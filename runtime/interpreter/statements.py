@@ -19,7 +19,7 @@ from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordTable
 from mintlang.runtime.numbers import f32
 from mintlang.runtime.printing import format_bin, format_chr, format_hex, format_number, format_using
 from mintlang.runtime.terminal import Terminal
-from mintlang.semantic.blocks import Block
+from mintlang.semantic.blocks import Block, Place
 from mintlang.syntax import nodes as n
 
 WRITE_OF_READ_ONLY = 2000
@@ -40,8 +40,8 @@ def layout_size(statement: n.Statement) -> int:
 class FileLayout:
     """Where everything of one file sits in the operation list."""
 
-    positions: Mapping[int, int]  # id(statement) -> pc
-    blocks: Mapping[int, Block]  # id(opener, middle or closer) -> its block
+    positions: Mapping[Place, int]  # the pc of the statement at each place
+    blocks: Mapping[Place, Block]  # the block of each opener, middle and closer
     labels: Mapping[str, int]  # label identity -> pc
     end: int  # the pc after the file's last operation
     on_end: Callable[[], None]  # what END does in this file
@@ -67,22 +67,30 @@ class StatementCompiler:
         self.labels = layout.labels
         self.end_of_unit = layout.end
         self.on_end = layout.on_end
+        self.place = Place(0, 0)  # of the statement being compiled
 
-    def compile(self, statement: n.Statement, pc: int) -> Operation:
+    def compile(self, statement: n.Statement, place: Place, pc: int) -> Operation:
+        """The operation of ``statement``, which stands at ``place`` and is laid out at ``pc``."""
         kind = type(statement)
         method = _DISPATCH.get(kind)
         if method is None:
             raise NotSimulated(kind.__name__, "statement")
+        self.place = place
         return method(self, statement, pc)
 
     # ---------------------------------------------------------------- helpers
 
-    def _after(self, statement: n.Statement | None) -> int:
+    def _after(self, place: Place | None) -> int:
         """The pc after a block statement; the end of the file when the block is never closed."""
-        return self.end_of_unit if statement is None else self.positions[id(statement)] + 1
+        return self.end_of_unit if place is None else self.positions[place] + 1
 
-    def _block(self, statement: n.Statement) -> Block:
-        return self.blocks[id(statement)]
+    def _block(self) -> Block | None:
+        """The block of the statement being compiled; None for a closer without its opener."""
+        return self.blocks.get(self.place)
+
+    def _opened(self) -> Block:
+        """The block the opener being compiled opens (an unclosed one too)."""
+        return self.blocks[self.place]
 
     def _recover(self, pc: int, resume: int, loop: int | None = None) -> None:
         """An error in the block statement at ``pc`` resumes at ``resume``, leaving ``loop``, not in the block."""
@@ -297,7 +305,7 @@ class StatementCompiler:
         return branch
 
     def if_do(self, statement: n.IfDo, pc: int) -> Operation:
-        block = self._block(statement)
+        block = self._opened()
         condition = self.expressions.compile(statement.condition)
         otherwise = self._after(block.middle) if block.middle is not None else self._after(block.closer)
         self._recover(pc, self._after(block.closer))
@@ -310,7 +318,7 @@ class StatementCompiler:
         return branch
 
     def for_(self, statement: n.For, pc: int) -> Operation:
-        block = self._block(statement)
+        block = self._opened()
         self.expressions.variable(statement.variable)
         slot = self.expressions.names.scalars[statement.variable.identity]
         start = self.expressions.compile(statement.start)
@@ -337,9 +345,9 @@ class StatementCompiler:
         vm = self.vm
         block_word = _BLOCK_WORDS.get(word)
         if block_word is not None:
-            block = self.blocks.get(id(statement))
+            block = self._block()
             if block is None:
-                return _nothing  # an unmatched closer is a compile error; an unclosed opener runs once
+                return _nothing  # an unmatched closer is a compile error, so the program never runs
             return block_word(self, block, pc)
         if word == "EXIT":
             return self._exit()
@@ -362,7 +370,7 @@ class StatementCompiler:
         return skip
 
     def _next(self, block: Block, pc: int) -> Operation:
-        opener = self.positions[id(block.opener)]
+        opener = self.positions[block.opener]
         self._recover(pc, pc + 1, opener)
         vm = self.vm
         scalars = vm.scalars
@@ -392,7 +400,7 @@ class StatementCompiler:
         return enter
 
     def _endl(self, block: Block, pc: int) -> Operation:
-        opener = self.positions[id(block.opener)]
+        opener = self.positions[block.opener]
         vm = self.vm
 
         def again() -> None:
@@ -401,11 +409,11 @@ class StatementCompiler:
         return again
 
     def until(self, statement: n.Until, pc: int) -> Operation:
-        block = self.blocks.get(id(statement))
+        block = self._block()
         condition = self.expressions.compile(statement.condition)
         if block is None:
             return lambda: bool(condition()) and None
-        opener = self.positions[id(block.opener)]
+        opener = self.positions[block.opener]
         self._recover(pc, pc + 1, opener)
         vm = self.vm
 
@@ -418,7 +426,7 @@ class StatementCompiler:
         return until
 
     def while_(self, statement: n.While, pc: int) -> Operation:
-        block = self._block(statement)
+        block = self._opened()
         condition = self.expressions.compile(statement.condition)
         exit_pc = self._after(block.closer)
         self._recover(pc, exit_pc, pc)
@@ -435,7 +443,7 @@ class StatementCompiler:
         return while_
 
     def _endw(self, block: Block, pc: int) -> Operation:
-        opener = self.positions[id(block.opener)]
+        opener = self.positions[block.opener]
         vm = self.vm
 
         def again() -> None:

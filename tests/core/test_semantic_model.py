@@ -165,7 +165,7 @@ def test_a_block_that_is_never_closed_is_a_warning_at_its_opener() -> None:
 def test_matched_blocks_are_recorded_with_their_lines() -> None:
     source = "DIM a\nIF a DO\nGO\nELSE\nSTOP\nENDIF\nLOOP\nENDL\n"
     blocks = model(source).structures[Unit.PROGRAM].blocks
-    assert [(b.kind, b.opener_line, b.closer_line, b.middle is not None) for b in blocks] == [
+    assert [(b.kind, b.opener.line, b.closer.line, b.middle is not None) for b in blocks] == [
         (BlockKind.IF, 2, 6, True),
         (BlockKind.LOOP, 7, 8, False),
     ]

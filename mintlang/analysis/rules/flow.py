@@ -106,7 +106,7 @@ class _Flow:
         self.falling_from_main = False
         self.loops: list[_Loop] = []
         self.ifs: list[_If] = []
-        self.line = n.PlacedLine(0, 0, n.LineSyntax("", Span(0, 0), None, ()))  # the line being followed
+        self.line = n.PlacedLine(0, 0, n.LineSyntax("", Span(0, 0), None, ()), "")  # the line being followed
         self.found: list[Finding] = []
 
     def findings(self, lines: Iterable[tuple[n.PlacedLine, LineFacts]]) -> list[Finding]:
@@ -247,12 +247,12 @@ def _jumps_out_of_blocks(unit: Unit, document: Document, model: SemanticModel, f
         left = [block for block in blocks if _contains(block, line.number) and not _contains(block, target)]
         if left:
             detail = (
-                f"GOTO {statement.label.text} leaves the {left[-1].kind.value} block of line {left[-1].opener_line} "
+                f"GOTO {statement.label.text} leaves the {left[-1].kind.value} block of line {left[-1].opener.line} "
                 "open; done repeatedly, this overflows the stack (error 2015)"
             )
             yield Finding(unit, own("W113", line.span(statement.span), detail))
 
 
 def _contains(block: Block, line: int) -> bool:
-    end = block.closer_line if block.closer_line is not None else math.inf
-    return block.opener_line <= line <= end
+    end = block.closer.line if block.closer is not None else math.inf
+    return block.opener.line <= line <= end

@@ -40,7 +40,7 @@ from mintlang.runtime.scenario import (
     merge,
     render_outcomes,
 )
-from mintlang.runtime.scenario.stimulus import Scenario
+from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
 from mintlang.runtime.simulation import Interrupt, Limits
 from mintlang.runtime.trace import PlotUnavailable, Trace
 from mintlang.source import read_source
@@ -98,6 +98,11 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
     type=click.Path(path_type=Path),
     help="TOML scenario whose expectations decide the exit status (repeatable).",
 )
+@click.option(
+    "--drives",
+    type=click.Choice(["enabled"]),
+    help="Start with every drive enabled, as a bench configuration would (they start disabled, as at power-up).",
+)
 @click.option("--until-ms", type=click.IntRange(min=0), help="Stop after this much simulated time.")
 @click.option(
     "--max-wall-s",
@@ -135,6 +140,7 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     controller: str,
     stimulus_paths: tuple[Path, ...],
     expect_paths: tuple[Path, ...],
+    drives: str | None,
     until_ms: int | None,
     max_wall_s: float,
     trace_path: Path | None,
@@ -151,6 +157,8 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     try:
         files = [read_source(path) for path in (program, config_path) if path is not None]
         scenario = _scenario((*stimulus_paths, *expect_paths), profile(controller))
+        if drives == "enabled":
+            scenario = merge(scenario, Scenario(drives=(DrivesEnabled(),)))
     except ScenarioFileError as error:
         click.echo(f"mint-run: {error}", err=True)
         sys.exit(_USAGE_ERROR)

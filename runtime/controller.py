@@ -85,6 +85,9 @@ def build_controller(
     axes = [
         Axis(number, profile.controller, clock, build_plant(plants.get(number))) for number in range(profile.axis_count)
     ]
+    if scenario.drives_enabled:
+        for axis in axes:
+            axis.enable()
     vm.default_axes = tuple(range(len(axes)))
     motion = Motion(axes, profile, clock)
     handlers: dict[str, int] = {}

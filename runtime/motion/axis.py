@@ -305,7 +305,8 @@ class Axis:
         if self.axiserror:
             raise MintError(MOTION_ERROR, self.number, "clear the axis error with CANCEL or RESET first")
         if not self.enabled:
-            raise MintError(DRIVE_NOT_ENABLED, self.number)
+            detail = "a drive starts disabled: enable it with DRIVEENABLE or RESET, or run with --drives enabled"
+            raise MintError(DRIVE_NOT_ENABLED, self.number, detail)
 
     def buffer_free(self) -> int:
         running = 1 if self.move is not None and self.move.buffered else 0

@@ -26,6 +26,7 @@ from mintlang.runtime.scenario.files import load_scenario
 from mintlang.runtime.scenario.problems import ScenarioError, ScenarioFileError
 from mintlang.runtime.scenario.stimulus import (
     AdcLevel,
+    DrivesEnabled,
     FastInput,
     HostPacket,
     IndexPulse,
@@ -41,6 +42,7 @@ __all__ = [
     "STOP_REASONS",
     "AdcLevel",
     "Comparison",
+    "DrivesEnabled",
     "Expectation",
     "FastInput",
     "HostPacket",

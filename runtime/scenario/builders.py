@@ -27,6 +27,7 @@ from mintlang.runtime.scenario.stimulus import (
     AdcLevel,
     EncoderOperator,
     FastInput,
+    DrivesEnabled,
     HostPacket,
     IndexPulse,
     InputLevel,
@@ -168,10 +169,15 @@ def value_expectation(
     return ValueExpectation(target(what), comparison, value, tolerance, _when(at_ms), origin)
 
 
-def terminal_expectation(text: str, at_ms: int | None, origin: Origin) -> TerminalExpectation:
-    if not text:
+def terminal_expectation(text: str, at_ms: int | None, origin: Origin, *, exact: bool = False) -> TerminalExpectation:
+    """Text to find in the terminal output, or (``exact``) all the output: then it may be empty."""
+    if not text and not exact:
         raise Invalid("the terminal text to look for is empty")
-    return TerminalExpectation(text, _when(at_ms), origin)
+    return TerminalExpectation(text, _when(at_ms), origin, exact)
+
+
+def drives_enabled() -> DrivesEnabled:
+    return DrivesEnabled()
 
 
 def stopped_expectation(reason: str, origin: Origin) -> StoppedExpectation:

@@ -116,7 +116,13 @@ def _host(phrase: Phrase) -> WorldRecord:
             return builders.host_raw(_at(phrase), " ".join(hex_words))
 
 
+def _drives(phrase: Phrase) -> WorldRecord:
+    phrase.keyword("enabled")
+    return builders.drives_enabled()
+
+
 _DIRECTIVES: dict[str, Callable[[Phrase], WorldRecord]] = {
+    "drives": _drives,
     "plant": _plant,
     "input": _input,
     "index": _index,
@@ -141,14 +147,14 @@ def _when(phrase: Phrase) -> int | None:
 
 
 def _expectation(phrase: Phrase, origin: Origin) -> Expectation:
-    """``<target> <op> <value> [± <tol>] [at ...]``, ``no <target>``, ``terminal contains "..."``, ``stopped <why>``."""
+    """``<target> <op> <value> [± <tol>] [at ...]``, ``no <target>``, ``terminal contains|is "..."``, ``stopped <why>``."""
     expectation: Expectation
     if phrase.accept("stopped"):
         expectation = builders.stopped_expectation(phrase.word("why the run stopped").lower(), origin)
     elif phrase.accept("terminal"):
-        phrase.keyword("contains")
+        exact = phrase.choice("'contains' or 'is'", ("contains", "is")) == "is"
         text = phrase.text("the text")
-        expectation = builders.terminal_expectation(text, _when(phrase), origin)
+        expectation = builders.terminal_expectation(text, _when(phrase), origin, exact=exact)
     elif phrase.accept("no"):
         what = phrase.word("a keyword or variable")
         expectation = builders.value_expectation(

@@ -86,11 +86,12 @@ class ValueExpectation:
 
 @dataclass(frozen=True, slots=True)
 class TerminalExpectation:
-    """Text the program must have printed to the terminal by then."""
+    """Text the program must have printed to the terminal by then: somewhere in it, or all of it (``exact``)."""
 
     text: str
     at_ms: int | None
     origin: Origin
+    exact: bool = False
 
     @property
     def what(self) -> str:
@@ -98,7 +99,7 @@ class TerminalExpectation:
 
     @property
     def expected(self) -> str:
-        return f"contains {self.text!r}"
+        return f"is {self.text!r}" if self.exact else f"contains {self.text!r}"
 
 
 @dataclass(frozen=True, slots=True)
@@ -171,6 +172,8 @@ def evaluate(expectation: Expectation, observe: Observer) -> Outcome:
     match expectation:
         case ValueExpectation():
             return _evaluate_value(expectation, observe)
+        case TerminalExpectation(text=text, exact=True):
+            return _evaluate_whole_terminal(expectation, observe)
         case TerminalExpectation(text=text):
             held = observe.has_printed(text)
             detail = "" if held else f"not among the {observe.printed} characters printed"
@@ -208,6 +211,22 @@ def _evaluate_value(expectation: ValueExpectation, observe: Observer) -> Outcome
     else:
         shown = ", ".join(f"{name} = {_number(value)}" for name, value in values.items())
     return Outcome(expectation, not failing, shown, f"fails on {', '.join(failing)}" if failing else "")
+
+
+def _evaluate_whole_terminal(expectation: TerminalExpectation, observe: Observer) -> Outcome:
+    """All that was printed, compared with the expected text; a failure shows where the two part."""
+    printed = observe.terminal
+    if observe.printed > len(printed):
+        return Outcome(expectation, False, f"{observe.printed} characters", "too long to keep whole for comparison")
+    if printed == expectation.text:
+        return Outcome(expectation, True, f"{len(printed)} characters, the same", "")
+    same = next(
+        (index for index, (a, b) in enumerate(zip(printed, expectation.text, strict=False)) if a != b),
+        min(len(printed), len(expectation.text)),
+    )
+    line = printed.count("\n", 0, same) + 1
+    detail = f"differs on line {line}: expected {expectation.text[same : same + 20]!r}, printed {printed[same : same + 20]!r}"
+    return Outcome(expectation, False, f"{len(printed)} characters", detail)
 
 
 def _last_line(printed: str) -> str:

@@ -149,7 +149,7 @@ def _when(entry: _Entry) -> int | None:
 
 
 def _expect(entry: _Entry) -> Expectation:
-    match _one_of(entry, ("what", "terminal_contains", "stopped")):
+    match _one_of(entry, ("what", "terminal_contains", "terminal_is", "stopped")):
         case "what":
             key = _one_of(entry, tuple(_COMPARISONS))
             entry.allow("what", key, "tolerance", "at", "at_ms")
@@ -164,6 +164,9 @@ def _expect(entry: _Entry) -> Expectation:
         case "terminal_contains":
             entry.allow("terminal_contains", "at", "at_ms")
             return builders.terminal_expectation(entry.text("terminal_contains"), _when(entry), entry.origin)
+        case "terminal_is":
+            entry.allow("terminal_is", "at", "at_ms")
+            return builders.terminal_expectation(entry.text("terminal_is"), _when(entry), entry.origin, exact=True)
         case _:
             entry.allow("stopped")
             return builders.stopped_expectation(entry.text("stopped"), entry.origin)
@@ -178,6 +181,13 @@ _ARRAYS: dict[str, Callable[[_Entry], WorldRecord | Expectation]] = {
     "host": _host,
     "expect": _expect,
 }
+
+
+def _drives(value: object) -> WorldRecord:
+    """``drives = "enabled"``: without it the drives start disabled, as at power-up."""
+    if value != "enabled":
+        raise Invalid(f'drives is "enabled" (without it they start disabled, as at power-up), not {value!r}')
+    return builders.drives_enabled()
 
 
 def _plant(axis_key: str, choice: object, section: Section, source: str) -> WorldRecord:
@@ -204,11 +214,13 @@ def _read(document: Mapping[str, object], layout: Layout, collector: Collector) 
             for index, table in enumerate(value):
                 entry = _Entry(f"[[{name}]]", table, layout.entry(name, index), collector.source)
                 collector.add(entry.origin.line, partial(_ARRAYS[name], entry))
+        elif name == "drives":
+            collector.add(layout.top_line(name), partial(_drives, value))
         elif name in _ARRAYS or name == "plant":
             shape = "a table: write [plant]" if name == "plant" else f"a list of tables: write [[{name}]]"
             collector.error(layout.top_line(name), f"{name} is {shape}")
         else:
-            known = ", ".join(["plant", *_ARRAYS])
+            known = ", ".join(["drives", "plant", *_ARRAYS])
             collector.error(layout.top_line(name), f"unknown table {name!r}; a scenario has {known}")
 
 

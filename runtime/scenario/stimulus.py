@@ -89,7 +89,19 @@ class HostPacket:
     data: bytes
 
 
-WorldRecord = PlantChoice | InputLevel | PositionInput | IndexPulse | FastInput | AdcLevel | Keys | HostPacket
+@dataclass(frozen=True, slots=True)
+class DrivesEnabled:
+    """Every drive is enabled when the run starts, as a bench configuration file would leave them.
+
+    A controller powers up with its drives disabled, so the manual's examples,
+    which assume a configured machine, would stop at their first move with
+    error 40; this record lets them run as printed.
+    """
+
+
+WorldRecord = (
+    PlantChoice | InputLevel | PositionInput | IndexPulse | FastInput | AdcLevel | Keys | HostPacket | DrivesEnabled
+)
 
 
 class _Timed(Protocol):
@@ -117,7 +129,12 @@ class Scenario:
     adc: tuple[AdcLevel, ...] = ()
     keys: tuple[Keys, ...] = ()
     host_packets: tuple[HostPacket, ...] = ()
+    drives: tuple[DrivesEnabled, ...] = ()  # one record, or none: the drives start disabled
     expectations: tuple[Expectation, ...] = ()  # in the order written
+
+    @property
+    def drives_enabled(self) -> bool:
+        return bool(self.drives)
 
     def records(self) -> tuple[WorldRecord | Expectation, ...]:
         """Every record, the world's first; ``scenario_of`` sorts them back into a ``Scenario``."""
@@ -140,6 +157,7 @@ def scenario_of(records: Iterable[WorldRecord | Expectation]) -> Scenario:
         adc=_in_time_order(kind(AdcLevel)),
         keys=_in_time_order(kind(Keys)),
         host_packets=_in_time_order(kind(HostPacket)),
+        drives=tuple(kind(DrivesEnabled))[:1],
         expectations=tuple(record for record in records if not isinstance(record, WorldRecord)),
     )
 

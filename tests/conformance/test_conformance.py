@@ -1,0 +1,78 @@
+"""Every conformance program gives the results worked out by hand from the manual.
+
+Each case runs as written (skipping idle ticks), stepping every tick, and with
+every line indented differently; all three must meet every expectation.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+
+from mintlang.runtime.run import RunResult, run_source
+from mintlang.runtime.scenario import expectations_pass
+from mintlang.runtime.simulation import Limits
+from tests.conformance.cases import BEHAVIOUR, CONFORMANCE, Case, all_cases, read_case, reindented
+from tests.runtime.running import observable
+
+UNBOUNDED_MS = 600_000  # a case that has not ended after ten simulated minutes is stuck
+
+
+def _run(case: Case, source: str, *, every_tick: bool) -> RunResult:
+    limits = Limits(until_ms=case.until_ms or UNBOUNDED_MS, max_wall_s=60.0, every_tick=every_tick)
+    return run_source(
+        source,
+        config=case.configuration,
+        controller=case.controller,
+        scenario=case.scenario,
+        limits=limits,
+        name=case.path.name,
+    )
+
+
+def _verdict(result: RunResult) -> str:
+    failed = [
+        f"{outcome.expectation.origin}: {outcome.expectation.what} {outcome.expectation.expected}, "
+        f"got {outcome.actual} {outcome.detail}"
+        for outcome in result.outcomes
+        if not outcome.held
+    ]
+    stop = f"stopped {result.stop.reason.value} at {result.stop.time_ms} ms: {result.stop.message}"
+    return "\n".join([stop, *failed])
+
+
+def _passes(result: RunResult) -> bool:
+    return expectations_pass(result.outcomes, result.stop.reason.value)
+
+
+@pytest.mark.parametrize("path", all_cases(), ids=lambda path: str(path.relative_to(CONFORMANCE).with_suffix("")))
+def test_the_case_gives_the_results_of_the_manual(path: Path) -> None:
+    case = read_case(path)
+    written = _run(case, case.source, every_tick=False)
+    assert written.outcomes, "a case must expect something"
+    assert _passes(written), _verdict(written)
+    stepped = _run(case, case.source, every_tick=True)
+    assert observable(stepped) == observable(written), "stepping every tick changed the result"
+    moved = _run(case, reindented(case.source), every_tick=False)
+    assert _passes(moved), "re-indented:\n" + _verdict(moved)
+    assert observable(replace(moved, stop=replace(moved.stop, statement=None))) == observable(
+        replace(written, stop=replace(written.stop, statement=None))
+    ), "re-indenting the lines changed the result"
+
+
+def test_there_are_at_least_three_hundred_cases() -> None:
+    assert len(all_cases()) >= 300
+
+
+def test_every_choice_a_case_rests_on_is_recorded_in_the_behaviour_document() -> None:
+    recorded = set(re.findall(r"\b[A-Z]+-\d+\b", BEHAVIOUR.read_text(encoding="utf-8")))
+    missing = {
+        f"{case.name}: {choice}"
+        for case in map(read_case, all_cases())
+        for choice in case.choices
+        if choice not in recorded
+    }
+    assert not missing

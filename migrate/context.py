@@ -13,6 +13,7 @@ import re
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property, wraps
+from itertools import groupby
 from typing import Any, TypeVar
 
 import mintlang
@@ -103,6 +104,10 @@ class FileView:
         return before.strip() == "" and (after == "" or after.upper().startswith(("REM", ": REM", ":REM")))
 
 
+# A statement with the ones written right before and after it on its line (``Context.neighbours``).
+Neighbours = tuple[FileView, n.Statement | None, n.Statement, n.Statement | None]
+
+
 @dataclass(frozen=True)
 class Context:
     """The application (configuration file, if any, then program) for one pass of the engine."""
@@ -139,9 +144,22 @@ class Context:
         return database()
 
     def statements(self) -> Iterator[tuple[FileView, n.Line, n.Statement]]:
-        """Every statement in compile order (configuration first), IF .. THEN bodies included."""
+        """Every statement in compile order (configuration first), IF .. THEN bodies included.
+
+        They come from ``Document.lines``, a node of its own at every place, so
+        ``mintlang.syntax.parents`` can find what encloses an expression inside one."""
         for unit, line, statement in self.model.index.statements:
             yield self.files[unit], line, statement
+
+    def neighbours(self) -> Iterator[Neighbours]:
+        """Every statement in compile order with the ones written right before and after it on its
+        line (None at either end; IF .. THEN bodies count in line order). A line is told by its
+        place, (file, line number): equal lines share their syntax, so no statement can name one."""
+        for _, group in groupby(self.statements(), key=_line_place):
+            found = [(file, statement) for file, _, statement in group]
+            line: list[n.Statement | None] = [None, *(statement for _, statement in found), None]
+            for position, (file, statement) in enumerate(found, start=1):
+                yield file, line[position - 1], statement, line[position + 1]
 
     def keyword_uses(self, *keywords: str) -> Iterator[tuple[FileView, KeywordUse]]:
         """Uses of the named keywords (canonical v3 names), however they were spelled."""
@@ -155,14 +173,10 @@ class Context:
         entry = self.db.keywords.get(keyword.upper())
         return entry is not None and self.controller.controller in entry.controllers
 
-    def parents(self, statement: n.Statement) -> dict[int, n.Expression]:
-        """``id(expression) -> enclosing expression`` for every expression of ``statement``."""
-        found: dict[int, n.Expression] = {}
-        for root in n.expressions_of(statement):
-            for node in n.walk_expression(root):
-                for child in children(node):
-                    found[id(child)] = node
-        return found
+
+def _line_place(found: tuple[FileView, n.Line, n.Statement]) -> tuple[Unit, int]:
+    file, line, _ = found
+    return file.unit, line.number
 
 
 def per_pass(compute: Callable[[Context], T]) -> Callable[[Context], T]:
@@ -174,21 +188,3 @@ def per_pass(compute: Callable[[Context], T]) -> Callable[[Context], T]:
         return context.memo(compute)
 
     return cached
-
-
-def children(node: n.Expression) -> tuple[n.Expression, ...]:
-    """The direct subexpressions of ``node``."""
-    match node:
-        case n.Binary(left=left, right=right):
-            return (left, right)
-        case n.Unary(operand=operand):
-            return (operand,)
-        case n.Parenthesised(expression=inner):
-            return (inner,)
-        case n.ElementRef(index=index):
-            return (index,)
-        case n.Call(arguments=arguments):
-            return arguments
-        case n.KeywordRef(selector=selector) if selector is not None:
-            return tuple(item for item in selector.items if item is not None)
-    return ()

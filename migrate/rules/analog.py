@@ -11,6 +11,7 @@ from mintlang.migrate.rules.base import Action, Rule
 from mintlang.migrate.rules.spelling import like
 from mintlang.semantic.index import Use
 from mintlang.syntax import nodes as n
+from mintlang.syntax.parents import parent_of
 
 # v3 input -> v4 ADC channel: the v4 guide's ports number them from 0 (v3:2318 vs v4:1785).
 CHANNELS: Mapping[str, int] = MappingProxyType({"ANALOGUE1": 0, "ANALOGUE2": 1, "ANALOGUE3": 2})
@@ -48,7 +49,7 @@ class AnalogueInputs(Rule):
                 yield self.flag(file, keyword.span, f"{context.controller.title} has no ADC.{channel}")
                 continue
             counts = TO_COUNTS.format(adc=f"{like(keyword.spelling, 'ADC')}.{channel}")
-            parent = context.parents(use.statement).get(id(keyword))
+            parent = parent_of(use.statement, keyword)
             if parent is not None and not isinstance(parent, n.Parenthesised):
                 counts = f"({counts})"
             yield self.replace(file, keyword.span, counts)

@@ -72,7 +72,9 @@ def selector_axes(keyword: n.KeywordRef) -> tuple[int, ...] | None:
 
 
 def _top_level(line: n.Line, statement: n.Statement) -> bool:
-    return statement in line.statements
+    """Whether ``statement`` stands on ``line`` itself, not in an IF .. THEN body: by identity, as
+    nodes of ``Document.lines`` have one per place (``in`` would compare statements by value)."""
+    return any(top is statement for top in line.statements)
 
 
 def axis_values(

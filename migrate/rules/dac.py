@@ -10,6 +10,7 @@ read percent; v4 replaced it by DAC (v4:9149).
 from __future__ import annotations
 
 from collections.abc import Iterator
+from itertools import islice
 
 from mintlang.migrate.context import Context, FileView
 from mintlang.migrate.model import Phase, RuleClass
@@ -17,6 +18,7 @@ from mintlang.migrate.rules.axes import default_axes, selector_axes
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.migrate.rules.spelling import like
 from mintlang.syntax import nodes as n
+from mintlang.syntax.parents import ancestors
 
 _FAMILY = frozenset({"DAC", "AUXDAC", "DEMAND"})
 _TO_PERCENT = " * 100 / 2047"
@@ -82,9 +84,8 @@ class DacUnits(Rule):
             ):
                 yield from self._write(context, file, statement, stepper)
                 continue
-            parents = context.parents(statement)
             for node in _family_reads(statement):
-                if not _is_factor(parents.get(id(parents.get(id(node)))), 2047, 100):
+                if not _is_factor(_grandparent(statement, node), 2047, 100):
                     yield from self._read(context, file, statement, node)
 
     def _write(
@@ -146,6 +147,11 @@ class DacUnits(Rule):
             return
         channel = f"{like(node.spelling, target)}.{axes[0]}"
         yield self.replace(file, node.span, f"({channel}{_TO_COUNTS})")
+
+
+def _grandparent(statement: n.Statement, node: n.Expression) -> n.Expression | None:
+    """The parent's parent of ``node``: ``x * 2047 / 100`` around a read this rule already converted."""
+    return next(islice(ancestors(statement, node), 1, None), None)
 
 
 def _family_reads_of(root: n.Expression) -> Iterator[n.KeywordRef]:

@@ -35,10 +35,10 @@ class ExplicitAxes(Rule):
     evidence = "spec S-IDLEAXES; v3:586, v3:596, v3:1029-1033, v3:1080-1109; v4:157, v4:170, v4:605-608"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, line, statement in context.statements():
+        for file, before, statement, _ in context.neighbours():
             if not isinstance(statement, n.KeywordStatement) or not _bracketless_axis_keyword(context, statement):
                 continue
-            axes = _started_move(context, file, line, statement) or addressed_axes(context, file, statement)
+            axes = _started_move(context, file, before, statement) or addressed_axes(context, file, statement)
             if axes:
                 at = statement.keyword.spelling_span.end
                 yield self.replace(file, Span(at, at), axis_list(axes))
@@ -52,15 +52,13 @@ def _bracketless_axis_keyword(context: Context, statement: n.KeywordStatement) -
 
 
 def _started_move(
-    context: Context, file: FileView, line: n.Line, statement: n.KeywordStatement
+    context: Context, file: FileView, previous: n.Statement | None, statement: n.KeywordStatement
 ) -> tuple[int, ...] | None:
-    """For ``MOVEA = x,y : GO`` the axes of the move the GO starts, as the v4 guide's port
-    writes it (``GO[0,1]``, v4:170); S-OFFSET pairs ``OFFSET[0] = d : GO[0]`` the same way."""
+    """For ``MOVEA = x,y : GO`` the axes of the move the GO starts (``previous`` is the statement
+    before it on its line), as the v4 guide's port writes it (``GO[0,1]``, v4:170); S-OFFSET
+    pairs ``OFFSET[0] = d : GO[0]`` the same way."""
     if statement.keyword.keyword != "GO" or statement.values is not None:
         return None
-    statements = n.flatten_statements(line.statements)  # IF .. THEN bodies in line order
-    position = next(index for index, found in enumerate(statements) if found is statement)
-    previous = statements[position - 1] if position else None
     if isinstance(previous, n.KeywordStatement) and previous.keyword.keyword in MOVES and previous.values:
         return addressed_axes(context, file, previous)
     return None

@@ -13,18 +13,20 @@ from mintlang.migrate.context import Context
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.syntax import nodes as n
+from mintlang.syntax.parents import ancestors, parent_of
 
 
-def _wrapped(parents: dict[int, n.Expression], node: n.Expression, operator: str, number: float) -> bool:
+def _wrapped(statement: n.Statement, node: n.Expression, operator: str, number: float) -> bool:
     """Whether ``node`` already sits in ``(node <operator> number)``."""
-    parent = parents.get(id(node))
+    enclosing = ancestors(statement, node)
+    parent = next(enclosing, None)
     return (
         isinstance(parent, n.Binary)
         and parent.operator == operator
         and parent.left is node
         and isinstance(parent.right, n.Number)
         and parent.right.value == number
-        and isinstance(parents.get(id(parent)), n.Parenthesised)
+        and isinstance(next(enclosing, None), n.Parenthesised)
     )
 
 
@@ -48,12 +50,10 @@ class Trigonometry(Rule):
     evidence = "spec M-TRIG; v3:2063-2081, v3:7045, v3:11771, v3:11975; v4:8676-8679"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        parents_of: dict[int, dict[int, n.Expression]] = {}
         for file, statement, node in _expressions(context):
             if not isinstance(node, n.Call) or node.function not in ("SIN", "COS", "TAN"):
                 continue
-            parents = parents_of.setdefault(id(statement), context.parents(statement))
-            if _wrapped(parents, node, "*", 1000):
+            if _wrapped(statement, node, "*", 1000):
                 continue
             text = file.slice(node.span)  # type: ignore[attr-defined]
             if not node.bracketed:
@@ -73,12 +73,10 @@ class ByteToggle(Rule):
     evidence = "spec M-TILDE; v3:1978; v4:5707-5708, v4:1340"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        parents_of: dict[int, dict[int, n.Expression]] = {}
         for file, statement, node in _expressions(context):
             if not isinstance(node, n.Unary) or node.operator != "~":
                 continue
-            parents = parents_of.setdefault(id(statement), context.parents(statement))
-            if not _wrapped(parents, node, "AND", 255):
+            if not _wrapped(statement, node, "AND", 255):
                 yield self.replace(file, node.span, f"({file.slice(node.span)} & 255)")  # type: ignore[attr-defined]
 
 
@@ -95,12 +93,10 @@ class Precedence(Rule):
     evidence = "spec M-PREC; v3:1986-1995; v4:1417-1429"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        parents_of: dict[int, dict[int, n.Expression]] = {}
         for file, statement, node in _expressions(context):
             if not _logical(node):
                 continue
-            parents = parents_of.setdefault(id(statement), context.parents(statement))
-            if _logical(parents.get(id(node))):
+            if _logical(parent_of(statement, node)):
                 continue  # not the top of its chain
             operands, operators = _flatten(node)
             if not {"AND", "OR"} <= set(operators):

@@ -18,6 +18,7 @@ from mintlang.migrate.rules.base import Action, Rule
 from mintlang.semantic.events import EventKind, event_of
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
+from mintlang.syntax.parents import parent_of
 
 # IMASK's default (= all inputs enabled) per controller: the attribute table at v4:11896-11900.
 # ServoNode 51 is not in that table; with 6 inputs it has no input above 7 to keep enabled.
@@ -81,9 +82,8 @@ class InputMask(Rule):
             ):
                 yield from self._write(file, statement, high)
                 continue
-            parents = context.parents(statement)
             for read in _keyword_refs(statement, "IMASK"):
-                if not _masked(parents.get(id(read)), read):
+                if not _masked(parent_of(statement, read), read):
                     yield self.replace(file, read.span, f"({file.slice(read.span)} & 255)")
 
     def _write(self, file: FileView, statement: n.KeywordStatement, high: int) -> Iterator[Action]:
@@ -130,9 +130,8 @@ class InputByte(Rule):
             return  # no input above 7: IN reads the same byte
         handlers = _has_input_handlers(context)
         for file, _, statement in context.statements():
-            parents = context.parents(statement)
             for read in _keyword_refs(statement, "IN"):
-                if _masked(parents.get(id(read)), read):
+                if _masked(parent_of(statement, read), read):
                     continue
                 if handlers:
                     reason = "IN reads all inputs and clears edge latches of #INn inputs in v4: mask with & 255"

@@ -25,6 +25,7 @@ from mintlang.migrate.rules.renames import same_value_constants
 from mintlang.semantic.events import EventKind, event_of
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
+from mintlang.syntax.parents import ancestors
 
 
 @per_pass
@@ -199,19 +200,10 @@ _COMPARISONS = frozenset({"=", "<>", "<", ">", "<=", ">="})
 
 def _compared(statement: n.Statement, node: n.KeywordRef | n.Call) -> bool:
     """Whether ``node`` is a side of a comparison in ``statement`` (brackets around it included)."""
-    return any(
-        type(expression) is n.Binary
-        and expression.operator in _COMPARISONS  # type: ignore[union-attr]
-        and (_unbracketed(expression.left) is node or _unbracketed(expression.right) is node)  # type: ignore[union-attr]
-        for root in n.expressions_of(statement)
-        for expression in n.walk_expression(root)
-    )
-
-
-def _unbracketed(expression: n.Expression) -> n.Expression:
-    while type(expression) is n.Parenthesised:
-        expression = expression.expression  # type: ignore[union-attr]
-    return expression
+    for enclosing in ancestors(statement, node):
+        if type(enclosing) is not n.Parenthesised:
+            return type(enclosing) is n.Binary and enclosing.operator in _COMPARISONS  # type: ignore[union-attr]
+    return False
 
 
 class ChangedMeaning(ManualKeywords):

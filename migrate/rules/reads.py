@@ -12,6 +12,7 @@ from mintlang.migrate.rules.renames import same_value_constants
 from mintlang.migrate.rules.spelling import like
 from mintlang.semantic.index import Use
 from mintlang.syntax import nodes as n
+from mintlang.syntax.parents import ancestors, parent_of
 
 # v3 keyword read -> v4 keyword giving the same value.
 READ_RENAMES: Mapping[str, str] = MappingProxyType(
@@ -72,13 +73,12 @@ ERROR_BITS: Mapping[int, str] = MappingProxyType(
 CONDITIONS = (n.IfThen, n.IfDo, n.While, n.Until, n.Pause)
 
 
-def truth_only(context: Context, statement: n.Statement, node: n.Expression) -> bool:
+def truth_only(statement: n.Statement, node: n.Expression) -> bool:
     """Whether only the truth of ``node`` is used: it is the condition of an IF, WHILE, UNTIL or
     PAUSE, or reaches it through brackets, NOT and OR, which treat every non-zero value alike.
     AND does not: it is bitwise (v3:14033-14039, v4:1306-1307), so the masks of two different bits
     AND to 0; as a value (``a = MODE = _jog``), an operand of ``+`` or ``=``, v3's 1 or 0 is used."""
-    parents = context.parents(statement)
-    while (parent := parents.get(id(node))) is not None:
+    for parent in ancestors(statement, node):
         logical = (isinstance(parent, n.Unary) and parent.operator == "NOT") or (
             isinstance(parent, n.Binary) and parent.operator == "OR"
         )
@@ -114,7 +114,7 @@ class BitTest(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         for file, use in context.keyword_uses(self.keyword):
-            parent = context.parents(use.statement).get(id(use.keyword)) if use.use is Use.READ else None
+            parent = parent_of(use.statement, use.keyword) if use.use is Use.READ else None
             value = self._compared_value(context, use.keyword, parent)
             special = self._special(context, file, use.statement, parent, value)
             if special is not None:
@@ -125,7 +125,7 @@ class BitTest(Rule):
                 yield self.flag(file, use.keyword.span, self.refusal)
                 continue
             assert isinstance(parent, n.Binary)
-            truth = truth_only(context, use.statement, parent)
+            truth = truth_only(use.statement, parent)
             yield self.replace(file, parent.span, self._test(file, use.keyword, parent.operator, value, truth=truth))
 
     def _compared_value(self, context: Context, keyword: n.KeywordRef, parent: n.Expression | None) -> int | None:

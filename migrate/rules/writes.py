@@ -15,17 +15,6 @@ from mintlang.migrate.rules.statements import Refusal, StatementRule
 from mintlang.syntax import nodes as n
 
 
-def followers(context: Context) -> dict[int, n.Statement]:
-    """``id(statement) -> the statement written right after it on the same line``."""
-    found: dict[int, n.Statement] = {}
-    previous: tuple[n.Line, n.Statement] | None = None
-    for _, line, statement in context.statements():
-        if previous is not None and previous[0] is line:
-            found[id(previous[1])] = statement
-        previous = (line, statement)
-    return found
-
-
 def _writes(statement: n.Statement | None, keyword: str) -> n.KeywordStatement | None:
     if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == keyword:
         return statement
@@ -48,28 +37,36 @@ class AccelAlsoDecel(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         axiscon = next(iter(context.keyword_uses("AXISCON")), None) is not None
-        after = followers(context)
-        companions: set[int] = set()
-        for file, _, statement in context.statements():
-            accel = _writes(statement, "ACCEL") or _writes(statement, "ACCELTIME")
+        for file, _, statement, after in context.neighbours():
+            accel = _accel(statement)
             if accel is None:
                 continue
             decel = self.pairs[accel.keyword.keyword]
             if axiscon:
                 yield self.flag(file, accel.span, f"AXISCON is used: decide whether {decel} must follow this write")
                 continue
-            companion = _writes(after.get(id(accel)), decel)
-            if companion is not None and _same_axes(file, accel, companion):
-                companions.add(id(companion))
+            if self._companion(file, accel, after):
                 continue
             text = f" : {like(accel.keyword.spelling, decel)}{selector_text(file, accel.keyword)} = "
             yield self.replace(file, Span(accel.span.end, accel.span.end), text + values_text(file, accel))
-        for file, _, statement in context.statements():
+        for file, before, statement, _ in context.neighbours():
             decel = _writes(statement, "DECEL") or _writes(statement, "DECELTIME")
-            if decel is not None and decel.values is not None and id(decel) not in companions and not axiscon:
+            if decel is None or decel.values is None or axiscon:
+                continue
+            accel = _accel(before)
+            if accel is None or not self._companion(file, accel, decel):
                 yield self.flag(
                     file, decel.span, f"v3 ignored {decel.keyword.keyword} unless AXISCON bit 0 was set; v4 obeys it"
                 )
+
+    def _companion(self, file: FileView, accel: n.KeywordStatement, after: n.Statement | None) -> bool:
+        """Whether ``after``, the statement right after ``accel`` on its line, writes the same axes' DECEL."""
+        decel = _writes(after, self.pairs[accel.keyword.keyword])
+        return decel is not None and _same_axes(file, accel, decel)
+
+
+def _accel(statement: n.Statement | None) -> n.KeywordStatement | None:
+    return _writes(statement, "ACCEL") or _writes(statement, "ACCELTIME")
 
 
 def _same_axes(file: FileView, first: n.KeywordStatement, second: n.KeywordStatement) -> bool:
@@ -237,12 +234,11 @@ class OffsetNeedsGo(Rule):
     def apply(self, context: Context) -> Iterator[Action]:
         if not context.controller.controller.startswith("nextmove"):
             return
-        after = followers(context)
-        for file, _, statement in context.statements():
+        for file, _, statement, after in context.neighbours():
             offset = _writes(statement, "OFFSET")
             if offset is None or offset.values is None:
                 continue
-            go = _writes(after.get(id(offset)), "GO")
+            go = _writes(after, "GO")
             selector = selector_text(file, offset.keyword)
             if go is not None and selector_text(file, go.keyword) == selector:
                 continue

@@ -21,7 +21,6 @@ OWN_CODES: dict[str, str] = {
     "W107": "Falls into the next subroutine",
     "W108": "Names equal in their first ten characters",
     "W109": "Event handler not available on this controller",
-    "W110": "Block never closed",
     "W111": "Line too long",
     "W112": "EXIT outside a loop",
     "W113": "GOTO out of a block",
@@ -30,6 +29,15 @@ OWN_CODES: dict[str, str] = {
     "W116": "GOSUB nested too deep",
     "I201": "Faster dot syntax",
 }
+
+
+# What the controller's compiler rejects before a program runs (000:4564-4570, 4611-4615): syntax (2003,
+# 2004, 2006-2008), mismatched blocks (2009, 2011-2014) and nesting beyond the stack (2015), labels
+# (3000, 3004), variables (3001, 3002), memory (3003), macros (3005, 3006) and keywords (3007). Every
+# other error is raised by the line that causes it, when it runs, and #ONERROR sees it (000:4616-4619).
+COMPILE_ERRORS = frozenset(
+    {2003, 2004, 2006, 2007, 2008, 2009, 2011, 2012, 2013, 2014, 2015, 3000, 3001, 3002, 3003, 3004, 3005, 3006, 3007}
+)
 
 
 def known_codes() -> frozenset[str]:
@@ -45,11 +53,20 @@ def mint_error(
     severity: Severity = Severity.ERROR,
     fixes: tuple[Fix, ...] = (),
     from_v3: bool = False,
+    at_run_time: bool | None = None,
 ) -> Diagnostic:
-    """A diagnostic numbered as the controller numbers it, titled as the manual titles it."""
+    """A diagnostic numbered as the controller numbers it, titled as the manual titles it.
+
+    Whether the controller raises it when compiling or when the line runs follows
+    from the number (``COMPILE_ERRORS``) unless ``at_run_time`` says otherwise.
+    """
     record = database().errors.get(code)
     message = f"{record.title}: {detail}" if record is not None else detail
-    return Diagnostic(f"E{code}", severity, span, message, mint_error=code, fixes=fixes, from_v3=from_v3)
+    if at_run_time is None:
+        at_run_time = code not in COMPILE_ERRORS
+    return Diagnostic(
+        f"E{code}", severity, span, message, mint_error=code, fixes=fixes, from_v3=from_v3, at_run_time=at_run_time
+    )
 
 
 def own(code: str, span: Span, detail: str, *, fixes: tuple[Fix, ...] = (), from_v3: bool = False) -> Diagnostic:

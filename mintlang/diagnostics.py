@@ -89,6 +89,7 @@ class Diagnostic:
     mint_error: int | None = None
     fixes: tuple[Fix, ...] = field(default=())
     from_v3: bool = False  # about a Mint v3 word left in v4 code: a file mint-migrate would help
+    at_run_time: bool = False  # the controller raises it when the line runs, not when it compiles the program
 
     def shifted(self, offset: int) -> Diagnostic:
         """The same finding ``offset`` characters further on: found in a line, placed in its file."""

@@ -90,6 +90,24 @@ class Observation:
             return None
 
 
+@dataclass(frozen=True, slots=True)
+class Refused:
+    """A run the controller refused before its first statement: it printed nothing, and ERR and ERL say why."""
+
+    err: float
+    erl: float
+    stopped: str = "error"
+    terminal: str = ""
+    printed: int = 0
+    axes: tuple[int, ...] = ()
+
+    def has_printed(self, text: str) -> bool:
+        return False
+
+    def value(self, target: str) -> float | None:
+        return {"ERR": self.err, "ERL": self.erl}.get(target)
+
+
 def _inputs(controller: Controller, channel: int | None) -> float:
     """IN as the program would read it, without clearing the edge latches a read clears."""
     return controller.io.peek(channel)

@@ -2,7 +2,10 @@
 
 The controller compiles a program before running it, so a compile-time error
 (3001 undeclared variable, a mismatched block …) stops the run before its
-first statement, with the error where the checker reports it.
+first statement, with the error where the checker reports it. The other errors
+``mint check`` finds without running (an index outside its array, a constant
+axis the controller lacks) are the controller's run-time errors: the line
+raises them when it runs, so ``#ONERROR`` sees them.
 """
 
 from __future__ import annotations
@@ -13,12 +16,11 @@ from functools import partial
 
 import mintlang
 from mintlang.controllers import profile
-from mintlang.diagnostics import Severity
 from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.runtime.controller import Controller, build_controller
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter.vm import StopReason
-from mintlang.runtime.observation import AxisState, Observation, axis_state
+from mintlang.runtime.observation import AxisState, Observation, Refused, axis_state
 from mintlang.runtime.scenario import ScenarioFileError, merge, parse_directives
 from mintlang.runtime.scenario.expectations import Expectation, Outcome, TerminalExpectation, evaluate, not_reached
 from mintlang.runtime.scenario.stimulus import Scenario
@@ -40,9 +42,26 @@ class RunResult:
     terminal_dropped: int = 0  # characters printed before those ``terminal`` keeps
 
 
-def _not_run(message: str, line: int | None, unit: str | None, statement: str | None) -> RunResult:
+def _not_run(
+    message: str,
+    scenario: Scenario,
+    *,
+    code: int | None = None,
+    line: int | None = None,
+    unit: str | None = None,
+    statement: str | None = None,
+) -> RunResult:
+    """A run refused before its first statement; ERR and ERL tell the controller's compile error, if it is one.
+
+    The expectations are still judged: a case may expect a program to fail to compile.
+    """
     stop = Stop(StopReason.ERROR, 0, unit, line, statement, message)
-    return RunResult(stop, -1.0, 0.0, 0, 0, (), "", (), ())
+    refused = Refused(float(code) if code is not None else -1.0, float(line or 0))
+    outcomes = tuple(
+        evaluate(expectation, refused) if expectation.at_ms is None else not_reached(expectation, 0)
+        for expectation in scenario.expectations
+    )
+    return RunResult(stop, refused.err, refused.erl, 0, 0, (), "", (), outcomes)
 
 
 def run_source(
@@ -73,19 +92,19 @@ def run_source(
         ("program", analysis.program, analysis.model.program),
     ):
         for diagnostic in diagnostics:
-            if diagnostic.severity is Severity.ERROR and document is not None:
+            if diagnostic.mint_error is not None and not diagnostic.at_run_time and document is not None:
                 line = document.line_index.position(diagnostic.span.start).line
                 text = document.source[diagnostic.span.start : diagnostic.span.end]
                 message = f"C{diagnostic.mint_error or 0:04d}: {unit.upper()} {diagnostic.message} [line {line}]"
-                return _not_run(message, line, unit, text)
+                return _not_run(message, scenario, code=diagnostic.mint_error, line=line, unit=unit, statement=text)
     try:
         built = build_controller(
             analysis.model, scenario, slice_statements=limits.slice_statements, host_port=limits.host_port, echo=echo
         )
     except NotSimulated as missing:
-        return _not_run(str(missing), None, None, None)
+        return _not_run(str(missing), scenario)
     except MintError as error:
-        return _not_run(error.describe(), None, None, None)
+        return _not_run(error.describe(), scenario, code=error.code)
     simulator = Simulator(built, limits)
     outcomes: list[Outcome] = []
     end_expectations = []

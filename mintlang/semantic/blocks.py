@@ -4,8 +4,12 @@ The grammar leaves IF..DO/ELSE/ENDIF, FOR/NEXT, REPEAT/UNTIL, WHILE/ENDW and
 LOOP/ENDL as separate statements; a stack matches them here. A closer whose
 opener is not on top of the stack is the controller's error 2009 (NEXT),
 2011 (ELSE/ENDIF), 2012 (ENDW), 2013 (UNTIL) or 2014 (ENDL); it is then
-ignored, so one misplaced closer gives one error. The nesting limits of
-section 3.9 give error 2015.
+ignored, so one misplaced closer gives one error. A block still open at the
+end of the file is the same mismatch seen from the other side, and the
+compiler traps it too (section 8.4, "a mismatch loop construct will be
+trapped"); the manual numbers only the closers, so it gets its construct's
+number: a FOR without NEXT is 2009, an IF .. DO without ENDIF 2011. The
+nesting limits of section 3.9 give error 2015.
 """
 
 from __future__ import annotations
@@ -15,7 +19,7 @@ from dataclasses import dataclass
 from enum import StrEnum
 from typing import NamedTuple
 
-from mintlang.codes import mint_error, own
+from mintlang.codes import mint_error
 from mintlang.controllers import ControllerProfile, NestingLimits
 from mintlang.diagnostics import Diagnostic, Span
 from mintlang.semantic.index import LineFacts
@@ -36,12 +40,12 @@ _CLOSERS: dict[str, tuple[BlockKind, int, str]] = {
     "ENDW": (BlockKind.WHILE, 2012, "ENDW without WHILE"),
     "ENDL": (BlockKind.LOOP, 2014, "ENDL without LOOP"),
 }
-_CLOSING_WORD = {
-    BlockKind.IF: "ENDIF",
-    BlockKind.FOR: "NEXT",
-    BlockKind.REPEAT: "UNTIL",
-    BlockKind.WHILE: "ENDW",
-    BlockKind.LOOP: "ENDL",
+_CLOSING = {  # the word that closes each kind of block, and the number of the construct's mismatch
+    BlockKind.IF: ("ENDIF", 2011),
+    BlockKind.FOR: ("NEXT", 2009),
+    BlockKind.REPEAT: ("UNTIL", 2013),
+    BlockKind.WHILE: ("ENDW", 2012),
+    BlockKind.LOOP: ("ENDL", 2014),
 }
 LOOPS = frozenset({BlockKind.FOR, BlockKind.REPEAT, BlockKind.WHILE, BlockKind.LOOP})
 _BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.For, n.While, n.Until, n.SyntaxError_})
@@ -82,6 +86,7 @@ class _Open:
     opener: Place
     span: Span  # of the opener, in its file: where its diagnostics go
     middle: Place | None = None
+    reported: bool = False  # an error already tells of this block: its opener is broken, or met a wrong closer
 
 
 _OPENING_WORDS = {"REPEAT": BlockKind.REPEAT, "LOOP": BlockKind.LOOP}
@@ -120,7 +125,8 @@ class _Matcher:
         kind = _opener_kind(statement)
         place = Place(line.number, index)
         if kind is not None:
-            self.stack.append(_Open(kind, place, line.span(statement.span)))
+            broken = type(statement) is n.SyntaxError_
+            self.stack.append(_Open(kind, place, line.span(statement.span), reported=broken))
             self.open[kind] += 1
             problem = _nesting_problem(self.open, self.limits)
             if problem is not None:
@@ -145,6 +151,7 @@ class _Matcher:
         if not stack or stack[-1].kind is not kind:
             if stack:
                 message += f" (the innermost open block is {stack[-1].kind.value} on line {stack[-1].opener.line})"
+                stack[-1].reported = True
             self.diagnostics.append(_error(code, span, message))
             return
         top = stack.pop()
@@ -154,9 +161,11 @@ class _Matcher:
     def finish(self) -> Structure:
         for unclosed in self.stack:
             self.blocks.append(Block(unclosed.kind, unclosed.opener, unclosed.middle, None))
-            word = _CLOSING_WORD[unclosed.kind]
+            if unclosed.reported:
+                continue
+            word, code = _CLOSING[unclosed.kind]
             detail = f"this {unclosed.kind.value} block is never closed with {word}"
-            self.diagnostics.append(own("W110", unclosed.span, detail))
+            self.diagnostics.append(_error(code, unclosed.span, detail))
         self.blocks.sort(key=lambda block: block.opener)
         return Structure(tuple(self.blocks), tuple(self.diagnostics))
 

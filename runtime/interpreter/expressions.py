@@ -26,6 +26,7 @@ Evaluate = Callable[[], float]
 
 READ_OF_WRITE_ONLY = 2002
 INVALID_INDEX = 2016
+SYNTAX_ERROR = 2003
 
 
 @dataclass(slots=True)
@@ -34,6 +35,7 @@ class Names:
 
     scalars: dict[str, int] = field(default_factory=dict)
     arrays: dict[str, int] = field(default_factory=dict)
+    macros: frozenset[str] = frozenset()  # a macro's name left in another macro's text is not expanded
 
 
 def is_axis_keyword(keyword: str) -> bool:
@@ -73,6 +75,12 @@ class ExpressionCompiler:
         raise TypeError(f"not an expression: {expression!r}")
 
     def variable(self, name: n.Name) -> Evaluate:
+        if name.identity in self.names.macros:
+
+            def unexpanded() -> float:  # 000:1549-1553: a syntax error when the line runs
+                raise MintError(SYNTAX_ERROR, detail=f"macro {name.text} is not expanded inside another macro")
+
+            return unexpanded
         slot = self.names.scalars.get(name.identity)
         if slot is None:  # an array name used as a scalar without ever being one: its own scalar slot
             slot = self.names.scalars[name.identity] = len(self.vm.scalars)

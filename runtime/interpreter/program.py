@@ -37,7 +37,7 @@ class Linked:
 
 def link(model: SemanticModel, vm: Interpreter, table: KeywordTable, terminal: Terminal) -> Linked:
     """Compile ``model`` into ``vm``; raises ``NotSimulated`` or ``MintError`` for what cannot run."""
-    names = Names()
+    names = Names(macros=frozenset(model.symbols.macros))
     _allocate(model, vm, names)
     expressions = ExpressionCompiler(vm, table, names)
     handlers: dict[Unit, Mapping[str, int]] = {}

@@ -51,9 +51,13 @@ def wrap(counts: float) -> float:
     return (counts + POSITION_HALF_SPAN) % (2.0 * POSITION_HALF_SPAN) - POSITION_HALF_SPAN
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, eq=False)
 class Request:
-    """A move waiting in the buffer; ``build`` makes it a ``Move`` at its start tick."""
+    """A move waiting in the buffer; ``build`` makes it a ``Move`` at its start tick.
+
+    Each load is its own move, told apart by identity: the same move loaded twice
+    is two requests, and the buffers of a vector's axes must find this one.
+    """
 
     mode: int
     axes: tuple[int, ...]

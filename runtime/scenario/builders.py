@@ -25,9 +25,9 @@ from mintlang.runtime.scenario.phrase import Phrase
 from mintlang.runtime.scenario.problems import Invalid
 from mintlang.runtime.scenario.stimulus import (
     AdcLevel,
+    DrivesEnabled,
     EncoderOperator,
     FastInput,
-    DrivesEnabled,
     HostPacket,
     IndexPulse,
     InputLevel,

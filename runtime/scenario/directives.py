@@ -147,7 +147,8 @@ def _when(phrase: Phrase) -> int | None:
 
 
 def _expectation(phrase: Phrase, origin: Origin) -> Expectation:
-    """``<target> <op> <value> [± <tol>] [at ...]``, ``no <target>``, ``terminal contains|is "..."``, ``stopped <why>``."""
+    """``<target> <op> <value> [± <tol>] [at ...]``, ``no <target>``, ``terminal contains|is "..."``,
+    ``stopped <why>``."""
     expectation: Expectation
     if phrase.accept("stopped"):
         expectation = builders.stopped_expectation(phrase.word("why the run stopped").lower(), origin)

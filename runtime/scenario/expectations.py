@@ -225,7 +225,8 @@ def _evaluate_whole_terminal(expectation: TerminalExpectation, observe: Observer
         min(len(printed), len(expectation.text)),
     )
     line = printed.count("\n", 0, same) + 1
-    detail = f"differs on line {line}: expected {expectation.text[same : same + 20]!r}, printed {printed[same : same + 20]!r}"
+    expected, actual = expectation.text[same : same + 20], printed[same : same + 20]
+    detail = f"differs on line {line}: expected {expected!r}, printed {actual!r}"
     return Outcome(expectation, False, f"{len(printed)} characters", detail)
 
 

@@ -221,7 +221,7 @@ def _read(document: Mapping[str, object], layout: Layout, collector: Collector) 
             collector.error(layout.top_line(name), f"{name} is {shape}")
         else:
             known = ", ".join(["drives", "plant", *_ARRAYS])
-            collector.error(layout.top_line(name), f"unknown table {name!r}; a scenario has {known}")
+            collector.error(layout.top_line(name), f"unknown entry {name!r}; a scenario has {known}")
 
 
 def _document(path: Path) -> tuple[str, dict[str, object]]:

@@ -188,3 +188,11 @@ def test_the_summary_when_all_held() -> None:
     console = Console(record=True, width=100)
     render_outcomes([check("count = 1", FakeRun({"COUNT": 1}))], console)
     assert console.export_text().rstrip().splitlines()[-1] == "All 1 expectations held."
+
+
+def test_terminal_is_holds_only_for_the_whole_output_and_says_where_it_differs() -> None:
+    assert check('terminal is "1\\n2\\n"', FakeRun(terminal="1\n2\n")).held
+    assert not check('terminal is "1\\n"', FakeRun(terminal="1\n2\n")).held
+    outcome = check('terminal is "1\\n3\\n"', FakeRun(terminal="1\n2\n"))
+    assert (outcome.held, outcome.detail) == (False, "differs on line 2: expected '3\\n', printed '2\\n'")
+    assert check('terminal is ""', FakeRun(terminal="")).held

@@ -36,3 +36,11 @@ def test_an_expectation_after_until_ms_is_not_reached_either() -> None:
     result = run_source("REM @expect POS.0 = 0 at 500\nLOOP\nENDL\n", limits=Limits(until_ms=10))
     (outcome,) = result.outcomes
     assert not outcome.held and "stopped at 10 ms" in outcome.detail
+
+
+def test_a_program_that_does_not_compile_is_still_judged_by_its_expectations() -> None:
+    expected = (
+        'REM @expect stopped error\nREM @expect ERR = 2009\nREM @expect ERL = 6\nREM @expect terminal contains "x"\n'
+    )
+    result = run_source(expected + "DIM a\nFOR a = 1 TO 2\n")  # never closed: the compiler's 2009 on line 6
+    assert [outcome.held for outcome in result.outcomes] == [True, True, True, False]

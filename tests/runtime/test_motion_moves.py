@@ -260,3 +260,13 @@ def test_posremaining_counts_the_move_in_progress_not_those_queued_behind_it() -
     source = "RESET.0\nSPEED.0 = 1000 : ACCEL.0 = 10000 : DECEL.0 = 10000\nMOVER.0 = 1000\nMOVER.0 = 1000\nGO.0\n"
     source += 'WAIT = 500\nPRINT POS.0, " ", POSREMAINING.0, " ", POSTARGET.0\n'
     assert simulate(source).terminal == "448 552 2000\n"
+
+
+def test_the_same_vector_queued_twice_is_two_moves_and_go_on_one_axis_starts_each() -> None:
+    # MP-28: GO on one axis of a vector starts it on all; equal loads are still separate moves
+    source = (
+        "MOVEBUFFERSIZE[0,1] = 4;\nVECTORA[0,1] = 100, 100\nVECTORA[0,1] = 0, 0\nVECTORA[0,1] = 100, 100\n"
+        "GO.0\nPAUSE IDLE.0 AND IDLE.1\nPRINT POS.0, \" \", POS.1\n"
+    )
+    result = simulate(source, until_ms=20_000)
+    assert (result.stop.reason, result.terminal) == (StopReason.END, "100 100\n")

@@ -152,3 +152,19 @@ def test_the_report_lists_settings_the_simulation_does_not_model(tmp_path: Path)
     report = json.loads(result.stdout[result.stdout.index("{") :])
     assert result.stdout.startswith("50\n")
     assert report["inert_settings"] == ["ECHO", "GEARING"]
+
+
+def test_drives_start_disabled_and_the_error_says_how_to_enable_them(tmp_path: Path) -> None:
+    program = write(tmp_path, "move.mnt", "MOVER.0 = 10 : GO.0\nPAUSE IDLE.0\nPRINT POS.0\n")
+    refused = mint_run(program)
+    assert refused.exit_code == 1
+    assert "R0040" in refused.stderr and "--drives enabled" in refused.stderr
+    enabled = mint_run(program, "--drives", "enabled")
+    assert (enabled.exit_code, enabled.stdout) == (0, "10\n")
+
+
+def test_a_compile_error_is_reported_with_its_number_and_line_in_the_json_report(tmp_path: Path) -> None:
+    result = mint_run(write(tmp_path, "open.mnt", "DIM a\nFOR a = 1 TO 2\nPRINT a\n"), "--report", "json")
+    report = json.loads(result.stdout)
+    assert (report["stopped"], report["err"], report["erl"]) == ("error", 2009, 2)
+    assert report["message"].startswith("C2009")

@@ -162,9 +162,9 @@ def test_a_missing_file_is_a_scenario_error(tmp_path: Path) -> None:
 def test_unknown_tables_and_keys_are_named(tmp_path: Path) -> None:
     text = 'title = "x"\n\n[[input]]\nchannel = 3\nlvl = 1\nat_ms = 0\n\n[[outputs]]\nchannel = 1\n'
     assert problems(tmp_path, text) == [
-        (1, "unknown table 'title'; a scenario has plant, input, index, fastin, adc, key, host, expect"),
+        (1, "unknown entry 'title'; a scenario has drives, plant, input, index, fastin, adc, key, host, expect"),
         (5, "unknown key 'lvl' in [[input]]; it takes channel, level, at_ms"),
-        (8, "unknown table 'outputs'; a scenario has plant, input, index, fastin, adc, key, host, expect"),
+        (8, "unknown entry 'outputs'; a scenario has drives, plant, input, index, fastin, adc, key, host, expect"),
     ]
 
 
@@ -190,7 +190,7 @@ def test_unknown_tables_and_keys_are_named(tmp_path: Path) -> None:
             2,
             "cannot build the host packet: the data must be ASCII text; 'é' at position 1 is not",
         ),
-        ("[[expect]]\nequals = 1", 2, "[[expect]] needs one of what, terminal_contains, stopped"),
+        ("[[expect]]\nequals = 1", 2, "[[expect]] needs one of what, terminal_contains, terminal_is, stopped"),
         ("[[expect]]\nwhat = 'POS.0'", 2, "[[expect]] needs one of equals, not_equal, at_least, at_most"),
         (
             "[[expect]]\nwhat = 'POS.0'\nequals = 1\nat = 'start'",
@@ -253,3 +253,14 @@ def test_the_directive_example_of_the_readme_reads_without_errors() -> None:
     scenario, errors = parse_directives(example)
     assert errors == []
     assert len(scenario.records()) == example.count("REM @")
+
+
+def test_drives_enabled_and_the_whole_terminal_output_can_be_written_in_a_file(tmp_path: Path) -> None:
+    scenario = load_scenario(write(tmp_path, 'drives = "enabled"\n[[expect]]\nterminal_is = """\n1\n"""\n'))
+    assert scenario.drives_enabled
+    assert scenario.expectations == (TerminalExpectation("1\n", None, scenario.expectations[0].origin, exact=True),)
+
+
+def test_drives_takes_only_enabled(tmp_path: Path) -> None:
+    with pytest.raises(ScenarioFileError, match='drives is "enabled"'):
+        load_scenario(write(tmp_path, 'drives = "on"\n'))

@@ -186,7 +186,7 @@ def test_the_source_name_is_used_in_positions() -> None:
 @pytest.mark.parametrize(
     ("directive", "message"),
     [
-        ("bogus 1", "expected a directive (plant, input, index, fastin, adc, key, host), not 'bogus'"),
+        ("bogus 1", "expected a directive (drives, plant, input, index, fastin, adc, key, host), not 'bogus'"),
         ("plant 0 wobbly", "expected a plant model (ideal, stalled, velamp, torque), not 'wobbly'"),
         ("plant 0 velamp", "plant velamp needs k"),
         ("plant 0 ideal k=3", "plant ideal has no parameter k (it takes none)"),
@@ -218,7 +218,7 @@ def test_a_bad_directive_is_an_error_at_its_line(directive: str, message: str) -
         ("GO = 1", "GO is a command, not a value to expect"),
         ("stopped somewhere", "a run stops for one of end, error, until, deadlock, wall-limit, not 'somewhere'"),
         ("count = 1 ± -1", "a tolerance is not negative, not -1"),
-        ('terminal has "x"', "expected 'contains', not 'has'"),
+        ('terminal has "x"', "expected 'contains' or 'is' (contains, is), not 'has'"),
     ],
 )
 def test_a_bad_expectation_is_an_error_at_its_line(sentence: str, message: str) -> None:
@@ -244,3 +244,14 @@ def test_every_bad_line_is_reported_and_the_good_ones_are_kept() -> None:
     result, problems = parse_directives(program)
     assert [problem.line for problem in problems] == [1, 3]
     assert result.inputs == (InputLevel(0, 2, 1),)
+
+
+def test_drives_enabled_starts_the_run_with_every_drive_on() -> None:
+    scenario, problems = parse_directives("REM @sim drives enabled\n")
+    assert (scenario.drives_enabled, problems) == (True, [])
+    assert parse_directives("PRINT 1\n")[0].drives_enabled is False
+
+
+def test_terminal_is_expects_the_whole_output() -> None:
+    scenario, _ = parse_directives('REM @expect terminal is "1\\n"\n')
+    assert scenario.expectations == (TerminalExpectation("1\n", None, Origin("program", 1), exact=True),)

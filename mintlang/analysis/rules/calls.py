@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.rules.flow import subroutines
 from mintlang.analysis.traversal import Facts
+from mintlang.diagnostics import Span
 from mintlang.semantic.events import event_of
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -72,7 +73,12 @@ def check(facts: Facts) -> Iterator[Finding]:
                     f"{model.controller.title} allows {limit} (error 2015 when it runs)"
                 )
                 yield Finding(unit, own("W116", call.line.span(call.statement.span), detail))
-        for call in dict.fromkeys(graph.recursive):  # once each, in the order found
+        reported: set[tuple[int, Span]] = set()
+        for call in graph.recursive:  # once each place, in the order found
+            place = (call.line.number, call.statement.span)
+            if place in reported:
+                continue
+            reported.add(place)
             detail = f"#{call.statement.label.text} is called again before it returns: every call nests deeper"
             yield Finding(unit, own("W115", call.line.span(call.statement.span), detail))
 

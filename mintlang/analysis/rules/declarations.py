@@ -20,7 +20,7 @@ from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.semantic.model import SemanticModel
-from mintlang.semantic.symbols import Symbol, SymbolKind, Unit
+from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.tokens import TokenKind
 
@@ -37,7 +37,11 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
     renames = database()
     declared = [symbol.name for symbol in model.symbols.variables.values() if symbol.definitions]
     for symbol in model.symbols.variables.values():
-        undeclared = [occurrence for occurrence in symbol.references if not occurrence.declared_before]
+        undeclared = [
+            occurrence
+            for occurrence in symbol.references
+            if not occurrence.declared_before and not _macro_left_in_macro(model, symbol.name, occurrence)
+        ]
         if not undeclared:
             continue
         # A Mint v3 word (GAIN, _servo) says what it became, with the rename where that is enough.
@@ -72,6 +76,11 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
                     fixes = (Fix.replace(occurrence.span, close[0]), *fixes)
             error = mint_error(3001, occurrence.span, detail, fixes=fixes, from_v3=was is not None or was_keyword)
             yield Finding(occurrence.unit, error)
+
+
+def _macro_left_in_macro(model: SemanticModel, name: str, occurrence: Occurrence) -> bool:
+    """A macro's name that came from another macro's text: its definition is the error (2003, at run time)."""
+    return n.identity(name) in model.symbols.macros and _written_at(model, occurrence.unit, occurrence.span) != name
 
 
 def _written_at(model: SemanticModel, unit: Unit, span: Span) -> str:
@@ -149,5 +158,6 @@ def _macro_in_macro(model: SemanticModel) -> Iterator[Finding]:
             for kind, text in definition.body:
                 if kind is TokenKind.NAME and n.identity(text) in model.symbols.macros and definition.body_span:
                     detail = f"the text of macro '{definition.name}' uses macro '{text}', which Mint does not expand"
-                    yield Finding(unit, mint_error(2003, definition.body_span, detail))
+                    # 000:1549-1553: the syntax error comes when the macro is used, at run time
+                    yield Finding(unit, mint_error(2003, definition.body_span, detail, at_run_time=True))
                     break

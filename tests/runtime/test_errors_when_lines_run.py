@@ -1,0 +1,45 @@
+"""Errors the controller raises when a line runs reach #ONERROR, even those mint check finds beforehand.
+
+Only the compiler's errors (syntax, undeclared names, mismatched blocks,
+labels, limits) stop a program before it starts (000:4564-4570, 4611-4615);
+system and interpreter errors call #ONERROR if it is defined, and the
+program can go on (000:4616-4619, EV-14 and EV-19 of the runtime spec).
+"""
+
+from __future__ import annotations
+
+from mintlang.runtime.interpreter.vm import StopReason
+from tests.runtime.running import simulate
+
+HANDLER = 'END\n#ONERROR\nPRINT ERR, " ", ERL, " ", ERRAXIS\nRETURN\n'
+
+
+def test_the_errors_example_an_axis_the_controller_lacks_is_error_2_on_its_line() -> None:
+    # 000:9949-9956: MOVER.8 = 20 on line 2 gives ERR 2, ERL 2 and ERRAXIS 8 (NextMove BX: axes 0 to 7)
+    result = simulate("MOVER.0 = 10\nMOVER.8 = 20\nGO[0,7]\n" + HANDLER)
+    assert result.terminal.startswith("2 2 8\n")
+
+
+def test_an_index_outside_its_array_is_error_2016_when_the_line_runs() -> None:
+    # 000:19040-19046: indices of DIM t(3) are 1 to 3; the program goes on after RETURN (EV-19 RC)
+    result = simulate('DIM t(3)\nt(4) = 1\nPRINT "after"\n' + HANDLER)
+    assert result.stop.reason is StopReason.END
+    assert result.terminal == "2016 2 -1\nafter\n"
+
+
+def test_a_constant_out_of_range_is_error_3_when_the_line_runs() -> None:
+    # 000:4600-4606: SCALE = -3 is printed as R0003, a run-time error; ERRAXIS names the axis
+    result = simulate('PRINT "before"\nSCALE.0 = -3\nPRINT "after"\n' + HANDLER)
+    assert result.terminal == "before\n3 2 0\nafter\n"
+
+
+def test_without_a_handler_the_error_stops_the_program_at_its_line() -> None:
+    result = simulate('PRINT "before"\nDIM t(2)\nt(0) = 1\nPRINT "never"\n')
+    assert (result.stop.reason, result.err, result.erl, result.terminal) == (StopReason.ERROR, 2016, 3, "before\n")
+
+
+def test_a_macro_left_in_another_macros_text_is_a_syntax_error_when_its_line_runs() -> None:
+    # 000:1549-1553: "A syntax error will result at run time"
+    source = 'DEFINE one = 1\nDEFINE show = PRINT one\nPRINT "before"\nshow\nPRINT "after"\n'
+    result = simulate(source)
+    assert (result.stop.reason, result.err, result.erl, result.terminal) == (StopReason.ERROR, 2003, 4, "before\n")

@@ -118,9 +118,7 @@ def build_controller(
         if events.has_handler(EventClass.ERROR):
             events.raise_event(EventClass.ERROR)
             return
-        error = MintError(AXIS_ERROR_PRESENT, axis.number, f"AXISERROR {axis.axiserror}")
-        vm.stop(StopReason.ERROR, vm.error_message(error, site))
-        abort_all()
+        vm.halt(MintError(AXIS_ERROR_PRESENT, axis.number, f"AXISERROR {axis.axiserror}"), site)
 
     def abort_all() -> None:
         for axis in axes:
@@ -136,6 +134,7 @@ def build_controller(
     supervisor = Supervisor(motion, raise_axis_error, stop_inputs)
     motion.on_error = lambda axis, bit: supervisor.error(axis, bit, clock.now)
     vm.on_fatal = abort_all
+    vm.announce = terminal.announce
     events.errors_latched = lambda: any(axis.axiserror for axis in axes)
 
     events.on_fastin_return = lambda number: setattr(system, "fast_armed", True)

@@ -11,6 +11,12 @@ from __future__ import annotations
 from mintlang.keyworddb import database
 
 
+def error_title(code: int) -> str:
+    """The manual's title of error ``code``, as the controller prints it."""
+    record = database().errors.get(code)
+    return record.title if record is not None else f"error {code}"
+
+
 class MintError(Exception):
     """A run-time error the controller would report with ``code`` (and ``axis``, its ``ERRAXIS``)."""
 
@@ -22,15 +28,15 @@ class MintError(Exception):
 
     @property
     def title(self) -> str:
-        record = database().errors.get(self.code)
-        return record.title if record is not None else f"error {self.code}"
+        return error_title(self.code)
 
-    def describe(self) -> str:
-        """``R0003: Data specified out of range [axis/channel 0]``, as the controller prints it."""
+    def describe(self, *, explained: bool = True) -> str:
+        """``R0003: Data specified out of range [axis/channel 0]``, as the controller prints it, then (when
+        ``explained``) the simulator's own word on the cause in brackets."""
         text = f"R{self.code:04d}: {self.title}"
         if self.axis is not None:
             text += f" [axis/channel {self.axis}]"
-        if self.detail:
+        if self.detail and explained:
             text += f" ({self.detail})"
         return text
 

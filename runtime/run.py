@@ -18,13 +18,15 @@ import mintlang
 from mintlang.controllers import profile
 from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.runtime.controller import Controller, build_controller
-from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.errors import MintError, NotSimulated, error_title
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.observation import AxisState, Observation, Refused, axis_state
 from mintlang.runtime.scenario import ScenarioFileError, merge, parse_directives
 from mintlang.runtime.scenario.expectations import Expectation, Outcome, TerminalExpectation, evaluate, not_reached
 from mintlang.runtime.scenario.stimulus import Scenario
 from mintlang.runtime.simulation import Limits, Simulator, Stop
+from mintlang.semantic.model import SemanticModel
+from mintlang.semantic.units import Unit
 
 
 @dataclass(frozen=True, slots=True)
@@ -42,21 +44,40 @@ class RunResult:
     terminal_dropped: int = 0  # characters printed before those ``terminal`` keeps
 
 
-def _not_run(
-    message: str,
-    scenario: Scenario,
-    *,
-    code: int | None = None,
-    line: int | None = None,
-    unit: str | None = None,
-    statement: str | None = None,
-) -> RunResult:
-    """A run refused before its first statement; ERR and ERL tell the controller's compile error, if it is one.
+@dataclass(frozen=True, slots=True)
+class _CompileError:
+    """The first error the controller's compiler finds, which stops the run before the file it is in starts."""
 
-    The expectations are still judged: a case may expect a program to fail to compile.
-    """
-    stop = Stop(StopReason.ERROR, 0, unit, line, statement, message)
-    refused = Refused(float(code) if code is not None else -1.0, float(line or 0))
+    code: int
+    unit: Unit
+    line: int
+    statement: str
+    message: str  # with the checker's explanation, for the report
+    printed: str  # as the controller prints it: ``C2014: PROGRAM Incorrect loop terminator [line 12]``
+
+
+def _compile_error(analysis: mintlang.Analysis) -> _CompileError | None:
+    """The configuration is compiled (and run) first, then the program (000:269-271)."""
+    model = analysis.model
+    for unit, diagnostics, document in (
+        (Unit.CONFIGURATION, analysis.configuration, model.configuration),
+        (Unit.PROGRAM, analysis.program, model.program),
+    ):
+        for diagnostic in diagnostics:
+            if diagnostic.mint_error is not None and not diagnostic.at_run_time and document is not None:
+                line = document.line_index.position(diagnostic.span.start).line
+                text = document.source[diagnostic.span.start : diagnostic.span.end]
+                code, name = diagnostic.mint_error, unit.value.upper()
+                message = f"C{code:04d}: {name} {diagnostic.message} [line {line}]"
+                printed = f"C{code:04d}: {name} {error_title(code)} [line {line}]"
+                return _CompileError(code, unit, line, text, message, printed)
+    return None
+
+
+def _not_run(message: str, scenario: Scenario, code: int | None = None) -> RunResult:
+    """A run the simulator cannot start (a keyword it does not model, an array it cannot size); ERR tells why."""
+    stop = Stop(StopReason.ERROR, 0, None, None, None, message)
+    refused = Refused(float(code) if code is not None else -1.0, 0.0)
     outcomes = tuple(
         evaluate(expectation, refused) if expectation.at_ms is None else not_reached(expectation, 0)
         for expectation in scenario.expectations
@@ -79,32 +100,40 @@ def run_source(
 
     The program's own ``REM @sim`` directives are merged under ``scenario``; a
     directive that cannot be read raises ``ScenarioFileError`` before anything runs,
-    naming the program ``name`` (its path, on the command line).
+    naming the program ``name`` (its path, on the command line). A file the
+    controller's compiler rejects does not run: when it is the program, the
+    configuration still runs first, as on the controller.
     """
     directives, problems = parse_directives(source, name, controller=profile(controller))
     if problems:
         raise ScenarioFileError(problems)
     scenario = merge(directives, scenario) if scenario is not None else directives
-    limits = limits or Limits()
     analysis = mintlang.check_application(source, controller=controller, config=config)
-    for unit, diagnostics, document in (
-        ("configuration", analysis.configuration, analysis.model.configuration),
-        ("program", analysis.program, analysis.model.program),
-    ):
-        for diagnostic in diagnostics:
-            if diagnostic.mint_error is not None and not diagnostic.at_run_time and document is not None:
-                line = document.line_index.position(diagnostic.span.start).line
-                text = document.source[diagnostic.span.start : diagnostic.span.end]
-                message = f"C{diagnostic.mint_error or 0:04d}: {unit.upper()} {diagnostic.message} [line {line}]"
-                return _not_run(message, scenario, code=diagnostic.mint_error, line=line, unit=unit, statement=text)
+    refused = _compile_error(analysis)
+    model = analysis.model
+    if refused is not None:  # what runs before the compiler stops: the configuration, if the program is at fault
+        runs_first = config if refused.unit is Unit.PROGRAM else None
+        model = mintlang.check_application("", controller=controller, config=runs_first).model
+    return _simulate(model, scenario, limits or Limits(), refused, echo=echo, on_tick=on_tick)
+
+
+def _simulate(
+    model: SemanticModel,
+    scenario: Scenario,
+    limits: Limits,
+    refused: _CompileError | None,
+    *,
+    echo: Callable[[str], None] | None,
+    on_tick: Callable[[Controller, int], None] | None,
+) -> RunResult:
     try:
         built = build_controller(
-            analysis.model, scenario, slice_statements=limits.slice_statements, host_port=limits.host_port, echo=echo
+            model, scenario, slice_statements=limits.slice_statements, host_port=limits.host_port, echo=echo
         )
     except NotSimulated as missing:
         return _not_run(str(missing), scenario)
     except MintError as error:
-        return _not_run(error.describe(), scenario, code=error.code)
+        return _not_run(error.describe(), scenario, error.code)
     simulator = Simulator(built, limits)
     outcomes: list[Outcome] = []
     end_expectations = []
@@ -125,6 +154,11 @@ def run_source(
     if on_tick is not None:
         simulator.on_tick = lambda tick: on_tick(built, tick)
     stop = simulator.run()
+    if refused is not None and stop.reason is StopReason.END:
+        unit = refused.unit.value
+        stop = Stop(StopReason.ERROR, stop.time_ms, unit, refused.line, refused.statement, refused.message)
+        built.vm.record_error(refused.code, refused.line, None)
+        built.terminal.announce(refused.printed)
     # a check the run never reached did not hold: dropping it would let a run that stops early pass
     outcomes.extend(not_reached(expectation, stop.time_ms) for expectation in unchecked.values())
     final = Observation(built, stop.reason.value)

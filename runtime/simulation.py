@@ -104,8 +104,7 @@ class Simulator:
         try:
             self.tick(t)
         except MintError as fault:
-            vm.stop(StopReason.ERROR, vm.error_message(fault, vm.current_site()))
-            vm.on_fatal()
+            vm.halt(fault, vm.current_site())
         except NotSimulated as missing:
             vm.stop(StopReason.ERROR, str(missing))
             vm.on_fatal()

@@ -108,6 +108,10 @@ class Terminal:
         """Move to the next tab stop; at a stop already, move to the following one."""
         self.write(" " * (TAB_WIDTH - self.column % TAB_WIDTH))
 
+    def announce(self, message: str) -> None:
+        """A message of the controller's own (an error that stops the program), on a line of its own."""
+        self.write((NEWLINE if self.column else "") + message + NEWLINE)
+
     def print_items(self, items: Sequence[tuple[str, str | None]], newline: bool) -> None:
         """Render one ``PRINT`` from already formatted items, each with the separator after it.
 

@@ -86,7 +86,7 @@ class _Open:
     opener: Place
     span: Span  # of the opener, in its file: where its diagnostics go
     middle: Place | None = None
-    reported: bool = False  # an error already tells of this block: its opener is broken, or met a wrong closer
+    reported: bool = False  # an error already tells of this block: its opener is broken, or a closer mismatched
 
 
 _OPENING_WORDS = {"REPEAT": BlockKind.REPEAT, "LOOP": BlockKind.LOOP}
@@ -151,7 +151,8 @@ class _Matcher:
         if not stack or stack[-1].kind is not kind:
             if stack:
                 message += f" (the innermost open block is {stack[-1].kind.value} on line {stack[-1].opener.line})"
-                stack[-1].reported = True
+            for opened in stack:  # the compiler stops here: what it had open is not reported again
+                opened.reported = True
             self.diagnostics.append(_error(code, span, message))
             return
         top = stack.pop()

@@ -112,6 +112,7 @@ class Interpreter:
         self.erl = 0.0
         self.erraxis = -1.0
         self.on_fatal: Callable[[], None] = lambda: None  # an unhandled error aborts every axis
+        self.announce: Callable[[str], None] = lambda message: None  # the controller prints its error message
         self.events: EventSource | None = None
         self.executing: int | None = None  # the pc of the operation running now, outside a slice None
 
@@ -250,15 +251,23 @@ class Interpreter:
             except MintError:
                 pass
         self.pc = pc
+        self.halt(error, site)
+
+    def halt(self, error: MintError, site: Site | None) -> None:
+        """End the run on an error no handler takes: the controller prints its message and aborts every axis
+        (000:4579-4581, 4605-4609)."""
+        if self.stopped is None:
+            self.announce(self.error_message(error, site, explained=False))
         self.stop(StopReason.ERROR, self.error_message(error, site))
         self.on_fatal()
 
     @staticmethod
-    def error_message(error: MintError, site: Site | None) -> str:
+    def error_message(error: MintError, site: Site | None, *, explained: bool = True) -> str:
         """``R0003: PROGRAM Data specified out of range [axis/channel 0] [line 20]`` (EV-13 RC)."""
+        described = error.describe(explained=explained)
         if site is None:
-            return error.describe()
-        return error.describe().replace(":", f": {site.unit.upper()}", 1) + f" [line {site.line}]"
+            return described
+        return described.replace(":", f": {site.unit.upper()}", 1) + f" [line {site.line}]"
 
     def record_error(self, code: int, line: int, axis: int | None) -> None:
         self.err = float(code)

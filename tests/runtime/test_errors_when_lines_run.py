@@ -34,12 +34,15 @@ def test_a_constant_out_of_range_is_error_3_when_the_line_runs() -> None:
 
 
 def test_without_a_handler_the_error_stops_the_program_at_its_line() -> None:
+    # 000:4579-4590: with no #ONERROR the controller prints the error with its line
     result = simulate('PRINT "before"\nDIM t(2)\nt(0) = 1\nPRINT "never"\n')
-    assert (result.stop.reason, result.err, result.erl, result.terminal) == (StopReason.ERROR, 2016, 3, "before\n")
+    assert (result.stop.reason, result.err, result.erl) == (StopReason.ERROR, 2016, 3)
+    assert result.terminal == "before\nR2016: PROGRAM Invalid index [line 3]\n"
 
 
 def test_a_macro_left_in_another_macros_text_is_a_syntax_error_when_its_line_runs() -> None:
     # 000:1549-1553: "A syntax error will result at run time"
     source = 'DEFINE one = 1\nDEFINE show = PRINT one\nPRINT "before"\nshow\nPRINT "after"\n'
     result = simulate(source)
-    assert (result.stop.reason, result.err, result.erl, result.terminal) == (StopReason.ERROR, 2003, 4, "before\n")
+    assert (result.stop.reason, result.err, result.erl) == (StopReason.ERROR, 2003, 4)
+    assert result.terminal == "before\nR2003: PROGRAM Syntax error [line 4]\n"

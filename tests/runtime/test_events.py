@@ -233,7 +233,11 @@ def test_eventdisable_stops_onerror_for_a_synchronous_error_which_then_ends_the_
     # EV-5: a set error bit stops #ONERROR being called, so the error is unhandled
     source = 'DIM a\nEVENTDISABLE = 2\na = 1 / a\nPRINT "continued"\nEND\n#ONERROR\nPRINT "handler"\nRETURN\n'
     result = simulate(source)
-    assert (result.stop.reason, result.err, result.terminal) == (StopReason.ERROR, 2021, "")
+    assert (result.stop.reason, result.err, result.terminal) == (
+        StopReason.ERROR,
+        2021,
+        "R2021: PROGRAM Divide by zero [line 3]\n",
+    )
 
 
 def test_each_file_is_served_by_its_own_event_handlers() -> None:
@@ -241,11 +245,12 @@ def test_each_file_is_served_by_its_own_event_handlers() -> None:
     config = 'DIM q\nRESETALL\nq = 1 / q\nPRINT "config goes on"\nEND\n#ONERROR\nPRINT "config handler"\nRETURN\n'
     program = 'q = 1 / q\nPRINT "never"\nEND\n'
     result = simulate(program, config=config)
-    assert result.terminal == "config handler\nconfig goes on\n"
+    assert result.terminal == "config handler\nconfig goes on\nR2021: PROGRAM Divide by zero [line 1]\n"
     assert "R2021: PROGRAM" in result.stop.message and (result.err, result.erl) == (2021, 1)
     program_handler = 'PRINT "program"\nEND\n#ONERROR\nPRINT "program handler"\nRETURN\n'
     result = simulate(program_handler, config="DIM q\nRESETALL\nq = 1 / q\n")
-    assert "R2021: CONFIGURATION" in result.stop.message and result.terminal == ""
+    assert "R2021: CONFIGURATION" in result.stop.message
+    assert result.terminal == "R2021: CONFIGURATION Divide by zero [line 3]\n"
 
 
 def test_forcing_a_numbered_class_runs_its_lowest_numbered_handler() -> None:

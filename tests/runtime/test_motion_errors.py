@@ -81,7 +81,7 @@ PRINT "moving ", AXISERROR.0
 PAUSE IDLE.0
 """
     result = simulate(source)
-    assert result.terminal == "moving 0\n"
+    assert result.terminal == "moving 0\nR0500: PROGRAM Axis error present [axis/channel 0] [line 6]\n"
     assert result.axes[0].axiserror & 4 and result.axes[0].pos == 500
 
 

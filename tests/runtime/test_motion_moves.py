@@ -224,7 +224,7 @@ def test_torque_writes_the_dac_at_once() -> None:
 
 def test_demand_is_mint_v3s_name_for_the_dac_and_no_v4_keyword() -> None:
     result = simulate("TORQUE.0 = 25\nPRINT DEMAND.0\n")
-    assert result.stop.reason is StopReason.ERROR and result.terminal == ""
+    assert result.stop.reason is StopReason.ERROR and result.terminal == "C3007: PROGRAM Keyword not defined [line 2]\n"
     assert "C3007" in result.stop.message and "replaced by DAC" in result.stop.message
 
 
@@ -266,7 +266,7 @@ def test_the_same_vector_queued_twice_is_two_moves_and_go_on_one_axis_starts_eac
     # MP-28: GO on one axis of a vector starts it on all; equal loads are still separate moves
     source = (
         "MOVEBUFFERSIZE[0,1] = 4;\nVECTORA[0,1] = 100, 100\nVECTORA[0,1] = 0, 0\nVECTORA[0,1] = 100, 100\n"
-        "GO.0\nPAUSE IDLE.0 AND IDLE.1\nPRINT POS.0, \" \", POS.1\n"
+        'GO.0\nPAUSE IDLE.0 AND IDLE.1\nPRINT POS.0, " ", POS.1\n'
     )
     result = simulate(source, until_ms=20_000)
     assert (result.stop.reason, result.terminal) == (StopReason.END, "100 100\n")

@@ -128,7 +128,7 @@ def test_an_error_in_a_keyword_names_its_axis_in_erraxis() -> None:
 def test_a_compile_error_stops_the_run_before_the_first_statement() -> None:
     result = simulate('PRINT "never"\nx = 1\n')
     assert result.stop.reason is StopReason.ERROR
-    assert result.terminal == ""
+    assert result.terminal == "C3001: PROGRAM Variable undefined, use DIM [line 2]\n"  # only the compiler's message
     assert result.stop.message.startswith("C3001") and result.stop.line == 2
 
 

@@ -165,6 +165,8 @@ def test_drives_start_disabled_and_the_error_says_how_to_enable_them(tmp_path: P
 
 def test_a_compile_error_is_reported_with_its_number_and_line_in_the_json_report(tmp_path: Path) -> None:
     result = mint_run(write(tmp_path, "open.mnt", "DIM a\nFOR a = 1 TO 2\nPRINT a\n"), "--report", "json")
-    report = json.loads(result.stdout)
+    printed, report_text = result.stdout.split("\n", 1)
+    report = json.loads(report_text)
+    assert printed == "C2009: PROGRAM NEXT w/o FOR [line 2]"
     assert (report["stopped"], report["err"], report["erl"]) == ("error", 2009, 2)
     assert report["message"].startswith("C2009")

@@ -274,7 +274,7 @@ def test_a_binary_file_is_refused_before_the_run(tmp_path: Path) -> None:
 def test_a_mint_v3_keyword_stops_the_run_before_it_starts(tmp_path: Path) -> None:
     # GAIN is no v4 keyword (replaced by KPROP): the controller rejects it, so a run must not treat it as a variable
     result = mint_run(write(tmp_path, "old.mnt", "GAIN = 2\nPRINT KPROP.0\n"))
-    assert result.exit_code == 1 and result.stdout == ""
+    assert result.exit_code == 1 and result.stdout == "C3001: PROGRAM Variable undefined, use DIM [line 1]\n"
     assert "C3001" in result.stderr and "replaced by KPROP" in result.stderr
 
 

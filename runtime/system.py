@@ -57,7 +57,7 @@ class System:
         table.register("ERR", read=lambda _: vm.err)
         table.register("ERL", read=lambda _: vm.erl)
         table.register("ERRAXIS", read=lambda _: vm.erraxis)
-        table.register("INKEY", read=lambda _: float(self.terminal.inkey()))
+        table.register("INKEY", read=self._inkey)
         table.register("CLS", command=self._cls)
         table.register("BEEP", command=self._beep)
         table.register("LOCATE", command=self._locate)
@@ -65,6 +65,14 @@ class System:
         table.register("COMMS", read=lambda channel: self.comms.read(channel or 0), write=self._write_comms)
         table.register("FASTPOS", read=self._fastpos)
         table.register("FASTENCODER", read=lambda channel: self.fast_encoders[self._axis(channel)])
+
+    def _inkey(self, _: int | None) -> float:
+        """Each read takes one key, so after a key the next read differs: PAUSE INKEY = 'Y' reads on through
+        the keys typed ahead, and PAUSE INKEY = 0 until they are all taken."""
+        code = self.terminal.inkey()
+        if code:
+            self.clock.changes_next_tick()
+        return float(code)
 
     def _cls(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         self.terminal.cls()

@@ -14,7 +14,7 @@ nesting limits of section 3.9 give error 2015.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from enum import StrEnum
 from typing import NamedTuple
@@ -128,7 +128,7 @@ class _Matcher:
             broken = type(statement) is n.SyntaxError_
             self.stack.append(_Open(kind, place, line.span(statement.span), reported=broken))
             self.open[kind] += 1
-            problem = _nesting_problem(self.open, self.limits)
+            problem = nesting_problem(self.open, self.limits)
             if problem is not None:
                 self.diagnostics.append(_error(2015, line.span(statement.span), problem))
         elif isinstance(statement, n.Until) or (isinstance(statement, n.SyntaxError_) and statement.closes == "UNTIL"):
@@ -182,8 +182,8 @@ def match_blocks(lines: Iterable[tuple[n.PlacedLine, LineFacts]], controller: Co
     return matcher.finish()
 
 
-def _nesting_problem(open_: dict[BlockKind, int], limits: NestingLimits) -> str | None:
-    """What limit the blocks open now exceed, if any (``open_`` counts them by kind)."""
+def nesting_problem(open_: Mapping[BlockKind, int], limits: NestingLimits) -> str | None:
+    """What limit the blocks open now exceed, if any (``open_`` counts them by kind); the runtime's stack too."""
     ifs, fors = open_[BlockKind.IF], open_[BlockKind.FOR]
     others = open_[BlockKind.REPEAT] + open_[BlockKind.WHILE] + open_[BlockKind.LOOP]
     if ifs > limits.if_blocks:

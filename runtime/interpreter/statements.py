@@ -19,7 +19,7 @@ from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordTable
 from mintlang.runtime.numbers import f32
 from mintlang.runtime.printing import format_bin, format_chr, format_hex, format_number, format_using
 from mintlang.runtime.terminal import Terminal
-from mintlang.semantic.blocks import Block, Place
+from mintlang.semantic.blocks import Block, BlockKind, Place
 from mintlang.syntax import nodes as n
 
 WRITE_OF_READ_ONLY = 2000
@@ -68,6 +68,7 @@ class StatementCompiler:
         self.end_of_unit = layout.end
         self.on_end = layout.on_end
         self.place = Place(0, 0)  # of the statement being compiled
+        self.conditions: dict[Place, Evaluate] = {}  # each WHILE's condition, which its ENDW tests again
 
     def compile(self, statement: n.Statement, place: Place, pc: int) -> Operation:
         """The operation of ``statement``, which stands at ``place`` and is laid out at ``pc``."""
@@ -305,15 +306,22 @@ class StatementCompiler:
         return branch
 
     def if_do(self, statement: n.IfDo, pc: int) -> Operation:
+        """Either branch runs inside the block, which holds a place on the stack until its ENDIF or ELSE."""
         block = self._opened()
         condition = self.expressions.compile(statement.condition)
-        otherwise = self._after(block.middle) if block.middle is not None else self._after(block.closer)
-        self._recover(pc, self._after(block.closer))
+        after = self._after(block.closer)
+        otherwise = self._after(block.middle) if block.middle is not None else None
+        self._recover(pc, after)
         vm = self.vm
 
         def branch() -> None:
-            if not condition():
+            if condition():
+                vm.enter_loop(Loop(pc, after, BlockKind.IF))
+            elif otherwise is not None:
+                vm.enter_loop(Loop(pc, after, BlockKind.IF))
                 vm.pc = otherwise
+            else:
+                vm.pc = after
 
         return branch
 
@@ -335,8 +343,7 @@ class StatementCompiler:
             if (increment >= 0 and first > last) or (increment < 0 and first < last):
                 vm.pc = exit_pc  # the body never runs; the variable keeps the start value (NM-9 RC)
                 return
-            vm.leave_loop(pc)
-            vm.enter_loop(Loop(pc, exit_pc, True, slot, last, increment))
+            vm.enter_loop(Loop(pc, exit_pc, BlockKind.FOR, slot, last, increment))
 
         return enter
 
@@ -358,13 +365,18 @@ class StatementCompiler:
         raise NotSimulated(word, "statement")
 
     def _endif(self, block: Block, pc: int) -> Operation:
-        return _nothing
+        opener = self.positions[block.opener]
+        vm = self.vm
+        return lambda: vm.leave_loop(opener)
 
     def _else(self, block: Block, pc: int) -> Operation:
+        """The end of the true branch: leave the block."""
         after = self._after(block.closer)
+        opener = self.positions[block.opener]
         vm = self.vm
 
         def skip() -> None:
+            vm.leave_loop(opener)
             vm.pc = after
 
         return skip
@@ -393,9 +405,10 @@ class StatementCompiler:
         self._recover(pc, exit_pc, pc)
         vm = self.vm
 
+        kind = block.kind
+
         def enter() -> None:
-            vm.leave_loop(pc)
-            vm.enter_loop(Loop(pc, exit_pc, False))
+            vm.enter_loop(Loop(pc, exit_pc, kind))
 
         return enter
 
@@ -426,28 +439,32 @@ class StatementCompiler:
         return until
 
     def while_(self, statement: n.While, pc: int) -> Operation:
+        """Entering the loop; its ENDW tests the condition again for each further pass."""
         block = self._opened()
-        condition = self.expressions.compile(statement.condition)
+        condition = self.conditions[self.place] = self.expressions.compile(statement.condition)
         exit_pc = self._after(block.closer)
         self._recover(pc, exit_pc, pc)
         vm = self.vm
 
         def while_() -> None:
             if condition():
-                if vm.innermost_loop(pc) is None:
-                    vm.enter_loop(Loop(pc, exit_pc, False))
+                vm.enter_loop(Loop(pc, exit_pc, BlockKind.WHILE))
             else:
-                vm.leave_loop(pc)
                 vm.pc = exit_pc
 
         return while_
 
     def _endw(self, block: Block, pc: int) -> Operation:
         opener = self.positions[block.opener]
+        condition = self.conditions[block.opener]
+        self._recover(pc, pc + 1, opener)
         vm = self.vm
 
         def again() -> None:
-            vm.pc = opener
+            if condition():
+                vm.pc = opener + 1
+            else:
+                vm.leave_loop(opener)
 
         return again
 

@@ -18,6 +18,7 @@ from typing import Protocol
 from mintlang.controllers import NestingLimits
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.semantic.blocks import BlockKind, nesting_problem
 
 Operation = Callable[[], bool | None]
 
@@ -45,9 +46,16 @@ class Site:
 
 @dataclass(slots=True)
 class Loop:
-    opener: int  # pc of the FOR/WHILE/REPEAT/LOOP operation
+    """A block open on the controller's stack: a loop, or an IF .. DO whose branch is running.
+
+    Leaving a block with GOTO leaves its entry behind, and done again and again
+    that overflows the stack (000:11199-11215): the entries count toward the
+    nesting limits of section 3.9 until the block that holds them ends.
+    """
+
+    opener: int  # pc of the FOR/WHILE/REPEAT/LOOP/IF .. DO operation
     exit: int  # pc after the closer, where EXIT continues
-    is_for: bool
+    kind: BlockKind
     slot: int = -1  # FOR: the loop variable
     end: float = 0.0
     step: float = 0.0
@@ -206,11 +214,15 @@ class Interpreter:
     # ------------------------------------------------------------------- loops
 
     def enter_loop(self, loop: Loop) -> None:
+        """Push a block entered now; one more than the controller's stack holds is a stack overflow."""
         loops = self.loops
-        same_kind = sum(1 for entry in loops if entry.is_for == loop.is_for) + 1
-        if same_kind > (self.nesting.for_loops if loop.is_for else self.nesting.other_loops):
-            kind = "FOR loops" if loop.is_for else "WHILE, LOOP and REPEAT blocks"
-            raise MintError(STACK_OVERFLOW, detail=f"{kind} nested too deep")
+        open_ = dict.fromkeys(BlockKind, 0)
+        for entry in loops:
+            open_[entry.kind] += 1
+        open_[loop.kind] += 1
+        problem = nesting_problem(open_, self.nesting)
+        if problem is not None:
+            raise MintError(STACK_OVERFLOW, detail=problem)
         loops.append(loop)
 
     def frame_loops(self) -> int:
@@ -225,13 +237,27 @@ class Interpreter:
                 del loops[depth:]
                 return
 
-    def innermost_loop(self, opener: int) -> Loop | None:
+    def _innermost(self) -> int | None:
+        """Where the running frame's innermost loop is on the stack (IF blocks above it do not count)."""
         loops = self.loops
-        return loops[-1] if len(loops) > self.frame_loops() and loops[-1].opener == opener else None
+        for depth in range(len(loops) - 1, self.frame_loops() - 1, -1):
+            if loops[depth].kind is not BlockKind.IF:
+                return depth
+        return None
+
+    def innermost_loop(self, opener: int) -> Loop | None:
+        """The running frame's innermost loop, if it is the one opened at ``opener``."""
+        depth = self._innermost()
+        return self.loops[depth] if depth is not None and self.loops[depth].opener == opener else None
 
     def exit_loop(self) -> Loop | None:
-        """Pop the running frame's innermost loop for ``EXIT``; None when the frame has none open."""
-        return self.loops.pop() if len(self.loops) > self.frame_loops() else None
+        """Leave the running frame's innermost loop for ``EXIT``, and the IF blocks inside it; None when none."""
+        depth = self._innermost()
+        if depth is None:
+            return None
+        loop = self.loops[depth]
+        del self.loops[depth:]
+        return loop
 
     # ------------------------------------------------------------------ errors
 

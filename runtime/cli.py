@@ -24,10 +24,11 @@ from rich.text import Text
 
 from mintlang.cli.files import program_as_own_configuration
 from mintlang.cli.options import controller_option
-from mintlang.controllers import ControllerProfile, profile
+from mintlang.controllers import ControllerProfile
 from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.runtime.comms.server import PortUnavailable
 from mintlang.runtime.controller import Controller
+from mintlang.runtime.hardware import simulated
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.outputs import OutputProblem, check_plot, check_trace
 from mintlang.runtime.report import as_json
@@ -156,7 +157,7 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
         raise click.UsageError(f"--config {config_path} is the program {program} itself: name the configuration file")
     try:
         files = [read_source(path) for path in (program, config_path) if path is not None]
-        scenario = _scenario((*stimulus_paths, *expect_paths), profile(controller))
+        scenario = _scenario((*stimulus_paths, *expect_paths), simulated(controller))
         if drives == "enabled":
             scenario = merge(scenario, Scenario(drives=(DrivesEnabled(),)))
     except ScenarioFileError as error:
@@ -181,8 +182,8 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     )
     if trace_axes is not None and not tracing:
         raise click.UsageError("--trace-axes chooses the axes of --trace or --plot; give one of them")
-    simulated = profile(controller)
-    axes = _axes_list(trace_axes, simulated) or tuple(range(simulated.axis_count))
+    machine = simulated(controller)
+    axes = _axes_list(trace_axes, machine) or tuple(range(machine.axis_count))
     recorders = _Recorders(Trace(axes) if tracing else None, errors, until_ms)
     stdout = _Stdout(live=realtime or host_port is not None)
     try:

@@ -16,6 +16,7 @@ from mintlang.runtime.comms.packets import HostEndpoint
 from mintlang.runtime.comms.server import HostPortServer
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.events import MINTDRIVE, NEXTMOVE, EventClass, Events
+from mintlang.runtime.hardware import simulated
 from mintlang.runtime.inert import InertSettings
 from mintlang.runtime.interpreter.program import Linked, link
 from mintlang.runtime.interpreter.vm import Interpreter, StopReason
@@ -76,7 +77,7 @@ def build_controller(
     echo: Callable[[str], None] | None = None,
 ) -> Controller:
     """Assemble the controller for ``model``; raises ``NotSimulated`` or ``MintError`` when it cannot compile."""
-    profile = model.controller
+    profile = simulated(model.controller.controller)
     clock = Clock()
     table = KeywordTable()
     terminal = Terminal(echo)

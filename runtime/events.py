@@ -21,6 +21,8 @@ from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
 
+TIMER_LONGEST_MS = 8_000_000  # the longest TIMEREVENT period on every controller (000:16780-16786)
+
 ONERROR_REENTRY_LIMIT = 100  # consecutive re-entries of #ONERROR with an error still latched (AX-7 RC)
 
 
@@ -197,8 +199,8 @@ class Events:
     def set_timer(self, period: float) -> None:
         """``TIMEREVENT``: 0 stops it; otherwise at least the controller's minimum, odd values rounded up (T-11 RC)."""
         value = int(period)
-        if value < 0:
-            raise MintError(3, detail="TIMEREVENT cannot be negative")
+        if not 0 <= value <= TIMER_LONGEST_MS:
+            raise MintError(3, detail=f"TIMEREVENT takes 0 to {TIMER_LONGEST_MS} ms")
         minimum = self.dispatch.timer_minimum_ms
         if value and value < minimum:
             value = minimum

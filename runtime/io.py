@@ -43,7 +43,7 @@ class DigitalIO:
         self.active = 0  # active states after INPUTACTIVELEVEL
         self.active_level = all_inputs  # INPUTACTIVELEVEL: 1 = active high (the default)
         self.edge_mode = 0  # INPUTMODE: 1 = edge-triggered
-        self.positive_trigger = all_inputs  # INPUTPOSTRIGGER
+        self.positive_trigger = 0  # INPUTPOSTRIGGER: no edge is detected until one is chosen (000:12353-12356)
         self.negative_trigger = 0  # INPUTNEGTRIGGER
         self.latched = 0  # edges seen and not yet read
         self.out = 0  # OUT as last written
@@ -139,7 +139,9 @@ class DigitalIO:
     def _bank_writer(self, attribute: str) -> Callable[[int | None, float], None]:
         def write(channel: int | None, value: float) -> None:
             if channel is None:
-                setattr(self, attribute, int(value) & 0xFFFFFF)
+                if value != int(value) or not 0 <= value <= self.all_inputs:
+                    raise MintError(OUT_OF_RANGE, detail=f"one bit per input: 0 to {self.all_inputs}")
+                setattr(self, attribute, int(value))
                 return
             bit = 1 << _check(channel, self.inputs, INVALID_INPUT)
             current = getattr(self, attribute)

@@ -15,10 +15,10 @@ from dataclasses import dataclass
 from functools import partial
 
 import mintlang
-from mintlang.controllers import profile
 from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.runtime.controller import Controller, build_controller
 from mintlang.runtime.errors import MintError, NotSimulated, error_title
+from mintlang.runtime.hardware import simulated
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.observation import AxisState, Observation, Refused, axis_state
 from mintlang.runtime.scenario import ScenarioFileError, merge, parse_directives
@@ -104,7 +104,7 @@ def run_source(
     controller's compiler rejects does not run: when it is the program, the
     configuration still runs first, as on the controller.
     """
-    directives, problems = parse_directives(source, name, controller=profile(controller))
+    directives, problems = parse_directives(source, name, controller=simulated(controller))
     if problems:
         raise ScenarioFileError(problems)
     scenario = merge(directives, scenario) if scenario is not None else directives

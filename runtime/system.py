@@ -35,7 +35,7 @@ class System:
             "LINE": self._line,
             "FIRMWAREREVISION": lambda: BUILD_NUMBER,
         }
-        self.fast_positions: list[float] = [0.0] * len(axes)  # FASTPOS per axis, counts
+        self.fast_positions: list[float] = [0.0] * len(axes)  # FASTPOS per axis: the position latched, in counts
         self.fast_encoders: list[float] = [0.0] * len(axes)
         self.fast_armed = True
 
@@ -112,14 +112,14 @@ class System:
     def _fastpos(self, channel: int | None) -> float:
         number = self._axis(channel)
         axis = self.axes[number]
-        return axis.position(self.fast_positions[number])
+        return self.fast_positions[number] / axis.scale
 
     def latch_fast_input(self) -> bool:
         """A fast input fired: latch every axis unless the last latch is still being handled (EV-9 RC)."""
         if not self.fast_armed:
             return False
         for number, axis in enumerate(self.axes):
-            self.fast_positions[number] = float(axis.measured)
+            self.fast_positions[number] = axis.position(axis.measured) * axis.scale  # what POS read then, in counts
             self.fast_encoders[number] = axis.measured - axis.encoder_offset
         return True
 

@@ -57,6 +57,7 @@ class Motion:
         self.on_error: Callable[[Axis, int], None] = lambda axis, bit: None  # latch + default action + #ONERROR
         self.input_active: Callable[[int], bool] = lambda channel: False  # a digital input's state this tick
         self.index_pulses: dict[int, IndexPulse] = {}  # Z pulses of the scripted encoders, by axis
+        self.on_default: list[Callable[[Axis], None]] = []  # each motion module's own settings back to power-up
 
     def index_active(self, axis: Axis) -> bool:
         """The Z pulse of ``axis`` at its current physical count (active high, HM-8 RC)."""
@@ -229,8 +230,13 @@ class Motion:
             if axis.torque is not None:
                 self.crash_group(axis)
             else:
-                self.stop_group(axis, tick, axis.parameters["DECEL"])
+                self.stop_group(axis, tick, self.path_master(axis).parameters["DECEL"])
         return False
+
+    def path_master(self, axis: Axis) -> Axis:
+        """The axis whose rates an interpolated move uses: the first it names (000:3291-3292, 17004-17006)."""
+        move = axis.move
+        return self.axes[move.axes[0]] if move is not None and move.axes else axis
 
     def stop_group(self, axis: Axis, tick: int, decel: float) -> None:
         """A controlled stop of ``axis`` and of every axis interpolating with it (they share one move)."""
@@ -273,6 +279,19 @@ class Motion:
             axis.enabled = True
         return False
 
+    def default(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        """DEFAULT: the axis as at power-up (000:8981-9058): motion cancelled, errors cleared, POS and
+        ENCODER 0, and every motion parameter, master and gearing setting back to its default."""
+        for axis in self.addressed(channels):
+            self.crash_group(axis)
+            axis.axiserror = 0
+            axis.resync()
+            axis.position_offset = axis.encoder_offset = float(axis.measured)
+            axis.parameters = dict(DEFAULTS)
+            for reset in self.on_default:
+                reset(axis)
+        return False
+
     def abort(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         """ABORT: a motion error on every axis: crash stop, drives disabled (MP-21, AX-8)."""
         for axis in self.axes:
@@ -297,6 +316,8 @@ class Motion:
         table.register("CANCELALL", command=self.all_axes(self.cancel))
         table.register("RESET", command=self.reset)
         table.register("RESETALL", command=self.all_axes(self.reset))
+        table.register("DEFAULT", command=self.default)
+        table.register("DEFAULTALL", command=self.all_axes(self.default))
         table.register("ABORT", command=self.abort)
         table.register("AXES", command=self._validate_axes)
         for name in DEFAULTS:

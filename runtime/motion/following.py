@@ -124,6 +124,11 @@ def _following(axis: Axis) -> LockedMove | VelocityLockedMove | None:
 def register(table: KeywordTable, motion: Motion) -> None:
     state = [FollowSettings() for _ in motion.axes]
 
+    def default(axis: Axis) -> None:
+        state[axis.number] = FollowSettings()
+
+    motion.on_default.append(default)
+
     def follow(channel: int | None, value: float) -> None:
         """FOLLOW = ratio: start following, or change the ratio of the running FOLLOW (FG-3, FG-4)."""
         axis = motion.axis(channel)

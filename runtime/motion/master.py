@@ -147,6 +147,8 @@ def master_distance(motion: Motion, slave: Axis) -> float:
 
 
 def register(table: KeywordTable, motion: Motion) -> None:
+    motion.on_default.append(lambda axis: _SETTINGS.pop(axis, None))
+
     def write_source(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)
         if value != int(value) or not MS_POS <= value <= MS_DEMAND:

@@ -33,6 +33,7 @@ REM @sim input 2 0 at 105
 DIM level = 0
 DIM edge = 0
 INPUTMODE = 4
+INPUTPOSTRIGGER = 4
 WAIT = 200
 PRINT level, " ", edge
 END
@@ -50,6 +51,7 @@ def test_eventdisable_keeps_the_event_pending_until_enabled() -> None:
     source = """REM @sim input 3 1 at 10
 REM @sim input 3 0 at 12
 INPUTMODE = 8
+INPUTPOSTRIGGER = 8
 EVENTDISABLE = 128
 WAIT = 50
 PRINT "pending ", EVENTPENDING
@@ -68,6 +70,7 @@ def test_an_error_handler_preempts_a_lower_handler() -> None:
     source = """REM @sim input 0 1 at 10
 REM @sim input 0 0 at 12
 INPUTMODE = 1
+INPUTPOSTRIGGER = 1
 WAIT = 100
 END
 #IN0
@@ -87,6 +90,7 @@ def test_events_interrupt_a_wait_without_extending_it() -> None:
     source = """REM @sim input 4 1 at 100
 REM @sim input 4 0 at 102
 INPUTMODE = 16
+INPUTPOSTRIGGER = 16
 WAIT = 300
 PRINT "woke at ", TIME
 END
@@ -136,6 +140,7 @@ def test_events_of_one_tick_run_in_nextmove_priority_order() -> None:
     source = """REM @sim input 5 1 at 100
 REM @sim fastin 1 at 100
 INPUTMODE = 32
+INPUTPOSTRIGGER = 32
 TIMEREVENT = 100
 WAIT = 150
 END
@@ -156,6 +161,7 @@ PREEMPTION = """REM @sim input 2 1 at 100
 REM @sim input 2 0 at 102
 DIM fired = 0
 INPUTMODE = 4
+INPUTPOSTRIGGER = 4
 TIMEREVENT = 110
 WAIT = 200
 END
@@ -184,6 +190,7 @@ def test_mintdrive_masks_events_with_handlerdisable_in_its_own_bit_layout() -> N
     source = """REM @sim input 3 1 at 10
 REM @sim input 3 0 at 12
 INPUTMODE = 8
+INPUTPOSTRIGGER = 8
 HANDLERDISABLE = 64
 WAIT = 50
 PRINT "pending ", HANDLERPENDING

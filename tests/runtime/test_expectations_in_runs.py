@@ -14,6 +14,7 @@ REM @sim key "a" at 10
 REM @expect IN.2 = 1 at 50 ms
 REM @expect INKEY = 65 at 50 ms
 INPUTMODE = 4
+INPUTPOSTRIGGER = 4
 WAIT = 100
 PRINT IN.2, " ", INKEY
 """

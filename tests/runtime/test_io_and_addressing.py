@@ -10,6 +10,7 @@ def test_reading_an_edge_triggered_input_returns_its_latched_edge_once() -> None
     source = """REM @sim input 2 1 at 10
 REM @sim input 2 0 at 20
 INPUTMODE = 4
+INPUTPOSTRIGGER = 4
 WAIT = 50
 PRINT IN.2, INSTATE.2, IN.2
 """

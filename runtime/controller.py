@@ -96,7 +96,8 @@ def build_controller(
     events = Events(clock, handlers, lambda message: vm.stop(StopReason.ERROR, message), dispatch)
     io = DigitalIO(profile, clock, events)
     events.imask = io.all_inputs  # IMASK: every input of the controller may raise #INx (EV-7)
-    system = System(clock, vm, terminal, axes, table)
+    auxiliary = profile.auxiliary_encoders.high + 1 if profile.auxiliary_encoders is not None else 0
+    system = System(clock, vm, terminal, axes, table, auxiliary_encoders=auxiliary)
     inert = InertSettings()
     for part in (motion, io, events, system, inert):
         part.register(table)

@@ -1,4 +1,8 @@
-"""Controller-wide keywords: time, error state, terminal, node, comms array, fast latches."""
+"""Controller-wide keywords: time, error state, terminal, node, comms array, fast latches, auxiliary encoders.
+
+Nothing turns an auxiliary encoder in the simulation: it reads what the program
+last wrote to AUXENCODER (0 at power-up), and a fast input latches that.
+"""
 
 from __future__ import annotations
 
@@ -15,11 +19,19 @@ from mintlang.runtime.terminal import Terminal
 TIME_LIMIT = 16_777_216  # TIME wraps after 16777215 (T-7 RC)
 DEFAULT_NODE = 2
 BUILD_NUMBER = 0.0  # COMMS(239): the simulator has no firmware build
+INVALID_CHANNEL = 4
 
 
 class System:
     def __init__(
-        self, clock: Clock, vm: Interpreter, terminal: Terminal, axes: Sequence[Axis], table: KeywordTable
+        self,
+        clock: Clock,
+        vm: Interpreter,
+        terminal: Terminal,
+        axes: Sequence[Axis],
+        table: KeywordTable,
+        *,
+        auxiliary_encoders: int = 0,
     ) -> None:
         self.clock = clock
         self.vm = vm
@@ -37,6 +49,8 @@ class System:
         }
         self.fast_positions: list[float] = [0.0] * len(axes)  # FASTPOS per axis: the position latched, in counts
         self.fast_encoders: list[float] = [0.0] * len(axes)
+        self.auxiliary_encoders: list[float] = [0.0] * auxiliary_encoders  # AUXENCODER, counts
+        self.fast_auxiliary: list[float] = [0.0] * auxiliary_encoders  # FASTAUXENCODER
         self.fast_armed = True
 
     def time(self) -> int:
@@ -65,6 +79,12 @@ class System:
         table.register("COMMS", read=lambda channel: self.comms.read(channel or 0), write=self._write_comms)
         table.register("FASTPOS", read=self._fastpos)
         table.register("FASTENCODER", read=lambda channel: self.fast_encoders[self._axis(channel)])
+        table.register(
+            "AUXENCODER",
+            read=lambda channel: self.auxiliary_encoders[self._auxiliary(channel)],
+            write=per_channel(self._write_auxiliary),
+        )
+        table.register("FASTAUXENCODER", read=lambda channel: self.fast_auxiliary[self._auxiliary(channel)])
 
     def _inkey(self, _: int | None) -> float:
         """Each read takes one key, so after a key the next read differs: PAUSE INKEY = 'Y' reads on through
@@ -109,6 +129,17 @@ class System:
             raise MintError(2, number)
         return number
 
+    def _auxiliary(self, channel: int | None) -> int:
+        number = channel or 0
+        if not 0 <= number < len(self.auxiliary_encoders):
+            raise MintError(
+                INVALID_CHANNEL, number, f"the controller has {len(self.auxiliary_encoders)} auxiliary encoders"
+            )
+        return number
+
+    def _write_auxiliary(self, channel: int | None, value: float) -> None:
+        self.auxiliary_encoders[self._auxiliary(channel)] = float(int(value))
+
     def _fastpos(self, channel: int | None) -> float:
         number = self._axis(channel)
         axis = self.axes[number]
@@ -121,6 +152,7 @@ class System:
         for number, axis in enumerate(self.axes):
             self.fast_positions[number] = axis.position(axis.measured) * axis.scale  # what POS read then, in counts
             self.fast_encoders[number] = axis.measured - axis.encoder_offset
+        self.fast_auxiliary[:] = self.auxiliary_encoders
         return True
 
     def _system_read(self, address: int) -> float | None:

@@ -210,13 +210,10 @@ def _keyword_statement(tree: Tree) -> Make[n.Statement]:
     keyword = _keyword_ref(tree.children[0], selector_tree)  # type: ignore[arg-type]
     terminal = _optional(parts.get("terminal"), _terminal)
     values, fill = _values(parts["values"]) if "values" in parts else (_constant(None), False)
-    arguments, using = (
+    arguments, using, formats, trailing = (
         _command_arguments(parts["command_arguments"])
         if "command_arguments" in parts
-        else (
-            _constant(()),
-            _constant(()),
-        )
+        else (_constant(()), _constant(()), (), False)
     )
     span = _tree_span(tree)
 
@@ -229,6 +226,8 @@ def _keyword_statement(tree: Tree) -> Make[n.Statement]:
             fill,
             arguments(line, words),
             using(line, words),
+            formats,
+            trailing,
         )
 
     return make
@@ -236,19 +235,26 @@ def _keyword_statement(tree: Tree) -> Make[n.Statement]:
 
 def _command_arguments(
     tree: Tree,
-) -> tuple[Make[tuple[n.Expression | n.StringLiteral, ...]], Make[tuple[n.Expression, ...]]]:
+) -> tuple[Make[tuple[n.Expression | n.StringLiteral, ...]], Make[tuple[n.Expression, ...]], tuple[str | None, ...], bool]:
+    """The operands, the USING, how each operand prints (HEX, DEC, BIN) and whether a comma ends them."""
     arguments: list[Make[n.Expression | n.StringLiteral]] = []
+    formats: list[str | None] = []
     using: Make[tuple[n.Expression, ...]] = _constant(())
+    trailing = False
     for child in tree.children:
+        trailing = _is_token(child, "COMMA")
         if isinstance(child, Tree) and child.data == "using":
             using = _using(child)
         elif isinstance(child, Tree) and child.data == "modified_argument":
-            arguments.append(_expression(child.children[1]))  # HEX, DEC or BIN: how LINE prints it, no value
+            arguments.append(_expression(child.children[1]))
+            formats.append(str(child.children[0]).upper())
         elif _is_token(child, "STRING"):
             arguments.append(_string(child))
-        elif not _is_token(child, "COMMA"):
+            formats.append(None)
+        elif not trailing:
             arguments.append(_expression(child))
-    return _sequence(arguments), using
+            formats.append(None)
+    return _sequence(arguments), using, tuple(formats) if any(formats) else (), trailing
 
 
 def _function_statement(tree: Tree) -> Make[n.Statement]:

@@ -171,7 +171,9 @@ class KeywordStatement:
 
     ``values`` is set for a write (``SPEED[0,1] = 10,20;``, ``None`` marks a
     skipped place as in ``SPEED = ,10``; ``fill`` is the trailing ``;``);
-    ``arguments`` for a command with operands (``LOCATE 1,1``).
+    ``arguments`` for a command with operands (``LOCATE 1,1``); a terminal
+    command that prints (``LINE 2, HEX a,``) keeps how each argument is
+    printed in ``formats`` and whether a comma ends the line in ``trailing``.
     """
 
     span: Span
@@ -181,6 +183,8 @@ class KeywordStatement:
     fill: bool
     arguments: tuple[Expression | StringLiteral, ...]
     using: tuple[Expression, ...] = ()
+    formats: tuple[str | None, ...] = ()  # HEX, DEC or BIN per argument; empty when none is written
+    trailing: bool = False
 
 
 @node

@@ -158,6 +158,10 @@ class StatementCompiler:
         reference = statement.keyword
         if reference.keyword == "WAIT":
             return self._wait(statement, pc)
+        if reference.keyword == "LINE" and statement.values is None:
+            return self._line(statement)
+        if reference.keyword == "PROTECT" and statement.values is None:
+            return _nothing  # PROTECT <password> locks the buffer where it is stored; running it does nothing
         access = self.table.get(reference.keyword)
         channels = self._channels(reference)
         vm = self.vm
@@ -542,6 +546,32 @@ class StatementCompiler:
                 lambda: format_using(number(), int(whole()), int(fraction()) if fraction is not None else None)
             ), item.separator
         return (lambda: format_number(number())), item.separator
+
+    def _line(self, statement: n.KeywordStatement) -> Operation:
+        """``LINE n, items``: the items on a line of their own, as PRINT prints them (000:13630-13668).
+
+        On a log the row cannot be chosen and clearing the rest of it shows nothing: a line that
+        does not start at the left begins a new one, and a trailing comma keeps it open.
+        """
+        if not statement.arguments:
+            raise MintError(NO_EXPRESSION, detail="LINE needs a line number and what to print")
+        using = tuple(self.expressions.compile(value) for value in statement.using)
+        printed = statement.arguments[1:]
+        formats = statement.formats[1:] or (None,) * len(printed)
+        last = len(printed) - 1
+        items = [
+            n.PrintItem(value.span, value, format, "," if index < last or statement.trailing else None)
+            for index, (value, format) in enumerate(zip(printed, formats, strict=True))
+        ]
+        parts = tuple(self._print_item(item, using) for item in items)
+        terminal = self.terminal
+
+        def line() -> None:
+            if terminal.column:
+                terminal.newline()
+            terminal.print_items([(render(), separator) for render, separator in parts], newline=True)
+
+        return line
 
     def input_(self, statement: n.Input, pc: int) -> Operation:
         prompt = statement.prompt.value if statement.prompt is not None else ""

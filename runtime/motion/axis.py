@@ -63,6 +63,7 @@ class Request:
     axes: tuple[int, ...]
     build: Callable[[int], Move | None]  # start tick -> the move, or None when there is nothing to do
     targets: tuple[float, ...] | None = None  # each axis's end in counts, where known when it is loaded
+    onto_running: bool = False  # starts on top of the move running (an OFFSET on a FOLLOW), not after it
 
 
 class Axis:
@@ -154,7 +155,12 @@ class Axis:
 
     @property
     def axismode(self) -> int:
-        return self.move.mode if self.move is not None else self.pending_mode
+        move = self.move
+        if move is None:
+            return self.pending_mode
+        if self.triggered and self.buffer and self.buffer[0].onto_running:
+            return move.mode | self.buffer[0].mode  # an OFFSET shows from GO, as on an idle axis
+        return move.mode
 
     def demand_at(self, tick: int) -> float:
         """The servo demand at ``tick``: profiler set-points every 2 ms, linearly interpolated between (T-6)."""
@@ -333,6 +339,9 @@ class Axis:
         """A profiler tick: let a live move update, finish a completed move, start the next triggered one."""
         move = self.move
         if move is not None:
+            if self.triggered and self.buffer and self.buffer[0].onto_running:
+                self.triggered -= 1
+                self.buffer.popleft().build(tick)
             move.profiler(tick)
             if tick >= move.end and not self.held:
                 self.hold = move.demand(self.index_in_move, move.end)

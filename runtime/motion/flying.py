@@ -18,11 +18,12 @@ from enum import Enum
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
-from mintlang.runtime.motion.axis import MD_FLY, MOTION_IN_PROGRESS, Axis, Request
+from mintlang.runtime.motion.axis import MD_FLY, MD_OFFSET, MOTION_IN_PROGRESS, Axis, Request
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.master import Link, SetPoints, link, master_distance
 from mintlang.runtime.motion.moves import Move
 from mintlang.runtime.motion.parameters import OUT_OF_RANGE
+from mintlang.runtime.motion.superimposed import OffsetTrack
 
 MAX_FLY = 8_388_607.0
 
@@ -91,6 +92,7 @@ class LockedMove:
         "link",
         "live",
         "mode",
+        "offsets",
         "points",
         "queue",
         "refill",
@@ -136,6 +138,7 @@ class LockedMove:
         self.points = SetPoints(origin)
         self.stop_rule = stop_rule
         self.stopping = False
+        self.offsets = OffsetTrack()  # OFFSETs superimposed on a FOLLOW
 
     # ------------------------------------------------------------ commands
 
@@ -224,7 +227,9 @@ class LockedMove:
             if self.end == NEVER:
                 change(master, position)
                 position = self._position(master, tick)
-        points.record(tick, position)
+        points.record(tick, position + self.offsets.total(tick))
+        if self.offsets.running is None:
+            self.mode &= ~MD_OFFSET
 
     def demand(self, index: int, tick: int) -> float:
         return self.points.at(tick, self.end != NEVER)
@@ -235,6 +240,8 @@ class LockedMove:
     def stop(self, tick: int, decel: float) -> Move | None:
         """Per ``stop_rule``: FLY and FOLLOWMODE 2 ramp to rest over MASTERDISTANCE from the current ratio,
         FOLLOWMODE 3 after its queued segments, FOLLOWMODE 0 stops at once (MP-22, FG-6)."""
+        self.offsets.cancel(tick)
+        self.mode &= ~MD_OFFSET
         if self.stop_rule is StopRule.CRASH:
             return None
         self.ramp_down(after_queue=self.stop_rule is StopRule.AFTER_QUEUE)

@@ -16,12 +16,13 @@ from dataclasses import dataclass
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
-from mintlang.runtime.motion.axis import MD_FOLLOW, MOTION_IN_PROGRESS, Axis
+from mintlang.runtime.motion.axis import MD_FOLLOW, MD_OFFSET, MOTION_IN_PROGRESS, Axis
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.flying import LockedMove, Step, StopRule
 from mintlang.runtime.motion.master import Link, SetPoints, link, master_distance
 from mintlang.runtime.motion.moves import PROFILER_TICK_MS, Move
 from mintlang.runtime.motion.parameters import OUT_OF_RANGE
+from mintlang.runtime.motion.superimposed import OffsetTrack
 
 NO_RAMP, RAMP, CLUTCH, CONTINUOUS_CLUTCH = 0, 1, 2, 3
 TICK_S = PROFILER_TICK_MS / 1000.0
@@ -53,6 +54,7 @@ class VelocityLockedMove:
         "live",
         "master",
         "mode",
+        "offsets",
         "points",
         "ratio",
         "speed",
@@ -73,6 +75,7 @@ class VelocityLockedMove:
         self.points = SetPoints(axis.hold)
         self.stopping = False
         self.decel = 0.0
+        self.offsets = OffsetTrack()  # OFFSETs superimposed on it
 
     def profiler(self, tick: int) -> None:
         master = self.link.master.sample()
@@ -87,7 +90,10 @@ class VelocityLockedMove:
         down = (self.decel if self.stopping else p["DECEL"]) * TICK_S
         self.speed = approach(self.speed, target, p["ACCEL"] * TICK_S, down)
         locked = self.speed == target and not self.stopping
-        points.record(tick, points.position + (self.ratio * travel if locked else self.speed * TICK_S))
+        step = self.ratio * travel if locked else self.speed * TICK_S
+        points.record(tick, points.position + step + self.offsets.increment(tick))
+        if self.offsets.running is None:
+            self.mode &= ~MD_OFFSET
         if self.stopping and self.speed == 0.0:
             self.end = tick
 
@@ -101,6 +107,8 @@ class VelocityLockedMove:
         """Ramp to rest at ``decel`` (FG-6 RC: DECEL for STOP, ERRORDECEL for an error)."""
         self.stopping = True
         self.decel = decel
+        self.offsets.cancel(tick)
+        self.mode &= ~MD_OFFSET
         return self
 
     def replan(self, tick: int, speed: float, accel: float, decel: float, sramp: float) -> Move:
@@ -116,7 +124,7 @@ class FollowSettings:
 
 def _following(axis: Axis) -> LockedMove | VelocityLockedMove | None:
     move = axis.move
-    if isinstance(move, (LockedMove, VelocityLockedMove)) and move.mode == MD_FOLLOW:
+    if isinstance(move, (LockedMove, VelocityLockedMove)) and move.mode & MD_FOLLOW:
         return move
     return None
 

@@ -1,11 +1,11 @@
-"""OFFSET on an idle axis: a relative positional move shown as _mdOFFSET (spec MP-18).
+"""OFFSET: a relative positional move on an idle axis, or on top of a FOLLOW move (spec MP-18).
 
 On NextMove an idle axis takes an OFFSET like a MOVER that needs GO: it
 ramps at ACCEL to SPEED above its (zero) base velocity and back down at
-DECEL. Only one OFFSET may be loaded or running at a time. Superimposing an
-OFFSET on a FOLLOW move needs the following module's cooperation and is not
-simulated yet; MintDrive (which starts OFFSET without GO and only on FOLLOW)
-is not simulated either.
+DECEL. On a FOLLOW move the same profile runs on top of the master's speed
+(``superimposed.py``), also from GO. Only one OFFSET may be loaded or running
+at a time, and none while a clutch ramps (FLY). MintDrive, which starts OFFSET
+without GO and only on FOLLOW, is not simulated.
 """
 
 from __future__ import annotations
@@ -17,8 +17,11 @@ from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
 from mintlang.runtime.motion.axis import MD_FOLLOW, MD_OFFSET, MOTION_IN_PROGRESS, Axis, Request
 from mintlang.runtime.motion.commands import Motion
+from mintlang.runtime.motion.flying import LockedMove
+from mintlang.runtime.motion.following import VelocityLockedMove
 from mintlang.runtime.motion.moves import Geometry, PlannedMove
 from mintlang.runtime.motion.profile import plan_move
+from mintlang.runtime.motion.superimposed import Offset
 
 NEXTMOVES = frozenset({Controller.NEXTMOVE_PCI, Controller.NEXTMOVE_PC, Controller.NEXTMOVE_BX})
 
@@ -28,15 +31,21 @@ def offset(motion: Motion) -> Callable[[Channels | None, Values], bool]:
         pairs = motion._pairs(channels, values)
         for axis, _ in pairs:
             axis.require_ready()
-            if axis.axismode & MD_FOLLOW:
-                raise NotSimulated("OFFSET", "superimposed on a FOLLOW move")
             if motion.profile.controller not in NEXTMOVES:
-                raise NotSimulated("OFFSET", "outside FOLLOW, or without GO, on this controller")
-            if axis.busy():
-                raise MintError(MOTION_IN_PROGRESS, axis.number, "OFFSET needs an idle axis; one at a time")
+                raise NotSimulated("OFFSET", "without GO, on this controller")
+            following = _following(axis)
+            if following is None and axis.busy():
+                raise MintError(MOTION_IN_PROGRESS, axis.number, "OFFSET needs an idle or following axis")
+            if following is not None and (following.offsets.running is not None or axis.buffer):
+                raise MintError(MOTION_IN_PROGRESS, axis.number, "one OFFSET at a time")
         for axis, value in pairs:
-            axis.target = axis.hold + value * axis.scale
-            axis.buffer.append(Request(MD_OFFSET, (axis.number,), _starter(axis, value * axis.scale)))
+            following = _following(axis)
+            if following is None:
+                axis.target = axis.hold + value * axis.scale
+                axis.buffer.append(Request(MD_OFFSET, (axis.number,), _starter(axis, value * axis.scale)))
+            else:
+                start = _superimpose(axis, following, value * axis.scale)
+                axis.buffer.append(Request(MD_OFFSET, (axis.number,), start, onto_running=True))
         return False
 
     return write
@@ -53,6 +62,29 @@ def _starter(axis: Axis, distance: float) -> Callable[[int], PlannedMove | None]
         return PlannedMove(MD_OFFSET, (axis.number,), geometry, profile, tick, 0.0, abs(distance), target)
 
     return build
+
+
+def _following(axis: Axis) -> LockedMove | VelocityLockedMove | None:
+    """The FOLLOW move an OFFSET would run on; not during a clutch ramp, when the axis reads FLY (000:14797)."""
+    move = axis.move
+    if isinstance(move, (LockedMove, VelocityLockedMove)) and move.mode & MD_FOLLOW:
+        return move
+    return None
+
+
+def _superimpose(
+    axis: Axis, move: LockedMove | VelocityLockedMove, distance: float
+) -> Callable[[int], PlannedMove | None]:
+    def start(tick: int) -> None:
+        if distance == 0.0 or axis.move is not move:
+            return  # nothing to add, or the FOLLOW ended before GO
+        p = axis.parameters
+        profile = plan_move(abs(distance), p["SPEED"], p["ACCEL"], p["DECEL"], sramp=p["SRAMP"])
+        move.offsets.running = Offset(profile, tick, 1.0 if distance > 0.0 else -1.0)
+        move.mode |= MD_OFFSET
+        return
+
+    return start
 
 
 def register(table: KeywordTable, motion: Motion) -> None:

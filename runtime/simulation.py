@@ -111,6 +111,15 @@ class Simulator:
         if self.on_tick is not None:
             self.on_tick(t)
 
+    def _deadlock(self) -> str:
+        """Why nothing can wake the program, with the likeliest cause when a move buffer is full."""
+        message = "blocked, and nothing scheduled or moving can ever wake the program"
+        for axis in self.c.axes:
+            if axis.move is None and axis.buffer and axis.buffer_free() <= 0:
+                size = int(axis.parameters["MOVEBUFFERSIZE"])
+                return f"{message}: the move buffer of axis {axis.number} is full ({size} moves) and no GO started them"
+        return message
+
     def fast_input(self, channel: int) -> None:
         """A fast input fired: latch the positions just measured and call its handler (EV-9)."""
         c = self.c
@@ -149,7 +158,7 @@ class Simulator:
                     break
                 following = self.next_change(t)
                 if following >= NEVER:
-                    vm.stop(StopReason.DEADLOCK, "blocked, and nothing scheduled or moving can ever wake the program")
+                    vm.stop(StopReason.DEADLOCK, self._deadlock())
                     break
                 if limits.every_tick:
                     following = t + 1

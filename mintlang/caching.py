@@ -5,6 +5,12 @@ behind the lines it replaced. Two generations bound the memory without an LRU
 list to maintain per lookup: new entries go to the young one, an entry found in
 the old one moves to the young one, and when the young one is full it becomes
 the old one, dropping whatever no check has asked for since the last turn.
+
+Key policy: a per-line cache is keyed by what the line was parsed from
+(``PlacedLine.content``: its text, dialect, controller and the macros it names),
+and what belongs to one place in a file by that place (line number, statement
+index). Never by a syntax object, its ``id()`` or its value: every line of the
+same text shares one, so such a key merges lines that only look alike.
 """
 
 from __future__ import annotations

@@ -5,8 +5,10 @@ run goes to stderr. Exit status: 0 when the program ended (or reached
 ``--until-ms``), 1 when it stopped on an error, a deadlock or the wall-clock
 limit, or when an expectation failed; 2 for a usage or I/O problem. With
 ``--expect`` the expectations decide 0 or 1 (``expectations_pass``). Ctrl-C
-stops the run where it is, still reports it and writes the trace, and exits
-130; a reader that goes away (``| head``) does the same with 141.
+stops the run where it is, still reports it and completes the trace, and
+exits 130; SIGTERM does the same with 143, and a reader that goes away
+(``| head``) with 141. The trace streams to its file as the run goes, so a
+long run's memory does not grow with its length.
 """
 
 from __future__ import annotations
@@ -14,8 +16,14 @@ from __future__ import annotations
 import json
 import math
 import os
+import signal
 import sys
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from functools import partial
 from pathlib import Path
+from types import FrameType
+from typing import NoReturn
 
 import click
 from rich.console import Console
@@ -30,7 +38,7 @@ from mintlang.runtime.comms.server import PortUnavailable
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.hardware import simulated
 from mintlang.runtime.interpreter.vm import StopReason
-from mintlang.runtime.outputs import OutputProblem, check_plot, check_trace
+from mintlang.runtime.outputs import OutputProblem, _not_an_input, _writable, check_plot, check_trace
 from mintlang.runtime.report import as_json
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import (
@@ -50,6 +58,8 @@ _USAGE_ERROR = 2
 _FAILED = 1
 _INTERRUPTED = 130  # 128 + SIGINT: what a shell reports for a program Ctrl-C ended
 _BROKEN_PIPE = 141  # 128 + SIGPIPE: what a shell reports for a writer whose reader went away
+_TERMINATED = 143  # 128 + SIGTERM: what a shell reports for a program a supervisor (kill, systemd) ended
+_TERMINATED_MESSAGE = "terminated (SIGTERM)"
 _TRACE_AXES = "'--trace-axes'"
 _PROGRESS_STEP_MS = 100  # simulated time between updates of the progress bar
 
@@ -117,17 +127,25 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
     "--trace",
     "trace_path",
     type=click.Path(path_type=Path),
-    help="Write every tick's axis and I/O state to this CSV file.",
+    help="Stream every tick's axis and I/O state to this CSV file as the run goes; complete however the run stops.",
 )
 @click.option(
     "--plot",
     "plot_path",
     type=click.Path(path_type=Path),
-    help="Draw position, velocity and following error to this image (needs matplotlib).",
+    help="Draw position, velocity and following error to this image (needs matplotlib); "
+    "a long run is drawn from each span's extremes, so every peak shows.",
 )
 @click.option("--trace-axes", help="Axes to trace and plot, e.g. 0,1 (default: every axis).")
 @click.option(
     "--report", "report_format", type=click.Choice(["json"]), help="Print a report of the final state at the end."
+)
+@click.option(
+    "--report-file",
+    "report_path",
+    type=click.Path(path_type=Path),
+    help="Write the --report json report to this file, with or without --report (on stdout it follows "
+    "the program's output).",
 )
 @click.option("--realtime", is_flag=True, help="Pace the simulation to real time.")
 @click.option(
@@ -148,10 +166,14 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     plot_path: Path | None,
     trace_axes: str | None,
     report_format: str | None,
+    report_path: Path | None,
     realtime: bool,
     host_port: int | None,
 ) -> None:
-    """Run a Mint program against simulated axes, I/O and a host."""
+    """Run a Mint program against simulated axes, I/O and a host.
+
+    Ctrl-C (exit 130) or SIGTERM (exit 143) stops the run where it is; the report and the trace are still written.
+    """
     errors = Console(stderr=True, highlight=False, soft_wrap=True)
     if config_path is not None and program_as_own_configuration([program], config_path):
         raise click.UsageError(f"--config {config_path} is the program {program} itself: name the configuration file")
@@ -175,7 +197,7 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     if config_path is not None:
         inputs[config_path] = "the configuration"
     inputs[program] = "the program"
-    _check_outputs(trace_path, plot_path, inputs)
+    _check_outputs(trace_path, plot_path, report_path, inputs)
     tracing = trace_path is not None or plot_path is not None
     limits = Limits(
         until_ms=until_ms, max_wall_s=max_wall_s, realtime=realtime, every_tick=tracing, host_port=host_port
@@ -184,46 +206,155 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
         raise click.UsageError("--trace-axes chooses the axes of --trace or --plot; give one of them")
     machine = simulated(controller)
     axes = _axes_list(trace_axes, machine) or tuple(range(machine.axis_count))
-    recorders = _Recorders(Trace(axes) if tracing else None, errors, until_ms)
+    trace = Trace(axes, trace_path, plotting=plot_path is not None) if tracing else None
+    termination = _Termination()
+    recorders = _Recorders(trace, termination, errors, until_ms)
     stdout = _Stdout(live=realtime or host_port is not None)
+    simulate = partial(
+        run_source,
+        source,
+        config=config,
+        controller=ControllerName(controller),
+        scenario=scenario,
+        limits=limits,
+        echo=stdout.write,
+        on_tick=recorders.on_tick,
+        name=str(program),
+    )
+    with _on_sigterm(termination):
+        with _trace_open(trace), recorders.progress:
+            result = _simulate(simulate, termination)
+        stdout.flush()
+        _describe_stop(result, errors)
+        if result.outcomes:
+            render_outcomes(result.outcomes, errors)
+        _report(result, report_format, report_path)
+        _outputs(trace, plot_path)  # after the report, so an output that fails does not take the results with it
+    sys.exit(_exit_status(result, stdout.closed, termination.received, expect=bool(expect_paths)))
+
+
+def _simulate(simulate: Callable[[], RunResult], termination: _Termination) -> RunResult:
+    """The run's result; a problem found as it starts (a directive, the host port) is a usage error.
+
+    SIGTERM ends the run only until ``run_source`` returns; after, it waits for the outputs.
+    """
     try:
-        with recorders.progress:
-            result = run_source(
-                source,
-                config=config,
-                controller=ControllerName(controller),
-                scenario=scenario,
-                limits=limits,
-                echo=stdout.write,
-                on_tick=recorders.on_tick,
-                name=str(program),
-            )
+        return simulate()
     except (ScenarioFileError, PortUnavailable) as error:
         click.echo(f"mint-run: {error}", err=True)
         sys.exit(_USAGE_ERROR)
-    stdout.flush()
-    _describe_stop(result, errors)
-    if result.outcomes:
-        render_outcomes(result.outcomes, errors)
-    if report_format == "json":
-        if result.terminal and not result.terminal.endswith("\n"):
-            click.echo()
-        click.echo(json.dumps(as_json(result), indent=2))
-    try:  # after the report, so a file that vanished during the run does not take the results with it
-        _outputs(recorders.trace, trace_path, plot_path)
-    except OSError as error:
-        click.echo(f"mint-run: cannot write {error.filename}: {error.strerror or error}", err=True)
-        sys.exit(_USAGE_ERROR)
-    if result.stop.reason is StopReason.INTERRUPTED:
-        sys.exit(_BROKEN_PIPE if stdout.closed else _INTERRUPTED)
-    if expect_paths:
+    except _Terminated:  # SIGTERM after the simulator stopped, before the result came back: no result to report
+        click.echo(f"mint-run: {_TERMINATED_MESSAGE}", err=True)
+        sys.exit(_TERMINATED)
+    finally:
+        termination.running = False
+
+
+def _exit_status(result: RunResult, stdout_closed: bool, terminated: bool, *, expect: bool) -> int:
+    reason = result.stop.reason
+    if terminated:
+        if reason is not StopReason.INTERRUPTED:  # it came once the run had ended, as the outputs were written
+            click.echo(f"mint-run: {_TERMINATED_MESSAGE}", err=True)
+        return _TERMINATED
+    if reason is StopReason.INTERRUPTED:
+        return _BROKEN_PIPE if stdout_closed else _INTERRUPTED
+    if expect:
         if not result.outcomes:
             click.echo(
                 "mint-run: no expectations to check: --expect needs [[expect]] entries or REM @expect lines", err=True
             )
-        sys.exit(0 if expectations_pass(result.outcomes, result.stop.reason.value) else _FAILED)
-    normal = result.stop.reason in (StopReason.END, StopReason.UNTIL)
-    sys.exit(0 if normal and all_held(result.outcomes) else _FAILED)
+        return 0 if expectations_pass(result.outcomes, reason.value) else _FAILED
+    normal = reason in (StopReason.END, StopReason.UNTIL)
+    return 0 if normal and all_held(result.outcomes) else _FAILED
+
+
+class _Terminated(Interrupt):
+    """SIGTERM came: the simulator stops the run as for any ``Interrupt``."""
+
+    def __init__(self) -> None:
+        super().__init__(_TERMINATED_MESSAGE)
+
+
+class _Termination:
+    """SIGTERM, handled as Ctrl-C is: the run stops where it is, and its report and trace still come out.
+
+    The signal raises ``_Terminated``, which the simulator turns into the stop,
+    only while the simulator runs: one that comes before the first tick stops
+    the run at that tick, and one that comes after waits for the outputs.
+    """
+
+    def __init__(self) -> None:
+        self.received = False
+        self.running = False
+
+    def __call__(self, _signal: int, _frame: FrameType | None) -> None:
+        self.received = True
+        if self.running:
+            self.running = False  # a second SIGTERM must not break off the stopping of the run
+            raise _Terminated
+
+    def at_tick(self) -> None:
+        """A tick was processed: the run is under way, and ends now if SIGTERM came while it compiled."""
+        if self.received:
+            raise _Terminated
+        self.running = True
+
+
+@contextmanager
+def _on_sigterm(termination: _Termination) -> Iterator[None]:
+    previous = signal.signal(signal.SIGTERM, termination)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+@contextmanager
+def _trace_open(trace: Trace | None) -> Iterator[None]:
+    """The trace file open for the run and closed however it ends, so it holds every row taken."""
+    if trace is None:
+        yield
+        return
+    try:
+        trace.open()
+    except OSError as error:
+        _cannot_write(trace.csv_path, error)
+    try:
+        yield
+    finally:
+        trace.close()
+
+
+def _report(result: RunResult, report_format: str | None, report_path: Path | None) -> None:
+    if report_format is None and report_path is None:
+        return
+    report = json.dumps(as_json(result), indent=2)
+    if report_format == "json":
+        if result.terminal and not result.terminal.endswith("\n"):
+            click.echo()
+        click.echo(report)
+    if report_path is not None:
+        try:
+            report_path.write_text(f"{report}\n", encoding="utf-8")
+        except OSError as error:
+            _cannot_write(report_path, error)
+
+
+def _outputs(trace: Trace | None, plot_path: Path | None) -> None:
+    if trace is None:
+        return
+    if trace.failure is not None:
+        _cannot_write(trace.csv_path, trace.failure)
+    if plot_path is not None:
+        try:
+            trace.plot(plot_path)
+        except OSError as error:
+            _cannot_write(plot_path, error)
+
+
+def _cannot_write(path: Path | None, error: OSError) -> NoReturn:
+    click.echo(f"mint-run: cannot write {path}: {error.strerror or error}", err=True)
+    sys.exit(_USAGE_ERROR)
 
 
 class _Stdout:
@@ -267,10 +398,11 @@ def _scenario(paths: tuple[Path, ...], controller: ControllerProfile) -> Scenari
 
 
 class _Recorders:
-    """The per-tick observers of a run: the trace and the progress bar."""
+    """The per-tick observers of a run: SIGTERM, the trace and the progress bar."""
 
-    def __init__(self, trace: Trace | None, console: Console, until_ms: int | None) -> None:
+    def __init__(self, trace: Trace | None, termination: _Termination, console: Console, until_ms: int | None) -> None:
         self.trace = trace
+        self.termination = termination
         self.console = console
         self.progress = Progress(
             TextColumn("simulated {task.completed:.0f} ms"),
@@ -294,9 +426,12 @@ class _Recorders:
         if tick - self.shown >= _PROGRESS_STEP_MS:
             self.shown = tick
             self.progress.update(self.task, completed=tick)
+        self.termination.at_tick()  # last, so a SIGTERM that came before the run still has its first tick traced
 
 
-def _check_outputs(trace_path: Path | None, plot_path: Path | None, inputs: dict[Path, str]) -> None:
+def _check_outputs(
+    trace_path: Path | None, plot_path: Path | None, report_path: Path | None, inputs: dict[Path, str]
+) -> None:
     """Refuse, before the run, an output that cannot be written or would replace an input (path to its role)."""
     try:
         if trace_path is not None:
@@ -304,19 +439,13 @@ def _check_outputs(trace_path: Path | None, plot_path: Path | None, inputs: dict
             inputs[trace_path] = "the --trace file"
         if plot_path is not None:
             check_plot(plot_path, inputs)
+            inputs[plot_path] = "the --plot file"
+        if report_path is not None:
+            _writable(report_path)
+            _not_an_input(report_path, inputs)
     except (OutputProblem, PlotUnavailable) as problem:
         click.echo(f"mint-run: {problem}", err=True)
         sys.exit(_USAGE_ERROR)
-
-
-def _outputs(trace: Trace | None, trace_path: Path | None, plot_path: Path | None) -> None:
-    if trace is None:
-        return
-    if trace_path is not None:
-        with trace_path.open("w", encoding="utf-8", newline="") as stream:
-            trace.write_csv(stream)
-    if plot_path is not None:
-        trace.plot(plot_path)
 
 
 def _describe_stop(result: RunResult, console: Console) -> None:

@@ -1,32 +1,122 @@
 """Per-tick traces: a CSV of axis and I/O state, and a plot of it.
 
-A trace row is written for every servo tick, so tracing turns off the
+A trace row is taken for every servo tick, so tracing turns off the
 simulator's tick skipping; the same program and stimulus give the same bytes.
+Rows stream to the CSV file as the run makes them and the plot keeps a
+bounded summary of them, so memory does not grow with the length of a run.
 Plotting needs matplotlib (``pip install mintlang[plot]``); nothing else does.
 """
 
 from __future__ import annotations
 
 import csv
+from collections.abc import Callable
 from pathlib import Path
 from typing import IO
 
 from mintlang.runtime.controller import Controller
+from mintlang.runtime.simulation import Interrupt
 
 AXIS_COLUMNS = ("demand", "pos", "vel", "folerror", "axismode", "axiserror", "dac")
 FIRST_COLUMN = "time_ms"
+PLOTTED = {"pos": "POS", "vel": "VEL", "folerror": "FOLERROR"}  # column to panel title, top to bottom
+PLOT_SPANS = 1024  # spans a plotted series keeps at most: one or two points for each pixel of the image's width
 
 
 class PlotUnavailable(Exception):
     """matplotlib is not installed."""
 
 
-class Trace:
-    """Collects one row per tick for the axes that ``axes`` names."""
+class Envelope:
+    """One plotted series in bounded memory: the lowest and the highest point of each span of ticks.
 
-    def __init__(self, axes: tuple[int, ...]) -> None:
+    When there are more than ``limit`` spans, each pair merges into one twice
+    as long, so a run of any length keeps between ``limit / 2`` and ``limit``.
+    A span's two extremes, drawn in time order, keep the peaks (a following
+    error spike) that keeping every n-th tick would skip; until the first
+    merge every tick is its own span, so a short run is drawn point by point.
+    """
+
+    def __init__(self, limit: int = PLOT_SPANS) -> None:
+        self.limit = limit
+        self.ticks = 1  # the length of a span
+        self.spans: list[list[float]] = []  # [span number, time of the low, low, time of the high, high]
+
+    def add(self, time: float, value: float) -> None:
+        number = time // self.ticks
+        spans = self.spans
+        if spans and spans[-1][0] == number:
+            span = spans[-1]
+            if value < span[2]:
+                span[1], span[2] = time, value
+            elif value > span[4]:
+                span[3], span[4] = time, value
+            return
+        spans.append([number, time, value, time, value])
+        if len(spans) > self.limit:
+            self._merge_pairs()
+
+    def _merge_pairs(self) -> None:
+        self.ticks *= 2
+        merged: list[list[float]] = []
+        for number, *extremes in self.spans:
+            if merged and merged[-1][0] == number // 2:
+                span = merged[-1]
+                if extremes[1] < span[2]:
+                    span[1], span[2] = extremes[0], extremes[1]
+                if extremes[3] > span[4]:
+                    span[3], span[4] = extremes[2], extremes[3]
+            else:
+                merged.append([number // 2, *extremes])
+        self.spans = merged
+
+    def points(self) -> tuple[list[float], list[float]]:
+        """Times and values to draw: each span's extremes in the order they happened."""
+        times: list[float] = []
+        values: list[float] = []
+        for _number, low_time, low, high_time, high in self.spans:
+            for time, value in sorted({(low_time, low), (high_time, high)}):
+                times.append(time)
+                values.append(value)
+        return times, values
+
+
+class Trace:
+    """The observer behind ``--trace`` and ``--plot``, for the axes ``axes`` names.
+
+    Between ``open`` and ``close`` each row goes to ``csv_path`` (if any) as
+    it is taken, so nothing but the plot's summary stays in memory. A write
+    that fails ends the run (``Interrupt``) and is kept in ``failure``, for
+    the caller to report after the results.
+    """
+
+    def __init__(self, axes: tuple[int, ...], csv_path: Path | None, *, plotting: bool) -> None:
         self.axes = axes
-        self.rows: list[tuple[float, ...]] = []
+        self.csv_path = csv_path
+        self.failure: OSError | None = None
+        self._stream: IO[str] | None = None
+        self._write_row: Callable[[list[str]], object] | None = None
+        self.plotted = {(number, column): Envelope() for number in axes for column in PLOTTED} if plotting else {}
+        self._plotted_columns = [
+            (1 + axes.index(number) * len(AXIS_COLUMNS) + AXIS_COLUMNS.index(column), envelope)
+            for (number, column), envelope in self.plotted.items()
+        ]
+
+    def open(self) -> None:
+        """Start the CSV file with its header; raises ``OSError`` when it cannot be opened."""
+        if self.csv_path is not None:
+            self._stream = self.csv_path.open("w", encoding="utf-8", newline="")
+            self._write_row = csv.writer(self._stream, lineterminator="\n").writerow
+            self._write_row(self.header())
+
+    def close(self) -> None:
+        """Write out the rows still buffered; one that does not fit (a full disk) becomes ``failure``."""
+        if self._stream is None:
+            return
+        try:
+            self._stream.close()
+        except OSError as error:
+            self.failure = self.failure or error
 
     def header(self) -> list[str]:
         columns = [FIRST_COLUMN]
@@ -35,6 +125,17 @@ class Trace:
         return [*columns, "in", "out", "relay"]
 
     def record(self, controller: Controller, tick: int) -> None:
+        row = self._row(controller, tick)
+        if self._write_row is not None:
+            try:
+                self._write_row([_cell(value) for value in row])
+            except OSError as error:
+                self.failure = error
+                raise Interrupt(f"cannot write {self.csv_path}: {error.strerror or error}") from None
+        for column, envelope in self._plotted_columns:
+            envelope.add(row[0], row[column])
+
+    def _row(self, controller: Controller, tick: int) -> list[float]:
         row: list[float] = [float(tick)]
         for number in self.axes:
             axis = controller.axes[number]
@@ -49,13 +150,7 @@ class Trace:
                 axis.dac,
             ]
         row += [float(controller.io.active), float(controller.io.out), float(controller.io.relay)]
-        self.rows.append(tuple(row))
-
-    def write_csv(self, stream: IO[str]) -> None:
-        writer = csv.writer(stream, lineterminator="\n")
-        writer.writerow(self.header())
-        for row in self.rows:
-            writer.writerow([repr(value) if value != int(value) else str(int(value)) for value in row])
+        return row
 
     def plot(self, path: Path) -> None:
         """Position, velocity and following error against time, one line per axis."""
@@ -63,12 +158,10 @@ class Trace:
         from matplotlib import pyplot  # noqa: PLC0415 - optional dependency, loaded only when plotting
 
         figure, panels = pyplot.subplots(3, 1, sharex=True, figsize=(10, 8))
-        times = [row[0] for row in self.rows]
-        for offset, number in enumerate(self.axes):
-            base = 1 + offset * len(AXIS_COLUMNS)
-            for panel, column in zip(panels, (1, 2, 3), strict=True):
-                panel.plot(times, [row[base + column] for row in self.rows], label=f"axis {number}")
-        for panel, title in zip(panels, ("POS", "VEL", "FOLERROR"), strict=True):
+        for number in self.axes:
+            for panel, column in zip(panels, PLOTTED, strict=True):
+                panel.plot(*self.plotted[number, column].points(), label=f"axis {number}")
+        for panel, title in zip(panels, PLOTTED.values(), strict=True):
             panel.set_ylabel(title)
             panel.grid(True)
             panel.legend(loc="upper right")
@@ -76,6 +169,10 @@ class Trace:
         figure.tight_layout()
         figure.savefig(path)
         pyplot.close(figure)
+
+
+def _cell(value: float) -> str:
+    return repr(value) if value != int(value) else str(int(value))
 
 
 def _matplotlib() -> None:

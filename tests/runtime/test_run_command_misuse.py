@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import errno
 import importlib.util
 import json
 import os
@@ -17,7 +16,6 @@ import pytest
 from click.testing import CliRunner, Result
 
 from mintlang.runtime.cli import run
-from mintlang.runtime.trace import Trace
 
 
 def mint_run(*arguments: str | Path) -> Result:
@@ -174,20 +172,16 @@ def test_an_output_that_is_a_directory_is_refused(tmp_path: Path) -> None:
     assert result.stderr == f"mint-run: cannot write {tmp_path}: it is a directory\n"
 
 
-def test_a_trace_that_fails_to_write_after_the_run_keeps_the_report(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    trace = tmp_path / "t.csv"
-
-    def full_disk(self: Trace, stream: object) -> None:
-        raise OSError(errno.ENOSPC, "No space left on device", str(trace))
-
-    monkeypatch.setattr(Trace, "write_csv", full_disk)
-    result = mint_run(write(tmp_path, "p.mnt", "WAIT = 5\n"), "--trace", trace, "--report", "json")
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full, the device that is always full")
+@pytest.mark.parametrize(("wait", "stopped"), [(5, "end"), (5000, "interrupted")])
+def test_a_trace_that_fails_to_write_keeps_the_report(tmp_path: Path, wait: int, stopped: str) -> None:
+    # a short trace fails when it is closed, a long one when its first rows are written: that ends the run
+    full = Path("/dev/full")
+    result = mint_run(write(tmp_path, "p.mnt", f"WAIT = {wait}\n"), "--trace", full, "--report", "json")
     assert result.exit_code == 2
-    assert json.loads(result.stdout)["stopped"] == "end"
-    assert "end after 5 ms" in result.stderr
-    assert result.stderr.endswith(f"mint-run: cannot write {trace}: No space left on device\n")
+    assert json.loads(result.stdout)["stopped"] == stopped
+    assert f"{stopped} after" in result.stderr
+    assert result.stderr.endswith(f"mint-run: cannot write {full}: No space left on device\n")
 
 
 def start(program: Path, *arguments: str | Path, unbuffered: bool = True) -> subprocess.Popen[str]:
@@ -225,6 +219,28 @@ def test_ctrl_c_stops_the_run_and_still_reports_it_and_writes_the_trace(tmp_path
     assert "interrupted after" in stderr and "— Ctrl-C" in stderr
     assert json.loads(stdout)["stopped"] == "interrupted"
     assert trace.read_text().startswith("time_ms,")
+
+
+def test_sigterm_stops_the_run_and_still_writes_the_report_and_a_complete_trace(tmp_path: Path) -> None:
+    program = write(tmp_path, "forever.mnt", "DIM i\nLOOP\n  i = i + 1\nENDL\n")
+    trace, report = tmp_path / "t.csv", tmp_path / "report.json"
+    process = start(program, "--max-wall-s", "30", "--trace", trace, "--report-file", report)
+    try:
+        deadline = time.monotonic() + 30
+        while (not trace.exists() or trace.stat().st_size < 100_000) and time.monotonic() < deadline:
+            time.sleep(0.05)  # until the run is well into its loop
+        process.send_signal(signal.SIGTERM)
+        _, stderr = process.communicate(timeout=30)
+    finally:
+        process.kill()
+    assert process.returncode == 143
+    assert "Traceback" not in stderr
+    assert "interrupted after" in stderr and "— terminated (SIGTERM)" in stderr
+    assert json.loads(report.read_text())["stopped"] == "interrupted"
+    rows = trace.read_text().split("\n")
+    assert rows.pop() == ""  # the last row is whole, with its newline
+    assert {row.count(",") for row in rows} == {rows[0].count(",")}
+    assert [int(row.split(",", 1)[0]) for row in rows[1:]] == list(range(len(rows) - 1))
 
 
 def test_a_reader_that_goes_away_ends_the_run_quietly(tmp_path: Path) -> None:

@@ -38,7 +38,7 @@ from mintlang.runtime.comms.server import PortUnavailable
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.hardware import simulated
 from mintlang.runtime.interpreter.vm import StopReason
-from mintlang.runtime.outputs import OutputProblem, _not_an_input, _writable, check_plot, check_trace
+from mintlang.runtime.outputs import OutputProblem, check_plot, check_report, check_trace
 from mintlang.runtime.report import as_json
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import (
@@ -441,8 +441,7 @@ def _check_outputs(
             check_plot(plot_path, inputs)
             inputs[plot_path] = "the --plot file"
         if report_path is not None:
-            _writable(report_path)
-            _not_an_input(report_path, inputs)
+            check_report(report_path, inputs)
     except (OutputProblem, PlotUnavailable) as problem:
         click.echo(f"mint-run: {problem}", err=True)
         sys.exit(_USAGE_ERROR)

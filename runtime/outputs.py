@@ -53,6 +53,12 @@ def check_trace(path: Path, inputs: Mapping[Path, str]) -> None:
                 raise OutputProblem(f"will not overwrite {path}: it exists and is not a trace; remove it first")
 
 
+def check_report(path: Path, inputs: Mapping[Path, str]) -> None:
+    """Refuse a report path that cannot be written or would replace an input (path to its role)."""
+    _writable(path)
+    _not_an_input(path, inputs)
+
+
 def check_plot(path: Path, inputs: Mapping[Path, str]) -> None:
     """Refuse a plot path without an image extension matplotlib can write, or one that would replace an input.
 

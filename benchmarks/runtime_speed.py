@@ -1,24 +1,35 @@
 """Simulated seconds per wall second of ``mint-run`` on a 4-axis program that moves all the time.
 
-Run: ``.venv/bin/python benchmarks/runtime_speed.py [--ideal-s 600] [--torque-s 20] [--repeat 3]``
+Run: ``.venv/bin/python benchmarks/runtime_speed.py [--ideal-s 600] [--torque-s 20] [--repeat 3]
+[--loop-n 200000] [--loop-repeat 7]``
 
 The same program runs with every axis on the ideal plant (the default) and on
 the torque-amplifier plant (inertia and friction driven through PIDVFA, so the
 servo loop and the plant are integrated on every 1 ms tick). The figure is
 simulated time over wall time, measured in the same run as the reference
 (real time = 1x). Targets: ≥ 1000x with the ideal plant, ≥ 50x with the torque plant.
+
+Then it prints the interpreter's figure (``interpreter_speed.py``): statements
+per second of a tight arithmetic loop beside CPython running the same loop in
+the same run (``--loop-n 0`` leaves it out).
 """
 
 from __future__ import annotations
 
 import argparse
 import statistics
+import sys
 import time
+from pathlib import Path
 
 from mintlang.runtime.motion.plants import TORQUE_PLANT_GAINS
 from mintlang.runtime.run import run_source
 from mintlang.runtime.scenario.stimulus import PlantChoice, Scenario
 from mintlang.runtime.simulation import Limits
+
+sys.path.insert(0, str(Path(__file__).parent))
+
+import interpreter_speed
 
 AXES = (0, 1, 2, 3)
 CONFIGURATION = "RESET[0,1,2,3]\n"
@@ -58,14 +69,25 @@ def main() -> None:
     options.add_argument("--ideal-s", type=float, default=600.0, help="simulated seconds with the ideal plant")
     options.add_argument("--torque-s", type=float, default=20.0, help="simulated seconds with the torque plant")
     options.add_argument("--repeat", type=int, default=3)
+    options.add_argument("--loop-n", type=int, default=200_000, help="passes of the interpreter's loops (0: skip)")
+    options.add_argument("--loop-repeat", type=int, default=7, help="paired rounds of the interpreter's loops")
     arguments = options.parse_args()
     torque = Scenario(plants=tuple(PlantChoice(axis, "torque") for axis in AXES))
     torque_configuration = CONFIGURATION + "AXES[0,1,2,3]\n" + _gains()
     ideal = [_speed(arguments.ideal_s, Scenario(), CONFIGURATION) for _ in range(arguments.repeat)]
     physical = [_speed(arguments.torque_s, torque, torque_configuration) for _ in range(arguments.repeat)]
-    print("4-axis program moving continuously (median of", arguments.repeat, "runs; reference: real time = 1x)")
-    print(f"  ideal plant : {statistics.median(ideal):8.0f}x real time   (target ≥ 1000x)")
-    print(f"  torque plant: {statistics.median(physical):8.1f}x real time   (target ≥ 50x)")
+    print("4-axis program moving continuously (median (min-max) of", arguments.repeat, "runs; real time = 1x)")
+    print(
+        f"  ideal plant : {statistics.median(ideal):8.0f}x real time ({min(ideal):.0f}-{max(ideal):.0f})"
+        "   (target ≥ 1000x)"
+    )
+    print(
+        f"  torque plant: {statistics.median(physical):8.1f}x real time ({min(physical):.1f}-{max(physical):.1f})"
+        "   (target ≥ 50x)"
+    )
+    if arguments.loop_n > 0:
+        print()
+        interpreter_speed.report(arguments.loop_n, arguments.loop_repeat)
 
 
 if __name__ == "__main__":

@@ -247,6 +247,9 @@ class Interpreter:
 
     def innermost_loop(self, opener: int) -> Loop | None:
         """The running frame's innermost loop, if it is the one opened at ``opener``."""
+        loops = self.loops
+        if loops and loops[-1].opener == opener and len(loops) > self.frame_loops():
+            return loops[-1]  # the common case, every NEXT: no IF block left open above it
         depth = self._innermost()
         return self.loops[depth] if depth is not None and self.loops[depth].opener == opener else None
 

@@ -13,6 +13,10 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
+from mintlang.runtime.errors import MintError
+
+AXIS_SET_TWICE = 2018
+
 Channels = tuple[int, ...]
 Values = tuple[float | None, ...]  # None: a skipped place, as in SPEED = ,10
 Reader = Callable[[int | None], float]  # channel None: written without a selector (IN, OUT, TIME)
@@ -57,13 +61,18 @@ class KeywordTable:
 
 
 def per_channel(write_one: Callable[[int | None, float], None]) -> Writer:
-    """A writer from a function of one channel: ``KW[0,1] = a, b`` writes each channel in turn."""
+    """A writer from a function of one channel: ``KW[0,1] = a, b`` writes each channel in turn.
+
+    A channel named twice is error 2018, before anything is written (000:19053-19058).
+    """
 
     def write(channels: Channels | None, values: Values) -> bool:
         if channels is None:
             if values[0] is not None:
                 write_one(None, values[0])
             return False
+        if len(set(channels)) != len(channels):
+            raise MintError(AXIS_SET_TWICE, detail="an axis or channel is named twice")
         for channel, value in zip(channels, values, strict=False):
             if value is not None:
                 write_one(channel, value)

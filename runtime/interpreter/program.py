@@ -1,9 +1,9 @@
 """Linking an application into one operation list: configuration file first, then program.
 
 Variables are shared by both files and allocated in compile order; arrays are
-sized and initialised now, as the controller's compiler does (``DIM a(3) =
-1,2;`` fills the rest with the last value). Labels stay per file: the two
-files cannot call each other's subroutines, event handlers included. ``END`` in
+sized and initialised now, as the controller's compiler does (``arrays.py``).
+Labels stay per file: the two files cannot call each other's subroutines,
+event handlers included. ``END`` in
 the configuration, or running off its end, continues with the program; in the
 program it ends the run.
 """
@@ -13,10 +13,11 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.interpreter.arrays import array_problem, initial_values
 from mintlang.runtime.interpreter.expressions import ExpressionCompiler, Names
 from mintlang.runtime.interpreter.statements import FileLayout, StatementCompiler
-from mintlang.runtime.interpreter.vm import Interpreter, Site, StopReason
+from mintlang.runtime.interpreter.vm import Interpreter, Operation, Site, StopReason
 from mintlang.runtime.keywords import KeywordTable
 from mintlang.runtime.terminal import Terminal
 from mintlang.semantic.blocks import Block, Place
@@ -58,10 +59,32 @@ def link(model: SemanticModel, vm: Interpreter, table: KeywordTable, terminal: T
             text = line.syntax.text
             for index, statement in enumerate(n.flatten_statements(line.syntax.statements)):
                 pc = len(vm.operations)
-                vm.operations.append(compiler.compile(statement, Place(line.number, index), pc))
+                vm.operations.append(_compiled(compiler, statement, Place(line.number, index), pc))
                 vm.sites.append(Site(unit.value, line.number, text[statement.span.start : statement.span.end].strip()))
         start = end_of_unit
     return Linked(handlers.get(Unit.PROGRAM, {}), handlers.get(Unit.CONFIGURATION, {}), names)
+
+
+def _compiled(compiler: StatementCompiler, statement: n.Statement, place: Place, pc: int) -> Operation:
+    """The statement's operation; one the simulator cannot build raises, when it runs, why not.
+
+    The controller's compiler rejects only what ``mint check`` calls a compile error
+    (those stop the run before it starts); a write to a read-only keyword (2000), a
+    read of a write-only one (2002) or a keyword alone (2005) is raised by its line,
+    which ``#ONERROR`` then sees. A keyword the simulator does not model stops the
+    run only if its line runs, and names that line.
+    """
+    try:
+        return compiler.compile(statement, place, pc)
+    except (MintError, NotSimulated) as problem:
+        return _raising(problem)
+
+
+def _raising(problem: MintError | NotSimulated) -> Operation:
+    def fail() -> None:
+        raise problem
+
+    return fail
 
 
 def _layout(document: Document, start: int) -> tuple[dict[Place, int], dict[str, int], int]:
@@ -93,41 +116,20 @@ def _allocate(model: SemanticModel, vm: Interpreter, names: Names) -> None:
     for symbol in model.symbols.variables.values():
         names.scalars[symbol.identity] = len(vm.scalars)
         vm.scalars.append(0.0)
-    for unit, _, facts in model.lines:
+    for _, _, facts in model.lines:
         for statement in facts.statements:
-            if type(statement) is n.Dim and statement.size is not None:
-                _dim_array(statement, vm, names, unit)
+            if type(statement) is n.Dim and statement.size is not None and array_problem(statement) is None:
+                _dim_array(statement, vm, names)
 
 
-def _dim_array(statement: n.Dim, vm: Interpreter, names: Names, unit: Unit) -> None:
-    size = _constant(statement.size)
-    if size is None or size < 1 or size != int(size):
-        raise MintError(2016, detail=f"the size of array {statement.name.text} must be a whole number from 1")
-    values = [_constant(value) for value in statement.values]
-    if any(value is None for value in values):
-        raise MintError(2003, detail=f"array {statement.name.text} is initialised with values that are not constants")
-    initial = [float(value) for value in values if value is not None][: int(size)]
-    if statement.fill and initial:
-        initial += [initial[-1]] * (int(size) - len(initial))
-    initial += [0.0] * (int(size) - len(initial))
+def _dim_array(statement: n.Dim, vm: Interpreter, names: Names) -> None:
+    initial = initial_values(statement)
     identity = statement.name.identity
     if identity in names.arrays:
         vm.arrays[names.arrays[identity]][:] = initial
         return
     names.arrays[identity] = len(vm.arrays)
     vm.arrays.append(initial)
-
-
-def _constant(expression: n.Expression | None) -> float | None:
-    """The value of a literal, possibly negated; arrays are initialised from constants only."""
-    if type(expression) is n.Number or type(expression) is n.CharConstant:
-        return float(expression.value)  # type: ignore[union-attr]
-    if type(expression) is n.Unary and expression.operator in ("-", "+"):
-        inner = _constant(expression.operand)
-        return None if inner is None else (-inner if expression.operator == "-" else inner)
-    if type(expression) is n.Parenthesised:
-        return _constant(expression.expression)
-    return None
 
 
 def _end_of_program(vm: Interpreter):

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.interpreter.arrays import array_problem
 from mintlang.runtime.interpreter.expressions import Evaluate, ExpressionCompiler
 from mintlang.runtime.interpreter.vm import Interpreter, Loop, Operation, Recovery
 from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordTable
@@ -132,6 +133,8 @@ class StatementCompiler:
         return store_element
 
     def dim(self, statement: n.Dim, pc: int) -> Operation:
+        if statement.size is not None and (problem := array_problem(statement)) is not None:
+            raise problem
         if statement.size is not None or not statement.values:
             return _nothing  # arrays are initialised when the program is compiled, not when DIM runs
         return self._store(

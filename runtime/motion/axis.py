@@ -156,8 +156,8 @@ class Axis:
     @property
     def axismode(self) -> int:
         move = self.move
-        if move is None:
-            return self.pending_mode
+        if move is None:  # a move GO has triggered shows from GO, as IDLE does (000:3033-3038)
+            return self.pending_mode or (self.buffer[0].mode if self.triggered and self.buffer else 0)
         if self.triggered and self.buffer and self.buffer[0].onto_running:
             return move.mode | self.buffer[0].mode  # an OFFSET shows from GO, as on an idle axis
         return move.mode
@@ -418,7 +418,7 @@ class Axis:
         if move is None:
             self.pending_mode = 0
             return None
-        stopped = move.stop(tick, decel)
+        stopped = move.stop(tick, decel) if decel > 0.0 else None  # a rate of 0 would never stop: at once
         if stopped is None:
             self.crash_stop()
             return None

@@ -49,7 +49,7 @@ class StopInputs:
         ramped = type(move) is PlannedMove and axis.torque is None
         if mode == IGNORE or (mode == NORMAL and not ramped):
             self.raise_stop()
-        elif mode == CANCEL or not ramped:
+        elif mode == CANCEL or not ramped or axis.parameters["ERRORDECEL"] == 0.0:  # no rate to ramp down at
             self.motion.crash_group(axis)
             self.raise_stop()
         elif mode == STOP:

@@ -46,3 +46,28 @@ def test_a_macro_left_in_another_macros_text_is_a_syntax_error_when_its_line_run
     result = simulate(source)
     assert (result.stop.reason, result.err, result.erl) == (StopReason.ERROR, 2003, 4)
     assert result.terminal == "before\nR2003: PROGRAM Syntax error [line 4]\n"
+
+
+def test_a_write_to_a_read_only_keyword_is_error_2000_when_its_line_runs() -> None:
+    # 000:18905-18908: CAMINDEX = 4 is the manual's example of 2000
+    result = simulate('PRINT "before"\nCAMINDEX = 4\nPRINT "after"\n' + HANDLER)
+    assert result.terminal == "before\n2000 2 -1\nafter\n"
+
+
+def test_a_keyword_alone_is_error_2005_when_its_line_runs() -> None:
+    # 000:18930-18934: SPEED : REM ... is the manual's example of 2005
+    result = simulate("SPEED : REM ** Axis Slew Speed **\n")
+    assert (result.stop.reason, result.err, result.erl) == (StopReason.ERROR, 2005, 1)
+
+
+def test_an_axis_named_twice_in_a_write_is_error_2018() -> None:
+    # 000:19053-19058: SPEED [2,2,3] = 5000; is the manual's example of 2018
+    result = simulate("SPEED [2,2,3] = 5000;\n")
+    assert (result.err, result.erl, result.terminal) == (2018, 1, "R2018: PROGRAM Axis set more than once [line 1]\n")
+
+
+def test_a_keyword_the_simulator_does_not_model_stops_only_the_run_that_reaches_it() -> None:
+    assert simulate('DIM a\nIF a DO\n  PRINT TEMPERATURE\nENDIF\nPRINT "ran"\n').terminal == "ran\n"
+    stopped = simulate("PRINT TEMPERATURE\n")
+    assert (stopped.stop.reason, stopped.stop.line) == (StopReason.ERROR, 1)
+    assert "not simulated" in stopped.stop.message

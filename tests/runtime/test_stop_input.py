@@ -53,3 +53,10 @@ def test_a_stop_command_while_held_ends_the_held_move() -> None:
     source = program(1, 'MOVER.0 = 8000 : GO.0\nWAIT = 500\nSTOP.0\nPAUSE IDLE.0\nPRINT "idle ", AXISMODE.0\n')
     result = simulate(source + "REM @sim input 3 1 at 100\n")
     assert result.terminal.splitlines()[-1] == "idle 0"
+
+
+def test_an_errordecel_of_zero_stops_at_once_instead_of_ramping_for_ever() -> None:
+    # 000:9991: ERRORDECEL takes 0; a rate of 0 cannot ramp down, so the axis stops where it is
+    source = "ERRORDECEL.0 = 0\nSTOPINPUT.0 = 2\nSTOPINPUTMODE.0 = 1\nREM @sim input 2 1 at 100\nJOG.0 = 1000\nWAIT = 300\n"
+    result = simulate(source + "PRINT VEL.0\n")
+    assert result.terminal == "0\n"

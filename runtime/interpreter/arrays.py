@@ -1,0 +1,46 @@
+"""Arrays as their DIM makes them: sized and filled from constants when the program is compiled (NM-7).
+
+``DIM a(3) = 1,2;`` fills the rest with the last value, and unwritten elements
+are 0. A DIM that cannot make its array (a size that is not a whole number from
+1, values that are not constants) raises that when its line runs instead.
+"""
+
+from __future__ import annotations
+
+from mintlang.runtime.errors import MintError
+from mintlang.syntax import nodes as n
+
+INVALID_INDEX = 2016
+SYNTAX_ERROR = 2003
+
+
+def array_problem(statement: n.Dim) -> MintError | None:
+    """Why the array of ``statement`` (a DIM with a size) cannot be made; None when it can."""
+    size = constant(statement.size)
+    if size is None or size < 1 or size != int(size):
+        return MintError(INVALID_INDEX, detail=f"the size of array {statement.name.text} must be a whole number from 1")
+    if any(constant(value) is None for value in statement.values):
+        detail = f"array {statement.name.text} is initialised with values that are not constants"
+        return MintError(SYNTAX_ERROR, detail=detail)
+    return None
+
+
+def initial_values(statement: n.Dim) -> list[float]:
+    """The elements of an array ``array_problem`` accepts, as its DIM initialises them."""
+    size = int(constant(statement.size) or 0)
+    initial = [value for value in map(constant, statement.values) if value is not None][:size]
+    if statement.fill and initial:
+        initial += [initial[-1]] * (size - len(initial))
+    return initial + [0.0] * (size - len(initial))
+
+
+def constant(expression: n.Expression | None) -> float | None:
+    """The value of a literal, possibly negated; arrays are initialised from constants only."""
+    if type(expression) is n.Number or type(expression) is n.CharConstant:
+        return float(expression.value)  # type: ignore[union-attr]
+    if type(expression) is n.Unary and expression.operator in ("-", "+"):
+        inner = constant(expression.operand)
+        return None if inner is None else (-inner if expression.operator == "-" else inner)
+    if type(expression) is n.Parenthesised:
+        return constant(expression.expression)
+    return None

@@ -233,9 +233,12 @@ def _keyword_statement(tree: Tree) -> Make[n.Statement]:
     return make
 
 
-def _command_arguments(
-    tree: Tree,
-) -> tuple[Make[tuple[n.Expression | n.StringLiteral, ...]], Make[tuple[n.Expression, ...]], tuple[str | None, ...], bool]:
+_CommandArguments = tuple[
+    Make[tuple[n.Expression | n.StringLiteral, ...]], Make[tuple[n.Expression, ...]], tuple[str | None, ...], bool
+]
+
+
+def _command_arguments(tree: Tree) -> _CommandArguments:
     """The operands, the USING, how each operand prints (HEX, DEC, BIN) and whether a comma ends them."""
     arguments: list[Make[n.Expression | n.StringLiteral]] = []
     formats: list[str | None] = []

@@ -274,7 +274,8 @@ def test_the_same_vector_queued_twice_is_two_moves_and_go_on_one_axis_starts_eac
 
 def test_a_deadlock_on_a_full_move_buffer_says_which_axis_is_full() -> None:
     # 000:572-580: one value for two axes sets only the first, so axis 1 keeps its buffer of 2 (MP-25)
-    source = "MOVEBUFFERSIZE[0,1] = 5\nVECTORR[0,1] = 100,100\nCIRCLER[0,1] = 100,100,90\nVECTORR[0,1] = 100,0\nGO[0,1]\n"
+    source = "MOVEBUFFERSIZE[0,1] = 5\nVECTORR[0,1] = 100,100\nCIRCLER[0,1] = 100,100,90\n"
+    source += "VECTORR[0,1] = 100,0\nGO[0,1]\n"
     result = simulate(source)
     assert result.stop.reason is StopReason.DEADLOCK and result.stop.line == 4
     assert "move buffer of axis 1 is full (2 moves)" in result.stop.message

@@ -54,7 +54,10 @@ def test_stop_ends_an_offset_with_a_ramp() -> None:
     assert result.axes[0].axismode == 0
 
 
-FOLLOWING = "MASTERCHANNEL.0 = 1\nFOLLOWMODE.0 = 0\nSPEED.0 = 5000 : ACCEL.0 = 50000 : DECEL.0 = 50000\nJOG.1 = 1000\nFOLLOW.0 = 1\n"
+FOLLOWING = (
+    "MASTERCHANNEL.0 = 1\nFOLLOWMODE.0 = 0\nSPEED.0 = 5000 : ACCEL.0 = 50000 : DECEL.0 = 50000\n"
+    "JOG.1 = 1000\nFOLLOW.0 = 1\n"
+)
 
 
 def test_an_offset_on_a_follow_move_runs_on_top_of_the_masters_speed() -> None:

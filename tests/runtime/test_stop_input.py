@@ -57,6 +57,7 @@ def test_a_stop_command_while_held_ends_the_held_move() -> None:
 
 def test_an_errordecel_of_zero_stops_at_once_instead_of_ramping_for_ever() -> None:
     # 000:9991: ERRORDECEL takes 0; a rate of 0 cannot ramp down, so the axis stops where it is
-    source = "ERRORDECEL.0 = 0\nSTOPINPUT.0 = 2\nSTOPINPUTMODE.0 = 1\nREM @sim input 2 1 at 100\nJOG.0 = 1000\nWAIT = 300\n"
+    source = "ERRORDECEL.0 = 0\nSTOPINPUT.0 = 2\nSTOPINPUTMODE.0 = 1\n"
+    source += "REM @sim input 2 1 at 100\nJOG.0 = 1000\nWAIT = 300\n"
     result = simulate(source + "PRINT VEL.0\n")
     assert result.terminal == "0\n"

@@ -79,7 +79,7 @@ def build_controller(
     """Assemble the controller for ``model``; raises ``NotSimulated`` or ``MintError`` when it cannot compile."""
     profile = simulated(model.controller.controller)
     clock = Clock()
-    table = KeywordTable()
+    table = KeywordTable(profile.controller)
     terminal = Terminal(echo)
     vm = Interpreter(clock, profile.nesting, slice_statements)
     plants = {choice.axis: choice for choice in scenario.plants}

@@ -18,10 +18,8 @@ from dataclasses import dataclass
 from enum import IntEnum
 
 from mintlang.runtime.clock import NEVER, Clock
-from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
-
-TIMER_LONGEST_MS = 8_000_000  # the longest TIMEREVENT period on every controller (000:16780-16786)
+from mintlang.runtime.ranges import ranged
 
 ONERROR_REENTRY_LIMIT = 100  # consecutive re-entries of #ONERROR with an error still latched (AX-7 RC)
 
@@ -199,8 +197,6 @@ class Events:
     def set_timer(self, period: float) -> None:
         """``TIMEREVENT``: 0 stops it; otherwise at least the controller's minimum, odd values rounded up (T-11 RC)."""
         value = int(period)
-        if not 0 <= value <= TIMER_LONGEST_MS:
-            raise MintError(3, detail=f"TIMEREVENT takes 0 to {TIMER_LONGEST_MS} ms")
         minimum = self.dispatch.timer_minimum_ms
         if value and value < minimum:
             value = minimum
@@ -218,16 +214,16 @@ class Events:
     # ------------------------------------------------------------- keywords
 
     def register(self, table: KeywordTable) -> None:
+        controller = table.controller
         for dispatch in (NEXTMOVE, MINTDRIVE):
-            table.register(
-                dispatch.disable_keyword, read=self._disabled_mask(dispatch), write=per_channel(self._disable(dispatch))
-            )
-            table.register(
-                dispatch.pending_keyword, read=self._pending_mask(dispatch), write=per_channel(self._force(dispatch))
-            )
+            disable = ranged(dispatch.disable_keyword, controller, self._disable(dispatch))
+            table.register(dispatch.disable_keyword, read=self._disabled_mask(dispatch), write=per_channel(disable))
+            force = ranged(dispatch.pending_keyword, controller, self._force(dispatch))
+            table.register(dispatch.pending_keyword, read=self._pending_mask(dispatch), write=per_channel(force))
         table.register("IMASK", read=lambda _: float(self.imask), write=per_channel(self._mask))
         table.register("IPEND", read=lambda _: float(self._bits(EventClass.INPUT)), write=per_channel(self._ipend))
-        table.register("TIMEREVENT", read=lambda _: float(self.timer_period), write=per_channel(self._timer))
+        timer = ranged("TIMEREVENT", controller, self._timer)
+        table.register("TIMEREVENT", read=lambda _: float(self.timer_period), write=per_channel(timer))
 
     def _disabled_mask(self, dispatch: Dispatch) -> Callable[[int | None], float]:
         return lambda _: float(sum(bit for kind, bit in dispatch.bits.items() if kind in self.disabled))

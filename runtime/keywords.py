@@ -13,9 +13,12 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Controller
 from mintlang.runtime.errors import MintError
 
 AXIS_SET_TWICE = 2018
+KEYWORD_NOT_SUPPORTED = 17
 
 Channels = tuple[int, ...]
 Values = tuple[float | None, ...]  # None: a skipped place, as in SPEED = ,10
@@ -37,8 +40,9 @@ class KeywordAccess:
 class KeywordTable:
     """Handlers by canonical keyword name; each part of the controller registers its own."""
 
-    def __init__(self) -> None:
+    def __init__(self, controller: Controller) -> None:
         self._entries: dict[str, KeywordAccess] = {}
+        self.controller = controller
 
     def register(
         self,
@@ -54,6 +58,13 @@ class KeywordTable:
         self._entries[name] = KeywordAccess(read, write, command, array_command)
 
     def get(self, name: str) -> KeywordAccess | None:
+        return self._entries.get(name)
+
+    def in_program(self, name: str) -> KeywordAccess | None:
+        """The handlers of a keyword a program uses; one its controller does not have is error 17 (000:18570-18575)."""
+        record = database().keywords.get(name)
+        if record is not None and record.controllers and self.controller not in record.controllers:
+            raise MintError(KEYWORD_NOT_SUPPORTED, detail=f"{name} is not available on this controller")
         return self._entries.get(name)
 
     def names(self) -> Iterator[str]:

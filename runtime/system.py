@@ -14,6 +14,7 @@ from mintlang.runtime.errors import MintError
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.keywords import Channels, KeywordTable, per_channel
 from mintlang.runtime.motion.axis import Axis
+from mintlang.runtime.ranges import ranged
 from mintlang.runtime.terminal import Terminal
 
 TIME_LIMIT = 16_777_216  # TIME wraps after 16777215 (T-7 RC)
@@ -67,7 +68,7 @@ class System:
         def write_time(_: int | None, value: float) -> None:
             self.time_origin = clock.now - int(value)
 
-        table.register("TIME", read=read_time, write=per_channel(write_time))
+        table.register("TIME", read=read_time, write=per_channel(ranged("TIME", table.controller, write_time)))
         table.register("ERR", read=lambda _: vm.err)
         table.register("ERL", read=lambda _: vm.erl)
         table.register("ERRAXIS", read=lambda _: vm.erraxis)

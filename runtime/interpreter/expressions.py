@@ -121,7 +121,7 @@ class ExpressionCompiler:
         return lambda: value
 
     def keyword(self, reference: n.KeywordRef) -> Evaluate:
-        access = self.table.get(reference.keyword)
+        access = self.table.in_program(reference.keyword)
         if access is None or access.read is None:
             if access is not None and (access.write is not None or access.command is not None):
                 raise MintError(READ_OF_WRITE_ONLY, detail=reference.keyword)
@@ -163,7 +163,7 @@ class ExpressionCompiler:
                 (only,) = arguments
                 return lambda: function(only())
             return lambda: function(*(argument() for argument in arguments))
-        access = self.table.get(call.function)
+        access = self.table.in_program(call.function)
         if access is None or access.read is None:
             raise NotSimulated(call.function, "function")
         read = access.read

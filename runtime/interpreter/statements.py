@@ -19,6 +19,7 @@ from mintlang.runtime.interpreter.vm import Interpreter, Loop, Operation, Recove
 from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordTable
 from mintlang.runtime.numbers import f32
 from mintlang.runtime.printing import format_bin, format_chr, format_hex, format_number, format_using
+from mintlang.runtime.ranges import check_range, table_bounds
 from mintlang.runtime.terminal import Terminal
 from mintlang.semantic.blocks import Block, BlockKind, Place
 from mintlang.syntax import nodes as n
@@ -165,7 +166,7 @@ class StatementCompiler:
             return self._line(statement)
         if reference.keyword == "PROTECT" and statement.values is None:
             return _nothing  # PROTECT <password> locks the buffer where it is stored; running it does nothing
-        access = self.table.get(reference.keyword)
+        access = self.table.in_program(reference.keyword)
         channels = self._channels(reference)
         vm = self.vm
         clock = vm.clock
@@ -214,6 +215,7 @@ class StatementCompiler:
         if not statement.values or statement.values[0] is None:
             raise MintError(NO_EXPRESSION, detail="WAIT needs a time in milliseconds")
         duration = self.expressions.compile(statement.values[0])
+        limits = table_bounds("WAIT", self.table.controller)  # 2 ms at least on NextMove (000:17314-17333)
         vm = self.vm
         clock = vm.clock
         waits = vm.waits
@@ -222,7 +224,7 @@ class StatementCompiler:
             key = (len(vm.frames), pc)
             deadline = waits.get(key)
             if deadline is None:
-                deadline = waits[key] = clock.now + max(int(duration()), 0)
+                deadline = waits[key] = clock.now + int(check_range("WAIT", duration(), limits))
             if clock.now >= deadline:
                 del waits[key]
                 return False
@@ -233,7 +235,7 @@ class StatementCompiler:
 
     def function_statement(self, statement: n.FunctionStatement, pc: int) -> Operation:
         call = statement.call
-        access = self.table.get(call.function)
+        access = self.table.in_program(call.function)
         if statement.values is None and access is not None and access.array_command is not None:
             return self._array_command(call, access.array_command)
         arguments = tuple(self.expressions.compile(argument) for argument in call.arguments)

@@ -17,9 +17,10 @@ from mintlang.keyworddb.model import Controller
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.motion.moves import PROFILER_TICK_MS, Move, next_profiler_tick
-from mintlang.runtime.motion.parameters import DEFAULTS, GAINS, SCALED, bounds, check_range
+from mintlang.runtime.motion.parameters import DEFAULTS, GAINS, SCALED, bounds
 from mintlang.runtime.motion.plants import IdealPlant, Plant, round_half_away
 from mintlang.runtime.motion.servo import ServoGains, ServoLoop
+from mintlang.runtime.ranges import check_range
 
 # AXISMODE bits (AX-1) and AXISERROR bits (AX-5)
 MD_LINEAR, MD_JOG, MD_CIRCULAR, MD_TORQUE, MD_HOMING = 2, 4, 8, 16, 32

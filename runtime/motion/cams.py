@@ -21,7 +21,7 @@ from mintlang.runtime.motion.axis import MD_CAM, MOTION_IN_PROGRESS, Axis, Reque
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.master import Link, SetPoints, link, master_distance
 from mintlang.runtime.motion.moves import Move
-from mintlang.runtime.motion.parameters import OUT_OF_RANGE
+from mintlang.runtime.ranges import OUT_OF_RANGE
 
 ABSOLUTE, TRUE_ABSOLUTE, CONTINUOUS, NO_INTERPOLATION, TRIGGER, RETRIGGER = 1, 2, 4, 8, 16, 32
 TABLE_ERROR = 13

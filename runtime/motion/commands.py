@@ -11,7 +11,7 @@ from collections.abc import Callable, Sequence
 from mintlang.controllers import ControllerProfile
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.errors import MintError, NotSimulated
-from mintlang.runtime.keywords import Channels, KeywordTable, Values, per_channel
+from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer, per_channel
 from mintlang.runtime.motion.axis import (
     ER_ABORT,
     MD_CIRCULAR,
@@ -73,7 +73,22 @@ class Motion:
             raise MintError(INVALID_AXIS, number, f"axes are 0 to {len(self.axes) - 1}")
         return self.axes[number]
 
+    def _too_many(self, channels: Channels | None) -> None:
+        """More axes than the controller has is 2017 (000:19047-19052: SPEED[0,1,3] on a single axis controller)."""
+        if channels is not None and len(channels) > len(self.axes):
+            raise MintError(TOO_MANY_VALUES, detail=f"{len(channels)} axes on a controller with {len(self.axes)}")
+
+    def _on_axes(self, write: Writer) -> Writer:
+        """An axis parameter's writer, which first counts the axes named."""
+
+        def checked(channels: Channels | None, values: Values) -> bool:
+            self._too_many(channels)
+            return write(channels, values)
+
+        return checked
+
     def addressed(self, channels: Channels | None) -> list[Axis]:
+        self._too_many(channels)
         numbers = channels if channels is not None else (0,)
         if len(set(numbers)) != len(numbers):
             raise MintError(SAME_AXIS_TWICE, detail="an axis is named twice")
@@ -321,7 +336,8 @@ class Motion:
         table.register("ABORT", command=self.abort)
         table.register("AXES", command=self._validate_axes)
         for name in DEFAULTS:
-            table.register(name, read=self._parameter_reader(name), write=per_channel(self._parameter_writer(name)))
+            write = self._on_axes(per_channel(self._parameter_writer(name)))
+            table.register(name, read=self._parameter_reader(name), write=write)
         for name, inputs in _SWITCHES.items():
             table.register(name, read=self._switch(inputs))
         for name, rate in (("ACCELTIME", "ACCEL"), ("DECELTIME", "DECEL")):

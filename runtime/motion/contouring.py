@@ -11,8 +11,8 @@ from __future__ import annotations
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.commands import Motion
-from mintlang.runtime.motion.parameters import OUT_OF_RANGE
 from mintlang.runtime.motion.paths import CONTOUR_ON, VECTOR_ANGLE_ON
+from mintlang.runtime.ranges import OUT_OF_RANGE
 
 MAX_ANGLE = 180.0
 

@@ -22,8 +22,8 @@ from mintlang.runtime.motion.axis import MD_FLY, MD_OFFSET, MOTION_IN_PROGRESS, 
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.master import Link, SetPoints, link, master_distance
 from mintlang.runtime.motion.moves import Move
-from mintlang.runtime.motion.parameters import OUT_OF_RANGE
 from mintlang.runtime.motion.superimposed import OffsetTrack
+from mintlang.runtime.ranges import OUT_OF_RANGE
 
 MAX_FLY = 8_388_607.0
 

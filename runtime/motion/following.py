@@ -21,8 +21,8 @@ from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.flying import LockedMove, Step, StopRule
 from mintlang.runtime.motion.master import Link, SetPoints, link, master_distance
 from mintlang.runtime.motion.moves import PROFILER_TICK_MS, Move
-from mintlang.runtime.motion.parameters import OUT_OF_RANGE
 from mintlang.runtime.motion.superimposed import OffsetTrack
+from mintlang.runtime.ranges import OUT_OF_RANGE
 
 NO_RAMP, RAMP, CLUTCH, CONTINUOUS_CLUTCH = 0, 1, 2, 3
 TICK_S = PROFILER_TICK_MS / 1000.0

@@ -20,7 +20,7 @@ from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.moves import PROFILER_TICK_MS
-from mintlang.runtime.motion.parameters import OUT_OF_RANGE
+from mintlang.runtime.ranges import OUT_OF_RANGE
 
 MS_POS, MS_ENCODER, MS_AUXENCODER, MS_SPEED, MS_DEMAND = 0, 1, 2, 3, 4
 INVALID_MASTER_CHANNEL = 70

@@ -10,14 +10,10 @@ error 3, as the controller does.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
 from types import MappingProxyType
 
-from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller
-from mintlang.runtime.errors import MintError
-
-OUT_OF_RANGE = 3
+from mintlang.runtime.ranges import Bounds, table_bounds
 
 # Servo-axis defaults from the DEFAULT table, in counts (SCALE 1). Where the keyword entry and the
 # table disagree the table wins (HOMESPEED 40000, HOMEINPUT -1, MASTERDISTANCE 1000: spec HM-2, FG-2).
@@ -79,14 +75,6 @@ GAINS: frozenset[str] = frozenset(
 )
 
 
-@dataclass(frozen=True, slots=True)
-class Bounds:
-    minimum: float | None
-    maximum: float | None
-    exclusive_minimum: bool  # ACCEL: 0.0 < x
-    allowed: frozenset[float] | None = None  # a mode keyword's values, where they are not a range
-
-
 _ERROR_MODES = Bounds(0.0, 5.0, False, frozenset({0.0, 1.0, 2.0, 3.0, 5.0}))
 # Ranges the keyword database cannot give (Advanced-guide keywords, or tables the text states elsewhere),
 # from the spec items cited; the profiler and the error checks rely on them.
@@ -107,20 +95,4 @@ _KNOWN_RANGES: Mapping[str, Bounds] = MappingProxyType(
 
 def bounds(keyword: str, controller: Controller) -> Bounds:
     """The accepted values of ``keyword`` on ``controller`` (unbounded when nothing gives any)."""
-    if keyword in _KNOWN_RANGES:
-        return _KNOWN_RANGES[keyword]
-    record = database().keywords.get(keyword)
-    row = record.attributes_for(controller) if record is not None else None
-    if row is None or row.range is None:
-        return Bounds(None, None, False)
-    return Bounds(row.range.minimum, row.range.maximum, row.range.text.replace(" ", "").startswith("0.0<x"))
-
-
-def check_range(keyword: str, value: float, limits: Bounds, axis: int) -> float:
-    if limits.allowed is not None and value not in limits.allowed:
-        raise MintError(OUT_OF_RANGE, axis, f"{keyword} = {value:g}")
-    low, high = limits.minimum, limits.maximum
-    too_low = low is not None and (value <= low if limits.exclusive_minimum else value < low)
-    if too_low or (high is not None and value > high):
-        raise MintError(OUT_OF_RANGE, axis, f"{keyword} = {value:g}")
-    return value
+    return _KNOWN_RANGES.get(keyword) or table_bounds(keyword, controller)

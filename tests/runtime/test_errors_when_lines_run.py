@@ -67,7 +67,26 @@ def test_an_axis_named_twice_in_a_write_is_error_2018() -> None:
 
 
 def test_a_keyword_the_simulator_does_not_model_stops_only_the_run_that_reaches_it() -> None:
-    assert simulate('DIM a\nIF a DO\n  PRINT TEMPERATURE\nENDIF\nPRINT "ran"\n').terminal == "ran\n"
-    stopped = simulate("PRINT TEMPERATURE\n")
+    assert simulate('DIM a\nIF a DO\n  PRINT ENCODERVEL.0\nENDIF\nPRINT "ran"\n').terminal == "ran\n"
+    stopped = simulate("PRINT ENCODERVEL.0\n")
     assert (stopped.stop.reason, stopped.stop.line) == (StopReason.ERROR, 1)
     assert "not simulated" in stopped.stop.message
+
+
+def test_a_keyword_the_controller_does_not_have_is_error_17_when_its_line_runs() -> None:
+    # 000:18570-18575: a keyword not supported on the controller; EVENTPENDING is NextMove only (000:10116-10125)
+    result = simulate('PRINT "a"\nEVENTPENDING = 0\nPRINT "b"\n' + HANDLER, controller="mintdrive")
+    assert result.terminal == "a\n17 2 -1\nb\n"
+
+
+def test_values_outside_a_keywords_range_are_error_3() -> None:
+    # the attributes tables: WAIT 2 to 16777215 on NextMove (000:17330), TIMEREVENT 40 and up on MintDrive (000:16786)
+    assert simulate("WAIT = 1\n" + HANDLER).terminal == "3 1 -1\n"
+    assert simulate("TIMEREVENT = 25\n" + HANDLER, controller="mintdrive").terminal == "3 1 -1\n"
+    assert simulate("EVENTDISABLE = 600\n" + HANDLER).terminal == "3 1 -1\n"
+
+
+def test_more_axes_than_the_controller_has_is_error_2017() -> None:
+    # 000:19047-19052: SPEED[0,1,3] = 5000; is invalid on a single axis controller
+    result = simulate("SPEED[0,1,3] = 5000;\n", controller="mintdrive")
+    assert (result.err, result.erl) == (2017, 1)

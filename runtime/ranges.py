@@ -1,0 +1,60 @@
+"""The values a keyword accepts on a controller, from the reference guide's attributes tables.
+
+A value outside raises error 3 ("Data specified out of range"), as the
+controller does (000:18518-18521); the manual prints ``SCALE = -3`` as its
+example (000:4600-4606).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Controller
+from mintlang.runtime.errors import MintError
+
+OUT_OF_RANGE = 3
+
+
+@dataclass(frozen=True, slots=True)
+class Bounds:
+    minimum: float | None
+    maximum: float | None
+    exclusive_minimum: bool  # ACCEL: 0.0 < x
+    allowed: frozenset[float] | None = None  # a mode keyword's values, where they are not a range
+    exclusive_maximum: bool = False  # OUT: x < 4096
+
+
+UNBOUNDED = Bounds(None, None, False)
+
+
+def table_bounds(keyword: str, controller: Controller) -> Bounds:
+    """The range the keyword's attributes table gives for ``controller``; unbounded when it gives none."""
+    record = database().keywords.get(keyword)
+    row = record.attributes_for(controller) if record is not None else None
+    if row is None or row.range is None:
+        return UNBOUNDED
+    found = row.range
+    exclusive_minimum = found.text.replace(" ", "").startswith("0.0<x")
+    return Bounds(found.minimum, found.maximum, exclusive_minimum, exclusive_maximum=not found.maximum_included)
+
+
+def ranged(
+    keyword: str, controller: Controller, write_one: Callable[[int | None, float], None]
+) -> Callable[[int | None, float], None]:
+    """``write_one`` for the values ``keyword``'s table accepts on ``controller``; error 3 for the others."""
+    limits = table_bounds(keyword, controller)
+    return lambda channel, value: write_one(channel, check_range(keyword, value, limits, channel))
+
+
+def check_range(keyword: str, value: float, limits: Bounds, channel: int | None = None) -> float:
+    """``value`` if ``limits`` accept it; error 3 on ``channel`` otherwise."""
+    if limits.allowed is not None and value not in limits.allowed:
+        raise MintError(OUT_OF_RANGE, channel, f"{keyword} = {value:g}")
+    low, high = limits.minimum, limits.maximum
+    too_low = low is not None and (value <= low if limits.exclusive_minimum else value < low)
+    too_high = high is not None and (value >= high if limits.exclusive_maximum else value > high)
+    if too_low or too_high:
+        raise MintError(OUT_OF_RANGE, channel, f"{keyword} = {value:g}")
+    return value

@@ -120,6 +120,26 @@ class Simulator:
                 return f"{message}: the move buffer of axis {axis.number} is full ({size} moves) and no GO started them"
         return message
 
+    def _pace(self, t: int, following: int, started: float) -> bool:
+        """Wait in real time until tick ``following``; False when the wall-clock limit comes first.
+
+        Nothing changes before ``following``, so the simulated clock may stand anywhere up to it:
+        a limit or a Ctrl-C during the wait stops the run at the real time reached.
+        """
+        limit = self.limits.max_wall_s
+        wake = following / 1000.0
+        stop_at = wake if limit is None else min(wake, limit)
+        try:
+            time.sleep(max(stop_at - (time.perf_counter() - started), 0.0))
+        except KeyboardInterrupt:
+            self.c.clock.now = max(t, min(following - 1, int((time.perf_counter() - started) * 1000)))
+            raise
+        if stop_at < wake:
+            self.c.clock.now = max(t, int(stop_at * 1000))
+            self.c.vm.stop(StopReason.WALL_LIMIT, f"ran {stop_at:.1f} s of wall time")
+            return False
+        return True
+
     def fast_input(self, channel: int) -> None:
         """A fast input fired: latch the positions just measured and call its handler (EV-9)."""
         c = self.c
@@ -169,13 +189,14 @@ class Simulator:
                     vm.stop(StopReason.UNTIL, f"reached --until-ms {until}")
                     break
                 processed += 1
-                if processed % WALL_CHECK_EVERY == 0 or limits.realtime:
+                if limits.realtime:
+                    if not self._pace(t, following, started):
+                        break
+                elif processed % WALL_CHECK_EVERY == 0:
                     elapsed = time.perf_counter() - started
                     if limits.max_wall_s is not None and elapsed > limits.max_wall_s:
                         vm.stop(StopReason.WALL_LIMIT, f"ran {elapsed:.1f} s of wall time")
                         break
-                    if limits.realtime and following / 1000.0 > elapsed:
-                        time.sleep(following / 1000.0 - elapsed)
                 t = following
         except KeyboardInterrupt:  # stop where the program is, so the report and trace still come out
             vm.stop(StopReason.INTERRUPTED, "Ctrl-C")

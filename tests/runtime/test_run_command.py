@@ -170,3 +170,10 @@ def test_a_compile_error_is_reported_with_its_number_and_line_in_the_json_report
     assert printed == "C2009: PROGRAM NEXT w/o FOR [line 2]"
     assert (report["stopped"], report["err"], report["erl"]) == ("error", 2009, 2)
     assert report["message"].startswith("C2009")
+
+
+def test_a_run_paced_to_real_time_stops_at_the_wall_clock_limit_even_inside_a_long_wait(tmp_path: Path) -> None:
+    program = write(tmp_path, "wait.mnt", "PRINT 1\nWAIT = 5000\nPRINT 2\n")
+    result = mint_run(program, "--realtime", "--max-wall-s", "0.5", "--report", "json")
+    report = json.loads(result.stdout[result.stdout.index("{") :])
+    assert (report["stopped"], report["time_ms"], report["line"]) == ("wall-limit", 500, 2)

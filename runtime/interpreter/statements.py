@@ -8,6 +8,7 @@ iteration is a comparison and an integer assignment.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
@@ -584,6 +585,7 @@ class StatementCompiler:
         vm = self.vm
         clock = vm.clock
         store = self._setter(statement.target)
+        accept = self._entry_format(statement.using)
         prompted: set[tuple[int, int]] = set()
 
         def input_() -> bool:
@@ -597,14 +599,32 @@ class StatementCompiler:
                 vm.wake_at = NEVER  # only a keystroke (a scheduled world change) can wake it
                 return True
             prompted.discard(key)
-            if entry.retry:  # not a number: ask again, at once if more keys are already typed
+            value = entry.value if entry.value is None else accept(entry.value)
+            if entry.retry or (entry.value is not None and value is None):  # ask again, at once if keys wait
                 vm.wake_at = clock.now + 1
                 return True
-            if entry.value is not None:
-                store(entry.value)
+            if value is not None:
+                store(value)
             return False
 
         return input_
+
+    def _entry_format(self, using: tuple[n.Expression, ...]) -> Callable[[float], float | None]:
+        """``INPUT .. USING int, frac`` (000:12223-12229): a sign only with a negative ``int``, and no more
+        than ``frac`` decimals (at most 3), the rest truncated; None for an entry to refuse. The field
+        editor's keys (space, backspace, '-' toggling the sign) are not modelled: keys arrive as a line."""
+        if not using:
+            return lambda value: value
+        places = self.expressions.compile(using[0])
+        fraction = self.expressions.compile(using[1]) if len(using) > 1 else (lambda: 0.0)
+
+        def accept(value: float) -> float | None:
+            if value < 0 and places() >= 0:
+                return None
+            scale = 10.0 ** min(max(int(fraction()), 0), 3)
+            return f32(math.trunc(value * scale) / scale)
+
+        return accept
 
     def nothing(self, statement: n.Statement, pc: int) -> Operation:
         return _nothing

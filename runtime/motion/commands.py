@@ -6,10 +6,11 @@ fails or has to wait for buffer space leaves the axes as they were.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 
 from mintlang.controllers import ControllerProfile
-from mintlang.runtime.clock import Clock
+from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer, per_channel
 from mintlang.runtime.motion.axis import (
@@ -480,4 +481,15 @@ class Motion:
 
     def _posremaining(self, channel: int | None) -> float:
         axis = self._watch(self.axis(channel), moving=True)
-        return axis.remaining() / axis.scale
+        return self._path_remaining(axis) / axis.scale
+
+    def _path_remaining(self, axis: Axis) -> float:
+        """POSREMAINING in counts; for a move of several axes, "the remaining vector length" (000:16978-16979)."""
+        move = axis.move
+        if type(move) is PlannedMove and len(move.axes) > 1 and move.length is not None and move.end < NEVER:
+            return max(move.length - move.path(self.clock.now)[0], 0.0)
+        if move is None and axis.triggered and axis.buffer:
+            request = axis.buffer[0]
+            if len(request.axes) > 1 and request.targets is not None:
+                return math.dist(request.targets, [self.axes[number].demand for number in request.axes])
+        return axis.remaining()

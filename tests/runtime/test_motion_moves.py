@@ -279,3 +279,9 @@ def test_a_deadlock_on_a_full_move_buffer_says_which_axis_is_full() -> None:
     result = simulate(source)
     assert result.stop.reason is StopReason.DEADLOCK and result.stop.line == 4
     assert "move buffer of axis 1 is full (2 moves)" in result.stop.message
+
+
+def test_posremaining_of_a_vector_is_the_remaining_vector_length() -> None:
+    # 000:16978-16979: "The remaining vector length can be read using POSREMAINING": 300,400 is 500 long
+    source = "VECTORR[0,1] = 300,400 : GO[0,1]\nPRINT POSREMAINING.0; POSREMAINING.1\nPAUSE IDLE[0,1]\nPRINT POSREMAINING.1\n"
+    assert simulate(source).terminal == "500     500\n0\n"

@@ -257,6 +257,10 @@ def expectations_pass(outcomes: Sequence[Outcome], stopped: str) -> bool:
     return bool(outcomes) and all_held(outcomes) and (chosen or stopped in NORMAL_STOPS)
 
 
+def _expectations(count: int) -> str:
+    return "1 expectation" if count == 1 else f"{count} expectations"
+
+
 def render_outcomes(outcomes: Iterable[Outcome], console: Console) -> None:
     """A table of every expectation with what was seen, then a one-line verdict."""
     outcomes = tuple(outcomes)
@@ -274,6 +278,7 @@ def render_outcomes(outcomes: Iterable[Outcome], console: Console) -> None:
     console.print(table)
     failed = sum(not outcome.held for outcome in outcomes)
     if failed:
-        console.print(Text(f"{failed} of {len(outcomes)} expectations failed.", style="bold red"))
+        console.print(Text(f"{failed} of {_expectations(len(outcomes))} failed.", style="bold red"))
     else:
-        console.print(Text(f"All {len(outcomes)} expectations held.", style="green"))
+        held = "The expectation held." if len(outcomes) == 1 else f"All {len(outcomes)} expectations held."
+        console.print(Text(held, style="green"))

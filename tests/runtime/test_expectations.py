@@ -187,7 +187,7 @@ def test_the_table_shows_each_expectation_and_a_summary() -> None:
 def test_the_summary_when_all_held() -> None:
     console = Console(record=True, width=100)
     render_outcomes([check("count = 1", FakeRun({"COUNT": 1}))], console)
-    assert console.export_text().rstrip().splitlines()[-1] == "All 1 expectations held."
+    assert console.export_text().rstrip().splitlines()[-1] == "The expectation held."
 
 
 def test_terminal_is_holds_only_for_the_whole_output_and_says_where_it_differs() -> None:

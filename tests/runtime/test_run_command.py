@@ -103,7 +103,7 @@ def test_expectations_decide_the_exit_status_and_print_a_table(tmp_path: Path) -
     assert held.exit_code == 0 and "All 5 expectations held" in held.stderr
     failing = write(tmp_path, "wrong.toml", '[[expect]]\nwhat = "POS.0"\nequals = 5\n')
     failed = mint_run(program, "--expect", failing)
-    assert failed.exit_code == 1 and "1 of 1 expectations failed" in failed.stderr
+    assert failed.exit_code == 1 and "1 of 1 expectation failed" in failed.stderr
 
 
 def test_plotting_without_matplotlib_says_how_to_install_it(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:

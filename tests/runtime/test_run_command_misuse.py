@@ -13,19 +13,8 @@ import time
 from pathlib import Path
 
 import pytest
-from click.testing import CliRunner, Result
 
-from mintlang.runtime.cli import run
-
-
-def mint_run(*arguments: str | Path) -> Result:
-    return CliRunner().invoke(run, [str(argument) for argument in arguments])
-
-
-def write(directory: Path, name: str, text: str) -> Path:
-    path = directory / name
-    path.write_text(text, encoding="utf-8")
-    return path
+from tests.runtime.invoking import mint_run, write
 
 
 def test_program_text_that_looks_like_markup_is_shown_as_written(tmp_path: Path) -> None:

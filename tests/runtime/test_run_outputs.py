@@ -9,23 +9,12 @@ import tracemalloc
 from pathlib import Path
 
 import pytest
-from click.testing import CliRunner, Result
 
-from mintlang.runtime.cli import run
 from mintlang.runtime.trace import Envelope
+from tests.runtime.invoking import mint_run, write
 
 BUSY = "DIM i\nLOOP\n  i = i + 1\nENDL\n"
 NO_MATPLOTLIB = pytest.mark.skipif(importlib.util.find_spec("matplotlib") is None, reason="no plot extra")
-
-
-def mint_run(*arguments: str | Path) -> Result:
-    return CliRunner().invoke(run, [str(argument) for argument in arguments])
-
-
-def write(directory: Path, name: str, text: str) -> Path:
-    path = directory / name
-    path.write_text(text, encoding="utf-8")
-    return path
 
 
 def peak_bytes(*arguments: str | Path) -> int:

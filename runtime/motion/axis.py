@@ -99,6 +99,7 @@ class Axis:
         self.guarded = False  # some limit, error or stop input, or a software limit, needs checking each tick
         self.held = False  # a stop input holds the axis (STOPINPUTMODE 1): its move stays, at rest, until released
         self.last_tick = 0
+        self.skipped_demand: float | None = None  # the demand of a skipped tick a completed move still gave
         self._setpoints: tuple[Move | None, int, float, int, float] = (None, -1, 0.0, -1, 0.0)
         self._last_demand = 0.0  # demand and demand velocity of the previous servo tick, for the feed-forwards
         self._last_velocity = 0.0
@@ -305,6 +306,8 @@ class Axis:
         """Finish a move whose end has passed: its end state, as if the tick it ended had been processed."""
         move = self.move
         if move is not None and tick >= move.end and not self.held and not move.live:
+            if tick - 1 > self.last_tick:  # the servo skipped the tick before, which the move still drove
+                self.skipped_demand = self.demand_at(tick - 1)
             self.hold = move.demand(self.index_in_move, move.end)
             self.move = None
             if move.mode == self.pending_mode:
@@ -363,15 +366,18 @@ class Axis:
         there it would act on rounding alone, so the DAC reads 0. A stalled encoder does not answer the
         DAC either, but its following error is real, and the DAC shows the law pushing against it.
         """
-        demand = self.demand_at(tick)
-        self.demand = demand
         plant = self.plant
         servoing = self.enabled and self.torque is None
+        before: float | None = None  # after skipped ticks, the demand the encoder read on the tick before
+        if tick - self.last_tick > 1 and servoing and type(plant) is IdealPlant:
+            # found before ``demand`` moves on: the demand of an odd tick is read from the one output before it
+            before = self.skipped_demand if self.skipped_demand is not None else self.demand_at(tick - 1)
+        self.skipped_demand = None
+        demand = self.demand_at(tick)
+        self.demand = demand
         if type(plant) is IdealPlant:
             if servoing:
-                # after skipped ticks the encoder read the rounded demand of the tick before
-                skipped = tick - self.last_tick > 1
-                self.previous_measured = round_half_away(self.demand_at(tick - 1)) if skipped else self.measured
+                self.previous_measured = round_half_away(before) if before is not None else self.measured
                 self.measured = plant.step(demand, 0.0, SERVO_TICK_S)
             else:
                 self.previous_measured = self.measured

@@ -8,8 +8,6 @@ runs, so importing this package imports no tool.
 
 from __future__ import annotations
 
-from importlib.metadata import entry_points
-
 import click
 
 from mintlang.cli.check import check
@@ -19,6 +17,8 @@ class _Commands(click.Group):
     """The core's commands plus those the installed tools register."""
 
     def _tools(self) -> dict[str, click.Command]:
+        from importlib.metadata import entry_points  # noqa: PLC0415 - a tenth of the start-up, paid only for a tool
+
         return {entry.name: entry.load() for entry in entry_points(group="mintlang.commands")}
 
     def list_commands(self, ctx: click.Context) -> list[str]:

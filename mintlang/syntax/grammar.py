@@ -11,11 +11,15 @@ texts and spans from the line itself.
 
 from __future__ import annotations
 
+import hashlib
+import pickle
 from collections.abc import Iterator
 from dataclasses import dataclass
 from functools import cache
 from importlib import resources
+from importlib.resources.abc import Traversable
 
+import lark
 from lark import Lark, Token, Tree
 from lark.common import LexerConf
 from lark.exceptions import UnexpectedInput, UnexpectedToken
@@ -52,15 +56,41 @@ _V3_LOGIC = """?expr: or_expr
 """
 
 
-@cache
-def _parser(dialect: Dialect) -> Lark:
+def grammar_text(dialect: Dialect) -> str:
     grammar = resources.files("mintlang.syntax").joinpath("grammar.lark").read_text(encoding="utf-8")
     assert _V4_LOGIC in grammar, "grammar.lark must state the v4 precedence of AND and OR as _V4_LOGIC"
-    if dialect is Dialect.V3:
-        grammar = grammar.replace(_V4_LOGIC, _V3_LOGIC)
+    return grammar.replace(_V4_LOGIC, _V3_LOGIC) if dialect is Dialect.V3 else grammar
+
+
+def build_parser(dialect: Dialect) -> Lark:
+    """The parser made from the grammar: its LALR tables take a tenth of a second to compute."""
     # propagate_positions gives every subtree the positions of its first and last token, which
     # here are token indices: computed once per cached tree, they make node spans O(1).
-    return Lark(grammar, parser="lalr", lexer=_PresetTokens, strict=True, propagate_positions=True)
+    return Lark(grammar_text(dialect), parser="lalr", lexer=_PresetTokens, strict=True, propagate_positions=True)
+
+
+def tables_file(dialect: Dialect) -> Traversable:
+    """Where the package ships the parser of ``dialect`` with its tables computed (``tools/lalr_tables.py``)."""
+    return resources.files("mintlang.syntax").joinpath(f"lalr_{dialect.value}.bin")
+
+
+def fingerprint(dialect: Dialect) -> str:
+    """What shipped tables must have been computed from: this grammar, with this lark."""
+    digest = hashlib.sha256(grammar_text(dialect).encode("utf-8")).hexdigest()
+    return f"{digest} lark-{lark.__version__}"
+
+
+@cache
+def _parser(dialect: Dialect) -> Lark:
+    """The shipped parser when it was made from this grammar by this lark (loading it takes a few ms,
+    which every ``mint check`` pays at start-up), else one built now."""
+    try:
+        with tables_file(dialect).open("rb") as stream:
+            if stream.readline().decode("ascii").strip() == fingerprint(dialect):
+                return Lark.load(stream)
+    except (OSError, ValueError, EOFError, pickle.UnpicklingError):
+        pass  # missing or unreadable: build it
+    return build_parser(dialect)
 
 
 # Beyond these the line is not analysed: the controller takes 255 characters a line,

@@ -283,5 +283,6 @@ def test_a_deadlock_on_a_full_move_buffer_says_which_axis_is_full() -> None:
 
 def test_posremaining_of_a_vector_is_the_remaining_vector_length() -> None:
     # 000:16978-16979: "The remaining vector length can be read using POSREMAINING": 300,400 is 500 long
-    source = "VECTORR[0,1] = 300,400 : GO[0,1]\nPRINT POSREMAINING.0; POSREMAINING.1\nPAUSE IDLE[0,1]\nPRINT POSREMAINING.1\n"
+    source = "VECTORR[0,1] = 300,400 : GO[0,1]\nPRINT POSREMAINING.0; POSREMAINING.1\n"
+    source += "PAUSE IDLE[0,1]\nPRINT POSREMAINING.1\n"
     assert simulate(source).terminal == "500     500\n0\n"

@@ -7,9 +7,10 @@ of the controller; after ``_``: predefined constants; at the start of a
 statement: commands, writable parameters, variables, macros and block
 snippets; inside an expression: readable keywords, functions, variables,
 arrays and macros; after a complete operand: the operators and the words that
-continue a statement (THEN, TO ...). Nothing inside comments, strings and
-character constants, after a dot (an axis or a decimal follows), or where a
-new name is being declared (DIM, DEFINE).
+continue a statement (THEN, TO ...); after a keyword's dot (``SPEED.``, ``IN.``):
+the axes or channels it addresses on the controller and the macros that name
+them. Nothing inside comments, strings and character constants, after a
+number's decimal point, or where a new name is being declared (DIM, DEFINE).
 """
 
 from __future__ import annotations
@@ -18,6 +19,8 @@ from collections.abc import Iterator
 
 from lsprotocol import types
 
+from mintlang.analysis.rules.addressing import addressed
+from mintlang.controllers import ChannelRange
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Attributes, Keyword, KeywordKind
@@ -27,7 +30,8 @@ from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import SymbolKind
-from mintlang.syntax.tokens import Token, TokenKind
+from mintlang.syntax.lines import MacroDefinition
+from mintlang.syntax.tokens import TRIVIA, Token, TokenKind
 
 SNIPPETS = {
     "IF … DO … ENDIF": "IF ${1:condition} DO\n\t$0\nENDIF",
@@ -187,6 +191,73 @@ def _events(snapshot: Snapshot, hash_: Token, cursor: types.Position) -> list[ty
     ]
 
 
+def _macro_numbers(definition: MacroDefinition) -> list[int] | None:
+    """The numbers a macro's text is: ``0`` gives [0], ``[0,1]`` gives [0, 1]; None for any other text."""
+    body = [text for kind, text in definition.body if kind not in TRIVIA]
+    if body[:1] == ["["] and body[-1:] == ["]"]:
+        body = body[1:-1:2] if all(comma == "," for comma in body[2:-1:2]) else []
+    if body and all(text.isdigit() for text in body):
+        return [int(text) for text in body]
+    return None
+
+
+def _addressed_by(keyword: Token, snapshot: Snapshot) -> tuple[str, ChannelRange] | None:
+    name = snapshot.settings.words.keyword_name(keyword.text)
+    return addressed(name, snapshot.model.controller) if name is not None else None
+
+
+def _after_dot(snapshot: Snapshot, before: list[Token], typed: types.Range) -> list[types.CompletionItem] | None:
+    """After ``KW.``: the numbers KW addresses on the controller, then the macros that name valid ones.
+
+    The dot before a macro is only a delimiter (3.5: ``SF.g1`` where g1 is ``[0,1]``), so a macro
+    naming one number is written after two (``MOVER..xAxis``), or after ``.^`` or ``..`` as typed.
+    None when the cursor is not after a keyword's dot.
+    """
+    kinds = [token.kind for token in before[-3:]]
+    delimited = kinds[-2:] in ([TokenKind.DOT, TokenKind.DOT], [TokenKind.DOT, TokenKind.CIRCUMFLEX])
+    if kinds[-1:] != [TokenKind.DOT] and not delimited:
+        return None
+    keyword = before[-3] if delimited and len(before) >= 3 else before[-2] if len(before) >= 2 else None
+    found = _addressed_by(keyword, snapshot) if keyword is not None and keyword.kind is TokenKind.KEYWORD else None
+    if found is None:
+        return []
+    noun, valid = found
+    items = (
+        []
+        if delimited
+        else [
+            types.CompletionItem(
+                label=str(number),
+                kind=types.CompletionItemKind.Value,
+                detail=f"{noun} {number}",
+                sort_text=f"0{number:04d}",
+            )
+            for number in range(valid.low, valid.high + 1)
+        ]
+    )
+    for definition in snapshot.model.program.macros.values():
+        numbers = _macro_numbers(definition)
+        if not numbers or not all(number in valid for number in numbers) or (len(numbers) > 1 and noun != "axis"):
+            continue
+        listed = definition.body[0][1] == "["
+        if not (delimited and listed):  # KW..[0,1] is no selector
+            text = definition.name if delimited or listed else f".{definition.name}"
+            names = f"{noun if len(numbers) == 1 else 'axes'} {', '.join(map(str, numbers))}"
+            items.append(_macro_item(definition.name, text, names, typed))
+    return items
+
+
+def _macro_item(name: str, text: str, names: str, typed: types.Range) -> types.CompletionItem:
+    return types.CompletionItem(
+        label=name,
+        kind=types.CompletionItemKind.Constant,
+        detail=f"macro for {names}",
+        sort_text=f"1{name}",
+        filter_text=name,
+        text_edit=types.TextEdit(range=typed, new_text=text),
+    )
+
+
 def complete(snapshot: Snapshot, prefix: str, cursor: types.Position) -> list[types.CompletionItem]:
     """Items for the cursor at the end of ``prefix`` (its line so far); names come from ``snapshot``."""
     tokens = prefix_tokens(prefix, snapshot.settings.dialect)
@@ -198,9 +269,15 @@ def complete(snapshot: Snapshot, prefix: str, cursor: types.Position) -> list[ty
         partial = before.pop()  # the word being typed
     if partial is not None and partial.text.startswith("#"):
         return _events(snapshot, partial, cursor) if partial.kind is TokenKind.LABEL or not before else []
+    typed = types.Range(
+        start=types.Position(cursor.line, cursor.character - (len(partial.text) if partial else 0)), end=cursor
+    )
+    dotted = _after_dot(snapshot, before, typed)
+    if dotted is not None:
+        return dotted
     previous = before[-1] if before else None
     if previous is not None and (previous.kind in _NOTHING_AFTER or previous.text.endswith(".")):
-        return []  # a new name, a complete statement, an axis or channel number, or the decimals of a number
+        return []  # a new name, a complete statement, or the decimals of a number
     if partial is not None and partial.text.startswith("_"):
         return list(_constants())
     if previous is not None and previous.kind in (TokenKind.GOSUB, TokenKind.GOTO):
@@ -220,7 +297,7 @@ def complete(snapshot: Snapshot, prefix: str, cursor: types.Position) -> list[ty
 def register(server: MintServer) -> None:
     @server.feature(
         types.TEXT_DOCUMENT_COMPLETION,
-        types.CompletionOptions(trigger_characters=["_", "#"], resolve_provider=True),
+        types.CompletionOptions(trigger_characters=["_", "#", "."], resolve_provider=True),
     )
     def completion(params: types.CompletionParams) -> types.CompletionList:
         typing = server.typing(params.text_document.uri, params.position)

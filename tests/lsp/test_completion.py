@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 from lsprotocol import types
 
+from mintlang.lsp.server import create_server
 from tests.lsp.conftest import change, corpus, document, open_document, position, uri_of
 
 pytestmark = pytest.mark.asyncio
@@ -84,7 +85,6 @@ async def test_statement_start_offers_no_functions_operators_or_continuations(cl
     [
         ("DIM ", "a new name is declared"),
         ("DEFINE ", "a new name is defined"),
-        ("SPEED.", "an axis number follows the dot"),
         ("a = 1.", "decimals follow"),
         ("a = 'b", "inside a character constant"),
     ],
@@ -159,3 +159,73 @@ async def test_a_keyword_read_is_an_operand_and_binary_operators_wait_for_one(cl
     assert {"AND", "OR", "THEN", "DO"} <= after and not after & {"NOT", "POS", "a"}
     before = set(await labels_at(client, uri, text, "a = ", 4))
     assert {"NOT", "POS", "a"} <= before and not before & {"AND", "OR", "MOD", "XOR"}
+
+
+# The manual's macros for axes (3.5): "DEFINE g1 = [0,1,2,3] / SF.g1 = 10;" and "DEFINE xAxis = 0 /
+# MOVER..xAxis = 10", where one dot before a macro is only a delimiter.
+AXIS_MACROS = "DEFINE g1 = [0,1,2,3]\nDEFINE g2 = [4,5,6,7]\nDEFINE xAxis = 0\nDEFINE far = 40\nDIM a\n"
+
+
+async def test_after_an_axis_dot_the_axes_of_the_controller_and_the_macros_naming_them(client, tmp_path):
+    text = AXIS_MACROS + "SPEED.\n"
+    uri = uri_of(tmp_path / "dot.mnt")
+    await open_document(client, uri, text)
+    items = await labels_at(client, uri, text, "SPEED.", 6)
+    numbers = [label for label, item in items.items() if item.kind == types.CompletionItemKind.Value]
+    assert numbers == [str(axis) for axis in range(12)]  # NextMove PCI: axes 0 to 11
+    assert items["3"].detail == "axis 3"
+    assert set(items) - set(numbers) == {"g1", "g2", "xAxis"}  # far names no axis of the controller
+    assert items["g1"].text_edit.new_text == "g1"  # SF.g1: the list is the selector
+    assert items["xAxis"].text_edit.new_text == ".xAxis"  # MOVER..xAxis: the first dot only delimits
+    assert items["g2"].detail == "macro for axes 4, 5, 6, 7"
+
+
+async def test_after_a_channel_dot_the_channels_and_after_two_dots_the_macros(client, tmp_path):
+    text = AXIS_MACROS + "a = IN.\nMOVER..\n"
+    uri = uri_of(tmp_path / "channels.mnt")
+    await open_document(client, uri, text)
+    items = await labels_at(client, uri, text, "IN.", 3)
+    numbers = [label for label, item in items.items() if item.kind == types.CompletionItemKind.Value]
+    assert numbers == [str(channel) for channel in range(60)] and items["7"].detail == "input 7"
+    assert set(items) - set(numbers) == {"xAxis", "far"}  # one number each: a list selects axes only
+    after_two = await labels_at(client, uri, text, "MOVER..", 7)
+    assert set(after_two) == {"xAxis"} and after_two["xAxis"].text_edit.new_text == "xAxis"
+
+
+async def test_the_axes_follow_the_controller(client, tmp_path):
+    client.workspace_did_change_configuration(
+        types.DidChangeConfigurationParams(settings={"mint": {"controller": "nextmove-bx"}})
+    )
+    text = "SPEED.\nDIM a\na = ENCODER.\n"
+    uri = uri_of(tmp_path / "bx.mnt")
+    await open_document(client, uri, text)
+    assert list(await labels_at(client, uri, text, "SPEED.", 6)) == [str(axis) for axis in range(8)]
+    assert list(await labels_at(client, uri, text, "ENCODER.", 8)) == ["0", "1", "2", "3"]
+
+
+async def test_the_dot_triggers_completion(client, tmp_path):
+    text = "SPEED\n"
+    uri = uri_of(tmp_path / "trigger.mnt")
+    await open_document(client, uri, text)
+    change(client, uri, 2, ((0, 5), (0, 5)), ".")
+    found = await client.text_document_completion_async(
+        types.CompletionParams(
+            text_document=document(uri),
+            position=types.Position(line=0, character=6),
+            context=types.CompletionContext(
+                trigger_kind=types.CompletionTriggerKind.TriggerCharacter, trigger_character="."
+            ),
+        )
+    )
+    assert "0" in {item.label for item in found.items}
+    assert "." in initialized().completion_provider.trigger_characters
+
+
+def initialized() -> types.ServerCapabilities:
+    """The capabilities the server announces, from its initialize handler run in this process."""
+    steps = create_server().protocol.lsp_initialize(types.InitializeParams(capabilities=types.ClientCapabilities()))
+    try:
+        while True:
+            next(steps)
+    except StopIteration as answer:
+        return answer.value.capabilities

@@ -59,6 +59,20 @@ def _channel_family(keyword: str) -> tuple[_Channels, int] | None:
     return None
 
 
+_NOUNS = {7: "input", 8: "output"}  # the error a family's number gives tells what it numbers
+
+
+def addressed(keyword: str, controller: ControllerProfile) -> tuple[str, ChannelRange] | None:
+    """What the number after ``keyword.`` is on ``controller`` ("axis", "input", "channel") and its valid range;
+    the editor offers these numbers after the dot. None for keywords numbered otherwise (CAN, terminals)."""
+    found = database().keywords.get(keyword)
+    if found is not None and found.addressing is Addressing.AXIS:
+        return "axis", controller.axes
+    family = _channel_family(keyword)
+    valid = family[0](controller) if family is not None else None
+    return (_NOUNS.get(family[1], "channel"), valid) if family is not None and valid is not None else None
+
+
 def each_line(scope: LineScope) -> Iterator[Finding]:
     for use in scope.facts.keyword_uses:
         yield from _keyword(use, scope)

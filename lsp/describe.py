@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from mintlang.controllers import profile
+from mintlang.analysis.rules.v3_keywords import successor
+from mintlang.controllers import ControllerProfile, profile
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing, Controller, Keyword, MigrationClass, V3Keyword
 from mintlang.lsp.workspace import Snapshot
@@ -70,6 +71,24 @@ def v3_keyword(word: V3Keyword) -> str:
     if successor is not None and successor.summary:
         lines += ["", f"In Mint v4, {successor.name}: {successor.summary}"]
     return "\n".join(lines)
+
+
+def v3_word(text: str, controller: ControllerProfile) -> str | None:
+    """A Mint v3 keyword or constant left in v4 code: what it became on ``controller``, then its v3 entry
+    as the v3 dialect shows it; None for any other word."""
+    was = successor(text, controller)
+    old = database().lookup_v3(text)
+    if was is not None:
+        became = was.detail
+    elif old is not None:
+        what = "keyword" if old.name == text.upper() else f"abbreviation of {old.name}"
+        became = f"a Mint v3 {what}; Mint v4: {', '.join(old.v4_names) or 'nothing'}"
+    else:
+        return None
+    lines = [f"**{text}** is not Mint v4: it is {became}"]
+    if was is not None and was.rename:
+        lines[0] += f". Write {was.rename} (the quick fix does)"
+    return "\n\n".join([*lines, v3_keyword(old)] if old is not None else lines)
 
 
 def character(text: str) -> str:

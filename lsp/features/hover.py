@@ -1,4 +1,4 @@
-"""Hover: keywords (any spelling), predefined constants and user symbols."""
+"""Hover: keywords (any spelling), predefined constants, user symbols, and Mint v3 words left in v4 code."""
 
 from __future__ import annotations
 
@@ -25,6 +25,13 @@ def _comment_keyword(document: Document, offset: int) -> Token | None:
     return None
 
 
+def _v3_word(snapshot: Snapshot, token: Token, declared: bool) -> str | None:
+    """What a Mint v3 word v4 reads as an undeclared name (``HMSPEED``, ``GAIN``, ``_servo``) became."""
+    if snapshot.settings.dialect is not Dialect.V4 or token.kind is not TokenKind.NAME or declared:
+        return None
+    return describe.v3_word(token.text, snapshot.model.controller)
+
+
 def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
     """Markdown for the word at ``offset`` and the span it describes."""
     character = token_at(snapshot.document, offset, _CHARACTER)
@@ -34,6 +41,9 @@ def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
     if token is None:
         return None
     found = symbol_at(snapshot, offset)
+    old = _v3_word(snapshot, token, found is not None and bool(found[0].definitions))
+    if old is not None:
+        return old, token.start, token.end
     if found is not None:
         return describe.symbol(snapshot, found[0]), found[1].span.start, found[1].span.end
     if token.kind is TokenKind.CONSTANT:

@@ -1,7 +1,9 @@
 """Semantic tokens from the core's lexer: the editor colours what the compiler sees.
 
 User names are told apart by the symbol table: macros and labels get their
-own types, so a keyword abbreviation and a variable never look alike.
+own types, so a keyword abbreviation and a variable never look alike; a Mint
+v3 word left in v4 code (``HMSPEED``, ``GAIN``) and declared nowhere is a
+keyword, marked deprecated, not a variable.
 Clients that ask for deltas get only what changed since their last result:
 the encoding is relative, so typing on one line changes a few integers of
 tens of thousands. Editors ask after every edit, so both are linear: tokens
@@ -16,6 +18,7 @@ from collections.abc import Iterable, Sequence
 
 from lsprotocol import types
 
+from mintlang.analysis.rules.v3_keywords import is_v3_word
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
@@ -29,8 +32,9 @@ from mintlang.syntax.parser import Document
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
 
 TOKEN_TYPES = ["keyword", "function", "enumMember", "variable", "macro", "number", "string", "comment", "operator"]
-TOKEN_MODIFIERS: list[str] = []
+TOKEN_MODIFIERS = ["deprecated"]
 _TYPE = {name: index for index, name in enumerate(TOKEN_TYPES)}
+_DEPRECATED = 1 << 8  # a type with this bit set carries the deprecated modifier (bit 0 of the LSP's set)
 _BY_KIND: dict[TokenKind, int] = {
     **dict.fromkeys(GRAMMAR_KEYWORDS, _TYPE["keyword"]),
     TokenKind.KEYWORD: _TYPE["keyword"],
@@ -70,7 +74,7 @@ def encode(snapshot: Snapshot, within: Span | None = None) -> list[int]:
             code = _line_code(line, snapshot.document.dialect, name_types, encoding)
             if code is not None:
                 start, length, kind, rest = code
-                data.extend((number - previous_line, start, length, kind, 0))
+                data.extend((number - previous_line, start, length, *_split(kind)))
                 data.extend(rest)
                 previous_line = number
         return data
@@ -81,9 +85,14 @@ def encode(snapshot: Snapshot, within: Span | None = None) -> list[int]:
             tokens = _in_code_units(line.text, tokens, encoding)
         for start, end, kind in tokens:
             delta_start = start - previous_column if number == previous_line else start
-            data.extend((number - previous_line, delta_start, end - start, kind, 0))
+            data.extend((number - previous_line, delta_start, end - start, *_split(kind)))
             previous_line, previous_column = number, start
     return data
+
+
+def _split(kind: int) -> tuple[int, int]:
+    """The LSP's token type and modifier set of a colour."""
+    return kind & 0xFF, kind >> 8
 
 
 _LineCode = tuple[int, int, int, tuple[int, ...]]  # the first token's column, length and type; the others encoded
@@ -104,7 +113,7 @@ def _line_code(line: LexedLine, dialect: Dialect, name_types: _NameTypes, encodi
     if tokens:
         (start, end, kind), encoded, previous = tokens[0], [], tokens[0][0]
         for later, stop, later_kind in tokens[1:]:
-            encoded.extend((0, later - previous, stop - later, later_kind, 0))
+            encoded.extend((0, later - previous, stop - later, *_split(later_kind)))
             previous = later
         code = (start, end - start, kind, tuple(encoded))
     _line_codes.put(key, (code,))
@@ -126,14 +135,19 @@ def _lines(document: Document, within: Span | None) -> Iterable[tuple[int, Physi
 
 class _NameTypes(dict[str, int]):
     """The type of each user name as written, looked up in the symbol table on first sight only (names
-    recur on many lines): a macro, a label (unless also a variable) or a variable."""
+    recur on many lines): a macro, a label (unless also a variable), a v3 keyword or a variable."""
 
     def __init__(self, snapshot: Snapshot) -> None:
         super().__init__()
         symbols = snapshot.model.symbols
         self._macros, self._labels, self._variables = symbols.macros, symbols.labels[snapshot.unit], symbols.variables
-        # Everything the colours of names depend on: the macros, and the labels that are no variable.
-        self.kinds = (frozenset(self._macros), frozenset(self._labels.keys() - self._variables.keys()))
+        self._v4 = snapshot.document.dialect is Dialect.V4
+        # v3 words a DIM makes the user's own variables (rare: only these need a look at the declarations)
+        self._declared = frozenset(
+            name for name, symbol in self._variables.items() if symbol.definitions and is_v3_word(symbol.name)
+        )
+        # Everything the colours of names depend on: the macros, the labels that are no variable, those v3 words.
+        self.kinds = (frozenset(self._macros), frozenset(self._labels.keys() - self._variables.keys()), self._declared)
 
     def __missing__(self, text: str) -> int:
         name = identity(text)
@@ -141,6 +155,8 @@ class _NameTypes(dict[str, int]):
             kind = _TYPE["macro"]
         elif name in self._labels and name not in self._variables:
             kind = _TYPE["function"]
+        elif self._v4 and name not in self._declared and is_v3_word(text):
+            kind = _TYPE["keyword"] | _DEPRECATED
         else:
             kind = _TYPE["variable"]
         self[text] = kind

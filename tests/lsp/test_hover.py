@@ -111,3 +111,23 @@ async def test_event_handler_and_nothing_on_blank(client, tmp_path):
     await open_document(client, uri, text)
     assert "event handler (ONERROR)" in await hover_at(client, uri, text, "#ONERROR", 2)
     assert await hover_at(client, uri, text, "\n\n", 1) is None
+
+
+async def test_a_v3_word_in_v4_code_says_what_it_became(client, tmp_path):
+    # the case: a v4 program whose only v3 word is HMSPEED (HOMESPEED in v4)
+    text = "DEFINE xAxis = 0\nDEFINE zAxis = 2\nHMSPEED[xAxis, zAxis] = 20, 10\nDIM a\na = _servo\n"
+    uri = uri_of(tmp_path / "v3.mnt")
+    await open_document(client, uri, text)
+    old = await hover_at(client, uri, text, "HMSPEED", 2)
+    assert old.startswith("**HMSPEED** is not Mint v4: it is a Mint v3 keyword, replaced by HOMESPEED in v4")
+    assert "- Mint v4: HOMESPEED (renamed)" in old  # the v3 entry, as the v3 dialect shows it
+    assert "In Mint v4, HOMESPEED:" in old
+    constant = await hover_at(client, uri, text, "_servo", 1)
+    assert constant.startswith("**_servo** is not Mint v4: it is a Mint v3 constant; v4 uses _cfSERVO")
+
+
+async def test_a_declared_variable_named_like_a_v3_word_is_the_users(client, tmp_path):
+    text = "DIM gain\ngain = 2\n"
+    uri = uri_of(tmp_path / "gain.mnt")
+    await open_document(client, uri, text)
+    assert (await hover_at(client, uri, text, "gain = ")).startswith("**gain** — variable")

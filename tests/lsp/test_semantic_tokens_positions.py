@@ -17,6 +17,7 @@ from hypothesis import strategies as st
 from lsprotocol import types
 
 from mintlang.diagnostics import Span
+from mintlang.keyworddb import database
 from mintlang.lsp.features.semantic_tokens import TOKEN_TYPES, encode
 from mintlang.lsp.positions import Positions, columns
 from mintlang.lsp.workspace import Analyses, Snapshot
@@ -45,6 +46,9 @@ def reference(snapshot: Snapshot, within: Span | None = None) -> list[tuple[int,
             name = identity(token.text)
             labelled = name in symbols.labels[snapshot.unit] and name not in symbols.variables
             kind = "macro" if name in symbols.macros else "function" if labelled else "variable"
+            declared = name in symbols.variables and symbols.variables[name].definitions
+            if kind == "variable" and not declared and database().lookup_v3(token.text) is not None:
+                kind = "keyword"  # a Mint v3 word left in v4 code
         else:
             kind = {
                 TokenKind.NUMBER: "number",
@@ -109,7 +113,20 @@ def test_columns_in_one_pass_are_those_of_positions(lines, data):
 
 
 BASE = 'DEFINE speed = 10\nDIM a\n#lbl\na = speed\nGOSUB lbl\nPRINT a ; "é"\nRETURN\n'
-TYPED = ["speed", "lbl", "a", "\n", "DEFINE lbl = 2\n", "DIM lbl\n", "DIM speed\n", " ", "é😀", ":"]
+TYPED = [
+    "speed",
+    "lbl",
+    "a",
+    "\n",
+    "DEFINE lbl = 2\n",
+    "DIM lbl\n",
+    "DIM speed\n",
+    " ",
+    "é😀",
+    ":",
+    "GAIN",
+    "DIM gain\n",
+]
 
 
 @given(st.integers(0, len(BASE)), st.integers(0, 4), st.sampled_from(["", *TYPED]), st.sampled_from(ENCODINGS))

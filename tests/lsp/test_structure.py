@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 from lsprotocol import types
 
-from mintlang.lsp.features.semantic_tokens import TOKEN_TYPES
+from mintlang.lsp.features.semantic_tokens import TOKEN_MODIFIERS, TOKEN_TYPES
 from tests.lsp.conftest import corpus, document, open_document, uri_of
 
 pytestmark = pytest.mark.asyncio
@@ -91,6 +91,24 @@ async def test_semantic_tokens(client, tmp_path):
     assert ("_TRUE", "enumMember") in decoded
     assert ("REM note", "comment") in decoded
     assert ('"x"', "string") in decoded
+
+
+async def test_a_v3_word_in_v4_code_is_a_deprecated_keyword_unless_declared(client, tmp_path):
+    # the issue's case: HMSPEED, the v3 name of HOMESPEED, is no variable of the program
+    text = "DEFINE xAxis = 0\nDEFINE zAxis = 2\nHMSPEED[xAxis, zAxis] = 20, 10\nDIM gain\ngain = 2\n"
+    uri = uri_of(tmp_path / "v3.mnt")
+    await open_document(client, uri, text)
+    tokens = await client.text_document_semantic_tokens_full_async(
+        types.SemanticTokensParams(text_document=document(uri))
+    )
+    data, line, column, decoded = list(tokens.data), 0, 0, {}
+    for index in range(0, len(data), 5):
+        delta_line, delta_start, length, kind, modifiers = data[index : index + 5]
+        line += delta_line
+        column = delta_start if delta_line else column + delta_start
+        decoded[text.splitlines()[line][column : column + length]] = (TOKEN_TYPES[kind], modifiers)
+    assert decoded["HMSPEED"] == ("keyword", 1 << TOKEN_MODIFIERS.index("deprecated"))
+    assert decoded["gain"] == ("variable", 0)  # GAIN was v3's KPROP, but the DIM makes it the user's
 
 
 async def test_semantic_tokens_of_a_range_are_those_of_its_lines(client, tmp_path):

@@ -68,6 +68,13 @@ def successor(word: str, controller: ControllerProfile) -> Successor | None:
     return None
 
 
+def is_v3_word(word: str) -> bool:
+    """Whether ``word``, which v4 reads as a user name, is a Mint v3 keyword, abbreviation or constant."""
+    db = database()
+    constant = word.startswith("_") and word.upper() in db.v3_constants
+    return constant or db.rename_of(word) is not None or db.lookup_v3(word) is not None
+
+
 def each_line(scope: LineScope) -> Iterator[Finding]:
     if scope.dialect is not Dialect.V4:
         return

@@ -47,8 +47,7 @@ class AccelAlsoDecel(Rule):
                 continue
             if self._companion(file, accel, after):
                 continue
-            text = f" : {like(accel.keyword.spelling, decel)}{selector_text(file, accel.keyword)} = "
-            yield self.replace(file, Span(accel.span.end, accel.span.end), text + values_text(file, accel))
+            yield self.replace(file, Span(accel.span.end, accel.span.end), f" : {_decel_write(file, accel, decel)}")
         for file, before, statement, _ in context.neighbours():
             decel = _writes(statement, "DECEL") or _writes(statement, "DECELTIME")
             if decel is None or decel.values is None or axiscon:
@@ -60,9 +59,28 @@ class AccelAlsoDecel(Rule):
                 )
 
     def _companion(self, file: FileView, accel: n.KeywordStatement, after: n.Statement | None) -> bool:
-        """Whether ``after``, the statement right after ``accel`` on its line, writes the same axes' DECEL."""
-        decel = _writes(after, self.pairs[accel.keyword.keyword])
-        return decel is not None and _same_axes(file, accel, decel)
+        """Whether ``after``, the statement right after ``accel`` on its line, writes the same axes' DECEL.
+
+        DECELTIME is no v3 keyword, so the v3 reader takes the rule's own ``DECELTIME = 10`` for
+        a variable and ``DECELTIME = 10,20`` for a syntax error: the statement also counts when
+        its text is the write this rule makes (spacing and case aside), or the rule would add
+        one more on every pass."""
+        if after is None:
+            return False
+        decel = self.pairs[accel.keyword.keyword]
+        written = _writes(after, decel)
+        if written is not None and _same_axes(file, accel, written):
+            return True
+        return _normal(file.slice(after.span)) == _normal(_decel_write(file, accel, decel))
+
+
+def _decel_write(file: FileView, accel: n.KeywordStatement, decel: str) -> str:
+    """``decel`` written with the axes and values of ``accel``, in its spelling's case."""
+    return f"{like(accel.keyword.spelling, decel)}{selector_text(file, accel.keyword)} = {values_text(file, accel)}"
+
+
+def _normal(text: str) -> str:
+    return "".join(text.split()).upper()
 
 
 def _accel(statement: n.Statement | None) -> n.KeywordStatement | None:

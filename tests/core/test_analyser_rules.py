@@ -113,19 +113,42 @@ def test_the_dim_goes_into_the_file_of_the_first_use_and_declares_it_for_both() 
     assert not [d for d in mintlang.check_application(program, config=fixed_config).program if d.code == "E3001"]
     # used in the program alone: the DIM goes into the program
     (alone,) = [d for d in mintlang.check_application(program, config="REM set-up\n").program if d.code == "E3001"]
-    assert apply(program, alone.fixes[0].edits) == "PRINT 1\nDIM foo\nPRINT foo\n"
+    assert apply(program, alone.fixes[0].edits) == "DIM foo\nPRINT 1\nPRINT foo\n"
 
 
 def test_a_character_whose_upper_case_is_two_keeps_its_own_code() -> None:
     assert mintlang.check("DIM a\na = 'ß'\nPRINT a\n") == []
 
 
-def test_every_use_of_an_undeclared_variable_offers_the_dim_above_its_first_use() -> None:
+def test_every_use_of_an_undeclared_variable_offers_one_dim_outside_the_loop_that_uses_it() -> None:
     source = "LOOP\n  total = total + 1\nENDL\n"
     diagnostics = [d for d in mintlang.check(source) if d.code == "E3001"]
     assert len(diagnostics) == 2
     fixed = {apply(source, d.fixes[0].edits) for d in diagnostics}
-    assert fixed == {"LOOP\n  DIM total\n  total = total + 1\nENDL\n"}
+    assert fixed == {"DIM total\nLOOP\n  total = total + 1\nENDL\n"}
+
+
+@pytest.mark.parametrize(
+    ("source", "fixed"),
+    [
+        pytest.param(
+            "REM top\nDIM a\nDIM xs(2) = 1,\n  2\nLOOP\n  DIM b : b = a\n  IF b DO\n    x = 1\n  ENDIF\nENDL\n",
+            "REM top\nDIM a\nDIM xs(2) = 1,\n  2\nDIM x\nLOOP\n  DIM b : b = a\n  IF b DO\n    x = 1\n  ENDIF\nENDL\n",
+            id="after-the-last-dim-outside-a-block",
+        ),
+        pytest.param(
+            "REM Program title\n\n  LOOP\n    x = 1\n  ENDL\n",
+            "REM Program title\n\n  DIM x\n  LOOP\n    x = 1\n  ENDL\n",
+            id="above-the-first-statement-below-the-remarks",
+        ),
+        pytest.param("AUTO\nSPEED = 1\nx = 1\n", "AUTO\nDIM x\nSPEED = 1\nx = 1\n", id="auto-stays-first"),
+        pytest.param("x = 1\nDIM a\n", "DIM x\nx = 1\nDIM a\n", id="dims-below-the-use-do-not-count"),
+    ],
+)
+def test_the_dim_goes_with_the_files_other_dims_or_at_the_top(source: str, fixed: str) -> None:
+    declare = next(d for d in mintlang.check(source) if d.code == "E3001").fixes[-1]
+    assert apply(source, declare.edits) == fixed
+    assert not [d for d in mintlang.check(fixed) if d.code == "E3001"]
 
 
 def test_no_second_dim_is_offered_when_the_dim_comes_later() -> None:

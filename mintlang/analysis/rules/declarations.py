@@ -89,22 +89,52 @@ def _written_at(model: SemanticModel, unit: Unit, span: Span) -> str:
 
 
 def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span) -> Fix:
-    """Insert ``DIM name`` on its own line above the statement of the first use.
+    """Insert ``DIM name`` on its own line with the file's other DIMs, else at the top: never inside a loop.
 
-    Above its first physical line: a DIM list continued over lines must stay whole.
+    After the last DIM outside any block above the first use, with its indentation; without one, above
+    the file's first statement (its opening remarks stay first, and an AUTO or PROTECT that opens the
+    file stays first too). A DIM list continued over lines stays whole either way.
     """
     document = model.document(unit)
     index = document.line_index
-    containing = [line for line in document.placed if line.origin + line.syntax.span.start <= span.start]
-    line = containing[-1].number if containing else index.position(span.start).line
-    start = index.line_start(line)
+    using = [line for line in document.placed if line.origin + line.syntax.span.start <= span.start][-1]
+    above = [line for line in document.placed if line.origin < using.origin]
+    nested = _nested_lines(model, unit)
+    dims = [line for line in above if line.number not in nested and _declares(line)]
+    if dims:
+        after = index.position(dims[-1].span(dims[-1].syntax.span).end).line
+        start, indented = index.line_start(after + 1), dims[-1].number
+    else:
+        statements = [line for line in (*above, using) if line.syntax.statements or line.syntax.label is not None]
+        first = statements[1] if _opens_file(statements[0]) and len(statements) > 1 else statements[0]
+        start, indented = index.line_start(first.number), first.number
     text = document.source
-    indent_end = start
+    indent_start = indent_end = index.line_start(indented)
     while indent_end < len(text) and text[indent_end] in " \t":
         indent_end += 1
     newline = "\r\n" if "\r\n" in text else "\n"
-    declaration = f"{text[start:indent_end]}DIM {symbol.name}{newline}"
+    declaration = f"{text[indent_start:indent_end]}DIM {symbol.name}{newline}"
     return Fix(f"Declare '{symbol.name}' with DIM", (Edit(Span(start, start), declaration),))
+
+
+def _nested_lines(model: SemanticModel, unit: Unit) -> set[int]:
+    """The lines inside a block of ``unit`` (between its opener and its closer)."""
+    last = model.document(unit).line_index.position(len(model.document(unit).source)).line
+    return {
+        number
+        for block in model.structures[unit].blocks
+        for number in range(block.opener.line + 1, block.closer.line if block.closer is not None else last + 1)
+    }
+
+
+def _declares(line: n.PlacedLine) -> bool:
+    return any(type(statement) is n.Dim for statement in line.syntax.statements)
+
+
+def _opens_file(line: n.PlacedLine) -> bool:
+    """AUTO or PROTECT, which must be the first command of their file."""
+    first = line.syntax.statements[0] if line.syntax.statements else None
+    return type(first) is n.KeywordStatement and first.keyword.keyword in ("AUTO", "PROTECT")  # type: ignore[union-attr]
 
 
 def _labels(model: SemanticModel) -> Iterator[Finding]:

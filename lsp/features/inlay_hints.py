@@ -1,4 +1,9 @@
-"""Inlay hints: the full name after an abbreviated keyword, the value after a macro use."""
+"""Inlay hints: the full name after an abbreviated keyword, the text after a macro use.
+
+Each hint reads "≡ what it stands for" (``sp ≡ SPEED.0 = fast ≡ 100 * 2``): no
+Mint operator is ``≡``, so a hint cannot be taken for code the way
+``SCALE[xAxis = 0, …]`` or ``sp(SPEED)`` could (an assignment, a call).
+"""
 
 from __future__ import annotations
 
@@ -17,8 +22,17 @@ _KEYWORD_KINDS = GRAMMAR_KEYWORDS | {TokenKind.KEYWORD, TokenKind.FUNCTION}
 _SYMBOL_STATEMENTS = {"?": "PRINT"}  # a statement written as a symbol; operators (&, |, !) read as they are
 
 
-def _hint(snapshot: Snapshot, offset: int, label: str) -> types.InlayHint:
-    return types.InlayHint(position=snapshot.positions.position(offset), label=label, padding_left=True)
+_STANDS_FOR = "≡ "
+
+
+def _hint(snapshot: Snapshot, offset: int, meaning: str, tooltip: str) -> types.InlayHint:
+    return types.InlayHint(
+        position=snapshot.positions.position(offset),
+        label=_STANDS_FOR + meaning,
+        padding_left=True,
+        padding_right=True,
+        tooltip=tooltip,
+    )
 
 
 def hints(snapshot: Snapshot, span: Span) -> Iterator[types.InlayHint]:
@@ -30,19 +44,21 @@ def hints(snapshot: Snapshot, span: Span) -> Iterator[types.InlayHint]:
         if token.start > span.end:
             break
         if token.text in _SYMBOL_STATEMENTS:
-            yield _hint(snapshot, token.end, f"({_SYMBOL_STATEMENTS[token.text]})")
+            name = _SYMBOL_STATEMENTS[token.text]
+            yield _hint(snapshot, token.end, name, f"{token.text} is short for {name}")
             continue
         if token.kind not in _KEYWORD_KINDS or not token.text.isalnum():
             continue
         name = words.keyword_name(token.text)
         spelled = token.text.upper()
         if name is not None and spelled != name and not (words.split_channel(spelled) and spelled.startswith(name)):
-            yield _hint(snapshot, token.end, f"({name})")
+            yield _hint(snapshot, token.end, name, f"{token.text} is the abbreviation of {name}")
     for expansion in document.expansions:
         if span.start <= expansion.span.start <= span.end:
             body = macro_body(snapshot, expansion.macro)
             if body is not None:
-                yield _hint(snapshot, expansion.span.end, "= " + body)
+                written = document.source[expansion.span.start : expansion.span.end]
+                yield _hint(snapshot, expansion.span.end, body, f"macro {written}: DEFINE {written} = {body}")
 
 
 def register(server: MintServer) -> None:

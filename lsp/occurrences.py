@@ -99,7 +99,9 @@ def _mentioned(snapshot: Snapshot, mention: _Mention) -> Symbol | None:
     name = identity(mention.occurrence.spelling)
     if mention.label:
         return table.labels[snapshot.unit].get(name) or table.labels[Unit.PROGRAM].get(name)
-    return table.variables.get(name) or table.macros.get(name)
+    # A macro replaces a variable of its name (3.5); in a macro's text it is the run-time error 2003,
+    # but it still names that macro, not the undeclared variable its expansion records.
+    return table.macros.get(name) or table.variables.get(name)
 
 
 def symbol_at(snapshot: Snapshot, offset: int) -> tuple[Symbol, Occurrence] | None:

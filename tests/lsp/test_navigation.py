@@ -110,3 +110,35 @@ async def test_a_label_definition_is_highlighted_as_written(client, tmp_path):
     )
     kinds = {h.range.start.line: h.kind for h in highlights}
     assert kinds[13] == types.DocumentHighlightKind.Write and kinds[9] == types.DocumentHighlightKind.Read
+
+
+# The manual's macro that names another macro (3.5: "A macro cannot contain the reference to another
+# macro. A syntax error will result at run time"), with a variable and a subroutine in macro texts.
+MACROS = (
+    "DIM speed0 = 5\nDEFINE myMacro = 1\nDEFINE myMove = MOVEA.myMacro = 100 : GO.myMacro\n"
+    "DEFINE go0 = SPEED.0 = speed0 : GOSUB homing\nmyMove\ngo0\nEND\n#homing\nRETURN\n"
+)
+
+
+@pytest.mark.parametrize(
+    ("needle", "shift", "defined"),
+    [
+        ("myMacro = 100", 2, (1, 7)),  # the macro, not the undeclared variable its expansion records
+        ("myMacro\n", 0, (1, 7)),
+        ("speed0 :", 3, (0, 4)),
+        ("homing\nmyMove", 1, (7, 0)),
+    ],
+)
+async def test_definition_inside_the_text_of_a_macro(client, tmp_path, needle, shift, defined):
+    uri = uri_of(tmp_path / "macros.mnt")
+    await open_document(client, uri, MACROS)
+    where = position(MACROS, needle, shift)
+    [found] = await client.text_document_definition_async(
+        types.DefinitionParams(text_document=document(uri), position=where)
+    )
+    assert found.range.start == types.Position(*defined)
+    renamed = await client.text_document_rename_async(
+        types.RenameParams(text_document=document(uri), position=where, new_name="renamed")
+    )
+    edited = {(edit.range.start.line, edit.range.start.character) for edit in renamed.changes[uri]}
+    assert (where.line, MACROS.splitlines()[where.line].index(needle.split()[0])) in edited  # the same token

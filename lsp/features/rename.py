@@ -4,7 +4,10 @@ A new name must lex as a user name of the dialect (not a keyword, constant or
 abbreviation) and must not equal another symbol in its first ten characters,
 which the controller would take for the same name. Event handlers keep their
 names, and no subroutine is renamed into one: the controller calls handlers
-by name.
+by name. A symbol written with two spellings the controller takes for one
+(``thisIsAVariable1``, ``thisIsAVaraible2``) is written one way after the
+rename; the user is told so before anything changes: a change annotation that
+needs confirmation where the client supports them, else a question.
 """
 
 from __future__ import annotations
@@ -74,6 +77,23 @@ def _check_name(snapshot: Snapshot, symbol: Symbol, name: str) -> None:
             )
 
 
+MERGE = "mint.mergeSpellings"
+_GO_ON = "Rename all"
+
+
+def _spellings(occurrences: list[Occurrence]) -> list[str]:
+    """The different spellings of the occurrences (case aside: the controller ignores it), in order."""
+    return list({occurrence.spelling.upper(): occurrence.spelling for occurrence in occurrences}.values())
+
+
+def _merge_note(spellings: list[str], name: str) -> str:
+    quoted = " and ".join(f"'{spelling}'" for spelling in spellings)
+    return (
+        f"{quoted} are one name to the controller (only the first ten characters count): "
+        f"the rename writes them all as '{name}'"
+    )
+
+
 def register(server: MintServer) -> None:
     pygls_log = logging.getLogger("pygls.protocol.json_rpc")
     if not any(isinstance(existing, _RefusalsAreAnswers) for existing in pygls_log.filters):  # once per process
@@ -89,18 +109,52 @@ def register(server: MintServer) -> None:
             range=snapshot.positions.range(_spelling(occurrence)), placeholder=occurrence.spelling
         )
 
+    def annotations_supported() -> bool:
+        edits = server.client_capabilities.workspace and server.client_capabilities.workspace.workspace_edit
+        return bool(edits and edits.document_changes and edits.change_annotation_support)
+
+    def annotated(changes: dict[str, list[types.TextEdit]], note: str) -> types.WorkspaceEdit:
+        """The edits under one annotation that needs the user's confirmation."""
+        documents = []
+        for uri, edits in changes.items():
+            opened = server.workspace.text_documents.get(uri)
+            identifier = types.OptionalVersionedTextDocumentIdentifier(
+                uri=uri, version=opened.version if opened is not None else None
+            )
+            marked = [
+                types.AnnotatedTextEdit(range=edit.range, new_text=edit.new_text, annotation_id=MERGE) for edit in edits
+            ]
+            documents.append(types.TextDocumentEdit(text_document=identifier, edits=marked))
+        annotation = types.ChangeAnnotation(label="Merge spellings", needs_confirmation=True, description=note)
+        return types.WorkspaceEdit(document_changes=documents, change_annotations={MERGE: annotation})
+
     @server.feature(types.TEXT_DOCUMENT_RENAME, types.RenameOptions(prepare_provider=True))
-    def rename(params: types.RenameParams) -> types.WorkspaceEdit | None:
+    async def rename(params: types.RenameParams) -> types.WorkspaceEdit | None:
         snapshot = server.snapshot(params.text_document.uri)
         if snapshot is None:
             return None
         symbol, _ = _target(snapshot, snapshot.positions.offset(params.position))
         name = params.new_name.removeprefix("#") if symbol.kind is SymbolKind.LABEL else params.new_name
         _check_name(snapshot, symbol, name)
+        occurrences = written(snapshot, symbol)
         changes: dict[str, list[types.TextEdit]] = {}
-        for occurrence in written(snapshot, symbol):
+        for occurrence in occurrences:
             file = snapshot.files.get(occurrence.unit)
             if file is not None:
                 edit = types.TextEdit(range=file.positions.range(_spelling(occurrence)), new_text=name)
                 changes.setdefault(file.uri, []).append(edit)
+        spellings = _spellings(occurrences)
+        if len(spellings) < 2:
+            return types.WorkspaceEdit(changes=changes)
+        note = _merge_note(spellings, name)
+        if annotations_supported():
+            return annotated(changes, note)
+        question = types.ShowMessageRequestParams(
+            type=types.MessageType.Warning,
+            message=f"{note}. Rename all?",
+            actions=[types.MessageActionItem(title=_GO_ON), types.MessageActionItem(title="Cancel")],
+        )
+        answer = await server.window_show_message_request_async(question)
+        if answer is None or answer.title != _GO_ON:
+            raise RenameRefused(f"Rename cancelled: {note}")
         return types.WorkspaceEdit(changes=changes)

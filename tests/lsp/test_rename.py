@@ -134,3 +134,69 @@ async def test_a_refused_rename_is_an_answer_not_a_logged_fault(tmp_path):
     client.exit(None)
     await client.stop()
     assert "Traceback" not in log.read_text(encoding="utf-8")
+
+
+# The manual's example of two spellings that are one variable (3.2.5): "DIM thisIsAVariable1 /
+# DIM thisIsAVaraible2 will only define one variable of the name thisIsAVar".
+TWO_SPELLINGS = "DIM thisIsAVariable1\nthisIsAVaraible2 = 5\nPRINT thisIsAVariable1\n"
+
+
+async def test_a_rename_merging_two_spellings_needs_confirmation(client, tmp_path):
+    uri = uri_of(tmp_path / "spellings.mnt")
+    await open_document(client, uri, TWO_SPELLINGS)
+    edit = await client.text_document_rename_async(
+        types.RenameParams(
+            text_document=document(uri), position=position(TWO_SPELLINGS, "PRINT t", 7), new_name="level"
+        )
+    )
+    assert edit.changes is None  # only annotated edits, which the client must have the user confirm
+    [changed] = edit.document_changes
+    assert (changed.text_document.uri, changed.text_document.version) == (uri, 1)
+    assert [(e.range.start.line, e.new_text, e.annotation_id) for e in changed.edits] == [
+        (line, "level", "mint.mergeSpellings") for line in (0, 1, 2)
+    ]
+    annotation = edit.change_annotations["mint.mergeSpellings"]
+    assert annotation.needs_confirmation
+    assert annotation.description.startswith("'thisIsAVariable1' and 'thisIsAVaraible2' are one name")
+
+
+async def test_one_spelling_in_two_cases_is_renamed_without_a_question(client, tmp_path):
+    text = "DIM count\nCOUNT = 1\n"
+    uri = uri_of(tmp_path / "case.mnt")
+    await open_document(client, uri, text)
+    edit = await client.text_document_rename_async(
+        types.RenameParams(text_document=document(uri), position=position(text, "count"), new_name="total")
+    )
+    assert len(edit.changes[uri]) == 2 and edit.change_annotations is None
+
+
+@pytest.mark.parametrize(("answer", "renamed"), [("Rename all", True), ("Cancel", False), (None, False)])
+async def test_a_client_without_annotations_is_asked_first(tmp_path, answer, renamed):
+    client = LanguageClient("asked", "1")
+    questions: list[str] = []
+
+    @client.feature(types.WINDOW_SHOW_MESSAGE_REQUEST)
+    def ask(params: types.ShowMessageRequestParams) -> types.MessageActionItem | None:
+        questions.append(params.message)
+        return types.MessageActionItem(title=answer) if answer else None
+
+    await client.start_io(sys.executable, "-m", "mintlang.lsp")
+    await client.initialize_async(types.InitializeParams(capabilities=types.ClientCapabilities()))
+    uri = uri_of(tmp_path / "spellings.mnt")
+    opened = types.TextDocumentItem(uri=uri, language_id="mint", version=1, text=TWO_SPELLINGS)
+    client.text_document_did_open(types.DidOpenTextDocumentParams(text_document=opened))
+    params = types.RenameParams(
+        text_document=document(uri), position=position(TWO_SPELLINGS, "PRINT t", 7), new_name="level"
+    )
+    try:
+        if renamed:
+            edit = await client.text_document_rename_async(params)
+            assert len(edit.changes[uri]) == 3
+        else:
+            with pytest.raises(JsonRpcException, match="Rename cancelled"):
+                await client.text_document_rename_async(params)
+    finally:
+        await client.shutdown_async(None)
+        client.exit(None)
+        await client.stop()
+    assert len(questions) == 1 and "are one name to the controller" in questions[0]

@@ -1,7 +1,9 @@
 """Arrays: indices known at compile time must lie in 1 .. size, and only arrays
 have elements (error 2016, "Invalid index", 12.4); an array's size and initial
 values are numbers written in its DIM, not expressions (DIM, 000:9167-9171),
-because the compiler reserves and fills the array (2003 otherwise).
+because the compiler reserves and fills the array (2003 otherwise). INPUT reads
+into a variable, never an array element (the FAQ, 000:18430-18435): a syntax
+error, 2003, since its format takes a variable (000:12212).
 """
 
 from __future__ import annotations
@@ -25,8 +27,12 @@ def _is_number(expression: n.Expression) -> bool:
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
-    """Sizes and values of DIM written as expressions."""
+    """Sizes and values of DIM written as expressions; INPUT into an element."""
     for statement in scope.facts.statements:
+        if isinstance(statement, n.Input) and isinstance(statement.target, n.ElementRef):
+            name = statement.target.name.text
+            detail = f"INPUT reads into a variable, not an element of {name}: INPUT into a variable, then copy it"
+            yield Finding(scope.unit, mint_error(2003, statement.target.span, detail))
         if not isinstance(statement, n.Dim) or statement.size is None:
             continue
         if not _is_number(statement.size):

@@ -5,7 +5,8 @@ reading one that is write-only is 2002 (``PRINT ACCELTIME``); naming a
 parameter on its own as a statement is 2005 (``SPEED``); operands after a command
 that takes only axes are 2003 (``STOP following``, a comment missing its REM); editor commands in a
 program are 2006 (``NEW``), but for RELEASE in a configuration file, where the
-manual recommends it; a word that is no keyword of the target controller is 3007.
+manual recommends it, and for the buffer ``RUN`` names (``RUN PROG``, ``RUN CON``,
+000:15723-15733); a word that is no keyword of the target controller is 3007.
 Keywords the manual gives no attribute table are read only when every format
 of theirs reads them (``v = ERR``).
 """
@@ -24,6 +25,7 @@ from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
 _CONFIGURATION_COMMANDS = frozenset({"RELEASE"})  # clears the variables before each run (000:935-939)
+_BUFFERS = frozenset({"PROG", "CON"})  # what RUN runs; at the command line they are editor commands
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
@@ -34,6 +36,8 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if unit is Unit.CONFIGURATION and ref.keyword in _CONFIGURATION_COMMANDS:
             continue
         statement = use.statement
+        if ref.keyword in _BUFFERS and isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "RUN":
+            continue
         has_arguments = isinstance(statement, n.KeywordStatement) and bool(statement.arguments)
         verdict = _verdict(ref.keyword, ref.spelling.upper(), controller, use.use, has_arguments)
         if verdict is not None:

@@ -1,10 +1,21 @@
-"""Formatting: keywords in upper case and block bodies indented; nothing else changes.
+"""Formatting, the house style: upper-case keywords, labels at the margin, blocks indented, no trailing blanks.
 
-Comments (but for their REM), strings, user names and the spacing inside
-lines are left byte for byte; a macro's text is Mint too, so its keywords are
-upper-cased like any others. Indentation follows the core's block matching: the lines
-between an opener and its closer go one level deeper, ELSE sits with its IF,
-labels stay at the margin, and continuation lines of a DIM list keep theirs.
+* Keywords (a comment's REM included, and those in a macro's text, which is Mint
+  too) are written in upper case.
+* A label line starts at column 0, wherever it stands: a label names a place in
+  the program, not a step of a block.
+* Every other line is indented one unit (the editor's tab or spaces) per block
+  that encloses it, by the core's block matching: the lines between an opener
+  and its closer go one level deeper and ELSE sits with its IF. A subroutine's
+  body is not a block and stays at the margin under its label, as in the
+  manual's examples.
+* Spaces and tabs at the end of a line go; a line of blanks becomes empty.
+* Everything else is left byte for byte: comments but for their REM, strings,
+  user names, the spacing inside a line, line ends, and the continuation lines
+  of a DIM list, which keep their indentation.
+
+Formatting twice gives what formatting once gives, and a formatted program parses
+to what it parsed to, whitespace and letter case aside.
 """
 
 from __future__ import annotations
@@ -42,32 +53,26 @@ def _depths(snapshot: Snapshot) -> list[int]:
     return depths
 
 
-def _fixed_lines(snapshot: Snapshot) -> set[int]:
-    """Lines whose indentation is not the formatter's: labels and continuations of logical lines."""
+def _continuations(snapshot: Snapshot) -> set[int]:
+    """The 0-based physical lines that continue a logical line (a DIM list): they keep their indentation."""
     positions = snapshot.positions
-    fixed: set[int] = set()
+    continued: set[int] = set()
     for line in snapshot.document.placed:
-        first, syntax = line.number - 1, line.syntax
-        fixed.update(range(first + 1, positions.position(line.span(syntax.span).end).line + 1))
-        if syntax.label is not None and positions.position(line.span(syntax.label.span).start).line == first:
-            fixed.add(first)
-    return fixed
+        first = line.number - 1
+        continued.update(range(first + 1, positions.position(line.span(line.syntax.span).end).line + 1))
+    return continued
 
 
-def _indentations(snapshot: Snapshot, options: types.FormattingOptions, lines: range) -> dict[int, tuple[int, str]]:
-    """Per 0-based line: the offset where its content starts and the indentation it should have."""
+def _labelled(snapshot: Snapshot) -> set[int]:
+    """The 0-based lines that start with a label."""
+    return {line.number - 1 for line in snapshot.document.placed if line.syntax.label is not None}
+
+
+def _indentations(snapshot: Snapshot, options: types.FormattingOptions, lines: range) -> dict[int, str]:
+    """Per 0-based line with content whose indentation is the formatter's: the indentation it should have."""
     unit = " " * options.tab_size if options.insert_spaces else "\t"
-    source, positions = snapshot.document.source, snapshot.positions
-    depths, fixed = _depths(snapshot), _fixed_lines(snapshot)
-    wanted: dict[int, tuple[int, str]] = {}
-    for line in lines:
-        start = positions.line_start(line)
-        end = start
-        while end < len(source) and source[end] in " \t":
-            end += 1
-        if line not in fixed and end < len(source) and source[end] not in "\r\n":  # blank lines keep theirs
-            wanted[line] = (end, unit * depths[line])
-    return wanted
+    depths, continued, labelled = _depths(snapshot), _continuations(snapshot), _labelled(snapshot)
+    return {line: "" if line in labelled else unit * depths[line] for line in lines if line not in continued}
 
 
 def _keywords(snapshot: Snapshot, lines: range) -> dict[int, list[Span]]:
@@ -90,25 +95,54 @@ def _keywords(snapshot: Snapshot, lines: range) -> dict[int, list[Span]]:
 
 
 def format_lines(snapshot: Snapshot, options: types.FormattingOptions, lines: range) -> list[types.TextEdit]:
-    """One edit per changed line, from its start to its last change, so edits never overlap."""
+    """One edit per changed line, from its first to its last change, so edits never overlap."""
     if snapshot.skipped is not None:
         return []
     source, positions = snapshot.document.source, snapshot.positions
     indentations, keywords = _indentations(snapshot, options, lines), _keywords(snapshot, lines)
     edits = []
-    for line in sorted(indentations.keys() | keywords.keys()):
+    for line in lines:
         start = positions.line_start(line)
-        cursor, pieces = (indentations[line][0], [indentations[line][1]]) if line in indentations else (start, [])
-        spans = keywords.get(line, [])
-        end = max([cursor, *(span.end for span in spans)])
-        for span in spans:
-            pieces += [source[cursor : span.start], source[span.start : span.end].upper()]
-            cursor = span.end
-        pieces.append(source[cursor:end])
-        new_text = "".join(pieces)
-        if new_text != source[start:end]:
-            edits.append(types.TextEdit(range=positions.range(Span(start, end)), new_text=new_text))
+        end = _content_end(source, start)
+        old = source[start:end]
+        new = _formatted(source, start, end, indentations.get(line), keywords.get(line, []))
+        if new != old:
+            head, tail = _shared(old, new)
+            changed = Span(start + head, end - tail)
+            edits.append(types.TextEdit(range=positions.range(changed), new_text=new[head : len(new) - tail]))
     return edits
+
+
+def _shared(old: str, new: str) -> tuple[int, int]:
+    """How many leading, then trailing, characters two texts have in common (without overlap)."""
+    limit = min(len(old), len(new))
+    head = 0
+    while head < limit and old[head] == new[head]:
+        head += 1
+    tail = 0
+    while tail < limit - head and old[-1 - tail] == new[-1 - tail]:
+        tail += 1
+    return head, tail
+
+
+def _content_end(source: str, start: int) -> int:
+    """Where the line starting at ``start`` ends, before its line break."""
+    breaks = [found for found in (source.find("\r", start), source.find("\n", start)) if found >= 0]
+    return min(breaks, default=len(source))
+
+
+def _formatted(source: str, start: int, end: int, indentation: str | None, keywords: list[Span]) -> str:
+    """The line ``source[start:end]`` in the house style; ``indentation`` None keeps the line's own."""
+    content = start
+    while content < end and source[content] in " \t":
+        content += 1
+    pieces = [source[start:content] if indentation is None else indentation]
+    cursor = content
+    for span in keywords:
+        pieces += [source[cursor : span.start], source[span.start : span.end].upper()]
+        cursor = span.end
+    pieces.append(source[cursor:end])
+    return "".join(pieces).rstrip(" \t")
 
 
 def register(server: MintServer) -> None:

@@ -114,3 +114,15 @@ async def test_keywords_in_the_text_of_a_macro_are_upper_cased_too(client, tmp_p
         types.DocumentFormattingParams(text_document=document(uri), options=SPACES)
     )
     assert apply(text, edits) == 'DEFINE m = PRINT 1 : PRINT "a"\n'
+
+
+async def test_an_indented_label_goes_to_the_margin_with_its_body_and_trailing_blanks_go(client, tmp_path):
+    # the case: the body went to column 0 and its label stayed indented, trailing spaces kept
+    text = "DIM a \nGOSUB init\nEND\n  #init  \n  a = 10\t\n  loop : #inner\n   \n  endl\n  return   \n"
+    uri = uri_of(tmp_path / "labels.mnt")
+    await open_document(client, uri, text)
+    edits = await client.text_document_formatting_async(
+        types.DocumentFormattingParams(text_document=document(uri), options=SPACES)
+    )
+    assert apply(text, edits) == "DIM a\nGOSUB init\nEND\n#init\na = 10\nLOOP : #inner\n\nENDL\nRETURN\n"
+    assert all(edit.range.start.line == edit.range.end.line for edit in edits)  # one edit per changed line

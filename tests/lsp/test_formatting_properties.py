@@ -1,0 +1,97 @@
+"""The formatter's two promises, on generated programs and on every program of the corpus: formatting
+twice gives what formatting once gives, and a formatted program parses to what it parsed to, whitespace
+and letter case aside (the controller reads neither)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+from lsprotocol import types
+
+from mintlang.diagnostics import Span
+from mintlang.dialect import Dialect
+from mintlang.lsp.features.formatting import format_lines
+from mintlang.lsp.positions import Positions
+from mintlang.lsp.workspace import Analyses, Settings, Snapshot
+
+CORPUS = Path(__file__).parents[1] / "corpus"
+PROGRAMS = sorted(path for path in CORPUS.rglob("*") if path.suffix in (".mnt", ".cfg"))
+OPTIONS = [types.FormattingOptions(tab_size=2, insert_spaces=True), types.FormattingOptions(4, insert_spaces=False)]
+
+
+def snapshot_of(text: str, dialect: Dialect = Dialect.V4) -> Snapshot:
+    return Analyses(read=lambda uri: None, settings=Settings(dialect=dialect)).snapshot("file:///p.mnt", text, 1)
+
+
+def formatted(text: str, options: types.FormattingOptions, dialect: Dialect = Dialect.V4) -> str:
+    snapshot = snapshot_of(text, dialect)
+    positions = Positions(text)
+    edits = format_lines(snapshot, options, range(positions.line_count))
+    assert len({edit.range.start.line for edit in edits}) == len(edits)  # one edit per line: they never overlap
+    assert all(edit.range.start.line == edit.range.end.line for edit in edits)
+    for span, new in sorted(((positions.span(edit.range), edit.new_text) for edit in edits), reverse=True):
+        text = text[: span.start] + new + text[span.end :]
+    return text
+
+
+def shape(value: object) -> object:
+    """A syntax tree without its places and letter case: what the controller runs."""
+    if isinstance(value, Span):
+        return None
+    fields = getattr(type(value), "__dataclass_fields__", None)
+    if fields is not None:
+        return (
+            type(value).__name__,
+            *(shape(getattr(value, name)) for name in fields if name != "text" or _named(value)),
+        )
+    if isinstance(value, tuple):
+        return tuple(shape(item) for item in value)
+    return value.upper() if isinstance(value, str) else value
+
+
+def _named(value: object) -> bool:
+    """A node whose ``text`` is a name or a literal (a line's ``text`` is its raw source)."""
+    return type(value).__name__ != "LineSyntax"
+
+
+def parsed(text: str, dialect: Dialect = Dialect.V4) -> object:
+    document = snapshot_of(text, dialect).document
+    return [shape(line.syntax) for line in document.placed], shape(document.definitions)
+
+
+STATEMENTS = [
+    "DIM a", "dim b = 2", "#main", "#sub : print a", "loop", "endl", "for i = 1 to 10", "next", "if a > 1 do",
+    "else", "endif", "while a < 3", "endw", "repeat", "until a", "a = a + 1", 'print "x  ", a', "rem note  ",
+    "gosub main", "return", "end", "DIM xs(3) = 1,", "2, 3", "define fast = speed.0 = 10", "speed.0 = fast", "",
+    ": ", 'IF a THEN PRINT "t" : goto main', "exit", "sp[0,1] = 10;", "  REM   spaced    out", "#ONERROR", "&",
+]  # fmt: skip
+LINES = st.tuples(
+    st.sampled_from(["", " ", "  ", "\t", " \t "]),
+    st.sampled_from(STATEMENTS),
+    st.sampled_from([str, str.lower, str.upper]),
+    st.sampled_from(["", " ", "\t", "   "]),
+    st.sampled_from(["\n", "\r\n"]),
+)
+
+
+@given(st.lists(LINES, max_size=14), st.sampled_from(OPTIONS))
+def test_formatting_twice_is_formatting_once_and_keeps_the_program(lines, options):
+    text = "".join(indent + case(statement) + trailing + end for indent, statement, case, trailing, end in lines)
+    once = formatted(text, options)
+    assert formatted(once, options) == once
+    assert parsed(once) == parsed(text)
+    assert all(line == line.rstrip(" \t") for line in once.splitlines())  # no trailing blanks
+    labelled = [line.number for line in snapshot_of(once).document.placed if line.syntax.label is not None]
+    assert all(once.splitlines()[number - 1].startswith("#") for number in labelled)  # labels at the margin
+
+
+@pytest.mark.parametrize("path", PROGRAMS, ids=lambda path: str(path.relative_to(CORPUS)))
+def test_every_corpus_program_formats_stably_and_keeps_its_parse(path):
+    text = path.read_text(encoding="utf-8", errors="replace")
+    dialect = Dialect.V3 if "v3" in path.relative_to(CORPUS).parts else Dialect.V4
+    once = formatted(text, OPTIONS[0], dialect)
+    assert formatted(once, OPTIONS[0], dialect) == once
+    assert parsed(once, dialect) == parsed(text, dialect)

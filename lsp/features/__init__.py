@@ -1,6 +1,7 @@
 """One module per LSP feature; each exposes ``register(server)``."""
 
 from mintlang.lsp.features import (
+    call_hierarchy,
     code_actions,
     completion,
     diagnostics,
@@ -32,4 +33,5 @@ FEATURES = (
     code_actions,
     inlay_hints,
     simulator,
+    call_hierarchy,
 )

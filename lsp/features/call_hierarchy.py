@@ -1,0 +1,154 @@
+"""Call hierarchy: who jumps to a subroutine, and where a subroutine or the main program jumps to.
+
+The parts of a file call one another: the main program (from the top to the
+first label) and each labelled section (from its label to the next, as in the
+outline). A GOSUB or a GOTO is a call from the part it stands in to the label
+it names; one written in a macro's text calls from where the macro is used,
+where it runs. Event handlers have no caller in the program: the controller
+calls them, which their detail says. Labels are per file, so the hierarchy
+stays in the file it starts from.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from lsprotocol import types
+
+from mintlang.diagnostics import Span
+from mintlang.lsp.features.symbols import sections
+from mintlang.lsp.occurrences import symbol_at
+from mintlang.lsp.server import MintServer
+from mintlang.lsp.workspace import Snapshot
+from mintlang.semantic.events import event_of
+from mintlang.semantic.symbols import Symbol, SymbolKind
+from mintlang.syntax import nodes as n
+
+MAIN = "main program"
+
+
+@dataclass(frozen=True, slots=True)
+class Part:
+    """The main program (``label`` None) or a labelled section: offsets from its first line to the next part's."""
+
+    label: Symbol | None
+    start: int
+    end: int
+
+    @property
+    def key(self) -> str | None:
+        """What names the part in an item's data: its label's identity."""
+        return self.label.identity if self.label is not None else None
+
+
+@dataclass(frozen=True, slots=True)
+class Jump:
+    word: str  # GOSUB or GOTO
+    target: str  # the label's identity
+    span: Span  # the label's name, or the macro use whose text holds the jump
+
+
+def parts(snapshot: Snapshot) -> list[Part]:
+    """The parts of the snapshot's file in order; the main program only when something comes before a label."""
+    positions = snapshot.positions
+    labelled = sections(snapshot)
+    starts = [positions.line_start(section.first_line) for section in labelled]
+    ends = [*starts[1:], len(snapshot.document.source)] if starts else []
+    found = [Part(section.symbol, start, end) for section, start, end in zip(labelled, starts, ends, strict=True)]
+    top = starts[0] if starts else len(snapshot.document.source)
+    return [Part(None, 0, top), *found] if top > 0 or not found else found
+
+
+def jumps(snapshot: Snapshot) -> Iterator[Jump]:
+    """Every GOSUB and GOTO of the snapshot's file, in order."""
+    for unit, line, facts in snapshot.model.lines:
+        if unit is snapshot.unit and n.Jump in facts.kinds:
+            for statement in facts.statements:
+                if type(statement) is n.Jump:
+                    yield Jump(statement.word, statement.label.identity, line.span(statement.label.span))
+
+
+def _containing(found: list[Part], offset: int) -> Part | None:
+    return next((part for part in found if part.start <= offset < part.end), found[-1] if found else None)
+
+
+def item(snapshot: Snapshot, part: Part) -> types.CallHierarchyItem:
+    positions = snapshot.positions
+    whole = positions.range(Span(part.start, part.end))
+    data = {"uri": snapshot.uri, "label": part.key}
+    if part.label is None:
+        top = positions.range(Span(0, 0))
+        return types.CallHierarchyItem(MAIN, types.SymbolKind.Module, snapshot.uri, whole, top, data=data)
+    event = event_of(part.label.name, snapshot.settings.dialect)
+    kind = types.SymbolKind.Event if event is not None else types.SymbolKind.Function
+    detail = "event handler: the controller calls it" if event is not None else "subroutine"
+    selection = positions.range(part.label.definitions[0].span)
+    name = f"#{part.label.name}"
+    return types.CallHierarchyItem(name, kind, snapshot.uri, whole, selection, detail=detail, data=data)
+
+
+def prepare(snapshot: Snapshot, offset: int) -> list[types.CallHierarchyItem]:
+    """The label named at ``offset`` (a definition, GOSUB or GOTO), else the part the cursor is in."""
+    found = parts(snapshot)
+    named = symbol_at(snapshot, offset)
+    if named is not None and named[0].kind is SymbolKind.LABEL:
+        labelled = [part for part in found if part.key == named[0].identity]
+        return [item(snapshot, part) for part in labelled]  # none for a label that is never defined
+    part = _containing(found, offset)
+    return [item(snapshot, part)] if part is not None else []
+
+
+def incoming(snapshot: Snapshot, key: str | None) -> list[types.CallHierarchyIncomingCall]:
+    """The parts that jump to the label ``key``, each with the places of its jumps."""
+    found = parts(snapshot)
+    callers: dict[int, list[types.Range]] = {}
+    for jump in jumps(snapshot):
+        caller = _containing(found, jump.span.start)
+        if jump.target == key and caller is not None:
+            callers.setdefault(found.index(caller), []).append(snapshot.positions.range(jump.span))
+    return [
+        types.CallHierarchyIncomingCall(from_=item(snapshot, found[index]), from_ranges=ranges)
+        for index, ranges in sorted(callers.items())
+    ]
+
+
+def outgoing(snapshot: Snapshot, key: str | None) -> list[types.CallHierarchyOutgoingCall]:
+    """The labels the part ``key`` jumps to, each with the places of its jumps, in the order first jumped to."""
+    found = parts(snapshot)
+    part = next((candidate for candidate in found if candidate.key == key), None)
+    targets = {candidate.key: candidate for candidate in found if candidate.label is not None}
+    called: dict[str, list[types.Range]] = {}
+    for jump in jumps(snapshot):
+        if part is not None and part.start <= jump.span.start < part.end and jump.target in targets:
+            called.setdefault(jump.target, []).append(snapshot.positions.range(jump.span))
+    return [
+        types.CallHierarchyOutgoingCall(to=item(snapshot, targets[target]), from_ranges=ranges)
+        for target, ranges in called.items()
+    ]
+
+
+def register(server: MintServer) -> None:
+    def origin(call_item: types.CallHierarchyItem) -> tuple[Snapshot, str | None] | None:
+        """The analysis of the item's file and the label that names its part (None: the main program)."""
+        data = call_item.data if isinstance(call_item.data, dict) else {}
+        snapshot = server.snapshot(str(data.get("uri", call_item.uri)))
+        label = data.get("label")
+        return (snapshot, label if isinstance(label, str) else None) if snapshot is not None else None
+
+    @server.feature(types.TEXT_DOCUMENT_PREPARE_CALL_HIERARCHY)
+    def prepare_call_hierarchy(params: types.CallHierarchyPrepareParams) -> list[types.CallHierarchyItem] | None:
+        snapshot = server.snapshot(params.text_document.uri)
+        if snapshot is None or snapshot.skipped is not None:
+            return None
+        return prepare(snapshot, snapshot.positions.offset(params.position)) or None
+
+    @server.feature(types.CALL_HIERARCHY_INCOMING_CALLS)
+    def incoming_calls(params: types.CallHierarchyIncomingCallsParams) -> list[types.CallHierarchyIncomingCall]:
+        found = origin(params.item)
+        return incoming(*found) if found is not None else []
+
+    @server.feature(types.CALL_HIERARCHY_OUTGOING_CALLS)
+    def outgoing_calls(params: types.CallHierarchyOutgoingCallsParams) -> list[types.CallHierarchyOutgoingCall]:
+        found = origin(params.item)
+        return outgoing(*found) if found is not None else []

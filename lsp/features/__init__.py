@@ -10,6 +10,7 @@ from mintlang.lsp.features import (
     hover,
     inlay_hints,
     navigation,
+    reference_lenses,
     rename,
     semantic_tokens,
     settings,
@@ -34,4 +35,5 @@ FEATURES = (
     inlay_hints,
     simulator,
     call_hierarchy,
+    reference_lenses,
 )

@@ -32,7 +32,8 @@ LIMITS = Limits(until_ms=600_000, max_wall_s=20.0)  # ten simulated minutes, at 
 
 
 def lenses(server: MintServer, uri: str) -> list[types.CodeLens]:
-    """One lens on the first line of a Mint v4 program (configuration files run with their program)."""
+    """One lens on the first line of a Mint v4 program (configuration files run with their program); the
+    code lens method is ``reference_lenses``', which shows this lens with the reference counts."""
     snapshot = server.snapshot(uri)
     if snapshot is None or snapshot.unit is Unit.CONFIGURATION or snapshot.skipped:
         return []
@@ -51,10 +52,6 @@ def summary(result: RunResult) -> str:
 
 
 def register(server: MintServer) -> None:
-    @server.feature(types.TEXT_DOCUMENT_CODE_LENS)
-    def code_lens(params: types.CodeLensParams) -> list[types.CodeLens]:
-        return lenses(server, params.text_document.uri)
-
     @server.command(SIMULATE)
     async def simulate(ls: MintServer, uri: str) -> dict[str, Any] | None:
         settings = ls.analyses.settings

@@ -8,8 +8,10 @@ ignored, so one misplaced closer gives one error. A block still open at the
 end of the file is the same mismatch seen from the other side, and the
 compiler traps it too (section 8.4, "a mismatch loop construct will be
 trapped"); the manual numbers only the closers, so it gets its construct's
-number: a FOR without NEXT is 2009, an IF .. DO without ENDIF 2011. The
-nesting limits of section 3.9 give error 2015.
+number: a FOR without NEXT is 2009, an IF .. DO without ENDIF 2011. An ELSE
+or ENDIF without IF .. DO that follows an ``IF .. THEN`` with nothing after
+its THEN is offered the fix of writing DO: that IF was meant as the block.
+The nesting limits of section 3.9 give error 2015.
 """
 
 from __future__ import annotations
@@ -21,7 +23,7 @@ from typing import NamedTuple
 
 from mintlang.codes import mint_error
 from mintlang.controllers import ControllerProfile, NestingLimits
-from mintlang.diagnostics import Diagnostic, Span
+from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.semantic.index import LineFacts
 from mintlang.syntax import nodes as n
 
@@ -48,7 +50,7 @@ _CLOSING = {  # the word that closes each kind of block, and the number of the c
     BlockKind.LOOP: ("ENDL", 2014),
 }
 LOOPS = frozenset({BlockKind.FOR, BlockKind.REPEAT, BlockKind.WHILE, BlockKind.LOOP})
-_BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.For, n.While, n.Until, n.SyntaxError_})
+_BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.IfThen, n.For, n.While, n.Until, n.SyntaxError_})
 
 
 class Place(NamedTuple):
@@ -119,12 +121,17 @@ class _Matcher:
         self.open = {BlockKind.IF: 0, BlockKind.FOR: 0, BlockKind.REPEAT: 0, BlockKind.WHILE: 0, BlockKind.LOOP: 0}
         self.blocks: list[Block] = []
         self.diagnostics: list[Diagnostic] = []
+        self.bare_then: tuple[int, Fix] | None = None  # the last IF .. THEN with nothing after THEN: depth, fix
 
     def statement(self, statement: n.Statement, line: n.PlacedLine, index: int) -> None:
         """One statement of ``_BLOCK_STATEMENTS``, the ``index``-th of its line."""
         kind = _opener_kind(statement)
         place = Place(line.number, index)
-        if kind is not None:
+        if type(statement) is n.IfThen:
+            then = _then_written(statement, line) if not statement.body else None  # type: ignore[union-attr]
+            if then is not None:
+                self.bare_then = (len(self.stack), Fix("Change THEN to DO", (Edit(then, "DO"),)))
+        elif kind is not None:
             broken = type(statement) is n.SyntaxError_
             self.stack.append(_Open(kind, place, line.span(statement.span), reported=broken))
             self.open[kind] += 1
@@ -139,12 +146,18 @@ class _Matcher:
         elif isinstance(statement, n.BlockWord) and statement.word == "ELSE":
             top = self.stack[-1] if self.stack else None
             if top is None or top.kind is not BlockKind.IF or top.middle is not None:
-                self.diagnostics.append(_error(2011, line.span(statement.span), "ELSE without IF .. DO"))
+                self.diagnostics.append(
+                    _error(2011, line.span(statement.span), "ELSE without IF .. DO", fixes=self._do())
+                )
             else:
                 top.middle = place
         elif isinstance(statement, n.BlockWord) and statement.word in _CLOSERS:
             expected, code, message = _CLOSERS[statement.word]
             self.close(expected, place, line.span(statement.span), code, message)
+
+    def _do(self) -> tuple[Fix, ...]:
+        """Writing DO for the THEN of the last bare IF .. THEN at the depth a stray ELSE or ENDIF stands at."""
+        return (self.bare_then[1],) if self.bare_then is not None and self.bare_then[0] == len(self.stack) else ()
 
     def close(self, kind: BlockKind, closer: Place, span: Span, code: int, message: str) -> None:
         stack = self.stack
@@ -153,7 +166,8 @@ class _Matcher:
                 message += f" (the innermost open block is {stack[-1].kind.value} on line {stack[-1].opener.line})"
             for opened in stack:  # the compiler stops here: what it had open is not reported again
                 opened.reported = True
-            self.diagnostics.append(_error(code, span, message))
+            fixes = self._do() if kind is BlockKind.IF else ()
+            self.diagnostics.append(_error(code, span, message, fixes=fixes))
             return
         top = stack.pop()
         self.open[kind] -= 1
@@ -169,6 +183,15 @@ class _Matcher:
             self.diagnostics.append(_error(code, unclosed.span, detail))
         self.blocks.sort(key=lambda block: block.opener)
         return Structure(tuple(self.blocks), tuple(self.diagnostics))
+
+
+def _then_written(statement: n.IfThen, line: n.PlacedLine) -> Span | None:
+    """Where the THEN of ``statement`` is written in its file (not from a macro's text)."""
+    text = line.syntax.text
+    start = statement.condition.span.end
+    while start < len(text) and text[start] in " \t":
+        start += 1
+    return line.span(Span(start, start + 4)) if text[start : start + 4].upper() == "THEN" else None
 
 
 def match_blocks(lines: Iterable[tuple[n.PlacedLine, LineFacts]], controller: ControllerProfile) -> Structure:

@@ -29,7 +29,7 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     if model.program.dialect is Dialect.V4:
         yield from _undeclared_variables(model)
-    yield from _labels(model)
+    yield from _labels(model, _jump_words(facts))
     yield from _macros(model)
 
 
@@ -137,8 +137,17 @@ def _opens_file(line: n.PlacedLine) -> bool:
     return type(first) is n.KeywordStatement and first.keyword.keyword in ("AUTO", "PROTECT")  # type: ignore[union-attr]
 
 
-def _labels(model: SemanticModel) -> Iterator[Finding]:
+def _jump_words(facts: Facts) -> dict[tuple[Unit, Span], str]:
+    """GOSUB or GOTO, by the file and span of the label each names."""
+    return {
+        (unit, line.span(statement.label.span)): statement.word  # type: ignore[union-attr]
+        for unit, line, statement in facts.statements(n.Jump)
+    }
+
+
+def _labels(model: SemanticModel, jumps: dict[tuple[Unit, Span], str]) -> Iterator[Finding]:
     for unit, table in model.symbols.labels.items():
+        defined = [symbol.name for symbol in table.values() if symbol.definitions]
         for symbol in table.values():
             first = symbol.definitions[0].spelling if symbol.definitions else ""
             for duplicate in symbol.definitions[1:]:
@@ -148,7 +157,28 @@ def _labels(model: SemanticModel) -> Iterator[Finding]:
                 for reference in symbol.references:
                     elsewhere = _defined_in_other_file(model, unit, symbol)
                     detail = f"no label #{reference.spelling} in this file" + elsewhere
-                    yield Finding(unit, mint_error(3004, reference.span, detail))
+                    fixes = _label_fixes(model, unit, reference, defined, jumps.get((unit, reference.span)))
+                    yield Finding(unit, mint_error(3004, reference.span, detail, fixes=fixes))
+
+
+def _label_fixes(
+    model: SemanticModel, unit: Unit, reference: Occurrence, defined: list[str], word: str | None
+) -> tuple[Fix, ...]:
+    """The label it resembles, where the name is written here (not in a macro's text); and the label made,
+    at the end of the file: a subroutine that returns for a GOSUB, a bare label for a GOTO."""
+    fixes: list[Fix] = []
+    by_case = {name.upper(): name for name in defined}
+    close = get_close_matches(reference.spelling.upper(), list(by_case), n=1, cutoff=0.7)
+    if close and _written_at(model, unit, reference.span) == reference.spelling:
+        fixes.append(Fix(f"Change to #{by_case[close[0]]}", (Edit(reference.span, by_case[close[0]]),)))
+    text = model.document(unit).source
+    newline = "\r\n" if "\r\n" in text else "\n"
+    body = f"{newline}RETURN" if word == "GOSUB" else ""
+    head = newline if text.endswith(("\n", "\r")) else newline * 2 if text else ""
+    label = f"{head}#{reference.spelling}{body}{newline}"
+    kind = "subroutine" if word == "GOSUB" else "label"
+    fixes.append(Fix(f"Create {kind} #{reference.spelling}", (Edit(Span(len(text), len(text)), label),)))
+    return tuple(fixes)
 
 
 def _defined_in_other_file(model: SemanticModel, unit: Unit, symbol: Symbol) -> str:

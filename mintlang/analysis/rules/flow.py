@@ -3,6 +3,8 @@
 * Statements after END, RETURN, GOTO or EXIT that nothing can reach (W106).
   A lone END or RETURN right after an endless main loop is the manual's own
   program structure (line 279: "#main / LOOP .. ENDL / RETURN") and is not reported.
+  The fix removes the whole unreachable run, blocks opened in it with their
+  closers, and nothing that a block opened before it needs.
 * Main program code that runs on into the first subroutine without END:
   its RETURN then fails with error 2010 (the manual's own example, 12.4).
   Reported at that RETURN as a warning: the file may be a fragment.
@@ -21,12 +23,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import Facts
-from mintlang.diagnostics import Diagnostic, Severity, Span
-from mintlang.dialect import Dialect
+from mintlang.diagnostics import Diagnostic, Edit, Fix, Severity, Span
 from mintlang.semantic.blocks import Block
 from mintlang.semantic.constants import constant_value
 from mintlang.semantic.events import event_of
@@ -59,7 +60,7 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     for unit, document in model.documents():
         lines = [(line, indexed) for file, line, indexed in facts.lines if file is unit]
-        yield from _Flow(unit, document.dialect, subroutines(unit, model, facts)).findings(lines)
+        yield from _Flow(unit, document, subroutines(unit, model, facts)).findings(lines)
         yield from _jumps_out_of_blocks(unit, document, model, facts)
 
 
@@ -75,6 +76,71 @@ def subroutines(unit: Unit, model: SemanticModel, facts: Facts) -> frozenset[str
         for identity, symbol in model.symbols.labels[unit].items()
         if identity in gosubs or not symbol.references or event_of(symbol.name, model.program.dialect) is not None
     )
+
+
+_OPENERS = frozenset({n.IfDo, n.For, n.While})
+_OPENING_WORDS = frozenset({"LOOP", "REPEAT"})
+_CLOSING_WORDS = frozenset({"ENDIF", "NEXT", "ENDW", "ENDL", "ELSE"})  # ELSE closes its IF's first branch
+
+
+def _nesting(statement: n.Statement) -> int:
+    """+1 for a statement that opens a block, -1 for one that closes a branch or a block, else 0."""
+    kind = type(statement)
+    if kind in _OPENERS or (kind is n.BlockWord and statement.word in _OPENING_WORDS):  # type: ignore[union-attr]
+        return 1
+    if kind is n.Until or (kind is n.BlockWord and statement.word in _CLOSING_WORDS):  # type: ignore[union-attr]
+        return -1
+    if kind is n.SyntaxError_:
+        return 1 if statement.opens else -1 if statement.closes else 0  # type: ignore[union-attr]
+    return 0
+
+
+def _is_else(statement: n.Statement) -> bool:
+    return type(statement) is n.BlockWord and statement.word == "ELSE"  # type: ignore[union-attr]
+
+
+@dataclass(slots=True)
+class _DeadRun:
+    """Statements that can never run, from a W106 on: what its fix removes.
+
+    Blocks opened in the run are taken whole, with their closers (an ELSE
+    stays with its IF); a closer of a block opened before the run ends it,
+    and so does a statement that runs outside the run's blocks.
+    """
+
+    finding: int  # the index of its W106 among the flow's findings
+    start: int
+    end: int
+    depth: int = 0  # blocks opened in the run and not yet closed
+
+    def take(self, statement: n.Statement, span: Span, runs: bool) -> bool:
+        """Whether ``statement`` (at ``span`` in the file) belongs to the run; the run grows by it if so."""
+        nesting = _nesting(statement)
+        if self.depth == 0 and (runs or nesting < 0):
+            return False
+        if nesting > 0:
+            self.depth += 1
+        elif nesting < 0 and not _is_else(statement):
+            self.depth -= 1
+        self.end = span.end
+        return True
+
+
+_BLANKS = " \t"
+
+
+def _removal(source: str, start: int, end: int) -> Edit:
+    """Remove ``source[start:end]``: whole lines when nothing else is on them, else with the ``:`` that
+    separates it from the statements kept."""
+    line_start = max(source.rfind("\n", 0, start), source.rfind("\r", 0, start)) + 1
+    after = len(source) - len(source[end:].lstrip(_BLANKS))  # what follows on the last line
+    if not source[line_start:start].strip(_BLANKS) and source[after : after + 1] in ("", "\r", "\n"):
+        line_end = after + (2 if source.startswith("\r\n", after) else 1 if after < len(source) else 0)
+        return Edit(Span(line_start, line_end), "")  # whole lines, with their line breaks
+    if source[after : after + 1] == ":":  # statements kept after it: the separator goes with the run
+        return Edit(Span(start, len(source) - len(source[after + 1 :].lstrip(_BLANKS))), "")
+    before = len(source[:start].rstrip(_BLANKS))  # statements kept before it, then ":"
+    return Edit(Span(len(source[: before - 1].rstrip(_BLANKS)), end), "")
 
 
 @dataclass(slots=True)
@@ -94,9 +160,11 @@ class _If:
 class _Flow:
     """Follows one file top to bottom, as the controller runs it when nothing jumps."""
 
-    def __init__(self, unit: Unit, dialect: Dialect, subroutines: frozenset[str]) -> None:
+    def __init__(self, unit: Unit, document: Document, subroutines: frozenset[str]) -> None:
         self.unit = unit
-        self.dialect = dialect
+        self.source = document.source
+        self.dialect = document.dialect
+        self.dead: _DeadRun | None = None
         self.subroutines = subroutines
         self.reachable = True
         self.reported = False  # one W106 per unreachable run
@@ -114,13 +182,28 @@ class _Flow:
             self.line = line
             syntax = line.syntax
             if syntax.label is not None:
+                self._end_dead_run()
                 self._entry(syntax.label)
-            if self.reachable and facts.kinds.isdisjoint(_FLOW_STATEMENTS):
+            if self.reachable and facts.kinds.isdisjoint(_FLOW_STATEMENTS) and self.dead is None:
                 self.reported, self.running, self.after_endless_loop = False, True, False  # ran, and goes on
                 continue
             for statement in syntax.statements:
                 self._statement(statement)
+        self._end_dead_run()
         return self.found
+
+    def _end_dead_run(self) -> None:
+        """Give the run's W106 its fix; none when a label or the end of the file comes inside a block it opened."""
+        dead, self.dead = self.dead, None
+        if dead is not None and dead.depth == 0 and dead.end > dead.start:
+            finding = self.found[dead.finding]
+            fix = Fix("Remove unreachable code", (_removal(self.source, dead.start, dead.end),))
+            self.found[dead.finding] = Finding(finding.unit, replace(finding.diagnostic, fixes=(fix,)))
+
+    def _dead(self, statement: n.Statement) -> None:
+        """Grow the open dead run by ``statement``, whose reachability is now known, or end it."""
+        if self.dead is not None and not self.dead.take(statement, self.line.span(statement.span), self.reachable):
+            self._end_dead_run()
 
     def _report(self, diagnostic: Diagnostic) -> None:
         self.found.append(Finding(self.unit, diagnostic))
@@ -142,14 +225,19 @@ class _Flow:
     def _statement(self, statement: n.Statement) -> None:
         kind = type(statement)
         if kind not in _FLOW_STATEMENTS and self.reachable:  # runs, and changes nothing
+            self._dead(statement)
             self.reported, self.running, self.after_endless_loop = False, True, False
             return
         if_bound = self._if_bounds(statement)  # ELSE and ENDIF are never dead code themselves
         if _receives_flow(statement):
             self.reachable = True
         elif not (if_bound or self.reachable or self.reported or self._closes_main_loop(statement)):
-            self._report(own("W106", self.line.span(statement.span), "this code can never run"))
+            self._end_dead_run()
+            span = self.line.span(statement.span)
+            self._report(own("W106", span, "this code can never run"))
+            self.dead = _DeadRun(len(self.found) - 1, span.start, span.start)
             self.reported = True
+        self._dead(statement)
         self.after_endless_loop = False
         if self.reachable:
             self.reported, self.running = False, True

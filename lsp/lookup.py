@@ -12,10 +12,13 @@ from mintlang.dialect import Dialect
 from mintlang.lsp.positions import Positions
 from mintlang.syntax.lexer import lex
 from mintlang.syntax.parser import Document
-from mintlang.syntax.tokens import TRIVIA, WORDS, Token, TokenKind
+from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TRIVIA, WORDS, Token, TokenKind
+from mintlang.syntax.vocabulary import Vocabulary
 
 _START = attrgetter("start")
 WORD_KINDS = WORDS | {TokenKind.LABEL}
+_KEYWORD_KINDS = GRAMMAR_KEYWORDS | {TokenKind.KEYWORD, TokenKind.FUNCTION}
+_SYMBOL_STATEMENTS = {"?": "PRINT"}  # a statement written as a symbol; operators (&, |, !) read as they are
 
 
 def token_index(tokens: Sequence[Token], offset: int) -> int:
@@ -50,3 +53,17 @@ def prefix_tokens(prefix: str, dialect: Dialect) -> list[Token]:
 
 def significant(tokens: list[Token]) -> list[Token]:
     return [token for token in tokens if token.kind not in TRIVIA]
+
+
+def abbreviated(token: Token, words: Vocabulary) -> str | None:
+    """The keyword ``token`` abbreviates (``SP``: SPEED, ``?``: PRINT); None for a keyword written in full,
+    glued to its channel (``IN3``) or not, and for anything else."""
+    if token.text in _SYMBOL_STATEMENTS:
+        return _SYMBOL_STATEMENTS[token.text]
+    if token.kind not in _KEYWORD_KINDS or not token.text.isalnum():
+        return None
+    name = words.keyword_name(token.text)
+    spelled = token.text.upper()
+    if name is None or spelled == name or (words.split_channel(spelled) and spelled.startswith(name)):
+        return None
+    return name

@@ -14,6 +14,7 @@ from lsprotocol import types
 
 import mintlang
 from mintlang.dialect import Dialect
+from mintlang.lsp.features import abbreviations
 from mintlang.lsp.features.diagnostics import to_lsp
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
@@ -61,7 +62,9 @@ def _wanted(kind: str, only: list[str] | None) -> bool:
 def register(server: MintServer) -> None:
     @server.feature(
         types.TEXT_DOCUMENT_CODE_ACTION,
-        types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix, MIGRATE_KIND], resolve_provider=True),
+        types.CodeActionOptions(
+            code_action_kinds=[types.CodeActionKind.QuickFix, abbreviations.KIND, MIGRATE_KIND], resolve_provider=True
+        ),
     )
     def actions(params: types.CodeActionParams) -> list[types.CodeAction]:
         snapshot = server.snapshot(params.text_document.uri)
@@ -69,6 +72,8 @@ def register(server: MintServer) -> None:
             return []
         only = [str(kind) for kind in params.context.only] if params.context.only else None
         found = list(quick_fixes(snapshot, params.range)) if _wanted(types.CodeActionKind.QuickFix, only) else []
+        if _wanted(abbreviations.KIND, only):
+            found.extend(abbreviations.actions(snapshot, params.range))
         if _wanted(MIGRATE_KIND, only) and _wants_migration(snapshot):
             data = {"uri": snapshot.uri, "version": snapshot.version}
             found.append(types.CodeAction(title=MIGRATE_TITLE, kind=MIGRATE_KIND, data=data))

@@ -13,14 +13,9 @@ from lsprotocol import types
 
 from mintlang.diagnostics import Span
 from mintlang.lsp.describe import macro_body
-from mintlang.lsp.lookup import token_index
+from mintlang.lsp.lookup import abbreviated, token_index
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
-from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
-
-_KEYWORD_KINDS = GRAMMAR_KEYWORDS | {TokenKind.KEYWORD, TokenKind.FUNCTION}
-_SYMBOL_STATEMENTS = {"?": "PRINT"}  # a statement written as a symbol; operators (&, |, !) read as they are
-
 
 _STANDS_FOR = "≡ "
 
@@ -43,16 +38,10 @@ def hints(snapshot: Snapshot, span: Span) -> Iterator[types.InlayHint]:
         token = tokens[index]
         if token.start > span.end:
             break
-        if token.text in _SYMBOL_STATEMENTS:
-            name = _SYMBOL_STATEMENTS[token.text]
-            yield _hint(snapshot, token.end, name, f"{token.text} is short for {name}")
-            continue
-        if token.kind not in _KEYWORD_KINDS or not token.text.isalnum():
-            continue
-        name = words.keyword_name(token.text)
-        spelled = token.text.upper()
-        if name is not None and spelled != name and not (words.split_channel(spelled) and spelled.startswith(name)):
-            yield _hint(snapshot, token.end, name, f"{token.text} is the abbreviation of {name}")
+        name = abbreviated(token, words)
+        if name is not None:
+            short = "short for" if not token.text.isalnum() else "the abbreviation of"
+            yield _hint(snapshot, token.end, name, f"{token.text} is {short} {name}")
     for expansion in document.expansions:
         if span.start <= expansion.span.start <= span.end:
             body = macro_body(snapshot, expansion.macro)

@@ -1,0 +1,68 @@
+"""The checker's fixes as the editor offers them: quick fixes on the diagnostics of the lines selected."""
+
+from __future__ import annotations
+
+import pytest
+from lsprotocol import types
+
+from tests.lsp.conftest import document, open_document, uri_of
+
+pytestmark = pytest.mark.asyncio
+
+
+async def fixes(client, uri, diagnostics, line) -> dict[str, types.CodeAction]:
+    where = types.Range(start=types.Position(line=line, character=0), end=types.Position(line=line, character=80))
+    context = types.CodeActionContext(diagnostics=diagnostics, only=[types.CodeActionKind.QuickFix])
+    found = await client.text_document_code_action_async(
+        types.CodeActionParams(text_document=document(uri), range=where, context=context)
+    )
+    return {action.title: action for action in found}
+
+
+def applied(text: str, action: types.CodeAction, uri: str) -> str:
+    """``text`` after the action's edits (insertions and deletions of whole lines included)."""
+    starts = [0, *(index + 1 for index, character in enumerate(text) if character == "\n")]
+    for edit in sorted(action.edit.changes[uri], key=lambda e: e.range.start, reverse=True):
+        start = starts[edit.range.start.line] + edit.range.start.character
+        end = (
+            starts[edit.range.end.line] if edit.range.end.line < len(starts) else len(text)
+        ) + edit.range.end.character
+        text = text[:start] + edit.new_text + text[end:]
+    return text
+
+
+async def test_the_dim_goes_with_the_other_dims_not_into_the_loop(client, tmp_path):
+    # the issue's case: the DIM went inside the loop where the name is used
+    text = "REM counter\nDIM most = 10\nLOOP\n  count = count + 1\n  IF count > most THEN EXIT\nENDL\n"
+    uri = uri_of(tmp_path / "dim.mnt")
+    diagnostics = await open_document(client, uri, text)
+    found = await fixes(client, uri, diagnostics, 3)
+    assert applied(text, found["Declare 'count' with DIM"], uri) == (
+        "REM counter\nDIM most = 10\nDIM count\nLOOP\n  count = count + 1\n  IF count > most THEN EXIT\nENDL\n"
+    )
+
+
+async def test_a_missing_label_is_corrected_or_made(client, tmp_path):
+    text = "GOSUB mian\nEND\n#main\nRETURN\n"
+    uri = uri_of(tmp_path / "label.mnt")
+    diagnostics = await open_document(client, uri, text)
+    found = await fixes(client, uri, diagnostics, 0)
+    assert set(found) == {"Change to #main", "Create subroutine #mian"}
+    assert applied(text, found["Change to #main"], uri) == "GOSUB main\nEND\n#main\nRETURN\n"
+    assert applied(text, found["Create subroutine #mian"], uri) == text + "\n#mian\nRETURN\n"
+
+
+async def test_then_used_as_a_block_becomes_do(client, tmp_path):
+    text = "DIM a\nIF a THEN\n  PRINT 1\nENDIF\n"
+    uri = uri_of(tmp_path / "then.mnt")
+    diagnostics = await open_document(client, uri, text)
+    found = await fixes(client, uri, diagnostics, 3)
+    assert applied(text, found["Change THEN to DO"], uri) == "DIM a\nIF a DO\n  PRINT 1\nENDIF\n"
+
+
+async def test_unreachable_code_is_removed(client, tmp_path):
+    text = "GOTO label1\nPRINT 1\nPRINT 2\n#label1\nEND\n"  # the guide's GOTO entry (line 11194)
+    uri = uri_of(tmp_path / "dead.mnt")
+    diagnostics = await open_document(client, uri, text)
+    found = await fixes(client, uri, diagnostics, 1)
+    assert applied(text, found["Remove unreachable code"], uri) == "GOTO label1\n#label1\nEND\n"

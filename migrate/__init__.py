@@ -14,12 +14,21 @@ not touch survives byte for byte::
 from __future__ import annotations
 
 from mintlang.migrate.api import DEFAULT_CONTROLLER, UnknownRule, migrate, rules, rules_at, select
-from mintlang.migrate.model import Change, ManualItem, MigrationResult, Phase, RuleClass, RuleInfo
+from mintlang.migrate.model import (
+    Change,
+    ManualItem,
+    MigrationFailed,
+    MigrationResult,
+    Phase,
+    RuleClass,
+    RuleInfo,
+)
 
 __all__ = [
     "DEFAULT_CONTROLLER",
     "Change",
     "ManualItem",
+    "MigrationFailed",
     "MigrationResult",
     "Phase",
     "RuleClass",

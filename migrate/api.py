@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import replace
 
 from mintlang.diagnostics import Edit, Span
@@ -10,6 +10,7 @@ from mintlang.keyworddb.model import Controller
 from mintlang.migrate import engine
 from mintlang.migrate.context import Context
 from mintlang.migrate.model import MigrationResult, RuleInfo
+from mintlang.migrate.recognise import shows_v4
 from mintlang.migrate.rules import RULES, Replace, Rule
 from mintlang.semantic.units import Unit
 
@@ -59,36 +60,47 @@ def migrate(
     opt_in: Iterable[str] = (),
 ) -> MigrationResult:
     """Migrate a v3 program (and its configuration file, whose result is ``.configuration``);
-    ``only``/``skip``/``opt_in`` choose the rules as ``select`` does."""
+    ``only``/``skip``/``opt_in`` choose the rules as ``select`` does. An application already
+    in Mint v4 comes back as it was, ``already_v4`` set (see ``recognise``). Raises
+    ``MigrationFailed`` when a rule fails."""
     texts = {Unit.PROGRAM: source}
     if config is not None:
         texts = {Unit.CONFIGURATION: config, **texts}
     marks = {unit: _BOM if text.startswith(_BOM) else "" for unit, text in texts.items()}
     texts = {unit: text.removeprefix(marks[unit]) for unit, text in texts.items()}
-    outcomes = engine.run(texts, select(only, skip, opt_in), str(Controller(controller)))
-    results = {unit: _result(outcome, marks[unit]) for unit, outcome in outcomes.items()}
-    program = results[Unit.PROGRAM]
+    target = str(Controller(controller))
+    chosen = select(only, skip, opt_in)
+    outcomes = engine.run(texts, chosen, target)
+    v4 = _rewrite_free(outcomes) and shows_v4(texts, target)
+    if v4 and chosen != select():  # whether a file is v4 does not depend on the rules asked for
+        v4 = _rewrite_free(engine.run(texts, select(), target))
+    if v4:
+        outcomes = {unit: engine.untouched(text) for unit, text in texts.items()}
+    results = {unit: _result(outcome, marks[unit], v4) for unit, outcome in outcomes.items()}
     if Unit.CONFIGURATION in results:
-        return MigrationResult(
-            program.source,
-            program.text,
-            program.changes,
-            program.manual,
-            program.rule_counts,
-            program.errors,
-            results[Unit.CONFIGURATION],
-        )
-    return program
+        return replace(results[Unit.PROGRAM], configuration=results[Unit.CONFIGURATION])
+    return results[Unit.PROGRAM]
 
 
-def _result(outcome: engine.FileOutcome, mark: str) -> MigrationResult:
+def _rewrite_free(outcomes: Mapping[Unit, engine.FileOutcome]) -> bool:
+    """Whether the rules rewrote nothing (markers and notes are no rewrites)."""
+    return not any(outcome.changes for outcome in outcomes.values())
+
+
+def _result(outcome: engine.FileOutcome, mark: str, v4: bool) -> MigrationResult:
     """The outcome with the byte-order mark the rules did not see put back in front."""
     changes = tuple(
         replace(change, span=Span(change.span.start + len(mark), change.span.end + len(mark)))
         for change in outcome.changes
     )
     return MigrationResult(
-        mark + outcome.source, mark + outcome.text, changes, outcome.manual, outcome.counts, outcome.errors
+        mark + outcome.source,
+        mark + outcome.text,
+        changes,
+        outcome.manual,
+        outcome.counts,
+        outcome.errors,
+        already_v4=v4,
     )
 
 

@@ -1,33 +1,46 @@
-"""Rewriting a file in place without ever leaving it half-written or breaking what points at it.
+"""Rewriting a file so that each of its names holds, at every moment, either all of the old
+bytes or all of the new ones: a reader, or a kill at any instant, never meets a mix.
 
 ``target`` decides before anything is written whether a file may be rewritten:
 symbolic links are followed to the real file (the link stays a link), and
 anything but a regular file the user may write is refused with a reason (a
 device node such as /dev/null must never be replaced, and a read-only file is
-protected even from root, who passes every permission check).
+protected even from root, who passes every permission check). So is a file
+whose owner or group a new copy could not be given (only root gives files away)
+and a file with a hard link outside its folder (that name could not be found, so
+it would keep the old text).
 
-``write`` then puts the new bytes in a temporary file of the same directory and
-renames it over the original: readers see the old file or the new one, never a
-mix, and a failure leaves the original untouched. A rename would give a file
-with several hard links a new inode (the other names keeping the old text), or
-a new owner when it cannot be given back; such a file is overwritten in place
-instead, after a backup copy is made beside it, which restores it if the write
-fails and survives if the process is killed.
+``write`` puts the new bytes in a temporary file of the same folder
+(``.NAME.XXXXXXXX.mint-migrate.tmp``, locked while in use), with the original's
+permission bits, owner and group, flushed to disk; checks that the file still
+holds the bytes the migration read (an edit saved meanwhile is not overwritten);
+and renames the temporary file over the file's name, which replaces the name in
+one step. A file with several hard links gets every name renamed onto the new
+file, one after the other, so the links survive; a kill between two of those
+renames leaves some names with the new text and the others with the old, each
+complete. Last, the folder is flushed so that the renames survive a power cut.
+A kill leaves the temporary file behind; the next run removes it (``leftovers``).
 """
 
 from __future__ import annotations
 
 import contextlib
+import fcntl
 import os
-import shutil
 import stat
 import tempfile
 from pathlib import Path
-from typing import BinaryIO
+
+SUFFIX = ".mint-migrate.tmp"
+_NAME_KEPT = 100  # characters of the file's name in a temporary name (names are at most 255)
 
 
 class Unwritable(Exception):
     """A file ``--write`` must not or cannot rewrite; the message names it and says why."""
+
+
+class Stale(Exception):
+    """The file no longer holds what the migration read: an edit made since would be lost."""
 
 
 def target(path: Path) -> Path:
@@ -44,69 +57,99 @@ def target(path: Path) -> Path:
         raise Unwritable(f"cannot write {shown}: the file is read-only")
     if not os.access(real.parent, os.W_OK | os.X_OK):
         raise Unwritable(f"cannot write {shown}: its directory {real.parent} is not writable")
+    if not _can_give(status):
+        raise Unwritable(f"cannot write {shown}: it belongs to another user or group, which a new copy could not keep")
+    outside = status.st_nlink - len(names(real, status))
+    if outside > 0:
+        raise Unwritable(f"cannot write {shown}: it has hard links outside its folder, which would keep the old text")
     return real
 
 
-def write(real: Path, data: bytes) -> None:
-    """Replace the contents of the regular file ``real`` (from ``target``) with ``data``,
-    keeping its inode when it has several hard links, and its permission bits, owner and group."""
+def _can_give(status: os.stat_result) -> bool:
+    """Whether a file this process creates can be given ``status``'s owner and group."""
+    if os.geteuid() == 0:
+        return True
+    return status.st_uid == os.geteuid() and status.st_gid in {os.getegid(), *os.getgroups()}
+
+
+def names(real: Path, status: os.stat_result) -> list[Path]:
+    """The names of the file in its folder, ``real`` first (more only if it has hard links)."""
+    found = [real]
+    if status.st_nlink == 1:
+        return found
+    with os.scandir(real.parent) as listing:
+        for entry in listing:
+            if entry.name == real.name or entry.name.endswith(SUFFIX) or not entry.is_file(follow_symlinks=False):
+                continue
+            other = entry.stat(follow_symlinks=False)
+            if (other.st_dev, other.st_ino) == (status.st_dev, status.st_ino):
+                found.append(Path(entry.path))
+    return found
+
+
+def write(real: Path, data: bytes, expected: bytes) -> None:
+    """Replace the contents of ``real`` (from ``target``) with ``data`` if it still holds
+    ``expected`` (else raise ``Stale``), keeping its hard links, permission bits, owner and group."""
     status = real.stat()
-    if status.st_nlink > 1 or not _replace(real, data, status):
-        _overwrite(real, data)
-
-
-def _temporary(real: Path, suffix: str) -> tuple[int, str]:
-    return tempfile.mkstemp(dir=real.parent, prefix=f".{real.name}.", suffix=suffix)
-
-
-def _replace(real: Path, data: bytes, status: os.stat_result) -> bool:
-    """Write ``data`` beside ``real`` and rename it over; False (nothing changed) when the copy
-    could not be given the original's owner and group."""
-    handle, temporary = _temporary(real, ".tmp")
+    others = names(real, status)[1:]
+    handle, temporary = tempfile.mkstemp(dir=real.parent, prefix=f".{real.name[:_NAME_KEPT]}.", suffix=SUFFIX)
+    links: list[str] = []
     try:
-        with os.fdopen(handle, "wb") as stream:
-            stream.write(data)
-            stream.flush()
-            os.fsync(stream.fileno())
-        os.chmod(temporary, stat.S_IMODE(status.st_mode))
-        copy = os.stat(temporary)
-        if (copy.st_uid, copy.st_gid) != (status.st_uid, status.st_gid):
-            try:
-                os.chown(temporary, status.st_uid, status.st_gid)
-            except PermissionError:
-                os.unlink(temporary)
-                return False
+        fcntl.flock(handle, fcntl.LOCK_EX)  # held until closed: ``leftovers`` leaves a locked file alone
+        _fill(handle, data, status)
+        links = [_link(temporary, number) for number in range(1, len(others) + 1)]
+        if _content(real) != expected:
+            raise Stale(str(real))
         os.replace(temporary, real)
-    except BaseException:
-        with contextlib.suppress(OSError):
-            os.unlink(temporary)
-        raise
-    return True
+        for link, name in zip(links, others, strict=True):
+            if _same_file(name, status):  # not replaced by someone else meanwhile
+                os.replace(link, name)
+        _flush_folder(real.parent)
+    finally:
+        for name in (temporary, *links):  # gone when renamed; left only when something failed
+            with contextlib.suppress(OSError):
+                os.unlink(name)
+        os.close(handle)
 
 
-def _overwrite(real: Path, data: bytes) -> None:
-    handle, backup = _temporary(real, ".bak")
-    os.close(handle)
+def _fill(handle: int, data: bytes, status: os.stat_result) -> None:
+    """The temporary file's bytes, mode, owner and group, flushed to disk."""
+    with os.fdopen(os.dup(handle), "wb") as stream:
+        stream.write(data)
+    os.fchmod(handle, stat.S_IMODE(status.st_mode))
+    copy = os.fstat(handle)
+    if (copy.st_uid, copy.st_gid) != (status.st_uid, status.st_gid):
+        os.fchown(handle, status.st_uid, status.st_gid)
+    os.fsync(handle)
+
+
+def _link(temporary: str, number: int) -> str:
+    """A second temporary name for the new file, to rename over another hard link."""
+    name = f"{temporary.removesuffix(SUFFIX)}-{number}{SUFFIX}"
+    os.link(temporary, name)
+    return name
+
+
+def _content(real: Path) -> bytes | None:
     try:
-        shutil.copyfile(real, backup)
-    except BaseException:
-        with contextlib.suppress(OSError):
-            os.unlink(backup)
-        raise
+        return real.read_bytes()
+    except OSError:
+        return None
+
+
+def _same_file(name: Path, status: os.stat_result) -> bool:
     try:
-        with real.open("r+b") as stream:
-            _fill(stream, data)
-    except BaseException:
-        with real.open("r+b") as stream, open(backup, "rb") as original:
-            _fill(stream, original.read())
-        os.unlink(backup)  # kept, with the original, if even the restore failed
-        raise
-    os.unlink(backup)
+        other = name.stat(follow_symlinks=False)
+    except OSError:
+        return False
+    return (other.st_dev, other.st_ino) == (status.st_dev, status.st_ino)
 
 
-def _fill(stream: BinaryIO, data: bytes) -> None:
-    stream.seek(0)
-    stream.write(data)
-    stream.truncate()
-    stream.flush()
-    os.fsync(stream.fileno())
+def _flush_folder(folder: Path) -> None:
+    """Make the renames durable; some file systems cannot flush a folder, and say so."""
+    handle = os.open(folder, os.O_RDONLY | os.O_DIRECTORY)
+    try:
+        with contextlib.suppress(OSError):
+            os.fsync(handle)
+    finally:
+        os.close(handle)

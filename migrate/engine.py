@@ -17,12 +17,15 @@ from __future__ import annotations
 from bisect import bisect_left, bisect_right, insort
 from collections import Counter
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from mintlang.allocation import without_collector
-from mintlang.diagnostics import LineIndex, Severity, Span, split_lines
-from mintlang.migrate.context import MARKER, MARKER_LINE, Context, FileView
-from mintlang.migrate.model import Change, ManualItem, Phase
+from mintlang.diagnostics import LineIndex, Severity, Span
+from mintlang.migrate.citations import cite
+from mintlang.migrate.context import MARKER, Context, FileView
+from mintlang.migrate.history import Edit, History
+from mintlang.migrate.markers import manual_items
+from mintlang.migrate.model import Change, ManualItem, MigrationFailed, Phase
 from mintlang.migrate.rules.base import Flag, Replace, Rule
 from mintlang.semantic.units import Unit
 
@@ -30,30 +33,13 @@ MAX_PASSES = 6  # a phase that still edits after this many passes has a rule tha
 
 
 @dataclass(frozen=True, slots=True)
-class _Edit:
-    rule: str
-    span: Span
-    text: str
+class _Applied:
+    """A change before the migrated text is known: the pass that made it and where its
+    replacement starts in the text that pass produced."""
 
-
-@dataclass(frozen=True, slots=True)
-class _Batch:
-    """The edits of one pass, sorted, with where each ends in the text they produced and how much
-    the edits before it grew the text (one more: all of them), so that mapping an offset back
-    is a bisection instead of a walk over every edit."""
-
-    edits: list[_Edit]
-    new_ends: list[int]
-    shifts: list[int]
-
-    @classmethod
-    def of(cls, edits: list[_Edit]) -> _Batch:
-        new_ends: list[int] = []
-        shifts = [0]
-        for edit in edits:
-            new_ends.append(edit.span.start + shifts[-1] + len(edit.text))
-            shifts.append(shifts[-1] + len(edit.text) - (edit.span.end - edit.span.start))
-        return cls(edits, new_ends, shifts)
+    change: Change
+    after: int
+    offset: int
 
 
 @dataclass
@@ -63,8 +49,8 @@ class _FileState:
     source: str
     text: str
     index: LineIndex
-    batches: list[_Batch] = field(default_factory=list)  # applied edits, per pass, on the text before it
-    changes: list[Change] = field(default_factory=list)
+    history: History = field(default_factory=History)
+    applied: list[_Applied] = field(default_factory=list)
     counts: Counter[str] = field(default_factory=Counter)
 
 
@@ -86,21 +72,35 @@ def run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> di
     instead of parsing the same text again.
     """
     states = {unit: _FileState(text, text, LineIndex(text)) for unit, text in texts.items()}
-    context: Context | None = Context.build(texts, controller)
+    context: Context | None = _build(texts, controller)
     errors = {unit: _unreadable(file) for unit, file in context.files.items()}
     for phase in Phase:
         active = [rule for rule in rules if rule.phase is phase]
         if not active:
             continue
+        editing: set[str] = set()
         for _ in range(MAX_PASSES):
             if context is None:
-                context = Context.build({unit: state.text for unit, state in states.items()}, controller)
-            if not _apply_pass(context, active, states):
+                context = _build({unit: state.text for unit, state in states.items()}, controller)
+            editing = _apply_pass(context, active, states)
+            if not editing:
                 break
             context = None  # stale: dropped before the next parse, so two trees are never alive at once
-        else:  # pragma: no cover - guards against a rule that never settles
-            raise RuntimeError(f"phase {phase} did not reach a fixed point")
+        else:
+            reason = f"it kept rewriting its own output ({MAX_PASSES} passes of the {phase} phase)"
+            raise MigrationFailed(", ".join(sorted(editing)), reason)
     return {unit: _outcome(state, errors[unit]) for unit, state in states.items()}
+
+
+def _build(texts: Mapping[Unit, str], controller: str) -> Context:
+    try:
+        return Context.build(texts, controller)
+    except Exception as error:  # a parser bug must not take the other files of a run with it
+        raise MigrationFailed(None, f"reading it as Mint v3 raised {_described(error)}") from error
+
+
+def _described(error: Exception) -> str:
+    return f"{type(error).__name__}: {error}"
 
 
 def _unreadable(file: FileView) -> tuple[str, ...]:
@@ -112,35 +112,39 @@ def _unreadable(file: FileView) -> tuple[str, ...]:
     )
 
 
-def _apply_pass(context: Context, rules: Sequence[Rule], states: dict[Unit, _FileState]) -> bool:
-    wanted: dict[Unit, list[_Edit]] = {unit: [] for unit in states}
+def _apply_pass(context: Context, rules: Sequence[Rule], states: dict[Unit, _FileState]) -> set[str]:
+    """One pass of ``rules``; the ids of the rules whose edits were applied (none: the phase is done)."""
+    wanted: dict[Unit, list[Edit]] = {unit: [] for unit in states}
     flagged: set[tuple[Unit, int, str]] = set()
     for rule in rules:
-        for action in rule.apply(context):
-            file = context.files[action.unit]
-            if isinstance(action, Replace):
-                wanted[action.unit].append(_Edit(rule.id, action.span, action.text))
-            elif isinstance(action, Flag):
-                edit = _marker(file, rule.id, action, flagged)
-                if edit is not None:
-                    wanted[action.unit].append(edit)
-    changed = False
+        try:
+            for action in rule.apply(context):
+                file = context.files[action.unit]
+                if isinstance(action, Replace):
+                    wanted[action.unit].append(Edit(rule.id, action.span, action.text))
+                elif isinstance(action, Flag):
+                    edit = _marker(file, rule.id, action, flagged)
+                    if edit is not None:
+                        wanted[action.unit].append(edit)
+        except Exception as error:  # a bug in one rule: reported with its id, the run goes on
+            raise MigrationFailed(rule.id, _described(error)) from error
+    applied: set[str] = set()
     for unit, edits in wanted.items():
         accepted = _non_overlapping(edits)
         if accepted:
             _apply(states[unit], accepted)
-            changed = True
-    return changed
+            applied.update(edit.rule for edit in accepted)
+    return applied
 
 
-def _marker(file: FileView, rule: str, flag: Flag, flagged: set[tuple[Unit, int, str]]) -> _Edit | None:
+def _marker(file: FileView, rule: str, flag: Flag, flagged: set[tuple[Unit, int, str]]) -> Edit | None:
     """The ``REM MIGRATE:`` line for a flag, unless that line already carries it.
 
     Nothing may go above the command that must open the file (AUTO, PROTECT): a flag for a
     statement after it on its line breaks the line there instead (a line end separates
     statements as ``:`` does), so the statement gets a line of its own with the marker above.
     """
-    reason = " ".join(flag.reason.split())
+    reason = cite(" ".join(flag.reason.split()))
     text = f"{MARKER} {rule}: {reason}"
     indentation = file.indentation(flag.span.start)
     split = _after_opening(file, flag.span.start)
@@ -150,13 +154,13 @@ def _marker(file: FileView, rule: str, flag: Flag, flagged: set[tuple[Unit, int,
         return None
     flagged.add(key)
     if split is not None:
-        return _Edit(rule, split, f"{file.newline}{indentation}{text}{file.newline}{indentation}")
+        return Edit(rule, split, f"{file.newline}{indentation}{text}{file.newline}{indentation}")
     for above in file.lines_above(flag.span.start):
         if not above.upper().startswith(MARKER):
             break
         if above == text:
             return None
-    return _Edit(rule, Span(start, start), f"{indentation}{text}{file.newline}")
+    return Edit(rule, Span(start, start), f"{indentation}{text}{file.newline}")
 
 
 def _after_opening(file: FileView, offset: int) -> Span | None:
@@ -171,7 +175,7 @@ def _after_opening(file: FileView, offset: int) -> Span | None:
     return Span(command.span.end, following.span.start)
 
 
-def _non_overlapping(edits: list[_Edit]) -> list[_Edit]:
+def _non_overlapping(edits: list[Edit]) -> list[Edit]:
     """The edits that touch no earlier-accepted edit (rule order decides), sorted by position.
 
     Insertions at one point keep the order they were asked for; an insertion may
@@ -179,7 +183,7 @@ def _non_overlapping(edits: list[_Edit]) -> list[_Edit]:
     (which never overlap) and insertion points are kept sorted, so each check is a
     bisection, not a comparison with every edit accepted so far.
     """
-    accepted: list[_Edit] = []
+    accepted: list[Edit] = []
     replacements: list[tuple[int, int]] = []
     points: list[int] = []
     for edit in edits:
@@ -200,69 +204,47 @@ def _non_overlapping(edits: list[_Edit]) -> list[_Edit]:
     return sorted(accepted, key=lambda edit: (edit.span.start, edit.span.end))
 
 
-def _apply(state: _FileState, edits: list[_Edit]) -> None:
+def _apply(state: _FileState, edits: list[Edit]) -> None:
     parts: list[str] = []
     position = 0
+    written = 0  # length of the new text so far
+    passes = len(state.history.batches) + 1
     for edit in edits:
-        parts.append(state.text[position : edit.span.start])
-        parts.append(edit.text)
+        before = state.text[position : edit.span.start]
+        parts += (before, edit.text)
+        written += len(before)
         position = edit.span.end
         if edit.span.start != edit.span.end or not edit.text.lstrip().startswith(MARKER):  # a line split counts
-            original = _to_source(state, edit.span)
+            original = state.history.to_source(edit.span)
             line = state.index.position(original.start).line
-            state.changes.append(
-                Change(edit.rule, original, line, state.source[original.start : original.end], edit.text)
-            )
+            change = Change(edit.rule, original, line, state.source[original.start : original.end], edit.text, 0)
+            state.applied.append(_Applied(change, passes, written))
             state.counts[edit.rule] += 1
+        written += len(edit.text)
     parts.append(state.text[position:])
-    state.batches.append(_Batch.of(edits))
+    state.history.record(edits)
     state.text = "".join(parts)
 
 
-def _to_source(state: _FileState, span: Span) -> Span:
-    """``span`` of the current text mapped back to the original source.
-
-    Offsets outside earlier edits shift by those edits' growth; an offset inside
-    text an earlier edit wrote maps to the whole span that edit replaced.
-    """
-    start, end = span
-    for batch in reversed(state.batches):
-        start = _back(batch, start, at_start=True)
-        end = start if span.start == span.end else _back(batch, end, at_start=False)
-    return Span(start, max(start, end))
-
-
-def _back(batch: _Batch, offset: int, *, at_start: bool) -> int:
-    first = bisect_left(batch.new_ends, offset)  # the edits before it end before ``offset``
-    shift = batch.shifts[first]
-    for edit in batch.edits[first:]:
-        new_start = edit.span.start + shift
-        new_end = new_start + len(edit.text)
-        if offset < new_start or (offset == new_start and at_start and edit.span.start != edit.span.end):
-            break
-        if offset < new_end or (offset == new_end and not at_start and offset > new_start):
-            return edit.span.start if at_start else edit.span.end
-        shift += len(edit.text) - (edit.span.end - edit.span.start)
-    return offset - shift
-
-
 def _outcome(state: _FileState, errors: tuple[str, ...]) -> FileOutcome:
-    manual = tuple(_manual_items(state.text))
-    counts = Counter(state.counts)
-    for item in manual:
-        counts[item.rule] += 1
-    return FileOutcome(state.source, state.text, tuple(state.changes), manual, dict(sorted(counts.items())), errors)
+    index = LineIndex(state.text)
+    changes = [
+        replace(item.change, migrated_line=index.position(state.history.forward(item.offset, item.after)).line)
+        for item in state.applied
+    ]
+    changes.sort(key=lambda change: change.span.start)  # stable: edits at one place keep their order
+    manual = tuple(manual_items(state.text, state.history.origin, state.index))
+    return FileOutcome(state.source, state.text, tuple(changes), manual, _counts(state.counts, manual), errors)
 
 
-def _manual_items(text: str) -> list[ManualItem]:
-    """Every ``REM MIGRATE:`` line of the text, with the line it flags (the next non-marker line)."""
-    items: list[ManualItem] = []
-    pending: list[tuple[str, str]] = []
-    for number, line in enumerate(split_lines(text), start=1):
-        found = MARKER_LINE.match(line)
-        if found:
-            pending.append((found["rule"], found["reason"]))
-            continue
-        items.extend(ManualItem(rule, number, reason) for rule, reason in pending)
-        pending = []
-    return items
+def untouched(text: str) -> FileOutcome:
+    """``text`` left as it was: its own ``REM MIGRATE:`` lines are its manual items."""
+    index = LineIndex(text)
+    manual = tuple(manual_items(text, lambda offset: offset, index))
+    return FileOutcome(text, text, (), manual, _counts(Counter(), manual), ())
+
+
+def _counts(changes: Counter[str], manual: tuple[ManualItem, ...]) -> dict[str, int]:
+    counts = Counter(changes)
+    counts.update(item.rule for item in manual)
+    return dict(sorted(counts.items()))

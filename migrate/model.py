@@ -23,6 +23,17 @@ class RuleClass(StrEnum):
     MANUAL = "manual"  # only flags: the original stays, a REM MIGRATE line explains
 
 
+class MigrationFailed(Exception):
+    """A bug in the migrator met one application: a rule raised, or kept rewriting its own
+    output. ``rule`` names it (None when reading the files failed), so the report can say
+    which file and which rule, leave those files as they were and go on with the others."""
+
+    def __init__(self, rule: str | None, reason: str) -> None:
+        super().__init__(f"rule {rule} failed: {reason}" if rule else f"failed: {reason}")
+        self.rule = rule
+        self.reason = reason
+
+
 class Phase(StrEnum):
     """The processing order of the migration spec (section 1); each phase re-parses."""
 
@@ -49,22 +60,29 @@ class RuleInfo:
 
 @dataclass(frozen=True, slots=True)
 class Change:
-    """One rewrite: ``span`` and ``line`` locate the replaced text in the original source."""
+    """One rewrite: ``span`` and ``line`` locate the replaced text in the original source,
+    ``migrated_line`` the line where its replacement starts in the migrated text."""
 
     rule: str
     span: Span
     line: int
     original: str
     replacement: str
+    migrated_line: int
 
 
 @dataclass(frozen=True, slots=True)
 class ManualItem:
-    """Something left for the user; ``line`` is the flagged line of the migrated text."""
+    """Something left for the user. ``line`` is the line of the migrated text it marks (the
+    one below its ``REM MIGRATE:`` line), ``original_line`` that line in the original (None
+    when the migrator wrote the line). A ``note`` is about the whole application (a statement
+    to fill in at its top): it marks no line, and ``line`` is the note's own."""
 
     rule: str
     line: int
     reason: str
+    original_line: int | None
+    note: bool = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -78,6 +96,7 @@ class MigrationResult:
     rule_counts: Mapping[str, int]
     errors: tuple[str, ...] = ()  # lines the migrator could not read (left untouched)
     configuration: MigrationResult | None = field(default=None, repr=False)
+    already_v4: bool = False  # recognised as Mint v4 and left as it was (see ``recognise``)
 
     @property
     def changed(self) -> bool:

@@ -1,4 +1,5 @@
-"""The migration report: per-file counts, per-rule counts and every manual item with its line.
+"""The migration report: per-file status and counts, every change and manual item with its
+line in the original and in the migrated file, per-rule counts.
 
 One data shape (``report``) feeds both formats, so the JSON the golden tests
 compare and the text a user reads always agree. Paths, reasons and errors quote
@@ -18,16 +19,25 @@ from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 
-from mintlang.migrate.model import MigrationResult
+from mintlang.migrate.model import ManualItem, MigrationFailed, MigrationResult
 
 
 @dataclass(frozen=True, slots=True)
 class FileEntry:
-    """A migrated file as the report names it."""
+    """A file of the run as the report names it: its migration, or why it has none."""
 
     path: str
     role: str  # "program" or "configuration"
-    result: MigrationResult
+    result: MigrationResult | None
+    failure: MigrationFailed | None = None
+
+    @property
+    def status(self) -> str:
+        if self.result is None:
+            return "failed"
+        if self.result.already_v4:
+            return "already v4"
+        return "changed" if self.result.changed else "unchanged"
 
 
 def entries(path: str, result: MigrationResult, config_path: str | None = None) -> list[FileEntry]:
@@ -40,18 +50,27 @@ def entries(path: str, result: MigrationResult, config_path: str | None = None) 
     return found
 
 
+def plural(count: int, noun: str) -> str:
+    """``1 change``, ``2 changes``."""
+    return f"{count} {noun}{'' if count == 1 else 's'}"
+
+
 def report(files: Iterable[FileEntry], controller: str) -> dict[str, Any]:
     """The report as plain data (what ``--format json`` prints)."""
     rows = [_file(entry) for entry in files]
     rules: Counter[str] = Counter()
     for row in rows:
         rules.update(row["rules"])
+    statuses = Counter(row["status"] for row in rows)
     return {
         "controller": controller,
         "files": rows,
         "totals": {
-            "changed": sum(row["changed"] for row in rows),
-            "unchanged": sum(not row["changed"] for row in rows),
+            "changed": statuses["changed"],
+            "unchanged": statuses["unchanged"],
+            "already_v4": statuses["already v4"],
+            "failed": statuses["failed"],
+            "changes": sum(len(row["changes"]) for row in rows),
             "manual_items": sum(len(row["manual"]) for row in rows),
             "errors": sum(len(row["errors"]) for row in rows),
         },
@@ -61,51 +80,80 @@ def report(files: Iterable[FileEntry], controller: str) -> dict[str, Any]:
 
 def _file(entry: FileEntry) -> dict[str, Any]:
     result = entry.result
+    row: dict[str, Any] = {"path": entry.path, "role": entry.role, "status": entry.status}
+    if result is None:
+        failure = entry.failure
+        row["failure"] = {"rule": failure.rule, "reason": failure.reason} if failure is not None else None
+        return {**row, "changed": False, "changes": [], "manual": [], "errors": [], "rules": {}}
     return {
-        "path": entry.path,
-        "role": entry.role,
+        **row,
         "changed": result.changed,
         "changes": [
-            {"rule": c.rule, "line": c.line, "original": c.original, "replacement": c.replacement}
+            {
+                "rule": c.rule,
+                "original_line": c.line,
+                "migrated_line": c.migrated_line,
+                "original": c.original,
+                "replacement": c.replacement,
+            }
             for c in result.changes
         ],
-        "manual": [{"rule": m.rule, "line": m.line, "reason": m.reason} for m in result.manual],
+        "manual": [_manual(item) for item in result.manual],
         "errors": list(result.errors),
         "rules": dict(result.rule_counts),
     }
 
 
+def _manual(item: ManualItem) -> dict[str, Any]:
+    return {
+        "rule": item.rule,
+        "original_line": item.original_line,
+        "migrated_line": item.line,
+        "note": item.note,
+        "reason": item.reason,
+    }
+
+
 def render_text(data: Mapping[str, Any], console: Console) -> None:
-    """The report for a person: one table of files, the manual items, the rule counts."""
+    """The report for a person: one table of files, the manual items, the rule counts, the totals."""
     files = Table(title=f"mint-migrate ({data['controller']})", show_edge=False)
-    for column in ("file", "role", "status", "changes", "manual items", "errors"):
+    for column in ("file", "role", "status", "changes", "manual items", "unreadable lines"):
         files.add_column(column)
     for row in data["files"]:
-        status = "changed" if row["changed"] else "unchanged"
-        files.add_row(
-            Text(row["path"]),
-            row["role"],
-            status,
-            str(len(row["changes"])),
-            str(len(row["manual"])),
-            str(len(row["errors"])),
-        )
+        counts = (len(row["changes"]), len(row["manual"]), len(row["errors"]))
+        files.add_row(Text(row["path"]), row["role"], row["status"], *(str(count) for count in counts))
     console.print(files)
     for row in data["files"]:
         path = escape(row["path"])
         for item in row["manual"]:
-            console.print(
-                f"{path}:{item['line']}: [bold]{item['rule']}[/bold] {escape(item['reason'])}", highlight=False
-            )
+            console.print(f"{_place(path, item)}: [bold]{item['rule']}[/bold] {escape(item['reason'])}")
         for error in row["errors"]:
-            console.print(f"{path}: unreadable v3 {escape(error)}", highlight=False)
+            console.print(f"{path}: unreadable v3 {escape(error)}")
     if data["rules"]:
-        console.print(
-            "rules: " + ", ".join(f"{rule} {count}" for rule, count in data["rules"].items()), highlight=False
-        )
-    totals = data["totals"]
-    console.print(
-        f"{totals['changed']} changed, {totals['unchanged']} unchanged, "
-        f"{totals['manual_items']} manual items, {totals['errors']} errors",
-        highlight=False,
-    )
+        console.print("rules: " + ", ".join(f"{rule} {count}" for rule, count in data["rules"].items()))
+    console.print(summary(data["totals"]))
+
+
+def _place(path: str, item: Mapping[str, Any]) -> str:
+    """``path:line`` in the migrated file, and where the line came from."""
+    if item["note"]:
+        where = "note for the application"
+    elif item["original_line"] is None:
+        where = "a line mint-migrate wrote"
+    else:
+        where = f"original line {item['original_line']}"
+    return f"{path}:{item['migrated_line']} ({where})"
+
+
+def summary(totals: Mapping[str, int]) -> str:
+    """``2 files: 1 changed, 1 unchanged; 3 changes, 1 manual item, 0 unreadable lines``."""
+    files = sum(totals[status] for status in ("changed", "unchanged", "already_v4", "failed"))
+    statuses = [f"{totals['changed']} changed", f"{totals['unchanged']} unchanged"]
+    statuses += [f"{totals['already_v4']} already v4"] if totals["already_v4"] else []
+    statuses += [f"{totals['failed']} failed"] if totals["failed"] else []
+    counts = [
+        plural(totals["changes"], "change"),
+        plural(totals["manual_items"], "manual item"),
+        plural(totals["errors"], "unreadable line"),
+    ]
+    return f"{plural(files, 'file')}: {', '.join(statuses)}; {', '.join(counts)}"

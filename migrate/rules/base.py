@@ -56,6 +56,7 @@ class Rule:
     summary: ClassVar[str]
     evidence: ClassVar[str]
     optional: ClassVar[bool] = False
+    notes: ClassVar[bool] = False  # its items are notes on the whole application, not markers above a line
 
     def apply(self, context: Context) -> Iterator[Action]:
         raise NotImplementedError

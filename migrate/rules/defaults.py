@@ -151,6 +151,7 @@ class ReportDefaults(Rule):
     phase = Phase.MANUAL
     summary = "moves/HOME/IDLE relying on a changed default -> REM MIGRATE line with the v4 statement"
     evidence = "spec S-DEFAULTS; v3:9989, v3:8741, v3:11797, v3:6940-6948; v4:9005-9050, v4:10667, v4:16169"
+    notes = True
 
     def apply(self, context: Context) -> Iterator[Action]:
         notes = []

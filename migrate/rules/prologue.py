@@ -134,6 +134,7 @@ class IoPrologue(Rule):
     phase = Phase.MANUAL
     summary = "moves/HOME/#STOP without v4 I/O assignments -> REM MIGRATE lines with the statements to fill in"
     evidence = "spec S-PROLOGUE; v3:4600, v3:2508-2521; v4:4058-4061, v4:2704-2713, v4:15624-15629"
+    notes = True
 
     def apply(self, context: Context) -> Iterator[Action]:
         notes = []

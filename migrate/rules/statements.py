@@ -11,6 +11,7 @@ from collections.abc import Iterator
 from typing import ClassVar
 
 from mintlang.diagnostics import Span
+from mintlang.migrate.citations import cite
 from mintlang.migrate.context import Context, FileView
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule, selector_text
@@ -106,10 +107,11 @@ class NotAvailable(StatementRule):
 
     def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
         word = statement.keyword.keyword
-        line = 8379 if word.startswith("COMMS") else 7392
+        entry = context.db.rename_of(word)  # the v4 guide's "removed" entry of the keyword
+        where = cite(f"v4:{entry.line}") if entry is not None else "v4 guide"
         if not file.statement_alone(statement):
-            return Refusal(f"{word} is not available in Mint v4 (v4:{line}): delete it")
-        return f"REM {file.slice(statement.span)}: not available in Mint v4 (v4:{line}), removed by mint-migrate"
+            return Refusal(f"{word} is not available in Mint v4 ({where}): delete it")
+        return f"REM {file.slice(statement.span)}: not available in Mint v4 ({where}), removed by mint-migrate"
 
 
 class Contouring(StatementRule):

@@ -32,7 +32,7 @@ def test_dry_run_prints_a_diff_and_writes_nothing(program: Path) -> None:
     code, output = run(str(program))
     assert code == 0
     assert "-HMSPEED = 10 : REM fast" in output and "+HOMESPEED = 10 : REM fast" in output
-    assert "1 changed, 0 unchanged, 0 manual items, 0 errors" in output
+    assert "1 file: 1 changed, 0 unchanged; 2 changes, 0 manual items, 0 unreadable lines" in output
     assert program.read_bytes() == V3.encode("cp1252")
 
 
@@ -50,12 +50,13 @@ def test_check_exits_1_when_changes_are_pending(program: Path) -> None:
     assert run("--check", str(program))[0] == 0
 
 
-def test_manual_items_exit_1(tmp_path: Path) -> None:
+def test_manual_items_are_reported_and_fail_only_with_fail_on_manual(tmp_path: Path) -> None:
     path = tmp_path / "load.mnt"
     path.write_text("LOAD 3\n")
     code, output = run(str(path))
-    assert code == 1
-    assert f"{path}:2: X-HOST LOAD" in output
+    assert code == 0
+    assert f"{path}:2 (original line 1): X-HOST LOAD" in output
+    assert run("--fail-on", "manual", str(path))[0] == 1
 
 
 def test_stdout_prints_the_migrated_text(program: Path) -> None:
@@ -68,11 +69,21 @@ def test_json_report(program: Path) -> None:
     code, output = run("--format", "json", str(program))
     data = json.loads(output)
     assert code == 0
-    assert data["totals"] == {"changed": 1, "unchanged": 0, "manual_items": 0, "errors": 0}
+    assert data["totals"] == {
+        "changed": 1,
+        "unchanged": 0,
+        "already_v4": 0,
+        "failed": 0,
+        "changes": 2,
+        "manual_items": 0,
+        "errors": 0,
+    }
     assert data["rules"] == {"M-DIM": 1, "M-REN": 1}
+    assert data["files"][0]["status"] == "changed"
     assert data["files"][0]["changes"][0] == {
         "rule": "M-REN",
-        "line": 2,
+        "original_line": 2,
+        "migrated_line": 3,  # below the DIM x the migration adds
         "original": "HMSPEED",
         "replacement": "HOMESPEED",
     }

@@ -47,8 +47,9 @@ def test_markup_in_a_program_or_its_path_is_printed_as_text(
     Path("x[").mkdir()
     program(Path(), name, 'DIM x\nPRINT x "[/b]"\nEND\n')
     result = run(name)
-    assert result.exit_code == 1  # a manual item, not a crash
-    assert f"{name}:4: X-COMMENTED not valid Mint v3 either (Syntax error: unexpected '\"[/b]\"')" in result.output
+    assert result.exit_code == 0  # a manual item, not a crash
+    message = "X-COMMENTED not valid Mint v3 either (Syntax error: unexpected '\"[/b]\"')"
+    assert f"{name}:4 (original line 2): {message}" in result.output
     assert any(line.startswith(f" {name} ") and "program" in line for line in result.output.splitlines())
 
 
@@ -100,23 +101,25 @@ def test_write_keeps_hard_links_and_the_mode(tmp_path: Path) -> None:
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.mnt", "b.mnt"]  # no backup left
 
 
-def test_a_failed_overwrite_of_a_hard_linked_file_puts_the_original_back(
+def test_a_failed_write_of_a_hard_linked_file_leaves_every_name_as_it_was(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     path = program(tmp_path, "a.mnt")
     os.link(path, tmp_path / "b.mnt")
-    fill = atomic._fill
 
-    def full_disk(stream: object, data: bytes) -> None:
-        monkeypatch.setattr(atomic, "_fill", fill)  # the restore goes through
-        stream.write(data[:3])  # type: ignore[attr-defined]
+    def full_disk(handle: int, data: bytes, status: os.stat_result) -> None:
+        os.write(handle, data[:3])
         raise OSError(errno.ENOSPC, "No space left on device")
 
     monkeypatch.setattr(atomic, "_fill", full_disk)
-    message = one_line_usage_error(run("--write", path))
-    assert message == f"mint-migrate: cannot write {path}: No space left on device; nothing was written"
-    assert path.read_text() == V3
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.mnt", "b.mnt"]
+    result = run("--write", path)
+    assert result.exit_code == 2
+    assert result.stderr.splitlines() == [
+        f"mint-migrate: cannot write {path}: No space left on device",
+        f"mint-migrate: 0 of 1 file written; not written: {path}",
+    ]
+    assert path.read_text() == V3 and (tmp_path / "b.mnt").read_text() == V3
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.mnt", "b.mnt"]  # no temporary file left
 
 
 def test_a_read_only_file_is_refused_even_for_root(tmp_path: Path) -> None:
@@ -148,23 +151,25 @@ def test_every_file_is_checked_before_the_first_is_written(tmp_path: Path) -> No
     assert first.read_text() == V3
 
 
-def test_a_write_that_fails_midway_names_the_file_and_what_was_written(
+def test_a_file_that_cannot_be_written_is_named_and_the_others_are_written(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     paths = [program(tmp_path, name) for name in ("a.mnt", "b.mnt", "c.mnt")]
-    write = migrate_cli.write_file
+    write = atomic.write
 
-    def fails_on_b(real: Path, data: bytes) -> None:
+    def fails_on_b(real: Path, data: bytes, expected: bytes) -> None:
         if real.name == "b.mnt":
             raise OSError(errno.ENOSPC, "No space left on device")
-        write(real, data)
+        write(real, data, expected)
 
-    monkeypatch.setattr(migrate_cli, "write_file", fails_on_b)
-    message = one_line_usage_error(run("--write", tmp_path))
-    assert message == (
-        f"mint-migrate: cannot write {paths[1]}: No space left on device; written: {paths[0]}; not written: {paths[2]}"
-    )
-    assert [path.read_text() for path in paths] == [V4, V3, V3]
+    monkeypatch.setattr(atomic, "write", fails_on_b)
+    result = run("--write", tmp_path)
+    assert result.exit_code == 2
+    assert result.stderr.splitlines() == [
+        f"mint-migrate: cannot write {paths[1]}: No space left on device",
+        f"mint-migrate: 2 of 3 files written; not written: {paths[1]}",
+    ]
+    assert [path.read_text() for path in paths] == [V4, V3, V4]
 
 
 def test_a_byte_order_mark_stays_first(tmp_path: Path) -> None:

@@ -1,0 +1,102 @@
+"""Where a place of one pass's text was in the original, and where it ends up in the migrated text.
+
+The engine applies edits pass after pass, each on the text the last one produced.
+A report needs both ends of every item: a change's line in the original and in
+the migrated file, a marked line's line in the original (or that the migrator
+wrote it). ``History`` keeps each pass's edits, sorted, with where each ends in the
+text it produced and how much the edits before it grew the text, so that mapping
+an offset through a pass is a bisection instead of a walk over every edit.
+"""
+
+from __future__ import annotations
+
+from bisect import bisect_left, bisect_right
+from dataclasses import dataclass, field
+
+from mintlang.diagnostics import Span
+
+
+@dataclass(frozen=True, slots=True)
+class Edit:
+    """``text`` in place of ``span`` of one pass's text, asked for by ``rule``."""
+
+    rule: str
+    span: Span
+    text: str
+
+
+@dataclass(frozen=True, slots=True)
+class _Batch:
+    """The edits of one pass, sorted, with their starts, where each ends in the text they
+    produced, and the growth of the edits before each (one more: all of them)."""
+
+    edits: list[Edit]
+    starts: list[int]
+    new_ends: list[int]
+    shifts: list[int]
+
+    @classmethod
+    def of(cls, edits: list[Edit]) -> _Batch:
+        new_ends: list[int] = []
+        shifts = [0]
+        for edit in edits:
+            new_ends.append(edit.span.start + shifts[-1] + len(edit.text))
+            shifts.append(shifts[-1] + len(edit.text) - (edit.span.end - edit.span.start))
+        return cls(edits, [edit.span.start for edit in edits], new_ends, shifts)
+
+    def back(self, offset: int, *, at_start: bool) -> tuple[int, bool]:
+        """``offset`` of the produced text in the text before the pass, and whether it lies in
+        text an edit wrote (then it maps to the start, or end, of what that edit replaced).
+        The first character of a replacement stands for the first it replaced."""
+        first = bisect_left(self.new_ends, offset)  # the edits before it end before ``offset``
+        shift = self.shifts[first]
+        for edit in self.edits[first:]:
+            new_start = edit.span.start + shift
+            new_end = new_start + len(edit.text)
+            if offset < new_start or (offset == new_start and at_start and edit.span.start != edit.span.end):
+                break
+            if offset < new_end or (offset == new_end and not at_start and offset > new_start):
+                return (edit.span.start if at_start else edit.span.end), True
+            shift += len(edit.text) - (edit.span.end - edit.span.start)
+        return offset - shift, False
+
+    def forward(self, offset: int) -> int:
+        """``offset`` of the text before the pass in the text it produced: after whatever was
+        inserted at it, or at the start of the text that replaced it."""
+        before = bisect_right(self.starts, offset)  # the edits starting at or before ``offset``
+        if before and self.edits[before - 1].span.start <= offset < self.edits[before - 1].span.end:
+            return self.edits[before - 1].span.start + self.shifts[before - 1]
+        return offset + self.shifts[before]
+
+
+@dataclass
+class History:
+    """The passes applied to one file, oldest first."""
+
+    batches: list[_Batch] = field(default_factory=list)
+
+    def record(self, edits: list[Edit]) -> None:
+        self.batches.append(_Batch.of(edits))
+
+    def to_source(self, span: Span) -> Span:
+        """``span`` of the current text in the original: offsets outside earlier edits shift by
+        their growth; an offset inside text an earlier edit wrote maps to what it replaced."""
+        start, end = span
+        for batch in reversed(self.batches):
+            start, _ = batch.back(start, at_start=True)
+            end = start if span.start == span.end else batch.back(end, at_start=False)[0]
+        return Span(start, max(start, end))
+
+    def origin(self, offset: int) -> int | None:
+        """``offset`` of the current text in the original, or None when the migrator wrote it."""
+        for batch in reversed(self.batches):
+            offset, written = batch.back(offset, at_start=True)
+            if written:
+                return None
+        return offset
+
+    def forward(self, offset: int, after: int) -> int:
+        """``offset`` of the text the first ``after`` passes produced, in the current text."""
+        for batch in self.batches[after:]:
+            offset = batch.forward(offset)
+        return offset

@@ -1,0 +1,39 @@
+"""The manual items of a text: its ``REM MIGRATE:`` lines, each with the line it marks.
+
+Items are read back from the migrated text rather than kept from the rules, so a
+second run over migrated text reports what the first did, and markers a user has
+not dealt with yet stay listed. A marker marks the first line below it that is not
+a marker; an application note (S-PROLOGUE, S-DEFAULTS: a statement to fill in at
+the top of the application) marks no line, so its own line is where to act.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+
+from mintlang.diagnostics import LineIndex, split_lines
+from mintlang.migrate.context import MARKER_LINE
+from mintlang.migrate.model import ManualItem
+from mintlang.migrate.rules import RULES
+
+NOTE_RULES = frozenset(rule.id for rule in RULES if rule.notes)
+
+
+def manual_items(text: str, origin: Callable[[int], int | None], source: LineIndex) -> Iterator[ManualItem]:
+    """Every marker of ``text`` in line order; ``origin`` maps an offset of ``text`` to the
+    original source (indexed by ``source``), or to None where the migrator wrote the text."""
+    pending: list[tuple[int, str, str]] = []  # the markers waiting for the line they mark
+    offset = 0
+    for number, line in enumerate(split_lines(text, keepends=True), start=1):
+        found = MARKER_LINE.match(line.rstrip("\r\n"))
+        if found and found["rule"] in NOTE_RULES:
+            yield ManualItem(found["rule"], number, found["reason"], None, note=True)
+        elif found:
+            pending.append((number, found["rule"], found["reason"]))
+        else:
+            start = origin(offset)
+            original = source.position(start).line if start is not None else None
+            yield from (ManualItem(rule, number, reason, original) for _, rule, reason in pending)
+            pending = []
+        offset += len(line)
+    yield from (ManualItem(rule, number, reason, None) for number, rule, reason in pending)  # nothing below

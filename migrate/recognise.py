@@ -1,0 +1,46 @@
+"""Telling an application already in Mint v4 from a v3 one, so that a run leaves it alone.
+
+The rewrite rules already leave v4 text as it is; the notes and markers would not:
+a migrated file whose ``REM MIGRATE:`` lines were dealt with and removed would get
+its prologue notes back, as any v3 program that needs no rewrite does. What tells
+the two apart is a form v3 could not have written:
+
+* a scalar ``DIM``: v3's DIM declares arrays only (v3:7304), v4 wants every
+  variable declared (v4:897-910), and the migrator declares each one it finds;
+* a v4 keyword that v3 did not have (``HOMESPEED``, ``POSTARGET``), as the v4 reader
+  sees it;
+* a note the migrator wrote (``REM … removed by mint-migrate``).
+
+So an application is taken as Mint v4 when the rewrite rules find nothing to
+rewrite in it and one of its files shows such a form. A file that reads the same
+in both versions (no variable, no v4-only keyword) cannot be told from a v3
+original, and is migrated as one: the notes come back rather than being lost.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+
+import mintlang
+from mintlang.keyworddb import database
+from mintlang.semantic.units import Unit
+from mintlang.syntax import nodes as n
+
+_NOTE = re.compile(r"^[ \t]*REM\b.*\bby mint-migrate[ \t]*$", re.IGNORECASE | re.MULTILINE)
+
+
+def shows_v4(texts: Mapping[Unit, str], controller: str) -> bool:
+    """Whether the files (configuration, program) show a form only Mint v4 has."""
+    if any(_NOTE.search(text) for text in texts.values()):
+        return True
+    configuration = None
+    if Unit.CONFIGURATION in texts:
+        configuration = mintlang.parse(texts[Unit.CONFIGURATION], "v4")
+    program = mintlang.parse(
+        texts[Unit.PROGRAM], "v4", macros=configuration.macros if configuration is not None else None
+    )
+    model = mintlang.build_model(program, configuration, controller)
+    if any(isinstance(statement, n.Dim) and statement.size is None for _, _, statement in model.index.statements):
+        return True
+    return any(database().lookup_v3(use.keyword.keyword) is None for use in model.index.keyword_uses)

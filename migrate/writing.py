@@ -1,0 +1,82 @@
+"""``--write``: each changed file replaced atomically (``atomic``), and only while it still
+holds what the migration read.
+
+Every file to write is checked (``atomic.target``) before the first is written: a
+read-only file or a device stops the run with nothing written. Then each
+application is written on its own. If one of its files changed on disk since it
+was read (an edit saved during the migration), none of its files is written, as
+they were migrated together and the edit must not be lost; a file that cannot be
+written is reported and the others go on. Each problem is one line naming the
+file, and a last line says which files were not written.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+from mintlang.migrate import atomic
+from mintlang.migrate.applications import Migrated
+from mintlang.migrate.atomic import Stale, Unwritable, target
+from mintlang.migrate.report import plural
+from mintlang.source import SourceFile
+
+
+def write_changed(applications: Sequence[Sequence[Migrated]]) -> list[str]:
+    """Write the changed files of each application; the problems met, one line each."""
+    plans = [
+        [(_target(item.file), item.file, text) for item, text in _changed(application)] for application in applications
+    ]
+    problems: list[str] = []
+    left: list[str] = []
+    for application, plan in zip(applications, plans, strict=True):
+        if not plan:
+            continue
+        stale = [str(item.file.path) for item in application if _content(item.file.path) != item.file.encode()]
+        if stale:
+            problems.append(f"{_changed_since(stale)}: not written, so the edit is kept; migrate again")
+            left += [str(file.path) for _, file, _ in plan]
+            continue
+        for real, file, text in plan:
+            problem = _write(real, file, text)
+            if problem is not None:
+                problems.append(problem)
+                left.append(str(file.path))
+    if left:
+        total = sum(len(plan) for plan in plans)
+        problems.append(f"{total - len(left)} of {plural(total, 'file')} written; not written: {', '.join(left)}")
+    return problems
+
+
+def _changed(application: Sequence[Migrated]) -> list[tuple[Migrated, str]]:
+    """The files the migration changed, with their new text."""
+    return [(item, result.text) for item in application if (result := item.entry.result) is not None and result.changed]
+
+
+def _target(file: SourceFile) -> Path:
+    try:
+        return target(file.path)
+    except Unwritable as error:
+        raise Unwritable(f"{error}; nothing was written") from None
+
+
+def _write(real: Path, file: SourceFile, text: str) -> str | None:
+    """Write one file; None, or what went wrong."""
+    try:
+        atomic.write(real, file.encode(text), file.encode())
+    except Stale:
+        return f"{_changed_since([str(file.path)])}: not written, so the edit is kept; migrate again"
+    except OSError as error:
+        return f"cannot write {real}: {error.strerror or error}"
+    return None
+
+
+def _changed_since(paths: list[str]) -> str:
+    return f"{', '.join(paths)} changed since {'it was' if len(paths) == 1 else 'they were'} read"
+
+
+def _content(path: Path) -> bytes | None:
+    try:
+        return path.read_bytes()
+    except OSError:
+        return None

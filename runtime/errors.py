@@ -8,7 +8,11 @@ the run; nothing else in the runtime should raise for a program's mistake.
 
 from __future__ import annotations
 
+from typing import Protocol
+
 from mintlang.keyworddb import database
+
+AXIS_ERROR_PRESENT = 500  # ERR in #ONERROR for an asynchronous motion error (EV-17 RC)
 
 
 def error_title(code: int) -> str:
@@ -47,3 +51,48 @@ class NotSimulated(Exception):
     def __init__(self, keyword: str, use: str) -> None:
         super().__init__(f"{keyword} ({use}) is not simulated by mint-run")
         self.keyword = keyword
+
+
+class ErrorStyle(Protocol):
+    """How a dialect numbers errors for ``ERR`` and words the messages the controller prints."""
+
+    def number(self, error: MintError) -> int | None:
+        """What ``ERR`` reads after ``error``; None when ``#ONERROR`` cannot take it and the run ends.
+
+        Raises ``NotSimulated`` for an error the dialect has no counterpart of.
+        """
+        ...
+
+    def message(self, error: MintError, unit: str | None, line: int | None, *, explained: bool = True) -> str:
+        """The message of a run-time error at ``line`` of ``unit`` (``"program"`` or ``"configuration"``)."""
+        ...
+
+    def compiled(self, code: int, unit: str, line: int, explanation: str | None = None) -> str:
+        """The message of compile error ``code``, which stops ``unit`` before it runs (``explanation``: the
+        checker's own words, for the report; without it the message is as the controller prints it)."""
+        ...
+
+    def motion_error(self, axis: int, bits: int) -> MintError:
+        """The error an axis raises when errors ``bits`` (``AXISERROR``) latch on it."""
+        ...
+
+
+class V4Errors:
+    """Mint v4: ``ERR`` is the error's own number; ``R0003: PROGRAM Data specified out of range [line 20]``."""
+
+    def number(self, error: MintError) -> int | None:
+        return error.code
+
+    def message(self, error: MintError, unit: str | None, line: int | None, *, explained: bool = True) -> str:
+        """``R0003: PROGRAM Data specified out of range [axis/channel 0] [line 20]`` (EV-13 RC)."""
+        described = error.describe(explained=explained)
+        if unit is None:
+            return described
+        return described.replace(":", f": {unit.upper()}", 1) + f" [line {line}]"
+
+    def compiled(self, code: int, unit: str, line: int, explanation: str | None = None) -> str:
+        """``C2014: PROGRAM Incorrect loop terminator [line 12]``."""
+        return f"C{code:04d}: {unit.upper()} {explanation or error_title(code)} [line {line}]"
+
+    def motion_error(self, axis: int, bits: int) -> MintError:
+        return MintError(AXIS_ERROR_PRESENT, axis, f"AXISERROR {bits}")

@@ -15,7 +15,7 @@ DEFAULT_PLACES = 4
 MAX_USING_DIGITS = 15
 
 
-def _truncated(value: float, places: int) -> tuple[bool, int, int]:
+def truncated(value: float, places: int) -> tuple[bool, int, int]:
     """(negative, whole part, fraction digits as an integer) of ``value`` cut toward zero to ``places``."""
     numerator, denominator = value.as_integer_ratio()
     scale = 10**places
@@ -27,7 +27,7 @@ def format_number(value: float) -> str:
     """``PRINT x``: 4 places, truncated, trailing zeros and a bare point dropped (PR-1 RC); never prints ``-0``."""
     if value.is_integer():
         return str(int(value))
-    negative, whole, fraction = _truncated(value, DEFAULT_PLACES)
+    negative, whole, fraction = truncated(value, DEFAULT_PLACES)
     digits = f"{fraction:0{DEFAULT_PLACES}d}".rstrip("0")
     text = f"{whole}.{digits}" if digits else str(whole)
     return "-" + text if negative else text
@@ -42,7 +42,7 @@ def format_using(value: float, integer_digits: int, fraction_digits: int | None)
     """
     width = min(abs(integer_digits), MAX_USING_DIGITS)
     places = min(max(fraction_digits or 0, 0), MAX_USING_DIGITS)
-    negative, whole, fraction = _truncated(value, places)
+    negative, whole, fraction = truncated(value, places)
     text = f"{whole:0{width}d}"
     if places:
         text += f".{fraction:0{places}d}"

@@ -53,6 +53,7 @@ class Terminal:
         self._watched: dict[str, str | None] = {}  # text -> the output that may begin it, None once printed
         self.column = 0
         self.printed = 0  # characters written in all, kept or not
+        self.query = ""  # what INPUT prints after its prompt: nothing in v4; Mint v3's "?" while PON is in force
 
     @property
     def text(self) -> str:
@@ -146,6 +147,12 @@ class Terminal:
         if target < self.column:
             self.newline()
         self.write(" " * (target - self.column))
+
+    def prompt(self, text: str) -> str:
+        """What ``INPUT`` prints before it waits: its prompt, then the query mark (after a space) if any."""
+        if not self.query:
+            return text
+        return f"{text} {self.query}" if text else self.query
 
     def type_keys(self, text: str) -> None:
         """Queue scripted keystrokes; ``INKEY`` and ``INPUT`` consume them in order."""

@@ -13,13 +13,12 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 
-from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Addressing
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.keywords import KeywordTable, Reader
-from mintlang.runtime.numbers import BINARY_OPERATORS, FUNCTIONS, UNARY_OPERATORS, bits24, f32
+from mintlang.runtime.numbers import bits24
+from mintlang.runtime.semantics import Semantics
 from mintlang.syntax import nodes as n
 
 Evaluate = Callable[[], float]
@@ -38,21 +37,17 @@ class Names:
     macros: frozenset[str] = frozenset()  # a macro's name left in another macro's text is not expanded
 
 
-def is_axis_keyword(keyword: str) -> bool:
-    record = database().keywords.get(keyword)
-    return record is not None and record.addressing is Addressing.AXIS
-
-
 class ExpressionCompiler:
-    def __init__(self, vm: Interpreter, table: KeywordTable, names: Names) -> None:
+    def __init__(self, vm: Interpreter, table: KeywordTable, names: Names, semantics: Semantics) -> None:
         self.vm = vm
         self.table = table
         self.names = names
+        self.semantics = semantics
 
     def compile(self, expression: n.Expression) -> Evaluate:
         kind = type(expression)
         if kind is n.Number or kind is n.CharConstant:
-            value = f32(float(expression.value))  # type: ignore[union-attr]
+            value = self.semantics.number(float(expression.value))  # type: ignore[union-attr]
             return lambda: value
         if kind is n.Parenthesised:
             return self.compile(expression.expression)  # type: ignore[union-attr]
@@ -64,7 +59,7 @@ class ExpressionCompiler:
             return self.binary(expression)  # type: ignore[arg-type]
         if kind is n.Unary:
             operand = self.compile(expression.operand)  # type: ignore[union-attr]
-            unary = UNARY_OPERATORS[expression.operator]  # type: ignore[union-attr]
+            unary = self.semantics.unary[expression.operator]  # type: ignore[union-attr]
             return lambda: unary(operand())
         if kind is n.ConstantRef:
             return self.constant(expression)  # type: ignore[arg-type]
@@ -110,14 +105,13 @@ class ExpressionCompiler:
     def binary(self, expression: n.Binary) -> Evaluate:
         left = self.compile(expression.left)
         right = self.compile(expression.right)
-        operate = BINARY_OPERATORS[expression.operator]
+        operate = self.semantics.binary[expression.operator]
         return lambda: operate(left(), right())
 
     def constant(self, expression: n.ConstantRef) -> Evaluate:
-        record = database().constants.get(expression.name.upper())
-        if record is None:
+        value = self.semantics.constants.get(expression.name.upper())
+        if value is None:
             raise NotSimulated(expression.name, "constant")
-        value = float(record.value)
         return lambda: value
 
     def keyword(self, reference: n.KeywordRef) -> Evaluate:
@@ -153,11 +147,11 @@ class ExpressionCompiler:
         selector = reference.selector
         if selector is not None:
             return tuple(self.compile(item) if item is not None else _missing for item in selector.items)
-        return True if is_axis_keyword(reference.keyword) else None
+        return True if reference.keyword in self.semantics.axis_keywords else None
 
     def call(self, call: n.Call) -> Evaluate:
         arguments = tuple(self.compile(argument) for argument in call.arguments)
-        function = FUNCTIONS.get(call.function)
+        function = self.semantics.functions.get(call.function)
         if function is not None:
             if len(arguments) == 1:
                 (only,) = arguments

@@ -10,7 +10,7 @@ program it ends the run.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from mintlang.runtime.errors import MintError, NotSimulated
@@ -19,6 +19,7 @@ from mintlang.runtime.interpreter.expressions import ExpressionCompiler, Names
 from mintlang.runtime.interpreter.statements import FileLayout, StatementCompiler
 from mintlang.runtime.interpreter.vm import Interpreter, Operation, Site, StopReason
 from mintlang.runtime.keywords import KeywordTable
+from mintlang.runtime.semantics import Semantics
 from mintlang.runtime.terminal import Terminal
 from mintlang.semantic.blocks import Block, Place
 from mintlang.semantic.model import SemanticModel
@@ -36,11 +37,14 @@ class Linked:
     names: Names
 
 
-def link(model: SemanticModel, vm: Interpreter, table: KeywordTable, terminal: Terminal) -> Linked:
-    """Compile ``model`` into ``vm``; raises ``NotSimulated`` or ``MintError`` for what cannot run."""
+def link(
+    model: SemanticModel, vm: Interpreter, table: KeywordTable, terminal: Terminal, semantics: Semantics
+) -> Linked:
+    """Compile ``model`` into ``vm`` with the meaning ``semantics`` gives it; raises ``NotSimulated`` or
+    ``MintError`` for what cannot run."""
     names = Names(macros=frozenset(model.symbols.macros))
-    _allocate(model, vm, names)
-    expressions = ExpressionCompiler(vm, table, names)
+    _allocate(model, vm, names, semantics.initial)
+    expressions = ExpressionCompiler(vm, table, names, semantics)
     handlers: dict[Unit, Mapping[str, int]] = {}
     units = list(model.documents())
     start = 0
@@ -111,7 +115,7 @@ def _blocks_by_place(blocks: tuple[Block, ...]) -> dict[Place, Block]:
     return found
 
 
-def _allocate(model: SemanticModel, vm: Interpreter, names: Names) -> None:
+def _allocate(model: SemanticModel, vm: Interpreter, names: Names, initial: Callable[[float], float]) -> None:
     """Slots for every variable and array, arrays sized and initialised from their DIM."""
     for symbol in model.symbols.variables.values():
         names.scalars[symbol.identity] = len(vm.scalars)
@@ -119,11 +123,10 @@ def _allocate(model: SemanticModel, vm: Interpreter, names: Names) -> None:
     for _, _, facts in model.lines:
         for statement in facts.statements:
             if type(statement) is n.Dim and statement.size is not None and array_problem(statement) is None:
-                _dim_array(statement, vm, names)
+                _dim_array(statement, vm, names, [initial(value) for value in initial_values(statement)])
 
 
-def _dim_array(statement: n.Dim, vm: Interpreter, names: Names) -> None:
-    initial = initial_values(statement)
+def _dim_array(statement: n.Dim, vm: Interpreter, names: Names, initial: list[float]) -> None:
     identity = statement.name.identity
     if identity in names.arrays:
         vm.arrays[names.arrays[identity]][:] = initial

@@ -18,8 +18,7 @@ from mintlang.runtime.interpreter.arrays import array_problem
 from mintlang.runtime.interpreter.expressions import Evaluate, ExpressionCompiler
 from mintlang.runtime.interpreter.vm import Interpreter, Loop, Operation, Recovery
 from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordTable
-from mintlang.runtime.numbers import f32
-from mintlang.runtime.printing import format_bin, format_chr, format_hex, format_number, format_using
+from mintlang.runtime.printing import format_bin, format_chr, format_hex
 from mintlang.runtime.ranges import check_range, table_bounds
 from mintlang.runtime.terminal import Terminal
 from mintlang.semantic.blocks import Block, BlockKind, Place
@@ -65,6 +64,7 @@ class StatementCompiler:
         self.table = table
         self.terminal = terminal
         self.expressions = expressions
+        self.number = expressions.semantics.number
         self.positions = layout.positions
         self.blocks = layout.blocks
         self.labels = layout.labels
@@ -116,21 +116,23 @@ class StatementCompiler:
             self.expressions.variable(target.name)
             scalars = self.vm.scalars
             slot = self.expressions.names.scalars[target.name.identity]
+            number = self.number
 
             def store_scalar(value: float) -> None:
-                scalars[slot] = f32(value)
+                scalars[slot] = number(value)
 
             return store_scalar
         element: n.ElementRef = target  # type: ignore[assignment]
         values = self.expressions.element_slot(element.name)
         index = self.expressions.compile(element.index)
         size = len(values)
+        number = self.number
 
         def store_element(value: float) -> None:
             position = int(index())
             if not 1 <= position <= size:
                 raise MintError(2016, detail=f"index {position} outside 1 to {size}")
-            values[position - 1] = f32(value)
+            values[position - 1] = number(value)
 
         return store_element
 
@@ -167,6 +169,9 @@ class StatementCompiler:
             return self._line(statement)
         if reference.keyword == "PROTECT" and statement.values is None:
             return _nothing  # PROTECT <password> locks the buffer where it is stored; running it does nothing
+        printer = self.expressions.semantics.printers.get(reference.keyword)
+        if printer is not None and statement.values is None:
+            return self._printing_keyword(statement, printer)
         access = self.table.in_program(reference.keyword)
         channels = self._channels(reference)
         vm = self.vm
@@ -396,12 +401,13 @@ class StatementCompiler:
         self._recover(pc, pc + 1, opener)
         vm = self.vm
         scalars = vm.scalars
+        add = self.expressions.semantics.binary["+"]
 
         def next_() -> None:
             loop = vm.innermost_loop(opener)
             if loop is None:
                 raise MintError(2009, detail="NEXT reached outside its FOR loop")
-            candidate = f32(scalars[loop.slot] + loop.step)
+            candidate = add(scalars[loop.slot], loop.step)
             if (loop.step >= 0 and candidate > loop.end) or (loop.step < 0 and candidate < loop.end):
                 vm.leave_loop(opener)  # the variable keeps the last value the body ran with (NM-9)
                 return
@@ -530,7 +536,10 @@ class StatementCompiler:
 
         return print_
 
-    def _print_item(self, item: n.PrintItem, using: tuple[Evaluate, ...]) -> tuple[Callable[[], str], str | None]:
+    def _print_item(
+        self, item: n.PrintItem, using: tuple[Evaluate, ...], render: Callable[[float], str] | None = None
+    ) -> tuple[Callable[[], str], str | None]:
+        """One item's text; ``render``, when given, prints every number (BINARY's binary digits)."""
         value = item.value
         if value is None:
             return (lambda: ""), item.separator
@@ -541,6 +550,9 @@ class StatementCompiler:
             code = self.expressions.compile(value)
             return (lambda: format_chr(code())), item.separator
         number = self.expressions.compile(value)  # type: ignore[arg-type]
+        semantics = self.expressions.semantics
+        if render is not None:
+            return (lambda: render(number())), item.separator
         if item.format == "HEX":
             return (lambda: format_hex(number())), item.separator
         if item.format == "BIN":
@@ -548,10 +560,34 @@ class StatementCompiler:
         if using:
             whole = using[0]
             fraction = using[1] if len(using) > 1 else None
+            format_using = semantics.format_using
             return (
                 lambda: format_using(number(), int(whole()), int(fraction()) if fraction is not None else None)
             ), item.separator
+        format_number = semantics.format_number
         return (lambda: format_number(number())), item.separator
+
+    @staticmethod
+    def _items(
+        arguments: tuple[n.Expression | n.StringLiteral, ...], formats: tuple[str | None, ...], trailing: bool
+    ) -> list[n.PrintItem]:
+        """A terminal command's arguments as PRINT items, joined by commas (a trailing one keeps the line open)."""
+        last = len(arguments) - 1
+        return [
+            n.PrintItem(value.span, value, format, "," if index < last or trailing else None)
+            for index, (value, format) in enumerate(zip(arguments, formats or (None,) * len(arguments), strict=True))
+        ]
+
+    def _printing_keyword(self, statement: n.KeywordStatement, render: Callable[[float], str]) -> Operation:
+        """``BINARY "12 is ", 12``: PRINT with every number in the keyword's own format (001:6209-6239)."""
+        items = self._items(statement.arguments, statement.formats, statement.trailing)
+        parts = tuple(self._print_item(item, (), render) for item in items)
+        terminal = self.terminal
+
+        def print_() -> None:
+            terminal.print_items([(text(), separator) for text, separator in parts], newline=True)
+
+        return print_
 
     def _line(self, statement: n.KeywordStatement) -> Operation:
         """``LINE n, items``: the items on a line of their own, as PRINT prints them (000:13630-13668).
@@ -562,13 +598,7 @@ class StatementCompiler:
         if not statement.arguments:
             raise MintError(NO_EXPRESSION, detail="LINE needs a line number and what to print")
         using = tuple(self.expressions.compile(value) for value in statement.using)
-        printed = statement.arguments[1:]
-        formats = statement.formats[1:] or (None,) * len(printed)
-        last = len(printed) - 1
-        items = [
-            n.PrintItem(value.span, value, format, "," if index < last or statement.trailing else None)
-            for index, (value, format) in enumerate(zip(printed, formats, strict=True))
-        ]
+        items = self._items(statement.arguments[1:], statement.formats[1:], statement.trailing)
         parts = tuple(self._print_item(item, using) for item in items)
         terminal = self.terminal
 
@@ -591,7 +621,8 @@ class StatementCompiler:
         def input_() -> bool:
             key = (len(vm.frames), pc)
             if key not in prompted:
-                terminal.print_items([(prompt, ",")] if prompt else [], newline=False)
+                shown = terminal.prompt(prompt)
+                terminal.print_items([(shown, ",")] if shown else [], newline=False)
                 prompted.add(key)
             entry = terminal.read_number()
             if entry is None:
@@ -617,12 +648,13 @@ class StatementCompiler:
             return lambda value: value
         places = self.expressions.compile(using[0])
         fraction = self.expressions.compile(using[1]) if len(using) > 1 else (lambda: 0.0)
+        number = self.number
 
         def accept(value: float) -> float | None:
             if value < 0 and places() >= 0:
                 return None
             scale = 10.0 ** min(max(int(fraction()), 0), 3)
-            return f32(math.trunc(value * scale) / scale)
+            return number(math.trunc(value * scale) / scale)
 
         return accept
 

@@ -17,7 +17,7 @@ from typing import Protocol
 
 from mintlang.controllers import NestingLimits
 from mintlang.runtime.clock import NEVER, Clock
-from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.errors import ErrorStyle, MintError, NotSimulated, V4Errors
 from mintlang.semantic.blocks import BlockKind, nesting_problem
 
 Operation = Callable[[], bool | None]
@@ -123,6 +123,7 @@ class Interpreter:
         self.announce: Callable[[str], None] = lambda message: None  # the controller prints its error message
         self.events: EventSource | None = None
         self.executing: int | None = None  # the pc of the operation running now, outside a slice None
+        self.errors: ErrorStyle = V4Errors()  # how the dialect numbers errors and words their messages
 
     # ------------------------------------------------------------------ running
 
@@ -151,8 +152,7 @@ class Interpreter:
             except MintError as error:
                 self.fail(error, pc)
             except NotSimulated as missing:
-                self.stop(StopReason.ERROR, str(missing))
-                self.on_fatal()
+                self.not_simulated(missing)
                 return
             finally:
                 self.executing = None
@@ -170,6 +170,11 @@ class Interpreter:
             self.stopped = reason
             self.stop_site = self.current_site()
             self.message = message
+
+    def not_simulated(self, missing: NotSimulated) -> None:
+        """The run meets what the simulator does not model: it stops there, and says what."""
+        self.stop(StopReason.ERROR, str(missing))
+        self.on_fatal()
 
     def _finish(self) -> None:
         self.stop(StopReason.END)
@@ -267,7 +272,17 @@ class Interpreter:
     def fail(self, error: MintError, pc: int) -> None:
         """A run-time error at ``pc``: record it, then call ``#ONERROR`` or end the run."""
         site = self.sites[pc] if pc < len(self.sites) else None
-        self.record_error(error.code, site.line if site else 0, error.axis)
+        try:
+            number = self.errors.number(error)
+        except NotSimulated as missing:
+            self.pc = pc
+            self.not_simulated(missing)
+            return
+        if number is None:  # an error no handler may take
+            self.pc = pc
+            self.halt(error, site)
+            return
+        self.record_error(number, site.line if site else 0, error.axis)
         handler = self.events.error_handler() if self.events is not None else None
         inside_handler = any(frame.rank == 0 for frame in self.frames)
         if handler is not None and not inside_handler:
@@ -290,13 +305,11 @@ class Interpreter:
         self.stop(StopReason.ERROR, self.error_message(error, site))
         self.on_fatal()
 
-    @staticmethod
-    def error_message(error: MintError, site: Site | None, *, explained: bool = True) -> str:
-        """``R0003: PROGRAM Data specified out of range [axis/channel 0] [line 20]`` (EV-13 RC)."""
-        described = error.describe(explained=explained)
+    def error_message(self, error: MintError, site: Site | None, *, explained: bool = True) -> str:
+        """The message of ``error`` at ``site``, as the dialect words it."""
         if site is None:
-            return described
-        return described.replace(":", f": {site.unit.upper()}", 1) + f" [line {site.line}]"
+            return self.errors.message(error, None, None, explained=explained)
+        return self.errors.message(error, site.unit, site.line, explained=explained)
 
     def record_error(self, code: int, line: int, axis: int | None) -> None:
         self.err = float(code)

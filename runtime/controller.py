@@ -3,7 +3,9 @@
 ``build_controller`` compiles the application into the interpreter and
 connects every part: motion errors reach ``#ONERROR`` (or end the run), stop
 inputs reach ``#STOP``, host writes reach ``#COMMSx``, and an unhandled error
-aborts every axis, as a NextMove does.
+aborts every axis, as a NextMove does. A Mint v3 program runs on the same
+machine through the v3 layer (``dialects/v3/machine.py``): its keyword table,
+its interrupts and its error numbers.
 """
 
 from __future__ import annotations
@@ -11,10 +13,13 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from mintlang.controllers import ControllerProfile
+from mintlang.dialect import Dialect
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.comms.packets import HostEndpoint
 from mintlang.runtime.comms.server import HostPortServer
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.dialects import semantics
+from mintlang.runtime.dialects.v3 import machine as v3_machine
 from mintlang.runtime.events import MINTDRIVE, NEXTMOVE, EventClass, Events
 from mintlang.runtime.hardware import simulated
 from mintlang.runtime.inert import InertSettings
@@ -33,8 +38,6 @@ from mintlang.runtime.system import System
 from mintlang.runtime.terminal import Terminal
 from mintlang.runtime.world import World
 from mintlang.semantic.model import SemanticModel
-
-AXIS_ERROR_PRESENT = 500  # ERR in #ONERROR for an asynchronous motion error (EV-17 RC)
 
 
 def build_plant(choice: PlantChoice | None) -> Plant:
@@ -72,12 +75,16 @@ def build_controller(
     model: SemanticModel,
     scenario: Scenario,
     *,
+    machine: ControllerProfile | None = None,
     slice_statements: int = 20,
     host_port: int | None = None,
     echo: Callable[[str], None] | None = None,
 ) -> Controller:
-    """Assemble the controller for ``model``; raises ``NotSimulated`` or ``MintError`` when it cannot compile."""
-    profile = simulated(model.controller.controller)
+    """Assemble the controller for ``model`` (on ``machine``, by default the model's controller as simulated);
+    raises ``NotSimulated`` or ``MintError`` when it cannot compile."""
+    profile = machine or simulated(model.controller.controller)
+    meaning = semantics(model.program.dialect)
+    v3 = meaning.dialect is Dialect.V3
     clock = Clock()
     table = KeywordTable(profile.controller)
     terminal = Terminal(echo)
@@ -92,7 +99,7 @@ def build_controller(
     vm.default_axes = tuple(range(len(axes)))
     motion = Motion(axes, profile, clock)
     handlers: dict[str, int] = {}
-    dispatch = NEXTMOVE if profile.controller.value.startswith("nextmove") else MINTDRIVE
+    dispatch = v3_machine.DISPATCH if v3 else NEXTMOVE if profile.controller.value.startswith("nextmove") else MINTDRIVE
     events = Events(clock, handlers, lambda message: vm.stop(StopReason.ERROR, message), dispatch)
     io = DigitalIO(profile, clock, events)
     events.imask = io.all_inputs  # IMASK: every input of the controller may raise #INx (EV-7)
@@ -105,22 +112,36 @@ def build_controller(
         extend(table, motion)
     motion.input_active = io.is_active
     motion.index_pulses = {pulse.axis: pulse for pulse in scenario.index_pulses}
-    linked = link(model, vm, table, terminal)
-    handlers.update(linked.handlers)
-    events.configuration_handlers = linked.configuration_handlers
+    layer = (
+        v3_machine.install(
+            table, clock=clock, motion=motion, io=io, events_=events, system=system, vm=vm, terminal=terminal
+        )
+        if v3
+        else None
+    )
+    if layer is not None:
+        table, inert = layer.table, layer.inert
+    linked = link(model, vm, table, terminal, meaning)
+    interrupts = v3_machine.handlers if v3 else dict
+    handlers.update(interrupts(linked.handlers))
+    events.configuration_handlers = interrupts(linked.configuration_handlers)
     events.in_configuration = vm.in_configuration
     vm.events = events
+    vm.errors = meaning.errors(lambda number: axes[number].axiserror)
     endpoint = HostEndpoint(system.comms, lambda: system.node)
 
     def raise_axis_error(axis: Axis) -> None:
+        if layer is not None:
+            layer.motion_error(axis)
         site = vm.current_site()
+        error = vm.errors.motion_error(axis.number, axis.axiserror)
         if not (events.is_pending(EventClass.ERROR) and 0 <= vm.erraxis < axis.number):
             # several axes in error before #ONERROR runs (ABORT): ERRAXIS names the lowest-numbered
-            vm.record_error(AXIS_ERROR_PRESENT, site.line if site else 0, axis.number)
+            vm.record_error(vm.errors.number(error) or 0, site.line if site else 0, axis.number)
         if events.has_handler(EventClass.ERROR):
             events.raise_event(EventClass.ERROR)
             return
-        vm.halt(MintError(AXIS_ERROR_PRESENT, axis.number, f"AXISERROR {axis.axiserror}"), site)
+        vm.halt(error, site)
 
     def abort_all() -> None:
         for axis in axes:
@@ -132,7 +153,7 @@ def build_controller(
         if events.has_handler(EventClass.STOP):
             events.raise_event(EventClass.STOP)
 
-    stop_inputs = StopInputs(motion, raise_stop)
+    stop_inputs = StopInputs(motion, raise_stop, at_edge=v3)
     supervisor = Supervisor(motion, raise_axis_error, stop_inputs)
     motion.on_error = lambda axis, bit: supervisor.error(axis, bit, clock.now)
     vm.on_fatal = abort_all

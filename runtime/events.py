@@ -61,6 +61,8 @@ class Dispatch:
     pending_keyword: str
     bits: Mapping[EventClass, int]  # the class's bit in those masks
     timer_minimum_ms: int  # the shortest TIMEREVENT period (T-11)
+    highest_input_first: bool = False  # Mint v3: #IN7 before #IN0 (001:2574-2583)
+    inputs_interrupt_inputs: bool = False  # Mint v3: another input's handler pre-empts a running #INx (001:2548-2549)
 
 
 NEXTMOVE = Dispatch(
@@ -106,7 +108,7 @@ class Events:
         self.timer_period = 0  # TIMEREVENT, ms; 0 = off
         self.next_timer = NEVER
         self._onerror_entries = 0
-        self._running_number: dict[int, int] = {}  # rank -> number of the event its handler serves
+        self._running_numbers: dict[int, list[int]] = {}  # rank -> numbers of the events its handlers serve
 
     # ----------------------------------------------------------------- raising
 
@@ -155,25 +157,30 @@ class Events:
             numbers = self._pending[kind]
             if not numbers or kind in self.disabled:
                 continue
-            if running_rank is not None and (rank >= running_rank or (not dispatch.preemptive and rank)):
+            nested = rank == running_rank and kind is EventClass.INPUT and dispatch.inputs_interrupt_inputs
+            if running_rank is not None and not nested and (rank >= running_rank or (not dispatch.preemptive and rank)):
                 return None  # wait for the running handler (only #ONERROR interrupts without pre-emption)
-            for number in sorted(numbers):
-                if kind is EventClass.INPUT and not self.imask >> number & 1:
-                    continue
+            running = self._running_numbers.get(rank, []) if nested else []
+            for number in sorted(numbers, reverse=kind is EventClass.INPUT and dispatch.highest_input_first):
+                if (kind is EventClass.INPUT and not self.imask >> number & 1) or number in running:
+                    continue  # masked, or its own handler runs: it waits for the RETURN
                 numbers.discard(number)
                 handler = self._handler(kind, number)
                 if handler is not None:
                     self._refresh()
-                    self._running_number[rank] = number
+                    self._running_numbers.setdefault(rank, []).append(number)
                     if kind is EventClass.ERROR:
                         self._onerror_entries += 1
                     return rank, handler
             self._refresh()
+            if nested:
+                return None
         return None
 
     def handler_returned(self, rank: int) -> None:
         kind = self.dispatch.order[rank]
-        number = self._running_number.pop(rank, 0)
+        running = self._running_numbers.get(rank)
+        number = running.pop() if running else 0
         if kind is EventClass.FASTIN:
             self.on_fastin_return(number)
         if kind is not EventClass.ERROR:

@@ -6,6 +6,7 @@ outputs 12 to 35, reached through BANK (000:4077-4078, 4126-4127, 4136-4155).
 simulation has to be one machine, and it is the main card alone, the one the
 keyword tables describe: IMASK and INPUTACTIVELEVEL default to its 20 inputs
 (1048575, 000:11896, 12281) and OUT takes 0 to 4095, its 12 outputs (000:14908-14913).
+The controllers of the Mint v3 guide have ids of their own (``dialects/v3/controllers.py``).
 """
 
 from __future__ import annotations
@@ -13,12 +14,28 @@ from __future__ import annotations
 from dataclasses import replace
 
 from mintlang.controllers import ChannelRange, ControllerProfile, profile
+from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
+from mintlang.runtime.dialects.v3.controllers import DEFAULT as V3_DEFAULT
+from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_PROFILES
 
 _MAIN_CARD = {Controller.NEXTMOVE_PCI: {"digital_inputs": ChannelRange(0, 19), "digital_outputs": ChannelRange(0, 11)}}
 
 
 def simulated(controller: Controller | str) -> ControllerProfile:
-    """The profile of the controller ``mint-run`` simulates."""
+    """The profile of the v4 controller ``mint-run`` simulates."""
     checked = profile(controller)
     return replace(checked, **_MAIN_CARD.get(checked.controller, {}))
+
+
+def machine(controller: Controller | str | None, dialect: Dialect | str = Dialect.V4) -> ControllerProfile:
+    """The controller simulated for a program in ``dialect`` (by default the NextMove PCI for v4, the EuroServo
+    for v3); one of the other generation's guide is a ``ValueError`` naming those that fit."""
+    if Dialect(dialect) is Dialect.V3:
+        name = str(controller or V3_DEFAULT)
+        if name not in V3_PROFILES:
+            raise ValueError(f"{name} is not a controller of the Mint v3 guide: use one of {', '.join(V3_PROFILES)}")
+        return V3_PROFILES[name]
+    if controller in V3_PROFILES:
+        raise ValueError(f"{controller} is a controller of the Mint v3 guide: run its programs with dialect v3")
+    return simulated(controller or Controller.NEXTMOVE_PCI)

@@ -10,7 +10,7 @@ report lists the ones a run used, so nobody mistakes them for simulated.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 
 from mintlang.runtime.keywords import KeywordTable, per_channel
 
@@ -27,13 +27,15 @@ INERT_SETTINGS: dict[str, float] = {
 
 
 class InertSettings:
-    def __init__(self) -> None:
+    def __init__(self, settings: Mapping[str, float] = INERT_SETTINGS) -> None:
+        """``settings``: each setting's name and value at power-up."""
+        self.settings = settings
         self.values: dict[tuple[str, int | None], float] = {}
         self.used: set[str] = set()
 
     def register(self, table: KeywordTable) -> None:
-        for name, default in INERT_SETTINGS.items():
-            table.register(name, read=self._reader(name, default), write=per_channel(self._writer(name)))
+        for name, default in self.settings.items():
+            table.register(name, read=self._reader(name, default), write=per_channel(self.writer(name)))
 
     def _reader(self, name: str, default: float) -> Callable[[int | None], float]:
         def read(channel: int | None) -> float:
@@ -41,7 +43,9 @@ class InertSettings:
 
         return read
 
-    def _writer(self, name: str) -> Callable[[int | None, float], None]:
+    def writer(self, name: str) -> Callable[[int | None, float], None]:
+        """Remember what is written to ``name``, and that the run used it."""
+
         def write(channel: int | None, value: float) -> None:
             self.used.add(name)
             self.values[(name, channel)] = value

@@ -46,6 +46,7 @@ class DigitalIO:
         self.positive_trigger = 0  # INPUTPOSTRIGGER: no edge is detected until one is chosen (000:12353-12356)
         self.negative_trigger = 0  # INPUTNEGTRIGGER
         self.latched = 0  # edges seen and not yet read
+        self.levels_only = False  # Mint v3: IN reads the levels, and edges only call #INx (001:4290-4330)
         self.out = 0  # OUT as last written
         self.output_active_level = (1 << (self.outputs.high + 1)) - 1
         self.relay = 0
@@ -120,7 +121,7 @@ class DigitalIO:
 
     def peek(self, channel: int | None) -> float:
         """What reading IN would return, without clearing any latch (for observers, not programs)."""
-        value = (self.active & ~self.edge_mode) | (self.latched & self.edge_mode)
+        value = self.active if self.levels_only else (self.active & ~self.edge_mode) | (self.latched & self.edge_mode)
         return float(value if channel is None else value >> channel & 1)
 
     def _read_instate(self, channel: int | None) -> float:

@@ -15,10 +15,15 @@ from dataclasses import dataclass
 from functools import partial
 
 import mintlang
+from mintlang.controllers import ControllerProfile
+from mintlang.diagnostics import Span
+from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.runtime.controller import Controller, build_controller
-from mintlang.runtime.errors import MintError, NotSimulated, error_title
-from mintlang.runtime.hardware import simulated
+from mintlang.runtime.dialects import semantics
+from mintlang.runtime.dialects.v3.compiling import UNDEFINED_VARIABLE, undefined_variables
+from mintlang.runtime.errors import ErrorStyle, MintError, NotSimulated
+from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.observation import AxisState, Observation, Refused, axis_state
 from mintlang.runtime.scenario import ScenarioFileError, merge, parse_directives
@@ -56,22 +61,32 @@ class _CompileError:
     printed: str  # as the controller prints it: ``C2014: PROGRAM Incorrect loop terminator [line 12]``
 
 
-def _compile_error(analysis: mintlang.Analysis) -> _CompileError | None:
-    """The configuration is compiled (and run) first, then the program (000:269-271)."""
+_ORDER = {Unit.CONFIGURATION: 0, Unit.PROGRAM: 1}  # compile order of the files
+
+
+def _compile_error(analysis: mintlang.Analysis, errors: ErrorStyle) -> _CompileError | None:
+    """The first error the compiler finds: the configuration is compiled (and run) first, then the program
+    (000:269-271); a v3 program also fails on a variable read before it is declared."""
     model = analysis.model
-    for unit, diagnostics, document in (
-        (Unit.CONFIGURATION, analysis.configuration, model.configuration),
-        (Unit.PROGRAM, analysis.program, model.program),
-    ):
-        for diagnostic in diagnostics:
-            if diagnostic.mint_error is not None and not diagnostic.at_run_time and document is not None:
-                line = document.line_index.position(diagnostic.span.start).line
-                text = document.source[diagnostic.span.start : diagnostic.span.end]
-                code, name = diagnostic.mint_error, unit.value.upper()
-                message = f"C{code:04d}: {name} {diagnostic.message} [line {line}]"
-                printed = f"C{code:04d}: {name} {error_title(code)} [line {line}]"
-                return _CompileError(code, unit, line, text, message, printed)
-    return None
+    found: list[tuple[int, int, int, Unit, Span, str]] = []  # (file order, offset, code, unit, span, explanation)
+    for unit, _ in model.documents():
+        diagnostics = analysis.configuration if unit is Unit.CONFIGURATION else analysis.program
+        first = next((d for d in diagnostics if d.mint_error is not None and not d.at_run_time), None)
+        if first is not None and first.mint_error is not None:
+            found.append((_ORDER[unit], first.span.start, first.mint_error, unit, first.span, first.message))
+    if model.program.dialect is Dialect.V3:
+        for reference in undefined_variables(model):
+            explanation = f"{reference.spelling} is read before anything declares it"
+            unit = reference.unit
+            found.append((_ORDER[unit], reference.span.start, UNDEFINED_VARIABLE, unit, reference.span, explanation))
+    if not found:
+        return None
+    _, _, code, unit, span, explanation = min(found, key=lambda problem: problem[:2])
+    document = model.document(unit)
+    line = document.line_index.position(span.start).line
+    text = document.source[span.start : span.end]
+    message = errors.compiled(code, unit.value, line, explanation)
+    return _CompileError(code, unit, line, text, message, errors.compiled(code, unit.value, line))
 
 
 def _not_run(message: str, scenario: Scenario, code: int | None = None) -> RunResult:
@@ -89,7 +104,8 @@ def run_source(
     source: str,
     *,
     config: str | None = None,
-    controller: ControllerName | str = ControllerName.NEXTMOVE_PCI,
+    controller: ControllerName | str | None = None,
+    dialect: Dialect | str = Dialect.V4,
     scenario: Scenario | None = None,
     limits: Limits | None = None,
     echo: Callable[[str], None] | None = None,
@@ -98,27 +114,32 @@ def run_source(
 ) -> RunResult:
     """Run a program (and its configuration file) to the end or a limit; never raises for the program's faults.
 
-    The program's own ``REM @sim`` directives are merged under ``scenario``; a
+    The program is in ``dialect`` (Mint v4, or v3 on one of the v3 guide's
+    controllers: a controller of the other generation is a ``ValueError``). The
+    program's own ``REM @sim`` directives are merged under ``scenario``; a
     directive that cannot be read raises ``ScenarioFileError`` before anything runs,
     naming the program ``name`` (its path, on the command line). A file the
     controller's compiler rejects does not run: when it is the program, the
     configuration still runs first, as on the controller.
     """
-    directives, problems = parse_directives(source, name, controller=simulated(controller))
+    simulated = machine(controller, dialect)
+    directives, problems = parse_directives(source, name, controller=simulated, dialect=dialect)
     if problems:
         raise ScenarioFileError(problems)
     scenario = merge(directives, scenario) if scenario is not None else directives
-    analysis = mintlang.check_application(source, controller=controller, config=config)
-    refused = _compile_error(analysis)
+    base = simulated.controller  # the v4 machine a v3 controller is simulated on
+    analysis = mintlang.check_application(source, dialect=dialect, controller=base, config=config)
+    refused = _compile_error(analysis, semantics(dialect).errors(lambda axis: 0))
     model = analysis.model
     if refused is not None:  # what runs before the compiler stops: the configuration, if the program is at fault
         runs_first = config if refused.unit is Unit.PROGRAM else None
-        model = mintlang.check_application("", controller=controller, config=runs_first).model
-    return _simulate(model, scenario, limits or Limits(), refused, echo=echo, on_tick=on_tick)
+        model = mintlang.check_application("", dialect=dialect, controller=base, config=runs_first).model
+    return _simulate(model, simulated, scenario, limits or Limits(), refused, echo=echo, on_tick=on_tick)
 
 
 def _simulate(
     model: SemanticModel,
+    simulated: ControllerProfile,
     scenario: Scenario,
     limits: Limits,
     refused: _CompileError | None,
@@ -128,7 +149,12 @@ def _simulate(
 ) -> RunResult:
     try:
         built = build_controller(
-            model, scenario, slice_statements=limits.slice_statements, host_port=limits.host_port, echo=echo
+            model,
+            scenario,
+            machine=simulated,
+            slice_statements=limits.slice_statements,
+            host_port=limits.host_port,
+            echo=echo,
         )
     except NotSimulated as missing:
         return _not_run(str(missing), scenario)
@@ -157,7 +183,8 @@ def _simulate(
     if refused is not None and stop.reason is StopReason.END:
         unit = refused.unit.value
         stop = Stop(StopReason.ERROR, stop.time_ms, unit, refused.line, refused.statement, refused.message)
-        built.vm.record_error(refused.code, refused.line, None)
+        if model.program.dialect is Dialect.V4:  # v3's ERR holds only what #ONERROR can see (001:4916)
+            built.vm.record_error(refused.code, refused.line, None)
         built.terminal.announce(refused.printed)
     # a check the run never reached did not hold: dropping it would let a run that stops early pass
     outcomes.extend(not_reached(expectation, stop.time_ms) for expectation in unchecked.values())

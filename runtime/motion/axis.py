@@ -72,7 +72,7 @@ class Axis:
         self.number = number
         self.clock = clock
         self.parameters: dict[str, float] = dict(DEFAULTS)
-        self._bounds = {name: bounds(name, controller) for name in DEFAULTS}
+        self.bounds = {name: bounds(name, controller) for name in DEFAULTS}  # what each parameter accepts
         self.plant: Plant = plant if plant is not None else IdealPlant()
         self.servo = ServoLoop()
         self.enabled = False  # drives start disabled (IO-7 RC)
@@ -115,7 +115,7 @@ class Axis:
         return value / self.scale if name in SCALED else value
 
     def set(self, name: str, value: float) -> None:
-        check_range(name, value, self._bounds[name], self.number)
+        check_range(name, value, self.bounds[name], self.number)
         if name == "CONFIG" and value != 0:
             self.open_loop_dac = None  # back to servo (or stepper) control: the loop drives the DAC again
         if name == "SCALE":

@@ -7,7 +7,8 @@ stop). Mode 1 holds the move instead of clearing it: when the input clears the
 axis ramps back up at ``ACCEL`` and finishes the move, and ``#STOP`` is not
 called if that happens before it came to rest. Moves that do not run on the
 trapezoid profiler (homing, following, cams, torque, blended paths) are not
-ramped: there mode 1 acts as mode 0 and modes 2 and 3 crash-stop.
+ramped: there mode 1 acts as mode 0 and modes 2 and 3 crash-stop. On a Mint v3
+controller ``#STOP`` comes on the input's rising edge whatever the mode (001:2510).
 """
 
 from __future__ import annotations
@@ -23,9 +24,11 @@ IGNORE, NORMAL, CANCEL, STOP = 0, 1, 2, 3
 
 
 class StopInputs:
-    def __init__(self, motion: Motion, raise_stop: Callable[[], None]) -> None:
+    def __init__(self, motion: Motion, raise_stop: Callable[[], None], *, at_edge: bool = False) -> None:
+        """``at_edge``: ``#STOP`` is called when the input becomes active, not when the axis is at rest."""
         self.motion = motion
         self.raise_stop = raise_stop  # make #STOP pending (when the program has the handler)
+        self.at_edge = at_edge
         self.active: set[int] = set()  # axes whose stop input is active
         self.await_rest: set[int] = set()  # axes that call #STOP when they come to rest
         self.held: dict[int, tuple[PlannedMove, PlannedMove]] = {}  # mode 1: (the move, its stop ramp)
@@ -52,12 +55,15 @@ class StopInputs:
         elif mode == CANCEL or not ramped or axis.parameters["ERRORDECEL"] == 0.0:  # no rate to ramp down at
             self.motion.crash_group(axis)
             self.raise_stop()
-        elif mode == STOP:
-            self.motion.stop_group(axis, next_profiler_tick(tick), axis.parameters["ERRORDECEL"])
-            self.await_rest.add(axis.number)
-        elif mode == NORMAL:
-            self._hold(axis, move, next_profiler_tick(tick))  # type: ignore[arg-type]
-            self.await_rest.add(axis.number)
+        else:
+            if mode == STOP:
+                self.motion.stop_group(axis, next_profiler_tick(tick), axis.parameters["ERRORDECEL"])
+            else:
+                self._hold(axis, move, next_profiler_tick(tick))  # type: ignore[arg-type]
+            if self.at_edge:
+                self.raise_stop()
+            else:
+                self.await_rest.add(axis.number)
 
     def _hold(self, axis: Axis, move: PlannedMove, tick: int) -> None:
         """Ramp the move down at ERRORDECEL but keep it, and what is buffered behind it, to resume.

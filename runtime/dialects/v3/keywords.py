@@ -1,0 +1,60 @@
+"""The Mint v3 keyword table: what each v3 keyword does on the simulated controller.
+
+A v3 program names its keywords in v3 (``GAIN``, ``MODE``, ``ANALOGUE1``, the
+two-letter abbreviations), which the parser resolves to the v3 guide's full
+names. This table maps those names onto the handlers of the v4 machine, under
+v3's own rules (``motion.py``, ``system.py``). A v3 keyword it does not hold is
+not simulated: its line stops the run and names it. Every value read is a v3
+number, a whole number of 256ths (V3-2).
+"""
+
+from __future__ import annotations
+
+from mintlang.runtime.dialects.v3.numbers import fixed
+from mintlang.runtime.inert import InertSettings
+from mintlang.runtime.keywords import (
+    ArrayCommand,
+    Command,
+    KeywordAccess,
+    KeywordTable,
+    Reader,
+    Writer,
+    per_channel,
+)
+
+INERT_SETTINGS = {"ECHO": 3.0, "TERM": 3.0}  # the terminal: one merged log here (001:7504, 11989-12032)
+
+
+class V3KeywordTable(KeywordTable):
+    """Handlers by v3 keyword name; every value read is rounded to a v3 number."""
+
+    def register(
+        self,
+        name: str,
+        *,
+        read: Reader | None = None,
+        write: Writer | None = None,
+        command: Command | None = None,
+        array_command: ArrayCommand | None = None,
+    ) -> None:
+        super().register(name, read=_fixed(read) if read is not None else None, write=write, command=command)
+
+    def alias(self, name: str, access: KeywordAccess) -> None:
+        """``name`` does what a v4 keyword's handlers do."""
+        self.register(name, read=access.read, write=access.write, command=access.command)
+
+    def in_program(self, name: str) -> KeywordAccess | None:
+        """The v3 guide's keywords are on every simulated v3 controller; none is error 17."""
+        return self.get(name)
+
+
+def _fixed(read: Reader) -> Reader:
+    return lambda channel: fixed(read(channel))
+
+
+def inert_settings(table: V3KeywordTable) -> InertSettings:
+    """``ECHO`` and ``TERM`` are remembered and change nothing; so is ``BAUD`` (write only), the serial rate."""
+    inert = InertSettings(INERT_SETTINGS)
+    inert.register(table)
+    table.register("BAUD", write=per_channel(inert.writer("BAUD")))
+    return inert

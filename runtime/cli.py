@@ -3,7 +3,8 @@
 Terminal output goes to stdout as the controller prints it; what stopped the
 run goes to stderr. Exit status: 0 when the program ended (or reached
 ``--until-ms``), 1 when it stopped on an error, a deadlock or the wall-clock
-limit, or when an expectation failed; 2 for a usage or I/O problem. With
+limit, or when an expectation failed; 2 for a usage or I/O problem. ``--dialect v3``
+runs a Mint v3 program on one of the v3 guide's controllers. With
 ``--expect`` the expectations decide 0 or 1 (``expectations_pass``). Ctrl-C
 stops the run where it is, still reports it and completes the trace, and
 exits 130; SIGTERM does the same with 143, and a reader that goes away
@@ -31,12 +32,13 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
 from mintlang.cli.files import program_as_own_configuration
-from mintlang.cli.options import controller_option
 from mintlang.controllers import ControllerProfile
+from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.runtime.comms.server import PortUnavailable
 from mintlang.runtime.controller import Controller
-from mintlang.runtime.hardware import simulated
+from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_CONTROLLERS
+from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.outputs import OutputProblem, check_plot, check_report, check_trace
 from mintlang.runtime.report import as_json
@@ -94,7 +96,19 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
 @click.option(
     "--config", "config_path", type=click.Path(path_type=Path), help="Configuration file run before the program."
 )
-@controller_option("The controller to simulate.")
+@click.option(
+    "--dialect",
+    type=click.Choice([dialect.value for dialect in Dialect]),
+    default=Dialect.V4.value,
+    show_default=True,
+    help="The language of the program: Mint v4, or Mint v3 (the esMINT guide).",
+)
+@click.option(
+    "--controller",
+    type=click.Choice([controller.value for controller in ControllerName] + list(V3_CONTROLLERS)),
+    help="The controller to simulate: one of the v4 guide's for v4 (default nextmove-pci), "
+    "one of the v3 guide's for v3 (default euroservo).",
+)
 @click.option(
     "--stimulus",
     "stimulus_paths",
@@ -156,7 +170,8 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
 def run(  # noqa: PLR0917 - click passes every option as an argument
     program: Path,
     config_path: Path | None,
-    controller: str,
+    dialect: str,
+    controller: str | None,
     stimulus_paths: tuple[Path, ...],
     expect_paths: tuple[Path, ...],
     drives: str | None,
@@ -178,8 +193,12 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     if config_path is not None and program_as_own_configuration([program], config_path):
         raise click.UsageError(f"--config {config_path} is the program {program} itself: name the configuration file")
     try:
+        simulated = machine(controller, dialect)
+    except ValueError as problem:
+        raise click.UsageError(str(problem)) from None
+    try:
         files = [read_source(path) for path in (program, config_path) if path is not None]
-        scenario = _scenario((*stimulus_paths, *expect_paths), simulated(controller))
+        scenario = _scenario((*stimulus_paths, *expect_paths), simulated, Dialect(dialect))
         if drives == "enabled":
             scenario = merge(scenario, Scenario(drives=(DrivesEnabled(),)))
     except ScenarioFileError as error:
@@ -204,8 +223,7 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     )
     if trace_axes is not None and not tracing:
         raise click.UsageError("--trace-axes chooses the axes of --trace or --plot; give one of them")
-    machine = simulated(controller)
-    axes = _axes_list(trace_axes, machine) or tuple(range(machine.axis_count))
+    axes = _axes_list(trace_axes, simulated) or tuple(range(simulated.axis_count))
     trace = Trace(axes, trace_path, plotting=plot_path is not None) if tracing else None
     termination = _Termination()
     recorders = _Recorders(trace, termination, errors, until_ms)
@@ -214,7 +232,8 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
         run_source,
         source,
         config=config,
-        controller=ControllerName(controller),
+        controller=controller,
+        dialect=dialect,
         scenario=scenario,
         limits=limits,
         echo=stdout.write,
@@ -390,10 +409,10 @@ class _Stdout:
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
 
 
-def _scenario(paths: tuple[Path, ...], controller: ControllerProfile) -> Scenario:
+def _scenario(paths: tuple[Path, ...], controller: ControllerProfile, dialect: Dialect) -> Scenario:
     scenario = Scenario()
     for path in paths:
-        scenario = merge(scenario, load_scenario(path, controller))
+        scenario = merge(scenario, load_scenario(path, controller, dialect))
     return scenario
 
 

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import cast, get_args
 
+from mintlang.dialect import Dialect
 from mintlang.runtime.comms.packets import encode_read, encode_write
 from mintlang.runtime.scenario.expectations import (
     STOP_REASONS,
@@ -162,11 +163,19 @@ def host_raw(time_ms: int, hex_bytes: str) -> HostPacket:
 
 
 def value_expectation(
-    what: str, comparison: Comparison, value: float, *, tolerance: float, at_ms: int | None, origin: Origin
+    what: str,
+    comparison: Comparison,
+    value: float,
+    *,
+    tolerance: float,
+    at_ms: int | None,
+    origin: Origin,
+    dialect: Dialect = Dialect.V4,
 ) -> ValueExpectation:
+    """``what`` is named in the program's ``dialect``."""
     if tolerance < 0:
         raise Invalid(f"a tolerance is not negative, not {tolerance:g}")
-    return ValueExpectation(target(what), comparison, value, tolerance, _when(at_ms), origin)
+    return ValueExpectation(target(what, dialect), comparison, value, tolerance, _when(at_ms), origin)
 
 
 def terminal_expectation(text: str, at_ms: int | None, origin: Origin, *, exact: bool = False) -> TerminalExpectation:

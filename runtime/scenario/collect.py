@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from mintlang.controllers import ControllerProfile
+from mintlang.dialect import Dialect
 from mintlang.runtime.scenario.expectations import Expectation
 from mintlang.runtime.scenario.problems import Invalid, ScenarioError
 from mintlang.runtime.scenario.reach import check_reach
@@ -27,12 +28,14 @@ from mintlang.runtime.scenario.stimulus import (
 class Collector:
     """The records and errors of one source (a file path or ``"program"``)."""
 
-    __slots__ = ("_first", "controller", "errors", "records", "source")
+    __slots__ = ("_first", "controller", "dialect", "errors", "records", "source")
 
-    def __init__(self, source: str, controller: ControllerProfile | None = None) -> None:
-        """With ``controller``, a record that drives an axis or channel it lacks is a mistake too."""
+    def __init__(self, source: str, controller: ControllerProfile | None = None, dialect: Dialect = Dialect.V4) -> None:
+        """With ``controller``, a record that drives an axis or channel it lacks is a mistake too; keywords
+        are named in the program's ``dialect``."""
         self.source = source
         self.controller = controller
+        self.dialect = dialect
         self.records: list[WorldRecord | Expectation] = []
         self.errors: list[ScenarioError] = []
         self._first: dict[tuple[type, int], int] = {}  # (record kind, axis or channel) -> line first given

@@ -13,6 +13,7 @@ from functools import partial
 from typing import cast
 
 from mintlang.controllers import ControllerProfile
+from mintlang.dialect import Dialect
 from mintlang.runtime.scenario import builders
 from mintlang.runtime.scenario.collect import Collector
 from mintlang.runtime.scenario.expectations import Comparison, Expectation, Origin
@@ -25,14 +26,19 @@ _DIRECTIVE = re.compile(r"REM\s*@(?P<kind>sim|expect)\b(?P<body>.*)", re.IGNOREC
 
 
 def parse_directives(
-    source_text: str, source: str = "program", controller: ControllerProfile | None = None
+    source_text: str,
+    source: str = "program",
+    controller: ControllerProfile | None = None,
+    dialect: Dialect | str = Dialect.V4,
 ) -> tuple[Scenario, list[ScenarioError]]:
     """The world and expectations a program's comments script, and every directive that could not be read.
 
-    With ``controller``, a directive for an axis or channel it does not have is one of them.
+    With ``controller``, a directive for an axis or channel it does not have is one of them. The program is
+    in ``dialect``, which names the keywords its expectations read.
     """
-    collector = Collector(source, controller)
-    for number, (_, line) in enumerate(lex(source_text).lines, start=1):
+    dialect = Dialect(dialect)
+    collector = Collector(source, controller, dialect)
+    for number, (_, line) in enumerate(lex(source_text, dialect).lines, start=1):
         if line.comment_start < 0:
             continue
         found = _DIRECTIVE.match(line.text, line.comment_start, line.content_end)
@@ -42,7 +48,7 @@ def parse_directives(
         if found["kind"].lower() == "sim":
             collector.add(number, partial(_world, phrase))
         else:
-            collector.add(number, partial(_expectation, phrase, Origin(source, number)))
+            collector.add(number, partial(_expectation, phrase, Origin(source, number), dialect))
     return collector.result()
 
 
@@ -146,7 +152,7 @@ def _when(phrase: Phrase) -> int | None:
     return phrase.milliseconds()
 
 
-def _expectation(phrase: Phrase, origin: Origin) -> Expectation:
+def _expectation(phrase: Phrase, origin: Origin, dialect: Dialect) -> Expectation:
     """``<target> <op> <value> [± <tol>] [at ...]``, ``no <target>``, ``terminal contains|is "..."``,
     ``stopped <why>``."""
     expectation: Expectation
@@ -159,7 +165,7 @@ def _expectation(phrase: Phrase, origin: Origin) -> Expectation:
     elif phrase.accept("no"):
         what = phrase.word("a keyword or variable")
         expectation = builders.value_expectation(
-            what, Comparison.EQUAL, 0.0, tolerance=0.0, at_ms=_when(phrase), origin=origin
+            what, Comparison.EQUAL, 0.0, tolerance=0.0, at_ms=_when(phrase), origin=origin, dialect=dialect
         )
     else:
         what = phrase.word("a keyword or variable")
@@ -167,7 +173,7 @@ def _expectation(phrase: Phrase, origin: Origin) -> Expectation:
         value = phrase.number("the expected value")
         tolerance = phrase.number("a tolerance") if phrase.accept("±") or phrase.accept("+-") else 0.0
         expectation = builders.value_expectation(
-            what, comparison, value, tolerance=tolerance, at_ms=_when(phrase), origin=origin
+            what, comparison, value, tolerance=tolerance, at_ms=_when(phrase), origin=origin, dialect=dialect
         )
     phrase.end()
     return expectation

@@ -14,6 +14,7 @@ from functools import partial
 from pathlib import Path
 
 from mintlang.controllers import ControllerProfile
+from mintlang.dialect import Dialect
 from mintlang.runtime.scenario import builders
 from mintlang.runtime.scenario.collect import Collector
 from mintlang.runtime.scenario.expectations import Comparison, Expectation, Origin
@@ -34,13 +35,22 @@ _COMPARISONS = {
 class _Entry:
     """One table of the file; each read checks the value's type and blames the key's line."""
 
-    __slots__ = ("_section", "_values", "name", "origin")
+    __slots__ = ("_section", "_values", "dialect", "name", "origin")
 
-    def __init__(self, name: str, values: Mapping[str, object], section: Section, source: str) -> None:
+    def __init__(
+        self,
+        name: str,
+        values: Mapping[str, object],
+        section: Section,
+        source: str,
+        dialect: Dialect = Dialect.V4,
+    ) -> None:
+        """``dialect``: the language of the program, which names the keywords an expectation reads."""
         self.name = name
         self._values = values
         self._section = section
         self.origin = Origin(source, section.line)
+        self.dialect = dialect
 
     def __contains__(self, key: str) -> bool:
         return key in self._values
@@ -160,6 +170,7 @@ def _expect(entry: _Entry) -> Expectation:
                 tolerance=entry.number("tolerance", 0.0),
                 at_ms=_when(entry),
                 origin=entry.origin,
+                dialect=entry.dialect,
             )
         case "terminal_contains":
             entry.allow("terminal_contains", "at", "at_ms")
@@ -212,7 +223,7 @@ def _read(document: Mapping[str, object], layout: Layout, collector: Collector) 
                 collector.add(section.line_of(axis_key), build)
         elif name in _ARRAYS and isinstance(value, list) and all(isinstance(item, dict) for item in value):
             for index, table in enumerate(value):
-                entry = _Entry(f"[[{name}]]", table, layout.entry(name, index), collector.source)
+                entry = _Entry(f"[[{name}]]", table, layout.entry(name, index), collector.source, collector.dialect)
                 collector.add(entry.origin.line, partial(_ARRAYS[name], entry))
         elif name == "drives":
             collector.add(layout.top_line(name), partial(_drives, value))
@@ -240,14 +251,17 @@ def _document(path: Path) -> tuple[str, dict[str, object]]:
         raise ScenarioFileError([ScenarioError(source, line, f"not valid TOML: {problem}")]) from None
 
 
-def load_scenario(path: str | Path, controller: ControllerProfile | None = None) -> Scenario:
+def load_scenario(
+    path: str | Path, controller: ControllerProfile | None = None, dialect: Dialect | str = Dialect.V4
+) -> Scenario:
     """The scenario a TOML file describes; ``ScenarioFileError`` lists every mistake with its line.
 
-    With ``controller``, an entry for an axis or channel it does not have is a mistake too.
+    With ``controller``, an entry for an axis or channel it does not have is a mistake too. Expectations
+    name keywords in the program's ``dialect``.
     """
     path = Path(path)
     text, document = _document(path)
-    collector = Collector(str(path), controller)
+    collector = Collector(str(path), controller, Dialect(dialect))
     _read(document, Layout(text), collector)
     scenario, errors = collector.result()
     if errors:

@@ -3,6 +3,7 @@
 Users write ``pos.0``, ``PS.0`` or ``OUT3``; the simulator should answer one
 spelling only, so every target is made canonical here: upper case, the
 keyword's full name, an axis or channel as ``.n`` and indexes as ``(i,j)``.
+A Mint v3 program's targets are its own keywords (``MODE.0``, ``GN.1``, ``IN3``).
 """
 
 from __future__ import annotations
@@ -10,8 +11,9 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Addressing, KeywordKind
+from mintlang.keyworddb.model import Addressing, KeywordKind, V3Keyword
 from mintlang.runtime.scenario.problems import Invalid
 
 _TARGET = re.compile(
@@ -32,18 +34,19 @@ class Target:
         return f"{self.text}.{axis}"
 
 
-def target(written: str) -> Target:
-    """The canonical form of ``written``, or ``Invalid`` saying why it names nothing readable."""
+def target(written: str, dialect: Dialect = Dialect.V4) -> Target:
+    """The canonical form of ``written`` in a program of ``dialect``, or ``Invalid`` saying why it names
+    nothing readable."""
     found = _TARGET.fullmatch(written.strip())
     if found is None:
         raise Invalid(f"{written!r} is not a keyword, variable or array element (e.g. POS.0, count, table(3))")
     name, dot, indexes = found["name"].upper(), found["dot"], found["indexes"]
     suffix = "" if indexes is None else "(" + ",".join(str(int(i)) for i in indexes.split(",")) + ")"
+    if dialect is Dialect.V3:
+        return _v3_target(found["name"], name, dot, suffix)
     keyword = database().lookup(name)
     if keyword is None:
-        if dot is not None:
-            raise Invalid(f"{found['name']} is not a keyword, so it takes no .{dot}")
-        return Target(name + suffix, every_axis=False)
+        return _variable(found["name"], name, dot, suffix)
     if keyword.kind is not KeywordKind.PARAMETER:
         raise Invalid(f"{keyword.name} is a {keyword.kind.value}, not a value to expect")
     spellings = {keyword.name.upper(), *(abbreviation.upper() for abbreviation in keyword.abbreviations)}
@@ -56,3 +59,27 @@ def target(written: str) -> Target:
         return Target(f"{keyword.name}.{int(dot)}{suffix}", every_axis=False)
     every_axis = keyword.addressing is Addressing.AXIS and not suffix
     return Target(keyword.name + suffix, every_axis)
+
+
+def _variable(written: str, name: str, dot: str | None, suffix: str) -> Target:
+    if dot is not None:
+        raise Invalid(f"{written} is not a keyword, so it takes no .{dot}")
+    return Target(name + suffix, every_axis=False)
+
+
+def _v3_target(written: str, name: str, dot: str | None, suffix: str) -> Target:
+    """A v3 keyword by its v3 name; ``IN`` and ``OUT``, which have bit keywords (``IN3``), take a bit as ``.n``."""
+    keyword = database().lookup_v3(name)
+    if keyword is None:
+        return _variable(written, name, dot, suffix)
+    if not keyword.read:
+        raise Invalid(f"{keyword.name} cannot be read in Mint v3, so it is not a value to expect")
+    if dot is not None and keyword.addressing is Addressing.NONE and not _has_bits(keyword):
+        raise Invalid(f"{keyword.name} has no axis or channel, so it takes no .{dot}")
+    if dot is not None:
+        return Target(f"{keyword.name}.{int(dot)}{suffix}", every_axis=False)
+    return Target(keyword.name + suffix, keyword.addressing is Addressing.AXIS and not suffix)
+
+
+def _has_bits(keyword: V3Keyword) -> bool:
+    return database().lookup_v3(keyword.name + "0") is not None

@@ -2,15 +2,22 @@
 
 from __future__ import annotations
 
+import re
+from urllib.parse import unquote
+
 from mintlang.analysis.rules.v3_keywords import successor
 from mintlang.controllers import ControllerProfile, profile
+from mintlang.diagnostics import split_lines
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing, Controller, Keyword, MigrationClass, V3Keyword
+from mintlang.lsp.addressed import placed_line
 from mintlang.lsp.workspace import Snapshot
 from mintlang.semantic.events import event_of
-from mintlang.semantic.symbols import Symbol, SymbolKind
+from mintlang.semantic.index import line_facts
+from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind
 from mintlang.semantic.units import Unit
-from mintlang.syntax.nodes import character_code
+from mintlang.syntax import nodes as n
+from mintlang.syntax.nodes import character_code, relocate
 
 
 def _access(read: bool, write: bool, command: bool) -> str:
@@ -111,7 +118,8 @@ def _where(snapshot: Snapshot, unit: Unit, offset: int) -> str:
     file = snapshot.files.get(unit)
     line = file.positions.position(offset).line + 1 if file is not None else None
     place = "the configuration file" if unit is Unit.CONFIGURATION else "the program"
-    return f"line {line} of {place}" if line is not None else place
+    name = f" ({unquote(file.uri.rpartition('/')[2])})" if file is not None else ""
+    return f"line {line} of {place}{name}" if line is not None else place
 
 
 def macro_body(snapshot: Snapshot, name: str) -> str | None:
@@ -125,14 +133,66 @@ def macro_body(snapshot: Snapshot, name: str) -> str | None:
     return model.document(where.unit).source[definition.body_span.start : definition.body_span.end]
 
 
+_SHOWN_VALUES = 12  # an array's first values in a hover; cam tables run to thousands
+
+
+def _dim(snapshot: Snapshot, definition: Occurrence) -> tuple[str, n.Dim] | None:
+    """The source of the file of ``definition`` (a DIM's name) and its DIM statement."""
+    line = placed_line(snapshot, definition.unit, definition.span.start)
+    if line is None:
+        return None
+    for statement in line_facts(definition.unit, line).statements:
+        if type(statement) is n.Dim and line.span(statement.name.span) == definition.span:
+            return snapshot.model.document(definition.unit).source, relocate(statement, line.origin)
+    return None
+
+
+def _initial(snapshot: Snapshot, found: Symbol) -> str:
+    """What a variable or array holds before the program writes it, as its DIM says."""
+    declared = _dim(snapshot, found.definition) if found.definition is not None else None
+    if declared is None:
+        return ""
+    source, dim = declared
+    values = [source[value.span.start : value.span.end] for value in dim.values]
+    if found.kind is SymbolKind.VARIABLE:
+        if not values:
+            return "\n- Initial value: none written (0 when first declared)"
+        return f"\n- Initial value: `{values[0]}`, set when the DIM runs"
+    if not values:
+        return "\n- Initial values: none written (0)"
+    shown = ", ".join(values[:_SHOWN_VALUES]) + (f", … ({len(values)} values)" if len(values) > _SHOWN_VALUES else "")
+    rest = f", then `{values[-1]}` for the rest (;)" if dim.fill else ""
+    return f"\n- Initial values: `{shown}`{rest}, set when the program is compiled"
+
+
+def _remarks(snapshot: Snapshot, definition: Occurrence) -> str:
+    """The REM lines right above a label, and a REM on its own line: what its author says it does."""
+    file = snapshot.files.get(definition.unit)
+    if file is None:
+        return ""
+    source, positions = snapshot.model.document(definition.unit).source, file.positions
+    number = positions.position(definition.span.start).line
+    lines = split_lines(source)
+    said = [_REMARK.match(lines[number][definition.span.end - positions.line_start(number) :].lstrip(" \t:"))]
+    above = number - 1
+    while above >= 0 and (remark := _REMARK.match(lines[above].strip())) is not None:
+        said.insert(0, remark)
+        above -= 1
+    text = "\n".join(words for remark in said if remark is not None and (words := remark.group(1).strip()))
+    return f"\n\n{text}" if text else ""
+
+
+_REMARK = re.compile(r"REM\b(.*)", re.IGNORECASE)
+
+
 def symbol(snapshot: Snapshot, found: Symbol) -> str:
     definition = found.definition
     where = f"declared at {_where(snapshot, definition.unit, definition.span.start)}" if definition else "not declared"
     if found.kind is SymbolKind.ARRAY:
         size = f"({found.array_size})" if found.array_size is not None else "()"
-        return f"**{found.name}**{size} — array, {where}"
+        return f"**{found.name}**{size} — array, {where}{_initial(snapshot, found)}"
     if found.kind is SymbolKind.VARIABLE:
-        return f"**{found.name}** — variable, {where}"
+        return f"**{found.name}** — variable, {where}{_initial(snapshot, found)}"
     if found.kind is SymbolKind.MACRO:
         body = macro_body(snapshot, found.identity)
         value = f"\n\n```mint\nDEFINE {found.name} = {body}\n```" if body is not None else ""
@@ -140,4 +200,5 @@ def symbol(snapshot: Snapshot, found: Symbol) -> str:
     event = event_of(found.name, snapshot.settings.dialect)
     kind = f"event handler ({event.kind.value})" if event else "label"
     where = f"at {_where(snapshot, definition.unit, definition.span.start)}" if definition else "never defined"
-    return f"**#{found.name}** — {kind}, {where}"
+    remarks = _remarks(snapshot, definition) if definition else ""
+    return f"**#{found.name}** — {kind}, {where}{remarks}"

@@ -1,4 +1,9 @@
-"""Hover: keywords (any spelling), predefined constants, user symbols, and Mint v3 words left in v4 code."""
+"""Hover: keywords (any spelling), predefined constants, user symbols, and Mint v3 words left in v4 code.
+
+A keyword says which axes or channel it addresses where it is written (a macro
+resolved) and what the configuration file sets for them; a variable its initial
+value and the file that declares it; a label the remarks written above it.
+"""
 
 from __future__ import annotations
 
@@ -6,7 +11,7 @@ from lsprotocol import types
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.lsp import describe
+from mintlang.lsp import addressed, describe
 from mintlang.lsp.lookup import token_at
 from mintlang.lsp.occurrences import symbol_at
 from mintlang.lsp.server import MintServer
@@ -57,6 +62,8 @@ def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
         name = snapshot.settings.words.keyword_name(token.text)
         word = database().lookup(name or token.text)
         text = describe.keyword(word, snapshot.settings.controller, token.text) if word is not None else None
+        here = addressed.hover_lines(snapshot, offset) if text is not None else []
+        text = "\n".join([text, *here]) if text is not None else None
     return (text, token.start, token.end) if text is not None else None
 
 

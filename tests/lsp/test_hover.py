@@ -28,7 +28,8 @@ async def test_keyword_full_abbreviated_and_lower_case(client, tmp_path):
     assert "Access: read, write" in full
     assert "Controllers: NextMove PCI" in full
     assert "Slew speed" in full
-    assert await hover_at(client, uri, text, "sp.1") == full
+    assert full.endswith("- Here: axis 0")
+    assert await hover_at(client, uri, text, "sp.1") == full.replace("- Here: axis 0", "- Here: axis 1")
     glued = await hover_at(client, uri, text, "In3", 1)
     assert "**IN**" in glued and "channel 3" in glued
 
@@ -98,7 +99,7 @@ async def test_symbols_say_where_they_are_declared(client, tmp_path):
     uri = uri_of(tmp_path / "xy.mnt")
     await open_document(client, uri, text)
     array = await hover_at(client, uri, text, "xpos(a)")
-    assert array == "**xpos**(10) — array, declared at line 7 of the program"
+    assert array.startswith("**xpos**(10) — array, declared at line 7 of the program (xy.mnt)")
     assert "variable, declared at line 21" in await hover_at(client, uri, text, "a = 1 to", 0)
     assert "label, at line 14" in await hover_at(client, uri, text, "GOSUB init", 7)
     macro = await hover_at(client, uri, text, "b = fast", 5)
@@ -131,3 +132,50 @@ async def test_a_declared_variable_named_like_a_v3_word_is_the_users(client, tmp
     uri = uri_of(tmp_path / "gain.mnt")
     await open_document(client, uri, text)
     assert (await hover_at(client, uri, text, "gain = ")).startswith("**gain** — variable")
+
+
+# The guide's examples: DIM with a value (3.2.5, "DIM aVar = 100"), an array filled by ";" (3.7,
+# "DIM y_position(10) = 10,0;"), and scale factors set through macros in the configuration file
+# (3.5, "DEFINE g1 = [0,1,2,3] / SF.g1 = 10;").
+CONFIGURATION = "DEFINE g1 = [0,1,2,3]\nDEFINE xAxis = 0\nSF.g1 = 10;\nSPEED[0,1] = 500, 600\nDIM aVar = 100\n"
+PROGRAM = (
+    "DIM y_position(10) = 10,0;\nDIM thisIsAVariable\n"
+    "REM Home both axes\nREM and wait for them\nGOSUB init\nEND\n\n"
+    "REM Home both axes\nREM and wait for them\n#init : REM called once\n"
+    "SPEED.xAxis = 20\nSCALE[1,2] = 4 : OUT.3 = 1\nthisIsAVariable = aVar + y_position(1)\nRETURN\n"
+)
+
+
+async def test_a_variable_says_its_initial_value_and_its_file(client, tmp_path):
+    (tmp_path / "cell.cfg").write_text(CONFIGURATION, encoding="utf-8")
+    uri = uri_of(tmp_path / "cell.mnt")
+    await open_document(client, uri, PROGRAM)
+    configured = await hover_at(client, uri, PROGRAM, "aVar +")
+    assert configured.startswith("**aVar** — variable, declared at line 5 of the configuration file (cell.cfg)")
+    assert "- Initial value: `100`, set when the DIM runs" in configured
+    bare = await hover_at(client, uri, PROGRAM, "thisIsAVariable =")
+    assert "- Initial value: none written (0 when first declared)" in bare
+    filled = await hover_at(client, uri, PROGRAM, "y_position(1)")
+    assert "- Initial values: `10, 0`, then `0` for the rest (;), set when the program is compiled" in filled
+
+
+async def test_an_axis_parameter_says_its_axes_and_what_the_configuration_file_sets(client, tmp_path):
+    (tmp_path / "cell.cfg").write_text(CONFIGURATION, encoding="utf-8")
+    uri = uri_of(tmp_path / "cell.mnt")
+    await open_document(client, uri, PROGRAM)
+    speed = await hover_at(client, uri, PROGRAM, "SPEED.xAxis", 2)
+    assert speed.endswith("- Here: axis 0\n- The configuration file sets axis 0 to `500` (line 4)")
+    scale = await hover_at(client, uri, PROGRAM, "SCALE[1,2]", 2)
+    assert scale.endswith(
+        "- Here: axes 1, 2\n"
+        "- The configuration file sets axis 1 to `10` (line 3)\n"
+        "- The configuration file sets axis 2 to `10` (line 3)"
+    )
+    assert (await hover_at(client, uri, PROGRAM, "OUT.3", 1)).endswith("- Here: output 3")
+
+
+async def test_a_label_shows_the_remarks_above_it(client, tmp_path):
+    uri = uri_of(tmp_path / "cell.mnt")
+    await open_document(client, uri, PROGRAM)
+    label = await hover_at(client, uri, PROGRAM, "GOSUB init", 7)
+    assert label.endswith("\n\nHome both axes\nand wait for them\ncalled once")

@@ -12,6 +12,7 @@ from mintlang.lsp.features import (
     navigation,
     reference_lenses,
     rename,
+    selection_ranges,
     semantic_tokens,
     settings,
     signature,
@@ -36,4 +37,5 @@ FEATURES = (
     simulator,
     call_hierarchy,
     reference_lenses,
+    selection_ranges,
 )

@@ -142,3 +142,17 @@ async def test_definition_inside_the_text_of_a_macro(client, tmp_path, needle, s
     )
     edited = {(edit.range.start.line, edit.range.start.character) for edit in renamed.changes[uri]}
     assert (where.line, MACROS.splitlines()[where.line].index(needle.split()[0])) in edited  # the same token
+
+
+async def test_highlights_of_a_label_and_its_jumps(client, tmp_path):
+    uri = uri_of(tmp_path / "xy.mnt")
+    await open_document(client, uri, XY)
+    highlights = await client.text_document_document_highlight_async(
+        types.DocumentHighlightParams(text_document=document(uri), position=position(XY, "GOSUB init", 7))
+    )
+    kinds = {h.range.start.line: h.kind for h in highlights}
+    assert kinds == {
+        13: types.DocumentHighlightKind.Write,  # the label
+        9: types.DocumentHighlightKind.Read,
+        35: types.DocumentHighlightKind.Read,
+    }

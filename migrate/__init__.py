@@ -8,7 +8,11 @@ not touch survives byte for byte::
     from mintlang.migrate import migrate, rules_at
     result = migrate(v3_source, config=v3_config, controller="nextmove-pci")
     result.text, result.changes, result.manual, result.rule_counts, result.edits()
+    result.already_v4  # recognised as Mint v4 and left as it was
     rules_at(v3_source, offset)  # single-rule quick fixes at a position
+
+A bug a rule meets raises ``MigrationFailed`` naming the rule; the CLI reports it
+for that application only and goes on with the others.
 """
 
 from __future__ import annotations

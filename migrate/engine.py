@@ -10,6 +10,11 @@ there is not written twice, which is what makes a second migration a no-op.
 
 Text outside the edited spans is copied, never regenerated: comments, spacing,
 case, blank lines, CRLF and characters of any code page survive as they were.
+
+A rule that raises, or a phase still editing after ``MAX_PASSES`` passes (a rule
+rewriting its own output), raises ``MigrationFailed`` naming the rule, so the
+caller can report it and go on with other files. ``history`` maps every change
+and marked line back to the original and forward to the migrated text.
 """
 
 from __future__ import annotations

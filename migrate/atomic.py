@@ -59,7 +59,11 @@ def target(path: Path) -> Path:
         raise Unwritable(f"cannot write {shown}: its directory {real.parent} is not writable")
     if not _can_give(status):
         raise Unwritable(f"cannot write {shown}: it belongs to another user or group, which a new copy could not keep")
-    outside = status.st_nlink - len(names(real, status))
+    try:
+        outside = status.st_nlink - len(names(real, status))
+    except OSError as error:
+        reason = f"its folder cannot be searched for its other names ({error.strerror or error})"
+        raise Unwritable(f"cannot write {shown}: {reason}") from None
     if outside > 0:
         raise Unwritable(f"cannot write {shown}: it has hard links outside its folder, which would keep the old text")
     return real

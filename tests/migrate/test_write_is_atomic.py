@@ -107,3 +107,22 @@ def test_only_files_named_as_mint_migrate_temporaries_are_touched(tmp_path: Path
         other.write_text("mine")
     assert run("--write", path).exit_code == 0
     assert all(other.read_text() == "mine" for other in kept)
+
+
+def test_a_hard_linked_file_in_a_folder_that_cannot_be_listed_is_refused(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    path = program(tmp_path)
+    os.link(path, tmp_path / "b.mnt")
+    scandir = os.scandir
+
+    def denied(folder: str | Path = ".") -> object:
+        if Path(folder) == tmp_path:  # what a folder with write and search but no read permission does
+            raise PermissionError(13, "Permission denied", str(folder))
+        return scandir(folder)
+
+    monkeypatch.setattr(os, "scandir", denied)
+    result = run("--write", path)
+    assert result.exit_code == 2 and "Traceback" not in result.output
+    assert "its folder cannot be searched for its other names (Permission denied); nothing was written" in result.stderr
+    assert path.read_text() == V3

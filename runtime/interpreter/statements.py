@@ -457,9 +457,9 @@ class StatementCompiler:
     def while_(self, statement: n.While, pc: int) -> Operation:
         """Entering the loop; its ENDW tests the condition again for each further pass."""
         block = self._opened()
-        condition = self.conditions[self.place] = self.expressions.compile(statement.condition)
         exit_pc = self._after(block.closer)
-        self._recover(pc, exit_pc, pc)
+        self._recover(pc, exit_pc, pc)  # first: a condition that cannot be compiled raises when the WHILE runs
+        condition = self.conditions[self.place] = self.expressions.compile(statement.condition)
         vm = self.vm
 
         def while_() -> None:
@@ -472,7 +472,9 @@ class StatementCompiler:
 
     def _endw(self, block: Block, pc: int) -> Operation:
         opener = self.positions[block.opener]
-        condition = self.conditions[block.opener]
+        condition = self.conditions.get(block.opener)
+        if condition is None:
+            return _nothing  # its WHILE raises instead of entering the loop, and an error there resumes after it
         self._recover(pc, pc + 1, opener)
         vm = self.vm
 

@@ -63,6 +63,7 @@ class Dispatch:
     timer_minimum_ms: int  # the shortest TIMEREVENT period (T-11)
     highest_input_first: bool = False  # Mint v3: #IN7 before #IN0 (001:2574-2583)
     inputs_interrupt_inputs: bool = False  # Mint v3: another input's handler pre-empts a running #INx (001:2548-2549)
+    onerror_repeats: bool = True  # #ONERROR runs again while an axis error stays latched (AX-7); v3: once per error
 
 
 NEXTMOVE = Dispatch(
@@ -185,7 +186,7 @@ class Events:
             self.on_fastin_return(number)
         if kind is not EventClass.ERROR:
             return
-        if not self.errors_latched():
+        if not self.dispatch.onerror_repeats or not self.errors_latched():
             self._onerror_entries = 0
             return
         if self._onerror_entries >= ONERROR_REENTRY_LIMIT:

@@ -6,7 +6,9 @@ The reserved labels are ``#ONERROR``, ``#STOP``, ``#FASTPOS`` and ``#IN0``..``#I
 #IN7 highest (001:2574-2583); a higher routine finishes before a lower one is
 called, except that an input's routine can be interrupted by another input's,
 never by its own (001:2548-2549, 2583). An input interrupts on its falling edge,
-active to inactive (001:2523-2538, 4328).
+active to inactive (001:2523-2538, 4328). #ONERROR is called when a motion error
+occurs (001:5501-5511), once: returning with an error still latched does not call
+it again, as v4's does.
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ DISPATCH = Dispatch(
     timer_minimum_ms=0,
     highest_input_first=True,
     inputs_interrupt_inputs=True,
+    onerror_repeats=False,
 )
 _RESERVED = {"ONERROR": "ONERROR", "STOP": "STOP", "FASTPOS": "FASTIN"} | {f"IN{n}": f"IN{n}" for n in range(8)}
 

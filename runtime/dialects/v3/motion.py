@@ -19,7 +19,10 @@ What differs from v4 (each with its line in the v3 guide):
   and does nothing when the switch is already open (001:3470-3509); DISLIMIT and ENLIMIT
   switch the limits off and on (001:7433-7470); the stop input ramps the moves down at
   DECEL and lets them go on when it clears, or (STOPMODE 2) cancels them (001:4542-4560,
-  11894-11929).
+  11894-11929);
+* SERVOFF is TORQUE = 0, as the guide says (001:11700-11712), with MODE 1 and "Servo off"
+  for a move; SERVOC restores the servo where the axis is, as its STOP (001:11629-11662);
+  ENABLE switches the common amplifier enable (001:7547-7576).
 """
 
 from __future__ import annotations
@@ -48,9 +51,11 @@ from mintlang.runtime.motion.axis import (
     Axis,
 )
 from mintlang.runtime.motion.commands import Motion
+from mintlang.runtime.motion.moves import next_profiler_tick
 from mintlang.runtime.ranges import UNBOUNDED
 
 OUT_OF_RANGE = 3
+SERVO_OFF = 40  # the v4 error for a drive that is off, which v3 reports as "Servo off"
 DECEL_ENABLED = 1  # AXISCON bit 0 (001:6024)
 SCALE_LIMIT = 32000.0  # CONFLICT: 65000 (001:960), 32000 (001:97), 3200 (001:11592); the table printed twice
 CONFIG_OFF, CONFIG_SERVO = 0, 1
@@ -137,6 +142,7 @@ class V3Motion:
         self.motion = motion
         self.v4 = v4
         self.axiscon = [0] * len(motion.axes)
+        self.servo_off: set[int] = set()  # axes SERVOFF put in torque mode (MODE 1 while it lasts)
         self.on_reset: list[Callable[[], None]] = []  # what RESET clears besides the axes (outputs, TIME, IMASK)
         checked_here = (
             {RENAMED.get(name, name) for name in RANGES} & set(motion.axes[0].bounds) if motion.axes else set()
@@ -190,15 +196,22 @@ class V3Motion:
             access = self._access(v4)
             read = access.read if v3 != "IDLE" else self._access("IDLE").read
             table.register(v3, read=read, write=self._writer(v3, v4))
-        for name in ("SPEED", "KINT", "KVEL", "KVELFF", "TORQUE", "JOG"):
+        for name in ("SPEED", "KINT", "KVEL", "KVELFF"):
             table.register(name, read=self._access(name).read, write=self._writer(name, name))
-        for name in ("POS", "ENCODER", "VECTORA", "VECTORR", "STOP", "FASTPOS", "VEL", "ABORT"):
+        for name in ("TORQUE", "JOG"):
+            table.register(name, read=self._access(name).read, write=self._servo_on(self._writer(name, name)))
+        for name in ("POS", "ENCODER", "STOP", "FASTPOS", "VEL", "ABORT"):
             table.alias(name, self._access(name))
         table.alias("FOLERR", self._access("FOLERROR"))
         table.alias("FASTENC", self._access("FASTENCODER"))
         target = self._access("POSTARGET").read
         for name in ("MOVEA", "MOVER"):
-            table.register(name, read=target, write=self._access(name).write)
+            table.register(name, read=target, write=self._servo_on(self._v4_write(name)))
+        for name in ("VECTORA", "VECTORR"):
+            table.register(name, write=self._servo_on(self._v4_write(name)))
+        table.register("SERVOFF", command=self._servoff)
+        table.register("SERVOC", command=self._servoc)
+        table.register("ENABLE", write=per_channel(self._enable))
         table.register("ACCEL", read=self._access("ACCEL").read, write=per_channel(self._accel))
         table.register("DECEL", read=self._access("DECEL").read, write=per_channel(self._ranged("DECEL", self._decel)))
         table.register("ACCELTIME", write=per_channel(self._ranged("ACCELTIME", self._acceltime)))
@@ -223,9 +236,14 @@ class V3Motion:
         table.register("CONTON", command=self._contouring(1.0))
         table.register("CONTOFF", command=self._contouring(0.0))
         table.register("OFFSET", read=self._remaining)
-        table.register("CIRCLEA", write=self._circle("CIRCLEA"))
-        table.register("CIRCLER", write=self._circle("CIRCLER"))
+        table.register("CIRCLEA", write=self._servo_on(self._circle("CIRCLEA")))
+        table.register("CIRCLER", write=self._servo_on(self._circle("CIRCLER")))
         table.register("RAMP", read=lambda ch: 0.0, write=per_channel(self._ramp))
+
+    def _v4_write(self, name: str) -> Callable[[Channels | None, Values], bool]:
+        write = self._access(name).write
+        assert write is not None, name
+        return write
 
     def _writer(self, v3: str, v4: str) -> Callable[[Channels | None, Values], bool]:
         write_one = self._v4_writer(v4)
@@ -276,6 +294,9 @@ class V3Motion:
     # ------------------------------------------------------------ reading
 
     def _mode(self, channel: int | None) -> float:
+        axis = self.motion.axis(channel)
+        if axis.number in self.servo_off and axis.torque is not None:
+            return 1.0  # _servoff (001:11700)
         bits = int(self._read("AXISMODE", channel))
         if bits not in _MODES:
             raise NotSimulated("MODE", f"the v4 motion modes {bits}, which have no v3 code")
@@ -297,14 +318,18 @@ class V3Motion:
     # ------------------------------------------------------------ moves
 
     def _go(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
-        """GO starts the pending moves, then waits while a move runs ahead of them (001:3404-3412, 8482)."""
+        """GO starts the pending moves, then waits while a move runs or starts ahead of them: MINT is always one
+        step ahead (001:3404-3412, 8482)."""
         go = self._access("GO").command
         assert go is not None
         go(channels, arguments)
-        behind = [axis for axis in self.motion.addressed(channels) if axis.move is not None and axis.buffer]
-        for axis in behind:
-            self.motion.clock.changes_at(axis.move.end)  # type: ignore[union-attr]
-        return bool(behind)
+        clock = self.motion.clock
+        waiting = False
+        for axis in self.motion.addressed(channels):
+            if (axis.move is not None) + axis.triggered >= 2:
+                waiting = True
+                clock.changes_at(axis.move.end if axis.move is not None else next_profiler_tick(clock.now))
+        return waiting
 
     def _circle(self, name: str) -> Callable[[Channels | None, Values], bool]:
         """CIRCLEA/CIRCLER only on axes 0 and 1 (001:6730)."""
@@ -427,3 +452,44 @@ class V3Motion:
         if value not in STOPMODES:
             raise MintError(OUT_OF_RANGE, channel, f"STOPMODE = {value:g}")
         self._v4_writer("STOPINPUTMODE")(channel, STOPMODES[value])
+
+    # ------------------------------------------------------------ servo off
+
+    def _servo_on(self, write: Callable[[Channels | None, Values], bool]) -> Callable[[Channels | None, Values], bool]:
+        """A move, JOG or TORQUE on an axis SERVOFF holds is "Servo off" (001:13169-13171); TORQUE ends SERVOFF."""
+
+        def checked(channels: Channels | None, values: Values) -> bool:
+            for number in channels if channels is not None else (0,):
+                if number in self.servo_off and self.motion.axis(number).torque is not None:
+                    raise MintError(SERVO_OFF, number, "SERVOFF holds the axis: SERVOC or CANCEL first")
+            return write(channels, values)
+
+        return checked
+
+    def _servoff(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        """SERVOFF: the servo loop off, the axis free to move by hand; "TORQUE = 0 ... will produce the same
+        effect" (001:11700-11712)."""
+        torque = self._v4_write("TORQUE")
+        axes = channels if channels is not None else (0,)
+        torque(axes, (0.0,) * len(axes))
+        self.servo_off.update(axes)
+        return False
+
+    def _servoc(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        """SERVOC: the servo on again where the axis is, as STOP after TORQUE = 0 does (001:11629-11662, 11710)."""
+        stop = self._access("STOP").command
+        assert stop is not None
+        axes = tuple(number for number in (channels or (0,)) if self.motion.axis(number).torque is not None)
+        self.servo_off.difference_update(axes)
+        return stop(axes, arguments) if axes else False
+
+    def _enable(self, _: int | None, value: float) -> None:
+        """ENABLE switches the one enable output of every drive (001:7567-7576)."""
+        if value not in (0, 1):
+            raise MintError(OUT_OF_RANGE, detail=f"ENABLE = {value:g}")
+        for axis in self.motion.axes:
+            if value:
+                axis.enable()
+            else:
+                self.motion.crash_group(axis)
+                axis.disable()

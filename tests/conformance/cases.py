@@ -9,15 +9,16 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from mintlang.controllers import profile
+from mintlang.dialect import Dialect
+from mintlang.runtime.hardware import machine
 from mintlang.runtime.scenario import Scenario, load_scenario
 
 CONFORMANCE = Path(__file__).parent
 BEHAVIOUR = CONFORMANCE.parents[1] / "runtime" / "BEHAVIOUR.md"
 
-_HEADER = re.compile(r"REM\s+(conformance|manual|choice|controller|until-ms):\s*(.*?)\s*$", re.IGNORECASE)
+_HEADER = re.compile(r"REM\s+(conformance|manual|choice|controller|dialect|until-ms):\s*(.*?)\s*$", re.IGNORECASE)
 _CITATION = re.compile(r"(000|001|002|004):(\d+)(?:-(\d+))?")
-_CHOICE = re.compile(r"[A-Z]+-\d+")
+CHOICE = re.compile(r"\b[A-Z][A-Z0-9]*-\d+\b")  # a specification item (NM-9) or a Mint v3 choice (V3-2)
 
 
 class MalformedCase(ValueError):
@@ -31,7 +32,8 @@ class Case:
     title: str
     citations: tuple[str, ...]
     choices: tuple[str, ...]
-    controller: str
+    controller: str | None  # None: the dialect's default controller
+    dialect: Dialect
     until_ms: int | None
     configuration: str | None
     scenario: Scenario  # from the TOML file beside the program; the program's own REM lines are read by the run
@@ -56,11 +58,12 @@ def read_case(path: Path) -> Case:
     citations = _citations(path, header.get("manual", ""))
     choices = tuple(choice.strip() for choice in header.get("choice", "").split(",") if choice.strip())
     for choice in choices:
-        if not _CHOICE.fullmatch(choice):
+        if not CHOICE.fullmatch(choice):
             raise MalformedCase(f"{path.name}: {choice!r} is not a specification item id such as NM-9")
-    controller = header.get("controller", "nextmove-pci")
+    controller = header.get("controller")
+    dialect = Dialect(header.get("dialect", Dialect.V4.value))
     toml = path.with_suffix(".toml")
-    scenario = load_scenario(toml, profile(controller)) if toml.exists() else Scenario()
+    scenario = load_scenario(toml, machine(controller, dialect), dialect) if toml.exists() else Scenario()
     configuration = path.with_suffix(".cfg")
     return Case(
         path,
@@ -69,6 +72,7 @@ def read_case(path: Path) -> Case:
         citations,
         choices,
         controller,
+        dialect,
         int(header["until-ms"]) if "until-ms" in header else None,
         configuration.read_text(encoding="utf-8") if configuration.exists() else None,
         scenario,

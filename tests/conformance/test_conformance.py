@@ -6,16 +6,16 @@ every line indented differently; all three must meet every expectation.
 
 from __future__ import annotations
 
-import re
 from dataclasses import replace
 from pathlib import Path
 
 import pytest
 
+from mintlang.dialect import Dialect
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import expectations_pass
 from mintlang.runtime.simulation import Limits
-from tests.conformance.cases import BEHAVIOUR, CONFORMANCE, Case, all_cases, read_case, reindented
+from tests.conformance.cases import BEHAVIOUR, CHOICE, CONFORMANCE, Case, all_cases, read_case, reindented
 from tests.runtime.running import observable
 
 UNBOUNDED_MS = 600_000  # a case that has not ended after ten simulated minutes is stuck
@@ -27,6 +27,7 @@ def _run(case: Case, source: str, *, every_tick: bool) -> RunResult:
         source,
         config=case.configuration,
         controller=case.controller,
+        dialect=case.dialect,
         scenario=case.scenario,
         limits=limits,
         name=case.path.name,
@@ -67,8 +68,15 @@ def test_there_are_at_least_three_hundred_cases() -> None:
     assert len(all_cases()) >= 300
 
 
+def test_the_v3_folder_holds_at_least_forty_mint_v3_cases() -> None:
+    v3 = [read_case(path) for path in all_cases() if path.is_relative_to(CONFORMANCE / "v3")]
+    assert len(v3) >= 40
+    assert all(case.dialect is Dialect.V3 for case in v3), "a case under v3/ says REM dialect: v3"
+    assert all(any(citation.startswith("001:") for citation in case.citations) for case in v3), "v3 cases cite 001"
+
+
 def test_every_choice_a_case_rests_on_is_recorded_in_the_behaviour_document() -> None:
-    recorded = set(re.findall(r"\b[A-Z]+-\d+\b", BEHAVIOUR.read_text(encoding="utf-8")))
+    recorded = set(CHOICE.findall(BEHAVIOUR.read_text(encoding="utf-8")))
     missing = {
         f"{case.name}: {choice}"
         for case in map(read_case, all_cases())

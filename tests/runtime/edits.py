@@ -108,10 +108,11 @@ def seen(
     until_ms: int,
     every_tick: bool = False,
     config: str | None = None,
-    controller: str = "nextmove-bx",
+    controller: str | None = "nextmove-bx",
+    dialect: str = "v4",
     scenario: Scenario | None = None,
 ) -> Seen:
-    """Run ``source`` (after ``config``) until it stops or ``until_ms`` passes."""
+    """Run ``source`` (after ``config``), a program in ``dialect``, until it stops or ``until_ms`` passes."""
     ran: list[Controller] = []
 
     def keep(controller: Controller, tick: int) -> None:
@@ -119,7 +120,9 @@ def seen(
             ran.append(controller)
 
     limits = Limits(until_ms=until_ms, max_wall_s=60.0, every_tick=every_tick)
-    result = run_source(source, config=config, controller=controller, scenario=scenario, limits=limits, on_tick=keep)
+    result = run_source(
+        source, config=config, controller=controller, dialect=dialect, scenario=scenario, limits=limits, on_tick=keep
+    )
     return Seen(
         result.stop,
         result.err,

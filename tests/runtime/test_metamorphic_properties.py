@@ -132,6 +132,7 @@ def _run_case(case: Case, source: str, config: str | None) -> Seen:
         until_ms=case.until_ms or CONFORMANCE_UNBOUNDED_MS,
         config=config,
         controller=case.controller,
+        dialect=case.dialect,
         scenario=case.scenario,
     )
 

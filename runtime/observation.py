@@ -6,7 +6,7 @@ import re
 from dataclasses import dataclass
 
 from mintlang.runtime.controller import Controller
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.motion.axis import Axis
 
 
@@ -86,7 +86,7 @@ class Observation:
                 return values[position - 1] if 1 <= position <= len(values) else None
             slot = names.scalars.get(identity)
             return self.c.vm.scalars[slot] if slot is not None else None
-        except MintError:
+        except (MintError, NotSimulated):  # no value to give (a Mint v3 ERR before any error)
             return None
 
 

@@ -200,7 +200,7 @@ class V3Motion:
             table.register(name, read=self._access(name).read, write=self._writer(name, name))
         for name in ("TORQUE", "JOG"):
             table.register(name, read=self._access(name).read, write=self._servo_on(self._writer(name, name)))
-        for name in ("POS", "ENCODER", "STOP", "FASTPOS", "VEL", "ABORT"):
+        for name in ("AXES", "POS", "ENCODER", "STOP", "FASTPOS", "VEL", "ABORT"):
             table.alias(name, self._access(name))
         table.alias("FOLERR", self._access("FOLERROR"))
         table.alias("FASTENC", self._access("FASTENCODER"))

@@ -3,7 +3,8 @@
 A v3 program names its keywords in v3 (``GAIN``, ``MODE``, ``ANALOGUE1``, the
 two-letter abbreviations), which the parser resolves to the v3 guide's full
 names. This table maps those names onto the handlers of the v4 machine, under
-v3's own rules (``motion.py``, ``system.py``). A v3 keyword it does not hold is
+v3's own rules (``motion.py``, ``switches.py``, ``recovery.py``, ``system.py``; put
+together in ``machine.py``). A v3 keyword it does not hold is
 not simulated: its line stops the run and names it. Every value read is a v3
 number, a whole number of 256ths (V3-2).
 """
@@ -37,7 +38,8 @@ class V3KeywordTable(KeywordTable):
         command: Command | None = None,
         array_command: ArrayCommand | None = None,
     ) -> None:
-        super().register(name, read=_fixed(read) if read is not None else None, write=write, command=command)
+        read = _fixed(read) if read is not None else None
+        super().register(name, read=read, write=write, command=command, array_command=array_command)
 
     def alias(self, name: str, access: KeywordAccess) -> None:
         """``name`` does what a v4 keyword's handlers do."""

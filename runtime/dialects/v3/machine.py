@@ -7,8 +7,11 @@ from dataclasses import dataclass
 
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.dialects.v3 import events
+from mintlang.runtime.dialects.v3.handlers import V4Handlers
 from mintlang.runtime.dialects.v3.keywords import V3KeywordTable, inert_settings
 from mintlang.runtime.dialects.v3.motion import V3Motion
+from mintlang.runtime.dialects.v3.recovery import V3Recovery
+from mintlang.runtime.dialects.v3.switches import V3Switches
 from mintlang.runtime.dialects.v3.system import V3System
 from mintlang.runtime.events import Events
 from mintlang.runtime.inert import InertSettings
@@ -46,10 +49,12 @@ def install(
 ) -> V3Controller:
     """The v3 keyword table over the v4 handlers in ``v4``, with the v3 power-up state of the parts."""
     table = V3KeywordTable(v4.controller)
-    axes = V3Motion(motion, v4)
-    axes.register(table)
-    controller_wide = V3System(v4, clock=clock, axes=motion.axes, io=io, events=events_, system=system, vm=vm)
+    handlers = V4Handlers(v4)
+    recovery = V3Recovery(motion, handlers)
+    controller_wide = V3System(handlers, clock=clock, axes=motion.axes, io=io, events=events_, system=system, vm=vm)
+    for part in (V3Motion(motion, handlers), V3Switches(motion, handlers), recovery):
+        part.register(table)
     controller_wide.register(table, terminal)
-    axes.on_reset.append(controller_wide.reset)
+    recovery.on_reset.append(controller_wide.reset)
     events.falling_edges(io)
-    return V3Controller(table, inert_settings(table), axes.motion_error)
+    return V3Controller(table, inert_settings(table), recovery.motion_error)

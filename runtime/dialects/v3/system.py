@@ -21,11 +21,12 @@ from collections.abc import Callable, Sequence
 
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.dialects.v3.controllers import ERROR_INPUT, USER_INPUTS
+from mintlang.runtime.dialects.v3.handlers import V4Handlers
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.events import EventClass, Events
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.io import DigitalIO
-from mintlang.runtime.keywords import Channels, KeywordAccess, KeywordTable, per_channel
+from mintlang.runtime.keywords import Channels, KeywordTable, per_channel
 from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.system import System
 from mintlang.runtime.terminal import Terminal
@@ -44,7 +45,7 @@ class V3System:
 
     def __init__(
         self,
-        v4: KeywordTable,
+        v4: V4Handlers,
         *,
         clock: Clock,
         axes: Sequence[Axis],
@@ -61,15 +62,10 @@ class V3System:
         self.system = system
         self.vm = vm
 
-    def _access(self, name: str) -> KeywordAccess:
-        access = self.v4.get(name)
-        assert access is not None, name
-        return access
-
     def register(self, table: KeywordTable, terminal: Terminal) -> None:
         for name in ("OUT", "IMASK", "IPEND", "INKEY", "CLS", "BEEP", "LOCATE", "LIMIT"):
-            table.alias(name, self._access(name))
-        table.alias("STOPSW", self._access("STOPSWITCH"))
+            table.alias(name, self.v4.access(name))
+        table.alias("STOPSW", self.v4.access("STOPSWITCH"))
         table.register("IN", read=self._input)
         for number in range(USER_INPUTS):
             table.register(f"IN{number}", read=lambda _, bit=number: self._input(bit))
@@ -79,7 +75,7 @@ class V3System:
         table.register("TIME", read=self._time, write=per_channel(self._write_time))
         table.register("ERR", read=self._last_error("ERR", lambda: self.vm.err))
         table.register("ERRAXIS", read=self._last_error("ERRAXIS", lambda: self.vm.erraxis))
-        table.register("ERRORIN", read=self._access("ERRORSWITCH").read, write=per_channel(self._write_error_input))
+        table.register("ERRORIN", read=self.v4.read("ERRORSWITCH"), write=per_channel(self._write_error_input))
         table.register("LOOPTIME", read=lambda _: float(LOOP_MS), write=per_channel(self._looptime))
         table.register("DINT", command=self._interrupts(enabled=False))
         table.register("EINT", command=self._interrupts(enabled=True))
@@ -100,8 +96,7 @@ class V3System:
 
     def _input(self, channel: int | None) -> float:
         """The levels of the 8 user inputs: v3 latches no edges for IN (001:4290-4310)."""
-        read = self._access("IN").read
-        assert read is not None
+        read = self.v4.read("IN")
         if channel is None:
             return float(int(read(None)) & BYTE)
         if not 0 <= channel < USER_INPUTS:
@@ -109,18 +104,11 @@ class V3System:
         return read(channel)
 
     def _output(self, number: int) -> Callable[[int | None, float], None]:
-        write = self._access("OUT").write
-        assert write is not None
-
-        def write_bit(_: int | None, value: float) -> None:
-            write((number,), (value,))
-
-        return write_bit
+        write_bit = self.v4.write_one("OUT")
+        return lambda _, value: write_bit(number, value)
 
     def _analogue(self, channel: int) -> float:
-        read = self._access("ADC").read
-        assert read is not None
-        percent = read(channel)
+        percent = self.v4.read("ADC")(channel)
         return float(min(int((percent + 100) * ANALOG_COUNTS / 200), ANALOG_COUNTS - 1))
 
     # ---------------------------------------------------------------- time and errors

@@ -12,6 +12,7 @@ needs confirmation where the client supports them, else a question.
 
 from __future__ import annotations
 
+import asyncio
 import logging
 
 from lsprotocol import types
@@ -78,6 +79,7 @@ def _check_name(snapshot: Snapshot, symbol: Symbol, name: str) -> None:
 
 
 MERGE = "mint.mergeSpellings"
+QUESTION_TIMEOUT_S = 120.0
 _GO_ON = "Rename all"
 
 
@@ -154,7 +156,10 @@ def register(server: MintServer) -> None:
             message=f"{note}. Rename all?",
             actions=[types.MessageActionItem(title=_GO_ON), types.MessageActionItem(title="Cancel")],
         )
-        answer = await server.window_show_message_request_async(question)
+        try:
+            answer = await asyncio.wait_for(server.window_show_message_request_async(question), QUESTION_TIMEOUT_S)
+        except TimeoutError:
+            answer = None  # a client that never answers gets no edit rather than a request open for ever
         if answer is None or answer.title != _GO_ON:
             raise RenameRefused(f"Rename cancelled: {note}")
         return types.WorkspaceEdit(changes=changes)

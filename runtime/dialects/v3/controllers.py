@@ -3,7 +3,7 @@
 The v3 guide covers EuroSystem (ES/D: 2 servo or 3 stepper axes), EuroStep
 (ES/S: 3 stepper), EuroServo (ES/M3: 3 servo), SmartSystem/1-3 (SMS), SmartMove/1-3
 (SMM, "functionally equivalent to SmartSystem/3" where the tables omit it) and
-SmartStep (SST/3), EuroSystem/STE and EuroStep/STE (001:176-191). Stepper axes
+SmartStep (SST/3), EuroSystem/STE and EuroStep/STE (001:175-191). Stepper axes
 are not simulated, so the servo controllers are offered: at most 3 axes
 (001:550), 8 digital inputs and 8 outputs (001:4284), one fast interrupt input
 (001:2585-2627) and two analog inputs, three on a 3 axis servo controller

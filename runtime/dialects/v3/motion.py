@@ -2,12 +2,12 @@
 
 * parameters keep their v3 names, power-up values and ranges (``parameters.py``, V3-5);
 * writing ACCEL (or ACCELTIME) also writes DECEL unless bit 0 of AXISCON is set
-  (001:5662, 5728, 7196-7198); the other AXISCON bits are not simulated;
+  (001:5662, 5728, 7203); the other AXISCON bits are not simulated;
 * SCALE takes whole numbers, rounding a fraction down (001:11610);
 * MODE and ERROR read one code, not a bit pattern (001:10038-10061, 4995-5003);
 * GO waits while a move runs or starts ahead of the ones it starts (001:3404-3412, V3-10);
-* circles are on axes 0 and 1 only (001:6730);
-* SERVOFF is TORQUE = 0, as the guide says (001:11700-11712), with MODE 1 and "Servo off"
+* circles are on axes 0 and 1 only (001:6732, 6793);
+* SERVOFF is TORQUE = 0, as the guide says (001:11691-11709), with MODE 1 and "Servo off"
   for a move; SERVOC restores the servo where the axis is, as its STOP (001:11629-11662).
 """
 
@@ -44,7 +44,7 @@ OUT_OF_RANGE = 3
 INVALID_AXIS = 2
 SERVO_OFF = 40  # the v4 error for a drive that is off, which v3 reports as "Servo off"
 DECEL_ENABLED = 1  # AXISCON bit 0 (001:6024)
-SCALE_LIMIT = 32000.0  # CONFLICT: 65000 (001:960), 32000 (001:97), 3200 (001:11592); the table printed twice
+SCALE_LIMIT = 32000.0  # CONFLICT: 65000 (001:960), 32000 (001:97), 3200 (001:11592, a dropped 0)
 SERVOFF_MODE = 1.0  # _servoff (001:10040)
 
 _MODES: Mapping[int, float] = MappingProxyType(
@@ -148,7 +148,7 @@ class V3Motion:
             self._decel(channel, axis.get("ACCEL"))
 
     def _decel(self, channel: int | None, value: float) -> None:
-        """DECEL, which the stop input ramps down at too (001:7214)."""
+        """DECEL, which the stop input ramps down at too (001:7219)."""
         self.v4.write_one("DECEL")(channel, value)
         self.v4.write_one("ERRORDECEL")(channel, value)
 
@@ -211,7 +211,7 @@ class V3Motion:
 
     @staticmethod
     def _circle(write: Writer) -> Writer:
-        """CIRCLEA/CIRCLER only on axes 0 and 1 (001:6730)."""
+        """CIRCLEA/CIRCLER only on axes 0 and 1 (001:6732, 6793)."""
 
         def circle(channels: Channels | None, values: Values) -> bool:
             if channels is not None and tuple(channels[:2]) != (0, 1):
@@ -240,14 +240,15 @@ class V3Motion:
 
     def _servoff(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         """SERVOFF: the servo loop off, the axis free to move by hand; "TORQUE = 0 ... will produce the same
-        effect" (001:11700-11712)."""
+        effect" (001:11691-11709)."""
         axes = channels if channels is not None else (0,)
         self.v4.write("TORQUE")(axes, (0.0,) * len(axes))
         self.servo_off.update(axes)
         return False
 
     def _servoc(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
-        """SERVOC: the servo on again where the axis is, as STOP after TORQUE = 0 does (001:11629-11662, 11710)."""
+        """SERVOC: the servo on again where the axis is, as STOP after TORQUE = 0 does (001:11629-11662,
+        11702-11709)."""
         axes = tuple(number for number in (channels or (0,)) if self.motion.axis(number).torque is not None)
         self.servo_off.difference_update(axes)
         return self.v4.command("STOP")(axes, arguments) if axes else False

@@ -82,7 +82,7 @@ def _signed32(pattern: int) -> int:
 
 
 def bit_and(a: float, b: float) -> float:
-    """``AND``/``&``: bitwise, so ``5 & 6`` is 4 (001:2015-2027); on the whole 32-bit pattern (V3-2)."""
+    """``AND``/``&``: bitwise, so ``5 & 6`` is 4 (001:2021-2031); on the whole 32-bit pattern (V3-2)."""
     return _signed32(raw(a) & raw(b)) / STEPS
 
 

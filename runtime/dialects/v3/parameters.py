@@ -14,7 +14,7 @@ POWER_UP: Mapping[str, float] = MappingProxyType(
         "SPEED": 40_000.0,
         "ACCEL": 300_000.0,
         "DECEL": 300_000.0,
-        "ERRORDECEL": 300_000.0,  # the stop input ramps down at DECEL (001:7214)
+        "ERRORDECEL": 300_000.0,  # the stop input ramps down at DECEL (001:7219)
         "HOMESPEED": 40_000.0,
         "HOMEBACKOFF": 10.0,
         "FOLERRORFATAL": 16_000.0,
@@ -22,7 +22,7 @@ POWER_UP: Mapping[str, float] = MappingProxyType(
         "DACLIMITMAX": 100.0,
     }
 )
-"""v3's power-up values of the v4 parameters, in counts (001:11797, 5645, 7189, 8632, 6061, 9989, 8741, 7059);
+"""v3's power-up values of the v4 parameters, in counts (001:11797, 5649, 7192, 8632, 6061, 9989, 8741, 7059);
 the others are v4's."""
 
 RENAMED: Mapping[str, str] = MappingProxyType(

@@ -119,7 +119,7 @@ class V3System:
         return float(elapsed - elapsed % LOOP_MS)
 
     def _write_time(self, _: int | None, value: float) -> None:
-        """``TIME = 0`` restarts it (001:12057); the table's range starts at 2, its own example at 0 (V3-5)."""
+        """``TIME = 0`` restarts it (001:12060); the table's range starts at 2, its own example at 0 (V3-5)."""
         if not 0 <= value <= 65535:
             raise MintError(OUT_OF_RANGE, detail=f"TIME = {value:g}")
         self.system.time_origin = self.clock.now - int(value)

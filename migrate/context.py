@@ -5,33 +5,109 @@ rule always looks at spans of the text it edits. Helpers here answer the
 questions several rules ask (where does this line start, what is its
 indentation, which newline does the file use, does the target controller have
 this keyword), so no rule re-derives them.
+
+A line gets spans with file offsets (``PlacedLine.absolute``, a copy of every
+node) only when a rule asks for it: copying every line of a large file for each
+of a dozen passes cost more than the parse. So rules name what they look for
+(``statements(n.Dim)``, ``statements("SCALE")``): each line's tags, worked out
+once per text it was parsed from (``LineTags``), say whether it can hold it,
+and only those lines are copied. A tag is a superset test; the rule still
+checks each statement it gets.
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property, wraps
 from itertools import groupby
-from typing import Any, TypeVar
+from typing import Any, TypeVar, cast
 
 import mintlang
 from mintlang.controllers import ControllerProfile, profile
 from mintlang.diagnostics import Span
 from mintlang.keyworddb import database
 from mintlang.keyworddb.load import KeywordDatabase
-from mintlang.semantic.index import KeywordUse
+from mintlang.semantic.index import KeywordUse, index_syntax
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
 
 T = TypeVar("T")
+C = TypeVar("C", bound=Callable[..., Any])
 
 _NEWLINE = re.compile(r"\r\n|\r|\n")
 MARKER = "REM MIGRATE:"
 # A manual item's line: ``REM MIGRATE: <rule>: <reason>``.
 MARKER_LINE = re.compile(rf"^[ \t]*{re.escape(MARKER)}[ \t]*(?P<rule>[A-Z]+-[A-Z0-9-]+):[ \t]*(?P<reason>.*?)[ \t]*$")
+
+# Tags of a line besides its node types and names (see ``LineTags``): tuples, which no name equals.
+LABEL = ("label",)  # the line has a label
+FRACTION = ("fraction",)  # a number on the line is no integer
+
+
+def operator_tag(symbol: str) -> tuple[str, str]:
+    """The tag of a line using a unary or binary operator (``operator_tag("~")``)."""
+    return ("operator", symbol)
+
+
+def name_tag(name: str) -> tuple[str, str]:
+    """The tag of a line writing or reading the user name ``name`` (by its identity: the first
+    ten characters, upper case), apart from the keyword names so that asking for those by what
+    they are (``Context.mentioned``) never brings in every line that uses a variable."""
+    return ("name", n.identity(name))
+
+
+class LineTags:
+    """What each line mentions, worked out once per text it was parsed from for a whole run: the
+    types of its statements and expressions, the keywords, functions and constants it names,
+    ``name_tag`` of its user names, ``operator_tag`` of its operators, ``LABEL`` and ``FRACTION``.
+    Keyed by ``PlacedLine.content``, never by the shared syntax (see ``mintlang.caching``)."""
+
+    def __init__(self) -> None:
+        self._known: dict[Hashable, frozenset[object]] = {}
+
+    def of(self, line: n.PlacedLine) -> frozenset[object]:
+        tags = self._known.get(line.content)
+        if tags is None:
+            tags = self._known[line.content] = _tags(line.syntax)
+        return tags
+
+
+def _tags(syntax: n.LineSyntax) -> frozenset[object]:
+    found: set[object] = set() if syntax.label is None else {LABEL}
+    add = found.add
+    for statement in n.flatten_statements(syntax.statements):
+        kind = type(statement)
+        add(kind)
+        if kind is n.KeywordStatement:
+            add(statement.keyword.keyword)  # type: ignore[union-attr]
+        elif kind is n.FunctionStatement:
+            add(statement.call.function)  # type: ignore[union-attr]
+        elif kind is n.Assignment or kind is n.Input:
+            add(name_tag(statement.target.name.text))  # type: ignore[union-attr]
+        elif kind is n.For:
+            add(name_tag(statement.variable.text))  # type: ignore[union-attr]
+        elif kind is n.Dim or kind is n.BareName:
+            add(name_tag(statement.name.text))  # type: ignore[union-attr]
+        for root in n.expressions_of(statement):
+            for node in n.walk_expression(root):
+                kind = type(node)
+                add(kind)
+                if kind is n.KeywordRef:
+                    add(node.keyword)  # type: ignore[union-attr]
+                elif kind is n.Call:
+                    add(node.function)  # type: ignore[union-attr]
+                elif kind is n.ConstantRef:
+                    add(node.name)  # type: ignore[union-attr]
+                elif kind is n.VariableRef or kind is n.ElementRef:
+                    add(name_tag(node.name.text))  # type: ignore[union-attr]
+                elif kind is n.Binary or kind is n.Unary:
+                    add(operator_tag(node.operator))  # type: ignore[union-attr]
+                elif kind is n.Number and not float(node.value).is_integer():  # type: ignore[union-attr]
+                    add(FRACTION)
+    return frozenset(found)
 
 
 @dataclass(frozen=True)
@@ -41,6 +117,37 @@ class FileView:
     unit: Unit
     text: str
     document: Document
+
+    def line(self, index: int) -> n.Line:
+        """Line ``index`` of ``document.placed`` with file offsets, copied on first use (a node of
+        its own at every place, as ``Document.lines`` has, which copies every line at once)."""
+        lines = self._lines
+        line = lines[index]
+        if line is None:
+            line = lines[index] = self.document.placed[index].absolute()
+        return line
+
+    def keyword_uses(self, index: int) -> tuple[KeywordUse, ...]:
+        """The keyword uses of line ``index``, nodes of ``line(index)``: the semantic index of that
+        line alone (``index_syntax`` reads a document's ``lines`` and nothing else)."""
+        uses = self._uses.get(index)
+        if uses is None:
+            alone = cast(Document, _Lines((self.line(index),)))
+            uses = self._uses[index] = index_syntax([(self.unit, alone)]).keyword_uses
+        return uses
+
+    @cached_property
+    def line_starts(self) -> list[int]:
+        """Where each line's syntax starts (``line(index).span.start``), for bisecting an offset."""
+        return [line.origin + line.syntax.span.start for line in self.document.placed]
+
+    @cached_property
+    def _lines(self) -> list[n.Line | None]:
+        return [None] * len(self.document.placed)
+
+    @cached_property
+    def _uses(self) -> dict[int, tuple[KeywordUse, ...]]:
+        return {}
 
     @cached_property
     def newline(self) -> str:
@@ -79,11 +186,13 @@ class FileView:
         None: AUTO in a configuration file (v4:6647-6649, v3:5838), PROTECT in a program
         (v4:15393, v3:11079). Nothing the migrator writes may go above it."""
         word = "AUTO" if self.unit is Unit.CONFIGURATION else "PROTECT"
-        for line in self.document.lines:
-            if not line.statements and line.label is None:
+        for index, placed in enumerate(self.document.placed):
+            syntax = placed.syntax
+            if not syntax.statements and syntax.label is None:
                 continue
-            first = line.statements[0] if line.statements else None
-            return line if isinstance(first, n.KeywordStatement) and first.keyword.keyword == word else None
+            first = syntax.statements[0] if syntax.statements else None
+            opens = isinstance(first, n.KeywordStatement) and first.keyword.keyword == word
+            return self.line(index) if opens else None
         return None
 
     def markers_above(self, offset: int) -> Iterator[str]:
@@ -104,6 +213,13 @@ class FileView:
         return before.strip() == "" and (after == "" or after.upper().startswith(("REM", ": REM", ":REM")))
 
 
+@dataclass(frozen=True, slots=True)
+class _Lines:
+    """One line standing in for a document, for ``index_syntax``."""
+
+    lines: tuple[n.Line, ...]
+
+
 # A statement with the ones written right before and after it on its line (``Context.neighbours``).
 Neighbours = tuple[FileView, n.Statement | None, n.Statement, n.Statement | None]
 
@@ -115,10 +231,13 @@ class Context:
     files: Mapping[Unit, FileView]
     model: mintlang.SemanticModel
     controller: ControllerProfile
-    _memo: dict[Callable[[Any], Any], Any] = field(default_factory=dict, init=False, repr=False, compare=False)
+    tags: LineTags = field(default_factory=LineTags, repr=False, compare=False)
+    _memo: dict[tuple[Hashable, ...], Any] = field(default_factory=dict, init=False, repr=False, compare=False)
 
     @classmethod
-    def build(cls, texts: Mapping[Unit, str], controller: str) -> Context:
+    def build(cls, texts: Mapping[Unit, str], controller: str, tags: LineTags | None = None) -> Context:
+        """The context of ``texts``; ``tags`` are those of earlier passes of the run, whose
+        unchanged lines need not be walked again."""
         configuration = None
         if Unit.CONFIGURATION in texts:
             configuration = mintlang.parse(texts[Unit.CONFIGURATION], "v3")
@@ -130,43 +249,103 @@ class Context:
             documents[Unit.CONFIGURATION] = configuration
         files = {unit: FileView(unit, texts[unit], documents[unit]) for unit in texts}
         model = mintlang.build_model(program, configuration, controller)
-        return cls(files, model, profile(controller))
+        return cls(files, model, profile(controller), tags if tags is not None else LineTags())
 
-    def memo(self, compute: Callable[[Context], T]) -> T:
-        """``compute(self)``, worked out once per pass: rules ask some whole-application
+    def memo(self, compute: Callable[..., T], *args: Hashable) -> T:
+        """``compute(self, *args)``, worked out once per pass: rules ask some whole-application
         questions at every statement, and rescanning each time made large files quadratic."""
-        if compute not in self._memo:
-            self._memo[compute] = compute(self)
-        return self._memo[compute]
+        key = (compute, *args)
+        if key not in self._memo:
+            self._memo[key] = compute(self, *args)
+        return self._memo[key]
 
     @property
     def db(self) -> KeywordDatabase:
         return database()
 
-    def statements(self) -> Iterator[tuple[FileView, n.Line, n.Statement]]:
-        """Every statement in compile order (configuration first), IF .. THEN bodies included.
+    def placed(self) -> Iterator[tuple[FileView, n.PlacedLine]]:
+        """Every line in compile order (configuration first) as parsed, its spans relative to its
+        ``origin``: for a question about every statement that needs no nodes with file offsets."""
+        for unit, document in self.model.documents():
+            file = self.files[unit]
+            for line in document.placed:
+                yield file, line
 
-        They come from ``Document.lines``, a node of its own at every place, so
+    def lines(self, *wanted: object) -> Iterator[tuple[FileView, n.Line]]:
+        """The lines that have one of the ``wanted`` tags (node types, keyword, function or constant
+        names, ``name_tag(...)``, ``operator_tag(...)``, ``LABEL``, ``FRACTION``), in compile
+        order, with file offsets. No tag, no line: a rule names what it looks for."""
+        order = self._order
+        for position in self._positions(wanted):
+            file, index = order[position]
+            yield file, file.line(index)
+
+    def statements(self, *wanted: object) -> Iterator[tuple[FileView, n.Line, n.Statement]]:
+        """The statements of the lines with one of the ``wanted`` tags, in compile order
+        (configuration first), IF .. THEN bodies included.
+
+        Each line has a node of its own at every place (``FileView.line``), so
         ``mintlang.syntax.parents`` can find what encloses an expression inside one."""
-        for unit, line, statement in self.model.index.statements:
-            yield self.files[unit], line, statement
+        for file, line in self.lines(*wanted):
+            for statement in n.flatten_statements(line.statements):
+                yield file, line, statement
 
-    def neighbours(self) -> Iterator[Neighbours]:
-        """Every statement in compile order with the ones written right before and after it on its
-        line (None at either end; IF .. THEN bodies count in line order). A line is told by its
-        place, (file, line number): equal lines share their syntax, so no statement can name one."""
-        for _, group in groupby(self.statements(), key=_line_place):
+    def neighbours(self, *wanted: object) -> Iterator[Neighbours]:
+        """Every statement of the lines with one of the ``wanted`` tags, in compile order, with the
+        ones written right before and after it on its line (None at either end; IF .. THEN bodies
+        count in line order). A line is told by its place, (file, line number): equal lines share
+        their syntax, so no statement can name one."""
+        for _, group in groupby(self.statements(*wanted), key=_line_place):
             found = [(file, statement) for file, _, statement in group]
             line: list[n.Statement | None] = [None, *(statement for _, statement in found), None]
             for position, (file, statement) in enumerate(found, start=1):
                 yield file, line[position - 1], statement, line[position + 1]
 
     def keyword_uses(self, *keywords: str) -> Iterator[tuple[FileView, KeywordUse]]:
-        """Uses of the named keywords (canonical v3 names), however they were spelled."""
+        """Uses of the named keywords (canonical v3 names), however they were spelled, in compile order."""
         wanted = frozenset(keywords)
-        for use in self.model.index.keyword_uses:
-            if use.keyword.keyword in wanted:
-                yield self.files[use.unit], use
+        order = self._order
+        for position in self._positions(wanted):
+            file, index = order[position]
+            for use in file.keyword_uses(index):
+                if use.keyword.keyword in wanted:
+                    yield file, use
+
+    def mentioned(self, keep: Callable[[str], bool]) -> list[str]:
+        """The keyword, function and constant names written anywhere in the application that
+        ``keep`` accepts: the ``wanted`` of a rule that asks for names by what they are (not a
+        Mint v4 keyword ...), not by a list."""
+        return [tag for tag in self._tagged if type(tag) is str and keep(tag)]
+
+    @cached_property
+    def _order(self) -> tuple[tuple[FileView, int], ...]:
+        """Each line of compile order as its file and its index there."""
+        return tuple(
+            (self.files[unit], index)
+            for unit, document in self.model.documents()
+            for index in range(len(document.placed))
+        )
+
+    @cached_property
+    def _tagged(self) -> dict[object, list[int]]:
+        """Each tag with the positions in ``_order`` of the lines that have it, in order."""
+        found: dict[object, list[int]] = {}
+        tags = self.tags
+        for position, (_, line) in enumerate(self.placed()):
+            for tag in tags.of(line):
+                positions = found.get(tag)
+                if positions is None:
+                    found[tag] = [position]
+                else:
+                    positions.append(position)
+        return found
+
+    def _positions(self, wanted: Iterable[object]) -> list[int]:
+        tagged = self._tagged
+        found = [tagged[tag] for tag in wanted if tag in tagged]
+        if len(found) == 1:
+            return found[0]
+        return sorted(set().union(*found))  # none: no line
 
     def supports(self, keyword: str) -> bool:
         """Whether the target controller has the v4 keyword (its "Controllers Supported" list)."""
@@ -179,12 +358,12 @@ def _line_place(found: tuple[FileView, n.Line, n.Statement]) -> tuple[Unit, int]
     return file.unit, line.number
 
 
-def per_pass(compute: Callable[[Context], T]) -> Callable[[Context], T]:
-    """``compute`` worked out once per context (see ``Context.memo``); its result is shared, so
-    callers must not change it."""
+def per_pass(compute: C) -> C:
+    """``compute(context, *args)`` worked out once per context and arguments (which must be
+    hashable; see ``Context.memo``); its result is shared, so callers must not change it."""
 
     @wraps(compute)
-    def cached(context: Context) -> T:
-        return context.memo(compute)
+    def cached(context: Context, *args: Hashable) -> object:
+        return context.memo(compute, *args)
 
-    return cached
+    return cast(C, cached)

@@ -27,7 +27,7 @@ from dataclasses import dataclass, field, replace
 from mintlang.allocation import without_collector
 from mintlang.diagnostics import LineIndex, Severity, Span
 from mintlang.migrate.citations import cite
-from mintlang.migrate.context import MARKER, Context, FileView
+from mintlang.migrate.context import MARKER, Context, FileView, LineTags
 from mintlang.migrate.history import Edit, History
 from mintlang.migrate.markers import manual_items
 from mintlang.migrate.model import Change, ManualItem, MigrationFailed, Phase
@@ -74,10 +74,12 @@ def run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> di
     """Migrate the files of one application with ``rules`` (already filtered and ordered).
 
     A pass that changed nothing leaves its context valid: the next phase starts from it
-    instead of parsing the same text again.
+    instead of parsing the same text again. The lines' tags are kept for the whole run: most
+    lines come through a pass unchanged.
     """
     states = {unit: _FileState(text, text, LineIndex(text)) for unit, text in texts.items()}
-    context: Context | None = _build(texts, controller)
+    tags = LineTags()
+    context: Context | None = _build(texts, controller, tags)
     errors = {unit: _unreadable(file) for unit, file in context.files.items()}
     for phase in Phase:
         active = [rule for rule in rules if rule.phase is phase]
@@ -86,7 +88,7 @@ def run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> di
         editing: set[str] = set()
         for _ in range(MAX_PASSES):
             if context is None:
-                context = _build({unit: state.text for unit, state in states.items()}, controller)
+                context = _build({unit: state.text for unit, state in states.items()}, controller, tags)
             editing = _apply_pass(context, active, states)
             if not editing:
                 break
@@ -97,9 +99,9 @@ def run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> di
     return {unit: _outcome(state, errors[unit]) for unit, state in states.items()}
 
 
-def _build(texts: Mapping[Unit, str], controller: str) -> Context:
+def _build(texts: Mapping[Unit, str], controller: str, tags: LineTags) -> Context:
     try:
-        return Context.build(texts, controller)
+        return Context.build(texts, controller, tags)
     except Exception as error:  # a parser bug must not take the other files of a run with it
         raise MigrationFailed(None, f"reading it as Mint v3 raised {_described(error)}") from error
 

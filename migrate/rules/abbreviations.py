@@ -35,11 +35,13 @@ class ExpandAbbreviations(Rule):
     evidence = "spec M-ABBR, §9; v3 keyword entries; v4:9258 DE, v4:12313 IM, v4:14092 MD, v4:10949 GR, v4:9517 DT"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        words = vocabulary(Dialect.V3)
+        """Reads each line's significant tokens (words are never trivia), not the lossless stream."""
+        canonical = vocabulary(Dialect.V3).canonical
         for file in context.files.values():
-            for token in file.document.tokens:
-                if token.kind not in WORDS or not token.text.isalnum():
-                    continue
-                name = words.canonical.get(token.text.upper())  # not IN12 -> IN: a glued channel stays
-                if name is not None and name != token.text.upper():
-                    yield self.replace(file, Span(token.start, token.end), like(token.text, name))
+            for offset, line in file.document.physical:
+                for kind, text, start in zip(line.kinds, line.texts, line.starts, strict=True):
+                    if kind not in WORDS or not text.isalnum():
+                        continue
+                    name = canonical.get(text.upper())  # not IN12 -> IN: a glued channel stays
+                    if name is not None and name != text.upper():
+                        yield self.replace(file, Span(offset + start, offset + start + len(text)), like(text, name))

@@ -11,7 +11,7 @@ notes (which axes rely on v3 hardware and defaults) and the explicit-axes rewrit
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Collection
 
 from mintlang.migrate.context import Context, FileView, per_pass
 from mintlang.migrate.rules.axes import default_axes, selector_axes
@@ -39,9 +39,10 @@ def addressed_axes(context: Context, file: FileView, statement: n.KeywordStateme
     return default[: len(statement.values)] if len(statement.values) <= len(default) else None
 
 
-def moved_axes(context: Context, keywords: Iterable[str]) -> tuple[int, ...] | None:
-    """The sorted axes the application writes any of ``keywords`` on (``()`` when it never
-    does), or None when one of those writes has axes that cannot be known."""
+@per_pass
+def moved_axes(context: Context, keywords: Collection[str]) -> tuple[int, ...] | None:
+    """The sorted axes the application writes any of ``keywords`` (a tuple or frozenset) on
+    (``()`` when it never does), or None when one of those writes has axes that cannot be known."""
     found: set[int] = set()
     for file, statement, keyword in keyword_refs(context, *keywords):
         if not written(statement, keyword):
@@ -54,9 +55,10 @@ def moved_axes(context: Context, keywords: Iterable[str]) -> tuple[int, ...] | N
     return tuple(sorted(found))
 
 
-def writes_any(context: Context, names: Iterable[str]) -> bool:
-    """Whether the application writes one of ``names``: a keyword the v3 reader knows
-    (``MFOLERR = 5``) or a v4-only keyword it reads as a variable (``HOMESPEED = 5``)."""
+@per_pass
+def writes_any(context: Context, names: Collection[str]) -> bool:
+    """Whether the application writes one of ``names`` (a tuple or frozenset): a keyword the v3
+    reader knows (``MFOLERR = 5``) or a v4-only keyword it reads as a variable (``HOMESPEED = 5``)."""
     wanted = frozenset(names)
     for _, statement, keyword in keyword_refs(context, *wanted):
         if written(statement, keyword):
@@ -67,15 +69,17 @@ def writes_any(context: Context, names: Iterable[str]) -> bool:
 @per_pass
 def _assigned_names(context: Context) -> frozenset[str]:
     """The names assigned as variables, and the words unparsable statements write
-    (``FOLERRORFATAL = 2;``, a v4 fill the v3 reader cannot parse)."""
+    (``FOLERRORFATAL = 2;``, a v4 fill the v3 reader cannot parse). Read from the syntax as
+    parsed: a statement's text starts at its line's origin plus its own start."""
     found: set[str] = set()
-    for file, _, statement in context.statements():
-        if isinstance(statement, n.Assignment):
-            found.add(statement.target.name.identity)
-        elif type(statement) is n.SyntaxError_:
-            word = unparsed_write(file.text[statement.span.start : statement.span.end])
-            if word is not None:
-                found.add(word)
+    for file, line in context.placed():
+        for statement in n.flatten_statements(line.syntax.statements):
+            if isinstance(statement, n.Assignment):
+                found.add(statement.target.name.identity)
+            elif type(statement) is n.SyntaxError_:
+                word = unparsed_write(file.text[line.origin + statement.span.start : line.origin + statement.span.end])
+                if word is not None:
+                    found.add(word)
     return frozenset(found)
 
 
@@ -103,9 +107,10 @@ def axis_list(axes: tuple[int, ...]) -> str:
     return f"[{','.join(str(axis) for axis in axes)}]"
 
 
-def read_axes(context: Context, keywords: Iterable[str]) -> tuple[int, ...] | None:
-    """The sorted axes the application reads any of ``keywords`` on; a bracket-less read is
-    the first default axis (v3:1127). None when one of them cannot be known."""
+@per_pass
+def read_axes(context: Context, keywords: Collection[str]) -> tuple[int, ...] | None:
+    """The sorted axes the application reads any of ``keywords`` (a tuple or frozenset) on; a
+    bracket-less read is the first default axis (v3:1127). None when one of them cannot be known."""
     found: set[int] = set()
     for file, statement, keyword in keyword_refs(context, *keywords):
         if written(statement, keyword):

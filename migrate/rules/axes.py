@@ -39,16 +39,21 @@ class _Timeline:
 
     @classmethod
     def build(cls, context: Context) -> _Timeline:
+        """Read from the syntax as parsed (a statement starts at its line's origin plus its own
+        start): every statement takes part, and none needs copying with file offsets."""
         axes: tuple[int, ...] | None = V3_POWER_UP_AXES
         before = []
         files: dict[Unit, tuple[list[int], list[int]]] = {}
-        for position, (file, line, statement) in enumerate(context.statements()):
-            before.append(axes)
+        position = 0
+        for file, line in context.placed():
             starts, positions = files.setdefault(file.unit, ([], []))
-            starts.append(max(statement.span.start, starts[-1] if starts else 0))
-            positions.append(position)
-            if isinstance(statement, n.Axes):
-                axes = constant_axes(statement.selector) if _top_level(line, statement) else None
+            for statement in n.flatten_statements(line.syntax.statements):
+                before.append(axes)
+                starts.append(max(line.origin + statement.span.start, starts[-1] if starts else 0))
+                positions.append(position)
+                position += 1
+                if type(statement) is n.Axes:
+                    axes = constant_axes(statement.selector) if _top_level(line.syntax, statement) else None
         before.append(axes)
         return cls(tuple(before), files)
 
@@ -71,9 +76,9 @@ def selector_axes(keyword: n.KeywordRef) -> tuple[int, ...] | None:
     return constant_axes(keyword.selector)
 
 
-def _top_level(line: n.Line, statement: n.Statement) -> bool:
-    """Whether ``statement`` stands on ``line`` itself, not in an IF .. THEN body: by identity, as
-    nodes of ``Document.lines`` have one per place (``in`` would compare statements by value)."""
+def _top_level(line: n.LineSyntax, statement: n.Statement) -> bool:
+    """Whether ``statement``, one of ``line``'s, stands on the line itself, not in an IF .. THEN
+    body: by identity (``in`` would compare statements by value, and a body may repeat one)."""
     return any(top is statement for top in line.statements)
 
 

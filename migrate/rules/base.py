@@ -10,11 +10,10 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from dataclasses import dataclass
-from itertools import count
 from typing import ClassVar
 
 from mintlang.diagnostics import Span
-from mintlang.migrate.context import Context, FileView, per_pass
+from mintlang.migrate.context import Context, FileView
 from mintlang.migrate.model import Phase, RuleClass, RuleInfo
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -98,27 +97,15 @@ def values_text(file: FileView, statement: n.KeywordStatement) -> str:
 def keyword_refs(context: Context, *keywords: str) -> Iterator[tuple[FileView, n.Statement, n.KeywordRef]]:
     """Every use of the named keywords (canonical names), v4-only keywords included (the
     semantic index lists Mint v3 keywords only), in compile order; ``written`` tells a write
-    from a read."""
-    index = _keyword_index(context)
-    found = [use for keyword in frozenset(keywords) for use in index.get(keyword, ())]
-    for _, file, statement, keyword in sorted(found, key=lambda use: use[0]):
-        yield file, statement, keyword
-
-
-@per_pass
-def _keyword_index(context: Context) -> dict[str, list[tuple[int, FileView, n.Statement, n.KeywordRef]]]:
-    """Each keyword's uses numbered in compile order: rules ask at every statement, and a walk
-    of the whole application each time made large files quadratic."""
-    index: dict[str, list[tuple[int, FileView, n.Statement, n.KeywordRef]]] = {}
-    order = count()
-    for file, _, statement in context.statements():
-        if isinstance(statement, n.KeywordStatement):
-            index.setdefault(statement.keyword.keyword, []).append((next(order), file, statement, statement.keyword))
+    from a read. Only the lines that name one are walked."""
+    wanted = frozenset(keywords)
+    for file, _, statement in context.statements(*wanted):
+        if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in wanted:
+            yield file, statement, statement.keyword
         for root in n.expressions_of(statement):
             for node in n.walk_expression(root):
-                if isinstance(node, n.KeywordRef):
-                    index.setdefault(node.keyword, []).append((next(order), file, statement, node))
-    return index
+                if isinstance(node, n.KeywordRef) and node.keyword in wanted:
+                    yield file, statement, node
 
 
 def written(statement: n.Statement, keyword: n.KeywordRef) -> bool:

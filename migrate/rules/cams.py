@@ -75,7 +75,7 @@ class Cams(Rule):
     def apply(self, context: Context) -> Iterator[Action]:
         ranged = next(keyword_refs(context, "CAMSTART", "CAMEND"), None) is not None
         continuous: set[int] = set()
-        for file, _, statement in context.statements():
+        for file, _, statement in context.statements("CAM", "CAMA"):
             if not _cam_write(statement):
                 continue
             assert isinstance(statement, n.KeywordStatement)

@@ -76,7 +76,7 @@ class DacUnits(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         stepper = _configures_stepper(context)
-        for file, _, statement in context.statements():
+        for file, _, statement in context.statements(*_FAMILY):
             if (
                 isinstance(statement, n.KeywordStatement)
                 and statement.keyword.keyword in ("DAC", "AUXDAC")
@@ -166,7 +166,7 @@ def _family_reads(statement: n.Statement) -> Iterator[n.KeywordRef]:
 
 
 def _configures_stepper(context: Context) -> bool:
-    for _, _, statement in context.statements():
+    for _, _, statement in context.statements("CONFIG"):
         if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "CONFIG":
             for value in statement.values or ():
                 if (isinstance(value, n.Number) and value.value in _STEPPER_VALUES) or (

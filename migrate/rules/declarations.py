@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.diagnostics import Span, split_lines
-from mintlang.migrate.context import MARKER, Context, FileView
+from mintlang.migrate.context import LABEL, MARKER, Context, FileView, name_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Replace, Rule
 from mintlang.semantic.events import EventKind, event_of
@@ -74,7 +74,7 @@ class DeclareVariables(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         declared = _dimmed(context)
-        indexed = {event.name.identity for event in context.model.index.names if event.element}
+        indexed = {event.name.identity for _, _, facts in context.model.lines for event in facts.names if event.element}
         for unit, file in context.files.items():
             wanted: dict[str, tuple[int, str]] = {}
             for symbol in context.model.symbols.variables.values():
@@ -109,7 +109,7 @@ def _first_use_in_configuration(symbol: Symbol) -> bool:
 def _dimmed(context: Context) -> dict[Unit, set[str]]:
     """Identities each file declares with DIM (scalars and arrays)."""
     found: dict[Unit, set[str]] = {Unit.CONFIGURATION: set(), Unit.PROGRAM: set()}
-    for file, _, statement in context.statements():
+    for file, _, statement in context.statements(n.Dim):
         if isinstance(statement, n.Dim):
             found[file.unit].add(statement.name.identity)
     return found
@@ -130,7 +130,7 @@ class DefaultAxes(Rule):
     def apply(self, context: Context) -> Iterator[Action]:
         if context.controller.axis_count <= V3_DEFAULT_AXES:
             return
-        if any(isinstance(statement, n.Axes) for _, _, statement in context.statements()):
+        if any(isinstance(statement, n.Axes) for _, _, statement in context.statements(n.Axes)):
             return
         axes = ",".join(str(axis) for axis in range(V3_DEFAULT_AXES))
         yield insert_lines(prologue_file(context), [f"AXES[{axes}]"])
@@ -149,10 +149,9 @@ class InputEdges(Rule):
     evidence = "spec S-INEDGE; v3:2525; v4:4085-4088, v4:5024-5040, v4:12379-12421"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        program = context.files[Unit.PROGRAM]
         mask = 0
-        for line in program.document.lines:
-            event = event_of(line.label.text) if line.label is not None else None
+        for file, line in context.lines(LABEL):
+            event = event_of(line.label.text) if line.label is not None and file.unit is Unit.PROGRAM else None
             if event is not None and event.kind is EventKind.IN and event.number is not None:
                 mask |= 1 << event.number
         if not mask or _sets_input_mode(context):
@@ -165,7 +164,7 @@ class InputEdges(Rule):
 
 def _sets_input_mode(context: Context) -> bool:
     """Whether the application already writes INPUTMODE (a name to the v3 reader)."""
-    for _, _, statement in context.statements():
+    for _, _, statement in context.statements(name_tag("INPUTMODE")):
         if isinstance(statement, n.Assignment) and statement.target.name.identity == "INPUTMODE":
             return True
     return False

@@ -35,7 +35,9 @@ class ExplicitAxes(Rule):
     evidence = "spec S-IDLEAXES; v3:586, v3:596, v3:1029-1033, v3:1080-1109; v4:157, v4:170, v4:605-608"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, before, statement, _ in context.neighbours():
+        for file, before, statement, _ in context.neighbours(
+            *context.mentioned(lambda name: _axis_keyword(context, name))
+        ):
             if not isinstance(statement, n.KeywordStatement) or not _bracketless_axis_keyword(context, statement):
                 continue
             axes = _started_move(context, file, before, statement) or addressed_axes(context, file, statement)
@@ -46,9 +48,12 @@ class ExplicitAxes(Rule):
 
 def _bracketless_axis_keyword(context: Context, statement: n.KeywordStatement) -> bool:
     keyword = statement.keyword
-    entry = context.db.keywords.get(keyword.keyword)
-    addressed = entry is not None and entry.addressing is Addressing.AXIS
-    return addressed and keyword.selector is None and keyword.channel is None
+    return _axis_keyword(context, keyword.keyword) and keyword.selector is None and keyword.channel is None
+
+
+def _axis_keyword(context: Context, name: str) -> bool:
+    entry = context.db.keywords.get(name)
+    return entry is not None and entry.addressing is Addressing.AXIS
 
 
 def _started_move(

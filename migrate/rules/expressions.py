@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.diagnostics import Span
-from mintlang.migrate.context import Context
+from mintlang.migrate.context import Context, operator_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.syntax import nodes as n
@@ -30,8 +30,9 @@ def _wrapped(statement: n.Statement, node: n.Expression, operator: str, number: 
     )
 
 
-def _expressions(context: Context) -> Iterator[tuple[object, n.Statement, n.Expression]]:
-    for file, _, statement in context.statements():
+def _expressions(context: Context, *wanted: object) -> Iterator[tuple[object, n.Statement, n.Expression]]:
+    """Every expression of the lines with one of the ``wanted`` tags, with its statement."""
+    for file, _, statement in context.statements(*wanted):
         for root in n.expressions_of(statement):
             for node in n.walk_expression(root):
                 yield file, statement, node
@@ -50,7 +51,7 @@ class Trigonometry(Rule):
     evidence = "spec M-TRIG; v3:2063-2081, v3:7045, v3:11771, v3:11975; v4:8676-8679"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, statement, node in _expressions(context):
+        for file, statement, node in _expressions(context, "SIN", "COS", "TAN"):
             if not isinstance(node, n.Call) or node.function not in ("SIN", "COS", "TAN"):
                 continue
             if _wrapped(statement, node, "*", 1000):
@@ -73,7 +74,7 @@ class ByteToggle(Rule):
     evidence = "spec M-TILDE; v3:1978; v4:5707-5708, v4:1340"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, statement, node in _expressions(context):
+        for file, statement, node in _expressions(context, operator_tag("~")):
             if not isinstance(node, n.Unary) or node.operator != "~":
                 continue
             if not _wrapped(statement, node, "AND", 255):
@@ -93,7 +94,7 @@ class Precedence(Rule):
     evidence = "spec M-PREC; v3:1986-1995; v4:1417-1429"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, statement, node in _expressions(context):
+        for file, statement, node in _expressions(context, operator_tag("AND")):  # a chain needs both
             if not _logical(node):
                 continue
             if _logical(parent_of(statement, node)):

@@ -89,7 +89,7 @@ def scale_is_set(context: Context) -> bool:
 
 @per_pass
 def _configures_off(context: Context) -> bool:
-    for _, _, statement in context.statements():
+    for _, _, statement in context.statements("CONFIG"):
         if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "CONFIG":
             for value in statement.values or ():
                 if (isinstance(value, n.Number) and value.value == 0) or (

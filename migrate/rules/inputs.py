@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.keyworddb.model import Controller
-from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.context import LABEL, Context, FileView
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.semantic.events import EventKind, event_of
@@ -74,7 +74,7 @@ class InputMask(Rule):
         if ones is None:
             return  # ServoNode 51: no input above 7, v3 values mean the same
         high = ones & ~255
-        for file, _, statement in context.statements():
+        for file, _, statement in context.statements("IMASK"):
             if (
                 isinstance(statement, n.KeywordStatement)
                 and statement.keyword.keyword == "IMASK"
@@ -129,7 +129,7 @@ class InputByte(Rule):
         if context.controller.digital_inputs.high <= 7:
             return  # no input above 7: IN reads the same byte
         handlers = _has_input_handlers(context)
-        for file, _, statement in context.statements():
+        for file, _, statement in context.statements("IN"):
             for read in _keyword_refs(statement, "IN"):
                 if _masked(parent_of(statement, read), read):
                     continue
@@ -161,8 +161,8 @@ def _widened(value: n.Expression | None, high: int) -> bool:
 
 
 def _has_input_handlers(context: Context) -> bool:
-    for line in context.files[Unit.PROGRAM].document.lines:
-        event = event_of(line.label.text) if line.label is not None else None
+    for file, line in context.lines(LABEL):
+        event = event_of(line.label.text) if line.label is not None and file.unit is Unit.PROGRAM else None
         if event is not None and event.kind is EventKind.IN:
             return True
     return False

@@ -10,13 +10,13 @@ controller and flags each line still in error that carries no marker yet.
 from __future__ import annotations
 
 from bisect import bisect_right
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import ClassVar
 
 import mintlang
 from mintlang.diagnostics import Diagnostic, Severity, Span
 from mintlang.dialect import Dialect
-from mintlang.migrate.context import Context, FileView, per_pass
+from mintlang.migrate.context import LABEL, Context, FileView, per_pass
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Flag, Rule
 from mintlang.migrate.rules.defaults import ReportDefaults
@@ -28,22 +28,22 @@ from mintlang.syntax import nodes as n
 from mintlang.syntax.parents import ancestors
 
 
-@per_pass
-def keyword_nodes(context: Context) -> tuple[tuple[FileView, n.Statement, str, n.KeywordRef | n.Call], ...]:
-    """Every keyword and function written in an expression or as a statement, canonical name
-    first (listed once per pass: a dozen rules go through them)."""
-    found: list[tuple[FileView, n.Statement, str, n.KeywordRef | n.Call]] = [
-        (context.files[use.unit], use.statement, use.keyword.keyword, use.keyword)
-        for use in context.model.index.keyword_uses
-    ]
-    for file, _, statement in context.statements():
+def keyword_nodes(
+    context: Context, keep: Callable[[str], bool]
+) -> Iterator[tuple[FileView, n.Statement, str, n.KeywordRef | n.Call]]:
+    """Every keyword and function written in an expression or as a statement whose canonical
+    name ``keep`` accepts, name first: the keywords in compile order, then the functions. Only
+    the lines that name one are read (a dozen rules ask, each for a few names)."""
+    names = context.mentioned(keep)
+    for file, use in context.keyword_uses(*names):
+        yield file, use.statement, use.keyword.keyword, use.keyword
+    for file, _, statement in context.statements(*names):
         for root in n.expressions_of(statement):
             for node in n.walk_expression(root):
-                if isinstance(node, n.Call):
-                    found.append((file, statement, node.function, node))
-        if isinstance(statement, n.FunctionStatement):
-            found.append((file, statement, statement.call.function, statement.call))
-    return tuple(found)
+                if isinstance(node, n.Call) and keep(node.function):
+                    yield file, statement, node.function, node
+        if isinstance(statement, n.FunctionStatement) and keep(statement.call.function):
+            yield file, statement, statement.call.function, statement.call
 
 
 class ManualKeywords(Rule):
@@ -56,9 +56,8 @@ class ManualKeywords(Rule):
     reasons: ClassVar[Mapping[str, str]] = {}  # per keyword, where one reason does not fit all
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, statement, keyword, _ in keyword_nodes(context):
-            if keyword in self.keywords:
-                yield self.flag(file, statement.span, f"{keyword}: {self.reasons.get(keyword, self.reason)}")
+        for file, statement, keyword, _ in keyword_nodes(context, self.keywords.__contains__):
+            yield self.flag(file, statement.span, f"{keyword}: {self.reasons.get(keyword, self.reason)}")
 
 
 class PulseFollowing(ManualKeywords):
@@ -189,8 +188,8 @@ class ErrorCodes(Rule):
     evidence = "spec X-ERR; v3:4918-4937; v4:18503-18893"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, statement, keyword, node in keyword_nodes(context):
-            if keyword == "ERR" and _compared(statement, node):
+        for file, statement, _, node in keyword_nodes(context, "ERR".__eq__):
+            if _compared(statement, node):
                 reason = "v3 error numbers differ: motion errors are ERR = 500 with AXISERROR bits in v4"
                 yield self.flag(file, statement.span, f"ERR: {reason}")
 
@@ -230,13 +229,10 @@ class OnError(Rule):
     evidence = "spec X-ONERROR; v3:4916; v4:4579-4619, v4:4743-4747, v4:6087-6088"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file in context.files.values():
-            for line in file.document.lines:
-                event = event_of(line.label.text) if line.label is not None else None
-                if event is not None and event.kind is EventKind.ONERROR:
-                    yield self.flag(
-                        file, line.span, "v4 also calls #ONERROR for program errors; drive may stay disabled"
-                    )
+        for file, line in context.lines(LABEL):
+            event = event_of(line.label.text) if line.label is not None else None
+            if event is not None and event.kind is EventKind.ONERROR:
+                yield self.flag(file, line.span, "v4 also calls #ONERROR for program errors; drive may stay disabled")
 
 
 class FastLatch(Rule):
@@ -250,12 +246,11 @@ class FastLatch(Rule):
     evidence = "spec X-FASTLATCH; v3:5468, v3:7375; v4:4962-4963, v4:10444-10446, v4:5865-5888"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file in context.files.values():
-            for line in file.document.lines:
-                event = event_of(line.label.text, Dialect.V3) if line.label else None
-                v4_event = event_of(line.label.text) if line.label else None
-                if (event and event.kind is EventKind.FASTPOS) or (v4_event and v4_event.kind is EventKind.FASTIN):
-                    yield self.flag(file, line.span, "v4 holds the latch until the handler returns; check FASTSELECT")
+        for file, line in context.lines(LABEL):
+            event = event_of(line.label.text, Dialect.V3) if line.label else None
+            v4_event = event_of(line.label.text) if line.label else None
+            if (event and event.kind is EventKind.FASTPOS) or (v4_event and v4_event.kind is EventKind.FASTIN):
+                yield self.flag(file, line.span, "v4 holds the latch until the handler returns; check FASTSELECT")
 
 
 @per_pass
@@ -291,13 +286,11 @@ def by_statement(file: FileView, diagnostics: Iterable[Diagnostic]) -> dict[Span
     """Diagnostics grouped by the statement holding them (an IF .. THEN with its body is one), so
     that one marker goes above the line the statement starts on, not inside a DIM list that
     continues over several lines; a diagnostic outside every statement keeps its own span."""
-    lines = file.document.lines
-    starts = [line.span.start for line in lines]
     groups: dict[Span, list[Diagnostic]] = {}
     for diagnostic in diagnostics:
         offset = diagnostic.span.start
-        found = bisect_right(starts, offset) - 1
-        holding = [s for s in lines[found].statements if s.span.start <= offset] if found >= 0 else []
+        found = bisect_right(file.line_starts, offset) - 1
+        holding = [s for s in file.line(found).statements if s.span.start <= offset] if found >= 0 else []
         groups.setdefault(holding[-1].span if holding else diagnostic.span, []).append(diagnostic)
     return groups
 
@@ -324,8 +317,11 @@ class InvalidInV3(Rule):
         named = list(self._named(context))
         yield from named
         lines = {(flag.unit, context.files[flag.unit].line_number(flag.span.start)) for flag in named}
+        in_v3 = v3_errors(context)
+        if not any(errors for _, errors in in_v3):
+            return  # reading the file as Mint v4 is the costly part, and only a v3 error needs it
         in_v4 = {(file.unit, d.span.start, d.code) for file, errors in v4_errors(context) for d in errors}
-        for file, errors in v3_errors(context):
+        for file, errors in in_v3:
             both = [d for d in errors if (file.unit, d.span.start, d.code) in in_v4]
             for span, diagnostics in by_statement(file, both).items():
                 if (file.unit, file.line_number(span.start)) not in lines:
@@ -334,7 +330,8 @@ class InvalidInV3(Rule):
     def _named(self, context: Context) -> Iterator[Flag]:
         """The errors given a reason of their own: unknown words, a comment missing its REM,
         unmatched blocks and labels."""
-        for file, _, statement in context.statements():
+        no_operands = context.mentioned(lambda name: not _takes_operands(context, name))
+        for file, _, statement in context.statements(n.BareName, *no_operands):
             if isinstance(statement, n.BareName) and context.db.lookup(statement.name.text) is None:
                 yield self.flag(file, statement.span, f"'{statement.name.text}' is not a Mint keyword (misprint?)")
             elif isinstance(statement, n.KeywordStatement) and statement.arguments and statement.values is None:
@@ -365,9 +362,9 @@ class Platform(Rule):
     evidence = "v4 chapter 10 'Controllers Supported' of each keyword (e.g. v4:6633 AUTO)"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, statement, keyword, _ in keyword_nodes(context):
-            if keyword in context.db.keywords and not context.supports(keyword):
-                yield self.flag(file, statement.span, f"{keyword} is not available on {context.controller.title}")
+        keywords = context.db.keywords
+        for file, statement, keyword, _ in keyword_nodes(context, lambda k: k in keywords and not context.supports(k)):
+            yield self.flag(file, statement.span, f"{keyword} is not available on {context.controller.title}")
 
 
 class LeftoverV3(Rule):
@@ -383,19 +380,23 @@ class LeftoverV3(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         db = context.db
-        for file, statement, keyword, _ in keyword_nodes(context):
-            if keyword in self.covered or _flagged(file, statement.span.start):
-                continue
-            if db.lookup(keyword) is None or db.rename_of(keyword) is not None:
+        for file, statement, keyword, _ in keyword_nodes(context, lambda name: self._left(context, name)):
+            if not _flagged(file, statement.span.start):
                 yield self.flag(file, statement.span, f"{keyword} is Mint v3 only: no automatic rewrite")
         same = same_value_constants(context)
-        for file, _, statement in context.statements():
+        changed = [name for name in db.v3_constants if name not in same]
+        for file, _, statement in context.statements(*changed):
             if _flagged(file, statement.span.start):
                 continue
             for root in n.expressions_of(statement):
                 for node in n.walk_expression(root):
                     if isinstance(node, n.ConstantRef) and node.name in db.v3_constants and node.name not in same:
                         yield self.flag(file, statement.span, f"{node.name.lower()} has another value in v4")
+
+    def _left(self, context: Context, keyword: str) -> bool:
+        """Whether ``keyword`` is Mint v3 only and no rule of its own flags it."""
+        db = context.db
+        return keyword not in self.covered and (db.lookup(keyword) is None or db.rename_of(keyword) is not None)
 
 
 class StillInvalid(Rule):
@@ -423,6 +424,11 @@ class StillInvalid(Rule):
 # Rules whose markers are notes for the whole application: they sit above the first line of code
 # (notes.py), but say nothing about it.
 _APPLICATION_NOTES = frozenset({IoPrologue.id, ReportDefaults.id})
+
+
+def _takes_operands(context: Context, keyword: str) -> bool:
+    entry = context.db.keywords.get(keyword)
+    return entry is None or entry.takes_operands
 
 
 def _flagged(file: FileView, offset: int) -> bool:

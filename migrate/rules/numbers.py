@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 
-from mintlang.migrate.context import Context
+from mintlang.migrate.context import FRACTION, Context, operator_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.syntax import nodes as n
@@ -51,7 +51,7 @@ class FixedPoint(Rule):
     evidence = "spec X-NUM; v3:1168-1181, v3:5684; v4:715-741"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, _, statement in context.statements():
+        for file, _, statement in context.statements(FRACTION, operator_tag("/")):  # what every pattern needs
             reason = _reason(statement)
             if reason is not None:
                 yield self.flag(file, statement.span, reason)

@@ -17,7 +17,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 from mintlang.dialect import Dialect
-from mintlang.migrate.context import Context
+from mintlang.migrate.context import LABEL, Context, per_pass
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import MOVES, axis_list, moved_axes, on_target, writes_any
 from mintlang.migrate.rules.axes import default_axes, selector_axes
@@ -76,8 +76,7 @@ def _stopping(context: Context) -> tuple[int, ...] | None:
     stop switch or sets its mode."""
     handler = any(
         event is not None and event.kind is EventKind.STOP
-        for file in context.files.values()
-        for line in file.document.lines
+        for _, line in context.lines(LABEL)
         for event in [event_of(line.label.text, Dialect.V3) if line.label is not None else None]
     )
     if not handler and not _mentions(context, frozenset({"STOPSW", "STOPSWITCH", "STOPMODE", "STOPINPUTMODE"})):
@@ -89,7 +88,13 @@ def _mentions(context: Context, names: frozenset[str]) -> bool:
     """Any use of ``names``, as a v3 keyword or as a v4 keyword the v3 reader takes for a name."""
     if next(keyword_refs(context, *names), None) is not None:
         return True
-    return any(event.name.identity in names for event in context.model.index.names)
+    return not names.isdisjoint(_user_names(context))
+
+
+@per_pass
+def _user_names(context: Context) -> frozenset[str]:
+    """The identity of every user name the application declares, writes or reads."""
+    return frozenset(event.name.identity for _, _, facts in context.model.lines for event in facts.names)
 
 
 ASSIGNMENTS: tuple[Assignment, ...] = (

@@ -17,7 +17,6 @@ from mintlang.migrate.rules.base import Action, Rule
 from mintlang.syntax.tokens import TokenKind
 
 _NO_COLON_AFTER = frozenset({TokenKind.NEWLINE, TokenKind.COLON, TokenKind.LABEL, TokenKind.THEN, TokenKind.MACRO_BODY})
-_TRIVIA = frozenset({TokenKind.WS})
 
 
 class RemColon(Rule):
@@ -31,10 +30,11 @@ class RemColon(Rule):
     evidence = "spec M-REMCOLON; v3:11344-11350; v4:15510-15515"
 
     def apply(self, context: Context) -> Iterator[Action]:
+        """A comment runs to the end of its line, after the line's significant tokens: what comes
+        before it is the last of those, or the line break ending the line above."""
         for file in context.files.values():
-            previous = TokenKind.NEWLINE
-            for token in file.document.tokens:
-                if token.kind is TokenKind.COMMENT and previous not in _NO_COLON_AFTER:
-                    yield self.replace(file, Span(token.start, token.start), ": ")
-                if token.kind not in _TRIVIA:
-                    previous = token.kind
+            for offset, line in file.document.physical:
+                previous = line.kinds[-1] if line.kinds else TokenKind.NEWLINE
+                if line.comment_start >= 0 and previous not in _NO_COLON_AFTER:
+                    start = offset + line.comment_start
+                    yield self.replace(file, Span(start, start), ": ")

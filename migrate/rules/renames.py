@@ -11,7 +11,7 @@ from types import MappingProxyType
 
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
-from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.context import LABEL, Context, FileView
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.migrate.rules.spelling import like
@@ -75,11 +75,10 @@ class RenameFastPos(Rule):
     evidence = "spec M-FASTPOS; v4:5910, v4:4955, v4:19108"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file in context.files.values():
-            for line in file.document.lines:
-                label = line.label
-                if label is not None and label.text.upper() == "FASTPOS":
-                    yield self.replace(file, _label_name_span(label), like(label.text, "FASTIN"))
+        for file, line in context.lines(LABEL):
+            label = line.label
+            if label is not None and label.text.upper() == "FASTPOS":
+                yield self.replace(file, _label_name_span(label), like(label.text, "FASTIN"))
 
 
 class RenameConstants(Rule):
@@ -99,7 +98,7 @@ class RenameConstants(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         renames = same_value_constants(context)
-        for file, _, statement in context.statements():
+        for file, _, statement in context.statements(*renames):
             for root in n.expressions_of(statement):
                 for node in n.walk_expression(root):
                     if isinstance(node, n.ConstantRef) and node.name in renames:

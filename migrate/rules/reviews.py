@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.keyworddb.model import Controller
-from mintlang.migrate.context import Context
+from mintlang.migrate.context import Context, name_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import unparsed_write
 from mintlang.migrate.rules.base import Action, Rule
@@ -19,6 +19,9 @@ _DELETED = "v4 deletes array data when the configuration runs: {} it in the prog
 _GAINS = frozenset({"GAIN", "KPROP", "KVEL", "KVELFF", "KINT", "KDERIV", "KACCEL"})
 # written in the same tuning block as the gains: they continue the block without an item of their own
 _TUNING = _GAINS | {"KINTLIMIT", "KINTRANGE", "KINTMODE", "DACLIMITMAX", "CURRENTLIMIT", "CURRLIMIT"}
+# The tags of a line that may write one of those or TORQUE: as a keyword, a user name (a v4
+# keyword to the v3 reader), or the first word of a statement the v3 reader could not parse.
+_WRITTEN = (*_TUNING, *map(name_tag, _TUNING), "TORQUE", name_tag("TORQUE"), n.SyntaxError_)
 
 
 class ConfigurationArrays(Rule):
@@ -35,7 +38,7 @@ class ConfigurationArrays(Rule):
         file = context.files.get(Unit.CONFIGURATION)
         if file is None:
             return
-        for current, _, statement in context.statements():
+        for current, _, statement in context.statements(n.Dim, n.Assignment):
             if current is not file:
                 continue
             if isinstance(statement, n.Dim) and statement.size is not None:
@@ -56,7 +59,7 @@ class OutputFormat(Rule):
     evidence = "spec X-PRINT; v3:4978-5008, v3:6209-6239; v4:729, v4:764-767, v4:4584-4589, v4:15299-15366"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, _, statement in context.statements():
+        for file, _, statement in context.statements(n.Print, n.Input, "BINARY"):
             reason = _format_reason(statement)
             if reason is not None:
                 yield self.flag(file, statement.span, reason)
@@ -89,7 +92,7 @@ class ChangedUnits(Rule):
         """One item for each run of gain writes on consecutive lines: a tuning block is re-tuned as a whole."""
         mintdrive = context.controller.controller is Controller.MINTDRIVE
         block_end: dict[Unit, int] = {}  # the last line of the tuning block each file is in
-        for file, line, statement in context.statements():
+        for file, line, statement in context.statements(*_WRITTEN):
             name = _written_name(statement) or unparsed_write(file.text[statement.span.start : statement.span.end])
             if name in _TUNING:
                 previous = block_end.get(file.unit)

@@ -6,7 +6,6 @@ the statement's selector (``[0,1]``, ``.1``) and values are copied as written.
 
 from __future__ import annotations
 
-from bisect import bisect_left
 from collections.abc import Iterator
 from typing import ClassVar
 
@@ -30,7 +29,7 @@ class StatementRule(Rule):
     phase = Phase.CONTEXT
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, _, statement in context.statements():
+        for file, _, statement in context.statements(*self.keywords):
             if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in self.keywords:
                 result = self.rewrite(context, file, statement)
                 if isinstance(result, Refusal):
@@ -219,12 +218,11 @@ class DropOffline(Rule):
     evidence = "spec §11 (OFFLINE: drop from DIM OFFLINE), X-HOST; v3:1588"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, _, statement in context.statements():
+        for file, _, statement in context.statements(n.Dim):
             if isinstance(statement, n.Dim) and statement.modifier is not None:
-                tokens = file.document.tokens
-                first = bisect_left(tokens, statement.span.start, key=lambda token: token.start)
-                for index in range(first, len(tokens)):  # a slice would copy the rest of the file
-                    token = tokens[index]
+                for token in file.document.tokens_in(statement.span.start, statement.name.span.start):
+                    if token.start < statement.span.start:
+                        continue
                     if token.start >= statement.name.span.start:
                         break
                     if token.text.upper() == "OFFLINE":

@@ -31,7 +31,7 @@ class BinaryOutput(Rule):
     evidence = "spec S-BINARY; v3:6209-6239; v4:764-767, v4:15354-15366"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, _, statement in context.statements():
+        for file, _, statement in context.statements("BINARY"):
             if not isinstance(statement, n.KeywordStatement) or statement.keyword.keyword != "BINARY":
                 continue
             if statement.using or statement.values is not None or statement.keyword.selector is not None:

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.context import LABEL, Context, FileView
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import MOVES, addressed_axes
 from mintlang.migrate.rules.base import Action, Rule
@@ -54,12 +54,15 @@ class GoTiming(Rule):
     evidence = "spec X-GO-TIMING; v3:3405-3412, v3:4146-4158, v3:8052-8062; v4:2938-2944, v4:11080-11089"
 
     def apply(self, context: Context) -> Iterator[Action]:
+        """Only the lines that can change the state or show do: the others pass it on."""
+        outputs = context.mentioned(lambda name: name.startswith("OUT") and name[3:].isdigit())
+        timed = list(context.lines(LABEL, n.Pause, n.Print, n.Jump, "COMMS", "GO", *MOVES, *_EFFECTS, *outputs))
         for file in context.files.values():
-            yield from self._file(context, file)
+            yield from self._file(context, file, [line for owner, line in timed if owner is file])
 
-    def _file(self, context: Context, file: FileView) -> Iterator[Action]:
+    def _file(self, context: Context, file: FileView, lines: list[n.Line]) -> Iterator[Action]:
         running, homing, delayed = _IDLE, _IDLE, False
-        for line in file.document.lines:
+        for line in lines:
             if line.label is not None:
                 running, homing, delayed = _IDLE, _IDLE, False
             for statement in n.walk_statements(line.statements):

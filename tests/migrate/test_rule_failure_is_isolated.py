@@ -14,7 +14,7 @@ from click.testing import CliRunner, Result
 from mintlang.diagnostics import Span
 from mintlang.migrate import MigrationFailed, migrate
 from mintlang.migrate.cli import migrate as command
-from mintlang.migrate.context import Context
+from mintlang.migrate.context import Context, LineTags
 from mintlang.migrate.rules import RULES, Replace, Rule
 from mintlang.semantic.units import Unit
 
@@ -105,10 +105,10 @@ def test_a_failure_leaves_the_configuration_file_of_its_application_as_well(tmp_
 def test_a_bug_outside_the_rules_is_isolated_too(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     build = Context.build
 
-    def failing(texts: dict[Unit, str], controller: str) -> Context:
+    def failing(texts: dict[Unit, str], controller: str, tags: LineTags | None = None) -> Context:
         if TRIGGER in texts[Unit.PROGRAM]:
             raise RecursionError("maximum recursion depth exceeded")
-        return build(texts, controller)
+        return build(texts, controller, tags)
 
     monkeypatch.setattr(Context, "build", failing)
     (tmp_path / "a.mnt").write_text(TRIGGER + V3)

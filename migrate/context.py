@@ -263,13 +263,13 @@ class Context:
     def db(self) -> KeywordDatabase:
         return database()
 
-    def placed(self) -> Iterator[tuple[FileView, n.PlacedLine]]:
-        """Every line in compile order (configuration first) as parsed, its spans relative to its
-        ``origin``: for a question about every statement that needs no nodes with file offsets."""
-        for unit, document in self.model.documents():
-            file = self.files[unit]
-            for line in document.placed:
-                yield file, line
+    def placed(self, *wanted: object) -> Iterator[tuple[FileView, n.PlacedLine]]:
+        """``lines(*wanted)`` as parsed, spans relative to each line's ``origin``: for a question
+        whose answer needs no nodes with file offsets."""
+        order = self._order
+        for position in self._positions(wanted):
+            file, index = order[position]
+            yield file, file.document.placed[index]
 
     def lines(self, *wanted: object) -> Iterator[tuple[FileView, n.Line]]:
         """The lines that have one of the ``wanted`` tags (node types, keyword, function or constant
@@ -331,7 +331,8 @@ class Context:
         """Each tag with the positions in ``_order`` of the lines that have it, in order."""
         found: dict[object, list[int]] = {}
         tags = self.tags
-        for position, (_, line) in enumerate(self.placed()):
+        lines = (line for _, document in self.model.documents() for line in document.placed)
+        for position, line in enumerate(lines):
             for tag in tags.of(line):
                 positions = found.get(tag)
                 if positions is None:

@@ -11,9 +11,9 @@ notes (which axes rely on v3 hardware and defaults) and the explicit-axes rewrit
 from __future__ import annotations
 
 import re
-from collections.abc import Collection
+from collections.abc import Collection, Iterator
 
-from mintlang.migrate.context import Context, FileView, per_pass
+from mintlang.migrate.context import Context, FileView, name_tag, per_pass
 from mintlang.migrate.rules.axes import default_axes, selector_axes
 from mintlang.migrate.rules.base import keyword_refs, written
 from mintlang.syntax import nodes as n
@@ -63,24 +63,21 @@ def writes_any(context: Context, names: Collection[str]) -> bool:
     for _, statement, keyword in keyword_refs(context, *wanted):
         if written(statement, keyword):
             return True
-    return not wanted.isdisjoint(_assigned_names(context))
+    return any(word in wanted for word in _assigned(context, wanted))
 
 
-@per_pass
-def _assigned_names(context: Context) -> frozenset[str]:
-    """The names assigned as variables, and the words unparsable statements write
-    (``FOLERRORFATAL = 2;``, a v4 fill the v3 reader cannot parse). Read from the syntax as
-    parsed: a statement's text starts at its line's origin plus its own start."""
-    found: set[str] = set()
-    for file, line in context.placed():
+def _assigned(context: Context, names: frozenset[str]) -> Iterator[str]:
+    """The names assigned as variables and the words unparsable statements write (``FOLERRORFATAL
+    = 2;``, a v4 fill the v3 reader cannot parse), on the lines that may write one of ``names``.
+    Read from the syntax as parsed: a statement's text starts at its line's origin plus its own start."""
+    for file, line in context.placed(n.SyntaxError_, *map(name_tag, names)):
         for statement in n.flatten_statements(line.syntax.statements):
             if isinstance(statement, n.Assignment):
-                found.add(statement.target.name.identity)
+                yield statement.target.name.identity
             elif type(statement) is n.SyntaxError_:
                 word = unparsed_write(file.text[line.origin + statement.span.start : line.origin + statement.span.end])
                 if word is not None:
-                    found.add(word)
-    return frozenset(found)
+                    yield word
 
 
 _WRITE = re.compile(r"\s*([A-Za-z_]\w*)\s*(?:[.\[]|=)")

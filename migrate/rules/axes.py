@@ -19,43 +19,63 @@ from mintlang.syntax import nodes as n
 V3_POWER_UP_AXES = (0, 1, 2)
 
 
-def default_axes(context: Context, file: FileView, offset: int) -> tuple[int, ...] | None:
+Axes = tuple[int, ...] | None
+
+
+def default_axes(context: Context, file: FileView, offset: int) -> Axes:
     """The axes bracket-less keywords address at ``offset`` of ``file``, or None when unknown:
-    the default in force before the first statement of ``file`` starting at or after ``offset``."""
+    the default in force before the first statement of ``file`` starting at or after ``offset``
+    (after the last statement of the application when there is none)."""
     timeline = context.memo(_Timeline.build)
-    starts, positions = timeline.files.get(file.unit, ((), ()))
-    found = bisect_left(starts, offset)
-    return timeline.before[positions[found] if found < len(positions) else -1]
+    last = timeline.last.get(file.unit)
+    if last is None or last < offset:
+        return timeline.final
+    starts, defaults = timeline.changes.get(file.unit, ((), ()))
+    found = bisect_left(starts, offset)  # the AXES statements before that statement
+    return defaults[found - 1] if found else timeline.entering[file.unit]
 
 
 @dataclass(frozen=True, slots=True)
 class _Timeline:
-    """The AXES default before each statement in compile order (one more at the end, after the
-    last), and for each file the running maximum of its statements' starts with their positions,
-    so a lookup is a bisection (the maximum keeps it right if a body were listed out of order)."""
+    """Per file: where each AXES statement starts and the default after it, the default in force
+    as the file starts, and where its last statement starts; the default after the whole
+    application. A lookup is a bisection. A statement starts at or after every statement of the
+    lines above it, so only the lines with an AXES statement, and each file's last, are read."""
 
-    before: tuple[tuple[int, ...] | None, ...]
-    files: dict[Unit, tuple[list[int], list[int]]]
+    changes: dict[Unit, tuple[list[int], list[Axes]]]
+    entering: dict[Unit, Axes]
+    last: dict[Unit, int]
+    final: Axes
 
     @classmethod
     def build(cls, context: Context) -> _Timeline:
-        """Read from the syntax as parsed (a statement starts at its line's origin plus its own
-        start): every statement takes part, and none needs copying with file offsets."""
-        axes: tuple[int, ...] | None = V3_POWER_UP_AXES
-        before = []
-        files: dict[Unit, tuple[list[int], list[int]]] = {}
-        position = 0
-        for file, line in context.placed():
-            starts, positions = files.setdefault(file.unit, ([], []))
+        changes: dict[Unit, tuple[list[int], list[Axes]]] = {}
+        for file, line in context.placed(n.Axes):
+            starts, defaults = changes.setdefault(file.unit, ([], []))
+            latest = -1  # the greatest start so far on the line: a body is read after its IF
             for statement in n.flatten_statements(line.syntax.statements):
-                before.append(axes)
-                starts.append(max(line.origin + statement.span.start, starts[-1] if starts else 0))
-                positions.append(position)
-                position += 1
+                latest = max(latest, line.origin + statement.span.start)
                 if type(statement) is n.Axes:
-                    axes = constant_axes(statement.selector) if _top_level(line.syntax, statement) else None
-        before.append(axes)
-        return cls(tuple(before), files)
+                    starts.append(latest)
+                    defaults.append(constant_axes(statement.selector) if _top_level(line.syntax, statement) else None)
+        axes: Axes = V3_POWER_UP_AXES
+        entering: dict[Unit, Axes] = {}
+        last: dict[Unit, int] = {}
+        for unit, document in context.model.documents():
+            entering[unit] = axes
+            axes = changes[unit][1][-1] if unit in changes else axes
+            final = _last_start(document.placed)
+            if final is not None:
+                last[unit] = final
+        return cls(changes, entering, last, axes)
+
+
+def _last_start(lines: tuple[n.PlacedLine, ...]) -> int | None:
+    """Where the last statement of a file starts (the greatest start on its last line with any)."""
+    for line in reversed(lines):
+        if line.syntax.statements:
+            return max(line.origin + statement.span.start for statement in n.flatten_statements(line.syntax.statements))
+    return None
 
 
 def constant_axes(selector: n.Selector | None) -> tuple[int, ...] | None:

@@ -18,6 +18,7 @@ checks each statement it gets.
 from __future__ import annotations
 
 import re
+from bisect import bisect_right
 from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property, wraps
@@ -45,11 +46,18 @@ MARKER_LINE = re.compile(rf"^[ \t]*{re.escape(MARKER)}[ \t]*(?P<rule>[A-Z]+-[A-Z
 # Tags of a line besides its node types and names (see ``LineTags``): tuples, which no name equals.
 LABEL = ("label",)  # the line has a label
 FRACTION = ("fraction",)  # a number on the line is no integer
+MACRO = ("macro",)  # a macro is used on the line: a statement's text is then the macro's name
 
 
 def operator_tag(symbol: str) -> tuple[str, str]:
     """The tag of a line using a unary or binary operator (``operator_tag("~")``)."""
     return ("operator", symbol)
+
+
+def statement_tag(keyword: str) -> tuple[str, str]:
+    """The tag of a line with a statement of ``keyword`` (``SCALE = 2``, ``GO``): the keyword's own
+    tag also stands for its reads (``PAUSE IDLE``), which a statement rule need not copy."""
+    return ("statement", keyword)
 
 
 def name_tag(name: str) -> tuple[str, str]:
@@ -62,7 +70,9 @@ def name_tag(name: str) -> tuple[str, str]:
 class LineTags:
     """What each line mentions, worked out once per text it was parsed from for a whole run: the
     types of its statements and expressions, the keywords, functions and constants it names,
-    ``name_tag`` of its user names, ``operator_tag`` of its operators, ``LABEL`` and ``FRACTION``.
+    ``statement_tag`` of its keyword statements, ``name_tag`` of its user names, ``operator_tag``
+    of its operators, ``LABEL`` and ``FRACTION`` (``Context`` adds ``MACRO``, which depends on
+    the macros defined above the line).
     Keyed by ``PlacedLine.content``, never by the shared syntax (see ``mintlang.caching``)."""
 
     def __init__(self) -> None:
@@ -83,6 +93,7 @@ def _tags(syntax: n.LineSyntax) -> frozenset[object]:
         add(kind)
         if kind is n.KeywordStatement:
             add(statement.keyword.keyword)  # type: ignore[union-attr]
+            add(statement_tag(statement.keyword.keyword))  # type: ignore[union-attr]
         elif kind is n.FunctionStatement:
             add(statement.call.function)  # type: ignore[union-attr]
         elif kind is n.Assignment or kind is n.Input:
@@ -140,6 +151,11 @@ class FileView:
     def line_starts(self) -> list[int]:
         """Where each line's syntax starts (``line(index).span.start``), for bisecting an offset."""
         return [line.origin + line.syntax.span.start for line in self.document.placed]
+
+    @cached_property
+    def expanded(self) -> frozenset[int]:
+        """The indices of the lines where a macro is used."""
+        return frozenset(bisect_right(self.line_starts, use.span.start) - 1 for use in self.document.expansions)
 
     @cached_property
     def _lines(self) -> list[n.Line | None]:
@@ -272,9 +288,8 @@ class Context:
             yield file, file.document.placed[index]
 
     def lines(self, *wanted: object) -> Iterator[tuple[FileView, n.Line]]:
-        """The lines that have one of the ``wanted`` tags (node types, keyword, function or constant
-        names, ``name_tag(...)``, ``operator_tag(...)``, ``LABEL``, ``FRACTION``), in compile
-        order, with file offsets. No tag, no line: a rule names what it looks for."""
+        """The lines that have one of the ``wanted`` tags (see ``LineTags``), in compile order, with
+        file offsets. No tag, no line: a rule names what it looks for."""
         order = self._order
         for position in self._positions(wanted):
             file, index = order[position]
@@ -331,14 +346,17 @@ class Context:
         """Each tag with the positions in ``_order`` of the lines that have it, in order."""
         found: dict[object, list[int]] = {}
         tags = self.tags
-        lines = (line for _, document in self.model.documents() for line in document.placed)
-        for position, line in enumerate(lines):
-            for tag in tags.of(line):
-                positions = found.get(tag)
-                if positions is None:
-                    found[tag] = [position]
-                else:
-                    positions.append(position)
+        position = 0
+        for unit, document in self.model.documents():
+            expanded = self.files[unit].expanded
+            for index, line in enumerate(document.placed):
+                for tag in tags.of(line) | {MACRO} if index in expanded else tags.of(line):
+                    positions = found.get(tag)
+                    if positions is None:
+                        found[tag] = [position]
+                    else:
+                        positions.append(position)
+                position += 1
         return found
 
     def _positions(self, wanted: Iterable[object]) -> list[int]:

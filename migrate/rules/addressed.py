@@ -24,12 +24,15 @@ RAMPED = frozenset({*POSITIONAL, "JOG", "HOME", "OFFSET", "INCA", "INCR"})  # ra
 MOVES = frozenset({*RAMPED, "FLY", "FOLLOW", "CAM", "CAMA", "PULSE", "GEARN"})
 
 
-def addressed_axes(context: Context, file: FileView, statement: n.KeywordStatement) -> tuple[int, ...] | None:
-    """The axes ``statement`` acts on, or None when a list is computed or the default unknown."""
+def addressed_axes(
+    context: Context, file: FileView, statement: n.KeywordStatement, start: int
+) -> tuple[int, ...] | None:
+    """The axes ``statement``, starting at ``start`` of ``file``, acts on, or None when a list is
+    computed or the default unknown (``start`` places a statement as parsed, see ``keyword_refs``)."""
     keyword = statement.keyword
     if keyword.selector is not None or keyword.channel is not None:
         return selector_axes(keyword)
-    default = default_axes(context, file, statement.span.start)
+    default = default_axes(context, file, start)
     if default is None:
         return None
     if keyword.keyword in CIRCLES:
@@ -44,11 +47,11 @@ def moved_axes(context: Context, keywords: Collection[str]) -> tuple[int, ...] |
     """The sorted axes the application writes any of ``keywords`` (a tuple or frozenset) on
     (``()`` when it never does), or None when one of those writes has axes that cannot be known."""
     found: set[int] = set()
-    for file, statement, keyword in keyword_refs(context, *keywords):
+    for file, line, statement, keyword in keyword_refs(context, *keywords):
         if not written(statement, keyword):
             continue
         assert isinstance(statement, n.KeywordStatement)  # written() holds only for keyword statements
-        axes = addressed_axes(context, file, statement)
+        axes = addressed_axes(context, file, statement, line.origin + statement.span.start)
         if axes is None:
             return None
         found.update(axes)
@@ -60,7 +63,7 @@ def writes_any(context: Context, names: Collection[str]) -> bool:
     """Whether the application writes one of ``names`` (a tuple or frozenset): a keyword the v3
     reader knows (``MFOLERR = 5``) or a v4-only keyword it reads as a variable (``HOMESPEED = 5``)."""
     wanted = frozenset(names)
-    for _, statement, keyword in keyword_refs(context, *wanted):
+    for _, _, statement, keyword in keyword_refs(context, *wanted):
         if written(statement, keyword):
             return True
     return any(word in wanted for word in _assigned(context, wanted))
@@ -109,13 +112,13 @@ def read_axes(context: Context, keywords: Collection[str]) -> tuple[int, ...] | 
     """The sorted axes the application reads any of ``keywords`` (a tuple or frozenset) on; a
     bracket-less read is the first default axis (v3:1127). None when one of them cannot be known."""
     found: set[int] = set()
-    for file, statement, keyword in keyword_refs(context, *keywords):
+    for file, line, statement, keyword in keyword_refs(context, *keywords):
         if written(statement, keyword):
             continue
         if keyword.selector is not None or keyword.channel is not None:
             axes = selector_axes(keyword)
         else:
-            default = default_axes(context, file, statement.span.start)
+            default = default_axes(context, file, line.origin + statement.span.start)
             axes = default[:1] if default else None
         if axes is None:
             return None

@@ -94,18 +94,23 @@ def values_text(file: FileView, statement: n.KeywordStatement) -> str:
     return text.split("=", 1)[1].strip() if "=" in text else ""
 
 
-def keyword_refs(context: Context, *keywords: str) -> Iterator[tuple[FileView, n.Statement, n.KeywordRef]]:
+def keyword_refs(
+    context: Context, *keywords: str
+) -> Iterator[tuple[FileView, n.PlacedLine, n.Statement, n.KeywordRef]]:
     """Every use of the named keywords (canonical names), v4-only keywords included (the
-    semantic index lists Mint v3 keywords only), in compile order; ``written`` tells a write
-    from a read. Only the lines that name one are walked."""
+    semantic index lists Mint v3 keywords only), in compile order, with its line; ``written``
+    tells a write from a read. The nodes are as parsed, their spans relative to the line's
+    origin (``line.span`` places one): most questions about them (which axes does this move?)
+    need no copy of the line, and only the lines that name one are read."""
     wanted = frozenset(keywords)
-    for file, _, statement in context.statements(*wanted):
-        if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in wanted:
-            yield file, statement, statement.keyword
-        for root in n.expressions_of(statement):
-            for node in n.walk_expression(root):
-                if isinstance(node, n.KeywordRef) and node.keyword in wanted:
-                    yield file, statement, node
+    for file, line in context.placed(*wanted):
+        for statement in n.flatten_statements(line.syntax.statements):
+            if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in wanted:
+                yield file, line, statement, statement.keyword
+            for root in n.expressions_of(statement):
+                for node in n.walk_expression(root):
+                    if isinstance(node, n.KeywordRef) and node.keyword in wanted:
+                        yield file, line, statement, node
 
 
 def written(statement: n.Statement, keyword: n.KeywordRef) -> bool:

@@ -28,7 +28,7 @@ class DotBits(Rule):
     evidence = "spec M-BIT; v3:598; v4:172, v4:11951, v4:14896, v4:4079-4084, v4:4128-4133"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, _, keyword in keyword_refs(context, *_BITS):
+        for file, line, _, keyword in keyword_refs(context, *_BITS):
             found = _BIT.fullmatch(keyword.keyword)
             if found is not None:
-                yield self.replace(file, keyword.spelling_span, f"{found[1]}.{found[2]}")
+                yield self.replace(file, line.span(keyword.spelling_span), f"{found[1]}.{found[2]}")

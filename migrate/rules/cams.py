@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping
 from types import MappingProxyType
 
-from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.context import Context, FileView, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.axes import axis_values, selector_for
 from mintlang.migrate.rules.base import Action, Rule, keyword_refs
@@ -75,7 +75,7 @@ class Cams(Rule):
     def apply(self, context: Context) -> Iterator[Action]:
         ranged = next(keyword_refs(context, "CAMSTART", "CAMEND"), None) is not None
         continuous: set[int] = set()
-        for file, _, statement in context.statements("CAM", "CAMA"):
+        for file, _, statement in context.statements(statement_tag("CAM"), statement_tag("CAMA")):
             if not _cam_write(statement):
                 continue
             assert isinstance(statement, n.KeywordStatement)

@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from itertools import islice
 
-from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.context import Context, FileView, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.axes import default_axes, selector_axes
 from mintlang.migrate.rules.base import Action, Rule
@@ -166,7 +166,7 @@ def _family_reads(statement: n.Statement) -> Iterator[n.KeywordRef]:
 
 
 def _configures_stepper(context: Context) -> bool:
-    for _, _, statement in context.statements("CONFIG"):
+    for _, _, statement in context.statements(statement_tag("CONFIG")):
         if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "CONFIG":
             for value in statement.values or ():
                 if (isinstance(value, n.Number) and value.value in _STEPPER_VALUES) or (

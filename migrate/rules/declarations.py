@@ -109,9 +109,10 @@ def _first_use_in_configuration(symbol: Symbol) -> bool:
 def _dimmed(context: Context) -> dict[Unit, set[str]]:
     """Identities each file declares with DIM (scalars and arrays)."""
     found: dict[Unit, set[str]] = {Unit.CONFIGURATION: set(), Unit.PROGRAM: set()}
-    for file, _, statement in context.statements(n.Dim):
-        if isinstance(statement, n.Dim):
-            found[file.unit].add(statement.name.identity)
+    for file, line in context.placed(n.Dim):
+        for statement in n.flatten_statements(line.syntax.statements):
+            if isinstance(statement, n.Dim):
+                found[file.unit].add(statement.name.identity)
     return found
 
 
@@ -130,7 +131,7 @@ class DefaultAxes(Rule):
     def apply(self, context: Context) -> Iterator[Action]:
         if context.controller.axis_count <= V3_DEFAULT_AXES:
             return
-        if any(isinstance(statement, n.Axes) for _, _, statement in context.statements(n.Axes)):
+        if next(context.placed(n.Axes), None) is not None:
             return
         axes = ",".join(str(axis) for axis in range(V3_DEFAULT_AXES))
         yield insert_lines(prologue_file(context), [f"AXES[{axes}]"])
@@ -150,8 +151,9 @@ class InputEdges(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         mask = 0
-        for file, line in context.lines(LABEL):
-            event = event_of(line.label.text) if line.label is not None and file.unit is Unit.PROGRAM else None
+        for file, line in context.placed(LABEL):
+            label = line.syntax.label
+            event = event_of(label.text) if label is not None and file.unit is Unit.PROGRAM else None
             if event is not None and event.kind is EventKind.IN and event.number is not None:
                 mask |= 1 << event.number
         if not mask or _sets_input_mode(context):

@@ -117,11 +117,11 @@ def relied_on(context: Context) -> Iterator[tuple[Default, tuple[int, ...]]]:
 def _stepper_axes(context: Context) -> set[int]:
     """Axes a CONFIG write with constant axes makes stepper or micro-stepper."""
     found: set[int] = set()
-    for file, statement, keyword in keyword_refs(context, "CONFIG"):
+    for file, line, statement, keyword in keyword_refs(context, "CONFIG"):
         if not written(statement, keyword):
             continue
         assert isinstance(statement, n.KeywordStatement)
-        axes = addressed_axes(context, file, statement) or ()
+        axes = addressed_axes(context, file, statement, line.origin + statement.span.start) or ()
         values = statement.values or ()
         for position, axis in enumerate(axes):
             value = values[min(position, len(values) - 1)] if values else None

@@ -40,7 +40,9 @@ class ExplicitAxes(Rule):
         ):
             if not isinstance(statement, n.KeywordStatement) or not _bracketless_axis_keyword(context, statement):
                 continue
-            axes = _started_move(context, file, before, statement) or addressed_axes(context, file, statement)
+            axes = _started_move(context, file, before, statement) or addressed_axes(
+                context, file, statement, statement.span.start
+            )
             if axes:
                 at = statement.keyword.spelling_span.end
                 yield self.replace(file, Span(at, at), axis_list(axes))
@@ -65,5 +67,5 @@ def _started_move(
     if statement.keyword.keyword != "GO" or statement.values is not None:
         return None
     if isinstance(previous, n.KeywordStatement) and previous.keyword.keyword in MOVES and previous.values:
-        return addressed_axes(context, file, previous)
+        return addressed_axes(context, file, previous, previous.span.start)
     return None

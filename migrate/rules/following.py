@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from mintlang.migrate.context import Context, FileView, per_pass
+from mintlang.migrate.context import Context, FileView, per_pass, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import addressed_axes, writes_any
 from mintlang.migrate.rules.base import Action, Rule, keyword_refs, selector_text, values_text, written
@@ -76,7 +76,7 @@ class MasterSource(StatementRule):
 @per_pass
 def scale_is_set(context: Context) -> bool:
     """Whether any axis may have a SCALE other than 1 (every use a write of literal 1s is not)."""
-    for _, statement, keyword in keyword_refs(context, "SCALE"):
+    for _, _, statement, keyword in keyword_refs(context, "SCALE"):
         if not (
             isinstance(statement, n.KeywordStatement)
             and written(statement, keyword)
@@ -89,7 +89,7 @@ def scale_is_set(context: Context) -> bool:
 
 @per_pass
 def _configures_off(context: Context) -> bool:
-    for _, _, statement in context.statements("CONFIG"):
+    for _, _, statement in context.statements(statement_tag("CONFIG")):
         if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "CONFIG":
             for value in statement.values or ():
                 if (isinstance(value, n.Number) and value.value == 0) or (
@@ -118,16 +118,19 @@ class DefaultMaster(Rule):
         if writes_any(context, ("FOLLOWAXIS", "MASTERSOURCE", "MASTERCHANNEL")):
             return
         followers: set[int] = set()
-        for file, statement, keyword in keyword_refs(context, *_FOLLOWING):
+        for file, line, statement, keyword in keyword_refs(context, *_FOLLOWING):
             if not written(statement, keyword):
                 continue
-            axes = addressed_axes(context, file, statement) if isinstance(statement, n.KeywordStatement) else None
+            axes = None
+            if isinstance(statement, n.KeywordStatement):
+                axes = addressed_axes(context, file, statement, line.origin + statement.span.start)
+            span = line.span(statement.span)
             if axes is None:
-                yield self.flag(file, statement.span, "the axes here are not known: choose the master (v3 default)")
+                yield self.flag(file, span, "the axes here are not known: choose the master (v3 default)")
                 continue
             for axis in axes:
                 if axis > 1 and axis not in followers:
-                    yield self.flag(file, statement.span, f"axis {axis} follows with no FOLLOWAXIS: choose its master")
+                    yield self.flag(file, span, f"axis {axis} follows with no FOLLOWAXIS: choose its master")
             followers.update(axes)
         if 0 in followers and context.supports("MASTERCHANNEL"):
             yield after_configuration(context, ["MASTERSOURCE.0 = _msPOS : MASTERCHANNEL.0 = 1"])
@@ -154,7 +157,7 @@ class Clutch(StatementRule):
         if statement.values is None or writes_any(context, ("FOLLOWMODE",)):
             return None
         increments = master_increments(context)
-        axes = addressed_axes(context, file, statement)
+        axes = addressed_axes(context, file, statement, statement.span.start)
         if increments is None or axes is None:
             return Refusal("MASTERINC or FOLLOW axes are computed: choose FOLLOWMODE (clutch or not) by hand")
         written = [increments.get(axis, set()) for axis in axes]

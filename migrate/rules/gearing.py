@@ -14,7 +14,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from fractions import Fraction
 
-from mintlang.migrate.context import Context, FileView, name_tag, per_pass
+from mintlang.migrate.context import Context, FileView, name_tag, per_pass, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.axes import axis_values, default_axes, selector_for
 from mintlang.migrate.rules.base import Action, Rule
@@ -151,7 +151,7 @@ def _gears(context: Context) -> dict[int, Gear | Refusal]:
     """Per axis with a GEARD or GEARN write: what is proven about its gearbox, or why not."""
     denominators: dict[int, set[int | None]] = {}
     numerators: dict[int, set[int | None]] = {}
-    for file, _, statement in context.statements("GEARD", "GEARN"):
+    for file, _, statement in context.statements(statement_tag("GEARD"), statement_tag("GEARN")):
         if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in ("GEARD", "GEARN"):
             found = denominators if statement.keyword.keyword == "GEARD" else numerators
             for axis, value in axis_values(context, file, statement):
@@ -191,7 +191,8 @@ def master_increments(context: Context) -> dict[int, set[int | None]] | None:
     A MASTERDISTANCE written without axes reads to the v3 parser as an assignment to a name.
     """
     found: dict[int, set[int | None]] = {}
-    for file, _, statement in context.statements("MASTERINC", "MASTERDISTANCE", name_tag("MASTERDISTANCE")):
+    written = (statement_tag("MASTERINC"), statement_tag("MASTERDISTANCE"), name_tag("MASTERDISTANCE"))
+    for file, _, statement in context.statements(*written):
         if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in ("MASTERINC", "MASTERDISTANCE"):
             pairs = axis_values(context, file, statement)
             if not pairs:

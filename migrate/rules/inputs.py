@@ -74,7 +74,7 @@ class InputMask(Rule):
         if ones is None:
             return  # ServoNode 51: no input above 7, v3 values mean the same
         high = ones & ~255
-        for file, _, statement in context.statements("IMASK"):
+        for file, _, statement in context.statements("IMASK"):  # written or read
             if (
                 isinstance(statement, n.KeywordStatement)
                 and statement.keyword.keyword == "IMASK"
@@ -161,8 +161,9 @@ def _widened(value: n.Expression | None, high: int) -> bool:
 
 
 def _has_input_handlers(context: Context) -> bool:
-    for file, line in context.lines(LABEL):
-        event = event_of(line.label.text) if line.label is not None and file.unit is Unit.PROGRAM else None
+    for file, line in context.placed(LABEL):
+        label = line.syntax.label
+        event = event_of(label.text) if label is not None and file.unit is Unit.PROGRAM else None
         if event is not None and event.kind is EventKind.IN:
             return True
     return False

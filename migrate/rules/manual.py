@@ -16,7 +16,7 @@ from typing import ClassVar
 import mintlang
 from mintlang.diagnostics import Diagnostic, Severity, Span
 from mintlang.dialect import Dialect
-from mintlang.migrate.context import LABEL, Context, FileView, per_pass
+from mintlang.migrate.context import LABEL, Context, FileView, per_pass, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Flag, Rule
 from mintlang.migrate.rules.defaults import ReportDefaults
@@ -229,10 +229,12 @@ class OnError(Rule):
     evidence = "spec X-ONERROR; v3:4916; v4:4579-4619, v4:4743-4747, v4:6087-6088"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, line in context.lines(LABEL):
-            event = event_of(line.label.text) if line.label is not None else None
+        for file, line in context.placed(LABEL):
+            label = line.syntax.label
+            event = event_of(label.text) if label is not None else None
             if event is not None and event.kind is EventKind.ONERROR:
-                yield self.flag(file, line.span, "v4 also calls #ONERROR for program errors; drive may stay disabled")
+                reason = "v4 also calls #ONERROR for program errors; drive may stay disabled"
+                yield self.flag(file, line.span(line.syntax.span), reason)
 
 
 class FastLatch(Rule):
@@ -246,11 +248,13 @@ class FastLatch(Rule):
     evidence = "spec X-FASTLATCH; v3:5468, v3:7375; v4:4962-4963, v4:10444-10446, v4:5865-5888"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, line in context.lines(LABEL):
-            event = event_of(line.label.text, Dialect.V3) if line.label else None
-            v4_event = event_of(line.label.text) if line.label else None
+        for file, line in context.placed(LABEL):
+            label = line.syntax.label
+            event = event_of(label.text, Dialect.V3) if label else None
+            v4_event = event_of(label.text) if label else None
             if (event and event.kind is EventKind.FASTPOS) or (v4_event and v4_event.kind is EventKind.FASTIN):
-                yield self.flag(file, line.span, "v4 holds the latch until the handler returns; check FASTSELECT")
+                reason = "v4 holds the latch until the handler returns; check FASTSELECT"
+                yield self.flag(file, line.span(line.syntax.span), reason)
 
 
 @per_pass
@@ -331,7 +335,7 @@ class InvalidInV3(Rule):
         """The errors given a reason of their own: unknown words, a comment missing its REM,
         unmatched blocks and labels."""
         no_operands = context.mentioned(lambda name: not _takes_operands(context, name))
-        for file, _, statement in context.statements(n.BareName, *no_operands):
+        for file, _, statement in context.statements(n.BareName, *map(statement_tag, no_operands)):
             if isinstance(statement, n.BareName) and context.db.lookup(statement.name.text) is None:
                 yield self.flag(file, statement.span, f"'{statement.name.text}' is not a Mint keyword (misprint?)")
             elif isinstance(statement, n.KeywordStatement) and statement.arguments and statement.values is None:

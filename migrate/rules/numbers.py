@@ -51,10 +51,11 @@ class FixedPoint(Rule):
     evidence = "spec X-NUM; v3:1168-1181, v3:5684; v4:715-741"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, _, statement in context.statements(FRACTION, operator_tag("/")):  # what every pattern needs
-            reason = _reason(statement)
-            if reason is not None:
-                yield self.flag(file, statement.span, reason)
+        for file, line in context.placed(FRACTION, operator_tag("/")):  # what every pattern needs
+            for statement in n.flatten_statements(line.syntax.statements):
+                reason = _reason(statement)
+                if reason is not None:
+                    yield self.flag(file, line.span(statement.span), reason)
 
 
 def _reason(statement: n.Statement) -> str | None:

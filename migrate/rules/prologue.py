@@ -51,10 +51,10 @@ def _limited(context: Context) -> tuple[int, ...] | None:
     if moved != ():
         return moved
     axes: set[int] = set()
-    for file, statement, keyword in keyword_refs(context, *_LIMIT_WORDS):
+    for file, line, statement, keyword in keyword_refs(context, *_LIMIT_WORDS):
         named = selector_axes(keyword)
         if named is None and keyword.selector is None:
-            default = default_axes(context, file, statement.span.start)
+            default = default_axes(context, file, line.origin + statement.span.start)
             named = default[:1] if default and keyword.keyword.startswith("LIMIT") else default  # a read: the first
         if named is None:
             return None
@@ -76,8 +76,8 @@ def _stopping(context: Context) -> tuple[int, ...] | None:
     stop switch or sets its mode."""
     handler = any(
         event is not None and event.kind is EventKind.STOP
-        for _, line in context.lines(LABEL)
-        for event in [event_of(line.label.text, Dialect.V3) if line.label is not None else None]
+        for _, line in context.placed(LABEL)
+        for event in [event_of(line.syntax.label.text, Dialect.V3) if line.syntax.label is not None else None]
     )
     if not handler and not _mentions(context, frozenset({"STOPSW", "STOPSWITCH", "STOPMODE", "STOPINPUTMODE"})):
         return ()

@@ -75,10 +75,10 @@ class RenameFastPos(Rule):
     evidence = "spec M-FASTPOS; v4:5910, v4:4955, v4:19108"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, line in context.lines(LABEL):
-            label = line.label
+        for file, line in context.placed(LABEL):
+            label = line.syntax.label
             if label is not None and label.text.upper() == "FASTPOS":
-                yield self.replace(file, _label_name_span(label), like(label.text, "FASTIN"))
+                yield self.replace(file, line.span(_label_name_span(label)), like(label.text, "FASTIN"))
 
 
 class RenameConstants(Rule):

@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.keyworddb.model import Controller
-from mintlang.migrate.context import Context, name_tag
+from mintlang.migrate.context import MACRO, Context, name_tag, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import unparsed_write
 from mintlang.migrate.rules.base import Action, Rule
@@ -20,8 +20,8 @@ _GAINS = frozenset({"GAIN", "KPROP", "KVEL", "KVELFF", "KINT", "KDERIV", "KACCEL
 # written in the same tuning block as the gains: they continue the block without an item of their own
 _TUNING = _GAINS | {"KINTLIMIT", "KINTRANGE", "KINTMODE", "DACLIMITMAX", "CURRENTLIMIT", "CURRLIMIT"}
 # The tags of a line that may write one of those or TORQUE: as a keyword, a user name (a v4
-# keyword to the v3 reader), or the first word of a statement the v3 reader could not parse.
-_WRITTEN = (*_TUNING, *map(name_tag, _TUNING), "TORQUE", name_tag("TORQUE"), n.SyntaxError_)
+# keyword to the v3 reader), or the first word of a statement's text (unparsed, or a macro's name).
+_WRITTEN = (*map(statement_tag, {*_TUNING, "TORQUE"}), *map(name_tag, {*_TUNING, "TORQUE"}), n.SyntaxError_, MACRO)
 
 
 class ConfigurationArrays(Rule):
@@ -59,7 +59,7 @@ class OutputFormat(Rule):
     evidence = "spec X-PRINT; v3:4978-5008, v3:6209-6239; v4:729, v4:764-767, v4:4584-4589, v4:15299-15366"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, _, statement in context.statements(n.Print, n.Input, "BINARY"):
+        for file, _, statement in context.statements(n.Print, n.Input, statement_tag("BINARY")):
             reason = _format_reason(statement)
             if reason is not None:
                 yield self.flag(file, statement.span, reason)
@@ -92,15 +92,17 @@ class ChangedUnits(Rule):
         """One item for each run of gain writes on consecutive lines: a tuning block is re-tuned as a whole."""
         mintdrive = context.controller.controller is Controller.MINTDRIVE
         block_end: dict[Unit, int] = {}  # the last line of the tuning block each file is in
-        for file, line, statement in context.statements(*_WRITTEN):
-            name = _written_name(statement) or unparsed_write(file.text[statement.span.start : statement.span.end])
-            if name in _TUNING:
-                previous = block_end.get(file.unit)
-                block_end[file.unit] = line.number
-                if name in _GAINS and (previous is None or line.number - previous > 1):
-                    yield self.flag(file, statement.span, "servo gains changed units and loop rate in v4: re-tune")
-            elif name == "TORQUE" and mintdrive and not _all_zero(statement):
-                yield self.flag(file, statement.span, "MintDrive TORQUE 100 is nominal current (v3 100 was peak)")
+        for file, line in context.placed(*_WRITTEN):
+            for statement in n.flatten_statements(line.syntax.statements):
+                span = line.span(statement.span)
+                name = _written_name(statement) or unparsed_write(file.slice(span))
+                if name in _TUNING:
+                    previous = block_end.get(file.unit)
+                    block_end[file.unit] = line.number
+                    if name in _GAINS and (previous is None or line.number - previous > 1):
+                        yield self.flag(file, span, "servo gains changed units and loop rate in v4: re-tune")
+                elif name == "TORQUE" and mintdrive and not _all_zero(statement):
+                    yield self.flag(file, span, "MintDrive TORQUE 100 is nominal current (v3 100 was peak)")
 
 
 def _written_name(statement: n.Statement) -> str | None:

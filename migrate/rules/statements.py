@@ -11,7 +11,7 @@ from typing import ClassVar
 
 from mintlang.diagnostics import Span
 from mintlang.migrate.citations import cite
-from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.context import Context, FileView, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule, selector_text
 from mintlang.migrate.rules.spelling import like
@@ -29,7 +29,7 @@ class StatementRule(Rule):
     phase = Phase.CONTEXT
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, _, statement in context.statements(*self.keywords):
+        for file, _, statement in context.statements(*map(statement_tag, self.keywords)):
             if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in self.keywords:
                 result = self.rewrite(context, file, statement)
                 if isinstance(result, Refusal):

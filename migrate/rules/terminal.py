@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.diagnostics import Span
-from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.context import Context, FileView, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.migrate.rules.spelling import like
@@ -31,7 +31,7 @@ class BinaryOutput(Rule):
     evidence = "spec S-BINARY; v3:6209-6239; v4:764-767, v4:15354-15366"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, _, statement in context.statements("BINARY"):
+        for file, _, statement in context.statements(statement_tag("BINARY")):
             if not isinstance(statement, n.KeywordStatement) or statement.keyword.keyword != "BINARY":
                 continue
             if statement.using or statement.values is not None or statement.keyword.selector is not None:

@@ -54,37 +54,39 @@ class GoTiming(Rule):
     evidence = "spec X-GO-TIMING; v3:3405-3412, v3:4146-4158, v3:8052-8062; v4:2938-2944, v4:11080-11089"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        """Only the lines that can change the state or show do: the others pass it on."""
+        """Only the lines that can change the state or show do: the others pass it on. They are
+        read as parsed (``line.span`` places a statement): most of a program is timed."""
         outputs = context.mentioned(lambda name: name.startswith("OUT") and name[3:].isdigit())
-        timed = list(context.lines(LABEL, n.Pause, n.Print, n.Jump, "COMMS", "GO", *MOVES, *_EFFECTS, *outputs))
+        timed = list(context.placed(LABEL, n.Pause, n.Print, n.Jump, "COMMS", "GO", *MOVES, *_EFFECTS, *outputs))
         for file in context.files.values():
             yield from self._file(context, file, [line for owner, line in timed if owner is file])
 
-    def _file(self, context: Context, file: FileView, lines: list[n.Line]) -> Iterator[Action]:
+    def _file(self, context: Context, file: FileView, lines: list[n.PlacedLine]) -> Iterator[Action]:
         running, homing, delayed = _IDLE, _IDLE, False
         for line in lines:
-            if line.label is not None:
+            if line.syntax.label is not None:
                 running, homing, delayed = _IDLE, _IDLE, False
-            for statement in n.walk_statements(line.statements):
+            for statement in n.walk_statements(line.syntax.statements):
+                start = line.origin + statement.span.start
                 if _moves(statement):
                     delayed = False
                 elif delayed and _visible(statement):
-                    yield self.flag(file, statement.span, _DELAYED)
+                    yield self.flag(file, line.span(statement.span), _DELAYED)
                     delayed = False
                 if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in MOVES:
-                    axes = addressed_axes(context, file, statement)
+                    axes = addressed_axes(context, file, statement, start)
                     if statement.keyword.keyword == "HOME" and statement.values is not None:
                         homing = _started(homing, axes)
                     elif _overlaps(homing, axes):
-                        yield self.flag(file, statement.span, _HOMING)
+                        yield self.flag(file, line.span(statement.span), _HOMING)
                         homing = _IDLE
                 if isinstance(statement, n.Pause):
                     if _mentions(statement, "TRIGGER"):
-                        yield self.flag(file, statement.span, _TRIGGER)
+                        yield self.flag(file, line.span(statement.span), _TRIGGER)
                     if _mentions(statement, "IDLE") or _mentions(statement, "HOME"):
                         running, homing = _IDLE, _IDLE
                 elif isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "GO":
-                    axes = addressed_axes(context, file, statement)
+                    axes = addressed_axes(context, file, statement, start)
                     delayed = _overlaps(running, axes)
                     running = _started(running, axes)
 

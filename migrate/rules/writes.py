@@ -6,7 +6,7 @@ from collections.abc import Iterator
 from typing import ClassVar
 
 from mintlang.diagnostics import Span
-from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.context import Context, FileView, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.axes import default_axes, selector_axes
 from mintlang.migrate.rules.base import Action, Rule, selector_text, values_text
@@ -37,7 +37,7 @@ class AccelAlsoDecel(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         axiscon = next(iter(context.keyword_uses("AXISCON")), None) is not None
-        for file, _, statement, after in context.neighbours(*self.pairs):
+        for file, _, statement, after in context.neighbours(*map(statement_tag, self.pairs)):
             accel = _accel(statement)
             if accel is None:
                 continue
@@ -48,7 +48,7 @@ class AccelAlsoDecel(Rule):
             if self._companion(file, accel, after):
                 continue
             yield self.replace(file, Span(accel.span.end, accel.span.end), f" : {_decel_write(file, accel, decel)}")
-        for file, before, statement, _ in context.neighbours(*self.pairs.values()):
+        for file, before, statement, _ in context.neighbours(*map(statement_tag, self.pairs.values())):
             decel = _writes(statement, "DECEL") or _writes(statement, "DECELTIME")
             if decel is None or decel.values is None or axiscon:
                 continue
@@ -199,7 +199,7 @@ class IntegerScale(Rule):
     evidence = "spec M-SCALE; v3:4759-4760, v3:11610; v4:15783"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, _, statement in context.statements("SCALE"):
+        for file, _, statement in context.statements(statement_tag("SCALE")):
             scale = _writes(statement, "SCALE")
             for value in scale.values or () if scale is not None else ():
                 if value is None or _integral(value):
@@ -252,7 +252,7 @@ class OffsetNeedsGo(Rule):
     def apply(self, context: Context) -> Iterator[Action]:
         if not context.controller.controller.startswith("nextmove"):
             return
-        for file, _, statement, after in context.neighbours("OFFSET"):
+        for file, _, statement, after in context.neighbours(statement_tag("OFFSET")):
             offset = _writes(statement, "OFFSET")
             if offset is None or offset.values is None:
                 continue

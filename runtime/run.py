@@ -110,6 +110,7 @@ def run_source(
     limits: Limits | None = None,
     echo: Callable[[str], None] | None = None,
     on_tick: Callable[[Controller, int], None] | None = None,
+    on_start: Callable[[Controller], None] | None = None,
     name: str = "program",
 ) -> RunResult:
     """Run a program (and its configuration file) to the end or a limit; never raises for the program's faults.
@@ -121,6 +122,11 @@ def run_source(
     naming the program ``name`` (its path, on the command line). A file the
     controller's compiler rejects does not run: when it is the program, the
     configuration still runs first, as on the controller.
+
+    ``on_tick`` is called after each processed tick (every tick with
+    ``Limits.every_tick``), ``on_start`` once with the controller before the
+    first: an ``echo`` that wants the time or the statement printing
+    (``controller.clock.now``, ``controller.vm.current_site()``) gets it there.
     """
     simulated = machine(controller, dialect)
     directives, problems = parse_directives(source, name, controller=simulated, dialect=dialect)
@@ -134,7 +140,9 @@ def run_source(
     if refused is not None:  # what runs before the compiler stops: the configuration, if the program is at fault
         runs_first = config if refused.unit is Unit.PROGRAM else None
         model = mintlang.check_application("", dialect=dialect, controller=base, config=runs_first).model
-    return _simulate(model, simulated, scenario, limits or Limits(), refused, echo=echo, on_tick=on_tick)
+    return _simulate(
+        model, simulated, scenario, limits or Limits(), refused, echo=echo, on_tick=on_tick, on_start=on_start
+    )
 
 
 def _simulate(
@@ -146,6 +154,7 @@ def _simulate(
     *,
     echo: Callable[[str], None] | None,
     on_tick: Callable[[Controller, int], None] | None,
+    on_start: Callable[[Controller], None] | None,
 ) -> RunResult:
     try:
         built = build_controller(
@@ -179,6 +188,8 @@ def _simulate(
             built.terminal.watch(expectation.text)  # found in all the output, not only in what is kept
     if on_tick is not None:
         simulator.on_tick = lambda tick: on_tick(built, tick)
+    if on_start is not None:
+        on_start(built)
     stop = simulator.run()
     if refused is not None and stop.reason is StopReason.END:
         unit = refused.unit.value

@@ -36,6 +36,7 @@ class Limits:
     every_tick: bool = False
     slice_statements: int = 20
     host_port: int | None = None
+    settle: bool = False  # after END, run the machine on until every axis is idle (see ``Simulator.run``)
 
 
 @dataclass(frozen=True, slots=True)
@@ -162,8 +163,19 @@ class Simulator:
             soonest = min(soonest, *self.checkpoints)
         return max(soonest, t + 1)
 
+    def _settling(self) -> bool:
+        """Whether the machine runs on after the program ended: ``Limits.settle`` asks for it, for as long as
+        an axis is not idle. Moves outlive the program on a controller; a comparison of two runs whose
+        programs end at different times (v3's GO waits, v4's does not) must see them finish."""
+        c = self.c
+        return self.limits.settle and c.vm.stopped is StopReason.END and not all(axis.idle() for axis in c.axes)
+
     def run(self) -> Stop:
-        """Run to the end, a limit, a deadlock, Ctrl-C or an ``Interrupt``; each becomes the ``Stop`` it returns."""
+        """Run to the end, a limit, a deadlock, Ctrl-C or an ``Interrupt``; each becomes the ``Stop`` it returns.
+
+        With ``Limits.settle`` the ticks go on after END while an axis moves (no statement runs; the
+        world, the profiler and the servo loop do), up to ``until_ms``; the ``Stop`` is still the END,
+        at the time the program ended."""
         c = self.c
         vm = c.vm
         limits = self.limits
@@ -171,11 +183,14 @@ class Simulator:
         started = time.perf_counter()
         processed = 0
         t = 0
+        ended = None  # the time the program ended, when the machine settles after it
         try:
             while True:
                 self._step(t)
                 if vm.stopped is not None:
-                    break
+                    if not self._settling():
+                        break
+                    ended = c.clock.now if ended is None else ended
                 following = self.next_change(t)
                 if following >= NEVER:
                     vm.stop(StopReason.DEADLOCK, self._deadlock())
@@ -208,7 +223,7 @@ class Simulator:
         site = vm.stop_site
         return Stop(
             vm.stopped or StopReason.END,
-            c.clock.now,
+            c.clock.now if ended is None else ended,
             site.unit if site else None,
             site.line if site else None,
             site.text if site else None,

@@ -60,6 +60,11 @@ def statement_tag(keyword: str) -> tuple[str, str]:
     return ("statement", keyword)
 
 
+def constant_tag(name: str) -> tuple[str, str]:
+    """The tag of a line using the constant ``name`` (upper case, ``_SERVO``)."""
+    return ("constant", name)
+
+
 def name_tag(name: str) -> tuple[str, str]:
     """The tag of a line writing or reading the user name ``name`` (by its identity: the first
     ten characters, upper case), apart from the keyword names so that asking for those by what
@@ -69,8 +74,8 @@ def name_tag(name: str) -> tuple[str, str]:
 
 class LineTags:
     """What each line mentions, worked out once per text it was parsed from for a whole run: the
-    types of its statements and expressions, the keywords, functions and constants it names,
-    ``statement_tag`` of its keyword statements, ``name_tag`` of its user names, ``operator_tag``
+    types of its statements and expressions, the keywords and functions it names, ``constant_tag``
+    of its constants, ``statement_tag`` of its keyword statements, ``name_tag`` of its user names, ``operator_tag``
     of its operators, ``LABEL`` and ``FRACTION`` (``Context`` adds ``MACRO``, which depends on
     the macros defined above the line).
     Keyed by ``PlacedLine.content``, never by the shared syntax (see ``mintlang.caching``)."""
@@ -111,7 +116,7 @@ def _tags(syntax: n.LineSyntax) -> frozenset[object]:
                 elif kind is n.Call:
                     add(node.function)  # type: ignore[union-attr]
                 elif kind is n.ConstantRef:
-                    add(node.name)  # type: ignore[union-attr]
+                    add(constant_tag(node.name))  # type: ignore[union-attr]
                 elif kind is n.VariableRef or kind is n.ElementRef:
                     add(name_tag(node.name.text))  # type: ignore[union-attr]
                 elif kind is n.Binary or kind is n.Unary:
@@ -327,9 +332,9 @@ class Context:
                     yield file, use
 
     def mentioned(self, keep: Callable[[str], bool]) -> list[str]:
-        """The keyword, function and constant names written anywhere in the application that
-        ``keep`` accepts: the ``wanted`` of a rule that asks for names by what they are (not a
-        Mint v4 keyword ...), not by a list."""
+        """The keyword and function names written anywhere in the application that ``keep``
+        accepts: the ``wanted`` of a rule that asks for keywords by what they are (not a Mint v4
+        keyword ...), not by a list."""
         return [tag for tag in self._tagged if type(tag) is str and keep(tag)]
 
     @cached_property

@@ -16,7 +16,7 @@ from typing import ClassVar
 import mintlang
 from mintlang.diagnostics import Diagnostic, Severity, Span
 from mintlang.dialect import Dialect
-from mintlang.migrate.context import LABEL, Context, FileView, per_pass, statement_tag
+from mintlang.migrate.context import LABEL, Context, FileView, constant_tag, per_pass, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Flag, Rule
 from mintlang.migrate.rules.defaults import ReportDefaults
@@ -335,13 +335,15 @@ class InvalidInV3(Rule):
         """The errors given a reason of their own: unknown words, a comment missing its REM,
         unmatched blocks and labels."""
         no_operands = context.mentioned(lambda name: not _takes_operands(context, name))
-        for file, _, statement in context.statements(n.BareName, *map(statement_tag, no_operands)):
-            if isinstance(statement, n.BareName) and context.db.lookup(statement.name.text) is None:
-                yield self.flag(file, statement.span, f"'{statement.name.text}' is not a Mint keyword (misprint?)")
-            elif isinstance(statement, n.KeywordStatement) and statement.arguments and statement.values is None:
-                keyword = context.db.keywords.get(statement.keyword.keyword)
-                if keyword is not None and not keyword.takes_operands:  # STOP following: a REM missing
-                    yield self.flag(file, statement.span, f"{keyword.name} takes no operands (a comment missing REM?)")
+        for file, line in context.placed(n.BareName, *map(statement_tag, no_operands)):
+            for statement in n.flatten_statements(line.syntax.statements):
+                span = line.span(statement.span)
+                if isinstance(statement, n.BareName) and context.db.lookup(statement.name.text) is None:
+                    yield self.flag(file, span, f"'{statement.name.text}' is not a Mint keyword (misprint?)")
+                elif isinstance(statement, n.KeywordStatement) and statement.arguments and statement.values is None:
+                    keyword = context.db.keywords.get(statement.keyword.keyword)
+                    if keyword is not None and not keyword.takes_operands:  # STOP following: a REM missing
+                        yield self.flag(file, span, f"{keyword.name} takes no operands (a comment missing REM?)")
         for unit, structure in context.model.structures.items():
             for diagnostic in structure.diagnostics:
                 if diagnostic.severity is Severity.ERROR:
@@ -389,7 +391,7 @@ class LeftoverV3(Rule):
                 yield self.flag(file, statement.span, f"{keyword} is Mint v3 only: no automatic rewrite")
         same = same_value_constants(context)
         changed = [name for name in db.v3_constants if name not in same]
-        for file, _, statement in context.statements(*changed):
+        for file, _, statement in context.statements(*map(constant_tag, changed)):
             if _flagged(file, statement.span.start):
                 continue
             for root in n.expressions_of(statement):

@@ -11,7 +11,7 @@ from types import MappingProxyType
 
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
-from mintlang.migrate.context import LABEL, Context, FileView
+from mintlang.migrate.context import LABEL, Context, FileView, constant_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.migrate.rules.spelling import like
@@ -98,7 +98,7 @@ class RenameConstants(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         renames = same_value_constants(context)
-        for file, _, statement in context.statements(*renames):
+        for file, _, statement in context.statements(*map(constant_tag, renames)):
             for root in n.expressions_of(statement):
                 for node in n.walk_expression(root):
                     if isinstance(node, n.ConstantRef) and node.name in renames:

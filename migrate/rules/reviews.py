@@ -59,10 +59,11 @@ class OutputFormat(Rule):
     evidence = "spec X-PRINT; v3:4978-5008, v3:6209-6239; v4:729, v4:764-767, v4:4584-4589, v4:15299-15366"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, _, statement in context.statements(n.Print, n.Input, statement_tag("BINARY")):
-            reason = _format_reason(statement)
-            if reason is not None:
-                yield self.flag(file, statement.span, reason)
+        for file, line in context.placed(n.Print, n.Input, statement_tag("BINARY")):
+            for statement in n.flatten_statements(line.syntax.statements):
+                reason = _format_reason(statement)
+                if reason is not None:
+                    yield self.flag(file, line.span(statement.span), reason)
 
 
 def _format_reason(statement: n.Statement) -> str | None:

@@ -19,9 +19,9 @@ from pygls.uris import to_fs_path
 from mintlang.lsp import __version__
 from mintlang.lsp.collector import Collector
 from mintlang.lsp.disk import read_text
-from mintlang.lsp.documents import LspProtocol
 from mintlang.lsp.lookup import line_prefix
 from mintlang.lsp.positions import Positions
+from mintlang.lsp.protocol import MintProtocol
 from mintlang.lsp.workspace import MAX_CHARACTERS, Analyses, Snapshot
 
 log = logging.getLogger(__name__)
@@ -29,7 +29,7 @@ log = logging.getLogger(__name__)
 
 class MintServer(LanguageServer):
     def __init__(self) -> None:
-        super().__init__("mint-lsp", __version__, protocol_cls=LspProtocol)  # documents with LSP line ends
+        super().__init__("mint-lsp", __version__, protocol_cls=MintProtocol)  # LSP line ends, every request answered
         self.analyses = Analyses(read=self.read_text, opened=self.opened, collector=Collector())
 
     def opened(self) -> Collection[str]:

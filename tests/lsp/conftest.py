@@ -5,12 +5,17 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+import pytest
 import pytest_lsp
 from lsprotocol import types
 from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
 
 CORPUS = Path(__file__).parents[1] / "corpus" / "v4" / "valid"
 SERVER = [sys.executable, "-m", "mintlang.lsp"]
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    config.addinivalue_line("markers", "slow: runs for tens of seconds (CI runs it; -m 'not slow' skips it)")
 
 
 @pytest_lsp.fixture(config=ClientServerConfig(server_command=SERVER))

@@ -1,0 +1,115 @@
+"""The JSON-RPC layer: every request is answered, and nothing of a finished message is kept.
+
+pygls 2.1 leaves a client waiting, or the server growing, in four places:
+
+- a request whose params do not fit the method (none, an array, a negative
+  position) fails while it is decoded, before pygls knows it is a request:
+  pygls logs it and shows an error, but never answers, so the client waits
+  forever. The LSP wants ``InvalidParams``;
+- a request before ``initialize`` reaches a handler that needs the workspace
+  and fails with an internal error and a traceback; the LSP wants
+  ``ServerNotInitialized``, and notifications dropped (``exit`` excepted);
+- a request after ``shutdown`` is dropped silently; the LSP wants ``InvalidRequest``;
+- every notification, and every handler a built-in one hands on to, is filed
+  under a fresh id in the table of requests in flight and never taken out:
+  a ``Future``, a task and its context per keystroke, 3 KB an edit.
+"""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Callable, Generator
+from concurrent.futures import Future
+from typing import Any
+
+import cattrs
+from lsprotocol import types
+from pygls.exceptions import (
+    JsonRpcException,
+    JsonRpcInvalidParams,
+    JsonRpcInvalidRequest,
+    JsonRpcServerNotInitialized,
+)
+from pygls.protocol import lsp_method
+
+from mintlang.lsp.documents import LspProtocol
+
+log = logging.getLogger(__name__)
+
+_ANSWERED = object()  # a request refused while it was decoded: its error response has gone out
+
+
+def _why(error: JsonRpcException) -> str:
+    """What was wrong with the params, as paths into them (``required field missing @ $.params.position``)."""
+    cause = error.__cause__
+    if isinstance(cause, cattrs.ClassValidationError | cattrs.IterableValidationError):
+        return "; ".join(cattrs.transform_error(cause))
+    return str(cause or error)
+
+
+class MintProtocol(LspProtocol):
+    """pygls' protocol, answering every request it cannot run and forgetting finished handlers."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self._initialize_received = False
+
+    def structure_message(self, data: dict[str, Any]) -> Any:
+        """A request whose params cannot be read is answered with ``InvalidParams`` here, as it is decoded."""
+        try:
+            return super().structure_message(data)
+        except JsonRpcException as error:
+            if "method" not in data or "id" not in data:
+                raise  # a notification has nobody to answer: pygls logs and shows it
+            message = f"{JsonRpcInvalidParams.MESSAGE} for {data['method']}: {_why(error)}"
+            self._send_response(data["id"], error=JsonRpcInvalidParams(message).to_response_error())
+            return _ANSWERED
+
+    def handle_message(self, message: Any) -> None:
+        if message is _ANSWERED:
+            return
+        method = getattr(message, "method", None)
+        request = method is not None and getattr(message, "id", None) is not None
+        if method == types.INITIALIZE:
+            self._initialize_received = True
+        elif not self._initialize_received and method != types.EXIT:
+            if request:
+                self._refuse(message.id, JsonRpcServerNotInitialized(f"{method} before initialize"))
+            return  # a notification before initialize is dropped
+        elif self._shutdown and request:
+            self._refuse(message.id, JsonRpcInvalidRequest(f"{method} after shutdown"))
+            return
+        super().handle_message(message)
+
+    def _refuse(self, msg_id: Any, error: JsonRpcException) -> None:
+        log.warning("refused: %s", error.message)
+        self._send_response(msg_id, error=error.to_response_error())
+
+    def _execute_handler(
+        self,
+        msg_id: Any,
+        handler: Callable[..., Any],
+        callback: Callable[[Future[Any]], None],
+        args: tuple[Any, ...] | None = None,
+        kwargs: dict[str, Any] | None = None,
+    ) -> None:
+        """pygls' dispatch, then the handler's entry in the requests in flight dropped once it is done
+        (pygls drops it only for the requests it answers)."""
+        super()._execute_handler(msg_id, handler, callback, args, kwargs)
+        future = self._request_futures.get(msg_id)
+        if future is not None:
+            future.add_done_callback(lambda done: self._forget(msg_id, done))
+
+    def _forget(self, msg_id: Any, done: Future[Any]) -> None:
+        if self._request_futures.get(msg_id) is done:
+            del self._request_futures[msg_id]
+
+    @lsp_method(types.SHUTDOWN)
+    def lsp_shutdown(self, *args: Any) -> Generator[Any, Any, None]:
+        """pygls' shutdown cancels what is in flight while it walks the table, and a cancelled future now
+        leaves the table at once: the ones that would, cancelled first over a copy."""
+        current = self.msg_id
+        for msg_id, future in list(self._request_futures.items()):
+            if msg_id != current and isinstance(future, Future):
+                future.cancel()
+        return (yield from super().lsp_shutdown(*args))

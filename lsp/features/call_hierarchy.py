@@ -44,7 +44,8 @@ class Part:
 
 @dataclass(frozen=True, slots=True)
 class Jump:
-    word: str  # GOSUB or GOTO
+    """A GOSUB or GOTO: GOSUB and GOTO alike are calls here."""
+
     target: str  # the label's identity
     span: Span  # the label's name, or the macro use whose text holds the jump
 
@@ -66,7 +67,7 @@ def jumps(snapshot: Snapshot) -> Iterator[Jump]:
         if unit is snapshot.unit and n.Jump in facts.kinds:
             for statement in facts.statements:
                 if type(statement) is n.Jump:
-                    yield Jump(statement.word, statement.label.identity, line.span(statement.label.span))
+                    yield Jump(statement.label.identity, line.span(statement.label.span))
 
 
 def _containing(found: list[Part], offset: int) -> Part | None:

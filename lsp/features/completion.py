@@ -31,7 +31,7 @@ from mintlang.lsp.workspace import Snapshot
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import SymbolKind
 from mintlang.syntax.lines import MacroDefinition
-from mintlang.syntax.tokens import TRIVIA, Token, TokenKind
+from mintlang.syntax.tokens import Token, TokenKind
 
 SNIPPETS = {
     "IF … DO … ENDIF": "IF ${1:condition} DO\n\t$0\nENDIF",
@@ -193,7 +193,7 @@ def _events(snapshot: Snapshot, hash_: Token, cursor: types.Position) -> list[ty
 
 def _macro_numbers(definition: MacroDefinition) -> list[int] | None:
     """The numbers a macro's text is: ``0`` gives [0], ``[0,1]`` gives [0, 1]; None for any other text."""
-    body = [text for kind, text in definition.body if kind not in TRIVIA]
+    body = [text for _, text in definition.body]
     if body[:1] == ["["] and body[-1:] == ["]"]:
         body = body[1:-1:2] if all(comma == "," for comma in body[2:-1:2]) else []
     if body and all(text.isdigit() for text in body):
@@ -222,19 +222,7 @@ def _after_dot(snapshot: Snapshot, before: list[Token], typed: types.Range) -> l
     if found is None:
         return []
     noun, valid = found
-    items = (
-        []
-        if delimited
-        else [
-            types.CompletionItem(
-                label=str(number),
-                kind=types.CompletionItemKind.Value,
-                detail=f"{noun} {number}",
-                sort_text=f"0{number:04d}",
-            )
-            for number in range(valid.low, valid.high + 1)
-        ]
-    )
+    items = [] if delimited else [_number_item(noun, number) for number in range(valid.low, valid.high + 1)]
     for definition in snapshot.model.program.macros.values():
         numbers = _macro_numbers(definition)
         if not numbers or not all(number in valid for number in numbers) or (len(numbers) > 1 and noun != "axis"):
@@ -245,6 +233,11 @@ def _after_dot(snapshot: Snapshot, before: list[Token], typed: types.Range) -> l
             names = f"{noun if len(numbers) == 1 else 'axes'} {', '.join(map(str, numbers))}"
             items.append(_macro_item(definition.name, text, names, typed))
     return items
+
+
+def _number_item(noun: str, number: int) -> types.CompletionItem:
+    kind = types.CompletionItemKind.Value
+    return types.CompletionItem(label=str(number), kind=kind, detail=f"{noun} {number}", sort_text=f"0{number:04d}")
 
 
 def _macro_item(name: str, text: str, names: str, typed: types.Range) -> types.CompletionItem:

@@ -37,6 +37,7 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.runtime.comms.server import PortUnavailable
 from mintlang.runtime.controller import Controller
+from mintlang.runtime.dialects import SIMULATED
 from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_CONTROLLERS
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import StopReason
@@ -98,7 +99,7 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
 )
 @click.option(
     "--dialect",
-    type=click.Choice([dialect.value for dialect in Dialect]),
+    type=click.Choice([dialect.value for dialect in SIMULATED]),
     default=Dialect.V4.value,
     show_default=True,
     help="The language of the program: Mint v4, or Mint v3 (the esMINT guide).",

@@ -10,11 +10,12 @@ import json
 import re
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
-from functools import cache
+from functools import cache, cached_property
 from importlib import resources
 from types import MappingProxyType
 from typing import Any, TypeVar
 
+from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import (
     Addressing,
     Attributes,
@@ -77,6 +78,8 @@ def _keyword(raw: dict[str, Any]) -> Keyword:
         documented=raw["documented"],
         line=raw["line"],
         notes=tuple(raw["notes"]),
+        indices=tuple(raw.get("indices", ())),
+        manual=raw.get("manual", "000"),
     )
 
 
@@ -123,6 +126,8 @@ class KeywordDatabase:
     v3_keywords: Mapping[str, V3Keyword]
     v3_constants: Mapping[str, V3Constant]
     renames: tuple[Rename, ...]
+    mintmt_keywords: Mapping[str, Keyword]  # MintMT's own keywords, and v4 ones MintMT addresses otherwise
+    mintmt_constants: Mapping[str, Constant]
     _words: Mapping[str, Keyword] = field(repr=False)
     _v3_words: Mapping[str, V3Keyword] = field(repr=False)
     _old_words: Mapping[str, Rename] = field(repr=False)
@@ -148,6 +153,22 @@ class KeywordDatabase:
         if match and (base := self._words.get(match["base"])) is not None and base.channel_suffix:
             return base
         return None
+
+    def keywords_of(self, dialect: Dialect) -> Mapping[str, Keyword]:
+        """The keywords of a v4-based dialect by name: v4's, with MintMT's own over them in MintMT."""
+        return self._mintmt_all_keywords if dialect is Dialect.MINTMT else self.keywords
+
+    def constants_of(self, dialect: Dialect) -> Mapping[str, Constant]:
+        """The predefined constants of a v4-based dialect by name."""
+        return self._mintmt_all_constants if dialect is Dialect.MINTMT else self.constants
+
+    @cached_property
+    def _mintmt_all_keywords(self) -> Mapping[str, Keyword]:
+        return MappingProxyType({**self.keywords, **self.mintmt_keywords})
+
+    @cached_property
+    def _mintmt_all_constants(self) -> Mapping[str, Constant]:
+        return MappingProxyType({**self.constants, **self.mintmt_constants})
 
     def lookup_v3(self, word: str) -> V3Keyword | None:
         """The v3 keyword ``word`` names or abbreviates, in any case."""
@@ -201,6 +222,11 @@ def database() -> KeywordDatabase:
         v3_keywords=_by_name(v3_keywords, lambda k: k.name),
         v3_constants=_by_name(v3_constants, lambda c: c.name),
         renames=renames,
+        mintmt_keywords=_by_name((_keyword(raw) for raw in _read("keywords_mintmt.json")), lambda k: k.name),
+        mintmt_constants=_by_name(
+            (Constant(r["name"], r["value"], r["keyword"], r["line"]) for r in _read("constants_mintmt.json")),
+            lambda c: c.name,
+        ),
         _words=_index(preferred, lambda k: (k.name,), lambda k: k.abbreviations, fixed=_abbreviation_choices(by_name)),
         _v3_words=_index(v3_keywords, lambda k: (k.name,), lambda k: k.abbreviations),
         _old_words=_index(renames, lambda r: (r.old,), lambda r: (r.old_abbreviation,) if r.old_abbreviation else ()),

@@ -93,8 +93,10 @@ class Keyword:
     see_also: tuple[str, ...]
     summary: str  # our own words, for hover
     documented: bool  # False for keywords only listed (advanced and CAN stubs)
-    line: int  # line of the entry in the v4 guide
+    line: int  # line of the entry in ``manual``
     notes: tuple[str, ...]  # conflicts the manual itself contains about this keyword
+    indices: tuple[str, ...] = ()  # MintMT: what follows the axes in its brackets, CONTOURPARAMETER(axes, index)
+    manual: str = "000"  # the seed manual the entry comes from: 000 the v4 guide, 004/002 the MintMT notes
 
     @property
     def takes_operands(self) -> bool:

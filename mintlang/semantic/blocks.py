@@ -12,6 +12,11 @@ number: a FOR without NEXT is 2009, an IF .. DO without ENDIF 2011. An ELSE
 or ENDIF without IF .. DO that follows an ``IF .. THEN`` with nothing after
 its THEN is offered the fix of writing DO: that IF was meant as the block.
 The nesting limits of section 3.9 give error 2015.
+
+MintMT adds ``Event NAME .. End Event`` and ``Startup .. End Startup`` (its
+``End Loop`` and ``End If`` lex as ENDL and ENDIF). The notes give no error
+numbers for them: a mismatch is reported as the syntax error 2003
+(mintlang/MINTMT.md).
 """
 
 from __future__ import annotations
@@ -34,6 +39,8 @@ class BlockKind(StrEnum):
     REPEAT = "REPEAT"
     WHILE = "WHILE"
     LOOP = "LOOP"
+    EVENT = "Event"  # MintMT
+    STARTUP = "Startup"  # MintMT
 
 
 _CLOSERS: dict[str, tuple[BlockKind, int, str]] = {
@@ -41,6 +48,8 @@ _CLOSERS: dict[str, tuple[BlockKind, int, str]] = {
     "NEXT": (BlockKind.FOR, 2009, "NEXT without FOR"),
     "ENDW": (BlockKind.WHILE, 2012, "ENDW without WHILE"),
     "ENDL": (BlockKind.LOOP, 2014, "ENDL without LOOP"),
+    "ENDEVENT": (BlockKind.EVENT, 2003, "End Event without Event"),
+    "ENDSTARTUP": (BlockKind.STARTUP, 2003, "End Startup without Startup"),
 }
 _CLOSING = {  # the word that closes each kind of block, and the number of the construct's mismatch
     BlockKind.IF: ("ENDIF", 2011),
@@ -48,9 +57,11 @@ _CLOSING = {  # the word that closes each kind of block, and the number of the c
     BlockKind.REPEAT: ("UNTIL", 2013),
     BlockKind.WHILE: ("ENDW", 2012),
     BlockKind.LOOP: ("ENDL", 2014),
+    BlockKind.EVENT: ("End Event", 2003),
+    BlockKind.STARTUP: ("End Startup", 2003),
 }
 LOOPS = frozenset({BlockKind.FOR, BlockKind.REPEAT, BlockKind.WHILE, BlockKind.LOOP})
-_BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.IfThen, n.For, n.While, n.Until, n.SyntaxError_})
+_BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.IfThen, n.For, n.While, n.Until, n.SyntaxError_, n.EventBlock})
 
 
 class Place(NamedTuple):
@@ -91,7 +102,7 @@ class _Open:
     reported: bool = False  # an error already tells of this block: its opener is broken, or a closer mismatched
 
 
-_OPENING_WORDS = {"REPEAT": BlockKind.REPEAT, "LOOP": BlockKind.LOOP}
+_OPENING_WORDS = {"REPEAT": BlockKind.REPEAT, "LOOP": BlockKind.LOOP, "STARTUP": BlockKind.STARTUP}
 
 
 def _opener_kind(statement: n.Statement) -> BlockKind | None:
@@ -100,6 +111,8 @@ def _opener_kind(statement: n.Statement) -> BlockKind | None:
         return _OPENING_WORDS.get(statement.word)  # type: ignore[union-attr]
     if kind is n.IfDo:
         return BlockKind.IF
+    if kind is n.EventBlock:
+        return BlockKind.EVENT
     if kind is n.For:
         return BlockKind.FOR
     if kind is n.While:
@@ -118,7 +131,7 @@ class _Matcher:
     def __init__(self, limits: NestingLimits) -> None:
         self.limits = limits
         self.stack: list[_Open] = []
-        self.open = {BlockKind.IF: 0, BlockKind.FOR: 0, BlockKind.REPEAT: 0, BlockKind.WHILE: 0, BlockKind.LOOP: 0}
+        self.open = dict.fromkeys(BlockKind, 0)
         self.blocks: list[Block] = []
         self.diagnostics: list[Diagnostic] = []
         self.bare_then: tuple[int, Fix] | None = None  # the last IF .. THEN with nothing after THEN: depth, fix

@@ -18,7 +18,7 @@ def constant_value(expression: n.Expression | None, dialect: Dialect = Dialect.V
         return float(expression.value)  # type: ignore[union-attr]
     if kind is n.ConstantRef:
         db = database()
-        table = db.constants if dialect is Dialect.V4 else db.v3_constants
+        table = db.constants_of(dialect) if dialect.modern else db.v3_constants
         record = table.get(expression.name)  # type: ignore[union-attr]
         return record.value if record is not None else None
     if kind is n.Parenthesised:

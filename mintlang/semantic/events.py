@@ -29,6 +29,7 @@ class Event:
 _PATTERN = re.compile(r"(ONERROR|STOP|TIMER|CAN|COMMS|IN|FASTIN|FASTPOS)([0-9]*)")
 _EVENTS = {
     Dialect.V4: frozenset(EventKind) - {EventKind.FASTPOS},
+    Dialect.MINTMT: frozenset(EventKind) - {EventKind.FASTPOS},
     Dialect.V3: frozenset({EventKind.ONERROR, EventKind.STOP, EventKind.IN, EventKind.FASTPOS}),
 }
 _UNNUMBERED = frozenset({EventKind.ONERROR, EventKind.STOP, EventKind.TIMER})

@@ -206,7 +206,7 @@ def _bare_name(tree: Tree) -> Make[n.Statement]:
 
 def _keyword_statement(tree: Tree) -> Make[n.Statement]:
     parts = {child.data: child for child in _trees(tree)}
-    selector_tree = parts.get("bracket_selector") or parts.get("dot_selector")
+    selector_tree = parts.get("bracket_selector") or parts.get("dot_selector") or parts.get("address_selector")
     keyword = _keyword_ref(tree.children[0], selector_tree)  # type: ignore[arg-type]
     terminal = _optional(parts.get("terminal"), _terminal)
     values, fill = _values(parts["values"]) if "values" in parts else (_constant(None), False)
@@ -315,6 +315,11 @@ def _jump(tree: Tree) -> Make[n.Statement]:
     return lambda line, words: n.Jump(span(line, words), kind, label(line, words))
 
 
+def _event(tree: Tree) -> Make[n.Statement]:
+    span, name = _tree_span(tree), _name(tree.children[1].children[0])  # type: ignore[union-attr]
+    return lambda line, words: n.EventBlock(span(line, words), name(line, words))
+
+
 def _pause(tree: Tree) -> Make[n.Statement]:
     span = _tree_span(tree)
     condition = _expression(tree.children[1]) if len(tree.children) > 1 else _constant(None)
@@ -354,7 +359,7 @@ def _define(tree: Tree) -> Make[n.Statement]:
 
 def _axes(tree: Tree) -> Make[n.Statement]:
     span = _tree_span(tree)
-    selector = _selector(tree.children[1]) if len(tree.children) > 1 else _constant(None)  # type: ignore[arg-type]
+    selector = _selector(tree.children[1], tree.children[0]) if len(tree.children) > 1 else _constant(None)  # type: ignore[arg-type]
     return lambda line, words: n.Axes(span(line, words), selector(line, words))
 
 
@@ -436,15 +441,42 @@ def _target(tree: Tree) -> Make[n.VariableRef | n.ElementRef]:
 # ---------------------------------------------------------------- selectors
 
 
-def _selector(tree: Tree) -> Make[n.Selector]:
+def _selector(tree: Tree, keyword: Child) -> Make[n.Selector]:
     span = _tree_span(tree)
+    if tree.data == "address_selector":
+        return _address_selector(tree, keyword)
     if tree.data == "bracket_selector":
         items_tree = next(child for child in _trees(tree) if child.data == "axis_items")
-        places = [_expression(item.children[0]) if item.children else _constant(None) for item in _trees(items_tree)]
-        items, dot = _sequence(places), False
+        items, dot = _axis_items(items_tree), False
     else:
         items, dot = _sequence([_dot_value(child) for child in _trees(tree) if child.data == "dot_value"]), True
     return lambda line, words: n.Selector(span(line, words), dot, items(line, words))
+
+
+def _axis_items(tree: Tree) -> Make[tuple[n.Expression | None, ...]]:
+    return _sequence([_expression(item.children[0]) if item.children else _constant(None) for item in _trees(tree)])
+
+
+def _address_selector(tree: Tree, keyword: Child) -> Make[n.Selector]:
+    """MintMT's ``(axes, indices)``: a ``[..]`` list inside gives its axes in place; how many items are
+    indices is the keyword's to say (``words.indices``), so it is counted when the line is built."""
+    span, index = _tree_span(tree), _index(keyword)
+    parts: list[Make[tuple[n.Expression | None, ...]]] = []
+    for item in _trees(next(child for child in _trees(tree) if child.data == "address_items")):
+        group = next((child for child in _trees(item) if child.data == "axis_items"), None)
+        if group is not None:
+            parts.append(_axis_items(group))
+        else:
+            parts.append(_sequence([_expression(item.children[0]) if item.children else _constant(None)]))
+
+    def make(line: LogicalLine, words: Vocabulary) -> n.Selector:
+        items = tuple(item for part in parts for item in part(line, words))
+        upper = line.texts[index].upper()
+        name = words.canonical.get(upper, upper)
+        indices = min(words.indices.get(name, 0), max(len(items) - 1, 0))
+        return n.Selector(span(line, words), False, items, indices)
+
+    return make
 
 
 def _dot_value(tree: Tree) -> Make[n.Expression]:
@@ -560,7 +592,7 @@ def _keyword_read(tree: Tree) -> Make[n.Expression]:
 
 def _keyword_ref(token: Child, selector_tree: Tree | None) -> Make[n.KeywordRef]:
     index = _index(token)
-    selector = _selector(selector_tree) if selector_tree is not None else _constant(None)
+    selector = _selector(selector_tree, token) if selector_tree is not None else _constant(None)
     last = _edges(selector_tree)[1] if selector_tree is not None else index
 
     def make(line: LogicalLine, words: Vocabulary) -> n.KeywordRef:
@@ -592,6 +624,7 @@ _STATEMENTS: dict[str, Callable[[Tree], Make[n.Statement]]] = {
     "gosub": _jump,
     "goto": _jump,
     "pause": _pause,
+    "event_": _event,
     "dim": _dim,
     "define": _define,
     "axes": _axes,

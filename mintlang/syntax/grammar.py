@@ -56,10 +56,15 @@ _V3_LOGIC = """?expr: or_expr
 """
 
 
+def grammar_of(dialect: Dialect) -> Dialect:
+    """The dialect whose grammar reads ``dialect``: MintMT's differences are made by its lexer, so v4's."""
+    return Dialect.V3 if dialect is Dialect.V3 else Dialect.V4
+
+
 def grammar_text(dialect: Dialect) -> str:
     grammar = resources.files("mintlang.syntax").joinpath("grammar.lark").read_text(encoding="utf-8")
     assert _V4_LOGIC in grammar, "grammar.lark must state the v4 precedence of AND and OR as _V4_LOGIC"
-    return grammar.replace(_V4_LOGIC, _V3_LOGIC) if dialect is Dialect.V3 else grammar
+    return grammar.replace(_V4_LOGIC, _V3_LOGIC) if grammar_of(dialect) is Dialect.V3 else grammar
 
 
 def build_parser(dialect: Dialect) -> Lark:
@@ -71,7 +76,7 @@ def build_parser(dialect: Dialect) -> Lark:
 
 def tables_file(dialect: Dialect) -> Traversable:
     """Where the package ships the parser of ``dialect`` with its tables computed (``tools/lalr_tables.py``)."""
-    return resources.files("mintlang.syntax").joinpath(f"lalr_{dialect.value}.bin")
+    return resources.files("mintlang.syntax").joinpath(f"lalr_{grammar_of(dialect).value}.bin")
 
 
 def fingerprint(dialect: Dialect) -> str:
@@ -124,10 +129,11 @@ def clear_cache() -> None:
 
 def parse_kinds(kinds: tuple[TokenKind, ...], dialect: Dialect = Dialect.V4) -> ParseResult:
     """The builder for lines with these token kinds, or where the grammar rejects them."""
-    key = (dialect, kinds)
+    grammar = grammar_of(dialect)
+    key = (grammar, kinds)
     result = _results.get(key)
     if result is None:
-        result = _parse(kinds, dialect)
+        result = _parse(kinds, grammar)
         if len(_results) >= _CACHE_LIMIT:
             _results.clear()
         _results[key] = result

@@ -6,7 +6,11 @@ what it means where Mint's grammar depends on position:
 * ``#name`` is a label only as the first non-blank of a line (else ``#`` selects a terminal);
 * ``.`` right after a keyword is the dot parameter (``SPEED.1``), elsewhere it starts a number (``.5``);
 * ``REM`` comments the rest of the line; ``IN3`` is keyword IN with channel 3;
-* a number with a leading zero is binary (``011011``), so ``05`` is invalid.
+* a number with a leading zero is binary (``011011``), so ``05`` is invalid;
+* in MintMT, ``'`` comments the rest of the line, ``End Loop`` (``If``, ``Event``,
+  ``Startup``) is one closing token, a ``Then`` that ends its line opens a block
+  (it lexes as ``DO``), and ``(`` right after a keyword opens its axes
+  (``ADDRESS``: ``MOVER(0) = 10``).
 
 Lexing a line depends only on the line's text, so results are cached per line:
 programs repeat lines (``GO``, ``PAUSE IDLE``, ``RETURN``) and the language
@@ -128,6 +132,20 @@ class LexedLine:
         return tokens
 
 
+# MintMT's two-word closers: "End" and the block's word make one token of the kind the grammar knows.
+_MINTMT_CLOSERS = {"IF": _K.ENDIF, "LOOP": _K.ENDL, "EVENT": _K.ENDEVENT, "STARTUP": _K.ENDSTARTUP}
+_CLOSER_WORD = re.compile(r"[ \t]+([A-Za-z]+)\b")
+
+
+def _mintmt_closer(line: str, end: int, content_end: int) -> tuple[TokenKind, int] | None:
+    """The closer ``End <word>`` makes when ``End`` (ending at ``end``) is followed by a block's word."""
+    found = _CLOSER_WORD.match(line, end, content_end)
+    if found is None:
+        return None
+    kind = _MINTMT_CLOSERS.get(found[1].upper())
+    return (kind, found.end()) if kind is not None else None
+
+
 def _number_issue(text: str, dialect: Dialect) -> str | None:
     """Why a number lexeme is not a valid Mint number, or None when it is."""
     if text[:2] in ("0x", "0X"):
@@ -174,6 +192,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
     previous = _NEWLINE  # kind of the previous token, whitespace included
     dot_number = False  # the previous token is the number of a dot parameter: ".2" in REMOTEIN.2.65
     comment_start = -1
+    mintmt = dialect is Dialect.MINTMT
 
     while position < content_end:
         found = match(line, position, content_end)
@@ -184,6 +203,9 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
             position = found.end()  # type: ignore[union-attr]
             continue
         text = found[0]  # type: ignore[index]
+        if mintmt and text[0] in _SINGLE:  # MintMT has no character constants: ' is its REM
+            comment_start = position
+            break
         if text[0] == "." and (previous in _DOT_OWNERS or dot_number):
             kind, text = _DOT, "."
         elif group == "word":
@@ -192,8 +214,12 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
                 comment_start = position
                 break
             kind = spellings.get(upper) or classify_unlisted(upper)
+            if mintmt and kind is _K.END and (closer := _mintmt_closer(line, found.end(), content_end)):  # type: ignore[union-attr]
+                kind, text = closer[0], line[position : closer[1]]
         elif group == "punct":
             kind = _PUNCTUATION[text]
+            if mintmt and kind is _K.LPAR and kinds and kinds[-1] is _K.KEYWORD:
+                kind = _K.ADDRESS
         elif group == "number":
             if previous is _DOT:  # a dot parameter: digits only, "2.65" is ".2" then ".65"
                 text = _DIGITS_AFTER_DOT.match(line, position, content_end).group()  # type: ignore[union-attr]
@@ -230,6 +256,9 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
         ends.append(position)
         dot_number = kind is _NUMBER and previous is _DOT
         previous = kind
+
+    if mintmt and kinds and kinds[-1] is _K.THEN and _K.IF in kinds:
+        kinds[-1] = _K.DO  # a Then that ends its line opens a block, as DO does in v4
 
     return LexedLine(
         line,

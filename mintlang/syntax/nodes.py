@@ -93,14 +93,21 @@ class ElementRef:
 
 @node
 class Selector:
-    """Which axes or channel a keyword addresses: ``[0,1]`` or ``.1`` / ``.(a+1)``.
+    """Which axes or channel a keyword addresses: ``[0,1]`` or ``.1`` / ``.(a+1)``, in MintMT ``(0,1)``.
 
-    ``items`` holds ``None`` for an empty place (``[0,,2]``, error 2001).
+    ``items`` holds ``None`` for an empty place (``[0,,2]``, error 2001). A MintMT
+    keyword may take indices after its axes, ``CONTOURPARAMETER([0,1],0)``: the
+    last ``indices`` items are those, the others the axes (``axes``).
     """
 
     span: Span
     dot: bool
     items: tuple[Expression | None, ...]
+    indices: int = 0
+
+    @property
+    def axes(self) -> tuple[Expression | None, ...]:
+        return self.items[: len(self.items) - self.indices] if self.indices else self.items
 
 
 @node
@@ -241,10 +248,19 @@ class While:
 
 @node
 class BlockWord:
-    """A statement that is one word: ELSE ENDIF NEXT REPEAT ENDW LOOP ENDL EXIT RETURN END."""
+    """A statement that is one word: ELSE ENDIF NEXT REPEAT ENDW LOOP ENDL EXIT RETURN END, and MintMT's
+    STARTUP, ENDEVENT and ENDSTARTUP (``End Loop`` and ``End If`` are ENDL and ENDIF)."""
 
     span: Span
     word: str  # canonical upper-case keyword
+
+
+@node
+class EventBlock:
+    """MintMT's ``Event NAME``, which opens the handler of that event up to ``End Event``."""
+
+    span: Span
+    name: Name
 
 
 @node
@@ -342,6 +358,7 @@ Statement = (
     | Until
     | While
     | BlockWord
+    | EventBlock
     | Jump
     | Pause
     | Dim

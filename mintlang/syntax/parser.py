@@ -18,12 +18,13 @@ from __future__ import annotations
 from bisect import bisect_right
 from collections.abc import Mapping
 from dataclasses import dataclass
+from difflib import get_close_matches
 from functools import cached_property
 
 from mintlang.allocation import collector_paused, without_collector
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import mint_error
-from mintlang.diagnostics import Diagnostic, LineIndex, Span
+from mintlang.diagnostics import Diagnostic, Edit, Fix, LineIndex, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.syntax import nodes as n
@@ -227,7 +228,7 @@ def _recover(
         span = Span(line.starts[begin], line.ends[end - 1])
         broken = kinds[begin:end]
         statements.append(n.SyntaxError_(span, _opened_block(broken), _closing_word(broken)))
-        issue = _describe(line, begin, end, result)
+        issue = _misspelt_keyword(line, begin, words) or _describe(line, begin, end, result)
         if issue is not None:
             diagnostics.append(issue)
     if not statements and failure.index < len(kinds) and kinds[failure.index] is _K.LABEL:
@@ -242,10 +243,12 @@ def _opened_block(kinds: list[TokenKind]) -> str | None:
         return first.value
     if first is _K.IF and _K.DO in kinds:
         return "IF"
+    if first is _K.EVENT:
+        return "Event"
     return None
 
 
-_CLOSING_WORDS = frozenset({_K.NEXT, _K.ENDIF, _K.ENDW, _K.ENDL, _K.UNTIL})
+_CLOSING_WORDS = frozenset({_K.NEXT, _K.ENDIF, _K.ENDW, _K.ENDL, _K.UNTIL, _K.ENDEVENT, _K.ENDSTARTUP})
 
 
 def _closing_word(kinds: list[TokenKind]) -> str | None:
@@ -285,6 +288,21 @@ def _slice(line: LogicalLine, begin: int, end: int) -> LogicalLine:
 
 
 _error = mint_error
+
+
+def _misspelt_keyword(line: LogicalLine, begin: int, words: Vocabulary) -> Diagnostic | None:
+    """MintMT's ``VECTRR(0,1) = 10, 10``: a name that is no keyword, with a keyword's brackets, is a misspelt
+    keyword when it is close to one (3007, as ``VECTRR[0,1]`` is in v4), not an array with two indices."""
+    kinds = line.kinds
+    if words.dialect is not Dialect.MINTMT or kinds[begin : begin + 2] != [_K.NAME, _K.LPAR]:
+        return None
+    written = line.texts[begin]
+    close = get_close_matches(written.upper(), words.canonical.values(), n=1, cutoff=0.8)
+    if not close:
+        return None
+    span = line.token_span(begin)
+    fix = Fix(f"Replace with {close[0]}", (Edit(span, close[0]),))
+    return _error(3007, span, f"'{written}' is not a keyword; did you mean {close[0]}?", fixes=(fix,))
 
 
 def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) -> Diagnostic | None:

@@ -73,6 +73,13 @@ class TokenKind(StrEnum):
     NOT = "NOT"  # also !
     MOD = "MOD"  # also %
 
+    # MintMT's blocks: "End Event" and "End Startup" are one token each, as are "End If"
+    # (ENDIF) and "End Loop" (ENDL).
+    EVENT = "EVENT"
+    ENDEVENT = "ENDEVENT"
+    STARTUP = "STARTUP"
+    ENDSTARTUP = "ENDSTARTUP"
+
     # Punctuation.
     LPAR = "LPAR"
     RPAR = "RPAR"
@@ -94,6 +101,7 @@ class TokenKind(StrEnum):
     TILDE = "TILDE"
     CIRCUMFLEX = "CIRCUMFLEX"
     DOT = "DOT"
+    ADDRESS = "ADDRESS"  # MintMT: the "(" that opens a keyword's axes or channels, MOVER(0) = 10
 
 
 TRIVIA = frozenset({TokenKind.WS, TokenKind.NEWLINE, TokenKind.COMMENT})
@@ -109,8 +117,15 @@ GRAMMAR_KEYWORDS = frozenset(
     )
 )
 
+# MintMT's block words (mintlang/MINTMT.md).
+MINTMT_BLOCK_WORDS = frozenset({TokenKind.EVENT, TokenKind.ENDEVENT, TokenKind.STARTUP, TokenKind.ENDSTARTUP})
+
 # Every kind a word of letters can lex to.
-WORDS = frozenset({TokenKind.NAME, TokenKind.KEYWORD, TokenKind.FUNCTION, TokenKind.CONSTANT}) | GRAMMAR_KEYWORDS
+WORDS = (
+    frozenset({TokenKind.NAME, TokenKind.KEYWORD, TokenKind.FUNCTION, TokenKind.CONSTANT})
+    | GRAMMAR_KEYWORDS
+    | MINTMT_BLOCK_WORDS
+)
 
 
 class Token(NamedTuple):

@@ -18,6 +18,8 @@ from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, KeywordKind
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
 
+_MINTMT_BLOCK_WORDS = (TokenKind.EVENT, TokenKind.STARTUP)  # their closers are two words: the lexer's
+
 _ROLES: Mapping[str, TokenKind] = {kind.value: kind for kind in GRAMMAR_KEYWORDS}
 
 
@@ -30,6 +32,7 @@ class Vocabulary:
     canonical: Mapping[str, str]  # upper-case spelling -> the keyword's full name
     suffixed: frozenset[str]  # keywords that also take a glued channel number: IN3, OUT1
     constants: frozenset[str]  # upper-case names of predefined constants
+    indices: Mapping[str, int]  # MintMT: how many of a keyword's bracketed items follow its axes
 
     def classify_unlisted(self, upper: str) -> TokenKind:
         """The kind of an upper-case word that is no keyword spelling: constant, IN3-style or a name."""
@@ -80,21 +83,28 @@ def vocabulary(dialect: Dialect, controller: Controller | None = None) -> Vocabu
             words[upper] = kind
             canonical[upper] = name
 
-    if dialect is Dialect.V4:
-        for keyword in db.keywords.values():
+    indices: dict[str, int] = {}
+    if dialect.modern:
+        keywords = db.keywords_of(dialect)
+        for keyword in keywords.values():
             if keyword.kind is KeywordKind.EVENT:
                 continue
             kind = _kind_of(keyword.name, keyword.kind, bool(keyword.parameters))
             add(keyword.name, keyword.name, kind)
             if keyword.channel_suffix:
                 suffixed.add(keyword.name)
-        for keyword in db.keywords.values():
+            if keyword.indices:
+                indices[keyword.name] = len(keyword.indices)
+        for keyword in keywords.values():
             if keyword.kind is not KeywordKind.EVENT:
                 kind = _kind_of(keyword.name, keyword.kind, bool(keyword.parameters))
                 for abbreviation in keyword.abbreviations:
                     if db.lookup(abbreviation, controller) is keyword:  # a shared one goes to one keyword
                         add(abbreviation, keyword.name, kind)
-        constants = frozenset(db.constants)
+        constants = frozenset(db.constants_of(dialect))
+        if dialect is Dialect.MINTMT:
+            for word in _MINTMT_BLOCK_WORDS:
+                add(word.value, word.value, word)
     else:
         for v3 in db.v3_keywords.values():
             v4 = db.keywords.get(v3.name)
@@ -107,4 +117,4 @@ def vocabulary(dialect: Dialect, controller: Controller | None = None) -> Vocabu
         constants = frozenset(db.v3_constants)
     # CAMTABLE's "no table" argument: a reserved word, not a keyword entry (v4 guide line 7958).
     words.setdefault("NULL", TokenKind.CONSTANT)
-    return Vocabulary(dialect, words, canonical, frozenset(suffixed), constants)
+    return Vocabulary(dialect, words, canonical, frozenset(suffixed), constants, indices)

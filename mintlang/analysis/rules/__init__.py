@@ -49,8 +49,8 @@ class Rule:
         return (module.__doc__ or "").strip().splitlines()[0]
 
 
-# Rules that read the keywords' v4 attributes; v3 code is only read to be migrated.
-_V4_ATTRIBUTES = frozenset({Dialect.V4})
+# Rules that read the keywords' v4 (and MintMT) attributes; v3 code is only read to be migrated.
+_V4_ATTRIBUTES = frozenset({Dialect.V4, Dialect.MINTMT})
 
 RULES: tuple[Rule, ...] = (
     Rule("declarations", declarations.check, declarations.each_line),
@@ -66,5 +66,5 @@ RULES: tuple[Rule, ...] = (
     Rule("startup", startup.check),
     Rule("collisions", collisions.check),
     Rule("unused", unused.check),
-    Rule("hints", each_line=hints.each_line, dialects=_V4_ATTRIBUTES),
+    Rule("hints", each_line=hints.each_line, dialects=frozenset({Dialect.V4})),  # MintMT's (0) is not v4's [0]
 )

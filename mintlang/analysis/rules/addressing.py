@@ -17,6 +17,7 @@ from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import KeywordUse, LineScope, Use
 from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.diagnostics import Span
+from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing
 from mintlang.semantic.constants import constant_integer
@@ -82,7 +83,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
 
 
 def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
-    keyword = database().keywords.get(use.keyword.keyword)
+    keyword = database().keywords_of(scope.dialect).get(use.keyword.keyword)
     if keyword is None or (keyword.controllers and scope.controller.controller not in keyword.controllers):
         return  # not a keyword of this controller: 17 (keyword usage) says so, its channels are moot
     if use.keyword.selector is None and use.keyword.channel is None:
@@ -107,7 +108,7 @@ def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:
         return
     if not selector.dot:
         yield from _axis_list(use.unit, selector, scope)
-        yield from _values_for_axes(use, len(selector.items), name)
+        yield from _values_for_axes(use, len(selector.axes), name)
         return
     for item in selector.items[:1]:
         yield from _axis_number(use.unit, item, scope)
@@ -130,12 +131,13 @@ def _values_for_axes(use: KeywordUse, axes: int, name: str) -> Iterator[Finding]
 
 
 def _axis_list(unit: Unit, selector: n.Selector, scope: LineScope) -> Iterator[Finding]:
-    too_many = len(selector.items) > scope.controller.axis_count
+    axes = selector.axes
+    too_many = len(axes) > scope.controller.axis_count
     if too_many:
-        detail = f"{len(selector.items)} axes listed, {scope.controller.title} has {scope.controller.axis_count}"
+        detail = f"{len(axes)} axes listed, {scope.controller.title} has {scope.controller.axis_count}"
         yield Finding(unit, mint_error(2017, selector.span, detail))
     seen: set[int] = set()
-    for item in selector.items:
+    for item in axes:
         if item is None:
             yield Finding(unit, mint_error(2001, selector.span, "an axis number is missing between the commas"))
             continue
@@ -162,7 +164,7 @@ def _axis_number(unit: Unit, item: n.Expression | None, scope: LineScope) -> Ite
 def _channel(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
     ref = use.keyword
     selector = ref.selector
-    if selector is not None and not selector.dot:
+    if selector is not None and not selector.dot and scope.dialect is not Dialect.MINTMT:  # MintMT: OUTX(0)
         detail = f"{ref.keyword} addresses a channel: write {ref.keyword}.{_first_text(selector)}, not brackets"
         yield Finding(use.unit, mint_error(2003, selector.span, detail))
         return

@@ -17,7 +17,6 @@ from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.rules.v3_keywords import successor
 from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.diagnostics import Edit, Fix, Span
-from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, Unit
@@ -27,7 +26,7 @@ from mintlang.syntax.tokens import TokenKind
 
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
-    if model.program.dialect is Dialect.V4:
+    if model.program.dialect.modern:
         yield from _undeclared_variables(model)
     yield from _labels(model, _jump_words(facts))
     yield from _macros(model)

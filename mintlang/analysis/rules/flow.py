@@ -17,6 +17,10 @@
 
 An endless loop (LOOP, WHILE 1, REPEAT .. UNTIL 0) that no EXIT or GOTO leaves
 never falls through: a main program ending in one needs no END.
+
+MintMT's ``Event`` and ``Startup`` blocks are entered by the controller, never by
+the code around them: each is followed as an entry point of its own, and the
+flow around it goes on after it as if it were not there.
 """
 
 from __future__ import annotations
@@ -24,10 +28,12 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, replace
+from typing import NamedTuple
 
 from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Severity, Span
+from mintlang.dialect import Dialect
 from mintlang.semantic.blocks import Block
 from mintlang.semantic.constants import constant_value
 from mintlang.semantic.events import event_of
@@ -41,7 +47,8 @@ _TERMINATORS = frozenset({"END", "RETURN", "EXIT"})
 _RECEIVERS = frozenset({"NEXT", "ENDW", "ENDL"})  # reached from elsewhere in their block
 _LAST_WORDS = frozenset({"END", "RETURN"})
 # What changes the flow; a line of other statements only runs, when it can be reached at all.
-_FLOW_STATEMENTS = frozenset({n.BlockWord, n.Jump, n.IfDo, n.IfThen, n.While, n.For, n.Until})
+_FLOW_STATEMENTS = frozenset({n.BlockWord, n.Jump, n.IfDo, n.IfThen, n.While, n.For, n.Until, n.EventBlock})
+_SEPARATE_BLOCKS = {"STARTUP": "ENDSTARTUP"}  # MintMT blocks besides Event .. End Event
 
 
 def _ends_flow(statement: n.Statement) -> bool:
@@ -157,6 +164,17 @@ class _If:
     through_then: bool | None = None  # the THEN branch runs to its end; None before the ELSE
 
 
+class _State(NamedTuple):
+    """Where the flow stands: kept around a MintMT Event or Startup block, which it does not enter."""
+
+    reachable: bool
+    reported: bool
+    running: bool
+    after_endless_loop: bool
+    subroutine: n.Name | None
+    falling_from_main: bool
+
+
 class _Flow:
     """Follows one file top to bottom, as the controller runs it when nothing jumps."""
 
@@ -174,6 +192,7 @@ class _Flow:
         self.falling_from_main = False
         self.loops: list[_Loop] = []
         self.ifs: list[_If] = []
+        self.around: _State | None = None  # the flow outside the MintMT Event or Startup block being followed
         self.line = n.PlacedLine(0, 0, n.LineSyntax("", Span(0, 0), None, ()), "")  # the line being followed
         self.found: list[Finding] = []
 
@@ -222,8 +241,39 @@ class _Flow:
             self.falling_from_main = False
         self.subroutine, self.reachable, self.reported, self.running = label, True, False, False
 
+    def _separate_block(self, statement: n.Statement) -> bool:
+        """Enter or leave a MintMT Event or Startup block: whether ``statement`` is one's first or last word."""
+        word = statement.word if type(statement) is n.BlockWord else None  # type: ignore[union-attr]
+        if type(statement) is n.EventBlock or word in _SEPARATE_BLOCKS:
+            self._end_dead_run()
+            self.around = self._state()
+            self._restore(_State(True, False, False, False, None, False))
+            return True
+        if word in ("ENDEVENT", *_SEPARATE_BLOCKS.values()) and self.around is not None:
+            self._end_dead_run()
+            self._restore(self.around)
+            self.around = None
+            return True
+        return False
+
+    def _state(self) -> _State:
+        return _State(
+            self.reachable,
+            self.reported,
+            self.running,
+            self.after_endless_loop,
+            self.subroutine,
+            self.falling_from_main,
+        )
+
+    def _restore(self, state: _State) -> None:
+        self.reachable, self.reported, self.running, self.after_endless_loop = state[:4]
+        self.subroutine, self.falling_from_main = state.subroutine, state.falling_from_main
+
     def _statement(self, statement: n.Statement) -> None:
         kind = type(statement)
+        if self.dialect is Dialect.MINTMT and self._separate_block(statement):
+            return
         if kind not in _FLOW_STATEMENTS and self.reachable:  # runs, and changes nothing
             self._dead(statement)
             self.reported, self.running, self.after_endless_loop = False, True, False

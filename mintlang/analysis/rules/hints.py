@@ -22,7 +22,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if selector is None or selector.dot or len(selector.items) != 1:
             continue
         item = selector.items[0]
-        keyword = db.keywords.get(use.keyword.keyword)
+        keyword = db.keywords_of(scope.dialect).get(use.keyword.keyword)
         if keyword is None or keyword.addressing is not Addressing.AXIS:
             continue
         if isinstance(item, n.Number | n.VariableRef):

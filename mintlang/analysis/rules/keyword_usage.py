@@ -19,6 +19,7 @@ from functools import cache
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import LineScope, Use
 from mintlang.controllers import profile
+from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, KeywordKind
 from mintlang.semantic.units import Unit
@@ -39,7 +40,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if ref.keyword in _BUFFERS and isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "RUN":
             continue
         has_arguments = isinstance(statement, n.KeywordStatement) and bool(statement.arguments)
-        verdict = _verdict(ref.keyword, ref.spelling.upper(), controller, use.use, has_arguments)
+        verdict = _verdict(ref.keyword, ref.spelling.upper(), controller, use.use, has_arguments, dialect=scope.dialect)
         if verdict is not None:
             code, detail = verdict
             yield Finding(unit, mint_error(code, ref.spelling_span, detail))
@@ -51,10 +52,12 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
 
 
 @cache
-def _verdict(name: str, spelling: str, controller: Controller, use: Use, has_arguments: bool) -> tuple[int, str] | None:
+def _verdict(
+    name: str, spelling: str, controller: Controller, use: Use, has_arguments: bool, *, dialect: Dialect
+) -> tuple[int, str] | None:
     """What is wrong with this use of a keyword, if anything (the same for every such use: cached)."""
     db = database()
-    keyword = db.keywords.get(name)
+    keyword = db.keywords_of(dialect).get(name)
     if keyword is None:
         if db.rename_of(spelling) is not None:
             return None  # an old v3 keyword: the v3-keyword rule names its replacement

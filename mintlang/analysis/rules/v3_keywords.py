@@ -76,11 +76,11 @@ def is_v3_word(word: str) -> bool:
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
-    if scope.dialect is not Dialect.V4:
+    if not scope.dialect.modern:
         return
-    db = database()
+    keywords = database().keywords_of(scope.dialect)
     for use in scope.facts.keyword_uses:
-        if use.keyword.keyword in db.keywords:
+        if use.keyword.keyword in keywords:
             continue
         span = use.keyword.spelling_span
         found = successor(use.keyword.spelling, scope.controller)

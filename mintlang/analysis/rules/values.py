@@ -22,7 +22,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
     for use in scope.facts.keyword_uses:
         if use.use is not Use.WRITE or not isinstance(use.statement, n.KeywordStatement):
             continue
-        keyword = db.keywords.get(use.keyword.keyword)
+        keyword = db.keywords_of(dialect).get(use.keyword.keyword)
         attributes = keyword.attributes_for(controller) if keyword else None
         if attributes is None or attributes.scaled or attributes.range is None:
             continue

@@ -1,0 +1,90 @@
+"""How MintMT is written, read into the one syntax tree all dialects share (mintlang/MINTMT.md)."""
+
+from __future__ import annotations
+
+import mintlang
+from mintlang.dialect import Dialect
+from mintlang.semantic.units import Unit
+from mintlang.syntax import nodes as n
+from mintlang.syntax.lexer import lex
+from mintlang.syntax.tokens import TokenKind as K
+
+
+def _statements(source: str) -> list[n.Statement]:
+    document = mintlang.parse(source, dialect="mintmt")
+    assert document.diagnostics == ()
+    return [statement for line in document.placed for statement in line.syntax.statements]
+
+
+def _kinds(line: str) -> list[K]:
+    ((_, lexed),) = lex(line, Dialect.MINTMT).lines
+    return list(lexed.kinds)
+
+
+def test_an_apostrophe_comments_the_rest_of_the_line_also_after_code() -> None:
+    ((_, whole),) = lex("' Load a move\n", Dialect.MINTMT).lines
+    ((_, after),) = lex("GO(0)   ' Trigger the motion\n", Dialect.MINTMT).lines
+    assert (whole.kinds, whole.comment_start) == ((), 0)
+    assert after.kinds == (K.KEYWORD, K.ADDRESS, K.NUMBER, K.RPAR) and after.comment_start == 8
+
+
+def test_v4_keeps_its_character_constants() -> None:
+    ((_, lexed),) = lex("a = 'A'\n", Dialect.V4).lines
+    assert lexed.kinds == (K.NAME, K.EQUAL, K.CHAR)
+
+
+def test_two_word_closers_are_one_token_in_any_case_and_spacing() -> None:
+    assert _kinds("End Loop") == [K.ENDL]
+    assert _kinds("end   if") == [K.ENDIF]
+    assert _kinds("EndIf") == [K.ENDIF]
+    assert _kinds("End Event") == [K.ENDEVENT]
+    assert _kinds("END STARTUP") == [K.ENDSTARTUP]
+    assert _kinds("End") == [K.END]
+
+
+def test_a_then_ending_its_line_opens_a_block_and_one_followed_by_code_does_not() -> None:
+    block, single = _statements("If a = 1 Then ' comment\nIf a = 2 Then b = 3\n")
+    assert type(block) is n.IfDo
+    assert type(single) is n.IfThen and len(single.body) == 1
+
+
+def test_round_brackets_address_axes_with_a_square_list_inside_and_indices_after() -> None:
+    (size, parameter, out, go) = _statements(
+        "MOVEBUFFERSIZE([0,1]) = 4;\nCONTOURPARAMETER([0,1],0) = 10;\nMOVEOUT(0,2) = 7\nGO(0,1)\n"
+    )
+    values = [[item.value for item in s.keyword.selector.items] for s in (size, parameter, out, go)]
+    assert values == [[0, 1], [0, 1, 0], [0, 2], [0, 1]]
+    axes = [[item.value for item in s.keyword.selector.axes] for s in (size, parameter, out, go)]
+    assert axes == [[0, 1], [0, 1], [0], [0, 1]]
+    assert size.fill
+
+
+def test_keywords_read_in_expressions_with_round_brackets_and_functions_keep_theirs() -> None:
+    (statement,) = _statements("Pause MOVEBUFFERID(0) = 2\n")
+    condition = statement.condition
+    assert condition.left.keyword == "MOVEBUFFERID" and condition.left.selector.items[0].value == 0
+    (comms,) = _statements("comms (3) = 0\n")
+    assert type(comms) is n.FunctionStatement and comms.call.function == "COMMS"
+
+
+def test_event_and_startup_blocks_match_their_closers() -> None:
+    source = "Event MOVEBUFFERLOW\n  GO(0)\nEnd Event\nStartup\n  MOVEBUFFERSIZE(0) = 20\nEnd Startup\n"
+    analysis = mintlang.check_application(source, dialect="mintmt")
+    assert [(block.kind.value, block.opener.line, block.closer.line) for block in analysis.model.structures[Unit.PROGRAM].blocks] == [
+        ("Event", 1, 3),
+        ("Startup", 4, 6),
+    ]
+    assert analysis.program == ()
+
+
+def test_a_closer_without_its_block_is_a_syntax_error() -> None:
+    analysis = mintlang.check_application("End Event\nStartup\n", dialect="mintmt")
+    assert [(d.code, d.message) for d in analysis.program] == [
+        ("E2003", "Syntax error: End Event without Event"),
+        ("E2003", "Syntax error: this Startup block is never closed with End Startup"),
+    ]
+
+
+def test_code_after_an_endless_main_loop_in_an_event_block_is_reachable() -> None:
+    source = "Loop\n  GO(0)\nEnd Loop\nEvent Comms1\n  JOG(0) = 1\nEnd Event\n"
+    assert mintlang.check_application(source, dialect="mintmt").program == ()

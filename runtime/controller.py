@@ -19,6 +19,7 @@ from mintlang.runtime.clock import Clock
 from mintlang.runtime.comms.packets import HostEndpoint
 from mintlang.runtime.comms.server import HostPortServer
 from mintlang.runtime.dialects import semantics
+from mintlang.runtime.dialects.mintmt import triggering
 from mintlang.runtime.dialects.v3 import machine as v3_machine
 from mintlang.runtime.events import MINTDRIVE, NEXTMOVE, EventClass, Events
 from mintlang.runtime.hardware import simulated
@@ -110,6 +111,8 @@ def build_controller(
         part.register(table)
     for extend in EXTENSIONS:
         extend(table, motion)
+    if meaning.dialect is Dialect.MINTMT:
+        triggering.install(table, motion)
     motion.input_active = io.is_active
     motion.index_pulses = {pulse.axis: pulse for pulse in scenario.index_pulses}
     layer = (

@@ -11,7 +11,7 @@ interpreter can retry the whole statement on a later tick.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller
@@ -56,6 +56,10 @@ class KeywordTable:
         if name in self._entries:
             raise ValueError(f"keyword {name} registered twice")
         self._entries[name] = KeywordAccess(read, write, command, array_command)
+
+    def replace(self, name: str, *, write: Writer) -> None:
+        """Give a registered keyword another writer: a dialect's layer wrapping the v4 one."""
+        self._entries[name] = replace(self._entries[name], write=write)
 
     def get(self, name: str) -> KeywordAccess | None:
         return self._entries.get(name)

@@ -1,16 +1,14 @@
-"""The dialects ``mint-run`` runs: Mint v4 (the reference) and Mint v3 (the older guide's language).
-
-MintMT is read and checked (``mintlang/MINTMT.md``) but not simulated yet.
-"""
+"""The dialects ``mint-run`` runs: Mint v4 (the reference), Mint v3 (the older guide's language) and MintMT."""
 
 from __future__ import annotations
 
 from mintlang.dialect import Dialect
+from mintlang.runtime.dialects.mintmt import MINTMT
 from mintlang.runtime.dialects.v3.semantics import V3
 from mintlang.runtime.dialects.v4 import V4
 from mintlang.runtime.semantics import Semantics
 
-_SEMANTICS = {Dialect.V4: V4, Dialect.V3: V3}
+_SEMANTICS = {Dialect.V4: V4, Dialect.V3: V3, Dialect.MINTMT: MINTMT}
 SIMULATED = tuple(_SEMANTICS)
 
 

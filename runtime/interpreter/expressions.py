@@ -146,7 +146,7 @@ class ExpressionCompiler:
             return (lambda: glued,)
         selector = reference.selector
         if selector is not None:
-            return tuple(self.compile(item) if item is not None else _missing for item in selector.items)
+            return tuple(self.compile(item) if item is not None else _missing for item in selector.axes)
         return True if reference.keyword in self.semantics.axis_keywords else None
 
     def call(self, call: n.Call) -> Evaluate:
@@ -196,9 +196,9 @@ def _and_of_reads(read: Reader, channels: Iterable[int], clock: Clock) -> float:
 def _constants(reference: n.KeywordRef) -> tuple[int, ...] | None:
     """The axes of a selector written with literal numbers only, such as ``[0,1]``."""
     selector = reference.selector
-    if selector is None or not all(type(item) is n.Number for item in selector.items):
+    if selector is None or not all(type(item) is n.Number for item in selector.axes):
         return None
-    return tuple(int(item.value) for item in selector.items)  # type: ignore[union-attr]
+    return tuple(int(item.value) for item in selector.axes)  # type: ignore[union-attr]
 
 
 def _missing() -> float:

@@ -6,6 +6,12 @@ Labels stay per file: the two files cannot call each other's subroutines,
 event handlers included. ``END`` in
 the configuration, or running off its end, continues with the program; in the
 program it ends the run.
+
+MintMT's blocks are entered by the controller, never by the code around them
+(mintlang/MINTMT.md, MT-7): the program starts with its ``Startup`` block, if
+it has one, and goes on at its first line, stepping over the ``Startup`` and
+``Event`` blocks it meets; ``Event Comms1`` is the handler of that event, as
+``#COMMS1`` is in v4, and ``End Event`` returns from it.
 """
 
 from __future__ import annotations
@@ -21,7 +27,7 @@ from mintlang.runtime.interpreter.vm import Interpreter, Operation, Site, StopRe
 from mintlang.runtime.keywords import KeywordTable
 from mintlang.runtime.semantics import Semantics
 from mintlang.runtime.terminal import Terminal
-from mintlang.semantic.blocks import Block, Place
+from mintlang.semantic.blocks import Block, BlockKind, Place
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -47,14 +53,18 @@ def link(
     expressions = ExpressionCompiler(vm, table, names, semantics)
     handlers: dict[Unit, Mapping[str, int]] = {}
     units = list(model.documents())
+    layouts: list[tuple[dict[Place, int], dict[str, int], int, int]] = []  # positions, labels, start, end
     start = 0
-    for position, (unit, document) in enumerate(units):
+    for _, document in units:
         positions, labels, size = _layout(document, start)
-        end_of_unit = start + size
-        last_unit = position == len(units) - 1
+        layouts.append((positions, labels, start, start + size))
+        start += size
+    program_positions, _, program_start, _ = layouts[-1]
+    entry = _entry(model.structures[Unit.PROGRAM].blocks, program_positions, program_start)
+    for (unit, document), (positions, labels, start, end_of_unit) in zip(units, layouts, strict=True):
         blocks = _blocks_by_place(model.structures[unit].blocks)
-        on_end = _end_of_program(vm) if last_unit else _continue_with_program(vm, end_of_unit)
-        layout = FileLayout(positions, blocks, labels, end_of_unit, on_end)
+        on_end = _end_of_program(vm) if unit is Unit.PROGRAM else _continue_with_program(vm, entry)
+        layout = FileLayout(positions, blocks, labels, start, end_of_unit, on_end)
         compiler = StatementCompiler(vm, table, terminal, expressions, layout)
         if unit is Unit.PROGRAM:
             vm.program_start = start
@@ -65,7 +75,8 @@ def link(
                 pc = len(vm.operations)
                 vm.operations.append(_compiled(compiler, statement, Place(line.number, index), pc))
                 vm.sites.append(Site(unit.value, line.number, text[statement.span.start : statement.span.end].strip()))
-        start = end_of_unit
+    if program_start == 0:  # no configuration file: the program runs first, from its entry
+        vm.pc = entry
     return Linked(handlers.get(Unit.PROGRAM, {}), handlers.get(Unit.CONFIGURATION, {}), names)
 
 
@@ -92,7 +103,8 @@ def _raising(problem: MintError | NotSimulated) -> Operation:
 
 
 def _layout(document: Document, start: int) -> tuple[dict[Place, int], dict[str, int], int]:
-    """The pc of every statement (by its place: equal lines share their syntax) and label of one file."""
+    """The pc of every statement (by its place: equal lines share their syntax) and label of one file;
+    a MintMT ``Event`` block's handler is filed as the label of its event (``COMMS1``)."""
     positions: dict[Place, int] = {}
     labels: dict[str, int] = {}
     pc = start
@@ -100,10 +112,18 @@ def _layout(document: Document, start: int) -> tuple[dict[Place, int], dict[str,
         syntax = line.syntax
         if syntax.label is not None:
             labels.setdefault(syntax.label.identity, pc)
-        for index in range(len(n.flatten_statements(syntax.statements))):
+        for index, statement in enumerate(n.flatten_statements(syntax.statements)):
             positions[Place(line.number, index)] = pc
+            if type(statement) is n.EventBlock:
+                labels.setdefault(statement.name.text.upper(), pc + 1)
             pc += 1
     return positions, labels, pc - start
+
+
+def _entry(blocks: tuple[Block, ...], positions: Mapping[Place, int], program_start: int) -> int:
+    """Where the program begins: inside its MintMT ``Startup`` block if it has one, else at its first line."""
+    startup = next((block for block in blocks if block.kind is BlockKind.STARTUP), None)
+    return positions[startup.opener] + 1 if startup is not None else program_start
 
 
 def _blocks_by_place(blocks: tuple[Block, ...]) -> dict[Place, Block]:

@@ -45,6 +45,7 @@ class FileLayout:
     positions: Mapping[Place, int]  # the pc of the statement at each place
     blocks: Mapping[Place, Block]  # the block of each opener, middle and closer
     labels: Mapping[str, int]  # label identity -> pc
+    start: int  # the pc of the file's first operation
     end: int  # the pc after the file's last operation
     on_end: Callable[[], None]  # what END does in this file
 
@@ -68,6 +69,7 @@ class StatementCompiler:
         self.positions = layout.positions
         self.blocks = layout.blocks
         self.labels = layout.labels
+        self.start_of_unit = layout.start
         self.end_of_unit = layout.end
         self.on_end = layout.on_end
         self.place = Place(0, 0)  # of the statement being compiled
@@ -379,6 +381,32 @@ class StatementCompiler:
             return self.on_end
         raise NotSimulated(word, "statement")
 
+    def event_block(self, statement: n.EventBlock, pc: int) -> Operation:
+        return self._step_over(self._opened(), pc)
+
+    def _step_over(self, block: Block, pc: int) -> Operation:
+        """A MintMT Event or Startup block met by the code around it: the controller alone enters it."""
+        after = self._after(block.closer)
+        vm = self.vm
+
+        def step_over() -> None:
+            vm.pc = after
+
+        return step_over
+
+    def _end_event(self, block: Block, pc: int) -> Operation:
+        return self.vm.return_
+
+    def _end_startup(self, block: Block, pc: int) -> Operation:
+        """The Startup block is done: the program runs from its first line."""
+        start = self.start_of_unit
+        vm = self.vm
+
+        def begin() -> None:
+            vm.pc = start
+
+        return begin
+
     def _endif(self, block: Block, pc: int) -> Operation:
         opener = self.positions[block.opener]
         vm = self.vm
@@ -676,6 +704,9 @@ _BLOCK_WORDS: dict[str, Callable[[StatementCompiler, Block, int], Operation]] = 
     "LOOP": StatementCompiler._open_loop,
     "ENDL": StatementCompiler._endl,
     "ENDW": StatementCompiler._endw,
+    "STARTUP": StatementCompiler._step_over,
+    "ENDSTARTUP": StatementCompiler._end_startup,
+    "ENDEVENT": StatementCompiler._end_event,
 }
 
 _DISPATCH: dict[type, Callable[[StatementCompiler, n.Statement, int], Operation]] = {
@@ -689,6 +720,7 @@ _DISPATCH: dict[type, Callable[[StatementCompiler, n.Statement, int], Operation]
     n.Until: StatementCompiler.until,  # type: ignore[dict-item]
     n.While: StatementCompiler.while_,  # type: ignore[dict-item]
     n.BlockWord: StatementCompiler.block_word,  # type: ignore[dict-item]
+    n.EventBlock: StatementCompiler.event_block,  # type: ignore[dict-item]
     n.Jump: StatementCompiler.jump,  # type: ignore[dict-item]
     n.Pause: StatementCompiler.pause,  # type: ignore[dict-item]
     n.Dim: StatementCompiler.dim,  # type: ignore[dict-item]

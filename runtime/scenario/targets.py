@@ -44,7 +44,8 @@ def target(written: str, dialect: Dialect = Dialect.V4) -> Target:
     suffix = "" if indexes is None else "(" + ",".join(str(int(i)) for i in indexes.split(",")) + ")"
     if dialect is Dialect.V3:
         return _v3_target(found["name"], name, dot, suffix)
-    keyword = database().lookup(name)
+    db = database()
+    keyword = (db.mintmt_keywords.get(name) if dialect is Dialect.MINTMT else None) or db.lookup(name)
     if keyword is None:
         return _variable(found["name"], name, dot, suffix)
     if keyword.kind is not KeywordKind.PARAMETER:

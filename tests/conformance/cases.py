@@ -14,7 +14,11 @@ from mintlang.runtime.hardware import machine
 from mintlang.runtime.scenario import Scenario, load_scenario
 
 CONFORMANCE = Path(__file__).parent
-BEHAVIOUR = CONFORMANCE.parents[1] / "runtime" / "BEHAVIOUR.md"
+# Where each choice a case may rest on is recorded: the runtime's, and MintMT's (MT-n).
+CHOICE_DOCUMENTS = (
+    CONFORMANCE.parents[1] / "runtime" / "BEHAVIOUR.md",
+    CONFORMANCE.parents[1] / "mintlang" / "MINTMT.md",
+)
 
 _HEADER = re.compile(r"REM\s+(conformance|manual|choice|controller|dialect|until-ms):\s*(.*?)\s*$", re.IGNORECASE)
 _CITATION = re.compile(r"(000|001|002|004):(\d+)(?:-(\d+))?")

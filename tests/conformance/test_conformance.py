@@ -15,7 +15,7 @@ from mintlang.dialect import Dialect
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import expectations_pass
 from mintlang.runtime.simulation import Limits
-from tests.conformance.cases import BEHAVIOUR, CHOICE, CONFORMANCE, Case, all_cases, read_case, reindented
+from tests.conformance.cases import CHOICE, CHOICE_DOCUMENTS, CONFORMANCE, Case, all_cases, read_case, reindented
 from tests.runtime.running import observable
 
 UNBOUNDED_MS = 600_000  # a case that has not ended after ten simulated minutes is stuck
@@ -75,8 +75,8 @@ def test_the_v3_folder_holds_at_least_forty_mint_v3_cases() -> None:
     assert all(any(citation.startswith("001:") for citation in case.citations) for case in v3), "v3 cases cite 001"
 
 
-def test_every_choice_a_case_rests_on_is_recorded_in_the_behaviour_document() -> None:
-    recorded = set(CHOICE.findall(BEHAVIOUR.read_text(encoding="utf-8")))
+def test_every_choice_a_case_rests_on_is_recorded_in_a_choice_document() -> None:
+    recorded = {choice for path in CHOICE_DOCUMENTS for choice in CHOICE.findall(path.read_text(encoding="utf-8"))}
     missing = {
         f"{case.name}: {choice}"
         for case in map(read_case, all_cases())

@@ -70,7 +70,10 @@ def test_keywords_read_in_expressions_with_round_brackets_and_functions_keep_the
 def test_event_and_startup_blocks_match_their_closers() -> None:
     source = "Event MOVEBUFFERLOW\n  GO(0)\nEnd Event\nStartup\n  MOVEBUFFERSIZE(0) = 20\nEnd Startup\n"
     analysis = mintlang.check_application(source, dialect="mintmt")
-    assert [(block.kind.value, block.opener.line, block.closer.line) for block in analysis.model.structures[Unit.PROGRAM].blocks] == [
+    assert [
+        (block.kind.value, block.opener.line, block.closer.line)
+        for block in analysis.model.structures[Unit.PROGRAM].blocks
+    ] == [
         ("Event", 1, 3),
         ("Startup", 4, 6),
     ]

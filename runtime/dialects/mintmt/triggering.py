@@ -1,0 +1,52 @@
+"""TRIGGERMODE: MintMT's automatic triggering, a move starting as soon as it is loaded (004:56-61).
+
+The note shows one value, 0, which enables it; every axis starts without it
+(moves wait for ``GO``, as in v4) and any other value turns it off again
+(mintlang/MINTMT.md, MT-10). A move loaded on an axis with automatic triggering
+is started as ``GO`` on the axes it was written for would start it.
+"""
+
+from __future__ import annotations
+
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer
+from mintlang.runtime.motion.commands import Motion
+
+AUTOMATIC = 0.0
+WAIT_FOR_GO = 1.0  # the power-up value: any value but 0 (MT-10)
+LOADING = ("MOVEA", "MOVER", "VECTORA", "VECTORR", "CIRCLEA", "CIRCLER", "INCA", "INCR", "OFFSET")
+_OUT_OF_RANGE = 3  # MML error 3, "Data specified out of range" (000:18518)
+
+
+def install(table: KeywordTable, motion: Motion) -> None:
+    """TRIGGERMODE, and every move-loading keyword of ``LOADING`` the table has, triggering where it is on."""
+    modes = dict.fromkeys(range(len(motion.axes)), WAIT_FOR_GO)
+
+    def read(channel: int | None) -> float:
+        return modes[motion.axis(channel).number]
+
+    def write(channels: Channels | None, values: Values) -> bool:
+        for axis, value in zip(motion.addressed(channels), values, strict=False):
+            if value is not None:
+                if value != int(value):
+                    raise MintError(_OUT_OF_RANGE, axis.number, "TRIGGERMODE takes a whole number")
+                modes[axis.number] = value
+        return False
+
+    table.register("TRIGGERMODE", read=read, write=write)
+    for name in LOADING:
+        access = table.get(name)
+        if access is not None and access.write is not None:
+            table.replace(name, write=_triggering(access.write, motion, modes))
+
+
+def _triggering(load: Writer, motion: Motion, modes: dict[int, float]) -> Writer:
+    def write(channels: Channels | None, values: Values) -> bool:
+        if load(channels, values):
+            return True  # waiting for room in the buffer: nothing was loaded yet
+        automatic = [axis.number for axis in motion.addressed(channels) if modes[axis.number] == AUTOMATIC]
+        if automatic:
+            motion.go(tuple(automatic), ())
+        return False
+
+    return write

@@ -1,0 +1,26 @@
+"""``mint-run --dialect mintmt``: what runs, and what says plainly that it does not (mintlang/MINTMT.md)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.runtime.invoking import mint_run
+
+CORPUS = Path(__file__).parents[1] / "corpus" / "mintmt"
+
+
+def _run(*arguments: str) -> tuple[int, str]:
+    result = mint_run("--dialect", "mintmt", "--drives", "enabled", *arguments)
+    return result.exit_code, result.output
+
+
+def test_a_listing_of_the_move_buffer_note_runs_to_its_end() -> None:
+    status, output = _run(str(CORPUS / "an00117_l0080_buffer_large_enough.mnt"))
+    assert status == 0
+    assert "end after 0 ms at program line 7: GO(0)" in output
+
+
+def test_a_keyword_not_simulated_stops_the_run_at_its_line_saying_so() -> None:
+    status, output = _run(str(CORPUS / "an00117_l0141_move_ids.mnt"))
+    assert status != 0
+    assert "at program line 4: MOVEBUFFERID(0) = 1 — MOVEBUFFERID (write) is not simulated by mint-run" in output

@@ -27,6 +27,8 @@ Writer = Callable[[Channels | None, Values], bool]
 Command = Callable[[Channels | None, tuple[float, ...]], bool]
 ArrayArgument = float | list[float]  # an array named bare arrives as its storage, by reference
 ArrayCommand = Callable[[tuple[ArrayArgument, ...]], bool]  # a function-style command taking arrays (CAMTABLE)
+# A MintMT keyword with indices after its axes, CONTOURPARAMETER([0,1],0) = 10: channels, indices, values.
+IndexedWriter = Callable[[Channels | None, tuple[int, ...], Values], bool]
 
 
 @dataclass(frozen=True, slots=True)
@@ -35,6 +37,7 @@ class KeywordAccess:
     write: Writer | None = None
     command: Command | None = None
     array_command: ArrayCommand | None = None
+    indexed_write: IndexedWriter | None = None
 
 
 class KeywordTable:
@@ -52,10 +55,11 @@ class KeywordTable:
         write: Writer | None = None,
         command: Command | None = None,
         array_command: ArrayCommand | None = None,
+        indexed_write: IndexedWriter | None = None,
     ) -> None:
         if name in self._entries:
             raise ValueError(f"keyword {name} registered twice")
-        self._entries[name] = KeywordAccess(read, write, command, array_command)
+        self._entries[name] = KeywordAccess(read, write, command, array_command, indexed_write)
 
     def replace(self, name: str, *, write: Writer) -> None:
         """Give a registered keyword another writer: a dialect's layer wrapping the v4 one."""

@@ -17,7 +17,7 @@ from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter.arrays import array_problem
 from mintlang.runtime.interpreter.expressions import Evaluate, ExpressionCompiler
 from mintlang.runtime.interpreter.vm import Interpreter, Loop, Operation, Recovery
-from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordTable
+from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordAccess, KeywordTable, Values
 from mintlang.runtime.printing import format_bin, format_chr, format_hex
 from mintlang.runtime.ranges import check_range, table_bounds
 from mintlang.runtime.terminal import Terminal
@@ -175,6 +175,8 @@ class StatementCompiler:
         if printer is not None and statement.values is None:
             return self._printing_keyword(statement, printer)
         access = self.table.in_program(reference.keyword)
+        if reference.selector is not None and reference.selector.indices:
+            return self._indexed_write(statement, access)
         channels = self._channels(reference)
         vm = self.vm
         clock = vm.clock
@@ -189,9 +191,7 @@ class StatementCompiler:
 
             def write_values() -> bool:
                 addressed = channels()
-                evaluated = tuple(value() if value is not None else None for value in values)
-                if addressed is not None and fill and len(evaluated) < len(addressed):
-                    evaluated += (evaluated[-1],) * (len(addressed) - len(evaluated))
+                evaluated = _evaluated(values, fill, addressed)
                 clock.horizon = NEVER
                 if write(addressed, evaluated):
                     vm.wake_at = clock.horizon  # a full buffer frees when the running move ends
@@ -218,6 +218,25 @@ class StatementCompiler:
             return False
 
         return run_command
+
+    def _indexed_write(self, statement: n.KeywordStatement, access: KeywordAccess | None) -> Operation:
+        """MintMT's ``CONTOURPARAMETER([0,1],0) = 10;``: the indices after the axes go to the keyword too."""
+        reference = statement.keyword
+        if access is None or access.indexed_write is None or statement.values is None:
+            raise NotSimulated(reference.keyword, "write with an index")
+        write = access.indexed_write
+        channels = self._channels(reference)
+        selector = reference.selector
+        assert selector is not None, "only a keyword with a selector has indices"
+        indices = tuple(self.expressions.compile(item) for item in selector.items[-selector.indices :] if item)
+        values = tuple(self.expressions.compile(value) if value is not None else None for value in statement.values)
+        fill = statement.fill
+
+        def write_indexed() -> bool:
+            addressed = channels()
+            return write(addressed, tuple(int(index()) for index in indices), _evaluated(values, fill, addressed))
+
+        return write_indexed
 
     def _wait(self, statement: n.KeywordStatement, pc: int) -> Operation:
         if not statement.values or statement.values[0] is None:
@@ -694,6 +713,14 @@ class StatementCompiler:
 
 def _nothing() -> None:
     return None
+
+
+def _evaluated(values: tuple[Evaluate | None, ...], fill: bool, addressed: tuple[int, ...] | None) -> Values:
+    """The values written, a skipped place as None; a trailing ``;`` repeats the last for every axis left."""
+    evaluated = tuple(value() if value is not None else None for value in values)
+    if addressed is not None and fill and len(evaluated) < len(addressed):
+        evaluated += (evaluated[-1],) * (len(addressed) - len(evaluated))
+    return evaluated
 
 
 _BLOCK_WORDS: dict[str, Callable[[StatementCompiler, Block, int], Operation]] = {

@@ -19,7 +19,7 @@ from mintlang.runtime.clock import Clock
 from mintlang.runtime.comms.packets import HostEndpoint
 from mintlang.runtime.comms.server import HostPortServer
 from mintlang.runtime.dialects import semantics
-from mintlang.runtime.dialects.mintmt import contouring, outputs, triggering
+from mintlang.runtime.dialects.mintmt import contouring, identifiers, outputs, triggering
 from mintlang.runtime.dialects.v3 import machine as v3_machine
 from mintlang.runtime.events import MINTDRIVE, NEXTMOVE, EventClass, Events
 from mintlang.runtime.hardware import simulated
@@ -115,6 +115,7 @@ def build_controller(
         triggering.install(table, motion)
         contouring.install(table)
         outputs.install(table)
+        identifiers.install(table, motion)
     motion.input_active = io.is_active
     motion.index_pulses = {pulse.axis: pulse for pulse in scenario.index_pulses}
     layer = (

@@ -65,6 +65,7 @@ class Request:
     build: Callable[[int], Move | None]  # start tick -> the move, or None when there is nothing to do
     targets: tuple[float, ...] | None = None  # each axis's end in counts, where known when it is loaded
     onto_running: bool = False  # starts on top of the move running (an OFFSET on a FOLLOW), not after it
+    ident: float = 0.0  # MOVEBUFFERID in force when it was loaded (MintMT, MT-12)
 
 
 class Axis:
@@ -82,6 +83,8 @@ class Axis:
         self.index_in_move = 0
         self.buffer: deque[Request] = deque()
         self.triggered = 0  # how many requests at the head of the buffer GO has triggered
+        self.load_ident = 0.0  # MOVEBUFFERID written: stored with each move loaded from now on (MT-12)
+        self.last_ident = 0.0  # the ident of the last move started: the running one's while it runs (MT-12)
         self.pending_mode = 0  # a mode bit shown from the moment it is issued (JOG, HOME, TORQUE, FOLLOW)
         self.hold = 0.0  # demand while no move runs, counts
         self.target = 0.0  # POSTARGET, counts
@@ -345,7 +348,7 @@ class Axis:
         if move is not None:
             if self.triggered and self.buffer and self.buffer[0].onto_running:
                 self.triggered -= 1
-                self.buffer.popleft().build(tick)
+                self.started(self.buffer.popleft()).build(tick)
             move.profiler(tick)
             if tick >= move.end and not self.held:
                 self.hold = move.demand(self.index_in_move, move.end)
@@ -354,6 +357,11 @@ class Axis:
                     self.pending_mode = 0
         if self.move is None and self.triggered and self.buffer and not self.held:
             start_group(self.buffer[0], tick)
+
+    def started(self, request: Request) -> Request:
+        """``request`` leaves the buffer to run: its ident is now the last one started."""
+        self.last_ident = request.ident
+        return request
 
     def begin(self, move: Move, index: int) -> None:
         self.move = move

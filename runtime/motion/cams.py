@@ -240,7 +240,7 @@ def register(table: KeywordTable, motion: Motion) -> None:
             move.profiler(tick)
             return None if axis.axiserror else move  # a first segment without master distance fails at once
 
-        axis.buffer.append(Request(MD_CAM, (axis.number,), build))
+        axis.buffer.append(Request(MD_CAM, (axis.number,), build, ident=axis.load_ident))
         axis.pending_mode = MD_CAM
 
     def segment_writer(end: bool) -> Callable[[int | None, float], None]:

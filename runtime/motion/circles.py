@@ -52,7 +52,7 @@ def circle(motion: Motion, *, relative: bool) -> Callable[[Channels | None, Valu
         segment = PathSegment(MD_CIRCULAR, (master, axes[1]), master.contour_mode, arc=Arc(centre, degrees))
         for axis, target in zip(axes, segment.shape(start).targets, strict=True):
             axis.target = target
-        request = Request(MD_CIRCULAR, segment.numbers, segment)
+        request = Request(MD_CIRCULAR, segment.numbers, segment, ident=master.load_ident)
         for axis in axes:
             axis.buffer.append(request)
         return False

@@ -147,7 +147,7 @@ class Motion:
         for axis, target in zip(axes, targets, strict=True):
             axis.target = target
         segment = PathSegment(mode, axes, master.contour_mode, targets)
-        request = Request(mode, segment.numbers, segment, targets)
+        request = Request(mode, segment.numbers, segment, targets, ident=master.load_ident)
         for axis in axes:
             axis.buffer.append(request)
 
@@ -160,7 +160,7 @@ class Motion:
         if any(axis.move is not None or not axis.triggered or axis.buffer[0] is not request for axis in axes):
             return
         for axis in axes:
-            axis.buffer.popleft()
+            axis.started(axis.buffer.popleft())
             axis.triggered -= 1
         move = request.build(tick)
         if move is not None:
@@ -348,14 +348,15 @@ class Motion:
         table.register("ENCODER", read=self._encoder, write=per_channel(self._write_encoder))
         table.register("VEL", read=self._vel)
         table.register("FOLERROR", read=self._folerror)
-        table.register("AXISMODE", read=lambda ch: float(self._watch(self.axis(ch)).axismode))
+        table.register("AXISMODE", read=lambda ch: float(self.watched(self.axis(ch)).axismode))
         table.register("AXISERROR", read=lambda ch: float(self.axis(ch).axiserror))
         table.register("AXISSTATUS", read=lambda ch: float(self.axis(ch).status | self.axis(ch).axiserror))
         table.register("IDLE", read=self._idle)
         table.register("POSTARGET", read=self._postarget)
         table.register("POSREMAINING", read=self._posremaining)
-        table.register("MOVEBUFFERFREE", read=lambda ch: float(self._watch(self.axis(ch)).buffer_free()))
-        table.register("DAC", read=lambda ch: self._watch(self.axis(ch), moving=True).dac, write=per_channel(self._dac))
+        table.register("MOVEBUFFERFREE", read=lambda ch: float(self.watched(self.axis(ch)).buffer_free()))
+        dac = per_channel(self._dac)
+        table.register("DAC", read=lambda ch: self.watched(self.axis(ch), moving=True).dac, write=dac)
 
     def _switch(self, inputs: tuple[str, ...]) -> Callable[[int | None], float]:
         """LIMIT, LIMITFORWARD, STOPSWITCH ...: whether an assigned input is active (0 when none is assigned)."""
@@ -404,7 +405,7 @@ class Motion:
         clock.horizon = min(clock.horizon, clock.now + 1 if axis.plant.closed_loop else axis.next_event(clock.now))
         return 1.0 if axis.idle() else 0.0
 
-    def _watch(self, axis: Axis, *, moving: bool = False) -> Axis:
+    def watched(self, axis: Axis, *, moving: bool = False) -> Axis:
         """Reading axis state: it may change when the move ends, or every tick while moving."""
         now = self.clock.now
         self.clock.changes_at(axis.next_event(now))
@@ -448,7 +449,7 @@ class Motion:
         axis.disable()
 
     def _pos(self, channel: int | None) -> float:
-        axis = self._watch(self.axis(channel), moving=True)
+        axis = self.watched(self.axis(channel), moving=True)
         return axis.position(axis.measured)
 
     def _write_pos(self, channel: int | None, value: float) -> None:
@@ -458,7 +459,7 @@ class Motion:
         axis.position_offset = axis.measured - value * axis.scale
 
     def _encoder(self, channel: int | None) -> float:
-        axis = self._watch(self.axis(channel), moving=True)
+        axis = self.watched(self.axis(channel), moving=True)
         return axis.measured - axis.encoder_offset
 
     def _write_encoder(self, channel: int | None, value: float) -> None:
@@ -466,11 +467,11 @@ class Motion:
         axis.encoder_offset = axis.measured - value
 
     def _vel(self, channel: int | None) -> float:
-        axis = self._watch(self.axis(channel), moving=True)
+        axis = self.watched(self.axis(channel), moving=True)
         return axis.velocity_counts() / axis.scale
 
     def _folerror(self, channel: int | None) -> float:
-        axis = self._watch(self.axis(channel), moving=True)
+        axis = self.watched(self.axis(channel), moving=True)
         return (axis.demand - axis.measured) / axis.scale
 
     def _postarget(self, channel: int | None) -> float:
@@ -480,7 +481,7 @@ class Motion:
         return axis.position(axis.target)
 
     def _posremaining(self, channel: int | None) -> float:
-        axis = self._watch(self.axis(channel), moving=True)
+        axis = self.watched(self.axis(channel), moving=True)
         return self._path_remaining(axis) / axis.scale
 
     def _path_remaining(self, axis: Axis) -> float:

@@ -320,7 +320,8 @@ def register(table: KeywordTable, motion: Motion) -> None:
             if isinstance(move, LockedMove) and move.takes_fly:
                 move.append(step)
             else:
-                axis.buffer.append(Request(MD_FLY, (axis.number,), FlySegment(step, chain(axis))))
+                segment = FlySegment(step, chain(axis))
+                axis.buffer.append(Request(MD_FLY, (axis.number,), segment, ident=axis.load_ident))
         return False
 
     table.register("FLY", write=fly)

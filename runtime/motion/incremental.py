@@ -98,7 +98,7 @@ def incremental(motion: Motion, *, relative: bool) -> Callable[[Channels | None,
             if running is not None:
                 running.retarget(target, tick)
             elif not _waiting(axis):
-                axis.buffer.append(Request(MD_INCREMENT, (axis.number,), _starter(axis)))
+                axis.buffer.append(Request(MD_INCREMENT, (axis.number,), _starter(axis), ident=axis.load_ident))
             axis.target = target
         return False
 

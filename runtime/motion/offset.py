@@ -42,10 +42,11 @@ def offset(motion: Motion) -> Callable[[Channels | None, Values], bool]:
             following = _following(axis)
             if following is None:
                 axis.target = axis.hold + value * axis.scale
-                axis.buffer.append(Request(MD_OFFSET, (axis.number,), _starter(axis, value * axis.scale)))
+                starter = _starter(axis, value * axis.scale)
+                axis.buffer.append(Request(MD_OFFSET, (axis.number,), starter, ident=axis.load_ident))
             else:
                 start = _superimpose(axis, following, value * axis.scale)
-                axis.buffer.append(Request(MD_OFFSET, (axis.number,), start, onto_running=True))
+                axis.buffer.append(Request(MD_OFFSET, (axis.number,), start, onto_running=True, ident=axis.load_ident))
         return False
 
     return write

@@ -21,6 +21,6 @@ def test_a_listing_of_the_move_buffer_note_runs_to_its_end() -> None:
 
 
 def test_a_keyword_not_simulated_stops_the_run_at_its_line_saying_so() -> None:
-    status, output = _run(str(CORPUS / "an00117_l0141_move_ids.mnt"))
+    status, output = _run(str(CORPUS / "an00117_l0293_output_moves.mnt"))
     assert status != 0
-    assert "at program line 4: MOVEBUFFERID(0) = 1 — MOVEBUFFERID (write) is not simulated by mint-run" in output
+    assert "at program line 5: MOVEOUT(0,0) = 7 — MOVEOUT (write with an index) is not simulated by mint-run" in output

@@ -27,7 +27,7 @@ from dataclasses import dataclass, field, replace
 from mintlang.allocation import without_collector
 from mintlang.diagnostics import LineIndex, Severity, Span
 from mintlang.migrate.citations import cite
-from mintlang.migrate.context import MARKER, Context, FileView, LineTags
+from mintlang.migrate.context import MARKER, Context, FileView, LineTags, Unreadable
 from mintlang.migrate.history import Edit, History
 from mintlang.migrate.markers import manual_items
 from mintlang.migrate.model import Change, ManualItem, MigrationFailed, Phase
@@ -103,10 +103,14 @@ def _build(texts: Mapping[Unit, str], controller: str, tags: LineTags) -> Contex
     try:
         return Context.build(texts, controller, tags)
     except Exception as error:  # a parser bug must not take the other files of a run with it
-        raise MigrationFailed(None, f"reading it as Mint v3 raised {_described(error)}") from error
+        raise _unreadable_files(error) from error
 
 
-def _described(error: Exception) -> str:
+def _unreadable_files(error: BaseException | None) -> MigrationFailed:
+    return MigrationFailed(None, f"reading it as Mint v3 raised {_described(error)}")
+
+
+def _described(error: BaseException | None) -> str:
     return f"{type(error).__name__}: {error}"
 
 
@@ -133,6 +137,8 @@ def _apply_pass(context: Context, rules: Sequence[Rule], states: dict[Unit, _Fil
                     edit = _marker(file, rule.id, action, flagged)
                     if edit is not None:
                         wanted[action.unit].append(edit)
+        except Unreadable as error:  # the model, built when the rule asked for it
+            raise _unreadable_files(error.__cause__) from error.__cause__
         except Exception as error:  # a bug in one rule: reported with its id, the run goes on
             raise MigrationFailed(rule.id, _described(error)) from error
     applied: set[str] = set()

@@ -4,7 +4,9 @@ Default is a dry run that prints a unified diff and the report. ``--write``
 rewrites the files in place (atomically, in their own encoding and newlines,
 through symbolic links, never over an edit made meanwhile; see ``writing`` and
 ``atomic``), ``--check`` only says whether anything would change, ``--stdout``
-prints the migrated text of one file; the modes exclude each other. Each
+prints the migrated text of one file, ``--verify`` runs each v3 application and
+its migration in the simulator and compares them (``verification``); the modes
+exclude each other. Each
 application is migrated on its own (``applications``): a rule that fails on one
 is reported with its path and the rule, and the others are migrated and written.
 """
@@ -22,12 +24,14 @@ from rich.console import Console
 
 from mintlang.cli.options import controller_option
 from mintlang.diagnostics import split_lines
-from mintlang.migrate import leftovers
+from mintlang.migrate import leftovers, verifying
 from mintlang.migrate.api import UnknownRule, rules, select
 from mintlang.migrate.applications import Migrated, UsageError, read
 from mintlang.migrate.atomic import Unwritable
 from mintlang.migrate.citations import cite
 from mintlang.migrate.report import render_text, report
+from mintlang.migrate.verification import DEFAULT_UNTIL_MS, V3_CONTROLLERS, V3_DEFAULT, Verdict
+from mintlang.migrate.verification.report import Verified
 from mintlang.migrate.writing import write_changed
 
 GATE_FAILED = 1
@@ -35,14 +39,17 @@ NOT_DONE = 2
 
 EXIT_STATUS = """\b
 Exit status:
-  0  done: nothing left to rewrite (--check), or everything written or
-     printed; manual items are reported and do not fail a run
-  1  the gate failed: --check found something to rewrite, or manual
-     items are left and --fail-on manual was given
+  0  done: nothing left to rewrite (--check), everything written or
+     printed, or every application verified equivalent (--verify; a
+     timing difference X-GO-TIMING flagged counts as a manual item);
+     manual items are reported and do not fail a run
+  1  the gate failed: --check found something to rewrite, --verify found
+     a divergence, or manual items are left and --fail-on manual was given
   2  something was not done: a usage error, a file that cannot be read
-     or written, a file that changed since it was read (not written), or
-     a rule that failed on a file (that file is left as it was; the
-     others are migrated and written)"""
+     or written, a file that changed since it was read (not written), a
+     rule that failed on a file (that file is left as it was; the others
+     are migrated and written), or a --verify comparison that could not
+     cover the run (incomplete)"""
 
 
 def _diff(item: Migrated, text: str) -> str:
@@ -76,6 +83,33 @@ def _list_rules(console: Console) -> None:
 @click.option("--skip", multiple=True, metavar="RULE", help="Do not run this rule (repeatable).")
 @click.option("--with", "opt_in", multiple=True, metavar="RULE", help="Also run this optional rule (repeatable).")
 @click.option("--list-rules", is_flag=True, help="List the rules and exit.")
+@click.option(
+    "--verify",
+    is_flag=True,
+    help="Run each v3 application and its migration in the simulator and compare them; write nothing.",
+)
+@click.option(
+    "--scenario",
+    "scenario_paths",
+    multiple=True,
+    type=click.Path(path_type=Path),
+    help="With --verify: a mint-run scenario file (TOML) giving both runs the same stimulus (repeatable).",
+)
+@click.option(
+    "--until-ms",
+    type=click.IntRange(min=1),
+    help=f"With --verify: compare at most this many simulated ms.  [default: {DEFAULT_UNTIL_MS}]",
+)
+@click.option(
+    "--v3-controller",
+    type=click.Choice(list(V3_CONTROLLERS)),
+    help=f"With --verify: the Mint v3 controller the originals run on.  [default: {V3_DEFAULT}]",
+)
+@click.option(
+    "--drives",
+    type=click.Choice(["enabled"]),
+    help="With --verify: start both runs with every drive enabled (as mint-run --drives enabled).",
+)
 def migrate(  # noqa: PLR0917 - click passes every option as an argument
     paths: tuple[Path, ...],
     write: bool,
@@ -89,13 +123,20 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
     skip: tuple[str, ...],
     opt_in: tuple[str, ...],
     list_rules: bool,
+    verify: bool,
+    scenario_paths: tuple[Path, ...],
+    until_ms: int | None,
+    v3_controller: str | None,
+    drives: str | None,
 ) -> None:
     """Migrate Mint v3 programs (.mnt) and configuration files (.cfg) to Mint v4."""
     if list_rules:
         _list_rules(Console(highlight=False, soft_wrap=True))
         return
     try:
-        mode = _mode(write=write, check=check, to_stdout=to_stdout)
+        mode = _mode(write=write, check=check, to_stdout=to_stdout, verify=verify)
+        options = verifying.Options(scenario_paths, until_ms, v3_controller, drives)
+        settings = options.settings(controller) if mode == "verify" else options.refuse()
         select(only or None, skip, opt_in)
         applications = read(paths, config)
         if mode == "stdout" and sum(len(application.files()) for application in applications) > 1:
@@ -106,6 +147,12 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
     items = [item for application in migrated for item in application]
     problems = [f"{item.entry.path}: {item.entry.failure}; left as it was" for item in items if item.entry.failure]
     _tidy(items, mode)
+    if settings is not None:
+        verified, failed = verifying.verify_all(migrated, settings)
+        verifying.output(verified, output_format)
+        for problem in [*problems, *failed]:
+            click.echo(f"mint-migrate: {problem}", err=True)
+        sys.exit(_verify_status(verified, fail_on, [*problems, *failed]))
     _output(items, mode, output_format, controller)
     if mode == "write":
         try:
@@ -122,9 +169,10 @@ def _fail(message: str) -> NoReturn:
     sys.exit(NOT_DONE)
 
 
-def _mode(*, write: bool, check: bool, to_stdout: bool) -> str | None:
+def _mode(*, write: bool, check: bool, to_stdout: bool, verify: bool) -> str | None:
     """The one mode asked for: ``--check --write`` must not write, so two are a usage error."""
-    given = [name for name, on in (("write", write), ("check", check), ("stdout", to_stdout)) if on]
+    modes = (("write", write), ("check", check), ("stdout", to_stdout), ("verify", verify))
+    given = [name for name, on in modes if on]
     if len(given) > 1:
         raise UsageError(f"{', '.join('--' + name for name in given)}: choose one of these modes")
     return given[0] if given else None
@@ -165,6 +213,18 @@ def _status(items: list[Migrated], mode: str | None, fail_on: str | None, proble
     if mode == "check" and any(result.changed for result in results):
         return GATE_FAILED
     if fail_on == "manual" and any(result.manual for result in results):
+        return GATE_FAILED
+    return 0
+
+
+def _verify_status(verified: list[Verified], fail_on: str | None, problems: list[str]) -> int:
+    """The exit status of ``--verify`` (see ``EXIT_STATUS``)."""
+    verdicts = {item.verification.verdict for item in verified}
+    if problems or Verdict.INCOMPLETE in verdicts:
+        return NOT_DONE
+    if Verdict.DIVERGES in verdicts:
+        return GATE_FAILED
+    if fail_on == "manual" and any(item.verification.not_verified for item in verified):
         return GATE_FAILED
     return 0
 

@@ -1,0 +1,70 @@
+"""Two recordings side by side: how far they can be compared, and every first difference up to there.
+
+A run that ended for good (the program's end with the machine at rest, a
+deadlock, an error) holds its last state, so it compares with the other for as
+long as that one runs. A run cut short (``--until-ms``, the wall clock, a
+keyword the simulator does not model) is known only up to its last sample, so
+the comparison stops there. How each run ended is compared too: an error in one
+run must be met by an error in the other (the messages differ by dialect,
+X-PRINT), and two runs over for good must end the same way.
+"""
+
+from __future__ import annotations
+
+from mintlang.migrate.verification import printed, signals, tolerance
+from mintlang.migrate.verification.model import Divergence, Place, Stopped
+from mintlang.migrate.verification.runs import Recording
+from mintlang.runtime.interpreter.vm import StopReason
+
+_ORDER = ("stop", "terminal", "OUT", "relay", "axis")  # which of two differences at one time is told first
+
+
+def horizon(v3: Recording, v4: Recording) -> int:
+    """The last millisecond both runs tell about: the longer run when both ended, else the shorter open one
+    (-1 when a run was cut short in its first millisecond: nothing can be compared)."""
+    open_ends = [run.known for run in (v3, v4) if not run.closed]
+    return min(open_ends) if open_ends else max(v3.last, v4.last)
+
+
+def stopped(run: Recording) -> Stopped:
+    stop = run.stop
+    assert stop is not None, "a recording is made by a run"
+    line = Place(stop.unit, stop.line) if stop.unit is not None and stop.line is not None else None
+    return Stopped(stop.reason.value, stop.time_ms, line, stop.message)
+
+
+def differences(v3: Recording, v4: Recording) -> list[Divergence]:
+    """Every channel's first difference up to the horizon, the earliest first."""
+    until = horizon(v3, v4)
+    found = [*_stops(v3, v4, until), *printed.differences(v3, v4, until), *signals.differences(v3, v4, until)]
+    return sorted(found, key=lambda found: (found.time_ms, _ORDER.index(found.what.split(" ")[0])))
+
+
+def _stops(v3: Recording, v4: Recording, until: int) -> list[Divergence]:
+    runs = (v3, v4)
+    errors = [
+        run.stop.time_ms
+        for run in runs
+        if run.closed and run.stop is not None and run.stop.reason is StopReason.ERROR and run.stop.time_ms <= until
+    ]
+    if len(errors) == 2 and abs(errors[0] - errors[1]) <= tolerance.TIME_MS:
+        return []
+    if errors:
+        return [_divergence(runs, min(errors), timing_only=len(errors) == 2)]
+    if v3.closed and v4.closed and stopped(v3).reason != stopped(v4).reason:
+        return [_divergence(runs, max(stopped(run).time_ms for run in runs), timing_only=False)]
+    return []
+
+
+def _divergence(runs: tuple[Recording, Recording], time_ms: int, *, timing_only: bool) -> Divergence:
+    """Each run as it is at ``time_ms``: stopped (how, where) or running on (at which line)."""
+    sides = []
+    for run in runs:
+        end = stopped(run)
+        if run.closed and end.time_ms <= time_ms:
+            told = f"{end.reason} at {end.time_ms} ms" + (f": {end.message}" if end.message else "")
+            sides.append((told, end.line))
+        else:
+            sides.append(("runs on", run.places[min(time_ms, run.last)] if run.last >= 0 else None))
+    (v3, v3_line), (v4, v4_line) = sides
+    return Divergence(time_ms, "stop", v3, v4, v3_line, v4_line, timing_only=timing_only)

@@ -1,4 +1,4 @@
-"""Quick fixes from the core's diagnostics, and the lazily resolved v3 → v4 migration."""
+"""Quick fixes from the core's diagnostics (the v3 → v4 source actions: ``test_migration_actions``)."""
 
 from __future__ import annotations
 
@@ -56,23 +56,6 @@ async def test_bracket_to_dot_hint(client, tmp_path):
     assert only_edit(fix, uri).new_text == ".0"
 
 
-async def test_migrate_source_action(client, tmp_path):
-    uri = uri_of(tmp_path / "old.mnt")
-    text = "REM limits\nCURRLIMIT = 2\n"
-    diagnostics = await open_document(client, uri, text)
-    [migrate] = [a for a in await actions(client, uri, diagnostics, 0) if a.title == "Migrate this file to Mint v4"]
-    assert migrate.kind == "source.migrateToV4" and migrate.edit is None
-    resolved = await client.code_action_resolve_async(migrate)
-    [edit] = resolved.edit.changes[uri]
-    assert edit.range.start.line == 1 and "CURRLIMIT" not in edit.new_text
-
-
-async def test_no_migration_offered_for_v4_code(client, tmp_path):
-    uri = uri_of(tmp_path / "new.mnt")
-    diagnostics = await open_document(client, uri, "CURRENTLIMIT = 2\n")
-    assert [a.title for a in await actions(client, uri, diagnostics, 0)] == []
-
-
 async def test_v3_dialect_setting(client, tmp_path):
     uri = uri_of(tmp_path / "legacy.mnt")
     text = "HMSPEED.0 = 10\n\n"
@@ -83,6 +66,3 @@ async def test_v3_dialect_setting(client, tmp_path):
         types.CompletionParams(text_document=document(uri), position=types.Position(line=1, character=0))
     )
     assert "Mint v3, abbreviation HS" in {item.detail for item in found.items if item.label == "HMSPEED"}
-    [migrate] = [a for a in await actions(client, uri, [], 0) if a.title == "Migrate this file to Mint v4"]
-    resolved = await client.code_action_resolve_async(migrate)
-    assert "HOMESPEED" in "".join(edit.new_text for edit in resolved.edit.changes[uri])

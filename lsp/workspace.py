@@ -42,6 +42,7 @@ class Settings:
     dialect: Dialect = Dialect.V4
     config_pairing: str = "<name>.cfg"
     debounce_ms: int = 150
+    select: tuple[str, ...] | None = None  # codes or prefixes; None: the errors and warnings, not the hints
 
     @property
     def words(self) -> Vocabulary:
@@ -61,12 +62,14 @@ class Settings:
             "dialect": base.dialect,
             "config_pairing": base.config_pairing,
             "debounce_ms": base.debounce_ms,
+            "select": base.select,
         }
         for key, name, convert in (
             ("controller", "controller", Controller),
             ("dialect", "dialect", Dialect),
             ("configPairing", "config_pairing", _pairing_pattern),
             ("debounceMs", "debounce_ms", int),
+            ("select", "select", _codes),
         ):
             if options.get(key) is not None:
                 try:
@@ -105,6 +108,14 @@ class Snapshot:
 
 
 TextReader = Callable[[str], str | None]  # uri -> text of an open document or file on disk, if any
+
+
+def _codes(value: object) -> tuple[str, ...]:
+    """Codes or prefixes as a list (``["E", "I201"]``) or comma-separated (``"E,I201"``)."""
+    items = value.split(",") if isinstance(value, str) else value
+    if not isinstance(items, list | tuple) or not all(isinstance(item, str) for item in items):
+        raise TypeError("a list of codes")
+    return tuple(item.strip().upper() for item in items if item.strip())
 
 
 def _pairing_pattern(value: object) -> str:
@@ -233,7 +244,7 @@ class Analyses:
         else:
             program, config = mine, other_text
         analysis = mintlang.check_application(
-            program, dialect=settings.dialect, controller=settings.controller, config=config
+            program, dialect=settings.dialect, controller=settings.controller, config=config, select=settings.select
         )
         files = {unit: File(uri, Positions(text, self.encoding))}
         if other is not None and other_text is not None:

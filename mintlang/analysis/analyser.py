@@ -34,11 +34,16 @@ class Analysis:
     configuration: tuple[Diagnostic, ...]
 
 
+# What is checked unless a selection says otherwise: the controller's errors and the warnings. The
+# hints (I…) suggest a faster spelling of correct code; they are asked for (``--select I``).
+DEFAULT_SELECT = ("E", "W")
+
+
 def _selected(code: str, select: Iterable[str] | None, ignore: Iterable[str]) -> bool:
     """``--select``/``--ignore`` match a code or a prefix of it (E2, W1, E3001)."""
     if any(code.startswith(prefix) for prefix in ignore):
         return False
-    return select is None or any(code.startswith(prefix) for prefix in select)
+    return any(code.startswith(prefix) for prefix in (DEFAULT_SELECT if select is None else select))
 
 
 _LineKey = tuple[Unit, Hashable, Controller, Dialect]  # what the line was parsed from, and where it is checked

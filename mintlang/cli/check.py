@@ -63,7 +63,10 @@ def _fail(message: str) -> NoReturn:
     default="text",
     show_default=True,
 )
-@click.option("--select", help="Only these codes or code prefixes, comma-separated (E2,W103).")
+@click.option(
+    "--select",
+    help="Only these codes or code prefixes, comma-separated (E2,W103). Default: E,W; the hints need it (--select I).",
+)
 @click.option("--ignore", help="Leave out these codes or code prefixes, comma-separated.")
 def check(
     paths: tuple[Path, ...],

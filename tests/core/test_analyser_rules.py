@@ -120,12 +120,12 @@ def test_a_character_whose_upper_case_is_two_keeps_its_own_code() -> None:
     assert mintlang.check("DIM a\na = 'ß'\nPRINT a\n") == []
 
 
-def test_every_use_of_an_undeclared_variable_offers_one_dim_outside_the_loop_that_uses_it() -> None:
-    source = "LOOP\n  total = total + 1\nENDL\n"
+def test_every_line_using_an_undeclared_variable_offers_one_dim_outside_the_loop_that_uses_it() -> None:
+    source = "LOOP\n  total = total + 1\n  PRINT total\nENDL\n"
     diagnostics = [d for d in mintlang.check(source) if d.code == "E3001"]
     assert len(diagnostics) == 2
     fixed = {apply(source, d.fixes[0].edits) for d in diagnostics}
-    assert fixed == {"DIM total\nLOOP\n  total = total + 1\nENDL\n"}
+    assert fixed == {"DIM total\nLOOP\n  total = total + 1\n  PRINT total\nENDL\n"}
 
 
 @pytest.mark.parametrize(
@@ -756,22 +756,34 @@ def test_a_form_feed_does_not_end_a_line_for_its_length() -> None:
 # ------------------------------------------------------------------- hints
 
 
+def hints(source: str) -> list[Diagnostic]:
+    """The hints of a program, which are reported only when asked for."""
+    return list(mintlang.check_application(source, select=("I",)).program)
+
+
+def test_hints_are_reported_only_when_selected() -> None:
+    assert found("DIM b\nb = POS[1]\n") == []
+    assert [d.code for d in hints("DIM b\nb = POS[1]\n")] == ["I201"]
+
+
 def test_one_axis_in_brackets_gets_a_hint_to_use_the_dot() -> None:
     # lines 682-688: b = POS.1 is smaller and faster than b = POS[1]
     source = "DIM b\nb = POS[1]\n"
-    assert found(source) == [("I201", INFO, 2)]
-    (fix,) = only(source, "I201").fixes
+    (hint,) = hints(source)
+    assert (hint.code, hint.severity.value, source[hint.span.start : hint.span.end]) == ("I201", INFO, "[1]")
+    (fix,) = hint.fixes
     fixed = apply(source, fix.edits)
     assert fixed == "DIM b\nb = POS.1\n"
-    assert found(fixed) == []
+    assert hints(fixed) == []
 
 
 def test_the_dot_hint_keeps_a_macro_with_the_delimiter_it_needs() -> None:
     # lines 1508-1516: MOVER..xAxis, since a dot before a macro is ignored
     source = "DEFINE xAxis = 0\nMOVER[xAxis] = 10\n"
-    (fix,) = only(source, "I201").fixes
+    (hint,) = hints(source)
+    (fix,) = hint.fixes
     assert apply(source, fix.edits) == "DEFINE xAxis = 0\nMOVER..xAxis = 10\n"
-    assert "I201" not in [code for code, _, _ in found(apply(source, fix.edits))]
+    assert hints(apply(source, fix.edits)) == []
 
 
 def test_several_axes_in_brackets_get_no_hint() -> None:

@@ -50,6 +50,9 @@ async def test_plain_quotes(client, tmp_path):
 
 
 async def test_bracket_to_dot_hint(client, tmp_path):
+    client.workspace_did_change_configuration(
+        types.DidChangeConfigurationParams(settings={"mint": {"select": "E,W,I"}})
+    )
     uri = uri_of(tmp_path / "dot.mnt")
     diagnostics = await open_document(client, uri, "SPEED[0] = 10\n")
     [fix] = [a for a in await actions(client, uri, diagnostics, 0) if a.title.startswith("Write")]

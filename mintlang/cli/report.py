@@ -8,8 +8,8 @@ from dataclasses import dataclass
 
 from rich.cells import cell_len
 from rich.console import Console
-from rich.markup import escape
 
+from mintlang.cli.terminal import Palette
 from mintlang.codes import OWN_CODES
 from mintlang.diagnostics import Diagnostic, LineIndex, Severity, split_lines
 from mintlang.keyworddb import database
@@ -55,28 +55,47 @@ def _frame(text: str, start: int, end: int) -> tuple[str, int, int]:
     return head + visible + tail, cell_len(before), cell_len(visible[start - first : end - first])
 
 
-def render_text(reports: Sequence[FileReport], console: Console) -> None:
-    """rustc/ruff-style code frames and a closing count."""
+def render_text(reports: Sequence[FileReport], console: Console, *, summary: bool = True) -> None:
+    """rustc/ruff-style code frames and, with ``summary``, a closing count.
+
+    Written straight to the console's file with the escape codes of its palette:
+    ``Console.print`` parses and measures every line, a hundred times the cost.
+    The source, messages and paths are shown as they are (never read as markup),
+    with their control characters as pictures.
+    """
+    palette = Palette.for_console(console, {*_STYLE.values(), "blue", "bold"})
     counts = dict.fromkeys(Severity, 0)
+    bar = palette.paint("blue", "|")
     for report in reports:
         lines = split_lines(report.source)
+        path = report.path.translate(_VISIBLE)
+        frames: list[str] = []
         for diagnostic, line, column, end_line, end_column in report.located():
             counts[diagnostic.severity] += 1
             style = _STYLE[diagnostic.severity]
-            console.print(f"[{style}]{diagnostic.severity.value}[{diagnostic.code}][/]: {escape(diagnostic.message)}")
-            console.print(f"  [blue]-->[/] {escape(report.path)}:{line}:{column}")
             text = lines[line - 1] if 0 < line <= len(lines) else ""
             gutter = " " * len(str(line))
             end = end_column if end_line == line else len(text) + 1
             shown, before, marked = _frame(text, column - 1, max(column, end) - 1)
-            console.print(f"  {gutter} [blue]|[/]")
-            console.print(f"  [blue]{line} |[/] {escape(shown)}", highlight=False)
-            console.print(f"  {gutter} [blue]|[/] {' ' * before}[{style}]{'^' * max(1, marked)}[/]")
-            for fix in diagnostic.fixes:
-                console.print(f"  {gutter} [blue]=[/] fix: {escape(fix.title)}")
-            console.print()
-    summary = ", ".join(f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity)
-    console.print(f"[bold]{len(reports)} file{'s' if len(reports) != 1 else ''} checked:[/] {summary}")
+            heading = palette.paint(style, f"{diagnostic.severity.value}[{diagnostic.code}]")
+            frames.append(
+                f"{heading}: {diagnostic.message.translate(_VISIBLE)}\n"
+                f"  {palette.paint('blue', '-->')} {path}:{line}:{column}\n"
+                f"  {gutter} {bar}\n"
+                f"  {palette.paint('blue', f'{line} |')} {shown}\n"
+                f"  {gutter} {bar} {' ' * before}{palette.paint(style, '^' * max(1, marked))}\n"
+            )
+            frames.extend(
+                f"  {gutter} {palette.paint('blue', '=')} fix: {fix.title.translate(_VISIBLE)}\n"
+                for fix in diagnostic.fixes
+            )
+            frames.append("\n")
+        console.file.write("".join(frames))
+    if summary:
+        total = ", ".join(f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity)
+        checked = palette.paint("bold", f"{len(reports)} file{'s' if len(reports) != 1 else ''} checked:")
+        console.file.write(f"{checked} {total}\n")
+    console.file.flush()
 
 
 def as_json(reports: Sequence[FileReport]) -> str:

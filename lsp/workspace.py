@@ -23,6 +23,7 @@ from mintlang.keyworddb.model import Controller
 from mintlang.lsp.collector import Collector
 from mintlang.lsp.disk import names_in
 from mintlang.lsp.positions import Positions
+from mintlang.pairing import Pairing, listed_as
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
 from mintlang.syntax.parser import Document
@@ -31,7 +32,6 @@ from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 log = logging.getLogger(__name__)
 
 MAX_CHARACTERS = 500_000  # larger files are not analysed (about 25,000 lines, a second of checking)
-PROGRAM_SUFFIX = ".mnt"
 
 
 @dataclass(frozen=True, slots=True)
@@ -119,22 +119,14 @@ def _codes(value: object) -> tuple[str, ...]:
 
 
 def _pairing_pattern(value: object) -> str:
-    """A configuration file name with ``<name>`` for the program's: beside the program, so no folders."""
+    """A configuration file name with ``<name>`` for the program's (see ``mintlang.pairing``)."""
     pattern = str(value)
-    if "/" in pattern or "\\" in pattern:
-        raise ValueError("the configuration file is beside its program: a name, not a path")
+    Pairing.from_pattern(pattern)  # a ValueError for a folder keeps the setting as it was
     return pattern
 
 
-def _pairing(pattern: str) -> tuple[str, str] | None:
-    if "<name>" not in pattern:
-        return None
-    prefix, _, suffix = pattern.partition("<name>")
-    return prefix, suffix
-
-
 def partner(uri: str, settings: Settings, opened: Collection[str] = ()) -> tuple[Unit, str | None]:
-    """Which file ``uri`` is, and the URI of the other file of its application.
+    """Which file ``uri`` is, and the URI of the other file of its application (the core's pairing rule).
 
     The other URI is ``uri`` with its last segment replaced, so it is written as the
     client writes URIs (VS Code sends ``file:///c%3A/...`` where a path round trip
@@ -142,20 +134,11 @@ def partner(uri: str, settings: Settings, opened: Collection[str] = ()) -> tuple
     ``opened`` are the URIs of the documents open in the editor: one may not be on disk yet.
     """
     folder, slash, segment = uri.rpartition("/")
-    pairing = _pairing(settings.config_pairing)
+    pairing = Pairing.from_pattern(settings.config_pairing)
     if not slash or pairing is None:
         return Unit.PROGRAM, None
-    name = unquote(segment)
-    prefix, suffix = pairing
-    if name.lower().endswith(PROGRAM_SUFFIX):
-        configuration = prefix + name[: -len(PROGRAM_SUFFIX)] + suffix
-        if configuration.lower().endswith(PROGRAM_SUFFIX):
-            return Unit.PROGRAM, None
-        return Unit.PROGRAM, _sibling(folder, configuration, opened)
-    if suffix and name.lower().endswith(suffix.lower()) and name.startswith(prefix):
-        stem = name[len(prefix) : len(name) - len(suffix)]
-        return Unit.CONFIGURATION, _sibling(folder, stem + PROGRAM_SUFFIX, opened)
-    return Unit.PROGRAM, None
+    unit, other = pairing.partner_name(unquote(segment))
+    return unit, None if other is None else _sibling(folder, other, opened)
 
 
 def _sibling(folder: str, name: str, opened: Collection[str]) -> str:
@@ -164,19 +147,17 @@ def _sibling(folder: str, name: str, opened: Collection[str]) -> str:
     exact = f"{folder}/{quote(name)}"
     if exact in opened:
         return exact
-    lowered = name.lower()
+    beside: dict[str, str] = {}
     for uri in opened:
         other_folder, _, segment = uri.rpartition("/")
-        if other_folder == folder and unquote(segment).lower() == lowered:
-            return uri
+        if other_folder == folder:
+            beside.setdefault(unquote(segment), uri)
+    listed = listed_as(name, beside)
+    if listed is not None:
+        return beside[listed]
     path = to_fs_path(exact)
-    if path is None:
-        return exact
-    names = names_in(Path(path).parent)
-    if name in names:
-        return exact
-    found = next((entry for entry in names if entry.lower() == name.lower()), None)
-    return exact if found is None else f"{folder}/{quote(found)}"
+    listed = listed_as(name, names_in(Path(path).parent)) if path is not None else None
+    return exact if listed is None else f"{folder}/{quote(listed)}"
 
 
 def _unreadable(text: str) -> str | None:

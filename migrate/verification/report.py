@@ -123,7 +123,7 @@ def render_text(data: Mapping[str, Any], console: Console) -> None:
         for side in ("v3", "v4") if found is not None else ():
             console.print(f"  {side}: {escape(found[side]['value'])}  {_where(found[side], side)}")
         for manual in row["not_verified"]:
-            where = "note" if manual["note"] else f"{escape(manual['file'])}:{manual['migrated_line']}"
+            where = f"{escape(manual['file'])}:{manual['migrated_line']}" + (" (note)" if manual["note"] else "")
             reason = escape(manual["reason"])
             console.print(f"  not verified: {where}: [bold]{manual['rule']}[/bold] {reason}", style="dim")
         for place in row["disabled"]:

@@ -1,0 +1,165 @@
+"""``verify``: the v3 original and its migration run side by side, and what the comparison says.
+
+Expected values are worked out by hand. The simulator's profiler follows a
+trapezoid (runtime/BEHAVIOUR.md); a move of D counts at speed V and rate A
+accelerates for V/A s over V²/2A counts, cruises, and decelerates the same way.
+Times carry the few ms a move takes to start (the 2 ms profiler, the first
+tick's slice) and a measured velocity takes to follow, stated as a bound.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from unittest import mock
+
+from mintlang.migrate import MigrationResult, migrate
+from mintlang.migrate.rules import renames
+from mintlang.migrate.verification import Place, Verdict, verify
+from mintlang.runtime.scenario import DrivesEnabled, InputLevel, Scenario
+
+DRIVES = Scenario(drives=(DrivesEnabled(),))
+
+# SCALE 10 counts a unit; SPEED 100 units/s and ACCEL 1000 units/s² (DECEL too, in v3): 0.1 s to speed
+# over 5 units, 40 units at 100 units/s (0.4 s), 5 units to stop: the move takes 600 ms.
+PRINTS_AND_MOVES = """SCALE = 10
+SPEED = 100 : ACCEL = 1000
+PRINT "go"
+MOVEA.0 = 50 : GO.0
+PAUSE IDLE.0
+PRINT POS.0
+"""
+
+
+def _line_of(result: MigrationResult, text: str) -> int:
+    """The line of the migrated program that starts with ``text`` (the migrator adds notes, AXES and DIM above)."""
+    return next(number for number, line in enumerate(result.text.splitlines(), 1) if line.startswith(text))
+
+
+def test_an_exact_migration_of_a_program_that_prints_and_moves_is_equivalent_over_the_whole_run() -> None:
+    result = migrate(PRINTS_AND_MOVES)
+    found = verify(result, scenario=DRIVES, until_ms=5000)
+    assert found.verdict is Verdict.EQUIVALENT
+    assert found.divergence is None and found.differences == ()
+    assert 600 <= found.compared_ms <= 604  # the 600 ms move, then both programs end
+    assert (found.v3_stop.reason, found.v4_stop.reason) == ("end", "end")
+    assert found.v3_stop.line == Place("program", 6)
+    assert found.v4_stop.line == Place("program", _line_of(result, "PRINT POS.0"))
+
+
+def test_numbers_v3_prints_to_three_places_in_256ths_compare_with_v4s_four() -> None:
+    # 1/3 is 85/256 = 0.33203 in v3, printed 0.332 (V3-2, V3-4); v4 prints 0.3333 (X-PRINT)
+    found = verify(migrate("PRINT 1/3\n"), until_ms=100)
+    assert found.verdict is Verdict.EQUIVALENT
+
+
+def test_a_swapped_rename_is_reported_at_the_time_and_lines_it_shows() -> None:
+    # A wrong M-REN rule: HMSPEED becomes SPEED, so the v4 move cruises at 5000 counts/s, not 20000.
+    # At 100000 counts/s² both reach 5000 after 50 ms; v3 goes on. Its velocity leaves the tube around
+    # v4's once v3(t - 2 ms) - 5000 > 1% of it + 1000 counts/s: 100(t - 2) - 5000 > t + 1000, t > 62.6 ms.
+    program = "SPEED = 20000 : ACCEL = 100000\nHMSPEED = 5000\nMOVEA.0 = 100000 : GO.0\nPAUSE IDLE.0\n"
+    wrong = dict(renames.KEYWORD_RENAMES, HMSPEED=("SPEED", 11357))
+    with mock.patch.object(renames, "KEYWORD_RENAMES", wrong):
+        result = migrate(program)
+    found = verify(result, scenario=DRIVES, until_ms=3000)
+    assert found.verdict is Verdict.DIVERGES
+    divergence = found.divergence
+    assert divergence is not None
+    assert divergence.what == "axis 0 velocity"
+    assert 63 <= divergence.time_ms <= 68
+    assert float(divergence.v4) == 5000
+    assert float(divergence.v3) > 6000
+    assert divergence.v3_line == Place("program", 4)  # both programs wait in their PAUSE IDLE.0
+    assert divergence.v4_line == Place("program", _line_of(result, "PAUSE IDLE.0"))
+    assert not divergence.timing_only
+
+
+def test_a_changed_print_is_a_terminal_divergence_at_the_line_that_printed_it() -> None:
+    result = migrate(PRINTS_AND_MOVES)
+    altered = replace(result, text=result.text.replace('PRINT "go"', 'PRINT "GO"'))
+    divergence = verify(altered, scenario=DRIVES, until_ms=1000).divergence
+    assert divergence is not None
+    assert (divergence.time_ms, divergence.what) == (0, "terminal")
+    assert (divergence.v3, divergence.v4) == ("'go'", "'GO'")
+    assert divergence.detail == "v3 character 1 / v4 character 1"
+    assert divergence.v3_line == Place("program", 3)
+    assert divergence.v4_line == Place("program", _line_of(result, 'PRINT "go"'))
+
+
+def test_a_v3_default_v4_changed_diverges_where_the_speeds_part() -> None:
+    # No SPEED: v3's default is 40000 counts/s, v4's 20000 (S-DEFAULTS, a note to fill in); ACCEL is
+    # 300000 counts/s² in both. v4 cruises from 66.7 ms; v3 leaves the tube once
+    # 300(t - 2) - 20000 > 3t + 1000, t > 72.7 ms.
+    result = migrate("MOVEA.0 = 100000 : GO.0 : PAUSE IDLE.0\n")
+    found = verify(result, scenario=DRIVES, until_ms=3000)
+    assert found.verdict is Verdict.DIVERGES
+    assert found.divergence is not None
+    assert found.divergence.what == "axis 0 velocity"
+    assert 73 <= found.divergence.time_ms <= 78
+    assert float(found.divergence.v4) == 20000
+    speed_note = [item for _, item in found.not_verified if item.rule == "S-DEFAULTS" and "SPEED" in item.reason]
+    assert speed_note and speed_note[0].note
+
+
+def test_output_a_blocking_v3_go_delayed_is_a_timing_difference_x_go_timing_flagged() -> None:
+    # v3: the second GO waits for the first 10000-count move (200 ms up to 20000 counts/s over 2000
+    # counts, 6000 at speed in 300 ms, 200 ms down: 700 ms), so OUT0 is set at about 700 ms; v4's GO
+    # does not wait and sets it in the first tick. Both moves and both ends are the same.
+    program = "SPEED = 20000 : ACCEL = 100000\nMOVER.0 = 10000 : GO.0\nMOVER.0 = 10000 : GO.0\nOUT0 = 1\nPAUSE IDLE.0\n"
+    result = migrate(program)
+    found = verify(result, scenario=DRIVES, until_ms=3000)
+    assert found.verdict is Verdict.TIMING
+    assert [divergence.what for divergence in found.differences] == ["OUT bit 0"]
+    divergence = found.divergence
+    assert divergence is not None
+    assert (divergence.time_ms, divergence.v3, divergence.v4) == (0, "0", "1")
+    assert divergence.timing_only
+    assert divergence.v3_line == Place("program", 3)  # waiting in its second GO
+    assert 1400 <= found.v3_stop.time_ms <= 1404 and 1400 <= found.v4_stop.time_ms <= 1404
+    timing = [item for unit, item in found.not_verified if item.rule == "X-GO-TIMING"]
+    assert [(item.original_line, item.line) for item in timing] == [(4, _line_of(result, "OUT0 = 1"))]
+
+
+def test_every_statement_left_for_a_person_is_listed_as_not_verified() -> None:
+    result = migrate(PRINTS_AND_MOVES)
+    found = verify(result, scenario=DRIVES, until_ms=1000)
+    assert [item for _, item in found.not_verified] == list(result.manual)
+    assert all(unit == "program" for unit, _ in found.not_verified)
+
+
+def test_a_flagged_line_v4_rejects_is_disabled_for_the_v4_run_and_listed() -> None:
+    # AUTO does nothing in the v3 simulation (V3-5); a NextMove PCI does not have it (X-PLATFORM), and the
+    # line would raise "Keyword not supported on this platform" when it runs.
+    result = migrate("AUTO\nPRINT 5\n")
+    auto = _line_of(result, "AUTO")
+    assert any(item.rule == "X-PLATFORM" and item.line == auto for item in result.manual)
+    found = verify(result, until_ms=100)
+    assert found.disabled == (Place("program", auto),)
+    assert found.verdict is Verdict.EQUIVALENT
+
+
+def test_a_v3_original_its_compiler_rejects_leaves_nothing_to_compare() -> None:
+    # v3 declares a variable where it is first assigned: reading b first is "Undefined Variables"
+    # (001:1352-1367); the migration DIMs it, and v4 runs.
+    found = verify(migrate("PRINT b\nb = 2\n"), until_ms=100)
+    assert found.verdict is Verdict.INCOMPLETE
+    assert found.short is not None and found.short.startswith("the v3 original does not compile: ")
+    assert "Undefined Variables at line 1" in found.short
+    assert found.differences == ()
+
+
+def test_a_keyword_the_simulator_does_not_model_makes_the_comparison_incomplete() -> None:
+    found = verify(migrate('PRINT "a"\nCOMMSON\nPRINT "b"\n'), until_ms=100)
+    assert found.verdict is Verdict.INCOMPLETE
+    assert found.short == "COMMSON (command) is not simulated by mint-run"
+
+
+def test_the_scenario_drives_both_runs() -> None:
+    # Input 0 goes high at 100 ms: both programs leave their PAUSE then, print and end.
+    program = 'PAUSE IN0\nPRINT "pressed"\n'
+    pressed = Scenario(inputs=(InputLevel(time_ms=100, channel=0, level=1),))
+    found = verify(migrate(program), scenario=pressed, until_ms=1000)
+    assert found.verdict is Verdict.EQUIVALENT
+    assert found.compared_ms == 100
+    assert (found.v3_stop.reason, found.v3_stop.time_ms) == ("end", 100)
+    unpressed = verify(migrate(program), until_ms=1000)
+    assert (unpressed.v3_stop.reason, unpressed.v4_stop.reason) == ("deadlock", "deadlock")

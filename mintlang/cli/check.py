@@ -1,37 +1,63 @@
 """``mint check``: the static analyser on the command line.
 
-Exit status: 0 when no diagnostic of error severity was found, 1 when one was,
-2 for a usage or I/O problem (reported in one line, never as a traceback).
+Files are checked on all cores (``-j``), and reported in the order they were
+found whatever the number of processes. A file that cannot be read (a link
+loop, a pipe, a file deleted meanwhile) is reported on standard error with its
+path, and the others are still checked and reported.
 """
 
 from __future__ import annotations
 
 import sys
+import time
 from collections import Counter
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
-from typing import NoReturn
+from typing import IO, NoReturn
 
 import click
-from rich.console import Console
 
 from mintlang import check_application
-from mintlang.cli.files import collect, is_configuration, program_as_own_configuration, same_file
-from mintlang.cli.options import controller_option
-from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, render_text
+from mintlang.cli.checking import CheckOptions, Job, check_file
+from mintlang.cli.files import cannot_read, find, is_configuration, program_as_own_configuration, same_file
+from mintlang.cli.options import (
+    HELP_OPTIONS,
+    color_option,
+    controller_option,
+    exit_zero_option,
+    format_option,
+    list_option,
+    output_file_option,
+    refuse_quiet_and_verbose,
+    verbosity_options,
+)
+from mintlang.cli.parallel import all_cores, map_in_order
+from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, as_statistics, render_text
+from mintlang.cli.terminal import console
 from mintlang.codes import known_codes
 from mintlang.diagnostics import Diagnostic, Severity
 from mintlang.dialect import Dialect
-from mintlang.source import SourceFile, read_source
+from mintlang.source import SourceFile, decode, read_source
 
-_USAGE_ERROR = 2
+_FOUND_ERRORS = 1
+_NOT_DONE = 2
+_STDIN = Path("-")
 _USE_FINDINGS = frozenset({"W103", "W105"})  # unused variable, macro: a use in any program counts
 
+EXIT_STATUS = """\b
+Exit status:
+  0  no finding of error severity (or --exit-zero)
+  1  a finding of error severity
+  2  a usage problem, or a file that could not be checked (the others
+     are checked and reported all the same)"""
 
-def _codes(value: str | None, option: str) -> tuple[str, ...] | None:
+
+def _codes(values: tuple[str, ...] | None, option: str) -> tuple[str, ...] | None:
     """The codes or prefixes of ``--select``/``--ignore``; a typo would silently hide findings, so none passes."""
-    if value is None:
+    if values is None:
         return None
-    codes = tuple(code.strip().upper() for code in value.split(",") if code.strip())
+    codes = tuple(code.upper() for code in values)
     if not codes:
         raise click.BadParameter("give at least one code or prefix (E2, W103 ...)", param_hint=option)
     known = known_codes()
@@ -43,10 +69,10 @@ def _codes(value: str | None, option: str) -> tuple[str, ...] | None:
 
 def _fail(message: str) -> NoReturn:
     click.echo(f"mint check: {message}", err=True)
-    sys.exit(_USAGE_ERROR)
+    sys.exit(_NOT_DONE)
 
 
-@click.command()
+@click.command(context_settings=HELP_OPTIONS, epilog=EXIT_STATUS)
 @click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path))
 @click.option("--dialect", type=click.Choice([d.value for d in Dialect]), default="v4", show_default=True)
 @controller_option("The controller the programs run on.")
@@ -56,87 +82,147 @@ def _fail(message: str) -> NoReturn:
     type=click.Path(path_type=Path),
     help="Configuration file whose variables and macros the programs see.",
 )
+@format_option(["text", "json", "sarif", "github"])
+@output_file_option()
+@list_option("--select", help="Only these codes or code prefixes (E2,W103); comma-separated or repeated.")
+@list_option("--ignore", help="Leave out these codes or code prefixes; comma-separated or repeated.")
 @click.option(
-    "--format",
-    "output_format",
-    type=click.Choice(["text", "json", "sarif", "github"]),
-    default="text",
-    show_default=True,
+    "--statistics", is_flag=True, help="Count the findings of each code instead of showing each (text, json)."
+)
+@exit_zero_option("Exit with 0 even when errors are found (a file that could not be checked still exits with 2).")
+@click.option(
+    "--stdin-filename",
+    help="The name under which the program read from standard input (the path -) is reported.",
 )
 @click.option(
-    "--select",
-    help="Only these codes or code prefixes, comma-separated (E2,W103). Default: E,W; the hints need it (--select I).",
+    "-j",
+    "--jobs",
+    type=click.IntRange(min=0),
+    default=0,
+    help="Check this many files at once, each in a process of its own.  [default: 0, all cores]",
 )
-@click.option("--ignore", help="Leave out these codes or code prefixes, comma-separated.")
+@verbosity_options(
+    quiet="Only the findings: no closing count, no progress bar.",
+    verbose="Say on standard error how many files were checked, on how many processes, in how long.",
+)
+@color_option()
 def check(
     paths: tuple[Path, ...],
     dialect: str,
     controller: str,
     config_path: Path | None,
     output_format: str,
-    select: str | None,
-    ignore: str | None,
+    output_file: Path | None,
+    select: tuple[str, ...] | None,
+    ignore: tuple[str, ...] | None,
+    statistics: bool,
+    exit_zero: bool,
+    stdin_filename: str | None,
+    jobs: int,
+    quiet: bool,
+    verbose: bool,
+    color: str,
 ) -> None:
-    """Check Mint programs (.mnt; directories are searched) for the controller's errors and more."""
-    options: dict[str, object] = {
-        "dialect": dialect,
-        "controller": controller,
-        "select": _codes(select, "--select"),
-        "ignore": _codes(ignore, "--ignore") or (),
-    }
-    try:
-        files = collect(paths)
-        configuration = read_source(config_path) if config_path is not None else None
-    except FileNotFoundError as missing:
-        _fail(f"no such file or directory: {missing.filename or missing.args[0]}")
-    except OSError as error:
-        _fail(f"cannot read {error.filename}: {error.strerror}")
-    if configuration is not None and (binary := configuration.binary()) is not None:
-        _fail(f"{binary}: not checked")
-    if not files:
-        _fail("no .mnt files found in " + ", ".join(str(p) for p in paths))
-    itself = program_as_own_configuration(files, config_path) if config_path is not None else None
-    if itself is not None:
+    """Check Mint programs for the errors the controller finds, and more.
+
+    PATHS are programs (.mnt), configuration files (.cfg) and directories, searched for programs; - reads the
+    program from standard input.
+    """
+    started = time.perf_counter()
+    refuse_quiet_and_verbose(quiet, verbose)
+    if statistics and output_format not in ("text", "json"):
+        raise click.UsageError(f"--statistics is written as text or json, not {output_format}")
+    options = CheckOptions(dialect, controller, _codes(select, "--select"), _codes(ignore, "--ignore") or ())
+    found = find(path for path in paths if path != _STDIN)
+    configuration = _configuration(config_path)
+    files = [
+        path
+        for path in found.files
+        if configuration is None or not is_configuration(path) or not same_file(path, configuration.path)
+    ]  # a configuration named twice, as --config and as a path, is checked once, with the programs
+    if config_path is not None and (itself := program_as_own_configuration(files, config_path)) is not None:
         _fail(f"--config {config_path} is the program {itself} itself: name the configuration file")
+    config_text = configuration.text if configuration is not None else None
+    work = [Job(path, options, config_text) for path in files]
+    if _STDIN in paths:
+        work.insert(0, Job(Path(stdin_filename or "-"), options, config_text, _read_stdin(stdin_filename)))
+    elif stdin_filename is not None:
+        raise click.UsageError("--stdin-filename names the program read from standard input: give - as a path")
+    if not work and not found.unreadable:
+        _fail("no .mnt files found in " + ", ".join(str(p) for p in paths))
 
-    reports: list[FileReport] = []
-    seen_by_programs: list[tuple[Diagnostic, ...]] = []  # the configuration's findings with each program
-    for path in files:
-        if configuration is not None and is_configuration(path) and same_file(path, configuration.path):
-            continue  # named twice, as --config and as a path: checked once, with the programs
-        try:
-            source = read_source(path)
-        except OSError as error:
-            _fail(f"cannot read {path}: {error.strerror}")
-        binary = source.binary()
-        if binary is not None:
-            _fail(f"{binary}: not checked")
-        if is_configuration(path):
-            reports.append(_configuration_report(source, options))
-        else:
-            config_text = configuration.text if configuration is not None else None
-            analysis = check_application(source.text, config=config_text, **options)  # type: ignore[arg-type]
-            reports.append(FileReport(str(path), source.text, analysis.program))
-            seen_by_programs.append(analysis.configuration)
+    workers = jobs or all_cores()
+    progress = console(color, stderr=True) if not quiet and sys.stderr.isatty() else None
+    results = map_in_order(check_file, work, workers=workers, progress=progress)
+    problems = [cannot_read(error) for error in found.unreadable] + [r.problem for r in results if r.problem]
+    reports = [result.report for result in results if result.report is not None]
     if configuration is not None:
-        if seen_by_programs:
-            diagnostics = _configuration_with_programs(seen_by_programs)
-            reports.insert(0, FileReport(str(configuration.path), configuration.text, diagnostics))
-        else:
-            reports.insert(0, _configuration_report(configuration, options))
-
-    if output_format == "json":
-        click.echo(as_json(reports))
-    elif output_format == "sarif":
-        click.echo(as_sarif(reports))
-    elif output_format == "github":
-        output = as_github(reports)
-        if output:
-            click.echo(output)
-    else:
-        render_text(reports, Console(highlight=False, soft_wrap=True))
+        reports.insert(0, _configuration_report(configuration, [r.configuration for r in results if r.report], options))
+    if reports:
+        with _destination(output_file) as stream:
+            _write(reports, stream, output_format, statistics=statistics, quiet=quiet, color=color)
+    for problem in problems:
+        click.echo(f"mint check: {problem}", err=True)
+    if verbose:
+        elapsed = time.perf_counter() - started
+        processes = min(workers, len(work)) or 1
+        click.echo(
+            f"mint check: {len(reports)} of {len(work) + len(found.unreadable)} files checked "
+            f"on {processes} process{'es' if processes != 1 else ''} in {elapsed:.2f} s",
+            err=True,
+        )
     failed = any(d.severity is Severity.ERROR for report in reports for d in report.diagnostics)
-    sys.exit(1 if failed else 0)
+    sys.exit(_NOT_DONE if problems else _FOUND_ERRORS if failed and not exit_zero else 0)
+
+
+def _configuration(path: Path | None) -> SourceFile | None:
+    """The ``--config`` file, read; one that cannot be read or is binary ends the command."""
+    if path is None:
+        return None
+    try:
+        configuration = read_source(path)
+    except OSError as error:
+        _fail(cannot_read(error))
+    if (binary := configuration.binary()) is not None:
+        _fail(f"{binary}: not checked")
+    return configuration
+
+
+def _read_stdin(name: str | None) -> SourceFile:
+    text, encoding = decode(click.get_binary_stream("stdin").read())
+    return SourceFile(Path(name or "-"), text, encoding)
+
+
+@contextmanager
+def _destination(path: Path | None) -> Iterator[IO[str]]:
+    """Standard output, or the ``--output-file`` (a file that cannot be written ends the command)."""
+    if path is None:
+        yield sys.stdout
+        return
+    try:
+        stream = path.open("w", encoding="utf-8")
+    except OSError as error:
+        _fail(f"cannot write {path}: {error.strerror or error}")
+    with stream:
+        yield stream
+
+
+def _write(
+    reports: list[FileReport], stream: IO[str], output_format: str, *, statistics: bool, quiet: bool, color: str
+) -> None:
+    if statistics:
+        text = as_statistics(reports, output_format)
+    elif output_format == "json":
+        text = as_json(reports)
+    elif output_format == "sarif":
+        text = as_sarif(reports)
+    elif output_format == "github":
+        text = as_github(reports)
+    else:
+        render_text(reports, console(color, file=stream), summary=not quiet)
+        return
+    if text:
+        stream.write(f"{text}\n")
 
 
 def _configuration_with_programs(seen_by_programs: list[tuple[Diagnostic, ...]]) -> tuple[Diagnostic, ...]:
@@ -146,7 +232,18 @@ def _configuration_with_programs(seen_by_programs: list[tuple[Diagnostic, ...]])
     return tuple(sorted(kept, key=lambda d: (d.span.start, d.span.end, d.code)))
 
 
-def _configuration_report(source: SourceFile, options: dict[str, object]) -> FileReport:
-    """A configuration file checked on its own (with an empty program)."""
-    analysis = check_application("", config=source.text, **options)  # type: ignore[arg-type]
+def _configuration_report(
+    source: SourceFile, seen_by_programs: list[tuple[Diagnostic, ...]], options: CheckOptions
+) -> FileReport:
+    """The ``--config`` file's findings: as the programs saw it, or checked on its own (with an empty program)."""
+    if seen_by_programs:
+        return FileReport(str(source.path), source.text, _configuration_with_programs(seen_by_programs))
+    analysis = check_application(
+        "",
+        config=source.text,
+        dialect=options.dialect,
+        controller=options.controller,
+        select=options.select,
+        ignore=options.ignore,
+    )
     return FileReport(str(source.path), source.text, analysis.configuration)

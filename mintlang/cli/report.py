@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -184,3 +185,14 @@ def as_github(reports: Sequence[FileReport]) -> str:
             )
             lines.append(f"::{_GITHUB_LEVEL[diagnostic.severity]} {properties}::{escape_data(diagnostic.message)}")
     return "\n".join(lines)
+
+
+def as_statistics(reports: Sequence[FileReport], output_format: str) -> str:
+    """How many findings of each code, most first (then by code): a table, or JSON records."""
+    counts = Counter(diagnostic.code for report in reports for diagnostic in report.diagnostics)
+    ranked = sorted(counts.items(), key=lambda item: (-item[1], item[0]))
+    if output_format == "json":
+        records = [{"code": code, "count": count, "title": _title(code)} for code, count in ranked]
+        return json.dumps(records, indent=2, ensure_ascii=False)
+    width = len(str(ranked[0][1])) if ranked else 1
+    return "\n".join(f"{count:>{width}}  {code:<6} {_title(code)}" for code, count in ranked)

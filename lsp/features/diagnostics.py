@@ -115,7 +115,7 @@ class _Debouncer:
 
     def partner(self, uri: str) -> None:
         """The other file of the application is analysed with this one: refresh it too."""
-        _, other = partner(uri, self.server.analyses.settings, self.server.opened())
+        _, other = partner(uri, self.server.analyses.settings_for(uri), self.server.opened())
         if other is None or other not in self.server.workspace.text_documents:
             return
         if _pulls(self.server):

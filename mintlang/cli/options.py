@@ -36,7 +36,7 @@ def controller_option(help_text: str) -> Callable[[F], F]:
 
 def version_option(prog_name: str) -> Callable[[F], F]:
     """``--version``: the distribution's version, from its metadata (nothing of the tool is imported)."""
-    return click.version_option(package_name="mintlang", prog_name=prog_name, message="%(prog)s %(version)s")
+    return click.version_option(package_name="mintlang", prog_name=prog_name)
 
 
 def _comma_separated(

@@ -10,11 +10,11 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable, Collection, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from urllib.parse import quote, unquote
 
-from pygls.uris import to_fs_path
+from pygls.uris import from_fs_path, to_fs_path
 
 import mintlang
 from mintlang.allocation import collector_paused
@@ -23,9 +23,10 @@ from mintlang.keyworddb.model import Controller
 from mintlang.lsp.collector import Collector
 from mintlang.lsp.disk import names_in
 from mintlang.lsp.positions import Positions
-from mintlang.pairing import Pairing, listed_as
+from mintlang.pairing import DEFAULT_PATTERN, Pairing, is_program, listed_as
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
+from mintlang.settings import FileSettings, SettingsError, settings_for
 from mintlang.syntax.parser import Document
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
@@ -36,13 +37,21 @@ MAX_CHARACTERS = 500_000  # larger files are not analysed (about 25,000 lines, a
 
 @dataclass(frozen=True, slots=True)
 class Settings:
-    """The ``mint.*`` settings; ``configPairing`` names the configuration file of ``<name>.mnt``."""
+    """The ``mint.*`` settings; ``configPairing`` names the configuration file of ``<name>.mnt``.
+
+    A document's settings are those of its settings file (``mint.toml`` or
+    ``[tool.mint]``, see ``mintlang.settings``) with the editor's over them:
+    ``given`` names the settings the editor sent, which win over the file's.
+    """
 
     controller: Controller = Controller.NEXTMOVE_PCI
     dialect: Dialect = Dialect.V4
-    config_pairing: str = "<name>.cfg"
+    config_pairing: str = DEFAULT_PATTERN
     debounce_ms: int = 150
     select: tuple[str, ...] | None = None  # codes or prefixes; None: the errors and warnings, not the hints
+    ignore: tuple[str, ...] = ()
+    config_file: Path | None = None  # the configuration file of every program (the settings file's ``config``)
+    given: frozenset[str] = frozenset()
 
     @property
     def words(self) -> Vocabulary:
@@ -63,20 +72,35 @@ class Settings:
             "config_pairing": base.config_pairing,
             "debounce_ms": base.debounce_ms,
             "select": base.select,
+            "ignore": base.ignore,
         }
+        given = set(base.given)
         for key, name, convert in (
             ("controller", "controller", Controller),
             ("dialect", "dialect", Dialect),
             ("configPairing", "config_pairing", _pairing_pattern),
             ("debounceMs", "debounce_ms", int),
             ("select", "select", _codes),
+            ("ignore", "ignore", _codes),
         ):
             if options.get(key) is not None:
                 try:
                     values[name] = convert(options[key])
+                    given.add(name)
                 except (ValueError, TypeError):
                     log.warning("ignoring setting mint.%s = %r", key, options[key])
-        return cls(**values)
+        return cls(**values, given=frozenset(given))
+
+    def over(self, project: FileSettings) -> Settings:
+        """These settings over a settings file's: each the editor sent wins; both ignore lists apply."""
+        from_file: dict[str, object] = {
+            "controller": project.controller.value,
+            "dialect": project.dialect.value,
+            "config_pairing": project.config_pairing.value or "",
+            "select": project.selected,
+        }
+        kept = {name: value for name, value in from_file.items() if name not in self.given}
+        return replace(self, **kept, ignore=(*project.ignored, *self.ignore), config_file=project.config.value)
 
 
 @dataclass(frozen=True, slots=True)
@@ -134,6 +158,8 @@ def partner(uri: str, settings: Settings, opened: Collection[str] = ()) -> tuple
     ``opened`` are the URIs of the documents open in the editor: one may not be on disk yet.
     """
     folder, slash, segment = uri.rpartition("/")
+    if settings.config_file is not None and is_program(unquote(segment)):
+        return Unit.PROGRAM, from_fs_path(str(settings.config_file))
     pairing = Pairing.from_pattern(settings.config_pairing)
     if not slash or pairing is None:
         return Unit.PROGRAM, None
@@ -178,10 +204,27 @@ class Analyses:
     encoding: str = "utf-16"  # the position encoding negotiated with the client
     collector: Collector | None = None  # told of each new snapshot, to keep it out of the collector's scans
     _cache: dict[str, tuple[tuple[object, ...], Snapshot]] = field(default_factory=dict)
+    _reported: set[str] = field(default_factory=set)  # settings file problems already logged
+
+    def settings_for(self, uri: str) -> Settings:
+        """The editor's settings over those of the document's settings file, if it is a file that has one.
+
+        A settings file that cannot be used is logged, once while it stays so, and the editor's settings apply.
+        """
+        path = to_fs_path(uri) if uri.startswith("file:") else None
+        if path is None:
+            return self.settings
+        try:
+            return self.settings.over(settings_for(Path(path)))
+        except SettingsError as error:
+            if str(error) not in self._reported:
+                self._reported.add(str(error))
+                log.warning("settings file not used: %s", error)
+            return self.settings
 
     def snapshot(self, uri: str, text: str, version: int | None) -> Snapshot:
         """The analysis of ``text``, reused while neither it, its partner nor the settings change."""
-        settings = self.settings
+        settings = self.settings_for(uri)
         unit, other = partner(uri, settings, self.opened())
         other_text = self.read(other) if other is not None else None
         key = (version, text, other_text, settings, self.encoding)
@@ -225,7 +268,12 @@ class Analyses:
         else:
             program, config = mine, other_text
         analysis = mintlang.check_application(
-            program, dialect=settings.dialect, controller=settings.controller, config=config, select=settings.select
+            program,
+            dialect=settings.dialect,
+            controller=settings.controller,
+            config=config,
+            select=settings.select,
+            ignore=settings.ignore,
         )
         files = {unit: File(uri, Positions(text, self.encoding))}
         if other is not None and other_text is not None:

@@ -54,7 +54,7 @@ def summary(result: RunResult) -> str:
 def register(server: MintServer) -> None:
     @server.command(SIMULATE)
     async def simulate(ls: MintServer, uri: str) -> dict[str, Any] | None:
-        settings = ls.analyses.settings
+        settings = ls.analyses.settings_for(uri)
         unit, other = partner(uri, settings, ls.opened())
         # asked for a configuration file, run the program it configures
         program_uri, configuration_uri = (other, uri) if unit is Unit.CONFIGURATION and other else (uri, other)

@@ -122,6 +122,10 @@ def render_text(data: Mapping[str, Any], console: Console) -> None:
         console.print(f"{name}: [bold]{escape(row['summary'])}[/bold]{detail}")
         for side in ("v3", "v4") if found is not None else ():
             console.print(f"  {side}: {escape(found[side]['value'])}  {_where(found[side], side)}")
+        for other in row["differences"][1:]:
+            values = f"v3 {escape(other['v3']['value'])}, v4 {escape(other['v4']['value'])}"
+            timing = ", timing only" if other["timing_only"] else ""
+            console.print(f"  also differs: {escape(other['what'])} at {other['time_ms']} ms ({values}{timing})")
         for manual in row["not_verified"]:
             where = f"{escape(manual['file'])}:{manual['migrated_line']}" + (" (note)" if manual["note"] else "")
             reason = escape(manual["reason"])

@@ -127,3 +127,17 @@ def test_verify_options_are_checked(tmp_path: Path, arguments: list[str], messag
     result = CliRunner().invoke(migrate, [*arguments, str(path)])
     assert result.exit_code == 2
     assert result.stderr == f"mint-migrate: {message}\n"
+
+
+def test_a_timing_difference_beside_a_real_one_fails_and_each_is_told(tmp_path: Path) -> None:
+    # Without S-ACCEL the v4 program keeps v4's DECEL of 300000 counts/s², where v3's ACCEL = 100000 also set
+    # DECEL (001:5662). v3 slows down from 500 ms (200 ms up to speed, 300 ms at it), v4 only from 566 ms
+    # (its 667 counts to stop): v3's velocity leaves the tube once 100(t + 2 - 500) > 1% of 20000 + 1000,
+    # t > 510 ms; that comes after OUT0's timing difference at 0 ms, and fails the run.
+    code, output, _ = run(tmp_path, TIMING, "--until-ms", "2000", "--skip", "S-ACCEL")
+    lines = output.splitlines()
+    assert code == 1
+    assert lines[0] == f"{tmp_path / 'demo.mnt'}: diverges at 0 ms: OUT bit 0 (OUT 0 / 1)"
+    assert lines[3].startswith("  also differs: axis 0 velocity at ")
+    assert 510 <= int(lines[3].split(" at ")[1].split(" ms")[0]) <= 520
+    assert lines[3].endswith(", v4 20000)")

@@ -16,13 +16,24 @@ from __future__ import annotations
 import difflib
 import json
 import sys
+from dataclasses import dataclass
 from pathlib import Path
 from typing import NoReturn
 
 import click
 from rich.console import Console
 
-from mintlang.cli.options import controller_option
+from mintlang.cli.options import (
+    HELP_OPTIONS,
+    color_option,
+    controller_option,
+    exit_zero_option,
+    format_option,
+    list_option,
+    output_file_option,
+    version_option,
+)
+from mintlang.cli.terminal import console, destination
 from mintlang.diagnostics import split_lines
 from mintlang.migrate import leftovers, verifying
 from mintlang.migrate.api import UnknownRule, rules, select
@@ -65,7 +76,7 @@ def _list_rules(console: Console) -> None:
         console.print(f"{'':<36} {cite(info.evidence)}", style="dim", highlight=False)
 
 
-@click.command(name="migrate", context_settings={"help_option_names": ["-h", "--help"]}, epilog=EXIT_STATUS)
+@click.command(name="migrate", context_settings=HELP_OPTIONS, epilog=EXIT_STATUS)
 @click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
 @click.option("--write", is_flag=True, help="Rewrite the files in place.")
 @click.option("--check", is_flag=True, help="Exit 1 when anything would be rewritten; write nothing.")
@@ -77,12 +88,17 @@ def _list_rules(console: Console) -> None:
     help="Configuration file migrated together with the program (its variables are visible there).",
 )
 @controller_option("The Mint v4 controller to migrate to.")
-@click.option("--format", "output_format", type=click.Choice(["text", "json"]), default="text", show_default=True)
+@format_option(["text", "json"])
+@output_file_option("Write the diff and the report to this file instead of standard output.")
 @click.option("--fail-on", "fail_on", type=click.Choice(["manual"]), help="Exit 1 when manual items are left.")
-@click.option("--only", multiple=True, metavar="RULE", help="Run only this rule (repeatable).")
-@click.option("--skip", multiple=True, metavar="RULE", help="Do not run this rule (repeatable).")
-@click.option("--with", "opt_in", multiple=True, metavar="RULE", help="Also run this optional rule (repeatable).")
+@exit_zero_option("Exit with 0 when the gate fails (--check, --fail-on); 2 still says something was not done.")
+@list_option("--only", metavar="RULES", help="Run only these rules (comma-separated or repeated).")
+@list_option("--skip", metavar="RULES", help="Do not run these rules (comma-separated or repeated).")
+@list_option("--with", "opt_in", metavar="RULES", help="Also run these optional rules (comma-separated or repeated).")
 @click.option("--list-rules", is_flag=True, help="List the rules and exit.")
+@click.option("-q", "--quiet", is_flag=True, help="Leave out the table of files, the rule counts and the totals.")
+@color_option()
+@version_option("mint-migrate")
 @click.option(
     "--verify",
     is_flag=True,
@@ -118,11 +134,15 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
     config: Path | None,
     controller: str,
     output_format: str,
+    output_file: Path | None,
     fail_on: str | None,
+    exit_zero: bool,
     only: tuple[str, ...],
     skip: tuple[str, ...],
     opt_in: tuple[str, ...],
     list_rules: bool,
+    quiet: bool,
+    color: str,
     verify: bool,
     scenario_paths: tuple[Path, ...],
     until_ms: int | None,
@@ -131,7 +151,7 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
 ) -> None:
     """Migrate Mint v3 programs (.mnt) and configuration files (.cfg) to Mint v4."""
     if list_rules:
-        _list_rules(Console(highlight=False, soft_wrap=True))
+        _list_rules(console(color))
         return
     try:
         mode = _mode(write=write, check=check, to_stdout=to_stdout, verify=verify)
@@ -153,7 +173,7 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
         for problem in [*problems, *failed]:
             click.echo(f"mint-migrate: {problem}", err=True)
         sys.exit(_verify_status(verified, fail_on, [*problems, *failed]))
-    _output(items, mode, output_format, controller)
+    _output(items, mode, output_format, controller, Output(output_file, quiet, color))
     if mode == "write":
         try:
             problems += write_changed(migrated)
@@ -161,7 +181,8 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
             problems.append(str(error))
     for problem in problems:
         click.echo(f"mint-migrate: {problem}", err=True)
-    sys.exit(_status(items, mode, fail_on, problems))
+    status = _status(items, mode, fail_on, problems)
+    sys.exit(0 if status == GATE_FAILED and exit_zero else status)
 
 
 def _fail(message: str) -> NoReturn:
@@ -186,23 +207,31 @@ def _tidy(items: list[Migrated], mode: str | None) -> None:
         click.echo(f"mint-migrate: {line}", err=True)
 
 
-def _output(items: list[Migrated], mode: str | None, output_format: str, controller: str) -> None:
+@dataclass(frozen=True, slots=True)
+class Output:
+    """Where the diff and the report go (standard output, or ``--output-file``), and how they look."""
+
+    path: Path | None
+    quiet: bool
+    color: str
+
+
+def _output(items: list[Migrated], mode: str | None, output_format: str, controller: str, output: Output) -> None:
     data = report((item.entry for item in items), controller)
-    to_stderr = mode == "stdout"
-    console = Console(highlight=False, soft_wrap=True, stderr=to_stderr)
     if mode == "stdout":
         result = items[0].entry.result
         if result is not None:
             sys.stdout.buffer.write(items[0].file.encode(result.text))
             sys.stdout.buffer.flush()
-    elif mode is None and output_format == "text":
-        for item in items:
-            if item.entry.result is not None and item.entry.result.changed:
-                click.echo(_diff(item, item.entry.result.text))
-    if output_format == "json":
-        click.echo(json.dumps(data, indent=2, ensure_ascii=False), err=to_stderr)
-    else:
-        render_text(data, console)
+    with destination(output.path, _fail, stderr=mode == "stdout") as stream:
+        if mode is None and output_format == "text":
+            for item in items:
+                if item.entry.result is not None and item.entry.result.changed:
+                    click.echo(_diff(item, item.entry.result.text), file=stream)
+        if output_format == "json":
+            click.echo(json.dumps(data, indent=2, ensure_ascii=False), file=stream)
+        else:
+            render_text(data, console(output.color, file=stream), quiet=output.quiet)
 
 
 def _status(items: list[Migrated], mode: str | None, fail_on: str | None, problems: list[str]) -> int:

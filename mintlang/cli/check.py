@@ -11,8 +11,6 @@ from __future__ import annotations
 import sys
 import time
 from collections import Counter
-from collections.abc import Iterator
-from contextlib import contextmanager
 from pathlib import Path
 from typing import IO, NoReturn
 
@@ -34,7 +32,7 @@ from mintlang.cli.options import (
 )
 from mintlang.cli.parallel import all_cores, map_in_order
 from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, as_statistics, render_text
-from mintlang.cli.terminal import console
+from mintlang.cli.terminal import console, destination
 from mintlang.codes import known_codes
 from mintlang.diagnostics import Diagnostic, Severity
 from mintlang.dialect import Dialect
@@ -84,8 +82,8 @@ def _fail(message: str) -> NoReturn:
 )
 @format_option(["text", "json", "sarif", "github"])
 @output_file_option()
-@list_option("--select", help="Only these codes or code prefixes (E2,W103); comma-separated or repeated.")
-@list_option("--ignore", help="Leave out these codes or code prefixes; comma-separated or repeated.")
+@list_option("--select", absent=None, help="Only these codes or code prefixes (E2,W103); comma-separated or repeated.")
+@list_option("--ignore", absent=None, help="Leave out these codes or code prefixes; comma-separated or repeated.")
 @click.option(
     "--statistics", is_flag=True, help="Count the findings of each code instead of showing each (text, json)."
 )
@@ -159,7 +157,7 @@ def check(
     if configuration is not None:
         reports.insert(0, _configuration_report(configuration, [r.configuration for r in results if r.report], options))
     if reports:
-        with _destination(output_file) as stream:
+        with destination(output_file, _fail) as stream:
             _write(reports, stream, output_format, statistics=statistics, quiet=quiet, color=color)
     for problem in problems:
         click.echo(f"mint check: {problem}", err=True)
@@ -191,20 +189,6 @@ def _configuration(path: Path | None) -> SourceFile | None:
 def _read_stdin(name: str | None) -> SourceFile:
     text, encoding = decode(click.get_binary_stream("stdin").read())
     return SourceFile(Path(name or "-"), text, encoding)
-
-
-@contextmanager
-def _destination(path: Path | None) -> Iterator[IO[str]]:
-    """Standard output, or the ``--output-file`` (a file that cannot be written ends the command)."""
-    if path is None:
-        yield sys.stdout
-        return
-    try:
-        stream = path.open("w", encoding="utf-8")
-    except OSError as error:
-        _fail(f"cannot write {path}: {error.strerror or error}")
-    with stream:
-        yield stream
 
 
 def _write(

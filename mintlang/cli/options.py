@@ -39,20 +39,20 @@ def version_option(prog_name: str) -> Callable[[F], F]:
     return click.version_option(package_name="mintlang", prog_name=prog_name)
 
 
-def _comma_separated(
-    _context: click.Context, _parameter: click.Parameter, values: tuple[str, ...]
-) -> tuple[str, ...] | None:
-    if not values:
-        return None
-    return tuple(part.strip() for value in values for part in value.split(",") if part.strip())
-
-
-def list_option(*names: str, **settings: object) -> Callable[[F], F]:
+def list_option(*names: str, absent: tuple[str, ...] | None = (), **settings: object) -> Callable[[F], F]:
     """An option taking several values: repeated (``--x A --x B``), comma-separated (``--x A,B``) or both.
 
-    The command receives a tuple of the values (empty for ``--x ""``), or None when the option was not given.
+    The command receives a tuple of the values (empty for ``--x ""``), or ``absent`` when the option was not given.
     """
-    return click.option(*names, multiple=True, callback=_comma_separated, **settings)  # type: ignore[call-overload]
+
+    def comma_separated(
+        _context: click.Context, _parameter: click.Parameter, values: tuple[str, ...]
+    ) -> tuple[str, ...] | None:
+        if not values:
+            return absent
+        return tuple(part.strip() for value in values for part in value.split(",") if part.strip())
+
+    return click.option(*names, multiple=True, callback=comma_separated, **settings)  # type: ignore[call-overload]
 
 
 def format_option(choices: Sequence[str], help_text: str = "How to write the report.") -> Callable[[F], F]:

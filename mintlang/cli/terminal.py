@@ -8,9 +8,12 @@ when a console is made, so ``--version`` and ``--help`` never pay for it.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+import sys
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
-from typing import IO, TYPE_CHECKING
+from pathlib import Path
+from typing import IO, TYPE_CHECKING, NoReturn
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -28,6 +31,20 @@ def console(color: str = "auto", *, stderr: bool = False, file: IO[str] | None =
     elif color == "always":
         settings |= {"force_terminal": True, "no_color": False}
     return Console(**settings)  # type: ignore[arg-type]
+
+
+@contextmanager
+def destination(path: Path | None, fail: Callable[[str], NoReturn], *, stderr: bool = False) -> Iterator[IO[str]]:
+    """Standard output (or error), or the ``--output-file``; one that cannot be opened is ``fail``'s one line."""
+    if path is None:
+        yield sys.stderr if stderr else sys.stdout
+        return
+    try:
+        stream = path.open("w", encoding="utf-8")
+    except OSError as error:
+        fail(f"cannot write {path}: {error.strerror or error}")
+    with stream:
+        yield stream
 
 
 @dataclass(frozen=True, slots=True)

@@ -15,9 +15,11 @@ tolerances ``tolerance`` states::
 
 The answer is a ``Verification``: equivalent, a timing difference X-GO-TIMING
 expected, the first divergence (time, the line each run was at, what differs),
-or incomplete when the simulation could not go on. Statements the migration
-left for a person are listed as not verified, and those v4 rejects are made
-comments for the v4 run (``runnable``).
+or incomplete when the comparison cannot cover the run (the v3 original does not
+compile, the migration compiles only once a flagged line is done, a run meets
+what the simulator does not model). Everything the migration left for a person,
+application notes included, is listed as not verified, and the flagged lines v4
+finds in error are made comments for the v4 run (``runnable``).
 """
 
 from __future__ import annotations

@@ -75,10 +75,6 @@ class Verification:
     v4_controller: str
     v3_stop: Stopped
     v4_stop: Stopped
-    not_verified: tuple[tuple[str, ManualItem], ...]  # (unit, item): statements flagged for a person
-    disabled: tuple[Place, ...]  # flagged lines v4 rejects, made comments for the v4 run
+    not_verified: tuple[tuple[str, ManualItem], ...]  # (unit, item): every manual item and application note
+    disabled: tuple[Place, ...]  # flagged lines v4 finds in error, made comments for the v4 run
     short: str | None = None  # why the comparison ends before the runs do (INCOMPLETE)
-
-    @property
-    def failed(self) -> bool:
-        return self.verdict is Verdict.DIVERGES

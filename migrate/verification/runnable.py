@@ -31,10 +31,10 @@ _EXPECT = re.compile(r"REM\s*@expect\b", re.IGNORECASE)
 _COMMENT = "REM "
 
 
-def original(result: MigrationResult, dialect: Dialect = Dialect.V3) -> Application:
+def original(result: MigrationResult) -> Application:
     """The v3 application the migration read."""
     configuration = result.configuration.source if result.configuration is not None else None
-    return Application(without_expectations(result.source, dialect), _without(configuration, dialect))
+    return Application(without_expectations(result.source, Dialect.V3), _without(configuration, Dialect.V3))
 
 
 def migrated(result: MigrationResult, controller: str) -> tuple[Application, tuple[Place, ...]]:

@@ -46,16 +46,14 @@ class AxisTrace:
 
 @dataclass(slots=True)
 class Recording:
-    """A run: its samples (index = simulated millisecond), the program's output, the controller's messages."""
+    """A run: its samples (index = simulated millisecond), the program's output and how it stopped."""
 
-    dialect: Dialect
     places: list[Place | None] = field(default_factory=list)  # the statement running, None once it ended
     outputs: array[int] = field(default_factory=lambda: array("q"))
     relay: array[int] = field(default_factory=lambda: array("q"))
     axes: list[AxisTrace] = field(default_factory=list)
     text: str = ""
     pieces: list[Piece] = field(default_factory=list)
-    messages: list[str] = field(default_factory=list)  # the controller's own (errors), as printed
     stop: Stop | None = None
     refused: bool = False  # the controller's compiler rejected the application: nothing of the program ran
 
@@ -94,8 +92,8 @@ class Recording:
 class _Recorder:
     """The observer of one run: ``on_start``, ``echo`` and ``on_tick`` of ``run_source``."""
 
-    def __init__(self, dialect: Dialect) -> None:
-        self.recording = Recording(dialect)
+    def __init__(self) -> None:
+        self.recording = Recording()
         self.controller: Controller | None = None
         self.chunks: list[str] = []
         self.length = 0
@@ -117,13 +115,11 @@ class _Recorder:
 
     def echo(self, text: str) -> None:
         controller = self.controller
-        recording = self.recording
         if controller is None or self.announcing or controller.vm.stopped is not None:
-            recording.messages.append(text)  # a run-time error's message, or a compile error's after the run
-            return
+            return  # the controller's message about an error (compared as the run's stop), not the program's output
         site = controller.vm.current_site()
         place = Place(site.unit, site.line) if site is not None else None
-        recording.pieces.append(Piece(self.length, controller.clock.now, place))
+        self.recording.pieces.append(Piece(self.length, controller.clock.now, place))
         self.chunks.append(text)
         self.length += len(text)
 
@@ -150,7 +146,7 @@ def record(
     max_wall_s: float | None,
 ) -> Recording:
     """Run an application to its end (and the machine to rest) or ``until_ms``, recording every millisecond."""
-    recorder = _Recorder(dialect)
+    recorder = _Recorder()
     limits = Limits(until_ms=until_ms, max_wall_s=max_wall_s, every_tick=True, settle=True)
     result = run_source(
         application.program,
@@ -167,6 +163,4 @@ def record(
     recording.text = "".join(recorder.chunks)
     recording.stop = result.stop
     recording.refused = result.refused
-    if result.stop.reason is StopReason.ERROR and not recording.messages and recording.short is None:
-        recording.messages.append(result.stop.message)  # refused before it was built: nothing was printed
     return recording

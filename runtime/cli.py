@@ -32,6 +32,8 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
 from mintlang.cli.files import program_as_own_configuration
+from mintlang.cli.options import HELP_OPTIONS, color_option, exit_zero_option, version_option
+from mintlang.cli.terminal import console
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller as ControllerName
@@ -91,7 +93,7 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
     return seconds
 
 
-@click.command()
+@click.command(context_settings=HELP_OPTIONS)
 @click.argument("program", type=click.Path(path_type=Path))
 @click.option(
     "--config", "config_path", type=click.Path(path_type=Path), help="Configuration file run before the program."
@@ -152,14 +154,18 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
 )
 @click.option("--trace-axes", help="Axes to trace and plot, e.g. 0,1 (default: every axis).")
 @click.option(
-    "--report", "report_format", type=click.Choice(["json"]), help="Print a report of the final state at the end."
+    "--format",
+    "--report",
+    "report_format",
+    type=click.Choice(["json"]),
+    help="Print a report of the final state at the end, after the program's output.",
 )
 @click.option(
+    "--output-file",
     "--report-file",
     "report_path",
     type=click.Path(path_type=Path),
-    help="Write the --report json report to this file, with or without --report (on stdout it follows "
-    "the program's output).",
+    help="Write the json report to this file, with or without --format.",
 )
 @click.option("--realtime", is_flag=True, help="Pace the simulation to real time.")
 @click.option(
@@ -167,6 +173,12 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
     type=click.IntRange(min=0, max=65535),
     help="Serve the host comms protocol on this TCP port of 127.0.0.1.",
 )
+@exit_zero_option("Exit with 0 when the program stops on an error or an expectation fails (2 still reports misuse).")
+@click.option(
+    "-q", "--quiet", is_flag=True, help="No progress bar, and no closing line when the program ends normally."
+)
+@color_option()
+@version_option("mint-run")
 def run(  # noqa: PLR0917 - click passes every option as an argument
     program: Path,
     config_path: Path | None,
@@ -184,12 +196,15 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     report_path: Path | None,
     realtime: bool,
     host_port: int | None,
+    exit_zero: bool,
+    quiet: bool,
+    color: str,
 ) -> None:
     """Run a Mint program against simulated axes, I/O and a host.
 
     Ctrl-C (exit 130) or SIGTERM (exit 143) stops the run where it is; the report and the trace are still written.
     """
-    errors = Console(stderr=True, highlight=False, soft_wrap=True)
+    errors = console(color, stderr=True)
     if config_path is not None and program_as_own_configuration([program], config_path):
         raise click.UsageError(f"--config {config_path} is the program {program} itself: name the configuration file")
     try:
@@ -226,7 +241,7 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     axes = _axes_list(trace_axes, simulated) or tuple(range(simulated.axis_count))
     trace = Trace(axes, trace_path, plotting=plot_path is not None) if tracing else None
     termination = _Termination()
-    recorders = _Recorders(trace, termination, errors, until_ms)
+    recorders = _Recorders(trace, termination, errors, until_ms, progress=not quiet and sys.stderr.isatty())
     stdout = _Stdout(live=realtime or host_port is not None)
     simulate = partial(
         run_source,
@@ -244,12 +259,14 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
         with _trace_open(trace), recorders.progress:
             result = _simulate(simulate, termination)
         stdout.flush()
-        _describe_stop(result, errors)
+        if not (quiet and result.stop.reason in (StopReason.END, StopReason.UNTIL)):
+            _describe_stop(result, errors)
         if result.outcomes:
             render_outcomes(result.outcomes, errors)
         _report(result, report_format, report_path)
         _outputs(trace, plot_path)  # after the report, so an output that fails does not take the results with it
-    sys.exit(_exit_status(result, stdout.closed, termination.received, expect=bool(expect_paths)))
+    status = _exit_status(result, stdout.closed, termination.received, expect=bool(expect_paths))
+    sys.exit(0 if status == _FAILED and exit_zero else status)
 
 
 def _simulate(simulate: Callable[[], RunResult], termination: _Termination) -> RunResult:
@@ -419,7 +436,9 @@ def _scenario(paths: tuple[Path, ...], controller: ControllerProfile, dialect: D
 class _Recorders:
     """The per-tick observers of a run: SIGTERM, the trace and the progress bar."""
 
-    def __init__(self, trace: Trace | None, termination: _Termination, console: Console, until_ms: int | None) -> None:
+    def __init__(
+        self, trace: Trace | None, termination: _Termination, console: Console, until_ms: int | None, *, progress: bool
+    ) -> None:
         self.trace = trace
         self.termination = termination
         self.console = console
@@ -429,7 +448,7 @@ class _Recorders:
             TimeElapsedColumn(),
             console=console,
             transient=True,
-            disable=not console.is_terminal,
+            disable=not progress,
             # on one screen, what the program prints goes above the bar; piped, it goes to its file untouched
             redirect_stdout=sys.stdout.isatty(),
             redirect_stderr=False,

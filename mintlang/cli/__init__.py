@@ -12,6 +12,7 @@ import click
 
 from mintlang.cli.check import check
 from mintlang.cli.options import HELP_OPTIONS, version_option
+from mintlang.cli.rule import rule
 
 
 class _Commands(click.Group):
@@ -36,3 +37,4 @@ def main() -> None:
 
 
 main.add_command(check)
+main.add_command(rule)

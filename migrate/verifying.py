@@ -8,7 +8,7 @@ the migrated applications into the report ``verification.report`` prints.
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import click
@@ -83,8 +83,9 @@ def verify_all(migrated: list[list[Migrated]], settings: Settings) -> tuple[list
                 scenario=settings.scenario,
                 until_ms=settings.until_ms,
             )
-        except ScenarioFileError as error:
-            problems.append(str(error).replace("\n", "; "))
+        except ScenarioFileError as error:  # a REM @sim line of the program, which the v3 run reads first
+            program = paths.get("program") or paths.get("configuration") or ""
+            problems += [str(replace(mistake, source=program)) for mistake in error.errors]
             continue
         verified.append(Verified(paths.get("program"), paths.get("configuration"), found))
     return verified, problems

@@ -141,3 +141,14 @@ def test_a_timing_difference_beside_a_real_one_fails_and_each_is_told(tmp_path: 
     assert lines[3].startswith("  also differs: axis 0 velocity at ")
     assert 510 <= int(lines[3].split(" at ")[1].split(" ms")[0]) <= 520
     assert lines[3].endswith(", v4 20000)")
+
+
+def test_a_rem_sim_line_that_cannot_be_read_names_its_program_and_the_others_are_verified(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.mnt"
+    bad.write_text("REM @sim input banana\nPRINT 1\n")
+    good = tmp_path / "good.mnt"
+    good.write_text(EQUIVALENT)
+    result = CliRunner().invoke(migrate, ["--verify", "--drives", "enabled", str(bad), str(good)])
+    assert result.exit_code == 2
+    assert result.stderr == f"mint-migrate: {bad}:1: expected an input channel as a whole number, not 'banana'\n"
+    assert result.stdout.splitlines()[0] == f"{good}: equivalent over 602 ms"

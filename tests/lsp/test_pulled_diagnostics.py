@@ -86,4 +86,4 @@ async def test_a_new_controller_setting_asks_the_client_to_pull_again(pulling, t
         types.DidChangeConfigurationParams(settings={"mint": {"controller": "mintdrive"}})
     )
     await refreshed(pulling, before)
-    assert await pull(pulling, uri) == {"E8"}  # MintDrive: outputs 0 to 8
+    assert await pull(pulling, uri) == {"E0008"}  # MintDrive: outputs 0 to 8

@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import replace
 from unittest import mock
 
-from mintlang.migrate import MigrationResult, migrate
+from mintlang.migrate import ManualItem, MigrationResult, migrate
 from mintlang.migrate.rules import renames
 from mintlang.migrate.verification import Place, Verdict, verify
 from mintlang.runtime.scenario import DrivesEnabled, InputLevel, Scenario
@@ -163,3 +163,27 @@ def test_the_scenario_drives_both_runs() -> None:
     assert (found.v3_stop.reason, found.v3_stop.time_ms) == ("end", 100)
     unpressed = verify(migrate(program), until_ms=1000)
     assert (unpressed.v3_stop.reason, unpressed.v4_stop.reason) == ("deadlock", "deadlock")
+
+
+def _migration(v3: str, v4: str, *flagged_lines: int) -> MigrationResult:
+    """A migration as a rule might have made it, with a manual item on each of ``flagged_lines``."""
+    manual = tuple(ManualItem("X-TEST", line, "left for a person", line) for line in flagged_lines)
+    return MigrationResult(v3, v4, (), manual, {})
+
+
+def test_a_flagged_line_whose_removal_breaks_its_block_is_kept_and_the_comparison_waits_for_it() -> None:
+    # zz is not declared in v4: line 1 is in error, but without it ENDIF (line 3) would have no IF
+    found = verify(_migration('PRINT "x"\n', 'IF zz DO\nPRINT "x"\nENDIF\n', 1), until_ms=100)
+    assert found.disabled == ()
+    assert found.verdict is Verdict.INCOMPLETE
+    assert found.short is not None
+    assert found.short.startswith("the v4 program does not compile until program line 1, left for a person, is done")
+
+
+def test_a_line_in_error_nobody_flagged_is_a_divergence_at_the_start() -> None:
+    found = verify(_migration('PRINT "x"\n', 'PRINT "x"\nLOOP\n'), until_ms=100)
+    assert found.verdict is Verdict.DIVERGES
+    assert found.divergence is not None
+    assert (found.divergence.time_ms, found.divergence.what) == (0, "stop")
+    assert found.divergence.v4_line == Place("program", 2)
+    assert found.divergence.v3 == "end at 0 ms"

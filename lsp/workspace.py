@@ -18,6 +18,7 @@ from pygls.uris import from_fs_path, to_fs_path
 
 import mintlang
 from mintlang.allocation import collector_paused
+from mintlang.codes import selector
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.lsp.collector import Collector
@@ -135,11 +136,11 @@ TextReader = Callable[[str], str | None]  # uri -> text of an open document or f
 
 
 def _codes(value: object) -> tuple[str, ...]:
-    """Codes or prefixes as a list (``["E", "I201"]``) or comma-separated (``"E,I201"``)."""
+    """Codes or prefixes, listed (``["E", "I201"]``) or comma-separated (``"E,I201"``), read as --select reads them."""
     items = value.split(",") if isinstance(value, str) else value
     if not isinstance(items, list | tuple) or not all(isinstance(item, str) for item in items):
         raise TypeError("a list of codes")
-    return tuple(item.strip().upper() for item in items if item.strip())
+    return tuple(selector(item) for item in items if item.strip())
 
 
 def _pairing_pattern(value: object) -> str:

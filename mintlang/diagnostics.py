@@ -78,8 +78,8 @@ class Fix:
 class Diagnostic:
     """One finding.
 
-    ``code`` is ``E<n>`` for the controller's own error numbers (``mint_error``
-    then holds ``n``) and ``W…``/``I…`` for the toolchain's own checks.
+    ``code`` is ``E<nnnn>`` for the controller's own error numbers, in four digits
+    (``mint_error`` then holds the number) and ``W…``/``I…`` for the toolchain's own checks.
     """
 
     code: str

@@ -182,13 +182,13 @@ def test_the_controller_changes_the_results(tmp_path: Path) -> None:
     assert mint_check(path).exit_code == 0
     result = mint_check("--controller", "nextmove-bx", "--format", "json", path)
     assert result.exit_code == 1
-    assert [(r["code"], r["line"]) for r in json.loads(result.stdout)] == [("E2", 1)]
+    assert [(r["code"], r["line"]) for r in json.loads(result.stdout)] == [("E0002", 1)]
 
 
 def test_the_controller_changes_the_message_of_speed_12(tmp_path: Path) -> None:
     path = write(tmp_path, "axis.mnt", "SPEED.12 = 1\n")
     (record,) = json_records("--controller", "nextmove-bx", path)
-    assert record["code"] == "E2"
+    assert record["code"] == "E0002"
     assert "NextMove BX" in record["message"]
 
 

@@ -246,18 +246,18 @@ def test_a_misspelt_keyword_with_a_variable_dot_parameter_is_error_3007() -> Non
 
 def test_a_keyword_the_controller_lacks_is_error_17() -> None:
     # line 9420: DRIVEENABLESWITCH has attributes for MintDrive only; line 18570: #17
-    assert found("DIM a\na = DRIVEENABLESWITCH\n") == [("E17", ERROR, 2)]
+    assert found("DIM a\na = DRIVEENABLESWITCH\n") == [("E0017", ERROR, 2)]
     assert found("DIM a\na = DRIVEENABLESWITCH\n", controller="mintdrive") == []
 
 
 def test_dac_of_the_one_axis_is_read_on_mintdrive() -> None:
     # 000:8778-8793 reads DAC on MintDrive; footnote 7 (5666): no difference between axis and channel keywords
     assert found("DIM d\nd = DAC.0\nPRINT d\n", controller="mintdrive") == []
-    assert [code for code, _, _ in found("DIM d\nd = DAC.1\nPRINT d\n", controller="mintdrive")] == ["E4"]
+    assert [code for code, _, _ in found("DIM d\nd = DAC.1\nPRINT d\n", controller="mintdrive")] == ["E0004"]
 
 
 def test_a_keyword_the_controller_lacks_is_not_also_a_channel_out_of_range() -> None:
-    assert found("DIM d\nd = AUXDAC.0\nPRINT d\n") == [("E17", ERROR, 2)]
+    assert found("DIM d\nd = AUXDAC.0\nPRINT d\n") == [("E0017", ERROR, 2)]
 
 
 def test_release_is_allowed_in_a_configuration_file_only() -> None:
@@ -293,7 +293,7 @@ def test_auto_anywhere_but_first_in_the_configuration_file_is_ignored() -> None:
     assert codes("REM set-up\nAUTO\n") == (["W114"], [])
     assert codes("REM set-up\n", "AUTO\nPRINT 1\n") == ([], ["W114"])
     # NextMove PCI has no AUTO at all: error 17 says so, without W114
-    assert found("AUTO\nPRINT 1\n") == [("E17", ERROR, 1)]
+    assert found("AUTO\nPRINT 1\n") == [("E0017", ERROR, 1)]
 
 
 def test_relay_is_read_and_written_as_its_formats_show() -> None:
@@ -352,8 +352,8 @@ def test_an_axis_listed_twice_is_error_2018() -> None:
 
 def test_an_axis_beyond_the_controller_is_error_2() -> None:
     # line 5613: NextMove BX axes 0 to 7; line 18514: #2 Axis specified out of range
-    assert found("SPEED.12 = 1\n", controller="nextmove-bx") == [("E2", ERROR, 1)]
-    assert found("SPEED.8 = 1\n", controller="nextmove-bx") == [("E2", ERROR, 1)]
+    assert found("SPEED.12 = 1\n", controller="nextmove-bx") == [("E0002", ERROR, 1)]
+    assert found("SPEED.8 = 1\n", controller="nextmove-bx") == [("E0002", ERROR, 1)]
     assert found("SPEED.7 = 1\n", controller="nextmove-bx") == []
     assert found("SPEED.8 = 1\n", controller="nextmove-pci") == []
 
@@ -362,13 +362,13 @@ def test_an_axis_beyond_the_controller_is_error_2() -> None:
     ("source", "controller", "code"),
     [
         # line 5613, the Dot Parameters table; errors 4, 7 and 8 of section 12.2 (line 18522)
-        ("DIM v\nv = ADC.8\n", "nextmove-bx", "E4"),
-        ("DIM v\nv = ADC.4\n", "mintdrive", "E4"),
-        ("DIM v\nv = IN16\n", "nextmove-bx", "E7"),
-        ("DIM v\nv = IN.16\n", "nextmove-bx", "E7"),
-        ("DIM v\nv = IN60\n", "nextmove-pci", "E7"),
-        ("OUT8 = 1\n", "nextmove-bx", "E8"),
-        ("OUT.3 = 1\n", "servonode51", "E8"),
+        ("DIM v\nv = ADC.8\n", "nextmove-bx", "E0004"),
+        ("DIM v\nv = ADC.4\n", "mintdrive", "E0004"),
+        ("DIM v\nv = IN16\n", "nextmove-bx", "E0007"),
+        ("DIM v\nv = IN.16\n", "nextmove-bx", "E0007"),
+        ("DIM v\nv = IN60\n", "nextmove-pci", "E0007"),
+        ("OUT8 = 1\n", "nextmove-bx", "E0008"),
+        ("OUT.3 = 1\n", "servonode51", "E0008"),
     ],
 )
 def test_a_channel_beyond_the_controller_is_an_error(source: str, controller: str, code: str) -> None:
@@ -409,14 +409,14 @@ def test_a_channel_keyword_with_brackets_is_a_syntax_error() -> None:
 
 def test_a_constant_outside_the_keywords_range_is_error_3() -> None:
     # line 534: SCALE = -1 gives "Out of range" (#3, line 18518)
-    assert found("SCALE = -1\n") == [("E3", ERROR, 1)]
+    assert found("SCALE = -1\n") == [("E0003", ERROR, 1)]
     assert found("SCALE = 10\n") == []
 
 
 def test_a_bound_printed_with_less_than_is_left_out() -> None:
     # 000:14910-14913: OUT is 0 ≤ x < 4096 on NextMove PCI and 0 ≤ x < 256 on NextMove BX
-    assert found("OUT = 4096\nOUT = 4095\n") == [("E3", ERROR, 1)]
-    assert found("OUT = 256\nOUT = 255\n", controller="nextmove-bx") == [("E3", ERROR, 1)]
+    assert found("OUT = 4096\nOUT = 4095\n") == [("E0003", ERROR, 1)]
+    assert found("OUT = 256\nOUT = 255\n", controller="nextmove-bx") == [("E0003", ERROR, 1)]
 
 
 def test_scaled_keywords_are_not_range_checked() -> None:

@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Generic, TypeVar
 
 from mintlang.analysis.analyser import DEFAULT_SELECT
-from mintlang.codes import known_codes
+from mintlang.codes import selector
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.pairing import DEFAULT_PATTERN, Pairing
@@ -37,18 +37,13 @@ class Given(Generic[T]):
 
 
 def selectors(items: object) -> tuple[str, ...]:
-    """Codes or code prefixes (``E2``, ``W103``), upper-cased; a typo would silently hide findings, so none passes.
+    """Codes or code prefixes (``E2``, ``W103``) read as ``--select`` reads them; a typo would hide findings.
 
     Raises ValueError (TypeError for something other than a list of strings).
     """
     if not isinstance(items, list | tuple) or not all(isinstance(item, str) for item in items):
         raise TypeError('must be a list of codes or code prefixes, such as ["E2", "W103"]')
-    codes = tuple(item.strip().upper() for item in items if item.strip())
-    known = known_codes()
-    for code in codes:
-        if not any(name.startswith(code) for name in known):
-            raise ValueError(f"'{code}' is no code and begins none (E2003, W1, I201 ...)")
-    return codes
+    return tuple(selector(item) for item in items if item.strip())
 
 
 def _choice(kind: type[Controller] | type[Dialect]) -> Callable[[object], Controller | Dialect]:

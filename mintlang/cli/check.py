@@ -192,7 +192,7 @@ def _configuration(path: Path | None) -> SourceFile | None:
 
 
 def _read_stdin(name: str | None) -> SourceFile:
-    text, encoding = decode(click.get_binary_stream("stdin").read())
+    text, encoding = decode(sys.stdin.buffer.read())
     return SourceFile(Path(name or "-"), text, encoding)
 
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import asyncio
 import logging
 import time
+from collections.abc import Iterable
 
 from lsprotocol import types
 
@@ -75,6 +76,16 @@ def refresh_all(server: MintServer) -> None:
         return
     for uri in list(server.workspace.text_documents):
         publish(server, uri)
+
+
+def recheck(server: MintServer, uris: Iterable[str]) -> None:
+    """Files these documents read changed on disk: their diagnostics may have."""
+    uris = list(uris)
+    if uris and _pulls(server):
+        _refresh_pulled(server)
+    elif uris:
+        for uri in uris:
+            publish(server, uri)
 
 
 def publish(server: MintServer, uri: str) -> None:

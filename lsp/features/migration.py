@@ -98,7 +98,7 @@ def _errors(snapshot: Snapshot, texts: Texts, fixes: Iterable[mintlang.Fix]) -> 
     """The v4 checker's errors in the snapshot's file once ``fixes`` are made, by code and message."""
     edited = {**texts, snapshot.unit: _applied(texts[snapshot.unit], (e for fix in fixes for e in fix.edits))}
     analysis = mintlang.check_application(
-        edited[Unit.PROGRAM],
+        edited.get(Unit.PROGRAM, ""),  # a configuration file alone is checked with an empty program
         config=edited.get(Unit.CONFIGURATION),
         dialect=Dialect.V4,
         controller=snapshot.settings.controller,

@@ -8,17 +8,33 @@ from pathlib import Path
 import pytest
 import pytest_lsp
 from lsprotocol import types
-from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
+from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities, make_test_lsp_client
 
 CORPUS = Path(__file__).parents[1] / "corpus" / "v4" / "valid"
 SERVER = [sys.executable, "-m", "mintlang.lsp"]
+
+
+def editor_client() -> LanguageClient:
+    """pytest-lsp's client, granting the server's registrations as an editor does (it keeps them in
+    ``registrations``): a request it has no handler for fails the test."""
+    client = make_test_lsp_client()
+    client.registrations = []
+
+    @client.feature(types.CLIENT_REGISTER_CAPABILITY)
+    def register(params: types.RegistrationParams) -> None:
+        client.registrations.extend(params.registrations)
+
+    return client
+
+
+EDITOR = ClientServerConfig(server_command=SERVER, client_factory=editor_client)
 
 
 def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "slow: runs for tens of seconds (CI runs it; -m 'not slow' skips it)")
 
 
-@pytest_lsp.fixture(config=ClientServerConfig(server_command=SERVER))
+@pytest_lsp.fixture(config=EDITOR)
 async def client(lsp_client: LanguageClient):
     params = types.InitializeParams(
         capabilities=client_capabilities("visual-studio-code"),

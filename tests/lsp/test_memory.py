@@ -17,9 +17,9 @@ from pathlib import Path
 import pytest
 import pytest_lsp
 from lsprotocol import types
-from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
+from pytest_lsp import LanguageClient, client_capabilities
 
-from tests.lsp.conftest import SERVER, change, document, open_document, uri_of
+from tests.lsp.conftest import EDITOR, change, document, open_document, uri_of
 
 pytestmark = [
     pytest.mark.asyncio,
@@ -32,7 +32,7 @@ PROGRAM = (
 )
 
 
-@pytest_lsp.fixture(config=ClientServerConfig(server_command=SERVER))
+@pytest_lsp.fixture(config=EDITOR)
 async def pushed(lsp_client: LanguageClient):
     """A client that is pushed diagnostics with no debounce: every edit is checked."""
     params = types.InitializeParams(

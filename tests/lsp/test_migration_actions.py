@@ -12,9 +12,9 @@ from __future__ import annotations
 import pytest
 import pytest_lsp
 from lsprotocol import types
-from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
+from pytest_lsp import LanguageClient, client_capabilities
 
-from tests.lsp.conftest import SERVER, document, open_document, published, uri_of
+from tests.lsp.conftest import EDITOR, document, open_document, published, uri_of
 
 pytestmark = pytest.mark.asyncio
 MIGRATE, REPLACE = "Migrate this file to Mint v4", "Replace v3 keywords"
@@ -93,7 +93,7 @@ async def test_a_v3_file_is_migrated_with_its_configuration_after_confirmation(c
     assert {edit.new_text for edit in edits[uri_of(config)]} == {"AXES[0,1,2]\n", "HOMESPEED.0 = 5\n"}
 
 
-@pytest_lsp.fixture(config=ClientServerConfig(server_command=SERVER))
+@pytest_lsp.fixture(config=EDITOR)
 async def neovim(lsp_client: LanguageClient):
     params = types.InitializeParams(
         capabilities=client_capabilities("neovim@v0.7.0"), initialization_options={"mint": {"debounceMs": 0}}
@@ -138,3 +138,12 @@ async def test_an_action_offered_on_an_older_version_is_not_resolved(client, tmp
         )
     )
     assert (await client.code_action_resolve_async(action)).edit is None
+
+
+async def test_a_configuration_file_alone_gets_its_v3_words_replaced(client, tmp_path):
+    uri = uri_of(tmp_path / "alone.cfg")
+    await open_document(client, uri, "SCALE.0 = 1000\nHMSPEED.0 = 5\n")
+    offered = await source_actions(client, uri)
+    assert set(offered) == {REPLACE}  # the migration starts from a program
+    resolved = await client.code_action_resolve_async(offered[REPLACE])
+    assert [edit.new_text for edit in resolved.edit.changes[uri]] == ["HOMESPEED"]

@@ -1,0 +1,106 @@
+"""A configuration file changed on disk re-checks the open programs paired with it.
+
+A client that watches files is asked to (dynamic registration) and tells the
+server what changed; for one that cannot, the server looks at the partner
+files itself, once a second.
+"""
+
+from __future__ import annotations
+
+import asyncio
+
+import pytest
+import pytest_lsp
+from lsprotocol import types
+from pytest_lsp import LanguageClient, client_capabilities
+
+from mintlang.lsp.features.watched_files import globs
+from tests.lsp.conftest import EDITOR, open_document, published, uri_of
+
+PROGRAM = "DIM total = 0\ntotal = target + 1\nPRINT total\n"  # target: declared by the configuration file
+
+
+def codes(diagnostics: list[types.Diagnostic]) -> list[str]:
+    return [str(diagnostic.code) for diagnostic in diagnostics]
+
+
+def test_programs_and_paired_files_are_watched_in_any_letter_case():
+    assert globs("<name>.cfg") == ["**/*.[mM][nN][tT]", "**/*.[cC][fF][gG]"]
+    assert globs("setup_<name>.txt") == ["**/*.[mM][nN][tT]", "**/[sS][eE][tT][uU][pP]_*.[tT][xX][tT]"]
+    assert globs("") == ["**/*.[mM][nN][tT]"]  # no configuration files
+
+
+@pytest_lsp.fixture(config=EDITOR)
+async def watching(lsp_client: LanguageClient):
+    """A client that pushes diagnostics and watches files for the server (as Neovim 0.9+ does)."""
+    capabilities = client_capabilities("neovim@v0.7.0")
+    capabilities.workspace.did_change_watched_files = types.DidChangeWatchedFilesClientCapabilities(
+        dynamic_registration=True
+    )
+    params = types.InitializeParams(capabilities=capabilities, initialization_options={"mint": {"debounceMs": 0}})
+    await lsp_client.initialize_session(params)
+    yield
+    await lsp_client.shutdown_session()
+
+
+@pytest_lsp.fixture(config=EDITOR)
+async def blind(lsp_client: LanguageClient):
+    """A client that cannot watch files (Neovim 0.7)."""
+    params = types.InitializeParams(
+        capabilities=client_capabilities("neovim@v0.7.0"), initialization_options={"mint": {"debounceMs": 0}}
+    )
+    await lsp_client.initialize_session(params)
+    yield
+    await lsp_client.shutdown_session()
+
+
+@pytest.mark.asyncio
+async def test_a_watching_client_is_asked_to_watch_and_its_news_re_check(watching, tmp_path):
+    for _ in range(100):
+        if watching.registrations:
+            break
+        await asyncio.sleep(0.05)
+    [registration] = watching.registrations
+    assert registration.method == types.WORKSPACE_DID_CHANGE_WATCHED_FILES
+    config, other = tmp_path / "APP.CFG", tmp_path / "other.cfg"
+    config.write_text("REM nothing yet\n", encoding="utf-8")
+    other.write_text("DIM target = 3\n", encoding="utf-8")
+    uri = uri_of(tmp_path / "app.mnt")
+    assert "E3001" in codes(await open_document(watching, uri, PROGRAM))
+    watching.workspace_did_change_watched_files(  # a file the program does not read: nothing to do
+        types.DidChangeWatchedFilesParams(
+            changes=[types.FileEvent(uri=uri_of(other), type=types.FileChangeType.Changed)]
+        )
+    )
+    config.write_text("DIM target = 3\n", encoding="utf-8")
+    watching.workspace_did_change_watched_files(
+        types.DidChangeWatchedFilesParams(
+            changes=[types.FileEvent(uri=uri_of(config), type=types.FileChangeType.Changed)]
+        )
+    )
+    assert "E3001" not in codes(await asyncio.wait_for(published(watching, uri), 10))
+
+
+@pytest.mark.asyncio
+async def test_a_configuration_file_created_beside_the_program_is_read(watching, tmp_path):
+    uri = uri_of(tmp_path / "app.mnt")
+    assert "E3001" in codes(await open_document(watching, uri, PROGRAM))
+    config = tmp_path / "app.cfg"
+    config.write_text("DIM target = 3\n", encoding="utf-8")
+    watching.workspace_did_change_watched_files(
+        types.DidChangeWatchedFilesParams(
+            changes=[types.FileEvent(uri=uri_of(config), type=types.FileChangeType.Created)]
+        )
+    )
+    assert "E3001" not in codes(await asyncio.wait_for(published(watching, uri), 10))
+
+
+@pytest.mark.asyncio
+async def test_without_a_watching_client_the_server_looks_itself(blind, tmp_path):
+    config = tmp_path / "app.cfg"
+    config.write_text("REM nothing yet\n", encoding="utf-8")
+    uri = uri_of(tmp_path / "app.mnt")
+    assert "E3001" in codes(await open_document(blind, uri, PROGRAM))
+    await asyncio.sleep(1.5)  # the server has looked at the file once
+    config.write_text("DIM target = 3\n", encoding="utf-8")
+    assert "E3001" not in codes(await asyncio.wait_for(published(blind, uri), 10))

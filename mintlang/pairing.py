@@ -18,6 +18,7 @@ from mintlang.semantic.units import Unit
 
 DEFAULT_PATTERN = "<name>.cfg"
 PROGRAM_SUFFIX = ".mnt"
+CONFIGURATION_SUFFIX = ".cfg"  # a file named so is a configuration file, paired or not
 _NAME = "<name>"
 
 

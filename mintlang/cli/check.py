@@ -10,15 +10,14 @@ from __future__ import annotations
 
 import sys
 import time
-from collections import Counter
 from pathlib import Path
 from typing import IO, NoReturn
 
 import click
 
-from mintlang import check_application
-from mintlang.cli.checking import CheckOptions, Job, check_file
-from mintlang.cli.files import cannot_read, find, is_configuration, program_as_own_configuration, same_file
+from mintlang.cli.applications import plan
+from mintlang.cli.checking import check_file
+from mintlang.cli.files import cannot_read, find, program_as_own_configuration
 from mintlang.cli.options import (
     HELP_OPTIONS,
     color_option,
@@ -32,16 +31,17 @@ from mintlang.cli.options import (
 )
 from mintlang.cli.parallel import all_cores, map_in_order
 from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, as_statistics, render_text
+from mintlang.cli.settings import describe, overrides, settings_failed
 from mintlang.cli.terminal import console, destination
 from mintlang.codes import selector
-from mintlang.diagnostics import Diagnostic, Severity
+from mintlang.diagnostics import Severity
 from mintlang.dialect import Dialect
+from mintlang.settings import Overrides, SettingsError, settings_for
 from mintlang.source import SourceFile, decode, read_source
 
 _FOUND_ERRORS = 1
 _NOT_DONE = 2
 _STDIN = Path("-")
-_USE_FINDINGS = frozenset({"W103", "W105"})  # unused variable, macro: a use in any program counts
 
 SELECT_HELP = (
     "Only these codes or code prefixes; comma-separated or repeated. Default: E,W (the hints need --select I)."
@@ -83,11 +83,22 @@ def _fail(message: str) -> NoReturn:
     "--config",
     "config_path",
     type=click.Path(path_type=Path),
-    help="Configuration file whose variables and macros the programs see.",
+    help="Configuration file whose variables and macros the programs see (instead of each program's paired one).",
+)
+@click.option(
+    "--no-config",
+    is_flag=True,
+    help="Pair no configuration file with the programs (by default <name>.cfg beside <name>.mnt, any case).",
+)
+@click.option(
+    "--show-settings",
+    is_flag=True,
+    help="Print the settings that apply to each file (and where each comes from), and check nothing.",
 )
 @format_option(["text", "json", "sarif", "github"])
 @output_file_option()
 @list_option("--select", absent=None, help=SELECT_HELP)
+@list_option("--extend-select", absent=None, help="Also these codes or code prefixes, besides those selected.")
 @list_option("--ignore", absent=None, help="Leave out these codes or code prefixes; comma-separated or repeated.")
 @click.option(
     "--statistics", is_flag=True, help="Count the findings of each code instead of showing each (text, json)."
@@ -114,9 +125,12 @@ def check(
     dialect: str,
     controller: str,
     config_path: Path | None,
+    no_config: bool,
+    show_settings: bool,
     output_format: str,
     output_file: Path | None,
     select: tuple[str, ...] | None,
+    extend_select: tuple[str, ...] | None,
     ignore: tuple[str, ...] | None,
     statistics: bool,
     exit_zero: bool,
@@ -129,38 +143,43 @@ def check(
     """Check Mint programs for the errors the controller finds, and more.
 
     PATHS are programs (.mnt), configuration files (.cfg) and directories, searched for programs; - reads the
-    program from standard input.
+    program from standard input. Each program is checked with the configuration file beside it, and each file
+    under the nearest mint.toml or pyproject.toml [tool.mint] above it; the options here win over that file.
     """
     started = time.perf_counter()
     refuse_quiet_and_verbose(quiet, verbose)
     if statistics and output_format not in ("text", "json"):
         raise click.UsageError(f"--statistics is written as text or json, not {output_format}")
-    options = CheckOptions(dialect, controller, _codes(select, "--select"), _codes(ignore, "--ignore") or ())
+    context = click.get_current_context()
+    layer = overrides(
+        context,
+        select=_codes(select, "--select"),
+        extend_select=_codes(extend_select, "--extend-select"),
+        ignore=_codes(ignore, "--ignore"),
+        config_path=config_path,
+        no_config=no_config,
+    )
     found = find(path for path in paths if path != _STDIN)
-    configuration = _configuration(config_path)
-    files = [
-        path
-        for path in found.files
-        if configuration is None or not is_configuration(path) or not same_file(path, configuration.path)
-    ]  # a configuration named twice, as --config and as a path, is checked once, with the programs
-    if config_path is not None and (itself := program_as_own_configuration(files, config_path)) is not None:
+    _configuration(config_path)  # a --config that cannot be read ends the command before any check
+    if config_path is not None and (itself := program_as_own_configuration(found.files, config_path)) is not None:
         _fail(f"--config {config_path} is the program {itself} itself: name the configuration file")
-    config_text = configuration.text if configuration is not None else None
-    work = [Job(path, options, config_text) for path in files]
-    if _STDIN in paths:
-        work.insert(0, Job(Path(stdin_filename or "-"), options, config_text, _read_stdin(stdin_filename)))
-    elif stdin_filename is not None:
+    if _STDIN not in paths and stdin_filename is not None:
         raise click.UsageError("--stdin-filename names the program read from standard input: give - as a path")
-    if not work and not found.unreadable:
+    try:
+        if show_settings:
+            _show_settings([*([Path(stdin_filename or "-")] if _STDIN in paths else []), *found.files], layer)
+        planned = plan(found.files, layer, _read_stdin(stdin_filename) if _STDIN in paths else None)
+    except SettingsError as error:
+        settings_failed("mint check", error)
+    work = planned.jobs
+    if planned.empty and not found.unreadable and not planned.problems:
         _fail("no .mnt files found in " + ", ".join(str(p) for p in paths))
 
     workers = jobs or all_cores()
     progress = console(color, stderr=True) if not quiet and sys.stderr.isatty() else None
     results = map_in_order(check_file, work, workers=workers, progress=progress)
-    problems = [cannot_read(error) for error in found.unreadable] + [r.problem for r in results if r.problem]
-    reports = [result.report for result in results if result.report is not None]
-    if configuration is not None:
-        reports.insert(0, _configuration_report(configuration, [r.configuration for r in results if r.report], options))
+    problems = [cannot_read(e) for e in found.unreadable] + planned.problems + [r.problem for r in results if r.problem]
+    reports = planned.reports(results)
     if reports:
         with destination(output_file, _fail) as stream:
             _write(reports, stream, output_format, statistics=statistics, quiet=quiet, color=color)
@@ -191,6 +210,11 @@ def _configuration(path: Path | None) -> SourceFile | None:
     return configuration
 
 
+def _show_settings(paths: list[Path], layer: Overrides) -> NoReturn:
+    click.echo("\n\n".join("\n".join(describe(path, settings_for(path, layer))) for path in paths))
+    sys.exit(0)
+
+
 def _read_stdin(name: str | None) -> SourceFile:
     text, encoding = decode(sys.stdin.buffer.read())
     return SourceFile(Path(name or "-"), text, encoding)
@@ -212,27 +236,3 @@ def _write(
         return
     if text:
         stream.write(f"{text}\n")
-
-
-def _configuration_with_programs(seen_by_programs: list[tuple[Diagnostic, ...]]) -> tuple[Diagnostic, ...]:
-    """The configuration's findings, each once; a name is unused only if no program uses it."""
-    counts: Counter[Diagnostic] = Counter(d for diagnostics in seen_by_programs for d in dict.fromkeys(diagnostics))
-    kept = [d for d, count in counts.items() if d.code not in _USE_FINDINGS or count == len(seen_by_programs)]
-    return tuple(sorted(kept, key=lambda d: (d.span.start, d.span.end, d.code)))
-
-
-def _configuration_report(
-    source: SourceFile, seen_by_programs: list[tuple[Diagnostic, ...]], options: CheckOptions
-) -> FileReport:
-    """The ``--config`` file's findings: as the programs saw it, or checked on its own (with an empty program)."""
-    if seen_by_programs:
-        return FileReport(str(source.path), source.text, _configuration_with_programs(seen_by_programs))
-    analysis = check_application(
-        "",
-        config=source.text,
-        dialect=options.dialect,
-        controller=options.controller,
-        select=options.select,
-        ignore=options.ignore,
-    )
-    return FileReport(str(source.path), source.text, analysis.configuration)

@@ -20,7 +20,8 @@ from mintlang.analysis.analyser import DEFAULT_SELECT
 from mintlang.codes import selector
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
-from mintlang.pairing import DEFAULT_PATTERN, Pairing
+from mintlang.pairing import CONFIGURATION_SUFFIX, DEFAULT_PATTERN, Pairing, partner_on_disk
+from mintlang.semantic.units import Unit
 from mintlang.settings.files import Table
 
 T = TypeVar("T")
@@ -140,7 +141,7 @@ class FileSettings:
     select: Given[tuple[str, ...] | None] = Given(None)
     extend_select: Given[tuple[str, ...]] = Given(())
     ignore: Given[tuple[str, ...]] = Given(())
-    per_file_ignores: tuple[Given[tuple[str, ...]], ...] = ()
+    per_file_ignores: tuple[tuple[str, Given[tuple[str, ...]]], ...] = ()  # the globs that match the file
     config_pairing: Given[str | None] = Given(DEFAULT_PATTERN)
     config: Given[Path | None] = Given(None)
     project: ProjectSettings | None = field(default=None, compare=False)
@@ -154,12 +155,22 @@ class FileSettings:
 
     @property
     def ignored(self) -> tuple[str, ...]:
-        return (*self.ignore.value, *(code for given in self.per_file_ignores for code in given.value))
+        return (*self.ignore.value, *(code for _, given in self.per_file_ignores for code in given.value))
 
     @property
     def pairing(self) -> str | None:
         """The pairing pattern in force; None when a configuration file is named outright or pairing is off."""
         return None if self.config.value is not None else self.config_pairing.value
+
+    def partner(self, path: Path) -> tuple[Unit, Path | None]:
+        """Which file of its application ``path`` is, and the other one: for a program, the configuration it sees
+        (``config``, else the file ``config-pairing`` names beside it if there is one); for a configuration file
+        named ``*.cfg`` or as the pairing names it, its program if there is one."""
+        configuration = path.suffix.lower() == CONFIGURATION_SUFFIX
+        if self.config.value is not None:
+            return (Unit.CONFIGURATION, None) if configuration else (Unit.PROGRAM, self.config.value)
+        unit, other = partner_on_disk(path, self.pairing) if self.pairing is not None else (Unit.PROGRAM, None)
+        return (Unit.CONFIGURATION if configuration else unit), other
 
     def rows(self) -> list[tuple[str, str, str]]:
         """(setting, value, origin) for each setting, as ``--show-settings`` lists them."""
@@ -170,7 +181,10 @@ class FileSettings:
             ("select", _listed(self.select.value, DEFAULT_SELECT), self.select.origin),
             ("extend-select", _listed(self.extend_select.value), self.extend_select.origin),
             ("ignore", _listed(self.ignore.value), self.ignore.origin),
-            *(("per-file-ignores", _listed(given.value), given.origin) for given in self.per_file_ignores),
+            *(
+                ("per-file-ignores", f"{glob}: {_listed(given.value)}", given.origin)
+                for glob, given in self.per_file_ignores
+            ),
             ("config-pairing", _pairing_shown(self.config_pairing.value), self.config_pairing.origin),
             ("config", str(self.config.value) if self.config.value else "none", self.config.origin),
         ]
@@ -224,7 +238,7 @@ def _joined(first: Given[tuple[str, ...]], second: Given[tuple[str, ...]]) -> st
 def _from_project(path: Path, project: ProjectSettings) -> FileSettings:
     values = project.values
     changes = {key.replace("-", "_"): given for key, given in values.items()}
-    matched = tuple(given for glob, given in project.per_file_ignores if _matches(glob, path, project.folder))
+    matched = tuple((glob, given) for glob, given in project.per_file_ignores if _matches(glob, path, project.folder))
     return FileSettings(**changes, per_file_ignores=matched, project=project)  # type: ignore[arg-type]
 
 

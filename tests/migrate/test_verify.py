@@ -187,3 +187,20 @@ def test_a_line_in_error_nobody_flagged_is_a_divergence_at_the_start() -> None:
     assert (found.divergence.time_ms, found.divergence.what) == (0, "stop")
     assert found.divergence.v4_line == Place("program", 2)
     assert found.divergence.v3 == "end at 0 ms"
+
+
+def test_output_cut_off_at_the_horizon_is_not_a_divergence() -> None:
+    # The migration adds AXES and DIM key before the loop, so at the end of some milliseconds the v4 run is
+    # a line behind; the runs cut there at --until-ms would print it next. Every horizon must compare equal.
+    result = migrate('LOOP\n  ?"A .. Start"\n  key = INKEY\nENDL\n')
+    verdicts = {until: verify(result, until_ms=until).verdict for until in range(1, 31)}
+    assert set(verdicts.values()) == {Verdict.EQUIVALENT}, verdicts
+
+
+def test_output_a_run_that_ended_never_printed_is_a_divergence_even_at_the_horizon() -> None:
+    # the v4 text prints one line more before its END: the v3 run is over, so that line cannot come later
+    result = migrate('PRINT "a"\n')
+    altered = replace(result, text=result.text + 'PRINT "b"\n')
+    divergence = verify(altered, until_ms=100).divergence
+    assert divergence is not None
+    assert (divergence.what, divergence.v3, divergence.v4) == ("terminal", "(nothing more)", "'b'")

@@ -14,6 +14,8 @@ from mintlang.cli.terminal import Palette
 from mintlang.codes import OWN_CODES
 from mintlang.diagnostics import Diagnostic, LineIndex, Severity, split_lines
 from mintlang.keyworddb import database
+from mintlang.ruledocs import find
+from mintlang.ruledocs.links import configured_base, rule_url
 
 
 @dataclass(frozen=True, slots=True)
@@ -125,6 +127,18 @@ def _title(code: str) -> str:
     return OWN_CODES.get(code, code)
 
 
+def _sarif_rule(code: str, base: str | None) -> dict[str, object]:
+    """A SARIF rule: its title, and what it catches with a link to its page where it is documented."""
+    rule: dict[str, object] = {"id": code, "shortDescription": {"text": _title(code)}}
+    documented = find(code)
+    if documented is not None:
+        rule["fullDescription"] = {"text": documented.catches}
+        url = rule_url(code, base)
+        if url is not None:
+            rule["helpUri"] = url
+    return rule
+
+
 _SARIF_LEVEL = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
 
 
@@ -155,7 +169,7 @@ def as_sarif(reports: Sequence[FileReport]) -> str:
                     ],
                 }
             )
-    rules = [{"id": code, "shortDescription": {"text": _title(code)}} for code in sorted(codes)]
+    rules = [_sarif_rule(code, configured_base()) for code in sorted(codes)]
     document = {
         "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
         "version": "2.1.0",

@@ -122,9 +122,9 @@ def test_sarif_output_is_sarif_2_1_0(tmp_path: Path) -> None:
     document = json.loads(result.stdout)
     assert document["version"] == "2.1.0"
     (run,) = document["runs"]
-    assert run["tool"]["driver"]["rules"] == [
-        {"id": "E3001", "shortDescription": {"text": "Variable undefined, use DIM"}}
-    ]
+    (rule,) = run["tool"]["driver"]["rules"]
+    assert (rule["id"], rule["shortDescription"]) == ("E3001", {"text": "Variable undefined, use DIM"})
+    assert rule["helpUri"].endswith("/E3001.md")
     (finding,) = run["results"]
     assert finding["ruleId"] == "E3001"
     assert finding["level"] == "error"

@@ -45,6 +45,12 @@ def _outside(v3: Sequence[float], v4: Sequence[float], until: int, close: Close)
     return None
 
 
+def _checked(v3: Recording, v4: Recording, until: int) -> int:
+    """The last millisecond whose tube is known: a run cut off at ``until`` says nothing of the milliseconds
+    after it, so its last ``TIME_MS`` samples have only half a window and are not held against the other's."""
+    return until if v3.closed and v4.closed else until - tolerance.TIME_MS
+
+
 def _changes(series: Sequence[int], until: int) -> list[int]:
     """The values a word takes in turn, from the 0 both controllers power up with."""
     values = [0]
@@ -90,7 +96,7 @@ def _word(
 ) -> list[Divergence]:
     """OUT (a bit at a time) or the relay."""
     series3, series4 = words
-    t = _outside(series3, series4, until, lambda a, b, _: a == b)
+    t = _outside(series3, series4, _checked(v3, v4, until), lambda a, b, _: a == b)
     if t is None:
         return []
     a, b = int(_at(series3, t)), int(_at(series4, t))
@@ -125,7 +131,7 @@ def _axis(number: int, v3: Recording, v4: Recording, until: int) -> list[Diverge
 
     found = []
     for quantity, close, series in (("position", near, "pos"), ("velocity", near_velocity, "vel")):
-        t = _outside(getattr(trace3, series), getattr(trace4, series), until, close)
+        t = _outside(getattr(trace3, series), getattr(trace4, series), _checked(v3, v4, until), close)
         if t is not None:
             shown = (f"{_at(getattr(trace3, series), t):.10g}", f"{_at(getattr(trace4, series), t):.10g}")
             found.append((t, quantity, shown))

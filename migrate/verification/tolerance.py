@@ -22,6 +22,10 @@ is allowed for is what differs by design:
   decimals cut, v4 four (V3-4, PR-1, X-PRINT); v3 rounds a written number to
   the nearest 256th and cuts a product or quotient to one (V3-2); v4 numbers are
   binary32, 24 significant bits (NM-1). Text around the numbers must be equal.
+* **The horizon.** Runs cut off at ``--until-ms`` have no samples after it, so
+  their last 2 ms have only half a tube: they are not held against the other
+  run, and what one run printed in them may still be missing from the other.
+  A run that ended holds its last state and prints nothing more.
 """
 
 from __future__ import annotations

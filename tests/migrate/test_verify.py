@@ -204,3 +204,14 @@ def test_output_a_run_that_ended_never_printed_is_a_divergence_even_at_the_horiz
     divergence = verify(altered, until_ms=100).divergence
     assert divergence is not None
     assert (divergence.what, divergence.v3, divergence.v4) == ("terminal", "(nothing more)", "'b'")
+
+
+def test_a_move_a_slice_earlier_cut_off_mid_move_at_any_horizon_is_equivalent() -> None:
+    # A slice runs 20 statements a ms: without 20 of the v3 program's assignments the v4 move starts a
+    # ms earlier, inside the 2 ms tube. Cut off while it cruises at 20 counts/ms, the runs' last samples
+    # have no later ones to match, which must not count as a divergence.
+    program = "SPEED = 20000 : ACCEL = 100000\n" + "a = 1\n" * 40 + "MOVER.0 = 100000 : GO.0\nPAUSE IDLE.0\n"
+    result = migrate(program)
+    earlier = replace(result, text=result.text.replace("a = 1\n" * 20, "", 1))
+    verdicts = {until: verify(earlier, scenario=DRIVES, until_ms=until).verdict for until in range(295, 306)}
+    assert set(verdicts.values()) == {Verdict.EQUIVALENT}, verdicts

@@ -52,6 +52,7 @@ class Settings:
     select: tuple[str, ...] | None = None  # codes or prefixes; None: the errors and warnings, not the hints
     ignore: tuple[str, ...] = ()
     config_file: Path | None = None  # the configuration file of every program (the settings file's ``config``)
+    rules_url: str | None = None  # where the rule pages are, a folder or a {code} template; None: the project's
     given: frozenset[str] = frozenset()
 
     @property
@@ -74,6 +75,7 @@ class Settings:
             "debounce_ms": base.debounce_ms,
             "select": base.select,
             "ignore": base.ignore,
+            "rules_url": base.rules_url,
         }
         given = set(base.given)
         for key, name, convert in (
@@ -83,6 +85,7 @@ class Settings:
             ("debounceMs", "debounce_ms", int),
             ("select", "select", _codes),
             ("ignore", "ignore", _codes),
+            ("rulesUrl", "rules_url", str),
         ):
             if options.get(key) is not None:
                 try:

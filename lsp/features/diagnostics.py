@@ -19,6 +19,7 @@ import mintlang
 from mintlang.codes import OWN_CODES
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot, partner
+from mintlang.ruledocs.links import configured_base, rule_url
 
 log = logging.getLogger(__name__)
 _SEVERITY = {
@@ -40,7 +41,14 @@ def to_lsp(diagnostic: mintlang.Diagnostic, snapshot: Snapshot) -> types.Diagnos
         code=diagnostic.code,
         source="mint",
         tags=[types.DiagnosticTag.Unnecessary] if diagnostic.code in _UNNECESSARY else None,
+        code_description=_page(diagnostic.code, snapshot.settings.rules_url),
     )
+
+
+def _page(code: str, base: str | None) -> types.CodeDescription | None:
+    """The link to the code's page (``mint.rulesUrl``, else as for the command line), shown on the code."""
+    url = rule_url(code, base or configured_base())
+    return types.CodeDescription(href=url) if url is not None else None
 
 
 def lsp_diagnostics(snapshot: Snapshot) -> list[types.Diagnostic]:

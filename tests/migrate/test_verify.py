@@ -215,3 +215,17 @@ def test_a_move_a_slice_earlier_cut_off_mid_move_at_any_horizon_is_equivalent() 
     earlier = replace(result, text=result.text.replace("a = 1\n" * 20, "", 1))
     verdicts = {until: verify(earlier, scenario=DRIVES, until_ms=until).verdict for until in range(295, 306)}
     assert set(verdicts.values()) == {Verdict.EQUIVALENT}, verdicts
+
+
+def test_errors_a_slice_apart_match_at_every_horizon() -> None:
+    # v3 runs 40 assignments in the slices of 0 and 1 ms and fails on RETURN w/o GOSUB at 2 ms; the v4 text
+    # without 20 of them (and with AXES and DIM a) fails at 1 ms. Cut off at 1 ms, the v3 run has not yet
+    # met its error; that is not a divergence either.
+    result = migrate("a = 1\n" * 40 + "RETURN\n")
+    earlier = replace(result, text=result.text.replace("a = 1\n" * 20, "", 1))
+    found = {until: verify(earlier, until_ms=until) for until in range(5)}
+    assert {until: verification.verdict for until, verification in found.items()} == dict.fromkeys(
+        range(5), Verdict.EQUIVALENT
+    )
+    assert (found[4].v3_stop.reason, found[4].v3_stop.time_ms) == ("error", 2)
+    assert (found[4].v4_stop.reason, found[4].v4_stop.time_ms) == ("error", 1)

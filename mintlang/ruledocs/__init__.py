@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from functools import cache
 
+from mintlang.codes import code_named
 from mintlang.ruledocs.catalogue import GROUPS
 from mintlang.ruledocs.model import Example, FixSafety, Group, RuleDoc
 
@@ -27,15 +28,10 @@ def _by_code() -> dict[str, RuleDoc]:
 
 
 def find(code: str) -> RuleDoc | None:
-    """The documentation of ``code`` as a user writes it: any case, and the controller's numbers with
-    or without leading zeros (``E2``, ``E0002``)."""
-    wanted = code.strip().upper()
-    if wanted in _by_code():
-        return _by_code()[wanted]
-    number = wanted[1:]
-    if wanted.startswith("E") and number.isdigit():
-        return next((rule for rule in rules() if rule.key == int(number)), None)
-    return None
+    """The documentation of ``code`` as a user writes it: any case, and the controller's numbers in
+    either spelling (``E2``, ``E0002``)."""
+    named = code_named(code)
+    return _by_code().get(named) if named is not None else None
 
 
 def group_of(rule: RuleDoc) -> Group:

@@ -7,8 +7,8 @@ from dataclasses import dataclass
 from enum import StrEnum
 
 from mintlang import check_application
-from mintlang.codes import OWN_CODES, mint_error
-from mintlang.diagnostics import Diagnostic, Span
+from mintlang.codes import OWN_CODES, error_code
+from mintlang.diagnostics import Diagnostic
 from mintlang.keyworddb import database
 
 
@@ -60,9 +60,7 @@ class RuleDoc:
     @property
     def code(self) -> str:
         """The code the checker reports (``E2016``, ``W103``)."""
-        if isinstance(self.key, str):
-            return self.key
-        return mint_error(self.key, Span(0, 0), "").code
+        return self.key if isinstance(self.key, str) else error_code(self.key)
 
     @property
     def title(self) -> str:

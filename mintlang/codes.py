@@ -31,6 +31,7 @@ OWN_CODES: dict[str, str] = {
     "W114": "AUTO ignored",
     "W115": "Recursive GOSUB",
     "W116": "GOSUB nested too deep",
+    "W117": "Unused suppression",
     "I201": "Faster dot syntax",
 }
 

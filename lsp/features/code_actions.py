@@ -1,8 +1,10 @@
 """Code actions: the core's quick fixes, abbreviations expanded, and the v3 → v4 source actions.
 
 Quick fixes come from the ``fixes`` of the core's diagnostics (declare with
-DIM, replace a v3 keyword, plain quotes, dot syntax). "Replace v3 keywords"
-and "Migrate this file to Mint v4" are ``migration``'s, resolved when picked.
+DIM, replace a v3 keyword, plain quotes, dot syntax), and each diagnostic can
+be silenced on its line ("Ignore W103 on this line": a ``REM mint: ignore``
+comment added or extended). "Replace v3 keywords" and "Migrate this file to
+Mint v4" are ``migration``'s, resolved when picked.
 """
 
 from __future__ import annotations
@@ -12,6 +14,7 @@ from collections.abc import Iterator
 from lsprotocol import types
 
 import mintlang
+from mintlang.analysis.suppression import UNUSED_SUPPRESSION, suppression_fix
 from mintlang.lsp.features import abbreviations, migration
 from mintlang.lsp.features.diagnostics import to_lsp
 from mintlang.lsp.server import MintServer
@@ -40,6 +43,14 @@ def quick_fixes(snapshot: Snapshot, selection: types.Range) -> Iterator[types.Co
                 diagnostics=[to_lsp(diagnostic, snapshot)],
                 edit=_edits(snapshot, fix.edits),
                 is_preferred=len(diagnostic.fixes) == 1,
+            )
+        if diagnostic.code != UNUSED_SUPPRESSION:  # its own fix removes the comment
+            ignore = suppression_fix(snapshot.document, diagnostic.span.start, diagnostic.code)
+            yield types.CodeAction(
+                title=ignore.title,
+                kind=types.CodeActionKind.QuickFix,
+                diagnostics=[to_lsp(diagnostic, snapshot)],
+                edit=_edits(snapshot, ignore.edits),
             )
 
 

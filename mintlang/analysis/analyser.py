@@ -15,6 +15,7 @@ from functools import cache
 from mintlang.allocation import without_collector
 from mintlang.analysis.findings import Finding
 from mintlang.analysis.rules import RULES, Rule
+from mintlang.analysis.suppression import suppress
 from mintlang.analysis.traversal import LineScope, gather
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.controllers import ControllerProfile
@@ -105,6 +106,12 @@ def analyse(model: SemanticModel, *, select: Iterable[str] | None = None, ignore
             continue
         seen.add(key)
         per_unit[finding.unit].append(diagnostic)
+
+    def selected(code: str) -> bool:
+        return _selected(code, select, ignore)
+
+    for unit, document in model.documents():
+        per_unit[unit] = suppress(per_unit[unit], document, selected)
     for diagnostics in per_unit.values():
         diagnostics.sort(key=lambda d: (d.span.start, d.span.end, d.code))
     return Analysis(model, tuple(per_unit[Unit.PROGRAM]), tuple(per_unit[Unit.CONFIGURATION]))

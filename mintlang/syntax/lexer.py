@@ -264,7 +264,9 @@ def _quote_issues(text: str, start: int, typographic: str, plain: str) -> list[D
         return []
     edits = tuple(Edit(Span(start + i, start + i + 1), plain) for i in sorted(set(places)))
     detail = f"typographic quotes: the controller expects plain quotes ({plain})"
-    return [own("W101", Span(start, start + len(text)), detail, fixes=(Fix("Replace with plain quotes", edits),))]
+    return [
+        own("W101", Span(start, start + len(text)), detail, fixes=(Fix("Replace with plain quotes", edits, safe=True),))
+    ]
 
 
 @lru_cache(maxsize=65536)

@@ -28,8 +28,9 @@ def only_edit(action: types.CodeAction, uri: str) -> types.TextEdit:
 async def test_declare_with_dim(client, tmp_path):
     uri = uri_of(tmp_path / "dim.mnt")
     diagnostics = await open_document(client, uri, "count = 1\n")
-    [fix] = await actions(client, uri, diagnostics, 0)
+    [fix, ignore] = await actions(client, uri, diagnostics, 0)
     assert fix.title == "Declare 'count' with DIM"
+    assert ignore.title == "Ignore E3001 on this line"  # every diagnostic can be silenced on its line
     assert fix.kind == types.CodeActionKind.QuickFix
     assert fix.diagnostics[0].code == "E3001"
     assert only_edit(fix, uri).new_text == "DIM count\n"

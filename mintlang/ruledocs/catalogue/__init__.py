@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from mintlang.ruledocs.catalogue import addressing, flow, keywords, limits, names, syntax
+from mintlang.ruledocs.catalogue import addressing, flow, keywords, limits, names, suppression, syntax
 from mintlang.ruledocs.model import Group
 
 GROUPS: tuple[Group, ...] = (
@@ -12,4 +12,5 @@ GROUPS: tuple[Group, ...] = (
     names.GROUP,
     flow.GROUP,
     limits.GROUP,
+    suppression.GROUP,
 )

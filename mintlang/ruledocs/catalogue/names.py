@@ -34,8 +34,9 @@ GROUP = Group(
         RuleDoc(
             3004,
             catches="A GOSUB or GOTO to a label the file does not define, or a label defined twice.",
-            why="The compiler cannot resolve the jump and rejects the program. Labels are local to their "
-            "file: a subroutine of the configuration file cannot be called from the program.",
+            why="The compiler cannot resolve the jump and rejects the program. Each file's labels serve "
+            "that file only: a GOSUB in the program does not reach a subroutine of the configuration file, "
+            "and the message then says where the label is.",
             example=Example(
                 before="GOSUB homing\nEND\n#home\n  HOME.0 = 1\nRETURN\n",
                 after="GOSUB homing\nEND\n#homing\n  HOME.0 = 1\nRETURN\n",

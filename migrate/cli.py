@@ -23,6 +23,7 @@ from typing import NoReturn
 import click
 from rich.console import Console
 
+from mintlang.atomic import Unwritable
 from mintlang.cli.options import (
     HELP_OPTIONS,
     color_option,
@@ -38,7 +39,6 @@ from mintlang.diagnostics import split_lines
 from mintlang.migrate import leftovers, verifying
 from mintlang.migrate.api import UnknownRule, rules, select
 from mintlang.migrate.applications import Migrated, UsageError, read
-from mintlang.migrate.atomic import Unwritable
 from mintlang.migrate.citations import cite
 from mintlang.migrate.report import render_text, report
 from mintlang.migrate.verification import DEFAULT_UNTIL_MS, V3_CONTROLLERS, V3_DEFAULT, Verdict

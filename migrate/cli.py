@@ -34,6 +34,7 @@ from mintlang.cli.options import (
     output_file_option,
     version_option,
 )
+from mintlang.cli.settings import ProjectCommand
 from mintlang.cli.terminal import console, destination
 from mintlang.diagnostics import split_lines
 from mintlang.migrate import leftovers, verifying
@@ -76,7 +77,15 @@ def _list_rules(console: Console) -> None:
         console.print(f"{'':<36} {cite(info.evidence)}", style="dim", highlight=False)
 
 
-@click.command(name="migrate", context_settings=HELP_OPTIONS, epilog=EXIT_STATUS)
+@click.command(
+    name="migrate",
+    cls=ProjectCommand,
+    tool="mint-migrate",
+    table="migrate",  # [tool.mint.migrate]: defaults for these options
+    start=lambda params: next(iter(params["paths"]), Path()),
+    context_settings=HELP_OPTIONS,
+    epilog=EXIT_STATUS,
+)
 @click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
 @click.option("--write", is_flag=True, help="Rewrite the files in place.")
 @click.option("--check", is_flag=True, help="Exit 1 when anything would be rewritten; write nothing.")

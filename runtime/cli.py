@@ -33,6 +33,7 @@ from rich.text import Text
 
 from mintlang.cli.files import program_as_own_configuration
 from mintlang.cli.options import HELP_OPTIONS, color_option, exit_zero_option, version_option
+from mintlang.cli.settings import ProjectCommand, settings_failed
 from mintlang.cli.terminal import console
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
@@ -56,6 +57,8 @@ from mintlang.runtime.scenario import (
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
 from mintlang.runtime.simulation import Interrupt, Limits
 from mintlang.runtime.trace import PlotUnavailable, Trace
+from mintlang.semantic.units import Unit
+from mintlang.settings import SettingsError, settings_for
 from mintlang.source import read_source
 
 _USAGE_ERROR = 2
@@ -93,11 +96,21 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
     return seconds
 
 
-@click.command(context_settings=HELP_OPTIONS)
+@click.command(
+    cls=ProjectCommand,
+    tool="mint-run",
+    table="run",  # [tool.mint.run]: defaults for these options
+    start=lambda params: params["program"],
+    context_settings=HELP_OPTIONS,
+)
 @click.argument("program", type=click.Path(path_type=Path))
 @click.option(
-    "--config", "config_path", type=click.Path(path_type=Path), help="Configuration file run before the program."
+    "--config",
+    "config_path",
+    type=click.Path(path_type=Path),
+    help="Configuration file run before the program (by default the one beside it: <name>.cfg, any case).",
 )
+@click.option("--no-config", is_flag=True, help="Run the program without a configuration file.")
 @click.option(
     "--dialect",
     type=click.Choice([dialect.value for dialect in Dialect]),
@@ -182,6 +195,7 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
 def run(  # noqa: PLR0917 - click passes every option as an argument
     program: Path,
     config_path: Path | None,
+    no_config: bool,
     dialect: str,
     controller: str | None,
     stimulus_paths: tuple[Path, ...],
@@ -207,6 +221,7 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     errors = console(color, stderr=True)
     if config_path is not None and program_as_own_configuration([program], config_path):
         raise click.UsageError(f"--config {config_path} is the program {program} itself: name the configuration file")
+    config_path = _configuration(program, config_path, no_config=no_config)
     try:
         simulated = machine(controller, dialect)
     except ValueError as problem:
@@ -267,6 +282,22 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
         _outputs(trace, plot_path)  # after the report, so an output that fails does not take the results with it
     status = _exit_status(result, stdout.closed, termination.received, expect=bool(expect_paths))
     sys.exit(0 if status == _FAILED and exit_zero else status)
+
+
+def _configuration(program: Path, config_path: Path | None, *, no_config: bool) -> Path | None:
+    """The configuration file run first: ``--config``, else the one the settings file names or pairs with the
+    program as ``mint check`` and the editor do (``mintlang.pairing``); none with ``--no-config``."""
+    if no_config:
+        if config_path is not None:
+            raise click.UsageError("--config names the configuration file and --no-config runs none: give one")
+        return None
+    if config_path is not None:
+        return config_path
+    try:
+        unit, other = settings_for(program).partner(program)
+    except SettingsError as error:
+        settings_failed("mint-run", error)
+    return other if unit is Unit.PROGRAM else None
 
 
 def _simulate(simulate: Callable[[], RunResult], termination: _Termination) -> RunResult:

@@ -11,7 +11,7 @@ tool's options, under their long names (``until-ms = 500`` for
 from __future__ import annotations
 
 import sys
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any, NoReturn
 
@@ -115,7 +115,13 @@ class ProjectCommand(click.Command):
         return super().invoke(ctx)
 
     def _defaults(self, context: click.Context, project: ProjectSettings) -> dict[str, Any]:
-        options = {name.removeprefix("--"): param for param in self.params for name in param.opts if name[:2] == "--"}
+        options = {  # an eager option (--version) does its work as it is parsed: no setting can give it
+            name.removeprefix("--"): param
+            for param in self.params
+            if not param.is_eager
+            for name in param.opts
+            if name.startswith("--")
+        }
         table = project.tool(self.table)
         values: dict[str, Any] = {}
         for key in _SHARED:
@@ -130,18 +136,21 @@ class ProjectCommand(click.Command):
 
 
 def _converted(context: click.Context, param: click.Parameter, table: Table, key: str, value: object) -> Any:
-    """A table value as the option would take it; a path relative to the settings file's folder."""
-    if isinstance(param.type, click.Path):
-        value = [_relative(table, item) for item in _items(value)] if param.multiple else _relative(table, value)
-    try:
+    """A table value as the option takes it typed (a flag: true or false; a repeatable option: a list); a path is
+    relative to the settings file's folder."""
+    if isinstance(param.type, click.types.BoolParamType):
+        if not isinstance(value, bool):
+            raise table.error("must be true or false", key)
         return param.process_value(context, value)
+    items = value if isinstance(value, list) and param.multiple else [value]
+    if not all(isinstance(item, str | int | float) and not isinstance(item, bool) for item in items):
+        raise table.error("must be a string or a number" + (", or a list of them" if param.multiple else ""), key)
+    texts = [_relative(table, item) if isinstance(param.type, click.Path) else str(item) for item in items]
+    try:
+        return param.process_value(context, texts if param.multiple else texts[0])
     except click.BadParameter as error:
-        raise table.error(error.format_message(), key) from None
+        raise table.error(error.message, key) from None
 
 
-def _items(value: object) -> Iterable[object]:
-    return value if isinstance(value, list) else [value]
-
-
-def _relative(table: Table, value: object) -> object:
-    return str(table.path.parent / value) if isinstance(value, str) else value
+def _relative(table: Table, value: object) -> str:
+    return str(table.path.parent / str(value))

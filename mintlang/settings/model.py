@@ -38,9 +38,9 @@ class Given(Generic[T]):
 
 
 def selectors(items: object) -> tuple[str, ...]:
-    """Codes or code prefixes (``E2``, ``W103``) read as ``--select`` reads them; a typo would hide findings.
+    """Codes or code prefixes as ``--select`` reads them (``mintlang.codes.selector``).
 
-    Raises ValueError (TypeError for something other than a list of strings).
+    Raises ValueError for one that selects nothing, TypeError for something other than a list of strings.
     """
     if not isinstance(items, list | tuple) or not all(isinstance(item, str) for item in items):
         raise TypeError('must be a list of codes or code prefixes, such as ["E2", "W103"]')

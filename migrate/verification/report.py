@@ -36,11 +36,14 @@ class Verified:
 
 
 def headline(verification: Verification) -> str:
-    """``equivalent over 2000 ms``, ``diverges at 120 ms: axis 0 position``, ``incomplete after 40 ms: …``."""
+    """``equivalent over 2000 ms``, ``diverges at 120 ms: axis 0 position``, ``incomplete: no difference over
+    40 ms, then …``."""
     found = verification.divergence
     verdict = verification.verdict
     if verdict is Verdict.EQUIVALENT:
         return f"equivalent over {verification.compared_ms} ms"
+    if verdict is Verdict.INCOMPLETE and verification.compared_ms == 0:
+        return f"incomplete: {verification.short}"
     if verdict is Verdict.INCOMPLETE:
         return f"incomplete: no difference over {verification.compared_ms} ms, then {verification.short}"
     assert found is not None, "a divergence or a timing difference has a first difference"

@@ -80,7 +80,7 @@ def test_a_timing_difference_x_go_timing_flagged_passes_unless_manual_items_fail
 def test_an_incomplete_comparison_does_not_pass(tmp_path: Path) -> None:
     code, output, _ = run(tmp_path, NOT_SIMULATED, "--until-ms", "100")
     assert code == 2
-    expected = "incomplete: no difference over 0 ms, then COMMSON (command) is not simulated by mint-run"
+    expected = "incomplete: COMMSON (command) is not simulated by mint-run"  # at 0 ms: nothing was compared
     assert output.splitlines()[0] == f"{tmp_path / 'demo.mnt'}: {expected}"
 
 
@@ -152,3 +152,12 @@ def test_a_rem_sim_line_that_cannot_be_read_names_its_program_and_the_others_are
     assert result.exit_code == 2
     assert result.stderr == f"mint-migrate: {bad}:1: expected an input channel as a whole number, not 'banana'\n"
     assert result.stdout.splitlines()[0] == f"{good}: equivalent over 602 ms"
+
+
+def test_an_incomplete_comparison_says_how_far_it_went(tmp_path: Path) -> None:
+    # 40 assignments take the slices of 0 and 1 ms; v3 stops on COMMSON in the slice of 2 ms, part way
+    # through it, so the runs are known up to 1 ms
+    code, output, _ = run(tmp_path, "a = 1\n" * 40 + "COMMSON\n", "--until-ms", "100")
+    assert code == 2
+    expected = "incomplete: no difference over 1 ms, then COMMSON (command) is not simulated by mint-run"
+    assert output.splitlines()[0] == f"{tmp_path / 'demo.mnt'}: {expected}"

@@ -355,7 +355,7 @@ class Context:
     @cached_property
     def _order(self) -> tuple[tuple[FileView, int], ...]:
         """Each line of compile order as its file and its index there."""
-        return tuple((file, index) for file in self._compiled for index in range(len(file.document.placed)))
+        return tuple((file, index) for file in self.compiled for index in range(len(file.document.placed)))
 
     @cached_property
     def _tagged(self) -> dict[object, list[int]]:
@@ -363,7 +363,7 @@ class Context:
         found: defaultdict[object, list[int]] = defaultdict(list)
         tags = self.tags
         position = 0
-        for file in self._compiled:
+        for file in self.compiled:
             expanded = file.expanded
             for index, line in enumerate(file.document.placed):
                 for tag in tags.of(line) | {MACRO} if index in expanded else tags.of(line):
@@ -372,7 +372,7 @@ class Context:
         return dict(found)
 
     @cached_property
-    def _compiled(self) -> tuple[FileView, ...]:
+    def compiled(self) -> tuple[FileView, ...]:
         """The files in compile order: the configuration file first."""
         return tuple(self.files[unit] for unit in (Unit.CONFIGURATION, Unit.PROGRAM) if unit in self.files)
 

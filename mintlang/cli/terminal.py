@@ -62,15 +62,16 @@ class Palette:
         from rich.color import ColorSystem  # noqa: PLC0415
         from rich.style import Style  # noqa: PLC0415
 
-        system = console.color_system
-        if system is None:
+        systems = {"standard": ColorSystem.STANDARD, "256": ColorSystem.EIGHT_BIT, "truecolor": ColorSystem.TRUECOLOR}
+        system = systems.get(console.color_system or "")
+        if system is None:  # no colour, or Windows' legacy console, which rich styles by API calls, not codes
             return cls({})
         codes: dict[str, tuple[str, str]] = {}
         for name in styles:
             style = Style.parse(name)
             if console.no_color:
                 style = style.without_color
-            before, _, after = style.render("\0", color_system=ColorSystem[system.upper()]).partition("\0")
+            before, _, after = style.render("\0", color_system=system).partition("\0")
             codes[name] = (before, after)
         return cls(codes)
 

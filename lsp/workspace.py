@@ -22,9 +22,8 @@ from mintlang.codes import selector
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.lsp.collector import Collector
-from mintlang.lsp.disk import names_in
 from mintlang.lsp.positions import Positions
-from mintlang.pairing import DEFAULT_PATTERN, Pairing, is_program, listed_as
+from mintlang.pairing import DEFAULT_PATTERN, Pairing, is_program, listed_as, names_in
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
 from mintlang.settings import FileSettings, SettingsError, settings_for

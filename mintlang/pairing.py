@@ -10,7 +10,7 @@ mirrors this rule (``vscode-ext/src/pairing.ts``).
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Collection
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -70,16 +70,40 @@ def is_program(name: str) -> bool:
     return name.lower().endswith(PROGRAM_SUFFIX)
 
 
-def listed_as(name: str, names: Iterable[str]) -> str | None:
+def listed_as(name: str, names: Collection[str]) -> str | None:
     """``name`` as ``names`` list it: that very name, else the first equal to it without regard to case."""
+    if name in names:
+        return name
     lowered = name.lower()
-    found = None
-    for other in names:
-        if other == name:
-            return other
-        if found is None and other.lower() == lowered:
-            found = other
-    return found
+    return next((other for other in names if other.lower() == lowered), None)
+
+
+_KEPT_FOLDERS = 64
+_listings: dict[Path, tuple[int, tuple[str, ...]]] = {}
+
+
+def names_in(folder: Path) -> tuple[str, ...]:
+    """The names of a folder's entries (none when it cannot be listed).
+
+    A folder's names are kept while its modification time stays (adding, removing or
+    renaming an entry changes it): a directory of many programs is listed once, not
+    once for each, and the editor does not list a network share at every keystroke.
+    """
+    try:
+        stamp = folder.stat().st_mtime_ns
+    except OSError:
+        return ()
+    kept = _listings.get(folder)
+    if kept is not None and kept[0] == stamp:
+        return kept[1]
+    try:
+        names = tuple(entry.name for entry in folder.iterdir())
+    except OSError:
+        return ()
+    if len(_listings) >= _KEPT_FOLDERS:
+        _listings.clear()
+    _listings[folder] = (stamp, names)
+    return names
 
 
 def partner_on_disk(path: Path, pattern: str = DEFAULT_PATTERN) -> tuple[Unit, Path | None]:
@@ -93,9 +117,5 @@ def partner_on_disk(path: Path, pattern: str = DEFAULT_PATTERN) -> tuple[Unit, P
     unit, other = pairing.partner_name(path.name)
     if other is None:
         return unit, None
-    try:
-        names = [entry.name for entry in path.parent.iterdir()]
-    except OSError:
-        return unit, None
-    listed = listed_as(other, names)
+    listed = listed_as(other, names_in(path.parent))
     return unit, None if listed is None else path.parent / listed

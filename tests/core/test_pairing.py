@@ -3,13 +3,14 @@ names compared without regard to case."""
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from mintlang.pairing import Pairing, listed_as, partner_on_disk
+from mintlang.pairing import Pairing, listed_as, names_in, partner_on_disk
 from mintlang.semantic.units import Unit
 
 DEFAULT = Pairing("", ".cfg")
@@ -66,6 +67,13 @@ def test_the_partner_on_disk_is_found_in_any_case_and_only_if_it_exists(tmp_path
     assert partner_on_disk(tmp_path / "app.cfg") == (Unit.CONFIGURATION, tmp_path / "APP.MNT")
     assert partner_on_disk(tmp_path / "lonely.mnt") == (Unit.PROGRAM, None)
     assert partner_on_disk(tmp_path / "APP.MNT", "") == (Unit.PROGRAM, None)
+
+
+def test_a_folder_is_listed_again_when_a_file_appears(tmp_path: Path) -> None:
+    os.utime(tmp_path, ns=(1_000_000_000, 1_000_000_000))
+    assert names_in(tmp_path) == ()
+    (tmp_path / "APP.CFG").write_text("", encoding="utf-8")  # a new entry changes the folder's time
+    assert names_in(tmp_path) == ("APP.CFG",)
 
 
 _NAME_CHARACTERS = st.characters(blacklist_characters="/\\<>", blacklist_categories=("Cs",))

@@ -4,9 +4,9 @@ A run that ended for good (the program's end with the machine at rest, a
 deadlock, an error) holds its last state, so it compares with the other for as
 long as that one runs. A run cut short (``--until-ms``, the wall clock, a
 keyword the simulator does not model) is known only up to its last sample, so
-the comparison stops there. How each run ended is compared too: an error in one
-run must be met by an error in the other (the messages differ by dialect,
-X-PRINT), and two runs over for good must end the same way.
+the comparison stops there. How each run ended is compared too: a run over for
+good must be met by the other's end of the same kind (an error by an error,
+whose messages differ by dialect, X-PRINT) within ``TIME_MS``.
 """
 
 from __future__ import annotations
@@ -41,20 +41,21 @@ def differences(v3: Recording, v4: Recording) -> list[Divergence]:
 
 
 def _stops(v3: Recording, v4: Recording, until: int) -> list[Divergence]:
+    """How the runs ended, against each other: a run over for good while the other went on more than
+    ``TIME_MS`` past it, two that ended differently (an error against an end), or two errors far apart."""
     runs = (v3, v4)
-    errors = [
-        run.stop.time_ms
-        for run in runs
-        if run.closed and run.stop is not None and run.stop.reason is StopReason.ERROR and run.stop.time_ms <= until
-    ]
-    if len(errors) == 2 and abs(errors[0] - errors[1]) <= tolerance.TIME_MS:
+    ends = sorted((stopped(run) for run in runs if run.closed), key=lambda end: end.time_ms)
+    if len(ends) == 1:  # the other was still running at the horizon, or cut short
+        time = ends[0].time_ms
+        return [_divergence(runs, time, timing_only=False)] if time <= until - tolerance.TIME_MS else []
+    if len(ends) < 2:
         return []
-    if len(errors) == 1 and not (v3.closed and v4.closed) and errors[0] > until - tolerance.TIME_MS:
-        return []  # the run cut off at the horizon may meet its error in the milliseconds after it
-    if errors:
-        return [_divergence(runs, min(errors), timing_only=len(errors) == 2)]
-    if v3.closed and v4.closed and stopped(v3).reason != stopped(v4).reason:
-        return [_divergence(runs, max(stopped(run).time_ms for run in runs), timing_only=False)]
+    first, second = ends
+    apart = second.time_ms - first.time_ms > tolerance.TIME_MS  # the other ran on after the first stopped
+    if first.reason != second.reason:
+        return [_divergence(runs, first.time_ms if apart else second.time_ms, timing_only=False)]
+    if first.reason == StopReason.ERROR.value and apart:
+        return [_divergence(runs, first.time_ms, timing_only=True)]
     return []
 
 

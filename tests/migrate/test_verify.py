@@ -229,3 +229,14 @@ def test_errors_a_slice_apart_match_at_every_horizon() -> None:
     )
     assert (found[4].v3_stop.reason, found[4].v3_stop.time_ms) == ("error", 2)
     assert (found[4].v4_stop.reason, found[4].v4_stop.time_ms) == ("error", 1)
+
+
+def test_a_run_that_goes_on_where_the_original_ended_diverges_when_the_original_ends() -> None:
+    # the v4 text loops for ever after its PRINT, silently: nothing it prints or moves differs, but v3 ended
+    result = migrate('PRINT "a"\n')
+    altered = replace(result, text=result.text + "LOOP\nENDL\n")
+    found = verify(altered, until_ms=100)
+    assert found.verdict is Verdict.DIVERGES
+    divergence = found.divergence
+    assert divergence is not None
+    assert (divergence.time_ms, divergence.what, divergence.v3, divergence.v4) == (0, "stop", "end at 0 ms", "runs on")

@@ -167,7 +167,8 @@ def check(
         raise click.UsageError("--stdin-filename names the program read from standard input: give - as a path")
     try:
         if show_settings:
-            _show_settings([*([Path(stdin_filename or "-")] if _STDIN in paths else []), *found.files], layer)
+            named = [*([Path(stdin_filename or "-")] if _STDIN in paths else []), *found.files]
+            _show_settings(named, layer, [cannot_read(error) for error in found.unreadable])
         planned = plan(found.files, layer, _read_stdin(stdin_filename) if _STDIN in paths else None)
     except SettingsError as error:
         settings_failed("mint check", error)
@@ -210,9 +211,13 @@ def _configuration(path: Path | None) -> SourceFile | None:
     return configuration
 
 
-def _show_settings(paths: list[Path], layer: Overrides) -> NoReturn:
-    click.echo("\n\n".join("\n".join(describe(path, settings_for(path, layer))) for path in paths))
-    sys.exit(0)
+def _show_settings(paths: list[Path], layer: Overrides, problems: list[str]) -> NoReturn:
+    """``--show-settings``: each file's settings; a path that could not be looked at is said as a check says it."""
+    if paths:
+        click.echo("\n\n".join("\n".join(describe(path, settings_for(path, layer))) for path in paths))
+    for problem in problems or ([] if paths else ["no .mnt files found"]):
+        click.echo(f"mint check: {problem}", err=True)
+    sys.exit(_NOT_DONE if problems or not paths else 0)
 
 
 def _read_stdin(name: str | None) -> SourceFile:

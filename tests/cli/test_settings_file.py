@@ -136,6 +136,12 @@ def test_show_settings_without_a_settings_file_shows_the_defaults(tmp_path: Path
     assert "controller          nextmove-pci  default" in result.stdout
 
 
+def test_show_settings_of_a_path_that_is_not_there_says_so(tmp_path: Path) -> None:
+    result = mint_check("--show-settings", tmp_path / "absent.mnt")
+    assert (result.exit_code, result.stdout) == (2, "")
+    assert result.stderr == f"mint check: no such file or directory: {tmp_path / 'absent.mnt'}\n"
+
+
 # ------------------------------------------------------------------ bad files
 
 

@@ -4,38 +4,19 @@ is reported once, as its programs see it."""
 
 from __future__ import annotations
 
-import json
 import subprocess
 import sys
 from pathlib import Path
 
-from click.testing import CliRunner, Result
-
-from mintlang.cli import main
+from tests.cli.invoking import mint_check, numbered, records, write
 
 CONFIGURATION = "DIM counter\nDEFINE fast = 500\nDIM spare\n"  # spare: used by no program (W103)
 USES_IT = "counter = fast\nPRINT counter\n"
 
 
-def mint_check(*arguments: str | Path) -> Result:
-    return CliRunner().invoke(main, ["check", *(str(argument) for argument in arguments)])
-
-
-def write(path: Path, text: str) -> Path:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(text, encoding="utf-8")
-    return path
-
-
 def findings(*arguments: str | Path) -> list[tuple[str, int, str]]:
-    """(file name, line, code) of each finding, the controller's errors by their number (E3001 and E03001 alike)."""
-    result = mint_check("--format", "json", *arguments)
-    assert result.exit_code in (0, 1), result.output
-    return [(Path(r["path"]).name, r["line"], _number(r["code"])) for r in json.loads(result.stdout)]
-
-
-def _number(code: str) -> str:
-    return f"E{int(code[1:])}" if code.startswith("E") else code
+    """(file name, line, code) of each finding."""
+    return [(Path(r["path"]).name, r["line"], numbered(r["code"])) for r in records(*arguments)]
 
 
 def test_a_program_is_checked_with_the_configuration_file_beside_it(tmp_path: Path) -> None:

@@ -3,40 +3,22 @@ the command line's options; ``--show-settings`` says what applies and why; a bad
 
 from __future__ import annotations
 
-import json
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
-from click.testing import CliRunner, Result
 
-from mintlang.cli import main
+from tests.cli.invoking import mint_check, numbered, records, write
 
 OUTPUT_20 = "OUT20 = 1\n"  # NextMove PCI has outputs 0 to 35, MintDrive 0 to 8: error 8 on MintDrive (v4 guide)
 SPARE = "DIM spare\n"  # W103: declared, never used
 LONG = "DIM a\na = 1\nPRINT a" + " " * 300 + "\n"  # W111: a line longer than the controller's editor takes
 
 
-def mint_check(*arguments: str | Path) -> Result:
-    return CliRunner().invoke(main, ["check", *(str(argument) for argument in arguments)])
-
-
-def write(path: Path, text: str) -> Path:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(text, encoding="utf-8")
-    return path
-
-
 def findings(*arguments: str | Path) -> list[tuple[str, str]]:
-    """(file name, code) of each finding, the controller's errors by their number (E8 and E0008 alike)."""
-    result = mint_check("--format", "json", *arguments)
-    assert result.exit_code in (0, 1), result.output
-    return [(Path(r["path"]).name, _number(r["code"])) for r in json.loads(result.stdout)]
-
-
-def _number(code: str) -> str:
-    return f"E{int(code[1:])}" if code.startswith("E") else code
+    """(file name, code) of each finding."""
+    return [(Path(r["path"]).name, numbered(r["code"])) for r in records(*arguments)]
 
 
 # ------------------------------------------------------------------ discovery

@@ -10,6 +10,7 @@ from pathlib import Path
 from click.testing import CliRunner, Result
 
 from mintlang.cli import main
+from tests.cli.invoking import write
 
 CONFIGURATION = "DIM counter = 5\nDEFINE twice = counter * 2\n"
 PROGRAM = "PRINT twice\n"
@@ -17,12 +18,6 @@ PROGRAM = "PRINT twice\n"
 
 def mint_run(*arguments: str | Path) -> Result:
     return CliRunner().invoke(main, ["run", *(str(argument) for argument in arguments)])
-
-
-def write(path: Path, text: str) -> Path:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(text, encoding="utf-8")
-    return path
 
 
 def test_the_configuration_file_beside_the_program_runs_first(tmp_path: Path) -> None:

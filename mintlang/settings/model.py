@@ -1,11 +1,12 @@
 """What applies to one Mint file: the defaults, its settings file, then the command line (or the editor).
 
 Each value keeps where it came from (``default``, ``mint.toml:3``,
-``--select``), which ``mint check --show-settings`` prints. Code selection
-layers as ruff's: ``select`` replaces the set of codes checked (the command
-line's replaces the file's, with its ``extend-select``), ``extend-select``
-adds to it, and every ``ignore`` applies, the file's and the command line's,
-as do the ``per-file-ignores`` whose glob matches the file.
+``--select``), which ``mint check --show-settings`` prints. Codes are
+selected with ruff's words: ``select`` is the set of codes checked (the
+command line's replaces the file's, and the file's ``extend-select`` with it),
+``extend-select`` adds to it, and every ``ignore`` applies, the file's and
+the command line's, as do the ``per-file-ignores`` whose glob matches the
+file: an ignore written in the project stays ignored whatever is selected.
 """
 
 from __future__ import annotations

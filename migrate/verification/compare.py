@@ -11,6 +11,8 @@ whose messages differ by dialect, X-PRINT) within ``TIME_MS``.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 from mintlang.migrate.verification import printed, signals, tolerance
 from mintlang.migrate.verification.model import Divergence, Place, Stopped
 from mintlang.migrate.verification.runs import Recording
@@ -42,21 +44,42 @@ def differences(v3: Recording, v4: Recording) -> list[Divergence]:
 
 def _stops(v3: Recording, v4: Recording, until: int) -> list[Divergence]:
     """How the runs ended, against each other: a run over for good while the other went on more than
-    ``TIME_MS`` past it, two that ended differently (an error against an end), or two errors far apart."""
+    ``TIME_MS`` past it, two that ended differently (an error against an end), or two errors far apart.
+
+    The v4 program ending first is no difference by itself: v3's GO waits for the move ahead (V3-10), so
+    its program runs on after v4's has ended, and what it does meanwhile shows in the other channels."""
     runs = (v3, v4)
-    ends = sorted((stopped(run) for run in runs if run.closed), key=lambda end: end.time_ms)
+    ends = sorted((_End(stopped(run), run is v4) for run in runs if run.closed), key=lambda end: end.time_ms)
     if len(ends) == 1:  # the other was still running at the horizon, or cut short
-        time = ends[0].time_ms
-        return [_divergence(runs, time, timing_only=False)] if time <= until - tolerance.TIME_MS else []
+        end = ends[0]
+        return [_divergence(runs, end.time_ms, timing_only=False)] if end.noticed(until) else []
     if len(ends) < 2:
         return []
     first, second = ends
-    apart = second.time_ms - first.time_ms > tolerance.TIME_MS  # the other ran on after the first stopped
-    if first.reason != second.reason:
-        return [_divergence(runs, first.time_ms if apart else second.time_ms, timing_only=False)]
-    if first.reason == StopReason.ERROR.value and apart:
+    if first.stop.reason != second.stop.reason:
+        time = first.time_ms if first.noticed(second.time_ms) else second.time_ms
+        return [_divergence(runs, time, timing_only=False)]
+    if first.stop.reason == StopReason.ERROR.value and first.noticed(second.time_ms):
         return [_divergence(runs, first.time_ms, timing_only=True)]
     return []
+
+
+@dataclass(frozen=True, slots=True)
+class _End:
+    """How a run ended, and whether it is the v4 run."""
+
+    stop: Stopped
+    migrated: bool
+
+    @property
+    def time_ms(self) -> int:
+        return self.stop.time_ms
+
+    def noticed(self, other_still_running_at: int) -> bool:
+        """Whether this end is a difference when the other run went on until ``other_still_running_at``."""
+        if self.migrated and self.stop.reason == StopReason.END.value:
+            return False
+        return other_still_running_at - self.time_ms > tolerance.TIME_MS
 
 
 def _divergence(runs: tuple[Recording, Recording], time_ms: int, *, timing_only: bool) -> Divergence:

@@ -240,3 +240,15 @@ def test_a_run_that_goes_on_where_the_original_ended_diverges_when_the_original_
     divergence = found.divergence
     assert divergence is not None
     assert (divergence.time_ms, divergence.what, divergence.v3, divergence.v4) == (0, "stop", "end at 0 ms", "runs on")
+
+
+def test_a_v4_program_ending_while_v3_waits_in_go_is_no_difference_by_itself() -> None:
+    # v3's second GO waits until the first 10000-count move ends, about 700 ms in (200 ms up to speed,
+    # 300 at it, 200 down), then its program ends; v4's ends in the first ms. The moves are the same, so
+    # at every horizon, before v3 ends or after, the runs are equivalent.
+    program = "SPEED = 20000 : ACCEL = 100000\nMOVER.0 = 10000 : GO.0\nMOVER.0 = 10000 : GO.0\n"
+    result = migrate(program)
+    for until in (100, 400, 700, 2000):
+        found = verify(result, scenario=DRIVES, until_ms=until)
+        assert found.verdict is Verdict.EQUIVALENT, (until, found.divergence)
+    assert 700 <= found.v3_stop.time_ms <= 704 and found.v4_stop.time_ms == 0

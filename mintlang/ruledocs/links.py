@@ -10,6 +10,7 @@ the ``docs/rules`` folder of a checkout; with neither there is no link.
 from __future__ import annotations
 
 import os
+from collections.abc import Iterable
 from functools import cache
 from importlib.metadata import PackageNotFoundError, metadata
 from pathlib import Path
@@ -26,11 +27,20 @@ def default_base() -> str | None:
         urls = metadata("mintlang").get_all("Project-URL") or []
     except PackageNotFoundError:
         urls = []
-    for entry in urls:
+    in_repository = pages_in_repository(urls)
+    if in_repository is not None:
+        return in_repository
+    return _CHECKOUT_PAGES.as_uri() + "/" if _CHECKOUT_PAGES.is_dir() else None
+
+
+def pages_in_repository(project_urls: Iterable[str]) -> str | None:
+    """The ``docs/rules/`` folder on the default branch of the repository named among a distribution's
+    ``Project-URL`` entries (``"Repository, https://…"``), if one is."""
+    for entry in project_urls:
         label, _, url = entry.partition(",")
         if label.strip().lower() in _REPOSITORY_LABELS:
             return f"{url.strip().rstrip('/')}/blob/main/docs/rules/"
-    return _CHECKOUT_PAGES.as_uri() + "/" if _CHECKOUT_PAGES.is_dir() else None
+    return None
 
 
 def configured_base() -> str | None:

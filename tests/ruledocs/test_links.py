@@ -10,7 +10,13 @@ import pytest
 from click.testing import CliRunner
 
 from mintlang.cli import main
-from mintlang.ruledocs.links import ENVIRONMENT_VARIABLE, configured_base, default_base, rule_url
+from mintlang.ruledocs.links import (
+    ENVIRONMENT_VARIABLE,
+    configured_base,
+    default_base,
+    pages_in_repository,
+    rule_url,
+)
 
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "rules"
 
@@ -34,6 +40,12 @@ def test_by_default_a_checkout_links_its_own_pages() -> None:
     assert base is not None
     page = rule_url("W103", base)
     assert page is not None and (page == (DOCS / "W103.md").as_uri() or page.endswith("/docs/rules/W103.md"))
+
+
+def test_a_distribution_naming_its_repository_links_the_pages_there() -> None:
+    urls = ["Homepage, https://example.org/mint", "Repository, https://github.com/example/mintlang/"]
+    assert pages_in_repository(urls) == "https://github.com/example/mintlang/blob/main/docs/rules/"
+    assert pages_in_repository(["Homepage, https://example.org/mint"]) is None
 
 
 def test_the_user_sets_the_base_for_the_command_line(monkeypatch: pytest.MonkeyPatch) -> None:

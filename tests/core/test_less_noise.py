@@ -9,6 +9,8 @@ variable is offered the declared name it resembles. Hints (I…) are asked for.
 from __future__ import annotations
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 import mintlang
 from mintlang.diagnostics import Diagnostic, Edit
@@ -87,3 +89,16 @@ def test_hints_are_off_unless_selected() -> None:
     assert len(coded(source, "I201", select=("I",))) == 1
     assert len(coded(source, "I201", select=("I201",))) == 1
     assert coded(source, "I201", select=("E", "W")) == []
+
+
+_NAMES = st.sampled_from(["alpha", "beta", "gamma"])
+_LINES = st.lists(st.lists(_NAMES, min_size=1, max_size=4), min_size=1, max_size=6)
+
+
+@given(_LINES)
+def test_each_undeclared_name_is_reported_once_on_each_line_that_uses_it(lines: list[list[str]]) -> None:
+    source = "".join("PRINT " + ", ".join(names) + "\n" for names in lines)
+    index = mintlang.LineIndex(source)
+    found = [(index.position(d.span.start).line, source[d.span.start : d.span.end]) for d in coded(source, "E3001")]
+    expected = [(number, name) for number, names in enumerate(lines, start=1) for name in dict.fromkeys(names)]
+    assert sorted(found) == sorted(expected)

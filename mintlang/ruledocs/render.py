@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 
+from mintlang.controllers import profile
 from mintlang.manual.places import place
 from mintlang.ruledocs.model import Example, FixSafety, RuleDoc
 
@@ -38,7 +39,10 @@ def _shown(text: str) -> str:
 
 
 def _context(example: Example) -> str:
-    checked = [f"Checked for the `{example.controller}` controller."] if example.controller else []
+    checked = []
+    if example.controller is not None:
+        title = profile(example.controller).title
+        checked.append(f"Checked for {title} (`--controller {example.controller}`).")
     if example.with_program is not None:
         program = example.with_program.rstrip("\n")
         checked.append(f"The example is a configuration file, checked with the program `{program}`.")

@@ -352,6 +352,11 @@ class Context:
         keyword ...), not by a list."""
         return [tag for tag in self._tagged if type(tag) is str and keep(tag)]
 
+    def names(self, keep: Callable[[str], bool]) -> list[str]:
+        """The user names written anywhere in the application (by identity, see ``name_tag``) that
+        ``keep`` accepts: a rule that needs the symbol table only for some names asks first."""
+        return [tag[1] for tag in self._tagged if type(tag) is tuple and tag[0] == "name" and keep(tag[1])]
+
     @cached_property
     def _order(self) -> tuple[tuple[FileView, int], ...]:
         """Each line of compile order as its file and its index there."""

@@ -100,7 +100,7 @@ def _list_rules(console: Console) -> None:
 @format_option(["text", "json"])
 @output_file_option("Write the diff and the report to this file instead of standard output.")
 @click.option("--fail-on", "fail_on", type=click.Choice(["manual"]), help="Exit 1 when manual items are left.")
-@exit_zero_option("Exit with 0 when the gate fails (--check, --fail-on); 2 still says something was not done.")
+@exit_zero_option("Exit with 0 when the gate fails (--check, --verify, --fail-on); 2 still means not done.")
 @list_option("--only", metavar="RULES", help="Run only these rules (comma-separated or repeated).")
 @list_option("--skip", metavar="RULES", help="Do not run these rules (comma-separated or repeated).")
 @list_option("--with", "opt_in", metavar="RULES", help="Also run these optional rules (comma-separated or repeated).")
@@ -178,10 +178,12 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
     _tidy(items, mode)
     if settings is not None:
         verified, failed = verifying.verify_all(migrated, settings)
-        verifying.output(verified, output_format)
+        with destination(output_file, _fail) as stream:
+            verifying.output(verified, output_format, console(color, file=stream), quiet=quiet)
         for problem in [*problems, *failed]:
             click.echo(f"mint-migrate: {problem}", err=True)
-        sys.exit(_verify_status(verified, fail_on, [*problems, *failed]))
+        status = _verify_status(verified, fail_on, [*problems, *failed])
+        sys.exit(0 if status == GATE_FAILED and exit_zero else status)
     _output(items, mode, output_format, controller, Output(output_file, quiet, color))
     if mode == "write":
         try:

@@ -11,7 +11,6 @@ import json
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-import click
 from rich.console import Console
 
 from mintlang.dialect import Dialect
@@ -103,9 +102,11 @@ def _whole(files: list[Migrated]) -> MigrationResult | None:
     return MigrationResult("", "", (), (), {}, configuration=configuration)
 
 
-def output(verified: list[Verified], output_format: str) -> None:
+def output(verified: list[Verified], output_format: str, console: Console, *, quiet: bool) -> None:
+    """The report on ``console`` (standard output or ``--output-file``); ``quiet`` leaves out what was not
+    verified and the totals."""
     data = verification_report.report(verified)
     if output_format == "json":
-        click.echo(json.dumps(data, indent=2, ensure_ascii=False))
+        console.file.write(json.dumps(data, indent=2, ensure_ascii=False) + "\n")
     else:
-        verification_report.render_text(data, Console(highlight=False, soft_wrap=True))
+        verification_report.render_text(data, console, quiet=quiet)

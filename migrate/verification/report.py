@@ -116,8 +116,9 @@ def _manual(item: Verified, unit: str, manual: ManualItem) -> dict[str, Any]:
     }
 
 
-def render_text(data: Mapping[str, Any], console: Console) -> None:
-    """Per application: the verdict, the first difference with each run's line, what was not verified."""
+def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = False) -> None:
+    """Per application: the verdict, the first difference with each run's line, what was not verified (not
+    when ``quiet``); then the totals (not when ``quiet``)."""
     for row in data["applications"]:
         name = escape(row["program"] or row["configuration"])
         found = row["divergence"]
@@ -129,13 +130,16 @@ def render_text(data: Mapping[str, Any], console: Console) -> None:
             values = f"v3 {escape(other['v3']['value'])}, v4 {escape(other['v4']['value'])}"
             timing = ", timing only" if other["timing_only"] else ""
             console.print(f"  also differs: {escape(other['what'])} at {other['time_ms']} ms ({values}{timing})")
+        if quiet:
+            continue
         for manual in row["not_verified"]:
             where = f"{escape(manual['file'])}:{manual['migrated_line']}" + (" (note)" if manual["note"] else "")
             reason = escape(manual["reason"])
             console.print(f"  not verified: {where}: [bold]{manual['rule']}[/bold] {reason}", style="dim")
         for place in row["disabled"]:
             console.print(f"  disabled for the v4 run: {escape(place['file'])}:{place['line']} (migrated)", style="dim")
-    console.print(summary(data["totals"]))
+    if not quiet:
+        console.print(summary(data["totals"]))
 
 
 def _where(told: Mapping[str, Any], side: str) -> str:

@@ -161,3 +161,17 @@ def test_an_incomplete_comparison_says_how_far_it_went(tmp_path: Path) -> None:
     assert code == 2
     expected = "incomplete: no difference over 1 ms, then COMMSON (command) is not simulated by mint-run"
     assert output.splitlines()[0] == f"{tmp_path / 'demo.mnt'}: {expected}"
+
+
+def test_the_shared_output_options_apply_to_the_verification_report(tmp_path: Path) -> None:
+    report = tmp_path / "verified.json"
+    code, output, _ = run(
+        tmp_path, DEFAULT_SPEED, "--until-ms", "500", "--format", "json", "--output-file", str(report)
+    )
+    assert code == 1
+    assert output == ""
+    assert json.loads(report.read_text())["totals"]["diverges"] == 1
+    assert run(tmp_path, DEFAULT_SPEED, "--until-ms", "500", "--exit-zero")[0] == 0  # a divergence is the gate
+    assert run(tmp_path, NOT_SIMULATED, "--until-ms", "100", "--exit-zero")[0] == 2  # incomplete is not done
+    quiet = run(tmp_path, DEFAULT_SPEED, "--until-ms", "500", "-q")[1].splitlines()
+    assert len(quiet) == 3  # the verdict and each run's side, without what was not verified or the totals

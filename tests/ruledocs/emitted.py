@@ -12,7 +12,6 @@ from __future__ import annotations
 import ast
 from pathlib import Path
 
-from mintlang.analysis import suppression
 from mintlang.analysis.rules import addressing, keyword_usage, limits
 from mintlang.semantic import blocks
 
@@ -20,14 +19,14 @@ CORE = Path(blocks.__file__).parents[1]
 _MAKERS = frozenset({"mint_error", "_error", "own"})
 
 
-def _literals_returned(function: ast.FunctionDef) -> set[int]:
-    """The first integers of the tuples ``function`` returns (``return 2006, "…"``)."""
+def _literals_returned(function: ast.FunctionDef, place: int) -> set[int]:
+    """The literals at ``place`` of the tuples ``function`` returns (``return 2006, "…"``: 2006 at 0)."""
     return {
-        node.value.elts[0].value
+        node.value.elts[place].value
         for node in ast.walk(function)
         if isinstance(node, ast.Return)
         and isinstance(node.value, ast.Tuple)
-        and isinstance(node.value.elts[0], ast.Constant)
+        and isinstance(node.value.elts[place], ast.Constant)
     }
 
 
@@ -52,10 +51,10 @@ def _over_limits() -> set[int]:
 _TABLES = {
     ("semantic/blocks.py", "close"): {code for _, code, _ in blocks._CLOSERS.values()} | {2013},
     ("semantic/blocks.py", "finish"): {code for _, code in blocks._CLOSING.values()},
-    ("analysis/rules/addressing.py", "_channel"): {code for *_, code in addressing._CHANNEL_FAMILIES} | {4},
-    ("analysis/rules/keyword_usage.py", "each_line"): _literals_returned(_function(keyword_usage, "_verdict")),
+    ("analysis/rules/addressing.py", "_channel"): {code for *_, code in addressing._CHANNEL_FAMILIES}
+    | _literals_returned(_function(addressing, "_channel_family"), -1),
+    ("analysis/rules/keyword_usage.py", "each_line"): _literals_returned(_function(keyword_usage, "_verdict"), 0),
     ("analysis/rules/limits.py", "_over"): _over_limits(),
-    ("analysis/suppression.py", "_unused"): {suppression.UNUSED_SUPPRESSION},
 }
 
 

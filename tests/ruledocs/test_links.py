@@ -64,3 +64,10 @@ def test_sarif_rules_carry_their_help_uri_and_description(tmp_path: Path) -> Non
     (rule,) = json.loads(result.stdout)["runs"][0]["tool"]["driver"]["rules"]
     assert rule["id"] == "W103" and rule["helpUri"] == "https://example.org/mint/W103.md"
     assert rule["fullDescription"]["text"].startswith("A variable declared with DIM and never used")
+
+
+def test_mint_rule_json_gives_the_page_of_the_code() -> None:
+    result = CliRunner(env={ENVIRONMENT_VARIABLE: "https://example.org/mint/"}).invoke(
+        main, ["rule", "E2016", "--format", "json"]
+    )
+    assert json.loads(result.stdout)["url"] == "https://example.org/mint/E2016.md"

@@ -3,7 +3,7 @@
 ``pre-commit try-repo`` installs this repository's committed HEAD into a virtual
 environment of its own with pip (``language: python``), exactly as it installs a
 hook from a user's configuration: the test needs the package index that the test
-extra itself was installed from, no more. It takes about half a minute, mostly pip.
+extra itself was installed from, no more. It takes about a minute, mostly pip.
 """
 
 from __future__ import annotations

@@ -17,6 +17,7 @@ import difflib
 import json
 import sys
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 from typing import NoReturn
 
@@ -34,7 +35,7 @@ from mintlang.cli.options import (
     output_file_option,
     version_option,
 )
-from mintlang.cli.settings import ProjectCommand
+from mintlang.cli.settings import ProjectCommand, typed
 from mintlang.cli.terminal import console, destination
 from mintlang.diagnostics import split_lines
 from mintlang.migrate import leftovers, verifying
@@ -165,7 +166,8 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
     try:
         mode = _mode(write=write, check=check, to_stdout=to_stdout, verify=verify)
         options = verifying.Options(scenario_paths, until_ms, v3_controller, drives)
-        settings = options.settings(controller) if mode == "verify" else options.refuse()
+        context = click.get_current_context()
+        settings = options.settings(controller) if mode == "verify" else options.refuse(partial(typed, context))
         select(only or None, skip, opt_in)
         applications = read(paths, config)
         if mode == "stdout" and sum(len(application.files()) for application in applications) > 1:

@@ -8,6 +8,7 @@ the migrated applications into the report ``verification.report`` prints.
 from __future__ import annotations
 
 import json
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -56,11 +57,12 @@ class Options:
                 raise UsageError(f"cannot read {path}: {error.strerror or error}") from None
         return Settings(v3_controller, controller, scenario, self.until_ms or DEFAULT_UNTIL_MS)
 
-    def refuse(self) -> None:
-        """Without ``--verify``: any of its options given is a ``UsageError``."""
-        given = {"--scenario": self.scenario_paths, "--until-ms": self.until_ms}
-        given |= {"--v3-controller": self.v3_controller, "--drives": self.drives}
-        named = [name for name, value in given.items() if value]
+    def refuse(self, typed: Callable[[str], bool]) -> None:
+        """Without ``--verify``: any of its options typed on the command line is a ``UsageError``; a settings
+        file's defaults for them are not (``typed`` tells which, by parameter name)."""
+        given = {"--scenario": ("scenario_paths", self.scenario_paths), "--until-ms": ("until_ms", self.until_ms)}
+        given |= {"--v3-controller": ("v3_controller", self.v3_controller), "--drives": ("drives", self.drives)}
+        named = [flag for flag, (parameter, value) in given.items() if value and typed(parameter)]
         if named:
             raise UsageError(f"{', '.join(named)}: only with --verify")
 

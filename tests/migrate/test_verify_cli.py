@@ -175,3 +175,12 @@ def test_the_shared_output_options_apply_to_the_verification_report(tmp_path: Pa
     assert run(tmp_path, NOT_SIMULATED, "--until-ms", "100", "--exit-zero")[0] == 2  # incomplete is not done
     quiet = run(tmp_path, DEFAULT_SPEED, "--until-ms", "500", "-q")[1].splitlines()
     assert len(quiet) == 3  # the verdict and each run's side, without what was not verified or the totals
+
+
+def test_the_settings_table_gives_verify_options_defaults_that_other_modes_ignore(tmp_path: Path) -> None:
+    (tmp_path / "mint.toml").write_text('[migrate]\nuntil-ms = 300\ndrives = "enabled"\n')
+    program = tmp_path / "demo.mnt"
+    program.write_text(DEFAULT_SPEED)
+    assert CliRunner().invoke(migrate, [str(program)]).exit_code == 0  # a dry run: not "only with --verify"
+    verified = CliRunner().invoke(migrate, ["--verify", "--format", "json", str(program)])
+    assert json.loads(verified.stdout)["applications"][0]["compared_ms"] == 300

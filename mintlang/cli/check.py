@@ -18,6 +18,7 @@ import click
 from mintlang.cli.applications import plan
 from mintlang.cli.checking import check_file
 from mintlang.cli.files import cannot_read, find, program_as_own_configuration
+from mintlang.cli.fixing import Fixing, Outcome, apply, fix_options, fixable_summary, fixed_summary, marked
 from mintlang.cli.options import (
     HELP_OPTIONS,
     color_option,
@@ -53,9 +54,10 @@ SELECT_HELP = (
 EXIT_STATUS = """\b
 Exit status:
   0  no finding of error severity (or --exit-zero)
-  1  a finding of error severity
-  2  a usage problem, or a file that could not be checked (the others
-     are checked and reported all the same)"""
+  1  a finding of error severity (with --fix: left after fixing;
+     with --diff: a fix to make)
+  2  a usage problem, or a file that could not be checked or fixed
+     (the others are checked and reported all the same)"""
 
 
 def _codes(values: tuple[str, ...] | None, option: str) -> tuple[str, ...] | None:
@@ -120,6 +122,7 @@ def _fail(message: str) -> NoReturn:
     verbose="Say on standard error how many files were checked, on how many processes, in how long.",
 )
 @color_option()
+@fix_options()
 def check(
     paths: tuple[Path, ...],
     dialect: str,
@@ -139,6 +142,9 @@ def check(
     quiet: bool,
     verbose: bool,
     color: str,
+    fix: bool,
+    unsafe_fixes: bool,
+    diff: bool,
 ) -> None:
     """Check Mint programs for the errors the controller finds, and more.
 
@@ -163,6 +169,8 @@ def check(
     _configuration(config_path)  # a --config that cannot be read ends the command before any check
     if config_path is not None and (itself := program_as_own_configuration(found.files, config_path)) is not None:
         _fail(f"--config {config_path} is the program {itself} itself: name the configuration file")
+    if fix and not diff and _STDIN in paths:
+        raise click.UsageError("--fix writes files, and standard input is none: use --diff to see the fixes")
     if _STDIN not in paths and stdin_filename is not None:
         raise click.UsageError("--stdin-filename names the program read from standard input: give - as a path")
     try:
@@ -172,7 +180,8 @@ def check(
         planned = plan(found.files, layer, _read_stdin(stdin_filename) if _STDIN in paths else None)
     except SettingsError as error:
         settings_failed("mint check", error)
-    work = planned.jobs
+    fixing = Fixing.asked(fix, unsafe_fixes, diff)
+    work = marked(planned.jobs, planned.hidden, fixing) if fixing is not None else planned.jobs
     if planned.empty and not found.unreadable and not planned.problems:
         _fail("no .mnt files found in " + ", ".join(str(p) for p in paths))
 
@@ -181,9 +190,22 @@ def check(
     results = map_in_order(check_file, work, workers=workers, progress=progress)
     problems = [cannot_read(e) for e in found.unreadable] + planned.problems + [r.problem for r in results if r.problem]
     reports = planned.reports(results)
-    if reports:
+    fixed = [result.fixed for result in results if result.fixed is not None]
+    outcome = None
+    if diff:  # the changes instead of the report, as ruff's --diff
+        with destination(output_file, _fail) as stream:
+            outcome = apply(fixed, diff=stream)
+    elif fixing is not None:
+        outcome = apply(fixed, diff=None)
+        problems += outcome.problems
+    if reports and not diff:
         with destination(output_file, _fail) as stream:
             _write(reports, stream, output_format, statistics=statistics, quiet=quiet, color=color)
+            if output_format == "text" and not quiet and not statistics:
+                _write_fix_summary(reports, outcome, stream)
+    if outcome is not None and not quiet:
+        notes = outcome.notes() + ([fixed_summary(outcome, diff=diff)] if diff or output_format != "text" else [])
+        click.echo("".join(f"mint check: {note}\n" for note in notes), err=True, nl=False)
     for problem in problems:
         click.echo(f"mint check: {problem}", err=True)
     if verbose:
@@ -194,8 +216,18 @@ def check(
             f"on {processes} process{'es' if processes != 1 else ''} in {elapsed:.2f} s",
             err=True,
         )
-    failed = any(d.severity is Severity.ERROR for report in reports for d in report.diagnostics)
+    if diff:  # exit 1: there is something to fix
+        failed = outcome is not None and bool(outcome.codes)
+    else:
+        failed = any(d.severity is Severity.ERROR for report in reports for d in report.diagnostics)
     sys.exit(_NOT_DONE if problems else _FOUND_ERRORS if failed and not exit_zero else 0)
+
+
+def _write_fix_summary(reports: list[FileReport], outcome: Outcome | None, stream: IO[str]) -> None:
+    """What was fixed, and what ``--fix`` (or ``--unsafe-fixes``) would fix of what is left."""
+    lines = [fixed_summary(outcome, diff=False)] if outcome is not None else []
+    fixable = fixable_summary(reports)
+    stream.write("".join(f"{line}\n" for line in [*lines, *([fixable] if fixable else [])]))
 
 
 def _configuration(path: Path | None) -> SourceFile | None:

@@ -6,13 +6,14 @@ import json
 from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass
+from importlib.metadata import version
 
 from rich.cells import cell_len
 from rich.console import Console
 
 from mintlang.cli.terminal import Palette
 from mintlang.codes import OWN_CODES
-from mintlang.diagnostics import Diagnostic, LineIndex, Severity, split_lines
+from mintlang.diagnostics import Diagnostic, Fix, LineIndex, Severity, Span, split_lines
 from mintlang.keyworddb import database
 from mintlang.ruledocs import find
 from mintlang.ruledocs.links import configured_base, rule_url
@@ -101,22 +102,41 @@ def render_text(reports: Sequence[FileReport], console: Console, *, summary: boo
     console.file.flush()
 
 
-def as_json(reports: Sequence[FileReport]) -> str:
-    records = [
-        {
-            "path": report.path,
-            "code": diagnostic.code,
-            "mint_error": diagnostic.mint_error,
-            "severity": diagnostic.severity.value,
-            "message": diagnostic.message,
-            "line": line,
-            "column": column,
-            "end_line": end_line,
-            "end_column": end_column,
-        }
-        for report in reports
-        for diagnostic, line, column, end_line, end_column in report.located()
+def _region(index: LineIndex, span: Span) -> tuple[int, int, int, int]:
+    """1-based start line and column, end line and column (end exclusive) of ``span``."""
+    start, end = index.position(span.start), index.position(span.end)
+    return start.line, start.column, end.line, end.column
+
+
+def _json_fix(fix: Fix, index: LineIndex) -> dict[str, object]:
+    """A fix as JSON: each edit replaces the text between two positions with ``text``."""
+    edits = [
+        dict(zip(("line", "column", "end_line", "end_column"), _region(index, edit.span), strict=True))
+        | {"text": edit.text}
+        for edit in fix.edits
     ]
+    return {"title": fix.title, "safe": fix.safe, "edits": edits}
+
+
+def as_json(reports: Sequence[FileReport]) -> str:
+    records = []
+    for report in reports:
+        index = LineIndex(report.source)
+        records.extend(
+            {
+                "path": report.path,
+                "code": diagnostic.code,
+                "mint_error": diagnostic.mint_error,
+                "severity": diagnostic.severity.value,
+                "message": diagnostic.message,
+                "line": line,
+                "column": column,
+                "end_line": end_line,
+                "end_column": end_column,
+                "fixes": [_json_fix(fix, index) for fix in diagnostic.fixes],
+            }
+            for diagnostic, line, column, end_line, end_column in report.located()
+        )
     return json.dumps(records, indent=2, ensure_ascii=False)
 
 
@@ -142,38 +162,50 @@ def _sarif_rule(code: str, base: str | None) -> dict[str, object]:
 _SARIF_LEVEL = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
 
 
+def _sarif_region(index: LineIndex, span: Span) -> dict[str, int]:
+    return dict(zip(("startLine", "startColumn", "endLine", "endColumn"), _region(index, span), strict=True))
+
+
+def _sarif_fix(fix: Fix, index: LineIndex, uri: str) -> dict[str, object]:
+    """A SARIF fix: the file's replacements; whether ``--fix`` applies it unasked is a property."""
+    replacements = [
+        {"deletedRegion": _sarif_region(index, edit.span), "insertedContent": {"text": edit.text}} for edit in fix.edits
+    ]
+    return {
+        "description": {"text": fix.title},
+        "artifactChanges": [{"artifactLocation": {"uri": uri}, "replacements": replacements}],
+        "properties": {"safe": fix.safe},
+    }
+
+
 def as_sarif(reports: Sequence[FileReport]) -> str:
     """SARIF 2.1.0, the format code-scanning services read."""
     results = []
     codes: set[str] = set()
     for report in reports:
-        for diagnostic, line, column, end_line, end_column in report.located():
+        index = LineIndex(report.source)
+        for diagnostic in report.diagnostics:
             codes.add(diagnostic.code)
-            results.append(
-                {
-                    "ruleId": diagnostic.code,
-                    "level": _SARIF_LEVEL[diagnostic.severity],
-                    "message": {"text": diagnostic.message},
-                    "locations": [
-                        {
-                            "physicalLocation": {
-                                "artifactLocation": {"uri": report.path},
-                                "region": {
-                                    "startLine": line,
-                                    "startColumn": column,
-                                    "endLine": end_line,
-                                    "endColumn": end_column,
-                                },
-                            }
-                        }
-                    ],
-                }
-            )
+            location = {"artifactLocation": {"uri": report.path}, "region": _sarif_region(index, diagnostic.span)}
+            result = {
+                "ruleId": diagnostic.code,
+                "level": _SARIF_LEVEL[diagnostic.severity],
+                "message": {"text": diagnostic.message},
+                "locations": [{"physicalLocation": location}],
+            }
+            if diagnostic.fixes:
+                result["fixes"] = [_sarif_fix(fix, index, report.path) for fix in diagnostic.fixes]
+            results.append(result)
     rules = [_sarif_rule(code, configured_base()) for code in sorted(codes)]
     document = {
         "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
         "version": "2.1.0",
-        "runs": [{"tool": {"driver": {"name": "mint check", "rules": rules}}, "results": results}],
+        "runs": [
+            {
+                "tool": {"driver": {"name": "mint check", "version": version("mintlang"), "rules": rules}},
+                "results": results,
+            }
+        ],
     }
     return json.dumps(document, indent=2, ensure_ascii=False)
 

@@ -92,6 +92,13 @@ def test_json_output_is_one_array_of_records_with_one_based_positions(tmp_path: 
             "column": 7,
             "end_line": 3,
             "end_column": 8,
+            "fixes": [  # a DIM beside the file's other DIM, before line 2: a guess, so not safe
+                {
+                    "title": "Declare 'b' with DIM",
+                    "safe": False,
+                    "edits": [{"line": 2, "column": 1, "end_line": 2, "end_column": 1, "text": "DIM b\n"}],
+                }
+            ],
         }
     ]
 
@@ -100,7 +107,7 @@ def test_json_records_have_exactly_the_documented_keys(tmp_path: Path) -> None:
     path = write(tmp_path, "several.mnt", "DIM spare\nSPEED\nPRINT q\n")
     records = json_records(path)
     assert [record["code"] for record in records] == ["W103", "E2005", "E3001"]
-    keys = {"path", "code", "mint_error", "severity", "message", "line", "column", "end_line", "end_column"}
+    keys = {"path", "code", "mint_error", "severity", "message", "line", "column", "end_line", "end_column", "fixes"}
     assert all(set(record) == keys for record in records)
     assert [record["mint_error"] for record in records] == [None, 2005, 3001]
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -42,6 +43,16 @@ _STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.
 _CONTEXT = 60  # characters shown either side of the marked text on a long line (and twice that marked)
 # Control characters of the source are shown as their pictures (one cell each), never sent to the terminal.
 _VISIBLE = {code: chr(0x2400 + code) for code in range(0x20)} | {0x7F: "\u2421", ord("\t"): " "}
+_CONTROL = re.compile("[\x00-\x1f\x7f]")
+
+
+def _visible(text: str) -> str:
+    """``text`` with its control characters as pictures (a search first: most text has none to translate)."""
+    return text.translate(_VISIBLE) if _CONTROL.search(text) else text
+
+
+def _cells(text: str) -> int:
+    return len(text) if text.isascii() else cell_len(text)
 
 
 def _frame(text: str, start: int, end: int) -> tuple[str, int, int]:
@@ -54,9 +65,9 @@ def _frame(text: str, start: int, end: int) -> tuple[str, int, int]:
     end = min(end, start + 2 * _CONTEXT)  # a long marked stretch is cut too
     first, last = max(0, start - _CONTEXT), min(len(text), end + _CONTEXT)
     head, tail = ("…" if first > 0 else ""), ("…" if last < len(text) else "")
-    visible = text[first:last].translate(_VISIBLE)
+    visible = _visible(text[first:last])
     before = head + visible[: start - first]
-    return head + visible + tail, cell_len(before), cell_len(visible[start - first : end - first])
+    return head + visible + tail, _cells(before), _cells(visible[start - first : end - first])
 
 
 def render_text(reports: Sequence[FileReport], console: Console, *, summary: bool = True) -> None:
@@ -69,10 +80,10 @@ def render_text(reports: Sequence[FileReport], console: Console, *, summary: boo
     """
     palette = Palette.for_console(console, {*_STYLE.values(), "blue", "bold"})
     counts = dict.fromkeys(Severity, 0)
-    bar = palette.paint("blue", "|")
+    bar, arrow, equals = (palette.paint("blue", mark) for mark in ("|", "-->", "="))
     for report in reports:
         lines = split_lines(report.source)
-        path = report.path.translate(_VISIBLE)
+        path = _visible(report.path)
         frames: list[str] = []
         for diagnostic, line, column, end_line, end_column in report.located():
             counts[diagnostic.severity] += 1
@@ -83,16 +94,13 @@ def render_text(reports: Sequence[FileReport], console: Console, *, summary: boo
             shown, before, marked = _frame(text, column - 1, max(column, end) - 1)
             heading = palette.paint(style, f"{diagnostic.severity.value}[{diagnostic.code}]")
             frames.append(
-                f"{heading}: {diagnostic.message.translate(_VISIBLE)}\n"
-                f"  {palette.paint('blue', '-->')} {path}:{line}:{column}\n"
+                f"{heading}: {_visible(diagnostic.message)}\n"
+                f"  {arrow} {path}:{line}:{column}\n"
                 f"  {gutter} {bar}\n"
                 f"  {palette.paint('blue', f'{line} |')} {shown}\n"
                 f"  {gutter} {bar} {' ' * before}{palette.paint(style, '^' * max(1, marked))}\n"
             )
-            frames.extend(
-                f"  {gutter} {palette.paint('blue', '=')} fix: {fix.title.translate(_VISIBLE)}\n"
-                for fix in diagnostic.fixes
-            )
+            frames.extend(f"  {gutter} {equals} fix: {_visible(fix.title)}\n" for fix in diagnostic.fixes)
             frames.append("\n")
         console.file.write("".join(frames))
     if summary:

@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+from collections import Counter
+
 import pytest
 
 from mintlang import check, check_application
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Severity, Span
 from mintlang.fixes import MAX_ROUNDS, apply_once, automatic_fix, fix_text
+from tests.corpus_files import CorpusCase, cases
 
 
 def finding(start: int, end: int, *fixes: Fix) -> Diagnostic:
@@ -44,12 +47,30 @@ def test_of_two_overlapping_fixes_the_first_in_the_text_applies() -> None:
     assert apply_once("abcd", [second, first], unsafe=False) == ("Xd", [first])
 
 
-def test_two_insertions_at_one_place_are_not_both_made() -> None:
+def test_one_insertion_two_findings_ask_for_is_made_once() -> None:
     one, two = (
-        finding(0, 0, replacing(0, 0, "DIM a\n", safe=True)),
-        finding(0, 0, replacing(0, 0, "DIM a\n", safe=True)),
+        finding(0, 1, replacing(0, 0, "DIM a\n", safe=True)),
+        finding(6, 7, replacing(0, 0, "DIM a\n", safe=True)),
     )
-    assert apply_once("a = 1\n", [one, two], unsafe=False)[0] == "DIM a\na = 1\n"
+    assert apply_once("a = 1\na = 2\n", [one, two], unsafe=False)[0] == "DIM a\na = 1\na = 2\n"
+
+
+def test_different_insertions_at_one_place_are_made_in_the_order_of_their_findings() -> None:
+    first, second = (
+        finding(6, 7, replacing(0, 0, "DIM a\n", safe=True)),
+        finding(8, 9, replacing(0, 0, "DIM b\n", safe=True)),
+    )
+    assert apply_once("PRINT a, b\n", [second, first], unsafe=False)[0] == "DIM a\nDIM b\nPRINT a, b\n"
+
+
+def test_a_fix_that_leaves_its_finding_is_undone() -> None:
+    """A declaration the checker still reports undeclared is not written at all, rather than once a round."""
+
+    def unmoved(text: str) -> tuple[Diagnostic, ...]:
+        return (finding(0, 1, replacing(0, 0, "DIM a\n", safe=True)),)
+
+    result = fix_text("a = 1\n", unmoved, unsafe=False)
+    assert (result.text, result.fixed, result.converged) == ("a = 1\n", (), True)
 
 
 def test_fixing_goes_on_until_the_text_has_nothing_more_to_fix() -> None:
@@ -67,7 +88,10 @@ def test_fixing_goes_on_until_the_text_has_nothing_more_to_fix() -> None:
 
 def test_rounds_are_bounded_when_fixes_never_settle() -> None:
     def always_one_more(text: str) -> tuple[Diagnostic, ...]:
-        return (finding(0, 0, replacing(0, 0, "x", safe=True)),)
+        growing = Diagnostic(
+            "W101", Severity.WARNING, Span(0, 0), f"{len(text)} long", fixes=(replacing(0, 0, "x", safe=True),)
+        )
+        return (growing,)
 
     result = fix_text("", always_one_more, unsafe=False)
     assert result.text == "x" * MAX_ROUNDS
@@ -98,3 +122,25 @@ def test_safe_fixes_of_the_checker(source: str, after: str) -> None:
 def test_unsafe_fixes_are_not_applied_by_default(source: str) -> None:
     assert any(fix.safe is False for d in check(source) for fix in d.fixes)  # offered, and unsafe
     assert fix_text(source, check, unsafe=False).text == source
+
+
+CORPUS = [case for folder in ("v4/valid", "v4/invalid", "v4/runtime", "v3/programs") for case in cases(folder)]
+
+
+@pytest.mark.parametrize("unsafe", [False, True], ids=["safe", "unsafe"])
+def test_on_the_corpus_fixing_twice_is_fixing_once_and_safe_fixes_add_no_error(unsafe: bool) -> None:
+    """Invariants over every corpus program: what --fix leaves has nothing more it would fix, and
+    the safe fixes never make an error appear (the unsafe ones may: they guess)."""
+    for case in CORPUS:
+
+        def findings(text: str, case: CorpusCase = case) -> tuple[Diagnostic, ...]:
+            options = {"controller": case.controller, "dialect": case.dialect, "config": case.configuration}
+            return check_application(text, select=("E", "W", "I"), **options).program  # type: ignore[arg-type]
+
+        once = fix_text(case.source, findings, unsafe=unsafe)
+        assert once.converged, case.name
+        assert fix_text(once.text, findings, unsafe=unsafe).text == once.text, case.name
+        if not unsafe:
+            before = Counter(d.code for d in findings(case.source) if d.severity is Severity.ERROR)
+            after = Counter(d.code for d in once.remaining if d.severity is Severity.ERROR)
+            assert after <= before, case.name

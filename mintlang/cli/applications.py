@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from mintlang import check_application
+from mintlang.analysis.suppression import UNUSED_SUPPRESSION
 from mintlang.cli.checking import Checked, CheckOptions, Job
 from mintlang.cli.files import cannot_read, is_configuration
 from mintlang.cli.report import FileReport
@@ -26,7 +27,8 @@ from mintlang.semantic.units import Unit
 from mintlang.settings import FileSettings, Overrides, settings_for
 from mintlang.source import SourceFile, read_source
 
-_USE_FINDINGS = frozenset({"W103", "W105"})  # unused variable, macro: a use in any program counts
+# Unused variable, macro, suppression: a use in any program counts.
+_USE_FINDINGS = frozenset({"W103", "W105", UNUSED_SUPPRESSION})
 
 
 def options_of(settings: FileSettings) -> CheckOptions:

@@ -83,11 +83,12 @@ def verify(
     left = record(v3, Dialect.V3, v3_controller, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
     right = record(v4, Dialect.V4, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
     short = _short(left, right, runnable.flagged_places(result))
-    found = [] if left.refused or (right.refused and short) else compare.differences(left, right)
+    comparable = not (left.refused or (right.refused and short))  # else one of them never ran
+    found = compare.differences(left, right) if comparable else []
     flagged = _flagged(result)
     return Verification(
         verdict=_verdict(found, flagged, short),
-        compared_ms=max(compare.horizon(left, right), 0) if not left.refused else 0,
+        compared_ms=max(compare.horizon(left, right), 0) if comparable else 0,
         divergence=found[0] if found else None,
         differences=tuple(found),
         v3_controller=v3_controller,

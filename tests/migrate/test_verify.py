@@ -172,12 +172,13 @@ def _migration(v3: str, v4: str, *flagged_lines: int) -> MigrationResult:
 
 
 def test_a_flagged_line_whose_removal_breaks_its_block_is_kept_and_the_comparison_waits_for_it() -> None:
-    # zz is not declared in v4: line 1 is in error, but without it ENDIF (line 3) would have no IF
-    found = verify(_migration('PRINT "x"\n', 'IF zz DO\nPRINT "x"\nENDIF\n', 1), until_ms=100)
+    # zz is not declared in v4: line 1 is in error, but without it ENDIF (line 2) would have no IF
+    found = verify(_migration("LOOP\nENDL\n", "IF zz DO\nENDIF\nLOOP\nENDL\n", 1), until_ms=100)
     assert found.disabled == ()
     assert found.verdict is Verdict.INCOMPLETE
     assert found.short is not None
     assert found.short.startswith("the v4 program does not compile until program line 1, left for a person, is done")
+    assert found.compared_ms == 0  # the v3 run went on, but there was nothing to compare it with
 
 
 def test_a_line_in_error_nobody_flagged_is_a_divergence_at_the_start() -> None:

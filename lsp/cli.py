@@ -7,16 +7,19 @@ import sys
 
 import click
 
-from mintlang.cli.options import HELP_OPTIONS, version_option
+from mintlang.cli.options import HELP_OPTIONS, refuse_quiet_and_verbose, verbosity_options, version_option
 
 
 @click.command(name="lsp", context_settings=HELP_OPTIONS)
 @click.option("--tcp", "port", type=click.IntRange(1, 65535), help="Listen on 127.0.0.1:PORT instead of stdio.")
 @click.option("--log-level", type=click.Choice(["debug", "info", "warning", "error"]), default="warning")
 @click.option("--log-file", type=click.Path(dir_okay=False), help="Log here instead of stderr.")
+@verbosity_options(quiet="Log errors only (--log-level error).", verbose="Log everything (--log-level debug).")
 @version_option("mint-lsp")
-def lsp(port: int | None, log_level: str, log_file: str | None) -> None:
+def lsp(port: int | None, log_level: str, log_file: str | None, quiet: bool, verbose: bool) -> None:
     """The Mint language server: diagnostics, hover, completion, navigation and formatting for Mint programs."""
+    refuse_quiet_and_verbose(quiet, verbose)
+    log_level = "error" if quiet else "debug" if verbose else log_level
     try:
         logging.basicConfig(
             filename=log_file,

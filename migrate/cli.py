@@ -33,6 +33,8 @@ from mintlang.cli.options import (
     format_option,
     list_option,
     output_file_option,
+    refuse_quiet_and_verbose,
+    verbosity_options,
     version_option,
 )
 from mintlang.cli.settings import ProjectCommand, typed
@@ -106,7 +108,10 @@ def _list_rules(console: Console) -> None:
 @list_option("--skip", metavar="RULES", help="Do not run these rules (comma-separated or repeated).")
 @list_option("--with", "opt_in", metavar="RULES", help="Also run these optional rules (comma-separated or repeated).")
 @click.option("--list-rules", is_flag=True, help="List the rules and exit.")
-@click.option("-q", "--quiet", is_flag=True, help="Leave out the table of files, the rule counts and the totals.")
+@verbosity_options(
+    quiet="Leave out the table of files, the rule counts and the totals.",
+    verbose="Also list every change: its rule and its line in the migrated and the original file.",
+)
 @color_option()
 @version_option("mint-migrate")
 @click.option(
@@ -152,6 +157,7 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
     opt_in: tuple[str, ...],
     list_rules: bool,
     quiet: bool,
+    verbose: bool,
     color: str,
     verify: bool,
     scenario_paths: tuple[Path, ...],
@@ -160,6 +166,7 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
     drives: str | None,
 ) -> None:
     """Migrate Mint v3 programs (.mnt) and configuration files (.cfg) to Mint v4."""
+    refuse_quiet_and_verbose(quiet, verbose)
     if list_rules:
         _list_rules(console(color))
         return
@@ -186,7 +193,7 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
             click.echo(f"mint-migrate: {problem}", err=True)
         status = _verify_status(verified, fail_on, [*problems, *failed])
         sys.exit(0 if status == GATE_FAILED and exit_zero else status)
-    _output(items, mode, output_format, controller, Output(output_file, quiet, color))
+    _output(items, mode, output_format, controller, Output(output_file, quiet, verbose, color))
     if mode == "write":
         try:
             problems += write_changed(migrated)
@@ -226,6 +233,7 @@ class Output:
 
     path: Path | None
     quiet: bool
+    verbose: bool
     color: str
 
 
@@ -244,7 +252,7 @@ def _output(items: list[Migrated], mode: str | None, output_format: str, control
         if output_format == "json":
             click.echo(json.dumps(data, indent=2, ensure_ascii=False), file=stream)
         else:
-            render_text(data, console(output.color, file=stream), quiet=output.quiet)
+            render_text(data, console(output.color, file=stream), quiet=output.quiet, verbose=output.verbose)
 
 
 def _status(items: list[Migrated], mode: str | None, fail_on: str | None, problems: list[str]) -> int:

@@ -114,10 +114,10 @@ def _manual(item: ManualItem) -> dict[str, Any]:
     }
 
 
-def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = False) -> None:
+def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = False, verbose: bool = False) -> None:
     """The report for a person: one table of files, the manual items, the rule counts, the totals.
 
-    ``quiet`` leaves out all but the manual items and the unreadable lines.
+    ``quiet`` leaves out all but the manual items and the unreadable lines; ``verbose`` adds every change.
     """
     if not quiet:
         _files_table(data, console)
@@ -127,6 +127,9 @@ def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = Fals
             console.print(f"{_place(path, item)}: [bold]{item['rule']}[/bold] {escape(item['reason'])}")
         for error in row["errors"]:
             console.print(f"{path}: unreadable v3 {escape(error)}")
+        for change in row["changes"] if verbose else ():
+            place = f"{path}:{change['migrated_line']} (original line {change['original_line']})"
+            console.print(f"{place}: [bold]{change['rule']}[/bold]")
     if quiet:
         return
     if data["rules"]:

@@ -19,6 +19,7 @@ import math
 import os
 import signal
 import sys
+import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from functools import partial
@@ -32,7 +33,14 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
 from mintlang.cli.files import program_as_own_configuration
-from mintlang.cli.options import HELP_OPTIONS, color_option, exit_zero_option, version_option
+from mintlang.cli.options import (
+    HELP_OPTIONS,
+    color_option,
+    exit_zero_option,
+    refuse_quiet_and_verbose,
+    verbosity_options,
+    version_option,
+)
 from mintlang.cli.settings import ProjectCommand, settings_failed
 from mintlang.cli.terminal import console
 from mintlang.controllers import ControllerProfile
@@ -187,8 +195,9 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
     help="Serve the host comms protocol on this TCP port of 127.0.0.1.",
 )
 @exit_zero_option("Exit with 0 when the program stops on an error or an expectation fails (2 still reports misuse).")
-@click.option(
-    "-q", "--quiet", is_flag=True, help="No progress bar, and no closing line when the program ends normally."
+@verbosity_options(
+    quiet="No progress bar, and no closing line when the program ends normally.",
+    verbose="Also say how long the run took in real time, beside the simulated time.",
 )
 @color_option()
 @version_option("mint-run")
@@ -212,12 +221,14 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     host_port: int | None,
     exit_zero: bool,
     quiet: bool,
+    verbose: bool,
     color: str,
 ) -> None:
     """Run a Mint program against simulated axes, I/O and a host.
 
     Ctrl-C (exit 130) or SIGTERM (exit 143) stops the run where it is; the report and the trace are still written.
     """
+    refuse_quiet_and_verbose(quiet, verbose)
     errors = console(color, stderr=True)
     if config_path is not None and program_as_own_configuration([program], config_path):
         raise click.UsageError(f"--config {config_path} is the program {program} itself: name the configuration file")
@@ -272,10 +283,15 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     )
     with _on_sigterm(termination):
         with _trace_open(trace), recorders.progress:
+            started = time.perf_counter()
             result = _simulate(simulate, termination)
+            wall_s = time.perf_counter() - started
         stdout.flush()
         if not (quiet and result.stop.reason in (StopReason.END, StopReason.UNTIL)):
             _describe_stop(result, errors)
+        if verbose:
+            ratio = f" ({result.stop.time_ms / 1000 / wall_s:.1f}x real time)" if wall_s > 0 else ""
+            errors.print(f"simulated {result.stop.time_ms} ms in {wall_s:.2f} s{ratio}")
         if result.outcomes:
             render_outcomes(result.outcomes, errors)
         _report(result, report_format, report_path)

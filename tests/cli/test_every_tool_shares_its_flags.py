@@ -72,8 +72,9 @@ def test_mint_lists_lsp_beside_check_migrate_and_run() -> None:
     ("tool", "flags"),
     [
         ("mint check", ["--format", "--output-file", "--exit-zero", "--statistics", "--quiet", "--verbose", "--color"]),
-        ("mint-migrate", ["--format", "--output-file", "--exit-zero", "--quiet", "--color"]),
-        ("mint-run", ["--format", "--output-file", "--exit-zero", "--quiet", "--color", "--dialect"]),
+        ("mint-migrate", ["--format", "--output-file", "--exit-zero", "--quiet", "--verbose", "--color"]),
+        ("mint-run", ["--format", "--output-file", "--exit-zero", "--quiet", "--verbose", "--color", "--dialect"]),
+        ("mint-lsp", ["--quiet", "--verbose"]),
     ],
 )
 def test_the_shared_options_are_in_every_tools_help(tool: str, flags: list[str]) -> None:
@@ -161,6 +162,19 @@ def test_list_options_take_commas_and_repeats_alike(tmp_path: Path, tool: str) -
     assert commas.stderr == repeats.stderr
 
 
-def test_quiet_and_verbose_together_are_a_usage_error(tmp_path: Path) -> None:
-    result = run(TOOLS["mint check"], write(tmp_path, "b.mnt", UNDECLARED), "-q", "-v")
+@pytest.mark.parametrize("tool", ["mint check", "mint-migrate", "mint-run", "mint-lsp"])
+def test_quiet_and_verbose_together_are_a_usage_error(tmp_path: Path, tool: str) -> None:
+    program = [] if tool == "mint-lsp" else [write(tmp_path, "b.mnt", V3)]
+    result = run(TOOLS[tool], *program, "-q", "-v")
     assert result.returncode == 2 and "--quiet and --verbose" in result.stderr
+
+
+def test_verbose_adds_to_the_report_and_quiet_takes_from_it(tmp_path: Path) -> None:
+    v3, ok = write(tmp_path, "v3.mnt", V3), write(tmp_path, "ok.mnt", "PRINT 1\n")
+    migrated = run(TOOLS["mint-migrate"], v3, "-v").stdout
+    assert f"{v3}:" in migrated and ": M-REN" in migrated  # each change with its rule (HMSPEED renamed)
+    assert ": M-REN" not in run(TOOLS["mint-migrate"], v3).stdout
+    assert "file: 1 changed" not in run(TOOLS["mint-migrate"], v3, "-q").stdout
+    ran = run(TOOLS["mint-run"], ok, "-v")
+    assert ran.stdout == "1\n" and "simulated 0 ms in " in ran.stderr
+    assert run(TOOLS["mint-run"], ok, "-q").stderr == ""

@@ -162,13 +162,12 @@ def register(server: MintServer) -> None:
     def error(message: str) -> None:
         server.window_show_message(types.ShowMessageParams(type=types.MessageType.Error, message=message))
 
-    async def run(source: str, configuration: str | None, name: str) -> RunResult:
+    async def run(source: str, configuration: str | None, name: str, controller: str) -> RunResult:
         """The run on a worker thread, shown as progress; cancelled by the user or by ``$/cancelRequest``."""
         loop = asyncio.get_running_loop()
         progress = Progress(server, f"Simulating {name}")
         watcher = Watcher(lambda tick: loop.call_soon_threadsafe(progress.report, tick))
         await progress.begin(watcher.cancelled.set)
-        controller = server.analyses.settings.controller
         try:
             result = await asyncio.to_thread(
                 run_source,
@@ -190,7 +189,7 @@ def register(server: MintServer) -> None:
 
     @server.command(SIMULATE)
     async def simulate(ls: MintServer, uri: str) -> dict[str, Any] | None:
-        settings = ls.analyses.settings
+        settings = ls.analyses.settings_for(uri)
         unit, other = partner(uri, settings, ls.opened())
         # asked for a configuration file, run the program it configures
         program_uri, configuration_uri = (other, uri) if unit is Unit.CONFIGURATION and other else (uri, other)
@@ -201,7 +200,7 @@ def register(server: MintServer) -> None:
         configuration = ls.read_text(configuration_uri) if configuration_uri is not None else None
         name = Path(to_fs_path(program_uri) or program_uri).name
         try:
-            result = await run(source, configuration, name)
+            result = await run(source, configuration, name, settings.controller)
         except ScenarioFileError as problem:
             error(str(problem))
             return None

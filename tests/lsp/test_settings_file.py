@@ -59,3 +59,15 @@ async def test_the_editors_setting_wins_over_the_settings_file(client, tmp_path)
 async def test_a_broken_settings_file_leaves_the_editors_settings(client, tmp_path):
     (tmp_path / "mint.toml").write_text('controller = "mintdrive"\nselect = ["X9"]\n', encoding="utf-8")
     assert error_numbers(await open_document(client, uri_of(tmp_path / "out.mnt"), OUTPUT_20)) == set()
+
+
+async def test_run_in_simulator_uses_the_settings_files_controller_and_pairing(client, tmp_path):
+    (tmp_path / "mint.toml").write_text('controller = "mintdrive"\nconfig-pairing = "<name>_setup.mnc"\n', "utf-8")
+    (tmp_path / "out_setup.mnc").write_text("DIM level = 1\n", encoding="utf-8")  # undeclared without it: C3001
+    program = tmp_path / "out.mnt"
+    program.write_text("OUT10 = level\n", encoding="utf-8")  # MintDrive has outputs 0 to 8, NextMove PCI 0 to 11
+    report = await client.workspace_execute_command_async(
+        types.ExecuteCommandParams(command="mint.simulateFile", arguments=[uri_of(program)])
+    )
+    assert report["stopped"] == "error"
+    assert "R0008" in report["message"]

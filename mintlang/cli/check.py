@@ -42,6 +42,7 @@ from mintlang.source import SourceFile, decode, read_source
 
 _FOUND_ERRORS = 1
 _NOT_DONE = 2
+_INTERRUPTED = 130  # 128 + SIGINT, as a shell reports a command Ctrl-C ended
 _STDIN = Path("-")
 
 SELECT_HELP = (
@@ -57,7 +58,8 @@ Exit status:
   1  a finding of error severity (with --fix: left after fixing;
      with --diff: a fix to make)
   2  a usage problem, or a file that could not be checked or fixed
-     (the others are checked and reported all the same)"""
+     (the others are checked and reported all the same)
+  130  interrupted (Ctrl-C)"""
 
 
 def _codes(values: tuple[str, ...] | None, option: str) -> tuple[str, ...] | None:
@@ -187,7 +189,11 @@ def check(
 
     workers = jobs or all_cores()
     progress = console(color, stderr=True) if not quiet and sys.stderr.isatty() else None
-    results = map_in_order(check_file, work, workers=workers, progress=progress)
+    try:
+        results = map_in_order(check_file, work, workers=workers, progress=progress)
+    except KeyboardInterrupt:  # click would say 'Aborted!' and exit with 1, which means errors found
+        click.echo("mint check: interrupted", err=True)
+        sys.exit(_INTERRUPTED)
     problems = [cannot_read(e) for e in found.unreadable] + planned.problems + [r.problem for r in results if r.problem]
     reports = planned.reports(results)
     fixed = [result.fixed for result in results if result.fixed is not None]

@@ -154,6 +154,7 @@ def test_a_thousand_diagnostics_are_all_shown_in_text(tmp_path: Path) -> None:
     assert carets.count("^^^^") == 900  # under b100 to b999
     assert "\n1 file checked: 1000 errors, 0 warnings, 0 infos\n" in result.stdout  # then what --fix would fix
 
+
 def test_ctrl_c_ends_the_run_with_130_and_one_line(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     def interrupted(*_: object, **__: object) -> list[object]:
         raise KeyboardInterrupt

@@ -45,6 +45,18 @@ async def client(lsp_client: LanguageClient):
     await lsp_client.shutdown_session()
 
 
+@pytest_lsp.fixture(config=EDITOR)
+async def neovim(lsp_client: LanguageClient):
+    """A client with Neovim 0.7's capabilities (diagnostics pushed, no window/showDocument, no file watching),
+    checking every edit at once."""
+    params = types.InitializeParams(
+        capabilities=client_capabilities("neovim@v0.7.0"), initialization_options={"mint": {"debounceMs": 0}}
+    )
+    await lsp_client.initialize_session(params)
+    yield
+    await lsp_client.shutdown_session()
+
+
 def corpus(name: str) -> str:
     return (CORPUS / name).read_text(encoding="utf-8")
 

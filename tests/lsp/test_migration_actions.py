@@ -10,11 +10,10 @@ HOMESPEED").
 from __future__ import annotations
 
 import pytest
-import pytest_lsp
 from lsprotocol import types
-from pytest_lsp import LanguageClient, client_capabilities
+from pytest_lsp import LanguageClient
 
-from tests.lsp.conftest import EDITOR, document, open_document, published, uri_of
+from tests.lsp.conftest import document, open_document, published, uri_of
 
 pytestmark = pytest.mark.asyncio
 MIGRATE, REPLACE = "Migrate this file to Mint v4", "Replace v3 keywords"
@@ -91,16 +90,6 @@ async def test_a_v3_file_is_migrated_with_its_configuration_after_confirmation(c
     edits = edits_of(resolved.edit)
     assert [edit.new_text for edit in edits[uri]] == ["HOMESPEED.0 = 10\n"]
     assert {edit.new_text for edit in edits[uri_of(config)]} == {"AXES[0,1,2]\n", "HOMESPEED.0 = 5\n"}
-
-
-@pytest_lsp.fixture(config=EDITOR)
-async def neovim(lsp_client: LanguageClient):
-    params = types.InitializeParams(
-        capabilities=client_capabilities("neovim@v0.7.0"), initialization_options={"mint": {"debounceMs": 0}}
-    )
-    await lsp_client.initialize_session(params)
-    yield
-    await lsp_client.shutdown_session()
 
 
 async def test_a_client_without_annotations_gets_the_plain_edit(neovim, tmp_path):

@@ -7,13 +7,12 @@ import asyncio
 from pathlib import Path
 
 import pytest
-import pytest_lsp
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException
 from pygls.uris import to_fs_path
-from pytest_lsp import LanguageClient, client_capabilities
+from pytest_lsp import LanguageClient
 
-from tests.lsp.conftest import EDITOR, open_document, uri_of
+from tests.lsp.conftest import open_document, uri_of
 
 PROGRAM = 'RESET.0\nMOVER.0 = 1000 : GO.0\nPAUSE IDLE.0\nPRINT "at ", POS.0, " with ", gain\n'
 CONFIGURATION = "DIM gain = 7\n"
@@ -114,26 +113,18 @@ async def test_the_run_is_shown_as_progress_that_can_be_cancelled(client: Langua
     assert client.messages[-1].type == types.MessageType.Warning
 
 
-@pytest_lsp.fixture(config=EDITOR)
-async def plain(lsp_client: LanguageClient):
-    """Neovim 0.7: no window/showDocument."""
-    await lsp_client.initialize_session(types.InitializeParams(capabilities=client_capabilities("neovim@v0.7.0")))
-    yield
-    await lsp_client.shutdown_session()
-
-
 @pytest.mark.asyncio
 async def test_a_client_that_cannot_show_a_document_gets_the_output_in_the_message(
-    plain: LanguageClient, tmp_path: Path
+    neovim: LanguageClient, tmp_path: Path
 ) -> None:
     program = tmp_path / "count.mnt"
     program.write_text('DIM i\nFOR i = 1 TO 30\n  PRINT "line ", i\nNEXT\n', encoding="utf-8")
-    report = await simulate(plain, uri_of(program))
+    report = await simulate(neovim, uri_of(program))
     assert report["stopped"] == "end"
-    [message] = [m for m in plain.messages if m.message.startswith("Simulation end")]
+    [message] = [m for m in neovim.messages if m.message.startswith("Simulation end")]
     lines = message.message.splitlines()
     assert lines[1:] == ["… (10 lines before)", *(f"line {i}" for i in range(11, 31))]
-    assert plain.shown_documents == []
+    assert neovim.shown_documents == []
 
 
 @pytest.mark.asyncio

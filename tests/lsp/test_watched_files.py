@@ -8,6 +8,7 @@ files itself, once a second.
 from __future__ import annotations
 
 import asyncio
+from pathlib import Path
 
 import pytest
 import pytest_lsp
@@ -18,6 +19,13 @@ from mintlang.lsp.features.watched_files import globs
 from tests.lsp.conftest import EDITOR, open_document, published, uri_of
 
 PROGRAM = "DIM total = 0\ntotal = target + 1\nPRINT total\n"  # target: declared by the configuration file
+
+
+def tell(client: LanguageClient, path: Path, change: types.FileChangeType) -> None:
+    """What an editor watching files says when ``path`` changed on disk."""
+    client.workspace_did_change_watched_files(
+        types.DidChangeWatchedFilesParams(changes=[types.FileEvent(uri=uri_of(path), type=change)])
+    )
 
 
 def codes(diagnostics: list[types.Diagnostic]) -> list[str]:
@@ -43,17 +51,6 @@ async def watching(lsp_client: LanguageClient):
     await lsp_client.shutdown_session()
 
 
-@pytest_lsp.fixture(config=EDITOR)
-async def blind(lsp_client: LanguageClient):
-    """A client that cannot watch files (Neovim 0.7)."""
-    params = types.InitializeParams(
-        capabilities=client_capabilities("neovim@v0.7.0"), initialization_options={"mint": {"debounceMs": 0}}
-    )
-    await lsp_client.initialize_session(params)
-    yield
-    await lsp_client.shutdown_session()
-
-
 @pytest.mark.asyncio
 async def test_a_watching_client_is_asked_to_watch_and_its_news_re_check(watching, tmp_path):
     for _ in range(100):
@@ -67,17 +64,9 @@ async def test_a_watching_client_is_asked_to_watch_and_its_news_re_check(watchin
     other.write_text("DIM target = 3\n", encoding="utf-8")
     uri = uri_of(tmp_path / "app.mnt")
     assert "E3001" in codes(await open_document(watching, uri, PROGRAM))
-    watching.workspace_did_change_watched_files(  # a file the program does not read: nothing to do
-        types.DidChangeWatchedFilesParams(
-            changes=[types.FileEvent(uri=uri_of(other), type=types.FileChangeType.Changed)]
-        )
-    )
+    tell(watching, other, types.FileChangeType.Changed)  # a file the program does not read: nothing to do
     config.write_text("DIM target = 3\n", encoding="utf-8")
-    watching.workspace_did_change_watched_files(
-        types.DidChangeWatchedFilesParams(
-            changes=[types.FileEvent(uri=uri_of(config), type=types.FileChangeType.Changed)]
-        )
-    )
+    tell(watching, config, types.FileChangeType.Changed)
     assert "E3001" not in codes(await asyncio.wait_for(published(watching, uri), 10))
 
 
@@ -87,20 +76,16 @@ async def test_a_configuration_file_created_beside_the_program_is_read(watching,
     assert "E3001" in codes(await open_document(watching, uri, PROGRAM))
     config = tmp_path / "app.cfg"
     config.write_text("DIM target = 3\n", encoding="utf-8")
-    watching.workspace_did_change_watched_files(
-        types.DidChangeWatchedFilesParams(
-            changes=[types.FileEvent(uri=uri_of(config), type=types.FileChangeType.Created)]
-        )
-    )
+    tell(watching, config, types.FileChangeType.Created)
     assert "E3001" not in codes(await asyncio.wait_for(published(watching, uri), 10))
 
 
 @pytest.mark.asyncio
-async def test_without_a_watching_client_the_server_looks_itself(blind, tmp_path):
+async def test_without_a_watching_client_the_server_looks_itself(neovim, tmp_path):
     config = tmp_path / "app.cfg"
     config.write_text("REM nothing yet\n", encoding="utf-8")
     uri = uri_of(tmp_path / "app.mnt")
-    assert "E3001" in codes(await open_document(blind, uri, PROGRAM))
+    assert "E3001" in codes(await open_document(neovim, uri, PROGRAM))
     await asyncio.sleep(1.5)  # the server has looked at the file once
     config.write_text("DIM target = 3\n", encoding="utf-8")
-    assert "E3001" not in codes(await asyncio.wait_for(published(blind, uri), 10))
+    assert "E3001" not in codes(await asyncio.wait_for(published(neovim, uri), 10))

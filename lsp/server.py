@@ -32,6 +32,7 @@ class MintServer(LanguageServer):
         super().__init__("mint-lsp", __version__, protocol_cls=MintProtocol)  # LSP line ends, every request answered
         self.analyses = Analyses(read=self.read_text, opened=self.opened, collector=Collector())
         self.when_initialized: list[Callable[[], Awaitable[None]]] = []  # features' work once the client is ready
+        self.when_settings_changed: list[Callable[[], Awaitable[None]]] = []  # and once the settings changed
 
     def opened(self) -> Collection[str]:
         """The URIs of the documents open in the editor."""

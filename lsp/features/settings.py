@@ -32,6 +32,8 @@ def register(server: MintServer) -> None:
         from mintlang.lsp.features.diagnostics import refresh_all  # noqa: PLC0415  (a sibling feature)
 
         refresh_all(server)
+        for hook in server.when_settings_changed:
+            await hook()
 
 
 async def _pull(server: MintServer) -> None:

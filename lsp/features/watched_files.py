@@ -6,8 +6,8 @@ documents that read it are checked again. A client that can watch files
 (``workspace/didChangeWatchedFiles`` with dynamic registration: VS Code,
 Neovim 0.9+) is asked to watch programs and configuration files and says
 what changed; for the others the server looks itself, once a second, at the
-size and time of the partner files of the open documents only. The files
-watched follow ``mint.configPairing`` as it was when the client connected.
+size and time of the partner files of the open documents only. A new
+``mint.configPairing`` replaces the client's watch.
 """
 
 from __future__ import annotations
@@ -109,26 +109,45 @@ def _watches(server: MintServer) -> bool:
     return bool(watched and watched.dynamic_registration)
 
 
-def register(server: MintServer) -> None:
-    tasks: set[asyncio.Task[None]] = set()
+class Watching:
+    """The client's watch on programs and paired files: registered once the client is ready, and again
+    under a new ``mint.configPairing``."""
 
-    async def watch() -> None:
-        if not _watches(server):
-            task = asyncio.get_running_loop().create_task(Poller(server).run())
-            tasks.add(task)  # kept: the loop holds tasks weakly
+    def __init__(self, server: MintServer) -> None:
+        self.server = server
+        self.pairing: str | None = None  # what the client watches for
+
+    async def follow(self) -> None:
+        pairing = self.server.analyses.settings.config_pairing
+        if not _watches(self.server) or pairing == self.pairing:
             return
-        pairing = server.analyses.settings.config_pairing
+        method = types.WORKSPACE_DID_CHANGE_WATCHED_FILES
         watchers = [types.FileSystemWatcher(glob_pattern=glob) for glob in globs(pairing)]
         options = types.DidChangeWatchedFilesRegistrationOptions(watchers=watchers)
-        registration = types.Registration(
-            id=REGISTRATION, method=types.WORKSPACE_DID_CHANGE_WATCHED_FILES, register_options=options
-        )
+        registration = types.Registration(id=REGISTRATION, method=method, register_options=options)
         try:
-            await server.client_register_capability_async(types.RegistrationParams(registrations=[registration]))
+            if self.pairing is not None:
+                old = types.Unregistration(id=REGISTRATION, method=method)
+                await self.server.client_unregister_capability_async(types.UnregistrationParams(unregisterations=[old]))
+            await self.server.client_register_capability_async(types.RegistrationParams(registrations=[registration]))
         except Exception as error:  # a client that refuses leaves files unwatched, as before
             log.warning("the client did not watch files: %s", error)
+            return
+        self.pairing = pairing
 
-    server.when_initialized.append(watch)
+
+def register(server: MintServer) -> None:
+    tasks: set[asyncio.Task[None]] = set()
+    watching = Watching(server)
+
+    async def start() -> None:
+        if _watches(server):
+            await watching.follow()
+        else:
+            tasks.add(asyncio.get_running_loop().create_task(Poller(server).run()))  # kept: the loop holds tasks weakly
+
+    server.when_initialized.append(start)
+    server.when_settings_changed.append(watching.follow)
 
     @server.feature(types.WORKSPACE_DID_CHANGE_WATCHED_FILES)
     def changed(params: types.DidChangeWatchedFilesParams) -> None:

@@ -15,14 +15,19 @@ SERVER = [sys.executable, "-m", "mintlang.lsp"]
 
 
 def editor_client() -> LanguageClient:
-    """pytest-lsp's client, granting the server's registrations as an editor does (it keeps them in
-    ``registrations``): a request it has no handler for fails the test."""
+    """pytest-lsp's client, granting and withdrawing the server's registrations as an editor does (it keeps
+    those in force in ``registrations``): a request it has no handler for fails the test."""
     client = make_test_lsp_client()
     client.registrations = []
 
     @client.feature(types.CLIENT_REGISTER_CAPABILITY)
     def register(params: types.RegistrationParams) -> None:
         client.registrations.extend(params.registrations)
+
+    @client.feature(types.CLIENT_UNREGISTER_CAPABILITY)
+    def unregister(params: types.UnregistrationParams) -> None:
+        gone = {(old.id, old.method) for old in params.unregisterations}
+        client.registrations[:] = [kept for kept in client.registrations if (kept.id, kept.method) not in gone]
 
     return client
 

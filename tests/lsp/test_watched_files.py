@@ -89,3 +89,22 @@ async def test_without_a_watching_client_the_server_looks_itself(neovim, tmp_pat
     await asyncio.sleep(1.5)  # the server has looked at the file once
     config.write_text("DIM target = 3\n", encoding="utf-8")
     assert "E3001" not in codes(await asyncio.wait_for(published(neovim, uri), 10))
+
+
+@pytest.mark.asyncio
+async def test_a_new_pairing_is_watched_instead(watching, tmp_path):
+    while not watching.registrations:
+        await asyncio.sleep(0.05)
+    watching.workspace_did_change_configuration(
+        types.DidChangeConfigurationParams(settings={"mint": {"configPairing": "<name>.ini"}})
+    )
+    for _ in range(200):
+        if watching.registrations and "**/*.[iI][nN][iI]" in _globs(watching.registrations[0]):
+            break
+        await asyncio.sleep(0.05)
+    [registration] = watching.registrations
+    assert _globs(registration) == ["**/*.[mM][nN][tT]", "**/*.[iI][nN][iI]"]
+
+
+def _globs(registration: types.Registration) -> list[str]:
+    return [watcher["globPattern"] for watcher in registration.register_options["watchers"]]

@@ -37,6 +37,7 @@ from mintlang.migrate import migrate
 
 _STEMS = ("pos", "speed", "count", "offset", "target", "length", "cut", "feed", "delay", "index", "step", "jog")
 _TABLES = tuple(f"DIM table{n}({20 + n * 5})" for n in range(8))
+_SUBROUTINES = 200  # at most about this many: with #sub0 and #ONERROR, within the 255 labels
 
 
 def _name(rng: random.Random, i: int) -> str:
@@ -151,19 +152,21 @@ _BLOCKS: tuple[Callable[[random.Random, int], list[str]], ...] = (
 
 def v3_program(lines: int, seed: int = 1998) -> str:
     """A Mint v3 program of about ``lines`` lines: a main loop calling subroutines, each a few
-    blocks; set-up blocks in the first subroutine."""
+    blocks; set-up blocks in the first subroutine. A larger program has longer subroutines,
+    not more of them: the controller holds 255 labels (``mint check`` reports more as an error)."""
     rng = random.Random(seed)
     main = ["REM Generated v3 benchmark program", *_TABLES, "GOSUB sub0", "LOOP"]
     subroutines = ["", "#sub0"]
     for i in range(1, max(2, lines // 400)):
         subroutines += _setup(rng, i)
     subroutines.append("RETURN")
+    blocks = -(-lines // (_SUBROUTINES * 10))  # a subroutine holds about 11 lines per block asked for
     index = 0
     while len(main) + len(subroutines) < lines - 8:
         index += 1
         main.append(f"  GOSUB sub{index} : REM step {index}")
         subroutines += ["", f"#sub{index}"]
-        for _ in range(rng.randint(1, 3)):
+        for _ in range(rng.randint(blocks, 3 * blocks)):
             subroutines += rng.choice(_BLOCKS)(rng, index)
         subroutines.append(f"RETURN : REM end of sub{index}")
     main += ["ENDL", "END"]

@@ -1,4 +1,4 @@
-"""``mint-lsp [--tcp PORT]``: stdio by default, or TCP on 127.0.0.1."""
+"""``mint-lsp [--tcp PORT]`` (also ``mint lsp``): stdio by default, or TCP on 127.0.0.1."""
 
 from __future__ import annotations
 
@@ -7,16 +7,19 @@ import sys
 
 import click
 
-from mintlang.lsp import __version__
+from mintlang.cli.options import HELP_OPTIONS, refuse_quiet_and_verbose, verbosity_options, version_option
 
 
-@click.command()
+@click.command(name="lsp", context_settings=HELP_OPTIONS)
 @click.option("--tcp", "port", type=click.IntRange(1, 65535), help="Listen on 127.0.0.1:PORT instead of stdio.")
 @click.option("--log-level", type=click.Choice(["debug", "info", "warning", "error"]), default="warning")
 @click.option("--log-file", type=click.Path(dir_okay=False), help="Log here instead of stderr.")
-@click.version_option(__version__, prog_name="mint-lsp")
-def main(port: int | None, log_level: str, log_file: str | None) -> None:
+@verbosity_options(quiet="Log errors only (--log-level error).", verbose="Log everything (--log-level debug).")
+@version_option("mint-lsp")
+def lsp(port: int | None, log_level: str, log_file: str | None, quiet: bool, verbose: bool) -> None:
     """The Mint language server: diagnostics, hover, completion, navigation and formatting for Mint programs."""
+    refuse_quiet_and_verbose(quiet, verbose)
+    log_level = "error" if quiet else "debug" if verbose else log_level
     try:
         logging.basicConfig(
             filename=log_file,
@@ -36,3 +39,8 @@ def main(port: int | None, log_level: str, log_file: str | None) -> None:
     except OSError as error:
         click.echo(f"mint-lsp: cannot listen on 127.0.0.1:{port}: {error.strerror}", err=True)
         sys.exit(2)
+
+
+def main() -> None:
+    """Entry point of the ``mint-lsp`` script."""
+    lsp()

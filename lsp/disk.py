@@ -1,11 +1,10 @@
 """The partner file on disk, read without going to the disk for every request.
 
 Every request of a program's document needs its configuration file (and the
-reverse). Reading and decoding it, or listing its folder to match a name
-without regard to case, on every keystroke would make the editor as slow as
-the disk: a network share on a machine's PC. A file's text is kept while its
-size and modification time stay the same, a folder's names while its
-modification time does (adding, removing or renaming a file changes it).
+reverse). Reading and decoding it on every keystroke would make the editor as
+slow as the disk: a network share on a machine's PC. A file's text is kept
+while its size and modification time stay the same (a folder's names, to match
+a name without regard to case, are kept by ``mintlang.pairing.names_in``).
 """
 
 from __future__ import annotations
@@ -21,10 +20,9 @@ T = TypeVar("T")
 
 log = logging.getLogger(__name__)
 
-_KEPT = 64  # files and folders remembered
+_KEPT = 64  # files remembered
 
 _texts: dict[Path, tuple[tuple[int, int], str]] = {}
-_listings: dict[Path, tuple[int, tuple[str, ...]]] = {}
 
 
 def read_text(path: Path, max_bytes: int) -> str | None:
@@ -47,23 +45,6 @@ def read_text(path: Path, max_bytes: int) -> str | None:
         return None
     _remember(_texts, path, (stamp, text))
     return text
-
-
-def names_in(folder: Path) -> tuple[str, ...]:
-    """The names of a folder's entries (none when it cannot be listed)."""
-    try:
-        stamp = folder.stat().st_mtime_ns
-    except OSError:
-        return ()
-    kept = _listings.get(folder)
-    if kept is not None and kept[0] == stamp:
-        return kept[1]
-    try:
-        names = tuple(entry.name for entry in folder.iterdir())
-    except OSError:
-        return ()
-    _remember(_listings, folder, (stamp, names))
-    return names
 
 
 def _remember(cache: dict[Path, T], key: Path, value: T) -> None:

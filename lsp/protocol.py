@@ -12,14 +12,19 @@ pygls 2.1 leaves a client waiting, or the server growing, in four places:
 - a request after ``shutdown`` is dropped silently; the LSP wants ``InvalidRequest``;
 - every notification, and every handler a built-in one hands on to, is filed
   under a fresh id in the table of requests in flight and never taken out:
-  a ``Future``, a task and its context per keystroke, 3 KB an edit.
+  a ``Future``, a task and its context per keystroke, 3 KB an edit;
+- a ``$/cancelRequest`` of a request a built-in handler hands on (a command of
+  ``workspace/executeCommand``) answers it as cancelled but leaves the
+  command running: a simulation went on for its full 20 s.
 """
 
 from __future__ import annotations
 
 import logging
+import weakref
 from collections.abc import Callable, Generator
 from concurrent.futures import Future
+from functools import partial
 from typing import Any
 
 import cattrs
@@ -47,12 +52,20 @@ def _why(error: JsonRpcException) -> str:
     return str(cause or error)
 
 
+def _cancel_with(handed: weakref.ref[Any], request: Future[Any]) -> None:
+    """``request`` is done: if it was cancelled, so is the handler it was handed on to, if that still runs."""
+    inner = handed()
+    if request.cancelled() and inner is not None:
+        inner.cancel()
+
+
 class MintProtocol(LspProtocol):
     """pygls' protocol, answering every request it cannot run and forgetting finished handlers."""
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
         self._initialize_received = False
+        self._handing_on: Future[Any] | None = None  # the request whose built-in handler is handing on
 
     def structure_message(self, data: dict[str, Any]) -> Any:
         """A request whose params cannot be read is answered with ``InvalidParams`` here, as it is decoded."""
@@ -94,11 +107,26 @@ class MintProtocol(LspProtocol):
         kwargs: dict[str, Any] | None = None,
     ) -> None:
         """pygls' dispatch, then the handler's entry in the requests in flight dropped once it is done
-        (pygls drops it only for the requests it answers)."""
+        (pygls drops it only for the requests it answers), and a handler a built-in one handed a request
+        to cancelled with that request."""
+        request = self._handing_on
         super()._execute_handler(msg_id, handler, callback, args, kwargs)
         future = self._request_futures.get(msg_id)
-        if future is not None:
-            future.add_done_callback(lambda done: self._forget(msg_id, done))
+        if future is None:
+            return
+        future.add_done_callback(lambda done: self._forget(msg_id, done))
+        if request is not None:  # weakly: a cycle of futures outlives the frozen collector (``Collector``)
+            request.add_done_callback(partial(_cancel_with, weakref.ref(future)))
+
+    def _run_generator(
+        self, future: Future[Any] | None, *, gen: Generator[Any, Any, Any], result_future: Future[Any]
+    ) -> None:
+        """pygls runs a built-in handler's next step; the handler it hands on to is linked to ``result_future``."""
+        outer, self._handing_on = self._handing_on, result_future
+        try:
+            super()._run_generator(future, gen=gen, result_future=result_future)
+        finally:
+            self._handing_on = outer
 
     def _forget(self, msg_id: Any, done: Future[Any]) -> None:
         if self._request_futures.get(msg_id) is done:

@@ -9,7 +9,7 @@ an error response and logs it, so no handler can stop the server.
 from __future__ import annotations
 
 import logging
-from collections.abc import Collection
+from collections.abc import Awaitable, Callable, Collection
 from pathlib import Path
 
 from lsprotocol import types
@@ -31,6 +31,8 @@ class MintServer(LanguageServer):
     def __init__(self) -> None:
         super().__init__("mint-lsp", __version__, protocol_cls=MintProtocol)  # LSP line ends, every request answered
         self.analyses = Analyses(read=self.read_text, opened=self.opened, collector=Collector())
+        self.when_initialized: list[Callable[[], Awaitable[None]]] = []  # features' work once the client is ready
+        self.when_settings_changed: list[Callable[[], Awaitable[None]]] = []  # and once the settings changed
 
     def opened(self) -> Collection[str]:
         """The URIs of the documents open in the editor."""

@@ -10,38 +10,49 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable, Collection, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from urllib.parse import quote, unquote
 
-from pygls.uris import to_fs_path
+from pygls.uris import from_fs_path, to_fs_path
 
 import mintlang
 from mintlang.allocation import collector_paused
+from mintlang.codes import selector
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.lsp.collector import Collector
-from mintlang.lsp.disk import names_in
 from mintlang.lsp.positions import Positions
+from mintlang.pairing import DEFAULT_PATTERN, Pairing, is_program, listed_as, names_in
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
+from mintlang.settings import FileSettings, SettingsError, settings_for
 from mintlang.syntax.parser import Document
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 log = logging.getLogger(__name__)
 
 MAX_CHARACTERS = 500_000  # larger files are not analysed (about 25,000 lines, a second of checking)
-PROGRAM_SUFFIX = ".mnt"
 
 
 @dataclass(frozen=True, slots=True)
 class Settings:
-    """The ``mint.*`` settings; ``configPairing`` names the configuration file of ``<name>.mnt``."""
+    """The ``mint.*`` settings; ``configPairing`` names the configuration file of ``<name>.mnt``.
+
+    A document's settings are those of its settings file (``mint.toml`` or
+    ``[tool.mint]``, see ``mintlang.settings``) with the editor's over them:
+    ``given`` names the settings the editor sent, which win over the file's.
+    """
 
     controller: Controller = Controller.NEXTMOVE_PCI
     dialect: Dialect = Dialect.V4
-    config_pairing: str = "<name>.cfg"
+    config_pairing: str = DEFAULT_PATTERN
     debounce_ms: int = 150
+    select: tuple[str, ...] | None = None  # codes or prefixes; None: the errors and warnings, not the hints
+    ignore: tuple[str, ...] = ()
+    config_file: Path | None = None  # the configuration file of every program (the settings file's ``config``)
+    rules_url: str | None = None  # where the rule pages are, a folder or a {code} template; None: the project's
+    given: frozenset[str] = frozenset()
 
     @property
     def words(self) -> Vocabulary:
@@ -61,19 +72,38 @@ class Settings:
             "dialect": base.dialect,
             "config_pairing": base.config_pairing,
             "debounce_ms": base.debounce_ms,
+            "select": base.select,
+            "ignore": base.ignore,
+            "rules_url": base.rules_url,
         }
+        given = set(base.given)
         for key, name, convert in (
             ("controller", "controller", Controller),
             ("dialect", "dialect", Dialect),
             ("configPairing", "config_pairing", _pairing_pattern),
             ("debounceMs", "debounce_ms", int),
+            ("select", "select", _codes),
+            ("ignore", "ignore", _codes),
+            ("rulesUrl", "rules_url", str),
         ):
             if options.get(key) is not None:
                 try:
                     values[name] = convert(options[key])
+                    given.add(name)
                 except (ValueError, TypeError):
                     log.warning("ignoring setting mint.%s = %r", key, options[key])
-        return cls(**values)
+        return cls(**values, given=frozenset(given))
+
+    def over(self, project: FileSettings) -> Settings:
+        """These settings over a settings file's: each the editor sent wins; both ignore lists apply."""
+        from_file: dict[str, object] = {
+            "controller": project.controller.value,
+            "dialect": project.dialect.value,
+            "config_pairing": project.config_pairing.value or "",
+            "select": project.selected,
+        }
+        kept = {name: value for name, value in from_file.items() if name not in self.given}
+        return replace(self, **kept, ignore=(*project.ignored, *self.ignore), config_file=project.config.value)
 
 
 @dataclass(frozen=True, slots=True)
@@ -107,23 +137,23 @@ class Snapshot:
 TextReader = Callable[[str], str | None]  # uri -> text of an open document or file on disk, if any
 
 
+def _codes(value: object) -> tuple[str, ...]:
+    """Codes or prefixes, listed (``["E", "I201"]``) or comma-separated (``"E,I201"``), read as --select reads them."""
+    items = value.split(",") if isinstance(value, str) else value
+    if not isinstance(items, list | tuple) or not all(isinstance(item, str) for item in items):
+        raise TypeError("a list of codes")
+    return tuple(selector(item) for item in items if item.strip())
+
+
 def _pairing_pattern(value: object) -> str:
-    """A configuration file name with ``<name>`` for the program's: beside the program, so no folders."""
+    """A configuration file name with ``<name>`` for the program's (see ``mintlang.pairing``)."""
     pattern = str(value)
-    if "/" in pattern or "\\" in pattern:
-        raise ValueError("the configuration file is beside its program: a name, not a path")
+    Pairing.from_pattern(pattern)  # a ValueError for a folder keeps the setting as it was
     return pattern
 
 
-def _pairing(pattern: str) -> tuple[str, str] | None:
-    if "<name>" not in pattern:
-        return None
-    prefix, _, suffix = pattern.partition("<name>")
-    return prefix, suffix
-
-
 def partner(uri: str, settings: Settings, opened: Collection[str] = ()) -> tuple[Unit, str | None]:
-    """Which file ``uri`` is, and the URI of the other file of its application.
+    """Which file ``uri`` is, and the URI of the other file of its application (the core's pairing rule).
 
     The other URI is ``uri`` with its last segment replaced, so it is written as the
     client writes URIs (VS Code sends ``file:///c%3A/...`` where a path round trip
@@ -131,20 +161,13 @@ def partner(uri: str, settings: Settings, opened: Collection[str] = ()) -> tuple
     ``opened`` are the URIs of the documents open in the editor: one may not be on disk yet.
     """
     folder, slash, segment = uri.rpartition("/")
-    pairing = _pairing(settings.config_pairing)
+    if settings.config_file is not None and is_program(unquote(segment)):
+        return Unit.PROGRAM, from_fs_path(str(settings.config_file))
+    pairing = Pairing.from_pattern(settings.config_pairing)
     if not slash or pairing is None:
         return Unit.PROGRAM, None
-    name = unquote(segment)
-    prefix, suffix = pairing
-    if name.lower().endswith(PROGRAM_SUFFIX):
-        configuration = prefix + name[: -len(PROGRAM_SUFFIX)] + suffix
-        if configuration.lower().endswith(PROGRAM_SUFFIX):
-            return Unit.PROGRAM, None
-        return Unit.PROGRAM, _sibling(folder, configuration, opened)
-    if suffix and name.lower().endswith(suffix.lower()) and name.startswith(prefix):
-        stem = name[len(prefix) : len(name) - len(suffix)]
-        return Unit.CONFIGURATION, _sibling(folder, stem + PROGRAM_SUFFIX, opened)
-    return Unit.PROGRAM, None
+    unit, other = pairing.partner_name(unquote(segment))
+    return unit, None if other is None else _sibling(folder, other, opened)
 
 
 def _sibling(folder: str, name: str, opened: Collection[str]) -> str:
@@ -153,19 +176,17 @@ def _sibling(folder: str, name: str, opened: Collection[str]) -> str:
     exact = f"{folder}/{quote(name)}"
     if exact in opened:
         return exact
-    lowered = name.lower()
+    beside: dict[str, str] = {}
     for uri in opened:
         other_folder, _, segment = uri.rpartition("/")
-        if other_folder == folder and unquote(segment).lower() == lowered:
-            return uri
+        if other_folder == folder:
+            beside.setdefault(unquote(segment), uri)
+    listed = listed_as(name, beside)
+    if listed is not None:
+        return beside[listed]
     path = to_fs_path(exact)
-    if path is None:
-        return exact
-    names = names_in(Path(path).parent)
-    if name in names:
-        return exact
-    found = next((entry for entry in names if entry.lower() == name.lower()), None)
-    return exact if found is None else f"{folder}/{quote(found)}"
+    listed = listed_as(name, names_in(Path(path).parent)) if path is not None else None
+    return exact if listed is None else f"{folder}/{quote(listed)}"
 
 
 def _unreadable(text: str) -> str | None:
@@ -186,10 +207,27 @@ class Analyses:
     encoding: str = "utf-16"  # the position encoding negotiated with the client
     collector: Collector | None = None  # told of each new snapshot, to keep it out of the collector's scans
     _cache: dict[str, tuple[tuple[object, ...], Snapshot]] = field(default_factory=dict)
+    _reported: set[str] = field(default_factory=set)  # settings file problems already logged
+
+    def settings_for(self, uri: str) -> Settings:
+        """The editor's settings over those of the document's settings file, if it is a file that has one.
+
+        A settings file that cannot be used is logged, once while it stays so, and the editor's settings apply.
+        """
+        path = to_fs_path(uri) if uri.startswith("file:") else None
+        if path is None:
+            return self.settings
+        try:
+            return self.settings.over(settings_for(Path(path)))
+        except SettingsError as error:
+            if str(error) not in self._reported:
+                self._reported.add(str(error))
+                log.warning("settings file not used: %s", error)
+            return self.settings
 
     def snapshot(self, uri: str, text: str, version: int | None) -> Snapshot:
         """The analysis of ``text``, reused while neither it, its partner nor the settings change."""
-        settings = self.settings
+        settings = self.settings_for(uri)
         unit, other = partner(uri, settings, self.opened())
         other_text = self.read(other) if other is not None else None
         key = (version, text, other_text, settings, self.encoding)
@@ -233,7 +271,12 @@ class Analyses:
         else:
             program, config = mine, other_text
         analysis = mintlang.check_application(
-            program, dialect=settings.dialect, controller=settings.controller, config=config
+            program,
+            dialect=settings.dialect,
+            controller=settings.controller,
+            config=config,
+            select=settings.select,
+            ignore=settings.ignore,
         )
         files = {unit: File(uri, Positions(text, self.encoding))}
         if other is not None and other_text is not None:

@@ -9,6 +9,7 @@ not touch survives byte for byte::
     result = migrate(v3_source, config=v3_config, controller="nextmove-pci")
     result.text, result.changes, result.manual, result.rule_counts, result.edits()
     result.already_v4  # recognised as Mint v4 and left as it was
+    shows_v4({Unit.PROGRAM: source}, "nextmove-pci")  # a form only v4 has: not a v3 file
     rules_at(v3_source, offset)  # single-rule quick fixes at a position
 
 A bug a rule meets raises ``MigrationFailed`` naming the rule; the CLI reports it
@@ -27,6 +28,7 @@ from mintlang.migrate.model import (
     RuleClass,
     RuleInfo,
 )
+from mintlang.migrate.recognise import shows_v4
 
 __all__ = [
     "DEFAULT_CONTROLLER",
@@ -42,4 +44,5 @@ __all__ = [
     "rules",
     "rules_at",
     "select",
+    "shows_v4",
 ]

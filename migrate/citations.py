@@ -3,34 +3,18 @@
 The rules cite lines of the manuals' text extractions (``v4:3046``), which only
 this project has. What a person is shown names the section instead,
 ``v4 guide §6.7``, and inside a keyword chapter the keyword's entry as well,
-``v4 guide §10.3 ACCEL``. The table comes from the manuals' own headings
-(``headings`` builds ``sections``); a line before the first heading is cited as
-the guide alone.
+``v4 guide §10.3 ACCEL`` (``mintlang.manual`` knows the sections); a line before
+the first heading is cited as the guide alone.
 """
 
 from __future__ import annotations
 
 import re
-from bisect import bisect_right
 
-from mintlang.migrate.sections import ENTRIES, SECTIONS
+from mintlang.manual.places import section
 
 _LINES = r"\d+(?:-\d+)?"
 _RUN = re.compile(rf"\bv[34]:{_LINES}(?:, (?:v[34]:)?{_LINES})*")  # "v3:5662, 5728, v4:6178-6180"
-_STARTS = {dialect: [line for line, _ in rows] for dialect, rows in SECTIONS.items()}
-_ENTRY_STARTS = {dialect: [line for line, _ in rows] for dialect, rows in ENTRIES.items()}
-
-
-def section(dialect: str, line: int) -> str:
-    """Where ``line`` of the ``dialect`` guide is: ``§6.7``, ``§10.3 ACCEL``, or "" before §1."""
-    found = bisect_right(_STARTS[dialect], line) - 1
-    if found < 0:
-        return ""
-    start, number = SECTIONS[dialect][found]
-    entry = bisect_right(_ENTRY_STARTS[dialect], line) - 1
-    if entry >= 0 and ENTRIES[dialect][entry][0] >= start and ENTRIES[dialect][entry][1]:
-        return f"§{number} {ENTRIES[dialect][entry][1]}"
-    return f"§{number}"
 
 
 def cite(text: str) -> str:

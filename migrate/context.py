@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import re
 from bisect import bisect_right
+from collections import defaultdict
 from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property, wraps
@@ -245,12 +246,16 @@ class _Lines:
 Neighbours = tuple[FileView, n.Statement | None, n.Statement, n.Statement | None]
 
 
+class Unreadable(Exception):
+    """Building the semantic model failed: a bug in reading the files, not in the rule that asked
+    for the model first (the engine reports it so; the exception is the cause)."""
+
+
 @dataclass(frozen=True)
 class Context:
     """The application (configuration file, if any, then program) for one pass of the engine."""
 
     files: Mapping[Unit, FileView]
-    model: mintlang.SemanticModel
     controller: ControllerProfile
     tags: LineTags = field(default_factory=LineTags, repr=False, compare=False)
     _memo: dict[tuple[Hashable, ...], Any] = field(default_factory=dict, init=False, repr=False, compare=False)
@@ -269,8 +274,18 @@ class Context:
         if configuration is not None:
             documents[Unit.CONFIGURATION] = configuration
         files = {unit: FileView(unit, texts[unit], documents[unit]) for unit in texts}
-        model = mintlang.build_model(program, configuration, controller)
-        return cls(files, model, profile(controller), tags if tags is not None else LineTags())
+        return cls(files, profile(controller), tags if tags is not None else LineTags())
+
+    @cached_property
+    def model(self) -> mintlang.SemanticModel:
+        """The semantic model, built when a rule first asks: the abbreviations need none, so the
+        text as first read, which they change in most programs, never has one built."""
+        configuration = self.files.get(Unit.CONFIGURATION)
+        documents = (self.files[Unit.PROGRAM].document, None if configuration is None else configuration.document)
+        try:
+            return mintlang.build_model(*documents, self.controller.controller)
+        except Exception as error:  # any failure here is the reader's, reported as such
+            raise Unreadable from error
 
     def memo(self, compute: Callable[..., T], *args: Hashable) -> T:
         """``compute(self, *args)``, worked out once per pass: rules ask some whole-application
@@ -337,32 +352,34 @@ class Context:
         keyword ...), not by a list."""
         return [tag for tag in self._tagged if type(tag) is str and keep(tag)]
 
+    def names(self, keep: Callable[[str], bool]) -> list[str]:
+        """The user names written anywhere in the application (by identity, see ``name_tag``) that
+        ``keep`` accepts: a rule that needs the symbol table only for some names asks first."""
+        return [tag[1] for tag in self._tagged if type(tag) is tuple and tag[0] == "name" and keep(tag[1])]
+
     @cached_property
     def _order(self) -> tuple[tuple[FileView, int], ...]:
         """Each line of compile order as its file and its index there."""
-        return tuple(
-            (self.files[unit], index)
-            for unit, document in self.model.documents()
-            for index in range(len(document.placed))
-        )
+        return tuple((file, index) for file in self.compiled for index in range(len(file.document.placed)))
 
     @cached_property
     def _tagged(self) -> dict[object, list[int]]:
         """Each tag with the positions in ``_order`` of the lines that have it, in order."""
-        found: dict[object, list[int]] = {}
+        found: defaultdict[object, list[int]] = defaultdict(list)
         tags = self.tags
         position = 0
-        for unit, document in self.model.documents():
-            expanded = self.files[unit].expanded
-            for index, line in enumerate(document.placed):
+        for file in self.compiled:
+            expanded = file.expanded
+            for index, line in enumerate(file.document.placed):
                 for tag in tags.of(line) | {MACRO} if index in expanded else tags.of(line):
-                    positions = found.get(tag)
-                    if positions is None:
-                        found[tag] = [position]
-                    else:
-                        positions.append(position)
+                    found[tag].append(position)
                 position += 1
-        return found
+        return dict(found)
+
+    @cached_property
+    def compiled(self) -> tuple[FileView, ...]:
+        """The files in compile order: the configuration file first."""
+        return tuple(self.files[unit] for unit in (Unit.CONFIGURATION, Unit.PROGRAM) if unit in self.files)
 
     def _positions(self, wanted: Iterable[object]) -> list[int]:
         tagged = self._tagged

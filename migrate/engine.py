@@ -3,7 +3,7 @@
 Each phase re-parses the current text, asks its rules for actions, applies the
 edits that do not overlap an earlier rule's edit (the rest wait for the next
 pass of the same phase, on the re-parsed text) and repeats until the phase has
-nothing left to do. Flags become ``REM MIGRATE:`` lines above the flagged line,
+nothing left to do but write the marker lines it asked for. Flags become ``REM MIGRATE:`` lines above the flagged line,
 with its indentation and the file's own newline (a statement after the AUTO or
 PROTECT that must open its file first gets a line of its own); a marker already
 there is not written twice, which is what makes a second migration a no-op.
@@ -25,9 +25,9 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
 
 from mintlang.allocation import without_collector
-from mintlang.diagnostics import LineIndex, Severity, Span
+from mintlang.diagnostics import LineIndex, Severity, Span, split_lines
 from mintlang.migrate.citations import cite
-from mintlang.migrate.context import MARKER, Context, FileView, LineTags
+from mintlang.migrate.context import MARKER, Context, FileView, LineTags, Unreadable
 from mintlang.migrate.history import Edit, History
 from mintlang.migrate.markers import manual_items
 from mintlang.migrate.model import Change, ManualItem, MigrationFailed, Phase
@@ -89,10 +89,11 @@ def run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> di
         for _ in range(MAX_PASSES):
             if context is None:
                 context = _build({unit: state.text for unit, state in states.items()}, controller, tags)
-            editing = _apply_pass(context, active, states)
-            if not editing:
+            editing, settled = _apply_pass(context, active, states)
+            if editing:
+                context = None  # stale: dropped before the next parse, so two trees are never alive at once
+            if settled:
                 break
-            context = None  # stale: dropped before the next parse, so two trees are never alive at once
         else:
             reason = f"it kept rewriting its own output ({MAX_PASSES} passes of the {phase} phase)"
             raise MigrationFailed(", ".join(sorted(editing)), reason)
@@ -103,10 +104,14 @@ def _build(texts: Mapping[Unit, str], controller: str, tags: LineTags) -> Contex
     try:
         return Context.build(texts, controller, tags)
     except Exception as error:  # a parser bug must not take the other files of a run with it
-        raise MigrationFailed(None, f"reading it as Mint v3 raised {_described(error)}") from error
+        raise _unreadable_files(error) from error
 
 
-def _described(error: Exception) -> str:
+def _unreadable_files(error: BaseException | None) -> MigrationFailed:
+    return MigrationFailed(None, f"reading it as Mint v3 raised {_described(error)}")
+
+
+def _described(error: BaseException | None) -> str:
     return f"{type(error).__name__}: {error}"
 
 
@@ -119,8 +124,10 @@ def _unreadable(file: FileView) -> tuple[str, ...]:
     )
 
 
-def _apply_pass(context: Context, rules: Sequence[Rule], states: dict[Unit, _FileState]) -> set[str]:
-    """One pass of ``rules``; the ids of the rules whose edits were applied (none: the phase is done)."""
+def _apply_pass(context: Context, rules: Sequence[Rule], states: dict[Unit, _FileState]) -> tuple[set[str], bool]:
+    """One pass of ``rules``: the ids of the rules whose edits were applied, and whether the phase
+    is done. It is when the rules asked for nothing, or for marker lines only: a comment line
+    changes no syntax a rule reads, so another pass would ask for the same markers, found written."""
     wanted: dict[Unit, list[Edit]] = {unit: [] for unit in states}
     flagged: set[tuple[Unit, int, str]] = set()
     for rule in rules:
@@ -133,6 +140,8 @@ def _apply_pass(context: Context, rules: Sequence[Rule], states: dict[Unit, _Fil
                     edit = _marker(file, rule.id, action, flagged)
                     if edit is not None:
                         wanted[action.unit].append(edit)
+        except Unreadable as error:  # the model, built when the rule asked for it
+            raise _unreadable_files(error.__cause__) from error.__cause__
         except Exception as error:  # a bug in one rule: reported with its id, the run goes on
             raise MigrationFailed(rule.id, _described(error)) from error
     applied: set[str] = set()
@@ -141,7 +150,14 @@ def _apply_pass(context: Context, rules: Sequence[Rule], states: dict[Unit, _Fil
         if accepted:
             _apply(states[unit], accepted)
             applied.update(edit.rule for edit in accepted)
-    return applied
+    return applied, all(_writes_markers(edit) for edits in wanted.values() for edit in edits)
+
+
+def _writes_markers(edit: Edit) -> bool:
+    """Whether ``edit`` inserts whole ``REM MIGRATE:`` lines and nothing else (a line split does more)."""
+    lines = split_lines(edit.text, keepends=True)
+    whole = all(line.lstrip().startswith(MARKER) and line.endswith(("\n", "\r")) for line in lines)
+    return edit.span.start == edit.span.end and bool(lines) and whole
 
 
 def _marker(file: FileView, rule: str, flag: Flag, flagged: set[tuple[Unit, int, str]]) -> Edit | None:

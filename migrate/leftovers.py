@@ -1,7 +1,7 @@
 """Temporary files a killed ``--write`` left in the user's folders.
 
 A kill between writing the temporary file and renaming it leaves
-``.NAME.XXXXXXXX.mint-migrate.tmp`` beside the file it was for (see ``atomic``).
+``.NAME.XXXXXXXX.mint.tmp`` beside the file it was for (see ``mintlang.atomic``).
 Every run looks for them in the folders of the files it reads: ``--write`` removes
 them, the other modes (which write nothing) only name them. A temporary file that
 a running ``mint-migrate`` still holds is locked, and is left alone.
@@ -15,7 +15,7 @@ import os
 from collections.abc import Iterable
 from pathlib import Path
 
-from mintlang.migrate.atomic import SUFFIX
+from mintlang.atomic import SUFFIX
 
 
 def find(folders: Iterable[Path]) -> list[Path]:

@@ -30,7 +30,7 @@ def manual_items(text: str, origin: Callable[[int], int | None], source: LineInd
             yield ManualItem(found["rule"], number, found["reason"], None, note=True)
         elif found:
             pending.append((number, found["rule"], found["reason"]))
-        else:
+        elif pending:  # the line they mark: where it came from is asked only for marked lines
             start = origin(offset)
             original = source.position(start).line if start is not None else None
             yield from (ManualItem(rule, number, reason, original) for _, rule, reason in pending)

@@ -114,8 +114,30 @@ def _manual(item: ManualItem) -> dict[str, Any]:
     }
 
 
-def render_text(data: Mapping[str, Any], console: Console) -> None:
-    """The report for a person: one table of files, the manual items, the rule counts, the totals."""
+def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = False, verbose: bool = False) -> None:
+    """The report for a person: one table of files, the manual items, the rule counts, the totals.
+
+    ``quiet`` leaves out all but the manual items and the unreadable lines; ``verbose`` adds every change.
+    """
+    if not quiet:
+        _files_table(data, console)
+    for row in data["files"]:
+        path = escape(row["path"])
+        for item in row["manual"]:
+            console.print(f"{_place(path, item)}: [bold]{item['rule']}[/bold] {escape(item['reason'])}")
+        for error in row["errors"]:
+            console.print(f"{path}: unreadable v3 {escape(error)}")
+        for change in row["changes"] if verbose else ():
+            place = f"{path}:{change['migrated_line']} (original line {change['original_line']})"
+            console.print(f"{place}: [bold]{change['rule']}[/bold]")
+    if quiet:
+        return
+    if data["rules"]:
+        console.print("rules: " + ", ".join(f"{rule} {count}" for rule, count in data["rules"].items()))
+    console.print(summary(data["totals"]))
+
+
+def _files_table(data: Mapping[str, Any], console: Console) -> None:
     files = Table(title=f"mint-migrate ({data['controller']})", show_edge=False)
     for column in ("file", "role", "status", "changes", "manual items", "unreadable lines"):
         files.add_column(column)
@@ -123,15 +145,6 @@ def render_text(data: Mapping[str, Any], console: Console) -> None:
         counts = (len(row["changes"]), len(row["manual"]), len(row["errors"]))
         files.add_row(Text(row["path"]), row["role"], row["status"], *(str(count) for count in counts))
     console.print(files)
-    for row in data["files"]:
-        path = escape(row["path"])
-        for item in row["manual"]:
-            console.print(f"{_place(path, item)}: [bold]{item['rule']}[/bold] {escape(item['reason'])}")
-        for error in row["errors"]:
-            console.print(f"{path}: unreadable v3 {escape(error)}")
-    if data["rules"]:
-        console.print("rules: " + ", ".join(f"{rule} {count}" for rule, count in data["rules"].items()))
-    console.print(summary(data["totals"]))
 
 
 def _place(path: str, item: Mapping[str, Any]) -> str:

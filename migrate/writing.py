@@ -15,9 +15,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
-from mintlang.migrate import atomic
+from mintlang import atomic
+from mintlang.atomic import Stale, Unwritable, target
 from mintlang.migrate.applications import Migrated
-from mintlang.migrate.atomic import Stale, Unwritable, target
 from mintlang.migrate.report import plural
 from mintlang.source import SourceFile
 

@@ -60,7 +60,10 @@ def check_application(
     select: tuple[str, ...] | None = None,
     ignore: tuple[str, ...] = (),
 ) -> Analysis:
-    """Parse and analyse a program with its optional configuration file; diagnostics per file."""
+    """Parse and analyse a program with its optional configuration file; diagnostics per file.
+
+    ``select`` and ``ignore`` take codes or their prefixes; without ``select`` the errors and
+    warnings are reported and the hints (I…) are not."""
     configuration = parse(config, dialect, controller=controller) if config is not None else None
     macros = configuration.macros if configuration else None
     program = parse(source, dialect, macros=macros, controller=controller)

@@ -1,11 +1,15 @@
 """Diagnostic codes: the controller's numbered errors and the toolchain's own checks.
 
-``E<n>`` diagnostics carry the manual's error number and its title, so users
-recognise them from the controller; ``W…`` warnings and ``I…`` hints are the
-toolchain's own.
+``E<nnnn>`` diagnostics carry the manual's error number and its title, written
+in four digits as the controller prints its codes (``E0002``, ``E2014``), so
+users recognise them and a prefix selects one family only (``E2`` is E2000 to
+E2021, never error 2). ``W…`` warnings and ``I…`` hints are the toolchain's own.
 """
 
 from __future__ import annotations
+
+import re
+from functools import cache
 
 from mintlang.diagnostics import Diagnostic, Fix, Severity, Span
 from mintlang.keyworddb import database
@@ -27,6 +31,7 @@ OWN_CODES: dict[str, str] = {
     "W114": "AUTO ignored",
     "W115": "Recursive GOSUB",
     "W116": "GOSUB nested too deep",
+    "W117": "Unused suppression",
     "I201": "Faster dot syntax",
 }
 
@@ -40,9 +45,54 @@ COMPILE_ERRORS = frozenset(
 )
 
 
+def error_code(number: int) -> str:
+    """The code of the controller's error ``number``, in four digits as the controller prints it: E0002, E2014."""
+    return f"E{number:04d}"
+
+
+@cache
 def known_codes() -> frozenset[str]:
-    """Every code a diagnostic can carry: ``E<n>`` for the manual's errors, and the toolchain's own."""
-    return frozenset(f"E{number}" for number in database().errors) | OWN_CODES.keys()
+    """Every code a diagnostic can carry: ``E<nnnn>`` for the manual's errors, and the toolchain's own."""
+    errors = (error_code(number) for number in database().errors if number > 0)  # -1 is "Success"
+    return frozenset(errors) | OWN_CODES.keys()
+
+
+_SHORT_ERROR = re.compile(r"E([1-9][0-9]{0,2})")  # the manual's spelling of a number below 1000: E2, E17, E108
+
+
+def _short_form(code: str) -> str | None:
+    """The four-digit code an upper-cased short spelling names (E17 -> E0017), if it names a known error."""
+    short = _SHORT_ERROR.fullmatch(code)
+    full = error_code(int(short[1])) if short is not None else None
+    return full if full in known_codes() else None
+
+
+def code_named(text: str) -> str | None:
+    """The code ``text`` names exactly, in either spelling (``e17``, ``E0017``, ``W103``); None if none.
+
+    Where one code is meant (a suppression comment, a rule's documentation) the short
+    spelling cannot be a prefix, so it always names its error.
+    """
+    code = text.strip().upper()
+    return code if code in known_codes() else _short_form(code)
+
+
+def selector(text: str) -> str:
+    """A ``--select``/``--ignore`` entry as it is matched: the codes that begin with the result.
+
+    Prefixes are read in the four-digit spelling, as ruff reads them: ``E2`` selects
+    E2000 to E2021, ``E00`` the run-time errors below 100. The short spelling of an
+    error is its alias only where it begins no code (``E17`` is E0017, ``E108``
+    E0108); so ``E2``, ``E3``, ``E20`` and ``E30`` stay prefixes (write ``E0002``).
+    Raises ValueError for an entry that selects nothing: a typo would hide findings.
+    """
+    code = text.strip().upper()
+    if any(name.startswith(code) for name in known_codes()):
+        return code
+    alias = _short_form(code)
+    if alias is None:
+        raise ValueError(f"'{code}' is no code and begins none (E0002, E2, W1, I201 ...)")
+    return alias
 
 
 def mint_error(
@@ -65,7 +115,14 @@ def mint_error(
     if at_run_time is None:
         at_run_time = code not in COMPILE_ERRORS
     return Diagnostic(
-        f"E{code}", severity, span, message, mint_error=code, fixes=fixes, from_v3=from_v3, at_run_time=at_run_time
+        error_code(code),
+        severity,
+        span,
+        message,
+        mint_error=code,
+        fixes=fixes,
+        from_v3=from_v3,
+        at_run_time=at_run_time,
     )
 
 

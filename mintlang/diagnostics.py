@@ -60,17 +60,24 @@ class Edit:
 
 @dataclass(frozen=True, slots=True)
 class Fix:
-    """A named set of edits that resolves a diagnostic."""
+    """A named set of edits that resolves a diagnostic.
+
+    ``safe`` says the program means afterwards what it meant (or plainly meant)
+    before: ``mint check --fix`` applies it unasked. A guess at the author's
+    intent or a change of what runs is unsafe (``--unsafe-fixes``), and so is a
+    fix whose rule does not say otherwise.
+    """
 
     title: str
     edits: tuple[Edit, ...]
+    safe: bool = False
 
     def shifted(self, offset: int) -> Fix:
-        return Fix(self.title, tuple(edit.shifted(offset) for edit in self.edits))
+        return Fix(self.title, tuple(edit.shifted(offset) for edit in self.edits), self.safe)
 
     @classmethod
     def replace(cls, span: Span, text: str) -> Fix:
-        """Write ``text`` in place of the word at ``span``: a misspelling's or an old keyword's fix."""
+        """Write ``text`` in place of the word at ``span``: a misspelling's or an old keyword's fix (a guess)."""
         return cls(f"Replace with {text}", (Edit(span, text),))
 
 
@@ -78,8 +85,8 @@ class Fix:
 class Diagnostic:
     """One finding.
 
-    ``code`` is ``E<n>`` for the controller's own error numbers (``mint_error``
-    then holds ``n``) and ``W…``/``I…`` for the toolchain's own checks.
+    ``code`` is ``E<nnnn>`` for the controller's own error numbers, in four digits
+    (``mint_error`` then holds the number) and ``W…``/``I…`` for the toolchain's own checks.
     """
 
     code: str

@@ -19,6 +19,7 @@ import math
 import os
 import signal
 import sys
+import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from functools import partial
@@ -32,6 +33,16 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
 from mintlang.cli.files import program_as_own_configuration
+from mintlang.cli.options import (
+    HELP_OPTIONS,
+    color_option,
+    exit_zero_option,
+    refuse_quiet_and_verbose,
+    verbosity_options,
+    version_option,
+)
+from mintlang.cli.settings import ProjectCommand, settings_failed
+from mintlang.cli.terminal import console
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller as ControllerName
@@ -55,6 +66,8 @@ from mintlang.runtime.scenario import (
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
 from mintlang.runtime.simulation import Interrupt, Limits
 from mintlang.runtime.trace import PlotUnavailable, Trace
+from mintlang.semantic.units import Unit
+from mintlang.settings import SettingsError, settings_for
 from mintlang.source import read_source
 
 _USAGE_ERROR = 2
@@ -92,11 +105,21 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
     return seconds
 
 
-@click.command()
+@click.command(
+    cls=ProjectCommand,
+    tool="mint-run",
+    table="run",  # [tool.mint.run]: defaults for these options
+    start=lambda params: params["program"],
+    context_settings=HELP_OPTIONS,
+)
 @click.argument("program", type=click.Path(path_type=Path))
 @click.option(
-    "--config", "config_path", type=click.Path(path_type=Path), help="Configuration file run before the program."
+    "--config",
+    "config_path",
+    type=click.Path(path_type=Path),
+    help="Configuration file run before the program (by default the one beside it: <name>.cfg, any case).",
 )
+@click.option("--no-config", is_flag=True, help="Run the program without a configuration file.")
 @click.option(
     "--dialect",
     type=click.Choice([dialect.value for dialect in SIMULATED]),
@@ -153,14 +176,18 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
 )
 @click.option("--trace-axes", help="Axes to trace and plot, e.g. 0,1 (default: every axis).")
 @click.option(
-    "--report", "report_format", type=click.Choice(["json"]), help="Print a report of the final state at the end."
+    "--format",
+    "--report",
+    "report_format",
+    type=click.Choice(["json"]),
+    help="Print a report of the final state at the end, after the program's output.",
 )
 @click.option(
+    "--output-file",
     "--report-file",
     "report_path",
     type=click.Path(path_type=Path),
-    help="Write the --report json report to this file, with or without --report (on stdout it follows "
-    "the program's output).",
+    help="Write the json report to this file, with or without --format.",
 )
 @click.option("--realtime", is_flag=True, help="Pace the simulation to real time.")
 @click.option(
@@ -168,9 +195,17 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
     type=click.IntRange(min=0, max=65535),
     help="Serve the host comms protocol on this TCP port of 127.0.0.1.",
 )
+@exit_zero_option("Exit with 0 when the program stops on an error or an expectation fails (2 still reports misuse).")
+@verbosity_options(
+    quiet="No progress bar, and no closing line when the program ends normally.",
+    verbose="Also say how long the run took in real time, beside the simulated time.",
+)
+@color_option()
+@version_option("mint-run")
 def run(  # noqa: PLR0917 - click passes every option as an argument
     program: Path,
     config_path: Path | None,
+    no_config: bool,
     dialect: str,
     controller: str | None,
     stimulus_paths: tuple[Path, ...],
@@ -185,14 +220,20 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     report_path: Path | None,
     realtime: bool,
     host_port: int | None,
+    exit_zero: bool,
+    quiet: bool,
+    verbose: bool,
+    color: str,
 ) -> None:
     """Run a Mint program against simulated axes, I/O and a host.
 
     Ctrl-C (exit 130) or SIGTERM (exit 143) stops the run where it is; the report and the trace are still written.
     """
-    errors = Console(stderr=True, highlight=False, soft_wrap=True)
+    refuse_quiet_and_verbose(quiet, verbose)
+    errors = console(color, stderr=True)
     if config_path is not None and program_as_own_configuration([program], config_path):
         raise click.UsageError(f"--config {config_path} is the program {program} itself: name the configuration file")
+    config_path = _configuration(program, config_path, no_config=no_config)
     try:
         simulated = machine(controller, dialect)
     except ValueError as problem:
@@ -227,7 +268,7 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     axes = _axes_list(trace_axes, simulated) or tuple(range(simulated.axis_count))
     trace = Trace(axes, trace_path, plotting=plot_path is not None) if tracing else None
     termination = _Termination()
-    recorders = _Recorders(trace, termination, errors, until_ms)
+    recorders = _Recorders(trace, termination, errors, until_ms, progress=not quiet and sys.stderr.isatty())
     stdout = _Stdout(live=realtime or host_port is not None)
     simulate = partial(
         run_source,
@@ -243,14 +284,37 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     )
     with _on_sigterm(termination):
         with _trace_open(trace), recorders.progress:
+            started = time.perf_counter()
             result = _simulate(simulate, termination)
+            wall_s = time.perf_counter() - started
         stdout.flush()
-        _describe_stop(result, errors)
+        if not (quiet and result.stop.reason in (StopReason.END, StopReason.UNTIL)):
+            _describe_stop(result, errors)
+        if verbose:
+            ratio = f" ({result.stop.time_ms / 1000 / wall_s:.1f}x real time)" if wall_s > 0 else ""
+            errors.print(f"simulated {result.stop.time_ms} ms in {wall_s:.2f} s{ratio}")
         if result.outcomes:
             render_outcomes(result.outcomes, errors)
         _report(result, report_format, report_path)
         _outputs(trace, plot_path)  # after the report, so an output that fails does not take the results with it
-    sys.exit(_exit_status(result, stdout.closed, termination.received, expect=bool(expect_paths)))
+    status = _exit_status(result, stdout.closed, termination.received, expect=bool(expect_paths))
+    sys.exit(0 if status == _FAILED and exit_zero else status)
+
+
+def _configuration(program: Path, config_path: Path | None, *, no_config: bool) -> Path | None:
+    """The configuration file run first: ``--config``, else the one the settings file names or pairs with the
+    program as ``mint check`` and the editor do (``mintlang.pairing``); none with ``--no-config``."""
+    if no_config:
+        if config_path is not None:
+            raise click.UsageError("--config names the configuration file and --no-config runs none: give one")
+        return None
+    if config_path is not None:
+        return config_path
+    try:
+        unit, other = settings_for(program).partner(program)
+    except SettingsError as error:
+        settings_failed("mint-run", error)
+    return other if unit is Unit.PROGRAM else None
 
 
 def _simulate(simulate: Callable[[], RunResult], termination: _Termination) -> RunResult:
@@ -420,7 +484,9 @@ def _scenario(paths: tuple[Path, ...], controller: ControllerProfile, dialect: D
 class _Recorders:
     """The per-tick observers of a run: SIGTERM, the trace and the progress bar."""
 
-    def __init__(self, trace: Trace | None, termination: _Termination, console: Console, until_ms: int | None) -> None:
+    def __init__(
+        self, trace: Trace | None, termination: _Termination, console: Console, until_ms: int | None, *, progress: bool
+    ) -> None:
         self.trace = trace
         self.termination = termination
         self.console = console
@@ -430,7 +496,7 @@ class _Recorders:
             TimeElapsedColumn(),
             console=console,
             transient=True,
-            disable=not console.is_terminal,
+            disable=not progress,
             # on one screen, what the program prints goes above the bar; piped, it goes to its file untouched
             redirect_stdout=sys.stdout.isatty(),
             redirect_stderr=False,

@@ -47,6 +47,7 @@ class RunResult:
     outcomes: tuple[Outcome, ...]
     inert_settings: tuple[str, ...] = ()  # settings the program wrote that the simulation does not model
     terminal_dropped: int = 0  # characters printed before those ``terminal`` keeps
+    refused: bool = False  # the controller's compiler rejected a file: the program never ran (``stop`` says why)
 
 
 @dataclass(frozen=True, slots=True)
@@ -213,4 +214,5 @@ def _simulate(
         tuple(outcomes),
         tuple(sorted(built.inert.used)),
         built.terminal.dropped,
+        refused is not None,
     )

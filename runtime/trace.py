@@ -4,7 +4,7 @@ A trace row is taken for every servo tick, so tracing turns off the
 simulator's tick skipping; the same program and stimulus give the same bytes.
 Rows stream to the CSV file as the run makes them and the plot keeps a
 bounded summary of them, so memory does not grow with the length of a run.
-Plotting needs matplotlib (``pip install mintlang[plot]``); nothing else does.
+Plotting needs matplotlib (the ``plot`` extra; the message says how to add it); nothing else does.
 """
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import IO
 
+from mintlang.extras import this_installation
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.simulation import Interrupt
 
@@ -179,7 +180,7 @@ def _matplotlib() -> None:
     try:
         import matplotlib  # noqa: PLC0415 - optional dependency, loaded only when plotting
     except ImportError as missing:
-        raise PlotUnavailable("plotting needs matplotlib: pip install 'mintlang[plot]'") from missing
+        raise PlotUnavailable(f"plotting needs matplotlib: {this_installation('plot')}") from missing
     matplotlib.use("Agg")
 
 

@@ -20,6 +20,7 @@ from mintlang.lsp.features import (
     signature,
     simulator,
     symbols,
+    watched_files,
 )
 
 FEATURES = (
@@ -42,4 +43,5 @@ FEATURES = (
     selection_ranges,
     linked_editing,
     declaration,
+    watched_files,
 )

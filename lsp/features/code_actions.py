@@ -1,9 +1,10 @@
-"""Code actions: the core's quick fixes, and "Migrate this file to Mint v4".
+"""Code actions: the core's quick fixes, abbreviations expanded, and the v3 → v4 source actions.
 
 Quick fixes come from the ``fixes`` of the core's diagnostics (declare with
-DIM, replace a v3 keyword, plain quotes, dot syntax). The migration is a
-source action resolved lazily: ``mintlang.migrate`` runs only when the user
-picks it, and its minimal edits leave unchanged lines alone.
+DIM, replace a v3 keyword, plain quotes, dot syntax), and each diagnostic can
+be silenced on its line ("Ignore W103 on this line": a ``REM mint: ignore``
+comment added or extended). "Replace v3 keywords" and "Migrate this file to
+Mint v4" are ``migration``'s, resolved when picked.
 """
 
 from __future__ import annotations
@@ -13,15 +14,11 @@ from collections.abc import Iterator
 from lsprotocol import types
 
 import mintlang
-from mintlang.dialect import Dialect
-from mintlang.lsp.features import abbreviations
+from mintlang.analysis.suppression import UNUSED_SUPPRESSION, suppression_fix
+from mintlang.lsp.features import abbreviations, migration
 from mintlang.lsp.features.diagnostics import to_lsp
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
-from mintlang.semantic.units import Unit
-
-MIGRATE_KIND = f"{types.CodeActionKind.Source.value}.migrateToV4"
-MIGRATE_TITLE = "Migrate this file to Mint v4"
 
 
 def _overlaps(span: mintlang.Span, start: int, end: int) -> bool:
@@ -47,12 +44,14 @@ def quick_fixes(snapshot: Snapshot, selection: types.Range) -> Iterator[types.Co
                 edit=_edits(snapshot, fix.edits),
                 is_preferred=len(diagnostic.fixes) == 1,
             )
-
-
-def _wants_migration(snapshot: Snapshot) -> bool:
-    if snapshot.unit is not Unit.PROGRAM or snapshot.skipped is not None:
-        return False
-    return snapshot.settings.dialect is Dialect.V3 or any(d.from_v3 for d in snapshot.diagnostics)
+        if diagnostic.code != UNUSED_SUPPRESSION:  # its own fix removes the comment
+            ignore = suppression_fix(snapshot.document, diagnostic.span.start, diagnostic.code)
+            yield types.CodeAction(
+                title=ignore.title,
+                kind=types.CodeActionKind.QuickFix,
+                diagnostics=[to_lsp(diagnostic, snapshot)],
+                edit=_edits(snapshot, ignore.edits),
+            )
 
 
 def _wanted(kind: str, only: list[str] | None) -> bool:
@@ -63,7 +62,8 @@ def register(server: MintServer) -> None:
     @server.feature(
         types.TEXT_DOCUMENT_CODE_ACTION,
         types.CodeActionOptions(
-            code_action_kinds=[types.CodeActionKind.QuickFix, abbreviations.KIND, MIGRATE_KIND], resolve_provider=True
+            code_action_kinds=[types.CodeActionKind.QuickFix, abbreviations.KIND, *migration.KINDS],
+            resolve_provider=True,
         ),
     )
     def actions(params: types.CodeActionParams) -> list[types.CodeAction]:
@@ -74,21 +74,9 @@ def register(server: MintServer) -> None:
         found = list(quick_fixes(snapshot, params.range)) if _wanted(types.CodeActionKind.QuickFix, only) else []
         if _wanted(abbreviations.KIND, only):
             found.extend(abbreviations.actions(snapshot, params.range))
-        if _wanted(MIGRATE_KIND, only) and _wants_migration(snapshot):
-            data = {"uri": snapshot.uri, "version": snapshot.version}
-            found.append(types.CodeAction(title=MIGRATE_TITLE, kind=MIGRATE_KIND, data=data))
+        found.extend(migration.actions(server, snapshot, [kind for kind in migration.KINDS if _wanted(kind, only)]))
         return found
 
     @server.feature(types.CODE_ACTION_RESOLVE)
     def resolve(action: types.CodeAction) -> types.CodeAction:
-        data = action.data if isinstance(action.data, dict) else {}
-        snapshot = server.snapshot(str(data.get("uri", "")))
-        if action.title != MIGRATE_TITLE or snapshot is None or snapshot.version != data.get("version"):
-            return action
-        from mintlang.migrate import migrate  # noqa: PLC0415  (loaded only when the user asks)
-
-        configuration = snapshot.files.get(Unit.CONFIGURATION)
-        config = server.read_text(configuration.uri) if configuration is not None else None
-        result = migrate(snapshot.document.source, config=config, controller=snapshot.settings.controller)
-        action.edit = _edits(snapshot, result.edits())
-        return action
+        return migration.resolve(server, action)

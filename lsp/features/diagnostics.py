@@ -11,6 +11,7 @@ from __future__ import annotations
 import asyncio
 import logging
 import time
+from collections.abc import Iterable
 
 from lsprotocol import types
 
@@ -18,6 +19,7 @@ import mintlang
 from mintlang.codes import OWN_CODES
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot, partner
+from mintlang.ruledocs.links import configured_base, rule_url
 
 log = logging.getLogger(__name__)
 _SEVERITY = {
@@ -39,7 +41,14 @@ def to_lsp(diagnostic: mintlang.Diagnostic, snapshot: Snapshot) -> types.Diagnos
         code=diagnostic.code,
         source="mint",
         tags=[types.DiagnosticTag.Unnecessary] if diagnostic.code in _UNNECESSARY else None,
+        code_description=_page(diagnostic.code, snapshot.settings.rules_url),
     )
+
+
+def _page(code: str, base: str | None) -> types.CodeDescription | None:
+    """The link to the code's page (``mint.rulesUrl``, else as for the command line), shown on the code."""
+    url = rule_url(code, base or configured_base())
+    return types.CodeDescription(href=url) if url is not None else None
 
 
 def lsp_diagnostics(snapshot: Snapshot) -> list[types.Diagnostic]:
@@ -75,6 +84,16 @@ def refresh_all(server: MintServer) -> None:
         return
     for uri in list(server.workspace.text_documents):
         publish(server, uri)
+
+
+def recheck(server: MintServer, uris: Iterable[str]) -> None:
+    """Files these documents read changed on disk: their diagnostics may have."""
+    uris = list(uris)
+    if uris and _pulls(server):
+        _refresh_pulled(server)
+    elif uris:
+        for uri in uris:
+            publish(server, uri)
 
 
 def publish(server: MintServer, uri: str) -> None:
@@ -115,7 +134,7 @@ class _Debouncer:
 
     def partner(self, uri: str) -> None:
         """The other file of the application is analysed with this one: refresh it too."""
-        _, other = partner(uri, self.server.analyses.settings, self.server.opened())
+        _, other = partner(uri, self.server.analyses.settings_for(uri), self.server.opened())
         if other is None or other not in self.server.workspace.text_documents:
             return
         if _pulls(self.server):

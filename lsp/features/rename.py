@@ -19,6 +19,7 @@ from lsprotocol import types
 from pygls.exceptions import JsonRpcException
 
 from mintlang.diagnostics import Span
+from mintlang.lsp import confirmation
 from mintlang.lsp.lookup import token_at
 from mintlang.lsp.occurrences import symbol_at, written
 from mintlang.lsp.server import MintServer
@@ -111,25 +112,6 @@ def register(server: MintServer) -> None:
             range=snapshot.positions.range(_spelling(occurrence)), placeholder=occurrence.spelling
         )
 
-    def annotations_supported() -> bool:
-        edits = server.client_capabilities.workspace and server.client_capabilities.workspace.workspace_edit
-        return bool(edits and edits.document_changes and edits.change_annotation_support)
-
-    def annotated(changes: dict[str, list[types.TextEdit]], note: str) -> types.WorkspaceEdit:
-        """The edits under one annotation that needs the user's confirmation."""
-        documents = []
-        for uri, edits in changes.items():
-            opened = server.workspace.text_documents.get(uri)
-            identifier = types.OptionalVersionedTextDocumentIdentifier(
-                uri=uri, version=opened.version if opened is not None else None
-            )
-            marked = [
-                types.AnnotatedTextEdit(range=edit.range, new_text=edit.new_text, annotation_id=MERGE) for edit in edits
-            ]
-            documents.append(types.TextDocumentEdit(text_document=identifier, edits=marked))
-        annotation = types.ChangeAnnotation(label="Merge spellings", needs_confirmation=True, description=note)
-        return types.WorkspaceEdit(document_changes=documents, change_annotations={MERGE: annotation})
-
     @server.feature(types.TEXT_DOCUMENT_RENAME, types.RenameOptions(prepare_provider=True))
     async def rename(params: types.RenameParams) -> types.WorkspaceEdit | None:
         snapshot = server.snapshot(params.text_document.uri)
@@ -149,8 +131,9 @@ def register(server: MintServer) -> None:
         if len(spellings) < 2:
             return types.WorkspaceEdit(changes=changes)
         note = _merge_note(spellings, name)
-        if annotations_supported():
-            return annotated(changes, note)
+        if confirmation.supported(server):
+            annotation = types.ChangeAnnotation(label="Merge spellings", needs_confirmation=True, description=note)
+            return confirmation.confirmed(server, changes, MERGE, annotation)
         question = types.ShowMessageRequestParams(
             type=types.MessageType.Warning,
             message=f"{note}. Rename all?",

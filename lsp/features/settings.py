@@ -21,6 +21,8 @@ def register(server: MintServer) -> None:
     @server.feature(types.INITIALIZED)
     async def initialized(_: types.InitializedParams) -> None:
         await _pull(server)
+        for hook in server.when_initialized:
+            await hook()
 
     @server.feature(types.WORKSPACE_DID_CHANGE_CONFIGURATION)
     async def changed(params: types.DidChangeConfigurationParams) -> None:
@@ -30,6 +32,8 @@ def register(server: MintServer) -> None:
         from mintlang.lsp.features.diagnostics import refresh_all  # noqa: PLC0415  (a sibling feature)
 
         refresh_all(server)
+        for hook in server.when_settings_changed:
+            await hook()
 
 
 async def _pull(server: MintServer) -> None:

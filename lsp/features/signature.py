@@ -135,4 +135,5 @@ def register(server: MintServer) -> None:
     )
     def help_(params: types.SignatureHelpParams) -> types.SignatureHelp | None:
         typing = server.typing(params.text_document.uri, params.position)
-        return signature_help(typing[1], server.analyses.settings) if typing is not None else None
+        settings = server.analyses.settings_for(params.text_document.uri)
+        return signature_help(typing[1], settings) if typing is not None else None

@@ -12,7 +12,8 @@ from pygls.uris import from_fs_path, to_fs_path
 
 from mintlang.lsp.features.navigation import locations
 from mintlang.lsp.server import MintServer
-from mintlang.lsp.workspace import PROGRAM_SUFFIX, Snapshot
+from mintlang.lsp.workspace import Snapshot
+from mintlang.pairing import PROGRAM_SUFFIX
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import Symbol, SymbolKind
 

@@ -61,12 +61,12 @@ class _Timeline:
         axes: Axes = V3_POWER_UP_AXES
         entering: dict[Unit, Axes] = {}
         last: dict[Unit, int] = {}
-        for unit, document in context.model.documents():
-            entering[unit] = axes
-            axes = changes[unit][1][-1] if unit in changes else axes
-            final = _last_start(document.placed)
+        for file in context.compiled:
+            entering[file.unit] = axes
+            axes = changes[file.unit][1][-1] if file.unit in changes else axes
+            final = _last_start(file.document.placed)
             if final is not None:
-                last[unit] = final
+                last[file.unit] = final
         return cls(changes, entering, last, axes)
 
 

@@ -33,9 +33,12 @@ class NodeNumber(Rule):
     evidence = "spec S-CARD; v3:6646-6672; v4:14643-14676, v4:2140-2148, v4:18268"
 
     def apply(self, context: Context) -> Iterator[Action]:
+        cards = list(context.keyword_uses("CARD"))
+        if not cards:
+            return  # whether NODE is a user name (the semantic model) matters only for a CARD
         user = context.model.symbols.variables.get(identity("NODE"))
         clash = user is not None and not is_migrator_read(user)
-        for file, use in context.keyword_uses("CARD"):
+        for file, use in cards:
             if use.use is not Use.READ:
                 yield self.flag(file, use.statement.span, "CARD can only be read (v4: NODE)")
             elif clash:

@@ -131,15 +131,32 @@ class RenameEventLabels(Rule):
     evidence = "spec M-LABEL; v4:1884-1900"
 
     def apply(self, context: Context) -> Iterator[Action]:
+        if not any(map(_event_named, _label_names(context))):
+            return  # the usual case: the symbol table (the semantic model) is not needed
         for labels in context.model.symbols.labels.values():
             taken = set(labels)
             for symbol in labels.values():
-                event = event_of(symbol.identity, Dialect.V4)
-                if event is None or event_of(symbol.identity, Dialect.V3) is not None:
-                    continue
-                if event.kind is EventKind.FASTIN and event.number is None:
-                    continue
-                yield from _rename_symbol(self, context.files, symbol, taken)
+                if _event_named(symbol.identity):
+                    yield from _rename_symbol(self, context.files, symbol, taken)
+
+
+def _label_names(context: Context) -> Iterator[str]:
+    """The identity of every label defined or jumped to: the names the symbol table's labels have."""
+    for _, line in context.placed(LABEL, n.Jump):
+        if line.syntax.label is not None:
+            yield line.syntax.label.identity
+        for statement in n.flatten_statements(line.syntax.statements):
+            if isinstance(statement, n.Jump):
+                yield statement.label.identity
+
+
+def _event_named(label: str) -> bool:
+    """Whether a label (by identity) is named like a v4 event handler v3 did not have; ``#FASTIN``
+    alone is taken as the handler M-FASTPOS writes."""
+    event = event_of(label, Dialect.V4)
+    if event is None or event_of(label, Dialect.V3) is not None:
+        return False
+    return not (event.kind is EventKind.FASTIN and event.number is None)
 
 
 class RenameReservedNames(Rule):
@@ -158,11 +175,19 @@ class RenameReservedNames(Rule):
     evidence = "spec M-IDENT; v4:882-890, v4:18940-18943 (#2006)"
 
     def apply(self, context: Context) -> Iterator[Action]:
+        if not context.names(_maybe_reserved):
+            return  # the usual case: the symbol table (the semantic model) is not needed
         variables = context.model.symbols.variables
         taken = set(variables)
         for symbol in variables.values():
             if is_reserved_user_name(symbol.name) and not is_migrator_read(symbol):
                 yield from _rename_symbol(self, context.files, symbol, taken)
+
+
+def _maybe_reserved(name: str) -> bool:
+    """Whether a user name of this identity may be a v4 word: a longer name shares the first ten
+    characters of its identity, so those are not known."""
+    return len(name) >= n.SIGNIFICANT_CHARACTERS or is_reserved_user_name(name)
 
 
 def _rename_symbol(rule: Rule, files: Mapping[Unit, FileView], symbol: Symbol, taken: set[str]) -> Iterator[Action]:

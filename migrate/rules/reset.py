@@ -35,6 +35,9 @@ class ResetSideEffects(Rule):
     evidence = "spec S-RESET; v3:11409, v3:11427-11444; v4:15624-15629, v4:144-182"
 
     def apply(self, context: Context) -> Iterator[Action]:
+        resets = list(context.keyword_uses("RESET"))
+        if not resets:
+            return  # most applications: their uses of the outputs need not be looked at
         used: dict[str, tuple[Unit, int]] = {}  # cleared keyword -> its first use in compile order
         order = {Unit.CONFIGURATION: 0, Unit.PROGRAM: 1}
         for _, use in context.keyword_uses(*_OUTPUTS, "TIME", "IMASK"):
@@ -44,7 +47,7 @@ class ResetSideEffects(Rule):
                 used[name] = place
         if not used:
             return
-        for file, use in context.keyword_uses("RESET"):
+        for file, use in resets:
             here = (order[use.unit], use.statement.span.start)
             relied = [
                 name for name, (unit, start) in used.items() if (order[unit], start) < here or use.unit is Unit.PROGRAM

@@ -6,9 +6,10 @@ changed (X-UNITS). Each flags only the statements its spec row names.
 from __future__ import annotations
 
 from collections.abc import Iterator
+from itertools import islice
 
 from mintlang.keyworddb.model import Controller
-from mintlang.migrate.context import MACRO, Context, name_tag, statement_tag
+from mintlang.migrate.context import MACRO, MARKER, Context, FileView, name_tag, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import unparsed_write
 from mintlang.migrate.rules.base import Action, Rule
@@ -100,10 +101,17 @@ class ChangedUnits(Rule):
                 if name in _TUNING:
                     previous = block_end.get(file.unit)
                     block_end[file.unit] = line.number
-                    if name in _GAINS and (previous is None or line.number - previous > 1):
+                    block = previous is not None and _continues(file, span.start, line.number - previous - 1)
+                    if name in _GAINS and not block:
                         yield self.flag(file, span, "servo gains changed units and loop rate in v4: re-tune")
                 elif name == "TORQUE" and mintdrive and not _all_zero(statement):
                     yield self.flag(file, span, "MintDrive TORQUE 100 is nominal current (v3 100 was peak)")
+
+
+def _continues(file: FileView, offset: int, between: int) -> bool:
+    """Whether the ``between`` lines above the line of ``offset`` are markers only (none: the same
+    line or the next): another rule's items (X-NUM's on a gain's value) do not split a tuning block."""
+    return between <= 0 or all(line.startswith(MARKER) for line in islice(file.lines_above(offset), between))
 
 
 def _written_name(statement: n.Statement) -> str | None:

@@ -15,6 +15,7 @@ from functools import cache
 from mintlang.allocation import without_collector
 from mintlang.analysis.findings import Finding
 from mintlang.analysis.rules import RULES, Rule
+from mintlang.analysis.suppression import suppress
 from mintlang.analysis.traversal import LineScope, gather
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.controllers import ControllerProfile
@@ -34,11 +35,16 @@ class Analysis:
     configuration: tuple[Diagnostic, ...]
 
 
+# What is checked unless a selection says otherwise: the controller's errors and the warnings. The
+# hints (I…) suggest a faster spelling of correct code; they are asked for (``--select I``).
+DEFAULT_SELECT = ("E", "W")
+
+
 def _selected(code: str, select: Iterable[str] | None, ignore: Iterable[str]) -> bool:
     """``--select``/``--ignore`` match a code or a prefix of it (E2, W1, E3001)."""
     if any(code.startswith(prefix) for prefix in ignore):
         return False
-    return select is None or any(code.startswith(prefix) for prefix in select)
+    return any(code.startswith(prefix) for prefix in (DEFAULT_SELECT if select is None else select))
 
 
 _LineKey = tuple[Unit, Hashable, Controller, Dialect]  # what the line was parsed from, and where it is checked
@@ -100,6 +106,12 @@ def analyse(model: SemanticModel, *, select: Iterable[str] | None = None, ignore
             continue
         seen.add(key)
         per_unit[finding.unit].append(diagnostic)
+
+    def selected(code: str) -> bool:
+        return _selected(code, select, ignore)
+
+    for unit, document in model.documents():
+        per_unit[unit] = suppress(per_unit[unit], document, selected)
     for diagnostics in per_unit.values():
         diagnostics.sort(key=lambda d: (d.span.start, d.span.end, d.code))
     return Analysis(model, tuple(per_unit[Unit.PROGRAM]), tuple(per_unit[Unit.CONFIGURATION]))

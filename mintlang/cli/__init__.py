@@ -1,7 +1,7 @@
 """The ``mint`` command.
 
 ``mint check`` lives in the core. The tools add their own subcommands
-(``mint migrate``, ``mint run``) through the ``mintlang.commands`` entry-point
+(``mint migrate``, ``mint run``, ``mint lsp``) through the ``mintlang.commands`` entry-point
 group, so the core never imports them; they are loaded only when ``mint``
 runs, so importing this package imports no tool.
 """
@@ -11,6 +11,8 @@ from __future__ import annotations
 import click
 
 from mintlang.cli.check import check
+from mintlang.cli.options import HELP_OPTIONS, version_option
+from mintlang.cli.rule import rule
 
 
 class _Commands(click.Group):
@@ -28,10 +30,11 @@ class _Commands(click.Group):
         return super().get_command(ctx, cmd_name) or self._tools().get(cmd_name)
 
 
-@click.group(cls=_Commands, context_settings={"help_option_names": ["-h", "--help"]})
-@click.version_option(package_name="mintlang")
+@click.group(cls=_Commands, context_settings=HELP_OPTIONS)
+@version_option("mint")
 def main() -> None:
     """Tools for Mint, the motion-control language of Baldor/ABB controllers."""
 
 
 main.add_command(check)
+main.add_command(rule)

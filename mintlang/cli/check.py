@@ -1,52 +1,85 @@
 """``mint check``: the static analyser on the command line.
 
-Exit status: 0 when no diagnostic of error severity was found, 1 when one was,
-2 for a usage or I/O problem (reported in one line, never as a traceback).
+Files are checked on all cores (``-j``), and reported in the order they were
+found whatever the number of processes. A file that cannot be read (a link
+loop, a pipe, a file deleted meanwhile) is reported on standard error with its
+path, and the others are still checked and reported.
 """
 
 from __future__ import annotations
 
 import sys
-from collections import Counter
+import time
 from pathlib import Path
-from typing import NoReturn
+from typing import IO, NoReturn
 
 import click
-from rich.console import Console
 
-from mintlang import check_application
-from mintlang.cli.files import collect, is_configuration, program_as_own_configuration, same_file
-from mintlang.cli.options import controller_option
-from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, render_text
-from mintlang.codes import known_codes
-from mintlang.diagnostics import Diagnostic, Severity
+from mintlang.cli.applications import plan
+from mintlang.cli.checking import check_file
+from mintlang.cli.files import cannot_read, find, program_as_own_configuration
+from mintlang.cli.fixing import Fixing, Outcome, apply, fix_options, fixable_summary, fixed_summary, marked
+from mintlang.cli.options import (
+    HELP_OPTIONS,
+    color_option,
+    controller_option,
+    exit_zero_option,
+    format_option,
+    list_option,
+    output_file_option,
+    refuse_quiet_and_verbose,
+    verbosity_options,
+)
+from mintlang.cli.parallel import all_cores, map_in_order
+from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, as_statistics, render_text
+from mintlang.cli.settings import describe, overrides, settings_failed
+from mintlang.cli.terminal import console, destination
+from mintlang.codes import selector
+from mintlang.diagnostics import Severity
 from mintlang.dialect import Dialect
-from mintlang.source import SourceFile, read_source
+from mintlang.settings import Overrides, SettingsError, settings_for
+from mintlang.source import SourceFile, decode, read_source
 
-_USAGE_ERROR = 2
-_USE_FINDINGS = frozenset({"W103", "W105"})  # unused variable, macro: a use in any program counts
+_FOUND_ERRORS = 1
+_NOT_DONE = 2
+_INTERRUPTED = 130  # 128 + SIGINT, as a shell reports a command Ctrl-C ended
+_STDIN = Path("-")
+
+SELECT_HELP = (
+    "Only these codes or code prefixes; comma-separated or repeated. Default: E,W (the hints need --select I)."
+    " Errors have four digits, as the controller prints them: a prefix selects by them (E2 is E2000-E2021, E00"
+    " the errors below 100). The manual's short spelling names one error where it begins no code (E17 is E0017);"
+    " E2, E3, E20 and E30 are prefixes: write E0002."
+)
+
+EXIT_STATUS = """\b
+Exit status:
+  0  no finding of error severity (or --exit-zero)
+  1  a finding of error severity (with --fix: left after fixing;
+     with --diff: a fix to make)
+  2  a usage problem, or a file that could not be checked or fixed
+     (the others are checked and reported all the same)
+  130  interrupted (Ctrl-C)"""
 
 
-def _codes(value: str | None, option: str) -> tuple[str, ...] | None:
+def _codes(values: tuple[str, ...] | None, option: str) -> tuple[str, ...] | None:
     """The codes or prefixes of ``--select``/``--ignore``; a typo would silently hide findings, so none passes."""
-    if value is None:
+    if values is None:
         return None
-    codes = tuple(code.strip().upper() for code in value.split(",") if code.strip())
-    if not codes:
-        raise click.BadParameter("give at least one code or prefix (E2, W103 ...)", param_hint=option)
-    known = known_codes()
-    for code in codes:
-        if not any(name.startswith(code) for name in known):
-            raise click.BadParameter(f"'{code}' is no code and begins none (E2003, W1, I201 ...)", param_hint=option)
-    return codes
+    if not values:
+        raise click.BadParameter("give at least one code or prefix (E0002, E2, W103 ...)", param_hint=option)
+    try:
+        return tuple(selector(value) for value in values)
+    except ValueError as error:
+        raise click.BadParameter(str(error), param_hint=option) from None
 
 
 def _fail(message: str) -> NoReturn:
     click.echo(f"mint check: {message}", err=True)
-    sys.exit(_USAGE_ERROR)
+    sys.exit(_NOT_DONE)
 
 
-@click.command()
+@click.command(context_settings=HELP_OPTIONS, epilog=EXIT_STATUS)
 @click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path))
 @click.option("--dialect", type=click.Choice([d.value for d in Dialect]), default="v4", show_default=True)
 @controller_option("The controller the programs run on.")
@@ -54,96 +87,195 @@ def _fail(message: str) -> NoReturn:
     "--config",
     "config_path",
     type=click.Path(path_type=Path),
-    help="Configuration file whose variables and macros the programs see.",
+    help="Configuration file whose variables and macros the programs see (instead of each program's paired one).",
 )
 @click.option(
-    "--format",
-    "output_format",
-    type=click.Choice(["text", "json", "sarif", "github"]),
-    default="text",
-    show_default=True,
+    "--no-config",
+    is_flag=True,
+    help="Pair no configuration file with the programs (by default <name>.cfg beside <name>.mnt, any case).",
 )
-@click.option("--select", help="Only these codes or code prefixes, comma-separated (E2,W103).")
-@click.option("--ignore", help="Leave out these codes or code prefixes, comma-separated.")
+@click.option(
+    "--show-settings",
+    is_flag=True,
+    help="Print the settings that apply to each file (and where each comes from), and check nothing.",
+)
+@format_option(["text", "json", "sarif", "github"])
+@output_file_option()
+@list_option("--select", absent=None, help=SELECT_HELP)
+@list_option("--extend-select", absent=None, help="Also these codes or code prefixes, besides those selected.")
+@list_option("--ignore", absent=None, help="Leave out these codes or code prefixes; comma-separated or repeated.")
+@click.option(
+    "--statistics", is_flag=True, help="Count the findings of each code instead of showing each (text, json)."
+)
+@exit_zero_option("Exit with 0 even when errors are found (a file that could not be checked still exits with 2).")
+@click.option(
+    "--stdin-filename",
+    help="The name under which the program read from standard input (the path -) is reported.",
+)
+@click.option(
+    "-j",
+    "--jobs",
+    type=click.IntRange(min=0),
+    default=0,
+    help="Check this many files at once, each in a process of its own.  [default: 0, all cores]",
+)
+@verbosity_options(
+    quiet="Only the findings: no closing count, no progress bar.",
+    verbose="Say on standard error how many files were checked, on how many processes, in how long.",
+)
+@color_option()
+@fix_options()
 def check(
     paths: tuple[Path, ...],
     dialect: str,
     controller: str,
     config_path: Path | None,
+    no_config: bool,
+    show_settings: bool,
     output_format: str,
-    select: str | None,
-    ignore: str | None,
+    output_file: Path | None,
+    select: tuple[str, ...] | None,
+    extend_select: tuple[str, ...] | None,
+    ignore: tuple[str, ...] | None,
+    statistics: bool,
+    exit_zero: bool,
+    stdin_filename: str | None,
+    jobs: int,
+    quiet: bool,
+    verbose: bool,
+    color: str,
+    fix: bool,
+    unsafe_fixes: bool,
+    diff: bool,
 ) -> None:
-    """Check Mint programs (.mnt; directories are searched) for the controller's errors and more."""
-    options: dict[str, object] = {
-        "dialect": dialect,
-        "controller": controller,
-        "select": _codes(select, "--select"),
-        "ignore": _codes(ignore, "--ignore") or (),
-    }
-    try:
-        files = collect(paths)
-        configuration = read_source(config_path) if config_path is not None else None
-    except FileNotFoundError as missing:
-        _fail(f"no such file or directory: {missing.filename or missing.args[0]}")
-    except OSError as error:
-        _fail(f"cannot read {error.filename}: {error.strerror}")
-    if configuration is not None and (binary := configuration.binary()) is not None:
-        _fail(f"{binary}: not checked")
-    if not files:
-        _fail("no .mnt files found in " + ", ".join(str(p) for p in paths))
-    itself = program_as_own_configuration(files, config_path) if config_path is not None else None
-    if itself is not None:
+    """Check Mint programs for the errors the controller finds, and more.
+
+    PATHS are programs (.mnt), configuration files (.cfg) and directories, searched for programs; - reads the
+    program from standard input. Each program is checked with the configuration file beside it, and each file
+    under the nearest mint.toml or pyproject.toml [tool.mint] above it; the options here win over that file.
+    """
+    started = time.perf_counter()
+    refuse_quiet_and_verbose(quiet, verbose)
+    if statistics and output_format not in ("text", "json"):
+        raise click.UsageError(f"--statistics is written as text or json, not {output_format}")
+    context = click.get_current_context()
+    layer = overrides(
+        context,
+        select=_codes(select, "--select"),
+        extend_select=_codes(extend_select, "--extend-select"),
+        ignore=_codes(ignore, "--ignore"),
+        config_path=config_path,
+        no_config=no_config,
+    )
+    found = find(path for path in paths if path != _STDIN)
+    _configuration(config_path)  # a --config that cannot be read ends the command before any check
+    if config_path is not None and (itself := program_as_own_configuration(found.files, config_path)) is not None:
         _fail(f"--config {config_path} is the program {itself} itself: name the configuration file")
+    if fix and not diff and _STDIN in paths:
+        raise click.UsageError("--fix writes files, and standard input is none: use --diff to see the fixes")
+    if _STDIN not in paths and stdin_filename is not None:
+        raise click.UsageError("--stdin-filename names the program read from standard input: give - as a path")
+    try:
+        if show_settings:
+            named = [*([Path(stdin_filename or "-")] if _STDIN in paths else []), *found.files]
+            _show_settings(named, layer, [cannot_read(error) for error in found.unreadable])
+        planned = plan(found.files, layer, _read_stdin(stdin_filename) if _STDIN in paths else None)
+    except SettingsError as error:
+        settings_failed("mint check", error)
+    fixing = Fixing.asked(fix, unsafe_fixes, diff)
+    work = marked(planned.jobs, planned.hidden, fixing) if fixing is not None else planned.jobs
+    if planned.empty and not found.unreadable and not planned.problems:
+        _fail("no .mnt files found in " + ", ".join(str(p) for p in paths))
 
-    reports: list[FileReport] = []
-    seen_by_programs: list[tuple[Diagnostic, ...]] = []  # the configuration's findings with each program
-    for path in files:
-        if configuration is not None and is_configuration(path) and same_file(path, configuration.path):
-            continue  # named twice, as --config and as a path: checked once, with the programs
-        try:
-            source = read_source(path)
-        except OSError as error:
-            _fail(f"cannot read {path}: {error.strerror}")
-        binary = source.binary()
-        if binary is not None:
-            _fail(f"{binary}: not checked")
-        if is_configuration(path):
-            reports.append(_configuration_report(source, options))
-        else:
-            config_text = configuration.text if configuration is not None else None
-            analysis = check_application(source.text, config=config_text, **options)  # type: ignore[arg-type]
-            reports.append(FileReport(str(path), source.text, analysis.program))
-            seen_by_programs.append(analysis.configuration)
-    if configuration is not None:
-        if seen_by_programs:
-            diagnostics = _configuration_with_programs(seen_by_programs)
-            reports.insert(0, FileReport(str(configuration.path), configuration.text, diagnostics))
-        else:
-            reports.insert(0, _configuration_report(configuration, options))
-
-    if output_format == "json":
-        click.echo(as_json(reports))
-    elif output_format == "sarif":
-        click.echo(as_sarif(reports))
-    elif output_format == "github":
-        output = as_github(reports)
-        if output:
-            click.echo(output)
+    workers = jobs or all_cores()
+    progress = console(color, stderr=True) if not quiet and sys.stderr.isatty() else None
+    try:
+        results = map_in_order(check_file, work, workers=workers, progress=progress)
+    except KeyboardInterrupt:  # click would say 'Aborted!' and exit with 1, which means errors found
+        click.echo("mint check: interrupted", err=True)
+        sys.exit(_INTERRUPTED)
+    problems = [cannot_read(e) for e in found.unreadable] + planned.problems + [r.problem for r in results if r.problem]
+    reports = planned.reports(results)
+    fixed = [result.fixed for result in results if result.fixed is not None]
+    outcome = None
+    if diff:  # the changes instead of the report, as ruff's --diff
+        with destination(output_file, _fail) as stream:
+            outcome = apply(fixed, diff=stream)
+    elif fixing is not None:
+        outcome = apply(fixed, diff=None)
+        problems += outcome.problems
+    if reports and not diff:
+        with destination(output_file, _fail) as stream:
+            _write(reports, stream, output_format, statistics=statistics, quiet=quiet, color=color)
+            if output_format == "text" and not quiet and not statistics:
+                _write_fix_summary(reports, outcome, stream)
+    if outcome is not None and not quiet:
+        notes = outcome.notes() + ([fixed_summary(outcome, diff=diff)] if diff or output_format != "text" else [])
+        click.echo("".join(f"mint check: {note}\n" for note in notes), err=True, nl=False)
+    for problem in problems:
+        click.echo(f"mint check: {problem}", err=True)
+    if verbose:
+        elapsed = time.perf_counter() - started
+        processes = min(workers, len(work)) or 1
+        click.echo(
+            f"mint check: {len(reports)} of {len(work) + len(found.unreadable)} files checked "
+            f"on {processes} process{'es' if processes != 1 else ''} in {elapsed:.2f} s",
+            err=True,
+        )
+    if diff:  # exit 1: there is something to fix
+        failed = outcome is not None and bool(outcome.codes)
     else:
-        render_text(reports, Console(highlight=False, soft_wrap=True))
-    failed = any(d.severity is Severity.ERROR for report in reports for d in report.diagnostics)
-    sys.exit(1 if failed else 0)
+        failed = any(d.severity is Severity.ERROR for report in reports for d in report.diagnostics)
+    sys.exit(_NOT_DONE if problems else _FOUND_ERRORS if failed and not exit_zero else 0)
 
 
-def _configuration_with_programs(seen_by_programs: list[tuple[Diagnostic, ...]]) -> tuple[Diagnostic, ...]:
-    """The configuration's findings, each once; a name is unused only if no program uses it."""
-    counts: Counter[Diagnostic] = Counter(d for diagnostics in seen_by_programs for d in dict.fromkeys(diagnostics))
-    kept = [d for d, count in counts.items() if d.code not in _USE_FINDINGS or count == len(seen_by_programs)]
-    return tuple(sorted(kept, key=lambda d: (d.span.start, d.span.end, d.code)))
+def _write_fix_summary(reports: list[FileReport], outcome: Outcome | None, stream: IO[str]) -> None:
+    """What was fixed, and what ``--fix`` (or ``--unsafe-fixes``) would fix of what is left."""
+    lines = [fixed_summary(outcome, diff=False)] if outcome is not None else []
+    fixable = fixable_summary(reports)
+    stream.write("".join(f"{line}\n" for line in [*lines, *([fixable] if fixable else [])]))
 
 
-def _configuration_report(source: SourceFile, options: dict[str, object]) -> FileReport:
-    """A configuration file checked on its own (with an empty program)."""
-    analysis = check_application("", config=source.text, **options)  # type: ignore[arg-type]
-    return FileReport(str(source.path), source.text, analysis.configuration)
+def _configuration(path: Path | None) -> SourceFile | None:
+    """The ``--config`` file, read; one that cannot be read or is binary ends the command."""
+    if path is None:
+        return None
+    try:
+        configuration = read_source(path)
+    except OSError as error:
+        _fail(cannot_read(error))
+    if (binary := configuration.binary()) is not None:
+        _fail(f"{binary}: not checked")
+    return configuration
+
+
+def _show_settings(paths: list[Path], layer: Overrides, problems: list[str]) -> NoReturn:
+    """``--show-settings``: each file's settings; a path that could not be looked at is said as a check says it."""
+    if paths:
+        click.echo("\n\n".join("\n".join(describe(path, settings_for(path, layer))) for path in paths))
+    for problem in problems or ([] if paths else ["no .mnt files found"]):
+        click.echo(f"mint check: {problem}", err=True)
+    sys.exit(_NOT_DONE if problems or not paths else 0)
+
+
+def _read_stdin(name: str | None) -> SourceFile:
+    text, encoding = decode(sys.stdin.buffer.read())
+    return SourceFile(Path(name or "-"), text, encoding)
+
+
+def _write(
+    reports: list[FileReport], stream: IO[str], output_format: str, *, statistics: bool, quiet: bool, color: str
+) -> None:
+    if statistics:
+        text = as_statistics(reports, output_format)
+    elif output_format == "json":
+        text = as_json(reports)
+    elif output_format == "sarif":
+        text = as_sarif(reports)
+    elif output_format == "github":
+        text = as_github(reports)
+    else:
+        render_text(reports, console(color, file=stream), summary=not quiet)
+        return
+    if text:
+        stream.write(f"{text}\n")

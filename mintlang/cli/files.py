@@ -1,46 +1,77 @@
 """Finding the files a command was asked to look at.
 
-Every problem is raised, never skipped: a directory that cannot be read, a
-dangling link or a link loop below a named directory would otherwise leave
-programs unchecked (or unmigrated) without a word.
+No problem is skipped: a directory that cannot be read, a dangling link or a
+link loop below a named directory would otherwise leave programs unchecked (or
+unmigrated) without a word. ``find`` keeps each one to be reported while the
+other files are checked; ``collect`` raises the first.
 """
 
 from __future__ import annotations
 
 import os
 from collections.abc import Iterable
+from dataclasses import dataclass
 from pathlib import Path
 
 PROGRAM_SUFFIXES = frozenset({".mnt"})
 CONFIGURATION_SUFFIXES = frozenset({".cfg"})
 
 
-def _raise(error: OSError) -> None:
-    raise error
+@dataclass(frozen=True, slots=True)
+class Found:
+    """The files to look at, and the paths that could not be looked at (each error names its path)."""
+
+    files: list[Path]
+    unreadable: list[OSError]
 
 
-def _programs_below(directory: Path) -> list[Path]:
+def _programs_below(directory: Path, unreadable: list[OSError]) -> list[Path]:
     found: list[Path] = []
-    for folder, _, names in os.walk(directory, onerror=_raise):
+    for folder, _, names in os.walk(directory, onerror=unreadable.append):
         for name in names:
             path = Path(folder, name)
             if path.suffix.lower() in PROGRAM_SUFFIXES:
-                path.stat()  # a dangling link or a loop raises here
+                try:
+                    path.stat()  # a dangling link or a loop raises here
+                except OSError as error:
+                    unreadable.append(error)
+                    continue
                 found.append(path)
     return sorted(found)
 
 
-def collect(paths: Iterable[Path]) -> list[Path]:
-    """Files named directly, and the ``.mnt`` files below named directories, sorted.
+def find(paths: Iterable[Path]) -> Found:
+    """Files named directly, and the ``.mnt`` files below named directories, sorted; and what failed.
 
-    A named ``.cfg`` file is checked as a configuration file on its own. Raises
-    OSError (FileNotFoundError for a path that does not exist) with the path that failed.
+    A named ``.cfg`` file is checked as a configuration file on its own. A path that
+    does not exist, a link loop or a folder that cannot be listed is an OSError
+    (FileNotFoundError for a missing path) naming the path, kept to be reported.
     """
-    found: list[Path] = []
+    files: list[Path] = []
+    unreadable: list[OSError] = []
     for path in paths:
-        path.stat()  # ELOOP, ENOTDIR and ENOENT say what is wrong; Path.exists() would hide them
-        found.extend(_programs_below(path) if path.is_dir() else [path])
-    return list(dict.fromkeys(found))
+        try:
+            path.stat()  # ELOOP, ENOTDIR and ENOENT say what is wrong; Path.exists() would hide them
+        except OSError as error:
+            unreadable.append(error)
+            continue
+        files.extend(_programs_below(path, unreadable) if path.is_dir() else [path])
+    return Found(list(dict.fromkeys(files)), unreadable)
+
+
+def collect(paths: Iterable[Path]) -> list[Path]:
+    """The files of ``find``; raises the first OSError, for a command that must see every file or none."""
+    found = find(paths)
+    if found.unreadable:
+        raise found.unreadable[0]
+    return found.files
+
+
+def cannot_read(error: OSError) -> str:
+    """One line for a path that could not be read."""
+    if isinstance(error, FileNotFoundError):
+        return f"no such file or directory: {error.filename or error.args[0]}"
+    return f"cannot read {error.filename}: {error.strerror or error}"
 
 
 def is_configuration(path: Path) -> bool:

@@ -1,15 +1,26 @@
-"""Command-line options that every tool spells the same way."""
+"""Command-line options that every tool spells the same way.
+
+``mint``, ``mint-run``, ``mint-migrate`` and ``mint-lsp`` take their shared
+options from here, so ``--format``, ``--output-file``, ``--exit-zero``,
+``--color``, ``-q``/``-v``, ``--version`` and ``-h`` mean the same everywhere.
+Nothing here imports more than click: ``--version`` and ``--help`` stay fast.
+"""
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+from pathlib import Path
 from typing import TypeVar
 
 import click
 
+from mintlang.cli.terminal import COLOR_CHOICES
 from mintlang.keyworddb.model import Controller
 
 F = TypeVar("F", bound=Callable[..., object])
+
+HELP_OPTIONS = {"help_option_names": ["-h", "--help"]}
+"""The context settings of every command: ``-h`` is ``--help``."""
 
 
 def controller_option(help_text: str) -> Callable[[F], F]:
@@ -21,3 +32,75 @@ def controller_option(help_text: str) -> Callable[[F], F]:
         show_default=True,
         help=help_text,
     )
+
+
+def version_option(prog_name: str) -> Callable[[F], F]:
+    """``--version``: the distribution's version, from its metadata (nothing of the tool is imported)."""
+    return click.version_option(package_name="mintlang", prog_name=prog_name)
+
+
+def list_option(*names: str, absent: tuple[str, ...] | None = (), **settings: object) -> Callable[[F], F]:
+    """An option taking several values: repeated (``--x A --x B``), comma-separated (``--x A,B``) or both.
+
+    The command receives a tuple of the values (empty for ``--x ""``), or ``absent`` when the option was not given.
+    """
+
+    def comma_separated(
+        _context: click.Context, _parameter: click.Parameter, values: tuple[str, ...]
+    ) -> tuple[str, ...] | None:
+        if not values:
+            return absent
+        return tuple(part.strip() for value in values for part in value.split(",") if part.strip())
+
+    return click.option(*names, multiple=True, callback=comma_separated, **settings)  # type: ignore[call-overload]
+
+
+def format_option(choices: Sequence[str], help_text: str = "How to write the report.") -> Callable[[F], F]:
+    """``--format``: the one spelling of an output format on every tool; the first choice is the default."""
+    return click.option(
+        "--format",
+        "output_format",
+        type=click.Choice(list(choices)),
+        default=choices[0],
+        show_default=True,
+        help=help_text,
+    )
+
+
+def output_file_option(
+    help_text: str = "Write the report to this file instead of standard output.",
+) -> Callable[[F], F]:
+    """``--output-file``: the report goes to a file (never coloured unless ``--color always``)."""
+    return click.option("--output-file", type=click.Path(dir_okay=False, path_type=Path), help=help_text)
+
+
+def exit_zero_option(help_text: str) -> Callable[[F], F]:
+    """``--exit-zero``: findings do not fail the run; a usage or I/O problem still does."""
+    return click.option("--exit-zero", is_flag=True, help=help_text)
+
+
+def color_option() -> Callable[[F], F]:
+    """``--color``: on a terminal unless NO_COLOR is set (auto), always, or never."""
+    return click.option(
+        "--color",
+        type=click.Choice(COLOR_CHOICES),
+        default="auto",
+        show_default=True,
+        help="Colour the output: on a terminal unless NO_COLOR is set (auto), always, or never.",
+    )
+
+
+def verbosity_options(quiet: str, verbose: str) -> Callable[[F], F]:
+    """``-q/--quiet`` and ``-v/--verbose``, with what each leaves out or adds for this tool."""
+    quiet_option = click.option("-q", "--quiet", is_flag=True, help=quiet)
+    verbose_option = click.option("-v", "--verbose", is_flag=True, help=verbose)
+
+    def decorate(function: F) -> F:
+        return quiet_option(verbose_option(function))
+
+    return decorate
+
+
+def refuse_quiet_and_verbose(quiet: bool, verbose: bool) -> None:
+    if quiet and verbose:
+        raise click.UsageError("--quiet and --verbose: choose one")

@@ -3,16 +3,21 @@
 from __future__ import annotations
 
 import json
+import re
+from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass
+from importlib.metadata import version
 
 from rich.cells import cell_len
 from rich.console import Console
-from rich.markup import escape
 
+from mintlang.cli.terminal import Palette
 from mintlang.codes import OWN_CODES
-from mintlang.diagnostics import Diagnostic, LineIndex, Severity, split_lines
+from mintlang.diagnostics import Diagnostic, Fix, LineIndex, Severity, Span, split_lines
 from mintlang.keyworddb import database
+from mintlang.ruledocs import find
+from mintlang.ruledocs.links import configured_base, rule_url
 
 
 @dataclass(frozen=True, slots=True)
@@ -38,6 +43,16 @@ _STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.
 _CONTEXT = 60  # characters shown either side of the marked text on a long line (and twice that marked)
 # Control characters of the source are shown as their pictures (one cell each), never sent to the terminal.
 _VISIBLE = {code: chr(0x2400 + code) for code in range(0x20)} | {0x7F: "\u2421", ord("\t"): " "}
+_CONTROL = re.compile("[\x00-\x1f\x7f]")
+
+
+def _visible(text: str) -> str:
+    """``text`` with its control characters as pictures (a search first: most text has none to translate)."""
+    return text.translate(_VISIBLE) if _CONTROL.search(text) else text
+
+
+def _cells(text: str) -> int:
+    return len(text) if text.isascii() else cell_len(text)
 
 
 def _frame(text: str, start: int, end: int) -> tuple[str, int, int]:
@@ -50,51 +65,86 @@ def _frame(text: str, start: int, end: int) -> tuple[str, int, int]:
     end = min(end, start + 2 * _CONTEXT)  # a long marked stretch is cut too
     first, last = max(0, start - _CONTEXT), min(len(text), end + _CONTEXT)
     head, tail = ("…" if first > 0 else ""), ("…" if last < len(text) else "")
-    visible = text[first:last].translate(_VISIBLE)
+    visible = _visible(text[first:last])
     before = head + visible[: start - first]
-    return head + visible + tail, cell_len(before), cell_len(visible[start - first : end - first])
+    return head + visible + tail, _cells(before), _cells(visible[start - first : end - first])
 
 
-def render_text(reports: Sequence[FileReport], console: Console) -> None:
-    """rustc/ruff-style code frames and a closing count."""
+def render_text(reports: Sequence[FileReport], console: Console, *, summary: bool = True) -> None:
+    """rustc/ruff-style code frames and, with ``summary``, a closing count.
+
+    Written straight to the console's file with the escape codes of its palette:
+    ``Console.print`` parses and measures every line, a hundred times the cost.
+    The source, messages and paths are shown as they are (never read as markup),
+    with their control characters as pictures.
+    """
+    palette = Palette.for_console(console, {*_STYLE.values(), "blue", "bold"})
     counts = dict.fromkeys(Severity, 0)
+    bar, arrow, equals = (palette.paint("blue", mark) for mark in ("|", "-->", "="))
     for report in reports:
         lines = split_lines(report.source)
+        path = _visible(report.path)
+        frames: list[str] = []
         for diagnostic, line, column, end_line, end_column in report.located():
             counts[diagnostic.severity] += 1
             style = _STYLE[diagnostic.severity]
-            console.print(f"[{style}]{diagnostic.severity.value}[{diagnostic.code}][/]: {escape(diagnostic.message)}")
-            console.print(f"  [blue]-->[/] {escape(report.path)}:{line}:{column}")
             text = lines[line - 1] if 0 < line <= len(lines) else ""
             gutter = " " * len(str(line))
             end = end_column if end_line == line else len(text) + 1
             shown, before, marked = _frame(text, column - 1, max(column, end) - 1)
-            console.print(f"  {gutter} [blue]|[/]")
-            console.print(f"  [blue]{line} |[/] {escape(shown)}", highlight=False)
-            console.print(f"  {gutter} [blue]|[/] {' ' * before}[{style}]{'^' * max(1, marked)}[/]")
-            for fix in diagnostic.fixes:
-                console.print(f"  {gutter} [blue]=[/] fix: {escape(fix.title)}")
-            console.print()
-    summary = ", ".join(f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity)
-    console.print(f"[bold]{len(reports)} file{'s' if len(reports) != 1 else ''} checked:[/] {summary}")
+            heading = palette.paint(style, f"{diagnostic.severity.value}[{diagnostic.code}]")
+            frames.append(
+                f"{heading}: {_visible(diagnostic.message)}\n"
+                f"  {arrow} {path}:{line}:{column}\n"
+                f"  {gutter} {bar}\n"
+                f"  {palette.paint('blue', f'{line} |')} {shown}\n"
+                f"  {gutter} {bar} {' ' * before}{palette.paint(style, '^' * max(1, marked))}\n"
+            )
+            frames.extend(f"  {gutter} {equals} fix: {_visible(fix.title)}\n" for fix in diagnostic.fixes)
+            frames.append("\n")
+        console.file.write("".join(frames))
+    if summary:
+        total = ", ".join(f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity)
+        checked = palette.paint("bold", f"{len(reports)} file{'s' if len(reports) != 1 else ''} checked:")
+        console.file.write(f"{checked} {total}\n")
+    console.file.flush()
+
+
+def _region(index: LineIndex, span: Span) -> tuple[int, int, int, int]:
+    """1-based start line and column, end line and column (end exclusive) of ``span``."""
+    start, end = index.position(span.start), index.position(span.end)
+    return start.line, start.column, end.line, end.column
+
+
+def _json_fix(fix: Fix, index: LineIndex) -> dict[str, object]:
+    """A fix as JSON: each edit replaces the text between two positions with ``text``."""
+    edits = [
+        dict(zip(("line", "column", "end_line", "end_column"), _region(index, edit.span), strict=True))
+        | {"text": edit.text}
+        for edit in fix.edits
+    ]
+    return {"title": fix.title, "safe": fix.safe, "edits": edits}
 
 
 def as_json(reports: Sequence[FileReport]) -> str:
-    records = [
-        {
-            "path": report.path,
-            "code": diagnostic.code,
-            "mint_error": diagnostic.mint_error,
-            "severity": diagnostic.severity.value,
-            "message": diagnostic.message,
-            "line": line,
-            "column": column,
-            "end_line": end_line,
-            "end_column": end_column,
-        }
-        for report in reports
-        for diagnostic, line, column, end_line, end_column in report.located()
-    ]
+    records = []
+    for report in reports:
+        index = LineIndex(report.source)
+        records.extend(
+            {
+                "path": report.path,
+                "code": diagnostic.code,
+                "mint_error": diagnostic.mint_error,
+                "severity": diagnostic.severity.value,
+                "message": diagnostic.message,
+                "line": line,
+                "column": column,
+                "end_line": end_line,
+                "end_column": end_column,
+                "fixes": [_json_fix(fix, index) for fix in diagnostic.fixes],
+            }
+            for diagnostic, line, column, end_line, end_column in report.located()
+        )
     return json.dumps(records, indent=2, ensure_ascii=False)
 
 
@@ -105,7 +155,35 @@ def _title(code: str) -> str:
     return OWN_CODES.get(code, code)
 
 
+def _sarif_rule(code: str, base: str | None) -> dict[str, object]:
+    """A SARIF rule: its title, and what it catches with a link to its page where it is documented."""
+    rule: dict[str, object] = {"id": code, "shortDescription": {"text": _title(code)}}
+    documented = find(code)
+    if documented is not None:
+        rule["fullDescription"] = {"text": documented.catches}
+        url = rule_url(code, base)
+        if url is not None:
+            rule["helpUri"] = url
+    return rule
+
+
 _SARIF_LEVEL = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
+
+
+def _sarif_region(index: LineIndex, span: Span) -> dict[str, int]:
+    return dict(zip(("startLine", "startColumn", "endLine", "endColumn"), _region(index, span), strict=True))
+
+
+def _sarif_fix(fix: Fix, index: LineIndex, uri: str) -> dict[str, object]:
+    """A SARIF fix: the file's replacements; whether ``--fix`` applies it unasked is a property."""
+    replacements = [
+        {"deletedRegion": _sarif_region(index, edit.span), "insertedContent": {"text": edit.text}} for edit in fix.edits
+    ]
+    return {
+        "description": {"text": fix.title},
+        "artifactChanges": [{"artifactLocation": {"uri": uri}, "replacements": replacements}],
+        "properties": {"safe": fix.safe},
+    }
 
 
 def as_sarif(reports: Sequence[FileReport]) -> str:
@@ -113,33 +191,29 @@ def as_sarif(reports: Sequence[FileReport]) -> str:
     results = []
     codes: set[str] = set()
     for report in reports:
-        for diagnostic, line, column, end_line, end_column in report.located():
+        index = LineIndex(report.source)
+        for diagnostic in report.diagnostics:
             codes.add(diagnostic.code)
-            results.append(
-                {
-                    "ruleId": diagnostic.code,
-                    "level": _SARIF_LEVEL[diagnostic.severity],
-                    "message": {"text": diagnostic.message},
-                    "locations": [
-                        {
-                            "physicalLocation": {
-                                "artifactLocation": {"uri": report.path},
-                                "region": {
-                                    "startLine": line,
-                                    "startColumn": column,
-                                    "endLine": end_line,
-                                    "endColumn": end_column,
-                                },
-                            }
-                        }
-                    ],
-                }
-            )
-    rules = [{"id": code, "shortDescription": {"text": _title(code)}} for code in sorted(codes)]
+            location = {"artifactLocation": {"uri": report.path}, "region": _sarif_region(index, diagnostic.span)}
+            result = {
+                "ruleId": diagnostic.code,
+                "level": _SARIF_LEVEL[diagnostic.severity],
+                "message": {"text": diagnostic.message},
+                "locations": [{"physicalLocation": location}],
+            }
+            if diagnostic.fixes:
+                result["fixes"] = [_sarif_fix(fix, index, report.path) for fix in diagnostic.fixes]
+            results.append(result)
+    rules = [_sarif_rule(code, configured_base()) for code in sorted(codes)]
     document = {
         "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
         "version": "2.1.0",
-        "runs": [{"tool": {"driver": {"name": "mint check", "rules": rules}}, "results": results}],
+        "runs": [
+            {
+                "tool": {"driver": {"name": "mint check", "version": version("mintlang"), "rules": rules}},
+                "results": results,
+            }
+        ],
     }
     return json.dumps(document, indent=2, ensure_ascii=False)
 
@@ -165,3 +239,14 @@ def as_github(reports: Sequence[FileReport]) -> str:
             )
             lines.append(f"::{_GITHUB_LEVEL[diagnostic.severity]} {properties}::{escape_data(diagnostic.message)}")
     return "\n".join(lines)
+
+
+def as_statistics(reports: Sequence[FileReport], output_format: str) -> str:
+    """How many findings of each code, most first (then by code): a table, or JSON records."""
+    counts = Counter(diagnostic.code for report in reports for diagnostic in report.diagnostics)
+    ranked = sorted(counts.items(), key=lambda item: (-item[1], item[0]))
+    if output_format == "json":
+        records = [{"code": code, "count": count, "title": _title(code)} for code, count in ranked]
+        return json.dumps(records, indent=2, ensure_ascii=False)
+    width = len(str(ranked[0][1])) if ranked else 1
+    return "\n".join(f"{count:>{width}}  {code:<6} {_title(code)}" for code, count in ranked)

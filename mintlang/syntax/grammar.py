@@ -27,6 +27,7 @@ from lark.lexer import Lexer
 
 from mintlang.dialect import Dialect
 from mintlang.syntax.build import LineBuilder, compile_line
+from mintlang.syntax.lexer import MAX_TOKENS
 from mintlang.syntax.tokens import TokenKind
 
 
@@ -99,8 +100,8 @@ def _parser(dialect: Dialect) -> Lark:
 
 
 # Beyond these the line is not analysed: the controller takes 255 characters a line,
-# and the tree builder and the rules recurse once per level of nesting.
-MAX_TOKENS = 20_000
+# and the tree builder and the rules recurse once per level of nesting. The lexer
+# stops at MAX_TOKENS and makes the rest of the line one more token.
 MAX_DEPTH = 200
 
 
@@ -142,7 +143,7 @@ def parse_kinds(kinds: tuple[TokenKind, ...], dialect: Dialect = Dialect.V4) -> 
 
 def _parse(kinds: tuple[TokenKind, ...], dialect: Dialect) -> ParseResult:
     if len(kinds) > MAX_TOKENS:
-        return ParseFailure(0, frozenset(), f"{len(kinds)} tokens on one line")
+        return ParseFailure(0, frozenset(), f"more than {MAX_TOKENS} tokens on one line")
     stream = [Token(kind.value, kind.value, start_pos=index, end_pos=index) for index, kind in enumerate(kinds)]
     try:
         tree = _parser(dialect).parse(stream)  # type: ignore[arg-type]

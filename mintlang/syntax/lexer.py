@@ -171,6 +171,10 @@ def _number_issue(text: str, dialect: Dialect) -> str | None:
     return None
 
 
+# Beyond this many tokens a line is not analysed (the controller takes 255 characters a line):
+# lexing the rest of a megabyte line would cost a hundred times its size in memory.
+MAX_TOKENS = 20_000
+
 # Kinds as module constants: reading an Enum member through its class costs a lookup in the
 # metaclass, and the lexer reads them for every token.
 _WS, _DOT, _NUMBER, _NAME, _COMMENT, _NEWLINE = _K.WS, _K.DOT, _K.NUMBER, _K.NAME, _K.COMMENT, _K.NEWLINE
@@ -195,6 +199,12 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
     mintmt = dialect is Dialect.MINTMT
 
     while position < content_end:
+        if len(kinds) == MAX_TOKENS:  # the rest is one token: a line this long is not analysed (grammar)
+            kinds.append(_INVALID)
+            texts.append(line[position:content_end])
+            starts.append(position)
+            ends.append(content_end)
+            break
         found = match(line, position, content_end)
         group = found.lastgroup  # type: ignore[union-attr]  # the alternatives cover every character
         if group == "ws":
@@ -293,7 +303,9 @@ def _quote_issues(text: str, start: int, typographic: str, plain: str) -> list[D
         return []
     edits = tuple(Edit(Span(start + i, start + i + 1), plain) for i in sorted(set(places)))
     detail = f"typographic quotes: the controller expects plain quotes ({plain})"
-    return [own("W101", Span(start, start + len(text)), detail, fixes=(Fix("Replace with plain quotes", edits),))]
+    return [
+        own("W101", Span(start, start + len(text)), detail, fixes=(Fix("Replace with plain quotes", edits, safe=True),))
+    ]
 
 
 @lru_cache(maxsize=65536)

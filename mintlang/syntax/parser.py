@@ -18,13 +18,13 @@ from __future__ import annotations
 from bisect import bisect_right
 from collections.abc import Mapping
 from dataclasses import dataclass
-from difflib import get_close_matches
 from functools import cached_property
 
 from mintlang.allocation import collector_paused, without_collector
+from mintlang.analysis.suggestions import closest, did_you_mean
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import mint_error
-from mintlang.diagnostics import Diagnostic, Edit, Fix, LineIndex, Span
+from mintlang.diagnostics import Diagnostic, Fix, LineIndex, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.syntax import nodes as n
@@ -297,12 +297,11 @@ def _misspelt_keyword(line: LogicalLine, begin: int, words: Vocabulary) -> Diagn
     if words.dialect is not Dialect.MINTMT or kinds[begin : begin + 2] != [_K.NAME, _K.LPAR]:
         return None
     written = line.texts[begin]
-    close = get_close_matches(written.upper(), words.canonical.values(), n=1, cutoff=0.8)
-    if not close:
+    meant = closest(written.upper(), set(words.canonical.values()))
+    if meant is None:
         return None
     span = line.token_span(begin)
-    fix = Fix(f"Replace with {close[0]}", (Edit(span, close[0]),))
-    return _error(3007, span, f"'{written}' is not a keyword; did you mean {close[0]}?", fixes=(fix,))
+    return _error(3007, span, f"'{written}' is not a keyword; {did_you_mean(meant)}", fixes=(Fix.replace(span, meant),))
 
 
 def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) -> Diagnostic | None:

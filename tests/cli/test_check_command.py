@@ -92,6 +92,13 @@ def test_json_output_is_one_array_of_records_with_one_based_positions(tmp_path: 
             "column": 7,
             "end_line": 3,
             "end_column": 8,
+            "fixes": [  # a DIM beside the file's other DIM, before line 2: a guess, so not safe
+                {
+                    "title": "Declare 'b' with DIM",
+                    "safe": False,
+                    "edits": [{"line": 2, "column": 1, "end_line": 2, "end_column": 1, "text": "DIM b\n"}],
+                }
+            ],
         }
     ]
 
@@ -100,7 +107,7 @@ def test_json_records_have_exactly_the_documented_keys(tmp_path: Path) -> None:
     path = write(tmp_path, "several.mnt", "DIM spare\nSPEED\nPRINT q\n")
     records = json_records(path)
     assert [record["code"] for record in records] == ["W103", "E2005", "E3001"]
-    keys = {"path", "code", "mint_error", "severity", "message", "line", "column", "end_line", "end_column"}
+    keys = {"path", "code", "mint_error", "severity", "message", "line", "column", "end_line", "end_column", "fixes"}
     assert all(set(record) == keys for record in records)
     assert [record["mint_error"] for record in records] == [None, 2005, 3001]
 
@@ -122,9 +129,9 @@ def test_sarif_output_is_sarif_2_1_0(tmp_path: Path) -> None:
     document = json.loads(result.stdout)
     assert document["version"] == "2.1.0"
     (run,) = document["runs"]
-    assert run["tool"]["driver"]["rules"] == [
-        {"id": "E3001", "shortDescription": {"text": "Variable undefined, use DIM"}}
-    ]
+    (rule,) = run["tool"]["driver"]["rules"]
+    assert (rule["id"], rule["shortDescription"]) == ("E3001", {"text": "Variable undefined, use DIM"})
+    assert rule["helpUri"].endswith("/E3001.md")
     (finding,) = run["results"]
     assert finding["ruleId"] == "E3001"
     assert finding["level"] == "error"
@@ -135,7 +142,7 @@ def test_sarif_output_is_sarif_2_1_0(tmp_path: Path) -> None:
 
 def test_sarif_levels_for_warnings_and_hints(tmp_path: Path) -> None:
     path = write(tmp_path, "soft.mnt", "DIM spare\nDIM b\nb = POS[1]\n")
-    document = json.loads(mint_check("--format", "sarif", path).stdout)
+    document = json.loads(mint_check("--format", "sarif", "--select", "W,I", path).stdout)
     assert [(r["ruleId"], r["level"]) for r in document["runs"][0]["results"]] == [
         ("W103", "warning"),
         ("I201", "note"),
@@ -182,13 +189,13 @@ def test_the_controller_changes_the_results(tmp_path: Path) -> None:
     assert mint_check(path).exit_code == 0
     result = mint_check("--controller", "nextmove-bx", "--format", "json", path)
     assert result.exit_code == 1
-    assert [(r["code"], r["line"]) for r in json.loads(result.stdout)] == [("E2", 1)]
+    assert [(r["code"], r["line"]) for r in json.loads(result.stdout)] == [("E0002", 1)]
 
 
 def test_the_controller_changes_the_message_of_speed_12(tmp_path: Path) -> None:
     path = write(tmp_path, "axis.mnt", "SPEED.12 = 1\n")
     (record,) = json_records("--controller", "nextmove-bx", path)
-    assert record["code"] == "E2"
+    assert record["code"] == "E0002"
     assert "NextMove BX" in record["message"]
 
 

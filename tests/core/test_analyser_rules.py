@@ -120,12 +120,12 @@ def test_a_character_whose_upper_case_is_two_keeps_its_own_code() -> None:
     assert mintlang.check("DIM a\na = 'ß'\nPRINT a\n") == []
 
 
-def test_every_use_of_an_undeclared_variable_offers_one_dim_outside_the_loop_that_uses_it() -> None:
-    source = "LOOP\n  total = total + 1\nENDL\n"
+def test_every_line_using_an_undeclared_variable_offers_one_dim_outside_the_loop_that_uses_it() -> None:
+    source = "LOOP\n  total = total + 1\n  PRINT total\nENDL\n"
     diagnostics = [d for d in mintlang.check(source) if d.code == "E3001"]
     assert len(diagnostics) == 2
     fixed = {apply(source, d.fixes[0].edits) for d in diagnostics}
-    assert fixed == {"DIM total\nLOOP\n  total = total + 1\nENDL\n"}
+    assert fixed == {"DIM total\nLOOP\n  total = total + 1\n  PRINT total\nENDL\n"}
 
 
 @pytest.mark.parametrize(
@@ -246,18 +246,18 @@ def test_a_misspelt_keyword_with_a_variable_dot_parameter_is_error_3007() -> Non
 
 def test_a_keyword_the_controller_lacks_is_error_17() -> None:
     # line 9420: DRIVEENABLESWITCH has attributes for MintDrive only; line 18570: #17
-    assert found("DIM a\na = DRIVEENABLESWITCH\n") == [("E17", ERROR, 2)]
+    assert found("DIM a\na = DRIVEENABLESWITCH\n") == [("E0017", ERROR, 2)]
     assert found("DIM a\na = DRIVEENABLESWITCH\n", controller="mintdrive") == []
 
 
 def test_dac_of_the_one_axis_is_read_on_mintdrive() -> None:
     # 000:8778-8793 reads DAC on MintDrive; footnote 7 (5666): no difference between axis and channel keywords
     assert found("DIM d\nd = DAC.0\nPRINT d\n", controller="mintdrive") == []
-    assert [code for code, _, _ in found("DIM d\nd = DAC.1\nPRINT d\n", controller="mintdrive")] == ["E4"]
+    assert [code for code, _, _ in found("DIM d\nd = DAC.1\nPRINT d\n", controller="mintdrive")] == ["E0004"]
 
 
 def test_a_keyword_the_controller_lacks_is_not_also_a_channel_out_of_range() -> None:
-    assert found("DIM d\nd = AUXDAC.0\nPRINT d\n") == [("E17", ERROR, 2)]
+    assert found("DIM d\nd = AUXDAC.0\nPRINT d\n") == [("E0017", ERROR, 2)]
 
 
 def test_release_is_allowed_in_a_configuration_file_only() -> None:
@@ -293,7 +293,7 @@ def test_auto_anywhere_but_first_in_the_configuration_file_is_ignored() -> None:
     assert codes("REM set-up\nAUTO\n") == (["W114"], [])
     assert codes("REM set-up\n", "AUTO\nPRINT 1\n") == ([], ["W114"])
     # NextMove PCI has no AUTO at all: error 17 says so, without W114
-    assert found("AUTO\nPRINT 1\n") == [("E17", ERROR, 1)]
+    assert found("AUTO\nPRINT 1\n") == [("E0017", ERROR, 1)]
 
 
 def test_relay_is_read_and_written_as_its_formats_show() -> None:
@@ -352,8 +352,8 @@ def test_an_axis_listed_twice_is_error_2018() -> None:
 
 def test_an_axis_beyond_the_controller_is_error_2() -> None:
     # line 5613: NextMove BX axes 0 to 7; line 18514: #2 Axis specified out of range
-    assert found("SPEED.12 = 1\n", controller="nextmove-bx") == [("E2", ERROR, 1)]
-    assert found("SPEED.8 = 1\n", controller="nextmove-bx") == [("E2", ERROR, 1)]
+    assert found("SPEED.12 = 1\n", controller="nextmove-bx") == [("E0002", ERROR, 1)]
+    assert found("SPEED.8 = 1\n", controller="nextmove-bx") == [("E0002", ERROR, 1)]
     assert found("SPEED.7 = 1\n", controller="nextmove-bx") == []
     assert found("SPEED.8 = 1\n", controller="nextmove-pci") == []
 
@@ -362,13 +362,13 @@ def test_an_axis_beyond_the_controller_is_error_2() -> None:
     ("source", "controller", "code"),
     [
         # line 5613, the Dot Parameters table; errors 4, 7 and 8 of section 12.2 (line 18522)
-        ("DIM v\nv = ADC.8\n", "nextmove-bx", "E4"),
-        ("DIM v\nv = ADC.4\n", "mintdrive", "E4"),
-        ("DIM v\nv = IN16\n", "nextmove-bx", "E7"),
-        ("DIM v\nv = IN.16\n", "nextmove-bx", "E7"),
-        ("DIM v\nv = IN60\n", "nextmove-pci", "E7"),
-        ("OUT8 = 1\n", "nextmove-bx", "E8"),
-        ("OUT.3 = 1\n", "servonode51", "E8"),
+        ("DIM v\nv = ADC.8\n", "nextmove-bx", "E0004"),
+        ("DIM v\nv = ADC.4\n", "mintdrive", "E0004"),
+        ("DIM v\nv = IN16\n", "nextmove-bx", "E0007"),
+        ("DIM v\nv = IN.16\n", "nextmove-bx", "E0007"),
+        ("DIM v\nv = IN60\n", "nextmove-pci", "E0007"),
+        ("OUT8 = 1\n", "nextmove-bx", "E0008"),
+        ("OUT.3 = 1\n", "servonode51", "E0008"),
     ],
 )
 def test_a_channel_beyond_the_controller_is_an_error(source: str, controller: str, code: str) -> None:
@@ -409,14 +409,14 @@ def test_a_channel_keyword_with_brackets_is_a_syntax_error() -> None:
 
 def test_a_constant_outside_the_keywords_range_is_error_3() -> None:
     # line 534: SCALE = -1 gives "Out of range" (#3, line 18518)
-    assert found("SCALE = -1\n") == [("E3", ERROR, 1)]
+    assert found("SCALE = -1\n") == [("E0003", ERROR, 1)]
     assert found("SCALE = 10\n") == []
 
 
 def test_a_bound_printed_with_less_than_is_left_out() -> None:
     # 000:14910-14913: OUT is 0 ≤ x < 4096 on NextMove PCI and 0 ≤ x < 256 on NextMove BX
-    assert found("OUT = 4096\nOUT = 4095\n") == [("E3", ERROR, 1)]
-    assert found("OUT = 256\nOUT = 255\n", controller="nextmove-bx") == [("E3", ERROR, 1)]
+    assert found("OUT = 4096\nOUT = 4095\n") == [("E0003", ERROR, 1)]
+    assert found("OUT = 256\nOUT = 255\n", controller="nextmove-bx") == [("E0003", ERROR, 1)]
 
 
 def test_scaled_keywords_are_not_range_checked() -> None:
@@ -756,22 +756,34 @@ def test_a_form_feed_does_not_end_a_line_for_its_length() -> None:
 # ------------------------------------------------------------------- hints
 
 
+def hints(source: str) -> list[Diagnostic]:
+    """The hints of a program, which are reported only when asked for."""
+    return list(mintlang.check_application(source, select=("I",)).program)
+
+
+def test_hints_are_reported_only_when_selected() -> None:
+    assert found("DIM b\nb = POS[1]\n") == []
+    assert [d.code for d in hints("DIM b\nb = POS[1]\n")] == ["I201"]
+
+
 def test_one_axis_in_brackets_gets_a_hint_to_use_the_dot() -> None:
     # lines 682-688: b = POS.1 is smaller and faster than b = POS[1]
     source = "DIM b\nb = POS[1]\n"
-    assert found(source) == [("I201", INFO, 2)]
-    (fix,) = only(source, "I201").fixes
+    (hint,) = hints(source)
+    assert (hint.code, hint.severity.value, source[hint.span.start : hint.span.end]) == ("I201", INFO, "[1]")
+    (fix,) = hint.fixes
     fixed = apply(source, fix.edits)
     assert fixed == "DIM b\nb = POS.1\n"
-    assert found(fixed) == []
+    assert hints(fixed) == []
 
 
 def test_the_dot_hint_keeps_a_macro_with_the_delimiter_it_needs() -> None:
     # lines 1508-1516: MOVER..xAxis, since a dot before a macro is ignored
     source = "DEFINE xAxis = 0\nMOVER[xAxis] = 10\n"
-    (fix,) = only(source, "I201").fixes
+    (hint,) = hints(source)
+    (fix,) = hint.fixes
     assert apply(source, fix.edits) == "DEFINE xAxis = 0\nMOVER..xAxis = 10\n"
-    assert "I201" not in [code for code, _, _ in found(apply(source, fix.edits))]
+    assert hints(apply(source, fix.edits)) == []
 
 
 def test_several_axes_in_brackets_get_no_hint() -> None:

@@ -8,21 +8,54 @@ from pathlib import Path
 import pytest
 import pytest_lsp
 from lsprotocol import types
-from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
+from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities, make_test_lsp_client
 
 CORPUS = Path(__file__).parents[1] / "corpus" / "v4" / "valid"
 SERVER = [sys.executable, "-m", "mintlang.lsp"]
+
+
+def editor_client() -> LanguageClient:
+    """pytest-lsp's client, granting and withdrawing the server's registrations as an editor does (it keeps
+    those in force in ``registrations``): a request it has no handler for fails the test."""
+    client = make_test_lsp_client()
+    client.registrations = []
+
+    @client.feature(types.CLIENT_REGISTER_CAPABILITY)
+    def register(params: types.RegistrationParams) -> None:
+        client.registrations.extend(params.registrations)
+
+    @client.feature(types.CLIENT_UNREGISTER_CAPABILITY)
+    def unregister(params: types.UnregistrationParams) -> None:
+        gone = {(old.id, old.method) for old in params.unregisterations}
+        client.registrations[:] = [kept for kept in client.registrations if (kept.id, kept.method) not in gone]
+
+    return client
+
+
+EDITOR = ClientServerConfig(server_command=SERVER, client_factory=editor_client)
 
 
 def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "slow: runs for tens of seconds (CI runs it; -m 'not slow' skips it)")
 
 
-@pytest_lsp.fixture(config=ClientServerConfig(server_command=SERVER))
+@pytest_lsp.fixture(config=EDITOR)
 async def client(lsp_client: LanguageClient):
     params = types.InitializeParams(
         capabilities=client_capabilities("visual-studio-code"),
         initialization_options={"mint": {"debounceMs": 20}},
+    )
+    await lsp_client.initialize_session(params)
+    yield
+    await lsp_client.shutdown_session()
+
+
+@pytest_lsp.fixture(config=EDITOR)
+async def neovim(lsp_client: LanguageClient):
+    """A client with Neovim 0.7's capabilities (diagnostics pushed, no window/showDocument, no file watching),
+    checking every edit at once."""
+    params = types.InitializeParams(
+        capabilities=client_capabilities("neovim@v0.7.0"), initialization_options={"mint": {"debounceMs": 0}}
     )
     await lsp_client.initialize_session(params)
     yield

@@ -95,4 +95,4 @@ async def test_controller_setting_changes_the_checks(client, tmp_path):
     client.workspace_did_change_configuration(
         types.DidChangeConfigurationParams(settings={"mint": {"controller": "mintdrive"}})
     )
-    assert errors(await published(client, uri)) == {"E8"}  # MintDrive: outputs 0 to 8
+    assert errors(await published(client, uri)) == {"E0008"}  # MintDrive: outputs 0 to 8

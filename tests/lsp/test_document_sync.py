@@ -13,10 +13,10 @@ import pytest_lsp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from lsprotocol import types
-from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
+from pytest_lsp import LanguageClient, client_capabilities
 
 from mintlang.lsp.documents import LspWorkspace
-from tests.lsp.conftest import SERVER, document, units, uri_of
+from tests.lsp.conftest import EDITOR, document, units, uri_of
 
 # str.splitlines breaks at these; the LSP does not
 NOT_LINE_ENDS = ("\x0b", "\x0c", "\x1c", "\x1d", "\x1e", "\x85", "\u2028", "\u2029")
@@ -131,7 +131,7 @@ def test_random_edits_give_the_editors_text(text: str, encoding: str, data: st.D
 
 
 @pytest_lsp.fixture(
-    config=ClientServerConfig(server_command=SERVER),
+    config=EDITOR,
     params=[types.PositionEncodingKind.Utf16, types.PositionEncodingKind.Utf8],
 )
 async def editor(lsp_client: LanguageClient, request: pytest.FixtureRequest):

@@ -11,14 +11,18 @@ from lsprotocol import types
 from pygls.exceptions import JsonRpcException
 from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
 
-from tests.lsp.conftest import change, document, open_document, published, uri_of
+from tests.lsp.conftest import change, document, editor_client, open_document, published, uri_of
 from tests.lsp.faulty_server import INJECTED_FAILURE
 
 pytestmark = pytest.mark.asyncio
 ORIGIN = types.Position(line=0, character=0)
 
 
-@pytest_lsp.fixture(config=ClientServerConfig(server_command=[sys.executable, "-m", "tests.lsp.faulty_server"]))
+@pytest_lsp.fixture(
+    config=ClientServerConfig(
+        server_command=[sys.executable, "-m", "tests.lsp.faulty_server"], client_factory=editor_client
+    )
+)
 async def faulty(lsp_client: LanguageClient):
     params = types.InitializeParams(
         capabilities=client_capabilities("visual-studio-code"), initialization_options={"mint": {"debounceMs": 0}}

@@ -17,9 +17,9 @@ import pytest
 import pytest_lsp
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException
-from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
+from pytest_lsp import LanguageClient, client_capabilities
 
-from tests.lsp.conftest import SERVER, document, open_document, uri_of
+from tests.lsp.conftest import EDITOR, document, open_document, uri_of
 
 pytestmark = pytest.mark.asyncio
 HOVER = types.TEXT_DOCUMENT_HOVER
@@ -27,7 +27,7 @@ INVALID_PARAMS, INVALID_REQUEST, SERVER_NOT_INITIALIZED = -32602, -32600, -32002
 MISSING = object()
 
 
-@pytest_lsp.fixture(config=ClientServerConfig(server_command=SERVER))
+@pytest_lsp.fixture(config=EDITOR)
 async def fresh(lsp_client: LanguageClient):
     """A server that has not been initialized yet."""
     yield

@@ -15,11 +15,9 @@ import sys
 from pathlib import Path
 
 import pytest
-import pytest_lsp
 from lsprotocol import types
-from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
 
-from tests.lsp.conftest import SERVER, change, document, open_document, uri_of
+from tests.lsp.conftest import change, document, open_document, uri_of
 
 pytestmark = [
     pytest.mark.asyncio,
@@ -32,17 +30,6 @@ PROGRAM = (
 )
 
 
-@pytest_lsp.fixture(config=ClientServerConfig(server_command=SERVER))
-async def pushed(lsp_client: LanguageClient):
-    """A client that is pushed diagnostics with no debounce: every edit is checked."""
-    params = types.InitializeParams(
-        capabilities=client_capabilities("neovim@v0.7.0"), initialization_options={"mint": {"debounceMs": 0}}
-    )
-    await lsp_client.initialize_session(params)
-    yield
-    await lsp_client.shutdown_session()
-
-
 def resident_kb(pid: int) -> int:
     for line in Path(f"/proc/{pid}/status").read_text(encoding="ascii").splitlines():
         if line.startswith("VmRSS:"):
@@ -50,20 +37,20 @@ def resident_kb(pid: int) -> int:
     raise AssertionError("no VmRSS")
 
 
-async def test_memory_is_flat_over_twenty_thousand_edits(pushed, tmp_path):
+async def test_memory_is_flat_over_twenty_thousand_edits(neovim, tmp_path):
     uri = uri_of(tmp_path / "typing.mnt")
-    await open_document(pushed, uri, PROGRAM)
+    await open_document(neovim, uri, PROGRAM)
     hover = types.HoverParams(text_document=document(uri), position=types.Position(line=0, character=5))
     warm = 0
     for edit in range(1, EDITS + 1):  # type a character into a name and take it out again
         if edit % 2:
-            change(pushed, uri, edit + 1, ((3, 2), (3, 2)), "x")
+            change(neovim, uri, edit + 1, ((3, 2), (3, 2)), "x")
         else:
-            change(pushed, uri, edit + 1, ((3, 2), (3, 3)), "")
+            change(neovim, uri, edit + 1, ((3, 2), (3, 3)), "")
         if edit % 500 == 0:
-            await pushed.text_document_hover_async(hover)  # the server has taken every edit so far
-            pushed.diagnostics.clear()
+            await neovim.text_document_hover_async(hover)  # the server has taken every edit so far
+            neovim.diagnostics.clear()
         if edit == WARM:
-            warm = resident_kb(pushed._server.pid)
-    final = resident_kb(pushed._server.pid)
+            warm = resident_kb(neovim._server.pid)
+    final = resident_kb(neovim._server.pid)
     assert final <= warm * 1.10, f"RSS {warm} kB after {WARM} edits, {final} kB after {EDITS}"

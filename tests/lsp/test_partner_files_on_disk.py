@@ -37,10 +37,3 @@ def test_what_is_no_readable_file_gives_no_text(tmp_path: Path) -> None:
     assert disk.read_text(tmp_path, 1000) is None  # a folder
     assert disk.read_text(tmp_path / "missing.cfg", 1000) is None
     assert disk.read_text(large, 100) is None
-
-
-def test_a_folder_is_listed_again_when_a_file_appears(tmp_path: Path) -> None:
-    os.utime(tmp_path, ns=(1_000_000_000, 1_000_000_000))
-    assert disk.names_in(tmp_path) == ()
-    (tmp_path / "APP.CFG").write_text("", encoding="utf-8")  # a new entry changes the folder's time
-    assert disk.names_in(tmp_path) == ("APP.CFG",)

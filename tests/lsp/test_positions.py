@@ -5,10 +5,10 @@ from __future__ import annotations
 import pytest
 import pytest_lsp
 from lsprotocol import types
-from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
+from pytest_lsp import LanguageClient, client_capabilities
 
 from mintlang.lsp.positions import Positions
-from tests.lsp.conftest import SERVER, document, open_document, uri_of
+from tests.lsp.conftest import EDITOR, document, open_document, uri_of
 
 TEXT = 'REM 😀 é\r\nPRINT "😀" : DIM a\nlast'
 
@@ -43,7 +43,7 @@ async def test_hover_after_an_astral_character(client, tmp_path):
     assert hover.range.start == types.Position(line=1, character=13)
 
 
-@pytest_lsp.fixture(config=ClientServerConfig(server_command=SERVER))
+@pytest_lsp.fixture(config=EDITOR)
 async def utf8_client(lsp_client: LanguageClient):
     capabilities = client_capabilities("visual-studio-code")
     capabilities.general = types.GeneralClientCapabilities(position_encodings=[types.PositionEncodingKind.Utf8])

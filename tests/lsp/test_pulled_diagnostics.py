@@ -7,14 +7,14 @@ import asyncio
 import pytest
 import pytest_lsp
 from lsprotocol import types
-from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
+from pytest_lsp import LanguageClient, client_capabilities
 
-from tests.lsp.conftest import SERVER, document, uri_of
+from tests.lsp.conftest import EDITOR, document, uri_of
 
 pytestmark = pytest.mark.asyncio
 
 
-@pytest_lsp.fixture(config=ClientServerConfig(server_command=SERVER))
+@pytest_lsp.fixture(config=EDITOR)
 async def pulling(lsp_client: LanguageClient):
     capabilities = client_capabilities("visual-studio-code")
     capabilities.text_document.diagnostic = types.DiagnosticClientCapabilities(related_document_support=True)
@@ -86,4 +86,4 @@ async def test_a_new_controller_setting_asks_the_client_to_pull_again(pulling, t
         types.DidChangeConfigurationParams(settings={"mint": {"controller": "mintdrive"}})
     )
     await refreshed(pulling, before)
-    assert await pull(pulling, uri) == {"E8"}  # MintDrive: outputs 0 to 8
+    assert await pull(pulling, uri) == {"E0008"}  # MintDrive: outputs 0 to 8

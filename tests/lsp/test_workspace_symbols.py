@@ -7,15 +7,15 @@ from pathlib import Path
 import pytest
 import pytest_lsp
 from lsprotocol import types
-from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
+from pytest_lsp import LanguageClient, client_capabilities
 
-from tests.lsp.conftest import SERVER, uri_of
+from tests.lsp.conftest import EDITOR, uri_of
 
 pytestmark = pytest.mark.asyncio
 WORKSPACE = Path(__file__).parent / "workspace"
 
 
-@pytest_lsp.fixture(config=ClientServerConfig(server_command=SERVER))
+@pytest_lsp.fixture(config=EDITOR)
 async def folder_client(lsp_client: LanguageClient):
     folder = types.WorkspaceFolder(uri=uri_of(WORKSPACE), name="machine")
     params = types.InitializeParams(

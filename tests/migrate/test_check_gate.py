@@ -55,7 +55,7 @@ def test_something_not_done_outranks_a_failed_gate(tmp_path: Path) -> None:
 def test_help_documents_the_exit_statuses() -> None:
     text = " ".join(CliRunner().invoke(command, ["--help"]).output.split())
     assert "0 done: nothing left to rewrite (--check)" in text
-    assert (
-        "1 the gate failed: --check found something to rewrite, or manual items are left and --fail-on manual" in text
-    )
+    assert "1 the gate failed: --check found something to rewrite, --verify found a divergence, or manual items" in text
+    assert "left and --fail-on manual was given" in text
     assert "2 something was not done:" in text and "a rule that failed on a file" in text
+    assert "a --verify comparison that could not cover the run (incomplete)" in text

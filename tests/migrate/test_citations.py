@@ -15,10 +15,11 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from mintlang.migrate import sections
-from mintlang.migrate.citations import cite, section
+from mintlang.manual import sections
+from mintlang.manual.headings import tables
+from mintlang.manual.places import section
+from mintlang.migrate.citations import cite
 from mintlang.migrate.cli import migrate as command
-from mintlang.migrate.headings import tables
 from tests.migrate.golden import GOLDEN
 
 LINE_CITATION = re.compile(r"\bv[34]:\d")

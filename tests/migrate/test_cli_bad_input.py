@@ -12,8 +12,9 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner, Result
 
-from mintlang.migrate import atomic, migrate
+from mintlang import atomic
 from mintlang.migrate import cli as migrate_cli
+from mintlang.migrate import migrate
 from mintlang.migrate.context import Context
 
 V3 = "DIM a\nPRINT a\nEND\n"

@@ -11,12 +11,14 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner, Result
 
+import mintlang
 from mintlang.diagnostics import Span
 from mintlang.migrate import MigrationFailed, migrate
 from mintlang.migrate.cli import migrate as command
 from mintlang.migrate.context import Context, LineTags
 from mintlang.migrate.rules import RULES, Replace, Rule
 from mintlang.semantic.units import Unit
+from mintlang.syntax.parser import Document
 
 V3 = "DIM a\nPRINT a\nEND\n"
 V4 = "AXES[0,1,2]\nDIM a\nPRINT a\nEND\n"
@@ -116,4 +118,25 @@ def test_a_bug_outside_the_rules_is_isolated_too(tmp_path: Path, monkeypatch: py
     result = run("--write", tmp_path)
     assert result.exit_code == 2
     assert "a.mnt: failed: reading it as Mint v3 raised RecursionError" in result.stderr
+    assert (tmp_path / "b.mnt").read_text() == V4
+
+
+def test_a_model_that_cannot_be_built_is_a_reading_failure_not_the_rule_that_asked(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The semantic model is built when a rule first asks for it; a failure there is the reader's."""
+    build_model = mintlang.build_model
+
+    def failing(program: Document, *rest: object) -> object:
+        if TRIGGER in program.source:
+            raise RecursionError("maximum recursion depth exceeded")
+        return build_model(program, *rest)
+
+    monkeypatch.setattr(mintlang, "build_model", failing)
+    (tmp_path / "a.mnt").write_text(TRIGGER + "DIM b\n" + V3)  # a program whose migration needs the model
+    (tmp_path / "b.mnt").write_text(V3)
+    result = run("--write", tmp_path)
+    assert result.exit_code == 2
+    assert "a.mnt: failed: reading it as Mint v3 raised RecursionError" in result.stderr
+    assert "rule " not in result.stderr
     assert (tmp_path / "b.mnt").read_text() == V4

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import pytest
 
+from mintlang.migrate import migrate
 from tests.migrate.helpers import flagged, one_rule
 
 DELAYED = "v3 ran this when the previous move ended (GO waited); v4 GO does not wait: use PAUSE or MOVEBUFFERFREE"
@@ -78,6 +79,13 @@ def test_changed_units() -> None:
         "MintDrive TORQUE 100 is nominal current (v3 100 was peak)"
     ]
     assert flagged("X-UNITS", "TORQUE = 50\n") == []
+
+
+def test_a_tuning_block_keeps_one_item_when_other_items_go_between_its_lines() -> None:
+    # 0.1, 2.3 and 2.7 are no multiples of 1/256: X-NUM puts an item above each gain line
+    result = migrate("KPROP = 0.1\nKVEL = 2.3\nKVELFF = 2.7\n")
+    assert [item.rule for item in result.manual] == ["X-NUM", "X-UNITS", "X-NUM", "X-NUM"]
+    assert len(flagged("X-UNITS", "KPROP = 1\nREM velocity loop\nKVEL = 2\n")) == 2  # the user's line splits it
 
 
 @pytest.mark.parametrize("rule", ["X-GO-TIMING", "X-NUM", "X-PRINT", "X-UNITS"])

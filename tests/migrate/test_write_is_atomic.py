@@ -21,12 +21,12 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner, Result
 
-from mintlang.migrate import atomic
+from mintlang import atomic
 from mintlang.migrate.cli import migrate as command
 
 V3 = "DIM a\nPRINT a\nEND\n"
 V4 = "AXES[0,1,2]\nDIM a\nPRINT a\nEND\n"
-LEFTOVER = ".a.mnt.k2x9_q1z.mint-migrate.tmp"
+LEFTOVER = ".a.mnt.k2x9_q1z.mint.tmp"
 
 
 def run(*arguments: object) -> Result:
@@ -102,7 +102,7 @@ def test_a_temporary_file_in_use_by_another_run_is_left_alone(tmp_path: Path) ->
 
 def test_only_files_named_as_mint_migrate_temporaries_are_touched(tmp_path: Path) -> None:
     path = program(tmp_path)
-    kept = [tmp_path / ".a.mnt.swp", tmp_path / "notes.tmp", tmp_path / ".x.mint-migrate.tmp.bak"]
+    kept = [tmp_path / ".a.mnt.swp", tmp_path / "notes.tmp", tmp_path / ".x.mint.tmp.bak"]
     for other in kept:
         other.write_text("mine")
     assert run("--write", path).exit_code == 0

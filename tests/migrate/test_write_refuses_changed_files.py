@@ -10,7 +10,8 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner, Result
 
-from mintlang.migrate import applications, atomic
+from mintlang import atomic
+from mintlang.migrate import applications
 from mintlang.migrate.cli import migrate as command
 from mintlang.migrate.model import MigrationResult
 

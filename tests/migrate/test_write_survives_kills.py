@@ -20,8 +20,8 @@ from pathlib import Path
 
 import pytest
 
+from mintlang.atomic import SUFFIX
 from mintlang.migrate import migrate
-from mintlang.migrate.atomic import SUFFIX
 
 OLD = ("HMSPEED = 10\nREM " + "x" * (8 * 1024 * 1024) + "\n").encode()
 NEW = migrate(OLD.decode(), controller="mintdrive").text.encode()

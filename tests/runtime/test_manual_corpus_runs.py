@@ -14,6 +14,7 @@ from pathlib import Path
 
 import pytest
 
+from mintlang.codes import error_code
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.run import run_source
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
@@ -28,7 +29,7 @@ def test_a_run_time_error_of_the_manual_is_raised_on_its_line(case: CorpusCase) 
     ((code, line),) = case.expected
     result = run_source(case.source, config=ENABLE_DRIVES, controller=case.controller, limits=Limits(until_ms=1000))
     assert result.stop.reason is StopReason.ERROR, result.stop
-    assert (f"E{int(result.err)}", int(result.erl)) == (code, line), result.stop.message
+    assert (error_code(int(result.err)), int(result.erl)) == (code, line), result.stop.message
 
 
 NOT_SIMULATED = re.compile(r"^(\w+) \(.*\) is not simulated by mint-run")

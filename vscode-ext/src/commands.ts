@@ -1,14 +1,16 @@
-// "Mint: Migrate file to v4" and "Mint: Run in simulator": each runs a mintlang command-line
-// tool on the file in a child process and shows what it prints in the Mint output channel.
+// "Mint: Migrate file to v4" and "Mint: Replace v3 keywords" apply the language server's source
+// actions (see ./migration); "Mint: Run in simulator" runs mint-run on the program in a child
+// process and shows what it prints in the Mint output channel.
 import { spawn } from "node:child_process";
 import * as path from "node:path";
 import * as vscode from "vscode";
 
 import { currentHost, currentSettings, listFolder } from "./host";
 import { LANGUAGE_ID } from "./language";
+import { planMigration, planReplacement, type Plan } from "./migration";
 import { showError } from "./notify";
-import { applicationOf, configurationOf, type Application } from "./pairing";
-import { displayCommand, fileCommand, isMissingModule, MODULES, outcomeOf, type Command, type FileTool } from "./resolve";
+import { configurationOf } from "./pairing";
+import { displayCommand, fileCommand, isMissingModule, MODULES, type Command } from "./resolve";
 
 interface Outcome {
   readonly code: number | null;
@@ -25,24 +27,7 @@ async function targetDocument(uri: unknown): Promise<vscode.TextDocument | undef
   return document?.languageId === LANGUAGE_ID ? document : undefined;
 }
 
-const filesOf = (application: Application): string[] =>
-  application.config === undefined ? [application.program] : [application.program, application.config];
-
-/**
- * What `tool` acts on when invoked on `file`, and how messages name it. mint-migrate rewrites a
- * program and its configuration file together, whichever of the two it is invoked on: the
- * configuration declares variables of the program, so neither migrates right without the other.
- * A simulated run is of a program, which reads its configuration file.
- */
-function targetOf(tool: FileTool, file: string, pattern: string): { application: Application; label: string } {
-  if (tool === "mint-migrate") {
-    const application = applicationOf(file, listFolder, pattern);
-    return { application, label: filesOf(application).map((name) => path.basename(name)).join(" and ") };
-  }
-  return { application: { program: file, config: configurationOf(file, listFolder, pattern) }, label: path.basename(file) };
-}
-
-/** Saves those of `files` open with unsaved changes: the tools read them from disk, and mint-migrate rewrites them there. */
+/** Saves those of `files` open with unsaved changes: mint-run reads the program and its configuration from disk. */
 async function saveOpen(files: readonly string[]): Promise<boolean> {
   const unsaved = vscode.workspace.textDocuments.filter(
     (document) => document.uri.scheme === "file" && document.isDirty && files.includes(document.uri.fsPath),
@@ -74,19 +59,22 @@ function run(command: Command, cwd: string, output: vscode.OutputChannel, token:
   });
 }
 
-async function runTool(tool: FileTool, title: string, uri: unknown, output: vscode.OutputChannel): Promise<void> {
+async function runInSimulator(uri: unknown, output: vscode.OutputChannel): Promise<void> {
+  const tool = "mint-run";
+  const title = "Run in simulator";
   const document = await targetDocument(uri);
   if (document === undefined || document.uri.scheme !== "file") {
     void vscode.window.showErrorMessage(`${title}: open a Mint (.mnt) file saved on disk first.`);
     return;
   }
   const settings = currentSettings();
-  const { application, label } = targetOf(tool, document.uri.fsPath, settings.configPairing);
-  if (!(await saveOpen(filesOf(application)))) {
+  const file = document.uri.fsPath;
+  const config = configurationOf(file, listFolder, settings.configPairing);
+  const label = path.basename(file);
+  if (!(await saveOpen(config === undefined ? [file] : [file, config]))) {
     return;
   }
-  const file = application.program;
-  const resolution = fileCommand(tool, file, settings, currentHost(), application.config);
+  const resolution = fileCommand(tool, file, settings, currentHost(), config);
   if (!resolution.ok) {
     void showError(`${title}: ${resolution.message}`, output);
     return;
@@ -107,28 +95,66 @@ async function runTool(tool: FileTool, title: string, uri: unknown, output: vsco
   if (outcome.cancelled) {
     return;
   }
-  const meaning = outcomeOf(tool, outcome.code, outcome.stderr);
-  // Python exits 1 when the module is missing, so that is told apart before a migration's exit 1.
-  if (meaning !== "done" && command.source === "mint.pythonPath" && isMissingModule(outcome.stderr, tool)) {
+  // Python exits 1 when the module is missing, as mint-run does when the program stopped on an error.
+  if (outcome.code !== 0 && command.source === "mint.pythonPath" && isMissingModule(outcome.stderr, tool)) {
     void showError(`${title}: ${tool} was not found: ${command.command} has no module ${MODULES[tool]}.`, output);
-  } else if (meaning === "done") {
+  } else if (outcome.code === 0) {
     void vscode.window.showInformationMessage(`${title}: ${label} done.`);
-  } else if (meaning === "review") {
-    void vscode.window.showWarningMessage(
-      `${title}: ${label} migrated; some statements need you: see the REM MIGRATE lines and the Mint output.`,
-    );
   } else {
     void showError(`${title}: ${tool} failed (exit ${outcome.code ?? "killed"}); see the Mint output.`, output);
   }
 }
 
+/** The source actions of `kind` the language server offers for the whole of `document`; resolved if asked. */
+async function sourceActions(document: vscode.TextDocument, kind: string, resolve: boolean): Promise<vscode.CodeAction[]> {
+  const whole = new vscode.Range(0, 0, document.lineCount, 0);
+  const found = await vscode.commands.executeCommand<vscode.CodeAction[] | undefined>(
+    "vscode.executeCodeActionProvider",
+    document.uri,
+    whole,
+    kind,
+    resolve ? 1 : 0,
+  );
+  return found ?? [];
+}
+
+/** Carries out `plan` for `document`: the chosen action's edit, asked for again resolved, applied as a refactoring. */
+async function carryOut(document: vscode.TextDocument, plan: Plan<vscode.CodeAction>, title: string): Promise<void> {
+  if (plan.step === "none") {
+    void vscode.window.showInformationMessage(`${title}: ${plan.message}`);
+    return;
+  }
+  if (plan.step === "ask" && (await vscode.window.showWarningMessage(plan.question, { modal: true }, plan.answer)) !== plan.answer) {
+    return;
+  }
+  const kind = plan.action.kind?.value ?? "";
+  const [resolved] = await sourceActions(document, kind, true);
+  if (resolved?.edit === undefined) {
+    void vscode.window.showErrorMessage(`${title}: the language server gave no edit (was the file changed meanwhile?).`);
+    return;
+  }
+  await vscode.workspace.applyEdit(resolved.edit, { isRefactoring: true });
+}
+
+type Planner = (actions: readonly vscode.CodeAction[], kindOf: (action: vscode.CodeAction) => string | undefined, file: string) => Plan<vscode.CodeAction>;
+
+async function sourceAction(planner: Planner, title: string, uri: unknown): Promise<void> {
+  const document = await targetDocument(uri);
+  if (document === undefined) {
+    void vscode.window.showErrorMessage(`${title}: open a Mint file first.`);
+    return;
+  }
+  const actions = await sourceActions(document, vscode.CodeActionKind.Source.value, false);
+  const plan = planner(actions, (action) => action.kind?.value, path.basename(document.uri.path));
+  await carryOut(document, plan, title);
+}
+
 export function registerCommands(output: vscode.OutputChannel): vscode.Disposable[] {
   return [
-    vscode.commands.registerCommand("mint.migrateFile", (uri: unknown) =>
-      runTool("mint-migrate", "Migrate file to v4", uri, output),
+    vscode.commands.registerCommand("mint.migrateFile", (uri: unknown) => sourceAction(planMigration, "Migrate file to v4", uri)),
+    vscode.commands.registerCommand("mint.replaceV3Keywords", (uri: unknown) =>
+      sourceAction(planReplacement, "Replace v3 keywords", uri),
     ),
-    vscode.commands.registerCommand("mint.runInSimulator", (uri: unknown) =>
-      runTool("mint-run", "Run in simulator", uri, output),
-    ),
+    vscode.commands.registerCommand("mint.runInSimulator", (uri: unknown) => runInSimulator(uri, output)),
   ];
 }

@@ -88,27 +88,3 @@ export function configurationOf(
   const wanted = `${parts.prefix}${path.basename(programFile, extension)}${parts.suffix}`;
   return isProgram(wanted) ? undefined : sibling(path.dirname(programFile), wanted, listFolder);
 }
-
-/**
- * A program and its configuration file: one application, as the tools and the server call it.
- * A file that is neither a program nor a paired configuration file stands alone as `program`.
- */
-export interface Application {
-  readonly program: string;
-  readonly config: string | undefined;
-}
-
-/**
- * The application `file` belongs to, found from either of its files: a program with its
- * configuration file if it has one, a paired configuration file with its program.
- */
-export function applicationOf(
-  file: string,
-  listFolder: (folder: string) => readonly string[],
-  pattern: string = DEFAULT_PAIRING,
-): Application {
-  const program = programOf(file, listFolder, pattern);
-  return program === undefined
-    ? { program: file, config: configurationOf(file, listFolder, pattern) }
-    : { program, config: file };
-}

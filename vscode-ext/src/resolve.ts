@@ -5,24 +5,18 @@ import * as path from "node:path";
 
 import type { Controller, MintSettings } from "./settings";
 
-export type Tool = "mint-lsp" | "mint-migrate" | "mint-run";
+export type Tool = "mint-lsp" | "mint-run";
 export type FileTool = Exclude<Tool, "mint-lsp">;
 
 /** The Python module behind each tool: what Python names when mintlang is not installed. */
 export const MODULES: Readonly<Record<Tool, string>> = {
   "mint-lsp": "mintlang.lsp",
-  "mint-migrate": "mintlang.migrate",
   "mint-run": "mintlang.runtime",
 };
 
-/**
- * How `mint.pythonPath` runs each tool. mintlang.migrate has no __main__ module, so
- * `python -m mintlang.migrate` fails; it is started through its console script's entry point
- * (pyproject.toml: mint-migrate = "mintlang.migrate.cli:main"), named as the script would be.
- */
+/** How `mint.pythonPath` runs each tool. */
 export const PYTHON_ARGUMENTS: Readonly<Record<Tool, readonly string[]>> = {
   "mint-lsp": ["-m", "mintlang.lsp"],
-  "mint-migrate": ["-c", "import sys; sys.argv[0] = 'mint-migrate'; from mintlang.migrate.cli import main; main()"],
   "mint-run": ["-m", "mintlang.runtime"],
 };
 
@@ -137,33 +131,13 @@ export function resolveTool(tool: Tool, settings: ToolSettings, host: Host): Res
 
 /**
  * The arguments a command-line tool takes for one file and, when it has one, the program's
- * configuration file (`config`); both tools target the configured controller. The configuration
- * goes with the program as in the language server: its variables are the program's, so
- * mint-migrate rewrites the two files together (the server's "Migrate this file to Mint v4"), and
- * a simulated run starts from it (the server's "Run in simulator" lens).
+ * configuration file (`config`), for the configured controller. A simulated run starts from the
+ * configuration file, as the server's "Run in simulator" lens does, and is bounded in real time,
+ * so a program that never ends cannot hang the editor.
  */
-export function toolArguments(tool: FileTool, file: string, controller: Controller, config?: string): string[] {
+export function toolArguments(_tool: FileTool, file: string, controller: Controller, config?: string): string[] {
   const configuration = config === undefined ? [] : ["--config", config];
-  if (tool === "mint-migrate") {
-    return ["--write", ...configuration, "--controller", controller, file];
-  }
-  // A simulated run is bounded in real time, so a program that never ends cannot hang the editor.
   return [...configuration, "--controller", controller, "--max-wall-s", "30", file];
-}
-
-/**
- * What a tool's exit status means to the user. mint-migrate --write exits 1 when it wrote the files
- * but left statements only a person can port (each marked by a REM MIGRATE line): the migration
- * happened, so that is a call for review, not a failure. Python also exits 1 when a tool crashes,
- * so a traceback on stderr is a failure whatever the status. mint-run exits 1 when the program
- * stopped on an error or an expectation failed, which the run's own output explains.
- */
-export function outcomeOf(tool: FileTool, code: number | null, stderr = ""): "done" | "review" | "failed" {
-  if (code === 0) {
-    return "done";
-  }
-  const crashed = stderr.includes("Traceback (most recent call last)");
-  return tool === "mint-migrate" && code === 1 && !crashed ? "review" : "failed";
 }
 
 /** The command line that runs `tool` on `file` (with its configuration file `config`), or why there is none. */

@@ -11,10 +11,10 @@ whose text uses another macro fails with a syntax error (3.5).
 from __future__ import annotations
 
 from collections.abc import Iterator
-from difflib import get_close_matches
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.rules.v3_keywords import successor
+from mintlang.analysis.suggestions import closest, did_you_mean
 from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.keyworddb import database
@@ -56,25 +56,38 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
         if not symbol.definitions and not was_keyword:
             first = min(undeclared, key=lambda use: (use.unit is Unit.PROGRAM, use.span.start))
             declare[first.unit] = (_add_dim(model, symbol, first.unit, first.span),)
-        for occurrence in undeclared:
+        for occurrence, same_line in _by_line(model, undeclared):
             fixes = declare.get(occurrence.unit, ())
             detail = f"'{occurrence.spelling}' is not declared"
-            as_written = _written_at(model, occurrence.unit, occurrence.span) == occurrence.spelling  # not a macro's
+            written = [use.span for use in same_line if _written_at(model, use.unit, use.span) == use.spelling]
             if was is not None:
                 detail += f": it is {was.detail}"
-                fixes = (*was.fixes(occurrence.span), *fixes) if as_written else fixes
+                fixes = (_replace_each(written, was.rename), *fixes) if was.rename and written else fixes
             elif old is not None:
                 v4 = ", ".join(old.v4_names) if old.v4_names else "nothing"
                 what = "a keyword" if was_keyword else f"the abbreviation of {old.name}"
                 detail += f" (in Mint v3 it was {what}; v4: {v4}, see mint-migrate)"
             elif symbol.definitions:
                 detail += " (its DIM comes later: declarations must come first)"
-            elif close := get_close_matches(occurrence.spelling, declared, n=1, cutoff=0.8):
-                detail += f"; did you mean '{close[0]}'?"
-                if as_written:
-                    fixes = (Fix.replace(occurrence.span, close[0]), *fixes)
+            elif (close := closest(occurrence.spelling, declared)) is not None:
+                detail += f"; {did_you_mean(close)}"
+                fixes = (_replace_each(written, close), *fixes) if written else fixes
             error = mint_error(3001, occurrence.span, detail, fixes=fixes, from_v3=was is not None or was_keyword)
             yield Finding(occurrence.unit, error)
+
+
+def _by_line(model: SemanticModel, uses: list[Occurrence]) -> Iterator[tuple[Occurrence, list[Occurrence]]]:
+    """The first use of a name on each line, with all its uses there: one diagnostic says it for the line."""
+    lines: dict[tuple[Unit, int], list[Occurrence]] = {}
+    for use in sorted(uses, key=lambda use: use.span.start):
+        lines.setdefault((use.unit, model.document(use.unit).line_index.position(use.span.start).line), []).append(use)
+    for same_line in lines.values():
+        yield same_line[0], same_line
+
+
+def _replace_each(spans: list[Span], text: str) -> Fix:
+    """Write ``text`` for the name at every one of ``spans`` (its uses on one line, as written there)."""
+    return Fix(f"Replace with {text}", tuple(Edit(span, text) for span in spans))
 
 
 def _macro_left_in_macro(model: SemanticModel, name: str, occurrence: Occurrence) -> bool:
@@ -167,9 +180,9 @@ def _label_fixes(
     at the end of the file: a subroutine that returns for a GOSUB, a bare label for a GOTO."""
     fixes: list[Fix] = []
     by_case = {name.upper(): name for name in defined}
-    close = get_close_matches(reference.spelling.upper(), list(by_case), n=1, cutoff=0.7)
-    if close and _written_at(model, unit, reference.span) == reference.spelling:
-        fixes.append(Fix(f"Change to #{by_case[close[0]]}", (Edit(reference.span, by_case[close[0]]),)))
+    close = closest(reference.spelling.upper(), by_case, likeness=0.7)
+    if close is not None and _written_at(model, unit, reference.span) == reference.spelling:
+        fixes.append(Fix(f"Change to #{by_case[close]}", (Edit(reference.span, by_case[close]),)))
     text = model.document(unit).source
     newline = "\r\n" if "\r\n" in text else "\n"
     body = f"{newline}RETURN" if word == "GOSUB" else ""

@@ -30,6 +30,6 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             value = item.text if isinstance(item, n.Number) else item.name.text
             # A macro needs a delimiter before it, or the dot is ignored: MOVER..xAxis (3.5)
             dotted = f".{written}" if written.upper() == value.upper() else f"..{written}"
-            fix = Fix(f"Write {dotted}", (Edit(selector.span, dotted),))
+            fix = Fix(f"Write {dotted}", (Edit(selector.span, dotted),), safe=True)
             detail = f"{use.keyword.spelling}{dotted} is faster and smaller than {use.keyword.spelling}[{written}]"
             yield Finding(use.unit, own("I201", selector.span, detail, fixes=(fix,)))

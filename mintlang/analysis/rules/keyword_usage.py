@@ -17,8 +17,10 @@ from collections.abc import Iterator
 from functools import cache
 
 from mintlang.analysis.findings import Finding, mint_error
+from mintlang.analysis.suggestions import closest, did_you_mean
 from mintlang.analysis.traversal import LineScope, Use
 from mintlang.controllers import profile
+from mintlang.diagnostics import Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, KeywordKind
@@ -43,12 +45,43 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         verdict = _verdict(ref.keyword, ref.spelling.upper(), controller, use.use, has_arguments, dialect=scope.dialect)
         if verdict is not None:
             code, detail = verdict
-            yield Finding(unit, mint_error(code, ref.spelling_span, detail))
+            fixes = _spelling_fix(ref.spelling.upper(), controller, ref.spelling_span) if code == 3007 else ()
+            yield Finding(unit, mint_error(code, ref.spelling_span, detail, fixes=fixes))
     db = database()
     for statement in scope.facts.statements:
         if isinstance(statement, n.BareName) and db.rename_of(statement.name.text) is None:
-            detail = f"'{statement.name.text}' is not a keyword (check the spelling and the abbreviation)"
-            yield Finding(unit, mint_error(3007, statement.span, detail))
+            word = statement.name.text
+            fixes = _spelling_fix(word, controller, statement.name.span)
+            yield Finding(unit, mint_error(3007, statement.span, _not_a_keyword(word, controller), fixes=fixes))
+
+
+@cache
+def _keywords_of(controller: Controller) -> tuple[str, ...]:
+    """The keywords ``controller`` knows, by their full names."""
+    return tuple(
+        name
+        for name, keyword in database().keywords.items()
+        if not keyword.controllers or controller in keyword.controllers
+    )
+
+
+@cache
+def _keyword_like(word: str, controller: Controller) -> str | None:
+    """The keyword of ``controller`` that ``word`` (upper case) is most likely a misspelling of."""
+    return closest(word, _keywords_of(controller))
+
+
+def _not_a_keyword(word: str, controller: Controller) -> str:
+    """Error 3007's detail, with the keyword ``word`` resembles if one does."""
+    meant = _keyword_like(word.upper(), controller)
+    hint = did_you_mean(meant) if meant is not None else "check the spelling and the abbreviation"
+    return f"'{word}' is not a keyword ({hint})"
+
+
+def _spelling_fix(word: str, controller: Controller, span: Span) -> tuple[Fix, ...]:
+    """Write the keyword ``word`` resembles, if one does."""
+    meant = _keyword_like(word.upper(), controller)
+    return (Fix.replace(span, meant),) if meant is not None else ()
 
 
 @cache
@@ -61,7 +94,7 @@ def _verdict(
     if keyword is None:
         if db.rename_of(spelling) is not None:
             return None  # an old v3 keyword: the v3-keyword rule names its replacement
-        return 3007, f"'{spelling}' is not a keyword (check the spelling and the abbreviation)"
+        return 3007, _not_a_keyword(spelling, controller)
     if keyword.kind is KeywordKind.COMMAND_LINE:
         return 2006, f"{keyword.name} is an editor command: it works only at the command line, not in a program"
     if keyword.controllers and controller not in keyword.controllers:

@@ -92,6 +92,6 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         event = event_of(label.text, Dialect.V3)
         if event is not None and event.kind is EventKind.FASTPOS:
             new = f"#FASTIN{event.number if event.number is not None else ''}"
-            fix = Fix(f"Rename to {new}", (Edit(label.span, new),))
+            fix = Fix(f"Rename to {new}", (Edit(label.span, new),), safe=True)  # v4 never calls the v3 name
             detail = f"#{label.text} is {_V3}: v4 uses {new}"
             yield Finding(scope.unit, own("W102", label.span, detail, fixes=(fix,), from_v3=True))

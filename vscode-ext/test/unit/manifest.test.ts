@@ -97,12 +97,18 @@ test("mint.configPairing accepts a file name with <name> in the program's folder
 
 test("the commands are titled 'Mint: …' and offered only where they apply", () => {
   const titles = Object.fromEntries(manifest.contributes.commands.map((c) => [c.command, `${c.category}: ${c.title}`]));
-  assert.deepEqual(titles, { "mint.migrateFile": "Mint: Migrate file to v4", "mint.runInSimulator": "Mint: Run in simulator" });
+  assert.deepEqual(titles, {
+    "mint.migrateFile": "Mint: Migrate file to v4",
+    "mint.replaceV3Keywords": "Mint: Replace v3 keywords",
+    "mint.runInSimulator": "Mint: Run in simulator",
+  });
   const menus = manifest.contributes.menus;
   const when = (menu: string, command: string) => menus[menu]?.find((item) => item.command === command)?.when ?? "";
   // By language rather than a case-sensitive resourceExtname == .mnt: DOS-era programs are often CONVEYOR.MNT.
-  assert.equal(when("explorer/context", "mint.migrateFile"), "resourceLangId == mint-motion");
-  assert.equal(when("commandPalette", "mint.migrateFile"), "editorLangId == mint-motion");
+  for (const command of ["mint.migrateFile", "mint.replaceV3Keywords"]) {
+    assert.equal(when("explorer/context", command), "resourceLangId == mint-motion", command);
+    assert.equal(when("commandPalette", command), "editorLangId == mint-motion", command);
+  }
   // A configuration file opened as Mint is not a program to run.
   for (const [menu, key] of [["explorer/context", "resourceLangId"], ["editor/title/run", "resourceLangId"], ["commandPalette", "editorLangId"]]) {
     assert.equal(when(menu ?? "", "mint.runInSimulator"), `${key} == mint-motion && resourceExtname =~ /^\\.mnt$/i`, menu);

@@ -1,7 +1,7 @@
 import assert from "node:assert/strict";
 import { test } from "node:test";
 
-import { applicationOf, configurationOf, isPairedConfig, programOf } from "../../src/pairing";
+import { configurationOf, isPairedConfig, programOf } from "../../src/pairing";
 
 const folder = (names: readonly string[]) => (dir: string) => {
   assert.equal(dir, "/project");
@@ -78,19 +78,4 @@ test("a configuration file's program is found beside it, as it is listed", () =>
   const unread = () => assert.fail("the folder must not be listed");
   assert.equal(programOf("/project/conveyor.mnt", unread), undefined);
   assert.equal(programOf("/project/conveyor.cfg", unread, ""), undefined);
-});
-
-test("an application is found from either of its files; other files stand alone", () => {
-  const names = folder(["conveyor.mnt", "conveyor.cfg", "lone.mnt", "orphan.cfg"]);
-  const pair = { program: "/project/conveyor.mnt", config: "/project/conveyor.cfg" };
-  assert.deepEqual(applicationOf("/project/conveyor.mnt", names), pair);
-  assert.deepEqual(applicationOf("/project/conveyor.cfg", names), pair);
-  assert.deepEqual(applicationOf("/project/lone.mnt", names), { program: "/project/lone.mnt", config: undefined });
-  assert.deepEqual(applicationOf("/project/orphan.cfg", names), { program: "/project/orphan.cfg", config: undefined });
-  // mint.configPairing decides, in both directions; empty, nothing is paired.
-  assert.deepEqual(applicationOf("/project/conveyor.cfg", names, "setup_<name>.cfg"), {
-    program: "/project/conveyor.cfg",
-    config: undefined,
-  });
-  assert.deepEqual(applicationOf("/project/conveyor.mnt", names, ""), { program: "/project/conveyor.mnt", config: undefined });
 });

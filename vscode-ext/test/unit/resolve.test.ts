@@ -4,12 +4,10 @@ import { existsSync } from "node:fs";
 import * as path from "node:path";
 import { test } from "node:test";
 
-import { applicationOf } from "../../src/pairing";
 import {
   displayCommand,
   fileCommand,
   isMissingModule,
-  outcomeOf,
   PYTHON_ARGUMENTS,
   resolveTool,
   toolArguments,
@@ -95,7 +93,7 @@ test("a bare mint.pythonPath is looked up on PATH", () => {
 });
 
 test("a mint.pythonPath that does not exist is an error", () => {
-  const resolution = resolveTool("mint-migrate", { ...NONE, pythonPath: "/nowhere/python" }, posix([]));
+  const resolution = resolveTool("mint-run", { ...NONE, pythonPath: "/nowhere/python" }, posix([]));
   assert.equal(resolution.ok, false);
   assert.match(resolution.ok ? "" : resolution.message, /mint\.pythonPath/);
 });
@@ -111,9 +109,12 @@ test("nothing found: the message names the tool and where it looked", () => {
 
 test("the tools are found beside mint.serverPath, else by the usual search", () => {
   const settings = { ...NONE, serverPath: "/opt/mint/bin/mint-lsp" };
-  const host = posix(["/opt/mint/bin/mint-lsp", "/opt/mint/bin/mint-migrate", "/usr/bin/mint-run"]);
-  assert.deepEqual(commandOf(resolveTool("mint-migrate", settings, host)), ["/opt/mint/bin/mint-migrate"]);
-  assert.deepEqual(commandOf(resolveTool("mint-run", settings, host)), ["/usr/bin/mint-run"]);
+  assert.deepEqual(commandOf(resolveTool("mint-run", settings, posix(["/opt/mint/bin/mint-lsp", "/opt/mint/bin/mint-run"]))), [
+    "/opt/mint/bin/mint-run",
+  ]);
+  assert.deepEqual(commandOf(resolveTool("mint-run", settings, posix(["/opt/mint/bin/mint-lsp", "/usr/bin/mint-run"]))), [
+    "/usr/bin/mint-run",
+  ]);
 });
 
 test("Windows: Scripts folder, .exe names, ; in PATH", () => {
@@ -127,8 +128,7 @@ test("Windows: Scripts folder, .exe names, ; in PATH", () => {
   assert.deepEqual(commandOf(resolveTool("mint-run", NONE, host)), ["C:\\Python312\\Scripts\\mint-run.exe"]);
 });
 
-test("migrate rewrites the file in place and run simulates it, both for the configured controller", () => {
-  assert.deepEqual(toolArguments("mint-migrate", "/p/a.mnt", "nextmove-bx"), ["--write", "--controller", "nextmove-bx", "/p/a.mnt"]);
+test("a run simulates the file for the configured controller, bounded in real time", () => {
   assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", "nextmove-bx"), [
     "--controller",
     "nextmove-bx",
@@ -138,7 +138,7 @@ test("migrate rewrites the file in place and run simulates it, both for the conf
   ]);
 });
 
-test("both tools get the program's configuration file before the program", () => {
+test("a run gets the program's configuration file before the program", () => {
   assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", "mintdrive", "/p/a.cfg"), [
     "--config",
     "/p/a.cfg",
@@ -148,46 +148,12 @@ test("both tools get the program's configuration file before the program", () =>
     "30",
     "/p/a.mnt",
   ]);
-  assert.deepEqual(toolArguments("mint-migrate", "/p/a.mnt", "mintdrive", "/p/a.cfg"), [
-    "--write",
-    "--config",
-    "/p/a.cfg",
-    "--controller",
-    "mintdrive",
-    "/p/a.mnt",
-  ]);
   const host = posix(["/usr/bin/mint-run"]);
   assert.deepEqual(commandOf(fileCommand("mint-run", "/p/a.mnt", NONE, host, "/p/a.cfg")).slice(0, 3), [
     "/usr/bin/mint-run",
     "--config",
     "/p/a.cfg",
   ]);
-});
-
-test("mint.pythonPath starts mint-migrate through its entry point: mintlang.migrate has no __main__", () => {
-  const host = posix(["/usr/bin/python3"]);
-  const [python, flag, code, ...rest] = commandOf(fileCommand("mint-migrate", "/p/a.mnt", { ...NONE, pythonPath: "python3" }, host));
-  assert.equal(python, "/usr/bin/python3");
-  assert.equal(flag, "-c");
-  assert.match(code ?? "", /from mintlang\.migrate\.cli import main; main\(\)/);
-  assert.deepEqual(rest, ["--write", "--controller", "nextmove-pci", "/p/a.mnt"]);
-});
-
-test("migration rewrites a program and its configuration file together, invoked on either", () => {
-  const host = posix(["/usr/bin/mint-migrate"]);
-  const listFolder = (folder: string) => {
-    assert.equal(folder, "/p");
-    return ["conveyor.mnt", "conveyor.cfg", "lone.mnt", "orphan.cfg"];
-  };
-  const migrate = (file: string) => {
-    const { program, config } = applicationOf(file, listFolder);
-    return commandOf(fileCommand("mint-migrate", program, NONE, host, config));
-  };
-  const pair = ["/usr/bin/mint-migrate", "--write", "--config", "/p/conveyor.cfg", "--controller", "nextmove-pci", "/p/conveyor.mnt"];
-  assert.deepEqual(migrate("/p/conveyor.mnt"), pair);
-  assert.deepEqual(migrate("/p/conveyor.cfg"), pair);
-  assert.deepEqual(migrate("/p/lone.mnt"), ["/usr/bin/mint-migrate", "--write", "--controller", "nextmove-pci", "/p/lone.mnt"]);
-  assert.deepEqual(migrate("/p/orphan.cfg"), ["/usr/bin/mint-migrate", "--write", "--controller", "nextmove-pci", "/p/orphan.cfg"]);
 });
 
 // The Python of the mintlang checkout this extension lives in, when it has been set up.
@@ -202,12 +168,13 @@ test("every mint.pythonPath command line starts its tool", { skip: !existsSync(C
 });
 
 test("file commands append the file arguments to the resolved command", () => {
-  const host = posix(["/work/robot/.venv/bin/mint-migrate", "/usr/bin/python3"]);
-  assert.deepEqual(commandOf(fileCommand("mint-migrate", "/work/robot/a b.mnt", NONE, host)), [
-    "/work/robot/.venv/bin/mint-migrate",
-    "--write",
+  const host = posix(["/work/robot/.venv/bin/mint-run", "/usr/bin/python3"]);
+  assert.deepEqual(commandOf(fileCommand("mint-run", "/work/robot/a b.mnt", NONE, host)), [
+    "/work/robot/.venv/bin/mint-run",
     "--controller",
     "nextmove-pci",
+    "--max-wall-s",
+    "30",
     "/work/robot/a b.mnt",
   ]);
   assert.deepEqual(commandOf(fileCommand("mint-run", "/work/robot/a.mnt", { ...NONE, pythonPath: "python3" }, host)), [
@@ -220,35 +187,22 @@ test("file commands append the file arguments to the resolved command", () => {
     "30",
     "/work/robot/a.mnt",
   ]);
-  assert.equal(fileCommand("mint-run", "/work/robot/a.mnt", NONE, host).ok, false);
+  assert.equal(fileCommand("mint-run", "/work/robot/a.mnt", NONE, posix(["/usr/bin/python3"])).ok, false);
 });
 
 test("a missing module is recognised in Python's message, and only the tool's own", () => {
   assert.equal(isMissingModule("/usr/bin/python3: No module named mintlang.runtime\n", "mint-run"), true);
   assert.equal(isMissingModule("/usr/bin/python3: No module named mintlang\n", "mint-run"), true);
-  assert.equal(isMissingModule("ModuleNotFoundError: No module named 'mintlang'\n", "mint-migrate"), true);
+  assert.equal(isMissingModule("ModuleNotFoundError: No module named 'mintlang'\n", "mint-lsp"), true);
   assert.equal(isMissingModule("ModuleNotFoundError: No module named 'lark'\n", "mint-run"), false);
-  assert.equal(isMissingModule("No module named mintlang.runtime\n", "mint-migrate"), false);
+  assert.equal(isMissingModule("No module named mintlang.runtime\n", "mint-lsp"), false);
   assert.equal(isMissingModule("error[E3001]: Variable undefined\n", "mint-run"), false);
 });
 
 test("command lines are shown quoted as a shell would need", () => {
   assert.equal(
-    displayCommand({ command: "/usr/bin/mint-migrate", args: ["--write", "/p/my file's.mnt"], source: "PATH" }),
-    "/usr/bin/mint-migrate --write '/p/my file'\\''s.mnt'",
+    displayCommand({ command: "/usr/bin/mint-run", args: ["--controller", "/p/my file's.mnt"], source: "PATH" }),
+    "/usr/bin/mint-run --controller '/p/my file'\\''s.mnt'",
   );
 });
 
-test("a migration that left statements for a person is a call for review, not a failure", () => {
-  assert.equal(outcomeOf("mint-migrate", 0), "done");
-  assert.equal(outcomeOf("mint-migrate", 1), "review");
-  assert.equal(outcomeOf("mint-migrate", 2), "failed");
-  assert.equal(outcomeOf("mint-migrate", null), "failed");
-  assert.equal(outcomeOf("mint-run", 1), "failed");
-});
-
-test("a migration that crashed is a failure, though Python's exit status is 1 too", () => {
-  const stderr = 'Traceback (most recent call last):\n  File "cli.py", line 1\nTypeError: boom\n';
-  assert.equal(outcomeOf("mint-migrate", 1, stderr), "failed");
-  assert.equal(outcomeOf("mint-migrate", 1, "mint-migrate: 2 manual items\n"), "review");
-});

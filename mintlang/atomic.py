@@ -11,15 +11,17 @@ and a file with a hard link outside its folder (that name could not be found, so
 it would keep the old text).
 
 ``write`` puts the new bytes in a temporary file of the same folder
-(``.NAME.XXXXXXXX.mint-migrate.tmp``, locked while in use), with the original's
+(``.NAME.XXXXXXXX.mint.tmp``, locked while in use), with the original's
 permission bits, owner and group, flushed to disk; checks that the file still
-holds the bytes the migration read (an edit saved meanwhile is not overwritten);
+holds the bytes the tool read (an edit saved meanwhile is not overwritten);
 and renames the temporary file over the file's name, which replaces the name in
 one step. A file with several hard links gets every name renamed onto the new
 file, one after the other, so the links survive; a kill between two of those
 renames leaves some names with the new text and the others with the old, each
 complete. Last, the folder is flushed so that the renames survive a power cut.
-A kill leaves the temporary file behind; the next run removes it (``leftovers``).
+A kill leaves the temporary file behind; mint-migrate's next run removes it.
+
+``mint-migrate --write`` and ``mint check --fix`` write files this way.
 """
 
 from __future__ import annotations
@@ -31,16 +33,16 @@ import stat
 import tempfile
 from pathlib import Path
 
-SUFFIX = ".mint-migrate.tmp"
+SUFFIX = ".mint.tmp"
 _NAME_KEPT = 100  # characters of the file's name in a temporary name (names are at most 255)
 
 
 class Unwritable(Exception):
-    """A file ``--write`` must not or cannot rewrite; the message names it and says why."""
+    """A file that must not or cannot be rewritten; the message names it and says why."""
 
 
 class Stale(Exception):
-    """The file no longer holds what the migration read: an edit made since would be lost."""
+    """The file no longer holds what the tool read: an edit made since would be lost."""
 
 
 def target(path: Path) -> Path:

@@ -1,0 +1,128 @@
+"""``mint-migrate --verify``: run the v3 original and its v4 migration in the simulator and compare them.
+
+A migration is only as good as the machine's behaviour after it. Both
+applications run in ``mintlang.runtime`` with the same stimulus (a scenario, and
+the programs' own ``REM @sim`` lines, which the migration keeps), the v3 one on
+a v3 controller and the v4 one on its counterpart, and their terminal output,
+outputs, relay and axes are compared at every millisecond within the
+tolerances ``tolerance`` states::
+
+    from mintlang.migrate import migrate
+    from mintlang.migrate.verification import verify
+    result = migrate(v3_source, config=v3_config)
+    found = verify(result, scenario=scenario, until_ms=5000)
+    found.verdict, found.divergence, found.not_verified
+
+The answer is a ``Verification``: equivalent, a timing difference X-GO-TIMING
+expected, the first divergence (time, the line each run was at, what differs),
+or incomplete when the comparison cannot cover the run (the v3 original does not
+compile, the migration compiles only once a flagged line is done, a run meets
+what the simulator does not model). Everything the migration left for a person,
+application notes included, is listed as not verified, and the flagged lines v4
+finds in error are made comments for the v4 run (``runnable``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from types import MappingProxyType
+
+from mintlang.dialect import Dialect
+from mintlang.keyworddb.model import Controller
+from mintlang.migrate.model import ManualItem, MigrationResult
+from mintlang.migrate.verification import compare, runnable
+from mintlang.migrate.verification.model import Divergence, Place, Stopped, Verdict, Verification
+from mintlang.migrate.verification.runs import Recording, record
+from mintlang.runtime.dialects.v3.controllers import DEFAULT as V3_DEFAULT
+from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_CONTROLLERS
+from mintlang.runtime.scenario.stimulus import Scenario
+
+__all__ = [
+    "COUNTERPART",
+    "DEFAULT_UNTIL_MS",
+    "V3_CONTROLLERS",
+    "V3_DEFAULT",
+    "Divergence",
+    "Place",
+    "Stopped",
+    "Verdict",
+    "Verification",
+    "verify",
+]
+
+DEFAULT_UNTIL_MS = 10_000
+DEFAULT_WALL_S = 60.0
+
+# Every v3 controller the simulator offers is simulated on the NextMove PCI machine (its 1 ms servo
+# tick, 2 ms profiler and plants: runtime/dialects/v3/controllers.py, V3-1), cut down to its axes and
+# I/O; the NextMove PCI has those axes (0..2), inputs (0..7) and outputs (0..7) under the same
+# numbers, and it is what the migration targets by default. MintDrive (one axis) fits none of them.
+COUNTERPART = MappingProxyType(dict.fromkeys(V3_CONTROLLERS, Controller.NEXTMOVE_PCI))
+
+_TIMING_RULE = "X-GO-TIMING"
+
+
+def verify(
+    result: MigrationResult,
+    *,
+    v3_controller: str = V3_DEFAULT,
+    controller: Controller | str | None = None,
+    scenario: Scenario | None = None,
+    until_ms: int = DEFAULT_UNTIL_MS,
+    max_wall_s: float | None = DEFAULT_WALL_S,
+) -> Verification:
+    """Compare the v3 application ``result`` was migrated from with the v4 one it gives, each run for at
+    most ``until_ms`` simulated ms. ``controller`` is the v4 controller ``result`` was migrated for (by
+    default the counterpart of ``v3_controller``); ``scenario`` is the stimulus of both runs (its
+    expectations are not checked). Raises ``ScenarioFileError`` when a program's ``REM @sim`` line cannot
+    be read, ``ValueError`` for a controller of the wrong generation."""
+    target = str(Controller(controller)) if controller is not None else str(COUNTERPART[v3_controller])
+    stimulus = replace(scenario, expectations=()) if scenario is not None else Scenario()
+    v3 = runnable.original(result)
+    v4, disabled = runnable.migrated(result, target)
+    left = record(v3, Dialect.V3, v3_controller, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
+    right = record(v4, Dialect.V4, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
+    short = _short(left, right, runnable.flagged_places(result))
+    comparable = not (left.refused or (right.refused and short))  # else one of them never ran
+    found = compare.differences(left, right) if comparable else []
+    flagged = _flagged(result)
+    return Verification(
+        verdict=_verdict(found, flagged, short),
+        compared_ms=max(compare.horizon(left, right), 0) if comparable else 0,
+        divergence=found[0] if found else None,
+        differences=tuple(found),
+        v3_controller=v3_controller,
+        v4_controller=target,
+        v3_stop=compare.stopped(left),
+        v4_stop=compare.stopped(right),
+        not_verified=flagged,
+        disabled=disabled,
+        short=short,
+    )
+
+
+def _short(v3: Recording, v4: Recording, flagged: set[Place]) -> str | None:
+    """Why the comparison cannot cover the whole run: the original does not compile, the migration does not
+    until a person deals with a line left for them, or the simulation stopped where the program would not."""
+    if v3.refused:
+        return f"the v3 original does not compile: {compare.stopped(v3).message}"
+    v4_stop = compare.stopped(v4)
+    if v4.refused and v4_stop.line in flagged:
+        return f"the v4 program does not compile until {v4_stop.line}, left for a person, is done: {v4_stop.message}"
+    return v3.short or v4.short
+
+
+def _flagged(result: MigrationResult) -> tuple[tuple[str, ManualItem], ...]:
+    """The statements left for a person, configuration file first: the lines marked, and the statements an
+    application note asks to fill in (a v3 default, a dedicated input), whose effect is not verified either."""
+    parts = [("configuration", result.configuration), ("program", result)]
+    return tuple((unit, item) for unit, part in parts if part is not None for item in part.manual)
+
+
+def _verdict(found: list[Divergence], flagged: tuple[tuple[str, ManualItem], ...], short: str | None) -> Verdict:
+    if not found:
+        return Verdict.INCOMPLETE if short else Verdict.EQUIVALENT
+    expected = any(item.rule == _TIMING_RULE for _, item in flagged)
+    if expected and all(divergence.timing_only for divergence in found):
+        return Verdict.TIMING
+    return Verdict.DIVERGES

@@ -1,0 +1,80 @@
+"""What a verification finds: a verdict, the first divergence, and what it could not verify."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import StrEnum
+
+from mintlang.migrate.model import ManualItem
+from mintlang.semantic.units import Unit
+
+
+@dataclass(frozen=True, slots=True)
+class Application:
+    """A program and its configuration file (None without one), as a run is given them."""
+
+    program: str
+    configuration: str | None
+
+    def text(self, unit: Unit) -> str | None:
+        return self.program if unit is Unit.PROGRAM else self.configuration
+
+
+@dataclass(frozen=True, slots=True)
+class Place:
+    """A line of one of the two applications: ``program`` or ``configuration``, from 1."""
+
+    unit: str
+    line: int
+
+    def __str__(self) -> str:
+        return f"{self.unit} line {self.line}"
+
+
+class Verdict(StrEnum):
+    EQUIVALENT = "equivalent"  # the same behaviour over the whole comparison, within the tolerances
+    TIMING = "timing"  # the same outputs in the same order, at times X-GO-TIMING flagged as expected to change
+    DIVERGES = "diverges"  # the runs differ: the first difference is reported
+    INCOMPLETE = "incomplete"  # no difference as far as the simulation could go, which is not the whole run
+
+
+@dataclass(frozen=True, slots=True)
+class Divergence:
+    """The first thing that differs, at ``time_ms``: ``what`` (``terminal``, ``OUT``, ``relay``, ``axis 0
+    position``, ``axis 0 velocity``, ``stop``), each run's side of it, and the line each run was at."""
+
+    time_ms: int
+    what: str
+    v3: str
+    v4: str
+    v3_line: Place | None
+    v4_line: Place | None
+    detail: str = ""  # where in it: "at character 12"
+    timing_only: bool = False  # the same values in the same order: only when they happen differs
+
+
+@dataclass(frozen=True, slots=True)
+class Stopped:
+    """How a run ended: ``end``, ``deadlock``, ``error``, ``until`` …, when, and where."""
+
+    reason: str
+    time_ms: int
+    line: Place | None
+    message: str
+
+
+@dataclass(frozen=True, slots=True)
+class Verification:
+    """``verify``'s answer for one application."""
+
+    verdict: Verdict
+    compared_ms: int  # the simulated milliseconds compared, from 0
+    divergence: Divergence | None  # the first difference in time
+    differences: tuple[Divergence, ...]  # the first difference of each thing that differs, earliest first
+    v3_controller: str
+    v4_controller: str
+    v3_stop: Stopped
+    v4_stop: Stopped
+    not_verified: tuple[tuple[str, ManualItem], ...]  # (unit, item): every manual item and application note
+    disabled: tuple[Place, ...]  # flagged lines v4 finds in error, made comments for the v4 run
+    short: str | None = None  # why the comparison ends before the runs do (INCOMPLETE)

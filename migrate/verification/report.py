@@ -1,0 +1,156 @@
+"""The verification report: one data shape for ``--format json`` and the text a person reads.
+
+A place is told as the file it is in: a run's line is a line of the v3 file (the
+original) or of the migrated one, which has the same lines as the v4 run (a line
+disabled for the run keeps its number), so ``program`` and ``configuration``
+become the paths the command line gave.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from rich.console import Console
+from rich.markup import escape
+
+from mintlang.migrate.model import ManualItem
+from mintlang.migrate.report import plural
+from mintlang.migrate.verification.model import Divergence, Place, Stopped, Verdict, Verification
+
+
+@dataclass(frozen=True, slots=True)
+class Verified:
+    """One application's verification, with the paths of its files (None for a file it does not have)."""
+
+    program: str | None
+    configuration: str | None
+    verification: Verification
+
+    def path(self, place: Place | None) -> str | None:
+        if place is None:
+            return None
+        return self.configuration if place.unit == "configuration" else self.program
+
+
+def headline(verification: Verification) -> str:
+    """``equivalent over 2000 ms``, ``diverges at 120 ms: axis 0 position``, ``incomplete: no difference over
+    40 ms, then …``."""
+    found = verification.divergence
+    verdict = verification.verdict
+    if verdict is Verdict.EQUIVALENT:
+        return f"equivalent over {verification.compared_ms} ms"
+    if verdict is Verdict.INCOMPLETE and verification.compared_ms == 0:
+        return f"incomplete: {verification.short}"
+    if verdict is Verdict.INCOMPLETE:
+        return f"incomplete: no difference over {verification.compared_ms} ms, then {verification.short}"
+    assert found is not None, "a divergence or a timing difference has a first difference"
+    kind = "timing differs (X-GO-TIMING)" if verdict is Verdict.TIMING else "diverges"
+    return f"{kind} at {found.time_ms} ms: {found.what}"
+
+
+def report(verified: Iterable[Verified]) -> dict[str, Any]:
+    """The report as plain data (what ``--verify --format json`` prints)."""
+    rows = [_application(item) for item in verified]
+    verdicts = Counter(row["verdict"] for row in rows)
+    return {"applications": rows, "totals": {verdict.value: verdicts[verdict.value] for verdict in Verdict}}
+
+
+def _application(item: Verified) -> dict[str, Any]:
+    verification = item.verification
+    return {
+        "program": item.program,
+        "configuration": item.configuration,
+        "v3_controller": verification.v3_controller,
+        "v4_controller": verification.v4_controller,
+        "verdict": verification.verdict.value,
+        "summary": headline(verification),
+        "compared_ms": verification.compared_ms,
+        "incomplete": verification.short,
+        "divergence": _divergence(item, verification.divergence),
+        "differences": [_divergence(item, found) for found in verification.differences],
+        "stopped": {"v3": _stopped(item, verification.v3_stop), "v4": _stopped(item, verification.v4_stop)},
+        "not_verified": [_manual(item, unit, manual) for unit, manual in verification.not_verified],
+        "disabled": [{"file": item.path(place), "line": place.line} for place in verification.disabled],
+    }
+
+
+def _side(item: Verified, value: str, place: Place | None) -> dict[str, Any]:
+    return {"value": value, "file": item.path(place), "line": place.line if place is not None else None}
+
+
+def _divergence(item: Verified, found: Divergence | None) -> dict[str, Any] | None:
+    if found is None:
+        return None
+    return {
+        "time_ms": found.time_ms,
+        "what": found.what,
+        "detail": found.detail,
+        "timing_only": found.timing_only,
+        "v3": _side(item, found.v3, found.v3_line),
+        "v4": _side(item, found.v4, found.v4_line),
+    }
+
+
+def _stopped(item: Verified, stop: Stopped) -> dict[str, Any]:
+    where = stop.line
+    return {
+        "reason": stop.reason,
+        "time_ms": stop.time_ms,
+        "file": item.path(where),
+        "line": where.line if where is not None else None,
+        "message": stop.message,
+    }
+
+
+def _manual(item: Verified, unit: str, manual: ManualItem) -> dict[str, Any]:
+    return {
+        "file": item.path(Place(unit, manual.line)),
+        "migrated_line": manual.line,
+        "original_line": manual.original_line,
+        "note": manual.note,
+        "rule": manual.rule,
+        "reason": manual.reason,
+    }
+
+
+def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = False) -> None:
+    """Per application: the verdict, the first difference with each run's line, what was not verified (not
+    when ``quiet``); then the totals (not when ``quiet``)."""
+    for row in data["applications"]:
+        name = escape(row["program"] or row["configuration"])
+        found = row["divergence"]
+        detail = f" ({escape(found['detail'])})" if found is not None and found["detail"] else ""
+        console.print(f"{name}: [bold]{escape(row['summary'])}[/bold]{detail}")
+        for side in ("v3", "v4") if found is not None else ():
+            console.print(f"  {side}: {escape(found[side]['value'])}  {_where(found[side], side)}")
+        for other in row["differences"][1:]:
+            values = f"v3 {escape(other['v3']['value'])}, v4 {escape(other['v4']['value'])}"
+            timing = ", timing only" if other["timing_only"] else ""
+            console.print(f"  also differs: {escape(other['what'])} at {other['time_ms']} ms ({values}{timing})")
+        if quiet:
+            continue
+        for manual in row["not_verified"]:
+            where = f"{escape(manual['file'])}:{manual['migrated_line']}" + (" (note)" if manual["note"] else "")
+            reason = escape(manual["reason"])
+            console.print(f"  not verified: {where}: [bold]{manual['rule']}[/bold] {reason}", style="dim")
+        for place in row["disabled"]:
+            console.print(f"  disabled for the v4 run: {escape(place['file'])}:{place['line']} (migrated)", style="dim")
+    if not quiet:
+        console.print(summary(data["totals"]))
+
+
+def _where(told: Mapping[str, Any], side: str) -> str:
+    """``at demo.mnt:7`` for the v3 file, ``at migrated demo.mnt:9`` for the v4 one."""
+    if told["line"] is None:
+        return ""
+    migrated = "migrated " if side == "v4" else ""
+    return f"at {migrated}{escape(told['file'])}:{told['line']}"
+
+
+def summary(totals: Mapping[str, int]) -> str:
+    """``3 applications verified: 2 equivalent, 1 diverges``."""
+    counts = ", ".join(f"{count} {verdict}" for verdict, count in totals.items() if count)
+    return f"{plural(sum(totals.values()), 'application')} verified" + (f": {counts}" if counts else "")

@@ -1,0 +1,114 @@
+"""``mint-migrate --verify``: the options of the mode, each application verified, the report printed.
+
+The comparison itself is ``verification``; this module turns the command line
+into its settings (the scenario files read as written for the v3 original) and
+the migrated applications into the report ``verification.report`` prints.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+from rich.console import Console
+
+from mintlang.dialect import Dialect
+from mintlang.migrate.applications import Migrated, UsageError
+from mintlang.migrate.model import MigrationResult
+from mintlang.migrate.verification import DEFAULT_UNTIL_MS, V3_DEFAULT, verify
+from mintlang.migrate.verification import report as verification_report
+from mintlang.migrate.verification.report import Verified
+from mintlang.runtime.hardware import machine
+from mintlang.runtime.scenario import DrivesEnabled, Scenario, ScenarioFileError, load_scenario, merge
+
+
+@dataclass(frozen=True, slots=True)
+class Settings:
+    """What each application is verified with."""
+
+    v3_controller: str
+    controller: str
+    scenario: Scenario
+    until_ms: int
+
+
+@dataclass(frozen=True, slots=True)
+class Options:
+    """The command line's ``--verify`` options, as given (None: not given)."""
+
+    scenario_paths: tuple[Path, ...]
+    until_ms: int | None
+    v3_controller: str | None
+    drives: str | None
+
+    def settings(self, controller: str) -> Settings:
+        """The settings, with the scenario files read; one that cannot be read or used is a ``UsageError``."""
+        v3_controller = self.v3_controller or V3_DEFAULT
+        scenario = Scenario(drives=(DrivesEnabled(),)) if self.drives == "enabled" else Scenario()
+        simulated = machine(v3_controller, Dialect.V3)  # the stimulus is written for the v3 original
+        for path in self.scenario_paths:
+            try:
+                scenario = merge(scenario, load_scenario(path, simulated, Dialect.V3))
+            except ScenarioFileError as error:
+                raise UsageError(str(error).replace("\n", "; ")) from None
+            except OSError as error:
+                raise UsageError(f"cannot read {path}: {error.strerror or error}") from None
+        return Settings(v3_controller, controller, scenario, self.until_ms or DEFAULT_UNTIL_MS)
+
+    def refuse(self, typed: Callable[[str], bool]) -> None:
+        """Without ``--verify``: any of its options typed on the command line is a ``UsageError``; a settings
+        file's defaults for them are not (``typed`` tells which, by parameter name)."""
+        given = {"--scenario": ("scenario_paths", self.scenario_paths), "--until-ms": ("until_ms", self.until_ms)}
+        given |= {"--v3-controller": ("v3_controller", self.v3_controller), "--drives": ("drives", self.drives)}
+        named = [flag for flag, (parameter, value) in given.items() if value and typed(parameter)]
+        if named:
+            raise UsageError(f"{', '.join(named)}: only with --verify")
+
+
+def verify_all(migrated: list[list[Migrated]], settings: Settings) -> tuple[list[Verified], list[str]]:
+    """Each application migrated without a failure, verified; a ``REM @sim`` line that cannot be read is a
+    problem of that application alone."""
+    verified, problems = [], []
+    for files in migrated:
+        result = _whole(files)
+        if result is None:
+            continue  # its failure is reported with the migration's
+        paths = {item.entry.role: item.entry.path for item in files}
+        try:
+            found = verify(
+                result,
+                v3_controller=settings.v3_controller,
+                controller=settings.controller,
+                scenario=settings.scenario,
+                until_ms=settings.until_ms,
+            )
+        except ScenarioFileError as error:  # a REM @sim line of the program, which the v3 run reads first
+            program = paths.get("program") or paths.get("configuration") or ""
+            problems += [str(replace(mistake, source=program)) for mistake in error.errors]
+            continue
+        verified.append(Verified(paths.get("program"), paths.get("configuration"), found))
+    return verified, problems
+
+
+def _whole(files: list[Migrated]) -> MigrationResult | None:
+    """An application's migration as ``verify`` takes it: the program's, which holds the configuration's,
+    or, for a configuration file alone, that file's under an empty program."""
+    results = {item.entry.role: item.entry.result for item in files}
+    if "program" in results:
+        return results["program"]
+    configuration = results.get("configuration")
+    if configuration is None:
+        return None
+    return MigrationResult("", "", (), (), {}, configuration=configuration)
+
+
+def output(verified: list[Verified], output_format: str, console: Console, *, quiet: bool) -> None:
+    """The report on ``console`` (standard output or ``--output-file``); ``quiet`` leaves out what was not
+    verified and the totals."""
+    data = verification_report.report(verified)
+    if output_format == "json":
+        console.file.write(json.dumps(data, indent=2, ensure_ascii=False) + "\n")
+    else:
+        verification_report.render_text(data, console, quiet=quiet)

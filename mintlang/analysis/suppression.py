@@ -1,0 +1,168 @@
+"""Suppression comments: ``REM mint: ignore[W103]`` on a line, ``REM mint: ignore-file[W103]`` in a file.
+
+A comment silences the codes it names on its own line (after a statement,
+``DIM x : REM mint: ignore[W103]``) or, with ``ignore-file``, anywhere in its
+file. It names complete codes, comma-separated, in either spelling of an error
+(``E17`` or ``E0017``): a prefix would silence more than its author looked at.
+A named code that silenced nothing, or that is no code, is reported as
+``UNUSED_SUPPRESSION`` (as ruff's RUF100), with a safe fix that removes it.
+"""
+
+from __future__ import annotations
+
+import re
+from bisect import bisect_right
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+
+from mintlang.codes import code_named, own
+from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
+from mintlang.syntax.parser import Document
+
+UNUSED_SUPPRESSION = "W117"
+
+# From the REM that starts the comment: the directive must be the comment's first words.
+_DIRECTIVE = re.compile(r"REM\s+mint:\s*ignore(?P<file>-file)?\[(?P<codes>[^\]]*)\]", re.IGNORECASE)
+_ENTRY = re.compile(r"[^,\s]+")
+
+
+@dataclass(frozen=True, slots=True)
+class Entry:
+    """One code as written in a directive: ``code`` is what it names (None: no code)."""
+
+    text: str
+    code: str | None
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class Directive:
+    """One ``REM mint: ignore[...]`` comment: ``line`` is the span of its physical line (line break excluded)."""
+
+    whole_file: bool
+    entries: tuple[Entry, ...]
+    span: Span  # from REM to the closing bracket
+    line: Span
+    statement_end: int  # where the statements before the comment end (its start on a line of its own)
+
+    def names(self, code: str) -> bool:
+        return any(entry.code == code for entry in self.entries)
+
+
+def directives(document: Document) -> tuple[Directive, ...]:
+    """The suppression comments of a file, in order."""
+    found: list[Directive] = []
+    for offset, lexed in document.physical:
+        if lexed.comment_start < 0:
+            continue
+        match = _DIRECTIVE.match(lexed.text, lexed.comment_start, lexed.content_end)
+        if match is None:
+            continue
+        codes_start = match.start("codes")
+        entries = tuple(
+            Entry(entry[0], code_named(entry[0]), Span(offset + entry.start(), offset + entry.end()))
+            for entry in _ENTRY.finditer(lexed.text, codes_start, match.end("codes"))
+        )
+        before = lexed.text[: lexed.comment_start].rstrip()
+        statement_end = offset + len(before.removesuffix(":").rstrip())
+        found.append(
+            Directive(
+                whole_file=match["file"] is not None,
+                entries=entries,
+                span=Span(offset + match.start(), offset + match.end()),
+                line=Span(offset, offset + lexed.content_end),
+                statement_end=statement_end,
+            )
+        )
+    return tuple(found)
+
+
+def suppress(
+    diagnostics: Iterable[Diagnostic], document: Document, selected: Callable[[str], bool]
+) -> list[Diagnostic]:
+    """``diagnostics`` without those a comment of ``document`` silences, and the unused suppressions.
+
+    A diagnostic is on the line its span starts on. ``selected`` says whether a code is
+    checked at all: a suppression of a code not checked silences nothing and is reported
+    so (as ruff reports a ``noqa`` of a rule not enabled).
+    """
+    found = directives(document)
+    if not found:
+        return list(diagnostics)
+    by_line = [directive for directive in found if not directive.whole_file]
+    starts = [directive.line.start for directive in by_line]
+    whole_file = [directive for directive in found if directive.whole_file]
+    used: set[tuple[Span, str]] = set()  # (the directive's place, a code it silenced)
+
+    def silenced(diagnostic: Diagnostic) -> bool:
+        candidates = [directive for directive in whole_file if directive.names(diagnostic.code)]
+        place = bisect_right(starts, diagnostic.span.start) - 1
+        if place >= 0 and diagnostic.span.start <= by_line[place].line.end and by_line[place].names(diagnostic.code):
+            candidates.append(by_line[place])
+        used.update((directive.span, diagnostic.code) for directive in candidates)
+        return bool(candidates)
+
+    kept = [diagnostic for diagnostic in diagnostics if not silenced(diagnostic)]
+    unused = [
+        _unused(directive, entry, selected)
+        for directive in found
+        for entry in directive.entries
+        if entry.code != UNUSED_SUPPRESSION and (directive.span, entry.code) not in used
+    ]
+    kept.extend(report for report in unused if selected(UNUSED_SUPPRESSION) and not silenced(report))
+    return kept
+
+
+def _unused(directive: Directive, entry: Entry, selected: Callable[[str], bool]) -> Diagnostic:
+    where = "in this file" if directive.whole_file else "on this line"
+    if entry.code is None:
+        detail = f"unused suppression: '{entry.text}' is no code"
+    elif not selected(entry.code):
+        detail = f"unused suppression: {entry.code} is not checked"
+    else:
+        detail = f"unused suppression: no {entry.code} {where}"
+    return own(UNUSED_SUPPRESSION, entry.span, detail, fixes=(_removal(directive, entry),))
+
+
+def _removal(directive: Directive, entry: Entry) -> Fix:
+    """Take the entry out of its list, or the whole comment when it is the only entry."""
+    entries = directive.entries
+    if len(entries) == 1:
+        return Fix("Remove the suppression comment", (_without_comment(directive),), safe=True)
+    index = entries.index(entry)
+    if index + 1 < len(entries):
+        span = Span(entry.span.start, entries[index + 1].span.start)  # the entry, its comma and the space after
+    else:
+        span = Span(entries[index - 1].span.end, entry.span.end)  # the comma before the last entry
+    return Fix(f"Remove {entry.text} from the suppression", (Edit(span, ""),), safe=True)
+
+
+def _without_comment(directive: Directive) -> Edit:
+    """The directive's removal: with the ``:`` and space before it after a statement; any text after it stays."""
+    rest_of_line = directive.span.end < directive.line.end
+    if rest_of_line:
+        return Edit(directive.span, "REM")  # REM mint: ignore[W103] because ... -> REM because ...
+    return Edit(Span(directive.statement_end, directive.span.end), "")
+
+
+def suppression_fix(document: Document, offset: int, code: str) -> Fix:
+    """Silence ``code`` on the line holding ``offset``: the line's directive extended, or one added.
+
+    A comment already on the line keeps its words after the directive; a line with
+    statements gets ``: REM mint: ignore[...]`` after them, as the manual writes comments.
+    """
+    title = f"Ignore {code} on this line"
+    index = document.physical_between(offset, offset)[0]
+    line_offset, lexed = document.physical[index]
+    for directive in directives(document):
+        if not directive.whole_file and directive.line.start == line_offset:
+            end = directive.entries[-1].span.end if directive.entries else directive.span.end - 1
+            separator = ", " if directive.entries else ""
+            return Fix(title, (Edit(Span(end, end), f"{separator}{code}"),), safe=True)
+    comment = f"REM mint: ignore[{code}]"
+    if lexed.comment_start >= 0:
+        start = line_offset + lexed.comment_start
+        return Fix(title, (Edit(Span(start, start + 3), f"{comment}"),), safe=True)
+    content = lexed.text[: lexed.content_end].rstrip()
+    end = line_offset + len(content)
+    return Fix(title, (Edit(Span(end, end), f" : {comment}" if content.strip() else comment),), safe=True)

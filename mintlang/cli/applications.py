@@ -1,0 +1,171 @@
+"""Which configuration file each file of a ``mint check`` run is checked with, and under which settings.
+
+Each file has the settings of its nearest settings file, under the command
+line's (``mintlang.settings``). A program sees ``--config`` if given, else the
+``config`` of its settings file, else the configuration file paired with it
+(``mintlang.pairing``, the rule the editor follows), unless ``--no-config``. A
+configuration file is reported once, as its programs see it (a name is unused
+only if none of them uses it); named on its own (``mint check cell.cfg``) it is
+checked with its paired program as the editor checks it, without reporting the
+program.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from mintlang import check_application
+from mintlang.analysis.suppression import UNUSED_SUPPRESSION
+from mintlang.cli.checking import Checked, CheckOptions, Job
+from mintlang.cli.files import cannot_read, is_configuration
+from mintlang.cli.report import FileReport
+from mintlang.diagnostics import Diagnostic
+from mintlang.semantic.units import Unit
+from mintlang.settings import FileSettings, Overrides, settings_for
+from mintlang.source import SourceFile, read_source
+
+# Unused variable, macro, suppression: a use in any program counts.
+_USE_FINDINGS = frozenset({"W103", "W105", UNUSED_SUPPRESSION})
+
+
+def options_of(settings: FileSettings) -> CheckOptions:
+    return CheckOptions(settings.dialect.value, settings.controller.value, settings.selected, settings.ignored)
+
+
+@dataclass
+class _Configuration:
+    """One configuration file of the run, the jobs of the programs that see it, and where its report goes."""
+
+    source: SourceFile
+    options: CheckOptions
+    jobs: list[int] = field(default_factory=list)
+    place: int = 0  # the index of the first job whose report follows it
+
+
+@dataclass
+class Plan:
+    """The jobs of a run, the configuration files their programs see, and the problems found planning them."""
+
+    jobs: list[Job] = field(default_factory=list)
+    problems: list[str] = field(default_factory=list)
+    hidden: set[int] = field(default_factory=set)  # jobs run for a configuration named alone: their report is not
+    _configurations: dict[Path, _Configuration] = field(default_factory=dict)
+    _failed: set[Path] = field(default_factory=set)
+
+    def add(self, path: Path, settings: FileSettings, source: SourceFile | None = None) -> None:
+        """Plan the file ``path`` (``source``: its text, for standard input)."""
+        unit, other = settings.partner(path)
+        if unit is Unit.CONFIGURATION:
+            self._add_configuration(path, settings, program=other)
+            return
+        configuration = self._configuration(other, settings) if other is not None else None
+        if other is not None and configuration is None:
+            self.problems.append(f"{path}: not checked, as its configuration file {other} could not be")
+            return
+        self.jobs.append(Job(path, options_of(settings), configuration.source.text if configuration else None, source))
+        if configuration is not None:
+            configuration.jobs.append(len(self.jobs) - 1)
+
+    @property
+    def empty(self) -> bool:
+        """Nothing to check or report: no program, no configuration file."""
+        return not self.jobs and not self._configurations
+
+    def configured(self, path: Path) -> bool:
+        """Whether ``path`` is the configuration file of a program already planned."""
+        key = _key(path)
+        return key in self._configurations and bool(self._configurations[key].jobs)
+
+    def _add_configuration(self, path: Path, settings: FileSettings, program: Path | None) -> None:
+        if self.configured(path):
+            return  # reported with its programs
+        configuration = self._configuration(path, settings)
+        if configuration is None:
+            return
+        configuration.place = len(self.jobs)
+        if program is not None:  # checked as the editor checks it: with its program, which is not reported
+            self.hidden.add(len(self.jobs))
+            configuration.jobs.append(len(self.jobs))
+            self.jobs.append(Job(program, options_of(settings), configuration.source.text))
+
+    def _configuration(self, path: Path, settings: FileSettings) -> _Configuration | None:
+        """The configuration file ``path``, read once for the run; None (and a problem) if it cannot be."""
+        key = _key(path)
+        if key in self._failed:
+            return None
+        if key not in self._configurations:
+            try:
+                source = read_source(path)
+            except OSError as error:
+                return self._fail(key, cannot_read(error))
+            if (binary := source.binary()) is not None:
+                return self._fail(key, f"{binary}: not checked")
+            self._configurations[key] = _Configuration(source, options_of(settings), place=len(self.jobs))
+        return self._configurations[key]
+
+    def _fail(self, key: Path, problem: str) -> None:
+        self._failed.add(key)
+        self.problems.append(problem)
+
+    def reports(self, results: Sequence[Checked]) -> list[FileReport]:
+        """The reports in the order the files were planned, each configuration's before its first program's."""
+        placed: dict[int, list[FileReport]] = {}
+        for configuration in self._configurations.values():
+            seen = [results[i].configuration for i in configuration.jobs if results[i].report is not None]
+            placed.setdefault(configuration.place, []).append(_configuration_report(configuration, seen))
+        reports: list[FileReport] = []
+        for index, result in enumerate(results):
+            reports.extend(placed.pop(index, []))
+            if result.report is not None and index not in self.hidden:
+                reports.append(result.report)
+        reports.extend(report for rest in placed.values() for report in rest)
+        return reports
+
+
+def _key(path: Path) -> Path:
+    """One key for the names of one file (``cell.cfg`` named and found as ``CELL.CFG`` through a link)."""
+    try:
+        return path.resolve(strict=True)
+    except OSError:
+        return path.absolute()
+
+
+def plan(files: Sequence[Path], overrides: Overrides, stdin: SourceFile | None = None) -> Plan:
+    """The jobs of a run: standard input's program first, then the programs, then the configuration files named
+    on their own. Raises SettingsError for a settings file that cannot be used."""
+    planned = Plan()
+    if stdin is not None:
+        planned.add(stdin.path, settings_for(stdin.path, overrides), stdin)
+    for path in files:
+        if not is_configuration(path):
+            planned.add(path, settings_for(path, overrides))
+    for path in files:
+        if is_configuration(path):
+            planned.add(path, settings_for(path, overrides))
+    return planned
+
+
+def _configuration_with_programs(seen_by_programs: list[tuple[Diagnostic, ...]]) -> tuple[Diagnostic, ...]:
+    """The configuration's findings, each once; a name is unused only if no program uses it."""
+    counts: Counter[Diagnostic] = Counter(d for diagnostics in seen_by_programs for d in dict.fromkeys(diagnostics))
+    kept = [d for d, count in counts.items() if d.code not in _USE_FINDINGS or count == len(seen_by_programs)]
+    return tuple(sorted(kept, key=lambda d: (d.span.start, d.span.end, d.code)))
+
+
+def _configuration_report(configuration: _Configuration, seen_by_programs: list[tuple[Diagnostic, ...]]) -> FileReport:
+    """A configuration file's findings: as its programs saw it, or checked on its own (with an empty program)."""
+    source, options = configuration.source, configuration.options
+    if seen_by_programs:
+        return FileReport(str(source.path), source.text, _configuration_with_programs(seen_by_programs))
+    analysis = check_application(
+        "",
+        config=source.text,
+        dialect=options.dialect,
+        controller=options.controller,
+        select=options.select,
+        ignore=options.ignore,
+    )
+    return FileReport(str(source.path), source.text, analysis.configuration)

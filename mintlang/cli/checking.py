@@ -1,0 +1,109 @@
+"""Checking one file: the unit of work ``mint check`` hands to its worker processes.
+
+A job carries everything its check needs (the path, the configuration's text,
+the options), so a worker process needs nothing else from the command; what
+comes back is a report, or the one line saying why the file was not checked.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from enum import StrEnum
+from pathlib import Path
+
+from mintlang import Analysis, check_application
+from mintlang.cli.files import cannot_read, is_configuration
+from mintlang.cli.report import FileReport
+from mintlang.diagnostics import Diagnostic
+from mintlang.fixes import Fixed, fix_text
+from mintlang.source import SourceFile, read_source
+
+
+@dataclass(frozen=True, slots=True)
+class CheckOptions:
+    """What ``check_application`` is asked besides the text."""
+
+    dialect: str
+    controller: str
+    select: tuple[str, ...] | None
+    ignore: tuple[str, ...]
+
+
+class Fixing(StrEnum):
+    """Which fixes a run applies."""
+
+    SAFE = "safe"
+    UNSAFE = "unsafe"
+
+    @classmethod
+    def asked(cls, fix: bool, unsafe_fixes: bool, diff: bool) -> Fixing | None:
+        """What ``--fix``, ``--unsafe-fixes`` and ``--diff`` ask; None: report only."""
+        if not (fix or diff):
+            return None
+        return cls.UNSAFE if unsafe_fixes else cls.SAFE
+
+
+@dataclass(frozen=True, slots=True)
+class Job:
+    """A file to check; ``source`` is given for standard input, which a worker cannot read."""
+
+    path: Path
+    options: CheckOptions
+    configuration: str | None = None  # the text of the configuration file the program sees
+    source: SourceFile | None = None
+    fixing: Fixing | None = None  # fix the program (--fix), and with which fixes
+
+
+@dataclass(frozen=True, slots=True)
+class FileFixed:
+    """A program as read, and as fixed (``fixed.text``)."""
+
+    original: SourceFile
+    fixed: Fixed
+
+    @property
+    def changed(self) -> bool:
+        return self.fixed.text != self.original.text
+
+
+@dataclass(frozen=True, slots=True)
+class Checked:
+    """A file's report and the configuration's findings as this program sees it; or why it was not checked."""
+
+    report: FileReport | None
+    configuration: tuple[Diagnostic, ...] = field(default=())
+    problem: str | None = None
+    fixed: FileFixed | None = None  # the program as read and as fixed, when fixing
+
+
+def check_file(job: Job) -> Checked:
+    """Read and check one file; an unreadable or binary file is a problem, not an exception."""
+    try:
+        source = job.source or read_source(job.path)
+    except OSError as error:
+        return Checked(None, problem=cannot_read(error))
+    binary = source.binary()
+    if binary is not None:
+        return Checked(None, problem=f"{binary}: not checked")
+    options = job.options
+    arguments = {"dialect": options.dialect, "controller": options.controller, "ignore": options.ignore}
+    if is_configuration(job.path):
+        analysis = check_application("", config=source.text, select=options.select, **arguments)
+        return Checked(FileReport(str(source.path), source.text, analysis.configuration))
+    if job.fixing is not None:
+        return _fix_program(job, source, arguments)
+    analysis = check_application(source.text, config=job.configuration, select=options.select, **arguments)
+    return Checked(FileReport(str(source.path), source.text, analysis.program), analysis.configuration)
+
+
+def _fix_program(job: Job, source: SourceFile, arguments: dict[str, object]) -> Checked:
+    """Fix the program round after round; its report is that of the fixed text."""
+    analyses: list[Analysis] = []
+
+    def program_findings(text: str) -> tuple[Diagnostic, ...]:
+        analyses.append(check_application(text, config=job.configuration, select=job.options.select, **arguments))
+        return analyses[-1].program
+
+    fixed = fix_text(source.text, program_findings, unsafe=job.fixing is Fixing.UNSAFE)
+    report = FileReport(str(source.path), fixed.text, fixed.remaining)
+    return Checked(report, analyses[-1].configuration, fixed=FileFixed(source, fixed))

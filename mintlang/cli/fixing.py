@@ -1,0 +1,141 @@
+"""``mint check --fix``, ``--unsafe-fixes`` and ``--diff``: fixing the checked programs, as ruff does.
+
+Each worker fixes its program round after round (``mintlang.fixes``) and
+reports what the fixed text still has; here the fixed texts are written, each
+atomically and only if the file still holds what was read (``mintlang.atomic``),
+or shown as unified diffs without writing. A configuration file is reported but
+not fixed: its findings depend on every program that sees it.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections import Counter
+from collections.abc import Callable, Collection, Sequence
+from dataclasses import dataclass, field, replace
+from typing import IO, TypeVar
+
+import click
+
+from mintlang import atomic
+from mintlang.cli.checking import FileFixed, Fixing, Job
+from mintlang.cli.report import FileReport
+from mintlang.fixes import MAX_ROUNDS, automatic_fix
+
+F = TypeVar("F", bound=Callable[..., object])
+
+
+@dataclass
+class Outcome:
+    """What a fixing run did: counts by code, the files changed, and what could not be written."""
+
+    codes: Counter[str] = field(default_factory=Counter)
+    files: int = 0
+    problems: list[str] = field(default_factory=list)
+    unconverged: list[str] = field(default_factory=list)
+
+    def notes(self) -> list[str]:
+        """The files whose fixes did not settle: a fix that undoes another, or more rounds than allowed."""
+        return [f"{path}: fixes still apply after {MAX_ROUNDS} rounds; run --fix again" for path in self.unconverged]
+
+
+def unified_diff(file: FileFixed) -> str:
+    """The change as ``diff -u`` shows it, the file's name on both sides."""
+    name = str(file.original.path)
+    lines = difflib.unified_diff(
+        file.original.text.splitlines(keepends=True),
+        file.fixed.text.splitlines(keepends=True),
+        fromfile=name,
+        tofile=name,
+    )
+    return "".join(line if line.endswith(("\n", "\r")) else f"{line}\n\\ No newline at end of file\n" for line in lines)
+
+
+def _write(file: FileFixed) -> str | None:
+    """Write the fixed text over the file; the one line saying why not, if it could not be."""
+    original = file.original
+    try:
+        real = atomic.target(original.path)
+        atomic.write(real, original.encode(file.fixed.text), original.encode())
+    except atomic.Unwritable as error:
+        return f"{error}; not fixed"
+    except atomic.Stale:
+        return f"{original.path} changed while it was checked; not fixed"
+    except OSError as error:
+        return f"cannot write {original.path}: {error.strerror or error}; not fixed"
+    return None
+
+
+def apply(files: Sequence[FileFixed], *, diff: IO[str] | None) -> Outcome:
+    """Write each changed file, or with ``diff`` show its change there instead."""
+    outcome = Outcome()
+    for file in files:
+        if not file.fixed.converged:
+            outcome.unconverged.append(str(file.original.path))
+        if not file.changed:
+            continue
+        problem = None if diff is not None else _write(file)
+        if diff is not None:
+            diff.write(unified_diff(file))
+        if problem is not None:
+            outcome.problems.append(problem)
+            continue
+        outcome.files += 1
+        outcome.codes.update(diagnostic.code for diagnostic in file.fixed.fixed)
+    return outcome
+
+
+def _plural(count: int, word: str) -> str:
+    return f"{count} {word}{'s' if count != 1 else ''}"
+
+
+def fixed_summary(outcome: Outcome, *, diff: bool) -> str:
+    """One line: what was fixed (or would be, with ``diff``) and in how many files, by code."""
+    total = sum(outcome.codes.values())
+    if not total:
+        return "Nothing to fix."
+    codes = ", ".join(f"{count} {code}" for code, count in sorted(outcome.codes.items()))
+    verb = "Would fix" if diff else "Fixed"
+    return f"{verb} {_plural(total, 'finding')} in {_plural(outcome.files, 'file')} ({codes})."
+
+
+def fixable_summary(reports: Sequence[FileReport]) -> str | None:
+    """How many of the findings ``--fix`` would fix, and how many more ``--unsafe-fixes``; None if none."""
+    diagnostics = [diagnostic for report in reports for diagnostic in report.diagnostics]
+    safe = sum(automatic_fix(d, unsafe=False) is not None for d in diagnostics)
+    unsafe = sum(automatic_fix(d, unsafe=True) is not None for d in diagnostics) - safe
+    if not safe and not unsafe:
+        return None
+    more = f" ({unsafe} more with --unsafe-fixes)" if unsafe else ""
+    if not safe:
+        return f"{_plural(unsafe, 'finding')} fixable with --fix --unsafe-fixes."
+    return f"{_plural(safe, 'finding')} fixable with --fix{more}."
+
+
+def fix_options() -> Callable[[F], F]:
+    """``--fix``, ``--unsafe-fixes`` and ``--diff``, as ruff spells them."""
+    options = [
+        click.option("--fix", is_flag=True, help="Apply the safe fixes to the programs, and report what is left."),
+        click.option(
+            "--unsafe-fixes",
+            is_flag=True,
+            help="With --fix or --diff, apply the unsafe fixes too (guesses at the intent: review them).",
+        ),
+        click.option(
+            "--diff",
+            is_flag=True,
+            help="Show the fixes as a unified diff instead of writing them (exit 1 if there are any).",
+        ),
+    ]
+
+    def decorate(function: F) -> F:
+        for option in reversed(options):
+            function = option(function)
+        return function
+
+    return decorate
+
+
+def marked(jobs: Sequence[Job], hidden: Collection[int], fixing: Fixing) -> list[Job]:
+    """The jobs, each program the run reports to be fixed (not one checked only for its configuration file)."""
+    return [job if index in hidden else replace(job, fixing=fixing) for index, job in enumerate(jobs)]

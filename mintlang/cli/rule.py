@@ -1,0 +1,57 @@
+"""``mint rule``: what a code means, as its page in ``docs/rules/`` says it.
+
+Exit status: 0, or 2 for a code the checker never reports (one line, with the code it
+resembles) or no code at all.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+
+import click
+from rich.console import Console
+from rich.markdown import Markdown
+
+from mintlang.analysis.suggestions import closest, did_you_mean
+from mintlang.cli.options import HELP_OPTIONS, format_option
+from mintlang.ruledocs import RuleDoc, find, group_of, rules
+from mintlang.ruledocs.links import configured_base, rule_url
+from mintlang.ruledocs.render import markdown, record
+
+_USAGE_ERROR = 2
+
+
+def _documented(code: str) -> RuleDoc:
+    found = find(code)
+    if found is not None:
+        return found
+    meant = closest(code.strip().upper(), [rule.code for rule in rules()], likeness=0.6)
+    hint = f" ({did_you_mean(meant)})" if meant is not None else " (mint rule --all lists them)"
+    click.echo(f"mint rule: '{code}' is not a code the checker reports{hint}", err=True)
+    sys.exit(_USAGE_ERROR)
+
+
+@click.command(context_settings=HELP_OPTIONS)
+@click.argument("codes", nargs=-1)
+@click.option("--all", "every", is_flag=True, help="Every code the checker reports, group by group.")
+@format_option(["text", "json"], "Markdown text (formatted on a terminal) or JSON.")
+def rule(codes: tuple[str, ...], every: bool, output_format: str) -> None:
+    """Explain codes (E2016, E2, W103): what each catches, why it matters, an example before and after,
+    the guides' sections and its fix."""
+    if not codes and not every:
+        raise click.UsageError("name a code (mint rule E2016) or give --all")
+    chosen = rules() if every else tuple(_documented(code) for code in codes)
+    if output_format == "json":
+        base = configured_base()
+        records = [record(rule, group_of(rule).name, rule_url(rule.code, base)) for rule in chosen]
+        single = len(records) == 1 and not every
+        click.echo(json.dumps(records[0] if single else records, indent=2, ensure_ascii=False))
+        return
+    pages = [markdown(rule, group_of(rule).name) for rule in chosen]
+    console = Console(highlight=False)
+    if console.is_terminal:
+        for page in pages:
+            console.print(Markdown(page))
+    else:
+        click.echo("\n".join(pages), nl=False)

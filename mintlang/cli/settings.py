@@ -1,0 +1,156 @@
+"""The command line's side of the project settings (``mintlang.settings``).
+
+The options a user types win over the settings file: ``overrides`` turns
+those of ``mint check`` into the layer above the file. A tool's own table
+(``[tool.mint.run]``, ``[tool.mint.migrate]``) gives the defaults of the
+tool's options, under their long names (``until-ms = 500`` for
+``--until-ms 500``), through ``ProjectCommand``. ``describe`` is
+``--show-settings``.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Callable, Mapping
+from pathlib import Path
+from typing import Any, NoReturn
+
+import click
+from click.core import ParameterSource
+
+from mintlang.dialect import Dialect
+from mintlang.keyworddb.model import Controller
+from mintlang.settings import FileSettings, Given, Overrides, ProjectSettings, SettingsError, Table, project_for
+
+_SETTINGS_ERROR = 2
+_TYPED = (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)
+_SHARED = ("controller", "dialect")  # top-level settings every tool's options of the same name default to
+
+
+def typed(context: click.Context, name: str) -> bool:
+    """Whether the user gave the option ``name`` (by its parameter name), rather than its default applying."""
+    return context.get_parameter_source(name) in _TYPED
+
+
+def overrides(
+    context: click.Context,
+    *,
+    select: tuple[str, ...] | None,
+    extend_select: tuple[str, ...] | None,
+    ignore: tuple[str, ...] | None,
+    config_path: Path | None,
+    no_config: bool,
+) -> Overrides:
+    """The options of ``mint check`` the user gave, as the layer above the settings file."""
+    if no_config and config_path is not None:
+        raise click.UsageError("--config names the configuration file and --no-config pairs none: give one")
+    params = context.params
+    config: Given[Path | None] | None = None
+    if no_config:
+        config = Given(None, "--no-config")
+    elif config_path is not None:
+        config = Given(config_path, "--config")
+    return Overrides(
+        controller=Given(Controller(params["controller"]), "--controller") if typed(context, "controller") else None,
+        dialect=Given(Dialect(params["dialect"]), "--dialect") if typed(context, "dialect") else None,
+        select=Given(select, "--select") if select is not None else None,
+        extend_select=Given(extend_select, "--extend-select") if extend_select is not None else None,
+        ignore=Given(ignore, "--ignore") if ignore is not None else None,
+        config_pairing=Given(None, "--no-config") if no_config else None,
+        config=config,
+    )
+
+
+def describe(path: Path, settings: FileSettings) -> list[str]:
+    """``--show-settings``: what applies to ``path``, one setting a line with where its value came from."""
+    project = settings.project
+    rows = [("settings file", str(project.table.path) if project else "none", "")]
+    rows += settings.rows()
+    _, configuration = settings.partner(path)
+    rows.append(("configuration file", str(configuration) if configuration else "none", _how(settings, configuration)))
+    width = max(len(name) for name, _, _ in rows)
+    value_width = max(len(value) for _, value, _ in rows)
+    lines = [f"{path}:"]
+    lines += [f"  {name:<{width}}  {value:<{value_width}}  {origin}".rstrip() for name, value, origin in rows]
+    return lines
+
+
+def _how(settings: FileSettings, configuration: Path | None) -> str:
+    if configuration is None:
+        return ""
+    if settings.config.value is not None:
+        return f"config ({settings.config.origin})"
+    return f"paired by config-pairing ({settings.config_pairing.origin})"
+
+
+def settings_failed(tool: str, error: SettingsError) -> NoReturn:
+    """A settings file that cannot be used ends the command with one line (exit 2)."""
+    click.echo(f"{tool}: {error}", err=True)
+    sys.exit(_SETTINGS_ERROR)
+
+
+class ProjectCommand(click.Command):
+    """A command whose options default to its table of the settings file, and then to the shared settings.
+
+    ``start(params)`` names where to look for the settings file (the program run,
+    the first path migrated). An option the user typed wins over the file.
+    ``tool`` names the command in a message (``mint-run``).
+    """
+
+    def __init__(
+        self, *args: Any, tool: str, table: str, start: Callable[[Mapping[str, Any]], Path], **kwargs: Any
+    ) -> None:
+        super().__init__(*args, **kwargs)
+        self.tool = tool
+        self.table = table
+        self.start = start
+
+    def invoke(self, ctx: click.Context) -> Any:
+        try:
+            project = project_for(self.start(ctx.params))
+            if project is not None:
+                ctx.params.update(self._defaults(ctx, project))
+        except SettingsError as error:
+            settings_failed(self.tool, error)
+        return super().invoke(ctx)
+
+    def _defaults(self, context: click.Context, project: ProjectSettings) -> dict[str, Any]:
+        options = {  # an eager option (--version) does its work as it is parsed: no setting can give it
+            name.removeprefix("--"): param
+            for param in self.params
+            if not param.is_eager
+            for name in param.opts
+            if name.startswith("--")
+        }
+        table = project.tool(self.table)
+        values: dict[str, Any] = {}
+        for key in _SHARED:
+            if key in options and key in project.values:
+                values[options[key].name or key] = str(project.values[key].value)
+        for key, value in table.values.items():
+            param = options.get(key)
+            if param is None or param.name is None:
+                raise table.error(f"unknown key (known: {', '.join(sorted(options))})", key)
+            values[param.name] = _converted(context, param, table, key, value)
+        return {name: value for name, value in values.items() if not typed(context, name)}
+
+
+def _converted(context: click.Context, param: click.Parameter, table: Table, key: str, value: object) -> Any:
+    """A table value as the option takes it typed (a flag: true or false; a repeatable option: a list); a path is
+    relative to the settings file's folder."""
+    if isinstance(param.type, click.types.BoolParamType):
+        if not isinstance(value, bool):
+            raise table.error("must be true or false", key)
+        return param.process_value(context, value)
+    items = value if isinstance(value, list) and param.multiple else [value]
+    if not all(isinstance(item, str | int | float) and not isinstance(item, bool) for item in items):
+        raise table.error("must be a string or a number" + (", or a list of them" if param.multiple else ""), key)
+    texts = [_relative(table, item) if isinstance(param.type, click.Path) else str(item) for item in items]
+    try:
+        return param.process_value(context, texts if param.multiple else texts[0])
+    except click.BadParameter as error:
+        raise table.error(error.message, key) from None
+
+
+def _relative(table: Table, value: object) -> str:
+    return str(table.path.parent / str(value))

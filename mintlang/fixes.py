@@ -1,0 +1,106 @@
+"""Applying the diagnostics' fixes to a text, as ``mint check --fix`` does.
+
+A finding is fixed automatically only when it is offered exactly one fix, and
+that fix is safe (``Fix.safe``) or unsafe fixes were asked for: where a finding
+is offered several (respell the name, or declare it), the choice is the
+author's. Fixes whose edits overlap are applied one per round, first in the
+text first; the text is checked again after each round and fixed again, until
+nothing more applies or ``MAX_ROUNDS`` have run (a fix that undoes another
+would otherwise loop for ever). A round after which a fixed finding is still
+there (the same code and message as often as before) is undone and tried again
+without that fix: a declaration that cannot declare its name is not written at
+all, rather than once a round.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Callable, Collection, Iterable, Sequence
+from dataclasses import dataclass
+
+from mintlang.diagnostics import Diagnostic, Edit, Fix
+
+MAX_ROUNDS = 10
+
+
+@dataclass(frozen=True, slots=True)
+class Fixed:
+    """A text after its fixes: what was fixed (in every round), what the final text still has."""
+
+    text: str
+    fixed: tuple[Diagnostic, ...]
+    remaining: tuple[Diagnostic, ...]
+    converged: bool  # False: fixes still applied after MAX_ROUNDS rounds
+
+
+def automatic_fix(diagnostic: Diagnostic, *, unsafe: bool) -> Fix | None:
+    """The fix ``--fix`` (with ``unsafe``: ``--unsafe-fixes``) applies to ``diagnostic``, if any."""
+    if len(diagnostic.fixes) != 1:
+        return None
+    [fix] = diagnostic.fixes
+    return fix if fix.safe or unsafe else None
+
+
+def _overlaps(edit: Edit, taken: Iterable[Edit]) -> bool:
+    """Two edits change the same text, or make the same insertion (two findings with one fix: one is enough).
+
+    Different insertions at one place are made in the order of their findings (a DIM for each
+    undeclared name, with the file's other DIMs).
+    """
+    return any(
+        (edit.span.start < other.span.end and other.span.start < edit.span.end)
+        or (edit.span == other.span and edit.text == other.text)
+        for other in taken
+    )
+
+
+_Key = tuple[str, str]  # a finding's code and message: what it is, wherever it moved
+
+
+def _key(diagnostic: Diagnostic) -> _Key:
+    return diagnostic.code, diagnostic.message
+
+
+def apply_once(
+    text: str, diagnostics: Sequence[Diagnostic], *, unsafe: bool, failed: Collection[_Key] = ()
+) -> tuple[str, list[Diagnostic]]:
+    """``text`` with every fix that overlaps no earlier one applied (none of a ``failed`` finding's)."""
+    taken: list[Edit] = []
+    fixed: list[Diagnostic] = []
+    for diagnostic in sorted(diagnostics, key=lambda d: (d.span.start, d.span.end, d.code)):
+        fix = automatic_fix(diagnostic, unsafe=unsafe)
+        if fix is None or _key(diagnostic) in failed or any(_overlaps(edit, taken) for edit in fix.edits):
+            continue
+        taken.extend(fix.edits)
+        fixed.append(diagnostic)
+    for _, edit in sorted(enumerate(taken), key=lambda pair: (pair[1].span.start, pair[0]), reverse=True):
+        text = text[: edit.span.start] + edit.text + text[edit.span.end :]  # the last first: offsets hold
+    return text, fixed
+
+
+def fix_text(text: str, check: Callable[[str], Sequence[Diagnostic]], *, unsafe: bool) -> Fixed:
+    """Fix ``text`` round after round, ``check`` finding what is left after each."""
+    diagnostics = check(text)
+    fixed: list[Diagnostic] = []
+    failed: set[_Key] = set()
+    for _ in range(MAX_ROUNDS):
+        changed, applied = apply_once(text, diagnostics, unsafe=unsafe, failed=failed)
+        if not applied:
+            return Fixed(text, tuple(fixed), tuple(diagnostics), converged=True)
+        found = check(changed)
+        still_there = _not_fixed(diagnostics, applied, found)
+        if still_there:
+            failed |= still_there  # undo the round; try it again without them
+            continue
+        text, diagnostics = changed, found
+        fixed.extend(applied)
+    still = any(automatic_fix(d, unsafe=unsafe) is not None and _key(d) not in failed for d in diagnostics)
+    return Fixed(text, tuple(fixed), tuple(diagnostics), converged=not still)
+
+
+def _not_fixed(before: Sequence[Diagnostic], applied: Sequence[Diagnostic], after: Sequence[Diagnostic]) -> set[_Key]:
+    """The findings whose fix left them as often as they were, less those fixed."""
+    expected = Counter(map(_key, before))
+    expected.subtract(map(_key, applied))
+    found = Counter(map(_key, after))
+    return {key for key in map(_key, applied) if found[key] > expected[key]}

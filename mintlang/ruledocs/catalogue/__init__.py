@@ -1,0 +1,16 @@
+"""What each code means, grouped by the kind of problem; one module a group."""
+
+from __future__ import annotations
+
+from mintlang.ruledocs.catalogue import addressing, flow, keywords, limits, names, suppression, syntax
+from mintlang.ruledocs.model import Group
+
+GROUPS: tuple[Group, ...] = (
+    syntax.GROUP,
+    keywords.GROUP,
+    addressing.GROUP,
+    names.GROUP,
+    flow.GROUP,
+    limits.GROUP,
+    suppression.GROUP,
+)

@@ -1,0 +1,86 @@
+"""Keywords used in a way their attributes or the controller do not allow."""
+
+from __future__ import annotations
+
+from mintlang.ruledocs.model import Example, FixSafety, Group, RuleDoc
+
+GROUP = Group(
+    "Keyword use",
+    "Each keyword of the v4 guide says whether it can be read, written or run as a command, which "
+    "controllers have it and what values it takes. These codes are uses the keyword does not allow.",
+    (
+        RuleDoc(
+            2000,
+            catches="A value assigned to a keyword that can only be read (`CAMINDEX = 4`) or that is a "
+            "command (`STOP = 1`).",
+            why="The keyword's attribute table says it cannot be written; the compiler refuses the "
+            "assignment, and the value the author meant to set is never set.",
+            example=Example(
+                before="CAMINDEX = 4\n",
+                after="DIM index\nindex = CAMINDEX\nPRINT index\n",
+            ),
+            manual=("v4:18905", "v4:5586"),
+            fix="Read the keyword, or set the parameter that does accept a value.",
+            safety=FixSafety.NONE,
+        ),
+        RuleDoc(
+            2002,
+            catches="A keyword that can only be written, read in an expression or a PRINT (`PRINT ACCELTIME`).",
+            why="Write-only keywords hold no value to read back; the compiler rejects the read.",
+            example=Example(
+                before='PRINT "Acceleration time is ", ACCELTIME\n',
+                after="ACCELTIME = 200\n",
+            ),
+            manual=("v4:18915", "v4:6212"),
+            fix="Keep the value in a variable when it has to be read back.",
+            safety=FixSafety.NONE,
+        ),
+        RuleDoc(
+            3,
+            catches="A constant value assigned to a keyword outside the range its entry gives "
+            "(`SCALE = -3`, `KPROP.0 = -1`). Only keywords whose value is not scaled are checked: for the "
+            "others the range applies after the scale factor, which is known only when the program runs.",
+            why="The controller raises the error when the line runs and stops the program (or calls "
+            "#ONERROR); the parameter keeps its old value.",
+            example=Example(
+                before="KPROP.0 = -1\n",
+                after="KPROP.0 = 1\n",
+            ),
+            manual=("v4:18518", "v4:4611", "v4:5586"),
+            fix="The right value comes from the machine, not from the program.",
+            safety=FixSafety.NONE,
+        ),
+        RuleDoc(
+            17,
+            catches="A keyword the target controller does not support (`CIRCLEA` on a MintDrive, "
+            "`AUTO` on a NextMove), according to the controllers its entry lists.",
+            why="The program may be correct for another controller; on this one the keyword fails. "
+            "Check the `--controller` option (or `mint.controller` in the editor) before changing the code.",
+            example=Example(
+                before="CIRCLEA[0,1] = 10, 10, 90\n",
+                after="MOVEA.0 = 10\nGO.0\n",
+                controller="mintdrive",
+            ),
+            manual=("v4:18570", "v4:8142"),
+            fix="The replacement depends on what the controller offers instead.",
+            safety=FixSafety.NONE,
+        ),
+        RuleDoc(
+            "W114",
+            catches="AUTO anywhere but as the very first command of the configuration file: after a REM, "
+            "after another statement, or in the program file.",
+            why="AUTO makes the controller run the configuration and the program at power-up only from "
+            "that first place; anywhere else it is silently ignored, and a machine meant to start on its "
+            "own waits at the prompt.",
+            example=Example(
+                before="REM start-up\nAUTO\n",
+                after="AUTO\nREM start-up\n",
+                controller="mintdrive",
+                with_program="PRINT 1\n",
+            ),
+            manual=("v4:6633",),
+            fix="Move AUTO to the first line of the configuration file.",
+            safety=FixSafety.NONE,
+        ),
+    ),
+)

@@ -1,0 +1,28 @@
+"""The checker's own comments: suppressions that silence nothing."""
+
+from __future__ import annotations
+
+from mintlang.ruledocs.model import Example, FixSafety, Group, RuleDoc
+
+GROUP = Group(
+    "Suppression comments",
+    "A REM comment can silence codes the author has looked at: `REM mint: ignore[W103]` on its line, "
+    "`REM mint: ignore-file[W103]` in its file. A suppression that silences nothing hides the next real "
+    "finding, so it is reported.",
+    (
+        RuleDoc(
+            "W117",
+            catches="A code named in a suppression comment that silences nothing on its line (or, for "
+            "ignore-file, in its file): the finding is gone, the code is not checked, or it is no code.",
+            why="A suppression outlives the finding it was written for; left in place, it would silence "
+            "the next such finding on that line without anyone looking at it.",
+            example=Example(
+                before="DIM count : REM mint: ignore[W103]\ncount = 1\nPRINT count\n",
+                after="DIM count\ncount = 1\nPRINT count\n",
+            ),
+            manual=("v4:15497",),
+            fix="Remove the code from the comment, or the comment when it names no other code.",
+            safety=FixSafety.SAFE,
+        ),
+    ),
+)

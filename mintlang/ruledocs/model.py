@@ -1,0 +1,86 @@
+"""What the documentation of one diagnostic code says, as data: ``mint rule``, the pages in
+``docs/rules/`` and the links from each diagnostic are all made from these records."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import StrEnum
+
+from mintlang import check_application
+from mintlang.codes import OWN_CODES, error_code
+from mintlang.diagnostics import Diagnostic
+from mintlang.keyworddb import database
+
+
+class FixSafety(StrEnum):
+    """Whether the checker's fix for a code can be applied without reading it."""
+
+    SAFE = "safe"  # the program means what it meant (or what it plainly meant): applied by --fix
+    UNSAFE = "unsafe"  # a guess at the author's intent, or a change of behaviour: review it
+    NONE = "none"  # no fix is offered: what to write depends on the program
+
+
+@dataclass(frozen=True, slots=True)
+class Example:
+    """A file that has the problem and the same file without it; a test checks both.
+
+    The file is a program, or with ``with_program`` a configuration file checked together
+    with that program."""
+
+    before: str
+    after: str
+    controller: str | None = None  # the controller the example is checked for; None: the default
+    with_program: str | None = None
+
+    def diagnostics(self, text: str, codes: tuple[str, ...]) -> tuple[Diagnostic, ...]:
+        """What the checker reports of ``codes`` in ``text`` (``before`` or ``after``) as this example places it."""
+        options = {"controller": self.controller} if self.controller is not None else {}
+        if self.with_program is None:
+            return check_application(text, select=codes, **options).program
+        return check_application(self.with_program, config=text, select=codes, **options).configuration
+
+
+@dataclass(frozen=True, slots=True)
+class RuleDoc:
+    """The documentation of one code.
+
+    ``key`` is the controller's error number (an int, however the code spells it) or the
+    toolchain's own code (``"W103"``); ``manual`` cites the guides by line of the project's
+    text extractions (``"v4:18920"``), shown to readers as sections.
+    """
+
+    key: int | str
+    catches: str
+    why: str
+    example: Example
+    manual: tuple[str, ...]
+    fix: str
+    safety: FixSafety
+
+    @property
+    def code(self) -> str:
+        """The code the checker reports (``E2016``, ``W103``)."""
+        return self.key if isinstance(self.key, str) else error_code(self.key)
+
+    @property
+    def title(self) -> str:
+        if isinstance(self.key, str):
+            return OWN_CODES[self.key]
+        return database().errors[self.key].title
+
+    @property
+    def severity(self) -> str:
+        """What the checker reports it as: the controller's errors are errors, save a RETURN it
+        only reaches by falling into a subroutine (2010), which may be a fragment's."""
+        if isinstance(self.key, int):
+            return "warning" if self.key == 2010 else "error"
+        return "warning" if self.key.startswith("W") else "info"
+
+
+@dataclass(frozen=True, slots=True)
+class Group:
+    """Codes about one kind of problem, documented together."""
+
+    name: str
+    summary: str
+    rules: tuple[RuleDoc, ...]

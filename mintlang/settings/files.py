@@ -1,0 +1,174 @@
+"""Finding and reading a settings file: ``mint.toml``, or ``[tool.mint]`` in ``pyproject.toml``.
+
+The file that applies to a Mint file is the nearest one in its folder or a
+folder above it, as ruff finds its own: in one folder ``mint.toml`` wins over
+``pyproject.toml``, and a ``pyproject.toml`` without a ``[tool.mint]`` table is
+passed over. ``tomllib`` gives no positions, so the line of each key is found
+by a scan of the text; a message names the line where the scan finds it.
+"""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+
+MINT_TOML = "mint.toml"
+PYPROJECT = "pyproject.toml"
+_PYPROJECT_TABLE = ("tool", "mint")
+
+_TOML_POSITION = re.compile(r"\s*\(at line (\d+), column (\d+)\)$")
+_KEY_PART = r'"(?:[^"\\]|\\.)*"|\'[^\']*\'|[A-Za-z0-9_-]+'
+_DOTTED = re.compile(rf"\s*({_KEY_PART})(?:\s*\.\s*({_KEY_PART}))*\s*")
+_PART = re.compile(_KEY_PART)
+
+
+class SettingsError(Exception):
+    """A settings file that cannot be used, said in one line with its place: ``mint.toml:4: select: ...``."""
+
+    def __init__(self, path: Path, message: str, *, line: int | None = None, key: str | None = None) -> None:
+        super().__init__(message)
+        self.path = path
+        self.line = line
+        self.key = key
+        self.message = message
+
+    def __str__(self) -> str:
+        place = str(self.path) if self.line is None else f"{self.path}:{self.line}"
+        return f"{place}: {self.key}: {self.message}" if self.key else f"{place}: {self.message}"
+
+
+@dataclass(frozen=True, slots=True)
+class Table:
+    """One table of a settings file, with the line each of its keys is on."""
+
+    path: Path
+    keys: tuple[str, ...]  # where the table is in the file: () in mint.toml, ("tool", "mint") in pyproject.toml
+    values: Mapping[str, object]
+    lines: Mapping[tuple[str, ...], int]  # full key path -> line of its first mention
+
+    def name(self, *keys: str) -> str:
+        """The dotted name a user reads in the file (``tool.mint.run.until-ms``, ``select``)."""
+        return ".".join(_quoted(key) for key in (*self.keys, *keys))
+
+    def line(self, *keys: str) -> int | None:
+        return self.lines.get((*self.keys, *keys))
+
+    def origin(self, *keys: str) -> str:
+        """Where a value was written: ``path:line``."""
+        line = self.line(*keys)
+        return str(self.path) if line is None else f"{self.path}:{line}"
+
+    def error(self, message: str, *keys: str) -> SettingsError:
+        return SettingsError(self.path, message, line=self.line(*keys), key=self.name(*keys))
+
+    def table(self, name: str) -> Table:
+        """The sub-table ``name`` (empty when absent); a value that is no table is an error."""
+        value = self.values.get(name, {})
+        if not isinstance(value, Mapping):
+            raise self.error("must be a table", name)
+        return Table(self.path, (*self.keys, name), value, self.lines)
+
+
+def _quoted(key: str) -> str:
+    return key if re.fullmatch(r"[A-Za-z0-9_-]+", key) else f'"{key}"'
+
+
+def _unquoted(part: str) -> str:
+    """A key as TOML reads it: a quoted key's escapes are TOML's own, so TOML reads them."""
+    return str(tomllib.loads(f"key = {part}")["key"]) if part[:1] in "\"'" else part
+
+
+def _parts(dotted: str) -> tuple[str, ...]:
+    return tuple(_unquoted(part) for part in _PART.findall(dotted))
+
+
+def key_lines(text: str) -> dict[tuple[str, ...], int]:
+    """The line (from 1) where each key path is first written, by a scan of table headers and ``key =`` lines."""
+    lines: dict[tuple[str, ...], int] = {}
+    table: tuple[str, ...] = ()
+    for number, line in enumerate(text.splitlines(), start=1):
+        stripped = line.strip()
+        header = re.fullmatch(r"\[\[?([^\[\]]*)\]\]?\s*(#.*)?", stripped)
+        if header is not None:
+            table = _parts(header.group(1))
+            for depth in range(1, len(table) + 1):
+                lines.setdefault(table[:depth], number)
+            continue
+        left, equals, _ = line.partition("=")
+        if equals and _DOTTED.fullmatch(left):
+            key = _parts(left)
+            for depth in range(1, len(key) + 1):
+                lines.setdefault((*table, *key[:depth]), number)
+    return lines
+
+
+_read: dict[Path, tuple[tuple[int, int], Table | None]] = {}  # a file's table while its size and time stay
+
+
+def read_settings(path: Path) -> Table | None:
+    """The mint table of a settings file; None for a ``pyproject.toml`` without ``[tool.mint]``.
+
+    A directory of many programs shares one file: it is read once while its
+    modification time and size stay the same. Raises SettingsError for a file
+    that cannot be read or is not TOML.
+    """
+    try:
+        status = path.stat()
+    except OSError as error:
+        raise SettingsError(path, f"cannot read: {error.strerror or error}") from None
+    stamp = (status.st_mtime_ns, status.st_size)
+    kept = _read.get(path)
+    if kept is not None and kept[0] == stamp:
+        return kept[1]
+    table = _parse(path)
+    _read[path] = (stamp, table)
+    return table
+
+
+def _parse(path: Path) -> Table | None:
+    try:
+        text = path.read_bytes().decode("utf-8")
+        document = tomllib.loads(text)
+    except OSError as error:
+        raise SettingsError(path, f"cannot read: {error.strerror or error}") from None
+    except UnicodeDecodeError:
+        raise SettingsError(path, "not UTF-8 text, as TOML must be") from None
+    except tomllib.TOMLDecodeError as error:
+        message = str(error)
+        position = _TOML_POSITION.search(message)
+        line = int(position.group(1)) if position else None
+        raise SettingsError(path, f"not valid TOML: {_TOML_POSITION.sub('', message)}", line=line) from None
+    if path.name != PYPROJECT:
+        return Table(path, (), document, key_lines(text))
+    table: object = document
+    for key in _PYPROJECT_TABLE:
+        if not isinstance(table, Mapping) or key not in table:
+            return None
+        table = table[key]
+    lines = key_lines(text)
+    if not isinstance(table, Mapping):
+        raise SettingsError(path, "must be a table", line=lines.get(_PYPROJECT_TABLE), key="tool.mint")
+    return Table(path, _PYPROJECT_TABLE, table, lines)
+
+
+def find_settings(start: Path) -> Table | None:
+    """The settings of the nearest folder at or above ``start`` (a file's folder, or a folder) that has some.
+
+    Raises SettingsError for the nearest settings file if it cannot be used: a
+    broken file is never passed over for one further up, which would apply
+    settings its author did not mean.
+    """
+    folder = start.absolute()
+    if not folder.is_dir():
+        folder = folder.parent
+    for candidate in (folder, *folder.parents):
+        for name in (MINT_TOML, PYPROJECT):
+            path = candidate / name
+            if path.is_file():
+                table = read_settings(path)
+                if table is not None:
+                    return table
+    return None

@@ -1,0 +1,254 @@
+"""What applies to one Mint file: the defaults, its settings file, then the command line (or the editor).
+
+Each value keeps where it came from (``default``, ``mint.toml:3``,
+``--select``), which ``mint check --show-settings`` prints. Codes are
+selected with ruff's words: ``select`` is the set of codes checked (the
+command line's replaces the file's, and the file's ``extend-select`` with it),
+``extend-select`` adds to it, and every ``ignore`` applies, the file's and
+the command line's, as do the ``per-file-ignores`` whose glob matches the
+file: an ignore written in the project stays ignored whatever is selected.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field, replace
+from fnmatch import fnmatchcase
+from pathlib import Path
+from typing import Generic, TypeVar
+
+from mintlang.analysis.analyser import DEFAULT_SELECT
+from mintlang.codes import selector
+from mintlang.dialect import Dialect
+from mintlang.keyworddb.model import Controller
+from mintlang.pairing import CONFIGURATION_SUFFIX, DEFAULT_PATTERN, Pairing, partner_on_disk
+from mintlang.semantic.units import Unit
+from mintlang.settings.files import Table
+
+T = TypeVar("T")
+DEFAULT = "default"
+TOOL_TABLES = ("run", "migrate")  # each tool's own options, read by the tool
+
+
+@dataclass(frozen=True, slots=True)
+class Given(Generic[T]):
+    """A value and where it came from."""
+
+    value: T
+    origin: str = DEFAULT
+
+
+def selectors(items: object) -> tuple[str, ...]:
+    """Codes or code prefixes as ``--select`` reads them (``mintlang.codes.selector``).
+
+    Raises ValueError for one that selects nothing, TypeError for something other than a list of strings.
+    """
+    if not isinstance(items, list | tuple) or not all(isinstance(item, str) for item in items):
+        raise TypeError('must be a list of codes or code prefixes, such as ["E2", "W103"]')
+    return tuple(selector(item) for item in items if item.strip())
+
+
+def _choice(kind: type[Controller] | type[Dialect]) -> Callable[[object], Controller | Dialect]:
+    def convert(value: object) -> Controller | Dialect:
+        choices = [member.value for member in kind]
+        if value not in choices:
+            raise ValueError(f"{value!r} is not one of {', '.join(choices)}")
+        return kind(value)
+
+    return convert
+
+
+def _pairing(value: object) -> str | None:
+    """``config-pairing``: a name with ``<name>`` in it, or false for no pairing."""
+    if value is False:
+        return None
+    if not isinstance(value, str):
+        raise TypeError('must be a file name with <name> in it (such as "<name>.cfg"), or false')
+    if Pairing.from_pattern(value) is None:
+        raise ValueError(f"{value!r} has no <name>: write false to turn pairing off")
+    return value
+
+
+def _path(value: object) -> str:
+    if not isinstance(value, str) or not value:
+        raise TypeError("must be the path of a configuration file")
+    return value
+
+
+_CONVERTERS: dict[str, Callable[[object], object]] = {
+    "controller": _choice(Controller),
+    "dialect": _choice(Dialect),
+    "select": selectors,
+    "extend-select": selectors,
+    "ignore": selectors,
+    "config-pairing": _pairing,
+    "config": _path,
+}
+KNOWN_KEYS = (*_CONVERTERS, "per-file-ignores", *TOOL_TABLES)
+
+
+@dataclass(frozen=True, slots=True)
+class ProjectSettings:
+    """One settings file's ``[tool.mint]`` (or ``mint.toml``), checked and converted."""
+
+    table: Table
+    values: Mapping[str, Given[object]]
+    per_file_ignores: tuple[tuple[str, Given[tuple[str, ...]]], ...]  # glob -> codes
+
+    @property
+    def folder(self) -> Path:
+        """What relative paths and globs in the file are relative to."""
+        return self.table.path.parent
+
+    @classmethod
+    def from_table(cls, table: Table) -> ProjectSettings:
+        """Raises SettingsError at the first key that is unknown or has a bad value."""
+        unknown = [key for key in table.values if key not in KNOWN_KEYS]
+        if unknown:
+            raise table.error(f"unknown key (known: {', '.join(KNOWN_KEYS)})", unknown[0])
+        values = {key: Given(_converted(table, key, convert), table.origin(key)) for key, convert in _converts(table)}
+        if "config" in values:
+            values["config"] = Given(table.path.parent / str(values["config"].value), values["config"].origin)
+        for name in TOOL_TABLES:
+            table.table(name)  # each tool checks its own keys; this checks that it is a table
+        ignores = table.table("per-file-ignores")
+        globs = tuple(
+            (glob, Given(_converted(ignores, glob, selectors), ignores.origin(glob))) for glob in ignores.values
+        )
+        return cls(table, values, globs)
+
+    def tool(self, name: str) -> Table:
+        """A tool's own table (``run``, ``migrate``)."""
+        return self.table.table(name)
+
+
+def _converts(table: Table) -> list[tuple[str, Callable[[object], object]]]:
+    return [(key, convert) for key, convert in _CONVERTERS.items() if key in table.values]
+
+
+def _converted(table: Table, key: str, convert: Callable[[object], object]) -> object:
+    try:
+        return convert(table.values[key])
+    except (TypeError, ValueError) as error:
+        raise table.error(str(error), key) from None
+
+
+@dataclass(frozen=True, slots=True)
+class FileSettings:
+    """What applies to one file, each value with its origin."""
+
+    controller: Given[Controller] = Given(Controller.NEXTMOVE_PCI)
+    dialect: Given[Dialect] = Given(Dialect.V4)
+    select: Given[tuple[str, ...] | None] = Given(None)
+    extend_select: Given[tuple[str, ...]] = Given(())
+    ignore: Given[tuple[str, ...]] = Given(())
+    per_file_ignores: tuple[tuple[str, Given[tuple[str, ...]]], ...] = ()  # the globs that match the file
+    config_pairing: Given[str | None] = Given(DEFAULT_PATTERN)
+    config: Given[Path | None] = Given(None)
+    project: ProjectSettings | None = field(default=None, compare=False)
+
+    @property
+    def selected(self) -> tuple[str, ...] | None:
+        """The codes and prefixes checked; None: the analyser's default (errors and warnings)."""
+        if not self.extend_select.value:
+            return self.select.value
+        return (*(self.select.value or DEFAULT_SELECT), *self.extend_select.value)
+
+    @property
+    def ignored(self) -> tuple[str, ...]:
+        return (*self.ignore.value, *(code for _, given in self.per_file_ignores for code in given.value))
+
+    @property
+    def pairing(self) -> str | None:
+        """The pairing pattern in force; None when a configuration file is named outright or pairing is off."""
+        return None if self.config.value is not None else self.config_pairing.value
+
+    def partner(self, path: Path) -> tuple[Unit, Path | None]:
+        """Which file of its application ``path`` is, and the other one: for a program, the configuration it sees
+        (``config``, else the file ``config-pairing`` names beside it if there is one); for a configuration file
+        named ``*.cfg`` or as the pairing names it, its program if there is one."""
+        configuration = path.suffix.lower() == CONFIGURATION_SUFFIX
+        if self.config.value is not None:
+            return (Unit.CONFIGURATION, None) if configuration else (Unit.PROGRAM, self.config.value)
+        unit, other = partner_on_disk(path, self.pairing) if self.pairing is not None else (Unit.PROGRAM, None)
+        return (Unit.CONFIGURATION if configuration else unit), other
+
+    def rows(self) -> list[tuple[str, str, str]]:
+        """(setting, value, origin) for each setting, as ``--show-settings`` lists them."""
+        selected = self.selected
+        rows = [
+            ("controller", self.controller.value.value, self.controller.origin),
+            ("dialect", self.dialect.value.value, self.dialect.origin),
+            ("select", _listed(self.select.value, DEFAULT_SELECT), self.select.origin),
+            ("extend-select", _listed(self.extend_select.value), self.extend_select.origin),
+            ("ignore", _listed(self.ignore.value), self.ignore.origin),
+            *(
+                ("per-file-ignores", f"{glob}: {_listed(given.value)}", given.origin)
+                for glob, given in self.per_file_ignores
+            ),
+            ("config-pairing", _pairing_shown(self.config_pairing.value), self.config_pairing.origin),
+            ("config", str(self.config.value) if self.config.value else "none", self.config.origin),
+        ]
+        if selected != self.select.value:
+            rows.insert(5, ("codes checked", _listed(selected), "select + extend-select"))
+        return rows
+
+
+def _listed(codes: tuple[str, ...] | None, default: tuple[str, ...] = ()) -> str:
+    return ", ".join(codes if codes is not None else default) or "none"
+
+
+def _pairing_shown(pattern: str | None) -> str:
+    return "off" if pattern is None else pattern
+
+
+@dataclass(frozen=True, slots=True)
+class Overrides:
+    """What the command line (or the editor) says, above the settings file; None: not said."""
+
+    controller: Given[Controller] | None = None
+    dialect: Given[Dialect] | None = None
+    select: Given[tuple[str, ...]] | None = None
+    extend_select: Given[tuple[str, ...]] | None = None
+    ignore: Given[tuple[str, ...]] | None = None
+    config_pairing: Given[str | None] | None = None
+    config: Given[Path | None] | None = None
+
+
+def resolve(path: Path, project: ProjectSettings | None, overrides: Overrides) -> FileSettings:
+    """The settings for ``path``: the defaults, then ``project`` (its settings file), then ``overrides``."""
+    settings = FileSettings() if project is None else _from_project(path, project)
+    changes: dict[str, object] = {
+        name: given
+        for name in ("controller", "dialect", "select", "extend_select", "config_pairing", "config")
+        if (given := getattr(overrides, name)) is not None
+    }
+    if overrides.select is not None and overrides.extend_select is None:
+        changes["extend_select"] = Given((), overrides.select.origin)  # the command line's select is the whole set
+    if overrides.ignore is not None:
+        changes["ignore"] = Given(
+            (*settings.ignore.value, *overrides.ignore.value), _joined(settings.ignore, overrides.ignore)
+        )
+    return replace(settings, **changes)
+
+
+def _joined(first: Given[tuple[str, ...]], second: Given[tuple[str, ...]]) -> str:
+    return second.origin if not first.value else f"{first.origin}, {second.origin}"
+
+
+def _from_project(path: Path, project: ProjectSettings) -> FileSettings:
+    values = project.values
+    changes = {key.replace("-", "_"): given for key, given in values.items()}
+    matched = tuple((glob, given) for glob, given in project.per_file_ignores if _matches(glob, path, project.folder))
+    return FileSettings(**changes, per_file_ignores=matched, project=project)  # type: ignore[arg-type]
+
+
+def _matches(glob: str, path: Path, folder: Path) -> bool:
+    """A ``per-file-ignores`` glob against the path relative to the settings file's folder, or the file's name;
+    without regard to case, as Mint's file names are compared. ``*`` matches across folders."""
+    pattern = glob.lower()
+    try:
+        relative = path.absolute().relative_to(folder.absolute()).as_posix().lower()
+    except ValueError:
+        relative = None
+    return fnmatchcase(path.name.lower(), pattern) or (relative is not None and fnmatchcase(relative, pattern))

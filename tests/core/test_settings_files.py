@@ -1,0 +1,87 @@
+"""Finding and reading the settings file: the nearest above a file, ``mint.toml`` before ``pyproject.toml``, the
+line of each key for messages, a file read again once it changes."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from mintlang.settings import SettingsError, settings_for
+from mintlang.settings.files import find_settings, key_lines
+
+
+def write(path: Path, text: str) -> Path:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_key_lines_follow_tables_dotted_and_quoted_keys() -> None:
+    text = (
+        "# settings\n"  # 1
+        'controller = "mintdrive"\n'  # 2
+        "[ tool . mint ]\n"  # 3
+        'select = ["E",\n'  # 4
+        '  "W"]\n'  # 5
+        "run.until-ms = 5\n"  # 6
+        "[tool.mint.per-file-ignores]\n"  # 7
+        '"legacy/*.mnt" = ["W103"]\n'  # 8
+        "'raw.mnt' = []\n"  # 9
+        "[[tool.other]]\n"  # 10
+        "x = 1\n"  # 11
+    )
+    lines = key_lines(text)
+    assert lines[("controller",)] == 2
+    assert lines[("tool", "mint")] == 3
+    assert lines[("tool", "mint", "select")] == 4
+    assert lines[("tool", "mint", "run", "until-ms")] == 6
+    assert lines[("tool", "mint", "per-file-ignores", "legacy/*.mnt")] == 8
+    assert lines[("tool", "mint", "per-file-ignores", "raw.mnt")] == 9
+    assert lines[("tool", "other", "x")] == 11
+    assert ("W",) not in lines  # an array's continuation is no key
+
+
+def test_the_nearest_folder_with_settings_wins(tmp_path: Path) -> None:
+    outer = write(tmp_path / "mint.toml", "")
+    write(tmp_path / "a" / "pyproject.toml", '[project]\nname = "a"\n')  # no [tool.mint]: passed over
+    inner = write(tmp_path / "a" / "b" / "pyproject.toml", "[tool.mint]\n")
+    assert find_settings(tmp_path / "a" / "x.mnt").path == outer
+    assert find_settings(tmp_path / "a" / "b" / "c" / "x.mnt").path == inner
+    beside = write(tmp_path / "a" / "b" / "mint.toml", "")
+    assert find_settings(tmp_path / "a" / "b" / "x.mnt").path == beside
+
+
+def test_a_folder_is_searched_from_itself(tmp_path: Path) -> None:
+    settings = write(tmp_path / "line" / "mint.toml", "")
+    assert find_settings(tmp_path / "line").path == settings
+
+
+def test_a_changed_file_is_read_again(tmp_path: Path) -> None:
+    settings = write(tmp_path / "mint.toml", 'controller = "mintdrive"\n')
+    program = tmp_path / "a.mnt"
+    assert settings_for(program).controller.value == "mintdrive"
+    settings.write_text('controller = "nextmove-bx"\n', encoding="utf-8")
+    assert settings_for(program).controller.value == "nextmove-bx"
+
+
+def test_a_file_that_is_not_utf8_is_an_error_naming_it(tmp_path: Path) -> None:
+    settings = tmp_path / "mint.toml"
+    settings.write_bytes(b'controller = "caf\xe9"\n')
+    with pytest.raises(SettingsError) as raised:
+        settings_for(tmp_path / "a.mnt")
+    assert str(raised.value) == f"{settings.absolute()}: not UTF-8 text, as TOML must be"
+
+
+def test_tool_mint_that_is_no_table_is_an_error(tmp_path: Path) -> None:
+    settings = write(tmp_path / "pyproject.toml", '[tool]\nmint = "yes"\n')
+    with pytest.raises(SettingsError) as raised:
+        settings_for(tmp_path / "a.mnt")
+    assert str(raised.value) == f"{settings.absolute()}:2: tool.mint: must be a table"
+
+
+def test_config_is_relative_to_the_settings_file_and_origins_name_the_line(tmp_path: Path) -> None:
+    settings = write(tmp_path / "mint.toml", '\nconfig = "shared/line.cfg"\n')
+    applied = settings_for(tmp_path / "cells" / "a.mnt")
+    assert applied.config.value == tmp_path.absolute() / "shared" / "line.cfg"
+    assert applied.config.origin == f"{settings.absolute()}:2"

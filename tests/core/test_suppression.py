@@ -1,0 +1,129 @@
+"""Suppression comments: ``REM mint: ignore[...]`` silences codes on its line, ``ignore-file`` in its file."""
+
+from __future__ import annotations
+
+import pytest
+
+from mintlang import check, check_application, parse
+from mintlang.analysis.suppression import suppression_fix
+from mintlang.diagnostics import Diagnostic, LineIndex
+
+
+def found(source: str, **options: object) -> list[tuple[str, int]]:
+    return [(d.code, LineIndex(source).position(d.span.start).line) for d in check(source, **options)]  # type: ignore[arg-type]
+
+
+def fixed(source: str, diagnostic: Diagnostic) -> str:
+    [fix] = diagnostic.fixes
+    for edit in sorted(fix.edits, key=lambda e: e.span.start, reverse=True):
+        source = source[: edit.span.start] + edit.text + source[edit.span.end :]
+    return source
+
+
+@pytest.mark.parametrize(
+    ("source", "left"),
+    [
+        pytest.param("DIM a : REM mint: ignore[W103]\nDIM b\n", [("W103", 2)], id="after-a-statement"),
+        pytest.param("DIM a REM mint: ignore[W103]\n", [], id="without-a-colon"),
+        pytest.param("DIM a : rem MINT: IGNORE[w103]\n", [], id="any-case"),
+        pytest.param("DIM a : REM mint: ignore[W103] kept for the HMI\n", [], id="words-after-it"),
+        pytest.param("DIM a : REM mint:ignore[ W111 , W103 ]\n", [("W117", 1)], id="several-codes"),
+        pytest.param("REM mint: ignore[W103]\nDIM a\n", [("W117", 1), ("W103", 2)], id="not-the-next-line"),
+        pytest.param("DIM a\nDIM b\nREM mint: ignore-file[W103]\n", [], id="whole-file"),
+        pytest.param("DIM a : REM note mint: ignore[W103]\n", [("W103", 1)], id="not-the-first-words"),
+        pytest.param('DIM a : PRINT "REM mint: ignore[W103]"\n', [("W103", 1)], id="in-a-string"),
+        pytest.param("DIM a : REM mint: ignore[W1]\n", [("W117", 1), ("W103", 1)], id="no-prefixes"),
+    ],
+)
+def test_what_a_comment_silences(source: str, left: list[tuple[str, int]]) -> None:
+    assert sorted(found(source)) == sorted(left)
+
+
+@pytest.mark.parametrize("written", ["E2", "E0002", "e2"])
+def test_an_error_is_named_in_either_spelling(written: str) -> None:
+    """E2 names error 2 exactly here: a suppression names codes, never prefixes."""
+    assert found("SPEED.12 = 1\n", controller="nextmove-bx") == [("E0002", 1)]
+    assert found(f"SPEED.12 = 1 : REM mint: ignore[{written}]\n", controller="nextmove-bx") == []
+
+
+def test_a_configuration_files_comment_silences_its_own_findings() -> None:
+    analysis = check_application("PRINT 1\n", config="DIM spare : REM mint: ignore[W103]\nDIM other\n")
+    assert [d.code for d in analysis.configuration] == ["W103"]  # 'other' on line 2
+
+
+@pytest.mark.parametrize(
+    ("source", "message"),
+    [
+        ("DIM a : REM mint: ignore[W103]\nPRINT a\n", "unused suppression: no W103 on this line"),
+        ("PRINT 1\nREM mint: ignore-file[W111]\n", "unused suppression: no W111 in this file"),
+        ("PRINT 1 : REM mint: ignore[X9]\n", "unused suppression: 'X9' is no code"),
+        ("SPEED[0] = 1 : REM mint: ignore[I201]\n", "unused suppression: I201 is not checked"),
+    ],
+)
+def test_an_unused_suppression_says_why(source: str, message: str) -> None:
+    [diagnostic] = [d for d in check(source) if d.code == "W117"]
+    assert diagnostic.message == message
+    assert diagnostic.fixes[0].safe
+
+
+def test_a_suppression_of_a_selected_hint_is_used() -> None:
+    source = "SPEED[0] = 1 : REM mint: ignore[I201]\n"
+    assert check_application(source, select=("E", "W", "I")).program == ()
+
+
+def test_an_unused_suppression_can_itself_be_silenced() -> None:
+    assert found("PRINT 1 : REM mint: ignore[W103, W117]\n") == []
+
+
+@pytest.mark.parametrize(
+    ("source", "after"),
+    [
+        pytest.param("DIM a : REM mint: ignore[W103]\nPRINT a\n", "DIM a\nPRINT a\n", id="after-a-statement"),
+        pytest.param("  REM mint: ignore[W103]\nPRINT 1\n", "\nPRINT 1\n", id="own-line"),
+        pytest.param("PRINT 1 : REM mint: ignore[W103] why\n", "PRINT 1 : REM why\n", id="words-stay"),
+    ],
+)
+def test_the_fix_removes_a_comment_that_names_nothing_else(source: str, after: str) -> None:
+    [diagnostic] = [d for d in check(source) if d.code == "W117"]
+    assert fixed(source, diagnostic) == after
+
+
+@pytest.mark.parametrize(
+    ("comment", "after"),
+    [
+        pytest.param("ignore[W111, W103]", "ignore[W103]", id="first"),
+        pytest.param("ignore[W103,W111]", "ignore[W103]", id="last"),
+        pytest.param("ignore[W103, W111, W102]", "ignore[W103, W102]", id="middle"),
+    ],
+)
+def test_the_fix_takes_one_code_out_of_a_list(comment: str, after: str) -> None:
+    source = f"DIM a : REM mint: {comment}\n"
+    [w111] = [d for d in check(source) if d.code == "W117" and "W111" in d.message]
+    assert fixed(source, w111) == f"DIM a : REM mint: {after}\n"
+
+
+PROGRAMS = [
+    "DIM total\n",
+    "DIM total : REM running sum\n",
+    "count = 1\nPRINT count\n",
+    "GOSUB missing\nEND\n",
+    "SPEED[0] = 10 : REM mint: ignore[W111]\n",
+    "#lbl\nRETURN\n",
+    "PRINT “hi”\nDIM x\n",
+]
+
+
+@pytest.mark.parametrize("source", PROGRAMS)
+def test_ignoring_each_finding_on_its_line_leaves_no_finding_of_its_code_there(source: str) -> None:
+    """The editor's "Ignore ... on this line", applied finding by finding, silences each and is used."""
+    for diagnostic in check(source):
+        if diagnostic.code == "W117":
+            continue
+        line = LineIndex(source).position(diagnostic.span.start).line
+        fix = suppression_fix(parse(source), diagnostic.span.start, diagnostic.code)
+        changed = source
+        for edit in fix.edits:
+            changed = changed[: edit.span.start] + edit.text + changed[edit.span.end :]
+        remaining = found(changed)
+        assert (diagnostic.code, line) not in remaining, changed
+        assert ("W117", line) not in remaining, changed

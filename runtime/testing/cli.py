@@ -1,0 +1,103 @@
+"""``mint test``: run every Mint program under the given paths that carries its own checks.
+
+Exit status: 0 when every test passed, 1 when one failed or could not be
+judged, 2 for a usage problem or a path that cannot be read (the other tests
+still run), 5 when no test was found (as pytest does).
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+from functools import partial
+from pathlib import Path
+from typing import NoReturn
+
+import click
+
+from mintlang.cli.options import (
+    HELP_OPTIONS,
+    color_option,
+    exit_zero_option,
+    format_option,
+    output_file_option,
+    version_option,
+)
+from mintlang.cli.parallel import all_cores, map_in_order
+from mintlang.cli.terminal import console, destination
+from mintlang.dialect import Dialect
+from mintlang.runtime.dialects import SIMULATED
+from mintlang.runtime.testing import reports
+from mintlang.runtime.testing.discovery import discover
+from mintlang.runtime.testing.running import Options, Verdict, run_case
+
+PASSED, FAILED, USAGE, NO_TESTS = 0, 1, 2, 5
+
+
+@click.command("test", context_settings=HELP_OPTIONS)
+@click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
+@click.option("--controller", help="The controller to simulate (default: the settings file's, else the dialect's).")
+@click.option(
+    "--dialect",
+    type=click.Choice([dialect.value for dialect in SIMULATED]),
+    help="The language of the programs (default: each program's settings file's, else v4).",
+)
+@click.option("--until-ms", type=click.IntRange(min=1), help="End each run after this much simulated time.")
+@click.option(
+    "--max-wall-s",
+    type=click.FloatRange(min=0, min_open=True),
+    default=60.0,
+    show_default=True,
+    help="Stop a run that takes longer than this on the wall clock (it fails).",
+)
+@click.option("--drives", type=click.Choice(["disabled", "enabled"]), default="disabled", show_default=True)
+@click.option("-j", "--jobs", type=click.IntRange(min=1), help="Tests run at once (default: every core).")
+@format_option(["text", "junit", "json"])
+@output_file_option()
+@exit_zero_option("Exit 0 even when a test fails.")
+@color_option()
+@version_option("mint test")
+def test(  # noqa: PLR0917 - click passes every option as an argument
+    paths: tuple[Path, ...],
+    controller: str | None,
+    dialect: str | None,
+    until_ms: int | None,
+    max_wall_s: float,
+    drives: str,
+    jobs: int | None,
+    output_format: str,
+    output_file: Path | None,
+    exit_zero: bool,
+    color: str,
+) -> None:
+    """Run the Mint programs under PATHS (default: the current folder) that have REM @expect lines or a
+    scenario file beside them (cell.scenario.toml for cell.mnt), and report which passed."""
+    cases, unreadable = discover(paths or (Path(),))
+    errors = console(color, stderr=True)
+    for problem in unreadable:
+        errors.print(f"mint test: {problem.path}: {problem.reason}", markup=False)
+    if not cases:
+        errors.print("mint test: no tests found (programs with REM @expect lines or a .scenario.toml beside them)")
+        sys.exit(USAGE if unreadable else NO_TESTS)
+    options = Options(controller, Dialect(dialect) if dialect else None, until_ms, max_wall_s, drives == "enabled")
+    began = time.perf_counter()
+    results = map_in_order(
+        partial(run_case, options=options), cases, workers=jobs or all_cores(), progress=errors, description="testing"
+    )
+    seconds = time.perf_counter() - began
+    with destination(output_file, _fail) as stream:
+        if output_format == "junit":
+            stream.write(reports.junit(results, seconds))
+        elif output_format == "json":
+            stream.write(reports.as_json(results, seconds))
+        else:
+            reports.text(results, seconds, console(color if output_file is None else "never", file=stream))
+    if unreadable:
+        sys.exit(USAGE)
+    passed = all(result.verdict is Verdict.PASSED for result in results)
+    sys.exit(PASSED if passed or exit_zero else FAILED)
+
+
+def _fail(message: str) -> NoReturn:
+    click.echo(f"mint test: {message}", err=True)
+    sys.exit(USAGE)

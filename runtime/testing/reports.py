@@ -1,0 +1,111 @@
+"""What ``mint test`` writes: a line per test and a summary on a terminal, or JUnit XML, or JSON."""
+
+from __future__ import annotations
+
+import json
+from collections import Counter
+from collections.abc import Sequence
+from dataclasses import asdict
+from xml.etree import ElementTree
+
+from rich.console import Console
+from rich.text import Text
+
+from mintlang.runtime.testing.running import TestResult, Verdict
+
+_STYLE = {Verdict.PASSED: "green", Verdict.FAILED: "bold red", Verdict.ERROR: "bold yellow"}
+
+
+def summary(results: Sequence[TestResult], seconds: float) -> str:
+    """``3 passed, 1 failed, 1 error in 2.41 s``, the verdicts in a fixed order, only those that occur."""
+    counts = Counter(result.verdict for result in results)
+    parts = [f"{counts[verdict]} {_word(verdict, counts[verdict])}" for verdict in Verdict if counts[verdict]]
+    return f"{', '.join(parts) or 'no tests ran'} in {seconds:.2f} s"
+
+
+def _word(verdict: Verdict, count: int) -> str:
+    return "errors" if verdict is Verdict.ERROR and count != 1 else verdict.value
+
+
+def text(results: Sequence[TestResult], seconds: float, console: Console) -> None:
+    for result in results:
+        line = Text(f"{result.verdict.value.upper():6} ", style=_STYLE[result.verdict])
+        line.append(result.case.name)
+        if result.verdict is not Verdict.PASSED:
+            line.append(f"  {_why(result)}", style="dim")
+        console.print(line, highlight=False)
+        for check in result.checks:
+            if not check.held:
+                detail = f" ({check.detail})" if check.detail else ""
+                console.print(
+                    f"    {check.what} at {check.when}: expected {check.expected}, got {check.actual}{detail}"
+                    f" [{check.origin}]",
+                    highlight=False,
+                    markup=False,
+                )
+    console.print(Text(summary(results, seconds), style="bold"), highlight=False)
+
+
+def _why(result: TestResult) -> str:
+    if result.verdict is Verdict.ERROR:
+        return result.message
+    failed = sum(not check.held for check in result.checks)
+    if failed:
+        return f"{failed} of {len(result.checks)} expectations failed"
+    return f"stopped {result.stopped}" + (f": {result.message}" if result.message else "")
+
+
+def junit(results: Sequence[TestResult], seconds: float) -> str:
+    """The JUnit XML CI servers read: one testsuite, a testcase per program (classname its folder)."""
+    counts = Counter(result.verdict for result in results)
+    suites = ElementTree.Element("testsuites")
+    suite = ElementTree.SubElement(
+        suites,
+        "testsuite",
+        name="mint test",
+        tests=str(len(results)),
+        failures=str(counts[Verdict.FAILED]),
+        errors=str(counts[Verdict.ERROR]),
+        skipped="0",
+        time=f"{seconds:.3f}",
+    )
+    for result in results:
+        program = result.case.program
+        case = ElementTree.SubElement(
+            suite, "testcase", classname=str(program.parent), name=program.name, time=f"{result.seconds:.3f}"
+        )
+        if result.verdict is Verdict.FAILED:
+            failure = ElementTree.SubElement(case, "failure", message=_why(result), type="expectation")
+            failure.text = "\n".join(_failed_lines(result))
+        elif result.verdict is Verdict.ERROR:
+            ElementTree.SubElement(case, "error", message=result.message, type="error")
+    ElementTree.indent(suites)
+    return ElementTree.tostring(suites, encoding="unicode", xml_declaration=True) + "\n"
+
+
+def _failed_lines(result: TestResult) -> list[str]:
+    lines = [
+        f"{check.what} at {check.when}: expected {check.expected}, got {check.actual} [{check.origin}]"
+        for check in result.checks
+        if not check.held
+    ]
+    return lines or [f"stopped {result.stopped}: {result.message}"]
+
+
+def as_json(results: Sequence[TestResult], seconds: float) -> str:
+    tests = [
+        {
+            "program": str(result.case.program),
+            "scenario": str(result.case.scenario) if result.case.scenario else None,
+            "verdict": result.verdict.value,
+            "stopped": result.stopped,
+            "message": result.message,
+            "simulated_ms": result.simulated_ms,
+            "seconds": round(result.seconds, 3),
+            "checks": [asdict(check) for check in result.checks],
+        }
+        for result in results
+    ]
+    counts = Counter(result.verdict.value for result in results)
+    body = {"summary": {verdict.value: counts[verdict.value] for verdict in Verdict}, "tests": tests}
+    return json.dumps({**body, "seconds": round(seconds, 3)}, indent=2) + "\n"

@@ -1,0 +1,120 @@
+"""Running one test: the program (its configuration first) under its scenario, judged as ``mint-run --expect``."""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from enum import StrEnum
+
+from mintlang.dialect import Dialect
+from mintlang.runtime.hardware import machine
+from mintlang.runtime.run import run_source
+from mintlang.runtime.scenario import Outcome, Scenario, ScenarioFileError, expectations_pass, load_scenario
+from mintlang.runtime.scenario.stimulus import DrivesEnabled, merge
+from mintlang.runtime.simulation import Limits
+from mintlang.runtime.testing.discovery import TestCase
+from mintlang.semantic.units import Unit
+from mintlang.settings import FileSettings, SettingsError, settings_for
+from mintlang.settings.model import DEFAULT
+from mintlang.source import read_source
+
+
+class Verdict(StrEnum):
+    PASSED = "passed"
+    FAILED = "failed"  # an expectation did not hold, or the run stopped as none asked
+    ERROR = "error"  # the test could not be judged: a file unreadable, no expectation, the program refused
+
+
+@dataclass(frozen=True, slots=True)
+class Check:
+    """One expectation as the report shows it."""
+
+    what: str
+    when: str
+    expected: str
+    actual: str
+    held: bool
+    origin: str
+    detail: str
+
+
+@dataclass(frozen=True, slots=True)
+class TestResult:
+    case: TestCase
+    verdict: Verdict
+    stopped: str  # why the run ended (end, error, deadlock …), or "" when it never ran
+    message: str  # the stop's message, or why the test is an error
+    checks: tuple[Check, ...]
+    simulated_ms: int
+    seconds: float
+
+
+@dataclass(frozen=True, slots=True)
+class Options:
+    """What every test of a run shares; a controller or dialect not given comes from each program's settings
+    file (``[tool.mint]``), as ``mint check`` and ``mint-run`` take it."""
+
+    controller: str | None = None
+    dialect: Dialect | None = None
+    until_ms: int | None = None
+    max_wall_s: float | None = 60.0
+    drives_enabled: bool = False
+
+
+def run_case(case: TestCase, options: Options) -> TestResult:
+    """Run ``case``; every problem becomes its result, never an exception (it runs in a worker process)."""
+    began = time.perf_counter()
+    try:
+        return _run(case, options, began)
+    except (OSError, ScenarioFileError, SettingsError, ValueError) as error:
+        return _error(case, str(error), began)
+
+
+def _run(case: TestCase, options: Options, began: float) -> TestResult:
+    settings = settings_for(case.program)
+    dialect = options.dialect or settings.dialect.value
+    controller = options.controller or _configured_controller(settings, dialect)
+    simulated = machine(controller, dialect)
+    scenario = load_scenario(case.scenario, simulated, dialect) if case.scenario else Scenario()
+    if options.drives_enabled:
+        scenario = merge(scenario, Scenario(drives=(DrivesEnabled(),)))
+    program = read_source(case.program)
+    if (binary := program.binary()) is not None:
+        return _error(case, binary, began)
+    unit, partner = settings.partner(case.program)
+    configuration = read_source(partner).text if unit is Unit.PROGRAM and partner is not None else None
+    result = run_source(
+        program.text,
+        config=configuration,
+        controller=controller,
+        dialect=dialect,
+        scenario=scenario,
+        limits=Limits(until_ms=options.until_ms, max_wall_s=options.max_wall_s),
+        name=str(case.program),
+    )
+    checks = tuple(_check(outcome) for outcome in result.outcomes)
+    stopped = result.stop.reason.value
+    if result.refused:
+        return _error(case, result.stop.message, began, stopped=stopped)
+    if not checks:
+        return _error(case, "no expectation to check: add REM @expect lines or [[expect]] to its scenario", began)
+    verdict = Verdict.PASSED if expectations_pass(result.outcomes, stopped) else Verdict.FAILED
+    elapsed = time.perf_counter() - began
+    return TestResult(case, verdict, stopped, result.stop.message, checks, result.stop.time_ms, elapsed)
+
+
+def _configured_controller(settings: FileSettings, dialect: Dialect) -> str | None:
+    """The settings file's controller; none (the dialect's own default) when it names none or the program is v3."""
+    given = settings.controller
+    return given.value.value if given.origin != DEFAULT and dialect is not Dialect.V3 else None
+
+
+def _check(outcome: Outcome) -> Check:
+    expectation = outcome.expectation
+    when = "end" if expectation.at_ms is None else f"{expectation.at_ms} ms"
+    what, expected, origin = expectation.what, expectation.expected, str(expectation.origin)
+    return Check(what, when, expected, outcome.actual, outcome.held, origin, outcome.detail)
+
+
+def _error(case: TestCase, message: str, began: float, *, stopped: str = "") -> TestResult:
+    return TestResult(case, Verdict.ERROR, stopped, message, (), 0, time.perf_counter() - began)

@@ -1,0 +1,104 @@
+"""``mint test``: which programs are tests, how each is judged, and what the reports say."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from xml.etree import ElementTree
+
+from click.testing import CliRunner, Result
+
+from mintlang.cli import main
+from mintlang.runtime.testing.discovery import discover
+
+PASSING = "REM @expect a = 2\nDIM a\na = 1 + 1\n"
+FAILING = "REM @expect a = 3\nDIM a\na = 1 + 1\n"
+REFUSED = "REM @expect a = 1\nDIM a\nFOR a = 1 TO 2\n"  # a FOR without NEXT: the compiler refuses it (2009)
+
+
+def _write(folder: Path, name: str, text: str) -> Path:
+    path = folder / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def _mint_test(*arguments: str | Path) -> Result:
+    return CliRunner().invoke(main, ["test", "-j", "1", *(str(argument) for argument in arguments)])
+
+
+def test_a_program_is_a_test_with_expectations_in_it_or_a_scenario_file_beside_it(tmp_path: Path) -> None:
+    _write(tmp_path, "inline.mnt", PASSING)
+    _write(tmp_path, "Beside.MNT", "DIM a\n")
+    _write(tmp_path, "beside.scenario.toml", '[[expect]]\nwhat = "a"\nequals = 0\n')
+    _write(tmp_path, "plain.mnt", "DIM a\n")
+    _write(tmp_path, "cell.cfg", "REM @expect a = 1\n")  # a configuration file is never a test of its own
+    cases, unreadable = discover([tmp_path])
+    found = [(case.program.name, case.scenario.name if case.scenario else None) for case in cases]
+    assert found == [("Beside.MNT", "beside.scenario.toml"), ("inline.mnt", None)]
+    assert unreadable == []
+
+
+def test_each_test_is_passed_failed_or_an_error_and_the_summary_counts_them(tmp_path: Path) -> None:
+    _write(tmp_path, "a_passes.mnt", PASSING)
+    _write(tmp_path, "b_fails.mnt", FAILING)
+    _write(tmp_path, "c_refused.mnt", REFUSED)
+    result = _mint_test(tmp_path, "--color", "never")
+    lines = result.output.splitlines()
+    assert result.exit_code == 1
+    assert lines[0] == f"PASSED {tmp_path / 'a_passes.mnt'}"
+    assert lines[1] == f"FAILED {tmp_path / 'b_fails.mnt'}  1 of 1 expectations failed"
+    assert lines[2].startswith("    A at end: expected = 3, got 2 (off by -1) [")
+    assert lines[3].startswith(f"ERROR  {tmp_path / 'c_refused.mnt'}  ")
+    assert lines[-1].startswith("1 passed, 1 failed, 1 error in ")
+
+
+def test_junit_has_a_testcase_per_program_with_its_failure_or_error(tmp_path: Path) -> None:
+    _write(tmp_path, "a_passes.mnt", PASSING)
+    _write(tmp_path, "b_fails.mnt", FAILING)
+    _write(tmp_path, "c_refused.mnt", REFUSED)
+    suite = ElementTree.fromstring(_mint_test(tmp_path, "--format", "junit").output).find("testsuite")
+    assert suite is not None
+    assert (suite.get("tests"), suite.get("failures"), suite.get("errors")) == ("3", "1", "1")
+    cases = {case.get("name"): case for case in suite.iter("testcase")}
+    assert sorted(cases) == ["a_passes.mnt", "b_fails.mnt", "c_refused.mnt"]
+    assert list(cases["a_passes.mnt"]) == []
+    failure = cases["b_fails.mnt"].find("failure")
+    assert failure is not None and failure.text is not None and "expected = 3, got 2" in failure.text
+    assert cases["c_refused.mnt"].find("error") is not None
+    assert cases["b_fails.mnt"].get("classname") == str(tmp_path)
+
+
+def test_json_counts_the_verdicts_and_keeps_each_check(tmp_path: Path) -> None:
+    _write(tmp_path, "a_passes.mnt", PASSING)
+    _write(tmp_path, "b_fails.mnt", FAILING)
+    report = json.loads(_mint_test(tmp_path, "--format", "json").output)
+    assert report["summary"] == {"passed": 1, "failed": 1, "error": 0}
+    (check,) = report["tests"][1]["checks"]
+    assert (check["what"], check["expected"], check["actual"], check["held"]) == ("A", "= 3", "2", False)
+
+
+def test_a_scenario_file_gives_the_stimulus_and_the_expectations(tmp_path: Path) -> None:
+    _write(tmp_path, "press.mnt", "DIM seen\nPAUSE IN.0 = 1\nseen = TIME\n")
+    _write(
+        tmp_path,
+        "press.scenario.toml",
+        '[[input]]\nchannel = 0\nat_ms = 40\nlevel = 1\n\n[[expect]]\nwhat = "seen"\nequals = 40\n',
+    )
+    result = _mint_test(tmp_path)
+    assert result.exit_code == 0, result.output
+
+
+def test_no_test_found_exits_5_and_a_missing_path_exits_2(tmp_path: Path) -> None:
+    _write(tmp_path, "plain.mnt", "DIM a\n")
+    nothing = _mint_test(tmp_path)
+    assert nothing.exit_code == 5
+    missing = _mint_test(tmp_path / "absent")
+    assert missing.exit_code == 2
+    assert f"mint test: {tmp_path / 'absent'}: no such file or folder" in missing.output
+
+
+def test_the_dialect_comes_from_the_settings_file_unless_given(tmp_path: Path) -> None:
+    _write(tmp_path, "mint.toml", 'dialect = "mintmt"\n')
+    _write(tmp_path, "blocks.mnt", 'REM @expect terminal is "a\\n"\nPrint "a"  \' MintMT\'s comment\n')
+    assert _mint_test(tmp_path).exit_code == 0
+    assert _mint_test(tmp_path, "--dialect", "v4").exit_code == 1

@@ -74,7 +74,8 @@ def link(
             for index, statement in enumerate(n.flatten_statements(line.syntax.statements)):
                 pc = len(vm.operations)
                 vm.operations.append(_compiled(compiler, statement, Place(line.number, index), pc))
-                vm.sites.append(Site(unit.value, line.number, text[statement.span.start : statement.span.end].strip()))
+                written = text[statement.span.start : statement.span.end].strip()
+                vm.sites.append(Site(unit.value, line.number, written, type(statement).__name__))
     if program_start == 0:  # no configuration file: the program runs first, from its entry
         vm.pc = entry
     return Linked(handlers.get(Unit.PROGRAM, {}), handlers.get(Unit.CONFIGURATION, {}), names)

@@ -42,6 +42,7 @@ class Site:
     unit: str  # "program" or "configuration"
     line: int
     text: str  # the statement as written
+    kind: str = ""  # the statement's syntax node (IfDo, Pause …): coverage tells branches by it
 
 
 @dataclass(slots=True)

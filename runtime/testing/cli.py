@@ -28,8 +28,10 @@ from mintlang.cli.terminal import console, destination
 from mintlang.dialect import Dialect
 from mintlang.runtime.dialects import SIMULATED
 from mintlang.runtime.testing import reports
+from mintlang.runtime.testing.coverage import lcov as tracefile
+from mintlang.runtime.testing.coverage import merge
 from mintlang.runtime.testing.discovery import discover
-from mintlang.runtime.testing.running import Options, Verdict, run_case
+from mintlang.runtime.testing.running import Options, TestResult, Verdict, run_case
 
 PASSED, FAILED, USAGE, NO_TESTS = 0, 1, 2, 5
 
@@ -51,6 +53,14 @@ PASSED, FAILED, USAGE, NO_TESTS = 0, 1, 2, 5
     help="Stop a run that takes longer than this on the wall clock (it fails).",
 )
 @click.option("--drives", type=click.Choice(["disabled", "enabled"]), default="disabled", show_default=True)
+@click.option("--coverage", is_flag=True, help="Measure line, branch and event-handler coverage: a table, and --lcov.")
+@click.option(
+    "--lcov",
+    type=click.Path(dir_okay=False, path_type=Path),
+    default=Path("lcov.info"),
+    show_default=True,
+    help="Where --coverage writes its lcov tracefile.",
+)
 @click.option("-j", "--jobs", type=click.IntRange(min=1), help="Tests run at once (default: every core).")
 @format_option(["text", "junit", "json"])
 @output_file_option()
@@ -64,6 +74,8 @@ def test(  # noqa: PLR0917 - click passes every option as an argument
     until_ms: int | None,
     max_wall_s: float,
     drives: str,
+    coverage: bool,
+    lcov: Path,
     jobs: int | None,
     output_format: str,
     output_file: Path | None,
@@ -79,7 +91,8 @@ def test(  # noqa: PLR0917 - click passes every option as an argument
     if not cases:
         errors.print("mint test: no tests found (programs with REM @expect lines or a .scenario.toml beside them)")
         sys.exit(USAGE if unreadable else NO_TESTS)
-    options = Options(controller, Dialect(dialect) if dialect else None, until_ms, max_wall_s, drives == "enabled")
+    enabled = drives == "enabled"
+    options = Options(controller, Dialect(dialect) if dialect else None, until_ms, max_wall_s, enabled, coverage)
     began = time.perf_counter()
     results = map_in_order(
         partial(run_case, options=options), cases, workers=jobs or all_cores(), progress=errors, description="testing"
@@ -92,10 +105,22 @@ def test(  # noqa: PLR0917 - click passes every option as an argument
             stream.write(reports.as_json(results, seconds))
         else:
             reports.text(results, seconds, console(color if output_file is None else "never", file=stream))
+    if coverage:
+        _coverage(results, lcov, output_format, color)
     if unreadable:
         sys.exit(USAGE)
     passed = all(result.verdict is Verdict.PASSED for result in results)
     sys.exit(PASSED if passed or exit_zero else FAILED)
+
+
+def _coverage(results: list[TestResult], lcov: Path, output_format: str, color: str) -> None:
+    """The table (beside a text report, else on standard error) and the lcov tracefile."""
+    files = merge(result.coverage for result in results)
+    reports.coverage_table(files, console(color, stderr=output_format != "text"))
+    try:
+        lcov.write_text(tracefile(files), encoding="utf-8")
+    except OSError as error:
+        _fail(f"cannot write {lcov}: {error.strerror or error}")
 
 
 def _fail(message: str) -> NoReturn:

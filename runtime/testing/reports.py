@@ -9,8 +9,10 @@ from dataclasses import asdict
 from xml.etree import ElementTree
 
 from rich.console import Console
+from rich.table import Table
 from rich.text import Text
 
+from mintlang.runtime.testing.coverage import FileCoverage, handlers_run, lines_run, outcomes_seen
 from mintlang.runtime.testing.running import TestResult, Verdict
 
 _STYLE = {Verdict.PASSED: "green", Verdict.FAILED: "bold red", Verdict.ERROR: "bold yellow"}
@@ -109,3 +111,32 @@ def as_json(results: Sequence[TestResult], seconds: float) -> str:
     counts = Counter(result.verdict.value for result in results)
     body = {"summary": {verdict.value: counts[verdict.value] for verdict in Verdict}, "tests": tests}
     return json.dumps({**body, "seconds": round(seconds, 3)}, indent=2) + "\n"
+
+
+def coverage_table(files: Sequence[FileCoverage], console: Console) -> None:
+    """Lines, branch outcomes and event handlers run, per file and in total."""
+    table = Table("file", "lines", "branches", "handlers", title="coverage")
+    table.columns[0].overflow = "fold"
+    totals = [0, 0, 0, 0, 0, 0]
+    for file in files:
+        counts = (
+            lines_run(file),
+            len(file.lines),
+            outcomes_seen(file),
+            2 * len(file.branches),
+            handlers_run(file),
+            len(file.handlers),
+        )
+        totals = [total + count for total, count in zip(totals, counts, strict=True)]
+        table.add_row(file.path, *_ratios(counts))
+    if len(files) > 1:
+        table.add_row("total", *_ratios(tuple(totals)), style="bold")
+    console.print(table)
+
+
+def _ratios(counts: Sequence[int]) -> list[str]:
+    return [_ratio(counts[index], counts[index + 1]) for index in range(0, len(counts), 2)]
+
+
+def _ratio(hit: int, total: int) -> str:
+    return f"{hit}/{total} ({100 * hit / total:.0f} %)" if total else "-"

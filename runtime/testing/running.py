@@ -12,6 +12,7 @@ from mintlang.runtime.run import run_source
 from mintlang.runtime.scenario import Outcome, Scenario, ScenarioFileError, expectations_pass, load_scenario
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, merge
 from mintlang.runtime.simulation import Limits
+from mintlang.runtime.testing.coverage import FileCoverage, Recorder
 from mintlang.runtime.testing.discovery import TestCase
 from mintlang.semantic.units import Unit
 from mintlang.settings import FileSettings, SettingsError, settings_for
@@ -47,6 +48,7 @@ class TestResult:
     checks: tuple[Check, ...]
     simulated_ms: int
     seconds: float
+    coverage: tuple[FileCoverage, ...] = ()  # with ``Options.coverage``
 
 
 @dataclass(frozen=True, slots=True)
@@ -59,6 +61,7 @@ class Options:
     until_ms: int | None = None
     max_wall_s: float | None = 60.0
     drives_enabled: bool = False
+    coverage: bool = False
 
 
 def run_case(case: TestCase, options: Options) -> TestResult:
@@ -83,6 +86,8 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
         return _error(case, binary, began)
     unit, partner = settings.partner(case.program)
     configuration = read_source(partner).text if unit is Unit.PROGRAM and partner is not None else None
+    files = {"program": case.program} | ({"configuration": partner} if configuration is not None and partner else {})
+    recorder = Recorder(files, dialect) if options.coverage else None
     result = run_source(
         program.text,
         config=configuration,
@@ -90,8 +95,10 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
         dialect=dialect,
         scenario=scenario,
         limits=Limits(until_ms=options.until_ms, max_wall_s=options.max_wall_s),
+        on_start=recorder.attach if recorder is not None else None,
         name=str(case.program),
     )
+    coverage = recorder.result() if recorder is not None else ()
     checks = tuple(_check(outcome) for outcome in result.outcomes)
     stopped = result.stop.reason.value
     if result.refused:
@@ -100,7 +107,7 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
         return _error(case, "no expectation to check: add REM @expect lines or [[expect]] to its scenario", began)
     verdict = Verdict.PASSED if expectations_pass(result.outcomes, stopped) else Verdict.FAILED
     elapsed = time.perf_counter() - began
-    return TestResult(case, verdict, stopped, result.stop.message, checks, result.stop.time_ms, elapsed)
+    return TestResult(case, verdict, stopped, result.stop.message, checks, result.stop.time_ms, elapsed, coverage)
 
 
 def _configured_controller(settings: FileSettings, dialect: Dialect) -> str | None:

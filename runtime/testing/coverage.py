@@ -1,0 +1,179 @@
+"""Coverage of Mint programs: which lines ran, which way each branch went, which event handlers ran.
+
+A branch is a statement with two outcomes (``mint test --coverage``): an ``IF``
+(its block or line taken or not), a ``WHILE`` or ``FOR`` (its body entered or
+skipped), an ``UNTIL`` (the loop left or repeated) and a ``PAUSE`` (passed at
+once or waited). Each operation of the compiled program is wrapped to count
+how often it completed and where control went next; a run without coverage
+runs the operations unwrapped.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from mintlang.dialect import Dialect
+from mintlang.runtime.controller import Controller
+from mintlang.semantic.events import event_of
+
+# Each branching statement (by syntax node) with its two outcomes: control goes on to the next operation
+# (the first) or elsewhere (the second); for PAUSE, it did not wait or it waited.
+OUTCOMES: Mapping[str, tuple[str, str]] = {
+    "IfDo": ("taken", "not taken"),
+    "IfThen": ("taken", "not taken"),
+    "While": ("entered", "skipped"),
+    "For": ("entered", "skipped"),
+    "Until": ("left", "repeated"),
+    "Pause": ("at once", "waited"),
+}
+
+
+@dataclass(frozen=True, slots=True)
+class Branch:
+    line: int
+    kind: str  # IfDo, While …
+    taken: tuple[int, int]  # how often each of ``OUTCOMES[kind]`` happened
+
+    @property
+    def outcomes(self) -> tuple[str, str]:
+        return OUTCOMES[self.kind]
+
+
+@dataclass(frozen=True, slots=True)
+class FileCoverage:
+    """One file's coverage, summed over the runs that used it."""
+
+    path: str
+    lines: Mapping[int, int]  # each line holding a statement -> how often it ran (its busiest statement's count)
+    branches: tuple[Branch, ...]  # in program order
+    handlers: Mapping[str, tuple[int, int]] = field(default_factory=dict)  # event handler -> (line, times run)
+
+    def merged(self, other: FileCoverage) -> FileCoverage:
+        lines = dict(self.lines)
+        for line, count in other.lines.items():
+            lines[line] = lines.get(line, 0) + count
+        if len(self.branches) == len(other.branches):
+            branches = tuple(
+                Branch(mine.line, mine.kind, (mine.taken[0] + theirs.taken[0], mine.taken[1] + theirs.taken[1]))
+                for mine, theirs in zip(self.branches, other.branches, strict=True)
+            )
+        else:  # the file changed between two runs: keep the later view
+            branches = other.branches
+        handlers = dict(self.handlers)
+        for name, (line, count) in other.handlers.items():
+            handlers[name] = (line, handlers.get(name, (line, 0))[1] + count)
+        return FileCoverage(self.path, lines, branches, handlers)
+
+
+class Recorder:
+    """Counts, for one run, each operation's completions and outcomes (``attach`` is ``run_source``'s on_start)."""
+
+    def __init__(self, files: Mapping[str, Path], dialect: Dialect) -> None:
+        self.files = files  # "program" / "configuration" -> the file
+        self.dialect = dialect  # which labels are event handlers
+        self.controller: Controller | None = None
+        self.completed: list[int] = []
+        self.outcomes: list[list[int]] = []
+
+    def attach(self, controller: Controller) -> None:
+        self.controller = controller
+        vm = controller.vm
+        size = len(vm.operations)
+        self.completed = [0] * size
+        self.outcomes = [[0, 0] for _ in range(size)]
+        pairs = enumerate(zip(vm.operations, vm.sites, strict=True))
+        vm.operations[:] = [self._counting(pc, operation, site.kind == "Pause") for pc, (operation, site) in pairs]
+
+    def _counting(self, pc: int, operation: Callable[[], bool | None], pausing: bool) -> Callable[[], bool]:
+        vm = self.controller.vm  # type: ignore[union-attr]
+        completed, outcome = self.completed, self.outcomes[pc]
+        waited = False
+
+        def counted() -> bool:
+            nonlocal waited
+            if operation():
+                waited = True
+                return True
+            completed[pc] += 1
+            if pausing:
+                outcome[1 if waited else 0] += 1
+                waited = False
+            else:
+                outcome[0 if vm.pc == pc + 1 else 1] += 1
+            return False
+
+        return counted
+
+    def result(self) -> tuple[FileCoverage, ...]:
+        controller = self.controller
+        if controller is None:  # the program never started
+            return ()
+        sites = controller.vm.sites
+        found = []
+        for unit, path in self.files.items():
+            pcs = [pc for pc, site in enumerate(sites) if site.unit == unit]
+            lines: dict[int, int] = {}
+            for pc in pcs:
+                lines[sites[pc].line] = max(lines.get(sites[pc].line, 0), self.completed[pc])
+            branches = tuple(
+                Branch(sites[pc].line, sites[pc].kind, (self.outcomes[pc][0], self.outcomes[pc][1]))
+                for pc in pcs
+                if sites[pc].kind in OUTCOMES
+            )
+            handlers = self._handlers(unit, controller)
+            found.append(FileCoverage(str(path), lines, branches, handlers))
+        return tuple(found)
+
+    def _handlers(self, unit: str, controller: Controller) -> dict[str, tuple[int, int]]:
+        linked = controller.linked
+        labels = linked.handlers if unit == "program" else linked.configuration_handlers
+        sites = controller.vm.sites
+        return {
+            name: (sites[pc].line, self.completed[pc])
+            for name, pc in labels.items()
+            if event_of(name, self.dialect) is not None and pc < len(sites)
+        }
+
+
+def merge(runs: Iterable[tuple[FileCoverage, ...]]) -> list[FileCoverage]:
+    """Every file's coverage over all runs, by path, in the order first met."""
+    by_path: dict[str, FileCoverage] = {}
+    for run in runs:
+        for file in run:
+            known = by_path.get(file.path)
+            by_path[file.path] = file if known is None else known.merged(file)
+    return list(by_path.values())
+
+
+def lcov(files: Iterable[FileCoverage]) -> str:
+    """The lcov tracefile of ``files``: lines (DA), branches (BRDA, one block per branch statement) and the
+    event handlers as functions (FN, FNDA), which editors' coverage views and genhtml read."""
+    records = []
+    for file in files:
+        record = ["TN:", f"SF:{file.path}"]
+        for name, (line, _) in sorted(file.handlers.items(), key=lambda item: item[1][0]):
+            record.append(f"FN:{line},#{name}")
+        for name, (_, count) in sorted(file.handlers.items(), key=lambda item: item[1][0]):
+            record.append(f"FNDA:{count},#{name}")
+        record += [f"FNF:{len(file.handlers)}", f"FNH:{handlers_run(file)}"]
+        for block, branch in enumerate(file.branches):
+            record += [f"BRDA:{branch.line},{block},{side},{count}" for side, count in enumerate(branch.taken)]
+        record += [f"BRF:{2 * len(file.branches)}", f"BRH:{outcomes_seen(file)}"]
+        record += [f"DA:{line},{count}" for line, count in sorted(file.lines.items())]
+        record += [f"LF:{len(file.lines)}", f"LH:{lines_run(file)}", "end_of_record"]
+        records.append("\n".join(record))
+    return "\n".join(records) + "\n" if records else ""
+
+
+def lines_run(file: FileCoverage) -> int:
+    return sum(1 for count in file.lines.values() if count)
+
+
+def outcomes_seen(file: FileCoverage) -> int:
+    return sum(1 for branch in file.branches for count in branch.taken if count)
+
+
+def handlers_run(file: FileCoverage) -> int:
+    return sum(1 for _, count in file.handlers.values() if count)

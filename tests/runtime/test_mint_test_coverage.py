@@ -1,0 +1,83 @@
+"""``mint test --coverage``: lines, branch outcomes and event handlers, worked out by hand on small programs."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from click.testing import CliRunner
+
+from mintlang.cli import main
+
+# Lines with statements: 2-11, 13, 14 (the label line 12 holds none). The FOR runs its body three times;
+# the IF .. THEN of line 5 is never true; the IF .. DO is, and its PAUSE passes at once; #ONERROR never runs.
+PROGRAM = """REM @expect a = 3
+DIM a
+DIM i
+FOR i = 1 TO 3
+  IF i > 5 THEN a = 100
+  a = a + 1
+NEXT
+IF a = 3 DO
+  PAUSE a = 3
+ENDIF
+END
+#ONERROR
+  a = 0
+RETURN
+"""
+
+EXPECTED = """TN:
+SF:{path}
+FN:13,#ONERROR
+FNDA:0,#ONERROR
+FNF:1
+FNH:0
+BRDA:4,0,0,1
+BRDA:4,0,1,0
+BRDA:5,1,0,0
+BRDA:5,1,1,3
+BRDA:8,2,0,1
+BRDA:8,2,1,0
+BRDA:9,3,0,1
+BRDA:9,3,1,0
+BRF:8
+BRH:4
+DA:2,1
+DA:3,1
+DA:4,1
+DA:5,3
+DA:6,3
+DA:7,3
+DA:8,1
+DA:9,1
+DA:10,1
+DA:11,1
+DA:13,0
+DA:14,0
+LF:12
+LH:10
+end_of_record
+"""
+
+
+def test_the_tracefile_counts_each_line_branch_outcome_and_handler(tmp_path: Path) -> None:
+    program = tmp_path / "counted.mnt"
+    program.write_text(PROGRAM, encoding="utf-8")
+    tracefile = tmp_path / "lcov.info"
+    result = CliRunner().invoke(main, ["test", str(program), "--coverage", "--lcov", str(tracefile), "-j", "1"])
+    assert result.exit_code == 0, result.output
+    assert tracefile.read_text(encoding="utf-8") == EXPECTED.format(path=program)
+    assert "10/12 (83 %)" in result.output and "4/8 (50 %)" in result.output and "0/1 (0 %)" in result.output
+
+
+def test_a_pause_that_waits_and_a_loop_left_by_until_are_the_other_outcomes(tmp_path: Path) -> None:
+    # REPEAT runs twice: UNTIL repeats once and is left once; the PAUSE waits for the timer.
+    program = tmp_path / "waits.mnt"
+    program.write_text(
+        "REM @expect n = 2\nDIM n\nREPEAT\n  n = n + 1\nUNTIL n = 2\nPAUSE TIME > 10\n", encoding="utf-8"
+    )
+    tracefile = tmp_path / "lcov.info"
+    result = CliRunner().invoke(main, ["test", str(program), "--coverage", "--lcov", str(tracefile), "-j", "1"])
+    assert result.exit_code == 0, result.output
+    branches = [line for line in tracefile.read_text(encoding="utf-8").splitlines() if line.startswith("BRDA")]
+    assert branches == ["BRDA:5,0,0,1", "BRDA:5,0,1,1", "BRDA:6,1,0,0", "BRDA:6,1,1,1"]

@@ -265,8 +265,10 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
     )
     if trace_axes is not None and not tracing:
         raise click.UsageError("--trace-axes chooses the axes of --trace or --plot; give one of them")
-    axes = _axes_list(trace_axes, simulated) or tuple(range(simulated.axis_count))
-    trace = Trace(axes, trace_path, plotting=plot_path is not None) if tracing else None
+    chosen = _axes_list(trace_axes, simulated)
+    axes = chosen or tuple(range(simulated.axis_count))
+    plotting = plot_path is not None
+    trace = Trace(axes, trace_path, plotting=plotting, chosen=chosen is not None) if tracing else None
     termination = _Termination()
     recorders = _Recorders(trace, termination, errors, until_ms, progress=not quiet and sys.stderr.isatty())
     stdout = _Stdout(live=realtime or host_port is not None)
@@ -296,7 +298,8 @@ def run(  # noqa: PLR0917 - click passes every option as an argument
         if result.outcomes:
             render_outcomes(result.outcomes, errors)
         _report(result, report_format, report_path)
-        _outputs(trace, plot_path)  # after the report, so an output that fails does not take the results with it
+        title = f"{program.name} on {simulated.title}, {result.stop.reason.value} after {result.stop.time_ms} ms"
+        _outputs(trace, plot_path, title)  # after the report, so an output that fails does not take the results with it
     status = _exit_status(result, stdout.closed, termination.received, expect=bool(expect_paths))
     sys.exit(0 if status == _FAILED and exit_zero else status)
 
@@ -424,14 +427,14 @@ def _report(result: RunResult, report_format: str | None, report_path: Path | No
             _cannot_write(report_path, error)
 
 
-def _outputs(trace: Trace | None, plot_path: Path | None) -> None:
+def _outputs(trace: Trace | None, plot_path: Path | None, title: str) -> None:
     if trace is None:
         return
     if trace.failure is not None:
         _cannot_write(trace.csv_path, trace.failure)
     if plot_path is not None:
         try:
-            trace.plot(plot_path)
+            trace.plot(plot_path, title)
         except OSError as error:
             _cannot_write(plot_path, error)
 

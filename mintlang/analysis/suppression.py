@@ -5,7 +5,8 @@ A comment silences the codes it names on its own line (after a statement,
 file. It names complete codes, comma-separated, in either spelling of an error
 (``E17`` or ``E0017``): a prefix would silence more than its author looked at.
 A named code that silenced nothing, or that is no code, is reported as
-``UNUSED_SUPPRESSION`` (as ruff's RUF100), with a safe fix that removes it.
+``UNUSED_SUPPRESSION`` (as ruff's RUF100), with a fix that removes it: safe,
+unless the code is one this run does not check.
 """
 
 from __future__ import annotations
@@ -121,20 +122,23 @@ def _unused(directive: Directive, entry: Entry, selected: Callable[[str], bool])
         detail = f"unused suppression: {entry.code} is not checked"
     else:
         detail = f"unused suppression: no {entry.code} {where}"
-    return own(UNUSED_SUPPRESSION, entry.span, detail, fixes=(_removal(directive, entry),))
+    # A code this run does not check may be one a wider selection checks (the editor's, --select I): its
+    # removal is left to the author.
+    safe = entry.code is None or selected(entry.code)
+    return own(UNUSED_SUPPRESSION, entry.span, detail, fixes=(_removal(directive, entry, safe=safe),))
 
 
-def _removal(directive: Directive, entry: Entry) -> Fix:
+def _removal(directive: Directive, entry: Entry, *, safe: bool) -> Fix:
     """Take the entry out of its list, or the whole comment when it is the only entry."""
     entries = directive.entries
     if len(entries) == 1:
-        return Fix("Remove the suppression comment", (_without_comment(directive),), safe=True)
+        return Fix("Remove the suppression comment", (_without_comment(directive),), safe=safe)
     index = entries.index(entry)
     if index + 1 < len(entries):
         span = Span(entry.span.start, entries[index + 1].span.start)  # the entry, its comma and the space after
     else:
         span = Span(entries[index - 1].span.end, entry.span.end)  # the comma before the last entry
-    return Fix(f"Remove {entry.text} from the suppression", (Edit(span, ""),), safe=True)
+    return Fix(f"Remove {entry.text} from the suppression", (Edit(span, ""),), safe=safe)
 
 
 def _without_comment(directive: Directive) -> Edit:

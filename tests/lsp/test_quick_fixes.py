@@ -47,7 +47,7 @@ async def test_a_missing_label_is_corrected_or_made(client, tmp_path):
     uri = uri_of(tmp_path / "label.mnt")
     diagnostics = await open_document(client, uri, text)
     found = await fixes(client, uri, diagnostics, 0)
-    assert set(found) == {"Change to #main", "Create subroutine #mian"}
+    assert set(found) == {"Change to #main", "Create subroutine #mian", "Ignore E3004 on this line"}
     assert applied(text, found["Change to #main"], uri) == "GOSUB main\nEND\n#main\nRETURN\n"
     assert applied(text, found["Create subroutine #mian"], uri) == text + "\n#mian\nRETURN\n"
 

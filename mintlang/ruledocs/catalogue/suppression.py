@@ -17,11 +17,13 @@ GROUP = Group(
             why="A suppression outlives the finding it was written for; left in place, it would silence "
             "the next such finding on that line without anyone looking at it.",
             example=Example(
-                before="DIM count : REM mint: ignore[W103]\ncount = 1\nPRINT count\n",
+                before="DIM count : REM mint: ignore[W1O3]\ncount = 1\nPRINT count\n",  # a letter O: no code
                 after="DIM count\ncount = 1\nPRINT count\n",
             ),
             manual=("v4:15497",),
-            fix="Remove the code from the comment, or the comment when it names no other code.",
+            fix="Remove the code from the comment, or the comment when it names no other code. For a code "
+            "the run does not check (a hint, without --select I) the removal is unsafe: the comment may serve a "
+            "wider selection, such as the editor's.",
             safety=FixSafety.SAFE,
         ),
     ),

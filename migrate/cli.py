@@ -29,6 +29,7 @@ from mintlang.cli.options import (
     HELP_OPTIONS,
     color_option,
     controller_option,
+    drives_option,
     exit_zero_option,
     format_option,
     list_option,
@@ -136,11 +137,7 @@ def _list_rules(console: Console) -> None:
     type=click.Choice(list(V3_CONTROLLERS)),
     help=f"With --verify: the Mint v3 controller the originals run on.  [default: {V3_DEFAULT}]",
 )
-@click.option(
-    "--drives",
-    type=click.Choice(["enabled"]),
-    help="With --verify: start both runs with every drive enabled (as mint-run --drives enabled).",
-)
+@drives_option("With --verify: start both runs with every drive enabled (as mint-run --drives enabled).")
 def migrate(  # noqa: PLR0917 - click passes every option as an argument
     paths: tuple[Path, ...],
     write: bool,

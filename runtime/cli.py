@@ -36,6 +36,7 @@ from mintlang.cli.files import program_as_own_configuration
 from mintlang.cli.options import (
     HELP_OPTIONS,
     color_option,
+    drives_option,
     exit_zero_option,
     refuse_quiet_and_verbose,
     verbosity_options,
@@ -147,11 +148,7 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
     type=click.Path(path_type=Path),
     help="TOML scenario whose expectations decide the exit status (repeatable).",
 )
-@click.option(
-    "--drives",
-    type=click.Choice(["enabled"]),
-    help="Start with every drive enabled, as a bench configuration would (they start disabled, as at power-up).",
-)
+@drives_option("Start with every drive enabled, as a bench configuration would (they start disabled, as at power-up).")
 @click.option("--until-ms", type=click.IntRange(min=0), help="Stop after this much simulated time.")
 @click.option(
     "--max-wall-s",

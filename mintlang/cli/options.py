@@ -104,3 +104,8 @@ def verbosity_options(quiet: str, verbose: str) -> Callable[[F], F]:
 def refuse_quiet_and_verbose(quiet: bool, verbose: bool) -> None:
     if quiet and verbose:
         raise click.UsageError("--quiet and --verbose: choose one")
+
+
+def drives_option(help_text: str) -> Callable[[F], F]:
+    """``--drives enabled``: the simulated drives start enabled (they start disabled, as at power-up)."""
+    return click.option("--drives", type=click.Choice(["enabled"]), help=help_text)

@@ -18,6 +18,7 @@ import click
 from mintlang.cli.options import (
     HELP_OPTIONS,
     color_option,
+    drives_option,
     exit_zero_option,
     format_option,
     output_file_option,
@@ -52,7 +53,7 @@ PASSED, FAILED, USAGE, NO_TESTS = 0, 1, 2, 5
     show_default=True,
     help="Stop a run that takes longer than this on the wall clock (it fails).",
 )
-@click.option("--drives", type=click.Choice(["disabled", "enabled"]), default="disabled", show_default=True)
+@drives_option("Start every test with every drive enabled (they start disabled, as at power-up).")
 @click.option("--coverage", is_flag=True, help="Measure line, branch and event-handler coverage: a table, and --lcov.")
 @click.option(
     "--lcov",
@@ -73,7 +74,7 @@ def test(  # noqa: PLR0917 - click passes every option as an argument
     dialect: str | None,
     until_ms: int | None,
     max_wall_s: float,
-    drives: str,
+    drives: str | None,
     coverage: bool,
     lcov: Path,
     jobs: int | None,

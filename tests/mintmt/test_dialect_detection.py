@@ -1,0 +1,61 @@
+"""``mint.dialect = auto``: a text is MintMT when it shows a form only MintMT has, Mint v4 otherwise."""
+
+from __future__ import annotations
+
+import pytest
+
+from mintlang.detection import detect_dialect
+from mintlang.dialect import Dialect
+from tests.corpus_files import CorpusCase, cases
+
+MINTMT_LISTINGS = cases("mintmt")
+V4_EXAMPLES = [case for folder in ("v4/valid", "v4/invalid", "v4/runtime") for case in cases(folder)]
+
+
+@pytest.mark.parametrize("case", MINTMT_LISTINGS, ids=lambda case: case.name)
+def test_every_listing_of_the_mintmt_notes_reads_as_mintmt(case: CorpusCase) -> None:
+    assert detect_dialect(case.source) is Dialect.MINTMT
+
+
+@pytest.mark.parametrize("case", V4_EXAMPLES, ids=lambda case: case.name)
+def test_every_example_of_the_v4_guide_reads_as_v4(case: CorpusCase) -> None:
+    assert detect_dialect(case.source) is Dialect.V4
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        pytest.param("' Main code block\n", id="quote comment at a line start"),
+        pytest.param("MOVER.0 = 10  ' relative move\n", id="quote comment after code"),
+        pytest.param("a = 1 ‘ typographic quote\n", id="typographic quote comment"),
+        pytest.param("LOOP\nEnd Loop\n", id="End Loop"),
+        pytest.param("IF a = 1 DO\nEnd If\n", id="End If"),
+        pytest.param("IF a = 1 DO : b = 2 : End  if\n", id="End If after a colon, two spaces, lower case"),
+        pytest.param("Event Comms1\nEnd Event\n", id="Event block"),
+        pytest.param("event movebufferlow\n", id="Event line in lower case"),
+        pytest.param("Startup\n", id="Startup line"),
+        pytest.param("MOVER(0) = 10\n", id="round-bracket addressing"),
+        pytest.param("a = POS(1)\n", id="round-bracket addressing in an expression"),
+    ],
+)
+def test_a_form_only_mintmt_has_makes_the_text_mintmt(text: str) -> None:
+    assert detect_dialect(text) is Dialect.MINTMT
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        pytest.param("", id="empty"),
+        pytest.param("a = 'A'\n", id="character constant"),
+        pytest.param("IF key = '1' THEN GOSUB teach\n", id="character constant before more code"),
+        pytest.param("REM dialect: mintmt\nREM ' not a comment start\n", id="REM comments"),
+        pytest.param('PRINT "it\'s"\n', id="quote inside a string"),
+        pytest.param("DIM event\nevent = 1\n", id="a variable called event"),
+        pytest.param("LOOP\nENDL\nIF a DO\nENDIF\n", id="v4 closers"),
+        pytest.param("MOVER.0 = 10 : MOVER[1] = 5\n", id="dot and square-bracket addressing"),
+        pytest.param("a = ABS(b) + (c)\n", id="function call and parentheses"),
+        pytest.param("END\n", id="END alone"),
+    ],
+)
+def test_without_such_a_form_the_text_is_v4(text: str) -> None:
+    assert detect_dialect(text) is Dialect.V4

@@ -29,6 +29,8 @@ from typing import NamedTuple
 from mintlang.codes import mint_error
 from mintlang.controllers import ControllerProfile, NestingLimits
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
+from mintlang.dialect import Dialect
+from mintlang.semantic.events import event_of
 from mintlang.semantic.index import LineFacts
 from mintlang.syntax import nodes as n
 
@@ -61,6 +63,7 @@ _CLOSING = {  # the word that closes each kind of block, and the number of the c
     BlockKind.STARTUP: ("End Startup", 2003),
 }
 LOOPS = frozenset({BlockKind.FOR, BlockKind.REPEAT, BlockKind.WHILE, BlockKind.LOOP})
+_TOP_LEVEL = frozenset({BlockKind.EVENT, BlockKind.STARTUP})  # MintMT: never inside another block
 _BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.IfThen, n.For, n.While, n.Until, n.SyntaxError_, n.EventBlock})
 
 
@@ -145,6 +148,8 @@ class _Matcher:
             if then is not None:
                 self.bare_then = (len(self.stack), Fix("Change THEN to DO", (Edit(then, "DO"),)))
         elif kind is not None:
+            if kind in _TOP_LEVEL:
+                self._top_level(statement, kind, line)
             broken = type(statement) is n.SyntaxError_
             self.stack.append(_Open(kind, place, line.span(statement.span), reported=broken))
             self.open[kind] += 1
@@ -167,6 +172,19 @@ class _Matcher:
         elif isinstance(statement, n.BlockWord) and statement.word in _CLOSERS:
             expected, code, message = _CLOSERS[statement.word]
             self.close(expected, place, line.span(statement.span), code, message)
+
+    def _top_level(self, statement: n.Statement, kind: BlockKind, line: n.PlacedLine) -> None:
+        """MintMT's Event and Startup blocks stand alone, and an Event names an event (MT-6, MT-13)."""
+        span = line.span(statement.span)
+        if self.stack:
+            inner = self.stack[-1]
+            where = f"the {inner.kind.value} block of line {inner.opener.line}"
+            detail = f"{kind.value} blocks stand alone: this one is inside {where}"
+            self.diagnostics.append(_error(2003, span, detail))
+        if type(statement) is n.EventBlock and event_of(statement.name.text, Dialect.MINTMT) is None:
+            name = statement.name
+            detail = f"{name.text} is no event (MOVEBUFFERLOW, ONERROR, TIMER, STOP, COMMS1..5, INx, FASTINx, CANx)"
+            self.diagnostics.append(_error(2003, line.span(name.span), detail))
 
     def _do(self) -> tuple[Fix, ...]:
         """Writing DO for the THEN of the last bare IF .. THEN at the depth a stray ELSE or ENDIF stands at."""

@@ -18,6 +18,7 @@ class EventKind(StrEnum):
     IN = "IN"  # #INx: digital input x
     FASTIN = "FASTIN"  # #FASTIN (number None) or #FASTINx
     FASTPOS = "FASTPOS"  # Mint v3's fast position latch, #FASTIN in v4
+    MOVEBUFFERLOW = "MOVEBUFFERLOW"  # MintMT: the move buffer has MOVEBUFFERLOW free places (004:109-134)
 
 
 @dataclass(frozen=True, slots=True)
@@ -26,13 +27,13 @@ class Event:
     number: int | None
 
 
-_PATTERN = re.compile(r"(ONERROR|STOP|TIMER|CAN|COMMS|IN|FASTIN|FASTPOS)([0-9]*)")
+_PATTERN = re.compile(r"(ONERROR|STOP|TIMER|CAN|COMMS|IN|FASTIN|FASTPOS|MOVEBUFFERLOW)([0-9]*)")
 _EVENTS = {
-    Dialect.V4: frozenset(EventKind) - {EventKind.FASTPOS},
+    Dialect.V4: frozenset(EventKind) - {EventKind.FASTPOS, EventKind.MOVEBUFFERLOW},
     Dialect.MINTMT: frozenset(EventKind) - {EventKind.FASTPOS},
     Dialect.V3: frozenset({EventKind.ONERROR, EventKind.STOP, EventKind.IN, EventKind.FASTPOS}),
 }
-_UNNUMBERED = frozenset({EventKind.ONERROR, EventKind.STOP, EventKind.TIMER})
+_UNNUMBERED = frozenset({EventKind.ONERROR, EventKind.STOP, EventKind.TIMER, EventKind.MOVEBUFFERLOW})
 _NUMBER_REQUIRED = frozenset({EventKind.CAN, EventKind.COMMS, EventKind.IN})
 
 

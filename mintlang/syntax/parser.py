@@ -338,5 +338,10 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) ->
         role = "a label" if index > begin and kinds[index - 1] in (_K.GOSUB, _K.GOTO) else "a variable"
         return _error(2006, span, f"'{word}' is a reserved keyword and cannot be used as {role}")
     if line.expanded[index if not at_end else end - 1]:
-        return _error(2003, span, f"unexpected {found} in the text of a macro")
-    return _error(2003, span, f"unexpected {found}")
+        return _error(2003, span, f"unexpected {_unexpected(found)} in the text of a macro")
+    return _error(2003, span, f"unexpected {_unexpected(found)}")
+
+
+def _unexpected(found: str) -> str:
+    """``found`` after "unexpected": "unexpected end of the statement", not "unexpected the end …"."""
+    return found.removeprefix("the ")

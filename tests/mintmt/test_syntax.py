@@ -91,3 +91,15 @@ def test_a_closer_without_its_block_is_a_syntax_error() -> None:
 def test_code_after_an_endless_main_loop_in_an_event_block_is_reachable() -> None:
     source = "Loop\n  GO(0)\nEnd Loop\nEvent Comms1\n  JOG(0) = 1\nEnd Event\n"
     assert mintlang.check_application(source, dialect="mintmt").program == ()
+
+
+EVENTS = "MOVEBUFFERLOW, ONERROR, TIMER, STOP, COMMS1..5, INx, FASTINx, CANx"
+
+
+def test_event_and_startup_blocks_stand_alone_and_an_event_names_an_event() -> None:
+    source = "Loop\n  Event Comms1\n  End Event\nEnd Loop\nEvent Bogus\nEnd Event\nEvent MOVEBUFFERLOW\nEnd Event\n"
+    analysis = mintlang.check_application(source, dialect="mintmt")
+    assert [(d.code, d.message) for d in analysis.program] == [
+        ("E2003", "Syntax error: Event blocks stand alone: this one is inside the LOOP block of line 1"),
+        ("E2003", f"Syntax error: Bogus is no event ({EVENTS})"),
+    ]

@@ -8,7 +8,9 @@ and checked lines) before each repetition, as a fresh ``mint check`` process
 sees them; "warm" keeps them, as the language server does when it re-checks
 a file after an edit (here the same text, so only the whole-application work
 is left). The target is a parse + check ratio of at most 2.0 against
-``ast.parse``, cold.
+``ast.parse``, cold. The MintMT row checks the same program written as MintMT
+(``programs.mintmt_program``); its last line compares it with the v4 check of
+the same round (target: within 10 %).
 """
 
 from __future__ import annotations
@@ -23,7 +25,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
 
-from programs import mint_program, python_program
+from programs import mint_program, mintmt_program, python_program
 
 import mintlang
 
@@ -40,7 +42,9 @@ def main() -> None:
     options.add_argument("--repeat", type=int, default=15)
     arguments = options.parse_args()
     mint, python = mint_program(arguments.lines), python_program(arguments.lines)
+    mintmt = mintmt_program(arguments.lines)
     mintlang.check(mint)  # build the grammar and load the keyword database once
+    mintlang.check(mintmt, dialect="mintmt")
 
     def cold(action: Callable[[], object]) -> Callable[[], object]:
         def run() -> object:
@@ -54,7 +58,9 @@ def main() -> None:
         "mintlang.parse, cold": cold(lambda: mintlang.parse(mint)),
         "mintlang.check (parse + check), cold": cold(lambda: mintlang.check(mint)),
         "mintlang.check (parse + check), warm": lambda: mintlang.check(mint),
+        "mintlang.check MintMT (same program), cold": cold(lambda: mintlang.check(mintmt, dialect="mintmt")),
     }
+    v4_check, mintmt_check = "mintlang.check (parse + check), cold", "mintlang.check MintMT (same program), cold"
     # Paired rounds: each round times the reference and every variant back to back, so a
     # noisy machine slows both sides of a ratio alike; the medians of the per-round ratios
     # are reported.
@@ -69,11 +75,14 @@ def main() -> None:
             seconds[name].append(elapsed)
             ratios[name].append(elapsed / reference)
     print(f"{arguments.lines} lines, medians of {arguments.repeat} paired rounds")
-    print(f"{'':40} {'ms':>8} {'lines/s':>10} {'x ast.parse':>12}")
+    print(f"{'':44} {'ms':>8} {'lines/s':>10} {'x ast.parse':>12}")
     for name in measured:
         median = statistics.median(seconds[name])
         ratio = statistics.median(ratios[name])
-        print(f"{name:40} {median * 1000:8.1f} {arguments.lines / median:10.0f} {ratio:12.2f}")
+        print(f"{name:44} {median * 1000:8.1f} {arguments.lines / median:10.0f} {ratio:12.2f}")
+    mintmt_over_v4 = [mt / v4 for mt, v4 in zip(seconds[mintmt_check], seconds[v4_check], strict=True)]
+    spread = f"{min(mintmt_over_v4):.2f}-{max(mintmt_over_v4):.2f}"
+    print(f"MintMT check / v4 check of the same program: {statistics.median(mintmt_over_v4):.2f} ({spread})")
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@ every run.
 from __future__ import annotations
 
 import random
+import re
 
 _BLOCKS = (
     lambda r, i: [f"DIM speed{i % 30}", f"DIM target{i % 30}(20) = {r.randint(1, 99)},{r.randint(1, 99)};"],
@@ -85,6 +86,27 @@ _PYTHON_BLOCKS = (
         "stop(1)",
     ],
 )
+
+
+# The same program in MintMT's spelling (mintlang/MINTMT.md): ' comments, round-bracket addressing, Then
+# ending a line for DO, two-word closers; AXES keeps v4's square brackets (MT-4) and 'Q' its code.
+_MINTMT_SPELLING = (
+    (re.compile(r"\bREM\b"), "'"),
+    (re.compile(r"\b(?!AXES)([A-Z]+)\[([^\]]*)\]"), r"\1(\2)"),
+    (re.compile(r"\b([A-Z]+)\.(\d+)\b"), r"\1(\2)"),
+    (re.compile(r" DO$", re.MULTILINE), " Then"),
+    (re.compile(r"^(\s*)ENDIF$", re.MULTILINE), r"\1End If"),
+    (re.compile(r"^ENDL$", re.MULTILINE), "End Loop"),
+    (re.compile(r"'Q'"), "81"),
+)
+
+
+def mintmt_program(lines: int, seed: int = 2002) -> str:
+    """``mint_program`` written as MintMT: the same lines and statements, for the MintMT row of a benchmark."""
+    text = mint_program(lines, seed)
+    for pattern, replacement in _MINTMT_SPELLING:
+        text = pattern.sub(replacement, text)
+    return text
 
 
 def python_program(lines: int, seed: int = 2002) -> str:

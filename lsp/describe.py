@@ -8,6 +8,7 @@ from urllib.parse import unquote
 from mintlang.analysis.rules.v3_keywords import successor
 from mintlang.controllers import ControllerProfile, profile
 from mintlang.diagnostics import split_lines
+from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing, Controller, Keyword, MigrationClass, V3Keyword
 from mintlang.lsp.addressed import placed_line
@@ -105,8 +106,8 @@ def character(text: str) -> str:
     return f"**{text}** = `{code}` — character constant{note}"
 
 
-def constant(name: str) -> str | None:
-    record = database().constants.get(name.upper())
+def constant(name: str, dialect: Dialect = Dialect.V4) -> str | None:
+    record = database().constants_of(dialect).get(name.upper())
     if record is None:
         return None
     value = int(record.value) if record.value == int(record.value) else record.value

@@ -8,6 +8,7 @@ settings), so hover and completion after a check cost no re-analysis.
 
 from __future__ import annotations
 
+import functools
 import logging
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass, field, replace
@@ -19,8 +20,10 @@ from pygls.uris import from_fs_path, to_fs_path
 import mintlang
 from mintlang.allocation import collector_paused
 from mintlang.codes import selector
+from mintlang.detection import detect_dialect
 from mintlang.dialect import Dialect
-from mintlang.keyworddb.model import Controller
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Controller, Keyword
 from mintlang.lsp.collector import Collector
 from mintlang.lsp.positions import Positions
 from mintlang.pairing import DEFAULT_PATTERN, Pairing, is_program, listed_as, names_in
@@ -32,6 +35,7 @@ from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 log = logging.getLogger(__name__)
 
+AUTO = "auto"  # mint.dialect's value asking for the dialect to be detected from each program's text
 MAX_CHARACTERS = 500_000  # larger files are not analysed (about 25,000 lines, a second of checking)
 
 
@@ -42,10 +46,14 @@ class Settings:
     A document's settings are those of its settings file (``mint.toml`` or
     ``[tool.mint]``, see ``mintlang.settings``) with the editor's over them:
     ``given`` names the settings the editor sent, which win over the file's.
+    ``mint.dialect = "auto"`` sets ``dialect_from_text``: each program's dialect
+    is then detected from its text (``mintlang.detection``), ``dialect`` (v4)
+    standing for a text not at hand.
     """
 
     controller: Controller = Controller.NEXTMOVE_PCI
     dialect: Dialect = Dialect.V4
+    dialect_from_text: bool = False
     config_pairing: str = DEFAULT_PATTERN
     debounce_ms: int = 150
     select: tuple[str, ...] | None = None  # codes or prefixes; None: the errors and warnings, not the hints
@@ -59,9 +67,16 @@ class Settings:
         """How keywords are spelt in the dialect, an abbreviation two keywords share naming the controller's one."""
         return vocabulary(self.dialect, self.controller)
 
+    def keyword(self, spelling: str) -> Keyword | None:
+        """The record of the keyword ``spelling`` names in the dialect (MintMT's own entry over v4's)."""
+        name = self.words.keyword_name(spelling) or spelling
+        return database().keywords_of(self.dialect).get(name.upper()) or database().lookup(name)
+
     @classmethod
     def from_options(cls, options: object, base: Settings | None = None) -> Settings:
-        """Settings from ``initializationOptions`` or a configuration answer; bad values keep ``base``."""
+        """Settings from ``initializationOptions`` or a configuration answer over ``base``: a setting left out
+        keeps ``base``'s value, a bad value too; ``null`` (set nowhere in the editor) is the default, which the
+        settings file's value overrides."""
         base = base or cls()
         if isinstance(options, Mapping) and isinstance(options.get("mint"), Mapping):
             options = options["mint"]
@@ -77,6 +92,11 @@ class Settings:
             "rules_url": base.rules_url,
         }
         given = set(base.given)
+        from_text = base.dialect_from_text
+        if options.get("dialect") == AUTO:
+            from_text = True
+            given.add("dialect")
+            options = {key: value for key, value in options.items() if key != "dialect"}
         for key, name, convert in (
             ("controller", "controller", Controller),
             ("dialect", "dialect", Dialect),
@@ -86,13 +106,24 @@ class Settings:
             ("ignore", "ignore", _codes),
             ("rulesUrl", "rules_url", str),
         ):
-            if options.get(key) is not None:
+            if key not in options:
+                continue
+            if options[key] is None:  # not set in the editor: the default, under the settings file's
+                values[name] = getattr(_DEFAULTS, name)
+                given.discard(name)
+            else:
                 try:
                     values[name] = convert(options[key])
                     given.add(name)
                 except (ValueError, TypeError):
                     log.warning("ignoring setting mint.%s = %r", key, options[key])
-        return cls(**values, given=frozenset(given))
+                    continue
+            from_text = from_text and name != "dialect"
+        return cls(**values, dialect_from_text=from_text, given=frozenset(given))
+
+    def for_text(self, program: str) -> Settings:
+        """These settings for a program whose text is ``program``: its dialect detected if the editor asks."""
+        return replace(self, dialect=_detected(program)) if self.dialect_from_text else self
 
     def over(self, project: FileSettings) -> Settings:
         """These settings over a settings file's: each the editor sent wins; both ignore lists apply."""
@@ -104,6 +135,9 @@ class Settings:
         }
         kept = {name: value for name, value in from_file.items() if name not in self.given}
         return replace(self, **kept, ignore=(*project.ignored, *self.ignore), config_file=project.config.value)
+
+
+_DEFAULTS = Settings()
 
 
 @dataclass(frozen=True, slots=True)
@@ -135,6 +169,10 @@ class Snapshot:
 
 
 TextReader = Callable[[str], str | None]  # uri -> text of an open document or file on disk, if any
+
+
+# Every request reads its snapshot's settings: the dialect of the last few texts is kept, not detected each time.
+_detected = functools.lru_cache(maxsize=16)(detect_dialect)
 
 
 def _codes(value: object) -> tuple[str, ...]:
@@ -230,6 +268,7 @@ class Analyses:
         settings = self.settings_for(uri)
         unit, other = partner(uri, settings, self.opened())
         other_text = self.read(other) if other is not None else None
+        settings = settings.for_text(text if unit is Unit.PROGRAM else other_text or "")
         key = (version, text, other_text, settings, self.encoding)
         cached = self._cache.get(uri)
         if cached is not None and cached[0] == key:

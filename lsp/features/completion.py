@@ -93,7 +93,7 @@ def _keywords(snapshot: Snapshot, statement: bool) -> Iterator[types.CompletionI
                 yield types.CompletionItem(label=old.name, kind=types.CompletionItemKind.Keyword, detail=detail)
         return
     controller = snapshot.settings.controller
-    for word in database().keywords.values():
+    for word in database().keywords_of(snapshot.settings.dialect).values():
         if word.kind in _HIDDEN or controller not in word.controllers:
             continue
         row = word.attributes_for(controller)
@@ -148,10 +148,10 @@ def event_names(snapshot: Snapshot) -> list[str]:
     return names
 
 
-def _constants() -> Iterator[types.CompletionItem]:
-    for record in database().constants.values():
+def _constants(dialect: Dialect) -> Iterator[types.CompletionItem]:
+    for record in database().constants_of(dialect).values():
         yield types.CompletionItem(
-            label=record.name, kind=types.CompletionItemKind.EnumMember, detail=describe.constant(record.name)
+            label=record.name, kind=types.CompletionItemKind.EnumMember, detail=describe.constant(record.name, dialect)
         )
 
 
@@ -272,7 +272,7 @@ def complete(snapshot: Snapshot, prefix: str, cursor: types.Position) -> list[ty
     if previous is not None and (previous.kind in _NOTHING_AFTER or previous.text.endswith(".")):
         return []  # a new name, a complete statement, or the decimals of a number
     if partial is not None and partial.text.startswith("_"):
-        return list(_constants())
+        return list(_constants(snapshot.settings.dialect))
     if previous is not None and previous.kind in (TokenKind.GOSUB, TokenKind.GOTO):
         return list(_labels(snapshot))
     statement = previous is None or previous.kind in _STATEMENT_STARTERS
@@ -300,7 +300,7 @@ def register(server: MintServer) -> None:
     @server.feature(types.COMPLETION_ITEM_RESOLVE)
     def resolve(item: types.CompletionItem) -> types.CompletionItem:
         name = item.data.get("keyword") if isinstance(item.data, dict) else None
-        word = database().lookup(name) if name else None
+        word = (database().lookup(name) or database().mintmt_keywords.get(name.upper())) if name else None
         if word is not None:
             text = describe.keyword(word, server.analyses.settings.controller)
             item.documentation = types.MarkupContent(kind=types.MarkupKind.Markdown, value=text)

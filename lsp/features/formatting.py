@@ -1,7 +1,9 @@
 """Formatting, the house style: upper-case keywords, labels at the margin, blocks indented, no trailing blanks.
 
 * Keywords (a comment's REM included, and those in a macro's text, which is Mint
-  too) are written in upper case.
+  too) are written in upper case, in v3 and v4. MintMT keeps every word as
+  written: its notes write ``Loop``, ``End If``, ``Event`` in mixed case, as
+  its programs do, and ``'`` starts most of its comments.
 * A label line starts at column 0, wherever it stands: a label names a place in
   the program, not a step of a block.
 * Every other line is indented one unit (the editor's tab or spaces) per block
@@ -23,6 +25,7 @@ from __future__ import annotations
 from lsprotocol import types
 
 from mintlang.diagnostics import Span
+from mintlang.dialect import Dialect
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
@@ -76,7 +79,10 @@ def _indentations(snapshot: Snapshot, options: types.FormattingOptions, lines: r
 
 
 def _keywords(snapshot: Snapshot, lines: range) -> dict[int, list[Span]]:
-    """Per 0-based line: the spans of its keywords not written in upper case (a comment's REM included)."""
+    """Per 0-based line: the spans of its keywords not written in upper case (a comment's REM included);
+    none in MintMT, whose words keep their case."""
+    if snapshot.document.dialect is Dialect.MINTMT:
+        return {}
     positions = snapshot.positions
     found: dict[int, list[Span]] = {}
     for token in snapshot.document.tokens:

@@ -52,15 +52,14 @@ def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
     if found is not None:
         return describe.symbol(snapshot, found[0]), found[1].span.start, found[1].span.end
     if token.kind is TokenKind.CONSTANT:
-        text = describe.constant(token.text)
+        text = describe.constant(token.text, snapshot.settings.dialect)
     elif token.kind in (TokenKind.NAME, TokenKind.LABEL):
         text = None
     elif snapshot.settings.dialect is Dialect.V3:
         word = database().lookup_v3(token.text)
         text = describe.v3_keyword(word) if word is not None else None
     else:
-        name = snapshot.settings.words.keyword_name(token.text)
-        word = database().lookup(name or token.text)
+        word = snapshot.settings.keyword(token.text)
         text = describe.keyword(word, snapshot.settings.controller, token.text) if word is not None else None
         here = addressed.hover_lines(snapshot, offset) if text is not None else []
         text = "\n".join([text, *here]) if text is not None else None

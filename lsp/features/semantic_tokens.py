@@ -29,14 +29,14 @@ from mintlang.syntax.lexer import LexedLine
 from mintlang.syntax.lines import PhysicalLine
 from mintlang.syntax.nodes import identity
 from mintlang.syntax.parser import Document
-from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
+from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, MINTMT_BLOCK_WORDS, TokenKind
 
 TOKEN_TYPES = ["keyword", "function", "enumMember", "variable", "macro", "number", "string", "comment", "operator"]
 TOKEN_MODIFIERS = ["deprecated"]
 _TYPE = {name: index for index, name in enumerate(TOKEN_TYPES)}
 _DEPRECATED = 1 << 8  # a type with this bit set carries the deprecated modifier (bit 0 of the LSP's set)
 _BY_KIND: dict[TokenKind, int] = {
-    **dict.fromkeys(GRAMMAR_KEYWORDS, _TYPE["keyword"]),
+    **dict.fromkeys(GRAMMAR_KEYWORDS | MINTMT_BLOCK_WORDS, _TYPE["keyword"]),
     TokenKind.KEYWORD: _TYPE["keyword"],
     TokenKind.FUNCTION: _TYPE["function"],
     TokenKind.CONSTANT: _TYPE["enumMember"],

@@ -15,7 +15,6 @@ from dataclasses import dataclass
 
 from lsprotocol import types
 
-from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Keyword
 from mintlang.lsp.lookup import prefix_tokens, significant
 from mintlang.lsp.server import MintServer
@@ -116,8 +115,7 @@ def signature_help(prefix: str, settings: Settings) -> types.SignatureHelp | Non
     callee = _callee(significant(prefix_tokens(prefix, settings.dialect)))
     if callee is None:
         return None
-    name = settings.words.keyword_name(callee.keyword.text)
-    word = database().lookup(name or callee.keyword.text)
+    word = settings.keyword(callee.keyword.text)
     formats = [label for label in word.formats if word.name in label.upper()] if word is not None else []
     if word is None or not formats:
         return None
@@ -135,5 +133,4 @@ def register(server: MintServer) -> None:
     )
     def help_(params: types.SignatureHelpParams) -> types.SignatureHelp | None:
         typing = server.typing(params.text_document.uri, params.position)
-        settings = server.analyses.settings_for(params.text_document.uri)
-        return signature_help(typing[1], settings) if typing is not None else None
+        return signature_help(typing[1], typing[0].settings) if typing is not None else None

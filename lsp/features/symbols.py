@@ -1,4 +1,5 @@
-"""Document outline (subroutines, event handlers, variables, macros) and workspace symbols."""
+"""Document outline (subroutines, event handlers, MintMT's Event and Startup blocks, variables, macros) and
+workspace symbols."""
 
 from __future__ import annotations
 
@@ -10,12 +11,15 @@ from pathlib import Path
 from lsprotocol import types
 from pygls.uris import from_fs_path, to_fs_path
 
+from mintlang.diagnostics import Span
 from mintlang.lsp.features.navigation import locations
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.pairing import PROGRAM_SUFFIX
+from mintlang.semantic.blocks import BlockKind, Place
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import Symbol, SymbolKind
+from mintlang.syntax import nodes as n
 
 MAX_FILES = 2000  # workspace symbols read at most this many programs from disk
 
@@ -82,6 +86,7 @@ def _document_symbols(snapshot: Snapshot) -> Iterator[types.DocumentSymbol]:
             range=whole if whole.end.line >= whole.start.line else positions.range(definition.span),
             selection_range=positions.range(definition.span),
         )
+    yield from _mintmt_blocks(snapshot)
     table = snapshot.model.symbols
     for symbol in (*table.variables.values(), *table.macros.values()):
         definition = next((place for place in symbol.definitions if place.unit is snapshot.unit), None)
@@ -93,6 +98,37 @@ def _document_symbols(snapshot: Snapshot) -> Iterator[types.DocumentSymbol]:
                 range=positions.range(definition.span),
                 selection_range=positions.range(definition.span),
             )
+
+
+def _mintmt_blocks(snapshot: Snapshot) -> Iterator[types.DocumentSymbol]:
+    """MintMT's ``Event NAME`` and ``Startup`` blocks, from the opener to the end of the closer's line (or of
+    the file, when never closed), selected at the event's name or the word ``Startup``."""
+    blocks = [
+        block
+        for block in snapshot.model.structures[snapshot.unit].blocks
+        if block.kind in (BlockKind.EVENT, BlockKind.STARTUP)
+    ]
+    if not blocks:
+        return
+    positions = snapshot.positions
+    lines = {line.number: line for line in snapshot.document.placed}
+
+    def span_of(place: Place) -> Span:
+        line = lines[place.line]
+        return line.span(n.flatten_statements(line.syntax.statements)[place.index].span)
+
+    for block in blocks:
+        line = lines[block.opener.line]
+        opener = n.flatten_statements(line.syntax.statements)[block.opener.index]
+        event = opener.name if isinstance(opener, n.EventBlock) else None
+        end = span_of(block.closer).end if block.closer is not None else len(snapshot.document.source)
+        yield types.DocumentSymbol(
+            name="Startup" if event is None else f"Event {event.text}",
+            kind=types.SymbolKind.Constructor if event is None else types.SymbolKind.Event,
+            detail="power-up code" if event is None else "event handler",
+            range=positions.range(Span(span_of(block.opener).start, end)),
+            selection_range=positions.range(line.span((event or opener).span)),
+        )
 
 
 def register(server: MintServer) -> None:

@@ -1,4 +1,4 @@
-"""Every request on every corpus program (v4, v3, configuration files, broken ones), at the start,
+"""Every request on every corpus program (v4, v3, MintMT, configuration files, broken ones), at the start,
 indentation, middle and end of every line, is answered without an internal error.
 
 The handlers are called in-process through pygls' feature table, so the sweep
@@ -25,6 +25,7 @@ from mintlang.lsp.workspace import Settings
 
 CORPUS = Path(__file__).parents[1] / "corpus"
 PROGRAMS = sorted(path for path in CORPUS.rglob("*") if path.suffix in (".mnt", ".cfg"))
+DIALECT_OF = {"v3": Dialect.V3, "mintmt": Dialect.MINTMT}  # by the corpus folder; v4 otherwise
 FORMAT = t.FormattingOptions(tab_size=2, insert_spaces=True)
 
 
@@ -96,7 +97,7 @@ def _position_requests(call: Callable[[str, object], object], doc: t.TextDocumen
 @pytest.mark.parametrize("path", PROGRAMS, ids=lambda path: str(path.relative_to(CORPUS)))
 def test_every_request_is_answered(server, path):
     text = path.read_text(encoding="utf-8", errors="replace")
-    dialect = Dialect.V3 if "v3" in path.relative_to(CORPUS).parts else Dialect.V4
+    dialect = next((DIALECT_OF[part] for part in path.relative_to(CORPUS).parts if part in DIALECT_OF), Dialect.V4)
     server.analyses.settings = Settings(dialect=dialect)
     uri = path.resolve().as_uri()
     server.workspace.put_text_document(t.TextDocumentItem(uri=uri, language_id="mint", version=1, text=text))

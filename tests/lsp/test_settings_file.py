@@ -3,6 +3,8 @@ editor's own settings win over it."""
 
 from __future__ import annotations
 
+import asyncio
+
 import pytest
 from lsprotocol import types
 
@@ -54,6 +56,23 @@ async def test_the_editors_setting_wins_over_the_settings_file(client, tmp_path)
         types.DidChangeConfigurationParams(settings={"mint": {"controller": "nextmove-pci"}})
     )
     assert error_numbers(await published(client, uri)) == set()
+
+
+async def test_a_setting_the_editor_sends_as_null_gives_way_to_the_settings_file_again(client, tmp_path):
+    # VS Code sends null for a setting the user has not set: its default must not hide the project's mint.toml
+    (tmp_path / "mint.toml").write_text('controller = "mintdrive"\n', encoding="utf-8")
+    uri = uri_of(tmp_path / "out.mnt")
+    client.workspace_did_change_configuration(
+        types.DidChangeConfigurationParams(settings={"mint": {"controller": "nextmove-pci"}})
+    )
+    assert error_numbers(await open_document(client, uri, OUTPUT_20)) == set()
+    client.workspace_did_change_configuration(
+        types.DidChangeConfigurationParams(settings={"mint": {"controller": None}})
+    )
+    # the check of the open document before the change may still be on its way: wait for the one after it
+    async with asyncio.timeout(10):
+        while error_numbers(await published(client, uri)) != {8}:
+            pass
 
 
 async def test_a_broken_settings_file_leaves_the_editors_settings(client, tmp_path):

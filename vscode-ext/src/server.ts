@@ -6,7 +6,13 @@ import { currentHost, currentSettings } from "./host";
 import { LANGUAGE_ID } from "./language";
 import { showError } from "./notify";
 import { resolveTool, type Command } from "./resolve";
-import { initializationOptions } from "./settings";
+import { serverSettings } from "./settings";
+
+const SECTION = "mint";
+
+/** The `mint` settings the user set, for the folder of `scopeUri` if given (null where set nowhere). */
+const userSettings = (scopeUri?: string) =>
+  serverSettings(vscode.workspace.getConfiguration(SECTION, scopeUri === undefined ? undefined : vscode.Uri.parse(scopeUri)));
 
 export interface Server {
   /** Stops the running server, if any, and starts one from the current settings. */
@@ -22,9 +28,24 @@ function createClient({ command, args }: Command, output: vscode.OutputChannel):
     ],
     outputChannel: output,
     // Evaluated at each start, so that a restart passes the current controller and dialect.
-    initializationOptions: () => initializationOptions(currentSettings()),
-    // Sends workspace/didChangeConfiguration with the `mint` section whenever it changes.
-    synchronize: { configurationSection: "mint" },
+    initializationOptions: () => userSettings(),
+    // Sends workspace/didChangeConfiguration whenever the `mint` section changes.
+    synchronize: { configurationSection: SECTION },
+    middleware: {
+      workspace: {
+        // Without the values: the client's would hold VS Code's defaults for every setting. The
+        // server asks for the section (workspace/configuration) on this notification, answered below.
+        didChangeConfiguration: (_sections, next) => next(undefined),
+        // The `mint` section as the user set it, so that a project's mint.toml is not overridden.
+        configuration: async (params, token, next) => {
+          const answers = await next(params, token);
+          if (!Array.isArray(answers)) return answers;
+          return params.items.map((item, index) =>
+            item.section === SECTION ? userSettings(item.scopeUri) : answers[index],
+          );
+        },
+      },
+    },
   };
   // No `transport`: TransportKind.stdio would append a --stdio argument, which mint-lsp rejects;
   // without one the client talks over the process's stdin and stdout, mint-lsp's default.

@@ -2,16 +2,18 @@
 // No vscode import: the unit tests run under plain node.
 
 export const CONTROLLERS = ["nextmove-pci", "nextmove-pc", "nextmove-bx", "mintdrive", "servonode51"] as const;
-export const DIALECTS = ["v4", "v3"] as const;
+export const DIALECTS = ["v4", "v3", "mintmt"] as const;
+/** What mint.dialect offers: a dialect, or `auto` (the server detects MintMT from each program's text). */
+export const DIALECT_CHOICES = [...DIALECTS, "auto"] as const;
 
 export type Controller = (typeof CONTROLLERS)[number];
-export type Dialect = (typeof DIALECTS)[number];
+export type DialectChoice = (typeof DIALECT_CHOICES)[number];
 
 export interface MintSettings {
   readonly serverPath: string;
   readonly pythonPath: string;
   readonly controller: Controller;
-  readonly dialect: Dialect;
+  readonly dialect: DialectChoice;
   readonly pairConfigFiles: boolean;
   /** The configuration file of `<name>.mnt`; without `<name>`, programs have none (as in the server). */
   readonly configPairing: string;
@@ -21,21 +23,32 @@ export interface MintSettings {
 /** Settings that change which server runs: the client restarts when one of them changes. */
 export const SERVER_SETTINGS = ["mint.serverPath", "mint.pythonPath"] as const;
 
+/** The settings the server reads (lsp/workspace.py, Settings.from_options). */
+export const SERVER_READS = ["controller", "dialect", "configPairing", "debounceMs", "select", "ignore", "rulesUrl"] as const;
+
 /**
- * What the server is told at start-up: every setting it reads (lsp/workspace.py,
- * Settings.from_options), so the files open at start are checked with them from the first
- * diagnostics on. Later changes reach it through workspace/didChangeConfiguration.
+ * What the server is told, at start-up (initializationOptions) and whenever it asks
+ * (workspace/configuration): each setting it reads as the user set it, or null where the user set
+ * it nowhere. The server then takes a null setting from the project's settings file (mint.toml),
+ * and from its own defaults without one: VS Code's defaults must not hide the project's choices.
  */
-export interface InitializationOptions {
-  readonly controller: Controller;
-  readonly dialect: Dialect;
-  readonly configPairing: string;
-  readonly debounceMs: number;
-}
+export type ServerSettings = Record<(typeof SERVER_READS)[number], unknown>;
 
 /** The `mint` configuration section; vscode.WorkspaceConfiguration is one. */
 export interface Section {
   get(key: string): unknown;
+}
+
+/** Where a setting is set; vscode.WorkspaceConfiguration.inspect gives this (and more). */
+export interface Inspection {
+  readonly globalValue?: unknown;
+  readonly workspaceValue?: unknown;
+  readonly workspaceFolderValue?: unknown;
+}
+
+/** A section that tells where each setting is set; vscode.WorkspaceConfiguration is one. */
+export interface InspectableSection {
+  inspect(key: string): Inspection | undefined;
 }
 
 const oneOf = <T extends string>(choices: readonly T[], value: unknown, fallback: T): T =>
@@ -52,14 +65,18 @@ export function readSettings(section: Section): MintSettings {
     serverPath: text(section.get("serverPath")),
     pythonPath: text(section.get("pythonPath")),
     controller: oneOf(CONTROLLERS, section.get("controller"), "nextmove-pci"),
-    dialect: oneOf(DIALECTS, section.get("dialect"), "v4"),
+    dialect: oneOf(DIALECT_CHOICES, section.get("dialect"), "v4"),
     pairConfigFiles: typeof pair === "boolean" ? pair : true,
     configPairing: typeof pairing === "string" ? pairing.trim() : "<name>.cfg",
     debounceMs: typeof debounce === "number" && Number.isInteger(debounce) && debounce >= 0 ? debounce : 150,
   };
 }
 
-export function initializationOptions(settings: MintSettings): InitializationOptions {
-  const { controller, dialect, configPairing, debounceMs } = settings;
-  return { controller, dialect, configPairing, debounceMs };
+/** The server's settings as the user set them, the most specific scope winning (folder, workspace, user). */
+export function serverSettings(section: InspectableSection): ServerSettings {
+  const set = (key: string): unknown => {
+    const found = section.inspect(key);
+    return found?.workspaceFolderValue ?? found?.workspaceValue ?? found?.globalValue ?? null;
+  };
+  return Object.fromEntries(SERVER_READS.map((key) => [key, set(key)])) as ServerSettings;
 }

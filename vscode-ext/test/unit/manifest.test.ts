@@ -5,13 +5,14 @@ import { readFileSync } from "node:fs";
 import * as path from "node:path";
 import { test } from "node:test";
 
-import { CONTROLLERS, DIALECTS } from "../../src/settings";
+import { CONTROLLERS, DIALECT_CHOICES, DIALECTS, SERVER_READS } from "../../src/settings";
 
 const EXTENSION = path.resolve(__dirname, "..", "..", "..");
 const CHECKOUT = path.resolve(EXTENSION, "..");
 
 interface Property {
-  type: string;
+  type: string | string[];
+  items?: { type: string };
   default: unknown;
   enum?: string[];
   pattern?: string;
@@ -62,22 +63,39 @@ test("mint.controller and mint.dialect offer exactly what the server and the too
   assert.deepEqual([...controllers].sort(), [...CONTROLLERS].sort());
   assert.deepEqual([...dialects].sort(), [...DIALECTS].sort());
   assert.deepEqual(property("mint.controller").enum, [...CONTROLLERS]);
-  assert.deepEqual(property("mint.dialect").enum, [...DIALECTS]);
+  assert.deepEqual(property("mint.dialect").enum, [...DIALECTS, "auto"]);
+  assert.deepEqual(property("mint.dialect").enum, [...DIALECT_CHOICES]);
+  const workspace = readFileSync(path.join(CHECKOUT, "lsp", "workspace.py"), "utf8");
+  assert.equal(/^AUTO = "(\w+)"/m.exec(workspace)?.[1], "auto", "the server's word for detection");
 });
 
 test("every setting the server reads is contributed, with its type and the server's default", () => {
   const workspace = readFileSync(path.join(CHECKOUT, "lsp", "workspace.py"), "utf8");
   const read = [...workspace.matchAll(/\("(\w+)", "\w+", \w+\)/g)].map((match) => match[1]);
-  assert.deepEqual(read, ["controller", "dialect", "configPairing", "debounceMs"], "Settings.from_options reads these");
+  assert.deepEqual(read, [...SERVER_READS], "Settings.from_options reads these, and the extension sends them");
   assert.equal(property("mint.controller").type, "string");
   assert.equal(property("mint.controller").default, "nextmove-pci");
   assert.equal(property("mint.dialect").type, "string");
   assert.equal(property("mint.dialect").default, "v4");
   assert.equal(property("mint.configPairing").type, "string");
-  assert.equal(property("mint.configPairing").default, /config_pairing: str = "([^"]*)"/.exec(workspace)?.[1]);
+  assert.match(workspace, /config_pairing: str = DEFAULT_PATTERN/);
+  const pairing = readFileSync(path.join(CHECKOUT, "mintlang", "pairing.py"), "utf8");
+  assert.equal(property("mint.configPairing").default, /^DEFAULT_PATTERN = "([^"]*)"/m.exec(pairing)?.[1]);
   assert.equal(property("mint.debounceMs").type, "integer");
   assert.equal(property("mint.debounceMs").minimum, 0);
   assert.equal(property("mint.debounceMs").default, Number(/debounce_ms: int = (\d+)/.exec(workspace)?.[1]));
+  // None in the server: the errors and warnings, not the hints; a list of codes or prefixes otherwise.
+  assert.match(workspace, /select: tuple\[str, \.\.\.\] \| None = None/);
+  assert.deepEqual(property("mint.select").type, ["array", "null"]);
+  assert.deepEqual(property("mint.select").items, { type: "string" });
+  assert.equal(property("mint.select").default, null);
+  assert.match(workspace, /ignore: tuple\[str, \.\.\.\] = \(\)/);
+  assert.equal(property("mint.ignore").type, "array");
+  assert.deepEqual(property("mint.ignore").items, { type: "string" });
+  assert.deepEqual(property("mint.ignore").default, []);
+  assert.match(workspace, /rules_url: str \| None = None/);
+  assert.deepEqual(property("mint.rulesUrl").type, ["string", "null"]);
+  assert.equal(property("mint.rulesUrl").default, null);
   for (const name of ["mint.serverPath", "mint.pythonPath"]) {
     assert.equal(property(name).type, "string");
     assert.equal(property(name).default, "");

@@ -1,7 +1,7 @@
 import assert from "node:assert/strict";
 import { test } from "node:test";
 
-import { initializationOptions, readSettings, type Section } from "../../src/settings";
+import { readSettings, serverSettings, type Inspection, type Section } from "../../src/settings";
 
 const section = (values: Record<string, unknown>): Section => ({ get: (key) => values[key] });
 
@@ -47,14 +47,38 @@ test("the server's own settings are read, bad ones fall back to its defaults", (
   }
 });
 
-test("the server is initialised with every setting it reads, and no paths", () => {
-  const settings = readSettings(
-    section({ controller: "servonode51", dialect: "v3", configPairing: "<name>.ini", debounceMs: 0, serverPath: "/x" }),
+/** A section whose settings are set where `scopes` says: key -> where -> value. */
+const inspectable = (scopes: Record<string, Inspection>) => ({ inspect: (key: string) => scopes[key] });
+
+test("the server is told only the settings the user set, null for the others, and no paths", () => {
+  const sent = serverSettings(
+    inspectable({
+      controller: { globalValue: "servonode51" },
+      dialect: { globalValue: "v3", workspaceValue: "auto" },
+      select: { workspaceValue: ["E"], workspaceFolderValue: ["W1", "I201"] },
+      serverPath: { globalValue: "/x" },
+      // What VS Code reports for a setting set nowhere: the default alone, which is not sent.
+      debounceMs: { defaultValue: 150 } as Inspection,
+    }),
   );
-  assert.deepEqual(initializationOptions(settings), {
+  assert.deepEqual(sent, {
     controller: "servonode51",
-    dialect: "v3",
-    configPairing: "<name>.ini",
-    debounceMs: 0,
+    dialect: "auto",
+    configPairing: null,
+    debounceMs: null,
+    select: ["W1", "I201"],
+    ignore: null,
+    rulesUrl: null,
   });
+});
+
+test("a value set to what happens to be the default is still the user's, and sent", () => {
+  const sent = serverSettings(inspectable({ dialect: { globalValue: "v4" }, ignore: { workspaceValue: [] } }));
+  assert.equal(sent.dialect, "v4");
+  assert.deepEqual(sent.ignore, []);
+});
+
+test("mint.dialect may be mintmt or auto", () => {
+  assert.equal(readSettings(section({ dialect: "mintmt" })).dialect, "mintmt");
+  assert.equal(readSettings(section({ dialect: "auto" })).dialect, "auto");
 });

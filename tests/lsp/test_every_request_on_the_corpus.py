@@ -98,7 +98,7 @@ def _position_requests(call: Callable[[str, object], object], doc: t.TextDocumen
 def test_every_request_is_answered(server, path):
     text = path.read_text(encoding="utf-8", errors="replace")
     dialect = next((DIALECT_OF[part] for part in path.relative_to(CORPUS).parts if part in DIALECT_OF), Dialect.V4)
-    server.analyses.settings = Settings(dialect=dialect)
+    server.analyses.settings = Settings.from_options({"dialect": dialect.value})  # given: over any settings file
     uri = path.resolve().as_uri()
     server.workspace.put_text_document(t.TextDocumentItem(uri=uri, language_id="mint", version=1, text=text))
     doc = t.TextDocumentIdentifier(uri=uri)

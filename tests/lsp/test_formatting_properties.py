@@ -23,7 +23,8 @@ OPTIONS = [types.FormattingOptions(tab_size=2, insert_spaces=True), types.Format
 
 
 def snapshot_of(text: str, dialect: Dialect = Dialect.V4) -> Snapshot:
-    return Analyses(read=lambda uri: None, settings=Settings(dialect=dialect)).snapshot("file:///p.mnt", text, 1)
+    settings = Settings.from_options({"dialect": dialect.value})  # given, as an editor's: over any settings file
+    return Analyses(read=lambda uri: None, settings=settings).snapshot("file:///p.mnt", text, 1)
 
 
 def formatted(text: str, options: types.FormattingOptions, dialect: Dialect = Dialect.V4) -> str:
@@ -88,10 +89,38 @@ def test_formatting_twice_is_formatting_once_and_keeps_the_program(lines, option
     assert all(once.splitlines()[number - 1].startswith("#") for number in labelled)  # labels at the margin
 
 
+MINTMT_STATEMENTS = [
+    "Loop", "End Loop", "If (COMMS(1) = 1) Then", "EndIf", "End  if", "Event Comms1", "Event MOVEBUFFERLOW",
+    "End Event", "Startup", "End Startup", "MOVER(0) = 10      ' load a move", "GO(0,1)", "' a comment  ",
+    "MOVEBUFFERSIZE([0,1]) = 4;", "If POS(0) > 2 Then JOG(1) = 0", "DIM a", "a = a + 1 ' count", "rem  old style",
+    "CONTOURPARAMETER([0,1],0) = 10;", "",
+]  # fmt: skip
+MINTMT_LINES = st.tuples(
+    st.sampled_from(["", " ", "  ", "\t"]),
+    st.sampled_from(MINTMT_STATEMENTS),
+    st.sampled_from([str, str.lower, str.upper]),
+    st.sampled_from(["", " ", "\t"]),
+    st.sampled_from(["\n", "\r\n"]),
+)
+
+
+@given(st.lists(MINTMT_LINES, max_size=14), st.sampled_from(OPTIONS))
+def test_mintmt_formatting_twice_is_formatting_once_and_keeps_the_program_and_its_words(lines, options):
+    text = "".join(indent + case(statement) + trailing + end for indent, statement, case, trailing, end in lines)
+    once = formatted(text, options, Dialect.MINTMT)
+    assert formatted(once, options, Dialect.MINTMT) == once
+    assert parsed(once, Dialect.MINTMT) == parsed(text, Dialect.MINTMT)
+    # only blanks change: MintMT's words and comments keep their case
+    assert [line.strip(" \t") for line in once.splitlines()] == [line.strip(" \t") for line in text.splitlines()]
+
+
+DIALECT_OF = {"v3": Dialect.V3, "mintmt": Dialect.MINTMT}  # by the corpus folder; v4 otherwise
+
+
 @pytest.mark.parametrize("path", PROGRAMS, ids=lambda path: str(path.relative_to(CORPUS)))
 def test_every_corpus_program_formats_stably_and_keeps_its_parse(path):
     text = path.read_text(encoding="utf-8", errors="replace")
-    dialect = Dialect.V3 if "v3" in path.relative_to(CORPUS).parts else Dialect.V4
+    dialect = next((DIALECT_OF[part] for part in path.relative_to(CORPUS).parts if part in DIALECT_OF), Dialect.V4)
     once = formatted(text, OPTIONS[0], dialect)
     assert formatted(once, OPTIONS[0], dialect) == once
     assert parsed(once, dialect) == parsed(text, dialect)

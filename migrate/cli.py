@@ -39,7 +39,7 @@ from mintlang.cli.options import (
     version_option,
 )
 from mintlang.cli.settings import ProjectCommand, typed
-from mintlang.cli.terminal import console, destination
+from mintlang.cli.terminal import console, destination, refuse_overwriting
 from mintlang.diagnostics import split_lines
 from mintlang.migrate import leftovers, verifying
 from mintlang.migrate.api import UnknownRule, rules, select
@@ -178,6 +178,8 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
             raise UsageError("--stdout prints one file: name one program or one configuration file")
     except (UsageError, UnknownRule) as error:
         _fail(str(error))
+    sources = [file.path for application in applications for file, _ in application.files()]
+    refuse_overwriting(output_file, sources, _fail)
     migrated = [application.migrate(controller, only or None, skip, opt_in) for application in applications]
     items = [item for application in migrated for item in application]
     problems = [f"{item.entry.path}: {item.entry.failure}; left as it was" for item in items if item.entry.failure]

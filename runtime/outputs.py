@@ -12,18 +12,12 @@ import os
 from collections.abc import Mapping
 from pathlib import Path
 
+from mintlang.cli.terminal import same_file
 from mintlang.runtime.trace import FIRST_COLUMN, image_types
 
 
 class OutputProblem(Exception):
     """An output path that cannot or must not be written; the message names it and says why."""
-
-
-def _same(path: Path, other: Path) -> bool:
-    try:
-        return path.samefile(other)
-    except OSError:  # one of them does not exist (yet): compare where they would be
-        return path.resolve() == other.resolve()
 
 
 def _writable(path: Path) -> None:
@@ -39,7 +33,7 @@ def _writable(path: Path) -> None:
 
 def _not_an_input(path: Path, inputs: Mapping[Path, str]) -> None:
     for source, role in inputs.items():
-        if _same(path, source):
+        if same_file(path, source):
             raise OutputProblem(f"cannot write {path}: it is also {role}")
 
 

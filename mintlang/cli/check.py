@@ -33,7 +33,7 @@ from mintlang.cli.options import (
 from mintlang.cli.parallel import all_cores, map_in_order
 from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, as_statistics, render_text
 from mintlang.cli.settings import describe, overrides, settings_failed
-from mintlang.cli.terminal import console, destination
+from mintlang.cli.terminal import console, destination, refuse_overwriting
 from mintlang.codes import selector
 from mintlang.diagnostics import Severity
 from mintlang.dialect import Dialect
@@ -182,6 +182,7 @@ def check(
         planned = plan(found.files, layer, _read_stdin(stdin_filename) if _STDIN in paths else None)
     except SettingsError as error:
         settings_failed("mint check", error)
+    refuse_overwriting(output_file, found.files, _fail)
     fixing = Fixing.asked(fix, unsafe_fixes, diff)
     work = marked(planned.jobs, planned.hidden, fixing) if fixing is not None else planned.jobs
     if planned.empty and not found.unreadable and not planned.problems:

@@ -33,6 +33,29 @@ def console(color: str = "auto", *, stderr: bool = False, file: IO[str] | None =
     return Console(**settings)  # type: ignore[arg-type]
 
 
+_SOURCE_SUFFIXES = (".mnt", ".cfg")
+
+
+def same_file(path: Path, other: Path) -> bool:
+    """Whether two paths name one file (a link, another spelling); where they would be, for one not there yet."""
+    try:
+        return path.samefile(other)
+    except OSError:
+        return path.resolve() == other.resolve()
+
+
+def refuse_overwriting(path: Path | None, inputs: Iterable[Path], fail: Callable[[str], NoReturn]) -> None:
+    """An output file (``--output-file``, ``--lcov``) never takes the place of an input or of a Mint source:
+    the report would silently replace the program it is about."""
+    if path is None:
+        return
+    if path.name.lower().endswith(_SOURCE_SUFFIXES) and path.exists():
+        fail(f"cannot write {path}: it is a Mint source file, not a report")
+    for source in inputs:
+        if same_file(path, source):
+            fail(f"cannot write {path}: it is also an input")
+
+
 @contextmanager
 def destination(path: Path | None, fail: Callable[[str], NoReturn], *, stderr: bool = False) -> Iterator[IO[str]]:
     """Standard output (or error), or the ``--output-file``; one that cannot be opened is ``fail``'s one line."""

@@ -25,7 +25,7 @@ from mintlang.cli.options import (
     version_option,
 )
 from mintlang.cli.parallel import all_cores, map_in_order
-from mintlang.cli.terminal import console, destination
+from mintlang.cli.terminal import console, destination, refuse_overwriting
 from mintlang.dialect import Dialect
 from mintlang.runtime.dialects import SIMULATED
 from mintlang.runtime.testing import reports
@@ -93,6 +93,9 @@ def test(  # noqa: PLR0917 - click passes every option as an argument
         errors.print("mint test: no tests found (programs with REM @expect lines or a .scenario.toml beside them)")
         sys.exit(USAGE if unreadable else NO_TESTS)
     enabled = drives == "enabled"
+    inputs = [path for case in cases for path in (case.program, case.scenario) if path is not None]
+    refuse_overwriting(output_file, inputs, _fail)
+    refuse_overwriting(lcov if coverage else None, inputs, _fail)
     options = Options(controller, Dialect(dialect) if dialect else None, until_ms, max_wall_s, enabled, coverage)
     began = time.perf_counter()
     results = map_in_order(

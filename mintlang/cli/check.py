@@ -29,6 +29,7 @@ from mintlang.cli.options import (
     output_file_option,
     refuse_quiet_and_verbose,
     verbosity_options,
+    version_option,
 )
 from mintlang.cli.parallel import all_cores, map_in_order
 from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, as_statistics, render_text
@@ -81,6 +82,7 @@ def _fail(message: str) -> NoReturn:
 
 @click.command(context_settings=HELP_OPTIONS, epilog=EXIT_STATUS)
 @click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path))
+@version_option("mint check")
 @click.option("--dialect", type=click.Choice([d.value for d in Dialect]), default="v4", show_default=True)
 @controller_option("The controller the programs run on.")
 @click.option(

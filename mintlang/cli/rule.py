@@ -14,7 +14,7 @@ from rich.console import Console
 from rich.markdown import Markdown
 
 from mintlang.analysis.suggestions import closest, did_you_mean
-from mintlang.cli.options import HELP_OPTIONS, format_option
+from mintlang.cli.options import HELP_OPTIONS, format_option, version_option
 from mintlang.ruledocs import RuleDoc, find, group_of, rules
 from mintlang.ruledocs.links import configured_base, rule_url
 from mintlang.ruledocs.render import markdown, record
@@ -36,6 +36,7 @@ def _documented(code: str) -> RuleDoc:
 @click.argument("codes", nargs=-1)
 @click.option("--all", "every", is_flag=True, help="Every code the checker reports, group by group.")
 @format_option(["text", "json"], "Markdown text (formatted on a terminal) or JSON.")
+@version_option("mint rule")
 def rule(codes: tuple[str, ...], every: bool, output_format: str) -> None:
     """Explain codes (E2016, E2, W103): what each catches, why it matters, an example before and after,
     the guides' sections and its fix."""

@@ -1,4 +1,4 @@
-"""The program front end: ``REM @sim`` and ``REM @expect`` lines inside a Mint program (W-2).
+"""The program front end: ``REM @sim`` and ``REM @expect`` lines inside a Mint program (W-2), ``' @sim`` in MintMT.
 
 Directives live in comments so the program stays valid Mint for the real
 controller. The project's lexer finds the comments, so a ``REM`` after ``:``
@@ -22,7 +22,8 @@ from mintlang.runtime.scenario.problems import Invalid, ScenarioError
 from mintlang.runtime.scenario.stimulus import PlantModel, Scenario, WorldRecord
 from mintlang.syntax.lexer import lex
 
-_DIRECTIVE = re.compile(r"REM\s*@(?P<kind>sim|expect)\b(?P<body>.*)", re.IGNORECASE)
+# REM, or MintMT's ' (which the lexer makes a comment only in MintMT, where v4 has character constants).
+_DIRECTIVE = re.compile(r"(?:REM|')\s*@(?P<kind>sim|expect)\b(?P<body>.*)", re.IGNORECASE)
 
 
 def parse_directives(

@@ -30,6 +30,11 @@ OUTCOMES: Mapping[str, tuple[str, str]] = {
 }
 
 
+# Statements that declare rather than run: a MintMT Event line is entered by its event, never run itself
+# (the main flow only steps over it), as a v4 label line holds no statement to count.
+_DECLARATIONS = frozenset({"EventBlock"})
+
+
 @dataclass(frozen=True, slots=True)
 class Branch:
     line: int
@@ -113,7 +118,7 @@ class Recorder:
         sites = controller.vm.sites
         found = []
         for unit, path in self.files.items():
-            pcs = [pc for pc, site in enumerate(sites) if site.unit == unit]
+            pcs = [pc for pc, site in enumerate(sites) if site.unit == unit and site.kind not in _DECLARATIONS]
             lines: dict[int, int] = {}
             for pc in pcs:
                 lines[sites[pc].line] = max(lines.get(sites[pc].line, 0), self.completed[pc])

@@ -47,11 +47,21 @@ def discover(paths: Iterable[Path]) -> tuple[list[TestCase], list[Unreadable]]:
 def _programs(paths: Iterable[Path], problems: list[Unreadable]) -> Iterator[Path]:
     for path in paths:
         if path.is_dir():
-            yield from sorted(found for found in path.rglob("*") if found.is_file() and is_program(found.name))
+            for found in sorted(found for found in path.rglob("*") if is_program(found.name)):
+                if found.is_file():
+                    yield found
+                else:  # a broken link, a FIFO, a folder named like a program: said, not silently skipped
+                    problems.append(Unreadable(found, _not_a_file(found)))
         elif path.exists():
             yield path
         else:
             problems.append(Unreadable(path, "no such file or folder"))
+
+
+def _not_a_file(path: Path) -> str:
+    if path.is_symlink() and not path.exists():
+        return "a link to nothing"
+    return "not a regular file"
 
 
 def _case(program: Path, problems: list[Unreadable]) -> TestCase | None:

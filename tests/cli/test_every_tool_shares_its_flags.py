@@ -24,6 +24,8 @@ TOOLS = {
     "mint run": [BIN / "mint", "run"],
     "mint migrate": [BIN / "mint", "migrate"],
     "mint lsp": [BIN / "mint", "lsp"],
+    "mint test": [BIN / "mint", "test"],
+    "mint rule": [BIN / "mint", "rule"],
 }
 ESCAPE = "\x1b["
 COLOUR = re.compile(r"\x1b\[(?:[0-9;]*;)?(?:3[0-8]|9[0-7])[;m]")  # a foreground colour; bold alone is no colour
@@ -52,6 +54,15 @@ def test_every_script_prints_its_name_and_the_distribution_version(tool: str) ->
     result = run(TOOLS[tool], "--version")
     assert (result.returncode, result.stderr) == (0, "")
     assert result.stdout.strip() == f"{tool}, version {version('mintlang')}"
+
+
+@pytest.mark.parametrize("tool", [tool for tool in TOOLS if " " in tool])
+def test_every_subcommand_prints_the_distribution_version(tool: str) -> None:
+    from importlib.metadata import version  # noqa: PLC0415
+
+    result = run(TOOLS[tool], "--version")
+    assert (result.returncode, result.stderr) == (0, "")
+    assert result.stdout.strip().endswith(f", version {version('mintlang')}")
 
 
 @pytest.mark.parametrize("tool", list(TOOLS))

@@ -102,3 +102,17 @@ def test_the_dialect_comes_from_the_settings_file_unless_given(tmp_path: Path) -
     _write(tmp_path, "blocks.mnt", 'REM @expect terminal is "a\\n"\nPrint "a"  \' MintMT\'s comment\n')
     assert _mint_test(tmp_path).exit_code == 0
     assert _mint_test(tmp_path, "--dialect", "v4").exit_code == 1
+
+
+def test_an_entry_named_like_a_program_that_is_not_a_file_is_reported_and_exits_2(tmp_path: Path) -> None:
+    _write(tmp_path, "a_passes.mnt", PASSING)
+    (tmp_path / "gone.mnt").symlink_to(tmp_path / "nowhere.mnt")
+    result = _mint_test(tmp_path)
+    assert result.exit_code == 2
+    assert f"mint test: {tmp_path / 'gone.mnt'}: a link to nothing" in result.output
+    assert "1 passed" in result.output
+
+
+def test_mintmt_directives_may_be_written_with_its_quote_comment(tmp_path: Path) -> None:
+    _write(tmp_path, "quoted.mnt", "' @expect a = 2\nDim a\na = 2  ' @expect terminal is \"\"\n")
+    assert _mint_test(tmp_path, "--dialect", "mintmt").exit_code == 0

@@ -81,3 +81,20 @@ def test_a_pause_that_waits_and_a_loop_left_by_until_are_the_other_outcomes(tmp_
     assert result.exit_code == 0, result.output
     branches = [line for line in tracefile.read_text(encoding="utf-8").splitlines() if line.startswith("BRDA")]
     assert branches == ["BRDA:5,0,0,1", "BRDA:5,0,1,1", "BRDA:6,1,0,0", "BRDA:6,1,1,1"]
+
+
+def test_a_mintmt_event_line_is_a_declaration_not_a_line_to_run(tmp_path: Path) -> None:
+    # The host writes comms 1 at 10 ms: the handler (lines 7-8) runs once while line 4 waits; line 6, the
+    # Event line, is entered by the event and never run itself, so it is no line to cover.
+    program = tmp_path / "event.mnt"
+    program.write_text(
+        "' @sim host write 1 \"7\" at 10\n' @expect n = 1\nDim n\nPause n = 1\nEnd\n"
+        "Event Comms1\n  n = n + 1\nEnd Event\n",
+        encoding="utf-8",
+    )
+    tracefile = tmp_path / "lcov.info"
+    arguments = ["test", str(program), "--dialect", "mintmt", "--coverage", "--lcov", str(tracefile), "-j", "1"]
+    result = CliRunner().invoke(main, arguments)
+    assert result.exit_code == 0, result.output
+    found = [line for line in tracefile.read_text(encoding="utf-8").splitlines() if line.startswith(("DA:", "L"))]
+    assert found == ["DA:3,1", "DA:4,1", "DA:5,1", "DA:7,1", "DA:8,1", "LF:5", "LH:5"]

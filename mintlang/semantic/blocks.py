@@ -30,7 +30,7 @@ from mintlang.codes import mint_error
 from mintlang.controllers import ControllerProfile, NestingLimits
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.dialect import Dialect
-from mintlang.semantic.events import event_of
+from mintlang.semantic.events import Event, EventKind, event_of
 from mintlang.semantic.index import LineFacts
 from mintlang.syntax import nodes as n
 
@@ -64,6 +64,7 @@ _CLOSING = {  # the word that closes each kind of block, and the number of the c
 }
 LOOPS = frozenset({BlockKind.FOR, BlockKind.REPEAT, BlockKind.WHILE, BlockKind.LOOP})
 _TOP_LEVEL = frozenset({BlockKind.EVENT, BlockKind.STARTUP})  # MintMT: never inside another block
+_COMMS_EVENTS = range(1, 6)  # the comms locations whose update raises an event (002:19, 77-79)
 _BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.IfThen, n.For, n.While, n.Until, n.SyntaxError_, n.EventBlock})
 
 
@@ -135,6 +136,7 @@ class _Matcher:
         self.limits = limits
         self.stack: list[_Open] = []
         self.open = dict.fromkeys(BlockKind, 0)
+        self.events: dict[Event, int] = {}  # each MintMT event handled, with the line of its Event block
         self.blocks: list[Block] = []
         self.diagnostics: list[Diagnostic] = []
         self.bare_then: tuple[int, Fix] | None = None  # the last IF .. THEN with nothing after THEN: depth, fix
@@ -181,10 +183,21 @@ class _Matcher:
             where = f"the {inner.kind.value} block of line {inner.opener.line}"
             detail = f"{kind.value} blocks stand alone: this one is inside {where}"
             self.diagnostics.append(_error(2003, span, detail))
-        if type(statement) is n.EventBlock and event_of(statement.name.text, Dialect.MINTMT) is None:
-            name = statement.name
+        if type(statement) is n.EventBlock:
+            self._event(statement.name, line)
+
+    def _event(self, name: n.Name, line: n.PlacedLine) -> None:
+        """An Event names an event (comms locations 1 to 5 raise one, 002:19), and only one block handles it."""
+        event = event_of(name.text, Dialect.MINTMT)
+        span = line.span(name.span)
+        if event is None or (event.kind is EventKind.COMMS and event.number not in _COMMS_EVENTS):
             detail = f"{name.text} is no event (MOVEBUFFERLOW, ONERROR, TIMER, STOP, COMMS1..5, INx, FASTINx, CANx)"
-            self.diagnostics.append(_error(2003, line.span(name.span), detail))
+            self.diagnostics.append(_error(2003, span, detail))
+            return
+        first = self.events.setdefault(event, line.number)
+        if first != line.number:
+            detail = f"a second Event {name.text} block: the event's handler is the block of line {first}"
+            self.diagnostics.append(_error(2003, span, detail))
 
     def _do(self) -> tuple[Fix, ...]:
         """Writing DO for the THEN of the last bare IF .. THEN at the depth a stray ELSE or ENDIF stands at."""

@@ -103,3 +103,12 @@ def test_event_and_startup_blocks_stand_alone_and_an_event_names_an_event() -> N
         ("E2003", "Syntax error: Event blocks stand alone: this one is inside the LOOP block of line 1"),
         ("E2003", f"Syntax error: Bogus is no event ({EVENTS})"),
     ]
+
+
+def test_only_comms_locations_1_to_5_raise_an_event_and_each_event_has_one_block() -> None:
+    source = "Event Comms9\nEnd Event\nEvent Comms1\nEnd Event\nEvent COMMS1\nEnd Event\nEvent Comms5\nEnd Event\n"
+    analysis = mintlang.check_application(source, dialect="mintmt")
+    assert [(d.code, d.message) for d in analysis.program] == [
+        ("E2003", f"Syntax error: Comms9 is no event ({EVENTS})"),
+        ("E2003", "Syntax error: a second Event COMMS1 block: the event's handler is the block of line 3"),
+    ]

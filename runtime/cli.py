@@ -126,7 +126,7 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
     type=click.Choice([dialect.value for dialect in SIMULATED]),
     default=Dialect.V4.value,
     show_default=True,
-    help="The language of the program: Mint v4, or Mint v3 (the esMINT guide).",
+    help="The language of the program: Mint v4, Mint v3 (the esMINT guide) or MintMT (mintlang/MINTMT.md).",
 )
 @click.option(
     "--controller",
@@ -171,7 +171,9 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
     help="Draw position, velocity and following error to this image (needs matplotlib); "
     "a long run is drawn from each span's extremes, so every peak shows.",
 )
-@click.option("--trace-axes", help="Axes to trace and plot, e.g. 0,1 (default: every axis).")
+@click.option(
+    "--trace-axes", help="Axes to trace and plot, e.g. 0,1 (default: every axis traced, those that moved plotted)."
+)
 @click.option(
     "--format",
     "--report",

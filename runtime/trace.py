@@ -224,7 +224,7 @@ class Trace:
         for panel, (column, name) in zip(panels, PLOTTED.items(), strict=False):
             for number in axes:
                 panel.plot(*self.plotted[number, column].points(), label=self._axis_label(number))
-            panel.set_ylabel(f"{name} ({self._units(axes)})")
+            panel.set_ylabel(f"{name} ({self.units(axes, per_second=column == 'vel')})")
             if column == "folerror":
                 panel.set_title("within half a count drawn as 0", fontsize="small", loc="right")
             panel.grid(True)
@@ -245,9 +245,13 @@ class Trace:
         scale = self.scales[number]
         return f"axis {number}" if scale == 1 else f"axis {number} (SCALE {scale:g})"
 
-    def _units(self, axes: tuple[int, ...]) -> str:
-        """Counts when every axis drawn has SCALE 1, else the user units SCALE sets."""
-        return "counts" if all(self.scales[number] == 1 for number in axes) else "user units"
+    def units(self, axes: tuple[int, ...], *, per_second: bool) -> str:
+        """Counts where SCALE is 1, the user units SCALE sets elsewhere; both named when the axes differ."""
+        rate = "/s" if per_second else ""
+        scaled = {self.scales[number] != 1 for number in axes}
+        if scaled == {True, False}:
+            return f"user units{rate}; counts{rate} at SCALE 1"
+        return f"user units{rate}" if scaled == {True} else f"counts{rate}"
 
     def _draw_lanes(self, panel: MatplotlibAxes, lanes: list[tuple[str, int]]) -> None:
         """Each input or output bit that was ever on, as a step line in a lane of its own."""

@@ -59,3 +59,11 @@ def test_the_plot_is_written(tmp_path: Path) -> None:
     path = tmp_path / "run.png"
     _traced(chosen=False).plot(path, "run.mnt on NextMove PCI")
     assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_each_panel_names_its_units_and_mixed_scales_say_so() -> None:
+    trace = _traced(chosen=True)  # axis 1 at SCALE 4000, the others at 1
+    assert trace.units((1,), per_second=False) == "user units"
+    assert trace.units((1,), per_second=True) == "user units/s"
+    assert trace.units((0,), per_second=True) == "counts/s"
+    assert trace.units((0, 1), per_second=False) == "user units; counts at SCALE 1"

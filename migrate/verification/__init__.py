@@ -109,6 +109,10 @@ def _short(v3: Recording, v4: Recording, flagged: set[Place]) -> str | None:
     v4_stop = compare.stopped(v4)
     if v4.refused and v4_stop.line in flagged:
         return f"the v4 program does not compile until {v4_stop.line}, left for a person, is done: {v4_stop.message}"
+    v3_stop = compare.stopped(v3)
+    if v3_stop.reason == v4_stop.reason == "error" and v3_stop.time_ms == v4_stop.time_ms == 0:
+        # both failed at once (a drive left disabled, a missing RESET): agreeing on that verifies nothing
+        return f"both runs stopped on an error at 0 ms ({v3_stop.message}; {v4_stop.message})"
     return v3.short or v4.short
 
 

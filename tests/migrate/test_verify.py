@@ -253,3 +253,12 @@ def test_a_v4_program_ending_while_v3_waits_in_go_is_no_difference_by_itself() -
         found = verify(result, scenario=DRIVES, until_ms=until)
         assert found.verdict is Verdict.EQUIVALENT, (until, found.divergence)
     assert 700 <= found.v3_stop.time_ms <= 704 and found.v4_stop.time_ms == 0
+
+
+def test_two_runs_that_both_fail_at_once_verify_nothing() -> None:
+    # Without --drives enabled both drives start disabled: v3 and v4 stop on the first move at 0 ms. That
+    # they agree says nothing of the migration (a new user's trial read "equivalent over 0 ms").
+    found = verify(migrate(PRINTS_AND_MOVES), until_ms=5000)
+    assert found.verdict is Verdict.INCOMPLETE
+    assert (found.v3_stop.reason, found.v4_stop.reason, found.compared_ms) == ("error", "error", 0)
+    assert found.short is not None and found.short.startswith("both runs stopped on an error at 0 ms (")

@@ -198,7 +198,6 @@ def check(
         click.echo("mint check: interrupted", err=True)
         sys.exit(_INTERRUPTED)
     problems = [cannot_read(e) for e in found.unreadable] + planned.problems + [r.problem for r in results if r.problem]
-    reports = planned.reports(results)
     fixed = [result.fixed for result in results if result.fixed is not None]
     outcome = None
     if diff:  # the changes instead of the report, as ruff's --diff
@@ -207,6 +206,9 @@ def check(
     elif fixing is not None:
         outcome = apply(fixed, diff=None)
         problems += outcome.problems
+        unwritten = outcome.unwritten  # a fix not written leaves the file's findings where they were
+        results = [r.unfixed() if r.fixed and r.fixed.original.path in unwritten else r for r in results]
+    reports = planned.reports(results)
     if reports and not diff:
         with destination(output_file, _fail) as stream:
             _write(reports, stream, output_format, statistics=statistics, quiet=quiet, color=color)

@@ -7,7 +7,7 @@ comes back is a report, or the one line saying why the file was not checked.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from enum import StrEnum
 from pathlib import Path
 
@@ -74,6 +74,11 @@ class Checked:
     configuration: tuple[Diagnostic, ...] = field(default=())
     problem: str | None = None
     fixed: FileFixed | None = None  # the program as read and as fixed, when fixing
+    as_read: FileReport | None = None  # when fixing: the report of the text as read, for a fix not written
+
+    def unfixed(self) -> Checked:
+        """This check as if nothing had been fixed: the fixed text could not be written."""
+        return replace(self, report=self.as_read, fixed=None, as_read=None) if self.as_read is not None else self
 
 
 def check_file(job: Job) -> Checked:
@@ -106,4 +111,5 @@ def _fix_program(job: Job, source: SourceFile, arguments: dict[str, object]) -> 
 
     fixed = fix_text(source.text, program_findings, unsafe=job.fixing is Fixing.UNSAFE)
     report = FileReport(str(source.path), fixed.text, fixed.remaining)
-    return Checked(report, analyses[-1].configuration, fixed=FileFixed(source, fixed))
+    as_read = FileReport(str(source.path), source.text, analyses[0].program)
+    return Checked(report, analyses[-1].configuration, fixed=FileFixed(source, fixed), as_read=as_read)

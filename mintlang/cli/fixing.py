@@ -13,6 +13,7 @@ import difflib
 from collections import Counter
 from collections.abc import Callable, Collection, Sequence
 from dataclasses import dataclass, field, replace
+from pathlib import Path
 from typing import IO, TypeVar
 
 import click
@@ -33,6 +34,7 @@ class Outcome:
     files: int = 0
     problems: list[str] = field(default_factory=list)
     unconverged: list[str] = field(default_factory=list)
+    unwritten: set[Path] = field(default_factory=set)  # files whose fixed text could not be written
 
     def notes(self) -> list[str]:
         """The files whose fixes did not settle: a fix that undoes another, or more rounds than allowed."""
@@ -79,6 +81,7 @@ def apply(files: Sequence[FileFixed], *, diff: IO[str] | None) -> Outcome:
             diff.write(unified_diff(file))
         if problem is not None:
             outcome.problems.append(problem)
+            outcome.unwritten.add(file.original.path)
             continue
         outcome.files += 1
         outcome.codes.update(diagnostic.code for diagnostic in file.fixed.fixed)

@@ -12,7 +12,7 @@ import os
 from collections.abc import Mapping
 from pathlib import Path
 
-from mintlang.cli.terminal import same_file
+from mintlang.cli.files import same_file
 from mintlang.runtime.trace import FIRST_COLUMN, image_types
 
 

@@ -15,6 +15,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, NoReturn
 
+from mintlang.cli.files import same_file
+
 if TYPE_CHECKING:
     from rich.console import Console
 
@@ -36,14 +38,6 @@ def console(color: str = "auto", *, stderr: bool = False, file: IO[str] | None =
 _SOURCE_SUFFIXES = (".mnt", ".cfg")
 
 
-def same_file(path: Path, other: Path) -> bool:
-    """Whether two paths name one file (a link, another spelling); where they would be, for one not there yet."""
-    try:
-        return path.samefile(other)
-    except OSError:
-        return path.resolve() == other.resolve()
-
-
 def refuse_overwriting(path: Path | None, inputs: Iterable[Path], fail: Callable[[str], NoReturn]) -> None:
     """An output file (``--output-file``, ``--lcov``) never takes the place of an input or of a Mint source:
     the report would silently replace the program it is about."""
@@ -52,7 +46,7 @@ def refuse_overwriting(path: Path | None, inputs: Iterable[Path], fail: Callable
     if path.name.lower().endswith(_SOURCE_SUFFIXES) and path.exists():
         fail(f"cannot write {path}: it is a Mint source file, not a report")
     for source in inputs:
-        if same_file(path, source):
+        if same_file(path, source):  # an input exists, so an output that is the same file does too
             fail(f"cannot write {path}: it is also an input")
 
 

@@ -20,6 +20,11 @@ class OutputProblem(Exception):
     """An output path that cannot or must not be written; the message names it and says why."""
 
 
+def _same(path: Path, other: Path) -> bool:
+    """One file, or two outputs not written yet that would be one (compared where they would be)."""
+    return same_file(path, other) or path.resolve() == other.resolve()
+
+
 def _writable(path: Path) -> None:
     if path.is_dir():
         raise OutputProblem(f"cannot write {path}: it is a directory")
@@ -33,7 +38,7 @@ def _writable(path: Path) -> None:
 
 def _not_an_input(path: Path, inputs: Mapping[Path, str]) -> None:
     for source, role in inputs.items():
-        if same_file(path, source):
+        if _same(path, source):
             raise OutputProblem(f"cannot write {path}: it is also {role}")
 
 

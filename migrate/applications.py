@@ -12,10 +12,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from mintlang.cli.files import collect, is_configuration, program_as_own_configuration
+from mintlang.cli.files import collect, is_configuration, program_as_own_configuration, same_file
 from mintlang.migrate.api import migrate
 from mintlang.migrate.model import MigrationFailed
 from mintlang.migrate.report import FileEntry
+from mintlang.semantic.units import Unit
+from mintlang.settings import SettingsError, settings_for
 from mintlang.source import SourceFile, read_source
 
 
@@ -78,7 +80,31 @@ def read(paths: tuple[Path, ...], config: Path | None) -> list[Application]:
         return [Application(_read(found[0]) if found else None, _read(config))]
     if not found:
         raise UsageError("no .mnt or .cfg files to migrate")
-    return [Application(None, _read(p)) if is_configuration(p) else Application(_read(p), None) for p in found]
+    partners = _partners(found)
+    claimed = list(partners.values())
+    return [
+        Application(_read(path), _read(partners[path]) if path in partners else None)
+        if not is_configuration(path)
+        else Application(None, _read(path))
+        for path in found
+        if not any(same_file(path, configuration) for configuration in claimed)
+    ]
+
+
+def _partners(found: list[Path]) -> dict[Path, Path]:
+    """Each program with the configuration file paired with it (``mintlang.pairing``, as ``mint check`` and
+    ``mint-run`` pair them): the two are one application, as the controller runs them. A configuration file
+    goes with the first program that pairs with it; one named that no program claims is migrated alone."""
+    partners: dict[Path, Path] = {}
+    for program in (path for path in found if not is_configuration(path)):
+        try:
+            unit, partner = settings_for(program).partner(program)
+        except SettingsError as error:
+            raise UsageError(str(error)) from None
+        taken = partner is None or any(same_file(partner, other) for other in partners.values())
+        if unit is Unit.PROGRAM and partner is not None and not taken:
+            partners[program] = partner
+    return partners
 
 
 def _read(path: Path) -> SourceFile:

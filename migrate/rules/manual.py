@@ -9,6 +9,7 @@ controller and flags each line still in error that carries no marker yet.
 
 from __future__ import annotations
 
+import re
 from bisect import bisect_right
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import ClassVar
@@ -299,6 +300,15 @@ def by_statement(file: FileView, diagnostics: Iterable[Diagnostic]) -> dict[Span
     return groups
 
 
+_ON_LINE = re.compile(r" on line \d+")
+
+
+def _without_line_numbers(message: str) -> str:
+    """A block message without the line it names: that counts lines of the text as this pass sees it (notes
+    already inserted), which is neither the original nor the result a reader holds."""
+    return _ON_LINE.sub("", message)
+
+
 def _messages(diagnostics: Iterable[Diagnostic], *, codes: bool = False) -> str:
     """The different messages of some diagnostics, in order, each once."""
     return "; ".join(dict.fromkeys(f"{d.code} {d.message}" if codes else d.message for d in diagnostics))
@@ -347,7 +357,8 @@ class InvalidInV3(Rule):
         for unit, structure in context.model.structures.items():
             for diagnostic in structure.diagnostics:
                 if diagnostic.severity is Severity.ERROR:
-                    yield self.flag(context.files[unit], diagnostic.span, f"blocks do not match: {diagnostic.message}")
+                    reason = f"blocks do not match: {_without_line_numbers(diagnostic.message)}"
+                    yield self.flag(context.files[unit], diagnostic.span, reason)
         for unit, labels in context.model.symbols.labels.items():
             for label in labels.values():
                 for duplicate in label.definitions[1:]:

@@ -63,7 +63,7 @@ class Plan:
             return
         configuration = self._configuration(other, settings) if other is not None else None
         if other is not None and configuration is None:
-            self.problems.append(f"{path}: not checked, as its configuration file {other} could not be")
+            self.problems.append(f"{path}: not checked, as its configuration file {other} could not be read")
             return
         self.jobs.append(Job(path, options_of(settings), configuration.source.text if configuration else None, source))
         if configuration is not None:

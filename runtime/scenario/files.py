@@ -58,6 +58,9 @@ class _Entry:
     def line_of(self, key: str) -> int:
         return self._section.line_of(key)
 
+    def keys(self) -> list[str]:
+        return list(self._values)
+
     def allow(self, *keys: str) -> None:
         """Refuse any key not in ``keys``, naming the keys that would do."""
         if unexpected := [key for key in self._values if key not in keys]:
@@ -100,7 +103,9 @@ def _one_of(entry: _Entry, keys: tuple[str, ...]) -> str:
     """The one key of ``keys`` the entry has; an entry has exactly one."""
     present = [key for key in keys if key in entry]
     if len(present) != 1:
-        problem = "has both " + " and ".join(present) if present else "needs one of " + ", ".join(keys)
+        written = [repr(key) for key in entry.keys()]
+        unknown = f" (it has {', '.join(written)})" if written else ""
+        problem = "has both " + " and ".join(present) if present else "needs one of " + ", ".join(keys) + unknown
         raise Invalid(f"{entry.name} {problem}", entry.line_of(present[-1]) if present else entry.origin.line)
     return present[0]
 

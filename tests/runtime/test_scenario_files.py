@@ -182,7 +182,7 @@ def test_unknown_tables_and_keys_are_named(tmp_path: Path) -> None:
         ("[[input]]\nchannel = 5\nwhen = 'enc x >= 5'", 2, "expected an axis as a whole number, not 'x'"),
         ("[[adc]]\nchannel = 0\npercent = 'half'\nat_ms = 0", 4, "percent must be a number, not 'half'"),
         ("[[key]]\ntext = 1\nat_ms = 0", 3, "text must be text in quotes, not 1"),
-        ("[[host]]\nat_ms = 0", 2, "[[host]] needs one of write, read, raw"),
+        ("[[host]]\nat_ms = 0", 2, "[[host]] needs one of write, read, raw (it has 'at_ms')"),
         ("[[host]]\nread = 1\nraw = '05'\nat_ms = 0", 4, "[[host]] has both read and raw"),
         ("[[host]]\nread = 1\nnode = 16\nat_ms = 0", 2, "cannot build the host packet: node 16 has no ID character"),
         (
@@ -190,8 +190,16 @@ def test_unknown_tables_and_keys_are_named(tmp_path: Path) -> None:
             2,
             "cannot build the host packet: the data must be ASCII text; 'é' at position 1 is not",
         ),
-        ("[[expect]]\nequals = 1", 2, "[[expect]] needs one of what, terminal_contains, terminal_is, stopped"),
-        ("[[expect]]\nwhat = 'POS.0'", 2, "[[expect]] needs one of equals, not_equal, at_least, at_most"),
+        (
+            "[[expect]]\nwaht = 'a'\nequals = 1",
+            2,
+            "[[expect]] needs one of what, terminal_contains, terminal_is, stopped (it has 'waht', 'equals')",
+        ),
+        (
+            "[[expect]]\nwhat = 'POS.0'",
+            2,
+            "[[expect]] needs one of equals, not_equal, at_least, at_most (it has 'what')",
+        ),
         (
             "[[expect]]\nwhat = 'POS.0'\nequals = 1\nat = 'start'",
             5,

@@ -58,7 +58,8 @@ class _Entry:
     def line_of(self, key: str) -> int:
         return self._section.line_of(key)
 
-    def keys(self) -> list[str]:
+    def written(self) -> list[str]:
+        """The keys the entry has, as written."""
         return list(self._values)
 
     def allow(self, *keys: str) -> None:
@@ -103,7 +104,7 @@ def _one_of(entry: _Entry, keys: tuple[str, ...]) -> str:
     """The one key of ``keys`` the entry has; an entry has exactly one."""
     present = [key for key in keys if key in entry]
     if len(present) != 1:
-        written = [repr(key) for key in entry.keys()]
+        written = [repr(key) for key in entry.written()]
         unknown = f" (it has {', '.join(written)})" if written else ""
         problem = "has both " + " and ".join(present) if present else "needs one of " + ", ".join(keys) + unknown
         raise Invalid(f"{entry.name} {problem}", entry.line_of(present[-1]) if present else entry.origin.line)

@@ -29,7 +29,7 @@ from pygls.uris import from_fs_path, to_fs_path
 
 from mintlang.dialect import Dialect
 from mintlang.lsp.server import MintServer
-from mintlang.lsp.workspace import partner
+from mintlang.lsp.workspace import Settings, partner
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.report import as_json
 from mintlang.runtime.run import RunResult, run_source
@@ -43,15 +43,17 @@ LIMITS = Limits(until_ms=600_000, max_wall_s=20.0)  # ten simulated minutes, at 
 CANCELLED = "cancelled by the user"
 REPORT_EVERY_S = 0.25  # progress reports while the run goes on
 SHOWN_LINES = 20  # of the output, in the message of a client that cannot show a document
+_RUNNABLE = frozenset({Dialect.V4, Dialect.MINTMT})
 
 
 def lenses(server: MintServer, uri: str) -> list[types.CodeLens]:
-    """One lens on the first line of a Mint v4 program (configuration files run with their program); the
-    code lens method is ``reference_lenses``', which shows this lens with the reference counts."""
+    """One lens on the first line of a Mint v4 or MintMT program (configuration files run with their program;
+    a v3 program runs on the v3 guide's controllers, which the editor's setting does not name); the code lens
+    method is ``reference_lenses``', which shows this lens with the reference counts."""
     snapshot = server.snapshot(uri)
     if snapshot is None or snapshot.unit is Unit.CONFIGURATION or snapshot.skipped:
         return []
-    if snapshot.settings.dialect is not Dialect.V4:
+    if snapshot.settings.dialect not in _RUNNABLE:
         return []
     start = types.Position(line=0, character=0)
     command = types.Command(title=TITLE, command=SIMULATE, arguments=[uri])
@@ -162,7 +164,7 @@ def register(server: MintServer) -> None:
     def error(message: str) -> None:
         server.window_show_message(types.ShowMessageParams(type=types.MessageType.Error, message=message))
 
-    async def run(source: str, configuration: str | None, name: str, controller: str) -> RunResult:
+    async def run(source: str, configuration: str | None, name: str, settings: Settings) -> RunResult:
         """The run on a worker thread, shown as progress; cancelled by the user or by ``$/cancelRequest``."""
         loop = asyncio.get_running_loop()
         progress = Progress(server, f"Simulating {name}")
@@ -173,7 +175,8 @@ def register(server: MintServer) -> None:
                 run_source,
                 source,
                 config=configuration,
-                controller=controller,
+                controller=settings.controller,
+                dialect=settings.dialect,
                 limits=LIMITS,
                 on_tick=watcher.on_tick,
             )
@@ -200,7 +203,7 @@ def register(server: MintServer) -> None:
         configuration = ls.read_text(configuration_uri) if configuration_uri is not None else None
         name = Path(to_fs_path(program_uri) or program_uri).name
         try:
-            result = await run(source, configuration, name, settings.controller)
+            result = await run(source, configuration, name, settings.for_text(source))
         except ScenarioFileError as problem:
             error(str(problem))
             return None

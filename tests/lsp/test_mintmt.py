@@ -13,6 +13,7 @@ from mintlang.lsp.features.semantic_tokens import TOKEN_TYPES
 from tests.corpus_files import CORPUS, CorpusCase, cases
 from tests.lsp.conftest import EDITOR, document, open_document, position, uri_of
 from tests.lsp.test_formatting import apply
+from tests.lsp.test_simulator import shown_output
 
 pytestmark = pytest.mark.asyncio
 LISTINGS = cases("mintmt")
@@ -141,3 +142,20 @@ async def test_under_auto_a_v4_program_stays_v4(client: LanguageClient) -> None:
     # v4's character constant and dot addressing: read as MintMT, 'A' would start a comment and leave "a =" broken
     text = "DIM a\na = 'A'\nMOVER.0 = a\nGO.0\n"
     assert await open_document(client, "file:///work/v4.mnt", text) == []
+
+
+async def test_a_mintmt_program_gets_the_run_lens_and_runs_as_mintmt(client: LanguageClient, tmp_path) -> None:
+    # Startup runs first (MT-7), the quote is a comment: read as v4 the program would not even compile.
+    text = 'Print "main"\nStartup\n  Print "startup" \' first\nEnd Startup\n'
+    program = tmp_path / "cell.mnt"
+    program.write_text(text, encoding="utf-8")
+    assert await open_document(client, uri_of(program), text) == []
+    found = await client.text_document_code_lens_async(
+        types.CodeLensParams(text_document=types.TextDocumentIdentifier(uri=uri_of(program)))
+    )
+    assert [lens.command.command for lens in found or [] if lens.command is not None] == ["mint.simulateFile"]
+    report = await client.workspace_execute_command_async(
+        types.ExecuteCommandParams(command="mint.simulateFile", arguments=[uri_of(program)])
+    )
+    assert report["stopped"] == "end"
+    assert "startup\nmain\n" in shown_output(client)

@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
-from mintlang.pairing import is_program, listed_as, names_in
+from mintlang.cli.files import find
+from mintlang.pairing import listed_as, names_in
+from mintlang.source import read_source
 
 SCENARIO_SUFFIX = ".scenario.toml"
 _EXPECTATION = re.compile(r"(?:\bREM|')\s*@expect\b", re.IGNORECASE)
@@ -34,43 +36,31 @@ class Unreadable:
 
 
 def discover(paths: Iterable[Path]) -> tuple[list[TestCase], list[Unreadable]]:
-    """The tests under ``paths`` (files or folders, searched recursively), in path order, each once."""
+    """The tests under ``paths`` (files or folders, searched recursively as ``mint check`` searches them), in
+    path order, each once."""
+    found = find(paths)
+    problems = [Unreadable(Path(error.filename), _reason(error)) for error in found.unreadable]
     cases: dict[Path, TestCase] = {}
-    problems: list[Unreadable] = []
-    for program in _programs(paths, problems):
-        found = _case(program, problems)
-        if found is not None:
-            cases.setdefault(program.resolve(), found)
+    for program in found.files:
+        case = _case(program, problems)
+        if case is not None:
+            cases.setdefault(program.resolve(), case)
     return sorted(cases.values(), key=lambda case: str(case.program)), problems
 
 
-def _programs(paths: Iterable[Path], problems: list[Unreadable]) -> Iterator[Path]:
-    for path in paths:
-        if path.is_dir():
-            for found in sorted(found for found in path.rglob("*") if is_program(found.name)):
-                if found.is_file():
-                    yield found
-                else:  # a broken link, a FIFO, a folder named like a program: said, not silently skipped
-                    problems.append(Unreadable(found, _not_a_file(found)))
-        elif path.exists():
-            yield path
-        else:
-            problems.append(Unreadable(path, "no such file or folder"))
-
-
-def _not_a_file(path: Path) -> str:
-    if path.is_symlink() and not path.exists():
-        return "a link to nothing"
-    return "not a regular file"
+def _reason(error: OSError) -> str:
+    """Why a path ``find`` met could not be looked at, in a few words."""
+    if isinstance(error, FileNotFoundError):
+        return "a link to nothing" if Path(error.filename).is_symlink() else "no such file or folder"
+    return error.strerror or str(error)
 
 
 def _case(program: Path, problems: list[Unreadable]) -> TestCase | None:
     scenario_name = listed_as(program.stem + SCENARIO_SUFFIX, names_in(program.parent))
-    scenario = program.parent / scenario_name if scenario_name is not None else None
-    if scenario is not None:
-        return TestCase(program, scenario)
+    if scenario_name is not None:
+        return TestCase(program, program.parent / scenario_name)
     try:
-        text = program.read_text(encoding="utf-8", errors="replace")
+        text = read_source(program).text  # refuses a FIFO or a device, which would block or never end
     except OSError as error:
         problems.append(Unreadable(program, error.strerror or str(error)))
         return None

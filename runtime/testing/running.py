@@ -86,7 +86,9 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
         return _error(case, binary, began)
     unit, partner = settings.partner(case.program)
     configuration = read_source(partner).text if unit is Unit.PROGRAM and partner is not None else None
-    files = {"program": case.program} | ({"configuration": partner} if configuration is not None and partner else {})
+    files = {"program": case.program}
+    if partner is not None and configuration is not None:
+        files["configuration"] = partner
     recorder = Recorder(files, dialect) if options.coverage else None
     result = run_source(
         program.text,

@@ -11,11 +11,11 @@ from __future__ import annotations
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer
 from mintlang.runtime.motion.commands import Motion
+from mintlang.runtime.ranges import OUT_OF_RANGE
 
 AUTOMATIC = 0.0
 WAIT_FOR_GO = 1.0  # the power-up value: any value but 0 (MT-10)
 LOADING = ("MOVEA", "MOVER", "VECTORA", "VECTORR", "CIRCLEA", "CIRCLER", "INCA", "INCR", "OFFSET")
-_OUT_OF_RANGE = 3  # MML error 3, "Data specified out of range" (000:18518)
 
 
 def install(table: KeywordTable, motion: Motion) -> None:
@@ -29,7 +29,7 @@ def install(table: KeywordTable, motion: Motion) -> None:
         for axis, value in zip(motion.addressed(channels), values, strict=False):
             if value is not None:
                 if value != int(value):
-                    raise MintError(_OUT_OF_RANGE, axis.number, "TRIGGERMODE takes a whole number")
+                    raise MintError(OUT_OF_RANGE, axis.number, "TRIGGERMODE takes a whole number")
                 modes[axis.number] = value
         return False
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from mintlang.cli.files import collect, is_configuration, program_as_own_configuration, same_file
+from mintlang.cli.files import collect, is_configuration, program_as_own_configuration
 from mintlang.migrate.api import migrate
 from mintlang.migrate.model import MigrationFailed
 from mintlang.migrate.report import FileEntry
@@ -81,14 +81,17 @@ def read(paths: tuple[Path, ...], config: Path | None) -> list[Application]:
     if not found:
         raise UsageError("no .mnt or .cfg files to migrate")
     partners = _partners(found)
-    claimed = list(partners.values())
+    claimed = {_identity(configuration) for configuration in partners.values()}
     return [
-        Application(_read(path), _read(partners[path]) if path in partners else None)
-        if not is_configuration(path)
-        else Application(None, _read(path))
+        Application(None, _read(path)) if is_configuration(path) else Application(_read(path), _paired(partners, path))
         for path in found
-        if not any(same_file(path, configuration) for configuration in claimed)
+        if not (is_configuration(path) and _identity(path) in claimed)
     ]
+
+
+def _paired(partners: dict[Path, Path], program: Path) -> SourceFile | None:
+    partner = partners.get(program)
+    return _read(partner) if partner is not None else None
 
 
 def _partners(found: list[Path]) -> dict[Path, Path]:
@@ -96,15 +99,28 @@ def _partners(found: list[Path]) -> dict[Path, Path]:
     ``mint-run`` pair them): the two are one application, as the controller runs them. A configuration file
     goes with the first program that pairs with it; one named that no program claims is migrated alone."""
     partners: dict[Path, Path] = {}
+    taken: set[object] = set()
     for program in (path for path in found if not is_configuration(path)):
         try:
             unit, partner = settings_for(program).partner(program)
         except SettingsError as error:
             raise UsageError(str(error)) from None
-        taken = partner is None or any(same_file(partner, other) for other in partners.values())
-        if unit is Unit.PROGRAM and partner is not None and not taken:
-            partners[program] = partner
+        if unit is not Unit.PROGRAM or partner is None or _identity(partner) in taken:
+            continue
+        partners[program] = partner
+        taken.add(_identity(partner))
     return partners
+
+
+def _identity(path: Path) -> object:
+    """What names one file however it is spelt or linked (its device and inode); where it would be, if missing.
+
+    One stat per file keeps pairing a folder of many programs linear, where comparing each pair was not."""
+    try:
+        status = path.stat()
+    except OSError:
+        return path.resolve()
+    return status.st_dev, status.st_ino
 
 
 def _read(path: Path) -> SourceFile:

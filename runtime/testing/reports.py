@@ -13,7 +13,7 @@ from rich.table import Table
 from rich.text import Text
 
 from mintlang.runtime.testing.coverage import FileCoverage, handlers_run, lines_run, outcomes_seen
-from mintlang.runtime.testing.running import TestResult, Verdict
+from mintlang.runtime.testing.running import Check, TestResult, Verdict
 
 _STYLE = {Verdict.PASSED: "green", Verdict.FAILED: "bold red", Verdict.ERROR: "bold yellow"}
 
@@ -38,13 +38,7 @@ def text(results: Sequence[TestResult], seconds: float, console: Console) -> Non
         console.print(line, highlight=False)
         for check in result.checks:
             if not check.held:
-                detail = f" ({check.detail})" if check.detail else ""
-                console.print(
-                    f"    {check.what} at {check.when}: expected {check.expected}, got {check.actual}{detail}"
-                    f" [{check.origin}]",
-                    highlight=False,
-                    markup=False,
-                )
+                console.print(f"    {_failure(check)}", highlight=False, markup=False)
     console.print(Text(summary(results, seconds), style="bold"), highlight=False)
 
 
@@ -86,12 +80,14 @@ def junit(results: Sequence[TestResult], seconds: float) -> str:
 
 
 def _failed_lines(result: TestResult) -> list[str]:
-    lines = [
-        f"{check.what} at {check.when}: expected {check.expected}, got {check.actual} [{check.origin}]"
-        for check in result.checks
-        if not check.held
-    ]
+    lines = [_failure(check) for check in result.checks if not check.held]
     return lines or [f"stopped {result.stopped}: {result.message}"]
+
+
+def _failure(check: Check) -> str:
+    """An expectation that did not hold, in one line: what, when, expected and seen, why, and where it is."""
+    detail = f" ({check.detail})" if check.detail else ""
+    return f"{check.what} at {check.when}: expected {check.expected}, got {check.actual}{detail} [{check.origin}]"
 
 
 def as_json(results: Sequence[TestResult], seconds: float) -> str:

@@ -16,7 +16,7 @@ from __future__ import annotations
 import difflib
 import json
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import partial
 from pathlib import Path
 from typing import NoReturn
@@ -24,7 +24,6 @@ from typing import NoReturn
 import click
 from rich.console import Console
 
-from mintlang.atomic import Unwritable
 from mintlang.cli.options import (
     HELP_OPTIONS,
     color_option,
@@ -192,16 +191,20 @@ def migrate(  # noqa: PLR0917 - click passes every option as an argument
             click.echo(f"mint-migrate: {problem}", err=True)
         status = _verify_status(verified, fail_on, [*problems, *failed])
         sys.exit(0 if status == GATE_FAILED and exit_zero else status)
-    _output(items, mode, output_format, controller, Output(output_file, quiet, verbose, color))
     if mode == "write":
-        try:
-            problems += write_changed(migrated)
-        except Unwritable as error:
-            problems.append(str(error))
+        written = write_changed(migrated)
+        problems += written.problems
+        items = [_unwritten(item) if item.file.path in written.unwritten else item for item in items]
+    _output(items, mode, output_format, controller, Output(output_file, quiet, verbose, color))
     for problem in problems:
         click.echo(f"mint-migrate: {problem}", err=True)
     status = _status(items, mode, fail_on, problems)
     sys.exit(0 if status == GATE_FAILED and exit_zero else status)
+
+
+def _unwritten(item: Migrated) -> Migrated:
+    """``item`` reported as a changed file ``--write`` left as it was."""
+    return replace(item, entry=replace(item.entry, written=False))
 
 
 def _fail(message: str) -> NoReturn:

@@ -30,6 +30,7 @@ class FileEntry:
     role: str  # "program" or "configuration"
     result: MigrationResult | None
     failure: MigrationFailed | None = None
+    written: bool = True  # False when ``--write`` could not replace the changed file
 
     @property
     def status(self) -> str:
@@ -37,7 +38,9 @@ class FileEntry:
             return "failed"
         if self.result.already_v4:
             return "already v4"
-        return "changed" if self.result.changed else "unchanged"
+        if not self.result.changed:
+            return "unchanged"
+        return "changed" if self.written else "not written"
 
 
 def entries(path: str, result: MigrationResult, config_path: str | None = None) -> list[FileEntry]:
@@ -70,6 +73,7 @@ def report(files: Iterable[FileEntry], controller: str) -> dict[str, Any]:
             "unchanged": statuses["unchanged"],
             "already_v4": statuses["already v4"],
             "failed": statuses["failed"],
+            "not_written": statuses["not written"],
             "changes": sum(len(row["changes"]) for row in rows),
             "manual_items": sum(len(row["manual"]) for row in rows),
             "errors": sum(len(row["errors"]) for row in rows),
@@ -160,10 +164,10 @@ def _place(path: str, item: Mapping[str, Any]) -> str:
 
 def summary(totals: Mapping[str, int]) -> str:
     """``2 files: 1 changed, 1 unchanged; 3 changes, 1 manual item, 0 unreadable lines``."""
-    files = sum(totals[status] for status in ("changed", "unchanged", "already_v4", "failed"))
+    files = sum(totals[status] for status in ("changed", "unchanged", "already_v4", "failed", "not_written"))
     statuses = [f"{totals['changed']} changed", f"{totals['unchanged']} unchanged"]
-    statuses += [f"{totals['already_v4']} already v4"] if totals["already_v4"] else []
-    statuses += [f"{totals['failed']} failed"] if totals["failed"] else []
+    others = ("already_v4", "failed", "not_written")
+    statuses += [f"{totals[key]} {key.replace('_', ' ')}" for key in others if totals[key]]
     counts = [
         plural(totals["changes"], "change"),
         plural(totals["manual_items"], "manual item"),

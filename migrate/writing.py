@@ -13,6 +13,7 @@ file, and a last line says which files were not written.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import Path
 
 from mintlang import atomic
@@ -22,42 +23,49 @@ from mintlang.migrate.report import plural
 from mintlang.source import SourceFile
 
 
-def write_changed(applications: Sequence[Sequence[Migrated]]) -> list[str]:
-    """Write the changed files of each application; the problems met, one line each."""
-    plans = [
-        [(_target(item.file), item.file, text) for item, text in _changed(application)] for application in applications
-    ]
+@dataclass(frozen=True, slots=True)
+class Written:
+    """What ``--write`` did: the problems met (one line each) and the changed files it left as they were."""
+
+    problems: list[str]
+    unwritten: frozenset[Path]
+
+
+def write_changed(applications: Sequence[Sequence[Migrated]]) -> Written:
+    """Write the changed files of each application."""
+    try:
+        plans = [
+            [(target(item.file.path), item.file, text) for item, text in _changed(application)]
+            for application in applications
+        ]
+    except Unwritable as error:
+        everything = frozenset(item.file.path for application in applications for item, _ in _changed(application))
+        return Written([f"{error}; nothing was written"], everything)
     problems: list[str] = []
-    left: list[str] = []
+    left: list[Path] = []
     for application, plan in zip(applications, plans, strict=True):
         if not plan:
             continue
         stale = [str(item.file.path) for item in application if _content(item.file.path) != item.file.encode()]
         if stale:
             problems.append(f"{_changed_since(stale)}: not written, so the edit is kept; migrate again")
-            left += [str(file.path) for _, file, _ in plan]
+            left += [file.path for _, file, _ in plan]
             continue
         for real, file, text in plan:
             problem = _write(real, file, text)
             if problem is not None:
                 problems.append(problem)
-                left.append(str(file.path))
+                left.append(file.path)
     if left:
         total = sum(len(plan) for plan in plans)
-        problems.append(f"{total - len(left)} of {plural(total, 'file')} written; not written: {', '.join(left)}")
-    return problems
+        names = ", ".join(map(str, left))
+        problems.append(f"{total - len(left)} of {plural(total, 'file')} written; not written: {names}")
+    return Written(problems, frozenset(left))
 
 
 def _changed(application: Sequence[Migrated]) -> list[tuple[Migrated, str]]:
     """The files the migration changed, with their new text."""
     return [(item, result.text) for item in application if (result := item.entry.result) is not None and result.changed]
-
-
-def _target(file: SourceFile) -> Path:
-    try:
-        return target(file.path)
-    except Unwritable as error:
-        raise Unwritable(f"{error}; nothing was written") from None
 
 
 def _write(real: Path, file: SourceFile, text: str) -> str | None:

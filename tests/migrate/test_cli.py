@@ -74,6 +74,7 @@ def test_json_report(program: Path) -> None:
         "unchanged": 0,
         "already_v4": 0,
         "failed": 0,
+        "not_written": 0,
         "changes": 2,
         "manual_items": 0,
         "errors": 0,

@@ -4,6 +4,7 @@ nothing is written that should not be (links, read-only files, binaries, half-do
 from __future__ import annotations
 
 import errno
+import json
 import os
 import stat
 from collections.abc import Iterator
@@ -133,6 +134,18 @@ def test_a_read_only_file_is_refused_even_for_root(tmp_path: Path) -> None:
     message = one_line_usage_error(run("--write", link))
     assert message == f"mint-migrate: cannot write {link} (link to {path}): the file is read-only; nothing was written"
     assert path.read_text() == V3
+
+
+def test_the_report_calls_a_file_that_was_not_written_so(tmp_path: Path) -> None:
+    path = program(tmp_path, "a.mnt")
+    path.chmod(0o444)
+    result = run("--write", "--format", "json", path)
+    assert result.exit_code == 2
+    data = json.loads(result.stdout)
+    assert data["files"][0]["status"] == "not written"
+    assert (data["totals"]["changed"], data["totals"]["not_written"]) == (0, 1)
+    text = run("--write", path).stdout
+    assert "1 file: 0 changed, 0 unchanged, 1 not written;" in text
 
 
 def test_files_that_are_not_regular_are_never_replaced(tmp_path: Path) -> None:

@@ -26,17 +26,21 @@ class Found:
 
 
 def _programs_below(directory: Path, unreadable: list[OSError]) -> list[Path]:
+    """The programs below ``directory``, sorted; what could not be read is added to ``unreadable``
+    sorted by path as well, so the problems are reported in the order of the files."""
     found: list[Path] = []
-    for folder, _, names in os.walk(directory, onerror=unreadable.append):
+    failed: list[OSError] = []
+    for folder, _, names in os.walk(directory, onerror=failed.append):
         for name in names:
             path = Path(folder, name)
             if path.suffix.lower() in PROGRAM_SUFFIXES:
                 try:
                     path.stat()  # a dangling link or a loop raises here
                 except OSError as error:
-                    unreadable.append(error)
+                    failed.append(error)
                     continue
                 found.append(path)
+    unreadable.extend(sorted(failed, key=lambda error: Path(str(error.filename))))
     return sorted(found)
 
 

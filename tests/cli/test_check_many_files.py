@@ -46,6 +46,17 @@ def test_a_link_loop_a_pipe_and_a_dangling_link_are_reported_and_the_rest_is_che
     ]
 
 
+def test_entries_that_cannot_be_read_are_reported_in_the_order_of_their_paths(tmp_path: Path) -> None:
+    names = ["b.mnt", "e.mnt", "a.mnt", "d.mnt", "c.mnt", "sub/a.mnt"]
+    for name in names:
+        (tmp_path / name).parent.mkdir(exist_ok=True)
+        (tmp_path / name).symlink_to(tmp_path / "nowhere.mnt")
+    result = mint_check(tmp_path)
+    assert result.stderr.splitlines() == [
+        f"mint check: no such file or directory: {tmp_path / name}" for name in sorted(names)
+    ]
+
+
 def test_a_file_deleted_after_it_was_found_is_reported_and_the_rest_is_checked(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

@@ -63,6 +63,7 @@ PASSED, FAILED, USAGE, NO_TESTS = 0, 1, 2, 5
     help="Where --coverage writes its lcov tracefile.",
 )
 @click.option("-j", "--jobs", type=click.IntRange(min=1), help="Tests run at once (default: every core).")
+@click.option("--collect-only", is_flag=True, help="List the tests found (text or json) and run none.")
 @format_option(["text", "junit", "json"])
 @output_file_option()
 @exit_zero_option("Exit 0 even when a test fails.")
@@ -78,6 +79,7 @@ def test(  # noqa: PLR0917 - click passes every option as an argument
     coverage: bool,
     lcov: Path,
     jobs: int | None,
+    collect_only: bool,
     output_format: str,
     output_file: Path | None,
     exit_zero: bool,
@@ -85,6 +87,8 @@ def test(  # noqa: PLR0917 - click passes every option as an argument
 ) -> None:
     """Run the Mint programs under PATHS (default: the current folder) that have REM @expect lines or a
     scenario file beside them (cell.scenario.toml for cell.mnt), and report which passed."""
+    if collect_only and output_format == "junit":
+        raise click.UsageError("--collect-only lists the tests as text or json, not junit")
     cases, unreadable = discover(paths or (Path(),))
     errors = console(color, stderr=True)
     for problem in unreadable:
@@ -92,6 +96,10 @@ def test(  # noqa: PLR0917 - click passes every option as an argument
     if not cases:
         errors.print("mint test: no tests found (programs with REM @expect lines or a .scenario.toml beside them)")
         sys.exit(USAGE if unreadable else NO_TESTS)
+    if collect_only:
+        with destination(output_file, _fail) as stream:
+            stream.write(reports.collected(cases, as_json=output_format == "json"))
+        sys.exit(USAGE if unreadable else PASSED)
     enabled = drives == "enabled"
     inputs = [path for case in cases for path in (case.program, case.scenario) if path is not None]
     refuse_overwriting(output_file, inputs, _fail)

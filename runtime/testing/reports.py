@@ -6,6 +6,7 @@ import json
 from collections import Counter
 from collections.abc import Sequence
 from dataclasses import asdict
+from pathlib import Path
 from xml.etree import ElementTree
 
 from rich.console import Console
@@ -13,6 +14,7 @@ from rich.table import Table
 from rich.text import Text
 
 from mintlang.runtime.testing.coverage import FileCoverage, handlers_run, lines_run, outcomes_seen
+from mintlang.runtime.testing.discovery import TestCase
 from mintlang.runtime.testing.running import Check, TestResult, Verdict
 
 _STYLE = {Verdict.PASSED: "green", Verdict.FAILED: "bold red", Verdict.ERROR: "bold yellow"}
@@ -90,11 +92,23 @@ def _failure(check: Check) -> str:
     return f"{check.what} at {check.when}: expected {check.expected}, got {check.actual}{detail} [{check.origin}]"
 
 
+def collected(cases: Sequence[TestCase], *, as_json: bool) -> str:
+    """The tests ``--collect-only`` found: a program a line (with its scenario file), or JSON for the editors."""
+    if as_json:
+        tests = [{"program": str(case.program), "scenario": _optional(case.scenario)} for case in cases]
+        return json.dumps({"tests": tests}, indent=2) + "\n"
+    return "".join(f"{case.name}{f' ({case.scenario})' if case.scenario else ''}\n" for case in cases)
+
+
+def _optional(path: Path | None) -> str | None:
+    return str(path) if path is not None else None
+
+
 def as_json(results: Sequence[TestResult], seconds: float) -> str:
     tests = [
         {
             "program": str(result.case.program),
-            "scenario": str(result.case.scenario) if result.case.scenario else None,
+            "scenario": _optional(result.case.scenario),
             "verdict": result.verdict.value,
             "stopped": result.stopped,
             "message": result.message,

@@ -116,3 +116,22 @@ def test_an_entry_named_like_a_program_that_is_not_a_file_is_reported_and_exits_
 def test_mintmt_directives_may_be_written_with_its_quote_comment(tmp_path: Path) -> None:
     _write(tmp_path, "quoted.mnt", "' @expect a = 2\nDim a\na = 2  ' @expect terminal is \"\"\n")
     assert _mint_test(tmp_path, "--dialect", "mintmt").exit_code == 0
+
+
+def test_collect_only_lists_the_tests_and_runs_none(tmp_path: Path) -> None:
+    _write(tmp_path, "a_fails.mnt", FAILING)
+    _write(tmp_path, "b.mnt", "DIM a\n")
+    _write(tmp_path, "b.scenario.toml", '[[expect]]\nwhat = "a"\nequals = 0\n')
+    _write(tmp_path, "plain.mnt", "DIM a\n")
+    listed = _mint_test(tmp_path, "--collect-only")
+    assert listed.exit_code == 0  # a failing test is listed, not run
+    assert listed.output == f"{tmp_path / 'a_fails.mnt'}\n{tmp_path / 'b.mnt'} ({tmp_path / 'b.scenario.toml'})\n"
+    data = json.loads(_mint_test(tmp_path, "--collect-only", "--format", "json").output)
+    assert data == {
+        "tests": [
+            {"program": str(tmp_path / "a_fails.mnt"), "scenario": None},
+            {"program": str(tmp_path / "b.mnt"), "scenario": str(tmp_path / "b.scenario.toml")},
+        ]
+    }
+    refused = _mint_test(tmp_path, "--collect-only", "--format", "junit")
+    assert refused.exit_code == 2 and "--collect-only lists the tests as text or json" in refused.output

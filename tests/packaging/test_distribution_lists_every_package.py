@@ -36,7 +36,7 @@ def test_tool_folders_install_inside_the_mintlang_namespace() -> None:
     assert all(package == "mintlang" or package.startswith("mintlang.") for package in _configuration()["packages"])
 
 
-@pytest.mark.parametrize("tool", ["mintlang.lsp", "mintlang.migrate", "mintlang.runtime"])
+@pytest.mark.parametrize("tool", ["mintlang", "mintlang.lsp", "mintlang.migrate", "mintlang.runtime"])
 def test_every_tool_runs_with_python_dash_m(tool: str) -> None:
     """Editors started through a configured Python (mint.pythonPath) run the tools this way."""
     result = subprocess.run([sys.executable, "-m", tool, "--help"], capture_output=True, text=True, check=False)

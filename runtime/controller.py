@@ -11,7 +11,7 @@ its interrupts and its error numbers.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
@@ -20,14 +20,16 @@ from mintlang.runtime.comms.packets import HostEndpoint
 from mintlang.runtime.comms.server import HostPortServer
 from mintlang.runtime.dialects import semantics
 from mintlang.runtime.dialects.mintmt import contouring, identifiers, outputs, triggering
+from mintlang.runtime.dialects.mintmt.buffer_low import BufferLowEvent
 from mintlang.runtime.dialects.v3 import machine as v3_machine
-from mintlang.runtime.events import MINTDRIVE, NEXTMOVE, EventClass, Events
+from mintlang.runtime.events import MINTDRIVE, NEXTMOVE, NEXTMOVE_MINTMT, EventClass, Events
 from mintlang.runtime.hardware import simulated
 from mintlang.runtime.inert import InertSettings
 from mintlang.runtime.interpreter.program import Linked, link
 from mintlang.runtime.interpreter.vm import Interpreter, StopReason
 from mintlang.runtime.io import DigitalIO
 from mintlang.runtime.keywords import KeywordTable
+from mintlang.runtime.monitors import Monitor
 from mintlang.runtime.motion.axis import ER_ABORT, Axis
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.extensions import EXTENSIONS
@@ -70,6 +72,7 @@ class Controller:
     endpoint: HostEndpoint
     inert: InertSettings
     server: HostPortServer | None = None
+    monitors: list[Monitor] = field(default_factory=list)  # a dialect's parts that watch each tick's motion
 
 
 def build_controller(
@@ -100,7 +103,9 @@ def build_controller(
     vm.default_axes = tuple(range(len(axes)))
     motion = Motion(axes, profile, clock)
     handlers: dict[str, int] = {}
-    dispatch = v3_machine.DISPATCH if v3 else NEXTMOVE if profile.controller.value.startswith("nextmove") else MINTDRIVE
+    mintmt = meaning.dialect is Dialect.MINTMT
+    nextmove = NEXTMOVE_MINTMT if mintmt else NEXTMOVE
+    dispatch = v3_machine.DISPATCH if v3 else nextmove if profile.controller.value.startswith("nextmove") else MINTDRIVE
     events = Events(clock, handlers, lambda message: vm.stop(StopReason.ERROR, message), dispatch)
     io = DigitalIO(profile, clock, events)
     events.imask = io.all_inputs  # IMASK: every input of the controller may raise #INx (EV-7)
@@ -111,11 +116,15 @@ def build_controller(
         part.register(table)
     for extend in EXTENSIONS:
         extend(table, motion)
-    if meaning.dialect is Dialect.MINTMT:
+    monitors: list[Monitor] = []
+    if mintmt:
         triggering.install(table, motion)
         contouring.install(table)
         outputs.install(table)
         identifiers.install(table, motion)
+        buffer_low = BufferLowEvent(motion, events)
+        buffer_low.register(table)
+        monitors.append(buffer_low)
     motion.input_active = io.is_active
     motion.index_pulses = {pulse.axis: pulse for pulse in scenario.index_pulses}
     layer = (
@@ -171,5 +180,20 @@ def build_controller(
     io.next_input_change = lambda: world.next_change(clock.now)
     server = HostPortServer(host_port) if host_port is not None else None
     return Controller(
-        clock, table, vm, terminal, axes, motion, io, events, system, world, supervisor, linked, endpoint, inert, server
+        clock,
+        table,
+        vm,
+        terminal,
+        axes,
+        motion,
+        io,
+        events,
+        system,
+        world,
+        supervisor,
+        linked,
+        endpoint,
+        inert,
+        server,
+        monitors,
     )

@@ -14,7 +14,7 @@ configuration file's while it runs, then the program's.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import IntEnum
 
 from mintlang.runtime.clock import NEVER, Clock
@@ -35,6 +35,7 @@ class EventClass(IntEnum):
     TIMER = 5
     INPUT = 6
     COMMS = 7
+    MOVEBUFFERLOW = 8  # MintMT only (mintlang/MINTMT.md, MT-14)
 
 
 _LABELS: Mapping[EventClass, str] = {  # the handler label, followed by the event's number where it has one
@@ -46,6 +47,7 @@ _LABELS: Mapping[EventClass, str] = {  # the handler label, followed by the even
     EventClass.TIMER: "TIMER",
     EventClass.INPUT: "IN",
     EventClass.COMMS: "COMMS",
+    EventClass.MOVEBUFFERLOW: "MOVEBUFFERLOW",
 }
 _NUMBERED = frozenset({EventClass.FASTIN, EventClass.INPUT, EventClass.COMMS})
 _E = EventClass
@@ -74,6 +76,12 @@ NEXTMOVE = Dispatch(
     bits={_E.ERROR: 2, _E.CAN1: 4, _E.CAN2: 8, _E.STOP: 16, _E.FASTIN: 32, _E.TIMER: 64, _E.INPUT: 128, _E.COMMS: 256},
     timer_minimum_ms=10,
 )
+NEXTMOVE_MINTMT = replace(
+    NEXTMOVE,
+    order=(*NEXTMOVE.order, _E.MOVEBUFFERLOW),
+    bits={**NEXTMOVE.bits, _E.MOVEBUFFERLOW: 1 << 16},  # beyond the masks' bits: EVENTPENDING never shows it (MT-14)
+)
+"""A NextMove running MintMT: its MOVEBUFFERLOW event ranks below every other (the notes give no rank)."""
 MINTDRIVE = Dispatch(
     order=(_E.ERROR, _E.FASTIN, _E.STOP, _E.CAN1, _E.CAN2, _E.TIMER, _E.INPUT, _E.COMMS),
     preemptive=False,

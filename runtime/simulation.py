@@ -67,6 +67,9 @@ class Simulator:
         c.clock.now = t
         c.io.sample(c.world.apply(t))
         axes = [axis for axis in c.axes if not axis.dormant()]
+        monitors = c.monitors
+        for monitor in monitors:
+            monitor.before_motion(t)
         for axis in axes:
             move = axis.move
             if move is not None and t >= move.end:
@@ -75,6 +78,8 @@ class Simulator:
             start_group = c.motion.start_group
             for axis in axes:
                 axis.profiler(t, start_group)
+        for monitor in monitors:
+            monitor.after_motion(t)
         for axis in axes:
             axis.servo_tick(t)
         if c.world.fast_inputs_due:
@@ -155,6 +160,8 @@ class Simulator:
         if vm.progressed or not vm.blocked or c.events.pending or c.server is not None or c.io.raises_every_tick():
             return t + 1
         soonest = min(vm.wake_at, c.world.next_change(t), c.events.next_timer)
+        for monitor in c.monitors:
+            soonest = min(soonest, monitor.next_required(t))
         for axis in c.axes:
             if soonest <= t + 1:
                 return t + 1

@@ -10,16 +10,51 @@ the language server and the runtime::
 
 from __future__ import annotations
 
+from importlib import import_module
+from typing import TYPE_CHECKING
+
 from mintlang.allocation import without_collector
-from mintlang.analysis.analyser import Analysis, analyse
-from mintlang.analysis.analyser import clear_cache as clear_findings_cache
-from mintlang.diagnostics import Diagnostic, Edit, Fix, LineIndex, Position, Severity, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
-from mintlang.semantic.index import clear_cache as clear_index_cache
-from mintlang.semantic.model import SemanticModel, build_model
-from mintlang.syntax.parser import Document, parse
-from mintlang.syntax.parser import clear_caches as clear_syntax_caches
+
+if TYPE_CHECKING:
+    from mintlang.analysis.analyser import Analysis, analyse
+    from mintlang.diagnostics import Diagnostic, Edit, Fix, LineIndex, Position, Severity, Span
+    from mintlang.semantic.model import SemanticModel, build_model
+    from mintlang.syntax.parser import Document, parse
+
+# Where each public name lives. They are imported when first used (PEP 562), so a tool that
+# imports one submodule (``mint --version`` imports ``mintlang.cli``) does not pay for the parser,
+# the rules and the keyword database.
+_PUBLIC = {
+    "Analysis": "mintlang.analysis.analyser",
+    "analyse": "mintlang.analysis.analyser",
+    "Diagnostic": "mintlang.diagnostics",
+    "Edit": "mintlang.diagnostics",
+    "Fix": "mintlang.diagnostics",
+    "LineIndex": "mintlang.diagnostics",
+    "Position": "mintlang.diagnostics",
+    "Severity": "mintlang.diagnostics",
+    "Span": "mintlang.diagnostics",
+    "SemanticModel": "mintlang.semantic.model",
+    "build_model": "mintlang.semantic.model",
+    "Document": "mintlang.syntax.parser",
+    "parse": "mintlang.syntax.parser",
+}
+
+
+def __getattr__(name: str) -> object:
+    module = _PUBLIC.get(name)
+    if module is None:
+        raise AttributeError(f"module 'mintlang' has no attribute {name!r}")
+    value = getattr(import_module(module), name)
+    globals()[name] = value  # the next use is a plain attribute
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *_PUBLIC})
+
 
 __all__ = [
     "Analysis",
@@ -45,6 +80,10 @@ __all__ = [
 
 def clear_caches() -> None:
     """Forget every line lexed, parsed, indexed and checked: the next check runs as in a fresh process."""
+    from mintlang.analysis.analyser import clear_cache as clear_findings_cache  # noqa: PLC0415 - see _PUBLIC
+    from mintlang.semantic.index import clear_cache as clear_index_cache  # noqa: PLC0415
+    from mintlang.syntax.parser import clear_caches as clear_syntax_caches  # noqa: PLC0415
+
     clear_syntax_caches()
     clear_index_cache()
     clear_findings_cache()
@@ -64,6 +103,10 @@ def check_application(
 
     ``select`` and ``ignore`` take codes or their prefixes; without ``select`` the errors and
     warnings are reported and the hints (I…) are not."""
+    from mintlang.analysis.analyser import analyse  # noqa: PLC0415 - see _PUBLIC
+    from mintlang.semantic.model import build_model  # noqa: PLC0415
+    from mintlang.syntax.parser import parse  # noqa: PLC0415
+
     configuration = parse(config, dialect, controller=controller) if config is not None else None
     macros = configuration.macros if configuration else None
     program = parse(source, dialect, macros=macros, controller=controller)

@@ -36,6 +36,11 @@ OWN_CODES: dict[str, str] = {
 }
 
 
+# What is checked unless a selection says otherwise: the controller's errors and the warnings. The
+# hints (I…) suggest a faster spelling of correct code; they are asked for (``--select I``).
+DEFAULT_SELECT = ("E", "W")
+
+
 # What the controller's compiler rejects before a program runs (000:4564-4570, 4611-4615): syntax (2003,
 # 2004, 2006-2008), mismatched blocks (2009, 2011-2014) and nesting beyond the stack (2015), labels
 # (3000, 3004), variables (3001, 3002), memory (3003), macros (3005, 3006) and keywords (3007). Every

@@ -18,6 +18,7 @@ from mintlang.analysis.rules import RULES, Rule
 from mintlang.analysis.suppression import suppress
 from mintlang.analysis.traversal import LineScope, gather
 from mintlang.caching import LINES_KEPT, RecentCache
+from mintlang.codes import DEFAULT_SELECT
 from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Diagnostic
 from mintlang.dialect import Dialect
@@ -33,11 +34,6 @@ class Analysis:
     model: SemanticModel
     program: tuple[Diagnostic, ...]
     configuration: tuple[Diagnostic, ...]
-
-
-# What is checked unless a selection says otherwise: the controller's errors and the warnings. The
-# hints (I…) suggest a faster spelling of correct code; they are asked for (``--select I``).
-DEFAULT_SELECT = ("E", "W")
 
 
 def _selected(code: str, select: Iterable[str] | None, ignore: Iterable[str]) -> bool:

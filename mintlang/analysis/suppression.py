@@ -15,10 +15,13 @@ import re
 from bisect import bisect_right
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from mintlang.codes import code_named, own
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
-from mintlang.syntax.parser import Document
+
+if TYPE_CHECKING:
+    from mintlang.syntax.parser import Document
 
 UNUSED_SUPPRESSION = "W117"
 

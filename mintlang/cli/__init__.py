@@ -3,16 +3,20 @@
 ``mint check`` lives in the core. The tools add their own subcommands
 (``mint migrate``, ``mint run``, ``mint lsp``) through the ``mintlang.commands`` entry-point
 group, so the core never imports them; they are loaded only when ``mint``
-runs, so importing this package imports no tool.
+runs, so importing this package imports no tool. The core's own commands are
+imported when named too: ``mint check`` never loads what ``mint rule`` needs.
 """
 
 from __future__ import annotations
 
+from importlib import import_module
+
 import click
 
-from mintlang.cli.check import check
 from mintlang.cli.options import HELP_OPTIONS, version_option
-from mintlang.cli.rule import rule
+
+_CORE_COMMANDS = {"check": "mintlang.cli.check", "rule": "mintlang.cli.rule"}
+"""Each core command, and the module that defines it under that name."""
 
 
 class _Commands(click.Group):
@@ -24,17 +28,17 @@ class _Commands(click.Group):
         return {entry.name: entry.load() for entry in entry_points(group="mintlang.commands")}
 
     def list_commands(self, ctx: click.Context) -> list[str]:
-        return sorted({*super().list_commands(ctx), *self._tools()})
+        return sorted({*_CORE_COMMANDS, *self._tools()})
 
     def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
-        return super().get_command(ctx, cmd_name) or self._tools().get(cmd_name)
+        module = _CORE_COMMANDS.get(cmd_name)
+        if module is not None:
+            command: click.Command = getattr(import_module(module), cmd_name)
+            return command
+        return self._tools().get(cmd_name)
 
 
 @click.group(cls=_Commands, context_settings=HELP_OPTIONS)
 @version_option("mint")
 def main() -> None:
     """Tools for Mint, the motion-control language of Baldor/ABB controllers."""
-
-
-main.add_command(check)
-main.add_command(rule)

@@ -10,13 +10,17 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 from enum import StrEnum
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from mintlang import Analysis, check_application
+from mintlang import check_application
 from mintlang.cli.files import cannot_read, is_configuration
 from mintlang.cli.report import FileReport
 from mintlang.diagnostics import Diagnostic
 from mintlang.fixes import Fixed, fix_text
 from mintlang.source import SourceFile, read_source
+
+if TYPE_CHECKING:
+    from mintlang.analysis.analyser import Analysis
 
 
 @dataclass(frozen=True, slots=True)

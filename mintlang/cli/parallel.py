@@ -11,7 +11,6 @@ from __future__ import annotations
 import os
 import signal
 from collections.abc import Callable, Iterator, Sequence
-from concurrent.futures import ProcessPoolExecutor
 from typing import TYPE_CHECKING, TypeVar
 
 if TYPE_CHECKING:
@@ -40,6 +39,8 @@ def _results(function: Callable[[In], Out], items: Sequence[In], workers: int) -
     if workers <= 1 or len(items) <= 1:
         yield from map(function, items)
         return
+    from concurrent.futures import ProcessPoolExecutor  # noqa: PLC0415 - multiprocessing, for more than one file
+
     workers = min(workers, len(items))
     chunk = max(1, len(items) // (workers * _CHUNKS_PER_WORKER))
     with ProcessPoolExecutor(workers, initializer=_ignore_interrupts) as pool:

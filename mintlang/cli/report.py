@@ -7,17 +7,18 @@ import re
 from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass
-from importlib.metadata import version
-
-from rich.cells import cell_len
-from rich.console import Console
+from typing import TYPE_CHECKING
 
 from mintlang.cli.terminal import Palette
 from mintlang.codes import OWN_CODES
 from mintlang.diagnostics import Diagnostic, Fix, LineIndex, Severity, Span, split_lines
 from mintlang.keyworddb import database
-from mintlang.ruledocs import find
-from mintlang.ruledocs.links import configured_base, rule_url
+
+if TYPE_CHECKING:
+    from rich.console import Console
+
+# rich (for text), the rule documentation and the distribution's metadata (for SARIF) are imported
+# where they are used: a check that writes JSON, or finds nothing to write, never pays for them.
 
 
 @dataclass(frozen=True, slots=True)
@@ -52,7 +53,11 @@ def _visible(text: str) -> str:
 
 
 def _cells(text: str) -> int:
-    return len(text) if text.isascii() else cell_len(text)
+    if text.isascii():
+        return len(text)
+    from rich.cells import cell_len  # noqa: PLC0415 - see the imports
+
+    return cell_len(text)
 
 
 def _frame(text: str, start: int, end: int) -> tuple[str, int, int]:
@@ -157,6 +162,9 @@ def _title(code: str) -> str:
 
 def _sarif_rule(code: str, base: str | None) -> dict[str, object]:
     """A SARIF rule: its title, and what it catches with a link to its page where it is documented."""
+    from mintlang.ruledocs import find  # noqa: PLC0415 - see the imports
+    from mintlang.ruledocs.links import rule_url  # noqa: PLC0415
+
     rule: dict[str, object] = {"id": code, "shortDescription": {"text": _title(code)}}
     documented = find(code)
     if documented is not None:
@@ -188,6 +196,10 @@ def _sarif_fix(fix: Fix, index: LineIndex, uri: str) -> dict[str, object]:
 
 def as_sarif(reports: Sequence[FileReport]) -> str:
     """SARIF 2.1.0, the format code-scanning services read."""
+    from importlib.metadata import version  # noqa: PLC0415 - see the imports
+
+    from mintlang.ruledocs.links import configured_base  # noqa: PLC0415
+
     results = []
     codes: set[str] = set()
     for report in reports:

@@ -17,8 +17,7 @@ from fnmatch import fnmatchcase
 from pathlib import Path
 from typing import Generic, TypeVar
 
-from mintlang.analysis.analyser import DEFAULT_SELECT
-from mintlang.codes import selector
+from mintlang.codes import DEFAULT_SELECT, selector
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.pairing import CONFIGURATION_SUFFIX, DEFAULT_PATTERN, Pairing, partner_on_disk

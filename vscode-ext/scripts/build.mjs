@@ -9,7 +9,7 @@ await build({
   external: ["vscode"],
   format: "cjs",
   platform: "node",
-  target: "node18", // the Node of VS Code 1.85's extension host
+  target: "node18", // the Node of VS Code 1.88's extension host
   minify: true,
   sourcemap: true,
   logLevel: "info",

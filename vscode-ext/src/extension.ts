@@ -7,6 +7,7 @@ import { LANGUAGE_ID } from "./language";
 import { isPairedConfig } from "./pairing";
 import { mintServer, type Server } from "./server";
 import { SERVER_SETTINGS } from "./settings";
+import { MintTests } from "./testing/controller";
 
 let server: Server | undefined;
 
@@ -30,6 +31,7 @@ export function activate(context: vscode.ExtensionContext): void {
   context.subscriptions.push(
     output,
     ...registerCommands(output),
+    new MintTests(output),
     vscode.workspace.onDidOpenTextDocument(pairConfig),
     vscode.workspace.onDidChangeConfiguration((event) => {
       if (SERVER_SETTINGS.some((setting) => event.affectsConfiguration(setting))) {

@@ -5,19 +5,21 @@ import * as path from "node:path";
 
 import type { Controller, MintSettings } from "./settings";
 
-export type Tool = "mint-lsp" | "mint-run";
-export type FileTool = Exclude<Tool, "mint-lsp">;
+export type Tool = "mint-lsp" | "mint-run" | "mint";
+export type FileTool = Exclude<Tool, "mint-lsp" | "mint">;
 
 /** The Python module behind each tool: what Python names when mintlang is not installed. */
 export const MODULES: Readonly<Record<Tool, string>> = {
   "mint-lsp": "mintlang.lsp",
   "mint-run": "mintlang.runtime",
+  mint: "mintlang",
 };
 
 /** How `mint.pythonPath` runs each tool. */
 export const PYTHON_ARGUMENTS: Readonly<Record<Tool, readonly string[]>> = {
   "mint-lsp": ["-m", "mintlang.lsp"],
   "mint-run": ["-m", "mintlang.runtime"],
+  mint: ["-m", "mintlang"],
 };
 
 /** What resolution needs to know about the machine. */
@@ -154,6 +156,25 @@ export function fileCommand(
   }
   const { command, args, source } = resolution.command;
   return found(command, [...args, ...toolArguments(tool, file, settings.controller, config)], source);
+}
+
+/** What the Testing view asks `mint test` for: the tests under `paths`, listed or run (with coverage into `lcov`). */
+export type TestRequest =
+  | { readonly collectOnly: true; readonly paths: readonly string[] }
+  | { readonly collectOnly: false; readonly paths: readonly string[]; readonly lcov?: string };
+
+/**
+ * The command line of `mint test` for `request`, reporting in JSON. Controller and dialect are left to
+ * the programs' settings files, so the editor runs the tests exactly as `mint test` in CI does.
+ */
+export function testCommand(request: TestRequest, settings: ToolSettings, host: Host): Resolution {
+  const resolution = resolveTool("mint", settings, host);
+  if (!resolution.ok) {
+    return resolution;
+  }
+  const { command, args, source } = resolution.command;
+  const mode = request.collectOnly ? ["--collect-only"] : request.lcov === undefined ? [] : ["--coverage", "--lcov", request.lcov];
+  return found(command, [...args, "test", "--format", "json", ...mode, "--", ...request.paths], source);
 }
 
 /**

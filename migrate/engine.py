@@ -24,7 +24,7 @@ from collections import Counter
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
 
-from mintlang.allocation import without_collector
+from mintlang.allocation import kept_without_collector
 from mintlang.diagnostics import LineIndex, Severity, Span, split_lines
 from mintlang.migrate.citations import cite
 from mintlang.migrate.context import MARKER, Context, FileView, LineTags, Unreadable
@@ -69,7 +69,7 @@ class FileOutcome:
     errors: tuple[str, ...]  # what the v3 parser could not read in the original
 
 
-@without_collector  # the parse trees are acyclic and large: collections would walk them again and again
+@kept_without_collector  # acyclic and large: collections would walk the trees and the caches they fill
 def run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> dict[Unit, FileOutcome]:
     """Migrate the files of one application with ``rules`` (already filtered and ordered).
 

@@ -2,13 +2,21 @@
 
 from __future__ import annotations
 
-from mintlang.dialect import Dialect
-from mintlang.runtime.dialects.mintmt import MINTMT
-from mintlang.runtime.dialects.v3.semantics import V3
-from mintlang.runtime.dialects.v4 import V4
-from mintlang.runtime.semantics import Semantics
+from importlib import import_module
+from typing import TYPE_CHECKING
 
-_SEMANTICS = {Dialect.V4: V4, Dialect.V3: V3, Dialect.MINTMT: MINTMT}
+from mintlang.dialect import Dialect
+
+if TYPE_CHECKING:
+    from mintlang.runtime.semantics import Semantics
+
+# Each dialect's semantics, by module and name: imported by the run that needs them, so that a command
+# line naming the dialects (``mint-run --help``) does not load the runtime.
+_SEMANTICS = {
+    Dialect.V4: ("mintlang.runtime.dialects.v4", "V4"),
+    Dialect.V3: ("mintlang.runtime.dialects.v3.semantics", "V3"),
+    Dialect.MINTMT: ("mintlang.runtime.dialects.mintmt", "MINTMT"),
+}
 SIMULATED = tuple(_SEMANTICS)
 
 
@@ -17,4 +25,6 @@ def semantics(dialect: Dialect | str) -> Semantics:
     found = _SEMANTICS.get(Dialect(dialect))
     if found is None:
         raise ValueError(f"{Dialect(dialect).value} programs are not simulated yet: mint-run runs v4 and v3")
-    return found
+    module, name = found
+    dialect_semantics: Semantics = getattr(import_module(module), name)
+    return dialect_semantics

@@ -1,0 +1,115 @@
+"""Mint expressions typed in the editor (watch, hover, the debug console, a breakpoint's condition), evaluated
+by the interpreter that runs the program, so they mean what they would mean in a line of it.
+
+An expression is parsed as the operand of a ``PRINT`` in the program's dialect
+and compiled by the run's own ``ExpressionCompiler``: variables, array
+elements, keywords (``POS.0``, ``IN.3``), functions and constants all resolve
+as the program's do. A name the program does not declare is refused rather
+than given a fresh slot, so evaluating never grows the program's storage.
+"""
+
+from __future__ import annotations
+
+import math
+import struct
+from dataclasses import dataclass
+
+from mintlang.dialect import Dialect
+from mintlang.runtime.controller import Controller
+from mintlang.runtime.dialects import semantics
+from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.interpreter.expressions import Evaluate, ExpressionCompiler
+from mintlang.syntax import nodes as n
+from mintlang.syntax.parser import parse
+
+_HOST = "PRINT "  # the statement whose operand the typed text becomes
+
+
+class EvaluationError(Exception):
+    """The text is not an expression of the program, or evaluating it raised a Mint error (the message says which)."""
+
+
+@dataclass(frozen=True, slots=True)
+class Compiled:
+    text: str
+    evaluate: Evaluate
+
+
+class Evaluator:
+    """Compiles and evaluates expressions against one run of the program (a re-run needs a new one)."""
+
+    def __init__(self, controller: Controller, dialect: Dialect) -> None:
+        self.controller = controller
+        self.dialect = dialect
+        names = controller.linked.names
+        self.names = names
+        self.compiler = ExpressionCompiler(controller.vm, controller.table, names, semantics(dialect))
+
+    def compile(self, text: str) -> Compiled:
+        """``text`` compiled; raises ``EvaluationError`` naming the column of a syntax error."""
+        expression = self.parse(text)
+        for node in n.walk_expression(expression):
+            if type(node) is n.VariableRef and node.name.identity not in self.names.scalars:  # type: ignore[union-attr]
+                raise EvaluationError(f"{node.name.text} is not a variable of the program")  # type: ignore[union-attr]
+        try:
+            return Compiled(text, self.compiler.compile(expression))
+        except MintError as error:
+            raise EvaluationError(error.describe()) from None
+        except NotSimulated as missing:
+            raise EvaluationError(str(missing)) from None
+
+    def parse(self, text: str) -> n.Expression:
+        """The expression ``text`` spells, in the program's dialect."""
+        if not text.strip():
+            raise EvaluationError("an empty expression")
+        if "\n" in text or "\r" in text:
+            raise EvaluationError("an expression is one line")
+        document = parse(_HOST + text, self.dialect, controller=self.controller.table.controller)
+        if document.diagnostics:
+            problem = document.diagnostics[0]
+            column = max(problem.span.start - len(_HOST), 0) + 1
+            raise EvaluationError(f"column {column}: {problem.message}")
+        statements = document.placed[0].syntax.statements if document.placed else ()
+        if len(statements) != 1 or type(statements[0]) is not n.Print:
+            raise EvaluationError(f"{text!r} is not an expression")
+        items = statements[0].items  # type: ignore[union-attr]
+        if statements[0].terminal is not None or len(items) != 1:  # type: ignore[union-attr]
+            raise EvaluationError(f"{text!r} is not one expression")
+        item = items[0]
+        if item.format is not None or item.separator is not None or item.value is None:
+            raise EvaluationError(f"{text!r} is not one expression")
+        if type(item.value) is n.StringLiteral:
+            raise EvaluationError("a string is not a value the debugger can show: Mint's values are numbers")
+        return item.value  # type: ignore[return-value]
+
+    def evaluate(self, text: str) -> float:
+        return run(self.compile(text))
+
+
+def run(compiled: Compiled) -> float:
+    """The value of a compiled expression now; a Mint error it raises becomes an ``EvaluationError``."""
+    try:
+        return compiled.evaluate()
+    except MintError as error:
+        raise EvaluationError(error.describe()) from None
+    except NotSimulated as missing:
+        raise EvaluationError(str(missing)) from None
+
+
+def shown(value: float) -> str:
+    """A value as the editor shows it: the shortest decimal that reads back as the same value, rounded to
+    binary32 as the controller holds it (0.1, not 0.100000001), and whole numbers without a point."""
+    if not math.isfinite(value):
+        return str(value)
+    if value.is_integer() and abs(value) < 1e15:
+        return str(int(value))
+    single = _single(value) == value
+    for digits in range(1, 18):
+        text = f"{value:.{digits}g}"
+        if float(text) == value or (single and _single(float(text)) == value):
+            return text
+    return repr(value)
+
+
+def _single(value: float) -> float:
+    return struct.unpack("<f", struct.pack("<f", value))[0] if abs(value) < 3.4e38 else value

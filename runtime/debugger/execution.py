@@ -1,0 +1,265 @@
+"""The program under the debugger: a simulation on a thread of its own that stops where the editor asks.
+
+The simulator runs unchanged (``run_source``); each compiled operation is
+wrapped, as coverage wraps them, so the debugger is asked before every
+statement whether to stop there (``Execution._before``). A stop blocks the
+simulation thread until the editor sends a command; meanwhile the session's
+thread reads the paused state (variables, axes, the stack), which nothing else
+touches. Going back (``stepBack``, ``reverseContinue``) ends the run where it
+is and starts another from the beginning (``history.py``, ``stepping.py``).
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Protocol
+
+from mintlang.runtime.controller import Controller
+from mintlang.runtime.debugger.breakpoints import Breakpoints
+from mintlang.runtime.debugger.evaluation import Evaluator
+from mintlang.runtime.debugger.history import Intervention, Timeline
+from mintlang.runtime.debugger.launch import Application
+from mintlang.runtime.debugger.stepping import Forward, Point, Scan, cont, reach
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.interpreter.vm import Operation, StopReason
+from mintlang.runtime.run import RunResult, run_source
+from mintlang.runtime.scenario import ScenarioFileError
+from mintlang.runtime.simulation import Interrupt, Limits
+
+ERRORS = "errors"  # exception filter: stop at every run-time error, even one #ONERROR handles
+UNHANDLED = "unhandled"  # exception filter: stop where an error ends the run
+
+
+class Listener(Protocol):
+    """Where the execution reports (the DAP session turns each call into an event)."""
+
+    def stopped(self, reason: str, description: str | None) -> None: ...
+
+    def output(self, text: str, category: str) -> None: ...
+
+    def finished(self, result: RunResult | None, problem: str | None) -> None: ...
+
+
+@dataclass(frozen=True, slots=True)
+class _Rerun:
+    plan: Forward | Scan
+
+
+class _Terminate:
+    pass
+
+
+Plan = Forward | Scan
+Command = Forward | _Rerun | _Terminate
+
+
+class _Abandoned(Interrupt):
+    """Ends the run now: a re-run replaces it, or the session ends."""
+
+
+class Execution:
+    """Runs ``application`` under ``breakpoints`` and reports to ``listener``."""
+
+    def __init__(self, application: Application, breakpoints: Breakpoints, listener: Listener) -> None:
+        self.application = application
+        self.breakpoints = breakpoints
+        self.listener = listener
+        self.timeline = Timeline()
+        self.exception_filters: frozenset[str] = frozenset({UNHANDLED})
+        self.controller: Controller | None = None
+        self.evaluator: Evaluator | None = None
+        self.point: Point | None = None  # where the run is paused; None while it runs
+        self._condition = threading.Condition()
+        self._command: Command | None = None
+        self._pause_requested = False
+        self._terminating = False
+        self._plan: Plan = cont(-1)
+        self._next_plan: Plan | None = None
+        self._count = 0
+        self._writes = 0
+        self._logged_from = 0
+        self._blocked: tuple[int, int] | None = None  # (pc, depth) of the statement that blocked last
+        self._thread: threading.Thread | None = None
+
+    # ------------------------------------------------------------ the editor's side
+
+    def start(self, plan: Plan) -> None:
+        self._thread = threading.Thread(target=self._main, args=(plan,), name="mint-simulation", daemon=True)
+        self._thread.start()
+
+    def command(self, command: Command) -> None:
+        """Resume the paused run with ``command``."""
+        with self._condition:
+            self._command = command
+            self.point = None
+            self._condition.notify_all()
+
+    def resume(self, plan: Forward) -> None:
+        self.command(plan)
+
+    def rerun(self, plan: Plan) -> None:
+        """Start again from the beginning with ``plan`` (the editor asked to go back)."""
+        self.command(_Rerun(plan))
+
+    def pause(self) -> None:
+        self._pause_requested = True
+
+    def terminate(self) -> None:
+        """End the run, paused or not, and wait for its thread to finish."""
+        self._terminating = True
+        self.command(_Terminate())
+        if self._thread is not None and self._thread is not threading.current_thread():
+            self._thread.join(timeout=10)
+
+    def intervene(self, description: str, apply: Callable[[Controller], None]) -> None:
+        """Change the paused state in a way every re-run through this point repeats."""
+        if self.point is None or self.controller is None:
+            raise RuntimeError("intervene while the run is paused")
+        self.timeline.intervene(Intervention(self.point.count, description, apply), self.controller)
+
+    # ------------------------------------------------------- the simulation's side
+
+    def _main(self, plan: Plan) -> None:
+        problem = None
+        result = None
+        try:
+            while True:
+                result = self._run(plan)
+                if self._next_plan is None:
+                    break
+                plan, self._next_plan = self._next_plan, None
+        except ScenarioFileError as error:
+            problem = str(error)
+        except Exception as error:  # a bug of ours: the session reports it and ends, the editor stays up
+            problem = f"internal error: {error!r}"
+        self.listener.finished(None if self._terminating else result, problem)
+
+    def _run(self, plan: Plan) -> RunResult:
+        self._plan = plan
+        self._count = 0
+        self._writes = 0
+        self._logged_from = self.timeline.points_reached  # log messages at earlier points were shown before
+        self._blocked = None
+        application = self.application
+        limits = Limits(until_ms=application.until_ms, max_wall_s=None)
+        result = run_source(
+            application.source,
+            config=application.configuration_source,
+            controller=application.controller,
+            dialect=application.dialect,
+            scenario=application.scenario,
+            limits=limits,
+            echo=self._echo,
+            on_start=self._attach,
+            name=str(application.program),
+        )
+        if isinstance(plan, Scan) and self._next_plan is None:  # going back from where the run ended
+            self._next_plan = self._found(plan)
+        elif self._next_plan is None and not self._terminating:
+            self._at_end(result)
+        return result
+
+    def _attach(self, controller: Controller) -> None:
+        self.controller = controller
+        self.evaluator = Evaluator(controller, self.application.dialect)
+        self.breakpoints.start_run()
+        vm = controller.vm
+        vm.operations[:] = [self._watched(pc, operation) for pc, operation in enumerate(vm.operations)]
+
+    def _watched(self, pc: int, operation: Operation) -> Operation:
+        def watched() -> bool | None:
+            point = self._before(pc)
+            try:
+                blocked = operation()
+            except MintError as error:
+                if ERRORS in self.exception_filters and isinstance(self._plan, Forward):
+                    self._stop(point, "exception", error.describe())
+                raise
+            self._blocked = (pc, point.depth) if blocked else None
+            return blocked
+
+        return watched
+
+    def _before(self, pc: int) -> Point:
+        """Decide, before the statement at ``pc`` runs, whether to stop there; raises to end the run."""
+        controller = self.controller
+        assert controller is not None and self.evaluator is not None
+        depth = len(controller.vm.frames)
+        point = Point(self._count, pc, depth, self._blocked == (pc, depth))
+        self._count += 1
+        self.timeline.reach(point.count)
+        for intervention in self.timeline.due(point.count):
+            intervention.apply(controller)
+        plan = self._plan
+        decision = None if point.resumed else self.breakpoints.reached(pc, self.evaluator)
+        if decision is not None and decision.log is not None and point.count >= self._logged_from:
+            self.listener.output(decision.log, "console")
+        if self._terminating:
+            raise _Abandoned("the debugging session ended")
+        if isinstance(plan, Scan):
+            self._scan(plan, point, decision is not None and decision.stop)
+            return point
+        if self._pause_requested:
+            self._pause_requested = False
+            self._stop(point, "pause")
+        elif plan.breakpoints and decision is not None and decision.stop:
+            self._stop(point, "breakpoint", decision.description)
+        elif point.count > plan.after and plan.accepts(point):
+            self._stop(point, plan.reason)
+        return point
+
+    def _scan(self, scan: Scan, point: Point, hit: bool) -> None:
+        if point.count >= scan.until:
+            self._next_plan = self._found(scan)
+            raise _Abandoned("going back")
+        if scan.wanted(point, hit):
+            scan.found = point.count
+
+    def _found(self, scan: Scan) -> Forward:
+        """The second pass of ``scan``: to the point it found, or to the start when there was none."""
+        target = scan.found if scan.found is not None else 0
+        self.timeline.rewind(target)
+        return reach(target, scan.reason if scan.found is not None else "entry")
+
+    def _stop(self, point: Point, reason: str, description: str | None = None) -> None:
+        """Pause at ``point`` until the editor says what next; a command to go back ends this run."""
+        with self._condition:
+            self._command = None
+            self.point = point
+        self.listener.stopped(reason, description)
+        with self._condition:
+            while self._command is None:
+                self._condition.wait()
+            command, self._command = self._command, None
+        if isinstance(command, _Terminate):
+            raise _Abandoned("the debugging session ended")
+        if isinstance(command, _Rerun):
+            self._next_plan = command.plan
+            raise _Abandoned("going back")
+        self._plan = command
+
+    def _at_end(self, result: RunResult) -> None:
+        """The run ended: an error that ended it stops the debugger there first, when the editor asks for that."""
+        if result.stop.reason is not StopReason.ERROR or UNHANDLED not in self.exception_filters:
+            return
+        controller = self.controller
+        if controller is None:
+            return
+        vm = controller.vm
+        site = vm.stop_site
+        pc = vm.sites.index(site) if site is not None and site in vm.sites else vm.pc
+        point = Point(self._count, pc, len(vm.frames), resumed=False)
+        try:
+            self._stop(point, "exception", result.stop.message)
+        except _Abandoned:
+            return
+
+    # ------------------------------------------------------------------- output
+
+    def _echo(self, text: str) -> None:
+        index = self._writes
+        self._writes += 1
+        if self.timeline.first_showing(index):
+            self.listener.output(text, "stdout")

@@ -1,0 +1,146 @@
+"""A ``launch`` request's arguments read into the application to run, as ``mint-run`` would run it.
+
+The program's configuration file is the one ``mint-run`` pairs with it
+(``config``, else the settings or ``<name>.cfg`` beside it; ``noConfig`` runs
+none); scenario files add inputs, keys, host packets and plants. Every
+mistake is a ``LaunchError`` whose message the editor shows as it is.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from mintlang.controllers import ControllerProfile
+from mintlang.detection import detect_dialect
+from mintlang.dialect import Dialect
+from mintlang.runtime.dialects import SIMULATED
+from mintlang.runtime.hardware import machine
+from mintlang.runtime.scenario import ScenarioFileError, load_scenario, merge
+from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
+from mintlang.semantic.units import Unit
+from mintlang.settings import SettingsError, settings_for
+from mintlang.source import read_source
+
+AUTO = "auto"  # the dialect the program's text shows (v4 or MintMT), as the editor's setting ``auto`` does
+
+
+class LaunchError(Exception):
+    """The launch cannot start: a file that cannot be read, an unknown controller, a bad scenario."""
+
+
+@dataclass(frozen=True, slots=True)
+class Application:
+    """Everything a run of the program needs, read once: every re-run (a step back) starts from it."""
+
+    program: Path
+    source: str
+    configuration: Path | None
+    configuration_source: str | None
+    controller: str | None
+    dialect: Dialect
+    profile: ControllerProfile
+    scenario: Scenario
+    until_ms: int | None
+    stop_on_entry: bool
+
+    def path_of(self, unit: str) -> Path | None:
+        """The file of ``unit`` ("program" or "configuration"), as the interpreter's sites name them."""
+        return self.program if unit == Unit.PROGRAM.value else self.configuration
+
+
+def prepare(arguments: Mapping[str, Any]) -> Application:
+    """The application the ``launch`` arguments describe; raises ``LaunchError``."""
+    program = _path(arguments.get("program"), "program")
+    if program is None:
+        raise LaunchError("launch needs 'program': the path of the Mint program to debug")
+    source = _read(program, "the program")
+    configuration = _configuration(program, arguments)
+    configuration_source = _read(configuration, "the configuration file") if configuration is not None else None
+    dialect = _dialect(arguments.get("dialect", AUTO), source)
+    controller = arguments.get("controller")
+    if controller is not None and not isinstance(controller, str):
+        raise LaunchError("'controller' is the name of a controller, such as nextmove-pci")
+    try:
+        profile = machine(controller, dialect)
+    except ValueError as problem:
+        raise LaunchError(str(problem)) from None
+    scenario = Scenario()
+    for path in _paths(arguments.get("stimulus", []), "stimulus"):
+        try:
+            scenario = merge(scenario, load_scenario(path, profile, dialect))
+        except ScenarioFileError as error:
+            raise LaunchError(str(error)) from None
+        except OSError as error:
+            raise LaunchError(f"cannot read {path}: {error.strerror or error}") from None
+    if arguments.get("drives") == "enabled":
+        scenario = merge(scenario, Scenario(drives=(DrivesEnabled(),)))
+    until_ms = arguments.get("untilMs")
+    if until_ms is not None and (not isinstance(until_ms, int) or isinstance(until_ms, bool) or until_ms < 0):
+        raise LaunchError("'untilMs' is a whole number of simulated milliseconds")
+    return Application(
+        program,
+        source,
+        configuration,
+        configuration_source,
+        controller,
+        dialect,
+        profile,
+        scenario,
+        until_ms,
+        bool(arguments.get("stopOnEntry", False)),
+    )
+
+
+def _path(value: object, name: str) -> Path | None:
+    if value is None:
+        return None
+    if not isinstance(value, str) or not value:
+        raise LaunchError(f"'{name}' is the path of a file")
+    return Path(value)
+
+
+def _paths(value: object, name: str) -> list[Path]:
+    items = [value] if isinstance(value, str) else value
+    if not isinstance(items, list):
+        raise LaunchError(f"'{name}' is a path or a list of paths")
+    return [path for item in items if (path := _path(item, name)) is not None]
+
+
+def _read(path: Path, role: str) -> str:
+    try:
+        file = read_source(path)
+    except OSError as error:
+        raise LaunchError(f"cannot read {role} {path}: {error.strerror or error}") from None
+    if (binary := file.binary()) is not None:
+        raise LaunchError(f"{binary}: not run")
+    return file.text
+
+
+def _configuration(program: Path, arguments: Mapping[str, Any]) -> Path | None:
+    """``config``, else the configuration paired with the program as mint-run and the editor pair it."""
+    named = _path(arguments.get("config"), "config")
+    if arguments.get("noConfig", False):
+        if named is not None:
+            raise LaunchError("'config' names a configuration file and 'noConfig' runs none: give one")
+        return None
+    if named is not None:
+        if named.resolve() == program.resolve():
+            raise LaunchError(f"'config' {named} is the program itself: name the configuration file")
+        return named
+    try:
+        unit, other = settings_for(program).partner(program)
+    except SettingsError as error:
+        raise LaunchError(str(error)) from None
+    return other if unit is Unit.PROGRAM else None
+
+
+def _dialect(value: object, source: str) -> Dialect:
+    if value == AUTO:
+        return detect_dialect(source)
+    if value not in {dialect.value for dialect in SIMULATED}:
+        choices = ", ".join([AUTO, *(dialect.value for dialect in SIMULATED)])
+        raise LaunchError(f"'dialect' {value!r} is not one of {choices}")
+    return Dialect(str(value))

@@ -1,0 +1,426 @@
+"""The DAP session: requests in, responses and events out, over one pair of byte streams.
+
+Requests are served one at a time on the reading thread; the program runs on
+the execution's thread and reports through ``stopped``, ``output`` and
+``finished``. Anything a request gets wrong is an error response with a
+message the editor shows, never a traceback.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import re
+import sys
+import threading
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any, BinaryIO
+
+from mintlang.runtime.controller import Controller
+from mintlang.runtime.debugger import stepping
+from mintlang.runtime.debugger.breakpoints import Breakpoints
+from mintlang.runtime.debugger.evaluation import EvaluationError, shown
+from mintlang.runtime.debugger.execution import ERRORS, UNHANDLED, Execution
+from mintlang.runtime.debugger.framing import FramingError, read_message, write_message
+from mintlang.runtime.debugger.launch import Application, LaunchError, prepare
+from mintlang.runtime.debugger.variables import NotSettable, References, scopes
+from mintlang.runtime.interpreter.vm import Site, StopReason
+from mintlang.runtime.run import RunResult, run_source
+from mintlang.runtime.scenario import ScenarioFileError
+from mintlang.syntax.nodes import identity
+
+THREAD_ID = 1  # the program is one thread of control; event handlers run on it
+_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+CAPABILITIES: dict[str, Any] = {
+    "supportsConfigurationDoneRequest": True,
+    "supportsConditionalBreakpoints": True,
+    "supportsHitConditionalBreakpoints": True,
+    "supportsLogPoints": True,
+    "supportsEvaluateForHovers": True,
+    "supportsSetVariable": True,
+    "supportsStepBack": True,
+    "supportsTerminateRequest": True,
+    "supportsRestartRequest": False,
+    "exceptionBreakpointFilters": [
+        {
+            "filter": UNHANDLED,
+            "label": "Errors that end the run",
+            "description": "Stop where a run-time error no #ONERROR handles ends the program",
+            "default": True,
+        },
+        {
+            "filter": ERRORS,
+            "label": "Every run-time error",
+            "description": "Stop at each run-time error as it is raised, before #ONERROR runs",
+            "default": False,
+        },
+    ],
+}
+
+
+class RequestError(Exception):
+    """A request that cannot be served; its message becomes the error response's."""
+
+
+class _Compiled(Exception):
+    """Stops the launch's trial compile once the statements are known."""
+
+
+class Session:
+    def __init__(self, reader: BinaryIO, writer: BinaryIO) -> None:
+        self.reader = reader
+        self.writer = writer
+        self._sequence = 0
+        self._writing = threading.Lock()
+        self.application: Application | None = None
+        self.breakpoints: Breakpoints | None = None
+        self.execution: Execution | None = None
+        self.exception_filters = frozenset({UNHANDLED})
+        self.references = References()
+        self.spellings: dict[str, str] = {}
+        self._handlers: dict[str, Callable[[dict[str, Any]], dict[str, Any] | None]] = {
+            "initialize": self.initialize,
+            "launch": self.launch,
+            "setBreakpoints": self.set_breakpoints,
+            "setExceptionBreakpoints": self.set_exception_breakpoints,
+            "configurationDone": self.configuration_done,
+            "threads": self.threads,
+            "stackTrace": self.stack_trace,
+            "scopes": self.scopes,
+            "variables": self.variables,
+            "setVariable": self.set_variable,
+            "evaluate": self.evaluate,
+            "continue": self.cont,
+            "next": self.step(stepping.step_over),
+            "stepIn": self.step(stepping.step_in),
+            "stepOut": self.step(stepping.step_out),
+            "stepBack": self.step_back,
+            "reverseContinue": self.reverse_continue,
+            "pause": self.pause,
+            "terminate": self.terminate,
+            "disconnect": self.disconnect,
+        }
+
+    # ------------------------------------------------------------------ the loop
+
+    def serve(self) -> None:
+        """Serve requests until ``disconnect`` or the end of the input."""
+        while True:
+            try:
+                message = read_message(self.reader)
+            except FramingError as error:
+                self.send_event("output", {"category": "important", "output": f"mint-dap: {error}\n"})
+                continue
+            if message is None:
+                break
+            if message.get("type") == "request":
+                self.handle(message)
+                if message.get("command") == "disconnect":
+                    break
+        if self.execution is not None:
+            self.execution.terminate()
+
+    def handle(self, request: dict[str, Any]) -> None:
+        command = str(request.get("command", ""))
+        handler = self._handlers.get(command)
+        arguments = request.get("arguments") or {}
+        try:
+            if handler is None:
+                raise RequestError(f"{command!r} is not supported by mint-dap")
+            if not isinstance(arguments, dict):
+                raise RequestError("the request's arguments are not an object")
+            body = handler(arguments)
+        except (RequestError, LaunchError, EvaluationError, NotSettable) as error:
+            self.respond(request, None, str(error))
+            return
+        except Exception as error:  # a bug of ours: the editor gets a message, the session goes on
+            print(f"mint-dap: internal error in {command}: {error!r}", file=sys.stderr)
+            self.respond(request, None, f"internal error in mint-dap: {error}")
+            return
+        self.respond(request, body)
+        if command == "launch":  # ready for the configuration requests: breakpoints bind to its statements
+            self.send_event("initialized")
+
+    def respond(self, request: dict[str, Any], body: dict[str, Any] | None, error: str | None = None) -> None:
+        message: dict[str, Any] = {
+            "type": "response",
+            "request_seq": request.get("seq", 0),
+            "command": request.get("command", ""),
+            "success": error is None,
+        }
+        if error is not None:
+            message["message"] = error
+            message["body"] = {"error": {"id": 1, "format": error.replace("{", "{{").replace("}", "}}")}}
+        elif body is not None:
+            message["body"] = body
+        self.send(message)
+
+    def send_event(self, event: str, body: dict[str, Any] | None = None) -> None:
+        message: dict[str, Any] = {"type": "event", "event": event}
+        if body is not None:
+            message["body"] = body
+        self.send(message)
+
+    def send(self, message: dict[str, Any]) -> None:
+        with self._writing:
+            self._sequence += 1
+            message["seq"] = self._sequence
+            with contextlib.suppress(BrokenPipeError, ValueError):  # the editor went away: nothing left to tell it
+                write_message(self.writer, message)
+
+    # --------------------------------------------------- the execution's reports
+
+    def stopped(self, reason: str, description: str | None) -> None:
+        self.references.clear()
+        body: dict[str, Any] = {"reason": reason, "threadId": THREAD_ID, "allThreadsStopped": True}
+        if description is not None:
+            body["description"] = description
+            body["text"] = description
+        self.send_event("stopped", body)
+
+    def output(self, text: str, category: str) -> None:
+        self.send_event("output", {"category": category, "output": text})
+
+    def finished(self, result: RunResult | None, problem: str | None) -> None:
+        if problem is not None:
+            self.output(f"mint-dap: {problem}\n", "stderr")
+        if result is not None:
+            self.output(_ending(result), "console")
+            normal = result.stop.reason in (StopReason.END, StopReason.UNTIL)
+            self.send_event("exited", {"exitCode": 0 if normal else 1})
+        self.send_event("terminated")
+
+    # -------------------------------------------------------------- the requests
+
+    def initialize(self, arguments: dict[str, Any]) -> dict[str, Any]:
+        if not arguments.get("linesStartAt1", True):
+            raise RequestError("mint-dap counts lines from 1, as Mint does: the client must too")
+        return CAPABILITIES
+
+    def launch(self, arguments: dict[str, Any]) -> None:
+        if self.application is not None:
+            raise RequestError("this session has already launched a program")
+        application = prepare(arguments)
+        self.breakpoints = Breakpoints(_sites(application))
+        self.spellings = _spellings(application)
+        self.application = application
+
+    def set_breakpoints(self, arguments: dict[str, Any]) -> dict[str, Any]:
+        application, breakpoints = self._launched()
+        source = arguments.get("source") or {}
+        unit = _unit_of(application, source.get("path"))
+        requested = arguments.get("breakpoints")
+        if requested is None:
+            requested = [{"line": line} for line in arguments.get("lines", [])]
+        if unit is None:
+            problem = "not part of the program being debugged"
+            return {"breakpoints": [{"verified": False, "message": problem} for _ in requested]}
+        placed = breakpoints.replace(unit, requested)
+        return {"breakpoints": [breakpoint_.as_dap(source) for breakpoint_ in placed]}
+
+    def set_exception_breakpoints(self, arguments: dict[str, Any]) -> dict[str, Any]:
+        filters = frozenset(arguments.get("filters", []))
+        unknown = filters - {ERRORS, UNHANDLED}
+        if unknown:
+            raise RequestError(f"no exception filter {', '.join(sorted(unknown))}: use {ERRORS} or {UNHANDLED}")
+        self.exception_filters = filters
+        if self.execution is not None:
+            self.execution.exception_filters = filters
+        return {"breakpoints": [{"verified": True} for _ in filters]}
+
+    def configuration_done(self, arguments: dict[str, Any]) -> None:
+        application, breakpoints = self._launched()
+        if self.execution is not None:
+            raise RequestError("the program is already running")
+        self.execution = Execution(application, breakpoints, self)
+        self.execution.exception_filters = self.exception_filters
+        self.execution.start(stepping.entry() if application.stop_on_entry else stepping.cont(-1))
+
+    def threads(self, arguments: dict[str, Any]) -> dict[str, Any]:
+        name = self.application.program.name if self.application is not None else "program"
+        return {"threads": [{"id": THREAD_ID, "name": name}]}
+
+    def stack_trace(self, arguments: dict[str, Any]) -> dict[str, Any]:
+        execution, controller = self._paused()
+        assert execution.point is not None
+        vm = controller.vm
+        frames = []
+        pc = execution.point.pc
+        for depth, frame in enumerate([*reversed(vm.frames), None]):
+            site = vm.sites[pc] if pc < len(vm.sites) else (vm.sites[-1] if vm.sites else None)
+            frames.append(self._frame(depth, site, pc, controller))
+            if frame is None:
+                break
+            pc = (
+                frame.return_pc if frame.rank is not None else frame.return_pc - 1
+            )  # a handler returns to where it interrupted
+        start = int(arguments.get("startFrame", 0) or 0)
+        levels = int(arguments.get("levels", 0) or 0)
+        shown_frames = frames[start : start + levels] if levels > 0 else frames[start:]
+        return {"stackFrames": shown_frames, "totalFrames": len(frames)}
+
+    def _frame(self, depth: int, site: Site | None, pc: int, controller: Controller) -> dict[str, Any]:
+        assert self.application is not None
+        name = self._routine(pc, site, controller)
+        frame: dict[str, Any] = {"id": depth + 1, "name": name, "line": site.line if site else 0, "column": 1}
+        path = self.application.path_of(site.unit) if site is not None else None
+        if path is not None:
+            frame["source"] = {"name": path.name, "path": str(path.resolve())}
+        return frame
+
+    def _routine(self, pc: int, site: Site | None, controller: Controller) -> str:
+        """The name of the subroutine or handler holding ``pc``: the nearest label at or before it in its file."""
+        if site is None:
+            return "program"
+        linked = controller.linked
+        labels = linked.handlers if site.unit == "program" else linked.configuration_handlers
+        before = [(start, label) for label, start in labels.items() if start <= pc]
+        if not before:
+            return site.unit
+        return "#" + self.spellings.get(max(before)[1], max(before)[1])
+
+    def scopes(self, arguments: dict[str, Any]) -> dict[str, Any]:
+        execution, controller = self._paused()
+        assert execution.evaluator is not None
+        found = []
+        for name, node, count in scopes(controller, execution.evaluator, self.spellings):
+            scope: dict[str, Any] = {"name": name, "variablesReference": self.references.add(node), "expensive": False}
+            if count:
+                scope["indexedVariables"] = count
+            found.append(scope)
+        return {"scopes": found}
+
+    def variables(self, arguments: dict[str, Any]) -> dict[str, Any]:
+        self._paused()
+        reference = int(arguments.get("variablesReference", 0))
+        count = arguments.get("count")
+        try:
+            listed = self.references.listed(reference, int(arguments.get("start", 0) or 0), count)
+        except KeyError:
+            raise RequestError(f"no variables under reference {reference} at this stop") from None
+        return {"variables": listed}
+
+    def set_variable(self, arguments: dict[str, Any]) -> dict[str, Any]:
+        execution, _ = self._paused()
+        assert execution.evaluator is not None
+        node = self.references.nodes.get(int(arguments.get("variablesReference", 0)))
+        if node is None:
+            raise RequestError("no such variables at this stop")
+        value = execution.evaluator.evaluate(str(arguments.get("value", "")))
+        description, apply = node.assignment(str(arguments.get("name", "")), value)
+        execution.intervene(description, apply)
+        return {"value": shown(value)}
+
+    def evaluate(self, arguments: dict[str, Any]) -> dict[str, Any]:
+        execution, _ = self._paused()
+        assert execution.evaluator is not None
+        value = execution.evaluator.evaluate(str(arguments.get("expression", "")))
+        return {"result": shown(value), "variablesReference": 0}
+
+    def cont(self, arguments: dict[str, Any]) -> dict[str, Any]:
+        execution, _ = self._paused()
+        assert execution.point is not None
+        execution.resume(stepping.cont(execution.point.count))
+        return {"allThreadsContinued": True}
+
+    def step(self, plan: Callable[[stepping.Point], stepping.Forward]) -> Callable[[dict[str, Any]], None]:
+        def request(arguments: dict[str, Any]) -> None:
+            execution, _ = self._paused()
+            assert execution.point is not None
+            execution.resume(plan(execution.point))
+
+        return request
+
+    def step_back(self, arguments: dict[str, Any]) -> None:
+        execution, _ = self._paused()
+        assert execution.point is not None
+        execution.rerun(stepping.step_back(execution.point))
+
+    def reverse_continue(self, arguments: dict[str, Any]) -> None:
+        execution, _ = self._paused()
+        assert execution.point is not None and self.breakpoints is not None
+        execution.rerun(stepping.reverse_continue(execution.point))
+
+    def pause(self, arguments: dict[str, Any]) -> None:
+        if self.execution is None:
+            raise RequestError("the program has not started: send configurationDone first")
+        if self.execution.point is None:
+            self.execution.pause()
+
+    def terminate(self, arguments: dict[str, Any]) -> None:
+        if self.execution is None:
+            self.send_event("terminated")
+            return
+        self.execution.terminate()
+
+    def disconnect(self, arguments: dict[str, Any]) -> None:
+        if self.execution is not None:
+            self.execution.terminate()
+
+    # ------------------------------------------------------------------- helpers
+
+    def _launched(self) -> tuple[Application, Breakpoints]:
+        if self.application is None or self.breakpoints is None:
+            raise RequestError("launch a program first")
+        return self.application, self.breakpoints
+
+    def _paused(self) -> tuple[Execution, Controller]:
+        execution = self.execution
+        if execution is None or execution.point is None or execution.controller is None:
+            raise RequestError("the program is not paused")
+        return execution, execution.controller
+
+
+def _sites(application: Application) -> list[Site]:
+    """The application's statements as the controller compiles them, from a run stopped before its first tick."""
+    found: list[Site] = []
+
+    def compiled(controller: Controller) -> None:
+        found.extend(controller.vm.sites)
+        raise _Compiled
+
+    try:
+        run_source(
+            application.source,
+            config=application.configuration_source,
+            controller=application.controller,
+            dialect=application.dialect,
+            scenario=application.scenario,
+            on_start=compiled,
+            name=str(application.program),
+        )
+    except _Compiled:
+        pass
+    except ScenarioFileError as error:  # a REM @sim directive the scenario cannot read
+        raise LaunchError(str(error)) from None
+    return found
+
+
+def _spellings(application: Application) -> dict[str, str]:
+    """Each name's spelling as the source first writes it, by the identity the interpreter files it under."""
+    spellings: dict[str, str] = {}
+    for text in (application.configuration_source or "", application.source):
+        for word in _WORD.findall(text):
+            spellings.setdefault(identity(word), word)
+    return spellings
+
+
+def _unit_of(application: Application, path: object) -> str | None:
+    if not isinstance(path, str):
+        return None
+    for unit in ("program", "configuration"):
+        known = application.path_of(unit)
+        if known is not None and Path(path).resolve() == known.resolve():
+            return unit
+    return None
+
+
+def _ending(result: RunResult) -> str:
+    stop = result.stop
+    line = f"{stop.reason.value} after {stop.time_ms} ms"
+    if stop.line is not None:
+        line += f" at {stop.unit} line {stop.line}: {stop.statement}"
+    if stop.message:
+        line += f" — {stop.message}"
+    return line + "\n"

@@ -1,0 +1,85 @@
+"""Where a run stops: the points of its timeline, and the plans that pick one forward or backward.
+
+A *point* is one attempt of the interpreter to run a statement, numbered from
+0 in the order they happen. The simulator is deterministic, so the number
+names the same moment in every run of the same application with the same
+interventions: stepping back to point ``k`` is running again from the start
+and stopping at ``k`` (``history.py``). A statement that blocks (``PAUSE``,
+``WAIT``, a full move buffer) is attempted again on later ticks; those
+attempts are *resumed* points, where stepping never stops, so ``next`` over a
+``PAUSE`` stops after it has passed.
+
+Forward plans stop at the first point they accept; backward plans are
+resolved in two passes: a scan of a re-run finds the last accepted point
+before the current one, and a second re-run stops there.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+
+@dataclass(frozen=True, slots=True)
+class Point:
+    count: int  # attempts before this one, in this run
+    pc: int  # the operation about to run
+    depth: int  # GOSUB and event-handler frames open
+    resumed: bool  # a blocked statement tried again (not a stop for stepping or breakpoints)
+
+
+@dataclass(frozen=True, slots=True)
+class Forward:
+    """Run on until ``accepts`` takes a point after ``after`` (or a breakpoint, or a pause request, stops it)."""
+
+    after: int
+    accepts: Callable[[Point], bool]
+    reason: str = "step"
+    breakpoints: bool = True  # whether breakpoints met on the way stop it
+
+
+@dataclass(slots=True)
+class Scan:
+    """A re-run that stops nowhere: it finds the last point before ``until`` that ``wanted`` takes (given the
+    point and whether a breakpoint hits there)."""
+
+    until: int
+    wanted: Callable[[Point, bool], bool]
+    reason: str
+    found: int | None = field(default=None)
+
+
+def cont(after: int) -> Forward:
+    return Forward(after, lambda point: False)
+
+
+def entry() -> Forward:
+    return Forward(-1, lambda point: point.count == 0, reason="entry")
+
+
+def step_in(at: Point) -> Forward:
+    return Forward(at.count, lambda point: not point.resumed)
+
+
+def step_over(at: Point) -> Forward:
+    """``next``: the next statement in this frame or a caller's; GOSUBs and event handlers run through."""
+    return Forward(at.count, lambda point: not point.resumed and point.depth <= at.depth)
+
+
+def step_out(at: Point) -> Forward:
+    return Forward(at.count, lambda point: not point.resumed and point.depth < at.depth)
+
+
+def reach(count: int, reason: str) -> Forward:
+    """The second pass of a backward plan: stop at point ``count`` and nowhere before."""
+    return Forward(-1, lambda point: point.count == count, reason=reason, breakpoints=False)
+
+
+def step_back(at: Point) -> Scan:
+    """The reverse of ``next``: the statement before, in this frame or a caller's."""
+    return Scan(at.count, lambda point, hit: not point.resumed and point.depth <= at.depth, "step")
+
+
+def reverse_continue(at: Point) -> Scan:
+    """Back to the last breakpoint hit before ``at``; to the start when there is none."""
+    return Scan(at.count, lambda point, hit: hit, "breakpoint")

@@ -1,0 +1,111 @@
+"""A small DAP client for the tests: ``mint-dap`` in a subprocess, spoken to over its real stdin and stdout.
+
+Every message the adapter sends is checked against the protocol's schema as it
+arrives; ``DapClient.close`` fails the test if one did not conform.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import queue
+import subprocess
+import sys
+import threading
+from pathlib import Path
+from typing import Any
+
+from mintlang.runtime.debugger.framing import read_message, write_message
+from tests.debugger.schema import problems
+
+TIMEOUT_S = 30.0
+
+
+def adapter_command() -> list[str]:
+    """The installed ``mint-dap`` script, beside the interpreter running the tests."""
+    script = Path(sys.executable).with_name("mint-dap")
+    return (
+        [str(script)]
+        if script.exists()
+        else [sys.executable, "-c", "from mintlang.runtime.debugger.cli import main; main()"]
+    )
+
+
+class DapClient:
+    def __init__(self, *arguments: str) -> None:
+        self.process = subprocess.Popen(
+            [*adapter_command(), *arguments], stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE
+        )
+        self.sequence = 0
+        self.messages: queue.Queue[dict[str, Any]] = queue.Queue()
+        self.events: list[dict[str, Any]] = []  # every event, in order
+        self.nonconforming: list[str] = []
+        self._reader = threading.Thread(target=self._read, daemon=True)
+        self._reader.start()
+
+    def _read(self) -> None:
+        assert self.process.stdout is not None
+        while (message := read_message(self.process.stdout)) is not None:
+            self.nonconforming.extend(problems(message))
+            self.messages.put(message)
+
+    def send(self, command: str, arguments: dict[str, Any] | None = None) -> int:
+        assert self.process.stdin is not None
+        self.sequence += 1
+        request: dict[str, Any] = {"seq": self.sequence, "type": "request", "command": command}
+        if arguments is not None:
+            request["arguments"] = arguments
+        write_message(self.process.stdin, request)
+        return self.sequence
+
+    def request(self, command: str, arguments: dict[str, Any] | None = None) -> dict[str, Any]:
+        """The response to ``command`` (success or not); events that come first are kept in ``events``."""
+        sequence = self.send(command, arguments)
+        while True:
+            message = self._next()
+            if message["type"] == "response" and message["request_seq"] == sequence:
+                return message
+
+    def body(self, command: str, arguments: dict[str, Any] | None = None) -> dict[str, Any]:
+        """The body of a response that must succeed."""
+        response = self.request(command, arguments)
+        assert response["success"], response.get("message")
+        return response.get("body", {})
+
+    def event(self, name: str) -> dict[str, Any]:
+        """The next event called ``name`` not yet taken."""
+        for index, event in enumerate(self.events):
+            if event["event"] == name:
+                return self.events.pop(index)
+        while True:
+            message = self._next()
+            if message["type"] == "event" and message["event"] == name:
+                self.events.remove(message)
+                return message
+
+    def _next(self) -> dict[str, Any]:
+        try:
+            message = self.messages.get(timeout=TIMEOUT_S)
+        except queue.Empty:
+            raise AssertionError(f"mint-dap sent nothing for {TIMEOUT_S} s") from None
+        if message["type"] == "event":
+            self.events.append(message)
+        return message
+
+    def output(self) -> str:
+        """What the program printed, from the output events received so far."""
+        return "".join(
+            e["body"]["output"] for e in self.events if e["event"] == "output" and e["body"].get("category") == "stdout"
+        )
+
+    def close(self) -> str:
+        """End the session; the adapter's stderr. Fails if a message did not conform to the schema."""
+        if self.process.poll() is None:
+            with contextlib.suppress(AssertionError, BrokenPipeError):
+                self.request("disconnect", {"terminateDebuggee": True})
+        try:
+            _, stderr = self.process.communicate(timeout=TIMEOUT_S)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+            _, stderr = self.process.communicate()
+        assert not self.nonconforming, self.nonconforming
+        return stderr.decode("utf-8", "replace")

@@ -19,7 +19,7 @@ from mintlang.runtime.clock import Clock
 from mintlang.runtime.comms.packets import HostEndpoint
 from mintlang.runtime.comms.server import HostPortServer
 from mintlang.runtime.dialects import semantics
-from mintlang.runtime.dialects.mintmt import contouring, identifiers, outputs, triggering
+from mintlang.runtime.dialects.mintmt import contouring, feedrate, identifiers, outputs, triggering
 from mintlang.runtime.dialects.mintmt.buffer_low import BufferLowEvent
 from mintlang.runtime.dialects.v3 import machine as v3_machine
 from mintlang.runtime.events import MINTDRIVE, NEXTMOVE, NEXTMOVE_MINTMT, EventClass, Events
@@ -122,6 +122,7 @@ def build_controller(
         contouring.install(table)
         outputs.install(table)
         identifiers.install(table, motion)
+        feedrate.install(table, motion)
         buffer_low = BufferLowEvent(motion, events)
         buffer_low.register(table)
         monitors.append(buffer_low)

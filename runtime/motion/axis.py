@@ -91,6 +91,8 @@ class Axis:
         self.jog_speed = 0.0  # JOG as last written, counts/s
         self.contour_mode = 0  # CONTOURMODE, stored with each path move as it is loaded (MP-32)
         self.contour_angle = 15.0  # CONTOURANGLE in degrees, read when segments join (MP-33)
+        self.store_feedrate = False  # FEEDRATEMODE feedrate mode: each path move keeps the SPEED it was loaded at
+        self.speed_override = 1.0  # FEEDRATEOVERRIDE / 100: scales SPEED for the moves that do not keep one
         self.position_offset = 0.0  # POS = (measured - offset) / SCALE
         self.encoder_offset = 0.0
         self.measured = 0
@@ -144,6 +146,14 @@ class Axis:
             )
 
     # ------------------------------------------------------------------ state
+
+    def slew_speed(self) -> float:
+        """The slew speed, counts/s, of a move this axis is master of and that keeps no feedrate of its own."""
+        return self.parameters["SPEED"] * self.speed_override
+
+    def loaded_feedrate(self) -> float | None:
+        """The feedrate a path move loaded now keeps (FEEDRATEMODE's feedrate mode), counts/s; None in speed mode."""
+        return self.parameters["SPEED"] if self.store_feedrate else None
 
     def busy(self) -> bool:
         return self.move is not None or bool(self.buffer) or bool(self.pending_mode)

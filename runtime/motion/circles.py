@@ -49,7 +49,10 @@ def circle(motion: Motion, *, relative: bool) -> Callable[[Channels | None, Valu
         else:
             centre = (axes[0].absolute(c0 * axes[0].scale), axes[1].absolute(c1 * axes[1].scale))
         master = axes[0]
-        segment = PathSegment(MD_CIRCULAR, (master, axes[1]), master.contour_mode, arc=Arc(centre, degrees))
+        arc = Arc(centre, degrees)
+        segment = PathSegment(
+            MD_CIRCULAR, (master, axes[1]), master.contour_mode, arc=arc, feedrate=master.loaded_feedrate()
+        )
         for axis, target in zip(axes, segment.shape(start).targets, strict=True):
             axis.target = target
         request = Request(MD_CIRCULAR, segment.numbers, segment, ident=master.load_ident)

@@ -146,7 +146,7 @@ class Motion:
     def _load_line(self, master: Axis, axes: tuple[Axis, ...], targets: tuple[float, ...], mode: int) -> None:
         for axis, target in zip(axes, targets, strict=True):
             axis.target = target
-        segment = PathSegment(mode, axes, master.contour_mode, targets)
+        segment = PathSegment(mode, axes, master.contour_mode, targets, feedrate=master.loaded_feedrate())
         request = Request(mode, segment.numbers, segment, targets, ident=master.load_ident)
         for axis in axes:
             axis.buffer.append(request)
@@ -422,17 +422,18 @@ class Motion:
             if name == "SOFTLIMITMODE" and value == SMART_SOFT_LIMITS:
                 raise NotSimulated("SOFTLIMITMODE", "smart mode 4")
             axis.set(name, value)
-            if name in _PROFILE_RATES and axis.move is not None and axis.move.axes[0] == axis.number:
-                self._replan(axis)
+            if name in _PROFILE_RATES:
+                self.rates_changed(axis)
 
         return write
 
-    def _replan(self, master: Axis) -> None:
-        """A rate of the master changed: every axis of its move continues on the re-planned move (MP-10)."""
+    def rates_changed(self, master: Axis) -> None:
+        """A rate of ``master`` changed: every axis of the move it leads continues on the re-planned move (MP-10)."""
         old = master.move
-        assert old is not None
+        if old is None or old.axes[0] != master.number:
+            return
         p = master.parameters
-        new = old.replan(next_profiler_tick(self.clock.now), p["SPEED"], p["ACCEL"], p["DECEL"], p["SRAMP"])
+        new = old.replan(next_profiler_tick(self.clock.now), master.slew_speed(), p["ACCEL"], p["DECEL"], p["SRAMP"])
         for number in old.axes:
             if self.axes[number].move is old:
                 self.axes[number].move = new

@@ -44,7 +44,8 @@ class IncrementalMove:
     def _plan(self, tick: int, s: float, velocity: float) -> Plan:
         p = self.axis.parameters
         distance = self.target - self.origin - s
-        return Plan(plan_move(distance, p["SPEED"], p["ACCEL"], p["DECEL"], velocity, sramp=p["SRAMP"]), tick, s)
+        speed = self.axis.slew_speed()
+        return Plan(plan_move(distance, speed, p["ACCEL"], p["DECEL"], velocity, sramp=p["SRAMP"]), tick, s)
 
     def retarget(self, target: float, tick: int) -> None:
         """A new end point from ``tick`` on, reached from the present position and velocity."""

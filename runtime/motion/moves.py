@@ -101,6 +101,7 @@ class PlannedMove:
     targets: tuple[float, ...] = ()  # end demands of a positional move (exact, free of rounding)
     buffered: bool = True
     live: bool = False
+    feedrate: float | None = None  # the slew speed it keeps (FEEDRATEMODE), counts/s; None: the master's in force
     end: int = field(default=NEVER)
 
     def __post_init__(self) -> None:
@@ -140,5 +141,8 @@ class PlannedMove:
                 return self  # a stopping ramp keeps its rate
             ramp = plan_velocity(velocity, self.profile.final_velocity, accel, decel)
             return PlannedMove(self.mode, self.axes, self.geometry, ramp, tick, s, buffered=False)
-        profile = plan_move(self.length - s, speed, accel, decel, velocity, sramp=sramp)
-        return PlannedMove(self.mode, self.axes, self.geometry, profile, tick, s, self.length, self.targets)
+        slew = speed if self.feedrate is None else self.feedrate
+        profile = plan_move(self.length - s, slew, accel, decel, velocity, sramp=sramp)
+        return PlannedMove(
+            self.mode, self.axes, self.geometry, profile, tick, s, self.length, self.targets, feedrate=self.feedrate
+        )

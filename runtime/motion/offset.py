@@ -57,7 +57,7 @@ def _starter(axis: Axis, distance: float) -> Callable[[int], PlannedMove | None]
         if distance == 0.0:
             return None
         p = axis.parameters
-        profile = plan_move(abs(distance), p["SPEED"], p["ACCEL"], p["DECEL"], sramp=p["SRAMP"])
+        profile = plan_move(abs(distance), axis.slew_speed(), p["ACCEL"], p["DECEL"], sramp=p["SRAMP"])
         geometry = Geometry((axis.hold,), (1.0 if distance > 0.0 else -1.0,))
         target = (axis.hold + distance,)
         return PlannedMove(MD_OFFSET, (axis.number,), geometry, profile, tick, 0.0, abs(distance), target)
@@ -80,7 +80,7 @@ def _superimpose(
         if distance == 0.0 or axis.move is not move:
             return  # nothing to add, or the FOLLOW ended before GO
         p = axis.parameters
-        profile = plan_move(abs(distance), p["SPEED"], p["ACCEL"], p["DECEL"], sramp=p["SRAMP"])
+        profile = plan_move(abs(distance), axis.slew_speed(), p["ACCEL"], p["DECEL"], sramp=p["SRAMP"])
         move.offsets.running = Offset(profile, tick, 1.0 if distance > 0.0 else -1.0)
         move.mode |= MD_OFFSET
         return

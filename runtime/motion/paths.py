@@ -62,6 +62,10 @@ class PathSegment:
     contour: int  # CONTOURMODE of the master when it was loaded: decides whether its end is a stop point
     targets: tuple[float, ...] = ()  # a line's end
     arc: Arc | None = None
+    feedrate: float | None = None  # the slew speed it keeps (FEEDRATEMODE), counts/s; None: the master's when it runs
+
+    def slew_speed(self) -> float:
+        return self.axes[0].slew_speed() if self.feedrate is None else self.feedrate
 
     @property
     def numbers(self) -> tuple[int, ...]:
@@ -89,8 +93,18 @@ class PathSegment:
         if self.contour & CONTOUR_ON:
             return Chain(self, shape, tick)
         p = self.axes[0].parameters
-        profile = plan_move(shape.length, p["SPEED"], p["ACCEL"], p["DECEL"], sramp=p["SRAMP"])
-        return PlannedMove(self.mode, self.numbers, shape.geometry, profile, tick, 0.0, shape.length, shape.targets)
+        profile = plan_move(shape.length, self.slew_speed(), p["ACCEL"], p["DECEL"], sramp=p["SRAMP"])
+        return PlannedMove(
+            self.mode,
+            self.numbers,
+            shape.geometry,
+            profile,
+            tick,
+            0.0,
+            shape.length,
+            shape.targets,
+            feedrate=self.feedrate,
+        )
 
 
 @dataclass(frozen=True, slots=True)
@@ -170,10 +184,27 @@ class Chain:
         return last.s_start + last.shape.length
 
     def _plan(self, tick: int, s: float, velocity: float) -> None:
-        p = self.members[0].parameters
-        profile = plan_move(self.total - s, p["SPEED"], p["ACCEL"], p["DECEL"], velocity, sramp=p["SRAMP"])
+        master = self.members[0]
+        p = master.parameters
+        speed = self._speed(master.slew_speed())
+        self._lay(tick, s, velocity, speed=speed, accel=p["ACCEL"], decel=p["DECEL"], sramp=p["SRAMP"])
+
+    def _speed(self, speed: float) -> float:
+        """The path speed of the segment the path is on: its own feedrate, or ``speed`` where it keeps none."""
+        feedrate = self.pieces[self.current].segment.feedrate
+        return speed if feedrate is None else feedrate
+
+    def _lay(
+        self, tick: int, s: float, velocity: float, *, speed: float, accel: float, decel: float, sramp: float
+    ) -> None:
+        """Plan the rest of the path from ``s`` at ``velocity`` with these rates, from ``tick`` on."""
+        profile = plan_move(self.total - s, speed, accel, decel, velocity, sramp=sramp)
         self.timing.replace(Plan(profile, tick, s))
         self.end = self.timing.plan.end
+
+    def _feedrates_ahead(self) -> bool:
+        """A joined segment still to come keeps a feedrate of its own: the path changes speed when it gets there."""
+        return any(piece.segment.feedrate is not None for piece in self.pieces[self.current + 1 :])
 
     # ------------------------------------------------------------ Move protocol
 
@@ -201,8 +232,10 @@ class Chain:
         return v * piece.shape.geometry.slope(index, s - piece.s_start)
 
     def profiler(self, tick: int) -> None:
-        """Take the segments the path has reached out of the buffers, then look ahead for more."""
-        s, _ = self.timing.sample(tick)
+        """Take the segments the path has reached out of the buffers, then look ahead for more; a segment that
+        keeps another feedrate than the one before it changes the path speed from the tick it is reached (MT-15)."""
+        s, v = self.timing.sample(tick)
+        speed = self._speed(self.members[0].slew_speed())
         while self.current + 1 < len(self.pieces) and s >= self.pieces[self.current + 1].s_start:
             self.current += 1
             self.mode = self.pieces[self.current].segment.mode
@@ -211,6 +244,8 @@ class Chain:
                 if self.buffered and axis.buffer and axis.buffer[0].build is segment:
                     axis.buffer.popleft()
                     axis.triggered -= 1
+        if self._speed(self.members[0].slew_speed()) != speed and tick < self.end:
+            self._plan(tick, s, v)
         self._extend(tick)
 
     def _extend(self, tick: int) -> None:
@@ -222,7 +257,7 @@ class Chain:
         remaining = self.total - s
         if v > 0.0 and remaining <= v * v / (2.0 * braking_rate) + 1e-9 * (1.0 + self.total):
             self.extendable = False  # the final deceleration has begun (MP-34): no more joining
-            self.live = False
+            self.live = self._feedrates_ahead()  # a speed still to change needs its tick
             return
         joined = False
         while (successor := self._joinable()) is not None:
@@ -271,7 +306,5 @@ class Chain:
         if tick >= self.end or not self.buffered:
             return self
         s, v = self.timing.sample(tick)
-        profile = plan_move(self.total - s, speed, accel, decel, v, sramp=sramp)
-        self.timing.replace(Plan(profile, tick, s))
-        self.end = self.timing.plan.end
+        self._lay(tick, s, v, speed=self._speed(speed), accel=accel, decel=decel, sramp=sramp)
         return self

@@ -92,10 +92,14 @@ class StopInputs:
         if not all(member.move in (ramp, None) for member in members):
             return  # something else (a STOP, an error) took over the axes meanwhile
         s, velocity = ramp.path(tick)
-        p = self.motion.axes[move.axes[0]].parameters
+        master = self.motion.axes[move.axes[0]]
+        p = master.parameters
         if move.length is not None:
-            profile = plan_move(move.length - s, p["SPEED"], p["ACCEL"], p["DECEL"], velocity, sramp=p["SRAMP"])
-            resumed = PlannedMove(move.mode, move.axes, move.geometry, profile, tick, s, move.length, move.targets)
+            speed = master.slew_speed() if move.feedrate is None else move.feedrate
+            profile = plan_move(move.length - s, speed, p["ACCEL"], p["DECEL"], velocity, sramp=p["SRAMP"])
+            resumed = PlannedMove(
+                move.mode, move.axes, move.geometry, profile, tick, s, move.length, move.targets, feedrate=move.feedrate
+            )
         else:
             profile = plan_velocity(velocity, move.profile.final_velocity, p["ACCEL"], p["DECEL"])
             resumed = PlannedMove(move.mode, move.axes, move.geometry, profile, tick, s, buffered=False)

@@ -1,0 +1,51 @@
+"""FEEDRATE, FEEDRATEMODE and FEEDRATEOVERRIDE: a slew speed kept with each move (004:250-280, MT-15).
+
+The v4 guide gives the model (000:16186-16230): SPEED and FEEDRATE are one
+slew speed written two ways. In speed mode (``FEEDRATEMODE`` 0, at power-up)
+every move runs at the master's SPEED in force, and a change reaches the move
+in progress; in feedrate mode (``_frFEEDRATE``) each MOVE, VECTOR or CIRCLE
+keeps the speed in force when it was loaded. ``FEEDRATEOVERRIDE`` is a
+percentage of SPEED for the moves that keep none. The other bits of
+``FEEDRATEMODE`` (accelerations, jerks, fast traverse) are named by the note
+without their values: they are not simulated.
+"""
+
+from __future__ import annotations
+
+from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.keywords import KeywordTable, per_channel
+from mintlang.runtime.motion.commands import Motion
+from mintlang.runtime.ranges import OUT_OF_RANGE
+
+SPEED_MODE = 0
+FEEDRATE_MODE = 1  # _frFEEDRATE (MT-3)
+
+
+def install(table: KeywordTable, motion: Motion) -> None:
+    speed = table.get("SPEED")
+    assert speed is not None and speed.read is not None and speed.write is not None, "the motion registers SPEED"
+    table.register("FEEDRATE", read=speed.read, write=speed.write)
+
+    def read_mode(channel: int | None) -> float:
+        return float(FEEDRATE_MODE if motion.axis(channel).store_feedrate else SPEED_MODE)
+
+    def write_mode(channel: int | None, value: float) -> None:
+        axis = motion.axis(channel)
+        if value not in (SPEED_MODE, FEEDRATE_MODE):
+            if value != int(value) or value < 0:
+                raise MintError(OUT_OF_RANGE, axis.number, "FEEDRATEMODE is a set of bits: a whole number")
+            raise NotSimulated("FEEDRATEMODE", "bits but _frFEEDRATE (the note gives their values for none)")
+        axis.store_feedrate = value == FEEDRATE_MODE
+
+    def read_override(channel: int | None) -> float:
+        return motion.axis(channel).speed_override * 100.0
+
+    def write_override(channel: int | None, value: float) -> None:
+        axis = motion.axis(channel)
+        if not value > 0.0:
+            raise MintError(OUT_OF_RANGE, axis.number, "FEEDRATEOVERRIDE is a percentage above 0")
+        axis.speed_override = value / 100.0
+        motion.rates_changed(axis)
+
+    table.register("FEEDRATEMODE", read=read_mode, write=per_channel(write_mode))
+    table.register("FEEDRATEOVERRIDE", read=read_override, write=per_channel(write_override))

@@ -5,9 +5,11 @@ holding a statement (a comment, a label or a blank line runs nothing): it
 stops each time that first statement is about to run, so once per pass over
 a line like ``a = 1 : b = 2``, and not again while a blocked statement waits. Its condition is a Mint
 expression (true when non-zero); its hit condition counts the times the
-condition held, counted afresh in every run so a re-run agrees with the first:
-``5`` or ``== 5`` stops at the fifth, ``>= 5`` (or ``> 4``) from the fifth on,
-``< 3`` at the first two, ``% 3`` at every third. A log message prints
+condition held since it was set, or since the run began again (stepping back
+re-runs from the start, and counts from there): ``5`` or ``== 5`` stops at the
+fifth, ``>= 5`` (or ``> 4``) from the fifth on, ``< 3`` at the first two, ``% 3``
+at every third. The editor sends all of a file's breakpoints whenever one
+changes: those it sends unchanged keep their count. A log message prints
 instead of stopping, each ``{expression}`` in it replaced by its value.
 """
 
@@ -89,6 +91,7 @@ class Breakpoints:
     def replace(self, unit: str, requests: Iterable[Mapping[str, Any]]) -> list[Breakpoint]:
         """The breakpoints of one file, as ``setBreakpoints`` gives them all at once."""
         lines = sorted(line for found_unit, line in self.first_of_line if found_unit == unit)
+        counted = {_key(old): old.hits for old in self.by_unit.get(unit, [])}
         placed = []
         for request in requests:
             requested = int(request.get("line", 0))
@@ -98,6 +101,7 @@ class Breakpoints:
             breakpoint_.condition = request.get("condition") or None
             breakpoint_.hit_condition = request.get("hitCondition") or None
             breakpoint_.log_message = request.get("logMessage") or None
+            breakpoint_.hits = counted.get(_key(breakpoint_), 0)
             if line is None:
                 breakpoint_.problem = f"no statement at or after line {requested}"
             elif breakpoint_.hit_condition is not None:
@@ -145,6 +149,11 @@ class Breakpoints:
         if breakpoint_.log_message is not None and description is None:
             return Decision(stop=False, log=interpolate(breakpoint_.log_message, evaluator))
         return Decision(stop=True, description=description)
+
+
+def _key(breakpoint_: Breakpoint) -> tuple[int | None, str | None, str | None, str | None]:
+    """What makes two breakpoints of a file the same one, sent again."""
+    return breakpoint_.line, breakpoint_.condition, breakpoint_.hit_condition, breakpoint_.log_message
 
 
 def interpolate(message: str, evaluator: Evaluator) -> str:

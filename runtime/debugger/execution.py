@@ -26,7 +26,7 @@ from mintlang.runtime.errors import MintError
 from mintlang.runtime.interpreter.vm import Operation, StopReason
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import ScenarioFileError
-from mintlang.runtime.simulation import Interrupt, Limits
+from mintlang.runtime.simulation import Interrupt, Limits, Stop
 
 ERRORS = "errors"  # exception filter: stop at every run-time error, even one #ONERROR handles
 UNHANDLED = "unhandled"  # exception filter: stop where an error ends the run
@@ -71,6 +71,7 @@ class Execution:
         self.controller: Controller | None = None
         self.evaluator: Evaluator | None = None
         self.point: Point | None = None  # where the run is paused; None while it runs
+        self.ending: Stop | None = None  # how the run ended, while paused where it did
         self._condition = threading.Condition()
         self._command: Command | None = None
         self._pause_requested = False
@@ -249,12 +250,15 @@ class Execution:
             return
         vm = controller.vm
         site = vm.stop_site
-        pc = vm.sites.index(site) if site is not None and site in vm.sites else vm.pc
+        pc = vm.sites.index(site) if site is not None and site in vm.sites else len(vm.sites)
         point = Point(self._count, pc, len(vm.frames), resumed=False)
+        self.ending = result.stop
         try:
             self._stop(point, "exception", result.stop.message)
         except _Abandoned:
             return
+        finally:
+            self.ending = None
 
     # ------------------------------------------------------------------- output
 

@@ -248,17 +248,27 @@ class Session:
         frames = []
         pc = execution.point.pc
         for depth, frame in enumerate([*reversed(vm.frames), None]):
-            site = vm.sites[pc] if pc < len(vm.sites) else (vm.sites[-1] if vm.sites else None)
-            frames.append(self._frame(depth, site, pc, controller))
+            frames.append(self._frame(depth, self._site(pc, execution), pc, controller))
             if frame is None:
                 break
             pc = (
                 frame.return_pc if frame.rank is not None else frame.return_pc - 1
-            )  # a handler returns to where it interrupted
+            )  # a handler returns where it broke in
         start = int(arguments.get("startFrame", 0) or 0)
         levels = int(arguments.get("levels", 0) or 0)
         shown_frames = frames[start : start + levels] if levels > 0 else frames[start:]
         return {"stackFrames": shown_frames, "totalFrames": len(frames)}
+
+    @staticmethod
+    def _site(pc: int, execution: Execution) -> Site | None:
+        """The statement at ``pc``; past the last one, where the run ended (a file the compiler refused)."""
+        sites = execution.controller.vm.sites if execution.controller is not None else []
+        if pc < len(sites):
+            return sites[pc]
+        ending = execution.ending
+        if ending is not None and ending.unit is not None and ending.line is not None:
+            return Site(ending.unit, ending.line, ending.statement or "")
+        return sites[-1] if sites else None
 
     def _frame(self, depth: int, site: Site | None, pc: int, controller: Controller) -> dict[str, Any]:
         assert self.application is not None

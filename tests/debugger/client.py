@@ -39,6 +39,7 @@ class DapClient:
         self.messages: queue.Queue[dict[str, Any]] = queue.Queue()
         self.events: list[dict[str, Any]] = []  # every event, in order
         self.nonconforming: list[str] = []
+        self.program = Path()  # the program launched, once it is
         self._reader = threading.Thread(target=self._read, daemon=True)
         self._reader.start()
 
@@ -73,12 +74,16 @@ class DapClient:
 
     def event(self, name: str) -> dict[str, Any]:
         """The next event called ``name`` not yet taken."""
+        return self.event_of(name)
+
+    def event_of(self, *names: str) -> dict[str, Any]:
+        """The next event called one of ``names`` not yet taken."""
         for index, event in enumerate(self.events):
-            if event["event"] == name:
+            if event["event"] in names:
                 return self.events.pop(index)
         while True:
             message = self._next()
-            if message["type"] == "event" and message["event"] == name:
+            if message["type"] == "event" and message["event"] in names:
                 self.events.remove(message)
                 return message
 
@@ -90,6 +95,44 @@ class DapClient:
         if message["type"] == "event":
             self.events.append(message)
         return message
+
+    # ------------------------------------------------------------ shorthands
+
+    def stopped(self) -> dict[str, Any]:
+        """The body of the next ``stopped`` event."""
+        return self.event("stopped")["body"]
+
+    def line(self) -> int:
+        """The line the paused program stands at (its innermost frame)."""
+        return self.frames()[0]["line"]
+
+    def frames(self) -> list[dict[str, Any]]:
+        return self.body("stackTrace", {"threadId": 1})["stackFrames"]
+
+    def scope(self, name: str) -> int:
+        scopes = self.body("scopes", {"frameId": 1})["scopes"]
+        return next(scope["variablesReference"] for scope in scopes if scope["name"] == name)
+
+    def variables(self, reference: int, **paging: int) -> dict[str, str]:
+        listed = self.body("variables", {"variablesReference": reference, **paging})["variables"]
+        return {variable["name"]: variable["value"] for variable in listed}
+
+    def values(self) -> dict[str, str]:
+        """The program's variables, by name, as the editor shows them."""
+        return self.variables(self.scope("Variables"))
+
+    def evaluate(self, expression: str) -> str:
+        return self.body("evaluate", {"expression": expression, "context": "watch", "frameId": 1})["result"]
+
+    def step(self, command: str) -> dict[str, Any]:
+        """Send a stepping command (next, stepIn, stepBack …) and wait for the stop it leads to."""
+        self.body(command, {"threadId": 1})
+        return self.stopped()
+
+    def set_breakpoints(self, *breakpoints: int | dict[str, Any]) -> list[dict[str, Any]]:
+        wanted = [{"line": item} if isinstance(item, int) else item for item in breakpoints]
+        arguments = {"source": {"path": str(self.program)}, "breakpoints": wanted}
+        return self.body("setBreakpoints", arguments)["breakpoints"]
 
     def output(self) -> str:
         """What the program printed, from the output events received so far."""

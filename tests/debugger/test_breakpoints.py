@@ -1,0 +1,111 @@
+"""Line breakpoints: where they bind, conditions, hit counts and log messages."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.debugger.conftest import Debug
+
+PROGRAM = """\
+DIM i
+DIM s
+
+REM the loop
+FOR i = 1 TO 4
+  s = s + i : PRINT s
+NEXT
+END
+"""
+
+
+def test_a_breakpoint_on_a_line_without_a_statement_binds_to_the_next_that_has_one(debug: Debug) -> None:
+    client = debug(PROGRAM)
+    placed = client.set_breakpoints(3, 4, 9)
+    assert [(item["verified"], item["line"]) for item in placed] == [(True, 5), (True, 5), (False, 9)]
+    assert "no statement" in placed[2]["message"]
+
+
+def test_a_breakpoint_stops_once_per_pass_over_its_line(debug: Debug) -> None:
+    client = debug(PROGRAM, breakpoints=(6,))
+    hits = []
+    for _ in range(4):
+        assert client.stopped()["reason"] == "breakpoint"
+        hits.append(client.values()["s"])
+        client.body("continue", {"threadId": 1})
+    client.event("terminated")
+    assert hits == ["0", "1", "3", "6"]
+
+
+def test_a_conditional_breakpoint_stops_only_where_its_mint_expression_is_true(debug: Debug) -> None:
+    client = debug(PROGRAM, breakpoints=({"line": 6, "condition": "i = 3 OR s > 100"},))
+    client.stopped()
+    assert client.values() == {"i": "3", "s": "3"}
+    client.body("continue", {"threadId": 1})
+    client.event("terminated")
+
+
+HIT_CONDITIONS = [("3", ["3"]), ("== 2", ["2"]), (">= 3", ["3", "4"]), ("% 2", ["2", "4"]), ("< 2", ["1"])]
+
+
+@pytest.mark.parametrize(("hit_condition", "stops"), HIT_CONDITIONS)
+def test_a_hit_condition_stops_at_the_hits_its_count_picks(debug: Debug, hit_condition: str, stops: list[str]) -> None:
+    client = debug(PROGRAM, breakpoints=({"line": 6, "hitCondition": hit_condition},))
+    seen = []
+    while client.event_of("stopped", "terminated")["event"] == "stopped":
+        seen.append(client.values()["i"])
+        client.body("continue", {"threadId": 1})
+    assert seen == stops
+
+
+def test_the_editor_resending_a_files_breakpoints_keeps_the_hits_counted_so_far(debug: Debug) -> None:
+    client = debug(PROGRAM, breakpoints=({"line": 6, "hitCondition": ">= 2"},))
+    client.stopped()
+    assert client.values()["i"] == "2"
+    client.set_breakpoints({"line": 6, "hitCondition": ">= 2"}, 8)
+    client.step("continue")
+    assert client.values()["i"] == "3"
+
+
+def test_a_hit_condition_it_cannot_read_leaves_the_breakpoint_unverified(debug: Debug) -> None:
+    client = debug(PROGRAM)
+    (placed,) = client.set_breakpoints({"line": 6, "hitCondition": "often"})
+    assert not placed["verified"]
+    assert "hit condition" in placed["message"]
+
+
+def test_a_log_message_prints_its_values_and_does_not_stop(debug: Debug) -> None:
+    client = debug(PROGRAM, breakpoints=({"line": 6, "logMessage": "i={i}, s doubled={s * 2}"},))
+    client.event("terminated")
+    logged = [body["output"] for body in client.outputs() if body["category"] == "console"]
+    assert logged[:4] == ["i=1, s doubled=0\n", "i=2, s doubled=2\n", "i=3, s doubled=6\n", "i=4, s doubled=12\n"]
+    assert client.output().split() == ["1", "3", "6", "10"]
+
+
+def test_a_condition_that_fails_to_evaluate_stops_and_says_why(debug: Debug) -> None:
+    client = debug(PROGRAM, breakpoints=({"line": 6, "condition": "nosuch > 1"},))
+    stop = client.stopped()
+    assert stop["reason"] == "breakpoint"
+    assert "nosuch is not a variable of the program" in stop["description"]
+
+
+def test_breakpoints_in_a_file_outside_the_application_are_refused(debug: Debug, tmp_path) -> None:
+    client = debug(PROGRAM)
+    arguments = {"source": {"path": str(tmp_path / "other.mnt")}, "breakpoints": [{"line": 1}]}
+    (placed,) = client.body("setBreakpoints", arguments)["breakpoints"]
+    assert not placed["verified"]
+
+
+def test_breakpoints_in_the_configuration_file_stop_there_before_the_program_runs(debug: Debug, tmp_path) -> None:
+    configuration = tmp_path / "program.cfg"
+    configuration.write_text("DIM feed\nfeed = 25\n", encoding="utf-8")
+    client = debug("DIM twice\ntwice = feed * 2\n", stopOnEntry=True)
+    client.stopped()
+    assert client.frames()[0]["source"]["path"] == str(configuration.resolve())
+    arguments = {"source": {"path": str(configuration)}, "breakpoints": [{"line": 2}]}
+    client.body("setBreakpoints", arguments)
+    client.step("continue")
+    assert client.frames()[0]["source"]["path"] == str(configuration.resolve())
+    assert client.line() == 2
+    client.set_breakpoints(2)
+    client.step("continue")
+    assert client.values() == {"feed": "25", "twice": "0"}

@@ -18,17 +18,22 @@ for that application only and goes on with the others.
 
 from __future__ import annotations
 
-from mintlang.migrate.api import DEFAULT_CONTROLLER, UnknownRule, migrate, rules, rules_at, select
-from mintlang.migrate.model import (
-    Change,
-    ManualItem,
-    MigrationFailed,
-    MigrationResult,
-    Phase,
-    RuleClass,
-    RuleInfo,
-)
-from mintlang.migrate.recognise import shows_v4
+from typing import TYPE_CHECKING
+
+from mintlang.lazy import import_when_used
+
+if TYPE_CHECKING:
+    from mintlang.migrate.api import DEFAULT_CONTROLLER, UnknownRule, migrate, rules, rules_at, select
+    from mintlang.migrate.model import (
+        Change,
+        ManualItem,
+        MigrationFailed,
+        MigrationResult,
+        Phase,
+        RuleClass,
+        RuleInfo,
+    )
+    from mintlang.migrate.recognise import shows_v4
 
 __all__ = [
     "DEFAULT_CONTROLLER",
@@ -46,3 +51,20 @@ __all__ = [
     "select",
     "shows_v4",
 ]
+
+
+# Imported when first used: ``mint-migrate --help`` imports ``mintlang.migrate.cli``, and with it this
+# package, without the rules and the parser.
+import_when_used(
+    __name__,
+    {
+        **dict.fromkeys(
+            ["DEFAULT_CONTROLLER", "UnknownRule", "migrate", "rules", "rules_at", "select"], "mintlang.migrate.api"
+        ),
+        **dict.fromkeys(
+            ["Change", "ManualItem", "MigrationFailed", "MigrationResult", "Phase", "RuleClass", "RuleInfo"],
+            "mintlang.migrate.model",
+        ),
+        "shows_v4": "mintlang.migrate.recognise",
+    },
+)

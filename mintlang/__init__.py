@@ -10,51 +10,18 @@ the language server and the runtime::
 
 from __future__ import annotations
 
-from importlib import import_module
 from typing import TYPE_CHECKING
 
 from mintlang.allocation import without_collector
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
+from mintlang.lazy import import_when_used
 
 if TYPE_CHECKING:
     from mintlang.analysis.analyser import Analysis, analyse
     from mintlang.diagnostics import Diagnostic, Edit, Fix, LineIndex, Position, Severity, Span
     from mintlang.semantic.model import SemanticModel, build_model
     from mintlang.syntax.parser import Document, parse
-
-# Where each public name lives. They are imported when first used (PEP 562), so a tool that
-# imports one submodule (``mint --version`` imports ``mintlang.cli``) does not pay for the parser,
-# the rules and the keyword database.
-_PUBLIC = {
-    "Analysis": "mintlang.analysis.analyser",
-    "analyse": "mintlang.analysis.analyser",
-    "Diagnostic": "mintlang.diagnostics",
-    "Edit": "mintlang.diagnostics",
-    "Fix": "mintlang.diagnostics",
-    "LineIndex": "mintlang.diagnostics",
-    "Position": "mintlang.diagnostics",
-    "Severity": "mintlang.diagnostics",
-    "Span": "mintlang.diagnostics",
-    "SemanticModel": "mintlang.semantic.model",
-    "build_model": "mintlang.semantic.model",
-    "Document": "mintlang.syntax.parser",
-    "parse": "mintlang.syntax.parser",
-}
-
-
-def __getattr__(name: str) -> object:
-    module = _PUBLIC.get(name)
-    if module is None:
-        raise AttributeError(f"module 'mintlang' has no attribute {name!r}")
-    value = getattr(import_module(module), name)
-    globals()[name] = value  # the next use is a plain attribute
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted({*globals(), *_PUBLIC})
-
 
 __all__ = [
     "Analysis",
@@ -80,7 +47,7 @@ __all__ = [
 
 def clear_caches() -> None:
     """Forget every line lexed, parsed, indexed and checked: the next check runs as in a fresh process."""
-    from mintlang.analysis.analyser import clear_cache as clear_findings_cache  # noqa: PLC0415 - see _PUBLIC
+    from mintlang.analysis.analyser import clear_cache as clear_findings_cache  # noqa: PLC0415 - see import_when_used
     from mintlang.semantic.index import clear_cache as clear_index_cache  # noqa: PLC0415
     from mintlang.syntax.parser import clear_caches as clear_syntax_caches  # noqa: PLC0415
 
@@ -103,7 +70,7 @@ def check_application(
 
     ``select`` and ``ignore`` take codes or their prefixes; without ``select`` the errors and
     warnings are reported and the hints (I…) are not."""
-    from mintlang.analysis.analyser import analyse  # noqa: PLC0415 - see _PUBLIC
+    from mintlang.analysis.analyser import analyse  # noqa: PLC0415 - see import_when_used
     from mintlang.semantic.model import build_model  # noqa: PLC0415
     from mintlang.syntax.parser import parse  # noqa: PLC0415
 
@@ -122,3 +89,26 @@ def check(
 ) -> list[Diagnostic]:
     """The diagnostics of a program (those of its configuration file are not included)."""
     return list(check_application(source, dialect=dialect, controller=controller, config=config).program)
+
+
+# The public names this module does not define are imported when first used, so a tool that
+# imports one submodule (``mint --version`` imports ``mintlang.cli``) does not pay for the parser,
+# the rules and the keyword database.
+import_when_used(
+    __name__,
+    {
+        "Analysis": "mintlang.analysis.analyser",
+        "analyse": "mintlang.analysis.analyser",
+        "Diagnostic": "mintlang.diagnostics",
+        "Edit": "mintlang.diagnostics",
+        "Fix": "mintlang.diagnostics",
+        "LineIndex": "mintlang.diagnostics",
+        "Position": "mintlang.diagnostics",
+        "Severity": "mintlang.diagnostics",
+        "Span": "mintlang.diagnostics",
+        "SemanticModel": "mintlang.semantic.model",
+        "build_model": "mintlang.semantic.model",
+        "Document": "mintlang.syntax.parser",
+        "parse": "mintlang.syntax.parser",
+    },
+)

@@ -24,18 +24,20 @@ finds in error are made comments for the v4 run (``runnable``).
 
 from __future__ import annotations
 
-from dataclasses import replace
-from types import MappingProxyType
+from typing import TYPE_CHECKING
 
-from mintlang.dialect import Dialect
-from mintlang.keyworddb.model import Controller
-from mintlang.migrate.model import ManualItem, MigrationResult
-from mintlang.migrate.verification import compare, runnable
-from mintlang.migrate.verification.model import Divergence, Place, Stopped, Verdict, Verification
-from mintlang.migrate.verification.runs import Recording, record
-from mintlang.runtime.dialects.v3.controllers import DEFAULT as V3_DEFAULT
-from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_CONTROLLERS
-from mintlang.runtime.scenario.stimulus import Scenario
+from mintlang.lazy import import_when_used
+
+if TYPE_CHECKING:
+    from mintlang.migrate.verification.model import (
+        DEFAULT_UNTIL_MS,
+        Divergence,
+        Place,
+        Stopped,
+        Verdict,
+        Verification,
+    )
+    from mintlang.migrate.verification.verifier import COUNTERPART, V3_CONTROLLERS, V3_DEFAULT, verify
 
 __all__ = [
     "COUNTERPART",
@@ -50,83 +52,16 @@ __all__ = [
     "verify",
 ]
 
-DEFAULT_UNTIL_MS = 10_000
-DEFAULT_WALL_S = 60.0
-
-# Every v3 controller the simulator offers is simulated on the NextMove PCI machine (its 1 ms servo
-# tick, 2 ms profiler and plants: runtime/dialects/v3/controllers.py, V3-1), cut down to its axes and
-# I/O; the NextMove PCI has those axes (0..2), inputs (0..7) and outputs (0..7) under the same
-# numbers, and it is what the migration targets by default. MintDrive (one axis) fits none of them.
-COUNTERPART = MappingProxyType(dict.fromkeys(V3_CONTROLLERS, Controller.NEXTMOVE_PCI))
-
-_TIMING_RULE = "X-GO-TIMING"
-
-
-def verify(
-    result: MigrationResult,
-    *,
-    v3_controller: str = V3_DEFAULT,
-    controller: Controller | str | None = None,
-    scenario: Scenario | None = None,
-    until_ms: int = DEFAULT_UNTIL_MS,
-    max_wall_s: float | None = DEFAULT_WALL_S,
-) -> Verification:
-    """Compare the v3 application ``result`` was migrated from with the v4 one it gives, each run for at
-    most ``until_ms`` simulated ms. ``controller`` is the v4 controller ``result`` was migrated for (by
-    default the counterpart of ``v3_controller``); ``scenario`` is the stimulus of both runs (its
-    expectations are not checked). Raises ``ScenarioFileError`` when a program's ``REM @sim`` line cannot
-    be read, ``ValueError`` for a controller of the wrong generation."""
-    target = str(Controller(controller)) if controller is not None else str(COUNTERPART[v3_controller])
-    stimulus = replace(scenario, expectations=()) if scenario is not None else Scenario()
-    v3 = runnable.original(result)
-    v4, disabled = runnable.migrated(result, target)
-    left = record(v3, Dialect.V3, v3_controller, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
-    right = record(v4, Dialect.V4, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
-    short = _short(left, right, runnable.flagged_places(result))
-    comparable = not (left.refused or (right.refused and short))  # else one of them never ran
-    found = compare.differences(left, right) if comparable else []
-    flagged = _flagged(result)
-    return Verification(
-        verdict=_verdict(found, flagged, short),
-        compared_ms=max(compare.horizon(left, right), 0) if comparable else 0,
-        divergence=found[0] if found else None,
-        differences=tuple(found),
-        v3_controller=v3_controller,
-        v4_controller=target,
-        v3_stop=compare.stopped(left),
-        v4_stop=compare.stopped(right),
-        not_verified=flagged,
-        disabled=disabled,
-        short=short,
-    )
-
-
-def _short(v3: Recording, v4: Recording, flagged: set[Place]) -> str | None:
-    """Why the comparison cannot cover the whole run: the original does not compile, the migration does not
-    until a person deals with a line left for them, or the simulation stopped where the program would not."""
-    if v3.refused:
-        return f"the v3 original does not compile: {compare.stopped(v3).message}"
-    v4_stop = compare.stopped(v4)
-    if v4.refused and v4_stop.line in flagged:
-        return f"the v4 program does not compile until {v4_stop.line}, left for a person, is done: {v4_stop.message}"
-    v3_stop = compare.stopped(v3)
-    if v3_stop.reason == v4_stop.reason == "error" and v3_stop.time_ms == v4_stop.time_ms == 0:
-        # both failed at once (a drive left disabled, a missing RESET): agreeing on that verifies nothing
-        return f"both runs stopped on an error at 0 ms ({v3_stop.message}; {v4_stop.message})"
-    return v3.short or v4.short
-
-
-def _flagged(result: MigrationResult) -> tuple[tuple[str, ManualItem], ...]:
-    """The statements left for a person, configuration file first: the lines marked, and the statements an
-    application note asks to fill in (a v3 default, a dedicated input), whose effect is not verified either."""
-    parts = [("configuration", result.configuration), ("program", result)]
-    return tuple((unit, item) for unit, part in parts if part is not None for item in part.manual)
-
-
-def _verdict(found: list[Divergence], flagged: tuple[tuple[str, ManualItem], ...], short: str | None) -> Verdict:
-    if not found:
-        return Verdict.INCOMPLETE if short else Verdict.EQUIVALENT
-    expected = any(item.rule == _TIMING_RULE for _, item in flagged)
-    if expected and all(divergence.timing_only for divergence in found):
-        return Verdict.TIMING
-    return Verdict.DIVERGES
+# Imported when first used: ``mint-migrate --help`` shows DEFAULT_UNTIL_MS without loading the simulator.
+import_when_used(
+    __name__,
+    {
+        **dict.fromkeys(
+            ["DEFAULT_UNTIL_MS", "Divergence", "Place", "Stopped", "Verdict", "Verification"],
+            "mintlang.migrate.verification.model",
+        ),
+        **dict.fromkeys(
+            ["COUNTERPART", "V3_CONTROLLERS", "V3_DEFAULT", "verify"], "mintlang.migrate.verification.verifier"
+        ),
+    },
+)

@@ -8,6 +8,9 @@ from enum import StrEnum
 from mintlang.migrate.model import ManualItem
 from mintlang.semantic.units import Unit
 
+DEFAULT_UNTIL_MS = 10_000  # simulated time each run of a verification lasts at most
+DEFAULT_WALL_S = 60.0  # real time each run may take
+
 
 @dataclass(frozen=True, slots=True)
 class Application:

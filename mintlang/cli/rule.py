@@ -8,21 +8,26 @@ from __future__ import annotations
 
 import json
 import sys
+from typing import TYPE_CHECKING
 
 import click
-from rich.console import Console
-from rich.markdown import Markdown
 
-from mintlang.analysis.suggestions import closest, did_you_mean
 from mintlang.cli.options import HELP_OPTIONS, format_option, version_option
-from mintlang.ruledocs import RuleDoc, find, group_of, rules
-from mintlang.ruledocs.links import configured_base, rule_url
-from mintlang.ruledocs.render import markdown, record
+
+if TYPE_CHECKING:
+    from mintlang.ruledocs import RuleDoc
 
 _USAGE_ERROR = 2
 
 
+# The documentation and rich (for Markdown on a terminal) are imported when a code is asked for:
+# they cost a third of mint's start-up, which every other command would pay.
+
+
 def _documented(code: str) -> RuleDoc:
+    from mintlang.analysis.suggestions import closest, did_you_mean  # noqa: PLC0415 - see above
+    from mintlang.ruledocs import find, rules  # noqa: PLC0415
+
     found = find(code)
     if found is not None:
         return found
@@ -42,6 +47,10 @@ def rule(codes: tuple[str, ...], every: bool, output_format: str) -> None:
     the guides' sections and its fix."""
     if not codes and not every:
         raise click.UsageError("name a code (mint rule E2016) or give --all")
+    from mintlang.ruledocs import group_of, rules  # noqa: PLC0415 - see above
+    from mintlang.ruledocs.links import configured_base, rule_url  # noqa: PLC0415
+    from mintlang.ruledocs.render import markdown, record  # noqa: PLC0415
+
     chosen = rules() if every else tuple(_documented(code) for code in codes)
     if output_format == "json":
         base = configured_base()
@@ -50,6 +59,9 @@ def rule(codes: tuple[str, ...], every: bool, output_format: str) -> None:
         click.echo(json.dumps(records[0] if single else records, indent=2, ensure_ascii=False))
         return
     pages = [markdown(rule, group_of(rule).name) for rule in chosen]
+    from rich.console import Console  # noqa: PLC0415 - see above
+    from rich.markdown import Markdown  # noqa: PLC0415
+
     console = Console(highlight=False)
     if console.is_terminal:
         for page in pages:

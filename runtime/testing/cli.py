@@ -7,11 +7,8 @@ still run), 5 when no test was found (as pytest does).
 
 from __future__ import annotations
 
-import sys
-import time
-from functools import partial
 from pathlib import Path
-from typing import NoReturn
+from typing import Any
 
 import click
 
@@ -24,17 +21,7 @@ from mintlang.cli.options import (
     output_file_option,
     version_option,
 )
-from mintlang.cli.parallel import all_cores, map_in_order
-from mintlang.cli.terminal import console, destination, refuse_overwriting
-from mintlang.dialect import Dialect
 from mintlang.runtime.dialects import SIMULATED
-from mintlang.runtime.testing import reports
-from mintlang.runtime.testing.coverage import lcov as tracefile
-from mintlang.runtime.testing.coverage import merge
-from mintlang.runtime.testing.discovery import discover
-from mintlang.runtime.testing.running import Options, TestResult, Verdict, run_case
-
-PASSED, FAILED, USAGE, NO_TESTS = 0, 1, 2, 5
 
 
 @click.command("test", context_settings=HELP_OPTIONS)
@@ -69,72 +56,9 @@ PASSED, FAILED, USAGE, NO_TESTS = 0, 1, 2, 5
 @exit_zero_option("Exit 0 even when a test fails.")
 @color_option()
 @version_option("mint test")
-def test(  # noqa: PLR0917 - click passes every option as an argument
-    paths: tuple[Path, ...],
-    controller: str | None,
-    dialect: str | None,
-    until_ms: int | None,
-    max_wall_s: float,
-    drives: str | None,
-    coverage: bool,
-    lcov: Path,
-    jobs: int | None,
-    collect_only: bool,
-    output_format: str,
-    output_file: Path | None,
-    exit_zero: bool,
-    color: str,
-) -> None:
+def test(**options: Any) -> None:
     """Run the Mint programs under PATHS (default: the current folder) that have REM @expect lines or a
     scenario file beside them (cell.scenario.toml for cell.mnt), and report which passed."""
-    if collect_only and output_format == "junit":
-        raise click.UsageError("--collect-only lists the tests as text or json, not junit")
-    cases, unreadable = discover(paths or (Path(),))
-    errors = console(color, stderr=True)
-    for problem in unreadable:
-        errors.print(f"mint test: {problem.path}: {problem.reason}", markup=False)
-    if not cases:
-        errors.print("mint test: no tests found (programs with REM @expect lines or a .scenario.toml beside them)")
-        sys.exit(USAGE if unreadable else NO_TESTS)
-    if collect_only:
-        with destination(output_file, _fail) as stream:
-            stream.write(reports.collected(cases, as_json=output_format == "json"))
-        sys.exit(USAGE if unreadable else PASSED)
-    enabled = drives == "enabled"
-    inputs = [path for case in cases for path in (case.program, case.scenario) if path is not None]
-    refuse_overwriting(output_file, inputs, _fail)
-    refuse_overwriting(lcov if coverage else None, inputs, _fail)
-    options = Options(controller, Dialect(dialect) if dialect else None, until_ms, max_wall_s, enabled, coverage)
-    began = time.perf_counter()
-    results = map_in_order(
-        partial(run_case, options=options), cases, workers=jobs or all_cores(), progress=errors, description="testing"
-    )
-    seconds = time.perf_counter() - began
-    with destination(output_file, _fail) as stream:
-        if output_format == "junit":
-            stream.write(reports.junit(results, seconds))
-        elif output_format == "json":
-            stream.write(reports.as_json(results, seconds))
-        else:
-            reports.text(results, seconds, console(color if output_file is None else "never", file=stream))
-    if coverage:
-        _coverage(results, lcov, output_format, color)
-    if unreadable:
-        sys.exit(USAGE)
-    passed = all(result.verdict is Verdict.PASSED for result in results)
-    sys.exit(PASSED if passed or exit_zero else FAILED)
+    from mintlang.runtime.testing.testing_command import execute  # noqa: PLC0415 - the simulator, for a run only
 
-
-def _coverage(results: list[TestResult], lcov: Path, output_format: str, color: str) -> None:
-    """The table (beside a text report, else on standard error) and the lcov tracefile."""
-    files = merge(result.coverage for result in results)
-    reports.coverage_table(files, console(color, stderr=output_format != "text"))
-    try:
-        lcov.write_text(tracefile(files), encoding="utf-8")
-    except OSError as error:
-        _fail(f"cannot write {lcov}: {error.strerror or error}")
-
-
-def _fail(message: str) -> NoReturn:
-    click.echo(f"mint test: {message}", err=True)
-    sys.exit(USAGE)
+    execute(**options)

@@ -1,0 +1,190 @@
+"""What ``mint-migrate`` does once its command line is read (``cli`` declares the command line).
+
+Kept apart so that ``mint-migrate --help`` and ``--version`` load neither the rules nor the simulator.
+"""
+
+from __future__ import annotations
+
+import difflib
+import json
+import sys
+from dataclasses import dataclass, replace
+from functools import partial
+from pathlib import Path
+from typing import NoReturn
+
+import click
+from rich.console import Console
+
+from mintlang.cli.options import refuse_quiet_and_verbose
+from mintlang.cli.settings import typed
+from mintlang.cli.terminal import console, destination, refuse_overwriting
+from mintlang.diagnostics import split_lines
+from mintlang.migrate import leftovers, verifying
+from mintlang.migrate.api import UnknownRule, rules, select
+from mintlang.migrate.applications import Migrated, UsageError, read
+from mintlang.migrate.citations import cite
+from mintlang.migrate.report import render_text, report
+from mintlang.migrate.verification import Verdict
+from mintlang.migrate.verification.report import Verified
+from mintlang.migrate.writing import write_changed
+
+GATE_FAILED = 1
+NOT_DONE = 2
+
+
+def _diff(item: Migrated, text: str) -> str:
+    path = item.file.path
+    lines = difflib.unified_diff(split_lines(item.file.text), split_lines(text), f"a/{path}", f"b/{path}", lineterm="")
+    return "\n".join(lines)
+
+
+def _list_rules(console: Console) -> None:
+    for info in rules():
+        kind = f"{info.rule_class.value}{' (optional)' if info.optional else ''}"
+        console.print(f"[bold]{info.id:<14}[/bold] {kind:<21} {info.summary}", highlight=False)
+        console.print(f"{'':<36} {cite(info.evidence)}", style="dim", highlight=False)
+
+
+def execute(  # noqa: PLR0917 - click passes every option as an argument
+    paths: tuple[Path, ...],
+    write: bool,
+    check: bool,
+    to_stdout: bool,
+    config: Path | None,
+    controller: str,
+    output_format: str,
+    output_file: Path | None,
+    fail_on: str | None,
+    exit_zero: bool,
+    only: tuple[str, ...],
+    skip: tuple[str, ...],
+    opt_in: tuple[str, ...],
+    list_rules: bool,
+    quiet: bool,
+    verbose: bool,
+    color: str,
+    verify: bool,
+    scenario_paths: tuple[Path, ...],
+    until_ms: int | None,
+    v3_controller: str | None,
+    drives: str | None,
+) -> None:
+    """Migrate as ``migrate`` was asked to (its docstring and ``cli.EXIT_STATUS`` say what it does)."""
+    refuse_quiet_and_verbose(quiet, verbose)
+    if list_rules:
+        _list_rules(console(color))
+        return
+    try:
+        mode = _mode(write=write, check=check, to_stdout=to_stdout, verify=verify)
+        options = verifying.Options(scenario_paths, until_ms, v3_controller, drives)
+        context = click.get_current_context()
+        settings = options.settings(controller) if mode == "verify" else options.refuse(partial(typed, context))
+        select(only or None, skip, opt_in)
+        applications = read(paths, config)
+        if mode == "stdout" and sum(len(application.files()) for application in applications) > 1:
+            raise UsageError("--stdout prints one file: name one program or one configuration file")
+    except (UsageError, UnknownRule) as error:
+        _fail(str(error))
+    sources = [file.path for application in applications for file, _ in application.files()]
+    refuse_overwriting(output_file, sources, _fail)
+    migrated = [application.migrate(controller, only or None, skip, opt_in) for application in applications]
+    items = [item for application in migrated for item in application]
+    problems = [f"{item.entry.path}: {item.entry.failure}; left as it was" for item in items if item.entry.failure]
+    _tidy(items, mode)
+    if settings is not None:
+        verified, failed = verifying.verify_all(migrated, settings)
+        with destination(output_file, _fail) as stream:
+            verifying.output(verified, output_format, console(color, file=stream), quiet=quiet)
+        for problem in [*problems, *failed]:
+            click.echo(f"mint-migrate: {problem}", err=True)
+        status = _verify_status(verified, fail_on, [*problems, *failed])
+        sys.exit(0 if status == GATE_FAILED and exit_zero else status)
+    if mode == "write":
+        written = write_changed(migrated)
+        problems += written.problems
+        items = [_unwritten(item) if item.file.path in written.unwritten else item for item in items]
+    _output(items, mode, output_format, controller, Output(output_file, quiet, verbose, color))
+    for problem in problems:
+        click.echo(f"mint-migrate: {problem}", err=True)
+    status = _status(items, mode, fail_on, problems)
+    sys.exit(0 if status == GATE_FAILED and exit_zero else status)
+
+
+def _unwritten(item: Migrated) -> Migrated:
+    """``item`` reported as a changed file ``--write`` left as it was."""
+    return replace(item, entry=replace(item.entry, written=False))
+
+
+def _fail(message: str) -> NoReturn:
+    click.echo(f"mint-migrate: {message}", err=True)
+    sys.exit(NOT_DONE)
+
+
+def _mode(*, write: bool, check: bool, to_stdout: bool, verify: bool) -> str | None:
+    """The one mode asked for: ``--check --write`` must not write, so two are a usage error."""
+    modes = (("write", write), ("check", check), ("stdout", to_stdout), ("verify", verify))
+    given = [name for name, on in modes if on]
+    if len(given) > 1:
+        raise UsageError(f"{', '.join('--' + name for name in given)}: choose one of these modes")
+    return given[0] if given else None
+
+
+def _tidy(items: list[Migrated], mode: str | None) -> None:
+    """Temporary files an interrupted ``--write`` left beside these files: removed by
+    ``--write`` (before anything is written), named by the modes that write nothing."""
+    found = leftovers.find(item.file.path.resolve().parent for item in items)
+    for line in leftovers.remove(found) if mode == "write" else leftovers.named(found):
+        click.echo(f"mint-migrate: {line}", err=True)
+
+
+@dataclass(frozen=True, slots=True)
+class Output:
+    """Where the diff and the report go (standard output, or ``--output-file``), and how they look."""
+
+    path: Path | None
+    quiet: bool
+    verbose: bool
+    color: str
+
+
+def _output(items: list[Migrated], mode: str | None, output_format: str, controller: str, output: Output) -> None:
+    data = report((item.entry for item in items), controller)
+    if mode == "stdout":
+        result = items[0].entry.result
+        if result is not None:
+            sys.stdout.buffer.write(items[0].file.encode(result.text))
+            sys.stdout.buffer.flush()
+    with destination(output.path, _fail, stderr=mode == "stdout") as stream:
+        if mode is None and output_format == "text":
+            for item in items:
+                if item.entry.result is not None and item.entry.result.changed:
+                    click.echo(_diff(item, item.entry.result.text), file=stream)
+        if output_format == "json":
+            click.echo(json.dumps(data, indent=2, ensure_ascii=False), file=stream)
+        else:
+            render_text(data, console(output.color, file=stream), quiet=output.quiet, verbose=output.verbose)
+
+
+def _status(items: list[Migrated], mode: str | None, fail_on: str | None, problems: list[str]) -> int:
+    """The exit status (see ``cli.EXIT_STATUS``)."""
+    if problems:
+        return NOT_DONE
+    results = [item.entry.result for item in items if item.entry.result is not None]
+    if mode == "check" and any(result.changed for result in results):
+        return GATE_FAILED
+    if fail_on == "manual" and any(result.manual for result in results):
+        return GATE_FAILED
+    return 0
+
+
+def _verify_status(verified: list[Verified], fail_on: str | None, problems: list[str]) -> int:
+    """The exit status of ``--verify`` (see ``cli.EXIT_STATUS``)."""
+    verdicts = {item.verification.verdict for item in verified}
+    if problems or Verdict.INCOMPLETE in verdicts:
+        return NOT_DONE
+    if Verdict.DIVERGES in verdicts:
+        return GATE_FAILED
+    if fail_on == "manual" and any(item.verification.not_verified for item in verified):
+        return GATE_FAILED
+    return 0

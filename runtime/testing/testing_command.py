@@ -1,0 +1,95 @@
+"""What ``mint test`` does once its command line is read (``cli`` declares the command line).
+
+Kept apart so that ``mint test --help`` (and ``mint --help``, which lists it) loads neither the simulator nor rich.
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+from functools import partial
+from pathlib import Path
+from typing import NoReturn
+
+import click
+
+from mintlang.cli.parallel import all_cores, map_in_order
+from mintlang.cli.terminal import console, destination, refuse_overwriting
+from mintlang.dialect import Dialect
+from mintlang.runtime.testing import reports
+from mintlang.runtime.testing.coverage import lcov as tracefile
+from mintlang.runtime.testing.coverage import merge
+from mintlang.runtime.testing.discovery import discover
+from mintlang.runtime.testing.running import Options, TestResult, Verdict, run_case
+
+PASSED, FAILED, USAGE, NO_TESTS = 0, 1, 2, 5
+
+
+def execute(  # noqa: PLR0917 - click passes every option as an argument
+    paths: tuple[Path, ...],
+    controller: str | None,
+    dialect: str | None,
+    until_ms: int | None,
+    max_wall_s: float,
+    drives: str | None,
+    coverage: bool,
+    lcov: Path,
+    jobs: int | None,
+    collect_only: bool,
+    output_format: str,
+    output_file: Path | None,
+    exit_zero: bool,
+    color: str,
+) -> None:
+    """Run the tests as ``test`` was asked to (its docstring says which programs are tests)."""
+    if collect_only and output_format == "junit":
+        raise click.UsageError("--collect-only lists the tests as text or json, not junit")
+    cases, unreadable = discover(paths or (Path(),))
+    errors = console(color, stderr=True)
+    for problem in unreadable:
+        errors.print(f"mint test: {problem.path}: {problem.reason}", markup=False)
+    if not cases:
+        errors.print("mint test: no tests found (programs with REM @expect lines or a .scenario.toml beside them)")
+        sys.exit(USAGE if unreadable else NO_TESTS)
+    if collect_only:
+        with destination(output_file, _fail) as stream:
+            stream.write(reports.collected(cases, as_json=output_format == "json"))
+        sys.exit(USAGE if unreadable else PASSED)
+    enabled = drives == "enabled"
+    inputs = [path for case in cases for path in (case.program, case.scenario) if path is not None]
+    refuse_overwriting(output_file, inputs, _fail)
+    refuse_overwriting(lcov if coverage else None, inputs, _fail)
+    options = Options(controller, Dialect(dialect) if dialect else None, until_ms, max_wall_s, enabled, coverage)
+    began = time.perf_counter()
+    results = map_in_order(
+        partial(run_case, options=options), cases, workers=jobs or all_cores(), progress=errors, description="testing"
+    )
+    seconds = time.perf_counter() - began
+    with destination(output_file, _fail) as stream:
+        if output_format == "junit":
+            stream.write(reports.junit(results, seconds))
+        elif output_format == "json":
+            stream.write(reports.as_json(results, seconds))
+        else:
+            reports.text(results, seconds, console(color if output_file is None else "never", file=stream))
+    if coverage:
+        _coverage(results, lcov, output_format, color)
+    if unreadable:
+        sys.exit(USAGE)
+    passed = all(result.verdict is Verdict.PASSED for result in results)
+    sys.exit(PASSED if passed or exit_zero else FAILED)
+
+
+def _coverage(results: list[TestResult], lcov: Path, output_format: str, color: str) -> None:
+    """The table (beside a text report, else on standard error) and the lcov tracefile."""
+    files = merge(result.coverage for result in results)
+    reports.coverage_table(files, console(color, stderr=output_format != "text"))
+    try:
+        lcov.write_text(tracefile(files), encoding="utf-8")
+    except OSError as error:
+        _fail(f"cannot write {lcov}: {error.strerror or error}")
+
+
+def _fail(message: str) -> NoReturn:
+    click.echo(f"mint test: {message}", err=True)
+    sys.exit(USAGE)

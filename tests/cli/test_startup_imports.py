@@ -1,0 +1,92 @@
+"""Start-up: a tool imports only what the command it was given uses.
+
+``--help`` and ``--version`` of every tool load none of the heavy parts (the parser and
+lark, the rules, the simulator, the migration rules, pygls, rich), and a check that writes
+JSON loads the checker but not rich. Each case runs in a fresh interpreter, which lists
+the modules it imported; how long start-up takes is measured by ``benchmarks/startup.py``,
+never here.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+# Runs a tool's main() as its script would, then prints what was imported after the tool's output.
+_RUN_AND_LIST_MODULES = """
+import importlib, json, sys
+module, *arguments = sys.argv[1:]
+sys.argv = [module, *arguments]
+try:
+    importlib.import_module(module).main()
+except SystemExit:
+    pass
+print()
+print(json.dumps(sorted(sys.modules)))
+"""
+
+HEAVY = (
+    "lark",
+    "mintlang.syntax.parser",
+    "mintlang.analysis.rules",
+    "mintlang.runtime.interpreter",
+    "mintlang.migrate.rules",
+    "pygls",
+    "rich",
+)
+
+
+def run(module: str, *arguments: str) -> tuple[str, list[str]]:
+    """What the tool wrote, and the heavy modules (or their packages) it imported."""
+    command = [sys.executable, "-c", _RUN_AND_LIST_MODULES, module, *arguments]
+    output, _, modules = subprocess.run(command, capture_output=True, text=True, check=True).stdout.rpartition("\n\n")
+    imported = json.loads(modules)
+    return output, [name for name in HEAVY if any(m == name or m.startswith(f"{name}.") for m in imported)]
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        ("mintlang.cli", "--version"),
+        ("mintlang.cli", "check", "--version"),
+        ("mintlang.runtime.cli", "--version"),
+        ("mintlang.migrate.cli", "--version"),
+        ("mintlang.lsp.cli", "--version"),
+    ],
+    ids=" ".join,
+)
+def test_version_loads_nothing_heavy(command: tuple[str, ...]) -> None:
+    output, heavy = run(*command)
+    assert "version 0.1.0" in output
+    assert heavy == []
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        ("mintlang.cli", "--help"),  # lists every command, the tools' too
+        ("mintlang.cli", "check", "--help"),
+        ("mintlang.cli", "rule", "--help"),
+        ("mintlang.cli", "test", "--help"),
+        ("mintlang.runtime.cli", "--help"),
+        ("mintlang.migrate.cli", "--help"),
+        ("mintlang.lsp.cli", "--help"),
+    ],
+    ids=" ".join,
+)
+def test_help_loads_nothing_heavy(command: tuple[str, ...]) -> None:
+    output, heavy = run(*command)
+    assert output.startswith("Usage:")
+    assert heavy == []
+
+
+def test_a_json_check_loads_the_checker_and_not_rich(tmp_path: Path) -> None:
+    program = tmp_path / "one_line.mnt"
+    program.write_text("SPEED = 10\n", encoding="utf-8")
+    output, heavy = run("mintlang.cli", "check", "--format", "json", str(program))
+    assert json.loads(output) == []
+    assert heavy == ["lark", "mintlang.syntax.parser", "mintlang.analysis.rules"]

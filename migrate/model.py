@@ -97,6 +97,7 @@ class MigrationResult:
     errors: tuple[str, ...] = ()  # lines the migrator could not read (left untouched)
     configuration: MigrationResult | None = field(default=None, repr=False)
     already_v4: bool = False  # recognised as Mint v4 and left as it was (see ``recognise``)
+    already_mintmt: bool = False  # ``--to mintmt``: recognised as MintMT and left as it was
 
     @property
     def changed(self) -> bool:

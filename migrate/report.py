@@ -38,6 +38,8 @@ class FileEntry:
             return "failed"
         if self.result.already_v4:
             return "already v4"
+        if self.result.already_mintmt:
+            return "already mintmt"
         if not self.result.changed:
             return "unchanged"
         return "changed" if self.written else "not written"
@@ -58,20 +60,25 @@ def plural(count: int, noun: str) -> str:
     return f"{count} {noun}{'' if count == 1 else 's'}"
 
 
-def report(files: Iterable[FileEntry], controller: str) -> dict[str, Any]:
-    """The report as plain data (what ``--format json`` prints)."""
+def report(files: Iterable[FileEntry], controller: str, *, to: str = "v4") -> dict[str, Any]:
+    """The report as plain data (what ``--format json`` prints); a migration ``to`` MintMT says so
+    (``"to": "mintmt"``) and counts the files left as they were for being MintMT already."""
     rows = [_file(entry) for entry in files]
     rules: Counter[str] = Counter()
     for row in rows:
         rules.update(row["rules"])
     statuses = Counter(row["status"] for row in rows)
+    target = {"to": to} if to != "v4" else {}
+    already = {"already_mintmt": statuses["already mintmt"]} if to != "v4" else {}
     return {
+        **target,
         "controller": controller,
         "files": rows,
         "totals": {
             "changed": statuses["changed"],
             "unchanged": statuses["unchanged"],
             "already_v4": statuses["already v4"],
+            **already,
             "failed": statuses["failed"],
             "not_written": statuses["not written"],
             "changes": sum(len(row["changes"]) for row in rows),
@@ -164,10 +171,10 @@ def _place(path: str, item: Mapping[str, Any]) -> str:
 
 def summary(totals: Mapping[str, int]) -> str:
     """``2 files: 1 changed, 1 unchanged; 3 changes, 1 manual item, 0 unreadable lines``."""
-    files = sum(totals[status] for status in ("changed", "unchanged", "already_v4", "failed", "not_written"))
+    others = ("already_v4", "already_mintmt", "failed", "not_written")
+    files = sum(totals.get(status, 0) for status in ("changed", "unchanged", *others))
     statuses = [f"{totals['changed']} changed", f"{totals['unchanged']} unchanged"]
-    others = ("already_v4", "failed", "not_written")
-    statuses += [f"{totals[key]} {key.replace('_', ' ')}" for key in others if totals[key]]
+    statuses += [f"{totals[key]} {key.replace('_', ' ')}" for key in others if totals.get(key)]
     counts = [
         plural(totals["changes"], "change"),
         plural(totals["manual_items"], "manual item"),

@@ -1,0 +1,104 @@
+"""The rewrites' actions applied to one file: span edits in one pass, flags as ``REM MIGRATE:`` lines.
+
+Everything outside an edited span is copied, never regenerated: line ends, case,
+spacing and comments' text survive byte for byte. A flag becomes the migrator's
+usual marker line above the flagged line, with its indentation and the file's own
+line break (``REM`` is MintMT too, MT-1), unless the lines above already carry it:
+that, and a MintMT text being left as it is (``api``), make a second migration
+change nothing. The manual items are read back from the markers, as the v3 → v4
+migration does, so markers a person has not dealt with yet stay listed.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+from collections.abc import Iterable
+
+from mintlang.diagnostics import LineIndex, Span
+from mintlang.migrate.context import MARKER
+from mintlang.migrate.engine import FileOutcome
+from mintlang.migrate.history import Edit, History
+from mintlang.migrate.markers import manual_items
+from mintlang.migrate.mintmt.source import Action, Flag, Rewrite, Source
+from mintlang.migrate.model import Change
+
+_NEWLINE = re.compile(r"\r\n|\r|\n")
+
+
+def apply(source: Source, actions: Iterable[Action]) -> FileOutcome:
+    """``source`` with ``actions`` done: each rewrite, and each flag's marker (once per line and text)."""
+    text = source.text
+    index = LineIndex(text)
+    edits = [Edit(action.rule, action.span, action.text) for action in actions if isinstance(action, Rewrite)]
+    markers = _markers(source, index, [action for action in actions if isinstance(action, Flag)])
+    ordered = sorted([*edits, *markers], key=lambda edit: (edit.span.start, edit.span.end))
+    history = History()
+    history.record(ordered)
+    new_text, changes = _edited(text, index, ordered)
+    manual = tuple(manual_items(new_text, history.origin, index))
+    counts = Counter(change.rule for change in changes)
+    counts.update(item.rule for item in manual)
+    return FileOutcome(text, new_text, tuple(changes), manual, dict(sorted(counts.items())), ())
+
+
+def _markers(source: Source, index: LineIndex, flags: list[Flag]) -> list[Edit]:
+    """A marker line for each flag, above the line it flags, unless already written there."""
+    text = source.text
+    newline = _NEWLINE.search(text)
+    line_break = newline.group() if newline is not None else "\n"
+    made: list[Edit] = []
+    seen: set[tuple[int, str]] = set()
+    for flag in flags:
+        number = index.position(flag.at).line
+        start = index.line_start(number)
+        line = source.lines[number - 1].lexed.text
+        indentation = line[: len(line) - len(line.lstrip(" \t"))]
+        marker = f"{MARKER} {flag.rule}: {' '.join(flag.reason.split())}"
+        if (start, marker) in seen or marker in _markers_above(source, number):
+            continue
+        seen.add((start, marker))
+        made.append(Edit(flag.rule, Span(start, start), f"{indentation}{marker}{line_break}"))
+    return made
+
+
+def _markers_above(source: Source, number: int) -> set[str]:
+    """The marker lines right above line ``number`` (from 1), stripped."""
+    found = set()
+    for line in reversed(source.lines[: number - 1]):
+        stripped = line.lexed.text.strip()
+        if not stripped.upper().startswith(MARKER):
+            break
+        found.add(stripped)
+    return found
+
+
+def _edited(text: str, index: LineIndex, edits: list[Edit]) -> tuple[str, list[Change]]:
+    """The text with ``edits`` (sorted, not overlapping) made, and a change for each rewrite."""
+    parts: list[str] = []
+    rewrites: list[tuple[Edit, int]] = []  # each rewrite with where its text starts in the new text
+    position = 0
+    written = 0
+    for edit in edits:
+        before = text[position : edit.span.start]
+        parts += (before, edit.text)
+        written += len(before)
+        if not edit.text.lstrip().startswith(MARKER):
+            rewrites.append((edit, written))
+        written += len(edit.text)
+        position = edit.span.end
+    parts.append(text[position:])
+    new_text = "".join(parts)
+    new_index = LineIndex(new_text)
+    changes = [
+        Change(
+            edit.rule,
+            edit.span,
+            index.position(edit.span.start).line,
+            text[edit.span.start : edit.span.end],
+            edit.text,
+            new_index.position(at).line,
+        )
+        for edit, at in rewrites
+    ]
+    return new_text, changes

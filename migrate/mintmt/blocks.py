@@ -1,0 +1,44 @@
+"""Block words as the notes write them: ``LOOP … ENDL`` ends ``End Loop``, ``IF … DO … ENDIF`` becomes
+``If … Then … End If`` (004:96-105, 002:48-73).
+
+MintMT's ``Then`` opens a block only when it ends its line (the lexer reads it as
+v4's ``DO`` there), so a ``DO`` with a statement after it on its line is kept and
+flagged. ``WHILE … ENDW`` and ``REPEAT … UNTIL`` are kept as v4 writes them, which
+MintMT reads (MT-1), and flagged: the notes show no MintMT form of them.
+The new words take the case of the words they replace (MT-16).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from mintlang.migrate.mintmt.source import Action, Flag, Rewrite, Source, span, styled
+from mintlang.syntax.tokens import TokenKind
+
+ID = "MT-BLOCK"
+SUMMARY = "ENDL becomes End Loop, a block IF's DO and ENDIF become Then and End If"
+
+_K = TokenKind
+_CLOSERS = {_K.ENDL: "End Loop", _K.ENDIF: "End If"}
+_UNSHOWN = {
+    _K.WHILE: "WHILE … ENDW is kept as v4 writes it: the notes show no MintMT form of it",
+    _K.REPEAT: "REPEAT … UNTIL is kept as v4 writes it: the notes show no MintMT form of it",
+}
+
+
+def find(source: Source) -> Iterator[Action]:
+    for line, index, token in source.tokens():
+        kind = token.kind
+        if kind in _CLOSERS:
+            yield Rewrite(ID, span(token), styled(_CLOSERS[kind], token.text))
+        elif kind is _K.DO and _K.IF in line.kinds:
+            if index == len(line.tokens) - 1:
+                yield Rewrite(ID, span(token), styled("Then", token.text))
+            else:
+                reason = "DO is kept: MintMT's Then opens a block only at the end of its line; move what follows it"
+                yield Flag(ID, token.start, reason)
+        elif kind is _K.THEN and index == len(line.tokens) - 1 and _K.IF in line.kinds:
+            reason = "THEN ends its line: MintMT reads it as opening an If block; give it its statement"
+            yield Flag(ID, token.start, reason)
+        elif kind in _UNSHOWN:
+            yield Flag(ID, token.start, _UNSHOWN[kind])

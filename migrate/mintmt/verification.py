@@ -1,0 +1,85 @@
+"""Run a v4 application and its MintMT migration in the simulator and compare them.
+
+The same machinery as the v3 → v4 verification (``mintlang.migrate.verification``):
+both runs are recorded at every millisecond with the same stimulus, the v4 one
+as Mint v4 and the migrated one as MintMT, on the same controller, and compared
+channel by channel within the same tolerances. In the answer, the ``v3`` fields
+hold the v4 original's side and the ``v4`` fields the MintMT side. Nothing is
+disabled: what the migration flags is kept in its v4 form, which MintMT reads
+(MT-1), so a flagged line runs in both.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from mintlang.dialect import Dialect
+from mintlang.keyworddb.model import Controller
+from mintlang.migrate.model import MigrationResult
+from mintlang.migrate.verification import DEFAULT_UNTIL_MS, Verdict, Verification, compare
+from mintlang.migrate.verification.model import Application
+from mintlang.migrate.verification.runnable import without_expectations
+from mintlang.migrate.verification.runs import Recording, record
+from mintlang.runtime.scenario.stimulus import Scenario
+
+
+def verify(
+    result: MigrationResult,
+    *,
+    controller: Controller | str = Controller.NEXTMOVE_PCI,
+    scenario: Scenario | None = None,
+    until_ms: int = DEFAULT_UNTIL_MS,
+    max_wall_s: float | None = None,
+) -> Verification:
+    """Compare the v4 application ``result`` was migrated from with the MintMT one it gives, each run on
+    ``controller`` for at most ``until_ms`` simulated ms with ``scenario`` as the stimulus (its
+    expectations are not checked)."""
+    target = str(Controller(controller))
+    stimulus = replace(scenario, expectations=()) if scenario is not None else Scenario()
+    runs = []
+    for dialect, texts in ((Dialect.V4, _originals(result)), (Dialect.MINTMT, _migrated(result))):
+        program, configuration = (without_expectations(text, dialect) if text is not None else None for text in texts)
+        application = Application(program or "", configuration)
+        runs.append(record(application, dialect, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s))
+    original, migrated = runs
+    short = _short(original, migrated)
+    comparable = not (original.refused or migrated.refused)
+    found = compare.differences(original, migrated) if comparable else []
+    flagged = tuple(
+        (unit, item)
+        for unit, part in (("configuration", result.configuration), ("program", result))
+        if part is not None
+        for item in part.manual
+    )
+    return Verification(
+        verdict=Verdict.DIVERGES if found else Verdict.INCOMPLETE if short else Verdict.EQUIVALENT,
+        compared_ms=max(compare.horizon(original, migrated), 0) if comparable else 0,
+        divergence=found[0] if found else None,
+        differences=tuple(found),
+        v3_controller=target,
+        v4_controller=target,
+        v3_stop=compare.stopped(original),
+        v4_stop=compare.stopped(migrated),
+        not_verified=flagged,
+        disabled=(),
+        short=short,
+    )
+
+
+def _originals(result: MigrationResult) -> tuple[str, str | None]:
+    configuration = result.configuration
+    return result.source, configuration.source if configuration is not None else None
+
+
+def _migrated(result: MigrationResult) -> tuple[str, str | None]:
+    configuration = result.configuration
+    return result.text, configuration.text if configuration is not None else None
+
+
+def _short(original: Recording, migrated: Recording) -> str | None:
+    """Why the comparison cannot cover the whole run."""
+    if original.refused:
+        return f"the v4 original does not compile: {compare.stopped(original).message}"
+    if migrated.refused:
+        return f"the MintMT migration does not compile: {compare.stopped(migrated).message}"
+    return original.short or migrated.short

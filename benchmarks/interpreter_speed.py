@@ -129,8 +129,8 @@ def _counted_operations(counter: list[int]) -> Iterator[None]:
     """Wrap every operation the linker compiles in a counter (for the counting run only, never timed)."""
     link = controller_module.link
 
-    def counting_link(model, vm, table, terminal):
-        linked = link(model, vm, table, terminal)
+    def counting_link(model, vm, *rest):
+        linked = link(model, vm, *rest)
 
         def counted(operation):
             def run():

@@ -1,8 +1,10 @@
-"""Compiling expressions into closures.
+"""Compiling expressions into functions.
 
 Each expression becomes a function of no arguments that returns a binary32
-value, so evaluating ``POS.0 + 2 * a`` at run time is three calls and no tree
-walk. Keywords are resolved to their handlers here, once; axis-addressed
+value, so evaluating ``POS.0 + 2 * a`` at run time is no tree walk: operators
+and the variables and literals under them are generated as one Python function
+(``generated.py``), which calls a closure only for what is not arithmetic (a
+keyword's read, an array element, a function). Keywords are resolved to their handlers here, once; axis-addressed
 keywords written without a selector read the first of the default axes
 (``AXES``), and a bracket list reads every axis and ANDs the results bitwise
 (v4 guide 3.1.1).
@@ -15,9 +17,11 @@ from dataclasses import dataclass, field
 
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.interpreter import generated
+from mintlang.runtime.interpreter.generated import Emitter, Source
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.keywords import KeywordTable, Reader
-from mintlang.runtime.numbers import bits24
+from mintlang.runtime.numbers import bits24, f32
 from mintlang.runtime.semantics import Semantics
 from mintlang.syntax import nodes as n
 
@@ -55,12 +59,9 @@ class ExpressionCompiler:
             return self.variable(expression.name)  # type: ignore[union-attr]
         if kind is n.ElementRef:
             return self.element(expression)  # type: ignore[arg-type]
-        if kind is n.Binary:
-            return self.binary(expression)  # type: ignore[arg-type]
-        if kind is n.Unary:
-            operand = self.compile(expression.operand)  # type: ignore[union-attr]
-            unary = self.semantics.unary[expression.operator]  # type: ignore[union-attr]
-            return lambda: unary(operand())
+        if kind is n.Binary or kind is n.Unary:
+            emitter = Emitter()
+            return emitter.expression(self.source(expression, emitter))
         if kind is n.ConstantRef:
             return self.constant(expression)  # type: ignore[arg-type]
         if kind is n.KeywordRef:
@@ -69,6 +70,39 @@ class ExpressionCompiler:
             return self.call(expression)  # type: ignore[arg-type]
         raise TypeError(f"not an expression: {expression!r}")
 
+    def source(self, expression: n.Expression, emitter: Emitter) -> Source:
+        """``expression`` as the text of a generated function (``generated.py``), its values named by ``emitter``."""
+        kind = type(expression)
+        if kind is n.Parenthesised:
+            return self.source(expression.expression, emitter)  # type: ignore[union-attr]
+        if kind is n.Number or kind is n.CharConstant:
+            number = self.semantics.number
+            return Source(emitter.name(number(float(expression.value))), binary32=number is f32)  # type: ignore[union-attr]
+        if kind is n.VariableRef and expression.name.identity not in self.names.macros:  # type: ignore[union-attr]
+            slot = self.scalar_slot(expression.name)  # type: ignore[union-attr]
+            return Source(f"{emitter.name(self.vm.scalars)}[{emitter.name(slot)}]")
+        if kind is n.ConstantRef:
+            return Source(emitter.name(self.constant_value(expression)))  # type: ignore[arg-type]
+        if kind is n.Binary:
+            left = self.source(expression.left, emitter)  # type: ignore[union-attr]
+            right = self.source(expression.right, emitter)  # type: ignore[union-attr]
+            return generated.binary(emitter, self.semantics.binary[expression.operator], left, right)  # type: ignore[union-attr]
+        if kind is n.Unary:
+            operand = self.source(expression.operand, emitter)  # type: ignore[union-attr]
+            return generated.unary(emitter, self.semantics.unary[expression.operator], operand)  # type: ignore[union-attr]
+        if kind is n.Call and expression.function in self.semantics.functions:  # type: ignore[union-attr]
+            arguments = (self.source(argument, emitter).text for argument in expression.arguments)  # type: ignore[union-attr]
+            return Source(emitter.call(self.semantics.functions[expression.function], *arguments))  # type: ignore[union-attr]
+        return Source(emitter.call(self.compile(expression)))
+
+    def scalar_slot(self, name: n.Name) -> int:
+        """Where the scalar variable ``name`` is kept in ``vm.scalars``."""
+        slot = self.names.scalars.get(name.identity)
+        if slot is None:  # an array name used as a scalar without ever being one: its own scalar slot
+            slot = self.names.scalars[name.identity] = len(self.vm.scalars)
+            self.vm.scalars.append(0.0)
+        return slot
+
     def variable(self, name: n.Name) -> Evaluate:
         if name.identity in self.names.macros:
 
@@ -76,10 +110,7 @@ class ExpressionCompiler:
                 raise MintError(SYNTAX_ERROR, detail=f"macro {name.text} is not expanded inside another macro")
 
             return unexpanded
-        slot = self.names.scalars.get(name.identity)
-        if slot is None:  # an array name used as a scalar without ever being one: its own scalar slot
-            slot = self.names.scalars[name.identity] = len(self.vm.scalars)
-            self.vm.scalars.append(0.0)
+        slot = self.scalar_slot(name)
         scalars = self.vm.scalars
         return lambda: scalars[slot]
 
@@ -102,17 +133,15 @@ class ExpressionCompiler:
 
         return read
 
-    def binary(self, expression: n.Binary) -> Evaluate:
-        left = self.compile(expression.left)
-        right = self.compile(expression.right)
-        operate = self.semantics.binary[expression.operator]
-        return lambda: operate(left(), right())
-
     def constant(self, expression: n.ConstantRef) -> Evaluate:
+        value = self.constant_value(expression)
+        return lambda: value
+
+    def constant_value(self, expression: n.ConstantRef) -> float:
         value = self.semantics.constants.get(expression.name.upper())
         if value is None:
             raise NotSimulated(expression.name, "constant")
-        return lambda: value
+        return value
 
     def keyword(self, reference: n.KeywordRef) -> Evaluate:
         access = self.table.in_program(reference.keyword)

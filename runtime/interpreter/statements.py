@@ -14,10 +14,13 @@ from dataclasses import dataclass
 
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.interpreter import generated
 from mintlang.runtime.interpreter.arrays import array_problem
 from mintlang.runtime.interpreter.expressions import Evaluate, ExpressionCompiler
+from mintlang.runtime.interpreter.generated import Emitter
 from mintlang.runtime.interpreter.vm import Interpreter, Loop, Operation, Recovery
 from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordAccess, KeywordTable, Values
+from mintlang.runtime.numbers import f32
 from mintlang.runtime.printing import format_bin, format_chr, format_hex
 from mintlang.runtime.ranges import check_range, table_bounds
 from mintlang.runtime.terminal import Terminal
@@ -105,8 +108,20 @@ class StatementCompiler:
     # ----------------------------------------------------------- assignments
 
     def assignment(self, statement: n.Assignment, pc: int) -> Operation:
+        target = statement.target
+        if type(target) is n.VariableRef and target.name.identity not in self.expressions.names.macros:
+            return self._assign_scalar(target.name, statement.value)
         value = self.expressions.compile(statement.value)
-        return self._store(statement.target, value)
+        return self._store(target, value)
+
+    def _assign_scalar(self, name: n.Name, expression: n.Expression) -> Operation:
+        """``a = expression`` as one generated function. The store holds the value as the dialect holds
+        numbers, which for binary32 is nothing more to do when the last operation has rounded it."""
+        emitter = Emitter()
+        value = self.expressions.source(expression, emitter)
+        slot = self.expressions.scalar_slot(name)
+        stored = value.text if value.binary32 and self.number is f32 else emitter.call(self.number, value.text)
+        return emitter.function(f"{emitter.name(self.vm.scalars)}[{emitter.name(slot)}] = {stored}")
 
     def _store(self, target: n.VariableRef | n.ElementRef, value: Evaluate) -> Operation:
         setter = self._setter(target)
@@ -448,18 +463,20 @@ class StatementCompiler:
         self._recover(pc, pc + 1, opener)
         vm = self.vm
         scalars = vm.scalars
-        add = self.expressions.semantics.binary["+"]
+        add = generated.operator(self.expressions.semantics.binary["+"])
+        again = opener + 1
 
         def next_() -> None:
             loop = vm.innermost_loop(opener)
             if loop is None:
                 raise MintError(2009, detail="NEXT reached outside its FOR loop")
-            candidate = add(scalars[loop.slot], loop.step)
-            if (loop.step >= 0 and candidate > loop.end) or (loop.step < 0 and candidate < loop.end):
+            slot, step = loop.slot, loop.step
+            candidate = add(scalars[slot], step)
+            if (step >= 0 and candidate > loop.end) or (step < 0 and candidate < loop.end):
                 vm.leave_loop(opener)  # the variable keeps the last value the body ran with (NM-9)
                 return
-            scalars[loop.slot] = candidate
-            vm.pc = opener + 1
+            scalars[slot] = candidate
+            vm.pc = again
 
         return next_
 

@@ -134,31 +134,33 @@ class Interpreter:
         count = len(operations)
         budget = self.slice_statements
         self.blocked = False
-        self.progressed = False
         events = self.events
-        while budget > 0 and self.stopped is None:
-            if events is not None and events.pending:
-                self._dispatch(events)
-            pc = self.pc
-            if pc >= count:
-                self._finish()
-                return
-            self.pc = pc + 1
-            self.executing = pc
-            try:
-                if operations[pc]():
-                    self.pc = pc
-                    self.blocked = True
+        try:
+            while budget > 0 and self.stopped is None:
+                if events is not None and events.pending:
+                    self.executing = None
+                    self._dispatch(events)
+                pc = self.pc
+                if pc >= count:
+                    self.executing = None
+                    self._finish()
                     return
-            except MintError as error:
-                self.fail(error, pc)
-            except NotSimulated as missing:
-                self.not_simulated(missing)
-                return
-            finally:
-                self.executing = None
-            self.progressed = True
-            budget -= 1
+                self.pc = pc + 1
+                self.executing = pc
+                try:
+                    if operations[pc]():
+                        self.pc = pc
+                        self.blocked = True
+                        return
+                except MintError as error:
+                    self.fail(error, pc)
+                except NotSimulated as missing:
+                    self.not_simulated(missing)
+                    return
+                budget -= 1  # a statement completed, or failed into ERR and #ONERROR
+        finally:
+            self.executing = None
+            self.progressed = budget < self.slice_statements
 
     def current_site(self) -> Site | None:
         """The statement running now, or between slices the one the program continues with."""
@@ -254,8 +256,10 @@ class Interpreter:
     def innermost_loop(self, opener: int) -> Loop | None:
         """The running frame's innermost loop, if it is the one opened at ``opener``."""
         loops = self.loops
-        if loops and loops[-1].opener == opener and len(loops) > self.frame_loops():
-            return loops[-1]  # the common case, every NEXT: no IF block left open above it
+        if loops and loops[-1].opener == opener:  # the common case, every NEXT: no IF block left open above it
+            frames = self.frames
+            if not frames or len(loops) > frames[-1].loops:
+                return loops[-1]
         depth = self._innermost()
         return self.loops[depth] if depth is not None and self.loops[depth].opener == opener else None
 

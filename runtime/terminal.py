@@ -97,17 +97,10 @@ class Terminal:
             self._kept = TRANSCRIPT_LIMIT
         if self._echo is not None:
             self._echo(text)
-        line_start = max(text.rfind("\r"), text.rfind("\n")) + 1
-        tail = text[line_start:]
-        width = len(tail) if tail.isprintable() else sum(character.isprintable() for character in tail)
-        self.column = width if line_start else self.column + width
+        self.column = _column_after(self.column, text)
 
     def newline(self) -> None:
         self.write(NEWLINE)
-
-    def tab(self) -> None:
-        """Move to the next tab stop; at a stop already, move to the following one."""
-        self.write(" " * (TAB_WIDTH - self.column % TAB_WIDTH))
 
     def announce(self, message: str) -> None:
         """A message of the controller's own (an error that stops the program), on a line of its own."""
@@ -119,13 +112,20 @@ class Terminal:
         ``,`` joins the next item directly, ``;`` moves to the next tab stop. A
         separator after the last item suppresses the line feed (PR-4 RC), and the
         ``;`` padding still happens. ``newline=False`` never ends the line, for prompts.
+        The whole statement is one write, so a live terminal gets it in one piece.
         """
+        pieces = []
+        column = self.column
         for text, separator in items:
-            self.write(text)
+            pieces.append(text)
+            column = _column_after(column, text)
             if separator == ";":
-                self.tab()
+                padding = " " * (TAB_WIDTH - column % TAB_WIDTH)
+                pieces.append(padding)
+                column += len(padding)
         if newline and (not items or items[-1][1] is None):
-            self.newline()
+            pieces.append(NEWLINE)
+        self.write("".join(pieces))
 
     def cls(self) -> None:
         """``CLS``: a log cannot be cleared, so only the current line is ended and the cursor is at column 0."""
@@ -202,3 +202,11 @@ class Terminal:
             return NumberEntry(f32(float(entry)))
         except MintError:
             return NumberEntry(None, retry=True)
+
+
+def _column_after(column: int, text: str) -> int:
+    """The column after writing ``text`` at ``column``: CR or LF returns it to 0, control characters take none."""
+    line_start = max(text.rfind("\r"), text.rfind("\n")) + 1
+    tail = text[line_start:]
+    width = len(tail) if tail.isprintable() else sum(character.isprintable() for character in tail)
+    return width if line_start else column + width

@@ -55,4 +55,4 @@ def test_on_start_sees_the_controller_before_the_first_tick() -> None:
         seen.append((text, site.line if site else -1))
 
     run_source('PRINT "a"\nWAIT = 3\nPRINT "b"\n', echo=echo, on_start=holder.append)
-    assert [(text, line) for text, line in seen if text.strip()] == [("a", 1), ("b", 3)]
+    assert [(text, line) for text, line in seen] == [("a\n", 1), ("b\n", 3)]  # each PRINT is one write

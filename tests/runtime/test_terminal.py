@@ -71,6 +71,25 @@ def test_every_write_is_echoed_as_it_happens() -> None:
     assert "".join(pieces) == terminal.text == "a       b\n"
 
 
+def test_a_print_statement_reaches_the_live_terminal_in_one_write() -> None:
+    pieces: list[str] = []
+    run_source('DIM a = 5\nPRINT "a = ", a; "b";\nPRINT "x", 2\n', controller="nextmove-bx", echo=pieces.append)
+    assert pieces == ["a = 5   b       ", "x2\n"]
+
+
+@given(st.lists(st.tuples(st.text(alphabet="abc\r xyz0123", max_size=12), st.sampled_from([",", ";", None]))))
+def test_one_write_per_print_leaves_what_a_write_per_item_leaves(items: list[tuple[str, str | None]]) -> None:
+    at_once, by_item = Terminal(), Terminal()
+    at_once.print_items(items, newline=True)
+    for text, separator in items:
+        by_item.write(text)
+        if separator == ";":
+            by_item.write(" " * (8 - by_item.column % 8))
+    if not items or items[-1][1] is None:
+        by_item.newline()
+    assert (at_once.text, at_once.column) == (by_item.text, by_item.column)
+
+
 @given(st.lists(st.tuples(st.text(alphabet="abc xyz0123", max_size=12), st.sampled_from([",", ";"]))))
 def test_semicolons_always_land_on_a_tab_stop(items: list[tuple[str, str]]) -> None:
     terminal = Terminal()

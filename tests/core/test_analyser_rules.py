@@ -132,6 +132,24 @@ def test_every_line_using_an_undeclared_variable_offers_one_dim_outside_the_loop
     ("source", "fixed"),
     [
         pytest.param(
+            "DIM a\nLOOP\n  DIM b\n  c = 1\n", "DIM a\nDIM c\nLOOP\n  DIM b\n  c = 1\n", id="a block never closed"
+        ),
+        pytest.param(
+            "LOOP\nENDL\nDIM a\nWHILE 1\n  DIM b\n  REPEAT\n    DIM d\n    c = 1\n",
+            "LOOP\nENDL\nDIM a\nDIM c\nWHILE 1\n  DIM b\n  REPEAT\n    DIM d\n    c = 1\n",
+            id="nested blocks never closed after a closed one",
+        ),
+    ],
+)
+def test_the_dim_goes_after_the_last_dim_outside_every_block_even_one_left_open(source: str, fixed: str) -> None:
+    (diagnostic,) = [d for d in mintlang.check(source) if d.code == "E3001"]
+    assert apply(source, diagnostic.fixes[0].edits) == fixed
+
+
+@pytest.mark.parametrize(
+    ("source", "fixed"),
+    [
+        pytest.param(
             "REM top\nDIM a\nDIM xs(2) = 1,\n  2\nLOOP\n  DIM b : b = a\n  IF b DO\n    x = 1\n  ENDIF\nENDL\n",
             "REM top\nDIM a\nDIM xs(2) = 1,\n  2\nDIM x\nLOOP\n  DIM b : b = a\n  IF b DO\n    x = 1\n  ENDIF\nENDL\n",
             id="after-the-last-dim-outside-a-block",

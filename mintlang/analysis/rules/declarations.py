@@ -10,7 +10,10 @@ whose text uses another macro fails with a syntax error (3.5).
 
 from __future__ import annotations
 
+from bisect import bisect_left, bisect_right
 from collections.abc import Iterator
+from dataclasses import dataclass
+from itertools import islice
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.rules.v3_keywords import successor
@@ -35,6 +38,7 @@ def check(facts: Facts) -> Iterator[Finding]:
 def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
     renames = database()
     declared = [symbol.name for symbol in model.symbols.variables.values() if symbol.definitions]
+    places: dict[Unit, _DimPlaces] = {}  # found once per file, for the first name that needs a DIM
     for symbol in model.symbols.variables.values():
         undeclared = [
             occurrence
@@ -55,7 +59,9 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
         declare: dict[Unit, tuple[Fix, ...]] = {}
         if not symbol.definitions and not was_keyword:
             first = min(undeclared, key=lambda use: (use.unit is Unit.PROGRAM, use.span.start))
-            declare[first.unit] = (_add_dim(model, symbol, first.unit, first.span),)
+            if first.unit not in places:
+                places[first.unit] = _dim_places(model, first.unit)
+            declare[first.unit] = (_add_dim(model, symbol, first.unit, first.span, places[first.unit]),)
         for occurrence, same_line in _by_line(model, undeclared):
             fixes = declare.get(occurrence.unit, ())
             detail = f"'{occurrence.spelling}' is not declared"
@@ -100,7 +106,7 @@ def _written_at(model: SemanticModel, unit: Unit, span: Span) -> str:
     return model.document(unit).source[span.start : span.end]
 
 
-def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span) -> Fix:
+def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span, places: _DimPlaces) -> Fix:
     """Insert ``DIM name`` on its own line with the file's other DIMs, else at the top: never inside a loop.
 
     After the last DIM outside any block above the first use, with its indentation; without one, above
@@ -109,15 +115,15 @@ def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span) -> Fi
     """
     document = model.document(unit)
     index = document.line_index
-    using = [line for line in document.placed if line.origin + line.syntax.span.start <= span.start][-1]
-    above = [line for line in document.placed if line.origin < using.origin]
-    nested = _nested_lines(model, unit)
-    dims = [line for line in above if line.number not in nested and _declares(line)]
-    if dims:
-        after = index.position(dims[-1].span(dims[-1].syntax.span).end).line
-        start, indented = index.line_start(after + 1), dims[-1].number
+    placed = document.placed
+    using = bisect_right(placed, span.start, key=_first_token) - 1
+    dims_above = bisect_left(places.dims, using)
+    if dims_above:
+        dim = placed[places.dims[dims_above - 1]]
+        after = index.position(dim.span(dim.syntax.span).end).line
+        start, indented = index.line_start(after + 1), dim.number
     else:
-        statements = [line for line in (*above, using) if line.syntax.statements or line.syntax.label is not None]
+        statements = [placed[at] for at in places.first_statements if at <= using]
         first = statements[1] if _opens_file(statements[0]) and len(statements) > 1 else statements[0]
         start, indented = index.line_start(first.number), first.number
     text = document.source
@@ -129,14 +135,50 @@ def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span) -> Fi
     return Fix(f"Declare '{symbol.name}' with DIM", (Edit(Span(start, start), declaration),))
 
 
-def _nested_lines(model: SemanticModel, unit: Unit) -> set[int]:
-    """The lines inside a block of ``unit`` (between its opener and its closer)."""
+def _first_token(line: n.PlacedLine) -> int:
+    return line.origin + line.syntax.span.start
+
+
+@dataclass(frozen=True, slots=True)
+class _DimPlaces:
+    """Where a file can take a DIM, found once per file: a search per undeclared name, in a file of
+    many unclosed blocks, took time in the square of the file's length."""
+
+    dims: list[int]  # the indices in ``placed`` of the lines with a DIM outside every block, in order
+    first_statements: list[int]  # those of its first two lines with a statement or a label
+
+
+def _dim_places(model: SemanticModel, unit: Unit) -> _DimPlaces:
+    placed = model.document(unit).placed
+    nested = _nested_ranges(model, unit)
+    dims = [at for at, line in enumerate(placed) if _declares(line) and not _inside(nested, line.number)]
+    statements = (at for at, line in enumerate(placed) if line.syntax.statements or line.syntax.label is not None)
+    return _DimPlaces(dims, list(islice(statements, 2)))
+
+
+def _nested_ranges(model: SemanticModel, unit: Unit) -> tuple[list[int], list[int]]:
+    """The lines inside a block of ``unit`` (between its opener and its closer), as the starts and ends of
+    ranges ``[start, end)`` merged and in order."""
     last = model.document(unit).line_index.position(len(model.document(unit).source)).line
-    return {
-        number
+    ranges = sorted(
+        (block.opener.line + 1, block.closer.line if block.closer is not None else last + 1)
         for block in model.structures[unit].blocks
-        for number in range(block.opener.line + 1, block.closer.line if block.closer is not None else last + 1)
-    }
+    )
+    starts: list[int] = []
+    ends: list[int] = []
+    for start, end in ranges:
+        if ends and start <= ends[-1]:
+            ends[-1] = max(ends[-1], end)
+        elif start < end:
+            starts.append(start)
+            ends.append(end)
+    return starts, ends
+
+
+def _inside(ranges: tuple[list[int], list[int]], number: int) -> bool:
+    starts, ends = ranges
+    at = bisect_right(starts, number) - 1
+    return at >= 0 and number < ends[at]
 
 
 def _declares(line: n.PlacedLine) -> bool:

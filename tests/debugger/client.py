@@ -134,11 +134,13 @@ class DapClient:
         arguments = {"source": {"path": str(self.program)}, "breakpoints": wanted}
         return self.body("setBreakpoints", arguments)["breakpoints"]
 
+    def outputs(self) -> list[dict[str, Any]]:
+        """The bodies of the output events received so far."""
+        return [event["body"] for event in self.events if event["event"] == "output"]
+
     def output(self) -> str:
         """What the program printed, from the output events received so far."""
-        return "".join(
-            e["body"]["output"] for e in self.events if e["event"] == "output" and e["body"].get("category") == "stdout"
-        )
+        return "".join(body["output"] for body in self.outputs() if body.get("category") == "stdout")
 
     def close(self) -> str:
         """End the session; the adapter's stderr. Fails if a message did not conform to the schema."""

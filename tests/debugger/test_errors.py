@@ -1,0 +1,119 @@
+"""Run-time errors stop the debugger where they happen; a request it cannot serve gets an error response."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.debugger.client import DapClient
+from tests.debugger.conftest import Debug
+
+UNHANDLED = """\
+DIM t(2)
+DIM x
+x = 1
+x = t(5)
+PRINT "never"
+"""
+
+HANDLED = """\
+DIM t(2)
+DIM x
+x = t(5)
+END
+#ONERROR
+  x = ERR
+RETURN
+"""
+
+
+def test_an_error_that_ends_the_run_stops_at_its_line_before_the_run_ends(debug: Debug) -> None:
+    client = debug(UNHANDLED)
+    stop = client.stopped()
+    assert stop["reason"] == "exception"
+    assert "2016" in stop["description"]
+    assert client.line() == 4
+    assert client.values()["x"] == "1"
+    client.body("continue", {"threadId": 1})
+    assert client.event("exited")["body"]["exitCode"] == 1
+    client.event("terminated")
+    assert "never" not in client.output()
+
+
+def test_stepping_back_from_the_error_that_ended_the_run_goes_to_the_statement_before(debug: Debug) -> None:
+    client = debug(UNHANDLED)
+    client.stopped()
+    client.step("stepBack")
+    assert client.line() == 4  # the failing statement, about to run
+    client.step("stepBack")
+    assert (client.line(), client.values()["x"]) == (3, "0")
+
+
+def test_with_every_error_chosen_an_error_onerror_handles_stops_before_the_handler_runs(debug: Debug) -> None:
+    client = debug(HANDLED, stopOnEntry=True)
+    client.stopped()
+    client.body("setExceptionBreakpoints", {"filters": ["errors", "unhandled"]})
+    client.body("continue", {"threadId": 1})
+    stop = client.stopped()
+    assert (stop["reason"], client.line()) == ("exception", 3)
+    client.step("next")
+    assert client.line() == 4
+    assert client.values()["x"] == "2016"
+
+
+def test_without_the_unhandled_filter_the_run_just_ends(debug: Debug) -> None:
+    client = debug(UNHANDLED, stopOnEntry=True)
+    client.stopped()
+    client.body("setExceptionBreakpoints", {"filters": []})
+    client.body("continue", {"threadId": 1})
+    assert client.event("exited")["body"]["exitCode"] == 1
+    ending = [body["output"] for body in client.outputs() if body["category"] == "console"]
+    assert any(line.startswith("error after") and "line 4" in line for line in ending)
+
+
+def test_requests_that_need_a_paused_program_are_refused_while_it_runs(debug: Debug) -> None:
+    client = debug("LOOP\nENDL\n")
+    for command, arguments in [("stackTrace", {"threadId": 1}), ("evaluate", {"expression": "1"}), ("next", {})]:
+        response = client.request(command, arguments)
+        assert not response["success"]
+        assert response["message"] == "the program is not paused"
+
+
+def test_an_unknown_request_and_one_before_launch_get_error_responses() -> None:
+    client = DapClient()
+    client.body("initialize", {"adapterID": "mint"})
+    unknown = client.request("goto", {"threadId": 1, "targetId": 1})
+    assert not unknown["success"] and "not supported" in unknown["message"]
+    early = client.request("setBreakpoints", {"source": {"path": "x.mnt"}, "breakpoints": []})
+    assert not early["success"] and early["message"] == "launch a program first"
+    assert "Traceback" not in client.close()
+
+
+def test_a_launch_it_cannot_start_says_why(tmp_path: Path) -> None:
+    program = tmp_path / "p.mnt"
+    program.write_text("DIM x\n", encoding="utf-8")
+    client = DapClient()
+    client.body("initialize", {"adapterID": "mint"})
+    problems = {
+        "no program": client.request("launch", {}),
+        "missing": client.request("launch", {"program": str(tmp_path / "absent.mnt")}),
+        "dialect": client.request("launch", {"program": str(program), "dialect": "v5"}),
+        "controller": client.request("launch", {"program": str(program), "controller": "euroservo"}),
+        "stimulus": client.request("launch", {"program": str(program), "stimulus": [str(tmp_path / "none.toml")]}),
+    }
+    assert not any(response["success"] for response in problems.values())
+    assert "'program'" in problems["no program"]["message"]
+    assert "cannot read the program" in problems["missing"]["message"]
+    assert "'v5' is not one of" in problems["dialect"]["message"]
+    assert "controller of the Mint v3 guide" in problems["controller"]["message"]
+    assert "none.toml" in problems["stimulus"]["message"]
+    assert "Traceback" not in client.close()
+
+
+def test_a_message_that_is_not_dap_is_reported_and_the_session_goes_on() -> None:
+    client = DapClient()
+    assert client.process.stdin is not None
+    client.process.stdin.write(b"Content-Length: 5\r\n\r\nhello")
+    client.process.stdin.flush()
+    assert "not JSON" in client.event("output")["body"]["output"]
+    assert client.body("initialize", {"adapterID": "mint"})["supportsStepBack"]
+    assert "Traceback" not in client.close()

@@ -1,0 +1,94 @@
+"""Stepping over, into and out of GOSUBs and event handlers, past a blocked statement, and pausing a running program."""
+
+from __future__ import annotations
+
+from tests.debugger.conftest import Debug
+
+CALLS = """\
+DIM x
+GOSUB outer
+x = x + 100
+END
+#outer
+  x = x + 1
+  GOSUB inner
+  x = x + 10
+RETURN
+#inner
+  x = x * 2
+RETURN
+"""
+
+
+def test_next_runs_a_gosub_through_and_step_in_enters_it(debug: Debug) -> None:
+    client = debug(CALLS, breakpoints=(2,))
+    client.stopped()
+    client.step("next")
+    assert (client.line(), client.values()["x"]) == (3, "12")  # (0 + 1) * 2 + 10
+    client.step("stepBack")
+    client.step("stepIn")
+    assert client.line() == 6
+    assert [frame["name"] for frame in client.frames()] == ["#outer", "program"]
+
+
+def test_the_stack_shows_each_gosub_with_the_line_it_was_called_from(debug: Debug) -> None:
+    client = debug(CALLS, breakpoints=(11,))
+    client.stopped()
+    frames = client.frames()
+    assert [(frame["name"], frame["line"]) for frame in frames] == [("#inner", 11), ("#outer", 7), ("program", 2)]
+    assert all(frame["source"]["name"] == "program.mnt" for frame in frames)
+
+
+def test_step_out_stops_in_the_caller_after_the_gosub(debug: Debug) -> None:
+    client = debug(CALLS, breakpoints=(11,))
+    client.stopped()
+    client.step("stepOut")
+    assert (client.line(), client.values()["x"]) == (8, "2")
+    client.step("stepOut")
+    assert (client.line(), client.values()["x"]) == (3, "12")
+
+
+HANDLED = """\
+DIM t(2)
+DIM x
+x = t(5)
+PRINT "after"
+END
+#ONERROR
+  PRINT "error "; ERR
+RETURN
+"""
+
+
+def test_step_in_follows_an_error_into_onerror_and_out_again(debug: Debug) -> None:
+    client = debug(HANDLED, breakpoints=(3,))
+    client.stopped()
+    client.step("stepIn")
+    assert client.line() == 7
+    assert [frame["name"] for frame in client.frames()] == ["#ONERROR", "program"]
+    client.step("stepOut")
+    assert client.line() == 4
+
+
+def test_next_over_a_wait_stops_once_it_has_passed(debug: Debug) -> None:
+    client = debug("DIM a\nWAIT = 30\na = 1\n", breakpoints=(2,))
+    client.stopped()
+    client.step("next")
+    assert client.line() == 3
+    assert float(client.evaluate("TIME")) >= 30
+
+
+def test_pause_stops_a_running_program_where_it_is(debug: Debug) -> None:
+    client = debug("DIM n\nLOOP\n  n = n + 1\nENDL\n")
+    client.body("pause", {"threadId": 1})
+    assert client.stopped()["reason"] == "pause"
+    assert client.line() in (2, 3, 4)
+    assert int(client.values()["n"]) >= 0
+    client.body("terminate", {})
+    client.event("terminated")
+
+
+def test_the_program_runs_as_one_thread(debug: Debug) -> None:
+    client = debug(CALLS, stopOnEntry=True)
+    client.stopped()
+    assert client.body("threads")["threads"] == [{"id": 1, "name": "program.mnt"}]

@@ -1,0 +1,83 @@
+"""What the Variables view shows of the paused controller, and what the editor may set there."""
+
+from __future__ import annotations
+
+from tests.debugger.conftest import Debug
+
+MOVE = """\
+DIM n
+DIM table(300)
+table(101) = 7
+OUT.1 = 1
+MOVEA.0 = 10 : GO.0
+PAUSE IDLE.0
+n = POS.0
+PRINT n
+"""
+
+
+def test_each_axis_shows_what_the_program_would_read_of_it(debug: Debug) -> None:
+    client = debug(MOVE, breakpoints=(7,), drives="enabled")
+    client.stopped()
+    axes = client.body("variables", {"variablesReference": client.scope("Axes")})["variables"]
+    assert axes[0]["name"] == "axis 0"
+    axis = client.variables(axes[0]["variablesReference"])
+    assert (axis["POS"], axis["VEL"], axis["IDLE"], axis["AXISERROR"]) == ("10", "0", "1", "0")
+    assert client.evaluate("POS.0 * 2") == "20"
+
+
+def test_arrays_page_their_elements_from_one(debug: Debug) -> None:
+    client = debug(MOVE, breakpoints=(7,), drives="enabled")
+    client.stopped()
+    (table,) = client.body("variables", {"variablesReference": client.scope("Arrays")})["variables"]
+    assert (table["name"], table["value"], table["indexedVariables"]) == ("table", "array(300)", 300)
+    assert client.variables(table["variablesReference"], start=99, count=3) == {
+        "(100)": "0",
+        "(101)": "7",
+        "(102)": "0",
+    }
+
+
+def test_the_io_scope_shows_outputs_as_a_bank(debug: Debug) -> None:
+    client = debug(MOVE, breakpoints=(7,), drives="enabled")
+    client.stopped()
+    io = client.variables(client.scope("I/O"))
+    assert io["OUT"].endswith("10 (2)")
+    assert io["IN"].endswith("0 (0)")
+
+
+def test_setting_an_element_and_a_comms_value_changes_what_the_program_reads(debug: Debug) -> None:
+    client = debug("DIM t(3)\nDIM s\ns = t(2) + COMMS(5)\nPRINT s\n", breakpoints=(3,))
+    client.stopped()
+    (array,) = client.body("variables", {"variablesReference": client.scope("Arrays")})["variables"]
+    client.body("setVariable", {"variablesReference": array["variablesReference"], "name": "(2)", "value": "1.5"})
+    client.body("setVariable", {"variablesReference": client.scope("Comms"), "name": "(5)", "value": "2 * 10"})
+    assert client.evaluate("COMMS(5)") == "20"
+    client.step("next")
+    assert client.values()["s"] == "21.5"
+
+
+def test_values_show_the_shortest_decimal_of_the_binary32_the_controller_holds(debug: Debug) -> None:
+    client = debug("DIM x\nx = 0.1\nx = x * 3\nPRINT x\n", breakpoints=(3,))
+    client.stopped()
+    assert client.values()["x"] == "0.1"
+    client.step("next")
+    assert client.values()["x"] == "0.3"  # binary32 0.1 * 3 rounds to binary32 0.3
+
+
+def test_a_value_that_is_not_an_element_or_not_a_number_is_refused(debug: Debug) -> None:
+    client = debug("DIM t(3)\nDIM s\ns = 1\n", breakpoints=(3,))
+    client.stopped()
+    (array,) = client.body("variables", {"variablesReference": client.scope("Arrays")})["variables"]
+    refused = client.request(
+        "setVariable", {"variablesReference": array["variablesReference"], "name": "(4)", "value": "1"}
+    )
+    assert not refused["success"] and "outside 1 to 3" in refused["message"]
+    refused = client.request(
+        "setVariable", {"variablesReference": client.scope("Variables"), "name": "s", "value": "x +"}
+    )
+    assert not refused["success"] and "Syntax error" in refused["message"]
+    refused = client.request(
+        "setVariable", {"variablesReference": client.scope("Axes"), "name": "axis 0", "value": "1"}
+    )
+    assert not refused["success"]

@@ -12,28 +12,28 @@ import random
 import re
 
 _BLOCKS = (
-    lambda r, i: [f"DIM speed{i % 30}", f"DIM target{i % 30}(20) = {r.randint(1, 99)},{r.randint(1, 99)};"],
-    lambda r, i: [
+    lambda r, i, v: [f"DIM speed{v}", f"DIM target{v}(20) = {r.randint(1, 99)},{r.randint(1, 99)};"],
+    lambda r, i, v: [
         f"SPEED[0,1] = {r.randint(10, 500)},{r.randint(10, 500)}",
         f"ACCEL = {r.randint(100, 5000)};",
-        f"MOVEA = target{i % 30}(1), target{i % 30}(2) : GO[0,1]",
+        f"MOVEA = target{v}(1), target{v}(2) : GO[0,1]",
         "PAUSE IDLE[0,1]",
     ],
-    lambda r, i: [
-        f"IF IN{i % 16} AND speed{i % 30} > {r.randint(1, 100)} DO",
+    lambda r, i, v: [
+        f"IF IN{i % 16} AND speed{v} > {r.randint(1, 100)} DO",
         f"  OUT{i % 8} = _ON : WAIT = {r.randint(10, 200)}",
         "ELSE",
-        f'  PRINT "speed ", speed{i % 30}; " at ", POS.0 USING 5,2',
+        f'  PRINT "speed ", speed{v}; " at ", POS.0 USING 5,2',
         "ENDIF",
     ],
-    lambda r, i: [
-        f"FOR speed{i % 30} = 1 TO {r.randint(2, 20)} STEP 2",
-        f"  MOVER.{i % 4} = speed{i % 30} * 1.5 + SIN {r.randint(0, 90)} : GO.{i % 4}",
+    lambda r, i, v: [
+        f"FOR speed{v} = 1 TO {r.randint(2, 20)} STEP 2",
+        f"  MOVER.{i % 4} = speed{v} * 1.5 + SIN {r.randint(0, 90)} : GO.{i % 4}",
         "  PAUSE IDLE.0",
         "NEXT",
     ],
-    lambda r, i: ["REM ---- next station ----", ""],
-    lambda r, i: [
+    lambda r, i, v: ["REM ---- next station ----", ""],
+    lambda r, i, v: [
         f"WHILE !IN{i % 16}",
         f"  JOG.1 = ADC.0 * {r.randint(1, 9)} - 127 : REM follow the joystick",
         "ENDW",
@@ -42,15 +42,19 @@ _BLOCKS = (
 )
 
 
-def mint_program(lines: int, seed: int = 2002) -> str:
-    """A well-formed Mint v4 program of exactly ``lines`` lines."""
+def mint_program(lines: int, seed: int = 2002, *, names: int = 30) -> str:
+    """A well-formed Mint v4 program of exactly ``lines`` lines.
+
+    It declares ``names`` variables and as many arrays; the default repeats lines as
+    a program of a few hundred lines does, more make most lines distinct.
+    """
     rng = random.Random(seed)
     body: list[str] = ["REM Generated benchmark program", "DIM key", "GOSUB init", "LOOP"]
     index = 0
     while len(body) < lines - 12:
         index += 1
-        body.extend("  " + text if text else text for text in rng.choice(_BLOCKS)(rng, index))
-    body[1:1] = [f"DIM speed{n}" for n in range(30)] + [f"DIM target{n}(20)" for n in range(30)]
+        body.extend("  " + text if text else text for text in rng.choice(_BLOCKS)(rng, index, index % names))
+    body[1:1] = [f"DIM speed{n}" for n in range(names)] + [f"DIM target{n}(20)" for n in range(names)]
     body = body[: lines - 8]
     body += ["  key = INKEY", "  IF key = 'Q' THEN EXIT", "ENDL", "END", "#init", "AXES[0,1,2,3]", "RETURN", "#ONERROR"]
     body += ["PRINT ERR : RETURN"]

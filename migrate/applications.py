@@ -14,6 +14,7 @@ from pathlib import Path
 
 from mintlang.cli.files import collect, is_configuration, program_as_own_configuration
 from mintlang.migrate.api import migrate
+from mintlang.migrate.mintmt import to_mintmt
 from mintlang.migrate.model import MigrationFailed
 from mintlang.migrate.report import FileEntry
 from mintlang.semantic.units import Unit
@@ -46,12 +47,22 @@ class Application:
         return [(file, role) for file, role in found if file is not None]
 
     def migrate(
-        self, controller: str, only: tuple[str, ...] | None, skip: tuple[str, ...], opt_in: tuple[str, ...]
+        self,
+        controller: str,
+        only: tuple[str, ...] | None,
+        skip: tuple[str, ...],
+        opt_in: tuple[str, ...],
+        *,
+        to: str = "v4",
     ) -> list[Migrated]:
+        """The application migrated to Mint v4 (from v3) or, ``to`` ``"mintmt"``, to MintMT (from v4)."""
         config = self.configuration.text if self.configuration is not None else None
         program = self.program.text if self.program is not None else ""
         try:
-            result = migrate(program, config=config, controller=controller, only=only, skip=skip, opt_in=opt_in)
+            if to == "mintmt":
+                result = to_mintmt(program, config=config)
+            else:
+                result = migrate(program, config=config, controller=controller, only=only, skip=skip, opt_in=opt_in)
         except MigrationFailed as failure:
             return self._failed(failure)
         except Exception as error:  # a bug outside the rules: still this application's alone

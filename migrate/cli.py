@@ -69,6 +69,14 @@ Exit status:
     type=click.Path(path_type=Path),
     help="Configuration file migrated together with the program (its variables are visible there).",
 )
+@click.option(
+    "--to",
+    "to",
+    type=click.Choice(["v4", "mintmt"]),
+    default="v4",
+    show_default=True,
+    help="The dialect to migrate to: v4 reads the files as Mint v3, mintmt reads them as Mint v4.",
+)
 @controller_option("The Mint v4 controller to migrate to.")
 @format_option(["text", "json"])
 @output_file_option("Write the diff and the report to this file instead of standard output.")
@@ -108,7 +116,8 @@ Exit status:
 )
 @drives_option("With --verify: start both runs with every drive enabled (as mint-run --drives enabled).")
 def migrate(**options: Any) -> None:
-    """Migrate Mint v3 programs (.mnt) and configuration files (.cfg) to Mint v4."""
+    """Migrate Mint v3 programs (.mnt) and configuration files (.cfg) to Mint v4, or v4 ones to MintMT
+    (--to mintmt)."""
     from mintlang.migrate.migrate_command import execute  # noqa: PLC0415 - the rules, for a migration only
 
     execute(**options)

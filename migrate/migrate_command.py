@@ -15,6 +15,7 @@ from typing import NoReturn
 
 import click
 from rich.console import Console
+from rich.markup import escape
 
 from mintlang.cli.options import refuse_quiet_and_verbose
 from mintlang.cli.settings import typed
@@ -24,6 +25,7 @@ from mintlang.migrate import leftovers, verifying
 from mintlang.migrate.api import UnknownRule, rules, select
 from mintlang.migrate.applications import Migrated, UsageError, read
 from mintlang.migrate.citations import cite
+from mintlang.migrate.mintmt import REWRITES
 from mintlang.migrate.report import render_text, report
 from mintlang.migrate.verification import Verdict
 from mintlang.migrate.verification.report import Verified
@@ -52,6 +54,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     check: bool,
     to_stdout: bool,
     config: Path | None,
+    to: str,
     controller: str,
     output_format: str,
     output_file: Path | None,
@@ -73,10 +76,12 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     """Migrate as ``migrate`` was asked to (its docstring and ``cli.EXIT_STATUS`` say what it does)."""
     refuse_quiet_and_verbose(quiet, verbose)
     if list_rules:
-        _list_rules(console(color))
+        (_list_rewrites if to == "mintmt" else _list_rules)(console(color))
         return
     try:
         mode = _mode(write=write, check=check, to_stdout=to_stdout, verify=verify)
+        if to == "mintmt":
+            _refuse_v3_options(mode, only, skip, opt_in, v3_controller)
         options = verifying.Options(scenario_paths, until_ms, v3_controller, drives)
         context = click.get_current_context()
         settings = options.settings(controller) if mode == "verify" else options.refuse(partial(typed, context))
@@ -88,7 +93,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         _fail(str(error))
     sources = [file.path for application in applications for file, _ in application.files()]
     refuse_overwriting(output_file, sources, _fail)
-    migrated = [application.migrate(controller, only or None, skip, opt_in) for application in applications]
+    migrated = [application.migrate(controller, only or None, skip, opt_in, to=to) for application in applications]
     items = [item for application in migrated for item in application]
     problems = [f"{item.entry.path}: {item.entry.failure}; left as it was" for item in items if item.entry.failure]
     _tidy(items, mode)
@@ -104,11 +109,28 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         written = write_changed(migrated)
         problems += written.problems
         items = [_unwritten(item) if item.file.path in written.unwritten else item for item in items]
-    _output(items, mode, output_format, controller, Output(output_file, quiet, verbose, color))
+    _output(items, mode, output_format, controller, Output(output_file, quiet, verbose, color, to))
     for problem in problems:
         click.echo(f"mint-migrate: {problem}", err=True)
     status = _status(items, mode, fail_on, problems)
     sys.exit(0 if status == GATE_FAILED and exit_zero else status)
+
+
+def _list_rewrites(console: Console) -> None:
+    for rewrite in REWRITES:
+        console.print(f"[bold]{rewrite.ID:<14}[/bold] {escape(rewrite.SUMMARY)}", highlight=False)
+
+
+def _refuse_v3_options(
+    mode: str | None, only: tuple[str, ...], skip: tuple[str, ...], opt_in: tuple[str, ...], v3_controller: str | None
+) -> None:
+    """``--to mintmt`` has no rules to choose, no Mint v3 original, and no ``--verify`` yet."""
+    given = {"--only": only, "--skip": skip, "--with": opt_in, "--v3-controller": v3_controller}
+    named = [flag for flag, value in given.items() if value]
+    if named:
+        raise UsageError(f"{', '.join(named)}: only when migrating from Mint v3 (--to v4)")
+    if mode == "verify":
+        raise UsageError("--verify compares a v3 original with its v4 migration: not with --to mintmt")
 
 
 def _unwritten(item: Migrated) -> Migrated:
@@ -146,10 +168,11 @@ class Output:
     quiet: bool
     verbose: bool
     color: str
+    to: str = "v4"
 
 
 def _output(items: list[Migrated], mode: str | None, output_format: str, controller: str, output: Output) -> None:
-    data = report((item.entry for item in items), controller)
+    data = report((item.entry for item in items), controller, to=output.to)
     if mode == "stdout":
         result = items[0].entry.result
         if result is not None:

@@ -149,7 +149,8 @@ def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = Fals
 
 
 def _files_table(data: Mapping[str, Any], console: Console) -> None:
-    files = Table(title=f"mint-migrate ({data['controller']})", show_edge=False)
+    target = f"to {data['to']}" if "to" in data else data["controller"]
+    files = Table(title=f"mint-migrate ({target})", show_edge=False)
     for column in ("file", "role", "status", "changes", "manual items", "unreadable lines"):
         files.add_column(column)
     for row in data["files"]:

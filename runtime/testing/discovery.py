@@ -29,17 +29,24 @@ class TestCase:
 
 @dataclass(frozen=True, slots=True)
 class Unreadable:
-    """A path given or found that could not be read: reported, and the run goes on."""
+    """A path given or found that could not be read: reported, and the run goes on.
 
-    path: Path
-    reason: str
+    ``message`` names the path, and the line and column when the reason lies at a place in the file
+    (``blob.mnt:2:1: not Mint text (a NUL byte)``, as ``mint check`` and ``mint-run`` say it).
+    """
+
+    message: str
+
+    @classmethod
+    def at(cls, path: Path, reason: str) -> Unreadable:
+        return cls(f"{path}: {reason}")
 
 
 def discover(paths: Iterable[Path]) -> tuple[list[TestCase], list[Unreadable]]:
     """The tests under ``paths`` (files or folders, searched recursively as ``mint check`` searches them), in
     path order, each once."""
     found = find(paths)
-    problems = [Unreadable(Path(error.filename), _reason(error)) for error in found.unreadable]
+    problems = [Unreadable.at(Path(error.filename), _reason(error)) for error in found.unreadable]
     cases: dict[Path, TestCase] = {}
     for program in found.files:
         case = _case(program, problems)
@@ -60,8 +67,11 @@ def _case(program: Path, problems: list[Unreadable]) -> TestCase | None:
     if scenario_name is not None:
         return TestCase(program, program.parent / scenario_name)
     try:
-        text = read_source(program).text  # refuses a FIFO or a device, which would block or never end
+        source = read_source(program)  # refuses a FIFO or a device, which would block or never end
     except OSError as error:
-        problems.append(Unreadable(program, error.strerror or str(error)))
+        problems.append(Unreadable.at(program, error.strerror or str(error)))
         return None
-    return TestCase(program, None) if _EXPECTATION.search(text) else None
+    if (binary := source.binary()) is not None:
+        problems.append(Unreadable(binary))
+        return None
+    return TestCase(program, None) if _EXPECTATION.search(source.text) else None

@@ -47,7 +47,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     cases, unreadable = discover(paths or (Path(),))
     errors = console(color, stderr=True)
     for problem in unreadable:
-        errors.print(f"mint test: {problem.path}: {problem.reason}", markup=False)
+        errors.print(f"mint test: {problem.message}", markup=False)
     if not cases:
         errors.print("mint test: no tests found (programs with REM @expect lines or a .scenario.toml beside them)")
         sys.exit(USAGE if unreadable else NO_TESTS)

@@ -113,6 +113,19 @@ def test_an_entry_named_like_a_program_that_is_not_a_file_is_reported_and_exits_
     assert "1 passed" in result.output
 
 
+def test_a_binary_file_is_unreadable_as_mint_check_and_mint_run_say_and_exits_2(tmp_path: Path) -> None:
+    binary = tmp_path / "bin.mnt"
+    binary.write_bytes(b"PRINT 1\n\0\0")  # the first NUL byte opens line 2
+    alone = _mint_test(binary)
+    assert alone.exit_code == 2
+    assert f"mint test: {binary}:2:1: not Mint text (a NUL byte)\n" in alone.output
+    _write(tmp_path, "a_passes.mnt", PASSING)
+    beside_a_test = _mint_test(tmp_path)
+    assert beside_a_test.exit_code == 2
+    assert f"mint test: {binary}:2:1: not Mint text (a NUL byte)\n" in beside_a_test.output
+    assert "1 passed" in beside_a_test.output
+
+
 def test_mintmt_directives_may_be_written_with_its_quote_comment(tmp_path: Path) -> None:
     _write(tmp_path, "quoted.mnt", "' @expect a = 2\nDim a\na = 2  ' @expect terminal is \"\"\n")
     assert _mint_test(tmp_path, "--dialect", "mintmt").exit_code == 0

@@ -11,8 +11,8 @@ from __future__ import annotations
 import re
 from functools import cache
 
+from mintlang import keyworddb  # its loader is imported by the first call of keyworddb.database()
 from mintlang.diagnostics import Diagnostic, Fix, Severity, Span
-from mintlang.keyworddb import database
 
 # The toolchain's own checks: code -> short title.
 OWN_CODES: dict[str, str] = {
@@ -58,7 +58,7 @@ def error_code(number: int) -> str:
 @cache
 def known_codes() -> frozenset[str]:
     """Every code a diagnostic can carry: ``E<nnnn>`` for the manual's errors, and the toolchain's own."""
-    errors = (error_code(number) for number in database().errors if number > 0)  # -1 is "Success"
+    errors = (error_code(number) for number in keyworddb.database().errors if number > 0)  # -1 is "Success"
     return frozenset(errors) | OWN_CODES.keys()
 
 
@@ -115,7 +115,7 @@ def mint_error(
     Whether the controller raises it when compiling or when the line runs follows
     from the number (``COMPILE_ERRORS``) unless ``at_run_time`` says otherwise.
     """
-    record = database().errors.get(code)
+    record = keyworddb.database().errors.get(code)
     message = f"{record.title}: {detail}" if record is not None else detail
     if at_run_time is None:
         at_run_time = code not in COMPILE_ERRORS

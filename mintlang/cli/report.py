@@ -9,10 +9,10 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from mintlang import keyworddb
 from mintlang.cli.terminal import Palette
 from mintlang.codes import OWN_CODES
 from mintlang.diagnostics import Diagnostic, Fix, LineIndex, Severity, Span, split_lines
-from mintlang.keyworddb import database
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -73,6 +73,14 @@ def _frame(text: str, start: int, end: int) -> tuple[str, int, int]:
     visible = _visible(text[first:last])
     before = head + visible[: start - first]
     return head + visible + tail, _cells(before), _cells(visible[start - first : end - first])
+
+
+def shortened(text: str) -> str:
+    """``text`` (source, all of it meant) as a code frame shows it: a long one cut, control characters as pictures.
+
+    For messages that quote a statement without a column, such as ``mint-run``'s stop line.
+    """
+    return _frame(text, 0, len(text))[0]
 
 
 def render_text(reports: Sequence[FileReport], console: Console, *, summary: bool = True) -> None:
@@ -155,7 +163,7 @@ def as_json(reports: Sequence[FileReport]) -> str:
 
 def _title(code: str) -> str:
     if code.startswith("E"):
-        record = database().errors.get(int(code[1:]))
+        record = keyworddb.database().errors.get(int(code[1:]))
         return record.title if record else code
     return OWN_CODES.get(code, code)
 

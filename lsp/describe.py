@@ -94,8 +94,6 @@ def v3_word(text: str, controller: ControllerProfile) -> str | None:
     else:
         return None
     lines = [f"**{text}** is not Mint v4: it is {became}"]
-    if was is not None and was.rename:
-        lines[0] += f". Write {was.rename} (the quick fix does)"
     return "\n\n".join([*lines, v3_keyword(old)] if old is not None else lines)
 
 

@@ -511,6 +511,18 @@ def test_an_old_keyword_with_a_dot_parameter_is_an_unknown_keyword_named_too() -
     assert (diagnostic.code, [fix.title for fix in diagnostic.fixes]) == ("E3007", ["Replace with HOMESPEED"])
 
 
+def test_a_v3_command_alone_on_a_line_is_an_unknown_keyword_that_says_what_it_became() -> None:
+    # DINT "has been replaced by EVENTDISABLE" (000:9228-9229), CONTON by CONTOURMODE (000:8509): v4 takes
+    # neither as a command, in a line of its own, after a colon or after THEN. Their replacements take a
+    # value (EVENTDISABLE = …, CONTOURMODE = 1), so a rename alone would be wrong: no fix is offered.
+    source = "DIM a\nDINT\nPRINT a : CONTON\nIF a THEN DINT\n"
+    assert found(source) == [("E3007", ERROR, 2), ("E3007", ERROR, 3), ("E3007", ERROR, 4)]
+    dint, conton, _ = mintlang.check(source)
+    assert covered(source, dint) == "DINT" and "replaced by EVENTDISABLE in v4" in dint.message
+    assert covered(source, conton) == "CONTON" and "replaced by CONTOURMODE in v4" in conton.message
+    assert dint.fixes == () and conton.fixes == ()
+
+
 def test_no_rename_is_offered_to_a_keyword_the_controller_lacks() -> None:
     # CURRLIMIT became CURRENTLIMIT, which the chapter 10 entry lists for MintDrive and ServoNode only
     (on_pci,) = mintlang.check("CURRLIMIT = 2\n")

@@ -49,7 +49,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             yield Finding(unit, mint_error(code, ref.spelling_span, detail, fixes=fixes))
     db = database()
     for statement in scope.facts.statements:
-        if isinstance(statement, n.BareName) and db.rename_of(statement.name.text) is None:
+        if isinstance(statement, n.BareName) and db.rename_of(statement.name.text) is None:  # else: v3_keywords
             word = statement.name.text
             fixes = _spelling_fix(word, controller, statement.name.span)
             yield Finding(unit, mint_error(3007, statement.span, _not_a_keyword(word, controller), fixes=fixes))

@@ -3,8 +3,8 @@
 The v4 guide keeps an entry for each replaced keyword ("replaced by … in Mint
 v4"); v4 reads such a word as an undeclared variable (error 3001, reported by
 the declarations rule with what the word became) or, written with an axis
-(``HMSPEED.0 = 10``), as an unknown keyword: error 3007 here, saying what it
-became and offering the rename when there is exactly one. An old label
+(``HMSPEED.0 = 10``) or alone as a command (``DINT``), as an unknown keyword: error 3007
+here, saying what it became and offering the rename when there is exactly one. An old label
 (``#FASTPOS``) compiles but is never called: W102.
 """
 
@@ -14,12 +14,13 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from mintlang.analysis.findings import Finding, mint_error, own
-from mintlang.analysis.traversal import LineScope
+from mintlang.analysis.traversal import LineScope, Use
 from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.semantic.events import EventKind, event_of
+from mintlang.syntax import nodes as n
 
 _V3 = "Mint v3"
 
@@ -75,6 +76,23 @@ def is_v3_word(word: str) -> bool:
     return constant or db.rename_of(word) is not None or db.lookup_v3(word) is not None
 
 
+def _old_word(word: str, span: Span, scope: LineScope, *, command: bool) -> Finding | None:
+    """Error 3007 for a v3 word, with the rename when renaming keeps the statement valid: a v3 command
+    whose replacement takes a value (``CONTON``: ``CONTOURMODE = 1``) is left to mint-migrate."""
+    found = successor(word, scope.controller)
+    if found is None:
+        return None
+    detail = f"'{word}' is not a Mint v4 keyword: it is {found.detail}"
+    fixes = found.fixes(span) if not command or _is_command(found.rename, scope.controller) else ()
+    return Finding(scope.unit, mint_error(3007, span, detail, fixes=fixes, from_v3=True))
+
+
+def _is_command(name: str | None, controller: ControllerProfile) -> bool:
+    keyword = database().keywords.get(name) if name is not None else None
+    attributes = keyword.attributes_for(controller.controller) if keyword is not None else None
+    return attributes is not None and attributes.command
+
+
 def each_line(scope: LineScope) -> Iterator[Finding]:
     if not scope.dialect.modern:
         return
@@ -82,11 +100,15 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
     for use in scope.facts.keyword_uses:
         if use.keyword.keyword in keywords:
             continue
-        span = use.keyword.spelling_span
-        found = successor(use.keyword.spelling, scope.controller)
-        if found is not None:
-            detail = f"'{use.keyword.spelling}' is not a Mint v4 keyword: it is {found.detail}"
-            yield Finding(use.unit, mint_error(3007, span, detail, fixes=found.fixes(span), from_v3=True))
+        finding = _old_word(use.keyword.spelling, use.keyword.spelling_span, scope, command=use.use is Use.COMMAND)
+        if finding is not None:
+            yield finding
+    for statement in scope.facts.statements:
+        # A v3 command alone (DINT, CONTON, STOPSW): a name v4 does not know, as a statement of its own.
+        if isinstance(statement, n.BareName):
+            finding = _old_word(statement.name.text, statement.name.span, scope, command=True)
+            if finding is not None:
+                yield finding
     label = scope.syntax.label
     if label is not None:
         event = event_of(label.text, Dialect.V3)

@@ -17,7 +17,7 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.migrate.model import MigrationResult
 from mintlang.migrate.verification import DEFAULT_UNTIL_MS, Verdict, Verification, compare
-from mintlang.migrate.verification.model import Application
+from mintlang.migrate.verification.model import Application, Place
 from mintlang.migrate.verification.runnable import without_expectations
 from mintlang.migrate.verification.runs import Recording, record
 from mintlang.runtime.scenario.stimulus import Scenario
@@ -42,15 +42,15 @@ def verify(
         application = Application(program or "", configuration)
         runs.append(record(application, dialect, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s))
     original, migrated = runs
-    short = _short(original, migrated)
-    comparable = not (original.refused or migrated.refused)
-    found = compare.differences(original, migrated) if comparable else []
     flagged = tuple(
         (unit, item)
         for unit, part in (("configuration", result.configuration), ("program", result))
         if part is not None
         for item in part.manual
     )
+    short = _short(original, migrated, {Place(unit, item.line) for unit, item in flagged if not item.note})
+    comparable = not (original.refused or (migrated.refused and short))  # else one of them never ran
+    found = compare.differences(original, migrated) if comparable else []
     return Verification(
         verdict=Verdict.DIVERGES if found else Verdict.INCOMPLETE if short else Verdict.EQUIVALENT,
         compared_ms=max(compare.horizon(original, migrated), 0) if comparable else 0,
@@ -76,10 +76,13 @@ def _migrated(result: MigrationResult) -> tuple[str, str | None]:
     return result.text, configuration.text if configuration is not None else None
 
 
-def _short(original: Recording, migrated: Recording) -> str | None:
-    """Why the comparison cannot cover the whole run."""
+def _short(original: Recording, migrated: Recording, flagged: set[Place]) -> str | None:
+    """Why the comparison cannot cover the whole run: the original does not compile, the migration does
+    not until a person deals with a line left for them, or the simulation stopped where the program would
+    not. A migration that does not compile on a line nobody flagged is no such reason: it diverges."""
     if original.refused:
         return f"the v4 original does not compile: {compare.stopped(original).message}"
-    if migrated.refused:
-        return f"the MintMT migration does not compile: {compare.stopped(migrated).message}"
+    stop = compare.stopped(migrated)
+    if migrated.refused and stop.line in flagged:
+        return f"the MintMT program does not compile until {stop.line}, left for a person, is done: {stop.message}"
     return original.short or migrated.short

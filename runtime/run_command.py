@@ -24,6 +24,7 @@ from rich.text import Text
 
 from mintlang.cli.files import program_as_own_configuration
 from mintlang.cli.options import refuse_quiet_and_verbose
+from mintlang.cli.report import shortened
 from mintlang.cli.settings import settings_failed
 from mintlang.cli.terminal import console
 from mintlang.controllers import ControllerProfile
@@ -417,7 +418,7 @@ def _describe_stop(result: RunResult, console: Console) -> None:
     line = Text(stop.reason.value, style=style)
     line.append(f" after {stop.time_ms} ms")
     if stop.line is not None:
-        line.append(f" at {stop.unit} line {stop.line}: {stop.statement}")
+        line.append(f" at {stop.unit} line {stop.line}: {shortened(stop.statement or '')}")
     if stop.message:
         line.append(f" — {stop.message}")
     console.print(line, highlight=False)

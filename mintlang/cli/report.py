@@ -75,6 +75,14 @@ def _frame(text: str, start: int, end: int) -> tuple[str, int, int]:
     return head + visible + tail, _cells(before), _cells(visible[start - first : end - first])
 
 
+def shortened(text: str) -> str:
+    """``text`` (source, all of it meant) as a code frame shows it: a long one cut, control characters as pictures.
+
+    For messages that quote a statement without a column, such as ``mint-run``'s stop line.
+    """
+    return _frame(text, 0, len(text))[0]
+
+
 def render_text(reports: Sequence[FileReport], console: Console, *, summary: bool = True) -> None:
     """rustc/ruff-style code frames and, with ``summary``, a closing count.
 

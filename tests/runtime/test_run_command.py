@@ -44,6 +44,16 @@ def test_a_run_time_error_exits_1_and_names_the_line(tmp_path: Path) -> None:
     assert "R2021" in result.stderr and "line 2" in result.stderr
 
 
+def test_the_stop_line_quotes_a_long_statement_cut_as_mint_check_cuts_a_line(tmp_path: Path) -> None:
+    statement = 'PRINT 1 / 0; "' + "x" * 60_000 + '"'  # divides by zero before the 60,000-character string
+    result = mint_run(write(tmp_path, "long.mnt", statement + "\n"))
+    assert result.exit_code == 1
+    # the whole statement is where the run stopped: the first 120 characters as the marked text, 60 of context
+    quoted = 'PRINT 1 / 0; "' + "x" * (180 - 14) + "…"
+    assert f"at program line 1: {quoted} — R2021" in result.stderr
+    assert len(result.stderr) < 400
+
+
 def test_a_missing_file_is_a_usage_error(tmp_path: Path) -> None:
     result = mint_run(tmp_path / "absent.mnt")
     assert result.exit_code == 2

@@ -10,8 +10,9 @@ Kept as v4 writes it, which MintMT reads too (MT-4): ``.(a+1)`` (round brackets,
 like v4's square ones, take a number or a variable), a dot form with several
 values (``REMOTEIN.2.65``), the forms a macro gives (``SPEED.AX``, ``SPEED.[0,1]``)
 and a function's dot (``COMMS`` is a function: its ``(`` is an argument list).
-Flagged: a keyword followed by ``(`` in v4, which MintMT would read as its axes,
-and ``AXES``, whose MintMT form the notes do not show.
+Flagged: ``AXES``, whose MintMT form the notes do not show. (A keyword followed
+by ``(``, which MintMT reads as its axes, makes the text MintMT already: ``api``
+leaves it as it is.)
 """
 
 from __future__ import annotations
@@ -42,9 +43,6 @@ def find(source: Source) -> Iterator[Action]:
             yield from _dot(source, line, index + 1)
         elif after.kind is _K.LSQB:
             yield from _square(line, index + 1)
-        elif after.kind is _K.LPAR:
-            reason = f"MintMT reads the bracket after {token.text} as its axes (MOVER(0)): check what it means here"
-            yield Flag(ID, after.start, reason)
 
 
 def _dot(source: Source, line: Line, dot: int) -> Iterator[Action]:

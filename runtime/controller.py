@@ -21,6 +21,7 @@ from mintlang.runtime.comms.server import HostPortServer
 from mintlang.runtime.dialects import semantics
 from mintlang.runtime.dialects.mintmt import contouring, feedrate, identifiers, outputs, triggering
 from mintlang.runtime.dialects.mintmt.buffer_low import BufferLowEvent
+from mintlang.runtime.dialects.mintmt.suspend import Suspension
 from mintlang.runtime.dialects.v3 import machine as v3_machine
 from mintlang.runtime.events import MINTDRIVE, NEXTMOVE, NEXTMOVE_MINTMT, EventClass, Events
 from mintlang.runtime.hardware import simulated
@@ -123,6 +124,7 @@ def build_controller(
         outputs.install(table)
         identifiers.install(table, motion)
         feedrate.install(table, motion)
+        Suspension(motion).register(table)
         buffer_low = BufferLowEvent(motion, events)
         buffer_low.register(table)
         monitors.append(buffer_low)

@@ -162,7 +162,19 @@ class Chain:
     deceleration: the axes then come to rest before anything else starts.
     """
 
-    __slots__ = ("axes", "buffered", "current", "end", "extendable", "live", "members", "mode", "pieces", "timing")
+    __slots__ = (
+        "axes",
+        "buffered",
+        "current",
+        "end",
+        "extendable",
+        "live",
+        "members",
+        "mode",
+        "paused",
+        "pieces",
+        "timing",
+    )
 
     def __init__(self, first: PathSegment, shape: Shape, tick: int) -> None:
         self.members = first.axes
@@ -173,6 +185,7 @@ class Chain:
         self.buffered = True
         self.live = True
         self.extendable = True
+        self.paused = False  # SUSPEND: at rest (or ramping to it) on the path, the segments ahead kept (MT-16)
         self.timing = Retimed(Plan(Profile(0.0, 0.0), tick, 0.0))
         self.end = tick
         self._plan(tick, 0.0, 0.0)
@@ -218,7 +231,7 @@ class Chain:
         return pieces[i]
 
     def demand(self, index: int, tick: int) -> float:
-        if tick >= self.end and self.buffered:
+        if tick >= self.end and self.buffered and not self.paused:
             return self.pieces[-1].shape.targets[index]
         s, _ = self.timing.sample(tick)
         piece = self._piece(s)
@@ -244,12 +257,12 @@ class Chain:
                 if self.buffered and axis.buffer and axis.buffer[0].build is segment:
                     axis.buffer.popleft()
                     axis.triggered -= 1
-        if self._speed(self.members[0].slew_speed()) != speed and tick < self.end:
+        if self._speed(self.members[0].slew_speed()) != speed and tick < self.end and not self.paused:
             self._plan(tick, s, v)
         self._extend(tick)
 
     def _extend(self, tick: int) -> None:
-        if not self.extendable:
+        if not self.extendable or self.paused:
             return
         s, v = self.timing.sample(tick)
         p = self.members[0].parameters
@@ -301,9 +314,22 @@ class Chain:
         self.buffered = False
         return self
 
+    def pause(self, tick: int, decel: float) -> None:
+        """SUSPEND: come to rest along the path at ``decel`` from ``tick`` and stay there (MT-16)."""
+        s, v = self.timing.sample(tick)
+        self.timing.replace(Plan(plan_velocity(v, 0.0, decel, decel), tick, s))
+        self.end = self.timing.plan.end
+        self.paused = True
+
+    def resume(self, tick: int) -> None:
+        """SUSPEND released: on along the path from where it is, as if the segments ahead were just joined."""
+        self.paused = False
+        s, v = self.timing.sample(tick)
+        self._plan(tick, s, v)
+
     def replan(self, tick: int, speed: float, accel: float, decel: float, sramp: float) -> Chain:
         """SPEED, ACCEL or DECEL changed: re-plan the rest of the path from where it is (MP-10, MP-36)."""
-        if tick >= self.end or not self.buffered:
+        if tick >= self.end or not self.buffered or self.paused:
             return self
         s, v = self.timing.sample(tick)
         self._lay(tick, s, v, speed=self._speed(speed), accel=accel, decel=decel, sramp=sramp)

@@ -17,8 +17,8 @@ from collections.abc import Callable
 
 from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.motion.commands import Motion
+from mintlang.runtime.motion.holding import Held, hold, release
 from mintlang.runtime.motion.moves import PlannedMove, next_profiler_tick
-from mintlang.runtime.motion.profile import plan_move, plan_velocity
 
 IGNORE, NORMAL, CANCEL, STOP = 0, 1, 2, 3
 
@@ -31,7 +31,7 @@ class StopInputs:
         self.at_edge = at_edge
         self.active: set[int] = set()  # axes whose stop input is active
         self.await_rest: set[int] = set()  # axes that call #STOP when they come to rest
-        self.held: dict[int, tuple[PlannedMove, PlannedMove]] = {}  # mode 1: (the move, its stop ramp)
+        self.held: dict[int, Held] = {}  # mode 1: the move and its stop ramp
 
     def update(self, axis: Axis, active: bool, tick: int) -> None:
         number = axis.number
@@ -71,37 +71,11 @@ class StopInputs:
         The ramp does not complete while the axis is held, so AXISMODE keeps showing the move and
         IDLE stays 0: the program waiting for the move waits for the input to clear.
         """
-        ramp = move.stop(tick, axis.parameters["ERRORDECEL"])
-        for number in move.axes:
-            other = self.motion.axes[number]
-            if other.move is move:
-                other.move = ramp
-                other.held = True
-        self.held[axis.number] = (move, ramp)
+        self.held[axis.number] = hold(self.motion, move, tick, axis.parameters["ERRORDECEL"])
 
     def _cleared(self, axis: Axis) -> None:
         held = self.held.pop(axis.number, None)
         if held is None:
             return
         self.await_rest.discard(axis.number)
-        move, ramp = held
-        tick = next_profiler_tick(self.motion.clock.now)
-        members = [self.motion.axes[number] for number in move.axes]
-        for member in members:
-            member.held = False
-        if not all(member.move in (ramp, None) for member in members):
-            return  # something else (a STOP, an error) took over the axes meanwhile
-        s, velocity = ramp.path(tick)
-        master = self.motion.axes[move.axes[0]]
-        p = master.parameters
-        if move.length is not None:
-            speed = master.slew_speed() if move.feedrate is None else move.feedrate
-            profile = plan_move(move.length - s, speed, p["ACCEL"], p["DECEL"], velocity, sramp=p["SRAMP"])
-            resumed = PlannedMove(
-                move.mode, move.axes, move.geometry, profile, tick, s, move.length, move.targets, feedrate=move.feedrate
-            )
-        else:
-            profile = plan_velocity(velocity, move.profile.final_velocity, p["ACCEL"], p["DECEL"])
-            resumed = PlannedMove(move.mode, move.axes, move.geometry, profile, tick, s, buffered=False)
-        for index, member in enumerate(members):
-            member.begin(resumed, index)
+        release(self.motion, held)

@@ -18,6 +18,7 @@ from mintlang.runtime.interpreter import generated
 from mintlang.runtime.interpreter.arrays import array_problem
 from mintlang.runtime.interpreter.expressions import Evaluate, ExpressionCompiler
 from mintlang.runtime.interpreter.generated import Emitter
+from mintlang.runtime.interpreter.release import release
 from mintlang.runtime.interpreter.vm import Interpreter, Loop, Operation, Recovery
 from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordAccess, KeywordTable, Values
 from mintlang.runtime.numbers import f32
@@ -186,6 +187,8 @@ class StatementCompiler:
             return self._line(statement)
         if reference.keyword == "PROTECT" and statement.values is None:
             return _nothing  # PROTECT <password> locks the buffer where it is stored; running it does nothing
+        if reference.keyword == "RELEASE" and statement.values is None:
+            return release(self.vm, self.expressions.semantics.dialect)  # in a configuration file (mint check)
         printer = self.expressions.semantics.printers.get(reference.keyword)
         if printer is not None and statement.values is None:
             return self._printing_keyword(statement, printer)

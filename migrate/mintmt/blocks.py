@@ -27,13 +27,15 @@ _UNSHOWN = {
 
 
 def find(source: Source) -> Iterator[Action]:
+    closed = _closed_blocks(source)
     for line, index, token in source.tokens():
         kind = token.kind
         if kind in _CLOSERS:
             yield Rewrite(ID, span(token), styled(_CLOSERS[kind], token.text))
         elif kind is _K.DO and _K.IF in line.kinds:
             if index == len(line.tokens) - 1:
-                yield Rewrite(ID, span(token), styled("Then", token.text))
+                if token.start in closed:
+                    yield Rewrite(ID, span(token), styled("Then", token.text))
             else:
                 reason = "DO is kept: MintMT's Then opens a block only at the end of its line; move what follows it"
                 yield Flag(ID, token.start, reason)
@@ -42,3 +44,16 @@ def find(source: Source) -> Iterator[Action]:
             yield Flag(ID, token.start, reason)
         elif kind in _UNSHOWN:
             yield Flag(ID, token.start, _UNSHOWN[kind])
+
+
+def _closed_blocks(source: Source) -> frozenset[int]:
+    """Where the ``DO`` of each ``IF`` block that an ``ENDIF`` closes is. An ``IF … DO`` never closed
+    is left as it is: as ``IF … Then`` it would read back as a v4 ``IF … THEN`` with no statement."""
+    open_blocks: list[int] = []
+    closed: set[int] = set()
+    for line, _, token in source.tokens():
+        if token.kind is _K.DO and _K.IF in line.kinds:
+            open_blocks.append(token.start)
+        elif token.kind is _K.ENDIF and open_blocks:
+            closed.add(open_blocks.pop())
+    return frozenset(closed)

@@ -76,6 +76,7 @@ UNCHANGED = [
     pytest.param("DEFINE ax = 0\nSPEED.ax = 5\n", id="macro-after-dot"),
     pytest.param("DIM x(3)\nx(1) = 2\n", id="array"),
     pytest.param("DIM a, b\nIF a THEN b = 1\n", id="one-line-if"),
+    pytest.param("DIM a\nIF a DO\n", id="if-block-never-closed"),  # IF a THEN would read back as a one-line IF
     pytest.param("SPEED = 5\nGO\n", id="default-axes"),
     pytest.param("", id="empty"),
 ]

@@ -4,7 +4,7 @@ The notes write one axis or channel ``MOVER(0)``, ``POS(0)``, ``OUTX(0)``, sever
 ``GO(0,1)`` and ``VECTORA(0,1) = 10, 10``, and axes that all take one value (v4's
 ``;``) ``MOVEBUFFERSIZE([0,1]) = 4;``; the project reads each the way v4 reads
 ``[0]``, ``.0`` and ``[0,1]`` (mintlang/MINTMT.md). So the bracket or dot is
-replaced and what is inside copied as written (MT-17).
+replaced and what is inside copied as written (MT-18).
 
 Kept as v4 writes it, which MintMT reads too (MT-4): ``.(a+1)`` (round brackets,
 like v4's square ones, take a number or a variable), a dot form with several

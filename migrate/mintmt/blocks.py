@@ -5,7 +5,7 @@ MintMT's ``Then`` opens a block only when it ends its line (the lexer reads it a
 v4's ``DO`` there), so a ``DO`` with a statement after it on its line is kept and
 flagged. ``WHILE … ENDW`` and ``REPEAT … UNTIL`` are kept as v4 writes them, which
 MintMT reads (MT-1), and flagged: the notes show no MintMT form of them.
-The new words take the case of the words they replace (MT-16).
+The new words take the case of the words they replace (MT-21).
 """
 
 from __future__ import annotations

@@ -3,7 +3,7 @@
 Only the word ``REM`` is replaced, so the comment's text and the spacing after it
 stay as they were. Two kinds of comment keep their ``REM``, because a tool reads
 them by that word: ``REM mint: ignore[...]`` (the checker's suppressions) and the
-migrator's own ``REM MIGRATE:`` markers (MT-15).
+migrator's own ``REM MIGRATE:`` markers (MT-19).
 """
 
 from __future__ import annotations

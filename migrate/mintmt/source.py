@@ -111,7 +111,7 @@ class Source:
 
 def styled(words: str, replaced: str) -> str:
     """``words`` (written as the notes write them, ``End Loop``) in the case of the v4 word they replace:
-    all capitals for ``ENDL``, all small letters for ``endl``, the notes' own case otherwise (MT-16)."""
+    all capitals for ``ENDL``, all small letters for ``endl``, the notes' own case otherwise (MT-21)."""
     letters = [c for c in replaced if c.isalpha()]
     if letters and all(c.isupper() for c in letters):
         return words.upper()

@@ -111,7 +111,7 @@ def test_each_change_names_its_rewrite_and_both_lines() -> None:
 
 def test_the_restocking_loop_of_the_move_buffer_note() -> None:
     """004:96-105 written in v4 by hand: the migration is the note's listing, with the v4 file's
-    capitals (MT-16) and End If for the note's EndIf (both are MintMT)."""
+    capitals (MT-21) and End If for the note's EndIf (both are MintMT)."""
     v4 = (
         "LOOP\n"
         "REM Wait until data valid flag (Comms location 1) and there is space in the buffer\n"

@@ -2,8 +2,11 @@
 
 The program's configuration file is the one ``mint-run`` pairs with it
 (``config``, else the settings or ``<name>.cfg`` beside it; ``noConfig`` runs
-none); scenario files add inputs, keys, host packets and plants. Every
-mistake is a ``LaunchError`` whose message the editor shows as it is.
+none); scenario files add inputs, keys, host packets and plants. The dialect
+and controller not given are the project's settings file's (``mint.toml``), and
+without one the dialect the program's text shows (``auto``) on the default
+controller. Every mistake is a ``LaunchError`` whose message the editor shows
+as it is.
 """
 
 from __future__ import annotations
@@ -16,12 +19,16 @@ from typing import Any
 from mintlang.controllers import ControllerProfile
 from mintlang.detection import detect_dialect
 from mintlang.dialect import Dialect
+from mintlang.runtime.controller import Controller
 from mintlang.runtime.dialects import SIMULATED
 from mintlang.runtime.hardware import machine
+from mintlang.runtime.interpreter.vm import Site
+from mintlang.runtime.run import run_source
 from mintlang.runtime.scenario import ScenarioFileError, load_scenario, merge
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
 from mintlang.semantic.units import Unit
 from mintlang.settings import SettingsError, settings_for
+from mintlang.settings.model import DEFAULT, FileSettings, Given
 from mintlang.source import read_source
 
 AUTO = "auto"  # the dialect the program's text shows (v4 or MintMT), as the editor's setting ``auto`` does
@@ -57,10 +64,14 @@ def prepare(arguments: Mapping[str, Any]) -> Application:
     if program is None:
         raise LaunchError("launch needs 'program': the path of the Mint program to debug")
     source = _read(program, "the program")
-    configuration = _configuration(program, arguments)
+    try:
+        settings = settings_for(program)
+    except SettingsError as error:
+        raise LaunchError(str(error)) from None
+    configuration = _configuration(program, arguments, settings)
     configuration_source = _read(configuration, "the configuration file") if configuration is not None else None
-    dialect = _dialect(arguments.get("dialect", AUTO), source)
-    controller = arguments.get("controller")
+    dialect = _dialect(arguments.get("dialect", _given(settings.dialect, AUTO)), source)
+    controller = arguments.get("controller", _given(settings.controller, None))
     if controller is not None and not isinstance(controller, str):
         raise LaunchError("'controller' is the name of a controller, such as nextmove-pci")
     try:
@@ -94,6 +105,36 @@ def prepare(arguments: Mapping[str, Any]) -> Application:
     )
 
 
+class _Compiled(Exception):
+    """Ends the trial compile of ``statements`` once the statements are known."""
+
+
+def statements(application: Application) -> list[Site]:
+    """The application's statements as the controller compiles them, from a run stopped before its first tick
+    (breakpoints bind to them before the program starts)."""
+    found: list[Site] = []
+
+    def compiled(controller: Controller) -> None:
+        found.extend(controller.vm.sites)
+        raise _Compiled
+
+    try:
+        run_source(
+            application.source,
+            config=application.configuration_source,
+            controller=application.controller,
+            dialect=application.dialect,
+            scenario=application.scenario,
+            on_start=compiled,
+            name=str(application.program),
+        )
+    except _Compiled:
+        pass
+    except ScenarioFileError as error:  # a REM @sim directive the scenario cannot read
+        raise LaunchError(str(error)) from None
+    return found
+
+
 def _path(value: object, name: str) -> Path | None:
     if value is None:
         return None
@@ -119,7 +160,12 @@ def _read(path: Path, role: str) -> str:
     return file.text
 
 
-def _configuration(program: Path, arguments: Mapping[str, Any]) -> Path | None:
+def _given(setting: Given[Any], fallback: object) -> Any:
+    """A setting the settings file gives, else ``fallback`` (the settings' own default is not a choice)."""
+    return str(setting.value) if setting.origin != DEFAULT else fallback
+
+
+def _configuration(program: Path, arguments: Mapping[str, Any], settings: FileSettings) -> Path | None:
     """``config``, else the configuration paired with the program as mint-run and the editor pair it."""
     named = _path(arguments.get("config"), "config")
     if arguments.get("noConfig", False):
@@ -130,10 +176,7 @@ def _configuration(program: Path, arguments: Mapping[str, Any]) -> Path | None:
         if named.resolve() == program.resolve():
             raise LaunchError(f"'config' {named} is the program itself: name the configuration file")
         return named
-    try:
-        unit, other = settings_for(program).partner(program)
-    except SettingsError as error:
-        raise LaunchError(str(error)) from None
+    unit, other = settings.partner(program)
     return other if unit is Unit.PROGRAM else None
 
 

@@ -22,11 +22,10 @@ from mintlang.runtime.debugger.breakpoints import Breakpoints
 from mintlang.runtime.debugger.evaluation import EvaluationError, shown
 from mintlang.runtime.debugger.execution import ERRORS, UNHANDLED, Execution
 from mintlang.runtime.debugger.framing import FramingError, read_message, write_message
-from mintlang.runtime.debugger.launch import Application, LaunchError, prepare
+from mintlang.runtime.debugger.launch import Application, LaunchError, prepare, statements
 from mintlang.runtime.debugger.variables import NotSettable, References, scopes
 from mintlang.runtime.interpreter.vm import Site, StopReason
-from mintlang.runtime.run import RunResult, run_source
-from mintlang.runtime.scenario import ScenarioFileError
+from mintlang.runtime.run import RunResult
 from mintlang.syntax.nodes import identity
 
 THREAD_ID = 1  # the program is one thread of control; event handlers run on it
@@ -61,10 +60,6 @@ CAPABILITIES: dict[str, Any] = {
 
 class RequestError(Exception):
     """A request that cannot be served; its message becomes the error response's."""
-
-
-class _Compiled(Exception):
-    """Stops the launch's trial compile once the statements are known."""
 
 
 class Session:
@@ -202,7 +197,7 @@ class Session:
         if self.application is not None:
             raise RequestError("this session has already launched a program")
         application = prepare(arguments)
-        self.breakpoints = Breakpoints(_sites(application))
+        self.breakpoints = Breakpoints(statements(application))
         self.spellings = _spellings(application)
         self.application = application
 
@@ -380,31 +375,6 @@ class Session:
         if execution is None or execution.point is None or execution.controller is None:
             raise RequestError("the program is not paused")
         return execution, execution.controller
-
-
-def _sites(application: Application) -> list[Site]:
-    """The application's statements as the controller compiles them, from a run stopped before its first tick."""
-    found: list[Site] = []
-
-    def compiled(controller: Controller) -> None:
-        found.extend(controller.vm.sites)
-        raise _Compiled
-
-    try:
-        run_source(
-            application.source,
-            config=application.configuration_source,
-            controller=application.controller,
-            dialect=application.dialect,
-            scenario=application.scenario,
-            on_start=compiled,
-            name=str(application.program),
-        )
-    except _Compiled:
-        pass
-    except ScenarioFileError as error:  # a REM @sim directive the scenario cannot read
-        raise LaunchError(str(error)) from None
-    return found
 
 
 def _spellings(application: Application) -> dict[str, str]:

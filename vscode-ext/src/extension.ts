@@ -2,6 +2,7 @@
 import * as vscode from "vscode";
 
 import { registerCommands } from "./commands";
+import { registerDebugger } from "./debugger";
 import { currentSettings, listFolder } from "./host";
 import { LANGUAGE_ID } from "./language";
 import { isPairedConfig } from "./pairing";
@@ -31,6 +32,7 @@ export function activate(context: vscode.ExtensionContext): void {
   context.subscriptions.push(
     output,
     ...registerCommands(output),
+    ...registerDebugger(output),
     new MintTests(output),
     vscode.workspace.onDidOpenTextDocument(pairConfig),
     vscode.workspace.onDidChangeConfiguration((event) => {

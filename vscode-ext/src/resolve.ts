@@ -5,13 +5,14 @@ import * as path from "node:path";
 
 import type { Controller, MintSettings } from "./settings";
 
-export type Tool = "mint-lsp" | "mint-run" | "mint";
-export type FileTool = Exclude<Tool, "mint-lsp" | "mint">;
+export type Tool = "mint-lsp" | "mint-run" | "mint-dap" | "mint";
+export type FileTool = Exclude<Tool, "mint-lsp" | "mint-dap" | "mint">;
 
 /** The Python module behind each tool: what Python names when mintlang is not installed. */
 export const MODULES: Readonly<Record<Tool, string>> = {
   "mint-lsp": "mintlang.lsp",
   "mint-run": "mintlang.runtime",
+  "mint-dap": "mintlang.runtime.debugger",
   mint: "mintlang",
 };
 
@@ -19,6 +20,7 @@ export const MODULES: Readonly<Record<Tool, string>> = {
 export const PYTHON_ARGUMENTS: Readonly<Record<Tool, readonly string[]>> = {
   "mint-lsp": ["-m", "mintlang.lsp"],
   "mint-run": ["-m", "mintlang.runtime"],
+  "mint-dap": ["-m", "mintlang.runtime.debugger"],
   mint: ["-m", "mintlang"],
 };
 

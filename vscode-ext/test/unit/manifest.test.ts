@@ -119,6 +119,7 @@ test("the commands are titled 'Mint: …' and offered only where they apply", ()
     "mint.migrateFile": "Mint: Migrate file to v4",
     "mint.replaceV3Keywords": "Mint: Replace v3 keywords",
     "mint.runInSimulator": "Mint: Run in simulator",
+    "mint.debugInSimulator": "Mint: Debug in simulator",
   });
   const menus = manifest.contributes.menus;
   const when = (menu: string, command: string) => menus[menu]?.find((item) => item.command === command)?.when ?? "";
@@ -130,12 +131,14 @@ test("the commands are titled 'Mint: …' and offered only where they apply", ()
   // A configuration file opened as Mint is not a program to run.
   for (const [menu, key] of [["explorer/context", "resourceLangId"], ["editor/title/run", "resourceLangId"], ["commandPalette", "editorLangId"]]) {
     assert.equal(when(menu ?? "", "mint.runInSimulator"), `${key} == mint-motion && resourceExtname =~ /^\\.mnt$/i`, menu);
+    // "Debug in simulator" sits beside it, wherever it is offered.
+    assert.equal(when(menu ?? "", "mint.debugInSimulator"), when(menu ?? "", "mint.runInSimulator"), menu);
   }
   const extension = /=~ \/(.*)\/i$/.exec(when("explorer/context", "mint.runInSimulator"))?.[1] ?? "";
   assert.match(".MNT", new RegExp(extension, "i"));
   assert.doesNotMatch(".cfg", new RegExp(extension, "i"));
 });
 
-test("the extension activates for Mint files and for workspaces that hold them", () => {
-  assert.deepEqual(manifest.activationEvents, ["onLanguage:mint-motion", "workspaceContains:**/*.mnt"]);
+test("the extension activates for Mint files, for workspaces that hold them, and to start its debugger", () => {
+  assert.deepEqual(manifest.activationEvents, ["onLanguage:mint-motion", "workspaceContains:**/*.mnt", "onDebugResolve:mint"]);
 });

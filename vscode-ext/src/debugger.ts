@@ -1,0 +1,77 @@
+// The debugger in the editor: VS Code starts mint-dap (found as the language server is) and talks DAP
+// to it; "Mint: Debug in simulator" debugs the program in the editor, as "Run in simulator" runs it.
+import * as vscode from "vscode";
+
+import { currentHost, currentSettings, listFolder } from "./host";
+import { LANGUAGE_ID } from "./language";
+import { completeLaunch, DEBUG_TYPE, launchFor, type Chosen } from "./launch";
+import { showError } from "./notify";
+import { resolveTool } from "./resolve";
+
+/** The settings the user set (in any scope), not VS Code's defaults: unset, the project's mint.toml decides. */
+function chosen(): Chosen {
+  const section = vscode.workspace.getConfiguration("mint");
+  const set = (key: string): string | undefined => {
+    const found = section.inspect<string>(key);
+    return found?.workspaceFolderValue ?? found?.workspaceValue ?? found?.globalValue;
+  };
+  return { controller: set("controller"), dialect: set("dialect"), configPairing: currentSettings().configPairing };
+}
+
+function activeProgram(): string | undefined {
+  const document = vscode.window.activeTextEditor?.document;
+  return document?.languageId === LANGUAGE_ID && document.uri.scheme === "file" ? document.uri.fsPath : undefined;
+}
+
+class Adapter implements vscode.DebugAdapterDescriptorFactory {
+  constructor(private readonly output: vscode.OutputChannel) {}
+
+  createDebugAdapterDescriptor(): vscode.ProviderResult<vscode.DebugAdapterDescriptor> {
+    const resolution = resolveTool("mint-dap", currentSettings(), currentHost());
+    if (!resolution.ok) {
+      void showError(`Debug in simulator: ${resolution.message}`, this.output);
+      return undefined;
+    }
+    return new vscode.DebugAdapterExecutable(resolution.command.command, [...resolution.command.args]);
+  }
+}
+
+class Configurations implements vscode.DebugConfigurationProvider {
+  provideDebugConfigurations(): vscode.ProviderResult<vscode.DebugConfiguration[]> {
+    return [{ ...launchFor("${file}"), name: "Debug the program in the editor" }];
+  }
+
+  resolveDebugConfigurationWithSubstitutedVariables(
+    _folder: vscode.WorkspaceFolder | undefined,
+    given: vscode.DebugConfiguration,
+  ): vscode.ProviderResult<vscode.DebugConfiguration> {
+    const completion = completeLaunch(given, activeProgram(), chosen(), listFolder);
+    if (!completion.ok) {
+      void vscode.window.showErrorMessage(`Debug in simulator: ${completion.message}`);
+      return undefined;
+    }
+    return completion.launch as vscode.DebugConfiguration;
+  }
+}
+
+async function debugInSimulator(uri: unknown): Promise<void> {
+  const file = uri instanceof vscode.Uri ? uri.fsPath : activeProgram();
+  if (file === undefined) {
+    void vscode.window.showErrorMessage("Debug in simulator: open a Mint (.mnt) file saved on disk first.");
+    return;
+  }
+  const document = vscode.workspace.textDocuments.find((open) => open.uri.fsPath === file);
+  if (document?.isDirty && !(await document.save())) {
+    return;
+  }
+  const folder = vscode.workspace.getWorkspaceFolder(vscode.Uri.file(file));
+  await vscode.debug.startDebugging(folder, launchFor(file) as vscode.DebugConfiguration);
+}
+
+export function registerDebugger(output: vscode.OutputChannel): vscode.Disposable[] {
+  return [
+    vscode.debug.registerDebugAdapterDescriptorFactory(DEBUG_TYPE, new Adapter(output)),
+    vscode.debug.registerDebugConfigurationProvider(DEBUG_TYPE, new Configurations()),
+    vscode.commands.registerCommand("mint.debugInSimulator", debugInSimulator),
+  ];
+}

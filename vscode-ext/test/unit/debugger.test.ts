@@ -1,0 +1,76 @@
+// The debugger the extension contributes: the manifest against mint-dap's launch arguments, and the
+// launch configurations the editor completes.
+import assert from "node:assert/strict";
+import { readFileSync } from "node:fs";
+import * as path from "node:path";
+import { test } from "node:test";
+
+import { completeLaunch, DEBUG_TYPE, launchFor, type Chosen } from "../../src/launch";
+import { PYTHON_ARGUMENTS } from "../../src/resolve";
+
+const EXTENSION = path.resolve(__dirname, "..", "..", "..");
+const CHECKOUT = path.resolve(EXTENSION, "..");
+
+interface Debugger {
+  type: string;
+  languages: string[];
+  configurationAttributes: { launch: { required: string[]; properties: Record<string, { type: string }> } };
+  initialConfigurations: Record<string, unknown>[];
+  configurationSnippets: { label: string; body: Record<string, unknown> }[];
+}
+const manifest = JSON.parse(readFileSync(path.join(EXTENSION, "package.json"), "utf8")) as {
+  contributes: { debuggers: Debugger[]; breakpoints: { language: string }[] };
+};
+
+const NONE: Chosen = { controller: undefined, dialect: undefined, configPairing: "<name>.cfg" };
+const folder = (names: readonly string[]) => (dir: string) => (dir === "/work/robot" ? names : []);
+
+test("the extension contributes one debugger, for Mint programs, where breakpoints can be set", () => {
+  const [debuggerEntry, ...others] = manifest.contributes.debuggers;
+  assert.equal(others.length, 0);
+  assert.equal(debuggerEntry?.type, DEBUG_TYPE);
+  assert.deepEqual(debuggerEntry?.languages, ["mint-motion"]);
+  assert.deepEqual(manifest.contributes.breakpoints, [{ language: "mint-motion" }]);
+});
+
+test("the launch attributes are exactly the arguments mint-dap reads", () => {
+  const launch = readFileSync(path.join(CHECKOUT, "runtime", "debugger", "launch.py"), "utf8");
+  const read = new Set([...launch.matchAll(/arguments\.get\("(\w+)"/g)].map((match) => match[1]));
+  const attributes = manifest.contributes.debuggers[0]?.configurationAttributes.launch;
+  assert.deepEqual(Object.keys(attributes?.properties ?? {}).sort(), [...read].sort());
+  assert.deepEqual(attributes?.required, ["program"]);
+});
+
+test("the initial configuration and the snippets launch a program with the contributed type", () => {
+  const entry = manifest.contributes.debuggers[0];
+  const bodies = [...(entry?.initialConfigurations ?? []), ...(entry?.configurationSnippets ?? []).map((snippet) => snippet.body)];
+  assert.ok(bodies.length >= 3);
+  for (const body of bodies) {
+    assert.equal(body["type"], DEBUG_TYPE);
+    assert.equal(body["request"], "launch");
+    assert.match(String(body["program"]), /file|\.mnt/);
+  }
+});
+
+test("mint-dap starts from mint.pythonPath as a module", () => {
+  assert.deepEqual(PYTHON_ARGUMENTS["mint-dap"], ["-m", "mintlang.runtime.debugger"]);
+});
+
+test("F5 with no launch.json debugs the program in the editor, stopped on entry, with its paired configuration file", () => {
+  const completion = completeLaunch({}, "/work/robot/conveyor.mnt", NONE, folder(["conveyor.mnt", "CONVEYOR.CFG"]));
+  assert.ok(completion.ok);
+  assert.deepEqual(completion.launch, { ...launchFor("/work/robot/conveyor.mnt"), config: "/work/robot/CONVEYOR.CFG" });
+});
+
+test("a launch.json entry keeps what it says and gains only the settings the user chose", () => {
+  const given = { type: "mint", request: "launch", name: "mine", program: "/work/robot/a.mnt", noConfig: true, dialect: "v3" };
+  const chosen: Chosen = { controller: "euroservo", dialect: "mintmt", configPairing: "<name>.cfg" };
+  const completion = completeLaunch(given, undefined, chosen, folder(["a.mnt", "a.cfg"]));
+  assert.ok(completion.ok);
+  assert.deepEqual(completion.launch, { ...given, controller: "euroservo" });
+});
+
+test("with nothing to debug the completion says what to open", () => {
+  assert.equal(completeLaunch({}, undefined, NONE, folder([])).ok, false);
+  assert.equal(completeLaunch({}, "/work/robot/notes.txt", NONE, folder([])).ok, false);
+});

@@ -12,11 +12,13 @@ is and starts another from the beginning (``history.py``, ``stepping.py``).
 from __future__ import annotations
 
 import threading
+from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
 
 from mintlang.runtime.controller import Controller
+from mintlang.runtime.debugger import stepping
 from mintlang.runtime.debugger.breakpoints import Breakpoints
 from mintlang.runtime.debugger.evaluation import Evaluator
 from mintlang.runtime.debugger.history import Intervention, Timeline
@@ -30,6 +32,7 @@ from mintlang.runtime.simulation import Interrupt, Limits, Stop
 
 ERRORS = "errors"  # exception filter: stop at every run-time error, even one #ONERROR handles
 UNHANDLED = "unhandled"  # exception filter: stop where an error ends the run
+RECENT = 4096  # points kept to step back to in one re-run: a few hundred kilobytes
 
 
 class Listener(Protocol):
@@ -82,6 +85,7 @@ class Execution:
         self._writes = 0
         self._logged_from = 0
         self._blocked: tuple[int, int] | None = None  # (pc, depth) of the statement that blocked last
+        self._recent: deque[Point] = deque(maxlen=RECENT)  # this run's last points where stepping may stop
         self._thread: threading.Thread | None = None
 
     # ------------------------------------------------------------ the editor's side
@@ -103,6 +107,18 @@ class Execution:
     def rerun(self, plan: Plan) -> None:
         """Start again from the beginning with ``plan`` (the editor asked to go back)."""
         self.command(_Rerun(plan))
+
+    def step_back(self, at: Point) -> None:
+        """Back to the statement before ``at`` in its frame or a caller's: one re-run when that point is among
+        the last ``RECENT`` this run passed, else two (a scan finds it first)."""
+        earlier = next(
+            (point for point in reversed(self._recent) if point.count < at.count and point.depth <= at.depth), None
+        )
+        if earlier is None:
+            self.rerun(stepping.step_back(at))
+            return
+        self.timeline.rewind(earlier.count)
+        self.rerun(stepping.reach(earlier.count, "step"))
 
     def pause(self) -> None:
         self._pause_requested = True
@@ -143,6 +159,7 @@ class Execution:
         self._writes = 0
         self._logged_from = self.timeline.points_reached  # log messages at earlier points were shown before
         self._blocked = None
+        self._recent.clear()
         application = self.application
         limits = Limits(until_ms=application.until_ms, max_wall_s=None)
         result = run_source(
@@ -194,6 +211,8 @@ class Execution:
         for intervention in self.timeline.due(point.count):
             intervention.apply(controller)
         plan = self._plan
+        if not point.resumed:
+            self._recent.append(point)
         decision = None if point.resumed else self.breakpoints.reached(pc, self.evaluator)
         if decision is not None and decision.log is not None and point.count >= self._logged_from:
             self.listener.output(decision.log, "console")

@@ -340,7 +340,7 @@ class Session:
     def step_back(self, arguments: dict[str, Any]) -> None:
         execution, _ = self._paused()
         assert execution.point is not None
-        execution.rerun(stepping.step_back(execution.point))
+        execution.step_back(execution.point)
 
     def reverse_continue(self, arguments: dict[str, Any]) -> None:
         execution, _ = self._paused()

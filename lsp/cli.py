@@ -7,6 +7,7 @@ import sys
 
 import click
 
+from mintlang.allocation import no_collection_at_exit
 from mintlang.cli.options import HELP_OPTIONS, refuse_quiet_and_verbose, verbosity_options, version_option
 
 
@@ -43,4 +44,5 @@ def lsp(port: int | None, log_level: str, log_file: str | None, quiet: bool, ver
 
 def main() -> None:
     """Entry point of the ``mint-lsp`` script."""
+    no_collection_at_exit()
     lsp()

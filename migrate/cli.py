@@ -18,6 +18,7 @@ from typing import Any
 
 import click
 
+from mintlang.allocation import no_collection_at_exit
 from mintlang.cli.options import (
     HELP_OPTIONS,
     color_option,
@@ -125,4 +126,5 @@ def migrate(**options: Any) -> None:
 
 def main() -> None:
     """Entry point of the ``mint-migrate`` script."""
+    no_collection_at_exit()
     migrate()

@@ -20,6 +20,7 @@ from typing import Any
 
 import click
 
+from mintlang.allocation import no_collection_at_exit
 from mintlang.cli.options import (
     HELP_OPTIONS,
     color_option,
@@ -148,4 +149,5 @@ def run(**options: Any) -> None:
 
 def main() -> None:
     """Entry point of the ``mint-run`` script."""
+    no_collection_at_exit()
     run()

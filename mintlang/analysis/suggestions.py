@@ -3,16 +3,37 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
-from difflib import get_close_matches
+from difflib import SequenceMatcher, get_close_matches
 
 NAME_LIKENESS = 0.8  # difflib's ratio: 'IDL' is 0.86 like 'IDLE', 'pos' 0.67 like 'post'
+_ONE_SLIP_FROM = 3  # words this long or longer are matched one slip of the finger away whatever the ratio
 
 
 def closest(word: str, known: Iterable[str], *, likeness: float = NAME_LIKENESS) -> str | None:
     """The word of ``known`` most like ``word`` (compared as given: fold the case first if it does not
-    matter), if one is at least ``likeness`` alike."""
-    found = get_close_matches(word, list(known), n=1, cutoff=likeness)
-    return found[0] if found else None
+    matter), if one is at least ``likeness`` alike or, failing that, one slip away (a letter added,
+    dropped, changed, or two neighbours swapped: 'IDEL' for 'IDLE' is only 0.75 alike)."""
+    candidates = list(known)
+    found = get_close_matches(word, candidates, n=1, cutoff=likeness)
+    if found:
+        return found[0]
+    if len(word) < _ONE_SLIP_FROM:
+        return None
+    slips = [candidate for candidate in candidates if one_slip_apart(word, candidate)]
+    return max(slips, key=lambda candidate: SequenceMatcher(None, word, candidate).ratio(), default=None)
+
+
+def one_slip_apart(word: str, other: str) -> bool:
+    """Whether one insertion, deletion, substitution or swap of neighbours turns ``word`` into ``other``."""
+    if word == other or abs(len(word) - len(other)) > 1:
+        return False
+    start = next((i for i, (a, b) in enumerate(zip(word, other, strict=False)) if a != b), min(len(word), len(other)))
+    if len(word) == len(other):
+        rest, other_rest = word[start + 1 :], other[start + 1 :]
+        swapped = word[start + 2 :] == other[start + 2 :] and word[start : start + 2] == other[start : start + 2][::-1]
+        return rest == other_rest or swapped
+    longer, shorter = (word, other) if len(word) > len(other) else (other, word)
+    return longer[start + 1 :] == shorter[start:]
 
 
 def did_you_mean(word: str) -> str:

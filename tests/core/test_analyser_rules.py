@@ -523,6 +523,14 @@ def test_a_v3_command_alone_on_a_line_is_an_unknown_keyword_that_says_what_it_be
     assert dint.fixes == () and conton.fixes == ()
 
 
+def test_a_v3_keyword_the_v4_guide_has_no_entry_for_says_what_took_its_place() -> None:
+    # GEARN (v3 guide: the gearbox numerator) has no "replaced by" entry in the v4 guide; the v3 keyword
+    # table gives FOLLOW for it. It is no misspelling of GEARING, which is gearing compensation.
+    (error,) = mintlang.check("GEARN.1 = 2\n")
+    assert error.code == "E3007" and "Mint v3 keyword; v4 has FOLLOW instead" in error.message
+    assert "GEARING" not in error.message and error.fixes == ()
+
+
 def test_no_rename_is_offered_to_a_keyword_the_controller_lacks() -> None:
     # CURRLIMIT became CURRENTLIMIT, which the chapter 10 entry lists for MintDrive and ServoNode only
     (on_pci,) = mintlang.check("CURRLIMIT = 2\n")
@@ -544,7 +552,7 @@ def test_a_mint_v3_constant_says_what_v4_calls_it() -> None:
 
 def test_a_whole_v3_keyword_used_as_a_variable_is_not_offered_a_dim() -> None:
     keyword, abbreviation = [d for d in mintlang.check("DIM x\nx = ANALOGUE1 + A2\n") if d.code == "E3001"]
-    assert "in Mint v3 it was a keyword; v4: ADC" in keyword.message and keyword.fixes == ()
+    assert "it is a Mint v3 keyword; v4 has ADC instead" in keyword.message and keyword.fixes == ()
     assert "abbreviation of ANALOGUE2" in abbreviation.message  # a2 may well be a variable
     assert [fix.title for fix in abbreviation.fixes] == ["Declare 'A2' with DIM"]
 

@@ -13,6 +13,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import mintlang
+from mintlang.analysis.suggestions import one_slip_apart
 from mintlang.diagnostics import Diagnostic, Edit
 
 
@@ -58,6 +59,10 @@ def test_a_v3_keyword_used_twice_on_a_line_is_renamed_on_the_whole_line() -> Non
         pytest.param("PAUSE IDL[0]\n", "IDL", "IDLE", id="read-in-a-statement"),
         pytest.param("SPED.0 = 10\n", "SPED", "SPEED", id="written-with-an-axis"),
         pytest.param("STOPP\n", "STOPP", "STOP", id="a-statement-of-its-own"),
+        # two letters swapped: difflib finds IDEL only 0.75 like IDLE, and 0.86 like the editor's DEL
+        pytest.param("PAUSE IDEL.0\n", "IDEL", "IDLE", id="two-letters-swapped"),
+        # other BASICs end WHILE with WEND; Mint with ENDW (v4 guide §3.7.3), not END
+        pytest.param("DIM i\nWHILE i < 3\n  i = i + 1\nWEND\nPRINT i\n", "WEND", "ENDW", id="another-basic"),
     ],
 )
 def test_a_misspelt_keyword_is_offered_the_keyword(source: str, word: str, keyword: str) -> None:
@@ -72,6 +77,30 @@ def test_a_misspelt_keyword_is_offered_the_keyword(source: str, word: str, keywo
 def test_a_word_like_no_keyword_gets_no_suggestion() -> None:
     (error,) = coded("QWXZ.1 = 2\n", "E3007")
     assert "did you mean" not in error.message and error.fixes == ()
+
+
+def test_an_editor_command_is_never_offered_in_a_program() -> None:
+    # DEL, LIST, NEW … work at the command line only (v4 guide §3.2): a program that writes one is error 2006
+    for source in ("DELL\n", "LISTT\n", "NEWW\n"):
+        (error,) = coded(source, "E3007")
+        assert all(word not in error.message for word in ("'DEL'", "'LIST'", "'NEW'")), error.message
+
+
+def _slips(word: str, other: str) -> int:
+    """The optimal string alignment distance (insertions, deletions, substitutions, neighbours swapped)."""
+    rows = [list(range(len(other) + 1))] + [[i] + [0] * len(other) for i in range(1, len(word) + 1)]
+    for i in range(1, len(word) + 1):
+        for j in range(1, len(other) + 1):
+            cost = word[i - 1] != other[j - 1]
+            rows[i][j] = min(rows[i - 1][j] + 1, rows[i][j - 1] + 1, rows[i - 1][j - 1] + cost)
+            if i > 1 and j > 1 and word[i - 1] == other[j - 2] and word[i - 2] == other[j - 1]:
+                rows[i][j] = min(rows[i][j], rows[i - 2][j - 2] + 1)
+    return rows[-1][-1]
+
+
+@given(st.text("ABCD", max_size=6), st.text("ABCD", max_size=6))
+def testone_slip_apart_is_an_alignment_distance_of_one(word: str, other: str) -> None:
+    assert one_slip_apart(word, other) == (_slips(word, other) == 1)
 
 
 def test_a_keyword_of_another_controller_is_not_offered() -> None:

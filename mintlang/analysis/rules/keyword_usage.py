@@ -17,6 +17,7 @@ from collections.abc import Iterator
 from functools import cache
 
 from mintlang.analysis.findings import Finding, mint_error
+from mintlang.analysis.rules.v3_keywords import successor
 from mintlang.analysis.suggestions import closest, did_you_mean
 from mintlang.analysis.traversal import LineScope, Use
 from mintlang.controllers import profile
@@ -55,20 +56,25 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             yield Finding(unit, mint_error(3007, statement.span, _not_a_keyword(word, controller), fixes=fixes))
 
 
+# Block words of other BASICs, which Mint spells otherwise (3.7.3: a WHILE loop ends with ENDW).
+_OTHER_BASICS = {"WEND": "ENDW", "ENDWHILE": "ENDW"}
+
+
 @cache
 def _keywords_of(controller: Controller) -> tuple[str, ...]:
-    """The keywords ``controller`` knows, by their full names."""
+    """The keywords a program for ``controller`` can use, by their full names (not the editor's commands)."""
     return tuple(
         name
         for name, keyword in database().keywords.items()
-        if not keyword.controllers or controller in keyword.controllers
+        if (not keyword.controllers or controller in keyword.controllers)
+        and keyword.kind is not KeywordKind.COMMAND_LINE
     )
 
 
 @cache
 def _keyword_like(word: str, controller: Controller) -> str | None:
     """The keyword of ``controller`` that ``word`` (upper case) is most likely a misspelling of."""
-    return closest(word, _keywords_of(controller))
+    return _OTHER_BASICS.get(word) or closest(word, _keywords_of(controller))
 
 
 def _not_a_keyword(word: str, controller: Controller) -> str:
@@ -92,7 +98,7 @@ def _verdict(
     db = database()
     keyword = db.keywords_of(dialect).get(name)
     if keyword is None:
-        if db.rename_of(spelling) is not None:
+        if dialect.modern and successor(spelling, profile(controller)) is not None:
             return None  # an old v3 keyword: the v3-keyword rule names its replacement
         return 3007, _not_a_keyword(spelling, controller)
     if keyword.kind is KeywordKind.COMMAND_LINE:

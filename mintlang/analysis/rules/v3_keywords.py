@@ -61,6 +61,10 @@ def successor(word: str, controller: ControllerProfile) -> Successor | None:
         if new in _OTHER_UNITS:
             return Successor(f"{detail}; {_OTHER_UNITS[new]} (mint-migrate converts)", None, whole)
         return Successor(detail, new, whole)
+    old = db.lookup_v3(word)
+    if old is not None and old.name == word.upper() and old.v4_names:  # replaced, but the v4 guide has no entry
+        instead = " or ".join(old.v4_names)
+        return Successor(f"a {_V3} keyword; v4 has {instead} instead (mint-migrate converts)", None, True)
     constant = db.v3_constants.get(word.upper())
     if constant is not None and word.startswith("_"):
         if constant.v4_name:

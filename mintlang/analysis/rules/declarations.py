@@ -69,10 +69,9 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
             if was is not None:
                 detail += f": it is {was.detail}"
                 fixes = (_replace_each(written, was.rename), *fixes) if was.rename and written else fixes
-            elif old is not None:
+            elif old is not None:  # an abbreviation: a whole v3 keyword has a successor
                 v4 = ", ".join(old.v4_names) if old.v4_names else "nothing"
-                what = "a keyword" if was_keyword else f"the abbreviation of {old.name}"
-                detail += f" (in Mint v3 it was {what}; v4: {v4}, see mint-migrate)"
+                detail += f" (in Mint v3 it was the abbreviation of {old.name}; v4: {v4}, see mint-migrate)"
             elif symbol.definitions:
                 detail += " (its DIM comes later: declarations must come first)"
             elif (close := closest(occurrence.spelling, declared)) is not None:

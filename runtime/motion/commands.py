@@ -10,6 +10,7 @@ import math
 from collections.abc import Callable, Sequence
 
 from mintlang.controllers import ControllerProfile
+from mintlang.keyworddb.model import Controller
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer, per_channel
@@ -195,6 +196,8 @@ class Motion:
             move = axis.move
             if move is not None and (move.mode not in (MD_JOG, MD_LINEAR) or len(move.axes) > 1):
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "JOG cannot blend from this move")
+            if self.profile.controller is Controller.MINTDRIVE and not _jogs_unblended(axis):
+                raise MintError(MOTION_IN_PROGRESS, axis.number, "MintDrive jogs only an idle or jogging axis")
         start = next_profiler_tick(self.clock.now)
         for axis, value in pairs:
             speed = value * axis.scale
@@ -495,3 +498,11 @@ class Motion:
             if len(request.axes) > 1 and request.targets is not None:
                 return math.dist(request.targets, [self.axes[number].demand for number in request.axes])
         return axis.remaining()
+
+
+def _jogs_unblended(axis: Axis) -> bool:
+    """Whether a JOG starts without blending: MintDrive has no blended moves, so the axis must be idle or
+    jogging, with no move loaded behind (000:12709-12712)."""
+    move = axis.move
+    jogging = move is not None and move.mode == MD_JOG
+    return not axis.buffer and (jogging or not axis.busy())

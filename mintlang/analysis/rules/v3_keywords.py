@@ -62,7 +62,9 @@ def successor(word: str, controller: ControllerProfile) -> Successor | None:
             return Successor(f"{detail}; {_OTHER_UNITS[new]} (mint-migrate converts)", None, whole)
         return Successor(detail, new, whole)
     old = db.lookup_v3(word)
-    if old is not None and old.name == word.upper() and old.v4_names:  # replaced, but the v4 guide has no entry
+    if old is not None and old.name == word.upper():  # the v4 guide has no entry for it
+        if not old.v4_names:
+            return Successor(f"a {_V3} keyword with no v4 equivalent", None, True)
         instead = " or ".join(old.v4_names)
         return Successor(f"a {_V3} keyword; v4 has {instead} instead (mint-migrate converts)", None, True)
     constant = db.v3_constants.get(word.upper())

@@ -1,0 +1,108 @@
+"""Going back is re-running: every earlier point, reached again, holds the state the first run had there.
+
+In-process, on generated programs that wait, move axes, read keys and inputs
+changing on a schedule and take timer events (``tests/runtime/programs.py``):
+the state at each stop of a forward walk equals the state at the same point
+reached again by a re-run, whether the point is found among the run's recent
+points or by a scan from the start.
+"""
+
+from __future__ import annotations
+
+import queue
+import tempfile
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, note, settings
+
+from mintlang.runtime.debugger import execution as execution_module
+from mintlang.runtime.debugger import stepping
+from mintlang.runtime.debugger.breakpoints import Breakpoints
+from mintlang.runtime.debugger.execution import Execution
+from mintlang.runtime.debugger.launch import prepare, statements
+from mintlang.runtime.observation import axis_state
+from mintlang.runtime.run import RunResult
+from tests.runtime.programs import UNTIL_MS, Program, timed_programs
+
+STOPS = 12  # forward stops recorded per program: each step back is a re-run, so the walk stays short
+TIMEOUT_S = 60
+
+
+class Harness:
+    """A debugger without an editor: the test waits for each stop itself."""
+
+    def __init__(self, source: str, folder: Path) -> None:
+        path = folder / "generated.mnt"
+        path.write_text(source, encoding="utf-8")
+        application = prepare({"program": str(path), "untilMs": UNTIL_MS, "dialect": "v4", "noConfig": True})
+        self.execution = Execution(application, Breakpoints(statements(application)), self)
+        self.reports: queue.Queue[str] = queue.Queue()
+
+    def stopped(self, reason: str, description: str | None) -> None:
+        self.reports.put(reason)
+
+    def output(self, text: str, category: str) -> None:
+        pass
+
+    def finished(self, result: RunResult | None, problem: str | None) -> None:
+        self.reports.put("finished")
+
+    def wait(self) -> str:
+        return self.reports.get(timeout=TIMEOUT_S)
+
+    def state(self) -> tuple[object, ...]:
+        """Everything a stop shows: the point, the variables and arrays, the time, each axis and the I/O."""
+        execution = self.execution
+        controller = execution.controller
+        assert controller is not None and execution.point is not None
+        vm = controller.vm
+        axes = tuple(axis_state(axis) for axis in controller.axes[:2])
+        io = (controller.io.active, controller.io.out)
+        return execution.point, tuple(vm.scalars), tuple(map(tuple, vm.arrays)), controller.clock.now, axes, io
+
+
+def _forward(harness: Harness, stops: int) -> list[tuple[object, ...]]:
+    """The state at each of the first ``stops`` stops of a walk by ``stepIn`` from the entry (fewer if it ends)."""
+    execution = harness.execution
+    execution.start(stepping.entry())
+    seen = []
+    while harness.wait() != "finished":
+        seen.append(harness.state())
+        if len(seen) == stops:
+            break
+        assert execution.point is not None
+        execution.resume(stepping.step_in(execution.point))
+    return seen
+
+
+def _walk_and_return(program: Program) -> None:
+    note(program.source)
+    with tempfile.TemporaryDirectory() as folder:
+        forward = _forward(Harness(program.source, Path(folder)), STOPS)
+        harness = Harness(program.source, Path(folder))  # paused at the last stop, however the first walk ended
+        assert _forward(harness, len(forward)) == forward
+        execution = harness.execution
+        for earlier in reversed(forward[:-1]):
+            assert execution.point is not None
+            execution.step_back(execution.point)
+            assert harness.wait() in ("step", "entry")
+            assert harness.state() == earlier
+        execution.terminate()
+
+
+property_test = settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+
+
+@property_test
+@given(program=timed_programs())
+def test_each_step_back_reaches_the_state_the_forward_walk_had_there(program: Program) -> None:
+    _walk_and_return(program)
+
+
+@property_test
+@given(program=timed_programs())
+def test_stepping_back_by_a_scan_from_the_start_reaches_the_same_states(program: Program) -> None:
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(execution_module, "RECENT", 1)  # nothing recent to go back to: every step back scans
+        _walk_and_return(program)

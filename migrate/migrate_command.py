@@ -81,10 +81,10 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     try:
         mode = _mode(write=write, check=check, to_stdout=to_stdout, verify=verify)
         if to == "mintmt":
-            _refuse_v3_options(mode, only, skip, opt_in, v3_controller)
+            _refuse_v3_options(only, skip, opt_in, v3_controller)
         options = verifying.Options(scenario_paths, until_ms, v3_controller, drives)
         context = click.get_current_context()
-        settings = options.settings(controller) if mode == "verify" else options.refuse(partial(typed, context))
+        settings = options.settings(controller, to) if mode == "verify" else options.refuse(partial(typed, context))
         select(only or None, skip, opt_in)
         applications = read(paths, config)
         if mode == "stdout" and sum(len(application.files()) for application in applications) > 1:
@@ -100,7 +100,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     if settings is not None:
         verified, failed = verifying.verify_all(migrated, settings)
         with destination(output_file, _fail) as stream:
-            verifying.output(verified, output_format, console(color, file=stream), quiet=quiet)
+            verifying.output(verified, output_format, console(color, file=stream), quiet=quiet, to=to)
         for problem in [*problems, *failed]:
             click.echo(f"mint-migrate: {problem}", err=True)
         status = _verify_status(verified, fail_on, [*problems, *failed])
@@ -122,15 +122,13 @@ def _list_rewrites(console: Console) -> None:
 
 
 def _refuse_v3_options(
-    mode: str | None, only: tuple[str, ...], skip: tuple[str, ...], opt_in: tuple[str, ...], v3_controller: str | None
+    only: tuple[str, ...], skip: tuple[str, ...], opt_in: tuple[str, ...], v3_controller: str | None
 ) -> None:
-    """``--to mintmt`` has no rules to choose, no Mint v3 original, and no ``--verify`` yet."""
+    """``--to mintmt`` has no rules to choose and no Mint v3 original."""
     given = {"--only": only, "--skip": skip, "--with": opt_in, "--v3-controller": v3_controller}
     named = [flag for flag, value in given.items() if value]
     if named:
         raise UsageError(f"{', '.join(named)}: only when migrating from Mint v3 (--to v4)")
-    if mode == "verify":
-        raise UsageError("--verify compares a v3 original with its v4 migration: not with --to mintmt")
 
 
 def _unwritten(item: Migrated) -> Migrated:

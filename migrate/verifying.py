@@ -16,8 +16,9 @@ from rich.console import Console
 
 from mintlang.dialect import Dialect
 from mintlang.migrate.applications import Migrated, UsageError
+from mintlang.migrate.mintmt.verification import verify as to_mintmt_verified
 from mintlang.migrate.model import MigrationResult
-from mintlang.migrate.verification import DEFAULT_UNTIL_MS, V3_DEFAULT, verify
+from mintlang.migrate.verification import DEFAULT_UNTIL_MS, V3_DEFAULT, Verification, verify
 from mintlang.migrate.verification import report as verification_report
 from mintlang.migrate.verification.report import Verified
 from mintlang.runtime.hardware import machine
@@ -32,6 +33,7 @@ class Settings:
     controller: str
     scenario: Scenario
     until_ms: int
+    to: str = "v4"  # "mintmt": the originals are Mint v4 on ``controller``, the migrations MintMT
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,19 +45,21 @@ class Options:
     v3_controller: str | None
     drives: str | None
 
-    def settings(self, controller: str) -> Settings:
+    def settings(self, controller: str, to: str = "v4") -> Settings:
         """The settings, with the scenario files read; one that cannot be read or used is a ``UsageError``."""
         v3_controller = self.v3_controller or V3_DEFAULT
         scenario = Scenario(drives=(DrivesEnabled(),)) if self.drives == "enabled" else Scenario()
-        simulated = machine(v3_controller, Dialect.V3)  # the stimulus is written for the v3 original
+        # the stimulus is written for the original: v3 on its controller, or v4 on the target's (--to mintmt)
+        original = (controller, Dialect.V4) if to == "mintmt" else (v3_controller, Dialect.V3)
+        simulated = machine(*original)
         for path in self.scenario_paths:
             try:
-                scenario = merge(scenario, load_scenario(path, simulated, Dialect.V3))
+                scenario = merge(scenario, load_scenario(path, simulated, original[1]))
             except ScenarioFileError as error:
                 raise UsageError(str(error).replace("\n", "; ")) from None
             except OSError as error:
                 raise UsageError(f"cannot read {path}: {error.strerror or error}") from None
-        return Settings(v3_controller, controller, scenario, self.until_ms or DEFAULT_UNTIL_MS)
+        return Settings(v3_controller, controller, scenario, self.until_ms or DEFAULT_UNTIL_MS, to)
 
     def refuse(self, typed: Callable[[str], bool]) -> None:
         """Without ``--verify``: any of its options typed on the command line is a ``UsageError``; a settings
@@ -77,19 +81,27 @@ def verify_all(migrated: list[list[Migrated]], settings: Settings) -> tuple[list
             continue  # its failure is reported with the migration's
         paths = {item.entry.role: item.entry.path for item in files}
         try:
-            found = verify(
-                result,
-                v3_controller=settings.v3_controller,
-                controller=settings.controller,
-                scenario=settings.scenario,
-                until_ms=settings.until_ms,
-            )
+            found = _verify(result, settings)
         except ScenarioFileError as error:  # a REM @sim line of the program, which the v3 run reads first
             program = paths.get("program") or paths.get("configuration") or ""
             problems += [str(replace(mistake, source=program)) for mistake in error.errors]
             continue
         verified.append(Verified(paths.get("program"), paths.get("configuration"), found))
     return verified, problems
+
+
+def _verify(result: MigrationResult, settings: Settings) -> Verification:
+    if settings.to == "mintmt":
+        return to_mintmt_verified(
+            result, controller=settings.controller, scenario=settings.scenario, until_ms=settings.until_ms
+        )
+    return verify(
+        result,
+        v3_controller=settings.v3_controller,
+        controller=settings.controller,
+        scenario=settings.scenario,
+        until_ms=settings.until_ms,
+    )
 
 
 def _whole(files: list[Migrated]) -> MigrationResult | None:
@@ -104,11 +116,12 @@ def _whole(files: list[Migrated]) -> MigrationResult | None:
     return MigrationResult("", "", (), (), {}, configuration=configuration)
 
 
-def output(verified: list[Verified], output_format: str, console: Console, *, quiet: bool) -> None:
+def output(verified: list[Verified], output_format: str, console: Console, *, quiet: bool, to: str = "v4") -> None:
     """The report on ``console`` (standard output or ``--output-file``); ``quiet`` leaves out what was not
     verified and the totals."""
-    data = verification_report.report(verified)
+    sides = verification_report.V4_TO_MINTMT if to == "mintmt" else verification_report.V3_TO_V4
+    data = verification_report.report(verified, sides)
     if output_format == "json":
         console.file.write(json.dumps(data, indent=2, ensure_ascii=False) + "\n")
     else:
-        verification_report.render_text(data, console, quiet=quiet)
+        verification_report.render_text(data, console, quiet=quiet, sides=sides)

@@ -17,7 +17,7 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.migrate.model import MigrationResult
 from mintlang.migrate.verification import DEFAULT_UNTIL_MS, Verdict, Verification, compare
-from mintlang.migrate.verification.model import Application, Place
+from mintlang.migrate.verification.model import DEFAULT_WALL_S, Application, Place
 from mintlang.migrate.verification.runnable import without_expectations
 from mintlang.migrate.verification.runs import Recording, record
 from mintlang.runtime.scenario.stimulus import Scenario
@@ -29,7 +29,7 @@ def verify(
     controller: Controller | str = Controller.NEXTMOVE_PCI,
     scenario: Scenario | None = None,
     until_ms: int = DEFAULT_UNTIL_MS,
-    max_wall_s: float | None = None,
+    max_wall_s: float | None = DEFAULT_WALL_S,
 ) -> Verification:
     """Compare the v4 application ``result`` was migrated from with the MintMT one it gives, each run on
     ``controller`` for at most ``until_ms`` simulated ms with ``scenario`` as the stimulus (its

@@ -51,27 +51,34 @@ def headline(verification: Verification) -> str:
     return f"{kind} at {found.time_ms} ms: {found.what}"
 
 
-def report(verified: Iterable[Verified]) -> dict[str, Any]:
-    """The report as plain data (what ``--verify --format json`` prints)."""
-    rows = [_application(item) for item in verified]
+# The two runs as the report names them: the original's dialect, then the migration's.
+V3_TO_V4 = ("v3", "v4")
+V4_TO_MINTMT = ("v4", "mintmt")
+
+
+def report(verified: Iterable[Verified], sides: tuple[str, str] = V3_TO_V4) -> dict[str, Any]:
+    """The report as plain data (what ``--verify --format json`` prints), each run's fields named after
+    its dialect (``sides``; a ``Verification``'s ``v3`` fields are the original's, ``v4`` the migration's)."""
+    rows = [_application(item, sides) for item in verified]
     verdicts = Counter(row["verdict"] for row in rows)
     return {"applications": rows, "totals": {verdict.value: verdicts[verdict.value] for verdict in Verdict}}
 
 
-def _application(item: Verified) -> dict[str, Any]:
+def _application(item: Verified, sides: tuple[str, str]) -> dict[str, Any]:
     verification = item.verification
+    original, migrated = sides
     return {
         "program": item.program,
         "configuration": item.configuration,
-        "v3_controller": verification.v3_controller,
-        "v4_controller": verification.v4_controller,
+        f"{original}_controller": verification.v3_controller,
+        f"{migrated}_controller": verification.v4_controller,
         "verdict": verification.verdict.value,
         "summary": headline(verification),
         "compared_ms": verification.compared_ms,
         "incomplete": verification.short,
-        "divergence": _divergence(item, verification.divergence),
-        "differences": [_divergence(item, found) for found in verification.differences],
-        "stopped": {"v3": _stopped(item, verification.v3_stop), "v4": _stopped(item, verification.v4_stop)},
+        "divergence": _divergence(item, verification.divergence, sides),
+        "differences": [_divergence(item, found, sides) for found in verification.differences],
+        "stopped": {original: _stopped(item, verification.v3_stop), migrated: _stopped(item, verification.v4_stop)},
         "not_verified": [_manual(item, unit, manual) for unit, manual in verification.not_verified],
         "disabled": [{"file": item.path(place), "line": place.line} for place in verification.disabled],
     }
@@ -81,7 +88,7 @@ def _side(item: Verified, value: str, place: Place | None) -> dict[str, Any]:
     return {"value": value, "file": item.path(place), "line": place.line if place is not None else None}
 
 
-def _divergence(item: Verified, found: Divergence | None) -> dict[str, Any] | None:
+def _divergence(item: Verified, found: Divergence | None, sides: tuple[str, str]) -> dict[str, Any] | None:
     if found is None:
         return None
     return {
@@ -89,8 +96,8 @@ def _divergence(item: Verified, found: Divergence | None) -> dict[str, Any] | No
         "what": found.what,
         "detail": found.detail,
         "timing_only": found.timing_only,
-        "v3": _side(item, found.v3, found.v3_line),
-        "v4": _side(item, found.v4, found.v4_line),
+        sides[0]: _side(item, found.v3, found.v3_line),
+        sides[1]: _side(item, found.v4, found.v4_line),
     }
 
 
@@ -116,18 +123,21 @@ def _manual(item: Verified, unit: str, manual: ManualItem) -> dict[str, Any]:
     }
 
 
-def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = False) -> None:
+def render_text(
+    data: Mapping[str, Any], console: Console, *, quiet: bool = False, sides: tuple[str, str] = V3_TO_V4
+) -> None:
     """Per application: the verdict, the first difference with each run's line, what was not verified (not
-    when ``quiet``); then the totals (not when ``quiet``)."""
+    when ``quiet``); then the totals (not when ``quiet``). ``sides`` names the runs, as ``report`` did."""
+    migrated = sides[1]
     for row in data["applications"]:
         name = escape(row["program"] or row["configuration"])
         found = row["divergence"]
         detail = f" ({escape(found['detail'])})" if found is not None and found["detail"] else ""
         console.print(f"{name}: [bold]{escape(row['summary'])}[/bold]{detail}")
-        for side in ("v3", "v4") if found is not None else ():
-            console.print(f"  {side}: {escape(found[side]['value'])}  {_where(found[side], side)}")
+        for side in sides if found is not None else ():
+            console.print(f"  {side}: {escape(found[side]['value'])}  {_where(found[side], side == migrated)}")
         for other in row["differences"][1:]:
-            values = f"v3 {escape(other['v3']['value'])}, v4 {escape(other['v4']['value'])}"
+            values = ", ".join(f"{side} {escape(other[side]['value'])}" for side in sides)
             timing = ", timing only" if other["timing_only"] else ""
             console.print(f"  also differs: {escape(other['what'])} at {other['time_ms']} ms ({values}{timing})")
         if quiet:
@@ -137,17 +147,17 @@ def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = Fals
             reason = escape(manual["reason"])
             console.print(f"  not verified: {where}: [bold]{manual['rule']}[/bold] {reason}", style="dim")
         for place in row["disabled"]:
-            console.print(f"  disabled for the v4 run: {escape(place['file'])}:{place['line']} (migrated)", style="dim")
+            where = f"{escape(place['file'])}:{place['line']}"
+            console.print(f"  disabled for the {migrated} run: {where} (migrated)", style="dim")
     if not quiet:
         console.print(summary(data["totals"]))
 
 
-def _where(told: Mapping[str, Any], side: str) -> str:
-    """``at demo.mnt:7`` for the v3 file, ``at migrated demo.mnt:9`` for the v4 one."""
+def _where(told: Mapping[str, Any], migrated: bool) -> str:
+    """``at demo.mnt:7`` for the original file, ``at migrated demo.mnt:9`` for the migrated one."""
     if told["line"] is None:
         return ""
-    migrated = "migrated " if side == "v4" else ""
-    return f"at {migrated}{escape(told['file'])}:{told['line']}"
+    return f"at {'migrated ' if migrated else ''}{escape(told['file'])}:{told['line']}"
 
 
 def summary(totals: Mapping[str, int]) -> str:

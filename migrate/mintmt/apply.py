@@ -30,7 +30,7 @@ def apply(source: Source, actions: Iterable[Action]) -> FileOutcome:
     """``source`` with ``actions`` done: each rewrite, and each flag's marker (once per line and text)."""
     text = source.text
     index = LineIndex(text)
-    edits = [Edit(action.rule, action.span, action.text) for action in actions if isinstance(action, Rewrite)]
+    edits = [action for action in actions if isinstance(action, Rewrite)]
     markers = _markers(source, index, [action for action in actions if isinstance(action, Flag)])
     ordered = sorted([*edits, *markers], key=lambda edit: (edit.span.start, edit.span.end))
     history = History()

@@ -14,17 +14,13 @@ from functools import cached_property
 
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
+from mintlang.migrate.history import Edit
 from mintlang.syntax.lexer import LexedLine, lex
 from mintlang.syntax.tokens import Token, TokenKind
 
-
-@dataclass(frozen=True, slots=True)
-class Rewrite:
-    """``text`` in place of ``span`` of the v4 text (an empty span inserts), asked for by ``rule``."""
-
-    rule: str
-    span: Span
-    text: str
+# ``text`` in place of ``span`` of the v4 text (an empty span inserts), asked for by ``rule``: the
+# v3 -> v4 engine's edit, which ``History`` maps back to the original.
+Rewrite = Edit
 
 
 @dataclass(frozen=True, slots=True)

@@ -18,7 +18,7 @@ from mintlang.keyworddb.model import Controller
 from mintlang.migrate.model import MigrationResult
 from mintlang.migrate.verification import DEFAULT_UNTIL_MS, Verdict, Verification, compare
 from mintlang.migrate.verification.model import DEFAULT_WALL_S, Application, Place
-from mintlang.migrate.verification.runnable import without_expectations
+from mintlang.migrate.verification.runnable import flagged_places, without_expectations
 from mintlang.migrate.verification.runs import Recording, record
 from mintlang.runtime.scenario.stimulus import Scenario
 
@@ -48,7 +48,7 @@ def verify(
         if part is not None
         for item in part.manual
     )
-    short = _short(original, migrated, {Place(unit, item.line) for unit, item in flagged if not item.note})
+    short = _short(original, migrated, flagged_places(result))
     comparable = not (original.refused or (migrated.refused and short))  # else one of them never ran
     found = compare.differences(original, migrated) if comparable else []
     return Verification(

@@ -90,8 +90,9 @@ class DigitalIO:
     # --------------------------------------------------------------- keywords
 
     def register(self, table: KeywordTable) -> None:
-        table.register("IN", read=self._read_in)
-        table.register("INSTATE", read=self._read_instate)
+        # inputs change only with the world (levels scheduled, position inputs), whose next change _watch reports
+        table.register("IN", read=self._read_in, complete_horizon=True)
+        table.register("INSTATE", read=self._read_instate, complete_horizon=True)
         for name, attribute in (
             ("INPUTACTIVELEVEL", "active_level"),
             ("INPUTMODE", "edge_mode"),

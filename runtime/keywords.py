@@ -38,6 +38,9 @@ class KeywordAccess:
     command: Command | None = None
     array_command: ArrayCommand | None = None
     indexed_write: IndexedWriter | None = None
+    # The reader lowers ``clock.horizon`` to the first tick at which anything (the world, an axis, time) may
+    # change what it returns, not only time: a PAUSE reading nothing else sleeps until then (``vm.run_slice``).
+    complete_horizon: bool = False
 
 
 class KeywordTable:
@@ -56,10 +59,11 @@ class KeywordTable:
         command: Command | None = None,
         array_command: ArrayCommand | None = None,
         indexed_write: IndexedWriter | None = None,
+        complete_horizon: bool = False,
     ) -> None:
         if name in self._entries:
             raise ValueError(f"keyword {name} registered twice")
-        self._entries[name] = KeywordAccess(read, write, command, array_command, indexed_write)
+        self._entries[name] = KeywordAccess(read, write, command, array_command, indexed_write, complete_horizon)
 
     def replace(self, name: str, *, write: Writer) -> None:
         """Give a registered keyword another writer: a dialect's layer wrapping the v4 one."""

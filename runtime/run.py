@@ -171,6 +171,7 @@ def _simulate(
     except MintError as error:
         return _not_run(error.describe(), scenario, error.code)
     simulator = Simulator(built, limits)
+    built.vm.sleeps = not limits.every_tick  # stepping every tick tries every blocked statement, as a reference
     outcomes: list[Outcome] = []
     end_expectations = []
     unchecked: dict[int, Expectation] = {}  # timed expectations whose time has not come yet

@@ -95,6 +95,24 @@ class ExpressionCompiler:
             return Source(emitter.call(self.semantics.functions[expression.function], *arguments))  # type: ignore[union-attr]
         return Source(emitter.call(self.compile(expression)))
 
+    def complete_horizon(self, expression: n.Expression) -> bool:
+        """Whether reading ``expression`` reports in ``clock.horizon`` every tick at which its value may change.
+
+        Variables and literals change only when the program runs; a keyword only where its reader says so
+        (``KeywordAccess.complete_horizon``). A PAUSE on such a condition need not be tried before then.
+        """
+        kind = type(expression)
+        if kind is n.Number or kind is n.CharConstant or kind is n.ConstantRef or kind is n.VariableRef:
+            return True
+        if kind is n.KeywordRef:
+            access = self.table.get(expression.keyword)  # type: ignore[union-attr]
+            selector = expression.selector  # type: ignore[union-attr]
+            channels = [item for item in selector.items if item is not None] if selector is not None else []
+            return access is not None and access.complete_horizon and all(map(self.complete_horizon, channels))
+        if kind is n.Call and expression.function not in self.semantics.functions:  # type: ignore[union-attr]
+            return False
+        return all(self.complete_horizon(child) for child in _operands(expression))
+
     def scalar_slot(self, name: n.Name) -> int:
         """Where the scalar variable ``name`` is kept in ``vm.scalars``."""
         slot = self.names.scalars.get(name.identity)
@@ -228,6 +246,20 @@ def _constants(reference: n.KeywordRef) -> tuple[int, ...] | None:
     if selector is None or not all(type(item) is n.Number for item in selector.axes):
         return None
     return tuple(int(item.value) for item in selector.axes)  # type: ignore[union-attr]
+
+
+def _operands(expression: n.Expression) -> tuple[n.Expression, ...]:
+    """The expressions an operator, a parenthesis, an array element or a function call is made of."""
+    kind = type(expression)
+    if kind is n.Binary:
+        return (expression.left, expression.right)  # type: ignore[union-attr]
+    if kind is n.Unary:
+        return (expression.operand,)  # type: ignore[union-attr]
+    if kind is n.Parenthesised:
+        return (expression.expression,)  # type: ignore[union-attr]
+    if kind is n.ElementRef:
+        return (expression.index,)  # type: ignore[union-attr]
+    return tuple(expression.arguments)  # type: ignore[union-attr]
 
 
 def _missing() -> float:

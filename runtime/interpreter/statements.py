@@ -589,6 +589,7 @@ class StatementCompiler:
             if condition():
                 return False
             vm.wake_at = clock.horizon
+            vm.asleep = complete  # nothing it reads can change before wake_at: no need to try it again sooner
             return True
 
         return pause

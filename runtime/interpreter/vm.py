@@ -114,6 +114,8 @@ class Interpreter:
         self.blocked = False
         self.progressed = False  # the last slice completed a statement: anything may have changed
         self.wake_at = NEVER  # while blocked: the earliest tick the blocking statement may pass
+        self.asleep = False  # while blocked: nothing but an event can let it pass before wake_at
+        self.sleeps = True  # whether an asleep statement is left alone until wake_at (not when every tick is run)
         self.stopped: StopReason | None = None
         self.stop_site: Site | None = None
         self.message = ""  # why the run ended, for an error
@@ -129,12 +131,21 @@ class Interpreter:
     # ------------------------------------------------------------------ running
 
     def run_slice(self) -> None:
-        """Run up to ``slice_statements`` statements, or until the program blocks or ends."""
+        """Run up to ``slice_statements`` statements, or until the program blocks or ends.
+
+        A statement blocked asleep (a PAUSE on inputs and variables) is not tried again before its
+        ``wake_at`` unless an event is pending: what it reads cannot have changed.
+        """
+        events = self.events
+        pending = events is not None and events.pending
+        if self.blocked and self.asleep and self.sleeps and self.clock.now < self.wake_at and not pending:
+            self.progressed = False
+            return
+        self.asleep = False
         operations = self.operations
         count = len(operations)
         budget = self.slice_statements
         self.blocked = False
-        events = self.events
         try:
             while budget > 0 and self.stopped is None:
                 if events is not None and events.pending:

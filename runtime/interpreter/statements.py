@@ -581,6 +581,7 @@ class StatementCompiler:
         if statement.condition is None:
             raise MintError(NO_EXPRESSION, detail="PAUSE needs a condition")
         condition = self.expressions.compile(statement.condition)
+        complete = self.expressions.complete_horizon(statement.condition)
         vm = self.vm
         clock = vm.clock
 

@@ -47,6 +47,12 @@ class Source:
 
     text: str
     binary32: bool = False  # its last operation rounded it to binary32
+    test: str = ""  # a comparison's Python truth, without the 1.0 or 0.0 it makes of it
+
+    @property
+    def truth(self) -> str:
+        """Text whose Python truth is the expression's truth in an IF, WHILE or UNTIL (non-zero)."""
+        return self.test or self.text
 
 
 class Emitter:
@@ -67,10 +73,9 @@ class Emitter:
         return self.function(f"return {source.text}")
 
     def function(self, body: str, arguments: str = "") -> Callable[..., object]:
-        """A function of ``arguments`` (none by default) running ``body`` (one line); binary32 overflow
-        becomes error 3."""
+        """A function of ``arguments`` (none by default) running ``body``; binary32 overflow becomes error 3."""
         parameters = "".join(f"_{index}, " for index in range(len(self._values)))
-        code = _code(f"{arguments}{parameters}{_HELPERS}", body)
+        code = _code(f"{arguments}{parameters}{_HELPERS}", body.replace("\n", "\n        "))
         defaults = (*self._values, _BINARY32.pack, _BINARY32.unpack, _too_large)
         return FunctionType(code, _GLOBALS, "mint", defaults)
 
@@ -107,7 +112,8 @@ def binary(emitter: Emitter, operate: Callable[[float, float], float], left: Sou
         return Source(rounded(f"{left.text} {symbol} {right.text}"), binary32=True)
     symbol = _COMPARED.get(operate)
     if symbol is not None:
-        return Source(f"(1.0 if {left.text} {symbol} {right.text} else 0.0)")
+        test = f"{left.text} {symbol} {right.text}"
+        return Source(f"(1.0 if {test} else 0.0)", test=test)
     return Source(emitter.call(operate, left.text, right.text))
 
 
@@ -118,7 +124,7 @@ def unary(emitter: Emitter, operate: Callable[[float], float], operand: Source) 
     if operate is numbers.f32:
         return Source(rounded(operand.text), binary32=True)
     if operate is numbers.logical_not:
-        return Source(f"(1.0 if {operand.text} == 0 else 0.0)")
+        return Source(f"(1.0 if {operand.text} == 0 else 0.0)", test=f"{operand.text} == 0")
     return Source(emitter.call(operate, operand.text))
 
 
@@ -128,3 +134,9 @@ def operator(operate: Callable[[float, float], float]) -> Callable[[float, float
         return operate
     emitter = Emitter()
     return emitter.function(f"return {binary(emitter, operate, Source('a'), Source('b')).text}", "a, b, ")  # type: ignore[return-value]
+
+
+def branch(emitter: Emitter, condition: Source, taken: str, otherwise: str) -> Callable[[], None]:
+    """A statement that runs the line ``taken`` when ``condition`` holds and ``otherwise`` when not
+    (IF .. THEN, ENDW, UNTIL): one call, the condition included."""
+    return emitter.function(f"if {condition.truth}:\n    {taken}\nelse:\n    {otherwise}")  # type: ignore[return-value]

@@ -77,7 +77,7 @@ class StatementCompiler:
         self.end_of_unit = layout.end
         self.on_end = layout.on_end
         self.place = Place(0, 0)  # of the statement being compiled
-        self.conditions: dict[Place, Evaluate] = {}  # each WHILE's condition, which its ENDW tests again
+        self.conditions: dict[Place, n.Expression] = {}  # each WHILE's condition, which its ENDW tests again
 
     def compile(self, statement: n.Statement, place: Place, pc: int) -> Operation:
         """The operation of ``statement``, which stands at ``place`` and is laid out at ``pc``."""
@@ -348,16 +348,19 @@ class StatementCompiler:
     # ------------------------------------------------------------ flow of control
 
     def if_then(self, statement: n.IfThen, pc: int) -> Operation:
-        condition = self.expressions.compile(statement.condition)
-        vm = self.vm
+        emitter = Emitter()
+        condition = self.expressions.source(statement.condition, emitter)
         skip = pc + layout_size(statement)
         self._recover(pc, skip)
+        return generated.branch(emitter, condition, "pass", self._jump(emitter, skip))
 
-        def branch() -> None:
-            if not condition():
-                vm.pc = skip
+    def _jump(self, emitter: Emitter, target: int) -> str:
+        """The generated line that continues the program at ``target``."""
+        return f"{emitter.name(self.vm)}.pc = {emitter.name(target)}"
 
-        return branch
+    def _leave(self, emitter: Emitter, opener: int) -> str:
+        """The generated line that leaves the loop opened at ``opener`` (going on after its closer)."""
+        return emitter.call(self.vm.leave_loop, emitter.name(opener))
 
     def if_do(self, statement: n.IfDo, pc: int) -> Operation:
         """Either branch runs inside the block, which holds a place on the stack until its ENDIF or ELSE."""
@@ -470,9 +473,12 @@ class StatementCompiler:
         again = opener + 1
 
         def next_() -> None:
-            loop = vm.innermost_loop(opener)
-            if loop is None:
-                raise MintError(2009, detail="NEXT reached outside its FOR loop")
+            loops = vm.loops
+            loop = loops[-1] if loops else None
+            if loop is None or loop.opener != opener or (vm.frames and len(loops) <= vm.frames[-1].loops):
+                loop = vm.innermost_loop(opener)  # not the top of the stack, or a caller's: look further
+                if loop is None:
+                    raise MintError(2009, detail="NEXT reached outside its FOR loop")
             slot, step = loop.slot, loop.step
             candidate = add(scalars[slot], step)
             if (step >= 0 and candidate > loop.end) or (step < 0 and candidate < loop.end):
@@ -506,27 +512,21 @@ class StatementCompiler:
 
     def until(self, statement: n.Until, pc: int) -> Operation:
         block = self._block()
-        condition = self.expressions.compile(statement.condition)
+        emitter = Emitter()
+        condition = self.expressions.source(statement.condition, emitter)
         if block is None:
-            return lambda: bool(condition()) and None
+            return generated.branch(emitter, condition, "pass", "pass")
         opener = self.positions[block.opener]
         self._recover(pc, pc + 1, opener)
-        vm = self.vm
-
-        def until() -> None:
-            if condition():
-                vm.leave_loop(opener)
-            else:
-                vm.pc = opener + 1
-
-        return until
+        return generated.branch(emitter, condition, self._leave(emitter, opener), self._jump(emitter, opener + 1))
 
     def while_(self, statement: n.While, pc: int) -> Operation:
         """Entering the loop; its ENDW tests the condition again for each further pass."""
         block = self._opened()
         exit_pc = self._after(block.closer)
         self._recover(pc, exit_pc, pc)  # first: a condition that cannot be compiled raises when the WHILE runs
-        condition = self.conditions[self.place] = self.expressions.compile(statement.condition)
+        condition = self.expressions.compile(statement.condition)
+        self.conditions[self.place] = statement.condition
         vm = self.vm
 
         def while_() -> None:
@@ -539,19 +539,13 @@ class StatementCompiler:
 
     def _endw(self, block: Block, pc: int) -> Operation:
         opener = self.positions[block.opener]
-        condition = self.conditions.get(block.opener)
-        if condition is None:
+        written = self.conditions.get(block.opener)
+        if written is None:
             return _nothing  # its WHILE raises instead of entering the loop, and an error there resumes after it
         self._recover(pc, pc + 1, opener)
-        vm = self.vm
-
-        def again() -> None:
-            if condition():
-                vm.pc = opener + 1
-            else:
-                vm.leave_loop(opener)
-
-        return again
+        emitter = Emitter()
+        condition = self.expressions.source(written, emitter)
+        return generated.branch(emitter, condition, self._jump(emitter, opener + 1), self._leave(emitter, opener))
 
     def _exit(self) -> Operation:
         vm = self.vm

@@ -78,7 +78,7 @@ Exit status:
     show_default=True,
     help="The dialect to migrate to: v4 reads the files as Mint v3, mintmt reads them as Mint v4.",
 )
-@controller_option("The Mint v4 controller to migrate to.")
+@controller_option("The controller to migrate to (with --to mintmt, the one both runs of --verify use).")
 @format_option(["text", "json"])
 @output_file_option("Write the diff and the report to this file instead of standard output.")
 @click.option("--fail-on", "fail_on", type=click.Choice(["manual"]), help="Exit 1 when manual items are left.")
@@ -96,7 +96,8 @@ Exit status:
 @click.option(
     "--verify",
     is_flag=True,
-    help="Run each v3 application and its migration in the simulator and compare them; write nothing.",
+    help="Run each original application (v3, or v4 with --to mintmt) and its migration in the simulator and "
+    "compare them; write nothing.",
 )
 @click.option(
     "--scenario",

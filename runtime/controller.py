@@ -19,9 +19,7 @@ from mintlang.runtime.clock import Clock
 from mintlang.runtime.comms.packets import HostEndpoint
 from mintlang.runtime.comms.server import HostPortServer
 from mintlang.runtime.dialects import semantics
-from mintlang.runtime.dialects.mintmt import contouring, feedrate, identifiers, outputs, triggering
-from mintlang.runtime.dialects.mintmt.buffer_low import BufferLowEvent
-from mintlang.runtime.dialects.mintmt.suspend import Suspension
+from mintlang.runtime.dialects.mintmt import machine as mintmt_machine
 from mintlang.runtime.dialects.v3 import machine as v3_machine
 from mintlang.runtime.events import MINTDRIVE, NEXTMOVE, NEXTMOVE_MINTMT, EventClass, Events
 from mintlang.runtime.hardware import simulated
@@ -117,17 +115,7 @@ def build_controller(
         part.register(table)
     for extend in EXTENSIONS:
         extend(table, motion)
-    monitors: list[Monitor] = []
-    if mintmt:
-        triggering.install(table, motion)
-        contouring.install(table)
-        outputs.install(table)
-        identifiers.install(table, motion)
-        feedrate.install(table, motion)
-        Suspension(motion).register(table)
-        buffer_low = BufferLowEvent(motion, events)
-        buffer_low.register(table)
-        monitors.append(buffer_low)
+    monitors = mintmt_machine.install(table, motion, io, events) if mintmt else []
     motion.input_active = io.is_active
     motion.index_pulses = {pulse.axis: pulse for pulse in scenario.index_pulses}
     layer = (

@@ -66,6 +66,7 @@ class Request:
     targets: tuple[float, ...] | None = None  # each axis's end in counts, where known when it is loaded
     onto_running: bool = False  # starts on top of the move running (an OFFSET on a FOLLOW), not after it
     ident: float = 0.0  # MOVEBUFFERID in force when it was loaded (MintMT, MT-12)
+    instant: bool = False  # acts when reached and moves nothing (a MintMT output move): the next starts with it
 
 
 class Axis:
@@ -365,8 +366,11 @@ class Axis:
                 self.move = None
                 if move.mode == self.pending_mode:
                     self.pending_mode = 0
-        if self.move is None and self.triggered and self.buffer and not self.held:
-            start_group(self.buffer[0], tick)
+        while self.move is None and self.triggered and self.buffer and not self.held:
+            head = self.buffer[0]
+            start_group(head, tick)
+            if not head.instant or (self.buffer and self.buffer[0] is head):
+                break  # a move started, or the head waits for the other axes of its group
 
     def started(self, request: Request) -> Request:
         """``request`` leaves the buffer to run: its ident is now the last one started."""

@@ -8,6 +8,8 @@ is started as ``GO`` on the axes it was written for would start it.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer
 from mintlang.runtime.motion.commands import Motion
@@ -18,8 +20,9 @@ WAIT_FOR_GO = 1.0  # the power-up value: any value but 0 (MT-10)
 LOADING = ("MOVEA", "MOVER", "VECTORA", "VECTORR", "CIRCLEA", "CIRCLER", "INCA", "INCR", "OFFSET")
 
 
-def install(table: KeywordTable, motion: Motion) -> None:
-    """TRIGGERMODE, and every move-loading keyword of ``LOADING`` the table has, triggering where it is on."""
+def install(table: KeywordTable, motion: Motion) -> Callable[[Channels | None], None]:
+    """TRIGGERMODE, and every move-loading keyword of ``LOADING`` the table has, triggering where it is on;
+    returns what starts the moves just loaded on the axes named, where triggering is automatic."""
     modes = dict.fromkeys(range(len(motion.axes)), WAIT_FOR_GO)
 
     def read(channel: int | None) -> float:
@@ -33,20 +36,24 @@ def install(table: KeywordTable, motion: Motion) -> None:
                 modes[axis.number] = value
         return False
 
+    def loaded(channels: Channels | None) -> None:
+        automatic = [axis.number for axis in motion.addressed(channels) if modes[axis.number] == AUTOMATIC]
+        if automatic:
+            motion.go(tuple(automatic), ())
+
     table.register("TRIGGERMODE", read=read, write=write)
     for name in LOADING:
         access = table.get(name)
         if access is not None and access.write is not None:
-            table.replace(name, write=_triggering(access.write, motion, modes))
+            table.replace(name, write=_triggering(access.write, loaded))
+    return loaded
 
 
-def _triggering(load: Writer, motion: Motion, modes: dict[int, float]) -> Writer:
+def _triggering(load: Writer, loaded: Callable[[Channels | None], None]) -> Writer:
     def write(channels: Channels | None, values: Values) -> bool:
         if load(channels, values):
             return True  # waiting for room in the buffer: nothing was loaded yet
-        automatic = [axis.number for axis in motion.addressed(channels) if modes[axis.number] == AUTOMATIC]
-        if automatic:
-            motion.go(tuple(automatic), ())
+        loaded(channels)
         return False
 
     return write

@@ -31,7 +31,7 @@ from mintlang.runtime.scenario import ScenarioFileError
 from mintlang.runtime.simulation import Interrupt, Limits, Stop
 
 ERRORS = "errors"  # exception filter: stop at every run-time error, even one #ONERROR handles
-UNHANDLED = "unhandled"  # exception filter: stop where an error ends the run
+UNHANDLED = "unhandled"  # exception filter: stop where an error, or a wait nothing can end, ends the run
 RECENT = 4096  # points kept to step back to in one re-run: a few hundred kilobytes
 
 
@@ -53,6 +53,8 @@ class _Rerun:
 class _Terminate:
     pass
 
+
+_ENDED_BADLY = frozenset({StopReason.ERROR, StopReason.DEADLOCK})
 
 Plan = Forward | Scan
 Command = Forward | _Rerun | _Terminate
@@ -261,8 +263,9 @@ class Execution:
         self._plan = command
 
     def _at_end(self, result: RunResult) -> None:
-        """The run ended: an error that ended it stops the debugger there first, when the editor asks for that."""
-        if result.stop.reason is not StopReason.ERROR or UNHANDLED not in self.exception_filters:
+        """The run ended: an error or a deadlock that ended it stops the debugger there first, when the editor
+        asks for that."""
+        if result.stop.reason not in _ENDED_BADLY or UNHANDLED not in self.exception_filters:
             return
         controller = self.controller
         if controller is None:

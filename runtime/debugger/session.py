@@ -45,7 +45,7 @@ CAPABILITIES: dict[str, Any] = {
         {
             "filter": UNHANDLED,
             "label": "Errors that end the run",
-            "description": "Stop where a run-time error no #ONERROR handles ends the program",
+            "description": "Stop where an error no #ONERROR handles, or a wait nothing can end, ends the run",
             "default": True,
         },
         {
@@ -283,7 +283,8 @@ class Session:
         before = [(start, label) for label, start in labels.items() if start <= pc]
         if not before:
             return site.unit
-        return "#" + self.spellings.get(max(before)[1], max(before)[1])
+        _, label = max(before)
+        return "#" + self.spellings.get(label, label)
 
     def scopes(self, arguments: dict[str, Any]) -> dict[str, Any]:
         execution, controller = self._paused()

@@ -20,10 +20,12 @@ TOOLS = {
     "mint-run": [BIN / "mint-run"],
     "mint-migrate": [BIN / "mint-migrate"],
     "mint-lsp": [BIN / "mint-lsp"],
+    "mint-dap": [BIN / "mint-dap"],
     "mint check": [BIN / "mint", "check"],
     "mint run": [BIN / "mint", "run"],
     "mint migrate": [BIN / "mint", "migrate"],
     "mint lsp": [BIN / "mint", "lsp"],
+    "mint dap": [BIN / "mint", "dap"],
     "mint test": [BIN / "mint", "test"],
     "mint rule": [BIN / "mint", "rule"],
 }
@@ -47,7 +49,7 @@ def write(directory: Path, name: str, text: str) -> Path:
     return path
 
 
-@pytest.mark.parametrize("tool", ["mint", "mint-run", "mint-migrate", "mint-lsp"])
+@pytest.mark.parametrize("tool", ["mint", "mint-run", "mint-migrate", "mint-lsp", "mint-dap"])
 def test_every_script_prints_its_name_and_the_distribution_version(tool: str) -> None:
     from importlib.metadata import version  # noqa: PLC0415
 

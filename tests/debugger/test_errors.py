@@ -117,3 +117,11 @@ def test_a_message_that_is_not_dap_is_reported_and_the_session_goes_on() -> None
     assert "not JSON" in client.event("output")["body"]["output"]
     assert client.body("initialize", {"adapterID": "mint"})["supportsStepBack"]
     assert "Traceback" not in client.close()
+
+
+def test_a_program_blocked_for_ever_stops_where_it_waits(debug: Debug) -> None:
+    client = debug("DIM a\nPAUSE IN.3\na = 1\n")
+    stop = client.stopped()
+    assert stop["reason"] == "exception"
+    assert "blocked" in stop["description"]
+    assert client.line() == 2

@@ -4,6 +4,10 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from difflib import SequenceMatcher, get_close_matches
+from functools import cache
+
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Controller, KeywordKind
 
 NAME_LIKENESS = 0.8  # difflib's ratio: 'IDL' is 0.86 like 'IDLE', 'pos' 0.67 like 'post'
 _ONE_SLIP_FROM = 3  # words this long or longer are matched one slip of the finger away whatever the ratio
@@ -34,6 +38,31 @@ def one_slip_apart(word: str, other: str) -> bool:
         return rest == other_rest or swapped
     longer, shorter = (word, other) if len(word) > len(other) else (other, word)
     return longer[start + 1 :] == shorter[start:]
+
+
+# Block words of other BASICs, which Mint spells otherwise (3.7.3: a WHILE loop ends with ENDW).
+_OTHER_BASICS = {"WEND": "ENDW", "ENDWHILE": "ENDW"}
+
+
+@cache
+def _keywords_of(controller: Controller, *, values: bool) -> tuple[str, ...]:
+    """The keywords a program for ``controller`` can use, by their full names (not the editor's commands);
+    with ``values``, only those that are read or written (SPEED, POS), not commands or block words."""
+    found = []
+    for name, keyword in database().keywords.items():
+        if keyword.kind is KeywordKind.COMMAND_LINE or (keyword.controllers and controller not in keyword.controllers):
+            continue
+        attributes = keyword.attributes_for(controller)
+        if not values or (attributes is not None and (attributes.read or attributes.write)):
+            found.append(name)
+    return tuple(found)
+
+
+@cache
+def keyword_like(word: str, controller: Controller, *, values: bool = False) -> str | None:
+    """The keyword of ``controller`` that ``word`` (upper case) is most likely a misspelling of; with
+    ``values``, a keyword that holds a value, for a word used as a variable."""
+    return _OTHER_BASICS.get(word) or closest(word, _keywords_of(controller, values=values))
 
 
 def did_you_mean(word: str) -> str:

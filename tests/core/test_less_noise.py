@@ -79,6 +79,15 @@ def test_a_word_like_no_keyword_gets_no_suggestion() -> None:
     assert "did you mean" not in error.message and error.fixes == ()
 
 
+def test_an_undeclared_name_like_a_keyword_that_holds_a_value_is_offered_it_beside_the_dim() -> None:
+    # SPEED is read and written (v4 guide §10.3 SPEED); FOR holds no value, so 'foo' is offered no FOR
+    (speed,) = coded("SPED = 10\n", "E3001")
+    assert speed.message.endswith("did you mean the keyword 'SPEED'?")
+    assert [fix.title for fix in speed.fixes] == ["Replace with SPEED", "Declare 'SPED' with DIM"]  # the author's choice
+    (foo,) = coded("foo = 5\n", "E3001")
+    assert "did you mean" not in foo.message
+
+
 def test_an_editor_command_is_never_offered_in_a_program() -> None:
     # DEL, LIST, NEW … work at the command line only (v4 guide §3.2): a program that writes one is error 2006
     for source in ("DELL\n", "LISTT\n", "NEWW\n"):

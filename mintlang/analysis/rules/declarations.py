@@ -17,7 +17,7 @@ from itertools import islice
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.rules.v3_keywords import successor
-from mintlang.analysis.suggestions import closest, did_you_mean
+from mintlang.analysis.suggestions import closest, did_you_mean, keyword_like
 from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.keyworddb import database
@@ -77,8 +77,16 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
             elif (close := closest(occurrence.spelling, declared)) is not None:
                 detail += f"; {did_you_mean(close)}"
                 fixes = (_replace_each(written, close), *fixes) if written else fixes
+            elif (keyword := _keyword_holding_a_value(occurrence.spelling, model)) is not None:
+                detail += f"; did you mean the keyword '{keyword}'?"  # SPED = 10
+                fixes = (_replace_each(written, keyword), *fixes) if written else fixes
             error = mint_error(3001, occurrence.span, detail, fixes=fixes, from_v3=was is not None or was_keyword)
             yield Finding(occurrence.unit, error)
+
+
+def _keyword_holding_a_value(spelling: str, model: SemanticModel) -> str | None:
+    """The keyword an undeclared name is most likely a misspelling of (``SPED = 10``), of those read or written."""
+    return keyword_like(spelling.upper(), model.controller.controller, values=True)
 
 
 def _by_line(model: SemanticModel, uses: list[Occurrence]) -> Iterator[tuple[Occurrence, list[Occurrence]]]:

@@ -18,7 +18,7 @@ from functools import cache
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.rules.v3_keywords import successor
-from mintlang.analysis.suggestions import closest, did_you_mean
+from mintlang.analysis.suggestions import did_you_mean, keyword_like
 from mintlang.analysis.traversal import LineScope, Use
 from mintlang.controllers import profile
 from mintlang.diagnostics import Fix, Span
@@ -56,37 +56,16 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             yield Finding(unit, mint_error(3007, statement.span, _not_a_keyword(word, controller), fixes=fixes))
 
 
-# Block words of other BASICs, which Mint spells otherwise (3.7.3: a WHILE loop ends with ENDW).
-_OTHER_BASICS = {"WEND": "ENDW", "ENDWHILE": "ENDW"}
-
-
-@cache
-def _keywords_of(controller: Controller) -> tuple[str, ...]:
-    """The keywords a program for ``controller`` can use, by their full names (not the editor's commands)."""
-    return tuple(
-        name
-        for name, keyword in database().keywords.items()
-        if (not keyword.controllers or controller in keyword.controllers)
-        and keyword.kind is not KeywordKind.COMMAND_LINE
-    )
-
-
-@cache
-def _keyword_like(word: str, controller: Controller) -> str | None:
-    """The keyword of ``controller`` that ``word`` (upper case) is most likely a misspelling of."""
-    return _OTHER_BASICS.get(word) or closest(word, _keywords_of(controller))
-
-
 def _not_a_keyword(word: str, controller: Controller) -> str:
     """Error 3007's detail, with the keyword ``word`` resembles if one does."""
-    meant = _keyword_like(word.upper(), controller)
+    meant = keyword_like(word.upper(), controller)
     hint = did_you_mean(meant) if meant is not None else "check the spelling and the abbreviation"
     return f"'{word}' is not a keyword ({hint})"
 
 
 def _spelling_fix(word: str, controller: Controller, span: Span) -> tuple[Fix, ...]:
     """Write the keyword ``word`` resembles, if one does."""
-    meant = _keyword_like(word.upper(), controller)
+    meant = keyword_like(word.upper(), controller)
     return (Fix.replace(span, meant),) if meant is not None else ()
 
 

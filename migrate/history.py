@@ -50,7 +50,9 @@ class _Batch:
         The first character of a replacement stands for the first it replaced."""
         first = bisect_left(self.new_ends, offset)  # the edits before it end before ``offset``
         shift = self.shifts[first]
-        for edit in self.edits[first:]:
+        edits = self.edits
+        for index in range(first, len(edits)):  # a slice would copy the rest of a large pass's edits
+            edit = edits[index]
             new_start = edit.span.start + shift
             new_end = new_start + len(edit.text)
             if offset < new_start or (offset == new_start and at_start and edit.span.start != edit.span.end):

@@ -31,7 +31,7 @@ from mintlang.controllers import ControllerProfile, profile
 from mintlang.diagnostics import Span
 from mintlang.keyworddb import database
 from mintlang.keyworddb.load import KeywordDatabase
-from mintlang.semantic.index import KeywordUse, index_syntax
+from mintlang.semantic.index import KeywordUse, index_syntax, line_facts
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
@@ -356,6 +356,17 @@ class Context:
         """The user names written anywhere in the application (by identity, see ``name_tag``) that
         ``keep`` accepts: a rule that needs the symbol table only for some names asks first."""
         return [tag[1] for tag in self._tagged if type(tag) is tuple and tag[0] == "name" and keep(tag[1])]
+
+    def spellings(self, identities: Iterable[str]) -> set[str]:
+        """How the user names of these identities are written, read from the lines that use them:
+        the spellings the symbol table would give, without building the semantic model."""
+        wanted = frozenset(identities)
+        return {
+            event.name.text
+            for file, line in self.placed(*map(name_tag, wanted))
+            for event in line_facts(file.unit, line).names
+            if event.name.identity in wanted
+        }
 
     @cached_property
     def _order(self) -> tuple[tuple[FileView, int], ...]:

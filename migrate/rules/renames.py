@@ -175,7 +175,7 @@ class RenameReservedNames(Rule):
     evidence = "spec M-IDENT; v4:882-890, v4:18940-18943 (#2006)"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        if not context.names(_maybe_reserved):
+        if not any(map(is_reserved_user_name, context.spellings(context.names(_maybe_reserved)))):
             return  # the usual case: the symbol table (the semantic model) is not needed
         variables = context.model.symbols.variables
         taken = set(variables)

@@ -83,6 +83,17 @@ def test_renamed_names_stay_unique_in_ten_characters() -> None:
     assert rewritten("M-IDENT", "inputactivelevel = 1\n") == "inputact_u = 1\n"  # ten significant characters
 
 
+def test_a_reserved_long_name_is_renamed_in_each_spelling_of_its_ten_characters() -> None:
+    # INPUTACTIVELEVEL is a v4 keyword; inputactivityx is the same variable (INPUTACTIV) to v3.
+    source = "inputactivelevel = 1\nx = inputactivityx\n"
+    assert rewritten("M-IDENT", source) == "inputact_u = 1\nx = inputact_u\n"
+
+
+def test_a_long_name_sharing_ten_characters_with_no_v4_word_is_kept() -> None:
+    source = "masterincrement = 1\nx = masterincrement\n"  # MASTERINCR..., no v4 keyword
+    assert rewritten("M-IDENT", source) == source
+
+
 def test_zero_becomes_pos_zero_on_every_axis() -> None:
     assert rewritten("M-ZERO", "ZERO[0,1]\nZERO.2\nZERO\n") == "POS[0,1] = 0;\nPOS.2 = 0\nPOS = 0;\n"
 

@@ -7,6 +7,7 @@ The program is a machine cycle (a move, a wait for it, a dwell) repeated
 simulated minutes issue 15 names. Each round, paired:
 
 - reference: ``run_source`` of the program, start to end, with no debugger;
+- forward: the same under the debugger, to a breakpoint on its last statement;
 - step back: the debugger, paused at the program's last statement, steps back one statement;
 - reverse-continue: from there, back to the last hit of a breakpoint in the loop.
 
@@ -74,13 +75,13 @@ def timed(arrivals: Arrivals, action: Callable[[], None]) -> float:
     return time.perf_counter() - began
 
 
-def round_trip(application: Application, last_line: int) -> tuple[float, float]:
-    """(step back, reverse-continue) from the last statement, in seconds."""
+def round_trip(application: Application, last_line: int) -> tuple[float, float, float]:
+    """(forward to the last statement, step back, reverse-continue), in seconds."""
     arrivals = Arrivals()
     breakpoints = Breakpoints(statements(application))
     execution = Execution(application, breakpoints, arrivals)
     breakpoints.replace("program", [{"line": last_line}])
-    timed(arrivals, lambda: execution.start(stepping.cont(-1)))
+    forward = timed(arrivals, lambda: execution.start(stepping.cont(-1)))
     breakpoints.replace("program", [{"line": LOOP_LINE}])
     at_end = execution.point
     assert at_end is not None
@@ -89,7 +90,7 @@ def round_trip(application: Application, last_line: int) -> tuple[float, float]:
     assert one_back is not None
     reverse = timed(arrivals, lambda: execution.rerun(stepping.reverse_continue(one_back)))
     execution.terminate()
-    return back, reverse
+    return forward, back, reverse
 
 
 def main() -> None:
@@ -98,7 +99,8 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=5)
     options = parser.parse_args()
     source = program(options.cycles)
-    rows: dict[str, list[float]] = {"reference (no debugger)": [], "step back": [], "reverse-continue": []}
+    names = ("reference (no debugger)", "forward (debugger)", "step back", "reverse-continue")
+    rows: dict[str, list[float]] = {name: [] for name in names}
     simulated_ms = 0
     with tempfile.TemporaryDirectory() as folder:
         path = Path(folder) / "cycle.mnt"
@@ -109,9 +111,8 @@ def main() -> None:
             result = run_source(source, scenario=Scenario(drives=(DrivesEnabled(),)), limits=Limits(max_wall_s=None))
             rows["reference (no debugger)"].append(time.perf_counter() - began)
             simulated_ms = result.stop.time_ms
-            back, reverse = round_trip(application, source.count("\n"))
-            rows["step back"].append(back)
-            rows["reverse-continue"].append(reverse)
+            for name, seconds in zip(list(rows)[1:], round_trip(application, source.count("\n")), strict=True):
+                rows[name].append(seconds)
     simulated_s = simulated_ms / 1000
     print(f"{options.cycles} cycles, {simulated_s:.0f} simulated s; medians (min-max) of {options.repeat} rounds")
     reference = statistics.median(rows["reference (no debugger)"])

@@ -26,9 +26,9 @@ from mintlang.runtime.debugger.launch import Application
 from mintlang.runtime.debugger.stepping import Forward, Point, Scan, cont, reach
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.interpreter.vm import Operation, StopReason
-from mintlang.runtime.run import RunResult, run_source
+from mintlang.runtime.run import RunResult
 from mintlang.runtime.scenario import ScenarioFileError
-from mintlang.runtime.simulation import Interrupt, Limits, Stop
+from mintlang.runtime.simulation import Interrupt, Stop
 
 ERRORS = "errors"  # exception filter: stop at every run-time error, even one #ONERROR handles
 UNHANDLED = "unhandled"  # exception filter: stop where an error, or a wait nothing can end, ends the run
@@ -162,19 +162,7 @@ class Execution:
         self._logged_from = self.timeline.points_reached  # log messages at earlier points were shown before
         self._blocked = None
         self._recent.clear()
-        application = self.application
-        limits = Limits(until_ms=application.until_ms, max_wall_s=None)
-        result = run_source(
-            application.source,
-            config=application.configuration_source,
-            controller=application.controller,
-            dialect=application.dialect,
-            scenario=application.scenario,
-            limits=limits,
-            echo=self._echo,
-            on_start=self._attach,
-            name=str(application.program),
-        )
+        result = self.application.run(self._attach, self._echo)
         if isinstance(plan, Scan) and self._next_plan is None:  # going back from where the run ended
             self._next_plan = self._found(plan)
         elif self._next_plan is None and not self._terminating:

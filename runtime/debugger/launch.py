@@ -11,7 +11,7 @@ as it is.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -23,9 +23,10 @@ from mintlang.runtime.controller import Controller
 from mintlang.runtime.dialects import SIMULATED
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import Site
-from mintlang.runtime.run import run_source
+from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import ScenarioFileError, load_scenario, merge
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
+from mintlang.runtime.simulation import Limits
 from mintlang.semantic.units import Unit
 from mintlang.settings import SettingsError, settings_for
 from mintlang.settings.model import DEFAULT, FileSettings, Given
@@ -52,6 +53,20 @@ class Application:
     scenario: Scenario
     until_ms: int | None
     stop_on_entry: bool
+
+    def run(self, on_start: Callable[[Controller], None], echo: Callable[[str], None] | None = None) -> RunResult:
+        """One run of the application, as long as the debugger lets it go (``untilMs`` at most)."""
+        return run_source(
+            self.source,
+            config=self.configuration_source,
+            controller=self.controller,
+            dialect=self.dialect,
+            scenario=self.scenario,
+            limits=Limits(until_ms=self.until_ms, max_wall_s=None),  # the user's pauses are not the program's time
+            echo=echo,
+            on_start=on_start,
+            name=str(self.program),
+        )
 
     def path_of(self, unit: str) -> Path | None:
         """The file of ``unit`` ("program" or "configuration"), as the interpreter's sites name them."""
@@ -119,15 +134,7 @@ def statements(application: Application) -> list[Site]:
         raise _Compiled
 
     try:
-        run_source(
-            application.source,
-            config=application.configuration_source,
-            controller=application.controller,
-            dialect=application.dialect,
-            scenario=application.scenario,
-            on_start=compiled,
-            name=str(application.program),
-        )
+        application.run(compiled)
     except _Compiled:
         pass
     except ScenarioFileError as error:  # a REM @sim directive the scenario cannot read

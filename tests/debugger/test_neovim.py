@@ -16,6 +16,8 @@ from pathlib import Path
 
 import pytest
 
+from tests.debugger.test_stepping_back import LOOP
+
 NVIM = Path(__file__).parent / "nvim"
 NVIM_DAP = os.environ.get("NVIM_DAP", "")
 
@@ -23,16 +25,6 @@ pytestmark = [
     pytest.mark.skipif(shutil.which("nvim") is None, reason="Neovim is not installed"),
     pytest.mark.skipif(not (Path(NVIM_DAP) / "lua" / "dap").is_dir(), reason="$NVIM_DAP names no copy of nvim-dap"),
 ]
-
-LOOP = """\
-DIM a
-DIM b = 1
-FOR a = 1 TO 2
-  b = b * 3
-NEXT
-PRINT b
-"""
-
 
 def test_the_readme_configuration_debugs_forwards_and_back(tmp_path: Path) -> None:
     readme = (Path(__file__).parents[2] / "README.md").read_text(encoding="utf-8")

@@ -2,7 +2,7 @@
 
 ``DIM a(3) = 1,2;`` fills the rest with the last value, and unwritten elements
 are 0. A DIM that cannot make its array (a size that is not a whole number from
-1, values that are not constants) raises that when its line runs instead.
+1, values that are not constants, more values than elements) raises that when its line runs instead.
 """
 
 from __future__ import annotations
@@ -22,13 +22,16 @@ def array_problem(statement: n.Dim) -> MintError | None:
     if any(constant(value) is None for value in statement.values):
         detail = f"array {statement.name.text} is initialised with values that are not constants"
         return MintError(SYNTAX_ERROR, detail=detail)
+    if len(statement.values) > size:
+        detail = f"array {statement.name.text} has {int(size)} elements: {len(statement.values)} values are too many"
+        return MintError(INVALID_INDEX, detail=detail)
     return None
 
 
 def initial_values(statement: n.Dim) -> list[float]:
     """The elements of an array ``array_problem`` accepts, as its DIM initialises them."""
     size = int(constant(statement.size) or 0)
-    initial = [value for value in map(constant, statement.values) if value is not None][:size]
+    initial = [value for value in map(constant, statement.values) if value is not None]
     if statement.fill and initial:
         initial += [initial[-1]] * (size - len(initial))
     return initial + [0.0] * (size - len(initial))

@@ -454,6 +454,17 @@ def test_an_arrays_size_and_values_are_numbers_not_expressions() -> None:
     assert found(numbers) == []
 
 
+def test_an_array_the_compiler_cannot_make_is_error_2016_at_its_dim() -> None:
+    # 000:9171 and 19038: an array has <no_of_elements> elements, indexed 1 to that number, so a size that
+    # is no whole number from 1 is no array, and a value beyond the size would have no index; its uses
+    # are not reported again
+    source = "DIM a(0)\nDIM b(2.5)\nDIM c(3) = 1, 2, 3, 4\nDIM d(3) = 1, 2, 3\nDIM e(3) = 1;\n"
+    source += "PRINT a(1), b(1), c(1), d(3), e(3)\n"
+    assert found(source) == [("E2016", ERROR, 1), ("E2016", ERROR, 2), ("E2016", ERROR, 3)]
+    extra = only("DIM c(3) = 1, 2, 3, 4\nPRINT c(1)\n", "E2016")
+    assert (extra.span.start, extra.message.endswith("c has 3 elements: 4 values are too many")) == (20, True)
+
+
 def test_a_constant_index_outside_the_array_is_error_2016() -> None:
     # line 19038: indices are in the range 1 <= index <= size
     source = "DIM a(10)\na(0) = 1\na(11) = 2\na(10) = 3\na(1) = 4\nPRINT a(12)\n"

@@ -12,7 +12,7 @@ from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import Facts, LineScope
-from mintlang.semantic.constants import constant_integer
+from mintlang.semantic.constants import constant_integer, constant_value
 from mintlang.semantic.symbols import SymbolKind
 from mintlang.syntax import nodes as n
 
@@ -38,10 +38,27 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if not _is_number(statement.size):
             detail = f"the size of {statement.name.text} must be a number, not an expression"
             yield Finding(scope.unit, mint_error(2003, statement.size.span, detail))
+        else:
+            yield from _size_problems(scope, statement)
         for value in statement.values:
             if not _is_number(value):
                 detail = f"the values of {statement.name.text} must be numbers, not expressions"
                 yield Finding(scope.unit, mint_error(2003, value.span, detail))
+
+
+def _size_problems(scope: LineScope, statement: n.Dim) -> Iterator[Finding]:
+    """A size that is no whole number from 1 (``DIM a(0)``, ``DIM b(2.5)``), and more initial values than
+    elements: the compiler cannot make such an array, and a value beyond the size has no index (2016)."""
+    assert statement.size is not None
+    size = constant_value(statement.size, scope.dialect)
+    name = statement.name.text
+    if size is not None and (size < 1 or size != int(size)):
+        detail = f"the size of {name} must be a whole number from 1, not {size:g}"
+        yield Finding(scope.unit, mint_error(2016, statement.size.span, detail))
+    elif size is not None and len(statement.values) > size:
+        extra = statement.values[int(size)]
+        detail = f"{name} has {int(size)} elements: {len(statement.values)} values are too many"
+        yield Finding(scope.unit, mint_error(2016, extra.span, detail))
 
 
 def check(facts: Facts) -> Iterator[Finding]:
@@ -56,8 +73,8 @@ def check(facts: Facts) -> Iterator[Finding]:
             detail = f"'{element.name.text}' is a variable, not an array: declare it with DIM {symbol.name}(size)"
             yield Finding(unit, mint_error(2016, line.span(element.span), detail))
             continue
-        if symbol.array_size is None:
-            continue
+        if symbol.array_size is None or symbol.array_size < 1:
+            continue  # no size, or one its DIM is reported for
         index = constant_integer(element.index, dialect)
         if index is not None and not 1 <= index <= symbol.array_size:
             detail = f"{element.name.text}({index}) is outside 1 to {symbol.array_size}"

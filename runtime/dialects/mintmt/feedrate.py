@@ -34,7 +34,7 @@ def install(table: KeywordTable, motion: Motion) -> None:
         if value not in (SPEED_MODE, FEEDRATE_MODE):
             if value != int(value) or value < 0:
                 raise MintError(OUT_OF_RANGE, axis.number, "FEEDRATEMODE is a set of bits: a whole number")
-            raise NotSimulated("FEEDRATEMODE", "bits but _frFEEDRATE (the note gives their values for none)")
+            raise NotSimulated("FEEDRATEMODE", "bits but _frFEEDRATE, whose values the notes do not give")
         axis.store_feedrate = value == FEEDRATE_MODE
 
     def read_override(channel: int | None) -> float:

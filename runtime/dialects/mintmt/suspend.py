@@ -50,7 +50,7 @@ class Suspension:
         if value not in (RUNNING, SUSPENDED):
             if value != int(value) or value < 0:
                 raise MintError(OUT_OF_RANGE, axis.number, "SUSPEND is 0 (run) or 1 (suspend)")
-            raise NotSimulated("SUSPEND", f"the value {value:g} (single stepping: the notes give its value for none)")
+            raise NotSimulated("SUSPEND", f"the value {value:g}: single stepping, whose values the notes do not give")
         if value == SUSPENDED:
             self._suspend(axis)
         else:

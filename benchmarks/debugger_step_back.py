@@ -85,10 +85,10 @@ def round_trip(application: Application, last_line: int) -> tuple[float, float, 
     breakpoints.replace("program", [{"line": LOOP_LINE}])
     at_end = execution.point
     assert at_end is not None
-    back = timed(arrivals, lambda: execution.rerun(stepping.step_back(at_end)))
+    back = timed(arrivals, lambda: execution.step_back(at_end))
     one_back = execution.point
     assert one_back is not None
-    reverse = timed(arrivals, lambda: execution.rerun(stepping.reverse_continue(one_back)))
+    reverse = timed(arrivals, lambda: execution.reverse_continue(one_back))
     execution.terminate()
     return forward, back, reverse
 

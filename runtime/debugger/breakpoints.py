@@ -82,6 +82,7 @@ class Breakpoints:
     def __init__(self, sites: list[Site]) -> None:
         self.sites = sites
         self.next_id = 1
+        self.generation = 0  # changes with every change of the breakpoints
         self.by_unit: dict[str, list[Breakpoint]] = {}
         self.by_pc: dict[int, Breakpoint] = {}
         self.first_of_line: dict[tuple[str, int], int] = {}  # (unit, line) -> pc of its first statement
@@ -111,6 +112,7 @@ class Breakpoints:
                     breakpoint_.problem = str(problem)
             placed.append(breakpoint_)
         self.by_unit[unit] = placed
+        self.generation += 1
         self._index()
         return placed
 

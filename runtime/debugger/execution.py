@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import threading
 from collections import deque
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -48,6 +48,15 @@ class Listener(Protocol):
 @dataclass(frozen=True, slots=True)
 class _Rerun:
     plan: Forward | Scan
+
+
+@dataclass(frozen=True, slots=True)
+class _Recent:
+    """A point this run passed where stepping may stop, and whether a breakpoint hit there."""
+
+    point: Point
+    hit: bool
+    generation: int  # of the breakpoints that decided ``hit``
 
 
 class _Terminate:
@@ -87,7 +96,7 @@ class Execution:
         self._writes = 0
         self._logged_from = 0
         self._blocked: tuple[int, int] | None = None  # (pc, depth) of the statement that blocked last
-        self._recent: deque[Point] = deque(maxlen=RECENT)  # this run's last points where stepping may stop
+        self._recent: deque[_Recent] = deque(maxlen=RECENT)  # this run's last points where stepping may stop
         self._thread: threading.Thread | None = None
 
     # ------------------------------------------------------------ the editor's side
@@ -113,14 +122,29 @@ class Execution:
     def step_back(self, at: Point) -> None:
         """Back to the statement before ``at`` in its frame or a caller's: one re-run when that point is among
         the last ``RECENT`` this run passed, else two (a scan finds it first)."""
-        earlier = next(
-            (point for point in reversed(self._recent) if point.count < at.count and point.depth <= at.depth), None
-        )
-        if earlier is None:
-            self.rerun(stepping.step_back(at))
-            return
-        self.timeline.rewind(earlier.count)
-        self.rerun(stepping.reach(earlier.count, "step"))
+        for recent in self._earlier(at):
+            if recent.point.depth <= at.depth:
+                self._back_to(recent.point.count, "step")
+                return
+        self.rerun(stepping.step_back(at))
+
+    def reverse_continue(self, at: Point) -> None:
+        """Back to the last breakpoint hit before ``at``: one re-run when it is among the recent points and the
+        breakpoints have not changed since they were passed (else a hit there would not be the same), else two."""
+        for recent in self._earlier(at):
+            if recent.generation != self.breakpoints.generation:
+                break
+            if recent.hit:
+                self._back_to(recent.point.count, "breakpoint")
+                return
+        self.rerun(stepping.reverse_continue(at))
+
+    def _earlier(self, at: Point) -> Iterator[_Recent]:
+        return (recent for recent in reversed(self._recent) if recent.point.count < at.count)
+
+    def _back_to(self, count: int, reason: str) -> None:
+        self.timeline.rewind(count)
+        self.rerun(stepping.reach(count, reason))
 
     def pause(self) -> None:
         self._pause_requested = True
@@ -201,9 +225,10 @@ class Execution:
         for intervention in self.timeline.due(point.count):
             intervention.apply(controller)
         plan = self._plan
-        if not point.resumed:
-            self._recent.append(point)
         decision = None if point.resumed else self.breakpoints.reached(pc, self.evaluator)
+        if not point.resumed:
+            hit = decision is not None and decision.stop
+            self._recent.append(_Recent(point, hit, self.breakpoints.generation))
         if decision is not None and decision.log is not None and point.count >= self._logged_from:
             self.listener.output(decision.log, "console")
         if self._terminating:

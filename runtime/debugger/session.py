@@ -346,7 +346,7 @@ class Session:
     def reverse_continue(self, arguments: dict[str, Any]) -> None:
         execution, _ = self._paused()
         assert execution.point is not None and self.breakpoints is not None
-        execution.rerun(stepping.reverse_continue(execution.point))
+        execution.reverse_continue(execution.point)
 
     def pause(self, arguments: dict[str, Any]) -> None:
         if self.execution is None:

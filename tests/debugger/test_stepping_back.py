@@ -73,6 +73,17 @@ def test_reverse_continue_goes_back_to_the_previous_hit_of_a_breakpoint(debug: D
     assert _state(client) == (4, "1", "1")
 
 
+def test_reverse_continue_finds_the_hits_of_a_breakpoint_set_after_they_were_passed(debug: Debug) -> None:
+    client = debug(LOOP, breakpoints=(6,))
+    client.stopped()
+    client.set_breakpoints(4, 6)
+    client.step("reverseContinue")
+    assert _state(client) == (4, "2", "3")
+    client.set_breakpoints({"line": 4, "condition": "a = 1"})
+    client.step("reverseContinue")
+    assert _state(client) == (4, "1", "1")
+
+
 def test_reverse_continue_with_no_earlier_hit_stops_at_the_start(debug: Debug) -> None:
     client = debug(LOOP, breakpoints=(4,))
     client.stopped()

@@ -3,9 +3,10 @@
 Stepping back re-runs the program from the start to an earlier point
 (``stepping.py``): the simulator is deterministic, so that point's state is the
 state the first run had there. Nothing of the past is stored but what the
-user changed, so memory stays the size of the program whatever the length of
-the run, and time to step back grows with the simulated time before the point
-(measured in ``benchmarks/``). Checkpoints of the whole controller would trade
+user changed (and a bounded window of recent points, ``execution.RECENT``), so
+memory stays the size of the program whatever the length of the run, and time
+to step back grows with the simulated time before the point (measured in
+``benchmarks/debugger_step_back.py``). Checkpoints of the whole controller would trade
 memory for that time, but its parts are closures over one another that no
 copy can rebind.
 

@@ -9,9 +9,10 @@ and stopping at ``k`` (``history.py``). A statement that blocks (``PAUSE``,
 attempts are *resumed* points, where stepping never stops, so ``next`` over a
 ``PAUSE`` stops after it has passed.
 
-Forward plans stop at the first point they accept; backward plans are
-resolved in two passes: a scan of a re-run finds the last accepted point
-before the current one, and a second re-run stops there.
+Forward plans stop at the first point they accept. Going back to a point the
+run passed recently is one re-run that stops there (``reach``); further back,
+a scan of a first re-run finds the last accepted point before the current
+one, and a second re-run stops there.
 """
 
 from __future__ import annotations

@@ -30,6 +30,7 @@ from mintlang.syntax.nodes import identity
 
 THREAD_ID = 1  # the program is one thread of control; event handlers run on it
 _WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_QUOTED = re.compile(r'"([^"]*)"')  # keys typed in the debug console
 
 CAPABILITIES: dict[str, Any] = {
     "supportsConfigurationDoneRequest": True,
@@ -319,10 +320,17 @@ class Session:
         return {"value": shown(value)}
 
     def evaluate(self, arguments: dict[str, Any]) -> dict[str, Any]:
+        """A Mint expression's value; in the debug console, a quoted string is typed at the controller's
+        keyboard instead (``"Y"``, ``"12\\r"``), for ``INKEY`` and ``INPUT`` to read as the program goes on."""
         execution, _ = self._paused()
         assert execution.evaluator is not None
-        value = execution.evaluator.evaluate(str(arguments.get("expression", "")))
-        return {"result": shown(value), "variablesReference": 0}
+        text = str(arguments.get("expression", ""))
+        typed = _QUOTED.fullmatch(text.strip())
+        if arguments.get("context") == "repl" and typed is not None:
+            keys = typed.group(1).replace("\\r", "\r").replace("\\n", "\n")
+            execution.intervene(f"typed {text.strip()}", lambda controller: controller.terminal.type_keys(keys))
+            return {"result": f"typed {len(keys)} keys", "variablesReference": 0}
+        return {"result": shown(execution.evaluator.evaluate(text)), "variablesReference": 0}
 
     def cont(self, arguments: dict[str, Any]) -> dict[str, Any]:
         execution, _ = self._paused()

@@ -170,12 +170,44 @@ class InputsOutputs(_ReadOnly):
     def children(self, start: int, count: int | None) -> list[Variable]:
         io = self.controller.io
         found = [
-            Variable("IN", _bits(io.active, io.inputs.high + 1)),
+            Variable("IN", _bits(io.active, io.inputs.high + 1), None, Inputs(self.controller), io.inputs.high + 1),
             Variable("OUT", _bits(io.out, io.outputs.high + 1), "OUT"),
             Variable("RELAY", str(io.relay), "RELAY"),
         ]
         found.extend(Variable(f"ADC.{channel}", shown(value), f"ADC.{channel}") for channel, value in enumerate(io.adc))
         return found
+
+
+class Inputs:
+    """Each digital input's active state; setting one is wiring it on or off now (until the scenario next
+    changes it), so ``IN``, its edges and ``#INx`` see it as the program goes on."""
+
+    def __init__(self, controller: Controller) -> None:
+        self.controller = controller
+
+    def children(self, start: int, count: int | None) -> list[Variable]:
+        io = self.controller.io
+        return [
+            Variable(f"IN.{channel}", str(io.active >> channel & 1))
+            for channel in _page(io.inputs.high + 1, start, count)
+        ]
+
+    def assignment(self, name: str, value: float) -> tuple[str, Apply]:
+        prefix, _, number = name.partition(".")
+        channels = self.controller.io.inputs.high + 1
+        if prefix.upper() != "IN" or not number.isdigit() or int(number) >= channels:
+            raise NotSettable(f"{name} is not an input: IN.0 to IN.{channels - 1}")
+        if value not in (0, 1):
+            raise NotSettable(f"an input is 0 or 1, not {shown(value)}")
+        channel, active = int(number), bool(value)
+
+        def apply(controller: Controller) -> None:
+            io, world = controller.io, controller.world
+            high = active == bool(io.active_level >> channel & 1)  # the electrical level that reads as ``active``
+            world.levels = world.levels | 1 << channel if high else world.levels & ~(1 << channel)
+            io.sample(world.apply(controller.clock.now))
+
+        return f"IN.{channel} = {int(active)}", apply
 
 
 def _bits(value: int, width: int) -> str:

@@ -2,17 +2,19 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from dataclasses import replace
 from types import ModuleType
 
 from mintlang.detection import detect_dialect
+from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.migrate import engine
 from mintlang.migrate.mintmt import addressing, blocks, characters, comments, events, names
 from mintlang.migrate.mintmt.apply import apply
-from mintlang.migrate.mintmt.source import Action, Source
+from mintlang.migrate.mintmt.source import Source
 from mintlang.migrate.model import MigrationResult
+
+_BOM = "\ufeff"
 
 # One module per kind of rewrite, each with its ID, SUMMARY and find(source); the order is the report's.
 REWRITES: tuple[ModuleType, ...] = (comments, characters, addressing, blocks, events, names)
@@ -24,16 +26,30 @@ def to_mintmt(source: str, *, config: str | None = None) -> MigrationResult:
     shows a form only MintMT has (``mintlang.detection``) comes back as it was, ``already_mintmt`` set."""
     texts = [text for text in (source, config) if text is not None]
     if any(detect_dialect(text) is Dialect.MINTMT for text in texts):
-        return _result(engine.untouched(source), config and engine.untouched(config), already=True)
-    configuration = Source(config) if config is not None else None
-    program = Source(source, configuration.macros if configuration is not None else frozenset())
-    migrated_configuration = apply(configuration, list(_actions(configuration))) if configuration else None
-    return _result(apply(program, list(_actions(program))), migrated_configuration, already=False)
+        configuration_as_it_was = engine.untouched(config) if config is not None else None
+        return _result(engine.untouched(source), configuration_as_it_was, already=True)
+    visible: frozenset[str] = frozenset()
+    migrated_configuration = None
+    if config is not None:
+        configuration = Source(config.removeprefix(_BOM))
+        migrated_configuration = _migrated(configuration, config)
+        visible = configuration.macros  # a program sees its configuration file's macros
+    program = Source(source.removeprefix(_BOM), visible)
+    return _result(_migrated(program, source), migrated_configuration, already=False)
 
 
-def _actions(source: Source) -> Iterator[Action]:
-    for rewrite in REWRITES:
-        yield from rewrite.find(source)
+def _migrated(source: Source, written: str) -> engine.FileOutcome:
+    """``source`` (the text ``written`` without its byte-order mark, as the v3 -> v4 migration takes it)
+    migrated, with the mark put back in front: a marker above the first line goes below it."""
+    outcome = apply(source, [action for rewrite in REWRITES for action in rewrite.find(source)])
+    mark = _BOM if written.startswith(_BOM) else ""
+    if not mark:
+        return outcome
+    changes = tuple(
+        replace(change, span=Span(change.span.start + len(mark), change.span.end + len(mark)))
+        for change in outcome.changes
+    )
+    return replace(outcome, source=mark + outcome.source, text=mark + outcome.text, changes=changes)
 
 
 def _result(program: engine.FileOutcome, configuration: engine.FileOutcome | None, *, already: bool) -> MigrationResult:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import re
 from collections import Counter
-from collections.abc import Iterable
+from collections.abc import Sequence
 
 from mintlang.diagnostics import LineIndex, Span
 from mintlang.migrate.context import MARKER
@@ -26,7 +26,7 @@ from mintlang.migrate.model import Change
 _NEWLINE = re.compile(r"\r\n|\r|\n")
 
 
-def apply(source: Source, actions: Iterable[Action]) -> FileOutcome:
+def apply(source: Source, actions: Sequence[Action]) -> FileOutcome:
     """``source`` with ``actions`` done: each rewrite, and each flag's marker (once per line and text)."""
     text = source.text
     index = LineIndex(text)

@@ -131,3 +131,11 @@ def test_a_marker_already_above_its_line_is_not_written_again() -> None:
     twice = to_mintmt(once.text)
     assert (twice.text, twice.changes) == (once.text, ())
     assert [item.line for item in twice.manual] == [item.line for item in once.manual]
+
+
+def test_a_marker_above_the_first_line_goes_after_the_byte_order_mark() -> None:
+    result = to_mintmt("\ufeffWHILE a\nENDW\n")
+    reason = "WHILE … ENDW is kept as v4 writes it: the notes show no MintMT form of it"
+    assert result.text == f"\ufeffREM MIGRATE: MT-BLOCK: {reason}\nWHILE a\nENDW\n"
+    assert [(item.line, item.original_line) for item in result.manual] == [(2, 1)]
+    assert to_mintmt(result.text).text == result.text

@@ -1,6 +1,7 @@
 """Two invariants of ``--to mintmt`` on generated v4 texts (lines of v4 forms in any case, indentation,
-trailing comments and line breaks, mixed): it is lossless — the migrated text, less the marker lines it
-wrote, is the source with each reported change made and nothing else — and it is idempotent."""
+trailing comments and line breaks, mixed, after a byte-order mark or not): it is lossless — the migrated
+text, less the marker lines it wrote, is the source with each reported change made and nothing else — and
+it is idempotent."""
 
 from __future__ import annotations
 
@@ -46,11 +47,14 @@ _line = st.tuples(
     st.sampled_from(["", "   ", " REM why", " : rem  why"]),
     st.sampled_from(["\n", "\r\n", "\r"]),
 ).map(lambda parts: parts[0] + parts[2](parts[1]) + parts[3] + parts[4])
-programs = st.lists(_line, max_size=12).map("".join)
+BOM = "\ufeff"
+programs = st.tuples(st.sampled_from(["", BOM]), st.lists(_line, max_size=12).map("".join)).map("".join)
 
 
 def _without_markers(text: str) -> str:
-    return "".join(line for line in text.splitlines(keepends=True) if not line.lstrip().startswith("REM MIGRATE:"))
+    mark = BOM if text.startswith(BOM) else ""
+    lines = text.removeprefix(mark).splitlines(keepends=True)
+    return mark + "".join(line for line in lines if not line.lstrip().startswith("REM MIGRATE:"))
 
 
 @settings(max_examples=300, deadline=None)

@@ -161,3 +161,15 @@ def test_a_text_already_mintmt_is_left_as_it_was(mintmt: str) -> None:
     result = to_mintmt(mintmt + "GO.0\n")
     assert result.already_mintmt
     assert (result.text, result.changes) == (mintmt + "GO.0\n", ())
+
+
+def test_a_byte_order_mark_stays_first_and_the_changes_are_placed_after_it() -> None:
+    result = to_mintmt("\ufeffREM x\nGO.0\n")
+    assert result.text == "\ufeff' x\nGO(0)\n"
+    assert [(change.span.start, change.original) for change in result.changes] == [(1, "REM"), (9, ".0")]
+
+
+def test_an_empty_configuration_file_beside_a_mintmt_program_is_left_too() -> None:
+    result = to_mintmt("GO(0) ' go\n", config="")
+    assert result.already_mintmt
+    assert result.configuration is not None and result.configuration.text == ""

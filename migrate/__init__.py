@@ -13,7 +13,9 @@ not touch survives byte for byte::
     rules_at(v3_source, offset)  # single-rule quick fixes at a position
 
 A bug a rule meets raises ``MigrationFailed`` naming the rule; the CLI reports it
-for that application only and goes on with the others.
+for that application only and goes on with the others. ``mintlang.migrate.mintmt``
+is the Mint v4 → MintMT migration (``mint-migrate --to mintmt``), with the same
+result and report.
 """
 
 from __future__ import annotations

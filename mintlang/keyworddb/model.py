@@ -54,9 +54,12 @@ class ValueRange:
     fractional: bool  # the printed range has a decimal part, so fractions are accepted
     minimum_included: bool = True  # "0 < x" leaves the bound out
     maximum_included: bool = True  # "x < 4096" likewise
+    allowed: frozenset[float] | None = None  # a mode's values where they are no range: "0 .. 4, 6"
 
     def holds(self, value: float) -> bool:
         """Whether ``value`` lies in the range (True when a bound is not known)."""
+        if self.allowed is not None:
+            return value in self.allowed
         above = self.minimum is None or value > self.minimum or (self.minimum_included and value == self.minimum)
         below = self.maximum is None or value < self.maximum or (self.maximum_included and value == self.maximum)
         return above and below

@@ -437,10 +437,19 @@ def test_a_bound_printed_with_less_than_is_left_out() -> None:
     assert found("OUT = 256\nOUT = 255\n", controller="nextmove-bx") == [("E0003", ERROR, 1)]
 
 
-def test_scaled_keywords_are_not_range_checked() -> None:
-    # the range of a scaled keyword applies to the value times the scale factor (line 5649)
-    assert found("SPEED = -5\n") == []
-    assert found("SPEED = 0.5\n") == []
+def test_a_scaled_keyword_is_checked_only_for_the_sign_the_scale_cannot_change() -> None:
+    # the range of a scaled keyword applies to the value times the scale factor (line 5649), and the scale
+    # factor is positive (000:534-537): SPEED is 1.0 ≤ x, ACCEL 0.0 < x, FOLERRORFATAL 0 ≤ x (§10.3)
+    assert found("SPEED = 0.5\nSPEED = 2000\nFOLERRORFATAL = 0\nACCEL = 0.01\n") == []
+    source = "SPEED = -5\nSPEED = 0\nACCEL = 0\nFOLERRORFATAL = -1\n"
+    assert found(source) == [("E0003", ERROR, 1), ("E0003", ERROR, 2), ("E0003", ERROR, 3), ("E0003", ERROR, 4)]
+    assert only("ACCEL = 0\n", "E0003").message.endswith("(0.0 < x ≤ 8388607.0) whatever the scale factor")
+
+
+def test_a_mode_keyword_takes_only_the_values_its_table_lists() -> None:
+    # HOME is "0 .. 4, 6" and LIMITMODE "0 ≤ x ≤ 3, 5" in their attributes tables (§10.3)
+    source = "HOME.0 = 5\nHOME.0 = 6\nHOME.0 = 4\nLIMITMODE.0 = 5\nLIMITMODE.0 = 4\nLIMITMODE.0 = 9\n"
+    assert found(source) == [("E0003", ERROR, 1), ("E0003", ERROR, 5), ("E0003", ERROR, 6)]
 
 
 # ------------------------------------------------------------------ arrays

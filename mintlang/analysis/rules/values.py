@@ -1,8 +1,9 @@
 """Constant values written to a keyword, checked against its range (error 3).
 
-Only unscaled keywords are checked: for scaled ones the printed range applies
-to the value times the scale factor, which is not known before run time
-(10.2, Attributes).
+For a scaled keyword the printed range applies to the value times the scale
+factor (10.2, Attributes), which is not known before run time; but a scale factor is
+never negative or zero (000:536-537), so the value's sign is the sign of what the range sees:
+``SPEED = -5`` or ``ACCEL = 0`` is out of range whatever the scale.
 """
 
 from __future__ import annotations
@@ -12,6 +13,7 @@ from collections.abc import Iterator
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import LineScope, Use
 from mintlang.keyworddb import database
+from mintlang.keyworddb.model import ValueRange
 from mintlang.semantic.constants import constant_value
 from mintlang.syntax import nodes as n
 
@@ -24,9 +26,10 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             continue
         keyword = db.keywords_of(dialect).get(use.keyword.keyword)
         attributes = keyword.attributes_for(controller) if keyword else None
-        if attributes is None or attributes.scaled or attributes.range is None:
+        if attributes is None or attributes.range is None:
             continue
-        if attributes.range.minimum is None or attributes.range.maximum is None:
+        limits = attributes.range
+        if limits.allowed is None and (limits.minimum is None or limits.maximum is None):
             continue
         for value in use.statement.values or ():
             number = constant_value(value, dialect)
@@ -34,6 +37,17 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
                 continue
             # Whole-number ranges are not enforced: the manual prints "0 ≤ x ≤ 10000" for KDERIV
             # and then writes KDERIV = 1.5 in its example.
-            if not attributes.range.holds(number):
-                detail = f"{number:g} is outside the range of {use.keyword.keyword} ({attributes.range.text})"
+            if not (_scaled_can_hold(limits, number) if attributes.scaled else limits.holds(number)):
+                detail = f"{number:g} is outside the range of {use.keyword.keyword} ({limits.text})"
+                if attributes.scaled:
+                    detail += " whatever the scale factor"
                 yield Finding(use.unit, mint_error(3, value.span, detail))
+
+
+def _scaled_can_hold(limits: ValueRange, value: float) -> bool:
+    """Whether ``value`` times some positive scale factor lies in ``limits``: only its sign is known."""
+    if value > 0:
+        return limits.maximum is None or limits.maximum > 0
+    if value == 0:
+        return limits.holds(0.0)
+    return limits.minimum is None or limits.minimum < 0

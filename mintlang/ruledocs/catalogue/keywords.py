@@ -38,8 +38,10 @@ GROUP = Group(
         RuleDoc(
             3,
             catches="A constant value assigned to a keyword outside the range its entry gives "
-            "(`SCALE = -3`, `KPROP.0 = -1`). Only keywords whose value is not scaled are checked: for the "
-            "others the range applies after the scale factor, which is known only when the program runs.",
+            "(`SCALE = -3`, `KPROP.0 = -1`), or a mode keyword's value its table does not list (`HOME.0 = 5`). "
+            "For a scaled keyword the range applies after the scale factor, known only when the program runs; "
+            "as the factor is always positive, only a sign no factor can mend is reported (`SPEED = -5`, "
+            "`ACCEL = 0`).",
             why="The controller raises the error when the line runs and stops the program (or calls "
             "#ONERROR); the parameter keeps its old value.",
             example=Example(

@@ -259,6 +259,8 @@ class Chain:
                     axis.triggered -= 1
         if self._speed(self.members[0].slew_speed()) != speed and tick < self.end and not self.paused:
             self._plan(tick, s, v)
+        if self.paused and tick >= self.end:
+            self.live = False  # at rest until resumed: no tick changes it
         self._extend(tick)
 
     def _extend(self, tick: int) -> None:
@@ -324,6 +326,7 @@ class Chain:
     def resume(self, tick: int) -> None:
         """SUSPEND released: on along the path from where it is, as if the segments ahead were just joined."""
         self.paused = False
+        self.live = self.extendable or self._feedrates_ahead()
         s, v = self.timing.sample(tick)
         self._plan(tick, s, v)
 

@@ -54,10 +54,12 @@ class BufferLowEvent:
                 self.events.raise_event(EventClass.MOVEBUFFERLOW)
 
     def next_required(self, now: int) -> int:
-        """The tick a move of a watched axis ends, when a place frees; a live move frees them on any tick."""
+        """The tick a move of a watched axis ends, when a place frees; a live move frees them on any tick, a held
+        one (SUSPEND, a stop input) on none."""
         soonest = NEVER
         for number in self.levels:
-            move = self.motion.axes[number].move
-            if move is not None:
+            axis = self.motion.axes[number]
+            move = axis.move
+            if move is not None and not axis.held:
                 soonest = min(soonest, now + 1 if move.live else max(move.end, now + 1))
         return soonest

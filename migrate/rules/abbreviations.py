@@ -35,13 +35,18 @@ class ExpandAbbreviations(Rule):
     evidence = "spec M-ABBR, §9; v3 keyword entries; v4:9258 DE, v4:12313 IM, v4:14092 MD, v4:10949 GR, v4:9517 DT"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        """Reads each line's significant tokens (words are never trivia), not the lossless stream."""
+        """Reads each line's significant tokens (words are never trivia), not the lossless stream,
+        and cuts the text of the words only: this runs over every token of the application."""
         canonical = vocabulary(Dialect.V3).canonical
         for file in context.files.values():
             for offset, line in file.document.physical:
-                for kind, text, start in zip(line.kinds, line.texts, line.starts, strict=True):
-                    if kind not in WORDS or not text.isalnum():
+                line_text = line.text
+                for kind, start, end in zip(line.kinds, line.starts, line.ends, strict=True):
+                    if kind not in WORDS:
+                        continue
+                    text = line_text[start:end]
+                    if not text.isalnum():
                         continue
                     name = canonical.get(text.upper())  # not IN12 -> IN: a glued channel stays
                     if name is not None and name != text.upper():
-                        yield self.replace(file, Span(offset + start, offset + start + len(text)), like(text, name))
+                        yield self.replace(file, Span(offset + start, offset + end), like(text, name))

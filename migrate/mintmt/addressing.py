@@ -4,7 +4,8 @@ The notes write one axis or channel ``MOVER(0)``, ``POS(0)``, ``OUTX(0)``, sever
 ``GO(0,1)`` and ``VECTORA(0,1) = 10, 10``, and axes that all take one value (v4's
 ``;``) ``MOVEBUFFERSIZE([0,1]) = 4;``; the project reads each the way v4 reads
 ``[0]``, ``.0`` and ``[0,1]`` (mintlang/MINTMT.md). So the bracket or dot is
-replaced and what is inside copied as written (MT-18).
+replaced and what is inside copied as written (MT-18). v4's ``OUT.2``, one output
+channel, is ``OUTX(2)``: the note's "turn on digital output 0" (004:148).
 
 Kept as v4 writes it, which MintMT reads too (MT-4): ``.(a+1)`` (round brackets,
 like v4's square ones, take a number or a variable), a dot form with several
@@ -20,11 +21,13 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.diagnostics import Span
-from mintlang.migrate.mintmt.source import Action, Flag, Line, Rewrite, Source, touches
+from mintlang.dialect import Dialect
+from mintlang.migrate.mintmt.source import Action, Flag, Line, Rewrite, Source, span, styled, touches
 from mintlang.syntax.tokens import Token, TokenKind
+from mintlang.syntax.vocabulary import vocabulary
 
 ID = "MT-ADDRESS"
-SUMMARY = "a keyword's .axis and [axes] become (axis) and (axes), or ([axes]) before a ;"
+SUMMARY = "a keyword's .axis and [axes] become (axis) and (axes), or ([axes]) before a ;, OUT.n OUTX(n)"
 
 _K = TokenKind
 _DOT_VALUES = frozenset({_K.NUMBER, _K.NAME, _K.CONSTANT})
@@ -40,9 +43,20 @@ def find(source: Source) -> Iterator[Action]:
         if after is None:
             continue
         if after.kind is _K.DOT and touches(token, after):
-            yield from _dot(source, line, index + 1)
+            selector = list(_dot(source, line, index + 1))
         elif after.kind is _K.LSQB:
-            yield from _square(line, index + 1)
+            selector = list(_square(line, index + 1))
+        else:
+            continue
+        yield from selector
+        if selector and _one_output(token, selector[0]):
+            yield Rewrite(ID, span(token), styled("OUTX", token.text))
+
+
+def _one_output(keyword: Token, selector: Rewrite) -> bool:
+    """Whether ``keyword`` is v4's ``OUT`` addressing one channel (``OUT.2``): MintMT's ``OUTX(2)`` (004:148)."""
+    one = "," not in selector.text  # a channel is a number or a variable: no inner comma
+    return one and vocabulary(Dialect.V4).canonical.get(keyword.text.upper()) == "OUT"
 
 
 def _dot(source: Source, line: Line, dot: int) -> Iterator[Action]:

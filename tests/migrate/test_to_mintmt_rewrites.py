@@ -34,7 +34,9 @@ ADDRESSING = [
     pytest.param("DIM x\nx = POS.1 + POS[2]\n", "DIM x\nx = POS(1) + POS(2)\n", id="reads"),
     pytest.param("DIM axis\nSPEED.axis = 5\n", "DIM axis\nSPEED(axis) = 5\n", id="variable"),
     pytest.param("speed.0 = 5\n", "speed(0) = 5\n", id="case-kept"),
-    pytest.param("PAUSE IDLE.0 : OUT.3 = 1\n", "PAUSE IDLE(0) : OUT(3) = 1\n", id="several-on-a-line"),
+    pytest.param("PAUSE IDLE.0 : JOG.1 = 5\n", "PAUSE IDLE(0) : JOG(1) = 5\n", id="several-on-a-line"),
+    pytest.param("OUT.3 = 1\n", "OUTX(3) = 1\n", id="one-output-channel-is-outx"),  # 004:148
+    pytest.param("DIM x\nx = ot.2\n", "DIM x\nx = outx(2)\n", id="one-output-channel-read-abbreviated"),
 ]
 
 BLOCKS = [
@@ -78,6 +80,7 @@ UNCHANGED = [
     pytest.param("DIM a, b\nIF a THEN b = 1\n", id="one-line-if"),
     pytest.param("DIM a\nIF a DO\n", id="if-block-never-closed"),  # IF a THEN would read back as a one-line IF
     pytest.param("SPEED = 5\nGO\n", id="default-axes"),
+    pytest.param("OUT = 266\n", id="the-whole-output-bank"),
     pytest.param("", id="empty"),
 ]
 

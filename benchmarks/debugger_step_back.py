@@ -29,7 +29,7 @@ from pathlib import Path
 from mintlang.runtime.debugger import stepping
 from mintlang.runtime.debugger.breakpoints import Breakpoints
 from mintlang.runtime.debugger.execution import Execution
-from mintlang.runtime.debugger.launch import Application, prepare, statements
+from mintlang.runtime.debugger.launch import Application, layout, prepare
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
 from mintlang.runtime.simulation import Limits
@@ -78,7 +78,7 @@ def timed(arrivals: Arrivals, action: Callable[[], None]) -> float:
 def round_trip(application: Application, last_line: int) -> tuple[float, float, float]:
     """(forward to the last statement, step back, reverse-continue), in seconds."""
     arrivals = Arrivals()
-    breakpoints = Breakpoints(statements(application))
+    breakpoints = Breakpoints(layout(application))
     execution = Execution(application, breakpoints, arrivals)
     breakpoints.replace("program", [{"line": last_line}])
     forward = timed(arrivals, lambda: execution.start(stepping.cont(-1)))

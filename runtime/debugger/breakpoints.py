@@ -1,4 +1,5 @@
-"""Line breakpoints: where they bind, their condition, hit count and log message, and whether a point hits one.
+"""Breakpoints on lines and on labels: where they bind, their condition, hit count and log message, and
+whether a point hits one.
 
 A breakpoint binds to the first statement of its line, or of the next line
 holding a statement (a comment, a label or a blank line runs nothing): it
@@ -10,7 +11,10 @@ re-runs from the start, and counts from there): ``5`` or ``== 5`` stops at the
 fifth, ``>= 5`` (or ``> 4``) from the fifth on, ``< 3`` at the first two, ``% 3``
 at every third. The editor sends all of a file's breakpoints whenever one
 changes: those it sends unchanged keep their count. A log message prints
-instead of stopping, each ``{expression}`` in it replaced by its value.
+instead of stopping, each ``{expression}`` in it replaced by its value. A
+breakpoint on a label (the editor's function breakpoints: ``TIMER``,
+``ONERROR``, ``IN3``, a subroutine) stops where the label's code starts, so at
+each event the handler serves.
 """
 
 from __future__ import annotations
@@ -22,7 +26,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from mintlang.runtime.debugger.evaluation import Compiled, EvaluationError, Evaluator, run, shown
-from mintlang.runtime.interpreter.vm import Site
+from mintlang.runtime.debugger.launch import Layout
+from mintlang.syntax.nodes import identity
 
 _HIT = re.compile(r"^\s*(==|>=|<=|>|<|%)?\s*(\d+)\s*$")
 _TESTS: Mapping[str, Callable[[int, int], bool]] = {
@@ -34,6 +39,7 @@ _TESTS: Mapping[str, Callable[[int, int], bool]] = {
     "%": lambda hits, every: every > 0 and hits % every == 0,
 }
 _PLACEHOLDER = re.compile(r"\{([^{}]*)\}")
+FUNCTIONS = "functions"  # the group of breakpoints on labels
 
 
 def hit_test(text: str) -> Callable[[int], bool]:
@@ -52,6 +58,7 @@ class Breakpoint:
     unit: str  # "program" or "configuration"
     requested: int  # the line the editor asked for
     line: int | None  # where it binds; None when no statement is at or after the line
+    pc: int | None  # the statement it stops before
     condition: str | None = None
     hit_condition: str | None = None
     log_message: str | None = None
@@ -59,9 +66,12 @@ class Breakpoint:
     hits: int = 0
     compiled: Compiled | None = field(default=None, repr=False)  # the condition, for the run now going
 
-    def as_dap(self, source: Mapping[str, Any]) -> dict[str, Any]:
-        body: dict[str, Any] = {"id": self.id, "verified": self.problem is None, "source": dict(source)}
-        body["line"] = self.line if self.line is not None else self.requested
+    def as_dap(self, source: Mapping[str, Any] | None) -> dict[str, Any]:
+        body: dict[str, Any] = {"id": self.id, "verified": self.problem is None}
+        if source is not None:
+            body["source"] = dict(source)
+        if self.line is not None or self.requested:
+            body["line"] = self.line if self.line is not None else self.requested
         if self.problem is not None:
             body["message"] = self.problem
         return body
@@ -77,51 +87,75 @@ class Decision:
 
 
 class Breakpoints:
-    """The breakpoints of both files, bound to the statements of the compiled application."""
+    """The breakpoints of both files and of the program's labels, bound to the compiled application."""
 
-    def __init__(self, sites: list[Site]) -> None:
-        self.sites = sites
+    def __init__(self, layout: Layout) -> None:
+        self.sites = layout.sites
+        self.labels = layout.labels
         self.next_id = 1
         self.generation = 0  # changes with every change of the breakpoints
-        self.by_unit: dict[str, list[Breakpoint]] = {}
+        self.groups: dict[str, list[Breakpoint]] = {}  # a file's ("program", "configuration") or FUNCTIONS
         self.by_pc: dict[int, Breakpoint] = {}
         self.first_of_line: dict[tuple[str, int], int] = {}  # (unit, line) -> pc of its first statement
-        for pc, site in enumerate(sites):
+        for pc, site in enumerate(self.sites):
             self.first_of_line.setdefault((site.unit, site.line), pc)
 
     def replace(self, unit: str, requests: Iterable[Mapping[str, Any]]) -> list[Breakpoint]:
         """The breakpoints of one file, as ``setBreakpoints`` gives them all at once."""
         lines = sorted(line for found_unit, line in self.first_of_line if found_unit == unit)
-        counted = {_key(old): old.hits for old in self.by_unit.get(unit, [])}
         placed = []
         for request in requests:
             requested = int(request.get("line", 0))
             line = next((line for line in lines if line >= requested), None)
-            breakpoint_ = Breakpoint(self.next_id, unit, requested, line)
-            self.next_id += 1
-            breakpoint_.condition = request.get("condition") or None
-            breakpoint_.hit_condition = request.get("hitCondition") or None
-            breakpoint_.log_message = request.get("logMessage") or None
-            breakpoint_.hits = counted.get(_key(breakpoint_), 0)
             if line is None:
-                breakpoint_.problem = f"no statement at or after line {requested}"
-            elif breakpoint_.hit_condition is not None:
-                try:
-                    hit_test(breakpoint_.hit_condition)
-                except ValueError as problem:
-                    breakpoint_.problem = str(problem)
-            placed.append(breakpoint_)
-        self.by_unit[unit] = placed
-        self.generation += 1
-        self._index()
-        return placed
+                placed.append(self._made(request, unit, requested, None, f"no statement at or after line {requested}"))
+            else:
+                placed.append(self._made(request, unit, requested, self.first_of_line[(unit, line)]))
+        return self._replaced(unit, placed)
 
-    def _index(self) -> None:
+    def replace_functions(self, requests: Iterable[Mapping[str, Any]]) -> list[Breakpoint]:
+        """Breakpoints on labels (``setFunctionBreakpoints``): ``TIMER`` or ``#TIMER`` stops as ``#TIMER``
+        starts, whether an event, a GOSUB or a GOTO runs it."""
+        placed = []
+        for request in requests:
+            name = str(request.get("name", "")).strip().lstrip("#")
+            pc = self.labels.get(identity(name))
+            if pc is None or pc >= len(self.sites):
+                placed.append(self._made(request, "program", 0, None, f"the program has no label #{name}"))
+            else:
+                placed.append(self._made(request, self.sites[pc].unit, self.sites[pc].line, pc))
+        return self._replaced(FUNCTIONS, placed)
+
+    def _made(
+        self, request: Mapping[str, Any], unit: str, requested: int, pc: int | None, problem: str | None = None
+    ) -> Breakpoint:
+        line = self.sites[pc].line if pc is not None else None
+        breakpoint_ = Breakpoint(self.next_id, unit, requested, line, pc)
+        self.next_id += 1
+        breakpoint_.condition = request.get("condition") or None
+        breakpoint_.hit_condition = request.get("hitCondition") or None
+        breakpoint_.log_message = request.get("logMessage") or None
+        breakpoint_.problem = problem
+        if problem is None and breakpoint_.hit_condition is not None:
+            try:
+                hit_test(breakpoint_.hit_condition)
+            except ValueError as unreadable:
+                breakpoint_.problem = str(unreadable)
+        return breakpoint_
+
+    def _replaced(self, group: str, placed: list[Breakpoint]) -> list[Breakpoint]:
+        """``placed`` instead of the group's breakpoints; those sent again unchanged keep their hit count."""
+        counted = {_key(old): old.hits for old in self.groups.get(group, [])}
+        for breakpoint_ in placed:
+            breakpoint_.hits = counted.get(_key(breakpoint_), 0)
+        self.groups[group] = placed
+        self.generation += 1
         self.by_pc = {}
-        for placed in self.by_unit.values():
-            for breakpoint_ in placed:
-                if breakpoint_.problem is None and breakpoint_.line is not None:
-                    self.by_pc.setdefault(self.first_of_line[(breakpoint_.unit, breakpoint_.line)], breakpoint_)
+        for group_placed in self.groups.values():
+            for breakpoint_ in group_placed:
+                if breakpoint_.problem is None and breakpoint_.pc is not None:
+                    self.by_pc.setdefault(breakpoint_.pc, breakpoint_)
+        return placed
 
     def start_run(self) -> None:
         """A new run begins: hit counts from zero, conditions compiled afresh against it when first met."""
@@ -154,8 +188,8 @@ class Breakpoints:
 
 
 def _key(breakpoint_: Breakpoint) -> tuple[int | None, str | None, str | None, str | None]:
-    """What makes two breakpoints of a file the same one, sent again."""
-    return breakpoint_.line, breakpoint_.condition, breakpoint_.hit_condition, breakpoint_.log_message
+    """What makes two breakpoints of a group the same one, sent again."""
+    return breakpoint_.pc, breakpoint_.condition, breakpoint_.hit_condition, breakpoint_.log_message
 
 
 def interpolate(message: str, evaluator: Evaluator) -> str:

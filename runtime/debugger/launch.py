@@ -12,7 +12,7 @@ as it is.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -120,26 +120,34 @@ def prepare(arguments: Mapping[str, Any]) -> Application:
     )
 
 
+@dataclass(frozen=True, slots=True)
+class Layout:
+    """The compiled application: its statements in order and the program's labels (subroutines and event
+    handlers, by identity) with the statement each starts at."""
+
+    sites: tuple[Site, ...] = ()
+    labels: Mapping[str, int] = field(default_factory=dict)
+
+
 class _Compiled(Exception):
-    """Ends the trial compile of ``statements`` once the statements are known."""
+    def __init__(self, layout: Layout) -> None:
+        self.layout = layout
 
 
-def statements(application: Application) -> list[Site]:
-    """The application's statements as the controller compiles them, from a run stopped before its first tick
-    (breakpoints bind to them before the program starts)."""
-    found: list[Site] = []
+def layout(application: Application) -> Layout:
+    """The application as the controller compiles it, from a run stopped before its first tick (breakpoints
+    bind to it before the program starts); empty when it cannot be built."""
 
     def compiled(controller: Controller) -> None:
-        found.extend(controller.vm.sites)
-        raise _Compiled
+        raise _Compiled(Layout(tuple(controller.vm.sites), dict(controller.linked.handlers)))
 
     try:
         application.run(compiled)
-    except _Compiled:
-        pass
+    except _Compiled as done:
+        return done.layout
     except ScenarioFileError as error:  # a REM @sim directive the scenario cannot read
         raise LaunchError(str(error)) from None
-    return found
+    return Layout()
 
 
 def _path(value: object, name: str) -> Path | None:

@@ -22,7 +22,7 @@ from mintlang.runtime.debugger.breakpoints import Breakpoints
 from mintlang.runtime.debugger.evaluation import EvaluationError, shown
 from mintlang.runtime.debugger.execution import ERRORS, UNHANDLED, Execution
 from mintlang.runtime.debugger.framing import FramingError, read_message, write_message
-from mintlang.runtime.debugger.launch import Application, LaunchError, prepare, statements
+from mintlang.runtime.debugger.launch import Application, LaunchError, layout, prepare
 from mintlang.runtime.debugger.variables import NotSettable, References, scopes
 from mintlang.runtime.interpreter.vm import Site, StopReason
 from mintlang.runtime.run import RunResult
@@ -36,6 +36,7 @@ CAPABILITIES: dict[str, Any] = {
     "supportsConfigurationDoneRequest": True,
     "supportsConditionalBreakpoints": True,
     "supportsHitConditionalBreakpoints": True,
+    "supportsFunctionBreakpoints": True,
     "supportsLogPoints": True,
     "supportsEvaluateForHovers": True,
     "supportsSetVariable": True,
@@ -79,6 +80,7 @@ class Session:
             "initialize": self.initialize,
             "launch": self.launch,
             "setBreakpoints": self.set_breakpoints,
+            "setFunctionBreakpoints": self.set_function_breakpoints,
             "setExceptionBreakpoints": self.set_exception_breakpoints,
             "configurationDone": self.configuration_done,
             "threads": self.threads,
@@ -198,7 +200,7 @@ class Session:
         if self.application is not None:
             raise RequestError("this session has already launched a program")
         application = prepare(arguments)
-        self.breakpoints = Breakpoints(statements(application))
+        self.breakpoints = Breakpoints(layout(application))
         self.spellings = _spellings(application)
         self.application = application
 
@@ -214,6 +216,15 @@ class Session:
             return {"breakpoints": [{"verified": False, "message": problem} for _ in requested]}
         placed = breakpoints.replace(unit, requested)
         return {"breakpoints": [breakpoint_.as_dap(source) for breakpoint_ in placed]}
+
+    def set_function_breakpoints(self, arguments: dict[str, Any]) -> dict[str, Any]:
+        application, breakpoints = self._launched()
+        placed = breakpoints.replace_functions(arguments.get("breakpoints", []))
+        return {
+            "breakpoints": [
+                item.as_dap(_source(application, item.unit) if item.pc is not None else None) for item in placed
+            ]
+        }
 
     def set_exception_breakpoints(self, arguments: dict[str, Any]) -> dict[str, Any]:
         filters = frozenset(arguments.get("filters", []))
@@ -270,9 +281,9 @@ class Session:
         assert self.application is not None
         name = self._routine(pc, site, controller)
         frame: dict[str, Any] = {"id": depth + 1, "name": name, "line": site.line if site else 0, "column": 1}
-        path = self.application.path_of(site.unit) if site is not None else None
-        if path is not None:
-            frame["source"] = {"name": path.name, "path": str(path.resolve())}
+        source = _source(self.application, site.unit) if site is not None else None
+        if source is not None:
+            frame["source"] = source
         return frame
 
     def _routine(self, pc: int, site: Site | None, controller: Controller) -> str:
@@ -393,6 +404,11 @@ def _spellings(application: Application) -> dict[str, str]:
         for word in _WORD.findall(text):
             spellings.setdefault(identity(word), word)
     return spellings
+
+
+def _source(application: Application, unit: str) -> dict[str, Any] | None:
+    path = application.path_of(unit)
+    return {"name": path.name, "path": str(path.resolve())} if path is not None else None
 
 
 def _unit_of(application: Application, path: object) -> str | None:

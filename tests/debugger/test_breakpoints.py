@@ -109,3 +109,32 @@ def test_breakpoints_in_the_configuration_file_stop_there_before_the_program_run
     client.set_breakpoints(2)
     client.step("continue")
     assert client.values() == {"feed": "25", "twice": "0"}
+
+
+TIMED = """\
+DIM ticks
+TIMEREVENT = 10
+PAUSE ticks = 3
+END
+#TIMER
+  ticks = ticks + 1
+RETURN
+"""
+
+
+def test_a_breakpoint_on_a_handlers_label_stops_at_each_event_it_serves(debug: Debug) -> None:
+    client = debug(TIMED, stopOnEntry=True)
+    client.stopped()
+    (placed,) = client.body("setFunctionBreakpoints", {"breakpoints": [{"name": "#TIMER"}]})["breakpoints"]
+    assert (placed["verified"], placed["line"]) == (True, 6)
+    client.step("continue")
+    assert [frame["name"] for frame in client.frames()] == ["#TIMER", "program"]
+    assert (client.values()["ticks"], client.evaluate("TIME")) == ("0", "10")
+    client.step("continue")
+    assert (client.values()["ticks"], client.evaluate("TIME")) == ("1", "20")
+
+
+def test_a_label_the_program_lacks_is_an_unverified_breakpoint(debug: Debug) -> None:
+    client = debug(TIMED)
+    (placed,) = client.body("setFunctionBreakpoints", {"breakpoints": [{"name": "IN3"}]})["breakpoints"]
+    assert not placed["verified"] and "no label #IN3" in placed["message"]

@@ -26,6 +26,7 @@ pytestmark = [
     pytest.mark.skipif(not (Path(NVIM_DAP) / "lua" / "dap").is_dir(), reason="$NVIM_DAP names no copy of nvim-dap"),
 ]
 
+
 def test_the_readme_configuration_debugs_forwards_and_back(tmp_path: Path) -> None:
     readme = (Path(__file__).parents[2] / "README.md").read_text(encoding="utf-8")
     configuration = (NVIM / "dap.lua").read_text(encoding="utf-8")

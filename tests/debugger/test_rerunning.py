@@ -20,7 +20,7 @@ from mintlang.runtime.debugger import execution as execution_module
 from mintlang.runtime.debugger import stepping
 from mintlang.runtime.debugger.breakpoints import Breakpoints
 from mintlang.runtime.debugger.execution import Execution
-from mintlang.runtime.debugger.launch import prepare, statements
+from mintlang.runtime.debugger.launch import layout, prepare
 from mintlang.runtime.observation import axis_state
 from mintlang.runtime.run import RunResult
 from tests.runtime.programs import UNTIL_MS, Program, timed_programs
@@ -36,7 +36,7 @@ class Harness:
         path = folder / "generated.mnt"
         path.write_text(source, encoding="utf-8")
         application = prepare({"program": str(path), "untilMs": UNTIL_MS, "dialect": "v4", "noConfig": True})
-        self.execution = Execution(application, Breakpoints(statements(application)), self)
+        self.execution = Execution(application, Breakpoints(layout(application)), self)
         self.reports: queue.Queue[str] = queue.Queue()
 
     def stopped(self, reason: str, description: str | None) -> None:

@@ -14,6 +14,7 @@ from mintlang.diagnostics import Span, split_lines
 from mintlang.migrate.context import LABEL, MARKER, Context, FileView, name_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Replace, Rule
+from mintlang.migrate.rules.explicit_axes import axis_keyword
 from mintlang.semantic.events import EventKind, event_of
 from mintlang.semantic.symbols import Symbol, SymbolKind
 from mintlang.semantic.units import Unit
@@ -119,22 +120,32 @@ def _dimmed(context: Context) -> dict[Unit, set[str]]:
 class DefaultAxes(Rule):
     """An application that never sets AXES gets ``AXES[0,1,2]``: v3 powered up with three
     default axes, v4 with all the controller's axes, so bracket-less STOP, GO, RESET or
-    ``SPEED = …;`` would act on more axes. Not needed when the controller has at most three.
+    ``SPEED = …;`` would act on more axes. Not needed when the controller has at most three,
+    nor when no axis keyword is written without its axes (an empty file, ``OUT.2 = 1``):
+    then the default decides nothing, and a file already in v4 stays as it is.
     """
 
     id = "M-AXES"
     rule_class = RuleClass.MECHANICAL
     phase = Phase.INSERTIONS
-    summary = "no AXES anywhere -> 'AXES[0,1,2]' first in the configuration file (or program)"
+    summary = "an axis keyword without axes, no AXES -> 'AXES[0,1,2]' first in the configuration file (or program)"
     evidence = "spec M-AXES; v3:1029-1033; v4:605-608, v4:144-182"
 
     def apply(self, context: Context) -> Iterator[Action]:
         if context.controller.axis_count <= V3_DEFAULT_AXES:
             return
-        if next(context.placed(n.Axes), None) is not None:
+        if next(context.placed(n.Axes), None) is not None or not _relies_on_default_axes(context):
             return
         axes = ",".join(str(axis) for axis in range(V3_DEFAULT_AXES))
         yield insert_lines(prologue_file(context), [f"AXES[{axes}]"])
+
+
+def _relies_on_default_axes(context: Context) -> bool:
+    """Whether an axis keyword is written anywhere without its axes (no ``[...]`` list, no ``.n``):
+    such a use acts on, or reads, the AXES default."""
+    axis_keywords = context.mentioned(lambda name: axis_keyword(context, name))
+    uses = context.keyword_uses(*axis_keywords)
+    return any(use.keyword.selector is None and use.keyword.channel is None for _, use in uses)
 
 
 class InputEdges(Rule):

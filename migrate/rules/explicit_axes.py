@@ -36,7 +36,7 @@ class ExplicitAxes(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         for file, before, statement, _ in context.neighbours(
-            *context.mentioned(lambda name: _axis_keyword(context, name))
+            *context.mentioned(lambda name: axis_keyword(context, name))
         ):
             if not isinstance(statement, n.KeywordStatement) or not _bracketless_axis_keyword(context, statement):
                 continue
@@ -50,10 +50,11 @@ class ExplicitAxes(Rule):
 
 def _bracketless_axis_keyword(context: Context, statement: n.KeywordStatement) -> bool:
     keyword = statement.keyword
-    return _axis_keyword(context, keyword.keyword) and keyword.selector is None and keyword.channel is None
+    return axis_keyword(context, keyword.keyword) and keyword.selector is None and keyword.channel is None
 
 
-def _axis_keyword(context: Context, name: str) -> bool:
+def axis_keyword(context: Context, name: str) -> bool:
+    """Whether the keyword ``name`` addresses axes (``[...]``, ``.n`` or the AXES default)."""
     entry = context.db.keywords.get(name)
     return entry is not None and entry.addressing is Addressing.AXIS
 

@@ -18,8 +18,8 @@ from mintlang.migrate import cli as migrate_cli
 from mintlang.migrate import migrate
 from mintlang.migrate.context import Context
 
-V3 = "DIM a\nPRINT a\nEND\n"
-V4 = "AXES[0,1,2]\nDIM a\nPRINT a\nEND\n"
+V3 = "DIM a\nPRINT a\nSTOP\n"
+V4 = "AXES[0,1,2]\nDIM a\nPRINT a\nSTOP\n"
 
 
 def run(*arguments: object) -> Result:
@@ -47,7 +47,7 @@ def test_markup_in_a_program_or_its_path_is_printed_as_text(
 ) -> None:
     monkeypatch.chdir(tmp_path)
     Path("x[").mkdir()
-    program(Path(), name, 'DIM x\nPRINT x "[/b]"\nEND\n')
+    program(Path(), name, 'DIM x\nPRINT x "[/b]"\nSTOP\n')
     result = run(name)
     assert result.exit_code == 0  # a manual item, not a crash
     message = "X-COMMENTED not valid Mint v3 either (Syntax error: unexpected '\"[/b]\"')"
@@ -188,9 +188,9 @@ def test_a_file_that_cannot_be_written_is_named_and_the_others_are_written(
 
 def test_a_byte_order_mark_stays_first(tmp_path: Path) -> None:
     path = tmp_path / "bom.mnt"
-    path.write_bytes(b"\xef\xbb\xbfREM x\nDIM a\nPRINT a\nEND\n")
+    path.write_bytes(b"\xef\xbb\xbfREM x\nDIM a\nPRINT a\nSTOP\n")
     assert run("--write", path).exit_code == 0
-    assert path.read_bytes() == b"\xef\xbb\xbfREM x\nAXES[0,1,2]\nDIM a\nPRINT a\nEND\n"
+    assert path.read_bytes() == b"\xef\xbb\xbfREM x\nAXES[0,1,2]\nDIM a\nPRINT a\nSTOP\n"
 
 
 def test_a_byte_order_mark_does_not_move_the_changes() -> None:

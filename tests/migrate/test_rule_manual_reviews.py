@@ -51,7 +51,7 @@ def test_equality_on_fractions_and_fractional_loops() -> None:
 
 
 def test_arrays_in_the_configuration_file() -> None:
-    result = one_rule("X-ARRAY-CFG", "DIM b(3)\n", config="AUTO\nDIM a(10)\nDIM x\na(1) = 5\n")
+    result = one_rule("X-ARRAY-CFG", "DIM b(3)\n", config="AUTO\nDIM a(10)\na(1) = 5\n")
     assert result.configuration is not None
     reasons = [item.reason for item in result.configuration.manual]
     assert reasons == [

@@ -183,7 +183,7 @@ def test_arrays_are_not_redeclared_and_undimensioned_arrays_are_flagged() -> Non
     assert rewritten("M-DIM", "DIM d(5)\nFOR d = 1 TO 5 : d(d) = 0 : NEXT\n") == (
         "DIM d(5)\nFOR d = 1 TO 5 : d(d) = 0 : NEXT\n"
     )
-    assert flagged("M-DIM", "DIM x\nx = pos_x(1)\n") == ["array 'pos_x' is used but never dimensioned"]
+    assert flagged("M-DIM", "PRINT pos_x(1)\n") == ["array 'pos_x' is used but never dimensioned"]
 
 
 def test_default_axes_depend_on_the_controller() -> None:

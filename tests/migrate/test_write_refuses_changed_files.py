@@ -15,9 +15,9 @@ from mintlang.migrate import applications
 from mintlang.migrate.cli import migrate as command
 from mintlang.migrate.model import MigrationResult
 
-V3 = "DIM a\nPRINT a\nEND\n"
-V4 = "AXES[0,1,2]\nDIM a\nPRINT a\nEND\n"
-EDIT = "DIM b\nPRINT b\nEND\n"  # what the user saves meanwhile: same size as V3
+V3 = "DIM a\nPRINT a\nSTOP\n"
+V4 = "AXES[0,1,2]\nDIM a\nPRINT a\nSTOP\n"
+EDIT = "DIM b\nPRINT b\nSTOP\n"  # what the user saves meanwhile: same size as V3
 
 
 def run(*arguments: object) -> Result:

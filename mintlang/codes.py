@@ -26,7 +26,6 @@ OWN_CODES: dict[str, str] = {
     "W108": "Names equal in their first ten characters",
     "W109": "Event handler not available on this controller",
     "W111": "Line too long",
-    "W112": "EXIT outside a loop",
     "W113": "GOTO out of a block",
     "W114": "AUTO ignored",
     "W115": "Recursive GOSUB",
@@ -50,6 +49,7 @@ COMPILE_ERRORS = frozenset(
 )
 
 
+@cache  # one string per code, whatever the number of diagnostics that carry it
 def error_code(number: int) -> str:
     """The code of the controller's error ``number``, in four digits as the controller prints it: E0002, E2014."""
     return f"E{number:04d}"

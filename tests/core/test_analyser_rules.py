@@ -710,14 +710,22 @@ def test_goto_inside_its_own_loop_is_fine() -> None:
     assert found("DIM i\nFOR i = 1 TO 10\nIF i = 5 THEN GOTO skip\n#skip\nNEXT\n") == []
 
 
-def test_exit_outside_a_loop_is_a_warning() -> None:
-    # line 1828: EXIT "is used to force the termination of a loop"
-    assert found("PRINT 1\nEXIT\n") == [("W112", WARNING, 2)]
+def test_exit_outside_a_loop_is_error_2003_when_it_runs() -> None:
+    # 000:10224-10245: EXIT terminates a FOR, LOOP, REPEAT or WHILE loop; outside one the simulator raises
+    # 2003 (NM-8), so the checker reports the same error, as one raised when the line runs
+    assert found("PRINT 1\nEXIT\n") == [("E2003", ERROR, 2)]
+    assert only("PRINT 1\nEXIT\n", "E2003").at_run_time
     assert found("LOOP\nIF IN7 = 1 THEN EXIT\nENDL\n") == []
 
 
-def test_exit_inside_if_then_outside_a_loop_is_a_warning() -> None:
-    assert found("IF IN1 THEN EXIT\n") == [("W112", WARNING, 1)]
+def test_exit_inside_if_then_outside_a_loop_is_error_2003() -> None:
+    assert found("IF IN1 THEN EXIT\n") == [("E2003", ERROR, 1)]
+
+
+def test_exit_never_leaves_a_callers_loop() -> None:
+    # NM-8: a subroutine's EXIT with no loop of its own is an error even when its caller is in a loop
+    source = "LOOP\n  GOSUB check\nENDL\n#check\nIF IN1 THEN EXIT\nRETURN\n"
+    assert found(source) == [("E2003", ERROR, 5)]
 
 
 @pytest.mark.parametrize("loop", [("LOOP", "ENDL"), ("WHILE 1", "ENDW"), ("REPEAT", "UNTIL 0")])

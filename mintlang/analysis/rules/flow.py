@@ -13,7 +13,7 @@
 * GOTO out of an open IF block or loop (W113): the block is never closed, and
   done repeatedly this "will eventually" overflow the controller's stack (GOTO
   in 10.3). The overflow happens at run time, so the analyser only warns.
-* EXIT outside any loop (W112).
+* EXIT outside any loop of its subroutine or handler: error 2003 when it runs.
 
 An endless loop (LOOP, WHILE 1, REPEAT .. UNTIL 0) that no EXIT or GOTO leaves
 never falls through: a main program ending in one needs no END.
@@ -305,8 +305,10 @@ class _Flow:
         """EXIT, GOTO and RETURN, also inside IF .. THEN."""
         if isinstance(statement, n.BlockWord) and statement.word == "EXIT":
             if not self.loops:
-                detail = "EXIT is not inside a FOR, REPEAT, WHILE or LOOP"
-                self._report(own("W112", self.line.span(statement.span), detail))
+                # NM-8: EXIT leaves a loop of its own subroutine or handler, never a caller's; with none
+                # it is error 2003 when it runs (the guide names no number for a misplaced loop word)
+                detail = "EXIT is not inside a FOR, REPEAT, WHILE or LOOP of its own subroutine or handler"
+                self._report(mint_error(2003, self.line.span(statement.span), detail, at_run_time=True))
             else:
                 self.loops[-1].left = True
         elif isinstance(statement, n.Jump) and statement.word == "GOTO":

@@ -125,18 +125,6 @@ GROUP = Group(
             safety=FixSafety.NONE,
         ),
         RuleDoc(
-            "W112",
-            catches="EXIT outside any FOR, REPEAT, WHILE or LOOP.",
-            why="EXIT leaves the innermost loop; outside one there is nothing for it to leave.",
-            example=Example(
-                before="DIM i\nPRINT i\nEXIT\n",
-                after="DIM i\nLOOP\n  i = i + 1\n  IF i > 10 THEN EXIT\nENDL\nPRINT i\n",
-            ),
-            manual=("v4:1828", "v4:10224"),
-            fix="The loop it was meant to leave has to be found.",
-            safety=FixSafety.NONE,
-        ),
-        RuleDoc(
             "W113",
             catches="GOTO from inside an IF block or a loop to a label outside it.",
             why="The block is never closed: the controller keeps it on its stack. Done repeatedly, as in a "

@@ -4,9 +4,11 @@ Each processed tick samples the world, runs the profiler (every 2 ms), the
 servo loop and the error checks, raises timer and comms events and gives the
 interpreter a slice. Ticks where nothing can change are skipped: every part
 tells when it next can change (a move ending, a scheduled input, a WAIT, the
-value a PAUSE condition read), and the clock jumps there. The results are the
-same as stepping every tick; ``every_tick`` (forced by a trace) turns the
-skipping off, and the tests compare both.
+value a PAUSE condition read), and the clock jumps there. Ticks where only the
+program can change, because it works on variables alone, run its slices
+without the rest of the tick's work. The results are the same as stepping
+every tick; ``every_tick`` (forced by a trace) turns the skipping off, and the
+tests compare both.
 """
 
 from __future__ import annotations
@@ -37,6 +39,10 @@ class Limits:
     slice_statements: int = 20
     host_port: int | None = None
     settle: bool = False  # after END, run the machine on until every axis is idle (see ``Simulator.run``)
+    # Ticks at which only the program can change run its slices alone (``Simulator._interpreter_alone``); a
+    # debugger that shows the machine where the program stops turns this off, so every tick a statement
+    # runs in is up to date.
+    program_alone: bool = True
 
 
 @dataclass(frozen=True, slots=True)
@@ -155,11 +161,21 @@ class Simulator:
 
     def next_change(self, t: int) -> int:
         """The next tick at which anything can change (``NEVER`` when nothing ever will)."""
-        c = self.c
-        vm = c.vm
-        if vm.progressed or not vm.blocked or c.events.pending or c.server is not None or c.io.raises_every_tick():
+        vm = self.c.vm
+        if vm.progressed or not vm.blocked or self._busy():
             return t + 1
-        soonest = min(vm.wake_at, c.world.next_change(t), c.events.next_timer)
+        return self._next_change_besides_the_program(t, vm.wake_at)
+
+    def _busy(self) -> bool:
+        """Whether something needs the next tick whatever the program does: an event to dispatch, an input
+        raising one on every tick, a host port."""
+        c = self.c
+        return bool(c.events.pending) or c.server is not None or c.io.raises_every_tick()
+
+    def _next_change_besides_the_program(self, t: int, soonest: int) -> int:
+        """The next tick the world, the timer, a monitor, an axis or an expectation needs, or ``soonest``."""
+        c = self.c
+        soonest = min(soonest, c.world.next_change(t), c.events.next_timer)
         for monitor in c.monitors:
             soonest = min(soonest, monitor.next_required(t))
         for axis in c.axes:
@@ -169,6 +185,26 @@ class Simulator:
         if self.checkpoints:
             soonest = min(soonest, *self.checkpoints)
         return max(soonest, t + 1)
+
+    def _interpreter_alone(self, t: int, until: int) -> int:
+        """Run the ticks after ``t`` at which only the program can change, its slices alone: the tick to process
+        whole next. The program must be running pure statements (``interpreter/purity.py``), which neither
+        read nor change anything outside the interpreter, so the rest of those ticks' work would change
+        nothing; the slice stops before the first statement that is not pure, and its tick is processed
+        whole, the rest of the slice after the tick's other work."""
+        c = self.c
+        vm = c.vm
+        pc = vm.pc
+        if vm.blocked or vm.stopped is not None or pc >= len(vm.pure) or not vm.pure[pc] or self._busy():
+            return t + 1
+        quiet = min(self._next_change_besides_the_program(t, until), t + WALL_CHECK_EVERY)
+        tick = t + 1
+        while tick < quiet:
+            c.clock.now = tick
+            if vm.run_ahead() < vm.slice_statements:
+                return tick
+            tick += 1
+        return tick
 
     def _settling(self) -> bool:
         """Whether the machine runs on after the program ended: ``Limits.settle`` asks for it, for as long as
@@ -189,6 +225,7 @@ class Simulator:
         until = limits.until_ms if limits.until_ms is not None else NEVER
         started = time.perf_counter()
         processed = 0
+        wall_check = WALL_CHECK_EVERY
         t = 0
         ended = None  # the time the program ended, when the machine settles after it
         try:
@@ -204,6 +241,9 @@ class Simulator:
                     break
                 if limits.every_tick:
                     following = t + 1
+                elif following == t + 1 and limits.program_alone and not limits.realtime:
+                    following = self._interpreter_alone(t, until)
+                    processed += following - t - 1  # the ticks the program ran alone
                 if following > until:
                     if t < until:  # the state at the limit, as stepping every tick would leave it
                         self._step(until)
@@ -214,7 +254,8 @@ class Simulator:
                 if limits.realtime:
                     if not self._pace(t, following, started):
                         break
-                elif processed % WALL_CHECK_EVERY == 0:
+                elif processed >= wall_check:
+                    wall_check = processed + WALL_CHECK_EVERY
                     elapsed = time.perf_counter() - started
                     if limits.max_wall_s is not None and elapsed > limits.max_wall_s:
                         vm.stop(StopReason.WALL_LIMIT, f"ran {elapsed:.1f} s of wall time")

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter.arrays import array_problem, initial_values
 from mintlang.runtime.interpreter.expressions import ExpressionCompiler, Names
+from mintlang.runtime.interpreter.purity import is_pure
 from mintlang.runtime.interpreter.statements import FileLayout, StatementCompiler
 from mintlang.runtime.interpreter.vm import Interpreter, Operation, Site, StopReason
 from mintlang.runtime.keywords import KeywordTable
@@ -74,6 +75,7 @@ def link(
             for index, statement in enumerate(n.flatten_statements(line.syntax.statements)):
                 pc = len(vm.operations)
                 vm.operations.append(_compiled(compiler, statement, Place(line.number, index), pc))
+                vm.pure.append(is_pure(statement, semantics.functions))
                 written = text[statement.span.start : statement.span.end].strip()
                 vm.sites.append(Site(unit.value, line.number, written, type(statement).__name__))
     if program_start == 0:  # no configuration file: the program runs first, from its entry

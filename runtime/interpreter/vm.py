@@ -102,6 +102,8 @@ class Interpreter:
         self.slice_statements = slice_statements  # statements per servo tick (RTM RC K = 20)
         self.operations: list[Operation] = []
         self.sites: list[Site] = []
+        self.pure = bytearray()  # per operation: 1 if it acts on the interpreter alone (``purity.py``)
+        self.ahead = 0  # statements of the current tick already run by ``run_ahead``
         self.program_start = 0  # where the program file begins, after the configuration file
         self.recoveries: dict[int, Recovery] = {}  # pc of a block statement -> how an error in it resumes
         self.scalars: list[float] = []
@@ -144,7 +146,7 @@ class Interpreter:
         self.asleep = False
         operations = self.operations
         count = len(operations)
-        budget = self.slice_statements
+        budget = self.slice_statements - self.ahead
         self.blocked = False
         try:
             while budget > 0 and self.stopped is None:
@@ -172,6 +174,35 @@ class Interpreter:
         finally:
             self.executing = None
             self.progressed = budget < self.slice_statements
+            self.ahead = 0
+
+    def run_ahead(self) -> int:
+        """Run the slice of a tick at which nothing but the interpreter can change: pure statements only.
+
+        Stops before the first statement that is not pure, or that fails (it has changed nothing, and runs
+        again in the tick processed whole); returns how many ran, the whole slice when none stopped it.
+        """
+        operations, pure = self.operations, self.pure
+        count = len(operations)
+        done = 0
+        budget = self.slice_statements
+        try:
+            while done < budget:
+                pc = self.pc
+                if pc >= count or not pure[pc]:
+                    break
+                self.pc = pc + 1
+                self.executing = pc
+                try:
+                    operations[pc]()  # a pure statement never blocks
+                except (MintError, NotSimulated):
+                    self.pc = pc
+                    break
+                done += 1
+        finally:
+            self.executing = None
+            self.ahead = done if done < budget else 0
+        return done
 
     def current_site(self) -> Site | None:
         """The statement running now, or between slices the one the program continues with."""

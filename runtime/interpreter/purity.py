@@ -1,0 +1,49 @@
+"""Statements that act on the interpreter alone.
+
+A statement is *pure* when running it reads nothing that changes with time or
+the world and changes nothing but the interpreter's own state: variables,
+arrays, the program counter and the loop and GOSUB stacks. Arithmetic on
+variables, jumps and the loop words are pure; anything naming a keyword,
+``PRINT``, ``INPUT``, ``PAUSE``, ``WAIT``, ``END`` and ``RETURN`` (which ends an
+event handler too) are not. On ticks where nothing else can change, the
+simulator runs pure statements without the rest of the tick's work
+(``Simulator.run``), 20 a tick as ever.
+
+A pure statement that fails has changed nothing when it raises, so it can be
+run again in a tick processed whole, to fail there with the whole machine
+up to date. ``FOR`` sets its variable before it pushes its loop, which may
+overflow the stack, so it is left out.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+from mintlang.syntax import nodes as n
+
+_PURE_WORDS = frozenset({"NEXT", "ENDW", "ENDL", "ELSE", "ENDIF", "REPEAT", "LOOP", "EXIT"})
+_PURE_VALUES = frozenset(
+    {n.Number, n.CharConstant, n.ConstantRef, n.VariableRef, n.ElementRef, n.Parenthesised, n.Unary, n.Binary}
+)
+
+
+def is_pure(statement: n.Statement, functions: Mapping[str, object]) -> bool:
+    """Whether ``statement`` is pure, the dialect's numeric ``functions`` (SIN, ABS …) being pure."""
+    kind = type(statement)
+    if kind is n.Assignment:
+        return _reads_nothing(statement.target, functions) and _reads_nothing(statement.value, functions)  # type: ignore[union-attr]
+    if kind is n.IfThen or kind is n.IfDo or kind is n.While or kind is n.Until:
+        return _reads_nothing(statement.condition, functions)  # type: ignore[union-attr]
+    if kind is n.Dim:
+        return all(_reads_nothing(value, functions) for value in statement.values)  # type: ignore[union-attr]
+    if kind is n.BlockWord:
+        return statement.word in _PURE_WORDS  # type: ignore[union-attr]
+    return kind is n.Jump or kind is n.Define
+
+
+def _reads_nothing(expression: n.Expression, functions: Mapping[str, object]) -> bool:
+    """Whether ``expression`` reads only variables, arrays and literals, through operators and numeric functions."""
+    return all(
+        type(part) in _PURE_VALUES or (type(part) is n.Call and part.function in functions)  # type: ignore[union-attr]
+        for part in n.walk_expression(expression)
+    )

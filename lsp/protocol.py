@@ -15,11 +15,15 @@ pygls 2.1 leaves a client waiting, or the server growing, in four places:
   a ``Future``, a task and its context per keystroke, 3 KB an edit;
 - a ``$/cancelRequest`` of a request a built-in handler hands on (a command of
   ``workspace/executeCommand``) answers it as cancelled but leaves the
-  command running: a simulation went on for its full 20 s.
+  command running: a simulation went on for its full 20 s;
+- a body that is not JSON, or JSON that is no message (``[]``, ``5``), is logged
+  with a traceback and shown to the user as a server error, but never answered;
+  JSON-RPC wants ``ParseError`` or ``InvalidRequest`` with a null id.
 """
 
 from __future__ import annotations
 
+import json
 import logging
 import weakref
 from collections.abc import Callable, Generator
@@ -33,6 +37,7 @@ from pygls.exceptions import (
     JsonRpcException,
     JsonRpcInvalidParams,
     JsonRpcInvalidRequest,
+    JsonRpcParseError,
     JsonRpcServerNotInitialized,
 )
 from pygls.protocol import lsp_method
@@ -42,6 +47,7 @@ from mintlang.lsp.documents import LspProtocol
 log = logging.getLogger(__name__)
 
 _ANSWERED = object()  # a request refused while it was decoded: its error response has gone out
+UNREADABLE = (json.JSONDecodeError, UnicodeDecodeError)  # what json.loads raises for a body that is not JSON
 
 
 def _why(error: JsonRpcException) -> str:
@@ -81,6 +87,9 @@ class MintProtocol(LspProtocol):
     def handle_message(self, message: Any) -> None:
         if message is _ANSWERED:
             return
+        if not hasattr(message, "jsonrpc"):  # valid JSON, but a list, a number, a string: no message
+            self._refuse(None, JsonRpcInvalidRequest(f"not a JSON-RPC message: {str(message)[:80]}"))
+            return
         method = getattr(message, "method", None)
         request = method is not None and getattr(message, "id", None) is not None
         if method == types.INITIALIZE:
@@ -96,7 +105,25 @@ class MintProtocol(LspProtocol):
 
     def _refuse(self, msg_id: Any, error: JsonRpcException) -> None:
         log.warning("refused: %s", error.message)
+        if msg_id is None:  # pygls leaves a null id out, and JSON-RPC wants it there
+            response_error = {"code": error.code, "message": error.message}
+            self._send_data({"jsonrpc": self.VERSION, "id": None, "error": response_error})
+            return
         self._send_response(msg_id, error=error.to_response_error())
+
+    def refuse_unreadable(self, error: Exception) -> None:
+        """A body that is not JSON: ``ParseError``, with a null id as nothing of it can be read."""
+        self._refuse(None, JsonRpcParseError(f"{JsonRpcParseError.MESSAGE}: {error}"))
+
+
+class ParseErrorsInOneLine(logging.Filter):
+    """pygls logs a body that is not JSON with its traceback; the error is the client's, one line says it."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        if record.exc_info is not None and isinstance(record.exc_info[1], UNREADABLE):
+            record.msg, record.args = "unreadable message: %s", (record.exc_info[1],)
+            record.exc_info, record.exc_text = None, None
+        return True
 
     def _execute_handler(
         self,

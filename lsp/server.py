@@ -11,6 +11,7 @@ from __future__ import annotations
 import logging
 from collections.abc import Awaitable, Callable, Collection
 from pathlib import Path
+from typing import Any
 
 from lsprotocol import types
 from pygls.lsp.server import LanguageServer
@@ -21,7 +22,7 @@ from mintlang.lsp.collector import Collector
 from mintlang.lsp.disk import read_text
 from mintlang.lsp.lookup import line_prefix
 from mintlang.lsp.positions import Positions
-from mintlang.lsp.protocol import MintProtocol
+from mintlang.lsp.protocol import UNREADABLE, MintProtocol, ParseErrorsInOneLine
 from mintlang.lsp.workspace import MAX_CHARACTERS, Analyses, Snapshot
 
 log = logging.getLogger(__name__)
@@ -30,9 +31,17 @@ log = logging.getLogger(__name__)
 class MintServer(LanguageServer):
     def __init__(self) -> None:
         super().__init__("mint-lsp", __version__, protocol_cls=MintProtocol)  # LSP line ends, every request answered
+        logging.getLogger("pygls.server").addFilter(ParseErrorsInOneLine())  # its message loop logs them
         self.analyses = Analyses(read=self.read_text, opened=self.opened, collector=Collector())
         self.when_initialized: list[Callable[[], Awaitable[None]]] = []  # features' work once the client is ready
         self.when_settings_changed: list[Callable[[], Awaitable[None]]] = []  # and once the settings changed
+
+    def report_server_error(self, error: Exception, source: Any) -> None:
+        """A body that is not JSON is answered with ``ParseError``; anything else is pygls' to show."""
+        if isinstance(error, UNREADABLE) and isinstance(self.protocol, MintProtocol):
+            self.protocol.refuse_unreadable(error)
+            return
+        super().report_server_error(error, source)
 
     def opened(self) -> Collection[str]:
         """The URIs of the documents open in the editor."""

@@ -8,9 +8,11 @@ turns them into the 1-based lines and columns that users and editors see.
 from __future__ import annotations
 
 import re
+from array import array
 from bisect import bisect_right
 from dataclasses import dataclass, field, replace
 from enum import StrEnum
+from itertools import chain
 from typing import NamedTuple
 
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")
@@ -121,12 +123,12 @@ class LineIndex:
     def __init__(self, text: str) -> None:
         self._text = text
         self._length = len(text)
-        self._starts_cache: list[int] | None = None
+        self._starts_cache: array[int] | None = None
 
     @property
-    def _starts(self) -> list[int]:
-        if self._starts_cache is None:
-            self._starts_cache = [0, *(match.end() for match in _LINE_BREAK.finditer(self._text))]
+    def _starts(self) -> array[int]:
+        if self._starts_cache is None:  # machine integers: a tenth of a list of int objects, for a file of short lines
+            self._starts_cache = array("q", chain((0,), (match.end() for match in _LINE_BREAK.finditer(self._text))))
         return self._starts_cache
 
     def line_start(self, line: int) -> int:

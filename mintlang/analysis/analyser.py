@@ -43,12 +43,24 @@ def _selected(code: str, select: Iterable[str] | None, ignore: Iterable[str]) ->
     return any(code.startswith(prefix) for prefix in (DEFAULT_SELECT if select is None else select))
 
 
-_LineKey = tuple[Unit, Hashable, Controller, Dialect]  # what the line was parsed from, and where it is checked
-_line_findings: RecentCache[_LineKey, tuple[Diagnostic, ...]] = RecentCache(LINES_KEPT)
+_Context = tuple[Unit, Controller, Dialect]  # where a line is checked
+# Per context, by what the line was parsed from (no key tuple per line). The contexts used last are kept.
+_line_findings: dict[_Context, RecentCache[Hashable, tuple[Diagnostic, ...]]] = {}
+_CONTEXTS_KEPT = 4  # the two files of an application, on one or two controllers
 
 
 def clear_cache() -> None:
     _line_findings.clear()
+
+
+def _findings_cache(context: _Context) -> RecentCache[Hashable, tuple[Diagnostic, ...]]:
+    cache = _line_findings.pop(context, None)
+    if cache is None:
+        cache = RecentCache(LINES_KEPT)
+        if len(_line_findings) >= _CONTEXTS_KEPT:
+            del _line_findings[next(iter(_line_findings))]  # the one used longest ago
+    _line_findings[context] = cache  # last in order: used most recently
+    return cache
 
 
 @cache
@@ -59,11 +71,16 @@ def _rules_for(dialect: Dialect) -> tuple[tuple[Rule, ...], tuple[Rule, ...]]:
 
 
 def _findings_of_line(
-    unit: Unit, line: n.PlacedLine, facts: LineFacts, controller: ControllerProfile, dialect: Dialect
+    cache: RecentCache[Hashable, tuple[Diagnostic, ...]],
+    unit: Unit,
+    line: n.PlacedLine,
+    facts: LineFacts,
+    *,
+    controller: ControllerProfile,
+    dialect: Dialect,
 ) -> tuple[Diagnostic, ...]:
     """What the line rules find in one line, at its own offsets: computed once per line text."""
-    key = (unit, line.content, controller.controller, dialect)
-    cached = _line_findings.get(key)
+    cached = cache.get(line.content)
     if cached is not None:
         return cached
     scope = LineScope(unit, line.syntax, facts, controller, dialect)
@@ -72,7 +89,7 @@ def _findings_of_line(
         for rule in _rules_for(dialect)[0]
         for finding in rule.each_line(scope)  # type: ignore[misc]
     )
-    _line_findings.put(key, found)
+    cache.put(line.content, found)
     return found
 
 
@@ -86,8 +103,9 @@ def analyse(model: SemanticModel, *, select: Iterable[str] | None = None, ignore
         findings.extend(Finding(unit, diagnostic) for diagnostic in document.diagnostics)
         findings.extend(Finding(unit, diagnostic) for diagnostic in model.structures[unit].diagnostics)
     dialect, controller = model.program.dialect, model.controller
+    caches = {unit: _findings_cache((unit, controller.controller, dialect)) for unit in Unit}
     for unit, line, facts in model.lines:
-        found = _findings_of_line(unit, line, facts, controller, dialect)
+        found = _findings_of_line(caches[unit], unit, line, facts, controller=controller, dialect=dialect)
         if found:
             findings.extend(Finding(unit, diagnostic.shifted(line.origin)) for diagnostic in found)
     facts = gather(model)

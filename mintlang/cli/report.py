@@ -83,6 +83,9 @@ def shortened(text: str) -> str:
     return _frame(text, 0, len(text))[0]
 
 
+_FRAMES_WRITTEN_AT_ONCE = 4096  # few writes, and not the whole report of a file of broken lines in memory at once
+
+
 def render_text(reports: Sequence[FileReport], console: Console, *, summary: bool = True) -> None:
     """rustc/ruff-style code frames and, with ``summary``, a closing count.
 
@@ -115,6 +118,9 @@ def render_text(reports: Sequence[FileReport], console: Console, *, summary: boo
             )
             frames.extend(f"  {gutter} {equals} fix: {_visible(fix.title)}\n" for fix in diagnostic.fixes)
             frames.append("\n")
+            if len(frames) >= _FRAMES_WRITTEN_AT_ONCE:
+                console.file.write("".join(frames))
+                frames.clear()
         console.file.write("".join(frames))
     if summary:
         total = ", ".join(f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity)

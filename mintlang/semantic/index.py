@@ -143,12 +143,17 @@ def index_syntax(documents: Iterable[tuple[Unit, Document]]) -> SyntaxIndex:
     return SyntaxIndex(tuple(statements), tuple(walker.uses), tuple(walker.elements), tuple(walker.names))
 
 
-# By what the line was parsed from: the facts hold no place, so equal lines share them.
-_facts: RecentCache[tuple[Unit, Hashable], LineFacts] = RecentCache(LINES_KEPT)
+# Per unit, by what the line was parsed from: the facts hold no place, so equal lines share them.
+_facts: dict[Unit, RecentCache[Hashable, LineFacts]] = {unit: RecentCache(LINES_KEPT) for unit in Unit}
+
+
+# One frozenset per combination of statement types (a few dozen occur), not one per line: 200 bytes a line.
+_kind_sets: dict[frozenset[type], frozenset[type]] = {}
 
 
 def clear_cache() -> None:
-    _facts.clear()
+    for facts in _facts.values():
+        facts.clear()
 
 
 def index_lines(unit: Unit, lines: Iterable[n.PlacedLine]) -> list[tuple[Unit, n.PlacedLine, LineFacts]]:
@@ -158,8 +163,8 @@ def index_lines(unit: Unit, lines: Iterable[n.PlacedLine]) -> list[tuple[Unit, n
 
 def line_facts(unit: Unit, line: n.PlacedLine) -> LineFacts:
     """The index of one line of ``unit``, walked once per line text (the parser shares unchanged ones)."""
-    key = (unit, line.content)
-    cached = _facts.get(key)
+    cache = _facts[unit]
+    cached = cache.get(line.content)
     if cached is not None:
         return cached
     walker = _Walker()
@@ -167,6 +172,8 @@ def line_facts(unit: Unit, line: n.PlacedLine) -> LineFacts:
     for statement in statements:
         walker.statement(unit, statement)
     elements = tuple(element for _, element in walker.elements)
-    facts = LineFacts(statements, tuple(walker.uses), elements, tuple(walker.names), frozenset(map(type, statements)))
-    _facts.put(key, facts)
+    kinds = frozenset(map(type, statements))
+    kinds = _kind_sets.setdefault(kinds, kinds)
+    facts = LineFacts(statements, tuple(walker.uses), elements, tuple(walker.names), kinds)
+    cache.put(line.content, facts)
     return facts

@@ -12,6 +12,7 @@ indices of their first and last token (``Tree.meta``).
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import lru_cache
 from typing import TypeVar
 
 from lark import Token, Tree
@@ -19,6 +20,7 @@ from lark import Token, Tree
 from mintlang.diagnostics import Span
 from mintlang.syntax import nodes as n
 from mintlang.syntax.lines import LogicalLine
+from mintlang.syntax.spans import span as _span
 from mintlang.syntax.vocabulary import Vocabulary
 
 Child = Tree | Token
@@ -27,7 +29,6 @@ Make = Callable[[LogicalLine, Vocabulary], T]
 LineResult = tuple[n.Name | None, tuple[n.Statement, ...]]
 LineBuilder = Callable[[LogicalLine, Vocabulary], LineResult]
 
-_new = tuple.__new__  # builds Span without its Python-level constructor: spans are made per node
 
 _OPERATORS = {
     "AND": "AND",
@@ -50,6 +51,7 @@ _OPERATORS = {
 _QUOTES = '"\u201c\u201d\u201e\u201f\u2033'
 
 
+@lru_cache(maxsize=8192)  # one float per literal text: programs write the same numbers again and again
 def number_value(text: str) -> float:
     """The value of a valid Mint number literal: decimal, binary (leading 0) or 0x hex."""
     if text.isdigit() and (text[0] != "0" or len(text) == 1):
@@ -78,7 +80,7 @@ def _edges(tree: Child) -> tuple[int, int]:
 
 def _span_of(first: int, last: int) -> Make[Span]:
     def make(line: LogicalLine, _: Vocabulary) -> Span:
-        return _new(Span, (line.starts[first], line.ends[last]))
+        return _span(line.starts[first], line.ends[last])
 
     return make
 
@@ -120,7 +122,7 @@ def _name(token: Child) -> Make[n.Name]:
     index = _index(token)
 
     def make(line: LogicalLine, _: Vocabulary) -> n.Name:
-        return n.Name(line.texts[index], _new(Span, (line.starts[index], line.ends[index])))
+        return n.Name(line.texts[index], _span(line.starts[index], line.ends[index]))
 
     return make
 
@@ -131,7 +133,7 @@ def _string(token: Child) -> Make[n.StringLiteral]:
     def make(line: LogicalLine, _: Vocabulary) -> n.StringLiteral:
         text = line.texts[index]
         closed = len(text) > 1 and text[-1] in _QUOTES
-        span = _new(Span, (line.starts[index], line.ends[index]))
+        span = _span(line.starts[index], line.ends[index])
         return n.StringLiteral(span, text, text[1:-1] if closed else text[1:])
 
     return make
@@ -149,7 +151,7 @@ def compile_line(tree: Tree) -> LineBuilder:
     index = _index(first)
 
     def make(line: LogicalLine, words: Vocabulary) -> LineResult:
-        label = n.Name(line.texts[index][1:], _new(Span, (line.starts[index], line.ends[index])))
+        label = n.Name(line.texts[index][1:], _span(line.starts[index], line.ends[index]))
         return label, body(line, words)
 
     return make
@@ -502,20 +504,20 @@ def _leaf(token: Child) -> Make[n.Expression]:
 
         def number(line: LogicalLine, _: Vocabulary) -> n.Expression:
             text = line.texts[index]
-            return n.Number(_new(Span, (line.starts[index], line.ends[index])), text, number_value(text))
+            return n.Number(_span(line.starts[index], line.ends[index]), text, number_value(text))
 
         return number
     if kind == "CONSTANT":
 
         def constant(line: LogicalLine, _: Vocabulary) -> n.Expression:
-            return n.ConstantRef(_new(Span, (line.starts[index], line.ends[index])), line.texts[index].upper())
+            return n.ConstantRef(_span(line.starts[index], line.ends[index]), line.texts[index].upper())
 
         return constant
     if kind == "CHAR":
 
         def char(line: LogicalLine, _: Vocabulary) -> n.Expression:
             text = line.texts[index]
-            return n.CharConstant(_new(Span, (line.starts[index], line.ends[index])), text, n.character_code(text))
+            return n.CharConstant(_span(line.starts[index], line.ends[index]), text, n.character_code(text))
 
         return char
     if kind == "KEYWORD":
@@ -564,7 +566,7 @@ def _call_of(
     def make(line: LogicalLine, words: Vocabulary) -> n.Call:
         spelling = line.texts[index]
         name = words.keyword_name(spelling) or spelling.upper()
-        spelling_span = _new(Span, (line.starts[index], line.ends[index]))
+        spelling_span = _span(line.starts[index], line.ends[index])
         return n.Call(span(line, words), name, spelling, spelling_span, arguments(line, words), bracketed)
 
     return make
@@ -604,8 +606,8 @@ def _keyword_ref(token: Child, selector_tree: Tree | None) -> Make[n.KeywordRef]
             split = words.split_channel(upper)
             name, channel = split if split is not None else (upper, None)
         start = line.starts[index]
-        spelling_span = _new(Span, (start, line.ends[index]))
-        span = _new(Span, (start, line.ends[last]))
+        spelling_span = _span(start, line.ends[index])
+        span = _span(start, line.ends[last])
         return n.KeywordRef(span, name, spelling, spelling_span, selector(line, words), channel)
 
     return make

@@ -20,11 +20,13 @@ server re-lexes on every keystroke.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Iterator, Sequence
+from array import array
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
-from functools import lru_cache
-from typing import overload
+from sys import intern
+from typing import TypeVar, overload
 
+from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import mint_error, own
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.dialect import Dialect
@@ -33,6 +35,7 @@ from mintlang.syntax.tokens import Token, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 _K = TokenKind
+T = TypeVar("T")
 
 _SPACE = " \t\f\v\u00a0\ufeff"
 _TYPOGRAPHIC_QUOTES = "\u201c\u201d\u201e\u201f\u2033"
@@ -96,18 +99,26 @@ class LexedLine:
     Only the significant tokens are kept, as the parallel arrays the parser
     reads. Trivia need not be stored: between significant tokens there is only
     white space, and after them white space, a REM comment and the line break,
-    so ``tokens()`` rebuilds the lossless list when a tool asks for it.
+    so ``tokens()`` rebuilds the lossless list when a tool asks for it. Nor are
+    the tokens' texts: each is the line's text from its start to its end, cut
+    when asked for (``texts``). Lines with the same token kinds share one
+    ``kinds`` tuple.
     """
 
     text: str
     issues: tuple[Diagnostic, ...]
     kinds: tuple[TokenKind, ...]
-    texts: tuple[str, ...]
     starts: tuple[int, ...]
     ends: tuple[int, ...]
     comment_start: int  # where a REM comment starts, or -1
     content_end: int  # where the line break starts
     length: int  # including the line break
+
+    @property
+    def texts(self) -> tuple[str, ...]:
+        """The text of each significant token, interned: trees keep them, and names and keywords recur."""
+        text = self.text
+        return tuple([intern(text[start:end]) for start, end in zip(self.starts, self.ends, strict=True)])
 
     def tokens(self, offset: int = 0) -> list[Token]:
         """Every token of the line, trivia included, at ``offset`` in the source."""
@@ -115,11 +126,11 @@ class LexedLine:
         text = self.text
         tokens: list[Token] = []
         position = 0
-        for kind, token_text, start in zip(self.kinds, self.texts, self.starts, strict=True):
+        for kind, start, end in zip(self.kinds, self.starts, self.ends, strict=True):
             if start > position:
                 tokens.append(new(Token, (_WS, text[position:start], position + offset)))
-            tokens.append(new(Token, (kind, token_text, start + offset)))
-            position = start + len(token_text)
+            tokens.append(new(Token, (kind, text[start:end], start + offset)))
+            position = end
         end = self.comment_start if self.comment_start >= 0 else self.content_end
         if end > position:
             tokens.append(new(Token, (_WS, text[position:end], position + offset)))
@@ -181,10 +192,22 @@ _WS, _DOT, _NUMBER, _NAME, _COMMENT, _NEWLINE = _K.WS, _K.DOT, _K.NUMBER, _K.NAM
 _INVALID, _STRING, _CHAR, _LABEL, _HASH = _K.INVALID, _K.STRING, _K.CHAR, _K.LABEL, _K.HASH
 
 
+# One tuple for each sequence of kinds, starts or ends that lines share: a program's lines
+# take a few shapes (a tenth to a third as many as there are distinct lines).
+_shapes: dict[tuple[object, ...], tuple[object, ...]] = {}
+_SHAPES_KEPT = 200_000
+
+
+def _shared(shape: tuple[T, ...]) -> tuple[T, ...]:
+    """``shape``, or the equal tuple another line already holds."""
+    if len(_shapes) >= _SHAPES_KEPT:
+        _shapes.clear()
+    return _shapes.setdefault(shape, shape)  # type: ignore[return-value]
+
+
 def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
     issues: list[Diagnostic] = []
     kinds: list[TokenKind] = []  # the significant tokens, as parallel arrays
-    texts: list[str] = []
     starts: list[int] = []
     ends: list[int] = []
     spellings = words.words
@@ -201,7 +224,6 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
     while position < content_end:
         if len(kinds) == MAX_TOKENS:  # the rest is one token: a line this long is not analysed (grammar)
             kinds.append(_INVALID)
-            texts.append(line[position:content_end])
             starts.append(position)
             ends.append(content_end)
             break
@@ -260,7 +282,6 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
             kind = _INVALID
             issues.append(_syntax_issue(position, len(text), f"unexpected character {text[0]!r}"))
         kinds.append(kind)
-        texts.append(text)
         starts.append(position)
         position += len(text)
         ends.append(position)
@@ -273,10 +294,9 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
     return LexedLine(
         line,
         tuple(issues),
-        tuple(kinds),
-        tuple(texts),
-        tuple(starts),
-        tuple(ends),
+        _shared(tuple(kinds)),
+        _shared(tuple(starts)),
+        _shared(tuple(ends)),
         comment_start,
         content_end,
         length,
@@ -308,13 +328,14 @@ def _quote_issues(text: str, start: int, typographic: str, plain: str) -> list[D
     ]
 
 
-@lru_cache(maxsize=65536)
-def _lex_line_cached(line: str, dialect: Dialect) -> LexedLine:
-    return _lex_line(line, dialect, vocabulary(dialect))
+# Per dialect, by the line's text: the key is the text the LexedLine holds anyway.
+_lexed: dict[Dialect, RecentCache[str, LexedLine]] = {dialect: RecentCache(LINES_KEPT) for dialect in Dialect}
 
 
 def clear_cache() -> None:
-    _lex_line_cached.cache_clear()
+    for lines in _lexed.values():
+        lines.clear()
+    _shapes.clear()
 
 
 class TokenStream(Sequence[Token]):
@@ -327,7 +348,7 @@ class TokenStream(Sequence[Token]):
 
     __slots__ = ("_lines", "_tokens")
 
-    def __init__(self, lines: tuple[tuple[int, LexedLine], ...]) -> None:
+    def __init__(self, lines: PhysicalLines) -> None:
         self._lines = lines
         self._tokens: tuple[Token, ...] | None = None
 
@@ -353,26 +374,60 @@ class TokenStream(Sequence[Token]):
         return f"TokenStream({len(self)} tokens)"
 
 
+class PhysicalLines(Sequence[tuple[int, LexedLine]]):
+    """Every physical line of a source, lexed, with its offset: ``(offset, line)`` pairs, made when read.
+
+    The offsets are machine integers in one array and the lines one tuple: a pair and an int
+    object per line took a twentieth of a check's memory on a file of short lines.
+    """
+
+    __slots__ = ("_lines", "offsets")
+
+    def __init__(self, offsets: array[int], lines: tuple[LexedLine, ...]) -> None:
+        self.offsets = offsets  # ascending: ``bisect`` finds the line of an offset
+        self._lines = lines
+
+    def __len__(self) -> int:
+        return len(self._lines)
+
+    @overload
+    def __getitem__(self, index: int) -> tuple[int, LexedLine]: ...
+    @overload
+    def __getitem__(self, index: slice) -> Sequence[tuple[int, LexedLine]]: ...
+    def __getitem__(self, index: int | slice) -> tuple[int, LexedLine] | Sequence[tuple[int, LexedLine]]:
+        if isinstance(index, slice):
+            return list(zip(self.offsets[index], self._lines[index], strict=True))
+        return self.offsets[index], self._lines[index]
+
+    def __iter__(self) -> Iterator[tuple[int, LexedLine]]:
+        return zip(self.offsets, self._lines, strict=True)
+
+
 @dataclass(frozen=True, slots=True)
 class LexResult:
     tokens: TokenStream
     issues: tuple[Diagnostic, ...]
-    lines: tuple[tuple[int, LexedLine], ...]  # each physical line with its offset
+    lines: PhysicalLines  # each physical line with its offset
 
 
 def lex(source: str, dialect: Dialect = Dialect.V4) -> LexResult:
     """Split ``source`` into tokens whose texts join back to ``source`` exactly."""
     issues: list[Diagnostic] = []
-    lines: list[tuple[int, LexedLine]] = []
+    offsets: array[int] = array("q")
+    lines: list[LexedLine] = []
     offset = 0
-    lex_line: Callable[[str, Dialect], LexedLine] = _lex_line_cached
+    cache, words = _lexed[dialect], vocabulary(dialect)
     for physical in _LINE.findall(source):
         if not physical:
             continue
-        lexed = lex_line(physical, dialect)
-        lines.append((offset, lexed))
+        lexed = cache.get(physical)
+        if lexed is None:
+            lexed = _lex_line(physical, dialect, words)
+            cache.put(physical, lexed)
+        offsets.append(offset)
+        lines.append(lexed)
         if lexed.issues:
             issues.extend(issue.shifted(offset) for issue in lexed.issues)
         offset += lexed.length
-    frozen = tuple(lines)
-    return LexResult(TokenStream(frozen), tuple(issues), frozen)
+    physical = PhysicalLines(offsets, tuple(lines))
+    return LexResult(TokenStream(physical), tuple(issues), physical)

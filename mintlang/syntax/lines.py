@@ -16,6 +16,7 @@ from typing import NamedTuple
 from mintlang.diagnostics import Span
 from mintlang.syntax.lexer import LexedLine, LexResult
 from mintlang.syntax.nodes import identity
+from mintlang.syntax.spans import span
 from mintlang.syntax.tokens import TokenKind
 
 _K = TokenKind
@@ -103,10 +104,10 @@ class LogicalLine:
 
     @property
     def span(self) -> Span:
-        return Span(self.start, self.end)
+        return span(self.start, self.end)
 
     def token_span(self, index: int) -> Span:
-        return Span(self.starts[index], self.ends[index])
+        return span(self.starts[index], self.ends[index])
 
 
 def _is_statement_start(kinds: list[TokenKind], index: int) -> bool:

@@ -24,26 +24,26 @@ from mintlang.allocation import collector_paused, without_collector
 from mintlang.analysis.suggestions import closest, did_you_mean
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import mint_error
-from mintlang.diagnostics import Diagnostic, Fix, LineIndex, Span
+from mintlang.diagnostics import Diagnostic, Fix, LineIndex
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.syntax import nodes as n
 from mintlang.syntax.grammar import ParseFailure, parse_kinds
 from mintlang.syntax.grammar import clear_cache as clear_parse_cache
-from mintlang.syntax.lexer import TokenStream, lex
+from mintlang.syntax.lexer import PhysicalLines, TokenStream, lex
 from mintlang.syntax.lexer import clear_cache as clear_lex_cache
 from mintlang.syntax.lines import (
     Expansion,
     LineGroup,
     LogicalLine,
     MacroDefinition,
-    PhysicalLine,
     expand_macros,
     logical_lines,
     register,
     take_macro_body,
 )
 from mintlang.syntax.nodes import identity
+from mintlang.syntax.spans import span as shared_span
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, Token, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
@@ -67,7 +67,7 @@ class Document:
     source: str
     dialect: Dialect
     tokens: TokenStream  # lossless: the texts join back to the source
-    physical: tuple[PhysicalLine, ...]  # every physical line, lexed, with its offset
+    physical: PhysicalLines  # every physical line, lexed, with its offset
     placed: tuple[n.PlacedLine, ...]
     diagnostics: tuple[Diagnostic, ...]
     macros: Mapping[str, MacroDefinition]
@@ -82,9 +82,9 @@ class Document:
 
     def physical_between(self, start: int, end: int) -> range:
         """The indices in ``physical`` of the lines that hold offsets ``start`` to ``end``."""
-        lines = self.physical
-        first = max(0, bisect_right(lines, start, key=_offset_of) - 1)
-        return range(first, max(first, bisect_right(lines, end, key=_offset_of)))
+        offsets = self.physical.offsets
+        first = max(0, bisect_right(offsets, start) - 1)
+        return range(first, max(first, bisect_right(offsets, end)))
 
     def tokens_in(self, start: int, end: int) -> list[Token]:
         """The lossless tokens of the physical lines that hold offsets ``start`` to ``end``.
@@ -100,8 +100,8 @@ class Document:
         return found
 
 
-def _offset_of(line: PhysicalLine) -> int:
-    return line[0]
+_MacroBody = tuple[tuple[TokenKind, str], ...]
+_ParseKey = tuple[Dialect, Controller | None, str, tuple[_MacroBody | None, ...]]
 
 
 @dataclass(frozen=True, slots=True)
@@ -109,13 +109,12 @@ class _ParsedLine:
     """What parsing one logical line gives, at offsets relative to its first physical line."""
 
     syntax: n.LineSyntax
+    content: _ParseKey  # what it was parsed from: every line of the same content shares this one key
     diagnostics: tuple[Diagnostic, ...]
     definitions: tuple[MacroDefinition, ...]
     expansions: tuple[Expansion, ...]
 
 
-_MacroBody = tuple[tuple[TokenKind, str], ...]
-_ParseKey = tuple[Dialect, Controller | None, str, tuple[_MacroBody | None, ...]]
 _parsed: RecentCache[_ParseKey, _ParsedLine] = RecentCache(LINES_KEPT)
 
 
@@ -154,7 +153,7 @@ def parse(
         key = (dialect, target, group.text, context)
         parsed = _parsed.get(key)
         if parsed is None:
-            parsed = _parse_group(group, visible, vocabulary(dialect, target), dialect)
+            parsed = _parse_group(group, key, visible, vocabulary(dialect, target), dialect)
             _parsed.put(key, parsed)
         origin = group.origin
         if parsed.definitions:
@@ -165,7 +164,7 @@ def parse(
             expansions.extend(expansion.shifted(origin) for expansion in parsed.expansions)
         if parsed.diagnostics:
             diagnostics.extend(diagnostic.shifted(origin) for diagnostic in parsed.diagnostics)
-        placed.append(n.PlacedLine(origin, group.number, parsed.syntax, key))
+        placed.append(n.PlacedLine(origin, group.number, parsed.syntax, parsed.content))
     return Document(
         source,
         dialect,
@@ -186,7 +185,7 @@ def _body(macro: MacroDefinition | None) -> _MacroBody | None:
 
 
 def _parse_group(
-    group: LineGroup, visible: Mapping[str, MacroDefinition], words: Vocabulary, dialect: Dialect
+    group: LineGroup, content: _ParseKey, visible: Mapping[str, MacroDefinition], words: Vocabulary, dialect: Dialect
 ) -> _ParsedLine:
     line = group.tokens()
     defined = take_macro_body(line)
@@ -200,7 +199,7 @@ def _parse_group(
     else:
         label, statements = result(line, words)
     syntax = n.LineSyntax(group.text, line.span, label, statements)
-    return _ParsedLine(syntax, tuple(diagnostics), tuple(defined), tuple(expansions))
+    return _ParsedLine(syntax, content, tuple(diagnostics), tuple(defined), tuple(expansions))
 
 
 def _recover(
@@ -225,7 +224,7 @@ def _recover(
         if not isinstance(result, ParseFailure):
             statements.extend(result(_slice(line, begin, end), words)[1])
             continue
-        span = Span(line.starts[begin], line.ends[end - 1])
+        span = shared_span(line.starts[begin], line.ends[end - 1])
         broken = kinds[begin:end]
         statements.append(n.SyntaxError_(span, _opened_block(broken), _closing_word(broken)))
         issue = _misspelt_keyword(line, begin, words) or _describe(line, begin, end, result)
@@ -307,12 +306,12 @@ def _misspelt_keyword(line: LogicalLine, begin: int, words: Vocabulary) -> Diagn
 def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) -> Diagnostic | None:
     """The diagnostic for a statement the grammar rejected, numbered as the controller would."""
     if failure.too_complex is not None:
-        span = Span(line.starts[begin], line.ends[end - 1])
+        span = shared_span(line.starts[begin], line.ends[end - 1])
         return _error(2015, span, f"too complex to analyse: {failure.too_complex}")
     kinds = line.kinds
     index = begin + failure.index
     at_end = index >= end
-    span = Span(line.ends[end - 1], line.ends[end - 1]) if at_end else line.token_span(index)
+    span = shared_span(line.ends[end - 1], line.ends[end - 1]) if at_end else line.token_span(index)
     if not at_end and kinds[index] is _K.INVALID:
         return None  # the lexer already reported it
     segment = kinds[begin:end]

@@ -62,28 +62,28 @@ def mint_program(lines: int, seed: int = 2002, *, names: int = 30) -> str:
 
 
 _PYTHON_BLOCKS = (
-    lambda r, i: [f"speed{i % 30} = 0", f"target{i % 30} = [{r.randint(1, 99)}, {r.randint(1, 99)}] * 10"],
-    lambda r, i: [
+    lambda r, i, v: [f"speed{v} = 0", f"target{v} = [{r.randint(1, 99)}, {r.randint(1, 99)}] * 10"],
+    lambda r, i, v: [
         f"speed[0], speed[1] = {r.randint(10, 500)}, {r.randint(10, 500)}",
         f"accel = {r.randint(100, 5000)}",
-        f"move_to(target{i % 30}[1], target{i % 30}[2]); go(0, 1)",
+        f"move_to(target{v}[1], target{v}[2]); go(0, 1)",
         "wait_idle(0, 1)",
     ],
-    lambda r, i: [
-        f"if inputs[{i % 16}] and speed{i % 30} > {r.randint(1, 100)}:",
+    lambda r, i, v: [
+        f"if inputs[{i % 16}] and speed{v} > {r.randint(1, 100)}:",
         f"    outputs[{i % 8}] = ON; wait({r.randint(10, 200)})",
         "else:",
-        f'    print("speed ", speed{i % 30}, " at ", pos[0])',
+        f'    print("speed ", speed{v}, " at ", pos[0])',
         "    pass",
     ],
-    lambda r, i: [
-        f"for speed{i % 30} in range(1, {r.randint(2, 20)}, 2):",
-        f"    mover[{i % 4}] = speed{i % 30} * 1.5 + sin({r.randint(0, 90)}); go({i % 4})",
+    lambda r, i, v: [
+        f"for speed{v} in range(1, {r.randint(2, 20)}, 2):",
+        f"    mover[{i % 4}] = speed{v} * 1.5 + sin({r.randint(0, 90)}); go({i % 4})",
         "    wait_idle(0)",
         "    pass",
     ],
-    lambda r, i: ["# ---- next station ----", ""],
-    lambda r, i: [
+    lambda r, i, v: ["# ---- next station ----", ""],
+    lambda r, i, v: [
         f"while not inputs[{i % 16}]:",
         f"    jog[1] = adc[0] * {r.randint(1, 9)} - 127  # follow the joystick",
         "    pass",
@@ -105,23 +105,27 @@ _MINTMT_SPELLING = (
 )
 
 
-def mintmt_program(lines: int, seed: int = 2002) -> str:
+def mintmt_program(lines: int, seed: int = 2002, *, names: int = 30) -> str:
     """``mint_program`` written as MintMT: the same lines and statements, for the MintMT row of a benchmark."""
-    text = mint_program(lines, seed)
+    text = mint_program(lines, seed, names=names)
     for pattern, replacement in _MINTMT_SPELLING:
         text = pattern.sub(replacement, text)
     return text
 
 
-def python_program(lines: int, seed: int = 2002) -> str:
-    """The Python counterpart of ``mint_program``: the same blocks, lines and about as many tokens."""
+def python_program(lines: int, seed: int = 2002, *, names: int = 30) -> str:
+    """The Python counterpart of ``mint_program``: the same blocks and declarations, lines and about as
+    many tokens."""
     rng = random.Random(seed)
     body: list[str] = ["# Generated benchmark program", "key = 0", "init()", "while True:"]
     index = 0
-    while len(body) < lines - 3:
+    while len(body) + 2 * names < lines - 3:
         index += 1
         block = rng.randrange(len(_PYTHON_BLOCKS))
-        body.extend("    " + text if text else text for text in _PYTHON_BLOCKS[block](rng, index))
+        body.extend("    " + text if text else text for text in _PYTHON_BLOCKS[block](rng, index, index % names))
+    body[1:1] = [f"speed{n} = 0" for n in range(names)] + [f"target{n} = [0] * 20" for n in range(names)]
     body = body[: lines - 3]
+    if body[-1].endswith(":"):  # the last block was cut after its header
+        body[-1] = "    pass"
     body += ["    key = inkey()", "    if key == 'Q': break", "print(err)"]
     return "\n".join(body[:lines]) + "\n"

@@ -201,6 +201,8 @@ class Execution:
         vm.operations[:] = [self._watched(pc, operation) for pc, operation in enumerate(vm.operations)]
 
     def _watched(self, pc: int, operation: Operation) -> Operation:
+        vm = self.controller.vm  # type: ignore[union-attr]
+
         def watched() -> bool | None:
             point = self._before(pc)
             try:
@@ -210,6 +212,9 @@ class Execution:
                     self._stop(point, "exception", error.describe())
                 raise
             self._blocked = (pc, point.depth) if blocked else None
+            plan = self._plan
+            if blocked and isinstance(plan, Forward) and plan.wake is not None:  # try it again when the plan ends
+                vm.wake_at = min(vm.wake_at, max(plan.wake, vm.clock.now + 1))
             return blocked
 
         return watched
@@ -219,7 +224,7 @@ class Execution:
         controller = self.controller
         assert controller is not None and self.evaluator is not None
         depth = len(controller.vm.frames)
-        point = Point(self._count, pc, depth, self._blocked == (pc, depth))
+        point = Point(self._count, pc, depth, self._blocked == (pc, depth), controller.clock.now)
         self._count += 1
         self.timeline.reach(point.count)
         for intervention in self.timeline.due(point.count):
@@ -286,7 +291,7 @@ class Execution:
         vm = controller.vm
         site = vm.stop_site
         pc = vm.sites.index(site) if site is not None and site in vm.sites else len(vm.sites)
-        point = Point(self._count, pc, len(vm.frames), resumed=False)
+        point = Point(self._count, pc, len(vm.frames), resumed=False, tick=controller.clock.now)
         self.ending = result.stop
         try:
             self._stop(point, "exception", result.stop.message)

@@ -94,6 +94,7 @@ class Session:
             "stepIn": self.step(stepping.step_in),
             "stepOut": self.step(stepping.step_out),
             "stepBack": self.step_back,
+            "runFor": self.run_for,
             "reverseContinue": self.reverse_continue,
             "pause": self.pause,
             "terminate": self.terminate,
@@ -356,6 +357,15 @@ class Session:
             execution.resume(plan(execution.point))
 
         return request
+
+    def run_for(self, arguments: dict[str, Any]) -> None:
+        """``runFor {"ms": 100}``, mint-dap's own request: run on for that much simulated time."""
+        execution, _ = self._paused()
+        assert execution.point is not None
+        ms = arguments.get("ms")
+        if not isinstance(ms, int) or isinstance(ms, bool) or ms < 1:
+            raise RequestError("runFor takes 'ms', a whole number of simulated milliseconds, 1 or more")
+        execution.resume(stepping.run_for(execution.point, ms))
 
     def step_back(self, arguments: dict[str, Any]) -> None:
         execution, _ = self._paused()

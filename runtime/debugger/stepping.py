@@ -27,6 +27,7 @@ class Point:
     pc: int  # the operation about to run
     depth: int  # GOSUB and event-handler frames open
     resumed: bool  # a blocked statement tried again (not a stop for stepping or breakpoints)
+    tick: int = 0  # the simulated time, in servo ticks (ms)
 
 
 @dataclass(frozen=True, slots=True)
@@ -37,6 +38,7 @@ class Forward:
     accepts: Callable[[Point], bool]
     reason: str = "step"
     breakpoints: bool = True  # whether breakpoints met on the way stop it
+    wake: int | None = None  # a tick at which a blocked statement is tried again, so the plan can stop there
 
 
 @dataclass(slots=True)
@@ -69,6 +71,13 @@ def step_over(at: Point) -> Forward:
 
 def step_out(at: Point) -> Forward:
     return Forward(at.count, lambda point: not point.resumed and point.depth < at.depth)
+
+
+def run_for(at: Point, ticks: int) -> Forward:
+    """On for ``ticks`` of simulated time, to the statement tried then (a blocked one is tried again at that
+    tick, where the simulator would otherwise skip ahead), or the first after it if one runs through it."""
+    until = at.tick + ticks
+    return Forward(at.count, lambda point: point.tick >= until, wake=until)
 
 
 def reach(count: int, reason: str) -> Forward:

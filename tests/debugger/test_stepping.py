@@ -92,3 +92,29 @@ def test_the_program_runs_as_one_thread(debug: Debug) -> None:
     client = debug(CALLS, stopOnEntry=True)
     client.stopped()
     assert client.body("threads")["threads"] == [{"id": 1, "name": "program.mnt"}]
+
+
+MOVING = """\
+DIM n
+MOVEA.0 = 1000 : GO.0
+PAUSE IDLE.0
+n = POS.0
+"""
+
+
+def test_run_for_runs_on_for_a_simulated_time_and_stops_at_the_statement_then_tried(debug: Debug) -> None:
+    client = debug(MOVING, breakpoints=(3,), drives="enabled")
+    client.stopped()
+    started = int(client.evaluate("TIME"))
+    client.body("runFor", {"ms": 25})
+    assert client.stopped()["reason"] == "step"
+    assert client.line() == 3  # the PAUSE, still waiting for the move
+    assert int(client.evaluate("TIME")) == started + 25  # the move keeps every tick processed
+    assert 0 < float(client.evaluate("POS.0")) < 1000
+
+
+def test_run_for_takes_a_whole_number_of_milliseconds(debug: Debug) -> None:
+    client = debug(MOVING, breakpoints=(3,), drives="enabled")
+    client.stopped()
+    refused = client.request("runFor", {"ms": 0.5})
+    assert not refused["success"] and "whole number" in refused["message"]

@@ -68,10 +68,28 @@ async function debugInSimulator(uri: unknown): Promise<void> {
   await vscode.debug.startDebugging(folder, launchFor(file) as vscode.DebugConfiguration);
 }
 
+/** "Mint: Run on for a simulated time…": mint-dap's own runFor request, to the statement tried that much later. */
+async function runFor(): Promise<void> {
+  const session = vscode.debug.activeDebugSession;
+  if (session?.type !== DEBUG_TYPE) {
+    void vscode.window.showErrorMessage("Run on for a simulated time: debug a Mint program first.");
+    return;
+  }
+  const text = await vscode.window.showInputBox({
+    prompt: "Simulated milliseconds to run on for (servo ticks)",
+    value: "100",
+    validateInput: (value) => (/^[1-9]\d*$/.test(value.trim()) ? undefined : "a whole number of milliseconds, 1 or more"),
+  });
+  if (text !== undefined) {
+    await session.customRequest("runFor", { ms: Number(text.trim()) });
+  }
+}
+
 export function registerDebugger(output: vscode.OutputChannel): vscode.Disposable[] {
   return [
     vscode.debug.registerDebugAdapterDescriptorFactory(DEBUG_TYPE, new Adapter(output)),
     vscode.debug.registerDebugConfigurationProvider(DEBUG_TYPE, new Configurations()),
     vscode.commands.registerCommand("mint.debugInSimulator", debugInSimulator),
+    vscode.commands.registerCommand("mint.runFor", runFor),
   ];
 }

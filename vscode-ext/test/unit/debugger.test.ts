@@ -74,3 +74,14 @@ test("with nothing to debug the completion says what to open", () => {
   assert.equal(completeLaunch({}, undefined, NONE, folder([])).ok, false);
   assert.equal(completeLaunch({}, "/work/robot/notes.txt", NONE, folder([])).ok, false);
 });
+
+test("'Run on for a simulated time' is offered while a Mint debug session is stopped, and mint-dap serves its request", () => {
+  const menus = (JSON.parse(readFileSync(path.join(EXTENSION, "package.json"), "utf8")) as {
+    contributes: { menus: Record<string, { command: string; when?: string }[]> };
+  }).contributes.menus;
+  for (const menu of ["commandPalette", "debug/toolbar"]) {
+    assert.equal(menus[menu]?.find((item) => item.command === "mint.runFor")?.when, "debugType == mint && debugState == stopped", menu);
+  }
+  const session = readFileSync(path.join(CHECKOUT, "runtime", "debugger", "session.py"), "utf8");
+  assert.match(session, /"runFor": self\.run_for/);
+});

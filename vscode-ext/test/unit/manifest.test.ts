@@ -120,6 +120,7 @@ test("the commands are titled 'Mint: …' and offered only where they apply", ()
     "mint.replaceV3Keywords": "Mint: Replace v3 keywords",
     "mint.runInSimulator": "Mint: Run in simulator",
     "mint.debugInSimulator": "Mint: Debug in simulator",
+    "mint.runFor": "Mint: Run on for a simulated time…",
   });
   const menus = manifest.contributes.menus;
   const when = (menu: string, command: string) => menus[menu]?.find((item) => item.command === command)?.when ?? "";

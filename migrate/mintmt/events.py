@@ -76,11 +76,20 @@ def _why_not(source: Source, label: int, end: int | None) -> str | None:
         return "a statement follows its label on the line"
     if end is None:
         return "it does not end with one RETURN alone on its line before the next label"
-    if any(token.kind is _K.NAME and token.text.upper() == name for _, _, token in source.tokens()):
+    if name in _jump_targets(source):
         return "the program names it in a GOSUB or GOTO"
     if _runs_into(source.lines, label):
         return "the code above it can run into it (v4 runs the handler's lines, MintMT steps over an Event block)"
     return None
+
+
+def _jump_targets(source: Source) -> set[str]:
+    """The upper-case label names the file's ``GOSUB`` and ``GOTO`` statements name."""
+    return {
+        line.tokens[index + 1].text.upper()
+        for line, index, token in source.tokens()
+        if token.kind in {_K.GOSUB, _K.GOTO} and index + 1 < len(line.tokens)
+    }
 
 
 def _runs_into(lines: tuple[Line, ...], label: int) -> bool:

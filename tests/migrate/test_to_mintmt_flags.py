@@ -32,6 +32,13 @@ FLAGS = [
         id="called",
     ),
     pytest.param(
+        "GOTO comms1\nEND\n#COMMS1\nRETURN\n",
+        3,
+        "MT-EVENT",
+        "#COMMS1 is kept as a v4 handler: the program names it in a GOSUB or GOTO",
+        id="jumped-to-in-small-letters",
+    ),
+    pytest.param(
         "DIM a\nLOOP\nIF a THEN EXIT\nENDL\n#COMMS2\nRETURN\n",
         5,
         "MT-EVENT",

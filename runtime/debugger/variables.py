@@ -13,9 +13,11 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, Protocol
 
+from mintlang.runtime.clock import NEVER
 from mintlang.runtime.comms.array import USER_ELEMENTS
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.debugger.evaluation import EvaluationError, Evaluator, shown
+from mintlang.runtime.motion.axis import Axis
 
 AXIS_KEYWORDS = ("POS", "VEL", "FOLERROR", "AXISMODE", "AXISERROR", "IDLE", "DRIVEENABLE", "MOVEBUFFERFREE")
 
@@ -138,20 +140,51 @@ class Axes(_ReadOnly):
             summary = (
                 f"POS {_read(self.evaluator, f'POS.{axis.number}')}, VEL {_read(self.evaluator, f'VEL.{axis.number}')}"
             )
-            found.append(Variable(f"axis {axis.number}", summary, None, AxisValues(self.evaluator, axis.number)))
+            found.append(
+                Variable(f"axis {axis.number}", summary, None, AxisValues(self.evaluator, axis, self.controller.axes))
+            )
         return found
 
 
 class AxisValues(_ReadOnly):
-    def __init__(self, evaluator: Evaluator, number: int) -> None:
+    def __init__(self, evaluator: Evaluator, axis: Axis, axes: list[Axis]) -> None:
         self.evaluator = evaluator
-        self.number = number
+        self.axis = axis
+        self.axes = axes
 
     def children(self, start: int, count: int | None) -> list[Variable]:
-        return [
-            Variable(keyword, _read(self.evaluator, f"{keyword}.{self.number}"), f"{keyword}.{self.number}")
+        number = self.axis.number
+        found = [
+            Variable(keyword, _read(self.evaluator, f"{keyword}.{number}"), f"{keyword}.{number}")
             for keyword in AXIS_KEYWORDS
         ]
+        loaded = len(self.axis.buffer)
+        running = "a move running" if self.axis.move is not None else "no move running"
+        found.append(Variable("move buffer", f"{running}, {loaded} loaded", None, MoveBuffer(self.axis, self.axes)))
+        return found
+
+
+class MoveBuffer(_ReadOnly):
+    """The move running on an axis and those loaded behind it, with their modes, axes and end positions."""
+
+    def __init__(self, axis: Axis, axes: list[Axis]) -> None:
+        self.axis = axis
+        self.axes = axes  # a vector's end positions are in each of its axes' units
+
+    def children(self, start: int, count: int | None) -> list[Variable]:
+        axis = self.axis
+        found = []
+        if axis.move is not None:
+            move = axis.move
+            ends = "open-ended" if move.end >= NEVER else f"ends at {move.end} ms"
+            found.append(Variable("running", f"AXISMODE {move.mode}, axes {list(move.axes)}, {ends}"))
+        for place, request in enumerate(axis.buffer, start=1):
+            value = f"AXISMODE {request.mode}, axes {list(request.axes)}"
+            if request.targets is not None:
+                ends = zip(request.axes, request.targets, strict=True)
+                value += ", to " + ", ".join(shown(self.axes[number].position(counts)) for number, counts in ends)
+            found.append(Variable(f"({place})", value))
+        return found
 
 
 def _read(evaluator: Evaluator, expression: str) -> str:

@@ -81,3 +81,32 @@ def test_a_value_that_is_not_an_element_or_not_a_number_is_refused(debug: Debug)
         "setVariable", {"variablesReference": client.scope("Axes"), "name": "axis 0", "value": "1"}
     )
     assert not refused["success"]
+
+
+BUFFERED = """\
+MOVEBUFFERSIZE.0 = 3
+MOVEA.0 = 10 : GO.0
+MOVEA.0 = 20
+MOVEA.0 = 5
+PAUSE IDLE.0
+"""
+
+
+def _move_buffer(client) -> dict:
+    axes = client.body("variables", {"variablesReference": client.scope("Axes")})["variables"]
+    values = client.body("variables", {"variablesReference": axes[0]["variablesReference"]})["variables"]
+    (buffer,) = [value for value in values if value["name"] == "move buffer"]
+    return buffer
+
+
+def test_each_axis_shows_its_move_running_and_those_loaded_behind_it(debug: Debug) -> None:
+    client = debug(BUFFERED, breakpoints=(5,), drives="enabled")
+    client.stopped()
+    assert _move_buffer(client)["value"] == "no move running, 3 loaded"  # GO starts it at the next profiler tick
+    client.body("runFor", {"ms": 4})
+    client.stopped()
+    buffer = _move_buffer(client)
+    assert buffer["value"] == "a move running, 2 loaded"
+    moves = client.variables(buffer["variablesReference"])
+    assert list(moves) == ["running", "(1)", "(2)"]
+    assert moves["(1)"].endswith("axes [0], to 20") and moves["(2)"].endswith("axes [0], to 5")

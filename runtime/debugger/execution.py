@@ -29,6 +29,7 @@ from mintlang.runtime.interpreter.vm import Operation, StopReason
 from mintlang.runtime.run import RunResult
 from mintlang.runtime.scenario import ScenarioFileError
 from mintlang.runtime.simulation import Interrupt, Stop
+from mintlang.runtime.trace import Trace
 
 ERRORS = "errors"  # exception filter: stop at every run-time error, even one #ONERROR handles
 UNHANDLED = "unhandled"  # exception filter: stop where an error, or a wait nothing can end, ends the run
@@ -98,6 +99,7 @@ class Execution:
         self._blocked: tuple[int, int] | None = None  # (pc, depth) of the statement that blocked last
         self._recent: deque[_Recent] = deque(maxlen=RECENT)  # this run's last points where stepping may stop
         self._thread: threading.Thread | None = None
+        self._trace: Trace | None = None  # this run's, when the launch asks for a plot
 
     # ------------------------------------------------------------ the editor's side
 
@@ -186,7 +188,9 @@ class Execution:
         self._logged_from = self.timeline.points_reached  # log messages at earlier points were shown before
         self._blocked = None
         self._recent.clear()
-        result = self.application.run(self._attach, self._echo)
+        plot = self.application.plot
+        self._trace = Trace(self._plotted_axes(), None, plotting=True, chosen=False) if plot is not None else None
+        result = self.application.run(self._attach, self._echo, self._record if plot is not None else None)
         if isinstance(plan, Scan) and self._next_plan is None:  # going back from where the run ended
             self._next_plan = self._found(plan)
         elif self._next_plan is None and not self._terminating:
@@ -268,6 +272,7 @@ class Execution:
         with self._condition:
             self._command = None
             self.point = point
+        self._draw(point)
         self.listener.stopped(reason, description)
         with self._condition:
             while self._command is None:
@@ -301,6 +306,24 @@ class Execution:
             self.ending = None
 
     # ------------------------------------------------------------------- output
+
+    def _plotted_axes(self) -> tuple[int, ...]:
+        return tuple(range(self.application.profile.axis_count))
+
+    def _record(self, controller: Controller, tick: int) -> None:
+        if self._trace is not None:
+            self._trace.record(controller, tick)
+
+    def _draw(self, point: Point) -> None:
+        """The run so far, drawn to the launch's ``plot`` image (the axes that moved, and the I/O)."""
+        path = self.application.plot
+        if path is None or self._trace is None:
+            return
+        title = f"{self.application.program.name}, stopped at {point.tick} ms"
+        try:
+            self._trace.plot(path, title)
+        except OSError as error:
+            self.listener.output(f"mint-dap: cannot write {path}: {error.strerror or error}\n", "stderr")
 
     def _echo(self, text: str) -> None:
         index = self._writes

@@ -2,7 +2,8 @@
 
 The program's configuration file is the one ``mint-run`` pairs with it
 (``config``, else the settings or ``<name>.cfg`` beside it; ``noConfig`` runs
-none); scenario files add inputs, keys, host packets and plants. The dialect
+none); scenario files add inputs, keys, host packets and plants; ``plot`` names
+an image drawn of the run so far at each stop. The dialect
 and controller not given are the project's settings file's (``mint.toml``), and
 without one the dialect the program's text shows (``auto``) on the default
 controller. Every mistake is a ``LaunchError`` whose message the editor shows
@@ -23,10 +24,12 @@ from mintlang.runtime.controller import Controller
 from mintlang.runtime.dialects import SIMULATED
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import Site
+from mintlang.runtime.outputs import OutputProblem, check_plot
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import ScenarioFileError, load_scenario, merge
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
 from mintlang.runtime.simulation import Limits
+from mintlang.runtime.trace import PlotUnavailable
 from mintlang.semantic.units import Unit
 from mintlang.settings import SettingsError, settings_for
 from mintlang.settings.model import DEFAULT, FileSettings, Given
@@ -53,8 +56,14 @@ class Application:
     scenario: Scenario
     until_ms: int | None
     stop_on_entry: bool
+    plot: Path | None = None  # the image the run so far is drawn to at each stop
 
-    def run(self, on_start: Callable[[Controller], None], echo: Callable[[str], None] | None = None) -> RunResult:
+    def run(
+        self,
+        on_start: Callable[[Controller], None],
+        echo: Callable[[str], None] | None = None,
+        on_tick: Callable[[Controller, int], None] | None = None,
+    ) -> RunResult:
         """One run of the application, as long as the debugger lets it go (``untilMs`` at most)."""
         return run_source(
             self.source,
@@ -64,6 +73,7 @@ class Application:
             scenario=self.scenario,
             limits=Limits(until_ms=self.until_ms, max_wall_s=None),  # the user's pauses are not the program's time
             echo=echo,
+            on_tick=on_tick,
             on_start=on_start,
             name=str(self.program),
         )
@@ -117,6 +127,7 @@ def prepare(arguments: Mapping[str, Any]) -> Application:
         scenario,
         until_ms,
         bool(arguments.get("stopOnEntry", False)),
+        _plot(arguments.get("plot"), program, configuration),
     )
 
 
@@ -156,6 +167,20 @@ def _path(value: object, name: str) -> Path | None:
     if not isinstance(value, str) or not value:
         raise LaunchError(f"'{name}' is the path of a file")
     return Path(value)
+
+
+def _plot(value: object, program: Path, configuration: Path | None) -> Path | None:
+    """The image to draw the run to, checked as ``mint-run --plot`` checks it (matplotlib, an image type,
+    not one of the inputs)."""
+    path = _path(value, "plot")
+    if path is None:
+        return None
+    inputs = {program: "the program"} | ({configuration: "the configuration"} if configuration is not None else {})
+    try:
+        check_plot(path, inputs)
+    except (OutputProblem, PlotUnavailable) as problem:
+        raise LaunchError(str(problem)) from None
+    return path
 
 
 def _paths(value: object, name: str) -> list[Path]:

@@ -185,8 +185,8 @@ def test_quiet_and_verbose_together_are_a_usage_error(tmp_path: Path, tool: str)
 def test_verbose_adds_to_the_report_and_quiet_takes_from_it(tmp_path: Path) -> None:
     v3, ok = write(tmp_path, "v3.mnt", V3), write(tmp_path, "ok.mnt", "PRINT 1\n")
     migrated = run(TOOLS["mint-migrate"], v3, "-v").stdout
-    assert f"{v3}:" in migrated and ": M-REN" in migrated  # each change with its rule (HMSPEED renamed)
-    assert ": M-REN" not in run(TOOLS["mint-migrate"], v3).stdout
+    assert f"{v3}:1 (original line 1): M-REN" in migrated  # each change with its rule (HMSPEED renamed)
+    assert "(original line 1): M-REN" not in run(TOOLS["mint-migrate"], v3).stdout  # the totals name it alone
     assert "file: 1 changed" not in run(TOOLS["mint-migrate"], v3, "-q").stdout
     ran = run(TOOLS["mint-run"], ok, "-v")
     assert ran.stdout == "1\n" and "simulated 0 ms in " in ran.stderr

@@ -107,7 +107,7 @@ class Execution:
         self._thread = threading.Thread(target=self._main, args=(plan,), name="mint-simulation", daemon=True)
         self._thread.start()
 
-    def command(self, command: Command) -> None:
+    def _send(self, command: Command) -> None:
         """Resume the paused run with ``command``."""
         with self._condition:
             self._command = command
@@ -115,11 +115,11 @@ class Execution:
             self._condition.notify_all()
 
     def resume(self, plan: Forward) -> None:
-        self.command(plan)
+        self._send(plan)
 
     def rerun(self, plan: Plan) -> None:
         """Start again from the beginning with ``plan`` (the editor asked to go back)."""
-        self.command(_Rerun(plan))
+        self._send(_Rerun(plan))
 
     def step_back(self, at: Point) -> None:
         """Back to the statement before ``at`` in its frame or a caller's: one re-run when that point is among
@@ -154,7 +154,7 @@ class Execution:
     def terminate(self) -> None:
         """End the run, paused or not, and wait for its thread to finish."""
         self._terminating = True
-        self.command(_Terminate())
+        self._send(_Terminate())
         if self._thread is not None and self._thread is not threading.current_thread():
             self._thread.join(timeout=10)
 

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 from hypothesis import HealthCheck, given, note, settings
+from hypothesis import strategies as st
 
 from mintlang.runtime.debugger import execution as execution_module
 from mintlang.runtime.debugger import stepping
@@ -22,7 +23,8 @@ from mintlang.runtime.debugger.breakpoints import Breakpoints
 from mintlang.runtime.debugger.execution import Execution
 from mintlang.runtime.debugger.launch import layout, prepare
 from mintlang.runtime.observation import axis_state
-from mintlang.runtime.run import RunResult
+from mintlang.runtime.run import RunResult, run_source
+from mintlang.runtime.simulation import Limits
 from tests.runtime.programs import UNTIL_MS, Program, timed_programs
 
 STOPS = 12  # forward stops recorded per program: each step back is a re-run, so the walk stays short
@@ -38,14 +40,18 @@ class Harness:
         application = prepare({"program": str(path), "untilMs": UNTIL_MS, "dialect": "v4", "noConfig": True})
         self.execution = Execution(application, Breakpoints(layout(application)), self)
         self.reports: queue.Queue[str] = queue.Queue()
+        self.printed = ""  # what the console was sent of the program's output
+        self.result: RunResult | None = None
 
     def stopped(self, reason: str, description: str | None) -> None:
         self.reports.put(reason)
 
     def output(self, text: str, category: str) -> None:
-        pass
+        if category == "stdout":
+            self.printed += text
 
     def finished(self, result: RunResult | None, problem: str | None) -> None:
+        self.result = result
         self.reports.put("finished")
 
     def wait(self) -> str:
@@ -106,3 +112,35 @@ def test_stepping_back_by_a_scan_from_the_start_reaches_the_same_states(program:
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(execution_module, "RECENT", 1)  # nothing recent to go back to: every step back scans
         _walk_and_return(program)
+
+
+@property_test
+@given(program=timed_programs(), forward=st.integers(min_value=0, max_value=10), back=st.integers(0, 5))
+def test_a_session_that_steps_and_steps_back_ends_as_the_run_without_the_debugger(
+    program: Program, forward: int, back: int
+) -> None:
+    """However the session went back and forth, the run ends where, when and as an uninterrupted run does,
+    and the console shows what that run printed, once."""
+    note(program.source)
+    expected = run_source(program.source, limits=Limits(until_ms=UNTIL_MS, max_wall_s=None))
+    with tempfile.TemporaryDirectory() as folder:
+        harness = Harness(program.source, Path(folder))
+        execution = harness.execution
+        reported = bool(_forward(harness, forward + 1))  # paused at the last stop walked to, unless it ended
+        for _ in range(back if reported and execution.point is not None else 0):
+            execution.step_back(execution.point)
+            harness.wait()
+        while execution.point is not None:  # on to the end, through any stop (an error ending the run)
+            execution.resume(stepping.cont(execution.point.count))
+            harness.wait()
+        execution.terminate()
+    result = harness.result
+    assert result is not None
+    assert (result.stop, result.err, result.axes, result.outputs) == (
+        expected.stop,
+        expected.err,
+        expected.axes,
+        expected.outputs,
+    )
+    if not expected.terminal_dropped:
+        assert harness.printed == expected.terminal

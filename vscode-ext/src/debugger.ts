@@ -2,6 +2,7 @@
 // to it; "Mint: Debug in simulator" debugs the program in the editor, as "Run in simulator" runs it.
 import * as vscode from "vscode";
 
+import { evaluatableAt } from "./evaluatable";
 import { currentHost, currentSettings, listFolder } from "./host";
 import { LANGUAGE_ID } from "./language";
 import { completeLaunch, DEBUG_TYPE, launchFor, type Chosen } from "./launch";
@@ -91,5 +92,11 @@ export function registerDebugger(output: vscode.OutputChannel): vscode.Disposabl
     vscode.debug.registerDebugConfigurationProvider(DEBUG_TYPE, new Configurations()),
     vscode.commands.registerCommand("mint.debugInSimulator", debugInSimulator),
     vscode.commands.registerCommand("mint.runFor", runFor),
+    vscode.languages.registerEvaluatableExpressionProvider(LANGUAGE_ID, {
+      provideEvaluatableExpression(document, position) {
+        const found = evaluatableAt(document.lineAt(position.line).text, position.character);
+        return found && new vscode.EvaluatableExpression(new vscode.Range(position.line, found[0], position.line, found[1]));
+      },
+    }),
   ];
 }

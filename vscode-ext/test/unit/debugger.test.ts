@@ -5,6 +5,7 @@ import { readFileSync } from "node:fs";
 import * as path from "node:path";
 import { test } from "node:test";
 
+import { evaluatableAt } from "../../src/evaluatable";
 import { completeLaunch, DEBUG_TYPE, launchFor, type Chosen } from "../../src/launch";
 import { PYTHON_ARGUMENTS } from "../../src/resolve";
 
@@ -84,4 +85,17 @@ test("'Run on for a simulated time' is offered while a Mint debug session is sto
   }
   const session = readFileSync(path.join(CHECKOUT, "runtime", "debugger", "session.py"), "utf8");
   assert.match(session, /"runFor": self\.run_for/);
+});
+
+test("hovering evaluates a name with its axis or element, not the bare name", () => {
+  const line = "  MOVEA.0 = table(3) + POS.1 * gain";
+  const hovered = (at: string) => {
+    const found = evaluatableAt(line, line.indexOf(at));
+    return found && line.slice(found[0], found[1]);
+  };
+  assert.equal(hovered("table"), "table(3)");
+  assert.equal(hovered("POS"), "POS.1");
+  assert.equal(hovered("gain"), "gain");
+  assert.equal(hovered("MOVEA"), "MOVEA.0");
+  assert.equal(evaluatableAt(line, line.indexOf("=")), undefined);
 });

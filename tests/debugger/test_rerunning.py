@@ -89,11 +89,14 @@ def _walk_and_return(program: Program) -> None:
         harness = Harness(program.source, Path(folder))  # paused at the last stop, however the first walk ended
         assert _forward(harness, len(forward)) == forward
         execution = harness.execution
-        for earlier in reversed(forward[:-1]):
-            assert execution.point is not None
-            execution.step_back(execution.point)
-            assert harness.wait() in ("step", "entry")
-            assert harness.state() == earlier
+        while execution.point is not None:
+            at = execution.point  # stepping back is the reverse of next: to this frame's or a caller's statement
+            earlier = [state for state in forward if state[0].count < at.count and state[0].depth <= at.depth]
+            if not earlier:
+                break
+            execution.step_back(at)
+            assert harness.wait() == "step"
+            assert harness.state() == earlier[-1]
         execution.terminate()
 
 

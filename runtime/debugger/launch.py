@@ -138,6 +138,10 @@ class Layout:
 
     sites: tuple[Site, ...] = ()
     labels: Mapping[str, int] = field(default_factory=dict)
+    columns: tuple[int, ...] = ()  # each statement's 1-based column, so a stop shows which of a line's it is
+
+    def column(self, pc: int) -> int:
+        return self.columns[pc] if pc < len(self.columns) else 1
 
 
 class _Compiled(Exception):
@@ -150,7 +154,8 @@ def layout(application: Application) -> Layout:
     bind to it before the program starts); empty when it cannot be built."""
 
     def compiled(controller: Controller) -> None:
-        raise _Compiled(Layout(tuple(controller.vm.sites), dict(controller.linked.handlers)))
+        sites = tuple(controller.vm.sites)
+        raise _Compiled(Layout(sites, dict(controller.linked.handlers), _columns(application, sites)))
 
     try:
         application.run(compiled)
@@ -159,6 +164,25 @@ def layout(application: Application) -> Layout:
     except ScenarioFileError as error:  # a REM @sim directive the scenario cannot read
         raise LaunchError(str(error)) from None
     return Layout()
+
+
+def _columns(application: Application, sites: tuple[Site, ...]) -> tuple[int, ...]:
+    """Where each statement starts in its line: found in order along the line as written (1 when a macro's
+    expansion is not there to find)."""
+    lines = {
+        Unit.PROGRAM.value: application.source.splitlines(),
+        Unit.CONFIGURATION.value: (application.configuration_source or "").splitlines(),
+    }
+    columns = []
+    searched_from: dict[tuple[str, int], int] = {}
+    for site in sites:
+        text = lines[site.unit][site.line - 1] if 0 < site.line <= len(lines[site.unit]) else ""
+        start = searched_from.get((site.unit, site.line), 0)
+        found = text.find(site.text, start) if site.text else -1
+        columns.append(found + 1 if found >= 0 else 1)
+        if found >= 0:
+            searched_from[(site.unit, site.line)] = found + len(site.text)
+    return tuple(columns)
 
 
 def _path(value: object, name: str) -> Path | None:

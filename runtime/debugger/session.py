@@ -22,7 +22,7 @@ from mintlang.runtime.debugger.breakpoints import Breakpoints
 from mintlang.runtime.debugger.evaluation import EvaluationError, shown
 from mintlang.runtime.debugger.execution import ERRORS, UNHANDLED, Execution
 from mintlang.runtime.debugger.framing import FramingError, read_message, write_message
-from mintlang.runtime.debugger.launch import Application, LaunchError, layout, prepare
+from mintlang.runtime.debugger.launch import Application, LaunchError, Layout, layout, prepare
 from mintlang.runtime.debugger.variables import NotSettable, References, scopes
 from mintlang.runtime.interpreter.vm import Site, StopReason
 from mintlang.runtime.run import RunResult
@@ -76,6 +76,7 @@ class Session:
         self.exception_filters = frozenset({UNHANDLED})
         self.references = References()
         self.spellings: dict[str, str] = {}
+        self.layout = Layout()
         self._handlers: dict[str, Callable[[dict[str, Any]], dict[str, Any] | None]] = {
             "initialize": self.initialize,
             "launch": self.launch,
@@ -201,7 +202,8 @@ class Session:
         if self.application is not None:
             raise RequestError("this session has already launched a program")
         application = prepare(arguments)
-        self.breakpoints = Breakpoints(layout(application))
+        self.layout = layout(application)
+        self.breakpoints = Breakpoints(self.layout)
         self.spellings = _spellings(application)
         self.application = application
 
@@ -281,7 +283,8 @@ class Session:
     def _frame(self, depth: int, site: Site | None, pc: int, controller: Controller) -> dict[str, Any]:
         assert self.application is not None
         name = self._routine(pc, site, controller)
-        frame: dict[str, Any] = {"id": depth + 1, "name": name, "line": site.line if site else 0, "column": 1}
+        column = self.layout.column(pc) if site is not None and pc < len(self.layout.sites) else 1
+        frame: dict[str, Any] = {"id": depth + 1, "name": name, "line": site.line if site else 0, "column": column}
         source = _source(self.application, site.unit) if site is not None else None
         if source is not None:
             frame["source"] = source

@@ -118,3 +118,13 @@ def test_run_for_takes_a_whole_number_of_milliseconds(debug: Debug) -> None:
     client.stopped()
     refused = client.request("runFor", {"ms": 0.5})
     assert not refused["success"] and "whole number" in refused["message"]
+
+
+def test_a_line_of_several_statements_is_stepped_one_statement_at_a_time_at_its_column(debug: Debug) -> None:
+    client = debug("DIM a\nDIM b\na = 1 : b = a + 1\nPRINT b\n", breakpoints=(3,))
+    client.stopped()
+    assert (client.frames()[0]["line"], client.frames()[0]["column"]) == (3, 1)
+    client.step("next")
+    assert (client.frames()[0]["line"], client.frames()[0]["column"], client.values()["a"]) == (3, 9, "1")
+    client.step("next")
+    assert (client.frames()[0]["line"], client.frames()[0]["column"]) == (4, 1)

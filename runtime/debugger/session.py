@@ -77,6 +77,7 @@ class Session:
         self.references = References()
         self.spellings: dict[str, str] = {}
         self.layout = Layout()
+        self.first_column = 1  # the client's number for a line's first column
         self._handlers: dict[str, Callable[[dict[str, Any]], dict[str, Any] | None]] = {
             "initialize": self.initialize,
             "launch": self.launch,
@@ -196,6 +197,7 @@ class Session:
     def initialize(self, arguments: dict[str, Any]) -> dict[str, Any]:
         if not arguments.get("linesStartAt1", True):
             raise RequestError("mint-dap counts lines from 1, as Mint does: the client must too")
+        self.first_column = 1 if arguments.get("columnsStartAt1", True) else 0
         return CAPABILITIES
 
     def launch(self, arguments: dict[str, Any]) -> None:
@@ -284,6 +286,7 @@ class Session:
         assert self.application is not None
         name = self._routine(pc, site, controller)
         column = self.layout.column(pc) if site is not None and pc < len(self.layout.sites) else 1
+        column += self.first_column - 1
         frame: dict[str, Any] = {"id": depth + 1, "name": name, "line": site.line if site else 0, "column": column}
         source = _source(self.application, site.unit) if site is not None else None
         if source is not None:

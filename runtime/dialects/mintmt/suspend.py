@@ -34,6 +34,8 @@ class _Paused:
 
 
 class Suspension:
+    """Which axes are suspended, and the moves paused for them until none of their axes is."""
+
     def __init__(self, motion: Motion) -> None:
         self.motion = motion
         self.suspended: set[int] = set()

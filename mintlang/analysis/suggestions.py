@@ -45,24 +45,32 @@ _OTHER_BASICS = {"WEND": "ENDW", "ENDWHILE": "ENDW"}
 
 
 @cache
-def _keywords_of(controller: Controller, *, values: bool) -> tuple[str, ...]:
-    """The keywords a program for ``controller`` can use, by their full names (not the editor's commands);
-    with ``values``, only those that are read or written (SPEED, POS), not commands or block words."""
+def _keywords_of(controller: Controller | None, *, values: bool) -> tuple[str, ...]:
+    """The keywords a program for ``controller`` (any, when None) can use, by their full names (not the
+    editor's commands); with ``values``, only those read or written (SPEED, POS), not commands or block words."""
     found = []
     for name, keyword in database().keywords.items():
-        if keyword.kind is KeywordKind.COMMAND_LINE or (keyword.controllers and controller not in keyword.controllers):
+        if keyword.kind is KeywordKind.COMMAND_LINE:
             continue
-        attributes = keyword.attributes_for(controller)
-        if not values or (attributes is not None and (attributes.read or attributes.write)):
+        if controller is not None and keyword.controllers and controller not in keyword.controllers:
+            continue
+        rows = keyword.attributes if controller is None else (keyword.attributes_for(controller),)
+        if not values or any(row is not None and (row.read or row.write) for row in rows):
             found.append(name)
     return tuple(found)
 
 
 @cache
-def keyword_like(word: str, controller: Controller, *, values: bool = False) -> str | None:
-    """The keyword of ``controller`` that ``word`` (upper case) is most likely a misspelling of; with
-    ``values``, a keyword that holds a value, for a word used as a variable."""
+def keyword_like(word: str, controller: Controller | None, *, values: bool = False) -> str | None:
+    """The keyword of ``controller`` (any, when None) that ``word`` (upper case) is most likely a misspelling
+    of; with ``values``, a keyword that holds a value, for a word used as a variable."""
     return _OTHER_BASICS.get(word) or closest(word, _keywords_of(controller, values=values))
+
+
+def not_a_keyword(word: str, meant: str | None) -> str:
+    """Error 3007's detail for ``word``, with the keyword ``meant`` if it resembles one."""
+    hint = did_you_mean(meant) if meant is not None else "check the spelling and the abbreviation"
+    return f"'{word}' is not a keyword ({hint})"
 
 
 def did_you_mean(word: str) -> str:

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from functools import cached_property
 
 from mintlang.allocation import collector_paused, without_collector
-from mintlang.analysis.suggestions import closest, did_you_mean
+from mintlang.analysis.suggestions import keyword_like, not_a_keyword
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import mint_error
 from mintlang.diagnostics import Diagnostic, Fix, LineIndex
@@ -195,15 +195,21 @@ def _parse_group(
     diagnostics: list[Diagnostic] = []
     result = parse_kinds(tuple(line.kinds), dialect)
     if isinstance(result, ParseFailure):
-        label, statements = _recover(line, words, dialect, result, diagnostics)
+        _, controller, _, _ = content
+        label, statements = _recover(line, words, dialect, result, diagnostics, controller)
     else:
         label, statements = result(line, words)
     syntax = n.LineSyntax(group.text, line.span, label, statements)
     return _ParsedLine(syntax, content, tuple(diagnostics), tuple(defined), tuple(expansions))
 
 
-def _recover(
-    line: LogicalLine, words: Vocabulary, dialect: Dialect, failure: ParseFailure, diagnostics: list[Diagnostic]
+def _recover(  # noqa: PLR0917 - the line, its reading, and where the findings go
+    line: LogicalLine,
+    words: Vocabulary,
+    dialect: Dialect,
+    failure: ParseFailure,
+    diagnostics: list[Diagnostic],
+    controller: Controller | None,
 ) -> tuple[n.Name | None, tuple[n.Statement, ...]]:
     """Parse the ``:``-separated statements of a failing line one at a time."""
     kinds = line.kinds
@@ -227,7 +233,7 @@ def _recover(
         span = shared_span(line.starts[begin], line.ends[end - 1])
         broken = kinds[begin:end]
         statements.append(n.SyntaxError_(span, _opened_block(broken), _closing_word(broken)))
-        issue = _misspelt_keyword(line, begin, words) or _describe(line, begin, end, result)
+        issue = _misspelt_keyword(line, begin, result, words, controller) or _describe(line, begin, end, result)
         if issue is not None:
             diagnostics.append(issue)
     if not statements and failure.index < len(kinds) and kinds[failure.index] is _K.LABEL:
@@ -289,18 +295,27 @@ def _slice(line: LogicalLine, begin: int, end: int) -> LogicalLine:
 _error = mint_error
 
 
-def _misspelt_keyword(line: LogicalLine, begin: int, words: Vocabulary) -> Diagnostic | None:
-    """MintMT's ``VECTRR(0,1) = 10, 10``: a name that is no keyword, with a keyword's brackets, is a misspelt
-    keyword when it is close to one (3007, as ``VECTRR[0,1]`` is in v4), not an array with two indices."""
+def _misspelt_keyword(
+    line: LogicalLine, begin: int, failure: ParseFailure, words: Vocabulary, controller: Controller | None
+) -> Diagnostic | None:
+    """A statement that starts with a name the grammar cannot go on from is a misspelt command (``PRNT "a"``,
+    ``PAUS IDLE.0``): error 3007 at the name, as the name alone is, with the keyword it resembles. So is, in
+    MintMT, a name close to a keyword with a keyword's brackets (``VECTRR(0,1) = 10, 10``, as ``VECTRR[0,1]``
+    is in v4), rather than an array with two indices."""
     kinds = line.kinds
-    if words.dialect is not Dialect.MINTMT or kinds[begin : begin + 2] != [_K.NAME, _K.LPAR]:
+    if not words.dialect.modern or kinds[begin] is not _K.NAME:
+        return None
+    command = failure.index == 1 and begin + 1 < len(kinds)
+    bracketed = words.dialect is Dialect.MINTMT and kinds[begin + 1 : begin + 2] == [_K.LPAR]
+    if not (command or bracketed):
         return None
     written = line.texts[begin]
-    meant = closest(written.upper(), set(words.canonical.values()))
-    if meant is None:
-        return None
+    meant = keyword_like(written.upper(), controller)
     span = line.token_span(begin)
-    return _error(3007, span, f"'{written}' is not a keyword; {did_you_mean(meant)}", fixes=(Fix.replace(span, meant),))
+    if meant is None and not command:
+        return None
+    fixes = (Fix.replace(span, meant),) if meant is not None else ()
+    return _error(3007, span, not_a_keyword(written, meant), fixes=fixes)
 
 
 def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) -> Diagnostic | None:

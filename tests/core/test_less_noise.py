@@ -63,6 +63,10 @@ def test_a_v3_keyword_used_twice_on_a_line_is_renamed_on_the_whole_line() -> Non
         pytest.param("PAUSE IDEL.0\n", "IDEL", "IDLE", id="two-letters-swapped"),
         # other BASICs end WHILE with WEND; Mint with ENDW (v4 guide §3.7.3), not END
         pytest.param("DIM i\nWHILE i < 3\n  i = i + 1\nWEND\nPRINT i\n", "WEND", "ENDW", id="another-basic"),
+        # a misspelt command with its arguments: the grammar stops after the name, which is the mistake
+        pytest.param('PRNT "hello"\n', "PRNT", "PRINT", id="a-command-with-a-string"),
+        pytest.param("PAUS IDLE.0\n", "PAUS", "PAUSE", id="a-command-with-a-keyword"),
+        pytest.param("GOSUBB there\nEND\n#there\nRETURN\n", "GOSUBB", "GOSUB", id="a-command-with-a-label"),
     ],
 )
 def test_a_misspelt_keyword_is_offered_the_keyword(source: str, word: str, keyword: str) -> None:
@@ -77,6 +81,13 @@ def test_a_misspelt_keyword_is_offered_the_keyword(source: str, word: str, keywo
 def test_a_word_like_no_keyword_gets_no_suggestion() -> None:
     (error,) = coded("QWXZ.1 = 2\n", "E3007")
     assert "did you mean" not in error.message and error.fixes == ()
+
+
+def test_a_name_used_as_a_command_is_an_unknown_keyword_at_the_name() -> None:
+    source = 'QWXZ "label"\n'
+    (error,) = coded(source, "E3007")
+    assert source[error.span.start : error.span.end] == "QWXZ" and error.fixes == ()
+    assert coded(source, "E2003") == []
 
 
 def test_an_undeclared_name_like_a_keyword_that_holds_a_value_is_offered_it_beside_the_dim() -> None:

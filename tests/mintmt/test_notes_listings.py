@@ -45,6 +45,6 @@ def test_the_notes_misprints_get_a_did_you_mean_with_a_fix() -> None:
     analysis = mintlang.check_application("VECTRR(0,1) = 10, 10\nCIRCLR(0,1) = -5, 5, 180\n", dialect="mintmt")
     messages = [(d.code, d.message.split(": ", 1)[1], d.fixes[0].title) for d in analysis.program]
     assert messages == [
-        ("E3007", "'VECTRR' is not a keyword; did you mean 'VECTORR'?", "Replace with VECTORR"),
-        ("E3007", "'CIRCLR' is not a keyword; did you mean 'CIRCLER'?", "Replace with CIRCLER"),
+        ("E3007", "'VECTRR' is not a keyword (did you mean 'VECTORR'?)", "Replace with VECTORR"),
+        ("E3007", "'CIRCLR' is not a keyword (did you mean 'CIRCLER'?)", "Replace with CIRCLER"),
     ]

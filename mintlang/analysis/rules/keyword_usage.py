@@ -18,7 +18,7 @@ from functools import cache
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.rules.v3_keywords import successor
-from mintlang.analysis.suggestions import did_you_mean, keyword_like
+from mintlang.analysis.suggestions import keyword_like, not_a_keyword
 from mintlang.analysis.traversal import LineScope, Use
 from mintlang.controllers import profile
 from mintlang.diagnostics import Fix, Span
@@ -58,9 +58,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
 
 def _not_a_keyword(word: str, controller: Controller) -> str:
     """Error 3007's detail, with the keyword ``word`` resembles if one does."""
-    meant = keyword_like(word.upper(), controller)
-    hint = did_you_mean(meant) if meant is not None else "check the spelling and the abbreviation"
-    return f"'{word}' is not a keyword ({hint})"
+    return not_a_keyword(word, keyword_like(word.upper(), controller))
 
 
 def _spelling_fix(word: str, controller: Controller, span: Span) -> tuple[Fix, ...]:

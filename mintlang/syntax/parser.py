@@ -257,8 +257,14 @@ _CLOSING_WORDS = frozenset({_K.NEXT, _K.ENDIF, _K.ENDW, _K.ENDL, _K.UNTIL, _K.EN
 
 
 def _closing_word(kinds: list[TokenKind]) -> str | None:
-    """The closer a broken statement still is (``NEXT a``), so its block is not reported unclosed as well."""
+    """The closer a broken statement still is (``NEXT a``, ``End While`` for ENDW), so its block is not
+    reported unclosed as well."""
+    if kinds[:2] == _END_WHILE:
+        return _K.ENDW.value
     return kinds[0].value if kinds[0] in _CLOSING_WORDS else None
+
+
+_END_WHILE = [_K.END, _K.WHILE]  # other BASICs' closer of WHILE, which Mint writes ENDW (MintMT too: MT-23)
 
 
 def _segments(kinds: list[TokenKind], start: int) -> list[tuple[int, int]]:
@@ -342,6 +348,11 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) ->
         return _error(2007, span, f"found {found}")
     if segment[0] is _K.FOR and "TO" in expected:
         return _error(2008, span, f"found {found}")
+    if segment[:2] == _END_WHILE:
+        words = shared_span(line.starts[begin], line.ends[begin + 1])
+        fixes = (Fix.replace(words, "ENDW"),)
+        written = f"{line.texts[begin]} {line.texts[begin + 1]}"
+        return _error(2003, words, f"a WHILE loop ends with ENDW, not {written}", fixes=fixes)
     if segment[0] is _K.DIM:  # DIM of a keyword is a syntax error (DIM, 000:9189-9192), whichever kind it lexes as
         named = index if index == begin + 1 and not at_end else index - 1
         if named > begin and kinds[named] in _KEYWORD_KINDS:

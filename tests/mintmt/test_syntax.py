@@ -112,3 +112,16 @@ def test_only_comms_locations_1_to_5_raise_an_event_and_each_event_has_one_block
         ("E2003", f"Syntax error: Comms9 is no event ({EVENTS})"),
         ("E2003", "Syntax error: a second Event COMMS1 block: the event's handler is the block of line 3"),
     ]
+
+
+def test_end_while_is_no_closer_but_is_told_the_closer_it_stands_for() -> None:
+    # MT-23: neither the notes nor the v4 guide show End While; WHILE ends with ENDW (v4 guide §3.7.3)
+    source = "Dim i\nWhile i < 3\n  i = i + 1\nEnd While\nPrint i\n"
+    (error,) = mintlang.check(source, dialect="mintmt")
+    assert (error.code, source[error.span.start : error.span.end]) == ("E2003", "End While")
+    assert error.message.endswith("a WHILE loop ends with ENDW, not End While")
+    (fix,) = error.fixes
+    (edit,) = fix.edits
+    fixed = source[: edit.span.start] + edit.text + source[edit.span.end :]
+    assert fixed == "Dim i\nWhile i < 3\n  i = i + 1\nENDW\nPrint i\n"
+    assert mintlang.check(fixed, dialect="mintmt") == []

@@ -71,7 +71,9 @@ class Application:
             controller=self.controller,
             dialect=self.dialect,
             scenario=self.scenario,
-            limits=Limits(until_ms=self.until_ms, max_wall_s=None),  # the user's pauses are not the program's time
+            # the user's pauses are not the program's time; each tick a statement runs in is processed whole,
+            # so the machine shown where the program stops is up to date (ticks run alone would leave it behind)
+            limits=Limits(until_ms=self.until_ms, max_wall_s=None, program_alone=False),
             echo=echo,
             on_tick=on_tick,
             on_start=on_start,

@@ -1,6 +1,6 @@
 """The interpreter: runs compiled statements in slices between servo ticks.
 
-A program is a flat list of operations (closures built once by the compiler);
+A program is a flat list of operations (functions built once by the compiler);
 each returns ``True`` when it has to block, and is then retried in a later
 slice. Control flow is the program counter ``pc``, the GOSUB/event frame stack
 and the loop stack, which also enforce the controller's nesting limits (error

@@ -33,17 +33,30 @@ class SymbolKind(StrEnum):
 
 
 _BARE, _DECLARE, _WRITE = NameUse.BARE, NameUse.DECLARE, NameUse.WRITE
+_new = tuple.__new__  # builds Span without its Python-level constructor
 
 
 @node
 class Occurrence:
-    """One place a name is written."""
+    """One place a name is written: ``relative`` is its span in the line that starts at ``origin``.
+
+    A name written in a line keeps the span of its node, which equal spans share, and the
+    line's offset: a span and two integers of its own per name written were a twentieth of
+    a check's memory. Made from a span in the file, ``origin`` is 0.
+    """
 
     unit: Unit
-    span: Span
+    relative: Span
     spelling: str
     declared_before: bool  # the name was declared earlier in compile order
     is_write: bool = False
+    origin: int = 0
+
+    @property
+    def span(self) -> Span:
+        """Where it is in its file."""
+        relative, origin = self.relative, self.origin
+        return _new(Span, (relative.start + origin, relative.end + origin)) if origin else relative
 
 
 @dataclass(slots=True)
@@ -125,8 +138,8 @@ class _Collector:
     def _label(self, labels: dict[str, Symbol], name: n.Name, unit: Unit) -> Symbol:
         return labels.setdefault(name.identity, Symbol(SymbolKind.LABEL, name.identity, unit))
 
-    def declare(self, name: n.Name, span: Span, unit: Unit, size: n.Expression | None, *, array: bool = False) -> None:
-        """A DIM, or in v3 the first write; ``array`` for an implicit v3 array written as name(i)."""
+    def declare(self, name: n.Name, origin: int, unit: Unit, size: n.Expression | None, *, array: bool = False) -> None:
+        """A DIM, or in v3 the first write, in the line at ``origin``; ``array`` for an implicit v3 array (name(i))."""
         kind = SymbolKind.ARRAY if size is not None or array else SymbolKind.VARIABLE
         symbol = self.variables.get(name.identity)
         declared = symbol is not None and bool(symbol.definitions)
@@ -136,33 +149,32 @@ class _Collector:
             symbol.kind = SymbolKind.ARRAY
         if isinstance(size, n.Number) and size.value == int(size.value):
             symbol.array_size = int(size.value)
-        symbol.definitions.append(Occurrence(unit, span, name.text, declared, is_write=True))
+        symbol.definitions.append(Occurrence(unit, name.span, name.text, declared, True, origin))
 
     def uses(self, unit: Unit, line: n.PlacedLine, events: tuple[NameEvent, ...]) -> None:
         """What one line does with names: declarations and references, in order.
 
         One loop for the line rather than a call per name: every check runs it for every name.
         """
-        variables, origin, new = self.variables, line.origin, tuple.__new__
+        variables, origin = self.variables, line.origin
         for event in events:
             kind = event.use
             if kind is _BARE:
                 continue
             name = event.name
-            span = new(Span, (name.span.start + origin, name.span.end + origin))  # line.span(), inlined: per name
             if kind is _DECLARE:
-                self.declare(name, span, unit, event.size)
+                self.declare(name, origin, unit, event.size)
                 continue
             write = kind is _WRITE
             identity = n.identity(name.text)
             symbol = variables.get(identity)
             if symbol is None:
                 if write and self.implicit_declarations:
-                    self.declare(name, span, unit, None, array=event.element)
+                    self.declare(name, origin, unit, None, array=event.element)
                     continue
                 kind_of = SymbolKind.ARRAY if event.element else SymbolKind.VARIABLE
                 symbol = variables[identity] = Symbol(kind_of, identity, unit)
-            symbol.references.append(Occurrence(unit, span, name.text, bool(symbol.definitions), write))
+            symbol.references.append(Occurrence(unit, name.span, name.text, bool(symbol.definitions), write, origin))
 
 
 def build_symbols(

@@ -79,3 +79,12 @@ def test_checking_on_several_controllers_one_after_another_gives_each_its_own_fi
     for controller in [*mintlang.Controller, *reversed(mintlang.Controller)]:
         codes = [d.code for d in mintlang.check(source, controller=controller)]
         assert codes == (["E0002"] if controller in one_axis else [])
+
+
+def test_an_occurrence_is_where_its_name_is_written_in_the_file() -> None:
+    source = "DIM total\nREM add\ntotal = total + 1\n"
+    model = mintlang.build_model(mintlang.parse(source))
+    symbol = model.symbols.variables["TOTAL"]
+    spans = [occurrence.span for occurrence in symbol.occurrences()]
+    assert sorted(spans) == [Span(4, 9), Span(18, 23), Span(26, 31)]  # a write is recorded after its value
+    assert {source[span.start : span.end] for span in spans} == {"total"}

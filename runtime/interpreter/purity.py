@@ -9,10 +9,11 @@ event handler too) are not. On ticks where nothing else can change, the
 simulator runs pure statements without the rest of the tick's work
 (``Simulator.run``), 20 a tick as ever.
 
-A pure statement that fails has changed nothing when it raises, so it can be
-run again in a tick processed whole, to fail there with the whole machine
-up to date. ``FOR`` sets its variable before it pushes its loop, which may
-overflow the stack, so it is left out.
+A pure statement that fails can be run again in a tick processed whole, to
+fail there with the whole machine up to date: it has changed nothing when it
+raises, or, for ``FOR`` (which sets its variable before it pushes its loop,
+and that may overflow the stack), it sets the variable to the same value again
+unless its start, limit or step reads the variable itself, which makes it not pure.
 """
 
 from __future__ import annotations
@@ -38,7 +39,20 @@ def is_pure(statement: n.Statement, functions: Mapping[str, object]) -> bool:
         return all(_reads_nothing(value, functions) for value in statement.values)  # type: ignore[union-attr]
     if kind is n.BlockWord:
         return statement.word in _PURE_WORDS  # type: ignore[union-attr]
+    if kind is n.For:
+        return _for_repeats(statement, functions)  # type: ignore[arg-type]
     return kind is n.Jump or kind is n.Define
+
+
+def _for_repeats(statement: n.For, functions: Mapping[str, object]) -> bool:
+    """Whether the FOR reads nothing outside the interpreter, nor its own variable (run again, it does the same)."""
+    variable = statement.variable.identity
+    bounds = (statement.start, statement.end, *((statement.step,) if statement.step is not None else ()))
+    return all(
+        _reads_nothing(bound, functions)
+        and not any(type(part) is n.VariableRef and part.name.identity == variable for part in n.walk_expression(bound))  # type: ignore[union-attr]
+        for bound in bounds
+    )
 
 
 def _reads_nothing(expression: n.Expression, functions: Mapping[str, object]) -> bool:

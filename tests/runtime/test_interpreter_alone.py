@@ -10,6 +10,11 @@ and ``simulate`` checks that stepping every tick whole gives the same.
 
 from __future__ import annotations
 
+import pytest
+
+import mintlang
+from mintlang.runtime.interpreter.purity import is_pure
+from mintlang.runtime.numbers import FUNCTIONS
 from mintlang.runtime.run import run_source
 from mintlang.runtime.simulation import Limits
 
@@ -56,3 +61,35 @@ def test_a_debugger_that_shows_the_machine_at_each_statement_can_have_every_tick
     result = run_source(COUNTING, limits=limits, on_tick=lambda controller, tick: processed.append(tick))
     assert result.terminal == "100\n"
     assert processed == list(range(101))
+
+
+def test_nested_for_loops_run_alone_with_twenty_statements_a_tick() -> None:
+    source = "DIM i\nDIM j\nDIM s\nFOR i = 1 TO 10\n  FOR j = 1 TO 10\n    s = s + 1\n  NEXT\nNEXT\nPRINT TIME\n"
+    # 3 DIMs and the outer FOR, then 10 passes of the inner FOR, 10 x (s = s + 1, NEXT) and the outer
+    # NEXT (22 statements): PRINT is statement 224, in tick 224 // 20 = 11
+    processed: list[int] = []
+    result = run_source(source, limits=Limits(), on_tick=lambda controller, tick: processed.append(tick))
+    assert result.terminal == "11\n"
+    assert processed == [0, 11]  # the inner FOR, whose bounds read no loop variable, runs alone too
+    assert simulate(source).terminal == "11\n"
+
+
+@pytest.mark.parametrize(
+    ("line", "alone"),
+    [
+        ("FOR i = 1 TO n STEP 2", True),
+        ("FOR i = i + 1 TO 100", False),  # run again after a failure, it would start from another value
+        ("FOR i = 1 TO a(i)", False),
+        ("FOR i = 1 TO POS.0", False),  # a keyword: its tick is processed whole
+        ("a = SQRT(b) * c(2) - 1", True),
+        ("a = IN.3", False),
+        ("IF a > 3 THEN b = 0", True),
+        ("PRINT a", False),
+        ("RETURN", False),  # ends an event handler too
+        ("GOSUB sub", True),
+    ],
+)
+def test_which_statements_may_run_alone(line: str, alone: bool) -> None:
+    document = mintlang.parse(f"DIM a(5)\nDIM c(5)\n{line}\n#sub\nRETURN\n")
+    statement = document.placed[2].syntax.statements[0]
+    assert is_pure(statement, FUNCTIONS) is alone

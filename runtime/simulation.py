@@ -195,7 +195,7 @@ class Simulator:
         c = self.c
         vm = c.vm
         pc = vm.pc
-        if vm.blocked or vm.stopped is not None or pc >= len(vm.pure) or not vm.pure[pc] or self._busy():
+        if vm.stopped is not None or pc >= len(vm.pure) or not vm.pure[pc] or self._busy():
             return t + 1
         quiet = min(self._next_change_besides_the_program(t, until), t + WALL_CHECK_EVERY)
         tick = t + 1
@@ -241,7 +241,7 @@ class Simulator:
                     break
                 if limits.every_tick:
                     following = t + 1
-                elif following == t + 1 and limits.program_alone and not limits.realtime:
+                elif following == t + 1 and not vm.blocked and limits.program_alone and not limits.realtime:
                     following = self._interpreter_alone(t, until)
                     processed += following - t - 1  # the ticks the program ran alone
                 if following > until:

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from functools import cached_property
 
 from mintlang.allocation import collector_paused, without_collector
-from mintlang.analysis.suggestions import keyword_like, not_a_keyword
+from mintlang.analysis.suggestions import closest, keyword_like, not_a_keyword
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import mint_error
 from mintlang.diagnostics import Diagnostic, Fix, LineIndex
@@ -309,14 +309,17 @@ def _misspelt_keyword(
     MintMT, a name close to a keyword with a keyword's brackets (``VECTRR(0,1) = 10, 10``, as ``VECTRR[0,1]``
     is in v4), rather than an array with two indices."""
     kinds = line.kinds
-    if not words.dialect.modern or kinds[begin] is not _K.NAME:
+    if kinds[begin] is not _K.NAME:
         return None
     command = failure.index == 1 and begin + 1 < len(kinds)
     bracketed = words.dialect is Dialect.MINTMT and kinds[begin + 1 : begin + 2] == [_K.LPAR]
     if not (command or bracketed):
         return None
     written = line.texts[begin]
-    meant = keyword_like(written.upper(), controller)
+    if words.dialect.modern:
+        meant = keyword_like(written.upper(), controller)
+    else:  # Mint v3 has keywords of its own
+        meant = closest(written.upper(), set(words.canonical.values()))
     span = line.token_span(begin)
     if meant is None and not command:
         return None

@@ -13,14 +13,13 @@ from dataclasses import dataclass
 from functools import cache
 
 from mintlang.allocation import without_collector
-from mintlang.analysis.findings import Finding
 from mintlang.analysis.rules import RULES, Rule
 from mintlang.analysis.suppression import suppress
 from mintlang.analysis.traversal import LineScope, gather
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import DEFAULT_SELECT
 from mintlang.controllers import ControllerProfile
-from mintlang.diagnostics import Diagnostic
+from mintlang.diagnostics import Diagnostic, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.semantic.index import LineFacts
@@ -93,39 +92,53 @@ def _findings_of_line(
     return found
 
 
+def _by_position(diagnostic: Diagnostic) -> tuple[Span, str]:
+    return diagnostic.span, diagnostic.code
+
+
+def _first_of_each(diagnostics: Iterable[Diagnostic]) -> list[Diagnostic]:
+    """The diagnostics in position order, the first found of each code at each span only.
+
+    Sorted first (a stable sort keeps the order found among equals), so equal ones are
+    neighbours: no set of every position, which took more memory than the diagnostics
+    themselves on a file of broken lines.
+    """
+    distinct: list[Diagnostic] = []
+    last: tuple[Span, str] | None = None
+    for diagnostic in sorted(diagnostics, key=_by_position):
+        place = (diagnostic.span, diagnostic.code)
+        if place != last:
+            distinct.append(diagnostic)
+            last = place
+    return distinct
+
+
 @without_collector
 def analyse(model: SemanticModel, *, select: Iterable[str] | None = None, ignore: Iterable[str] = ()) -> Analysis:
     """All diagnostics of an application, per file, sorted by position."""
     select = tuple(select) if select is not None else None
     ignore = tuple(ignore)
-    findings: list[Finding] = []
+    found: dict[Unit, list[Diagnostic]] = {Unit.PROGRAM: [], Unit.CONFIGURATION: []}  # per file, as found
     for unit, document in model.documents():
-        findings.extend(Finding(unit, diagnostic) for diagnostic in document.diagnostics)
-        findings.extend(Finding(unit, diagnostic) for diagnostic in model.structures[unit].diagnostics)
+        found[unit].extend(document.diagnostics)
+        found[unit].extend(model.structures[unit].diagnostics)
     dialect, controller = model.program.dialect, model.controller
     caches = {unit: _findings_cache((unit, controller.controller, dialect)) for unit in Unit}
     for unit, line, facts in model.lines:
-        found = _findings_of_line(caches[unit], unit, line, facts, controller=controller, dialect=dialect)
-        if found:
-            findings.extend(Finding(unit, diagnostic.shifted(line.origin)) for diagnostic in found)
+        in_line = _findings_of_line(caches[unit], unit, line, facts, controller=controller, dialect=dialect)
+        if in_line:
+            found[unit].extend(diagnostic.shifted(line.origin) for diagnostic in in_line)
     facts = gather(model)
     for rule in _rules_for(dialect)[1]:
-        findings.extend(rule.check(facts))  # type: ignore[misc]
-    per_unit: dict[Unit, list[Diagnostic]] = {Unit.PROGRAM: [], Unit.CONFIGURATION: []}
-    seen: set[tuple[Unit, str, int, int]] = set()
-    for finding in findings:
-        diagnostic = finding.diagnostic
-        key = (finding.unit, diagnostic.code, diagnostic.span.start, diagnostic.span.end)
-        if key in seen or not _selected(diagnostic.code, select, ignore):
-            continue
-        seen.add(key)
-        per_unit[finding.unit].append(diagnostic)
+        for finding in rule.check(facts):  # type: ignore[misc]
+            found[finding.unit].append(finding.diagnostic)
 
     def selected(code: str) -> bool:
         return _selected(code, select, ignore)
 
+    per_unit: dict[Unit, list[Diagnostic]] = {}
     for unit, document in model.documents():
-        per_unit[unit] = suppress(per_unit[unit], document, selected)
-    for diagnostics in per_unit.values():
-        diagnostics.sort(key=lambda d: (d.span.start, d.span.end, d.code))
+        distinct = _first_of_each(diagnostic for diagnostic in found[unit] if selected(diagnostic.code))
+        per_unit[unit] = sorted(suppress(distinct, document, selected), key=_by_position)
+    per_unit.setdefault(Unit.CONFIGURATION, [])
     return Analysis(model, tuple(per_unit[Unit.PROGRAM]), tuple(per_unit[Unit.CONFIGURATION]))

@@ -115,16 +115,6 @@ class MintProtocol(LspProtocol):
         """A body that is not JSON: ``ParseError``, with a null id as nothing of it can be read."""
         self._refuse(None, JsonRpcParseError(f"{JsonRpcParseError.MESSAGE}: {error}"))
 
-
-class ParseErrorsInOneLine(logging.Filter):
-    """pygls logs a body that is not JSON with its traceback; the error is the client's, one line says it."""
-
-    def filter(self, record: logging.LogRecord) -> bool:
-        if record.exc_info is not None and isinstance(record.exc_info[1], UNREADABLE):
-            record.msg, record.args = "unreadable message: %s", (record.exc_info[1],)
-            record.exc_info, record.exc_text = None, None
-        return True
-
     def _execute_handler(
         self,
         msg_id: Any,
@@ -168,3 +158,13 @@ class ParseErrorsInOneLine(logging.Filter):
             if msg_id != current and isinstance(future, Future):
                 future.cancel()
         return (yield from super().lsp_shutdown(*args))
+
+
+class ParseErrorsInOneLine(logging.Filter):
+    """pygls logs a body that is not JSON with its traceback; the error is the client's, one line says it."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        if record.exc_info is not None and isinstance(record.exc_info[1], UNREADABLE):
+            record.msg, record.args = "unreadable message: %s", (record.exc_info[1],)
+            record.exc_info, record.exc_text = None, None
+        return True

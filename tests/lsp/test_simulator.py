@@ -130,7 +130,8 @@ async def test_a_client_that_cannot_show_a_document_gets_the_output_in_the_messa
 @pytest.mark.asyncio
 async def test_cancelling_the_command_request_stops_the_run(client: LanguageClient, tmp_path: Path) -> None:
     program = tmp_path / "forever.mnt"
-    program.write_text("DIM n = 0\nLOOP\n  n = n + 1\nENDL\n", encoding="utf-8")
+    # each pass reads an input, so every tick is simulated whole: ten minutes take long enough to cancel
+    program.write_text("DIM n = 0\nLOOP\n  n = n + IN0\nENDL\n", encoding="utf-8")
     params = types.ExecuteCommandParams(command="mint.simulateFile", arguments=[uri_of(program)])
     before = set(client.protocol._request_futures)
     answer = client.protocol.send_request(types.WORKSPACE_EXECUTE_COMMAND, params)

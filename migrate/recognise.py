@@ -8,7 +8,11 @@ the two apart is a form v3 could not have written:
 * a scalar ``DIM``: v3's DIM declares arrays only (v3:7304), v4 wants every
   variable declared (v4:897-910), and the migrator declares each one it finds;
 * a v4 keyword that v3 did not have (``HOMESPEED``, ``POSTARGET``), as the v4 reader
-  sees it;
+  sees it, unless the v3 reader would take it for a user variable: assigned and read, and
+  only ever written as a plain name (``homespeed = 0`` ... ``PRINT homespeed``). One with
+  an axis or channel (``HOMESPEED.0``), as a command, read and never assigned (v3 declares
+  a variable by its first assignment and rejects reading one it has not, v3:1352-1367,
+  v3:1425-1429) or only assigned (what the migrator writes for a v3 ``HMSPEED = 10``) shows v4;
 * a note the migrator wrote (``REM … removed by mint-migrate``).
 
 So an application is taken as Mint v4 when the rewrite rules find nothing to
@@ -20,10 +24,12 @@ original, and is migrated as one: the notes come back rather than being lost.
 from __future__ import annotations
 
 import re
-from collections.abc import Mapping
+from collections import defaultdict
+from collections.abc import Iterable, Mapping
 
 import mintlang
 from mintlang.keyworddb import database
+from mintlang.semantic.index import KeywordUse, Use
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
@@ -43,4 +49,22 @@ def shows_v4(texts: Mapping[Unit, str], controller: str) -> bool:
     model = mintlang.build_model(program, configuration, controller)
     if any(isinstance(statement, n.Dim) and statement.size is None for _, _, statement in model.index.statements):
         return True
-    return any(database().lookup_v3(use.keyword.keyword) is None for use in model.index.keyword_uses)
+    return _v4_only_keyword(model.index.keyword_uses)
+
+
+def _v4_only_keyword(uses: Iterable[KeywordUse]) -> bool:
+    """Whether a keyword v3 did not have is used other than as a v3 user variable would be:
+    a read counts as a variable's only outside the name's own assignments (``x = x | 128``
+    reads ``x`` before v3 declares it, and is what the migrator writes for input modes)."""
+    v4_only = [use for use in uses if database().lookup_v3(use.keyword.keyword) is None]
+    assigning = {(use.keyword.keyword, id(use.statement)) for use in v4_only if use.use is Use.WRITE}
+    forms: dict[str, set[Use | None]] = defaultdict(set)
+    for use in v4_only:
+        own_assignment = use.use is Use.READ and (use.keyword.keyword, id(use.statement)) in assigning
+        forms[use.keyword.keyword].add(use.use if _plain(use) and not own_assignment else None)
+    return any(found != {Use.READ, Use.WRITE} for found in forms.values())
+
+
+def _plain(use: KeywordUse) -> bool:
+    """Whether the keyword is written as a plain name read or assigned, as a variable is."""
+    return use.keyword.selector is None and use.keyword.channel is None and use.use in (Use.READ, Use.WRITE)

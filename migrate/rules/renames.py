@@ -13,9 +13,16 @@ from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.migrate.context import LABEL, Context, FileView, constant_tag
 from mintlang.migrate.model import Phase, RuleClass
+from mintlang.migrate.recognise import shows_v4
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.migrate.rules.spelling import like
-from mintlang.migrate.rules.vocabulary import is_migrator_read, is_reserved_user_name, unique_rename
+from mintlang.migrate.rules.vocabulary import (
+    is_assigned_and_read,
+    is_migrator_read,
+    is_reserved_user_name,
+    is_v4_word,
+    unique_rename,
+)
 from mintlang.semantic.events import EventKind, event_of
 from mintlang.semantic.symbols import Symbol
 from mintlang.semantic.units import Unit
@@ -163,31 +170,38 @@ class RenameReservedNames(Rule):
     """A user variable or array named like a v4 keyword or abbreviation (``node``, ``view``,
     ``kp``) is renamed everywhere: v4 reserves those words (error 2006).
 
-    The new name keeps the ten significant characters unique. Names the migrator
-    itself writes as v4 keywords (KPROP, AXISMODE ..., a NODE that is only read) are not
-    user names.
+    The new name keeps the ten significant characters unique. It runs with the abbreviations,
+    before any rule has written a v4 keyword, so a v3 ``homespeed`` that is assigned and read is
+    the user's variable (v3 had HMSPEED, v4:98). Where the application shows v4 (a second run on
+    the migrator's output) or one is only assigned, the names the migrator writes (KPROP,
+    HOMESPEED ..., a NODE that is only read) are its keywords (see ``vocabulary``).
     """
 
     id = "M-IDENT"
     rule_class = RuleClass.MECHANICAL
-    phase = Phase.RENAMES
+    phase = Phase.ABBREVIATIONS
     summary = "user variable named like a v4 keyword/abbreviation (node, view, kp ...) -> renamed everywhere"
     evidence = "spec M-IDENT; v4:882-890, v4:18940-18943 (#2006)"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        if not any(map(is_reserved_user_name, context.spellings(context.names(_maybe_reserved)))):
+        if not any(map(is_v4_word, context.spellings(context.names(_maybe_reserved)))):
             return  # the usual case: the symbol table (the semantic model) is not needed
+        texts = {unit: file.text for unit, file in context.files.items()}
+        v4 = shows_v4(texts, context.controller.controller)
         variables = context.model.symbols.variables
         taken = set(variables)
         for symbol in variables.values():
-            if is_reserved_user_name(symbol.name) and not is_migrator_read(symbol):
+            users = is_reserved_user_name(symbol.name) or (
+                not v4 and is_v4_word(symbol.name) and is_assigned_and_read(symbol)
+            )
+            if users and not is_migrator_read(symbol):
                 yield from _rename_symbol(self, context.files, symbol, taken)
 
 
 def _maybe_reserved(name: str) -> bool:
     """Whether a user name of this identity may be a v4 word: a longer name shares the first ten
     characters of its identity, so those are not known."""
-    return len(name) >= n.SIGNIFICANT_CHARACTERS or is_reserved_user_name(name)
+    return len(name) >= n.SIGNIFICANT_CHARACTERS or is_v4_word(name)
 
 
 def _rename_symbol(rule: Rule, files: Mapping[Unit, FileView], symbol: Symbol, taken: set[str]) -> Iterator[Action]:

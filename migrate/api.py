@@ -5,7 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping
 from dataclasses import replace
 
+from mintlang.detection import detect_dialect
 from mintlang.diagnostics import Edit, Span
+from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.migrate import engine
 from mintlang.migrate.context import Context
@@ -61,13 +63,17 @@ def migrate(
 ) -> MigrationResult:
     """Migrate a v3 program (and its configuration file, whose result is ``.configuration``);
     ``only``/``skip``/``opt_in`` choose the rules as ``select`` does. An application already
-    in Mint v4 comes back as it was, ``already_v4`` set (see ``recognise``). Raises
-    ``MigrationFailed`` when a rule fails."""
+    in Mint v4 comes back as it was, ``already_v4`` set (see ``recognise``), and one that shows a
+    form only MintMT has (``mintlang.detection``) too, ``already_mintmt`` set: read as v3, each of
+    its ``'`` comments would be flagged. Raises ``MigrationFailed`` when a rule fails."""
     texts = {Unit.PROGRAM: source}
     if config is not None:
         texts = {Unit.CONFIGURATION: config, **texts}
     marks = {unit: _BOM if text.startswith(_BOM) else "" for unit, text in texts.items()}
     texts = {unit: text.removeprefix(marks[unit]) for unit, text in texts.items()}
+    if any(detect_dialect(text) is Dialect.MINTMT for text in texts.values()):
+        kept = {unit: engine.untouched(text) for unit, text in texts.items()}
+        return _application({unit: _result(outcome, marks[unit], mintmt=True) for unit, outcome in kept.items()})
     target = str(Controller(controller))
     chosen = select(only, skip, opt_in)
     outcomes = engine.run(texts, chosen, target)
@@ -76,7 +82,11 @@ def migrate(
         v4 = _rewrite_free(engine.run(texts, select(), target))
     if v4:
         outcomes = {unit: engine.untouched(text) for unit, text in texts.items()}
-    results = {unit: _result(outcome, marks[unit], v4) for unit, outcome in outcomes.items()}
+    return _application({unit: _result(outcome, marks[unit], v4=v4) for unit, outcome in outcomes.items()})
+
+
+def _application(results: Mapping[Unit, MigrationResult]) -> MigrationResult:
+    """The program's result, with the configuration file's as its ``.configuration``."""
     if Unit.CONFIGURATION in results:
         return replace(results[Unit.PROGRAM], configuration=results[Unit.CONFIGURATION])
     return results[Unit.PROGRAM]
@@ -87,7 +97,7 @@ def _rewrite_free(outcomes: Mapping[Unit, engine.FileOutcome]) -> bool:
     return not any(outcome.changes for outcome in outcomes.values())
 
 
-def _result(outcome: engine.FileOutcome, mark: str, v4: bool) -> MigrationResult:
+def _result(outcome: engine.FileOutcome, mark: str, *, v4: bool = False, mintmt: bool = False) -> MigrationResult:
     """The outcome with the byte-order mark the rules did not see put back in front."""
     changes = tuple(
         replace(change, span=Span(change.span.start + len(mark), change.span.end + len(mark)))
@@ -101,6 +111,7 @@ def _result(outcome: engine.FileOutcome, mark: str, v4: bool) -> MigrationResult
         outcome.counts,
         outcome.errors,
         already_v4=v4,
+        already_mintmt=mintmt,
     )
 
 

@@ -62,14 +62,15 @@ def plural(count: int, noun: str) -> str:
 
 def report(files: Iterable[FileEntry], controller: str, *, to: str = "v4") -> dict[str, Any]:
     """The report as plain data (what ``--format json`` prints); a migration ``to`` MintMT says so
-    (``"to": "mintmt"``) and counts the files left as they were for being MintMT already."""
+    (``"to": "mintmt"``) and counts the files left as they were for being MintMT already (as any run
+    that left one does)."""
     rows = [_file(entry) for entry in files]
     rules: Counter[str] = Counter()
     for row in rows:
         rules.update(row["rules"])
     statuses = Counter(row["status"] for row in rows)
     target = {"to": to} if to != "v4" else {}
-    already = {"already_mintmt": statuses["already mintmt"]} if to != "v4" else {}
+    already = {"already_mintmt": statuses["already mintmt"]} if to != "v4" or statuses["already mintmt"] else {}
     return {
         **target,
         "controller": controller,

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from mintlang.diagnostics import Span
+from mintlang.keyworddb.model import ValueRange
 from mintlang.migrate.context import Context, FileView, per_pass, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import addressed_axes, writes_any
@@ -106,7 +108,10 @@ class DefaultMaster(Rule):
     v4:18757-18761). So an application whose axis 0 follows (FOLLOW, FLY, CAM, a gearbox) and
     never chooses a master gets ``MASTERSOURCE.0 = _msPOS : MASTERCHANNEL.0 = 1``, as the v4
     guide's own port of the flying shear does (v4:3781-3804); an axis above 1 that follows with
-    no FOLLOWAXIS has no documented v3 default: manual item."""
+    no FOLLOWAXIS has no documented v3 default: manual item. A target that takes neither value
+    (MintDrive's master is its auxiliary encoder or a virtual axis, MASTERSOURCE 2 or 3 and
+    MASTERCHANNEL 0, v4:13800-13804, v4:13918-13923) gets a manual item at the first following
+    statement instead of a line it would reject."""
 
     id = "S-MASTER-DEFAULT"
     rule_class = RuleClass.SEMI
@@ -118,6 +123,7 @@ class DefaultMaster(Rule):
         if writes_any(context, ("FOLLOWAXIS", "MASTERSOURCE", "MASTERCHANNEL")):
             return
         followers: set[int] = set()
+        first: tuple[FileView, Span] | None = None  # where axis 0 first follows
         for file, line, statement, keyword in keyword_refs(context, *_FOLLOWING):
             if not written(statement, keyword):
                 continue
@@ -131,9 +137,29 @@ class DefaultMaster(Rule):
             for axis in axes:
                 if axis > 1 and axis not in followers:
                     yield self.flag(file, span, f"axis {axis} follows with no FOLLOWAXIS: choose its master")
+            if first is None and 0 in axes:
+                first = (file, span)
             followers.update(axes)
-        if 0 in followers and context.supports("MASTERCHANNEL"):
+        if first is None or not context.supports("MASTERCHANNEL"):
+            return
+        source, channel = _range(context, "MASTERSOURCE"), _range(context, "MASTERCHANNEL")
+        if (source is None or source.holds(0.0)) and (channel is None or channel.holds(1.0)):
             yield after_configuration(context, ["MASTERSOURCE.0 = _msPOS : MASTERCHANNEL.0 = 1"])
+        else:
+            taken = " and ".join(f"{name} {limits.text}" for name, limits in _ranges(source, channel))
+            yield self.flag(*first, f"v3 axis 0 followed axis 1; this controller takes only {taken}: choose the master")
+
+
+def _range(context: Context, keyword: str) -> ValueRange | None:
+    """The values the target controller takes for ``keyword`` (None: no range printed)."""
+    attributes = context.db.lookup(keyword).attributes_for(context.controller.controller)
+    return None if attributes is None else attributes.range
+
+
+def _ranges(source: ValueRange | None, channel: ValueRange | None) -> Iterator[tuple[str, ValueRange]]:
+    for name, limits in (("MASTERSOURCE", source), ("MASTERCHANNEL", channel)):
+        if limits is not None:
+            yield name, limits
 
 
 _FOLLOWING = ("FOLLOW", "FLY", "CAM", "CAMA", "GEARN")

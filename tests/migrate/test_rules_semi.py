@@ -456,6 +456,17 @@ def test_axis_0_following_without_followaxis_gets_v3s_default_master() -> None:
     assert rewritten("S-MASTER-DEFAULT", "FOLLOW.1 = 2\n") == "FOLLOW.1 = 2\n"  # v4's channel 0 is v3's default
 
 
+def test_axis_0_following_on_a_controller_without_axis_masters_is_left_to_the_user() -> None:
+    # MintDrive takes MASTERSOURCE 2 or 3 (aux encoder, virtual axis) and MASTERCHANNEL 0 only
+    # (v4:13800-13804, v4:13918-13923): _msPOS and channel 1 would be errors, so the first
+    # following statement gets the choice instead of an invalid line
+    reasons = flagged("S-MASTER-DEFAULT", "GEARD.0 = 10\nGEARN.0 = 2\n", controller="mintdrive")
+    expected = "v3 axis 0 followed axis 1; this controller takes only MASTERSOURCE 2, 3 and MASTERCHANNEL 0"
+    assert reasons == [f"{expected}: choose the master"]
+    result = one_rule("S-MASTER-DEFAULT", "GEARD.0 = 10\nGEARN.0 = 2\n", controller="mintdrive")
+    assert [item.original_line for item in result.manual] == [2]  # GEARN, v3's FOLLOW
+
+
 def test_an_axis_above_1_following_without_followaxis_is_left_to_the_user() -> None:
     assert flagged("S-MASTER-DEFAULT", "FOLLOW.2 = 1\n") == ["axis 2 follows with no FOLLOWAXIS: choose its master"]
 

@@ -41,24 +41,12 @@ def _read(name: str) -> list[dict[str, Any]]:
     return json.loads(text)
 
 
-# "0 .. 4, 6" (HOME), "0 ≤ x ≤ 3, 5" (LIMITMODE): the whole numbers of a span, and one more.
-_SPAN_AND_ONE = re.compile(r"^(?P<low>-?\d+)\s*(?:\.\.|≤\s*x\s*≤)\s*(?P<high>-?\d+)\s*,\s*(?P<one>-?\d+)$")
-
-
 def _range(raw: dict[str, Any] | None) -> ValueRange | None:
     if raw is None:
         return None
     included = raw.get("minimum_included", True), raw.get("maximum_included", True)
-    return ValueRange(raw["text"], raw["minimum"], raw["maximum"], raw["fractional"], *included, _allowed(raw["text"]))
-
-
-def _allowed(text: str) -> frozenset[float] | None:
-    """The values of a range printed as a span of whole numbers and one more; None for any other text."""
-    found = _SPAN_AND_ONE.match(text.strip())
-    if found is None:
-        return None
-    low, high, one = (int(found[part]) for part in ("low", "high", "one"))
-    return frozenset(float(value) for value in (*range(low, high + 1), one))
+    allowed = tuple(raw["allowed"]) if raw.get("allowed") is not None else None
+    return ValueRange(raw["text"], raw["minimum"], raw["maximum"], raw["fractional"], *included, allowed)
 
 
 def _attributes(raw: dict[str, Any]) -> Attributes:

@@ -54,7 +54,7 @@ class ValueRange:
     fractional: bool  # the printed range has a decimal part, so fractions are accepted
     minimum_included: bool = True  # "0 < x" leaves the bound out
     maximum_included: bool = True  # "x < 4096" likewise
-    allowed: frozenset[float] | None = None  # a mode's values where they are no range: "0 .. 4, 6"
+    allowed: tuple[float, ...] | None = None  # a mode's values where they are no range: "0 .. 4, 6"
 
     def holds(self, value: float) -> bool:
         """Whether ``value`` lies in the range (True when a bound is not known)."""

@@ -145,6 +145,7 @@ def _number(text: str) -> float:
 
 
 _CHANNEL_RANGE = re.compile(r"(\d) (0 or 1)$")
+_SPAN_AND_ONE = re.compile(r"^(?P<low>-?\d+)\s*(?:\.\.|≤\s*x\s*≤)\s*(?P<high>-?\d+)\s*,\s*(?P<one>-?\d+)$")
 
 
 def parse_range(text: str) -> ValueRange:
@@ -156,6 +157,10 @@ def parse_range(text: str) -> ValueRange:
     if match := _INTERVAL.match(compact):  # "0 ≤ x < 4096": a "<" leaves the bound out
         low, high = _number(match["min"]), _number(match["max"])
         return ValueRange(compact, low, high, fractional, match["low"] == "≤", match["high"] == "≤")
+    if match := _SPAN_AND_ONE.match(compact):  # HOME "0 .. 4, 6": the whole numbers of a span, and one more
+        low, high, one = (int(match[part]) for part in ("low", "high", "one"))
+        allowed = tuple(float(value) for value in sorted({*range(low, high + 1), one}))
+        return ValueRange(compact, None, None, fractional, allowed=allowed)
     bounds: tuple[float, float] | None = None
     if match := _SPAN.match(compact):
         bounds = _number(match["min"]), _number(match["max"])

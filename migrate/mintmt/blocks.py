@@ -21,8 +21,8 @@ SUMMARY = "ENDL becomes End Loop, a block IF's DO and ENDIF become Then and End 
 _K = TokenKind
 _CLOSERS = {_K.ENDL: "End Loop", _K.ENDIF: "End If"}
 _UNSHOWN = {
-    _K.WHILE: "WHILE … ENDW is kept as v4 writes it: the notes show no MintMT form of it",
-    _K.REPEAT: "REPEAT … UNTIL is kept as v4 writes it: the notes show no MintMT form of it",
+    _K.WHILE: "WHILE ... ENDW is kept as v4 writes it: the notes show no MintMT form of it",
+    _K.REPEAT: "REPEAT ... UNTIL is kept as v4 writes it: the notes show no MintMT form of it",
 }
 
 

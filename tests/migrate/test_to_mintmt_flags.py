@@ -64,14 +64,14 @@ FLAGS = [
         "DIM a\nWHILE a\nENDW\n",
         2,
         "MT-BLOCK",
-        "WHILE … ENDW is kept as v4 writes it: the notes show no MintMT form of it",
+        "WHILE ... ENDW is kept as v4 writes it: the notes show no MintMT form of it",
         id="while",
     ),
     pytest.param(
         "DIM a\nREPEAT\nUNTIL a\n",
         2,
         "MT-BLOCK",
-        "REPEAT … UNTIL is kept as v4 writes it: the notes show no MintMT form of it",
+        "REPEAT ... UNTIL is kept as v4 writes it: the notes show no MintMT form of it",
         id="repeat",
     ),
     pytest.param(
@@ -124,7 +124,7 @@ def test_a_form_that_reads_as_mintmt_makes_the_text_mintmt_already(v4: str) -> N
 
 def test_the_marker_takes_the_lines_indentation_and_line_break() -> None:
     result = to_mintmt("DIM a\r\n  WHILE a\r\n  ENDW\r\n")
-    reason = "WHILE … ENDW is kept as v4 writes it: the notes show no MintMT form of it"
+    reason = "WHILE ... ENDW is kept as v4 writes it: the notes show no MintMT form of it"
     assert result.text == f"DIM a\r\n  REM MIGRATE: MT-BLOCK: {reason}\r\n  WHILE a\r\n  ENDW\r\n"
 
 
@@ -142,7 +142,7 @@ def test_a_marker_already_above_its_line_is_not_written_again() -> None:
 
 def test_a_marker_above_the_first_line_goes_after_the_byte_order_mark() -> None:
     result = to_mintmt("\ufeffWHILE a\nENDW\n")
-    reason = "WHILE … ENDW is kept as v4 writes it: the notes show no MintMT form of it"
+    reason = "WHILE ... ENDW is kept as v4 writes it: the notes show no MintMT form of it"
     assert result.text == f"\ufeffREM MIGRATE: MT-BLOCK: {reason}\nWHILE a\nENDW\n"
     assert [(item.line, item.original_line) for item in result.manual] == [(2, 1)]
     assert to_mintmt(result.text).text == result.text

@@ -1,0 +1,48 @@
+"""What the migration to MintMT writes into a file is ASCII, so a file keeps its encoding: a marker
+with an ellipsis (U+2026) would put the bytes E2 80 A6 into an ASCII file, or 0x85 into a cp1252 one.
+
+Every v4 program of the corpus is migrated: its result has no non-ASCII character its source does not have."""
+
+from __future__ import annotations
+
+from collections import Counter
+
+from mintlang.migrate.mintmt import to_mintmt
+from tests.corpus_files import CORPUS
+
+# One of each form the notes show no MintMT form of, so that every flag's reason is written.
+FLAGGED = """\
+DIM x
+WHILE x < 3
+  x = x + 1
+ENDW
+REPEAT
+  x = x - 1
+UNTIL x = 0
+GOSUB sub
+IF x > 0 DO : x = 1
+AXES[0,1]
+END
+#sub
+RETURN
+#IN0
+RETURN
+"""
+
+
+def _non_ascii(text: str) -> Counter[str]:
+    return Counter(character for character in text if not character.isascii())
+
+
+def test_every_flag_the_migration_to_mintmt_writes_is_ascii() -> None:
+    result = to_mintmt(FLAGGED)
+    assert len(result.manual) >= 5
+    assert all(item.reason.isascii() for item in result.manual)
+
+
+def test_the_migration_adds_no_character_outside_ascii_to_any_v4_program_of_the_corpus() -> None:
+    """Comments' text is copied as it was; a character constant in typographic quotes (``‘Y’``, as the
+    guide prints it) becomes its code, so the result may have fewer non-ASCII characters, never more."""
+    for path in sorted((CORPUS / "v4").rglob("*.mnt")):
+        source = path.read_text(encoding="utf-8")
+        assert not _non_ascii(to_mintmt(source).text) - _non_ascii(source), path

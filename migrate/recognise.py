@@ -57,10 +57,10 @@ def _v4_only_keyword(uses: Iterable[KeywordUse]) -> bool:
     a read counts as a variable's only outside the name's own assignments (``x = x | 128``
     reads ``x`` before v3 declares it, and is what the migrator writes for input modes)."""
     v4_only = [use for use in uses if database().lookup_v3(use.keyword.keyword) is None]
-    assigning = {(use.keyword.keyword, id(use.statement)) for use in v4_only if use.use is Use.WRITE}
+    assigning = {(use.keyword.keyword, use.unit, use.statement.span) for use in v4_only if use.use is Use.WRITE}
     forms: dict[str, set[Use | None]] = defaultdict(set)
     for use in v4_only:
-        own_assignment = use.use is Use.READ and (use.keyword.keyword, id(use.statement)) in assigning
+        own_assignment = use.use is Use.READ and (use.keyword.keyword, use.unit, use.statement.span) in assigning
         forms[use.keyword.keyword].add(use.use if _plain(use) and not own_assignment else None)
     return any(found != {Use.READ, Use.WRITE} for found in forms.values())
 

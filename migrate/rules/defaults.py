@@ -1,9 +1,10 @@
 """v3 power-up defaults that Mint v4 changed, where a program relies on them.
 
-A program relies on a default when it uses the parameter (moves the axes, homes
-them, waits for IDLE) and never writes it. Only servo axes count: the stepper
-defaults are the same in both versions (v3:6940-6948, v4:9005-9050), so an
-axis given a constant stepper CONFIG is left out.
+A program relies on a default on an axis when it uses the parameter there (moves
+the axis, homes it, waits for IDLE) and never writes it for that axis (``SPEED.1 = 30``
+leaves axis 0's SPEED at its default); a write whose axes are not known counts for all.
+Only servo axes count: the stepper defaults are the same in both versions
+(v3:6940-6948, v4:9005-9050), so an axis given a constant stepper CONFIG is left out.
 
 Two rules share the table. S-DEFAULTS (on by default) reports each default
 relied on as a ``REM MIGRATE:`` line at the top of the application carrying the
@@ -107,11 +108,22 @@ def relied_on(context: Context) -> Iterator[tuple[Default, tuple[int, ...]]]:
     """Each changed default the application relies on, with the servo axes of the target that rely on it."""
     steppers = _stepper_axes(context)
     for default in DEFAULTS:
-        if writes_any(context, default.written_as):
+        set_on = _set_on(context, default)
+        if set_on is None:
             continue
-        servo = tuple(axis for axis in on_target(context, default.users(context)) if axis not in steppers)
+        users = on_target(context, default.users(context))
+        servo = tuple(axis for axis in users if axis not in steppers and axis not in set_on)
         if servo:
             yield default, servo
+
+
+def _set_on(context: Context, default: Default) -> tuple[int, ...] | None:
+    """The axes the application writes the parameter on, or None when a write's axes are not
+    known (computed, or a write the v3 reader takes for a variable's): then it may set it on all."""
+    axes = moved_axes(context, default.written_as)
+    if axes is None or (not axes and writes_any(context, default.written_as)):
+        return None
+    return axes
 
 
 def _stepper_axes(context: Context) -> set[int]:

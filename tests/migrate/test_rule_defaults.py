@@ -34,6 +34,14 @@ def test_a_parameter_the_program_writes_is_not_reported() -> None:
     assert _notes(source) == []
 
 
+def test_a_parameter_written_on_other_axes_is_still_reported_for_the_axis_that_moves() -> None:
+    # SPEED.1 leaves axis 0 at its default: v3 40000 (v3:11797) or 80000 (v3:6943), v4 20000 (v4:16169)
+    speed = "SPEED[0] = <value>; : REM v3 default 40000 (80000 in the CONFIG table), v4 20000"
+    assert speed in _notes("SP.1 = 30\nMA.0 = 10 : GO.0\n")
+    assert speed in _notes("MA.0 = 10 : GO.0\n")
+    assert not any(note.startswith("SPEED") for note in _notes("SP.0 = 30\nMA.0 = 10 : GO.0\n"))
+
+
 def test_a_program_that_does_not_move_relies_on_nothing() -> None:
     assert _notes("x = 1\nPRINT x\n") == []
     assert rewritten("S-DEFAULTS", "x = 1\n") == "x = 1\n"

@@ -25,7 +25,8 @@ class RuleClass(StrEnum):
 
 class MigrationFailed(Exception):
     """A bug in the migrator met one application: a rule raised, or kept rewriting its own
-    output. ``rule`` names it (None when reading the files failed), so the report can say
+    output; or the application is not in the dialect the migration reads (a Mint v3 file
+    given to ``--to mintmt``). ``rule`` names it (None when reading the files failed), so the report can say
     which file and which rule, leave those files as they were and go on with the others."""
 
     def __init__(self, rule: str | None, reason: str) -> None:

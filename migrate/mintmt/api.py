@@ -12,7 +12,8 @@ from mintlang.migrate import engine
 from mintlang.migrate.mintmt import addressing, blocks, characters, comments, events, names
 from mintlang.migrate.mintmt.apply import apply
 from mintlang.migrate.mintmt.source import Source
-from mintlang.migrate.model import MigrationResult
+from mintlang.migrate.mintmt.v3 import v3_words
+from mintlang.migrate.model import MigrationFailed, MigrationResult
 
 _BOM = "\ufeff"
 
@@ -23,11 +24,16 @@ REWRITES: tuple[ModuleType, ...] = (comments, characters, addressing, blocks, ev
 def to_mintmt(source: str, *, config: str | None = None) -> MigrationResult:
     """Rewrite a Mint v4 program (and its configuration file, whose result is ``.configuration``) in
     MintMT's syntax where the notes show it, flagging what they do not. An application that already
-    shows a form only MintMT has (``mintlang.detection``) comes back as it was, ``already_mintmt`` set."""
+    shows a form only MintMT has (``mintlang.detection``) comes back as it was, ``already_mintmt`` set.
+    Raises ``MigrationFailed`` on a Mint v3 application (``v3``): it is migrated to v4 first."""
     texts = [text for text in (source, config) if text is not None]
     if any(detect_dialect(text) is Dialect.MINTMT for text in texts):
         configuration_as_it_was = engine.untouched(config) if config is not None else None
         return _result(engine.untouched(source), configuration_as_it_was, already=True)
+    v3 = v3_words(source, config)
+    if v3:
+        shown = ", ".join(v3)
+        raise MigrationFailed(None, f"this is Mint v3 ({shown}): migrate it to v4 first (mint-migrate without --to)")
     visible: frozenset[str] = frozenset()
     migrated_configuration = None
     if config is not None:

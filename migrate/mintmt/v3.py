@@ -1,0 +1,35 @@
+"""Telling a Mint v3 application given to ``--to mintmt``, which reads Mint v4: it is refused, not rewritten.
+
+Read as v4, a v3 program keeps its v3 keywords (``HMSPEED``, ``CONTON``, ``#FASTPOS``), and the
+MintMT rewrite would copy them into a file MintMT rejects on each of those lines. What shows v3 is
+what the v4 checker finds on such a word: a name v4 does not know (an undeclared variable, an
+unknown keyword, E3001/E3007) spelt as the full name of a v3 keyword v4 does not have, or a v3
+event (W102). An abbreviation is not enough (``ax`` is v3's AUX, and a likely v4 name), and a
+v4 program that declares a variable so named (``DIM conton``) gets no finding on it.
+"""
+
+from __future__ import annotations
+
+import mintlang
+from mintlang.keyworddb import database
+
+_UNKNOWN_NAME = frozenset({"E3001", "E3007"})
+_V3_EVENT = "W102"
+
+
+def v3_words(source: str, config: str | None = None) -> tuple[str, ...]:
+    """The v3 keywords the application uses where v4 does not know them, each once, in the order found
+    (the configuration file's first, as the two are checked together)."""
+    analysis = mintlang.check_application(source, dialect="v4", config=config)
+    found: dict[str, None] = {}
+    for text, diagnostics in ((config or "", analysis.configuration), (source, analysis.program)):
+        for diagnostic in diagnostics:
+            word = text[diagnostic.span.start : diagnostic.span.end]
+            if diagnostic.code == _V3_EVENT or (diagnostic.code in _UNKNOWN_NAME and _v3_only(word)):
+                found[word.upper()] = None
+    return tuple(found)
+
+
+def _v3_only(word: str) -> bool:
+    keyword = database().lookup_v3(word)
+    return keyword is not None and keyword.name == word.upper() and database().lookup(word) is None

@@ -1,0 +1,60 @@
+"""``--to mintmt`` reads Mint v4: a Mint v3 file is refused with what shows it is v3 ("migrate it to v4
+first"), exit status 2, and left as it was. Rewritten, it kept its v3 keywords and failed
+``mint check --dialect mintmt`` on each of them, with no marker.
+
+What shows v3 is a word the v4 checker does not know that is a v3 keyword and not a v4 one
+(HMSPEED, GEARN, CONTON, DINT, EINT: the v3 guide's keywords the v4 guide replaced) or a v3
+event (#FASTPOS, v4's #FASTIN)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from mintlang.migrate.cli import migrate as command
+from mintlang.migrate.mintmt import to_mintmt
+from mintlang.migrate.mintmt.v3 import v3_words
+from mintlang.migrate.model import MigrationFailed
+from tests.corpus_files import CORPUS
+
+V3_PROGRAM = "HMSPEED = 10\nSP = 5\nMA = 100\nGEARN = 1\nCONTON\nDINT\nEINT\nEND\n#FASTPOS\nRETURN\n"
+
+
+def test_the_v3_keywords_v4_does_not_know_are_named() -> None:
+    # SP and MA are abbreviations v4 still reads (SPEED, MOVEA): they do not show v3.
+    assert v3_words(V3_PROGRAM) == ("HMSPEED", "GEARN", "CONTON", "DINT", "EINT", "#FASTPOS")
+
+
+def test_a_v4_variable_named_like_a_v3_keyword_does_not_show_v3() -> None:
+    assert v3_words("DIM conton\nconton = 1\nPRINT conton\n") == ()
+
+
+def test_an_abbreviation_of_a_v3_keyword_does_not_show_v3() -> None:
+    # ax abbreviates v3's AUX: as a (here undeclared) v4 name it is the program's own mistake.
+    assert v3_words("SPEED.ax = 1\n") == ()
+
+
+def test_to_mintmt_refuses_a_v3_program() -> None:
+    with pytest.raises(MigrationFailed, match=r"this is Mint v3 \(HMSPEED, .*\): migrate it to v4 first"):
+        to_mintmt(V3_PROGRAM)
+
+
+def test_a_v3_configuration_file_refuses_its_application() -> None:
+    with pytest.raises(MigrationFailed, match=r"Mint v3 \(CONTON\)"):
+        to_mintmt("DIM x\nx = 1\n", config="CONTON\n")
+
+
+def test_no_v4_program_of_the_corpus_reads_as_v3() -> None:
+    shown = {path.name: v3_words(path.read_text(encoding="utf-8")) for path in (CORPUS / "v4").rglob("*.mnt")}
+    assert {name: words for name, words in shown.items() if words} == {}
+
+
+def test_the_command_leaves_the_v3_file_as_it_was_and_exits_2(tmp_path: Path) -> None:
+    program = tmp_path / "old.mnt"
+    program.write_text(V3_PROGRAM, encoding="utf-8")
+    outcome = CliRunner().invoke(command, ["--to", "mintmt", "--write", str(program)])
+    assert outcome.exit_code == 2
+    assert "this is Mint v3 (HMSPEED, GEARN, CONTON, DINT, EINT, #FASTPOS): migrate it to v4 first" in outcome.output
+    assert program.read_text(encoding="utf-8") == V3_PROGRAM

@@ -2,18 +2,20 @@
 ``If … Then … End If`` (004:96-105, 002:48-73).
 
 MintMT's ``Then`` opens a block only when it ends its line (the lexer reads it as
-v4's ``DO`` there), so a ``DO`` with a statement after it on its line is kept and
-flagged. ``WHILE … ENDW`` and ``REPEAT … UNTIL`` are kept as v4 writes them, which
+v4's ``DO`` there; a comment after it is no statement), so a ``DO`` followed by a
+``:`` and a comment loses the ``:``, and one with a statement after it on its line
+is kept and flagged. ``WHILE … ENDW`` and ``REPEAT … UNTIL`` are kept as v4 writes them, which
 MintMT reads (MT-1), and flagged: the notes show no MintMT form of them.
 The new words take the case of the words they replace (MT-21).
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 
-from mintlang.migrate.mintmt.source import Action, Flag, Rewrite, Source, span, styled
-from mintlang.syntax.tokens import TokenKind
+from mintlang.diagnostics import Span
+from mintlang.migrate.mintmt.source import Action, Flag, Line, Rewrite, Source, span, styled
+from mintlang.syntax.tokens import Token, TokenKind
 
 ID = "MT-BLOCK"
 SUMMARY = "ENDL becomes End Loop, a block IF's DO and ENDIF become Then and End If"
@@ -33,9 +35,12 @@ def find(source: Source) -> Iterator[Action]:
         if kind in _CLOSERS:
             yield Rewrite(ID, span(token), styled(_CLOSERS[kind], token.text))
         elif kind is _K.DO and _K.IF in line.kinds:
-            if index == len(line.tokens) - 1:
+            separators = line.tokens[index + 1 :]
+            if all(separator.kind is _K.COLON for separator in separators):
                 if token.start in closed:
                     yield Rewrite(ID, span(token), styled("Then", token.text))
+                    if separators:  # only a comment follows: ``DO : REM c`` is ``Then ' c``
+                        yield _without_separators(source, line, separators)
             else:
                 reason = "DO is kept: MintMT's Then opens a block only at the end of its line; move what follows it"
                 yield Flag(ID, token.start, reason)
@@ -44,6 +49,14 @@ def find(source: Source) -> Iterator[Action]:
             yield Flag(ID, token.start, reason)
         elif kind in _UNSHOWN:
             yield Flag(ID, token.start, _UNSHOWN[kind])
+
+
+def _without_separators(source: Source, line: Line, separators: Sequence[Token]) -> Rewrite:
+    """The ``:`` between a block's ``DO`` and a comment removed, with the spaces up to the comment; a
+    space stays between the two where the ``:`` touched the ``DO`` (``do: rem c`` is ``then ' c``)."""
+    start = separators[0].start
+    end = line.comment.start if line.comment is not None else separators[-1].end
+    return Rewrite(ID, Span(start, end), "" if source.text[start - 1] in " \t" else " ")
 
 
 def _closed_blocks(source: Source) -> frozenset[int]:

@@ -143,7 +143,7 @@ def render_text(
         if quiet:
             continue
         for manual in row["not_verified"]:
-            where = f"{escape(manual['file'])}:{manual['migrated_line']}" + (" (note)" if manual["note"] else "")
+            where = _manual_place(manual) + (" (note)" if manual["note"] else "")
             reason = escape(manual["reason"])
             console.print(f"  not verified: {where}: [bold]{manual['rule']}[/bold] {reason}", style="dim")
         for place in row["disabled"]:
@@ -151,6 +151,13 @@ def render_text(
             console.print(f"  disabled for the {migrated} run: {where} (migrated)", style="dim")
     if not quiet:
         console.print(summary(data["totals"]))
+
+
+def _manual_place(manual: Mapping[str, Any]) -> str:
+    """``demo.mnt:3`` at the original's line, else ``migrated demo.mnt:12`` (a note the migrator added)."""
+    if manual["original_line"] is not None:
+        return f"{escape(manual['file'])}:{manual['original_line']}"
+    return f"migrated {escape(manual['file'])}:{manual['migrated_line']}"
 
 
 def _where(told: Mapping[str, Any], migrated: bool) -> str:

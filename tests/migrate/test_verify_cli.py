@@ -73,7 +73,9 @@ def test_a_timing_difference_x_go_timing_flagged_passes_unless_manual_items_fail
     assert code == 0
     headline = "timing differs (X-GO-TIMING) at 0 ms: OUT bit 0 (OUT 0 / 1)"
     assert output.splitlines()[0] == f"{tmp_path / 'demo.mnt'}: {headline}"
-    assert f"not verified: {tmp_path / 'demo.mnt'}:12: X-GO-TIMING" in output
+    # the flag is on OUT0 = 1, line 4 of the original; the notes exist in the migrated file only
+    assert f"not verified: {tmp_path / 'demo.mnt'}:4: X-GO-TIMING" in output
+    assert f"not verified: migrated {tmp_path / 'demo.mnt'}:1 (note): S-PROLOGUE" in output
     assert run(tmp_path, TIMING, "--until-ms", "2000", "--fail-on", "manual")[0] == 1
 
 

@@ -24,7 +24,7 @@ from mintlang.controllers import ChannelRange
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Attributes, Keyword, KeywordKind
-from mintlang.lsp import describe
+from mintlang.lsp import describe, mintmt_words
 from mintlang.lsp.lookup import WORD_KINDS, prefix_tokens, significant
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
@@ -40,6 +40,7 @@ SNIPPETS = {
     "LOOP … ENDL": "LOOP\n\t$0\nENDL",
     "REPEAT … UNTIL": "REPEAT\n\t$0\nUNTIL ${1:condition}",
 }
+_V4_SPELT = frozenset({"IF … DO … ENDIF", "LOOP … ENDL"})  # MintMT writes these blocks otherwise
 _STATEMENT_STARTERS = frozenset({TokenKind.COLON, TokenKind.THEN, TokenKind.DO, TokenKind.ELSE, TokenKind.LABEL})
 _OPERAND_ENDS = frozenset(
     {TokenKind.NUMBER, TokenKind.CHAR, TokenKind.STRING, TokenKind.CONSTANT, TokenKind.NAME, TokenKind.RPAR}
@@ -92,9 +93,15 @@ def _keywords(snapshot: Snapshot, statement: bool) -> Iterator[types.CompletionI
                 detail = f"Mint v3, abbreviation {', '.join(old.abbreviations)}" if old.abbreviations else "Mint v3"
                 yield types.CompletionItem(label=old.name, kind=types.CompletionItemKind.Keyword, detail=detail)
         return
-    controller = snapshot.settings.controller
+    controller, mintmt = snapshot.settings.controller, snapshot.settings.dialect is Dialect.MINTMT
+    if mintmt and statement:
+        yield from _mintmt_block_words()
     for word in database().keywords_of(snapshot.settings.dialect).values():
-        if word.kind in _HIDDEN or controller not in word.controllers:
+        if (
+            word.kind in _HIDDEN
+            or controller not in word.controllers
+            or (mintmt and word.name in mintmt_words.REPLACED)
+        ):
             continue
         row = word.attributes_for(controller)
         if statement:
@@ -155,8 +162,22 @@ def _constants(dialect: Dialect) -> Iterator[types.CompletionItem]:
         )
 
 
-def _snippets() -> Iterator[types.CompletionItem]:
-    for label, body in SNIPPETS.items():
+def _mintmt_block_words() -> Iterator[types.CompletionItem]:
+    for kind in mintmt_words.COMPLETED:
+        word = mintmt_words.WORDS[kind]
+        yield types.CompletionItem(
+            label=word.spelling,
+            kind=types.CompletionItemKind.Keyword,
+            detail="MintMT block",
+            documentation=types.MarkupContent(kind=types.MarkupKind.Markdown, value=mintmt_words.describe(word)),
+        )
+
+
+def _snippets(dialect: Dialect) -> Iterator[types.CompletionItem]:
+    snippets = SNIPPETS
+    if dialect is Dialect.MINTMT:  # MintMT's own spellings of the blocks it writes otherwise
+        snippets = {label: body for label, body in SNIPPETS.items() if label not in _V4_SPELT} | mintmt_words.SNIPPETS
+    for label, body in snippets.items():
         yield types.CompletionItem(
             label=label,
             kind=types.CompletionItemKind.Snippet,
@@ -206,16 +227,18 @@ def _addressed_by(keyword: Token, snapshot: Snapshot) -> tuple[str, ChannelRange
     return addressed(name, snapshot.model.controller) if name is not None else None
 
 
-def _after_dot(snapshot: Snapshot, before: list[Token], typed: types.Range) -> list[types.CompletionItem] | None:
+def _after_address(snapshot: Snapshot, before: list[Token], typed: types.Range) -> list[types.CompletionItem] | None:
     """After ``KW.``: the numbers KW addresses on the controller, then the macros that name valid ones.
 
     The dot before a macro is only a delimiter (3.5: ``SF.g1`` where g1 is ``[0,1]``), so a macro
     naming one number is written after two (``MOVER..xAxis``), or after ``.^`` or ``..`` as typed.
-    None when the cursor is not after a keyword's dot.
+    MintMT's round bracket (``MOVER(``) takes the same numbers and any of those macros by name.
+    None when the cursor is not after a keyword's dot or bracket.
     """
     kinds = [token.kind for token in before[-3:]]
     delimited = kinds[-2:] in ([TokenKind.DOT, TokenKind.DOT], [TokenKind.DOT, TokenKind.CIRCUMFLEX])
-    if kinds[-1:] != [TokenKind.DOT] and not delimited:
+    bracketed = kinds[-1:] == [TokenKind.ADDRESS]
+    if kinds[-1:] != [TokenKind.DOT] and not delimited and not bracketed:
         return None
     keyword = before[-3] if delimited and len(before) >= 3 else before[-2] if len(before) >= 2 else None
     found = _addressed_by(keyword, snapshot) if keyword is not None and keyword.kind is TokenKind.KEYWORD else None
@@ -229,7 +252,7 @@ def _after_dot(snapshot: Snapshot, before: list[Token], typed: types.Range) -> l
             continue
         listed = definition.body[0][1] == "["
         if not (delimited and listed):  # KW..[0,1] is no selector
-            text = definition.name if delimited or listed else f".{definition.name}"
+            text = definition.name if delimited or listed or bracketed else f".{definition.name}"
             names = f"{noun if len(numbers) == 1 else 'axes'} {', '.join(map(str, numbers))}"
             items.append(_macro_item(definition.name, text, names, typed))
     return items
@@ -265,7 +288,7 @@ def complete(snapshot: Snapshot, prefix: str, cursor: types.Position) -> list[ty
     typed = types.Range(
         start=types.Position(cursor.line, cursor.character - (len(partial.text) if partial else 0)), end=cursor
     )
-    dotted = _after_dot(snapshot, before, typed)
+    dotted = _after_address(snapshot, before, typed)
     if dotted is not None:
         return dotted
     previous = before[-1] if before else None
@@ -284,7 +307,7 @@ def complete(snapshot: Snapshot, prefix: str, cursor: types.Position) -> list[ty
     if not statement and previous is not None and previous.kind in _OPERAND_ENDS:
         return list(_continuations())
     items = [*_keywords(snapshot, statement), *_symbols(snapshot)]
-    return items + list(_snippets()) if statement else items
+    return items + list(_snippets(snapshot.settings.dialect)) if statement else items
 
 
 def register(server: MintServer) -> None:

@@ -11,7 +11,7 @@ from lsprotocol import types
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.lsp import addressed, describe
+from mintlang.lsp import addressed, describe, mintmt_words
 from mintlang.lsp.lookup import token_at
 from mintlang.lsp.occurrences import symbol_at
 from mintlang.lsp.server import MintServer
@@ -51,7 +51,9 @@ def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
         return old, token.start, token.end
     if found is not None:
         return describe.symbol(snapshot, found[0]), found[1].span.start, found[1].span.end
-    if token.kind is TokenKind.CONSTANT:
+    if snapshot.settings.dialect is Dialect.MINTMT and (block := mintmt_words.hover(snapshot.document, token)):
+        text = block
+    elif token.kind is TokenKind.CONSTANT:
         text = describe.constant(token.text, snapshot.settings.dialect)
     elif token.kind in (TokenKind.NAME, TokenKind.LABEL):
         text = None

@@ -11,10 +11,12 @@ statement the written one.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from lsprotocol import types
 
+from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Keyword
 from mintlang.lsp.lookup import prefix_tokens, significant
 from mintlang.lsp.server import MintServer
@@ -25,6 +27,7 @@ _STATEMENT_BREAKS = frozenset({TokenKind.COLON, TokenKind.THEN, TokenKind.DO, To
 _KEYWORDS = frozenset({TokenKind.KEYWORD, TokenKind.FUNCTION, TokenKind.PRINT, TokenKind.INPUT, TokenKind.PAUSE})
 _FUNCTION = TokenKind.FUNCTION
 _TRIM = " {}"
+_OPENERS = {"[": "]", "(": ")"}
 
 
 @dataclass(frozen=True, slots=True)
@@ -48,7 +51,7 @@ def _callee(tokens: list[Token]) -> _Callee | None:
             return None
         if token.kind in (TokenKind.RPAR, TokenKind.RSQB):
             depth += 1
-        elif token.kind in (TokenKind.LPAR, TokenKind.LSQB):
+        elif token.kind in (TokenKind.LPAR, TokenKind.LSQB, TokenKind.ADDRESS):
             if depth == 0 and token.kind is TokenKind.LPAR and index > 0 and tokens[index - 1].kind is _FUNCTION:
                 return _Callee(tokens[index - 1], commas, True, not _starts_statement(tokens, index - 1))
             depth = max(0, depth - 1)
@@ -89,17 +92,24 @@ def _parameters(label: str, name: str, bracketed: bool) -> list[tuple[int, int]]
     equals = label.find("=", after)
     if equals >= 0:
         return _items(label, equals + 1, len(label))
-    if label[after : after + 1] == "[":  # a command's axes: GO[axes]
-        after = label.find("]", after) + 1
+    if label[after : after + 1] in _OPENERS:  # a command's axes: GO[axes], MintMT's GO(axes)
+        after = label.find(_OPENERS[label[after]], after) + 1
     if label[after:].lstrip().startswith("{#"):  # the terminal (PRINT #1, ...) is no operand
         after = label.find("}", after) + 1
     return _items(label, after, len(label))
 
 
+def _round_brackets(label: str, name: str) -> str:
+    """A v4 format as MintMT writes it (MT-18): the axes or channel after the keyword in round brackets,
+    ``MOVER[axes] = …`` as ``MOVER(axes) = …`` and ``ADC.channel`` as ``ADC(channel)``."""
+    addressed = re.compile(rf"\b({re.escape(name)})(?:\[([^\]]*)\]|\.(\w+))", re.IGNORECASE)
+    return addressed.sub(lambda found: f"{found[1]}({found[2] or found[3]})", label)
+
+
 def _signature(word: Keyword, label: str, callee: _Callee) -> types.SignatureInformation:
     parameters = _parameters(label, word.name, callee.bracketed)
     active = callee.operand
-    repeated = "..." in label[slice(*parameters[-1])] or "[axes]" in label if parameters else False
+    repeated = "..." in label[slice(*parameters[-1])] or "[axes]" in label or "(axes)" in label if parameters else False
     if repeated and active >= len(parameters):
         active = len(parameters) - 1  # a repeated last operand, or one value per axis
     return types.SignatureInformation(
@@ -119,6 +129,8 @@ def signature_help(prefix: str, settings: Settings) -> types.SignatureHelp | Non
     formats = [label for label in word.formats if word.name in label.upper()] if word is not None else []
     if word is None or not formats:
         return None
+    if settings.dialect is Dialect.MINTMT:
+        formats = [_round_brackets(label, word.name) for label in formats]
     formats.sort(key=lambda label: label.startswith("v =") != callee.in_expression)  # the form in use first
     signatures = [_signature(word, label, callee) for label in formats]
     return types.SignatureHelp(

@@ -3,7 +3,6 @@ workspace symbols."""
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
@@ -16,10 +15,11 @@ from mintlang.lsp.features.navigation import locations
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.pairing import PROGRAM_SUFFIX
-from mintlang.semantic.blocks import BlockKind, Place
+from mintlang.semantic.blocks import Block, BlockKind, Place
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import Symbol, SymbolKind
 from mintlang.syntax import nodes as n
+from mintlang.syntax.tokens import TRIVIA
 
 MAX_FILES = 2000  # workspace symbols read at most this many programs from disk
 
@@ -28,9 +28,6 @@ _KINDS = {
     SymbolKind.ARRAY: types.SymbolKind.Array,
     SymbolKind.MACRO: types.SymbolKind.Constant,
 }
-
-
-_COMMENT_ONLY = re.compile(r"[ \t]*(?:REM\b[^\r\n]*)?[ \t]*(?:\r\n|\r|\n)?$", re.IGNORECASE)
 
 
 @dataclass(frozen=True, slots=True)
@@ -44,12 +41,19 @@ class Section:
 
 
 def sections(snapshot: Snapshot) -> list[Section]:
+    """Each label's section, ending before the next label or the next of MintMT's Event and Startup blocks
+    (which the program never runs into, MT-7)."""
     labels = sorted(
         (label for label in snapshot.model.symbols.labels[snapshot.unit].values() if label.definitions),
         key=lambda label: label.definitions[0].span.start,
     )
     lines = [snapshot.positions.position(label.definitions[0].span.start).line for label in labels]
     ends = [line - 1 for line in lines[1:]] + [snapshot.positions.line_count - 1] if lines else []
+    blocks = [block.opener.line - 1 for block in _mintmt_blocks_of(snapshot)]  # Place lines count from 1
+    ends = [
+        min([end, *(line - 1 for line in blocks if first < line <= end)])
+        for first, end in zip(lines, ends, strict=True)
+    ]
     dialect = snapshot.settings.dialect
     return [
         Section(label, first, _last_written(snapshot, first, last), event_of(label.name, dialect) is not None)
@@ -58,13 +62,12 @@ def sections(snapshot: Snapshot) -> list[Section]:
 
 
 def _last_written(snapshot: Snapshot, first: int, last: int) -> int:
-    """``last`` moved up over blank and comment-only lines: the gap before the next section, and the
-    comment that introduces it, are not part of this one."""
-    source, positions = snapshot.document.source, snapshot.positions
+    """``last`` moved up over blank and comment-only lines (REM, and MintMT's ``'``): the gap before the next
+    section, and the comment that introduces it, are not part of this one."""
+    positions = snapshot.positions
     while last > first:
-        start = positions.line_start(last)
-        end = positions.line_start(last + 1) if last + 1 < positions.line_count else len(source)
-        if not _COMMENT_ONLY.match(source, start, end):
+        tokens = snapshot.document.tokens_in(positions.line_start(last), positions.line_start(last))
+        if not all(token.kind in TRIVIA for token in tokens):
             break
         last -= 1
     return last
@@ -100,14 +103,18 @@ def _document_symbols(snapshot: Snapshot) -> Iterator[types.DocumentSymbol]:
             )
 
 
-def _mintmt_blocks(snapshot: Snapshot) -> Iterator[types.DocumentSymbol]:
-    """MintMT's ``Event NAME`` and ``Startup`` blocks, from the opener to the end of the closer's line (or of
-    the file, when never closed), selected at the event's name or the word ``Startup``."""
-    blocks = [
+def _mintmt_blocks_of(snapshot: Snapshot) -> list[Block]:
+    return [
         block
         for block in snapshot.model.structures[snapshot.unit].blocks
         if block.kind in (BlockKind.EVENT, BlockKind.STARTUP)
     ]
+
+
+def _mintmt_blocks(snapshot: Snapshot) -> Iterator[types.DocumentSymbol]:
+    """MintMT's ``Event NAME`` and ``Startup`` blocks, from the opener to the end of the closer's line (or of
+    the file, when never closed), selected at the event's name or the word ``Startup``."""
+    blocks = _mintmt_blocks_of(snapshot)
     if not blocks:
         return
     positions = snapshot.positions

@@ -15,8 +15,9 @@ from mintlang.migrate.context import LABEL, MARKER, Context, FileView, name_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Replace, Rule
 from mintlang.migrate.rules.explicit_axes import axis_keyword
+from mintlang.migrate.rules.remarks import missing_rem_spans
 from mintlang.semantic.events import EventKind, event_of
-from mintlang.semantic.symbols import Symbol, SymbolKind
+from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
@@ -75,13 +76,14 @@ class DeclareVariables(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         declared = _dimmed(context)
+        commented = [(file.unit, span) for file, span in missing_rem_spans(context)]  # STOP following
         indexed = {event.name.identity for _, _, facts in context.model.lines for event in facts.names if event.element}
         for unit, file in context.files.items():
             wanted: dict[str, tuple[int, str]] = {}
             for symbol in context.model.symbols.variables.values():
                 if not _user_name(context, symbol.name):
                     continue
-                uses = [o for o in symbol.occurrences() if o.unit is unit]
+                uses = [o for o in symbol.occurrences() if o.unit is unit and not _inside(o, commented)]
                 visible = declared[unit] | (declared[Unit.CONFIGURATION] if unit is Unit.PROGRAM else set())
                 if not uses or symbol.identity in visible:
                     continue
@@ -95,6 +97,12 @@ class DeclareVariables(Rule):
             if wanted:
                 names = [spelling for _, spelling in sorted(wanted.values())]
                 yield insert_lines(file, [f"DIM {name}" for name in names])
+
+
+def _inside(occurrence: Occurrence, spans: list[tuple[Unit, Span]]) -> bool:
+    """Whether a name is written in one of ``spans`` (a comment missing its REM declares nothing)."""
+    at = occurrence.span
+    return any(unit is occurrence.unit and span.start <= at.start and at.end <= span.end for unit, span in spans)
 
 
 def _user_name(context: Context, name: str) -> bool:

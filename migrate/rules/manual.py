@@ -22,6 +22,7 @@ from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Flag, Rule
 from mintlang.migrate.rules.defaults import ReportDefaults
 from mintlang.migrate.rules.prologue import IoPrologue
+from mintlang.migrate.rules.remarks import missing_rem, takes_operands
 from mintlang.migrate.rules.renames import same_value_constants
 from mintlang.semantic.events import EventKind, event_of
 from mintlang.semantic.units import Unit
@@ -344,16 +345,16 @@ class InvalidInV3(Rule):
     def _named(self, context: Context) -> Iterator[Flag]:
         """The errors given a reason of their own: unknown words, a comment missing its REM,
         unmatched blocks and labels."""
-        no_operands = context.mentioned(lambda name: not _takes_operands(context, name))
+        no_operands = context.mentioned(lambda name: not takes_operands(context, name))
         for file, line in context.placed(n.BareName, *map(statement_tag, no_operands)):
             for statement in n.flatten_statements(line.syntax.statements):
                 span = line.span(statement.span)
                 if isinstance(statement, n.BareName) and context.db.lookup(statement.name.text) is None:
                     yield self.flag(file, span, f"'{statement.name.text}' is not a Mint keyword (misprint?)")
-                elif isinstance(statement, n.KeywordStatement) and statement.arguments and statement.values is None:
-                    keyword = context.db.keywords.get(statement.keyword.keyword)
-                    if keyword is not None and not keyword.takes_operands:  # STOP following: a REM missing
-                        yield self.flag(file, span, f"{keyword.name} takes no operands (a comment missing REM?)")
+                elif missing_rem(context, statement):  # STOP following
+                    assert isinstance(statement, n.KeywordStatement)
+                    name = statement.keyword.keyword
+                    yield self.flag(file, span, f"{name} takes no operands (a comment missing REM?)")
         for unit, structure in context.model.structures.items():
             for diagnostic in structure.diagnostics:
                 if diagnostic.severity is Severity.ERROR:
@@ -441,11 +442,6 @@ class StillInvalid(Rule):
 # Rules whose markers are notes for the whole application: they sit above the first line of code
 # (notes.py), but say nothing about it.
 _APPLICATION_NOTES = frozenset({IoPrologue.id, ReportDefaults.id})
-
-
-def _takes_operands(context: Context, keyword: str) -> bool:
-    entry = context.db.keywords.get(keyword)
-    return entry is None or entry.takes_operands
 
 
 def _flagged(file: FileView, offset: int) -> bool:

@@ -192,3 +192,10 @@ def test_default_axes_depend_on_the_controller() -> None:
     assert rewritten("M-AXES", "AXES[0]\nSTOP\n") == "AXES[0]\nSTOP\n"
     result = one_rule("M-AXES", "STOP\n", config="AUTO\nRESET\n")
     assert result.configuration is not None and result.configuration.text == "AUTO\nAXES[0,1,2]\nRESET\n"
+
+
+def test_a_comment_missing_its_rem_declares_nothing() -> None:
+    # the v3 guide's GEARN example ends "STOP.0 : STOP following" (v3:3780-3792): STOP takes no
+    # operands, so "following" is a comment missing its REM (X-COMMENTED), not a variable
+    source = "x = 1\nFOLLOW.0 = 2\nSTOP.0 : STOP following\n"
+    assert rewritten("M-DIM", source) == "DIM x\n" + source

@@ -6,13 +6,14 @@ before the Event block after it."""
 from __future__ import annotations
 
 import pytest
-import pytest_lsp
 from lsprotocol import types
-from pytest_lsp import LanguageClient, client_capabilities
+from pytest_lsp import LanguageClient
 
-from tests.lsp.conftest import EDITOR, document, open_document, position
+from tests.lsp import test_mintmt
+from tests.lsp.conftest import document, open_document, position
 
 pytestmark = pytest.mark.asyncio
+client = test_mintmt.client  # the server reading each file's dialect from its text (mint.dialect = auto)
 
 # The shape of the move buffer note's listing (004:98-133) with the comms note's event (002:82-84).
 PROGRAM = (
@@ -29,17 +30,6 @@ PROGRAM = (
     "  MOVEBUFFERSIZE(0) = 20\n"
     "End Startup\n"
 )
-
-
-@pytest_lsp.fixture(config=EDITOR)
-async def client(lsp_client: LanguageClient):
-    params = types.InitializeParams(
-        capabilities=client_capabilities("visual-studio-code"),
-        initialization_options={"mint": {"debounceMs": 0, "dialect": "auto"}},
-    )
-    await lsp_client.initialize_session(params)
-    yield
-    await lsp_client.shutdown_session()
 
 
 async def _hover(client: LanguageClient, uri: str, text: str, needle: str, shift: int = 1) -> str:

@@ -16,10 +16,11 @@ from dataclasses import replace
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.migrate.model import MigrationResult
-from mintlang.migrate.verification import DEFAULT_UNTIL_MS, Verdict, Verification, compare
+from mintlang.migrate.verification import DEFAULT_UNTIL_MS, Verification, compare
 from mintlang.migrate.verification.model import DEFAULT_WALL_S, Application, Place
 from mintlang.migrate.verification.runnable import flagged_places, without_expectations
 from mintlang.migrate.verification.runs import Recording, record
+from mintlang.migrate.verification.verifier import conclude
 from mintlang.runtime.scenario.stimulus import Scenario
 
 
@@ -42,28 +43,8 @@ def verify(
         application = Application(program or "", configuration)
         runs.append(record(application, dialect, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s))
     original, migrated = runs
-    flagged = tuple(
-        (unit, item)
-        for unit, part in (("configuration", result.configuration), ("program", result))
-        if part is not None
-        for item in part.manual
-    )
     short = _short(original, migrated, flagged_places(result))
-    comparable = not (original.refused or (migrated.refused and short))  # else one of them never ran
-    found = compare.differences(original, migrated) if comparable else []
-    return Verification(
-        verdict=Verdict.DIVERGES if found else Verdict.INCOMPLETE if short else Verdict.EQUIVALENT,
-        compared_ms=max(compare.horizon(original, migrated), 0) if comparable else 0,
-        divergence=found[0] if found else None,
-        differences=tuple(found),
-        v3_controller=target,
-        v4_controller=target,
-        v3_stop=compare.stopped(original),
-        v4_stop=compare.stopped(migrated),
-        not_verified=flagged,
-        disabled=(),
-        short=short,
-    )
+    return conclude(original, migrated, result, short, controllers=(target, target))
 
 
 def _originals(result: MigrationResult) -> tuple[str, str | None]:

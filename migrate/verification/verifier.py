@@ -52,18 +52,33 @@ def verify(
     left = record(v3, Dialect.V3, v3_controller, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
     right = record(v4, Dialect.V4, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
     short = _short(left, right, runnable.flagged_places(result))
-    comparable = not (left.refused or (right.refused and short))  # else one of them never ran
-    found = compare.differences(left, right) if comparable else []
+    return conclude(left, right, result, short, controllers=(v3_controller, target), disabled=disabled)
+
+
+def conclude(
+    original: Recording,
+    migrated: Recording,
+    result: MigrationResult,
+    short: str | None,
+    *,
+    controllers: tuple[str, str],
+    disabled: tuple[Place, ...] = (),
+) -> Verification:
+    """The verdict on two recorded runs of ``result``'s original and migrated application, ``short`` saying
+    why the comparison cannot cover the whole run (if it cannot); ``controllers`` ran the original and the
+    migration."""
+    comparable = not (original.refused or (migrated.refused and short))  # else one of them never ran
+    found = compare.differences(original, migrated) if comparable else []
     flagged = _flagged(result)
     return Verification(
         verdict=_verdict(found, flagged, short),
-        compared_ms=max(compare.horizon(left, right), 0) if comparable else 0,
+        compared_ms=max(compare.horizon(original, migrated), 0) if comparable else 0,
         divergence=found[0] if found else None,
         differences=tuple(found),
-        v3_controller=v3_controller,
-        v4_controller=target,
-        v3_stop=compare.stopped(left),
-        v4_stop=compare.stopped(right),
+        v3_controller=controllers[0],
+        v4_controller=controllers[1],
+        v3_stop=compare.stopped(original),
+        v4_stop=compare.stopped(migrated),
         not_verified=flagged,
         disabled=disabled,
         short=short,

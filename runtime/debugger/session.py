@@ -16,6 +16,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any, BinaryIO
 
+from mintlang.cli.report import shortened
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.debugger import stepping
 from mintlang.runtime.debugger.breakpoints import Breakpoints
@@ -441,7 +442,7 @@ def _ending(result: RunResult) -> str:
     stop = result.stop
     line = f"{stop.reason.value} after {stop.time_ms} ms"
     if stop.line is not None:
-        line += f" at {stop.unit} line {stop.line}: {stop.statement}"
+        line += f" at {stop.unit} line {stop.line}: {shortened(stop.statement or '')}"
     if stop.message:
         line += f" — {stop.message}"
     return line + "\n"

@@ -45,3 +45,10 @@ def test_v3_binds_and_tighter_than_or_unlike_v4() -> None:
 
     assert top("v3") == ("OR", "Binary")  # (a AND b) OR c
     assert top("v4") == ("AND", "VariableRef")  # a AND (b OR c)
+
+
+def test_v3_keywords_are_used_as_the_v3_guide_ticks_them() -> None:
+    # v3 guide 001:7956: FASTPOS has only Read ticked, so a write was an error on the v3 controller too
+    diagnostics = mintlang.check("FASTPOS.0 = 5\nSPEED.0 = 10\n", dialect="v3")
+    assert [(d.code, d.span.start) for d in diagnostics] == [("E2000", 0)]
+    assert "FASTPOS is read only in Mint v3" in diagnostics[0].message

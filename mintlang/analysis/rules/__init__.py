@@ -24,6 +24,7 @@ from mintlang.analysis.rules import (
     limits,
     startup,
     unused,
+    v3_access,
     v3_keywords,
     values,
 )
@@ -57,6 +58,7 @@ RULES: tuple[Rule, ...] = (
     Rule("keyword-usage", each_line=keyword_usage.each_line, dialects=_V4_ATTRIBUTES),
     Rule("addressing", each_line=addressing.each_line, dialects=_V4_ATTRIBUTES),
     Rule("values", each_line=values.each_line, dialects=_V4_ATTRIBUTES),
+    Rule("v3-access", each_line=v3_access.each_line, dialects=frozenset({Dialect.V3})),
     Rule("arrays", arrays.check, arrays.each_line),
     Rule("events", events.check),
     Rule("v3-keywords", each_line=v3_keywords.each_line),

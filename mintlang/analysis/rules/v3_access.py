@@ -1,0 +1,30 @@
+"""Mint v3 keywords used the way the v3 guide's attribute ticks allow (read, write).
+
+The v3 reading is what mint-migrate starts from: a write to a keyword the v3
+guide ticks as read only (``FASTPOS.0 = 5``, 001:7956) or a read of one it ticks
+as write only was already an error on the v3 controller (2000 / 2002, as v4
+numbers them), so the migrator reports such a line as broken in v3 already
+rather than as something the migration broke.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from mintlang.analysis.findings import Finding, mint_error
+from mintlang.analysis.traversal import LineScope, Use
+from mintlang.keyworddb import database
+
+
+def each_line(scope: LineScope) -> Iterator[Finding]:
+    db = database()
+    for use in scope.facts.keyword_uses:
+        keyword = db.lookup_v3(use.keyword.keyword)
+        if keyword is None or not (keyword.read or keyword.write or keyword.command):
+            continue  # no attribute ticks to go by
+        name, span = keyword.name, use.keyword.spelling_span
+        if use.use is Use.WRITE and not keyword.write:
+            what = "a command" if keyword.command else "read only"
+            yield Finding(use.unit, mint_error(2000, span, f"{name} is {what} in Mint v3 and cannot be given a value"))
+        elif use.use is Use.READ and not keyword.read and keyword.write:
+            yield Finding(use.unit, mint_error(2002, span, f"{name} can only be written in Mint v3, not read"))

@@ -24,6 +24,12 @@ def cite(text: str) -> str:
     return _RUN.sub(lambda run: _run(run.group()), text)
 
 
+def in_file(text: str) -> str:
+    """``text`` as a migrated file holds it: ASCII, so an ASCII or cp1252 listing keeps its encoding
+    and the controller's tools show it as written (``section 6.7`` for ``§6.7``)."""
+    return text.replace("§", "section ")
+
+
 def _run(run: str) -> str:
     places: list[tuple[str, str]] = []
     dialect = ""

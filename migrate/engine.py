@@ -26,7 +26,7 @@ from dataclasses import dataclass, field, replace
 
 from mintlang.allocation import kept_without_collector
 from mintlang.diagnostics import LineIndex, Severity, Span, split_lines
-from mintlang.migrate.citations import cite
+from mintlang.migrate.citations import cite, in_file
 from mintlang.migrate.context import MARKER, Context, FileView, LineTags, Unreadable
 from mintlang.migrate.history import Edit, History
 from mintlang.migrate.markers import manual_items
@@ -167,7 +167,7 @@ def _marker(file: FileView, rule: str, flag: Flag, flagged: set[tuple[Unit, int,
     statement after it on its line breaks the line there instead (a line end separates
     statements as ``:`` does), so the statement gets a line of its own with the marker above.
     """
-    reason = cite(" ".join(flag.reason.split()))
+    reason = in_file(cite(" ".join(flag.reason.split())))
     text = f"{MARKER} {rule}: {reason}"
     indentation = file.indentation(flag.span.start)
     split = _after_opening(file, flag.span.start)

@@ -10,7 +10,7 @@ from collections.abc import Iterator
 from typing import ClassVar
 
 from mintlang.diagnostics import Span
-from mintlang.migrate.citations import cite
+from mintlang.migrate.citations import cite, in_file
 from mintlang.migrate.context import Context, FileView, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule, selector_text
@@ -107,7 +107,7 @@ class NotAvailable(StatementRule):
     def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
         word = statement.keyword.keyword
         entry = context.db.rename_of(word)  # the v4 guide's "removed" entry of the keyword
-        where = cite(f"v4:{entry.line}") if entry is not None else "v4 guide"
+        where = in_file(cite(f"v4:{entry.line}")) if entry is not None else "v4 guide"
         if not file.statement_alone(statement):
             return Refusal(f"{word} is not available in Mint v4 ({where}): delete it")
         return f"REM {file.slice(statement.span)}: not available in Mint v4 ({where}), removed by mint-migrate"

@@ -48,7 +48,7 @@ def test_one_shot_triggered_cam_notes_the_v3_restart() -> None:
     result = one_rule("S-CAM", TABLES + "CAM.1 = 2\n")
     assert result.text.endswith("CAMTABLE(1, cam1, NULL) : CAM.1 = _cmTRIGGER\n")
     assert [item.reason for item in result.manual] == [
-        "v3 also restarted this one-shot cam on later fast interrupts (v3 guide §6.7.3): consider _cmRETRIGGER"
+        "v3 also restarted this one-shot cam on later fast interrupts (v3 guide section 6.7.3): consider _cmRETRIGGER"
     ]
 
 

@@ -22,7 +22,7 @@ def test_values_already_in_microseconds_are_left_alone() -> None:
 def test_nextmove_keeps_the_statement_with_a_manual_item() -> None:
     reasons = flagged("S-LOOPTIME", "LOOPTIME = 2\n")
     assert reasons == [
-        "NextMove PCI servos every 1 ms and profiles every 2 ms (v4 guide §2.1.1): "
+        "NextMove PCI servos every 1 ms and profiles every 2 ms (v4 guide section 2.1.1): "
         "remove this LOOPTIME or see the Advanced Programming Guide"
     ]
 

@@ -106,14 +106,14 @@ def test_boost_is_written_where_the_controller_has_it() -> None:
 
 def test_not_available_statements_become_comments() -> None:
     assert rewritten("M-NOTAVAIL", "COMMSON\n  BEEPOFF : REM quiet\n") == (
-        "REM COMMSON: not available in Mint v4 (v4 guide §10.3 COMMSON), removed by mint-migrate\n"
-        "  REM BEEPOFF: not available in Mint v4 (v4 guide §10.3 BEEPOFF), removed by mint-migrate : REM quiet\n"
+        "REM COMMSON: not available in Mint v4 (v4 guide section 10.3 COMMSON), removed by mint-migrate\n"
+        "  REM BEEPOFF: not available in Mint v4 (v4 guide section 10.3 BEEPOFF), removed by mint-migrate : REM quiet\n"
     )
 
 
 def test_not_available_statement_sharing_a_line_is_flagged() -> None:
     assert flagged("M-NOTAVAIL", "COMMSON : a = 1\n") == [
-        "COMMSON is not available in Mint v4 (v4 guide §10.3 COMMSON): delete it"
+        "COMMSON is not available in Mint v4 (v4 guide section 10.3 COMMSON): delete it"
     ]
 
 

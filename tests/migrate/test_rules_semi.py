@@ -46,7 +46,7 @@ def test_interrupt_disable_uses_the_controllers_event_bits(controller: str, expe
 def test_idle_write_is_idlepos_and_idle_read_stays() -> None:
     assert rewritten("S-WRITE", "IDLE = .5;\nPAUSE IDLE[0,1]\n") == "IDLEPOS = .5;\nPAUSE IDLE[0,1]\n"
     assert flagged("S-WRITE", "VEL.0 = 2\n") == [
-        "VEL written: v4 IDLEVEL takes the idle velocity in other units (v4 guide §6.7)"
+        "VEL written: v4 IDLEVEL takes the idle velocity in other units (v4 guide section 6.7)"
     ]
 
 
@@ -310,10 +310,10 @@ def test_binary_output_migrates_once() -> None:
 def test_baud_9600_is_the_rate_every_serial_controller_has() -> None:
     assert rewritten("S-BAUD", "BAUD = 9600\n", controller="mintdrive") == "SERIALBAUD._tmRS232 = 9600\n"
     assert flagged("S-BAUD", "BAUD = 1200 : REM slow\n", controller="nextmove-bx") == [
-        "use SERIALBAUD._tmRS232 = <rate> with a rate the v4 guide §10.3 SERIALBAUD table lists"
+        "use SERIALBAUD._tmRS232 = <rate> with a rate the v4 guide section 10.3 SERIALBAUD table lists"
     ]
     assert flagged("S-BAUD", "BAUD = b\n", controller="servonode51") == [
-        "use SERIALBAUD._tmRS232 = <rate> with a rate the v4 guide §10.3 SERIALBAUD table lists"
+        "use SERIALBAUD._tmRS232 = <rate> with a rate the v4 guide section 10.3 SERIALBAUD table lists"
     ]
     assert flagged("S-BAUD", "BAUD = 9600\n") == ["SERIALBAUD is not available on NextMove PCI"]
 

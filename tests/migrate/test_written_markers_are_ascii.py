@@ -1,4 +1,4 @@
-"""What the migration to MintMT writes into a file is ASCII, so a file keeps its encoding: a marker
+"""What a migration writes into a file is ASCII, so a file keeps its encoding: a marker
 with an ellipsis (U+2026) would put the bytes E2 80 A6 into an ASCII file, or 0x85 into a cp1252 one.
 
 Every v4 program of the corpus is migrated: its result has no non-ASCII character its source does not have."""
@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from collections import Counter
 
+from mintlang.migrate import migrate
 from mintlang.migrate.mintmt import to_mintmt
 from tests.corpus_files import CORPUS
 
@@ -46,3 +47,14 @@ def test_the_migration_adds_no_character_outside_ascii_to_any_v4_program_of_the_
     for path in sorted((CORPUS / "v4").rglob("*.mnt")):
         source = path.read_text(encoding="utf-8")
         assert not _non_ascii(to_mintmt(source).text) - _non_ascii(source), path
+
+
+def test_the_migration_to_v4_adds_no_character_outside_ascii_to_any_v3_program_of_the_corpus() -> None:
+    """Citations in markers and in the lines the migrator writes say 'section 10.3', not '§10.3'
+    (COMMSON's removal note put U+00A7 into ASCII listings)."""
+    for path in sorted((CORPUS / "v3").rglob("*.mnt")):
+        source = path.read_text(encoding="utf-8")
+        configuration = path.with_suffix(".cfg")
+        config = configuration.read_text(encoding="utf-8") if configuration.exists() else None
+        result = migrate(source, config=config)
+        assert not _non_ascii(result.text) - _non_ascii(source), path

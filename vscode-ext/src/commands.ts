@@ -1,7 +1,6 @@
 // "Mint: Migrate file to v4" and "Mint: Replace v3 keywords" apply the language server's source
 // actions (see ./migration); "Mint: Run in simulator" runs mint-run on the program in a child
 // process and shows what it prints in the Mint output channel.
-import { spawn } from "node:child_process";
 import * as path from "node:path";
 import * as vscode from "vscode";
 
@@ -10,13 +9,8 @@ import { LANGUAGE_ID } from "./language";
 import { planMigration, planReplacement, type Plan } from "./migration";
 import { showError } from "./notify";
 import { configurationOf } from "./pairing";
-import { displayCommand, fileCommand, isMissingModule, MODULES, type Command } from "./resolve";
-
-interface Outcome {
-  readonly code: number | null;
-  readonly stderr: string;
-  readonly cancelled: boolean;
-}
+import { execute, type Finished } from "./process";
+import { displayCommand, fileCommand, isMissingModule, MODULES } from "./resolve";
 
 /** The Mint document a command acts on: the one clicked in the explorer, else the active editor's. */
 async function targetDocument(uri: unknown): Promise<vscode.TextDocument | undefined> {
@@ -33,30 +27,6 @@ async function saveOpen(files: readonly string[]): Promise<boolean> {
     (document) => document.uri.scheme === "file" && document.isDirty && files.includes(document.uri.fsPath),
   );
   return (await Promise.all(unsaved.map((document) => document.save()))).every((saved) => saved);
-}
-
-function run(command: Command, cwd: string, output: vscode.OutputChannel, token: vscode.CancellationToken): Promise<Outcome> {
-  return new Promise((resolve, reject) => {
-    const child = spawn(command.command, [...command.args], { cwd });
-    let stderr = "";
-    // Decoded as streams, so a character split between two chunks is not garbled.
-    child.stdout.setEncoding("utf8");
-    child.stderr.setEncoding("utf8");
-    child.stdout.on("data", (chunk: string) => output.append(chunk));
-    child.stderr.on("data", (chunk: string) => {
-      stderr += chunk;
-      output.append(chunk);
-    });
-    const cancel = token.onCancellationRequested(() => child.kill());
-    child.on("error", (error) => {
-      cancel.dispose();
-      reject(error);
-    });
-    child.on("close", (code) => {
-      cancel.dispose();
-      resolve({ code, stderr, cancelled: token.isCancellationRequested });
-    });
-  });
 }
 
 async function runInSimulator(uri: unknown, output: vscode.OutputChannel): Promise<void> {
@@ -83,9 +53,11 @@ async function runInSimulator(uri: unknown, output: vscode.OutputChannel): Promi
   output.show(true);
   output.appendLine(`$ ${displayCommand(command)}`);
   const progress = { location: vscode.ProgressLocation.Notification, title: `${title}: ${label}`, cancellable: true };
-  let outcome: Outcome;
+  let outcome: Finished;
   try {
-    outcome = await vscode.window.withProgress(progress, (_, token) => run(command, path.dirname(file), output, token));
+    outcome = await vscode.window.withProgress(progress, (_, token) =>
+      execute(command, path.dirname(file), token, (chunk) => output.append(chunk)),
+    );
   } catch (error) {
     const reason = error instanceof Error ? error.message : String(error);
     void showError(`${title}: ${command.command} (from ${command.source}) could not be started: ${reason}`, output);

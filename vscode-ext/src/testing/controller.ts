@@ -1,6 +1,5 @@
 // The Testing view: the tests `mint test` finds in each workspace folder, run (or run with coverage)
 // by `mint test` itself, so the editor shows what CI would. Reading its output is ./reports.ts's job.
-import { spawn } from "node:child_process";
 import * as fs from "node:fs";
 import * as os from "node:os";
 import * as path from "node:path";
@@ -8,7 +7,8 @@ import * as vscode from "vscode";
 
 import { currentHost, currentSettings } from "../host";
 import { showError } from "../notify";
-import { displayCommand, testCommand, type Command, type TestRequest } from "../resolve";
+import { execute, type Finished } from "../process";
+import { displayCommand, testCommand, type TestRequest } from "../resolve";
 import {
   parseCollected,
   parseLcov,
@@ -20,33 +20,6 @@ import {
 
 const NO_TESTS = 5; // mint test's exit status when it found nothing
 const REDISCOVER_AFTER_MS = 500; // a save of many files, or a checkout, lists the tests once
-
-interface Finished {
-  readonly code: number | null;
-  readonly stdout: string;
-  readonly stderr: string;
-}
-
-function execute(command: Command, cwd: string, token?: vscode.CancellationToken): Promise<Finished> {
-  return new Promise((resolve, reject) => {
-    const child = spawn(command.command, [...command.args], { cwd });
-    let stdout = "";
-    let stderr = "";
-    child.stdout.setEncoding("utf8");
-    child.stderr.setEncoding("utf8");
-    child.stdout.on("data", (chunk: string) => (stdout += chunk));
-    child.stderr.on("data", (chunk: string) => (stderr += chunk));
-    const cancel = token?.onCancellationRequested(() => child.kill());
-    child.on("error", (error) => {
-      cancel?.dispose();
-      reject(error);
-    });
-    child.on("close", (code) => {
-      cancel?.dispose();
-      resolve({ code, stdout, stderr });
-    });
-  });
-}
 
 /** A coverage figure VS Code draws per file, with the statements and branches behind it. */
 class MintFileCoverage extends vscode.FileCoverage {

@@ -27,7 +27,7 @@ from mintlang.source import SourceFile
 class Written:
     """What ``--write`` did: the problems met (one line each) and the changed files it left as they were."""
 
-    problems: list[str]
+    problems: tuple[str, ...]
     unwritten: frozenset[Path]
 
 
@@ -40,7 +40,7 @@ def write_changed(applications: Sequence[Sequence[Migrated]]) -> Written:
         ]
     except Unwritable as error:
         everything = frozenset(item.file.path for application in applications for item, _ in _changed(application))
-        return Written([f"{error}; nothing was written"], everything)
+        return Written((f"{error}; nothing was written",), everything)
     problems: list[str] = []
     left: list[Path] = []
     for application, plan in zip(applications, plans, strict=True):
@@ -60,7 +60,7 @@ def write_changed(applications: Sequence[Sequence[Migrated]]) -> Written:
         total = sum(len(plan) for plan in plans)
         names = ", ".join(map(str, left))
         problems.append(f"{total - len(left)} of {plural(total, 'file')} written; not written: {names}")
-    return Written(problems, frozenset(left))
+    return Written(tuple(problems), frozenset(left))
 
 
 def _changed(application: Sequence[Migrated]) -> list[tuple[Migrated, str]]:

@@ -24,7 +24,7 @@ from mintlang.controllers import profile
 from mintlang.diagnostics import Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Controller, KeywordKind
+from mintlang.keyworddb.model import Controller, Keyword, KeywordKind
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
@@ -84,8 +84,7 @@ def _verdict(
         return 17, f"{keyword.name} is not available on {profile(controller).title}"
     attributes = keyword.attributes_for(controller)
     if attributes is None:
-        read_only = bool(keyword.formats) and all(text.startswith("v =") for text in keyword.formats)
-        return (2000, f"{name} is read only and cannot be given a value") if use is Use.WRITE and read_only else None
+        return _verdict_from_formats(keyword, use)
     if use is Use.WRITE and not attributes.write:
         what = "a command" if attributes.command else "read only"
         return 2000, f"{name} is {what} and cannot be given a value"
@@ -99,4 +98,17 @@ def _verdict(
         return 2003, f"{name} takes a value with '=': '{name} = …'"
     if use is Use.COMMAND and has_arguments and not keyword.takes_operands:
         return 2003, f"{name} takes no operands, only its axes ('{keyword.formats[0]}')"
+    return None
+
+
+def _verdict_from_formats(keyword: Keyword, use: Use) -> tuple[int, str] | None:
+    """Error 2000 for a write to a keyword the manual gives no attribute table, judged by its
+    formats: read only when every format reads it (``v = ERR``), a command when none assigns it
+    (``BEEP``, ``CLS``, ``TRON``: 2000 is for a command given a value too, 000:18905-18908)."""
+    if use is not Use.WRITE or not keyword.formats:
+        return None
+    if all(text.startswith("v =") for text in keyword.formats):
+        return 2000, f"{keyword.name} is read only and cannot be given a value"
+    if keyword.kind is KeywordKind.COMMAND and not any("=" in text for text in keyword.formats):
+        return 2000, f"{keyword.name} is a command and cannot be given a value"
     return None

@@ -4,7 +4,7 @@ Inputs are sampled once per servo tick from the world's electrical levels.
 ``INPUTACTIVELEVEL`` turns a level into an active state; edge-triggered inputs
 (``INPUTMODE``) latch the edges ``INPUTPOSTRIGGER``/``INPUTNEGTRIGGER`` select,
 and reading ``IN`` clears the latches it returns. Outputs and the relay only
-record what the program drives, for the report and the trace.
+record what the program and the drive enables (``drive_enable.py``) drive, for the report and the trace.
 """
 
 from __future__ import annotations
@@ -21,6 +21,7 @@ INVALID_INPUT = 7
 INVALID_OUTPUT = 8
 INVALID_CHANNEL = 4
 OUT_OF_RANGE = 3
+RELAY0 = 1000  # _RELAY0, the relay as a drive enable output (000:9356-9368)
 
 
 def _check(channel: int, channels: ChannelRange, code: int) -> int:
@@ -50,6 +51,7 @@ class DigitalIO:
         self.out = 0  # OUT as last written
         self.output_active_level = (1 << (self.outputs.high + 1)) - 1
         self.relay = 0
+        self.drive_enable_outputs: Callable[[], frozenset[int]] = frozenset  # outputs (or RELAY0) a drive owns
         self.adc = [0.0] * (self.adc_channels.high + 1)
 
     # ------------------------------------------------------------------ ticks
@@ -151,6 +153,16 @@ class DigitalIO:
 
         return write
 
+    def drive_enable(self, output: int, enabled: bool) -> None:
+        """A drive enable output follows its drive: active while enabled (000:9281-9286); -1 drives nothing."""
+        if output == RELAY0:
+            self.relay = int(enabled)
+        elif output >= 0:
+            self.out = self.out | 1 << output if enabled else self.out & ~(1 << output)
+
+    def _driven_bits(self) -> int:
+        return sum(1 << output for output in self.drive_enable_outputs() if output != RELAY0)
+
     def _read_out(self, channel: int | None) -> float:
         if channel is None:
             return float(self.out)
@@ -161,16 +173,20 @@ class DigitalIO:
             limit = 1 << (self.outputs.high + 1)
             if not 0 <= value < limit:
                 raise MintError(OUT_OF_RANGE, detail=f"OUT takes 0 to {limit - 1}")
-            self.out = int(value)
+            driven = self._driven_bits()  # a drive's output is not the program's to set (spec IO-3 RC)
+            self.out = int(value) & ~driven | self.out & driven
             return
         bit = 1 << _check(channel, self.outputs, INVALID_OUTPUT)
+        if bit & self._driven_bits():
+            return
         self.out = self.out | bit if value else self.out & ~bit
 
     def _write_oal(self, _: int | None, value: float) -> None:
         self.output_active_level = int(value) & 0xFFFFFF
 
     def _write_relay(self, _: int | None, value: float) -> None:
-        self.relay = 1 if value else 0
+        if RELAY0 not in self.drive_enable_outputs():  # a drive's relay is not RELAY's to set (000:15477-15480)
+            self.relay = 1 if value else 0
 
     def _read_adc(self, channel: int | None) -> float:
         if channel is None:

@@ -69,6 +69,10 @@ class Request:
     instant: bool = False  # acts when reached and moves nothing (a MintMT output move): the next starts with it
 
 
+def _no_output(enabled: bool) -> None:
+    """A drive with no enable output wired (a controller built without I/O)."""
+
+
 class Axis:
     def __init__(self, number: int, controller: Controller, clock: Clock, plant: Plant | None = None) -> None:
         self.number = number
@@ -78,6 +82,7 @@ class Axis:
         self.plant: Plant = plant if plant is not None else IdealPlant()
         self.servo = ServoLoop()
         self.enabled = False  # drives start disabled (IO-7 RC)
+        self.drive_signal: Callable[[bool], None] = _no_output  # drives the DRIVEENABLEOUTPUT (drive_enable.py)
         self.axiserror = 0  # latched (AXISERROR)
         self.status = 0  # instantaneous conditions (AXISSTATUS)
         self.move: Move | None = None
@@ -486,9 +491,11 @@ class Axis:
         if not self.enabled and type(self.plant) is not IdealPlant:
             self.resync()
         self.enabled = True
+        self.drive_signal(True)
 
     def disable(self) -> None:
         """Drive off; a disabled axis has no following error, so AXISSTATUS stops showing one."""
         self.enabled = False
+        self.drive_signal(False)
         self.dac = 0.0
         self.status &= ~ER_FOLLOWING

@@ -295,7 +295,7 @@ class Motion:
             axis.axiserror = 0
             axis.resync()
             axis.position_offset = float(axis.measured)
-            axis.enabled = True
+            axis.enable()
         return False
 
     def default(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:

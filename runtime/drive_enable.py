@@ -1,0 +1,55 @@
+"""Drive enable outputs (IO-7): the output or relay ``DRIVEENABLEOUTPUT`` assigns to an axis follows its drive.
+
+``DRIVEENABLE`` drives the assigned output active or inactive (000:9281-9286), an error that disables
+the drive turns it off and ``RESET`` turns it on (000:14935-14939, 15625-15627). While assigned, the
+output belongs to the drive: ``OUT`` and ``RELAY`` do not change it (000:15477-15480, spec IO-3 RC).
+Assigning an output changes nothing by itself; the next change of the drive drives it (000:2706).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+from mintlang.runtime.errors import MintError
+from mintlang.runtime.io import RELAY0, DigitalIO
+from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer
+from mintlang.runtime.motion.axis import Axis
+
+NO_OUTPUT = -1  # the drive's internal state alone (000:2703-2704)
+OUT_OF_RANGE = 3
+
+
+def install(table: KeywordTable, axes: Sequence[Axis], io: DigitalIO) -> None:
+    """Each axis drives its assigned output; ``DRIVEENABLEOUTPUT`` accepts only what the controller has."""
+
+    def assigned() -> frozenset[int]:
+        return frozenset(int(axis.parameters["DRIVEENABLEOUTPUT"]) for axis in axes) - {NO_OUTPUT}
+
+    io.drive_enable_outputs = assigned
+    for axis in axes:
+        axis.drive_signal = _signal(axis, io)
+    access = table.get("DRIVEENABLEOUTPUT")
+    if access is not None and access.write is not None:
+        table.replace("DRIVEENABLEOUTPUT", write=_checked(access.write, io))
+
+
+def _signal(axis: Axis, io: DigitalIO) -> Callable[[bool], None]:
+    return lambda enabled: io.drive_enable(int(axis.parameters["DRIVEENABLEOUTPUT"]), enabled)
+
+
+def _checked(write: Writer, io: DigitalIO) -> Writer:
+    """``write`` for -1, an output of the simulated controller or ``_RELAY0``; error 3 for anything else."""
+
+    def checked(channels: Channels | None, values: Values) -> bool:
+        for place, value in enumerate(values):
+            channel = channels[place] if channels is not None and place < len(channels) else None
+            if value is not None and not _names_an_output(value, io):
+                detail = f"DRIVEENABLEOUTPUT = {value:g}: -1, an output {io.outputs} or _RELAY0"
+                raise MintError(OUT_OF_RANGE, channel, detail)
+        return write(channels, values)
+
+    return checked
+
+
+def _names_an_output(value: float, io: DigitalIO) -> bool:
+    return value in (NO_OUTPUT, RELAY0) or (value == int(value) and int(value) in io.outputs)

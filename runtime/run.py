@@ -10,6 +10,7 @@ raises them when it runs, so ``#ONERROR`` sees them.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import partial
@@ -63,6 +64,7 @@ class _CompileError:
 
 
 _ORDER = {Unit.CONFIGURATION: 0, Unit.PROGRAM: 1}  # compile order of the files
+_LINE_END = re.compile(r"[\r\n]|$")
 
 
 def _compile_error(analysis: mintlang.Analysis, errors: ErrorStyle) -> _CompileError | None:
@@ -85,7 +87,9 @@ def _compile_error(analysis: mintlang.Analysis, errors: ErrorStyle) -> _CompileE
     _, _, code, unit, span, explanation = min(found, key=lambda problem: problem[:2])
     document = model.document(unit)
     line = document.line_index.position(span.start).line
-    text = document.source[span.start : span.end]
+    start = document.line_index.line_start(line)
+    # the whole line, as a run-time error quotes its statement: the span alone may be empty (a missing TO)
+    text = document.source[start : _LINE_END.search(document.source, start).start()].strip()
     message = errors.compiled(code, unit.value, line, explanation)
     return _CompileError(code, unit, line, text, message, errors.compiled(code, unit.value, line))
 

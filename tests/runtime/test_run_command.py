@@ -182,6 +182,14 @@ def test_a_compile_error_is_reported_with_its_number_and_line_in_the_json_report
     assert report["message"].startswith("C2009")
 
 
+def test_a_compile_error_quotes_the_line_it_is_on_even_where_nothing_is_written(tmp_path: Path) -> None:
+    # the FOR has no TO (error 2008, 000:18949-18952): the place of the error is the end of the statement, and the
+    # stop line showed ':  —' with nothing between; it quotes the line, as a run-time error quotes its statement
+    result = mint_run(write(tmp_path, "no_to.mnt", "DIM i\r\n  FOR i = 1 : NEXT\r\nPRINT i\r\n"))
+    assert result.exit_code == 1
+    assert "at program line 2: FOR i = 1 : NEXT — C2008: PROGRAM TO expected" in result.stderr
+
+
 def test_a_run_paced_to_real_time_stops_at_the_wall_clock_limit_even_inside_a_long_wait(tmp_path: Path) -> None:
     program = write(tmp_path, "wait.mnt", "PRINT 1\nWAIT = 5000\nPRINT 2\n")
     result = mint_run(program, "--realtime", "--max-wall-s", "0.5", "--report", "json")

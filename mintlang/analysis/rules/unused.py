@@ -1,10 +1,13 @@
 """Variables, labels and macros that are defined but never used.
 
-Event handlers are called by the controller, so they are never unused. Nor is
-a routine of nothing but DIMs: never calling it is the manual's way to keep
-variables non-volatile (3.2.5). A variable named in a statement that could not
-be parsed may be used there, and a DEFINE that cannot name a macro (3005)
-defines none: neither gets a second finding.
+Event handlers are called by the controller, so they are never unused. In Mint
+v3 any assignment, FOR or INPUT declares a variable (001:1348-1360): that first
+write is a use as well, as the write after a v4 DIM is, so only a DIM declares
+a v3 variable that can go unused (``FOR i = 0 TO 10`` counting moves is no
+unused ``i``, 001:5430-5436). Nor is a routine of nothing but DIMs: never
+calling it is the manual's way to keep variables non-volatile (3.2.5). A
+variable named in a statement that could not be parsed may be used there, and a
+DEFINE that cannot name a macro (3005) defines none: neither gets a second finding.
 """
 
 from __future__ import annotations
@@ -14,6 +17,8 @@ from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.traversal import Facts
+from mintlang.diagnostics import Span
+from mintlang.dialect import Dialect
 from mintlang.semantic.events import event_of
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
@@ -25,6 +30,9 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     symbols = model.symbols
     unused = [symbol for symbol in symbols.variables.values() if symbol.definitions and not symbol.references]
+    if unused and model.program.dialect is Dialect.V3:
+        dimmed = _declared_by_dim(facts)
+        unused = [symbol for symbol in unused if (symbol.definitions[0].unit, symbol.definitions[0].span) in dimmed]
     broken = _names_in_broken_statements(facts) if unused else set()
     for symbol in unused:
         if symbol.identity not in broken:
@@ -56,6 +64,16 @@ def check(facts: Facts) -> Iterator[Finding]:
 
 
 _WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
+def _declared_by_dim(facts: Facts) -> set[tuple[Unit, Span]]:
+    """Where a DIM names the variable it declares, as (unit, span in the file)."""
+    return {
+        (unit, line.span(statement.name.span))
+        for unit, line, _ in facts.lines
+        for statement in n.flatten_statements(line.syntax.statements)
+        if type(statement) is n.Dim
+    }
 
 
 def _names_in_broken_statements(facts: Facts) -> set[str]:

@@ -1,6 +1,7 @@
 """``mint-migrate`` (also ``mint migrate``): migrate Mint v3 files to Mint v4.
 
-Default is a dry run that prints a unified diff and the report. ``--write``
+Default is a dry run that prints a unified diff and the report (``--diff``
+names it, as ``mint check --diff`` and ruff spell it). ``--write``
 rewrites the files in place (atomically, in their own encoding and newlines,
 through symbolic links, never over an edit made meanwhile; see ``writing`` and
 ``atomic``), ``--check`` only says whether anything would change, ``--stdout``
@@ -62,6 +63,7 @@ Exit status:
 )
 @click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
 @click.option("--write", is_flag=True, help="Rewrite the files in place.")
+@click.option("--diff", is_flag=True, help="Print the changes as a unified diff; write nothing (the default).")
 @click.option("--check", is_flag=True, help="Exit 1 when anything would be rewritten; write nothing.")
 @click.option("--stdout", "to_stdout", is_flag=True, help="Print the migrated text of one file.")
 @click.option(

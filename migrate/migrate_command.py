@@ -51,6 +51,7 @@ def _list_rules(console: Console) -> None:
 def execute(  # noqa: PLR0917 - click passes every option as an argument
     paths: tuple[Path, ...],
     write: bool,
+    diff: bool,
     check: bool,
     to_stdout: bool,
     config: Path | None,
@@ -79,7 +80,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         (_list_rewrites if to == "mintmt" else _list_rules)(console(color))
         return
     try:
-        mode = _mode(write=write, check=check, to_stdout=to_stdout, verify=verify)
+        mode = _mode(write=write, diff=diff, check=check, to_stdout=to_stdout, verify=verify)
         if to == "mintmt":
             _refuse_v3_options(only, skip, opt_in, v3_controller)
         options = verifying.Options(scenario_paths, until_ms, v3_controller, drives)
@@ -141,13 +142,14 @@ def _fail(message: str) -> NoReturn:
     sys.exit(NOT_DONE)
 
 
-def _mode(*, write: bool, check: bool, to_stdout: bool, verify: bool) -> str | None:
-    """The one mode asked for: ``--check --write`` must not write, so two are a usage error."""
-    modes = (("write", write), ("check", check), ("stdout", to_stdout), ("verify", verify))
+def _mode(*, write: bool, diff: bool, check: bool, to_stdout: bool, verify: bool) -> str | None:
+    """The one mode asked for (None: the diff, asked for or not): ``--diff --write`` must not
+    write, so two are a usage error."""
+    modes = (("write", write), ("diff", diff), ("check", check), ("stdout", to_stdout), ("verify", verify))
     given = [name for name, on in modes if on]
     if len(given) > 1:
         raise UsageError(f"{', '.join('--' + name for name in given)}: choose one of these modes")
-    return given[0] if given else None
+    return given[0] if given and given[0] != "diff" else None
 
 
 def _tidy(items: list[Migrated], mode: str | None) -> None:

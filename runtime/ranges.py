@@ -49,12 +49,31 @@ def ranged(
 
 
 def check_range(keyword: str, value: float, limits: Bounds, channel: int | None = None) -> float:
-    """``value`` if ``limits`` accept it; error 3 on ``channel`` otherwise."""
-    if limits.allowed is not None and value not in limits.allowed:
-        raise MintError(OUT_OF_RANGE, channel, f"{keyword} = {value:g}")
+    """``value`` if ``limits`` accept it; error 3 on ``channel`` otherwise, saying what the keyword takes."""
     low, high = limits.minimum, limits.maximum
+    refused = limits.allowed is not None and value not in limits.allowed
     too_low = low is not None and (value <= low if limits.exclusive_minimum else value < low)
     too_high = high is not None and (value >= high if limits.exclusive_maximum else value > high)
-    if too_low or too_high:
-        raise MintError(OUT_OF_RANGE, channel, f"{keyword} = {value:g}")
+    if refused or too_low or too_high:
+        raise MintError(OUT_OF_RANGE, channel, f"{keyword} = {shown(value)}; it takes {accepted(limits)}")
     return value
+
+
+def shown(value: float) -> str:
+    """A value as the program wrote it: every digit of a whole number (16777216, not 1.67772e+07)."""
+    return str(int(value)) if value.is_integer() else f"{value:.7g}"
+
+
+def accepted(limits: Bounds) -> str:
+    """What ``limits`` accept, in words: ``2 to 16777215``, ``more than 0``, ``0, 1, 2, 3 or 5``."""
+    if limits.allowed is not None:
+        *others, last = (shown(value) for value in sorted(limits.allowed))
+        return f"{', '.join(others)} or {last}" if others else last
+    low, high = limits.minimum, limits.maximum
+    if low is not None and high is not None and not (limits.exclusive_minimum or limits.exclusive_maximum):
+        return f"{shown(low)} to {shown(high)}"
+    bounds = [
+        f"{'more than' if limits.exclusive_minimum else 'at least'} {shown(low)}" if low is not None else "",
+        f"{'less than' if limits.exclusive_maximum else 'at most'} {shown(high)}" if high is not None else "",
+    ]
+    return " and ".join(bound for bound in bounds if bound)

@@ -48,14 +48,21 @@ def ranged(
     return lambda channel, value: write_one(channel, check_range(keyword, value, limits, channel))
 
 
-def check_range(keyword: str, value: float, limits: Bounds, channel: int | None = None) -> float:
-    """``value`` if ``limits`` accept it; error 3 on ``channel`` otherwise, saying what the keyword takes."""
+def check_range(keyword: str, value: float, limits: Bounds, channel: int | None = None, scale: float = 1.0) -> float:
+    """``value`` if ``limits`` accept it; error 3 on ``channel`` otherwise, saying what the keyword takes.
+
+    A scaled keyword's range is for the value multiplied by its axis's ``scale`` (000:5648-5649).
+    """
+    checked = value * scale
     low, high = limits.minimum, limits.maximum
-    refused = limits.allowed is not None and value not in limits.allowed
-    too_low = low is not None and (value <= low if limits.exclusive_minimum else value < low)
-    too_high = high is not None and (value >= high if limits.exclusive_maximum else value > high)
+    refused = limits.allowed is not None and checked not in limits.allowed
+    too_low = low is not None and (checked <= low if limits.exclusive_minimum else checked < low)
+    too_high = high is not None and (checked >= high if limits.exclusive_maximum else checked > high)
     if refused or too_low or too_high:
-        raise MintError(OUT_OF_RANGE, channel, f"{keyword} = {shown(value)}; it takes {accepted(limits)}")
+        written = f"{keyword} = {shown(value)}"
+        if scale != 1.0:
+            written += f" is {shown(checked)} at SCALE {shown(scale)}"
+        raise MintError(OUT_OF_RANGE, channel, f"{written}; it takes {accepted(limits)}")
     return value
 
 

@@ -126,7 +126,8 @@ class Axis:
         return value / self.scale if name in SCALED else value
 
     def set(self, name: str, value: float) -> None:
-        check_range(name, value, self.bounds[name], self.number)
+        scale = self.scale if name in SCALED else 1.0
+        check_range(name, value, self.bounds[name], self.number, scale)
         if name == "CONFIG" and value != 0:
             self.open_loop_dac = None  # back to servo (or stepper) control: the loop drives the DAC again
         if name == "SCALE":
@@ -134,7 +135,7 @@ class Axis:
                 raise MintError(3, self.number, "SCALE must be positive")
             if self.busy():
                 raise MintError(MOTION_IN_PROGRESS, self.number, "SCALE can only change on an idle axis")
-        self.parameters[name] = value * self.scale if name in SCALED else value
+        self.parameters[name] = value * scale
         if name in GUARDS:
             self.guarded = self._guarded()
         if name in GAINS:

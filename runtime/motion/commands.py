@@ -30,6 +30,7 @@ from mintlang.runtime.motion.moves import Geometry, PlannedMove, next_profiler_t
 from mintlang.runtime.motion.parameters import DEFAULTS
 from mintlang.runtime.motion.paths import PATH_MODES, PathSegment
 from mintlang.runtime.motion.profile import plan_velocity
+from mintlang.runtime.ranges import check_range, table_bounds
 from mintlang.runtime.scenario.stimulus import IndexPulse
 
 INVALID_AXIS = 2
@@ -191,7 +192,9 @@ class Motion:
     def jog(self, channels: Channels | None, values: Values) -> bool:
         """JOG: ramp to a constant speed at once, no GO (MP-16); JOG = 0 ramps down and ends the move."""
         pairs = self._pairs(channels, values)
-        for axis, _ in pairs:
+        speeds = table_bounds("JOG", self.profile.controller)
+        for axis, value in pairs:
+            check_range("JOG", value, speeds, axis.number, axis.scale)  # a scaled range (000:5648-5649)
             axis.require_ready()
             move = axis.move
             if move is not None and (move.mode not in (MD_JOG, MD_LINEAR) or len(move.axes) > 1):
@@ -224,7 +227,9 @@ class Motion:
         """TORQUE: the DAC at once, servo loop off, until a stop (SL-9); it cannot blend from a
         homing cycle, a vector or a circle [000:16865-16871]."""
         pairs = self._pairs(channels, values)
-        for axis, _ in pairs:
+        levels = table_bounds("TORQUE", self.profile.controller)
+        for axis, value in pairs:
+            check_range("TORQUE", value, levels, axis.number)
             axis.require_ready()
             move = axis.move
             homing = axis.pending_mode == MD_HOMING or (move is not None and move.mode == MD_HOMING)

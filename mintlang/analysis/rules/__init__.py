@@ -19,6 +19,7 @@ from mintlang.analysis.rules import (
     declarations,
     events,
     flow,
+    functions,
     hints,
     keyword_usage,
     limits,
@@ -58,6 +59,7 @@ RULES: tuple[Rule, ...] = (
     Rule("keyword-usage", each_line=keyword_usage.each_line, dialects=_V4_ATTRIBUTES),
     Rule("addressing", each_line=addressing.each_line, dialects=_V4_ATTRIBUTES),
     Rule("values", each_line=values.each_line, dialects=_V4_ATTRIBUTES),
+    Rule("functions", each_line=functions.each_line, dialects=frozenset({Dialect.V4})),  # MintMT's MOVER(0) is no call
     Rule("v3-access", each_line=v3_access.each_line, dialects=frozenset({Dialect.V3})),
     Rule("arrays", arrays.check, arrays.each_line),
     Rule("events", events.check),

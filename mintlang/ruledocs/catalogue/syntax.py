@@ -14,15 +14,16 @@ GROUP = Group(
             catches="A statement the grammar of Mint does not allow: a bracket opened and never closed, an "
             "operator with nothing after it, a command used where a value is needed, an expression where the "
             "syntax takes only a number or a simple variable (an array's size, an axis in brackets), INPUT into "
-            "an array element, a string that is not closed before the end of the line, or an EXIT outside any "
-            "loop of its subroutine (raised when it runs: an EXIT never leaves a caller's loop).",
+            "an array element, a string that is not closed before the end of the line, a function given more or "
+            "fewer values than its format takes (`POW(2)`, `SIN(1, 2)`), or an EXIT outside any loop of its "
+            "subroutine (raised when it runs: an EXIT never leaves a caller's loop).",
             why="The compiler stops at the first statement it cannot read and the program never starts. The "
             "controller's message names only the line, not what is wrong in it.",
             example=Example(
                 before="DIM a = 1\nDIM b = 2\nIF (a > b THEN PRINT a\n",
                 after="DIM a = 1\nDIM b = 2\nIF (a > b) THEN PRINT a\n",
             ),
-            manual=("v4:18920", "v4:4611", "v4:9167", "v4:18430", "v4:10224"),
+            manual=("v4:18920", "v4:4611", "v4:9167", "v4:18430", "v4:10224", "v4:15152"),
             fix="The message says what was found where, and what to write depends on the intent.",
             safety=FixSafety.NONE,
         ),

@@ -1,0 +1,78 @@
+"""Functions given as many values as their formats take (error 2003 otherwise).
+
+The guide prints each function's values in brackets: ``POW(x, y)`` takes two,
+``SIN(<angle>)`` one (000:15152, 000:15944), ``COMMS( {node, } element)`` one
+or two, braces marking what may be left out (10.1, 000:5578-5579). A call with
+more or fewer does not match the statement's syntax, which the compiler rejects
+(#2003, 000:18920-18925). The counts come from the keyword database's formats,
+so a keyword without a bracketed format is not checked.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass
+from functools import cache
+
+from mintlang.analysis.findings import Finding, mint_error
+from mintlang.analysis.traversal import LineScope
+from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
+from mintlang.syntax import nodes as n
+
+_OPTIONAL = re.compile(r"\{([^}]*)\}")
+
+
+@dataclass(frozen=True, slots=True)
+class _Arity:
+    """How many values a function takes, and the format that says so."""
+
+    least: int
+    most: int
+    format: str
+
+    def holds(self, count: int) -> bool:
+        return self.least <= count <= self.most
+
+    def expected(self) -> str:
+        counted = str(self.least) if self.least == self.most else f"{self.least} or {self.most}"
+        return f"{counted} value{'' if self.most == 1 else 's'}"
+
+
+def each_line(scope: LineScope) -> Iterator[Finding]:
+    for call in _calls(scope.facts.statements):
+        arity = _arity(call.function, scope.dialect)
+        if arity is not None and not arity.holds(len(call.arguments)):
+            given = len(call.arguments)
+            detail = f"{call.function} takes {arity.expected()} ({arity.format}), not {given}"
+            yield Finding(scope.unit, mint_error(2003, call.span, detail))
+
+
+def _calls(statements: tuple[n.Statement, ...]) -> Iterator[n.Call]:
+    """Every call a line makes: in its expressions, and as a statement (``CAMTABLE(0, a, NULL)``)."""
+    for statement in statements:
+        if type(statement) is n.FunctionStatement:
+            yield statement.call
+        for expression in n.expressions_of(statement):
+            for node in n.walk_expression(expression):
+                if type(node) is n.Call:
+                    yield node
+
+
+@cache
+def _arity(name: str, dialect: Dialect) -> _Arity | None:
+    """The values ``name``'s first bracketed format takes, or None when no format brackets them."""
+    keyword = database().keywords_of(dialect).get(name)
+    for text in keyword.formats if keyword is not None else ():
+        found = re.search(rf"\b{re.escape(name)}\s*\(([^)]*)\)", text)
+        if found is not None:
+            inside = found[1]
+            optional = sum(len(_items(group)) for group in _OPTIONAL.findall(inside))
+            required = len(_items(_OPTIONAL.sub("", inside)))
+            return _Arity(required, required + optional, text.strip())
+    return None
+
+
+def _items(text: str) -> list[str]:
+    return [item for item in (part.strip() for part in text.split(",")) if item]

@@ -236,8 +236,10 @@ class Events:
             table.register(dispatch.disable_keyword, read=self._disabled_mask(dispatch), write=per_channel(disable))
             force = ranged(dispatch.pending_keyword, controller, self._force(dispatch))
             table.register(dispatch.pending_keyword, read=self._pending_mask(dispatch), write=per_channel(force))
-        table.register("IMASK", read=lambda _: float(self.imask), write=per_channel(self._mask))
-        table.register("IPEND", read=lambda _: float(self._bits(EventClass.INPUT)), write=per_channel(self._ipend))
+        mask = ranged("IMASK", controller, self._mask)
+        table.register("IMASK", read=lambda _: float(self.imask), write=per_channel(mask))
+        ipend = ranged("IPEND", controller, self._ipend)
+        table.register("IPEND", read=lambda _: float(self._bits(EventClass.INPUT)), write=per_channel(ipend))
         timer = ranged("TIMEREVENT", controller, self._timer)
         table.register("TIMEREVENT", read=lambda _: float(self.timer_period), write=per_channel(timer))
 

@@ -16,6 +16,7 @@ from mintlang.runtime.clock import Clock
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.events import EventClass, Events
 from mintlang.runtime.keywords import KeywordTable, per_channel
+from mintlang.runtime.ranges import ranged
 
 INVALID_INPUT = 7
 INVALID_OUTPUT = 8
@@ -103,10 +104,12 @@ class DigitalIO:
         ):
             table.register(name, read=self._bank_reader(attribute), write=per_channel(self._bank_writer(attribute)))
         table.register("OUT", read=self._read_out, write=per_channel(self._write_out))
+        active_level = ranged("OUTPUTACTIVELEVEL", table.controller, self._write_oal)
         table.register(
-            "OUTPUTACTIVELEVEL", read=lambda _: float(self.output_active_level), write=per_channel(self._write_oal)
+            "OUTPUTACTIVELEVEL", read=lambda _: float(self.output_active_level), write=per_channel(active_level)
         )
-        table.register("RELAY", read=lambda _: float(self.relay), write=per_channel(self._write_relay))
+        relay = ranged("RELAY", table.controller, self._write_relay)
+        table.register("RELAY", read=lambda _: float(self.relay), write=per_channel(relay))
         table.register("ADC", read=self._read_adc)
 
     def _watch(self) -> None:

@@ -30,7 +30,7 @@ from mintlang.runtime.motion.moves import Geometry, PlannedMove, next_profiler_t
 from mintlang.runtime.motion.parameters import DEFAULTS
 from mintlang.runtime.motion.paths import PATH_MODES, PathSegment
 from mintlang.runtime.motion.profile import plan_velocity
-from mintlang.runtime.ranges import check_range, table_bounds
+from mintlang.runtime.ranges import check_range, ranged, table_bounds
 from mintlang.runtime.scenario.stimulus import IndexPulse
 
 INVALID_AXIS = 2
@@ -351,7 +351,8 @@ class Motion:
             table.register(name, read=self._switch(inputs))
         for name, rate in (("ACCELTIME", "ACCEL"), ("DECELTIME", "DECEL")):
             table.register(name, write=per_channel(self._ramp_time(rate)))
-        table.register("DRIVEENABLE", read=lambda ch: float(self.axis(ch).enabled), write=per_channel(self._enable))
+        enable = ranged("DRIVEENABLE", self.profile.controller, self._enable)
+        table.register("DRIVEENABLE", read=lambda ch: float(self.axis(ch).enabled), write=per_channel(enable))
         table.register("POS", read=self._pos, write=per_channel(self._write_pos))
         table.register("ENCODER", read=self._encoder, write=per_channel(self._write_encoder))
         table.register("VEL", read=self._vel)

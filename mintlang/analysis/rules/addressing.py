@@ -3,8 +3,10 @@
 Brackets list axes (3.1.1): an empty place is 2001, more axes than the
 controller has or more values than listed axes is 2017, an axis listed twice
 is 2018, and only constants or simple variables may stand in them (an
-expression is a syntax error, 2003). Channel keywords take the dot only
-(``ADC[1]`` is invalid). Constant numbers out of the controller's range give
+expression is a syntax error, 2003). A circle moves the two axes of its
+brackets with three values, ``CIRCLEA[axis0,axis1] = <centre0>,<centre1>,<angle>``
+(000:8152, 000:8215): a third axis or a fourth value is 2017, a missing axis
+2001. Channel keywords take the dot only (``ADC[1]`` is invalid). Constant numbers out of the controller's range give
 the motion library's errors: 2 axis, 4 channel, 7 input, 8 output, 26 CAN
 node, 31 CAN bus, 35/36 terminal (Dot Parameters table, chapter 12.2).
 """
@@ -28,7 +30,8 @@ _CAPTURE_CHANNELS = ChannelRange(0, 5)  # the same on every controller
 _CAN_BUSES = ChannelRange(1, 2)
 _CAN_NODES = ChannelRange(0, 63)  # chapter 12, error 26
 _SERIAL_TERMINALS = frozenset({"_TMRS232", "_TMRS485"})
-_MORE_VALUES_THAN_AXES = frozenset({"CIRCLEA", "CIRCLER"})  # centre, centre, angle on two axes
+_CIRCLES = frozenset({"CIRCLEA", "CIRCLER"})
+_CIRCLE_AXES, _CIRCLE_VALUES = 2, 3  # centre, centre and angle on two axes
 
 # Which range a channel keyword's number is checked against, and the error it gives.
 _Channels = Callable[[ControllerProfile], ChannelRange | None]
@@ -90,7 +93,7 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
         # Nothing addressed: the default axes, whatever AXES made them, except on a one-axis
         # controller, where they can only be axis 0 (000:572, #2017 at 19047).
         if keyword.addressing is Addressing.AXIS and scope.controller.axis_count == 1:
-            yield from _values_for_axes(use, 1, keyword.name)
+            yield from _values_for_axes(use, 1)
         return
     if keyword.name.startswith("REMOTE"):
         yield from _can_address(use)
@@ -108,26 +111,45 @@ def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:
         return
     if not selector.dot:
         yield from _axis_list(use.unit, selector, scope)
-        yield from _values_for_axes(use, len(selector.axes), name)
+        if name in _CIRCLES:
+            yield from _circle(use, selector, name)
+        else:
+            yield from _values_for_axes(use, len(selector.axes))
         return
     for item in selector.items[:1]:
         yield from _axis_number(use.unit, item, scope)
 
 
-def _values_for_axes(use: KeywordUse, axes: int, name: str) -> Iterator[Finding]:
+def _values_for_axes(use: KeywordUse, axes: int) -> Iterator[Finding]:
     """More values written than there are axes to take them: 2017 at the first one too many."""
+    detail = f"ax{'is' if axes == 1 else 'es'}"
+    yield from _too_many_values(use, axes, lambda count: f"{count} values for {axes} {detail}")
+
+
+def _circle(use: KeywordUse, selector: n.Selector, name: str) -> Iterator[Finding]:
+    """Two axes in the brackets and at most three values (a value left out is not known to be wrong)."""
+    shape = f"{name}[axis0,axis1] = <centre0>,<centre1>,<angle>"
+    listed = len(selector.axes)
+    detail = f"{shape} moves two axes, {listed} listed"
+    if listed > _CIRCLE_AXES:
+        yield Finding(use.unit, mint_error(2017, selector.span, detail))
+    elif listed < _CIRCLE_AXES:
+        yield Finding(use.unit, mint_error(2001, selector.span, detail))
+    yield from _too_many_values(use, _CIRCLE_VALUES, lambda count: f"{count} values; {shape} takes three")
+
+
+def _too_many_values(use: KeywordUse, most: int, detail: Callable[[int], str]) -> Iterator[Finding]:
+    """2017 at the first value past ``most`` in a write."""
     statement = use.statement
     if (
         use.use is Use.WRITE
         and isinstance(statement, n.KeywordStatement)
         and statement.values is not None
-        and len(statement.values) > axes
-        and name not in _MORE_VALUES_THAN_AXES
+        and len(statement.values) > most
     ):
-        extra = statement.values[axes]
+        extra = statement.values[most]
         span = extra.span if extra is not None else statement.span
-        detail = f"{len(statement.values)} values for {axes} ax{'is' if axes == 1 else 'es'}"
-        yield Finding(use.unit, mint_error(2017, span, detail))
+        yield Finding(use.unit, mint_error(2017, span, detail(len(statement.values))))
 
 
 def _axis_list(unit: Unit, selector: n.Selector, scope: LineScope) -> Iterator[Finding]:

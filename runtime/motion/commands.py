@@ -464,6 +464,7 @@ class Motion:
 
     def _write_pos(self, channel: int | None, value: float) -> None:
         axis = self.axis(channel)
+        check_range("POS", value, table_bounds("POS", self.profile.controller), axis.number, axis.scale)
         if axis.busy():
             raise MintError(MOTION_IN_PROGRESS, axis.number, "POS can only be written on an idle axis")
         axis.position_offset = axis.measured - value * axis.scale
@@ -474,6 +475,7 @@ class Motion:
 
     def _write_encoder(self, channel: int | None, value: float) -> None:
         axis = self.axis(channel)
+        check_range("ENCODER", value, table_bounds("ENCODER", self.profile.controller), axis.number)
         axis.encoder_offset = axis.measured - value
 
     def _vel(self, channel: int | None) -> float:

@@ -680,6 +680,7 @@ class StatementCompiler:
         vm = self.vm
         clock = vm.clock
         store = self._setter(statement.target)
+        current = self.expressions.compile(statement.target)
         accept = self._entry_format(statement.using)
         prompted: set[tuple[int, int]] = set()
 
@@ -695,7 +696,7 @@ class StatementCompiler:
                 vm.wake_at = NEVER  # only a keystroke (a scheduled world change) can wake it
                 return True
             prompted.discard(key)
-            value = entry.value if entry.value is None else accept(entry.value)
+            value = entry.value if entry.value is None else accept(entry.value, current())
             if entry.retry or (entry.value is not None and value is None):  # ask again, at once if keys wait
                 vm.wake_at = clock.now + 1
                 return True
@@ -705,18 +706,19 @@ class StatementCompiler:
 
         return input_
 
-    def _entry_format(self, using: tuple[n.Expression, ...]) -> Callable[[float], float | None]:
-        """``INPUT .. USING int, frac`` (000:12223-12229): a sign only with a negative ``int``, and no more
-        than ``frac`` decimals (at most 3), the rest truncated; None for an entry to refuse. The field
-        editor's keys (space, backspace, '-' toggling the sign) are not modelled: keys arrive as a line."""
+    def _entry_format(self, using: tuple[n.Expression, ...]) -> Callable[[float, float], float | None]:
+        """``INPUT .. USING int, frac`` (000:12223-12230): a sign only with a negative ``int``, or when the
+        variable already holds a negative value, and no more than ``frac`` decimals (at most 3), the rest
+        truncated; None for an entry to refuse. The field editor's keys (space, backspace, '-' toggling the
+        sign) are not modelled: keys arrive as a line."""
         if not using:
-            return lambda value: value
+            return lambda value, _: value
         places = self.expressions.compile(using[0])
         fraction = self.expressions.compile(using[1]) if len(using) > 1 else (lambda: 0.0)
         number = self.number
 
-        def accept(value: float) -> float | None:
-            if value < 0 and places() >= 0:
+        def accept(value: float, existing: float) -> float | None:
+            if value < 0 and places() >= 0 and existing >= 0:
                 return None
             scale = 10.0 ** min(max(int(fraction()), 0), 3)
             return number(math.trunc(value * scale) / scale)

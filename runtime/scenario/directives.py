@@ -171,7 +171,7 @@ def _expectation(phrase: Phrase, origin: Origin, dialect: Dialect) -> Expectatio
     else:
         what = phrase.word("a keyword or variable")
         comparison = Comparison(phrase.choice("a comparison", tuple(Comparison)))
-        value = phrase.number("the expected value")
+        value = phrase.number("a value to compare with")
         tolerance = phrase.number("a tolerance") if phrase.accept("±") or phrase.accept("+-") else 0.0
         expectation = builders.value_expectation(
             what, comparison, value, tolerance=tolerance, at_ms=_when(phrase), origin=origin, dialect=dialect

@@ -214,7 +214,8 @@ def test_a_bad_directive_is_an_error_at_its_line(directive: str, message: str) -
 @pytest.mark.parametrize(
     ("sentence", "message"),
     [
-        ("POS.0 == 3", "expected the expected value as a number, not '='"),
+        ("POS.0 == 3", "expected a value to compare with as a number, not '='"),
+        ("POS.0 =", "expected a value to compare with at the end"),
         ("GO = 1", "GO is a command, not a value to expect"),
         ("stopped somewhere", "a run stops for one of end, error, until, deadlock, wall-limit, not 'somewhere'"),
         ("count = 1 ± -1", "a tolerance is not negative, not -1"),

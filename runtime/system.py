@@ -75,6 +75,7 @@ class System:
         table.register("INKEY", read=self._inkey)
         table.register("CLS", command=self._cls)
         table.register("BEEP", command=self._beep)
+        table.register("BOL", command=self._bol)
         table.register("LOCATE", command=self._locate)
         table.register("NODE", read=lambda _: float(self.node), write=per_channel(self._write_node))
         table.register("COMMS", read=lambda channel: self.comms.read(channel or 0), write=self._write_comms)
@@ -101,6 +102,10 @@ class System:
 
     def _beep(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         self.terminal.beep()
+        return False
+
+    def _bol(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        self.terminal.bol()
         return False
 
     def _locate(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:

@@ -6,7 +6,7 @@ for is watched as it streams past, so a check does not depend on what is kept.
 
 Output is plain text meant for a log, so screen-control commands degrade to
 what a log can show: ``CLS`` ends the current line, ``LOCATE`` pads with spaces
-to the column, ``BEEP`` writes the BEL character. The column is tracked because
+to the column, ``BEEP`` writes the BEL character and ``BOL`` a carriage return. The column is tracked because
 ``;`` tab stops depend on it.
 """
 
@@ -131,6 +131,11 @@ class Terminal:
         """``CLS``: a log cannot be cleared, so only the current line is ended and the cursor is at column 0."""
         if self.column:
             self.newline()
+
+    def bol(self) -> None:
+        """``BOL``: back to the start of the current line, the carriage return ``PRINT CHR(13)`` sends
+        (000:7401-7421); what is printed next overwrites the line on a screen."""
+        self.write("\r")
 
     def beep(self) -> None:
         """``BEEP``: the BEL character, the same byte ``PRINT CHR(7)`` sends."""

@@ -63,7 +63,7 @@ class V3System:
         self.vm = vm
 
     def register(self, table: KeywordTable, terminal: Terminal) -> None:
-        for name in ("OUT", "IMASK", "IPEND", "INKEY", "CLS", "BEEP", "LOCATE", "LIMIT"):
+        for name in ("OUT", "IMASK", "IPEND", "INKEY", "CLS", "BEEP", "BOL", "LOCATE", "LIMIT"):
             table.alias(name, self.v4.access(name))
         table.alias("STOPSW", self.v4.access("STOPSWITCH"))
         table.register("IN", read=self._input)

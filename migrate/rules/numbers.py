@@ -1,7 +1,8 @@
 """X-NUM: arithmetic that depended on v3's 1/256 fixed-point numbers.
 
-v3 keeps three decimal places of a literal and stores the fraction in 1/256
-steps, truncating: 0.15 is 38/256 and prints as 0.148 (v3:1168-1181). v4 uses
+v3 keeps three decimal places of a literal and rounds it to the nearest 256th:
+``PRINT 1.002`` shows 1.003 (257/256), 0.15 is 38/256 and shows 0.148
+(v3:1161-1181; the runtime's v3 numbers hold them so). v4 uses
 floating point (v4:715-741). Flagged: a literal whose v3 value shows differently
 at three decimals, an ``=``/``<>`` test on a fractional value (a literal or a
 division), and a FOR with a fractional bound or STEP (the loop count can change).
@@ -10,27 +11,29 @@ Dyadic fractions (0.5, 0.25) are exact in both and are not flagged.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterator
 
 from mintlang.migrate.context import FRACTION, Context, operator_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
+from mintlang.runtime.dialects.v3.numbers import fixed
+from mintlang.runtime.errors import NotSimulated
 from mintlang.syntax import nodes as n
 
-_STEPS = 256  # v3 fraction resolution (v3:1171)
-_PLACES = 1000  # v3 keeps three decimal places before scaling (v3:1175-1179)
+_PLACES = 3  # v3 keeps three decimal places before scaling (v3:1175-1179)
 
 
-def v3_value(value: float) -> float:
-    """The value Mint v3 stores for a non-negative literal: truncated to 1/256 steps."""
-    whole = math.floor(value)
-    thousandths = round((value - whole) * _PLACES)
-    return whole + (thousandths * _STEPS // _PLACES) / _STEPS
+def v3_value(value: float) -> float | None:
+    """The value Mint v3 holds for a literal, or None for one outside v3's range."""
+    try:
+        return fixed(round(value, _PLACES))
+    except NotSimulated:
+        return None
 
 
 def shows_differently(value: float) -> bool:
-    return round(v3_value(value), 3) != round(value, 3)
+    held = v3_value(value)
+    return held is not None and round(held, _PLACES) != round(value, _PLACES)
 
 
 def _fractional(expression: n.Expression | None) -> bool:

@@ -31,6 +31,7 @@ from mintlang.codes import mint_error, own
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.records import node
+from mintlang.syntax.moved import MovedOffsets
 from mintlang.syntax.tokens import Token, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
@@ -383,7 +384,7 @@ class PhysicalLines(Sequence[tuple[int, LexedLine]]):
 
     __slots__ = ("_lines", "offsets")
 
-    def __init__(self, offsets: array[int], lines: tuple[LexedLine, ...]) -> None:
+    def __init__(self, offsets: Sequence[int], lines: tuple[LexedLine, ...]) -> None:
         self.offsets = offsets  # ascending: ``bisect`` finds the line of an offset
         self._lines = lines
 
@@ -402,6 +403,15 @@ class PhysicalLines(Sequence[tuple[int, LexedLine]]):
     def __iter__(self) -> Iterator[tuple[int, LexedLine]]:
         return zip(self.offsets, self._lines, strict=True)
 
+    def lexed(self, index: int) -> LexedLine:
+        return self._lines[index]
+
+    def spliced(self, first: int, end: int, offsets: array[int], lines: list[LexedLine], shift: int) -> PhysicalLines:
+        """These lines with ``first`` to ``end`` replaced by ``lines`` at ``offsets``, and the lines
+        after them ``shift`` characters further on: what an edit to those lines makes of the file."""
+        moved = MovedOffsets.spliced(self.offsets, (first, end), offsets, shift, 0)
+        return PhysicalLines(moved, self._lines[:first] + tuple(lines) + self._lines[end:])
+
 
 @dataclass(frozen=True, slots=True)
 class LexResult:
@@ -412,12 +422,22 @@ class LexResult:
 
 def lex(source: str, dialect: Dialect = Dialect.V4) -> LexResult:
     """Split ``source`` into tokens whose texts join back to ``source`` exactly."""
-    issues: list[Diagnostic] = []
     offsets: array[int] = array("q")
     lines: list[LexedLine] = []
-    offset = 0
+    issues: list[Diagnostic] = []
+    lex_lines(source, dialect, 0, offsets, lines, issues)
+    physical = PhysicalLines(offsets, tuple(lines))
+    return LexResult(TokenStream(physical), tuple(issues), physical)
+
+
+def lex_lines(  # noqa: PLR0917 - the text, where it starts, and the three lists it extends
+    text: str, dialect: Dialect, start: int, offsets: array[int], lines: list[LexedLine], issues: list[Diagnostic]
+) -> None:
+    """Lex the physical lines of ``text``, which starts at offset ``start`` of its file: a whole file,
+    or the lines an edit touched (``mintlang.syntax.reparse``)."""
+    offset = start
     cache, words = _lexed[dialect], vocabulary(dialect)
-    for physical in _LINE.findall(source):
+    for physical in _LINE.findall(text):
         if not physical:
             continue
         lexed = cache.get(physical)
@@ -429,5 +449,3 @@ def lex(source: str, dialect: Dialect = Dialect.V4) -> LexResult:
         if lexed.issues:
             issues.extend(issue.shifted(offset) for issue in lexed.issues)
         offset += lexed.length
-    physical = PhysicalLines(offsets, tuple(lines))
-    return LexResult(TokenStream(physical), tuple(issues), physical)

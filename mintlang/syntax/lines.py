@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from typing import NamedTuple
 
 from mintlang.diagnostics import Span
-from mintlang.syntax.lexer import LexedLine, LexResult
+from mintlang.syntax.lexer import LexedLine, LexResult, PhysicalLines
 from mintlang.syntax.nodes import identity
 from mintlang.syntax.spans import span
 from mintlang.syntax.tokens import TokenKind
@@ -116,33 +116,39 @@ def _is_statement_start(kinds: list[TokenKind], index: int) -> bool:
 
 def logical_lines(lexed: LexResult) -> list[LineGroup]:
     """Group the physical lines that hold tokens into logical lines (DIM lists continue after a trailing comma)."""
-    groups: list[LineGroup] = []
+    return [group for group, _ in groups_from(lexed.lines, 0)]
+
+
+def groups_from(lines: PhysicalLines, start: int) -> Iterator[tuple[LineGroup, int]]:
+    """The logical lines from physical line ``start`` (0-based, where no DIM list is open), each with the
+    index of the physical line after its last one: where the grouping could stop and start again."""
     pending: list[PhysicalLine] = []  # the lines of a DIM list so far
     texts: list[str] = []  # and their texts, with those of the blank or comment lines between them
     pending_number = 0
     comma, dim = _K.COMMA, _K.DIM
     new = tuple.__new__  # builds the named tuple without its Python-level constructor
-    for number, physical in enumerate(lexed.lines, start=1):
-        line = physical[1]
+    offsets = lines.offsets
+    for index in range(start, len(lines)):
+        line = lines.lexed(index)
         kinds = line.kinds
         if not kinds:
             if pending:
                 texts.append(line.text)
             continue
+        physical = (offsets[index], line)
         continued = kinds[-1] is comma and (dim in kinds or any(dim in earlier.kinds for _, earlier in pending))
         if not pending and not continued:  # the common case: one physical line
-            groups.append(new(LineGroup, (number, physical[0], line.text, (physical,))))
+            yield new(LineGroup, (index + 1, physical[0], line.text, (physical,))), index + 1
             continue
         if not pending:
-            pending_number = number
+            pending_number = index + 1
         pending.append(physical)
         texts.append(line.text)
         if not continued:
-            groups.append(LineGroup(pending_number, pending[0][0], "".join(texts), tuple(pending)))
+            yield LineGroup(pending_number, pending[0][0], "".join(texts), tuple(pending)), index + 1
             pending, texts = [], []
     if pending:
-        groups.append(LineGroup(pending_number, pending[0][0], "".join(texts), tuple(pending)))
-    return groups
+        yield LineGroup(pending_number, pending[0][0], "".join(texts), tuple(pending)), len(lines)
 
 
 def take_macro_body(line: LogicalLine) -> list[MacroDefinition]:

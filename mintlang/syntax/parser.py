@@ -16,7 +16,7 @@ THEN or DO expected, 2008 TO expected.
 from __future__ import annotations
 
 from bisect import bisect_right
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -28,6 +28,7 @@ from mintlang.diagnostics import Diagnostic, Fix, LineIndex
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.syntax import nodes as n
+from mintlang.syntax.change import Change
 from mintlang.syntax.grammar import ParseFailure, parse_kinds
 from mintlang.syntax.grammar import clear_cache as clear_parse_cache
 from mintlang.syntax.lexer import PhysicalLines, TokenStream, lex
@@ -68,12 +69,20 @@ class Document:
     dialect: Dialect
     tokens: TokenStream  # lossless: the texts join back to the source
     physical: PhysicalLines  # every physical line, lexed, with its offset
-    placed: tuple[n.PlacedLine, ...]
-    diagnostics: tuple[Diagnostic, ...]
+    placed: Sequence[n.PlacedLine]  # a tuple, or ``MovedLines`` after a re-parse
+    lexer_issues: tuple[Diagnostic, ...]  # in order
+    parse_issues: tuple[Diagnostic, ...]  # in order
     macros: Mapping[str, MacroDefinition]
     definitions: tuple[MacroDefinition, ...]  # the macros this file defines, in order
     expansions: tuple[Expansion, ...]
     line_index: LineIndex
+    context: ParseContext
+    change: Change | None = None  # how it differs from the document it was re-parsed from (``reparse``)
+
+    @cached_property
+    def diagnostics(self) -> tuple[Diagnostic, ...]:
+        """What the lexer and the parser found."""
+        return self.lexer_issues + self.parse_issues
 
     @cached_property
     def lines(self) -> tuple[n.Line, ...]:
@@ -125,6 +134,55 @@ def clear_caches() -> None:
     _parsed.clear()
 
 
+@dataclass(frozen=True, slots=True)
+class ParseContext:
+    """What a document was parsed with beside its text: a re-parse reuses its lines only under the same."""
+
+    dialect: Dialect
+    controller: Controller | None
+    macros: tuple[tuple[str, _MacroBody], ...]  # those given (by the configuration), by name
+
+    @classmethod
+    def of(
+        cls, dialect: Dialect | str, controller: Controller | str | None, macros: Mapping[str, MacroDefinition] | None
+    ) -> ParseContext:
+        given = tuple(sorted((name, macro.body) for name, macro in (macros or {}).items()))
+        return cls(Dialect(dialect), Controller(controller) if controller is not None else None, given)
+
+
+@dataclass(slots=True)
+class PlacedLines:
+    """The logical lines parsed so far, and what parsing them found, at offsets into the file."""
+
+    visible: dict[str, MacroDefinition]  # the macros defined so far
+    placed: list[n.PlacedLine]
+    diagnostics: list[Diagnostic]
+    definitions: list[MacroDefinition]
+    expansions: list[Expansion]
+
+    def parse(self, groups: Iterable[LineGroup], context: ParseContext) -> None:
+        """Parse ``groups`` in order, each logical line once per text and macro context."""
+        dialect, target, visible = context.dialect, context.controller, self.visible
+        words = vocabulary(dialect, target)
+        for group in groups:
+            macros = tuple(_body(visible.get(identity(name))) for name in group.names()) if visible else ()
+            key = (dialect, target, group.text, macros)
+            parsed = _parsed.get(key)
+            if parsed is None:
+                parsed = _parse_group(group, key, visible, words, dialect)
+                _parsed.put(key, parsed)
+            origin = group.origin
+            if parsed.definitions:
+                defined = [definition.shifted(origin) for definition in parsed.definitions]
+                register(visible, defined)
+                self.definitions.extend(defined)
+            if parsed.expansions:
+                self.expansions.extend(expansion.shifted(origin) for expansion in parsed.expansions)
+            if parsed.diagnostics:
+                self.diagnostics.extend(diagnostic.shifted(origin) for diagnostic in parsed.diagnostics)
+            self.placed.append(n.PlacedLine(origin, group.number, parsed.syntax, parsed.content))
+
+
 @without_collector
 def parse(
     source: str,
@@ -140,42 +198,23 @@ def parse(
     line is parsed once per text and macro context: an edit re-parses only the
     lines it touched.
     """
-    dialect = Dialect(dialect)
-    target = Controller(controller) if controller is not None else None
-    lexed = lex(source, dialect)
-    diagnostics = list(lexed.issues)
-    visible: dict[str, MacroDefinition] = dict(macros or {})
-    definitions: list[MacroDefinition] = []
-    expansions: list[Expansion] = []
-    placed: list[n.PlacedLine] = []
-    for group in logical_lines(lexed):
-        context = tuple(_body(visible.get(identity(name))) for name in group.names()) if visible else ()
-        key = (dialect, target, group.text, context)
-        parsed = _parsed.get(key)
-        if parsed is None:
-            parsed = _parse_group(group, key, visible, vocabulary(dialect, target), dialect)
-            _parsed.put(key, parsed)
-        origin = group.origin
-        if parsed.definitions:
-            defined = [definition.shifted(origin) for definition in parsed.definitions]
-            register(visible, defined)
-            definitions.extend(defined)
-        if parsed.expansions:
-            expansions.extend(expansion.shifted(origin) for expansion in parsed.expansions)
-        if parsed.diagnostics:
-            diagnostics.extend(diagnostic.shifted(origin) for diagnostic in parsed.diagnostics)
-        placed.append(n.PlacedLine(origin, group.number, parsed.syntax, parsed.content))
+    context = ParseContext.of(dialect, controller, macros)
+    lexed = lex(source, context.dialect)
+    lines = PlacedLines(dict(macros or {}), [], [], [], [])
+    lines.parse(logical_lines(lexed), context)
     return Document(
         source,
-        dialect,
+        context.dialect,
         lexed.tokens,
         lexed.lines,
-        tuple(placed),
-        tuple(diagnostics),
-        visible,
-        tuple(definitions),
-        tuple(expansions),
+        tuple(lines.placed),
+        lexed.issues,
+        tuple(lines.diagnostics),
+        lines.visible,
+        tuple(lines.definitions),
+        tuple(lines.expansions),
         LineIndex(source),
+        context,
     )
 
 

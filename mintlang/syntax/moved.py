@@ -1,0 +1,175 @@
+"""The lines of a re-parsed document: earlier versions' lines, moved by the edits since.
+
+An edit moves every line below it; making each of them again at its new offset
+costs time in proportion to the file on every keystroke. ``Moved`` keeps slices
+of earlier versions' sequences instead, each with how far its items moved, and
+moves an item when it is read. The first full iteration moves them all, once,
+and keeps them. A language server typing in one place keeps three pieces
+(above, the edited lines, below); edits in many places add pieces, and past
+``_MOST_PIECES`` the items are moved into one sequence again. ``MovedLines``
+holds a document's logical lines, ``MovedOffsets`` where its physical lines start.
+"""
+
+from __future__ import annotations
+
+from array import array
+from bisect import bisect_right
+from collections.abc import Iterable, Iterator, Sequence
+from dataclasses import dataclass
+from itertools import accumulate, chain, islice
+from typing import Generic, TypeVar, overload
+
+from mintlang.syntax.nodes import PlacedLine
+
+_MOST_PIECES = 16
+T = TypeVar("T")
+
+
+@dataclass(frozen=True, slots=True)
+class _Piece(Generic[T]):
+    """``items[start:end]`` of some version, moved ``shift`` characters and ``line_shift`` lines since."""
+
+    items: Sequence[T]
+    start: int
+    end: int
+    shift: int
+    line_shift: int
+
+    @property
+    def still(self) -> bool:
+        return not (self.shift or self.line_shift)
+
+
+class Moved(Sequence[T]):
+    """Pieces of earlier sequences, each moved (the base of the two kinds below)."""
+
+    __slots__ = ("_ends", "_flat", "_pieces")
+
+    def __init__(self, pieces: Sequence[_Piece[T]]) -> None:
+        self._pieces = tuple(piece for piece in pieces if piece.end > piece.start)
+        self._ends = list(accumulate(piece.end - piece.start for piece in self._pieces))
+        self._flat: Sequence[T] | None = None
+
+    @staticmethod
+    def move(item: T, shift: int, line_shift: int) -> T:
+        """``item`` ``shift`` characters and ``line_shift`` lines further on."""
+        raise NotImplementedError
+
+    @staticmethod
+    def flat(items: Iterable[T]) -> Sequence[T]:
+        """The items as one sequence of their own."""
+        return tuple(items)
+
+    @classmethod
+    def spliced(
+        cls,
+        items: Sequence[T],
+        replaced: tuple[int, int],
+        replacement: Sequence[T],
+        shift: int,
+        line_shift: int,
+    ) -> Sequence[T]:
+        """``items`` with ``replaced`` (first and end index) replaced by ``replacement``, those after moved."""
+        first, end = replaced
+        pieces = [*_pieces(items, 0, first, 0, 0), _Piece(replacement, 0, len(replacement), 0, 0)]
+        pieces += _pieces(items, end, len(items), shift, line_shift)
+        if len(pieces) > _MOST_PIECES:
+            return cls.flat(chain.from_iterable(cls._items(piece) for piece in pieces))
+        return cls(pieces)
+
+    @classmethod
+    def _items(cls, piece: _Piece[T]) -> Iterator[T]:
+        items = islice(piece.items, piece.start, piece.end)
+        if piece.still:
+            return items
+        return (cls.move(item, piece.shift, piece.line_shift) for item in items)
+
+    def __len__(self) -> int:
+        return self._ends[-1] if self._ends else 0
+
+    @overload
+    def __getitem__(self, index: int) -> T: ...
+    @overload
+    def __getitem__(self, index: slice) -> Sequence[T]: ...
+    def __getitem__(self, index: int | slice) -> T | Sequence[T]:
+        if self._flat is not None:
+            return self._flat[index]
+        if isinstance(index, slice):
+            start, stop, step = index.indices(len(self))
+            if step != 1:
+                return self.flat(self)[index]
+            return self.flat(chain.from_iterable(map(self._items, _pieces(self, start, stop, 0, 0))))
+        if index < 0:
+            index += len(self)
+        if not 0 <= index < len(self):
+            raise IndexError("index out of range")
+        at = bisect_right(self._ends, index)
+        piece = self._pieces[at]
+        item = piece.items[piece.start + index - (self._ends[at - 1] if at else 0)]
+        return item if piece.still else self.move(item, piece.shift, piece.line_shift)
+
+    def __iter__(self) -> Iterator[T]:
+        if self._flat is None:
+            self._flat = self.flat(chain.from_iterable(map(self._items, self._pieces)))
+        return iter(self._flat)
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Sequence):
+            return NotImplemented
+        return len(self) == len(other) and all(mine == theirs for mine, theirs in zip(self, other, strict=True))
+
+    __hash__ = None  # type: ignore[assignment] - equal to a tuple of the same items, which hashes
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({len(self)} in {len(self._pieces)} pieces)"
+
+
+class MovedLines(Moved[PlacedLine]):
+    """A document's logical lines (``Document.placed``)."""
+
+    __slots__ = ()
+
+    @staticmethod
+    def move(item: PlacedLine, shift: int, line_shift: int) -> PlacedLine:
+        return PlacedLine(item.origin + shift, item.number + line_shift, item.syntax, item.content)
+
+
+class MovedOffsets(Moved[int]):
+    """Where a document's physical lines start (``PhysicalLines.offsets``): machine integers once flat."""
+
+    __slots__ = ()
+
+    @staticmethod
+    def move(item: int, shift: int, line_shift: int) -> int:
+        return item + shift
+
+    @staticmethod
+    def flat(items: Iterable[int]) -> Sequence[int]:
+        return array("q", items)
+
+
+def _pieces(items: Sequence[T], start: int, end: int, shift: int, line_shift: int) -> list[_Piece[T]]:
+    """The pieces that hold ``items[start:end]``, moved ``shift`` characters and ``line_shift`` lines more."""
+    if start >= end:
+        return []
+    if not isinstance(items, Moved):
+        return [_Piece(items, start, end, shift, line_shift)]
+    if items._flat is not None:
+        return [_Piece(items._flat, start, end, shift, line_shift)]
+    found: list[_Piece[T]] = []
+    offset = 0
+    for piece in items._pieces:
+        size = piece.end - piece.start
+        low, high = max(start, offset), min(end, offset + size)
+        if low < high:
+            found.append(
+                _Piece(
+                    piece.items,
+                    piece.start + low - offset,
+                    piece.start + high - offset,
+                    piece.shift + shift,
+                    piece.line_shift + line_shift,
+                )
+            )
+        offset += size
+    return found

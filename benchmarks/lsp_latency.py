@@ -94,6 +94,7 @@ async def _measure(text: str, path: Path, repeat: int) -> dict[str, list[float]]
     await client.published[1].wait()
     lines = text.splitlines()
     comment = next(number for number, line in enumerate(lines) if "REM ---- next station" in line)
+    in_comment = lines[comment].index("REM") + len("REM ")  # in the comment's text, not before its REM
     condition = next(number for number, line in enumerate(lines) if line.startswith("  IF IN"))
     name_end = lines[condition].index(" >")  # after "speed<n>"
     statement = next(number for number, line in enumerate(lines) if line.startswith("  SPEED[0,1]"))
@@ -132,7 +133,7 @@ async def _measure(text: str, path: Path, repeat: int) -> dict[str, list[float]]
     # over blocks of edits (a character typed, then deleted, in turn) and divided by their number.
     block = _EDITS_PER_BLOCK
     for name, line, character in (
-        ("diagnostics, typing in a comment", comment, 2),
+        ("diagnostics, typing in a comment", comment, in_comment),
         ("diagnostics, typing in a name", condition, name_end),
     ):
         for _ in range(max(1, repeat // block)):
@@ -140,7 +141,7 @@ async def _measure(text: str, path: Path, repeat: int) -> dict[str, list[float]]
             figures[name] += [await edit(line, character, typed=number % 2 == 0) for number in range(block)]
             figures[name.replace("diagnostics", "server CPU")].append((_cpu_seconds(pid) - cpu) / block)
     for number in range(repeat):
-        await edit(comment, 2, typed=number % 2 == 0)
+        await edit(comment, in_comment, typed=number % 2 == 0)
         start = time.perf_counter()
         await client.text_document_semantic_tokens_full_async(types.SemanticTokensParams(text_document=here))
         figures["semantic tokens"].append(time.perf_counter() - start)

@@ -18,9 +18,12 @@ from mintlang.keyworddb.model import Controller
 from mintlang.lazy import import_when_used
 
 if TYPE_CHECKING:
+    from collections.abc import Mapping
+
     from mintlang.analysis.analyser import Analysis, analyse
     from mintlang.diagnostics import Diagnostic, Edit, Fix, LineIndex, Position, Severity, Span
     from mintlang.semantic.model import SemanticModel, build_model
+    from mintlang.syntax.lines import MacroDefinition
     from mintlang.syntax.parser import Document, parse
 
 __all__ = [
@@ -65,19 +68,35 @@ def check_application(
     config: str | None = None,
     select: tuple[str, ...] | None = None,
     ignore: tuple[str, ...] = (),
+    previous: Analysis | None = None,
 ) -> Analysis:
     """Parse and analyse a program with its optional configuration file; diagnostics per file.
 
     ``select`` and ``ignore`` take codes or their prefixes; without ``select`` the errors and
-    warnings are reported and the hints (I…) are not."""
+    warnings are reported and the hints (I…) are not. ``previous`` is the analysis of an
+    earlier version of the same application (the language server's, before a keystroke):
+    what the edit did not change is read from it, and the result is the same as without it."""
     from mintlang.analysis.analyser import analyse  # noqa: PLC0415 - see import_when_used
+    from mintlang.controllers import profile  # noqa: PLC0415
+    from mintlang.semantic.carry import carry_model  # noqa: PLC0415
     from mintlang.semantic.model import build_model  # noqa: PLC0415
     from mintlang.syntax.parser import parse  # noqa: PLC0415
+    from mintlang.syntax.reparse import reparse  # noqa: PLC0415
 
-    configuration = parse(config, dialect, controller=controller) if config is not None else None
-    macros = configuration.macros if configuration else None
-    program = parse(source, dialect, macros=macros, controller=controller)
-    return analyse(build_model(program, configuration, controller), select=select, ignore=ignore)
+    def read(text: str, before: Document | None, macros: Mapping[str, MacroDefinition] | None) -> Document:
+        if before is None:
+            return parse(text, dialect, macros=macros, controller=controller)
+        return reparse(before, text, dialect, macros=macros, controller=controller)
+
+    before = previous.model if previous is not None else None
+    configuration = None
+    if config is not None:
+        configuration = read(config, before.configuration if before else None, None)
+    program = read(source, before.program if before else None, configuration.macros if configuration else None)
+    model = carry_model(before, program, configuration, profile(controller)) if before is not None else None
+    if model is None:
+        return analyse(build_model(program, configuration, controller), select=select, ignore=ignore)
+    return analyse(model, select=select, ignore=ignore, previous=previous)
 
 
 def check(

@@ -3,17 +3,22 @@
 The line rules run once per line syntax, unit, controller and dialect: after an
 edit only the changed lines are checked again, and the whole-application rules
 (declarations, flow, limits, unused names ...) run over the index the model
-already holds.
+already holds. After an edit that changed no line's meaning (the model was
+carried over, ``mintlang.semantic.carry``), what they found is carried over too,
+moved by the edit; the length of the program, which every edit changes, is
+checked again against the memory (``rules.memory``).
 """
 
 from __future__ import annotations
 
-from collections.abc import Hashable, Iterable
+from bisect import bisect_left
+from collections.abc import Hashable, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 from functools import cache
+from itertools import chain
 
 from mintlang.allocation import without_collector
-from mintlang.analysis.rules import RULES, Rule
+from mintlang.analysis.rules import RULES, Rule, memory
 from mintlang.analysis.suppression import suppress
 from mintlang.analysis.traversal import LineScope, gather
 from mintlang.caching import LINES_KEPT, RecentCache
@@ -22,10 +27,21 @@ from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Diagnostic, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
-from mintlang.semantic.index import LineFacts
+from mintlang.semantic.index import LineFacts, line_facts
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
+from mintlang.syntax.parser import Document
+
+
+@dataclass(frozen=True, slots=True)
+class Found:
+    """What the rules found, per file, before selection and suppression: kept so that the next
+    version's check carries over what its edit did not touch."""
+
+    in_lines: Mapping[Unit, tuple[Diagnostic, ...]]  # by the line rules: a logical or physical line's each
+    whole: Mapping[Unit, tuple[tuple[Rule, Diagnostic], ...]]  # by the whole-application rules
+    arrays: memory.ArrayDemand
 
 
 @dataclass(frozen=True, slots=True)
@@ -33,6 +49,7 @@ class Analysis:
     model: SemanticModel
     program: tuple[Diagnostic, ...]
     configuration: tuple[Diagnostic, ...]
+    found: Found
 
 
 def _selected(code: str, select: Iterable[str] | None, ignore: Iterable[str]) -> bool:
@@ -63,10 +80,14 @@ def _findings_cache(context: _Context) -> RecentCache[Hashable, tuple[Diagnostic
 
 
 @cache
-def _rules_for(dialect: Dialect) -> tuple[tuple[Rule, ...], tuple[Rule, ...]]:
-    """The rules that read one line, and those that read the whole application."""
+def _rules_for(dialect: Dialect) -> tuple[tuple[Rule, ...], tuple[Rule, ...], tuple[Rule, ...]]:
+    """The rules that read one line, those that read the whole application, and those that read the text."""
     rules = [rule for rule in RULES if dialect in rule.dialects]
-    return tuple(rule for rule in rules if rule.each_line), tuple(rule for rule in rules if rule.check)
+    return (
+        tuple(rule for rule in rules if rule.each_line),
+        tuple(rule for rule in rules if rule.check and rule.check is not memory.check),
+        tuple(rule for rule in rules if rule.each_text_line),
+    )
 
 
 def _findings_of_line(
@@ -114,31 +135,99 @@ def _first_of_each(diagnostics: Iterable[Diagnostic]) -> list[Diagnostic]:
 
 
 @without_collector
-def analyse(model: SemanticModel, *, select: Iterable[str] | None = None, ignore: Iterable[str] = ()) -> Analysis:
-    """All diagnostics of an application, per file, sorted by position."""
+def analyse(
+    model: SemanticModel,
+    *,
+    select: Iterable[str] | None = None,
+    ignore: Iterable[str] = (),
+    previous: Analysis | None = None,
+) -> Analysis:
+    """All diagnostics of an application, per file, sorted by position.
+
+    ``previous`` is the analysis of the version ``model`` was carried over from
+    (``mintlang.semantic.carry``): what its edit did not touch is carried over too.
+    """
+    found = _carried(model, previous) if previous is not None else None
+    if found is None:
+        found = _find(model)
     select = tuple(select) if select is not None else None
     ignore = tuple(ignore)
-    found: dict[Unit, list[Diagnostic]] = {Unit.PROGRAM: [], Unit.CONFIGURATION: []}  # per file, as found
-    for unit, document in model.documents():
-        found[unit].extend(document.diagnostics)
-        found[unit].extend(model.structures[unit].diagnostics)
-    dialect, controller = model.program.dialect, model.controller
-    caches = {unit: _findings_cache((unit, controller.controller, dialect)) for unit in Unit}
-    for unit, line, facts in model.lines:
-        in_line = _findings_of_line(caches[unit], unit, line, facts, controller=controller, dialect=dialect)
-        if in_line:
-            found[unit].extend(diagnostic.shifted(line.origin) for diagnostic in in_line)
-    facts = gather(model)
-    for rule in _rules_for(dialect)[1]:
-        for finding in rule.check(facts):  # type: ignore[misc]
-            found[finding.unit].append(finding.diagnostic)
 
     def selected(code: str) -> bool:
         return _selected(code, select, ignore)
 
-    per_unit: dict[Unit, list[Diagnostic]] = {}
+    per_unit: dict[Unit, list[Diagnostic]] = {Unit.CONFIGURATION: []}
     for unit, document in model.documents():
-        distinct = _first_of_each(diagnostic for diagnostic in found[unit] if selected(diagnostic.code))
+        everything = chain(
+            document.diagnostics,
+            model.structures[unit].diagnostics,
+            found.in_lines[unit],
+            (diagnostic for _, diagnostic in found.whole[unit]),
+            (finding.diagnostic for finding in memory.findings(model, found.arrays) if finding.unit is unit),
+        )
+        distinct = _first_of_each(diagnostic for diagnostic in everything if selected(diagnostic.code))
         per_unit[unit] = sorted(suppress(distinct, document, selected), key=_by_position)
-    per_unit.setdefault(Unit.CONFIGURATION, [])
-    return Analysis(model, tuple(per_unit[Unit.PROGRAM]), tuple(per_unit[Unit.CONFIGURATION]))
+    return Analysis(model, tuple(per_unit[Unit.PROGRAM]), tuple(per_unit[Unit.CONFIGURATION]), found)
+
+
+def _find(model: SemanticModel) -> Found:
+    """What every rule finds in the whole application."""
+    dialect, controller = model.program.dialect, model.controller
+    caches = {unit: _findings_cache((unit, controller.controller, dialect)) for unit in Unit}
+    in_lines: dict[Unit, list[Diagnostic]] = {Unit.PROGRAM: [], Unit.CONFIGURATION: []}
+    for unit, line, facts in model.lines:
+        in_line = _findings_of_line(caches[unit], unit, line, facts, controller=controller, dialect=dialect)
+        if in_line:
+            in_lines[unit].extend(diagnostic.shifted(line.origin) for diagnostic in in_line)
+    for unit, document in model.documents():
+        in_lines[unit].extend(_in_text_lines(model, document, range(len(document.physical))))
+    whole: dict[Unit, list[tuple[Rule, Diagnostic]]] = {Unit.PROGRAM: [], Unit.CONFIGURATION: []}
+    facts = gather(model)
+    for rule in _rules_for(dialect)[1]:
+        for finding in rule.check(facts):  # type: ignore[misc]
+            whole[finding.unit].append((rule, finding.diagnostic))
+    return Found(
+        {unit: tuple(found) for unit, found in in_lines.items()},
+        {unit: tuple(found) for unit, found in whole.items()},
+        memory.demand(model.symbols),
+    )
+
+
+def _in_text_lines(model: SemanticModel, document: Document, indices: range) -> Iterator[Diagnostic]:
+    """What the rules that read the text as written find in physical lines ``indices`` of ``document``."""
+    for rule in _rules_for(model.program.dialect)[2]:
+        yield from rule.each_text_line(document.physical, indices, model.controller)  # type: ignore[misc]
+
+
+def _carried(model: SemanticModel, previous: Analysis) -> Found | None:
+    """What ``previous`` found, moved over the edit ``model`` was carried over by, with the lines the
+    edit touched checked again; None where a whole-application finding lies in them (its text changed)."""
+    change = model.carried
+    if change is None:
+        return None
+    before = previous.found
+    whole = tuple((rule, change.diagnostic(diagnostic)) for rule, diagnostic in before.whole[Unit.PROGRAM])
+    largest = before.arrays.largest
+    moved_largest = (
+        largest if largest is None or largest[0] is not Unit.PROGRAM else (Unit.PROGRAM, change.span(largest[1]))
+    )
+    if any(diagnostic is None for _, diagnostic in whole) or (moved_largest is not None and moved_largest[1] is None):
+        return None
+    program = model.program
+    dialect, controller = program.dialect, model.controller
+    cache = _findings_cache((Unit.PROGRAM, controller.controller, dialect))
+    window: list[Diagnostic] = []
+    for line in program.placed[change.first_line : change.first_line + change.new_lines]:
+        facts = line_facts(Unit.PROGRAM, line)
+        in_line = _findings_of_line(cache, Unit.PROGRAM, line, facts, controller=controller, dialect=dialect)
+        window.extend(diagnostic.shifted(line.origin) for diagnostic in in_line)
+    offsets = program.physical.offsets
+    lines = range(bisect_left(offsets, change.start), bisect_left(offsets, change.new_end))
+    window.extend(_in_text_lines(model, program, lines))
+    in_lines = dict(before.in_lines)
+    in_lines[Unit.PROGRAM] = change.spliced(before.in_lines[Unit.PROGRAM], window)
+    return Found(
+        in_lines,
+        {**before.whole, Unit.PROGRAM: whole},  # type: ignore[dict-item]
+        memory.ArrayDemand(before.arrays.bytes, moved_largest),  # type: ignore[arg-type]
+    )

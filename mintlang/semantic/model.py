@@ -2,7 +2,9 @@
 
 Built once per check and shared by every tool: the analyser's rules, the
 language server's navigation and the runtime's compiler all read the same
-symbol table and block structure, so no tool re-derives them.
+symbol table and block structure, so no tool re-derives them. After an edit
+that changed no line's meaning (a comment, spaces after the last statement)
+it is carried over from the previous model (``mintlang.semantic.carry``).
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ from mintlang.semantic.blocks import Structure, match_blocks
 from mintlang.semantic.index import LineFacts, SyntaxIndex, index_lines, index_syntax
 from mintlang.semantic.symbols import SymbolTable, Unit, build_symbols
 from mintlang.syntax import nodes as n
+from mintlang.syntax.change import Change
 from mintlang.syntax.parser import Document
 
 IndexedLine = tuple[Unit, n.PlacedLine, LineFacts]
@@ -35,9 +38,33 @@ class SemanticModel:
     program: Document
     configuration: Document | None
     controller: ControllerProfile
-    symbols: SymbolTable
     structures: Mapping[Unit, Structure]
-    lines: tuple[IndexedLine, ...]  # every logical line of both files, in compile order, with its index
+    carried: Change | None = None  # the edit it was carried over by from the previous version's model
+
+    @classmethod
+    def of(
+        cls,
+        program: Document,
+        configuration: Document | None,
+        controller: ControllerProfile,
+        structures: Mapping[Unit, Structure],
+        lines: tuple[IndexedLine, ...],
+    ) -> SemanticModel:
+        """A model whose ``lines`` are known already (as matching the blocks needed them)."""
+        model = cls(program, configuration, controller, structures)
+        model.__dict__["lines"] = lines  # what ``cached_property`` would have kept
+        return model
+
+    @cached_property
+    def lines(self) -> tuple[IndexedLine, ...]:
+        """Every logical line of both files, in compile order, with its index: made when first
+        read, for a model carried over an edit (``carried``) that needs none to be checked."""
+        return tuple(indexed for unit, document in self.documents() for indexed in index_lines(unit, document.placed))
+
+    @cached_property
+    def symbols(self) -> SymbolTable:
+        """Made when first read: an edit carried over (``carried``) needs none to be checked."""
+        return build_symbols(self.program, self.configuration, self.lines)
 
     @cached_property
     def index(self) -> SyntaxIndex:
@@ -73,5 +100,4 @@ def build_model(
         unit: match_blocks(((placed, facts) for file, placed, facts in lines if file is unit), target)
         for unit, _ in documents
     }
-    symbols = build_symbols(program, configuration, lines)
-    return SemanticModel(program, configuration, target, symbols, structures, lines)
+    return SemanticModel.of(program, configuration, target, structures, lines)

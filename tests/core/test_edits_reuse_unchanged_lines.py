@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import fields, is_dataclass
 
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import mintlang
@@ -19,16 +19,26 @@ from mintlang.diagnostics import Span
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
 from tests.corpus_files import CorpusCase, cases
+from tests.fuzzing import examples
 
 CASES = [case for folder in ("v4/valid", "v4/invalid") for case in cases(folder)]
 MACRO_CASES = [case for case in CASES if "DEFINE" in case.source.upper()]
 TYPED = ["x", "1", " ", ":", ",", ";", "(", ")", '"', "'", "#", "\n", "\r\n", "REM ", "DIM ", "IF ", "ENDIF"]
 
 
-def _check(case: CorpusCase, source: str) -> mintlang.Analysis:
+def _check(case: CorpusCase, source: str, previous: mintlang.Analysis | None = None) -> mintlang.Analysis:
     return mintlang.check_application(
-        source, dialect=case.dialect, controller=case.controller, config=case.configuration
+        source, dialect=case.dialect, controller=case.controller, config=case.configuration, previous=previous
     )
+
+
+def _same(warm: mintlang.Analysis, cold: mintlang.Analysis) -> None:
+    assert warm.program == cold.program
+    assert warm.configuration == cold.configuration
+    assert warm.model.program.lines == cold.model.program.lines
+    assert warm.model.structures[Unit.PROGRAM] == cold.model.structures[Unit.PROGRAM]
+    occurrences = [(symbol.identity, list(symbol.occurrences())) for symbol in warm.model.symbols.all()]
+    assert occurrences == [(symbol.identity, list(symbol.occurrences())) for symbol in cold.model.symbols.all()]
 
 
 def test_a_line_below_an_edit_keeps_its_syntax_at_its_new_place() -> None:
@@ -93,18 +103,15 @@ def test_the_tree_with_file_offsets_matches_the_text() -> None:
 
 
 def _edit_and_compare(case: CorpusCase, where: float, removed: int, typed: str) -> None:
-    _check(case, case.source)  # the caches now hold every line of the file before the edit
+    before = _check(case, case.source)  # the caches now hold every line of the file before the edit
     offset = int(where * len(case.source))
     edited = case.source[:offset] + typed + case.source[offset + removed :]
     warm = _check(case, edited)
+    from_before = _check(case, edited, previous=before)  # as the language server checks a keystroke
     mintlang.clear_caches()
     cold = _check(case, edited)
-    assert warm.program == cold.program
-    assert warm.configuration == cold.configuration
-    assert warm.model.program.lines == cold.model.program.lines
-    assert warm.model.structures[Unit.PROGRAM] == cold.model.structures[Unit.PROGRAM]
-    occurrences = [(symbol.identity, list(symbol.occurrences())) for symbol in warm.model.symbols.all()]
-    assert occurrences == [(symbol.identity, list(symbol.occurrences())) for symbol in cold.model.symbols.all()]
+    _same(warm, cold)
+    _same(from_before, cold)
 
 
 @given(
@@ -129,3 +136,62 @@ def test_an_edit_to_a_macro_changes_every_line_that_uses_it(
     case: CorpusCase, where: float, removed: int, typed: str
 ) -> None:
     _edit_and_compare(case, where, removed, typed)
+
+
+PROGRAM = "DIM feed\nREM set-up\nfeed = 10\nJOG.0 = feed : REM the jog\nPRINT feed\nGOSUB missing\n"
+
+
+def test_typing_in_a_comment_carries_the_model_and_its_findings_over() -> None:
+    before = mintlang.check_application(PROGRAM)
+    after = mintlang.check_application(PROGRAM.replace("set-up", "set up"), previous=before)
+    assert after.model.carried is not None
+    assert "symbols" not in vars(after.model)  # no symbol table was needed to check the keystroke
+    assert after.program == mintlang.check_application(PROGRAM.replace("set-up", "set up")).program
+    moved = mintlang.check_application(PROGRAM.replace("the jog", "the jog, longer"), previous=before)
+    (missing,) = before.program  # E3004: no label #missing
+    assert [d.span.start for d in moved.program] == [missing.span.start + len(", longer")]
+
+
+def test_typing_in_a_name_builds_the_model_again() -> None:
+    before = mintlang.check_application(PROGRAM)
+    after = mintlang.check_application(PROGRAM.replace("PRINT feed", "PRINT feedx"), previous=before)
+    assert after.model.carried is None
+    assert after.program == mintlang.check_application(PROGRAM.replace("PRINT feed", "PRINT feedx")).program
+    assert len(after.program) == len(before.program) + 1  # feedx is not declared
+
+
+_COMMENTED = [case for case in CASES if case.configuration is None]
+_TYPED_IN_COMMENTS = ["x", " ", "", "\t", "REM mint: ignore[E2001]", "ENDIF", "1", ":"]
+
+
+@st.composite
+def _keystrokes(draw: st.DrawFn, source: str) -> tuple[int, int, str]:
+    """Where a user types: mostly in a comment or at the end of a line, sometimes anywhere."""
+    lines = source.split("\n")
+    number = draw(st.integers(0, len(lines) - 1))
+    line = lines[number]
+    comment = line.upper().find("REM")
+    column = draw(
+        st.sampled_from(
+            [len(line), *([comment + 3, len(line)] if comment >= 0 else []), draw(st.integers(0, len(line)))]
+        )
+    )
+    offset = sum(len(earlier) + 1 for earlier in lines[:number]) + column
+    return offset, draw(st.integers(0, 2)), draw(st.sampled_from(_TYPED_IN_COMMENTS))
+
+
+@settings(max_examples=examples(60), deadline=None)
+@given(programs=st.lists(st.sampled_from(_COMMENTED), min_size=2, max_size=5), data=st.data())
+def test_a_check_carried_over_a_run_of_keystrokes_reports_what_a_check_from_nothing_reports(
+    programs: list[CorpusCase], data: st.DataObject
+) -> None:
+    """As the language server checks: each version from the one before, on a file with findings above
+    and below the keystrokes (several corpus programs, valid and not, one after the other)."""
+    case = programs[0]
+    source = "\n".join(program.source for program in programs)
+    previous = _check(case, source)
+    for _ in range(6):
+        offset, removed, typed = data.draw(_keystrokes(source))
+        source = source[:offset] + typed + source[offset + removed :]
+        previous = _check(case, source, previous=previous)
+        _same(previous, _check(case, source))

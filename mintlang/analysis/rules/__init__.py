@@ -2,7 +2,8 @@
 
 A rule reads the whole application (``check``), or one line at a time
 (``each_line``: what it finds depends on nothing outside the line, so the
-analyser keeps it while the line is unchanged), or both.
+analyser keeps it while the line is unchanged), or both; or each physical line
+of the text as it is written (``each_text_line``), comments included.
 """
 
 from __future__ import annotations
@@ -23,6 +24,8 @@ from mintlang.analysis.rules import (
     hints,
     keyword_usage,
     limits,
+    line_length,
+    memory,
     startup,
     unused,
     v3_access,
@@ -30,7 +33,10 @@ from mintlang.analysis.rules import (
     values,
 )
 from mintlang.analysis.traversal import Facts, LineScope
+from mintlang.controllers import ControllerProfile
+from mintlang.diagnostics import Diagnostic
 from mintlang.dialect import Dialect
+from mintlang.syntax.lexer import PhysicalLines
 
 _ALL_DIALECTS = frozenset(Dialect)
 
@@ -40,12 +46,13 @@ class Rule:
     name: str
     check: Callable[[Facts], Iterator[Finding]] | None = None
     each_line: Callable[[LineScope], Iterator[Finding]] | None = None
+    each_text_line: Callable[[PhysicalLines, range, ControllerProfile], Iterator[Diagnostic]] | None = None
     dialects: frozenset[Dialect] = _ALL_DIALECTS
 
     @property
     def summary(self) -> str:
         """The first line of the rule module's docstring."""
-        function = self.check or self.each_line
+        function = self.check or self.each_line or self.each_text_line
         assert function is not None, f"rule {self.name} checks nothing"
         module = __import__(function.__module__, fromlist=["__doc__"])
         return (module.__doc__ or "").strip().splitlines()[0]
@@ -67,6 +74,8 @@ RULES: tuple[Rule, ...] = (
     Rule("flow", flow.check),
     Rule("calls", calls.check),
     Rule("limits", limits.check),
+    Rule("memory", memory.check),
+    Rule("line-length", each_text_line=line_length.each_text_line),
     Rule("startup", startup.check),
     Rule("collisions", collisions.check),
     Rule("unused", unused.check),

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
-from mintlang.runtime import drive_enable
+from mintlang.runtime import drive_enable, global_error_output
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.comms.packets import HostEndpoint
 from mintlang.runtime.comms.server import HostPortServer
@@ -117,6 +117,7 @@ def build_controller(
     for extend in EXTENSIONS:
         extend(table, motion)
     drive_enable.install(table, axes, io)
+    global_error_output.install(table, motion, io)
     monitors = mintmt_machine.install(table, motion, io, events) if mintmt else []
     motion.input_active = io.is_active
     motion.index_pulses = {pulse.axis: pulse for pulse in scenario.index_pulses}

@@ -14,6 +14,7 @@ from mintlang.runtime.errors import MintError
 from mintlang.runtime.io import RELAY0, DigitalIO
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer
 from mintlang.runtime.motion.axis import Axis
+from mintlang.runtime.ranges import shown
 
 NO_OUTPUT = -1  # the drive's internal state alone (000:2703-2704)
 OUT_OF_RANGE = 3
@@ -38,18 +39,20 @@ def _signal(axis: Axis, io: DigitalIO) -> Callable[[bool], None]:
 
 
 def _checked(write: Writer, io: DigitalIO) -> Writer:
-    """``write`` for -1, an output of the simulated controller or ``_RELAY0``; error 3 for anything else."""
+    """``write`` for values that each name an output (``check_output``), all checked before any is written."""
 
     def checked(channels: Channels | None, values: Values) -> bool:
         for place, value in enumerate(values):
             channel = channels[place] if channels is not None and place < len(channels) else None
-            if value is not None and not _names_an_output(value, io):
-                detail = f"DRIVEENABLEOUTPUT = {value:g}: -1, an output {io.outputs} or _RELAY0"
-                raise MintError(OUT_OF_RANGE, channel, detail)
+            if value is not None:
+                check_output("DRIVEENABLEOUTPUT", value, io, channel)
         return write(channels, values)
 
     return checked
 
 
-def _names_an_output(value: float, io: DigitalIO) -> bool:
-    return value in (NO_OUTPUT, RELAY0) or (value == int(value) and int(value) in io.outputs)
+def check_output(keyword: str, value: float, io: DigitalIO, channel: int | None = None) -> None:
+    """Error 3 unless ``value`` is -1, an output of the simulated card or ``_RELAY0``: an output assignment."""
+    if value not in (NO_OUTPUT, RELAY0) and not (value == int(value) and int(value) in io.outputs):
+        detail = f"{keyword} = {shown(value)}; it takes -1, an output {io.outputs} or _RELAY0"
+        raise MintError(OUT_OF_RANGE, channel, detail)

@@ -73,6 +73,10 @@ def _no_output(enabled: bool) -> None:
     """A drive with no enable output wired (a controller built without I/O)."""
 
 
+def _no_error_output() -> None:
+    """An axis error with no global error output wired (a controller built without I/O)."""
+
+
 class Axis:
     def __init__(self, number: int, controller: Controller, clock: Clock, plant: Plant | None = None) -> None:
         self.number = number
@@ -83,6 +87,7 @@ class Axis:
         self.servo = ServoLoop()
         self.enabled = False  # drives start disabled (IO-7 RC)
         self.drive_signal: Callable[[bool], None] = _no_output  # drives the DRIVEENABLEOUTPUT (drive_enable.py)
+        self.error_signal: Callable[[], None] = _no_error_output  # drops GLOBALERROROUTPUT (global_error_output.py)
         self.axiserror = 0  # latched (AXISERROR)
         self.status = 0  # instantaneous conditions (AXISSTATUS)
         self.move: Move | None = None
@@ -485,6 +490,7 @@ class Axis:
 
     def latch(self, bit: int) -> None:
         self.axiserror |= bit
+        self.error_signal()
 
     def enable(self) -> None:
         """Drive on. Where the servo law runs, it restarts from where the axis is, with no history (SL-10):

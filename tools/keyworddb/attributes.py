@@ -146,6 +146,8 @@ def _number(text: str) -> float:
 
 _CHANNEL_RANGE = re.compile(r"(\d) (0 or 1)$")
 _SPAN_AND_ONE = re.compile(r"^(?P<low>-?\d+)\s*(?:\.\.|≤\s*x\s*≤)\s*(?P<high>-?\d+)\s*,\s*(?P<one>-?\d+)$")
+_NAMED_VALUE = rf"(-?\d+) {_DASH} [A-Za-z]+"  # MOTORDIRECTION "0 – Forward 1 – Reverse": a mode per value
+_NAMED_VALUES = re.compile(rf"^{_NAMED_VALUE}(?: {_NAMED_VALUE})*$")
 
 
 def parse_range(text: str) -> ValueRange:
@@ -160,6 +162,9 @@ def parse_range(text: str) -> ValueRange:
     if match := _SPAN_AND_ONE.match(compact):  # HOME "0 .. 4, 6": the whole numbers of a span, and one more
         low, high, one = (int(match[part]) for part in ("low", "high", "one"))
         allowed = tuple(float(value) for value in sorted({*range(low, high + 1), one}))
+        return ValueRange(compact, None, None, fractional, allowed=allowed)
+    if _NAMED_VALUES.match(compact):
+        allowed = tuple(sorted(float(value) for value in re.findall(_NAMED_VALUE, compact)))
         return ValueRange(compact, None, None, fractional, allowed=allowed)
     bounds: tuple[float, float] | None = None
     if match := _SPAN.match(compact):

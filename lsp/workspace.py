@@ -153,11 +153,15 @@ class Snapshot:
     uri: str
     version: int | None
     unit: Unit
-    model: SemanticModel
+    analysis: mintlang.Analysis  # of both files: the next version's check starts from it
     diagnostics: tuple[mintlang.Diagnostic, ...]
     files: Mapping[Unit, File]
     settings: Settings
     skipped: str | None = None  # why the text was not analysed (binary, too large)
+
+    @property
+    def model(self) -> SemanticModel:
+        return self.analysis.model
 
     @property
     def document(self) -> Document:
@@ -309,6 +313,7 @@ class Analyses:
             program, config = other_text or "", mine
         else:
             program, config = mine, other_text
+        before = self._cache.get(uri)
         analysis = mintlang.check_application(
             program,
             dialect=settings.dialect,
@@ -316,6 +321,7 @@ class Analyses:
             config=config,
             select=settings.select,
             ignore=settings.ignore,
+            previous=before[1].analysis if before is not None else None,  # a keystroke re-reads what it touched
         )
         files = {unit: File(uri, Positions(text, self.encoding))}
         if other is not None and other_text is not None:
@@ -323,4 +329,4 @@ class Analyses:
                 other, Positions(other_text, self.encoding)
             )
         own = analysis.configuration if unit is Unit.CONFIGURATION else analysis.program
-        return Snapshot(uri, version, unit, analysis.model, own, files, settings, skipped)
+        return Snapshot(uri, version, unit, analysis, own, files, settings, skipped)

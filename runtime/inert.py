@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 
 from mintlang.runtime.keywords import KeywordTable, per_channel
+from mintlang.runtime.ranges import ranged
 
 INERT_SETTINGS: dict[str, float] = {
     "TERMINAL": 123.0,
@@ -34,8 +35,10 @@ class InertSettings:
         self.used: set[str] = set()
 
     def register(self, table: KeywordTable) -> None:
+        """Each setting, range-checked as its attributes table says (``ECHO`` 0 to 7): inert is not lax."""
         for name, default in self.settings.items():
-            table.register(name, read=self._reader(name, default), write=per_channel(self.writer(name)))
+            write = ranged(name, table.controller, self.writer(name))
+            table.register(name, read=self._reader(name, default), write=per_channel(write))
 
     def _reader(self, name: str, default: float) -> Callable[[int | None], float]:
         def read(channel: int | None) -> float:

@@ -350,7 +350,7 @@ class Motion:
         for name, inputs in _SWITCHES.items():
             table.register(name, read=self._switch(inputs))
         for name, rate in (("ACCELTIME", "ACCEL"), ("DECELTIME", "DECEL")):
-            table.register(name, write=per_channel(self._ramp_time(rate)))
+            table.register(name, write=per_channel(ranged(name, self.profile.controller, self._ramp_time(rate))))
         enable = ranged("DRIVEENABLE", self.profile.controller, self._enable)
         table.register("DRIVEENABLE", read=lambda ch: float(self.axis(ch).enabled), write=per_channel(enable))
         table.register("POS", read=self._pos, write=per_channel(self._write_pos))

@@ -31,6 +31,7 @@ from mintlang.semantic.index import LineFacts, line_facts
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
+from mintlang.syntax.change import Change
 from mintlang.syntax.parser import Document
 
 
@@ -181,16 +182,17 @@ def _find(model: SemanticModel) -> Found:
             in_lines[unit].extend(diagnostic.shifted(line.origin) for diagnostic in in_line)
     for unit, document in model.documents():
         in_lines[unit].extend(_in_text_lines(model, document, range(len(document.physical))))
+    return Found({unit: tuple(found) for unit, found in in_lines.items()}, _whole(model), memory.demand(model.symbols))
+
+
+def _whole(model: SemanticModel) -> dict[Unit, tuple[tuple[Rule, Diagnostic], ...]]:
+    """What the whole-application rules find, per file."""
     whole: dict[Unit, list[tuple[Rule, Diagnostic]]] = {Unit.PROGRAM: [], Unit.CONFIGURATION: []}
     facts = gather(model)
-    for rule in _rules_for(dialect)[1]:
+    for rule in _rules_for(model.program.dialect)[1]:
         for finding in rule.check(facts):  # type: ignore[misc]
             whole[finding.unit].append((rule, finding.diagnostic))
-    return Found(
-        {unit: tuple(found) for unit, found in in_lines.items()},
-        {unit: tuple(found) for unit, found in whole.items()},
-        memory.demand(model.symbols),
-    )
+    return {unit: tuple(found) for unit, found in whole.items()}
 
 
 def _in_text_lines(model: SemanticModel, document: Document, indices: range) -> Iterator[Diagnostic]:
@@ -201,18 +203,40 @@ def _in_text_lines(model: SemanticModel, document: Document, indices: range) -> 
 
 def _carried(model: SemanticModel, previous: Analysis) -> Found | None:
     """What ``previous`` found, moved over the edit ``model`` was carried over by, with the lines the
-    edit touched checked again; None where a whole-application finding lies in them (its text changed)."""
-    change = model.carried
-    if change is None:
+    edit touched checked again; the whole application checked again unless its facts stayed the same."""
+    if model.carried is None:
         return None
-    before = previous.found
-    whole = tuple((rule, change.diagnostic(diagnostic)) for rule, diagnostic in before.whole[Unit.PROGRAM])
+    change = model.carried.change
+    in_lines = dict(previous.found.in_lines)
+    in_lines[Unit.PROGRAM] = change.spliced(previous.found.in_lines[Unit.PROGRAM], _in_window(model, change))
+    carried = _carried_whole(previous.found, change) if model.carried.same_facts else None
+    if carried is not None:
+        return Found(in_lines, *carried)
+    whole = _whole(model)
+    return Found(in_lines, whole, memory.demand(model.symbols))
+
+
+def _carried_whole(
+    before: Found, change: Change
+) -> tuple[Mapping[Unit, tuple[tuple[Rule, Diagnostic], ...]], memory.ArrayDemand] | None:
+    """The whole-application findings of ``before``, moved; None where one lies in the edit's window."""
+    whole = []
+    for rule, diagnostic in before.whole[Unit.PROGRAM]:
+        moved = change.diagnostic(diagnostic)
+        if moved is None:
+            return None
+        whole.append((rule, moved))
     largest = before.arrays.largest
-    moved_largest = (
-        largest if largest is None or largest[0] is not Unit.PROGRAM else (Unit.PROGRAM, change.span(largest[1]))
-    )
-    if any(diagnostic is None for _, diagnostic in whole) or (moved_largest is not None and moved_largest[1] is None):
-        return None
+    if largest is not None and largest[0] is Unit.PROGRAM:
+        span = change.span(largest[1])
+        if span is None:
+            return None
+        largest = (Unit.PROGRAM, span)
+    return {**before.whole, Unit.PROGRAM: tuple(whole)}, memory.ArrayDemand(before.arrays.bytes, largest)
+
+
+def _in_window(model: SemanticModel, change: Change) -> list[Diagnostic]:
+    """What the line rules find in the lines of the program that ``change`` touched."""
     program = model.program
     dialect, controller = program.dialect, model.controller
     cache = _findings_cache((Unit.PROGRAM, controller.controller, dialect))
@@ -224,10 +248,4 @@ def _carried(model: SemanticModel, previous: Analysis) -> Found | None:
     offsets = program.physical.offsets
     lines = range(bisect_left(offsets, change.start), bisect_left(offsets, change.new_end))
     window.extend(_in_text_lines(model, program, lines))
-    in_lines = dict(before.in_lines)
-    in_lines[Unit.PROGRAM] = change.spliced(before.in_lines[Unit.PROGRAM], window)
-    return Found(
-        in_lines,
-        {**before.whole, Unit.PROGRAM: whole},  # type: ignore[dict-item]
-        memory.ArrayDemand(before.arrays.bytes, moved_largest),  # type: ignore[arg-type]
-    )
+    return window

@@ -21,7 +21,7 @@ numbers for them: a mismatch is reported as the syntax error 2003
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Hashable, Iterable, Mapping
 from dataclasses import dataclass
 from enum import StrEnum
 from typing import NamedTuple
@@ -65,7 +65,7 @@ _CLOSING = {  # the word that closes each kind of block, and the number of the c
 LOOPS = frozenset({BlockKind.FOR, BlockKind.REPEAT, BlockKind.WHILE, BlockKind.LOOP})
 _TOP_LEVEL = frozenset({BlockKind.EVENT, BlockKind.STARTUP})  # MintMT: never inside another block
 _COMMS_EVENTS = range(1, 6)  # the comms locations whose update raises an event (002:19, 77-79)
-_BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.IfThen, n.For, n.While, n.Until, n.SyntaxError_, n.EventBlock})
+BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.IfThen, n.For, n.While, n.Until, n.SyntaxError_, n.EventBlock})
 
 
 class Place(NamedTuple):
@@ -142,13 +142,13 @@ class _Matcher:
         self.bare_then: tuple[int, Fix] | None = None  # the last IF .. THEN with nothing after THEN: depth, fix
 
     def statement(self, statement: n.Statement, line: n.PlacedLine, index: int) -> None:
-        """One statement of ``_BLOCK_STATEMENTS``, the ``index``-th of its line."""
+        """One statement of ``BLOCK_STATEMENTS``, the ``index``-th of its line."""
         kind = _opener_kind(statement)
         place = Place(line.number, index)
         if type(statement) is n.IfThen:
-            then = _then_written(statement, line) if not statement.body else None  # type: ignore[union-attr]
+            then = _then_written(statement, line.syntax) if not statement.body else None  # type: ignore[union-attr]
             if then is not None:
-                self.bare_then = (len(self.stack), Fix("Change THEN to DO", (Edit(then, "DO"),)))
+                self.bare_then = (len(self.stack), Fix("Change THEN to DO", (Edit(line.span(then), "DO"),)))
         elif kind is not None:
             if kind in _TOP_LEVEL:
                 self._top_level(statement, kind, line)
@@ -229,22 +229,37 @@ class _Matcher:
         return Structure(tuple(self.blocks), tuple(self.diagnostics))
 
 
-def _then_written(statement: n.IfThen, line: n.PlacedLine) -> Span | None:
-    """Where the THEN of ``statement`` is written in its file (not from a macro's text)."""
-    text = line.syntax.text
+def _then_written(statement: n.IfThen, line: n.LineSyntax) -> Span | None:
+    """Where the THEN of ``statement`` is written in its line (not from a macro's text)."""
+    text = line.text
     start = statement.condition.span.end
     while start < len(text) and text[start] in " \t":
         start += 1
-    return line.span(Span(start, start + 4)) if text[start : start + 4].upper() == "THEN" else None
+    return Span(start, start + 4) if text[start : start + 4].upper() == "THEN" else None
+
+
+def block_key(statement: n.Statement, line: n.LineSyntax) -> Hashable:
+    """What the matcher reads of a block statement, but for its span (where the errors about it go):
+    equal keys at equal places match the same blocks."""
+    kind = type(statement)
+    if kind is n.IfThen:
+        return kind, None if statement.body else _then_written(statement, line)  # type: ignore[union-attr]
+    if kind is n.BlockWord:
+        return kind, statement.word  # type: ignore[union-attr]
+    if kind is n.SyntaxError_:
+        return kind, statement.opens, statement.closes  # type: ignore[union-attr]
+    if kind is n.EventBlock:
+        return kind, statement.name  # type: ignore[union-attr]
+    return kind
 
 
 def match_blocks(lines: Iterable[tuple[n.PlacedLine, LineFacts]], controller: ControllerProfile) -> Structure:
     """Match the blocks of one file and check the nesting limits."""
     matcher = _Matcher(controller.nesting)
     for line, facts in lines:
-        if not facts.kinds.isdisjoint(_BLOCK_STATEMENTS):  # most lines open and close nothing
+        if not facts.kinds.isdisjoint(BLOCK_STATEMENTS):  # most lines open and close nothing
             for index, statement in enumerate(facts.statements):
-                if type(statement) in _BLOCK_STATEMENTS:
+                if type(statement) in BLOCK_STATEMENTS:
                     matcher.statement(statement, line, index)
     return matcher.finish()
 

@@ -1,77 +1,123 @@
-"""Carrying a model over an edit that changed no line's meaning.
+"""Carrying a model over an edit: what the edit did not change is the previous version's, moved.
 
-Typing in a comment, or spaces after a line's last statement, leaves every line's
-index (``LineFacts``) and label as they were: the blocks, the symbol table and
-every whole-application finding are the previous version's, moved by the edit's
-length. Matching the blocks and building the symbol table again would cost time
-in proportion to the file on every keystroke; carrying them costs the lines the
-edit touched.
+A re-parsed program (``mintlang.syntax.reparse``) names the window of lines its
+edit touched. What each line gives on its own (its index, what the line rules
+find there) is the previous version's outside the window, moved by the edit's
+length: the analyser carries it over whatever the edit was. What is found over the
+whole application is carried further only when its input did not change:
 
-Carried only when nothing the whole-application passes read can have changed:
-the same configuration and controller, the same physical lines (line numbers
-name the blocks), each re-read line with the same facts and label, no macro
-used there, the same line breaks, and a window that stops before the end of the
-file (fixes that add text at the end read how it ends). A block diagnostic
-whose text lies in the window is found again: the model is built anew.
+* the blocks, when every re-read line has the same block statements at the same
+  places (line numbers name them, so no line was added or removed), whatever their
+  conditions; an error about one of them lies in the window and is found again;
+* the symbol table and every whole-application finding, when every re-read line
+  has the same facts (``LineFacts``) and label, uses no macro, and the edit keeps
+  the file's line breaks and stops before its end (fixes that add text read how
+  the file breaks and ends its lines). Typing in a comment is such an edit;
+  typing in a name is not.
+
+Either way the configuration and the controller are the previous ones. A block
+diagnostic whose text lies in the window is found again: the blocks are matched
+anew. Matching the blocks and building the symbol table cost time in proportion
+to the file; a carried edit costs the lines it touched.
 """
 
 from __future__ import annotations
 
+from collections.abc import Hashable, Sequence
+from dataclasses import dataclass
+
 from mintlang.controllers import ControllerProfile
-from mintlang.semantic.blocks import Structure
-from mintlang.semantic.index import line_facts
+from mintlang.semantic.blocks import BLOCK_STATEMENTS, Structure, block_key, match_blocks
+from mintlang.semantic.index import LineFacts, index_lines, line_facts
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
+from mintlang.syntax import nodes as n
 from mintlang.syntax.change import Change
 from mintlang.syntax.parser import Document
+
+
+@dataclass(frozen=True, slots=True)
+class Carried:
+    """How a model was carried over from the previous version's."""
+
+    change: Change  # the edit: the lines it touched, where the others moved
+    same_facts: bool  # every whole-application finding is the previous one, moved
 
 
 def carry_model(
     previous: SemanticModel, program: Document, configuration: Document | None, controller: ControllerProfile
 ) -> SemanticModel | None:
-    """The model of ``program``, re-parsed from ``previous``'s program, carried over; None where it cannot be."""
+    """The model of ``program``, re-parsed from ``previous``'s program; None where nothing is carried over."""
     change = program.change
-    if change is None or not _unchanged_beside(previous, program, configuration, controller, change):
+    if change is None or previous.controller != controller or len(previous.program.source) != change.previous_length:
+        return None
+    configured = previous.configuration
+    if (configured.source if configured else None) != (configuration.source if configuration else None):
+        return None
+    pairs = _window_pairs(previous.program, program, change)
+    structure = _carried_structure(previous.structures[Unit.PROGRAM], pairs, change)
+    if structure is not None:
+        same_facts = _same_facts(previous.program, program, change, pairs)
+        structures = {**previous.structures, Unit.PROGRAM: structure}
+        return SemanticModel(program, configuration, controller, structures, Carried(change, same_facts))
+    lines = index_lines(Unit.PROGRAM, program.placed)
+    structures = {
+        **previous.structures,
+        Unit.PROGRAM: match_blocks(((line, facts) for _, line, facts in lines), controller),
+    }
+    if configuration is not None:
+        lines = index_lines(Unit.CONFIGURATION, configuration.placed) + lines
+    carried = Carried(change, same_facts=False)
+    return SemanticModel.of(program, configuration, controller, structures, lines=tuple(lines), carried=carried)
+
+
+_Pair = tuple[n.PlacedLine, LineFacts, n.PlacedLine, LineFacts]
+
+
+def _window_pairs(before: Document, now: Document, change: Change) -> Sequence[_Pair] | None:
+    """Each re-read line before and after the edit with its facts; None where lines were added or removed."""
+    if change.line_shift or change.old_lines != change.new_lines:
         return None
     first, after = change.first_line, change.first_line + change.old_lines
-    old = previous.program.placed
-    new = program.placed
-    for before, now in zip(old[first:after], new[first:after], strict=True):
-        if before.number != now.number or before.syntax.label != now.syntax.label:
+    return [
+        (old, line_facts(Unit.PROGRAM, old), new, line_facts(Unit.PROGRAM, new))
+        for old, new in zip(before.placed[first:after], now.placed[first:after], strict=True)
+    ]
+
+
+def _blocks_of(line: n.PlacedLine, facts: LineFacts) -> tuple[tuple[int, Hashable], ...]:
+    """What the block matcher reads of a line, but for where its statements are (``block_key``)."""
+    if facts.kinds.isdisjoint(BLOCK_STATEMENTS):
+        return ()
+    statements = enumerate(facts.statements)
+    return tuple((at, block_key(item, line.syntax)) for at, item in statements if type(item) in BLOCK_STATEMENTS)
+
+
+def _carried_structure(structure: Structure, pairs: Sequence[_Pair] | None, change: Change) -> Structure | None:
+    """The previous blocks, moved, where no re-read line changed a block statement or moved a line."""
+    if pairs is None:
+        return None
+    for old, old_facts, new, new_facts in pairs:
+        if old.number != new.number or _blocks_of(old, old_facts) != _blocks_of(new, new_facts):
             return None
-        if line_facts(Unit.PROGRAM, before) != line_facts(Unit.PROGRAM, now):
-            return None
-    structure = previous.structures[Unit.PROGRAM]
     diagnostics = tuple(map(change.diagnostic, structure.diagnostics))
     if None in diagnostics:
         return None
-    structures = dict(previous.structures)
-    structures[Unit.PROGRAM] = Structure(structure.blocks, diagnostics)  # type: ignore[arg-type]
-    return SemanticModel(program, configuration, controller, structures, change)
+    return Structure(structure.blocks, diagnostics)  # type: ignore[arg-type]
 
 
-def _unchanged_beside(
-    previous: SemanticModel,
-    program: Document,
-    configuration: Document | None,
-    controller: ControllerProfile,
-    change: Change,
-) -> bool:
-    """Nothing the edit did reaches beyond the lines it touched."""
-    before = previous.program
-    if previous.controller != controller or len(before.source) != change.previous_length:
+def _same_facts(before: Document, now: Document, change: Change, pairs: Sequence[_Pair] | None) -> bool:
+    """Nothing a whole-application pass reads changed beyond where things moved."""
+    if pairs is None or change.reaches_end:
         return False
-    configured = previous.configuration
-    if (configured.source if configured else None) != (configuration.source if configuration else None):
-        return False
-    if change.line_shift or change.old_lines != change.new_lines or change.reaches_end:
+    if any(old.syntax.label != new.syntax.label or old_facts != new_facts for old, old_facts, new, new_facts in pairs):
         return False
     old_text = before.source[change.start : change.old_end]
-    new_text = program.source[change.start : change.new_end]
+    new_text = now.source[change.start : change.new_end]
     if old_text.count("\r\n") != new_text.count("\r\n"):
         return False  # fixes write the line breaks the file uses
     return not any(
         change.start <= expansion.span.start < end
-        for document, end in ((before, change.old_end), (program, change.new_end))
+        for document, end in ((before, change.old_end), (now, change.new_end))
         for expansion in document.expansions
     )

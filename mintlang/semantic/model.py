@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 from mintlang.allocation import without_collector
 from mintlang.controllers import ControllerProfile, profile
@@ -20,8 +21,10 @@ from mintlang.semantic.blocks import Structure, match_blocks
 from mintlang.semantic.index import LineFacts, SyntaxIndex, index_lines, index_syntax
 from mintlang.semantic.symbols import SymbolTable, Unit, build_symbols
 from mintlang.syntax import nodes as n
-from mintlang.syntax.change import Change
 from mintlang.syntax.parser import Document
+
+if TYPE_CHECKING:
+    from mintlang.semantic.carry import Carried
 
 IndexedLine = tuple[Unit, n.PlacedLine, LineFacts]
 
@@ -39,7 +42,7 @@ class SemanticModel:
     configuration: Document | None
     controller: ControllerProfile
     structures: Mapping[Unit, Structure]
-    carried: Change | None = None  # the edit it was carried over by from the previous version's model
+    carried: Carried | None = None  # how it was carried over from the previous version's model
 
     @classmethod
     def of(
@@ -48,10 +51,12 @@ class SemanticModel:
         configuration: Document | None,
         controller: ControllerProfile,
         structures: Mapping[Unit, Structure],
+        *,
         lines: tuple[IndexedLine, ...],
+        carried: Carried | None = None,
     ) -> SemanticModel:
         """A model whose ``lines`` are known already (as matching the blocks needed them)."""
-        model = cls(program, configuration, controller, structures)
+        model = cls(program, configuration, controller, structures, carried)
         model.__dict__["lines"] = lines  # what ``cached_property`` would have kept
         return model
 
@@ -100,4 +105,4 @@ def build_model(
         unit: match_blocks(((placed, facts) for file, placed, facts in lines if file is unit), target)
         for unit, _ in documents
     }
-    return SemanticModel.of(program, configuration, target, structures, lines)
+    return SemanticModel.of(program, configuration, target, structures, lines=lines)

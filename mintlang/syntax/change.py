@@ -53,9 +53,11 @@ class Window:
         return offset + self.shift if offset >= self.old_end else None
 
     def _end(self, offset: int) -> int | None:
+        """Where a span ending at ``offset`` ends now. A span that ends where the window does took in
+        its last line break, and what it covers was decided by the text before it: found again."""
         if offset <= self.start:
             return offset
-        return offset + self.shift if offset >= self.old_end else None
+        return offset + self.shift if offset > self.old_end else None
 
     def span(self, span: Span) -> Span | None:
         """Where ``span`` of the previous text is now; None where it reaches into the window."""

@@ -145,6 +145,7 @@ def test_typing_in_a_comment_carries_the_model_and_its_findings_over() -> None:
     before = mintlang.check_application(PROGRAM)
     after = mintlang.check_application(PROGRAM.replace("set-up", "set up"), previous=before)
     assert after.model.carried is not None
+    assert after.model.carried.same_facts
     assert "symbols" not in vars(after.model)  # no symbol table was needed to check the keystroke
     assert after.program == mintlang.check_application(PROGRAM.replace("set-up", "set up")).program
     moved = mintlang.check_application(PROGRAM.replace("the jog", "the jog, longer"), previous=before)
@@ -152,10 +153,12 @@ def test_typing_in_a_comment_carries_the_model_and_its_findings_over() -> None:
     assert [d.span.start for d in moved.program] == [missing.span.start + len(", longer")]
 
 
-def test_typing_in_a_name_builds_the_model_again() -> None:
+def test_typing_in_a_name_carries_the_blocks_and_checks_the_whole_application_again() -> None:
     before = mintlang.check_application(PROGRAM)
     after = mintlang.check_application(PROGRAM.replace("PRINT feed", "PRINT feedx"), previous=before)
-    assert after.model.carried is None
+    assert after.model.carried is not None
+    assert not after.model.carried.same_facts
+    assert after.model.structures[Unit.PROGRAM].blocks is before.model.structures[Unit.PROGRAM].blocks
     assert after.program == mintlang.check_application(PROGRAM.replace("PRINT feed", "PRINT feedx")).program
     assert len(after.program) == len(before.program) + 1  # feedx is not declared
 

@@ -1,10 +1,14 @@
-"""Functions given as many values as their formats take (error 2003 otherwise).
+"""Functions given as many values as their formats take, and written where their formats write them.
 
 The guide prints each function's values in brackets: ``POW(x, y)`` takes two,
 ``SIN(<angle>)`` one (000:15152, 000:15944), ``COMMS( {node, } element)`` one
 or two, braces marking what may be left out (10.1, 000:5578-5579). A call with
 more or fewer does not match the statement's syntax, which the compiler rejects
-(#2003, 000:18920-18925). The counts come from the keyword database's formats,
+(#2003, 000:18920-18925). A function whose formats only read it (``v =
+SIN(<angle>)``) is no statement: alone it is a keyword neither read nor given a
+value (#2005, 000:18930-18934), given a value it is read only (#2000,
+000:18905-18908); ``COMMS(1) = 5`` and ``CAMTABLE(0, a, NULL)`` are statements as
+their formats write them. Everything comes from the keyword database's formats,
 so a keyword without a bracketed format is not checked.
 """
 
@@ -40,6 +44,14 @@ class _Arity:
         return f"{counted} value{'' if self.most == 1 else 's'}"
 
 
+@dataclass(frozen=True, slots=True)
+class _Statements:
+    """The statements a function's formats write it as: alone, or given a value."""
+
+    alone: bool  # CAMTABLE ( axis, position array, ... )
+    assigned: bool  # COMMS( {node, } element) = <expression>
+
+
 def each_line(scope: LineScope) -> Iterator[Finding]:
     for call in _calls(scope.facts.statements):
         arity = _arity(call.function, scope.dialect)
@@ -47,6 +59,22 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             given = len(call.arguments)
             detail = f"{call.function} takes {arity.expected()} ({arity.format}), not {given}"
             yield Finding(scope.unit, mint_error(2003, call.span, detail))
+    for statement in scope.facts.statements:
+        if type(statement) is n.FunctionStatement:
+            yield from _as_statement(scope, statement)
+
+
+def _as_statement(scope: LineScope, statement: n.FunctionStatement) -> Iterator[Finding]:
+    call = statement.call
+    forms = _statements(call.function, scope.dialect)
+    if forms is None:
+        return
+    if statement.values is not None and not forms.assigned:
+        detail = f"{call.function} is read only and cannot be given a value"
+        yield Finding(scope.unit, mint_error(2000, call.spelling_span, detail))
+    elif statement.values is None and not forms.alone:
+        what = "read or given a value here" if forms.assigned else f"read here, as in 'v = {call.function}(…)'"
+        yield Finding(scope.unit, mint_error(2005, call.spelling_span, f"{call.function} must be {what}"))
 
 
 def _calls(statements: tuple[n.Statement, ...]) -> Iterator[n.Call]:
@@ -72,6 +100,18 @@ def _arity(name: str, dialect: Dialect) -> _Arity | None:
             required = len(_items(_OPTIONAL.sub("", inside)))
             return _Arity(required, required + optional, text.strip())
     return None
+
+
+@cache
+def _statements(name: str, dialect: Dialect) -> _Statements | None:
+    """How ``name``'s formats write it as a statement; None when no format brackets its values."""
+    keyword = database().keywords_of(dialect).get(name)
+    formats = [text.strip() for text in keyword.formats] if keyword is not None else []
+    if not any(re.search(rf"\b{re.escape(name)}\s*\(", text) for text in formats):
+        return None
+    leading = [text for text in formats if re.match(rf"{re.escape(name)}\s*\(", text)]
+    assigns = [re.search(r"\)\s*=", text) is not None for text in leading]
+    return _Statements(alone=not all(assigns), assigned=any(assigns))
 
 
 def _items(text: str) -> list[str]:

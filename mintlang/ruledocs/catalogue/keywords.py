@@ -11,8 +11,8 @@ GROUP = Group(
     (
         RuleDoc(
             2000,
-            catches="A value assigned to a keyword that can only be read (`CAMINDEX = 4`) or that is a "
-            "command (`STOP = 1`).",
+            catches="A value assigned to a keyword that can only be read (`CAMINDEX = 4`, a function: "
+            "`ABS(1) = 5`) or that is a command (`STOP = 1`, `BEEP = 1`).",
             why="The keyword's attribute table says it cannot be written; the compiler refuses the "
             "assignment, and the value the author meant to set is never set.",
             example=Example(

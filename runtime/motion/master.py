@@ -20,7 +20,7 @@ from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.moves import PROFILER_TICK_MS
-from mintlang.runtime.ranges import OUT_OF_RANGE
+from mintlang.runtime.ranges import OUT_OF_RANGE, check_range, table_bounds
 
 MS_POS, MS_ENCODER, MS_AUXENCODER, MS_SPEED, MS_DEMAND = 0, 1, 2, 3, 4
 INVALID_MASTER_CHANNEL = 70
@@ -148,9 +148,13 @@ def master_distance(motion: Motion, slave: Axis) -> float:
 
 def register(table: KeywordTable, motion: Motion) -> None:
     motion.on_default.append(lambda axis: _SETTINGS.pop(axis, None))
+    # the controller's own ranges come first: MintDrive takes only sources 2 and 3 and distances 1 to 65535
+    sources = table_bounds("MASTERSOURCE", table.controller)
+    distances = table_bounds("MASTERDISTANCE", table.controller)
 
     def write_source(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)
+        check_range("MASTERSOURCE", value, sources, axis.number)
         if value != int(value) or not MS_POS <= value <= MS_DEMAND:
             raise MintError(OUT_OF_RANGE, axis.number, f"MASTERSOURCE = {value:g}")
         chosen = settings(axis)
@@ -166,6 +170,7 @@ def register(table: KeywordTable, motion: Motion) -> None:
 
     def write_distance(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)
+        check_range("MASTERDISTANCE", value, distances, axis.number)
         if abs(value) > MAX_DISTANCE:
             raise MintError(OUT_OF_RANGE, axis.number, f"MASTERDISTANCE = {value:g}")
         settings(axis).distance = value

@@ -53,10 +53,12 @@ def shows_v4(texts: Mapping[Unit, str], controller: str) -> bool:
 
 
 def _v4_only_keyword(uses: Iterable[KeywordUse]) -> bool:
-    """Whether a keyword v3 did not have is used other than as a v3 user variable would be:
+    """Whether a v4 keyword v3 did not have is used other than as a v3 user variable would be (a
+    word neither version knows, as the v3 guide's ``X2.0 = 0`` for XIO2 is to the readers, shows nothing):
     a read counts as a variable's only outside the name's own assignments (``x = x | 128``
     reads ``x`` before v3 declares it, and is what the migrator writes for input modes)."""
-    v4_only = [use for use in uses if database().lookup_v3(use.keyword.keyword) is None]
+    db = database()
+    v4_only = [use for use in uses if use.keyword.keyword in db.keywords and db.lookup_v3(use.keyword.keyword) is None]
     assigning = {(use.keyword.keyword, use.unit, use.statement.span) for use in v4_only if use.use is Use.WRITE}
     forms: dict[str, set[Use | None]] = defaultdict(set)
     for use in v4_only:

@@ -13,6 +13,7 @@ setting for the document class: its ``Workspace`` makes documents in
 
 from __future__ import annotations
 
+from bisect import bisect_right
 from collections.abc import Generator, Sequence
 from typing import Any
 
@@ -20,12 +21,17 @@ from lsprotocol import types
 from pygls.protocol import LanguageServerProtocol, lsp_method
 from pygls.workspace import TextDocument, Workspace
 
-from mintlang.diagnostics import split_lines
+from mintlang.diagnostics import LineIndex, line_starts, split_lines
 from mintlang.lsp.positions import Positions
+from mintlang.syntax.moved import MovedOffsets
 
 
 class LspTextDocument(TextDocument):
     """A pygls document whose lines, and so whose incremental edits, follow the LSP's line ends."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self._starts: tuple[str | None, Sequence[int] | None] = (None, None)  # a text, and its line starts
 
     @property
     def lines(self) -> Sequence[str]:
@@ -35,11 +41,29 @@ class LspTextDocument(TextDocument):
 
     def _apply_incremental_change(self, change: types.TextDocumentContentChangePartial) -> None:
         """Replace the change's range, found exactly as every feature finds positions: with ``Positions``
-        in the negotiated encoding, clamping a column past its line to the line's end as the LSP says."""
+        in the negotiated encoding, clamping a column past its line to the line's end as the LSP says.
+
+        The line starts of the text are kept from one change to the next, moved by each
+        (``mintlang.syntax.moved``): finding them again costs time in proportion to the file."""
         source = self.source
-        positions = Positions(source, self.position_codec.encoding or types.PositionEncodingKind.Utf16)
+        starts = self._starts[1] if self._starts[0] is source else None
+        index = LineIndex(source, starts)
+        positions = Positions(source, self.position_codec.encoding or types.PositionEncodingKind.Utf16, index)
         start, end = positions.offset(change.range.start), positions.offset(change.range.end)
         self._source = source[:start] + change.text + source[end:]
+        self._starts = (self._source, _moved_starts(source, index, start, end, change.text))
+
+
+def _moved_starts(source: str, index: LineIndex, start: int, end: int, text: str) -> Sequence[int] | None:
+    """The line starts after ``source[start:end]`` became ``text``, from ``index``, those of ``source``;
+    None (found again when needed) where a ``\r`` is near, which may join a ``\n`` into one line end."""
+    if "\r" in text or "\r" in source[max(0, start - 1) : end + 1]:
+        return None
+    starts = index.starts
+    first = bisect_right(starts, start)  # the lines that start after the change's start, up to its end, go
+    last = bisect_right(starts, end)
+    added = [start + line for line in line_starts(text)[1:]]
+    return MovedOffsets.spliced(starts, (first, last), added, len(text) - (end - start), 0)
 
 
 class LspWorkspace(Workspace):

@@ -76,9 +76,12 @@ class Positions:
 
     __slots__ = ("_encoding", "_index", "_line_count", "_plain", "_text")
 
-    def __init__(self, text: str, encoding: str = types.PositionEncodingKind.Utf16) -> None:
+    def __init__(
+        self, text: str, encoding: str = types.PositionEncodingKind.Utf16, index: LineIndex | None = None
+    ) -> None:
+        """``index`` is one already made for ``text`` (its parsed document's)."""
         self._text = text
-        self._index = LineIndex(text)
+        self._index = index or LineIndex(text)
         self._line_count = self._index.position(len(text)).line
         self._encoding = encoding
         self._plain = text.isascii() or encoding == types.PositionEncodingKind.Utf32  # a unit per character

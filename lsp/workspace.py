@@ -323,10 +323,11 @@ class Analyses:
             ignore=settings.ignore,
             previous=before[1].analysis if before is not None else None,  # a keystroke re-reads what it touched
         )
-        files = {unit: File(uri, Positions(text, self.encoding))}
+        analysed = analysis.model.document(unit) if not skipped else None
+        files = {unit: File(uri, Positions(text, self.encoding, analysed.line_index if analysed else None))}
         if other is not None and other_text is not None:
-            files[Unit.PROGRAM if unit is Unit.CONFIGURATION else Unit.CONFIGURATION] = File(
-                other, Positions(other_text, self.encoding)
-            )
+            other_unit = Unit.PROGRAM if unit is Unit.CONFIGURATION else Unit.CONFIGURATION
+            index = analysis.model.document(other_unit).line_index  # the documents know their lines
+            files[other_unit] = File(other, Positions(other_text, self.encoding, index))
         own = analysis.configuration if unit is Unit.CONFIGURATION else analysis.program
         return Snapshot(uri, version, unit, analysis, own, files, settings, skipped)

@@ -10,10 +10,11 @@ from __future__ import annotations
 import re
 from array import array
 from bisect import bisect_right
+from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from enum import StrEnum
 from itertools import accumulate, chain
-from typing import NamedTuple
+from typing import NamedTuple, overload
 
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")
 _LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+\Z")  # a line with its end; the last may have none
@@ -112,6 +113,33 @@ class Position:
     column: int  # 1-based, in characters
 
 
+class LinesAndEnd(Sequence[int]):
+    """Where the lines of a text start, from where its non-empty physical lines start (a parsed
+    document's ``PhysicalLines.offsets``): a text that ends with a line break has one more, empty."""
+
+    __slots__ = ("_end", "_offsets")
+
+    def __init__(self, offsets: Sequence[int], text: str) -> None:
+        self._offsets = offsets
+        self._end = len(text) if not text or text[-1] in "\r\n" else None
+
+    def __len__(self) -> int:
+        return len(self._offsets) + (self._end is not None)
+
+    @overload
+    def __getitem__(self, index: int) -> int: ...
+    @overload
+    def __getitem__(self, index: slice) -> Sequence[int]: ...
+    def __getitem__(self, index: int | slice) -> int | Sequence[int]:
+        if isinstance(index, slice):
+            return [self[at] for at in range(*index.indices(len(self)))]
+        if index < 0:
+            index += len(self)
+        if index == len(self._offsets) and self._end is not None:
+            return self._end
+        return self._offsets[index]
+
+
 def line_starts(text: str) -> array[int]:
     """The offset of each line of ``text`` (a line break is ``\r\n``, ``\r`` or ``\n``).
 
@@ -128,20 +156,26 @@ _PAST_BREAK = (1).__add__  # a line's length with its \n
 
 
 class LineIndex:
-    """Maps offsets to lines and columns; the line starts are found on first use.
+    """Maps offsets to lines and columns; the line starts are found on first use, or given
+    (a parsed document knows where its physical lines start).
 
     Every parse makes one, but a check that finds nothing never needs it.
     """
 
     __slots__ = ("_length", "_starts_cache", "_text")
 
-    def __init__(self, text: str) -> None:
+    def __init__(self, text: str, starts: Sequence[int] | None = None) -> None:
         self._text = text
         self._length = len(text)
-        self._starts_cache: array[int] | None = None
+        self._starts_cache = starts
 
     @property
-    def _starts(self) -> array[int]:
+    def starts(self) -> Sequence[int]:
+        """The offset of each line."""
+        return self._starts
+
+    @property
+    def _starts(self) -> Sequence[int]:
         if self._starts_cache is None:  # machine integers: a tenth of a list of int objects, for a file of short lines
             self._starts_cache = line_starts(self._text)
         return self._starts_cache

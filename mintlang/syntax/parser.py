@@ -24,7 +24,7 @@ from mintlang.allocation import collector_paused, without_collector
 from mintlang.analysis.suggestions import closest, keyword_like, not_a_keyword
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import mint_error
-from mintlang.diagnostics import Diagnostic, Fix, LineIndex
+from mintlang.diagnostics import Diagnostic, Fix, LineIndex, LinesAndEnd
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.syntax import nodes as n
@@ -213,7 +213,7 @@ def parse(
         lines.visible,
         tuple(lines.definitions),
         tuple(lines.expansions),
-        LineIndex(source),
+        LineIndex(source, LinesAndEnd(lexed.lines.offsets, source)),
         context,
     )
 

@@ -19,7 +19,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 from mintlang.allocation import without_collector
-from mintlang.diagnostics import Diagnostic, LineIndex
+from mintlang.diagnostics import Diagnostic, LineIndex, LinesAndEnd
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.syntax import nodes as n
@@ -177,7 +177,7 @@ class _Reparse:
             visible,
             definitions,
             change.spliced(previous.expansions, lines.expansions),
-            LineIndex(source),
+            LineIndex(source, LinesAndEnd(physical.offsets, source)),
             context,
             change,
         )

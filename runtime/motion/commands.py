@@ -106,9 +106,11 @@ class Motion:
 
     # ----------------------------------------------------------------- moves
 
-    def linear(self, *, relative: bool, interpolated: bool) -> Callable[[Channels | None, Values], bool]:
+    def linear(self, keyword: str, *, relative: bool, interpolated: bool) -> Callable[[Channels | None, Values], bool]:
         """MOVEA/MOVER load one move per axis, each at its own SPEED (MP-13); VECTORA/VECTORR load one
-        straight line through every addressed axis with the first as master (MP-14)."""
+        straight line through every addressed axis with the first as master (MP-14). Each value is in the
+        keyword's range after SCALE (000:5648-5649), however far the counter then wraps (000:14617-14618)."""
+        limits = table_bounds(keyword, self.profile.controller)
 
         def write(channels: Channels | None, values: Values) -> bool:
             axes = self.addressed(channels)
@@ -119,7 +121,8 @@ class Motion:
                     raise MintError(MISSING_PARAMETER, detail="a vector needs a value for each of its axes")
                 axes = axes[: len(values)]  # VECTORA = 30,40 with AXES[0,1,2,3] interpolates axes 0 and 1
             pairs = [(axis, value) for axis, value in zip(axes, values, strict=False) if value is not None]
-            for axis, _ in pairs:
+            for axis, value in pairs:
+                check_range(keyword, value, limits, axis.number, axis.scale)
                 axis.require_ready()
                 if (axis.move is not None and axis.move.mode not in PATH_MODES) or axis.pending_mode:
                     raise MintError(MOTION_IN_PROGRESS, axis.number)
@@ -328,10 +331,10 @@ class Motion:
     # --------------------------------------------------------------- keywords
 
     def register(self, table: KeywordTable) -> None:
-        table.register("MOVEA", write=self.linear(relative=False, interpolated=False))
-        table.register("MOVER", write=self.linear(relative=True, interpolated=False))
-        table.register("VECTORA", write=self.linear(relative=False, interpolated=True))
-        table.register("VECTORR", write=self.linear(relative=True, interpolated=True))
+        table.register("MOVEA", write=self.linear("MOVEA", relative=False, interpolated=False))
+        table.register("MOVER", write=self.linear("MOVER", relative=True, interpolated=False))
+        table.register("VECTORA", write=self.linear("VECTORA", relative=False, interpolated=True))
+        table.register("VECTORR", write=self.linear("VECTORR", relative=True, interpolated=True))
         table.register("JOG", read=lambda ch: self.axis(ch).jog_speed / self.axis(ch).scale, write=self.jog)
         table.register("TORQUE", read=lambda ch: self.axis(ch).torque or 0.0, write=self.torque)
         table.register("GO", command=self.go)

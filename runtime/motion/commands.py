@@ -90,6 +90,12 @@ class Motion:
 
         return checked
 
+    def check_values(self, keyword: str, pairs: Sequence[tuple[Axis, float]], *, scaled: bool = True) -> None:
+        """Error 3 unless each value is in ``keyword``'s range, after its axis's SCALE when scaled (000:5648-5649)."""
+        limits = table_bounds(keyword, self.profile.controller)
+        for axis, value in pairs:
+            check_range(keyword, value, limits, axis.number, axis.scale if scaled else 1.0)
+
     def addressed(self, channels: Channels | None) -> list[Axis]:
         self._too_many(channels)
         numbers = channels if channels is not None else (0,)
@@ -109,8 +115,7 @@ class Motion:
     def linear(self, keyword: str, *, relative: bool, interpolated: bool) -> Callable[[Channels | None, Values], bool]:
         """MOVEA/MOVER load one move per axis, each at its own SPEED (MP-13); VECTORA/VECTORR load one
         straight line through every addressed axis with the first as master (MP-14). Each value is in the
-        keyword's range after SCALE (000:5648-5649), however far the counter then wraps (000:14617-14618)."""
-        limits = table_bounds(keyword, self.profile.controller)
+        keyword's range after SCALE, however far the counter then wraps (000:14617-14618)."""
 
         def write(channels: Channels | None, values: Values) -> bool:
             axes = self.addressed(channels)
@@ -121,8 +126,8 @@ class Motion:
                     raise MintError(MISSING_PARAMETER, detail="a vector needs a value for each of its axes")
                 axes = axes[: len(values)]  # VECTORA = 30,40 with AXES[0,1,2,3] interpolates axes 0 and 1
             pairs = [(axis, value) for axis, value in zip(axes, values, strict=False) if value is not None]
-            for axis, value in pairs:
-                check_range(keyword, value, limits, axis.number, axis.scale)
+            self.check_values(keyword, pairs)
+            for axis, _ in pairs:
                 axis.require_ready()
                 if (axis.move is not None and axis.move.mode not in PATH_MODES) or axis.pending_mode:
                     raise MintError(MOTION_IN_PROGRESS, axis.number)
@@ -195,9 +200,8 @@ class Motion:
     def jog(self, channels: Channels | None, values: Values) -> bool:
         """JOG: ramp to a constant speed at once, no GO (MP-16); JOG = 0 ramps down and ends the move."""
         pairs = self._pairs(channels, values)
-        speeds = table_bounds("JOG", self.profile.controller)
-        for axis, value in pairs:
-            check_range("JOG", value, speeds, axis.number, axis.scale)  # a scaled range (000:5648-5649)
+        self.check_values("JOG", pairs)
+        for axis, _ in pairs:
             axis.require_ready()
             move = axis.move
             if move is not None and (move.mode not in (MD_JOG, MD_LINEAR) or len(move.axes) > 1):
@@ -230,9 +234,8 @@ class Motion:
         """TORQUE: the DAC at once, servo loop off, until a stop (SL-9); it cannot blend from a
         homing cycle, a vector or a circle [000:16865-16871]."""
         pairs = self._pairs(channels, values)
-        levels = table_bounds("TORQUE", self.profile.controller)
-        for axis, value in pairs:
-            check_range("TORQUE", value, levels, axis.number)
+        self.check_values("TORQUE", pairs, scaled=False)
+        for axis, _ in pairs:
             axis.require_ready()
             move = axis.move
             homing = axis.pending_mode == MD_HOMING or (move is not None and move.mode == MD_HOMING)

@@ -84,6 +84,7 @@ def incremental(motion: Motion, *, relative: bool) -> Callable[[Channels | None,
 
     def write(channels: Channels | None, values: Values) -> bool:
         pairs = motion._pairs(channels, values)
+        motion.check_values("INCR" if relative else "INCA", pairs)
         for axis, _ in pairs:
             axis.require_ready()
             if not (_running(axis) or _waiting(axis) or not axis.busy()):

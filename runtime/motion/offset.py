@@ -29,6 +29,7 @@ NEXTMOVES = frozenset({Controller.NEXTMOVE_PCI, Controller.NEXTMOVE_PC, Controll
 def offset(motion: Motion) -> Callable[[Channels | None, Values], bool]:
     def write(channels: Channels | None, values: Values) -> bool:
         pairs = motion._pairs(channels, values)
+        motion.check_values("OFFSET", pairs)
         for axis, _ in pairs:
             axis.require_ready()
             if motion.profile.controller not in NEXTMOVES:

@@ -9,11 +9,14 @@ whole application is carried further only when its input did not change:
 * the blocks, when every re-read line has the same block statements at the same
   places (line numbers name them, so no line was added or removed), whatever their
   conditions; an error about one of them lies in the window and is found again;
-* the symbol table and every whole-application finding, when every re-read line
-  has the same facts (``LineFacts``) and label, uses no macro, and the edit keeps
-  the file's line breaks and stops before its end (fixes that add text read how
-  the file breaks and ends its lines). Typing in a comment is such an edit;
-  typing in a name is not.
+* every whole-application finding, when every re-read line means the same to
+  the whole-application passes (``_meaning``: its statements without their spans,
+  and without the values of the literals none of those passes reads) with the
+  same label and indentation, uses no macro, and the edit keeps the file's line
+  breaks and stops before its end (fixes that add text read how the file breaks
+  and ends its lines). Typing in a comment or in a number is such an edit;
+  typing in a name is not. A finding that lies in the re-read lines is found
+  again, and with it all of them.
 
 Either way the configuration and the controller are the previous ones. A block
 diagnostic whose text lies in the window is found again: the blocks are matched
@@ -24,9 +27,10 @@ to the file; a carried edit costs the lines it touched.
 from __future__ import annotations
 
 from collections.abc import Hashable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, fields, is_dataclass
 
 from mintlang.controllers import ControllerProfile
+from mintlang.diagnostics import Span
 from mintlang.semantic.blocks import BLOCK_STATEMENTS, Structure, block_key, match_blocks
 from mintlang.semantic.index import LineFacts, index_lines, line_facts
 from mintlang.semantic.model import SemanticModel
@@ -110,8 +114,11 @@ def _same_facts(before: Document, now: Document, change: Change, pairs: Sequence
     """Nothing a whole-application pass reads changed beyond where things moved."""
     if pairs is None or change.reaches_end:
         return False
-    if any(old.syntax.label != new.syntax.label or old_facts != new_facts for old, old_facts, new, new_facts in pairs):
-        return False
+    for old, old_facts, new, new_facts in pairs:
+        if _label(old) != _label(new) or _indentation(old) != _indentation(new):
+            return False
+        if old_facts != new_facts and _meaning(old, old_facts) != _meaning(new, new_facts):
+            return False
     old_text = before.source[change.start : change.old_end]
     new_text = now.source[change.start : change.new_end]
     if old_text.count("\r\n") != new_text.count("\r\n"):
@@ -121,3 +128,47 @@ def _same_facts(before: Document, now: Document, change: Change, pairs: Sequence
         for document, end in ((before, change.old_end), (now, change.new_end))
         for expansion in document.expansions
     )
+
+
+def _label(line: n.PlacedLine) -> str | None:
+    label = line.syntax.label
+    return label.text if label is not None else None
+
+
+def _indentation(line: n.PlacedLine) -> str:
+    """What comes before a line's first word: a DIM added above a use copies it."""
+    return line.syntax.text[: line.syntax.span.start]
+
+
+# What the whole-application passes read the values of: a DIM's size and values (the symbol table, arrays,
+# memory), an element's index (arrays), the condition of a WHILE or an UNTIL (flow: is the loop endless).
+_VALUED = (n.Dim, n.While, n.Until)
+_LITERALS = (n.Number, n.CharConstant, n.StringLiteral)
+
+
+def _meaning(line: n.PlacedLine, facts: LineFacts) -> Hashable:
+    """A line's statements as the whole-application passes read them: without their spans, and
+    without the values of their literals where no pass reads them. What could not be parsed is
+    its text (the words in it count as uses of those names)."""
+    text = line.syntax.text
+    return tuple(
+        (n.SyntaxError_, statement.opens, statement.closes, text[statement.span.start : statement.span.end])
+        if isinstance(statement, n.SyntaxError_)
+        else _shape(statement, keep=isinstance(statement, _VALUED))
+        for statement in facts.statements
+    )
+
+
+def _shape(value: object, *, keep: bool) -> Hashable:
+    if isinstance(value, Span):
+        return None
+    if isinstance(value, tuple):
+        return tuple(_shape(item, keep=keep) for item in value)
+    if not is_dataclass(value):
+        return value  # type: ignore[return-value]
+    kind = type(value)
+    if isinstance(value, _LITERALS) and not keep:
+        return kind
+    if isinstance(value, n.ElementRef):
+        return kind, _shape(value.name, keep=keep), _shape(value.index, keep=True)
+    return (kind, *(_shape(getattr(value, field.name), keep=keep) for field in fields(value)))

@@ -153,6 +153,18 @@ def test_typing_in_a_comment_carries_the_model_and_its_findings_over() -> None:
     assert [d.span.start for d in moved.program] == [missing.span.start + len(", longer")]
 
 
+def test_typing_in_a_number_carries_the_findings_over_unless_a_pass_reads_its_value() -> None:
+    before = mintlang.check_application(PROGRAM)
+    jog = mintlang.check_application(PROGRAM.replace("feed = 10", "feed = 105"), previous=before)
+    assert jog.model.carried is not None
+    assert jog.model.carried.same_facts  # no whole-application pass reads what feed is set to
+    array = "DIM table(3)\ntable(2) = 1\nPRINT table(2)\n"
+    resized = mintlang.check_application(array.replace("(3)", "(1)"), previous=mintlang.check_application(array))
+    assert resized.model.carried is not None
+    assert not resized.model.carried.same_facts  # the size of an array: table(2) is now outside it
+    assert [d.code for d in resized.program] == ["E2016", "E2016"]  # table(2) written and read: 1 element
+
+
 def test_typing_in_a_name_carries_the_blocks_and_checks_the_whole_application_again() -> None:
     before = mintlang.check_application(PROGRAM)
     after = mintlang.check_application(PROGRAM.replace("PRINT feed", "PRINT feedx"), previous=before)
@@ -164,19 +176,25 @@ def test_typing_in_a_name_carries_the_blocks_and_checks_the_whole_application_ag
 
 
 _COMMENTED = [case for case in CASES if case.configuration is None]
-_TYPED_IN_COMMENTS = ["x", " ", "", "\t", "REM mint: ignore[E2001]", "ENDIF", "1", ":"]
+_TYPED_IN_COMMENTS = ["x", " ", "", "\t", "REM mint: ignore[E2001]", "ENDIF", "1", ":", "0", "."]
 
 
 @st.composite
 def _keystrokes(draw: st.DrawFn, source: str) -> tuple[int, int, str]:
-    """Where a user types: mostly in a comment or at the end of a line, sometimes anywhere."""
+    """Where a user types: mostly in a comment, in a number or at the end of a line, sometimes anywhere."""
     lines = source.split("\n")
     number = draw(st.integers(0, len(lines) - 1))
     line = lines[number]
     comment = line.upper().find("REM")
+    after_digits = [column + 1 for column, character in enumerate(line) if character.isdigit()]
     column = draw(
         st.sampled_from(
-            [len(line), *([comment + 3, len(line)] if comment >= 0 else []), draw(st.integers(0, len(line)))]
+            [
+                len(line),
+                *([comment + 3, len(line)] if comment >= 0 else []),
+                *after_digits[:3],
+                draw(st.integers(0, len(line))),
+            ]
         )
     )
     offset = sum(len(earlier) + 1 for earlier in lines[:number]) + column

@@ -8,8 +8,9 @@ show how the work grows with the file). Measured (medians): the wall time from a
 ``didChange`` to the
 ``publishDiagnostics`` of that version (debounce set to 0 ms, so the figure is
 the server's own work; editors add the configured debounce, 150 ms by
-default), for two kinds of typing near the top of the file, where an edit
-moves the most text: a character typed into a comment and deleted again,
+default), for three kinds of typing near the top of the file, where an edit
+moves the most text: a character typed into a comment and deleted again, a
+digit typed into a number (``WAIT = 174``) and deleted again,
 and a character typed into a variable's name in an ``IF`` and deleted again
 (the name becomes undeclared, then declared: the symbol table and the
 diagnostics change with every keystroke). Also the time to answer
@@ -21,8 +22,8 @@ text in this process with the per-line caches cleared, as ``mint check`` runs
 (the grammar and the keyword database already loaded). Beside each edit's wall time is the
 server's CPU time for it (read from ``/proc``, so the figure excludes the client and the pipes), as
 a share of the reference's CPU time. Targets (issue 14): diagnostics ≤ 50 ms, hover ≤ 10 ms,
-completion ≤ 20 ms; server CPU for an edit in a comment ≤ 5 % of the cold check and flat from 5k
-to 50k lines, for an edit to a name ≤ 15 % (semantic tokens have none: the figure shows what an
+completion ≤ 20 ms; server CPU for an edit in a comment or a number ≤ 5 % of the cold check and flat
+from 5k to 50k lines, for an edit to a name ≤ 15 % (semantic tokens have none: the figure shows what an
 edit costs beyond its diagnostics).
 """
 
@@ -95,13 +96,17 @@ async def _measure(text: str, path: Path, repeat: int) -> dict[str, list[float]]
     lines = text.splitlines()
     comment = next(number for number, line in enumerate(lines) if "REM ---- next station" in line)
     in_comment = lines[comment].index("REM") + len("REM ")  # in the comment's text, not before its REM
+    waiting = next(number for number, line in enumerate(lines) if "WAIT = " in line)
+    in_number = lines[waiting].index("WAIT = ") + len("WAIT = 1")  # between the number's first digit and the rest
     condition = next(number for number, line in enumerate(lines) if line.startswith("  IF IN"))
     name_end = lines[condition].index(" >")  # after "speed<n>"
     statement = next(number for number, line in enumerate(lines) if line.startswith("  SPEED[0,1]"))
     figures: dict[str, list[float]] = {
         "diagnostics, typing in a comment": [],
+        "diagnostics, typing in a number": [],
         "diagnostics, typing in a name": [],
         "server CPU, typing in a comment": [],
+        "server CPU, typing in a number": [],
         "server CPU, typing in a name": [],
         "semantic tokens": [],
         "hover": [],
@@ -109,7 +114,7 @@ async def _measure(text: str, path: Path, repeat: int) -> dict[str, list[float]]
     }
     version = 1
 
-    async def edit(line: int, character: int, typed: bool) -> float:
+    async def edit(line: int, character: int, typed: bool, character_typed: str = "x") -> float:
         """Type (or delete) one character at the place; the wall time until its diagnostics arrive."""
         nonlocal version
         version += 1
@@ -117,7 +122,7 @@ async def _measure(text: str, path: Path, repeat: int) -> dict[str, list[float]]
         at = types.Position(line=line, character=character)
         after = types.Position(line=line, character=character + 1)
         change = types.TextDocumentContentChangePartial(
-            range=types.Range(start=at, end=at if typed else after), text="x" if typed else ""
+            range=types.Range(start=at, end=at if typed else after), text=character_typed if typed else ""
         )
         start = time.perf_counter()
         client.text_document_did_change(
@@ -132,13 +137,14 @@ async def _measure(text: str, path: Path, repeat: int) -> dict[str, list[float]]
     # The kernel counts CPU time in ticks of 10 ms, more than an edit takes: the server's CPU is read
     # over blocks of edits (a character typed, then deleted, in turn) and divided by their number.
     block = _EDITS_PER_BLOCK
-    for name, line, character in (
-        ("diagnostics, typing in a comment", comment, in_comment),
-        ("diagnostics, typing in a name", condition, name_end),
+    for name, line, character, typing in (
+        ("diagnostics, typing in a comment", comment, in_comment, "x"),
+        ("diagnostics, typing in a number", waiting, in_number, "5"),
+        ("diagnostics, typing in a name", condition, name_end, "x"),
     ):
         for _ in range(max(1, repeat // block)):
             cpu = _cpu_seconds(pid)
-            figures[name] += [await edit(line, character, typed=number % 2 == 0) for number in range(block)]
+            figures[name] += [await edit(line, character, number % 2 == 0, typing) for number in range(block)]
             figures[name.replace("diagnostics", "server CPU")].append((_cpu_seconds(pid) - cpu) / block)
     for number in range(repeat):
         await edit(comment, in_comment, typed=number % 2 == 0)
@@ -176,8 +182,10 @@ def _reference(text: str, repeat: int) -> list[float]:
 
 _TARGETS = {
     "diagnostics, typing in a comment": "≤ 50 ms",
+    "diagnostics, typing in a number": "≤ 50 ms",
     "diagnostics, typing in a name": "≤ 50 ms",
     "server CPU, typing in a comment": "≤ 5 %",
+    "server CPU, typing in a number": "≤ 5 %",
     "server CPU, typing in a name": "≤ 15 %",
     "hover": "≤ 10 ms",
     "completion": "≤ 20 ms",
@@ -194,6 +202,7 @@ def main() -> None:
     options.add_argument("--repeat", type=int, default=15)
     arguments = options.parse_args()
     comment_cpu: dict[int, float] = {}
+    number_cpu: dict[int, float] = {}
     for lines in arguments.lines:
         text = mint_program(lines)
         with tempfile.TemporaryDirectory() as folder:
@@ -206,10 +215,13 @@ def main() -> None:
             share = f"  = {statistics.median(values) / reference:6.1%} of the reference" if "CPU" in name else ""
             print(f"  {name:<40}{_spread(values)}{share}{target}")
         comment_cpu[lines] = statistics.median(figures["server CPU, typing in a comment"])
+        number_cpu[lines] = statistics.median(figures["server CPU, typing in a number"])
     smallest, largest = min(comment_cpu), max(comment_cpu)
     if largest != smallest:
-        growth = comment_cpu[largest] / comment_cpu[smallest]
-        print(f"server CPU for a comment edit, {largest} lines over {smallest} lines: {growth:.1f} (target: flat, 1.0)")
+        for kind, cpu in (("comment", comment_cpu), ("number", number_cpu)):
+            growth = cpu[largest] / cpu[smallest]
+            sizes = f"{largest} lines over {smallest} lines"
+            print(f"server CPU for a {kind} edit, {sizes}: {growth:.1f} (target: flat, 1.0)")
 
 
 if __name__ == "__main__":

@@ -11,12 +11,7 @@ from __future__ import annotations
 import pytest
 
 import mintlang
-
-
-def _findings(source: str) -> list[tuple[str, int, int]]:
-    index = mintlang.LineIndex(source)
-    found = [(d.code, index.position(d.span.start)) for d in mintlang.check(source)]
-    return [(code, place.line, place.column) for code, place in found]
+from tests.analysis.placed import placed_codes
 
 
 @pytest.mark.parametrize(
@@ -28,7 +23,7 @@ def _findings(source: str) -> list[tuple[str, int, int]]:
     ],
 )
 def test_a_circle_of_another_shape_is_an_error(source: str, expected: list[tuple[str, int, int]]) -> None:
-    assert _findings(source) == expected
+    assert placed_codes(source) == expected
 
 
 def test_the_message_shows_the_format() -> None:
@@ -46,4 +41,4 @@ def test_the_message_shows_the_format() -> None:
     ],
 )
 def test_the_format_s_shape_is_clean(source: str) -> None:
-    assert _findings(source) == []
+    assert placed_codes(source) == []

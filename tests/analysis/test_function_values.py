@@ -11,13 +11,7 @@ from __future__ import annotations
 import pytest
 
 import mintlang
-
-
-def _findings(source: str) -> list[tuple[str, int, int]]:
-    index = mintlang.LineIndex(source)
-    return [
-        (d.code, index.position(d.span.start).line, index.position(d.span.start).column) for d in mintlang.check(source)
-    ]
+from tests.analysis.placed import placed_codes
 
 
 @pytest.mark.parametrize(
@@ -33,7 +27,7 @@ def _findings(source: str) -> list[tuple[str, int, int]]:
     ],
 )
 def test_a_wrong_count_is_error_2003_at_the_call(source: str, column: int) -> None:
-    assert _findings(source) == [("E2003", 2, column)]
+    assert placed_codes(source) == [("E2003", 2, column)]
 
 
 def test_the_message_gives_the_count_and_the_format() -> None:
@@ -54,4 +48,4 @@ def test_the_message_gives_the_count_and_the_format() -> None:
     ],
 )
 def test_the_counts_the_formats_give_are_clean(source: str) -> None:
-    assert _findings(source) == []
+    assert placed_codes(source) == []

@@ -13,12 +13,7 @@ from __future__ import annotations
 import pytest
 
 import mintlang
-
-
-def _findings(source: str) -> list[tuple[str, int, int]]:
-    index = mintlang.LineIndex(source)
-    found = [(d.code, index.position(d.span.start)) for d in mintlang.check(source)]
-    return [(code, place.line, place.column) for code, place in found]
+from tests.analysis.placed import placed_codes
 
 
 @pytest.mark.parametrize(
@@ -31,7 +26,7 @@ def _findings(source: str) -> list[tuple[str, int, int]]:
     ],
 )
 def test_a_function_out_of_its_formats_is_an_error(source: str, expected: list[tuple[str, int, int]]) -> None:
-    assert _findings(source) == expected
+    assert placed_codes(source) == expected
 
 
 def test_the_message_shows_how_to_read_it() -> None:
@@ -48,4 +43,4 @@ def test_the_message_shows_how_to_read_it() -> None:
     ],
 )
 def test_the_formats_own_statements_are_clean(source: str) -> None:
-    assert _findings(source) == []
+    assert placed_codes(source) == []

@@ -17,6 +17,7 @@ from array import array
 from bisect import bisect_left, bisect_right
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from operator import attrgetter
 
 from mintlang.allocation import without_collector
 from mintlang.diagnostics import Diagnostic, LineIndex, LinesAndEnd
@@ -133,14 +134,13 @@ class _Reparse:
         physical = previous.physical.spliced(lines_read.first, lines_read.end, offsets, lexed, shift)
         line_shift = len(lexed) - (lines_read.end - lines_read.first)
         placed = previous.placed
-        numbers = _Numbers(placed)
-        first_line = bisect_left(numbers, lines_read.first + 1)  # the first logical line at or after the window
+        first_line = bisect_left(placed, lines_read.first + 1, key=_NUMBER)  # the first logical line in the window
         if first_line and self._runs_into(placed[first_line - 1], lines_read.first):
             first_line -= 1  # a DIM list continued over the window's first line, or waiting to be
         restart = placed[first_line].number - 1 if first_line < len(placed) else len(physical)
         restart = min(restart, lines_read.first)
         groups, resume, old_resume = self._regroup(physical, restart, lines_read.first + len(lexed), line_shift)
-        old_end_line = bisect_left(numbers, old_resume + 1)
+        old_end_line = bisect_left(placed, old_resume + 1, key=_NUMBER)
         regroup_start = physical.offsets[restart] if restart < len(physical) else len(source)
         old_regroup_end = self._line_start(old_resume)
         new_regroup_end = physical.offsets[resume] if resume < len(physical) else len(source)
@@ -185,7 +185,7 @@ class _Reparse:
     def _runs_into(self, line: n.PlacedLine, first: int) -> bool:
         """``line`` (before physical line ``first``) reaches it, or ends in a comma a DIM list would
         continue after: the edit may change where it ends."""
-        last = bisect_right(self.offsets, line.origin + max(line.syntax.span.end - 1, 0)) - 1
+        last = _last_physical(line, self.offsets)
         kinds = self.previous.physical.lexed(last).kinds
         return last >= first or (bool(kinds) and kinds[-1] is TokenKind.COMMA)
 
@@ -196,15 +196,12 @@ class _Reparse:
         the window (which ends before new line ``past``): the groups, and where the grouping met the
         previous one, in the new and the previous lines."""
         groups: list[LineGroup] = []
-        previous_ends = self._group_ends()
+        previous_ends = _GroupEnds(self.previous.placed, self.offsets)
         for group, after in groups_from(physical, restart):
             groups.append(group)
             if after >= past and after - line_shift in previous_ends:
                 return groups, after, after - line_shift
         return groups, len(physical), len(self.offsets)
-
-    def _group_ends(self) -> _GroupEnds:
-        return _GroupEnds(self.previous, self.offsets)
 
     def _visible_at(self, offset: int) -> dict[str, MacroDefinition]:
         """The macros a line at ``offset`` sees: those given, then those the file defined above it."""
@@ -213,32 +210,22 @@ class _Reparse:
         return visible
 
 
-class _Numbers:
-    """The physical line numbers of a document's logical lines, for ``bisect`` (no list of them made)."""
+_NUMBER = attrgetter("number")
 
-    def __init__(self, placed: Sequence[n.PlacedLine]) -> None:
-        self._placed = placed
 
-    def __len__(self) -> int:
-        return len(self._placed)
-
-    def __getitem__(self, index: int) -> int:
-        return self._placed[index].number
+def _last_physical(line: n.PlacedLine, offsets: Sequence[int]) -> int:
+    """The index of the last physical line of logical line ``line`` (a DIM list may take several)."""
+    return bisect_right(offsets, line.origin + max(line.syntax.span.end - 1, 0)) - 1
 
 
 class _GroupEnds:
     """Whether the previous grouping of lines had no DIM list open at a physical line boundary."""
 
-    def __init__(self, previous: Document, offsets: array[int]) -> None:
-        self._placed = previous.placed
-        self._numbers = _Numbers(previous.placed)
+    def __init__(self, placed: Sequence[n.PlacedLine], offsets: Sequence[int]) -> None:
+        self._placed = placed
         self._offsets = offsets
 
     def __contains__(self, boundary: object) -> bool:
         assert isinstance(boundary, int)
-        before = bisect_left(self._numbers, boundary + 1) - 1  # the last logical line starting above
-        if before < 0:
-            return True
-        line = self._placed[before]
-        last = bisect_right(self._offsets, line.origin + max(line.syntax.span.end - 1, 0)) - 1
-        return last < boundary
+        before = bisect_left(self._placed, boundary + 1, key=_NUMBER) - 1  # the last logical line starting above
+        return before < 0 or _last_physical(self._placed[before], self._offsets) < boundary

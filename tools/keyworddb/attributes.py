@@ -3,13 +3,17 @@
 A row is ``<controllers> <Read> <Write> <Command> <Multi-Axis> <Scaled>
 <Default> <Range>``; the five flag cells are ticks or nothing, one space apart
 (see ``checkmarks``).  Long controller labels, defaults and ranges wrap onto
-lines of their own, which this module glues back to their row.
+lines of their own, which this module glues back to their row.  A label may
+end in a footnote number ("NextMove PCI10"); where that footnote widens the
+range for NextMove PCI with expansion cards (``footnotes``), the card gets a
+row of its own with the widened range.
 """
 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, replace
 
 from mintlang.keyworddb.model import Attributes, Controller, ValueRange
 from tools.keyworddb.checkmarks import TICK
@@ -18,7 +22,7 @@ _NUMBER = r"-?\d[\d,]*(?:\.\d+)*"
 _DASH = "[-\u2013]"  # the guide prints ranges with hyphens and en dashes
 _LABEL = re.compile(
     r"^(?P<label>(?:All|N(?:e|en)xt[Mm]ove|NM|MintDrive|ServoNode)"
-    r"(?: ?(?:PCI|PC|BX|51|&|,))*)\d*,?(?=\s|$)"
+    r"(?: ?(?:PCI|PC|BX|51|&|,))*)(?P<footnote>\d*),?(?=\s|$)"
 )
 _HEADER = re.compile(r"^(Controller Read|Axis$|Scaled Default Range)")
 _STOP = re.compile(r"^(On |LOOPTIME|Figure |Keyword Reference|MN1262|[A-Z][a-z]+ [a-z]+ )")
@@ -29,6 +33,8 @@ _INTERVAL = re.compile(rf"^(?P<min>{_NUMBER})\s*(?P<low>[<≤])\s*x\s*(?P<high>[
 _SPAN = re.compile(rf"^(?P<min>{_NUMBER})\s*(?:{_DASH}|to|\.\.)\s*(?P<max>{_NUMBER})$")
 _CHOICES = re.compile(rf"^{_NUMBER}(?:\s*(?:,|,? or)\s*{_NUMBER})*$")
 _FLAG_COUNT = 5
+NAMED_CONSTANTS = re.compile(r"^(?P<span>.+?) and (?P<word>[a-z]+) constants?(?=;|$)")
+"""DRIVEENABLEOUTPUT's "-1 ≤ x ≤ 11 and relay constant": a span and a family of constants (``constant_ranges``)."""
 
 
 @dataclass
@@ -37,6 +43,7 @@ class _Row:
     flags: list[bool]
     rest: list[str]
     line: int
+    footnotes: tuple[int, ...]  # the footnote numbers printed after the label
     shifted: tuple[list[bool], str] | None = None  # the reading with one leading empty cell restored
 
 
@@ -75,20 +82,31 @@ def _take_flags(text: str) -> tuple[list[bool], str] | None:
     return flags, text
 
 
-def _split_row(raw: str) -> tuple[str, str] | None:
+_Label = tuple[str, int | None]
+"""A controller label without its footnote number, and that number."""
+
+
+def _label_line(text: str, match: re.Match[str]) -> _Label:
+    """A line holding only a (wrapped) label: all of it but the footnote number."""
+    footnote = match["footnote"]
+    return text[: match.start("footnote")] + text[match.end("footnote") :], int(footnote) if footnote else None
+
+
+def _split_row(raw: str) -> tuple[_Label, str] | None:
     """Split a table line into its controller label and the cells after it."""
     text = raw.lstrip(" ")
     if text.startswith(TICK):
-        return "", text
+        return ("", None), text
     match = _LABEL.match(text)
     if not match or TICK not in text[match.end() :]:
         return None
-    return match["label"], text[match.end() + 1 :]
+    footnote = match["footnote"]
+    return (match["label"], int(footnote) if footnote else None), text[match.end() + 1 :]
 
 
 def _rows(lines: list[tuple[int, str]]) -> list[_Row]:
     rows: list[_Row] = []
-    pending_label: list[str] = []
+    pending_label: list[_Label] = []
     for number, raw in lines:
         text = raw.strip()
         if not text or _HEADER.match(text):
@@ -98,12 +116,14 @@ def _rows(lines: list[tuple[int, str]]) -> list[_Row]:
         split = _split_row(raw.rstrip("\n").removesuffix(" "))
         taken = _take_flags(split[1]) if split else None
         if split and taken:
-            label = " ".join([*pending_label, split[0]])
-            shifted = _take_flags(" " + split[1]) if pending_label and not split[0] else None
-            rows.append(_Row(label, taken[0], [taken[1]], number, shifted))
+            labels = [*pending_label, split[0]]
+            label = " ".join(text for text, _ in labels if text)
+            footnotes = tuple(footnote for _, footnote in labels if footnote is not None)
+            shifted = _take_flags(" " + split[1]) if pending_label and not split[0][0] else None
+            rows.append(_Row(label, taken[0], [taken[1]], number, footnotes, shifted))
             pending_label = []
-        elif _LABEL.match(text):
-            pending_label.append(text)
+        elif match := _LABEL.match(text):
+            pending_label.append(_label_line(text, match))
         elif rows:
             rows[-1].rest.append(text)
     return [_realign(row, rows) for row in rows]
@@ -119,7 +139,7 @@ def _realign(row: _Row, rows: list[_Row]) -> _Row:
     others = [other.flags for other in rows if other is not row]
     if row.shifted is None or row.flags in others or row.shifted[0] not in others:
         return row
-    return _Row(row.label, row.shifted[0], [row.shifted[1], *row.rest[1:]], row.line)
+    return _Row(row.label, row.shifted[0], [row.shifted[1], *row.rest[1:]], row.line, row.footnotes)
 
 
 def _default_and_range(rest: list[str]) -> tuple[str | None, str | None]:
@@ -154,6 +174,8 @@ def parse_range(text: str) -> ValueRange:
     """Numbers where the manual prints an interval or a list of numbers; else text only."""
     fractional = re.search(r"\d\.\d", text) is not None
     compact = re.sub(r"\s+", " ", text.strip())
+    if match := NAMED_CONSTANTS.match(compact):  # the span's bounds; ``constant_ranges`` adds the constants
+        return replace(parse_range(match["span"]), text=compact)
     # IN, OUT: the range of the whole word, then on its own line that of one channel ("0 or 1").
     compact = _CHANNEL_RANGE.sub(r"\1; one channel: \2", compact)
     if match := _INTERVAL.match(compact):  # "0 ≤ x < 4096": a "<" leaves the bound out
@@ -177,22 +199,39 @@ def parse_range(text: str) -> ValueRange:
     return ValueRange(compact, bounds[0], bounds[1], fractional)
 
 
-def parse_attributes(lines: list[tuple[int, str]], supported: tuple[Controller, ...]) -> tuple[Attributes, ...]:
-    """One ``Attributes`` per table row; ``lines`` are the raw lines of the section."""
-    result = []
+def _widened_for_expansion(row: Attributes, maximum: float) -> tuple[Attributes, ...]:
+    """NextMove PCI on a row of its own with the two-card ``maximum``; the row's other controllers as printed."""
+    if Controller.NEXTMOVE_PCI not in row.controllers or row.range is None or row.range.maximum is None:
+        return (row,)
+    text = f"{row.range.text}; up to {maximum:g} with two expansion cards"
+    widened = replace(row.range, text=text, maximum=maximum, maximum_included=True)
+    others = tuple(c for c in row.controllers if c is not Controller.NEXTMOVE_PCI)
+    pci = replace(row, controllers=(Controller.NEXTMOVE_PCI,), range=widened)
+    return (pci, replace(row, controllers=others)) if others else (pci,)
+
+
+def parse_attributes(
+    lines: list[tuple[int, str]], supported: tuple[Controller, ...], expansion_maxima: Mapping[int, float]
+) -> tuple[Attributes, ...]:
+    """One ``Attributes`` per table row (two where a footnote widens NextMove PCI's range).
+
+    ``lines`` are the raw lines of the section; ``expansion_maxima`` maps a footnote number to
+    the range's maximum with two expansion cards fitted (``footnotes``).
+    """
+    result: list[Attributes] = []
     for row in _rows(lines):
         default, range_text = _default_and_range(row.rest)
         read, write, command, multi_axis, scaled = row.flags
-        result.append(
-            Attributes(
-                controllers=controllers_of_label(row.label, supported),
-                read=read,
-                write=write,
-                command=command,
-                multi_axis=multi_axis,
-                scaled=scaled,
-                default=default,
-                range=parse_range(range_text) if range_text else None,
-            )
+        printed = Attributes(
+            controllers=controllers_of_label(row.label, supported),
+            read=read,
+            write=write,
+            command=command,
+            multi_axis=multi_axis,
+            scaled=scaled,
+            default=default,
+            range=parse_range(range_text) if range_text else None,
         )
+        maxima = [expansion_maxima[number] for number in row.footnotes if number in expansion_maxima]
+        result += _widened_for_expansion(printed, max(maxima)) if maxima else (printed,)
     return tuple(result)

@@ -10,6 +10,7 @@ from mintlang.keyworddb.model import Constant, ErrorCode, Keyword
 from tools.keyworddb.abbreviations import shared_abbreviations
 from tools.keyworddb.access import apply_access_examples, apply_format_access
 from tools.keyworddb.conflicts import Conflict, sort_key
+from tools.keyworddb.constant_ranges import with_constant_ranges
 from tools.keyworddb.constants import add_constant, error_constants, general_constants, keyword_constants
 from tools.keyworddb.entries import EntryKind, v4_entries
 from tools.keyworddb.errors import build_errors, shared_constants
@@ -58,6 +59,7 @@ def build(seeds: Path, spec: Path) -> dict[str, Any]:
     conflicts += shared_abbreviations(keywords, chapter10_abbreviations(v4))
     errors = build_errors(v4)
     constants, constant_conflicts, keywords = _constants(v4, keywords, errors)
+    keywords = with_constant_ranges(keywords, constants)
     keywords, format_conflicts = apply_format_access(keywords)
     keywords, access_conflicts = apply_access_examples(v4, errors, keywords)
     conflicts += constant_conflicts + shared_constants(errors) + format_conflicts + access_conflicts

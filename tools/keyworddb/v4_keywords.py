@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import replace
 
 from mintlang.keyworddb.model import Addressing, Attributes, Controller, Keyword, KeywordKind
@@ -11,6 +12,7 @@ from tools.keyworddb.attributes import parse_attributes
 from tools.keyworddb.checkmarks import TICK, V4_ORDER, controllers_of, split_cells
 from tools.keyworddb.conflicts import Conflict, conflict
 from tools.keyworddb.entries import Entry, EntryKind, v4_entries
+from tools.keyworddb.footnotes import expansion_maxima
 from tools.keyworddb.kinds import fixed_kind, kind_from_attributes, kind_from_description
 from tools.keyworddb.quickref import QuickRow, quick_reference
 from tools.keyworddb.seeds import Seed
@@ -127,13 +129,15 @@ def _misprints(name: str, entry: Entry, formats: tuple[str, ...], known: set[str
     return found, conflicts
 
 
-def _from_entry(entry: Entry, row: QuickRow | None, known: set[str]) -> tuple[Keyword, list[Conflict]]:
+def _from_entry(
+    entry: Entry, row: QuickRow | None, known: set[str], expansion_maxima: Mapping[int, float]
+) -> tuple[Keyword, list[Conflict]]:
     name = canonical_name(entry)
     formats = fmt.clean_formats(entry.text("format"))
     misprints, misprint_conflicts = _misprints(name, entry, formats, known)
     names = tuple(dict.fromkeys((name, *entry.names, *misprints)))
     controllers, controller_conflicts = _controllers(entry, name, row)
-    attributes = parse_attributes(entry.sections.get("attributes", []), controllers)
+    attributes = parse_attributes(entry.sections.get("attributes", []), controllers, expansion_maxima)
     abbreviations, abbreviation_conflicts = _abbreviations(entry, name, row)
     family = name.startswith("#") and len(entry.names) > 1
     found = abbreviation_conflicts + controller_conflicts + misprint_conflicts
@@ -234,8 +238,9 @@ def build_keywords(seed: Seed) -> tuple[dict[str, Keyword], list[Conflict]]:
     entry_names = {name for entry in entries for name in entry.names}
     keywords: dict[str, Keyword] = {}
     conflicts: list[Conflict] = []
+    maxima = expansion_maxima(seed)
     for entry in entries:
-        keyword, found = _from_entry(entry, rows.get(entry.names[0]), entry_names)
+        keyword, found = _from_entry(entry, rows.get(entry.names[0]), entry_names, maxima)
         previous = keywords.get(keyword.name)
         keywords[keyword.name] = _merge(previous, keyword) if previous else keyword
         conflicts += found

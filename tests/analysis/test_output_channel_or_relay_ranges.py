@@ -1,0 +1,62 @@
+"""An output-selecting keyword takes a channel number in its controller's span or a relay constant.
+
+DRIVEENABLEOUTPUT (000:9326-9338) and GLOBALERROROUTPUT (000:10976-10985) print their range as
+"-1 ≤ x ≤ 11 and relay constant(s)" on NextMove PC and PCI and "-1 ≤ x ≤ 7 ..." on NextMove BX;
+their value tables give the relay constants 1000, 1001 and 1002 (_RELAY0-_RELAY2, 000:9362-9366,
+11007-11011). The NextMove PCI label carries a footnote: two expansion cards raise the span to 35
+(000:9388-9389, 11030-11031), and the checker assumes both are fitted. Any other value is MML
+error 3 (000:18518).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import mintlang
+
+
+def _codes(source: str, controller: str) -> list[str]:
+    return [d.code for d in mintlang.check(source, controller=controller)]
+
+
+@pytest.mark.parametrize("keyword", ["DRIVEENABLEOUTPUT.0", "GLOBALERROROUTPUT"])
+@pytest.mark.parametrize(
+    ("controller", "value"),
+    [
+        ("nextmove-pc", "-1"),
+        ("nextmove-pc", "11"),
+        ("nextmove-pc", "_RELAY0"),
+        ("nextmove-bx", "7"),
+        ("nextmove-bx", "1000"),
+        ("nextmove-pci", "35"),
+        ("nextmove-pci", "_RELAY2"),
+    ],
+)
+def test_a_channel_in_the_span_or_a_relay_is_accepted(keyword: str, controller: str, value: str) -> None:
+    assert _codes(f"{keyword} = {value}\n", controller) == []
+
+
+@pytest.mark.parametrize("keyword", ["DRIVEENABLEOUTPUT.0", "GLOBALERROROUTPUT"])
+@pytest.mark.parametrize(
+    ("controller", "value"),
+    [
+        ("nextmove-pc", "-2"),
+        ("nextmove-pc", "12"),
+        ("nextmove-pc", "999"),
+        ("nextmove-bx", "8"),
+        ("nextmove-pci", "36"),
+        ("nextmove-pci", "999"),
+        ("nextmove-pci", "1003"),
+    ],
+)
+def test_any_other_value_is_error_3(keyword: str, controller: str, value: str) -> None:
+    assert _codes(f"{keyword} = {value}\n", controller) == ["E0003"]
+
+
+@pytest.mark.parametrize("keyword", ["ERRORINPUT", "LIMITFORWARDINPUT", "LIMITREVERSEINPUT"])
+def test_an_input_span_widens_on_nextmove_pci_with_expansion_cards(keyword: str) -> None:
+    # The bare card's span is -1 to 19; its footnote raises it to 59 with two expansion cards
+    # (000:10041 with 10078-10079, 13408 with 13435-13436, 13593 with 13624-13625).
+    assert _codes(f"{keyword}.0 = 59\n", "nextmove-pci") == []
+    assert _codes(f"{keyword}.0 = 60\n", "nextmove-pci") == ["E0003"]
+    assert _codes(f"{keyword}.0 = 24\n", "nextmove-pc") == ["E0003"]  # the PC's own row stops at 23

@@ -20,7 +20,7 @@ from itertools import chain
 from mintlang.allocation import without_collector
 from mintlang.analysis.rules import RULES, Rule, memory
 from mintlang.analysis.suppression import suppress
-from mintlang.analysis.traversal import LineScope, gather
+from mintlang.analysis.traversal import Facts, LineScope, gather
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import DEFAULT_SELECT
 from mintlang.controllers import ControllerProfile
@@ -203,36 +203,52 @@ def _in_text_lines(model: SemanticModel, document: Document, indices: range) -> 
 
 def _carried(model: SemanticModel, previous: Analysis) -> Found | None:
     """What ``previous`` found, moved over the edit ``model`` was carried over by, with the lines the
-    edit touched checked again; the whole application checked again unless its facts stayed the same."""
-    if model.carried is None:
+    edit touched checked again, and each whole-application rule run again where what it reads of
+    them changed, or where a finding of it lies in them."""
+    carried = model.carried
+    if carried is None:
         return None
-    change = model.carried.change
+    change = carried.change
     in_lines = dict(previous.found.in_lines)
     in_lines[Unit.PROGRAM] = change.spliced(previous.found.in_lines[Unit.PROGRAM], _in_window(model, change))
-    carried = _carried_whole(previous.found, change) if model.carried.same_facts else None
-    if carried is not None:
-        return Found(in_lines, *carried)
-    whole = _whole(model)
-    return Found(in_lines, whole, memory.demand(model.symbols))
+    same = carried.same_facts
+    arrays = _carried_arrays(previous.found.arrays, change) if same else None
+    whole: dict[Unit, list[tuple[Rule, Diagnostic]]] = {Unit.PROGRAM: [], Unit.CONFIGURATION: []}
+    facts: Facts | None = None  # gathered for the first rule run again
+    for rule in _rules_for(model.program.dialect)[1]:  # in order: the first of equal findings is kept
+        found = _carried_findings(previous.found, rule, change)
+        if found is None or not (same or (rule.reads is not None and carried.same_for(rule.reads))):
+            facts = facts or gather(model)
+            found = [(finding.unit, finding.diagnostic) for finding in rule.check(facts)]  # type: ignore[misc]
+        for unit, diagnostic in found:
+            whole[unit].append((rule, diagnostic))
+    return Found(
+        in_lines,
+        {unit: tuple(found) for unit, found in whole.items()},
+        arrays if arrays is not None else memory.demand(model.symbols),
+    )
 
 
-def _carried_whole(
-    before: Found, change: Change
-) -> tuple[Mapping[Unit, tuple[tuple[Rule, Diagnostic], ...]], memory.ArrayDemand] | None:
-    """The whole-application findings of ``before``, moved; None where one lies in the edit's window."""
-    whole = []
-    for rule, diagnostic in before.whole[Unit.PROGRAM]:
-        moved = change.diagnostic(diagnostic)
-        if moved is None:
-            return None
-        whole.append((rule, moved))
-    largest = before.arrays.largest
-    if largest is not None and largest[0] is Unit.PROGRAM:
-        span = change.span(largest[1])
-        if span is None:
-            return None
-        largest = (Unit.PROGRAM, span)
-    return {**before.whole, Unit.PROGRAM: tuple(whole)}, memory.ArrayDemand(before.arrays.bytes, largest)
+def _carried_findings(before: Found, rule: Rule, change: Change) -> list[tuple[Unit, Diagnostic]] | None:
+    """What ``rule`` found before, moved; None where one of its findings lies in the edit's window."""
+    found: list[tuple[Unit, Diagnostic]] = [
+        (Unit.CONFIGURATION, diagnostic) for of, diagnostic in before.whole[Unit.CONFIGURATION] if of is rule
+    ]
+    for of, diagnostic in before.whole[Unit.PROGRAM]:
+        if of is rule:
+            moved = change.diagnostic(diagnostic)
+            if moved is None:
+                return None
+            found.append((Unit.PROGRAM, moved))
+    return found
+
+
+def _carried_arrays(before: memory.ArrayDemand, change: Change) -> memory.ArrayDemand | None:
+    largest = before.largest
+    if largest is None or largest[0] is not Unit.PROGRAM:
+        return before
+    span = change.span(largest[1])
+    return memory.ArrayDemand(before.bytes, (Unit.PROGRAM, span)) if span is not None else None
 
 
 def _in_window(model: SemanticModel, change: Change) -> list[Diagnostic]:

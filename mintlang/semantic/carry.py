@@ -26,7 +26,7 @@ to the file; a carried edit costs the lines it touched.
 
 from __future__ import annotations
 
-from collections.abc import Hashable, Sequence
+from collections.abc import Callable, Hashable, Sequence
 from dataclasses import dataclass, fields, is_dataclass
 
 from mintlang.controllers import ControllerProfile
@@ -39,13 +39,33 @@ from mintlang.syntax import nodes as n
 from mintlang.syntax.change import Change
 from mintlang.syntax.parser import Document
 
+Meaning = Callable[[n.PlacedLine, LineFacts], Hashable]  # what a pass reads of a line
+
 
 @dataclass(frozen=True, slots=True)
 class Carried:
     """How a model was carried over from the previous version's."""
 
     change: Change  # the edit: the lines it touched, where the others moved
-    same_facts: bool  # every whole-application finding is the previous one, moved
+    pairs: Sequence[_Pair] | None  # each re-read line before and after, with its facts; None: lines added
+    text_kept: bool  # labels, indentation, line breaks, macro uses and the file's end are as they were
+
+    def same_for(self, meaning: Meaning) -> bool:
+        """Whether every re-read line means the same as before to a pass that reads ``meaning`` of it:
+        then what the pass found is the previous version's, moved."""
+        return (
+            self.text_kept
+            and self.pairs is not None
+            and all(
+                old_facts == new_facts or meaning(old, old_facts) == meaning(new, new_facts)
+                for old, old_facts, new, new_facts in self.pairs
+            )
+        )
+
+    @property
+    def same_facts(self) -> bool:
+        """Every whole-application finding is the previous one, moved."""
+        return self.same_for(_meaning)
 
 
 def carry_model(
@@ -60,10 +80,10 @@ def carry_model(
         return None
     pairs = _window_pairs(previous.program, program, change)
     structure = _carried_structure(previous.structures[Unit.PROGRAM], pairs, change)
+    carried = Carried(change, pairs, _text_kept(previous.program, program, change, pairs))
     if structure is not None:
-        same_facts = _same_facts(previous.program, program, change, pairs)
         structures = {**previous.structures, Unit.PROGRAM: structure}
-        return SemanticModel(program, configuration, controller, structures, Carried(change, same_facts))
+        return SemanticModel(program, configuration, controller, structures, carried)
     lines = index_lines(Unit.PROGRAM, program.placed)
     structures = {
         **previous.structures,
@@ -71,7 +91,6 @@ def carry_model(
     }
     if configuration is not None:
         lines = index_lines(Unit.CONFIGURATION, configuration.placed) + lines
-    carried = Carried(change, same_facts=False)
     return SemanticModel.of(program, configuration, controller, structures, lines=tuple(lines), carried=carried)
 
 
@@ -110,15 +129,12 @@ def _carried_structure(structure: Structure, pairs: Sequence[_Pair] | None, chan
     return Structure(structure.blocks, diagnostics)  # type: ignore[arg-type]
 
 
-def _same_facts(before: Document, now: Document, change: Change, pairs: Sequence[_Pair] | None) -> bool:
-    """Nothing a whole-application pass reads changed beyond where things moved."""
+def _text_kept(before: Document, now: Document, change: Change, pairs: Sequence[_Pair] | None) -> bool:
+    """Nothing a whole-application pass reads of the text beside the lines' meanings changed."""
     if pairs is None or change.reaches_end:
         return False
-    for old, old_facts, new, new_facts in pairs:
-        if _label(old) != _label(new) or _indentation(old) != _indentation(new):
-            return False
-        if old_facts != new_facts and _meaning(old, old_facts) != _meaning(new, new_facts):
-            return False
+    if any(_label(old) != _label(new) or _indentation(old) != _indentation(new) for old, _, new, _ in pairs):
+        return False
     old_text = before.source[change.start : change.old_end]
     new_text = now.source[change.start : change.new_end]
     if old_text.count("\r\n") != new_text.count("\r\n"):
@@ -150,25 +166,41 @@ def _meaning(line: n.PlacedLine, facts: LineFacts) -> Hashable:
     """A line's statements as the whole-application passes read them: without their spans, and
     without the values of their literals where no pass reads them. What could not be parsed is
     its text (the words in it count as uses of those names)."""
+    return _statements(line, facts, names=True)
+
+
+def control_meaning(line: n.PlacedLine, facts: LineFacts) -> Hashable:
+    """A line as the passes that follow the control flow read it (flow, calls, events, AUTO): its
+    statements without the names of variables, whose uses and declarations they do not read."""
+    return _statements(line, facts, names=False)
+
+
+def _statements(line: n.PlacedLine, facts: LineFacts, *, names: bool) -> Hashable:
     text = line.syntax.text
     return tuple(
         (n.SyntaxError_, statement.opens, statement.closes, text[statement.span.start : statement.span.end])
         if isinstance(statement, n.SyntaxError_)
-        else _shape(statement, keep=isinstance(statement, _VALUED))
+        else _shape(statement, keep=isinstance(statement, _VALUED), names=names)
         for statement in facts.statements
     )
 
 
-def _shape(value: object, *, keep: bool) -> Hashable:
+def _shape(value: object, *, keep: bool, names: bool) -> Hashable:
     if isinstance(value, Span):
         return None
     if isinstance(value, tuple):
-        return tuple(_shape(item, keep=keep) for item in value)
+        return tuple(_shape(item, keep=keep, names=names) for item in value)
     if not is_dataclass(value):
         return value  # type: ignore[return-value]
     kind = type(value)
     if isinstance(value, _LITERALS) and not keep:
         return kind
+    if isinstance(value, n.Name) and not names:
+        return kind
+    if isinstance(value, n.Jump):  # where it goes: a label's name, whichever names are read
+        return kind, value.word, value.label.text
+    if isinstance(value, n.EventBlock):  # the event it handles
+        return kind, value.name.text
     if isinstance(value, n.ElementRef):
-        return kind, _shape(value.name, keep=keep), _shape(value.index, keep=True)
-    return (kind, *(_shape(getattr(value, field.name), keep=keep) for field in fields(value)))
+        return kind, _shape(value.name, keep=keep, names=names), _shape(value.index, keep=True, names=names)
+    return (kind, *(_shape(getattr(value, field.name), keep=keep, names=names) for field in fields(value)))

@@ -3,7 +3,9 @@
 A rule reads the whole application (``check``), or one line at a time
 (``each_line``: what it finds depends on nothing outside the line, so the
 analyser keeps it while the line is unchanged), or both; or each physical line
-of the text as it is written (``each_text_line``), comments included.
+of the text as it is written (``each_text_line``), comments included. A rule
+that reads the whole application may say what it reads of a line (``reads``):
+after an edit that leaves that the same, what it found is carried over.
 """
 
 from __future__ import annotations
@@ -36,6 +38,7 @@ from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Diagnostic
 from mintlang.dialect import Dialect
+from mintlang.semantic.carry import Meaning, control_meaning
 from mintlang.syntax.lexer import PhysicalLines
 
 _ALL_DIALECTS = frozenset(Dialect)
@@ -48,6 +51,7 @@ class Rule:
     each_line: Callable[[LineScope], Iterator[Finding]] | None = None
     each_text_line: Callable[[PhysicalLines, range, ControllerProfile], Iterator[Diagnostic]] | None = None
     dialects: frozenset[Dialect] = _ALL_DIALECTS
+    reads: Meaning | None = None  # what a whole-application rule reads of a line, where less than all it means
 
     @property
     def summary(self) -> str:
@@ -69,14 +73,14 @@ RULES: tuple[Rule, ...] = (
     Rule("functions", each_line=functions.each_line, dialects=frozenset({Dialect.V4})),  # MintMT's MOVER(0) is no call
     Rule("v3-access", each_line=v3_access.each_line, dialects=frozenset({Dialect.V3})),
     Rule("arrays", arrays.check, arrays.each_line),
-    Rule("events", events.check),
+    Rule("events", events.check, reads=control_meaning),
     Rule("v3-keywords", each_line=v3_keywords.each_line),
-    Rule("flow", flow.check),
-    Rule("calls", calls.check),
+    Rule("flow", flow.check, reads=control_meaning),
+    Rule("calls", calls.check, reads=control_meaning),
     Rule("limits", limits.check),
     Rule("memory", memory.check),
     Rule("line-length", each_text_line=line_length.each_text_line),
-    Rule("startup", startup.check),
+    Rule("startup", startup.check, reads=control_meaning),
     Rule("collisions", collisions.check),
     Rule("unused", unused.check),
     Rule("hints", each_line=hints.each_line, dialects=frozenset({Dialect.V4})),  # MintMT's (0) is not v4's [0]

@@ -8,6 +8,7 @@ from dataclasses import replace
 
 from mintlang.keyworddb.model import Addressing, Attributes, Controller, Keyword, KeywordKind
 from tools.keyworddb import formats as fmt
+from tools.keyworddb.angles import unscaled_angles
 from tools.keyworddb.attributes import parse_attributes
 from tools.keyworddb.checkmarks import TICK, V4_ORDER, controllers_of, split_cells
 from tools.keyworddb.conflicts import Conflict, conflict
@@ -137,10 +138,11 @@ def _from_entry(
     misprints, misprint_conflicts = _misprints(name, entry, formats, known)
     names = tuple(dict.fromkeys((name, *entry.names, *misprints)))
     controllers, controller_conflicts = _controllers(entry, name, row)
-    attributes = parse_attributes(entry.sections.get("attributes", []), controllers, expansion_maxima)
+    printed = parse_attributes(entry.sections.get("attributes", []), controllers, expansion_maxima)
+    attributes, angle_conflicts = unscaled_angles(name, entry, printed)
     abbreviations, abbreviation_conflicts = _abbreviations(entry, name, row)
     family = name.startswith("#") and len(entry.names) > 1
-    found = abbreviation_conflicts + controller_conflicts + misprint_conflicts
+    found = abbreviation_conflicts + controller_conflicts + misprint_conflicts + angle_conflicts
     keyword = Keyword(
         name=name,
         abbreviations=abbreviations,

@@ -28,6 +28,7 @@ from mintlang.analysis.rules import (
     limits,
     line_length,
     memory,
+    print_format,
     startup,
     unused,
     v3_access,
@@ -70,6 +71,7 @@ RULES: tuple[Rule, ...] = (
     Rule("keyword-usage", each_line=keyword_usage.each_line, dialects=_V4_ATTRIBUTES),
     Rule("addressing", each_line=addressing.each_line, dialects=_V4_ATTRIBUTES),
     Rule("values", each_line=values.each_line, dialects=_V4_ATTRIBUTES),
+    Rule("print-format", each_line=print_format.each_line, dialects=frozenset({Dialect.V4})),
     Rule("functions", each_line=functions.each_line, dialects=frozenset({Dialect.V4})),  # MintMT's MOVER(0) is no call
     Rule("v3-access", each_line=v3_access.each_line, dialects=frozenset({Dialect.V3})),
     Rule("arrays", arrays.check, arrays.each_line),

@@ -84,5 +84,19 @@ GROUP = Group(
             fix="Move AUTO to the first line of the configuration file.",
             safety=FixSafety.NONE,
         ),
+        RuleDoc(
+            "W118",
+            catches="PRINT or LINE formatting a number with USING and more than 15 integer or 15 "
+            "fractional digits (a negative integer count asks for a sign, not for more digits).",
+            why="The controller prints at most 15 digits on each side of the point; the guide gives no "
+            "error for a larger count, so the output is not the width the program asks for.",
+            example=Example(
+                before="DIM a = 123.5\nPRINT a USING 16, 2\n",
+                after="DIM a = 123.5\nPRINT a USING 15, 2\n",
+            ),
+            manual=("v4:15313", "v4:13657"),
+            fix="Ask for 15 digits or fewer.",
+            safety=FixSafety.NONE,
+        ),
     ),
 )

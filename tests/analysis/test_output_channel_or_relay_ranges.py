@@ -11,6 +11,8 @@ error 3 (000:18518).
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import mintlang
 
@@ -60,3 +62,10 @@ def test_an_input_span_widens_on_nextmove_pci_with_expansion_cards(keyword: str)
     assert _codes(f"{keyword}.0 = 59\n", "nextmove-pci") == []
     assert _codes(f"{keyword}.0 = 60\n", "nextmove-pci") == ["E0003"]
     assert _codes(f"{keyword}.0 = 24\n", "nextmove-pc") == ["E0003"]  # the PC's own row stops at 23
+
+
+@settings(max_examples=60, deadline=None)
+@given(value=st.integers(min_value=-50, max_value=1100))
+def test_on_nextmove_pc_exactly_the_span_and_the_relays_pass(value: int) -> None:
+    accepted = -1 <= value <= 11 or value in {1000, 1001, 1002}
+    assert _codes(f"DRIVEENABLEOUTPUT.0 = {value}\n", "nextmove-pc") == ([] if accepted else ["E0003"])

@@ -86,10 +86,13 @@ _Label = tuple[str, int | None]
 """A controller label without its footnote number, and that number."""
 
 
+def _footnote(match: re.Match[str]) -> int | None:
+    return int(match["footnote"]) if match["footnote"] else None
+
+
 def _label_line(text: str, match: re.Match[str]) -> _Label:
     """A line holding only a (wrapped) label: all of it but the footnote number."""
-    footnote = match["footnote"]
-    return text[: match.start("footnote")] + text[match.end("footnote") :], int(footnote) if footnote else None
+    return text[: match.start("footnote")] + text[match.end("footnote") :], _footnote(match)
 
 
 def _split_row(raw: str) -> tuple[_Label, str] | None:
@@ -100,8 +103,7 @@ def _split_row(raw: str) -> tuple[_Label, str] | None:
     match = _LABEL.match(text)
     if not match or TICK not in text[match.end() :]:
         return None
-    footnote = match["footnote"]
-    return (match["label"], int(footnote) if footnote else None), text[match.end() + 1 :]
+    return (match["label"], _footnote(match)), text[match.end() + 1 :]
 
 
 def _rows(lines: list[tuple[int, str]]) -> list[_Row]:

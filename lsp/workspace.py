@@ -20,7 +20,7 @@ from pygls.uris import from_fs_path, to_fs_path
 import mintlang
 from mintlang.allocation import collector_paused
 from mintlang.codes import selector
-from mintlang.detection import detect_dialect
+from mintlang.detection import detect_dialect, detect_dialect_after
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, Keyword
@@ -121,9 +121,10 @@ class Settings:
             from_text = from_text and name != "dialect"
         return cls(**values, dialect_from_text=from_text, given=frozenset(given))
 
-    def for_text(self, program: str) -> Settings:
-        """These settings for a program whose text is ``program``: its dialect detected if the editor asks."""
-        return replace(self, dialect=_detected(program)) if self.dialect_from_text else self
+    def for_text(self, program: str, detect: Callable[[str], Dialect] | None = None) -> Settings:
+        """These settings for a program whose text is ``program``: its dialect detected if the editor asks
+        (by ``detect``, one that remembers the last text it read)."""
+        return replace(self, dialect=(detect or _detected)(program)) if self.dialect_from_text else self
 
     def over(self, project: FileSettings) -> Settings:
         """These settings over a settings file's: each the editor sent wins; both ignore lists apply."""
@@ -250,6 +251,14 @@ class Analyses:
     collector: Collector | None = None  # told of each new snapshot, to keep it out of the collector's scans
     _cache: dict[str, tuple[tuple[object, ...], Snapshot]] = field(default_factory=dict)
     _reported: set[str] = field(default_factory=set)  # settings file problems already logged
+    _last_detected: tuple[str, Dialect] | None = None  # the last program text whose dialect was detected
+
+    def _detect(self, program: str) -> Dialect:
+        """The dialect of ``program``, reading only what changed since the last text detected."""
+        last = self._last_detected
+        dialect = detect_dialect_after(*last, program) if last is not None else detect_dialect(program)
+        self._last_detected = (program, dialect)
+        return dialect
 
     def settings_for(self, uri: str) -> Settings:
         """The editor's settings over those of the document's settings file, if it is a file that has one.
@@ -272,7 +281,7 @@ class Analyses:
         settings = self.settings_for(uri)
         unit, other = partner(uri, settings, self.opened())
         other_text = self.read(other) if other is not None else None
-        settings = settings.for_text(text if unit is Unit.PROGRAM else other_text or "")
+        settings = settings.for_text(text if unit is Unit.PROGRAM else other_text or "", self._detect)
         key = (version, text, other_text, settings, self.encoding)
         cached = self._cache.get(uri)
         if cached is not None and cached[0] == key:

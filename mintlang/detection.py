@@ -21,6 +21,7 @@ from __future__ import annotations
 import re
 
 from mintlang.dialect import Dialect
+from mintlang.syntax.common import common_prefix, common_suffix
 from mintlang.syntax.lexer import LexedLine, lex
 from mintlang.syntax.tokens import TokenKind
 
@@ -32,7 +33,26 @@ _CLOSERS = frozenset({TokenKind.ENDL, TokenKind.ENDIF, TokenKind.ENDEVENT, Token
 
 def detect_dialect(text: str) -> Dialect:
     """``Dialect.MINTMT`` when ``text`` shows a form only MintMT has, ``Dialect.V4`` otherwise."""
-    return Dialect.MINTMT if any(_shows_mintmt(line) for _, line in lex(text, Dialect.MINTMT).lines) else Dialect.V4
+    return Dialect.MINTMT if _shows_any(text) else Dialect.V4
+
+
+def detect_dialect_after(previous: str, found: Dialect, text: str) -> Dialect:
+    """``detect_dialect(text)``, knowing that of ``previous`` was ``found``: an editor asks after
+    every keystroke, and reading the whole file costs time in proportion to it. Only the lines
+    that changed are read, unless they held what made ``previous`` MintMT."""
+    start = common_prefix(previous, text)
+    end = common_suffix(previous, text, min(len(previous), len(text)) - start)
+    start = max(previous.rfind("\n", 0, start), previous.rfind("\r", 0, start)) + 1  # whole lines
+    tail = previous[len(previous) - end :]
+    breaks = [at for at in (tail.find("\n"), tail.find("\r")) if at >= 0]
+    end = len(tail) - min(breaks) - 1 if breaks else 0
+    if found is Dialect.V4:
+        return Dialect.MINTMT if _shows_any(text[start : len(text) - end]) else Dialect.V4
+    return Dialect.MINTMT if not _shows_any(previous[start : len(previous) - end]) else detect_dialect(text)
+
+
+def _shows_any(text: str) -> bool:
+    return any(_shows_mintmt(line) for _, line in lex(text, Dialect.MINTMT).lines)
 
 
 def _shows_mintmt(line: LexedLine) -> bool:

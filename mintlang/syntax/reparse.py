@@ -25,6 +25,7 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.syntax import nodes as n
 from mintlang.syntax.change import Change, Window
+from mintlang.syntax.common import common_prefix, common_suffix
 from mintlang.syntax.lexer import LexedLine, PhysicalLines, TokenStream, lex_lines
 from mintlang.syntax.lines import LineGroup, MacroDefinition, groups_from, register
 from mintlang.syntax.moved import MovedLines
@@ -48,31 +49,6 @@ def reparse(
     return _Reparse(previous, source, context, macros or {}).document() or parse(
         source, dialect, macros=macros, controller=controller
     )
-
-
-def _common_prefix(old: str, new: str) -> int:
-    """How many characters ``old`` and ``new`` share at the start: compares halves, not characters."""
-    low, high = 0, min(len(old), len(new))
-    while low < high:
-        middle = (low + high + 1) // 2
-        if new.startswith(old[low:middle], low):
-            low = middle
-        else:
-            high = middle - 1
-    return low
-
-
-def _common_suffix(old: str, new: str, most: int) -> int:
-    """How many characters (at most ``most``) ``old`` and ``new`` share at the end."""
-    low, high = 0, most
-    old_length, new_length = len(old), len(new)
-    while low < high:
-        middle = (low + high + 1) // 2
-        if new.endswith(old[old_length - middle : old_length - low], 0, new_length - low):
-            low = middle
-        else:
-            high = middle - 1
-    return low
 
 
 def _line_boundary(text: str, offset: int) -> bool:
@@ -107,8 +83,8 @@ class _Reparse:
     def window(self) -> _Lines:
         """The fewest whole physical lines of the previous text that hold every changed character."""
         old, new = self.previous.source, self.source
-        same_start = _common_prefix(old, new)
-        same_end = _common_suffix(old, new, min(len(old), len(new)) - same_start)
+        same_start = common_prefix(old, new)
+        same_end = common_suffix(old, new, min(len(old), len(new)) - same_start)
         offsets = self.offsets
         first = max(0, bisect_right(offsets, same_start) - 1)
         end = bisect_left(offsets, len(old) - same_end)

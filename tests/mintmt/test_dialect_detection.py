@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
-from mintlang.detection import detect_dialect
+from mintlang.detection import detect_dialect, detect_dialect_after
 from mintlang.dialect import Dialect
 from tests.corpus_files import CorpusCase, cases
 
@@ -59,3 +61,26 @@ def test_a_form_only_mintmt_has_makes_the_text_mintmt(text: str) -> None:
 )
 def test_without_such_a_form_the_text_is_v4(text: str) -> None:
     assert detect_dialect(text) is Dialect.V4
+
+
+_LINES = st.sampled_from(
+    ["PRINT 1", "Loop", "End Loop", "ENDL", "' a note", "REM note", "MOVER(0) = 10", "MOVER.0 = 10", "a = 'A'", ""]
+)
+_TEXTS = st.lists(_LINES, max_size=8).map("\n".join)
+
+
+@given(
+    first=_TEXTS,
+    edits=st.lists(st.tuples(st.floats(0, 1), st.integers(0, 12), _LINES | st.sampled_from(["\n", "\r", "'", "("]))),
+)
+def test_detecting_after_each_edit_from_the_last_text_is_detecting_afresh(
+    first: str, edits: list[tuple[float, int, str]]
+) -> None:
+    """The language server reads only the lines an edit changed, whatever the texts."""
+    text, found = first, detect_dialect(first)
+    for where, removed, typed in edits:
+        offset = int(where * len(text))
+        edited = text[:offset] + typed + text[offset + removed :]
+        found = detect_dialect_after(text, found, edited)
+        assert found is detect_dialect(edited)
+        text = edited

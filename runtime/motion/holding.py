@@ -2,13 +2,15 @@
 
 The move ramps down along its path but stays the axes' move, flagged
 ``held``: it does not complete, nothing buffered behind it starts, AXISMODE
-keeps showing it and IDLE stays 0. Released, it ramps back up at ACCEL from
+keeps showing it and IDLE stays 0. A move from the buffer keeps its place
+there: MOVEBUFFERFREE does not rise, and a relative move loaded meanwhile
+starts from its target, not from where it rests. Released, it ramps back up at ACCEL from
 where it stopped and finishes, at the slew speed it would have had.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.moves import PlannedMove, next_profiler_tick
@@ -23,7 +25,7 @@ class Held:
 
 def hold(motion: Motion, move: PlannedMove, tick: int, decel: float) -> Held:
     """Ramp ``move`` down at ``decel`` from ``tick`` on every axis running it, and keep it to resume."""
-    ramp = move.stop(tick, decel)
+    ramp = replace(move.stop(tick, decel), buffered=move.buffered)
     for number in move.axes:
         axis = motion.axes[number]
         if axis.move is move:

@@ -15,8 +15,8 @@ from dataclasses import dataclass
 
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
-from mintlang.semantic.index import KeywordUse, LineFacts, Use
-from mintlang.semantic.model import IndexedLine, SemanticModel
+from mintlang.semantic.index import IndexedLines, KeywordUse, LineFacts, Use
+from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
@@ -44,7 +44,7 @@ class Facts:
     """The model and its lines, with the lists the rules ask for."""
 
     model: SemanticModel
-    lines: tuple[IndexedLine, ...]
+    lines: IndexedLines
     sought: Mapping[type, tuple[PlacedStatement, ...]]  # GOSUB/GOTO, DEFINE, and what could not be parsed
 
     def statements(self, kind: type) -> tuple[PlacedStatement, ...]:

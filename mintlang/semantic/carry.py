@@ -32,7 +32,7 @@ from dataclasses import dataclass, fields, is_dataclass
 from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Span
 from mintlang.semantic.blocks import BLOCK_STATEMENTS, Structure, block_key, match_blocks
-from mintlang.semantic.index import LineFacts, index_lines, line_facts
+from mintlang.semantic.index import IndexedLines, LineFacts, line_facts
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -84,14 +84,10 @@ def carry_model(
     if structure is not None:
         structures = {**previous.structures, Unit.PROGRAM: structure}
         return SemanticModel(program, configuration, controller, structures, carried)
-    lines = index_lines(Unit.PROGRAM, program.placed)
-    structures = {
-        **previous.structures,
-        Unit.PROGRAM: match_blocks(((line, facts) for _, line, facts in lines), controller),
-    }
-    if configuration is not None:
-        lines = index_lines(Unit.CONFIGURATION, configuration.placed) + lines
-    return SemanticModel.of(program, configuration, controller, structures, lines=tuple(lines), carried=carried)
+    configured = [(Unit.CONFIGURATION, configuration.placed)] if configuration is not None else []
+    lines = IndexedLines([*configured, (Unit.PROGRAM, program.placed)])
+    structures = {**previous.structures, Unit.PROGRAM: match_blocks(lines.of(Unit.PROGRAM), controller)}
+    return SemanticModel.of(program, configuration, controller, structures, lines=lines, carried=carried)
 
 
 _Pair = tuple[n.PlacedLine, LineFacts, n.PlacedLine, LineFacts]

@@ -13,10 +13,11 @@ files (``index_syntax``).
 
 from __future__ import annotations
 
-from collections.abc import Hashable, Iterable
+from collections.abc import Hashable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from enum import StrEnum
-from typing import NamedTuple
+from itertools import chain, repeat
+from typing import NamedTuple, overload
 
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.semantic.units import Unit
@@ -156,9 +157,39 @@ def clear_cache() -> None:
         facts.clear()
 
 
-def index_lines(unit: Unit, lines: Iterable[n.PlacedLine]) -> list[tuple[Unit, n.PlacedLine, LineFacts]]:
-    """Each line of a file of ``unit`` with its index."""
-    return [(unit, line, line_facts(unit, line)) for line in lines]
+IndexedLine = tuple[Unit, n.PlacedLine, LineFacts]
+
+
+class IndexedLines(Sequence[IndexedLine]):
+    """Every logical line of the files of an application with its index, in compile order.
+
+    Kept as each file's lines beside a tuple of their facts, and paired when read: a
+    tuple of three per line was a twentieth of a check's memory.
+    """
+
+    __slots__ = ("_files", "_length")
+
+    def __init__(self, files: Iterable[tuple[Unit, Sequence[n.PlacedLine]]]) -> None:
+        self._files = tuple((unit, lines, tuple(line_facts(unit, line) for line in lines)) for unit, lines in files)
+        self._length = sum(len(lines) for _, lines, _ in self._files)
+
+    def __len__(self) -> int:
+        return self._length
+
+    def __iter__(self) -> Iterator[IndexedLine]:
+        return chain.from_iterable(zip(repeat(unit), lines, facts) for unit, lines, facts in self._files)
+
+    def of(self, unit: Unit) -> Iterator[tuple[n.PlacedLine, LineFacts]]:
+        """The lines of one file with their indexes."""
+        files = self._files
+        return chain.from_iterable(zip(lines, facts, strict=True) for file, lines, facts in files if file is unit)
+
+    @overload
+    def __getitem__(self, index: int) -> IndexedLine: ...
+    @overload
+    def __getitem__(self, index: slice) -> Sequence[IndexedLine]: ...
+    def __getitem__(self, index: int | slice) -> IndexedLine | Sequence[IndexedLine]:
+        return tuple(self)[index]  # whole-file passes iterate; a place is read rarely
 
 
 def line_facts(unit: Unit, line: n.PlacedLine) -> LineFacts:

@@ -18,15 +18,12 @@ from mintlang.allocation import without_collector
 from mintlang.controllers import ControllerProfile, profile
 from mintlang.keyworddb.model import Controller
 from mintlang.semantic.blocks import Structure, match_blocks
-from mintlang.semantic.index import LineFacts, SyntaxIndex, index_lines, index_syntax
+from mintlang.semantic.index import IndexedLines, SyntaxIndex, index_syntax
 from mintlang.semantic.symbols import SymbolTable, Unit, build_symbols
-from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
 
 if TYPE_CHECKING:
     from mintlang.semantic.carry import Carried
-
-IndexedLine = tuple[Unit, n.PlacedLine, LineFacts]
 
 
 @dataclass(frozen=True)  # not slotted: ``index`` is computed on first use
@@ -52,7 +49,7 @@ class SemanticModel:
         controller: ControllerProfile,
         structures: Mapping[Unit, Structure],
         *,
-        lines: tuple[IndexedLine, ...],
+        lines: IndexedLines,
         carried: Carried | None = None,
     ) -> SemanticModel:
         """A model whose ``lines`` are known already (as matching the blocks needed them)."""
@@ -61,10 +58,10 @@ class SemanticModel:
         return model
 
     @cached_property
-    def lines(self) -> tuple[IndexedLine, ...]:
+    def lines(self) -> IndexedLines:
         """Every logical line of both files, in compile order, with its index: made when first
         read, for a model carried over an edit (``carried``) that needs none to be checked."""
-        return tuple(indexed for unit, document in self.documents() for indexed in index_lines(unit, document.placed))
+        return IndexedLines((unit, document.placed) for unit, document in self.documents())
 
     @cached_property
     def symbols(self) -> SymbolTable:
@@ -100,9 +97,6 @@ def build_model(
     target = profile(controller)
     configured = [(Unit.CONFIGURATION, configuration)] if configuration is not None else []
     documents = [*configured, (Unit.PROGRAM, program)]  # in compile order
-    lines = tuple(indexed for unit, document in documents for indexed in index_lines(unit, document.placed))
-    structures = {
-        unit: match_blocks(((placed, facts) for file, placed, facts in lines if file is unit), target)
-        for unit, _ in documents
-    }
+    lines = IndexedLines((unit, document.placed) for unit, document in documents)
+    structures = {unit: match_blocks(lines.of(unit), target) for unit, _ in documents}
     return SemanticModel.of(program, configuration, target, structures, lines=lines)

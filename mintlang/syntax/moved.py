@@ -111,6 +111,7 @@ class Moved(Sequence[T]):
     def __iter__(self) -> Iterator[T]:
         if self._flat is None:
             self._flat = self.flat(chain.from_iterable(map(self._items, self._pieces)))
+            self._pieces = (_Piece(self._flat, 0, len(self._flat), 0, 0),)  # earlier versions' sequences may go
         return iter(self._flat)
 
     def __eq__(self, other: object) -> bool:

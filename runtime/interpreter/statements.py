@@ -30,6 +30,7 @@ from mintlang.syntax import nodes as n
 
 WRITE_OF_READ_ONLY = 2000
 NO_EXPRESSION = 2005
+MISSING_PARAMETER = 2001
 UNDEFINED_KEYWORD = 3007
 SYNTAX_ERROR = 2003
 TOO_MANY_VALUES = 2017
@@ -200,6 +201,8 @@ class StatementCompiler:
         clock = vm.clock
         if statement.values is not None:
             if access is None or access.write is None:
+                if access is not None and access.indexed_write is not None:  # MintMT's MOVEOUT(0) = 7: no bank
+                    raise MintError(MISSING_PARAMETER, detail=f"{reference.keyword} needs its index after the axes")
                 if access is not None and access.read is not None:
                     raise MintError(WRITE_OF_READ_ONLY, detail=reference.keyword)
                 raise NotSimulated(reference.keyword, "write")

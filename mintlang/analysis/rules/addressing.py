@@ -21,7 +21,7 @@ from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Addressing
+from mintlang.keyworddb.model import Addressing, Keyword
 from mintlang.semantic.constants import constant_integer
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
@@ -101,6 +101,7 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
         yield from _terminal(use, scope)
     elif keyword.addressing is Addressing.AXIS:
         yield from _axes(use, scope, keyword.name)
+        yield from _indices(use, keyword)
     elif keyword.addressing is Addressing.CHANNEL or _channel_family(keyword.name):
         yield from _channel(use, scope)
 
@@ -118,6 +119,22 @@ def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:
         return
     for item in selector.items[:1]:
         yield from _axis_number(use.unit, item, scope)
+
+
+def _indices(use: KeywordUse, keyword: Keyword) -> Iterator[Finding]:
+    """MintMT's items after the axes (``MOVEOUT(axis, bank)``, ``CONTOURPARAMETER(axes, index)``, 004:232, 295):
+    one left out is 2001, as in ``MOVEOUT(0) = 7``, which would otherwise read as a bank-less write to axis 0;
+    an output move names one axis (its format's ``axis``), so a second one is 2017."""
+    selector = use.keyword.selector
+    if not keyword.indices or selector is None:
+        return
+    layout = keyword.formats[0].split("=")[0].strip() if keyword.formats else keyword.name
+    if selector.indices < len(keyword.indices):
+        missing = " and ".join(keyword.indices[selector.indices :])
+        yield Finding(use.unit, mint_error(2001, selector.span, f"the {missing} after the axes is missing: {layout}"))
+    elif layout.upper().startswith(f"{keyword.name}(AXIS,") and len(selector.axes) > 1:
+        detail = f"{len(selector.axes)} axes listed: {layout} is loaded on one axis"
+        yield Finding(use.unit, mint_error(2017, selector.span, detail))
 
 
 def _values_for_axes(use: KeywordUse, axes: int) -> Iterator[Finding]:

@@ -215,6 +215,15 @@ class Chain:
         self.timing.replace(Plan(profile, tick, s))
         self.end = self.timing.plan.end
 
+    def _rounding(self) -> float:
+        """How far the float sums giving a path position may fall short of the exact one."""
+        return 1e-9 * (1.0 + self.total)
+
+    def _reached(self, s: float, start: float) -> bool:
+        """Whether path position ``s`` has reached ``start``: 0.5 + 10 x 1.95 sums to just under 20, and the
+        move starting at 20 must still be the running one on that tick (its MOVEBUFFERID, MOVEBUFFERLOW)."""
+        return s >= start - self._rounding()
+
     def _feedrates_ahead(self) -> bool:
         """A joined segment still to come keeps a feedrate of its own: the path changes speed when it gets there."""
         return any(piece.segment.feedrate is not None for piece in self.pieces[self.current + 1 :])
@@ -249,13 +258,13 @@ class Chain:
         keeps another feedrate than the one before it changes the path speed from the tick it is reached (MT-15)."""
         s, v = self.timing.sample(tick)
         speed = self._speed(self.members[0].slew_speed())
-        while self.current + 1 < len(self.pieces) and s >= self.pieces[self.current + 1].s_start:
+        while self.current + 1 < len(self.pieces) and self._reached(s, self.pieces[self.current + 1].s_start):
             self.current += 1
             self.mode = self.pieces[self.current].segment.mode
             segment = self.pieces[self.current].segment
             for axis in self.members:  # an axis cancelled on its own has lost its buffer already
                 if self.buffered and axis.buffer and axis.buffer[0].build is segment:
-                    axis.buffer.popleft()
+                    axis.started(axis.buffer.popleft())  # its MOVEBUFFERID is now the running one's (MT-12)
                     axis.triggered -= 1
         if self._speed(self.members[0].slew_speed()) != speed and tick < self.end and not self.paused:
             self._plan(tick, s, v)
@@ -270,7 +279,7 @@ class Chain:
         p = self.members[0].parameters
         braking_rate = p["DECEL"] * (1.0 - p["SRAMP"] / 200.0)
         remaining = self.total - s
-        if v > 0.0 and remaining <= v * v / (2.0 * braking_rate) + 1e-9 * (1.0 + self.total):
+        if v > 0.0 and remaining <= v * v / (2.0 * braking_rate) + self._rounding():
             self.extendable = False  # the final deceleration has begun (MP-34): no more joining
             self.live = self._feedrates_ahead()  # a speed still to change needs its tick
             return

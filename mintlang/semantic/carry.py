@@ -56,10 +56,7 @@ class Carried:
         return (
             self.text_kept
             and self.pairs is not None
-            and all(
-                old_facts == new_facts or meaning(old, old_facts) == meaning(new, new_facts)
-                for old, old_facts, new, new_facts in self.pairs
-            )
+            and all(meaning(old, old_facts) == meaning(new, new_facts) for old, old_facts, new, new_facts in self.pairs)
         )
 
     @property

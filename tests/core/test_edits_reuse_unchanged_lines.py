@@ -165,6 +165,15 @@ def test_typing_in_a_number_carries_the_findings_over_unless_a_pass_reads_its_va
     assert [d.code for d in resized.program] == ["E2016", "E2016"]  # table(2) written and read: 1 element
 
 
+def test_a_name_typed_in_a_line_that_cannot_be_parsed_is_read_again() -> None:
+    """Equal facts are not enough: the words of a broken line count as uses of those names (W103)."""
+    source = "DIM xx\nDIM yy\nq = (xx\nPRINT 2\n"
+    edited = source.replace("(xx", "(yy")
+    after = mintlang.check_application(edited, previous=mintlang.check_application(source))
+    assert after.program == mintlang.check_application(edited).program
+    assert [d.message for d in after.program if d.code == "W103"] == ["variable 'xx' is declared but never used"]
+
+
 def test_typing_in_a_name_carries_the_blocks_and_checks_the_whole_application_again() -> None:
     before = mintlang.check_application(PROGRAM)
     after = mintlang.check_application(PROGRAM.replace("PRINT feed", "PRINT feedx"), previous=before)
@@ -176,7 +185,7 @@ def test_typing_in_a_name_carries_the_blocks_and_checks_the_whole_application_ag
 
 
 _COMMENTED = [case for case in CASES if case.configuration is None]
-_TYPED_IN_COMMENTS = ["x", " ", "", "\t", "REM mint: ignore[E2001]", "ENDIF", "1", ":", "0", "."]
+_TYPED_IN_COMMENTS = ["x", " ", "", "\t", "REM mint: ignore[E2001]", "ENDIF", "1", ":", "0", ".", "(", "a"]
 
 
 @st.composite

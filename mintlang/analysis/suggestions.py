@@ -6,8 +6,9 @@ from collections.abc import Iterable
 from difflib import SequenceMatcher, get_close_matches
 from functools import cache
 
+from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Controller, KeywordKind
+from mintlang.keyworddb.model import Controller, Keyword, KeywordKind
 
 NAME_LIKENESS = 0.8  # difflib's ratio: 'IDL' is 0.86 like 'IDLE', 'pos' 0.67 like 'post'
 _ONE_SLIP_FROM = 3  # words this long or longer are matched one slip of the finger away whatever the ratio
@@ -45,26 +46,37 @@ _OTHER_BASICS = {"WEND": "ENDW", "ENDWHILE": "ENDW"}
 
 
 @cache
-def _keywords_of(controller: Controller | None, *, values: bool) -> tuple[str, ...]:
-    """The keywords a program for ``controller`` (any, when None) can use, by their full names (not the
-    editor's commands); with ``values``, only those read or written (SPEED, POS), not commands or block words."""
+def _keywords_of(controller: Controller | None, *, values: bool, dialect: Dialect) -> tuple[str, ...]:
+    """The keywords a program for ``controller`` (any, when None) in ``dialect`` can use, by their full names
+    (not the editor's commands); with ``values``, only those read or written (SPEED, POS), not commands or block
+    words."""
     found = []
-    for name, keyword in database().keywords.items():
+    for name, keyword in database().keywords_of(dialect).items():
         if keyword.kind is KeywordKind.COMMAND_LINE:
             continue
         if controller is not None and keyword.controllers and controller not in keyword.controllers:
             continue
-        rows = keyword.attributes if controller is None else (keyword.attributes_for(controller),)
-        if not values or any(row is not None and (row.read or row.write) for row in rows):
+        if not values or _holds_a_value(keyword, controller):
             found.append(name)
     return tuple(found)
 
 
+def _holds_a_value(keyword: Keyword, controller: Controller | None) -> bool:
+    """Whether ``keyword`` is read or written on ``controller``: its attributes row says so, and a parameter the
+    guide gives no row (MOVEBUFFERSIZE, listed without an attributes table) is taken to be one."""
+    if not keyword.attributes:
+        return keyword.kind is KeywordKind.PARAMETER
+    rows = keyword.attributes if controller is None else (keyword.attributes_for(controller),)
+    return any(row is not None and (row.read or row.write) for row in rows)
+
+
 @cache
-def keyword_like(word: str, controller: Controller | None, *, values: bool = False) -> str | None:
-    """The keyword of ``controller`` (any, when None) that ``word`` (upper case) is most likely a misspelling
-    of; with ``values``, a keyword that holds a value, for a word used as a variable."""
-    return _OTHER_BASICS.get(word) or closest(word, _keywords_of(controller, values=values))
+def keyword_like(
+    word: str, controller: Controller | None, *, values: bool = False, dialect: Dialect = Dialect.V4
+) -> str | None:
+    """The keyword of ``controller`` (any, when None) in ``dialect`` that ``word`` (upper case) is most likely a
+    misspelling of; with ``values``, a keyword that holds a value, for a word used as a variable."""
+    return _OTHER_BASICS.get(word) or closest(word, _keywords_of(controller, values=values, dialect=dialect))
 
 
 def not_a_keyword(word: str, meant: str | None) -> str:

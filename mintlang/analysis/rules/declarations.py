@@ -86,7 +86,7 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
 
 def _keyword_holding_a_value(spelling: str, model: SemanticModel) -> str | None:
     """The keyword an undeclared name is most likely a misspelling of (``SPED = 10``), of those read or written."""
-    return keyword_like(spelling.upper(), model.controller.controller, values=True)
+    return keyword_like(spelling.upper(), model.controller.controller, values=True, dialect=model.program.dialect)
 
 
 def _by_line(model: SemanticModel, uses: list[Occurrence]) -> Iterator[tuple[Occurrence, list[Occurrence]]]:

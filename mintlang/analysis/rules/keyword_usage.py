@@ -46,24 +46,29 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         verdict = _verdict(ref.keyword, ref.spelling.upper(), controller, use.use, has_arguments, dialect=scope.dialect)
         if verdict is not None:
             code, detail = verdict
-            fixes = _spelling_fix(ref.spelling.upper(), controller, ref.spelling_span) if code == 3007 else ()
+            fixes = (
+                _spelling_fix(ref.spelling.upper(), controller, ref.spelling_span, scope.dialect)
+                if code == 3007
+                else ()
+            )
             yield Finding(unit, mint_error(code, ref.spelling_span, detail, fixes=fixes))
     db = database()
     for statement in scope.facts.statements:
         if isinstance(statement, n.BareName) and db.rename_of(statement.name.text) is None:  # else: v3_keywords
             word = statement.name.text
-            fixes = _spelling_fix(word, controller, statement.name.span)
-            yield Finding(unit, mint_error(3007, statement.span, _not_a_keyword(word, controller), fixes=fixes))
+            fixes = _spelling_fix(word, controller, statement.name.span, scope.dialect)
+            detail = _not_a_keyword(word, controller, scope.dialect)
+            yield Finding(unit, mint_error(3007, statement.span, detail, fixes=fixes))
 
 
-def _not_a_keyword(word: str, controller: Controller) -> str:
+def _not_a_keyword(word: str, controller: Controller, dialect: Dialect) -> str:
     """Error 3007's detail, with the keyword ``word`` resembles if one does."""
-    return not_a_keyword(word, keyword_like(word.upper(), controller))
+    return not_a_keyword(word, keyword_like(word.upper(), controller, dialect=dialect))
 
 
-def _spelling_fix(word: str, controller: Controller, span: Span) -> tuple[Fix, ...]:
+def _spelling_fix(word: str, controller: Controller, span: Span, dialect: Dialect) -> tuple[Fix, ...]:
     """Write the keyword ``word`` resembles, if one does."""
-    meant = keyword_like(word.upper(), controller)
+    meant = keyword_like(word.upper(), controller, dialect=dialect)
     return (Fix.replace(span, meant),) if meant is not None else ()
 
 
@@ -77,7 +82,7 @@ def _verdict(
     if keyword is None:
         if dialect.modern and successor(spelling, profile(controller)) is not None:
             return None  # an old v3 keyword: the v3-keyword rule names its replacement
-        return 3007, _not_a_keyword(spelling, controller)
+        return 3007, _not_a_keyword(spelling, controller, dialect)
     if keyword.kind is KeywordKind.COMMAND_LINE:
         return 2006, f"{keyword.name} is an editor command: it works only at the command line, not in a program"
     if keyword.controllers and controller not in keyword.controllers:

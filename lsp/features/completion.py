@@ -78,12 +78,34 @@ def _starts_statement(word: Keyword, row: Attributes | None) -> bool:
     )
 
 
-def _continuations() -> Iterator[types.CompletionItem]:
-    """After a complete operand: operators, and the words that go on with the statement."""
+def _continuations(words: frozenset[str]) -> Iterator[types.CompletionItem]:
+    """After a complete operand: operators, and ``words``, those that go on with the statement."""
     for word in database().keywords.values():
         binary = word.kind is KeywordKind.OPERATOR and word.name.isalpha() and word.name not in _UNARY
-        if binary or word.name in _CONTINUATIONS:
+        if binary or word.name in words:
             yield _keyword_item(word)
+
+
+def _statement_words(snapshot: Snapshot, before: list[Token]) -> frozenset[str]:
+    """The words that may go on with the statement the cursor is in, after an operand: THEN or DO in an IF
+    (000:11797, 11853), TO once a FOR has its '=' and then STEP (000:10887), USING once in a PRINT, INPUT or
+    LINE (000:15295, 12212, 13657); none in any other statement."""
+    starts = [index for index, token in enumerate(before) if token.kind in _STATEMENT_STARTERS]
+    statement = before[starts[-1] + 1 :] if starts else before
+    if not statement:
+        return frozenset()
+    written = {token.kind for token in statement[1:]}
+    first = statement[0]
+    if first.kind is TokenKind.IF:
+        return frozenset({"THEN", "DO"})
+    if first.kind is TokenKind.FOR:
+        if TokenKind.STEP in written or TokenKind.EQUAL not in written:
+            return frozenset()
+        return frozenset({"STEP"} if TokenKind.TO in written else {"TO"})
+    formatted = first.kind in (TokenKind.PRINT, TokenKind.INPUT) or (
+        first.kind is TokenKind.KEYWORD and snapshot.settings.words.keyword_name(first.text) == "LINE"
+    )
+    return frozenset({"USING"}) if formatted and TokenKind.USING not in written else frozenset()
 
 
 def _keywords(snapshot: Snapshot, statement: bool) -> Iterator[types.CompletionItem]:
@@ -303,9 +325,9 @@ def complete(snapshot: Snapshot, prefix: str, cursor: types.Position) -> list[ty
         # A keyword that starts the statement is a command or a parameter (GO, SPEED): what follows is
         # its axes or "=", nothing to complete; anywhere else it is a value read (IF IN3 ...).
         starts = len(before) == 1 or before[-2].kind in _STATEMENT_STARTERS
-        return [] if starts else list(_continuations())
+        return [] if starts else list(_continuations(_statement_words(snapshot, before)))
     if not statement and previous is not None and previous.kind in _OPERAND_ENDS:
-        return list(_continuations())
+        return list(_continuations(_statement_words(snapshot, before)))
     items = [*_keywords(snapshot, statement), *_symbols(snapshot)]
     return items + list(_snippets(snapshot.settings.dialect)) if statement else items
 

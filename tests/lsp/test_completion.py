@@ -105,6 +105,42 @@ async def test_after_an_operand_the_operators_and_continuations(client, tmp_path
     assert not items & {"POS", "SIN", "a"}
 
 
+# After an operand a statement goes on only with its own words: IF <condition> THEN or DO (000:11797,
+# 11853), FOR <variable> = <expression1> TO <expression2> {STEP <expression3>} (000:10887), and USING
+# once after the values of PRINT, INPUT and LINE (000:15295, 12212, 13657).
+STATEMENT_WORDS = {"THEN", "DO", "TO", "STEP", "USING"}
+
+
+@pytest.mark.parametrize(
+    ("line", "words"),
+    [
+        ("IF a ", {"THEN", "DO"}),
+        ("IF a > 1 AND a ", {"THEN", "DO"}),
+        ("FOR a = 1 ", {"TO"}),
+        ("FOR a = 1 TO 10 ", {"STEP"}),
+        ("FOR a = 1 TO 10 STEP 2 ", set()),
+        ("PRINT a ", {"USING"}),
+        ("? a ", {"USING"}),
+        ("INPUT a ", {"USING"}),
+        ("LINE 2, a ", {"USING"}),
+        ("PRINT a USING 5 ", set()),
+        ("IF a THEN PRINT a ", {"USING"}),
+        ("IF a THEN a = a ", set()),
+        ("WHILE a ", set()),
+        ("PAUSE a ", set()),
+        ("a = a ", set()),
+        ("REPEAT : UNTIL a ", set()),
+    ],
+)
+async def test_after_an_operand_only_the_words_of_the_statement_being_written(client, tmp_path, line, words):
+    text = f"DIM a\n{line}\n"
+    uri = uri_of(tmp_path / "statement.mnt")
+    await open_document(client, uri, text)
+    items = set(await labels_at(client, uri, text, line, len(line)))
+    assert {"AND", "OR", "MOD"} <= items
+    assert items & STATEMENT_WORDS == words
+
+
 async def test_symbol_details_are_plain_text_and_the_description_is_markdown(client, tmp_path):
     text = "DIM a\nDEFINE fast = SPEED.0 = 500\na = \n"
     uri = uri_of(tmp_path / "details.mnt")

@@ -4,7 +4,9 @@ The parameters are read from each format itself: the comma-separated items in
 the brackets after a function's name, or after the ``=`` of a keyword written
 to (braces, the manual's optional parts, are trimmed off). A repeated last
 item (``{,<expression> ...}``, or a value per axis) stays active for every
-further value; a terminal (``PRINT #1, ...``) is not counted as an operand. In an
+further value; a terminal (``PRINT #1, ...``) is not counted as an operand. The
+values of PRINT and LINE are separated by commas or semicolons; after USING
+(PRINT, INPUT) the operands are the USING clause's own, ``<int>`` and ``<frac>``. In an
 expression the read form (``v = ...``) comes first, at the start of a
 statement the written one.
 """
@@ -28,6 +30,7 @@ _KEYWORDS = frozenset({TokenKind.KEYWORD, TokenKind.FUNCTION, TokenKind.PRINT, T
 _FUNCTION = TokenKind.FUNCTION
 _TRIM = " {}"
 _OPENERS = {"[": "]", "(": ")"}
+_USING = "USING"
 
 
 @dataclass(frozen=True, slots=True)
@@ -36,15 +39,17 @@ class _Callee:
     operand: int  # index of the operand under the cursor
     bracketed: bool  # the cursor is inside the brackets after a function's name
     in_expression: bool
+    using: bool = False  # the cursor is in a USING clause (PRINT a USING 5, 2)
 
 
 def _starts_statement(tokens: list[Token], index: int) -> bool:
     return index == 0 or tokens[index - 1].kind in _STATEMENT_BREAKS
 
 
-def _callee(tokens: list[Token]) -> _Callee | None:
+def _callee(tokens: list[Token], settings: Settings) -> _Callee | None:
     """The keyword the cursor's operands belong to, and where the cursor is among them."""
-    depth = commas = 0
+    depth = commas = semicolons = 0
+    using: int | None = None  # the operand in a USING clause
     for index in range(len(tokens) - 1, -1, -1):
         token = tokens[index]
         if token.kind in _STATEMENT_BREAKS and depth == 0:
@@ -57,7 +62,15 @@ def _callee(tokens: list[Token]) -> _Callee | None:
             depth = max(0, depth - 1)
         elif token.kind is TokenKind.COMMA and depth == 0:
             commas += 1
+        elif token.kind is TokenKind.SEMICOLON and depth == 0:
+            semicolons += 1
+        elif token.kind is TokenKind.USING and depth == 0 and using is None:
+            using, commas, semicolons = commas, 0, 0
         elif token.kind in _KEYWORDS and depth == 0 and _starts_statement(tokens, index):
+            if using is not None:
+                return _Callee(token, using, False, False, using=True)
+            if token.kind is TokenKind.PRINT or settings.words.keyword_name(token.text) == "LINE":
+                commas += semicolons  # their values are separated by ';' as by ',' (000:15298-15299, 13657)
             terminal = index + 1 < len(tokens) and tokens[index + 1].kind is TokenKind.HASH
             return _Callee(token, commas - 1 if terminal and commas else commas, False, False)  # PRINT #1, ...
     return None
@@ -78,14 +91,17 @@ def _items(label: str, start: int, end: int) -> list[tuple[int, int]]:
     return items
 
 
-def _parameters(label: str, name: str, bracketed: bool) -> list[tuple[int, int]]:
-    """The operands of one format: inside the brackets after ``name``, after its ``=``, or after the
-    name of a statement (PRINT, PAUSE)."""
+def _parameters(label: str, name: str, callee: _Callee) -> list[tuple[int, int]]:
+    """The operands of one format: inside the brackets after ``name``, after its ``=``, after the
+    name of a statement (PRINT, PAUSE) up to its USING clause, or in that clause."""
     at = label.upper().find(name)
     if at < 0:
         return []
     after = at + len(name)
-    if bracketed:
+    clause = label.find("{" + _USING, after)  # PRINT, INPUT: {USING <int> {,<frac>}}, reached by its word
+    if callee.using:
+        return _items(label, clause + len(_USING) + 1, len(label)) if clause >= 0 else []
+    if callee.bracketed:
         opening = label.find("(", after)
         closing = label.rfind(")")
         return _items(label, opening + 1, closing) if 0 <= opening < closing else []
@@ -96,7 +112,7 @@ def _parameters(label: str, name: str, bracketed: bool) -> list[tuple[int, int]]
         after = label.find(_OPENERS[label[after]], after) + 1
     if label[after:].lstrip().startswith("{#"):  # the terminal (PRINT #1, ...) is no operand
         after = label.find("}", after) + 1
-    return _items(label, after, len(label))
+    return _items(label, after, clause if clause >= 0 else len(label))
 
 
 def _round_brackets(label: str, name: str) -> str:
@@ -107,7 +123,7 @@ def _round_brackets(label: str, name: str) -> str:
 
 
 def _signature(word: Keyword, label: str, callee: _Callee) -> types.SignatureInformation:
-    parameters = _parameters(label, word.name, callee.bracketed)
+    parameters = _parameters(label, word.name, callee)
     active = callee.operand
     repeated = "..." in label[slice(*parameters[-1])] or "[axes]" in label or "(axes)" in label if parameters else False
     if repeated and active >= len(parameters):
@@ -122,7 +138,7 @@ def _signature(word: Keyword, label: str, callee: _Callee) -> types.SignatureInf
 
 def signature_help(prefix: str, settings: Settings) -> types.SignatureHelp | None:
     """The formats of the keyword whose operands end ``prefix`` (the cursor's line so far)."""
-    callee = _callee(significant(prefix_tokens(prefix, settings.dialect)))
+    callee = _callee(significant(prefix_tokens(prefix, settings.dialect)), settings)
     if callee is None:
         return None
     word = settings.keyword(callee.keyword.text)

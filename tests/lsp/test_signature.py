@@ -51,6 +51,10 @@ async def active(client, uri, text, needle, shift=0) -> tuple[str, str | None]:
     return signature.label, signature.label[start:end]
 
 
+PRINT = "PRINT {#<terminal>} argument, {argument}, {modifier argument} {USING <int> {,<frac>}}"
+INPUT = "INPUT {#<terminal>} {string,} variable {USING <int> {,<frac>}}"
+
+
 @pytest.mark.parametrize(
     ("line", "label", "parameter"),
     [
@@ -62,6 +66,16 @@ async def active(client, uri, text, needle, shift=0) -> tuple[str, str | None]:
         ("PAUSE ", "PAUSE <condition>", "<condition>"),
         ("LOCATE #1, 5, ", "LOCATE {#<terminal>} <column>,<row>", "<row>"),
         ("CAMEND[0,1] = 1, 2, ", "CAMEND[axes] = <expression> {,<expression>}", "<expression>"),
+        # PRINT {#<terminal>} argument, {argument}, {modifier argument} {USING <int> {,<frac>}} (000:15295-15296):
+        # values separated by commas or semicolons (000:15298-15299), the USING clause reached by its word.
+        ("PRINT a, ", PRINT, "argument"),
+        ('PRINT "x"; a, ', PRINT, "modifier argument"),
+        ("PRINT #2, a, ", PRINT, "argument"),
+        ("PRINT a USING ", PRINT, "<int>"),
+        ("PRINT a, a USING 5, ", PRINT, "<frac>"),
+        # INPUT {#<terminal>} {string,} variable {USING <int> {,<frac>}} (000:12212)
+        ('INPUT "A = ", ', INPUT, "variable"),
+        ('INPUT "A = ", a USING -5, ', INPUT, "<frac>"),
     ],
 )
 async def test_the_operand_under_the_cursor_is_highlighted_in_the_form_in_use(client, tmp_path, line, label, parameter):

@@ -20,6 +20,7 @@ from mintlang.syntax.parser import Document
 from mintlang.syntax.tokens import Token, TokenKind
 
 _COMMENT, _CHARACTER = frozenset({TokenKind.COMMENT}), frozenset({TokenKind.CHAR})
+_SYMBOLS = frozenset({TokenKind.TILDE, TokenKind.COLON})  # manual entries written as a symbol: ~ and :
 
 
 def _comment_keyword(document: Document, offset: int) -> Token | None:
@@ -42,7 +43,11 @@ def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
     character = token_at(snapshot.document, offset, _CHARACTER)
     if character is not None:
         return describe.character(character.text), character.start, character.end
-    token = token_at(snapshot.document, offset) or _comment_keyword(snapshot.document, offset)
+    token = (
+        token_at(snapshot.document, offset)
+        or token_at(snapshot.document, offset, _SYMBOLS)
+        or _comment_keyword(snapshot.document, offset)
+    )
     if token is None:
         return None
     found = symbol_at(snapshot, offset)

@@ -53,6 +53,17 @@ async def test_the_rem_of_a_comment_is_a_keyword(client, tmp_path):
     assert "**REM**" in await hover_at(client, uri_of(tmp_path / "bare.mnt"), bare, "REM", 3)
 
 
+async def test_the_operators_and_separator_written_as_symbols_are_keywords(client, tmp_path):
+    # ~ is the bitwise NOT (000:1292, 1340-1341) and ':' separates statements on a line, as & is AND
+    text = "DIM a\na = ~a : a = a & 1\n"
+    uri = uri_of(tmp_path / "symbols.mnt")
+    await open_document(client, uri, text)
+    assert (await hover_at(client, uri, text, "~")).startswith("**~** — operator")
+    assert (await hover_at(client, uri, text, ": ")).startswith("**:** — statement")
+    assert (await hover_at(client, uri, text, "&")).startswith("**AND** (abbreviation &) — operator")
+    assert (await hover_at(client, uri, text, "~a", 1)).startswith("**a** — variable")  # a word wins at its start
+
+
 async def test_constant_shows_its_value(client, tmp_path):
     text = "DIM a\na = _TRUE\n"
     uri = uri_of(tmp_path / "constant.mnt")

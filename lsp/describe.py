@@ -30,7 +30,7 @@ def keyword(word: Keyword, controller: Controller, spelling: str = "") -> str:
     title = f"**{word.name}**"
     if word.abbreviations:
         title += f" (abbreviation {', '.join(word.abbreviations)})"
-    lines = [f"{title} — {word.kind.value}", ""]
+    lines = [f"{title} — {word.kind.value.replace('_', ' ')}", ""]  # command_line reads "command line"
     if word.formats:
         lines += ["```mint", *word.formats, "```", ""]
     if word.summary:

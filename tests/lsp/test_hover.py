@@ -64,6 +64,14 @@ async def test_the_operators_and_separator_written_as_symbols_are_keywords(clien
     assert (await hover_at(client, uri, text, "~a", 1)).startswith("**a** — variable")  # a word wins at its start
 
 
+async def test_a_command_line_keyword_is_named_in_words(client, tmp_path):
+    # RELEASE is for the command line, or the configuration file, never a program (000:934-939)
+    text = "RELEASE\n"
+    uri = uri_of(tmp_path / "release.cfg")
+    await open_document(client, uri, text)
+    assert (await hover_at(client, uri, text, "RELEASE")).startswith("**RELEASE** — command line\n")
+
+
 async def test_constant_shows_its_value(client, tmp_path):
     text = "DIM a\na = _TRUE\n"
     uri = uri_of(tmp_path / "constant.mnt")

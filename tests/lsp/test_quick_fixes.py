@@ -66,3 +66,20 @@ async def test_unreachable_code_is_removed(client, tmp_path):
     diagnostics = await open_document(client, uri, text)
     found = await fixes(client, uri, diagnostics, 1)
     assert applied(text, found["Remove unreachable code"], uri) == "GOTO label1\n#label1\nEND\n"
+
+
+@pytest.mark.parametrize(
+    "line",
+    [
+        'INPUT "Enter Master Distance", master_dist',  # INPUT reads into a variable (000:12212)
+        "FOR master_dist = 1 TO 10 : NEXT",  # a keyword as the loop counter is an error (000:10887, 18449-18451)
+    ],
+)
+async def test_no_keyword_is_offered_where_only_a_variable_can_stand(client, tmp_path, line):
+    text = f"{line}\nPRINT master_dist\n"
+    uri = uri_of(tmp_path / "variable.mnt")
+    diagnostics = await open_document(client, uri, text)
+    there = await fixes(client, uri, diagnostics, 0)
+    assert "Declare 'master_dist' with DIM" in there and "Replace with MASTERDISTANCE" not in there
+    read = await fixes(client, uri, diagnostics, 1)  # read in an expression, the keyword is a likely meaning
+    assert "Replace with MASTERDISTANCE" in read

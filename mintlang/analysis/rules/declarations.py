@@ -77,7 +77,10 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
             elif (close := closest(occurrence.spelling, declared)) is not None:
                 detail += f"; {did_you_mean(close)}"
                 fixes = (_replace_each(written, close), *fixes) if written else fixes
-            elif (keyword := _keyword_holding_a_value(occurrence.spelling, model)) is not None:
+            elif (
+                not _only_a_variable(model, occurrence)
+                and (keyword := _keyword_holding_a_value(occurrence.spelling, model)) is not None
+            ):
                 detail += f"; did you mean the keyword '{keyword}'?"  # SPED = 10
                 fixes = (_replace_each(written, keyword), *fixes) if written else fixes
             error = mint_error(3001, occurrence.span, detail, fixes=fixes, from_v3=was is not None or was_keyword)
@@ -87,6 +90,23 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
 def _keyword_holding_a_value(spelling: str, model: SemanticModel) -> str | None:
     """The keyword an undeclared name is most likely a misspelling of (``SPED = 10``), of those read or written."""
     return keyword_like(spelling.upper(), model.controller.controller, values=True, dialect=model.program.dialect)
+
+
+def _only_a_variable(model: SemanticModel, occurrence: Occurrence) -> bool:
+    """Whether the name stands where no keyword can: the variable of a FOR (000:10887; a keyword as the loop
+    counter is an error, 000:18449-18451) or of an INPUT (000:12212)."""
+    placed = model.document(occurrence.unit).placed
+    line = placed[bisect_right(placed, occurrence.span.start, key=_first_token) - 1]
+    for statement in n.walk_statements(line.syntax.statements):
+        if isinstance(statement, n.For):
+            named = statement.variable.span
+        elif isinstance(statement, n.Input):
+            named = statement.target.name.span
+        else:
+            continue
+        if line.span(named) == occurrence.span:
+            return True
+    return False
 
 
 def _by_line(model: SemanticModel, uses: list[Occurrence]) -> Iterator[tuple[Occurrence, list[Occurrence]]]:

@@ -28,6 +28,7 @@ from mintlang.lsp import describe, mintmt_words
 from mintlang.lsp.lookup import WORD_KINDS, prefix_tokens, significant
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
+from mintlang.semantic.blocks import BlockKind
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import SymbolKind
 from mintlang.syntax.lines import MacroDefinition
@@ -50,6 +51,18 @@ _NOTHING_AFTER = frozenset(
     {TokenKind.DIM, TokenKind.DEFINE, TokenKind.RETURN, TokenKind.END, TokenKind.ENDIF, TokenKind.ENDW}
     | {TokenKind.ENDL, TokenKind.NEXT, TokenKind.LOOP, TokenKind.REPEAT}
 )
+_LOOPS = frozenset({BlockKind.FOR, BlockKind.LOOP, BlockKind.REPEAT, BlockKind.WHILE})
+# The words that close or go on with a block, valid only inside one of the kinds given: ELSE and ENDIF in an
+# IF .. DO (000:11797-11803), each loop's closer in its loop, EXIT in any of the four loops (000:10236-10243).
+_INSIDE = {
+    "ELSE": frozenset({BlockKind.IF}),
+    "ENDIF": frozenset({BlockKind.IF}),
+    "NEXT": frozenset({BlockKind.FOR}),
+    "ENDW": frozenset({BlockKind.WHILE}),
+    "ENDL": frozenset({BlockKind.LOOP}),
+    "UNTIL": frozenset({BlockKind.REPEAT}),
+    "EXIT": _LOOPS,
+}
 _UNARY = frozenset({"NOT", "~"})  # the operators that can start an operand
 _CONTINUATIONS = frozenset({"THEN", "DO", "TO", "STEP", "USING"})  # statement words that follow an operand
 _SINGLE_QUOTES = "'\u2018\u2019"
@@ -108,7 +121,24 @@ def _statement_words(snapshot: Snapshot, before: list[Token]) -> frozenset[str]:
     return frozenset({"USING"}) if formatted and TokenKind.USING not in written else frozenset()
 
 
-def _keywords(snapshot: Snapshot, statement: bool) -> Iterator[types.CompletionItem]:
+def _open_blocks(snapshot: Snapshot, line: int) -> frozenset[BlockKind]:
+    """The kinds of the blocks open at ``line`` (0-based): opened on it or above, closed on it, below or never."""
+    here = line + 1
+    return frozenset(
+        block.kind
+        for block in snapshot.model.structures[snapshot.unit].blocks
+        if block.opener.line <= here and (block.closer is None or here <= block.closer.line)
+    )
+
+
+def _in_its_block(name: str, blocks: frozenset[BlockKind] | None) -> bool:
+    """Whether a keyword can start a statement inside ``blocks`` (None: the blocks are not known)."""
+    return blocks is None or name not in _INSIDE or bool(_INSIDE[name] & blocks)
+
+
+def _keywords(
+    snapshot: Snapshot, statement: bool, blocks: frozenset[BlockKind] | None = None
+) -> Iterator[types.CompletionItem]:
     if snapshot.settings.dialect is Dialect.V3:
         for old in database().v3_keywords.values():
             if old.name[:1].isalpha() and (old.write or old.command if statement else old.read):
@@ -127,7 +157,7 @@ def _keywords(snapshot: Snapshot, statement: bool) -> Iterator[types.CompletionI
             continue
         row = word.attributes_for(controller)
         if statement:
-            valid = _starts_statement(word, row)
+            valid = _starts_statement(word, row) and _in_its_block(word.name, blocks)
         else:
             valid = (
                 word.kind is KeywordKind.FUNCTION
@@ -296,8 +326,11 @@ def _macro_item(name: str, text: str, names: str, typed: types.Range) -> types.C
     )
 
 
-def complete(snapshot: Snapshot, prefix: str, cursor: types.Position) -> list[types.CompletionItem]:
-    """Items for the cursor at the end of ``prefix`` (its line so far); names come from ``snapshot``."""
+def complete(
+    snapshot: Snapshot, prefix: str, cursor: types.Position, blocks: frozenset[BlockKind] | None = None
+) -> list[types.CompletionItem]:
+    """Items for the cursor at the end of ``prefix`` (its line so far); names come from ``snapshot``, and the
+    words that close a block only inside ``blocks``, the kinds open at the cursor (all, when None)."""
     tokens = prefix_tokens(prefix, snapshot.settings.dialect)
     if tokens and _inside_text(tokens):
         return []
@@ -328,7 +361,7 @@ def complete(snapshot: Snapshot, prefix: str, cursor: types.Position) -> list[ty
         return [] if starts else list(_continuations(_statement_words(snapshot, before)))
     if not statement and previous is not None and previous.kind in _OPERAND_ENDS:
         return list(_continuations(_statement_words(snapshot, before)))
-    items = [*_keywords(snapshot, statement), *_symbols(snapshot)]
+    items = [*_keywords(snapshot, statement, blocks), *_symbols(snapshot)]
     return items + list(_snippets(snapshot.settings.dialect)) if statement else items
 
 
@@ -339,7 +372,13 @@ def register(server: MintServer) -> None:
     )
     def completion(params: types.CompletionParams) -> types.CompletionList:
         typing = server.typing(params.text_document.uri, params.position)
-        items = complete(*typing, params.position) if typing is not None else []
+        if typing is None:
+            return types.CompletionList(is_incomplete=False, items=[])
+        snapshot, prefix = typing
+        document = server.workspace.text_documents[params.text_document.uri]
+        current = snapshot.version == document.version  # an older analysis may place the blocks elsewhere
+        blocks = _open_blocks(snapshot, params.position.line) if current else None
+        items = complete(snapshot, prefix, params.position, blocks)
         return types.CompletionList(is_incomplete=False, items=items)
 
     @server.feature(types.COMPLETION_ITEM_RESOLVE)

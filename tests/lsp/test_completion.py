@@ -76,8 +76,36 @@ async def test_statement_start_offers_no_functions_operators_or_continuations(cl
     uri = uri_of(tmp_path / "start.mnt")
     await open_document(client, uri, text)
     items = set(await labels_at(client, uri, text, "a\n", 2))
-    assert {"GO", "PRINT", "ELSE", "a"} <= items
+    assert {"GO", "PRINT", "a"} <= items
     assert not items & {"SIN", "ABS", "AND", "NOT", "~", "THEN", "TO", "STEP", "USING", "DO", "#", ":"}
+
+
+# ELSE and ENDIF belong in an IF .. DO (000:11797-11803), NEXT, ENDW, ENDL and UNTIL close their own loops, and
+# EXIT leaves any of the four (000:10236-10243): at the start of a statement each is offered only inside its block.
+BLOCK_WORDS = {"ELSE", "ENDIF", "NEXT", "ENDW", "ENDL", "UNTIL", "EXIT"}
+
+
+@pytest.mark.parametrize(
+    ("needle", "words"),
+    [
+        ("\n\nLOOP", set()),
+        ("\n\nENDL", {"ENDL", "EXIT"}),
+        ("\n\nIF", set()),
+        ("\n\nENDIF", {"ELSE", "ENDIF"}),
+        ("\n\nNEXT", {"NEXT", "EXIT", "ENDW"}),
+        ("\n\nUNTIL", {"UNTIL", "EXIT", "ELSE", "ENDIF"}),
+    ],
+)
+async def test_block_words_only_inside_their_blocks(client, tmp_path, needle, words):
+    text = (
+        "DIM a\n\nLOOP\n\nENDL\n\nIF a DO\n\nENDIF\n"
+        "WHILE a\nFOR a = 1 TO 2\n\nNEXT\nENDW\nIF a DO\nREPEAT\n\nUNTIL a\nENDIF\n"
+    )
+    uri = uri_of(tmp_path / "blocks.mnt")
+    await open_document(client, uri, text)
+    items = set(await labels_at(client, uri, text, needle, 1))
+    assert items & BLOCK_WORDS == words
+    assert {"GO", "PRINT"} <= items
 
 
 @pytest.mark.parametrize(

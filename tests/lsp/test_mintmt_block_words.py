@@ -84,7 +84,8 @@ async def test_completion_offers_mintmt_block_words_and_snippets_not_v4_closers(
     items = await _labels(client, uri, text, "GO(0)\n    \n", 10)
     mintmt = {"End Loop", "End If", "Event", "End Event", "Startup", "End Startup"}
     snippets = {"Loop … End Loop", "If … Then … End If", "Event … End Event", "Startup … End Startup"}
-    assert mintmt | snippets | {"ENDW", "WHILE … ENDW", "FOR … NEXT"} <= set(items)
+    assert mintmt | snippets | {"WHILE", "EXIT", "WHILE … ENDW", "FOR … NEXT"} <= set(items)
+    assert "ENDW" not in items  # no While is open here
     assert not {"ENDL", "ENDIF", "LOOP … ENDL", "IF … DO … ENDIF"} & set(items)
     assert items["Loop … End Loop"].insert_text == "Loop\n\t$0\nEnd Loop"
     assert items["Event … End Event"].insert_text_format == types.InsertTextFormat.Snippet
@@ -95,7 +96,7 @@ async def test_v4_files_keep_v4_closers(client: LanguageClient) -> None:
     text = "LOOP\n  GO.0\n  \nENDL\n"
     await open_document(client, uri, text)
     items = await _labels(client, uri, text, "GO.0\n  \n", 7)
-    assert {"ENDL", "ENDIF", "LOOP … ENDL"} <= set(items)
+    assert {"ENDL", "LOOP … ENDL", "IF … DO … ENDIF"} <= set(items)
     assert not {"End Loop", "Event", "Loop … End Loop"} & set(items)
 
 

@@ -5,9 +5,9 @@ The cursor's line is lexed as typed; user names come from the last analysis.
 After GOSUB/GOTO: labels; after ``#`` at the start of a line: event handlers
 of the controller; after ``_``: predefined constants; at the start of a
 statement: commands, writable parameters, variables, macros and block
-snippets; inside an expression: readable keywords, functions, variables,
+snippets (ELSE, ENDL, EXIT ... only inside their blocks); inside an expression: readable keywords, functions, variables,
 arrays and macros; after a complete operand: the operators and the words that
-continue a statement (THEN, TO ...); after a keyword's dot (``SPEED.``, ``IN.``):
+continue the statement being written (THEN in an IF, TO in a FOR ...); after a keyword's dot (``SPEED.``, ``IN.``):
 the axes or channels it addresses on the controller and the macros that name
 them. Nothing inside comments, strings and character constants, after a
 number's decimal point, or where a new name is being declared (DIM, DEFINE).

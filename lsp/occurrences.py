@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from mintlang.diagnostics import Span
 from mintlang.lsp.lookup import token_index
 from mintlang.lsp.workspace import Snapshot
-from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind
+from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, SymbolTable
 from mintlang.semantic.units import Unit
 from mintlang.syntax.nodes import identity
 from mintlang.syntax.parser import Document
@@ -113,10 +113,31 @@ def symbol_at(snapshot: Snapshot, offset: int) -> tuple[Symbol, Occurrence] | No
         if span.start <= offset <= span.end:
             symbol = _mentioned(snapshot, mention)
             return (symbol, mention.occurrence) if symbol is not None else None
-    for symbol in table.all():
+    word = _word_at(document.source, offset)
+    for symbol in _named(table, word) if word else table.all():
         for occurrence in symbol.occurrences():
             span = occurrence.span
             here = occurrence.unit is snapshot.unit and span.start <= offset <= span.end
             if here and _is_written(document, occurrence):
                 return symbol, occurrence
     return None
+
+
+def _word_at(text: str, offset: int) -> str:
+    """The name written at ``offset`` (or ending there), empty where none is."""
+    start = end = offset
+    while start > 0 and (text[start - 1].isalnum() or text[start - 1] == "_"):
+        start -= 1
+    while end < len(text) and (text[end].isalnum() or text[end] == "_"):
+        end += 1
+    return text[start:end]
+
+
+def _named(table: SymbolTable, word: str) -> Iterator[Symbol]:
+    """The symbols a name written as ``word`` can be, in the order ``SymbolTable.all`` gives them:
+    looked up, where going through every symbol's occurrences took time in proportion to the file."""
+    name = identity(word)
+    for symbols in (table.variables, table.macros, *table.labels.values()):
+        symbol = symbols.get(name)
+        if symbol is not None:
+            yield symbol

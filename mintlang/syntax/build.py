@@ -464,19 +464,22 @@ def _address_selector(tree: Tree, keyword: Child) -> Make[n.Selector]:
     indices is the keyword's to say (``words.indices``), so it is counted when the line is built."""
     span, index = _tree_span(tree), _index(keyword)
     parts: list[Make[tuple[n.Expression | None, ...]]] = []
+    after_group: int | None = None  # the items after a [..] list of axes: they can only be indices
     for item in _trees(next(child for child in _trees(tree) if child.data == "address_items")):
         group = next((child for child in _trees(item) if child.data == "axis_items"), None)
         if group is not None:
             parts.append(_axis_items(group))
+            after_group = 0
         else:
             parts.append(_sequence([_expression(item.children[0]) if item.children else _constant(None)]))
+            after_group = after_group + 1 if after_group is not None else None
 
     def make(line: LogicalLine, words: Vocabulary) -> n.Selector:
         items = tuple(item for part in parts for item in part(line, words))
         upper = line.texts[index].upper()
         name = words.canonical.get(upper, upper)
-        indices = min(words.indices.get(name, 0), max(len(items) - 1, 0))
-        return n.Selector(span(line, words), False, items, indices)
+        given = max(len(items) - 1, 0) if after_group is None else after_group
+        return n.Selector(span(line, words), False, items, min(words.indices.get(name, 0), given))
 
     return make
 

@@ -356,7 +356,7 @@ def _misspelt_keyword(
         return None
     written = line.texts[begin]
     if words.dialect.modern:
-        meant = keyword_like(written.upper(), controller)
+        meant = keyword_like(written.upper(), controller, dialect=words.dialect)
     else:  # Mint v3 has keywords of its own
         meant = closest(written.upper(), set(words.canonical.values()))
     span = line.token_span(begin)

@@ -23,6 +23,7 @@ from tests.analysis.placed import placed_codes
         pytest.param("MOVEOUTX(1) = 0\n", [("E2001", 1, 9)], id="moveoutx-without-channel"),
         pytest.param("MOVEPULSEOUTX(0) = 100\n", [("E2001", 1, 14)], id="movepulseoutx-without-channel"),
         pytest.param("CONTOURPARAMETER(0) = 10\n", [("E2001", 1, 17)], id="contourparameter-without-index"),
+        pytest.param("CONTOURPARAMETER([0,1]) = 10;\n", [("E2001", 1, 17)], id="axis-list-without-index"),
         pytest.param("MOVEOUTX(0,1,3) = 1\n", [("E2017", 1, 9)], id="output-move-on-two-axes"),
     ],
 )

@@ -35,3 +35,11 @@ def test_a_name_one_slip_from_a_keyword_is_offered_it(source: str, meant: str) -
 
 def test_a_keyword_only_mintmt_has_is_not_offered_in_v4() -> None:
     assert "did you mean" not in _undeclared("TRIGERMODE = 0\n", "v4").message
+
+
+def test_a_misspelt_keyword_written_as_a_command_is_offered_the_mintmt_keyword() -> None:
+    """``MOVEOUT(axis, bank) = value`` (004:293-297) written with one slip does not parse as a
+    statement: error 3007 at the word, with the MintMT keyword it resembles."""
+    (diagnostic,) = mintlang.check("MOVEOUTT(0,0) = 1\n", dialect="mintmt")
+    assert diagnostic.code == "E3007"
+    assert "did you mean 'MOVEOUT'?" in diagnostic.message

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 from enum import StrEnum
 from typing import NamedTuple
 
+from mintlang.analysis.suggestions import closest, did_you_mean
 from mintlang.codes import mint_error
 from mintlang.controllers import ControllerProfile, NestingLimits
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
@@ -65,6 +66,7 @@ _CLOSING = {  # the word that closes each kind of block, and the number of the c
 LOOPS = frozenset({BlockKind.FOR, BlockKind.REPEAT, BlockKind.WHILE, BlockKind.LOOP})
 _TOP_LEVEL = frozenset({BlockKind.EVENT, BlockKind.STARTUP})  # MintMT: never inside another block
 _COMMS_EVENTS = range(1, 6)  # the comms locations whose update raises an event (002:19, 77-79)
+_NAMED_EVENTS = ("MOVEBUFFERLOW", "ONERROR", "TIMER", "STOP", *(f"COMMS{number}" for number in _COMMS_EVENTS))
 BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.IfThen, n.For, n.While, n.Until, n.SyntaxError_, n.EventBlock})
 
 
@@ -192,7 +194,11 @@ class _Matcher:
         span = line.span(name.span)
         if event is None or (event.kind is EventKind.COMMS and event.number not in _COMMS_EVENTS):
             detail = f"{name.text} is no event (MOVEBUFFERLOW, ONERROR, TIMER, STOP, COMMS1..5, INx, FASTINx, CANx)"
-            self.diagnostics.append(_error(2003, span, detail))
+            meant = closest(name.text.upper(), _NAMED_EVENTS) if event is None else None  # not Comms9
+            fixes = (Fix.replace(span, meant),) if meant is not None else ()
+            self.diagnostics.append(
+                _error(2003, span, f"{detail}; {did_you_mean(meant)}" if meant else detail, fixes=fixes)
+            )
             return
         first = self.events.setdefault(event, line.number)
         if first != line.number:

@@ -105,6 +105,13 @@ def test_event_and_startup_blocks_stand_alone_and_an_event_names_an_event() -> N
     ]
 
 
+def test_a_misspelt_event_is_offered_the_event_it_resembles() -> None:
+    """The move buffer note's handler is ``Event MOVEBUFFERLOW`` (004:119)."""
+    (diagnostic,) = mintlang.check_application("Event MOVEBUFERLOW\nEnd Event\n", dialect="mintmt").program
+    assert diagnostic.message == f"Syntax error: MOVEBUFERLOW is no event ({EVENTS}); did you mean 'MOVEBUFFERLOW'?"
+    assert diagnostic.fixes[0].edits[0].text == "MOVEBUFFERLOW"
+
+
 def test_only_comms_locations_1_to_5_raise_an_event_and_each_event_has_one_block() -> None:
     source = "Event Comms9\nEnd Event\nEvent Comms1\nEnd Event\nEvent COMMS1\nEnd Event\nEvent Comms5\nEnd Event\n"
     analysis = mintlang.check_application(source, dialect="mintmt")

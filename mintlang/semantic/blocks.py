@@ -46,14 +46,16 @@ class BlockKind(StrEnum):
     STARTUP = "Startup"  # MintMT
 
 
-_CLOSERS: dict[str, tuple[BlockKind, int, str]] = {
-    "ENDIF": (BlockKind.IF, 2011, "ENDIF without IF .. DO"),
-    "NEXT": (BlockKind.FOR, 2009, "NEXT without FOR"),
-    "ENDW": (BlockKind.WHILE, 2012, "ENDW without WHILE"),
-    "ENDL": (BlockKind.LOOP, 2014, "ENDL without LOOP"),
-    "ENDEVENT": (BlockKind.EVENT, 2003, "End Event without Event"),
-    "ENDSTARTUP": (BlockKind.STARTUP, 2003, "End Startup without Startup"),
+_CLOSERS: dict[str, tuple[BlockKind, int, str, str]] = {  # the kind, the mismatch's number, the words to name
+    "ENDIF": (BlockKind.IF, 2011, "ENDIF", "IF .. DO"),
+    "NEXT": (BlockKind.FOR, 2009, "NEXT", "FOR"),
+    "ENDW": (BlockKind.WHILE, 2012, "ENDW", "WHILE"),
+    "ENDL": (BlockKind.LOOP, 2014, "ENDL", "LOOP"),
+    "ENDEVENT": (BlockKind.EVENT, 2003, "End Event", "Event"),
+    "ENDSTARTUP": (BlockKind.STARTUP, 2003, "End Startup", "Startup"),
 }
+# How MintMT writes the words of the blocks it spells otherwise (its notes: If .. Then .. End If, Loop .. End Loop).
+_MINTMT_WORDS = {"ENDIF": "End If", "IF .. DO": "If .. Then", "ENDL": "End Loop", "LOOP": "Loop", "IF": "If"}
 _CLOSING = {  # the word that closes each kind of block, and the number of the construct's mismatch
     BlockKind.IF: ("ENDIF", 2011),
     BlockKind.FOR: ("NEXT", 2009),
@@ -134,8 +136,9 @@ _error = mint_error
 class _Matcher:
     """The compiler's block stack over one file."""
 
-    def __init__(self, limits: NestingLimits) -> None:
+    def __init__(self, limits: NestingLimits, dialect: Dialect) -> None:
         self.limits = limits
+        self.words = _MINTMT_WORDS if dialect is Dialect.MINTMT else {}
         self.stack: list[_Open] = []
         self.open = dict.fromkeys(BlockKind, 0)
         self.events: dict[Event, int] = {}  # each MintMT event handled, with the line of its Event block
@@ -163,8 +166,7 @@ class _Matcher:
         elif isinstance(statement, n.Until) or (isinstance(statement, n.SyntaxError_) and statement.closes == "UNTIL"):
             self.close(BlockKind.REPEAT, place, line.span(statement.span), 2013, "UNTIL without REPEAT")
         elif isinstance(statement, n.SyntaxError_) and statement.closes in _CLOSERS:
-            expected, code, message = _CLOSERS[statement.closes]
-            self.close(expected, place, line.span(statement.span), code, message)
+            self._closer(statement.closes, place, line.span(statement.span))  # type: ignore[arg-type]
         elif isinstance(statement, n.BlockWord) and statement.word == "ELSE":
             top = self.stack[-1] if self.stack else None
             if top is None or top.kind is not BlockKind.IF or top.middle is not None:
@@ -174,8 +176,15 @@ class _Matcher:
             else:
                 top.middle = place
         elif isinstance(statement, n.BlockWord) and statement.word in _CLOSERS:
-            expected, code, message = _CLOSERS[statement.word]
-            self.close(expected, place, line.span(statement.span), code, message)
+            self._closer(statement.word, place, line.span(statement.span))
+
+    def spelled(self, word: str) -> str:
+        """A block word as the program's dialect writes it."""
+        return self.words.get(word, word)
+
+    def _closer(self, word: str, place: Place, span: Span) -> None:
+        expected, code, closer, opener = _CLOSERS[word]
+        self.close(expected, place, span, code, f"{self.spelled(closer)} without {self.spelled(opener)}")
 
     def _top_level(self, statement: n.Statement, kind: BlockKind, line: n.PlacedLine) -> None:
         """MintMT's Event and Startup blocks stand alone, and an Event names an event (MT-6, MT-13)."""
@@ -213,7 +222,8 @@ class _Matcher:
         stack = self.stack
         if not stack or stack[-1].kind is not kind:
             if stack:
-                message += f" (the innermost open block is {stack[-1].kind.value} on line {stack[-1].opener.line})"
+                inner = self.spelled(stack[-1].kind.value)
+                message += f" (the innermost open block is {inner} on line {stack[-1].opener.line})"
             for opened in stack:  # the compiler stops here: what it had open is not reported again
                 opened.reported = True
             fixes = self._do() if kind is BlockKind.IF else ()
@@ -229,7 +239,7 @@ class _Matcher:
             if unclosed.reported:
                 continue
             word, code = _CLOSING[unclosed.kind]
-            detail = f"this {unclosed.kind.value} block is never closed with {word}"
+            detail = f"this {self.spelled(unclosed.kind.value)} block is never closed with {self.spelled(word)}"
             self.diagnostics.append(_error(code, unclosed.span, detail))
         self.blocks.sort(key=lambda block: block.opener)
         return Structure(tuple(self.blocks), tuple(self.diagnostics))
@@ -259,9 +269,11 @@ def block_key(statement: n.Statement, line: n.LineSyntax) -> Hashable:
     return kind
 
 
-def match_blocks(lines: Iterable[tuple[n.PlacedLine, LineFacts]], controller: ControllerProfile) -> Structure:
-    """Match the blocks of one file and check the nesting limits."""
-    matcher = _Matcher(controller.nesting)
+def match_blocks(
+    lines: Iterable[tuple[n.PlacedLine, LineFacts]], controller: ControllerProfile, dialect: Dialect = Dialect.V4
+) -> Structure:
+    """Match the blocks of one file and check the nesting limits; errors name blocks as ``dialect`` writes them."""
+    matcher = _Matcher(controller.nesting, dialect)
     for line, facts in lines:
         if not facts.kinds.isdisjoint(BLOCK_STATEMENTS):  # most lines open and close nothing
             for index, statement in enumerate(facts.statements):

@@ -83,7 +83,10 @@ def carry_model(
         return SemanticModel(program, configuration, controller, structures, carried)
     configured = [(Unit.CONFIGURATION, configuration.placed)] if configuration is not None else []
     lines = IndexedLines([*configured, (Unit.PROGRAM, program.placed)])
-    structures = {**previous.structures, Unit.PROGRAM: match_blocks(lines.of(Unit.PROGRAM), controller)}
+    structures = {
+        **previous.structures,
+        Unit.PROGRAM: match_blocks(lines.of(Unit.PROGRAM), controller, program.dialect),
+    }
     return SemanticModel.of(program, configuration, controller, structures, lines=lines, carried=carried)
 
 

@@ -98,5 +98,5 @@ def build_model(
     configured = [(Unit.CONFIGURATION, configuration)] if configuration is not None else []
     documents = [*configured, (Unit.PROGRAM, program)]  # in compile order
     lines = IndexedLines((unit, document.placed) for unit, document in documents)
-    structures = {unit: match_blocks(lines.of(unit), target) for unit, _ in documents}
+    structures = {unit: match_blocks(lines.of(unit), target, program.dialect) for unit, _ in documents}
     return SemanticModel.of(program, configuration, target, structures, lines=lines)

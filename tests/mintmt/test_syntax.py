@@ -105,6 +105,16 @@ def test_event_and_startup_blocks_stand_alone_and_an_event_names_an_event() -> N
     ]
 
 
+def test_block_errors_name_the_blocks_as_mintmt_writes_them() -> None:
+    """The notes write If .. Then .. End If and Loop .. End Loop: so do the errors."""
+    source = "Loop\n  If IN(1) Then\n    GO(0)\nEnd Loop\nIf IN(2) Then\n  GO(0)\n"
+    errors = [d.message for d in mintlang.check_application(source, dialect="mintmt").program if d.code[0] == "E"]
+    assert errors == [
+        "Incorrect loop terminator: End Loop without Loop (the innermost open block is If on line 2)",
+        "ELSE/ENDIF w/o IF DO: this If block is never closed with End If",
+    ]
+
+
 def test_a_misspelt_event_is_offered_the_event_it_resembles() -> None:
     """The move buffer note's handler is ``Event MOVEBUFFERLOW`` (004:119)."""
     (diagnostic,) = mintlang.check_application("Event MOVEBUFERLOW\nEnd Event\n", dialect="mintmt").program

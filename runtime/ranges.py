@@ -37,7 +37,10 @@ def table_bounds(keyword: str, controller: Controller) -> Bounds:
         return UNBOUNDED
     found = row.range
     exclusive_minimum = found.text.replace(" ", "").startswith("0.0<x")
-    return Bounds(found.minimum, found.maximum, exclusive_minimum, exclusive_maximum=not found.maximum_included)
+    allowed = frozenset(found.allowed) if found.allowed is not None else None  # a mode's values: "0 .. 4, 6"
+    return Bounds(
+        found.minimum, found.maximum, exclusive_minimum, allowed, exclusive_maximum=not found.maximum_included
+    )
 
 
 def ranged(

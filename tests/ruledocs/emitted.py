@@ -49,7 +49,7 @@ def _over_limits() -> set[int]:
 
 # (module file, function holding the call) -> the codes its variable can hold, read from where they are made
 _TABLES = {
-    ("semantic/blocks.py", "close"): {code for _, code, _ in blocks._CLOSERS.values()} | {2013},
+    ("semantic/blocks.py", "close"): {code for _, code, *_ in blocks._CLOSERS.values()} | {2013},
     ("semantic/blocks.py", "finish"): {code for _, code in blocks._CLOSING.values()},
     ("analysis/rules/addressing.py", "_channel"): {code for *_, code in addressing._CHANNEL_FAMILIES}
     | _literals_returned(_function(addressing, "_channel_family"), -1),

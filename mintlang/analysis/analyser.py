@@ -12,7 +12,7 @@ checked again against the memory (``rules.memory``).
 from __future__ import annotations
 
 from bisect import bisect_left
-from collections.abc import Hashable, Iterable, Iterator, Mapping
+from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 from functools import cache
 from itertools import chain
@@ -86,7 +86,7 @@ def _rules_for(dialect: Dialect) -> tuple[tuple[Rule, ...], tuple[Rule, ...], tu
     rules = [rule for rule in RULES if dialect in rule.dialects]
     return (
         tuple(rule for rule in rules if rule.each_line),
-        tuple(rule for rule in rules if rule.check and rule.check is not memory.check),
+        tuple(rule for rule in rules if rule.check),
         tuple(rule for rule in rules if rule.each_text_line),
     )
 
@@ -173,26 +173,41 @@ def analyse(
 
 def _find(model: SemanticModel) -> Found:
     """What every rule finds in the whole application."""
-    dialect, controller = model.program.dialect, model.controller
-    caches = {unit: _findings_cache((unit, controller.controller, dialect)) for unit in Unit}
-    in_lines: dict[Unit, list[Diagnostic]] = {Unit.PROGRAM: [], Unit.CONFIGURATION: []}
-    for unit, line, facts in model.lines:
-        in_line = _findings_of_line(caches[unit], unit, line, facts, controller=controller, dialect=dialect)
-        if in_line:
-            in_lines[unit].extend(diagnostic.shifted(line.origin) for diagnostic in in_line)
+    in_lines: dict[Unit, tuple[Diagnostic, ...]] = {Unit.CONFIGURATION: ()}
     for unit, document in model.documents():
-        in_lines[unit].extend(_in_text_lines(model, document, range(len(document.physical))))
-    return Found({unit: tuple(found) for unit, found in in_lines.items()}, _whole(model), memory.demand(model.symbols))
+        in_lines[unit] = (
+            *_in_logical_lines(model, unit, model.lines.of(unit)),
+            *_in_text_lines(model, document, range(len(document.physical))),
+        )
+    return Found(in_lines, _whole(model), memory.demand(model.symbols))
 
 
-def _whole(model: SemanticModel) -> dict[Unit, tuple[tuple[Rule, Diagnostic], ...]]:
-    """What the whole-application rules find, per file."""
+def _whole(
+    model: SemanticModel, kept: Callable[[Rule], list[tuple[Unit, Diagnostic]] | None] = lambda rule: None
+) -> dict[Unit, tuple[tuple[Rule, Diagnostic], ...]]:
+    """What the whole-application rules find, per file; each rule's ``kept`` findings where it has them,
+    in the rules' order (of equal findings, the first is the one kept)."""
     whole: dict[Unit, list[tuple[Rule, Diagnostic]]] = {Unit.PROGRAM: [], Unit.CONFIGURATION: []}
-    facts = gather(model)
+    facts: Facts | None = None  # gathered for the first rule that runs
     for rule in _rules_for(model.program.dialect)[1]:
-        for finding in rule.check(facts):  # type: ignore[misc]
-            whole[finding.unit].append((rule, finding.diagnostic))
+        found = kept(rule)
+        if found is None:
+            facts = facts or gather(model)
+            found = [(finding.unit, finding.diagnostic) for finding in rule.check(facts)]  # type: ignore[misc]
+        for unit, diagnostic in found:
+            whole[unit].append((rule, diagnostic))
     return {unit: tuple(found) for unit, found in whole.items()}
+
+
+def _in_logical_lines(
+    model: SemanticModel, unit: Unit, lines: Iterable[tuple[n.PlacedLine, LineFacts]]
+) -> Iterator[Diagnostic]:
+    """What the line rules find in ``lines`` of ``unit``'s file, at offsets into it."""
+    dialect, controller = model.program.dialect, model.controller
+    cache = _findings_cache((unit, controller.controller, dialect))
+    for line, facts in lines:
+        for diagnostic in _findings_of_line(cache, unit, line, facts, controller=controller, dialect=dialect):
+            yield diagnostic.shifted(line.origin)
 
 
 def _in_text_lines(model: SemanticModel, document: Document, indices: range) -> Iterator[Diagnostic]:
@@ -212,21 +227,14 @@ def _carried(model: SemanticModel, previous: Analysis) -> Found | None:
     in_lines = dict(previous.found.in_lines)
     in_lines[Unit.PROGRAM] = change.spliced(previous.found.in_lines[Unit.PROGRAM], _in_window(model, change))
     same = carried.same_facts
+
+    def kept(rule: Rule) -> list[tuple[Unit, Diagnostic]] | None:
+        if not (same or (rule.reads is not None and carried.same_for(rule.reads))):
+            return None
+        return _carried_findings(previous.found, rule, change)
+
     arrays = _carried_arrays(previous.found.arrays, change) if same else None
-    whole: dict[Unit, list[tuple[Rule, Diagnostic]]] = {Unit.PROGRAM: [], Unit.CONFIGURATION: []}
-    facts: Facts | None = None  # gathered for the first rule run again
-    for rule in _rules_for(model.program.dialect)[1]:  # in order: the first of equal findings is kept
-        found = _carried_findings(previous.found, rule, change)
-        if found is None or not (same or (rule.reads is not None and carried.same_for(rule.reads))):
-            facts = facts or gather(model)
-            found = [(finding.unit, finding.diagnostic) for finding in rule.check(facts)]  # type: ignore[misc]
-        for unit, diagnostic in found:
-            whole[unit].append((rule, diagnostic))
-    return Found(
-        in_lines,
-        {unit: tuple(found) for unit, found in whole.items()},
-        arrays if arrays is not None else memory.demand(model.symbols),
-    )
+    return Found(in_lines, _whole(model, kept), arrays if arrays is not None else memory.demand(model.symbols))
 
 
 def _carried_findings(before: Found, rule: Rule, change: Change) -> list[tuple[Unit, Diagnostic]] | None:
@@ -254,14 +262,10 @@ def _carried_arrays(before: memory.ArrayDemand, change: Change) -> memory.ArrayD
 def _in_window(model: SemanticModel, change: Change) -> list[Diagnostic]:
     """What the line rules find in the lines of the program that ``change`` touched."""
     program = model.program
-    dialect, controller = program.dialect, model.controller
-    cache = _findings_cache((Unit.PROGRAM, controller.controller, dialect))
-    window: list[Diagnostic] = []
-    for line in program.placed[change.first_line : change.first_line + change.new_lines]:
-        facts = line_facts(Unit.PROGRAM, line)
-        in_line = _findings_of_line(cache, Unit.PROGRAM, line, facts, controller=controller, dialect=dialect)
-        window.extend(diagnostic.shifted(line.origin) for diagnostic in in_line)
+    window = program.placed[change.first_line : change.first_line + change.new_lines]
+    found = list(_in_logical_lines(model, Unit.PROGRAM, ((line, line_facts(Unit.PROGRAM, line)) for line in window)))
     offsets = program.physical.offsets
-    lines = range(bisect_left(offsets, change.start), bisect_left(offsets, change.new_end))
-    window.extend(_in_text_lines(model, program, lines))
-    return window
+    found.extend(
+        _in_text_lines(model, program, range(bisect_left(offsets, change.start), bisect_left(offsets, change.new_end)))
+    )
+    return found

@@ -5,7 +5,9 @@ A rule reads the whole application (``check``), or one line at a time
 analyser keeps it while the line is unchanged), or both; or each physical line
 of the text as it is written (``each_text_line``), comments included. A rule
 that reads the whole application may say what it reads of a line (``reads``):
-after an edit that leaves that the same, what it found is carried over.
+after an edit that leaves that the same, what it found is carried over. The
+memory estimate (``memory``) reads the files' lengths: the analyser checks it
+on every version.
 """
 
 from __future__ import annotations
@@ -27,7 +29,6 @@ from mintlang.analysis.rules import (
     keyword_usage,
     limits,
     line_length,
-    memory,
     print_format,
     startup,
     unused,
@@ -80,7 +81,6 @@ RULES: tuple[Rule, ...] = (
     Rule("flow", flow.check, reads=control_meaning),
     Rule("calls", calls.check, reads=control_meaning),
     Rule("limits", limits.check),
-    Rule("memory", memory.check),
     Rule("line-length", each_text_line=line_length.each_text_line),
     Rule("startup", startup.check, reads=control_meaning),
     Rule("collisions", collisions.check),

@@ -5,9 +5,9 @@ program's size) must fit the Mint user memory, and the configuration file its
 buffer. The estimate counts only what is certain, so it errs towards silence.
 
 What the arrays need depends on the declarations alone (``ArrayDemand``), the
-rest on the files' lengths, which every keystroke changes: the language server
-keeps the demand while an edit leaves the declarations alone, and checks the
-lengths again (``findings``).
+rest on the files' lengths, which every keystroke changes: the analyser keeps
+the demand while an edit leaves the declarations alone, and checks the lengths
+on every version (``findings``), so this is not one of ``RULES``.
 """
 
 from __future__ import annotations
@@ -16,7 +16,6 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Span
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import SymbolTable, Unit
@@ -36,10 +35,6 @@ def demand(symbols: SymbolTable) -> ArrayDemand:
         return ArrayDemand(0, None)
     largest = max(arrays, key=lambda symbol: symbol.array_size or 0).definitions[0]
     return ArrayDemand(4 * sum(symbol.array_size or 0 for symbol in arrays), (largest.unit, largest.span))
-
-
-def check(facts: Facts) -> Iterator[Finding]:
-    yield from findings(facts.model, demand(facts.model.symbols))
 
 
 def findings(model: SemanticModel, arrays: ArrayDemand) -> Iterator[Finding]:

@@ -71,6 +71,9 @@ MISSING_LABELS = [
         "GOSUB init\nEND\n", "Create subroutine #init", "GOSUB init\nEND\n\n#init\nRETURN\n", id="create-subroutine"
     ),
     pytest.param("GOTO label1\nEND", "Create label #label1", "GOTO label1\nEND\n\n#label1\n", id="create-goto-label"),
+    pytest.param(  # the main program would run on into it (000:18968-18978): END first
+        "GOSUB init\nPRINT 1", "Create subroutine #init", "GOSUB init\nPRINT 1\nEND\n\n#init\nRETURN\n", id="end-first"
+    ),
 ]
 
 

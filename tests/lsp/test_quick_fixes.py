@@ -52,6 +52,35 @@ async def test_a_missing_label_is_corrected_or_made(client, tmp_path):
     assert applied(text, found["Create subroutine #mian"], uri) == text + "\n#mian\nRETURN\n"
 
 
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # the manual's structure (000:279-295): main program, END, then the subroutines
+        pytest.param(
+            "GOSUB init\nGOSUB main\nEND\n#init\nRETURN\n",
+            "GOSUB init\nGOSUB main\nEND\n#init\nRETURN\n\n#main\nRETURN\n",
+            id="after-the-last-return",
+        ),
+        # a main program that runs to the end of the file would run into it: END first, as 12.4's 2010 asks
+        pytest.param("GOSUB main\nPRINT 1\n", "GOSUB main\nPRINT 1\nEND\n\n#main\nRETURN\n", id="no-end"),
+        pytest.param(
+            "GOSUB main\nGOTO top\n#top\nPRINT 1",
+            "GOSUB main\nGOTO top\n#top\nPRINT 1\nEND\n\n#main\nRETURN\n",
+            id="goto-target",
+        ),
+        # an endless main loop never falls through (000:284-290: #main LOOP .. ENDL)
+        pytest.param(
+            "GOSUB main\nLOOP\n  PRINT 1\nENDL\n", "GOSUB main\nLOOP\n  PRINT 1\nENDL\n\n#main\nRETURN\n", id="loop"
+        ),
+    ],
+)
+async def test_a_subroutine_is_created_where_the_program_cannot_run_into_it(client, tmp_path, text, expected):
+    uri = uri_of(tmp_path / "create.mnt")
+    diagnostics = await open_document(client, uri, text)
+    found = await fixes(client, uri, diagnostics, text[: text.index("GOSUB main")].count("\n"))
+    assert applied(text, found["Create subroutine #main"], uri) == expected
+
+
 async def test_then_used_as_a_block_becomes_do(client, tmp_path):
     text = "DIM a\nIF a THEN\n  PRINT 1\nENDIF\n"
     uri = uri_of(tmp_path / "then.mnt")

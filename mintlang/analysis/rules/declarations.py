@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from itertools import islice
 
 from mintlang.analysis.findings import Finding, mint_error
+from mintlang.analysis.rules.flow import runs_off_the_end
 from mintlang.analysis.rules.v3_keywords import successor
 from mintlang.analysis.suggestions import closest, did_you_mean, keyword_like
 from mintlang.analysis.traversal import Facts, LineScope
@@ -31,7 +32,7 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     if model.program.dialect.modern:
         yield from _undeclared_variables(model)
-    yield from _labels(model, _jump_words(facts))
+    yield from _labels(facts, _jump_words(facts))
     yield from _macros(model)
 
 
@@ -226,7 +227,8 @@ def _jump_words(facts: Facts) -> dict[tuple[Unit, Span], str]:
     }
 
 
-def _labels(model: SemanticModel, jumps: dict[tuple[Unit, Span], str]) -> Iterator[Finding]:
+def _labels(facts: Facts, jumps: dict[tuple[Unit, Span], str]) -> Iterator[Finding]:
+    model = facts.model
     for unit, table in model.symbols.labels.items():
         defined = [symbol.name for symbol in table.values() if symbol.definitions]
         for symbol in table.values():
@@ -238,15 +240,19 @@ def _labels(model: SemanticModel, jumps: dict[tuple[Unit, Span], str]) -> Iterat
                 for reference in symbol.references:
                     elsewhere = _defined_in_other_file(model, unit, symbol)
                     detail = f"no label #{reference.spelling} in this file" + elsewhere
-                    fixes = _label_fixes(model, unit, reference, defined, jumps.get((unit, reference.span)))
+                    fixes = _label_fixes(facts, unit, reference, defined, jumps.get((unit, reference.span)))
                     yield Finding(unit, mint_error(3004, reference.span, detail, fixes=fixes))
 
 
 def _label_fixes(
-    model: SemanticModel, unit: Unit, reference: Occurrence, defined: list[str], word: str | None
+    facts: Facts, unit: Unit, reference: Occurrence, defined: list[str], word: str | None
 ) -> tuple[Fix, ...]:
     """The label it resembles, where the name is written here (not in a macro's text); and the label made,
-    at the end of the file: a subroutine that returns for a GOSUB, a bare label for a GOTO."""
+    at the end of the file: a subroutine that returns for a GOSUB, a bare label for a GOTO. A subroutine
+    goes where the program cannot run into it (the manual's structure: main program, END, subroutines,
+    000:279-295), so an END comes first when the code above could run past the end of the file: ending
+    there is what the controller did anyway."""
+    model = facts.model
     fixes: list[Fix] = []
     by_case = {name.upper(): name for name in defined}
     close = closest(reference.spelling.upper(), by_case, likeness=0.7)
@@ -254,9 +260,10 @@ def _label_fixes(
         fixes.append(Fix(f"Change to #{by_case[close]}", (Edit(reference.span, by_case[close]),)))
     text = model.document(unit).source
     newline = "\r\n" if "\r\n" in text else "\n"
+    finish_last_line = newline if text and not text.endswith(("\n", "\r")) else ""
+    stop = f"END{newline}" if word == "GOSUB" and runs_off_the_end(unit, facts) else ""
     body = f"{newline}RETURN" if word == "GOSUB" else ""
-    head = newline if text.endswith(("\n", "\r")) else newline * 2 if text else ""
-    label = f"{head}#{reference.spelling}{body}{newline}"
+    label = f"{finish_last_line}{stop}{newline}#{reference.spelling}{body}{newline}"
     kind = "subroutine" if word == "GOSUB" else "label"
     fixes.append(Fix(f"Create {kind} #{reference.spelling}", (Edit(Span(len(text), len(text)), label),)))
     return tuple(fixes)

@@ -71,6 +71,16 @@ def check(facts: Facts) -> Iterator[Finding]:
         yield from _jumps_out_of_blocks(unit, document, model, facts)
 
 
+def runs_off_the_end(unit: Unit, facts: Facts) -> bool:
+    """Whether the controller can run past the file's last line: no END, RETURN, GOTO or endless loop stops
+    it there, so code added after it would run as part of what comes before."""
+    model = facts.model
+    lines = [(line, indexed) for file, line, indexed in facts.lines if file is unit]
+    flow = _Flow(unit, model.document(unit), subroutines(unit, model, facts))
+    flow.findings(lines)
+    return flow.reachable
+
+
 def subroutines(unit: Unit, model: SemanticModel, facts: Facts) -> frozenset[str]:
     """Labels that start a subroutine: called by GOSUB, called by the controller, or never jumped to at all."""
     gosubs = {

@@ -11,7 +11,7 @@ from collections.abc import Callable, Sequence
 
 from mintlang.controllers import ControllerProfile
 from mintlang.keyworddb.model import Controller
-from mintlang.runtime.clock import NEVER, Clock
+from mintlang.runtime.clock import Clock
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer, per_channel
 from mintlang.runtime.motion.axis import (
@@ -28,7 +28,7 @@ from mintlang.runtime.motion.axis import (
 )
 from mintlang.runtime.motion.moves import Geometry, PlannedMove, next_profiler_tick
 from mintlang.runtime.motion.parameters import DEFAULTS
-from mintlang.runtime.motion.paths import PATH_MODES, PathSegment
+from mintlang.runtime.motion.paths import PATH_MODES, Chain, PathSegment
 from mintlang.runtime.motion.profile import plan_velocity
 from mintlang.runtime.ranges import check_range, ranged, table_bounds
 from mintlang.runtime.scenario.stimulus import IndexPulse
@@ -503,10 +503,18 @@ class Motion:
         return self._path_remaining(axis) / axis.scale
 
     def _path_remaining(self, axis: Axis) -> float:
-        """POSREMAINING in counts; for a move of several axes, "the remaining vector length" (000:16978-16979)."""
+        """POSREMAINING in counts; for a move of several axes, "the remaining vector length" (000:16978-16979).
+
+        A move held at rest (SUSPEND, a stop input in mode 1) still has its distance to go; a contoured path's is
+        that of the segment it is on.
+        """
         move = axis.move
-        if type(move) is PlannedMove and len(move.axes) > 1 and move.length is not None and move.end < NEVER:
-            return max(move.length - move.path(self.clock.now)[0], 0.0)
+        if isinstance(move, (PlannedMove, Chain)) and move.buffered:
+            now = self.clock.now
+            left = move.to_go(now)
+            if left is None:
+                return 0.0
+            return left if len(move.axes) > 1 else abs(move.goal(axis.index_in_move, now) - axis.demand)
         if move is None and axis.triggered and axis.buffer:
             request = axis.buffer[0]
             if len(request.axes) > 1 and request.targets is not None:

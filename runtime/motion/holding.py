@@ -25,7 +25,7 @@ class Held:
 
 def hold(motion: Motion, move: PlannedMove, tick: int, decel: float) -> Held:
     """Ramp ``move`` down at ``decel`` from ``tick`` on every axis running it, and keep it to resume."""
-    ramp = replace(move.stop(tick, decel), buffered=move.buffered)
+    ramp = replace(move.stop(tick, decel), buffered=move.buffered, holds=move)
     for number in move.axes:
         axis = motion.axes[number]
         if axis.move is move:

@@ -102,6 +102,7 @@ class PlannedMove:
     buffered: bool = True
     live: bool = False
     feedrate: float | None = None  # the slew speed it keeps (FEEDRATEMODE), counts/s; None: the master's in force
+    holds: PlannedMove | None = None  # the positional move this ramp holds at rest to resume (AX-18 mode 1, MT-16)
     end: int = field(default=NEVER)
 
     def __post_init__(self) -> None:
@@ -126,6 +127,18 @@ class PlannedMove:
 
     def profiler(self, tick: int) -> None:
         return None
+
+    def to_go(self, tick: int) -> float | None:
+        """Path length left at ``tick`` of the positional move it is or holds (MP-11); None for a jog or a stop."""
+        move = self if self.holds is None else self.holds
+        if move.length is None:
+            return None
+        return max(move.length - self.path(tick)[0], 0.0)
+
+    def goal(self, index: int, tick: int) -> float:
+        """Where its ``index``-th axis ends the positional move it is or holds, in counts."""
+        move = self if self.holds is None else self.holds
+        return move.demand(index, move.end)
 
     def stop(self, tick: int, decel: float) -> PlannedMove:
         s, velocity = self.path(tick)

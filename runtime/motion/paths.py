@@ -253,6 +253,17 @@ class Chain:
         piece = self._piece(s)
         return v * piece.shape.geometry.slope(index, s - piece.s_start)
 
+    def to_go(self, tick: int) -> float:
+        """Path length left at ``tick`` of the segment the path is on: the moves joined ahead of it are moves of
+        their own in the buffer, not part of the one in progress (MP-11, MT-12)."""
+        s, _ = self.timing.sample(tick)
+        piece = self._piece(s)
+        return max(piece.s_start + piece.shape.length - s, 0.0)
+
+    def goal(self, index: int, tick: int) -> float:
+        """Where its ``index``-th axis ends the segment the path is on at ``tick``, in counts."""
+        return self._piece(self.timing.sample(tick)[0]).shape.targets[index]
+
     def profiler(self, tick: int) -> None:
         """Take the segments the path has reached out of the buffers, then look ahead for more; a segment that
         keeps another feedrate than the one before it changes the path speed from the tick it is reached (MT-15)."""

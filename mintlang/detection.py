@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import re
 
+from mintlang.diagnostics import split_lines
 from mintlang.dialect import Dialect
 from mintlang.syntax.common import common_prefix, common_suffix
 from mintlang.syntax.lexer import LexedLine, lex
@@ -29,6 +30,10 @@ _QUOTES = "'‘’"  # the straight quote and the typographic ones manuals print
 _CHARACTER_CONSTANT = re.compile(f"[{_QUOTES}][^{_QUOTES}][{_QUOTES}]")
 _NAME = re.compile(r"[A-Za-z_]\w*")
 _CLOSERS = frozenset({TokenKind.ENDL, TokenKind.ENDIF, TokenKind.ENDEVENT, TokenKind.ENDSTARTUP})
+# What a line must hold to show one of the forms: a quote (a ' comment), a bracket (addressing), or
+# the word of a closer or an opener. The other lines, most of a v3 or v4 program, are not lexed:
+# lexing every line cost most of a parse, which the migrator paid before reading anything.
+_MAY_SHOW = re.compile(f"[{_QUOTES}(]|end[ \\t]|event|startup", re.IGNORECASE)
 
 
 def detect_dialect(text: str) -> Dialect:
@@ -52,7 +57,8 @@ def detect_dialect_after(previous: str, found: Dialect, text: str) -> Dialect:
 
 
 def _shows_any(text: str) -> bool:
-    return any(_shows_mintmt(line) for _, line in lex(text, Dialect.MINTMT).lines)
+    may_show = "".join(line for line in split_lines(text, keepends=True) if _MAY_SHOW.search(line))
+    return any(_shows_mintmt(line) for _, line in lex(may_show, Dialect.MINTMT).lines)
 
 
 def _shows_mintmt(line: LexedLine) -> bool:

@@ -38,6 +38,10 @@ def test_every_example_of_the_v4_guide_reads_as_v4(case: CorpusCase) -> None:
         pytest.param("Startup\n", id="Startup line"),
         pytest.param("MOVER(0) = 10\n", id="round-bracket addressing"),
         pytest.param("a = POS(1)\n", id="round-bracket addressing in an expression"),
+        pytest.param("LOOP\nEND\tLOOP\n", id="End Loop with a tab"),
+        pytest.param("MOVER (0) = 10\n", id="a space before the bracket"),
+        pytest.param("PRINT 1\r\nPRINT 2\r' note\rPRINT 3\r\n", id="among lines ended by CR LF and CR"),
+        pytest.param("PRINT 1\n" * 500 + "a = 1 ’ note\n" + "PRINT 2\n" * 500, id="one line among a thousand"),
     ],
 )
 def test_a_form_only_mintmt_has_makes_the_text_mintmt(text: str) -> None:

@@ -2,7 +2,8 @@
 
 A new name must lex as a user name of the dialect (not a keyword, constant or
 abbreviation) and must not equal another symbol in its first ten characters,
-which the controller would take for the same name. Event handlers keep their
+which the controller would take for the same name; nor may a label and a macro
+share a name, as the macro's text would replace the label's name. Event handlers keep their
 names, and no subroutine is renamed into one: the controller calls handlers
 by name. A symbol written with two spellings the controller takes for one
 (``thisIsAVariable1``, ``thisIsAVaraible2``) is written one way after the
@@ -20,12 +21,12 @@ from pygls.exceptions import JsonRpcException
 
 from mintlang.diagnostics import Span
 from mintlang.lsp import confirmation
-from mintlang.lsp.lookup import token_at
+from mintlang.lsp.lookup import abbreviated, token_at
 from mintlang.lsp.occurrences import symbol_at, written
 from mintlang.lsp.server import MintServer
-from mintlang.lsp.workspace import Snapshot
+from mintlang.lsp.workspace import Settings, Snapshot
 from mintlang.semantic.events import event_of
-from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind
+from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, SymbolTable
 from mintlang.syntax.lexer import lex
 from mintlang.syntax.nodes import identity
 from mintlang.syntax.tokens import TokenKind
@@ -61,22 +62,57 @@ def _target(snapshot: Snapshot, offset: int) -> tuple[Symbol, Occurrence]:
     raise RenameRefused("There is no variable, array, label or macro here")
 
 
+def _not_a_name(name: str, settings: Settings) -> str | None:
+    """Why ``name`` cannot name a user's symbol in the dialect, in words; None when it can."""
+    tokens = [token for token in lex(name, settings.dialect).tokens if token.kind is not TokenKind.NEWLINE]
+    single = len(tokens) == 1 and tokens[0].text == name
+    kind = tokens[0].kind if single else None
+    if kind is TokenKind.NAME:
+        return None
+    if kind is TokenKind.CONSTANT:
+        return f"'{name}' is the Mint constant {name.upper()}"
+    if single and name.isalnum() and kind is not TokenKind.INVALID:  # a keyword, REM and abbreviations included
+        full = abbreviated(tokens[0], settings.words)
+        return f"'{name}' is the abbreviation of {full}" if full else f"'{name}' is the Mint keyword {name.upper()}"
+    return (
+        f"'{name}' is not a valid Mint name: a name starts with a letter, or _ and a letter, "
+        "and goes on with letters, digits and _"
+    )
+
+
+def _rivals(table: SymbolTable, symbol: Symbol) -> list[Symbol]:
+    """The symbols a new name of ``symbol`` must not equal: a label's siblings in its file, a variable's
+    fellow variables; and the macros for both, the labels too for a macro, as the controller puts a
+    macro's text wherever its name is written, after GOSUB and GOTO as anywhere (000:9110)."""
+    if symbol.kind is SymbolKind.LABEL:
+        return [*table.labels[symbol.unit].values(), *table.macros.values()]
+    if symbol.kind is SymbolKind.MACRO:
+        labels = (label for file in table.labels.values() for label in file.values())
+        return [*table.variables.values(), *table.macros.values(), *labels]
+    return [*table.variables.values(), *table.macros.values()]
+
+
+def _clash(name: str, symbol: Symbol, other: Symbol) -> str:
+    if SymbolKind.MACRO not in (symbol.kind, other.kind) or symbol.kind is other.kind:
+        return f"'{name}' would be the same name as '{other.name}' to the controller (first ten characters count)"
+    written = f"#{other.name}" if other.kind is SymbolKind.LABEL else f"'{other.name}'"
+    replaced = symbol.kind if other.kind is SymbolKind.MACRO else other.kind
+    ten = "" if name.upper() == other.name.upper() else " (the first ten characters count)"
+    return (
+        f"'{name}' is the name of the {other.kind} {written}{ten}: the controller would put the macro's text "
+        f"in place of the {replaced}'s name"
+    )
+
+
 def _check_name(snapshot: Snapshot, symbol: Symbol, name: str) -> None:
-    tokens = [token for token in lex(name, snapshot.settings.dialect).tokens if token.kind is not TokenKind.NEWLINE]
-    if len(tokens) != 1 or tokens[0].kind is not TokenKind.NAME or tokens[0].text != name:
-        raise RenameRefused(f"'{name}' is not a valid Mint name (a keyword, a constant or not a single word)")
+    refusal = _not_a_name(name, snapshot.settings)
+    if refusal is not None:
+        raise RenameRefused(f"{refusal}: the {symbol.kind} cannot take its name")
     if symbol.kind is SymbolKind.LABEL and event_of(name, snapshot.settings.dialect) is not None:
         raise RenameRefused(f"#{name} names an event handler: the subroutine would become one")
-    table = snapshot.model.symbols
-    if symbol.kind is SymbolKind.LABEL:
-        others = list(table.labels[symbol.unit].values())
-    else:
-        others = [*table.variables.values(), *table.macros.values()]
-    for other in others:
+    for other in _rivals(snapshot.model.symbols, symbol):
         if other is not symbol and other.identity == identity(name):
-            raise RenameRefused(
-                f"'{name}' would be the same name as '{other.name}' to the controller (first ten characters count)"
-            )
+            raise RenameRefused(_clash(name, symbol, other))
 
 
 MERGE = "mint.mergeSpellings"

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import sys
 
 import pytest
@@ -49,7 +50,7 @@ async def test_rename_an_array_and_a_label(client, tmp_path):
 
 @pytest.mark.parametrize(
     ("new_name", "reason"),
-    [("ypos", "same name as 'ypos'"), ("SPEED", "not a valid Mint name"), ("two words", "not a valid")],
+    [("ypos", "same name as 'ypos'"), ("SPEED", "the Mint keyword SPEED"), ("two words", "not a valid")],
 )
 async def test_rename_refusals(client, tmp_path, new_name, reason):
     uri = uri_of(tmp_path / "xy.mnt")
@@ -67,6 +68,51 @@ async def test_collision_in_the_first_ten_characters(client, tmp_path):
     with pytest.raises(JsonRpcException, match="first ten characters"):
         await client.text_document_rename_async(
             types.RenameParams(text_document=document(uri), position=position(text, "count"), new_name="axis_speed_y")
+        )
+
+
+# A macro's text replaces its name wherever the name is found (000:9110), after GOSUB as anywhere: a label and a
+# macro of one name would make GOSUB fast into GOSUB SPEED.0 = 100. Keywords, their abbreviations and the
+# constants are no names (000:1475).
+LABEL_REPLACED = ": the controller would put the macro's text in place of the label's name"
+MACRO_AND_LABEL = "DEFINE fast = SPEED.0 = 100\nGOSUB init\nEND\n#init\nfast\nRETURN\n"
+
+
+@pytest.mark.parametrize(
+    ("at", "new_name", "refusal"),
+    [
+        (
+            "GOSUB init",
+            "fast",
+            "'fast' is the name of the macro 'fast'" + LABEL_REPLACED,
+        ),
+        (
+            "GOSUB init",
+            "#FAST",
+            "'FAST' is the name of the macro 'fast'" + LABEL_REPLACED,
+        ),
+        (
+            "DEFINE fast",
+            "init",
+            "'init' is the name of the label #init" + LABEL_REPLACED,
+        ),
+        ("GOSUB init", "speed", "'speed' is the Mint keyword SPEED: the label cannot take its name"),
+        ("GOSUB init", "Loop", "'Loop' is the Mint keyword LOOP: the label cannot take its name"),
+        ("GOSUB init", "sp", "'sp' is the abbreviation of SPEED: the label cannot take its name"),
+        ("DEFINE fast", "NULL", "'NULL' is the Mint constant NULL: the macro cannot take its name"),
+        ("GOSUB init", "_true", "'_true' is the Mint constant _TRUE: the label cannot take its name"),
+        ("GOSUB init", "9lives", "'9lives' is not a valid Mint name: a name starts with a letter"),
+    ],
+)
+async def test_a_label_or_macro_does_not_take_a_macros_a_labels_or_a_keywords_name(
+    client, tmp_path, at, new_name, refusal
+):
+    uri = uri_of(tmp_path / "macro_and_label.mnt")
+    await open_document(client, uri, MACRO_AND_LABEL)
+    where = position(MACRO_AND_LABEL, at, len(at) - 1)
+    with pytest.raises(JsonRpcException, match=re.escape(refusal)):
+        await client.text_document_rename_async(
+            types.RenameParams(text_document=document(uri), position=where, new_name=new_name)
         )
 
 

@@ -9,6 +9,7 @@ from typing import Any
 from mintlang.keyworddb.model import Constant, ErrorCode, Keyword
 from tools.keyworddb.abbreviations import shared_abbreviations
 from tools.keyworddb.access import apply_access_examples, apply_format_access
+from tools.keyworddb.bit_ranges import with_bit_ranges
 from tools.keyworddb.conflicts import Conflict, sort_key
 from tools.keyworddb.constant_ranges import with_constant_ranges
 from tools.keyworddb.constants import add_constant, error_constants, general_constants, keyword_constants
@@ -60,9 +61,10 @@ def build(seeds: Path, spec: Path) -> dict[str, Any]:
     errors = build_errors(v4)
     constants, constant_conflicts, keywords = _constants(v4, keywords, errors)
     keywords = with_constant_ranges(keywords, constants)
+    keywords, bit_conflicts = with_bit_ranges(keywords, constants, v4)
     keywords, format_conflicts = apply_format_access(keywords)
     keywords, access_conflicts = apply_access_examples(v4, errors, keywords)
-    conflicts += constant_conflicts + shared_constants(errors) + format_conflicts + access_conflicts
+    conflicts += constant_conflicts + bit_conflicts + shared_constants(errors) + format_conflicts + access_conflicts
     keywords = with_summaries(_with_notes(keywords, conflicts))
     renames = build_renames(v4, keywords)
     return {

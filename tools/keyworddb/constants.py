@@ -30,9 +30,9 @@ def _value(text: str) -> int:
     return int(text, 16) if text.lower().startswith("0x") else int(text)
 
 
-def _is_bit_table(entry: Entry, number: int, seed: Seed) -> bool:
-    """Whether the nearest table header above ``number`` in the entry counts bits."""
-    for above in range(number - 1, entry.line, -1):
+def in_bit_table(seed: Seed, heading: int, number: int) -> bool:
+    """Whether the nearest table header above line ``number``, below the entry's ``heading``, counts bits."""
+    for above in range(number - 1, heading, -1):
         if match := _TABLE_HEADER.match(seed.stripped(above)):
             return match["word"] == "Bit"
     return False
@@ -49,7 +49,7 @@ def _table_rows(entry: Entry, seed: Seed) -> Iterable[tuple[str, int, int]]:
         if not match or match["rest"].strip().startswith("+"):  # "3 _acDIFFERENTIAL + _acBIPOLAR"
             continue
         value = _value(match["value"])
-        if not _is_bit_table(entry, number, seed):
+        if not in_bit_table(seed, entry.line, number):
             yield match["name"], value, number
             continue
         following = seed.next_nonblank(number)

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING
 
 from mintlang.controllers import ControllerProfile
 from mintlang.keyworddb.model import Controller
@@ -33,11 +34,17 @@ from mintlang.runtime.motion.profile import plan_velocity
 from mintlang.runtime.ranges import check_range, ranged, table_bounds
 from mintlang.runtime.scenario.stimulus import IndexPulse
 
+if TYPE_CHECKING:  # master.py builds on this module
+    from mintlang.runtime.motion.master import MasterSettings
+
 INVALID_AXIS = 2
 WRONG_CONFIGURATION = 11
 SMART_SOFT_LIMITS = 4
 CONFIG_OFF = 0
 _PROFILE_RATES = frozenset({"SPEED", "ACCEL", "DECEL"})
+# DECELTIME = 0: a change of speed in no time, as the largest rate a Mint number holds (binary32), so every ramp
+# planned at it lasts far less than a servo tick and reading DECEL gives a value, meaningless as the guide warns
+INSTANT_RATE = 3.4028234663852886e38
 _SWITCHES: dict[str, tuple[str, ...]] = {
     "LIMIT": ("LIMITFORWARDINPUT", "LIMITREVERSEINPUT"),
     "LIMITFORWARD": ("LIMITFORWARDINPUT",),
@@ -61,6 +68,7 @@ class Motion:
         self.input_active: Callable[[int], bool] = lambda channel: False  # a digital input's state this tick
         self.index_pulses: dict[int, IndexPulse] = {}  # Z pulses of the scripted encoders, by axis
         self.on_default: list[Callable[[Axis], None]] = []  # each motion module's own settings back to power-up
+        self.master_settings: dict[int, MasterSettings] = {}  # MASTERSOURCE and the rest, by slave axis (master.py)
 
     def index_active(self, axis: Axis) -> bool:
         """The Z pulse of ``axis`` at its current physical count (active high, HM-8 RC)."""
@@ -388,13 +396,16 @@ class Motion:
         return read
 
     def _ramp_time(self, rate: str) -> Callable[[int | None, float], None]:
-        """ACCELTIME / DECELTIME (ms): the rate that reaches the current SPEED in that time (MP-4 RC)."""
+        """ACCELTIME / DECELTIME (ms): the rate that reaches the current SPEED in that time (MP-4 RC).
+
+        The rate is not held to ACCEL's or DECEL's range: the times can set one above it (000:6258-6261,
+        8971-8974). DECELTIME = 0, which its table takes (000:8953), decelerates in no time: ``INSTANT_RATE``.
+        """
 
         def write(channel: int | None, value: float) -> None:
             axis = self.axis(channel)
-            if value <= 0:
-                raise MintError(3, axis.number, f"{rate}TIME = {value:g}")
-            axis.set(rate, axis.get("SPEED") / (value / 1000.0))
+            axis.parameters[rate] = axis.parameters["SPEED"] / (value / 1000.0) if value else INSTANT_RATE
+            self.rates_changed(axis)
 
         return write
 

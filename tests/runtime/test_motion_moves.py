@@ -137,6 +137,27 @@ def test_acceltime_sets_the_rate_that_reaches_speed_in_that_time() -> None:
     assert simulate(source).terminal == "1 2\n"
 
 
+def test_the_times_set_rates_beyond_the_range_accel_and_decel_take() -> None:
+    # 000:6258-6261, 8971-8974: 20000 counts/s reached in 1 ms is 20,000,000 counts/s², above ACCEL's 8388607
+    source = 'SPEED.0 = 20000 : ACCELTIME.0 = 1 : DECELTIME.0 = 2\nPRINT ACCEL.0, " ", DECEL.0\n'
+    assert simulate(source).terminal == "20000000 10000000\n"
+
+
+@pytest.mark.parametrize(("keyword", "accepted"), [("ACCELTIME", "1 to 8388607"), ("DECELTIME", "0 to 8388607")])
+def test_a_time_outside_its_table_is_error_3(keyword: str, accepted: str) -> None:
+    # 000:6232-6234, 8953-8955: ACCELTIME takes 1 ms and more, DECELTIME 0 and more
+    below = 0 if keyword == "ACCELTIME" else -1
+    result = simulate(f"{keyword}.0 = {below}\n")
+    assert result.err == 3 and f"it takes {accepted}" in result.stop.message
+
+
+def test_deceltime_zero_stops_a_jog_at_once() -> None:
+    # 000:8957-8959: DECELTIME is the time from SPEED to rest, so 0 brings STOP to rest without a ramp: the demand
+    # stops on the profiler tick after STOP (T-6), and two ticks later the axis has not moved
+    source = "DIM a\nDECELTIME.0 = 0\nJOG.0 = 1000\nWAIT = 100\nSTOP.0\nWAIT = 2\na = POS.0\nWAIT = 2\n"
+    assert simulate(source + 'PRINT POS.0 - a, " ", IDLE.0\n').terminal == "0 1\n"
+
+
 def test_switch_keywords_read_the_inputs_assigned_to_the_axis() -> None:
     source = """REM @sim input 4 1 at 10
 LIMITFORWARDINPUT.0 = 4 : LIMITMODE.0 = 0 : STOPINPUT.1 = 4 : STOPINPUTMODE.1 = 0

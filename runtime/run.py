@@ -63,6 +63,16 @@ class _CompileError:
     printed: str  # as the controller prints it: ``C2014: PROGRAM Incorrect loop terminator [line 12]``
 
 
+@dataclass(frozen=True, slots=True)
+class _Hooks:
+    """The caller's observers of a run (``run_source``)."""
+
+    echo: Callable[[str], None] | None
+    on_tick: Callable[[Controller, int], None] | None
+    on_start: Callable[[Controller], None] | None
+    on_simulator: Callable[[Simulator], None] | None
+
+
 _ORDER = {Unit.CONFIGURATION: 0, Unit.PROGRAM: 1}  # compile order of the files
 _LINE_END = re.compile(r"[\r\n]|$")
 
@@ -116,6 +126,7 @@ def run_source(
     echo: Callable[[str], None] | None = None,
     on_tick: Callable[[Controller, int], None] | None = None,
     on_start: Callable[[Controller], None] | None = None,
+    on_simulator: Callable[[Simulator], None] | None = None,
     name: str = "program",
 ) -> RunResult:
     """Run a program (and its configuration file) to the end or a limit; never raises for the program's faults.
@@ -132,6 +143,8 @@ def run_source(
     ``Limits.every_tick``), ``on_start`` once with the controller before the
     first: an ``echo`` that wants the time or the statement printing
     (``controller.clock.now``, ``controller.vm.current_site()``) gets it there.
+    ``on_simulator`` is given the simulator after that, to hook into its ticks
+    (a debugger's checkpoints, ``Simulator.before_tick``).
     """
     simulated = machine(controller, dialect)
     directives, problems = parse_directives(source, name, controller=simulated, dialect=dialect)
@@ -145,9 +158,8 @@ def run_source(
     if refused is not None:  # what runs before the compiler stops: the configuration, if the program is at fault
         runs_first = config if refused.unit is Unit.PROGRAM else None
         model = mintlang.check_application("", dialect=dialect, controller=base, config=runs_first).model
-    return _simulate(
-        model, simulated, scenario, limits or Limits(), refused, echo=echo, on_tick=on_tick, on_start=on_start
-    )
+    hooks = _Hooks(echo, on_tick, on_start, on_simulator)
+    return _simulate(model, simulated, scenario, limits or Limits(), refused, hooks=hooks)
 
 
 def _simulate(
@@ -157,9 +169,7 @@ def _simulate(
     limits: Limits,
     refused: _CompileError | None,
     *,
-    echo: Callable[[str], None] | None,
-    on_tick: Callable[[Controller, int], None] | None,
-    on_start: Callable[[Controller], None] | None,
+    hooks: _Hooks,
 ) -> RunResult:
     try:
         built = build_controller(
@@ -168,7 +178,7 @@ def _simulate(
             machine=simulated,
             slice_statements=limits.slice_statements,
             host_port=limits.host_port,
-            echo=echo,
+            echo=hooks.echo,
         )
     except NotSimulated as missing:
         return _not_run(str(missing), scenario)
@@ -192,10 +202,13 @@ def _simulate(
     for expectation in scenario.expectations:
         if isinstance(expectation, TerminalExpectation):
             built.terminal.watch(expectation.text)  # found in all the output, not only in what is kept
+    on_tick = hooks.on_tick
     if on_tick is not None:
         simulator.on_tick = lambda tick: on_tick(built, tick)
-    if on_start is not None:
-        on_start(built)
+    if hooks.on_start is not None:
+        hooks.on_start(built)
+    if hooks.on_simulator is not None:
+        hooks.on_simulator(simulator)
     stop = simulator.run()
     if refused is not None and stop.reason is StopReason.END:
         unit = refused.unit.value

@@ -30,6 +30,16 @@ class Interrupt(Exception):
     """Raised by an observer of the run (the terminal's echo, a tick callback) to end it now; the message says why."""
 
 
+class Rewind(Exception):
+    """Raised by an observer of the run (a debugger going back) to take it back to the start of tick ``tick``:
+    ``restore`` puts the state saved there back (``snapshot.py``), and the run goes on from it."""
+
+    def __init__(self, tick: int, restore: Callable[[], None]) -> None:
+        super().__init__(f"back to tick {tick}")
+        self.tick = tick
+        self.restore = restore
+
+
 @dataclass(frozen=True, slots=True)
 class Limits:
     until_ms: int | None = None
@@ -63,6 +73,8 @@ class Simulator:
         self.limits = limits
         self.checkpoints: dict[int, list[Callable[[], None]]] = {}
         self.on_tick: Callable[[int], None] | None = None  # per processed tick (trace, progress)
+        self.before_tick: Callable[[int], None] | None = None  # before each processed tick (a debugger's checkpoints)
+        self.on_end: Callable[[Stop], None] | None = None  # once the run has ended, before ``run`` returns
 
     def at(self, tick: int, callback: Callable[[], None]) -> None:
         """Call ``callback`` after the work of ``tick`` (expectations at a time)."""
@@ -218,56 +230,33 @@ class Simulator:
 
         With ``Limits.settle`` the ticks go on after END while an axis moves (no statement runs; the
         world, the profiler and the servo loop do), up to ``until_ms``; the ``Stop`` is still the END,
-        at the time the program ended."""
+        at the time the program ended. A ``Rewind`` raised by an observer, while the run goes or from
+        ``on_end``, puts an earlier state back and the run goes on from there."""
         c = self.c
-        vm = c.vm
-        limits = self.limits
-        until = limits.until_ms if limits.until_ms is not None else NEVER
-        started = time.perf_counter()
-        processed = 0
-        wall_check = WALL_CHECK_EVERY
         t = 0
         ended = None  # the time the program ended, when the machine settles after it
         try:
             while True:
-                self._step(t)
-                if vm.stopped is not None:
-                    if not self._settling():
-                        break
-                    ended = c.clock.now if ended is None else ended
-                following = self.next_change(t)
-                if following >= NEVER:
-                    vm.stop(StopReason.DEADLOCK, self._deadlock())
+                try:
+                    ended = self._run_from(t)
+                    if self.on_end is not None:
+                        self.on_end(self._result(ended))
                     break
-                if limits.every_tick:
-                    following = t + 1
-                elif following == t + 1 and not vm.blocked and limits.program_alone and not limits.realtime:
-                    following = self._interpreter_alone(t, until)
-                    processed += following - t - 1  # the ticks the program ran alone
-                if following > until:
-                    if t < until:  # the state at the limit, as stepping every tick would leave it
-                        self._step(until)
-                    c.clock.now = until
-                    vm.stop(StopReason.UNTIL, f"reached --until-ms {until}")
-                    break
-                processed += 1
-                if limits.realtime:
-                    if not self._pace(t, following, started):
-                        break
-                elif processed >= wall_check:
-                    wall_check = processed + WALL_CHECK_EVERY
-                    elapsed = time.perf_counter() - started
-                    if limits.max_wall_s is not None and elapsed > limits.max_wall_s:
-                        vm.stop(StopReason.WALL_LIMIT, f"ran {elapsed:.1f} s of wall time")
-                        break
-                t = following
+                except Rewind as back:
+                    back.restore()
+                    t = back.tick
         except KeyboardInterrupt:  # stop where the program is, so the report and trace still come out
-            vm.stop(StopReason.INTERRUPTED, "Ctrl-C")
+            c.vm.stop(StopReason.INTERRUPTED, "Ctrl-C")
         except Interrupt as why:
-            vm.stop(StopReason.INTERRUPTED, str(why))
+            c.vm.stop(StopReason.INTERRUPTED, str(why))
         finally:
             if c.server is not None:
                 c.server.close()
+        return self._result(ended)
+
+    def _result(self, ended: int | None) -> Stop:
+        c = self.c
+        vm = c.vm
         site = vm.stop_site
         return Stop(
             vm.stopped or StopReason.END,
@@ -277,3 +266,50 @@ class Simulator:
             site.text if site else None,
             vm.message,
         )
+
+    def _run_from(self, t: int) -> int | None:
+        """Process ticks from ``t`` on until the run stops; the time the program ended, when the machine settled
+        after it."""
+        c = self.c
+        vm = c.vm
+        limits = self.limits
+        until = limits.until_ms if limits.until_ms is not None else NEVER
+        started = time.perf_counter()
+        processed = 0
+        wall_check = WALL_CHECK_EVERY
+        ended = None
+        while True:
+            if self.before_tick is not None:
+                self.before_tick(t)
+            self._step(t)
+            if vm.stopped is not None:
+                if not self._settling():
+                    break
+                ended = c.clock.now if ended is None else ended
+            following = self.next_change(t)
+            if following >= NEVER:
+                vm.stop(StopReason.DEADLOCK, self._deadlock())
+                break
+            if limits.every_tick:
+                following = t + 1
+            elif following == t + 1 and not vm.blocked and limits.program_alone and not limits.realtime:
+                following = self._interpreter_alone(t, until)
+                processed += following - t - 1  # the ticks the program ran alone
+            if following > until:
+                if t < until:  # the state at the limit, as stepping every tick would leave it
+                    self._step(until)
+                c.clock.now = until
+                vm.stop(StopReason.UNTIL, f"reached --until-ms {until}")
+                break
+            processed += 1
+            if limits.realtime:
+                if not self._pace(t, following, started):
+                    break
+            elif processed >= wall_check:
+                wall_check = processed + WALL_CHECK_EVERY
+                elapsed = time.perf_counter() - started
+                if limits.max_wall_s is not None and elapsed > limits.max_wall_s:
+                    vm.stop(StopReason.WALL_LIMIT, f"ran {elapsed:.1f} s of wall time")
+                    break
+            t = following
+        return ended

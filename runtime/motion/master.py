@@ -6,14 +6,14 @@ in which axes are profiled does not matter. Only changes of the master position
 move the slave, so position offsets (``POS`` written on an idle master) cancel
 out unless they change while the slave follows.
 
-The settings belong to the slave axis; they live beside it in a weak mapping so
-that the three master-slave modules share them without widening ``Axis``.
+The settings belong to the slave axis; they live in ``Motion.master_settings``
+by axis number, so that the three master-slave modules share them without
+widening ``Axis``, and a snapshot of the controller holds them.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from weakref import WeakKeyDictionary
 
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import KeywordTable, per_channel
@@ -43,13 +43,11 @@ class MasterSettings:
         return slave if self.source == MS_SPEED else 0
 
 
-_SETTINGS: WeakKeyDictionary[Axis, MasterSettings] = WeakKeyDictionary()
-
-
-def settings(axis: Axis) -> MasterSettings:
-    found = _SETTINGS.get(axis)
+def settings(motion: Motion, axis: Axis) -> MasterSettings:
+    chosen = motion.master_settings
+    found = chosen.get(axis.number)
     if found is None:
-        found = _SETTINGS[axis] = MasterSettings()
+        found = chosen[axis.number] = MasterSettings()
     return found
 
 
@@ -130,7 +128,7 @@ class SetPoints:
 
 def link(motion: Motion, slave: Axis) -> Link:
     """The master of ``slave`` as its settings say; error 70 if it would follow itself."""
-    chosen = settings(slave)
+    chosen = settings(motion, slave)
     if chosen.source == MS_AUXENCODER:
         raise NotSimulated("MASTERSOURCE", "_msAUXENCODER: the auxiliary encoder has no simulated input")
     channel = chosen.channel_of(slave.number)
@@ -142,12 +140,12 @@ def link(motion: Motion, slave: Axis) -> Link:
 
 def master_distance(motion: Motion, slave: Axis) -> float:
     """MASTERDISTANCE of ``slave`` in master counts (scaled by the master channel, FG-2)."""
-    chosen = settings(slave)
+    chosen = settings(motion, slave)
     return chosen.distance * motion.axis(chosen.channel_of(slave.number)).scale
 
 
 def register(table: KeywordTable, motion: Motion) -> None:
-    motion.on_default.append(lambda axis: _SETTINGS.pop(axis, None))
+    motion.on_default.append(lambda axis: motion.master_settings.pop(axis.number, None))
     # the controller's own ranges come first: MintDrive takes only sources 2 and 3 and distances 1 to 65535
     sources = table_bounds("MASTERSOURCE", table.controller)
     distances = table_bounds("MASTERDISTANCE", table.controller)
@@ -157,7 +155,7 @@ def register(table: KeywordTable, motion: Motion) -> None:
         check_range("MASTERSOURCE", value, sources, axis.number)
         if value != int(value) or not MS_POS <= value <= MS_DEMAND:
             raise MintError(OUT_OF_RANGE, axis.number, f"MASTERSOURCE = {value:g}")
-        chosen = settings(axis)
+        chosen = settings(motion, axis)
         chosen.source = int(value)
         chosen.channel = None  # writing the source resets the channel (FG-1)
 
@@ -166,24 +164,24 @@ def register(table: KeywordTable, motion: Motion) -> None:
         if value != int(value):
             raise MintError(OUT_OF_RANGE, axis.number, f"MASTERCHANNEL = {value:g}")
         motion.axis(int(value))
-        settings(axis).channel = int(value)
+        settings(motion, axis).channel = int(value)
 
     def write_distance(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)
         check_range("MASTERDISTANCE", value, distances, axis.number)
         if abs(value) > MAX_DISTANCE:
             raise MintError(OUT_OF_RANGE, axis.number, f"MASTERDISTANCE = {value:g}")
-        settings(axis).distance = value
+        settings(motion, axis).distance = value
 
     def source(channel: int | None) -> float:
-        return float(settings(motion.axis(channel)).source)
+        return float(settings(motion, motion.axis(channel)).source)
 
     def master_channel(channel: int | None) -> float:
         axis = motion.axis(channel)
-        return float(settings(axis).channel_of(axis.number))
+        return float(settings(motion, axis).channel_of(axis.number))
 
     def distance(channel: int | None) -> float:
-        return settings(motion.axis(channel)).distance
+        return settings(motion, motion.axis(channel)).distance
 
     table.register("MASTERSOURCE", read=source, write=per_channel(write_source))
     table.register("MASTERCHANNEL", read=master_channel, write=per_channel(write_channel))

@@ -104,12 +104,32 @@ def character(text: str) -> str:
     return f"**{text}** = `{code}` — character constant{note}"
 
 
+# Words the manual reserves without a keyword entry or a value, which the lexer reads as constants.
+_RESERVED = {
+    "NULL": (
+        "reserved word — stands where CAMTABLE takes an array and none is given: `CAMTABLE(0, myCam, NULL)` "
+        "sets a cam with no master distance table, every segment then taking MASTERDISTANCE"
+    ),
+}
+
+
+def _number(value: float) -> int | float:
+    return int(value) if value == int(value) else value
+
+
 def constant(name: str, dialect: Dialect = Dialect.V4) -> str | None:
+    if name.upper() in _RESERVED:
+        return f"**{name.upper()}** — {_RESERVED[name.upper()]}"
+    if dialect is Dialect.V3:
+        old = database().v3_constants.get(name.upper())
+        if old is None:
+            return None
+        text = f"**{old.name}** = `{_number(old.value)}` — Mint v3 predefined constant"
+        return f"{text}; Mint v4: {old.v4_name}" if old.v4_name else f"{text}; Mint v4 has no such constant"
     record = database().constants_of(dialect).get(name.upper())
     if record is None:
         return None
-    value = int(record.value) if record.value == int(record.value) else record.value
-    text = f"**{record.name}** = `{value}` — predefined constant"
+    text = f"**{record.name}** = `{_number(record.value)}` — predefined constant"
     return f"{text} of {record.keyword}" if record.keyword else text
 
 

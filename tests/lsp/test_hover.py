@@ -79,6 +79,30 @@ async def test_constant_shows_its_value(client, tmp_path):
     assert "= `1`" in await hover_at(client, uri, text, "_TRUE", 2)
 
 
+async def test_null_says_it_stands_for_no_master_distance_table(client, tmp_path):
+    # the guide's cam example (000:3912-3913): NULL where CAMTABLE takes its master distance table
+    text = "DIM slave(3) = 2, 10, 20\nMASTERDISTANCE = 20\nCAMTABLE(0, slave, NULL)\n"
+    uri = uri_of(tmp_path / "cam.mnt")
+    await open_document(client, uri, text)
+    null = await hover_at(client, uri, text, "NULL", 1)
+    assert null.startswith("**NULL** — reserved word")
+    assert "CAMTABLE" in null and "no master distance table" in null and "MASTERDISTANCE" in null
+
+
+async def test_a_v3_constant_shows_its_v3_value_and_its_v4_successor(client, tmp_path):
+    # the v3 guide's table of constants (001:1325, 1327): _limit is 3 for ERROR, _servo 1 for CONFIG
+    client.workspace_did_change_configuration(types.DidChangeConfigurationParams(settings={"mint": {"dialect": "v3"}}))
+    text = "CONFIG = _servo\nIF ERROR = _limit THEN DL\n"
+    uri = uri_of(tmp_path / "old_constants.mnt")
+    await open_document(client, uri, text)
+    assert await hover_at(client, uri, text, "_servo", 1) == (
+        "**_servo** = `1` — Mint v3 predefined constant; Mint v4: _cfSERVO"
+    )
+    assert await hover_at(client, uri, text, "_limit", 1) == (
+        "**_limit** = `3` — Mint v3 predefined constant; Mint v4 has no such constant"
+    )
+
+
 async def test_an_abbreviation_two_keywords_share_names_the_controllers_one(client, tmp_path):
     text = "DIM a\na = HP.0\n"
     uri = uri_of(tmp_path / "home.mnt")

@@ -14,7 +14,7 @@ from mintlang.runtime.errors import MintError
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.keywords import Channels, KeywordTable, per_channel
 from mintlang.runtime.motion.axis import Axis
-from mintlang.runtime.ranges import ranged
+from mintlang.runtime.ranges import check_range, ranged, table_bounds
 from mintlang.runtime.terminal import Terminal
 
 TIME_LIMIT = 16_777_216  # TIME wraps after 16777215 (T-7 RC)
@@ -52,6 +52,7 @@ class System:
         self.fast_encoders: list[float] = [0.0] * len(axes)
         self.auxiliary_encoders: list[float] = [0.0] * auxiliary_encoders  # AUXENCODER, counts
         self.fast_auxiliary: list[float] = [0.0] * auxiliary_encoders  # FASTAUXENCODER
+        self.auxiliary_bounds = table_bounds("AUXENCODER", table.controller)  # AUXENCODERSCALE is 1: counts
         self.fast_armed = True
 
     def time(self) -> int:
@@ -144,7 +145,10 @@ class System:
         return number
 
     def _write_auxiliary(self, channel: int | None, value: float) -> None:
-        self.auxiliary_encoders[self._auxiliary(channel)] = float(int(value))
+        """AUXENCODER = v on a channel the controller has, with v in the table's range (000:6714-6715)."""
+        number = self._auxiliary(channel)
+        check_range("AUXENCODER", value, self.auxiliary_bounds, number)
+        self.auxiliary_encoders[number] = float(int(value))
 
     def _fastpos(self, channel: int | None) -> float:
         number = self._axis(channel)

@@ -22,7 +22,12 @@ CIRCLE_AXES = 2
 
 
 def circle(motion: Motion, *, relative: bool) -> Callable[[Channels | None, Values], bool]:
-    """The writer of CIRCLEA (centre absolute) or CIRCLER (centre relative to the start point)."""
+    """The writer of CIRCLEA (centre absolute) or CIRCLER (centre relative to the start point).
+
+    Each value is in the keyword's range (000:8163-8165, 8220-8222): the centre's coordinates after their
+    axes' SCALE, as for the other moves, and the angle, in degrees, as written.
+    """
+    keyword = "CIRCLER" if relative else "CIRCLEA"
 
     def write(channels: Channels | None, values: Values) -> bool:
         axes = motion.addressed(channels)
@@ -33,6 +38,9 @@ def circle(motion: Motion, *, relative: bool) -> Callable[[Channels | None, Valu
             raise MintError(TOO_MANY_VALUES, detail="a circle takes a centre and an angle")
         if len(values) < 3 or None in values:
             raise MintError(MISSING_PARAMETER, detail="a circle needs both centre coordinates and an angle")
+        c0, c1, degrees = (value for value in values if value is not None)
+        motion.check_values(keyword, [(axes[0], c0), (axes[1], c1)])
+        motion.check_values(keyword, [(axes[0], degrees)], scaled=False)
         for axis in axes:
             axis.require_ready()
             if (axis.move is not None and axis.move.mode not in PATH_MODES) or axis.pending_mode:
@@ -42,7 +50,6 @@ def circle(motion: Motion, *, relative: bool) -> Callable[[Channels | None, Valu
                 if axis.move is not None:
                     motion.clock.changes_at(axis.move.end)
             return True
-        c0, c1, degrees = (value for value in values if value is not None)
         start = (axes[0].reference(), axes[1].reference())
         if relative:
             centre = (start[0] + c0 * axes[0].scale, start[1] + c1 * axes[1].scale)

@@ -5,6 +5,8 @@ from __future__ import annotations
 import itertools
 import math
 
+import pytest
+
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.run import run_source
 from mintlang.runtime.simulation import Limits
@@ -137,3 +139,27 @@ def test_a_circle_takes_a_centre_and_an_angle() -> None:
 def test_a_circle_cannot_start_on_a_jogging_axis() -> None:
     result = simulate("JOG.1 = 100\nCIRCLER[0,1] = 0, 1000, 90\n")
     assert (result.stop.reason, result.err) == (StopReason.ERROR, 10)
+
+
+@pytest.mark.parametrize(
+    "values",
+    [
+        pytest.param("8388608, 0, 90", id="centre above the range"),
+        pytest.param("0, -8388609, 90", id="second coordinate below it"),
+        pytest.param("100, 0, 8388608", id="angle above it"),
+    ],
+)
+@pytest.mark.parametrize("keyword", ["CIRCLEA", "CIRCLER"])
+def test_each_value_is_in_the_tables_range(keyword: str, values: str) -> None:
+    # 000:8163-8165, 8220-8222: every value -8388608 to 8388607
+    result = simulate(f"{keyword}[0,1] = {values}\n")
+    assert (result.err, result.erl) == (3, 1)
+    assert "it takes -8388608 to 8388607" in result.stop.message
+
+
+def test_the_centre_is_in_range_after_scale_and_the_angle_as_written() -> None:
+    # 000:5648-5649: a scaled value's range is for the value times SCALE; the angle is in degrees, not scaled
+    result = simulate("SCALE[0,1] = 1000, 1000\nCIRCLER[0,1] = 9000, 0, 90\n")
+    assert (result.err, result.erl) == (3, 2) and "9000000 at SCALE 1000" in result.stop.message
+    accepted = simulate('SCALE[0,1] = 1000, 1000\nCIRCLER[0,1] = 1, 0, 9000\nPRINT POSTARGET.0, " ", POSTARGET.1\n')
+    assert accepted.terminal == "0 0\n"  # 25 whole turns end where they began

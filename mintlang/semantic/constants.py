@@ -49,7 +49,21 @@ def _binary(operator: str, a: float, b: float) -> float | None:
             return a / b if b else None
         case "MOD":
             return math.fmod(a, b) if b else None
+        case "AND" | "OR" | "XOR":
+            return _bitwise(operator, a, b)
     return None
+
+
+_WORD = 1 << 24
+"""Bitwise operators take their operands as 24-bit values (000:1338-1340)."""
+
+
+def _bitwise(operator: str, a: float, b: float) -> float | None:
+    """``a AND b``, ``a | b`` ... of whole numbers in one word; how a fraction or a sign is taken is not documented."""
+    if not all(value == int(value) and 0 <= value < _WORD for value in (a, b)):
+        return None
+    x, y = int(a), int(b)
+    return float({"AND": x & y, "OR": x | y, "XOR": x ^ y}[operator])
 
 
 def constant_integer(expression: n.Expression | None, dialect: Dialect = Dialect.V4) -> int | None:

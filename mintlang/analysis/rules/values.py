@@ -38,7 +38,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             # Whole-number ranges are not enforced: the manual prints "0 ≤ x ≤ 10000" for KDERIV
             # and then writes KDERIV = 1.5 in its example.
             if not (_scaled_can_hold(limits, number) if attributes.scaled else limits.holds(number)):
-                detail = f"{number:g} is outside the range of {use.keyword.keyword} ({limits.text})"
+                detail = f"{number:.15g} is outside the range of {use.keyword.keyword} ({limits.text})"
                 if attributes.scaled:
                     detail += " whatever the scale factor"
                 yield Finding(use.unit, mint_error(3, value.span, detail))

@@ -1,0 +1,29 @@
+"""Error 3 names the value as written, whole, at the value's place.
+
+TIME's range is 0 to 16777215 on NextMove and 0 to 65535 on MintDrive (000:16746-16747); one more
+is MML error 3, data out of range (000:18518). The message printed 16777216 as 1.67772e+07.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import mintlang
+from tests.analysis.placed import placed_codes
+
+
+@pytest.mark.parametrize(
+    ("controller", "value", "shown"),
+    [
+        ("nextmove-pci", "16777216", "16777216 is outside the range of TIME (0 ≤ x ≤ 16777215)"),
+        ("mintdrive", "65536", "65536 is outside the range of TIME (0 ≤ x ≤ 65535)"),
+        ("nextmove-pci", "16777215.5", "16777215.5 is outside the range of TIME (0 ≤ x ≤ 16777215)"),
+    ],
+)
+def test_the_message_shows_the_value_in_full(controller: str, value: str, shown: str) -> None:
+    (diagnostic,) = mintlang.check(f"TIME = {value}\n", controller=controller)
+    assert diagnostic.code == "E0003" and shown in diagnostic.message
+
+
+def test_the_error_points_at_the_value() -> None:
+    assert placed_codes("TIME = 0\nTIME = 16777216\n") == [("E0003", 2, 8)]

@@ -68,6 +68,8 @@ SNIPPETS = {
     "Startup … End Startup": "Startup\n\t$0\nEnd Startup",
 }
 
+TOP_LEVEL_SNIPPETS = frozenset({"Event … End Event", "Startup … End Startup"})  # in no other block (MT-13)
+
 REPLACED = frozenset({"ENDL", "ENDIF"})  # v4's closers MintMT writes as End Loop and End If
 COMPLETED = (
     TokenKind.ENDL,

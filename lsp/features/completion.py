@@ -5,7 +5,9 @@ The cursor's line is lexed as typed; user names come from the last analysis.
 After GOSUB/GOTO: labels; after ``#`` at the start of a line: event handlers
 of the controller; after ``_``: predefined constants; at the start of a
 statement: commands, writable parameters, variables, macros and block
-snippets (ELSE, ENDL, EXIT ... only inside their blocks); inside an expression: readable keywords, functions, variables,
+snippets (ELSE, ENDL, EXIT ... only inside their blocks; MintMT's End Loop,
+End If, End Event, End Startup too, and its Event and Startup only outside
+every block); inside an expression: readable keywords, functions, variables,
 arrays and macros; after a complete operand: the operators and the words that
 continue the statement being written (THEN in an IF, TO in a FOR ...); after a keyword's dot (``SPEED.``, ``IN.``):
 the axes or channels it addresses on the controller and the macros that name
@@ -63,6 +65,15 @@ _INSIDE = {
     "UNTIL": frozenset({BlockKind.REPEAT}),
     "EXIT": _LOOPS,
 }
+# MintMT's block words at the start of a statement: each closer inside its block (End If in an If block, 004:102-125),
+# and Event and Startup outside every block, as no other block may hold them (MT-13).
+_MINTMT_INSIDE = {
+    TokenKind.ENDL: frozenset({BlockKind.LOOP}),
+    TokenKind.ENDIF: frozenset({BlockKind.IF}),
+    TokenKind.ENDEVENT: frozenset({BlockKind.EVENT}),
+    TokenKind.ENDSTARTUP: frozenset({BlockKind.STARTUP}),
+}
+_OUTSIDE_EVERY_BLOCK = frozenset({TokenKind.EVENT, TokenKind.STARTUP})
 _UNARY = frozenset({"NOT", "~"})  # the operators that can start an operand
 _CONTINUATIONS = frozenset({"THEN", "DO", "TO", "STEP", "USING"})  # statement words that follow an operand
 _SINGLE_QUOTES = "'\u2018\u2019"
@@ -147,7 +158,7 @@ def _keywords(
         return
     controller, mintmt = snapshot.settings.controller, snapshot.settings.dialect is Dialect.MINTMT
     if mintmt and statement:
-        yield from _mintmt_block_words()
+        yield from _mintmt_block_words(blocks)
     for word in database().keywords_of(snapshot.settings.dialect).values():
         if (
             word.kind in _HIDDEN
@@ -214,8 +225,19 @@ def _constants(dialect: Dialect) -> Iterator[types.CompletionItem]:
         )
 
 
-def _mintmt_block_words() -> Iterator[types.CompletionItem]:
+def _mintmt_block_word_fits(kind: TokenKind, blocks: frozenset[BlockKind] | None) -> bool:
+    """Whether MintMT's block word of ``kind`` can start a statement inside ``blocks`` (None: not known)."""
+    if blocks is None:
+        return True
+    if kind in _OUTSIDE_EVERY_BLOCK:
+        return not blocks
+    return kind not in _MINTMT_INSIDE or bool(_MINTMT_INSIDE[kind] & blocks)
+
+
+def _mintmt_block_words(blocks: frozenset[BlockKind] | None) -> Iterator[types.CompletionItem]:
     for kind in mintmt_words.COMPLETED:
+        if not _mintmt_block_word_fits(kind, blocks):
+            continue
         word = mintmt_words.WORDS[kind]
         yield types.CompletionItem(
             label=word.spelling,
@@ -225,10 +247,14 @@ def _mintmt_block_words() -> Iterator[types.CompletionItem]:
         )
 
 
-def _snippets(dialect: Dialect) -> Iterator[types.CompletionItem]:
+def _snippets(dialect: Dialect, blocks: frozenset[BlockKind] | None) -> Iterator[types.CompletionItem]:
     snippets = SNIPPETS
     if dialect is Dialect.MINTMT:  # MintMT's own spellings of the blocks it writes otherwise
-        snippets = {label: body for label, body in SNIPPETS.items() if label not in _V4_SPELT} | mintmt_words.SNIPPETS
+        snippets = {label: body for label, body in SNIPPETS.items() if label not in _V4_SPELT} | {
+            label: body
+            for label, body in mintmt_words.SNIPPETS.items()
+            if not blocks or label not in mintmt_words.TOP_LEVEL_SNIPPETS
+        }
     for label, body in snippets.items():
         yield types.CompletionItem(
             label=label,
@@ -362,7 +388,7 @@ def complete(
     if not statement and previous is not None and previous.kind in _OPERAND_ENDS:
         return list(_continuations(_statement_words(snapshot, before)))
     items = [*_keywords(snapshot, statement, blocks), *_symbols(snapshot)]
-    return items + list(_snippets(snapshot.settings.dialect)) if statement else items
+    return items + list(_snippets(snapshot.settings.dialect, blocks)) if statement else items
 
 
 def register(server: MintServer) -> None:

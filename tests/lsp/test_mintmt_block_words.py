@@ -82,13 +82,56 @@ async def test_completion_offers_mintmt_block_words_and_snippets_not_v4_closers(
     text = PROGRAM.replace("    GO(0)\n", "    GO(0)\n    \n")
     await open_document(client, uri, text)
     items = await _labels(client, uri, text, "GO(0)\n    \n", 10)
-    mintmt = {"End Loop", "End If", "Event", "End Event", "Startup", "End Startup"}
-    snippets = {"Loop … End Loop", "If … Then … End If", "Event … End Event", "Startup … End Startup"}
-    assert mintmt | snippets | {"WHILE", "EXIT", "WHILE … ENDW", "FOR … NEXT"} <= set(items)
+    snippets = {"Loop … End Loop", "If … Then … End If"}
+    assert {"End Loop", "End If"} | snippets | {"WHILE", "EXIT", "WHILE … ENDW", "FOR … NEXT"} <= set(items)
     assert "ENDW" not in items  # no While is open here
     assert not {"ENDL", "ENDIF", "LOOP … ENDL", "IF … DO … ENDIF"} & set(items)
     assert items["Loop … End Loop"].insert_text == "Loop\n\t$0\nEnd Loop"
-    assert items["Event … End Event"].insert_text_format == types.InsertTextFormat.Snippet
+
+
+# Where each of MintMT's block words may start a statement: a closer inside its own block (004:102-125 closes
+# the If with End If, the Loop with End Loop, 002:82-84 the Event with End Event, 004:129-133 Startup with End
+# Startup), Event and Startup in no other block (MT-13).
+BLOCK_WORDS = {"End Loop", "End If", "Event", "End Event", "Startup", "End Startup"}
+NESTED = (
+    "DIM a\n"
+    "Loop\n"
+    "  \n"  # in the Loop
+    "  If a = 1 Then\n"
+    "    \n"  # in the If, in the Loop
+    "  End If\n"
+    "End Loop\n"
+    "\n"  # outside every block
+    "Event Comms1\n"
+    "  \n"  # in the Event
+    "End Event\n"
+    "Startup\n"
+    "  \n"  # in the Startup block
+    "End Startup\n"
+)
+
+
+@pytest.mark.parametrize(
+    ("line", "offered"),
+    [
+        (2, {"End Loop"}),
+        (4, {"End Loop", "End If"}),
+        (7, {"Event", "Startup", "Event … End Event", "Startup … End Startup"}),
+        (9, {"End Event"}),
+        (12, {"End Startup"}),
+    ],
+)
+async def test_mintmt_block_words_are_offered_only_where_they_can_stand(
+    client: LanguageClient, line: int, offered: set[str]
+) -> None:
+    uri = "file:///work/nested.mnt"
+    await open_document(client, uri, NESTED)
+    cursor = types.Position(line=line, character=len(NESTED.splitlines()[line]))
+    found = await client.text_document_completion_async(
+        types.CompletionParams(text_document=document(uri), position=cursor)
+    )
+    labels = {item.label for item in found.items}
+    assert labels & (BLOCK_WORDS | {"Event … End Event", "Startup … End Startup"}) == offered
 
 
 async def test_v4_files_keep_v4_closers(client: LanguageClient) -> None:

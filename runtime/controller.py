@@ -120,6 +120,7 @@ def build_controller(
     global_error_output.install(table, motion, io)
     monitors = mintmt_machine.install(table, motion, io, events) if mintmt else []
     motion.input_active = io.is_active
+    motion.auxiliary_encoder = system.auxiliary_encoder
     motion.index_pulses = {pulse.axis: pulse for pulse in scenario.index_pulses}
     layer = (
         v3_machine.install(

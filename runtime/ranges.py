@@ -81,7 +81,7 @@ def accepted(limits: Bounds) -> str:
         return f"{', '.join(others)} or {last}" if others else last
     low, high = limits.minimum, limits.maximum
     if low is not None and high is not None and not (limits.exclusive_minimum or limits.exclusive_maximum):
-        return f"{shown(low)} to {shown(high)}"
+        return shown(low) if low == high else f"{shown(low)} to {shown(high)}"
     bounds = [
         f"{'more than' if limits.exclusive_minimum else 'at least'} {shown(low)}" if low is not None else "",
         f"{'less than' if limits.exclusive_maximum else 'at most'} {shown(high)}" if high is not None else "",

@@ -82,11 +82,7 @@ class System:
         table.register("COMMS", read=lambda channel: self.comms.read(channel or 0), write=self._write_comms)
         table.register("FASTPOS", read=self._fastpos)
         table.register("FASTENCODER", read=lambda channel: self.fast_encoders[self._axis(channel)])
-        table.register(
-            "AUXENCODER",
-            read=lambda channel: self.auxiliary_encoders[self._auxiliary(channel)],
-            write=per_channel(self._write_auxiliary),
-        )
+        table.register("AUXENCODER", read=self.auxiliary_encoder, write=per_channel(self._write_auxiliary))
         table.register("FASTAUXENCODER", read=lambda channel: self.fast_auxiliary[self._auxiliary(channel)])
 
     def _inkey(self, _: int | None) -> float:
@@ -143,6 +139,10 @@ class System:
                 INVALID_CHANNEL, number, f"the controller has {len(self.auxiliary_encoders)} auxiliary encoders"
             )
         return number
+
+    def auxiliary_encoder(self, channel: int | None) -> float:
+        """AUXENCODER.channel in counts; error 4 on a channel the controller lacks."""
+        return self.auxiliary_encoders[self._auxiliary(channel)]
 
     def _write_auxiliary(self, channel: int | None, value: float) -> None:
         """AUXENCODER = v on a channel the controller has, with v in the table's range (000:6714-6715)."""

@@ -66,6 +66,7 @@ class Motion:
         self.clock = clock
         self.on_error: Callable[[Axis, int], None] = lambda axis, bit: None  # latch + default action + #ONERROR
         self.input_active: Callable[[int], bool] = lambda channel: False  # a digital input's state this tick
+        self.auxiliary_encoder: Callable[[int], float] = lambda channel: 0.0  # AUXENCODER.channel, in counts
         self.index_pulses: dict[int, IndexPulse] = {}  # Z pulses of the scripted encoders, by axis
         self.on_default: list[Callable[[Axis], None]] = []  # each motion module's own settings back to power-up
         self.master_settings: dict[int, MasterSettings] = {}  # MASTERSOURCE and the rest, by slave axis (master.py)

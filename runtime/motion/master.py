@@ -13,9 +13,12 @@ widening ``Axis``, and a snapshot of the controller holds them.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
-from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Controller
+from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.motion.commands import Motion
@@ -27,6 +30,7 @@ INVALID_MASTER_CHANNEL = 70
 CONFIG_OFF = 0
 DEFAULT_MASTER_DISTANCE = 1000.0  # FG-2 RC: the DEFAULT table's value
 MAX_DISTANCE = 8_388_607.0
+AUXILIARY_SCALE = 1.0  # counts per user unit of an auxiliary encoder: AUXENCODERSCALE is not simulated
 
 
 @dataclass(slots=True)
@@ -47,8 +51,15 @@ def settings(motion: Motion, axis: Axis) -> MasterSettings:
     chosen = motion.master_settings
     found = chosen.get(axis.number)
     if found is None:
-        found = chosen[axis.number] = MasterSettings()
+        found = chosen[axis.number] = MasterSettings(source=power_up_source(motion.profile.controller))
     return found
+
+
+def power_up_source(controller: Controller) -> int:
+    """MASTERSOURCE at power-up and after DEFAULT, from its attributes table: _msPOS on NextMove, _msAUXENCODER
+    on MintDrive and ServoNode 51 (000:13925-13929)."""
+    row = database().keywords["MASTERSOURCE"].attributes_for(controller)
+    return int(row.default) if row is not None and row.default is not None else MS_POS
 
 
 class Master:
@@ -75,11 +86,25 @@ class Master:
         return self.position
 
 
+class AuxiliaryMaster:
+    """An auxiliary encoder as the master (_msAUXENCODER): it reads as the program last set it, since nothing
+    turns it in the simulation, so a slave moves only when AUXENCODER is written while it follows."""
+
+    __slots__ = ("channel", "read")
+
+    def __init__(self, read: Callable[[int], float], channel: int) -> None:
+        self.read = read
+        self.channel = channel
+
+    def sample(self) -> float:
+        return self.read(self.channel)
+
+
 @dataclass(frozen=True, slots=True)
 class Link:
     """A slave's view of its master at load time: the sampler, and the unit conversions."""
 
-    master: Master
+    master: Master | AuxiliaryMaster
     slave_per_master: float  # slave counts per master count at ratio 1 (user units on both sides, FG-1)
     master_scale: float  # master counts per master user unit (MASTERDISTANCE is in master units, FG-2)
 
@@ -129,9 +154,11 @@ class SetPoints:
 def link(motion: Motion, slave: Axis) -> Link:
     """The master of ``slave`` as its settings say; error 70 if it would follow itself."""
     chosen = settings(motion, slave)
-    if chosen.source == MS_AUXENCODER:
-        raise NotSimulated("MASTERSOURCE", "_msAUXENCODER: the auxiliary encoder has no simulated input")
     channel = chosen.channel_of(slave.number)
+    if chosen.source == MS_AUXENCODER:
+        auxiliary = AuxiliaryMaster(motion.auxiliary_encoder, channel)
+        auxiliary.sample()  # an encoder the controller lacks is error 4 when the move loads
+        return Link(auxiliary, slave.scale / AUXILIARY_SCALE, AUXILIARY_SCALE)
     master = motion.axis(channel)
     if master is slave and chosen.source != MS_SPEED:
         raise MintError(INVALID_MASTER_CHANNEL, slave.number, "a slave cannot follow itself")
@@ -141,6 +168,8 @@ def link(motion: Motion, slave: Axis) -> Link:
 def master_distance(motion: Motion, slave: Axis) -> float:
     """MASTERDISTANCE of ``slave`` in master counts (scaled by the master channel, FG-2)."""
     chosen = settings(motion, slave)
+    if chosen.source == MS_AUXENCODER:
+        return chosen.distance * AUXILIARY_SCALE
     return chosen.distance * motion.axis(chosen.channel_of(slave.number)).scale
 
 
@@ -148,6 +177,7 @@ def register(table: KeywordTable, motion: Motion) -> None:
     motion.on_default.append(lambda axis: motion.master_settings.pop(axis.number, None))
     # the controller's own ranges come first: MintDrive takes only sources 2 and 3 and distances 1 to 65535
     sources = table_bounds("MASTERSOURCE", table.controller)
+    channels = table_bounds("MASTERCHANNEL", table.controller)  # MintDrive: 0 alone (000:13799-13803)
     distances = table_bounds("MASTERDISTANCE", table.controller)
 
     def write_source(channel: int | None, value: float) -> None:
@@ -161,6 +191,7 @@ def register(table: KeywordTable, motion: Motion) -> None:
 
     def write_channel(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)
+        check_range("MASTERCHANNEL", value, channels, axis.number)
         if value != int(value):
             raise MintError(OUT_OF_RANGE, axis.number, f"MASTERCHANNEL = {value:g}")
         motion.axis(int(value))

@@ -138,9 +138,13 @@ class V3Motion:
         self._follow_accel(channel)
 
     def _acceltime(self, channel: int | None, value: float) -> None:
-        """ACCELTIME writes ACCEL, so DECEL follows as for ACCEL (001:5728)."""
+        """ACCELTIME writes ACCEL, so DECEL follows as for ACCEL (001:5728), at rates above the range ACCEL and
+        DECEL take if need be (001:5680, 5726)."""
         self.v4.write_one("ACCELTIME")(channel, value)
-        self._follow_accel(channel)
+        axis = self.motion.axis(channel)
+        if not self.axiscon[axis.number] & DECEL_ENABLED:
+            self.v4.write_one("DECELTIME")(channel, value)
+            axis.parameters["ERRORDECEL"] = axis.parameters["DECEL"]  # the stop input's rate (001:7219)
 
     def _follow_accel(self, channel: int | None) -> None:
         axis = self.motion.axis(channel)

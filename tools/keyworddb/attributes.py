@@ -194,11 +194,22 @@ def parse_range(text: str) -> ValueRange:
     if match := _SPAN.match(compact):
         bounds = _number(match["min"]), _number(match["max"])
     elif _CHOICES.match(compact):
-        values = [_number(v) for v in re.findall(_NUMBER, compact)]
-        bounds = min(values), max(values)
+        values = sorted({_number(v) for v in re.findall(_NUMBER, compact)})
+        if _has_gap(values):  # ENCODERPRESCALE "1, 2, 4, 8, ...": only the values listed
+            return ValueRange(compact, None, None, fractional, allowed=tuple(values))
+        bounds = values[0], values[-1]
     if bounds is None:
         return ValueRange(compact, None, None, fractional)
     return ValueRange(compact, bounds[0], bounds[1], fractional)
+
+
+def _has_gap(values: list[float]) -> bool:
+    """Whether sorted whole ``values`` leave out a whole number between their ends.
+
+    A list without a gap ("0 or 1", "2, 3") reads as its span, as an interval does, so a fraction in
+    it is not rejected: whole-number ranges are not enforced (KDERIV's example writes 1.5).
+    """
+    return all(v == int(v) for v in values) and len(values) < values[-1] - values[0] + 1
 
 
 def _widened_for_expansion(row: Attributes, maximum: float) -> tuple[Attributes, ...]:

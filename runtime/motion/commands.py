@@ -364,8 +364,10 @@ class Motion:
             table.register(name, read=self._parameter_reader(name), write=write)
         for name, inputs in _SWITCHES.items():
             table.register(name, read=self._switch(inputs))
-        for name, rate in (("ACCELTIME", "ACCEL"), ("DECELTIME", "DECEL")):
-            table.register(name, write=per_channel(ranged(name, self.profile.controller, self._ramp_time(rate))))
+        acceltime = ranged("ACCELTIME", self.profile.controller, self._ramp_time("ACCEL"))
+        deceltime = ranged("DECELTIME", self.profile.controller, self._ramp_time("DECEL"))
+        table.register("ACCELTIME", write=per_channel(acceltime))  # write only (000:18915-18919)
+        table.register("DECELTIME", read=self._decel_time, write=per_channel(deceltime))
         enable = ranged("DRIVEENABLE", self.profile.controller, self._enable)
         table.register("DRIVEENABLE", read=lambda ch: float(self.axis(ch).enabled), write=per_channel(enable))
         table.register("POS", read=self._pos, write=per_channel(self._write_pos))
@@ -409,6 +411,12 @@ class Motion:
             self.rates_changed(axis)
 
         return write
+
+    def _decel_time(self, channel: int | None) -> float:
+        """DECELTIME read (000:8944): the ms DECEL takes to bring the current SPEED to rest, so a DECEL write
+        changes it (000:8920)."""
+        p = self.axis(channel).parameters
+        return 1000.0 * p["SPEED"] / p["DECEL"]
 
     def _dac(self, channel: int | None, value: float) -> None:
         """DAC = v drives the output directly, only on an axis configured off (SL-11)."""

@@ -22,6 +22,7 @@ from mintlang.analysis.rules import (
     calls,
     collisions,
     declarations,
+    empty_values,
     events,
     flow,
     functions,
@@ -72,6 +73,7 @@ RULES: tuple[Rule, ...] = (
     Rule("keyword-usage", each_line=keyword_usage.each_line, dialects=_V4_ATTRIBUTES),
     Rule("addressing", each_line=addressing.each_line, dialects=_V4_ATTRIBUTES),
     Rule("values", each_line=values.each_line, dialects=_V4_ATTRIBUTES),
+    Rule("empty-values", each_line=empty_values.each_line),
     Rule("print-format", each_line=print_format.each_line, dialects=frozenset({Dialect.V4})),
     Rule("functions", each_line=functions.each_line, dialects=frozenset({Dialect.V4})),  # MintMT's MOVER(0) is no call
     Rule("v3-access", each_line=v3_access.each_line, dialects=frozenset({Dialect.V3})),

@@ -1,0 +1,32 @@
+"""A keyword given nothing after its '=' (error 2005).
+
+Commas skip axes (``SPEED = ,10`` writes axis 1 only, 000:632-641) and a semicolon repeats
+the last value (000:657-663), but in ``SPEED.0 =``, ``SPEED = ,`` or ``COMMS(1) =`` every
+place is empty: the keyword is given no value at all. That is #2005, No expression, a keyword
+neither read nor assigned a value (000:18930-18934); the error points where the value is missing.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from mintlang.analysis.findings import Finding, mint_error
+from mintlang.analysis.traversal import LineScope
+from mintlang.diagnostics import Span
+from mintlang.syntax import nodes as n
+
+
+def each_line(scope: LineScope) -> Iterator[Finding]:
+    for statement in scope.facts.statements:
+        kind = type(statement)
+        if kind is n.KeywordStatement:
+            name = statement.keyword.spelling  # type: ignore[union-attr]
+        elif kind is n.FunctionStatement:
+            name = f"{statement.call.spelling}(…)"  # type: ignore[union-attr]
+        else:
+            continue
+        values = statement.values  # type: ignore[union-attr]
+        if values is not None and all(value is None for value in values):
+            end = statement.span.end
+            detail = f"{name} is given no value after '='"
+            yield Finding(scope.unit, mint_error(2005, Span(end, end), detail))

@@ -19,7 +19,7 @@ from enum import IntEnum
 
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.keywords import KeywordTable, per_channel
-from mintlang.runtime.ranges import ranged
+from mintlang.runtime.ranges import ranged, table_default
 
 ONERROR_REENTRY_LIMIT = 100  # consecutive re-entries of #ONERROR with an error still latched (AX-7 RC)
 
@@ -221,11 +221,18 @@ class Events:
         self.next_timer = self.clock.now + value if value else NEVER
 
     def tick(self) -> None:
-        """Raise the timer event when its period has elapsed."""
+        """Raise the timer event when its period has elapsed; the next one falls a whole period after it was due,
+        whether or not the ticks between were processed."""
         now = self.clock.now
         if now >= self.next_timer:
             self.raise_event(EventClass.TIMER)
-            self.next_timer = now + self.timer_period
+            period = self.timer_period
+            self.next_timer = now + period - (now - self.next_timer) % period
+
+    def next_timer_event(self) -> int:
+        """The tick at which the timer next calls #TIMER; NEVER without one to call, so a timer left running
+        (on MintDrive from power-up) wakes nothing and a program that waits on nothing else is deadlocked."""
+        return self.next_timer if self.has_handler(EventClass.TIMER) else NEVER
 
     # ------------------------------------------------------------- keywords
 
@@ -242,6 +249,7 @@ class Events:
         table.register("IPEND", read=lambda _: float(self._bits(EventClass.INPUT)), write=per_channel(ipend))
         timer = ranged("TIMEREVENT", controller, self._timer)
         table.register("TIMEREVENT", read=lambda _: float(self.timer_period), write=per_channel(timer))
+        self.set_timer(table_default("TIMEREVENT", controller) or 0.0)  # at power-up: 10000 ms on MintDrive
 
     def _disabled_mask(self, dispatch: Dispatch) -> Callable[[int | None], float]:
         return lambda _: float(sum(bit for kind, bit in dispatch.bits.items() if kind in self.disabled))

@@ -43,6 +43,18 @@ def table_bounds(keyword: str, controller: Controller) -> Bounds:
     )
 
 
+def table_default(keyword: str, controller: Controller) -> float | None:
+    """The power-up value ``keyword``'s attributes table gives for ``controller``; None when it gives no number."""
+    record = database().keywords.get(keyword)
+    row = record.attributes_for(controller) if record is not None else None
+    if row is None or row.default is None:
+        return None
+    try:
+        return float(row.default.replace(",", ""))
+    except ValueError:
+        return None  # "20,000, 1000 (stepper)": a default per axis type
+
+
 def ranged(
     keyword: str, controller: Controller, write_one: Callable[[int | None, float], None]
 ) -> Callable[[int | None, float], None]:

@@ -187,7 +187,7 @@ class Simulator:
     def _next_change_besides_the_program(self, t: int, soonest: int) -> int:
         """The next tick the world, the timer, a monitor, an axis or an expectation needs, or ``soonest``."""
         c = self.c
-        soonest = min(soonest, c.world.next_change(t), c.events.next_timer)
+        soonest = min(soonest, c.world.next_change(t), c.events.next_timer_event())
         for monitor in c.monitors:
             soonest = min(soonest, monitor.next_required(t))
         for axis in c.axes:

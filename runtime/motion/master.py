@@ -16,14 +16,13 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.moves import PROFILER_TICK_MS
-from mintlang.runtime.ranges import OUT_OF_RANGE, check_range, table_bounds
+from mintlang.runtime.ranges import OUT_OF_RANGE, check_range, table_bounds, table_default
 
 MS_POS, MS_ENCODER, MS_AUXENCODER, MS_SPEED, MS_DEMAND = 0, 1, 2, 3, 4
 INVALID_MASTER_CHANNEL = 70
@@ -58,8 +57,8 @@ def settings(motion: Motion, axis: Axis) -> MasterSettings:
 def power_up_source(controller: Controller) -> int:
     """MASTERSOURCE at power-up and after DEFAULT, from its attributes table: _msPOS on NextMove, _msAUXENCODER
     on MintDrive and ServoNode 51 (000:13925-13929)."""
-    row = database().keywords["MASTERSOURCE"].attributes_for(controller)
-    return int(row.default) if row is not None and row.default is not None else MS_POS
+    found = table_default("MASTERSOURCE", controller)
+    return MS_POS if found is None else int(found)
 
 
 class Master:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pytest
+
 from mintlang.runtime.comms.packets import ACK, encode_write
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.scenario.stimulus import HostPacket, Scenario
@@ -19,6 +21,19 @@ ticks = ticks + 1
 RETURN
 """
     assert simulate(source).terminal == "10\n"
+
+
+@pytest.mark.parametrize(
+    ("controller", "source"),
+    [
+        pytest.param("nextmove-bx", "TIMEREVENT = 100\nPAUSE IN.1\n", id="written"),
+        pytest.param("mintdrive", "REM TIMEREVENT is 10000 from power-up\nPAUSE IN.1\n", id="mintdrive power-up"),
+    ],
+)
+def test_a_timer_without_a_handler_wakes_nothing(controller: str, source: str) -> None:
+    # nothing drives input 1 and no #TIMER can change what PAUSE waits for: the program can never go on
+    result = simulate(source, controller=controller, until_ms=None)
+    assert (result.stop.reason, result.stop.line) == (StopReason.DEADLOCK, 2)
 
 
 def test_timerevent_below_ten_is_rounded_up_and_odd_values_to_even() -> None:

@@ -1,7 +1,8 @@
 """Formatting, the house style: upper-case keywords, labels at the margin, blocks indented, no trailing blanks.
 
 * Keywords (a comment's REM included, and those in a macro's text, which is Mint
-  too) are written in upper case, in v3 and v4. MintMT keeps every word as
+  too) are written in upper case, in v3 and v4; a label named like a keyword
+  (``GOSUB home``) is a user name and keeps its case. MintMT keeps every word as
   written: its notes write ``Loop``, ``End If``, ``Event`` in mixed case, as
   its programs do, and ``'`` starts most of its comments.
 * A label line starts at column 0, wherever it stands: a label names a place in
@@ -31,6 +32,7 @@ from mintlang.lsp.workspace import Snapshot
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
 
 _UPPER_CASED = GRAMMAR_KEYWORDS | {TokenKind.KEYWORD, TokenKind.FUNCTION}
+_JUMPS = frozenset({TokenKind.GOSUB, TokenKind.GOTO})  # the word after one is a label, however it is spelt
 _REM = len("REM")  # a comment token starts with its keyword
 
 
@@ -85,8 +87,10 @@ def _keywords(snapshot: Snapshot, lines: range) -> dict[int, list[Span]]:
         return {}
     positions = snapshot.positions
     found: dict[int, list[Span]] = {}
+    previous = None
     for token in snapshot.document.tokens:
-        if token.kind in _UPPER_CASED:
+        after_jump, previous = previous in _JUMPS, previous if token.kind is TokenKind.WS else token.kind
+        if token.kind in _UPPER_CASED and not after_jump:
             span = Span(token.start, token.end)
         elif token.kind is TokenKind.COMMENT:
             span = Span(token.start, token.start + _REM)

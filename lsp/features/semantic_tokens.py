@@ -50,6 +50,8 @@ _BY_KIND: dict[TokenKind, int] = {
 for _kind in (TokenKind.AND, TokenKind.OR, TokenKind.NOT, TokenKind.MOD, TokenKind.XOR):
     _BY_KIND[_kind] = _TYPE["operator"]
 _NAME = TokenKind.NAME
+_JUMPS = frozenset({TokenKind.GOSUB, TokenKind.GOTO})
+_KEYWORD_WORDS = frozenset({TokenKind.KEYWORD, TokenKind.FUNCTION})  # a label may be named like one (000:1843)
 
 
 _Coloured = tuple[int, int, int]  # start and end in its line, type
@@ -164,11 +166,16 @@ class _NameTypes(dict[str, int]):
 
 
 def _coloured(line: LexedLine, name_types: dict[str, int]) -> list[_Coloured]:
-    """The tokens of ``line`` that get a colour, in order: trivia never do, but a REM comment does."""
+    """The tokens of ``line`` that get a colour, in order: trivia never do, but a REM comment does. The word
+    after GOSUB or GOTO is a label, even where it is spelt like a keyword (``GOSUB home``) or a variable."""
     found = []
     by_kind = _BY_KIND.get
+    previous = None
     for kind, text, start in zip(line.kinds, line.texts, line.starts, strict=True):
         kind_type = name_types[text] if kind is _NAME else by_kind(kind)
+        if previous in _JUMPS and (kind in _KEYWORD_WORDS or kind_type == _TYPE["variable"]):
+            kind_type = _TYPE["function"]
+        previous = kind
         if kind_type is not None:
             found.append((start, start + len(text), kind_type))
     if line.comment_start >= 0:

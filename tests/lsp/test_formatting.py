@@ -126,3 +126,14 @@ async def test_an_indented_label_goes_to_the_margin_with_its_body_and_trailing_b
     )
     assert apply(text, edits) == "DIM a\nGOSUB init\nEND\n#init\na = 10\nLOOP : #inner\n\nENDL\nRETURN\n"
     assert all(edit.range.start.line == edit.range.end.line for edit in edits)  # one edit per changed line
+
+
+async def test_a_label_named_like_a_keyword_keeps_its_case(client, tmp_path):
+    # a label is any alphanumeric name (000:1843): after GOSUB and GOTO, home and sin name labels, not HOME and SIN
+    text = "gosub home : goto sin\n#sin\nend\n#home\nreturn\n"
+    uri = uri_of(tmp_path / "named.mnt")
+    await open_document(client, uri, text)
+    edits = await client.text_document_formatting_async(
+        types.DocumentFormattingParams(text_document=document(uri), options=SPACES)
+    )
+    assert apply(text, edits) == "GOSUB home : GOTO sin\n#sin\nEND\n#home\nRETURN\n"

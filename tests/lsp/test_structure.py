@@ -72,6 +72,14 @@ async def test_folding_blocks_and_subroutines(client, tmp_path):
     assert (18, 22) in spans  # #init
 
 
+async def test_the_last_subroutine_folds_to_its_last_line_not_past_the_final_line_break(client, tmp_path):
+    text = "GOSUB init\nEND\n#init\nPRINT 1\nRETURN\n"  # LSP lines 0 to 5, the last one empty
+    uri = uri_of(tmp_path / "last.mnt")
+    await open_document(client, uri, text)
+    ranges = await client.text_document_folding_range_async(types.FoldingRangeParams(text_document=document(uri)))
+    assert [(r.start_line, r.end_line) for r in ranges] == [(2, 4)]
+
+
 async def test_semantic_tokens(client, tmp_path):
     text = 'DEFINE fast = 10\nDIM a\na = fast + _TRUE : REM note\nPRINT "x"\n'
     uri = uri_of(tmp_path / "colour.mnt")
@@ -91,6 +99,29 @@ async def test_semantic_tokens(client, tmp_path):
     assert ("_TRUE", "enumMember") in decoded
     assert ("REM note", "comment") in decoded
     assert ('"x"', "string") in decoded
+
+
+async def test_a_label_named_like_a_keyword_or_a_variable_is_coloured_as_a_label(client, tmp_path):
+    # after GOSUB and GOTO comes a label, which may take any alphanumeric name (000:1843)
+    text = "DIM total\nGOSUB home : GOTO total\n#total\nEND\n#home\nRETURN\n"
+    uri = uri_of(tmp_path / "labels.mnt")
+    await open_document(client, uri, text)
+    tokens = await client.text_document_semantic_tokens_full_async(
+        types.SemanticTokensParams(text_document=document(uri))
+    )
+    data, line, column, decoded = list(tokens.data), 0, 0, []
+    for index in range(0, len(data), 5):
+        delta_line, delta_start, length, kind, _ = data[index : index + 5]
+        line += delta_line
+        column = delta_start if delta_line else column + delta_start
+        decoded.append((line, text.splitlines()[line][column : column + length], TOKEN_TYPES[kind]))
+    assert [(word, kind) for at, word, kind in decoded if at == 1] == [
+        ("GOSUB", "keyword"),
+        ("home", "function"),
+        ("GOTO", "keyword"),
+        ("total", "function"),
+    ]
+    assert (0, "total", "variable") in decoded
 
 
 async def test_a_v3_word_in_v4_code_is_a_deprecated_keyword_unless_declared(client, tmp_path):

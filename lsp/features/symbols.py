@@ -64,9 +64,10 @@ def sections(snapshot: Snapshot) -> list[Section]:
 def _last_written(snapshot: Snapshot, first: int, last: int) -> int:
     """``last`` moved up over blank and comment-only lines (REM, and MintMT's ``'``): the gap before the next
     section, and the comment that introduces it, are not part of this one."""
-    positions = snapshot.positions
+    positions, end = snapshot.positions, len(snapshot.document.source)
     while last > first:
-        tokens = snapshot.document.tokens_in(positions.line_start(last), positions.line_start(last))
+        start = positions.line_start(last)  # the empty line after a final line break has no tokens of its own
+        tokens = snapshot.document.tokens_in(start, start) if start < end else ()
         if not all(token.kind in TRIVIA for token in tokens):
             break
         last -= 1

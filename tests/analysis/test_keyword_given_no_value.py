@@ -1,9 +1,10 @@
-"""A keyword written with '=' and no value is error 2005, No expression.
+"""A keyword written with '=' and no value, or PAUSE with no condition, is error 2005, No expression.
 
 Commas skip axes, ``SPEED = ,10`` writing axis 1 only (000:632-641), and a semicolon gives the
 last value to the axes left (000:657-663); but when every place after '=' is empty the keyword is
 given nothing, which is #2005: a keyword neither read nor assigned a value (000:18930-18934).
-``SPEED.0 =`` passed mint check.
+``SPEED.0 =`` passed mint check. PAUSE waits for a condition (000:15023); ``PAUSE`` alone passed
+too, though mint-run stops it with 2005.
 """
 
 from __future__ import annotations
@@ -23,6 +24,8 @@ from tests.analysis.placed import placed_codes
         pytest.param("MOVEA = : GO\n", [("E2005", 1, 8)], id="before-another-statement"),
         pytest.param("COMMS(1) =\n", [("E2005", 1, 11)], id="function-style"),
         pytest.param("OUT1 =\n", [("E2005", 1, 7)], id="channel-suffix"),
+        pytest.param("PAUSE\n", [("E2005", 1, 6)], id="pause-without-condition"),
+        pytest.param("PAUSE : GO\n", [("E2005", 1, 6)], id="pause-before-another-statement"),
     ],
 )
 def test_a_keyword_given_no_value_is_error_2005_where_the_value_is_missing(

@@ -43,7 +43,7 @@ GROUP = Group(
         RuleDoc(
             2005,
             catches="A parameter keyword standing alone as a statement, neither read nor given a value "
-            "(`SPEED` on its own line, `COMMS(1)`), a keyword given `=` and no value (`SPEED.0 =`, `SPEED = ,`), "
+            "(`SPEED` on its own line, `COMMS(1)`), a keyword given `=` and no value (`SPEED.0 =`, `SPEED = ,`), PAUSE with no condition, "
             "a function written as a statement (`SIN(30)`), or AXES without the list of axes in a program.",
             why="A parameter is a value: as a statement it does nothing the compiler can make sense of. "
             "It is often a line whose `= value` was lost, or a comment missing its REM.",

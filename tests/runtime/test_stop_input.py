@@ -65,7 +65,7 @@ def test_an_errordecel_of_zero_stops_at_once_instead_of_ramping_for_ever() -> No
 
 def test_a_move_held_at_rest_still_has_its_distance_to_go() -> None:
     # 000:15198-15201: POSREMAINING is what is left of the current move, and in mode 1 the held move stays current
-    source = program(1, "MOVER.0 = 8000 : GO.0\nWAIT = 350\nPRINT POS.0, \" \", POSREMAINING.0, \" \", IDLE.0\n")
+    source = program(1, 'MOVER.0 = 8000 : GO.0\nWAIT = 350\nPRINT POS.0, " ", POSREMAINING.0, " ", IDLE.0\n')
     result = simulate(source + "REM @sim input 3 1 at 100\n")
     position, remaining, idle = (float(word) for word in result.terminal.splitlines()[-1].split())
     assert idle == 0 and remaining > 1000  # ramped down from below 20000 counts/s: at rest well short of 8000

@@ -23,10 +23,12 @@ import contextlib
 import dataclasses
 import enum
 import functools
+import re
 import types
 from collections import deque
 from collections.abc import Callable, Collection, Iterable
 from dataclasses import dataclass
+from pathlib import PurePath
 from typing import Any
 
 _OWN = "mintlang."  # the modules whose classes a snapshot knows how to walk
@@ -188,7 +190,7 @@ _WALKERS: dict[type, Walker] = {
 
 def _walker_of(kind: type) -> Walker:
     """How to walk an instance of one of the runtime's classes (found once per class, then kept)."""
-    if issubclass(kind, enum.Enum) or issubclass(kind, type):
+    if issubclass(kind, (enum.Enum, type, PurePath, re.Pattern)):  # values that never change
         walker: Walker = _atomic
     elif not kind.__module__.startswith(_OWN):
         raise NotSnapshotted(f"cannot save the state of a {kind.__module__}.{kind.__qualname__}")

@@ -6,8 +6,9 @@ holding a statement (a comment, a label or a blank line runs nothing): it
 stops each time that first statement is about to run, so once per pass over
 a line like ``a = 1 : b = 2``, and not again while a blocked statement waits. Its condition is a Mint
 expression (true when non-zero); its hit condition counts the times the
-condition held since it was set, or since the run began again (stepping back
-re-runs from the start, and counts from there): ``5`` or ``== 5`` stops at the
+condition held since it was set, and going back takes the count back with the
+run: to what it was at the checkpoint the re-run starts from
+(``checkpoints.py``), 0 for a breakpoint set since: ``5`` or ``== 5`` stops at the
 fifth, ``>= 5`` (or ``> 4``) from the fifth on, ``< 3`` at the first two, ``% 3``
 at every third. The editor sends all of a file's breakpoints whenever one
 changes: those it sends unchanged keep their count. A log message prints
@@ -162,6 +163,15 @@ class Breakpoints:
         for breakpoint_ in self.by_pc.values():
             breakpoint_.hits = 0
             breakpoint_.compiled = None
+
+    def hit_counts(self) -> dict[tuple[object, ...], int]:
+        """Each breakpoint's hit count, by what makes a breakpoint sent again the same one: for a checkpoint."""
+        return {_key(breakpoint_): breakpoint_.hits for breakpoint_ in self.by_pc.values()}
+
+    def restore_hit_counts(self, counts: Mapping[tuple[object, ...], int]) -> None:
+        """The run is taken back to a checkpoint: each count as it was there (0 for a breakpoint set since)."""
+        for breakpoint_ in self.by_pc.values():
+            breakpoint_.hits = counts.get(_key(breakpoint_), 0)
 
     def reached(self, pc: int, evaluator: Evaluator) -> Decision | None:
         """Control reaches ``pc``: None if no breakpoint is there or it does not hit, else what it does.

@@ -5,8 +5,10 @@ wrapped, as coverage wraps them, so the debugger is asked before every
 statement whether to stop there (``Execution._before``). A stop blocks the
 simulation thread until the editor sends a command; meanwhile the session's
 thread reads the paused state (variables, axes, the stack), which nothing else
-touches. Going back (``stepBack``, ``reverseContinue``) ends the run where it
-is and starts another from the beginning (``history.py``, ``stepping.py``).
+touches. Going back (``stepBack``, ``reverseContinue``) takes the run back to
+the latest checkpoint before the point wanted (``checkpoints.py``) and runs on
+from there (``history.py``, ``stepping.py``); a state that cannot be saved
+makes it start again from the beginning instead.
 """
 
 from __future__ import annotations
@@ -15,11 +17,14 @@ import threading
 from collections import deque
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
-from typing import Protocol
+from functools import partial
+from typing import NoReturn, Protocol
 
+from mintlang.runtime import snapshot
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.debugger import stepping
 from mintlang.runtime.debugger.breakpoints import Breakpoints
+from mintlang.runtime.debugger.checkpoints import INTERVAL, Checkpoint, Checkpoints
 from mintlang.runtime.debugger.evaluation import Evaluator
 from mintlang.runtime.debugger.history import Intervention, Timeline
 from mintlang.runtime.debugger.launch import Application
@@ -28,7 +33,7 @@ from mintlang.runtime.errors import MintError
 from mintlang.runtime.interpreter.vm import Operation, StopReason
 from mintlang.runtime.run import RunResult
 from mintlang.runtime.scenario import ScenarioFileError
-from mintlang.runtime.simulation import Interrupt, Stop
+from mintlang.runtime.simulation import Interrupt, Rewind, Simulator, Stop
 from mintlang.runtime.trace import Trace
 
 ERRORS = "errors"  # exception filter: stop at every run-time error, even one #ONERROR handles
@@ -98,6 +103,10 @@ class Execution:
         self._logged_from = 0
         self._blocked: tuple[int, int] | None = None  # (pc, depth) of the statement that blocked last
         self._recent: deque[_Recent] = deque(maxlen=RECENT)  # this run's last points where stepping may stop
+        self._checkpoints: Checkpoints | None = Checkpoints()  # None once the state cannot be saved
+        self._simulator: Simulator | None = None  # while a run goes, to take it back
+        self._ticks = 0  # ticks processed by this run
+        self._serial = -1  # the last interval of work this run passed (``checkpoints.py``)
         self._thread: threading.Thread | None = None
         self._trace: Trace | None = None  # this run's, when the launch asks for a plot
 
@@ -145,11 +154,22 @@ class Execution:
         return (recent for recent in reversed(self._recent) if recent.point.count < at.count)
 
     def _back_to(self, count: int, reason: str) -> None:
-        self.timeline.rewind(count)
-        self.rerun(stepping.reach(count, reason))
+        self.rerun(self._reach(count, reason))
+
+    def _reach(self, count: int, reason: str) -> Forward:
+        """A plan to stop at point ``count``, where what the user changed after it is undone."""
+        undone = self.timeline.rewind(count)
+        if undone is not None and self._checkpoints is not None:
+            self._checkpoints.forget_after(undone)
+        return reach(count, reason)
 
     def pause(self) -> None:
         self._pause_requested = True
+
+    @property
+    def checkpoints_kept(self) -> int:
+        """How many checkpoints the run holds now: what its memory grows with (``checkpoints.LIMIT`` at most)."""
+        return len(self._checkpoints) if self._checkpoints is not None else 0
 
     def terminate(self) -> None:
         """End the run, paused or not, and wait for its thread to finish."""
@@ -163,6 +183,8 @@ class Execution:
         if self.point is None or self.controller is None:
             raise RuntimeError("intervene while the run is paused")
         self.timeline.intervene(Intervention(self.point.count, description, apply), self.controller)
+        if self._checkpoints is not None:
+            self._checkpoints.forget_after(self.point.count)
 
     # ------------------------------------------------------- the simulation's side
 
@@ -188,14 +210,82 @@ class Execution:
         self._logged_from = self.timeline.points_reached  # log messages at earlier points were shown before
         self._blocked = None
         self._recent.clear()
+        self._ticks = 0
+        self._serial = -1
+        if self._checkpoints is not None:
+            self._checkpoints = Checkpoints()  # of this run's objects
         plot = self.application.plot
         self._trace = Trace(self._plotted_axes(), None, plotting=True, chosen=False) if plot is not None else None
-        result = self.application.run(self._attach, self._echo, self._record if plot is not None else None)
-        if isinstance(plan, Scan) and self._next_plan is None:  # going back from where the run ended
-            self._next_plan = self._found(plan)
-        elif self._next_plan is None and not self._terminating:
-            self._at_end(result)
+        record = self._record if plot is not None else None
+        result = self.application.run(self._attach, self._echo, record, self._hook)
+        self._simulator = None
+        if result.refused and self._next_plan is None and not self._terminating:
+            self._at_end(result.stop)  # the compiler refused a file: the run ends after the simulation did
         return result
+
+    def _hook(self, simulator: Simulator) -> None:
+        self._simulator = simulator
+        simulator.before_tick = self._before_tick
+        simulator.on_end = self._on_end
+
+    def _before_tick(self, tick: int) -> None:
+        """Count the tick, after taking a checkpoint before it if the run has done another interval of work."""
+        work = self._count + self._ticks
+        self._ticks += 1
+        serial = work // INTERVAL
+        checkpoints = self._checkpoints
+        if serial == self._serial or checkpoints is None:
+            return
+        self._serial = serial
+        if not checkpoints.wanted(serial):
+            return
+        roots = (self._simulator, self._trace)
+        try:
+            state = snapshot.take([root for root in roots if root is not None], outside=(self,))
+        except snapshot.NotSnapshotted as error:
+            self._checkpoints = None
+            message = f"mint-dap: going back will run the program again from its start: {error}\n"
+            self.listener.output(message, "console")
+            return
+        hits = self.breakpoints.hit_counts()
+        ticks = self._ticks - 1
+        checkpoints.add(Checkpoint(serial, tick, self._count, ticks, self._writes, self._blocked, hits, state))
+
+    def _go_back(self, plan: Plan) -> NoReturn:
+        """Take the run back for ``plan``: to the latest checkpoint before the first point it needs, or to the start
+        of a new run when there is none."""
+        checkpoints = self._checkpoints
+        usable = checkpoints is not None and self._simulator is not None
+        checkpoint = checkpoints.latest(stepping.first_point(plan)) if usable and checkpoints is not None else None
+        if checkpoint is None:
+            self._next_plan = plan
+            raise _Abandoned("going back")
+        if isinstance(plan, Scan):
+            plan.since = checkpoint.count
+        raise Rewind(checkpoint.tick, partial(self._restore, checkpoint, plan))
+
+    def _restore(self, checkpoint: Checkpoint, plan: Plan) -> None:
+        """The run as it stood at ``checkpoint``, going on with ``plan``."""
+        checkpoint.state.restore()
+        self._plan = plan
+        self._count = checkpoint.count
+        self._ticks = checkpoint.ticks
+        self._serial = checkpoint.serial
+        self._writes = checkpoint.writes
+        self._blocked = checkpoint.blocked
+        self._logged_from = self.timeline.points_reached
+        while self._recent and self._recent[-1].point.count >= checkpoint.count:
+            self._recent.pop()
+        self.breakpoints.restore_hit_counts(checkpoint.hits)
+
+    def _on_end(self, stop: Stop) -> None:
+        """The run ended: a scan going back from its end is over; an error or deadlock that ended it stops the
+        debugger there first, when the editor asks for that."""
+        if self._terminating:
+            return
+        if isinstance(self._plan, Scan):
+            self._scan_done(self._plan)
+        self._at_end(stop)
 
     def _attach(self, controller: Controller) -> None:
         self.controller = controller
@@ -256,16 +346,18 @@ class Execution:
 
     def _scan(self, scan: Scan, point: Point, hit: bool) -> None:
         if point.count >= scan.until:
-            self._next_plan = self._found(scan)
-            raise _Abandoned("going back")
+            self._scan_done(scan)
         if scan.wanted(point, hit):
             scan.found = point.count
 
-    def _found(self, scan: Scan) -> Forward:
-        """The second pass of ``scan``: to the point it found, or to the start when there was none."""
-        target = scan.found if scan.found is not None else 0
-        self.timeline.rewind(target)
-        return reach(target, scan.reason if scan.found is not None else "entry")
+    def _scan_done(self, scan: Scan) -> NoReturn:
+        """On from ``scan``: to the point it found; else the same search over the points before it; from the
+        start, to the start."""
+        if scan.found is not None:
+            self._go_back(self._reach(scan.found, scan.reason))
+        if scan.since > 0:
+            self._go_back(scan.earlier())
+        self._go_back(self._reach(0, "entry"))
 
     def _stop(self, point: Point, reason: str, description: str | None = None) -> None:
         """Pause at ``point`` until the editor says what next; a command to go back ends this run."""
@@ -281,14 +373,13 @@ class Execution:
         if isinstance(command, _Terminate):
             raise _Abandoned("the debugging session ended")
         if isinstance(command, _Rerun):
-            self._next_plan = command.plan
-            raise _Abandoned("going back")
+            self._go_back(command.plan)
         self._plan = command
 
-    def _at_end(self, result: RunResult) -> None:
-        """The run ended: an error or a deadlock that ended it stops the debugger there first, when the editor
-        asks for that."""
-        if result.stop.reason not in _ENDED_BADLY or UNHANDLED not in self.exception_filters:
+    def _at_end(self, stop: Stop) -> None:
+        """An error or a deadlock that ended the run stops the debugger there first, when the editor asks for
+        that."""
+        if stop.reason not in _ENDED_BADLY or UNHANDLED not in self.exception_filters:
             return
         controller = self.controller
         if controller is None:
@@ -297,9 +388,9 @@ class Execution:
         site = vm.stop_site
         pc = vm.sites.index(site) if site is not None and site in vm.sites else len(vm.sites)
         point = Point(self._count, pc, len(vm.frames), resumed=False, tick=controller.clock.now)
-        self.ending = result.stop
+        self.ending = stop
         try:
-            self._stop(point, "exception", result.stop.message)
+            self._stop(point, "exception", stop.message)
         except _Abandoned:
             return
         finally:

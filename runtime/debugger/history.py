@@ -1,14 +1,11 @@
 """What a re-run must repeat and what it must not: the editor's interventions, and the output already shown.
 
-Stepping back re-runs the program from the start to an earlier point
-(``stepping.py``): the simulator is deterministic, so that point's state is the
-state the first run had there. Nothing of the past is stored but what the
-user changed (and a bounded window of recent points, ``execution.RECENT``), so
-memory stays the size of the program whatever the length of the run, and time
-to step back grows with the simulated time before the point (measured in
-``benchmarks/debugger_step_back.py``). Checkpoints of the whole controller would trade
-memory for that time, but its parts are closures over one another that no
-copy can rebind.
+Stepping back re-runs the program to an earlier point from a checkpoint taken
+before it (``checkpoints.py``, ``stepping.py``): the simulator is deterministic,
+so that point's state is the state the first run had there, as long as the
+re-run repeats what the user changed. A checkpoint taken after a point where
+the user changed something, or undid a change, no longer holds the run: it is
+forgotten.
 
 - A value set while paused (``setVariable``) is an *intervention* at that point:
   each re-run applies it when it reaches the point again, before it stops there.
@@ -49,9 +46,13 @@ class Timeline:
         """The interventions to apply on reaching point ``count``, in the order they were made."""
         return self.interventions.get(count, [])
 
-    def rewind(self, count: int) -> None:
-        """Going back to point ``count``: interventions made after it never happened."""
-        self.interventions = {made: done for made, done in self.interventions.items() if made <= count}
+    def rewind(self, count: int) -> int | None:
+        """Going back to point ``count``: interventions made after it never happened. The earliest point one is
+        undone at, if any."""
+        undone = [made for made in self.interventions if made > count]
+        for made in undone:
+            del self.interventions[made]
+        return min(undone, default=None)
 
     def reach(self, count: int) -> None:
         self.points_reached = max(self.points_reached, count + 1)

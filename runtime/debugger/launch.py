@@ -28,7 +28,7 @@ from mintlang.runtime.outputs import OutputProblem, check_plot
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import ScenarioFileError, load_scenario, merge
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
-from mintlang.runtime.simulation import Limits
+from mintlang.runtime.simulation import Limits, Simulator
 from mintlang.runtime.trace import PlotUnavailable
 from mintlang.semantic.units import Unit
 from mintlang.settings import SettingsError, settings_for
@@ -63,6 +63,7 @@ class Application:
         on_start: Callable[[Controller], None],
         echo: Callable[[str], None] | None = None,
         on_tick: Callable[[Controller, int], None] | None = None,
+        on_simulator: Callable[[Simulator], None] | None = None,
     ) -> RunResult:
         """One run of the application, as long as the debugger lets it go (``untilMs`` at most)."""
         return run_source(
@@ -77,6 +78,7 @@ class Application:
             echo=echo,
             on_tick=on_tick,
             on_start=on_start,
+            on_simulator=on_simulator,
             name=str(self.program),
         )
 

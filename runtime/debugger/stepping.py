@@ -11,8 +11,10 @@ attempts are *resumed* points, where stepping never stops, so ``next`` over a
 
 Forward plans stop at the first point they accept. Going back to a point the
 run passed recently is one re-run that stops there (``reach``); further back,
-a scan of a first re-run finds the last accepted point before the current
-one, and a second re-run stops there.
+a scan finds the last accepted point before the current one, and a second
+re-run stops there. A re-run starts at a checkpoint (``checkpoints.py``): a
+scan runs from the latest one before its end to its end, and from the one
+before that if it found nothing, back to the start if need be.
 """
 
 from __future__ import annotations
@@ -44,12 +46,24 @@ class Forward:
 @dataclass(slots=True)
 class Scan:
     """A re-run that stops nowhere: it finds the last point before ``until`` that ``wanted`` takes (given the
-    point and whether a breakpoint hits there)."""
+    point and whether a breakpoint hits there), among those from ``since``, where the re-run starts."""
 
     until: int
     wanted: Callable[[Point, bool], bool]
     reason: str
     found: int | None = field(default=None)
+    since: int = 0
+
+    def earlier(self) -> Scan:
+        """The same search over the points before those this scan went through."""
+        return Scan(self.since, self.wanted, self.reason)
+
+
+def first_point(plan: Forward | Scan) -> int:
+    """The earliest point a re-run for ``plan`` must pass: where it starts from is the latest checkpoint before."""
+    if isinstance(plan, Scan):
+        return max(plan.until - 1, 0)
+    return plan.after + 1
 
 
 def cont(after: int) -> Forward:
@@ -82,7 +96,7 @@ def run_for(at: Point, ticks: int) -> Forward:
 
 def reach(count: int, reason: str) -> Forward:
     """The second pass of a backward plan: stop at point ``count`` and nowhere before."""
-    return Forward(-1, lambda point: point.count == count, reason=reason, breakpoints=False)
+    return Forward(count - 1, lambda point: point.count == count, reason=reason, breakpoints=False)
 
 
 def step_back(at: Point) -> Scan:

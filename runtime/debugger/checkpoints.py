@@ -1,0 +1,82 @@
+"""Checkpoints of the run under the debugger: the states going back restores, to run on from them.
+
+Going back to point ``k`` restores the latest checkpoint taken before ``k`` and
+runs on from it to ``k`` (``execution.py``): the simulator is deterministic,
+so the state there is the state the run had. A checkpoint is taken before a
+processed tick, once the run has done another ``INTERVAL`` of *work* (points
+tried plus ticks processed: what a re-run costs), so going back to the recent
+past re-runs at most that much.
+
+Older checkpoints are thinned out as the run goes on: the ``2 * DENSE`` most
+recent are kept, then every second one of the next ``2 * DENSE`` intervals,
+every fourth of the next ``4 * DENSE`` and so on (a checkpoint's number on the
+grid of intervals decides, so one dropped is never wanted again). Going back
+costs about as much as the distance back, and the number kept grows with the
+logarithm of the run's length, to ``LIMIT`` at most: beyond it the oldest go,
+never the first, taken before the first tick, from which any point is reached.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from mintlang.runtime.snapshot import Snapshot
+
+INTERVAL = 2048  # work between two checkpoints: some tens of milliseconds to re-run, a few to save
+DENSE = 4  # checkpoints kept at each spacing, from one interval apart to far apart
+LIMIT = 48  # checkpoints kept at most: each holds the simulation's state (190 kB for 12 axes)
+
+
+@dataclass(frozen=True, slots=True)
+class Checkpoint:
+    """The run as it stood before processing ``tick``: the simulation and the debugger's account of the run."""
+
+    serial: int  # its place on the grid of intervals: the work done before it, in intervals
+    tick: int
+    count: int  # points tried before it: the first point a run from it reaches
+    ticks: int  # ticks processed before it
+    writes: int  # the program's writes to the terminal before it
+    blocked: tuple[int, int] | None  # (pc, depth) of the statement that blocked last, if it did
+    hits: Mapping[tuple[object, ...], int]  # each breakpoint's hit count, by what makes it the same breakpoint
+    state: Snapshot
+
+
+def _kept(serial: int, newest: int) -> bool:
+    """Whether the checkpoint numbered ``serial`` is kept once ``newest`` has been taken: those ``age`` intervals
+    back are kept one in ``2 ** level``, where the level grows by one each time the age doubles."""
+    level = max(0, (max(newest - serial, 0) // DENSE).bit_length() - 1)
+    return serial % (1 << level) == 0
+
+
+class Checkpoints:
+    """The checkpoints of one run, in the order of the run."""
+
+    def __init__(self) -> None:
+        self.kept: list[Checkpoint] = []
+        self.newest = -1  # the highest serial taken
+
+    def __len__(self) -> int:
+        return len(self.kept)
+
+    def wanted(self, serial: int) -> bool:
+        """Whether a checkpoint numbered ``serial`` is to be taken now (not taken yet, not thinned out)."""
+        if any(checkpoint.serial == serial for checkpoint in reversed(self.kept)):
+            return False
+        return _kept(serial, max(self.newest, serial))
+
+    def add(self, checkpoint: Checkpoint) -> None:
+        self.kept.append(checkpoint)
+        self.kept.sort(key=lambda kept: kept.serial)
+        self.newest = max(self.newest, checkpoint.serial)
+        self.kept = [kept for kept in self.kept if _kept(kept.serial, self.newest)]
+        del self.kept[1 : max(1, len(self.kept) - LIMIT + 1)]
+
+    def latest(self, count: int) -> Checkpoint | None:
+        """The latest checkpoint a run from which reaches point ``count``."""
+        return next((checkpoint for checkpoint in reversed(self.kept) if checkpoint.count <= count), None)
+
+    def forget_after(self, count: int) -> None:
+        """What happened at point ``count`` changed (a value set there, or undone): later checkpoints no longer hold."""
+        self.kept = [checkpoint for checkpoint in self.kept if checkpoint.count <= count]
+        self.newest = self.kept[-1].serial if self.kept else -1

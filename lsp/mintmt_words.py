@@ -35,6 +35,12 @@ WORDS: dict[TokenKind, BlockWord] = {
         "Loop", _LOOP, "Runs its statements again and again, until an EXIT leaves it (v4's LOOP … ENDL)."
     ),
     TokenKind.ENDL: BlockWord("End Loop", _LOOP, "Closes a Loop block: the program goes back to its Loop."),
+    TokenKind.IF: BlockWord(
+        "If",
+        _IF,
+        "Runs what follows Then when the condition is true: the rest of the line, or, when Then ends its"
+        " line, the block up to End If (v4's IF … THEN and IF … DO … ENDIF).",
+    ),
     TokenKind.ENDIF: BlockWord(
         "End If",
         _IF,

@@ -68,6 +68,12 @@ async def test_block_words_are_described_as_mintmt_writes_them(client: LanguageC
         assert text.startswith(f"**{spelling}**") and f"```mint\n{block}\n```" in text, needle
         assert "ENDL\n" not in text and "DO\n" not in text  # v4's spellings are not MintMT's
     assert "power" in await _hover(client, uri, PROGRAM, "Startup\n")  # 004:128: run at power-up
+    # If .. Then on one line (002:50) or opening a block up to End If (002:64-68), never v4's DO and ENDIF
+    text = await _hover(client, uri, PROGRAM, "If COMMS")
+    assert (
+        text.startswith("**If** — MintMT block") and "```mint\nIf <condition> Then\n  {statements}\nEnd If\n```" in text
+    )
+    assert "ENDIF\n" not in text and "DO\n" not in text
 
 
 async def test_the_event_a_block_handles_is_described(client: LanguageClient) -> None:

@@ -117,20 +117,33 @@ def _number(value: float) -> int | float:
     return int(value) if value == int(value) else value
 
 
-def constant(name: str, dialect: Dialect = Dialect.V4) -> str | None:
-    if name.upper() in _RESERVED:
-        return f"**{name.upper()}** — {_RESERVED[name.upper()]}"
+def _constant_facts(name: str, dialect: Dialect) -> tuple[str, int | float, str] | None:
+    """A predefined constant of the dialect: its name as its table writes it, its value and what it is."""
     if dialect is Dialect.V3:
         old = database().v3_constants.get(name.upper())
         if old is None:
             return None
-        text = f"**{old.name}** = `{_number(old.value)}` — Mint v3 predefined constant"
-        return f"{text}; Mint v4: {old.v4_name}" if old.v4_name else f"{text}; Mint v4 has no such constant"
+        successor = f"Mint v4: {old.v4_name}" if old.v4_name else "Mint v4 has no such constant"
+        return old.name, _number(old.value), f"Mint v3 predefined constant; {successor}"
     record = database().constants_of(dialect).get(name.upper())
     if record is None:
         return None
-    text = f"**{record.name}** = `{_number(record.value)}` — predefined constant"
-    return f"{text} of {record.keyword}" if record.keyword else text
+    what = f"predefined constant of {record.keyword}" if record.keyword else "predefined constant"
+    return record.name, _number(record.value), what
+
+
+def constant(name: str, dialect: Dialect = Dialect.V4) -> str | None:
+    """Markdown for hover: a reserved word's use, or a constant's value and what it is."""
+    if name.upper() in _RESERVED:
+        return f"**{name.upper()}** — {_RESERVED[name.upper()]}"
+    facts = _constant_facts(name, dialect)
+    return f"**{facts[0]}** = `{facts[1]}` — {facts[2]}" if facts is not None else None
+
+
+def constant_detail(name: str, dialect: Dialect) -> str | None:
+    """Plain text beside a constant offered by completion (an item's detail is not Markdown)."""
+    facts = _constant_facts(name, dialect)
+    return f"= {facts[1]} — {facts[2]}" if facts is not None else None
 
 
 def _where(snapshot: Snapshot, unit: Unit, offset: int) -> str:

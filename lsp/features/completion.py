@@ -219,10 +219,12 @@ def event_names(snapshot: Snapshot) -> list[str]:
 
 
 def _constants(dialect: Dialect) -> Iterator[types.CompletionItem]:
-    for record in database().constants_of(dialect).values():
-        yield types.CompletionItem(
-            label=record.name, kind=types.CompletionItemKind.EnumMember, detail=describe.constant(record.name, dialect)
-        )
+    """The dialect's own predefined constants: v3's are its own (001:1309-1336), none of them v4's."""
+    db = database()
+    records = db.v3_constants if dialect is Dialect.V3 else db.constants_of(dialect)
+    for name in (record.name for record in records.values()):
+        detail = describe.constant_detail(name, dialect)
+        yield types.CompletionItem(label=name, kind=types.CompletionItemKind.EnumMember, detail=detail)
 
 
 def _mintmt_block_word_fits(kind: TokenKind, blocks: frozenset[BlockKind] | None) -> bool:

@@ -51,7 +51,20 @@ async def test_constants_after_underscore(client, tmp_path):
     await open_document(client, uri, text)
     items = await labels_at(client, uri, text, "_\n", 1)
     assert {"_TRUE", "_FALSE", "_hmPOSITIVE_SWITCH"} <= set(items)
+    assert items["_TRUE"].detail == "= 1 — predefined constant"  # a detail is plain text, not Markdown
     assert "SPEED" not in items
+
+
+async def test_a_v3_file_is_offered_the_v3_constants(client, tmp_path):
+    # the v3 guide's table (001:1309-1336): _servo for CONFIG, _limit for ERROR; v4's _cfSERVO is no v3 word
+    client.workspace_did_change_configuration(types.DidChangeConfigurationParams(settings={"mint": {"dialect": "v3"}}))
+    text = "CONFIG = _\n"
+    uri = uri_of(tmp_path / "old.mnt")
+    await open_document(client, uri, text)
+    items = await labels_at(client, uri, text, "_\n", 1)
+    assert {"_servo", "_stepper", "_limit", "_true"} <= set(items)
+    assert items["_servo"].detail == "= 1 — Mint v3 predefined constant; Mint v4: _cfSERVO"  # plain text
+    assert not {"_cfSERVO", "_TRUE", "_hmPOSITIVE_SWITCH"} & set(items)
 
 
 async def test_event_handlers_after_hash_at_line_start(client, tmp_path):

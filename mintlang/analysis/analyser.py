@@ -16,6 +16,7 @@ from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 from functools import cache
 from itertools import chain
+from operator import attrgetter
 
 from mintlang.allocation import without_collector
 from mintlang.analysis.rules import RULES, Rule, memory
@@ -24,7 +25,7 @@ from mintlang.analysis.traversal import Facts, LineScope, gather
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import DEFAULT_SELECT
 from mintlang.controllers import ControllerProfile
-from mintlang.diagnostics import Diagnostic, Span
+from mintlang.diagnostics import Diagnostic
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.semantic.index import LineFacts, line_facts
@@ -114,24 +115,31 @@ def _findings_of_line(
     return found
 
 
-def _by_position(diagnostic: Diagnostic) -> tuple[Span, str]:
-    return diagnostic.span, diagnostic.code
+def _in_position_order(diagnostics: Iterable[Diagnostic]) -> list[Diagnostic]:
+    """The diagnostics by span, then by code; stable, so equals keep the order they were found in.
+
+    Two stable sorts on keys the diagnostics hold, rather than one on a (span, code) tuple made
+    for each: on a file of broken lines those tuples outweighed the rest of the sort.
+    """
+    return sorted(sorted(diagnostics, key=_CODE), key=_SPAN)
+
+
+_CODE = attrgetter("code")
+_SPAN = attrgetter("span")
 
 
 def _first_of_each(diagnostics: Iterable[Diagnostic]) -> list[Diagnostic]:
     """The diagnostics in position order, the first found of each code at each span only.
 
-    Sorted first (a stable sort keeps the order found among equals), so equal ones are
-    neighbours: no set of every position, which took more memory than the diagnostics
-    themselves on a file of broken lines.
+    Sorted first, so equal ones are neighbours: no set of every position, which took more
+    memory than the diagnostics themselves on a file of broken lines.
     """
     distinct: list[Diagnostic] = []
-    last: tuple[Span, str] | None = None
-    for diagnostic in sorted(diagnostics, key=_by_position):
-        place = (diagnostic.span, diagnostic.code)
-        if place != last:
+    last: Diagnostic | None = None
+    for diagnostic in _in_position_order(diagnostics):
+        if last is None or diagnostic.span != last.span or diagnostic.code != last.code:
             distinct.append(diagnostic)
-            last = place
+            last = diagnostic
     return distinct
 
 
@@ -167,7 +175,7 @@ def analyse(
             (finding.diagnostic for finding in memory.findings(model, found.arrays) if finding.unit is unit),
         )
         distinct = _first_of_each(diagnostic for diagnostic in everything if selected(diagnostic.code))
-        per_unit[unit] = sorted(suppress(distinct, document, selected), key=_by_position)
+        per_unit[unit] = _in_position_order(suppress(distinct, document, selected))
     return Analysis(model, tuple(per_unit[Unit.PROGRAM]), tuple(per_unit[Unit.CONFIGURATION]), found)
 
 

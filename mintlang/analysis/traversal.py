@@ -10,7 +10,7 @@ long as the line's syntax does not change.
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 from mintlang.controllers import ControllerProfile
@@ -35,21 +35,26 @@ class LineScope:
 
 
 PlacedStatement = tuple[Unit, n.PlacedLine, n.Statement]
-# The statements whole-application rules look for; few lines have any, so one pass finds them all.
-_SOUGHT = frozenset({n.Jump, n.Define, n.SyntaxError_})
 
 
 @dataclass(frozen=True, slots=True)
 class Facts:
-    """The model and its lines, with the lists the rules ask for."""
+    """The model and its lines, for the rules to filter."""
 
     model: SemanticModel
     lines: IndexedLines
-    sought: Mapping[type, tuple[PlacedStatement, ...]]  # GOSUB/GOTO, DEFINE, and what could not be parsed
 
-    def statements(self, kind: type) -> tuple[PlacedStatement, ...]:
-        """The statements of one of the sought types, IF .. THEN bodies included, in compile order."""
-        return self.sought[kind]
+    def statements(self, kind: type) -> Iterator[PlacedStatement]:
+        """The statements of one type, IF .. THEN bodies included, in compile order.
+
+        Found by a pass over the lines' facts each time, not kept in a list: the lines are
+        made as they are read, and a list would keep one for every statement found (every
+        line of a file of broken lines)."""
+        for unit, line, facts in self.lines:
+            if kind in facts.kinds:
+                for statement in facts.statements:
+                    if type(statement) is kind:
+                        yield unit, line, statement
 
     def keyword_uses(self) -> Iterator[tuple[n.PlacedLine, KeywordUse]]:
         for _, line, facts in self.lines:
@@ -64,10 +69,4 @@ class Facts:
 
 
 def gather(model: SemanticModel) -> Facts:
-    sought: dict[type, list[PlacedStatement]] = {kind: [] for kind in _SOUGHT}
-    for unit, line, facts in model.lines:
-        if not facts.kinds.isdisjoint(_SOUGHT):  # most lines have none
-            for statement in facts.statements:
-                if type(statement) in _SOUGHT:
-                    sought[type(statement)].append((unit, line, statement))
-    return Facts(model, model.lines, {kind: tuple(found) for kind, found in sought.items()})
+    return Facts(model, model.lines)

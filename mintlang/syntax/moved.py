@@ -20,6 +20,7 @@ from itertools import accumulate, chain, islice
 from typing import Generic, TypeVar, overload
 
 from mintlang.syntax.nodes import PlacedLine
+from mintlang.syntax.packed import PackedLines, equal_items
 
 _MOST_PIECES = 16
 T = TypeVar("T")
@@ -115,9 +116,7 @@ class Moved(Sequence[T]):
         return iter(self._flat)
 
     def __eq__(self, other: object) -> bool:
-        if not isinstance(other, Sequence):
-            return NotImplemented
-        return len(self) == len(other) and all(mine == theirs for mine, theirs in zip(self, other, strict=True))
+        return equal_items(self, other)
 
     __hash__ = None  # type: ignore[assignment] - equal to a tuple of the same items, which hashes
 
@@ -133,6 +132,10 @@ class MovedLines(Moved[PlacedLine]):
     @staticmethod
     def move(item: PlacedLine, shift: int, line_shift: int) -> PlacedLine:
         return PlacedLine(item.origin + shift, item.number + line_shift, item.syntax, item.content)
+
+    @staticmethod
+    def flat(items: Iterable[PlacedLine]) -> Sequence[PlacedLine]:
+        return PackedLines.of(items)
 
 
 class MovedOffsets(Moved[int]):

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Hashable, Iterator
 from operator import attrgetter
-from typing import TypeVar
+from typing import NamedTuple, TypeVar
 
 from mintlang.diagnostics import Span
 from mintlang.records import node
@@ -400,13 +400,13 @@ class LineSyntax:
     statements: tuple[Statement, ...]
 
 
-@node
-class PlacedLine:
+class PlacedLine(NamedTuple):
     """A ``LineSyntax`` at its place in a file: ``origin`` is the offset of its first physical line.
 
     Equal lines share one ``syntax`` object, so the syntax names no place: what
     is known of a statement's place is keyed by ``number`` and the statement's
-    index, and what is cached per line text by ``content``.
+    index, and what is cached per line text by ``content``. A named tuple: a
+    document keeps its lines as columns (``PackedLines``) and makes one per read.
     """
 
     origin: int

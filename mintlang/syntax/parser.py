@@ -15,9 +15,10 @@ THEN or DO expected, 2008 TO expected.
 
 from __future__ import annotations
 
+from array import array
 from bisect import bisect_right
-from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass
+from collections.abc import Hashable, Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
 from functools import cached_property
 
 from mintlang.allocation import collector_paused, without_collector
@@ -44,6 +45,7 @@ from mintlang.syntax.lines import (
     take_macro_body,
 )
 from mintlang.syntax.nodes import identity
+from mintlang.syntax.packed import PackedLines
 from mintlang.syntax.spans import span as shared_span
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, Token, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
@@ -69,7 +71,7 @@ class Document:
     dialect: Dialect
     tokens: TokenStream  # lossless: the texts join back to the source
     physical: PhysicalLines  # every physical line, lexed, with its offset
-    placed: Sequence[n.PlacedLine]  # a tuple, or ``MovedLines`` after a re-parse
+    placed: Sequence[n.PlacedLine]  # ``PackedLines``, or ``MovedLines`` after a re-parse
     lexer_issues: tuple[Diagnostic, ...]  # in order
     parse_issues: tuple[Diagnostic, ...]  # in order
     macros: Mapping[str, MacroDefinition]
@@ -155,10 +157,17 @@ class PlacedLines:
     """The logical lines parsed so far, and what parsing them found, at offsets into the file."""
 
     visible: dict[str, MacroDefinition]  # the macros defined so far
-    placed: list[n.PlacedLine]
-    diagnostics: list[Diagnostic]
-    definitions: list[MacroDefinition]
-    expansions: list[Expansion]
+    origins: array[int] = field(default_factory=lambda: array("q"))  # the lines' columns (``PackedLines``)
+    numbers: array[int] = field(default_factory=lambda: array("q"))
+    syntaxes: list[n.LineSyntax] = field(default_factory=list)
+    contents: list[Hashable] = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    definitions: list[MacroDefinition] = field(default_factory=list)
+    expansions: list[Expansion] = field(default_factory=list)
+
+    def placed(self) -> PackedLines:
+        """The lines parsed so far, at their places."""
+        return PackedLines(self.origins, self.numbers, tuple(self.syntaxes), tuple(self.contents))
 
     def parse(self, groups: Iterable[LineGroup], context: ParseContext) -> None:
         """Parse ``groups`` in order, each logical line once per text and macro context."""
@@ -180,7 +189,10 @@ class PlacedLines:
                 self.expansions.extend(expansion.shifted(origin) for expansion in parsed.expansions)
             if parsed.diagnostics:
                 self.diagnostics.extend(diagnostic.shifted(origin) for diagnostic in parsed.diagnostics)
-            self.placed.append(n.PlacedLine(origin, group.number, parsed.syntax, parsed.content))
+            self.origins.append(origin)
+            self.numbers.append(group.number)
+            self.syntaxes.append(parsed.syntax)
+            self.contents.append(parsed.content)
 
 
 @without_collector
@@ -200,14 +212,14 @@ def parse(
     """
     context = ParseContext.of(dialect, controller, macros)
     lexed = lex(source, context.dialect)
-    lines = PlacedLines(dict(macros or {}), [], [], [], [])
+    lines = PlacedLines(dict(macros or {}))
     lines.parse(logical_lines(lexed), context)
     return Document(
         source,
         context.dialect,
         lexed.tokens,
         lexed.lines,
-        tuple(lines.placed),
+        lines.placed(),
         lexed.issues,
         tuple(lines.diagnostics),
         lines.visible,

@@ -122,7 +122,7 @@ class _Reparse:
         new_regroup_end = physical.offsets[resume] if resume < len(physical) else len(source)
         if any(regroup_start <= d.name_span.start < old_regroup_end for d in previous.definitions):
             return None  # a macro defined there: the lines after may read differently now
-        lines = PlacedLines(self._visible_at(regroup_start), [], [], [], [])
+        lines = PlacedLines(self._visible_at(regroup_start))
         lines.parse(groups, context)
         if lines.definitions:
             return None
@@ -133,7 +133,7 @@ class _Reparse:
             previous_length=len(previous.source),
             first_line=first_line,
             old_lines=old_end_line - first_line,
-            new_lines=len(lines.placed),
+            new_lines=len(lines.syntaxes),
             line_shift=line_shift,
         )
         definitions = tuple(
@@ -147,7 +147,7 @@ class _Reparse:
             context.dialect,
             TokenStream(physical),
             physical,
-            MovedLines.spliced(placed, (first_line, old_end_line), lines.placed, shift, line_shift),
+            MovedLines.spliced(placed, (first_line, old_end_line), lines.placed(), shift, line_shift),
             window.spliced(previous.lexer_issues, lexer_issues),
             change.spliced(previous.parse_issues, lines.diagnostics),
             visible,

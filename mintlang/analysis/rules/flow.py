@@ -66,8 +66,7 @@ def _receives_flow(statement: n.Statement) -> bool:
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     for unit, document in model.documents():
-        lines = [(line, indexed) for file, line, indexed in facts.lines if file is unit]
-        yield from _Flow(unit, document, subroutines(unit, model, facts)).findings(lines)
+        yield from _Flow(unit, document, subroutines(unit, model, facts)).findings(facts.lines.of(unit))
         yield from _jumps_out_of_blocks(unit, document, model, facts)
 
 
@@ -75,9 +74,8 @@ def runs_off_the_end(unit: Unit, facts: Facts) -> bool:
     """Whether the controller can run past the file's last line: no END, RETURN, GOTO or endless loop stops
     it there, so code added after it would run as part of what comes before."""
     model = facts.model
-    lines = [(line, indexed) for file, line, indexed in facts.lines if file is unit]
     flow = _Flow(unit, model.document(unit), subroutines(unit, model, facts))
-    flow.findings(lines)
+    flow.findings(facts.lines.of(unit))
     return flow.reachable
 
 

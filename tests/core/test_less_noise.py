@@ -100,6 +100,22 @@ def test_an_undeclared_name_like_a_keyword_that_holds_a_value_is_offered_it_besi
     assert "did you mean" not in foo.message
 
 
+@pytest.mark.parametrize(
+    "source",
+    [
+        # v4 addresses an axis in square brackets or after a dot, never in round ones (000:14497): POS(a) is no
+        # reading of POS, so xpos(a) is offered no POS
+        pytest.param("DIM a\nFOR a = 1 TO 2\n  MOVEA = xpos(a) : GO\nNEXT\n", id="indexed-as-an-array"),
+        # INSTATE is read only (000:12486-12509): a name given a value is offered no read-only keyword
+        pytest.param("state = LIMITFORWARD.0\n", id="given-a-value"),
+    ],
+)
+def test_no_keyword_is_offered_where_it_could_not_stand(source: str) -> None:
+    for undeclared in coded(source, "E3001"):
+        assert "did you mean the keyword" not in undeclared.message
+        assert not [fix.title for fix in undeclared.fixes if fix.title.startswith("Replace")]
+
+
 def test_an_editor_command_is_never_offered_in_a_program() -> None:
     # DEL, LIST, NEW … work at the command line only (v4 guide §3.2): a program that writes one is error 2006
     for source in ("DELL\n", "LISTT\n", "NEWW\n"):

@@ -64,6 +64,29 @@ def test_no_removal_when_a_label_stands_inside_a_block_of_the_run() -> None:
     assert dead.fixes == ()
 
 
+# E3001 on a name written with an index: an array, whose DIM reserves its elements (3.3, 000:1075-1080:
+# DIM my_array(10) before my_array(4) is used), as many as the largest index written.
+UNDECLARED_ARRAYS = [
+    pytest.param("my_var(10) = 100.5\n", "DIM my_var(10)\nmy_var(10) = 100.5\n", id="its-index"),
+    pytest.param(
+        "DIM a\nmy_var(3) = 1\na = my_var(10)\n",
+        "DIM a\nDIM my_var(10)\nmy_var(3) = 1\na = my_var(10)\n",
+        id="the-largest",
+    ),
+]
+
+
+@pytest.mark.parametrize(("source", "expected"), UNDECLARED_ARRAYS)
+def test_an_undeclared_array_is_declared_with_its_size(source: str, expected: str) -> None:
+    assert fixed(source, "E3001", "Declare 'my_var(10)' with DIM") == expected
+    assert errors(expected) == []
+
+
+def test_an_array_indexed_by_no_number_gets_no_dim_whose_size_would_be_a_guess() -> None:
+    (undeclared,) = [d for d in mintlang.check("DIM i\ni = 2\nmy_var(i) = 1\n") if d.code == "E3001"]
+    assert undeclared.fixes == ()
+
+
 # E3004: GOSUB or GOTO to a label the file does not define.
 MISSING_LABELS = [
     pytest.param("GOSUB mian\nEND\n#main\nRETURN\n", "Change to #main", "GOSUB main\nEND\n#main\nRETURN\n", id="typo"),

@@ -42,6 +42,18 @@ async def test_the_dim_goes_with_the_other_dims_not_into_the_loop(client, tmp_pa
     )
 
 
+async def test_an_undeclared_array_is_declared_with_as_many_elements_as_its_largest_index(client, tmp_path):
+    # the guide's array example (3.3, 000:1068-1075) without its DIM: my_var(10) needs DIM my_var(10)
+    text = "REM arrays\nmy_var(10) = 100.5\nPRINT my_var(10)\n"
+    uri = uri_of(tmp_path / "array.mnt")
+    diagnostics = await open_document(client, uri, text)
+    found = await fixes(client, uri, diagnostics, 1)
+    assert "Declare 'my_var' with DIM" not in found  # DIM my_var makes a variable, which takes no index (2016)
+    assert applied(text, found["Declare 'my_var(10)' with DIM"], uri) == (
+        "REM arrays\nDIM my_var(10)\nmy_var(10) = 100.5\nPRINT my_var(10)\n"
+    )
+
+
 async def test_a_missing_label_is_corrected_or_made(client, tmp_path):
     text = "GOSUB mian\nEND\n#main\nRETURN\n"
     uri = uri_of(tmp_path / "label.mnt")

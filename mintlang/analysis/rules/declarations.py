@@ -21,7 +21,9 @@ from mintlang.analysis.rules.v3_keywords import successor
 from mintlang.analysis.suggestions import closest, did_you_mean, keyword_like
 from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.diagnostics import Edit, Fix, Span
+from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
+from mintlang.keyworddb.model import KeywordKind
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, Unit
 from mintlang.syntax import nodes as n
@@ -62,7 +64,8 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
             first = min(undeclared, key=lambda use: (use.unit is Unit.PROGRAM, use.span.start))
             if first.unit not in places:
                 places[first.unit] = _dim_places(model, first.unit)
-            declare[first.unit] = (_add_dim(model, symbol, first.unit, first.span, places[first.unit]),)
+            dim = _add_dim(model, symbol, first.unit, first.span, places[first.unit])
+            declare = {first.unit: (dim,)} if dim is not None else {}
         for occurrence, same_line in _by_line(model, undeclared):
             fixes = declare.get(occurrence.unit, ())
             detail = f"'{occurrence.spelling}' is not declared"
@@ -81,6 +84,7 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
             elif (
                 not _only_a_variable(model, occurrence)
                 and (keyword := _keyword_holding_a_value(occurrence.spelling, model)) is not None
+                and _can_stand_there(keyword, symbol, occurrence, model)
             ):
                 detail += f"; did you mean the keyword '{keyword}'?"  # SPED = 10
                 fixes = (_replace_each(written, keyword), *fixes) if written else fixes
@@ -91,6 +95,20 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
 def _keyword_holding_a_value(spelling: str, model: SemanticModel) -> str | None:
     """The keyword an undeclared name is most likely a misspelling of (``SPED = 10``), of those read or written."""
     return keyword_like(spelling.upper(), model.controller.controller, values=True, dialect=model.program.dialect)
+
+
+def _can_stand_there(keyword: str, symbol: Symbol, occurrence: Occurrence, model: SemanticModel) -> bool:
+    """Whether ``keyword`` can stand where the name is written: with an index (``xpos(a)``) only a function, as
+    v4 addresses axes and channels in square brackets or after a dot (MintMT writes them in round brackets
+    too, MT-18); given a value (``state = LIMITFORWARD.0``) only a keyword that can be written."""
+    dialect = model.program.dialect
+    word = database().keywords_of(dialect).get(keyword)
+    if word is None:
+        return True
+    if symbol.kind is SymbolKind.ARRAY and dialect is not Dialect.MINTMT and word.kind is not KeywordKind.FUNCTION:
+        return False
+    row = word.attributes_for(model.controller.controller) if occurrence.is_write else None
+    return row is None or row.write
 
 
 def _only_a_variable(model: SemanticModel, occurrence: Occurrence) -> bool:
@@ -134,13 +152,21 @@ def _written_at(model: SemanticModel, unit: Unit, span: Span) -> str:
     return model.document(unit).source[span.start : span.end]
 
 
-def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span, places: _DimPlaces) -> Fix:
+def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span, places: _DimPlaces) -> Fix | None:
     """Insert ``DIM name`` on its own line with the file's other DIMs, else at the top: never inside a loop.
 
     After the last DIM outside any block above the first use, with its indentation; without one, above
     the file's first statement (its opening remarks stay first, and an AUTO or PROTECT that opens the
-    file stays first too). A DIM list continued over lines stays whole either way.
+    file stays first too). A DIM list continued over lines stays whole either way. A name written with
+    an index is an array, whose DIM needs its size: the largest index written as a number (the elements
+    count from 1); None when no index is a number, as the size is then the author's to choose.
     """
+    declared = symbol.name
+    if symbol.kind is SymbolKind.ARRAY:
+        size = _largest_index(model, symbol)
+        if size is None:
+            return None
+        declared = f"{symbol.name}({size})"
     document = model.document(unit)
     index = document.line_index
     placed = document.placed
@@ -159,8 +185,20 @@ def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span, place
     while indent_end < len(text) and text[indent_end] in " \t":
         indent_end += 1
     newline = "\r\n" if "\r\n" in text else "\n"
-    declaration = f"{text[indent_start:indent_end]}DIM {symbol.name}{newline}"
-    return Fix(f"Declare '{symbol.name}' with DIM", (Edit(Span(start, start), declaration),))
+    declaration = f"{text[indent_start:indent_end]}DIM {declared}{newline}"
+    return Fix(f"Declare '{declared}' with DIM", (Edit(Span(start, start), declaration),))
+
+
+def _largest_index(model: SemanticModel, symbol: Symbol) -> int | None:
+    """The largest whole number an array is indexed with anywhere in the application (None: no number)."""
+    numbers = [
+        element.index.value
+        for _, _, facts in model.lines
+        for element in facts.elements
+        if element.name.identity == symbol.identity and type(element.index) is n.Number
+    ]
+    whole = [int(number) for number in numbers if number == int(number) and number >= 1]
+    return max(whole, default=None)
 
 
 def _first_token(line: n.PlacedLine) -> int:

@@ -6,7 +6,8 @@ by closures and bound methods (``controller.py``, every compiled statement):
 ``copy.deepcopy`` copies objects but not functions, so a copied controller
 would run closures still bound to the original. A snapshot records instead what
 each mutable object reachable from its roots holds, one level deep (a list's
-items, an instance's attributes, a closure cell's value), and ``restore`` puts
+items, an instance's attributes, the value of a closure cell that a closure
+rebinds with ``nonlocal``), and ``restore`` puts
 that back into the same objects: every closure, bound method and outside
 reference stays right, and the objects made since the snapshot are simply no
 longer referenced. What it keeps is the size of the state, not of the run.
@@ -21,6 +22,7 @@ from __future__ import annotations
 
 import contextlib
 import dataclasses
+import dis
 import enum
 import functools
 import re
@@ -85,7 +87,7 @@ def _put_list(target: list[Any] | bytearray, state: Any) -> None:
     target[:] = state
 
 
-def _put_dict(target: dict[Any, Any], state: tuple[tuple[Any, Any], ...]) -> None:
+def _put_dict(target: dict[Any, Any], state: dict[Any, Any]) -> None:
     target.clear()
     target.update(state)
 
@@ -121,8 +123,7 @@ def _list(item: list[Any], saved: list[tuple[Put, Any, Any]], pending: list[Any]
 
 
 def _dict(item: dict[Any, Any], saved: list[tuple[Put, Any, Any]], pending: list[Any]) -> None:
-    state = tuple(item.items())
-    saved.append((_put_dict, item, state))
+    saved.append((_put_dict, item, item.copy()))
     pending.extend(item)
     pending.extend(item.values())
 
@@ -148,15 +149,33 @@ def _immutable(item: tuple[Any, ...] | frozenset[Any], saved: list[tuple[Put, An
 
 
 def _function(item: types.FunctionType, saved: list[tuple[Put, Any, Any]], pending: list[Any]) -> None:
-    for cell in item.__closure__ or ():
+    """A closure: what its cells hold is walked; a cell it rebinds (``nonlocal``) is saved too. A cell no function
+    of the run rebinds holds the same object for ever (its contents are walked, through this or another closure),
+    and those are most of them: the compiled program's."""
+    code = item.__code__
+    rebound = _REBOUND.get(code)
+    if rebound is None:
+        rebound = _REBOUND[code] = _rebinds(code)
+    for name, cell in zip(code.co_freevars, item.__closure__ or (), strict=True):
         try:
             value = cell.cell_contents
         except ValueError:  # a closure over a name not bound yet
             value = _EMPTY
-        saved.append((_put_cell, cell, value))
+        if name in rebound:
+            saved.append((_put_cell, cell, value))
         pending.append(value)
     pending.extend(item.__defaults__ or ())
     pending.extend((item.__kwdefaults__ or {}).values())
+
+
+_REBOUND: dict[types.CodeType, frozenset[str]] = {}  # by a function's code: the names of its cells it rebinds
+
+
+def _rebinds(code: types.CodeType) -> frozenset[str]:
+    """The free variables ``code`` assigns to or deletes (declared ``nonlocal`` in it)."""
+    free = frozenset(code.co_freevars)
+    changing = {"STORE_DEREF", "DELETE_DEREF"}
+    return frozenset(op.argval for op in dis.get_instructions(code) if op.opname in changing and op.argval in free)
 
 
 def _method(item: types.MethodType, saved: list[tuple[Put, Any, Any]], pending: list[Any]) -> None:

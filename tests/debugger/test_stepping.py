@@ -82,7 +82,7 @@ def test_pause_stops_a_running_program_where_it_is(debug: Debug) -> None:
     client = debug("DIM n\nLOOP\n  n = n + 1\nENDL\n")
     client.body("pause", {"threadId": 1})
     assert client.stopped()["reason"] == "pause"
-    assert client.line() in (2, 3, 4)
+    assert client.line() in (1, 2, 3, 4)  # on a busy machine the pause may come before the first statement ran
     assert int(client.values()["n"]) >= 0
     client.body("terminate", {})
     client.event("terminated")

@@ -91,6 +91,11 @@ def describe(word: BlockWord) -> str:
     return f"**{word.spelling}** — MintMT block\n\n```mint\n{word.block}\n```\n\n{word.summary}"
 
 
+# The events an Event block can name (MT-13): a host's write to comms locations 1 to 5 (002:19) and the move
+# buffer running low (004:114), spelt as the notes spell them.
+EVENT_BLOCK_NAMES = (*(f"Comms{location}" for location in range(1, 6)), "MOVEBUFFERLOW")
+
+
 def event_name(name: str) -> str | None:
     """What the event an ``Event`` block names is, for the events MintMT raises (MT-13); None otherwise."""
     event = event_of(name, Dialect.MINTMT)

@@ -3,16 +3,18 @@
 The cursor's line is lexed as typed; user names come from the last analysis.
 
 After GOSUB/GOTO: labels; after ``#`` at the start of a line: event handlers
-of the controller; after ``_``: predefined constants; at the start of a
-statement: commands, writable parameters, variables, macros and block
-snippets (ELSE, ENDL, EXIT ... only inside their blocks; MintMT's End Loop,
-End If, End Event, End Startup too, and its Event and Startup only outside
-every block); inside an expression: readable keywords, functions, variables,
-arrays and macros; after a complete operand: the operators and the words that
-continue the statement being written (THEN in an IF, TO in a FOR ...); after a keyword's dot (``SPEED.``, ``IN.``):
-the axes or channels it addresses on the controller and the macros that name
-them. Nothing inside comments, strings and character constants, after a
-number's decimal point, or where a new name is being declared (DIM, DEFINE).
+of the controller; after MintMT's ``Event``: the events its blocks handle;
+after ``_``: predefined constants; at the start of a statement: commands,
+writable parameters, variables, macros and block snippets (ELSE, ENDL,
+EXIT ... only inside their blocks; MintMT's End Loop, End If, End Event, End
+Startup too, and its Event and Startup only outside every block); inside an
+expression: readable keywords, functions, variables, arrays and macros; after
+a complete operand: the operators and the words that continue the statement
+being written (THEN in an IF, TO in a FOR ...); after a keyword's dot
+(``SPEED.``, ``IN.``): the axes or channels it addresses on the controller and
+the macros that name them. Nothing inside comments, strings and character
+constants, after a number's decimal point, or where a new name is being
+declared (DIM, DEFINE).
 """
 
 from __future__ import annotations
@@ -249,6 +251,16 @@ def _mintmt_block_words(blocks: frozenset[BlockKind] | None) -> Iterator[types.C
         )
 
 
+def _event_blocks() -> Iterator[types.CompletionItem]:
+    """After MintMT's ``Event``: the events a block can handle."""
+    for name in mintmt_words.EVENT_BLOCK_NAMES:
+        yield types.CompletionItem(
+            label=name,
+            kind=types.CompletionItemKind.Event,
+            documentation=types.MarkupContent(kind=types.MarkupKind.Markdown, value=mintmt_words.event_name(name)),
+        )
+
+
 def _snippets(dialect: Dialect, blocks: frozenset[BlockKind] | None) -> Iterator[types.CompletionItem]:
     snippets = SNIPPETS
     if dialect is Dialect.MINTMT:  # MintMT's own spellings of the blocks it writes otherwise
@@ -375,6 +387,8 @@ def complete(
     if dotted is not None:
         return dotted
     previous = before[-1] if before else None
+    if previous is not None and previous.kind is TokenKind.EVENT:
+        return list(_event_blocks())
     if previous is not None and (previous.kind in _NOTHING_AFTER or previous.text.endswith(".")):
         return []  # a new name, a complete statement, or the decimals of a number
     if partial is not None and partial.text.startswith("_"):

@@ -140,6 +140,16 @@ async def test_mintmt_block_words_are_offered_only_where_they_can_stand(
     assert labels & (BLOCK_WORDS | {"Event … End Event", "Startup … End Startup"}) == offered
 
 
+async def test_after_event_the_events_a_block_can_handle_are_offered(client: LanguageClient) -> None:
+    # MT-13: a host's write to comms locations 1 to 5 (002:19) and MOVEBUFFERLOW (004:114)
+    uri = "file:///work/event_names.mnt"
+    text = "Loop\nEnd Loop\nEvent \n"
+    await open_document(client, uri, text)
+    items = await _labels(client, uri, text, "Event \n", 6)
+    assert list(items) == ["Comms1", "Comms2", "Comms3", "Comms4", "Comms5", "MOVEBUFFERLOW"]
+    assert "comms location 3" in items["Comms3"].documentation.value
+
+
 async def test_v4_files_keep_v4_closers(client: LanguageClient) -> None:
     uri = "file:///work/v4.mnt"
     text = "LOOP\n  GO.0\n  \nENDL\n"

@@ -11,8 +11,9 @@ whose text uses another macro fails with a syntax error (3.5).
 from __future__ import annotations
 
 from bisect import bisect_left, bisect_right
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
+from functools import cache, partial
 from itertools import islice
 
 from mintlang.analysis.findings import Finding, mint_error
@@ -267,6 +268,7 @@ def _jump_words(facts: Facts) -> dict[tuple[Unit, Span], str]:
 
 def _labels(facts: Facts, jumps: dict[tuple[Unit, Span], str]) -> Iterator[Finding]:
     model = facts.model
+    runs_on = cache(partial(runs_off_the_end, facts=facts))  # the flow followed once per file, if at all
     for unit, table in model.symbols.labels.items():
         defined = [symbol.name for symbol in table.values() if symbol.definitions]
         for symbol in table.values():
@@ -278,19 +280,25 @@ def _labels(facts: Facts, jumps: dict[tuple[Unit, Span], str]) -> Iterator[Findi
                 for reference in symbol.references:
                     elsewhere = _defined_in_other_file(model, unit, symbol)
                     detail = f"no label #{reference.spelling} in this file" + elsewhere
-                    fixes = _label_fixes(facts, unit, reference, defined, jumps.get((unit, reference.span)))
+                    word = jumps.get((unit, reference.span))
+                    fixes = _label_fixes(model, unit, reference, defined, word, runs_on=runs_on)
                     yield Finding(unit, mint_error(3004, reference.span, detail, fixes=fixes))
 
 
 def _label_fixes(
-    facts: Facts, unit: Unit, reference: Occurrence, defined: list[str], word: str | None
+    model: SemanticModel,
+    unit: Unit,
+    reference: Occurrence,
+    defined: list[str],
+    word: str | None,
+    *,
+    runs_on: Callable[[Unit], bool],
 ) -> tuple[Fix, ...]:
     """The label it resembles, where the name is written here (not in a macro's text); and the label made,
     at the end of the file: a subroutine that returns for a GOSUB, a bare label for a GOTO. A subroutine
     goes where the program cannot run into it (the manual's structure: main program, END, subroutines,
     000:279-295), so an END comes first when the code above could run past the end of the file: ending
-    there is what the controller did anyway."""
-    model = facts.model
+    there is what the controller did anyway (``runs_on``: whether a file's code can run past its end)."""
     fixes: list[Fix] = []
     by_case = {name.upper(): name for name in defined}
     close = closest(reference.spelling.upper(), by_case, likeness=0.7)
@@ -299,7 +307,7 @@ def _label_fixes(
     text = model.document(unit).source
     newline = "\r\n" if "\r\n" in text else "\n"
     finish_last_line = newline if text and not text.endswith(("\n", "\r")) else ""
-    stop = f"END{newline}" if word == "GOSUB" and runs_off_the_end(unit, facts) else ""
+    stop = f"END{newline}" if word == "GOSUB" and runs_on(unit) else ""
     body = f"{newline}RETURN" if word == "GOSUB" else ""
     label = f"{finish_last_line}{stop}{newline}#{reference.spelling}{body}{newline}"
     kind = "subroutine" if word == "GOSUB" else "label"

@@ -11,7 +11,8 @@ simulated minutes issue 15 names. Each round, paired:
 - step back: the debugger, paused at the program's last statement, steps back one statement;
 - reverse-continue: from there, back to the last hit of a breakpoint in the loop;
 - reverse-continue to the start: from there, back to a breakpoint before the loop, across the ten
-  minutes (every checkpoint's stretch is searched, latest first).
+  minutes (every checkpoint's stretch is searched, latest first);
+- forward, no checkpoints: forward again with checkpoints turned off, what they cost it.
 
 Going back restores the latest checkpoint before the point and runs on from it
 (``runtime/debugger/checkpoints.py``). Figures are wall seconds, medians (min-max) over the
@@ -32,6 +33,7 @@ import time
 import tracemalloc
 from collections.abc import Callable
 from pathlib import Path
+from unittest import mock
 
 from mintlang.runtime import snapshot
 from mintlang.runtime.debugger import stepping
@@ -110,6 +112,22 @@ def round_trip(application: Application, last_line: int) -> tuple[tuple[float, .
     return (forward, back, reverse, to_start), kept
 
 
+def _unsaved(roots: object, outside: object = ()) -> snapshot.Snapshot:
+    raise snapshot.NotSnapshotted("checkpoints turned off for the benchmark")
+
+
+def forward_without_checkpoints(application: Application, last_line: int) -> float:
+    """Forward to the last statement with no checkpoint taken (the debugger falls back to none), in seconds."""
+    arrivals = Arrivals()
+    breakpoints = Breakpoints(layout(application))
+    execution = Execution(application, breakpoints, arrivals)
+    breakpoints.replace("program", [{"line": last_line}])
+    with mock.patch.object(snapshot, "take", _unsaved):
+        forward = timed(arrivals, lambda: execution.start(stepping.cont(-1)))
+    execution.terminate()
+    return forward
+
+
 def saving(source: str) -> tuple[int, float, float, float]:
     """(bytes one snapshot holds, ms to take one, to restore one, to ``copy.deepcopy`` the state), halfway."""
     found: list[tuple[int, float, float, float]] = []
@@ -151,7 +169,7 @@ def main() -> None:
     options = parser.parse_args()
     source = program(options.cycles)
     names = ("reference (no debugger)", "forward (debugger)", "step back", "reverse-continue")
-    names += ("reverse-continue to start",)
+    names += ("reverse-continue to start", "forward, no checkpoints")
     rows: dict[str, list[float]] = {name: [] for name in names}
     simulated_ms = 0
     kept = 0
@@ -165,6 +183,7 @@ def main() -> None:
             rows["reference (no debugger)"].append(time.perf_counter() - began)
             simulated_ms = result.stop.time_ms
             times, kept = round_trip(application, source.count("\n"))
+            times += (forward_without_checkpoints(application, source.count("\n")),)
             for name, seconds in zip(list(rows)[1:], times, strict=True):
                 rows[name].append(seconds)
     simulated_s = simulated_ms / 1000

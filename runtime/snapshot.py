@@ -33,6 +33,8 @@ from dataclasses import dataclass
 from pathlib import PurePath
 from typing import Any
 
+from mintlang.allocation import kept_without_collector
+
 _OWN = "mintlang."  # the modules whose classes a snapshot knows how to walk
 _ATOMIC: frozenset[type] = frozenset(
     {int, float, complex, bool, str, bytes, type(None), range, types.CodeType, types.BuiltinFunctionType}
@@ -61,6 +63,7 @@ class Snapshot:
         return len(self.saved)
 
 
+@kept_without_collector  # the snapshot outlives the call: its hundreds of containers would set off full collections
 def take(roots: Iterable[object], outside: Collection[object] = ()) -> Snapshot:
     """A snapshot of everything reachable from ``roots`` but not through ``outside``; raises ``NotSnapshotted``."""
     seen = {id(item) for item in outside}

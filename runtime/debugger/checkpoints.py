@@ -25,7 +25,7 @@ from mintlang.runtime.snapshot import Snapshot
 
 INTERVAL = 1024  # work between two checkpoints: about 20 ms to re-run, 4 ms to save (benchmarks/debugger_step_back.py)
 DENSE = 4  # checkpoints kept at each spacing, from one interval apart to far apart
-LIMIT = 48  # checkpoints kept at most: each holds the simulation's state (190 kB for 12 axes)
+LIMIT = 48  # checkpoints kept at most: each holds the simulation's state (about 100 kB for 12 axes)
 
 
 @dataclass(frozen=True, slots=True)

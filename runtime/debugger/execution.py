@@ -127,7 +127,7 @@ class Execution:
         self._send(plan)
 
     def rerun(self, plan: Plan) -> None:
-        """Start again from the beginning with ``plan`` (the editor asked to go back)."""
+        """Go back and run on with ``plan`` (the editor asked to go back): from a checkpoint, else from the start."""
         self._send(_Rerun(plan))
 
     def step_back(self, at: Point) -> None:

@@ -3,8 +3,8 @@
 A *point* is one attempt of the interpreter to run a statement, numbered from
 0 in the order they happen. The simulator is deterministic, so the number
 names the same moment in every run of the same application with the same
-interventions: stepping back to point ``k`` is running again from the start
-and stopping at ``k`` (``history.py``). A statement that blocks (``PAUSE``,
+interventions: stepping back to point ``k`` is running again, from a
+checkpoint taken before ``k``, and stopping at ``k`` (``history.py``). A statement that blocks (``PAUSE``,
 ``WAIT``, a full move buffer) is attempted again on later ticks; those
 attempts are *resumed* points, where stepping never stops, so ``next`` over a
 ``PAUSE`` stops after it has passed.

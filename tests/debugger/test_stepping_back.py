@@ -1,7 +1,7 @@
 """Stepping back and reverse-continue land where a forward run stood, with the same state.
 
-Going back re-runs the program from the start to the earlier point
-(``runtime/debugger/history.py``); these tests step forward through a
+Going back restores a checkpoint taken before the earlier point and runs on
+to it (``runtime/debugger/checkpoints.py``); these tests step forward through a
 program recording each stop, then walk back and compare every stop with the
 forward one. The values are worked out by hand from the program.
 """

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.diagnostics import Span, split_lines
-from mintlang.migrate.context import LABEL, MARKER, Context, FileView, name_tag
+from mintlang.migrate.context import LABEL, MARKER, Context, FileView, name_tag, per_pass
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Replace, Rule
 from mintlang.migrate.rules.explicit_axes import axis_keyword
@@ -76,18 +76,17 @@ class DeclareVariables(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         declared = _dimmed(context)
-        commented = [(file.unit, span) for file, span in missing_rem_spans(context)]  # STOP following
-        indexed = {event.name.identity for _, _, facts in context.model.lines for event in facts.names if event.element}
         for unit, file in context.files.items():
             wanted: dict[str, tuple[int, str]] = {}
+            visible = declared[unit] | (declared[Unit.CONFIGURATION] if unit is Unit.PROGRAM else set())
             for symbol in context.model.symbols.variables.values():
-                if not _user_name(context, symbol.name):
-                    continue
+                if symbol.identity in visible or not _user_name(context, symbol.name):
+                    continue  # all of them in the pass confirming this one: the rest is not worked out
+                commented = _commented(context)
                 uses = [o for o in symbol.occurrences() if o.unit is unit and not _inside(o, commented)]
-                visible = declared[unit] | (declared[Unit.CONFIGURATION] if unit is Unit.PROGRAM else set())
-                if not uses or symbol.identity in visible:
+                if not uses:
                     continue
-                if symbol.kind is SymbolKind.ARRAY or symbol.identity in indexed:
+                if symbol.kind is SymbolKind.ARRAY or symbol.identity in _indexed(context):
                     yield self.flag(file, uses[0].span, f"array '{symbol.name}' is used but never dimensioned")
                     continue
                 if unit is Unit.PROGRAM and _first_use_in_configuration(symbol):
@@ -97,6 +96,20 @@ class DeclareVariables(Rule):
             if wanted:
                 names = [spelling for _, spelling in sorted(wanted.values())]
                 yield insert_lines(file, [f"DIM {name}" for name in names])
+
+
+@per_pass
+def _commented(context: Context) -> list[tuple[Unit, Span]]:
+    """The statements that are a comment missing its REM (``STOP following``)."""
+    return [(file.unit, span) for file, span in missing_rem_spans(context)]
+
+
+@per_pass
+def _indexed(context: Context) -> frozenset[str]:
+    """The identities of the names written with an index anywhere (``name(i)``)."""
+    return frozenset(
+        event.name.identity for _, _, facts in context.model.lines for event in facts.names if event.element
+    )
 
 
 def _inside(occurrence: Occurrence, spans: list[tuple[Unit, Span]]) -> bool:

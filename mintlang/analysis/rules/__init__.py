@@ -30,6 +30,7 @@ from mintlang.analysis.rules import (
     keyword_usage,
     limits,
     line_length,
+    operands,
     print_format,
     startup,
     unused,
@@ -74,6 +75,7 @@ RULES: tuple[Rule, ...] = (
     Rule("addressing", each_line=addressing.each_line, dialects=_V4_ATTRIBUTES),
     Rule("values", each_line=values.each_line, dialects=_V4_ATTRIBUTES),
     Rule("empty-values", each_line=empty_values.each_line),
+    Rule("operands", each_line=operands.each_line, dialects=frozenset({Dialect.V4})),
     Rule("print-format", each_line=print_format.each_line, dialects=frozenset({Dialect.V4})),
     Rule("functions", each_line=functions.each_line, dialects=frozenset({Dialect.V4})),  # MintMT's MOVER(0) is no call
     Rule("v3-access", each_line=v3_access.each_line, dialects=frozenset({Dialect.V3})),

@@ -15,7 +15,8 @@ GROUP = Group(
             "operator with nothing after it, a command used where a value is needed, an expression where the "
             "syntax takes only a number or a simple variable (an array's size, an axis in brackets), INPUT into "
             "an array element, a string that is not closed before the end of the line, a function given more or "
-            "fewer values than its format takes (`POW(2)`, `SIN(1, 2)`), or an EXIT outside any loop of its "
+            "fewer values than its format takes (`POW(2)`, `SIN(1, 2)`), a command given more or fewer operands "
+            "than its format writes (`LOCATE 10`, `LINE 1`), or an EXIT outside any loop of its "
             "subroutine (raised when it runs: an EXIT never leaves a caller's loop).",
             why="The compiler stops at the first statement it cannot read and the program never starts. The "
             "controller's message names only the line, not what is wrong in it.",
@@ -23,7 +24,7 @@ GROUP = Group(
                 before="DIM a = 1\nDIM b = 2\nIF (a > b THEN PRINT a\n",
                 after="DIM a = 1\nDIM b = 2\nIF (a > b) THEN PRINT a\n",
             ),
-            manual=("v4:18920", "v4:4611", "v4:9167", "v4:18430", "v4:10224", "v4:15152"),
+            manual=("v4:18920", "v4:4611", "v4:9167", "v4:18430", "v4:10224", "v4:15152", "v4:13685"),
             fix="The message says what was found where, and what to write depends on the intent.",
             safety=FixSafety.NONE,
         ),
@@ -43,8 +44,9 @@ GROUP = Group(
         RuleDoc(
             2005,
             catches="A parameter keyword standing alone as a statement, neither read nor given a value "
-            "(`SPEED` on its own line, `COMMS(1)`), a keyword given `=` and no value (`SPEED.0 =`, `SPEED = ,`), PAUSE with no condition, "
-            "a function written as a statement (`SIN(30)`), or AXES without the list of axes in a program.",
+            "(`SPEED` on its own line, `COMMS(1)`), a keyword given `=` and no value (`SPEED.0 =`, "
+            "`SPEED = ,`), PAUSE with no condition, a function written as a statement (`SIN(30)`), or AXES "
+            "without the list of axes in a program.",
             why="A parameter is a value: as a statement it does nothing the compiler can make sense of. "
             "It is often a line whose `= value` was lost, or a comment missing its REM.",
             example=Example(

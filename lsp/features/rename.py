@@ -62,18 +62,20 @@ def _target(snapshot: Snapshot, offset: int) -> tuple[Symbol, Occurrence]:
     raise RenameRefused("There is no variable, array, label or macro here")
 
 
-def _not_a_name(name: str, settings: Settings) -> str | None:
-    """Why ``name`` cannot name a user's symbol in the dialect, in words; None when it can."""
+def _not_a_name(name: str, settings: Settings, kind: SymbolKind) -> str | None:
+    """Why ``name`` cannot name a user's symbol of ``kind`` in the dialect, in words; None when it can."""
     tokens = [token for token in lex(name, settings.dialect).tokens if token.kind is not TokenKind.NEWLINE]
     single = len(tokens) == 1 and tokens[0].text == name
-    kind = tokens[0].kind if single else None
-    if kind is TokenKind.NAME:
+    found = tokens[0].kind if single else None
+    if found is TokenKind.NAME:
         return None
-    if kind is TokenKind.CONSTANT:
-        return f"'{name}' is the Mint constant {name.upper()}"
-    if single and name.isalnum() and kind is not TokenKind.INVALID:  # a keyword, REM and abbreviations included
+    taken = f"the {kind} cannot take its name"
+    if found is TokenKind.CONSTANT:
+        return f"'{name}' is the Mint constant {name.upper()}: {taken}"
+    if single and name.isalnum() and found is not TokenKind.INVALID:  # a keyword, REM and abbreviations included
         full = abbreviated(tokens[0], settings.words)
-        return f"'{name}' is the abbreviation of {full}" if full else f"'{name}' is the Mint keyword {name.upper()}"
+        what = f"the abbreviation of {full}" if full else f"the Mint keyword {name.upper()}"
+        return f"'{name}' is {what}: {taken}"
     return (
         f"'{name}' is not a valid Mint name: a name starts with a letter, or _ and a letter, "
         "and goes on with letters, digits and _"
@@ -105,9 +107,9 @@ def _clash(name: str, symbol: Symbol, other: Symbol) -> str:
 
 
 def _check_name(snapshot: Snapshot, symbol: Symbol, name: str) -> None:
-    refusal = _not_a_name(name, snapshot.settings)
+    refusal = _not_a_name(name, snapshot.settings, symbol.kind)
     if refusal is not None:
-        raise RenameRefused(f"{refusal}: the {symbol.kind} cannot take its name")
+        raise RenameRefused(refusal)
     if symbol.kind is SymbolKind.LABEL and event_of(name, snapshot.settings.dialect) is not None:
         raise RenameRefused(f"#{name} names an event handler: the subroutine would become one")
     for other in _rivals(snapshot.model.symbols, symbol):

@@ -3,7 +3,10 @@ have elements (error 2016, "Invalid index", 12.4); an array's size and initial
 values are numbers written in its DIM, not expressions (DIM, 000:9167-9171),
 because the compiler reserves and fills the array (2003 otherwise). INPUT reads
 into a variable, never an array element (the FAQ, 000:18430-18435): a syntax
-error, 2003, since its format takes a variable (000:12212).
+error, 2003, since its format takes a variable (000:12212). COMMS is an array Mint
+defines (000:8287-8293): 99 general elements, and 100 to 255 mapped onto the
+controller's parameters (000:2566-2584); an element outside 1 to 255, on this node
+or another (``COMMS(5,10)``, 000:2556-2559), is an invalid index too.
 """
 
 from __future__ import annotations
@@ -11,12 +14,14 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
+from mintlang.analysis.rules.functions import calls_in
 from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.semantic.constants import constant_integer, constant_value
 from mintlang.semantic.symbols import SymbolKind
 from mintlang.syntax import nodes as n
 
 _NUMBERS = (n.Number, n.CharConstant, n.ConstantRef)
+_COMMS_ELEMENTS = range(1, 256)
 
 
 def _is_number(expression: n.Expression) -> bool:
@@ -27,7 +32,8 @@ def _is_number(expression: n.Expression) -> bool:
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
-    """Sizes and values of DIM written as expressions; INPUT into an element."""
+    """Sizes and values of DIM written as expressions; INPUT into an element; COMMS elements."""
+    yield from _comms_elements(scope)
     for statement in scope.facts.statements:
         if isinstance(statement, n.Input) and isinstance(statement.target, n.ElementRef):
             name = statement.target.name.text
@@ -44,6 +50,17 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             if not _is_number(value):
                 detail = f"the values of {statement.name.text} must be numbers, not expressions"
                 yield Finding(scope.unit, mint_error(2003, value.span, detail))
+
+
+def _comms_elements(scope: LineScope) -> Iterator[Finding]:
+    for call in calls_in(scope.facts.statements):
+        if call.function != "COMMS" or not call.arguments:
+            continue
+        element = call.arguments[-1]
+        index = constant_integer(element, scope.dialect)
+        if index is not None and index not in _COMMS_ELEMENTS:
+            detail = f"COMMS element {index} does not exist: the Comms array's elements are 1 to 255"
+            yield Finding(scope.unit, mint_error(2016, element.span, detail))
 
 
 def _size_problems(scope: LineScope, statement: n.Dim) -> Iterator[Finding]:

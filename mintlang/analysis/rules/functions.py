@@ -53,7 +53,7 @@ class _Statements:
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
-    for call in _calls(scope.facts.statements):
+    for call in calls_in(scope.facts.statements):
         arity = _arity(call.function, scope.dialect)
         if arity is not None and not arity.holds(len(call.arguments)):
             given = len(call.arguments)
@@ -77,7 +77,7 @@ def _as_statement(scope: LineScope, statement: n.FunctionStatement) -> Iterator[
         yield Finding(scope.unit, mint_error(2005, call.spelling_span, f"{call.function} must be {what}"))
 
 
-def _calls(statements: tuple[n.Statement, ...]) -> Iterator[n.Call]:
+def calls_in(statements: tuple[n.Statement, ...]) -> Iterator[n.Call]:
     """Every call a line makes: in its expressions, and as a statement (``CAMTABLE(0, a, NULL)``)."""
     for statement in statements:
         if type(statement) is n.FunctionStatement:

@@ -76,8 +76,8 @@ GROUP = Group(
         RuleDoc(
             2016,
             catches="An array element whose index, known when compiling, lies outside 1 to the array's "
-            "size (`speeds(0)`, `speeds(101)` in an array of 100), or an element of a name that is not an "
-            "array.",
+            "size (`speeds(0)`, `speeds(101)` in an array of 100), an element of a name that is not an "
+            "array, or a COMMS element outside 1 to 255 (`COMMS(0)`).",
             why="Arrays are numbered from 1, not 0; an index outside them fails when the line runs.",
             example=Example(
                 before="DIM speeds(100)\nspeeds(101) = 2000\n",

@@ -29,6 +29,7 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Attributes, Keyword, KeywordKind
 from mintlang.lsp import describe, mintmt_words
+from mintlang.lsp.features.signature import callee_at
 from mintlang.lsp.lookup import WORD_KINDS, prefix_tokens, significant
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
@@ -76,6 +77,8 @@ _MINTMT_INSIDE = {
     TokenKind.ENDSTARTUP: frozenset({BlockKind.STARTUP}),
 }
 _OUTSIDE_EVERY_BLOCK = frozenset({TokenKind.EVENT, TokenKind.STARTUP})
+# NULL stands for no array where CAMTABLE takes its optional master distance table, its third operand (000:7958).
+_NULL_OPERANDS = {"CAMTABLE": 2}
 _UNARY = frozenset({"NOT", "~"})  # the operators that can start an operand
 _CONTINUATIONS = frozenset({"THEN", "DO", "TO", "STEP", "USING"})  # statement words that follow an operand
 _SINGLE_QUOTES = "'\u2018\u2019"
@@ -404,7 +407,24 @@ def complete(
     if not statement and previous is not None and previous.kind in _OPERAND_ENDS:
         return list(_continuations(_statement_words(snapshot, before)))
     items = [*_keywords(snapshot, statement, blocks), *_symbols(snapshot)]
-    return items + list(_snippets(snapshot.settings.dialect, blocks)) if statement else items
+    if statement:
+        return items + list(_snippets(snapshot.settings.dialect, blocks))
+    return _null(snapshot, before) + items
+
+
+def _null(snapshot: Snapshot, before: list[Token]) -> list[types.CompletionItem]:
+    """NULL, first, where the cursor is in an operand that takes it; else nothing."""
+    operand = callee_at(before, snapshot.settings)
+    name = snapshot.settings.words.keyword_name(operand.keyword.text) if operand is not None else None
+    if operand is None or not operand.bracketed or _NULL_OPERANDS.get(name or "") != operand.operand:
+        return []
+    text = describe.constant("NULL")
+    documentation = types.MarkupContent(kind=types.MarkupKind.Markdown, value=text) if text else None
+    return [
+        types.CompletionItem(
+            label="NULL", kind=types.CompletionItemKind.Constant, detail="no array", documentation=documentation
+        )
+    ]
 
 
 def register(server: MintServer) -> None:

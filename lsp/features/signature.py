@@ -34,7 +34,9 @@ _USING = "USING"
 
 
 @dataclass(frozen=True, slots=True)
-class _Callee:
+class Callee:
+    """The keyword whose operands the cursor is in (completion reads it too)."""
+
     keyword: Token
     operand: int  # index of the operand under the cursor
     bracketed: bool  # the cursor is inside the brackets after a function's name
@@ -46,7 +48,7 @@ def _starts_statement(tokens: list[Token], index: int) -> bool:
     return index == 0 or tokens[index - 1].kind in _STATEMENT_BREAKS
 
 
-def _callee(tokens: list[Token], settings: Settings) -> _Callee | None:
+def callee_at(tokens: list[Token], settings: Settings) -> Callee | None:
     """The keyword the cursor's operands belong to, and where the cursor is among them."""
     depth = commas = semicolons = 0
     using: int | None = None  # the operand in a USING clause
@@ -58,7 +60,7 @@ def _callee(tokens: list[Token], settings: Settings) -> _Callee | None:
             depth += 1
         elif token.kind in (TokenKind.LPAR, TokenKind.LSQB, TokenKind.ADDRESS):
             if depth == 0 and token.kind is TokenKind.LPAR and index > 0 and tokens[index - 1].kind is _FUNCTION:
-                return _Callee(tokens[index - 1], commas, True, not _starts_statement(tokens, index - 1))
+                return Callee(tokens[index - 1], commas, True, not _starts_statement(tokens, index - 1))
             depth = max(0, depth - 1)
         elif token.kind is TokenKind.COMMA and depth == 0:
             commas += 1
@@ -68,11 +70,11 @@ def _callee(tokens: list[Token], settings: Settings) -> _Callee | None:
             using, commas, semicolons = commas, 0, 0
         elif token.kind in _KEYWORDS and depth == 0 and _starts_statement(tokens, index):
             if using is not None:
-                return _Callee(token, using, False, False, using=True)
+                return Callee(token, using, False, False, using=True)
             if token.kind is TokenKind.PRINT or settings.words.keyword_name(token.text) == "LINE":
                 commas += semicolons  # their values are separated by ';' as by ',' (000:15298-15299, 13657)
             terminal = index + 1 < len(tokens) and tokens[index + 1].kind is TokenKind.HASH
-            return _Callee(token, commas - 1 if terminal and commas else commas, False, False)  # PRINT #1, ...
+            return Callee(token, commas - 1 if terminal and commas else commas, False, False)  # PRINT #1, ...
     return None
 
 
@@ -91,7 +93,7 @@ def _items(label: str, start: int, end: int) -> list[tuple[int, int]]:
     return items
 
 
-def _parameters(label: str, name: str, callee: _Callee) -> list[tuple[int, int]]:
+def _parameters(label: str, name: str, callee: Callee) -> list[tuple[int, int]]:
     """The operands of one format: inside the brackets after ``name``, after its ``=``, after the
     name of a statement (PRINT, PAUSE) up to its USING clause, or in that clause."""
     at = label.upper().find(name)
@@ -122,7 +124,7 @@ def _round_brackets(label: str, name: str) -> str:
     return addressed.sub(lambda found: f"{found[1]}({found[2] or found[3]})", label)
 
 
-def _signature(word: Keyword, label: str, callee: _Callee) -> types.SignatureInformation:
+def _signature(word: Keyword, label: str, callee: Callee) -> types.SignatureInformation:
     parameters = _parameters(label, word.name, callee)
     active = callee.operand
     repeated = "..." in label[slice(*parameters[-1])] or "[axes]" in label or "(axes)" in label if parameters else False
@@ -138,7 +140,7 @@ def _signature(word: Keyword, label: str, callee: _Callee) -> types.SignatureInf
 
 def signature_help(prefix: str, settings: Settings) -> types.SignatureHelp | None:
     """The formats of the keyword whose operands end ``prefix`` (the cursor's line so far)."""
-    callee = _callee(significant(prefix_tokens(prefix, settings.dialect)), settings)
+    callee = callee_at(significant(prefix_tokens(prefix, settings.dialect)), settings)
     if callee is None:
         return None
     word = settings.keyword(callee.keyword.text)

@@ -67,6 +67,19 @@ async def test_a_v3_file_is_offered_the_v3_constants(client, tmp_path):
     assert not {"_cfSERVO", "_TRUE", "_hmPOSITIVE_SWITCH"} & set(items)
 
 
+async def test_null_is_offered_where_camtable_takes_its_master_table(client, tmp_path):
+    # CAMTABLE(axis, positions, NULL) when there is no master distance table (000:7958, 7971)
+    text = "DIM myPositions(20)\nCAMTABLE(3, myPositions, N\n"
+    uri = uri_of(tmp_path / "cam.mnt")
+    await open_document(client, uri, text)
+    found = await client.text_document_completion_async(
+        types.CompletionParams(text_document=document(uri), position=position(text, ", N", 3))
+    )
+    assert found.items[0].label == "NULL"
+    at_the_positions = await labels_at(client, uri, text, "3, ", 3)
+    assert "NULL" not in at_the_positions and "myPositions" in at_the_positions
+
+
 async def test_event_handlers_after_hash_at_line_start(client, tmp_path):
     text = "END\n#\n"
     uri = uri_of(tmp_path / "events.mnt")

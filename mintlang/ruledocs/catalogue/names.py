@@ -43,7 +43,7 @@ GROUP = Group(
             ),
             manual=("v4:19099", "v4:1841", "v4:11134"),
             fix="Change the jump to the label it resembles, or create the missing subroutine (a label and "
-            "RETURN for a GOSUB) at the end of the file.",
+            "RETURN for a GOSUB) at the end of the file, after an END when the code above would run on into it.",
             safety=FixSafety.UNSAFE,
         ),
         RuleDoc(

@@ -1,4 +1,5 @@
-"""Folding ranges: matched blocks (an IF's two branches apart) and labelled subroutines."""
+"""Folding ranges: matched blocks (an IF's two branches apart), labelled subroutines, and runs of comment
+lines (a program's opening remarks, the notes above a subroutine)."""
 
 from __future__ import annotations
 
@@ -17,6 +18,19 @@ def _fold(first: int, last: int) -> Iterator[types.FoldingRange]:
         yield types.FoldingRange(start_line=first, end_line=last, kind=types.FoldingRangeKind.Region)
 
 
+def _comment_runs(snapshot: Snapshot) -> Iterator[types.FoldingRange]:
+    """Two or more consecutive lines holding only a comment (REM, or MintMT's ``'``), as comment ranges."""
+    first = None
+    for number, (_, line) in enumerate([*snapshot.document.physical, (0, None)]):
+        comment_only = line is not None and not line.kinds and line.comment_start >= 0
+        if comment_only and first is None:
+            first = number
+        elif not comment_only and first is not None:
+            if number - 1 > first:
+                yield types.FoldingRange(start_line=first, end_line=number - 1, kind=types.FoldingRangeKind.Comment)
+            first = None
+
+
 def folding_ranges(snapshot: Snapshot) -> Iterator[types.FoldingRange]:
     for block in snapshot.model.structures[snapshot.unit].blocks:
         if block.closer is None:
@@ -30,6 +44,7 @@ def folding_ranges(snapshot: Snapshot) -> Iterator[types.FoldingRange]:
             yield from _fold(opener, closer - 1)
     for section in sections(snapshot):
         yield from _fold(section.first_line, section.last_line)
+    yield from _comment_runs(snapshot)
 
 
 def register(server: MintServer) -> None:

@@ -80,8 +80,15 @@ async def test_loop_if_event_and_startup_blocks_fold(client: LanguageClient) -> 
     uri, text = _listing("an00117_l0114_movebufferlow_event.mnt")
     await open_document(client, uri, text)
     ranges = await client.text_document_folding_range_async(types.FoldingRangeParams(text_document=document(uri)))
-    # 0-based: Loop on 4 to End Loop on 6, Event 8 to 15, its If 10 to 14, Startup 18 to 22; each closer stays shown
-    assert {(fold.start_line, fold.end_line) for fold in ranges or []} == {(4, 5), (8, 14), (10, 13), (18, 21)}
+    # 0-based: Loop on 4 to End Loop on 6, Event 8 to 15, its If 10 to 14, Startup 18 to 22; each closer stays shown;
+    # and the four comment lines that open the file
+    assert {(fold.start_line, fold.end_line) for fold in ranges or []} == {
+        (4, 5),
+        (8, 14),
+        (10, 13),
+        (18, 21),
+        (0, 3),
+    }
 
 
 async def test_event_and_startup_blocks_are_symbols(client: LanguageClient) -> None:

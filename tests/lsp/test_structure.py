@@ -80,6 +80,15 @@ async def test_the_last_subroutine_folds_to_its_last_line_not_past_the_final_lin
     assert [(r.start_line, r.end_line) for r in ranges] == [(2, 4)]
 
 
+async def test_runs_of_comment_lines_fold_as_comments(client, tmp_path):
+    # the manual's program file opens with four REM lines (000:279-282); a lone comment line does not fold
+    text = "REM Program file\nREM Project ..\nREM Author ...\nREM Date .....\n\nDIM a\nREM one line\na = 1\n"
+    uri = uri_of(tmp_path / "remarks.mnt")
+    await open_document(client, uri, text)
+    ranges = await client.text_document_folding_range_async(types.FoldingRangeParams(text_document=document(uri)))
+    assert [(r.start_line, r.end_line, r.kind) for r in ranges] == [(0, 3, types.FoldingRangeKind.Comment)]
+
+
 async def test_semantic_tokens(client, tmp_path):
     text = 'DEFINE fast = 10\nDIM a\na = fast + _TRUE : REM note\nPRINT "x"\n'
     uri = uri_of(tmp_path / "colour.mnt")

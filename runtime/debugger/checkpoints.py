@@ -14,12 +14,16 @@ grid of intervals decides, so one dropped is never wanted again). Going back
 costs about as much as the distance back, and the number kept grows with the
 logarithm of the run's length, to ``LIMIT`` at most: beyond it the oldest go,
 never the first, taken before the first tick, from which any point is reached.
+
+Each checkpoint also keeps the statements tried in its *stretch*, up to the
+next one kept (a thinned one's stretch joins the one before): a search for the
+last hit of a breakpoint skips the stretches that never passed one.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from mintlang.runtime.snapshot import Snapshot
 
@@ -40,6 +44,7 @@ class Checkpoint:
     blocked: tuple[int, int] | None  # (pc, depth) of the statement that blocked last, if it did
     hits: Mapping[tuple[object, ...], int]  # each breakpoint's hit count, by what makes it the same breakpoint
     state: Snapshot
+    passed: set[int] = field(default_factory=set)  # the statements (pcs) tried in its stretch, not as retries
 
 
 def _kept(serial: int, newest: int) -> bool:
@@ -59,22 +64,44 @@ class Checkpoints:
     def __len__(self) -> int:
         return len(self.kept)
 
+    def numbered(self, serial: int) -> Checkpoint | None:
+        return next((checkpoint for checkpoint in reversed(self.kept) if checkpoint.serial == serial), None)
+
     def wanted(self, serial: int) -> bool:
         """Whether a checkpoint numbered ``serial`` is to be taken now (not taken yet, not thinned out)."""
-        if any(checkpoint.serial == serial for checkpoint in reversed(self.kept)):
-            return False
-        return _kept(serial, max(self.newest, serial))
+        return self.numbered(serial) is None and _kept(serial, max(self.newest, serial))
 
     def add(self, checkpoint: Checkpoint) -> None:
-        self.kept.append(checkpoint)
-        self.kept.sort(key=lambda kept: kept.serial)
+        """Keep ``checkpoint``, and thin out the older ones: a stretch dropped joins the one before it."""
+        ordered = sorted([*self.kept, checkpoint], key=lambda kept: kept.serial)
         self.newest = max(self.newest, checkpoint.serial)
-        self.kept = [kept for kept in self.kept if _kept(kept.serial, self.newest)]
-        del self.kept[1 : max(1, len(self.kept) - LIMIT + 1)]
+        survivors: list[Checkpoint] = []
+        for kept in ordered:
+            if survivors and not _kept(kept.serial, self.newest):
+                survivors[-1].passed.update(kept.passed)
+            else:
+                survivors.append(kept)
+        for dropped in survivors[1 : max(1, len(survivors) - LIMIT + 1)]:
+            survivors[0].passed.update(dropped.passed)
+        del survivors[1 : max(1, len(survivors) - LIMIT + 1)]
+        self.kept = survivors
 
     def latest(self, count: int) -> Checkpoint | None:
         """The latest checkpoint a run from which reaches point ``count``."""
         return next((checkpoint for checkpoint in reversed(self.kept) if checkpoint.count <= count), None)
+
+    def search_from(self, until: int, pcs: frozenset[int] | None) -> tuple[Checkpoint, int] | None:
+        """Where a search for the last point before ``until`` at one of the statements ``pcs`` (any, if None)
+        starts, and where it can end: the latest checkpoint before ``until`` whose stretch passed one, and the
+        end of that stretch. None when no stretch did."""
+        end = until
+        for checkpoint in reversed(self.kept):
+            if checkpoint.count >= until:
+                continue
+            if pcs is None or not checkpoint.passed.isdisjoint(pcs):
+                return checkpoint, end
+            end = checkpoint.count
+        return None
 
     def forget_after(self, count: int) -> None:
         """What happened at point ``count`` changed (a value set there, or undone): later checkpoints no longer hold."""

@@ -107,6 +107,7 @@ class Execution:
         self._simulator: Simulator | None = None  # while a run goes, to take it back
         self._ticks = 0  # ticks processed by this run
         self._serial = -1  # the last interval of work this run passed (``checkpoints.py``)
+        self._stretch: set[int] = set()  # the statements tried since the latest checkpoint (``Checkpoint.passed``)
         self._thread: threading.Thread | None = None
         self._trace: Trace | None = None  # this run's, when the launch asks for a plot
 
@@ -148,7 +149,7 @@ class Execution:
             if recent.hit:
                 self._back_to(recent.point.count, "breakpoint")
                 return
-        self.rerun(stepping.reverse_continue(at))
+        self.rerun(stepping.reverse_continue(at, frozenset(self.breakpoints.by_pc)))
 
     def _earlier(self, at: Point) -> Iterator[_Recent]:
         return (recent for recent in reversed(self._recent) if recent.point.count < at.count)
@@ -212,6 +213,7 @@ class Execution:
         self._recent.clear()
         self._ticks = 0
         self._serial = -1
+        self._stretch = set()
         if self._checkpoints is not None:
             self._checkpoints = Checkpoints()  # of this run's objects
         plot = self.application.plot
@@ -237,6 +239,9 @@ class Execution:
         if serial == self._serial or checkpoints is None:
             return
         self._serial = serial
+        passed = checkpoints.numbered(serial)  # a re-run passing a checkpoint it has
+        if passed is not None:
+            self._stretch = passed.passed
         if not checkpoints.wanted(serial):
             return
         roots = (self._simulator, self._trace)
@@ -249,19 +254,26 @@ class Execution:
             return
         hits = self.breakpoints.hit_counts()
         ticks = self._ticks - 1
-        checkpoints.add(Checkpoint(serial, tick, self._count, ticks, self._writes, self._blocked, hits, state))
+        checkpoint = Checkpoint(serial, tick, self._count, ticks, self._writes, self._blocked, hits, state)
+        checkpoints.add(checkpoint)
+        self._stretch = checkpoint.passed
 
     def _go_back(self, plan: Plan) -> NoReturn:
         """Take the run back for ``plan``: to the latest checkpoint before the first point it needs, or to the start
         of a new run when there is none."""
-        checkpoints = self._checkpoints
-        usable = checkpoints is not None and self._simulator is not None
-        checkpoint = checkpoints.latest(stepping.first_point(plan)) if usable and checkpoints is not None else None
+        checkpoints = self._checkpoints if self._simulator is not None else None
+        checkpoint = None
+        if checkpoints is not None and isinstance(plan, Scan):
+            start = checkpoints.search_from(plan.until, plan.pcs)
+            if start is None:  # no point before it can be the one wanted
+                self._go_back(self._reach(0, "entry"))
+            checkpoint, plan.until = start
+            plan.since = checkpoint.count
+        elif checkpoints is not None:
+            checkpoint = checkpoints.latest(plan.after + 1)
         if checkpoint is None:
             self._next_plan = plan
             raise _Abandoned("going back")
-        if isinstance(plan, Scan):
-            plan.since = checkpoint.count
         raise Rewind(checkpoint.tick, partial(self._restore, checkpoint, plan))
 
     def _restore(self, checkpoint: Checkpoint, plan: Plan) -> None:
@@ -273,6 +285,7 @@ class Execution:
         self._serial = checkpoint.serial
         self._writes = checkpoint.writes
         self._blocked = checkpoint.blocked
+        self._stretch = checkpoint.passed
         self._logged_from = self.timeline.points_reached
         while self._recent and self._recent[-1].point.count >= checkpoint.count:
             self._recent.pop()
@@ -326,6 +339,7 @@ class Execution:
         plan = self._plan
         decision = None if point.resumed else self.breakpoints.reached(pc, self.evaluator)
         if not point.resumed:
+            self._stretch.add(pc)
             hit = decision is not None and decision.stop
             self._recent.append(_Recent(point, hit, self.breakpoints.generation))
         if decision is not None and decision.log is not None and point.count >= self._logged_from:

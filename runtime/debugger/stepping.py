@@ -53,17 +53,11 @@ class Scan:
     reason: str
     found: int | None = field(default=None)
     since: int = 0
+    pcs: frozenset[int] | None = None  # the only statements ``wanted`` can take, when it says
 
     def earlier(self) -> Scan:
         """The same search over the points before those this scan went through."""
-        return Scan(self.since, self.wanted, self.reason)
-
-
-def first_point(plan: Forward | Scan) -> int:
-    """The earliest point a re-run for ``plan`` must pass: where it starts from is the latest checkpoint before."""
-    if isinstance(plan, Scan):
-        return max(plan.until - 1, 0)
-    return plan.after + 1
+        return Scan(self.since, self.wanted, self.reason, pcs=self.pcs)
 
 
 def cont(after: int) -> Forward:
@@ -104,6 +98,7 @@ def step_back(at: Point) -> Scan:
     return Scan(at.count, lambda point, hit: not point.resumed and point.depth <= at.depth, "step")
 
 
-def reverse_continue(at: Point) -> Scan:
-    """Back to the last breakpoint hit before ``at``; to the start when there is none."""
-    return Scan(at.count, lambda point, hit: hit, "breakpoint")
+def reverse_continue(at: Point, breakpoints: frozenset[int]) -> Scan:
+    """Back to the last breakpoint hit before ``at``, at one of the statements ``breakpoints``; to the start when
+    there is none."""
+    return Scan(at.count, lambda point, hit: hit, "breakpoint", pcs=breakpoints)

@@ -76,3 +76,46 @@ def test_never_more_than_the_limit_are_kept_and_the_first_always(
     assert len(kept) <= 10
     assert kept.kept[0].serial == 0
     assert kept.kept[-1].serial == length - 1
+
+
+def _with_stretches(serials: range) -> Checkpoints:
+    """Checkpoints whose stretch passed statement ``serial`` alone, each taken then thinned as a run goes."""
+    kept = Checkpoints()
+    for serial in serials:
+        if kept.wanted(serial):
+            checkpoint = _checkpoint(serial)
+            checkpoint.passed.add(serial)
+            kept.add(checkpoint)
+    return kept
+
+
+def test_a_checkpoint_thinned_out_hands_its_stretch_to_the_one_before() -> None:
+    kept = _with_stretches(range(17))  # 0, 4, 8, 10, 12, 13, 14, 15, 16 kept (see above)
+    assert {checkpoint.serial: checkpoint.passed for checkpoint in kept.kept} == {
+        0: {0, 1, 2, 3},
+        4: {4, 5, 6, 7},
+        8: {8, 9},
+        10: {10, 11},
+        12: {12},
+        13: {13},
+        14: {14},
+        15: {15},
+        16: {16},
+    }
+
+
+def test_a_search_for_a_breakpoint_starts_at_the_latest_stretch_that_passed_its_statement() -> None:
+    kept = _with_stretches(range(17))
+    assert kept.search_from(165, frozenset({9})) == (kept.numbered(8), 100)  # 8's stretch ends at 10's (point 100)
+    assert kept.search_from(165, frozenset({16})) == (kept.numbered(16), 165)
+    assert kept.search_from(155, frozenset({16})) is None  # passed only after point 160
+    assert kept.search_from(165, None) == (kept.numbered(16), 165)
+    assert kept.search_from(160, None) == (kept.numbered(15), 160)
+
+
+def test_the_limit_hands_the_stretches_it_drops_to_the_first() -> None:
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(module, "LIMIT", 3)
+        kept = _with_stretches(range(6))  # 0..5 at one apart (ages 0-3), then 1, 3 dropped by thinning
+    assert [checkpoint.serial for checkpoint in kept.kept] == [0, 4, 5]
+    assert kept.kept[0].passed == {0, 1, 2, 3}

@@ -276,3 +276,29 @@ def test_going_back_takes_a_hit_count_back_with_the_run(tmp_path: Path) -> None:
         execution.terminate()
     assert stops == ["breakpoint", "step", "breakpoint"]
     assert values == [(4.0,), (3.0,), (4.0,)]  # i: at the fourth hit, at NEXT before it, at the fourth hit again
+
+
+@property_test
+@given(program=timed_programs(), spacing=CHECKPOINTING, lines=st.sets(st.integers(1, 40), min_size=1, max_size=4))
+def test_reverse_continue_lands_on_each_earlier_hit_of_the_forward_walk(
+    program: Program, spacing: tuple[int, int, int], lines: set[int]
+) -> None:
+    """From the last stop of a walk by ``stepIn`` (which stops at every statement tried afresh), each
+    reverse-continue lands on the walk's previous stop at a breakpoint's statement, with its state, and at the
+    entry when there is none: stretches that never passed a breakpoint are skipped, not the hits."""
+    note(program.source)
+    with pytest.MonkeyPatch.context() as patch, tempfile.TemporaryDirectory() as folder:
+        _checkpointing(patch, *spacing)
+        forward = _forward(Harness(program.source, Path(folder)), STOPS)
+        harness = Harness(program.source, Path(folder))
+        assert _forward(harness, len(forward)) == forward
+        execution = harness.execution
+        execution.breakpoints.replace("program", [{"line": line} for line in sorted(lines)])
+        at_breakpoints = set(execution.breakpoints.by_pc)
+        while execution.point is not None and execution.point.count > 0:
+            at = execution.point
+            earlier = [state for state in forward if state[0].count < at.count and state[0].pc in at_breakpoints]
+            execution.reverse_continue(at)
+            assert harness.wait() == ("breakpoint" if earlier else "entry")
+            assert harness.state() == (earlier[-1] if earlier else forward[0])
+        execution.terminate()

@@ -11,7 +11,7 @@ simulated minutes issue 15 names. Each round, paired:
 - step back: the debugger, paused at the program's last statement, steps back one statement;
 - reverse-continue: from there, back to the last hit of a breakpoint in the loop;
 - reverse-continue to the start: from there, back to a breakpoint before the loop, across the ten
-  minutes (every checkpoint's stretch is searched, latest first);
+  minutes (the stretches between checkpoints that never passed its statement are skipped);
 - forward, no checkpoints: forward again with checkpoints turned off, what they cost it.
 
 Going back restores the latest checkpoint before the point and runs on from it

@@ -4,8 +4,9 @@ Going back to point ``k`` restores the latest checkpoint taken before ``k`` and
 runs on from it to ``k`` (``execution.py``): the simulator is deterministic,
 so the state there is the state the run had. A checkpoint is taken before a
 processed tick, once the run has done another ``INTERVAL`` of *work* (points
-tried plus ticks processed: what a re-run costs), so going back to the recent
-past re-runs at most that much.
+tried, plus ``TICK_WORK`` for each tick processed: what a re-run costs), so
+going back to the recent past re-runs at most that much. The interval weighs
+the time to re-run it against the time to save a checkpoint, a tenth of it.
 
 Older checkpoints are thinned out as the run goes on: the ``2 * DENSE`` most
 recent are kept, then every second one of the next ``2 * DENSE`` intervals,
@@ -27,7 +28,8 @@ from dataclasses import dataclass, field
 
 from mintlang.runtime.snapshot import Snapshot
 
-INTERVAL = 1024  # work between two checkpoints: about 20 ms to re-run, 4 ms to save (benchmarks/debugger_step_back.py)
+INTERVAL = 4096  # work between two checkpoints: some 30 ms to re-run, against 3-5 ms to save one
+TICK_WORK = 5  # the work of a processed tick, in statements tried: the servo loop of every axis, the I/O, the events
 DENSE = 4  # checkpoints kept at each spacing, from one interval apart to far apart
 LIMIT = 48  # checkpoints kept at most: each holds the simulation's state (about 100 kB for 12 axes)
 

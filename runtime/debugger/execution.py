@@ -24,7 +24,7 @@ from mintlang.runtime import snapshot
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.debugger import stepping
 from mintlang.runtime.debugger.breakpoints import Breakpoints
-from mintlang.runtime.debugger.checkpoints import INTERVAL, Checkpoint, Checkpoints
+from mintlang.runtime.debugger.checkpoints import INTERVAL, TICK_WORK, Checkpoint, Checkpoints
 from mintlang.runtime.debugger.evaluation import Evaluator
 from mintlang.runtime.debugger.history import Intervention, Timeline
 from mintlang.runtime.debugger.launch import Application
@@ -232,7 +232,7 @@ class Execution:
 
     def _before_tick(self, tick: int) -> None:
         """Count the tick, after taking a checkpoint before it if the run has done another interval of work."""
-        work = self._count + self._ticks
+        work = self._count + TICK_WORK * self._ticks
         self._ticks += 1
         serial = work // INTERVAL
         checkpoints = self._checkpoints

@@ -184,6 +184,14 @@ class LineIndex:
         """Offset of the first character of 1-based ``line``."""
         return self._starts[line - 1]
 
+    def line_text(self, line: int) -> str:
+        """The text of 1-based ``line`` without its line break; empty past the last line."""
+        starts = self._starts
+        if not 0 < line <= len(starts):
+            return ""
+        end = starts[line] if line < len(starts) else self._length
+        return self._text[starts[line - 1] : end].rstrip("\r\n")
+
     def position(self, offset: int) -> Position:
         offset = max(0, min(offset, self._length))
         starts = self._starts

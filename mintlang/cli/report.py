@@ -5,14 +5,14 @@ from __future__ import annotations
 import json
 import re
 from collections import Counter
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from mintlang import keyworddb
 from mintlang.cli.terminal import Palette
 from mintlang.codes import OWN_CODES
-from mintlang.diagnostics import Diagnostic, Fix, LineIndex, Severity, Span, split_lines
+from mintlang.diagnostics import Diagnostic, Fix, LineIndex, Severity, Span
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -29,15 +29,14 @@ class FileReport:
     source: str
     diagnostics: tuple[Diagnostic, ...]
 
-    def located(self) -> list[tuple[Diagnostic, int, int, int, int]]:
-        """Each diagnostic with 1-based start line/column and end line/column (end exclusive)."""
-        index = LineIndex(self.source)
-        result = []
+    def located(self, index: LineIndex | None = None) -> Iterator[tuple[Diagnostic, int, int, int, int]]:
+        """Each diagnostic with 1-based start line/column and end line/column (end exclusive), made as
+        they are written: a list of them all was the largest part of a report's memory."""
+        index = index or LineIndex(self.source)
         for diagnostic in self.diagnostics:
             start = index.position(diagnostic.span.start)
             end = index.position(diagnostic.span.end)
-            result.append((diagnostic, start.line, start.column, end.line, end.column))
-        return result
+            yield diagnostic, start.line, start.column, end.line, end.column
 
 
 _STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.INFO: "bold cyan"}
@@ -98,13 +97,13 @@ def render_text(reports: Sequence[FileReport], console: Console, *, summary: boo
     counts = dict.fromkeys(Severity, 0)
     bar, arrow, equals = (palette.paint("blue", mark) for mark in ("|", "-->", "="))
     for report in reports:
-        lines = split_lines(report.source)
+        index = LineIndex(report.source)
         path = _visible(report.path)
         frames: list[str] = []
-        for diagnostic, line, column, end_line, end_column in report.located():
+        for diagnostic, line, column, end_line, end_column in report.located(index):
             counts[diagnostic.severity] += 1
             style = _STYLE[diagnostic.severity]
-            text = lines[line - 1] if 0 < line <= len(lines) else ""
+            text = index.line_text(line)
             gutter = " " * len(str(line))
             end = end_column if end_line == line else len(text) + 1
             shown, before, marked = _frame(text, column - 1, max(column, end) - 1)

@@ -231,7 +231,8 @@ class Execution:
         simulator.on_end = self._on_end
 
     def _before_tick(self, tick: int) -> None:
-        """Count the tick, after taking a checkpoint before it if the run has done another interval of work."""
+        """Count the tick; where another interval of work starts, take a checkpoint before it, or go on with the one
+        a re-run finds there."""
         work = self._count + TICK_WORK * self._ticks
         self._ticks += 1
         serial = work // INTERVAL
@@ -239,11 +240,14 @@ class Execution:
         if serial == self._serial or checkpoints is None:
             return
         self._serial = serial
-        passed = checkpoints.numbered(serial)  # a re-run passing a checkpoint it has
-        if passed is not None:
-            self._stretch = passed.passed
-        if not checkpoints.wanted(serial):
-            return
+        taken = checkpoints.numbered(serial)
+        if taken is not None:
+            self._stretch = taken.passed
+        elif checkpoints.wanted(serial):
+            self._checkpoint(checkpoints, serial, tick)
+
+    def _checkpoint(self, checkpoints: Checkpoints, serial: int, tick: int) -> None:
+        """Take checkpoint number ``serial`` before ``tick``; a state that cannot be saved ends checkpoints."""
         roots = (self._simulator, self._trace)
         try:
             state = snapshot.take([root for root in roots if root is not None], outside=(self,))

@@ -10,7 +10,7 @@ long as the line's syntax does not change.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass
 
 from mintlang.controllers import ControllerProfile
@@ -35,26 +35,27 @@ class LineScope:
 
 
 PlacedStatement = tuple[Unit, n.PlacedLine, n.Statement]
+# The statements whole-application rules look for; few lines have any, so one pass finds them all.
+_SOUGHT = frozenset({n.Jump, n.Define})
 
 
 @dataclass(frozen=True, slots=True)
 class Facts:
-    """The model and its lines, for the rules to filter."""
+    """The model and its lines, with the lists the rules ask for."""
 
     model: SemanticModel
     lines: IndexedLines
+    sought: Mapping[type, tuple[PlacedStatement, ...]]  # GOSUB/GOTO and DEFINE
 
-    def statements(self, kind: type) -> Iterator[PlacedStatement]:
+    def statements(self, kind: type) -> Iterable[PlacedStatement]:
         """The statements of one type, IF .. THEN bodies included, in compile order.
 
-        Found by a pass over the lines' facts each time, not kept in a list: the lines are
-        made as they are read, and a list would keep one for every statement found (every
-        line of a file of broken lines)."""
-        for unit, line, facts in self.lines:
-            if kind in facts.kinds:
-                for statement in facts.statements:
-                    if type(statement) is kind:
-                        yield unit, line, statement
+        GOSUB, GOTO and DEFINE are listed once for every rule that asks. Others are found
+        by a pass over the lines' facts: a list would keep a line for each statement found,
+        and what could not be parsed may be on every line.
+        """
+        found = self.sought.get(kind)
+        return found if found is not None else _each_statement(self.lines, kind)
 
     def keyword_uses(self) -> Iterator[tuple[n.PlacedLine, KeywordUse]]:
         for _, line, facts in self.lines:
@@ -68,5 +69,19 @@ class Facts:
                 yield unit, line, element
 
 
+def _each_statement(lines: IndexedLines, kind: type) -> Iterator[PlacedStatement]:
+    for unit, line, facts in lines:
+        if kind in facts.kinds:
+            for statement in facts.statements:
+                if type(statement) is kind:
+                    yield unit, line, statement
+
+
 def gather(model: SemanticModel) -> Facts:
-    return Facts(model, model.lines)
+    sought: dict[type, list[PlacedStatement]] = {kind: [] for kind in _SOUGHT}
+    for unit, line, facts in model.lines:
+        if not facts.kinds.isdisjoint(_SOUGHT):  # most lines have none
+            for statement in facts.statements:
+                if type(statement) in _SOUGHT:
+                    sought[type(statement)].append((unit, line, statement))
+    return Facts(model, model.lines, {kind: tuple(found) for kind, found in sought.items()})

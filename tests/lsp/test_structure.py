@@ -89,19 +89,25 @@ async def test_runs_of_comment_lines_fold_as_comments(client, tmp_path):
     assert [(r.start_line, r.end_line, r.kind) for r in ranges] == [(0, 3, types.FoldingRangeKind.Comment)]
 
 
-async def test_semantic_tokens(client, tmp_path):
-    text = 'DEFINE fast = 10\nDIM a\na = fast + _TRUE : REM note\nPRINT "x"\n'
-    uri = uri_of(tmp_path / "colour.mnt")
-    await open_document(client, uri, text)
+async def coloured(client, uri: str, text: str) -> list[tuple[int, str, str, int]]:
+    """The server's semantic tokens of ``text``, decoded: line, word, type and modifier bits."""
     tokens = await client.text_document_semantic_tokens_full_async(
         types.SemanticTokensParams(text_document=document(uri))
     )
     data, line, column, decoded = list(tokens.data), 0, 0, []
     for index in range(0, len(data), 5):
-        delta_line, delta_start, length, kind, _ = data[index : index + 5]
+        delta_line, delta_start, length, kind, modifiers = data[index : index + 5]
         line += delta_line
         column = delta_start if delta_line else column + delta_start
-        decoded.append((text.splitlines()[line][column : column + length], TOKEN_TYPES[kind]))
+        decoded.append((line, text.splitlines()[line][column : column + length], TOKEN_TYPES[kind], modifiers))
+    return decoded
+
+
+async def test_semantic_tokens(client, tmp_path):
+    text = 'DEFINE fast = 10\nDIM a\na = fast + _TRUE : REM note\nPRINT "x"\n'
+    uri = uri_of(tmp_path / "colour.mnt")
+    await open_document(client, uri, text)
+    decoded = [(word, kind) for _, word, kind, _ in await coloured(client, uri, text)]
     assert ("DEFINE", "keyword") in decoded
     assert decoded.count(("fast", "macro")) == 2
     assert ("a", "variable") in decoded
@@ -115,15 +121,7 @@ async def test_a_label_named_like_a_keyword_or_a_variable_is_coloured_as_a_label
     text = "DIM total\nGOSUB home : GOTO total\n#total\nEND\n#home\nRETURN\n"
     uri = uri_of(tmp_path / "labels.mnt")
     await open_document(client, uri, text)
-    tokens = await client.text_document_semantic_tokens_full_async(
-        types.SemanticTokensParams(text_document=document(uri))
-    )
-    data, line, column, decoded = list(tokens.data), 0, 0, []
-    for index in range(0, len(data), 5):
-        delta_line, delta_start, length, kind, _ = data[index : index + 5]
-        line += delta_line
-        column = delta_start if delta_line else column + delta_start
-        decoded.append((line, text.splitlines()[line][column : column + length], TOKEN_TYPES[kind]))
+    decoded = [(line, word, kind) for line, word, kind, _ in await coloured(client, uri, text)]
     assert [(word, kind) for at, word, kind in decoded if at == 1] == [
         ("GOSUB", "keyword"),
         ("home", "function"),
@@ -138,15 +136,7 @@ async def test_a_v3_word_in_v4_code_is_a_deprecated_keyword_unless_declared(clie
     text = "DEFINE xAxis = 0\nDEFINE zAxis = 2\nHMSPEED[xAxis, zAxis] = 20, 10\nDIM gain\ngain = 2\n"
     uri = uri_of(tmp_path / "v3.mnt")
     await open_document(client, uri, text)
-    tokens = await client.text_document_semantic_tokens_full_async(
-        types.SemanticTokensParams(text_document=document(uri))
-    )
-    data, line, column, decoded = list(tokens.data), 0, 0, {}
-    for index in range(0, len(data), 5):
-        delta_line, delta_start, length, kind, modifiers = data[index : index + 5]
-        line += delta_line
-        column = delta_start if delta_line else column + delta_start
-        decoded[text.splitlines()[line][column : column + length]] = (TOKEN_TYPES[kind], modifiers)
+    decoded = {word: (kind, modifiers) for _, word, kind, modifiers in await coloured(client, uri, text)}
     assert decoded["HMSPEED"] == ("keyword", 1 << TOKEN_MODIFIERS.index("deprecated"))
     assert decoded["gain"] == ("variable", 0)  # GAIN was v3's KPROP, but the DIM makes it the user's
 

@@ -358,13 +358,14 @@ def _misspelt_keyword(
     """A statement that starts with a name the grammar cannot go on from is a misspelt command (``PRNT "a"``,
     ``PAUS IDLE.0``): error 3007 at the name, as the name alone is, with the keyword it resembles. So is, in
     MintMT, a name close to a keyword with a keyword's brackets (``VECTRR(0,1) = 10, 10``, as ``VECTRR[0,1]``
-    is in v4), rather than an array with two indices."""
+    is in v4), rather than an array with two indices; and a name close to a keyword given a list of values
+    (``VECTRR = 100, 200``, ``MFOLEERR = 10, 10`` in v3): a variable takes one value, a keyword one per axis."""
     kinds = line.kinds
     if kinds[begin] is not _K.NAME:
         return None
     command = failure.index == 1 and begin + 1 < len(kinds)
     bracketed = words.dialect is Dialect.MINTMT and kinds[begin + 1 : begin + 2] == [_K.LPAR]
-    if not (command or bracketed):
+    if not (command or bracketed or _given_a_list(kinds, begin, begin + failure.index)):
         return None
     written = line.texts[begin]
     if words.dialect.modern:
@@ -376,6 +377,14 @@ def _misspelt_keyword(
         return None
     fixes = (Fix.replace(span, meant),) if meant is not None else ()
     return _error(3007, span, not_a_keyword(written, meant), fixes=fixes)
+
+
+def _given_a_list(kinds: list[TokenKind], begin: int, failed: int) -> bool:
+    """Whether the statement from ``begin`` failed at a comma after ``=``, outside brackets: a list of values."""
+    if failed >= len(kinds) or kinds[failed] is not _K.COMMA or _K.EQUAL not in kinds[begin:failed]:
+        return False
+    assigned = kinds[begin:failed]
+    return assigned.count(_K.LPAR) == assigned.count(_K.RPAR) and assigned.count(_K.LSQB) == assigned.count(_K.RSQB)
 
 
 def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) -> Diagnostic | None:

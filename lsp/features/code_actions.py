@@ -32,11 +32,16 @@ def _edits(snapshot: Snapshot, edits: tuple[mintlang.Edit, ...]) -> types.Worksp
 
 
 def quick_fixes(snapshot: Snapshot, selection: types.Range) -> Iterator[types.CodeAction]:
+    """The fixes of the diagnostics in ``selection``, each once: one DIM declares a name for all its uses."""
     start, end = snapshot.positions.span(selection)
+    offered: set[tuple[str, tuple[mintlang.Edit, ...]]] = set()
     for diagnostic in snapshot.diagnostics:
         if not _overlaps(diagnostic.span, start, end):
             continue
         for fix in diagnostic.fixes:
+            if (fix.title, fix.edits) in offered:
+                continue
+            offered.add((fix.title, fix.edits))
             yield types.CodeAction(
                 title=fix.title,
                 kind=types.CodeActionKind.QuickFix,

@@ -54,6 +54,21 @@ async def test_an_undeclared_array_is_declared_with_as_many_elements_as_its_larg
     )
 
 
+async def test_a_fix_shared_by_several_diagnostics_is_offered_once(client, tmp_path):
+    # box is undeclared on three lines: one DIM declares it for all three
+    text = "FOR box = 1 TO 4\n  MOVEA.0 = box * 250\n  PRINT box\nNEXT\n"
+    uri = uri_of(tmp_path / "box.mnt")
+    diagnostics = await open_document(client, uri, text)
+    everything = types.Range(start=types.Position(line=0, character=0), end=types.Position(line=4, character=0))
+    context = types.CodeActionContext(diagnostics=diagnostics, only=[types.CodeActionKind.QuickFix])
+    found = await client.text_document_code_action_async(
+        types.CodeActionParams(text_document=document(uri), range=everything, context=context)
+    )
+    titles = [action.title for action in found]
+    assert titles.count("Declare 'box' with DIM") == 1
+    assert titles.count("Ignore E3001 on this line") == 3  # each its own line's comment
+
+
 async def test_a_missing_label_is_corrected_or_made(client, tmp_path):
     text = "GOSUB mian\nEND\n#main\nRETURN\n"
     uri = uri_of(tmp_path / "label.mnt")

@@ -185,6 +185,8 @@ def _keywords(
 
 
 def _symbols(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
+    """The declared variables, arrays and macros; each one's description is written when the editor
+    shows it (``completionItem/resolve``): writing thousands per keystroke made completion slow."""
     symbols = snapshot.model.symbols
     for symbol in (*symbols.variables.values(), *symbols.macros.values()):
         if symbol.definitions:
@@ -192,10 +194,16 @@ def _symbols(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
                 label=symbol.name,
                 kind=_SYMBOL_KINDS[symbol.kind],
                 detail=symbol.kind.value,
-                documentation=types.MarkupContent(
-                    kind=types.MarkupKind.Markdown, value=describe.symbol(snapshot, symbol)
-                ),
+                data={"symbol": symbol.identity, "macro": symbol.kind is SymbolKind.MACRO, "uri": snapshot.uri},
             )
+
+
+def _symbol_description(snapshot: Snapshot, data: dict[str, object]) -> str | None:
+    """What hover says of the symbol a completion item names, in the document's latest analysis."""
+    symbols = snapshot.model.symbols
+    table = symbols.macros if data.get("macro") else symbols.variables
+    found = table.get(str(data.get("symbol")))
+    return describe.symbol(snapshot, found) if found is not None else None
 
 
 def _labels(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
@@ -445,9 +453,18 @@ def register(server: MintServer) -> None:
 
     @server.feature(types.COMPLETION_ITEM_RESOLVE)
     def resolve(item: types.CompletionItem) -> types.CompletionItem:
-        name = item.data.get("keyword") if isinstance(item.data, dict) else None
-        word = (database().lookup(name) or database().mintmt_keywords.get(name.upper())) if name else None
-        if word is not None:
-            text = describe.keyword(word, server.analyses.settings.controller)
+        data = item.data if isinstance(item.data, dict) else {}
+        text = _keyword_description(data.get("keyword"), server)
+        if "symbol" in data:
+            snapshot = server.analyses.latest(str(data.get("uri")))
+            text = _symbol_description(snapshot, data) if snapshot is not None else None
+        if text is not None:
             item.documentation = types.MarkupContent(kind=types.MarkupKind.Markdown, value=text)
         return item
+
+
+def _keyword_description(name: object, server: MintServer) -> str | None:
+    if not isinstance(name, str):
+        return None
+    word = database().lookup(name) or database().mintmt_keywords.get(name.upper())
+    return describe.keyword(word, server.analyses.settings.controller) if word is not None else None

@@ -201,7 +201,10 @@ async def test_symbol_details_are_plain_text_and_the_description_is_markdown(cli
     await open_document(client, uri, text)
     items = await labels_at(client, uri, text, "a = ", 4)
     assert (items["a"].detail, items["fast"].detail) == ("variable", "macro")
-    assert "DEFINE fast = SPEED.0 = 500" in items["fast"].documentation.value  # as written, not re-spaced
+    fast = await client.completion_item_resolve_async(items["fast"])  # described when shown
+    assert "DEFINE fast = SPEED.0 = 500" in fast.documentation.value  # as written, not re-spaced
+    variable = await client.completion_item_resolve_async(items["a"])
+    assert variable.documentation.value.startswith("**a** — variable, declared at line 1")
 
 
 async def test_nothing_inside_comments_and_strings(client, tmp_path):

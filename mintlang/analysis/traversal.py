@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass
+from operator import attrgetter
 
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
@@ -58,30 +59,32 @@ class Facts:
         return found if found is not None else _each_statement(self.lines, kind)
 
     def keyword_uses(self) -> Iterator[tuple[n.PlacedLine, KeywordUse]]:
-        for _, line, facts in self.lines:
+        for _, line, facts in self.lines.where(_KEYWORD_USES):
             for use in facts.keyword_uses:
                 yield line, use
 
     def elements(self) -> Iterator[tuple[Unit, n.PlacedLine, n.ElementRef]]:
         """Array elements read or written."""
-        for unit, line, facts in self.lines:
+        for unit, line, facts in self.lines.where(_ELEMENTS):
             for element in facts.elements:
                 yield unit, line, element
 
 
+_KEYWORD_USES = attrgetter("keyword_uses")
+_ELEMENTS = attrgetter("elements")
+
+
 def _each_statement(lines: IndexedLines, kind: type) -> Iterator[PlacedStatement]:
-    for unit, line, facts in lines:
-        if kind in facts.kinds:
-            for statement in facts.statements:
-                if type(statement) is kind:
-                    yield unit, line, statement
+    for unit, line, facts in lines.with_kinds(frozenset({kind})):
+        for statement in facts.statements:
+            if type(statement) is kind:
+                yield unit, line, statement
 
 
 def gather(model: SemanticModel) -> Facts:
     sought: dict[type, list[PlacedStatement]] = {kind: [] for kind in _SOUGHT}
-    for unit, line, facts in model.lines:
-        if not facts.kinds.isdisjoint(_SOUGHT):  # most lines have none
-            for statement in facts.statements:
-                if type(statement) in _SOUGHT:
-                    sought[type(statement)].append((unit, line, statement))
+    for unit, line, facts in model.lines.with_kinds(_SOUGHT):  # most lines have none
+        for statement in facts.statements:
+            if type(statement) in _SOUGHT:
+                sought[type(statement)].append((unit, line, statement))
     return Facts(model, model.lines, {kind: tuple(found) for kind, found in sought.items()})

@@ -13,10 +13,11 @@ files (``index_syntax``).
 
 from __future__ import annotations
 
-from collections.abc import Hashable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Hashable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from enum import StrEnum
-from itertools import chain, repeat
+from itertools import chain, compress, count, repeat
+from operator import attrgetter, not_
 from typing import NamedTuple, overload
 
 from mintlang.caching import LINES_KEPT, RecentCache
@@ -158,6 +159,7 @@ def clear_cache() -> None:
 
 
 IndexedLine = tuple[Unit, n.PlacedLine, LineFacts]
+_KINDS = attrgetter("kinds")
 
 
 class IndexedLines(Sequence[IndexedLine]):
@@ -178,6 +180,27 @@ class IndexedLines(Sequence[IndexedLine]):
 
     def __iter__(self) -> Iterator[IndexedLine]:
         return chain.from_iterable(zip(repeat(unit), lines, facts) for unit, lines, facts in self._files)
+
+    def facts(self) -> Iterator[LineFacts]:
+        """Each line's index alone, in compile order: a pass that reads no line needs none made."""
+        return chain.from_iterable(facts for _, _, facts in self._files)
+
+    def where(self, wanted: Callable[[LineFacts], object]) -> Iterator[IndexedLine]:
+        """The lines whose index ``wanted`` holds true of, in compile order, each line made only for them.
+
+        A file's lines are made as they are read (``PackedLines``); most passes look for what few
+        lines have, so they test the indexes first. ``wanted`` is best a C callable (an
+        ``attrgetter``): it is called for every line.
+        """
+        for unit, lines, facts in self._files:
+            for index in compress(count(), map(wanted, facts)):
+                yield unit, lines[index], facts[index]
+
+    def with_kinds(self, kinds: frozenset[type]) -> Iterator[IndexedLine]:
+        """The lines with a statement of one of ``kinds`` (IF .. THEN bodies included)."""
+        for unit, lines, facts in self._files:
+            for index in compress(count(), map(not_, map(kinds.isdisjoint, map(_KINDS, facts)))):
+                yield unit, lines[index], facts[index]
 
     def of(self, unit: Unit) -> Iterator[tuple[n.PlacedLine, LineFacts]]:
         """The lines of one file with their indexes."""

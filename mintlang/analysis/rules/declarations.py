@@ -194,7 +194,7 @@ def _largest_index(model: SemanticModel, symbol: Symbol) -> int | None:
     """The largest whole number an array is indexed with anywhere in the application (None: no number)."""
     numbers = [
         element.index.value
-        for _, _, facts in model.lines
+        for facts in model.lines.facts()
         for element in facts.elements
         if element.name.identity == symbol.identity and type(element.index) is n.Number
     ]

@@ -63,6 +63,7 @@ def check(facts: Facts) -> Iterator[Finding]:
             yield Finding(first.unit, own("W104", first.span, detail))
 
 
+_DIM = frozenset({n.Dim})
 _WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 
 
@@ -70,8 +71,8 @@ def _declared_by_dim(facts: Facts) -> set[tuple[Unit, Span]]:
     """Where a DIM names the variable it declares, as (unit, span in the file)."""
     return {
         (unit, line.span(statement.name.span))
-        for unit, line, _ in facts.lines
-        for statement in n.flatten_statements(line.syntax.statements)
+        for unit, line, indexed in facts.lines.with_kinds(_DIM)
+        for statement in indexed.statements
         if type(statement) is n.Dim
     }
 

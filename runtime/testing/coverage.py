@@ -4,8 +4,9 @@ A branch is a statement with two outcomes (``mint test --coverage``): an ``IF``
 (its block or line taken or not), a ``WHILE`` or ``FOR`` (its body entered or
 skipped), an ``UNTIL`` (the loop left or repeated) and a ``PAUSE`` (passed at
 once or waited). Each operation of the compiled program is wrapped to count
-how often it completed and where control went next; a run without coverage
-runs the operations unwrapped.
+how often it ran (completed, or failed into ``ERR``: the line that raised an
+error ran) and where control went next; a run without coverage runs the
+operations unwrapped.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from pathlib import Path
 
 from mintlang.dialect import Dialect
 from mintlang.runtime.controller import Controller
+from mintlang.runtime.errors import MintError
 from mintlang.semantic.events import event_of
 
 # Each branching statement (by syntax node) with its two outcomes: control goes on to the next operation
@@ -79,21 +81,33 @@ class Recorder:
         self.files = files  # "program" / "configuration" -> the file
         self.dialect = dialect  # which labels are event handlers
         self.controller: Controller | None = None
-        self.completed: list[int] = []
+        self.ran: list[int] = []  # per operation: how often it completed or failed
         self.outcomes: list[list[int]] = []
 
     def attach(self, controller: Controller) -> None:
         self.controller = controller
         vm = controller.vm
         size = len(vm.operations)
-        self.completed = [0] * size
+        self.ran = [0] * size
         self.outcomes = [[0, 0] for _ in range(size)]
         pairs = enumerate(zip(vm.operations, vm.sites, strict=True))
         vm.operations[:] = [self._counting(pc, operation, site.kind == "Pause") for pc, (operation, site) in pairs]
+        vm.fail = self._counting_failures(vm.fail)
+
+    def _counting_failures(self, fail: Callable[[MintError, int], None]) -> Callable[[MintError, int], None]:
+        """The VM's ``fail``, counting the failed statement as run: it is called once per failure, where the
+        operation itself may be tried again after failing (a pure statement run ahead of its tick)."""
+        ran = self.ran
+
+        def counted(error: MintError, pc: int) -> None:
+            ran[pc] += 1
+            fail(error, pc)
+
+        return counted
 
     def _counting(self, pc: int, operation: Callable[[], bool | None], pausing: bool) -> Callable[[], bool]:
         vm = self.controller.vm  # type: ignore[union-attr]
-        completed, outcome = self.completed, self.outcomes[pc]
+        ran, outcome = self.ran, self.outcomes[pc]
         waited = False
 
         def counted() -> bool:
@@ -101,7 +115,7 @@ class Recorder:
             if operation():
                 waited = True
                 return True
-            completed[pc] += 1
+            ran[pc] += 1
             if pausing:
                 outcome[1 if waited else 0] += 1
                 waited = False
@@ -121,7 +135,7 @@ class Recorder:
             pcs = [pc for pc, site in enumerate(sites) if site.unit == unit and site.kind not in _DECLARATIONS]
             lines: dict[int, int] = {}
             for pc in pcs:
-                lines[sites[pc].line] = max(lines.get(sites[pc].line, 0), self.completed[pc])
+                lines[sites[pc].line] = max(lines.get(sites[pc].line, 0), self.ran[pc])
             branches = tuple(
                 Branch(sites[pc].line, sites[pc].kind, (self.outcomes[pc][0], self.outcomes[pc][1]))
                 for pc in pcs
@@ -136,7 +150,7 @@ class Recorder:
         labels = linked.handlers if unit == "program" else linked.configuration_handlers
         sites = controller.vm.sites
         return {
-            name: (sites[pc].line, self.completed[pc])
+            name: (sites[pc].line, self.ran[pc])
             for name, pc in labels.items()
             if event_of(name, self.dialect) is not None and pc < len(sites)
         }

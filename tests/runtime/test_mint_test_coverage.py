@@ -98,3 +98,30 @@ def test_a_mintmt_event_line_is_a_declaration_not_a_line_to_run(tmp_path: Path) 
     assert result.exit_code == 0, result.output
     found = [line for line in tracefile.read_text(encoding="utf-8").splitlines() if line.startswith(("DA:", "L"))]
     assert found == ["DA:3,1", "DA:4,1", "DA:5,1", "DA:7,1", "DA:8,1", "LF:5", "LH:5"]
+
+
+def _lines_of(tracefile: Path) -> list[str]:
+    return [line for line in tracefile.read_text(encoding="utf-8").splitlines() if line.startswith(("DA:", "L"))]
+
+
+def test_the_line_that_raises_the_error_ending_the_run_ran(tmp_path: Path) -> None:
+    # Line 3 indexes outside a(3): the run stops there with R2016, so line 3 ran once and END (line 4) never.
+    program = tmp_path / "stops.mnt"
+    program.write_text("REM @expect stopped error\nDIM a(3)\na(5) = 1\nEND\n", encoding="utf-8")
+    tracefile = tmp_path / "lcov.info"
+    result = CliRunner().invoke(main, ["test", str(program), "--coverage", "--lcov", str(tracefile), "-j", "1"])
+    assert result.exit_code == 0, result.output
+    assert _lines_of(tracefile) == ["DA:2,1", "DA:3,1", "DA:4,0", "LF:3", "LH:2"]
+
+
+def test_a_line_failing_into_onerror_ran_once(tmp_path: Path) -> None:
+    # Line 4 fails once into #ONERROR (lines 7-8), whose RETURN resumes after it at END (line 5); the label
+    # line 6 holds no statement.
+    program = tmp_path / "handled.mnt"
+    program.write_text(
+        "REM @expect n = 1\nDIM a(3)\nDIM n\na(5) = 1\nEND\n#ONERROR\n  n = n + 1\nRETURN\n", encoding="utf-8"
+    )
+    tracefile = tmp_path / "lcov.info"
+    result = CliRunner().invoke(main, ["test", str(program), "--coverage", "--lcov", str(tracefile), "-j", "1"])
+    assert result.exit_code == 0, result.output
+    assert _lines_of(tracefile) == ["DA:2,1", "DA:3,1", "DA:4,1", "DA:5,1", "DA:7,1", "DA:8,1", "LF:6", "LH:6"]

@@ -49,7 +49,13 @@ from mintlang.runtime.dialects import SIMULATED
     show_default=True,
     help="Where --coverage writes its lcov tracefile.",
 )
-@click.option("-j", "--jobs", type=click.IntRange(min=1), help="Tests run at once (default: every core).")
+@click.option(
+    "-j",
+    "--jobs",
+    type=click.IntRange(min=0),
+    default=0,
+    help="Tests run at once, on as many processes.  [default: 0, every core]",
+)
 @click.option("--collect-only", is_flag=True, help="List the tests found (text or json) and run none.")
 @format_option(["text", "junit", "json"])
 @output_file_option()

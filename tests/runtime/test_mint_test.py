@@ -148,3 +148,10 @@ def test_collect_only_lists_the_tests_and_runs_none(tmp_path: Path) -> None:
     }
     refused = _mint_test(tmp_path, "--collect-only", "--format", "junit")
     assert refused.exit_code == 2 and "--collect-only lists the tests as text or json" in refused.output
+
+
+def test_jobs_zero_runs_on_every_core_as_mint_check_takes_it(tmp_path: Path) -> None:
+    program = _write(tmp_path, "passes.mnt", PASSING)
+    result = CliRunner().invoke(main, ["test", str(program), "-j", "0", "--color", "never"])
+    assert result.exit_code == 0, result.output
+    assert result.output.splitlines()[0] == f"PASSED {program}"

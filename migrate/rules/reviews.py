@@ -49,15 +49,20 @@ class ConfigurationArrays(Rule):
 
 
 class OutputFormat(Rule):
-    """Text a host program or an operator reads: PRINT/INPUT USING layouts, BINARY, and
-    strings in the format of the v3 ``ERROR: Program: ...`` message (v3:4978-5008) that a host parses; v4
-    reports errors as ``R0003: ...``. Other strings that merely mention an error are not flagged."""
+    """Text a host program or an operator reads: PRINT/INPUT USING layouts, BINARY, the query
+    mark v3 INPUT printed after its prompt (``Enter a number ?``, v3:2764-2775; v4 shows none,
+    v4:12213-12218), and strings in the format of the v3 ``ERROR: Program: ...`` message
+    (v3:4978-5008) that a host parses; v4 reports errors as ``R0003: ...``. Other strings that
+    merely mention an error are not flagged."""
 
     id = "X-PRINT"
     rule_class = RuleClass.MANUAL
     phase = Phase.MANUAL
-    summary = "PRINT/INPUT USING, BINARY, printed 'ERROR' text -> manual (v4 number and message formats)"
-    evidence = "spec X-PRINT; v3:4978-5008, v3:6209-6239; v4:729, v4:764-767, v4:4584-4589, v4:15299-15366"
+    summary = "PRINT/INPUT USING, INPUT prompt, BINARY, printed 'ERROR' text -> manual (v4 number and message formats)"
+    evidence = (
+        "spec X-PRINT, §12; v3:2764-2775, v3:4978-5008, v3:6209-6239; "
+        "v4:729, v4:764-767, v4:4584-4589, v4:12213-12218, v4:15299-15366"
+    )
 
     def apply(self, context: Context) -> Iterator[Action]:
         for file, line in context.placed(n.Print, n.Input, statement_tag("BINARY")):
@@ -70,6 +75,8 @@ class OutputFormat(Rule):
 def _format_reason(statement: n.Statement) -> str | None:
     if isinstance(statement, n.Print | n.Input) and statement.using:
         return "USING layout: v4 prints numbers with up to 4 decimals; check what reads this output"
+    if isinstance(statement, n.Input):
+        return "v3 INPUT printed ' ?' after its prompt, v4 does not; check what reads this output"
     if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "BINARY":
         return "BINARY output: v4 prints with PRINT BIN, without the 8-digit padding"
     if isinstance(statement, n.Print) and any(

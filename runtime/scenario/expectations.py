@@ -225,8 +225,11 @@ def _evaluate_whole_terminal(expectation: TerminalExpectation, observe: Observer
         min(len(printed), len(expectation.text)),
     )
     line = printed.count("\n", 0, same) + 1
-    expected, actual = expectation.text[same : same + 20], printed[same : same + 20]
-    detail = f"differs on line {line}: expected {expected!r}, printed {actual!r}"
+    line_start = printed.rfind("\n", 0, same) + 1  # the two agree up to ``same``: the line starts alike
+    shown_from = max(line_start, same - 20)  # the line as far as they part, but no more than 20 characters of it
+    expected, actual = expectation.text[shown_from : same + 20], printed[shown_from : same + 20]
+    column = same - line_start + 1
+    detail = f"differs on line {line}, column {column}: expected {expected!r}, printed {actual!r}"
     return Outcome(expectation, False, f"{len(printed)} characters", detail)
 
 

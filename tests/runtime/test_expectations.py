@@ -194,5 +194,14 @@ def test_terminal_is_holds_only_for_the_whole_output_and_says_where_it_differs()
     assert check('terminal is "1\\n2\\n"', FakeRun(terminal="1\n2\n")).held
     assert not check('terminal is "1\\n"', FakeRun(terminal="1\n2\n")).held
     outcome = check('terminal is "1\\n3\\n"', FakeRun(terminal="1\n2\n"))
-    assert (outcome.held, outcome.detail) == (False, "differs on line 2: expected '3\\n', printed '2\\n'")
+    assert (outcome.held, outcome.detail) == (False, "differs on line 2, column 1: expected '3\\n', printed '2\\n'")
     assert check('terminal is ""', FakeRun(terminal="")).held
+
+
+def test_where_terminal_is_fails_shows_the_line_from_its_start_with_the_column() -> None:
+    # "two" and "three" agree on "t": the second line parts at its column 2, and both lines are shown whole.
+    outcome = check('terminal is "one\\nthree\\n"', FakeRun(terminal="one\ntwo\n"))
+    assert outcome.detail == "differs on line 2, column 2: expected 'three\\n', printed 'two\\n'"
+    # A long line is shown from 20 characters before the place where the two part.
+    outcome = check(f'terminal is "{"x" * 30}a"', FakeRun(terminal=f"{'x' * 30}b"))
+    assert outcome.detail == f"differs on line 1, column 31: expected '{'x' * 20}a', printed '{'x' * 20}b'"

@@ -13,7 +13,7 @@ from enum import StrEnum
 from typing import TYPE_CHECKING, Protocol
 
 from rich.console import Console
-from rich.table import Table
+from rich.table import Column, Table
 from rich.text import Text
 
 from mintlang.runtime.scenario.targets import Target
@@ -267,7 +267,8 @@ def _expectations(count: int) -> str:
 def render_outcomes(outcomes: Iterable[Outcome], console: Console) -> None:
     """A table of every expectation with what was seen, then a one-line verdict."""
     outcomes = tuple(outcomes)
-    table = Table("expectation", "when", "expected", "actual", "result")
+    # On a narrow terminal the expectation's origin folds onto more lines rather than lose its line number.
+    table = Table(Column("expectation", overflow="fold"), "when", "expected", "actual", "result")
     for outcome in outcomes:
         expectation = outcome.expectation
         what = Text(expectation.what)

@@ -184,6 +184,15 @@ def test_the_table_shows_each_expectation_and_a_summary() -> None:
     assert text.rstrip().splitlines()[-1] == "1 of 2 expectations failed."
 
 
+def test_a_narrow_table_folds_the_origin_and_keeps_its_line_number() -> None:
+    scenario, _ = parse_directives('REM @expect terminal contains "a fairly long text"\n', source="x" * 40 + ".mnt")
+    console = Console(record=True, width=60)
+    render_outcomes([evaluate(expectation, FakeRun()) for expectation in scenario.expectations], console)
+    rows = console.export_text().splitlines()[3:-2]  # between the header's rule and the closing rule and verdict
+    first_column = "".join(row.split("│")[1].strip() for row in rows)
+    assert first_column == "terminal" + "x" * 40 + ".mnt:1"
+
+
 def test_the_summary_when_all_held() -> None:
     console = Console(record=True, width=100)
     render_outcomes([check("count = 1", FakeRun({"COUNT": 1}))], console)

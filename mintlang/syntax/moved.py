@@ -20,7 +20,7 @@ from itertools import accumulate, chain, islice
 from typing import Generic, TypeVar, overload
 
 from mintlang.syntax.nodes import PlacedLine
-from mintlang.syntax.packed import PackedLines, equal_items
+from mintlang.syntax.packed import equal_items
 
 _MOST_PIECES = 16
 T = TypeVar("T")
@@ -125,17 +125,18 @@ class Moved(Sequence[T]):
 
 
 class MovedLines(Moved[PlacedLine]):
-    """A document's logical lines (``Document.placed``)."""
+    """A document's logical lines (``Document.placed``).
+
+    Flat, they are a tuple of ``PlacedLine``: a re-parsed document is the language server's,
+    which passes over its lines on every keystroke, and packing them into columns again
+    (``PackedLines``) would make every line anew for each pass.
+    """
 
     __slots__ = ()
 
     @staticmethod
     def move(item: PlacedLine, shift: int, line_shift: int) -> PlacedLine:
         return PlacedLine(item.origin + shift, item.number + line_shift, item.syntax, item.content)
-
-    @staticmethod
-    def flat(items: Iterable[PlacedLine]) -> Sequence[PlacedLine]:
-        return PackedLines.of(items)
 
 
 class MovedOffsets(Moved[int]):

@@ -10,7 +10,7 @@ over the lines makes each named tuple as it goes, in C, and drops it after.
 from __future__ import annotations
 
 from array import array
-from collections.abc import Hashable, Iterable, Iterator, Sequence
+from collections.abc import Hashable, Iterator, Sequence
 from functools import partial
 from typing import overload
 
@@ -42,19 +42,6 @@ class PackedLines(Sequence[PlacedLine]):
         self._numbers = numbers
         self._syntaxes = syntaxes
         self._contents = contents
-
-    @classmethod
-    def of(cls, lines: Iterable[PlacedLine]) -> PackedLines:
-        origins: array[int] = array("q")
-        numbers: array[int] = array("q")
-        syntaxes: list[LineSyntax] = []
-        contents: list[Hashable] = []
-        for origin, number, syntax, content in lines:
-            origins.append(origin)
-            numbers.append(number)
-            syntaxes.append(syntax)
-            contents.append(content)
-        return cls(origins, numbers, tuple(syntaxes), tuple(contents))
 
     def __len__(self) -> int:
         return len(self._syntaxes)

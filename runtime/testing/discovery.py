@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass
@@ -29,7 +30,8 @@ class TestCase:
 
 @dataclass(frozen=True, slots=True)
 class Unreadable:
-    """A path given or found that could not be read: reported, and the run goes on.
+    """A path given or found that could not be read, or a scenario file that runs nothing: reported, and the
+    run goes on.
 
     ``message`` names the path, and the line and column when the reason lies at a place in the file
     (``blob.mnt:2:1: not Mint text (a NUL byte)``, as ``mint check`` and ``mint-run`` say it).
@@ -45,14 +47,32 @@ class Unreadable:
 def discover(paths: Iterable[Path]) -> tuple[list[TestCase], list[Unreadable]]:
     """The tests under ``paths`` (files or folders, searched recursively as ``mint check`` searches them), in
     path order, each once."""
+    paths = list(paths)
     found = find(paths)
     problems = [Unreadable.at(Path(error.filename), _reason(error)) for error in found.unreadable]
+    problems += _scenarios_without_program(paths)
     cases: dict[Path, TestCase] = {}
     for program in found.files:
         case = _case(program, problems)
         if case is not None:
             cases.setdefault(program.resolve(), case)
     return sorted(cases.values(), key=lambda case: str(case.program)), problems
+
+
+def _scenarios_without_program(paths: Iterable[Path]) -> list[Unreadable]:
+    """Scenario files below the folders with no program of their name beside them: a misnamed program or
+    scenario would otherwise leave its test unrun without a word (folders that cannot be listed ``find``
+    reports)."""
+    orphans = []
+    for directory in (path for path in paths if path.is_dir()):
+        for folder, _, names in os.walk(directory):
+            for name in names:
+                if name.lower().endswith(SCENARIO_SUFFIX):
+                    program = name[: -len(SCENARIO_SUFFIX)] + ".mnt"
+                    if listed_as(program, names) is None:
+                        reason = f"no program {program} beside it, so it runs nothing"
+                        orphans.append(Unreadable.at(Path(folder, name), reason))
+    return sorted(orphans, key=lambda orphan: orphan.message)
 
 
 def _reason(error: OSError) -> str:

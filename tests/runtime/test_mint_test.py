@@ -155,3 +155,14 @@ def test_jobs_zero_runs_on_every_core_as_mint_check_takes_it(tmp_path: Path) -> 
     result = CliRunner().invoke(main, ["test", str(program), "-j", "0", "--color", "never"])
     assert result.exit_code == 0, result.output
     assert result.output.splitlines()[0] == f"PASSED {program}"
+
+
+def test_a_scenario_file_with_no_program_of_its_name_is_reported_and_the_other_tests_run(tmp_path: Path) -> None:
+    # "conveyer" is misspelt: its scenario would otherwise never run, and the suite would pass without it.
+    _write(tmp_path, "conveyor.mnt", PASSING)
+    _write(tmp_path, "conveyer.scenario.toml", '[[expect]]\nwhat = "a"\nequals = 1\n')
+    result = _mint_test(tmp_path, "--color", "never")
+    assert result.exit_code == 2
+    orphan = tmp_path / "conveyer.scenario.toml"
+    assert f"mint test: {orphan}: no program conveyer.mnt beside it, so it runs nothing" in result.output
+    assert f"PASSED {tmp_path / 'conveyor.mnt'}" in result.output

@@ -310,6 +310,14 @@ def _without_line_numbers(message: str) -> str:
     return _ON_LINE.sub("", message)
 
 
+def _leftover_reason(context: Context, keyword: str) -> str:
+    """Why X-V3 flags ``keyword``: a v3 keyword, or a word written like one that neither keyword list
+    knows, such as the v3 guide's misprint ``HMPSEED.2 = 10`` (v3:8708), never a Mint v3 keyword."""
+    if context.db.lookup_v3(keyword) is None:
+        return f"{keyword} is no Mint v3 or v4 keyword the migrator knows (misprint?): no automatic rewrite"
+    return f"{keyword} is Mint v3 only: no automatic rewrite"
+
+
 def _messages(diagnostics: Iterable[Diagnostic], *, codes: bool = False) -> str:
     """The different messages of some diagnostics, in order, each once."""
     return "; ".join(dict.fromkeys(f"{d.code} {d.message}" if codes else d.message for d in diagnostics))
@@ -400,7 +408,7 @@ class LeftoverV3(Rule):
         db = context.db
         for file, statement, keyword, _ in keyword_nodes(context, lambda name: self._left(context, name)):
             if not _flagged(file, statement.span.start):
-                yield self.flag(file, statement.span, f"{keyword} is Mint v3 only: no automatic rewrite")
+                yield self.flag(file, statement.span, _leftover_reason(context, keyword))
         same = same_value_constants(context)
         changed = [name for name in db.v3_constants if name not in same]
         for file, _, statement in context.statements(*map(constant_tag, changed)):

@@ -267,8 +267,11 @@ def _expectations(count: int) -> str:
 def render_outcomes(outcomes: Iterable[Outcome], console: Console) -> None:
     """A table of every expectation with what was seen, then a one-line verdict."""
     outcomes = tuple(outcomes)
-    # On a narrow terminal the expectation's origin folds onto more lines rather than lose its line number.
-    table = Table(Column("expectation", overflow="fold"), "when", "expected", "actual", "result")
+    # The origin (file:line) is kept whole where it fits in a third of the width, ahead of the other columns,
+    # which wrap at words; a longer one folds onto more lines rather than lose its line number.
+    widest = max((len(str(outcome.expectation.origin)) for outcome in outcomes), default=0)
+    origin = Column("expectation", overflow="fold", min_width=min(widest, console.width // 3))
+    table = Table(origin, "when", "expected", "actual", "result")
     for outcome in outcomes:
         expectation = outcome.expectation
         what = Text(expectation.what)

@@ -193,6 +193,14 @@ def test_a_narrow_table_folds_the_origin_and_keeps_its_line_number() -> None:
     assert first_column == "terminal" + "x" * 40 + ".mnt:1"
 
 
+def test_an_origin_that_fits_in_a_third_of_the_width_is_shown_on_one_line() -> None:
+    # 20 characters in an 80-column table (a third is 26), beside text that would otherwise take the room.
+    scenario, _ = parse_directives(f'REM @expect terminal contains "{"word " * 12}"\n', source="cell.scenario.toml")
+    console = Console(record=True, width=80)
+    render_outcomes([evaluate(expectation, FakeRun()) for expectation in scenario.expectations], console)
+    assert "│ cell.scenario.toml:1 " in console.export_text()
+
+
 def test_the_summary_when_all_held() -> None:
     console = Console(record=True, width=100)
     render_outcomes([check("count = 1", FakeRun({"COUNT": 1}))], console)

@@ -121,7 +121,10 @@ def _in_position_order(diagnostics: Iterable[Diagnostic]) -> list[Diagnostic]:
     Two stable sorts on keys the diagnostics hold, rather than one on a (span, code) tuple made
     for each: on a file of broken lines those tuples outweighed the rest of the sort.
     """
-    return sorted(sorted(diagnostics, key=_CODE), key=_SPAN)
+    ordered = list(diagnostics)
+    ordered.sort(key=_CODE)  # in place: one list, where sorted(sorted(...)) held three on a file of errors
+    ordered.sort(key=_SPAN)
+    return ordered
 
 
 _CODE = attrgetter("code")
@@ -175,7 +178,8 @@ def analyse(
             (finding.diagnostic for finding in memory.findings(model, found.arrays) if finding.unit is unit),
         )
         distinct = _first_of_each(diagnostic for diagnostic in everything if selected(diagnostic.code))
-        per_unit[unit] = _in_position_order(suppress(distinct, document, selected))
+        kept = suppress(distinct, document, selected)
+        per_unit[unit] = distinct if kept is distinct else _in_position_order(kept)
     return Analysis(model, tuple(per_unit[Unit.PROGRAM]), tuple(per_unit[Unit.CONFIGURATION]), found)
 
 

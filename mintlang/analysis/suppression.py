@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import re
 from bisect import bisect_right
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -98,10 +98,9 @@ def _mentioning(source: str, offsets: Sequence[int]) -> Iterator[int]:
         at = text.find(_MENTION, at + len(_MENTION))
 
 
-def suppress(
-    diagnostics: Iterable[Diagnostic], document: Document, selected: Callable[[str], bool]
-) -> list[Diagnostic]:
-    """``diagnostics`` without those a comment of ``document`` silences, and the unused suppressions.
+def suppress(diagnostics: list[Diagnostic], document: Document, selected: Callable[[str], bool]) -> list[Diagnostic]:
+    """``diagnostics`` without those a comment of ``document`` silences, and the unused suppressions;
+    the very list given when the document has no suppression comment.
 
     A diagnostic is on the line its span starts on. ``selected`` says whether a code is
     checked at all: a suppression of a code not checked silences nothing and is reported
@@ -109,7 +108,7 @@ def suppress(
     """
     found = directives(document)
     if not found:
-        return list(diagnostics)
+        return diagnostics
     by_line = [directive for directive in found if not directive.whole_file]
     starts = [directive.line.start for directive in by_line]
     whole_file = [directive for directive in found if directive.whole_file]

@@ -21,6 +21,7 @@ from mintlang.runtime.scenario.expectations import (
     expectations_at,
     expectations_pass,
     render_outcomes,
+    stop_fails,
 )
 from mintlang.runtime.scenario.files import load_scenario
 from mintlang.runtime.scenario.problems import ScenarioError, ScenarioFileError
@@ -68,4 +69,5 @@ __all__ = [
     "merge",
     "parse_directives",
     "render_outcomes",
+    "stop_fails",
 ]

@@ -256,8 +256,14 @@ def expectations_pass(outcomes: Sequence[Outcome], stopped: str) -> bool:
     A run that crashed, deadlocked or ran out of wall time passes only when a
     ``stopped`` expectation asked for exactly that; no expectations is no pass.
     """
+    return bool(outcomes) and all_held(outcomes) and not stop_fails(outcomes, stopped)
+
+
+def stop_fails(outcomes: Sequence[Outcome], stopped: str) -> bool:
+    """Whether the way the run stopped fails it whatever the other expectations say: not a normal stop, and
+    no ``stopped`` expectation asked for it."""
     chosen = any(isinstance(outcome.expectation, StoppedExpectation) for outcome in outcomes)
-    return bool(outcomes) and all_held(outcomes) and (chosen or stopped in NORMAL_STOPS)
+    return not chosen and stopped not in NORMAL_STOPS
 
 
 def _expectations(count: int) -> str:

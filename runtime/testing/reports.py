@@ -38,9 +38,9 @@ def text(results: Sequence[TestResult], seconds: float, console: Console) -> Non
         if result.verdict is not Verdict.PASSED:
             line.append(f"  {_why(result)}", style="dim")
         console.print(line, highlight=False)
-        for check in result.checks:
-            if not check.held:
-                console.print(f"    {_failure(check)}", highlight=False, markup=False)
+        if any(not check.held for check in result.checks):  # else the line above says how the run stopped
+            for failure in _failed_lines(result):
+                console.print(f"    {failure}", highlight=False, markup=False)
     console.print(Text(summary(results, seconds), style="bold"), highlight=False)
 
 
@@ -50,6 +50,10 @@ def _why(result: TestResult) -> str:
     failed = sum(not check.held for check in result.checks)
     if failed:
         return f"{failed} of {len(result.checks)} expectations failed"
+    return _stop(result)
+
+
+def _stop(result: TestResult) -> str:
     return f"stopped {result.stopped}" + (f": {result.message}" if result.message else "")
 
 
@@ -82,8 +86,10 @@ def junit(results: Sequence[TestResult], seconds: float) -> str:
 
 
 def _failed_lines(result: TestResult) -> list[str]:
-    lines = [_failure(check) for check in result.checks if not check.held]
-    return lines or [f"stopped {result.stopped}: {result.message}"]
+    """Each expectation that did not hold, then the stop when it fails the test too (a run ended by an error
+    shows the error, not only the values it left)."""
+    failures = [_failure(check) for check in result.checks if not check.held]
+    return [*failures, _stop(result)] if result.stop_failed else failures
 
 
 def _failure(check: Check) -> str:

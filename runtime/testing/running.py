@@ -9,7 +9,14 @@ from enum import StrEnum
 from mintlang.dialect import Dialect
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.run import run_source
-from mintlang.runtime.scenario import Outcome, Scenario, ScenarioFileError, expectations_pass, load_scenario
+from mintlang.runtime.scenario import (
+    Outcome,
+    Scenario,
+    ScenarioFileError,
+    expectations_pass,
+    load_scenario,
+    stop_fails,
+)
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, merge
 from mintlang.runtime.simulation import Limits
 from mintlang.runtime.testing.coverage import FileCoverage, Recorder
@@ -49,6 +56,7 @@ class TestResult:
     simulated_ms: int
     seconds: float
     coverage: tuple[FileCoverage, ...] = ()  # with ``Options.coverage``
+    stop_failed: bool = False  # the run stopped on an error, a deadlock … that no ``stopped`` expectation asked for
 
 
 @dataclass(frozen=True, slots=True)
@@ -109,7 +117,10 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
         return _error(case, "no expectation to check: add REM @expect lines or [[expect]] to its scenario", began)
     verdict = Verdict.PASSED if expectations_pass(result.outcomes, stopped) else Verdict.FAILED
     elapsed = time.perf_counter() - began
-    return TestResult(case, verdict, stopped, result.stop.message, checks, result.stop.time_ms, elapsed, coverage)
+    stop_failed = stop_fails(result.outcomes, stopped)
+    return TestResult(
+        case, verdict, stopped, result.stop.message, checks, result.stop.time_ms, elapsed, coverage, stop_failed
+    )
 
 
 def _configured_controller(settings: FileSettings, dialect: Dialect) -> str | None:

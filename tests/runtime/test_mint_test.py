@@ -166,3 +166,31 @@ def test_a_scenario_file_with_no_program_of_its_name_is_reported_and_the_other_t
     orphan = tmp_path / "conveyer.scenario.toml"
     assert f"mint test: {orphan}: no program conveyer.mnt beside it, so it runs nothing" in result.output
     assert f"PASSED {tmp_path / 'conveyor.mnt'}" in result.output
+
+
+# Line 4 reads a(9) of a(3): R2016 ends the run there, before line 5 sets b, so the expectation fails too.
+STOPPED_BY_AN_ERROR = "REM @expect b = 1\nDIM a(3)\nDIM b\nb = a(9)\nb = 1\n"
+INVALID_INDEX = "stopped error: R2016: PROGRAM Invalid index (index 9 outside 1 to 3) [line 4]"
+
+
+def test_a_test_failing_an_expectation_and_stopped_by_an_error_reports_both(tmp_path: Path) -> None:
+    program = _write(tmp_path, "broken.mnt", STOPPED_BY_AN_ERROR)
+    lines = _mint_test(program, "--color", "never").output.splitlines()
+    assert lines[0] == f"FAILED {program}  1 of 1 expectations failed"
+    assert lines[1].startswith("    B at end: expected = 1, got 0 (off by -1) [")
+    assert lines[2] == f"    {INVALID_INDEX}"
+    suite = ElementTree.fromstring(_mint_test(program, "--format", "junit").output).find("testsuite")
+    assert suite is not None
+    failure = suite.find("testcase/failure")
+    assert failure is not None and failure.text is not None
+    assert failure.text.splitlines()[1] == INVALID_INDEX
+
+
+def test_an_error_that_a_stopped_expectation_asks_for_is_not_reported_as_a_failure(tmp_path: Path) -> None:
+    program = _write(
+        tmp_path, "broken.mnt", STOPPED_BY_AN_ERROR.replace("b = 1\n", "b = 1\nREM @expect stopped error\n", 1)
+    )
+    lines = _mint_test(program, "--color", "never").output.splitlines()
+    assert lines[0] == f"FAILED {program}  1 of 2 expectations failed"
+    assert lines[1].startswith("    B at end: expected = 1, got 0 (off by -1) [")
+    assert lines[2].startswith("1 failed in ")

@@ -70,58 +70,45 @@ def test_the_tracefile_counts_each_line_branch_outcome_and_handler(tmp_path: Pat
     assert "10/12 (83 %)" in result.output and "4/8 (50 %)" in result.output and "0/1 (0 %)" in result.output
 
 
+def _records(tmp_path: Path, text: str, kinds: tuple[str, ...], *options: str) -> list[str]:
+    """The tracefile's records of ``kinds`` (``"DA:"``, ``"BRDA"`` …) after ``mint test --coverage`` of one
+    program, which must pass."""
+    program = tmp_path / "covered.mnt"
+    program.write_text(text, encoding="utf-8")
+    tracefile = tmp_path / "lcov.info"
+    arguments = ["test", str(program), *options, "--coverage", "--lcov", str(tracefile), "-j", "1"]
+    result = CliRunner().invoke(main, arguments)
+    assert result.exit_code == 0, result.output
+    return [line for line in tracefile.read_text(encoding="utf-8").splitlines() if line.startswith(kinds)]
+
+
 def test_a_pause_that_waits_and_a_loop_left_by_until_are_the_other_outcomes(tmp_path: Path) -> None:
     # REPEAT runs twice: UNTIL repeats once and is left once; the PAUSE waits for the timer.
-    program = tmp_path / "waits.mnt"
-    program.write_text(
-        "REM @expect n = 2\nDIM n\nREPEAT\n  n = n + 1\nUNTIL n = 2\nPAUSE TIME > 10\n", encoding="utf-8"
-    )
-    tracefile = tmp_path / "lcov.info"
-    result = CliRunner().invoke(main, ["test", str(program), "--coverage", "--lcov", str(tracefile), "-j", "1"])
-    assert result.exit_code == 0, result.output
-    branches = [line for line in tracefile.read_text(encoding="utf-8").splitlines() if line.startswith("BRDA")]
+    program = "REM @expect n = 2\nDIM n\nREPEAT\n  n = n + 1\nUNTIL n = 2\nPAUSE TIME > 10\n"
+    branches = _records(tmp_path, program, ("BRDA",))
     assert branches == ["BRDA:5,0,0,1", "BRDA:5,0,1,1", "BRDA:6,1,0,0", "BRDA:6,1,1,1"]
 
 
 def test_a_mintmt_event_line_is_a_declaration_not_a_line_to_run(tmp_path: Path) -> None:
     # The host writes comms 1 at 10 ms: the handler (lines 7-8) runs once while line 4 waits; line 6, the
     # Event line, is entered by the event and never run itself, so it is no line to cover.
-    program = tmp_path / "event.mnt"
-    program.write_text(
+    program = (
         "' @sim host write 1 \"7\" at 10\n' @expect n = 1\nDim n\nPause n = 1\nEnd\n"
-        "Event Comms1\n  n = n + 1\nEnd Event\n",
-        encoding="utf-8",
+        "Event Comms1\n  n = n + 1\nEnd Event\n"
     )
-    tracefile = tmp_path / "lcov.info"
-    arguments = ["test", str(program), "--dialect", "mintmt", "--coverage", "--lcov", str(tracefile), "-j", "1"]
-    result = CliRunner().invoke(main, arguments)
-    assert result.exit_code == 0, result.output
-    found = [line for line in tracefile.read_text(encoding="utf-8").splitlines() if line.startswith(("DA:", "L"))]
-    assert found == ["DA:3,1", "DA:4,1", "DA:5,1", "DA:7,1", "DA:8,1", "LF:5", "LH:5"]
-
-
-def _lines_of(tracefile: Path) -> list[str]:
-    return [line for line in tracefile.read_text(encoding="utf-8").splitlines() if line.startswith(("DA:", "L"))]
+    lines = _records(tmp_path, program, ("DA:", "L"), "--dialect", "mintmt")
+    assert lines == ["DA:3,1", "DA:4,1", "DA:5,1", "DA:7,1", "DA:8,1", "LF:5", "LH:5"]
 
 
 def test_the_line_that_raises_the_error_ending_the_run_ran(tmp_path: Path) -> None:
     # Line 3 indexes outside a(3): the run stops there with R2016, so line 3 ran once and END (line 4) never.
-    program = tmp_path / "stops.mnt"
-    program.write_text("REM @expect stopped error\nDIM a(3)\na(5) = 1\nEND\n", encoding="utf-8")
-    tracefile = tmp_path / "lcov.info"
-    result = CliRunner().invoke(main, ["test", str(program), "--coverage", "--lcov", str(tracefile), "-j", "1"])
-    assert result.exit_code == 0, result.output
-    assert _lines_of(tracefile) == ["DA:2,1", "DA:3,1", "DA:4,0", "LF:3", "LH:2"]
+    lines = _records(tmp_path, "REM @expect stopped error\nDIM a(3)\na(5) = 1\nEND\n", ("DA:", "L"))
+    assert lines == ["DA:2,1", "DA:3,1", "DA:4,0", "LF:3", "LH:2"]
 
 
 def test_a_line_failing_into_onerror_ran_once(tmp_path: Path) -> None:
     # Line 4 fails once into #ONERROR (lines 7-8), whose RETURN resumes after it at END (line 5); the label
     # line 6 holds no statement.
-    program = tmp_path / "handled.mnt"
-    program.write_text(
-        "REM @expect n = 1\nDIM a(3)\nDIM n\na(5) = 1\nEND\n#ONERROR\n  n = n + 1\nRETURN\n", encoding="utf-8"
-    )
-    tracefile = tmp_path / "lcov.info"
-    result = CliRunner().invoke(main, ["test", str(program), "--coverage", "--lcov", str(tracefile), "-j", "1"])
-    assert result.exit_code == 0, result.output
-    assert _lines_of(tracefile) == ["DA:2,1", "DA:3,1", "DA:4,1", "DA:5,1", "DA:7,1", "DA:8,1", "LF:6", "LH:6"]
+    program = "REM @expect n = 1\nDIM a(3)\nDIM n\na(5) = 1\nEND\n#ONERROR\n  n = n + 1\nRETURN\n"
+    lines = _records(tmp_path, program, ("DA:", "L"))
+    assert lines == ["DA:2,1", "DA:3,1", "DA:4,1", "DA:5,1", "DA:7,1", "DA:8,1", "LF:6", "LH:6"]

@@ -25,6 +25,7 @@ from mintlang.cli.options import (
     controller_option,
     exit_zero_option,
     format_option,
+    jobs_option,
     list_option,
     output_file_option,
     refuse_quiet_and_verbose,
@@ -114,13 +115,7 @@ def _fail(message: str) -> NoReturn:
     "--stdin-filename",
     help="The name under which the program read from standard input (the path -) is reported.",
 )
-@click.option(
-    "-j",
-    "--jobs",
-    type=click.IntRange(min=0),
-    default=0,
-    help="Check this many files at once, each in a process of its own.  [default: 0, all cores]",
-)
+@jobs_option("Check this many files at once, each in a process of its own.  [default: 0, all cores]")
 @verbosity_options(
     quiet="Only the findings: no closing count, no progress bar.",
     verbose="Say on standard error how many files were checked, on how many processes, in how long.",

@@ -74,6 +74,11 @@ def output_file_option(
     return click.option("--output-file", type=click.Path(dir_okay=False, path_type=Path), help=help_text)
 
 
+def jobs_option(help_text: str) -> Callable[[F], F]:
+    """``-j``/``--jobs``: how many processes work at once; 0, the default, is every core (``check``, ``test``)."""
+    return click.option("-j", "--jobs", type=click.IntRange(min=0), default=0, help=help_text)
+
+
 def exit_zero_option(help_text: str) -> Callable[[F], F]:
     """``--exit-zero``: findings do not fail the run; a usage or I/O problem still does."""
     return click.option("--exit-zero", is_flag=True, help=help_text)

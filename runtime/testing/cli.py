@@ -18,6 +18,7 @@ from mintlang.cli.options import (
     drives_option,
     exit_zero_option,
     format_option,
+    jobs_option,
     output_file_option,
     version_option,
 )
@@ -49,13 +50,7 @@ from mintlang.runtime.dialects import SIMULATED
     show_default=True,
     help="Where --coverage writes its lcov tracefile.",
 )
-@click.option(
-    "-j",
-    "--jobs",
-    type=click.IntRange(min=0),
-    default=0,
-    help="Tests run at once, on as many processes.  [default: 0, every core]",
-)
+@jobs_option("Tests run at once, on as many processes.  [default: 0, every core]")
 @click.option("--collect-only", is_flag=True, help="List the tests found (text or json) and run none.")
 @format_option(["text", "junit", "json"])
 @output_file_option()

@@ -218,6 +218,13 @@ class Simulator:
             tick += 1
         return tick
 
+    def _moves_end(self, t: int) -> int:
+        """The tick the last move still running ends (``NEVER`` when none runs): a program blocked for good
+        is a deadlock once the machine has finished what it was doing, as a controller would, not before.
+        Nothing else needs those ticks (``Axis.next_required``), so the axes would be left mid-move."""
+        ends = [axis.move.end for axis in self.c.axes if axis.move is not None and not axis.held]
+        return max(*ends, t + 1) if ends else NEVER
+
     def _settling(self) -> bool:
         """Whether the machine runs on after the program ended: ``Limits.settle`` asks for it, for as long as
         an axis is not idle. Moves outlive the program on a controller; a comparison of two runs whose
@@ -287,6 +294,8 @@ class Simulator:
                     break
                 ended = c.clock.now if ended is None else ended
             following = self.next_change(t)
+            if following >= NEVER:
+                following = self._moves_end(t)
             if following >= NEVER:
                 vm.stop(StopReason.DEADLOCK, self._deadlock())
                 break

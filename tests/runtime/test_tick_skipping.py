@@ -39,3 +39,12 @@ def test_an_unhandled_motion_error_names_the_file_and_the_line() -> None:
     source = "REM @sim plant 0 stalled\nFOLERRORFATAL.0 = 100\nMOVER.0 = 2000 : GO.0\nPAUSE IDLE.0\n"
     message = simulate(source).stop.message
     assert message.startswith("R0500: PROGRAM Axis error present [axis/channel 0]") and message.endswith("[line 4]")
+
+
+def test_a_program_blocked_for_good_deadlocks_once_its_moves_have_ended() -> None:
+    # 1000 units/s reached in 0.1 s (50 units), left in 0.1 s (50 units), 1900 units at speed: 2.1 s.
+    source = "SPEED.0 = 1000 : ACCEL.0 = 10000 : DECEL.0 = 10000\nMOVER.0 = 2000 : GO.0\nPAUSE IN1\n"
+    result = simulate(source)
+    assert (result.stop.reason, result.stop.line) == (StopReason.DEADLOCK, 3)
+    assert 2100 <= result.stop.time_ms <= 2105  # GO starts the move on a profiler tick
+    assert result.axes[0].pos == 2000 and result.axes[0].axismode == 0

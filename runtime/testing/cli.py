@@ -20,6 +20,7 @@ from mintlang.cli.options import (
     format_option,
     jobs_option,
     output_file_option,
+    verbosity_options,
     version_option,
 )
 from mintlang.runtime.dialects import SIMULATED
@@ -56,6 +57,10 @@ from mintlang.runtime.dialects import SIMULATED
 @output_file_option()
 @exit_zero_option("Exit 0 even when a test fails.")
 @color_option()
+@verbosity_options(
+    quiet="Report only the tests that did not pass: no closing count, no progress bar.",
+    verbose="Show every expectation under its test, held or not.",
+)
 @version_option("mint test")
 def test(**options: Any) -> None:
     """Run the Mint programs under PATHS (default: the current folder) that have REM @expect lines or a

@@ -31,17 +31,23 @@ def _word(verdict: Verdict, count: int) -> str:
     return "errors" if verdict is Verdict.ERROR and count != 1 else verdict.value
 
 
-def text(results: Sequence[TestResult], seconds: float, console: Console) -> None:
+def text(
+    results: Sequence[TestResult], seconds: float, console: Console, *, quiet: bool = False, verbose: bool = False
+) -> None:
+    """A line per test, and under it what failed; ``quiet``: the tests that did not pass alone, and no
+    closing count; ``verbose``: every expectation under its test, held or not."""
     for result in results:
+        if quiet and result.verdict is Verdict.PASSED:
+            continue
         line = Text(f"{result.verdict.value.upper():6} ", style=_STYLE[result.verdict])
         line.append(result.case.name)
         if result.verdict is not Verdict.PASSED:
             line.append(f"  {_why(result)}", style="dim")
         console.print(line, highlight=False)
-        if any(not check.held for check in result.checks):  # else the line above says how the run stopped
-            for failure in _failed_lines(result):
-                console.print(f"    {failure}", highlight=False, markup=False)
-    console.print(Text(summary(results, seconds), style="bold"), highlight=False)
+        for detail in _details(result, verbose=verbose):
+            console.print(f"    {detail}", highlight=False, markup=False)
+    if not quiet:
+        console.print(Text(summary(results, seconds), style="bold"), highlight=False)
 
 
 def _why(result: TestResult) -> str:
@@ -96,6 +102,22 @@ def _failure(check: Check) -> str:
     """An expectation that did not hold, in one line: what, when, expected and seen, why, and where it is."""
     detail = f" ({check.detail})" if check.detail else ""
     return f"{check.what} at {check.when}: expected {check.expected}, got {check.actual}{detail} [{check.origin}]"
+
+
+def _details(result: TestResult, *, verbose: bool) -> list[str]:
+    """The lines under a test's: its failed expectations (every one with ``verbose``), then the stop when it
+    failed the test too. Without a failed expectation, the test's line already says how the run stopped."""
+    if all(check.held for check in result.checks):
+        return [_held(check) for check in result.checks] if verbose else []
+    if not verbose:
+        return _failed_lines(result)
+    lines = [_held(check) if check.held else _failure(check) for check in result.checks]
+    return [*lines, _stop(result)] if result.stop_failed else lines
+
+
+def _held(check: Check) -> str:
+    """An expectation that held, in one line: what, when, the value seen, and where it is."""
+    return f"{check.what} at {check.when}: {check.actual}, as expected [{check.origin}]"
 
 
 def collected(cases: Sequence[TestCase], *, as_json: bool) -> str:

@@ -9,10 +9,11 @@ import sys
 import time
 from functools import partial
 from pathlib import Path
-from typing import NoReturn
+from typing import TYPE_CHECKING, NoReturn
 
 import click
 
+from mintlang.cli.options import refuse_quiet_and_verbose
 from mintlang.cli.parallel import all_cores, map_in_order
 from mintlang.cli.terminal import console, destination, refuse_overwriting
 from mintlang.dialect import Dialect
@@ -21,6 +22,9 @@ from mintlang.runtime.testing.coverage import lcov as tracefile
 from mintlang.runtime.testing.coverage import merge
 from mintlang.runtime.testing.discovery import discover
 from mintlang.runtime.testing.running import Options, TestResult, Verdict, run_case
+
+if TYPE_CHECKING:
+    from rich.console import Console
 
 PASSED, FAILED, USAGE, NO_TESTS = 0, 1, 2, 5
 
@@ -40,8 +44,11 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     output_file: Path | None,
     exit_zero: bool,
     color: str,
+    quiet: bool,
+    verbose: bool,
 ) -> None:
     """Run the tests as ``test`` was asked to (its docstring says which programs are tests)."""
+    refuse_quiet_and_verbose(quiet, verbose)
     if collect_only and output_format == "junit":
         raise click.UsageError("--collect-only lists the tests as text or json, not junit")
     cases, unreadable = discover(paths or (Path(),))
@@ -62,7 +69,11 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     options = Options(controller, Dialect(dialect) if dialect else None, until_ms, max_wall_s, enabled, coverage)
     began = time.perf_counter()
     results = map_in_order(
-        partial(run_case, options=options), cases, workers=jobs or all_cores(), progress=errors, description="testing"
+        partial(run_case, options=options),
+        cases,
+        workers=jobs or all_cores(),
+        progress=None if quiet else errors,
+        description="testing",
     )
     seconds = time.perf_counter() - began
     with destination(output_file, _fail) as stream:
@@ -71,19 +82,22 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         elif output_format == "json":
             stream.write(reports.as_json(results, seconds))
         else:
-            reports.text(results, seconds, console(color if output_file is None else "never", file=stream))
+            shown = console(color if output_file is None else "never", file=stream)
+            reports.text(results, seconds, shown, quiet=quiet, verbose=verbose)
     if coverage:
-        _coverage(results, lcov, output_format, color)
+        _coverage(results, lcov, None if quiet else console(color, stderr=output_format != "text"))
     if unreadable:
         sys.exit(USAGE)
     passed = all(result.verdict is Verdict.PASSED for result in results)
     sys.exit(PASSED if passed or exit_zero else FAILED)
 
 
-def _coverage(results: list[TestResult], lcov: Path, output_format: str, color: str) -> None:
-    """The table (beside a text report, else on standard error) and the lcov tracefile."""
+def _coverage(results: list[TestResult], lcov: Path, table: Console | None) -> None:
+    """The table on ``table`` (beside a text report, else on standard error; none when quiet) and the
+    lcov tracefile."""
     files = merge(result.coverage for result in results)
-    reports.coverage_table(files, console(color, stderr=output_format != "text"))
+    if table is not None:
+        reports.coverage_table(files, table)
     try:
         lcov.write_text(tracefile(files), encoding="utf-8")
     except OSError as error:

@@ -194,3 +194,30 @@ def test_an_error_that_a_stopped_expectation_asks_for_is_not_reported_as_a_failu
     assert lines[0] == f"FAILED {program}  1 of 2 expectations failed"
     assert lines[1].startswith("    B at end: expected = 1, got 0 (off by -1) [")
     assert lines[2].startswith("1 failed in ")
+
+
+def test_quiet_reports_only_the_tests_that_did_not_pass_and_no_count(tmp_path: Path) -> None:
+    _write(tmp_path, "a_passes.mnt", PASSING)
+    _write(tmp_path, "b_fails.mnt", FAILING)
+    result = _mint_test(tmp_path, "--color", "never", "-q", "--coverage", "--lcov", tmp_path / "lcov.info")
+    assert result.exit_code == 1
+    assert result.output.splitlines() == [
+        f"FAILED {tmp_path / 'b_fails.mnt'}  1 of 1 expectations failed",
+        f"    A at end: expected = 3, got 2 (off by -1) [{tmp_path / 'b_fails.mnt'}:1]",
+    ]
+    assert (tmp_path / "lcov.info").is_file()  # the tracefile is still written, only the table is left out
+
+
+def test_verbose_shows_every_expectation_under_its_test(tmp_path: Path) -> None:
+    _write(tmp_path, "a_passes.mnt", PASSING)
+    lines = _mint_test(tmp_path, "--color", "never", "--verbose").output.splitlines()
+    assert lines[:2] == [
+        f"PASSED {tmp_path / 'a_passes.mnt'}",
+        f"    A at end: 2, as expected [{tmp_path / 'a_passes.mnt'}:1]",
+    ]
+    assert lines[2].startswith("1 passed in ")
+
+
+def test_quiet_and_verbose_together_are_a_usage_error(tmp_path: Path) -> None:
+    _write(tmp_path, "a_passes.mnt", PASSING)
+    assert _mint_test(tmp_path, "-q", "-v").exit_code == 2

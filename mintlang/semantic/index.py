@@ -192,14 +192,16 @@ class IndexedLines(Sequence[IndexedLine]):
         lines have, so they test the indexes first. ``wanted`` is best a C callable (an
         ``attrgetter``): it is called for every line.
         """
-        for unit, lines, facts in self._files:
-            for index in compress(count(), map(wanted, facts)):
-                yield unit, lines[index], facts[index]
+        return self._selected(lambda facts: map(wanted, facts))
 
     def with_kinds(self, kinds: frozenset[type]) -> Iterator[IndexedLine]:
         """The lines with a statement of one of ``kinds`` (IF .. THEN bodies included)."""
+        return self._selected(lambda facts: map(not_, map(kinds.isdisjoint, map(_KINDS, facts))))
+
+    def _selected(self, selectors: Callable[[tuple[LineFacts, ...]], Iterable[object]]) -> Iterator[IndexedLine]:
+        """The lines whose selector, one per index of a file's lines, is true."""
         for unit, lines, facts in self._files:
-            for index in compress(count(), map(not_, map(kinds.isdisjoint, map(_KINDS, facts)))):
+            for index in compress(count(), selectors(facts)):
                 yield unit, lines[index], facts[index]
 
     def of(self, unit: Unit) -> Iterator[tuple[n.PlacedLine, LineFacts]]:

@@ -58,7 +58,8 @@ _NOTHING_AFTER = frozenset(
 )
 _LOOPS = frozenset({BlockKind.FOR, BlockKind.LOOP, BlockKind.REPEAT, BlockKind.WHILE})
 # The words that close or go on with a block, valid only inside one of the kinds given: ELSE and ENDIF in an
-# IF .. DO (000:11797-11803), each loop's closer in its loop, EXIT in any of the four loops (000:10236-10243).
+# IF .. DO (000:11797-11803), each loop's closer in its loop, EXIT in any of the four loops (000:10236-10243);
+# MintMT's End Loop and End If as v4's ENDL and ENDIF (004:102-125), End Event and End Startup in theirs.
 _INSIDE = {
     "ELSE": frozenset({BlockKind.IF}),
     "ENDIF": frozenset({BlockKind.IF}),
@@ -67,15 +68,10 @@ _INSIDE = {
     "ENDL": frozenset({BlockKind.LOOP}),
     "UNTIL": frozenset({BlockKind.REPEAT}),
     "EXIT": _LOOPS,
+    "ENDEVENT": frozenset({BlockKind.EVENT}),
+    "ENDSTARTUP": frozenset({BlockKind.STARTUP}),
 }
-# MintMT's block words at the start of a statement: each closer inside its block (End If in an If block, 004:102-125),
-# and Event and Startup outside every block, as no other block may hold them (MT-13).
-_MINTMT_INSIDE = {
-    TokenKind.ENDL: frozenset({BlockKind.LOOP}),
-    TokenKind.ENDIF: frozenset({BlockKind.IF}),
-    TokenKind.ENDEVENT: frozenset({BlockKind.EVENT}),
-    TokenKind.ENDSTARTUP: frozenset({BlockKind.STARTUP}),
-}
+# MintMT's Event and Startup start a statement outside every block only: no other block may hold them (MT-13).
 _OUTSIDE_EVERY_BLOCK = frozenset({TokenKind.EVENT, TokenKind.STARTUP})
 # NULL stands for no array where CAMTABLE takes its optional master distance table, its third operand (000:7958).
 _NULL_OPERANDS = {"CAMTABLE": 2}
@@ -242,11 +238,9 @@ def _constants(dialect: Dialect) -> Iterator[types.CompletionItem]:
 
 def _mintmt_block_word_fits(kind: TokenKind, blocks: frozenset[BlockKind] | None) -> bool:
     """Whether MintMT's block word of ``kind`` can start a statement inside ``blocks`` (None: not known)."""
-    if blocks is None:
-        return True
     if kind in _OUTSIDE_EVERY_BLOCK:
         return not blocks
-    return kind not in _MINTMT_INSIDE or bool(_MINTMT_INSIDE[kind] & blocks)
+    return _in_its_block(kind.value, blocks)
 
 
 def _mintmt_block_words(blocks: frozenset[BlockKind] | None) -> Iterator[types.CompletionItem]:
@@ -454,10 +448,11 @@ def register(server: MintServer) -> None:
     @server.feature(types.COMPLETION_ITEM_RESOLVE)
     def resolve(item: types.CompletionItem) -> types.CompletionItem:
         data = item.data if isinstance(item.data, dict) else {}
-        text = _keyword_description(data.get("keyword"), server)
         if "symbol" in data:
             snapshot = server.analyses.latest(str(data.get("uri")))
             text = _symbol_description(snapshot, data) if snapshot is not None else None
+        else:
+            text = _keyword_description(data.get("keyword"), server)
         if text is not None:
             item.documentation = types.MarkupContent(kind=types.MarkupKind.Markdown, value=text)
         return item

@@ -381,10 +381,11 @@ def _misspelt_keyword(
 
 def _given_a_list(kinds: list[TokenKind], begin: int, failed: int) -> bool:
     """Whether the statement from ``begin`` failed at a comma after ``=``, outside brackets: a list of values."""
-    if failed >= len(kinds) or kinds[failed] is not _K.COMMA or _K.EQUAL not in kinds[begin:failed]:
+    if failed >= len(kinds) or kinds[failed] is not _K.COMMA:
         return False
     assigned = kinds[begin:failed]
-    return assigned.count(_K.LPAR) == assigned.count(_K.RPAR) and assigned.count(_K.LSQB) == assigned.count(_K.RSQB)
+    balanced = assigned.count(_K.LPAR) == assigned.count(_K.RPAR) and assigned.count(_K.LSQB) == assigned.count(_K.RSQB)
+    return _K.EQUAL in assigned and balanced
 
 
 def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) -> Diagnostic | None:

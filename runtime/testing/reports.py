@@ -84,18 +84,18 @@ def junit(results: Sequence[TestResult], seconds: float) -> str:
         )
         if result.verdict is Verdict.FAILED:
             failure = ElementTree.SubElement(case, "failure", message=_why(result), type="expectation")
-            failure.text = "\n".join(_failed_lines(result))
+            failure.text = "\n".join(_check_lines(result, held_too=False))
         elif result.verdict is Verdict.ERROR:
             ElementTree.SubElement(case, "error", message=result.message, type="error")
     ElementTree.indent(suites)
     return ElementTree.tostring(suites, encoding="unicode", xml_declaration=True) + "\n"
 
 
-def _failed_lines(result: TestResult) -> list[str]:
-    """Each expectation that did not hold, then the stop when it fails the test too (a run ended by an error
-    shows the error, not only the values it left)."""
-    failures = [_failure(check) for check in result.checks if not check.held]
-    return [*failures, _stop(result)] if result.stop_failed else failures
+def _check_lines(result: TestResult, *, held_too: bool) -> list[str]:
+    """The expectations that did not hold (all of them with ``held_too``), then the stop when it failed the test
+    too: a run ended by an error shows the error, not only the values it left."""
+    lines = [_held(check) if check.held else _failure(check) for check in result.checks if held_too or not check.held]
+    return [*lines, _stop(result)] if result.stop_failed else lines
 
 
 def _failure(check: Check) -> str:
@@ -109,10 +109,7 @@ def _details(result: TestResult, *, verbose: bool) -> list[str]:
     failed the test too. Without a failed expectation, the test's line already says how the run stopped."""
     if all(check.held for check in result.checks):
         return [_held(check) for check in result.checks] if verbose else []
-    if not verbose:
-        return _failed_lines(result)
-    lines = [_held(check) if check.held else _failure(check) for check in result.checks]
-    return [*lines, _stop(result)] if result.stop_failed else lines
+    return _check_lines(result, held_too=verbose)
 
 
 def _held(check: Check) -> str:

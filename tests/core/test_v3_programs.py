@@ -36,6 +36,14 @@ def test_v3_keeps_its_own_keywords_and_offline_arrays() -> None:
     assert (second.name.text, second.modifier) == ("table", "OFFLINE")
 
 
+@pytest.mark.parametrize("bit", range(8))
+def test_v3_reads_x0_to_x7_as_the_expanded_io_bits(bit: int) -> None:
+    # v3 guide 12753: "X2 is the abbreviated keyword for XIO2"; X2.0 is bit 2 of bank 0 (v3:12750)
+    document = mintlang.parse(f"X{bit}.0 = 0\n", "v3")
+    (statement,) = document.lines[0].statements
+    assert (document.diagnostics, statement.keyword.keyword) == ((), f"XIO{bit}")
+
+
 def test_v3_binds_and_tighter_than_or_unlike_v4() -> None:
     # v3 guide 4.2 (lines 1986-1995): AND above OR; v4 guide 3.4.7 (line 1412): | above &
     def top(dialect: str) -> tuple[str, str]:

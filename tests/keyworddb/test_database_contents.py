@@ -248,6 +248,13 @@ def test_v3_lookups(db: KeywordDatabase) -> None:
     assert in3 is not None and in3.name == "IN3" and in3.v4_names == ("IN",)
 
 
+@pytest.mark.parametrize("bit", range(8))
+def test_v3_expanded_io_bits_are_abbreviated_x0_to_x7(db: KeywordDatabase, bit: int) -> None:
+    # v3:12720 "XIO/XI XIO0..7"; v3:12753 "X2 is the abbreviated keyword for XIO2"
+    keyword = db.lookup_v3(f"x{bit}")
+    assert keyword is not None and keyword.name == f"XIO{bit}"
+
+
 def test_a_range_knows_which_bounds_it_includes(db: KeywordDatabase) -> None:
     out = db.keywords["OUT"].attributes_for(Controller.NEXTMOVE_PCI)
     assert out is not None and out.range is not None

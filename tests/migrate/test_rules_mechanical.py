@@ -19,6 +19,7 @@ from tests.migrate.helpers import flagged, one_rule, rewritten
         ("x = MD.0\n", "x = MODE.0\n"),  # v4 MD is MOTORDIRECTION
         ("GR = 3\n", "GEARN = 3\n"),  # v4 GR is GEARING
         ("PAUSE I3\n", "PAUSE IN3\n"),
+        ("X2.0 = 0\n", "XIO2.0 = 0\n"),  # v3:12753; spec M-ABBR: X4 -> XIO4
         ("ma = 1\n", "movea = 1\n"),  # lower case stays lower case
         ("? IN12 & 1\n", "? IN12 & 1\n"),  # symbols and glued channels stay
     ],

@@ -127,8 +127,29 @@ def _format_lines(seed: Seed, start: int, end: int) -> tuple[str, ...]:
     return fmt.clean_formats(lines)
 
 
+_ABBREVIATED_IN_TEXT = re.compile(r"\b([A-Z]+)(\d+) is the abbreviated keyword for ([A-Z]+)\2\b")
+
+
+def _family_abbreviations(
+    seed: Seed, start: int, end: int, keywords: list[tuple[str, str | None]]
+) -> list[tuple[str, str | None]]:
+    """Abbreviate a family the heading prints bare from its text: ``XIO0..7`` has ``X0..X7``
+    because the entry says "X2 is the abbreviated keyword for XIO2" (v3:12753)."""
+    for number in range(start, end):
+        found = _ABBREVIATED_IN_TEXT.search(seed.stripped(number))
+        if found is not None:
+            short, family = found[1], found[3]
+            return [
+                (name, f"{short}{name[len(family) :]}")
+                if abbreviation is None and re.fullmatch(rf"{family}\d+", name)
+                else (name, abbreviation)
+                for name, abbreviation in keywords
+            ]
+    return keywords
+
+
 def _entry_records(seed: Seed, line: int, end: int, heading: str) -> list[V3Entry]:
-    keywords = heading_keywords(heading)
+    keywords = _family_abbreviations(seed, line, end, heading_keywords(heading))
     names = tuple(name for name, _ in keywords)
     formats = _format_lines(seed, line, end)
     flags = _table_flags(seed, line, end)

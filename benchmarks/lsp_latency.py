@@ -64,7 +64,10 @@ class _Client(LanguageClient):
 # The server with its file-size limit lifted, so that large files are analysed at all.
 _SERVER = "import mintlang.lsp.workspace as w; w.MAX_CHARACTERS = 10**9; from mintlang.lsp.cli import main; main()"
 _TICKS = os.sysconf("SC_CLK_TCK")
-_EDITS_PER_BLOCK = 10  # an even number: each block leaves the text as it found it
+# Even numbers: each block leaves the text as it found it. A name edit costs tens of milliseconds, a
+# comment's or a number's one or two: those are read over more edits, at a tenth of a millisecond.
+_EDITS_PER_BLOCK = {"comment": 100, "number": 100, "name": 10}
+_BLOCKS = 3  # at least, for a spread
 
 
 def _cpu_seconds(pid: int) -> float:
@@ -136,13 +139,13 @@ async def _measure(text: str, path: Path, repeat: int) -> dict[str, list[float]]
 
     # The kernel counts CPU time in ticks of 10 ms, more than an edit takes: the server's CPU is read
     # over blocks of edits (a character typed, then deleted, in turn) and divided by their number.
-    block = _EDITS_PER_BLOCK
-    for name, line, character, typing in (
-        ("diagnostics, typing in a comment", comment, in_comment, "x"),
-        ("diagnostics, typing in a number", waiting, in_number, "5"),
-        ("diagnostics, typing in a name", condition, name_end, "x"),
+    for kind, line, character, typing in (
+        ("comment", comment, in_comment, "x"),
+        ("number", waiting, in_number, "5"),
+        ("name", condition, name_end, "x"),
     ):
-        for _ in range(max(1, repeat // block)):
+        name, block = f"diagnostics, typing in a {kind}", _EDITS_PER_BLOCK[kind]
+        for _ in range(max(_BLOCKS, repeat // block)):
             cpu = _cpu_seconds(pid)
             figures[name] += [await edit(line, character, number % 2 == 0, typing) for number in range(block)]
             figures[name.replace("diagnostics", "server CPU")].append((_cpu_seconds(pid) - cpu) / block)

@@ -20,7 +20,7 @@ from operator import attrgetter
 
 from mintlang.allocation import without_collector
 from mintlang.analysis.rules import RULES, Rule, memory
-from mintlang.analysis.suppression import suppress
+from mintlang.analysis.suppression import Directive, directives, suppress
 from mintlang.analysis.traversal import Facts, LineScope, gather
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import DEFAULT_SELECT
@@ -44,6 +44,7 @@ class Found:
     in_lines: Mapping[Unit, tuple[Diagnostic, ...]]  # by the line rules: a logical or physical line's each
     whole: Mapping[Unit, tuple[tuple[Rule, Diagnostic], ...]]  # by the whole-application rules
     arrays: memory.ArrayDemand
+    directives: Mapping[Unit, tuple[Directive, ...]]  # the suppression comments, applied after selection
 
 
 @dataclass(frozen=True, slots=True)
@@ -178,7 +179,7 @@ def analyse(
             (finding.diagnostic for finding in memory.findings(model, found.arrays) if finding.unit is unit),
         )
         distinct = _first_of_each(diagnostic for diagnostic in everything if selected(diagnostic.code))
-        kept = suppress(distinct, document, selected)
+        kept = suppress(distinct, found.directives[unit], selected)
         per_unit[unit] = distinct if kept is distinct else _in_position_order(kept)
     return Analysis(model, tuple(per_unit[Unit.PROGRAM]), tuple(per_unit[Unit.CONFIGURATION]), found)
 
@@ -186,12 +187,14 @@ def analyse(
 def _find(model: SemanticModel) -> Found:
     """What every rule finds in the whole application."""
     in_lines: dict[Unit, tuple[Diagnostic, ...]] = {Unit.CONFIGURATION: ()}
+    comments: dict[Unit, tuple[Directive, ...]] = {Unit.CONFIGURATION: ()}
     for unit, document in model.documents():
         in_lines[unit] = (
             *_in_logical_lines(model, unit, model.lines.of(unit)),
             *_in_text_lines(model, document, range(len(document.physical))),
         )
-    return Found(in_lines, _whole(model), memory.demand(model.symbols))
+        comments[unit] = directives(document)
+    return Found(in_lines, _whole(model), memory.demand(model.symbols), comments)
 
 
 def _whole(
@@ -238,6 +241,10 @@ def _carried(model: SemanticModel, previous: Analysis) -> Found | None:
     change = carried.change
     in_lines = dict(previous.found.in_lines)
     in_lines[Unit.PROGRAM] = change.spliced(previous.found.in_lines[Unit.PROGRAM], _in_window(model, change))
+    comments = dict(previous.found.directives)
+    comments[Unit.PROGRAM] = change.spliced(
+        previous.found.directives[Unit.PROGRAM], directives(model.program, change.start, change.new_end)
+    )
     same = carried.same_facts
 
     def kept(rule: Rule) -> list[tuple[Unit, Diagnostic]] | None:
@@ -246,7 +253,8 @@ def _carried(model: SemanticModel, previous: Analysis) -> Found | None:
         return _carried_findings(previous.found, rule, change)
 
     arrays = _carried_arrays(previous.found.arrays, change) if same else None
-    return Found(in_lines, _whole(model, kept), arrays if arrays is not None else memory.demand(model.symbols))
+    arrays = arrays if arrays is not None else memory.demand(model.symbols)
+    return Found(in_lines, _whole(model, kept), arrays, comments)
 
 
 def _carried_findings(before: Found, rule: Rule, change: Change) -> list[tuple[Unit, Diagnostic]] | None:

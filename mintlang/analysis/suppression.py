@@ -12,9 +12,9 @@ unless the code is one this run does not check.
 from __future__ import annotations
 
 import re
-from bisect import bisect_right
+from bisect import bisect_left, bisect_right
 from collections.abc import Callable, Iterator, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 from mintlang.codes import code_named, own
@@ -53,12 +53,23 @@ class Directive:
     def names(self, code: str) -> bool:
         return any(entry.code == code for entry in self.entries)
 
+    def shifted(self, offset: int) -> Directive:
+        """The same comment ``offset`` characters further on: an edit before it moved it."""
+        return Directive(
+            self.whole_file,
+            tuple(replace(entry, span=entry.span.shifted(offset)) for entry in self.entries),
+            self.span.shifted(offset),
+            self.line.shifted(offset),
+            self.statement_end + offset,
+        )
 
-def directives(document: Document) -> tuple[Directive, ...]:
-    """The suppression comments of a file, in order."""
+
+def directives(document: Document, start: int = 0, end: int | None = None) -> tuple[Directive, ...]:
+    """The suppression comments of a file, in order; only those on the physical lines that start
+    from offset ``start`` up to ``end``, where given (the lines an edit touched)."""
     found: list[Directive] = []
     offsets = document.physical.offsets
-    for index in _mentioning(document.source, offsets):
+    for index in _mentioning(document.source, offsets, start, len(document.source) if end is None else end):
         offset, lexed = offsets[index], document.physical.lexed(index)
         if lexed.comment_start < 0:
             continue
@@ -84,29 +95,36 @@ def directives(document: Document) -> tuple[Directive, ...]:
     return tuple(found)
 
 
-def _mentioning(source: str, offsets: Sequence[int]) -> Iterator[int]:
-    """The physical lines that mention ``mint:``, found in the whole text at once (at the speed of
-    ``str.find``, not of a loop over lines): the few there are then read as the comments they may be."""
-    text = source.lower()
+def _mentioning(source: str, offsets: Sequence[int], start: int, end: int) -> Iterator[int]:
+    """The physical lines starting from ``start`` up to ``end`` that mention ``mint:``, found in their
+    text at once (at the speed of ``str.find``, not of a loop over lines): the few there are then read
+    as the comments they may be."""
+    first, last = bisect_left(offsets, start), bisect_left(offsets, end)
+    if first == last:
+        return
+    text_end = offsets[last] if last < len(offsets) else len(source)
+    text = source[offsets[first] : text_end].lower()
+    base = offsets[first]
     line = -1
     at = text.find(_MENTION)
     while at >= 0:
-        found = bisect_right(offsets, at) - 1
+        found = bisect_right(offsets, base + at) - 1
         if found != line:
             yield found
             line = found
         at = text.find(_MENTION, at + len(_MENTION))
 
 
-def suppress(diagnostics: list[Diagnostic], document: Document, selected: Callable[[str], bool]) -> list[Diagnostic]:
-    """``diagnostics`` without those a comment of ``document`` silences, and the unused suppressions;
-    the very list given when the document has no suppression comment.
+def suppress(
+    diagnostics: list[Diagnostic], found: Sequence[Directive], selected: Callable[[str], bool]
+) -> list[Diagnostic]:
+    """``diagnostics`` without those the suppression comments ``found`` in their file silence, and the
+    unused suppressions; the very list given when the file has no suppression comment.
 
     A diagnostic is on the line its span starts on. ``selected`` says whether a code is
     checked at all: a suppression of a code not checked silences nothing and is reported
     so (as ruff reports a ``noqa`` of a rule not enabled).
     """
-    found = directives(document)
     if not found:
         return diagnostics
     by_line = [directive for directive in found if not directive.whole_file]

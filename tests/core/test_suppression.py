@@ -127,3 +127,17 @@ def test_ignoring_each_finding_on_its_line_leaves_no_finding_of_its_code_there(s
         remaining = found(changed)
         assert (diagnostic.code, line) not in remaining, changed
         assert ("W117", line) not in remaining, changed
+
+
+def test_after_an_edit_the_comments_above_and_below_it_silence_what_they_did() -> None:
+    """The language server checks a keystroke from the version before: the suppressions outside the
+    edited lines are carried over, moved, and one typed in is read."""
+    source = "DIM a : REM mint: ignore[W103]\nREM notes\nDIM b : REM mint: ignore[W103]\nDIM c\n"
+
+    def unused_after(edited: str) -> list[tuple[str, int]]:
+        analysis = check_application(edited, previous=check_application(source))
+        return [(d.code, LineIndex(edited).position(d.span.start).line) for d in analysis.program]
+
+    assert unused_after(source.replace("notes", "longer notes")) == [("W103", 4)]  # c only
+    assert unused_after(source.replace("DIM c", "DIM c : REM mint: ignore[W103]")) == []
+    assert unused_after(source.replace("DIM b : REM mint: ignore[W103]", "DIM b")) == [("W103", 3), ("W103", 4)]

@@ -41,6 +41,7 @@ from mintlang.migrate.rules.manual import (
 from mintlang.migrate.rules.numbers import FixedPoint
 from mintlang.migrate.rules.prologue import IoPrologue
 from mintlang.migrate.rules.reads import ErrorTest, ModeTest, ReadRenames
+from mintlang.migrate.rules.relations import SpacedRelations
 from mintlang.migrate.rules.remarks import RemColon
 from mintlang.migrate.rules.renames import (
     RenameConstants,
@@ -88,6 +89,7 @@ RULES: tuple[Rule, ...] = (
     RenameReservedNames(),
     DotBits(),
     RemColon(),
+    SpacedRelations(),
     # context rewrites: statements, then companions, then expressions
     Zero(),
     Boost(),

@@ -7,6 +7,7 @@ what it means where Mint's grammar depends on position:
 * ``.`` right after a keyword is the dot parameter (``SPEED.1``), elsewhere it starts a number (``.5``);
 * ``REM`` comments the rest of the line; ``IN3`` is keyword IN with channel 3;
 * a number with a leading zero is binary (``011011``), so ``05`` is invalid;
+* in v3, ``> =``, ``< =`` and ``< >`` are the relations ``>=``, ``<=`` and ``<>``;
 * in MintMT, ``'`` comments the rest of the line, ``End Loop`` (``If``, ``Event``,
   ``Startup``) is one closing token, a ``Then`` that ends its line opens a block
   (it lexes as ``DO``), and ``(`` right after a keyword opens its axes
@@ -59,6 +60,8 @@ _LEXEME = re.compile(
     )
 )
 _LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)?")
+# v3 reads a two-character relation with blanks inside: PAUSE DEMAND > = 50 (v3 guide 3096)
+_SPACED_RELATION = re.compile(f"<[{_SPACE}]+[=>]|>[{_SPACE}]+=")
 _DIGITS_AFTER_DOT = re.compile(r"[0-9]+")
 
 _PUNCTUATION: dict[str, TokenKind] = {
@@ -221,6 +224,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
     dot_number = False  # the previous token is the number of a dot parameter: ".2" in REMOTEIN.2.65
     comment_start = -1
     mintmt = dialect is Dialect.MINTMT
+    v3 = dialect is Dialect.V3
 
     while position < content_end:
         if len(kinds) == MAX_TOKENS:  # the rest is one token: a line this long is not analysed (grammar)
@@ -250,7 +254,11 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
             if mintmt and kind is _K.END and (closer := _mintmt_closer(line, found.end(), content_end)):  # type: ignore[union-attr]
                 kind, text = closer[0], line[position : closer[1]]
         elif group == "punct":
-            kind = _PUNCTUATION[text]
+            if v3 and text in ("<", ">") and (spaced := _SPACED_RELATION.match(line, position, content_end)):
+                text = spaced[0]
+                kind = _PUNCTUATION[text[0] + text[-1]]
+            else:
+                kind = _PUNCTUATION[text]
             if mintmt and kind is _K.LPAR and kinds and kinds[-1] is _K.KEYWORD:
                 kind = _K.ADDRESS
         elif group == "number":

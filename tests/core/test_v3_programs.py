@@ -44,6 +44,27 @@ def test_v3_reads_x0_to_x7_as_the_expanded_io_bits(bit: int) -> None:
     assert (document.diagnostics, statement.keyword.keyword) == ((), f"XIO{bit}")
 
 
+@pytest.mark.parametrize(
+    ("source", "operator"),
+    [
+        ("PAUSE DEMAND > = 50\n", ">="),  # v3 guide 3096, run as "until the demand exceeds 50%"
+        ("PAUSE a >  = 50\n", ">="),
+        ("PAUSE a < = 50\n", "<="),
+        ("PAUSE a < > 50\n", "<>"),
+        ("PAUSE a >= 50\n", ">="),
+    ],
+)
+def test_v3_reads_a_two_character_relation_with_blanks_inside(source: str, operator: str) -> None:
+    document = mintlang.parse(source, "v3")
+    (statement,) = document.lines[0].statements
+    assert (document.diagnostics, statement.condition.operator) == ((), operator)
+    assert "".join(token.text for token in document.tokens) == source
+
+
+def test_v4_keeps_a_relation_in_one_piece() -> None:
+    assert [d.code for d in mintlang.parse("PAUSE a > = 50\n", "v4").diagnostics] == ["E2003"]
+
+
 def test_v3_binds_and_tighter_than_or_unlike_v4() -> None:
     # v3 guide 4.2 (lines 1986-1995): AND above OR; v4 guide 3.4.7 (line 1412): | above &
     def top(dialect: str) -> tuple[str, str]:

@@ -170,6 +170,15 @@ def test_mint_run_runs_a_v3_program(tmp_path: Path) -> None:
     assert (result.exit_code, result.stdout) == (0, "0.5\n")
 
 
+def test_mint_run_runs_a_relation_written_with_a_blank_inside(tmp_path: Path) -> None:
+    # 001:3096 PAUSE DEMAND > = 50: "> =" is ">="; a = 3 holds for >= 3 and <> 4 only
+    source = (
+        "a = 3\nIF a > = 3 THEN PRINT 1\nIF a < = 2 THEN PRINT 2\nIF a < > 3 THEN PRINT 3\nIF a < > 4 THEN PRINT 4\n"
+    )
+    result = mint_run("--dialect", "v3", write(tmp_path, "v3.mnt", source))
+    assert (result.exit_code, result.stdout) == (0, "1\n4\n")
+
+
 def test_mint_run_refuses_a_v4_controller_for_a_v3_program(tmp_path: Path) -> None:
     program = write(tmp_path, "v3.mnt", "PRINT 1\n")
     result = mint_run("--dialect", "v3", "--controller", "nextmove-pci", program)

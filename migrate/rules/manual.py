@@ -137,6 +137,10 @@ class HostTransfer(ManualKeywords):
     evidence = "spec X-HOST; v3:1937-1956; v4:1127-1129, v4:15066-15080, v4:2224"
     keywords = frozenset({"LOAD", "SAVE", "PEEK", "POKE", "PO", "MP", "VN", "ZZ", "$"})
     reason = "no Mint v4 keyword (Mint WorkBench transfers programs and arrays): remove or redesign"
+    reasons: ClassVar[Mapping[str, str]] = dict.fromkeys(
+        ("PEEK", "POKE", "PO"),
+        "replaced by DPRFLOAT/DPRLONG/DPRWORD, which address dual-port RAM, not the option card: redesign",
+    )
 
 
 class AxisConfiguration(ManualKeywords):

@@ -92,6 +92,7 @@ def _v3_keyword(raw: dict[str, Any]) -> V3Keyword:
         write=raw["write"],
         command=raw["command"],
         addressing=Addressing(raw["addressing"]),
+        function=raw["function"],
         v4_names=tuple(raw["v4_names"]),
         status=raw["status"],
         migration=MigrationClass(raw["migration"]),

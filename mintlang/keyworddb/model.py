@@ -164,6 +164,7 @@ class V3Keyword:
     write: bool
     command: bool
     addressing: Addressing
+    function: bool  # called with its argument in brackets, as PEEK(10) (v3:10732)
     v4_names: tuple[str, ...]  # the v4 keyword(s) it maps to; empty when removed
     status: str  # "same", "renamed", "replaced", "removed", "changed"
     migration: MigrationClass

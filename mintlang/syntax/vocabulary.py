@@ -15,7 +15,7 @@ from functools import cache
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Controller, KeywordKind
+from mintlang.keyworddb.model import Controller, KeywordKind, V3Keyword
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
 
 _MINTMT_BLOCK_WORDS = (TokenKind.EVENT, TokenKind.STARTUP)  # their closers are two words: the lexer's
@@ -69,6 +69,13 @@ def _kind_of(name: str, kind: KeywordKind, has_parameters: bool) -> TokenKind:
     return TokenKind.KEYWORD
 
 
+def _v3_kind_of(keyword: V3Keyword) -> TokenKind:
+    """The kind of a v3 keyword no v4 keyword shares a name with (PEEK, XIO, HMSPEED)."""
+    if keyword.function:
+        return TokenKind.FUNCTION
+    return _ROLES.get(keyword.name, TokenKind.KEYWORD)
+
+
 @cache
 def vocabulary(dialect: Dialect, controller: Controller | None = None) -> Vocabulary:
     """The spelling tables of ``dialect`` on ``controller`` (any, when None), built once per process."""
@@ -108,7 +115,7 @@ def vocabulary(dialect: Dialect, controller: Controller | None = None) -> Vocabu
     else:
         for v3 in db.v3_keywords.values():
             v4 = db.keywords.get(v3.name)
-            kind = _kind_of(v3.name, v4.kind, bool(v4.parameters)) if v4 else _ROLES.get(v3.name, TokenKind.KEYWORD)
+            kind = _kind_of(v3.name, v4.kind, bool(v4.parameters)) if v4 else _v3_kind_of(v3)
             add(v3.name, v3.name, kind)
             for abbreviation in v3.abbreviations:
                 add(abbreviation, v3.name, kind)

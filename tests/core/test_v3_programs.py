@@ -44,6 +44,20 @@ def test_v3_reads_x0_to_x7_as_the_expanded_io_bits(bit: int) -> None:
     assert (document.diagnostics, statement.keyword.keyword) == ((), f"XIO{bit}")
 
 
+@pytest.mark.parametrize("source", ["a = PEEK(10)\n", "a = pk(3 + 1)\n"])
+def test_v3_reads_peek_as_a_function(source: str) -> None:
+    # v3 guide 10723-10750: PEEK/PK, "v = PEEK(<expression>)"
+    document = mintlang.parse(source, "v3")
+    (statement,) = document.lines[0].statements
+    call = statement.value
+    assert (document.diagnostics, call.function, len(call.arguments)) == ((), "PEEK", 1)
+
+
+def test_v3_prints_peek_of_an_address() -> None:
+    # v3 guide 10750: the entry's example
+    assert mintlang.parse("PRINT PEEK(10)\n", "v3").diagnostics == ()
+
+
 @pytest.mark.parametrize(
     ("source", "operator"),
     [

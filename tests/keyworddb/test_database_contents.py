@@ -248,6 +248,19 @@ def test_v3_lookups(db: KeywordDatabase) -> None:
     assert in3 is not None and in3.name == "IN3" and in3.v4_names == ("IN",)
 
 
+@pytest.mark.parametrize(
+    ("name", "function"),
+    [
+        ("PEEK", True),  # v3:10732 "v = PEEK(<expression>)", no v4 keyword of that name
+        ("ABS", True),  # v3:5603 "v = ABS(<expression>)"
+        ("POKE", False),  # v3:10815 "POKE <address>,<expression>"
+        ("POS", False),
+    ],
+)
+def test_v3_functions_are_those_the_guide_calls_with_brackets(db: KeywordDatabase, name: str, function: bool) -> None:
+    assert db.v3_keywords[name].function is function
+
+
 @pytest.mark.parametrize("bit", range(8))
 def test_v3_expanded_io_bits_are_abbreviated_x0_to_x7(db: KeywordDatabase, bit: int) -> None:
     # v3:12720 "XIO/XI XIO0..7"; v3:12753 "X2 is the abbreviated keyword for XIO2"

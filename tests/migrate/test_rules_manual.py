@@ -74,6 +74,21 @@ def test_each_manual_rule_flags_and_keeps_the_original(rule: str, source: str) -
     assert len(flagged(rule, source)) == 1
 
 
+_OPTION_CARD = "replaced by DPRFLOAT/DPRLONG/DPRWORD, which address dual-port RAM, not the option card: redesign"
+
+
+@pytest.mark.parametrize(
+    ("source", "reason"),
+    [
+        ("PRINT PEEK(10)\n", f"PEEK: {_OPTION_CARD}"),  # v3:10750; v4:15065-15066
+        ("a = PK(3)\n", f"PEEK: {_OPTION_CARD}"),
+        ("POKE 1,127\n", f"POKE: {_OPTION_CARD}"),  # v3:10821; v4:15079-15080
+    ],
+)
+def test_option_card_reads_and_writes_are_flagged_as_another_address_space(source: str, reason: str) -> None:
+    assert flagged("X-HOST", source) == [reason]
+
+
 def test_only_comparisons_of_err_with_a_number_are_flagged() -> None:
     # v3 numbered errors 0 .. 15 (v3:4918-4937); whether there is an error at all reads the same in v4
     assert len(flagged("X-ERR", "IF (ERR) >= 10 AND ERR < 15 THEN x = 1\n")) == 1  # one flag a statement

@@ -179,6 +179,13 @@ def test_mint_run_runs_a_relation_written_with_a_blank_inside(tmp_path: Path) ->
     assert (result.exit_code, result.stdout) == (0, "1\n4\n")
 
 
+def test_mint_run_reads_peek_but_has_no_option_card_to_read(tmp_path: Path) -> None:
+    # 001:10745: PEEK reads the option card's address space, hardware the simulator does not have
+    result = mint_run("--dialect", "v3", write(tmp_path, "v3.mnt", "PRINT 1\nPRINT PEEK(10)\n"))
+    assert (result.exit_code, result.stdout) == (1, "1\n")
+    assert "PEEK (function) is not simulated" in result.output and "Syntax error" not in result.output
+
+
 def test_mint_run_refuses_a_v4_controller_for_a_v3_program(tmp_path: Path) -> None:
     program = write(tmp_path, "v3.mnt", "PRINT 1\n")
     result = mint_run("--dialect", "v3", "--controller", "nextmove-pci", program)

@@ -101,6 +101,7 @@ def build_v3_keywords(
                 write=entry.write,
                 command=entry.command,
                 addressing=entry.addressing,
+                function=entry.function,
                 v4_names=v4_names,
                 status=status,
                 migration=migration,

@@ -36,6 +36,7 @@ class V3Entry:
     command: bool
     addressing: Addressing
     line: int
+    function: bool = False  # called with its argument in brackets: v = PEEK(<expression>)
 
 
 def _split_name(token: str) -> tuple[str, str | None]:
@@ -158,7 +159,15 @@ def _entry_records(seed: Seed, line: int, end: int, heading: str) -> list[V3Entr
         write = fmt.writes_keyword(names, formats)
         flags = (read, write, not (read or write))
     addressing = fmt.addressing(names, formats, [])
-    return [V3Entry(name, abbreviation, *flags, addressing, line) for name, abbreviation in keywords]
+    function = _called_with_brackets(names, formats)
+    return [V3Entry(name, abbreviation, *flags, addressing, line, function) for name, abbreviation in keywords]
+
+
+def _called_with_brackets(names: tuple[str, ...], formats: tuple[str, ...]) -> bool:
+    """A format calls the keyword with a bracketed argument and never assigns to it: ``v =
+    PEEK(<expression>)``, ``PRINT CHR(<expr>)``, ``TAN(<angle>)``."""
+    call = re.compile(r"(?:^|=|PRINT)\s*(?:" + "|".join(map(re.escape, names)) + r")\s*\(")
+    return any(call.search(f) for f in formats) and not fmt.writes_keyword(names, formats)
 
 
 def _first_mention(seed: Seed, word: str) -> int:

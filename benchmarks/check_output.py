@@ -36,7 +36,7 @@ def _report(diagnostics: int) -> FileReport:
 def _text(report: FileReport, color_system: str | None) -> Callable[[], object]:
     def render() -> object:
         console = Console(file=io.StringIO(), color_system=color_system, force_terminal=color_system is not None)
-        render_text([report], console)
+        render_text([report], console.file, console)
         return console.file
 
     return render

@@ -3,8 +3,8 @@
 Run: ``.venv/bin/python benchmarks/lsp_latency.py [--lines 5000 20000 50000] [--repeat 15]``
 
 The server runs as a separate process over stdio, as an editor starts it, one per size
-(the benchmark lifts its 5,000,000-character limit, so that any size asked for is analysed). Measured (medians): the wall time from a one-character
-``didChange`` to the
+(the benchmark lifts its 5,000,000-character limit, so that any size asked for is analysed).
+Measured (medians): the wall time from a one-character ``didChange`` to the
 ``publishDiagnostics`` of that version (debounce set to 0 ms, so the figure is
 the server's own work; editors add the configured debounce, 150 ms by
 default), for three kinds of typing near the top of the file, where an edit

@@ -35,7 +35,7 @@ from mintlang.cli.options import (
 from mintlang.cli.parallel import all_cores, map_in_order
 from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, as_statistics, render_text
 from mintlang.cli.settings import describe, overrides, settings_failed
-from mintlang.cli.terminal import console, destination, refuse_overwriting
+from mintlang.cli.terminal import colour_console, console, destination, refuse_overwriting
 from mintlang.codes import selector
 from mintlang.diagnostics import Severity
 from mintlang.dialect import Dialect
@@ -275,7 +275,7 @@ def _write(
     elif output_format == "github":
         text = as_github(reports)
     else:
-        render_text(reports, console(color, file=stream), summary=not quiet)
+        render_text(reports, stream, colour_console(color, stream), summary=not quiet)
         return
     if text:
         stream.write(f"{text}\n")

@@ -7,7 +7,7 @@ import re
 from collections import Counter
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import IO, TYPE_CHECKING
 
 from mintlang import keyworddb
 from mintlang.cli.terminal import Palette
@@ -85,15 +85,18 @@ def shortened(text: str) -> str:
 _FRAMES_WRITTEN_AT_ONCE = 4096  # few writes, and not the whole report of a file of broken lines in memory at once
 
 
-def render_text(reports: Sequence[FileReport], console: Console, *, summary: bool = True) -> None:
-    """rustc/ruff-style code frames and, with ``summary``, a closing count.
+def render_text(
+    reports: Sequence[FileReport], stream: IO[str], console: Console | None = None, *, summary: bool = True
+) -> None:
+    """rustc/ruff-style code frames and, with ``summary``, a closing count, written to ``stream``; in
+    colour where ``console`` (one for ``stream``) shows it.
 
-    Written straight to the console's file with the escape codes of its palette:
+    Written straight to the stream with the escape codes of the console's palette:
     ``Console.print`` parses and measures every line, a hundred times the cost.
     The source, messages and paths are shown as they are (never read as markup),
     with their control characters as pictures.
     """
-    palette = Palette.for_console(console, {*_STYLE.values(), "blue", "bold"})
+    palette = Palette.for_console(console, {*_STYLE.values(), "blue", "bold"}) if console is not None else Palette({})
     counts = dict.fromkeys(Severity, 0)
     bar, arrow, equals = (palette.paint("blue", mark) for mark in ("|", "-->", "="))
     for report in reports:
@@ -118,14 +121,14 @@ def render_text(reports: Sequence[FileReport], console: Console, *, summary: boo
             frames.extend(f"  {gutter} {equals} fix: {_visible(fix.title)}\n" for fix in diagnostic.fixes)
             frames.append("\n")
             if len(frames) >= _FRAMES_WRITTEN_AT_ONCE:
-                console.file.write("".join(frames))
+                stream.write("".join(frames))
                 frames.clear()
-        console.file.write("".join(frames))
+        stream.write("".join(frames))
     if summary:
         total = ", ".join(f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity)
         checked = palette.paint("bold", f"{len(reports)} file{'s' if len(reports) != 1 else ''} checked:")
-        console.file.write(f"{checked} {total}\n")
-    console.file.flush()
+        stream.write(f"{checked} {total}\n")
+    stream.flush()
 
 
 def _region(index: LineIndex, span: Span) -> tuple[int, int, int, int]:

@@ -8,6 +8,7 @@ when a console is made, so ``--version`` and ``--help`` never pay for it.
 
 from __future__ import annotations
 
+import os
 import sys
 from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
@@ -33,6 +34,27 @@ def console(color: str = "auto", *, stderr: bool = False, file: IO[str] | None =
     elif color == "always":
         settings |= {"force_terminal": True, "no_color": False}
     return Console(**settings)  # type: ignore[arg-type]
+
+
+def colour_console(color: str, file: IO[str]) -> Console | None:
+    """A rich console for a report to ``file`` that may show colour; None where it shows none.
+
+    None is decided without importing rich where rich's answer is certain: ``--color never``, or
+    ``auto`` into a file or pipe (a pre-commit hook, CI) with neither ``FORCE_COLOR`` nor
+    ``TTY_COMPATIBLE`` set, which rich reads before asking the stream whether it is a terminal.
+    """
+    if color == "never":
+        return None
+    if color == "auto" and not _isatty(file) and not {"FORCE_COLOR", "TTY_COMPATIBLE"} & os.environ.keys():
+        return None
+    return console(color, file=file)
+
+
+def _isatty(file: IO[str]) -> bool:
+    try:
+        return file.isatty()
+    except ValueError:  # closed
+        return False
 
 
 _SOURCE_SUFFIXES = (".mnt", ".cfg")

@@ -2,14 +2,15 @@
 
 ``--help`` and ``--version`` of every tool load none of the heavy parts (the parser and
 lark, the rules, the simulator, the migration rules, pygls, rich), and a check that writes
-JSON loads the checker but not rich. Each case runs in a fresh interpreter, which lists
-the modules it imported; how long start-up takes is measured by ``benchmarks/startup.py``,
-never here.
+JSON, or text into a pipe (a pre-commit hook, CI), loads the checker but not rich. Each case
+runs in a fresh interpreter, which lists the modules it imported; how long start-up takes is
+measured by ``benchmarks/startup.py``, never here.
 """
 
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -40,10 +41,11 @@ HEAVY = (
 )
 
 
-def run(module: str, *arguments: str) -> tuple[str, list[str]]:
+def run(module: str, *arguments: str, env: dict[str, str] | None = None) -> tuple[str, list[str]]:
     """What the tool wrote, and the heavy modules (or their packages) it imported."""
     command = [sys.executable, "-c", _RUN_AND_LIST_MODULES, module, *arguments]
-    output, _, modules = subprocess.run(command, capture_output=True, text=True, check=True).stdout.rpartition("\n\n")
+    finished = subprocess.run(command, capture_output=True, text=True, check=True, env=env)
+    output, _, modules = finished.stdout.rpartition("\n\n")
     imported = json.loads(modules)
     return output, [name for name in HEAVY if any(m == name or m.startswith(f"{name}.") for m in imported)]
 
@@ -90,3 +92,16 @@ def test_a_json_check_loads_the_checker_and_not_rich(tmp_path: Path) -> None:
     output, heavy = run("mintlang.cli", "check", "--format", "json", str(program))
     assert json.loads(output) == []
     assert heavy == ["lark", "mintlang.syntax.parser", "mintlang.analysis.rules"]
+
+
+def test_a_text_report_into_a_pipe_loads_no_rich_unless_colour_is_forced(tmp_path: Path) -> None:
+    program = tmp_path / "one_line.mnt"
+    program.write_text("SPEED = 10\nDIM a\n", encoding="utf-8")
+    plain = {key: value for key, value in os.environ.items() if key not in {"FORCE_COLOR", "TTY_COMPATIBLE"}}
+    output, heavy = run("mintlang.cli", "check", str(program), env=plain)
+    assert "warning[W103]" in output
+    assert "\x1b" not in output
+    assert "rich" not in heavy
+    output, heavy = run("mintlang.cli", "check", str(program), env=plain | {"FORCE_COLOR": "1"})
+    assert "\x1b[" in output  # rich decides, and colours
+    assert "rich" in heavy

@@ -18,7 +18,7 @@ SGR = re.compile(r"\x1b\[[0-9;]*m")
 
 def rendered(color_system: str | None) -> str:
     console = Console(file=io.StringIO(), color_system=color_system, force_terminal=True, width=80)
-    render_text([REPORT], console)
+    render_text([REPORT], console.file, console)
     return console.file.getvalue()  # type: ignore[attr-defined]
 
 

@@ -17,7 +17,7 @@ from mintlang.keyworddb.model import Controller
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.motion.moves import PROFILER_TICK_MS, Move, next_profiler_tick
-from mintlang.runtime.motion.parameters import DEFAULTS, GAINS, SCALED, bounds
+from mintlang.runtime.motion.parameters import DEFAULTS, GAINS, SCALED, bounds, power_up
 from mintlang.runtime.motion.plants import IdealPlant, Plant, round_half_away
 from mintlang.runtime.motion.servo import ServoGains, ServoLoop
 from mintlang.runtime.ranges import check_range
@@ -81,7 +81,7 @@ class Axis:
     def __init__(self, number: int, controller: Controller, clock: Clock, plant: Plant | None = None) -> None:
         self.number = number
         self.clock = clock
-        self.parameters: dict[str, float] = dict(DEFAULTS)
+        self.parameters: dict[str, float] = dict(power_up(controller))
         self.bounds = {name: bounds(name, controller) for name in DEFAULTS}  # what each parameter accepts
         self.plant: Plant = plant if plant is not None else IdealPlant()
         self.servo = ServoLoop()

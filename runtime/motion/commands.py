@@ -28,7 +28,7 @@ from mintlang.runtime.motion.axis import (
     Request,
 )
 from mintlang.runtime.motion.moves import Geometry, PlannedMove, next_profiler_tick
-from mintlang.runtime.motion.parameters import DEFAULTS
+from mintlang.runtime.motion.parameters import DEFAULTS, power_up
 from mintlang.runtime.motion.paths import PATH_MODES, Chain, PathSegment
 from mintlang.runtime.motion.profile import plan_velocity
 from mintlang.runtime.ranges import check_range, ranged, table_bounds
@@ -326,7 +326,7 @@ class Motion:
             axis.axiserror = 0
             axis.resync()
             axis.position_offset = axis.encoder_offset = float(axis.measured)
-            axis.parameters = dict(DEFAULTS)
+            axis.parameters = dict(power_up(self.profile.controller))
             for reset in self.on_default:
                 reset(axis)
         return False

@@ -10,10 +10,11 @@ error 3, as the controller does.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from functools import cache
 from types import MappingProxyType
 
 from mintlang.keyworddb.model import Controller
-from mintlang.runtime.ranges import Bounds, table_bounds
+from mintlang.runtime.ranges import Bounds, table_bounds, table_default
 
 # Servo-axis defaults from the DEFAULT table, in counts (SCALE 1). Where the keyword entry and the
 # table disagree the table wins (HOMESPEED 40000, HOMEINPUT -1, MASTERDISTANCE 1000: spec HM-2, FG-2).
@@ -91,6 +92,15 @@ _KNOWN_RANGES: Mapping[str, Bounds] = MappingProxyType(
         "MOVEBUFFERSIZE": Bounds(2.0, 100.0, False),  # MP-25
     }
 )
+
+
+@cache
+def power_up(controller: Controller) -> Mapping[str, float]:
+    """An axis's parameters at power-up (and after DEFAULT) on ``controller``: the DEFAULT table's, with
+    CONFIG as the controller's row of its attributes table gives it: MintDrive 0, ServoNode 51 1
+    (000:8421-8424); NextMove's "1 and 2" (servo and stepper axes) leaves the reference's servo axes at 1."""
+    config = table_default("CONFIG", controller)
+    return DEFAULTS if config is None else MappingProxyType({**DEFAULTS, "CONFIG": config})
 
 
 def bounds(keyword: str, controller: Controller) -> Bounds:

@@ -15,15 +15,17 @@ from mintlang.syntax.parents import parent_of
 
 # v3 input -> v4 ADC channel: the v4 guide's ports number them from 0 (v3:2318 vs v4:1785).
 CHANNELS: Mapping[str, int] = MappingProxyType({"ANALOGUE1": 0, "ANALOGUE2": 1, "ANALOGUE3": 2})
-# Percent of +-10 V (-100..100) to v3 counts of +-10 V (0..1023): c = (p + 100) * 1023 / 200.
-TO_COUNTS = "({adc} + 100) * 1023 / 200"
+# Percent of +-10 V (-100..100) to v3 counts of +-10 V, one part in 1024 with 0 V at 512
+# (v3:4368-4376, v3:5768): c = (p + 100) * 1024 / 200.
+TO_COUNTS = "({adc} + 100) * 1024 / 200"
 
 
 class AnalogueInputs(Rule):
-    """``ANALOGUEn`` becomes ``((ADC.(n-1) + 100) * 1023 / 200)``, and the line gets a manual item.
+    """``ANALOGUEn`` becomes ``((ADC.(n-1) + 100) * 1024 / 200)``, and the line gets a manual item.
 
-    v3 read 0..1023 over the input's range, which a jumper chose per input: +-10 V or 0..5 V
-    (v3:5748-5760, v3:4368-4370); v4 ADC reads percent of its range, -100..100 (v4:6358-6363),
+    v3 read one part in 1024 of the input's range, which a jumper chose per input: +-10 V or
+    0..5 V (v3:5748-5760, v3:4368-4370); 0 V reads 512, so ``A1 - 512`` is zero speed at rest
+    (v3:4374-4380) and spans -512 to 512 (v3:5768). v4 ADC reads percent of its range, -100..100 (v4:6358-6363),
     +-10 V on MintDrive and chosen with ADCMODE on NextMove. The formula gives the v3 count
     for a +-10 V input read as +-10 V, the one case where both ranges are known to agree,
     and keeps the program's arithmetic (``A1 - 512`` stays centred on 0 V). Nothing in the
@@ -35,7 +37,7 @@ class AnalogueInputs(Rule):
     id = "S-ANALOG"
     rule_class = RuleClass.SEMI
     phase = Phase.CONTEXT
-    summary = "ANALOGUE1..3 -> ((ADC.0..2 + 100) * 1023 / 200) + manual item (assumes +-10 V inputs)"
+    summary = "ANALOGUE1..3 -> ((ADC.0..2 + 100) * 1024 / 200) + manual item (assumes +-10 V inputs)"
     evidence = "spec S-ANALOG; v3:5748-5760, v3:4368-4378, v3:2318; v4:6537, v4:6335-6363, v4:1785, v4:4171"
 
     def apply(self, context: Context) -> Iterator[Action]:
@@ -57,5 +59,5 @@ class AnalogueInputs(Rule):
                 file,
                 use.statement.span,
                 f"ADC.{channel} is % of the input range: the v3 count formula assumes a +-10 V input "
-                f"(0..5 V input: ADC.{channel} * 1023 / 50); check the wiring and simplify",
+                f"(0..5 V input: ADC.{channel} * 1024 / 50); check the wiring and simplify",
             )

@@ -122,10 +122,15 @@ def test_mode_and_error_bits_name_the_same_state() -> None:
     assert {int(constants[bit.upper()].value) for bit in limit} == {2, 4}
 
 
-def test_analogue_formula_in_the_manual_item_maps_the_v3_range() -> None:
-    """(ADC + 100) * 1023 / 200 maps v4's -100..100 % onto v3's 0..1023 counts (+-10 V)."""
-    formula = lambda adc: (adc + 100) * 1023 / 200  # noqa: E731
-    assert (formula(-100), formula(0), formula(100)) == (0, 511.5, 1023)
+def test_analogue_formula_maps_the_v3_range() -> None:
+    """(ADC + 100) * 1024 / 200 maps v4's -100..100 % onto v3's counts (+-10 V): one part in 1024
+    (v3:4368), 0 V reads 512 ("0V input produces zero speed" from A1 - 512, v3:4376), and
+    ANALOGUE1-512 spans -512 to 512 (v3:5768)."""
+    migrated = migrate("x = A1 - 512\n", only=["S-ANALOG"]).text.splitlines()[-1]
+    statement = mintlang.parse(migrated + "\n", "v4").lines[0].statements[0]
+    assert isinstance(statement, n.Assignment)
+    spans = [_evaluate(statement.value, "v4", {"ADC.0": percent}) for percent in (-100, 0, 100)]
+    assert spans == [-512, 0, 512]
 
 
 @pytest.mark.parametrize("mask", ["0", "15", "000001111", "0101", "255"])

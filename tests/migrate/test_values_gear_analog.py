@@ -1,6 +1,6 @@
 """Value changes of S-ANALOG and S-GEAR keep what the v3 program computed.
 
-v3 (v3:5748-5760): ANALOGUEn reads 0..1023 over +-10 V. v4 (v4:6358-6363): ADC reads
+v3 (v3:5748-5760, v3:4368-4376): ANALOGUEn reads one part in 1024 of +-10 V, 512 at 0 V. v4 (v4:6358-6363): ADC reads
 -100..100 % of +-10 V. v3 gear ratio = GEARN/GEARD (v3:3762); v4 ratio = FOLLOW/FOLLOWDENOM
 (v4:3495), FOLLOW alone where FOLLOWDENOM is absent.
 """
@@ -43,7 +43,7 @@ def _assigned(text: str, dialect: str) -> n.Expression:
 def test_analogue_counts_are_kept_for_a_ten_volt_input(volts: float) -> None:
     source = "x = A2 - 512\n"
     migrated = migrate(source, only=["S-ANALOG"]).text.splitlines()[-1] + "\n"
-    counts = (volts + 10) / 20 * 1023  # v3: 10 bits over -10..+10 V
+    counts = (volts + 10) / 20 * 1024  # v3: one part in 1024 over -10..+10 V, 512 at 0 V (v3:4368-4376)
     v3 = _value(_assigned(source, "v3"), {"ANALOGUE2": counts})
     v4 = _value(_assigned(migrated, "v4"), {"ADC.1": volts * 10})
     assert v4 == pytest.approx(v3, abs=1e-9)

@@ -15,7 +15,7 @@ from unittest import mock
 from mintlang.migrate import ManualItem, MigrationResult, migrate
 from mintlang.migrate.rules import renames
 from mintlang.migrate.verification import Place, Verdict, verify
-from mintlang.runtime.scenario import DrivesEnabled, InputLevel, Scenario
+from mintlang.runtime.scenario import AdcLevel, DrivesEnabled, InputLevel, Scenario
 
 DRIVES = Scenario(drives=(DrivesEnabled(),))
 
@@ -49,6 +49,15 @@ def test_an_exact_migration_of_a_program_that_prints_and_moves_is_equivalent_ove
 def test_numbers_v3_prints_to_three_places_in_256ths_compare_with_v4s_four() -> None:
     # 1/3 is 85/256 = 0.33203 in v3, printed 0.332 (V3-2, V3-4); v4 prints 0.3333 (X-PRINT)
     found = verify(migrate("PRINT 1/3\n"), until_ms=100)
+    assert found.verdict is Verdict.EQUIVALENT
+
+
+def test_the_guides_joystick_reads_zero_speed_at_rest_after_migration() -> None:
+    # v3:4374-4380: JOG = A1 - 512 is zero speed at 0 V; one part in 1024 (v3:4368), so 50 % of +10 V
+    # reads (50 + 100) * 1024 / 200 = 768 in both runs
+    program = 'WAIT = 2\nPRINT A1 - 512, " ", A2\n'
+    levels = Scenario(adc=(AdcLevel(time_ms=0, channel=0, percent=0), AdcLevel(time_ms=0, channel=1, percent=50)))
+    found = verify(migrate(program), scenario=levels, until_ms=100)
     assert found.verdict is Verdict.EQUIVALENT
 
 

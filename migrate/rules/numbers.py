@@ -5,7 +5,10 @@ v3 keeps three decimal places of a literal and rounds it to the nearest 256th:
 (v3:1161-1181; the runtime's v3 numbers hold them so). v4 uses
 floating point (v4:715-741). Flagged: a literal whose v3 value shows differently
 at three decimals, an ``=``/``<>`` test on a fractional value (a literal or a
-division), and a FOR with a fractional bound or STEP (the loop count can change).
+division), a FOR with a fractional bound or STEP (the loop count can change), and
+INT of a value that can be negative: v3 INT rounds down, so INT(x + .5) is the
+nearest integer for either sign (v3:9270-9278), v4 INT rounds toward zero
+(v4:12565-12568; spec §10 asks for a flag where negative values are possible).
 Dyadic fractions (0.5, 0.25) are exact in both and are not flagged.
 """
 
@@ -17,6 +20,7 @@ from mintlang.migrate.context import FRACTION, Context, operator_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.runtime.dialects.v3.numbers import fixed
+from mintlang.runtime.dialects.v3.printing import format_number
 from mintlang.runtime.errors import NotSimulated
 from mintlang.syntax import nodes as n
 
@@ -29,11 +33,6 @@ def v3_value(value: float) -> float | None:
         return fixed(round(value, _PLACES))
     except NotSimulated:
         return None
-
-
-def shows_differently(value: float) -> bool:
-    held = v3_value(value)
-    return held is not None and round(held, _PLACES) != round(value, _PLACES)
 
 
 def _fractional(expression: n.Expression | None) -> bool:
@@ -50,11 +49,11 @@ class FixedPoint(Rule):
     id = "X-NUM"
     rule_class = RuleClass.MANUAL
     phase = Phase.MANUAL
-    summary = "fractional literal that v3 stored inexactly, '=' on fractions, fractional FOR -> manual"
-    evidence = "spec X-NUM; v3:1168-1181, v3:5684; v4:715-741"
+    summary = "fractional literal that v3 stored inexactly, '=' on fractions, fractional FOR, INT of a sign -> manual"
+    evidence = "spec X-NUM, §10 INT; v3:1168-1181, v3:5684, v3:9270-9278; v4:715-741, v4:12565-12568"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, line in context.placed(FRACTION, operator_tag("/")):  # what every pattern needs
+        for file, line in context.placed(FRACTION, operator_tag("/"), "INT"):  # what every pattern needs
             for statement in n.flatten_statements(line.syntax.statements):
                 reason = _reason(statement)
                 if reason is not None:
@@ -74,7 +73,42 @@ def _reason(statement: n.Statement) -> str | None:
             and (_fractional(node.left) or _fractional(node.right))
         ):
             return "'=' on a fractional value: v3 compared 1/256 fixed-point values, v4 floating point"
+    if _rounds_a_sign(statement, nodes):
+        return "INT of a value that can be negative: v3 rounded it down (INT(-2.5) = -3), v4 toward zero (-2)"
     for node in nodes:
-        if isinstance(node, n.Number) and shows_differently(node.value):
-            return f"{node.text} was {v3_value(node.value):.3f} in v3 (1/256 fixed point), exact in v4"
+        if isinstance(node, n.Number) and (reason := _inexact(node)) is not None:
+            return reason
     return None
+
+
+def _rounds_a_sign(statement: n.Statement, nodes: list[n.Expression]) -> bool:
+    """Whether the statement takes INT of a value that can be negative. SCALE takes positive values
+    only (v3:11592, v4:15783), so M-SCALE's ``SCALE = INT(e)`` never rounds a negative."""
+    if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "SCALE":
+        return False
+    return any(
+        isinstance(node, n.Call) and node.function == "INT" and not _unsigned(node.arguments[0]) for node in nodes
+    )
+
+
+def _unsigned(expression: n.Expression) -> bool:
+    """Whether ``expression`` cannot be negative: a number (-2.5 is a unary minus), ABS, or a sum,
+    product or quotient of such (INT(12.4 + 3.2))."""
+    match expression:
+        case n.Number() | n.Call(function="ABS"):
+            return True
+        case n.Parenthesised(expression=inner):
+            return _unsigned(inner)
+        case n.Binary(operator="+" | "*" | "/", left=left, right=right):
+            return _unsigned(left) and _unsigned(right)
+    return False
+
+
+def _inexact(literal: n.Number) -> str | None:
+    """What v3 made of a literal whose value shows differently at three decimals: the 256ths it held
+    and what PRINT showed, cut to three places (v3:1161-1181); None for one v3 held as written."""
+    held = v3_value(literal.value)
+    if held is None or round(held, _PLACES) == round(literal.value, _PLACES):
+        return None
+    shown = format_number(held)
+    return f"{literal.text} was {round(held * 256)}/256 in v3 (1/256 fixed point; PRINT shows {shown}), exact in v4"

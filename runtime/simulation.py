@@ -210,13 +210,17 @@ class Simulator:
         if vm.stopped is not None or pc >= len(vm.pure) or not vm.pure[pc] or self._busy():
             return t + 1
         quiet = min(self._next_change_besides_the_program(t, until), t + WALL_CHECK_EVERY)
-        tick = t + 1
-        while tick < quiet:
-            c.clock.now = tick
-            if vm.run_ahead() < vm.slice_statements:
-                return tick
-            tick += 1
-        return tick
+        ticks = quiet - t - 1
+        if ticks <= 0:
+            return t + 1
+        c.clock.now = t + 1
+        done = vm.run_ahead(ticks)
+        if done == ticks * vm.slice_statements:
+            c.clock.now = quiet - 1
+            return quiet
+        stopped = t + 1 + done // vm.slice_statements  # the tick whose slice it stopped in
+        c.clock.now = stopped
+        return stopped
 
     def _moves_end(self, t: int) -> int:
         """The tick the last move still running ends (``NEVER`` when none runs): a program blocked for good

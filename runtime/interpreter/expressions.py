@@ -79,8 +79,7 @@ class ExpressionCompiler:
             number = self.semantics.number
             return Source(emitter.name(number(float(expression.value))), binary32=number is f32)  # type: ignore[union-attr]
         if kind is n.VariableRef and expression.name.identity not in self.names.macros:  # type: ignore[union-attr]
-            slot = self.scalar_slot(expression.name)  # type: ignore[union-attr]
-            return Source(f"{emitter.name(self.vm.scalars)}[{emitter.name(slot)}]")
+            return Source(emitter.scalar(self.vm.scalars, self.scalar_slot(expression.name)))  # type: ignore[union-attr]
         if kind is n.ConstantRef:
             return Source(emitter.name(self.constant_value(expression)))  # type: ignore[arg-type]
         if kind is n.Binary:

@@ -31,14 +31,9 @@ _HELPERS = "_p, _u, _big"
 _GLOBALS = {"__builtins__": __builtins__}
 
 
-def _too_large() -> MintError:
+def too_large() -> MintError:
     """What ``numbers.f32`` raises for a result binary32 cannot hold."""
     return MintError(numbers.OUT_OF_RANGE, detail="number too large")
-
-
-def rounded(text: str) -> str:
-    """``text``'s value rounded to binary32 (round to nearest even, as ``numbers.f32``)."""
-    return f"_u(_p({text}))[0]"
 
 
 @dataclass(frozen=True, slots=True)
@@ -66,6 +61,20 @@ class Emitter:
         self._values.append(value)
         return f"_{len(self._values) - 1}"
 
+    @property
+    def values(self) -> tuple[object, ...]:
+        """The values named so far, in the order of their names."""
+        return tuple(self._values)
+
+    def scalar(self, scalars: list[float], slot: int) -> str:
+        """Text reading the scalar variable kept at ``scalars[slot]``."""
+        return f"{self.name(scalars)}[{self.name(slot)}]"
+
+    def rounded(self, text: str, *operands: Source) -> str:
+        """Text of ``text``'s value rounded to binary32 (round to nearest even, as ``numbers.f32``); ``text``
+        is the arithmetic of ``operands``, when it is one."""
+        return f"_u(_p({text}))[0]"
+
     def call(self, function: Callable[..., object], *arguments: str) -> str:
         return f"{self.name(function)}({', '.join(arguments)})"
 
@@ -76,21 +85,29 @@ class Emitter:
         """A function of ``arguments`` (none by default) running ``body``; binary32 overflow becomes error 3."""
         parameters = "".join(f"_{index}, " for index in range(len(self._values)))
         code = _code(f"{arguments}{parameters}{_HELPERS}", body.replace("\n", "\n        "))
-        defaults = (*self._values, _BINARY32.pack, _BINARY32.unpack, _too_large)
-        return FunctionType(code, _GLOBALS, "mint", defaults)
+        return function(code, (*self._values, _BINARY32.pack, _BINARY32.unpack, too_large))
 
 
-@functools.lru_cache(maxsize=4096)
 def _code(parameters: str, body: str) -> CodeType:
     """The code of ``def mint(parameters): body`` (keyed by its text, which names no value)."""
-    text = (
+    return defined(
         f"def _mint({parameters}):\n"
         f"    try:\n        {body}\n"
         "    except OverflowError:\n        raise _big() from None\n"
     )
+
+
+@functools.lru_cache(maxsize=4096)
+def defined(text: str) -> CodeType:
+    """The code of the function ``_mint`` that ``text`` defines, compiled once per text."""
     namespace: dict[str, object] = {}
-    exec(compile(text, "<mint expression>", "exec"), namespace)
+    exec(compile(text, "<mint>", "exec"), namespace)
     return namespace["_mint"].__code__  # type: ignore[attr-defined]
+
+
+def function(code: CodeType, defaults: tuple[object, ...]) -> Callable[..., object]:
+    """A function running ``code`` with ``defaults`` as the values of its last parameters."""
+    return FunctionType(code, _GLOBALS, "mint", defaults)
 
 
 _ROUNDED: dict[Callable[..., float], str] = {numbers.add: "+", numbers.subtract: "-", numbers.multiply: "*"}
@@ -109,7 +126,7 @@ def binary(emitter: Emitter, operate: Callable[[float, float], float], left: Sou
     (the left operand is evaluated first either way)."""
     symbol = _ROUNDED.get(operate)
     if symbol is not None:
-        return Source(rounded(f"{left.text} {symbol} {right.text}"), binary32=True)
+        return Source(emitter.rounded(f"{left.text} {symbol} {right.text}", left, right), binary32=True)
     symbol = _COMPARED.get(operate)
     if symbol is not None:
         test = f"{left.text} {symbol} {right.text}"
@@ -122,7 +139,7 @@ def unary(emitter: Emitter, operate: Callable[[float], float], operand: Source) 
     if operate is numbers.negate:
         return Source(f"(-{operand.text})")
     if operate is numbers.f32:
-        return Source(rounded(operand.text), binary32=True)
+        return Source(emitter.rounded(operand.text, operand), binary32=True)
     if operate is numbers.logical_not:
         return Source(f"(1.0 if {operand.text} == 0 else 0.0)", test=f"{operand.text} == 0")
     return Source(emitter.call(operate, operand.text))
@@ -134,6 +151,12 @@ def operator(operate: Callable[[float, float], float]) -> Callable[[float, float
         return operate
     emitter = Emitter()
     return emitter.function(f"return {binary(emitter, operate, Source('a'), Source('b')).text}", "a, b, ")  # type: ignore[return-value]
+
+
+def stored(emitter: Emitter, value: Source, number: Callable[[float], float]) -> str:
+    """Text of ``value`` as a variable holds it, in the dialect's ``number``: binary32 holds a value its last
+    operation has rounded as it is."""
+    return value.text if value.binary32 and number is numbers.f32 else emitter.call(number, value.text)
 
 
 def branch(emitter: Emitter, condition: Source, taken: str, otherwise: str) -> Callable[[], None]:

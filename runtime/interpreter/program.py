@@ -20,9 +20,10 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.interpreter import compiled_loops
 from mintlang.runtime.interpreter.arrays import array_problem, initial_values
 from mintlang.runtime.interpreter.expressions import ExpressionCompiler, Names
-from mintlang.runtime.interpreter.purity import is_pure
+from mintlang.runtime.interpreter.purity import endw_as_its_while, is_pure
 from mintlang.runtime.interpreter.statements import FileLayout, StatementCompiler
 from mintlang.runtime.interpreter.vm import Interpreter, Operation, Site, StopReason
 from mintlang.runtime.keywords import KeywordTable
@@ -62,6 +63,7 @@ def link(
         start += size
     program_positions, _, program_start, _ = layouts[-1]
     entry = _entry(model.structures[Unit.PROGRAM].blocks, program_positions, program_start)
+    statements: list[n.Statement] = []  # of each operation
     for (unit, document), (positions, labels, start, end_of_unit) in zip(units, layouts, strict=True):
         blocks = _blocks_by_place(model.structures[unit].blocks)
         on_end = _end_of_program(vm) if unit is Unit.PROGRAM else _continue_with_program(vm, entry)
@@ -75,9 +77,14 @@ def link(
             for index, statement in enumerate(n.flatten_statements(line.syntax.statements)):
                 pc = len(vm.operations)
                 vm.operations.append(_compiled(compiler, statement, Place(line.number, index), pc))
+                statements.append(statement)
                 vm.pure.append(is_pure(statement, semantics.functions))
                 written = text[statement.span.start : statement.span.end].strip()
                 vm.sites.append(Site(unit.value, line.number, written, type(statement).__name__))
+    vm.compiled_loops[:] = [None] * len(vm.operations)
+    for (unit, _), (positions, *_) in zip(units, layouts, strict=True):
+        endw_as_its_while(vm.pure, model.structures[unit].blocks, positions)
+        compiled_loops.attach(vm, statements, model.structures[unit].blocks, positions, expressions)
     if program_start == 0:  # no configuration file: the program runs first, from its entry
         vm.pc = entry
     return Linked(handlers.get(Unit.PROGRAM, {}), handlers.get(Unit.CONFIGURATION, {}), names)

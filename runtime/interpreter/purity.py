@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
+from mintlang.semantic.blocks import Block, BlockKind, Place
 from mintlang.syntax import nodes as n
 
 _PURE_WORDS = frozenset({"NEXT", "ENDW", "ENDL", "ELSE", "ENDIF", "REPEAT", "LOOP", "EXIT"})
@@ -42,6 +43,15 @@ def is_pure(statement: n.Statement, functions: Mapping[str, object]) -> bool:
     if kind is n.For:
         return _for_repeats(statement, functions)  # type: ignore[arg-type]
     return kind is n.Jump or kind is n.Define
+
+
+def endw_as_its_while(pure: bytearray, blocks: tuple[Block, ...], positions: Mapping[Place, int]) -> None:
+    """An ``ENDW`` tests its ``WHILE``'s condition again: it is pure only when that ``WHILE`` is (``TIME`` read
+    there changes from tick to tick)."""
+    for block in blocks:
+        if block.kind is BlockKind.WHILE and block.closer is not None:
+            closer = positions[block.closer]
+            pure[closer] = pure[closer] and pure[positions[block.opener]]
 
 
 def _for_repeats(statement: n.For, functions: Mapping[str, object]) -> bool:

@@ -21,7 +21,6 @@ from mintlang.runtime.interpreter.generated import Emitter
 from mintlang.runtime.interpreter.release import release
 from mintlang.runtime.interpreter.vm import Interpreter, Loop, Operation, Recovery
 from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordAccess, KeywordTable, Values
-from mintlang.runtime.numbers import f32
 from mintlang.runtime.printing import format_bin, format_chr, format_hex
 from mintlang.runtime.ranges import check_range, table_bounds
 from mintlang.runtime.terminal import Terminal
@@ -122,7 +121,7 @@ class StatementCompiler:
         emitter = Emitter()
         value = self.expressions.source(expression, emitter)
         slot = self.expressions.scalar_slot(name)
-        stored = value.text if value.binary32 and self.number is f32 else emitter.call(self.number, value.text)
+        stored = generated.stored(emitter, value, self.number)
         return emitter.function(f"{emitter.name(self.vm.scalars)}[{emitter.name(slot)}] = {stored}")
 
     def _store(self, target: n.VariableRef | n.ElementRef, value: Evaluate) -> Operation:

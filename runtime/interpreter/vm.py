@@ -103,6 +103,8 @@ class Interpreter:
         self.operations: list[Operation] = []
         self.sites: list[Site] = []
         self.pure = bytearray()  # per operation: 1 if it acts on the interpreter alone (``purity.py``)
+        # per operation: the generated passes of the loop whose first statement it is (``compiled_loops.py``)
+        self.compiled_loops: list[Callable[[int], int] | None] = []
         self.ahead = 0  # statements of the current tick already run by ``run_ahead``
         self.program_start = 0  # where the program file begins, after the configuration file
         self.recoveries: dict[int, Recovery] = {}  # pc of a block statement -> how an error in it resumes
@@ -144,7 +146,7 @@ class Interpreter:
             self.progressed = False
             return
         self.asleep = False
-        operations = self.operations
+        operations, compiled_loops = self.operations, self.compiled_loops
         count = len(operations)
         budget = self.slice_statements - self.ahead
         self.blocked = False
@@ -158,6 +160,12 @@ class Interpreter:
                     self.executing = None
                     self._finish()
                     return
+                passes = compiled_loops[pc]  # pure statements: no event becomes pending while they run
+                if passes is not None:
+                    ran = passes(budget)
+                    if ran:
+                        budget -= ran
+                        continue
                 self.pc = pc + 1
                 self.executing = pc
                 try:
@@ -176,21 +184,28 @@ class Interpreter:
             self.progressed = budget < self.slice_statements
             self.ahead = 0
 
-    def run_ahead(self) -> int:
-        """Run the slice of a tick at which nothing but the interpreter can change: pure statements only.
+    def run_ahead(self, ticks: int = 1) -> int:
+        """Run the slices of ``ticks`` ticks at which nothing but the interpreter can change: pure statements only.
 
         Stops before the first statement that is not pure, or that fails (it has changed nothing, and runs
-        again in the tick processed whole); returns how many ran, the whole slice when none stopped it.
+        again in the tick processed whole); returns how many ran, every slice's statements when none stopped
+        it. A loop compiled whole runs its passes in one call (``compiled_loops.py``).
         """
-        operations, pure = self.operations, self.pure
+        operations, pure, compiled_loops = self.operations, self.pure, self.compiled_loops
         count = len(operations)
         done = 0
-        budget = self.slice_statements
+        budget = self.slice_statements * ticks
         try:
             while done < budget:
                 pc = self.pc
                 if pc >= count or not pure[pc]:
                     break
+                passes = compiled_loops[pc]
+                if passes is not None:
+                    ran = passes(budget - done)
+                    if ran:
+                        done += ran
+                        continue
                 self.pc = pc + 1
                 self.executing = pc
                 try:
@@ -201,7 +216,7 @@ class Interpreter:
                 done += 1
         finally:
             self.executing = None
-            self.ahead = done if done < budget else 0
+            self.ahead = done % self.slice_statements if done < budget else 0
         return done
 
     def current_site(self) -> Site | None:

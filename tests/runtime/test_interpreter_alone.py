@@ -93,3 +93,14 @@ def test_which_statements_may_run_alone(line: str, alone: bool) -> None:
     document = mintlang.parse(f"DIM a(5)\nDIM c(5)\n{line}\n#sub\nRETURN\n")
     statement = document.placed[2].syntax.statements[0]
     assert is_pure(statement, FUNCTIONS) is alone
+
+
+def test_an_endw_whose_while_reads_time_waits_for_the_time_it_reads() -> None:
+    # ENDW tests its WHILE's condition again: TIME there reads the tick each test runs in, so the loop ends in
+    # tick 3, and ENDW runs alone only when its WHILE may (found by the metamorphic property)
+    source = "WHILE TIME < 3 : ENDW\nPRINT TIME\n"
+    processed: list[int] = []
+    result = run_source(source, limits=Limits(), on_tick=lambda controller, tick: processed.append(tick))
+    assert result.terminal == "3\n"
+    assert processed == [0, 1, 2, 3]
+    assert simulate(source).terminal == "3\n"

@@ -11,18 +11,25 @@ import json
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from pathlib import Path
-
-from rich.console import Console
+from typing import TYPE_CHECKING
 
 from mintlang.dialect import Dialect
+from mintlang.migrate import verification
 from mintlang.migrate.applications import Migrated, UsageError
-from mintlang.migrate.mintmt.verification import verify as to_mintmt_verified
 from mintlang.migrate.model import MigrationResult
-from mintlang.migrate.verification import DEFAULT_UNTIL_MS, V3_DEFAULT, Verification, verify
 from mintlang.migrate.verification import report as verification_report
 from mintlang.migrate.verification.report import Verified
+from mintlang.runtime import scenario as scenarios
 from mintlang.runtime.hardware import machine
-from mintlang.runtime.scenario import DrivesEnabled, Scenario, ScenarioFileError, load_scenario, merge
+
+if TYPE_CHECKING:
+    from rich.console import Console
+
+    from mintlang.migrate.verification import Verification
+    from mintlang.runtime.scenario import Scenario
+
+# ``verification`` and ``scenarios`` import each name when it is first used (``mintlang.lazy``): without
+# ``--verify``, mint-migrate checks only ``Options.refuse`` and loads neither the simulator nor the scenarios.
 
 
 @dataclass(frozen=True, slots=True)
@@ -47,19 +54,23 @@ class Options:
 
     def settings(self, controller: str, to: str = "v4") -> Settings:
         """The settings, with the scenario files read; one that cannot be read or used is a ``UsageError``."""
-        v3_controller = self.v3_controller or V3_DEFAULT
-        scenario = Scenario(drives=(DrivesEnabled(),)) if self.drives == "enabled" else Scenario()
+        v3_controller = self.v3_controller or verification.V3_DEFAULT
+        scenario = (
+            scenarios.Scenario(drives=(scenarios.DrivesEnabled(),))
+            if self.drives == "enabled"
+            else scenarios.Scenario()
+        )
         # the stimulus is written for the original: v3 on its controller, or v4 on the target's (--to mintmt)
         original = (controller, Dialect.V4) if to == "mintmt" else (v3_controller, Dialect.V3)
         simulated = machine(*original)
         for path in self.scenario_paths:
             try:
-                scenario = merge(scenario, load_scenario(path, simulated, original[1]))
-            except ScenarioFileError as error:
+                scenario = scenarios.merge(scenario, scenarios.load_scenario(path, simulated, original[1]))
+            except scenarios.ScenarioFileError as error:
                 raise UsageError(str(error).replace("\n", "; ")) from None
             except OSError as error:
                 raise UsageError(f"cannot read {path}: {error.strerror or error}") from None
-        return Settings(v3_controller, controller, scenario, self.until_ms or DEFAULT_UNTIL_MS, to)
+        return Settings(v3_controller, controller, scenario, self.until_ms or verification.DEFAULT_UNTIL_MS, to)
 
     def refuse(self, typed: Callable[[str], bool]) -> None:
         """Without ``--verify``: any of its options typed on the command line is a ``UsageError``; a settings
@@ -82,7 +93,7 @@ def verify_all(migrated: list[list[Migrated]], settings: Settings) -> tuple[list
         paths = {item.entry.role: item.entry.path for item in files}
         try:
             found = _verify(result, settings)
-        except ScenarioFileError as error:  # a REM @sim line of the program, which the v3 run reads first
+        except scenarios.ScenarioFileError as error:  # a REM @sim line of the program, which the v3 run reads first
             program = paths.get("program") or paths.get("configuration") or ""
             problems += [str(replace(mistake, source=program)) for mistake in error.errors]
             continue
@@ -92,10 +103,10 @@ def verify_all(migrated: list[list[Migrated]], settings: Settings) -> tuple[list
 
 def _verify(result: MigrationResult, settings: Settings) -> Verification:
     if settings.to == "mintmt":
-        return to_mintmt_verified(
-            result, controller=settings.controller, scenario=settings.scenario, until_ms=settings.until_ms
-        )
-    return verify(
+        from mintlang.migrate.mintmt.verification import verify as to_mintmt  # noqa: PLC0415 - loads the simulator
+
+        return to_mintmt(result, controller=settings.controller, scenario=settings.scenario, until_ms=settings.until_ms)
+    return verification.verify(
         result,
         v3_controller=settings.v3_controller,
         controller=settings.controller,

@@ -12,10 +12,6 @@ from dataclasses import dataclass
 from enum import StrEnum
 from typing import TYPE_CHECKING, Protocol
 
-from rich.console import Console
-from rich.table import Column, Table
-from rich.text import Text
-
 from mintlang.runtime.scenario.targets import Target
 
 if TYPE_CHECKING:
@@ -264,34 +260,3 @@ def stop_fails(outcomes: Sequence[Outcome], stopped: str) -> bool:
     no ``stopped`` expectation asked for it."""
     chosen = any(isinstance(outcome.expectation, StoppedExpectation) for outcome in outcomes)
     return not chosen and stopped not in NORMAL_STOPS
-
-
-def _expectations(count: int) -> str:
-    return "1 expectation" if count == 1 else f"{count} expectations"
-
-
-def render_outcomes(outcomes: Iterable[Outcome], console: Console) -> None:
-    """A table of every expectation with what was seen, then a one-line verdict."""
-    outcomes = tuple(outcomes)
-    # The origin (file:line) is kept whole where it fits in a third of the width, ahead of the other columns,
-    # which wrap at words; a longer one folds onto more lines rather than lose its line number.
-    widest = max((len(str(outcome.expectation.origin)) for outcome in outcomes), default=0)
-    origin = Column("expectation", overflow="fold", min_width=min(widest, console.width // 3))
-    table = Table(origin, "when", "expected", "actual", "result")
-    for outcome in outcomes:
-        expectation = outcome.expectation
-        what = Text(expectation.what)
-        what.append(f"\n{expectation.origin}", style="dim")
-        actual = Text(outcome.actual)
-        if outcome.detail:
-            actual.append(f"\n{outcome.detail}", style="dim")
-        result = Text("✓", style="green") if outcome.held else Text("✗", style="bold red")
-        when = "end" if expectation.at_ms is None else f"{expectation.at_ms} ms"
-        table.add_row(what, when, Text(expectation.expected), actual, result)
-    console.print(table)
-    failed = sum(not outcome.held for outcome in outcomes)
-    if failed:
-        console.print(Text(f"{failed} of {_expectations(len(outcomes))} failed.", style="bold red"))
-    else:
-        held = "The expectation held." if len(outcomes) == 1 else f"All {len(outcomes)} expectations held."
-        console.print(Text(held, style="green"))

@@ -131,6 +131,15 @@ class _LocalEmitter(Emitter):
         self.before.append(f"if {name} - {name}: raise _big()")  # not 0 only for an infinity or a NaN
         return name
 
+    def test_later(self, result: Source) -> str:
+        """The line testing ``result``, taken out of the lines before the statement to be written where it is
+        needed ("" when it needs none)."""
+        index = self.untested.pop(result.text, None)
+        if index is None:
+            return ""
+        self.before[index] = None
+        return f"if {result.text} - {result.text}: raise _big()"
+
     def take(self) -> list[str]:
         """The lines written since the last take, each result tested where it needs to be."""
         lines = [line for line in self.before if line is not None]
@@ -334,6 +343,8 @@ class _Writer:
         variable = emitter.scalar(self.vm.scalars, slot)
         add = self.expressions.semantics.binary["+"]
         candidate = generated.binary(emitter, add, Source(variable), Source("step"))
+        # too large for binary32, the variable plus the step is an infinity of the step's sign, past any end
+        test = emitter.test_later(candidate)
         self.setup = "end = loop.end; step = loop.step"
         self._before(closer, pending, depth)
         following = candidate.text
@@ -341,5 +352,7 @@ class _Writer:
             self.lines.add(depth, f"following = {following}", closer, pending)
             following = "following"
         self.lines.add(depth, f"if {following} {_PAST_END} end:", closer, pending)
+        if test:
+            self.lines.add(depth + 1, test, closer, pending)
         self._leave(pending + 1, closer, pending, depth + 1)
         self.lines.add(depth, f"{variable} = {following}", closer, pending)

@@ -121,6 +121,18 @@ def test_a_failing_statement_names_its_line_at_its_tick() -> None:
     assert (result.err, result.erl, result.stop.time_ms, result.stop.line) == (3.0, 5.0, 12, 5)
 
 
+BIG = "100000000000000000000000000000000000000"  # 1E38
+
+
+@pytest.mark.parametrize("sign", ["", "-"])
+def test_a_next_past_binary32s_largest_value_is_error_3_on_its_line(sign: str) -> None:
+    # 3E38 plus a step of 1E38 (in either direction) is past 3.4E38, binary32's largest value
+    source = f"DIM i\nDIM a\nFOR i = {sign}3{BIG[1:]} TO {sign}34{BIG[2:]} STEP {sign}{BIG}\n  a = a + 1\nNEXT\n"
+    result = _run(source)
+    assert (result.err, result.erl, result.stop.line, result.stop.time_ms) == (3.0, 5.0, 5, 0)
+    assert observable(result) == observable(_run(source, compiled=False))
+
+
 @pytest.mark.parametrize(
     "body",
     [

@@ -12,16 +12,15 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
 from mintlang.runtime import drive_enable, global_error_output
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.comms.packets import HostEndpoint
-from mintlang.runtime.comms.server import HostPortServer
+from mintlang.runtime.dialects import machine as dialect_machine
 from mintlang.runtime.dialects import semantics
-from mintlang.runtime.dialects.mintmt import machine as mintmt_machine
-from mintlang.runtime.dialects.v3 import machine as v3_machine
 from mintlang.runtime.events import MINTDRIVE, NEXTMOVE, NEXTMOVE_MINTMT, EventClass, Events
 from mintlang.runtime.hardware import simulated
 from mintlang.runtime.inert import InertSettings
@@ -41,6 +40,9 @@ from mintlang.runtime.system import System
 from mintlang.runtime.terminal import Terminal
 from mintlang.runtime.world import World
 from mintlang.semantic.model import SemanticModel
+
+if TYPE_CHECKING:
+    from mintlang.runtime.comms.server import HostPortServer
 
 
 def build_plant(choice: PlantChoice | None) -> Plant:
@@ -89,6 +91,7 @@ def build_controller(
     profile = machine or simulated(model.controller.controller)
     meaning = semantics(model.program.dialect)
     v3 = meaning.dialect is Dialect.V3
+    v3_machine = dialect_machine(Dialect.V3) if v3 else None
     clock = Clock()
     table = KeywordTable(profile.controller)
     terminal = Terminal(echo)
@@ -118,7 +121,7 @@ def build_controller(
         extend(table, motion)
     drive_enable.install(table, axes, io)
     global_error_output.install(table, motion, io)
-    monitors = mintmt_machine.install(table, motion, io, events) if mintmt else []
+    monitors = dialect_machine(Dialect.MINTMT).install(table, motion, io, events) if mintmt else []
     motion.input_active = io.is_active
     motion.auxiliary_encoder = system.auxiliary_encoder
     motion.index_pulses = {pulse.axis: pulse for pulse in scenario.index_pulses}
@@ -173,7 +176,7 @@ def build_controller(
     events.on_fastin_return = lambda number: setattr(system, "fast_armed", True)
     world = World(scenario, io=io, axes=axes, terminal=terminal, host=endpoint.receive)
     io.next_input_change = lambda: world.next_change(clock.now)
-    server = HostPortServer(host_port) if host_port is not None else None
+    server = _host_port(host_port) if host_port is not None else None
     return Controller(
         clock,
         table,
@@ -192,3 +195,10 @@ def build_controller(
         server,
         monitors,
     )
+
+
+def _host_port(port: int) -> HostPortServer:
+    """The host port of a run that asks for one (``--host-port``)."""
+    from mintlang.runtime.comms.server import HostPortServer  # noqa: PLC0415 - sockets and a thread: for a host alone
+
+    return HostPortServer(port)

@@ -29,7 +29,7 @@ from mintlang.cli.settings import settings_failed
 from mintlang.cli.terminal import console
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
-from mintlang.runtime.comms.server import PortUnavailable
+from mintlang.runtime.comms import PortUnavailable
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import StopReason

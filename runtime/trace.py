@@ -14,7 +14,6 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import IO, TYPE_CHECKING
 
-from mintlang.extras import this_installation
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.simulation import Interrupt
 
@@ -276,6 +275,8 @@ def _matplotlib() -> None:
     try:
         import matplotlib  # noqa: PLC0415 - optional dependency, loaded only when plotting
     except ImportError as missing:
+        from mintlang.extras import this_installation  # noqa: PLC0415 - reads the distribution's metadata: only here
+
         raise PlotUnavailable(f"plotting needs matplotlib: {this_installation('plot')}") from missing
     matplotlib.use("Agg")
 

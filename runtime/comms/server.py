@@ -18,16 +18,13 @@ from dataclasses import dataclass, field
 from types import TracebackType
 from typing import Self
 
+from mintlang.runtime.comms import PortUnavailable
 from mintlang.runtime.comms.packets import HostEndpoint, PacketDecoder
 
 _RECEIVE_SIZE = 4096
 _FLUSH_SECONDS = 1.0
 _INBOX_LIMIT = 1 << 16
 """Bytes held per connection before reading pauses: a flooding client is slowed by TCP, not by memory."""
-
-
-class PortUnavailable(Exception):
-    """The host port cannot be opened; the message says which port and why."""
 
 
 @dataclass(slots=True, eq=False)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from importlib import import_module
+from types import ModuleType
 from typing import TYPE_CHECKING
 
 from mintlang.dialect import Dialect
@@ -28,3 +29,16 @@ def semantics(dialect: Dialect | str) -> Semantics:
     module, name = found
     dialect_semantics: Semantics = getattr(import_module(module), name)
     return dialect_semantics
+
+
+# The parts of the controller a dialect adds to the Mint v4 machine (its interrupts, keywords and motion), by
+# module: imported by a run of that dialect alone (``controller.build_controller``).
+_MACHINES = {
+    Dialect.V3: "mintlang.runtime.dialects.v3.machine",
+    Dialect.MINTMT: "mintlang.runtime.dialects.mintmt.machine",
+}
+
+
+def machine(dialect: Dialect) -> ModuleType:
+    """The module of what ``dialect`` adds to the Mint v4 machine (KeyError for v4, which adds nothing)."""
+    return import_module(_MACHINES[dialect])

@@ -17,9 +17,10 @@ and it changes nothing a run shows:
   frame's stack, and runs whole passes while the statements left in the budget
   hold the longest pass, counting statements as the interpreter does; the rest
   of the budget, and anything else, is the interpreter's;
-- a statement that fails is left unrun: the variables and the program counter
-  are as the statements before it left them, and the interpreter runs it again,
-  to fail there itself (pure statements change nothing when they fail);
+- a statement that fails (or meets what the simulator does not model) is left
+  unrun: the variables and the program counter are as the statements before it
+  left them, and the interpreter runs it again, to fail there itself (pure
+  statements change nothing when they fail);
 - when any of its operations has been replaced (coverage, the debugger, a
   benchmark's counter wrap them), it steps aside.
 """
@@ -239,7 +240,7 @@ class _Writer:
         entry = (self.opener + 1, 0)
         head = len(self._head())
         at = (entry,) * (head + 1) + tuple(self.lines.places) + (entry,) * len(self._tail())
-        defaults = (*self.emitter.values, _binary32, generated.too_large, self.vm, at, MintError)
+        defaults = (*self.emitter.values, _binary32, generated.too_large, self.vm, at, (MintError, NotSimulated))
         return generated.function(generated.defined(text), defaults)  # type: ignore[return-value]
 
     def _count(self, depth: int, statements: int, pc: int, pending: int) -> None:
@@ -319,9 +320,10 @@ class _Writer:
         kind = type(statement)
         word = statement.word if kind is n.BlockWord else ""  # type: ignore[union-attr]
         if kind is n.Until or word == "ENDW":
-            leaves = statement.condition if kind is n.Until else n.Unary(statement.span, "NOT", self._while())  # type: ignore[union-attr]
-            condition = self._condition(leaves, closer, pending, depth)
-            self.lines.add(depth, f"if {condition.truth}:", closer, pending)
+            tested = statement.condition if kind is n.Until else self._while()  # type: ignore[union-attr]
+            condition = self._condition(tested, closer, pending, depth)
+            leaves = condition.truth if kind is n.Until else f"not ({condition.truth})"
+            self.lines.add(depth, f"if {leaves}:", closer, pending)
             self._leave(pending + 1, closer, pending, depth + 1)
         elif word == "NEXT":
             self._next(pending, depth)

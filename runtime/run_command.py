@@ -11,24 +11,22 @@ import signal
 import sys
 import time
 from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from contextlib import AbstractContextManager, contextmanager, nullcontext
 from functools import partial
 from pathlib import Path
 from types import FrameType
-from typing import NoReturn
+from typing import TYPE_CHECKING, NoReturn
 
 import click
-from rich.console import Console
-from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
-from rich.text import Text
 
 from mintlang.cli.files import program_as_own_configuration
 from mintlang.cli.options import refuse_quiet_and_verbose
 from mintlang.cli.report import shortened
 from mintlang.cli.settings import settings_failed
-from mintlang.cli.terminal import console
+from mintlang.cli.terminal import Messages
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
+from mintlang.runtime import scenario as scenarios
 from mintlang.runtime.comms import PortUnavailable
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.hardware import machine
@@ -36,20 +34,17 @@ from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.outputs import OutputProblem, check_plot, check_report, check_trace
 from mintlang.runtime.report import as_json
 from mintlang.runtime.run import RunResult, run_source
-from mintlang.runtime.scenario import (
-    ScenarioFileError,
-    all_held,
-    expectations_pass,
-    load_scenario,
-    merge,
-    render_outcomes,
-)
+from mintlang.runtime.scenario import ScenarioFileError, all_held, expectations_pass, load_scenario, merge
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
 from mintlang.runtime.simulation import Interrupt, Limits
 from mintlang.runtime.trace import PlotUnavailable, Trace
 from mintlang.semantic.units import Unit
 from mintlang.settings import SettingsError, settings_for
 from mintlang.source import read_source
+
+if TYPE_CHECKING:
+    from rich.console import Console
+    from rich.progress import Progress, TaskID
 
 _USAGE_ERROR = 2
 _FAILED = 1
@@ -105,7 +100,8 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
 ) -> None:
     """Run the program as ``run`` was asked to (its docstring says what the run does)."""
     refuse_quiet_and_verbose(quiet, verbose)
-    errors = console(color, stderr=True)
+    progress = not quiet and sys.stderr.isatty()
+    errors = Messages(color, stderr=True, rich=progress)
     if config_path is not None and program_as_own_configuration([program], config_path):
         raise click.UsageError(f"--config {config_path} is the program {program} itself: name the configuration file")
     config_path = _configuration(program, config_path, no_config=no_config)
@@ -145,7 +141,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     plotting = plot_path is not None
     trace = Trace(axes, trace_path, plotting=plotting, chosen=chosen is not None) if tracing else None
     termination = _Termination()
-    recorders = _Recorders(trace, termination, errors, until_ms, progress=not quiet and sys.stderr.isatty())
+    recorders = _Recorders(trace, termination, errors, until_ms, progress=progress)
     stdout = _Stdout(live=realtime or host_port is not None)
     simulate = partial(
         run_source,
@@ -160,7 +156,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         name=str(program),
     )
     with _on_sigterm(termination):
-        with _trace_open(trace), recorders.progress:
+        with _trace_open(trace), recorders.shown_progress():
             started = time.perf_counter()
             result = _simulate(simulate, termination)
             wall_s = time.perf_counter() - started
@@ -169,9 +165,9 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
             _describe_stop(result, errors)
         if verbose:
             ratio = f" ({result.stop.time_ms / 1000 / wall_s:.1f}x real time)" if wall_s > 0 else ""
-            errors.print(f"simulated {result.stop.time_ms} ms in {wall_s:.2f} s{ratio}")
+            errors.line(f"simulated {result.stop.time_ms} ms in {wall_s:.2f} s{ratio}")
         if result.outcomes:
-            render_outcomes(result.outcomes, errors)
+            scenarios.render_outcomes(result.outcomes, errors.console)  # the lazy name: rich, for expectations only
         _report(result, report_format, report_path)
         title = f"{program.name} on {simulated.title}, {result.stop.reason.value} after {result.stop.time_ms} ms"
         _outputs(trace, plot_path, title)  # after the report, so an output that fails does not take the results with it
@@ -360,37 +356,48 @@ def _scenario(paths: tuple[Path, ...], controller: ControllerProfile, dialect: D
 
 
 class _Recorders:
-    """The per-tick observers of a run: SIGTERM, the trace and the progress bar."""
+    """The per-tick observers of a run: SIGTERM, the trace and the progress bar (on a terminal, unless quiet)."""
 
     def __init__(
-        self, trace: Trace | None, termination: _Termination, console: Console, until_ms: int | None, *, progress: bool
+        self, trace: Trace | None, termination: _Termination, errors: Messages, until_ms: int | None, *, progress: bool
     ) -> None:
         self.trace = trace
         self.termination = termination
-        self.console = console
-        self.progress = Progress(
-            TextColumn("simulated {task.completed:.0f} ms"),
-            BarColumn(),  # a bar toward --until-ms, a pulse when the run has no bound in simulated time
-            TimeElapsedColumn(),
-            console=console,
-            transient=True,
-            disable=not progress,
-            # on one screen, what the program prints goes above the bar; piped, it goes to its file untouched
-            redirect_stdout=sys.stdout.isatty(),
-            redirect_stderr=False,
-        )
-        self.task = self.progress.add_task("run", total=until_ms)
+        self.errors = errors
+        self.bar = _progress_bar(errors.console, until_ms) if progress else None
         self.shown = 0
+
+    def shown_progress(self) -> AbstractContextManager[object]:
+        """The progress bar on the screen while the run lasts (nothing without one)."""
+        return self.bar[0] if self.bar is not None else nullcontext()
 
     def on_tick(self, controller: Controller, tick: int) -> None:
         if tick == 0 and controller.server is not None:
-            self.console.print(f"host port: 127.0.0.1:{controller.server.port}", highlight=False)
+            self.errors.line(f"host port: 127.0.0.1:{controller.server.port}")
         if self.trace is not None:
             self.trace.record(controller, tick)
-        if tick - self.shown >= _PROGRESS_STEP_MS:
+        if self.bar is not None and tick - self.shown >= _PROGRESS_STEP_MS:
             self.shown = tick
-            self.progress.update(self.task, completed=tick)
+            progress, task = self.bar
+            progress.update(task, completed=tick)
         self.termination.at_tick()  # last, so a SIGTERM that came before the run still has its first tick traced
+
+
+def _progress_bar(console: Console, until_ms: int | None) -> tuple[Progress, TaskID]:
+    """The run's simulated time: a bar toward --until-ms, a pulse when the run has no bound in simulated time."""
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn  # noqa: PLC0415 - a terminal's only
+
+    progress = Progress(
+        TextColumn("simulated {task.completed:.0f} ms"),
+        BarColumn(),
+        TimeElapsedColumn(),
+        console=console,
+        transient=True,
+        # on one screen, what the program prints goes above the bar; piped, it goes to its file untouched
+        redirect_stdout=sys.stdout.isatty(),
+        redirect_stderr=False,
+    )
+    return progress, progress.add_task("run", total=until_ms)
 
 
 def _check_outputs(
@@ -411,14 +418,13 @@ def _check_outputs(
         sys.exit(_USAGE_ERROR)
 
 
-def _describe_stop(result: RunResult, console: Console) -> None:
+def _describe_stop(result: RunResult, errors: Messages) -> None:
     """The stop line; the statement and message are the program's text, so they are never read as markup."""
     stop = result.stop
     style = "green" if stop.reason in (StopReason.END, StopReason.UNTIL) else "bold red"
-    line = Text(stop.reason.value, style=style)
-    line.append(f" after {stop.time_ms} ms")
+    line = f"{stop.reason.value} after {stop.time_ms} ms"
     if stop.line is not None:
-        line.append(f" at {stop.unit} line {stop.line}: {shortened(stop.statement or '')}")
+        line += f" at {stop.unit} line {stop.line}: {shortened(stop.statement or '')}"
     if stop.message:
-        line.append(f" — {stop.message}")
-    console.print(line, highlight=False)
+        line += f" — {stop.message}"
+    errors.line(line, style)

@@ -37,17 +37,54 @@ def console(color: str = "auto", *, stderr: bool = False, file: IO[str] | None =
 
 
 def colour_console(color: str, file: IO[str]) -> Console | None:
-    """A rich console for a report to ``file`` that may show colour; None where it shows none.
+    """A rich console for a report to ``file`` that may show colour; None where it shows none."""
+    return console(color, file=file) if may_show_colour(color, file) else None
 
-    None is decided without importing rich where rich's answer is certain: ``--color never``, or
-    ``auto`` into a file or pipe (a pre-commit hook, CI) with neither ``FORCE_COLOR`` nor
-    ``TTY_COMPATIBLE`` set, which rich reads before asking the stream whether it is a terminal.
+
+def may_show_colour(color: str, file: IO[str]) -> bool:
+    """Whether output to ``file`` may be coloured, as far as can be told without importing rich.
+
+    False is certain: ``--color never``, or ``auto`` into a file or pipe (a pre-commit hook, CI)
+    with neither ``FORCE_COLOR`` nor ``TTY_COMPATIBLE`` set, which rich reads before asking the
+    stream whether it is a terminal. True leaves the answer to rich (``TERM=dumb``, ``NO_COLOR``).
     """
     if color == "never":
-        return None
-    if color == "auto" and not _isatty(file) and not {"FORCE_COLOR", "TTY_COMPATIBLE"} & os.environ.keys():
-        return None
-    return console(color, file=file)
+        return False
+    return color != "auto" or _isatty(file) or bool({"FORCE_COLOR", "TTY_COMPATIBLE"} & os.environ.keys())
+
+
+class Messages:
+    """A tool's own lines on standard output or error: through rich where they may be coloured, else written
+    as they are, without importing rich (a run into a pipe).
+
+    A line rich would change (a tab it expands, a control character it drops) still goes through rich,
+    so the output is the same either way; ``console`` is rich's, for what only rich writes (a table).
+    """
+
+    def __init__(self, color: str, *, stderr: bool = False, rich: bool = False) -> None:
+        """``rich``: through rich whatever the stream (a progress bar shares it)."""
+        self.color = color
+        self.stderr = stderr
+        self._console = console(color, stderr=stderr) if rich or may_show_colour(color, self._stream()) else None
+
+    @property
+    def console(self) -> Console:
+        """rich's console for the stream, made when first needed."""
+        if self._console is None:
+            self._console = console(self.color, stderr=self.stderr)
+        return self._console
+
+    def line(self, text: str, style: str = "") -> None:
+        """``text`` on a line of its own, in rich's ``style`` where colour shows; never read as markup."""
+        if self._console is None and text.isprintable():
+            self._stream().write(f"{text}\n")
+            return
+        from rich.text import Text  # noqa: PLC0415 - rich costs a tenth of the start-up
+
+        self.console.print(Text(text, style=style), highlight=False)
+
+    def _stream(self) -> IO[str]:
+        return sys.stderr if self.stderr else sys.stdout
 
 
 def _isatty(file: IO[str]) -> bool:

@@ -2,9 +2,11 @@
 
 ``--help`` and ``--version`` of every tool load none of the heavy parts (the parser and
 lark, the rules, the simulator, the migration rules, pygls, rich), and a check that writes
-JSON, or text into a pipe (a pre-commit hook, CI), loads the checker but not rich. Each case
-runs in a fresh interpreter, which lists the modules it imported; how long start-up takes is
-measured by ``benchmarks/startup.py``, never here.
+JSON, or text into a pipe (a pre-commit hook, CI), loads the checker but not rich. A Mint v4
+run into a pipe loads neither rich nor the other dialects' machines nor the host port server,
+and a migration without ``--verify`` loads no part of the simulator. Each case runs in a fresh
+interpreter, which lists the modules it imported; how long start-up takes is measured by
+``benchmarks/startup.py``, never here.
 """
 
 from __future__ import annotations
@@ -43,11 +45,21 @@ HEAVY = (
 
 def run(module: str, *arguments: str, env: dict[str, str] | None = None) -> tuple[str, list[str]]:
     """What the tool wrote, and the heavy modules (or their packages) it imported."""
+    output, imported = run_listing(module, *arguments, env=env)
+    return output, loaded(HEAVY, imported)
+
+
+def run_listing(module: str, *arguments: str, env: dict[str, str] | None = None) -> tuple[str, list[str]]:
+    """What the tool wrote to its standard output (a pipe), and every module it imported."""
     command = [sys.executable, "-c", _RUN_AND_LIST_MODULES, module, *arguments]
     finished = subprocess.run(command, capture_output=True, text=True, check=True, env=env)
     output, _, modules = finished.stdout.rpartition("\n\n")
-    imported = json.loads(modules)
-    return output, [name for name in HEAVY if any(m == name or m.startswith(f"{name}.") for m in imported)]
+    return output, json.loads(modules)
+
+
+def loaded(names: tuple[str, ...], imported: list[str]) -> list[str]:
+    """Those of ``names`` imported, themselves or a module of theirs."""
+    return [name for name in names if any(m == name or m.startswith(f"{name}.") for m in imported)]
 
 
 @pytest.mark.parametrize(
@@ -105,3 +117,64 @@ def test_a_text_report_into_a_pipe_loads_no_rich_unless_colour_is_forced(tmp_pat
     output, heavy = run("mintlang.cli", "check", str(program), env=plain | {"FORCE_COLOR": "1"})
     assert "\x1b[" in output  # rich decides, and colours
     assert "rich" in heavy
+
+
+def _without_forced_colour() -> dict[str, str]:
+    return {key: value for key, value in os.environ.items() if key not in {"FORCE_COLOR", "TTY_COMPATIBLE"}}
+
+
+# What a run of one dialect does not use: the others' machines, the host port (--host-port), rich (colour,
+# the progress bar on a terminal, the table of expectations), the distribution's metadata (the plot's hint).
+NOT_FOR_A_PLAIN_V4_RUN = (
+    "rich",
+    "mintlang.runtime.dialects.v3.machine",
+    "mintlang.runtime.dialects.mintmt",
+    "mintlang.runtime.comms.server",
+    "mintlang.runtime.scenario.outcome_table",
+    "mintlang.extras",
+    "socket",
+    "importlib.metadata",
+)
+
+
+def test_a_tiny_v4_run_into_a_pipe_loads_only_the_v4_machine(tmp_path: Path) -> None:
+    program = tmp_path / "tiny.mnt"
+    program.write_text('DIM count = 2\nPRINT "count: ", count * 3\n', encoding="utf-8")
+    output, imported = run_listing("mintlang.runtime.cli", str(program), env=_without_forced_colour())
+    assert output == "count: 6"  # the line the program printed
+    assert "mintlang.runtime.dialects.v4" in imported
+    assert loaded(NOT_FOR_A_PLAIN_V4_RUN, imported) == []
+
+
+def test_a_v3_run_loads_the_v3_machine_and_not_mintmts(tmp_path: Path) -> None:
+    program = tmp_path / "tiny_v3.mnt"
+    program.write_text("PRINT 1\n", encoding="utf-8")
+    output, imported = run_listing(
+        "mintlang.runtime.cli", "--dialect", "v3", str(program), env=_without_forced_colour()
+    )
+    assert output.strip() == "1"
+    assert loaded(("mintlang.runtime.dialects.v3.machine", "mintlang.runtime.dialects.mintmt"), imported) == [
+        "mintlang.runtime.dialects.v3.machine"
+    ]
+
+
+# The simulator and what only it needs: a migration runs it with --verify alone.
+SIMULATOR = (
+    "mintlang.runtime.interpreter",
+    "mintlang.runtime.controller",
+    "mintlang.runtime.motion",
+    "mintlang.runtime.dialects.v3.machine",
+    "mintlang.runtime.scenario.directives",
+    "mintlang.runtime.scenario.files",
+    "mintlang.migrate.verification.runs",
+    "mintlang.migrate.mintmt.verification",
+)
+
+
+def test_a_tiny_v3_migration_into_a_pipe_loads_the_rules_and_no_simulator(tmp_path: Path) -> None:
+    program = tmp_path / "tiny_v3.mnt"
+    program.write_text("PRINT 1\n", encoding="utf-8")
+    output, imported = run_listing("mintlang.migrate.cli", str(program), env=_without_forced_colour())
+    assert "1 file: 0 changed, 1 unchanged" in output
+    assert loaded(("lark", "mintlang.migrate.rules"), imported) == ["lark", "mintlang.migrate.rules"]
+    assert loaded(SIMULATOR, imported) == []

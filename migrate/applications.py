@@ -13,8 +13,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from mintlang.cli.files import collect, is_configuration, program_as_own_configuration
+from mintlang.migrate import mintmt
 from mintlang.migrate.api import migrate
-from mintlang.migrate.mintmt import to_mintmt
 from mintlang.migrate.model import MigrationFailed
 from mintlang.migrate.report import FileEntry
 from mintlang.semantic.units import Unit
@@ -60,7 +60,7 @@ class Application:
         program = self.program.text if self.program is not None else ""
         try:
             if to == "mintmt":
-                result = to_mintmt(program, config=config)
+                result = mintmt.to_mintmt(program, config=config)
             else:
                 result = migrate(program, config=config, controller=controller, only=only, skip=skip, opt_in=opt_in)
         except MigrationFailed as failure:

@@ -21,11 +21,10 @@ from mintlang.cli.options import refuse_quiet_and_verbose
 from mintlang.cli.settings import typed
 from mintlang.cli.terminal import console, destination, refuse_overwriting
 from mintlang.diagnostics import split_lines
-from mintlang.migrate import leftovers, verifying
+from mintlang.migrate import leftovers, mintmt, verifying
 from mintlang.migrate.api import UnknownRule, rules, select
 from mintlang.migrate.applications import Migrated, UsageError, read
 from mintlang.migrate.citations import cite
-from mintlang.migrate.mintmt import REWRITES
 from mintlang.migrate.report import render_text, report
 from mintlang.migrate.verification import Verdict
 from mintlang.migrate.verification.report import Verified
@@ -118,7 +117,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
 
 
 def _list_rewrites(console: Console) -> None:
-    for rewrite in REWRITES:
+    for rewrite in mintmt.REWRITES:
         console.print(f"[bold]{rewrite.ID:<14}[/bold] {escape(rewrite.SUMMARY)}", highlight=False)
 
 

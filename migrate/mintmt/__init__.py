@@ -15,6 +15,14 @@ reads it, MT-1) and flagged for a person with the migrator's ``REM MIGRATE:`` li
 
 from __future__ import annotations
 
-from mintlang.migrate.mintmt.api import REWRITES, to_mintmt
+from typing import TYPE_CHECKING
+
+from mintlang.lazy import import_when_used
+
+if TYPE_CHECKING:
+    from mintlang.migrate.mintmt.api import REWRITES, to_mintmt
 
 __all__ = ["REWRITES", "to_mintmt"]
+
+# Imported when first used: a migration from Mint v3 (mint-migrate's default) does not load the rewrites.
+import_when_used(__name__, dict.fromkeys(__all__, "mintlang.migrate.mintmt.api"))

@@ -4,12 +4,26 @@ from __future__ import annotations
 
 from bisect import bisect_right
 from dataclasses import dataclass
-
-from mintlang.manual.sections import ENTRIES, SECTIONS
+from functools import cache
+from types import ModuleType
 
 GUIDES = {"v4": "Mint v4 guide", "v3": "Mint v3 guide"}
-_STARTS = {dialect: [row[0] for row in rows] for dialect, rows in SECTIONS.items()}
-_ENTRY_STARTS = {dialect: [line for line, _ in rows] for dialect, rows in ENTRIES.items()}
+
+
+@cache
+def _sections() -> ModuleType:
+    """The generated table of the guides' headings, loaded by the first citation: a migration that writes
+    none (most) and a tool's start-up do not read it."""
+    from mintlang.manual import sections  # noqa: PLC0415 - see the docstring
+
+    return sections
+
+
+@cache
+def _starts(dialect: str) -> tuple[list[int], list[int]]:
+    """The first lines of the sections and of the keyword entries of the ``dialect`` guide, for bisection."""
+    table = _sections()
+    return [row[0] for row in table.SECTIONS[dialect]], [line for line, _ in table.ENTRIES[dialect]]
 
 
 @dataclass(frozen=True, slots=True)
@@ -37,12 +51,15 @@ class Place:
 
 def place(dialect: str, line: int) -> Place:
     """The section (and keyword entry) that ``line`` of the ``dialect`` guide ("v4", "v3") is in."""
-    found = bisect_right(_STARTS[dialect], line) - 1
+    table = _sections()
+    section_starts, entry_starts = _starts(dialect)
+    found = bisect_right(section_starts, line) - 1
     if found < 0:
         return Place(dialect, "", "", "")
-    start, number, title = SECTIONS[dialect][found]
-    entry = bisect_right(_ENTRY_STARTS[dialect], line) - 1
-    named = ENTRIES[dialect][entry][1] if entry >= 0 and ENTRIES[dialect][entry][0] >= start else ""
+    start, number, title = table.SECTIONS[dialect][found]
+    entry = bisect_right(entry_starts, line) - 1
+    entries = table.ENTRIES[dialect]
+    named = entries[entry][1] if entry >= 0 and entries[entry][0] >= start else ""
     return Place(dialect, number, title, named)
 
 

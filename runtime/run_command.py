@@ -31,13 +31,11 @@ from mintlang.runtime.comms import PortUnavailable
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import StopReason
-from mintlang.runtime.outputs import OutputProblem, check_plot, check_report, check_trace
 from mintlang.runtime.report import as_json
 from mintlang.runtime.run import RunResult, run_source
-from mintlang.runtime.scenario import ScenarioFileError, all_held, expectations_pass, load_scenario, merge
+from mintlang.runtime.scenario import ScenarioFileError, all_held, expectations_pass, merge
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
 from mintlang.runtime.simulation import Interrupt, Limits
-from mintlang.runtime.trace import PlotUnavailable, Trace
 from mintlang.semantic.units import Unit
 from mintlang.settings import SettingsError, settings_for
 from mintlang.source import read_source
@@ -45,6 +43,8 @@ from mintlang.source import read_source
 if TYPE_CHECKING:
     from rich.console import Console
     from rich.progress import Progress, TaskID
+
+    from mintlang.runtime.trace import Trace
 
 _USAGE_ERROR = 2
 _FAILED = 1
@@ -139,7 +139,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     chosen = _axes_list(trace_axes, simulated)
     axes = chosen or tuple(range(simulated.axis_count))
     plotting = plot_path is not None
-    trace = Trace(axes, trace_path, plotting=plotting, chosen=chosen is not None) if tracing else None
+    trace = _trace(axes, trace_path, plotting=plotting, chosen=chosen is not None) if tracing else None
     termination = _Termination()
     recorders = _Recorders(trace, termination, errors, until_ms, progress=progress)
     stdout = _Stdout(live=realtime or host_port is not None)
@@ -351,7 +351,7 @@ class _Stdout:
 def _scenario(paths: tuple[Path, ...], controller: ControllerProfile, dialect: Dialect) -> Scenario:
     scenario = Scenario()
     for path in paths:
-        scenario = merge(scenario, load_scenario(path, controller, dialect))
+        scenario = merge(scenario, scenarios.load_scenario(path, controller, dialect))  # the TOML reader, when used
     return scenario
 
 
@@ -400,10 +400,23 @@ def _progress_bar(console: Console, until_ms: int | None) -> tuple[Progress, Tas
     return progress, progress.add_task("run", total=until_ms)
 
 
+def _trace(axes: tuple[int, ...], csv_path: Path | None, *, plotting: bool, chosen: bool) -> Trace:
+    """The trace of a run with --trace or --plot."""
+    from mintlang.runtime.trace import Trace  # noqa: PLC0415 - imported by such a run alone, as in _check_outputs
+
+    return Trace(axes, csv_path, plotting=plotting, chosen=chosen)
+
+
 def _check_outputs(
     trace_path: Path | None, plot_path: Path | None, report_path: Path | None, inputs: dict[Path, str]
 ) -> None:
     """Refuse, before the run, an output that cannot be written or would replace an input (path to its role)."""
+    if trace_path is None and plot_path is None and report_path is None:
+        return
+    # the checks and the trace's modules (csv, the plot's optional matplotlib): for a run that writes an output
+    from mintlang.runtime.outputs import OutputProblem, check_plot, check_report, check_trace  # noqa: PLC0415
+    from mintlang.runtime.trace import PlotUnavailable  # noqa: PLC0415
+
     try:
         if trace_path is not None:
             check_trace(trace_path, inputs)

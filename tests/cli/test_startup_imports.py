@@ -124,13 +124,16 @@ def _without_forced_colour() -> dict[str, str]:
 
 
 # What a run of one dialect does not use: the others' machines, the host port (--host-port), rich (colour,
-# the progress bar on a terminal, the table of expectations), the distribution's metadata (the plot's hint).
+# the progress bar on a terminal, the table of expectations), the trace (--trace, --plot), the scenario files'
+# reader (--stimulus, --expect), the distribution's metadata (the plot's hint).
 NOT_FOR_A_PLAIN_V4_RUN = (
     "rich",
     "mintlang.runtime.dialects.v3.machine",
     "mintlang.runtime.dialects.mintmt",
     "mintlang.runtime.comms.server",
     "mintlang.runtime.scenario.outcome_table",
+    "mintlang.runtime.trace",
+    "mintlang.runtime.scenario.files",
     "mintlang.extras",
     "socket",
     "importlib.metadata",

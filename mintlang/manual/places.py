@@ -5,25 +5,28 @@ from __future__ import annotations
 from bisect import bisect_right
 from dataclasses import dataclass
 from functools import cache
-from types import ModuleType
 
 GUIDES = {"v4": "Mint v4 guide", "v3": "Mint v3 guide"}
 
 
+@dataclass(frozen=True, slots=True)
+class _Guide:
+    """A guide's numbered headings and keyword entries, each with the line it starts on, for bisection."""
+
+    sections: tuple[tuple[int, str, str], ...]  # (first line, number, title)
+    entries: tuple[tuple[int, str], ...]  # (first line, keyword)
+    section_starts: tuple[int, ...]
+    entry_starts: tuple[int, ...]
+
+
 @cache
-def _sections() -> ModuleType:
-    """The generated table of the guides' headings, loaded by the first citation: a migration that writes
-    none (most) and a tool's start-up do not read it."""
-    from mintlang.manual import sections  # noqa: PLC0415 - see the docstring
+def _guide(dialect: str) -> _Guide:
+    """The ``dialect`` guide's headings, read from the generated table at the first citation: a migration that
+    cites nothing (most do) and a tool's start-up do not load it."""
+    from mintlang.manual.sections import ENTRIES, SECTIONS  # noqa: PLC0415 - see the docstring
 
-    return sections
-
-
-@cache
-def _starts(dialect: str) -> tuple[list[int], list[int]]:
-    """The first lines of the sections and of the keyword entries of the ``dialect`` guide, for bisection."""
-    table = _sections()
-    return [row[0] for row in table.SECTIONS[dialect]], [line for line, _ in table.ENTRIES[dialect]]
+    sections, entries = SECTIONS[dialect], ENTRIES[dialect]
+    return _Guide(sections, entries, tuple(row[0] for row in sections), tuple(line for line, _ in entries))
 
 
 @dataclass(frozen=True, slots=True)
@@ -51,15 +54,13 @@ class Place:
 
 def place(dialect: str, line: int) -> Place:
     """The section (and keyword entry) that ``line`` of the ``dialect`` guide ("v4", "v3") is in."""
-    table = _sections()
-    section_starts, entry_starts = _starts(dialect)
-    found = bisect_right(section_starts, line) - 1
+    guide = _guide(dialect)
+    found = bisect_right(guide.section_starts, line) - 1
     if found < 0:
         return Place(dialect, "", "", "")
-    start, number, title = table.SECTIONS[dialect][found]
-    entry = bisect_right(entry_starts, line) - 1
-    entries = table.ENTRIES[dialect]
-    named = entries[entry][1] if entry >= 0 and entries[entry][0] >= start else ""
+    start, number, title = guide.sections[found]
+    entry = bisect_right(guide.entry_starts, line) - 1
+    named = guide.entries[entry][1] if entry >= 0 and guide.entries[entry][0] >= start else ""
     return Place(dialect, number, title, named)
 
 

@@ -119,8 +119,12 @@ def test_a_text_report_into_a_pipe_loads_no_rich_unless_colour_is_forced(tmp_pat
     assert "rich" in heavy
 
 
-def _without_forced_colour() -> dict[str, str]:
-    return {key: value for key, value in os.environ.items() if key not in {"FORCE_COLOR", "TTY_COMPATIBLE"}}
+def run_into_a_pipe(tmp_path: Path, module: str, program: str, *options: str) -> tuple[str, list[str]]:
+    """``run_listing`` of the tool on a file holding ``program``, with no colour forced on the pipe."""
+    path = tmp_path / "program.mnt"
+    path.write_text(program, encoding="utf-8")
+    plain = {key: value for key, value in os.environ.items() if key not in {"FORCE_COLOR", "TTY_COMPATIBLE"}}
+    return run_listing(module, *options, str(path), env=plain)
 
 
 # What a run of one dialect does not use: the others' machines, the host port (--host-port), rich (colour,
@@ -141,20 +145,14 @@ NOT_FOR_A_PLAIN_V4_RUN = (
 
 
 def test_a_tiny_v4_run_into_a_pipe_loads_only_the_v4_machine(tmp_path: Path) -> None:
-    program = tmp_path / "tiny.mnt"
-    program.write_text('DIM count = 2\nPRINT "count: ", count * 3\n', encoding="utf-8")
-    output, imported = run_listing("mintlang.runtime.cli", str(program), env=_without_forced_colour())
+    output, imported = run_into_a_pipe(tmp_path, "mintlang.runtime.cli", 'DIM count = 2\nPRINT "count: ", count * 3\n')
     assert output == "count: 6"  # the line the program printed
     assert "mintlang.runtime.dialects.v4" in imported
     assert loaded(NOT_FOR_A_PLAIN_V4_RUN, imported) == []
 
 
 def test_a_v3_run_loads_the_v3_machine_and_not_mintmts(tmp_path: Path) -> None:
-    program = tmp_path / "tiny_v3.mnt"
-    program.write_text("PRINT 1\n", encoding="utf-8")
-    output, imported = run_listing(
-        "mintlang.runtime.cli", "--dialect", "v3", str(program), env=_without_forced_colour()
-    )
+    output, imported = run_into_a_pipe(tmp_path, "mintlang.runtime.cli", "PRINT 1\n", "--dialect", "v3")
     assert output.strip() == "1"
     assert loaded(("mintlang.runtime.dialects.v3.machine", "mintlang.runtime.dialects.mintmt"), imported) == [
         "mintlang.runtime.dialects.v3.machine"
@@ -179,9 +177,7 @@ NOT_FOR_A_PLAIN_V3_MIGRATION = (
 
 
 def test_a_tiny_v3_migration_into_a_pipe_loads_the_rules_and_not_the_simulator(tmp_path: Path) -> None:
-    program = tmp_path / "tiny_v3.mnt"
-    program.write_text("PRINT 1\n", encoding="utf-8")
-    output, imported = run_listing("mintlang.migrate.cli", str(program), env=_without_forced_colour())
+    output, imported = run_into_a_pipe(tmp_path, "mintlang.migrate.cli", "PRINT 1\n")
     assert "1 file: 0 changed, 1 unchanged" in output
     assert loaded(("lark", "mintlang.migrate.rules"), imported) == ["lark", "mintlang.migrate.rules"]
     assert loaded(NOT_FOR_A_PLAIN_V3_MIGRATION, imported) == []

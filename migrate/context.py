@@ -81,21 +81,30 @@ class LineTags:
     the macros defined above the line).
     Keyed by ``PlacedLine.content``, never by the shared syntax (see ``mintlang.caching``).
 
-    A line's tags are a tuple, each distinct tuple and tag held once: every version of every line
-    a run parsed keeps its tags, and a frozenset apiece took 15 times the program's size."""
+    A line's tags are a tuple, each distinct tuple and tag held once (a frozenset apiece took 15
+    times the program's size), and only those of the text last asked about are kept: the versions
+    of lines a pass replaced held 7 times the program's size by the end of a run."""
 
     def __init__(self) -> None:
         self._known: dict[Hashable, tuple[object, ...]] = {}
         self._tags: dict[object, object] = {}
         self._tuples: dict[tuple[object, ...], tuple[object, ...]] = {}
 
-    def of(self, line: n.PlacedLine) -> tuple[object, ...]:
-        """The distinct tags of ``line``."""
+    def of_text(self, lines: Iterable[n.PlacedLine]) -> list[tuple[object, ...]]:
+        """The distinct tags of each of ``lines``, the lines of a whole text; the tags of other
+        lines are forgotten."""
+        earlier, self._known = self._known, {}
+        return [self._of(line, earlier) for line in lines]
+
+    def _of(self, line: n.PlacedLine, earlier: dict[Hashable, tuple[object, ...]]) -> tuple[object, ...]:
         tags = self._known.get(line.content)
+        if tags is None:
+            tags = earlier.get(line.content)
         if tags is None:
             shared = self._tags.setdefault
             found = tuple([shared(tag, tag) for tag in _tags(line.syntax)])
-            tags = self._known[line.content] = self._tuples.setdefault(found, found)
+            tags = self._tuples.setdefault(found, found)
+        self._known[line.content] = tags
         return tags
 
 
@@ -385,12 +394,13 @@ class Context:
     def _tagged(self) -> dict[object, list[int]]:
         """Each tag with the positions in ``_order`` of the lines that have it, in order."""
         found: defaultdict[object, list[int]] = defaultdict(list)
-        tags = self.tags
+        tags = self.tags.of_text([line for file in self.compiled for line in file.document.placed])
         position = 0
         for file in self.compiled:
             expanded = file.expanded
-            for index, line in enumerate(file.document.placed):
-                for tag in (*tags.of(line), MACRO) if index in expanded else tags.of(line):
+            for index in range(len(file.document.placed)):
+                line_tags = tags[position]
+                for tag in (*line_tags, MACRO) if index in expanded else line_tags:
                     found[tag].append(position)
                 position += 1
         return dict(found)

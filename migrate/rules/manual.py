@@ -15,6 +15,7 @@ from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import ClassVar
 
 import mintlang
+from mintlang.caching import apart
 from mintlang.diagnostics import Diagnostic, Severity, Span
 from mintlang.dialect import Dialect
 from mintlang.migrate.context import LABEL, Context, FileView, constant_tag, per_pass, statement_tag
@@ -268,12 +269,13 @@ def v4_errors(context: Context) -> tuple[tuple[FileView, tuple[Diagnostic, ...]]
     """Each file with the errors ``mint check`` finds in it as Mint v4 on the target controller."""
     files = context.files
     configuration = files.get(Unit.CONFIGURATION)
-    analysis = mintlang.check_application(
-        files[Unit.PROGRAM].text,
-        dialect="v4",
-        controller=context.controller.controller,
-        config=configuration.text if configuration is not None else None,
-    )
+    with apart():  # the v4 reading's lines are of no use to the v3 readings of the run
+        analysis = mintlang.check_application(
+            files[Unit.PROGRAM].text,
+            dialect="v4",
+            controller=context.controller.controller,
+            config=configuration.text if configuration is not None else None,
+        )
     return _per_file(context, analysis)
 
 

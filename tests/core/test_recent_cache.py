@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from mintlang.caching import RecentCache
+from mintlang.caching import RecentCache, apart, keeping_what_it_uses
 
 
 def test_an_entry_asked_for_since_the_last_turn_survives_the_next() -> None:
@@ -23,3 +23,35 @@ def test_it_never_holds_more_than_two_generations() -> None:
         cache.put(key, key)
     assert len(cache) <= 200
     assert cache.get(9_999) == 9_999
+
+
+def test_a_block_apart_starts_empty_and_leaves_what_was_there_before() -> None:
+    cache: RecentCache[str, int] = RecentCache(size=100)
+    cache.put("before", 1)
+    with apart():
+        assert cache.get("before") is None
+        cache.put("during", 2)
+        assert cache.get("during") == 2
+    assert cache.get("before") == 1
+    assert cache.get("during") is None
+
+
+def test_a_cache_made_apart_is_empty_after_the_block() -> None:
+    with apart():
+        cache: RecentCache[str, int] = RecentCache(size=100)
+        cache.put("during", 2)
+    assert len(cache) == 0
+
+
+def test_after_an_action_a_cache_holds_only_what_the_action_looked_up_or_added() -> None:
+    cache: RecentCache[str, int] = RecentCache(size=100)
+    cache.put("asked", 1)
+    cache.put("stale", 2)
+
+    def action() -> int | None:
+        cache.put("added", 3)
+        return cache.get("asked")
+
+    assert keeping_what_it_uses(action) == 1
+    assert cache.get("stale") is None
+    assert (cache.get("asked"), cache.get("added")) == (1, 3)

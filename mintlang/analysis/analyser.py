@@ -11,11 +11,12 @@ checked again against the memory (``rules.memory``).
 
 from __future__ import annotations
 
+from array import array
 from bisect import bisect_left
-from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping
+from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cache
-from itertools import chain
+from itertools import chain, repeat
 from operator import attrgetter
 
 from mintlang.allocation import without_collector
@@ -33,6 +34,7 @@ from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.change import Change
+from mintlang.syntax.packed import PlacedDiagnostics
 from mintlang.syntax.parser import Document
 
 
@@ -50,8 +52,8 @@ class Found:
 @dataclass(frozen=True, slots=True)
 class Analysis:
     model: SemanticModel
-    program: tuple[Diagnostic, ...]
-    configuration: tuple[Diagnostic, ...]
+    program: Sequence[Diagnostic]  # ``PlacedDiagnostics``: each made when read
+    configuration: Sequence[Diagnostic]
     found: Found
 
 
@@ -117,11 +119,7 @@ def _findings_of_line(
 
 
 def _in_position_order(diagnostics: Iterable[Diagnostic]) -> list[Diagnostic]:
-    """The diagnostics by span, then by code; stable, so equals keep the order they were found in.
-
-    Two stable sorts on keys the diagnostics hold, rather than one on a (span, code) tuple made
-    for each: on a file of broken lines those tuples outweighed the rest of the sort.
-    """
+    """The diagnostics by span, then by code; stable, so equals keep the order they were found in."""
     ordered = list(diagnostics)
     ordered.sort(key=_CODE)  # in place: one list, where sorted(sorted(...)) held three on a file of errors
     ordered.sort(key=_SPAN)
@@ -132,19 +130,46 @@ _CODE = attrgetter("code")
 _SPAN = attrgetter("span")
 
 
-def _first_of_each(diagnostics: Iterable[Diagnostic]) -> list[Diagnostic]:
-    """The diagnostics in position order, the first found of each code at each span only.
+def _same_place(diagnostic: Diagnostic, origin: int, other: Diagnostic, other_origin: int) -> bool:
+    span, other_span = diagnostic.span, other.span
+    return span.start + origin == other_span.start + other_origin and span.end + origin == other_span.end + other_origin
 
-    Sorted first, so equal ones are neighbours: no set of every position, which took more
-    memory than the diagnostics themselves on a file of broken lines.
+
+def _with_origins(diagnostics: Sequence[Diagnostic]) -> Iterator[tuple[Diagnostic, int]]:
+    """Each diagnostic as found, with the offset that places it in its file (none: it is placed)."""
+    if isinstance(diagnostics, PlacedDiagnostics):
+        return diagnostics.pairs()
+    return zip(diagnostics, repeat(0))
+
+
+def _first_of_each(found: Iterable[tuple[Diagnostic, int]]) -> PlacedDiagnostics:
+    """The diagnostics in position order (by span, then by code; stable, so equals keep the order they
+    were found in), the first found of each code at each span only.
+
+    They stay as found, each with its offset, and are placed when read: on a file of broken
+    lines, shifted copies of them all were the largest part of a check's memory. Their order
+    comes from stable sorts of their indices on one number or code each, rather than one sort
+    on a tuple made for each; equal ones end up neighbours, so no set of every place is needed.
     """
-    distinct: list[Diagnostic] = []
+    diagnostics: list[Diagnostic] = []
+    origins = array("q")
+    for diagnostic, origin in found:
+        diagnostics.append(diagnostic)
+        origins.append(origin)
+    order = sorted(range(len(diagnostics)), key=lambda index: diagnostics[index].code)
+    order.sort(key=lambda index: diagnostics[index].span.end + origins[index])
+    order.sort(key=lambda index: diagnostics[index].span.start + origins[index])
+    kept: list[Diagnostic] = []
+    kept_origins = array("q")
     last: Diagnostic | None = None
-    for diagnostic in _in_position_order(diagnostics):
-        if last is None or diagnostic.span != last.span or diagnostic.code != last.code:
-            distinct.append(diagnostic)
-            last = diagnostic
-    return distinct
+    last_origin = 0
+    for index in order:
+        diagnostic, origin = diagnostics[index], origins[index]
+        if last is None or diagnostic.code != last.code or not _same_place(diagnostic, origin, last, last_origin):
+            kept.append(diagnostic)
+            kept_origins.append(origin)
+            last, last_origin = diagnostic, origin
+    return PlacedDiagnostics(tuple(kept), kept_origins)
 
 
 @without_collector
@@ -169,19 +194,20 @@ def analyse(
     def selected(code: str) -> bool:
         return _selected(code, select, ignore)
 
-    per_unit: dict[Unit, list[Diagnostic]] = {Unit.CONFIGURATION: []}
+    per_unit: dict[Unit, Sequence[Diagnostic]] = {Unit.CONFIGURATION: ()}
     for unit, document in model.documents():
-        everything = chain(
-            document.diagnostics,
+        placed = chain(
+            document.lexer_issues,
             model.structures[unit].diagnostics,
             found.in_lines[unit],
             (diagnostic for _, diagnostic in found.whole[unit]),
             (finding.diagnostic for finding in memory.findings(model, found.arrays) if finding.unit is unit),
         )
-        distinct = _first_of_each(diagnostic for diagnostic in everything if selected(diagnostic.code))
+        everything = chain(_with_origins(document.parse_issues), zip(placed, repeat(0)))
+        distinct = _first_of_each(pair for pair in everything if selected(pair[0].code))
         kept = suppress(distinct, found.directives[unit], selected)
-        per_unit[unit] = distinct if kept is distinct else _in_position_order(kept)
-    return Analysis(model, tuple(per_unit[Unit.PROGRAM]), tuple(per_unit[Unit.CONFIGURATION]), found)
+        per_unit[unit] = distinct if kept is distinct else tuple(_in_position_order(kept))
+    return Analysis(model, per_unit[Unit.PROGRAM], per_unit[Unit.CONFIGURATION], found)
 
 
 def _find(model: SemanticModel) -> Found:

@@ -116,10 +116,10 @@ def _mentioning(source: str, offsets: Sequence[int], start: int, end: int) -> It
 
 
 def suppress(
-    diagnostics: list[Diagnostic], found: Sequence[Directive], selected: Callable[[str], bool]
-) -> list[Diagnostic]:
+    diagnostics: Sequence[Diagnostic], found: Sequence[Directive], selected: Callable[[str], bool]
+) -> Sequence[Diagnostic]:
     """``diagnostics`` without those the suppression comments ``found`` in their file silence, and the
-    unused suppressions; the very list given when the file has no suppression comment.
+    unused suppressions; the very sequence given when the file has no suppression comment.
 
     A diagnostic is on the line its span starts on. ``selected`` says whether a code is
     checked at all: a suppression of a code not checked silences nothing and is reported

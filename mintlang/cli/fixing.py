@@ -104,9 +104,11 @@ def fixed_summary(outcome: Outcome, *, diff: bool) -> str:
 
 def fixable_summary(reports: Sequence[FileReport]) -> str | None:
     """How many of the findings ``--fix`` would fix, and how many more ``--unsafe-fixes``; None if none."""
-    diagnostics = [diagnostic for report in reports for diagnostic in report.diagnostics]
-    safe = sum(automatic_fix(d, unsafe=False) is not None for d in diagnostics)
-    unsafe = sum(automatic_fix(d, unsafe=True) is not None for d in diagnostics) - safe
+    safe = unsafe = 0  # counted in one pass: a report's diagnostics are made as they are read
+    for diagnostic in (diagnostic for report in reports for diagnostic in report.diagnostics):
+        safe += automatic_fix(diagnostic, unsafe=False) is not None
+        unsafe += automatic_fix(diagnostic, unsafe=True) is not None
+    unsafe -= safe
     if not safe and not unsafe:
         return None
     more = f" ({unsafe} more with --unsafe-fixes)" if unsafe else ""

@@ -45,7 +45,7 @@ from mintlang.syntax.lines import (
     take_macro_body,
 )
 from mintlang.syntax.nodes import identity
-from mintlang.syntax.packed import PackedLines
+from mintlang.syntax.packed import PackedLines, PlacedDiagnostics
 from mintlang.syntax.spans import span as shared_span
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, Token, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
@@ -73,7 +73,7 @@ class Document:
     physical: PhysicalLines  # every physical line, lexed, with its offset
     placed: Sequence[n.PlacedLine]  # ``PackedLines``, or ``MovedLines`` after a re-parse
     lexer_issues: tuple[Diagnostic, ...]  # in order
-    parse_issues: tuple[Diagnostic, ...]  # in order
+    parse_issues: Sequence[Diagnostic]  # in order: ``PlacedDiagnostics``, or a tuple after a re-parse
     macros: Mapping[str, MacroDefinition]
     definitions: tuple[MacroDefinition, ...]  # the macros this file defines, in order
     expansions: tuple[Expansion, ...]
@@ -84,7 +84,7 @@ class Document:
     @cached_property
     def diagnostics(self) -> tuple[Diagnostic, ...]:
         """What the lexer and the parser found."""
-        return self.lexer_issues + self.parse_issues
+        return (*self.lexer_issues, *self.parse_issues)
 
     @cached_property
     def lines(self) -> tuple[n.Line, ...]:
@@ -161,13 +161,18 @@ class PlacedLines:
     numbers: array[int] = field(default_factory=lambda: array("q"))
     syntaxes: list[n.LineSyntax] = field(default_factory=list)
     contents: list[Hashable] = field(default_factory=list)
-    diagnostics: list[Diagnostic] = field(default_factory=list)
+    found: list[Diagnostic] = field(default_factory=list)  # what parsing found, at its line's offsets
+    found_at: array[int] = field(default_factory=lambda: array("q"))  # the offset of each one's line
     definitions: list[MacroDefinition] = field(default_factory=list)
     expansions: list[Expansion] = field(default_factory=list)
 
     def placed(self) -> PackedLines:
         """The lines parsed so far, at their places."""
         return PackedLines(self.origins, self.numbers, tuple(self.syntaxes), tuple(self.contents))
+
+    def issues(self) -> PlacedDiagnostics:
+        """What parsing the lines found so far, at their places."""
+        return PlacedDiagnostics(tuple(self.found), self.found_at)
 
     def parse(self, groups: Iterable[LineGroup], context: ParseContext) -> None:
         """Parse ``groups`` in order, each logical line once per text and macro context."""
@@ -188,7 +193,8 @@ class PlacedLines:
             if parsed.expansions:
                 self.expansions.extend(expansion.shifted(origin) for expansion in parsed.expansions)
             if parsed.diagnostics:
-                self.diagnostics.extend(diagnostic.shifted(origin) for diagnostic in parsed.diagnostics)
+                self.found.extend(parsed.diagnostics)
+                self.found_at.extend([origin] * len(parsed.diagnostics))
             self.origins.append(origin)
             self.numbers.append(group.number)
             self.syntaxes.append(parsed.syntax)
@@ -221,7 +227,7 @@ def parse(
         lexed.lines,
         lines.placed(),
         lexed.issues,
-        tuple(lines.diagnostics),
+        lines.issues(),
         lines.visible,
         tuple(lines.definitions),
         tuple(lines.expansions),

@@ -149,7 +149,7 @@ class _Reparse:
             physical,
             MovedLines.spliced(placed, (first_line, old_end_line), lines.placed(), shift, line_shift),
             window.spliced(previous.lexer_issues, lexer_issues),
-            change.spliced(previous.parse_issues, lines.diagnostics),
+            change.spliced(previous.parse_issues, lines.issues()),
             visible,
             definitions,
             change.spliced(previous.expansions, lines.expansions),

@@ -6,7 +6,9 @@ into a variable, never an array element (the FAQ, 000:18430-18435): a syntax
 error, 2003, since its format takes a variable (000:12212). COMMS is an array Mint
 defines (000:8287-8293): 99 general elements, and 100 to 255 mapped onto the
 controller's parameters (000:2566-2584); an element outside 1 to 255, on this node
-or another (``COMMS(5,10)``, 000:2556-2559), is an invalid index too.
+or another (``COMMS(5,10)``, 000:2556-2559), is an invalid index too. Most of the
+mapped locations can only be read (000:2586-2650): a v4 write to one is run-time error
+45 (000:18676-18678).
 """
 
 from __future__ import annotations
@@ -16,12 +18,27 @@ from collections.abc import Iterator
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.rules.functions import calls_in
 from mintlang.analysis.traversal import Facts, LineScope
+from mintlang.dialect import Dialect
 from mintlang.semantic.constants import constant_integer, constant_value
 from mintlang.semantic.symbols import SymbolKind
 from mintlang.syntax import nodes as n
 
 _NUMBERS = (n.Number, n.CharConstant, n.ConstantRef)
 _COMMS_ELEMENTS = range(1, 256)
+_AXIS_ELEMENTS, _PER_AXIS = range(100, 220), 15  # 15 locations for each of eight axes, then I/O and the rest
+_AXIS_READ_ONLY = ("POS", "VEL", "AXISMODE", "AXISERROR", "DAC", "ENCODER", "IDLE", "FOLERROR")  # offsets 0-7
+_IO_START = 220
+_IO_READ_ONLY = {  # by offset from 220; 2 (OUT) may be written, the others are reserved
+    0: "IN",
+    **{4 + channel: f"ADC.{channel}" for channel in range(8)},
+    12: "ERR",
+    13: "ERL",
+    14: "ERRAXIS",
+    15: "the execution status",
+    16: "the buffer that runs",
+    17: "the line number that runs",
+    19: "FIRMWAREREVISION",
+}
 
 
 def _is_number(expression: n.Expression) -> bool:
@@ -34,6 +51,7 @@ def _is_number(expression: n.Expression) -> bool:
 def each_line(scope: LineScope) -> Iterator[Finding]:
     """Sizes and values of DIM written as expressions; INPUT into an element; COMMS elements."""
     yield from _comms_elements(scope)
+    yield from _comms_read_only(scope)
     for statement in scope.facts.statements:
         if isinstance(statement, n.Input) and isinstance(statement.target, n.ElementRef):
             name = statement.target.name.text
@@ -61,6 +79,32 @@ def _comms_elements(scope: LineScope) -> Iterator[Finding]:
         if index is not None and index not in _COMMS_ELEMENTS:
             detail = f"COMMS element {index} does not exist: the Comms array's elements are 1 to 255"
             yield Finding(scope.unit, mint_error(2016, element.span, detail))
+
+
+def _comms_read_only(scope: LineScope) -> Iterator[Finding]:
+    """``COMMS(element) = value`` where v4 maps the element onto a parameter it only reads."""
+    if scope.dialect is not Dialect.V4:
+        return
+    for statement in scope.facts.statements:
+        if type(statement) is not n.FunctionStatement or statement.values is None:
+            continue
+        call = statement.call
+        if call.function != "COMMS" or not call.arguments:
+            continue
+        element = call.arguments[-1]
+        index = constant_integer(element, scope.dialect)
+        held = _read_only_parameter(index) if index is not None else None
+        if held is not None:
+            detail = f"COMMS element {index} is {held}, which can only be read"
+            yield Finding(scope.unit, mint_error(45, element.span, detail))
+
+
+def _read_only_parameter(element: int) -> str | None:
+    """What the read-only COMMS location ``element`` holds; None for one that may be written, or is reserved."""
+    if element in _AXIS_ELEMENTS:
+        axis, offset = divmod(element - _AXIS_ELEMENTS.start, _PER_AXIS)
+        return f"{_AXIS_READ_ONLY[offset]} of axis {axis}" if offset < len(_AXIS_READ_ONLY) else None
+    return _IO_READ_ONLY.get(element - _IO_START)
 
 
 def _size_problems(scope: LineScope, statement: n.Dim) -> Iterator[Finding]:

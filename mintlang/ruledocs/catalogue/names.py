@@ -88,6 +88,21 @@ GROUP = Group(
             safety=FixSafety.NONE,
         ),
         RuleDoc(
+            45,
+            catches="A write to a COMMS element that the controller maps onto a parameter it only reads: "
+            "an axis's position, velocity, mode, errors, demand, encoder, idle flag or following error "
+            "(`COMMS(100)` to `COMMS(107)` for axis 0, 15 elements an axis), the digital inputs, the "
+            "analog channels, the error data, the status words and the build number.",
+            why="Those elements report the controller's state to a host; the write fails when the line runs.",
+            example=Example(
+                before="COMMS(100) = 0\n",
+                after="COMMS(1) = 0\n",
+            ),
+            manual=("v4:2566", "v4:18676"),
+            fix="Use one of the 99 general elements, or write the parameter's own keyword where it can be written.",
+            safety=FixSafety.NONE,
+        ),
+        RuleDoc(
             "W103",
             catches="A variable declared with DIM and never used. A routine made only of DIMs is the "
             "guide's way to keep variables between runs, and is not reported.",

@@ -27,6 +27,11 @@ _V3 = "Mint v3"
 
 # Replacements that read other units: renaming alone would change every value computed from them.
 _OTHER_UNITS = {"ADC": "ADC reads percent of the input's range where v3 read counts"}
+# Old keywords whose listed replacement does another job: renaming would compile and do something else.
+_OTHER_JOB = {
+    "PULSE": "v3's PULSE followed the pulse input, STEPPERIO drives pulse outputs: follow an input with "
+    "FOLLOW on a MASTERSOURCE (mint-migrate marks it for review)"
+}
 
 
 @dataclass(frozen=True, slots=True)
@@ -58,6 +63,8 @@ def successor(word: str, controller: ControllerProfile) -> Successor | None:
         if replacement is not None and replacement.controllers and controller.controller not in replacement.controllers:
             lacking = f"{detail}, which {controller.title} lacks (mint-migrate knows the alternatives)"
             return Successor(lacking, None, whole)
+        if rename.old in _OTHER_JOB:
+            return Successor(f"{detail}; {_OTHER_JOB[rename.old]}", None, whole)
         if new in _OTHER_UNITS:
             return Successor(f"{detail}; {_OTHER_UNITS[new]} (mint-migrate converts)", None, whole)
         return Successor(detail, new, whole)

@@ -72,13 +72,10 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
 
 def _comms_elements(scope: LineScope) -> Iterator[Finding]:
     for call in calls_in(scope.facts.statements):
-        if call.function != "COMMS" or not call.arguments:
-            continue
-        element = call.arguments[-1]
-        index = constant_integer(element, scope.dialect)
-        if index is not None and index not in _COMMS_ELEMENTS:
-            detail = f"COMMS element {index} does not exist: the Comms array's elements are 1 to 255"
-            yield Finding(scope.unit, mint_error(2016, element.span, detail))
+        element = _comms_element(call, scope)
+        if element is not None and element[1] not in _COMMS_ELEMENTS:
+            detail = f"COMMS element {element[1]} does not exist: the Comms array's elements are 1 to 255"
+            yield Finding(scope.unit, mint_error(2016, element[0].span, detail))
 
 
 def _comms_read_only(scope: LineScope) -> Iterator[Finding]:
@@ -88,15 +85,20 @@ def _comms_read_only(scope: LineScope) -> Iterator[Finding]:
     for statement in scope.facts.statements:
         if type(statement) is not n.FunctionStatement or statement.values is None:
             continue
-        call = statement.call
-        if call.function != "COMMS" or not call.arguments:
-            continue
-        element = call.arguments[-1]
-        index = constant_integer(element, scope.dialect)
-        held = _read_only_parameter(index) if index is not None else None
-        if held is not None:
-            detail = f"COMMS element {index} is {held}, which can only be read"
-            yield Finding(scope.unit, mint_error(45, element.span, detail))
+        element = _comms_element(statement.call, scope)
+        held = _read_only_parameter(element[1]) if element is not None else None
+        if element is not None and held is not None:
+            detail = f"COMMS element {element[1]} is {held}, which can only be read"
+            yield Finding(scope.unit, mint_error(45, element[0].span, detail))
+
+
+def _comms_element(call: n.Call, scope: LineScope) -> tuple[n.Expression, int] | None:
+    """The element a COMMS call names (its last value, after a node), where it is a known whole number."""
+    if call.function != "COMMS" or not call.arguments:
+        return None
+    element = call.arguments[-1]
+    index = constant_integer(element, scope.dialect)
+    return (element, index) if index is not None else None
 
 
 def _read_only_parameter(element: int) -> str | None:

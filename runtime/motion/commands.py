@@ -425,7 +425,7 @@ class Motion:
             raise MintError(WRONG_CONFIGURATION, axis.number, "DAC can be written only when CONFIG is _cfOFF")
         if not -100.0 <= value <= 100.0:
             raise MintError(3, axis.number, f"DAC = {value:g}")
-        axis.open_loop_dac = value
+        axis.open_loop_dac = axis.dac = value  # the output changes at once, before the next servo tick
 
     def _validate_axes(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         self.addressed(channels)

@@ -117,6 +117,19 @@ class TestStalledAxisServoes:
         assert simulate(source).axes[0].dac == 25.0
 
 
+class TestDacWrittenOnAnAxisConfiguredOff:
+    """000:8756-8762: DAC.0 = -50 on an axis configured off is -5 V out, and DAC reads back what the
+    output is on any axis (SL-11), on the default ideal plant and drive, with or without ticks between."""
+
+    def test_reads_back_at_once(self) -> None:
+        result = simulate("CONFIG.0 = _cfOFF : DAC.0 = -50 : PRINT DAC.0\n")
+        assert result.terminal == "-50\n"
+        assert result.axes[0].dac == -50.0
+
+    def test_holds_while_the_program_waits(self) -> None:
+        assert simulate("CONFIG.0 = _cfOFF : DAC.0 = -50\nWAIT = 5\nPRINT DAC.0\n").terminal == "-50\n"
+
+
 def test_velocity_plant_turns_at_k_counts_per_second_per_percent() -> None:
     plant = VelocityPlant(1000.0)
     readings = [plant.step(None, 10.0, TICK) for _ in range(1000)]

@@ -8,6 +8,8 @@ program can go on (000:4616-4619, EV-14 and EV-19 of the runtime spec).
 
 from __future__ import annotations
 
+import pytest
+
 from mintlang.runtime.interpreter.vm import StopReason
 from tests.runtime.running import simulate
 
@@ -58,6 +60,19 @@ def test_a_keyword_alone_is_error_2005_when_its_line_runs() -> None:
     # 000:18930-18934: SPEED : REM ... is the manual's example of 2005
     result = simulate("SPEED : REM ** Axis Slew Speed **\n")
     assert (result.stop.reason, result.err, result.erl) == (StopReason.ERROR, 2005, 1)
+
+
+@pytest.mark.parametrize("statement", ["SPEED.0 =", "MOVEA =", "MOVER = ,", "JOG =", "OUT =", "COMMS(1) ="])
+def test_a_keyword_given_no_value_after_its_equals_is_error_2005_when_its_line_runs(statement: str) -> None:
+    # 000:18930-18934: the keyword is neither read nor given a value; every place of the list is empty
+    result = simulate(f'PRINT "before"\n{statement}\nPRINT "never"\n')
+    assert (result.stop.reason, result.err, result.erl) == (StopReason.ERROR, 2005, 2)
+    assert result.terminal == "before\nR2005: PROGRAM No expression [line 2]\n"
+
+
+def test_a_skipped_place_beside_a_value_is_no_error() -> None:
+    # 000:632-641: SPEED = ,,20 writes axis 2 only
+    assert simulate("SPEED = ,,20\nPRINT SPEED.2\n").terminal == "20\n"
 
 
 def test_an_axis_named_twice_in_a_write_is_error_2018() -> None:

@@ -102,7 +102,8 @@ class DigitalIO:
             ("INPUTPOSTRIGGER", "positive_trigger"),
             ("INPUTNEGTRIGGER", "negative_trigger"),
         ):
-            table.register(name, read=self._bank_reader(attribute), write=per_channel(self._bank_writer(attribute)))
+            writer = self._bank_writer(attribute, edges_only=attribute.endswith("_trigger"))
+            table.register(name, read=self._bank_reader(attribute), write=per_channel(writer))
         table.register("OUT", read=self._read_out, write=per_channel(self._write_out))
         active_level = ranged("OUTPUTACTIVELEVEL", table.controller, self._write_oal)
         table.register(
@@ -143,16 +144,21 @@ class DigitalIO:
 
         return read
 
-    def _bank_writer(self, attribute: str) -> Callable[[int | None, float], None]:
+    def _bank_writer(self, attribute: str, *, edges_only: bool = False) -> Callable[[int | None, float], None]:
+        """A writer of one bit per input; ``edges_only``: the bit of an input INPUTMODE does not make edge
+        triggered is left as it is, since setting it "will have no effect" (000:12424-12425, 12478-12479)."""
+
         def write(channel: int | None, value: float) -> None:
+            current = getattr(self, attribute)
             if channel is None:
                 if value != int(value) or not 0 <= value <= self.all_inputs:
                     raise MintError(OUT_OF_RANGE, detail=f"one bit per input: 0 to {self.all_inputs}")
-                setattr(self, attribute, int(value))
-                return
-            bit = 1 << _check(channel, self.inputs, INVALID_INPUT)
-            current = getattr(self, attribute)
-            setattr(self, attribute, current | bit if value else current & ~bit)
+                wanted = int(value)
+            else:
+                bit = 1 << _check(channel, self.inputs, INVALID_INPUT)
+                wanted = current | bit if value else current & ~bit
+            settable = self.edge_mode if edges_only else self.all_inputs
+            setattr(self, attribute, (current & ~settable) | (wanted & settable))
 
         return write
 

@@ -17,6 +17,25 @@ PRINT IN.2, INSTATE.2, IN.2
     assert simulate(source).terminal == "100\n"
 
 
+def test_a_trigger_bit_of_an_input_not_edge_triggered_is_not_set() -> None:
+    # 000:12424-12425: setting it "will have no effect": it reads back 0 and INPUTMODE set later does not
+    # arm it, so the falling edge at 20 ms is not latched; INPUTMODE = 0x00F00F keeps inputs 0-3 and 12-15
+    source = """REM @sim input 0 1 at 10
+REM @sim input 0 0 at 20
+INPUTNEGTRIGGER = 1
+INPUTNEGTRIGGER.1 = 1
+PRINT INPUTNEGTRIGGER
+INPUTMODE = 1
+WAIT = 50
+PRINT IN.0
+INPUTMODE = 0x00F00F
+INPUTNEGTRIGGER = 0xFFFF
+INPUTPOSTRIGGER = 0x5FFA
+PRINT INPUTNEGTRIGGER, " ", INPUTPOSTRIGGER
+"""
+    assert simulate(source).terminal == "0\n0\n61455 20490\n"
+
+
 def test_a_level_input_reads_active_while_its_level_is_and_active_low_inverts_it() -> None:
     source = """REM @sim input 1 1 at 10
 WAIT = 20

@@ -27,3 +27,14 @@ def test_the_message_shows_the_value_in_full(controller: str, value: str, shown:
 
 def test_the_error_points_at_the_value() -> None:
     assert placed_codes("TIME = 0\nTIME = 16777216\n") == [("E0003", 2, 8)]
+
+
+@pytest.mark.parametrize("value", ["0", "-1"])
+def test_scale_takes_only_a_positive_value(value: str) -> None:
+    # 000:532-537: SCALE only accepts a positive value (its table prints 0 ≤ x; mint-run stops on 0 with R0003)
+    (diagnostic,) = mintlang.check(f"SCALE = {value}\n")
+    assert diagnostic.code == "E0003" and "SCALE" in diagnostic.message
+
+
+def test_a_positive_scale_is_in_range() -> None:
+    assert mintlang.check("SCALE = 500, 500\n") == []

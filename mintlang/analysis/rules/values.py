@@ -17,6 +17,10 @@ from mintlang.keyworddb.model import ValueRange
 from mintlang.semantic.constants import constant_value
 from mintlang.syntax import nodes as n
 
+# The guide's text takes only a positive value where the attributes table prints 0 ≤ x:
+# SCALE (000:532-537), the factor every scaled value is divided by.
+POSITIVE_ONLY = frozenset({"SCALE"})
+
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
     db = database()
@@ -37,7 +41,9 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
                 continue
             # Whole-number ranges are not enforced: the manual prints "0 ≤ x ≤ 10000" for KDERIV
             # and then writes KDERIV = 1.5 in its example.
-            if not (_scaled_can_hold(limits, number) if attributes.scaled else limits.holds(number)):
+            if use.keyword.keyword in POSITIVE_ONLY and number <= 0:
+                yield Finding(use.unit, mint_error(3, value.span, f"{use.keyword.keyword} takes only a positive value"))
+            elif not (_scaled_can_hold(limits, number) if attributes.scaled else limits.holds(number)):
                 detail = f"{number:.15g} is outside the range of {use.keyword.keyword} ({limits.text})"
                 if attributes.scaled:
                     detail += " whatever the scale factor"

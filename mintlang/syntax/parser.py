@@ -27,6 +27,7 @@ from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import mint_error
 from mintlang.diagnostics import Diagnostic, Fix, LineIndex, LinesAndEnd
 from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller
 from mintlang.syntax import nodes as n
 from mintlang.syntax.change import Change
@@ -431,10 +432,20 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) ->
     if not at_end and kinds[index] in _KEYWORD_KINDS and "NAME" in expected:
         word = line.texts[index]
         role = "a label" if index > begin and kinds[index - 1] in (_K.GOSUB, _K.GOTO) else "a variable"
+        read = index > begin and kinds[index - 1] not in (_K.GOSUB, _K.GOTO, _K.FOR)
+        if read and _only_a_command(word):
+            return _error(2003, span, f"{word.upper()} is a command and gives no value")  # PRINT AXES, as PRINT GO
         return _error(2006, span, f"'{word}' is a reserved keyword and cannot be used as {role}")
     if line.expanded[index if not at_end else end - 1]:
         return _error(2003, span, f"unexpected {_unexpected(found)} in the text of a macro")
     return _error(2003, span, f"unexpected {_unexpected(found)}")
+
+
+def _only_a_command(word: str) -> bool:
+    """Whether ``word`` is a keyword no controller reads, only commands (AXES, 000:6883-6910)."""
+    keyword = database().keywords.get(word.upper())
+    rows = keyword.attributes if keyword is not None else ()
+    return bool(rows) and all(row.command and not row.read for row in rows)
 
 
 def _unexpected(found: str) -> str:

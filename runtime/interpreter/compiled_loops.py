@@ -30,6 +30,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
+from mintlang.runtime import numbers
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter import generated
 from mintlang.runtime.interpreter.expressions import ExpressionCompiler
@@ -40,6 +41,8 @@ from mintlang.semantic.blocks import Block, BlockKind, Place
 from mintlang.syntax import nodes as n
 
 _LOOPS = frozenset({BlockKind.FOR, BlockKind.WHILE, BlockKind.REPEAT, BlockKind.LOOP})
+_EXACT = 2.0**24  # every integer up to this is a binary32
+Passes = Callable[[int, Loop], int]  # (budget, the loop's stack entry) -> statements run
 _INDENT = "    "
 
 
@@ -54,8 +57,9 @@ class CompiledLoop:
     vm: Interpreter
     opener: int
     operations: list[Operation]  # of the loop's first statement to its closer, as compiled
-    upwards: Callable[[int, Loop], int]  # (budget, the loop's stack entry) -> statements run
-    downwards: Callable[[int, Loop], int]  # the same for a FOR loop's negative step
+    upwards: Passes
+    downwards: Passes  # a FOR loop's, for a negative step
+    counting: tuple[Passes, Passes] | None = None  # a FOR loop's upwards and downwards while exactly counting
 
     def __call__(self, budget: int) -> int:
         """Run whole passes within ``budget`` statements; how many ran (0: the interpreter runs the next one)."""
@@ -70,7 +74,16 @@ class CompiledLoop:
         if vm.operations[entry : entry + len(self.operations)] != self.operations:
             return 0
         loop = loops[-1]
-        return (self.upwards if loop.step >= 0 else self.downwards)(budget, loop)
+        step = loop.step
+        if self.counting is not None and _counts_exactly(vm.scalars[loop.slot], step, loop.end):
+            return self.counting[step < 0](budget, loop)
+        return (self.upwards if step >= 0 else self.downwards)(budget, loop)
+
+
+def _counts_exactly(value: float, step: float, end: float) -> bool:
+    """Whether every value a FOR variable takes from ``value`` on (it moves by ``step`` towards ``end``, and
+    one step past it) is an integer of at most 2**24, which binary32 holds exactly: no sum needs rounding."""
+    return value % 1 == 0 and step % 1 == 0 and max(abs(value), abs(end)) + abs(step) <= _EXACT
 
 
 def attach(
@@ -92,8 +105,22 @@ def attach(
             upwards, downwards = _Writer(vm, statements, expressions, opener, closer).passes()
         except (_Unsupported, MintError, NotSimulated):
             continue
+        counting = _counting(vm, statements, expressions, opener, closer)
         operations = vm.operations[opener + 1 : closer + 1]
-        vm.compiled_loops[opener + 1] = CompiledLoop(vm, opener, operations, upwards, downwards)
+        vm.compiled_loops[opener + 1] = CompiledLoop(vm, opener, operations, upwards, downwards, counting)
+
+
+def _counting(
+    vm: Interpreter, statements: Sequence[n.Statement], expressions: ExpressionCompiler, opener: int, closer: int
+) -> tuple[Passes, Passes] | None:
+    """A binary32 FOR loop's passes that add the step without rounding, for when it counts exactly (the body
+    leaves the variable to NEXT)."""
+    if type(statements[opener]) is not n.For or expressions.semantics.binary["+"] is not numbers.add:
+        return None
+    try:
+        return _Writer(vm, statements, expressions, opener, closer, counting=True).passes()
+    except _Unsupported:
+        return None
 
 
 def _binary32() -> memoryview:
@@ -180,9 +207,13 @@ class _Writer:
         expressions: ExpressionCompiler,
         opener: int,
         closer: int,
+        *,
+        counting: bool = False,
     ) -> None:
         self.vm = vm
         self.statements = statements
+        self.counting = counting  # a FOR loop whose variable is added its step without rounding
+        self.assigned: set[int] = set()  # the slots the body assigns
         self.expressions = expressions
         self.opener = opener
         self.closer = closer
@@ -194,7 +225,7 @@ class _Writer:
         self.longest = closer + 1 - (opener + 1)  # each statement runs at most once a pass: nothing jumps back
         self.varying = any(type(statements[pc]) is n.IfThen for pc in range(opener + 1, closer))
 
-    def passes(self) -> tuple[Callable[[int, Loop], int], Callable[[int, Loop], int]]:
+    def passes(self) -> tuple[Passes, Passes]:
         """The generated passes for a positive step (or no step) and for a negative one."""
         depth = 3  # def, try, while or for
         pending = self._block(self.opener + 1, self.closer, depth)
@@ -236,7 +267,7 @@ class _Writer:
             "    return n",
         ]
 
-    def _function(self, text: str) -> Callable[[int, Loop], int]:
+    def _function(self, text: str) -> Passes:
         entry = (self.opener + 1, 0)
         head = len(self._head())
         at = (entry,) * (head + 1) + tuple(self.lines.places) + (entry,) * len(self._tail())
@@ -284,7 +315,9 @@ class _Writer:
         if type(target) is not n.VariableRef or target.name.identity in self.expressions.names.macros:
             raise _Unsupported("a store in an array or a macro")
         value = self._source(statement.value)
-        variable = self.emitter.scalar(self.vm.scalars, self.expressions.scalar_slot(target.name))
+        slot = self.expressions.scalar_slot(target.name)
+        self.assigned.add(slot)
+        variable = self.emitter.scalar(self.vm.scalars, slot)
         stored = generated.stored(self.emitter, value, self.expressions.semantics.number)
         self._before(pc, pending, depth)
         self.lines.add(depth, f"{variable} = {stored}", pc, pending)
@@ -343,10 +376,15 @@ class _Writer:
         if slot is None:
             raise _Unsupported("a FOR whose variable has no slot")
         variable = emitter.scalar(self.vm.scalars, slot)
-        add = self.expressions.semantics.binary["+"]
-        candidate = generated.binary(emitter, add, Source(variable), Source("step"))
-        # too large for binary32, the variable plus the step is an infinity of the step's sign, past any end
-        test = emitter.test_later(candidate)
+        if self.counting:
+            if slot in self.assigned:
+                raise _Unsupported("the body assigns the FOR variable")
+            candidate, test = Source(f"{variable} + step"), ""
+        else:
+            add = self.expressions.semantics.binary["+"]
+            candidate = generated.binary(emitter, add, Source(variable), Source("step"))
+            # too large for binary32, the variable plus the step is an infinity of the step's sign, past any end
+            test = emitter.test_later(candidate)
         self.setup = "end = loop.end; step = loop.step"
         self._before(closer, pending, depth)
         following = candidate.text

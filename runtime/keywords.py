@@ -19,7 +19,6 @@ from mintlang.runtime.errors import MintError
 
 AXIS_SET_TWICE = 2018
 KEYWORD_NOT_SUPPORTED = 17
-NO_EXPRESSION = 2005
 
 Channels = tuple[int, ...]
 Values = tuple[float | None, ...]  # None: a skipped place, as in SPEED = ,10
@@ -78,27 +77,10 @@ class KeywordTable:
         record = database().keywords.get(name)
         if record is not None and record.controllers and self.controller not in record.controllers:
             raise MintError(KEYWORD_NOT_SUPPORTED, detail=f"{name} is not available on this controller")
-        return given_a_value(name, self._entries.get(name))
+        return self._entries.get(name)
 
     def names(self) -> Iterator[str]:
         return iter(sorted(self._entries))
-
-
-def given_a_value(name: str, access: KeywordAccess | None) -> KeywordAccess | None:
-    """The handlers as a program statement uses them: a write with every place empty (``SPEED.0 =``,
-    ``MOVER = ,``, ``COMMS(1) =``) gives the keyword no value, #2005 (000:18930-18934), as ``mint check``
-    says; a skipped place beside a value (``SPEED = ,,20``) is legal. Writes made by the simulator itself
-    do not pass here."""
-    if access is None or access.write is None:
-        return access
-    write = access.write
-
-    def write_given(channels: Channels | None, values: Values) -> bool:
-        if values and all(value is None for value in values):
-            raise MintError(NO_EXPRESSION, detail=f"{name} is given no value after '='")
-        return write(channels, values)
-
-    return replace(access, write=write_given)
 
 
 def per_channel(write_one: Callable[[int | None, float], None]) -> Writer:

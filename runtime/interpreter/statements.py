@@ -9,7 +9,7 @@ iteration is a comparison and an integer assignment.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
 from mintlang.runtime.clock import NEVER
@@ -205,6 +205,7 @@ class StatementCompiler:
                 if access is not None and access.read is not None:
                     raise MintError(WRITE_OF_READ_ONLY, detail=reference.keyword)
                 raise NotSimulated(reference.keyword, "write")
+            _given_a_value(reference.keyword, statement.values)
             write = access.write
             values = tuple(self.expressions.compile(value) if value is not None else None for value in statement.values)
             fill = statement.fill
@@ -295,6 +296,7 @@ class StatementCompiler:
             raise NotSimulated(call.function, "write")
         if len(arguments) != 1:
             raise NotSimulated(call.function, f"write with {len(arguments)} arguments")
+        _given_a_value(call.function, statement.values)
         write = access.write
         (index,) = arguments
         values = tuple(self.expressions.compile(value) if value is not None else None for value in statement.values)
@@ -777,3 +779,11 @@ _DISPATCH: dict[type, Callable[[StatementCompiler, n.Statement, int], Operation]
     n.Input: StatementCompiler.input_,  # type: ignore[dict-item]
     n.SyntaxError_: StatementCompiler.syntax_error,  # type: ignore[dict-item]
 }
+
+
+def _given_a_value(keyword: str, values: Sequence[n.Expression | None]) -> None:
+    """A write with every place empty (``SPEED.0 =``, ``MOVER = ,``, ``COMMS(1) =``) gives the keyword no
+    value, #2005 (000:18930-18934), raised when its line runs, as ``mint check`` says; a skipped place
+    beside a value (``SPEED = ,,20``) is legal."""
+    if all(value is None for value in values):
+        raise MintError(NO_EXPRESSION, detail=f"{keyword} is given no value after '='")

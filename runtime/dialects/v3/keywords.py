@@ -20,7 +20,6 @@ from mintlang.runtime.keywords import (
     KeywordTable,
     Reader,
     Writer,
-    given_a_value,
     per_channel,
 )
 
@@ -48,7 +47,7 @@ class V3KeywordTable(KeywordTable):
 
     def in_program(self, name: str) -> KeywordAccess | None:
         """The v3 guide's keywords are on every simulated v3 controller; none is error 17."""
-        return given_a_value(name, self.get(name))
+        return self.get(name)
 
 
 def _fixed(read: Reader) -> Reader:

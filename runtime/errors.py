@@ -13,6 +13,10 @@ from typing import Protocol
 from mintlang.keyworddb import database
 
 AXIS_ERROR_PRESENT = 500  # ERR in #ONERROR for an asynchronous motion error (EV-17 RC)
+# The interpreter errors, mistakes in the source met when their line runs: the 2000s of section 12.4, as
+# "Syntax error" (2003) and "NEXT w/o FOR" (2009), the ERR entry's examples (000:9912-9913, 18891-18892).
+# The compiler errors are the 3000s (its examples: 3002, 3003), the system (motion library) errors below 500.
+INTERPRETER_ERRORS = range(2000, 3000)
 
 
 def error_title(code: int) -> str:
@@ -63,6 +67,11 @@ class ErrorStyle(Protocol):
         """
         ...
 
+    def resumes(self, error: MintError) -> bool:
+        """Whether ``RETURN`` from ``#ONERROR`` goes on with the program after ``error``; if not, the run then
+        ends with the error's message, as when no handler takes it."""
+        ...
+
     def message(self, error: MintError, unit: str | None, line: int | None, *, explained: bool = True) -> str:
         """The message of a run-time error at ``line`` of ``unit`` (``"program"`` or ``"configuration"``)."""
         ...
@@ -82,6 +91,11 @@ class V4Errors:
 
     def number(self, error: MintError) -> int | None:
         return error.code
+
+    def resumes(self, error: MintError) -> bool:
+        """An interpreter error calls ``#ONERROR`` and still ends the program (000:4614-4619); a system error
+        resumes after the failing statement (EV-19 RC)."""
+        return error.code not in INTERPRETER_ERRORS
 
     def message(self, error: MintError, unit: str | None, line: int | None, *, explained: bool = True) -> str:
         """``R0003: PROGRAM Data specified out of range [axis/channel 0] [line 20]`` (EV-13 RC)."""

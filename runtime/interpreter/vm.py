@@ -75,6 +75,7 @@ class Frame:
     return_pc: int
     loops: int  # loop stack depth at the call: loops left open inside a subroutine end with it
     rank: int | None  # the event class rank of a handler frame, None for GOSUB
+    ending: MintError | None = None  # #ONERROR called for an error that ends the run when it returns
 
 
 class EventSource(Protocol):
@@ -225,10 +226,11 @@ class Interpreter:
         pc = self.executing if self.executing is not None else self.pc
         return sites[pc] if pc < len(sites) else (sites[-1] if sites else None)
 
-    def stop(self, reason: StopReason, message: str = "") -> None:
+    def stop(self, reason: StopReason, message: str = "", site: Site | None = None) -> None:
+        """End the run, at ``site`` (by default the statement running now)."""
         if self.stopped is None:
             self.stopped = reason
-            self.stop_site = self.current_site()
+            self.stop_site = site or self.current_site()
             self.message = message
 
     def not_simulated(self, missing: NotSimulated) -> None:
@@ -255,6 +257,8 @@ class Interpreter:
         self.pc = frame.return_pc
         if frame.rank is not None and self.events is not None:
             self.events.handler_returned(frame.rank)
+        if frame.ending is not None:  # back at the failing statement, which the run ends on
+            self.halt(frame.ending, self.sites[frame.return_pc])
 
     def running_rank(self) -> int | None:
         """The rank of the innermost running event handler (lower ranks pre-empt higher ones)."""
@@ -348,23 +352,32 @@ class Interpreter:
         handler = self.events.error_handler() if self.events is not None else None
         inside_handler = any(frame.rank == 0 for frame in self.frames)
         if handler is not None and not inside_handler:
-            recovery = self.recoveries.get(pc)  # RETURN resumes after the failing statement (EV-19 RC)
-            if recovery is not None and recovery.loop is not None:
-                self.leave_loop(recovery.loop)
             try:
-                self.call(handler, 0, return_pc=pc + 1 if recovery is None else recovery.resume)
+                self._call_onerror(handler, error, pc)
                 return
             except MintError:
                 pass
         self.pc = pc
         self.halt(error, site)
 
+    def _call_onerror(self, handler: int, error: MintError, pc: int) -> None:
+        """Call ``#ONERROR`` for ``error`` at ``pc``: its RETURN resumes after the failing statement (EV-19 RC),
+        or for an error the program cannot go on from, comes back to it and ends the run there."""
+        if not self.errors.resumes(error):
+            self.call(handler, 0, return_pc=pc)
+            self.frames[-1].ending = error.with_traceback(None)  # not the frames it was raised through
+            return
+        recovery = self.recoveries.get(pc)
+        if recovery is not None and recovery.loop is not None:
+            self.leave_loop(recovery.loop)
+        self.call(handler, 0, return_pc=pc + 1 if recovery is None else recovery.resume)
+
     def halt(self, error: MintError, site: Site | None) -> None:
         """End the run on an error no handler takes: the controller prints its message and aborts every axis
         (000:4579-4581, 4605-4609)."""
         if self.stopped is None:
             self.announce(self.error_message(error, site, explained=False))
-        self.stop(StopReason.ERROR, self.error_message(error, site))
+        self.stop(StopReason.ERROR, self.error_message(error, site), site)
         self.on_fatal()
 
     def error_message(self, error: MintError, site: Site | None, *, explained: bool = True) -> str:

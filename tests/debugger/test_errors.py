@@ -16,9 +16,9 @@ PRINT "never"
 """
 
 HANDLED = """\
-DIM t(2)
 DIM x
-x = t(5)
+DIM y
+x = POS.12
 END
 #ONERROR
   x = ERR
@@ -55,9 +55,23 @@ def test_with_every_error_chosen_an_error_onerror_handles_stops_before_the_handl
     client.body("continue", {"threadId": 1})
     stop = client.stopped()
     assert (stop["reason"], client.line()) == ("exception", 3)
-    client.step("next")
+    client.step("next")  # axis 12 is invalid: the system error 2, after which the program goes on (000:4616-4618)
     assert client.line() == 4
-    assert client.values()["x"] == "2016"
+    assert client.values()["x"] == "2"
+
+
+def test_an_interpreter_error_stops_again_where_it_ends_the_run_once_onerror_returns(debug: Debug) -> None:
+    # 000:4614-4619: #ONERROR runs for the invalid index, then the program terminates on it
+    client = debug(HANDLED.replace("POS.12", "t(5)").replace("DIM y", "DIM t(2)"), stopOnEntry=True)
+    client.stopped()
+    client.body("setExceptionBreakpoints", {"filters": ["errors", "unhandled"]})
+    client.body("continue", {"threadId": 1})
+    assert (client.stopped()["reason"], client.line()) == ("exception", 3)
+    stop = client.step("next")
+    assert (stop["reason"], client.line(), client.values()["x"]) == ("exception", 3, "2016")
+    assert "2016" in stop["description"]
+    client.body("continue", {"threadId": 1})
+    assert client.event("exited")["body"]["exitCode"] == 1
 
 
 def test_without_the_unhandled_filter_the_run_just_ends(debug: Debug) -> None:

@@ -49,9 +49,9 @@ def test_step_out_stops_in_the_caller_after_the_gosub(debug: Debug) -> None:
 
 
 HANDLED = """\
-DIM t(2)
+DIM v
 DIM x
-x = t(5)
+x = POS.12
 PRINT "after"
 END
 #ONERROR

@@ -2,8 +2,9 @@
 
 Only the compiler's errors (syntax, undeclared names, mismatched blocks,
 labels, limits) stop a program before it starts (000:4564-4570, 4611-4615);
-system and interpreter errors call #ONERROR if it is defined, and the
-program can go on (000:4616-4619, EV-14 and EV-19 of the runtime spec).
+system and interpreter errors call #ONERROR if it is defined (000:4616-4619).
+After a system error the program can go on (EV-19 of the runtime spec); an
+interpreter error ends it when the handler returns (000:4614-4615).
 """
 
 from __future__ import annotations
@@ -23,10 +24,10 @@ def test_the_errors_example_an_axis_the_controller_lacks_is_error_2_on_its_line(
 
 
 def test_an_index_outside_its_array_is_error_2016_when_the_line_runs() -> None:
-    # 000:19040-19046: indices of DIM t(3) are 1 to 3; the program goes on after RETURN (EV-19 RC)
+    # 000:19040-19046: indices of DIM t(3) are 1 to 3; after RETURN the program ends there (000:4614-4615)
     result = simulate('DIM t(3)\nt(4) = 1\nPRINT "after"\n' + HANDLER)
-    assert result.stop.reason is StopReason.END
-    assert result.terminal == "2016 2 -1\nafter\n"
+    assert (result.stop.reason, result.err, result.erl) == (StopReason.ERROR, 2016, 2)
+    assert result.terminal == "2016 2 -1\nR2016: PROGRAM Invalid index [line 2]\n"
 
 
 def test_a_constant_out_of_range_is_error_3_when_the_line_runs() -> None:
@@ -53,7 +54,7 @@ def test_a_macro_left_in_another_macros_text_is_a_syntax_error_when_its_line_run
 def test_a_write_to_a_read_only_keyword_is_error_2000_when_its_line_runs() -> None:
     # 000:18905-18908: CAMINDEX = 4 is the manual's example of 2000
     result = simulate('PRINT "before"\nCAMINDEX = 4\nPRINT "after"\n' + HANDLER)
-    assert result.terminal == "before\n2000 2 -1\nafter\n"
+    assert result.terminal == "before\n2000 2 -1\nR2000: PROGRAM Read only or Command [line 2]\n"
 
 
 def test_a_keyword_alone_is_error_2005_when_its_line_runs() -> None:

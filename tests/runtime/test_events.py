@@ -90,15 +90,15 @@ WAIT = 100
 END
 #IN0
 PRINT "in0 start"
-DIM zero = 0
-zero = 1 / zero
+SCALE = -3
 PRINT "in0 end"
 RETURN
 #ONERROR
 PRINT "error ", ERR
 RETURN
 """
-    assert simulate(source).terminal == "in0 start\nerror 2021\nin0 end\n"
+    # SCALE = -3 is the system error 3 (000:4600-4604): the handler it interrupted goes on after it
+    assert simulate(source).terminal == "in0 start\nerror 3\nin0 end\n"
 
 
 def test_events_interrupt_a_wait_without_extending_it() -> None:
@@ -264,7 +264,7 @@ def test_eventdisable_stops_onerror_for_a_synchronous_error_which_then_ends_the_
 
 def test_each_file_is_served_by_its_own_event_handlers() -> None:
     # neither file can call the other's subroutines: the configuration's #ONERROR serves only the configuration
-    config = 'DIM q\nRESETALL\nq = 1 / q\nPRINT "config goes on"\nEND\n#ONERROR\nPRINT "config handler"\nRETURN\n'
+    config = 'DIM q\nRESETALL\nSCALE = -3\nPRINT "config goes on"\nEND\n#ONERROR\nPRINT "config handler"\nRETURN\n'
     program = 'q = 1 / q\nPRINT "never"\nEND\n'
     result = simulate(program, config=config)
     assert result.terminal == "config handler\nconfig goes on\nR2021: PROGRAM Divide by zero [line 1]\n"

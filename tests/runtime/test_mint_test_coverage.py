@@ -107,8 +107,8 @@ def test_the_line_that_raises_the_error_ending_the_run_ran(tmp_path: Path) -> No
 
 
 def test_a_line_failing_into_onerror_ran_once(tmp_path: Path) -> None:
-    # Line 4 fails once into #ONERROR (lines 7-8), whose RETURN resumes after it at END (line 5); the label
-    # line 6 holds no statement.
-    program = "REM @expect n = 1\nDIM a(3)\nDIM n\na(5) = 1\nEND\n#ONERROR\n  n = n + 1\nRETURN\n"
+    # Line 4 fails once into #ONERROR (lines 7-8) with a system error (axis 12 is invalid, 000:4616-4618),
+    # whose RETURN resumes after it at END (line 5); the label line 6 holds no statement.
+    program = "REM @expect n = 1\nDIM v\nDIM n\nv = POS.12\nEND\n#ONERROR\n  n = n + 1\nRETURN\n"
     lines = _records(tmp_path, program, ("DA:", "L"))
     assert lines == ["DA:2,1", "DA:3,1", "DA:4,1", "DA:5,1", "DA:7,1", "DA:8,1", "LF:6", "LH:6"]

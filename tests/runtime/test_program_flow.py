@@ -107,16 +107,19 @@ def test_a_return_without_gosub_is_error_2010() -> None:
     assert (result.err, result.erl) == (2010, 2)
 
 
-def test_onerror_sees_err_erl_and_resumes_after_the_failing_statement() -> None:
-    source = """DIM a = 0
-a = 1 / a
-PRINT "resumed"
-END
-#ONERROR
-PRINT "error ", ERR, " on line ", ERL
-RETURN
-"""
-    assert printed(source) == "error 2021 on line 2\nresumed\n"
+ONERROR_SHOWS_ERR_ERL = '\nPRINT "resumed"\nEND\n#ONERROR\nPRINT "error ", ERR, " on line ", ERL\nRETURN\n'
+
+
+def test_onerror_sees_err_erl_and_resumes_after_a_failing_system_statement() -> None:
+    # axis 12 is invalid (000:4616-4618): the system error 2, after which RETURN resumes (EV-19 RC)
+    assert printed("DIM a = 0\na = POS.12" + ONERROR_SHOWS_ERR_ERL) == "error 2 on line 2\nresumed\n"
+
+
+def test_onerror_sees_an_interpreter_error_and_its_return_ends_the_program() -> None:
+    # 000:4614-4619: an interpreter error (2021, 000:19063) calls #ONERROR, then terminates the program
+    result = simulate("DIM a = 0\na = 1 / a" + ONERROR_SHOWS_ERR_ERL)
+    assert (result.stop.reason, result.stop.line, result.err, result.erl) == (StopReason.ERROR, 2, 2021, 2)
+    assert result.terminal == "error 2021 on line 2\nR2021: PROGRAM Divide by zero [line 2]\n"
 
 
 def test_an_error_in_a_keyword_names_its_axis_in_erraxis() -> None:
@@ -199,20 +202,21 @@ ONERROR_REPORTS = '\nEND\n#ONERROR\nPRINT "error ", ERR\nRETURN\n'
 @pytest.mark.parametrize(
     ("construct", "shown"),
     [
-        ('IF 1 / zero > 0 THEN PRINT "guarded"\nPRINT "after"', "error 2021\nafter\n"),
-        ('IF 1 / zero > 0 DO\n  PRINT "guarded"\nELSE\n  PRINT "else"\nENDIF\nPRINT "after"', "error 2021\nafter\n"),
-        ('WHILE 1 / zero > 0\n  PRINT "guarded"\nENDW\nPRINT "after"', "error 2021\nafter\n"),
-        ('FOR i = 1 TO 1 / zero\n  PRINT "guarded"\nNEXT\nPRINT "after"', "error 2021\nafter\n"),
-        ('REPEAT\n  PRINT "body"\nUNTIL 1 / zero\nPRINT "after"', "body\nerror 2021\nafter\n"),
+        ('IF POS.12 > 0 THEN PRINT "guarded"\nPRINT "after"', "error 2\nafter\n"),
+        ('IF POS.12 > 0 DO\n  PRINT "guarded"\nELSE\n  PRINT "else"\nENDIF\nPRINT "after"', "error 2\nafter\n"),
+        ('WHILE POS.12 > 0\n  PRINT "guarded"\nENDW\nPRINT "after"', "error 2\nafter\n"),
+        ('FOR i = 1 TO POS.12\n  PRINT "guarded"\nNEXT\nPRINT "after"', "error 2\nafter\n"),
+        ('REPEAT\n  PRINT "body"\nUNTIL POS.12\nPRINT "after"', "body\nerror 2\nafter\n"),
     ],
 )
 def test_onerror_returns_after_a_failing_block_statement_never_into_its_block(construct: str, shown: str) -> None:
-    # EV-19 RC: the statement after the failing one is the one after the whole construct
-    assert printed("DIM zero\nDIM i\n" + construct + ONERROR_REPORTS) == shown
+    # EV-19 RC: the statement after the failing one is the one after the whole construct; reading axis 12 is
+    # the system error 2 (000:4616-4618), which RETURN resumes after
+    assert printed("DIM i\n" + construct + ONERROR_REPORTS) == shown
 
 
 def test_an_until_that_fails_leaves_its_loop_so_the_enclosing_for_goes_on() -> None:
-    source = "DIM zero\nDIM k\nFOR k = 1 TO 60\n  REPEAT\n  UNTIL 1 / zero\nNEXT\nPRINT k\nEND\n#ONERROR\nRETURN\n"
+    source = "DIM k\nFOR k = 1 TO 60\n  REPEAT\n  UNTIL POS.12\nNEXT\nPRINT k\nEND\n#ONERROR\nRETURN\n"
     assert printed(source) == "60\n"
 
 

@@ -90,6 +90,11 @@ class V3Errors:
     def number(self, error: MintError) -> int | None:
         return self._described(error)[0]
 
+    def resumes(self, error: MintError) -> bool:
+        """A trapped error (system or motion) resumes after the failing line (001:5532): programming errors
+        never reach ``#ONERROR``."""
+        return True
+
     def message(self, error: MintError, unit: str | None, line: int | None, *, explained: bool = True) -> str:
         """``ERROR: Program: Out of range at line 10 on axis 2`` (001:4978-4982, 5008)."""
         title = self._described(error)[1]

@@ -14,7 +14,7 @@ tests compare both.
 from __future__ import annotations
 
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from mintlang.runtime.clock import NEVER
@@ -22,6 +22,8 @@ from mintlang.runtime.controller import Controller
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.events import EventClass
 from mintlang.runtime.interpreter.vm import StopReason
+from mintlang.runtime.motion.axis import Axis
+from mintlang.runtime.motion.idle_masters import master_waited_on
 
 WALL_CHECK_EVERY = 256  # processed ticks between looks at the wall clock
 
@@ -135,9 +137,14 @@ class Simulator:
         if self.on_tick is not None:
             self.on_tick(t)
 
-    def _deadlock(self) -> str:
-        """Why nothing can wake the program, with the likeliest cause when a move buffer is full."""
+    def _deadlock(self, t: int) -> str:
+        """Why nothing can wake the program, with the likeliest cause: moves waiting on masters nothing moves,
+        or a full move buffer."""
         message = "blocked, and nothing scheduled or moving can ever wake the program"
+        stalled = self._stalled_on_masters(t)
+        if stalled:
+            waits = ", ".join(f"axis {axis} on {master}" for axis, master in stalled.items())
+            return f"{message}: moves wait on the travel of masters at rest that nothing can move ({waits})"
         for axis in self.c.axes:
             if axis.move is None and axis.buffer and axis.buffer_free() <= 0:
                 size = int(axis.parameters["MOVEBUFFERSIZE"])
@@ -184,13 +191,14 @@ class Simulator:
         c = self.c
         return bool(c.events.pending) or c.server is not None or c.io.raises_every_tick()
 
-    def _next_change_besides_the_program(self, t: int, soonest: int) -> int:
-        """The next tick the world, the timer, a monitor, an axis or an expectation needs, or ``soonest``."""
+    def _next_change_besides_the_program(self, t: int, soonest: int, axes: Iterable[Axis] | None = None) -> int:
+        """The next tick the world, the timer, a monitor, an axis (of ``axes``, by default every one) or an
+        expectation needs, or ``soonest``."""
         c = self.c
         soonest = min(soonest, c.world.next_change(t), c.events.next_timer_event())
         for monitor in c.monitors:
             soonest = min(soonest, monitor.next_required(t))
-        for axis in c.axes:
+        for axis in c.axes if axes is None else axes:
             if soonest <= t + 1:
                 return t + 1
             soonest = min(soonest, axis.next_required(t))
@@ -228,6 +236,31 @@ class Simulator:
         Nothing else needs those ticks (``Axis.next_required``), so the axes would be left mid-move."""
         ends = [axis.move.end for axis in self.c.axes if axis.move is not None and not axis.held]
         return max(*ends, t + 1) if ends else NEVER
+
+    def _stalled_on_masters(self, t: int) -> dict[int, str]:
+        """While the program is blocked: the axes whose moves wait for good on masters nothing can move (FLY,
+        FOLLOW or CAM on an idle master), by number with their master, when they are all that still ticks and
+        nothing else is scheduled or moving, so that nothing can ever move a master or wake the program. Empty
+        otherwise: an event, an input, a host packet, a WAIT or another move may yet change something."""
+        c = self.c
+        vm = c.vm
+        if vm.progressed or not vm.blocked or self._busy():
+            return {}
+        stalled: dict[int, str] = {}
+        for axis in c.axes:
+            if axis.move is not None and axis.move.live:
+                master = master_waited_on(axis, t)
+                if master is None:
+                    return {}
+                stalled[axis.number] = master
+        if not stalled:
+            return {}
+        others = [axis for axis in c.axes if axis.number not in stalled]
+        if any(axis.move is not None and not axis.held for axis in others):
+            return {}
+        if self._next_change_besides_the_program(t, vm.wake_at, others) < NEVER:
+            return {}
+        return stalled
 
     def _settling(self) -> bool:
         """Whether the machine runs on after the program ended: ``Limits.settle`` asks for it, for as long as
@@ -300,8 +333,8 @@ class Simulator:
             following = self.next_change(t)
             if following >= NEVER:
                 following = self._moves_end(t)
-            if following >= NEVER:
-                vm.stop(StopReason.DEADLOCK, self._deadlock())
+            if following >= NEVER or (following == t + 1 and self._stalled_on_masters(t)):
+                vm.stop(StopReason.DEADLOCK, self._deadlock(t))
                 break
             if limits.every_tick:
                 following = t + 1

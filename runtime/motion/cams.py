@@ -192,6 +192,10 @@ class CamMove:
     def velocity(self, index: int, tick: int) -> float:
         return self.points.velocity(tick, tick >= self.end)
 
+    def waits_on_master(self, now: int) -> bool:
+        """Its segments are steps of master travel: it moves only when the master does."""
+        return self.end == NEVER and self.points.still() and self.link.master.at_rest(now)
+
     def stop(self, tick: int, decel: float) -> Move | None:
         """FG-13 RC: finish the current cycle at its end segment, then stop."""
         self.stopping = True

@@ -237,6 +237,16 @@ class LockedMove:
     def velocity(self, index: int, tick: int) -> float:
         return self.points.velocity(tick, tick >= self.end)
 
+    def waits_on_master(self, now: int) -> bool:
+        """A segment or gear with no command to take and no OFFSET running moves only with master travel."""
+        return (
+            self.end == NEVER
+            and not self.incoming
+            and self.offsets.running is None
+            and self.points.still()
+            and self.link.master.at_rest(now)
+        )
+
     def stop(self, tick: int, decel: float) -> Move | None:
         """Per ``stop_rule``: FLY and FOLLOWMODE 2 ramp to rest over MASTERDISTANCE from the current ratio,
         FOLLOWMODE 3 after its queued segments, FOLLOWMODE 0 stops at once (MP-22, FG-6)."""

@@ -103,6 +103,16 @@ class VelocityLockedMove:
     def velocity(self, index: int, tick: int) -> float:
         return self.points.velocity(tick, tick >= self.end)
 
+    def waits_on_master(self, now: int) -> bool:
+        """At rest with no OFFSET running, it moves only when the master does."""
+        return (
+            self.end == NEVER
+            and self.speed == 0.0
+            and self.offsets.running is None
+            and self.points.still()
+            and self.link.master.at_rest(now)
+        )
+
     def stop(self, tick: int, decel: float) -> Move | None:
         """Ramp to rest at ``decel`` (FG-6 RC: DECEL for STOP, ERRORDECEL for an error)."""
         self.stopping = True

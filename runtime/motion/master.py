@@ -17,6 +17,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from mintlang.keyworddb.model import Controller
+from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.axis import Axis
@@ -84,6 +85,18 @@ class Master:
         self.position += axis.parameters["SPEED"] * PROFILER_TICK_MS / 1000.0
         return self.position
 
+    @property
+    def name(self) -> str:
+        return f"axis {self.axis.number}"
+
+    def at_rest(self, now: int) -> bool:
+        """Whether the master stands where it is until something besides the motion changes: its axis runs no
+        move, has none triggered and needs no tick (the virtual master of _msSPEED always advances)."""
+        if self.source not in (MS_POS, MS_ENCODER, MS_DEMAND):
+            return False
+        axis = self.axis
+        return axis.move is None and not axis.triggered and not axis.pending_mode and axis.next_event(now) >= NEVER
+
 
 class AuxiliaryMaster:
     """An auxiliary encoder as the master (_msAUXENCODER): it reads as the program last set it, since nothing
@@ -97,6 +110,14 @@ class AuxiliaryMaster:
 
     def sample(self) -> float:
         return self.read(self.channel)
+
+    @property
+    def name(self) -> str:
+        return f"auxiliary encoder {self.channel}"
+
+    def at_rest(self, now: int) -> bool:
+        """Only the program turns it, by writing AUXENCODER."""
+        return True
 
 
 @dataclass(frozen=True, slots=True)
@@ -133,6 +154,10 @@ class SetPoints:
     @property
     def position(self) -> float:
         return self.last[1]
+
+    def still(self) -> bool:
+        """The last two set-points are equal: the demand stands until the next one differs."""
+        return self.started and self.previous[1] == self.last[1]
 
     def at(self, tick: int, ended: bool) -> float:
         (t0, p0), (t1, p1) = self.previous, self.last

@@ -17,25 +17,12 @@ import pytest
 from mintlang.runtime.interpreter.vm import StopReason
 from tests.runtime.running import simulate
 
-FLYING_SHEAR = """AXES[0]
-MASTERSOURCE = _msPOS
-MASTERCHANNEL = 1
-MASTERDISTANCE = 200
-FLY = 200 : GO
-MASTERDISTANCE = 200
-FLY = 400 : GO
-MASTERDISTANCE = 100
-FLY = 150 : GO
-MASTERDISTANCE = 400
-FLY = 400 : GO
-MASTERDISTANCE = 100
-FLY = 50 : GO
-MASTERDISTANCE = 200
-FLY = 0 : GO
-PAUSE IDLE.0
-PRINT POS.0, " ", POS.1
-END
-"""
+SEGMENTS = ((200, 200), (200, 400), (100, 150), (400, 400), (100, 50), (200, 0))  # (MASTERDISTANCE, FLY)
+FLYING_SHEAR = (
+    "AXES[0]\nMASTERSOURCE = _msPOS\nMASTERCHANNEL = 1\n"
+    + "".join(f"MASTERDISTANCE = {master}\nFLY = {slave} : GO\n" for master, slave in SEGMENTS)
+    + 'PAUSE IDLE.0\nPRINT POS.0, " ", POS.1\nEND\n'
+)
 MOVE_THE_MASTER = "MOVER.1 = 1200 : GO.1\n"
 
 

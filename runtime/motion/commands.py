@@ -70,6 +70,9 @@ class Motion:
         self.index_pulses: dict[int, IndexPulse] = {}  # Z pulses of the scripted encoders, by axis
         self.on_default: list[Callable[[Axis], None]] = []  # each motion module's own settings back to power-up
         self.master_settings: dict[int, MasterSettings] = {}  # MASTERSOURCE and the rest, by slave axis (master.py)
+        # whether an axis's live move stands still until its idle master moves (idle_masters.py): what is read of
+        # it changes only after an event or the program moves that master, so its readers need no tick before
+        self.stands_still: Callable[[Axis, int], bool] = lambda axis, now: False
 
     def index_active(self, axis: Axis) -> bool:
         """The Z pulse of ``axis`` at its current physical count (active high, HM-8 RC)."""
@@ -437,12 +440,17 @@ class Motion:
         # the axis straight from the list; self.axis (error 2) only for one the controller lacks
         axis = axes[channel] if channel is not None and 0 <= channel < len(axes) else self.axis(channel)
         clock = self.clock
-        clock.horizon = min(clock.horizon, clock.now + 1 if axis.plant.closed_loop else axis.next_event(clock.now))
+        move = axis.move
+        if move is None or not move.live or not self.stands_still(axis, clock.now):
+            clock.horizon = min(clock.horizon, clock.now + 1 if axis.plant.closed_loop else axis.next_event(clock.now))
         return 1.0 if axis.idle() else 0.0
 
     def watched(self, axis: Axis, *, moving: bool = False) -> Axis:
         """Reading axis state: it may change when the move ends, or every tick while moving."""
         now = self.clock.now
+        move = axis.move
+        if move is not None and move.live and self.stands_still(axis, now):
+            return axis
         self.clock.changes_at(axis.next_event(now))
         if moving and (axis.move is not None or axis.settling()):
             self.clock.changes_at(now + 1)

@@ -9,7 +9,18 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from mintlang.runtime.keywords import KeywordTable
-from mintlang.runtime.motion import cams, circles, contouring, flying, following, homing, incremental, master, offset
+from mintlang.runtime.motion import (
+    cams,
+    circles,
+    contouring,
+    flying,
+    following,
+    homing,
+    idle_masters,
+    incremental,
+    master,
+    offset,
+)
 from mintlang.runtime.motion.commands import Motion
 
 Extension = Callable[[KeywordTable, Motion], None]
@@ -24,4 +35,5 @@ EXTENSIONS: tuple[Extension, ...] = (
     following.register,
     flying.register,
     cams.register,
+    idle_masters.register,
 )

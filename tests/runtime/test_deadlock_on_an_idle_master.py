@@ -83,3 +83,31 @@ def test_a_cam_on_an_idle_master_under_a_program_waiting_on_nothing_else_is_a_de
     result = simulate(source)
     assert (result.stop.reason, result.stop.line) == (StopReason.DEADLOCK, 6)
     assert "axis 0 on axis 1" in result.stop.message
+
+
+FLY_THEN_PAUSE = (  # the FLY keyword's example (000:10560-10569), the master axis 1
+    "MASTERSOURCE = _msPOS\nMASTERCHANNEL = 1\nMASTERDISTANCE = 1000\nFLY = 500 : GO\nFLY = 1000 : GO\n"
+    "PAUSE MOVEBUFFERFREE = 1\nOUT.0 = 1\nPRINT POS.0\n"
+)
+
+
+def test_a_pause_on_the_buffer_of_a_fly_waiting_on_an_idle_master_is_a_deadlock() -> None:
+    result = simulate(FLY_THEN_PAUSE)
+    assert (result.stop.reason, result.stop.line, result.outputs & 1) == (StopReason.DEADLOCK, 6, 0)
+
+
+def test_a_pause_on_the_buffer_wakes_when_an_event_moves_the_master() -> None:
+    # FLY = 500 over 1000 from rest ends at ratio 1 with the slave 500 on (000:3775-3779): a slot is free
+    source = "TIMEREVENT = 50\n" + FLY_THEN_PAUSE + "END\n#TIMER\nTIMEREVENT = 0\nMOVER.1 = 1000 : GO.1\nRETURN\n"
+    result = simulate(source)
+    assert (result.stop.reason, result.terminal, result.outputs & 1) == (StopReason.END, "500\n", 1)
+
+
+def test_a_pause_on_the_position_of_a_follower_whose_master_stopped_is_a_deadlock() -> None:
+    # FOLLOW = 2 behind 50 units of master: the slave stops at 100 and never reaches 1000
+    source = (
+        "MASTERSOURCE.0 = _msPOS\nMASTERCHANNEL.0 = 1\nFOLLOW.0 = 2\nMOVER.1 = 50 : GO.1\nPAUSE IDLE.1\n"
+        "WAIT = 10\nPRINT POS.0\nPAUSE POS.0 > 1000\n"
+    )
+    result = simulate(source)
+    assert (result.stop.reason, result.stop.line, result.terminal) == (StopReason.DEADLOCK, 8, "100\n")

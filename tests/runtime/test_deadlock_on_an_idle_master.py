@@ -111,3 +111,13 @@ def test_a_pause_on_the_position_of_a_follower_whose_master_stopped_is_a_deadloc
     )
     result = simulate(source)
     assert (result.stop.reason, result.stop.line, result.terminal) == (StopReason.DEADLOCK, 8, "100\n")
+
+
+def test_a_stop_input_that_cancels_the_waiting_move_wakes_the_program() -> None:
+    # STOPINPUTMODE 2 cancels the move (a FLY is not ramped: AX-18): IDLE.0 reads 1 from the tick the input comes
+    source = (
+        "REM @sim input 5 1 at 300\nSTOPINPUT.0 = 5\nSTOPINPUTMODE.0 = 2\nMASTERSOURCE.0 = _msPOS\n"
+        "MASTERCHANNEL.0 = 1\nMASTERDISTANCE.0 = 200\nFLY.0 = 100 : GO.0\nPAUSE IDLE.0\nPRINT TIME\n"
+    )
+    result = simulate(source)
+    assert (result.stop.reason, result.terminal) == (StopReason.END, "300\n")

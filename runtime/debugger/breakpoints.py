@@ -116,11 +116,12 @@ class Breakpoints:
 
     def replace_functions(self, requests: Iterable[Mapping[str, Any]]) -> list[Breakpoint]:
         """Breakpoints on labels (``setFunctionBreakpoints``): ``TIMER`` or ``#TIMER`` stops as ``#TIMER``
-        starts, whether an event, a GOSUB or a GOTO runs it."""
+        starts, whether an event, a GOSUB or a GOTO runs it. A MintMT event block is known by its whole
+        name, which may be longer than a label's ten significant characters (``MOVEBUFFERLOW``)."""
         placed = []
         for request in requests:
             name = str(request.get("name", "")).strip().lstrip("#")
-            pc = self.labels.get(identity(name))
+            pc = self.labels.get(name.upper(), self.labels.get(identity(name)))
             if pc is None or pc >= len(self.sites):
                 placed.append(self._made(request, "program", 0, None, f"the program has no label #{name}"))
             else:

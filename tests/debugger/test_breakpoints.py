@@ -134,6 +134,34 @@ def test_a_breakpoint_on_a_handlers_label_stops_at_each_event_it_serves(debug: D
     assert (client.values()["ticks"], client.evaluate("TIME")) == ("1", "20")
 
 
+RESTOCKED = """\
+DIM lows
+MOVEBUFFERSIZE(0) = 4
+MOVEBUFFERLOW(0) = 2
+MOVER(0) = 5
+MOVER(0) = 5
+MOVER(0) = 5
+GO(0)
+Pause IDLE(0)
+End
+Event MOVEBUFFERLOW
+  lows = lows + 1
+End Event
+"""
+
+
+def test_a_breakpoint_on_a_mintmt_event_longer_than_ten_characters_stops_in_its_block(debug: Debug) -> None:
+    # Event MOVEBUFFERLOW (004:109-134) comes when the free places rise to the level: three moves leave one of
+    # four places free, and the first move's end frees a second (MT-14). The event's name is longer than a
+    # label's ten significant characters.
+    client = debug(RESTOCKED, dialect="mintmt", drives="enabled", stopOnEntry=True)
+    client.stopped()
+    (placed,) = client.body("setFunctionBreakpoints", {"breakpoints": [{"name": "MOVEBUFFERLOW"}]})["breakpoints"]
+    assert (placed["verified"], placed["line"]) == (True, 11)
+    client.step("continue")
+    assert (client.line(), client.values()["lows"], client.evaluate("POS(0)")) == (11, "0", "5")
+
+
 def test_a_label_the_program_lacks_is_an_unverified_breakpoint(debug: Debug) -> None:
     client = debug(TIMED)
     (placed,) = client.body("setFunctionBreakpoints", {"breakpoints": [{"name": "IN3"}]})["breakpoints"]

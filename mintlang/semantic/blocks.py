@@ -142,6 +142,7 @@ class _Matcher:
         self.stack: list[_Open] = []
         self.open = dict.fromkeys(BlockKind, 0)
         self.events: dict[Event, int] = {}  # each MintMT event handled, with the line of its Event block
+        self.startup: int | None = None  # the line of the MintMT Startup block
         self.blocks: list[Block] = []
         self.diagnostics: list[Diagnostic] = []
         self.bare_then: tuple[int, Fix] | None = None  # the last IF .. THEN with nothing after THEN: depth, fix
@@ -187,7 +188,8 @@ class _Matcher:
         self.close(expected, place, span, code, f"{self.spelled(closer)} without {self.spelled(opener)}")
 
     def _top_level(self, statement: n.Statement, kind: BlockKind, line: n.PlacedLine) -> None:
-        """MintMT's Event and Startup blocks stand alone, and an Event names an event (MT-6, MT-13)."""
+        """MintMT's Event and Startup blocks stand alone, an Event names an event, and a program has one Startup
+        block, the one the controller runs at power-up (004:89, 128; MT-6, MT-13)."""
         span = line.span(statement.span)
         if self.stack:
             inner = self.stack[-1]
@@ -196,6 +198,11 @@ class _Matcher:
             self.diagnostics.append(_error(2003, span, detail))
         if type(statement) is n.EventBlock:
             self._event(statement.name, line)
+        elif self.startup is None:
+            self.startup = line.number
+        else:
+            detail = f"a second Startup block: the controller runs the block of line {self.startup} at power-up"
+            self.diagnostics.append(_error(2003, span, detail))
 
     def _event(self, name: n.Name, line: n.PlacedLine) -> None:
         """An Event names an event (comms locations 1 to 5 raise one, 002:19), and only one block handles it."""

@@ -131,6 +131,19 @@ def test_only_comms_locations_1_to_5_raise_an_event_and_each_event_has_one_block
     ]
 
 
+def test_a_program_has_one_startup_block() -> None:
+    """The note's Startup block is the code run at power-up (004:128-133): a second one would never run."""
+    source = "Startup\n  Print 1\nEnd Startup\nStartup\n  Print 2\nEnd Startup\n"
+    analysis = mintlang.check_application(source, dialect="mintmt")
+    assert [(d.code, d.message, d.span.start) for d in analysis.program] == [
+        (
+            "E2003",
+            "Syntax error: a second Startup block: the controller runs the block of line 1 at power-up",
+            30,
+        ),  # 8 + 10 + 12 characters before it
+    ]
+
+
 def test_end_while_is_no_closer_but_is_told_the_closer_it_stands_for() -> None:
     # MT-23: neither the notes nor the v4 guide show End While; WHILE ends with ENDW (v4 guide §3.7.3)
     source = "Dim i\nWhile i < 3\n  i = i + 1\nEnd While\nPrint i\n"

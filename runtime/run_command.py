@@ -6,7 +6,6 @@ Kept apart so that ``mint-run --help`` and ``--version`` load neither the simula
 from __future__ import annotations
 
 import json
-import os
 import signal
 import sys
 import time
@@ -23,7 +22,7 @@ from mintlang.cli.files import program_as_own_configuration
 from mintlang.cli.options import refuse_quiet_and_verbose
 from mintlang.cli.report import shortened
 from mintlang.cli.settings import settings_failed
-from mintlang.cli.terminal import Messages
+from mintlang.cli.terminal import BROKEN_PIPE, Messages, discard_standard_output
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
 from mintlang.runtime import scenario as scenarios
@@ -49,7 +48,6 @@ if TYPE_CHECKING:
 _USAGE_ERROR = 2
 _FAILED = 1
 _INTERRUPTED = 130  # 128 + SIGINT: what a shell reports for a program Ctrl-C ended
-_BROKEN_PIPE = 141  # 128 + SIGPIPE: what a shell reports for a writer whose reader went away
 _TERMINATED = 143  # 128 + SIGTERM: what a shell reports for a program a supervisor (kill, systemd) ended
 _TERMINATED_MESSAGE = "terminated (SIGTERM)"
 _TRACE_AXES = "'--trace-axes'"
@@ -215,7 +213,7 @@ def _exit_status(result: RunResult, stdout_closed: bool, terminated: bool, *, ex
             click.echo(f"mint-run: {_TERMINATED_MESSAGE}", err=True)
         return _TERMINATED
     if reason is StopReason.INTERRUPTED:
-        return _BROKEN_PIPE if stdout_closed else _INTERRUPTED
+        return BROKEN_PIPE if stdout_closed else _INTERRUPTED
     if expect:
         if not result.outcomes:
             click.echo(
@@ -345,7 +343,7 @@ class _Stdout:
     def close(self) -> None:
         """Send what is still to come (buffered output, the JSON report) nowhere, without another error at exit."""
         self.closed = True
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        discard_standard_output()
 
 
 def _scenario(paths: tuple[Path, ...], controller: ControllerProfile, dialect: Dialect) -> Scenario:

@@ -13,6 +13,7 @@ import sys
 from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
+from functools import cache
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, NoReturn
 
@@ -22,18 +23,32 @@ if TYPE_CHECKING:
     from rich.console import Console
 
 COLOR_CHOICES = ("auto", "always", "never")
+BROKEN_PIPE = 141  # 128 + SIGPIPE: what a shell reports for a writer whose reader went away (``| head``)
 
 
 def console(color: str = "auto", *, stderr: bool = False, file: IO[str] | None = None) -> Console:
     """A rich console for ``--color``: markup and highlighting of the tools' own text only, no wrapping."""
-    from rich.console import Console  # noqa: PLC0415 - rich costs a tenth of the start-up
-
     settings: dict[str, object] = {"file": file, "stderr": stderr, "highlight": False, "soft_wrap": True}
     if color == "never":
         settings["color_system"] = None
     elif color == "always":
         settings |= {"force_terminal": True, "no_color": False}
-    return Console(**settings)  # type: ignore[arg-type]
+    return _tool_console()(**settings)  # type: ignore[arg-type]
+
+
+@cache
+def _tool_console() -> type[Console]:
+    """rich's console, except that a reader that goes away ends the tool as ``reader_may_leave`` does
+    (rich's own choice is exit status 1, which says the tool failed)."""
+    from rich.console import Console  # noqa: PLC0415 - rich costs a tenth of the start-up
+
+    class ToolConsole(Console):
+        def on_broken_pipe(self) -> None:
+            self.quiet = True
+            discard_standard_output()
+            sys.exit(BROKEN_PIPE)
+
+    return ToolConsole
 
 
 def colour_console(color: str, file: IO[str]) -> Console | None:
@@ -85,6 +100,26 @@ class Messages:
 
     def _stream(self) -> IO[str]:
         return sys.stderr if self.stderr else sys.stdout
+
+
+def discard_standard_output() -> None:
+    """Send what a tool still writes to standard output (buffered text, a report) nowhere: its reader went away,
+    and Python's own flush at exit would otherwise fail once more, with a message of its own."""
+    os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+
+
+@contextmanager
+def reader_may_leave() -> Iterator[None]:
+    """A tool's whole output to standard output; a reader that stops reading (``| head -1``) ends the tool
+    quietly with ``BROKEN_PIPE``, as a shell tool killed by SIGPIPE would, not with click's exit status 1."""
+    try:
+        try:
+            yield
+        finally:  # also on sys.exit: what is still buffered must reach the reader before the status is known
+            sys.stdout.flush()
+    except BrokenPipeError:
+        discard_standard_output()
+        sys.exit(BROKEN_PIPE)
 
 
 def _isatty(file: IO[str]) -> bool:

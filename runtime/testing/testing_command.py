@@ -15,7 +15,7 @@ import click
 
 from mintlang.cli.options import refuse_quiet_and_verbose
 from mintlang.cli.parallel import all_cores, map_in_order
-from mintlang.cli.terminal import console, destination, refuse_overwriting
+from mintlang.cli.terminal import console, destination, reader_may_leave, refuse_overwriting
 from mintlang.dialect import Dialect
 from mintlang.runtime.testing import reports
 from mintlang.runtime.testing.coverage import lcov as tracefile
@@ -29,6 +29,7 @@ if TYPE_CHECKING:
 PASSED, FAILED, USAGE, NO_TESTS = 0, 1, 2, 5
 
 
+@reader_may_leave()
 def execute(  # noqa: PLR0917 - click passes every option as an argument
     paths: tuple[Path, ...],
     controller: str | None,

@@ -40,8 +40,8 @@ class Collector:
         self.errors: list[ScenarioError] = []
         self._first: dict[tuple[type, int], int] = {}  # (record kind, axis or channel) -> line first given
 
-    def error(self, line: int, message: str) -> None:
-        self.errors.append(ScenarioError(self.source, line, message))
+    def error(self, line: int, message: str, *, column: int = 0) -> None:
+        self.errors.append(ScenarioError(self.source, line, message, column))
 
     def add(self, line: int, build: Callable[[], WorldRecord | Expectation]) -> None:
         """Keep what ``build`` makes, or record why it could not."""

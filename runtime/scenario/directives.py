@@ -7,23 +7,21 @@ counts and text inside a string never does.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 from functools import partial
 from typing import cast
 
+from mintlang.analysis.suggestions import did_you_mean
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
 from mintlang.runtime.scenario import builders
 from mintlang.runtime.scenario.collect import Collector
+from mintlang.runtime.scenario.directive_words import DIRECTIVE, meant_kind
 from mintlang.runtime.scenario.expectations import Comparison, Expectation, Origin
 from mintlang.runtime.scenario.phrase import Phrase, to_number
 from mintlang.runtime.scenario.problems import Invalid, ScenarioError
 from mintlang.runtime.scenario.stimulus import PlantModel, Scenario, WorldRecord
 from mintlang.syntax.lexer import lex
-
-# REM, or MintMT's ' (which the lexer makes a comment only in MintMT, where v4 has character constants).
-_DIRECTIVE = re.compile(r"(?:REM|')\s*@(?P<kind>sim|expect)\b(?P<body>.*)", re.IGNORECASE)
 
 
 def parse_directives(
@@ -42,11 +40,16 @@ def parse_directives(
     for number, (_, line) in enumerate(lex(source_text, dialect).lines, start=1):
         if line.comment_start < 0:
             continue
-        found = _DIRECTIVE.match(line.text, line.comment_start, line.content_end)
-        if found is None:
+        found = DIRECTIVE.match(line.text, line.comment_start, line.content_end)
+        kind = meant_kind(found["word"]) if found is not None else None
+        if found is None or kind is None:
+            continue
+        if kind != found["word"].lower():
+            message = f"unknown directive '@{found['word']}'; {did_you_mean('@' + kind)}"
+            collector.error(number, message, column=found.start("word"))  # the column of its @, from 1
             continue
         phrase = Phrase(found["body"])
-        if found["kind"].lower() == "sim":
+        if kind == "sim":
             collector.add(number, partial(_world, phrase))
         else:
             collector.add(number, partial(_expectation, phrase, Origin(source, number), dialect))

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import re
 
+from mintlang.analysis.suggestions import closest, did_you_mean
 from mintlang.runtime.scenario.problems import Invalid
 
 _WORD = re.compile(r'"(?:[^"\\]|\\.)*"?|<=|>=|<>|[<>=±]|\+-|[^\s"<>=±(]+(?:\([^)]*\)?)?|\S')
@@ -72,7 +73,9 @@ class Phrase:
     def choice(self, what: str, choices: tuple[str, ...]) -> str:
         word = self.word(what).lower()
         if word not in choices:
-            raise Invalid(f"expected {what} ({', '.join(choices)}), not {word!r}")
+            meant = closest(word, choices)
+            hint = f"; {did_you_mean(meant)}" if meant is not None else ""
+            raise Invalid(f"expected {what} ({', '.join(choices)}), not {word!r}{hint}")
         return word
 
     def number(self, what: str) -> float:

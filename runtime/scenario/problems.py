@@ -13,14 +13,17 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True, slots=True)
 class ScenarioError:
-    """One mistake: ``source`` is a file path or ``"program"``; ``line`` 0 means the whole source."""
+    """One mistake: ``source`` is a file path or ``"program"``; ``line`` 0 means the whole source, ``column``
+    (from 1) 0 the whole line."""
 
     source: str
     line: int
     message: str
+    column: int = 0
 
     def __str__(self) -> str:
         where = f"{self.source}:{self.line}" if self.line else self.source
+        where += f":{self.column}" if self.line and self.column else ""
         return f"{where}: {self.message}"
 
 

@@ -3,17 +3,16 @@
 from __future__ import annotations
 
 import os
-import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
 from mintlang.cli.files import find
 from mintlang.pairing import listed_as, names_in
+from mintlang.runtime.scenario.directive_words import DIRECTIVE, meant_kind
 from mintlang.source import read_source
 
 SCENARIO_SUFFIX = ".scenario.toml"
-_EXPECTATION = re.compile(r"(?:\bREM|')\s*@expect\b", re.IGNORECASE)
 
 
 @dataclass(frozen=True, slots=True)
@@ -94,4 +93,9 @@ def _case(program: Path, problems: list[Unreadable]) -> TestCase | None:
     if (binary := source.binary()) is not None:
         problems.append(Unreadable(binary))
         return None
-    return TestCase(program, None) if _EXPECTATION.search(source.text) else None
+    return TestCase(program, None) if _expects(source.text) else None
+
+
+def _expects(text: str) -> bool:
+    """Whether ``text`` has an ``@expect`` line, or one meant to be (its run then reports the misspelling)."""
+    return any(meant_kind(found["word"]) == "expect" for found in DIRECTIVE.finditer(text))

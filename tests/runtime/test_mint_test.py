@@ -38,6 +38,15 @@ def test_a_program_is_a_test_with_expectations_in_it_or_a_scenario_file_beside_i
     assert unreadable == []
 
 
+def test_a_program_whose_only_expectation_is_misspelt_is_a_test_in_error(tmp_path: Path) -> None:
+    """Taken for a plain program, it would drop out of the run without a word."""
+    program = _write(tmp_path, "typo.mnt", "DIM a\nREM @expext a = 1\n")
+    result = _mint_test(tmp_path, "--color", "never")
+    assert result.exit_code == 1
+    expected = f"ERROR  {program}  {program}:2:5: unknown directive '@expext'; did you mean '@expect'?"
+    assert result.output.splitlines()[0] == expected
+
+
 def test_each_test_is_passed_failed_or_an_error_and_the_summary_counts_them(tmp_path: Path) -> None:
     _write(tmp_path, "a_passes.mnt", PASSING)
     _write(tmp_path, "b_fails.mnt", FAILING)

@@ -59,6 +59,31 @@ def test_other_at_words_in_comments_are_left_alone() -> None:
     assert scenario("REM @author someone\nREM @simple\nREM sim input 1 1 at 0\n") == Scenario()
 
 
+@pytest.mark.parametrize(
+    ("comment", "meant"),
+    [
+        ("REM @expext a = 1", "@expect"),  # a letter changed
+        ("REM @exepct a = 1", "@expect"),  # two neighbours swapped
+        ("REM @expects a = 1", "@expect"),  # a letter added
+        ("REM @Expected a = 1", "@expect"),
+        ("REM @sims fastin 0 at 10", "@sim"),
+        ("' @smi fastin 0 at 10", "@sim"),  # MintMT's comment
+    ],
+)
+def test_a_misspelt_directive_is_an_error_at_its_at_sign_with_the_word_meant(comment: str, meant: str) -> None:
+    word = comment.split()[1]
+    problems = parse_directives(f"DIM a\n{comment}\n", dialect="mintmt" if comment[0] == "'" else "v4")[1]
+    column = comment.index("@") + 1
+    message = f"unknown directive '{word}'; did you mean '{meant}'?"
+    assert problems == [ScenarioError("program", 2, message, column)]
+    assert str(problems[0]) == f"program:2:{column}: {message}"
+
+
+def test_a_misspelt_directive_after_a_statement_is_found_at_its_column() -> None:
+    problems = errors("DIM a : REM @expekt a = 0\n")
+    assert [(problem.line, problem.column) for problem in problems] == [(1, 13)]
+
+
 # ---------------------------------------------------------------- every directive of W-2
 
 
@@ -220,6 +245,10 @@ def test_a_bad_directive_is_an_error_at_its_line(directive: str, message: str) -
         ("stopped somewhere", "a run stops for one of end, error, until, deadlock, wall-limit, not 'somewhere'"),
         ("count = 1 ± -1", "a tolerance is not negative, not -1"),
         ('terminal has "x"', "expected 'contains' or 'is' (contains, is), not 'has'"),
+        (
+            'terminal contians "x"',
+            "expected 'contains' or 'is' (contains, is), not 'contians'; did you mean 'contains'?",
+        ),
     ],
 )
 def test_a_bad_expectation_is_an_error_at_its_line(sentence: str, message: str) -> None:

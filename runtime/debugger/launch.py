@@ -143,9 +143,15 @@ class Layout:
     sites: tuple[Site, ...] = ()
     labels: Mapping[str, int] = field(default_factory=dict)
     columns: tuple[int, ...] = ()  # each statement's 1-based column, so a stop shows which of a line's it is
+    block_ends: Mapping[int, int] = field(default_factory=dict)  # a MintMT Event block's first statement -> its end
 
     def column(self, pc: int) -> int:
         return self.columns[pc] if pc < len(self.columns) else 1
+
+    def holds(self, start: int, pc: int) -> bool:
+        """Whether the code of the label at ``start`` holds ``pc``: a v4 label's runs on to the next label, a
+        MintMT Event block's stops at its End Event (the code after it is the program's again, MT-7)."""
+        return start <= pc <= self.block_ends.get(start, pc)
 
 
 class _Compiled(Exception):
@@ -159,7 +165,8 @@ def layout(application: Application) -> Layout:
 
     def compiled(controller: Controller) -> None:
         sites = tuple(controller.vm.sites)
-        raise _Compiled(Layout(sites, dict(controller.linked.handlers), _columns(application, sites)))
+        labels = dict(controller.linked.handlers)
+        raise _Compiled(Layout(sites, labels, _columns(application, sites), _event_block_ends(sites)))
 
     try:
         application.run(compiled)
@@ -168,6 +175,20 @@ def layout(application: Application) -> Layout:
     except ScenarioFileError as error:  # a REM @sim directive the scenario cannot read
         raise LaunchError(str(error)) from None
     return Layout()
+
+
+def _event_block_ends(sites: tuple[Site, ...]) -> dict[int, int]:
+    """Each MintMT Event block's first statement and its End Event: Event blocks stand alone, never one inside
+    another (MT-13), so each ends at the first End Event after it."""
+    ends: dict[int, int] = {}
+    start: int | None = None
+    for pc, site in enumerate(sites):
+        if site.kind == "EventBlock":
+            start = pc + 1
+        elif start is not None and site.kind == "BlockWord" and "".join(site.text.split()).upper() == "ENDEVENT":
+            ends[start] = pc
+            start = None
+    return ends
 
 
 def _columns(application: Application, sites: tuple[Site, ...]) -> tuple[int, ...]:

@@ -295,12 +295,13 @@ class Session:
         return frame
 
     def _routine(self, pc: int, site: Site | None, controller: Controller) -> str:
-        """The name of the subroutine or handler holding ``pc``: the nearest label at or before it in its file."""
+        """The name of the subroutine or handler holding ``pc``: the nearest label at or before it in its file
+        whose code holds it."""
         if site is None:
             return "program"
         linked = controller.linked
         labels = linked.handlers if site.unit == "program" else linked.configuration_handlers
-        before = [(start, label) for label, start in labels.items() if start <= pc]
+        before = [(start, label) for label, start in labels.items() if self.layout.holds(start, pc)]
         if not before:
             return site.unit
         _, label = max(before)

@@ -31,6 +31,29 @@ def test_next_runs_a_gosub_through_and_step_in_enters_it(debug: Debug) -> None:
     assert [frame["name"] for frame in client.frames()] == ["#outer", "program"]
 
 
+EVENT_FIRST = """\
+DIM hits
+Event Comms1
+  hits = hits + 1
+End Event
+REM @sim host write 1 "7" at 5
+Loop
+  If hits > 0 Then Exit
+End Loop
+Print hits
+"""
+
+
+def test_the_program_after_a_mintmt_event_block_is_the_program_not_the_handler(debug: Debug) -> None:
+    # An Event block ends at its End Event: the code after it is the main program, which steps over the block
+    # (MT-7), and the host's write to comms location 1 calls it (002:77-86)
+    client = debug(EVENT_FIRST, dialect="mintmt", breakpoints=(3, 9))
+    client.stopped()
+    assert [frame["name"] for frame in client.frames()] == ["#Comms1", "program"]
+    client.step("continue")
+    assert [(frame["name"], frame["line"]) for frame in client.frames()] == [("program", 9)]
+
+
 def test_the_stack_shows_each_gosub_with_the_line_it_was_called_from(debug: Debug) -> None:
     client = debug(CALLS, breakpoints=(11,))
     client.stopped()

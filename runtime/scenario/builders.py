@@ -63,22 +63,22 @@ DEFAULT_NODE = 2  # the controller's NODE at power-up (W-3)
 _OPERATORS: tuple[str, ...] = get_args(EncoderOperator)
 
 
-def _at_least(what: str, value: int, minimum: int) -> int:
+def _at_least(what: str, value: int, minimum: int, key: str) -> int:
     if value < minimum:
-        raise Invalid(f"{what} must be at least {minimum}, not {value}")
+        raise Invalid(f"{what} must be at least {minimum}, not {value}", key=key)
     return value
 
 
 def _time(time_ms: int) -> int:
-    return _at_least("a time in ms", time_ms, 0)
+    return _at_least("a time in ms", time_ms, 0, "at_ms")
 
 
 def _channel(channel: int) -> int:
-    return _at_least("a channel", channel, 0)
+    return _at_least("a channel", channel, 0, "channel")
 
 
 def _axis(axis: int) -> int:
-    return _at_least("an axis", axis, 0)
+    return _at_least("an axis", axis, 0, "axis")
 
 
 def plant(axis: int, model: str, parameters: Mapping[str, float]) -> PlantChoice:
@@ -97,25 +97,28 @@ def plant(axis: int, model: str, parameters: Mapping[str, float]) -> PlantChoice
 
 def input_level(time_ms: int, channel: int, level: int) -> InputLevel:
     if level not in (0, 1):
-        raise Invalid(f"an input level is 0 or 1, not {level}")
+        raise Invalid(f"an input level is 0 or 1, not {level}", key="level")
     return InputLevel(_time(time_ms), _channel(channel), level)
 
 
 def position_input(channel: int, condition: Phrase) -> PositionInput:
-    """An input driven by ``enc <axis> <op> <counts>``, the rest of ``condition``."""
-    condition.keyword("enc")
-    axis = condition.integer("an axis")
-    operator = condition.choice("a comparison", _OPERATORS)
-    counts = condition.integer("a count")
-    condition.end()
-    return PositionInput(_channel(channel), _axis(axis), cast(EncoderOperator, operator), counts)
+    """An input driven by ``enc <axis> <op> <counts>``, the rest of ``condition`` (a file's ``when``)."""
+    try:
+        condition.keyword("enc")
+        axis = _axis(condition.integer("an axis"))
+        operator = condition.choice("a comparison", _OPERATORS)
+        counts = condition.integer("a count")
+        condition.end()
+    except Invalid as problem:
+        raise Invalid(str(problem), key="when") from None
+    return PositionInput(_channel(channel), axis, cast(EncoderOperator, operator), counts)
 
 
 def index_pulse(axis: int, every_counts: int, width_counts: int = 1) -> IndexPulse:
-    every = _at_least("the counts between index pulses", every_counts, 1)
-    width = _at_least("an index pulse width", width_counts, 1)
+    every = _at_least("the counts between index pulses", every_counts, 1, "every")
+    width = _at_least("an index pulse width", width_counts, 1, "width")
     if width >= every:
-        raise Invalid(f"an index pulse {width} counts wide does not fit in every {every} counts")
+        raise Invalid(f"an index pulse {width} counts wide does not fit in every {every} counts", key="width")
     return IndexPulse(_axis(axis), every, width)
 
 
@@ -125,19 +128,20 @@ def fast_input(time_ms: int, channel: int) -> FastInput:
 
 def adc_level(time_ms: int, channel: int, percent: float) -> AdcLevel:
     if not -100 <= percent <= 100:
-        raise Invalid(f"an ADC level is a percentage from -100 to 100, not {percent:g}")
+        raise Invalid(f"an ADC level is a percentage from -100 to 100, not {percent:g}", key="percent")
     return AdcLevel(_time(time_ms), _channel(channel), percent)
 
 
 def keys(time_ms: int, text: str) -> Keys:
     if not text:
-        raise Invalid("the keys to type are empty")
+        raise Invalid("the keys to type are empty", key="text")
     return Keys(_time(time_ms), text)
 
 
 def _packet(time_ms: int, encode: Callable[[], bytes]) -> HostPacket:
+    at_ms = _time(time_ms)
     try:
-        return HostPacket(_time(time_ms), encode())
+        return HostPacket(at_ms, encode())
     except ValueError as problem:  # the encoder's word for an address, node or text a packet cannot carry
         raise Invalid(f"cannot build the host packet: {problem}") from None
 
@@ -156,9 +160,10 @@ def host_raw(time_ms: int, hex_bytes: str) -> HostPacket:
     try:
         data = bytes.fromhex(hex_bytes)
     except ValueError:
-        raise Invalid(f"raw host bytes are pairs of hex digits such as '04 32 32', not {hex_bytes!r}") from None
+        message = f"raw host bytes are pairs of hex digits such as '04 32 32', not {hex_bytes!r}"
+        raise Invalid(message, key="raw") from None
     if not data:
-        raise Invalid("raw host bytes are empty")
+        raise Invalid("raw host bytes are empty", key="raw")
     return HostPacket(_time(time_ms), data)
 
 
@@ -174,14 +179,18 @@ def value_expectation(
 ) -> ValueExpectation:
     """``what`` is named in the program's ``dialect``."""
     if tolerance < 0:
-        raise Invalid(f"a tolerance is not negative, not {tolerance:g}")
-    return ValueExpectation(target(what, dialect), comparison, value, tolerance, _when(at_ms), origin)
+        raise Invalid(f"a tolerance is not negative, not {tolerance:g}", key="tolerance")
+    try:
+        read = target(what, dialect)
+    except Invalid as problem:
+        raise Invalid(str(problem), key="what") from None
+    return ValueExpectation(read, comparison, value, tolerance, _when(at_ms), origin)
 
 
 def terminal_expectation(text: str, at_ms: int | None, origin: Origin, *, exact: bool = False) -> TerminalExpectation:
     """Text to find in the terminal output, or (``exact``) all the output: then it may be empty."""
     if not text and not exact:
-        raise Invalid("the terminal text to look for is empty")
+        raise Invalid("the terminal text to look for is empty", key="terminal_contains")
     return TerminalExpectation(text, _when(at_ms), origin, exact)
 
 
@@ -191,7 +200,7 @@ def drives_enabled() -> DrivesEnabled:
 
 def stopped_expectation(reason: str, origin: Origin) -> StoppedExpectation:
     if reason not in STOP_REASONS:
-        raise Invalid(f"a run stops for one of {', '.join(STOP_REASONS)}, not {reason!r}")
+        raise Invalid(f"a run stops for one of {', '.join(STOP_REASONS)}, not {reason!r}", key="stopped")
     return StoppedExpectation(reason, origin)
 
 

@@ -43,14 +43,21 @@ class Collector:
     def error(self, line: int, message: str, *, column: int = 0) -> None:
         self.errors.append(ScenarioError(self.source, line, message, column))
 
-    def add(self, line: int, build: Callable[[], WorldRecord | Expectation]) -> None:
-        """Keep what ``build`` makes, or record why it could not."""
+    def add(
+        self,
+        line: int,
+        build: Callable[[], WorldRecord | Expectation],
+        line_of: Callable[[str], int] | None = None,
+    ) -> None:
+        """Keep what ``build`` makes, or record why it could not: at the line of the key at fault when
+        ``line_of`` finds it (a file's table), else at ``line``."""
         try:
             record = build()
             if self.controller is not None:
                 check_reach(record, self.controller)
         except Invalid as problem:
-            self.error(problem.line or line, str(problem))
+            at_key = line_of(problem.key) if line_of is not None and problem.key is not None else None
+            self.error(problem.line or at_key or line, str(problem))
             return
         once = _once(record)
         if once is not None:

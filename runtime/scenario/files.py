@@ -13,6 +13,7 @@ from collections.abc import Callable, Mapping
 from functools import partial
 from pathlib import Path
 
+from mintlang.analysis.suggestions import closest, did_you_mean
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
 from mintlang.runtime.scenario import builders
@@ -103,11 +104,15 @@ class _Entry:
 def _one_of(entry: _Entry, keys: tuple[str, ...]) -> str:
     """The one key of ``keys`` the entry has; an entry has exactly one."""
     present = [key for key in keys if key in entry]
-    if len(present) != 1:
+    if len(present) > 1:
+        raise Invalid(f"{entry.name} has both {' and '.join(present)}", entry.line_of(present[-1]))
+    if not present:
+        problem = f"{entry.name} needs one of {', '.join(keys)}"
+        meant = {key: closest(key, keys) for key in entry.written()}
+        if misspelt := next((key for key, known in meant.items() if known is not None), None):
+            raise Invalid(f"{problem}; {did_you_mean(str(meant[misspelt]))}", entry.line_of(misspelt))
         written = [repr(key) for key in entry.written()]
-        unknown = f" (it has {', '.join(written)})" if written else ""
-        problem = "has both " + " and ".join(present) if present else "needs one of " + ", ".join(keys) + unknown
-        raise Invalid(f"{entry.name} {problem}", entry.line_of(present[-1]) if present else entry.origin.line)
+        raise Invalid(problem + (f" (it has {', '.join(written)})" if written else ""), entry.origin.line)
     return present[0]
 
 
@@ -230,7 +235,7 @@ def _read(document: Mapping[str, object], layout: Layout, collector: Collector) 
         elif name in _ARRAYS and isinstance(value, list) and all(isinstance(item, dict) for item in value):
             for index, table in enumerate(value):
                 entry = _Entry(f"[[{name}]]", table, layout.entry(name, index), collector.source, collector.dialect)
-                collector.add(entry.origin.line, partial(_ARRAYS[name], entry))
+                collector.add(entry.origin.line, partial(_ARRAYS[name], entry), entry.line_of)
         elif name == "drives":
             collector.add(layout.top_line(name), partial(_drives, value))
         elif name in _ARRAYS or name == "plant":

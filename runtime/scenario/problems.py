@@ -36,8 +36,13 @@ class ScenarioFileError(Exception):
 
 
 class Invalid(ValueError):
-    """A phrase or value that breaks the scenario grammar; the front end adds the position unless ``line`` is known."""
+    """A phrase or value that breaks the scenario grammar; the front end adds the position unless ``line`` is known.
 
-    def __init__(self, message: str, line: int | None = None) -> None:
+    ``key`` names the value at fault as a scenario file's key does (``level``, ``at_ms``), so that the file
+    front end can blame the key's line rather than its table's header; a directive is one line anyway.
+    """
+
+    def __init__(self, message: str, line: int | None = None, *, key: str | None = None) -> None:
         super().__init__(message)
         self.line = line
+        self.key = key

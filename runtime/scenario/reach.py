@@ -23,9 +23,11 @@ from mintlang.runtime.scenario.stimulus import (
 )
 
 
-def _has(controller: ControllerProfile, what: str, number: int, numbers: Container[int], listed: str) -> None:
+def _has(  # noqa: PLR0917 - the message names each
+    controller: ControllerProfile, what: str, number: int, numbers: Container[int], listed: str, key: str
+) -> None:
     if number not in numbers:
-        raise Invalid(f"the {controller.title} has no {what} {number} (it has {listed})")
+        raise Invalid(f"the {controller.title} has no {what} {number} (it has {listed})", key=key)
 
 
 def check_reach(record: WorldRecord | Expectation, controller: ControllerProfile) -> None:
@@ -33,13 +35,14 @@ def check_reach(record: WorldRecord | Expectation, controller: ControllerProfile
     axes, inputs, adc, fast = controller.axes, controller.digital_inputs, controller.adc, controller.fast_inputs
     match record:
         case PlantChoice(axis=axis) | IndexPulse(axis=axis):
-            _has(controller, "axis", axis, axes, f"axes {axes}")
+            _has(controller, "axis", axis, axes, f"axes {axes}", "axis")
         case InputLevel(channel=channel):
-            _has(controller, "input", channel, inputs, f"inputs {inputs}")
+            _has(controller, "input", channel, inputs, f"inputs {inputs}", "channel")
         case PositionInput(channel=channel, axis=axis):
-            _has(controller, "input", channel, inputs, f"inputs {inputs}")
-            _has(controller, "axis", axis, axes, f"axes {axes}")
+            _has(controller, "input", channel, inputs, f"inputs {inputs}", "channel")
+            _has(controller, "axis", axis, axes, f"axes {axes}", "when")
         case FastInput(channel=channel):
-            _has(controller, "fast input", channel, fast, f"fast inputs {', '.join(map(str, sorted(fast)))}")
+            fast_listed = f"fast inputs {', '.join(map(str, sorted(fast)))}"
+            _has(controller, "fast input", channel, fast, fast_listed, "channel")
         case AdcLevel(channel=channel):
-            _has(controller, "ADC channel", channel, adc, f"ADC channels {adc}")
+            _has(controller, "ADC channel", channel, adc, f"ADC channels {adc}", "channel")

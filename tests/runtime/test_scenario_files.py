@@ -173,13 +173,23 @@ def test_unknown_tables_and_keys_are_named(tmp_path: Path) -> None:
     [
         ("[[input]]\nchannel = 3\nlevel = 1", 2, "[[input]] needs at_ms"),
         ("[[input]]\nchannel = 3\nlevel = true\nat_ms = 0", 4, "level must be a whole number, not True"),
-        ("[[input]]\nchannel = 3\nlevel = 2\nat_ms = 0", 2, "an input level is 0 or 1, not 2"),
+        ("[[input]]\nchannel = 3\nlevel = 2\nat_ms = 0", 4, "an input level is 0 or 1, not 2"),
+        ("[[input]]\nchannel = -1\nlevel = 1\nat_ms = 0", 3, "a channel must be at least 0, not -1"),
+        ("[[input]]\nchannel = 3\nlevel = 1\nat_ms = -5", 5, "a time in ms must be at least 0, not -5"),
         (
             "[[input]]\nchannel = 5\nwhen = 'enc 0 >= 5'\nlevel = 1",
             5,
             "unknown key 'level' in [[input]]; it takes channel, when",
         ),
-        ("[[input]]\nchannel = 5\nwhen = 'enc x >= 5'", 2, "expected an axis as a whole number, not 'x'"),
+        ("[[input]]\nchannel = 5\nwhen = 'enc x >= 5'", 4, "expected an axis as a whole number, not 'x'"),
+        ("[[input]]\nchannel = 5\nwhen = 'enc -1 >= 5'", 4, "an axis must be at least 0, not -1"),
+        ("[[index]]\naxis = 0\nevery = 0", 4, "the counts between index pulses must be at least 1, not 0"),
+        ("[[index]]\naxis = 0\nevery = 4\nwidth = 4", 5, "an index pulse 4 counts wide does not fit in every 4 counts"),
+        ("[[index]]\naxis = -2\nevery = 4", 3, "an axis must be at least 0, not -2"),
+        ("[[fastin]]\nchannel = 0\nat_ms = -3", 4, "a time in ms must be at least 0, not -3"),
+        ("[[adc]]\nchannel = 0\npercent = 150\nat_ms = 0", 4, "an ADC level is a percentage from -100 to 100, not 150"),
+        ("[[host]]\nraw = '0g'\nat_ms = 0", 3, "raw host bytes are pairs of hex digits such as '04 32 32', not '0g'"),
+        ("[[host]]\nread = 1\nat_ms = -1", 4, "a time in ms must be at least 0, not -1"),
         ("[[adc]]\nchannel = 0\npercent = 'half'\nat_ms = 0", 4, "percent must be a number, not 'half'"),
         ("[[key]]\ntext = 1\nat_ms = 0", 3, "text must be text in quotes, not 1"),
         ("[[host]]\nat_ms = 0", 2, "[[host]] needs one of write, read, raw (it has 'at_ms')"),
@@ -192,8 +202,21 @@ def test_unknown_tables_and_keys_are_named(tmp_path: Path) -> None:
         ),
         (
             "[[expect]]\nwaht = 'a'\nequals = 1",
+            3,
+            "[[expect]] needs one of what, terminal_contains, terminal_is, stopped; did you mean 'what'?",
+        ),
+        (
+            "[[expect]]\nvalue = 'a'\nequals = 1",
             2,
-            "[[expect]] needs one of what, terminal_contains, terminal_is, stopped (it has 'waht', 'equals')",
+            "[[expect]] needs one of what, terminal_contains, terminal_is, stopped (it has 'value', 'equals')",
+        ),
+        ("[[expect]]\nwhat = 'POS.0'\nequals = 1\ntolerance = -1", 5, "a tolerance is not negative, not -1"),
+        ("[[expect]]\nwhat = 'POS.0'\nequals = 1\nat_ms = -1", 5, "a time in ms must be at least 0, not -1"),
+        ("[[expect]]\nterminal_contains = ''", 3, "the terminal text to look for is empty"),
+        (
+            "[[expect]]\nstopped = 'never'",
+            3,
+            "a run stops for one of end, error, until, deadlock, wall-limit, not 'never'",
         ),
         (
             "[[expect]]\nwhat = 'POS.0'",
@@ -206,7 +229,7 @@ def test_unknown_tables_and_keys_are_named(tmp_path: Path) -> None:
             "at is \"end\"; for a time write at_ms = <ms>, not at = 'start'",
         ),
         ("[[expect]]\nwhat = 'POS.0'\nequals = 1\nat = 'end'\nat_ms = 5", 6, "[[expect]] has both at and at_ms"),
-        ("[[expect]]\nwhat = 'SIN'\nequals = 1", 2, "SIN is a function, not a value to expect"),
+        ("[[expect]]\nequals = 1\nwhat = 'SIN'", 4, "SIN is a function, not a value to expect"),
         ("[[expect]]\nstopped = 'end'\nat_ms = 5", 4, "unknown key 'at_ms' in [[expect]]; it takes stopped"),
         ("[plant]\nx = 'ideal'", 3, "the keys of [plant] are axis numbers, not 'x'"),
         ("[plant]\n0 = 'velamp'", 3, "plant velamp needs k"),
@@ -231,15 +254,15 @@ def test_a_mistake_is_reported_at_its_line(tmp_path: Path, entry: str, line: int
 
 def test_every_mistake_of_a_file_is_reported_at_once_in_line_order(tmp_path: Path) -> None:
     text = "[[expect]]\nstopped = 'never'\n\n[plant]\n0 = 'wobbly'\n"
-    assert [line for line, _ in problems(tmp_path, text)] == [1, 5]
+    assert [line for line, _ in problems(tmp_path, text)] == [2, 5]
 
 
 def test_the_error_message_lists_file_and_line(tmp_path: Path) -> None:
     path = write(tmp_path, "[[key]]\ntext = ''\nat_ms = 0\n")
     with pytest.raises(ScenarioFileError) as raised:
         load_scenario(path)
-    assert raised.value.errors == (ScenarioError(str(path), 1, "the keys to type are empty"),)
-    assert str(raised.value) == f"{path}:1: the keys to type are empty"
+    assert raised.value.errors == (ScenarioError(str(path), 2, "the keys to type are empty"),)
+    assert str(raised.value) == f"{path}:2: the keys to type are empty"
 
 
 # ---------------------------------------------------------------- the documentation

@@ -35,13 +35,18 @@ def test_the_same_directive_fits_a_controller_that_has_the_channel() -> None:
     assert errors == []
 
 
-def test_a_file_entry_beyond_the_controller_names_its_table_line(tmp_path: Path) -> None:
+def test_a_file_entry_beyond_the_controller_names_the_line_of_its_channel_or_axis(tmp_path: Path) -> None:
     path = tmp_path / "ranges.toml"
-    path.write_text("[[input]]\nchannel = 1\nlevel = 1\nat_ms = 5\n\n[[adc]]\nchannel = 50\npercent = 5\nat_ms = 1\n")
+    path.write_text(
+        "[[input]]\nchannel = 1\nlevel = 1\nat_ms = 5\n\n[[adc]]\npercent = 5\nchannel = 50\nat_ms = 1\n"
+        "\n[[input]]\nchannel = 2\nwhen = 'enc 99 >= 5'\n\n[[index]]\nevery = 100\naxis = 9\n"
+    )
     with pytest.raises(ScenarioFileError) as raised:
         load_scenario(path, BX)
     assert [(error.line, error.message) for error in raised.value.errors] == [
-        (6, "the NextMove BX has no ADC channel 50 (it has ADC channels 0 to 7)")
+        (8, "the NextMove BX has no ADC channel 50 (it has ADC channels 0 to 7)"),
+        (13, "the NextMove BX has no axis 99 (it has axes 0 to 7)"),
+        (17, "the NextMove BX has no axis 9 (it has axes 0 to 7)"),
     ]
 
 

@@ -82,6 +82,7 @@ class LineFacts:
     elements: tuple[n.ElementRef, ...]
     names: tuple[NameEvent, ...]
     kinds: frozenset[type]  # the types of its statements: passes that look for a few skip the other lines
+    calls: tuple[n.Call, ...]  # as statements (``CAMTABLE(0, a, NULL)``) and in expressions, in source order
 
 
 class _Walker:
@@ -89,6 +90,7 @@ class _Walker:
         self.uses: list[KeywordUse] = []
         self.elements: list[tuple[Unit, n.ElementRef]] = []
         self.names: list[NameEvent] = []
+        self.calls: list[n.Call] = []
 
     def statement(self, unit: Unit, statement: n.Statement) -> None:
         kind = type(statement)  # exact-type dispatch: this runs for every statement of every check
@@ -98,6 +100,8 @@ class _Walker:
             self.uses.append(KeywordUse(unit, statement, keyword, use))
             if keyword.keyword != "PROTECT" or use is Use.WRITE:  # PROTECT <password>: not a variable
                 self.expressions(unit, statement)
+            else:  # though a call in it is still a call
+                self.calls.extend(self._calls(statement))
         elif kind is n.Dim:
             self.expressions(unit, statement)
             size = statement.size  # type: ignore[union-attr]
@@ -115,10 +119,17 @@ class _Walker:
         elif kind is n.BareName:
             self.names.append(NameEvent(unit, statement.name, NameUse.BARE, False))  # type: ignore[union-attr]
         elif kind is not n.BlockWord:
+            if kind is n.FunctionStatement:
+                self.calls.append(statement.call)  # type: ignore[union-attr]
             self.expressions(unit, statement)
 
+    @staticmethod
+    def _calls(statement: n.Statement) -> Iterator[n.Call]:
+        for expression in n.expressions_of(statement):
+            yield from (node for node in n.walk_expression(expression) if type(node) is n.Call)  # type: ignore[misc]
+
     def expressions(self, unit: Unit, statement: n.Statement) -> None:
-        names, uses, elements = self.names, self.uses, self.elements
+        names, uses, elements, calls = self.names, self.uses, self.elements, self.calls
         for expression in n.expressions_of(statement):
             if type(expression) in _CONSTANTS:
                 continue  # most values are plain numbers: no walk needed
@@ -131,6 +142,8 @@ class _Walker:
                 elif kind is n.ElementRef:
                     elements.append((unit, node))  # type: ignore[arg-type]
                     names.append(NameEvent(unit, node.name, NameUse.READ, True))  # type: ignore[union-attr]
+                elif kind is n.Call:
+                    calls.append(node)  # type: ignore[arg-type]
 
 
 def index_syntax(documents: Iterable[tuple[Unit, Document]]) -> SyntaxIndex:
@@ -230,6 +243,6 @@ def line_facts(unit: Unit, line: n.PlacedLine) -> LineFacts:
     elements = tuple(element for _, element in walker.elements)
     kinds = frozenset(map(type, statements))
     kinds = _kind_sets.setdefault(kinds, kinds)
-    facts = LineFacts(statements, tuple(walker.uses), elements, tuple(walker.names), kinds)
+    facts = LineFacts(statements, tuple(walker.uses), elements, tuple(walker.names), kinds, tuple(walker.calls))
     cache.put(line.content, facts)
     return facts

@@ -16,7 +16,6 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.rules.functions import calls_in
 from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.dialect import Dialect
 from mintlang.semantic.constants import constant_integer, constant_value
@@ -71,7 +70,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
 
 
 def _comms_elements(scope: LineScope) -> Iterator[Finding]:
-    for call in calls_in(scope.facts.statements):
+    for call in scope.facts.calls:
         element = _comms_element(call, scope)
         if element is not None and element[1] not in _COMMS_ELEMENTS:
             detail = f"COMMS element {element[1]} does not exist: the Comms array's elements are 1 to 255"

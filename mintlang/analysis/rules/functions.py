@@ -53,7 +53,7 @@ class _Statements:
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
-    for call in calls_in(scope.facts.statements):
+    for call in scope.facts.calls:
         arity = _arity(call.function, scope.dialect)
         if arity is not None and not arity.holds(len(call.arguments)):
             given = len(call.arguments)
@@ -75,17 +75,6 @@ def _as_statement(scope: LineScope, statement: n.FunctionStatement) -> Iterator[
     elif statement.values is None and not forms.alone:
         what = "read or given a value here" if forms.assigned else f"read here, as in 'v = {call.function}(…)'"
         yield Finding(scope.unit, mint_error(2005, call.spelling_span, f"{call.function} must be {what}"))
-
-
-def calls_in(statements: tuple[n.Statement, ...]) -> Iterator[n.Call]:
-    """Every call a line makes: in its expressions, and as a statement (``CAMTABLE(0, a, NULL)``)."""
-    for statement in statements:
-        if type(statement) is n.FunctionStatement:
-            yield statement.call
-        for expression in n.expressions_of(statement):
-            for node in n.walk_expression(expression):
-                if type(node) is n.Call:
-                    yield node
 
 
 @cache

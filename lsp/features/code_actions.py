@@ -32,8 +32,10 @@ def _edits(snapshot: Snapshot, edits: tuple[mintlang.Edit, ...]) -> types.Worksp
 
 
 def quick_fixes(snapshot: Snapshot, selection: types.Range) -> Iterator[types.CodeAction]:
-    """The fixes of the diagnostics in ``selection``, each once: one DIM declares a name for all its uses."""
+    """The fixes of the diagnostics in ``selection``, each once: one DIM declares a name for all its uses, and
+    one "Ignore" comment silences a code for every diagnostic of it on its line."""
     start, end = snapshot.positions.span(selection)
+    several_lines = selection.start.line != selection.end.line
     offered: set[tuple[str, tuple[mintlang.Edit, ...]]] = set()
     for diagnostic in snapshot.diagnostics:
         if not _overlaps(diagnostic.span, start, end):
@@ -49,14 +51,20 @@ def quick_fixes(snapshot: Snapshot, selection: types.Range) -> Iterator[types.Co
                 edit=_edits(snapshot, fix.edits),
                 is_preferred=len(diagnostic.fixes) == 1,
             )
-        if diagnostic.code != UNUSED_SUPPRESSION:  # its own fix removes the comment
-            ignore = suppression_fix(snapshot.document, diagnostic.span.start, diagnostic.code)
-            yield types.CodeAction(
-                title=ignore.title,
-                kind=types.CodeActionKind.QuickFix,
-                diagnostics=[to_lsp(diagnostic, snapshot)],
-                edit=_edits(snapshot, ignore.edits),
-            )
+        if diagnostic.code == UNUSED_SUPPRESSION:  # its own fix removes the comment
+            continue
+        # Over several lines, "on this line" would not say which: ruff's "Disable for this line" leaves such
+        # titles alike, and an editor lists the actions without their lines.
+        ignore = suppression_fix(snapshot.document, diagnostic.span.start, diagnostic.code, name_the_line=several_lines)
+        if (ignore.title, ignore.edits) in offered:
+            continue
+        offered.add((ignore.title, ignore.edits))
+        yield types.CodeAction(
+            title=ignore.title,
+            kind=types.CodeActionKind.QuickFix,
+            diagnostics=[to_lsp(diagnostic, snapshot)],
+            edit=_edits(snapshot, ignore.edits),
+        )
 
 
 def _wanted(kind: str, only: list[str] | None) -> bool:

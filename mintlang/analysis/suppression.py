@@ -186,14 +186,15 @@ def _without_comment(directive: Directive) -> Edit:
     return Edit(Span(directive.statement_end, directive.span.end), "")
 
 
-def suppression_fix(document: Document, offset: int, code: str) -> Fix:
+def suppression_fix(document: Document, offset: int, code: str, *, name_the_line: bool = False) -> Fix:
     """Silence ``code`` on the line holding ``offset``: the line's directive extended, or one added.
 
     A comment already on the line keeps its words after the directive; a line with
     statements gets ``: REM mint: ignore[...]`` after them, as the manual writes comments.
+    ``name_the_line``: the title says which line ("on line 12"), for a list of fixes from several lines.
     """
-    title = f"Ignore {code} on this line"
     index = document.physical_between(offset, offset)[0]
+    title = f"Ignore {code} on {f'line {index + 1}' if name_the_line else 'this line'}"
     line_offset, lexed = document.physical[index]
     for directive in directives(document):
         if not directive.whole_file and directive.line.start == line_offset:

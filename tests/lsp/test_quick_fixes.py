@@ -66,7 +66,8 @@ async def test_a_fix_shared_by_several_diagnostics_is_offered_once(client, tmp_p
     )
     titles = [action.title for action in found]
     assert titles.count("Declare 'box' with DIM") == 1
-    assert titles.count("Ignore E3001 on this line") == 3  # each its own line's comment
+    ignores = ["Ignore E3001 on line 1", "Ignore E3001 on line 2", "Ignore E3001 on line 3"]
+    assert [title for title in titles if title.startswith("Ignore")] == ignores  # each its own line's comment
 
 
 async def test_a_missing_label_is_corrected_or_made(client, tmp_path):

@@ -68,3 +68,33 @@ async def test_ignore_on_this_line_adds_or_extends_the_comment(client, tmp_path,
     [unused] = [d for d in diagnostics if d.code == "W103"]
     [edit] = (await ignore_action(client, uri, unused)).edit.changes[uri]
     assert applied(text, edit) == f"{after}\nPRINT 1\n"
+
+
+async def test_over_several_lines_each_ignore_action_names_its_line(client, tmp_path):
+    """Two W103 on lines 1 and 2, both selected: "on this line" twice would not say which is which."""
+    uri = uri_of(tmp_path / "two.mnt")
+    diagnostics = await open_document(client, uri, UNUSED)
+    selection = types.Range(start=types.Position(line=0, character=0), end=types.Position(line=1, character=9))
+    found = await client.text_document_code_action_async(
+        types.CodeActionParams(
+            text_document=document(uri), range=selection, context=types.CodeActionContext(diagnostics=diagnostics)
+        )
+    )
+    ignores = {a.title: a.edit.changes[uri] for a in found if a.title.startswith("Ignore")}
+    assert sorted(ignores) == ["Ignore W103 on line 1", "Ignore W103 on line 2"]
+    [on_line_2] = ignores["Ignore W103 on line 2"]
+    assert applied(UNUSED, on_line_2) == "DIM total\nDIM spare : REM mint: ignore[W103]\n"
+
+
+async def test_two_diagnostics_of_one_code_on_a_line_are_ignored_by_one_action(client, tmp_path):
+    uri = uri_of(tmp_path / "pair.mnt")
+    text = "DIM total : DIM spare\n"  # W103 for each name, one comment silences both
+    diagnostics = await open_document(client, uri, text)
+    assert codes(diagnostics) == [("W103", 1), ("W103", 1)]
+    selection = types.Range(start=types.Position(line=0, character=0), end=types.Position(line=0, character=21))
+    found = await client.text_document_code_action_async(
+        types.CodeActionParams(
+            text_document=document(uri), range=selection, context=types.CodeActionContext(diagnostics=diagnostics)
+        )
+    )
+    assert [a.title for a in found if a.title.startswith("Ignore")] == ["Ignore W103 on this line"]

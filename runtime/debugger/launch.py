@@ -115,7 +115,7 @@ def prepare(arguments: Mapping[str, Any]) -> Application:
             raise LaunchError(str(error)) from None
         except OSError as error:
             raise LaunchError(f"cannot read {path}: {error.strerror or error}") from None
-    if arguments.get("drives") == "enabled":
+    if _drives_enabled(arguments.get("drives")):
         scenario = merge(scenario, Scenario(drives=(DrivesEnabled(),)))
     until_ms = arguments.get("untilMs")
     if until_ms is not None and (not isinstance(until_ms, int) or isinstance(until_ms, bool) or until_ms < 0):
@@ -130,7 +130,7 @@ def prepare(arguments: Mapping[str, Any]) -> Application:
         profile,
         scenario,
         until_ms,
-        bool(arguments.get("stopOnEntry", False)),
+        _flag(arguments.get("stopOnEntry", False), "stopOnEntry"),
         _plot(arguments.get("plot"), program, configuration),
     )
 
@@ -218,6 +218,21 @@ def _path(value: object, name: str) -> Path | None:
     return Path(value)
 
 
+def _drives_enabled(value: object) -> bool:
+    """``drives``: ``"enabled"``, as ``mint-run --drives enabled``, or absent; anything else would leave the drives
+    disabled without a word, and the program's first move would stop on error 40."""
+    if value is not None and value != "enabled":
+        raise LaunchError(f"'drives' is \"enabled\" (every drive enabled at the start) or absent, not {value!r}")
+    return value == "enabled"
+
+
+def _flag(value: object, name: str) -> bool:
+    """A true-or-false attribute: a string such as "false" would otherwise be taken as true."""
+    if not isinstance(value, bool):
+        raise LaunchError(f"'{name}' is true or false, not {value!r}")
+    return value
+
+
 def _plot(value: object, program: Path, configuration: Path | None) -> Path | None:
     """The image to draw the run to, checked as ``mint-run --plot`` checks it (matplotlib, an image type,
     not one of the inputs)."""
@@ -257,7 +272,7 @@ def _given(setting: Given[Any], fallback: object) -> Any:
 def _configuration(program: Path, arguments: Mapping[str, Any], settings: FileSettings) -> Path | None:
     """``config``, else the configuration paired with the program as mint-run and the editor pair it."""
     named = _path(arguments.get("config"), "config")
-    if arguments.get("noConfig", False):
+    if _flag(arguments.get("noConfig", False), "noConfig"):
         if named is not None:
             raise LaunchError("'config' names a configuration file and 'noConfig' runs none: give one")
         return None

@@ -123,6 +123,27 @@ def test_a_launch_it_cannot_start_says_why(tmp_path: Path) -> None:
     assert "Traceback" not in client.close()
 
 
+def test_a_launch_attribute_of_the_wrong_kind_is_refused_not_taken_as_another(tmp_path: Path) -> None:
+    # README, Debugging: drives takes "enabled", as mint-run --drives enabled; stopOnEntry and noConfig are flags
+    program = tmp_path / "p.mnt"
+    program.write_text("DIM x\n", encoding="utf-8")
+    client = DapClient()
+    client.body("initialize", {"adapterID": "mint"})
+    problems = {
+        "drives": client.request("launch", {"program": str(program), "drives": True}),
+        "stopOnEntry": client.request("launch", {"program": str(program), "stopOnEntry": "false"}),
+        "noConfig": client.request("launch", {"program": str(program), "noConfig": "yes"}),
+    }
+    assert {name: response["success"] for name, response in problems.items()} == dict.fromkeys(problems, False)
+    assert (
+        problems["drives"]["message"]
+        == "'drives' is \"enabled\" (every drive enabled at the start) or absent, not True"
+    )
+    assert problems["stopOnEntry"]["message"] == "'stopOnEntry' is true or false, not 'false'"
+    assert problems["noConfig"]["message"] == "'noConfig' is true or false, not 'yes'"
+    assert "Traceback" not in client.close()
+
+
 def test_a_message_that_is_not_dap_is_reported_and_the_session_goes_on() -> None:
     client = DapClient()
     assert client.process.stdin is not None

@@ -42,6 +42,21 @@ async def test_the_dim_goes_with_the_other_dims_not_into_the_loop(client, tmp_pa
     )
 
 
+async def test_in_a_file_of_event_handlers_alone_the_dim_opens_the_program_above_the_first_handler(client, tmp_path):
+    """Mint v4 declares at compile time, in compile order (000:305-306, 000:957-972: a DIM in a subroutine never
+    called still declares): a DIM needs no run, only to come before every use. Above the first handler is
+    the start of the program, where the guide's layout puts its declarations (000:284-291); inside the
+    handler it would declare only for the lines after it, and after END or at the file's end too late."""
+    text = "REM input events\n#IN0\n  count = count + 1\nRETURN\n\n#IN1\n  PRINT count\nRETURN\n"
+    uri = uri_of(tmp_path / "events.mnt")
+    diagnostics = await open_document(client, uri, text)
+    found = await fixes(client, uri, diagnostics, 6)  # from the second handler's use
+    fixed = applied(text, found["Declare 'count' with DIM"], uri)
+    assert fixed == "REM input events\nDIM count\n#IN0\n  count = count + 1\nRETURN\n\n#IN1\n  PRINT count\nRETURN\n"
+    after = await open_document(client, uri_of(tmp_path / "fixed.mnt"), fixed)
+    assert "E3001" not in {str(diagnostic.code) for diagnostic in after}
+
+
 async def test_an_undeclared_array_is_declared_with_as_many_elements_as_its_largest_index(client, tmp_path):
     # the guide's array example (3.3, 000:1068-1075) without its DIM: my_var(10) needs DIM my_var(10)
     text = "REM arrays\nmy_var(10) = 100.5\nPRINT my_var(10)\n"

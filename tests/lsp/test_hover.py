@@ -222,3 +222,21 @@ async def test_a_label_shows_the_remarks_above_it(client, tmp_path):
     await open_document(client, uri, PROGRAM)
     label = await hover_at(client, uri, PROGRAM, "GOSUB init", 7)
     assert label.endswith("\n\nHome both axes\nand wait for them\ncalled once")
+
+
+@pytest.mark.parametrize(
+    ("word", "formats", "misprint"),
+    [
+        # 000:14643 heads the entry NODE (abbreviation ND), 000:14653-14654 print NODEID in its formats
+        ("NODE", "NODE = <expression>\nv = NODE", "NODEID"),
+        # 000:14317 heads it MOTORPOLEPITCH, 000:14327 writes MOTOREPOLEPITCH, 000:14328 MOTORPOLEPITCH again
+        ("MOTORPOLEPITCH", "MOTORPOLEPITCH = <expression>\nv = MOTORPOLEPITCH", "MOTOREPOLEPITCH"),
+    ],
+)
+async def test_a_format_the_guide_misprints_shows_the_keyword_to_write(client, tmp_path, word, formats, misprint):
+    text = f"{word} = 3\n"
+    uri = uri_of(tmp_path / "misprint.mnt")
+    await open_document(client, uri, text)
+    shown = await hover_at(client, uri, text, word)
+    assert f"```mint\n{formats}\n```" in shown
+    assert misprint not in shown

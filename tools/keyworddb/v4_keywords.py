@@ -130,13 +130,23 @@ def _misprints(name: str, entry: Entry, formats: tuple[str, ...], known: set[str
     return found, conflicts
 
 
+def _heading_named(line: str, misprints: list[str], name: str) -> str:
+    """A format with the heading's name where the guide misprints it (``NODEID = ...`` is ``NODE = ...``): the
+    entry, its abbreviation and the rest of the guide name no other keyword, so the hover shows what to write;
+    the misprint stays on record as the entry's conflict."""
+    for word in misprints:
+        line = re.sub(rf"\b{re.escape(word)}\b", name, line)
+    return line
+
+
 def _from_entry(
     entry: Entry, row: QuickRow | None, known: set[str], expansion_maxima: Mapping[int, float]
 ) -> tuple[Keyword, list[Conflict]]:
     name = canonical_name(entry)
-    formats = fmt.clean_formats(entry.text("format"))
-    misprints, misprint_conflicts = _misprints(name, entry, formats, known)
-    names = tuple(dict.fromkeys((name, *entry.names, *misprints)))
+    printed_formats = fmt.clean_formats(entry.text("format"))
+    misprints, misprint_conflicts = _misprints(name, entry, printed_formats, known)
+    formats = tuple(_heading_named(line, misprints, name) for line in printed_formats)
+    names = tuple(dict.fromkeys((name, *entry.names)))
     controllers, controller_conflicts = _controllers(entry, name, row)
     printed = parse_attributes(entry.sections.get("attributes", []), controllers, expansion_maxima)
     attributes, angle_conflicts = unscaled_angles(name, entry, printed)

@@ -216,7 +216,10 @@ class Session:
         unit = _unit_of(application, source.get("path"))
         requested = arguments.get("breakpoints")
         if requested is None:
-            requested = [{"line": line} for line in arguments.get("lines", [])]
+            requested = [{"line": line} for line in _listed(arguments.get("lines", []), "lines")]
+        requested = _objects(requested, "breakpoints")
+        for request in requested:
+            _whole(request.get("line"), "a breakpoint's 'line'")
         if unit is None:
             problem = "not part of the program being debugged"
             return {"breakpoints": [{"verified": False, "message": problem} for _ in requested]}
@@ -225,7 +228,7 @@ class Session:
 
     def set_function_breakpoints(self, arguments: dict[str, Any]) -> dict[str, Any]:
         application, breakpoints = self._launched()
-        placed = breakpoints.replace_functions(arguments.get("breakpoints", []))
+        placed = breakpoints.replace_functions(_objects(arguments.get("breakpoints", []), "breakpoints"))
         return {
             "breakpoints": [
                 item.as_dap(_source(application, item.unit) if item.pc is not None else None) for item in placed
@@ -267,8 +270,8 @@ class Session:
             pc = (
                 frame.return_pc if frame.rank is not None else frame.return_pc - 1
             )  # a handler returns where it broke in
-        start = int(arguments.get("startFrame", 0) or 0)
-        levels = int(arguments.get("levels", 0) or 0)
+        start = _whole(arguments.get("startFrame", 0), "'startFrame'")
+        levels = _whole(arguments.get("levels", 0), "'levels'")
         shown_frames = frames[start : start + levels] if levels > 0 else frames[start:]
         return {"stackFrames": shown_frames, "totalFrames": len(frames)}
 
@@ -413,6 +416,28 @@ class Session:
         if execution is None or execution.point is None or execution.controller is None:
             raise RequestError("the program is not paused")
         return execution, execution.controller
+
+
+def _listed(value: object, name: str) -> list[Any]:
+    if not isinstance(value, list):
+        raise RequestError(f"'{name}' is a list")
+    return value
+
+
+def _objects(value: object, name: str) -> list[dict[str, Any]]:
+    """A request's list of objects (breakpoints); a malformed one is refused, not half read."""
+    if not all(isinstance(item, dict) for item in _listed(value, name)):
+        raise RequestError(f"'{name}' is a list of objects")
+    return value  # type: ignore[return-value]
+
+
+def _whole(value: object, name: str) -> int:
+    """A whole number 0 or more that a request gives (a line, a frame's index); 0 when absent."""
+    if value is None:
+        return 0
+    if not isinstance(value, int) or isinstance(value, bool) or value < 0:
+        raise RequestError(f"{name} is a whole number, 0 or more, not {value!r}")
+    return value
 
 
 def _spellings(application: Application) -> dict[str, str]:

@@ -144,6 +144,26 @@ def test_a_launch_attribute_of_the_wrong_kind_is_refused_not_taken_as_another(tm
     assert "Traceback" not in client.close()
 
 
+def test_a_malformed_request_is_refused_with_what_it_should_have_been(debug: Debug) -> None:
+    # DAP: a source breakpoint's line and a stack trace's startFrame and levels are numbers; breakpoints a list
+    client = debug("DIM x\nx = 1\n", stopOnEntry=True)
+    client.stopped()
+    source = {"path": str(client.program)}
+    refused = {
+        "line": client.request("setBreakpoints", {"source": source, "breakpoints": [{"line": "two"}]}),
+        "list": client.request("setBreakpoints", {"source": source, "breakpoints": "2"}),
+        "objects": client.request("setFunctionBreakpoints", {"breakpoints": ["TIMER"]}),
+        "startFrame": client.request("stackTrace", {"threadId": 1, "startFrame": "x"}),
+    }
+    assert {name: response["message"] for name, response in refused.items()} == {
+        "line": "a breakpoint's 'line' is a whole number, 0 or more, not 'two'",
+        "list": "'breakpoints' is a list",
+        "objects": "'breakpoints' is a list of objects",
+        "startFrame": "'startFrame' is a whole number, 0 or more, not 'x'",
+    }
+    assert client.line() == 1
+
+
 def test_a_message_that_is_not_dap_is_reported_and_the_session_goes_on() -> None:
     client = DapClient()
     assert client.process.stdin is not None

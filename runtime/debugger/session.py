@@ -323,10 +323,11 @@ class Session:
 
     def variables(self, arguments: dict[str, Any]) -> dict[str, Any]:
         self._paused()
-        reference = int(arguments.get("variablesReference", 0))
+        reference = _whole(arguments.get("variablesReference"), "'variablesReference'")
         count = arguments.get("count")
+        count = None if count is None else _whole(count, "'count'")
         try:
-            listed = self.references.listed(reference, int(arguments.get("start", 0) or 0), count)
+            listed = self.references.listed(reference, _whole(arguments.get("start"), "'start'"), count)
         except KeyError:
             raise RequestError(f"no variables under reference {reference} at this stop") from None
         return {"variables": listed}
@@ -334,9 +335,10 @@ class Session:
     def set_variable(self, arguments: dict[str, Any]) -> dict[str, Any]:
         execution, _ = self._paused()
         assert execution.evaluator is not None
-        node = self.references.nodes.get(int(arguments.get("variablesReference", 0)))
+        reference = _whole(arguments.get("variablesReference"), "'variablesReference'")
+        node = self.references.nodes.get(reference)
         if node is None:
-            raise RequestError("no such variables at this stop")
+            raise RequestError(f"no variables under reference {reference} at this stop")
         value = execution.evaluator.evaluate(str(arguments.get("value", "")))
         description, apply = node.assignment(str(arguments.get("name", "")), value)
         execution.intervene(description, apply)

@@ -154,12 +154,16 @@ def test_a_malformed_request_is_refused_with_what_it_should_have_been(debug: Deb
         "list": client.request("setBreakpoints", {"source": source, "breakpoints": "2"}),
         "objects": client.request("setFunctionBreakpoints", {"breakpoints": ["TIMER"]}),
         "startFrame": client.request("stackTrace", {"threadId": 1, "startFrame": "x"}),
+        "start": client.request("variables", {"variablesReference": 1, "start": "first"}),
+        "reference": client.request("setVariable", {"variablesReference": "x", "name": "x", "value": "2"}),
     }
     assert {name: response["message"] for name, response in refused.items()} == {
         "line": "a breakpoint's 'line' is a whole number, 0 or more, not 'two'",
         "list": "'breakpoints' is a list",
         "objects": "'breakpoints' is a list of objects",
         "startFrame": "'startFrame' is a whole number, 0 or more, not 'x'",
+        "start": "'start' is a whole number, 0 or more, not 'first'",
+        "reference": "'variablesReference' is a whole number, 0 or more, not 'x'",
     }
     assert client.line() == 1
 

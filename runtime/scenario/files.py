@@ -67,7 +67,7 @@ class _Entry:
         """Refuse any key not in ``keys``, naming the keys that would do."""
         if unexpected := [key for key in self._values if key not in keys]:
             listed = ", ".join(repr(key) for key in unexpected)
-            message = f"unknown key {listed} in {self.name}; it takes {', '.join(keys)}"
+            message = f"unknown key {listed} in {self.name}; it takes {', '.join(keys)}{_meant(unexpected, keys)}"
             raise Invalid(message, self.line_of(unexpected[0]))
 
     def value(self, key: str) -> object:
@@ -101,6 +101,17 @@ class _Entry:
         raise self._wrong(key, "text in quotes")
 
 
+def _misspelt(written: list[str], known: tuple[str, ...]) -> tuple[str, str] | None:
+    """The first word of ``written`` that is surely a misspelling of one of ``known``, and that one."""
+    return next(((word, meant) for word in written if (meant := closest(word, known)) is not None), None)
+
+
+def _meant(written: list[str], known: tuple[str, ...]) -> str:
+    """``; did you mean 'tolerance'?`` for the first of ``written`` misspelt from ``known``; else nothing."""
+    found = _misspelt(written, known)
+    return f"; {did_you_mean(found[1])}" if found is not None else ""
+
+
 def _one_of(entry: _Entry, keys: tuple[str, ...]) -> str:
     """The one key of ``keys`` the entry has; an entry has exactly one."""
     present = [key for key in keys if key in entry]
@@ -108,9 +119,8 @@ def _one_of(entry: _Entry, keys: tuple[str, ...]) -> str:
         raise Invalid(f"{entry.name} has both {' and '.join(present)}", entry.line_of(present[-1]))
     if not present:
         problem = f"{entry.name} needs one of {', '.join(keys)}"
-        meant = {key: closest(key, keys) for key in entry.written()}
-        if misspelt := next((key for key, known in meant.items() if known is not None), None):
-            raise Invalid(f"{problem}; {did_you_mean(str(meant[misspelt]))}", entry.line_of(misspelt))
+        if (found := _misspelt(entry.written(), keys)) is not None:
+            raise Invalid(f"{problem}; {did_you_mean(found[1])}", entry.line_of(found[0]))
         written = [repr(key) for key in entry.written()]
         raise Invalid(problem + (f" (it has {', '.join(written)})" if written else ""), entry.origin.line)
     return present[0]
@@ -242,8 +252,9 @@ def _read(document: Mapping[str, object], layout: Layout, collector: Collector) 
             shape = "a table: write [plant]" if name == "plant" else f"a list of tables: write [[{name}]]"
             collector.error(layout.top_line(name), f"{name} is {shape}")
         else:
-            known = ", ".join(["drives", "plant", *_ARRAYS])
-            collector.error(layout.top_line(name), f"unknown entry {name!r}; a scenario has {known}")
+            known = ("drives", "plant", *_ARRAYS)
+            message = f"unknown entry {name!r}; a scenario has {', '.join(known)}{_meant([name], known)}"
+            collector.error(layout.top_line(name), message)
 
 
 def _document(path: Path) -> tuple[str, dict[str, object]]:

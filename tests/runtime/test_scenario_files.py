@@ -168,6 +168,22 @@ def test_unknown_tables_and_keys_are_named(tmp_path: Path) -> None:
     ]
 
 
+def test_a_misspelt_key_or_entry_is_named_with_the_word_meant(tmp_path: Path) -> None:
+    text = "[[expect]]\nwhat = 'POS.0'\nequals = 1\ntolerence = 0.5\n\n[[expects]]\nstopped = 'end'\n"
+    assert problems(tmp_path, text) == [
+        (
+            4,
+            "unknown key 'tolerence' in [[expect]]; it takes what, equals, tolerance, at, at_ms; "
+            "did you mean 'tolerance'?",
+        ),
+        (
+            6,
+            "unknown entry 'expects'; a scenario has drives, plant, input, index, fastin, adc, key, host, expect; "
+            "did you mean 'expect'?",
+        ),
+    ]
+
+
 @pytest.mark.parametrize(
     ("entry", "line", "message"),
     [

@@ -59,11 +59,16 @@ def _migrated(result: MigrationResult) -> tuple[str, str | None]:
 
 def _short(original: Recording, migrated: Recording, flagged: set[Place]) -> str | None:
     """Why the comparison cannot cover the whole run: the original does not compile, the migration does
-    not until a person deals with a line left for them, or the simulation stopped where the program would
-    not. A migration that does not compile on a line nobody flagged is no such reason: it diverges."""
+    not until a person deals with a line left for them, both stopped on an error at once, or the simulation
+    stopped where the program would not. A migration that does not compile on a line nobody flagged is no
+    such reason: it diverges."""
     if original.refused:
         return f"the v4 original does not compile: {compare.stopped(original).message}"
     stop = compare.stopped(migrated)
     if migrated.refused and stop.line in flagged:
         return f"the MintMT program does not compile until {stop.line}, left for a person, is done: {stop.message}"
+    original_stop = compare.stopped(original)
+    if original_stop.reason == stop.reason == "error" and original_stop.time_ms == stop.time_ms == 0:
+        # both failed at once (a drive left disabled): agreeing on that verifies nothing, as for v3 -> v4
+        return f"both runs stopped on an error at 0 ms ({original_stop.message}; {stop.message})"
     return original.short or migrated.short

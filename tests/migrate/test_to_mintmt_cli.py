@@ -99,11 +99,21 @@ def test_verify_compares_the_v4_run_with_the_mintmt_run(tmp_path: Path) -> None:
 
 def test_verify_names_the_runs_v4_and_mintmt_in_text(tmp_path: Path) -> None:
     path = tmp_path / "late.mnt"
-    path.write_text("#COMMS1\nPRINT 1\nRETURN\n")  # the label is flagged, kept: both runs stop on RETURN
+    path.write_text("PRINT 1\nEND\n#TIMER\nPRINT 2\nRETURN\n")  # the handler is flagged, kept: both print 1
     code, output = run("--verify", str(path))
     assert code == 0
     assert "equivalent" in output
     assert "not verified:" in output and "MT-EVENT" in output
+
+
+def test_verify_of_two_runs_that_both_stop_on_an_error_at_once_is_incomplete(tmp_path: Path) -> None:
+    # README, --verify: agreeing that both fail at 0 ms (here the drive a controller powers up with disabled,
+    # error 40) verifies nothing; the v3 -> v4 verification says so, exit status 2
+    path = tmp_path / "move.mnt"
+    path.write_text("MOVER.0 = 10 : GO.0\nPAUSE IDLE.0\nPRINT POS.0\n")
+    code, output = run("--verify", str(path))
+    assert code == 2
+    assert output.startswith(f"{path}: incomplete: both runs stopped on an error at 0 ms (R0040: ")
 
 
 def test_default_is_the_v3_migration(program: Path) -> None:

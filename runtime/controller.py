@@ -93,7 +93,7 @@ def build_controller(
     v3 = meaning.dialect is Dialect.V3
     v3_machine = dialect_machine(Dialect.V3) if v3 else None
     clock = Clock()
-    table = KeywordTable(profile.controller)
+    table = KeywordTable(profile.controller, meaning.dialect)
     terminal = Terminal(echo)
     vm = Interpreter(clock, profile.nesting, slice_statements)
     plants = {choice.axis: choice for choice in scenario.plants}

@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, replace
 
+from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller
 from mintlang.runtime.errors import MintError
@@ -46,9 +47,10 @@ class KeywordAccess:
 class KeywordTable:
     """Handlers by canonical keyword name; each part of the controller registers its own."""
 
-    def __init__(self, controller: Controller) -> None:
+    def __init__(self, controller: Controller, dialect: Dialect = Dialect.V4) -> None:
         self._entries: dict[str, KeywordAccess] = {}
         self.controller = controller
+        self.dialect = dialect
 
     def register(
         self,
@@ -73,8 +75,11 @@ class KeywordTable:
         return self._entries.get(name)
 
     def in_program(self, name: str) -> KeywordAccess | None:
-        """The handlers of a keyword a program uses; one its controller does not have is error 17 (000:18570-18575)."""
-        record = database().keywords.get(name)
+        """The handlers of a keyword a program uses; one its controller does not have is error 17 (000:18570-18575).
+
+        MintMT's own keywords name their controllers in the move-buffer note (004:100, 286).
+        """
+        record = database().keywords_of(self.dialect).get(name)
         if record is not None and record.controllers and self.controller not in record.controllers:
             raise MintError(KEYWORD_NOT_SUPPORTED, detail=f"{name} is not available on this controller")
         return self._entries.get(name)

@@ -32,3 +32,11 @@ def test_a_keyword_not_simulated_stops_the_run_at_its_line_saying_so(tmp_path: P
 def test_the_output_moves_listing_runs_to_its_end() -> None:
     status, output = _run(str(CORPUS / "an00117_l0293_output_moves.mnt"))
     assert status == 0, output
+
+
+def test_an_output_move_on_mintdrive_is_error_17_as_the_note_gives_them_to_nextmove_only() -> None:
+    # "Output Moves (NextMove only)" (004:286); error 17, keyword not supported (000:18570-18575)
+    status, output = _run("--controller", "mintdrive", str(CORPUS / "an00117_l0293_output_moves.mnt"))
+    assert status != 0
+    assert "at program line 5: MOVEOUT(0,0) = 7" in output
+    assert "R0017: PROGRAM Keyword not supported on this platform" in output

@@ -31,7 +31,7 @@ from mintlang.controllers import ControllerProfile, profile
 from mintlang.diagnostics import Span
 from mintlang.keyworddb import database
 from mintlang.keyworddb.load import KeywordDatabase
-from mintlang.semantic.index import KeywordUse, index_syntax, line_facts
+from mintlang.semantic.index import KeywordUse, Use, index_syntax, line_facts
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
@@ -61,6 +61,12 @@ def statement_tag(keyword: str) -> tuple[str, str]:
     return ("statement", keyword)
 
 
+def read_tag(keyword: str) -> tuple[str, str]:
+    """The tag of a line reading the keyword ``keyword`` in an expression (``a = MOVEA``,
+    ``PAUSE IDLE``): a rule after the reads alone need not copy every line that writes it."""
+    return ("read", keyword)
+
+
 def constant_tag(name: str) -> tuple[str, str]:
     """The tag of a line using the constant ``name`` (upper case, ``_SERVO``)."""
     return ("constant", name)
@@ -76,9 +82,9 @@ def name_tag(name: str) -> tuple[str, str]:
 class LineTags:
     """What each line mentions, worked out once per text it was parsed from for a whole run: the
     types of its statements and expressions, the keywords and functions it names, ``constant_tag``
-    of its constants, ``statement_tag`` of its keyword statements, ``name_tag`` of its user names, ``operator_tag``
-    of its operators, ``LABEL`` and ``FRACTION`` (``Context`` adds ``MACRO``, which depends on
-    the macros defined above the line).
+    of its constants, ``statement_tag`` of its keyword statements, ``read_tag`` of its keyword
+    reads, ``name_tag`` of its user names, ``operator_tag`` of its operators, ``LABEL`` and
+    ``FRACTION`` (``Context`` adds ``MACRO``, which depends on the macros defined above the line).
     Keyed by ``PlacedLine.content``, never by the shared syntax (see ``mintlang.caching``).
 
     A line's tags are a tuple, each distinct tuple and tag held once (a frozenset apiece took 15
@@ -131,6 +137,7 @@ def _tags(syntax: n.LineSyntax) -> frozenset[object]:
                 add(kind)
                 if kind is n.KeywordRef:
                     add(node.keyword)  # type: ignore[union-attr]
+                    add(read_tag(node.keyword))  # type: ignore[union-attr]
                 elif kind is n.Call:
                     add(node.function)  # type: ignore[union-attr]
                 elif kind is n.ConstantRef:
@@ -355,9 +362,16 @@ class Context:
 
     def keyword_uses(self, *keywords: str) -> Iterator[tuple[FileView, KeywordUse]]:
         """Uses of the named keywords (canonical v3 names), however they were spelled, in compile order."""
-        wanted = frozenset(keywords)
+        return self._keyword_uses(frozenset(keywords), keywords)
+
+    def keyword_reads(self, *keywords: str) -> Iterator[tuple[FileView, KeywordUse]]:
+        """The uses of ``keyword_uses`` that read the keyword's value (``Use.READ``)."""
+        uses = self._keyword_uses(frozenset(keywords), map(read_tag, keywords))
+        return ((file, use) for file, use in uses if use.use is Use.READ)
+
+    def _keyword_uses(self, wanted: frozenset[str], tags: Iterable[object]) -> Iterator[tuple[FileView, KeywordUse]]:
         order = self._order
-        for position in self._positions(wanted):
+        for position in self._positions(tags):
             file, index = order[position]
             for use in file.keyword_uses(index):
                 if use.keyword.keyword in wanted:

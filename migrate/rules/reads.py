@@ -33,10 +33,8 @@ class ReadRenames(Rule):
     evidence = "spec S-READ; v3:3185-3186, v3:10415-10433, v3:3509; v4:14507, v4:14517, v4:3129-3141, v4:11454"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, use in context.keyword_uses(*READ_RENAMES, "INCA", "INCR", "CAM"):
+        for file, use in context.keyword_reads(*READ_RENAMES, "INCA", "INCR", "CAM"):
             keyword = use.keyword
-            if use.use is not Use.READ:
-                continue
             new = READ_RENAMES.get(keyword.keyword)
             if new is None:
                 yield self.flag(file, keyword.span, f"reading {keyword.keyword} has no v4 counterpart")

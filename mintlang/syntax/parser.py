@@ -25,7 +25,7 @@ from mintlang.allocation import collector_paused, without_collector
 from mintlang.analysis.suggestions import closest, keyword_like, not_a_keyword
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import mint_error
-from mintlang.diagnostics import Diagnostic, Fix, LineIndex, LinesAndEnd
+from mintlang.diagnostics import Diagnostic, Edit, Fix, LineIndex, LinesAndEnd
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller
@@ -424,6 +424,13 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) ->
         fixes = (Fix.replace(words, "ENDW"),)
         written = f"{line.texts[begin]} {line.texts[begin + 1]}"
         return _error(2003, words, f"a WHILE loop ends with ENDW, not {written}", fixes=fixes)
+    if segment[0] is _K.NEXT and index == begin + 1 and kinds[index] is _K.NAME:
+        # "NEXT i" as in BASIC: Mint's NEXT takes no loop variable (000:1708-1710; 001:2238)
+        removal = Fix(
+            "Remove the loop variable", (Edit(shared_span(line.ends[begin], line.ends[index]), ""),), safe=True
+        )
+        fixes = (removal,) if end == index + 1 else ()  # NEXT i, j closed two loops in BASIC: no single meaning
+        return _error(2003, span, "NEXT takes no loop variable: write NEXT alone", fixes=fixes)
     if segment[0] is _K.DIM:  # DIM of a keyword is a syntax error (DIM, 000:9189-9192), whichever kind it lexes as
         named = index if index == begin + 1 and not at_end else index - 1
         if named > begin and kinds[named] in _KEYWORD_KINDS:

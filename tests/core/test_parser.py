@@ -377,6 +377,26 @@ def test_parse_errors_carry_the_controllers_error_numbers(source: str, expected:
     assert all(d.severity is Severity.ERROR for d in mintlang.parse(source).diagnostics)
 
 
+def test_next_with_its_loop_variable_is_an_error_whose_safe_fix_removes_the_name() -> None:
+    # v4 guide 3.7.1 and the v3 guide 5.2.1: unlike BASIC, NEXT takes no index name
+    source = "DIM i\nFOR i = 1 TO 3\nNEXT i\n"
+    (diagnostic,) = mintlang.parse(source).diagnostics
+    assert (diagnostic.code, diagnostic.message) == (
+        "E2003",
+        "Syntax error: NEXT takes no loop variable: write NEXT alone",
+    )
+    (fix,) = diagnostic.fixes
+    (edit,) = fix.edits
+    assert (
+        fix.safe and source[: edit.span.start] + edit.text + source[edit.span.end :] == "DIM i\nFOR i = 1 TO 3\nNEXT\n"
+    )
+
+
+def test_next_with_two_loop_variables_has_no_fix_as_basic_closed_two_loops_with_it() -> None:
+    (diagnostic,) = mintlang.parse("DIM i\nDIM j\nFOR i = 1 TO 3\nFOR j = 1 TO 3\nNEXT j, i\n").diagnostics
+    assert diagnostic.message.endswith("NEXT takes no loop variable: write NEXT alone") and diagnostic.fixes == ()
+
+
 def test_a_keyword_after_gosub_is_refused_as_a_label() -> None:
     (diagnostic,) = mintlang.parse("GOSUB loop\n").diagnostics
     assert diagnostic.code == "E2006" and diagnostic.message.endswith("cannot be used as a label")

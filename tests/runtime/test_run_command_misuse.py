@@ -93,11 +93,11 @@ def test_trace_axes_without_a_trace_or_plot_is_a_usage_error(tmp_path: Path) -> 
     assert "--trace or --plot" in result.stderr
 
 
-def test_stimulus_for_a_missing_axis_is_a_usage_error_with_its_line(tmp_path: Path) -> None:
+def test_stimulus_for_a_missing_axis_is_a_usage_error_at_the_line_that_names_it(tmp_path: Path) -> None:
     stimulus = write(tmp_path, "switch.toml", '[[input]]\nchannel = 1\nwhen = "enc 99 >= 5"\n')
     result = mint_run(write(tmp_path, "p.mnt", "WAIT = 10\n"), "--stimulus", stimulus)
     assert result.exit_code == 2
-    assert "switch.toml:1: the NextMove PCI has no axis 99" in result.stderr
+    assert "switch.toml:3: the NextMove PCI has no axis 99" in result.stderr
 
 
 def test_a_host_port_in_use_is_a_usage_error_that_names_it(tmp_path: Path) -> None:

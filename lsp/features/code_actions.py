@@ -40,7 +40,13 @@ def quick_fixes(snapshot: Snapshot, selection: types.Range) -> Iterator[types.Co
     for diagnostic in snapshot.diagnostics:
         if not _overlaps(diagnostic.span, start, end):
             continue
-        for fix in diagnostic.fixes:
+        fixes: list[tuple[mintlang.Fix, bool | None]] = [(fix, len(diagnostic.fixes) == 1) for fix in diagnostic.fixes]
+        if diagnostic.code != UNUSED_SUPPRESSION:  # its own fix removes the comment
+            # Over several lines, "on this line" would not say which: ruff's "Disable for this line" leaves such
+            # titles alike, and an editor lists the actions without their lines.
+            start_offset, code = diagnostic.span.start, diagnostic.code
+            fixes.append((suppression_fix(snapshot.document, start_offset, code, name_the_line=several_lines), None))
+        for fix, preferred in fixes:
             if (fix.title, fix.edits) in offered:
                 continue
             offered.add((fix.title, fix.edits))
@@ -49,22 +55,8 @@ def quick_fixes(snapshot: Snapshot, selection: types.Range) -> Iterator[types.Co
                 kind=types.CodeActionKind.QuickFix,
                 diagnostics=[to_lsp(diagnostic, snapshot)],
                 edit=_edits(snapshot, fix.edits),
-                is_preferred=len(diagnostic.fixes) == 1,
+                is_preferred=preferred,
             )
-        if diagnostic.code == UNUSED_SUPPRESSION:  # its own fix removes the comment
-            continue
-        # Over several lines, "on this line" would not say which: ruff's "Disable for this line" leaves such
-        # titles alike, and an editor lists the actions without their lines.
-        ignore = suppression_fix(snapshot.document, diagnostic.span.start, diagnostic.code, name_the_line=several_lines)
-        if (ignore.title, ignore.edits) in offered:
-            continue
-        offered.add((ignore.title, ignore.edits))
-        yield types.CodeAction(
-            title=ignore.title,
-            kind=types.CodeActionKind.QuickFix,
-            diagnostics=[to_lsp(diagnostic, snapshot)],
-            edit=_edits(snapshot, ignore.edits),
-        )
 
 
 def _wanted(kind: str, only: list[str] | None) -> bool:

@@ -13,6 +13,7 @@ from tools.keyworddb.bit_ranges import with_bit_ranges
 from tools.keyworddb.conflicts import Conflict, sort_key
 from tools.keyworddb.constant_ranges import with_constant_ranges
 from tools.keyworddb.constants import add_constant, error_constants, general_constants, keyword_constants
+from tools.keyworddb.described_ranges import with_described_ranges
 from tools.keyworddb.entries import EntryKind, v4_entries
 from tools.keyworddb.errors import build_errors, shared_constants
 from tools.keyworddb.migration import build_v3_keywords
@@ -61,6 +62,7 @@ def build(seeds: Path, spec: Path) -> dict[str, Any]:
     errors = build_errors(v4)
     constants, constant_conflicts, keywords = _constants(v4, keywords, errors)
     keywords = with_constant_ranges(keywords, constants)
+    keywords = with_described_ranges(keywords, constants, v4)
     keywords, bit_conflicts = with_bit_ranges(keywords, constants, v4)
     keywords, format_conflicts = apply_format_access(keywords)
     keywords, access_conflicts = apply_access_examples(v4, errors, keywords)

@@ -1,0 +1,94 @@
+"""Ranges the attributes table defers to the entry's text ("see below", "see table").
+
+Three shapes of text stand in for a printed range in the v4 guide:
+
+- a table of ranges per LOOPTIME (MintDrive DECEL, ERRORDECEL, HOMESPEED, JOG, SPEED;
+  000:8893-8897, 11616-11620): any row's range may be in force, so the row takes their
+  widest span (a scaled keyword is checked by sign only, which the rows agree on);
+- a bit mask built from the entry's table of constants (TERMINAL, whose entry calls it a bit mask,
+  000:16695-16706): every combination of the documented bits, and nothing above them;
+- a table of valid baud rates (SERIALBAUD, 000:15859-15863): the rates its rows list. The
+  table's ticks per controller and port are garbled in the text, so the rates any controller
+  accepts on any port are allowed.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Mapping
+from dataclasses import replace
+
+from mintlang.keyworddb.model import Attributes, Constant, Keyword, ValueRange
+from tools.keyworddb.attributes import parse_range
+from tools.keyworddb.entries import Entry, EntryKind, v4_entries
+from tools.keyworddb.seeds import Seed
+from tools.keyworddb.v4_keywords import canonical_name
+
+_DEFERRED = re.compile(r"^see\b", re.IGNORECASE)
+_LOOPTIME_ROW = re.compile(r"^(?:500|1000|2000) (?P<range>-?\d.*≤ x ≤ .+)$")
+_BAUD_HEADER = re.compile(r"^Baud Rate\b")
+_BAUD_ROW = re.compile(r"^(?P<rate>\d{4,6})\b")
+
+
+def _lines(entry: Entry, seed: Seed) -> Iterable[str]:
+    return (seed.stripped(number) for number in range(entry.line, entry.end + 1))
+
+
+def _looptime_range(entry: Entry, seed: Seed) -> ValueRange | None:
+    rows = [parse_range(match["range"]) for line in _lines(entry, seed) if (match := _LOOPTIME_ROW.match(line))]
+    if not rows or any(row.minimum is None or row.maximum is None for row in rows):
+        return None
+    low = min(row.minimum for row in rows if row.minimum is not None)
+    high = max(row.maximum for row in rows if row.maximum is not None)
+    text = f"{low:.15g} ≤ x ≤ {high:.15g} over the LOOPTIME settings"
+    return ValueRange(text, low, high, fractional=any(row.fractional for row in rows))
+
+
+def _bit_mask_range(keyword: Keyword, entry: Entry, seed: Seed, constants: Mapping[str, Constant]) -> ValueRange | None:
+    if not any("bit mask" in line for line in _lines(entry, seed)):
+        return None
+    values = [int(constants[name].value) for name in keyword.constants if name in constants]
+    if not values or any(value <= 0 or value & (value - 1) for value in values):
+        return None
+    mask = 0
+    for value in values:
+        mask |= value
+    return ValueRange(f"0 ≤ x ≤ {mask}, any mask of the bits {hex(mask)}", 0.0, float(mask), fractional=False)
+
+
+def _baud_range(entry: Entry, seed: Seed) -> ValueRange | None:
+    lines = list(_lines(entry, seed))
+    header = next((index for index, line in enumerate(lines) if _BAUD_HEADER.match(line)), None)
+    if header is None:
+        return None
+    rates = sorted({float(match["rate"]) for line in lines[header + 1 :] if (match := _BAUD_ROW.match(line))})
+    if not rates:
+        return None
+    return ValueRange(", ".join(f"{rate:.15g}" for rate in rates), None, None, False, allowed=tuple(rates))
+
+
+def _described(keyword: Keyword, entry: Entry, seed: Seed, constants: Mapping[str, Constant]) -> ValueRange | None:
+    return _looptime_range(entry, seed) or _bit_mask_range(keyword, entry, seed, constants) or _baud_range(entry, seed)
+
+
+def _row(row: Attributes, described: ValueRange | None) -> Attributes:
+    limits = row.range
+    if described is None or limits is None or not _DEFERRED.match(limits.text):
+        return row
+    return replace(row, range=described)
+
+
+def with_described_ranges(
+    keywords: dict[str, Keyword], constants: Mapping[str, Constant], seed: Seed
+) -> dict[str, Keyword]:
+    """Keywords whose attributes table says "see below", with the range their entry's text gives."""
+    entries = {canonical_name(e): e for e in v4_entries(seed) if e.kind is EntryKind.FULL}
+    result: dict[str, Keyword] = {}
+    for name, keyword in keywords.items():
+        deferred = any(row.range is not None and _DEFERRED.match(row.range.text) for row in keyword.attributes)
+        if not deferred or name not in entries:
+            result[name] = keyword
+            continue
+        described = _described(keyword, entries[name], seed, constants)
+        result[name] = replace(keyword, attributes=tuple(_row(row, described) for row in keyword.attributes))
+    return result

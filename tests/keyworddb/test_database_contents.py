@@ -68,7 +68,8 @@ def test_speed(db: KeywordDatabase) -> None:
     assert (nextmove.range.minimum, nextmove.range.maximum, nextmove.range.fractional) == (1.0, 8388607.0, True)
     mintdrive = speed.attributes_for(Controller.MINTDRIVE)  # v4:16177 "... See below"
     assert mintdrive is not None and mintdrive.range is not None
-    assert mintdrive.range.minimum is None and mintdrive.range.text == "See below"
+    # v4:16181-16185: 0 ≤ x ≤ 8000000 at LOOPTIME 500, down to 0 ≤ x ≤ 2000000 at 2000
+    assert (mintdrive.range.minimum, mintdrive.range.maximum) == (0.0, 8000000.0)
 
 
 def test_adc_is_a_read_only_channel_keyword_with_glued_form(db: KeywordDatabase) -> None:

@@ -14,11 +14,15 @@ for MintMT's own forms (``mintlang/MINTMT.md``):
 One of them makes the text MintMT; without any it is Mint v4, the default
 dialect, so every v4 program reads as before. Mint v3 is not told apart here:
 its forms are v4's as far as this reading goes (the migrator recognises it).
+
+The command-line tools read a file as v4 unless told otherwise; ``dialect_hint``
+is the line they print when such a file shows MintMT's forms.
 """
 
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 
 from mintlang.diagnostics import split_lines
 from mintlang.dialect import Dialect
@@ -36,9 +40,38 @@ _CLOSERS = frozenset({TokenKind.ENDL, TokenKind.ENDIF, TokenKind.ENDEVENT, Token
 _MAY_SHOW = re.compile(f"[{_QUOTES}(]|end[ \\t]|event|startup", re.IGNORECASE)
 
 
+@dataclass(frozen=True, slots=True)
+class MintMTForm:
+    """The first form of a text that only MintMT has: its line (from 1) and what it is, as a reader would name it."""
+
+    line: int
+    what: str
+
+
 def detect_dialect(text: str) -> Dialect:
     """``Dialect.MINTMT`` when ``text`` shows a form only MintMT has, ``Dialect.V4`` otherwise."""
     return Dialect.MINTMT if _shows_any(text) else Dialect.V4
+
+
+def first_mintmt_form(text: str) -> MintMTForm | None:
+    """The first form of ``text`` that only MintMT has; None for a text ``detect_dialect`` finds v4."""
+    numbered = [
+        (number, line) for number, line in enumerate(split_lines(text, keepends=True), 1) if _MAY_SHOW.search(line)
+    ]
+    lexed = lex("".join(line for _, line in numbered), Dialect.MINTMT).lines
+    for (number, _), (_, line) in zip(numbered, lexed, strict=False):  # the lexer may add an empty last line
+        if (what := _form(line)) is not None:
+            return MintMTForm(number, what)
+    return None
+
+
+def dialect_hint(name: str, text: str, dialect: Dialect) -> str | None:
+    """The line a tool prints when it reads the file ``name`` as Mint v4, as no one chose its dialect, though
+    the text shows a form only MintMT has: the v4 errors such a file gets never say which option is missing."""
+    if dialect is not Dialect.V4 or (form := first_mintmt_form(text)) is None:
+        return None
+    seen = f"{form.what} on line {form.line}"
+    return f"hint: {name} looks like MintMT ({seen}) but was read as Mint v4: run with --dialect mintmt"
 
 
 def detect_dialect_after(previous: str, found: Dialect, text: str) -> Dialect:
@@ -57,22 +90,28 @@ def detect_dialect_after(previous: str, found: Dialect, text: str) -> Dialect:
 
 
 def _shows_any(text: str) -> bool:
-    may_show = "".join(line for line in split_lines(text, keepends=True) if _MAY_SHOW.search(line))
-    return any(_shows_mintmt(line) for _, line in lex(may_show, Dialect.MINTMT).lines)
+    return first_mintmt_form(text) is not None
 
 
-def _shows_mintmt(line: LexedLine) -> bool:
-    return _quote_comment(line) or _two_word_closer(line) or _block_opener(line) or TokenKind.ADDRESS in line.kinds
+def _form(line: LexedLine) -> str | None:
+    """The MintMT form ``line`` shows, named as written (``End If``, ``MOVER(…)``); None for none."""
+    kinds, texts = line.kinds, line.texts
+    if _quote_comment(line):
+        return "a ' comment"
+    closers = (text.split() for kind, text in zip(kinds, texts, strict=True) if kind in _CLOSERS)
+    if (two_words := next((words for words in closers if len(words) > 1), None)) is not None:
+        return " ".join(two_words)
+    if _block_opener(line):
+        return " ".join(texts)
+    if TokenKind.ADDRESS in kinds:
+        return f"{texts[kinds.index(TokenKind.ADDRESS) - 1]}(…)"
+    return None
 
 
 def _quote_comment(line: LexedLine) -> bool:
     """A ``'`` comment that is not the shape of a v4 character constant."""
     start = line.comment_start
     return start >= 0 and line.text[start] in _QUOTES and not _CHARACTER_CONSTANT.match(line.text, start)
-
-
-def _two_word_closer(line: LexedLine) -> bool:
-    return any(kind in _CLOSERS and len(text.split()) > 1 for kind, text in zip(line.kinds, line.texts, strict=True))
 
 
 def _block_opener(line: LexedLine) -> bool:

@@ -21,9 +21,10 @@ import click
 from mintlang.cli.files import program_as_own_configuration
 from mintlang.cli.options import refuse_quiet_and_verbose
 from mintlang.cli.report import shortened
-from mintlang.cli.settings import settings_failed
+from mintlang.cli.settings import option_chosen, settings_failed
 from mintlang.cli.terminal import BROKEN_PIPE, Messages, discard_standard_output
 from mintlang.controllers import ControllerProfile
+from mintlang.detection import dialect_hint
 from mintlang.dialect import Dialect
 from mintlang.runtime import scenario as scenarios
 from mintlang.runtime.comms import PortUnavailable
@@ -123,6 +124,9 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
             click.echo(f"mint-run: {binary}: not run", err=True)
             sys.exit(_USAGE_ERROR)
     source, config = files[0].text, files[1].text if len(files) > 1 else None
+    dialect_chosen = option_chosen(click.get_current_context(), "dialect")
+    if not (quiet or dialect_chosen) and (hint := dialect_hint(str(program), source, Dialect(dialect))) is not None:
+        click.echo(hint, err=True)
     inputs = dict.fromkeys((*stimulus_paths, *expect_paths), "a scenario file")
     if config_path is not None:
         inputs[config_path] = "the configuration"

@@ -25,6 +25,7 @@ from mintlang.cli.report import FileReport
 from mintlang.diagnostics import Diagnostic
 from mintlang.semantic.units import Unit
 from mintlang.settings import FileSettings, Overrides, settings_for
+from mintlang.settings.model import DEFAULT
 from mintlang.source import SourceFile, read_source
 
 # Unused variable, macro, suppression: a use in any program counts.
@@ -32,7 +33,9 @@ _USE_FINDINGS = frozenset({"W103", "W105", UNUSED_SUPPRESSION})
 
 
 def options_of(settings: FileSettings) -> CheckOptions:
-    return CheckOptions(settings.dialect.value, settings.controller.value, settings.selected, settings.ignored)
+    dialect = settings.dialect
+    chosen = dialect.origin != DEFAULT
+    return CheckOptions(dialect.value, settings.controller.value, settings.selected, settings.ignored, chosen)
 
 
 @dataclass

@@ -16,7 +16,7 @@ from typing import IO, NoReturn
 import click
 
 from mintlang.cli.applications import plan
-from mintlang.cli.checking import check_file
+from mintlang.cli.checking import Checked, check_file
 from mintlang.cli.files import cannot_read, find, program_as_own_configuration
 from mintlang.cli.fixing import Fixing, Outcome, apply, fix_options, fixable_summary, fixed_summary, marked
 from mintlang.cli.options import (
@@ -212,6 +212,8 @@ def check(
     if outcome is not None and not quiet:
         notes = outcome.notes() + ([fixed_summary(outcome, diff=diff)] if diff or output_format != "text" else [])
         click.echo("".join(f"mint check: {note}\n" for note in notes), err=True, nl=False)
+    if not quiet:
+        click.echo("".join(f"{hint}\n" for hint in _hints(results, planned.hidden)), err=True, nl=False)
     for problem in problems:
         click.echo(f"mint check: {problem}", err=True)
     if verbose:
@@ -234,6 +236,12 @@ def _write_fix_summary(reports: list[FileReport], outcome: Outcome | None, strea
     lines = [fixed_summary(outcome, diff=False)] if outcome is not None else []
     fixable = fixable_summary(reports)
     stream.write("".join(f"{line}\n" for line in [*lines, *([fixable] if fixable else [])]))
+
+
+def _hints(results: list[Checked], hidden: set[int]) -> list[str]:
+    """Each reported program's hint that it looks like MintMT, once (on standard error, beside any format)."""
+    hints = (result.hint for index, result in enumerate(results) if index not in hidden)
+    return list(dict.fromkeys(hint for hint in hints if hint is not None))
 
 
 def _configuration(path: Path | None) -> SourceFile | None:

@@ -15,7 +15,9 @@ from typing import TYPE_CHECKING
 from mintlang import check_application
 from mintlang.cli.files import cannot_read, is_configuration
 from mintlang.cli.report import FileReport
+from mintlang.detection import dialect_hint
 from mintlang.diagnostics import Diagnostic
+from mintlang.dialect import Dialect
 from mintlang.fixes import Fixed, fix_text
 from mintlang.source import SourceFile, read_source
 
@@ -31,6 +33,7 @@ class CheckOptions:
     controller: str
     select: tuple[str, ...] | None
     ignore: tuple[str, ...]
+    dialect_chosen: bool  # False: v4 by default, so a program that looks like MintMT gets a hint
 
 
 class Fixing(StrEnum):
@@ -79,6 +82,7 @@ class Checked:
     problem: str | None = None
     fixed: FileFixed | None = None  # the program as read and as fixed, when fixing
     as_read: FileReport | None = None  # when fixing: the report of the text as read, for a fix not written
+    hint: str | None = None  # the program looks like MintMT, read as v4 by default (``dialect_hint``)
 
     def unfixed(self) -> Checked:
         """This check as if nothing had been fixed: the fixed text could not be written."""
@@ -99,10 +103,11 @@ def check_file(job: Job) -> Checked:
     if is_configuration(job.path):
         analysis = check_application("", config=source.text, select=options.select, **arguments)
         return Checked(FileReport(str(source.path), source.text, analysis.configuration))
+    hint = None if options.dialect_chosen else dialect_hint(str(source.path), source.text, Dialect(options.dialect))
     if job.fixing is not None:
-        return _fix_program(job, source, arguments)
+        return replace(_fix_program(job, source, arguments), hint=hint)
     analysis = check_application(source.text, config=job.configuration, select=options.select, **arguments)
-    return Checked(FileReport(str(source.path), source.text, analysis.program), analysis.configuration)
+    return Checked(FileReport(str(source.path), source.text, analysis.program), analysis.configuration, hint=hint)
 
 
 def _fix_program(job: Job, source: SourceFile, arguments: dict[str, object]) -> Checked:

@@ -25,11 +25,17 @@ from mintlang.settings import FileSettings, Given, Overrides, ProjectSettings, S
 _SETTINGS_ERROR = 2
 _TYPED = (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)
 _SHARED = ("controller", "dialect")  # top-level settings every tool's options of the same name default to
+_FROM_SETTINGS = "mint.from_settings"  # the context's meta key: the options the settings file gave
 
 
 def typed(context: click.Context, name: str) -> bool:
     """Whether the user gave the option ``name`` (by its parameter name), rather than its default applying."""
     return context.get_parameter_source(name) in _TYPED
+
+
+def option_chosen(context: click.Context, name: str) -> bool:
+    """Whether the option ``name`` was chosen: typed by the user, or given by the settings file (``ProjectCommand``)."""
+    return typed(context, name) or name in context.meta.get(_FROM_SETTINGS, ())
 
 
 def overrides(
@@ -109,7 +115,9 @@ class ProjectCommand(click.Command):
         try:
             project = project_for(self.start(ctx.params))
             if project is not None:
-                ctx.params.update(self._defaults(ctx, project))
+                defaults = self._defaults(ctx, project)
+                ctx.params.update(defaults)
+                ctx.meta[_FROM_SETTINGS] = frozenset(defaults)
         except SettingsError as error:
             settings_failed(self.tool, error)
         return super().invoke(ctx)

@@ -6,6 +6,7 @@ import time
 from dataclasses import dataclass
 from enum import StrEnum
 
+from mintlang.detection import dialect_hint
 from mintlang.dialect import Dialect
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.run import run_source
@@ -57,6 +58,7 @@ class TestResult:
     seconds: float
     coverage: tuple[FileCoverage, ...] = ()  # with ``Options.coverage``
     stop_failed: bool = False  # the run stopped on an error, a deadlock … that no ``stopped`` expectation asked for
+    hint: str | None = None  # the program looks like MintMT, run as v4 by default (``dialect_hint``)
 
 
 @dataclass(frozen=True, slots=True)
@@ -92,6 +94,8 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
     program = read_source(case.program)
     if (binary := program.binary()) is not None:
         return _error(case, binary, began)
+    chosen = options.dialect is not None or settings.dialect.origin != DEFAULT
+    hint = None if chosen else dialect_hint(str(case.program), program.text, dialect)
     unit, partner = settings.partner(case.program)
     configuration = read_source(partner).text if unit is Unit.PROGRAM and partner is not None else None
     files = {"program": case.program}
@@ -112,14 +116,15 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
     checks = tuple(_check(outcome) for outcome in result.outcomes)
     stopped = result.stop.reason.value
     if result.refused:
-        return _error(case, result.stop.message, began, stopped=stopped)
+        return _error(case, result.stop.message, began, stopped=stopped, hint=hint)
     if not checks:
-        return _error(case, "no expectation to check: add REM @expect lines or [[expect]] to its scenario", began)
+        missing = "no expectation to check: add REM @expect lines or [[expect]] to its scenario"
+        return _error(case, missing, began, hint=hint)
     verdict = Verdict.PASSED if expectations_pass(result.outcomes, stopped) else Verdict.FAILED
     elapsed = time.perf_counter() - began
     stop_failed = stop_fails(result.outcomes, stopped)
     return TestResult(
-        case, verdict, stopped, result.stop.message, checks, result.stop.time_ms, elapsed, coverage, stop_failed
+        case, verdict, stopped, result.stop.message, checks, result.stop.time_ms, elapsed, coverage, stop_failed, hint
     )
 
 
@@ -136,5 +141,5 @@ def _check(outcome: Outcome) -> Check:
     return Check(what, when, expected, outcome.actual, outcome.held, origin, outcome.detail)
 
 
-def _error(case: TestCase, message: str, began: float, *, stopped: str = "") -> TestResult:
-    return TestResult(case, Verdict.ERROR, stopped, message, (), 0, time.perf_counter() - began)
+def _error(case: TestCase, message: str, began: float, *, stopped: str = "", hint: str | None = None) -> TestResult:
+    return TestResult(case, Verdict.ERROR, stopped, message, (), 0, time.perf_counter() - began, hint=hint)

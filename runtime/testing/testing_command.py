@@ -87,6 +87,8 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
             reports.text(results, seconds, shown, quiet=quiet, verbose=verbose)
     if coverage:
         _coverage(results, lcov, None if quiet else console(color, stderr=output_format != "text"))
+    if not quiet:
+        click.echo("".join(f"{result.hint}\n" for result in results if result.hint is not None), err=True, nl=False)
     if unreadable:
         sys.exit(USAGE)
     passed = all(result.verdict is Verdict.PASSED for result in results)

@@ -98,5 +98,20 @@ GROUP = Group(
             fix="Ask for 15 digits or fewer.",
             safety=FixSafety.NONE,
         ),
+        RuleDoc(
+            "W119",
+            catches="SOFTLIMITREVERSE set at or above SOFTLIMITFORWARD on the same axis, when the program "
+            "writes each of them once on that axis with a constant.",
+            why="The reverse software limit must be less than the forward one; with the two crossed, "
+            "no position is inside both limits, so the soft limits do not guard the travel the program "
+            "means them to. The guide gives no error number for it, so the controller's reaction is not known.",
+            example=Example(
+                before="SOFTLIMITFORWARD.0 = 100\nSOFTLIMITREVERSE.0 = 200\n",
+                after="SOFTLIMITFORWARD.0 = 200\nSOFTLIMITREVERSE.0 = 100\n",
+            ),
+            manual=("v4:16000", "v4:16098"),
+            fix="Swap the two values, or correct the one that was mistyped.",
+            safety=FixSafety.NONE,
+        ),
     ),
 )

@@ -20,7 +20,7 @@ from mintlang.runtime.motion.moves import PROFILER_TICK_MS, Move, next_profiler_
 from mintlang.runtime.motion.parameters import DEFAULTS, GAINS, SCALED, bounds, power_up
 from mintlang.runtime.motion.plants import IdealPlant, Plant, round_half_away
 from mintlang.runtime.motion.servo import ServoGains, ServoLoop
-from mintlang.runtime.ranges import check_range, shown
+from mintlang.runtime.ranges import check_range
 
 # AXISMODE bits (AX-1) and AXISERROR bits (AX-5)
 MD_LINEAR, MD_JOG, MD_CIRCULAR, MD_TORQUE, MD_HOMING = 2, 4, 8, 16, 32
@@ -45,7 +45,6 @@ GUARDS = frozenset(
         "SCALE",
     }
 )
-SOFT_LIMITS = frozenset({"SOFTLIMITFORWARD", "SOFTLIMITREVERSE"})  # the reverse one must stay below the forward one
 
 
 def wrap(counts: float) -> float:
@@ -141,8 +140,6 @@ class Axis:
                 raise MintError(3, self.number, "SCALE must be positive")
             if self.busy():
                 raise MintError(MOTION_IN_PROGRESS, self.number, "SCALE can only change on an idle axis")
-        if name in SOFT_LIMITS:
-            self._keep_soft_limits_apart(name, value * scale)
         self.parameters[name] = value * scale
         if name in GUARDS:
             self.guarded = self._guarded()
@@ -159,17 +156,6 @@ class Axis:
                 kaccel=p["KACCEL"],
                 daclimitmax=p["DACLIMITMAX"],
             )
-
-    def _keep_soft_limits_apart(self, name: str, counts: float) -> None:
-        """SOFTLIMITREVERSE must be less than SOFTLIMITFORWARD (000:16000, 16142). The guide names no error for a
-        write that breaks it: error 3, and the limit keeps its value (choice, ``BEHAVIOUR.md``)."""
-        p = self.parameters
-        reverse = counts if name == "SOFTLIMITREVERSE" else p["SOFTLIMITREVERSE"]
-        forward = counts if name == "SOFTLIMITFORWARD" else p["SOFTLIMITFORWARD"]
-        if reverse >= forward:
-            scale = self.scale
-            below = f"SOFTLIMITREVERSE {shown(reverse / scale)} must be below SOFTLIMITFORWARD {shown(forward / scale)}"
-            raise MintError(3, self.number, below)
 
     # ------------------------------------------------------------------ state
 

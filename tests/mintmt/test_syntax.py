@@ -131,6 +131,24 @@ def test_only_comms_locations_1_to_5_raise_an_event_and_each_event_has_one_block
     ]
 
 
+def test_a_label_handler_beside_an_event_block_for_the_same_event_is_a_second_handler() -> None:
+    """An Event block handles its event (MT-13): a #COMMS1 label for Comms1 is a second handler."""
+    source = "Dim a\nEnd\n#COMMS1\n  a = 1\nReturn\nEvent Comms1\n  a = 2\nEnd Event\n"
+    analysis = mintlang.check_application(source, dialect="mintmt")
+    assert [(d.code, d.message, d.span.start) for d in analysis.program] == [
+        (
+            "E2003",
+            "Syntax error: #COMMS1 handles the event of the Event block of line 6: one handler per event",
+            10,
+        ),  # "Dim a" and "End" with their line breaks before it
+    ]
+
+
+def test_a_label_handler_for_another_event_than_the_event_block_is_fine() -> None:
+    source = "Dim a\nEnd\n#COMMS2\n  a = 1\nReturn\nEvent Comms1\n  a = 2\nEnd Event\n"
+    assert mintlang.check_application(source, dialect="mintmt").program == ()
+
+
 def test_a_program_has_one_startup_block() -> None:
     """The note's Startup block is the code run at power-up (004:128-133): a second one would never run."""
     source = "Startup\n  Print 1\nEnd Startup\nStartup\n  Print 2\nEnd Startup\n"

@@ -163,7 +163,7 @@ def _expectation(phrase: Phrase, origin: Origin, dialect: Dialect) -> Expectatio
     if phrase.accept("stopped"):
         expectation = builders.stopped_expectation(phrase.word("why the run stopped").lower(), origin)
     elif phrase.accept("terminal"):
-        exact = phrase.choice("'contains' or 'is'", ("contains", "is")) == "is"
+        exact = phrase.choice("how the terminal is matched", ("contains", "is")) == "is"
         text = phrase.text("the text")
         expectation = builders.terminal_expectation(text, _when(phrase), origin, exact=exact)
     elif phrase.accept("no"):

@@ -244,10 +244,10 @@ def test_a_bad_directive_is_an_error_at_its_line(directive: str, message: str) -
         ("GO = 1", "GO is a command, not a value to expect"),
         ("stopped somewhere", "a run stops for one of end, error, until, deadlock, wall-limit, not 'somewhere'"),
         ("count = 1 ± -1", "a tolerance is not negative, not -1"),
-        ('terminal has "x"', "expected 'contains' or 'is' (contains, is), not 'has'"),
+        ('terminal has "x"', "expected how the terminal is matched (contains, is), not 'has'"),
         (
             'terminal contians "x"',
-            "expected 'contains' or 'is' (contains, is), not 'contians'; did you mean 'contains'?",
+            "expected how the terminal is matched (contains, is), not 'contians'; did you mean 'contains'?",
         ),
     ],
 )

@@ -118,11 +118,15 @@ def _one_of(entry: _Entry, keys: tuple[str, ...]) -> str:
     if len(present) > 1:
         raise Invalid(f"{entry.name} has both {' and '.join(present)}", entry.line_of(present[-1]))
     if not present:
-        problem = f"{entry.name} needs one of {', '.join(keys)}"
+        needed = f"needs one of {', '.join(keys)}"
         if (found := _misspelt(entry.written(), keys)) is not None:
-            raise Invalid(f"{problem}; {did_you_mean(found[1])}", entry.line_of(found[0]))
+            word, meant = found
+            message = f"unknown key {word!r} in {entry.name}, which {needed}; {did_you_mean(meant)}"
+            raise Invalid(message, entry.line_of(word))
         written = [repr(key) for key in entry.written()]
-        raise Invalid(problem + (f" (it has {', '.join(written)})" if written else ""), entry.origin.line)
+        raise Invalid(
+            f"{entry.name} {needed}" + (f" (it has {', '.join(written)})" if written else ""), entry.origin.line
+        )
     return present[0]
 
 

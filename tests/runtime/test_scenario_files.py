@@ -219,7 +219,8 @@ def test_a_misspelt_key_or_entry_is_named_with_the_word_meant(tmp_path: Path) ->
         (
             "[[expect]]\nwaht = 'a'\nequals = 1",
             3,
-            "[[expect]] needs one of what, terminal_contains, terminal_is, stopped; did you mean 'what'?",
+            "unknown key 'waht' in [[expect]], which needs one of what, terminal_contains, terminal_is, stopped;"
+            " did you mean 'what'?",
         ),
         (
             "[[expect]]\nvalue = 'a'\nequals = 1",

@@ -16,11 +16,11 @@ from dataclasses import replace
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.migrate.model import MigrationResult
-from mintlang.migrate.verification import DEFAULT_UNTIL_MS, Verification, compare
-from mintlang.migrate.verification.model import DEFAULT_WALL_S, Application, Place
+from mintlang.migrate.verification import DEFAULT_UNTIL_MS, Verification
+from mintlang.migrate.verification.model import DEFAULT_WALL_S, Application
 from mintlang.migrate.verification.runnable import flagged_places, without_expectations
-from mintlang.migrate.verification.runs import Recording, record
-from mintlang.migrate.verification.verifier import conclude
+from mintlang.migrate.verification.runs import record
+from mintlang.migrate.verification.verifier import conclude, short_of
 from mintlang.runtime.scenario.stimulus import Scenario
 
 
@@ -43,7 +43,7 @@ def verify(
         application = Application(program or "", configuration)
         runs.append(record(application, dialect, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s))
     original, migrated = runs
-    short = _short(original, migrated, flagged_places(result))
+    short = short_of(original, migrated, flagged_places(result), names=("v4", "MintMT"))
     return conclude(original, migrated, result, short, controllers=(target, target))
 
 
@@ -55,20 +55,3 @@ def _originals(result: MigrationResult) -> tuple[str, str | None]:
 def _migrated(result: MigrationResult) -> tuple[str, str | None]:
     configuration = result.configuration
     return result.text, configuration.text if configuration is not None else None
-
-
-def _short(original: Recording, migrated: Recording, flagged: set[Place]) -> str | None:
-    """Why the comparison cannot cover the whole run: the original does not compile, the migration does
-    not until a person deals with a line left for them, both stopped on an error at once, or the simulation
-    stopped where the program would not. A migration that does not compile on a line nobody flagged is no
-    such reason: it diverges."""
-    if original.refused:
-        return f"the v4 original does not compile: {compare.stopped(original).message}"
-    stop = compare.stopped(migrated)
-    if migrated.refused and stop.line in flagged:
-        return f"the MintMT program does not compile until {stop.line}, left for a person, is done: {stop.message}"
-    original_stop = compare.stopped(original)
-    if original_stop.reason == stop.reason == "error" and original_stop.time_ms == stop.time_ms == 0:
-        # both failed at once (a drive left disabled): agreeing on that verifies nothing, as for v3 -> v4
-        return f"both runs stopped on an error at 0 ms ({original_stop.message}; {stop.message})"
-    return original.short or migrated.short

@@ -51,7 +51,7 @@ def verify(
     v4, disabled = runnable.migrated(result, target)
     left = record(v3, Dialect.V3, v3_controller, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
     right = record(v4, Dialect.V4, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
-    short = _short(left, right, runnable.flagged_places(result))
+    short = short_of(left, right, runnable.flagged_places(result))
     return conclude(left, right, result, short, controllers=(v3_controller, target), disabled=disabled)
 
 
@@ -85,19 +85,27 @@ def conclude(
     )
 
 
-def _short(v3: Recording, v4: Recording, flagged: set[Place]) -> str | None:
+def short_of(
+    original: Recording, migrated: Recording, flagged: set[Place], *, names: tuple[str, str] = ("v3", "v4")
+) -> str | None:
     """Why the comparison cannot cover the whole run: the original does not compile, the migration does not
-    until a person deals with a line left for them, or the simulation stopped where the program would not."""
-    if v3.refused:
-        return f"the v3 original does not compile: {compare.stopped(v3).message}"
-    v4_stop = compare.stopped(v4)
-    if v4.refused and v4_stop.line in flagged:
-        return f"the v4 program does not compile until {v4_stop.line}, left for a person, is done: {v4_stop.message}"
-    v3_stop = compare.stopped(v3)
-    if v3_stop.reason == v4_stop.reason == "error" and v3_stop.time_ms == v4_stop.time_ms == 0:
+    until a person deals with a line left for them, both stopped on an error at once, or the simulation
+    stopped where the program would not. A migration that does not compile on a line nobody flagged is no
+    such reason: it diverges. ``names`` are the two dialects, as the reasons name them."""
+    source, target = names
+    if original.refused:
+        return f"the {source} original does not compile: {compare.stopped(original).message}"
+    migrated_stop = compare.stopped(migrated)
+    if migrated.refused and migrated_stop.line in flagged:
+        return (
+            f"the {target} program does not compile until {migrated_stop.line}, left for a person, is done: "
+            f"{migrated_stop.message}"
+        )
+    original_stop = compare.stopped(original)
+    if original_stop.reason == migrated_stop.reason == "error" and original_stop.time_ms == migrated_stop.time_ms == 0:
         # both failed at once (a drive left disabled, a missing RESET): agreeing on that verifies nothing
-        return f"both runs stopped on an error at 0 ms ({v3_stop.message}; {v4_stop.message})"
-    return v3.short or v4.short
+        return f"both runs stopped on an error at 0 ms ({original_stop.message}; {migrated_stop.message})"
+    return original.short or migrated.short
 
 
 def _flagged(result: MigrationResult) -> tuple[tuple[str, ManualItem], ...]:

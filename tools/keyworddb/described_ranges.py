@@ -71,11 +71,13 @@ def _described(keyword: Keyword, entry: Entry, seed: Seed, constants: Mapping[st
     return _looptime_range(entry, seed) or _bit_mask_range(keyword, entry, seed, constants) or _baud_range(entry, seed)
 
 
+def _defers(row: Attributes) -> bool:
+    """Whether the row's range is only a pointer to the entry's text."""
+    return row.range is not None and _DEFERRED.match(row.range.text) is not None
+
+
 def _row(row: Attributes, described: ValueRange | None) -> Attributes:
-    limits = row.range
-    if described is None or limits is None or not _DEFERRED.match(limits.text):
-        return row
-    return replace(row, range=described)
+    return replace(row, range=described) if described is not None and _defers(row) else row
 
 
 def with_described_ranges(
@@ -85,8 +87,7 @@ def with_described_ranges(
     entries = {canonical_name(e): e for e in v4_entries(seed) if e.kind is EntryKind.FULL}
     result: dict[str, Keyword] = {}
     for name, keyword in keywords.items():
-        deferred = any(row.range is not None and _DEFERRED.match(row.range.text) for row in keyword.attributes)
-        if not deferred or name not in entries:
+        if not any(_defers(row) for row in keyword.attributes) or name not in entries:
             result[name] = keyword
             continue
         described = _described(keyword, entries[name], seed, constants)

@@ -8,8 +8,9 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from mintlang.comms_map import system_element
 from mintlang.runtime.clock import Clock
-from mintlang.runtime.comms.array import CommsArray, system_element
+from mintlang.runtime.comms.array import CommsArray
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.keywords import Channels, KeywordTable, per_channel

@@ -8,72 +8,17 @@ elements 1..5 an external source wrote: the runtime turns those into ``#COMMS1..
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 
+from mintlang.comms_map import SYSTEM_ELEMENTS, system_element
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.numbers import f32
 
 USER_ELEMENTS = range(1, 100)
-SYSTEM_ELEMENTS = range(100, 256)
 EVENT_ELEMENTS = range(1, 6)
-
-_AXIS_BASE = 100
-_AXIS_STRIDE = 15
-_AXIS_COUNT = 8
-_AXIS_KEYWORDS = ("POS", "VEL", "AXISMODE", "AXISERROR", "DAC", "ENCODER", "IDLE", "FOLERROR")
-_MISC_BASE = _AXIS_BASE + _AXIS_STRIDE * _AXIS_COUNT
-_ADC_OFFSETS = range(4, 12)
-_MISC_KEYWORDS = {
-    0: "IN",
-    2: "OUT",
-    12: "ERR",
-    13: "ERL",
-    14: "ERRAXIS",
-    15: "EXECUTION_STATUS",
-    16: "BUFFER",
-    17: "LINE",
-    19: "FIRMWAREREVISION",
-}
-_WRITABLE = frozenset({"OUT"})
 
 _ERR_READ_ONLY = 45
 _ERR_RESERVED = 46
 _ERR_INVALID_INDEX = 2016
-
-
-@dataclass(frozen=True, slots=True)
-class SystemElement:
-    """What a system element (100..255) shows: a keyword, its axis or channel, and whether it may be written.
-
-    ``EXECUTION_STATUS`` (0 command line, 1 compiling, 2 running), ``BUFFER`` (0 command line,
-    1 program, 2 configuration), ``LINE`` (the line being executed) and ``FIRMWAREREVISION``
-    (the build number) have no Mint keyword; the runtime answers them itself.
-    """
-
-    keyword: str
-    channel: int | None
-    writable: bool
-
-
-def system_element(address: int) -> SystemElement | None:
-    """The CM-1 meaning of a system element, or None when the element is reserved.
-
-    The runtime's ``system_read``/``system_write`` callbacks use this table, so the layout lives in one place.
-    """
-    if address not in SYSTEM_ELEMENTS:
-        return None
-    if address < _MISC_BASE:
-        axis, offset = divmod(address - _AXIS_BASE, _AXIS_STRIDE)
-        if offset >= len(_AXIS_KEYWORDS):
-            return None
-        return SystemElement(_AXIS_KEYWORDS[offset], axis, writable=False)
-    offset = address - _MISC_BASE
-    if offset in _ADC_OFFSETS:
-        return SystemElement("ADC", offset - _ADC_OFFSETS.start, writable=False)
-    keyword = _MISC_KEYWORDS.get(offset)
-    if keyword is None:
-        return None
-    return SystemElement(keyword, None, writable=keyword in _WRITABLE)
 
 
 class CommsArray:
@@ -88,7 +33,7 @@ class CommsArray:
       reserved; it applies the value and returns True, or returns False for a read-only element,
       which becomes error 45.
 
-    ``system_element`` gives the CM-1 layout the callbacks implement. Either callback may raise
+    ``mintlang.comms_map.system_element`` gives the CM-1 layout the callbacks implement. Either callback may raise
     ``MintError`` itself (e.g. a value out of range), which propagates.
     Index 0 and indexes above 255 are error 2016 (CM-1 RC).
 

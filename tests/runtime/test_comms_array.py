@@ -6,7 +6,8 @@ from collections.abc import Callable
 
 import pytest
 
-from mintlang.runtime.comms.array import CommsArray, SystemElement, system_element
+from mintlang.comms_map import SystemElement, system_element
+from mintlang.runtime.comms.array import CommsArray
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.numbers import f32

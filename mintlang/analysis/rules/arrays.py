@@ -17,6 +17,7 @@ from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import Facts, LineScope
+from mintlang.comms_map import system_element
 from mintlang.dialect import Dialect
 from mintlang.semantic.constants import constant_integer, constant_value
 from mintlang.semantic.symbols import SymbolKind
@@ -24,19 +25,11 @@ from mintlang.syntax import nodes as n
 
 _NUMBERS = (n.Number, n.CharConstant, n.ConstantRef)
 _COMMS_ELEMENTS = range(1, 256)
-_AXIS_ELEMENTS, _PER_AXIS = range(100, 220), 15  # 15 locations for each of eight axes, then I/O and the rest
-_AXIS_READ_ONLY = ("POS", "VEL", "AXISMODE", "AXISERROR", "DAC", "ENCODER", "IDLE", "FOLERROR")  # offsets 0-7
-_IO_START = 220
-_IO_READ_ONLY = {  # by offset from 220; 2 (OUT) may be written, the others are reserved
-    0: "IN",
-    **{4 + channel: f"ADC.{channel}" for channel in range(8)},
-    12: "ERR",
-    13: "ERL",
-    14: "ERRAXIS",
-    15: "the execution status",
-    16: "the buffer that runs",
-    17: "the line number that runs",
-    19: "FIRMWAREREVISION",
+# What the v4 map's elements hold that no keyword names, as a message tells it
+_UNNAMED = {
+    "EXECUTION_STATUS": "the execution status",
+    "BUFFER": "the buffer that runs",
+    "LINE": "the line number that runs",
 }
 
 
@@ -102,10 +95,12 @@ def _comms_element(call: n.Call, scope: LineScope) -> tuple[n.Expression, int] |
 
 def _read_only_parameter(element: int) -> str | None:
     """What the read-only COMMS location ``element`` holds; None for one that may be written, or is reserved."""
-    if element in _AXIS_ELEMENTS:
-        axis, offset = divmod(element - _AXIS_ELEMENTS.start, _PER_AXIS)
-        return f"{_AXIS_READ_ONLY[offset]} of axis {axis}" if offset < len(_AXIS_READ_ONLY) else None
-    return _IO_READ_ONLY.get(element - _IO_START)
+    held = system_element(element)
+    if held is None or held.writable:
+        return None
+    if held.channel is None:
+        return _UNNAMED.get(held.keyword, held.keyword)
+    return f"ADC.{held.channel}" if held.keyword == "ADC" else f"{held.keyword} of axis {held.channel}"
 
 
 def _size_problems(scope: LineScope, statement: n.Dim) -> Iterator[Finding]:

@@ -25,7 +25,6 @@ from mintlang.cli.report import FileReport
 from mintlang.diagnostics import Diagnostic
 from mintlang.semantic.units import Unit
 from mintlang.settings import FileSettings, Overrides, settings_for
-from mintlang.settings.model import DEFAULT
 from mintlang.source import SourceFile, read_source
 
 # Unused variable, macro, suppression: a use in any program counts.
@@ -34,8 +33,7 @@ _USE_FINDINGS = frozenset({"W103", "W105", UNUSED_SUPPRESSION})
 
 def options_of(settings: FileSettings) -> CheckOptions:
     dialect = settings.dialect
-    chosen = dialect.origin != DEFAULT
-    return CheckOptions(dialect.value, settings.controller.value, settings.selected, settings.ignored, chosen)
+    return CheckOptions(dialect.value, settings.controller.value, settings.selected, settings.ignored, dialect.chosen)
 
 
 @dataclass

@@ -36,6 +36,11 @@ class Given(Generic[T]):
     value: T
     origin: str = DEFAULT
 
+    @property
+    def chosen(self) -> bool:
+        """Whether someone chose the value (a settings file, the command line), not the default."""
+        return self.origin != DEFAULT
+
 
 def selectors(items: object) -> tuple[str, ...]:
     """Codes or code prefixes as ``--select`` reads them (``mintlang.codes.selector``).

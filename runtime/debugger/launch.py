@@ -32,7 +32,7 @@ from mintlang.runtime.simulation import Limits, Simulator
 from mintlang.runtime.trace import PlotUnavailable
 from mintlang.semantic.units import Unit
 from mintlang.settings import SettingsError, settings_for
-from mintlang.settings.model import DEFAULT, FileSettings, Given
+from mintlang.settings.model import FileSettings, Given
 from mintlang.source import read_source
 
 AUTO = "auto"  # the dialect the program's text shows (v4 or MintMT), as the editor's setting ``auto`` does
@@ -266,7 +266,7 @@ def _read(path: Path, role: str) -> str:
 
 def _given(setting: Given[Any], fallback: object) -> Any:
     """A setting the settings file gives, else ``fallback`` (the settings' own default is not a choice)."""
-    return str(setting.value) if setting.origin != DEFAULT else fallback
+    return str(setting.value) if setting.chosen else fallback
 
 
 def _configuration(program: Path, arguments: Mapping[str, Any], settings: FileSettings) -> Path | None:

@@ -24,7 +24,6 @@ from mintlang.runtime.testing.coverage import FileCoverage, Recorder
 from mintlang.runtime.testing.discovery import TestCase
 from mintlang.semantic.units import Unit
 from mintlang.settings import FileSettings, SettingsError, settings_for
-from mintlang.settings.model import DEFAULT
 from mintlang.source import read_source
 
 
@@ -94,7 +93,7 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
     program = read_source(case.program)
     if (binary := program.binary()) is not None:
         return _error(case, binary, began)
-    chosen = options.dialect is not None or settings.dialect.origin != DEFAULT
+    chosen = options.dialect is not None or settings.dialect.chosen
     hint = None if chosen else dialect_hint(str(case.program), program.text, dialect)
     unit, partner = settings.partner(case.program)
     configuration = read_source(partner).text if unit is Unit.PROGRAM and partner is not None else None
@@ -131,7 +130,7 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
 def _configured_controller(settings: FileSettings, dialect: Dialect) -> str | None:
     """The settings file's controller; none (the dialect's own default) when it names none or the program is v3."""
     given = settings.controller
-    return given.value.value if given.origin != DEFAULT and dialect is not Dialect.V3 else None
+    return given.value.value if given.chosen and dialect is not Dialect.V3 else None
 
 
 def _check(outcome: Outcome) -> Check:

@@ -440,16 +440,20 @@ class Motion:
         # the axis straight from the list; self.axis (error 2) only for one the controller lacks
         axis = axes[channel] if channel is not None and 0 <= channel < len(axes) else self.axis(channel)
         clock = self.clock
-        move = axis.move
-        if move is None or not move.live or not self.stands_still(axis, clock.now):
+        if not self._standing_on_idle_master(axis, clock.now):
             clock.horizon = min(clock.horizon, clock.now + 1 if axis.plant.closed_loop else axis.next_event(clock.now))
         return 1.0 if axis.idle() else 0.0
+
+    def _standing_on_idle_master(self, axis: Axis, now: int) -> bool:
+        """Whether the live move of ``axis`` stands still until its idle master moves: nothing read of it changes
+        before then."""
+        move = axis.move
+        return move is not None and move.live and self.stands_still(axis, now)
 
     def watched(self, axis: Axis, *, moving: bool = False) -> Axis:
         """Reading axis state: it may change when the move ends, or every tick while moving."""
         now = self.clock.now
-        move = axis.move
-        if move is not None and move.live and self.stands_still(axis, now):
+        if self._standing_on_idle_master(axis, now):
             return axis
         self.clock.changes_at(axis.next_event(now))
         if moving and (axis.move is not None or axis.settling()):

@@ -138,9 +138,16 @@ class Simulator:
             self.on_tick(t)
 
     def _deadlock(self, t: int) -> str:
-        """Why nothing can wake the program, with the likeliest cause: moves waiting on masters nothing moves,
-        or a full move buffer."""
+        """Why nothing can wake the program, with the likeliest cause: what it waits on when that is inputs or
+        variables (a PAUSE asleep), else moves waiting on masters nothing moves, or a full move buffer. A move
+        stalled on its master is named only when the program may be waiting on it: a PAUSE on an input waits
+        on the input, whatever a follower does."""
         message = "blocked, and nothing scheduled or moving can ever wake the program"
+        if self.c.vm.asleep:
+            return (
+                f"{message}: it waits on inputs or variables that no scenario input, event or timer will change"
+                " (inputs change only as a scenario says: --stimulus, or REM @sim input)"
+            )
         stalled = self._stalled_on_masters(t)
         if stalled:
             waits = ", ".join(f"axis {axis} on {master}" for axis, master in stalled.items())

@@ -63,7 +63,15 @@ def test_a_follow_on_an_idle_master_waiting_on_an_input_no_one_sets_is_a_deadloc
     source = "MASTERSOURCE.0 = _msPOS\nMASTERCHANNEL.0 = 1\nFOLLOW.0 = 1\nPAUSE IN.3 = 1\n"
     result = simulate(source)
     assert (result.stop.reason, result.stop.line) == (StopReason.DEADLOCK, 4)
-    assert "axis 0 on axis 1" in result.stop.message
+    # the program waits on the input (000:1114), not on the follower: the message says so and blames no axis
+    assert "waits on inputs or variables" in result.stop.message
+    assert "axis 0" not in result.stop.message
+
+
+def test_a_pause_on_an_input_with_no_move_running_says_it_waits_on_inputs() -> None:
+    result = simulate("PAUSE IN1 = 1\nPRINT 1\n")
+    assert (result.stop.reason, result.stop.line) == (StopReason.DEADLOCK, 1)
+    assert "waits on inputs or variables" in result.stop.message
 
 
 def test_a_follow_whose_master_an_input_will_move_is_no_deadlock() -> None:
@@ -82,7 +90,7 @@ def test_a_cam_on_an_idle_master_under_a_program_waiting_on_nothing_else_is_a_de
     )
     result = simulate(source)
     assert (result.stop.reason, result.stop.line) == (StopReason.DEADLOCK, 6)
-    assert "axis 0 on axis 1" in result.stop.message
+    assert "waits on inputs or variables" in result.stop.message and "axis 0" not in result.stop.message
 
 
 FLY_THEN_PAUSE = (  # the FLY keyword's example (000:10560-10569), the master axis 1
@@ -111,6 +119,7 @@ def test_a_pause_on_the_position_of_a_follower_whose_master_stopped_is_a_deadloc
     )
     result = simulate(source)
     assert (result.stop.reason, result.stop.line, result.terminal) == (StopReason.DEADLOCK, 8, "100\n")
+    assert "axis 0 on axis 1" in result.stop.message  # the program reads the follower: the stall is the cause
 
 
 def test_a_stop_input_that_cancels_the_waiting_move_wakes_the_program() -> None:

@@ -27,6 +27,7 @@ from itertools import groupby
 from typing import Any, TypeVar, cast
 
 import mintlang
+from mintlang.caching import Shelf
 from mintlang.controllers import ControllerProfile, profile
 from mintlang.diagnostics import Span
 from mintlang.keyworddb import database
@@ -282,12 +283,17 @@ class Context:
     files: Mapping[Unit, FileView]
     controller: ControllerProfile
     tags: LineTags = field(default_factory=LineTags, repr=False, compare=False)
+    # The per-line caches of the run's Mint v4 readings (``rules.manual.v4_errors``): X-CHECK reads
+    # the text X-COMMENTED read, with the markers it led to, so it parses only those afresh.
+    v4_shelf: Shelf = field(default_factory=Shelf, repr=False, compare=False)
     _memo: dict[tuple[Hashable, ...], Any] = field(default_factory=dict, init=False, repr=False, compare=False)
 
     @classmethod
-    def build(cls, texts: Mapping[Unit, str], controller: str, tags: LineTags | None = None) -> Context:
+    def build(
+        cls, texts: Mapping[Unit, str], controller: str, tags: LineTags | None = None, v4_shelf: Shelf | None = None
+    ) -> Context:
         """The context of ``texts``; ``tags`` are those of earlier passes of the run, whose
-        unchanged lines need not be walked again."""
+        unchanged lines need not be walked again, and ``v4_shelf`` holds its Mint v4 readings' lines."""
         configuration = None
         if Unit.CONFIGURATION in texts:
             configuration = mintlang.parse(texts[Unit.CONFIGURATION], "v3")
@@ -298,7 +304,8 @@ class Context:
         if configuration is not None:
             documents[Unit.CONFIGURATION] = configuration
         files = {unit: FileView(unit, texts[unit], documents[unit]) for unit in texts}
-        return cls(files, profile(controller), tags if tags is not None else LineTags())
+        tags = tags if tags is not None else LineTags()
+        return cls(files, profile(controller), tags, v4_shelf if v4_shelf is not None else Shelf())
 
     @cached_property
     def model(self) -> mintlang.SemanticModel:

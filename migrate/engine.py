@@ -26,7 +26,7 @@ from dataclasses import dataclass, field, replace
 from functools import partial
 
 from mintlang.allocation import kept_without_collector
-from mintlang.caching import apart, keeping_what_it_uses
+from mintlang.caching import Shelf, apart, keeping_what_it_uses
 from mintlang.diagnostics import LineIndex, Severity, Span, split_lines
 from mintlang.migrate.citations import cite, in_file
 from mintlang.migrate.context import MARKER, Context, FileView, LineTags, Unreadable
@@ -79,7 +79,9 @@ def run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> di
     instead of parsing the same text again. The tags of the lines last read are kept for the
     next pass: most lines come through a pass unchanged. The per-line caches are the run's own (``apart``), and
     after each re-read they keep only what it used (``keeping_what_it_uses``): the versions of
-    lines the passes replaced piled up to a fifth of a run's memory.
+    lines the passes replaced piled up to a fifth of a run's memory. The run's Mint v4 readings
+    (X-COMMENTED's, when a line is in error in v3, then X-CHECK's of that text with its markers)
+    share theirs (``Shelf``), kept apart from the v3 ones.
     """
     with apart():
         return _run(texts, rules, controller)
@@ -87,8 +89,8 @@ def run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> di
 
 def _run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> dict[Unit, FileOutcome]:
     states = {unit: _FileState(text, text, LineIndex(text)) for unit, text in texts.items()}
-    tags = LineTags()
-    context: Context | None = _build(texts, controller, tags)
+    tags, v4_shelf = LineTags(), Shelf()
+    context: Context | None = _build(texts, controller, tags, v4_shelf)
     errors = {unit: _unreadable(file) for unit, file in context.files.items()}
     for phase in Phase:
         active = [rule for rule in rules if rule.phase is phase]
@@ -98,7 +100,7 @@ def _run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> d
         for _ in range(MAX_PASSES):
             if context is None:
                 current = {unit: state.text for unit, state in states.items()}
-                context = keeping_what_it_uses(partial(_build, current, controller, tags))
+                context = keeping_what_it_uses(partial(_build, current, controller, tags, v4_shelf))
             editing, settled = _apply_pass(context, active, states)
             if editing:
                 context = None  # stale: dropped before the next parse, so two trees are never alive at once
@@ -110,9 +112,9 @@ def _run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> d
     return {unit: _outcome(state, errors[unit]) for unit, state in states.items()}
 
 
-def _build(texts: Mapping[Unit, str], controller: str, tags: LineTags) -> Context:
+def _build(texts: Mapping[Unit, str], controller: str, tags: LineTags, v4_shelf: Shelf) -> Context:
     try:
-        return Context.build(texts, controller, tags)
+        return Context.build(texts, controller, tags, v4_shelf)
     except Exception as error:  # a parser bug must not take the other files of a run with it
         raise _unreadable_files(error) from error
 

@@ -21,7 +21,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Generic, TypeVar
-from weakref import WeakSet
+from weakref import WeakKeyDictionary, WeakSet
 
 K = TypeVar("K")
 V = TypeVar("V")
@@ -63,26 +63,50 @@ class RecentCache(Generic[K, V]):
 _every_cache: WeakSet[RecentCache[object, object]] = WeakSet()
 
 
+_Generations = tuple[dict[object, object], dict[object, object]]  # a cache's young and old entries
+
+
+class Shelf:
+    """Per-line caches put aside between ``apart`` blocks: a block given a shelf starts with what
+    the last block given it cached, and leaves what it cached there (a migration reads two
+    versions of its result as Mint v4, which differ in a few lines)."""
+
+    __slots__ = ("_held",)
+
+    def __init__(self) -> None:
+        self._held: WeakKeyDictionary[RecentCache[object, object], _Generations] = WeakKeyDictionary()
+
+
 @contextmanager
-def apart() -> Iterator[None]:
-    """Every per-line cache empty for the block, and back to what it held before after it: what the
-    block cached is dropped (a migration's intermediate versions), what others cached is kept."""
+def apart(shelf: Shelf | None = None) -> Iterator[None]:
+    """Every per-line cache empty for the block (or as ``shelf`` holds it), and back to what it held
+    before after it: what the block cached is dropped (a migration's intermediate versions) or put
+    on ``shelf``, what others cached is kept."""
     held = {cache: (cache._young, cache._old) for cache in list(_every_cache)}
     for cache in held:
-        cache._young, cache._old = {}, {}
+        cache._young, cache._old = shelf._held.pop(cache, ({}, {})) if shelf is not None else ({}, {})
     try:
         yield
     finally:
         for cache in list(_every_cache):
+            if shelf is not None:
+                shelf._held[cache] = (cache._young, cache._old)
             cache._young, cache._old = held.get(cache, ({}, {}))
 
 
 def keeping_what_it_uses(action: Callable[[], T]) -> T:
-    """``action()``, after which every per-line cache holds only what it looked up or added."""
+    """``action()``, after which every per-line cache holds only what it looked up or added: both
+    generations when it filled the young one (a text of more lines than one holds), whose turn
+    dropped the entries it did not use; else the young one."""
+    stale: dict[RecentCache[object, object], dict[object, object]] = {}
     for cache in list(_every_cache):
-        cache._old, cache._young = cache._young, {}
+        smaller, larger = sorted((cache._young, cache._old), key=len)
+        larger.update(smaller)  # the last action may have left both generations
+        stale[cache] = cache._old = larger
+        cache._young = {}
     try:
         return action()
     finally:
         for cache in list(_every_cache):
-            cache._old = {}
+            if cache._old is stale.get(cache):
+                cache._old = {}

@@ -269,7 +269,7 @@ def v4_errors(context: Context) -> tuple[tuple[FileView, tuple[Diagnostic, ...]]
     """Each file with the errors ``mint check`` finds in it as Mint v4 on the target controller."""
     files = context.files
     configuration = files.get(Unit.CONFIGURATION)
-    with apart():  # the v4 reading's lines are of no use to the v3 readings of the run
+    with apart(context.v4_shelf):  # the v4 readings' lines are of no use to the v3 readings of the run
         analysis = mintlang.check_application(
             files[Unit.PROGRAM].text,
             dialect="v4",

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from mintlang.caching import RecentCache, apart, keeping_what_it_uses
+from mintlang.caching import RecentCache, Shelf, apart, keeping_what_it_uses
 
 
 def test_an_entry_asked_for_since_the_last_turn_survives_the_next() -> None:
@@ -43,6 +43,20 @@ def test_a_cache_made_apart_is_empty_after_the_block() -> None:
     assert len(cache) == 0
 
 
+def test_a_block_given_a_shelf_starts_with_what_the_last_block_given_it_cached() -> None:
+    cache: RecentCache[str, int] = RecentCache(size=100)
+    cache.put("outside", 1)
+    shelf = Shelf()
+    with apart(shelf):
+        cache.put("first block", 2)
+    assert (cache.get("outside"), cache.get("first block")) == (1, None)
+    with apart():
+        assert cache.get("first block") is None
+    with apart(shelf):
+        assert (cache.get("outside"), cache.get("first block")) == (None, 2)
+    assert (cache.get("outside"), cache.get("first block")) == (1, None)
+
+
 def test_after_an_action_a_cache_holds_only_what_the_action_looked_up_or_added() -> None:
     cache: RecentCache[str, int] = RecentCache(size=100)
     cache.put("asked", 1)
@@ -55,3 +69,18 @@ def test_after_an_action_a_cache_holds_only_what_the_action_looked_up_or_added()
     assert keeping_what_it_uses(action) == 1
     assert cache.get("stale") is None
     assert (cache.get("asked"), cache.get("added")) == (1, 3)
+
+
+def test_an_action_using_more_lines_than_a_generation_holds_keeps_them_all() -> None:
+    cache: RecentCache[int, int] = RecentCache(size=4)
+    for key in range(3):
+        cache.put(key, key)
+
+    def action() -> None:
+        for key in range(6):  # three looked up, three added: the young generation turns once
+            if cache.get(key) is None:
+                cache.put(key, key)
+
+    keeping_what_it_uses(action)
+    assert len(cache) == 6
+    assert (cache.get(0), cache.get(5)) == (0, 5)

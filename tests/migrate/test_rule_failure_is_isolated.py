@@ -12,6 +12,7 @@ import pytest
 from click.testing import CliRunner, Result
 
 import mintlang
+from mintlang.caching import Shelf
 from mintlang.diagnostics import Span
 from mintlang.migrate import MigrationFailed, migrate
 from mintlang.migrate.cli import migrate as command
@@ -107,10 +108,12 @@ def test_a_failure_leaves_the_configuration_file_of_its_application_as_well(tmp_
 def test_a_bug_outside_the_rules_is_isolated_too(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     build = Context.build
 
-    def failing(texts: dict[Unit, str], controller: str, tags: LineTags | None = None) -> Context:
+    def failing(
+        texts: dict[Unit, str], controller: str, tags: LineTags | None = None, v4_shelf: Shelf | None = None
+    ) -> Context:
         if TRIGGER in texts[Unit.PROGRAM]:
             raise RecursionError("maximum recursion depth exceeded")
-        return build(texts, controller, tags)
+        return build(texts, controller, tags, v4_shelf)
 
     monkeypatch.setattr(Context, "build", failing)
     (tmp_path / "a.mnt").write_text(TRIGGER + V3)

@@ -29,7 +29,7 @@ from typing import Any, TypeVar, cast
 import mintlang
 from mintlang.caching import Shelf
 from mintlang.controllers import ControllerProfile, profile
-from mintlang.diagnostics import Span
+from mintlang.diagnostics import LineIndex, Span
 from mintlang.keyworddb import database
 from mintlang.keyworddb.load import KeywordDatabase
 from mintlang.semantic.index import KeywordUse, Use, index_syntax, line_facts
@@ -202,8 +202,14 @@ class FileView:
         found = _NEWLINE.search(self.text)
         return found.group() if found else "\n"
 
+    @cached_property
+    def _line_index(self) -> LineIndex:
+        """Where the text's lines start, in machine integers: the document's own index reads them
+        through a Python sequence at every step of a bisection, and each marker takes several."""
+        return LineIndex(self.text)
+
     def line_start(self, offset: int) -> int:
-        index = self.document.line_index
+        index = self._line_index
         return index.line_start(index.position(offset).line)
 
     def line_end(self, offset: int) -> int:
@@ -217,7 +223,7 @@ class FileView:
         return line[: len(line) - len(line.lstrip(" \t"))]
 
     def line_number(self, offset: int) -> int:
-        return self.document.line_index.position(offset).line
+        return self._line_index.position(offset).line
 
     def lines_above(self, offset: int) -> Iterator[str]:
         """The physical lines above the line of ``offset``, nearest first, stripped."""

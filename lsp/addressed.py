@@ -9,17 +9,17 @@ from __future__ import annotations
 
 from bisect import bisect_right
 from collections.abc import Iterator
-from dataclasses import dataclass
 
 from mintlang.analysis.rules.addressing import addressed
 from mintlang.lsp.workspace import Snapshot
+from mintlang.records import record
 from mintlang.semantic.constants import constant_integer
 from mintlang.semantic.index import KeywordUse, Use, line_facts
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Setting:
     """A value the configuration file writes to a keyword: for ``number`` (None: its default axes)."""
 

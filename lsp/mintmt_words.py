@@ -7,16 +7,15 @@ note (002: Event Comms1 to Comms5), as ``mintlang/MINTMT.md`` reads them.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from mintlang.dialect import Dialect
 from mintlang.lsp.lookup import significant
+from mintlang.records import record
 from mintlang.semantic.events import EventKind, event_of
 from mintlang.syntax.parser import Document
 from mintlang.syntax.tokens import Token, TokenKind
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class BlockWord:
     """One of MintMT's block words: its spelling, the block it belongs to, and what it does."""
 

@@ -10,11 +10,11 @@ macro mentions edits the macro's body and never the macro's uses.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
 
 from mintlang.diagnostics import Span
 from mintlang.lsp.lookup import token_index
 from mintlang.lsp.workspace import Snapshot
+from mintlang.records import record
 from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, SymbolTable
 from mintlang.semantic.units import Unit
 from mintlang.syntax.nodes import identity
@@ -38,7 +38,7 @@ def _is_written(document: Document, occurrence: Occurrence) -> bool:
     return identity(text) == identity(occurrence.spelling)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Mention:
     occurrence: Occurrence
     label: bool  # the target of a GOSUB or GOTO, else a variable, array or macro

@@ -27,6 +27,7 @@ from mintlang.keyworddb.model import Controller, Keyword
 from mintlang.lsp.collector import Collector
 from mintlang.lsp.positions import Positions
 from mintlang.pairing import DEFAULT_PATTERN, Pairing, is_program, listed_as, names_in
+from mintlang.records import record
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
 from mintlang.settings import FileSettings, SettingsError, settings_for
@@ -39,7 +40,7 @@ AUTO = "auto"  # mint.dialect's value asking for the dialect to be detected from
 MAX_CHARACTERS = 5_000_000  # larger files are not analysed (about 220,000 lines: 3 s to open, 0.5 s a name edit)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Settings:
     """The ``mint.*`` settings; ``configPairing`` names the configuration file of ``<name>.mnt``.
 
@@ -141,13 +142,13 @@ class Settings:
 _DEFAULTS = Settings()
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class File:
     uri: str
     positions: Positions
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Snapshot:
     """One analysed version of a document (program or configuration file)."""
 

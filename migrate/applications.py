@@ -9,7 +9,6 @@ migrated and written as if nothing had happened.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from pathlib import Path
 
 from mintlang.cli.files import collect, is_configuration, program_as_own_configuration
@@ -17,6 +16,7 @@ from mintlang.migrate import mintmt
 from mintlang.migrate.api import migrate
 from mintlang.migrate.model import MigrationFailed
 from mintlang.migrate.report import FileEntry
+from mintlang.records import record
 from mintlang.semantic.units import Unit
 from mintlang.settings import SettingsError, settings_for
 from mintlang.source import SourceFile, read_source
@@ -26,7 +26,7 @@ class UsageError(Exception):
     """A problem with the command line or a file: reported in one line, exit status 2."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Migrated:
     """A file of an application with its report entry (whose result is None if it failed)."""
 
@@ -34,7 +34,7 @@ class Migrated:
     entry: FileEntry
 
 
-@dataclass(frozen=True)
+@record(slots=False)
 class Application:
     """One program, its configuration file, or both."""
 

@@ -21,7 +21,7 @@ import re
 from bisect import bisect_right
 from collections import defaultdict
 from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping
-from dataclasses import dataclass, field
+from dataclasses import field
 from functools import cached_property, wraps
 from itertools import groupby
 from typing import Any, TypeVar, cast
@@ -32,6 +32,7 @@ from mintlang.controllers import ControllerProfile, profile
 from mintlang.diagnostics import LineIndex, Span
 from mintlang.keyworddb import database
 from mintlang.keyworddb.load import KeywordDatabase
+from mintlang.records import record
 from mintlang.semantic.index import KeywordUse, Use, index_syntax, line_facts
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -152,7 +153,7 @@ def _tags(syntax: n.LineSyntax) -> frozenset[object]:
     return frozenset(found)
 
 
-@dataclass(frozen=True)
+@record(slots=False)
 class FileView:
     """One file of the application as the current pass sees it."""
 
@@ -266,7 +267,7 @@ class FileView:
         return before.strip() == "" and (after == "" or after.upper().startswith(("REM", ": REM", ":REM")))
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Lines:
     """One line standing in for a document, for ``index_syntax``."""
 
@@ -282,7 +283,7 @@ class Unreadable(Exception):
     for the model first (the engine reports it so; the exception is the cause)."""
 
 
-@dataclass(frozen=True)
+@record(slots=False)
 class Context:
     """The application (configuration file, if any, then program) for one pass of the engine."""
 

@@ -34,12 +34,13 @@ from mintlang.migrate.history import Edit, History
 from mintlang.migrate.markers import manual_items
 from mintlang.migrate.model import Change, ManualItem, MigrationFailed, Phase
 from mintlang.migrate.rules.base import Flag, Replace, Rule
+from mintlang.records import record
 from mintlang.semantic.units import Unit
 
 MAX_PASSES = 6  # a phase that still edits after this many passes has a rule that is not idempotent
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Applied:
     """A change before the migrated text is known: the pass that made it and where its
     replacement starts in the text that pass produced."""
@@ -61,7 +62,7 @@ class _FileState:
     counts: Counter[str] = field(default_factory=Counter)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class FileOutcome:
     source: str
     text: str

@@ -14,9 +14,10 @@ from bisect import bisect_left, bisect_right
 from dataclasses import dataclass, field
 
 from mintlang.diagnostics import Span
+from mintlang.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Edit:
     """``text`` in place of ``span`` of one pass's text, asked for by ``rule``."""
 
@@ -25,7 +26,7 @@ class Edit:
     text: str
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Batch:
     """The edits of one pass, sorted, with their starts, where each ends in the text they
     produced, and the growth of the edits before each (one more: all of them)."""

@@ -8,7 +8,7 @@ from __future__ import annotations
 import difflib
 import json
 import sys
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from functools import partial
 from pathlib import Path
 from typing import NoReturn
@@ -29,6 +29,7 @@ from mintlang.migrate.report import render_text, report
 from mintlang.migrate.verification import Verdict
 from mintlang.migrate.verification.report import Verified
 from mintlang.migrate.writing import write_changed
+from mintlang.records import record
 
 GATE_FAILED = 1
 NOT_DONE = 2
@@ -159,7 +160,7 @@ def _tidy(items: list[Migrated], mode: str | None) -> None:
         click.echo(f"mint-migrate: {line}", err=True)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Output:
     """Where the diff and the report go (standard output, or ``--output-file``), and how they look."""
 

@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import difflib
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import field
 from enum import StrEnum
 
 from mintlang.diagnostics import Edit, Span, split_lines
+from mintlang.records import record
 
 
 class RuleClass(StrEnum):
@@ -46,7 +47,7 @@ class Phase(StrEnum):
     CHECK = "check"  # the result read as Mint v4 for the target: a line still invalid gets a marker
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class RuleInfo:
     """What ``--list-rules`` shows: id, class, phase, what it does and the manual's evidence;
     an optional rule runs only when asked for (``--with``)."""
@@ -59,7 +60,7 @@ class RuleInfo:
     optional: bool = False
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Change:
     """One rewrite: ``span`` and ``line`` locate the replaced text in the original source,
     ``migrated_line`` the line where its replacement starts in the migrated text."""
@@ -72,7 +73,7 @@ class Change:
     migrated_line: int
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ManualItem:
     """Something left for the user. ``line`` is the line of the migrated text it marks (the
     one below its ``REM MIGRATE:`` line), ``original_line`` that line in the original (None
@@ -86,7 +87,7 @@ class ManualItem:
     note: bool = False
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class MigrationResult:
     """The migration of one file; ``configuration`` holds that of the configuration file, if any."""
 

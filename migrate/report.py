@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
 from typing import Any
 
 from rich.console import Console
@@ -20,9 +19,10 @@ from rich.table import Table
 from rich.text import Text
 
 from mintlang.migrate.model import ManualItem, MigrationFailed, MigrationResult
+from mintlang.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class FileEntry:
     """A file of the run as the report names it: its migration, or why it has none."""
 

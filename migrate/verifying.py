@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import json
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -19,6 +19,7 @@ from mintlang.migrate.applications import Migrated, UsageError
 from mintlang.migrate.model import MigrationResult
 from mintlang.migrate.verification import report as verification_report
 from mintlang.migrate.verification.report import Verified
+from mintlang.records import record
 from mintlang.runtime import scenario as scenarios
 from mintlang.runtime.hardware import machine
 
@@ -32,7 +33,7 @@ if TYPE_CHECKING:
 # ``--verify``, mint-migrate checks only ``Options.refuse`` and loads neither the simulator nor the scenarios.
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Settings:
     """What each application is verified with."""
 
@@ -43,7 +44,7 @@ class Settings:
     to: str = "v4"  # "mintmt": the originals are Mint v4 on ``controller``, the migrations MintMT
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Options:
     """The command line's ``--verify`` options, as given (None: not given)."""
 

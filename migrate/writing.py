@@ -13,17 +13,17 @@ file, and a last line says which files were not written.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 from pathlib import Path
 
 from mintlang import atomic
 from mintlang.atomic import Stale, Unwritable, target
 from mintlang.migrate.applications import Migrated
 from mintlang.migrate.report import plural
+from mintlang.records import record
 from mintlang.source import SourceFile
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Written:
     """What ``--write`` did: the problems met (one line each) and the changed files it left as they were."""
 

@@ -7,7 +7,7 @@ read-only element (error 45) and the simulator answers reads and writes by the s
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from mintlang.records import record
 
 SYSTEM_ELEMENTS = range(100, 256)
 
@@ -31,7 +31,7 @@ _MISC_KEYWORDS = {
 _WRITABLE = frozenset({"OUT"})
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class SystemElement:
     """What a system element (100..255) shows: a keyword, its axis or channel, and whether it may be written.
 

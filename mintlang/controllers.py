@@ -9,12 +9,11 @@ character line limit (line 255).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from mintlang.keyworddb.model import Controller
+from mintlang.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ChannelRange:
     """Inclusive range of valid numbers; ``None`` where the controller has none."""
 
@@ -28,7 +27,7 @@ class ChannelRange:
         return str(self.low) if self.low == self.high else f"{self.low} to {self.high}"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class NestingLimits:
     if_blocks: int
     for_loops: int
@@ -37,7 +36,7 @@ class NestingLimits:
     loops_and_ifs: int  # the three loop kinds plus IF blocks
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ControllerProfile:
     controller: Controller
     title: str

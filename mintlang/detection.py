@@ -22,10 +22,10 @@ is the line they print when such a file shows MintMT's forms.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from mintlang.diagnostics import split_lines
 from mintlang.dialect import Dialect
+from mintlang.records import record
 from mintlang.syntax.common import common_prefix, common_suffix
 from mintlang.syntax.lexer import LexedLine, lex
 from mintlang.syntax.tokens import TokenKind
@@ -40,7 +40,7 @@ _CLOSERS = frozenset({TokenKind.ENDL, TokenKind.ENDIF, TokenKind.ENDEVENT, Token
 _MAY_SHOW = re.compile(f"[{_QUOTES}(]|end[ \\t]|event|startup", re.IGNORECASE)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class MintMTForm:
     """The first form of a text that only MintMT has: its line (from 1) and what it is, as a reader would name it."""
 

@@ -11,10 +11,12 @@ import re
 from array import array
 from bisect import bisect_right
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import field
 from enum import StrEnum
 from itertools import accumulate, chain
 from typing import NamedTuple, overload
+
+from mintlang.records import record
 
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")
 _LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+\Z")  # a line with its end; the last may have none
@@ -50,7 +52,7 @@ class Span(NamedTuple):
         return Span(self.start + offset, self.end + offset)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Edit:
     """Replace the text of ``span`` with ``text``."""
 
@@ -61,7 +63,7 @@ class Edit:
         return Edit(self.span.shifted(offset), self.text)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Fix:
     """A named set of edits that resolves a diagnostic.
 
@@ -84,7 +86,7 @@ class Fix:
         return cls(f"Replace with {text}", (Edit(span, text),))
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Diagnostic:
     """One finding.
 
@@ -119,7 +121,7 @@ class Diagnostic:
         )
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Position:
     line: int  # 1-based
     column: int  # 1-based, in characters

@@ -16,14 +16,14 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Callable, Collection, Iterable, Sequence
-from dataclasses import dataclass
 
 from mintlang.diagnostics import Diagnostic, Edit, Fix
+from mintlang.records import record
 
 MAX_ROUNDS = 10
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Fixed:
     """A text after its fixes: what was fixed (in every round), what the final text still has."""
 

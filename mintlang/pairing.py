@@ -11,9 +11,9 @@ mirrors this rule (``vscode-ext/src/pairing.ts``).
 from __future__ import annotations
 
 from collections.abc import Collection
-from dataclasses import dataclass
 from pathlib import Path
 
+from mintlang.records import record
 from mintlang.semantic.units import Unit
 
 DEFAULT_PATTERN = "<name>.cfg"
@@ -22,7 +22,7 @@ CONFIGURATION_SUFFIX = ".cfg"  # a file named so is a configuration file, paired
 _NAME = "<name>"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Pairing:
     """A pattern split at ``<name>``: the configuration of ``conveyor.mnt`` is ``prefix + "conveyor" + suffix``."""
 

@@ -10,15 +10,15 @@ from __future__ import annotations
 
 import errno
 import stat
-from dataclasses import dataclass
 from pathlib import Path
 
 from mintlang.diagnostics import LineIndex
+from mintlang.records import record
 
 _ENCODINGS = ("utf-8", "cp1252", "latin-1")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class SourceFile:
     path: Path
     text: str

@@ -14,9 +14,10 @@ configuration file's while it runs, then the program's.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from enum import IntEnum
 
+from mintlang.records import record
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.ranges import ranged, table_default
@@ -53,7 +54,7 @@ _NUMBERED = frozenset({EventClass.FASTIN, EventClass.INPUT, EventClass.COMMS})
 _E = EventClass
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Dispatch:
     """How a controller dispatches events: priority order, pre-emption and its mask keywords."""
 

@@ -11,11 +11,12 @@ interpreter can retry the whole statement on a later tick.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller
+from mintlang.records import record
 from mintlang.runtime.errors import MintError
 
 AXIS_SET_TWICE = 2018
@@ -32,7 +33,7 @@ ArrayCommand = Callable[[tuple[ArrayArgument, ...]], bool]  # a function-style c
 IndexedWriter = Callable[[Channels | None, tuple[int, ...], Values], bool]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class KeywordAccess:
     read: Reader | None = None
     write: Writer | None = None

@@ -3,14 +3,14 @@
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
+from mintlang.records import record
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.motion.axis import Axis
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class AxisState:
     pos: float
     vel: float
@@ -90,7 +90,7 @@ class Observation:
             return None
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Refused:
     """A run the controller refused before its first statement: it printed nothing, and ERR and ERL say why."""
 

@@ -8,16 +8,16 @@ example (000:4600-4606).
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller
+from mintlang.records import record
 from mintlang.runtime.errors import MintError
 
 OUT_OF_RANGE = 3
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Bounds:
     minimum: float | None
     maximum: float | None

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
-from dataclasses import dataclass
 from functools import partial
 
 import mintlang
@@ -20,6 +19,7 @@ from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller as ControllerName
+from mintlang.records import record
 from mintlang.runtime.controller import Controller, build_controller
 from mintlang.runtime.dialects import semantics
 from mintlang.runtime.dialects.v3.compiling import UNDEFINED_VARIABLE, undefined_variables
@@ -35,7 +35,7 @@ from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class RunResult:
     stop: Stop
     err: float
@@ -51,7 +51,7 @@ class RunResult:
     refused: bool = False  # the controller's compiler rejected a file: the program never ran (``stop`` says why)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _CompileError:
     """The first error the controller's compiler finds, which stops the run before the file it is in starts."""
 
@@ -63,7 +63,7 @@ class _CompileError:
     printed: str  # as the controller prints it: ``C2014: PROGRAM Incorrect loop terminator [line 12]``
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Hooks:
     """The caller's observers of a run (``run_source``)."""
 

@@ -11,13 +11,13 @@ and how errors are numbered and reported. The instances live in
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
 
 from mintlang.dialect import Dialect
+from mintlang.records import record
 from mintlang.runtime.errors import ErrorStyle
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Semantics:
     """The meaning of a program's numbers, names and messages in one dialect."""
 

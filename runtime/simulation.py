@@ -15,8 +15,8 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass
 
+from mintlang.records import record
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.errors import MintError, NotSimulated
@@ -42,7 +42,7 @@ class Rewind(Exception):
         self.restore = restore
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Limits:
     until_ms: int | None = None
     max_wall_s: float | None = None
@@ -57,7 +57,7 @@ class Limits:
     program_alone: bool = True
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Stop:
     reason: StopReason
     time_ms: int

@@ -29,11 +29,11 @@ import re
 import types
 from collections import deque
 from collections.abc import Callable, Collection, Iterable
-from dataclasses import dataclass
 from pathlib import PurePath
 from typing import Any
 
 from mintlang.allocation import kept_without_collector
+from mintlang.records import record
 
 _OWN = "mintlang."  # the modules whose classes a snapshot knows how to walk
 _ATOMIC: frozenset[type] = frozenset(
@@ -49,7 +49,7 @@ class NotSnapshotted(Exception):
 Put = Callable[[Any, Any], None]  # puts a saved state back into its object
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Snapshot:
     """What every mutable object reachable from the roots held when it was taken."""
 

@@ -15,8 +15,8 @@ from __future__ import annotations
 import re
 from collections import deque
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 
+from mintlang.records import record
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.numbers import f32
 
@@ -29,7 +29,7 @@ _LINE_ENDS = "\r\n"
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class NumberEntry:
     """A line typed at ``INPUT``: a number, ``value=None`` for an empty line (keep the variable), or ``retry``.
 

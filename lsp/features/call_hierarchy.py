@@ -12,7 +12,6 @@ stays in the file it starts from.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
 
 from lsprotocol import types
 
@@ -21,6 +20,7 @@ from mintlang.lsp.features.symbols import sections
 from mintlang.lsp.occurrences import symbol_at
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
+from mintlang.records import record
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import Symbol, SymbolKind
 from mintlang.syntax import nodes as n
@@ -28,7 +28,7 @@ from mintlang.syntax import nodes as n
 MAIN = "main program"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Part:
     """The main program (``label`` None) or a labelled section: offsets from its first line to the next part's."""
 
@@ -42,7 +42,7 @@ class Part:
         return self.label.identity if self.label is not None else None
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Jump:
     """A GOSUB or GOTO: GOSUB and GOTO alike are calls here."""
 

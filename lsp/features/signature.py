@@ -14,7 +14,6 @@ statement the written one.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from lsprotocol import types
 
@@ -23,6 +22,7 @@ from mintlang.keyworddb.model import Keyword
 from mintlang.lsp.lookup import prefix_tokens, significant
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Settings
+from mintlang.records import record
 from mintlang.syntax.tokens import Token, TokenKind
 
 _STATEMENT_BREAKS = frozenset({TokenKind.COLON, TokenKind.THEN, TokenKind.DO, TokenKind.ELSE, TokenKind.LABEL})
@@ -33,7 +33,7 @@ _OPENERS = {"[": "]", "(": ")"}
 _USING = "USING"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Callee:
     """The keyword whose operands the cursor is in (completion reads it too)."""
 

@@ -4,7 +4,6 @@ workspace symbols."""
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
 from pathlib import Path
 
 from lsprotocol import types
@@ -15,6 +14,7 @@ from mintlang.lsp.features.navigation import locations
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.pairing import PROGRAM_SUFFIX
+from mintlang.records import record
 from mintlang.semantic.blocks import Block, BlockKind, Place
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import Symbol, SymbolKind
@@ -30,7 +30,7 @@ _KINDS = {
 }
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Section:
     """A labelled part of a file: from its label to its last line before the next label (0-based lines)."""
 

@@ -9,12 +9,12 @@ holding a span); ``apply`` does the editing.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
 from functools import cached_property
 
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.migrate.history import Edit
+from mintlang.records import record
 from mintlang.syntax.lexer import LexedLine, lex
 from mintlang.syntax.tokens import Token, TokenKind
 
@@ -23,7 +23,7 @@ from mintlang.syntax.tokens import Token, TokenKind
 Rewrite = Edit
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Flag:
     """A manual item from ``rule``: the line holding offset ``at`` gets a marker above it."""
 
@@ -35,7 +35,7 @@ class Flag:
 Action = Rewrite | Flag
 
 
-@dataclass(frozen=True)
+@record(slots=False)
 class Line:
     """One physical line: its number (from 1), its offset in the text, and its significant tokens."""
 
@@ -69,7 +69,7 @@ class Line:
         return not self.lexed.kinds
 
 
-@dataclass(frozen=True)
+@record(slots=False)
 class Source:
     """The v4 text of one file and its lines; ``visible`` names the macros another file defines for it
     (a configuration file's, for its program)."""

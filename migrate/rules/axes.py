@@ -10,9 +10,9 @@ makes the default unknown, and the rules that need it fall back to a manual item
 from __future__ import annotations
 
 from bisect import bisect_left
-from dataclasses import dataclass
 
 from mintlang.migrate.context import Context, FileView
+from mintlang.records import record
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
@@ -35,7 +35,7 @@ def default_axes(context: Context, file: FileView, offset: int) -> Axes:
     return defaults[found - 1] if found else timeline.entering[file.unit]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Timeline:
     """Per file: where each AXES statement starts and the default after it, the default in force
     as the file starts, and where its last statement starts; the default after the whole

@@ -9,17 +9,17 @@ overlapping edits, and turns flags into ``REM MIGRATE:`` lines.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
 from typing import ClassVar
 
 from mintlang.diagnostics import Span
 from mintlang.migrate.context import Context, FileView
 from mintlang.migrate.model import Phase, RuleClass, RuleInfo
+from mintlang.records import record
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Replace:
     """Put ``text`` in place of ``span`` (an empty span inserts)."""
 
@@ -28,7 +28,7 @@ class Replace:
     text: str
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Flag:
     """A manual item: the line holding ``span`` gets a ``REM MIGRATE:`` line above it."""
 

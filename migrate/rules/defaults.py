@@ -23,7 +23,6 @@ v3 power-up defaults were.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 
 from mintlang.migrate.context import Context
 from mintlang.migrate.model import Phase, RuleClass
@@ -40,12 +39,13 @@ from mintlang.migrate.rules.addressed import (
 )
 from mintlang.migrate.rules.base import Action, Rule, keyword_refs, written
 from mintlang.migrate.rules.notes import after_configuration, prologue_notes
+from mintlang.records import record
 from mintlang.syntax import nodes as n
 
 _STEPPER_VALUES = frozenset({"_STEPPER", "_MICRO", "_CFSTEPPER"})  # CONFIG 2 and 3: v3:6931-6936
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Default:
     """One parameter whose servo default changed: the v4 statements that restore v3's value."""
 

@@ -11,7 +11,6 @@ so the formula is taken).
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
 from fractions import Fraction
 
 from mintlang.migrate.context import Context, FileView, name_tag, per_pass, statement_tag
@@ -21,6 +20,7 @@ from mintlang.migrate.rules.base import Action, Rule
 from mintlang.migrate.rules.literals import integer_literal
 from mintlang.migrate.rules.spelling import like
 from mintlang.migrate.rules.statements import Refusal
+from mintlang.records import record
 from mintlang.semantic.index import Use
 from mintlang.syntax import nodes as n
 
@@ -29,7 +29,7 @@ RATIOS = (Fraction(-128), Fraction(127))  # FOLLOW (v4:10721)
 _MANTISSA = 1 << 24  # v4 numbers are floats with a 24-bit mantissa (v4:715-720)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Gear:
     """What the application proves about one axis' gearbox."""
 

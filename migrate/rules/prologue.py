@@ -14,7 +14,6 @@ HOME needs HOMEINPUT, a #STOP handler or the stop switch needs STOPINPUT.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 
 from mintlang.dialect import Dialect
 from mintlang.migrate.context import LABEL, Context, per_pass
@@ -23,10 +22,11 @@ from mintlang.migrate.rules.addressed import MOVES, axis_list, moved_axes, on_ta
 from mintlang.migrate.rules.axes import default_axes, selector_axes
 from mintlang.migrate.rules.base import Action, Rule, keyword_refs
 from mintlang.migrate.rules.notes import prologue_notes
+from mintlang.records import record
 from mintlang.semantic.events import EventKind, event_of
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Assignment:
     """One v4 statement the hardware did for v3, and which axes of a program need it."""
 

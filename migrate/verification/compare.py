@@ -11,11 +11,10 @@ whose messages differ by dialect, X-PRINT) within ``TIME_MS``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from mintlang.migrate.verification import printed, signals, tolerance
 from mintlang.migrate.verification.model import Divergence, Place, Stopped
 from mintlang.migrate.verification.runs import Recording
+from mintlang.records import record
 from mintlang.runtime.interpreter.vm import StopReason
 
 _ORDER = ("stop", "terminal", "OUT", "relay", "axis")  # which of two differences at one time is told first
@@ -64,7 +63,7 @@ def _stops(v3: Recording, v4: Recording, until: int) -> list[Divergence]:
     return []
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _End:
     """How a run ended, and whether it is the v4 run."""
 

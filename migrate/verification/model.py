@@ -2,17 +2,17 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from enum import StrEnum
 
 from mintlang.migrate.model import ManualItem
+from mintlang.records import record
 from mintlang.semantic.units import Unit
 
 DEFAULT_UNTIL_MS = 10_000  # simulated time each run of a verification lasts at most
 DEFAULT_WALL_S = 60.0  # real time each run may take
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Application:
     """A program and its configuration file (None without one), as a run is given them."""
 
@@ -23,7 +23,7 @@ class Application:
         return self.program if unit is Unit.PROGRAM else self.configuration
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Place:
     """A line of one of the two applications: ``program`` or ``configuration``, from 1."""
 
@@ -41,7 +41,7 @@ class Verdict(StrEnum):
     INCOMPLETE = "incomplete"  # no difference as far as the simulation could go, which is not the whole run
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Divergence:
     """The first thing that differs, at ``time_ms``: ``what`` (``terminal``, ``OUT``, ``relay``, ``axis 0
     position``, ``axis 0 velocity``, ``stop``), each run's side of it, and the line each run was at."""
@@ -56,7 +56,7 @@ class Divergence:
     timing_only: bool = False  # the same values in the same order: only when they happen differs
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Stopped:
     """How a run ended: ``end``, ``deadlock``, ``error``, ``until`` …, when, and where."""
 
@@ -66,7 +66,7 @@ class Stopped:
     message: str
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Verification:
     """``verify``'s answer for one application."""
 

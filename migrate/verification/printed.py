@@ -15,18 +15,18 @@ from __future__ import annotations
 
 import re
 from bisect import bisect_right
-from dataclasses import dataclass
 
 from mintlang.migrate.verification import tolerance
 from mintlang.migrate.verification.model import Divergence, Place
 from mintlang.migrate.verification.runs import Recording
+from mintlang.records import record
 
 _TOKEN = re.compile(r"(?P<number>-?(?:\d+(?:\.\d*)?|\.\d+))|(?P<spaces> +)|[^ 0-9.\-\r\n]+|[\s\S]")
 _SHOWN = 24  # characters of each side a report quotes
 _LINE_ENDS = ("\n", "\r")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Token:
     kind: str  # "number", "spaces" or "text"
     text: str

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
 from typing import Any
 
 from rich.console import Console
@@ -19,9 +18,10 @@ from rich.markup import escape
 from mintlang.migrate.model import ManualItem
 from mintlang.migrate.report import plural
 from mintlang.migrate.verification.model import Divergence, Place, Stopped, Verdict, Verification
+from mintlang.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Verified:
     """One application's verification, with the paths of its files (None for a file it does not have)."""
 

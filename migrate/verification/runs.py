@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 
 from mintlang.dialect import Dialect
 from mintlang.migrate.verification.model import Application, Place
+from mintlang.records import record
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.run import run_source
@@ -26,7 +27,7 @@ from mintlang.runtime.simulation import Limits, Stop
 _NOT_SIMULATED = re.compile(r"^(.+?) \(.*\) is not simulated by mint-run")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Piece:
     """Program output: its first character's offset in ``Recording.text``, when and by which line."""
 

@@ -14,7 +14,6 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_left
 from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping, Sequence
-from dataclasses import dataclass
 from functools import cache
 from itertools import chain, repeat
 from operator import attrgetter
@@ -29,6 +28,7 @@ from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Diagnostic
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
+from mintlang.records import record
 from mintlang.semantic.index import LineFacts, line_facts
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
@@ -38,7 +38,7 @@ from mintlang.syntax.packed import PlacedDiagnostics
 from mintlang.syntax.parser import Document
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Found:
     """What the rules found, per file, before selection and suppression: kept so that the next
     version's check carries over what its edit did not touch."""
@@ -49,7 +49,7 @@ class Found:
     directives: Mapping[Unit, tuple[Directive, ...]]  # the suppression comments, applied after selection
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Analysis:
     model: SemanticModel
     program: Sequence[Diagnostic]  # ``PlacedDiagnostics``: each made when read

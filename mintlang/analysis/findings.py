@@ -2,16 +2,15 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from mintlang.codes import mint_error, own
 from mintlang.diagnostics import Diagnostic
+from mintlang.records import record
 from mintlang.semantic.symbols import Unit
 
 __all__ = ["Finding", "mint_error", "own"]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Finding:
     unit: Unit
     diagnostic: Diagnostic

@@ -14,11 +14,12 @@ from __future__ import annotations
 import re
 from bisect import bisect_left, bisect_right
 from collections.abc import Callable, Iterator, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from mintlang.codes import code_named, own
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
+from mintlang.records import record
 
 if TYPE_CHECKING:
     from mintlang.syntax.parser import Document
@@ -31,7 +32,7 @@ _ENTRY = re.compile(r"[^,\s]+")
 _MENTION = "mint:"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Entry:
     """One code as written in a directive: ``code`` is what it names (None: no code)."""
 
@@ -40,7 +41,7 @@ class Entry:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Directive:
     """One ``REM mint: ignore[...]`` comment: ``line`` is the span of its physical line (line break excluded)."""
 

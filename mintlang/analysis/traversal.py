@@ -11,11 +11,11 @@ long as the line's syntax does not change.
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Mapping
-from dataclasses import dataclass
 from operator import attrgetter
 
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
+from mintlang.records import record
 from mintlang.semantic.index import IndexedLines, KeywordUse, LineFacts, Use
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
@@ -24,7 +24,7 @@ from mintlang.syntax import nodes as n
 __all__ = ["Facts", "KeywordUse", "LineScope", "Use", "gather"]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class LineScope:
     """One logical line of one file, with what a rule may know beside it: the controller and the dialect."""
 
@@ -40,7 +40,7 @@ PlacedStatement = tuple[Unit, n.PlacedLine, n.Statement]
 _SOUGHT = frozenset({n.Jump, n.Define})
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Facts:
     """The model and its lines, with the lists the rules ask for."""
 

@@ -7,7 +7,7 @@ comes back is a report, or the one line saying why the file was not checked.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import field, replace
 from enum import StrEnum
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -19,13 +19,14 @@ from mintlang.detection import dialect_hint
 from mintlang.diagnostics import Diagnostic
 from mintlang.dialect import Dialect
 from mintlang.fixes import Fixed, fix_text
+from mintlang.records import record
 from mintlang.source import SourceFile, read_source
 
 if TYPE_CHECKING:
     from mintlang.analysis.analyser import Analysis
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class CheckOptions:
     """What ``check_application`` is asked besides the text."""
 
@@ -50,7 +51,7 @@ class Fixing(StrEnum):
         return cls.UNSAFE if unsafe_fixes else cls.SAFE
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Job:
     """A file to check; ``source`` is given for standard input, which a worker cannot read."""
 
@@ -61,7 +62,7 @@ class Job:
     fixing: Fixing | None = None  # fix the program (--fix), and with which fixes
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class FileFixed:
     """A program as read, and as fixed (``fixed.text``)."""
 
@@ -73,7 +74,7 @@ class FileFixed:
         return self.fixed.text != self.original.text
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Checked:
     """A file's report and the configuration's findings as this program sees it; or why it was not checked."""
 

@@ -10,14 +10,15 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable
-from dataclasses import dataclass
 from pathlib import Path
+
+from mintlang.records import record
 
 PROGRAM_SUFFIXES = frozenset({".mnt"})
 CONFIGURATION_SUFFIXES = frozenset({".cfg"})
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Found:
     """The files to look at, and the paths that could not be looked at (each error names its path)."""
 

@@ -6,13 +6,13 @@ import json
 import re
 from collections import Counter
 from collections.abc import Iterator, Sequence
-from dataclasses import dataclass
 from typing import IO, TYPE_CHECKING
 
 from mintlang import keyworddb
 from mintlang.cli.terminal import Palette
 from mintlang.codes import OWN_CODES
 from mintlang.diagnostics import Diagnostic, Fix, LineIndex, Severity, Span
+from mintlang.records import record
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -21,7 +21,7 @@ if TYPE_CHECKING:
 # where they are used: a check that writes JSON, or finds nothing to write, never pays for them.
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class FileReport:
     """The diagnostics of one file, with what is needed to show where they are."""
 

@@ -12,12 +12,12 @@ import os
 import sys
 from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, NoReturn
 
 from mintlang.cli.files import same_file
+from mintlang.records import record
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -158,7 +158,7 @@ def destination(path: Path | None, fail: Callable[[str], NoReturn], *, stderr: b
         yield stream
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Palette:
     """The escape codes of a few rich styles, rendered once for a console.
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 import json
 import re
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import field
 from functools import cache, cached_property
 from importlib import resources
 from types import MappingProxyType
@@ -31,6 +31,7 @@ from mintlang.keyworddb.model import (
     V3Keyword,
     ValueRange,
 )
+from mintlang.records import record
 
 _Record = TypeVar("_Record")
 _CHANNEL_GLUED = re.compile(r"^(?P<base>.*?\D)(?P<channel>\d+)$")
@@ -112,13 +113,13 @@ def _index(
     index: dict[str, _Record] = dict(fixed or {})
     records = list(records)
     for key in keys:
-        for record in records:
-            for word in key(record):
-                index.setdefault(word.upper(), record)
+        for entry in records:
+            for word in key(entry):
+                index.setdefault(word.upper(), entry)
     return MappingProxyType(index)
 
 
-@dataclass(frozen=True)
+@record(slots=False)
 class KeywordDatabase:
     """Everything the manuals say about keywords, constants and errors, indexed for lookup."""
 

@@ -8,8 +8,9 @@ project sees, so the generator and the consumers agree on one contract.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from enum import StrEnum
+
+from mintlang.records import record
 
 _ADDRESSING = re.compile(r"\[[^\]]*\]|\{#<terminal>\}|\{?\.<[^>]*>\}?")  # [axes], {#<terminal>}, .<channel>
 
@@ -44,7 +45,7 @@ class KeywordKind(StrEnum):
     COMMAND_LINE = "command_line"  # only valid at the command line: NEW, EDIT, LIST ...
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ValueRange:
     """A keyword's accepted values as the attributes table prints them."""
 
@@ -65,7 +66,7 @@ class ValueRange:
         return above and below
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Attributes:
     """One row of a keyword's attributes table, for the controllers it names."""
 
@@ -79,7 +80,7 @@ class Attributes:
     range: ValueRange | None
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Keyword:
     """A Mint v4 keyword from chapter 10 of the reference guide."""
 
@@ -123,7 +124,7 @@ class Keyword:
         return None
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Constant:
     """A predefined constant (``_TRUE``, ``_hmPOSITIVE_SWITCH`` ...)."""
 
@@ -138,7 +139,7 @@ class ErrorKind(StrEnum):
     MINT = "mint"  # language errors 500 .. 502, 2000 .. 2021, 3000 .. 3007
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ErrorCode:
     code: int
     kind: ErrorKind
@@ -154,7 +155,7 @@ class MigrationClass(StrEnum):
     MANUAL = "manual"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class V3Keyword:
     """A keyword of the Mint v3 programming guide and what became of it in v4."""
 
@@ -171,7 +172,7 @@ class V3Keyword:
     line: int  # line of the entry in the v3 guide
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Rename:
     """One of the old keywords the v4 guide marks as replaced or removed."""
 
@@ -182,7 +183,7 @@ class Rename:
     line: int  # line in the v4 guide
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class V3Constant:
     """A predefined constant of Mint v3 and its v4 counterpart, if any."""
 

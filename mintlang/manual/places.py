@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 from bisect import bisect_right
-from dataclasses import dataclass
 from functools import cache
+
+from mintlang.records import record
 
 GUIDES = {"v4": "Mint v4 guide", "v3": "Mint v3 guide"}
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Guide:
     """A guide's numbered headings and keyword entries, each with the line it starts on, for bisection."""
 
@@ -29,7 +30,7 @@ def _guide(dialect: str) -> _Guide:
     return _Guide(sections, entries, tuple(row[0] for row in sections), tuple(line for line, _ in entries))
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Place:
     """A section of a guide (``number`` "" before chapter 1), and the keyword entry inside it, if any."""
 

@@ -3,13 +3,13 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from enum import StrEnum
 
 from mintlang import check_application
 from mintlang.codes import OWN_CODES, error_code
 from mintlang.diagnostics import Diagnostic
 from mintlang.keyworddb import database
+from mintlang.records import record
 
 
 class FixSafety(StrEnum):
@@ -20,7 +20,7 @@ class FixSafety(StrEnum):
     NONE = "none"  # no fix is offered: what to write depends on the program
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Example:
     """A file that has the problem and the same file without it; a test checks both.
 
@@ -40,7 +40,7 @@ class Example:
         return check_application(self.with_program, config=text, select=codes, **options).configuration
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class RuleDoc:
     """The documentation of one code.
 
@@ -77,7 +77,7 @@ class RuleDoc:
         return "warning" if self.key.startswith("W") else "info"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Group:
     """Codes about one kind of problem, documented together."""
 

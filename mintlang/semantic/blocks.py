@@ -31,6 +31,7 @@ from mintlang.codes import mint_error
 from mintlang.controllers import ControllerProfile, NestingLimits
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.dialect import Dialect
+from mintlang.records import record
 from mintlang.semantic.events import Event, EventKind, event_of
 from mintlang.semantic.index import LineFacts
 from mintlang.syntax import nodes as n
@@ -85,7 +86,7 @@ class Place(NamedTuple):
     index: int
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Block:
     """A matched (or unclosed) block, by the places of its statements; the LSP folds it, the runtime compiles it."""
 
@@ -95,7 +96,7 @@ class Block:
     closer: Place | None  # None when never closed
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Structure:
     blocks: tuple[Block, ...]
     diagnostics: tuple[Diagnostic, ...]

@@ -27,10 +27,11 @@ to the file; a carried edit costs the lines it touched.
 from __future__ import annotations
 
 from collections.abc import Callable, Hashable, Sequence
-from dataclasses import dataclass, fields, is_dataclass
+from dataclasses import fields, is_dataclass
 
 from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Span
+from mintlang.records import record
 from mintlang.semantic.blocks import BLOCK_STATEMENTS, Structure, block_key, match_blocks
 from mintlang.semantic.index import IndexedLines, LineFacts, line_facts
 from mintlang.semantic.model import SemanticModel
@@ -42,7 +43,7 @@ from mintlang.syntax.parser import Document
 Meaning = Callable[[n.PlacedLine, LineFacts], Hashable]  # what a pass reads of a line
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Carried:
     """How a model was carried over from the previous version's."""
 

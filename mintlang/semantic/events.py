@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from enum import StrEnum
 
 from mintlang.dialect import Dialect
+from mintlang.records import record
 
 
 class EventKind(StrEnum):
@@ -21,7 +21,7 @@ class EventKind(StrEnum):
     MOVEBUFFERLOW = "MOVEBUFFERLOW"  # MintMT: the move buffer has MOVEBUFFERLOW free places (004:109-134)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Event:
     kind: EventKind
     number: int | None

@@ -14,13 +14,13 @@ files (``index_syntax``).
 from __future__ import annotations
 
 from collections.abc import Callable, Hashable, Iterable, Iterator, Sequence
-from dataclasses import dataclass
 from enum import StrEnum
 from itertools import chain, compress, count, repeat
 from operator import attrgetter, not_
 from typing import NamedTuple, overload
 
 from mintlang.caching import LINES_KEPT, RecentCache
+from mintlang.records import record
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
@@ -62,7 +62,7 @@ class NameEvent(NamedTuple):
     size: n.Expression | None = None  # the array size of a DIM
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class SyntaxIndex:
     statements: tuple[tuple[Unit, n.Line, n.Statement], ...]  # IF .. THEN bodies included
     keyword_uses: tuple[KeywordUse, ...]
@@ -73,7 +73,7 @@ class SyntaxIndex:
 _CONSTANTS = frozenset({n.Number, n.CharConstant, n.ConstantRef, n.StringLiteral, type(None)})
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class LineFacts:
     """The index of one line: its statements (IF .. THEN bodies included), keywords, elements and names."""
 

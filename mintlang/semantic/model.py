@@ -10,13 +10,13 @@ it is carried over from the previous model (``mintlang.semantic.carry``).
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
-from dataclasses import dataclass
 from functools import cached_property
 from typing import TYPE_CHECKING
 
 from mintlang.allocation import without_collector
 from mintlang.controllers import ControllerProfile, profile
 from mintlang.keyworddb.model import Controller
+from mintlang.records import record
 from mintlang.semantic.blocks import Structure, match_blocks
 from mintlang.semantic.index import IndexedLines, SyntaxIndex, index_syntax
 from mintlang.semantic.symbols import SymbolTable, Unit, build_symbols
@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     from mintlang.semantic.carry import Carried
 
 
-@dataclass(frozen=True)  # not slotted: ``index`` is computed on first use
+@record(slots=False)  # not slotted: ``index`` is computed on first use
 class SemanticModel:
     """Names and blocks resolved.
 

@@ -16,7 +16,7 @@ from enum import StrEnum
 
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
-from mintlang.records import node
+from mintlang.records import record
 from mintlang.semantic.index import LineFacts, NameEvent, NameUse
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -36,7 +36,7 @@ _BARE, _DECLARE, _WRITE = NameUse.BARE, NameUse.DECLARE, NameUse.WRITE
 _new = tuple.__new__  # builds Span without its Python-level constructor
 
 
-@node
+@record
 class Occurrence:
     """One place a name is written: ``relative`` is its span in the line that starts at ``origin``.
 
@@ -89,7 +89,7 @@ class Symbol:
         yield from self.references
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class SymbolTable:
     variables: Mapping[str, Symbol]  # variables and arrays, shared by both files
     macros: Mapping[str, Symbol]  # shared by both files

@@ -12,8 +12,9 @@ from __future__ import annotations
 import re
 import tomllib
 from collections.abc import Mapping
-from dataclasses import dataclass
 from pathlib import Path
+
+from mintlang.records import record
 
 MINT_TOML = "mint.toml"
 PYPROJECT = "pyproject.toml"
@@ -40,7 +41,7 @@ class SettingsError(Exception):
         return f"{place}: {self.key}: {self.message}" if self.key else f"{place}: {self.message}"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Table:
     """One table of a settings file, with the line each of its keys is on."""
 

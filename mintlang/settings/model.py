@@ -12,7 +12,7 @@ file: an ignore written in the project stays ignored whatever is selected.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import field, replace
 from fnmatch import fnmatchcase
 from pathlib import Path
 from typing import Generic, TypeVar
@@ -21,6 +21,7 @@ from mintlang.codes import DEFAULT_SELECT, selector
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.pairing import CONFIGURATION_SUFFIX, DEFAULT_PATTERN, Pairing, partner_on_disk
+from mintlang.records import record
 from mintlang.semantic.units import Unit
 from mintlang.settings.files import Table
 
@@ -29,7 +30,7 @@ DEFAULT = "default"
 TOOL_TABLES = ("run", "migrate")  # each tool's own options, read by the tool
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Given(Generic[T]):
     """A value and where it came from."""
 
@@ -91,7 +92,7 @@ _CONVERTERS: dict[str, Callable[[object], object]] = {
 KNOWN_KEYS = (*_CONVERTERS, "per-file-ignores", *TOOL_TABLES)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ProjectSettings:
     """One settings file's ``[tool.mint]`` (or ``mint.toml``), checked and converted."""
 
@@ -137,7 +138,7 @@ def _converted(table: Table, key: str, convert: Callable[[object], object]) -> o
         raise table.error(str(error), key) from None
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class FileSettings:
     """What applies to one file, each value with its origin."""
 
@@ -206,7 +207,7 @@ def _pairing_shown(pattern: str | None) -> str:
     return "off" if pattern is None else pattern
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Overrides:
     """What the command line (or the editor) says, above the settings file; None: not said."""
 

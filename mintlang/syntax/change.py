@@ -11,10 +11,11 @@ cannot be, and is found again.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from typing import Protocol, Self, TypeVar
 
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
+from mintlang.records import record
 
 
 class _Placed(Protocol):
@@ -29,7 +30,7 @@ class _Placed(Protocol):
 P = TypeVar("P", bound=_Placed)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Window:
     """Whole physical lines that an edit replaced."""
 
@@ -98,7 +99,7 @@ class Window:
         return (*before, *found, *after)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Change(Window):
     """The window of whole logical lines a re-parse read again."""
 

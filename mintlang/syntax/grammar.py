@@ -14,7 +14,6 @@ from __future__ import annotations
 import hashlib
 import pickle
 from collections.abc import Iterator
-from dataclasses import dataclass
 from functools import cache
 from importlib import resources
 from importlib.resources.abc import Traversable
@@ -26,6 +25,7 @@ from lark.exceptions import UnexpectedInput, UnexpectedToken
 from lark.lexer import Lexer
 
 from mintlang.dialect import Dialect
+from mintlang.records import record
 from mintlang.syntax.build import LineBuilder, compile_line
 from mintlang.syntax.lexer import MAX_TOKENS
 from mintlang.syntax.tokens import TokenKind
@@ -105,7 +105,7 @@ def _parser(dialect: Dialect) -> Lark:
 MAX_DEPTH = 200
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ParseFailure:
     """Where the grammar stopped: the index of the offending token (len = end of line).
 

@@ -23,7 +23,6 @@ from __future__ import annotations
 import re
 from array import array
 from collections.abc import Iterator, Sequence
-from dataclasses import dataclass
 from sys import intern
 from typing import TypeVar, overload
 
@@ -31,7 +30,7 @@ from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import mint_error, own
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.dialect import Dialect
-from mintlang.records import node
+from mintlang.records import record
 from mintlang.syntax.moved import MovedOffsets
 from mintlang.syntax.tokens import Token, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
@@ -96,7 +95,7 @@ _PUNCTUATION: dict[str, TokenKind] = {
 _DOT_OWNERS = frozenset({_K.KEYWORD, _K.FUNCTION, _K.DOT, _K.AXES, _K.NAME})
 
 
-@node
+@record
 class LexedLine:
     """One physical line, lexed: offsets are relative to the line's start.
 
@@ -421,7 +420,7 @@ class PhysicalLines(Sequence[tuple[int, LexedLine]]):
         return PhysicalLines(moved, self._lines[:first] + tuple(lines) + self._lines[end:])
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class LexResult:
     tokens: TokenStream
     issues: tuple[Diagnostic, ...]

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from typing import NamedTuple
 
 from mintlang.diagnostics import Span
+from mintlang.records import record
 from mintlang.syntax.lexer import LexedLine, LexResult, PhysicalLines
 from mintlang.syntax.nodes import identity
 from mintlang.syntax.spans import span
@@ -23,7 +24,7 @@ _K = TokenKind
 _DEFINE, _NAME = _K.DEFINE, _K.NAME  # module constants: read per line
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class MacroDefinition:
     """A macro's name and body as significant tokens (kind, text)."""
 
@@ -37,7 +38,7 @@ class MacroDefinition:
         return MacroDefinition(self.name, self.name_span.shifted(offset), self.body, body_span)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Expansion:
     """Where a macro was used; the LSP shows its value there."""
 

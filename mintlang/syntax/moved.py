@@ -15,10 +15,10 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_right
 from collections.abc import Iterable, Iterator, Sequence
-from dataclasses import dataclass
 from itertools import accumulate, chain, islice
 from typing import Generic, TypeVar, overload
 
+from mintlang.records import record
 from mintlang.syntax.nodes import PlacedLine
 from mintlang.syntax.packed import equal_items
 
@@ -26,7 +26,7 @@ _MOST_PIECES = 16
 T = TypeVar("T")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Piece(Generic[T]):
     """``items[start:end]`` of some version, moved ``shift`` characters and ``line_shift`` lines since."""
 

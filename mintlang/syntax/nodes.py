@@ -14,7 +14,7 @@ from operator import attrgetter
 from typing import NamedTuple, TypeVar
 
 from mintlang.diagnostics import Span
-from mintlang.records import node
+from mintlang.records import record
 
 T = TypeVar("T")
 SIGNIFICANT_CHARACTERS = 10  # names: only the first ten characters count (v4 guide 3.2.5, 3.9)
@@ -25,7 +25,7 @@ def identity(name: str) -> str:
     return name[:SIGNIFICANT_CHARACTERS].upper()
 
 
-@node
+@record
 class Name:
     """A user name as written: variable, array, macro or label."""
 
@@ -40,7 +40,7 @@ class Name:
 # ---------------------------------------------------------------- expressions
 
 
-@node
+@record
 class Number:
     span: Span
     text: str
@@ -56,33 +56,33 @@ def character_code(text: str) -> int:
     return ord(upper) if len(upper) == 1 else ord(text[1])
 
 
-@node
+@record
 class CharConstant:
     span: Span
     text: str
     value: int  # character_code(text): 'a' and 'A' are both 65
 
 
-@node
+@record
 class StringLiteral:
     span: Span
     text: str  # with its quotes
     value: str  # without them
 
 
-@node
+@record
 class ConstantRef:
     span: Span
     name: str
 
 
-@node
+@record
 class VariableRef:
     span: Span
     name: Name
 
 
-@node
+@record
 class ElementRef:
     """``name(index)``: an array element."""
 
@@ -91,7 +91,7 @@ class ElementRef:
     index: Expression
 
 
-@node
+@record
 class Selector:
     """Which axes or channel a keyword addresses: ``[0,1]`` or ``.1`` / ``.(a+1)``, in MintMT ``(0,1)``.
 
@@ -110,7 +110,7 @@ class Selector:
         return self.items[: len(self.items) - self.indices] if self.indices else self.items
 
 
-@node
+@record
 class KeywordRef:
     """A keyword as written: full name, abbreviation or with a glued channel (``IN3``)."""
 
@@ -122,7 +122,7 @@ class KeywordRef:
     channel: int | None  # from a glued channel number
 
 
-@node
+@record
 class Call:
     """A function keyword: ``POW(x, y)``, ``COMMS(1)`` or bracketless ``SIN 90``."""
 
@@ -134,14 +134,14 @@ class Call:
     bracketed: bool
 
 
-@node
+@record
 class Unary:
     span: Span
     operator: str  # "-", "+", "~", "NOT"
     operand: Expression
 
 
-@node
+@record
 class Binary:
     span: Span
     operator: str  # "+", "-", "*", "/", "MOD", "=", "<>", "<", ">", "<=", ">=", "AND", "OR", "XOR"
@@ -149,7 +149,7 @@ class Binary:
     right: Expression
 
 
-@node
+@record
 class Parenthesised:
     span: Span
     expression: Expression
@@ -163,7 +163,7 @@ Expression = (
 # ----------------------------------------------------------------- statements
 
 
-@node
+@record
 class Assignment:
     """``name = expr`` or ``name(index) = expr``."""
 
@@ -172,7 +172,7 @@ class Assignment:
     value: Expression
 
 
-@node
+@record
 class KeywordStatement:
     """A keyword used as a statement.
 
@@ -194,7 +194,7 @@ class KeywordStatement:
     trailing: bool = False
 
 
-@node
+@record
 class FunctionStatement:
     """``COMMS(1) = 5`` or ``CAMTABLE(0, positions, increments)``."""
 
@@ -204,7 +204,7 @@ class FunctionStatement:
     fill: bool
 
 
-@node
+@record
 class BareName:
     """A user word standing alone: an unknown keyword (3007) unless a macro explains it."""
 
@@ -212,20 +212,20 @@ class BareName:
     name: Name
 
 
-@node
+@record
 class IfThen:
     span: Span
     condition: Expression
     body: tuple[Statement, ...]
 
 
-@node
+@record
 class IfDo:
     span: Span
     condition: Expression
 
 
-@node
+@record
 class For:
     span: Span
     variable: Name
@@ -234,19 +234,19 @@ class For:
     step: Expression | None
 
 
-@node
+@record
 class Until:
     span: Span
     condition: Expression
 
 
-@node
+@record
 class While:
     span: Span
     condition: Expression
 
 
-@node
+@record
 class BlockWord:
     """A statement that is one word: ELSE ENDIF NEXT REPEAT ENDW LOOP ENDL EXIT RETURN END, and MintMT's
     STARTUP, ENDEVENT and ENDSTARTUP (``End Loop`` and ``End If`` are ENDL and ENDIF)."""
@@ -255,7 +255,7 @@ class BlockWord:
     word: str  # canonical upper-case keyword
 
 
-@node
+@record
 class EventBlock:
     """MintMT's ``Event NAME``, which opens the handler of that event up to ``End Event``."""
 
@@ -263,7 +263,7 @@ class EventBlock:
     name: Name
 
 
-@node
+@record
 class Jump:
     """``GOSUB label`` or ``GOTO label``."""
 
@@ -272,13 +272,13 @@ class Jump:
     label: Name
 
 
-@node
+@record
 class Pause:
     span: Span
     condition: Expression | None
 
 
-@node
+@record
 class Dim:
     """``DIM name``, ``DIM name = value`` or ``DIM name(size) = v1, v2 ...;``."""
 
@@ -290,7 +290,7 @@ class Dim:
     modifier: str | None = None  # Mint v3's OFFLINE (a keyword anywhere else is an error)
 
 
-@node
+@record
 class Define:
     """``DEFINE name = body``: ``body_span`` is the raw text the macro stands for."""
 
@@ -300,13 +300,13 @@ class Define:
     body_span: Span | None
 
 
-@node
+@record
 class Axes:
     span: Span
     selector: Selector | None
 
 
-@node
+@record
 class PrintItem:
     """One PRINT operand; ``separator`` is the "," or ";" written after it, if any."""
 
@@ -316,7 +316,7 @@ class PrintItem:
     separator: str | None
 
 
-@node
+@record
 class Print:
     span: Span
     terminal: Expression | None
@@ -324,7 +324,7 @@ class Print:
     using: tuple[Expression, ...]
 
 
-@node
+@record
 class Input:
     span: Span
     terminal: Expression | None
@@ -333,7 +333,7 @@ class Input:
     using: tuple[Expression, ...]
 
 
-@node
+@record
 class SyntaxError_:
     """A statement that could not be parsed; its diagnostic is in ``Document.diagnostics``.
 
@@ -370,7 +370,7 @@ Statement = (
 )
 
 
-@node
+@record
 class Line:
     """One logical line: an optional label and its statements.
 
@@ -384,7 +384,7 @@ class Line:
     statements: tuple[Statement, ...]
 
 
-@node
+@record
 class LineSyntax:
     """One logical line as the parser sees it, wherever it stands.
 

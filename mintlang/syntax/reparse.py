@@ -16,13 +16,13 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_left, bisect_right
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
 from operator import attrgetter
 
 from mintlang.allocation import without_collector
 from mintlang.diagnostics import Diagnostic, LineIndex, LinesAndEnd
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
+from mintlang.records import record
 from mintlang.syntax import nodes as n
 from mintlang.syntax.change import Change, Window
 from mintlang.syntax.common import common_prefix, common_suffix
@@ -59,7 +59,7 @@ def _line_boundary(text: str, offset: int) -> bool:
     return before == "\n" or (before == "\r" and text[offset] != "\n")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Lines:
     """The physical lines ``first`` to ``end`` of the previous text, which ``window`` replaced."""
 

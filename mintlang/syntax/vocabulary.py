@@ -10,12 +10,12 @@ while its token kind is the same on every controller, so lexing needs none).
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
 from functools import cache
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, KeywordKind, V3Keyword
+from mintlang.records import record
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
 
 _MINTMT_BLOCK_WORDS = (TokenKind.EVENT, TokenKind.STARTUP)  # their closers are two words: the lexer's
@@ -23,7 +23,7 @@ _MINTMT_BLOCK_WORDS = (TokenKind.EVENT, TokenKind.STARTUP)  # their closers are 
 _ROLES: Mapping[str, TokenKind] = {kind.value: kind for kind in GRAMMAR_KEYWORDS}
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Vocabulary:
     """Spelling tables of one dialect."""
 

@@ -9,13 +9,13 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 from decimal import Decimal
 from enum import Enum, auto
 from functools import reduce
 from operator import xor
 from typing import TypeAlias
 
+from mintlang.records import record
 from mintlang.runtime.comms.array import USER_ELEMENTS, CommsArray
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.numbers import f32
@@ -35,7 +35,7 @@ _DIGITS = b"0123456789"
 _NUMBER = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class WriteRequest:
     """A well-formed write with a correct checksum; ``values`` are already binary32."""
 
@@ -44,13 +44,13 @@ class WriteRequest:
     values: tuple[float, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ReadRequest:
     node: int
     address: int
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class BadPacket:
     """A packet the card must refuse; ``node`` is None when the ID is unreadable, so no card may answer it."""
 

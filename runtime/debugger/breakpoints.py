@@ -26,6 +26,7 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+from mintlang.records import record
 from mintlang.runtime.debugger.evaluation import Compiled, EvaluationError, Evaluator, run, shown
 from mintlang.runtime.debugger.launch import Layout
 from mintlang.syntax.nodes import identity
@@ -78,7 +79,7 @@ class Breakpoint:
         return body
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Decision:
     """What reaching a breakpoint's line does: stop (with why, if its condition failed) or print a log line."""
 

@@ -24,8 +24,9 @@ last hit of a breakpoint skips the stretches that never passed one.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import field
 
+from mintlang.records import record
 from mintlang.runtime.snapshot import Snapshot
 
 INTERVAL = 4096  # work between two checkpoints: some 30 ms to re-run, against 3-5 ms to save one
@@ -34,7 +35,7 @@ DENSE = 4  # checkpoints kept at each spacing, from one interval apart to far ap
 LIMIT = 48  # checkpoints kept at most: each holds the simulation's state (about 100 kB for 12 axes)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Checkpoint:
     """The run as it stood before processing ``tick``: the simulation and the debugger's account of the run."""
 

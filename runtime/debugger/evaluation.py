@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import math
 import struct
-from dataclasses import dataclass
 
 from mintlang.dialect import Dialect
+from mintlang.records import record
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.dialects import semantics
 from mintlang.runtime.errors import MintError, NotSimulated
@@ -29,7 +29,7 @@ class EvaluationError(Exception):
     """The text is not an expression of the program, or evaluating it raised a Mint error (the message says which)."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Compiled:
     text: str
     evaluate: Evaluate

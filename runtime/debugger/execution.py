@@ -16,10 +16,10 @@ from __future__ import annotations
 import threading
 from collections import deque
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 from functools import partial
 from typing import NoReturn, Protocol
 
+from mintlang.records import record
 from mintlang.runtime import snapshot
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.debugger import stepping
@@ -51,12 +51,12 @@ class Listener(Protocol):
     def finished(self, result: RunResult | None, problem: str | None) -> None: ...
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Rerun:
     plan: Forward | Scan
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Recent:
     """A point this run passed where stepping may stop, and whether a breakpoint hit there."""
 

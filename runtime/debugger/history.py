@@ -18,12 +18,12 @@ forgotten.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 
+from mintlang.records import record
 from mintlang.runtime.controller import Controller
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Intervention:
     count: int  # the point it was made at
     description: str  # what it did, for the debug console

@@ -13,13 +13,14 @@ as it is.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import field
 from pathlib import Path
 from typing import Any
 
 from mintlang.controllers import ControllerProfile
 from mintlang.detection import detect_dialect
 from mintlang.dialect import Dialect
+from mintlang.records import record
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.dialects import SIMULATED
 from mintlang.runtime.hardware import machine
@@ -42,7 +43,7 @@ class LaunchError(Exception):
     """The launch cannot start: a file that cannot be read, an unknown controller, a bad scenario."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Application:
     """Everything a run of the program needs, read once: every re-run (a step back) starts from it."""
 
@@ -135,7 +136,7 @@ def prepare(arguments: Mapping[str, Any]) -> Application:
     )
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Layout:
     """The compiled application: its statements in order and the program's labels (subroutines and event
     handlers, by identity) with the statement each starts at."""

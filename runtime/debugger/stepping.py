@@ -22,8 +22,10 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
+from mintlang.records import record
 
-@dataclass(frozen=True, slots=True)
+
+@record
 class Point:
     count: int  # attempts before this one, in this run
     pc: int  # the operation about to run
@@ -32,7 +34,7 @@ class Point:
     tick: int = 0  # the simulated time, in servo ticks (ms)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Forward:
     """Run on until ``accepts`` takes a point after ``after`` (or a breakpoint, or a pause request, stops it)."""
 

@@ -10,9 +10,9 @@ this point. References are numbered afresh at every stop, as DAP allows.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any, Protocol
 
+from mintlang.records import record
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.comms.array import USER_ELEMENTS
 from mintlang.runtime.controller import Controller
@@ -28,7 +28,7 @@ class NotSettable(Exception):
     """The variable cannot be set from the editor (the message says why)."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Variable:
     name: str
     value: str

@@ -30,6 +30,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
+from mintlang.records import record
 from mintlang.runtime import numbers
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter import generated
@@ -50,7 +51,7 @@ class _Unsupported(Exception):
     """The loop holds a statement the generated loop does not write: the interpreter alone runs it."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class CompiledLoop:
     """The generated passes of the loop opened at ``opener``, and the operations they stand for."""
 

@@ -18,9 +18,9 @@ from __future__ import annotations
 import functools
 import struct
 from collections.abc import Callable
-from dataclasses import dataclass
 from types import CodeType, FunctionType
 
+from mintlang.records import record
 from mintlang.runtime import numbers
 from mintlang.runtime.errors import MintError
 
@@ -36,7 +36,7 @@ def too_large() -> MintError:
     return MintError(numbers.OUT_OF_RANGE, detail="number too large")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Source:
     """An expression's Python text, always one atom (a name, a call, a subscript or a parenthesised whole)."""
 

@@ -17,8 +17,8 @@ it has one, and goes on at its first line, stepping over the ``Startup`` and
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
 
+from mintlang.records import record
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter import compiled_loops
 from mintlang.runtime.interpreter.arrays import array_problem, initial_values
@@ -36,7 +36,7 @@ from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Linked:
     """What the rest of the runtime needs to know about the compiled application."""
 

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
 
+from mintlang.records import record
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter import generated
@@ -42,7 +42,7 @@ def layout_size(statement: n.Statement) -> int:
     return 1
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class FileLayout:
     """Where everything of one file sits in the operation list."""
 

@@ -16,6 +16,7 @@ from enum import StrEnum
 from typing import Protocol
 
 from mintlang.controllers import NestingLimits
+from mintlang.records import record
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import ErrorStyle, MintError, NotSimulated, V4Errors
 from mintlang.semantic.blocks import BlockKind, nesting_problem
@@ -35,7 +36,7 @@ class StopReason(StrEnum):
     INTERRUPTED = "interrupted"  # Ctrl-C, or whoever reads the output went away
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Site:
     """Where an operation came from, for ``ERL`` and for reports."""
 
@@ -62,7 +63,7 @@ class Loop:
     step: float = 0.0
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Recovery:
     """Where ``RETURN`` from ``#ONERROR`` resumes after an error in a block statement: never inside its block."""
 

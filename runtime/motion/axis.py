@@ -11,9 +11,9 @@ from __future__ import annotations
 
 from collections import deque
 from collections.abc import Callable
-from dataclasses import dataclass
 
 from mintlang.keyworddb.model import Controller
+from mintlang.records import record
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.motion.moves import PROFILER_TICK_MS, Move, next_profiler_tick
@@ -52,7 +52,7 @@ def wrap(counts: float) -> float:
     return (counts + POSITION_HALF_SPAN) % (2.0 * POSITION_HALF_SPAN) - POSITION_HALF_SPAN
 
 
-@dataclass(frozen=True, slots=True, eq=False)
+@record(eq=False)
 class Request:
     """A move waiting in the buffer; ``build`` makes it a ``Move`` at its start tick.
 

@@ -12,9 +12,9 @@ from __future__ import annotations
 
 from collections import deque
 from collections.abc import Callable
-from dataclasses import dataclass
 from enum import Enum
 
+from mintlang.records import record
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
@@ -34,7 +34,7 @@ class StopRule(Enum):
     AFTER_QUEUE = "after queue"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Shear:
     """One segment in counts: from ``ratio`` (slave counts per master count), ``slave`` over ``master`` (signed)."""
 
@@ -58,7 +58,7 @@ class Shear:
         return self.ratio + (self.final_ratio - self.ratio) * self.progress(travel)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Step:
     """A queued segment: a FLY distance, or a clutch to a ratio (``gear`` = numerator, denominator) over ``master``."""
 
@@ -261,7 +261,7 @@ class LockedMove:
         return self
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class FlySegment:
     """A FLY waiting in the move buffer; built, it starts a chain that takes the following FLYs as they come."""
 

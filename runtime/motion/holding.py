@@ -10,14 +10,15 @@ where it stopped and finishes, at the slew speed it would have had.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
+from mintlang.records import record
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.moves import PlannedMove, next_profiler_tick
 from mintlang.runtime.motion.profile import plan_move, plan_velocity
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Held:
     move: PlannedMove  # the move as it was
     ramp: PlannedMove  # its ramp to rest, which the axes run while held

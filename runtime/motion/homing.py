@@ -17,9 +17,9 @@ finds the index edge to the count.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 from enum import Enum
 
+from mintlang.records import record
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
@@ -60,7 +60,7 @@ PHASES = {
 }
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Segment:
     """One ramp of the cycle: from ``origin`` counts at profiler tick ``start``, along ``profile``."""
 

@@ -17,6 +17,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from mintlang.keyworddb.model import Controller
+from mintlang.records import record
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
@@ -120,7 +121,7 @@ class AuxiliaryMaster:
         return True
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Link:
     """A slave's view of its master at load time: the sampler, and the unit conversions."""
 

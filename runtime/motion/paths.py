@@ -15,8 +15,8 @@ loaded yet.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from mintlang.records import record
 from mintlang.runtime.motion.axis import MD_CIRCULAR, MD_LINEAR, Axis
 from mintlang.runtime.motion.moves import Geometry, PlannedMove, completion_tick
 from mintlang.runtime.motion.profile import Profile, plan_move, plan_velocity
@@ -35,13 +35,13 @@ def exact_turn(degrees: float) -> tuple[float, float]:
     return math.cos(radians), math.sin(radians)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Arc:
     centre: tuple[float, float]  # counts, in the same frame as the demand
     degrees: float  # signed: positive anticlockwise; beyond ±360 it turns more than once
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Shape:
     """A segment placed at its origin: where its path goes, how long it is, where it ends exactly."""
 
@@ -53,7 +53,7 @@ class Shape:
         return tuple(self.geometry.slope(index, s) for index in range(len(self.targets)))
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class PathSegment:
     """A buffered MOVE, VECTOR or CIRCLE; called with its start tick it becomes the move (``Request.build``)."""
 
@@ -107,7 +107,7 @@ class PathSegment:
         )
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Plan:
     """A profile laid along a path from ``s_offset`` starting at profiler tick ``start``."""
 
@@ -145,7 +145,7 @@ class Retimed:
         return self.plan.sample(tick)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Piece:
     segment: PathSegment
     shape: Shape

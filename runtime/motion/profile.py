@@ -24,7 +24,9 @@ from __future__ import annotations
 import math
 from bisect import bisect_right
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import field
+
+from mintlang.records import record
 
 # (t0, x0, v0, a0/2, j/6, a0, j/2): a cubic in τ = t - t0 and its derivative, pre-scaled for Horner evaluation.
 _Segment = tuple[float, float, float, float, float, float, float]
@@ -32,7 +34,7 @@ _Segment = tuple[float, float, float, float, float, float, float]
 _Phase = tuple[float, float, float]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Profile:
     """A planned motion from position 0, sampled by time since its start.
 

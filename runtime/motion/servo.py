@@ -8,8 +8,9 @@ servo sample, as the manual defines them: ``e`` and ``Σe`` in counts, ``Δe``,
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from enum import IntEnum
+
+from mintlang.records import record
 
 
 class KintMode(IntEnum):
@@ -21,7 +22,7 @@ class KintMode(IntEnum):
     SMART = 3  # only at constant, non-zero demand velocity
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ServoGains:
     """One axis's loop parameters, defaulted as the ``DEFAULT`` keyword leaves them (spec SL-2, SL-4, SL-6)."""
 

@@ -10,11 +10,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from mintlang.records import record
 from mintlang.runtime.motion.moves import completion_tick
 from mintlang.runtime.motion.profile import Profile
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Offset:
     """One OFFSET's profile, started at profiler tick ``start``; ``sign`` gives its direction."""
 

@@ -8,11 +8,11 @@ so the two front ends accept exactly the same worlds and say the same things.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
 from types import MappingProxyType
 from typing import cast, get_args
 
 from mintlang.dialect import Dialect
+from mintlang.records import record
 from mintlang.runtime.comms.packets import encode_read, encode_write
 from mintlang.runtime.scenario.expectations import (
     STOP_REASONS,
@@ -40,7 +40,7 @@ from mintlang.runtime.scenario.stimulus import (
 from mintlang.runtime.scenario.targets import target
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class PlantParameters:
     """The parameters a plant model takes, in the order a directive may give them bare (``velamp 40``)."""
 

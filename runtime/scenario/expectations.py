@@ -8,10 +8,10 @@ the run is made and the simulator nothing about how expectations are written.
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
 from enum import StrEnum
 from typing import TYPE_CHECKING, Protocol
 
+from mintlang.records import record
 from mintlang.runtime.scenario.targets import Target
 
 if TYPE_CHECKING:
@@ -43,7 +43,7 @@ class Comparison(StrEnum):
                 return actual <= expected + tolerance
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Origin:
     """Where an expectation was written, for the report."""
 
@@ -59,7 +59,7 @@ def _number(value: float) -> str:
     return f"{value + 0.0:.15g}"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ValueExpectation:
     """A keyword, variable or array element compared with a number."""
 
@@ -80,7 +80,7 @@ class ValueExpectation:
         return f"{text} ± {_number(self.tolerance)}" if self.tolerance else text
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class TerminalExpectation:
     """Text the program must have printed to the terminal by then: somewhere in it, or all of it (``exact``)."""
 
@@ -98,7 +98,7 @@ class TerminalExpectation:
         return f"is {self.text!r}" if self.exact else f"contains {self.text!r}"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class StoppedExpectation:
     """Why the run must stop; known only at the end, so it has no time."""
 
@@ -153,7 +153,7 @@ class Observer(Protocol):
         ...
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Outcome:
     """The verdict on one expectation, with what was seen, in words for the report."""
 

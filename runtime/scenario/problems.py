@@ -8,10 +8,11 @@ reported at once so that one run fixes them all.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass
+
+from mintlang.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ScenarioError:
     """One mistake: ``source`` is a file path or ``"program"``; ``line`` 0 means the whole source, ``column``
     (from 1) 0 the whole line."""

@@ -8,18 +8,19 @@ to follow whichever way the user wrote the world.
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field, fields
+from dataclasses import field, fields
 from itertools import chain
 from types import MappingProxyType
 from typing import Literal, Protocol, TypeVar
 
+from mintlang.records import record
 from mintlang.runtime.scenario.expectations import Expectation
 
 PlantModel = Literal["ideal", "stalled", "velamp", "torque"]
 EncoderOperator = Literal["<=", ">=", "<", ">"]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class PlantChoice:
     """The plant of one axis (W-1); axes without a choice use ``ideal``."""
 
@@ -28,7 +29,7 @@ class PlantChoice:
     parameters: Mapping[str, float] = field(default_factory=lambda: MappingProxyType({}))
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class InputLevel:
     """Digital input ``channel`` is electrically ``level`` from ``time_ms`` on."""
 
@@ -37,7 +38,7 @@ class InputLevel:
     level: int
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class PositionInput:
     """Input ``channel`` is high while the physical count of ``axis`` satisfies ``operator counts`` (a limit switch)."""
 
@@ -47,7 +48,7 @@ class PositionInput:
     counts: int
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class IndexPulse:
     """The encoder of ``axis`` gives a Z pulse every ``every_counts``, ``width_counts`` wide."""
 
@@ -56,7 +57,7 @@ class IndexPulse:
     width_counts: int
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class FastInput:
     """Fast-latch input ``channel`` fires at ``time_ms``."""
 
@@ -64,7 +65,7 @@ class FastInput:
     channel: int
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class AdcLevel:
     """Analog input ``channel`` reads ``percent`` of its range from ``time_ms`` on."""
 
@@ -73,7 +74,7 @@ class AdcLevel:
     percent: float
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Keys:
     """``text`` arrives at the terminal at ``time_ms``, one key after another."""
 
@@ -81,7 +82,7 @@ class Keys:
     text: str
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class HostPacket:
     """Bytes a host sends on the serial line at ``time_ms``."""
 
@@ -89,7 +90,7 @@ class HostPacket:
     data: bytes
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class DrivesEnabled:
     """Every drive is enabled when the run starts, as a bench configuration file would leave them.
 
@@ -117,7 +118,7 @@ def _in_time_order(records: Iterable[_T]) -> tuple[_T, ...]:
     return tuple(sorted(records, key=lambda record: record.time_ms))  # sorted is stable: equal times keep file order
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Scenario:
     """Everything scripted for one run; timed records in time order, equal times in the order written."""
 

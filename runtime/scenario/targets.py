@@ -9,11 +9,11 @@ A Mint v3 program's targets are its own keywords (``MODE.0``, ``GN.1``, ``IN3``)
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing, KeywordKind, V3Keyword
+from mintlang.records import record
 from mintlang.runtime.scenario.problems import Invalid
 
 _TARGET = re.compile(
@@ -23,7 +23,7 @@ _TARGET = re.compile(
 _GLUED_CHANNEL = re.compile(r"[0-9]+$")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Target:
     """A canonical target; ``every_axis`` when an axis keyword was written without its axis."""
 

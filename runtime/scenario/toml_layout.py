@@ -11,13 +11,14 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass
+
+from mintlang.records import record
 
 _HEADER = re.compile(r"\s*(?P<open>\[\[?)\s*(?P<name>[^\]]+?)\s*\]")
 _KEY = re.compile(r"""\s*(?P<quote>["']?)(?P<key>[A-Za-z0-9_-]+)(?P=quote)\s*[.=]""")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Section:
     """A table of the text: its header line (1 for the root table) and the line of each key."""
 

@@ -12,10 +12,11 @@ operations unwrapped.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import field
 from pathlib import Path
 
 from mintlang.dialect import Dialect
+from mintlang.records import record
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.errors import MintError
 from mintlang.semantic.events import event_of
@@ -37,7 +38,7 @@ OUTCOMES: Mapping[str, tuple[str, str]] = {
 _DECLARATIONS = frozenset({"EventBlock"})
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Branch:
     line: int
     kind: str  # IfDo, While …
@@ -48,7 +49,7 @@ class Branch:
         return OUTCOMES[self.kind]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class FileCoverage:
     """One file's coverage, summed over the runs that used it."""
 

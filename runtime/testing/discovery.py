@@ -4,18 +4,18 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable
-from dataclasses import dataclass
 from pathlib import Path
 
 from mintlang.cli.files import find
 from mintlang.pairing import listed_as, names_in
+from mintlang.records import record
 from mintlang.runtime.scenario.directive_words import DIRECTIVE, meant_kind
 from mintlang.source import read_source
 
 SCENARIO_SUFFIX = ".scenario.toml"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class TestCase:
     """One program to run, with the scenario file beside it if it has one."""
 
@@ -27,7 +27,7 @@ class TestCase:
         return str(self.program)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Unreadable:
     """A path given or found that could not be read, or a scenario file that runs nothing: reported, and the
     run goes on.

@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass
 from enum import StrEnum
 
 from mintlang.detection import dialect_hint
 from mintlang.dialect import Dialect
+from mintlang.records import record
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.run import run_source
 from mintlang.runtime.scenario import (
@@ -33,7 +33,7 @@ class Verdict(StrEnum):
     ERROR = "error"  # the test could not be judged: a file unreadable, no expectation, the program refused
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Check:
     """One expectation as the report shows it."""
 
@@ -46,7 +46,7 @@ class Check:
     detail: str
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class TestResult:
     case: TestCase
     verdict: Verdict
@@ -60,7 +60,7 @@ class TestResult:
     hint: str | None = None  # the program looks like MintMT, run as v4 by default (``dialect_hint``)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Options:
     """What every test of a run shares; a controller or dialect not given comes from each program's settings
     file (``[tool.mint]``), as ``mint check`` and ``mint-run`` take it."""

@@ -13,7 +13,6 @@ on every version.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 
 from mintlang.analysis.findings import Finding
 from mintlang.analysis.rules import (
@@ -43,13 +42,14 @@ from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Diagnostic
 from mintlang.dialect import Dialect
+from mintlang.records import record
 from mintlang.semantic.carry import Meaning, control_meaning
 from mintlang.syntax.lexer import PhysicalLines
 
 _ALL_DIALECTS = frozenset(Dialect)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Rule:
     name: str
     check: Callable[[Facts], Iterator[Finding]] | None = None

@@ -18,6 +18,7 @@ from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.rules.flow import subroutines
 from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Span
+from mintlang.records import record
 from mintlang.semantic.events import event_of
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -25,7 +26,7 @@ from mintlang.syntax import nodes as n
 _MAIN = ""  # the main program: no label starts it
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Call:
     target: str  # identity of the label called
     line: n.PlacedLine

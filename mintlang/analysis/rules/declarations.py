@@ -12,7 +12,6 @@ from __future__ import annotations
 
 from bisect import bisect_left, bisect_right
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 from functools import cache, partial
 from itertools import islice
 
@@ -25,6 +24,7 @@ from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import KeywordKind
+from mintlang.records import record
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, Unit
 from mintlang.syntax import nodes as n
@@ -206,7 +206,7 @@ def _first_token(line: n.PlacedLine) -> int:
     return line.origin + line.syntax.span.start
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _DimPlaces:
     """Where a file can take a DIM, found once per file: a search per undeclared name, in a file of
     many unclosed blocks, took time in the square of the file's length."""

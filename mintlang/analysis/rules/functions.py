@@ -16,19 +16,19 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
-from dataclasses import dataclass
 from functools import cache
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import LineScope
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
+from mintlang.records import record
 from mintlang.syntax import nodes as n
 
 _OPTIONAL = re.compile(r"\{([^}]*)\}")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Arity:
     """How many values a function takes, and the format that says so."""
 
@@ -44,7 +44,7 @@ class _Arity:
         return f"{counted} value{'' if self.most == 1 else 's'}"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Statements:
     """The statements a function's formats write it as: alone, or given a value."""
 

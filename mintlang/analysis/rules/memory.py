@@ -13,15 +13,15 @@ on every version (``findings``), so this is not one of ``RULES``.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.diagnostics import Span
+from mintlang.records import record
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import SymbolTable, Unit
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ArrayDemand:
     """The bytes the declared arrays take, and where the largest is declared (the error's place)."""
 

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
-from dataclasses import dataclass
 from functools import cache
 
 from mintlang.analysis.findings import Finding, mint_error
@@ -20,6 +19,7 @@ from mintlang.analysis.traversal import LineScope
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import KeywordKind
+from mintlang.records import record
 from mintlang.syntax import nodes as n
 
 _TERMINAL = re.compile(r"\{\s*#<[^>]*>\s*\}")
@@ -28,7 +28,7 @@ _OPERAND = re.compile(r"<[^<>]*>")
 _OPEN_ENDED = "<expression>"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Operands:
     """How many operands a command's format writes after its name, and the format."""
 

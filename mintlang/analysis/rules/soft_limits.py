@@ -12,17 +12,17 @@ from __future__ import annotations
 
 from collections import defaultdict
 from collections.abc import Iterator
-from dataclasses import dataclass
 
 from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.traversal import Facts, KeywordUse, Use
+from mintlang.records import record
 from mintlang.semantic.constants import constant_integer, constant_value
 from mintlang.syntax import nodes as n
 
 _FORWARD, _REVERSE = "SOFTLIMITFORWARD", "SOFTLIMITREVERSE"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Limit:
     """One limit written on one axis: its constant value (None when not constant) and where."""
 

@@ -11,7 +11,6 @@ here, saying what it became and offering the rename when there is exactly one. A
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
 
 from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import LineScope, Use
@@ -19,6 +18,7 @@ from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
+from mintlang.records import record
 from mintlang.semantic.events import EventKind, event_of
 from mintlang.syntax import nodes as n
 
@@ -34,7 +34,7 @@ _OTHER_JOB = {
 }
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Successor:
     """What a Mint v3 word became in v4, for a message, and the word to write instead where renaming is enough."""
 

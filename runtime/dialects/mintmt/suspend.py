@@ -12,8 +12,8 @@ simulated; nor is a move that does not come from the buffer (JOG, HOME ...).
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 
+from mintlang.records import record
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.axis import Axis
@@ -26,7 +26,7 @@ from mintlang.runtime.ranges import OUT_OF_RANGE
 RUNNING, SUSPENDED = 0, 1
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Paused:
     axes: tuple[int, ...]  # the axes of the paused move
     moving: Move  # what they run while it is paused (a Chain, or the held move's ramp)

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 
+from mintlang.records import record
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.dialects.v3 import events
 from mintlang.runtime.dialects.v3.handlers import V4Handlers
@@ -27,7 +27,7 @@ DISPATCH = events.DISPATCH  # how the interrupts are dispatched
 handlers = events.handlers  # which labels are interrupt routines
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class V3Controller:
     """What the v3 layer gives the controller: its keywords, its inert settings, and what a motion error adds."""
 

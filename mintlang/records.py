@@ -6,9 +6,10 @@ and compiles each with ``exec``, and asks ``inspect.signature`` for a docstring 
 class has none: about 0.4 ms a class, and a one-line ``mint check`` creates over a hundred
 classes. ``record`` lets ``dataclass`` do only its bookkeeping (the fields,
 ``__match_args__``, the slots) and gives the class methods made of closures over
-``operator.attrgetter``, which need no compiling. Only ``__init__`` is still compiled, one
-small function, so that building a record (a syntax node: many per line) sets each slot
-directly: a frozen dataclass's ``__init__`` calls ``object.__setattr__`` per field.
+``operator.attrgetter``, which need no compiling. ``__init__`` sets each slot directly
+(a frozen dataclass's calls ``object.__setattr__`` per field, and building syntax nodes,
+many per line, is hot); its code is compiled once per shape of fields (how each is set)
+and shared, renamed, by every record of that shape: 13 shapes serve a hundred classes.
 
 The result is a genuine dataclass (``fields``, ``replace``, ``asdict``, ``is_dataclass``,
 ``match``, ``copy`` and ``pickle``, ``__dataclass_params__`` saying ``frozen``) with the
@@ -26,7 +27,7 @@ from dataclasses import MISSING, Field, FrozenInstanceError, dataclass, fields, 
 from functools import cache
 from operator import attrgetter
 from reprlib import recursive_repr
-from types import MemberDescriptorType
+from types import CodeType, FunctionType, MemberDescriptorType
 from typing import Any, TypeVar, overload
 
 T = TypeVar("T", bound=type)
@@ -188,46 +189,62 @@ class _Factory:
 
 _FACTORY = _Factory()
 
+# How ``__init__`` sets the field at index ``i``: from its parameter (which may have a default), from its
+# parameter or else its factory, from its factory alone (``init=False``), or to its default (``init=False``).
+_SETS = {
+    "given": "s{i}(self, p{i})",
+    "given_or_made": "s{i}(self, f{i}() if p{i} is FACTORY else p{i})",
+    "made": "s{i}(self, f{i}())",
+    "fixed": "s{i}(self, d{i})",
+}
+
 
 def _init_method(cls: type, every: tuple[Field[Any], ...]) -> Callable[..., None]:
-    """``__init__`` compiled for ``cls``: each field set through its slot, or ``object.__setattr__`` without one."""
-    namespace: dict[str, Any] = {"__record_factory__": _FACTORY, "__record_setattr__": object.__setattr__}
-    parameters: list[str] = []
-    body: list[str] = []
-    self = "__record_self__" if "self" in {field.name for field in every} else "self"
+    """``__init__`` for ``cls``: the shared code of its fields' shape, its parameters named after the fields.
+
+    The code reads the setters (``s0``...), factories and defaults as globals, which each class
+    gives its own; a field's parameter is a local variable, so renaming it changes nothing else.
+    """
+    shape: list[str] = []
+    names = ["__record_self__" if any(field.name == "self" for field in every) else "self"]
+    defaults: list[object] = []
+    namespace: dict[str, object] = {"FACTORY": _FACTORY, "__name__": cls.__module__}
     for field in every:
-        value = _parameter(field, namespace, parameters)
-        if value is None:
-            continue
-        slot = next((klass.__dict__[field.name] for klass in cls.__mro__ if field.name in klass.__dict__), None)
-        if isinstance(slot, MemberDescriptorType):
-            namespace[f"__record_set_{field.name}__"] = slot.__set__
-            body.append(f"    __record_set_{field.name}__({self}, {value})\n")
+        i = len(shape)
+        if field.default_factory is not MISSING:
+            namespace[f"f{i}"] = field.default_factory
+            kind, default = ("given_or_made", (_FACTORY,)) if field.init else ("made", ())
+        elif field.default is not MISSING:
+            namespace[f"d{i}"] = field.default
+            kind, default = ("given", (field.default,)) if field.init else ("fixed", ())
+        elif field.init:
+            if defaults:
+                raise TypeError(f"non-default argument {field.name!r} follows default argument")
+            kind, default = "given", ()
         else:
-            body.append(f"    __record_setattr__({self}, {field.name!r}, {value})\n")
-    source = "".join(body) or "    pass\n"
-    exec(f"def __init__({', '.join([self, *parameters])}):\n{source}", namespace)
-    return namespace["__init__"]  # type: ignore[no-any-return]
+            continue  # left unset, as dataclass leaves it
+        shape.append(kind)
+        namespace[f"s{i}"] = _setter(cls, field.name)
+        if field.init:
+            names.append(field.name)
+            defaults += default
+    code = _template(tuple(shape)).replace(co_varnames=tuple(names), co_qualname=f"{cls.__qualname__}.__init__")
+    return FunctionType(code, namespace, "__init__", tuple(defaults))
 
 
-def _parameter(field: Field[Any], namespace: dict[str, Any], parameters: list[str]) -> str | None:
-    """The expression ``__init__`` sets ``field`` to (None: left unset), its parameter added to ``parameters``."""
-    name = field.name
-    if field.default_factory is not MISSING:
-        namespace[f"__record_make_{name}__"] = field.default_factory
-        if not field.init:
-            return f"__record_make_{name}__()"
-        parameters.append(f"{name}=__record_factory__")
-        return f"__record_make_{name}__() if {name} is __record_factory__ else {name}"
-    if field.default is not MISSING:
-        namespace[f"__record_default_{name}__"] = field.default
-        if not field.init:
-            return f"__record_default_{name}__"
-        parameters.append(f"{name}=__record_default_{name}__")
-        return name
-    if not field.init:
-        return None
-    if parameters and "=" in parameters[-1]:
-        raise TypeError(f"non-default argument {name!r} follows default argument")
-    parameters.append(name)
-    return name
+@cache
+def _template(shape: tuple[str, ...]) -> CodeType:
+    """The code of an ``__init__`` setting fields of ``shape``, compiled once for every record of that shape."""
+    parameters = [f"p{i}" for i, kind in enumerate(shape) if kind.startswith("given")]
+    body = "".join(f"    {_SETS[kind].format(i=i)}\n" for i, kind in enumerate(shape)) or "    pass\n"
+    namespace: dict[str, Any] = {}
+    exec(f"def __init__({', '.join(['self', *parameters])}):\n{body}", namespace)
+    return namespace["__init__"].__code__  # type: ignore[no-any-return]
+
+
+def _setter(cls: type, name: str) -> Callable[[object, object], None]:
+    """Sets field ``name`` of a new record: through its slot, which the class's ``__setattr__`` does not guard."""
+    slot = next((klass.__dict__[name] for klass in cls.__mro__ if name in klass.__dict__), None)
+    if isinstance(slot, MemberDescriptorType):
+        return slot.__set__
+    return lambda record, value: object.__setattr__(record, name, value)

@@ -76,6 +76,10 @@ class Shelf:
     def __init__(self) -> None:
         self._held: WeakKeyDictionary[RecentCache[object, object], _Generations] = WeakKeyDictionary()
 
+    def clear(self) -> None:
+        """Drop what the blocks left here: no block given this shelf is to come."""
+        self._held.clear()
+
 
 @contextmanager
 def apart(shelf: Shelf | None = None) -> Iterator[None]:

@@ -55,6 +55,9 @@ def test_a_block_given_a_shelf_starts_with_what_the_last_block_given_it_cached()
     with apart(shelf):
         assert (cache.get("outside"), cache.get("first block")) == (None, 2)
     assert (cache.get("outside"), cache.get("first block")) == (1, None)
+    shelf.clear()
+    with apart(shelf):
+        assert cache.get("first block") is None
 
 
 def test_after_an_action_a_cache_holds_only_what_the_action_looked_up_or_added() -> None:

@@ -267,9 +267,7 @@ class Session:
             frames.append(self._frame(depth, self._site(pc, execution), pc, controller))
             if frame is None:
                 break
-            pc = (
-                frame.return_pc if frame.rank is not None else frame.return_pc - 1
-            )  # a handler returns where it broke in
+            pc = frame.entered_at  # the GOSUB, the statement #ONERROR's error came from, where an event broke in
         start = _whole(arguments.get("startFrame", 0), "'startFrame'")
         levels = _whole(arguments.get("levels", 0), "'levels'")
         shown_frames = frames[start : start + levels] if levels > 0 else frames[start:]

@@ -76,6 +76,7 @@ class Frame:
     return_pc: int
     loops: int  # loop stack depth at the call: loops left open inside a subroutine end with it
     rank: int | None  # the event class rank of a handler frame, None for GOSUB
+    entered_at: int  # the statement a call stack shows for the caller: the GOSUB, the failing one for #ONERROR
     ending: MintError | None = None  # #ONERROR called for an error that ends the run when it returns
 
 
@@ -244,10 +245,15 @@ class Interpreter:
 
     # ------------------------------------------------------------- subroutines
 
-    def call(self, target: int, rank: int | None = None, return_pc: int | None = None) -> None:
+    def call(self, target: int, rank: int | None = None, return_pc: int | None = None, at: int | None = None) -> None:
+        """Enter the code at ``target``, to return to ``return_pc`` (by default the statement next to run).
+        ``at`` is the statement the caller is shown at: by default the GOSUB that calls (the statement before
+        the one next to run), or for an event the statement it broke in before."""
         if len(self.frames) >= self.nesting.gosub:
             raise MintError(STACK_OVERFLOW, detail=f"more than {self.nesting.gosub} nested GOSUB calls and events")
-        self.frames.append(Frame(self.pc if return_pc is None else return_pc, len(self.loops), rank))
+        back = self.pc if return_pc is None else return_pc
+        shown = at if at is not None else back if rank is not None else self.pc - 1
+        self.frames.append(Frame(back, len(self.loops), rank, shown))
         self.pc = target
 
     def return_(self) -> None:
@@ -365,13 +371,13 @@ class Interpreter:
         """Call ``#ONERROR`` for ``error`` at ``pc``: its RETURN resumes after the failing statement (EV-19 RC),
         or for an error the program cannot go on from, comes back to it and ends the run there."""
         if not self.errors.resumes(error):
-            self.call(handler, 0, return_pc=pc)
+            self.call(handler, 0, return_pc=pc, at=pc)
             self.frames[-1].ending = error.with_traceback(None)  # not the frames it was raised through
             return
         recovery = self.recoveries.get(pc)
         if recovery is not None and recovery.loop is not None:
             self.leave_loop(recovery.loop)
-        self.call(handler, 0, return_pc=pc + 1 if recovery is None else recovery.resume)
+        self.call(handler, 0, return_pc=pc + 1 if recovery is None else recovery.resume, at=pc)
 
     def halt(self, error: MintError, site: Site | None) -> None:
         """End the run on an error no handler takes: the controller prints its message and aborts every axis

@@ -167,7 +167,7 @@ def layout(application: Application) -> Layout:
     def compiled(controller: Controller) -> None:
         sites = tuple(controller.vm.sites)
         labels = dict(controller.linked.handlers)
-        raise _Compiled(Layout(sites, labels, _columns(application, sites), _event_block_ends(sites)))
+        raise _Compiled(Layout(sites, labels, _columns(application, sites), controller.linked.event_block_ends))
 
     try:
         application.run(compiled)
@@ -176,20 +176,6 @@ def layout(application: Application) -> Layout:
     except ScenarioFileError as error:  # a REM @sim directive the scenario cannot read
         raise LaunchError(str(error)) from None
     return Layout()
-
-
-def _event_block_ends(sites: tuple[Site, ...]) -> dict[int, int]:
-    """Each MintMT Event block's first statement and its End Event: Event blocks stand alone, never one inside
-    another (MT-13), so each ends at the first End Event after it."""
-    ends: dict[int, int] = {}
-    start: int | None = None
-    for pc, site in enumerate(sites):
-        if site.kind == "EventBlock":
-            start = pc + 1
-        elif start is not None and site.kind == "BlockWord" and "".join(site.text.split()).upper() == "ENDEVENT":
-            ends[start] = pc
-            start = None
-    return ends
 
 
 def _columns(application: Application, sites: tuple[Site, ...]) -> tuple[int, ...]:

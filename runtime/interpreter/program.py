@@ -43,6 +43,7 @@ class Linked:
     handlers: Mapping[str, int]  # the program's labels by identity (ONERROR, IN3, TIMER ...) -> pc
     configuration_handlers: Mapping[str, int]  # the configuration file's
     names: Names
+    event_block_ends: Mapping[int, int]  # a MintMT Event block's first statement -> its End Event, by pc
 
 
 def link(
@@ -87,7 +88,8 @@ def link(
         compiled_loops.attach(vm, statements, model.structures[unit].blocks, positions, expressions)
     if program_start == 0:  # no configuration file: the program runs first, from its entry
         vm.pc = entry
-    return Linked(handlers.get(Unit.PROGRAM, {}), handlers.get(Unit.CONFIGURATION, {}), names)
+    event_block_ends = _event_block_ends(model.structures[Unit.PROGRAM].blocks, program_positions)
+    return Linked(handlers.get(Unit.PROGRAM, {}), handlers.get(Unit.CONFIGURATION, {}), names, event_block_ends)
 
 
 def _compiled(compiler: StatementCompiler, statement: n.Statement, place: Place, pc: int) -> Operation:
@@ -134,6 +136,16 @@ def _entry(blocks: tuple[Block, ...], positions: Mapping[Place, int], program_st
     """Where the program begins: inside its MintMT ``Startup`` block if it has one, else at its first line."""
     startup = next((block for block in blocks if block.kind is BlockKind.STARTUP), None)
     return positions[startup.opener] + 1 if startup is not None else program_start
+
+
+def _event_block_ends(blocks: tuple[Block, ...], positions: Mapping[Place, int]) -> dict[int, int]:
+    """Each closed MintMT Event block's first statement and its ``End Event``, as the block analysis matched
+    them (the code after the block is the program's again, MT-7)."""
+    return {
+        positions[block.opener] + 1: positions[block.closer]
+        for block in blocks
+        if block.kind is BlockKind.EVENT and block.closer is not None
+    }
 
 
 def _blocks_by_place(blocks: tuple[Block, ...]) -> dict[Place, Block]:

@@ -10,6 +10,7 @@ whose text uses another macro fails with a syntax error (3.5).
 
 from __future__ import annotations
 
+import re
 from bisect import bisect_left, bisect_right
 from collections.abc import Callable, Iterator
 from functools import cache, partial
@@ -34,12 +35,36 @@ from mintlang.syntax.tokens import TokenKind
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     if model.program.dialect.modern:
-        yield from _undeclared_variables(model)
+        yield from _undeclared_variables(model, _broken_dims(facts))
     yield from _labels(facts, _jump_words(facts))
     yield from _macros(model)
 
 
-def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
+_BROKEN_DIM = re.compile(r"\s*DIM\s+([A-Za-z_][A-Za-z0-9_]*)", re.IGNORECASE)
+
+
+def _broken_dims(facts: Facts) -> dict[str, tuple[Unit, int]]:
+    """The names a DIM with a syntax error meant to declare (``DIM x As Integer``), each with where its first such
+    DIM starts: its syntax error is the one diagnostic, not an error 3001 at every later use of the name."""
+    sources = {unit: document.source for unit, document in facts.model.documents()}
+    found: dict[str, tuple[Unit, int]] = {}
+    for unit, line, statement in facts.statements(n.SyntaxError_):
+        start, end = line.span(statement.span)
+        meant = _BROKEN_DIM.match(sources[unit], start, end)
+        if meant is not None:
+            found.setdefault(n.identity(meant.group(1)), (unit, start))
+    return found
+
+
+def _after(occurrence: Occurrence, place: tuple[Unit, int]) -> bool:
+    """Whether ``occurrence`` comes after ``place`` in compile order (the configuration file, then the program)."""
+    unit, start = place
+    if occurrence.unit is not unit:
+        return unit is Unit.CONFIGURATION
+    return occurrence.span.start > start
+
+
+def _undeclared_variables(model: SemanticModel, broken_dims: dict[str, tuple[Unit, int]]) -> Iterator[Finding]:
     renames = database()
     declared = [symbol.name for symbol in model.symbols.variables.values() if symbol.definitions]
     places: dict[Unit, _DimPlaces] = {}  # found once per file, for the first name that needs a DIM
@@ -47,7 +72,9 @@ def _undeclared_variables(model: SemanticModel) -> Iterator[Finding]:
         undeclared = [
             occurrence
             for occurrence in symbol.references
-            if not occurrence.declared_before and not _macro_left_in_macro(model, symbol.name, occurrence)
+            if not occurrence.declared_before
+            and not _macro_left_in_macro(model, symbol.name, occurrence)
+            and not (symbol.identity in broken_dims and _after(occurrence, broken_dims[symbol.identity]))
         ]
         if not undeclared:
             continue

@@ -1,0 +1,45 @@
+"""A DIM the grammar rejects gives one syntax error, at the DIM, and no error 3001 at each later use.
+
+Every variable is declared with DIM before use (000:897-898), one name per DIM
+(000:911-913), and holds a floating point number (000:705-706): a typed
+declaration as in other BASICs (``Dim x As Integer``, often MintMT read as v4)
+is a syntax error. The name it meant to declare is not reported again at every
+later line: the error at the DIM is the one to fix. A use before the broken
+DIM is still error 3001, as it would be before a good one.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import mintlang
+from mintlang.dialect import Dialect
+
+
+def _found(source: str, dialect: Dialect = Dialect.V4) -> list[tuple[str, int]]:
+    return [(d.code, d.span.start) for d in mintlang.check(source, dialect=dialect)]
+
+
+@pytest.mark.parametrize("dialect", [Dialect.V4, Dialect.MINTMT])
+def test_a_typed_dim_is_one_syntax_error_at_its_type(dialect: Dialect) -> None:
+    source = "Dim x As Integer\nx = 5\nPRINT x\nx = x + 1\nPRINT x * 2\n"
+    assert _found(source, dialect) == [("E2003", 6)]  # at "As"
+
+
+def test_the_syntax_error_says_dim_takes_no_type() -> None:
+    (error,) = mintlang.check("DIM rate AS FLOAT\nrate = 2.5\n")
+    assert "DIM takes no type" in error.message
+
+
+def test_a_dim_of_two_names_does_not_cascade_either() -> None:
+    # "DIM aVar, thisIsAVariable" is a syntax error (000:911-913); aVar is not reported again
+    source = "DIM aVar, thisIsAVariable\naVar = 1\n"
+    assert [code for code, _ in _found(source)] == ["E2003"]
+
+
+def test_a_use_before_the_broken_dim_is_still_undeclared() -> None:
+    assert [code for code, _ in _found("x = 1\nDIM x AS INTEGER\nPRINT x\n")] == ["E3001", "E2003"]
+
+
+def test_another_undeclared_name_is_still_reported() -> None:
+    assert [code for code, _ in _found("DIM x AS INTEGER\ny = x\n")] == ["E2003", "E3001"]

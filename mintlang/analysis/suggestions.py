@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
-from difflib import SequenceMatcher, get_close_matches
 from functools import cache
 
 from mintlang.dialect import Dialect
@@ -18,6 +17,8 @@ def closest(word: str, known: Iterable[str], *, likeness: float = NAME_LIKENESS)
     """The word of ``known`` most like ``word`` (compared as given: fold the case first if it does not
     matter), if one is at least ``likeness`` alike or, failing that, one slip away (a letter added,
     dropped, changed, or two neighbours swapped: 'IDEL' for 'IDLE' is only 0.75 alike)."""
+    from difflib import SequenceMatcher, get_close_matches  # noqa: PLC0415 - imported for a misspelt word alone
+
     candidates = list(known)
     found = get_close_matches(word, candidates, n=1, cutoff=likeness)
     if found:

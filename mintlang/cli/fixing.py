@@ -9,7 +9,6 @@ not fixed: its findings depend on every program that sees it.
 
 from __future__ import annotations
 
-import difflib
 from collections import Counter
 from collections.abc import Callable, Collection, Sequence
 from dataclasses import dataclass, field, replace
@@ -43,6 +42,8 @@ class Outcome:
 
 def unified_diff(file: FileFixed) -> str:
     """The change as ``diff -u`` shows it, the file's name on both sides."""
+    import difflib  # noqa: PLC0415 - imported for --diff alone
+
     name = str(file.original.path)
     lines = difflib.unified_diff(
         file.original.text.splitlines(keepends=True),

@@ -11,7 +11,6 @@ import re
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import field
 from functools import cache, cached_property
-from importlib import resources
 from types import MappingProxyType
 from typing import Any, TypeVar
 
@@ -31,6 +30,7 @@ from mintlang.keyworddb.model import (
     V3Keyword,
     ValueRange,
 )
+from mintlang.package_data import read_text
 from mintlang.records import record
 
 _Record = TypeVar("_Record")
@@ -38,8 +38,7 @@ _CHANNEL_GLUED = re.compile(r"^(?P<base>.*?\D)(?P<channel>\d+)$")
 
 
 def _read(name: str) -> list[dict[str, Any]]:
-    text = resources.files("mintlang.keyworddb").joinpath("data", name).read_text(encoding="utf-8")
-    return json.loads(text)
+    return json.loads(read_text("mintlang.keyworddb", "data", name))
 
 
 def _range(raw: dict[str, Any] | None) -> ValueRange | None:

@@ -10,7 +10,6 @@ by a scan of the text; a message names the line where the scan finds it.
 from __future__ import annotations
 
 import re
-import tomllib
 from collections.abc import Mapping
 from pathlib import Path
 
@@ -79,6 +78,8 @@ def _quoted(key: str) -> str:
 
 def _unquoted(part: str) -> str:
     """A key as TOML reads it: a quoted key's escapes are TOML's own, so TOML reads them."""
+    import tomllib  # noqa: PLC0415 - imported when a settings file is read: most checks find none
+
     return str(tomllib.loads(f"key = {part}")["key"]) if part[:1] in "\"'" else part
 
 
@@ -130,6 +131,8 @@ def read_settings(path: Path) -> Table | None:
 
 
 def _parse(path: Path) -> Table | None:
+    import tomllib  # noqa: PLC0415 - imported when a settings file is read: most checks find none
+
     try:
         text = path.read_bytes().decode("utf-8")
         document = tomllib.loads(text)

@@ -12,11 +12,11 @@ texts and spans from the line itself.
 from __future__ import annotations
 
 import hashlib
+import io
 import pickle
 from collections.abc import Iterator
 from functools import cache
-from importlib import resources
-from importlib.resources.abc import Traversable
+from typing import BinaryIO
 
 import lark
 from lark import Lark, Token, Tree
@@ -25,6 +25,7 @@ from lark.exceptions import UnexpectedInput, UnexpectedToken
 from lark.lexer import Lexer
 
 from mintlang.dialect import Dialect
+from mintlang.package_data import read_bytes, read_text
 from mintlang.records import record
 from mintlang.syntax.build import LineBuilder, compile_line
 from mintlang.syntax.lexer import MAX_TOKENS
@@ -63,7 +64,7 @@ def grammar_of(dialect: Dialect) -> Dialect:
 
 
 def grammar_text(dialect: Dialect) -> str:
-    grammar = resources.files("mintlang.syntax").joinpath("grammar.lark").read_text(encoding="utf-8")
+    grammar = read_text("mintlang.syntax", "grammar.lark")
     assert _V4_LOGIC in grammar, "grammar.lark must state the v4 precedence of AND and OR as _V4_LOGIC"
     return grammar.replace(_V4_LOGIC, _V3_LOGIC) if grammar_of(dialect) is Dialect.V3 else grammar
 
@@ -75,9 +76,11 @@ def build_parser(dialect: Dialect) -> Lark:
     return Lark(grammar_text(dialect), parser="lalr", lexer=_PresetTokens, strict=True, propagate_positions=True)
 
 
-def tables_file(dialect: Dialect) -> Traversable:
-    """Where the package ships the parser of ``dialect`` with its tables computed (``tools/lalr_tables.py``)."""
-    return resources.files("mintlang.syntax").joinpath(f"lalr_{grammar_of(dialect).value}.bin")
+def shipped_tables(dialect: Dialect) -> tuple[str, BinaryIO]:
+    """The parser of ``dialect`` the package ships with its tables computed (``tools/lalr_tables.py``):
+    the fingerprint of what it was made from, and lark's serialization of it."""
+    made_from, _, tables = read_bytes("mintlang.syntax", f"lalr_{grammar_of(dialect).value}.bin").partition(b"\n")
+    return made_from.decode("ascii"), io.BytesIO(tables)
 
 
 def fingerprint(dialect: Dialect) -> str:
@@ -91,9 +94,9 @@ def _parser(dialect: Dialect) -> Lark:
     """The shipped parser when it was made from this grammar by this lark (loading it takes a few ms,
     which every ``mint check`` pays at start-up), else one built now."""
     try:
-        with tables_file(dialect).open("rb") as stream:
-            if stream.readline().decode("ascii").strip() == fingerprint(dialect):
-                return Lark.load(stream)
+        made_from, tables = shipped_tables(dialect)
+        if made_from == fingerprint(dialect):
+            return Lark.load(tables)
     except (OSError, ValueError, EOFError, pickle.UnpicklingError):
         pass  # missing or unreadable: build it
     return build_parser(dialect)

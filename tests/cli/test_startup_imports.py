@@ -119,6 +119,17 @@ def test_a_text_report_into_a_pipe_loads_no_rich_unless_colour_is_forced(tmp_pat
     assert "rich" in heavy
 
 
+# What a check of a file with no settings file, and nothing misspelt, does not use: importlib.resources (the
+# package's data is read through its loader), the TOML reader (a settings file), difflib (--diff, "did you mean").
+NOT_FOR_A_PLAIN_CHECK = ("importlib.resources", "tomllib", "difflib")
+
+
+def test_a_plain_check_loads_no_resource_reader_toml_nor_diff(tmp_path: Path) -> None:
+    output, imported = run_into_a_pipe(tmp_path, "mintlang.cli", "SPEED = 10\n", "check")
+    assert "0 errors" in output
+    assert loaded(NOT_FOR_A_PLAIN_CHECK, imported) == []
+
+
 def run_into_a_pipe(tmp_path: Path, module: str, program: str, *options: str) -> tuple[str, list[str]]:
     """``run_listing`` of the tool on a file holding ``program``, with no colour forced on the pipe."""
     path = tmp_path / "program.mnt"

@@ -7,10 +7,11 @@ the old one moves to the young one, and when the young one is full it becomes
 the old one, dropping whatever no check has asked for since the last turn.
 
 Key policy: a per-line cache is keyed by what the line was parsed from
-(``PlacedLine.content``: its text, dialect, controller and the macros it names),
-and what belongs to one place in a file by that place (line number, statement
-index). Never by a syntax object, its ``id()`` or its value: every line of the
-same text shares one, so such a key merges lines that only look alike.
+(``PlacedLine.content``: the parser's one record for its text, dialect, controller
+and the macros it names, compared by identity), and what belongs to one place in a
+file by that place (line number, statement index). Never by a syntax object, its
+``id()`` or its value: every line of the same text shares one, so such a key merges
+lines that only look alike.
 
 A batch job that reads many versions of one text (a migration re-reads the program after each
 editing pass) keeps them from piling up with ``apart`` and ``keeping_what_it_uses``.

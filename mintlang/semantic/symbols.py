@@ -141,10 +141,11 @@ class _Collector:
     def declare(self, name: n.Name, origin: int, unit: Unit, size: n.Expression | None, *, array: bool = False) -> None:
         """A DIM, or in v3 the first write, in the line at ``origin``; ``array`` for an implicit v3 array (name(i))."""
         kind = SymbolKind.ARRAY if size is not None or array else SymbolKind.VARIABLE
-        symbol = self.variables.get(name.identity)
+        identity = name.identity  # one string for the table's key and the symbol's
+        symbol = self.variables.get(identity)
         declared = symbol is not None and bool(symbol.definitions)
         if symbol is None:
-            symbol = self.variables[name.identity] = Symbol(kind, name.identity, unit)
+            symbol = self.variables[identity] = Symbol(kind, identity, unit)
         if kind is SymbolKind.ARRAY:
             symbol.kind = SymbolKind.ARRAY
         if isinstance(size, n.Number) and size.value == int(size.value):

@@ -25,6 +25,8 @@ from mintlang.syntax.vocabulary import Vocabulary
 
 Child = Tree | Token
 T = TypeVar("T")
+K = TypeVar("K")
+V = TypeVar("V")
 Make = Callable[[LogicalLine, Vocabulary], T]
 LineResult = tuple[n.Name | None, tuple[n.Statement, ...]]
 LineBuilder = Callable[[LogicalLine, Vocabulary], LineResult]
@@ -452,7 +454,14 @@ def _selector(tree: Tree, keyword: Child) -> Make[n.Selector]:
         items, dot = _axis_items(items_tree), False
     else:
         items, dot = _sequence([_dot_value(child) for child in _trees(tree) if child.data == "dot_value"]), True
-    return lambda line, words: n.Selector(span(line, words), dot, items(line, words))
+
+    def make(line: LogicalLine, words: Vocabulary) -> n.Selector:
+        at, found = span(line, words), items(line, words)
+        if any(type(item) is not n.Number for item in found):  # an expression: ``.(a+1)``
+            return n.Selector(at, dot, found)
+        return _shared(_selectors, (at, dot, *map(id, found)), lambda: n.Selector(at, dot, found))
+
+    return make
 
 
 def _axis_items(tree: Tree) -> Make[tuple[n.Expression | None, ...]]:
@@ -500,14 +509,39 @@ def _expression(tree: Child) -> Make[n.Expression]:
     return _EXPRESSIONS[tree.data](tree)  # type: ignore[index]
 
 
+# One node for every equal number, selector and keyword at the same place of a line: programs
+# write a few constants (0, 1, 100) and keywords (IDLE.0, POS.1) in the same columns line after
+# line, and a node of each took a tenth of a check's memory. Like a whole line's syntax
+# (``parser``), such a node names no place. A key names the shared nodes inside by ``id()``:
+# the node it maps to holds them, so no other object can have their ids while the key is in its
+# table. Each table is emptied when full, so it stays small whatever the input.
+_numbers: dict[tuple[int, int, str], n.Number] = {}
+_selectors: dict[tuple[object, ...], n.Selector] = {}
+_keywords: dict[tuple[object, ...], n.KeywordRef] = {}
+_SHARED_KEPT = 100_000
+
+
+def _shared(table: dict[K, V], key: K, make: Callable[[], V]) -> V:
+    """The node ``table`` holds for ``key``, made by ``make`` the first time."""
+    found = table.get(key)
+    if found is None:
+        if len(table) >= _SHARED_KEPT:
+            table.clear()
+        found = table[key] = make()
+    return found
+
+
+def _number(start: int, end: int, text: str) -> n.Number:
+    return _shared(_numbers, (start, end, text), lambda: n.Number(_span(start, end), text, number_value(text)))
+
+
 def _leaf(token: Child) -> Make[n.Expression]:
     kind = token.type  # type: ignore[union-attr]
     index = _index(token)
     if kind == "NUMBER":
 
         def number(line: LogicalLine, _: Vocabulary) -> n.Expression:
-            text = line.texts[index]
-            return n.Number(_span(line.starts[index], line.ends[index]), text, number_value(text))
+            return _number(line.starts[index], line.ends[index], line.texts[index])
 
         return number
     if kind == "CONSTANT":
@@ -611,7 +645,15 @@ def _keyword_ref(token: Child, selector_tree: Tree | None) -> Make[n.KeywordRef]
         start = line.starts[index]
         spelling_span = _span(start, line.ends[index])
         span = _span(start, line.ends[last])
-        return n.KeywordRef(span, name, spelling, spelling_span, selector(line, words), channel)
+        selected = selector(line, words)
+        if selected is None:
+            key: tuple[object, ...] = (span, name, spelling, channel)  # the spelling's span starts the keyword's
+        elif any(type(item) is not n.Number for item in selected.items):
+            return n.KeywordRef(span, name, spelling, spelling_span, selected, channel)
+        else:
+            addressed = (selected.span, selected.dot, selected.indices, *map(id, selected.items))
+            key = (span, name, spelling, channel, *addressed)
+        return _shared(_keywords, key, lambda: n.KeywordRef(span, name, spelling, spelling_span, selected, channel))
 
     return make
 

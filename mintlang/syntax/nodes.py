@@ -412,7 +412,7 @@ class PlacedLine(NamedTuple):
     origin: int
     number: int  # 1-based physical line it starts on
     syntax: LineSyntax
-    content: Hashable  # what the syntax was parsed from (text, dialect, controller, macros named): a cache key
+    content: Hashable  # the one parse of its text, dialect, controller and macros named (by identity): a cache key
 
     def span(self, relative: Span) -> Span:
         """Where ``relative``, a span of this line's syntax, is in the file."""

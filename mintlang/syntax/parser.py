@@ -6,7 +6,7 @@ context, and every line of the same text shares the one syntax object: never
 use a syntax object (its ``id()``, or its value) to name a line or a statement.
 A statement is named by its place (file, line number, index among the line's
 statements: ``mintlang.semantic.blocks.Place``); what is cached per line is
-keyed by ``PlacedLine.content``, the text it was parsed from; inside a failing line, the statements between
+keyed by ``PlacedLine.content``, the one parse of its text in its context; inside a failing line, the statements between
 ``:`` separators are retried one by one so that only the broken statement is
 lost. Parse errors get the controller's error numbers where the manual gives
 one: 2003 syntax error, 2004 brackets, 2006 keyword used as a variable, 2007
@@ -113,28 +113,45 @@ class Document:
 
 
 _MacroBody = tuple[tuple[TokenKind, str], ...]
-_ParseKey = tuple[Dialect, Controller | None, str, tuple[_MacroBody | None, ...]]
+# A line's key in the parse cache of its dialect and controller: its text, with the bodies of the
+# macros it names when any are defined. The text alone in the common case: a tuple per line took
+# a twentieth of a check's memory.
+_ParseKey = str | tuple[str, tuple[_MacroBody | None, ...]]
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, eq=False)
 class _ParsedLine:
-    """What parsing one logical line gives, at offsets relative to its first physical line."""
+    """What parsing one logical line gives, at offsets relative to its first physical line.
+
+    It is also the line's ``PlacedLine.content``, the key of every per-line cache after the
+    parser's: compared by identity, it stands for its text in its context (dialect, controller,
+    macros named), for there is one per key in the parse cache. A line parsed again after its
+    entry was dropped gets a new one, which the later caches take for a line not seen yet.
+    """
 
     syntax: n.LineSyntax
-    content: _ParseKey  # what it was parsed from: every line of the same content shares this one key
     diagnostics: tuple[Diagnostic, ...]
     definitions: tuple[MacroDefinition, ...]
     expansions: tuple[Expansion, ...]
 
 
-_parsed: RecentCache[_ParseKey, _ParsedLine] = RecentCache(LINES_KEPT)
+_parsed: dict[tuple[Dialect, Controller | None], RecentCache[_ParseKey, _ParsedLine]] = {}
+
+
+def _parsed_in(dialect: Dialect, controller: Controller | None) -> RecentCache[_ParseKey, _ParsedLine]:
+    """The parsed lines of one dialect and controller, by ``_ParseKey``."""
+    cache = _parsed.get((dialect, controller))
+    if cache is None:
+        cache = _parsed[dialect, controller] = RecentCache(LINES_KEPT)
+    return cache
 
 
 def clear_caches() -> None:
     """Forget lexed and parsed lines (benchmarks measure cold runs with this)."""
     clear_lex_cache()
     clear_parse_cache()
-    _parsed.clear()
+    for cache in _parsed.values():
+        cache.clear()
 
 
 @dataclass(frozen=True, slots=True)
@@ -178,14 +195,17 @@ class PlacedLines:
     def parse(self, groups: Iterable[LineGroup], context: ParseContext) -> None:
         """Parse ``groups`` in order, each logical line once per text and macro context."""
         dialect, target, visible = context.dialect, context.controller, self.visible
-        words = vocabulary(dialect, target)
+        words, cache = vocabulary(dialect, target), _parsed_in(dialect, target)
         for group in groups:
-            macros = tuple(_body(visible.get(identity(name))) for name in group.names()) if visible else ()
-            key = (dialect, target, group.text, macros)
-            parsed = _parsed.get(key)
+            key: _ParseKey = group.text
+            if visible:
+                bodies = tuple(_body(visible.get(identity(name))) for name in group.names())
+                if any(body is not None for body in bodies):  # else it parses as if no macro were defined
+                    key = (key, bodies)
+            parsed = cache.get(key)
             if parsed is None:
-                parsed = _parse_group(group, key, visible, words, dialect)
-                _parsed.put(key, parsed)
+                parsed = _parse_group(group, target, visible, words, dialect)
+                cache.put(key, parsed)
             origin = group.origin
             if parsed.definitions:
                 defined = [definition.shifted(origin) for definition in parsed.definitions]
@@ -199,7 +219,7 @@ class PlacedLines:
             self.origins.append(origin)
             self.numbers.append(group.number)
             self.syntaxes.append(parsed.syntax)
-            self.contents.append(parsed.content)
+            self.contents.append(parsed)
 
 
 @without_collector
@@ -243,7 +263,11 @@ def _body(macro: MacroDefinition | None) -> _MacroBody | None:
 
 
 def _parse_group(
-    group: LineGroup, content: _ParseKey, visible: Mapping[str, MacroDefinition], words: Vocabulary, dialect: Dialect
+    group: LineGroup,
+    controller: Controller | None,
+    visible: Mapping[str, MacroDefinition],
+    words: Vocabulary,
+    dialect: Dialect,
 ) -> _ParsedLine:
     line = group.tokens()
     defined = take_macro_body(line)
@@ -253,12 +277,11 @@ def _parse_group(
     diagnostics: list[Diagnostic] = []
     result = parse_kinds(tuple(line.kinds), dialect)
     if isinstance(result, ParseFailure):
-        _, controller, _, _ = content
         label, statements = _recover(line, words, dialect, result, diagnostics, controller)
     else:
         label, statements = result(line, words)
     syntax = n.LineSyntax(group.text, line.span, label, statements)
-    return _ParsedLine(syntax, content, tuple(diagnostics), tuple(defined), tuple(expansions))
+    return _ParsedLine(syntax, tuple(diagnostics), tuple(defined), tuple(expansions))
 
 
 def _recover(  # noqa: PLR0917 - the line, its reading, and where the findings go

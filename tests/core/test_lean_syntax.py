@@ -1,7 +1,7 @@
 """What a check keeps per line is shared where it can be, and reads as it did.
 
 Issue 17, item 10: memory within 50 times the input. Equal spans, equal token
-shapes and equal line keys are one object each; the physical lines are kept as
+shapes, equal line keys and equal numbers at the same place are one object each; the physical lines are kept as
 an array of offsets beside the lexed lines, and still read as ``(offset, line)``.
 """
 
@@ -50,6 +50,30 @@ def test_repeated_lines_share_one_key_for_what_they_were_parsed_from() -> None:
     lines = mintlang.parse("GO\nPAUSE IDLE.0\nGO\n").placed
     assert lines[0].content is lines[2].content
     assert lines[0].number != lines[2].number
+
+
+def test_a_line_read_in_another_dialect_or_for_another_controller_has_a_key_of_its_own() -> None:
+    keys = [
+        mintlang.parse("GO\n", dialect, controller=controller).placed[0].content
+        for dialect in ("v4", "mintmt")
+        for controller in ("nextmove-pci", "mintdrive")
+    ]
+    assert len({id(key) for key in keys}) == 4
+
+
+def test_a_line_that_names_no_macro_shares_its_key_with_the_same_line_where_none_is_defined() -> None:
+    with_macros = mintlang.parse("DEFINE fast = 100\nDIM a\nPRINT a\n").placed
+    without = mintlang.parse("DIM a\nPRINT a\n").placed
+    assert with_macros[1].content is without[0].content
+    assert with_macros[2].content is without[1].content
+
+
+def test_equal_numbers_at_the_same_place_of_two_lines_are_one_node() -> None:
+    first, second, third = mintlang.parse("a = 10\nb = 10\nc = 12\n").placed
+    ten = first.syntax.statements[0].value
+    assert ten is second.syntax.statements[0].value
+    assert (ten.text, ten.value) == ("10", 10.0)
+    assert third.syntax.statements[0].value.value == 12.0
 
 
 def test_physical_lines_read_as_offset_and_line_pairs() -> None:

@@ -16,7 +16,8 @@ one untimed round writes it first.
 ``--phases`` also says where the time of a one-line check goes: a fresh process takes
 the steps of ``mint check`` one after the other (the modules of each step, then its
 work) and times each; the last row is what the process spends beyond them (exiting,
-mostly), so that the rows add up to about the ``mint check`` row.
+mostly), so that the rows add up to about the ``mint check`` row. The text report into
+a pipe needs no rich, so the steps leave it out too.
 """
 
 from __future__ import annotations
@@ -67,7 +68,6 @@ import mintlang.keyworddb; mintlang.keyworddb.database(); step("the keyword data
 mintlang.parse("SPEED = 10"); step("first parse: LALR tables loaded, the line lexed and parsed")
 import mintlang.analysis.analyser; step("the checker's modules (semantic model, rules)")
 mintlang.check("SPEED = 10"); step("the check of the line")
-import rich.console; step("rich (the text report)")
 from mintlang.allocation import no_collection_at_exit  # as the tools do
 no_collection_at_exit()
 previous = 0.0

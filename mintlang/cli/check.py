@@ -35,7 +35,14 @@ from mintlang.cli.options import (
 from mintlang.cli.parallel import all_cores, map_in_order
 from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, as_statistics, render_text
 from mintlang.cli.settings import describe, overrides, settings_failed
-from mintlang.cli.terminal import colour_console, console, destination, refuse_overwriting
+from mintlang.cli.terminal import (
+    colour_console,
+    console,
+    destination,
+    reader_may_leave,
+    refuse_overwriting,
+    write_in_pieces,
+)
 from mintlang.codes import selector
 from mintlang.diagnostics import Severity
 from mintlang.dialect import Dialect
@@ -61,7 +68,8 @@ Exit status:
      with --diff: a fix to make)
   2  a usage problem, or a file that could not be checked or fixed
      (the others are checked and reported all the same)
-  130  interrupted (Ctrl-C)"""
+  130  interrupted (Ctrl-C)
+  141  the reader of standard output went away (| head)"""
 
 
 def _codes(values: tuple[str, ...] | None, option: str) -> tuple[str, ...] | None:
@@ -122,6 +130,7 @@ def _fail(message: str) -> NoReturn:
 )
 @color_option()
 @fix_options()
+@reader_may_leave()
 def check(
     paths: tuple[Path, ...],
     dialect: str,
@@ -286,4 +295,4 @@ def _write(
         render_text(reports, stream, colour_console(color, stream), summary=not quiet)
         return
     if text:
-        stream.write(f"{text}\n")
+        write_in_pieces(stream, f"{text}\n")

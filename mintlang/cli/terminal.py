@@ -8,6 +8,7 @@ when a console is made, so ``--version`` and ``--help`` never pay for it.
 
 from __future__ import annotations
 
+import io
 import os
 import sys
 from collections.abc import Callable, Iterable, Iterator
@@ -106,6 +107,15 @@ def discard_standard_output() -> None:
     """Send what a tool still writes to standard output (buffered text, a report) nowhere: its reader went away,
     and Python's own flush at exit would otherwise fail once more, with a message of its own."""
     os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+
+
+def write_in_pieces(stream: IO[str], text: str) -> None:
+    """Write ``text`` a buffer's worth at a time, so that a reader that goes away is noticed: one large write
+    to a pipe whose reader leaves half way returns short, and Python's buffered writer drops the rest without
+    an error, where the next write of a piece raises ``BrokenPipeError`` for ``reader_may_leave``."""
+    size = io.DEFAULT_BUFFER_SIZE
+    for start in range(0, len(text), size):
+        stream.write(text[start : start + size])
 
 
 @contextmanager

@@ -23,6 +23,7 @@ def as_json(result: RunResult) -> dict[str, Any]:
         "relay": result.relay,
         "axes": {str(number): asdict(state) for number, state in enumerate(result.axes)},
         "inert_settings": list(result.inert_settings),
+        "read_leniently": list(result.read_leniently),
         "host_replies": [{"time_ms": time_ms, "bytes": data.hex(" ")} for time_ms, data in result.host_replies],
         "expectations": [
             {

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
+from dataclasses import replace
 from functools import partial
 
 import mintlang
@@ -49,6 +50,7 @@ class RunResult:
     inert_settings: tuple[str, ...] = ()  # settings the program wrote that the simulation does not model
     terminal_dropped: int = 0  # characters printed before those ``terminal`` keeps
     refused: bool = False  # the controller's compiler rejected a file: the program never ran (``stop`` says why)
+    read_leniently: tuple[str, ...] = ()  # what the controller would refuse, run as mint check's safe fix writes it
 
 
 @record
@@ -159,7 +161,27 @@ def run_source(
         runs_first = config if refused.unit is Unit.PROGRAM else None
         model = mintlang.check_application("", dialect=dialect, controller=base, config=runs_first).model
     hooks = _Hooks(echo, on_tick, on_start, on_simulator)
-    return _simulate(model, simulated, scenario, limits or Limits(), refused, hooks=hooks)
+    result = _simulate(model, simulated, scenario, limits or Limits(), refused, hooks=hooks)
+    lenient = _read_leniently(analysis)
+    return replace(result, read_leniently=lenient) if lenient else result
+
+
+def _read_leniently(analysis: mintlang.Analysis) -> tuple[str, ...]:
+    """The lines whose typographic quotes (W101) were read as plain ones, one note each, in compile order.
+
+    The controller knows only plain quotes, but text copied from the guide (or a word processor) carries
+    curly ones where plain ones were meant; the simulator runs the program as ``mint check --fix`` would
+    write it, and says so, so that neither tool passes such a program in silence (BEHAVIOUR.md)."""
+    notes: list[str] = []
+    for unit, document in analysis.model.documents():
+        diagnostics = analysis.configuration if unit is Unit.CONFIGURATION else analysis.program
+        lines = sorted({document.line_index.position(d.span.start).line for d in diagnostics if d.code == "W101"})
+        notes.extend(
+            f"{unit.value} line {line}: typographic quotes read as plain ones; the controller accepts only plain"
+            " quotes (mint check --fix writes them)"
+            for line in lines
+        )
+    return tuple(notes)
 
 
 def _simulate(

@@ -163,6 +163,9 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
             result = _simulate(simulate, termination)
             wall_s = time.perf_counter() - started
         stdout.flush()
+        if not quiet:
+            for note in result.read_leniently:
+                errors.line(f"warning: {note}", "yellow")
         if not (quiet and result.stop.reason in (StopReason.END, StopReason.UNTIL)):
             _describe_stop(result, errors)
         if verbose:

@@ -56,6 +56,8 @@ class ControllerProfile:
     user_memory: int  # bytes for the compiled code and the arrays (9.1)
     configuration_buffer: int  # bytes for the configuration file's source (9.1)
     max_line_length: int = 255
+    # #FASTINx answers digital input x (NextMove PCI, MintDrive, ServoNode 51), not an input of its own (000:5868-5888)
+    fast_inputs_are_digital_inputs: bool = False
 
     @property
     def axis_count(self) -> int:
@@ -80,6 +82,7 @@ PROFILES: dict[Controller, ControllerProfile] = {
         encoders=ChannelRange(0, 11),
         auxiliary_encoders=ChannelRange(0, 2),
         fast_inputs=frozenset({0, 1, 2, 3}),
+        fast_inputs_are_digital_inputs=True,
         max_variables=255,
         max_labels=255,
         max_macros=255,
@@ -139,6 +142,7 @@ PROFILES: dict[Controller, ControllerProfile] = {
         encoders=ChannelRange(0, 0),
         auxiliary_encoders=ChannelRange(0, 0),
         fast_inputs=frozenset({0, 2}),
+        fast_inputs_are_digital_inputs=True,
         max_variables=255,
         max_labels=255,
         max_macros=255,
@@ -158,6 +162,7 @@ PROFILES: dict[Controller, ControllerProfile] = {
         encoders=ChannelRange(0, 0),
         auxiliary_encoders=ChannelRange(0, 0),
         fast_inputs=frozenset({0, 2}),
+        fast_inputs_are_digital_inputs=True,
         max_variables=255,
         max_labels=255,
         max_macros=255,

@@ -174,7 +174,8 @@ def build_controller(
     events.errors_latched = lambda: any(axis.axiserror for axis in axes)
 
     events.on_fastin_return = lambda number: setattr(system, "fast_armed", True)
-    world = World(scenario, io=io, axes=axes, terminal=terminal, host=endpoint.receive)
+    wired = profile.fast_inputs if profile.fast_inputs_are_digital_inputs else frozenset()
+    world = World(scenario, io=io, axes=axes, terminal=terminal, host=endpoint.receive, fast_digital_inputs=wired)
     io.next_input_change = lambda: world.next_change(clock.now)
     server = _host_port(host_port) if host_port is not None else None
     return Controller(

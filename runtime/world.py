@@ -29,8 +29,10 @@ class World:
         axes: Sequence[Axis],
         terminal: Terminal,
         host: Callable[[bytes], bytes],
+        fast_digital_inputs: frozenset[int] = frozenset(),
     ) -> None:
         self.io = io
+        self.fast_digital_inputs = fast_digital_inputs  # digital inputs whose rising edge fires their fast input
         self.axes = axes
         self.terminal = terminal
         self.host = host
@@ -80,7 +82,11 @@ class World:
         return max(upcoming, now + 1)
 
     def _level(self, channel: int, level: int) -> Callable[[], None]:
+        fires = channel in self.fast_digital_inputs
+
         def apply() -> None:
+            if fires and level and not self.levels >> channel & 1:
+                self.fast_inputs_due.append(channel)
             self.levels = self.levels | 1 << channel if level else self.levels & ~(1 << channel)
 
         return apply

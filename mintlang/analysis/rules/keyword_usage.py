@@ -100,6 +100,8 @@ def _verdict(
     if use is Use.COMMAND and not attributes.command:
         if not has_arguments:
             return 2005, f"{name} must be read or given a value here (for example '{name} = …')"
+        if keyword.name == "WAIT":  # WAIT IDLE.0, as other languages wait on a condition (000:17314-17324)
+            return 2003, f"{name} waits a time in milliseconds ('{name} = 100'): to wait on a condition, use PAUSE"
         return 2003, f"{name} takes a value with '=': '{name} = …'"
     if use is Use.COMMAND and has_arguments and not keyword.takes_operands:
         return 2003, f"{name} takes no operands, only its axes ('{keyword.formats[0]}')"

@@ -138,11 +138,14 @@ class Simulator:
             self.on_tick(t)
 
     def _deadlock(self, t: int) -> str:
-        """Why nothing can wake the program, with the likeliest cause: what it waits on when that is inputs or
-        variables (a PAUSE asleep), else moves waiting on masters nothing moves, or a full move buffer. A move
-        stalled on its master is named only when the program may be waiting on it: a PAUSE on an input waits
-        on the input, whatever a follower does."""
+        """Why nothing can wake the program, with the likeliest cause: what it waits on when that is keys (an
+        INPUT) or inputs and variables (a PAUSE asleep), else moves waiting on masters nothing moves, or a full
+        move buffer. A move stalled on its master is named only when the program may be waiting on it: a PAUSE
+        on an input waits on the input, whatever a follower does."""
         message = "blocked, and nothing scheduled or moving can ever wake the program"
+        site = self.c.vm.current_site()
+        if site is not None and site.kind == "Input":
+            return f"{message}: INPUT waits for keys that no scenario types (a [[key]] entry, or REM @sim key)"
         if self.c.vm.asleep:
             return (
                 f"{message}: it waits on inputs or variables that no scenario input, event or timer will change"

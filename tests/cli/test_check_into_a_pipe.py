@@ -15,24 +15,7 @@ from pathlib import Path
 
 import pytest
 
-_BROKEN_PIPE = 141
-
-
-def _first_bytes_then_hang_up(*arguments: str | Path) -> tuple[bytes, int, str]:
-    process = subprocess.Popen(
-        [sys.executable, "-m", "mintlang", "check", "-j", "1", *(str(argument) for argument in arguments)],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-    )
-    try:
-        assert process.stdout is not None and process.stderr is not None
-        first = process.stdout.read(1)
-        process.stdout.close()
-        stderr = process.stderr.read().decode()
-        process.wait(timeout=120)
-    finally:
-        process.kill()
-    return first, process.returncode, stderr
+from tests.reader_leaves import BROKEN_PIPE, first_line_then_hang_up
 
 
 @pytest.fixture(scope="module")
@@ -47,9 +30,10 @@ def warnings_only(tmp_path_factory: pytest.TempPathFactory) -> Path:
 def test_a_report_cut_short_by_its_reader_ends_with_the_broken_pipe_status(
     warnings_only: Path, output_format: str
 ) -> None:
-    first, status, stderr = _first_bytes_then_hang_up("--format", output_format, "--color", "never", warnings_only)
+    arguments = ("check", "-j", "1", "--format", output_format, "--color", "never", str(warnings_only))
+    first, status, stderr = first_line_then_hang_up(*arguments)
     assert first
-    assert status == _BROKEN_PIPE
+    assert status == BROKEN_PIPE
     assert "Traceback" not in stderr and "Exception ignored" not in stderr
 
 

@@ -12,17 +12,7 @@ views agree.
 from __future__ import annotations
 
 from tests.debugger.conftest import Debug
-
-HANDLED = """\
-DIM v
-DIM x
-x = POS.12
-PRINT "after"
-END
-#ONERROR
-  v = ERL
-RETURN
-"""
+from tests.debugger.test_stepping import HANDLED  # x = POS.12 on line 3; #ONERROR on lines 6-8
 
 
 def test_the_program_frame_under_onerror_stands_at_the_failing_statement(debug: Debug) -> None:
@@ -36,6 +26,6 @@ def test_a_step_back_after_the_handler_lands_on_the_failing_statement_the_frame_
     client = debug(HANDLED, breakpoints=(8,))
     client.stopped()
     client.step("stepOut")
-    assert (client.line(), client.values()["v"]) == (4, "3")  # RETURN goes on after line 3, ERL = 3
+    assert (client.line(), client.evaluate("ERL")) == (4, "3")  # RETURN goes on after line 3, ERL = 3
     client.step("stepBack")
     assert client.line() == 3

@@ -8,39 +8,18 @@ far larger than a pipe's buffer (64 KiB on Linux), so the reader is gone before 
 
 from __future__ import annotations
 
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
-_BROKEN_PIPE = 141
-
-
-def _first_line_then_hang_up(*arguments: str | Path) -> tuple[str, int, str]:
-    """``mint test`` in its own process, read as ``| head -1`` reads it: its first line, then the pipe closed."""
-    process = subprocess.Popen(
-        [sys.executable, "-m", "mintlang", "test", "-j", "1", *(str(argument) for argument in arguments)],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-    )
-    try:
-        assert process.stdout is not None and process.stderr is not None
-        first = process.stdout.readline()
-        process.stdout.close()
-        stderr = process.stderr.read()
-        process.wait(timeout=120)
-    finally:
-        process.kill()
-    return first, process.returncode, stderr
+from tests.reader_leaves import BROKEN_PIPE, first_line_then_hang_up
 
 
 @pytest.mark.parametrize("verbosity", ["-q", "-v"])
 def test_a_report_cut_short_by_its_reader_ends_with_the_broken_pipe_status(tmp_path: Path, verbosity: str) -> None:
     expectations = "".join(f"REM @expect a = {value}\n" for value in range(1, 5001))
     (tmp_path / "many.mnt").write_text(f"{expectations}DIM a\n", encoding="utf-8")
-    first, status, stderr = _first_line_then_hang_up("--color", "never", verbosity, tmp_path)
+    first, status, stderr = first_line_then_hang_up("test", "-j", "1", "--color", "never", verbosity, str(tmp_path))
     assert first == f"FAILED {tmp_path / 'many.mnt'}  5000 of 5000 expectations failed\n"
-    assert status == _BROKEN_PIPE
+    assert status == BROKEN_PIPE
     assert "Traceback" not in stderr and "Exception ignored" not in stderr

@@ -114,8 +114,16 @@ class LexedLine:
     starts: tuple[int, ...]
     ends: tuple[int, ...]
     comment_start: int  # where a REM comment starts, or -1
-    content_end: int  # where the line break starts
-    length: int  # including the line break
+
+    @property
+    def length(self) -> int:
+        """Its length, the line break included (not stored: a slot a line is a hundredth of a check's memory)."""
+        return len(self.text)
+
+    @property
+    def content_end(self) -> int:
+        """Where its line break starts: its length when it has none."""
+        return _content_end(self.text)
 
     @property
     def texts(self) -> tuple[str, ...]:
@@ -127,6 +135,7 @@ class LexedLine:
         """Every token of the line, trivia included, at ``offset`` in the source."""
         new = tuple.__new__  # builds the named tuple without its Python-level constructor
         text = self.text
+        content_end = _content_end(text)
         tokens: list[Token] = []
         position = 0
         for kind, start, end in zip(self.kinds, self.starts, self.ends, strict=True):
@@ -134,15 +143,13 @@ class LexedLine:
                 tokens.append(new(Token, (_WS, text[position:start], position + offset)))
             tokens.append(new(Token, (kind, text[start:end], start + offset)))
             position = end
-        end = self.comment_start if self.comment_start >= 0 else self.content_end
+        end = self.comment_start if self.comment_start >= 0 else content_end
         if end > position:
             tokens.append(new(Token, (_WS, text[position:end], position + offset)))
         if self.comment_start >= 0:
-            tokens.append(
-                new(Token, (_COMMENT, text[self.comment_start : self.content_end], self.comment_start + offset))
-            )
-        if self.content_end < self.length:
-            tokens.append(new(Token, (_NEWLINE, text[self.content_end :], self.content_end + offset)))
+            tokens.append(new(Token, (_COMMENT, text[self.comment_start : content_end], self.comment_start + offset)))
+        if content_end < len(text):
+            tokens.append(new(Token, (_NEWLINE, text[content_end:], content_end + offset)))
         return tokens
 
 
@@ -217,8 +224,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
     classify_unlisted = words.classify_unlisted
     match = _LEXEME.match
     position = 0
-    length = len(line)
-    content_end = length - (2 if line.endswith("\r\n") else 1 if line.endswith(("\n", "\r")) else 0)
+    content_end = _content_end(line)
     previous = _NEWLINE  # kind of the previous token, whitespace included
     dot_number = False  # the previous token is the number of a dot parameter: ".2" in REMOTEIN.2.65
     comment_start = -1
@@ -306,9 +312,12 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
         _shared(tuple(starts)),
         _shared(tuple(ends)),
         comment_start,
-        content_end,
-        length,
     )
+
+
+def _content_end(line: str) -> int:
+    """Where the line break of ``line`` starts."""
+    return len(line) - (2 if line.endswith("\r\n") else 1 if line.endswith(("\n", "\r")) else 0)
 
 
 def _syntax_issue(start: int, length: int, message: str) -> Diagnostic:
@@ -455,4 +464,4 @@ def lex_lines(  # noqa: PLR0917 - the text, where it starts, and the three lists
         lines.append(lexed)
         if lexed.issues:
             issues.extend(issue.shifted(offset) for issue in lexed.issues)
-        offset += lexed.length
+        offset += len(physical)

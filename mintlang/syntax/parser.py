@@ -119,9 +119,11 @@ _MacroBody = tuple[tuple[TokenKind, str], ...]
 _ParseKey = str | tuple[str, tuple[_MacroBody | None, ...]]
 
 
-@dataclass(frozen=True, slots=True, eq=False)
 class _ParsedLine:
-    """What parsing one logical line gives, at offsets relative to its first physical line.
+    """What parsing one logical line gives, at offsets relative to its first physical line: its
+    syntax, and (``_ParsedLineAndMore``) what parsing found, the macros it defines, and the
+    uses of macros it expanded. Most lines have none of those, and their slots took a fortieth
+    of a check's memory.
 
     It is also the line's ``PlacedLine.content``, the key of every per-line cache after the
     parser's: compared by identity, it stands for its text in its context (dialect, controller,
@@ -129,10 +131,27 @@ class _ParsedLine:
     entry was dropped gets a new one, which the later caches take for a line not seen yet.
     """
 
-    syntax: n.LineSyntax
-    diagnostics: tuple[Diagnostic, ...]
-    definitions: tuple[MacroDefinition, ...]
-    expansions: tuple[Expansion, ...]
+    __slots__ = ("syntax",)
+    diagnostics: tuple[Diagnostic, ...] = ()
+    definitions: tuple[MacroDefinition, ...] = ()
+    expansions: tuple[Expansion, ...] = ()
+
+    def __init__(self, syntax: n.LineSyntax) -> None:
+        self.syntax = syntax
+
+
+class _ParsedLineAndMore(_ParsedLine):
+    __slots__ = ("definitions", "diagnostics", "expansions")  # in place of the empty tuples of _ParsedLine
+
+    def __init__(
+        self,
+        syntax: n.LineSyntax,
+        diagnostics: tuple[Diagnostic, ...],
+        definitions: tuple[MacroDefinition, ...],
+        expansions: tuple[Expansion, ...],
+    ) -> None:
+        super().__init__(syntax)
+        self.diagnostics, self.definitions, self.expansions = diagnostics, definitions, expansions
 
 
 _parsed: dict[tuple[Dialect, Controller | None], RecentCache[_ParseKey, _ParsedLine]] = {}
@@ -281,7 +300,9 @@ def _parse_group(
     else:
         label, statements = result(line, words)
     syntax = n.LineSyntax(group.text, line.span, label, statements)
-    return _ParsedLine(syntax, tuple(diagnostics), tuple(defined), tuple(expansions))
+    if diagnostics or defined or expansions:
+        return _ParsedLineAndMore(syntax, tuple(diagnostics), tuple(defined), tuple(expansions))
+    return _ParsedLine(syntax)
 
 
 def _recover(  # noqa: PLR0917 - the line, its reading, and where the findings go

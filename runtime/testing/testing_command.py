@@ -15,7 +15,7 @@ import click
 
 from mintlang.cli.options import refuse_quiet_and_verbose
 from mintlang.cli.parallel import all_cores, map_in_order
-from mintlang.cli.terminal import console, destination, reader_may_leave, refuse_overwriting
+from mintlang.cli.terminal import console, destination, reader_may_leave, refuse_overwriting, write_in_pieces
 from mintlang.dialect import Dialect
 from mintlang.runtime.testing import reports
 from mintlang.runtime.testing.coverage import lcov as tracefile
@@ -61,7 +61,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         sys.exit(USAGE if unreadable else NO_TESTS)
     if collect_only:
         with destination(output_file, _fail) as stream:
-            stream.write(reports.collected(cases, as_json=output_format == "json"))
+            write_in_pieces(stream, reports.collected(cases, as_json=output_format == "json"))
         sys.exit(USAGE if unreadable else PASSED)
     enabled = drives == "enabled"
     inputs = [path for case in cases for path in (case.program, case.scenario) if path is not None]
@@ -79,9 +79,9 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     seconds = time.perf_counter() - began
     with destination(output_file, _fail) as stream:
         if output_format == "junit":
-            stream.write(reports.junit(results, seconds))
+            write_in_pieces(stream, reports.junit(results, seconds))
         elif output_format == "json":
-            stream.write(reports.as_json(results, seconds))
+            write_in_pieces(stream, reports.as_json(results, seconds))
         else:
             shown = console(color if output_file is None else "never", file=stream)
             reports.text(results, seconds, shown, quiet=quiet, verbose=verbose)

@@ -23,3 +23,13 @@ def test_a_report_cut_short_by_its_reader_ends_with_the_broken_pipe_status(tmp_p
     assert first == f"FAILED {tmp_path / 'many.mnt'}  5000 of 5000 expectations failed\n"
     assert status == BROKEN_PIPE
     assert "Traceback" not in stderr and "Exception ignored" not in stderr
+
+
+def test_a_json_report_cut_short_by_its_reader_ends_with_the_broken_pipe_status(tmp_path: Path) -> None:
+    # every test passes, so a report read to its end exits 0; one cut short must not look like that
+    for number in range(200):
+        (tmp_path / f"t{number}.mnt").write_text('REM @expect terminal contains "x"\nPRINT "x"\n', encoding="utf-8")
+    first, status, stderr = first_line_then_hang_up("test", "-j", "1", "--format", "json", str(tmp_path))
+    assert first == "{\n"
+    assert status == BROKEN_PIPE
+    assert "Traceback" not in stderr and "Exception ignored" not in stderr

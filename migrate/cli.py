@@ -49,7 +49,8 @@ Exit status:
      or written, a file that changed since it was read (not written), a
      rule that failed on a file (that file is left as it was; the others
      are migrated and written), or a --verify comparison that could not
-     cover the run (incomplete)"""
+     cover the run (incomplete)
+  141  the reader of standard output went away (| head)"""
 
 
 @click.command(

@@ -19,7 +19,7 @@ from rich.markup import escape
 
 from mintlang.cli.options import refuse_quiet_and_verbose
 from mintlang.cli.settings import typed
-from mintlang.cli.terminal import console, destination, refuse_overwriting
+from mintlang.cli.terminal import console, destination, reader_may_leave, refuse_overwriting, write_in_pieces
 from mintlang.diagnostics import split_lines
 from mintlang.migrate import leftovers, mintmt, verifying
 from mintlang.migrate.api import UnknownRule, rules, select
@@ -48,6 +48,7 @@ def _list_rules(console: Console) -> None:
         console.print(f"{'':<36} {cite(info.evidence)}", style="dim", highlight=False)
 
 
+@reader_may_leave()
 def execute(  # noqa: PLR0917 - click passes every option as an argument
     paths: tuple[Path, ...],
     write: bool,
@@ -184,7 +185,7 @@ def _output(items: list[Migrated], mode: str | None, output_format: str, control
                 if item.entry.result is not None and item.entry.result.changed:
                     click.echo(_diff(item, item.entry.result.text), file=stream)
         if output_format == "json":
-            click.echo(json.dumps(data, indent=2, ensure_ascii=False), file=stream)
+            write_in_pieces(stream, json.dumps(data, indent=2, ensure_ascii=False) + "\n")
         else:
             render_text(data, console(output.color, file=stream), quiet=output.quiet, verbose=output.verbose)
 

@@ -37,6 +37,7 @@ from mintlang.analysis.rules import (
     v3_access,
     v3_keywords,
     values,
+    zero_divisors,
 )
 from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.controllers import ControllerProfile
@@ -81,6 +82,8 @@ RULES: tuple[Rule, ...] = (
     Rule("functions", each_line=functions.each_line, dialects=frozenset({Dialect.V4})),  # MintMT's MOVER(0) is no call
     Rule("v3-access", each_line=v3_access.each_line, dialects=frozenset({Dialect.V3})),
     Rule("arrays", arrays.check, arrays.each_line),
+    # The v3 guide lists no error 2021, and mint-run does not simulate a v3 division by zero
+    Rule("zero-divisors", each_line=zero_divisors.each_line, dialects=frozenset({Dialect.V4, Dialect.MINTMT})),
     Rule("events", events.check, reads=control_meaning),
     Rule("v3-keywords", each_line=v3_keywords.each_line),
     Rule("flow", flow.check, reads=control_meaning),

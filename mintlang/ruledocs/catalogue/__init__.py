@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from mintlang.ruledocs.catalogue import addressing, flow, keywords, limits, names, suppression, syntax
+from mintlang.ruledocs.catalogue import addressing, arithmetic, flow, keywords, limits, names, suppression, syntax
 from mintlang.ruledocs.model import Group
 
 GROUPS: tuple[Group, ...] = (
@@ -11,6 +11,7 @@ GROUPS: tuple[Group, ...] = (
     addressing.GROUP,
     names.GROUP,
     flow.GROUP,
+    arithmetic.GROUP,
     limits.GROUP,
     suppression.GROUP,
 )

@@ -144,8 +144,11 @@ class Simulator:
         on an input waits on the input, whatever a follower does."""
         message = "blocked, and nothing scheduled or moving can ever wake the program"
         site = self.c.vm.current_site()
+        keys = "keys that no scenario types (a [[key]] entry, or REM @sim key)"
         if site is not None and site.kind == "Input":
-            return f"{message}: INPUT waits for keys that no scenario types (a [[key]] entry, or REM @sim key)"
+            return f"{message}: INPUT waits for {keys}"
+        if site is not None and site.kind == "Pause" and self.c.vm.awaits_keys:
+            return f"{message}: PAUSE reads INKEY, which waits for {keys}"
         if self.c.vm.asleep:
             return (
                 f"{message}: it waits on inputs or variables that no scenario input, event or timer will change"

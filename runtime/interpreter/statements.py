@@ -580,6 +580,7 @@ class StatementCompiler:
             raise MintError(NO_EXPRESSION, detail="PAUSE needs a condition")
         condition = self.expressions.compile(statement.condition)
         complete = self.expressions.complete_horizon(statement.condition)
+        keys = self.expressions.reads_keyword(statement.condition, "INKEY")
         vm = self.vm
         clock = vm.clock
 
@@ -589,6 +590,7 @@ class StatementCompiler:
                 return False
             vm.wake_at = clock.horizon
             vm.asleep = complete  # nothing it reads can change before wake_at: no need to try it again sooner
+            vm.awaits_keys = keys
             return True
 
         return pause

@@ -122,6 +122,7 @@ class Interpreter:
         self.progressed = False  # the last slice completed a statement: anything may have changed
         self.wake_at = NEVER  # while blocked: the earliest tick the blocking statement may pass
         self.asleep = False  # while blocked: nothing but an event can let it pass before wake_at
+        self.awaits_keys = False  # the last PAUSE to block reads INKEY: only a key can let it pass
         self.sleeps = True  # whether an asleep statement is left alone until wake_at (not when every tick is run)
         self.stopped: StopReason | None = None
         self.stop_site: Site | None = None

@@ -1,11 +1,14 @@
-"""An INPUT no keys will ever answer is a deadlock whose message says it waits for keys.
+"""An INPUT or a PAUSE on INKEY that no key will ever answer is a deadlock whose message says it waits for keys.
 
-INPUT reads a number typed at a terminal into a variable (000:12202-12216). In the
-simulation keys come only from a scenario, so an INPUT with none to come blocks for
-good (W-4); the message names the keys it waits for and where a scenario gives them.
+INPUT reads a number typed at a terminal into a variable (000:12202-12216); ``PAUSE INKEY``
+waits for any key press and ``PAUSE INKEY = 'y'`` for that key (000:1683-1689). In the
+simulation keys come only from a scenario, so a program waiting on keys with none to come
+blocks for good (W-4); the message names the keys it waits for and where a scenario gives them.
 """
 
 from __future__ import annotations
+
+import pytest
 
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.scenario import parse_directives
@@ -24,3 +27,24 @@ def test_an_input_a_scenario_answers_reads_the_number() -> None:
     scenario, _ = parse_directives('REM @sim key "21\\r" at 10\n', "keys")
     result = simulate(SOURCE, scenario=scenario)
     assert (result.stop.reason, result.terminal) == (StopReason.END, "qty? 21\n42\n")
+
+
+@pytest.mark.parametrize("condition", ["INKEY", "INKEY = 'Y'", "(INKEY.1 <> 0) AND a = 0"])
+def test_a_pause_on_inkey_no_scenario_answers_says_it_waits_for_keys(condition: str) -> None:
+    result = simulate(f"DIM a\nPRINT 1\nPAUSE {condition}\nPRINT 2\n")
+    assert (result.stop.reason, result.stop.line) == (StopReason.DEADLOCK, 3)
+    assert "PAUSE reads INKEY, which waits for keys that no scenario types" in result.stop.message
+
+
+def test_a_pause_on_a_variable_alone_does_not_blame_keys_after_a_pause_on_inkey() -> None:
+    result = simulate(
+        "DIM a\nPAUSE INKEY\nPAUSE a = 1\n", scenario=parse_directives('REM @sim key "y" at 5\n', "keys")[0]
+    )
+    assert (result.stop.reason, result.stop.line) == (StopReason.DEADLOCK, 3)
+    assert "INKEY" not in result.stop.message
+
+
+def test_a_pause_on_inkey_passes_on_the_key_a_scenario_types() -> None:
+    scenario, _ = parse_directives('REM @sim key "y" at 10\n', "keys")
+    result = simulate("PAUSE INKEY = 'Y'\nPRINT 2\n", scenario=scenario)
+    assert (result.stop.reason, result.terminal) == (StopReason.END, "2\n")

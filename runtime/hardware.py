@@ -20,6 +20,15 @@ from mintlang.runtime.dialects.v3.controllers import DEFAULT as V3_DEFAULT
 from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_PROFILES
 
 _MAIN_CARD = {Controller.NEXTMOVE_PCI: {"digital_inputs": ChannelRange(0, 19), "digital_outputs": ChannelRange(0, 11)}}
+_EXPANSION_CARDS = {
+    Controller.NEXTMOVE_PCI: {"digital_inputs": ChannelRange(20, 59), "digital_outputs": ChannelRange(12, 35)}
+}
+
+
+def on_expansion_cards(controller: Controller, kind: str) -> ChannelRange | None:
+    """The channels of ``kind`` (``digital_inputs``, ``digital_outputs``) that only expansion cards have: the
+    checker accepts them, the simulation fits no card, so a program reading one is told why it fails."""
+    return _EXPANSION_CARDS.get(controller, {}).get(kind)
 
 
 def simulated(controller: Controller | str) -> ControllerProfile:

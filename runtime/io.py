@@ -15,6 +15,7 @@ from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.events import EventClass, Events
+from mintlang.runtime.hardware import on_expansion_cards
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.ranges import ranged
 
@@ -25,9 +26,12 @@ OUT_OF_RANGE = 3
 RELAY0 = 1000  # _RELAY0, the relay as a drive enable output (000:9356-9368)
 
 
-def _check(channel: int, channels: ChannelRange, code: int) -> int:
+def _check(channel: int, channels: ChannelRange, code: int, carded: ChannelRange | None = None) -> int:
+    """``channel``, or the controller's error when it is not one of ``channels``; ``carded`` are those only
+    expansion cards have, which the simulation does not fit."""
     if channel not in channels:
-        raise MintError(code, channel, f"channels are {channels}")
+        beyond = "" if carded is None or channel not in carded else f"; {carded} are on expansion cards, not simulated"
+        raise MintError(code, channel, f"channels are {channels}{beyond}")
     return channel
 
 
@@ -35,6 +39,8 @@ class DigitalIO:
     def __init__(self, profile: ControllerProfile, clock: Clock, events: Events) -> None:
         self.inputs = profile.digital_inputs
         self.outputs = profile.digital_outputs
+        self.carded_inputs = on_expansion_cards(profile.controller, "digital_inputs")
+        self.carded_outputs = on_expansion_cards(profile.controller, "digital_outputs")
         self.adc_channels = profile.adc
         self.clock = clock
         self.events = events
@@ -122,7 +128,7 @@ class DigitalIO:
             value = self.peek(None)
             self.latched = 0
             return value
-        value = self.peek(_check(channel, self.inputs, INVALID_INPUT))
+        value = self.peek(_check(channel, self.inputs, INVALID_INPUT, self.carded_inputs))
         self.latched &= ~(1 << channel)
         return value
 
@@ -135,12 +141,16 @@ class DigitalIO:
         self._watch()
         if channel is None:
             return float(self.active)
-        return float(self.active >> _check(channel, self.inputs, INVALID_INPUT) & 1)
+        return float(self.active >> _check(channel, self.inputs, INVALID_INPUT, self.carded_inputs) & 1)
 
     def _bank_reader(self, attribute: str) -> Callable[[int | None], float]:
         def read(channel: int | None) -> float:
             value = getattr(self, attribute)
-            return float(value if channel is None else value >> _check(channel, self.inputs, INVALID_INPUT) & 1)
+            return float(
+                value
+                if channel is None
+                else value >> _check(channel, self.inputs, INVALID_INPUT, self.carded_inputs) & 1
+            )
 
         return read
 
@@ -155,7 +165,7 @@ class DigitalIO:
                     raise MintError(OUT_OF_RANGE, detail=f"one bit per input: 0 to {self.all_inputs}")
                 wanted = int(value)
             else:
-                bit = 1 << _check(channel, self.inputs, INVALID_INPUT)
+                bit = 1 << _check(channel, self.inputs, INVALID_INPUT, self.carded_inputs)
                 wanted = current | bit if value else current & ~bit
             settable = self.edge_mode if edges_only else self.all_inputs
             setattr(self, attribute, (current & ~settable) | (wanted & settable))
@@ -175,7 +185,7 @@ class DigitalIO:
     def _read_out(self, channel: int | None) -> float:
         if channel is None:
             return float(self.out)
-        return float(self.out >> _check(channel, self.outputs, INVALID_OUTPUT) & 1)
+        return float(self.out >> _check(channel, self.outputs, INVALID_OUTPUT, self.carded_outputs) & 1)
 
     def _write_out(self, channel: int | None, value: float) -> None:
         if channel is None:
@@ -185,7 +195,7 @@ class DigitalIO:
             driven = self._driven_bits()  # a drive's output is not the program's to set (spec IO-3 RC)
             self.out = int(value) & ~driven | self.out & driven
             return
-        bit = 1 << _check(channel, self.outputs, INVALID_OUTPUT)
+        bit = 1 << _check(channel, self.outputs, INVALID_OUTPUT, self.carded_outputs)
         if bit & self._driven_bits():
             return
         self.out = self.out | bit if value else self.out & ~bit

@@ -112,17 +112,6 @@ class ExpressionCompiler:
             return False
         return all(self.complete_horizon(child) for child in _operands(expression))
 
-    def reads_keyword(self, expression: n.Expression, keyword: str) -> bool:
-        """Whether ``expression`` reads ``keyword`` anywhere in it (a channel or an argument included)."""
-        kind = type(expression)
-        if kind is n.Number or kind is n.CharConstant or kind is n.ConstantRef or kind is n.VariableRef:
-            return False
-        if kind is n.KeywordRef:
-            selector = expression.selector  # type: ignore[union-attr]
-            channels = [item for item in selector.items if item is not None] if selector is not None else []
-            return expression.keyword == keyword or any(self.reads_keyword(item, keyword) for item in channels)  # type: ignore[union-attr]
-        return any(self.reads_keyword(child, keyword) for child in _operands(expression))
-
     def scalar_slot(self, name: n.Name) -> int:
         """Where the scalar variable ``name`` is kept in ``vm.scalars``."""
         slot = self.names.scalars.get(name.identity)

@@ -580,7 +580,9 @@ class StatementCompiler:
             raise MintError(NO_EXPRESSION, detail="PAUSE needs a condition")
         condition = self.expressions.compile(statement.condition)
         complete = self.expressions.complete_horizon(statement.condition)
-        keys = self.expressions.reads_keyword(statement.condition, "INKEY")
+        keys = any(
+            type(part) is n.KeywordRef and part.keyword == "INKEY" for part in n.walk_expression(statement.condition)
+        )
         vm = self.vm
         clock = vm.clock
 

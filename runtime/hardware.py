@@ -20,15 +20,13 @@ from mintlang.runtime.dialects.v3.controllers import DEFAULT as V3_DEFAULT
 from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_PROFILES
 
 _MAIN_CARD = {Controller.NEXTMOVE_PCI: {"digital_inputs": ChannelRange(0, 19), "digital_outputs": ChannelRange(0, 11)}}
-_EXPANSION_CARDS = {
-    Controller.NEXTMOVE_PCI: {"digital_inputs": ChannelRange(20, 59), "digital_outputs": ChannelRange(12, 35)}
-}
 
 
 def on_expansion_cards(controller: Controller, kind: str) -> ChannelRange | None:
-    """The channels of ``kind`` (``digital_inputs``, ``digital_outputs``) that only expansion cards have: the
-    checker accepts them, the simulation fits no card, so a program reading one is told why it fails."""
-    return _EXPANSION_CARDS.get(controller, {}).get(kind)
+    """The channels of ``kind`` (``digital_inputs``, ``digital_outputs``) that only expansion cards have, those
+    the checker accepts beyond the main card: a program using one is told why the simulation refuses it."""
+    main = _MAIN_CARD.get(controller, {}).get(kind)
+    return None if main is None else ChannelRange(main.high + 1, getattr(profile(controller), kind).high)
 
 
 def simulated(controller: Controller | str) -> ControllerProfile:

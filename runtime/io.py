@@ -61,6 +61,12 @@ class DigitalIO:
         self.drive_enable_outputs: Callable[[], frozenset[int]] = frozenset  # outputs (or RELAY0) a drive owns
         self.adc = [0.0] * (self.adc_channels.high + 1)
 
+    def _input(self, channel: int) -> int:
+        return _check(channel, self.inputs, INVALID_INPUT, self.carded_inputs)
+
+    def _output(self, channel: int) -> int:
+        return _check(channel, self.outputs, INVALID_OUTPUT, self.carded_outputs)
+
     # ------------------------------------------------------------------ ticks
 
     def sample(self, levels: int) -> None:
@@ -128,7 +134,7 @@ class DigitalIO:
             value = self.peek(None)
             self.latched = 0
             return value
-        value = self.peek(_check(channel, self.inputs, INVALID_INPUT, self.carded_inputs))
+        value = self.peek(self._input(channel))
         self.latched &= ~(1 << channel)
         return value
 
@@ -141,16 +147,12 @@ class DigitalIO:
         self._watch()
         if channel is None:
             return float(self.active)
-        return float(self.active >> _check(channel, self.inputs, INVALID_INPUT, self.carded_inputs) & 1)
+        return float(self.active >> self._input(channel) & 1)
 
     def _bank_reader(self, attribute: str) -> Callable[[int | None], float]:
         def read(channel: int | None) -> float:
             value = getattr(self, attribute)
-            return float(
-                value
-                if channel is None
-                else value >> _check(channel, self.inputs, INVALID_INPUT, self.carded_inputs) & 1
-            )
+            return float(value if channel is None else value >> self._input(channel) & 1)
 
         return read
 
@@ -165,7 +167,7 @@ class DigitalIO:
                     raise MintError(OUT_OF_RANGE, detail=f"one bit per input: 0 to {self.all_inputs}")
                 wanted = int(value)
             else:
-                bit = 1 << _check(channel, self.inputs, INVALID_INPUT, self.carded_inputs)
+                bit = 1 << self._input(channel)
                 wanted = current | bit if value else current & ~bit
             settable = self.edge_mode if edges_only else self.all_inputs
             setattr(self, attribute, (current & ~settable) | (wanted & settable))
@@ -185,7 +187,7 @@ class DigitalIO:
     def _read_out(self, channel: int | None) -> float:
         if channel is None:
             return float(self.out)
-        return float(self.out >> _check(channel, self.outputs, INVALID_OUTPUT, self.carded_outputs) & 1)
+        return float(self.out >> self._output(channel) & 1)
 
     def _write_out(self, channel: int | None, value: float) -> None:
         if channel is None:
@@ -195,7 +197,7 @@ class DigitalIO:
             driven = self._driven_bits()  # a drive's output is not the program's to set (spec IO-3 RC)
             self.out = int(value) & ~driven | self.out & driven
             return
-        bit = 1 << _check(channel, self.outputs, INVALID_OUTPUT, self.carded_outputs)
+        bit = 1 << self._output(channel)
         if bit & self._driven_bits():
             return
         self.out = self.out | bit if value else self.out & ~bit

@@ -3,38 +3,69 @@
 from __future__ import annotations
 
 import math
+import struct
+from collections.abc import Callable
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.syntax import nodes as n
 
 
-def constant_value(expression: n.Expression | None, dialect: Dialect = Dialect.V4) -> float | None:
-    """The value of ``expression`` when it is known before the program runs, else None."""
+def constant_value(
+    expression: n.Expression | None, dialect: Dialect = Dialect.V4, *, rounded: Callable[[float], float] | None = None
+) -> float | None:
+    """The value of ``expression`` when it is known before the program runs, else None.
+
+    Worked out exactly (in double precision), as rules compare it with the manual's decimal limits,
+    unless ``rounded`` is given: then each number and each result passes through it.
+    """
     kind = type(expression)  # exact types, not class patterns: rules ask this for every axis and value
     if kind is n.Number:
-        return expression.value  # type: ignore[union-attr]
-    if kind is n.CharConstant:
-        return float(expression.value)  # type: ignore[union-attr]
-    if kind is n.ConstantRef:
+        value = expression.value  # type: ignore[union-attr]
+    elif kind is n.CharConstant:
+        value = float(expression.value)  # type: ignore[union-attr]
+    elif kind is n.ConstantRef:
         db = database()
         table = db.constants_of(dialect) if dialect.modern else db.v3_constants
         record = table.get(expression.name)  # type: ignore[union-attr]
-        return record.value if record is not None else None
-    if kind is n.Parenthesised:
-        return constant_value(expression.expression, dialect)  # type: ignore[union-attr]
-    if kind is n.Unary:
-        value = constant_value(expression.operand, dialect)  # type: ignore[union-attr]
-        if value is None:
+        value = record.value if record is not None else None
+    elif kind is n.Parenthesised:
+        return constant_value(expression.expression, dialect, rounded=rounded)  # type: ignore[union-attr]
+    elif kind is n.Unary:
+        operand = constant_value(expression.operand, dialect, rounded=rounded)  # type: ignore[union-attr]
+        if operand is None:
             return None
-        return {"-": -value, "+": value, "NOT": float(value == 0)}.get(expression.operator)  # type: ignore[union-attr]
-    if kind is n.Binary:
-        left = constant_value(expression.left, dialect)  # type: ignore[union-attr]
-        right = constant_value(expression.right, dialect)  # type: ignore[union-attr]
+        return {"-": -operand, "+": operand, "NOT": float(operand == 0)}.get(expression.operator)  # type: ignore[union-attr]
+    elif kind is n.Binary:
+        left = constant_value(expression.left, dialect, rounded=rounded)  # type: ignore[union-attr]
+        right = constant_value(expression.right, dialect, rounded=rounded)  # type: ignore[union-attr]
         if left is None or right is None:
             return None
-        return _binary(expression.operator, left, right)  # type: ignore[union-attr]
-    return None
+        value = _binary(expression.operator, left, right)  # type: ignore[union-attr]
+    else:
+        return None
+    return value if rounded is None or value is None else rounded(value)
+
+
+_BINARY32 = struct.Struct("<f")
+
+
+def _binary32(value: float) -> float:
+    """``value`` rounded to the nearest binary32 number; OverflowError when it has none."""
+    return _BINARY32.unpack(_BINARY32.pack(value))[0]
+
+
+def held_value(expression: n.Expression | None, dialect: Dialect = Dialect.V4) -> float | None:
+    """The value a Mint v4 or MintMT controller works out for ``expression``, when known before it runs.
+
+    It holds every number in an 8-bit exponent and a 24-bit mantissa (000:714-716), a binary32
+    float, so each literal and each result is rounded: ``0.1+0.2-0.3`` is 0 there, not 5.6e-17,
+    and ``16777217`` is 16777216. None also when a result is too large to hold (the run's error 3).
+    """
+    try:
+        return constant_value(expression, dialect, rounded=_binary32)
+    except OverflowError:
+        return None
 
 
 def _binary(operator: str, a: float, b: float) -> float | None:

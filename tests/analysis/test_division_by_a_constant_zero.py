@@ -35,6 +35,11 @@ _FLAGGED = [
     pytest.param("DIM a\nIF a = 0 THEN PRINT 1/0\n", [("E2021", 2, 23)], id="then-body"),
     pytest.param("DIM b(2)\nb(1/0) = 1\n", [("E2021", 2, 5)], id="index"),
     pytest.param("PRINT ABS(1/0)\n", [("E2021", 1, 13)], id="argument"),
+    # Worked in the controller's binary32 numbers (000:714-716): 0.1 + 0.2 is 0.30000000447 before
+    # rounding, nearer 0.3's binary32 value (0.30000001192) than the one below it (0.29999998212).
+    pytest.param("PRINT 1/(0.1+0.2-0.3)\n", [("E2021", 1, 9)], id="zero-in-binary32"),
+    # 16777217 lies halfway between binary32's 16777216 and 16777218 and rounds to the even one.
+    pytest.param("PRINT 1/(16777217-16777216)\n", [("E2021", 1, 9)], id="beyond-the-mantissa"),
 ]
 
 

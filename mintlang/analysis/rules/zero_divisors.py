@@ -3,9 +3,10 @@
 The guide's mathematical operators divide twice: ``/``, and ``MOD`` (also written ``%``), the
 remainder of a division (000:1276-1282, 000:14019-14041). A zero divisor stops the program with
 #2021 when the line runs (000:19063-19070), and mint-run stops there with the same number. The
-divisor is known to be zero when the constant folding the other rules use gives 0: ``0``, ``0.0``,
-``(0)``, ``-0``, ``(2-2)``. A variable, an element or a keyword's reading (``VEL``) may be zero
-only while the program runs, which the guide tells the author to test first (000:19066-19070).
+divisor is known to be zero when the constant folding the other rules use gives 0, worked out in the
+controller's binary32 numbers: ``0``, ``0.0``, ``(0)``, ``-0``, ``(2-2)``, ``(0.1+0.2-0.3)``. A
+variable, an element or a keyword's reading (``VEL``) may be zero only while the program runs,
+which the guide tells the author to test first (000:19066-19070).
 Mint v3's guide lists no such error, so v3 programs are not checked.
 """
 
@@ -15,7 +16,7 @@ from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import LineScope
-from mintlang.semantic.constants import constant_value
+from mintlang.semantic.constants import held_value
 from mintlang.syntax import nodes as n
 
 _DIVIDING = frozenset({"/", "MOD"})  # the parser reads % as MOD
@@ -23,7 +24,7 @@ _DIVIDING = frozenset({"/", "MOD"})  # the parser reads % as MOD
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
     for division in _divisions(scope.facts.statements):
-        if constant_value(division.right, scope.dialect) == 0:
+        if held_value(division.right, scope.dialect) == 0:
             detail = _detail(scope.syntax.text, division)
             yield Finding(scope.unit, mint_error(2021, division.right.span, detail))
 

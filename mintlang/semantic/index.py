@@ -71,6 +71,7 @@ class SyntaxIndex:
 
 
 _CONSTANTS = frozenset({n.Number, n.CharConstant, n.ConstantRef, n.StringLiteral, type(None)})
+_DIVIDING = frozenset({"/", "MOD"})  # the parser reads % as MOD
 
 
 @record
@@ -83,6 +84,7 @@ class LineFacts:
     names: tuple[NameEvent, ...]
     kinds: frozenset[type]  # the types of its statements: passes that look for a few skip the other lines
     calls: tuple[n.Call, ...]  # as statements (``CAMTABLE(0, a, NULL)``) and in expressions, in source order
+    divisions: tuple[n.Binary, ...]  # every ``/`` and ``MOD`` it works out, each statement's outermost first
 
 
 class _Walker:
@@ -91,6 +93,7 @@ class _Walker:
         self.elements: list[tuple[Unit, n.ElementRef]] = []
         self.names: list[NameEvent] = []
         self.calls: list[n.Call] = []
+        self.divisions: list[n.Binary] = []
 
     def statement(self, unit: Unit, statement: n.Statement) -> None:
         kind = type(statement)  # exact-type dispatch: this runs for every statement of every check
@@ -100,8 +103,8 @@ class _Walker:
             self.uses.append(KeywordUse(unit, statement, keyword, use))
             if keyword.keyword != "PROTECT" or use is Use.WRITE:  # PROTECT <password>: not a variable
                 self.expressions(unit, statement)
-            else:  # though a call in it is still a call
-                self.calls.extend(self._calls(statement))
+            else:  # though a call in it is still a call, and a division a division
+                self._calls_and_divisions(statement)
         elif kind is n.Dim:
             self.expressions(unit, statement)
             size = statement.size  # type: ignore[union-attr]
@@ -123,13 +126,17 @@ class _Walker:
                 self.calls.append(statement.call)  # type: ignore[union-attr]
             self.expressions(unit, statement)
 
-    @staticmethod
-    def _calls(statement: n.Statement) -> Iterator[n.Call]:
+    def _calls_and_divisions(self, statement: n.Statement) -> None:
         for expression in n.expressions_of(statement):
-            yield from (node for node in n.walk_expression(expression) if type(node) is n.Call)  # type: ignore[misc]
+            for node in n.walk_expression(expression):
+                kind = type(node)
+                if kind is n.Call:
+                    self.calls.append(node)  # type: ignore[arg-type]
+                elif kind is n.Binary and node.operator in _DIVIDING:  # type: ignore[union-attr]
+                    self.divisions.append(node)  # type: ignore[arg-type]
 
     def expressions(self, unit: Unit, statement: n.Statement) -> None:
-        names, uses, elements, calls = self.names, self.uses, self.elements, self.calls
+        names, uses, elements, calls, divisions = self.names, self.uses, self.elements, self.calls, self.divisions
         for expression in n.expressions_of(statement):
             if type(expression) in _CONSTANTS:
                 continue  # most values are plain numbers: no walk needed
@@ -144,6 +151,8 @@ class _Walker:
                     names.append(NameEvent(unit, node.name, NameUse.READ, True))  # type: ignore[union-attr]
                 elif kind is n.Call:
                     calls.append(node)  # type: ignore[arg-type]
+                elif kind is n.Binary and node.operator in _DIVIDING:  # type: ignore[union-attr]
+                    divisions.append(node)  # type: ignore[arg-type]
 
 
 def index_syntax(documents: Iterable[tuple[Unit, Document]]) -> SyntaxIndex:
@@ -243,6 +252,14 @@ def line_facts(unit: Unit, line: n.PlacedLine) -> LineFacts:
     elements = tuple(element for _, element in walker.elements)
     kinds = frozenset(map(type, statements))
     kinds = _kind_sets.setdefault(kinds, kinds)
-    facts = LineFacts(statements, tuple(walker.uses), elements, tuple(walker.names), kinds, tuple(walker.calls))
+    facts = LineFacts(
+        statements,
+        tuple(walker.uses),
+        elements,
+        tuple(walker.names),
+        kinds,
+        tuple(walker.calls),
+        tuple(walker.divisions),
+    )
     cache.put(line.content, facts)
     return facts

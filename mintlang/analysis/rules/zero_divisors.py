@@ -19,23 +19,12 @@ from mintlang.analysis.traversal import LineScope
 from mintlang.semantic.constants import held_value
 from mintlang.syntax import nodes as n
 
-_DIVIDING = frozenset({"/", "MOD"})  # the parser reads % as MOD
-
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
-    for division in _divisions(scope.facts.statements):
+    for division in scope.facts.divisions:  # gathered by the walk that indexes the line
         if held_value(division.right, scope.dialect) == 0:
             detail = _detail(scope.syntax.text, division)
             yield Finding(scope.unit, mint_error(2021, division.right.span, detail))
-
-
-def _divisions(statements: tuple[n.Statement, ...]) -> Iterator[n.Binary]:
-    """Every ``/`` and ``MOD`` the statements work out, outermost first."""
-    for statement in statements:
-        for expression in n.expressions_of(statement):
-            for node in n.walk_expression(expression):
-                if isinstance(node, n.Binary) and node.operator in _DIVIDING:
-                    yield node
 
 
 def _detail(text: str, division: n.Binary) -> str:

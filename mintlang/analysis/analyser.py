@@ -21,7 +21,7 @@ from operator import attrgetter
 from mintlang.allocation import without_collector
 from mintlang.analysis.rules import RULES, Rule, memory
 from mintlang.analysis.suppression import Directive, directives, suppress
-from mintlang.analysis.traversal import Facts, LineScope, gather
+from mintlang.analysis.traversal import Facts, LineScope, LineShape, gather, line_shape
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import DEFAULT_SELECT
 from mintlang.controllers import ControllerProfile
@@ -95,6 +95,13 @@ def _rules_for(dialect: Dialect) -> tuple[tuple[Rule, ...], tuple[Rule, ...], tu
     )
 
 
+@cache
+def _line_rules_for(dialect: Dialect, shape: LineShape) -> tuple[Rule, ...]:
+    """The line rules of ``dialect`` that read something a line of ``shape`` has: most lines
+    have none of what most rules look for, and a rule's pass over such a line finds nothing."""
+    return tuple(rule for rule in _rules_for(dialect)[0] if rule.looks_at is None or rule.looks_at.found_in(shape))
+
+
 def _findings_of_line(
     cache: RecentCache[Hashable, tuple[Diagnostic, ...]],
     unit: Unit,
@@ -111,7 +118,7 @@ def _findings_of_line(
     scope = LineScope(unit, line.syntax, facts, controller, dialect)
     found = tuple(
         finding.diagnostic
-        for rule in _rules_for(dialect)[0]
+        for rule in _line_rules_for(dialect, line_shape(line.syntax, facts))
         for finding in rule.each_line(scope)  # type: ignore[misc]
     )
     cache.put(line.content, found)

@@ -21,7 +21,7 @@ from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
-__all__ = ["Facts", "KeywordUse", "LineScope", "Use", "gather"]
+__all__ = ["Facts", "KeywordUse", "LineParts", "LineScope", "LineShape", "Use", "gather", "line_shape"]
 
 
 @record
@@ -33,6 +33,41 @@ class LineScope:
     facts: LineFacts
     controller: ControllerProfile
     dialect: Dialect  # the program's
+
+
+# What a line has that line rules look for: its statements' types, and whether it uses a keyword,
+# calls a function, divides, and is labelled. Lines of one shape are many; shapes are few.
+LineShape = tuple[frozenset[type], bool, bool, bool, bool]
+
+
+def line_shape(syntax: n.LineSyntax, facts: LineFacts) -> LineShape:
+    return (facts.kinds, bool(facts.keyword_uses), bool(facts.calls), bool(facts.divisions), syntax.label is not None)
+
+
+@record
+class LineParts:
+    """What a line rule reads of a line: the analyser skips it on a line that has none of these.
+
+    A rule that says nothing (``Rule.looks_at`` None) runs on every line. That a rule finds
+    nothing on the lines it is skipped on is tested on every rule and many programs
+    (``tests/analysis/test_line_rules_skip_only_lines_without_what_they_read.py``)."""
+
+    kinds: frozenset[type] = frozenset()  # the statement types it looks at (IF .. THEN bodies included)
+    keyword_uses: bool = False
+    calls: bool = False
+    divisions: bool = False
+    label: bool = False
+
+    def found_in(self, shape: LineShape) -> bool:
+        """Whether a line of ``shape`` has something this rule reads."""
+        kinds, keyword_uses, calls, divisions, label = shape
+        return (
+            not self.kinds.isdisjoint(kinds)
+            or (self.keyword_uses and keyword_uses)
+            or (self.calls and calls)
+            or (self.divisions and divisions)
+            or (self.label and label)
+        )
 
 
 PlacedStatement = tuple[Unit, n.PlacedLine, n.Statement]

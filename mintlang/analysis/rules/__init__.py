@@ -39,12 +39,13 @@ from mintlang.analysis.rules import (
     values,
     zero_divisors,
 )
-from mintlang.analysis.traversal import Facts, LineScope
+from mintlang.analysis.traversal import Facts, LineParts, LineScope
 from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Diagnostic
 from mintlang.dialect import Dialect
 from mintlang.records import record
 from mintlang.semantic.carry import Meaning, control_meaning
+from mintlang.syntax import nodes as n
 from mintlang.syntax.lexer import PhysicalLines
 
 _ALL_DIALECTS = frozenset(Dialect)
@@ -58,6 +59,7 @@ class Rule:
     each_text_line: Callable[[PhysicalLines, range, ControllerProfile], Iterator[Diagnostic]] | None = None
     dialects: frozenset[Dialect] = _ALL_DIALECTS
     reads: Meaning | None = None  # what a whole-application rule reads of a line, where less than all it means
+    looks_at: LineParts | None = None  # what a line rule reads of a line: skipped on lines without any (None: all)
 
     @property
     def summary(self) -> str:
@@ -72,20 +74,68 @@ class Rule:
 _V4_ATTRIBUTES = frozenset({Dialect.V4, Dialect.MINTMT})
 
 RULES: tuple[Rule, ...] = (
-    Rule("declarations", declarations.check, declarations.each_line),
-    Rule("keyword-usage", each_line=keyword_usage.each_line, dialects=_V4_ATTRIBUTES),
-    Rule("addressing", each_line=addressing.each_line, dialects=_V4_ATTRIBUTES),
-    Rule("values", each_line=values.each_line, dialects=_V4_ATTRIBUTES),
-    Rule("empty-values", each_line=empty_values.each_line),
-    Rule("operands", each_line=operands.each_line, dialects=frozenset({Dialect.V4})),
-    Rule("print-format", each_line=print_format.each_line, dialects=frozenset({Dialect.V4})),
-    Rule("functions", each_line=functions.each_line, dialects=frozenset({Dialect.V4})),  # MintMT's MOVER(0) is no call
-    Rule("v3-access", each_line=v3_access.each_line, dialects=frozenset({Dialect.V3})),
-    Rule("arrays", arrays.check, arrays.each_line),
+    Rule("declarations", declarations.check, declarations.each_line, looks_at=LineParts(frozenset({n.Define}))),
+    Rule(
+        "keyword-usage",
+        each_line=keyword_usage.each_line,
+        dialects=_V4_ATTRIBUTES,
+        looks_at=LineParts(frozenset({n.BareName}), keyword_uses=True),
+    ),
+    Rule(
+        "addressing",
+        each_line=addressing.each_line,
+        dialects=_V4_ATTRIBUTES,
+        looks_at=LineParts(frozenset({n.Axes}), keyword_uses=True),
+    ),
+    Rule("values", each_line=values.each_line, dialects=_V4_ATTRIBUTES, looks_at=LineParts(keyword_uses=True)),
+    Rule(
+        "empty-values",
+        each_line=empty_values.each_line,
+        looks_at=LineParts(frozenset({n.Pause, n.KeywordStatement, n.FunctionStatement})),
+    ),
+    Rule(
+        "operands",
+        each_line=operands.each_line,
+        dialects=frozenset({Dialect.V4}),
+        looks_at=LineParts(frozenset({n.KeywordStatement})),
+    ),
+    Rule(
+        "print-format",
+        each_line=print_format.each_line,
+        dialects=frozenset({Dialect.V4}),
+        looks_at=LineParts(frozenset({n.Print, n.KeywordStatement})),
+    ),
+    Rule(
+        "functions",
+        each_line=functions.each_line,
+        dialects=frozenset({Dialect.V4}),  # MintMT's MOVER(0) is no call
+        looks_at=LineParts(calls=True),  # a function written as a statement is one of the line's calls
+    ),
+    Rule(
+        "v3-access",
+        each_line=v3_access.each_line,
+        dialects=frozenset({Dialect.V3}),
+        looks_at=LineParts(keyword_uses=True),
+    ),
+    Rule(
+        "arrays",
+        arrays.check,
+        arrays.each_line,
+        looks_at=LineParts(frozenset({n.Dim, n.Input}), calls=True),  # COMMS(i) = v is a call
+    ),
     # The v3 guide lists no error 2021, and mint-run does not simulate a v3 division by zero
-    Rule("zero-divisors", each_line=zero_divisors.each_line, dialects=frozenset({Dialect.V4, Dialect.MINTMT})),
+    Rule(
+        "zero-divisors",
+        each_line=zero_divisors.each_line,
+        dialects=frozenset({Dialect.V4, Dialect.MINTMT}),
+        looks_at=LineParts(divisions=True),
+    ),
     Rule("events", events.check, reads=control_meaning),
-    Rule("v3-keywords", each_line=v3_keywords.each_line),
+    Rule(
+        "v3-keywords",
+        each_line=v3_keywords.each_line,
+        looks_at=LineParts(frozenset({n.BareName}), keyword_uses=True, label=True),
+    ),
     Rule("flow", flow.check, reads=control_meaning),
     Rule("calls", calls.check, reads=control_meaning),
     Rule("limits", limits.check),
@@ -94,5 +144,10 @@ RULES: tuple[Rule, ...] = (
     Rule("startup", startup.check, reads=control_meaning),
     Rule("collisions", collisions.check),
     Rule("unused", unused.check),
-    Rule("hints", each_line=hints.each_line, dialects=frozenset({Dialect.V4})),  # MintMT's (0) is not v4's [0]
+    Rule(
+        "hints",
+        each_line=hints.each_line,
+        dialects=frozenset({Dialect.V4}),  # MintMT's (0) is not v4's [0]
+        looks_at=LineParts(keyword_uses=True),
+    ),
 )

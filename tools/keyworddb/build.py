@@ -13,6 +13,7 @@ from tools.keyworddb.bit_ranges import with_bit_ranges
 from tools.keyworddb.conflicts import Conflict, sort_key
 from tools.keyworddb.constant_ranges import with_constant_ranges
 from tools.keyworddb.constants import add_constant, error_constants, general_constants, keyword_constants
+from tools.keyworddb.default_ranges import with_default_ranges
 from tools.keyworddb.described_ranges import with_described_ranges
 from tools.keyworddb.entries import EntryKind, v4_entries
 from tools.keyworddb.errors import build_errors, shared_constants
@@ -64,9 +65,17 @@ def build(seeds: Path, spec: Path) -> dict[str, Any]:
     keywords = with_constant_ranges(keywords, constants)
     keywords = with_described_ranges(keywords, constants, v4)
     keywords, bit_conflicts = with_bit_ranges(keywords, constants, v4)
+    keywords, default_conflicts = with_default_ranges(keywords)
     keywords, format_conflicts = apply_format_access(keywords)
     keywords, access_conflicts = apply_access_examples(v4, errors, keywords)
-    conflicts += constant_conflicts + bit_conflicts + shared_constants(errors) + format_conflicts + access_conflicts
+    conflicts += (
+        constant_conflicts
+        + bit_conflicts
+        + default_conflicts
+        + shared_constants(errors)
+        + format_conflicts
+        + access_conflicts
+    )
     keywords = with_summaries(_with_notes(keywords, conflicts))
     renames = build_renames(v4, keywords)
     return {

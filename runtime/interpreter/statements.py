@@ -33,6 +33,7 @@ MISSING_PARAMETER = 2001
 UNDEFINED_KEYWORD = 3007
 SYNTAX_ERROR = 2003
 TOO_MANY_VALUES = 2017
+_CIRCLES = frozenset({"CIRCLEA", "CIRCLER"})  # three values on two axes (000:8152, 8215)
 
 
 def layout_size(statement: n.Statement) -> int:
@@ -209,9 +210,14 @@ class StatementCompiler:
             write = access.write
             values = tuple(self.expressions.compile(value) if value is not None else None for value in statement.values)
             fill = statement.fill
+            one_per_axis = reference.keyword in self.expressions.semantics.axis_keywords and (
+                reference.keyword not in _CIRCLES
+            )
 
             def write_values() -> bool:
                 addressed = channels()
+                if one_per_axis:
+                    _within_the_axes(len(values), addressed)
                 evaluated = _evaluated(values, fill, addressed)
                 clock.horizon = NEVER
                 if write(addressed, evaluated):
@@ -739,6 +745,13 @@ class StatementCompiler:
 
 def _nothing() -> None:
     return None
+
+
+def _within_the_axes(count: int, addressed: tuple[int, ...] | None) -> None:
+    """More values than the axes addressed is #2017, before anything is written (000:572-576, 19047)."""
+    if addressed is not None and count > len(addressed):
+        axes = f"{len(addressed)} ax{'is' if len(addressed) == 1 else 'es'}"
+        raise MintError(TOO_MANY_VALUES, detail=f"{count} values for {axes}")
 
 
 def _evaluated(values: tuple[Evaluate | None, ...], fill: bool, addressed: tuple[int, ...] | None) -> Values:

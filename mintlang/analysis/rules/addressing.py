@@ -1,7 +1,7 @@
 """Axis and channel numbers, checked against the keyword and the controller.
 
-Brackets list axes (3.1.1): an empty place is 2001, more axes than the
-controller has or more values than listed axes is 2017, an axis listed twice
+Brackets list axes (3.1.1), a dot names one (3.1.2): an empty place is 2001, more
+axes than the controller has or more values than addressed axes is 2017, an axis listed twice
 is 2018, and only constants or simple variables may stand in them (an
 expression is a syntax error, 2003). A circle moves the two axes of its
 brackets with three values, ``CIRCLEA[axis0,axis1] = <centre0>,<centre1>,<angle>``
@@ -90,10 +90,10 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
     if keyword is None or (keyword.controllers and scope.controller.controller not in keyword.controllers):
         return  # not a keyword of this controller: 17 (keyword usage) says so, its channels are moot
     if use.keyword.selector is None and use.keyword.channel is None:
-        # Nothing addressed: the default axes, whatever AXES made them, except on a one-axis
-        # controller, where they can only be axis 0 (000:572, #2017 at 19047).
-        if keyword.addressing is Addressing.AXIS and scope.controller.axis_count == 1:
-            yield from _values_for_axes(use, 1)
+        # Nothing addressed: the default axes, whatever AXES made them, are at most the controller's
+        # (000:572, 605-606, #2017 at 19047); a circle's three values go to two of them.
+        if keyword.addressing is Addressing.AXIS and keyword.name not in _CIRCLES:
+            yield from _values_for_axes(use, scope.controller.axis_count)
         return
     if keyword.name.startswith("REMOTE"):
         yield from _can_address(use)
@@ -110,15 +110,16 @@ def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:
     selector = use.keyword.selector
     if selector is None:
         return
-    if not selector.dot:
+    if selector.dot:  # one axis, as POS.1 or POS.(a+1) (000:677-681)
+        for item in selector.items[:1]:
+            yield from _axis_number(use.unit, item, scope)
+    else:
         yield from _axis_list(use.unit, selector, scope)
-        if name in _CIRCLES:
-            yield from _circle(use, selector, name)
-        else:
-            yield from _values_for_axes(use, len(selector.axes))
-        return
-    for item in selector.items[:1]:
-        yield from _axis_number(use.unit, item, scope)
+    listed = 1 if selector.dot else len(selector.axes)
+    if name in _CIRCLES:
+        yield from _circle(use, selector, name, listed)
+    else:
+        yield from _values_for_axes(use, listed)
 
 
 def _indices(use: KeywordUse, keyword: Keyword) -> Iterator[Finding]:
@@ -143,10 +144,9 @@ def _values_for_axes(use: KeywordUse, axes: int) -> Iterator[Finding]:
     yield from _too_many_values(use, axes, lambda count: f"{count} values for {axes} {detail}")
 
 
-def _circle(use: KeywordUse, selector: n.Selector, name: str) -> Iterator[Finding]:
-    """Two axes in the brackets and at most three values (a value left out is not known to be wrong)."""
+def _circle(use: KeywordUse, selector: n.Selector, name: str, listed: int) -> Iterator[Finding]:
+    """Two axes addressed and at most three values (a value left out is not known to be wrong)."""
     shape = f"{name}[axis0,axis1] = <centre0>,<centre1>,<angle>"
-    listed = len(selector.axes)
     detail = f"{shape} moves two axes, {listed} listed"
     if listed > _CIRCLE_AXES:
         yield Finding(use.unit, mint_error(2017, selector.span, detail))

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from mintlang.controllers import ControllerProfile
+from mintlang.controllers import profile as profile_of
 from mintlang.dialect import Dialect
 from mintlang.runtime import drive_enable, global_error_output
 from mintlang.runtime.clock import Clock
@@ -22,11 +23,11 @@ from mintlang.runtime.comms.packets import HostEndpoint
 from mintlang.runtime.dialects import machine as dialect_machine
 from mintlang.runtime.dialects import semantics
 from mintlang.runtime.events import MINTDRIVE, NEXTMOVE, NEXTMOVE_MINTMT, EventClass, Events
-from mintlang.runtime.hardware import simulated
 from mintlang.runtime.inert import InertSettings
 from mintlang.runtime.interpreter.program import Linked, link
 from mintlang.runtime.interpreter.vm import Interpreter, StopReason
 from mintlang.runtime.io import DigitalIO
+from mintlang.runtime.io_banks import BankSelection, io_banks
 from mintlang.runtime.keywords import KeywordTable
 from mintlang.runtime.monitors import Monitor
 from mintlang.runtime.motion.axis import ER_ABORT, Axis
@@ -88,7 +89,7 @@ def build_controller(
 ) -> Controller:
     """Assemble the controller for ``model`` (on ``machine``, by default the model's controller as simulated);
     raises ``NotSimulated`` or ``MintError`` when it cannot compile."""
-    profile = machine or simulated(model.controller.controller)
+    profile = machine or profile_of(model.controller.controller)
     meaning = semantics(model.program.dialect)
     v3 = meaning.dialect is Dialect.V3
     v3_machine = dialect_machine(Dialect.V3) if v3 else None
@@ -109,13 +110,14 @@ def build_controller(
     mintmt = meaning.dialect is Dialect.MINTMT
     nextmove = NEXTMOVE_MINTMT if mintmt else NEXTMOVE
     dispatch = v3_machine.DISPATCH if v3 else nextmove if profile.controller.value.startswith("nextmove") else MINTDRIVE
-    events = Events(clock, handlers, lambda message: vm.stop(StopReason.ERROR, message), dispatch)
-    io = DigitalIO(profile, clock, events)
+    banks = BankSelection(io_banks(profile))
+    events = Events(clock, handlers, lambda message: vm.stop(StopReason.ERROR, message), dispatch, banks)
+    io = DigitalIO(profile, clock, events, banks)
     events.imask = io.all_inputs  # IMASK: every input of the controller may raise #INx (EV-7)
     auxiliary = profile.auxiliary_encoders.high + 1 if profile.auxiliary_encoders is not None else 0
     system = System(clock, vm, terminal, axes, table, auxiliary_encoders=auxiliary)
     inert = InertSettings()
-    for part in (motion, io, events, system, inert):
+    for part in (motion, io, banks, events, system, inert):
         part.register(table)
     for extend in EXTENSIONS:
         extend(table, motion)

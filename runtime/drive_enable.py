@@ -52,7 +52,8 @@ def _checked(write: Writer, io: DigitalIO) -> Writer:
 
 
 def check_output(keyword: str, value: float, io: DigitalIO, channel: int | None = None) -> None:
-    """Error 3 unless ``value`` is -1, an output of the simulated card or ``_RELAY0``: an output assignment."""
-    if value not in (NO_OUTPUT, RELAY0) and not (value == int(value) and int(value) in io.outputs):
-        detail = f"{keyword} = {shown(value)}; it takes -1, an output {io.outputs} or _RELAY0"
+    """Error 3 unless ``value`` is -1, an output or a relay of the controller: an output assignment."""
+    if value != NO_OUTPUT and not (value == int(value) and (int(value) in io.outputs or int(value) in io.relays())):
+        *others, last = [f"an output {io.outputs}", *(f"_RELAY{number - RELAY0}" for number in io.relays())]
+        detail = f"{keyword} = {shown(value)}; it takes -1, {', '.join(others)} or {last}"
         raise MintError(OUT_OF_RANGE, channel, detail)

@@ -19,6 +19,7 @@ from enum import IntEnum
 
 from mintlang.records import record
 from mintlang.runtime.clock import NEVER, Clock
+from mintlang.runtime.io_banks import BankSelection
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.ranges import ranged, table_default
 
@@ -101,9 +102,11 @@ class Events:
         clock: Clock,
         handlers: Mapping[str, int],
         on_runaway: Callable[[str], None],
-        dispatch: Dispatch = NEXTMOVE,
+        dispatch: Dispatch,
+        banks: BankSelection,
     ) -> None:
         self.clock = clock
+        self.banks = banks  # IMASK and IPEND address the inputs of the bank BANK selects
         self.dispatch = dispatch
         self.handlers = handlers  # the program's handlers: label identity -> pc
         self.configuration_handlers: Mapping[str, int] = {}
@@ -112,7 +115,7 @@ class Events:
         self.errors_latched: Callable[[], bool] = lambda: False
         self.on_fastin_return: Callable[[int], None] = lambda number: None
         self.disabled: frozenset[EventClass] = frozenset()  # EVENTDISABLE / HANDLERDISABLE
-        self.imask = 0xFFFFFF  # IMASK: every input may raise #INx
+        self.imask = 0  # IMASK, one bit per input of the controller: those that may raise #INx
         self._pending: dict[EventClass, set[int]] = {kind: set() for kind in EventClass}
         self.pending = 0  # the pending mask (EVENTPENDING or HANDLERPENDING); non-zero when anything may be dispatched
         self.timer_period = 0  # TIMEREVENT, ms; 0 = off
@@ -245,9 +248,11 @@ class Events:
             force = ranged(dispatch.pending_keyword, controller, self._force(dispatch))
             table.register(dispatch.pending_keyword, read=self._pending_mask(dispatch), write=per_channel(force))
         mask = ranged("IMASK", controller, self._mask)
-        table.register("IMASK", read=lambda _: float(self.imask), write=per_channel(mask))
+        table.register("IMASK", read=lambda _: float(self.banks.inputs(self.imask)), write=per_channel(mask))
         ipend = ranged("IPEND", controller, self._ipend)
-        table.register("IPEND", read=lambda _: float(self._bits(EventClass.INPUT)), write=per_channel(ipend))
+        table.register(
+            "IPEND", read=lambda _: float(self.banks.inputs(self._pending_inputs())), write=per_channel(ipend)
+        )
         timer = ranged("TIMEREVENT", controller, self._timer)
         table.register("TIMEREVENT", read=lambda _: float(self.timer_period), write=per_channel(timer))
         self.set_timer(table_default("TIMEREVENT", controller) or 0.0)  # at power-up: 10000 ms on MintDrive
@@ -281,14 +286,14 @@ class Events:
         return write
 
     def _mask(self, _: int | None, value: float) -> None:
-        self.imask = int(value) & 0xFFFFFF
+        self.imask = self.banks.with_inputs(self.imask, int(value))
 
-    def _bits(self, kind: EventClass) -> int:
-        return sum(1 << number for number in self._pending[kind])
+    def _pending_inputs(self) -> int:
+        return sum(1 << number for number in self._pending[EventClass.INPUT])
 
     def _ipend(self, _: int | None, value: float) -> None:
-        bits = int(value)
-        self._pending[EventClass.INPUT] = {number for number in range(24) if bits >> number & 1}
+        pending = self.banks.with_inputs(self._pending_inputs(), int(value))
+        self._pending[EventClass.INPUT] = {number for number in range(pending.bit_length()) if pending >> number & 1}
         self._refresh()
 
     def _timer(self, _: int | None, value: float) -> None:

@@ -3,8 +3,10 @@
 Inputs are sampled once per servo tick from the world's electrical levels.
 ``INPUTACTIVELEVEL`` turns a level into an active state; edge-triggered inputs
 (``INPUTMODE``) latch the edges ``INPUTPOSTRIGGER``/``INPUTNEGTRIGGER`` select,
-and reading ``IN`` clears the latches it returns. Outputs and the relay only
+and reading ``IN`` clears the latches it returns. Outputs and the relays only
 record what the program and the drive enables (``drive_enable.py``) drive, for the report and the trace.
+A channel (``IN.21``) is numbered across the cards; a whole-card form (``IN``, ``OUT = 5``) addresses
+the bank BANK selects (``io_banks.py``).
 """
 
 from __future__ import annotations
@@ -15,7 +17,7 @@ from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.events import EventClass, Events
-from mintlang.runtime.hardware import on_expansion_cards
+from mintlang.runtime.io_banks import BankSelection
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.ranges import ranged
 
@@ -23,30 +25,28 @@ INVALID_INPUT = 7
 INVALID_OUTPUT = 8
 INVALID_CHANNEL = 4
 OUT_OF_RANGE = 3
-RELAY0 = 1000  # _RELAY0, the relay as a drive enable output (000:9356-9368)
+RELAY0 = 1000  # _RELAY0, the main card's relay as a drive enable output; _RELAY1 and _RELAY2 follow (000:9356-9368)
 
 
-def _check(channel: int, channels: ChannelRange, code: int, carded: ChannelRange | None = None) -> int:
-    """``channel``, or the controller's error when it is not one of ``channels``; ``carded`` are those only
-    expansion cards have, which the simulation does not fit."""
+def _check(channel: int, channels: ChannelRange, code: int) -> int:
+    """``channel``, or the controller's error when it is not one of ``channels``."""
     if channel not in channels:
-        beyond = "" if carded is None or channel not in carded else f"; {carded} are on expansion cards, not simulated"
-        raise MintError(code, channel, f"channels are {channels}{beyond}")
+        raise MintError(code, channel, f"channels are {channels}")
     return channel
 
 
 class DigitalIO:
-    def __init__(self, profile: ControllerProfile, clock: Clock, events: Events) -> None:
+    def __init__(self, profile: ControllerProfile, clock: Clock, events: Events, banks: BankSelection) -> None:
         self.inputs = profile.digital_inputs
         self.outputs = profile.digital_outputs
-        self.carded_inputs = on_expansion_cards(profile.controller, "digital_inputs")
-        self.carded_outputs = on_expansion_cards(profile.controller, "digital_outputs")
+        self.banks = banks
         self.adc_channels = profile.adc
         self.clock = clock
         self.events = events
         self.next_input_change: Callable[[], int] = lambda: clock.now + 1  # the world tells when a level may change
         all_inputs = (1 << (self.inputs.high + 1)) - 1
-        self.all_inputs = all_inputs & 0xFFFFFF  # a 24-bit mask holds inputs 0..23
+        self.all_inputs = all_inputs
+        self.bank_inputs = (1 << banks.banks.inputs) - 1  # the largest whole-card value of a bit per input
         self.levels = 0  # electrical levels, bit per input
         self.active = 0  # active states after INPUTACTIVELEVEL
         self.active_level = all_inputs  # INPUTACTIVELEVEL: 1 = active high (the default)
@@ -57,15 +57,15 @@ class DigitalIO:
         self.levels_only = False  # Mint v3: IN reads the levels, and edges only call #INx (001:4290-4330)
         self.out = 0  # OUT as last written
         self.output_active_level = (1 << (self.outputs.high + 1)) - 1
-        self.relay = 0
+        self.relay = 0  # a bit per bank's relay
         self.drive_enable_outputs: Callable[[], frozenset[int]] = frozenset  # outputs (or RELAY0) a drive owns
         self.adc = [0.0] * (self.adc_channels.high + 1)
 
     def _input(self, channel: int) -> int:
-        return _check(channel, self.inputs, INVALID_INPUT, self.carded_inputs)
+        return _check(channel, self.inputs, INVALID_INPUT)
 
     def _output(self, channel: int) -> int:
-        return _check(channel, self.outputs, INVALID_OUTPUT, self.carded_outputs)
+        return _check(channel, self.outputs, INVALID_OUTPUT)
 
     # ------------------------------------------------------------------ ticks
 
@@ -119,10 +119,12 @@ class DigitalIO:
         table.register("OUT", read=self._read_out, write=per_channel(self._write_out))
         active_level = ranged("OUTPUTACTIVELEVEL", table.controller, self._write_oal)
         table.register(
-            "OUTPUTACTIVELEVEL", read=lambda _: float(self.output_active_level), write=per_channel(active_level)
+            "OUTPUTACTIVELEVEL",
+            read=lambda _: float(self.banks.outputs(self.output_active_level)),
+            write=per_channel(active_level),
         )
         relay = ranged("RELAY", table.controller, self._write_relay)
-        table.register("RELAY", read=lambda _: float(self.relay), write=per_channel(relay))
+        table.register("RELAY", read=self._read_relay, write=per_channel(relay))
         table.register("ADC", read=self._read_adc)
 
     def _watch(self) -> None:
@@ -132,7 +134,7 @@ class DigitalIO:
         self._watch()
         if channel is None:
             value = self.peek(None)
-            self.latched = 0
+            self.latched = self.banks.with_inputs(self.latched, 0)
             return value
         value = self.peek(self._input(channel))
         self.latched &= ~(1 << channel)
@@ -141,18 +143,18 @@ class DigitalIO:
     def peek(self, channel: int | None) -> float:
         """What reading IN would return, without clearing any latch (for observers, not programs)."""
         value = self.active if self.levels_only else (self.active & ~self.edge_mode) | (self.latched & self.edge_mode)
-        return float(value if channel is None else value >> channel & 1)
+        return float(self.banks.inputs(value) if channel is None else value >> channel & 1)
 
     def _read_instate(self, channel: int | None) -> float:
         self._watch()
         if channel is None:
-            return float(self.active)
+            return float(self.banks.inputs(self.active))
         return float(self.active >> self._input(channel) & 1)
 
     def _bank_reader(self, attribute: str) -> Callable[[int | None], float]:
         def read(channel: int | None) -> float:
             value = getattr(self, attribute)
-            return float(value if channel is None else value >> self._input(channel) & 1)
+            return float(self.banks.inputs(value) if channel is None else value >> self._input(channel) & 1)
 
         return read
 
@@ -163,9 +165,9 @@ class DigitalIO:
         def write(channel: int | None, value: float) -> None:
             current = getattr(self, attribute)
             if channel is None:
-                if value != int(value) or not 0 <= value <= self.all_inputs:
-                    raise MintError(OUT_OF_RANGE, detail=f"one bit per input: 0 to {self.all_inputs}")
-                wanted = int(value)
+                if value != int(value) or not 0 <= value <= self.bank_inputs:
+                    raise MintError(OUT_OF_RANGE, detail=f"one bit per input: 0 to {self.bank_inputs}")
+                wanted = self.banks.with_inputs(current, int(value))
             else:
                 bit = 1 << self._input(channel)
                 wanted = current | bit if value else current & ~bit
@@ -176,26 +178,31 @@ class DigitalIO:
 
     def drive_enable(self, output: int, enabled: bool) -> None:
         """A drive enable output follows its drive: active while enabled (000:9281-9286); -1 drives nothing."""
-        if output == RELAY0:
-            self.relay = int(enabled)
+        if output >= RELAY0:
+            bit = 1 << output - RELAY0
+            self.relay = self.relay | bit if enabled else self.relay & ~bit
         elif output >= 0:
             self.out = self.out | 1 << output if enabled else self.out & ~(1 << output)
 
+    def relays(self) -> range:
+        """The drive enable outputs that are relays: _RELAY0, and _RELAY1 and _RELAY2 with the cards."""
+        return range(RELAY0, RELAY0 + self.banks.banks.count)
+
     def _driven_bits(self) -> int:
-        return sum(1 << output for output in self.drive_enable_outputs() if output != RELAY0)
+        return sum(1 << output for output in self.drive_enable_outputs() if 0 <= output < RELAY0)
 
     def _read_out(self, channel: int | None) -> float:
         if channel is None:
-            return float(self.out)
+            return float(self.banks.outputs(self.out))
         return float(self.out >> self._output(channel) & 1)
 
     def _write_out(self, channel: int | None, value: float) -> None:
         if channel is None:
-            limit = 1 << (self.outputs.high + 1)
+            limit = 1 << self.banks.banks.outputs
             if not 0 <= value < limit:
                 raise MintError(OUT_OF_RANGE, detail=f"OUT takes 0 to {limit - 1}")
             driven = self._driven_bits()  # a drive's output is not the program's to set (spec IO-3 RC)
-            self.out = int(value) & ~driven | self.out & driven
+            self.out = self.banks.with_outputs(self.out, int(value)) & ~driven | self.out & driven
             return
         bit = 1 << self._output(channel)
         if bit & self._driven_bits():
@@ -203,11 +210,15 @@ class DigitalIO:
         self.out = self.out | bit if value else self.out & ~bit
 
     def _write_oal(self, _: int | None, value: float) -> None:
-        self.output_active_level = int(value) & 0xFFFFFF
+        self.output_active_level = self.banks.with_outputs(self.output_active_level, int(value))
+
+    def _read_relay(self, _: int | None) -> float:
+        return float(self.relay >> self.banks.bank & 1)
 
     def _write_relay(self, _: int | None, value: float) -> None:
-        if RELAY0 not in self.drive_enable_outputs():  # a drive's relay is not RELAY's to set (000:15477-15480)
-            self.relay = 1 if value else 0
+        bank = self.banks.bank
+        if RELAY0 + bank not in self.drive_enable_outputs():  # a drive's relay is not RELAY's to set (000:15477-15480)
+            self.relay = self.relay | 1 << bank if value else self.relay & ~(1 << bank)
 
     def _read_adc(self, channel: int | None) -> float:
         if channel is None:

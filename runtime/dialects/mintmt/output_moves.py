@@ -15,14 +15,12 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from mintlang.runtime.clock import NEVER
-from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.errors import MintError
 from mintlang.runtime.io import INVALID_OUTPUT, DigitalIO
 from mintlang.runtime.keywords import Channels, IndexedWriter, KeywordTable, Values
 from mintlang.runtime.motion.axis import Request
 from mintlang.runtime.motion.commands import MISSING_PARAMETER, TOO_MANY_VALUES, Motion
 from mintlang.runtime.ranges import OUT_OF_RANGE
-
-OUTPUT_BANK = 0
 
 
 class OutputMoves:
@@ -63,12 +61,13 @@ class OutputMoves:
         return write
 
     def _bank(self, bank: int, pattern: float) -> Callable[[], None]:
-        if bank != OUTPUT_BANK:
-            raise NotSimulated("MOVEOUT", f"output bank {bank}: the simulated controller has bank 0 only")
-        limit = 1 << (self.io.outputs.high + 1)
+        banks = self.io.banks.banks
+        if not 0 <= bank < banks.count:
+            raise MintError(OUT_OF_RANGE, detail=f"MOVEOUT's bank is 0 to {banks.count - 1}, one per card")
+        limit = 1 << banks.outputs
         if pattern != int(pattern) or not 0 <= pattern < limit:
             raise MintError(OUT_OF_RANGE, detail=f"MOVEOUT takes a pattern of 0 to {limit - 1}")
-        return lambda: self._set_bank(int(pattern))
+        return lambda: self._set_bank(bank, int(pattern))
 
     def _channel(self, channel: int, state: float) -> Callable[[], None]:
         self._check(channel)
@@ -91,8 +90,8 @@ class OutputMoves:
 
     # ------------------------------------------------------------ acting
 
-    def _set_bank(self, pattern: int) -> None:
-        self.io.out = pattern
+    def _set_bank(self, bank: int, pattern: int) -> None:
+        self.io.out = self.io.banks.banks.with_output_word(self.io.out, bank, pattern)
 
     def _set(self, channel: int, *, on: bool) -> None:
         bit = 1 << channel

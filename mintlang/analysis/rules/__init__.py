@@ -5,9 +5,10 @@ A rule reads the whole application (``check``), or one line at a time
 analyser keeps it while the line is unchanged), or both; or each physical line
 of the text as it is written (``each_text_line``), comments included. A rule
 that reads the whole application may say what it reads of a line (``reads``):
-after an edit that leaves that the same, what it found is carried over. The
-memory estimate (``memory``) reads the files' lengths: the analyser checks it
-on every version.
+after an edit that leaves that the same, what it found is carried over. A line
+rule may say what of a line it looks at (``looks_at``): it is skipped on the
+lines that have none of it. The memory estimate (``memory``) reads the files'
+lengths: the analyser checks it on every version.
 """
 
 from __future__ import annotations

@@ -1,27 +1,35 @@
-"""Compute the parsers' LALR tables and write them into the package: run after changing grammar.lark.
+"""Write the parsers' LALR tables and lark's stand-alone runtime into the package: run after changing
+grammar.lark or upgrading lark.
 
-``python -m tools.lalr_tables`` writes ``mintlang/syntax/lalr_v4.bin`` and
-``lalr_v3.bin`` (MintMT is read with the v4 grammar): a line naming the grammar and lark they were made from, then
-lark's own serialization. ``mint check`` loads them instead of computing the
-tables at every start; a test fails when they no longer match the grammar.
+``python -m tools.lalr_tables`` writes ``mintlang/syntax/lalr_v4.bin`` and ``lalr_v3.bin`` (MintMT
+is read with the v4 grammar), each the grammar it was computed from, the lark version and lark's
+serialization of the parser, and ``mintlang/syntax/lark_runtime.py``, lark's stand-alone parser
+(``mintlang/syntax/tables.py`` says why). ``mint check`` loads them instead of importing lark and
+computing the tables at every start; a test fails when they no longer match the grammar or lark.
 """
 
 from __future__ import annotations
 
+import pickle
 from pathlib import Path
 
+import lark
+
 from mintlang.dialect import Dialect
-from mintlang.syntax.grammar import build_parser, fingerprint, grammar_of
+from mintlang.syntax.grammars import grammar_of, grammar_text
+from mintlang.syntax.tables import computed, runtime_source
 
 SYNTAX = Path(__file__).resolve().parents[1] / "mintlang" / "syntax"
 
 
 def main() -> None:
+    runtime = SYNTAX / "lark_runtime.py"
+    runtime.write_text(runtime_source(), encoding="utf-8")
+    print(f"wrote {runtime}")
     for dialect in sorted({grammar_of(dialect) for dialect in Dialect}):
         path = SYNTAX / f"lalr_{dialect.value}.bin"
-        with path.open("wb") as stream:
-            stream.write(f"{fingerprint(dialect)}\n".encode("ascii"))
-            build_parser(dialect).save(stream)
+        tables = {"grammar": grammar_text(dialect), "lark": lark.__version__, "parser": computed(dialect)}
+        path.write_bytes(pickle.dumps(tables, protocol=pickle.HIGHEST_PROTOCOL))
         print(f"wrote {path}")
 
 

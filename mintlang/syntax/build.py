@@ -15,10 +15,9 @@ from collections.abc import Callable
 from functools import lru_cache
 from typing import TypeVar
 
-from lark import Token, Tree
-
 from mintlang.diagnostics import Span
 from mintlang.syntax import nodes as n
+from mintlang.syntax.lark_runtime import Token, Tree
 from mintlang.syntax.lines import LogicalLine
 from mintlang.syntax.spans import span as _span
 from mintlang.syntax.vocabulary import Vocabulary

@@ -7,27 +7,24 @@ into a builder (``build.py``). Leaves of cached trees hold
 the position of their token in the line (``Token.start_pos``), and subtrees
 the positions of their first and last token (``Tree.meta``); the builder reads
 texts and spans from the line itself.
+
+The parser is lark's stand-alone one (``lark_runtime.py``) over the tables the
+package ships: neither imports lark itself (``tables.py`` says why and makes them).
 """
 
 from __future__ import annotations
 
-import hashlib
-import io
 import pickle
 from collections.abc import Iterator
 from functools import cache
-from typing import BinaryIO
-
-import lark
-from lark import Lark, Token, Tree
-from lark.common import LexerConf
-from lark.exceptions import UnexpectedInput, UnexpectedToken
-from lark.lexer import Lexer
+from typing import Any
 
 from mintlang.dialect import Dialect
-from mintlang.package_data import read_bytes, read_text
+from mintlang.package_data import read_bytes
 from mintlang.records import record
 from mintlang.syntax.build import LineBuilder, compile_line
+from mintlang.syntax.grammars import grammar_of, grammar_text
+from mintlang.syntax.lark_runtime import Lark, Lexer, LexerConf, Token, Tree, UnexpectedInput, UnexpectedToken
 from mintlang.syntax.lexer import MAX_TOKENS
 from mintlang.syntax.tokens import TokenKind
 
@@ -42,64 +39,33 @@ class _PresetTokens(Lexer):
         return iter(data)
 
 
-# Mint v3 binds AND tighter than OR (v3 guide 4.2, lines 1986-1995), v4 the other way round
-# (3.4.7): the v3 grammar is the v4 one with the two levels swapped.
-_V4_LOGIC = """?expr: and_expr
-?and_expr: and_expr AND or_expr -> binary
-    | or_expr
-?or_expr: or_expr (OR | XOR) eq_expr -> binary
-    | eq_expr
-"""
-_V3_LOGIC = """?expr: or_expr
-?or_expr: or_expr (OR | XOR) and_expr -> binary
-    | and_expr
-?and_expr: and_expr AND eq_expr -> binary
-    | eq_expr
-"""
+def shipped_tables(dialect: Dialect) -> dict[str, Any]:
+    """What ``tools/lalr_tables.py`` wrote for ``dialect``: the ``grammar`` text the tables were computed
+    from, the ``lark`` version that computed them, and lark's serialization of the ``parser``."""
+    return pickle.loads(read_bytes("mintlang.syntax", f"lalr_{grammar_of(dialect).value}.bin"))
 
 
-def grammar_of(dialect: Dialect) -> Dialect:
-    """The dialect whose grammar reads ``dialect``: MintMT's differences are made by its lexer, so v4's."""
-    return Dialect.V3 if dialect is Dialect.V3 else Dialect.V4
-
-
-def grammar_text(dialect: Dialect) -> str:
-    grammar = read_text("mintlang.syntax", "grammar.lark")
-    assert _V4_LOGIC in grammar, "grammar.lark must state the v4 precedence of AND and OR as _V4_LOGIC"
-    return grammar.replace(_V4_LOGIC, _V3_LOGIC) if grammar_of(dialect) is Dialect.V3 else grammar
-
-
-def build_parser(dialect: Dialect) -> Lark:
-    """The parser made from the grammar: its LALR tables take a tenth of a second to compute."""
-    # propagate_positions gives every subtree the positions of its first and last token, which
-    # here are token indices: computed once per cached tree, they make node spans O(1).
-    return Lark(grammar_text(dialect), parser="lalr", lexer=_PresetTokens, strict=True, propagate_positions=True)
-
-
-def shipped_tables(dialect: Dialect) -> tuple[str, BinaryIO]:
-    """The parser of ``dialect`` the package ships with its tables computed (``tools/lalr_tables.py``):
-    the fingerprint of what it was made from, and lark's serialization of it."""
-    made_from, _, tables = read_bytes("mintlang.syntax", f"lalr_{grammar_of(dialect).value}.bin").partition(b"\n")
-    return made_from.decode("ascii"), io.BytesIO(tables)
-
-
-def fingerprint(dialect: Dialect) -> str:
-    """What shipped tables must have been computed from: this grammar, with this lark."""
-    digest = hashlib.sha256(grammar_text(dialect).encode("utf-8")).hexdigest()
-    return f"{digest} lark-{lark.__version__}"
+def load_parser(serialized: dict[str, Any]) -> Lark:
+    """The runtime's parser over lark's serialization of one, reading the tokens our lexer made."""
+    data = serialized["data"]
+    options = {**data["options"], "lexer": _PresetTokens}
+    parser = {**data["parser"], "lexer_conf": {**data["parser"]["lexer_conf"], "lexer_type": _PresetTokens}}
+    return Lark.load({"data": {**data, "options": options, "parser": parser}, "memo": serialized["memo"]})
 
 
 @cache
 def _parser(dialect: Dialect) -> Lark:
-    """The shipped parser when it was made from this grammar by this lark (loading it takes a few ms,
-    which every ``mint check`` pays at start-up), else one built now."""
+    """The shipped parser when it was made from this grammar, else one made now with lark itself
+    (after an edit of grammar.lark, until ``python -m tools.lalr_tables`` is run)."""
     try:
-        made_from, tables = shipped_tables(dialect)
-        if made_from == fingerprint(dialect):
-            return Lark.load(tables)
-    except (OSError, ValueError, EOFError, pickle.UnpicklingError):
-        pass  # missing or unreadable: build it
-    return build_parser(dialect)
+        shipped = shipped_tables(dialect)
+        if shipped["grammar"] == grammar_text(dialect):
+            return load_parser(shipped["parser"])
+    except (OSError, KeyError, ValueError, EOFError, pickle.UnpicklingError):
+        pass  # missing or unreadable: compute them
+    from mintlang.syntax.tables import computed  # noqa: PLC0415 - lark's grammar compiler, only then
+
+    return load_parser(computed(dialect))
 
 
 # Beyond these the line is not analysed: the controller takes 255 characters a line,

@@ -1,8 +1,9 @@
 """Start-up: a tool imports only what the command it was given uses.
 
 ``--help`` and ``--version`` of every tool load none of the heavy parts (the parser and
-lark, the rules, the simulator, the migration rules, pygls, rich), and a check that writes
-JSON, or text into a pipe (a pre-commit hook, CI), loads the checker but not rich. A Mint v4
+lark's runtime, the rules, the simulator, the migration rules, pygls, rich), and a check that writes
+JSON, or text into a pipe (a pre-commit hook, CI), loads the checker but not rich, and
+parses with lark's stand-alone runtime and tables, without importing lark. A Mint v4
 run into a pipe loads neither rich nor the other dialects' machines nor the host port server,
 and a migration without ``--verify`` loads no part of the simulator. Each case runs in a fresh
 interpreter, which lists the modules it imported; how long start-up takes is measured by
@@ -34,6 +35,7 @@ print(json.dumps(sorted(sys.modules)))
 
 HEAVY = (
     "lark",
+    "mintlang.syntax.lark_runtime",
     "mintlang.syntax.parser",
     "mintlang.analysis.rules",
     "mintlang.runtime.interpreter",
@@ -103,7 +105,7 @@ def test_a_json_check_loads_the_checker_and_not_rich(tmp_path: Path) -> None:
     program.write_text("SPEED = 10\n", encoding="utf-8")
     output, heavy = run("mintlang.cli", "check", "--format", "json", str(program))
     assert json.loads(output) == []
-    assert heavy == ["lark", "mintlang.syntax.parser", "mintlang.analysis.rules"]
+    assert heavy == ["mintlang.syntax.lark_runtime", "mintlang.syntax.parser", "mintlang.analysis.rules"]
 
 
 def test_a_text_report_into_a_pipe_loads_no_rich_unless_colour_is_forced(tmp_path: Path) -> None:
@@ -190,5 +192,5 @@ NOT_FOR_A_PLAIN_V3_MIGRATION = (
 def test_a_tiny_v3_migration_into_a_pipe_loads_the_rules_and_not_the_simulator(tmp_path: Path) -> None:
     output, imported = run_into_a_pipe(tmp_path, "mintlang.migrate.cli", "PRINT 1\n")
     assert "1 file: 0 changed, 1 unchanged" in output
-    assert loaded(("lark", "mintlang.migrate.rules"), imported) == ["lark", "mintlang.migrate.rules"]
+    assert loaded(("lark", "mintlang.migrate.rules"), imported) == ["mintlang.migrate.rules"]
     assert loaded(NOT_FOR_A_PLAIN_V3_MIGRATION, imported) == []

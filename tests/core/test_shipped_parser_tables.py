@@ -1,36 +1,44 @@
-"""The package ships its parsers' LALR tables, so a start-up loads them instead of computing them.
+"""The package ships its parsers' LALR tables and lark's stand-alone runtime, so a start-up loads
+them instead of importing lark and computing the tables.
 
-When grammar.lark changes, ``python -m tools.lalr_tables`` writes them again;
-until it is run, the tables no longer match and every start would pay for
-computing them, which this test catches.
+When grammar.lark changes or lark is upgraded, ``python -m tools.lalr_tables`` writes them again;
+until it is run, these tests fail (and every start computes the tables with lark itself).
 """
 
 from __future__ import annotations
+
+from pathlib import Path
 
 import pytest
 from lark import Lark, Token
 from lark.exceptions import UnexpectedInput
 
 from mintlang.dialect import Dialect
-from mintlang.syntax.grammar import build_parser, fingerprint, shipped_tables
+from mintlang.syntax import grammar, lark_runtime
+from mintlang.syntax.grammars import grammar_text
 from mintlang.syntax.lexer import lex
 from mintlang.syntax.lines import logical_lines
+from mintlang.syntax.tables import build_parser, runtime_source
 from mintlang.syntax.tokens import TokenKind
 from tests.corpus_files import CORPUS
 
 
 @pytest.mark.parametrize("dialect", list(Dialect))
 def test_the_shipped_tables_were_made_from_the_current_grammar(dialect: Dialect) -> None:
-    made_from, _ = shipped_tables(dialect)
-    assert made_from.split()[0] == fingerprint(dialect).split()[0], (
+    assert grammar.shipped_tables(dialect)["grammar"] == grammar_text(dialect), (
         "grammar.lark changed: run python -m tools.lalr_tables"
     )
 
 
+def test_the_shipped_runtime_is_what_the_installed_lark_generates() -> None:
+    shipped = Path(lark_runtime.__file__).read_text(encoding="utf-8")
+    assert shipped == runtime_source(), "lark was upgraded: run python -m tools.lalr_tables"
+    assert {grammar.shipped_tables(dialect)["lark"] for dialect in Dialect} == {lark_runtime.__version__}
+
+
 @pytest.mark.parametrize("dialect", list(Dialect))
-def test_the_shipped_parser_parses_the_corpus_as_one_built_from_the_grammar(dialect: Dialect) -> None:
-    _, tables = shipped_tables(dialect)
-    shipped = Lark.load(tables)
+def test_the_shipped_parser_parses_the_corpus_as_lark_built_from_the_grammar(dialect: Dialect) -> None:
+    shipped = grammar.load_parser(grammar.shipped_tables(dialect)["parser"])
     built = build_parser(dialect)
     sequences = {
         tuple(line.tokens().kinds)
@@ -39,10 +47,34 @@ def test_the_shipped_parser_parses_the_corpus_as_one_built_from_the_grammar(dial
     }
     assert len(sequences) > 500
     for kinds in sequences:
-        assert _outcome(shipped, kinds) == _outcome(built, kinds), kinds
+        assert _runtime_outcome(shipped, kinds) == _lark_outcome(built, kinds), kinds
 
 
-def _outcome(parser: Lark, kinds: tuple[TokenKind, ...]) -> str:
+def test_a_grammar_edited_since_the_tables_were_written_is_parsed_with_tables_computed_now(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    shipped = grammar.shipped_tables(Dialect.V4)
+    monkeypatch.setattr(grammar, "shipped_tables", lambda dialect: {**shipped, "grammar": "an older grammar"})
+    grammar._parser.cache_clear()
+    try:
+        parser = grammar._parser(Dialect.V4)
+    finally:
+        grammar._parser.cache_clear()
+    kinds = (TokenKind.KEYWORD, TokenKind.EQUAL, TokenKind.NUMBER)
+    assert _runtime_outcome(parser, kinds) == _lark_outcome(build_parser(Dialect.V4), kinds)
+
+
+def _runtime_outcome(parser: lark_runtime.Lark, kinds: tuple[TokenKind, ...]) -> str:
+    stream = [
+        lark_runtime.Token(kind.value, kind.value, start_pos=index, end_pos=index) for index, kind in enumerate(kinds)
+    ]
+    try:
+        return parser.parse(stream).pretty()  # type: ignore[arg-type]
+    except lark_runtime.UnexpectedInput as error:
+        return f"rejected at {getattr(error, 'token', None)!r}"
+
+
+def _lark_outcome(parser: Lark, kinds: tuple[TokenKind, ...]) -> str:
     stream = [Token(kind.value, kind.value, start_pos=index, end_pos=index) for index, kind in enumerate(kinds)]
     try:
         return parser.parse(stream).pretty()  # type: ignore[arg-type]

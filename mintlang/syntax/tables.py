@@ -1,0 +1,65 @@
+"""The parsers' LALR tables and the lark runtime that reads them, made with the installed lark.
+
+``mint`` parses with ``lark_runtime.py``, lark's own stand-alone parser (what
+``python -m lark.tools.standalone`` writes: lark's LALR parser, lexer interface and
+trees, without its grammar compiler, Earley parsers and caches), over tables
+computed here from ``grammar.lark``. Importing lark itself and loading its
+tables took a fifth of a one-line ``mint check``; ``python -m tools.lalr_tables``
+writes both files again after grammar.lark changes or lark is upgraded, and
+``tests/core/test_shipped_parser_tables.py`` fails until it is run.
+"""
+
+from __future__ import annotations
+
+import io
+from collections.abc import Iterator
+from typing import Any
+
+import lark
+from lark import Lark
+from lark.grammar import Rule
+from lark.lexer import Lexer, TerminalDef
+from lark.tools.standalone import gen_standalone
+
+from mintlang.dialect import Dialect
+from mintlang.syntax.grammars import grammar_text
+
+Serialized = dict[str, Any]
+
+
+class _PresetTokens(Lexer):
+    """Hands lark the tokens our own lexer made, as ``grammar._PresetTokens`` hands them to the runtime,
+    whose class the runtime's parser is given when it loads the tables (they depend on the terminals only)."""
+
+    def __init__(self, lexer_conf: object) -> None:  # lark's Lexer interface
+        del lexer_conf
+
+    def lex(self, data: list[lark.Token]) -> Iterator[lark.Token]:  # type: ignore[override]
+        return iter(data)
+
+
+def build_parser(dialect: Dialect) -> Lark:
+    """lark's parser made from the grammar, reading the tokens our lexer made (its LALR tables take a tenth
+    of a second to compute)."""
+    # strict: a shift/reduce conflict is an error, not resolved silently. propagate_positions gives
+    # every subtree the positions of its first and last token, which here are token indices:
+    # computed once per cached tree, they make node spans O(1).
+    return Lark(grammar_text(dialect), parser="lalr", lexer=_PresetTokens, strict=True, propagate_positions=True)
+
+
+def computed(dialect: Dialect) -> Serialized:
+    """lark's serialization of the parser of ``dialect`` (what ``Lark.save`` pickles), with the class of
+    its lexer left out: ``grammar.load_parser`` gives the runtime its own."""
+    data, memo = build_parser(dialect).memo_serialize([TerminalDef, Rule])
+    data["options"] = {name: value for name, value in data["options"].items() if name != "lexer"}
+    del data["parser"]["lexer_conf"]["lexer_type"]
+    return {"data": data, "memo": memo}
+
+
+def runtime_source() -> str:
+    """lark's stand-alone parser module as the installed lark's generator writes it, without tables."""
+    generated = io.StringIO()
+    gen_standalone(build_parser(Dialect.V4), out=generated)
+    code, found, _ = generated.getvalue().partition("\nDATA = (\n")
+    assert found, "lark's stand-alone generator no longer writes its tables as DATA = (...)"
+    return code + "\n"

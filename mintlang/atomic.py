@@ -30,7 +30,6 @@ import contextlib
 import fcntl
 import os
 import stat
-import tempfile
 from pathlib import Path
 
 SUFFIX = ".mint.tmp"
@@ -98,6 +97,8 @@ def write(real: Path, data: bytes, expected: bytes) -> None:
     ``expected`` (else raise ``Stale``), keeping its hard links, permission bits, owner and group."""
     status = real.stat()
     others = names(real, status)[1:]
+    import tempfile  # noqa: PLC0415 - with shutil and random, only when a file is written
+
     handle, temporary = tempfile.mkstemp(dir=real.parent, prefix=f".{real.name[:_NAME_KEPT]}.", suffix=SUFFIX)
     links: list[str] = []
     try:

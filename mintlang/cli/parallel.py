@@ -9,7 +9,6 @@ than it saves.
 from __future__ import annotations
 
 import os
-import signal
 from collections.abc import Callable, Iterator, Sequence
 from typing import TYPE_CHECKING, TypeVar
 
@@ -32,6 +31,8 @@ def all_cores() -> int:
 
 def _ignore_interrupts() -> None:
     """A worker leaves Ctrl-C to the command, which stops them all; each would print a traceback."""
+    import signal  # noqa: PLC0415 - in the workers only, which one file does without
+
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 

@@ -14,7 +14,7 @@ package ships: neither imports lark itself (``tables.py`` says why and makes the
 
 from __future__ import annotations
 
-import pickle
+import marshal
 from collections.abc import Iterator
 from functools import cache
 from typing import Any
@@ -42,7 +42,7 @@ class _PresetTokens(Lexer):
 def shipped_tables(dialect: Dialect) -> dict[str, Any]:
     """What ``tools/lalr_tables.py`` wrote for ``dialect``: the ``grammar`` text the tables were computed
     from, the ``lark`` version that computed them, and lark's serialization of the ``parser``."""
-    return pickle.loads(read_bytes("mintlang.syntax", f"lalr_{grammar_of(dialect).value}.bin"))
+    return marshal.loads(read_bytes("mintlang.syntax", f"lalr_{grammar_of(dialect).value}.bin"))
 
 
 def load_parser(serialized: dict[str, Any]) -> Lark:
@@ -61,7 +61,7 @@ def _parser(dialect: Dialect) -> Lark:
         shipped = shipped_tables(dialect)
         if shipped["grammar"] == grammar_text(dialect):
             return load_parser(shipped["parser"])
-    except (OSError, KeyError, ValueError, EOFError, pickle.UnpicklingError):
+    except (OSError, KeyError, ValueError, EOFError, TypeError):
         pass  # missing or unreadable: compute them
     from mintlang.syntax.tables import computed  # noqa: PLC0415 - lark's grammar compiler, only then
 

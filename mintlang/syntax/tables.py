@@ -57,9 +57,14 @@ def computed(dialect: Dialect) -> Serialized:
 
 
 def runtime_source() -> str:
-    """lark's stand-alone parser module as the installed lark's generator writes it, without tables."""
+    """lark's stand-alone parser module as the installed lark's generator writes it, up to its tables.
+
+    The tables section begins with ``import pickle, zlib, base64``, which only its own tables need:
+    ``grammar.load_parser`` gives the runtime its tables as data, so it never reads a pickle
+    (``Lark.save`` and ``Lark.load`` of a file are the parts of the runtime left without it).
+    """
     generated = io.StringIO()
     gen_standalone(build_parser(Dialect.V4), out=generated)
-    code, found, _ = generated.getvalue().partition("\nDATA = (\n")
-    assert found, "lark's stand-alone generator no longer writes its tables as DATA = (...)"
+    code, found, _ = generated.getvalue().partition("\nimport pickle, zlib, base64\nDATA = (\n")
+    assert found, "lark's stand-alone generator no longer begins its tables with import pickle, zlib, base64"
     return code + "\n"

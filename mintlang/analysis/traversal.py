@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Mapping
 from operator import attrgetter
+from typing import NamedTuple
 
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
@@ -24,9 +25,11 @@ from mintlang.syntax import nodes as n
 __all__ = ["Facts", "KeywordUse", "LineParts", "LineScope", "LineShape", "Use", "gather", "line_shape"]
 
 
-@record
-class LineScope:
-    """One logical line of one file, with what a rule may know beside it: the controller and the dialect."""
+class LineScope(NamedTuple):
+    """One logical line of one file, with what a rule may know beside it: the controller and the dialect.
+
+    A named tuple: there is one per distinct line of every check, made in half a record's time.
+    """
 
     unit: Unit
     syntax: n.LineSyntax

@@ -28,6 +28,7 @@ from mintlang.migrate.rules.renames import same_value_constants
 from mintlang.semantic.events import EventKind, event_of
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
+from mintlang.syntax.alike import carry_to_v4
 from mintlang.syntax.parents import ancestors
 
 
@@ -266,14 +267,20 @@ class FastLatch(Rule):
 
 @per_pass
 def v4_errors(context: Context) -> tuple[tuple[FileView, tuple[Diagnostic, ...]], ...]:
-    """Each file with the errors ``mint check`` finds in it as Mint v4 on the target controller."""
+    """Each file with the errors ``mint check`` finds in it as Mint v4 on the target controller.
+
+    The lines of the pass's v3 reading that Mint v4 reads alike are carried over (``carry_to_v4``):
+    only the others are lexed and parsed again, and the two readings share those lines' syntax."""
     files = context.files
     configuration = files.get(Unit.CONFIGURATION)
+    target = context.controller.controller
     with apart(context.v4_shelf):  # the v4 readings' lines are of no use to the v3 readings of the run
+        for file in context.compiled:
+            carry_to_v4(file.document, target)
         analysis = mintlang.check_application(
             files[Unit.PROGRAM].text,
             dialect="v4",
-            controller=context.controller.controller,
+            controller=target,
             config=configuration.text if configuration is not None else None,
         )
     return _per_file(context, analysis)

@@ -349,6 +349,14 @@ def _quote_issues(text: str, start: int, typographic: str, plain: str) -> list[D
 _lexed: dict[Dialect, RecentCache[str, LexedLine]] = {dialect: RecentCache(LINES_KEPT) for dialect in Dialect}
 
 
+def remember(dialect: Dialect, line: LexedLine) -> None:
+    """Take ``line`` for what lexing its text as ``dialect`` gives, unless the cache holds that text
+    already: for a caller that knows ``dialect`` lexes it alike (``mintlang.syntax.alike``)."""
+    cache = _lexed[dialect]
+    if cache.get(line.text) is None:
+        cache.put(line.text, line)
+
+
 def clear_cache() -> None:
     for lines in _lexed.values():
         lines.clear()

@@ -165,6 +165,17 @@ def _parsed_in(dialect: Dialect, controller: Controller | None) -> RecentCache[_
     return cache
 
 
+def remember(line: n.PlacedLine, dialect: Dialect, controller: Controller | None) -> None:
+    """Take the syntax of ``line`` for what parsing its text as ``dialect`` on ``controller`` gives,
+    unless its own parse found something (diagnostics, macros defined or expanded) or the cache holds
+    that text already: for a caller that knows the two read it alike (``mintlang.syntax.alike``)."""
+    if type(line.content) is not _ParsedLine:
+        return
+    cache, text = _parsed_in(dialect, controller), line.syntax.text
+    if cache.get(text) is None:
+        cache.put(text, _ParsedLine(line.syntax))  # a content of its own: later caches tell the dialects apart
+
+
 def clear_caches() -> None:
     """Forget lexed and parsed lines (benchmarks measure cold runs with this)."""
     clear_lex_cache()

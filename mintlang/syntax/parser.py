@@ -465,6 +465,8 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) ->
     opened = segment.count(_K.LPAR) - segment.count(_K.RPAR)
     expected = failure.expected
     found = "the end of the statement" if at_end else f"'{line.texts[index]}'"
+    if not at_end and kinds[index] is _K.RPAR and index > begin and kinds[index - 1] is _K.LPAR:
+        return _empty_brackets(line, begin, index)
     # The manual's examples: a missing ")" is a syntax error (2003), one ")" too many is 2004.
     if opened < 0 or (not at_end and kinds[index] is _K.RPAR and opened <= 0):
         return _error(2004, span, "there is a ')' too many")
@@ -503,6 +505,14 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) ->
     if line.expanded[index if not at_end else end - 1]:
         return _error(2003, span, f"unexpected {_unexpected(found)} in the text of a macro")
     return _error(2003, span, f"unexpected {_unexpected(found)}")
+
+
+def _empty_brackets(line: LogicalLine, begin: int, closing: int) -> Diagnostic:
+    """``ABS()``: as many ``)`` as ``(`` (so not 2004, 000:18925-18928), but a value missing between them."""
+    span = shared_span(line.starts[closing - 1], line.ends[closing])
+    called = closing - 2 >= begin and line.kinds[closing - 2] in (_K.FUNCTION, _K.NAME)  # ABS(), an array's t()
+    named = f" of {line.texts[closing - 2]}" if called else ""
+    return _error(2003, span, f"nothing between the brackets{named}")
 
 
 def _only_a_command(word: str) -> bool:

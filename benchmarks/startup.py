@@ -62,7 +62,7 @@ def step(name):
     marks.append((name, time.process_time()))
 import click; step("click")
 import mintlang.cli.check; step("mint check's command line: settings, files, report (mintlang.cli.check)")
-import lark; step("lark")
+import mintlang.syntax.lark_runtime; step("lark's stand-alone runtime")
 import mintlang.syntax.parser; step("the parser's modules (syntax nodes, lexer, builders)")
 import mintlang.keyworddb; mintlang.keyworddb.database(); step("the keyword database loaded")
 mintlang.parse("SPEED = 10"); step("first parse: LALR tables loaded, the line lexed and parsed")

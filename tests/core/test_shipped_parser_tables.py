@@ -9,9 +9,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import lark
 import pytest
-from lark import Lark, Token
-from lark.exceptions import UnexpectedInput
 
 from mintlang.dialect import Dialect
 from mintlang.syntax import grammar, lark_runtime
@@ -47,7 +46,7 @@ def test_the_shipped_parser_parses_the_corpus_as_lark_built_from_the_grammar(dia
     }
     assert len(sequences) > 500
     for kinds in sequences:
-        assert _runtime_outcome(shipped, kinds) == _lark_outcome(built, kinds), kinds
+        assert _outcome(shipped, kinds) == _outcome(built, kinds), kinds
 
 
 def test_a_grammar_edited_since_the_tables_were_written_is_parsed_with_tables_computed_now(
@@ -61,22 +60,14 @@ def test_a_grammar_edited_since_the_tables_were_written_is_parsed_with_tables_co
     finally:
         grammar._parser.cache_clear()
     kinds = (TokenKind.KEYWORD, TokenKind.EQUAL, TokenKind.NUMBER)
-    assert _runtime_outcome(parser, kinds) == _lark_outcome(build_parser(Dialect.V4), kinds)
+    assert _outcome(parser, kinds) == _outcome(build_parser(Dialect.V4), kinds)
 
 
-def _runtime_outcome(parser: lark_runtime.Lark, kinds: tuple[TokenKind, ...]) -> str:
-    stream = [
-        lark_runtime.Token(kind.value, kind.value, start_pos=index, end_pos=index) for index, kind in enumerate(kinds)
-    ]
+def _outcome(parser: lark.Lark | lark_runtime.Lark, kinds: tuple[TokenKind, ...]) -> str:
+    """The tree of the parse, or the token it stopped at, in the token and error classes of the parser's lark."""
+    own = lark_runtime if isinstance(parser, lark_runtime.Lark) else lark
+    stream = [own.Token(kind.value, kind.value, start_pos=index, end_pos=index) for index, kind in enumerate(kinds)]
     try:
         return parser.parse(stream).pretty()  # type: ignore[arg-type]
-    except lark_runtime.UnexpectedInput as error:
-        return f"rejected at {getattr(error, 'token', None)!r}"
-
-
-def _lark_outcome(parser: Lark, kinds: tuple[TokenKind, ...]) -> str:
-    stream = [Token(kind.value, kind.value, start_pos=index, end_pos=index) for index, kind in enumerate(kinds)]
-    try:
-        return parser.parse(stream).pretty()  # type: ignore[arg-type]
-    except UnexpectedInput as error:
+    except own.UnexpectedInput as error:
         return f"rejected at {getattr(error, 'token', None)!r}"

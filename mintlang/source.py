@@ -3,19 +3,24 @@
 Old Windows tools saved programs in cp1252 or latin-1. A file is decoded as
 UTF-8 when it is valid UTF-8, else as cp1252, else as latin-1 (which maps
 every byte); encoding the text again with the same codec gives back the same
-bytes, so tools that rewrite a file never change what they did not mean to.
+bytes, so tools that rewrite a file never change what they did not mean to. A
+UTF-8 byte order mark is read as part of the encoding (``utf-8-sig``), not of the
+text: no editor shows it, so columns on line 1 count from the first character
+shown, and writing the file back puts the mark back.
 """
 
 from __future__ import annotations
 
 import errno
 import stat
+from codecs import BOM_UTF8
 from pathlib import Path
 
 from mintlang.diagnostics import LineIndex
 from mintlang.records import record
 
 _ENCODINGS = ("utf-8", "cp1252", "latin-1")
+_MARKED = ("utf-8-sig", *_ENCODINGS)  # utf-8-sig drops the mark when it decodes and writes it when it encodes
 
 
 @record
@@ -43,7 +48,7 @@ class SourceFile:
 
 def decode(data: bytes) -> tuple[str, str]:
     """The text of ``data`` and the encoding that reproduces ``data`` exactly."""
-    for encoding in _ENCODINGS:
+    for encoding in _MARKED if data.startswith(BOM_UTF8) else _ENCODINGS:
         try:
             text = data.decode(encoding)
         except UnicodeDecodeError:

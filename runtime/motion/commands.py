@@ -504,8 +504,11 @@ class Motion:
         axis.position_offset = axis.measured - value * axis.scale
 
     def _encoder(self, channel: int | None) -> float:
+        """The encoder's count, within 0 to ENCODERWRAP - 1 when a wrap is set (000:9813-9826)."""
         axis = self.watched(self.axis(channel), moving=True)
-        return axis.measured - axis.encoder_offset
+        counts = axis.measured - axis.encoder_offset
+        wrap = axis.parameters["ENCODERWRAP"]
+        return counts % wrap if wrap > 0 else counts
 
     def _write_encoder(self, channel: int | None, value: float) -> None:
         axis = self.axis(channel)

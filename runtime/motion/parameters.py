@@ -55,6 +55,7 @@ DEFAULTS: Mapping[str, float] = MappingProxyType(
         "MOVEBUFFERSIZE": 2.0,
         "CONFIG": 1.0,
         "DRIVEENABLEOUTPUT": -1.0,
+        "ENCODERWRAP": 0.0,  # counts; 0 is no wrap (000:9024, 9825)
     }
 )
 SCALED: frozenset[str] = frozenset(

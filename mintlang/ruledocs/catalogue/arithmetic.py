@@ -15,8 +15,9 @@ GROUP = Group(
             catches="A `/` or a `MOD` (`%`) whose divisor is zero whatever the program does: `0`, "
             "`0.0`, `(0)`, `-0`, a macro defined as 0, or numbers and constants that work out to 0 "
             "(`(2 - 2)`, `NOT 1`), worked out as the controller holds numbers (an 8-bit exponent and "
-            "a 24-bit mantissa), so `(0.1 + 0.2 - 0.3)` is 0 too. A divisor read from a variable, an array or a keyword such as VEL "
-            "is not reported: it is zero only at times, which the program has to test.",
+            "a 24-bit mantissa), so `(0.1 + 0.2 - 0.3)` is 0 too. A divisor read from a variable, an "
+            "array or a keyword such as VEL is not reported: it is zero only at times, which the program "
+            "has to test.",
             why="The program compiles, and the controller raises this error each time the line runs.",
             example=Example(
                 before="DEFINE move_time = 0\nDIM distance = 400\nPRINT distance / move_time\n",

@@ -27,8 +27,9 @@ from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 _NOTEQUAL, _LESSEQUAL, _MOREEQUAL = TokenKind.NOTEQUAL, TokenKind.LESSEQUAL, TokenKind.MOREEQUAL  # v3 reads ``< =``
 _SPACEABLE = frozenset({_NOTEQUAL, _LESSEQUAL, _MOREEQUAL})
+_STRING, _CHAR = TokenKind.STRING, TokenKind.CHAR
 _OR = frozenset({TokenKind.OR, TokenKind.XOR})
-# Every word of a line's code, upper-cased, and some pieces of its strings and labels besides: a
+# Every word of a line's code, upper-cased, and some pieces of its numbers and labels besides: a
 # line is carried when all of them are alike, so the extra pieces can only keep one from it.
 _WORD = re.compile("[A-Z_][A-Z0-9_]*")
 
@@ -78,8 +79,7 @@ class _Words:
         kinds = line.kinds  # searched by identity: hashing a kind costs a Python call
         if (_NOTEQUAL in kinds or _LESSEQUAL in kinds or _MOREEQUAL in kinds) and _spaced(line):
             return False
-        code = line.text if line.comment_start < 0 else line.text[: line.comment_start]
-        words = set(_WORD.findall(code.upper()))
+        words = set(_WORD.findall(_code(line).upper()))
         if words <= self._same:
             return True
         if not words.isdisjoint(self._differ):
@@ -95,6 +95,22 @@ class _Words:
         if built_v3.canonical.get(upper) != built_v4.canonical.get(upper):
             return False
         return not upper[-1].isdigit() or built_v3.split_channel(upper) == built_v4.split_channel(upper)
+
+
+def _code(line: LexedLine) -> str:
+    """The text of ``line`` without its comment, strings and characters (a space in place of each):
+    the words a v3 program prints, "at" or "DE", are no tokens."""
+    text = line.text if line.comment_start < 0 else line.text[: line.comment_start]
+    kinds = line.kinds
+    if _STRING not in kinds and _CHAR not in kinds:
+        return text
+    pieces, last = [], 0
+    for kind, start, end in zip(kinds, line.starts, line.ends, strict=True):
+        if kind is _STRING or kind is _CHAR:
+            pieces.append(text[last:start])
+            last = end
+    pieces.append(text[last:])
+    return " ".join(pieces)
 
 
 def _spaced(line: LexedLine) -> bool:

@@ -52,6 +52,7 @@ ALIKE = [
     "MOVEA.0 = 100 : GO.0",
     "PAUSE IDLE[0,1] : OUT.1 = 1",
     "FOR n = 1 TO 10 : NEXT",
+    "PRINT \"at the DE end: \", a, 'A' : REM HMSPEED",  # words of strings and comments are no tokens
 ]
 
 

@@ -46,9 +46,8 @@ MAX_PASSES = 6  # a phase that still edits after this many passes has a rule tha
 # user name no keyword has). The pass confirming it re-ran every rule to find nothing; it is
 # skipped, so a rule of these phases rewriting its own output would go unseen at run time:
 # tests/migrate/test_phases_settle_in_one_pass.py runs that pass on the corpora and on every
-# keyword of both dialects and holds it to finding nothing. The other phases' rules feed one
-# another (S-ACCEL copies a value M-PREC then brackets; M-DIM flags a line its own DIM moved
-# down) and keep their confirming pass.
+# keyword of both dialects and holds it to finding nothing. The other phases keep their
+# confirming pass: their rules may feed one another (S-ACCEL copies a value M-PREC then brackets).
 SETTLED_IN_ONE_PASS = frozenset({Phase.ABBREVIATIONS, Phase.RENAMES})
 
 
@@ -188,9 +187,25 @@ def _apply_pass(
 
 def _writes_markers(edit: Edit) -> bool:
     """Whether ``edit`` inserts whole ``REM MIGRATE:`` lines and nothing else (a line split does more)."""
+    lines = _inserted_lines(edit)
+    return bool(lines) and all(_is_marker(line) for line in lines)
+
+
+def _inserts_lines_above(edit: Edit) -> bool:
+    """Whether ``edit`` inserts whole lines, none of them a marker: lines that go above the line at its point."""
+    lines = _inserted_lines(edit)
+    return bool(lines) and not any(_is_marker(line) for line in lines)
+
+
+def _inserted_lines(edit: Edit) -> list[str]:
+    """The lines ``edit`` inserts when it inserts whole lines and nothing else; none otherwise."""
     lines = split_lines(edit.text, keepends=True)
-    whole = all(line.lstrip().startswith(MARKER) and line.endswith(("\n", "\r")) for line in lines)
-    return edit.span.start == edit.span.end and bool(lines) and whole
+    whole = edit.span.start == edit.span.end and all(line.endswith(("\n", "\r")) for line in lines)
+    return lines if whole else []
+
+
+def _is_marker(line: str) -> bool:
+    return line.lstrip().startswith(MARKER)
 
 
 def _marker(file: FileView, rule: str, flag: Flag, flagged: set[tuple[Unit, int, str]]) -> Edit | None:
@@ -234,8 +249,10 @@ def _after_opening(file: FileView, offset: int) -> Span | None:
 def _non_overlapping(edits: list[Edit]) -> list[Edit]:
     """The edits that touch no earlier-accepted edit (rule order decides), sorted by position.
 
-    Insertions at one point keep the order they were asked for; an insertion may
-    sit at either end of a replacement, never inside it. The accepted replacements
+    Insertions at one point keep the order they were asked for, except that whole lines
+    (``DIM a``) go above the rest: a marker asked for there belongs to the line below
+    it, and other text inserted there begins that line. An insertion may sit at either
+    end of a replacement, never inside it. The accepted replacements
     (which never overlap) and insertion points are kept sorted, so each check is a
     bisection, not a comparison with every edit accepted so far.
     """
@@ -257,7 +274,7 @@ def _non_overlapping(edits: list[Edit]) -> list[Edit]:
                 continue
             insort(replacements, (start, end))
         accepted.append(edit)
-    return sorted(accepted, key=lambda edit: (edit.span.start, edit.span.end))
+    return sorted(accepted, key=lambda edit: (edit.span.start, edit.span.end, not _inserts_lines_above(edit)))
 
 
 def _apply(state: _FileState, edits: list[Edit]) -> None:

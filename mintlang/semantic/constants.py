@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import math
-import struct
 from collections.abc import Callable
 
+from mintlang import binary32
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.syntax import nodes as n
@@ -47,14 +47,6 @@ def constant_value(
     return value if rounded is None or value is None else rounded(value)
 
 
-_BINARY32 = struct.Struct("<f")
-
-
-def _binary32(value: float) -> float:
-    """``value`` rounded to the nearest binary32 number; OverflowError when it has none."""
-    return _BINARY32.unpack(_BINARY32.pack(value))[0]
-
-
 def held_value(expression: n.Expression | None, dialect: Dialect = Dialect.V4) -> float | None:
     """The value a Mint v4 or MintMT controller works out for ``expression``, when known before it runs.
 
@@ -63,7 +55,7 @@ def held_value(expression: n.Expression | None, dialect: Dialect = Dialect.V4) -
     and ``16777217`` is 16777216. None also when a result is too large to hold (the run's error 3).
     """
     try:
-        return constant_value(expression, dialect, rounded=_binary32)
+        return constant_value(expression, dialect, rounded=binary32.rounded)
     except OverflowError:
         return None
 

@@ -12,7 +12,6 @@ indices of their first and last token (``Tree.meta``).
 from __future__ import annotations
 
 from collections.abc import Callable
-from functools import lru_cache
 from typing import TypeVar
 
 from mintlang.diagnostics import Span
@@ -50,19 +49,6 @@ _OPERATORS = {
     "TILDE": "~",
 }
 _QUOTES = '"\u201c\u201d\u201e\u201f\u2033'
-
-
-@lru_cache(maxsize=8192)  # one float per literal text: programs write the same numbers again and again
-def number_value(text: str) -> float:
-    """The value of a valid Mint number literal: decimal, binary (leading 0) or 0x hex."""
-    if text.isdigit() and (text[0] != "0" or len(text) == 1):
-        return float(text)  # the common case
-    digits = text.replace("_", "")
-    if digits[:2] in ("0x", "0X"):
-        return float(int(digits[2:], 16))
-    if len(digits) > 1 and digits[0] == "0" and "." not in digits:
-        return float(int(digits, 2))
-    return float(digits)
 
 
 # --------------------------------------------------------------- small pieces
@@ -531,7 +517,7 @@ def _shared(table: dict[K, V], key: K, make: Callable[[], V]) -> V:
 
 
 def _number(start: int, end: int, text: str) -> n.Number:
-    return _shared(_numbers, (start, end, text), lambda: n.Number(_span(start, end), text, number_value(text)))
+    return _shared(_numbers, (start, end, text), lambda: n.Number(_span(start, end), text, n.number_value(text)))
 
 
 def _leaf(token: Child) -> Make[n.Expression]:

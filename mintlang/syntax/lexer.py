@@ -26,12 +26,14 @@ from collections.abc import Iterator, Sequence
 from sys import intern
 from typing import TypeVar, overload
 
+from mintlang import binary32
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import mint_error, own
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.records import record
 from mintlang.syntax.moved import MovedOffsets
+from mintlang.syntax.nodes import number_value
 from mintlang.syntax.tokens import Token, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
@@ -269,13 +271,16 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
         elif group == "number":
             if previous is _DOT:  # a dot parameter: digits only, "2.65" is ".2" then ".65"
                 text = _DIGITS_AFTER_DOT.match(line, position, content_end).group()  # type: ignore[union-attr]
-            if text.isdigit() and (text[0] != "0" or len(text) == 1):
+            if text.isdigit() and (text[0] != "0" or len(text) == 1) and len(text) < _SHORTEST_TOO_LARGE:
                 kind = _NUMBER  # the common case: a plain decimal integer
             else:
                 problem = _number_issue(text, dialect)
                 kind = _NUMBER if problem is None else _INVALID
                 if problem is not None:
                     issues.append(_syntax_issue(position, len(text), problem))
+                elif len(text) >= _SHORTEST_TOO_LARGE_HEX and dialect.modern and _too_large(text):
+                    detail = f"{text} is too large for a Mint number"
+                    issues.append(mint_error(3, Span(position, position + len(text)), detail))
         elif group == "string":
             kind = _STRING
             issues.extend(_string_issues(text, position))
@@ -318,6 +323,19 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
 def _content_end(line: str) -> int:
     """Where the line break of ``line`` starts."""
     return len(line) - (2 if line.endswith("\r\n") else 1 if line.endswith(("\n", "\r")) else 0)
+
+
+# A Mint v4 number is binary32 (000:714-716), at most about 3.4E+38: 39 decimal digits, or 0x and 32 hex digits.
+_SHORTEST_TOO_LARGE, _SHORTEST_TOO_LARGE_HEX = 39, 34
+
+
+def _too_large(text: str) -> bool:
+    """Whether the valid literal ``text`` is beyond the controller's numbers: mint-run stops on it with error 3."""
+    try:
+        binary32.rounded(number_value(text))
+    except OverflowError:
+        return True
+    return False
 
 
 def _syntax_issue(start: int, length: int, message: str) -> Diagnostic:

@@ -9,7 +9,9 @@ Names keep their spelling; ``identity`` gives the controller's view of a name
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Hashable, Iterator
+from functools import lru_cache
 from operator import attrgetter
 from typing import NamedTuple, TypeVar
 
@@ -45,6 +47,27 @@ class Number:
     span: Span
     text: str
     value: float
+
+
+@lru_cache(maxsize=8192)  # one float per literal text: programs write the same numbers again and again
+def number_value(text: str) -> float:
+    """The value of a valid Mint number literal: decimal, binary (leading 0) or 0x hex; infinite when
+    it is too large for a double (no controller holds it: the lexer reports it, mint-run stops on it)."""
+    if text.isdigit() and (text[0] != "0" or len(text) == 1):
+        return float(text)  # the common case
+    digits = text.replace("_", "")
+    if digits[:2] in ("0x", "0X"):
+        return _whole(int(digits[2:], 16))
+    if len(digits) > 1 and digits[0] == "0" and "." not in digits:
+        return _whole(int(digits, 2))
+    return float(digits)
+
+
+def _whole(value: int) -> float:
+    try:
+        return float(value)
+    except OverflowError:
+        return math.inf
 
 
 def character_code(text: str) -> int:

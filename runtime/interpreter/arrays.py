@@ -7,15 +7,20 @@ are 0. A DIM that cannot make its array (a size that is not a whole number from
 
 from __future__ import annotations
 
+import math
+from collections.abc import Callable
+
 from mintlang.runtime.errors import MintError
 from mintlang.syntax import nodes as n
 
 INVALID_INDEX = 2016
+OUT_OF_RANGE = 3
 SYNTAX_ERROR = 2003
 
 
-def array_problem(statement: n.Dim) -> MintError | None:
-    """Why the array of ``statement`` (a DIM with a size) cannot be made; None when it can."""
+def array_problem(statement: n.Dim, number: Callable[[float], float]) -> MintError | None:
+    """Why the array of ``statement`` (a DIM with a size) cannot be made, its elements held as ``number`` holds
+    a value (the dialect's); None when it can."""
     size = constant(statement.size)
     if size is None or size < 1 or size != int(size):
         return MintError(INVALID_INDEX, detail=f"the size of array {statement.name.text} must be a whole number from 1")
@@ -25,7 +30,19 @@ def array_problem(statement: n.Dim) -> MintError | None:
     if len(statement.values) > size:
         detail = f"array {statement.name.text} has {int(size)} elements: {len(statement.values)} values are too many"
         return MintError(INVALID_INDEX, detail=detail)
+    for value in statement.values:
+        try:
+            held(constant(value), number)  # type: ignore[arg-type]
+        except MintError as problem:
+            return problem
     return None
+
+
+def held(value: float, number: Callable[[float], float]) -> float:
+    """``value`` as ``number`` holds it; one too large even for a double (1 and 400 zeros) is out of range too."""
+    if math.isinf(value):
+        raise MintError(OUT_OF_RANGE, detail="number too large")
+    return number(value)
 
 
 def initial_values(statement: n.Dim) -> list[float]:

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter import generated
+from mintlang.runtime.interpreter.arrays import held
 from mintlang.runtime.interpreter.generated import Emitter, Source
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.keywords import KeywordTable, Reader
@@ -51,7 +52,7 @@ class ExpressionCompiler:
     def compile(self, expression: n.Expression) -> Evaluate:
         kind = type(expression)
         if kind is n.Number or kind is n.CharConstant:
-            value = self.semantics.number(float(expression.value))  # type: ignore[union-attr]
+            value = self.literal(expression)  # type: ignore[arg-type]
             return lambda: value
         if kind is n.Parenthesised:
             return self.compile(expression.expression)  # type: ignore[union-attr]
@@ -70,14 +71,17 @@ class ExpressionCompiler:
             return self.call(expression)  # type: ignore[arg-type]
         raise TypeError(f"not an expression: {expression!r}")
 
+    def literal(self, expression: n.Number | n.CharConstant) -> float:
+        """A number as written, as the dialect holds it (``arrays.held``)."""
+        return held(float(expression.value), self.semantics.number)
+
     def source(self, expression: n.Expression, emitter: Emitter) -> Source:
         """``expression`` as the text of a generated function (``generated.py``), its values named by ``emitter``."""
         kind = type(expression)
         if kind is n.Parenthesised:
             return self.source(expression.expression, emitter)  # type: ignore[union-attr]
         if kind is n.Number or kind is n.CharConstant:
-            number = self.semantics.number
-            return Source(emitter.name(number(float(expression.value))), binary32=number is f32)  # type: ignore[union-attr]
+            return Source(emitter.name(self.literal(expression)), binary32=self.semantics.number is f32)  # type: ignore[arg-type]
         if kind is n.VariableRef and expression.name.identity not in self.names.macros:  # type: ignore[union-attr]
             return Source(emitter.scalar(self.vm.scalars, self.scalar_slot(expression.name)))  # type: ignore[union-attr]
         if kind is n.ConstantRef:

@@ -164,7 +164,7 @@ def _allocate(model: SemanticModel, vm: Interpreter, names: Names, initial: Call
         vm.scalars.append(0.0)
     for _, _, facts in model.lines:
         for statement in facts.statements:
-            if type(statement) is n.Dim and statement.size is not None and array_problem(statement) is None:
+            if type(statement) is n.Dim and statement.size is not None and array_problem(statement, initial) is None:
                 _dim_array(statement, vm, names, [initial(value) for value in initial_values(statement)])
 
 

@@ -156,7 +156,10 @@ class StatementCompiler:
         return store_element
 
     def dim(self, statement: n.Dim, pc: int) -> Operation:
-        if statement.size is not None and (problem := array_problem(statement)) is not None:
+        if (
+            statement.size is not None
+            and (problem := array_problem(statement, self.expressions.semantics.initial)) is not None
+        ):
             raise problem
         if statement.size is not None or not statement.values:
             return _nothing  # arrays are initialised when the program is compiled, not when DIM runs

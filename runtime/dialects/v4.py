@@ -13,7 +13,7 @@ from mintlang.runtime.semantics import Semantics
 V4 = Semantics(
     dialect=Dialect.V4,
     number=f32,
-    initial=float,  # the written value itself (NM-6)
+    initial=f32,  # held as any number is (NM-6): DIM a(1) = 0.1 equals a(1) = 0.1
     binary=BINARY_OPERATORS,
     unary=UNARY_OPERATORS,
     functions=FUNCTIONS,

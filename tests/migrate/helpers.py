@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import mintlang
 from mintlang.diagnostics import LineIndex, Severity
+from mintlang.keyworddb import database
 from mintlang.migrate import MigrationResult, migrate
 
 
@@ -42,3 +43,12 @@ def errors_left_unflagged(result: MigrationResult, controller: str) -> list[str]
     if result.configuration is not None:
         left += [f"configuration {error}" for error in unflagged_errors(result.configuration, analysis.configuration)]
     return left
+
+
+def every_word() -> list[str]:
+    """Every keyword of both dialects and every abbreviation, each once, sorted: the migrator's keyword sweeps."""
+    db = database()
+    words = set(db.v3_keywords) | set(db.keywords)
+    for keyword in (*db.v3_keywords.values(), *db.keywords.values()):
+        words.update(keyword.abbreviations)
+    return sorted(words)

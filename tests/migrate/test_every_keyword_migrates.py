@@ -15,19 +15,12 @@ import pytest
 
 from mintlang.keyworddb import database
 from mintlang.migrate import migrate
+from tests.migrate.helpers import every_word
 
 CONTROLLERS = ("nextmove-pci", "mintdrive")
 
 
-def _words() -> list[str]:
-    db = database()
-    words = set(db.v3_keywords) | set(db.keywords)
-    for keyword in (*db.v3_keywords.values(), *db.keywords.values()):
-        words.update(keyword.abbreviations)
-    return sorted(words)
-
-
-WORDS = _words()
+WORDS = every_word()
 
 
 def test_the_sweep_covers_both_dialects() -> None:

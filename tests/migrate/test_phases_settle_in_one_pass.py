@@ -12,9 +12,9 @@ from pathlib import Path
 
 import pytest
 
-from mintlang.keyworddb import database
 from mintlang.migrate import engine, migrate
 from mintlang.migrate.model import MigrationResult, Phase
+from tests.migrate.helpers import every_word
 
 CORPUS = Path(__file__).parents[1] / "corpus"
 
@@ -36,14 +36,6 @@ def _corpus() -> list[tuple[str, str | None]]:
             )
         )
     return found
-
-
-def _words() -> list[str]:
-    db = database()
-    words = set(db.v3_keywords) | set(db.keywords)
-    for keyword in (*db.v3_keywords.values(), *db.keywords.values()):
-        words.update(keyword.abbreviations)
-    return sorted(words)
 
 
 def _forms(word: str) -> str:
@@ -80,7 +72,7 @@ def test_a_confirming_pass_changes_no_corpus_migration(
 
 @pytest.mark.parametrize("controller", ["nextmove-pci", "mintdrive"])
 def test_a_confirming_pass_changes_no_keyword_form(monkeypatch: pytest.MonkeyPatch, controller: str) -> None:
-    for word in _words():
+    for word in every_word():
         source = _forms(word)
         once = migrate(source, controller=controller)
         assert once == _confirmed(monkeypatch, source, controller=controller), f"{word!r} on {controller}"

@@ -23,7 +23,6 @@ from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.records import record
 from mintlang.runtime.controller import Controller, build_controller
 from mintlang.runtime.dialects import semantics
-from mintlang.runtime.dialects.v3.compiling import UNDEFINED_VARIABLE, undefined_variables
 from mintlang.runtime.errors import ErrorStyle, MintError, NotSimulated
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import StopReason
@@ -81,7 +80,7 @@ _LINE_END = re.compile(r"[\r\n]|$")
 
 def _compile_error(analysis: mintlang.Analysis, errors: ErrorStyle) -> _CompileError | None:
     """The first error the compiler finds: the configuration is compiled (and run) first, then the program
-    (000:269-271); a v3 program also fails on a variable read before it is declared."""
+    (000:269-271)."""
     model = analysis.model
     found: list[tuple[int, int, int, Unit, Span, str]] = []  # (file order, offset, code, unit, span, explanation)
     for unit, _ in model.documents():
@@ -89,11 +88,6 @@ def _compile_error(analysis: mintlang.Analysis, errors: ErrorStyle) -> _CompileE
         first = next((d for d in diagnostics if d.mint_error is not None and not d.at_run_time), None)
         if first is not None and first.mint_error is not None:
             found.append((_ORDER[unit], first.span.start, first.mint_error, unit, first.span, first.message))
-    if model.program.dialect is Dialect.V3:
-        for reference in undefined_variables(model):
-            explanation = f"{reference.spelling} is read before anything declares it"
-            unit = reference.unit
-            found.append((_ORDER[unit], reference.span.start, UNDEFINED_VARIABLE, unit, reference.span, explanation))
     if not found:
         return None
     _, _, code, unit, span, explanation = min(found, key=lambda problem: problem[:2])

@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 from bisect import bisect_left, bisect_right
 from collections.abc import Callable, Iterator
+from dataclasses import replace
 from functools import cache, partial
 from itertools import islice
 
@@ -28,6 +29,7 @@ from mintlang.keyworddb.model import KeywordKind
 from mintlang.records import record
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, Unit
+from mintlang.semantic.v3_declarations import undefined_variables
 from mintlang.syntax import nodes as n
 from mintlang.syntax.tokens import TokenKind
 
@@ -36,6 +38,8 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     if model.program.dialect.modern:
         yield from _undeclared_variables(model, _broken_dims(facts))
+    else:
+        yield from _v3_undefined_variables(model)
     yield from _labels(facts, _jump_words(facts))
     yield from _macros(model)
 
@@ -118,6 +122,21 @@ def _undeclared_variables(model: SemanticModel, broken_dims: dict[str, tuple[Uni
                 fixes = (_replace_each(written, keyword), *fixes) if written else fixes
             error = mint_error(3001, occurrence.span, detail, fixes=fixes, from_v3=was is not None or was_keyword)
             yield Finding(occurrence.unit, error)
+
+
+def _v3_undefined_variables(model: SemanticModel) -> Iterator[Finding]:
+    """A Mint v3 read of a variable that nothing declared earlier in the text: an assignment, FOR or INPUT
+    declares it (001:1352-1367), so the controller's compiler stops with "Undefined Variables" (001:12971-12973)."""
+    for occurrence, _ in _by_line(model, list(undefined_variables(model))):
+        detail = (
+            f"'{occurrence.spelling}' is read before anything declares it: in Mint v3 an assignment, FOR or INPUT "
+            "earlier in the text declares a variable"
+        )
+        error = mint_error(3001, occurrence.span, detail)
+        yield Finding(occurrence.unit, replace(error, message=f"{_V3_TITLE}: {detail}"))
+
+
+_V3_TITLE = "Undefined Variables"  # the v3 guide's name for the error (001:12971)
 
 
 def _keyword_holding_a_value(spelling: str, model: SemanticModel) -> str | None:

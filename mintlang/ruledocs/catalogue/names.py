@@ -19,14 +19,16 @@ GROUP = Group(
             3001,
             catches="A name used as a variable before any DIM declares it, in compile order (the "
             "configuration file, then the program, top to bottom). Reported once per line, at the first "
-            "use. A Mint v3 keyword or constant read this way is said with what it became in v4.",
+            "use. A Mint v3 keyword or constant read this way is said with what it became in v4. In a "
+            "Mint v3 program (no DIM for variables) it is a read of a variable before any assignment, FOR "
+            "or INPUT earlier in the text declares it, the v3 guide's \"Undefined Variables\".",
             why="Mint v4 declares every variable at compile time: an undeclared name stops the program "
             "from compiling. It is often a misspelling of a declared name, which the message then offers.",
             example=Example(
                 before='PRINT "Current axis speed is ", axis_speed\n',
                 after='DIM axis_speed = 100\nPRINT "Current axis speed is ", axis_speed\n',
             ),
-            manual=("v4:19073", "v4:865", "v4:9157"),
+            manual=("v4:19073", "v4:865", "v4:9157", "v3:1352", "v3:12971"),
             fix="Declare the name with DIM (with the file's other DIMs, never inside a loop), or respell "
             "it as the declared name it resembles, or as the v4 keyword a v3 one became.",
             safety=FixSafety.UNSAFE,

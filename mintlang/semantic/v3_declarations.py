@@ -1,10 +1,11 @@
-"""What the Mint v3 compiler rejects that the checker does not: a variable read before it is declared.
+"""Mint v3's declarations: a variable read before anything declares it is "Undefined Variables".
 
 v3 has no DIM for scalars: any assignment, FOR or INPUT declares a variable, at
 compile time and in the order of the text, so a variable must be written before
 any other reference to it in the text, "otherwise an undefined variable error will
 be issued during compilation" (001:1352-1367, 1425-1429, 12971-12973). The array
-COMMSON creates is declared by it (001:13217-13247).
+COMMSON creates is declared by it (001:13217-13247). mint check reports each such read and
+mint-run refuses to compile the program, as the controller does.
 """
 
 from __future__ import annotations

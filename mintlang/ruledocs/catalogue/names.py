@@ -21,7 +21,7 @@ GROUP = Group(
             "configuration file, then the program, top to bottom). Reported once per line, at the first "
             "use. A Mint v3 keyword or constant read this way is said with what it became in v4. In a "
             "Mint v3 program (no DIM for variables) it is a read of a variable before any assignment, FOR "
-            "or INPUT earlier in the text declares it, the v3 guide's \"Undefined Variables\".",
+            'or INPUT earlier in the text declares it, the v3 guide\'s "Undefined Variables".',
             why="Mint v4 declares every variable at compile time: an undeclared name stops the program "
             "from compiling. It is often a misspelling of a declared name, which the message then offers.",
             example=Example(

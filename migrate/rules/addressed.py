@@ -13,12 +13,12 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Iterator
 
+from mintlang.keyworddb.model import CIRCLES
 from mintlang.migrate.context import Context, FileView, name_tag, per_pass
 from mintlang.migrate.rules.axes import default_axes, selector_axes
 from mintlang.migrate.rules.base import keyword_refs, written
 from mintlang.syntax import nodes as n
 
-CIRCLES = frozenset({"CIRCLEA", "CIRCLER"})  # two axes, three values (centre x, centre y, angle)
 POSITIONAL = frozenset({"MOVEA", "MOVER", "VECTORA", "VECTORR", *CIRCLES})  # profiled with SPEED
 RAMPED = frozenset({*POSITIONAL, "JOG", "HOME", "OFFSET", "INCA", "INCR"})  # ramped with ACCEL and DECEL
 MOVES = frozenset({*RAMPED, "FLY", "FOLLOW", "CAM", "CAMA", "PULSE", "GEARN"})

@@ -33,6 +33,10 @@ class Addressing(StrEnum):
     NONE = "none"
 
 
+CIRCLES = frozenset({"CIRCLEA", "CIRCLER"})
+"""The axis keywords given more values than axes: a centre on each of two axes and an angle (000:8152, 8215)."""
+
+
 class KeywordKind(StrEnum):
     """How a keyword takes part in the grammar."""
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 
+from mintlang.keyworddb.model import CIRCLES
 from mintlang.records import record
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError, NotSimulated
@@ -33,7 +34,6 @@ MISSING_PARAMETER = 2001
 UNDEFINED_KEYWORD = 3007
 SYNTAX_ERROR = 2003
 TOO_MANY_VALUES = 2017
-_CIRCLES = frozenset({"CIRCLEA", "CIRCLER"})  # three values on two axes (000:8152, 8215)
 
 
 def layout_size(statement: n.Statement) -> int:
@@ -214,7 +214,7 @@ class StatementCompiler:
             values = tuple(self.expressions.compile(value) if value is not None else None for value in statement.values)
             fill = statement.fill
             one_per_axis = reference.keyword in self.expressions.semantics.axis_keywords and (
-                reference.keyword not in _CIRCLES
+                reference.keyword not in CIRCLES
             )
 
             def write_values() -> bool:

@@ -21,7 +21,7 @@ from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Addressing, Keyword
+from mintlang.keyworddb.model import CIRCLES, Addressing, Keyword
 from mintlang.semantic.constants import constant_integer
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
@@ -30,7 +30,6 @@ _CAPTURE_CHANNELS = ChannelRange(0, 5)  # the same on every controller
 _CAN_BUSES = ChannelRange(1, 2)
 _CAN_NODES = ChannelRange(0, 63)  # chapter 12, error 26
 _SERIAL_TERMINALS = frozenset({"_TMRS232", "_TMRS485"})
-_CIRCLES = frozenset({"CIRCLEA", "CIRCLER"})
 _CIRCLE_AXES, _CIRCLE_VALUES = 2, 3  # centre, centre and angle on two axes
 
 # Which range a channel keyword's number is checked against, and the error it gives.
@@ -92,7 +91,7 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
     if use.keyword.selector is None and use.keyword.channel is None:
         # Nothing addressed: the default axes, whatever AXES made them, are at most the controller's
         # (000:572, 605-606, #2017 at 19047); a circle's three values go to two of them.
-        if keyword.addressing is Addressing.AXIS and keyword.name not in _CIRCLES:
+        if keyword.addressing is Addressing.AXIS and keyword.name not in CIRCLES:
             yield from _values_for_axes(use, scope.controller.axis_count)
         return
     if keyword.name.startswith("REMOTE"):
@@ -116,7 +115,7 @@ def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:
     else:
         yield from _axis_list(use.unit, selector, scope)
     listed = 1 if selector.dot else len(selector.axes)
-    if name in _CIRCLES:
+    if name in CIRCLES:
         yield from _circle(use, selector, name, listed)
     else:
         yield from _values_for_axes(use, listed)

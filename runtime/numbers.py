@@ -35,6 +35,14 @@ def f32(x: float) -> float:
         raise MintError(OUT_OF_RANGE, detail="number too large") from None
 
 
+def held(value: float, number: Callable[[float], float]) -> float:
+    """A literal's ``value`` as the dialect's ``number`` holds it; one too large even for a double (1 and
+    400 zeros) is out of range as one too large for binary32 is (``f32`` cannot tell: it keeps an infinity)."""
+    if math.isinf(value):
+        raise MintError(OUT_OF_RANGE, detail="number too large")
+    return number(value)
+
+
 def bits24(x: float) -> int:
     """The 24-bit pattern bitwise operators see: truncated toward zero, reduced modulo 2**24 (NM-3 RC)."""
     return int(x) & MASK24

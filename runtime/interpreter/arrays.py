@@ -7,14 +7,13 @@ are 0. A DIM that cannot make its array (a size that is not a whole number from
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 
 from mintlang.runtime.errors import MintError
+from mintlang.runtime.numbers import held
 from mintlang.syntax import nodes as n
 
 INVALID_INDEX = 2016
-OUT_OF_RANGE = 3
 SYNTAX_ERROR = 2003
 
 
@@ -36,13 +35,6 @@ def array_problem(statement: n.Dim, number: Callable[[float], float]) -> MintErr
         except MintError as problem:
             return problem
     return None
-
-
-def held(value: float, number: Callable[[float], float]) -> float:
-    """``value`` as ``number`` holds it; one too large even for a double (1 and 400 zeros) is out of range too."""
-    if math.isinf(value):
-        raise MintError(OUT_OF_RANGE, detail="number too large")
-    return number(value)
 
 
 def initial_values(statement: n.Dim) -> list[float]:

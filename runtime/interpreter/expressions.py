@@ -18,11 +18,10 @@ from dataclasses import dataclass, field
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter import generated
-from mintlang.runtime.interpreter.arrays import held
 from mintlang.runtime.interpreter.generated import Emitter, Source
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.keywords import KeywordTable, Reader
-from mintlang.runtime.numbers import bits24, f32
+from mintlang.runtime.numbers import bits24, f32, held
 from mintlang.runtime.semantics import Semantics
 from mintlang.syntax import nodes as n
 
@@ -72,7 +71,7 @@ class ExpressionCompiler:
         raise TypeError(f"not an expression: {expression!r}")
 
     def literal(self, expression: n.Number | n.CharConstant) -> float:
-        """A number as written, as the dialect holds it (``arrays.held``)."""
+        """A number as written, as the dialect holds it (``numbers.held``)."""
         return held(float(expression.value), self.semantics.number)
 
     def source(self, expression: n.Expression, emitter: Emitter) -> Source:

@@ -17,7 +17,7 @@ from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.events import EventClass, Events
-from mintlang.runtime.io_banks import BankSelection
+from mintlang.runtime.io_banks import BankSelection, with_bit
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.ranges import ranged
 
@@ -169,8 +169,7 @@ class DigitalIO:
                     raise MintError(OUT_OF_RANGE, detail=f"one bit per input: 0 to {self.bank_inputs}")
                 wanted = self.banks.with_inputs(current, int(value))
             else:
-                bit = 1 << self._input(channel)
-                wanted = current | bit if value else current & ~bit
+                wanted = with_bit(current, self._input(channel), bool(value))
             settable = self.edge_mode if edges_only else self.all_inputs
             setattr(self, attribute, (current & ~settable) | (wanted & settable))
 
@@ -179,10 +178,9 @@ class DigitalIO:
     def drive_enable(self, output: int, enabled: bool) -> None:
         """A drive enable output follows its drive: active while enabled (000:9281-9286); -1 drives nothing."""
         if output >= RELAY0:
-            bit = 1 << output - RELAY0
-            self.relay = self.relay | bit if enabled else self.relay & ~bit
+            self.relay = with_bit(self.relay, output - RELAY0, enabled)
         elif output >= 0:
-            self.out = self.out | 1 << output if enabled else self.out & ~(1 << output)
+            self.out = with_bit(self.out, output, enabled)
 
     def relays(self) -> range:
         """The drive enable outputs that are relays: _RELAY0, and _RELAY1 and _RELAY2 with the cards."""
@@ -204,10 +202,10 @@ class DigitalIO:
             driven = self._driven_bits()  # a drive's output is not the program's to set (spec IO-3 RC)
             self.out = self.banks.with_outputs(self.out, int(value)) & ~driven | self.out & driven
             return
-        bit = 1 << self._output(channel)
-        if bit & self._driven_bits():
+        output = self._output(channel)
+        if self._driven_bits() >> output & 1:
             return
-        self.out = self.out | bit if value else self.out & ~bit
+        self.out = with_bit(self.out, output, bool(value))
 
     def _write_oal(self, _: int | None, value: float) -> None:
         self.output_active_level = self.banks.with_outputs(self.output_active_level, int(value))
@@ -218,7 +216,7 @@ class DigitalIO:
     def _write_relay(self, _: int | None, value: float) -> None:
         bank = self.banks.bank
         if RELAY0 + bank not in self.drive_enable_outputs():  # a drive's relay is not RELAY's to set (000:15477-15480)
-            self.relay = self.relay | 1 << bank if value else self.relay & ~(1 << bank)
+            self.relay = with_bit(self.relay, bank, bool(value))
 
     def _read_adc(self, channel: int | None) -> float:
         if channel is None:

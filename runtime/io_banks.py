@@ -55,6 +55,12 @@ def io_banks(profile: ControllerProfile) -> IOBanks:
     return IOBanks(1, inputs, outputs)
 
 
+def with_bit(bits: int, number: int, on: bool) -> int:
+    """``bits`` with bit ``number`` set when ``on``, cleared when not: one input, output or relay."""
+    bit = 1 << number
+    return bits | bit if on else bits & ~bit
+
+
 def _word(bits: int, bank: int, width: int) -> int:
     return bits >> (bank * width) & ((1 << width) - 1)
 

@@ -13,6 +13,7 @@ from collections.abc import Callable, Sequence
 
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.io import DigitalIO
+from mintlang.runtime.io_banks import with_bit
 from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.scenario.stimulus import Scenario
 from mintlang.runtime.terminal import Terminal
@@ -87,7 +88,7 @@ class World:
         def apply() -> None:
             if fires and level and not self.levels >> channel & 1:
                 self.fast_inputs_due.append(channel)
-            self.levels = self.levels | 1 << channel if level else self.levels & ~(1 << channel)
+            self.levels = with_bit(self.levels, channel, bool(level))
 
         return apply
 

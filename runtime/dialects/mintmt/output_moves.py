@@ -17,6 +17,7 @@ from collections.abc import Callable
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.io import INVALID_OUTPUT, DigitalIO
+from mintlang.runtime.io_banks import with_bit
 from mintlang.runtime.keywords import Channels, IndexedWriter, KeywordTable, Values
 from mintlang.runtime.motion.axis import Request
 from mintlang.runtime.motion.commands import MISSING_PARAMETER, TOO_MANY_VALUES, Motion
@@ -94,8 +95,7 @@ class OutputMoves:
         self.io.out = self.io.banks.banks.with_output_word(self.io.out, bank, pattern)
 
     def _set(self, channel: int, *, on: bool) -> None:
-        bit = 1 << channel
-        self.io.out = self.io.out | bit if on else self.io.out & ~bit
+        self.io.out = with_bit(self.io.out, channel, on)
 
     # ------------------------------------------------------------ Monitor
 

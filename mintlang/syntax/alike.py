@@ -3,7 +3,8 @@
 Line by line, the dialects differ in what a word is (keywords, constants, abbreviations: ``DE``
 is DECEL in v3 and DRIVEENABLE in v4), in how AND binds beside OR and XOR (v3 binds AND
 tighter: the two grammars swap those levels and nothing else), in the numbers only v4 writes
-(``0x1F``, ``1_000``) and in v3's spaced relations (``< =``). A line whose words are each the
+(``0x1F``, ``1_000``) or finds too large (a literal of 34 characters or more may be), and in v3's
+spaced relations (``< =``). A line whose words are each the
 same kind of token naming the same keyword in both, that does not mix AND with OR or XOR, and
 whose v3 reading found nothing (no diagnostic, no macro defined or expanded) lexes and parses
 as Mint v4 into what v3 made of it. Its lexed lines and syntax go into v4's per-line caches, so
@@ -20,14 +21,14 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.syntax import lexer, parser
 from mintlang.syntax.grammar import ParseFailure, parse_kinds
-from mintlang.syntax.lexer import LexedLine
+from mintlang.syntax.lexer import SHORTEST_TOO_LARGE, LexedLine
 from mintlang.syntax.parser import Document
 from mintlang.syntax.tokens import TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 _NOTEQUAL, _LESSEQUAL, _MOREEQUAL = TokenKind.NOTEQUAL, TokenKind.LESSEQUAL, TokenKind.MOREEQUAL  # v3 reads ``< =``
 _SPACEABLE = frozenset({_NOTEQUAL, _LESSEQUAL, _MOREEQUAL})
-_STRING, _CHAR = TokenKind.STRING, TokenKind.CHAR
+_STRING, _CHAR, _NUMBER = TokenKind.STRING, TokenKind.CHAR, TokenKind.NUMBER
 _OR = frozenset({TokenKind.OR, TokenKind.XOR})
 # Every word of a line's code, upper-cased, and some pieces of its numbers and labels besides: a
 # line is carried when all of them are alike, so the extra pieces can only keep one from it.
@@ -79,6 +80,8 @@ class _Words:
         kinds = line.kinds  # searched by identity: hashing a kind costs a Python call
         if (_NOTEQUAL in kinds or _LESSEQUAL in kinds or _MOREEQUAL in kinds) and _spaced(line):
             return False
+        if line.content_end >= SHORTEST_TOO_LARGE and _long_number(line):
+            return False
         words = set(_WORD.findall(_code(line).upper()))
         if words <= self._same:
             return True
@@ -117,6 +120,12 @@ def _spaced(line: LexedLine) -> bool:
     """Whether v3 read a relation written with a space inside (``< =``) on ``line``."""
     spaceable = zip(line.kinds, line.starts, line.ends, strict=True)
     return any(kind in _SPACEABLE and end - start != 2 for kind, start, end in spaceable)
+
+
+def _long_number(line: LexedLine) -> bool:
+    """Whether a number on ``line`` is long enough for a v4 reading to check its size, which v3's does not."""
+    tokens = zip(line.kinds, line.starts, line.ends, strict=True)
+    return any(kind is _NUMBER and end - start >= SHORTEST_TOO_LARGE for kind, start, end in tokens)
 
 
 def _kind(words: Vocabulary, upper: str) -> TokenKind:

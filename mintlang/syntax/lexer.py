@@ -271,14 +271,14 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
         elif group == "number":
             if previous is _DOT:  # a dot parameter: digits only, "2.65" is ".2" then ".65"
                 text = _DIGITS_AFTER_DOT.match(line, position, content_end).group()  # type: ignore[union-attr]
-            if text.isdigit() and (text[0] != "0" or len(text) == 1) and len(text) < _SHORTEST_TOO_LARGE:
+            if text.isdigit() and (text[0] != "0" or len(text) == 1) and len(text) < _SHORTEST_TOO_LARGE_DECIMAL:
                 kind = _NUMBER  # the common case: a plain decimal integer
             else:
                 problem = _number_issue(text, dialect)
                 kind = _NUMBER if problem is None else _INVALID
                 if problem is not None:
                     issues.append(_syntax_issue(position, len(text), problem))
-                elif len(text) >= _SHORTEST_TOO_LARGE_HEX and dialect.modern and _too_large(text):
+                elif len(text) >= SHORTEST_TOO_LARGE and dialect.modern and _too_large(text):
                     detail = f"{text} is too large for a Mint number"
                     issues.append(mint_error(3, Span(position, position + len(text)), detail))
         elif group == "string":
@@ -325,8 +325,9 @@ def _content_end(line: str) -> int:
     return len(line) - (2 if line.endswith("\r\n") else 1 if line.endswith(("\n", "\r")) else 0)
 
 
-# A Mint v4 number is binary32 (000:714-716), at most about 3.4E+38: 39 decimal digits, or 0x and 32 hex digits.
-_SHORTEST_TOO_LARGE, _SHORTEST_TOO_LARGE_HEX = 39, 34
+# A Mint v4 number is binary32 (000:714-716), at most about 3.4E+38: 39 decimal digits, or 0x and 32 hex
+# digits. A shorter literal is never too large, and only a v4 or MintMT reading looks (v3's numbers differ).
+_SHORTEST_TOO_LARGE_DECIMAL, SHORTEST_TOO_LARGE = 39, 34
 
 
 def _too_large(text: str) -> bool:

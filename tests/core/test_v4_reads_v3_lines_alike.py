@@ -31,6 +31,7 @@ PARTING = [
     "IF a < = b THEN PRINT a",  # v3 reads a spaced relation as one
     "IF a > = b OR a < > c THEN GO",
     "a = 0x1F : b = 1_000",  # numbers v4 alone writes
+    "a = 123456789012345678901234567890123456789012345",  # too large for v4's numbers (000:714-716)
     "a = _FORWARD : b = _SERVO",  # constants of one dialect
     "HMSPEED.0 = 10 : HOMESPEED.0 = 10",  # a v3 keyword, a v4 keyword
     "a = IN3 + ANALOG1",  # channels glued to the keyword

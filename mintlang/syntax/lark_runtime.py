@@ -269,17 +269,18 @@ class MissingVariableError(LarkError):
 
 
 import sys, re
-import logging
 from dataclasses import dataclass
 from typing import Generic, AnyStr
 
-logger: logging.Logger = logging.getLogger("lark")
-logger.addHandler(logging.StreamHandler())
-##
 
-##
+class _SilentLogger:
+    def _drop(self, *args: Any, **kwargs: Any) -> None:
+        pass
 
-logger.setLevel(logging.CRITICAL)
+    debug = info = warning = exception = _drop
+
+
+logger = _SilentLogger()
 
 
 NO_VALUE = object()

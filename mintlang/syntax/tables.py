@@ -2,7 +2,7 @@
 
 ``mint`` parses with ``lark_runtime.py``, lark's own stand-alone parser (what
 ``python -m lark.tools.standalone`` writes: lark's LALR parser, lexer interface and
-trees, without its grammar compiler, Earley parsers and caches), over tables
+trees, without its grammar compiler, Earley parsers, caches and logging), over tables
 computed here from ``grammar.lark``. Importing lark itself and loading its
 tables took a fifth of a one-line ``mint check``; ``python -m tools.lalr_tables``
 writes both files again after grammar.lark changes or lark is upgraded, and
@@ -56,15 +56,47 @@ def computed(dialect: Dialect) -> Serialized:
     return {"data": data, "memo": memo}
 
 
+# lark's logger, which its module sets to CRITICAL and which lark never logs at: every message is dropped.
+_LARK_LOGGER = """import logging
+from dataclasses import dataclass
+from typing import Generic, AnyStr
+
+logger: logging.Logger = logging.getLogger("lark")
+logger.addHandler(logging.StreamHandler())
+##
+
+##
+
+logger.setLevel(logging.CRITICAL)
+"""
+_SILENT_LOGGER = """from dataclasses import dataclass
+from typing import Generic, AnyStr
+
+
+class _SilentLogger:
+    def _drop(self, *args: Any, **kwargs: Any) -> None:
+        pass
+
+    debug = info = warning = exception = _drop
+
+
+logger = _SilentLogger()
+"""
+
+
 def runtime_source() -> str:
-    """lark's stand-alone parser module as the installed lark's generator writes it, up to its tables.
+    """lark's stand-alone parser module as the installed lark's generator writes it, up to its tables,
+    with a logger that drops every message in place of lark's.
 
     The tables section begins with ``import pickle, zlib, base64``, which only its own tables need:
     ``grammar.load_parser`` gives the runtime its tables as data, so it never reads a pickle
     (``Lark.save`` and ``Lark.load`` of a file are the parts of the runtime left without it).
+    lark's logger is set to CRITICAL and lark logs nothing at that level, so its messages are dropped
+    without importing ``logging``, a twentieth of a one-line ``mint check``.
     """
     generated = io.StringIO()
     gen_standalone(build_parser(Dialect.V4), out=generated)
     code, found, _ = generated.getvalue().partition("\nimport pickle, zlib, base64\nDATA = (\n")
     assert found, "lark's stand-alone generator no longer begins its tables with import pickle, zlib, base64"
-    return code + "\n"
+    assert code.count(_LARK_LOGGER) == 1, "lark's stand-alone generator no longer sets up its logger as it did"
+    return code.replace(_LARK_LOGGER, _SILENT_LOGGER) + "\n"

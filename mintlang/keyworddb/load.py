@@ -49,9 +49,15 @@ def _range(raw: dict[str, Any] | None) -> ValueRange | None:
     return ValueRange(raw["text"], raw["minimum"], raw["maximum"], raw["fractional"], *included, allowed)
 
 
+@cache
+def _controllers(names: tuple[str, ...]) -> tuple[Controller, ...]:
+    """The controllers named: the 675 lists of keywords and attribute rows name 18 different sets."""
+    return tuple(map(Controller, names))
+
+
 def _attributes(raw: dict[str, Any]) -> Attributes:
     return Attributes(
-        controllers=tuple(Controller(c) for c in raw["controllers"]),
+        controllers=_controllers(tuple(raw["controllers"])),
         read=raw["read"],
         write=raw["write"],
         command=raw["command"],
@@ -71,7 +77,7 @@ def _keyword(raw: dict[str, Any]) -> Keyword:
         channel_suffix=raw["channel_suffix"],
         parameters=tuple(raw["parameters"]),
         attributes=tuple(_attributes(row) for row in raw["attributes"]),
-        controllers=tuple(Controller(c) for c in raw["controllers"]),
+        controllers=_controllers(tuple(raw["controllers"])),
         formats=tuple(raw["formats"]),
         constants=tuple(raw["constants"]),
         see_also=tuple(raw["see_also"]),

@@ -123,8 +123,9 @@ def test_a_text_report_into_a_pipe_loads_no_rich_unless_colour_is_forced(tmp_pat
 
 # What a check of a file with no settings file, and nothing misspelt, does not use: importlib.resources (the
 # package's data is read through its loader), the TOML reader (a settings file), difflib (--diff, "did you mean"),
-# tempfile (--fix writing a file), signal (the workers of -j), lark itself (the parser is its stand-alone runtime).
-NOT_FOR_A_PLAIN_CHECK = ("importlib.resources", "tomllib", "difflib", "tempfile", "signal", "lark")
+# tempfile (--fix writing a file), signal (the workers of -j), lark itself (the parser is its stand-alone runtime),
+# logging (the runtime's logger, which lark sets to a level it never logs at).
+NOT_FOR_A_PLAIN_CHECK = ("importlib.resources", "tomllib", "difflib", "tempfile", "signal", "lark", "logging")
 
 
 def test_a_plain_check_loads_none_of_what_only_other_checks_use(tmp_path: Path) -> None:
@@ -143,9 +144,10 @@ def run_into_a_pipe(tmp_path: Path, module: str, program: str, *options: str) ->
 
 # What a run of one dialect does not use: the others' machines, the host port (--host-port), rich (colour,
 # the progress bar on a terminal, the table of expectations), the trace (--trace, --plot), the scenario files'
-# reader (--stimulus, --expect), the distribution's metadata (the plot's hint).
+# reader (--stimulus, --expect), the distribution's metadata (the plot's hint), logging (as for a check).
 NOT_FOR_A_PLAIN_V4_RUN = (
     "rich",
+    "logging",
     "mintlang.runtime.dialects.v3.machine",
     "mintlang.runtime.dialects.mintmt",
     "mintlang.runtime.comms.server",
@@ -175,8 +177,9 @@ def test_a_v3_run_loads_the_v3_machine_and_not_mintmts(tmp_path: Path) -> None:
 
 # What a migration from Mint v3 that flags nothing does not use: the simulator and the scenarios (--verify),
 # the MintMT rewrites (--to mintmt), the table of the guides' headings (a flag's citation). It does use rich:
-# its text summary is a rich table, into a pipe too.
+# its text summary is a rich table, into a pipe too. Nor logging, as for a check.
 NOT_FOR_A_PLAIN_V3_MIGRATION = (
+    "logging",
     "mintlang.runtime.interpreter",
     "mintlang.runtime.controller",
     "mintlang.runtime.motion",

@@ -31,7 +31,7 @@ OWN_CODES: dict[str, str] = {
     "W115": "Recursive GOSUB",
     "W116": "GOSUB nested too deep",
     "W117": "Unused suppression",
-    "W118": "USING digits beyond the controller's 15",
+    "W118": "USING digits beyond the controller's limit",
     "W119": "Reverse software limit not below the forward one",
     "I201": "Faster dot syntax",
 }

@@ -104,7 +104,7 @@ RULES: tuple[Rule, ...] = (
         "print-format",
         each_line=print_format.each_line,
         dialects=frozenset({Dialect.V4}),
-        looks_at=LineParts(frozenset({n.Print, n.KeywordStatement})),
+        looks_at=LineParts(frozenset({n.Print, n.KeywordStatement, n.Input})),
     ),
     Rule(
         "functions",

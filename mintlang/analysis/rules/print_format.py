@@ -1,10 +1,11 @@
-"""USING asking PRINT or LINE for more than the 15 digits the controller prints (W118).
+"""USING asking for more digits than PRINT, LINE or INPUT handle (W118).
 
 ``PRINT a USING <int>, <frac>`` prints up to 15 integer digits and up to 15
 fractional digits, a negative ``<int>`` adding a sign (000:15313-15318); LINE
-formats its values as PRINT does (000:13657-13658). The guide gives no error
-number for a larger count, so the toolchain warns. INPUT's USING states no such
-limit (000:12224-12232) and is not checked.
+formats its values as PRINT does (000:13657-13658). ``INPUT a USING <int>, <frac>``
+accepts up to 15 integer digits, the sign aside, and up to 3 fractional ones
+(000:12247-12249). The guide gives no error number for a larger count, so the
+toolchain warns.
 """
 
 from __future__ import annotations
@@ -18,17 +19,25 @@ from mintlang.syntax import nodes as n
 
 MAX_DIGITS = 15
 _PARTS = ("integer", "fractional")
+_PRINTED = (MAX_DIGITS, MAX_DIGITS)  # <int>, <frac> of PRINT and LINE
+_TYPED = (MAX_DIGITS, 3)  # <int>, <frac> of INPUT
 
 
-def _using(statement: n.Statement) -> tuple[n.Expression, ...]:
-    """The USING values of a PRINT, or of a terminal command that prints (LINE)."""
-    return statement.using if type(statement) is n.Print or type(statement) is n.KeywordStatement else ()
+def _using(statement: n.Statement) -> tuple[tuple[n.Expression, ...], tuple[int, int], str]:
+    """The USING values of a PRINT, a terminal command that prints (LINE) or an INPUT, their caps, and
+    what the controller does with them."""
+    if type(statement) is n.Print or type(statement) is n.KeywordStatement:
+        return statement.using, _PRINTED, "prints"
+    if type(statement) is n.Input:
+        return statement.using, _TYPED, "accepts"
+    return (), _PRINTED, ""
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
     for statement in scope.facts.statements:
-        for part, value in zip(_PARTS, _using(statement), strict=False):
+        values, caps, does = _using(statement)
+        for part, value, cap in zip(_PARTS, values, caps, strict=False):
             number = constant_value(value, scope.dialect)
-            if number is not None and abs(number) > MAX_DIGITS:
-                detail = f"USING asks for {abs(number):g} {part} digits; the controller prints at most {MAX_DIGITS}"
+            if number is not None and abs(number) > cap:
+                detail = f"USING asks for {abs(number):g} {part} digits; the controller {does} at most {cap}"
                 yield Finding(scope.unit, own("W118", value.span, detail))

@@ -87,15 +87,17 @@ GROUP = Group(
         RuleDoc(
             "W118",
             catches="PRINT or LINE formatting a number with USING and more than 15 integer or 15 "
-            "fractional digits (a negative integer count asks for a sign, not for more digits).",
-            why="The controller prints at most 15 digits on each side of the point; the guide gives no "
-            "error for a larger count, so the output is not the width the program asks for.",
+            "fractional digits, or INPUT accepting one with more than 15 integer or 3 fractional digits "
+            "(a negative integer count asks for a sign, not for more digits).",
+            why="The controller prints at most 15 digits on each side of the point, and its formatted input "
+            "takes at most 15 before it and 3 after it; the guide gives no error for a larger count, so the "
+            "field is not the width the program asks for.",
             example=Example(
                 before="DIM a = 123.5\nPRINT a USING 16, 2\n",
                 after="DIM a = 123.5\nPRINT a USING 15, 2\n",
             ),
-            manual=("v4:15313", "v4:13657"),
-            fix="Ask for 15 digits or fewer.",
+            manual=("v4:15313", "v4:13657", "v4:12247"),
+            fix="Ask for 15 digits or fewer (3 or fewer after the point for INPUT).",
             safety=FixSafety.NONE,
         ),
         RuleDoc(

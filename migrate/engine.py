@@ -24,7 +24,7 @@ from __future__ import annotations
 from bisect import bisect_left, bisect_right, insort
 from collections import Counter
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import field, replace
 from functools import partial
 
 from mintlang.allocation import kept_without_collector
@@ -61,7 +61,7 @@ class _Applied:
     offset: int
 
 
-@dataclass
+@record(frozen=False, slots=False)
 class _FileState:
     """One file through the phases: its current text and how each pass changed it."""
 

@@ -11,7 +11,7 @@ an offset through a pass is a bisection instead of a walk over every edit.
 from __future__ import annotations
 
 from bisect import bisect_left, bisect_right
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from mintlang.diagnostics import Span
 from mintlang.records import record
@@ -72,7 +72,7 @@ class _Batch:
         return offset + self.shifts[before]
 
 
-@dataclass
+@record(frozen=False, slots=False)
 class History:
     """The passes applied to one file, oldest first."""
 

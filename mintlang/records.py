@@ -1,4 +1,4 @@
-"""``record``: a frozen dataclass made without compiling a method per class.
+"""``record``: a frozen dataclass made without compiling a method per class (``frozen=False``: a mutable one).
 
 ``@dataclass(frozen=True, slots=True)`` writes six methods of each class as source
 (``__init__``, ``__repr__``, ``__eq__``, ``__hash__``, ``__setattr__``, ``__delattr__``)
@@ -16,7 +16,9 @@ The result is a genuine dataclass (``fields``, ``replace``, ``asdict``, ``is_dat
 equality, hash, ``repr`` and ``FrozenInstanceError`` of ``@dataclass(frozen=True,
 slots=True)``; ``tests/core/test_records.py`` holds the two to each other on generated
 classes. What the codebase does not use is refused rather than half done: ordering,
-``kw_only``, ``InitVar`` and ``__post_init__``. A class without a docstring gets
+``kw_only``, ``InitVar`` and ``__post_init__``. A record that is not frozen is held to
+``@dataclass(slots=True)`` the same way; its ``__init__`` sets each field as an attribute,
+the attributes renamed in the shared code as the parameters are. A class without a docstring gets
 ``Name(field, ...)``, not dataclass's ``Name(field: type, ...)``, which needs ``inspect``.
 """
 
@@ -37,42 +39,53 @@ Values = Callable[[object], tuple[object, ...]]
 @overload
 def record(cls: T, /) -> T: ...
 @overload
-def record(*, slots: bool = True, eq: bool = True) -> Callable[[T], T]: ...
-def record(cls: T | None = None, /, *, slots: bool = True, eq: bool = True) -> T | Callable[[T], T]:
-    """``@dataclass(frozen=True, slots=slots, eq=eq)``, its methods shared rather than compiled.
+def record(*, slots: bool = True, eq: bool = True, frozen: bool = True) -> Callable[[T], T]: ...
+def record(
+    cls: T | None = None, /, *, slots: bool = True, eq: bool = True, frozen: bool = True
+) -> T | Callable[[T], T]:
+    """``@dataclass(frozen=frozen, slots=slots, eq=eq)``, its methods shared rather than compiled.
 
     ``slots=False`` is for a class that keeps ``cached_property`` values (they need an
-    instance ``__dict__``); ``eq=False`` for one compared, and hashed, by identity.
+    instance ``__dict__``); ``eq=False`` for one compared, and hashed, by identity;
+    ``frozen=False`` for working state changed while it is built (a symbol table, the
+    blocks a check has open), whose fields are set as any attribute is and which has no hash.
     """
     if cls is None:
-        return lambda cls: _make(cls, slots=slots, eq=eq)
-    return _make(cls, slots=slots, eq=eq)
+        return lambda cls: _make(cls, slots=slots, eq=eq, frozen=frozen)
+    return _make(cls, slots=slots, eq=eq, frozen=frozen)
 
 
-def _make(cls: T, *, slots: bool, eq: bool) -> T:
+def _make(cls: T, *, slots: bool, eq: bool, frozen: bool) -> T:
     documented = bool(cls.__doc__)
     if not documented:
         cls.__doc__ = cls.__name__  # for now: a class without one makes dataclass call inspect.signature
     own = dict(cls.__dict__)
     # Extending a record: dataclass checks that a frozen class's bases are frozen, and wants to make it so itself.
-    cls = dataclass(cls, init=False, repr=False, eq=False, frozen=_extends_a_record(cls), slots=slots)
-    cls.__dataclass_params__ = _params(eq=eq, slots=slots)  # what the record is, and what snapshots read
+    cls = dataclass(cls, init=False, repr=False, eq=False, frozen=frozen and _extends_a_record(cls), slots=slots)
+    _say_what_it_is(cls.__dataclass_params__, eq=eq, frozen=frozen)  # as snapshots read it
     every = fields(cls)
     _refuse_what_records_do_not_do(cls, own, every)
-    methods = {"__init__": _init_method(cls, every), "__repr__": _repr_method([f.name for f in every if f.repr])}
+    methods = {
+        "__init__": _init_method(cls, every, frozen),
+        "__repr__": _repr_method([f.name for f in every if f.repr]),
+    }
     if eq:
         methods["__eq__"] = _eq_method(_values(field.name for field in every if field.compare))
-    if slots:  # pickling: a frozen class with slots has no __dict__ to restore, nor a __setattr__ that works
+    if slots and frozen:  # pickling: a frozen class with slots has no __dict__ to restore, nor a __setattr__ that works
         methods |= {"__getstate__": _getstate, "__setstate__": _setstate}
     for name, method in methods.items():
         if name not in own:  # what the class body defines stays, as with dataclass
             _install(cls, name, method)
     if eq and not _explicit_hash(own):
-        hashed = (field.name for field in every if (field.compare if field.hash is None else field.hash))
-        _install(cls, "__hash__", _hash_method(_values(hashed)))
-    names = frozenset(field.name for field in every)
-    _install(cls, "__setattr__", _frozen_setattr(cls, names))
-    _install(cls, "__delattr__", _frozen_delattr(cls, names))
+        if frozen:
+            hashed = (field.name for field in every if (field.compare if field.hash is None else field.hash))
+            _install(cls, "__hash__", _hash_method(_values(hashed)))
+        else:
+            cls.__hash__ = None  # type: ignore[assignment] # changing fields would change the hash
+    if frozen:
+        names = frozenset(field.name for field in every)
+        _install(cls, "__setattr__", _frozen_setattr(cls, names))
+        _install(cls, "__delattr__", _frozen_delattr(cls, names))
     if not documented:
         cls.__doc__ = f"{cls.__name__}({', '.join(field.name for field in every)})"
     return cls
@@ -96,10 +109,12 @@ def _extends_a_record(cls: type) -> bool:
     return bool(bases)
 
 
-@cache
-def _params(*, eq: bool, slots: bool) -> object:
-    """The ``__dataclass_params__`` of ``@dataclass(frozen=True, eq=eq, slots=slots)``, taken from one."""
-    return dataclass(frozen=True, eq=eq, slots=slots)(type("Record", (), {"__doc__": "A record."})).__dataclass_params__
+def _say_what_it_is(params: Any, *, eq: bool, frozen: bool) -> None:
+    """``__dataclass_params__`` as ``@dataclass(frozen=frozen, eq=eq, slots=...)`` sets them, from those of the
+    bookkeeping, which was told to write no ``__init__``, ``__repr__`` nor ``__eq__``."""
+    params.init = params.repr = True
+    params.eq = eq
+    params.frozen = frozen
 
 
 def _install(cls: type, name: str, method: Callable[..., Any]) -> None:
@@ -189,25 +204,27 @@ class _Factory:
 
 _FACTORY = _Factory()
 
-# How ``__init__`` sets the field at index ``i``: from its parameter (which may have a default), from its
-# parameter or else its factory, from its factory alone (``init=False``), or to its default (``init=False``).
-_SETS = {
-    "given": "s{i}(self, p{i})",
-    "given_or_made": "s{i}(self, f{i}() if p{i} is FACTORY else p{i})",
-    "made": "s{i}(self, f{i}())",
-    "fixed": "s{i}(self, d{i})",
+# What ``__init__`` sets the field at index ``i`` to: its parameter (which may have a default), its
+# parameter or else what its factory makes, what its factory makes (``init=False``), or its default (``init=False``).
+_VALUES = {
+    "given": "p{i}",
+    "given_or_made": "f{i}() if p{i} is FACTORY else p{i}",
+    "made": "f{i}()",
+    "fixed": "d{i}",
 }
 
 
-def _init_method(cls: type, every: tuple[Field[Any], ...]) -> Callable[..., None]:
+def _init_method(cls: type, every: tuple[Field[Any], ...], frozen: bool) -> Callable[..., None]:
     """``__init__`` for ``cls``: the shared code of its fields' shape, its parameters named after the fields.
 
     The code reads the setters (``s0``...), factories and defaults as globals, which each class
     gives its own; a field's parameter is a local variable, so renaming it changes nothing else.
+    A record that is not frozen sets its fields as attributes (``a0``...), renamed after the fields too.
     """
     shape: list[str] = []
     names = ["__record_self__" if any(field.name == "self" for field in every) else "self"]
     defaults: list[object] = []
+    attributes: dict[str, str] = {}
     namespace: dict[str, object] = {"FACTORY": _FACTORY, "__name__": cls.__module__}
     for field in every:
         i = len(shape)
@@ -224,19 +241,30 @@ def _init_method(cls: type, every: tuple[Field[Any], ...]) -> Callable[..., None
         else:
             continue  # left unset, as dataclass leaves it
         shape.append(kind)
-        namespace[f"s{i}"] = _setter(cls, field.name)
+        attributes[f"a{i}"] = field.name
+        if frozen:
+            namespace[f"s{i}"] = _setter(cls, field.name)
         if field.init:
             names.append(field.name)
             defaults += default
-    code = _template(tuple(shape)).replace(co_varnames=tuple(names), co_qualname=f"{cls.__qualname__}.__init__")
+    code = _template(tuple(shape), frozen)
+    code = code.replace(
+        co_varnames=tuple(names),
+        co_names=tuple(attributes.get(name, name) for name in code.co_names),
+        co_qualname=f"{cls.__qualname__}.__init__",
+    )
     return FunctionType(code, namespace, "__init__", tuple(defaults))
 
 
 @cache
-def _template(shape: tuple[str, ...]) -> CodeType:
+def _template(shape: tuple[str, ...], frozen: bool) -> CodeType:
     """The code of an ``__init__`` setting fields of ``shape``, compiled once for every record of that shape."""
     parameters = [f"p{i}" for i, kind in enumerate(shape) if kind.startswith("given")]
-    body = "".join(f"    {_SETS[kind].format(i=i)}\n" for i, kind in enumerate(shape)) or "    pass\n"
+    sets = "s{i}(self, {value})" if frozen else "self.a{i} = {value}"
+    body = (
+        "".join(f"    {sets.format(i=i, value=_VALUES[kind].format(i=i))}\n" for i, kind in enumerate(shape))
+        or "    pass\n"
+    )
     namespace: dict[str, Any] = {}
     exec(f"def __init__({', '.join(['self', *parameters])}):\n{body}", namespace)
     return namespace["__init__"].__code__  # type: ignore[no-any-return]

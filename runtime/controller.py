@@ -11,12 +11,13 @@ its interrupts and its error numbers.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import TYPE_CHECKING
 
 from mintlang.controllers import ControllerProfile
 from mintlang.controllers import profile as profile_of
 from mintlang.dialect import Dialect
+from mintlang.records import record
 from mintlang.runtime import drive_enable, global_error_output
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.comms.packets import HostEndpoint
@@ -56,7 +57,7 @@ def build_plant(choice: PlantChoice | None) -> Plant:
     return TorquePlant(**dict(choice.parameters))
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class Controller:
     """Every part of the simulated controller, wired together."""
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import field
 from pathlib import Path
 
 from mintlang import check_application
@@ -23,6 +23,7 @@ from mintlang.cli.checking import Checked, CheckOptions, Job
 from mintlang.cli.files import cannot_read, is_configuration
 from mintlang.cli.report import FileReport
 from mintlang.diagnostics import Diagnostic
+from mintlang.records import record
 from mintlang.semantic.units import Unit
 from mintlang.settings import FileSettings, Overrides, settings_for
 from mintlang.source import SourceFile, read_source
@@ -36,7 +37,7 @@ def options_of(settings: FileSettings) -> CheckOptions:
     return CheckOptions(dialect.value, settings.controller.value, settings.selected, settings.ignored, dialect.chosen)
 
 
-@dataclass
+@record(frozen=False, slots=False)
 class _Configuration:
     """One configuration file of the run, the jobs of the programs that see it, and where its report goes."""
 
@@ -46,7 +47,7 @@ class _Configuration:
     place: int = 0  # the index of the first job whose report follows it
 
 
-@dataclass
+@record(frozen=False, slots=False)
 class Plan:
     """The jobs of a run, the configuration files their programs see, and the problems found planning them."""
 

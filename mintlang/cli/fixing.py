@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Callable, Collection, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import field, replace
 from pathlib import Path
 from typing import IO, TypeVar
 
@@ -21,11 +21,12 @@ from mintlang import atomic
 from mintlang.cli.checking import FileFixed, Fixing, Job
 from mintlang.cli.report import FileReport
 from mintlang.fixes import MAX_ROUNDS, automatic_fix
+from mintlang.records import record
 
 F = TypeVar("F", bound=Callable[..., object])
 
 
-@dataclass
+@record(frozen=False, slots=False)
 class Outcome:
     """What a fixing run did: counts by code, the files changed, and what could not be written."""
 

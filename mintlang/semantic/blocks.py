@@ -22,7 +22,6 @@ numbers for them: a mismatch is reported as the syntax error 2003
 from __future__ import annotations
 
 from collections.abc import Hashable, Iterable, Mapping
-from dataclasses import dataclass
 from enum import StrEnum
 from typing import NamedTuple
 
@@ -102,7 +101,7 @@ class Structure:
     diagnostics: tuple[Diagnostic, ...]
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class _Open:
     kind: BlockKind
     opener: Place

@@ -11,7 +11,7 @@ already declared when the compiler reached it.
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Mapping
-from dataclasses import dataclass, field
+from dataclasses import field
 from enum import StrEnum
 
 from mintlang.diagnostics import Span
@@ -59,7 +59,7 @@ class Occurrence:
         return _new(Span, (relative.start + origin, relative.end + origin)) if origin else relative
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class Symbol:
     """A user name with its definition and every reference.
 

@@ -10,7 +10,6 @@ the macro's name.
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, MutableMapping
-from dataclasses import dataclass
 from operator import itemgetter
 from typing import NamedTuple
 
@@ -92,7 +91,7 @@ class LineGroup(NamedTuple):
         return LogicalLine(self.number, starts[0], end, kinds, texts, starts, ends, [False] * len(kinds))
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class LogicalLine:
     """The significant tokens of one logical line, as parallel arrays the grammar reads.
 

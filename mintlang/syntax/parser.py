@@ -18,7 +18,7 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_right
 from collections.abc import Hashable, Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import field
 from functools import cached_property
 
 from mintlang.allocation import collector_paused, without_collector
@@ -29,6 +29,7 @@ from mintlang.diagnostics import Diagnostic, Edit, Fix, LineIndex, LinesAndEnd
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller
+from mintlang.records import record
 from mintlang.syntax import nodes as n
 from mintlang.syntax.change import Change
 from mintlang.syntax.grammar import ParseFailure, parse_kinds
@@ -57,7 +58,7 @@ _UNREADABLE = "the line cannot be read"
 _OPERATORS = frozenset({_K.AND, _K.OR, _K.XOR, _K.NOT, _K.MOD})
 
 
-@dataclass(frozen=True)  # not slotted: ``lines`` is computed on first use
+@record(slots=False)  # not slotted: ``lines`` is computed on first use
 class Document:
     """A parsed source: the lossless token stream and the syntax of its lines.
 
@@ -184,7 +185,7 @@ def clear_caches() -> None:
         cache.clear()
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ParseContext:
     """What a document was parsed with beside its text: a re-parse reuses its lines only under the same."""
 
@@ -200,7 +201,7 @@ class ParseContext:
         return cls(Dialect(dialect), Controller(controller) if controller is not None else None, given)
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class PlacedLines:
     """The logical lines parsed so far, and what parsing them found, at offsets into the file."""
 

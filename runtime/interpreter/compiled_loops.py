@@ -28,7 +28,7 @@ and it changes nothing a run shows:
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from mintlang.records import record
 from mintlang.runtime import numbers
@@ -176,7 +176,7 @@ class _LocalEmitter(Emitter):
         return lines
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class _Lines:
     """The generated text, and for each of its lines the statement it belongs to and how many statements of
     the pass ran before it and are not yet counted in ``n`` (an error there is the statement's)."""

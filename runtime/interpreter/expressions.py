@@ -13,8 +13,9 @@ keywords written without a selector read the first of the default axes
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass, field
+from dataclasses import field
 
+from mintlang.records import record
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter import generated
@@ -32,7 +33,7 @@ INVALID_INDEX = 2016
 SYNTAX_ERROR = 2003
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class Names:
     """Storage slots of the application's variables and arrays, by 10-character identity."""
 

@@ -11,7 +11,6 @@ and the loop stack, which also enforce the controller's nesting limits (error
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 from enum import StrEnum
 from typing import Protocol
 
@@ -46,7 +45,7 @@ class Site:
     kind: str = ""  # the statement's syntax node (IfDo, Pause …): coverage tells branches by it
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class Loop:
     """A block open on the controller's stack: a loop, or an IF .. DO whose branch is running.
 
@@ -71,7 +70,7 @@ class Recovery:
     loop: int | None = None  # the opener whose loop entry the error leaves
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class Frame:
     return_pc: int
     loops: int  # loop stack depth at the call: loops left open inside a subroutine end with it

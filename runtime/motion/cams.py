@@ -12,8 +12,8 @@ one ended.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 
+from mintlang.records import record
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import ArrayArgument, KeywordTable, per_channel
@@ -30,7 +30,7 @@ MAX_SKIPPED = 5  # segments that may pass within one profiler tick (FG-14)
 MAX_SEGMENT = 65535
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class CamSettings:
     """An axis's selected tables and cam keywords, as CAMTABLE and the program left them."""
 

@@ -11,8 +11,7 @@ its own ACCEL and DECEL, so it can slip.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+from mintlang.records import record
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
@@ -125,7 +124,7 @@ class VelocityLockedMove:
         return self  # ACCEL and DECEL are read on every tick
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class FollowSettings:
     value: float = 0.0  # FOLLOW as last written
     denominator: float = 1.0

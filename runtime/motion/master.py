@@ -14,7 +14,6 @@ widening ``Axis``, and a snapshot of the controller holds them.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 
 from mintlang.keyworddb.model import Controller
 from mintlang.records import record
@@ -34,7 +33,7 @@ MAX_DISTANCE = 8_388_607.0
 AUXILIARY_SCALE = 1.0  # counts per user unit of an auxiliary encoder: AUXENCODERSCALE is not simulated
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class MasterSettings:
     """What a slave axis follows; ``channel`` None means the default for the source (FG-1)."""
 

@@ -8,7 +8,7 @@ it at once, keeping the distance already covered (000:14806-14808).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from mintlang.records import record
 from mintlang.runtime.motion.moves import completion_tick
@@ -32,7 +32,7 @@ class Offset:
         return self.sign * self.profile.sample(max(tick - self.start, 0) / 1000.0)[0]
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class OffsetTrack:
     """What the OFFSETs of one following move have added to its demand: those finished and the one running."""
 

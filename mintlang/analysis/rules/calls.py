@@ -12,7 +12,7 @@ when the program runs.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.rules.flow import subroutines
@@ -33,7 +33,7 @@ class _Call:
     statement: n.Jump
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class _Graph:
     """Which routine calls which: the main program and every subroutine of one file."""
 

@@ -27,13 +27,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from typing import NamedTuple
 
 from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Severity, Span
 from mintlang.dialect import Dialect
+from mintlang.records import record
 from mintlang.semantic.blocks import Block
 from mintlang.semantic.constants import constant_value
 from mintlang.semantic.events import event_of
@@ -114,7 +115,7 @@ def _is_else(statement: n.Statement) -> bool:
     return type(statement) is n.BlockWord and statement.word == "ELSE"  # type: ignore[union-attr]
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class _DeadRun:
     """Statements that can never run, from a W106 on: what its fix removes.
 
@@ -158,13 +159,13 @@ def _removal(source: str, start: int, end: int) -> Edit:
     return Edit(Span(len(source[: before - 1].rstrip(_BLANKS)), end), "")
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class _Loop:
     endless: bool  # LOOP, WHILE with a true constant, or a REPEAT that may end up endless
     left: bool = False  # an EXIT or GOTO inside may leave it
 
 
-@dataclass(slots=True)
+@record(frozen=False)
 class _If:
     """An open IF .. DO: the code after ENDIF runs if either branch gets there."""
 

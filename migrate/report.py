@@ -111,9 +111,19 @@ def _file(entry: FileEntry) -> dict[str, Any]:
             for c in result.changes
         ],
         "manual": [_manual(item) for item in result.manual],
-        "errors": list(result.errors),
+        "errors": sorted(result.errors, key=_line),
         "rules": dict(result.rule_counts),
     }
+
+
+def _line(error: str) -> int:
+    """The line of an error of the v3 reader, which ``engine`` writes as ``line N: code message``."""
+    return int(error.removeprefix("line ").partition(":")[0])
+
+
+def _unreadable_lines(errors: Iterable[str]) -> int:
+    """How many lines the v3 reader could not read: a line with two errors is one line."""
+    return len({_line(error) for error in errors})
 
 
 def _manual(item: ManualItem) -> dict[str, Any]:
@@ -146,7 +156,7 @@ def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = Fals
         return
     if data["rules"]:
         console.print("rules: " + ", ".join(f"{rule} {count}" for rule, count in data["rules"].items()))
-    console.print(summary(data["totals"]))
+    console.print(summary(data["totals"], sum(_unreadable_lines(row["errors"]) for row in data["files"])))
 
 
 def _files_table(data: Mapping[str, Any], console: Console) -> None:
@@ -155,7 +165,7 @@ def _files_table(data: Mapping[str, Any], console: Console) -> None:
     for column in ("file", "role", "status", "changes", "manual items", "unreadable lines"):
         files.add_column(column)
     for row in data["files"]:
-        counts = (len(row["changes"]), len(row["manual"]), len(row["errors"]))
+        counts = (len(row["changes"]), len(row["manual"]), _unreadable_lines(row["errors"]))
         files.add_row(Text(row["path"]), row["role"], row["status"], *(str(count) for count in counts))
     console.print(files)
 
@@ -171,8 +181,9 @@ def _place(path: str, item: Mapping[str, Any]) -> str:
     return f"{path}:{item['migrated_line']} ({where})"
 
 
-def summary(totals: Mapping[str, int]) -> str:
-    """``2 files: 1 changed, 1 unchanged; 3 changes, 1 manual item, 0 unreadable lines``."""
+def summary(totals: Mapping[str, int], unreadable_lines: int) -> str:
+    """``2 files: 1 changed, 1 unchanged; 3 changes, 1 manual item, 0 unreadable lines`` (the totals
+    count the errors of the v3 reader, two on one line among them)."""
     others = ("already_v4", "already_mintmt", "failed", "not_written")
     files = sum(totals.get(status, 0) for status in ("changed", "unchanged", *others))
     statuses = [f"{totals['changed']} changed", f"{totals['unchanged']} unchanged"]
@@ -180,6 +191,6 @@ def summary(totals: Mapping[str, int]) -> str:
     counts = [
         plural(totals["changes"], "change"),
         plural(totals["manual_items"], "manual item"),
-        plural(totals["errors"], "unreadable line"),
+        plural(unreadable_lines, "unreadable line"),
     ]
     return f"{plural(files, 'file')}: {', '.join(statuses)}; {', '.join(counts)}"

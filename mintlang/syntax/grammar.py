@@ -48,7 +48,9 @@ def shipped_tables(dialect: Dialect) -> dict[str, Any]:
 def load_parser(serialized: dict[str, Any]) -> Lark:
     """The runtime's parser over lark's serialization of one, reading the tokens our lexer made."""
     data = serialized["data"]
-    options = {**data["options"], "lexer": _PresetTokens}
+    # Without lark's propagation of positions: it wrapped every reduction in isinstance and getattr
+    # calls, three quarters of a parse; ``_place`` gives the cached tree the same positions once.
+    options = {**data["options"], "lexer": _PresetTokens, "propagate_positions": False}
     parser = {**data["parser"], "lexer_conf": {**data["parser"]["lexer_conf"], "lexer_type": _PresetTokens}}
     return Lark.load({"data": {**data, "options": options, "parser": parser}, "memo": serialized["memo"]})
 
@@ -124,9 +126,28 @@ def _parse(kinds: tuple[TokenKind, ...], dialect: Dialect) -> ParseResult:
     depth = _depth(tree)
     if depth > MAX_DEPTH:
         return ParseFailure(0, frozenset(), f"expressions nested {depth} deep")
-    for subtree in tree.iter_subtrees():
+    for subtree in tree.iter_subtrees():  # children before their parents
         subtree.data = str(subtree.data)  # lark names rules with Tokens, slow to hash
+        _place(subtree)
     return compile_line(tree)
+
+
+def _place(tree: Tree) -> None:
+    """Give ``tree`` the indices of its first and last token in its ``meta``, as lark's
+    ``propagate_positions`` did: its subtrees have theirs already; one without a token gets none."""
+    children = tree.children
+    first = next((found for found in (_position(child, "start_pos") for child in children) if found is not None), None)
+    if first is not None:
+        ends = (_position(child, "end_pos") for child in reversed(children))
+        meta = tree.meta
+        meta.start_pos, meta.end_pos, meta.empty = first, next(found for found in ends if found is not None), False
+
+
+def _position(child: Tree | Token | None, which: str) -> int | None:
+    """``which`` position of a token, or of a subtree that holds one."""
+    if isinstance(child, Tree):
+        return None if child.meta.empty else getattr(child.meta, which)
+    return getattr(child, which) if isinstance(child, Token) else None
 
 
 def _depth(tree: Tree) -> int:

@@ -45,10 +45,12 @@ _TYPOGRAPHIC_QUOTES = "\u201c\u201d\u201e\u201f\u2033"
 _TYPOGRAPHIC_APOSTROPHES = "\u2018\u2019"
 _DOUBLE = '"' + _TYPOGRAPHIC_QUOTES
 _SINGLE = "'" + _TYPOGRAPHIC_APOSTROPHES
+# A lexeme with the blanks before it: a separate match for the blanks was a third of the matches.
+# Blanks at the end of the line match alone, with no group.
 _LEXEME = re.compile(
-    "|".join(
+    f"[{_SPACE}]*+(?:"
+    + "|".join(
         (
-            f"(?P<ws>[{_SPACE}]+)",
             r"(?P<word>[A-Za-z_][A-Za-z0-9_]*)",
             r"(?P<number>0[xX][0-9A-Za-z_]*|[0-9][0-9A-Za-z_]*(?:\.[0-9]*)?|\.[0-9]+)",
             f"(?P<string>[{_DOUBLE}][^{_DOUBLE}\r\n]*[{_DOUBLE}]?)",
@@ -59,6 +61,7 @@ _LEXEME = re.compile(
             f"(?P<invalid>[^{_SPACE}\r\nA-Za-z0-9_{_DOUBLE}{_SINGLE}#<>=+*/%&|!~^()\\[\\],;:?.\\-]+)",
         )
     )
+    + ")?"
 )
 _LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)?")
 # v3 reads a two-character relation with blanks inside: PAUSE DEMAND > = 50 (v3 guide 3096)
@@ -202,6 +205,7 @@ MAX_TOKENS = 20_000
 # metaclass, and the lexer reads them for every token.
 _WS, _DOT, _NUMBER, _NAME, _COMMENT, _NEWLINE = _K.WS, _K.DOT, _K.NUMBER, _K.NAME, _K.COMMENT, _K.NEWLINE
 _INVALID, _STRING, _CHAR, _LABEL, _HASH = _K.INVALID, _K.STRING, _K.CHAR, _K.LABEL, _K.HASH
+_MINTMT, _V3 = Dialect.MINTMT, Dialect.V3  # read per line
 
 
 # One tuple for each sequence of kinds, starts or ends that lines share: a program's lines
@@ -217,21 +221,35 @@ def _shared(shape: tuple[T, ...]) -> tuple[T, ...]:
     return _shapes.setdefault(shape, shape)  # type: ignore[return-value]
 
 
+# The kind of each user word lexed so far, per dialect: a program writes its names on many lines, and
+# working out that a word ending in digits is no keyword with a glued channel (IN3) cost a microsecond.
+_unlisted: dict[Dialect, dict[str, TokenKind]] = {dialect: {} for dialect in Dialect}
+
+
+def _classified(words: Vocabulary, upper: str) -> TokenKind:
+    """``words.classify_unlisted(upper)``, remembered."""
+    known = _unlisted[words.dialect]
+    if len(known) >= _SHAPES_KEPT:
+        known.clear()
+    kind = known[upper] = words.classify_unlisted(upper)
+    return kind
+
+
 def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
     issues: list[Diagnostic] = []
     kinds: list[TokenKind] = []  # the significant tokens, as parallel arrays
     starts: list[int] = []
     ends: list[int] = []
     spellings = words.words
-    classify_unlisted = words.classify_unlisted
+    unlisted = _unlisted[dialect]
     match = _LEXEME.match
     position = 0
     content_end = _content_end(line)
     previous = _NEWLINE  # kind of the previous token, whitespace included
     dot_number = False  # the previous token is the number of a dot parameter: ".2" in REMOTEIN.2.65
     comment_start = -1
-    mintmt = dialect is Dialect.MINTMT
-    v3 = dialect is Dialect.V3
+    mintmt = dialect is _MINTMT
+    v3 = dialect is _V3
 
     while position < content_end:
         if len(kinds) == MAX_TOKENS:  # the rest is one token: a line this long is not analysed (grammar)
@@ -239,27 +257,27 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
             starts.append(position)
             ends.append(content_end)
             break
-        found = match(line, position, content_end)
-        group = found.lastgroup  # type: ignore[union-attr]  # the alternatives cover every character
-        if group == "ws":
+        found = match(line, position, content_end)  # the alternatives cover every character
+        group = found.lastgroup  # type: ignore[union-attr]
+        if group is None:  # blanks to the end of the line
+            break
+        text = found[group]  # type: ignore[index]
+        start = found.end() - len(text)  # type: ignore[union-attr]
+        if start != position:  # blanks before it
             previous = _WS
             dot_number = False
-            position = found.end()  # type: ignore[union-attr]
-            continue
-        text = found[0]  # type: ignore[index]
-        if mintmt and text[0] in _SINGLE:  # MintMT has no character constants: ' is its REM
-            comment_start = position
-            break
-        if text[0] == "." and (previous in _DOT_OWNERS or dot_number):
-            kind, text = _DOT, "."
-        elif group == "word":
+            position = start
+        # Only a number (.5) or a punctuation mark starts with ".", and only a character constant with a quote.
+        if group == "word":
             upper = text.upper()
             if upper == "REM":
                 comment_start = position
                 break
-            kind = spellings.get(upper) or classify_unlisted(upper)
+            kind = spellings.get(upper) or unlisted.get(upper) or _classified(words, upper)
             if mintmt and kind is _K.END and (closer := _mintmt_closer(line, found.end(), content_end)):  # type: ignore[union-attr]
                 kind, text = closer[0], line[position : closer[1]]
+        elif text[0] == "." and (previous in _DOT_OWNERS or dot_number):
+            kind, text = _DOT, "."
         elif group == "punct":
             if v3 and text in ("<", ">") and (spaced := _SPACED_RELATION.match(line, position, content_end)):
                 text = spaced[0]
@@ -285,6 +303,9 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
             kind = _STRING
             issues.extend(_string_issues(text, position))
         elif group == "char":
+            if mintmt:  # MintMT has no character constants: ' is its REM
+                comment_start = position
+                break
             if len(text) == 3:
                 kind = _CHAR
                 issues.extend(_quote_issues(text, position, _TYPOGRAPHIC_APOSTROPHES, "'"))
@@ -379,6 +400,8 @@ def remember(dialect: Dialect, line: LexedLine) -> None:
 def clear_cache() -> None:
     for lines in _lexed.values():
         lines.clear()
+    for known in _unlisted.values():
+        known.clear()
     _shapes.clear()
 
 

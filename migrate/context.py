@@ -18,11 +18,12 @@ checks each statement it gets.
 from __future__ import annotations
 
 import re
+from array import array
 from bisect import bisect_right
 from collections import defaultdict
-from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping
+from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import field
-from functools import cached_property, wraps
+from functools import cached_property, partial, wraps
 from itertools import groupby
 from typing import Any, TypeVar, cast
 
@@ -325,6 +326,16 @@ class Context:
         except Exception as error:  # any failure here is the reader's, reported as such
             raise Unreadable from error
 
+    def forget_copies(self) -> None:
+        """Forget what the rules of a phase asked for (lines with file offsets, their keyword uses,
+        the answers of ``memo``), keeping the text's reading and model: the next phase starts from
+        this context when the last pass changed nothing, and the copies the phase before it made
+        held a fifth of the insertions' peak while its rules asked for other lines."""
+        self._memo.clear()
+        for file in self.files.values():
+            for copies in ("_lines", "_uses"):
+                file.__dict__.pop(copies, None)
+
     def memo(self, compute: Callable[..., T], *args: Hashable) -> T:
         """``compute(self, *args)``, worked out once per pass: rules ask some whole-application
         questions at every statement, and rescanning each time made large files quadratic."""
@@ -340,17 +351,13 @@ class Context:
     def placed(self, *wanted: object) -> Iterator[tuple[FileView, n.PlacedLine]]:
         """``lines(*wanted)`` as parsed, spans relative to each line's ``origin``: for a question
         whose answer needs no nodes with file offsets."""
-        order = self._order
-        for position in self._positions(wanted):
-            file, index = order[position]
+        for file, index in self._located(self._positions(wanted)):
             yield file, file.document.placed[index]
 
     def lines(self, *wanted: object) -> Iterator[tuple[FileView, n.Line]]:
         """The lines that have one of the ``wanted`` tags (see ``LineTags``), in compile order, with
         file offsets. No tag, no line: a rule names what it looks for."""
-        order = self._order
-        for position in self._positions(wanted):
-            file, index = order[position]
+        for file, index in self._located(self._positions(wanted)):
             yield file, file.line(index)
 
     def statements(self, *wanted: object) -> Iterator[tuple[FileView, n.Line, n.Statement]]:
@@ -384,9 +391,7 @@ class Context:
         return ((file, use) for file, use in uses if use.use is Use.READ)
 
     def _keyword_uses(self, wanted: frozenset[str], tags: Iterable[object]) -> Iterator[tuple[FileView, KeywordUse]]:
-        order = self._order
-        for position in self._positions(tags):
-            file, index = order[position]
+        for file, index in self._located(self._positions(tags)):
             for use in file.keyword_uses(index):
                 if use.keyword.keyword in wanted:
                     yield file, use
@@ -413,15 +418,23 @@ class Context:
             if event.name.identity in wanted
         }
 
-    @cached_property
-    def _order(self) -> tuple[tuple[FileView, int], ...]:
-        """Each line of compile order as its file and its index there."""
-        return tuple((file, index) for file in self.compiled for index in range(len(file.document.placed)))
+    def _located(self, positions: Iterable[int]) -> Iterator[tuple[FileView, int]]:
+        """Each of ``positions`` in compile order (ascending) as its file and its index there: worked
+        out from where each file starts, where a pair for every line held 3.5 times the program's size."""
+        files = iter(self.compiled)
+        file = next(files)
+        start, end = 0, len(file.document.placed)
+        for position in positions:
+            while position >= end:
+                file = next(files)
+                start, end = end, end + len(file.document.placed)
+            yield file, position - start
 
     @cached_property
-    def _tagged(self) -> dict[object, list[int]]:
-        """Each tag with the positions in ``_order`` of the lines that have it, in order."""
-        found: defaultdict[object, list[int]] = defaultdict(list)
+    def _tagged(self) -> dict[object, array[int]]:
+        """Each tag with the positions in compile order of the lines that have it, in order (machine
+        integers: a list of Python ones held 3 times the program's size)."""
+        found: defaultdict[object, array[int]] = defaultdict(partial(array, "I"))
         tags = self.tags.of_text([line for file in self.compiled for line in file.document.placed])
         position = 0
         for file in self.compiled:
@@ -438,7 +451,7 @@ class Context:
         """The files in compile order: the configuration file first."""
         return tuple(self.files[unit] for unit in (Unit.CONFIGURATION, Unit.PROGRAM) if unit in self.files)
 
-    def _positions(self, wanted: Iterable[object]) -> list[int]:
+    def _positions(self, wanted: Iterable[object]) -> Sequence[int]:
         tagged = self._tagged
         found = [tagged[tag] for tag in wanted if tag in tagged]
         if len(found) == 1:

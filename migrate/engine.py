@@ -121,6 +121,8 @@ def _run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> d
         else:
             reason = f"it kept rewriting its own output ({MAX_PASSES} passes of the {phase} phase)"
             raise MigrationFailed(", ".join(sorted(editing)), reason)
+        if context is not None:  # the next phase starts from it: not with the lines this one copied
+            context.forget_copies()
     v4_shelf.clear()  # the last Mint v4 reading is done: its lines were a third of the peak after it
     return {unit: _outcome(state, errors[unit]) for unit, state in states.items()}
 

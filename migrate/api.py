@@ -12,7 +12,7 @@ from mintlang.keyworddb.model import Controller
 from mintlang.migrate import engine
 from mintlang.migrate.context import Context
 from mintlang.migrate.model import MigrationResult, RuleInfo
-from mintlang.migrate.recognise import shows_v4
+from mintlang.migrate.recognise import Evidence, may_show_v4_beyond_doubt, v4_evidence, valid_v4
 from mintlang.migrate.rules import RULES, Replace, Rule
 from mintlang.semantic.units import Unit
 
@@ -77,9 +77,7 @@ def migrate(
     target = str(Controller(controller))
     chosen = select(only, skip, opt_in)
     outcomes = engine.run(texts, chosen, target)
-    v4 = _rewrite_free(outcomes) and shows_v4(texts, target)
-    if v4 and chosen != select():  # whether a file is v4 does not depend on the rules asked for
-        v4 = _rewrite_free(engine.run(texts, select(), target))
+    v4 = _already_v4(texts, target, outcomes, chosen)
     if v4:
         outcomes = {unit: engine.untouched(text) for unit, text in texts.items()}
     return _application({unit: _result(outcome, marks[unit], v4=v4) for unit, outcome in outcomes.items()})
@@ -90,6 +88,25 @@ def _application(results: Mapping[Unit, MigrationResult]) -> MigrationResult:
     if Unit.CONFIGURATION in results:
         return replace(results[Unit.PROGRAM], configuration=results[Unit.CONFIGURATION])
     return results[Unit.PROGRAM]
+
+
+def _already_v4(
+    texts: Mapping[Unit, str], target: str, outcomes: Mapping[Unit, engine.FileOutcome], chosen: tuple[Rule, ...]
+) -> bool:
+    """Whether the application is Mint v4 already (see ``recognise``): the rules rewrite nothing in it
+    and it shows a v4 form, or it shows one beyond doubt and v4 finds no error in it."""
+    rewrite_free = _rewrite_free(outcomes)
+    if not rewrite_free and not may_show_v4_beyond_doubt(texts, target):
+        return False  # most v3 programs: no v4 reading needed
+    evidence = v4_evidence(texts, target)
+    if (
+        rewrite_free
+        and evidence is not Evidence.NONE
+        # whether a file is v4 does not depend on the rules asked for
+        and (chosen == select() or _rewrite_free(engine.run(texts, select(), target)))
+    ):
+        return True
+    return evidence is Evidence.BEYOND_DOUBT and valid_v4(texts, target)
 
 
 def _rewrite_free(outcomes: Mapping[Unit, engine.FileOutcome]) -> bool:

@@ -5,7 +5,8 @@ Recognised (``recognise``): the rewrite rules find nothing to rewrite, and the a
 shows a form only v4 has: a scalar DIM (v3's DIM declares arrays only, v3:7304), a v4-only
 keyword, or a note mint-migrate wrote. A program without either reads the same in both
 versions and cannot be told from a v3 original that needs no rewrite: it keeps getting its
-notes, which is the safe side.
+notes, which is the safe side. (A v4 program the rules would rewrite: see
+``test_hand_ported_v4_is_left_alone``.)
 """
 
 from __future__ import annotations

@@ -18,8 +18,8 @@ from mintlang.migrate import cli as migrate_cli
 from mintlang.migrate import migrate
 from mintlang.migrate.context import Context
 
-V3 = "DIM a\nPRINT a\nSTOP\n"
-V4 = "AXES[0,1,2]\nDIM a\nPRINT a\nSTOP\n"
+V3 = "DIM a(2)\nPRINT a(1)\nSTOP\n"
+V4 = "AXES[0,1,2]\nDIM a(2)\nPRINT a(1)\nSTOP\n"
 
 
 def run(*arguments: object) -> Result:
@@ -188,9 +188,9 @@ def test_a_file_that_cannot_be_written_is_named_and_the_others_are_written(
 
 def test_a_byte_order_mark_stays_first(tmp_path: Path) -> None:
     path = tmp_path / "bom.mnt"
-    path.write_bytes(b"\xef\xbb\xbfREM x\nDIM a\nPRINT a\nSTOP\n")
+    path.write_bytes(b"\xef\xbb\xbfREM x\nDIM a(2)\nPRINT a(1)\nSTOP\n")
     assert run("--write", path).exit_code == 0
-    assert path.read_bytes() == b"\xef\xbb\xbfREM x\nAXES[0,1,2]\nDIM a\nPRINT a\nSTOP\n"
+    assert path.read_bytes() == b"\xef\xbb\xbfREM x\nAXES[0,1,2]\nDIM a(2)\nPRINT a(1)\nSTOP\n"
 
 
 def test_a_byte_order_mark_does_not_move_the_changes() -> None:

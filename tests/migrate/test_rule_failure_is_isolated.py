@@ -21,8 +21,8 @@ from mintlang.migrate.rules import RULES, Replace, Rule
 from mintlang.semantic.units import Unit
 from mintlang.syntax.parser import Document
 
-V3 = "DIM a\nPRINT a\nSTOP\n"
-V4 = "AXES[0,1,2]\nDIM a\nPRINT a\nSTOP\n"
+V3 = "DIM a(2)\nPRINT a(1)\nSTOP\n"
+V4 = "AXES[0,1,2]\nDIM a(2)\nPRINT a(1)\nSTOP\n"
 TRIGGER = "REM boom\n"  # the text the broken rule below chokes on
 
 

@@ -24,8 +24,8 @@ from click.testing import CliRunner, Result
 from mintlang import atomic
 from mintlang.migrate.cli import migrate as command
 
-V3 = "DIM a\nPRINT a\nSTOP\n"
-V4 = "AXES[0,1,2]\nDIM a\nPRINT a\nSTOP\n"
+V3 = "DIM a(2)\nPRINT a(1)\nSTOP\n"
+V4 = "AXES[0,1,2]\nDIM a(2)\nPRINT a(1)\nSTOP\n"
 LEFTOVER = ".a.mnt.k2x9_q1z.mint.tmp"
 
 

@@ -15,8 +15,8 @@ from mintlang.migrate import applications
 from mintlang.migrate.cli import migrate as command
 from mintlang.migrate.model import MigrationResult
 
-V3 = "DIM a\nPRINT a\nSTOP\n"
-V4 = "AXES[0,1,2]\nDIM a\nPRINT a\nSTOP\n"
+V3 = "DIM a(2)\nPRINT a(1)\nSTOP\n"
+V4 = "AXES[0,1,2]\nDIM a(2)\nPRINT a(1)\nSTOP\n"
 EDIT = "DIM b\nPRINT b\nSTOP\n"  # what the user saves meanwhile: same size as V3
 
 

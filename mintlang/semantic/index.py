@@ -71,6 +71,7 @@ class SyntaxIndex:
 
 
 _new = tuple.__new__  # builds a named tuple without its Python-level constructor
+_READ, _READ_KEYWORD = NameUse.READ, Use.READ  # module constants: read per name and keyword written
 _CONSTANTS = frozenset({n.Number, n.CharConstant, n.ConstantRef, n.StringLiteral, type(None)})
 _DIVIDING = frozenset({"/", "MOD"})  # the parser reads % as MOD
 
@@ -147,12 +148,12 @@ class _Walker:
             for node in n.walk_expression(expression):
                 kind = type(node)
                 if kind is n.VariableRef:
-                    names.append(NameEvent(unit, node.name, NameUse.READ, False))  # type: ignore[union-attr]
+                    names.append(_new(NameEvent, (unit, node.name, _READ, False, None)))  # type: ignore[union-attr]
                 elif kind is n.KeywordRef:
-                    uses.append(KeywordUse(unit, statement, node, Use.READ))  # type: ignore[arg-type]
+                    uses.append(_new(KeywordUse, (unit, statement, node, _READ_KEYWORD)))
                 elif kind is n.ElementRef:
                     elements.append((unit, node))  # type: ignore[arg-type]
-                    names.append(NameEvent(unit, node.name, NameUse.READ, True))  # type: ignore[union-attr]
+                    names.append(_new(NameEvent, (unit, node.name, _READ, True, None)))  # type: ignore[union-attr]
                 elif kind is n.Call:
                     calls.append(node)  # type: ignore[arg-type]
                 elif kind is n.Binary and node.operator in _DIVIDING:  # type: ignore[union-attr]

@@ -98,6 +98,9 @@ def _sequence(makers: list[Make[T]]) -> Make[tuple[T, ...]]:
     if len(makers) == 1:
         (only,) = makers
         return lambda line, words: (only(line, words),)
+    if len(makers) == 2:  # axes [0,1], two values: without the comprehension's frame
+        first, second = makers
+        return lambda line, words: (first(line, words), second(line, words))
     return lambda line, words: tuple([make(line, words) for make in makers])
 
 
@@ -444,7 +447,8 @@ def _selector(tree: Tree, keyword: Child) -> Make[n.Selector]:
         at, found = span(line, words), items(line, words)
         if any(type(item) is not n.Number for item in found):  # an expression: ``.(a+1)``
             return n.Selector(at, dot, found)
-        return _shared(_selectors, (at, dot, *map(id, found)), lambda: n.Selector(at, dot, found))
+        key = (at, dot, *map(id, found))
+        return _selectors.get(key) or _kept(_selectors, key, n.Selector(at, dot, found))
 
     return make
 
@@ -506,18 +510,18 @@ _keywords: dict[tuple[object, ...], n.KeywordRef] = {}
 _SHARED_KEPT = 100_000
 
 
-def _shared(table: dict[K, V], key: K, make: Callable[[], V]) -> V:
-    """The node ``table`` holds for ``key``, made by ``make`` the first time."""
-    found = table.get(key)
-    if found is None:
-        if len(table) >= _SHARED_KEPT:
-            table.clear()
-        found = table[key] = make()
-    return found
+def _kept(table: dict[K, V], key: K, node: V) -> V:
+    """``node``, which ``table`` now holds for ``key``: callers look ``key`` up first (``table.get(key) or``),
+    so a node found costs no call."""
+    if len(table) >= _SHARED_KEPT:
+        table.clear()
+    table[key] = node
+    return node
 
 
 def _number(start: int, end: int, text: str) -> n.Number:
-    return _shared(_numbers, (start, end, text), lambda: n.Number(_span(start, end), text, n.number_value(text)))
+    key = (start, end, text)
+    return _numbers.get(key) or _kept(_numbers, key, n.Number(_span(start, end), text, n.number_value(text)))
 
 
 def _leaf(token: Child) -> Make[n.Expression]:
@@ -638,7 +642,9 @@ def _keyword_ref(token: Child, selector_tree: Tree | None) -> Make[n.KeywordRef]
         else:
             addressed = (selected.span, selected.dot, selected.indices, *map(id, selected.items))
             key = (span, name, spelling, channel, *addressed)
-        return _shared(_keywords, key, lambda: n.KeywordRef(span, name, spelling, spelling_span, selected, channel))
+        return _keywords.get(key) or _kept(
+            _keywords, key, n.KeywordRef(span, name, spelling, spelling_span, selected, channel)
+        )
 
     return make
 

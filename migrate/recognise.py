@@ -106,20 +106,28 @@ def valid_v4(texts: Mapping[Unit, str], controller: str) -> bool:
 def _v4_only_keyword(uses: Iterable[KeywordUse]) -> Evidence:
     """How surely a v4 keyword v3 did not have shows v4: beyond doubt when it is used other than as a
     v3 user variable would be (a word neither version knows, as the v3 guide's ``X2.0 = 0`` for XIO2
-    is to the readers, shows nothing); suggested when it is only ever assigned, as a plain name.
-    A read counts as a variable's only outside the name's own assignments (``x = x | 128`` reads
-    ``x`` before v3 declares it, and is what the migrator writes for input modes)."""
+    is to the readers, shows nothing); suggested when it is only ever assigned, as a plain name, or
+    written in a spelling v3 has too (``DE`` is v3's DECEL and v4's DRIVEENABLE). A read counts as a
+    variable's only outside the name's own assignments (``x = x | 128`` reads ``x`` before v3
+    declares it, and is what the migrator writes for input modes)."""
     db = database()
     v4_only = [use for use in uses if use.keyword.keyword in db.keywords and db.lookup_v3(use.keyword.keyword) is None]
     assigning = {(use.keyword.keyword, use.unit, use.statement.span) for use in v4_only if use.use is Use.WRITE}
-    forms: dict[str, set[Use | None]] = defaultdict(set)
+    evidence = Evidence.NONE
+    plain: dict[str, set[Use]] = defaultdict(set)
     for use in v4_only:
         own_assignment = use.use is Use.READ and (use.keyword.keyword, use.unit, use.statement.span) in assigning
-        forms[use.keyword.keyword].add(use.use if _plain(use) and not own_assignment else None)
-    found = [found for found in forms.values() if found != {Use.READ, Use.WRITE}]
-    if any(found != {Use.WRITE} for found in found):
+        if db.lookup_v3(use.keyword.spelling) is not None:
+            evidence = Evidence.SUGGESTED
+        elif _plain(use) and not own_assignment:
+            plain[use.keyword.keyword].add(use.use)
+        else:
+            return Evidence.BEYOND_DOUBT
+    if any(found == {Use.READ} for found in plain.values()):
         return Evidence.BEYOND_DOUBT
-    return Evidence.SUGGESTED if found else Evidence.NONE
+    if any(found == {Use.WRITE} for found in plain.values()):
+        return Evidence.SUGGESTED
+    return evidence
 
 
 def _plain(use: KeywordUse) -> bool:

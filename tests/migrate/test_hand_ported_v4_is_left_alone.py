@@ -63,6 +63,14 @@ def test_a_v4_keyword_only_assigned_is_a_v3_variable_where_rules_rewrite() -> No
     assert "(SIN(30) * 1000)" in result.text
 
 
+def test_a_spelling_both_versions_know_is_no_sign_of_v4() -> None:
+    """``DE`` abbreviates v3's DECEL and v4's DRIVEENABLE (v4 guide, DRIVEENABLE): a v3 program's
+    ``DE.0 = 1`` is a deceleration, and is migrated as one."""
+    result = migrate("DIM x(2)\nDE.0 = 1\n")
+    assert not result.already_v4
+    assert "DECEL.0 = 1" in result.text
+
+
 def _programs() -> list[str]:
     tests = Path(__file__).parent.parent
     files = sorted((tests / "corpus").rglob("*.mnt")) + sorted((tests / "conformance").rglob("*.mnt"))

@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 from bisect import bisect_right
 from collections.abc import Callable, Iterable, Iterator, Mapping
+from functools import cache
 from typing import ClassVar
 
 import mintlang
@@ -455,15 +456,30 @@ class StillInvalid(Rule):
     id = "X-CHECK"
     rule_class = RuleClass.MANUAL
     phase = Phase.CHECK
-    summary = "line still invalid Mint v4 on the target (axes, channels, values it lacks) -> manual"
-    evidence = "spec §1 step 8; v4:18514-18532 (#2, #3, #7), v4:19047 (#2017)"
+    summary = "line still invalid Mint v4 on the target (axes, channels, values it lacks) or too long -> manual"
+    evidence = "spec §1 step 8; v4:18514-18532 (#2, #3, #7), v4:19047 (#2017), v4:254-256 (255 characters)"
 
     def apply(self, context: Context) -> Iterator[Action]:
         title = context.controller.title
+        flagged: set[tuple[Unit, int]] = set()
         for file, errors in v4_errors(context):
             for span, diagnostics in by_statement(file, errors).items():
                 if not _flagged(file, span.start):
+                    flagged.add((file.unit, file.text.rfind("\n", 0, span.start) + 1))
                     yield self.flag(file, span, f"not valid Mint v4 on {title}: {_messages(diagnostics, codes=True)}")
+        limit = context.controller.max_line_length
+        for file in context.files.values():
+            for line in _longer_than(limit).finditer(file.text):
+                if (file.unit, line.start()) not in flagged and not _flagged(file, line.start()):
+                    reason = f"line of {len(line[0])} characters: {title} takes {limit}; split it"
+                    yield self.flag(file, Span(line.start(), line.end()), reason)
+
+
+@cache
+def _longer_than(limit: int) -> re.Pattern[str]:
+    """A physical line of more than ``limit`` characters (rewrites lengthen lines: ``SIN(a)`` becomes
+    ``(SIN(a) * 1000)``)."""
+    return re.compile(rf"^[^\r\n]{{{limit + 1},}}", re.MULTILINE)
 
 
 # Rules whose markers are notes for the whole application: they sit above the first line of code

@@ -465,7 +465,7 @@ class StillInvalid(Rule):
         for file, errors in v4_errors(context):
             for span, diagnostics in by_statement(file, errors).items():
                 if not _flagged(file, span.start):
-                    flagged.add((file.unit, file.text.rfind("\n", 0, span.start) + 1))
+                    flagged.add((file.unit, file.line_start(span.start)))
                     yield self.flag(file, span, f"not valid Mint v4 on {title}: {_messages(diagnostics, codes=True)}")
         limit = context.controller.max_line_length
         for file in context.files.values():
@@ -477,9 +477,9 @@ class StillInvalid(Rule):
 
 @cache
 def _longer_than(limit: int) -> re.Pattern[str]:
-    """A physical line of more than ``limit`` characters (rewrites lengthen lines: ``SIN(a)`` becomes
-    ``(SIN(a) * 1000)``)."""
-    return re.compile(rf"^[^\r\n]{{{limit + 1},}}", re.MULTILINE)
+    """A physical line of more than ``limit`` characters, whatever ends the lines (LF, CR LF or a lone CR):
+    rewrites lengthen lines, ``SIN(a)`` becomes ``(SIN(a) * 1000)``."""
+    return re.compile(rf"(?<![^\r\n])[^\r\n]{{{limit + 1},}}")
 
 
 # Rules whose markers are notes for the whole application: they sit above the first line of code

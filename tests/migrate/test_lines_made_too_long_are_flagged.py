@@ -8,6 +8,8 @@ X-CHECK puts a marker above such a line; the line itself is kept as the rules wr
 
 from __future__ import annotations
 
+import pytest
+
 from mintlang.migrate import migrate
 
 
@@ -15,10 +17,11 @@ def _sines(count: int) -> str:
     return "x = " + " + ".join(["SIN(1)"] * count)  # 4 + 6 * count + 3 * (count - 1) characters
 
 
-def test_a_line_pushed_past_255_characters_gets_a_marker() -> None:
+@pytest.mark.parametrize("newline", ["\n", "\r\n", "\r"], ids=["LF", "CR LF", "CR"])
+def test_a_line_pushed_past_255_characters_gets_a_marker(newline: str) -> None:
     line = _sines(25)  # 226 characters in v3, 226 + 25 * 9 = 451 in v4
-    result = migrate(f"DIM a(2)\n{line}\nPRINT x\n")
-    assert [(item.rule, item.original_line) for item in result.manual] == [("X-CHECK", 2)]
+    result = migrate(newline.join(["DIM a(2)", "PRINT 1", line, line, "PRINT x", ""]))
+    assert [(item.rule, item.original_line) for item in result.manual] == [("X-CHECK", 3), ("X-CHECK", 4)]
     assert "line of 451 characters: NextMove PCI takes 255" in result.manual[0].reason
 
 

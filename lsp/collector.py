@@ -18,6 +18,8 @@ from __future__ import annotations
 import asyncio
 import gc
 
+from mintlang.allocation import hold_frozen, thaw_held
+
 IDLE_S = 5.0  # quiet time before the full collection
 AT_MOST_S = 60.0  # the longest a frozen cycle waits, however long the typing goes on
 
@@ -34,7 +36,7 @@ class Collector:
 
     def analysed(self) -> None:
         """A snapshot was just built: freeze it, and postpone the full collection (within the limit)."""
-        gc.freeze()
+        hold_frozen()
         if self._pending is not None:
             self._pending.cancel()
             self._pending = None
@@ -52,5 +54,5 @@ class Collector:
         """Everything thawed and collected in full; the next analysis freezes again."""
         self._pending = None
         self._first_freeze = None
-        gc.unfreeze()
+        thaw_held()
         gc.collect()

@@ -2,14 +2,14 @@
 
 The first collection after a paused run would otherwise walk everything the run
 left alive (per-line caches, the result). A process whose objects another part
-keeps frozen (the language server) keeps them frozen: the run's join them.
+holds frozen (the language server) keeps them frozen: the run's join them.
 """
 
 from __future__ import annotations
 
 import gc
 
-from mintlang.allocation import kept_without_collector
+from mintlang.allocation import hold_frozen, kept_without_collector, thaw_held
 
 
 class _Kept:
@@ -43,12 +43,13 @@ def test_survivors_are_in_the_oldest_generation_and_the_collector_runs_again() -
             gc.disable()
 
 
-def test_objects_frozen_by_another_part_stay_frozen_and_the_run_joins_them() -> None:
-    gc.freeze()
+def test_objects_held_frozen_by_another_part_stay_frozen_and_the_run_joins_them() -> None:
+    hold_frozen()
     try:
         frozen = gc.get_freeze_count()
         kept = _build(10)
         assert gc.get_freeze_count() >= frozen + len(kept)
         assert _generation_of(kept[0]) is None  # frozen: in no generation the collector scans
     finally:
-        gc.unfreeze()
+        thaw_held()
+    assert gc.get_freeze_count() == 0

@@ -9,6 +9,7 @@ from collections.abc import Iterator
 
 import pytest
 
+from mintlang.allocation import thaw_held
 from mintlang.lsp.collector import Collector
 
 
@@ -21,7 +22,7 @@ class _Node:
 @pytest.fixture(autouse=True)
 def thawed() -> Iterator[None]:
     yield
-    gc.unfreeze()  # leave the test process's collector as it found it
+    thaw_held()  # leave the test process's collector as it found it
 
 
 def garbage_cycle() -> weakref.ref[_Node]:
@@ -31,7 +32,7 @@ def garbage_cycle() -> weakref.ref[_Node]:
 
 
 def test_an_analysis_is_frozen_out_of_the_scans() -> None:
-    gc.unfreeze()
+    thaw_held()
     Collector().analysed()
     assert gc.get_freeze_count() > 0
 

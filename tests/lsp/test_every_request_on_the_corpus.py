@@ -12,13 +12,14 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import inspect
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
 from lsprotocol import types as t
 from pygls.exceptions import JsonRpcException
 
+from mintlang.allocation import thaw_held
 from mintlang.dialect import Dialect
 from mintlang.lsp.server import MintServer, create_server
 from mintlang.lsp.workspace import Settings
@@ -30,7 +31,7 @@ FORMAT = t.FormattingOptions(tab_size=2, insert_spaces=True)
 
 
 @pytest.fixture(scope="module")
-def server() -> MintServer:
+def server() -> Iterator[MintServer]:
     server = create_server()
     # A client that confirms annotated edits: a rename merging two spellings would otherwise ask this
     # client, which has no one to answer, a question (test_rename covers the question).
@@ -40,7 +41,8 @@ def server() -> MintServer:
     capabilities = t.ClientCapabilities(workspace=t.WorkspaceClientCapabilities(workspace_edit=edits))
     for _ in server.protocol.lsp_initialize(t.InitializeParams(capabilities=capabilities)):
         pass  # no initialize handler of ours needs to run
-    return server
+    yield server
+    thaw_held()  # each analysis was frozen, and with no event loop here no idle collection thaws them
 
 
 def _caller(server: MintServer) -> Callable[[str, object], object]:

@@ -9,6 +9,7 @@ by a scan of the text; a message names the line where the scan finds it.
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Mapping
 from pathlib import Path
@@ -163,16 +164,19 @@ def find_settings(start: Path) -> Table | None:
 
     Raises SettingsError for the nearest settings file if it cannot be used: a
     broken file is never passed over for one further up, which would apply
-    settings its author did not mean.
+    settings its author did not mean. The folders are walked as strings: the
+    language server asks before every answer, and ``pathlib`` doubled the cost.
     """
-    folder = start.absolute()
-    if not folder.is_dir():
-        folder = folder.parent
-    for candidate in (folder, *folder.parents):
+    folder = os.path.abspath(start)
+    if not os.path.isdir(folder):
+        folder = os.path.dirname(folder)
+    while True:
         for name in (MINT_TOML, PYPROJECT):
-            path = candidate / name
-            if path.is_file():
-                table = read_settings(path)
+            candidate = os.path.join(folder, name)
+            if os.path.isfile(candidate):
+                table = read_settings(Path(candidate))
                 if table is not None:
                     return table
-    return None
+        folder, below = os.path.dirname(folder), folder
+        if folder == below:
+            return None

@@ -58,6 +58,8 @@ def first_mintmt_form(text: str) -> MintMTForm | None:
     numbered = [
         (number, line) for number, line in enumerate(split_lines(text, keepends=True), 1) if _MAY_SHOW.search(line)
     ]
+    if not numbered:  # nothing to lex: the MintMT vocabulary would be built for nothing
+        return None
     lexed = lex("".join(line for _, line in numbered), Dialect.MINTMT).lines
     for (number, _), (_, line) in zip(numbered, lexed, strict=False):  # the lexer may add an empty last line
         if (what := _form(line)) is not None:

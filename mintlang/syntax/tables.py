@@ -83,6 +83,25 @@ class _SilentLogger:
 logger = _SilentLogger()
 """
 
+# Serialize.deserialize builds its class's namespace before it looks for a reference to an object already
+# made; the parse table's 2,589 reduce actions are such references (to their rules).
+_NAMESPACE_FIRST = """        namespace = getattr(cls, '__serialize_namespace__', [])
+        namespace = {c.__name__:c for c in namespace}
+
+        fields = getattr(cls, '__serialize_fields__')
+
+        if '@' in data:
+            return memo[data['@']]
+"""
+_REFERENCE_FIRST = """        if '@' in data:
+            return memo[data['@']]
+
+        namespace = getattr(cls, '__serialize_namespace__', [])
+        namespace = {c.__name__:c for c in namespace}
+
+        fields = getattr(cls, '__serialize_fields__')
+"""
+
 
 def runtime_source() -> str:
     """lark's stand-alone parser module as the installed lark's generator writes it, up to its tables,
@@ -92,11 +111,13 @@ def runtime_source() -> str:
     ``grammar.load_parser`` gives the runtime its tables as data, so it never reads a pickle
     (``Lark.save`` and ``Lark.load`` of a file are the parts of the runtime left without it).
     lark's logger is set to CRITICAL and lark logs nothing at that level, so its messages are dropped
-    without importing ``logging``, a twentieth of a one-line ``mint check``.
+    without importing ``logging``, a twentieth of a one-line ``mint check``. A reference to an object
+    already deserialized is looked up before anything else is done (``_REFERENCE_FIRST``).
     """
     generated = io.StringIO()
     gen_standalone(build_parser(Dialect.V4), out=generated)
     code, found, _ = generated.getvalue().partition("\nimport pickle, zlib, base64\nDATA = (\n")
     assert found, "lark's stand-alone generator no longer begins its tables with import pickle, zlib, base64"
     assert code.count(_LARK_LOGGER) == 1, "lark's stand-alone generator no longer sets up its logger as it did"
-    return code.replace(_LARK_LOGGER, _SILENT_LOGGER) + "\n"
+    assert code.count(_NAMESPACE_FIRST) == 1, "lark's Serialize.deserialize no longer begins as it did"
+    return code.replace(_LARK_LOGGER, _SILENT_LOGGER).replace(_NAMESPACE_FIRST, _REFERENCE_FIRST) + "\n"

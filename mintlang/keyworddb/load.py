@@ -1,12 +1,18 @@
 """Load the generated keyword database into the typed records of ``model``.
 
 The JSON is package data; it is read once per process and indexed so that
-every lookup the lexer makes is a dictionary hit.
+every lookup the lexer makes is a dictionary hit. ``database.bin`` beside it holds the
+same documents marshalled, each with the CRC-32 of the JSON it was made from: a document
+whose JSON still has that checksum is taken from it (parsing the JSON was most of loading
+the database, and marshal reads the same four times as fast), any other is parsed from
+its JSON, so an edited file is never read stale. ``python -m tools.keyworddb`` writes both.
 """
 
 from __future__ import annotations
 
+import binascii
 import json
+import marshal
 import re
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import field
@@ -30,15 +36,54 @@ from mintlang.keyworddb.model import (
     V3Keyword,
     ValueRange,
 )
-from mintlang.package_data import read_text
+from mintlang.package_data import read_bytes
 from mintlang.records import record
 
 _Record = TypeVar("_Record")
 _CHANNEL_GLUED = re.compile(r"^(?P<base>.*?\D)(?P<channel>\d+)$")
+DOCUMENTS = (
+    "keywords_v4.json",
+    "keywords_v3.json",
+    "keywords_mintmt.json",
+    "renames_v3_to_v4.json",
+    "constants_v4.json",
+    "constants_v3.json",
+    "constants_mintmt.json",
+    "errors.json",
+    "conflicts.json",
+)
+COMPACT = "database.bin"
+Documents = dict[str, list[dict[str, Any]]]
 
 
-def _read(name: str) -> list[dict[str, Any]]:
-    return json.loads(read_text("mintlang.keyworddb", "data", name))
+def compact(texts: Mapping[str, bytes]) -> bytes:
+    """What ``database.bin`` holds for the JSON ``texts`` (file name -> bytes): each parsed, with its CRC-32."""
+    return marshal.dumps(
+        {name: (binascii.crc32(text), json.loads(text.decode("utf-8"))) for name, text in texts.items()}
+    )
+
+
+def compacted(texts: Mapping[str, bytes], copy: bytes) -> Documents:
+    """The documents of ``copy`` (what ``compact`` made) whose JSON ``texts`` still has their checksum."""
+    try:
+        kept = marshal.loads(copy)
+    except (ValueError, EOFError, TypeError):
+        return {}
+    if not isinstance(kept, dict):
+        return {}
+    return {
+        name: kept[name][1] for name, text in texts.items() if name in kept and kept[name][0] == binascii.crc32(text)
+    }
+
+
+def documents() -> Documents:
+    """Every document of the database: from ``database.bin`` where it was made from the JSON as it is."""
+    texts = {name: read_bytes("mintlang.keyworddb", "data", name) for name in DOCUMENTS}
+    try:
+        kept = compacted(texts, read_bytes("mintlang.keyworddb", "data", COMPACT))
+    except OSError:
+        kept = {}
+    return {name: kept[name] if name in kept else json.loads(text.decode("utf-8")) for name, text in texts.items()}
 
 
 def _range(raw: dict[str, Any] | None) -> ValueRange | None:
@@ -191,36 +236,37 @@ def _by_name(records: Iterable[_Record], name: Callable[[_Record], str]) -> Mapp
     return MappingProxyType({name(record).upper(): record for record in records})
 
 
-def _abbreviation_conflicts() -> list[dict[str, Any]]:
-    return [conflict for conflict in _read("conflicts.json") if conflict["kind"] == "abbreviation"]
+def _abbreviation_conflicts(conflicts: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    return [conflict for conflict in conflicts if conflict["kind"] == "abbreviation"]
 
 
-def _abbreviation_choices(keywords: Mapping[str, Keyword]) -> dict[str, Keyword]:
+def _abbreviation_choices(keywords: Mapping[str, Keyword], conflicts: list[dict[str, Any]]) -> dict[str, Keyword]:
     """The generator's resolution of abbreviations the guide gives to two keywords."""
-    return {conflict["subject"].upper(): keywords[conflict["resolved_to"]] for conflict in _abbreviation_conflicts()}
+    return {conflict["subject"].upper(): keywords[conflict["resolved_to"]] for conflict in conflicts}
 
 
-def _shared_abbreviations(keywords: Mapping[str, Keyword]) -> Mapping[str, tuple[Keyword, ...]]:
+def _shared_abbreviations(
+    keywords: Mapping[str, Keyword], conflicts: list[dict[str, Any]]
+) -> Mapping[str, tuple[Keyword, ...]]:
     """Each abbreviation the guide gives to two keywords, with both."""
     return MappingProxyType(
-        {
-            conflict["subject"].upper(): tuple(keywords[name] for name in conflict["keywords"])
-            for conflict in _abbreviation_conflicts()
-        }
+        {conflict["subject"].upper(): tuple(keywords[name] for name in conflict["keywords"]) for conflict in conflicts}
     )
 
 
 @cache
 def database() -> KeywordDatabase:
     """The database shipped with the package, loaded once per process."""
-    keywords = [_keyword(raw) for raw in _read("keywords_v4.json")]
-    v3_keywords = [_v3_keyword(raw) for raw in _read("keywords_v3.json")]
-    renames = tuple(_rename(raw) for raw in _read("renames_v3_to_v4.json"))
-    constants = [Constant(r["name"], r["value"], r["keyword"], r["line"]) for r in _read("constants_v4.json")]
+    read = documents()
+    keywords = [_keyword(raw) for raw in read["keywords_v4.json"]]
+    v3_keywords = [_v3_keyword(raw) for raw in read["keywords_v3.json"]]
+    renames = tuple(_rename(raw) for raw in read["renames_v3_to_v4.json"])
+    constants = [Constant(r["name"], r["value"], r["keyword"], r["line"]) for r in read["constants_v4.json"]]
     errors = [
-        ErrorCode(r["code"], ErrorKind(r["kind"]), r["title"], r["constant"], r["line"]) for r in _read("errors.json")
+        ErrorCode(r["code"], ErrorKind(r["kind"]), r["title"], r["constant"], r["line"]) for r in read["errors.json"]
     ]
-    v3_constants = [V3Constant(r["name"], r["value"], r["v4_name"], r["line"]) for r in _read("constants_v3.json")]
+    v3_constants = [V3Constant(r["name"], r["value"], r["v4_name"], r["line"]) for r in read["constants_v3.json"]]
+    conflicts = _abbreviation_conflicts(read["conflicts.json"])
     by_name = _by_name(keywords, lambda k: k.name)
     preferred = sorted(keywords, key=lambda k: (not k.documented, k.line))
     return KeywordDatabase(
@@ -230,13 +276,15 @@ def database() -> KeywordDatabase:
         v3_keywords=_by_name(v3_keywords, lambda k: k.name),
         v3_constants=_by_name(v3_constants, lambda c: c.name),
         renames=renames,
-        mintmt_keywords=_by_name((_keyword(raw) for raw in _read("keywords_mintmt.json")), lambda k: k.name),
+        mintmt_keywords=_by_name((_keyword(raw) for raw in read["keywords_mintmt.json"]), lambda k: k.name),
         mintmt_constants=_by_name(
-            (Constant(r["name"], r["value"], r["keyword"], r["line"]) for r in _read("constants_mintmt.json")),
+            (Constant(r["name"], r["value"], r["keyword"], r["line"]) for r in read["constants_mintmt.json"]),
             lambda c: c.name,
         ),
-        _words=_index(preferred, lambda k: (k.name,), lambda k: k.abbreviations, fixed=_abbreviation_choices(by_name)),
+        _words=_index(
+            preferred, lambda k: (k.name,), lambda k: k.abbreviations, fixed=_abbreviation_choices(by_name, conflicts)
+        ),
         _v3_words=_index(v3_keywords, lambda k: (k.name,), lambda k: k.abbreviations),
         _old_words=_index(renames, lambda r: (r.old,), lambda r: (r.old_abbreviation,) if r.old_abbreviation else ()),
-        _shared=_shared_abbreviations(by_name),
+        _shared=_shared_abbreviations(by_name, conflicts),
     )

@@ -1,4 +1,5 @@
-"""``python -m tools.keyworddb [--seeds DIR] [--check]``: regenerate the keyword database."""
+"""``python -m tools.keyworddb [--seeds DIR] [--check] [--compact]``: regenerate the keyword database
+(``--compact``: only ``database.bin``, from the committed JSON, after MintMT's files are edited by hand)."""
 
 from __future__ import annotations
 
@@ -7,7 +8,7 @@ import sys
 from pathlib import Path
 
 from tools.keyworddb.build import build
-from tools.keyworddb.write import differing, write_all
+from tools.keyworddb.write import differing, write_all, write_compact
 
 REPO = Path(__file__).resolve().parents[2]
 DATA = REPO / "mintlang" / "keyworddb" / "data"
@@ -20,7 +21,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seeds", type=Path, default=DEFAULT_SEEDS, help="directory of the manual seeds")
     parser.add_argument("--spec", type=Path, default=DEFAULT_SPEC, help="directory of the migration specs")
     parser.add_argument("--check", action="store_true", help="exit 1 if the committed data is out of date")
+    parser.add_argument("--compact", action="store_true", help="write only database.bin from the committed JSON")
     args = parser.parse_args(argv)
+    if args.compact:
+        write_compact(DATA)
+        return 0
     outputs = build(args.seeds, args.spec)
     if args.check:
         stale = differing(outputs, DATA)

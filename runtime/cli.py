@@ -140,6 +140,9 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
 def run(**options: Any) -> None:
     """Run a Mint program against simulated axes, I/O and a host.
 
+    Keys piped to standard input (printf '42\\n' | mint-run app.mnt) answer INPUT and INKEY, after any a
+    scenario types.
+
     Ctrl-C (exit 130) or SIGTERM (exit 143) stops the run where it is; the report and the trace are still written.
     """
     from mintlang.runtime.run_command import execute  # noqa: PLC0415 - the simulator, for a run only

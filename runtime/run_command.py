@@ -31,6 +31,7 @@ from mintlang.runtime.comms import PortUnavailable
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import StopReason
+from mintlang.runtime.keyboard import StandardInput, standard_input
 from mintlang.runtime.report import as_json
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import ScenarioFileError, all_held, expectations_pass, merge
@@ -145,6 +146,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     termination = _Termination()
     recorders = _Recorders(trace, termination, errors, until_ms, progress=progress)
     stdout = _Stdout(live=realtime or host_port is not None)
+    keyboard = standard_input(before_wait=stdout.flush)
     simulate = partial(
         run_source,
         source,
@@ -155,6 +157,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         limits=limits,
         echo=stdout.write,
         on_tick=recorders.on_tick,
+        on_start=partial(_attach_keyboard, keyboard),
         name=str(program),
     )
     with _on_sigterm(termination):
@@ -178,6 +181,11 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         _outputs(trace, plot_path, title)  # after the report, so an output that fails does not take the results with it
     status = _exit_status(result, stdout.closed, termination.received, expect=bool(expect_paths))
     sys.exit(0 if status == _FAILED and exit_zero else status)
+
+
+def _attach_keyboard(keyboard: StandardInput | None, controller: Controller) -> None:
+    """Keys piped to standard input reach ``INPUT`` and ``INKEY`` (after the scenario's, in order of need)."""
+    controller.terminal.keyboard = keyboard
 
 
 def _configuration(program: Path, config_path: Path | None, *, no_config: bool) -> Path | None:

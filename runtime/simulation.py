@@ -137,6 +137,21 @@ class Simulator:
         if self.on_tick is not None:
             self.on_tick(t)
 
+    def _typed(self, t: int) -> bool:
+        """Whether a program that only keys can wake (an INPUT, a PAUSE on INKEY) got some from the keyboard,
+        which is waited for here: what would otherwise be a deadlock."""
+        vm = self.c.vm
+        site = vm.current_site()
+        if site is None:
+            return False
+        line = site.kind == "Input"
+        if not (line or (site.kind == "Pause" and vm.awaits_keys)):
+            return False
+        if not self.c.terminal.await_keys(line=line):
+            return False
+        vm.wake_at = t + 1  # a PAUSE asleep until then reads INKEY again
+        return True
+
     def _deadlock(self, t: int) -> str:
         """Why nothing can wake the program, with the likeliest cause: what it waits on when that is keys (an
         INPUT) or inputs and variables (a PAUSE asleep), else moves waiting on masters nothing moves, or a full
@@ -145,6 +160,8 @@ class Simulator:
         message = "blocked, and nothing scheduled or moving can ever wake the program"
         site = self.c.vm.current_site()
         keys = "keys that no scenario types (a [[key]] entry, or REM @sim key)"
+        if self.c.terminal.keyboard is not None:
+            keys += " and standard input, which has ended, did not give"
         if site is not None and site.kind == "Input":
             return f"{message}: INPUT waits for {keys}"
         if site is not None and site.kind == "Pause" and self.c.vm.awaits_keys:
@@ -346,7 +363,9 @@ class Simulator:
             following = self.next_change(t)
             if following >= NEVER:
                 following = self._moves_end(t)
-            if following >= NEVER or (following == t + 1 and self._stalled_on_masters(t)):
+            if following >= NEVER and self._typed(t):
+                following = t + 1
+            elif following >= NEVER or (following == t + 1 and self._stalled_on_masters(t)):
                 vm.stop(StopReason.DEADLOCK, self._deadlock(t))
                 break
             if limits.every_tick:

@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 from collections import deque
 from collections.abc import Callable, Sequence
+from typing import Protocol
 
 from mintlang.records import record
 from mintlang.runtime.errors import MintError
@@ -41,6 +42,17 @@ class NumberEntry:
     retry: bool = False
 
 
+class Keyboard(Protocol):
+    """Keys from outside the scenario (``mint-run``'s standard input): those there now, or wait for more."""
+
+    @property
+    def ended(self) -> bool: ...
+
+    def available(self) -> str: ...
+
+    def wait(self) -> str: ...
+
+
 class Terminal:
     """Collects everything the program prints and serves scripted keystrokes to ``INKEY`` and ``INPUT``."""
 
@@ -54,6 +66,7 @@ class Terminal:
         self.column = 0
         self.printed = 0  # characters written in all, kept or not
         self.query = ""  # what INPUT prints after its prompt: nothing in v4; Mint v3's "?" while PON is in force
+        self.keyboard: Keyboard | None = None  # keys typed besides the scenario's, taken as the program asks
 
     @property
     def text(self) -> str:
@@ -165,6 +178,8 @@ class Terminal:
 
     def inkey(self) -> int:
         """``INKEY``: 0 when nothing is waiting, else the oldest key's code with a-z upper-cased (PR-5)."""
+        if not self._keys and self.keyboard is not None:
+            self._keys.extend(self.keyboard.available())
         code = self.peek_key()
         if self._keys:
             self._keys.popleft()
@@ -183,7 +198,10 @@ class Terminal:
         CR LF counts as one line end. The typed line is echoed to the output, as a
         terminal shows what the operator typed, so the log reads like the session.
         """
-        end = next((index for index, key in enumerate(self._keys) if key in _LINE_ENDS), None)
+        end = self._line_end()
+        if end is None and self.keyboard is not None:
+            self._keys.extend(self.keyboard.available())
+            end = self._line_end()
         if end is None:
             return None
         line = "".join(self._keys.popleft() for _ in range(end))
@@ -192,6 +210,24 @@ class Terminal:
         self.write(line)
         self.newline()
         return line
+
+    def _line_end(self) -> int | None:
+        return next((index for index, key in enumerate(self._keys) if key in _LINE_ENDS), None)
+
+    def await_keys(self, *, line: bool) -> bool:
+        """Wait for the keyboard's next keys, for a program that can go no further without them; False when
+        there is no keyboard or it has ended. ``line``: an ``INPUT`` waits, and the input's last line, left
+        without its line end when the input ended, is entered all the same."""
+        if self.keyboard is None:
+            return False
+        typed = "" if self.keyboard.ended else self.keyboard.wait()
+        if typed:
+            self._keys.extend(typed)
+            return True
+        if line and self._keys and self._line_end() is None:  # the input ended in the middle of a line
+            self._keys.append("\r")
+            return True
+        return False
 
     def read_number(self) -> NumberEntry | None:
         """A line for ``INPUT`` read as a number; None until a line is complete."""

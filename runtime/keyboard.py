@@ -1,0 +1,74 @@
+"""Keys typed on ``mint-run``'s standard input, for ``INPUT`` and ``INKEY`` (spec PR-5).
+
+The manual's programs read the operator's terminal (000:12165-12171, 000:12202-12249); a
+simulator's operator is whoever feeds its standard input, as in ``printf '42\\n' | mint-run
+app.mnt``. Keys that are already there are taken as the program asks for them, without waiting,
+so an ``INKEY`` polling loop runs on; the simulator waits for more only when the program can go
+no further without them (a deadlock otherwise). Each byte is one key (Latin-1), so no byte is lost.
+"""
+
+from __future__ import annotations
+
+import os
+import select
+import sys
+from collections.abc import Callable
+
+_CHUNK = 65536
+
+
+class StandardInput:
+    """Keys read from a file descriptor that is not a terminal (a pipe or a file)."""
+
+    def __init__(self, fd: int, before_wait: Callable[[], None] = lambda: None) -> None:
+        """``before_wait`` runs before blocking for more keys: the prompt the reader answers must be out."""
+        self._fd: int | None = fd
+        self._before_wait = before_wait
+
+    @property
+    def ended(self) -> bool:
+        """Whether every key has been read (end of file, or a descriptor that cannot be read)."""
+        return self._fd is None
+
+    def available(self) -> str:
+        """The keys that can be read now without waiting; empty when there are none (yet)."""
+        if self._fd is None:
+            return ""
+        try:
+            ready, _, _ = select.select([self._fd], [], [], 0)
+        except (OSError, ValueError):  # a descriptor select cannot watch (Windows pipes): wait() alone reads it
+            return ""
+        return self._read() if ready else ""
+
+    def wait(self) -> str:
+        """Block until keys come; empty at the end of the input."""
+        if self._fd is None:
+            return ""
+        self._before_wait()
+        return self._read()
+
+    def _read(self) -> str:
+        assert self._fd is not None
+        try:
+            data = os.read(self._fd, _CHUNK)
+        except OSError:
+            data = b""
+        if not data:
+            self._fd = None
+        return data.decode("latin-1")
+
+
+def standard_input(before_wait: Callable[[], None]) -> StandardInput | None:
+    """The process's standard input as keys when it is a pipe or a file; None for a terminal or none at all.
+
+    A terminal is left alone: what it types arrives only after Enter, and the run's own output and
+    progress bar share the screen, so keys for a run at a terminal come from a scenario.
+    """
+    try:
+        fd = sys.stdin.fileno()  # none when closed, or replaced by a stream of the caller's (click's CliRunner)
+        if os.isatty(fd):
+            return None
+        os.fstat(fd)
+    except (AttributeError, ValueError, OSError):
+        return None
+    return StandardInput(fd, before_wait)

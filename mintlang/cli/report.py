@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import re
 from collections import Counter
 from collections.abc import Iterator, Sequence
@@ -137,6 +136,13 @@ def _region(index: LineIndex, span: Span) -> tuple[int, int, int, int]:
     return start.line, start.column, end.line, end.column
 
 
+def _dumps(value: object) -> str:
+    """``value`` as indented JSON; ``json`` is imported only here: a text report, most checks', needs none."""
+    import json  # noqa: PLC0415
+
+    return json.dumps(value, indent=2, ensure_ascii=False)
+
+
 def _json_fix(fix: Fix, index: LineIndex) -> dict[str, object]:
     """A fix as JSON: each edit replaces the text between two positions with ``text``."""
     edits = [
@@ -166,7 +172,7 @@ def as_json(reports: Sequence[FileReport]) -> str:
             }
             for diagnostic, line, column, end_line, end_column in report.located()
         )
-    return json.dumps(records, indent=2, ensure_ascii=False)
+    return _dumps(records)
 
 
 def _title(code: str) -> str:
@@ -243,7 +249,7 @@ def as_sarif(reports: Sequence[FileReport]) -> str:
             }
         ],
     }
-    return json.dumps(document, indent=2, ensure_ascii=False)
+    return _dumps(document)
 
 
 _GITHUB_LEVEL = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
@@ -274,7 +280,6 @@ def as_statistics(reports: Sequence[FileReport], output_format: str) -> str:
     counts = Counter(diagnostic.code for report in reports for diagnostic in report.diagnostics)
     ranked = sorted(counts.items(), key=lambda item: (-item[1], item[0]))
     if output_format == "json":
-        records = [{"code": code, "count": count, "title": _title(code)} for code, count in ranked]
-        return json.dumps(records, indent=2, ensure_ascii=False)
+        return _dumps([{"code": code, "count": count, "title": _title(code)} for code, count in ranked])
     width = len(str(ranked[0][1])) if ranked else 1
     return "\n".join(f"{count:>{width}}  {code:<6} {_title(code)}" for code, count in ranked)

@@ -11,7 +11,6 @@ its JSON, so an edited file is never read stale. ``python -m tools.keyworddb`` w
 from __future__ import annotations
 
 import binascii
-import json
 import marshal
 import re
 from collections.abc import Callable, Iterable, Mapping
@@ -58,9 +57,7 @@ Documents = dict[str, list[dict[str, Any]]]
 
 def compact(texts: Mapping[str, bytes]) -> bytes:
     """What ``database.bin`` holds for the JSON ``texts`` (file name -> bytes): each parsed, with its CRC-32."""
-    return marshal.dumps(
-        {name: (binascii.crc32(text), json.loads(text.decode("utf-8"))) for name, text in texts.items()}
-    )
+    return marshal.dumps({name: (binascii.crc32(text), _parsed(text)) for name, text in texts.items()})
 
 
 def compacted(texts: Mapping[str, bytes], copy: bytes) -> Documents:
@@ -83,7 +80,14 @@ def documents() -> Documents:
         kept = compacted(texts, read_bytes("mintlang.keyworddb", "data", COMPACT))
     except OSError:
         kept = {}
-    return {name: kept[name] if name in kept else json.loads(text.decode("utf-8")) for name, text in texts.items()}
+    return {name: kept[name] if name in kept else _parsed(text) for name, text in texts.items()}
+
+
+def _parsed(text: bytes) -> list[dict[str, Any]]:
+    """A JSON document; ``json`` is imported only here, which a start with a current copy never reaches."""
+    import json  # noqa: PLC0415
+
+    return json.loads(text.decode("utf-8"))
 
 
 def _range(raw: dict[str, Any] | None) -> ValueRange | None:

@@ -10,7 +10,8 @@ a program that loops forever stops at the next tick. What it printed goes to
 an output document the editor is asked to show (``window/showDocument``); a
 client that cannot show one gets the output's last lines in the message that
 says how the run ended. The command answers with the JSON report of
-``mint-run --report json``.
+``mint-run --report json``. The simulator is imported on the first run, not
+when the server starts: most editing sessions never run one.
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ import time
 import uuid
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from lsprotocol import types
 from pygls.uris import from_fs_path, to_fs_path
@@ -30,16 +31,14 @@ from pygls.uris import from_fs_path, to_fs_path
 from mintlang.dialect import Dialect
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Settings, partner
-from mintlang.runtime.interpreter.vm import StopReason
-from mintlang.runtime.report import as_json
-from mintlang.runtime.run import RunResult, run_source
-from mintlang.runtime.scenario import ScenarioFileError
-from mintlang.runtime.simulation import Interrupt, Limits
 from mintlang.semantic.units import Unit
+
+if TYPE_CHECKING:
+    from mintlang.runtime.run import RunResult
 
 SIMULATE = "mint.simulateFile"
 TITLE = "▶ Run in simulator"
-LIMITS = Limits(until_ms=600_000, max_wall_s=20.0)  # ten simulated minutes, at most 20 s of the user's time
+UNTIL_MS, MAX_WALL_S = 600_000, 20.0  # ten simulated minutes, at most 20 s of the user's time
 CANCELLED = "cancelled by the user"
 REPORT_EVERY_S = 0.25  # progress reports while the run goes on
 SHOWN_LINES = 20  # of the output, in the message of a client that cannot show a document
@@ -91,6 +90,8 @@ class Watcher:
 
     def on_tick(self, _: object, tick: int) -> None:
         if self.cancelled.is_set():
+            from mintlang.runtime.simulation import Interrupt  # noqa: PLC0415 - see the module's docstring
+
             raise Interrupt(CANCELLED)
         now = time.perf_counter()
         if now - self.last >= REPORT_EVERY_S:
@@ -125,8 +126,8 @@ class Progress:
         """Called on the event loop: simulated time so far, and how much of the run's bounds it used."""
         if not self.shown:
             return
-        wall = (time.perf_counter() - self.started) / (LIMITS.max_wall_s or 1.0)
-        simulated = tick / (LIMITS.until_ms or 1)
+        wall = (time.perf_counter() - self.started) / MAX_WALL_S
+        simulated = tick / UNTIL_MS
         message = f"{tick / 1000:.1f} s simulated"
         value = types.WorkDoneProgressReport(message=message, percentage=min(99, int(100 * max(wall, simulated))))
         self.server.work_done_progress.report(self.token, value)
@@ -166,6 +167,9 @@ def register(server: MintServer) -> None:
 
     async def run(source: str, configuration: str | None, name: str, settings: Settings) -> RunResult:
         """The run on a worker thread, shown as progress; cancelled by the user or by ``$/cancelRequest``."""
+        from mintlang.runtime.run import run_source  # noqa: PLC0415 - see the module's docstring
+        from mintlang.runtime.simulation import Limits  # noqa: PLC0415
+
         loop = asyncio.get_running_loop()
         progress = Progress(server, f"Simulating {name}")
         watcher = Watcher(lambda tick: loop.call_soon_threadsafe(progress.report, tick))
@@ -177,7 +181,7 @@ def register(server: MintServer) -> None:
                 config=configuration,
                 controller=settings.controller,
                 dialect=settings.dialect,
-                limits=LIMITS,
+                limits=Limits(until_ms=UNTIL_MS, max_wall_s=MAX_WALL_S),
                 on_tick=watcher.on_tick,
             )
         except asyncio.CancelledError:  # the request was cancelled: stop the worker too
@@ -192,6 +196,9 @@ def register(server: MintServer) -> None:
 
     @server.command(SIMULATE)
     async def simulate(ls: MintServer, uri: str) -> dict[str, Any] | None:
+        from mintlang.runtime.report import as_json  # noqa: PLC0415 - see the module's docstring
+        from mintlang.runtime.scenario import ScenarioFileError  # noqa: PLC0415
+
         settings = ls.analyses.settings_for(uri)
         unit, other = partner(uri, settings, ls.opened())
         # asked for a configuration file, run the program it configures
@@ -219,6 +226,8 @@ def register(server: MintServer) -> None:
 
 
 def _severity(result: RunResult) -> types.MessageType:
+    from mintlang.runtime.interpreter.vm import StopReason  # noqa: PLC0415 - imported by the run before
+
     reason = result.stop.reason
     if reason in (StopReason.END, StopReason.UNTIL):
         return types.MessageType.Info

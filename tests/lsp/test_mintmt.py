@@ -11,7 +11,7 @@ from pytest_lsp import LanguageClient, client_capabilities
 from mintlang.keyworddb import database
 from mintlang.lsp.features.semantic_tokens import TOKEN_TYPES
 from tests.corpus_files import CORPUS, CorpusCase, cases
-from tests.lsp.conftest import EDITOR, document, open_document, position, uri_of
+from tests.lsp.conftest import EDITOR, SHARED, document, open_document, position, uri_of
 from tests.lsp.test_formatting import apply
 from tests.lsp.test_simulator import shown_output
 
@@ -21,13 +21,23 @@ SPACES = types.FormattingOptions(tab_size=2, insert_spaces=True)
 ERROR = types.DiagnosticSeverity.Error
 
 
+AUTO = types.InitializeParams(
+    capabilities=client_capabilities("visual-studio-code"),
+    initialization_options={"mint": {"debounceMs": 0, "dialect": "auto"}},
+)
+
+
 @pytest_lsp.fixture(config=EDITOR)
 async def client(lsp_client: LanguageClient):
-    params = types.InitializeParams(
-        capabilities=client_capabilities("visual-studio-code"),
-        initialization_options={"mint": {"debounceMs": 0, "dialect": "auto"}},
-    )
-    await lsp_client.initialize_session(params)
+    await lsp_client.initialize_session(AUTO)
+    yield
+    await lsp_client.shutdown_session()
+
+
+@pytest_lsp.fixture(config=EDITOR, scope="module")
+async def shared_client(lsp_client: LanguageClient):
+    """The conftest's ``shared_client`` with this module's settings."""
+    await lsp_client.initialize_session(AUTO)
     yield
     await lsp_client.shutdown_session()
 
@@ -37,12 +47,13 @@ def _listing(name: str) -> tuple[str, str]:
     return uri_of(path), path.read_text(encoding="utf-8")
 
 
+@SHARED
 @pytest.mark.parametrize("case", LISTINGS, ids=lambda case: case.name)
 async def test_every_listing_gets_the_errors_the_note_implies_and_formats_stably(
-    client: LanguageClient, case: CorpusCase
+    shared_client: LanguageClient, case: CorpusCase
 ) -> None:
     uri = uri_of(case.path)
-    diagnostics = await open_document(client, uri, case.source)
+    diagnostics = await open_document(shared_client, uri, case.source)
     errors = {
         (str(diagnostic.code), diagnostic.range.start.line + 1)
         for diagnostic in diagnostics
@@ -50,11 +61,11 @@ async def test_every_listing_gets_the_errors_the_note_implies_and_formats_stably
     }
     assert errors == set(case.expected)
     params = types.DocumentFormattingParams(text_document=document(uri), options=SPACES)
-    formatted = apply(case.source, await client.text_document_formatting_async(params) or [])
+    formatted = apply(case.source, await shared_client.text_document_formatting_async(params) or [])
     other = "file:///formatted/" + case.path.name
-    await open_document(client, other, formatted)
+    await open_document(shared_client, other, formatted)
     again = types.DocumentFormattingParams(text_document=document(other), options=SPACES)
-    assert not await client.text_document_formatting_async(again)
+    assert not await shared_client.text_document_formatting_async(again)
     assert [line.strip() for line in formatted.split("\n")] == [line.strip() for line in case.source.split("\n")]
 
 

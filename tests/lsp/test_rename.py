@@ -10,7 +10,7 @@ from lsprotocol import types
 from pygls.exceptions import JsonRpcException
 from pygls.lsp.client import LanguageClient
 
-from tests.lsp.conftest import corpus, document, open_document, position, uri_of
+from tests.lsp.conftest import SHARED, corpus, document, open_document, position, uri_of
 
 pytestmark = pytest.mark.asyncio
 XY = corpus("ch01_l0144_xy_example.mnt")
@@ -48,15 +48,16 @@ async def test_rename_an_array_and_a_label(client, tmp_path):
     ]
 
 
+@SHARED
 @pytest.mark.parametrize(
     ("new_name", "reason"),
     [("ypos", "same name as 'ypos'"), ("SPEED", "the Mint keyword SPEED"), ("two words", "not a valid")],
 )
-async def test_rename_refusals(client, tmp_path, new_name, reason):
+async def test_rename_refusals(shared_client, tmp_path, new_name, reason):
     uri = uri_of(tmp_path / "xy.mnt")
-    await open_document(client, uri, XY)
+    await open_document(shared_client, uri, XY)
     with pytest.raises(JsonRpcException, match=reason):
-        await client.text_document_rename_async(
+        await shared_client.text_document_rename_async(
             types.RenameParams(text_document=document(uri), position=position(XY, "xpos(a)"), new_name=new_name)
         )
 
@@ -78,6 +79,7 @@ LABEL_REPLACED = ": the controller would put the macro's text in place of the la
 MACRO_AND_LABEL = "DEFINE fast = SPEED.0 = 100\nGOSUB init\nEND\n#init\nfast\nRETURN\n"
 
 
+@SHARED
 @pytest.mark.parametrize(
     ("at", "new_name", "refusal"),
     [
@@ -105,13 +107,13 @@ MACRO_AND_LABEL = "DEFINE fast = SPEED.0 = 100\nGOSUB init\nEND\n#init\nfast\nRE
     ],
 )
 async def test_a_label_or_macro_does_not_take_a_macros_a_labels_or_a_keywords_name(
-    client, tmp_path, at, new_name, refusal
+    shared_client, tmp_path, at, new_name, refusal
 ):
     uri = uri_of(tmp_path / "macro_and_label.mnt")
-    await open_document(client, uri, MACRO_AND_LABEL)
+    await open_document(shared_client, uri, MACRO_AND_LABEL)
     where = position(MACRO_AND_LABEL, at, len(at) - 1)
     with pytest.raises(JsonRpcException, match=re.escape(refusal)):
-        await client.text_document_rename_async(
+        await shared_client.text_document_rename_async(
             types.RenameParams(text_document=document(uri), position=where, new_name=new_name)
         )
 
@@ -133,12 +135,13 @@ async def test_a_variable_a_macro_mentions_is_renamed_in_the_macros_body_not_at_
     assert prepared.placeholder == "target"
 
 
+@SHARED
 @pytest.mark.parametrize("new_name", ["onerror", "#TIMER", "fastin0"])
-async def test_a_subroutine_is_not_renamed_into_an_event_handler(client, tmp_path, new_name):
+async def test_a_subroutine_is_not_renamed_into_an_event_handler(shared_client, tmp_path, new_name):
     uri = uri_of(tmp_path / "xy.mnt")
-    await open_document(client, uri, XY)
+    await open_document(shared_client, uri, XY)
     with pytest.raises(JsonRpcException, match="event handler"):
-        await client.text_document_rename_async(
+        await shared_client.text_document_rename_async(
             types.RenameParams(text_document=document(uri), position=position(XY, "#init", 2), new_name=new_name)
         )
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 from lsprotocol import types
 
-from tests.lsp.conftest import document, open_document, position, uri_of
+from tests.lsp.conftest import SHARED, document, open_document, position, uri_of
 
 pytestmark = pytest.mark.asyncio
 
@@ -55,6 +55,7 @@ PRINT = "PRINT {#<terminal>} argument, {argument}, {modifier argument} {USING <i
 INPUT = "INPUT {#<terminal>} {string,} variable {USING <int> {,<frac>}}"
 
 
+@SHARED
 @pytest.mark.parametrize(
     ("line", "label", "parameter"),
     [
@@ -78,8 +79,10 @@ INPUT = "INPUT {#<terminal>} {string,} variable {USING <int> {,<frac>}}"
         ('INPUT "A = ", a USING -5, ', INPUT, "<frac>"),
     ],
 )
-async def test_the_operand_under_the_cursor_is_highlighted_in_the_form_in_use(client, tmp_path, line, label, parameter):
+async def test_the_operand_under_the_cursor_is_highlighted_in_the_form_in_use(
+    shared_client, tmp_path, line, label, parameter
+):
     text = f"DIM a\nDIM arr(3)\n{line}\n"
     uri = uri_of(tmp_path / "operands.mnt")
-    await open_document(client, uri, text)
-    assert await active(client, uri, text, line, len(line)) == (label, parameter)
+    await open_document(shared_client, uri, text)
+    assert await active(shared_client, uri, text, line, len(line)) == (label, parameter)

@@ -40,11 +40,19 @@ class StandardInput:
             return ""
         return self._read() if ready else ""
 
-    def wait(self) -> str:
-        """Block until keys come; empty at the end of the input."""
+    def wait(self, timeout: float | None) -> str:
+        """Block until keys come, for at most ``timeout`` seconds (None: for ever); empty at the end of the
+        input, or when the time ran out (then not ``ended``)."""
         if self._fd is None:
             return ""
         self._before_wait()
+        if timeout is not None:
+            try:
+                ready, _, _ = select.select([self._fd], [], [], timeout)
+            except (OSError, ValueError):
+                ready = [self._fd]  # select cannot watch it: read, waiting as long as that takes
+            if not ready:
+                return ""
         return self._read()
 
     def _read(self) -> str:

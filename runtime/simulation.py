@@ -137,9 +137,10 @@ class Simulator:
         if self.on_tick is not None:
             self.on_tick(t)
 
-    def _typed(self, t: int) -> bool:
+    def _typed(self, t: int, timeout: float | None) -> bool | None:
         """Whether a program that only keys can wake (an INPUT, a PAUSE on INKEY) got some from the keyboard,
-        which is waited for here: what would otherwise be a deadlock."""
+        which is waited for here, at most ``timeout`` seconds: what would otherwise be a deadlock. None when
+        the time ran out first."""
         vm = self.c.vm
         site = vm.current_site()
         if site is None:
@@ -147,10 +148,16 @@ class Simulator:
         line = site.kind == "Input"
         if not (line or (site.kind == "Pause" and vm.awaits_keys)):
             return False
-        if not self.c.terminal.await_keys(line=line):
-            return False
+        terminal = self.c.terminal
+        if not terminal.await_keys(line=line, timeout=timeout):
+            return None if terminal.keyboard is not None and not terminal.keyboard.ended else False
         vm.wake_at = t + 1  # a PAUSE asleep until then reads INKEY again
         return True
+
+    def _wall_left(self, started: float) -> float | None:
+        """The real time left before ``--max-wall-s`` for a run that began at ``started`` (None: no limit)."""
+        limit = self.limits.max_wall_s
+        return None if limit is None else max(limit - (time.perf_counter() - started), 0.0)
 
     def _deadlock(self, t: int) -> str:
         """Why nothing can wake the program, with the likeliest cause: what it waits on when that is keys (an
@@ -363,7 +370,11 @@ class Simulator:
             following = self.next_change(t)
             if following >= NEVER:
                 following = self._moves_end(t)
-            if following >= NEVER and self._typed(t):
+            typed = self._typed(t, self._wall_left(started)) if following >= NEVER else False
+            if typed is None:
+                vm.stop(StopReason.WALL_LIMIT, f"ran {limits.max_wall_s:.1f} s of wall time waiting for keys")
+                break
+            if typed:
                 following = t + 1
             elif following >= NEVER or (following == t + 1 and self._stalled_on_masters(t)):
                 vm.stop(StopReason.DEADLOCK, self._deadlock(t))

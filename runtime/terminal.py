@@ -50,7 +50,7 @@ class Keyboard(Protocol):
 
     def available(self) -> str: ...
 
-    def wait(self) -> str: ...
+    def wait(self, timeout: float | None) -> str: ...
 
 
 class Terminal:
@@ -214,17 +214,18 @@ class Terminal:
     def _line_end(self) -> int | None:
         return next((index for index, key in enumerate(self._keys) if key in _LINE_ENDS), None)
 
-    def await_keys(self, *, line: bool) -> bool:
-        """Wait for the keyboard's next keys, for a program that can go no further without them; False when
-        there is no keyboard or it has ended. ``line``: an ``INPUT`` waits, and the input's last line, left
-        without its line end when the input ended, is entered all the same."""
+    def await_keys(self, *, line: bool, timeout: float | None) -> bool:
+        """Wait for the keyboard's next keys, for a program that can go no further without them, at most
+        ``timeout`` seconds; False when there is no keyboard, it has ended or the time ran out. ``line``: an
+        ``INPUT`` waits, and the input's last line, left without its line end when the input ended, is
+        entered all the same."""
         if self.keyboard is None:
             return False
-        typed = "" if self.keyboard.ended else self.keyboard.wait()
+        typed = "" if self.keyboard.ended else self.keyboard.wait(timeout)
         if typed:
             self._keys.extend(typed)
             return True
-        if line and self._keys and self._line_end() is None:  # the input ended in the middle of a line
+        if line and self.keyboard.ended and self._keys and self._line_end() is None:  # ended mid-line
             self._keys.append("\r")
             return True
         return False

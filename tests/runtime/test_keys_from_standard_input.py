@@ -69,3 +69,16 @@ def test_an_input_left_waiting_when_standard_input_ends_is_a_deadlock_that_says_
     stderr = result.stderr.decode()
     assert "deadlock" in stderr and "line 4" in stderr
     assert "standard input, which has ended" in stderr
+
+
+def test_waiting_on_a_standard_input_that_never_ends_stops_at_the_wall_clock_limit(tmp_path: Path) -> None:
+    arguments = [sys.executable, "-m", "mintlang.runtime", "-q", "--max-wall-s", "1", str(program(tmp_path, SUM))]
+    with subprocess.Popen(arguments, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE) as running:
+        try:
+            running.wait(timeout=120)  # stdin stays open, with nothing written
+        finally:
+            running.kill()
+        assert running.stderr is not None
+        stderr = running.stderr.read().decode()
+    assert running.returncode == 1
+    assert "wall-limit" in stderr and "waiting for keys" in stderr

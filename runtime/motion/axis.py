@@ -135,11 +135,8 @@ class Axis:
         check_range(name, value, self.bounds[name], self.number, scale)
         if name == "CONFIG" and value != 0:
             self.open_loop_dac = None  # back to servo (or stepper) control: the loop drives the DAC again
-        if name == "SCALE":
-            if value <= 0:
-                raise MintError(3, self.number, "SCALE must be positive")
-            if self.busy():
-                raise MintError(MOTION_IN_PROGRESS, self.number, "SCALE can only change on an idle axis")
+        if name == "SCALE" and self.busy():
+            raise MintError(MOTION_IN_PROGRESS, self.number, "SCALE can only change on an idle axis")
         self.parameters[name] = value * scale
         if name in GUARDS:
             self.guarded = self._guarded()

@@ -10,6 +10,7 @@ an offset through a pass is a bisection instead of a walk over every edit.
 
 from __future__ import annotations
 
+from array import array
 from bisect import bisect_left, bisect_right
 from dataclasses import field
 
@@ -28,22 +29,26 @@ class Edit:
 
 @record
 class _Batch:
-    """The edits of one pass, sorted, with their starts, where each ends in the text they
-    produced, and the growth of the edits before each (one more: all of them)."""
+    """The edits of one pass, sorted: where each starts and ends in the text before the pass and
+    ends in the text it produced, and the growth of the edits before each (one more: all of them).
+    Machine integers, not the edits: a run's edits (a marker's text, its span, a Python integer per
+    offset) held about twice the program's size until its end, and only these offsets are asked."""
 
-    edits: list[Edit]
-    starts: list[int]
-    new_ends: list[int]
-    shifts: list[int]
+    starts: array[int]
+    ends: array[int]
+    new_ends: array[int]
+    shifts: array[int]
 
     @classmethod
     def of(cls, edits: list[Edit]) -> _Batch:
-        new_ends: list[int] = []
-        shifts = [0]
+        starts, ends, new_ends, shifts = array("q"), array("q"), array("q"), array("q", [0])
         for edit in edits:
-            new_ends.append(edit.span.start + shifts[-1] + len(edit.text))
-            shifts.append(shifts[-1] + len(edit.text) - (edit.span.end - edit.span.start))
-        return cls(edits, [edit.span.start for edit in edits], new_ends, shifts)
+            start, end = edit.span
+            starts.append(start)
+            ends.append(end)
+            new_ends.append(start + shifts[-1] + len(edit.text))
+            shifts.append(shifts[-1] + len(edit.text) - (end - start))
+        return cls(starts, ends, new_ends, shifts)
 
     def back(self, offset: int, *, at_start: bool) -> tuple[int, bool]:
         """``offset`` of the produced text in the text before the pass, and whether it lies in
@@ -51,24 +56,23 @@ class _Batch:
         The first character of a replacement stands for the first it replaced."""
         first = bisect_left(self.new_ends, offset)  # the edits before it end before ``offset``
         shift = self.shifts[first]
-        edits = self.edits
-        for index in range(first, len(edits)):  # a slice would copy the rest of a large pass's edits
-            edit = edits[index]
-            new_start = edit.span.start + shift
-            new_end = new_start + len(edit.text)
-            if offset < new_start or (offset == new_start and at_start and edit.span.start != edit.span.end):
+        starts, ends, new_ends = self.starts, self.ends, self.new_ends
+        for index in range(first, len(starts)):  # a slice would copy the rest of a large pass's edits
+            start, end, new_end = starts[index], ends[index], new_ends[index]
+            new_start = start + shift
+            if offset < new_start or (offset == new_start and at_start and start != end):
                 break
             if offset < new_end or (offset == new_end and not at_start and offset > new_start):
-                return (edit.span.start if at_start else edit.span.end), True
-            shift += len(edit.text) - (edit.span.end - edit.span.start)
+                return (start if at_start else end), True
+            shift += new_end - new_start - (end - start)
         return offset - shift, False
 
     def forward(self, offset: int) -> int:
         """``offset`` of the text before the pass in the text it produced: after whatever was
         inserted at it, or at the start of the text that replaced it."""
         before = bisect_right(self.starts, offset)  # the edits starting at or before ``offset``
-        if before and self.edits[before - 1].span.start <= offset < self.edits[before - 1].span.end:
-            return self.edits[before - 1].span.start + self.shifts[before - 1]
+        if before and self.starts[before - 1] <= offset < self.ends[before - 1]:
+            return self.starts[before - 1] + self.shifts[before - 1]
         return offset + self.shifts[before]
 
 

@@ -99,6 +99,10 @@ class LineTags:
         self._tags: dict[object, object] = {}
         self._tuples: dict[tuple[object, ...], tuple[object, ...]] = {}
 
+    def clear(self) -> None:
+        """Forget every line's tags: no pass that asks for them is to come."""
+        self._known, self._tags, self._tuples = {}, {}, {}
+
     def of_text(self, lines: Iterable[n.PlacedLine]) -> list[tuple[object, ...]]:
         """The distinct tags of each of ``lines``, the lines of a whole text; the tags of other
         lines are forgotten."""

@@ -28,7 +28,7 @@ from dataclasses import field, replace
 from functools import partial
 
 from mintlang.allocation import kept_without_collector
-from mintlang.caching import Shelf, apart, keeping_what_it_uses
+from mintlang.caching import Shelf, apart, forget_lines, keeping_what_it_uses
 from mintlang.diagnostics import LineIndex, Severity, Span, split_lines
 from mintlang.migrate.citations import cite, in_file
 from mintlang.migrate.context import MARKER, Context, FileView, LineTags, Unreadable
@@ -49,6 +49,12 @@ MAX_PASSES = 6  # a phase that still edits after this many passes has a rule tha
 # keyword of both dialects and holds it to finding nothing. The other phases keep their
 # confirming pass: their rules may feed one another (S-ACCEL copies a value M-PREC then brackets).
 SETTLED_IN_ONE_PASS = frozenset({Phase.ABBREVIATIONS, Phase.RENAMES})
+
+# The last phase: its rule (X-CHECK) reads the result as Mint v4 and asks for no line's tags, and no
+# Mint v3 reading follows it that the run's per-line caches would spare work (a second pass, which
+# only a line split at an opening AUTO or PROTECT could bring, reads afresh). What they held was
+# alive beside the Mint v4 reading, the peak of a run: the tags about 3 times the program's size.
+_LAST = Phase.CHECK
 
 
 @record
@@ -113,9 +119,16 @@ def _run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> d
             if context is None:
                 current = {unit: state.text for unit, state in states.items()}
                 context = keeping_what_it_uses(partial(_build, current, controller, tags, v4_shelf))
-            editing, settled = _apply_pass(context, active, states, one_pass=phase in SETTLED_IN_ONE_PASS)
-            if editing:
-                context = None  # stale: dropped before the next parse, so two trees are never alive at once
+            if phase is _LAST:
+                tags.clear()
+                forget_lines()
+            wanted = _asked(context, active, states)
+            if any(wanted.values()):
+                # stale, and applying the edits needs none of it: dropped before they make a second text
+                # (a run's peak was there, the model beside the old and new text), and before the next
+                # parse, so two trees are never alive at once
+                context = None
+            editing, settled = _apply_pass(wanted, states, one_pass=phase in SETTLED_IN_ONE_PASS)
             if settled:
                 break
         else:
@@ -151,14 +164,8 @@ def _unreadable(file: FileView) -> tuple[str, ...]:
     )
 
 
-def _apply_pass(
-    context: Context, rules: Sequence[Rule], states: dict[Unit, _FileState], *, one_pass: bool
-) -> tuple[set[str], bool]:
-    """One pass of ``rules``: the ids of the rules whose edits were applied, and whether the phase
-    is done. It is when the rules asked for nothing, or for marker lines only: a comment line
-    changes no syntax a rule reads, so another pass would ask for the same markers, found written;
-    or, for a phase ``one_pass`` (``SETTLED_IN_ONE_PASS``), when no edit was held back by an
-    overlapping one."""
+def _asked(context: Context, rules: Sequence[Rule], states: dict[Unit, _FileState]) -> dict[Unit, list[Edit]]:
+    """The edits ``rules`` ask for in one pass, per file, in rule order."""
     wanted: dict[Unit, list[Edit]] = {unit: [] for unit in states}
     flagged: set[tuple[Unit, int, str]] = set()
     for rule in rules:
@@ -175,6 +182,17 @@ def _apply_pass(
             raise _unreadable_files(error.__cause__) from error.__cause__
         except Exception as error:  # a bug in one rule: reported with its id, the run goes on
             raise MigrationFailed(rule.id, _described(error)) from error
+    return wanted
+
+
+def _apply_pass(
+    wanted: dict[Unit, list[Edit]], states: dict[Unit, _FileState], *, one_pass: bool
+) -> tuple[set[str], bool]:
+    """Apply the edits of one pass: the ids of the rules whose edits were applied, and whether the phase
+    is done. It is when the rules asked for nothing, or for marker lines only: a comment line
+    changes no syntax a rule reads, so another pass would ask for the same markers, found written;
+    or, for a phase ``one_pass`` (``SETTLED_IN_ONE_PASS``), when no edit was held back by an
+    overlapping one."""
     applied: set[str] = set()
     held_back = False
     for unit, edits in wanted.items():

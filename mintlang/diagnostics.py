@@ -10,7 +10,7 @@ from __future__ import annotations
 import re
 from array import array
 from bisect import bisect_right
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import field
 from enum import StrEnum
 from itertools import accumulate, chain
@@ -30,6 +30,12 @@ def split_lines(text: str, *, keepends: bool = False) -> list[str]:
     """
     lines = _LINE.findall(text)
     return lines if keepends else [line.rstrip("\r\n") for line in lines]
+
+
+def lines_of(text: str) -> Iterator[str]:
+    """The lines of ``split_lines(text, keepends=True)`` one at a time, for a reader that may stop
+    early or keeps few: the list of a large file's lines is several times its size."""
+    return (found.group() for found in _LINE.finditer(text))
 
 
 class Severity(StrEnum):

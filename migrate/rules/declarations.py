@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from mintlang.diagnostics import Span, split_lines
+from mintlang.diagnostics import Span, lines_of
 from mintlang.migrate.context import LABEL, MARKER, Context, FileView, name_tag, per_pass
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Replace, Rule
@@ -31,7 +31,7 @@ def top_of(file: FileView) -> int:
     if file.opening is not None:
         return _next_line(file, file.opening.span.end)
     position = 0
-    for raw in split_lines(file.text, keepends=True):
+    for raw in lines_of(file.text):
         comment = raw.strip().upper()
         if not comment.startswith("REM") or comment.startswith(MARKER):  # a marker belongs to the line below
             break

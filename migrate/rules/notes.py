@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
 
-from mintlang.diagnostics import Span, split_lines
+from mintlang.diagnostics import Span, lines_of
 from mintlang.migrate.context import MARKER, Context, FileView
 from mintlang.migrate.rules.base import Replace
 from mintlang.migrate.rules.declarations import insert_lines, prologue_file
@@ -24,7 +24,7 @@ from mintlang.semantic.index import KeywordUse, Use
 def prologue_notes(context: Context, rule: str, notes: Sequence[str]) -> Iterator[Replace]:
     """One insertion of the ``REM MIGRATE: <rule>: <note>`` lines the prologue file lacks."""
     file = prologue_file(context)
-    present = {line.strip() for line in split_lines(file.text)}
+    present = {line.strip() for line in lines_of(file.text) if MARKER in line}  # a note's line holds one
     lines = [line for line in (f"{MARKER} {rule}: {note}" for note in notes) if line not in present]
     if lines:
         yield after_configuration(context, lines)

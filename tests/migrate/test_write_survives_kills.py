@@ -10,6 +10,7 @@ case keep the test to seconds; the in-place overwrite this replaced fails at the
 
 from __future__ import annotations
 
+import functools
 import os
 import random
 import signal
@@ -24,7 +25,13 @@ from mintlang.atomic import SUFFIX
 from mintlang.migrate import migrate
 
 OLD = ("HMSPEED = 10\nREM " + "x" * (8 * 1024 * 1024) + "\n").encode()
-NEW = migrate(OLD.decode(), controller="mintdrive").text.encode()
+
+
+@functools.cache  # migrated when a test asks, not while the tests are collected (by every worker)
+def new_bytes() -> bytes:
+    return migrate(OLD.decode(), controller="mintdrive").text.encode()
+
+
 COMMAND = [sys.executable, "-m", "mintlang.migrate", "--write", "--controller", "mintdrive"]
 WRITING = 0.1  # seconds: longer than writing, flushing and renaming 8 MB takes here
 
@@ -75,10 +82,10 @@ def test_every_name_holds_the_old_or_the_new_bytes_after_a_kill(tmp_path: Path, 
         _killed_run(tmp_path, names[0], delay, targeted)
         for name in names:
             data = name.read_bytes()
-            intact = data in (OLD, NEW)  # not asserted directly: pytest would print 8 MB
+            intact = data in (OLD, new_bytes())  # not asserted directly: pytest would print 8 MB
             assert intact, f"{name.name}, killed {delay:.3f} s in: {len(data)} bytes, neither old nor new"
     names = _prepare(tmp_path, links)
     finished = subprocess.run([*COMMAND, str(names[0])], capture_output=True, text=True, timeout=120, check=False)
     assert finished.returncode == 0, finished.stderr
-    assert all(name.read_bytes() == NEW for name in names)
+    assert all(name.read_bytes() == new_bytes() for name in names)
     assert not [name for name in os.listdir(tmp_path) if name.endswith(SUFFIX)]

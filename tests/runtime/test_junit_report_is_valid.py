@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 from pathlib import Path
 
 import pytest
@@ -10,7 +11,12 @@ from click.testing import CliRunner
 
 from mintlang.cli import main
 
-SCHEMA = xmlschema.XMLSchema(Path(__file__).parent / "schema" / "junit-10.xsd")
+
+@functools.cache  # built when a test asks, not while every worker collects the tests (over a second)
+def schema() -> xmlschema.XMLSchema:
+    return xmlschema.XMLSchema(Path(__file__).parent / "schema" / "junit-10.xsd")
+
+
 PROGRAMS = {
     "passes.mnt": "REM @expect a = 2\nDIM a\na = 1 + 1\n",
     "fails.mnt": "REM @expect a = 3\nDIM a\na = 1 + 1\n",
@@ -34,4 +40,4 @@ def test_the_report_is_valid_junit(tmp_path: Path, names: list[str]) -> None:
         (tmp_path / name).write_text(PROGRAMS[name], encoding="utf-8")
     result = CliRunner().invoke(main, ["test", "-j", "1", "--format", "junit", str(tmp_path)])
     assert result.exit_code in (0, 1), result.output
-    SCHEMA.validate(result.output)
+    schema().validate(result.output)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from mintlang.caching import RecentCache, Shelf, apart, keeping_what_it_uses
+from mintlang.caching import RecentCache, Shelf, apart, forget_lines, keeping_what_it_uses
 
 
 def test_an_entry_asked_for_since_the_last_turn_survives_the_next() -> None:
@@ -87,3 +87,18 @@ def test_an_action_using_more_lines_than_a_generation_holds_keeps_them_all() -> 
     keeping_what_it_uses(action)
     assert len(cache) == 6
     assert (cache.get(0), cache.get(5)) == (0, 5)
+
+
+def test_forgetting_lines_apart_empties_the_blocks_caches_and_keeps_what_was_there_before() -> None:
+    cache: RecentCache[str, int] = RecentCache(size=100)
+    cache.put("before", 1)
+    shelf = Shelf()
+    with apart(shelf):
+        cache.put("shelved", 2)
+    with apart():
+        cache.put("inside", 3)
+        forget_lines()
+        assert cache.get("inside") is None
+    assert cache.get("before") == 1
+    with apart(shelf):
+        assert cache.get("shelved") == 2

@@ -15,11 +15,12 @@ from __future__ import annotations
 import re
 from collections import deque
 from collections.abc import Callable, Sequence
+from itertools import islice
 from typing import Protocol
 
 from mintlang.records import record
 from mintlang.runtime.errors import MintError
-from mintlang.runtime.numbers import f32
+from mintlang.runtime.numbers import f32, held
 
 TAB_WIDTH = 8
 TRANSCRIPT_LIMIT = 1 << 20
@@ -62,6 +63,8 @@ class Terminal:
         self._kept = 0  # characters in _chunks
         self._echo = echo
         self._keys: deque[str] = deque()
+        self._no_line_end = 0  # keys at the front of _keys known to hold no line end: each key is searched once
+        self._after_cr = False  # INPUT took a CR that ended the keys: an LF typed next belongs to it (CR LF)
         self._watched: dict[str, str | None] = {}  # text -> the output that may begin it, None once printed
         self.column = 0
         self.printed = 0  # characters written in all, kept or not
@@ -180,9 +183,11 @@ class Terminal:
         """``INKEY``: 0 when nothing is waiting, else the oldest key's code with a-z upper-cased (PR-5)."""
         if not self._keys and self.keyboard is not None:
             self._keys.extend(self.keyboard.available())
+        self._drop_lf_after_cr()
         code = self.peek_key()
         if self._keys:
             self._keys.popleft()
+            self._no_line_end = max(self._no_line_end - 1, 0)
         return code
 
     def peek_key(self) -> int:
@@ -198,21 +203,40 @@ class Terminal:
         CR LF counts as one line end. The typed line is echoed to the output, as a
         terminal shows what the operator typed, so the log reads like the session.
         """
+        self._drop_lf_after_cr()
         end = self._line_end()
         if end is None and self.keyboard is not None:
             self._keys.extend(self.keyboard.available())
+            self._drop_lf_after_cr()
             end = self._line_end()
         if end is None:
             return None
         line = "".join(self._keys.popleft() for _ in range(end))
-        if self._keys.popleft() == "\r" and self._keys and self._keys[0] == "\n":
-            self._keys.popleft()
+        self._no_line_end = 0
+        self._after_cr = self._keys.popleft() == "\r"
+        self._drop_lf_after_cr()
         self.write(line)
         self.newline()
         return line
 
     def _line_end(self) -> int | None:
-        return next((index for index, key in enumerate(self._keys) if key in _LINE_ENDS), None)
+        """Where the first line end is in the keys; each key is looked at once however often INPUT asks, so
+        a long line that comes in pieces (a large input, read 64 KiB at a time) is not searched again and again."""
+        searched = self._no_line_end
+        keys = islice(self._keys, searched, None)
+        end = next((index for index, key in enumerate(keys, searched) if key in _LINE_ENDS), None)
+        if end is None:
+            self._no_line_end = len(self._keys)
+        return end
+
+    def _drop_lf_after_cr(self) -> None:
+        """An LF typed right after the CR that ended INPUT's line is part of that line end, even when it
+        comes later than the CR (a slow producer, or CR LF split between two reads of standard input)."""
+        if self._after_cr and self._keys:
+            self._after_cr = False
+            if self._keys[0] == "\n":
+                self._keys.popleft()
+                self._no_line_end = max(self._no_line_end - 1, 0)
 
     def await_keys(self, *, line: bool, timeout: float | None) -> bool:
         """Wait for the keyboard's next keys, for a program that can go no further without them, at most
@@ -241,7 +265,7 @@ class Terminal:
         if _NUMBER.fullmatch(entry) is None:
             return NumberEntry(None, retry=True)
         try:
-            return NumberEntry(f32(float(entry)))
+            return NumberEntry(held(float(entry), f32))  # 400 digits: an infinity, too large as 50 are
         except MintError:
             return NumberEntry(None, retry=True)
 

@@ -82,3 +82,21 @@ def test_waiting_on_a_standard_input_that_never_ends_stops_at_the_wall_clock_lim
         stderr = running.stderr.read().decode()
     assert running.returncode == 1
     assert "wall-limit" in stderr and "waiting for keys" in stderr
+
+
+def test_a_cr_lf_split_between_two_writes_is_still_one_line_end(tmp_path: Path) -> None:
+    arguments = [sys.executable, "-m", "mintlang.runtime", "-q", str(program(tmp_path, SUM))]
+    with subprocess.Popen(arguments, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE) as running:
+        assert running.stdin is not None
+        running.stdin.write(b"1\r")
+        running.stdin.flush()
+        assert running.stdout is not None
+        assert running.stdout.read(len(b"a? 1\nb? ")) == b"a? 1\nb? "  # a = 1 taken, b asked, before the LF
+        stdout, _ = running.communicate(b"\n2\r\n", timeout=120)  # the late LF ends a's line, not b's
+    assert stdout.decode().splitlines()[-1] == "3"  # 1 + 2
+
+
+def test_a_number_too_large_even_for_a_double_is_asked_again(tmp_path: Path) -> None:
+    result = mint_run(program(tmp_path, SUM), b"9" * 400 + b"\n3\n4\n")  # 10^400 is no binary32: a = 3, b = 4
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.decode().splitlines()[-1] == "7"

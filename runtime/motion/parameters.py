@@ -108,13 +108,14 @@ def power_up(controller: Controller) -> Mapping[str, float]:
 def bounds(keyword: str, controller: Controller) -> Bounds:
     """The accepted values of ``keyword`` on ``controller`` (unbounded when nothing gives any).
 
-    ``SCALE`` takes only a positive value (000:532-537) though NextMove's table prints 0 <= x
-    (000:15783): error 3 then says "more than 0", not the "0 to" a user would try next.
+    ``SCALE`` takes only a positive value (000:532-537) on every controller, though NextMove's
+    table prints 0 <= x (000:15783) and ServoNode's none: error 3 then says "more than 0", not
+    the "0 to" a user would try next.
     """
     known = _KNOWN_RANGES.get(keyword)
     if known is not None:
         return known
     table = table_bounds(keyword, controller)
-    if keyword == "SCALE" and table.minimum == 0:
-        return replace(table, exclusive_minimum=True)
+    if keyword == "SCALE" and (table.minimum is None or table.minimum <= 0):
+        return replace(table, minimum=0.0, exclusive_minimum=True)
     return table

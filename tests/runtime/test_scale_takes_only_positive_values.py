@@ -3,7 +3,8 @@
 The guide's range check example: ``SCALE = -1`` is out of range "because SCALE only accepts a
 positive value" (000:532-537), and ``SCALE = -3`` is error 3 (000:4600-4606). NextMove's
 attributes table prints 0 <= x <= 8388607.0 and MintDrive's 1 <= x <= 65535 (000:15783-15784):
-the upper bounds stand, and 0 is refused on NextMove as a negative value is.
+the upper bounds stand, and 0 is refused on NextMove as a negative value is. ServoNode's table gives
+no range, and the guide's rule holds there too.
 """
 
 from __future__ import annotations
@@ -30,3 +31,10 @@ def test_scale_0_on_mintdrive_is_error_3_saying_1_to_65535() -> None:
     result = simulate("SCALE.0 = 0\n", controller="mintdrive")
     assert (result.stop.reason, result.err) == (StopReason.ERROR, 3)
     assert "it takes 1 to 65535" in result.stop.message
+
+
+@pytest.mark.parametrize("value", ["0", "-3"])
+def test_scale_not_positive_on_servonode_is_error_3_saying_more_than_0(value: str) -> None:
+    result = simulate(f"SCALE.0 = {value}\n", controller="servonode51")
+    assert (result.stop.reason, result.err) == (StopReason.ERROR, 3)
+    assert "it takes more than 0)" in result.stop.message

@@ -4,17 +4,18 @@ An application is a program, its configuration file, or both: what the migrator
 reads together. Each is migrated on its own, so that a bug a rule meets in one
 (``MigrationFailed``, or anything else a bug raises) is reported with its files'
 paths and the rule, those files are left as they were, and the others are
-migrated and written as if nothing had happened.
+migrated and written as if nothing had happened. So is a file that cannot be read as
+Mint text (a NUL byte, a read error): it fails its application, named with where.
 """
 
 from __future__ import annotations
 
 from pathlib import Path
 
-from mintlang.cli.files import collect, is_configuration, program_as_own_configuration
+from mintlang.cli.files import cannot_read, find, is_configuration, program_as_own_configuration
 from mintlang.migrate import mintmt
 from mintlang.migrate.api import migrate
-from mintlang.migrate.model import MigrationFailed
+from mintlang.migrate.model import MigrationFailed, NotRead
 from mintlang.migrate.report import FileEntry
 from mintlang.records import record
 from mintlang.semantic.units import Unit
@@ -28,23 +29,40 @@ class UsageError(Exception):
 
 @record
 class Migrated:
-    """A file of an application with its report entry (whose result is None if it failed)."""
+    """A file of an application with its report entry (whose result is None if it failed; ``file`` is None
+    for a file that could not be read at all)."""
 
-    file: SourceFile
+    file: SourceFile | None
     entry: FileEntry
+
+
+@record
+class Unread:
+    """A file of an application that could not be read as Mint text, and why."""
+
+    path: Path
+    role: str
+    failure: NotRead
 
 
 @record(slots=False)
 class Application:
-    """One program, its configuration file, or both."""
+    """One program, its configuration file, or both; a file of it that could not be read is in ``unread``,
+    and the application is then not migrated: the two files are one application, as the controller runs
+    them, and either migrated alone would be migrated wrongly (its ``AXES``, its defaults, its names)."""
 
     program: SourceFile | None
     configuration: SourceFile | None
+    unread: tuple[Unread, ...] = ()
 
     def files(self) -> list[tuple[SourceFile, str]]:
-        """Each file with its role, the configuration file first (it runs first)."""
+        """Each file read with its role, the configuration file first (it runs first)."""
         found = [(self.configuration, "configuration"), (self.program, "program")]
         return [(file, role) for file, role in found if file is not None]
+
+    def paths(self) -> list[Path]:
+        """The path of each file, read or not."""
+        return [unread.path for unread in self.unread] + [file.path for file, _ in self.files()]
 
     def migrate(
         self,
@@ -56,6 +74,8 @@ class Application:
         to: str = "v4",
     ) -> list[Migrated]:
         """The application migrated to Mint v4 (from v3) or, ``to`` ``"mintmt"``, to MintMT (from v4)."""
+        if self.unread:
+            return self._not_read()
         config = self.configuration.text if self.configuration is not None else None
         program = self.program.text if self.program is not None else ""
         try:
@@ -73,36 +93,50 @@ class Application:
     def _failed(self, failure: MigrationFailed) -> list[Migrated]:
         return [Migrated(file, FileEntry(str(file.path), role, None, failure)) for file, role in self.files()]
 
+    def _not_read(self) -> list[Migrated]:
+        """Each file unread with why, each other file with the one it is not migrated without, in ``files``' order."""
+        missing = self.unread[0]
+        failure = NotRead(f"its {_ROLES[missing.role]} {missing.path} cannot be read")
+        items = [Migrated(file, FileEntry(str(file.path), role, None, failure)) for file, role in self.files()]
+        items += [Migrated(None, FileEntry(str(file.path), file.role, None, file.failure)) for file in self.unread]
+        return sorted(items, key=lambda item: item.entry.role != "configuration")
 
-def read(paths: tuple[Path, ...], config: Path | None) -> list[Application]:
+
+_ROLES = {"program": "program", "configuration": "configuration file"}
+
+
+@record
+class Found:
+    """The applications the command line names, and the paths that could not be looked at (one line each:
+    a missing path, a folder that cannot be listed, a dangling link), which the others do not wait for."""
+
+    applications: list[Application]
+    unread: list[str]
+
+
+def read(paths: tuple[Path, ...], config: Path | None) -> Found:
     """The applications the command line names: each program alone, or one with ``config``."""
-    try:
-        found = collect(paths)
-    except FileNotFoundError as error:
-        raise UsageError(f"no such file or directory: {error.filename or error.args[0]}") from None
-    except OSError as error:  # a link loop, a path under a file, a folder that cannot be read
-        raise UsageError(f"cannot read {error.filename}: {error.strerror or error}") from None
+    found = find(paths)
+    unread = [cannot_read(error) for error in found.unreadable]
     if config is not None:
-        if len(found) > 1 or any(is_configuration(path) for path in found):
+        if len(found.files) > 1 or any(is_configuration(path) for path in found.files):
             raise UsageError("--config pairs one configuration file with one program file")
-        itself = program_as_own_configuration(found, config)
+        itself = program_as_own_configuration(found.files, config)
         if itself is not None:  # read in both roles; with --write the second write would undo the first
             raise UsageError(f"--config {config} is the program {itself} itself: name the configuration file")
-        return [Application(_read(found[0]) if found else None, _read(config))]
-    if not found:
-        raise UsageError("no .mnt or .cfg files to migrate")
-    partners = _partners(found)
+        if unread:  # the program named with --config: nothing else to migrate
+            raise UsageError(unread[0])
+        return Found([_application(found.files[0] if found.files else None, config)], [])
+    if not found.files:
+        raise UsageError(unread[0] if unread else "no .mnt or .cfg files to migrate")
+    partners = _partners(found.files)
     claimed = {_identity(configuration) for configuration in partners.values()}
-    return [
-        Application(None, _read(path)) if is_configuration(path) else Application(_read(path), _paired(partners, path))
-        for path in found
+    applications = [
+        _application(None, path) if is_configuration(path) else _application(path, partners.get(path))
+        for path in found.files
         if not (is_configuration(path) and _identity(path) in claimed)
     ]
-
-
-def _paired(partners: dict[Path, Path], program: Path) -> SourceFile | None:
-    partner = partners.get(program)
-    return _read(partner) if partner is not None else None
+    return Found(applications, unread)
 
 
 def _partners(found: list[Path]) -> dict[Path, Path]:
@@ -134,12 +168,20 @@ def _identity(path: Path) -> object:
     return status.st_dev, status.st_ino
 
 
-def _read(path: Path) -> SourceFile:
+def _application(program: Path | None, configuration: Path | None) -> Application:
+    """The application of these files, read; a file that cannot be read is kept as ``Unread``."""
+    read = [(role, path, _read(path)) for role, path in (("configuration", configuration), ("program", program))]
+    files = {role: file for role, _, file in read if isinstance(file, SourceFile)}
+    unread = tuple(Unread(path, role, file) for role, path, file in read if isinstance(file, NotRead) and path)
+    return Application(files.get("program"), files.get("configuration"), unread)
+
+
+def _read(path: Path | None) -> SourceFile | NotRead | None:
+    if path is None:
+        return None
     try:
         file = read_source(path)
     except OSError as error:
-        raise UsageError(f"cannot read {path}: {error.strerror or error}") from None
-    binary = file.binary()
-    if binary is not None:
-        raise UsageError(f"{binary}: nothing migrated")
-    return file
+        return NotRead(f"cannot be read ({error.strerror or error})")
+    position = file.nul()
+    return file if position is None else NotRead("not Mint text (a NUL byte)", position)

@@ -30,14 +30,15 @@ from mintlang.migrate.verification import Verdict
 from mintlang.migrate.verification.report import Verified
 from mintlang.migrate.writing import write_changed
 from mintlang.records import record
+from mintlang.source import SourceFile
 
 GATE_FAILED = 1
 NOT_DONE = 2
 
 
-def _diff(item: Migrated, text: str) -> str:
-    path = item.file.path
-    lines = difflib.unified_diff(split_lines(item.file.text), split_lines(text), f"a/{path}", f"b/{path}", lineterm="")
+def _diff(file: SourceFile, text: str) -> str:
+    path = file.path
+    lines = difflib.unified_diff(split_lines(file.text), split_lines(text), f"a/{path}", f"b/{path}", lineterm="")
     return "\n".join(lines)
 
 
@@ -88,16 +89,17 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         context = click.get_current_context()
         settings = options.settings(controller, to) if mode == "verify" else options.refuse(partial(typed, context))
         select(only or None, skip, opt_in)
-        applications = read(paths, config)
-        if mode == "stdout" and sum(len(application.files()) for application in applications) > 1:
+        found = read(paths, config)
+        applications, unread = found.applications, found.unread
+        if mode == "stdout" and sum(len(application.paths()) for application in applications) > 1:
             raise UsageError("--stdout prints one file: name one program or one configuration file")
     except (UsageError, UnknownRule) as error:
         _fail(str(error))
-    sources = [file.path for application in applications for file, _ in application.files()]
+    sources = [path for application in applications for path in application.paths()]
     refuse_overwriting(output_file, sources, _fail)
     migrated = [application.migrate(controller, only or None, skip, opt_in, to=to) for application in applications]
     items = [item for application in migrated for item in application]
-    problems = [f"{item.entry.path}: {item.entry.failure}; left as it was" for item in items if item.entry.failure]
+    problems = [*unread, *(problem for item in items if (problem := item.entry.problem) is not None)]
     _tidy(items, mode)
     if settings is not None:
         verified, failed = verifying.verify_all(migrated, settings)
@@ -110,7 +112,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     if mode == "write":
         written = write_changed(migrated)
         problems += written.problems
-        items = [_unwritten(item) if item.file.path in written.unwritten else item for item in items]
+        items = [_unwritten(item) if Path(item.entry.path) in written.unwritten else item for item in items]
     _output(items, mode, output_format, controller, Output(output_file, quiet, verbose, color, to))
     for problem in problems:
         click.echo(f"mint-migrate: {problem}", err=True)
@@ -156,7 +158,7 @@ def _mode(*, write: bool, diff: bool, check: bool, to_stdout: bool, verify: bool
 def _tidy(items: list[Migrated], mode: str | None) -> None:
     """Temporary files an interrupted ``--write`` left beside these files: removed by
     ``--write`` (before anything is written), named by the modes that write nothing."""
-    found = leftovers.find(item.file.path.resolve().parent for item in items)
+    found = leftovers.find(Path(item.entry.path).resolve().parent for item in items)
     for line in leftovers.remove(found) if mode == "write" else leftovers.named(found):
         click.echo(f"mint-migrate: {line}", err=True)
 
@@ -175,15 +177,15 @@ class Output:
 def _output(items: list[Migrated], mode: str | None, output_format: str, controller: str, output: Output) -> None:
     data = report((item.entry for item in items), controller, to=output.to)
     if mode == "stdout":
-        result = items[0].entry.result
-        if result is not None:
-            sys.stdout.buffer.write(items[0].file.encode(result.text))
+        file, result = items[0].file, items[0].entry.result
+        if file is not None and result is not None:
+            sys.stdout.buffer.write(file.encode(result.text))
             sys.stdout.buffer.flush()
     with destination(output.path, _fail, stderr=mode == "stdout") as stream:
         if mode is None and output_format == "text":
             for item in items:
-                if item.entry.result is not None and item.entry.result.changed:
-                    click.echo(_diff(item, item.entry.result.text), file=stream)
+                if item.file is not None and item.entry.result is not None and item.entry.result.changed:
+                    click.echo(_diff(item.file, item.entry.result.text), file=stream)
         if output_format == "json":
             write_in_pieces(stream, json.dumps(data, indent=2, ensure_ascii=False) + "\n")
         else:

@@ -12,7 +12,7 @@ from collections.abc import Mapping
 from dataclasses import field
 from enum import StrEnum
 
-from mintlang.diagnostics import Edit, Span, split_lines
+from mintlang.diagnostics import Edit, Position, Span, split_lines
 from mintlang.records import record
 
 
@@ -34,6 +34,20 @@ class MigrationFailed(Exception):
         super().__init__(f"rule {rule} failed: {reason}" if rule else f"failed: {reason}")
         self.rule = rule
         self.reason = reason
+        self.position: Position | None = None
+
+
+class NotRead(MigrationFailed):
+    """A file of an application that could not be read as Mint text, ``position`` where it stops being text
+    (a NUL byte); or the other file of that application, which is not migrated without it (the two are read
+    together, as the controller runs them). Not a bug: the reason alone says what to do."""
+
+    def __init__(self, reason: str, position: Position | None = None) -> None:
+        super().__init__(None, reason)
+        self.position = position
+
+    def __str__(self) -> str:
+        return self.reason
 
 
 class Phase(StrEnum):

@@ -44,6 +44,15 @@ class FileEntry:
             return "unchanged"
         return "changed" if self.written else "not written"
 
+    @property
+    def problem(self) -> str | None:
+        """The line saying why the file was not migrated, at ``path:line:column`` when the failure has a place."""
+        if self.failure is None:
+            return None
+        position = self.failure.position
+        place = self.path if position is None else f"{self.path}:{position.line}:{position.column}"
+        return f"{place}: {self.failure}; left as it was"
+
 
 def entries(path: str, result: MigrationResult, config_path: str | None = None) -> list[FileEntry]:
     """The report entries of one migration: the configuration file (if any) first."""
@@ -95,7 +104,7 @@ def _file(entry: FileEntry) -> dict[str, Any]:
     row: dict[str, Any] = {"path": entry.path, "role": entry.role, "status": entry.status}
     if result is None:
         failure = entry.failure
-        row["failure"] = {"rule": failure.rule, "reason": failure.reason} if failure is not None else None
+        row["failure"] = _failure(failure) if failure is not None else None
         return {**row, "changed": False, "changes": [], "manual": [], "errors": [], "rules": {}}
     return {
         **row,
@@ -114,6 +123,12 @@ def _file(entry: FileEntry) -> dict[str, Any]:
         "errors": sorted(result.errors, key=_line),
         "rules": dict(result.rule_counts),
     }
+
+
+def _failure(failure: MigrationFailed) -> dict[str, Any]:
+    """The rule that failed and why; where in the file, for a file that is not Mint text."""
+    where = {} if failure.position is None else {"line": failure.position.line, "column": failure.position.column}
+    return {"rule": failure.rule, "reason": failure.reason, **where}
 
 
 def _line(error: str) -> int:

@@ -35,18 +35,18 @@ def write_changed(applications: Sequence[Sequence[Migrated]]) -> Written:
     """Write the changed files of each application."""
     try:
         plans = [
-            [(target(item.file.path), item.file, text) for item, text in _changed(application)]
-            for application in applications
+            [(target(file.path), file, text) for file, text in _changed(application)] for application in applications
         ]
     except Unwritable as error:
-        everything = frozenset(item.file.path for application in applications for item, _ in _changed(application))
+        everything = frozenset(file.path for application in applications for file, _ in _changed(application))
         return Written((f"{error}; nothing was written",), everything)
     problems: list[str] = []
     left: list[Path] = []
     for application, plan in zip(applications, plans, strict=True):
         if not plan:
             continue
-        stale = [str(item.file.path) for item in application if _content(item.file.path) != item.file.encode()]
+        read = [item.file for item in application if item.file is not None]  # all of them: it was migrated
+        stale = [str(file.path) for file in read if _content(file.path) != file.encode()]
         if stale:
             problems.append(f"{_changed_since(stale)}: not written, so the edit is kept; migrate again")
             left += [file.path for _, file, _ in plan]
@@ -63,9 +63,12 @@ def write_changed(applications: Sequence[Sequence[Migrated]]) -> Written:
     return Written(tuple(problems), frozenset(left))
 
 
-def _changed(application: Sequence[Migrated]) -> list[tuple[Migrated, str]]:
+def _changed(application: Sequence[Migrated]) -> list[tuple[SourceFile, str]]:
     """The files the migration changed, with their new text."""
-    return [(item, result.text) for item in application if (result := item.entry.result) is not None and result.changed]
+    changed = [(item.file, item.entry.result) for item in application]
+    return [
+        (file, result.text) for file, result in changed if file is not None and result is not None and result.changed
+    ]
 
 
 def _write(real: Path, file: SourceFile, text: str) -> str | None:

@@ -16,7 +16,7 @@ import stat
 from codecs import BOM_UTF8
 from pathlib import Path
 
-from mintlang.diagnostics import LineIndex
+from mintlang.diagnostics import LineIndex, Position
 from mintlang.records import record
 
 _ENCODINGS = ("utf-8", "cp1252", "latin-1")
@@ -34,16 +34,20 @@ class SourceFile:
         return (self.text if text is None else text).encode(self.encoding)
 
     def binary(self) -> str | None:
-        """Why the file is not Mint text, with where (``path:line:column``), or None.
+        """Why the file is not Mint text, with where (``path:line:column``), or None."""
+        position = self.nul()
+        if position is None:
+            return None
+        return f"{self.path}:{position.line}:{position.column}: not Mint text (a NUL byte)"
+
+    def nul(self) -> Position | None:
+        """Where the first NUL byte is, or None.
 
         A NUL byte never occurs in a program; a tool that read on would answer a
         binary file with hundreds of syntax errors, or scatter REM lines through it.
         """
         offset = self.text.find("\0")
-        if offset < 0:
-            return None
-        position = LineIndex(self.text).position(offset)
-        return f"{self.path}:{position.line}:{position.column}: not Mint text (a NUL byte)"
+        return None if offset < 0 else LineIndex(self.text).position(offset)
 
 
 def decode(data: bytes) -> tuple[str, str]:

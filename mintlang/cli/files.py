@@ -3,7 +3,7 @@
 No problem is skipped: a directory that cannot be read, a dangling link or a
 link loop below a named directory would otherwise leave programs unchecked (or
 unmigrated) without a word. ``find`` keeps each one to be reported while the
-other files are checked; ``collect`` raises the first.
+other files are checked (or migrated).
 """
 
 from __future__ import annotations
@@ -62,14 +62,6 @@ def find(paths: Iterable[Path]) -> Found:
             continue
         files.extend(_programs_below(path, unreadable) if path.is_dir() else [path])
     return Found(list(dict.fromkeys(files)), unreadable)
-
-
-def collect(paths: Iterable[Path]) -> list[Path]:
-    """The files of ``find``; raises the first OSError, for a command that must see every file or none."""
-    found = find(paths)
-    if found.unreadable:
-        raise found.unreadable[0]
-    return found.files
 
 
 def cannot_read(error: OSError) -> str:

@@ -14,7 +14,9 @@ from mintlang.migrate.context import Context
 from mintlang.migrate.model import MigrationResult, RuleInfo
 from mintlang.migrate.recognise import Evidence, may_show_v4_beyond_doubt, v4_evidence, valid_v4
 from mintlang.migrate.rules import RULES, Replace, Rule
+from mintlang.records import record
 from mintlang.semantic.units import Unit
+from mintlang.source import end_of_file_mark
 
 DEFAULT_CONTROLLER = Controller.NEXTMOVE_PCI
 # A UTF-8 file may start with a byte-order mark. The rules migrate the text after it: a
@@ -69,8 +71,8 @@ def migrate(
     texts = {Unit.PROGRAM: source}
     if config is not None:
         texts = {Unit.CONFIGURATION: config, **texts}
-    marks = {unit: _BOM if text.startswith(_BOM) else "" for unit, text in texts.items()}
-    texts = {unit: text.removeprefix(marks[unit]) for unit, text in texts.items()}
+    marks = {unit: _marks(text) for unit, text in texts.items()}
+    texts = {unit: text[len(marks[unit].start) : len(text) - len(marks[unit].end)] for unit, text in texts.items()}
     if any(detect_dialect(text) is Dialect.MINTMT for text in texts.values()):
         kept = {unit: engine.untouched(text) for unit, text in texts.items()}
         return _application({unit: _result(outcome, marks[unit], mintmt=True) for unit, outcome in kept.items()})
@@ -81,6 +83,21 @@ def migrate(
     if v4:
         outcomes = {unit: engine.untouched(text) for unit, text in texts.items()}
     return _application({unit: _result(outcome, marks[unit], v4=v4) for unit, outcome in outcomes.items()})
+
+
+@record
+class _Marks:
+    """What a file holds around its text that the rules do not see: a byte-order mark, and Ctrl-Z at the end
+    (``end_of_file_mark``), which stays last, byte for byte, and is no "unexpected character" to flag."""
+
+    start: str
+    end: str
+
+
+def _marks(text: str) -> _Marks:
+    start = _BOM if text.startswith(_BOM) else ""
+    body = text.removeprefix(start)
+    return _Marks(start, end_of_file_mark(body))
 
 
 def _application(results: Mapping[Unit, MigrationResult]) -> MigrationResult:
@@ -114,15 +131,15 @@ def _rewrite_free(outcomes: Mapping[Unit, engine.FileOutcome]) -> bool:
     return not any(outcome.changes for outcome in outcomes.values())
 
 
-def _result(outcome: engine.FileOutcome, mark: str, *, v4: bool = False, mintmt: bool = False) -> MigrationResult:
-    """The outcome with the byte-order mark the rules did not see put back in front."""
+def _result(outcome: engine.FileOutcome, marks: _Marks, *, v4: bool = False, mintmt: bool = False) -> MigrationResult:
+    """The outcome with the marks the rules did not see put back where they were."""
+    shift = len(marks.start)
     changes = tuple(
-        replace(change, span=Span(change.span.start + len(mark), change.span.end + len(mark)))
-        for change in outcome.changes
+        replace(change, span=Span(change.span.start + shift, change.span.end + shift)) for change in outcome.changes
     )
     return MigrationResult(
-        mark + outcome.source,
-        mark + outcome.text,
+        marks.start + outcome.source + marks.end,
+        marks.start + outcome.text + marks.end,
         changes,
         outcome.manual,
         outcome.counts,

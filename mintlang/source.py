@@ -21,6 +21,8 @@ from mintlang.records import record
 
 _ENCODINGS = ("utf-8", "cp1252", "latin-1")
 _MARKED = ("utf-8-sig", *_ENCODINGS)  # utf-8-sig drops the mark when it decodes and writes it when it encodes
+# DOS editors ended a file with Ctrl-Z, its end-of-file mark (v3 guide 1799: an array file must end with one)
+_END_OF_FILE = "\x1a"
 
 
 @record
@@ -48,6 +50,11 @@ class SourceFile:
         """
         offset = self.text.find("\0")
         return None if offset < 0 else LineIndex(self.text).position(offset)
+
+
+def end_of_file_mark(text: str) -> str:
+    """The Ctrl-Z run ending ``text``, or "": the DOS end-of-file mark, no line of the program."""
+    return text[len(text.rstrip(_END_OF_FILE)) :]
 
 
 def decode(data: bytes) -> tuple[str, str]:

@@ -12,7 +12,8 @@ then stops on it, and the comparison is incomplete until a person deals with it.
 A line in error that nobody flagged stays: the v4 run stops on it, and that is a
 divergence. ``REM @expect`` lines are turned into plain comments in
 both files: the comparison is the check, and a v3 expectation names v3 keywords
-the v4 reader does not know.
+the v4 reader does not know. A Ctrl-Z ending a file, the DOS end-of-file mark,
+is left out of both runs: the controller was never sent it.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from mintlang.dialect import Dialect
 from mintlang.migrate.model import MigrationResult
 from mintlang.migrate.verification.model import Application, Place
 from mintlang.semantic.units import Unit
+from mintlang.source import end_of_file_mark
 from mintlang.syntax.lexer import lex
 
 _EXPECT = re.compile(r"REM\s*@expect\b", re.IGNORECASE)
@@ -99,7 +101,9 @@ def _disable(application: Application, place: Place) -> Application:
 
 
 def without_expectations(text: str, dialect: Dialect) -> str:
-    """``text`` with each ``REM @expect`` directive made a plain comment (same length, same lines)."""
+    """``text`` with each ``REM @expect`` directive made a plain comment (same lines), and without the
+    end-of-file mark that may end it."""
+    text = text.removesuffix(end_of_file_mark(text))
     pieces = []
     offset = 0
     for start, line in lex(text, dialect).lines:

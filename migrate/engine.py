@@ -29,13 +29,14 @@ from functools import partial
 
 from mintlang.allocation import kept_without_collector
 from mintlang.caching import Shelf, apart, forget_lines, keeping_what_it_uses
-from mintlang.diagnostics import LineIndex, Severity, Span, split_lines
+from mintlang.diagnostics import LineIndex, Span, split_lines
 from mintlang.migrate.citations import cite, in_file
 from mintlang.migrate.context import MARKER, Context, FileView, LineTags, Unreadable
 from mintlang.migrate.history import Edit, History
 from mintlang.migrate.markers import manual_items
 from mintlang.migrate.model import Change, ManualItem, MigrationFailed, Phase
 from mintlang.migrate.rules.base import Flag, Replace, Rule
+from mintlang.migrate.rules.manual import v3_errors
 from mintlang.records import record
 from mintlang.semantic.units import Unit
 
@@ -109,7 +110,7 @@ def _run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> d
     states = {unit: _FileState(text, text, LineIndex(text)) for unit, text in texts.items()}
     tags, v4_shelf = LineTags(), Shelf()
     context: Context | None = _build(texts, controller, tags, v4_shelf)
-    errors = {unit: _unreadable(file) for unit, file in context.files.items()}
+    errors = _unreadable(context)
     for phase in Phase:
         active = [rule for rule in rules if rule.phase is phase]
         if not active:
@@ -155,13 +156,18 @@ def _described(error: BaseException | None) -> str:
     return f"{type(error).__name__}: {error}"
 
 
-def _unreadable(file: FileView) -> tuple[str, ...]:
-    index = file.document.line_index
-    return tuple(
-        f"line {index.position(d.span.start).line}: {d.code} {d.message}"
-        for d in file.document.diagnostics
-        if d.severity is Severity.ERROR
-    )
+def _unreadable(context: Context) -> dict[Unit, tuple[str, ...]]:
+    """The errors ``mint check --dialect v3`` finds in each original file, as X-COMMENTED reads them: the lines
+    the report calls unreadable are the lines it says are not valid Mint v3 (``MOVEA =``, which the grammar
+    reads and the check finds no value in, as well as a character no v3 line has)."""
+    try:
+        found = v3_errors(context)
+    except Unreadable as error:  # the model, built for the check
+        raise _unreadable_files(error.__cause__) from error.__cause__
+    return {
+        file.unit: tuple(f"line {file.line_number(d.span.start)}: {d.code} {d.message}" for d in errors)
+        for file, errors in found
+    }
 
 
 def _asked(context: Context, rules: Sequence[Rule], states: dict[Unit, _FileState]) -> dict[Unit, list[Edit]]:

@@ -40,3 +40,18 @@ def test_unreadable_lines_are_listed_in_line_order(tmp_path: Path) -> None:
     assert listed == ["1", "1", "2"]
     errors = json.loads(_run(tmp_path, "--format", "json"))["files"][0]["errors"]
     assert [error.split(":")[0] for error in errors] == ["line 1", "line 1", "line 2"]
+
+
+def test_a_line_flagged_as_invalid_in_v3_is_counted_unreadable(tmp_path: Path) -> None:
+    """``MOVEA =`` reads as an assignment but has no value: error 2005, No expression (000:18930-18934),
+    which the v3 check finds after the grammar. X-COMMENTED flagged it; the counts left it out."""
+    path = tmp_path / "empty.mnt"
+    path.write_text("DIM a(2)\nMOVEA =\nPRINT a(1)\nSTOP\n")
+    result = CliRunner().invoke(command, ["--format", "json", str(path)])
+    row = json.loads(result.stdout)["files"][0]
+    flagged = [item["original_line"] for item in row["manual"] if item["rule"] == "X-COMMENTED"]
+    assert flagged == [2]
+    assert row["errors"] == ["line 2: E2005 No expression: MOVEA is given no value after '='"]
+    text = CliRunner().invoke(command, ["--color", "never", str(path)]).output
+    assert "empty.mnt: unreadable v3 line 2: E2005 No expression" in text
+    assert text.rstrip().endswith("1 unreadable line")

@@ -4,9 +4,14 @@
 (``__init__``, ``__repr__``, ``__eq__``, ``__hash__``, ``__setattr__``, ``__delattr__``)
 and compiles each with ``exec``, and asks ``inspect.signature`` for a docstring where the
 class has none: about 0.4 ms a class, and a one-line ``mint check`` creates over a hundred
-classes. ``record`` lets ``dataclass`` do only its bookkeeping (the fields,
-``__match_args__``, the slots) and gives the class methods made of closures over
-``operator.attrgetter``, which need no compiling. ``__init__`` sets each slot directly
+classes. Even told to write no method, ``dataclass`` spends about 0.3 ms a class on its
+bookkeeping, most of it asking of each field's annotation, three times over with a regular
+expression and module look-ups, whether it is a ``ClassVar``, an ``InitVar`` or ``KW_ONLY``.
+``record`` keeps the bookkeeping itself (the ``Field`` objects ``dataclasses.fields`` reads,
+``__dataclass_params__``, ``__match_args__``, the class made again with slots, as
+``dataclass`` makes it; a ``ClassVar`` or ``InitVar`` is refused, seen in its annotation's
+text) and gives the class methods made of closures over ``operator.attrgetter``, which need
+no compiling. ``__init__`` sets each slot directly
 (a frozen dataclass's calls ``object.__setattr__`` per field, and building syntax nodes,
 many per line, is hot); its code is compiled once per shape of fields (how each is set)
 and shared, renamed, by every record of that shape: 13 shapes serve a hundred classes.
@@ -16,7 +21,7 @@ The result is a genuine dataclass (``fields``, ``replace``, ``asdict``, ``is_dat
 equality, hash, ``repr`` and ``FrozenInstanceError`` of ``@dataclass(frozen=True,
 slots=True)``; ``tests/core/test_records.py`` holds the two to each other on generated
 classes. What the codebase does not use is refused rather than half done: ordering,
-``kw_only``, ``InitVar`` and ``__post_init__``. A record that is not frozen is held to
+``kw_only``, ``ClassVar``, ``InitVar`` and ``__post_init__``. A record that is not frozen is held to
 ``@dataclass(slots=True)`` the same way; its ``__init__`` sets each field as an attribute,
 the attributes renamed in the shared code as the parameters are. A class without a docstring gets
 ``Name(field, ...)``, not dataclass's ``Name(field: type, ...)``, which needs ``inspect``.
@@ -24,8 +29,10 @@ the attributes renamed in the shared code as the parameters are. A class without
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Callable, Iterable
-from dataclasses import MISSING, Field, FrozenInstanceError, dataclass, fields, is_dataclass
+from dataclasses import _FIELD, KW_ONLY, MISSING, Field, FrozenInstanceError, _DataclassParams, fields
+from dataclasses import field as dataclass_field
 from functools import cache
 from operator import attrgetter
 from reprlib import recursive_repr
@@ -56,21 +63,21 @@ def record(
 
 
 def _make(cls: T, *, slots: bool, eq: bool, frozen: bool) -> T:
-    documented = bool(cls.__doc__)
-    if not documented:
-        cls.__doc__ = cls.__name__  # for now: a class without one makes dataclass call inspect.signature
     own = dict(cls.__dict__)
-    # Extending a record: dataclass checks that a frozen class's bases are frozen, and wants to make it so itself.
-    cls = dataclass(cls, init=False, repr=False, eq=False, frozen=frozen and _extends_a_record(cls), slots=slots)
-    _say_what_it_is(cls.__dataclass_params__, eq=eq, frozen=frozen)  # as snapshots read it
-    every = fields(cls)
-    _refuse_what_records_do_not_do(cls, own, every)
+    every = _fields(cls, own, frozen)
+    cls.__dataclass_fields__ = every  # type: ignore[attr-defined] # what makes it a dataclass
+    cls.__dataclass_params__ = _params(eq=eq, frozen=frozen, slots=slots)  # type: ignore[attr-defined]
+    mine = [field for field in every.values() if field._field_type is _FIELD]  # as fields() picks them
+    if "__match_args__" not in own:
+        cls.__match_args__ = tuple(field.name for field in mine if field.init)  # type: ignore[attr-defined]
+    if slots:
+        cls = _slotted(cls, [field.name for field in mine])
     methods = {
-        "__init__": _init_method(cls, every, frozen),
-        "__repr__": _repr_method([f.name for f in every if f.repr]),
+        "__init__": _init_method(cls, mine, frozen),
+        "__repr__": _repr_method([f.name for f in mine if f.repr]),
     }
     if eq:
-        methods["__eq__"] = _eq_method(_values(field.name for field in every if field.compare))
+        methods["__eq__"] = _eq_method(_values(field.name for field in mine if field.compare))
     if slots and frozen:  # pickling: a frozen class with slots has no __dict__ to restore, nor a __setattr__ that works
         methods |= {"__getstate__": _getstate, "__setstate__": _setstate}
     for name, method in methods.items():
@@ -78,43 +85,93 @@ def _make(cls: T, *, slots: bool, eq: bool, frozen: bool) -> T:
             _install(cls, name, method)
     if eq and not _explicit_hash(own):
         if frozen:
-            hashed = (field.name for field in every if (field.compare if field.hash is None else field.hash))
+            hashed = (field.name for field in mine if (field.compare if field.hash is None else field.hash))
             _install(cls, "__hash__", _hash_method(_values(hashed)))
         else:
             cls.__hash__ = None  # type: ignore[assignment] # changing fields would change the hash
     if frozen:
-        names = frozenset(field.name for field in every)
+        names = frozenset(field.name for field in mine)
         _install(cls, "__setattr__", _frozen_setattr(cls, names))
         _install(cls, "__delattr__", _frozen_delattr(cls, names))
-    if not documented:
-        cls.__doc__ = f"{cls.__name__}({', '.join(field.name for field in every)})"
+    if not cls.__doc__:
+        cls.__doc__ = f"{cls.__name__}({', '.join(field.name for field in mine)})"
     return cls
 
 
-def _refuse_what_records_do_not_do(cls: type, own: dict[str, Any], every: tuple[Field[Any], ...]) -> None:
-    """A TypeError for what a record would otherwise get wrong without a word."""
+def _fields(cls: type, own: dict[str, Any], frozen: bool) -> dict[str, Field[Any]]:
+    """The fields of ``cls``, its bases' first, as ``dataclass`` finds them, or a TypeError for what a record
+    would otherwise get wrong without a word (and for what ``dataclass`` refuses)."""
+    every: dict[str, Field[Any]] = {}
+    bases = [base for base in cls.__mro__[-1:0:-1] if "__dataclass_fields__" in base.__dict__]
+    for base in bases:
+        every.update(base.__dataclass_fields__)  # type: ignore[attr-defined]
+    if bases and not frozen and any(base.__dataclass_params__.frozen for base in bases):  # type: ignore[attr-defined]
+        raise TypeError("cannot inherit non-frozen dataclass from a frozen one")
+    if bases and frozen and not all(base.__dataclass_params__.frozen for base in bases):  # type: ignore[attr-defined]
+        raise TypeError(f"{cls.__qualname__}: a record cannot extend a dataclass that is not frozen")
     annotations: dict[str, object] = own.get("__annotations__", {})
     unsupported = [name for name in ("__setattr__", "__delattr__") if name in own]
     unsupported += ["__post_init__"] if hasattr(cls, "__post_init__") else []
-    unsupported += [f"InitVar {name}" for name, kind in annotations.items() if "InitVar" in str(kind)]
-    unsupported += [f"kw_only {field.name}" for field in every if field.kw_only]
+    keywords_only = False  # after a KW_ONLY marker
+    for name, kind in annotations.items():
+        written = str(kind)
+        if written.rpartition(".")[2] == "KW_ONLY" or kind is KW_ONLY:
+            keywords_only = True
+            continue
+        unsupported += [f"{pseudo} {name}" for pseudo in ("InitVar", "ClassVar") if pseudo in written]
+        every[name] = _field(cls, name, kind, own.get(name, MISSING), keywords_only)
+    for name, value in own.items():
+        if isinstance(value, Field) and name not in annotations:
+            raise TypeError(f"{name!r} is a field but has no type annotation")
+    unsupported += [f"kw_only {field.name}" for field in every.values() if field.kw_only]
     if unsupported:
         raise TypeError(f"{cls.__qualname__}: a record has no {', '.join(unsupported)}")
+    return every
 
 
-def _extends_a_record(cls: type) -> bool:
-    bases = [base for base in cls.__mro__[1:] if is_dataclass(base)]
-    if any(not base.__dataclass_params__.frozen for base in bases):  # type: ignore[attr-defined]
-        raise TypeError(f"{cls.__qualname__}: a record cannot extend a dataclass that is not frozen")
-    return bool(bases)
+def _field(cls: type, name: str, kind: object, default: object, keywords_only: bool) -> Field[Any]:
+    """The field ``name: kind = default`` of ``cls``; a ``field(...)`` default leaves the class as its default."""
+    made = default if isinstance(default, Field) else dataclass_field(default=default)
+    made.name, made.type, made._field_type = name, kind, _FIELD  # as dataclass marks a field
+    if made.kw_only is MISSING:
+        made.kw_only = keywords_only
+    if made.default.__class__.__hash__ is None:
+        raise ValueError(f"mutable default {type(made.default)} for field {name} is not allowed: use default_factory")
+    if made is default:
+        if made.default is MISSING:
+            delattr(cls, name)
+        else:
+            setattr(cls, name, made.default)
+    return made
 
 
-def _say_what_it_is(params: Any, *, eq: bool, frozen: bool) -> None:
-    """``__dataclass_params__`` as ``@dataclass(frozen=frozen, eq=eq, slots=...)`` sets them, from those of the
-    bookkeeping, which was told to write no ``__init__``, ``__repr__`` nor ``__eq__``."""
-    params.init = params.repr = True
-    params.eq = eq
-    params.frozen = frozen
+def _params(*, eq: bool, frozen: bool, slots: bool) -> Any:
+    """``__dataclass_params__`` as ``@dataclass(frozen=frozen, eq=eq, slots=slots)`` sets them."""
+    options = {"init": True, "repr": True, "eq": eq, "order": False, "unsafe_hash": False, "frozen": frozen}
+    if sys.version_info >= (3, 12):  # pragma: no cover - the parameters dataclass gained these in 3.12
+        options |= {"match_args": True, "kw_only": False, "slots": slots, "weakref_slot": False}
+    return _DataclassParams(**options)
+
+
+def _slotted(cls: T, names: list[str]) -> T:
+    """``cls`` made again with a slot for each field, as ``dataclass(slots=True)`` makes it (a class's slots
+    are fixed when it is made)."""
+    if "__slots__" in cls.__dict__:
+        raise TypeError(f"{cls.__name__} already specifies __slots__")
+    namespace = dict(cls.__dict__)
+    inherited = {slot for base in cls.__mro__[1:-1] for slot in _slots_of(base)}
+    namespace["__slots__"] = tuple(name for name in names if name not in inherited)
+    for name in (*names, "__dict__", "__weakref__"):  # the defaults stay in the fields; the old class's descriptors
+        namespace.pop(name, None)
+    qualname = cls.__qualname__
+    cls = type(cls)(cls.__name__, cls.__bases__, namespace)
+    cls.__qualname__ = qualname
+    return cls
+
+
+def _slots_of(cls: type) -> tuple[str, ...]:
+    slots = cls.__dict__.get("__slots__", ())
+    return (slots,) if isinstance(slots, str) else tuple(slots)
 
 
 def _install(cls: type, name: str, method: Callable[..., Any]) -> None:
@@ -214,7 +271,7 @@ _VALUES = {
 }
 
 
-def _init_method(cls: type, every: tuple[Field[Any], ...], frozen: bool) -> Callable[..., None]:
+def _init_method(cls: type, every: list[Field[Any]], frozen: bool) -> Callable[..., None]:
     """``__init__`` for ``cls``: the shared code of its fields' shape, its parameters named after the fields.
 
     The code reads the setters (``s0``...), factories and defaults as globals, which each class

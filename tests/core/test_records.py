@@ -129,6 +129,11 @@ def test_a_record_and_a_dataclass_of_the_same_fields_behave_alike(
     assert mine.__match_args__ == theirs.__match_args__  # type: ignore[attr-defined]
     assert dataclasses.is_dataclass(mine)
     assert repr(mine.__dataclass_params__) == repr(theirs.__dataclass_params__)  # type: ignore[attr-defined]
+    for item in spec:  # the class's own attribute: the default, or none (slots: the field's descriptor)
+        assert (
+            repr(getattr(mine, item["name"], None)).split(" of ")[0]
+            == repr(getattr(theirs, item["name"], None)).split(" of ")[0]
+        )
     ours = [mine(*positional, **keywords) for positional, keywords in calls]
     their = [theirs(*positional, **keywords) for positional, keywords in calls]
     for one, other in zip(ours, their, strict=True):
@@ -213,8 +218,9 @@ def test_a_body_that_defines_a_method_keeps_it() -> None:
         ({"__setattr__": lambda self, name, value: None}, "__setattr__"),
         ({"__annotations__": {"late": "dataclasses.KW_ONLY", "n": "int"}}, "kw_only n"),
         ({"__annotations__": {"n": "InitVar[int]"}}, "InitVar n"),
+        ({"__annotations__": {"n": "ClassVar[int]"}}, "ClassVar n"),
     ],
-    ids=["post_init", "setattr", "kw_only", "InitVar"],
+    ids=["post_init", "setattr", "kw_only", "InitVar", "ClassVar"],
 )
 def test_what_a_record_does_not_do_is_refused(body: dict[str, Any], refused: str) -> None:
     namespace = {"__annotations__": {"n": "int"}, "__module__": __name__} | body
@@ -229,6 +235,25 @@ def test_a_record_cannot_extend_a_dataclass_that_is_not_frozen() -> None:
 
     with pytest.raises(TypeError, match="not frozen"):
         record(type("Tight", (Loose,), {"__annotations__": {}, "__module__": __name__}))
+
+
+@pytest.mark.parametrize(
+    ("namespace", "extends_a_record", "refused"),
+    [
+        ({"__annotations__": {"n": "list[int]"}, "n": []}, False, "mutable default"),
+        ({"__annotations__": {}, "n": field(default=1)}, False, "'n' is a field but has no type annotation"),
+        ({"__annotations__": {"m": "int"}}, True, "cannot inherit non-frozen dataclass from a frozen one"),
+    ],
+    ids=["mutable default", "unannotated field", "mutable extending frozen"],
+)
+def test_what_a_dataclass_refuses_a_record_refuses(
+    namespace: dict[str, Any], extends_a_record: bool, refused: str
+) -> None:
+    bases = (Point,) if extends_a_record else ()
+    with pytest.raises((TypeError, ValueError), match=refused):
+        dataclass(type("Refused", bases, namespace | {"__module__": __name__}), slots=True)
+    with pytest.raises((TypeError, ValueError), match=refused):
+        record(frozen=False)(type("Refused", bases, namespace | {"__module__": __name__}))
 
 
 def test_no_parameter_without_a_default_may_follow_one_with_a_default() -> None:

@@ -12,7 +12,14 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from mintlang.cli.files import cannot_read, find, is_configuration, program_as_own_configuration
+from mintlang.cli.files import (
+    CONFIGURATION_SUFFIXES,
+    PROGRAM_SUFFIXES,
+    cannot_read,
+    find,
+    is_configuration,
+    program_as_own_configuration,
+)
 from mintlang.migrate import mintmt
 from mintlang.migrate.api import migrate
 from mintlang.migrate.model import MigrationFailed, NotRead
@@ -116,7 +123,8 @@ class Found:
 
 def read(paths: tuple[Path, ...], config: Path | None) -> Found:
     """The applications the command line names: each program alone, or one with ``config``."""
-    found = find(paths)
+    # a folder's configuration files too: one that no program claims is migrated alone, not left in v3
+    found = find(paths, PROGRAM_SUFFIXES if config is not None else PROGRAM_SUFFIXES | CONFIGURATION_SUFFIXES)
     unread = [cannot_read(error) for error in found.unreadable]
     if config is not None:
         if len(found.files) > 1 or any(is_configuration(path) for path in found.files):

@@ -26,15 +26,15 @@ class Found:
     unreadable: list[OSError]
 
 
-def _programs_below(directory: Path, unreadable: list[OSError]) -> list[Path]:
-    """The programs below ``directory``, sorted; what could not be read is added to ``unreadable``
-    sorted by path as well, so the problems are reported in the order of the files."""
+def _programs_below(directory: Path, unreadable: list[OSError], suffixes: frozenset[str]) -> list[Path]:
+    """The files below ``directory`` named with ``suffixes``, sorted; what could not be read is added to
+    ``unreadable`` sorted by path as well, so the problems are reported in the order of the files."""
     found: list[Path] = []
     failed: list[OSError] = []
     for folder, _, names in os.walk(directory, onerror=failed.append):
         for name in names:
             path = Path(folder, name)
-            if path.suffix.lower() in PROGRAM_SUFFIXES:
+            if path.suffix.lower() in suffixes:
                 try:
                     path.stat()  # a dangling link or a loop raises here
                 except OSError as error:
@@ -45,8 +45,9 @@ def _programs_below(directory: Path, unreadable: list[OSError]) -> list[Path]:
     return sorted(found)
 
 
-def find(paths: Iterable[Path]) -> Found:
-    """Files named directly, and the ``.mnt`` files below named directories, sorted; and what failed.
+def find(paths: Iterable[Path], suffixes: frozenset[str] = PROGRAM_SUFFIXES) -> Found:
+    """Files named directly, and the ``.mnt`` files (``suffixes``) below named directories, sorted; and what
+    failed.
 
     A named ``.cfg`` file is checked as a configuration file on its own. A path that
     does not exist, a link loop or a folder that cannot be listed is an OSError
@@ -60,7 +61,7 @@ def find(paths: Iterable[Path]) -> Found:
         except OSError as error:
             unreadable.append(error)
             continue
-        files.extend(_programs_below(path, unreadable) if path.is_dir() else [path])
+        files.extend(_programs_below(path, unreadable, suffixes) if path.is_dir() else [path])
     return Found(list(dict.fromkeys(files)), unreadable)
 
 

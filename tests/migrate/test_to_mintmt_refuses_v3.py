@@ -58,3 +58,21 @@ def test_the_command_leaves_the_v3_file_as_it_was_and_exits_2(tmp_path: Path) ->
     assert outcome.exit_code == 2
     assert "this is Mint v3 (HMSPEED, GEARN, CONTON, DINT, EINT, #FASTPOS): migrate it to v4 first" in outcome.output
     assert program.read_text(encoding="utf-8") == V3_PROGRAM
+
+
+# What mint-migrate leaves of v3 for a person: CARD, which v4 reads as NODE, assigned (v3 could only read it)
+FLAGGED = "REM MIGRATE: S-CARD: CARD can only be read (v4: NODE)\nCARD = 2\n"
+
+
+def test_v3_left_on_lines_the_migration_flagged_asks_for_those_items_not_a_migration() -> None:
+    """Migrating again would change nothing: what is left is the REM MIGRATE items to deal with."""
+    with pytest.raises(MigrationFailed) as failed:
+        to_mintmt(FLAGGED)
+    assert str(failed.value) == (
+        "failed: still Mint v3 (CARD) on lines mint-migrate flagged: deal with their REM MIGRATE items first"
+    )
+
+
+def test_v3_on_a_line_nobody_flagged_still_asks_for_the_migration() -> None:
+    with pytest.raises(MigrationFailed, match=r"this is Mint v3 \(CARD, HMSPEED\): migrate it to v4 first"):
+        to_mintmt(FLAGGED + "HMSPEED = 10\n")

@@ -247,6 +247,7 @@ class Events:
             table.register(dispatch.disable_keyword, read=self._disabled_mask(dispatch), write=per_channel(disable))
             force = ranged(dispatch.pending_keyword, controller, self._force(dispatch))
             table.register(dispatch.pending_keyword, read=self._pending_mask(dispatch), write=per_channel(force))
+        table.register("EVENTACTIVE", read=self._active_mask)
         mask = ranged("IMASK", controller, self._mask)
         table.register("IMASK", read=lambda _: float(self.banks.inputs(self.imask)), write=per_channel(mask))
         ipend = ranged("IPEND", controller, self._ipend)
@@ -262,6 +263,13 @@ class Events:
 
     def _pending_mask(self, dispatch: Dispatch) -> Callable[[int | None], float]:
         return lambda _: float(sum(bit for kind, bit in dispatch.bits.items() if self._pending[kind]))
+
+    def _active_mask(self, _: int | None) -> float:
+        """EVENTACTIVE: the handlers begun and not yet returned, those a higher one pre-empted included, in the
+        bits of EVENTDISABLE and EVENTPENDING (000:4385-4392). NextMove's keyword (000:18061): MintDrive's layout
+        is never used for it."""
+        order, bits = self.dispatch.order, NEXTMOVE.bits
+        return float(sum(bits.get(order[rank], 0) for rank, running in self._running_numbers.items() if running))
 
     def _disable(self, dispatch: Dispatch) -> Callable[[int | None, float], None]:
         def write(_: int | None, value: float) -> None:

@@ -160,12 +160,16 @@ class DigitalIO:
 
     def _bank_writer(self, attribute: str, *, edges_only: bool = False) -> Callable[[int | None, float], None]:
         """A writer of one bit per input; ``edges_only``: the bit of an input INPUTMODE does not make edge
-        triggered is left as it is, since setting it "will have no effect" (000:12424-12425, 12478-12479)."""
+        triggered is left as it is, since setting it "will have no effect" (000:12424-12425, 12478-12479).
+
+        The tables print a range, not whole numbers (INPUTMODE 0 to 1048575, 000:12336): a fraction inside it
+        is taken by its whole part, as IMASK and OUTPUTACTIVELEVEL take theirs, so ``INPUTMODE = 0.5`` sets no
+        bit, and ``mint check``, which checks the printed range, passes it too."""
 
         def write(channel: int | None, value: float) -> None:
             current = getattr(self, attribute)
             if channel is None:
-                if value != int(value) or not 0 <= value <= self.bank_inputs:
+                if not 0 <= value <= self.bank_inputs:
                     raise MintError(OUT_OF_RANGE, detail=f"one bit per input: 0 to {self.bank_inputs}")
                 wanted = self.banks.with_inputs(current, int(value))
             else:

@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Controller
+from mintlang.keyworddb.model import Controller, ValueRange
 from mintlang.records import record
 from mintlang.runtime.errors import MintError
 
@@ -35,7 +35,11 @@ def table_bounds(keyword: str, controller: Controller) -> Bounds:
     row = record.attributes_for(controller) if record is not None else None
     if row is None or row.range is None:
         return UNBOUNDED
-    found = row.range
+    return bounds_of(row.range)
+
+
+def bounds_of(found: ValueRange) -> Bounds:
+    """The bounds a printed range gives."""
     exclusive_minimum = found.text.replace(" ", "").startswith("0.0<x")
     allowed = frozenset(found.allowed) if found.allowed is not None else None  # a mode's values: "0 .. 4, 6"
     return Bounds(

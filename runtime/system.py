@@ -11,7 +11,8 @@ from collections.abc import Sequence
 from mintlang.comms_map import system_element
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.comms.array import CommsArray
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.interpreter.line_trace import LineTrace
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.keywords import Channels, KeywordTable, per_channel
 from mintlang.runtime.motion.axis import Axis
@@ -22,6 +23,9 @@ TIME_LIMIT = 16_777_216  # TIME wraps after 16777215 (T-7 RC)
 DEFAULT_NODE = 2
 BUILD_NUMBER = 0.0  # COMMS(239): the simulator has no firmware build
 INVALID_CHANNEL = 4
+# LASTERR: a run starts at power-up and ends when its program is terminated, so no program has been terminated
+# by an error before it; -1 is the error list's "Success", what ERR reads before any error (000:18508-18510).
+NO_ERROR = -1.0
 
 
 class System:
@@ -74,15 +78,17 @@ class System:
         table.register("ERR", read=lambda _: vm.err)
         table.register("ERL", read=lambda _: vm.erl)
         table.register("ERRAXIS", read=lambda _: vm.erraxis)
+        table.register("LASTERR", read=lambda _: NO_ERROR, command=self._lasterr)
         table.register("INKEY", read=self._inkey)
         table.register("CLS", command=self._cls)
         table.register("BEEP", command=self._beep)
         table.register("BOL", command=self._bol)
         table.register("LOCATE", command=self._locate)
+        LineTrace(vm, self.terminal).register(table)
         table.register("NODE", read=lambda _: float(self.node), write=per_channel(self._write_node))
         table.register("COMMS", read=lambda channel: self.comms.read(channel or 0), write=self._write_comms)
         table.register("FASTPOS", read=self._fastpos)
-        table.register("FASTENCODER", read=lambda channel: self.fast_encoders[self._axis(channel)])
+        table.register("FASTENCODER", read=self._fastencoder)
         table.register("AUXENCODER", read=self.auxiliary_encoder, write=per_channel(self._write_auxiliary))
         table.register("FASTAUXENCODER", read=lambda channel: self.fast_auxiliary[self._auxiliary(channel)])
 
@@ -93,6 +99,11 @@ class System:
         if code:
             self.clock.changes_next_tick()
         return float(code)
+
+    def _lasterr(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        """LASTERR at the command line shows the error that last ended a program (001:9632-9642); what it shows
+        when none has, as in every simulated run, the guide does not say."""
+        raise NotSimulated("LASTERR", "command: no program has ended on an error since power-up")
 
     def _cls(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         self.terminal.cls()
@@ -155,6 +166,11 @@ class System:
         number = self._axis(channel)
         axis = self.axes[number]
         return self.fast_positions[number] / axis.scale
+
+    def _fastencoder(self, channel: int | None) -> float:
+        """The encoder latched, in the units ENCODERSCALE gives (000:10391-10392), as FASTPOS is in SCALE's."""
+        number = self._axis(channel)
+        return self.fast_encoders[number] / self.axes[number].parameters["ENCODERSCALE"]
 
     def latch_fast_input(self) -> bool:
         """A fast input fired: latch every axis unless the last latch is still being handled (EV-9 RC)."""

@@ -372,6 +372,7 @@ class Motion:
         table.register("POS", read=self._pos, write=per_channel(self._write_pos))
         table.register("ENCODER", read=self._encoder, write=per_channel(self._write_encoder))
         table.register("VEL", read=self._vel)
+        table.register("ENCODERVEL", read=self._encoder_velocity)
         table.register("FOLERROR", read=self._folerror)
         table.register("AXISMODE", read=lambda ch: float(self.watched(self.axis(ch)).axismode))
         table.register("AXISERROR", read=lambda ch: float(self.axis(ch).axiserror))
@@ -504,16 +505,26 @@ class Motion:
         axis.position_offset = axis.measured - value * axis.scale
 
     def _encoder(self, channel: int | None) -> float:
-        """The encoder's count, within 0 to ENCODERWRAP - 1 when a wrap is set (000:9813-9826)."""
+        """The encoder's count, within 0 to ENCODERWRAP - 1 when a wrap is set (000:9813-9826), in the units
+        ENCODERSCALE gives (000:9731-9735); the wrap, which its table does not mark scaled, is in counts."""
         axis = self.watched(self.axis(channel), moving=True)
         counts = axis.measured - axis.encoder_offset
         wrap = axis.parameters["ENCODERWRAP"]
-        return counts % wrap if wrap > 0 else counts
+        return (counts % wrap if wrap > 0 else counts) / axis.parameters["ENCODERSCALE"]
 
     def _write_encoder(self, channel: int | None, value: float) -> None:
+        """ENCODER = v in ENCODERSCALE's units; the range is for the counts it makes, as the scale factor
+        affects the encoder's range (000:9626-9627)."""
         axis = self.axis(channel)
-        check_range("ENCODER", value, table_bounds("ENCODER", self.profile.controller), axis.number)
-        axis.encoder_offset = axis.measured - value
+        scale = axis.parameters["ENCODERSCALE"]
+        check_range("ENCODER", value, table_bounds("ENCODER", self.profile.controller), axis.number, scale)
+        axis.encoder_offset = axis.measured - value * scale
+
+    def _encoder_velocity(self, channel: int | None) -> float:
+        """ENCODERVEL: the encoder's speed in ENCODERSCALE's units per second (000:9774-9776), measured as VEL
+        is, over the last servo tick (AX-4)."""
+        axis = self.watched(self.axis(channel), moving=True)
+        return axis.velocity_counts() / axis.parameters["ENCODERSCALE"]
 
     def _vel(self, channel: int | None) -> float:
         axis = self.watched(self.axis(channel), moving=True)

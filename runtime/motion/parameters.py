@@ -15,7 +15,8 @@ from functools import cache
 from types import MappingProxyType
 
 from mintlang.keyworddb.model import Controller
-from mintlang.runtime.ranges import Bounds, table_bounds, table_default
+from mintlang.keyworddb.supplements import POSITIVE_ONLY, SUPPLEMENTS
+from mintlang.runtime.ranges import Bounds, bounds_of, table_bounds, table_default
 
 # Servo-axis defaults from the DEFAULT table, in counts (SCALE 1). Where the keyword entry and the
 # table disagree the table wins (HOMESPEED 40000, HOMEINPUT -1, MASTERDISTANCE 1000: spec HM-2, FG-2).
@@ -57,6 +58,7 @@ DEFAULTS: Mapping[str, float] = MappingProxyType(
         "CONFIG": 1.0,
         "DRIVEENABLEOUTPUT": -1.0,
         "ENCODERWRAP": 0.0,  # counts; 0 is no wrap (000:9024, 9825)
+        "ENCODERSCALE": 1.0,  # counts per ENCODER unit (000:9023, 9735-9737)
     }
 )
 SCALED: frozenset[str] = frozenset(
@@ -78,21 +80,10 @@ GAINS: frozenset[str] = frozenset(
 )
 
 
-_ERROR_MODES = Bounds(0.0, 5.0, False, frozenset({0.0, 1.0, 2.0, 3.0, 5.0}))
-# Ranges the keyword database cannot give (Advanced-guide keywords, or tables the text states elsewhere),
-# from the spec items cited; the profiler and the error checks rely on them.
+# Ranges the keyword database cannot give (Advanced-guide keywords): the rows ``mint check`` takes too, so both
+# tools refuse the same values; the profiler and the error checks rely on them.
 _KNOWN_RANGES: Mapping[str, Bounds] = MappingProxyType(
-    {
-        "SRAMP": Bounds(0.0, 100.0, False),  # MP-9
-        "LIMITMODE": _ERROR_MODES,  # AX-13: 0..3 and 5
-        "FOLERRORMODE": _ERROR_MODES,  # AX-10 RC: the LIMITMODE table
-        "ERRORINPUTMODE": _ERROR_MODES,  # AX-16 RC: the LIMITMODE table
-        "KINTMODE": Bounds(0.0, 3.0, False, frozenset({0.0, 1.0, 2.0, 3.0})),  # SL-5 RC
-        "KACCEL": Bounds(0.0, 10000.0, False),  # SL-2 RC: as KVELFF
-        "IDLEPOS": Bounds(0.0, 8388607.0, False),
-        "IDLEVEL": Bounds(0.0, 8388607.0, False),
-        "MOVEBUFFERSIZE": Bounds(2.0, 100.0, False),  # MP-25
-    }
+    {name: bounds_of(row.range) for name, row in SUPPLEMENTS.items() if row.range is not None}
 )
 
 
@@ -110,12 +101,13 @@ def bounds(keyword: str, controller: Controller) -> Bounds:
 
     ``SCALE`` takes only a positive value (000:532-537) on every controller, though NextMove's
     table prints 0 <= x (000:15783) and ServoNode's none: error 3 then says "more than 0", not
-    the "0 to" a user would try next.
+    the "0 to" a user would try next. ``ENCODERSCALE`` too (NextMove's table: 0.0 <= x, 000:9727):
+    it divides the counts into ENCODER's units as SCALE divides them into POS's (000:9731-9735).
     """
     known = _KNOWN_RANGES.get(keyword)
     if known is not None:
         return known
     table = table_bounds(keyword, controller)
-    if keyword == "SCALE" and (table.minimum is None or table.minimum <= 0):
+    if keyword in POSITIVE_ONLY and (table.minimum is None or table.minimum <= 0):
         return replace(table, minimum=0.0, exclusive_minimum=True)
     return table

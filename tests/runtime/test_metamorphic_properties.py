@@ -112,7 +112,8 @@ def test_skipping_idle_ticks_gives_what_stepping_every_tick_gives(program: Progr
     assert _seen(program.source, every_tick=False) == _seen(program.source, every_tick=True)
 
 
-_LINE_READER = re.compile(r"\bERL\b|\bCOMMS\s*\(\s*23[37]\s*\)", re.IGNORECASE)  # 233 mirrors ERL, 237 the line running
+# 233 mirrors ERL, 237 the line running; TRON prints the number of every line run
+_LINE_READER = re.compile(r"\bERL\b|\bCOMMS\s*\(\s*23[37]\s*\)|\bTRON\b", re.IGNORECASE)
 
 
 def _reads_line_numbers(source: str) -> bool:
@@ -144,8 +145,8 @@ def test_blank_lines_and_rem_lines_change_nothing_in_a_conformance_program(path:
 
     Both files get the same edit, so a line number maps back the same way
     whichever file it is in (ERL does not say which). A case that reads a line
-    number (ERL, or the comms elements mirroring ERL and the line running) could
-    print it or compute with it, where no renumbering can find it: its files
+    number (ERL, or the comms elements mirroring ERL and the line running) or
+    traces its lines (TRON) could print it or compute with it, where no renumbering can find it: its files
     get the line only after their last line, which moves nothing.
     """
     case = read_case(path)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import pytest
 
+import mintlang
 from mintlang.runtime.interpreter.vm import StopReason
 from tests.runtime.running import simulate
 
@@ -38,3 +39,10 @@ def test_scale_not_positive_on_servonode_is_error_3_saying_more_than_0(value: st
     result = simulate(f"SCALE.0 = {value}\n", controller="servonode51")
     assert (result.stop.reason, result.err) == (StopReason.ERROR, 3)
     assert "it takes more than 0)" in result.stop.message
+
+
+@pytest.mark.parametrize("keyword", ["SCALE.0", "ENCODERSCALE.0"])
+def test_mint_check_refuses_a_scale_not_positive_on_servonode_too(keyword: str) -> None:
+    # the checker gives the run's error on the same line, though the table it reads prints no range there
+    (diagnostic,) = mintlang.check(f"{keyword} = -3\n", controller="servonode51")
+    assert diagnostic.code == "E0003" and "takes only a positive value" in diagnostic.message

@@ -23,7 +23,7 @@ from mintlang.analysis.traversal import LineScope, Use
 from mintlang.controllers import profile
 from mintlang.diagnostics import Fix, Span
 from mintlang.dialect import Dialect
-from mintlang.keyworddb import database
+from mintlang.keyworddb import database, supplements
 from mintlang.keyworddb.model import Controller, Keyword, KeywordKind
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -88,6 +88,8 @@ def _verdict(
     if keyword.controllers and controller not in keyword.controllers:
         return 17, f"{keyword.name} is not available on {profile(controller).title}"
     attributes = keyword.attributes_for(controller)
+    if attributes is None and not keyword.attributes and dialect.modern:
+        attributes = supplements.attributes(name)  # HOMEPOS: read only, though its entry prints no table
     if attributes is None:
         return _verdict_from_formats(keyword, use)
     if use is Use.WRITE and not attributes.write:
@@ -111,8 +113,13 @@ def _verdict(
 def _verdict_from_formats(keyword: Keyword, use: Use) -> tuple[int, str] | None:
     """Error 2000 for a write to a keyword the manual gives no attribute table, judged by its
     formats: read only when every format reads it (``v = ERR``), a command when none assigns it
-    (``BEEP``, ``CLS``, ``TRON``: 2000 is for a command given a value too, 000:18905-18908)."""
-    if use is not Use.WRITE or not keyword.formats:
+    (``BEEP``, ``CLS``, ``TRON``: 2000 is for a command given a value too, 000:18905-18908); and
+    2003 for reading such a command, as for ``PRINT GO``: no format gives it a value."""
+    if not keyword.formats:
+        return None
+    if use is Use.READ and keyword.kind is KeywordKind.COMMAND and not any("=" in text for text in keyword.formats):
+        return 2003, f"{keyword.name} is a command and gives no value"
+    if use is not Use.WRITE:
         return None
     if all(text.startswith("v =") for text in keyword.formats):
         return 2000, f"{keyword.name} is read only and cannot be given a value"

@@ -12,14 +12,10 @@ from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import LineScope, Use
-from mintlang.keyworddb import database
+from mintlang.keyworddb import database, supplements
 from mintlang.keyworddb.model import ValueRange
 from mintlang.semantic.constants import constant_value
 from mintlang.syntax import nodes as n
-
-# The guide's text takes only a positive value where the attributes table prints 0 ≤ x:
-# SCALE (000:532-537), the factor every scaled value is divided by.
-POSITIVE_ONLY = frozenset({"SCALE"})
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
@@ -30,22 +26,27 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             continue
         keyword = db.keywords_of(dialect).get(use.keyword.keyword)
         attributes = keyword.attributes_for(controller) if keyword else None
-        if attributes is None or attributes.range is None:
+        if keyword is not None and not keyword.attributes and dialect.modern:
+            attributes = supplements.attributes(keyword.name)  # SRAMP, FOLERRORMODE: the ranges mint-run takes
+        # a scale factor is positive whatever its table prints, or where it prints none (ServoNode 51's SCALE)
+        positive = use.keyword.keyword in supplements.POSITIVE_ONLY
+        limits = attributes.range if attributes is not None else None
+        if limits is not None and limits.allowed is None and (limits.minimum is None or limits.maximum is None):
+            limits = None
+        if limits is None and not positive:
             continue
-        limits = attributes.range
-        if limits.allowed is None and (limits.minimum is None or limits.maximum is None):
-            continue
+        scaled = attributes is not None and attributes.scaled
         for value in use.statement.values or ():
             number = constant_value(value, dialect)
             if value is None or number is None:
                 continue
             # Whole-number ranges are not enforced: the manual prints "0 ≤ x ≤ 10000" for KDERIV
             # and then writes KDERIV = 1.5 in its example.
-            if use.keyword.keyword in POSITIVE_ONLY and number <= 0:
+            if positive and number <= 0:
                 yield Finding(use.unit, mint_error(3, value.span, f"{use.keyword.keyword} takes only a positive value"))
-            elif not (_scaled_can_hold(limits, number) if attributes.scaled else limits.holds(number)):
+            elif limits is not None and not (_scaled_can_hold(limits, number) if scaled else limits.holds(number)):
                 detail = f"{number:.15g} is outside the range of {use.keyword.keyword} ({limits.text})"
-                if attributes.scaled:
+                if scaled:
                     detail += " whatever the scale factor"
                 yield Finding(use.unit, mint_error(3, value.span, detail))
 

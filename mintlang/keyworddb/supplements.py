@@ -1,0 +1,65 @@
+"""What the tools take of keywords the v4 guide prints no attributes table for.
+
+Chapter 10 gives no table to a keyword whose entry defers to the Advanced guide, which has no seed
+here ("This is an advanced Mint feature"), nor to a few commands, so the keyword database knows
+neither its access nor its range. Where the guide says more elsewhere (the quick reference's purpose,
+a chapter's text, the entry's purpose), or the runtime specification chose a range, the row below
+holds it, so ``mint check`` and ``mint-run`` judge the same line the same way: a write to one read
+only is error 2000 in both, a value outside the range error 3.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from types import MappingProxyType
+
+from mintlang.keyworddb.model import Attributes, Controller, ValueRange
+
+_ALL = tuple(Controller)  # each row applies wherever the keyword itself exists (its own controllers)
+_ERROR_MODES = ValueRange("0 ≤ x ≤ 3, 5", None, None, False, allowed=(0.0, 1.0, 2.0, 3.0, 5.0))
+
+
+def _read_only() -> Attributes:
+    return Attributes(
+        _ALL, read=True, write=False, command=False, multi_axis=False, scaled=False, default=None, range=None
+    )
+
+
+def _setting(limits: ValueRange, *, scaled: bool = False) -> Attributes:
+    return Attributes(
+        _ALL, read=True, write=True, command=False, multi_axis=True, scaled=scaled, default=None, range=limits
+    )
+
+
+SUPPLEMENTS: Mapping[str, Attributes] = MappingProxyType(
+    {
+        # Read only: the quick reference's purpose reads them, and nothing in the guide writes them.
+        "EVENTACTIVE": _read_only(),  # "read which events are active" (000:18061; 4392, 4470)
+        "HOMEPOS": _read_only(),  # "can be read" (000:3438, 11401-11402; 17640)
+        "MOVEBUFFERFREE": _read_only(),  # "read free space in move buffer" (000:17689; 2978)
+        # A command that also gives a value: "To return the last known error condition" (000:13270-13282)
+        "LASTERR": Attributes(_ALL, True, False, True, multi_axis=False, scaled=False, default=None, range=None),
+        # Ranges of the runtime specification (the runtime's BEHAVIOUR.md, "Parameter ranges").
+        "SRAMP": _setting(ValueRange("0 ≤ x ≤ 100", 0.0, 100.0, True)),  # MP-9: percent of each ramp
+        # The modes of LIMITMODE's table (000:13479-13493); mode 4, _emSMART_MODE, anticipates a software
+        # limit (000:16057-16068) and means nothing for a following error or an error input.
+        "FOLERRORMODE": _setting(_ERROR_MODES),  # AX-10 RC
+        "ERRORINPUTMODE": _setting(_ERROR_MODES),  # AX-16 RC
+        "KINTMODE": _setting(ValueRange("0, 1, 2, 3", None, None, False, allowed=(0.0, 1.0, 2.0, 3.0))),  # SL-5 RC
+        "KACCEL": _setting(ValueRange("0 ≤ x ≤ 10000", 0.0, 10000.0, True)),  # SL-2 RC: as KVELFF
+        "IDLEPOS": _setting(ValueRange("0 ≤ x ≤ 8388607", 0.0, 8388607.0, True), scaled=True),
+        "IDLEVEL": _setting(ValueRange("0 ≤ x ≤ 8388607", 0.0, 8388607.0, True), scaled=True),
+        "MOVEBUFFERSIZE": _setting(ValueRange("2 ≤ x ≤ 100", 2.0, 100.0, False)),  # MP-25: 000:11053-11054
+    }
+)
+
+
+POSITIVE_ONLY = frozenset({"SCALE", "ENCODERSCALE"})
+"""Scale factors the guide's text takes only positive where a table prints 0 ≤ x: SCALE (000:532-537), and
+ENCODERSCALE, which divides the counts into ENCODER's units as SCALE does into POS's (000:9731-9735): a
+factor of 0 leaves no unit to divide by."""
+
+
+def attributes(name: str) -> Attributes | None:
+    """The row the tools take for keyword ``name`` where the guide prints none."""
+    return SUPPLEMENTS.get(name)

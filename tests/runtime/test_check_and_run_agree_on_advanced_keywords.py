@@ -1,0 +1,73 @@
+"""mint check and mint-run judge alike a line using a keyword the guide prints no attributes table for.
+
+Such keywords have no attributes table in the v4 guide (HOMEPOS, EVENTACTIVE, FOLERRORMODE: "This is an
+advanced Mint feature", 000:11581-11583, 10112-10114, 10692-10694). What the guide says of them elsewhere is
+the same for both tools: HOMEPOS "can be read" (000:3438, 11401-11402), EVENTACTIVE and MOVEBUFFERFREE are
+read in the quick reference (000:18061, 17689), so a write is error 2000 ("Read only or Command",
+000:18905-18908). FOLERRORMODE takes the modes of LIMITMODE's table, 0 to 3 and 5 (000:13479-13493; the
+runtime specification's AX-10): 4, smart mode, anticipates a software limit only (000:16057). A bit pattern
+takes a fraction inside its printed range (INPUTMODE 0 to 1048575, 000:12336) by its whole part, as the
+checker, which checks the printed range, lets it through.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import mintlang
+from mintlang.runtime.interpreter.vm import StopReason
+from tests.runtime.running import simulate
+
+HANDLER = 'END\n#ONERROR\nPRINT "ERR ", ERR, " ERL ", ERL\nRETURN\n'
+
+
+def _checked(line: str) -> list[str]:
+    return [d.code for d in mintlang.check(line + "\n", controller="nextmove-pci") if d.code.startswith("E")]
+
+
+@pytest.mark.parametrize(
+    ("line", "code"),
+    [
+        pytest.param("HOMEPOS.0 = 5", 2000, id="HOMEPOS"),
+        pytest.param("EVENTACTIVE = 1", 2000, id="EVENTACTIVE"),
+        pytest.param("MOVEBUFFERFREE.0 = 3", 2000, id="MOVEBUFFERFREE"),
+        pytest.param("FOLERRORMODE.0 = 4", 3, id="FOLERRORMODE-4"),
+        pytest.param("ERRORINPUTMODE.0 = 6", 3, id="ERRORINPUTMODE-6"),
+        pytest.param("SRAMP.0 = 101", 3, id="SRAMP-101"),
+    ],
+)
+def test_both_tools_give_the_same_error(line: str, code: int) -> None:
+    assert _checked(line) == [f"E{code:04d}"]
+    result = simulate(f'{line}\nPRINT "after"\n' + HANDLER, controller="nextmove-pci")
+    assert result.terminal.startswith(f"ERR {code} ERL 1\n")
+
+
+@pytest.mark.parametrize("line", ["FOLERRORMODE.0 = 5", "FOLERRORMODE.0 = 0", "INPUTMODE = 0.5", "PRINT HOMEPOS.0"])
+def test_both_tools_pass_the_line(line: str) -> None:
+    assert _checked(line) == []
+    result = simulate(f'{line}\nPRINT "after"\n', controller="nextmove-pci")
+    assert result.stop.reason is StopReason.END and result.terminal.endswith("after\n")
+
+
+def test_a_fraction_in_a_bit_pattern_is_taken_by_its_whole_part() -> None:
+    # 3.7 -> 3: inputs 0 and 1 edge triggered; 0.5 -> 0: none
+    source = "INPUTMODE = 3.7\nPRINT INPUTMODE\nINPUTMODE = 0.5\nPRINT INPUTMODE\n"
+    assert simulate(source, controller="nextmove-pci").terminal == "3\n0\n"
+
+
+def test_reading_a_command_stops_both_before_the_run() -> None:
+    # TRON's only format is the bare command (000:16922): like PRINT GO, a syntax error the compiler finds
+    assert _checked("DIM a = TRON") == ["E2003"]
+    result = simulate('PRINT "before"\nDIM a = TRON\n', controller="nextmove-pci")
+    assert (result.stop.reason, result.err, result.terminal) == (
+        StopReason.ERROR,
+        2003,
+        "C2003: PROGRAM Syntax error [line 2]\n",
+    )
+
+
+def test_lasterr_reads_success_when_no_program_has_ended_on_an_error() -> None:
+    # "to return the last known error condition which resulted in program termination" (000:13270-13282): a run
+    # starts at power-up, so none has; -1 is the error list's "Success" (000:18508-18510)
+    assert _checked("PRINT LASTERR") == []
+    assert simulate("PRINT LASTERR\n", controller="nextmove-pci").terminal == "-1\n"

@@ -95,7 +95,16 @@ def test_migrating_the_migration_changes_nothing(path: Path) -> None:
 
 def test_most_programs_run_equivalent() -> None:
     """Not every run can be compared to its end, but most must: a verification that came back
-    incomplete everywhere would pass the test above and show nothing."""
+    incomplete everywhere would pass the test above and show nothing. A program whose original runs
+    past its first instant is compared, and comes out equivalent; the manual's fragments that stop at
+    once are most of the rest, so their share moves as cases are added, and only a bound is held."""
     sample = PROGRAMS[::20]
-    verdicts = Counter(verify(_migrated(path)[2], scenario=DRIVES, until_ms=UNTIL_MS).verdict for path in sample)
-    assert verdicts[Verdict.EQUIVALENT] >= 0.8 * len(sample), verdicts
+    # ``v3_stop`` is the original's: the MintMT verification reuses the v3 -> v4 one's record
+    found = [verify(_migrated(path)[2], scenario=DRIVES, until_ms=UNTIL_MS) for path in sample]
+    runs = [
+        run
+        for run in found
+        if not (run.v3_stop is not None and run.v3_stop.reason == "error" and run.v3_stop.time_ms == 0)
+    ]
+    assert all(run.verdict is Verdict.EQUIVALENT for run in runs), [run.short for run in runs]
+    assert len(runs) >= 2 / 3 * len(sample), Counter(run.verdict for run in found)

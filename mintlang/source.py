@@ -18,11 +18,10 @@ from pathlib import Path
 
 from mintlang.diagnostics import LineIndex, Position
 from mintlang.records import record
+from mintlang.syntax.tokens import END_OF_FILE
 
 _ENCODINGS = ("utf-8", "cp1252", "latin-1")
 _MARKED = ("utf-8-sig", *_ENCODINGS)  # utf-8-sig drops the mark when it decodes and writes it when it encodes
-# DOS editors ended a file with Ctrl-Z, its end-of-file mark (v3 guide 1799: an array file must end with one)
-_END_OF_FILE = "\x1a"
 
 
 @record
@@ -54,7 +53,7 @@ class SourceFile:
 
 def end_of_file_mark(text: str) -> str:
     """The Ctrl-Z run ending ``text``, or "": the DOS end-of-file mark, no line of the program."""
-    return text[len(text.rstrip(_END_OF_FILE)) :]
+    return text[len(text.rstrip(END_OF_FILE)) :]
 
 
 def decode(data: bytes) -> tuple[str, str]:

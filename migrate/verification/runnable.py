@@ -12,8 +12,7 @@ then stops on it, and the comparison is incomplete until a person deals with it.
 A line in error that nobody flagged stays: the v4 run stops on it, and that is a
 divergence. ``REM @expect`` lines are turned into plain comments in
 both files: the comparison is the check, and a v3 expectation names v3 keywords
-the v4 reader does not know. A Ctrl-Z ending a file, the DOS end-of-file mark,
-is left out of both runs: the controller was never sent it.
+the v4 reader does not know.
 """
 
 from __future__ import annotations
@@ -26,7 +25,6 @@ from mintlang.dialect import Dialect
 from mintlang.migrate.model import MigrationResult
 from mintlang.migrate.verification.model import Application, Place
 from mintlang.semantic.units import Unit
-from mintlang.source import end_of_file_mark
 from mintlang.syntax.lexer import lex
 
 _EXPECT = re.compile(r"REM\s*@expect\b", re.IGNORECASE)
@@ -101,9 +99,7 @@ def _disable(application: Application, place: Place) -> Application:
 
 
 def without_expectations(text: str, dialect: Dialect) -> str:
-    """``text`` with each ``REM @expect`` directive made a plain comment (same lines), and without the
-    end-of-file mark that may end it."""
-    text = text.removesuffix(end_of_file_mark(text))
+    """``text`` with each ``REM @expect`` directive made a plain comment (same length, same lines)."""
     pieces = []
     offset = 0
     for start, line in lex(text, dialect).lines:

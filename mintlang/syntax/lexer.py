@@ -34,7 +34,7 @@ from mintlang.dialect import Dialect
 from mintlang.records import record
 from mintlang.syntax.moved import MovedOffsets
 from mintlang.syntax.nodes import number_value
-from mintlang.syntax.tokens import Token, TokenKind
+from mintlang.syntax.tokens import END_OF_FILE, Token, TokenKind
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 _K = TokenKind
@@ -244,7 +244,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
     unlisted = _unlisted[dialect]
     match = _LEXEME.match
     position = 0
-    content_end = _content_end(line)
+    content_end = _code_end(line, _content_end(line))
     previous = _NEWLINE  # kind of the previous token, whitespace included
     dot_number = False  # the previous token is the number of a dot parameter: ".2" in REMOTEIN.2.65
     comment_start = -1
@@ -344,6 +344,12 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
 def _content_end(line: str) -> int:
     """Where the line break of ``line`` starts."""
     return len(line) - (2 if line.endswith("\r\n") else 1 if line.endswith(("\n", "\r")) else 0)
+
+
+def _code_end(line: str, content_end: int) -> int:
+    """Where the code of ``line`` ends: before the Ctrl-Z run that ends the file, when it is the file's last
+    line (the only one with no line break), which is blanks to its end rather than unexpected characters."""
+    return len(line.rstrip(END_OF_FILE)) if content_end == len(line) else content_end
 
 
 # A Mint v4 number is binary32 (000:714-716), at most about 3.4E+38: 39 decimal digits, or 0x and 32 hex

@@ -11,6 +11,10 @@ from __future__ import annotations
 from enum import StrEnum
 from typing import NamedTuple
 
+# DOS editors ended a file with Ctrl-Z, their end-of-file mark (the v3 guide has array files end with one,
+# 001:1799): a run of it ending a file is no character of the program, though a tool keeps its bytes.
+END_OF_FILE = "\x1a"
+
 
 class TokenKind(StrEnum):
     """Lexical categories. Significant kinds double as the grammar's terminal names."""

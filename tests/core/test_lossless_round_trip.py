@@ -23,7 +23,7 @@ MINT_FRAGMENTS = st.sampled_from(
         "\r", "\t", "  ", "#label", "#", "GOSUB ", "IF ", " THEN ", " DO", "ELSE", "ENDIF", "FOR i = 1 TO 5",
         "NEXT", "'A'", "‘b’", '"text"', "“quoted”", '"open', "011011", "05", "0xFF_00", ".5", "(", ")",
         "DEFINE m = 1 : GO", "m", "DIM a(3) = 1,", "PRINT #1 ", "?", "&", "|", "!", "~", "^", "..", "é",
-        "\u00a0", "\ufeff", "€", "\x00", "\x7f",
+        "\u00a0", "\ufeff", "€", "\x00", "\x7f", "\x1a",
     ]
 )  # fmt: skip
 

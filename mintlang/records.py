@@ -65,36 +65,43 @@ def record(
 def _make(cls: T, *, slots: bool, eq: bool, frozen: bool) -> T:
     own = dict(cls.__dict__)
     every = _fields(cls, own, frozen)
-    cls.__dataclass_fields__ = every  # type: ignore[attr-defined] # what makes it a dataclass
-    cls.__dataclass_params__ = _params(eq=eq, frozen=frozen, slots=slots)  # type: ignore[attr-defined]
     mine = [field for field in every.values() if field._field_type is _FIELD]  # as fields() picks them
-    if "__match_args__" not in own:
-        cls.__match_args__ = tuple(field.name for field in mine if field.init)  # type: ignore[attr-defined]
-    if slots:
-        cls = _slotted(cls, [field.name for field in mine])
-    methods = {
-        "__init__": _init_method(cls, mine, frozen),
-        "__repr__": _repr_method([f.name for f in mine if f.repr]),
+    made: list[type] = []  # the class, once made: what a frozen one's guards and field setters belong to
+    added: dict[str, Any] = {
+        "__dataclass_fields__": every,  # what makes it a dataclass
+        "__dataclass_params__": _params(eq=eq, frozen=frozen, slots=slots),
     }
+    if "__match_args__" not in own:
+        added["__match_args__"] = tuple(field.name for field in mine if field.init)
+    init, setters = _init_method(cls, mine, frozen)
+    methods = {"__init__": init, "__repr__": _repr_method([f.name for f in mine if f.repr])}
     if eq:
         methods["__eq__"] = _eq_method(_values(field.name for field in mine if field.compare))
     if slots and frozen:  # pickling: a frozen class with slots has no __dict__ to restore, nor a __setattr__ that works
         methods |= {"__getstate__": _getstate, "__setstate__": _setstate}
-    for name, method in methods.items():
-        if name not in own:  # what the class body defines stays, as with dataclass
-            _install(cls, name, method)
+    methods = {name: method for name, method in methods.items() if name not in own}  # the body's stay, as dataclass's
     if eq and not _explicit_hash(own):
         if frozen:
             hashed = (field.name for field in mine if (field.compare if field.hash is None else field.hash))
-            _install(cls, "__hash__", _hash_method(_values(hashed)))
+            methods["__hash__"] = _hash_method(_values(hashed))
         else:
-            cls.__hash__ = None  # type: ignore[assignment] # changing fields would change the hash
+            added["__hash__"] = None  # changing fields would change the hash
     if frozen:
         names = frozenset(field.name for field in mine)
-        _install(cls, "__setattr__", _frozen_setattr(cls, names))
-        _install(cls, "__delattr__", _frozen_delattr(cls, names))
+        methods |= {"__setattr__": _frozen_setattr(made, names), "__delattr__": _frozen_delattr(made, names)}
+    for name, method in methods.items():
+        if method not in (_getstate, _setstate):  # shared by every record: they keep their own names
+            method.__qualname__ = f"{cls.__qualname__}.{name}"
+    added |= methods
     if not cls.__doc__:
-        cls.__doc__ = f"{cls.__name__}({', '.join(field.name for field in mine)})"
+        added["__doc__"] = f"{cls.__name__}({', '.join(field.name for field in mine)})"
+    if slots:  # made with its methods: setting each on a class made already updates the class's slots one by one
+        cls = _slotted(cls, [field.name for field in mine], added)
+    else:
+        for name, value in added.items():
+            setattr(cls, name, value)
+    made.append(cls)
+    init.__globals__.update({setter: _setter(cls, name) for setter, name in setters.items()})
     return cls
 
 
@@ -153,12 +160,12 @@ def _params(*, eq: bool, frozen: bool, slots: bool) -> Any:
     return _DataclassParams(**options)
 
 
-def _slotted(cls: T, names: list[str]) -> T:
-    """``cls`` made again with a slot for each field, as ``dataclass(slots=True)`` makes it (a class's slots
-    are fixed when it is made)."""
+def _slotted(cls: T, names: list[str], added: dict[str, Any]) -> T:
+    """``cls`` made again with a slot for each field and what ``added`` holds, as ``dataclass(slots=True)``
+    makes it (a class's slots are fixed when it is made)."""
     if "__slots__" in cls.__dict__:
         raise TypeError(f"{cls.__name__} already specifies __slots__")
-    namespace = dict(cls.__dict__)
+    namespace = dict(cls.__dict__) | added
     inherited = {slot for base in cls.__mro__[1:-1] for slot in _slots_of(base)}
     namespace["__slots__"] = tuple(name for name in names if name not in inherited)
     for name in (*names, "__dict__", "__weakref__"):  # the defaults stay in the fields; the old class's descriptors
@@ -172,12 +179,6 @@ def _slotted(cls: T, names: list[str]) -> T:
 def _slots_of(cls: type) -> tuple[str, ...]:
     slots = cls.__dict__.get("__slots__", ())
     return (slots,) if isinstance(slots, str) else tuple(slots)
-
-
-def _install(cls: type, name: str, method: Callable[..., Any]) -> None:
-    if method not in (_getstate, _setstate):  # shared by every record: they keep their own names
-        method.__qualname__ = f"{cls.__qualname__}.{name}"
-    setattr(cls, name, method)
 
 
 def _explicit_hash(own: dict[str, Any]) -> bool:
@@ -225,8 +226,11 @@ def _hash_method(values: Values) -> Callable[[object], int]:
     return __hash__
 
 
-def _frozen_setattr(cls: type, names: frozenset[str]) -> Callable[[object, str, object], None]:
+def _frozen_setattr(made: list[type], names: frozenset[str]) -> Callable[[object, str, object], None]:
+    """``__setattr__`` of the class ``made`` will hold."""
+
     def __setattr__(self: object, name: str, value: object) -> None:
+        cls = made[0]
         if type(self) is cls or name in names:
             raise FrozenInstanceError(f"cannot assign to field {name!r}")
         super(cls, self).__setattr__(name, value)  # a subclass that is not a record keeps its own attributes
@@ -234,8 +238,9 @@ def _frozen_setattr(cls: type, names: frozenset[str]) -> Callable[[object, str, 
     return __setattr__
 
 
-def _frozen_delattr(cls: type, names: frozenset[str]) -> Callable[[object, str], None]:
+def _frozen_delattr(made: list[type], names: frozenset[str]) -> Callable[[object, str], None]:
     def __delattr__(self: object, name: str) -> None:
+        cls = made[0]
         if type(self) is cls or name in names:
             raise FrozenInstanceError(f"cannot delete field {name!r}")
         super(cls, self).__delattr__(name)
@@ -271,13 +276,16 @@ _VALUES = {
 }
 
 
-def _init_method(cls: type, every: list[Field[Any]], frozen: bool) -> Callable[..., None]:
-    """``__init__`` for ``cls``: the shared code of its fields' shape, its parameters named after the fields.
+def _init_method(cls: type, every: list[Field[Any]], frozen: bool) -> tuple[FunctionType, dict[str, str]]:
+    """``__init__`` for ``cls``: the shared code of its fields' shape, its parameters named after the fields;
+    and, for a frozen record, the field each of its setters sets.
 
     The code reads the setters (``s0``...), factories and defaults as globals, which each class
     gives its own; a field's parameter is a local variable, so renaming it changes nothing else.
+    The setters are the slots of the class as made with its slots: they are added to the globals then.
     A record that is not frozen sets its fields as attributes (``a0``...), renamed after the fields too.
     """
+    setters: dict[str, str] = {}
     shape: list[str] = []
     names = ["__record_self__" if any(field.name == "self" for field in every) else "self"]
     defaults: list[object] = []
@@ -300,7 +308,7 @@ def _init_method(cls: type, every: list[Field[Any]], frozen: bool) -> Callable[.
         shape.append(kind)
         attributes[f"a{i}"] = field.name
         if frozen:
-            namespace[f"s{i}"] = _setter(cls, field.name)
+            setters[f"s{i}"] = field.name
         if field.init:
             names.append(field.name)
             defaults += default
@@ -310,7 +318,7 @@ def _init_method(cls: type, every: list[Field[Any]], frozen: bool) -> Callable[.
         co_names=tuple(attributes.get(name, name) for name in code.co_names),
         co_qualname=f"{cls.__qualname__}.__init__",
     )
-    return FunctionType(code, namespace, "__init__", tuple(defaults))
+    return FunctionType(code, namespace, "__init__", tuple(defaults)), setters
 
 
 @cache

@@ -187,20 +187,61 @@ def _index(
 
 @record(slots=False)
 class KeywordDatabase:
-    """Everything the manuals say about keywords, constants and errors, indexed for lookup."""
+    """Everything the manuals say about keywords, constants and errors, indexed for lookup.
+
+    What a check of Mint v4 reads (its keywords and constants) is built when the database is loaded;
+    the rest (v3's keywords, constants and renames, MintMT's own words, the errors) from its documents
+    when first asked for, which a one-line v4 check never does.
+    """
 
     keywords: Mapping[str, Keyword]
     constants: Mapping[str, Constant]
-    errors: Mapping[int, ErrorCode]
-    v3_keywords: Mapping[str, V3Keyword]
-    v3_constants: Mapping[str, V3Constant]
-    renames: tuple[Rename, ...]
-    mintmt_keywords: Mapping[str, Keyword]  # MintMT's own keywords, and v4 ones MintMT addresses otherwise
-    mintmt_constants: Mapping[str, Constant]
     _words: Mapping[str, Keyword] = field(repr=False)
-    _v3_words: Mapping[str, V3Keyword] = field(repr=False)
-    _old_words: Mapping[str, Rename] = field(repr=False)
     _shared: Mapping[str, tuple[Keyword, ...]] = field(repr=False)  # abbreviation -> the keywords it is given to
+    _later: Documents = field(repr=False, compare=False)  # the documents of what is built when first asked for
+
+    @cached_property
+    def errors(self) -> Mapping[int, ErrorCode]:
+        made = (
+            ErrorCode(r["code"], _ERROR_KINDS[r["kind"]], r["title"], r["constant"], r["line"])
+            for r in self._later["errors.json"]
+        )
+        return MappingProxyType({error.code: error for error in made})
+
+    @cached_property
+    def v3_keywords(self) -> Mapping[str, V3Keyword]:
+        return _by_name(self._v3_records, lambda k: k.name)
+
+    @cached_property
+    def _v3_records(self) -> list[V3Keyword]:
+        return [_v3_keyword(raw) for raw in self._later["keywords_v3.json"]]
+
+    @cached_property
+    def v3_constants(self) -> Mapping[str, V3Constant]:
+        read = self._later["constants_v3.json"]
+        return _by_name((V3Constant(r["name"], r["value"], r["v4_name"], r["line"]) for r in read), lambda c: c.name)
+
+    @cached_property
+    def renames(self) -> tuple[Rename, ...]:
+        return tuple(_rename(raw) for raw in self._later["renames_v3_to_v4.json"])
+
+    @cached_property
+    def mintmt_keywords(self) -> Mapping[str, Keyword]:
+        """MintMT's own keywords, and v4 ones MintMT addresses otherwise."""
+        return _by_name((_keyword(raw) for raw in self._later["keywords_mintmt.json"]), lambda k: k.name)
+
+    @cached_property
+    def mintmt_constants(self) -> Mapping[str, Constant]:
+        read = self._later["constants_mintmt.json"]
+        return _by_name((Constant(r["name"], r["value"], r["keyword"], r["line"]) for r in read), lambda c: c.name)
+
+    @cached_property
+    def _v3_words(self) -> Mapping[str, V3Keyword]:
+        return _index(self._v3_records, lambda k: (k.name,), lambda k: k.abbreviations)
+
+    @cached_property
+    def _old_words(self) -> Mapping[str, Rename]:
+        return _index(self.renames, lambda r: (r.old,), lambda r: (r.old_abbreviation,) if r.old_abbreviation else ())
 
     def lookup(self, word: str, controller: Controller | None = None) -> Keyword | None:
         """The v4 keyword ``word`` names or abbreviates, in any case.
@@ -275,32 +316,27 @@ def database() -> KeywordDatabase:
     """The database shipped with the package, loaded once per process."""
     read = documents()
     keywords = [_keyword(raw) for raw in read["keywords_v4.json"]]
-    v3_keywords = [_v3_keyword(raw) for raw in read["keywords_v3.json"]]
-    renames = tuple(_rename(raw) for raw in read["renames_v3_to_v4.json"])
     constants = [Constant(r["name"], r["value"], r["keyword"], r["line"]) for r in read["constants_v4.json"]]
-    errors = [
-        ErrorCode(r["code"], _ERROR_KINDS[r["kind"]], r["title"], r["constant"], r["line"]) for r in read["errors.json"]
-    ]
-    v3_constants = [V3Constant(r["name"], r["value"], r["v4_name"], r["line"]) for r in read["constants_v3.json"]]
     conflicts = _abbreviation_conflicts(read["conflicts.json"])
     by_name = _by_name(keywords, lambda k: k.name)
     preferred = sorted(keywords, key=lambda k: (not k.documented, k.line))
     return KeywordDatabase(
         keywords=by_name,
         constants=_by_name(constants, lambda c: c.name),
-        errors=MappingProxyType({error.code: error for error in errors}),
-        v3_keywords=_by_name(v3_keywords, lambda k: k.name),
-        v3_constants=_by_name(v3_constants, lambda c: c.name),
-        renames=renames,
-        mintmt_keywords=_by_name((_keyword(raw) for raw in read["keywords_mintmt.json"]), lambda k: k.name),
-        mintmt_constants=_by_name(
-            (Constant(r["name"], r["value"], r["keyword"], r["line"]) for r in read["constants_mintmt.json"]),
-            lambda c: c.name,
-        ),
         _words=_index(
             preferred, lambda k: (k.name,), lambda k: k.abbreviations, fixed=_abbreviation_choices(by_name, conflicts)
         ),
-        _v3_words=_index(v3_keywords, lambda k: (k.name,), lambda k: k.abbreviations),
-        _old_words=_index(renames, lambda r: (r.old,), lambda r: (r.old_abbreviation,) if r.old_abbreviation else ()),
         _shared=_shared_abbreviations(by_name, conflicts),
+        _later={name: read[name] for name in _BUILT_WHEN_ASKED},
     )
+
+
+# The documents of what ``KeywordDatabase`` builds when first asked for.
+_BUILT_WHEN_ASKED = (
+    "errors.json",
+    "keywords_v3.json",
+    "constants_v3.json",
+    "renames_v3_to_v4.json",
+    "keywords_mintmt.json",
+    "constants_mintmt.json",
+)

@@ -35,6 +35,7 @@ from mintlang.keyworddb import database
 from mintlang.keyworddb.load import KeywordDatabase
 from mintlang.records import record
 from mintlang.semantic.index import KeywordUse, Use, index_syntax, line_facts
+from mintlang.semantic.index import clear_cache as forget_facts
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
@@ -339,6 +340,14 @@ class Context:
         for file in self.files.values():
             for copies in ("_lines", "_uses"):
                 file.__dict__.pop(copies, None)
+
+    def forget_model(self) -> None:
+        """Drop the semantic model and the run's per-line index it was built from (the lines' facts,
+        which the per-line cache would otherwise keep alive alone): a rule about to build something
+        as large beside them (a Mint v4 reading of the text) frees them first, once its own
+        questions are answered. A rule asking for the model later builds it again."""
+        self.__dict__.pop("model", None)
+        forget_facts()  # in a run (``apart``), the run's own lines; else the process's, which costs time only
 
     def memo(self, compute: Callable[..., T], *args: Hashable) -> T:
         """``compute(self, *args)``, worked out once per pass: rules ask some whole-application

@@ -17,7 +17,9 @@ sequenced and v4 refuses with error 10 (v4:11473-11475).
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
+from itertools import groupby
+from operator import itemgetter
 
 from mintlang.migrate.context import LABEL, Context, FileView
 from mintlang.migrate.model import Phase, RuleClass
@@ -57,11 +59,12 @@ class GoTiming(Rule):
         """Only the lines that can change the state or show do: the others pass it on. They are
         read as parsed (``line.span`` places a statement): most of a program is timed."""
         outputs = context.mentioned(lambda name: name.startswith("OUT") and name[3:].isdigit())
-        timed = list(context.placed(LABEL, n.Pause, n.Print, n.Jump, "COMMS", "GO", *MOVES, *_EFFECTS, *outputs))
-        for file in context.files.values():
-            yield from self._file(context, file, [line for owner, line in timed if owner is file])
+        timed = context.placed(LABEL, n.Pause, n.Print, n.Jump, "COMMS", "GO", *MOVES, *_EFFECTS, *outputs)
+        # read as they come, a file at a time: a list of them held most of a program's lines at once
+        for file, lines in groupby(timed, key=itemgetter(0)):
+            yield from self._file(context, file, (line for _, line in lines))
 
-    def _file(self, context: Context, file: FileView, lines: list[n.PlacedLine]) -> Iterator[Action]:
+    def _file(self, context: Context, file: FileView, lines: Iterable[n.PlacedLine]) -> Iterator[Action]:
         running, homing, delayed = _IDLE, _IDLE, False
         for line in lines:
             if line.syntax.label is not None:

@@ -16,7 +16,7 @@ from mintlang.migrate.recognise import Evidence, may_show_v4_beyond_doubt, v4_ev
 from mintlang.migrate.rules import RULES, Replace, Rule
 from mintlang.records import record
 from mintlang.semantic.units import Unit
-from mintlang.source import end_of_file_mark
+from mintlang.syntax.tokens import end_of_file_mark
 
 DEFAULT_CONTROLLER = Controller.NEXTMOVE_PCI
 # A UTF-8 file may start with a byte-order mark. The rules migrate the text after it: a

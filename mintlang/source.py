@@ -18,7 +18,6 @@ from pathlib import Path
 
 from mintlang.diagnostics import LineIndex, Position
 from mintlang.records import record
-from mintlang.syntax.tokens import END_OF_FILE
 
 _ENCODINGS = ("utf-8", "cp1252", "latin-1")
 _MARKED = ("utf-8-sig", *_ENCODINGS)  # utf-8-sig drops the mark when it decodes and writes it when it encodes
@@ -49,11 +48,6 @@ class SourceFile:
         """
         offset = self.text.find("\0")
         return None if offset < 0 else LineIndex(self.text).position(offset)
-
-
-def end_of_file_mark(text: str) -> str:
-    """The Ctrl-Z run ending ``text``, or "": the DOS end-of-file mark, no line of the program."""
-    return text[len(text.rstrip(END_OF_FILE)) :]
 
 
 def decode(data: bytes) -> tuple[str, str]:

@@ -34,7 +34,7 @@ from mintlang.dialect import Dialect
 from mintlang.records import record
 from mintlang.syntax.moved import MovedOffsets
 from mintlang.syntax.nodes import number_value
-from mintlang.syntax.tokens import END_OF_FILE, Token, TokenKind
+from mintlang.syntax.tokens import Token, TokenKind, end_of_file_mark
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 _K = TokenKind
@@ -349,7 +349,7 @@ def _content_end(line: str) -> int:
 def _code_end(line: str, content_end: int) -> int:
     """Where the code of ``line`` ends: before the Ctrl-Z run that ends the file, when it is the file's last
     line (the only one with no line break), which is blanks to its end rather than unexpected characters."""
-    return len(line.rstrip(END_OF_FILE)) if content_end == len(line) else content_end
+    return len(line) - len(end_of_file_mark(line)) if content_end == len(line) else content_end
 
 
 # A Mint v4 number is binary32 (000:714-716), at most about 3.4E+38: 39 decimal digits, or 0x and 32 hex

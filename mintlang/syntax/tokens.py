@@ -13,7 +13,12 @@ from typing import NamedTuple
 
 # DOS editors ended a file with Ctrl-Z, their end-of-file mark (the v3 guide has array files end with one,
 # 001:1799): a run of it ending a file is no character of the program, though a tool keeps its bytes.
-END_OF_FILE = "\x1a"
+_END_OF_FILE = "\x1a"
+
+
+def end_of_file_mark(text: str) -> str:
+    """The Ctrl-Z run ending ``text``, or "": the DOS end-of-file mark, no line of the program."""
+    return text[len(text.rstrip(_END_OF_FILE)) :]
 
 
 class TokenKind(StrEnum):

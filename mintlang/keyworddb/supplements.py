@@ -13,7 +13,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from types import MappingProxyType
 
-from mintlang.keyworddb.model import Attributes, Controller, ValueRange
+from mintlang.dialect import Dialect
+from mintlang.keyworddb.model import Attributes, Controller, Keyword, ValueRange
 
 _ALL = tuple(Controller)  # each row applies wherever the keyword itself exists (its own controllers)
 _ERROR_MODES = ValueRange("0 ≤ x ≤ 3, 5", None, None, False, allowed=(0.0, 1.0, 2.0, 3.0, 5.0))
@@ -60,6 +61,9 @@ ENCODERSCALE, which divides the counts into ENCODER's units as SCALE does into P
 factor of 0 leaves no unit to divide by."""
 
 
-def attributes(name: str) -> Attributes | None:
-    """The row the tools take for keyword ``name`` where the guide prints none."""
-    return SUPPLEMENTS.get(name)
+def attributes_for(keyword: Keyword, controller: Controller, dialect: Dialect) -> Attributes | None:
+    """``keyword``'s attributes on ``controller``: its table's row, or, for a Mint v4 or MintMT keyword whose
+    entry prints no table, the row the tools take here."""
+    if keyword.attributes or not dialect.modern:
+        return keyword.attributes_for(controller)
+    return SUPPLEMENTS.get(keyword.name)

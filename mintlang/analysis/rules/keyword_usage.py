@@ -87,9 +87,7 @@ def _verdict(
         return 2006, f"{keyword.name} is an editor command: it works only at the command line, not in a program"
     if keyword.controllers and controller not in keyword.controllers:
         return 17, f"{keyword.name} is not available on {profile(controller).title}"
-    attributes = keyword.attributes_for(controller)
-    if attributes is None and not keyword.attributes and dialect.modern:
-        attributes = supplements.attributes(name)  # HOMEPOS: read only, though its entry prints no table
+    attributes = supplements.attributes_for(keyword, controller, dialect)  # HOMEPOS's too, which prints none
     if attributes is None:
         return _verdict_from_formats(keyword, use)
     if use is Use.WRITE and not attributes.write:

@@ -25,9 +25,8 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if use.use is not Use.WRITE or not isinstance(use.statement, n.KeywordStatement):
             continue
         keyword = db.keywords_of(dialect).get(use.keyword.keyword)
-        attributes = keyword.attributes_for(controller) if keyword else None
-        if keyword is not None and not keyword.attributes and dialect.modern:
-            attributes = supplements.attributes(keyword.name)  # SRAMP, FOLERRORMODE: the ranges mint-run takes
+        # SRAMP's and FOLERRORMODE's too, which print none: the ranges mint-run takes
+        attributes = supplements.attributes_for(keyword, controller, dialect) if keyword else None
         # a scale factor is positive whatever its table prints, or where it prints none (ServoNode 51's SCALE)
         positive = use.keyword.keyword in supplements.POSITIVE_ONLY
         limits = attributes.range if attributes is not None else None

@@ -151,6 +151,10 @@ def _keyword(raw: dict[str, Any]) -> Keyword:
     )
 
 
+def _constant(raw: dict[str, Any]) -> Constant:
+    return Constant(raw["name"], raw["value"], raw["keyword"], raw["line"])
+
+
 def _v3_keyword(raw: dict[str, Any]) -> V3Keyword:
     return V3Keyword(
         name=raw["name"],
@@ -232,8 +236,7 @@ class KeywordDatabase:
 
     @cached_property
     def mintmt_constants(self) -> Mapping[str, Constant]:
-        read = self._later["constants_mintmt.json"]
-        return _by_name((Constant(r["name"], r["value"], r["keyword"], r["line"]) for r in read), lambda c: c.name)
+        return _by_name(map(_constant, self._later["constants_mintmt.json"]), lambda c: c.name)
 
     @cached_property
     def _v3_words(self) -> Mapping[str, V3Keyword]:
@@ -316,7 +319,7 @@ def database() -> KeywordDatabase:
     """The database shipped with the package, loaded once per process."""
     read = documents()
     keywords = [_keyword(raw) for raw in read["keywords_v4.json"]]
-    constants = [Constant(r["name"], r["value"], r["keyword"], r["line"]) for r in read["constants_v4.json"]]
+    constants = [_constant(raw) for raw in read["constants_v4.json"]]
     conflicts = _abbreviation_conflicts(read["conflicts.json"])
     by_name = _by_name(keywords, lambda k: k.name)
     preferred = sorted(keywords, key=lambda k: (not k.documented, k.line))

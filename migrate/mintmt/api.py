@@ -12,7 +12,7 @@ from mintlang.migrate import engine
 from mintlang.migrate.mintmt import addressing, blocks, characters, comments, events, names
 from mintlang.migrate.mintmt.apply import apply
 from mintlang.migrate.mintmt.source import Source
-from mintlang.migrate.mintmt.v3 import left_for_a_person, v3_words
+from mintlang.migrate.mintmt.v3 import v3_uses
 from mintlang.migrate.model import MigrationFailed, MigrationResult
 
 _BOM = "\ufeff"
@@ -30,10 +30,10 @@ def to_mintmt(source: str, *, config: str | None = None) -> MigrationResult:
     if any(detect_dialect(text) is Dialect.MINTMT for text in texts):
         configuration_as_it_was = engine.untouched(config) if config is not None else None
         return _result(engine.untouched(source), configuration_as_it_was, already=True)
-    v3 = v3_words(source, config)
-    if v3:
-        shown = ", ".join(v3)
-        if left_for_a_person(source, config):
+    v3 = v3_uses(source, config)
+    if v3.words:
+        shown = ", ".join(v3.words)
+        if v3.left_for_a_person:
             reason = f"still Mint v3 ({shown}) on lines mint-migrate flagged: deal with their REM MIGRATE items first"
             raise MigrationFailed(None, reason)
         raise MigrationFailed(None, f"this is Mint v3 ({shown}): migrate it to v4 first (mint-migrate without --to)")

@@ -14,28 +14,27 @@ import mintlang
 from mintlang.diagnostics import LineIndex, split_lines
 from mintlang.keyworddb import database
 from mintlang.migrate.context import MARKER_LINE
+from mintlang.records import record
 
 _UNKNOWN_NAME = frozenset({"E3001", "E3007"})
 _V3_EVENT = "W102"
 
 
-def v3_words(source: str, config: str | None = None) -> tuple[str, ...]:
-    """The v3 keywords the application uses where v4 does not know them, each once, in the order found
-    (the configuration file's first, as the two are checked together)."""
-    return tuple(dict.fromkeys(word for word, _ in _v3_uses(source, config)))
+@record
+class V3Uses:
+    """What shows v3 in an application: the v3 keywords v4 does not know, each once, in the order found (the
+    configuration file's first, as the two are checked together), and whether every use of them is on a line
+    ``mint-migrate`` flagged (a ``REM MIGRATE:`` line right above it): the v3 -> v4 migration is then done,
+    and what is left of v3 waits for a person."""
+
+    words: tuple[str, ...]
+    left_for_a_person: bool
 
 
-def left_for_a_person(source: str, config: str | None = None) -> bool:
-    """Whether every v3 word of the application is on a line ``mint-migrate`` flagged (a ``REM MIGRATE:``
-    line right above it): the v3 -> v4 migration is done, and what is left of v3 waits for a person."""
-    uses = _v3_uses(source, config)
-    return bool(uses) and all(marked for _, marked in uses)
-
-
-def _v3_uses(source: str, config: str | None) -> list[tuple[str, bool]]:
-    """Each use of a v3 word v4 does not know, and whether a marker flags its line."""
+def v3_uses(source: str, config: str | None = None) -> V3Uses:
+    """The application's uses of v3 words, found by one Mint v4 check of it."""
     analysis = mintlang.check_application(source, dialect="v4", config=config)
-    found: list[tuple[str, bool]] = []
+    found: list[tuple[str, bool]] = []  # each use, and whether a marker flags its line
     for text, diagnostics in ((config or "", analysis.configuration), (source, analysis.program)):
         index = LineIndex(text)
         lines = split_lines(text)
@@ -44,7 +43,8 @@ def _v3_uses(source: str, config: str | None) -> list[tuple[str, bool]]:
             if diagnostic.code == _V3_EVENT or (diagnostic.code in _UNKNOWN_NAME and _v3_only(word)):
                 above = index.position(diagnostic.span.start).line - 2  # the line above, counted from 0
                 found.append((word.upper(), above >= 0 and MARKER_LINE.match(lines[above]) is not None))
-    return found
+    words = tuple(dict.fromkeys(word for word, _ in found))
+    return V3Uses(words, bool(found) and all(marked for _, marked in found))
 
 
 def _v3_only(word: str) -> bool:

@@ -15,7 +15,7 @@ from click.testing import CliRunner
 
 from mintlang.migrate.cli import migrate as command
 from mintlang.migrate.mintmt import to_mintmt
-from mintlang.migrate.mintmt.v3 import v3_words
+from mintlang.migrate.mintmt.v3 import v3_uses
 from mintlang.migrate.model import MigrationFailed
 from tests.corpus_files import CORPUS
 
@@ -24,16 +24,16 @@ V3_PROGRAM = "HMSPEED = 10\nSP = 5\nMA = 100\nGEARN = 1\nCONTON\nDINT\nEINT\nEND
 
 def test_the_v3_keywords_v4_does_not_know_are_named() -> None:
     # SP and MA are abbreviations v4 still reads (SPEED, MOVEA): they do not show v3.
-    assert v3_words(V3_PROGRAM) == ("HMSPEED", "GEARN", "CONTON", "DINT", "EINT", "#FASTPOS")
+    assert v3_uses(V3_PROGRAM).words == ("HMSPEED", "GEARN", "CONTON", "DINT", "EINT", "#FASTPOS")
 
 
 def test_a_v4_variable_named_like_a_v3_keyword_does_not_show_v3() -> None:
-    assert v3_words("DIM conton\nconton = 1\nPRINT conton\n") == ()
+    assert v3_uses("DIM conton\nconton = 1\nPRINT conton\n").words == ()
 
 
 def test_an_abbreviation_of_a_v3_keyword_does_not_show_v3() -> None:
     # ax abbreviates v3's AUX: as a (here undeclared) v4 name it is the program's own mistake.
-    assert v3_words("SPEED.ax = 1\n") == ()
+    assert v3_uses("SPEED.ax = 1\n").words == ()
 
 
 def test_to_mintmt_refuses_a_v3_program() -> None:
@@ -47,7 +47,7 @@ def test_a_v3_configuration_file_refuses_its_application() -> None:
 
 
 def test_no_v4_program_of_the_corpus_reads_as_v3() -> None:
-    shown = {path.name: v3_words(path.read_text(encoding="utf-8")) for path in (CORPUS / "v4").rglob("*.mnt")}
+    shown = {path.name: v3_uses(path.read_text(encoding="utf-8")).words for path in (CORPUS / "v4").rglob("*.mnt")}
     assert {name: words for name, words in shown.items() if words} == {}
 
 

@@ -5,6 +5,7 @@ Kept apart so that ``mint-run --help`` and ``--version`` load neither the simula
 
 from __future__ import annotations
 
+import io
 import json
 import signal
 import sys
@@ -339,6 +340,10 @@ class _Stdout:
     def __init__(self, *, live: bool) -> None:
         self.closed = False
         self.live = live
+        if isinstance(sys.stdout, io.TextIOWrapper):
+            # a character the output's encoding lacks (PRINT CHR(129) to cp1252, CHR(233) to ASCII) shows as '?',
+            # as on a terminal without the glyph, instead of ending the run with a traceback
+            sys.stdout.reconfigure(errors="replace")
 
     def write(self, text: str) -> None:
         try:

@@ -335,7 +335,7 @@ def _recover(  # noqa: PLR0917 - the line, its reading, and where the findings g
     statements: list[n.Statement] = []
     if failure.too_complex is not None:  # retrying the parts would not make it simpler
         statements.append(n.SyntaxError_(line.span))
-        diagnostics.append(_describe(line, 0, len(kinds), failure) or _error(2003, line.span, _UNREADABLE))
+        diagnostics.append(_describe(line, 0, len(kinds), failure, words) or _error(2003, line.span, _UNREADABLE))
         return label, tuple(statements)
     for begin, end in _segments(kinds, start):
         if begin == end:
@@ -347,11 +347,12 @@ def _recover(  # noqa: PLR0917 - the line, its reading, and where the findings g
         span = shared_span(line.starts[begin], line.ends[end - 1])
         broken = kinds[begin:end]
         statements.append(n.SyntaxError_(span, _opened_block(broken), _closing_word(broken)))
-        issue = _misspelt_keyword(line, begin, result, words, controller) or _describe(line, begin, end, result)
+        issue = _misspelt_keyword(line, begin, result, words, controller) or _describe(line, begin, end, result, words)
         if issue is not None:
             diagnostics.append(issue)
     if not statements and failure.index < len(kinds) and kinds[failure.index] is _K.LABEL:
-        diagnostics.append(_describe(line, 0, len(kinds), failure) or _error(2003, line.token_span(0), _UNREADABLE))
+        issue = _describe(line, 0, len(kinds), failure, words)
+        diagnostics.append(issue or _error(2003, line.token_span(0), _UNREADABLE))
     return label, tuple(statements)
 
 
@@ -451,7 +452,7 @@ def _given_a_list(kinds: list[TokenKind], begin: int, failed: int) -> bool:
     return _K.EQUAL in assigned and balanced
 
 
-def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) -> Diagnostic | None:
+def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, words: Vocabulary) -> Diagnostic | None:
     """The diagnostic for a statement the grammar rejected, numbered as the controller would."""
     if failure.too_complex is not None:
         span = shared_span(line.starts[begin], line.ends[end - 1])
@@ -492,8 +493,8 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) ->
     if segment[0] is _K.DIM:  # DIM of a keyword is a syntax error (DIM, 000:9189-9192), whichever kind it lexes as
         named = index if index == begin + 1 and not at_end else index - 1
         if named > begin and kinds[named] in _KEYWORD_KINDS:
-            word = line.texts[named]
-            return _error(2003, line.token_span(named), f"'{word}' is a keyword and cannot be declared as a variable")
+            word = words.quoted(line.texts[named])
+            return _error(2003, line.token_span(named), f"{word} is a keyword and cannot be declared as a variable")
         if index == begin + 2 and not at_end and line.texts[index].upper() == "AS":  # every number is one type
             return _error(2003, span, "DIM takes no type: every Mint variable holds a floating point number")
     if not at_end and kinds[index] in _KEYWORD_KINDS and "NAME" in expected:
@@ -502,7 +503,7 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure) ->
         read = index > begin and kinds[index - 1] not in (_K.GOSUB, _K.GOTO, _K.FOR)
         if read and _only_a_command(word):
             return _error(2003, span, f"{word.upper()} is a command and gives no value")  # PRINT AXES, as PRINT GO
-        return _error(2006, span, f"'{word}' is a reserved keyword and cannot be used as {role}")
+        return _error(2006, span, f"{words.quoted(word)} is a reserved keyword and cannot be used as {role}")
     if line.expanded[index if not at_end else end - 1]:
         return _error(2003, span, f"unexpected {_unexpected(found)} in the text of a macro")
     return _error(2003, span, f"unexpected {_unexpected(found)}")

@@ -30,7 +30,7 @@ class Vocabulary:
     dialect: Dialect
     words: Mapping[str, TokenKind]  # upper-case spelling -> kind (names and abbreviations)
     canonical: Mapping[str, str]  # upper-case spelling -> the keyword's full name
-    suffixed: frozenset[str]  # keywords that also take a glued channel number: IN3, OUT1
+    suffixed: frozenset[str]  # spellings that also take a glued channel number: IN3, OUT1 (v4 also OT1)
     constants: frozenset[str]  # upper-case names of predefined constants
     indices: Mapping[str, int]  # MintMT: how many of a keyword's bracketed items follow its axes
 
@@ -49,6 +49,12 @@ class Vocabulary:
         if stem == upper or stem not in self.suffixed:
             return None
         return self.canonical[stem], int(upper[len(stem) :])
+
+    def quoted(self, word: str) -> str:
+        """``word`` quoted for a message that calls it Mint's own, saying which keyword an abbreviation
+        stands for: a user who writes ``DIM spd`` has no reason to know that SPD is SPEEDDEMAND."""
+        name = self.canonical.get(word.upper())
+        return f"'{word}' (short for {name})" if name is not None and name != word.upper() else f"'{word}'"
 
     def keyword_name(self, word: str) -> str | None:
         """Full keyword name for a spelling, abbreviation or channel-suffixed form."""
@@ -108,6 +114,8 @@ def vocabulary(dialect: Dialect, controller: Controller | None = None) -> Vocabu
                 for abbreviation in keyword.abbreviations:
                     if db.lookup(abbreviation, controller) is keyword:  # a shared one goes to one keyword
                         add(abbreviation, keyword.name, kind)
+                        if keyword.channel_suffix:  # an abbreviation stands for the name: OT2 is OUT2
+                            suffixed.add(abbreviation.upper())
         constants = frozenset(db.constants_of(dialect))
         if dialect is Dialect.MINTMT:
             for word in _MINTMT_BLOCK_WORDS:

@@ -32,6 +32,7 @@ from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, Unit
 from mintlang.semantic.v3_declarations import undefined_variables
 from mintlang.syntax import nodes as n
 from mintlang.syntax.tokens import TokenKind
+from mintlang.syntax.vocabulary import vocabulary
 
 
 def check(facts: Facts) -> Iterator[Finding]:
@@ -372,7 +373,10 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
     """A DEFINE whose name is no name."""
     for statement in scope.facts.statements:
         if type(statement) is n.Define and not statement.name_is_word:
-            detail = f"'{statement.name.text}' cannot name a macro"
+            text = statement.name.text
+            words = vocabulary(scope.dialect, scope.controller.controller)
+            what = f"{words.quoted(text)} is a keyword and" if words.keyword_name(text) else f"'{text}'"
+            detail = f"{what} cannot name a macro"
             yield Finding(scope.unit, mint_error(3005, statement.name.span, detail))
 
 

@@ -41,6 +41,7 @@ class NumberEntry:
 
     value: float | None
     retry: bool = False
+    typed: str = ""  # the number as typed, before binary32 rounds it (INPUT .. USING counts its digits)
 
 
 class Keyboard(Protocol):
@@ -265,7 +266,7 @@ class Terminal:
         if _NUMBER.fullmatch(entry) is None:
             return NumberEntry(None, retry=True)
         try:
-            return NumberEntry(held(float(entry), f32))  # 400 digits: an infinity, too large as 50 are
+            return NumberEntry(held(float(entry), f32), typed=entry)  # 400 digits: an infinity, too large as 50 are
         except MintError:
             return NumberEntry(None, retry=True)
 

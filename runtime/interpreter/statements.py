@@ -24,7 +24,7 @@ from mintlang.runtime.interpreter.vm import Interpreter, Loop, Operation, Recove
 from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordAccess, KeywordTable, Values
 from mintlang.runtime.printing import format_bin, format_chr, format_hex
 from mintlang.runtime.ranges import check_range, table_bounds
-from mintlang.runtime.terminal import Terminal
+from mintlang.runtime.terminal import NumberEntry, Terminal
 from mintlang.semantic.blocks import Block, BlockKind, Place
 from mintlang.syntax import nodes as n
 
@@ -34,6 +34,8 @@ MISSING_PARAMETER = 2001
 UNDEFINED_KEYWORD = 3007
 SYNTAX_ERROR = 2003
 TOO_MANY_VALUES = 2017
+MAX_INPUT_INTEGER_DIGITS = 15  # INPUT .. USING: <int> is at most 15 characters, the sign excluded (000:12247)
+MAX_INPUT_FRACTION_DIGITS = 3  # and <frac> at most 3 (000:12249)
 
 
 def layout_size(statement: n.Statement) -> int:
@@ -713,7 +715,7 @@ class StatementCompiler:
                 vm.wake_at = NEVER  # only a keystroke (a scheduled world change) can wake it
                 return True
             prompted.discard(key)
-            value = entry.value if entry.value is None else accept(entry.value, current())
+            value = entry.value if entry.value is None else accept(entry, current())
             if entry.retry or (entry.value is not None and value is None):  # ask again, at once if keys wait
                 vm.wake_at = clock.now + 1
                 return True
@@ -723,22 +725,30 @@ class StatementCompiler:
 
         return input_
 
-    def _entry_format(self, using: tuple[n.Expression, ...]) -> Callable[[float, float], float | None]:
-        """``INPUT .. USING int, frac`` (000:12223-12230): a sign only with a negative ``int``, or when the
-        variable already holds a negative value, and no more than ``frac`` decimals (at most 3), the rest
+    def _entry_format(self, using: tuple[n.Expression, ...]) -> Callable[[NumberEntry, float], float | None]:
+        """``INPUT .. USING int, frac`` (000:12223-12230, 12247-12249): a sign only with a negative ``int``, or
+        when the variable already holds a negative value, no more integer digits than ``|int|`` (at most 15)
+        or than the value already held has, and no more than ``frac`` decimals (at most 3), the rest
         truncated; None for an entry to refuse. The field editor's keys (space, backspace, '-' toggling the
-        sign) are not modelled: keys arrive as a line."""
+        sign) are not modelled: keys arrive as a line, and a line the field cannot hold is asked for again."""
         if not using:
-            return lambda value, _: value
+            return lambda entry, _: entry.value
         places = self.expressions.compile(using[0])
         fraction = self.expressions.compile(using[1]) if len(using) > 1 else (lambda: 0.0)
         number = self.number
 
-        def accept(value: float, existing: float) -> float | None:
-            if value < 0 and places() >= 0 and existing >= 0:
+        def accept(entry: NumberEntry, existing: float) -> float | None:
+            negative = entry.typed.startswith("-") and entry.value != 0.0
+            whole, _, decimals = entry.typed.lstrip("+-").partition(".")
+            whole = whole.lstrip("0")
+            integer = places()
+            if negative and integer >= 0 and existing >= 0:
                 return None
-            scale = 10.0 ** min(max(int(fraction()), 0), 3)
-            return number(math.trunc(value * scale) / scale)
+            if len(whole) > max(min(abs(math.trunc(integer)), MAX_INPUT_INTEGER_DIGITS), _whole_digits(existing)):
+                return None
+            kept = min(max(int(fraction()), 0), MAX_INPUT_FRACTION_DIGITS)
+            magnitude = int(whole + decimals[:kept].ljust(kept, "0") or "0") / 10**kept  # truncated, not rounded
+            return number(-magnitude if negative else magnitude)
 
         return accept
 
@@ -748,6 +758,12 @@ class StatementCompiler:
 
 def _nothing() -> None:
     return None
+
+
+def _whole_digits(value: float) -> int:
+    """How many digits the integer part of ``value`` has: none for a value under 1."""
+    whole = abs(math.trunc(value))
+    return len(str(whole)) if whole else 0
 
 
 def _within_the_axes(count: int, addressed: tuple[int, ...] | None) -> None:

@@ -181,8 +181,8 @@ def test_a_typed_line_is_echoed_to_the_output() -> None:
 def test_input_reads_a_number_as_binary32() -> None:
     terminal = Terminal()
     terminal.type_keys(" -1.5\r0.1\r")
-    assert terminal.read_number() == NumberEntry(-1.5)
-    assert terminal.read_number() == NumberEntry(0.10000000149011612)
+    assert terminal.read_number() == NumberEntry(-1.5, typed="-1.5")
+    assert terminal.read_number() == NumberEntry(0.10000000149011612, typed="0.1")
 
 
 def test_input_of_an_empty_line_keeps_the_variable() -> None:

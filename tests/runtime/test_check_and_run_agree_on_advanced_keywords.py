@@ -71,3 +71,11 @@ def test_lasterr_reads_success_when_no_program_has_ended_on_an_error() -> None:
     # starts at power-up, so none has; -1 is the error list's "Success" (000:18508-18510)
     assert _checked("PRINT LASTERR") == []
     assert simulate("PRINT LASTERR\n", controller="nextmove-pci").terminal == "-1\n"
+
+
+def test_lasterr_as_a_statement_has_no_message_to_display_and_the_program_goes_on() -> None:
+    # LASTERR alone is its format (000:13279-13280); it displays the error that ended a program, and none has
+    # before a run that starts at power-up: nothing is printed, and the next line runs
+    assert _checked("LASTERR") == []
+    result = simulate('LASTERR\nPRINT "on"\n', controller="nextmove-pci")
+    assert (result.stop.reason, result.terminal) == (StopReason.END, "on\n")

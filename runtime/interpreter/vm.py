@@ -251,6 +251,10 @@ class Interpreter:
         the one next to run), or for an event the statement it broke in before."""
         if len(self.frames) >= self.nesting.gosub:
             raise MintError(STACK_OVERFLOW, detail=f"more than {self.nesting.gosub} nested GOSUB calls and events")
+        self._enter(target, rank, return_pc, at)
+
+    def _enter(self, target: int, rank: int | None, return_pc: int | None, at: int | None) -> None:
+        """``call`` past the check of the GOSUB stack's depth."""
         back = self.pc if return_pc is None else return_pc
         shown = at if at is not None else back if rank is not None else self.pc - 1
         self.frames.append(Frame(back, len(self.loops), rank, shown))
@@ -359,25 +363,23 @@ class Interpreter:
         handler = self.events.error_handler() if self.events is not None else None
         inside_handler = any(frame.rank == 0 for frame in self.frames)
         if handler is not None and not inside_handler:
-            try:
-                self._call_onerror(handler, error, pc)
-                return
-            except MintError:
-                pass
+            self._call_onerror(handler, error, pc)
+            return
         self.pc = pc
         self.halt(error, site)
 
     def _call_onerror(self, handler: int, error: MintError, pc: int) -> None:
         """Call ``#ONERROR`` for ``error`` at ``pc``: its RETURN resumes after the failing statement (EV-19 RC),
-        or for an error the program cannot go on from, comes back to it and ends the run there."""
+        or for an error the program cannot go on from, comes back to it and ends the run there. It is called
+        even with the GOSUB stack full (the error may be that very stack overflowing, 000:4597-4598)."""
         if not self.errors.resumes(error):
-            self.call(handler, 0, return_pc=pc, at=pc)
+            self._enter(handler, 0, pc, pc)
             self.frames[-1].ending = error.with_traceback(None)  # not the frames it was raised through
             return
         recovery = self.recoveries.get(pc)
         if recovery is not None and recovery.loop is not None:
             self.leave_loop(recovery.loop)
-        self.call(handler, 0, return_pc=pc + 1 if recovery is None else recovery.resume, at=pc)
+        self._enter(handler, 0, pc + 1 if recovery is None else recovery.resume, pc)
 
     def halt(self, error: MintError, site: Site | None) -> None:
         """End the run on an error no handler takes: the controller prints its message and aborts every axis

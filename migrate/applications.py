@@ -113,19 +113,29 @@ _ROLES = {"program": "program", "configuration": "configuration file"}
 
 
 @record
+class Unlooked:
+    """A path the command line names that could not be looked at (a missing path, a folder that cannot be
+    listed, a dangling link): the line that says so, and its report entry, a failed file, so that the
+    report (``--format json`` too) names it beside the files migrated."""
+
+    line: str
+    item: Migrated
+
+
+@record
 class Found:
-    """The applications the command line names, and the paths that could not be looked at (one line each:
-    a missing path, a folder that cannot be listed, a dangling link), which the others do not wait for."""
+    """The applications the command line names, and the paths that could not be looked at, which the others
+    do not wait for."""
 
     applications: list[Application]
-    unread: list[str]
+    unread: list[Unlooked]
 
 
 def read(paths: tuple[Path, ...], config: Path | None) -> Found:
     """The applications the command line names: each program alone, or one with ``config``."""
     # a folder's configuration files too: one that no program claims is migrated alone, not left in v3
     found = find(paths, PROGRAM_SUFFIXES if config is not None else PROGRAM_SUFFIXES | CONFIGURATION_SUFFIXES)
-    unread = [cannot_read(error) for error in found.unreadable]
+    unread = [_unlooked(error) for error in found.unreadable]
     if config is not None:
         if len(found.files) > 1 or any(is_configuration(path) for path in found.files):
             raise UsageError("--config pairs one configuration file with one program file")
@@ -133,10 +143,10 @@ def read(paths: tuple[Path, ...], config: Path | None) -> Found:
         if itself is not None:  # read in both roles; with --write the second write would undo the first
             raise UsageError(f"--config {config} is the program {itself} itself: name the configuration file")
         if unread:  # the program named with --config: nothing else to migrate
-            raise UsageError(unread[0])
+            raise UsageError(unread[0].line)
         return Found([_application(found.files[0] if found.files else None, config)], [])
     if not found.files:
-        raise UsageError(unread[0] if unread else "no .mnt or .cfg files to migrate")
+        raise UsageError(unread[0].line if unread else "no .mnt or .cfg files to migrate")
     partners = _partners(found.files)
     claimed = {_identity(configuration) for configuration in partners.values()}
     applications = [
@@ -145,6 +155,13 @@ def read(paths: tuple[Path, ...], config: Path | None) -> Found:
         if not (is_configuration(path) and _identity(path) in claimed)
     ]
     return Found(applications, unread)
+
+
+def _unlooked(error: OSError) -> Unlooked:
+    path = str(error.filename)
+    why = "no such file or directory" if isinstance(error, FileNotFoundError) else f"cannot be read ({error.strerror})"
+    role = "configuration" if is_configuration(Path(path)) else "program"
+    return Unlooked(cannot_read(error), Migrated(None, FileEntry(path, role, None, NotRead(why))))
 
 
 def _partners(found: list[Path]) -> dict[Path, Path]:

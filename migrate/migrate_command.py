@@ -99,7 +99,8 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     refuse_overwriting(output_file, sources, _fail)
     migrated = [application.migrate(controller, only or None, skip, opt_in, to=to) for application in applications]
     items = [item for application in migrated for item in application]
-    problems = [*unread, *(problem for item in items if (problem := item.entry.problem) is not None)]
+    problems = [*(path.line for path in unread), *(problem for item in items if (problem := item.entry.problem))]
+    items += [path.item for path in unread]
     _tidy(items, mode)
     if settings is not None:
         verified, failed = verifying.verify_all(migrated, settings)

@@ -1,7 +1,8 @@
-"""A file that cannot be read as Mint text (a NUL byte, a read error, a dangling link) fails on its own in a
-folder run, as a rule's failure does: it is named with where, left as it was, the other files are still
-migrated in every mode, and the exit status is 2. Its application fails with it: a program and its
-configuration file are read together, as the controller runs them, so neither is migrated without the other."""
+"""A file that cannot be read as Mint text (a NUL byte, a read error, a dangling link, a missing path) fails on
+its own in a folder run, as a rule's failure does: it is named with where, left as it was (a failed file of the
+report), the other files are still migrated in every mode, and the exit status is 2. Its application fails
+with it: a program and its configuration file are read together, as the controller runs them, so neither is
+migrated without the other."""
 
 from __future__ import annotations
 
@@ -114,3 +115,29 @@ def test_a_file_that_cannot_be_read_is_named_with_the_reason(folder: Path, monke
     assert result.exit_code == 2
     assert problems(result) == [f"mint-migrate: {folder / 'b.mnt'}: cannot be read (Permission denied); left as it was"]
     assert [(folder / name).read_text() for name in ("a.mnt", "c.mnt")] == [V4, V4]
+
+
+def test_a_missing_path_named_beside_others_is_a_failed_file_of_the_json_report(tmp_path: Path) -> None:
+    (tmp_path / "a.mnt").write_text(V3)
+    missing, configuration = tmp_path / "typo.mnt", tmp_path / "gone" / "cell.cfg"
+    result = run("--format", "json", tmp_path / "a.mnt", missing, configuration)
+    assert result.exit_code == 2
+    data = json.loads(result.stdout)
+    failure = {"rule": None, "reason": "no such file or directory"}
+    assert [(row["path"], row["role"], row["status"], row.get("failure")) for row in data["files"]] == [
+        (str(tmp_path / "a.mnt"), "program", "changed", None),
+        (str(missing), "program", "failed", failure),
+        (str(configuration), "configuration", "failed", failure),
+    ]
+    assert (data["totals"]["changed"], data["totals"]["failed"]) == (1, 2)
+    assert problems(result) == [
+        f"mint-migrate: no such file or directory: {missing}",
+        f"mint-migrate: no such file or directory: {configuration}",
+    ]
+
+
+def test_the_text_report_counts_a_missing_path_as_failed(tmp_path: Path) -> None:
+    (tmp_path / "a.mnt").write_text(V3)
+    result = run("--check", tmp_path / "a.mnt", tmp_path / "typo.mnt")
+    assert result.exit_code == 2
+    assert "2 files: 1 changed, 0 unchanged, 1 failed;" in result.stdout

@@ -34,6 +34,9 @@ MOTION_IN_PROGRESS = 10
 MOTION_ERROR = 12
 DRIVE_NOT_ENABLED = 40
 SERVO_TICK_S = 0.001
+VEL_SAMPLE_S = (
+    0.002  # VEL's sampling period: its least non-zero reading is one count in it, 500 counts/s (000:17120-17123)
+)
 GUARDS = frozenset(
     {
         "LIMITFORWARDINPUT",
@@ -108,6 +111,7 @@ class Axis:
         self.encoder_offset = 0.0
         self.measured = 0
         self.previous_measured = 0
+        self.earlier_measured = 0  # measured two servo ticks ago: VEL spans its 2 ms sample
         self.demand = 0.0
         self.dac = 0.0
         self.torque: float | None = None  # TORQUE mode: the DAC command
@@ -115,7 +119,8 @@ class Axis:
         self.guarded = False  # some limit, error or stop input, or a software limit, needs checking each tick
         self.held = False  # a stop input holds the axis (STOPINPUTMODE 1): its move stays, at rest, until released
         self.last_tick = 0
-        self.skipped_demand: float | None = None  # the demand of a skipped tick a completed move still gave
+        # the demands of the two ticks before (the first None if it was processed) that a completed move still gave
+        self.skipped_demands: tuple[float | None, float] | None = None
         self._setpoints: tuple[Move | None, int, float, int, float] = (None, -1, 0.0, -1, 0.0)
         self._last_demand = 0.0  # demand and demand velocity of the previous servo tick, for the feed-forwards
         self._last_velocity = 0.0
@@ -224,8 +229,7 @@ class Axis:
         if self.move is not None or self.pending_mode or self.triggered:
             return False
         p = self.parameters
-        moved = abs(self.measured - self.previous_measured) / SERVO_TICK_S
-        return abs(self.demand - self.measured) - NOISE <= p["IDLEPOS"] and moved <= p["IDLEVEL"]
+        return abs(self.demand - self.measured) - NOISE <= p["IDLEPOS"] and abs(self.velocity_counts()) <= p["IDLEVEL"]
 
     def remaining(self) -> float:
         """POSREMAINING (MP-11), counts: what is left of the move in progress, not of the moves queued behind
@@ -240,7 +244,8 @@ class Axis:
         return 0.0
 
     def velocity_counts(self) -> float:
-        return (self.measured - self.previous_measured) / SERVO_TICK_S
+        """VEL in counts/s: the change of the measured position over its sampling period (AX-4)."""
+        return (self.measured - self.earlier_measured) / VEL_SAMPLE_S
 
     def _guarded(self) -> bool:
         p = self.parameters
@@ -260,7 +265,7 @@ class Axis:
             and self.move is None
             and not self.buffer
             and not self.plant.closed_loop
-            and self.measured == self.previous_measured
+            and self.measured == self.previous_measured == self.earlier_measured
             and not self.guarded
         )
 
@@ -274,8 +279,8 @@ class Axis:
         )
 
     def settling(self) -> bool:
-        """The measured position changed on the last tick, so VEL and IDLE change on the next."""
-        return self.measured != self.previous_measured
+        """The measured position changed on one of the last two ticks, so VEL and IDLE change on the next."""
+        return self.measured != self.previous_measured or self.previous_measured != self.earlier_measured
 
     def next_event(self, now: int) -> int:
         """The next tick at which this axis changes in a way that matters beyond its demand value."""
@@ -328,8 +333,9 @@ class Axis:
         """Finish a move whose end has passed: its end state, as if the tick it ended had been processed."""
         move = self.move
         if move is not None and tick >= move.end and not self.held and not move.live:
-            if tick - 1 > self.last_tick:  # the servo skipped the tick before, which the move still drove
-                self.skipped_demand = self.demand_at(tick - 1)
+            if tick - 1 > self.last_tick:  # the servo skipped the ticks before, which the move still drove
+                earlier = self.demand_at(tick - 2) if tick - 2 > self.last_tick else None
+                self.skipped_demands = (earlier, self.demand_at(tick - 1))
             self.hold = move.demand(self.index_in_move, move.end)
             self.move = None
             if move.mode == self.pending_mode:
@@ -398,23 +404,30 @@ class Axis:
         """
         plant = self.plant
         servoing = self.enabled and self.torque is None
-        before: float | None = None  # after skipped ticks, the demand the encoder read on the tick before
-        if tick - self.last_tick > 1 and servoing and type(plant) is IdealPlant:
+        gap = tick - self.last_tick
+        # after skipped ticks, the demands the encoder read on the two ticks before (None: the tick was processed)
+        earlier: float | None = None
+        before: float | None = None
+        if gap > 1 and servoing and type(plant) is IdealPlant:
             # found before ``demand`` moves on: the demand of an odd tick is read from the one output before it
-            before = self.skipped_demand if self.skipped_demand is not None else self.demand_at(tick - 1)
-        self.skipped_demand = None
+            if self.skipped_demands is not None:
+                earlier, before = self.skipped_demands
+            else:
+                earlier = self.demand_at(tick - 2) if gap > 2 else None
+                before = self.demand_at(tick - 1)
+        self.skipped_demands = None
         demand = self.demand_at(tick)
         self.demand = demand
+        if before is not None:
+            self.earlier_measured = round_half_away(earlier) if earlier is not None else self.measured
+            self.previous_measured = round_half_away(before)
+        else:  # the tick before was processed, or the axis was at rest through the ticks skipped
+            self.earlier_measured = self.previous_measured if gap == 1 else self.measured
+            self.previous_measured = self.measured
         if type(plant) is IdealPlant:
-            if servoing:
-                self.previous_measured = round_half_away(before) if before is not None else self.measured
-                self.measured = plant.step(demand, 0.0, SERVO_TICK_S)
-            else:
-                self.previous_measured = self.measured
-                self.measured = plant.step(None, 0.0, SERVO_TICK_S)
+            self.measured = plant.step(demand if servoing else None, 0.0, SERVO_TICK_S)
             self._unservoed_dac()
         else:
-            self.previous_measured = self.measured
             self.measured = plant.step(demand if servoing else None, self.dac, SERVO_TICK_S)
             consecutive = tick - self.last_tick == 1
             previous = self._last_demand if consecutive else self.demand_at(tick - 1)

@@ -45,7 +45,8 @@ def test_the_io_lanes_hold_the_outputs_that_switched_and_when() -> None:
     assert trace.io["OUT"].bits() == [0, 2]
     assert trace.io["IN"].bits() == []
     # on at once; off when the move ends (T = 20/10 + 10/100 = 2.1 s from profiler tick 2), OUT.0 on then
-    assert trace.io["OUT"].points == [(0.0, 4), (2102.0, 1)]
+    # the move ends at 2102 (2 ms + 2.1 s); its demand was 0.8 count short at 2100, so VEL, over 2 ms, is 0 at 2103
+    assert trace.io["OUT"].points == [(0.0, 4), (2103.0, 1)]
 
 
 def test_following_error_within_half_a_count_is_drawn_as_zero_on_an_ideal_drive() -> None:

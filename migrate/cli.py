@@ -41,7 +41,8 @@ EXIT_STATUS = """\b
 Exit status:
   0  done: nothing left to rewrite (--check), everything written or
      printed, or every application verified equivalent (--verify; a
-     timing difference X-GO-TIMING flagged counts as a manual item);
+     timing difference X-GO-TIMING flagged counts as a manual item, and
+     values M-TRIG says differ are explained differences);
      manual items are reported and do not fail a run
   1  the gate failed: --check found something to rewrite, --verify found
      a divergence, or manual items are left and --fail-on manual was given

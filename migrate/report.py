@@ -18,7 +18,8 @@ from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 
-from mintlang.migrate.model import ManualItem, MigrationFailed, MigrationResult
+from mintlang.migrate.expected import DIFFERS
+from mintlang.migrate.model import Change, ManualItem, MigrationFailed, MigrationResult
 from mintlang.records import record
 
 
@@ -109,19 +110,23 @@ def _file(entry: FileEntry) -> dict[str, Any]:
     return {
         **row,
         "changed": result.changed,
-        "changes": [
-            {
-                "rule": c.rule,
-                "original_line": c.line,
-                "migrated_line": c.migrated_line,
-                "original": c.original,
-                "replacement": c.replacement,
-            }
-            for c in result.changes
-        ],
+        "changes": [_change(change) for change in result.changes],
         "manual": [_manual(item) for item in result.manual],
         "errors": sorted(result.errors, key=_line),
         "rules": dict(result.rule_counts),
+    }
+
+
+def _change(change: Change) -> dict[str, Any]:
+    """A change; one whose rule keeps v3's formula but not its exact values says what differs."""
+    differs = DIFFERS.get(change.rule)
+    return {
+        "rule": change.rule,
+        "original_line": change.line,
+        "migrated_line": change.migrated_line,
+        "original": change.original,
+        "replacement": change.replacement,
+        **({"differs": differs} if differs is not None else {}),
     }
 
 
@@ -152,7 +157,8 @@ def _manual(item: ManualItem) -> dict[str, Any]:
 
 
 def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = False, verbose: bool = False) -> None:
-    """The report for a person: one table of files, the manual items, the rule counts, the totals.
+    """The report for a person: one table of files, the manual items, the lines whose values differ, the rule
+    counts, the totals.
 
     ``quiet`` leaves out all but the manual items and the unreadable lines; ``verbose`` adds every change.
     """
@@ -164,6 +170,8 @@ def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = Fals
             console.print(f"{_place(path, item)}: [bold]{item['rule']}[/bold] {escape(item['reason'])}")
         for error in row["errors"]:
             console.print(f"{path}: unreadable v3 {escape(error)}")
+        for line in () if quiet else _differing(path, row["changes"]):
+            console.print(line)
         for change in row["changes"] if verbose else ():
             place = f"{path}:{change['migrated_line']} (original line {change['original_line']})"
             console.print(f"{place}: [bold]{change['rule']}[/bold]")
@@ -172,6 +180,19 @@ def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = Fals
     if data["rules"]:
         console.print("rules: " + ", ".join(f"{rule} {count}" for rule, count in data["rules"].items()))
     console.print(summary(data["totals"], sum(_unreadable_lines(row["errors"]) for row in data["files"])))
+
+
+def _differing(path: str, changes: Iterable[Mapping[str, Any]]) -> list[str]:
+    """One line per rule whose changes keep v3's formula but not its values: the lines, and what differs."""
+    lines: dict[str, dict[int, int]] = {}  # rule -> migrated line -> original line
+    for change in changes:
+        if "differs" in change:
+            lines.setdefault(change["rule"], {})[change["migrated_line"]] = change["original_line"]
+    told = []
+    for rule, places in lines.items():
+        where = ", ".join(f"{migrated} (original {original})" for migrated, original in sorted(places.items()))
+        told.append(f"{path}: [bold]{rule}[/bold] on lines {where}: {escape(DIFFERS[rule])}")
+    return told
 
 
 def _files_table(data: Mapping[str, Any], console: Console) -> None:

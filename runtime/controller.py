@@ -10,8 +10,9 @@ its interrupts and its error numbers.
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import field
+from collections.abc import Callable, Mapping
+from dataclasses import field, replace
+from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from mintlang.controllers import ControllerProfile
@@ -87,11 +88,15 @@ def build_controller(
     slice_statements: int = 20,
     host_port: int | None = None,
     echo: Callable[[str], None] | None = None,
+    functions: Mapping[str, Callable[..., float]] | None = None,
 ) -> Controller:
     """Assemble the controller for ``model`` (on ``machine``, by default the model's controller as simulated);
-    raises ``NotSimulated`` or ``MintError`` when it cannot compile."""
+    raises ``NotSimulated`` or ``MintError`` when it cannot compile. ``functions`` replace the dialect's
+    numeric functions of those names (a what-if run: ``mint-migrate --verify`` gives v4 v3's SIN)."""
     profile = machine or profile_of(model.controller.controller)
     meaning = semantics(model.program.dialect)
+    if functions:
+        meaning = replace(meaning, functions=MappingProxyType({**meaning.functions, **functions}))
     v3 = meaning.dialect is Dialect.V3
     v3_machine = dialect_machine(Dialect.V3) if v3 else None
     clock = Clock()

@@ -11,7 +11,7 @@ raises them when it runs, so ``#ONERROR`` sees them.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import replace
 from functools import partial
 
@@ -72,6 +72,7 @@ class _Hooks:
     on_tick: Callable[[Controller, int], None] | None
     on_start: Callable[[Controller], None] | None
     on_simulator: Callable[[Simulator], None] | None
+    functions: Mapping[str, Callable[..., float]] | None = None  # in place of the dialect's (build_controller)
 
 
 _ORDER = {Unit.CONFIGURATION: 0, Unit.PROGRAM: 1}  # compile order of the files
@@ -124,6 +125,7 @@ def run_source(
     on_start: Callable[[Controller], None] | None = None,
     on_simulator: Callable[[Simulator], None] | None = None,
     name: str = "program",
+    functions: Mapping[str, Callable[..., float]] | None = None,
 ) -> RunResult:
     """Run a program (and its configuration file) to the end or a limit; never raises for the program's faults.
 
@@ -140,7 +142,8 @@ def run_source(
     first: an ``echo`` that wants the time or the statement printing
     (``controller.clock.now``, ``controller.vm.current_site()``) gets it there.
     ``on_simulator`` is given the simulator after that, to hook into its ticks
-    (a debugger's checkpoints, ``Simulator.before_tick``).
+    (a debugger's checkpoints, ``Simulator.before_tick``). ``functions`` replace
+    the dialect's numeric functions of those names (``build_controller``).
     """
     simulated = machine(controller, dialect)
     directives, problems = parse_directives(source, name, controller=simulated, dialect=dialect)
@@ -154,7 +157,7 @@ def run_source(
     if refused is not None:  # what runs before the compiler stops: the configuration, if the program is at fault
         runs_first = config if refused.unit is Unit.PROGRAM else None
         model = mintlang.check_application("", dialect=dialect, controller=base, config=runs_first).model
-    hooks = _Hooks(echo, on_tick, on_start, on_simulator)
+    hooks = _Hooks(echo, on_tick, on_start, on_simulator, functions)
     result = _simulate(model, simulated, scenario, limits or Limits(), refused, hooks=hooks)
     lenient = _read_leniently(analysis)
     return replace(result, read_leniently=lenient) if lenient else result
@@ -195,6 +198,7 @@ def _simulate(
             slice_statements=limits.slice_statements,
             host_port=limits.host_port,
             echo=hooks.echo,
+            functions=hooks.functions,
         )
     except NotSimulated as missing:
         return _not_run(str(missing), scenario)

@@ -14,10 +14,11 @@ tolerances ``tolerance`` states::
     found.verdict, found.divergence, found.not_verified
 
 The answer is a ``Verification``: equivalent, a timing difference X-GO-TIMING
-expected, the first divergence (time, the line each run was at, what differs),
-or incomplete when the comparison cannot cover the run (the v3 original does not
-compile, the migration compiles only once a flagged line is done, a run meets
-what the simulator does not model). Everything the migration left for a person,
+expected, differences only in the values M-TRIG says differ (``explained``), the
+first divergence (time, the line each run was at, what differs), or incomplete
+when the comparison cannot cover the run (the v3 original does not compile, the
+migration compiles only once a flagged line is done, a run meets what the
+simulator does not model). Everything the migration left for a person,
 application notes included, is listed as not verified, and the flagged lines v4
 finds in error are made comments for the v4 run (``runnable``).
 """

@@ -37,7 +37,11 @@ def stopped(run: Recording) -> Stopped:
 def differences(v3: Recording, v4: Recording) -> list[Divergence]:
     """Every channel's first difference up to the horizon, the earliest first."""
     until = horizon(v3, v4)
-    found = [*_stops(v3, v4, until), *printed.differences(v3, v4, until), *signals.differences(v3, v4, until)]
+    return in_order([*_stops(v3, v4, until), *printed.differences(v3, v4, until), *signals.differences(v3, v4, until)])
+
+
+def in_order(found: list[Divergence]) -> list[Divergence]:
+    """Differences the earliest first, and of two at one time the one told first."""
     return sorted(found, key=lambda found: (found.time_ms, _ORDER.index(found.what.split(" ")[0])))
 
 

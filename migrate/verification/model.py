@@ -37,6 +37,7 @@ class Place:
 class Verdict(StrEnum):
     EQUIVALENT = "equivalent"  # the same behaviour over the whole comparison, within the tolerances
     TIMING = "timing"  # the same outputs in the same order, at times X-GO-TIMING flagged as expected to change
+    EXPLAINED = "explained"  # differences only in values a rule says v4 computes otherwise (M-TRIG: ``expected``)
     DIVERGES = "diverges"  # the runs differ: the first difference is reported
     INCOMPLETE = "incomplete"  # no difference as far as the simulation could go, which is not the whole run
 
@@ -54,6 +55,8 @@ class Divergence:
     v4_line: Place | None
     detail: str = ""  # where in it: "at character 12"
     timing_only: bool = False  # the same values in the same order: only when they happen differs
+    explained_by: str | None = None  # the rule whose values differ by design (``explained``): no divergence
+    what_if: str | None = None  # found by a what-if run of the migration (``explained``): its v4 side is that run's
 
 
 @record

@@ -15,6 +15,7 @@ from typing import Any
 from rich.console import Console
 from rich.markup import escape
 
+from mintlang.migrate.expected import DIFFERS
 from mintlang.migrate.model import ManualItem
 from mintlang.migrate.report import plural
 from mintlang.migrate.verification.model import Divergence, Place, Stopped, Verdict, Verification
@@ -46,7 +47,9 @@ def headline(verification: Verification) -> str:
         return f"incomplete: {verification.short}"
     if verdict is Verdict.INCOMPLETE:
         return f"incomplete: no difference over {verification.compared_ms} ms, then {verification.short}"
-    assert found is not None, "a divergence or a timing difference has a first difference"
+    assert found is not None, "a divergence, a timing or an explained difference has a first difference"
+    if verdict is Verdict.EXPLAINED:
+        return f"differs only as {found.explained_by} explains, from {found.time_ms} ms: {found.what}"
     kind = "timing differs (X-GO-TIMING)" if verdict is Verdict.TIMING else "diverges"
     return f"{kind} at {found.time_ms} ms: {found.what}"
 
@@ -96,6 +99,8 @@ def _divergence(item: Verified, found: Divergence | None, sides: tuple[str, str]
         "what": found.what,
         "detail": found.detail,
         "timing_only": found.timing_only,
+        "explained_by": found.explained_by,
+        "what_if": found.what_if,
         sides[0]: _side(item, found.v3, found.v3_line),
         sides[1]: _side(item, found.v4, found.v4_line),
     }
@@ -136,10 +141,15 @@ def render_text(
         console.print(f"{name}: [bold]{escape(row['summary'])}[/bold]{detail}")
         for side in sides if found is not None else ():
             console.print(f"  {side}: {escape(found[side]['value'])}  {_where(found[side], side == migrated)}")
-        for other in row["differences"][1:]:
+        if found is not None and found["what_if"]:
+            console.print(f"  ({migrated}: {escape(found['what_if'])})")
+        for other in (other for other in row["differences"] if other != found):
             values = ", ".join(f"{side} {escape(other[side]['value'])}" for side in sides)
             timing = ", timing only" if other["timing_only"] else ""
-            console.print(f"  also differs: {escape(other['what'])} at {other['time_ms']} ms ({values}{timing})")
+            why = f", explained by {other['explained_by']}" if other["explained_by"] else ""
+            console.print(f"  also differs: {escape(other['what'])} at {other['time_ms']} ms ({values}{timing}{why})")
+        for rule in dict.fromkeys(other["explained_by"] for other in row["differences"] if other["explained_by"]):
+            console.print(f"  explained: [bold]{rule}[/bold] {escape(DIFFERS[rule])}")
         if quiet:
             continue
         for manual in row["not_verified"]:

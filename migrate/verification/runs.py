@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import re
 from array import array
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 from mintlang.dialect import Dialect
@@ -145,8 +146,10 @@ def record(
     *,
     until_ms: int,
     max_wall_s: float | None,
+    functions: Mapping[str, Callable[..., float]] | None = None,
 ) -> Recording:
-    """Run an application to its end (and the machine to rest) or ``until_ms``, recording every millisecond."""
+    """Run an application to its end (and the machine to rest) or ``until_ms``, recording every millisecond;
+    ``functions`` in place of the dialect's (a what-if run, ``explained``)."""
     recorder = _Recorder()
     limits = Limits(until_ms=until_ms, max_wall_s=max_wall_s, every_tick=True, settle=True)
     result = run_source(
@@ -159,6 +162,7 @@ def record(
         echo=recorder.echo,
         on_tick=recorder.on_tick,
         on_start=recorder.on_start,
+        functions=functions,
     )
     recording = recorder.recording
     recording.text = "".join(recorder.chunks)

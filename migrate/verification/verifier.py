@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import replace
+from functools import partial
 from types import MappingProxyType
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.migrate.model import ManualItem, MigrationResult
-from mintlang.migrate.verification import compare, runnable
+from mintlang.migrate.verification import compare, explained, runnable
 from mintlang.migrate.verification.model import (
     DEFAULT_UNTIL_MS,
     DEFAULT_WALL_S,
@@ -52,7 +54,19 @@ def verify(
     left = record(v3, Dialect.V3, v3_controller, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
     right = record(v4, Dialect.V4, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
     short = short_of(left, right, runnable.flagged_places(result))
-    return conclude(left, right, result, short, controllers=(v3_controller, target), disabled=disabled)
+    what_if = None
+    if explained.applies(result):
+        what_if = partial(
+            record,
+            v4,
+            Dialect.V4,
+            target,
+            stimulus,
+            until_ms=until_ms,
+            max_wall_s=max_wall_s,
+            functions=explained.FUNCTIONS,
+        )
+    return conclude(left, right, result, short, controllers=(v3_controller, target), disabled=disabled, what_if=what_if)
 
 
 def conclude(
@@ -63,18 +77,23 @@ def conclude(
     *,
     controllers: tuple[str, str],
     disabled: tuple[Place, ...] = (),
+    what_if: Callable[[], Recording] | None = None,
 ) -> Verification:
     """The verdict on two recorded runs of ``result``'s original and migrated application, ``short`` saying
     why the comparison cannot cover the whole run (if it cannot); ``controllers`` ran the original and the
-    migration."""
+    migration. ``what_if`` records the migration with v3's trigonometry, to tell the differences M-TRIG
+    explains (``explained``) from divergences when there are any."""
     comparable = not (original.refused or (migrated.refused and short))  # else one of them never ran
     found = compare.differences(original, migrated) if comparable else []
+    expected: list[Divergence] = []
+    if found and what_if is not None:
+        found, expected = explained.split(found, compare.differences(original, what_if()))
     flagged = _flagged(result)
     return Verification(
-        verdict=_verdict(found, flagged, short),
+        verdict=_verdict(found, expected, flagged, short),
         compared_ms=max(compare.horizon(original, migrated), 0) if comparable else 0,
-        divergence=found[0] if found else None,
-        differences=tuple(found),
+        divergence=found[0] if found else expected[0] if expected else None,
+        differences=tuple(compare.in_order([*found, *expected])),
         v3_controller=controllers[0],
         v4_controller=controllers[1],
         v3_stop=compare.stopped(original),
@@ -115,9 +134,12 @@ def _flagged(result: MigrationResult) -> tuple[tuple[str, ManualItem], ...]:
     return tuple((unit, item) for unit, part in parts if part is not None for item in part.manual)
 
 
-def _verdict(found: list[Divergence], flagged: tuple[tuple[str, ManualItem], ...], short: str | None) -> Verdict:
+def _verdict(
+    found: list[Divergence], expected: list[Divergence], flagged: tuple[tuple[str, ManualItem], ...], short: str | None
+) -> Verdict:
+    """``found`` the differences no rule explains, ``expected`` those one does."""
     if not found:
-        return Verdict.INCOMPLETE if short else Verdict.EQUIVALENT
+        return Verdict.INCOMPLETE if short else Verdict.EXPLAINED if expected else Verdict.EQUIVALENT
     expected = any(item.rule == _TIMING_RULE for _, item in flagged)
     if expected and all(divergence.timing_only for divergence in found):
         return Verdict.TIMING

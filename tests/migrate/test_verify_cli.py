@@ -53,7 +53,7 @@ def test_the_json_report_carries_the_verdict_the_first_divergence_and_what_was_n
     application = data["applications"][0]
     divergence = application["divergence"]
     assert code == 1
-    assert data["totals"] == {"equivalent": 0, "timing": 0, "diverges": 1, "incomplete": 0}
+    assert data["totals"] == {"equivalent": 0, "timing": 0, "explained": 0, "diverges": 1, "incomplete": 0}
     assert (application["verdict"], application["compared_ms"], application["incomplete"]) == ("diverges", 500, None)
     assert (application["v3_controller"], application["v4_controller"]) == ("euroservo", "nextmove-pci")
     assert divergence["what"] == "axis 0 velocity" and 73 <= divergence["time_ms"] <= 78

@@ -112,6 +112,11 @@ class Axis:
         self.measured = 0
         self.previous_measured = 0
         self.earlier_measured = 0  # measured two servo ticks ago: VEL spans its 2 ms sample
+        # ENCODERPRESCALE: a plant's own count (its encoder's edges) and, from the last change of the divider on,
+        # the edge and the count it started from: the count the controller sees moves by one every divider edges
+        self._edges = 0
+        self._edges_origin = 0
+        self._count_origin = 0
         self.demand = 0.0
         self.dac = 0.0
         self.torque: float | None = None  # TORQUE mode: the DAC command
@@ -142,6 +147,8 @@ class Axis:
             self.open_loop_dac = None  # back to servo (or stepper) control: the loop drives the DAC again
         if name == "SCALE" and self.busy():
             raise MintError(MOTION_IN_PROGRESS, self.number, "SCALE can only change on an idle axis")
+        if name == "ENCODERPRESCALE":
+            self.count_from_here()
         self.parameters[name] = value * scale
         if name in GUARDS:
             self.guarded = self._guarded()
@@ -242,6 +249,12 @@ class Axis:
         if self.triggered and self.buffer and (targets := self.buffer[0].targets) is not None:
             return abs(targets[self.buffer[0].axes.index(self.number)] - self.demand)
         return 0.0
+
+    def count_from_here(self) -> None:
+        """The divider is about to change (ENCODERPRESCALE, DEFAULT): what is counted stays, and the counts the
+        controller sees go on from it at the new rate. An ideal plant's encoder reads the demand, in those counts."""
+        self._edges_origin = self._edges
+        self._count_origin = self.measured
 
     def velocity_counts(self) -> float:
         """VEL in counts/s: the change of the measured position over its sampling period (AX-4)."""
@@ -428,7 +441,9 @@ class Axis:
             self.measured = plant.step(demand if servoing else None, 0.0, SERVO_TICK_S)
             self._unservoed_dac()
         else:
-            self.measured = plant.step(demand if servoing else None, self.dac, SERVO_TICK_S)
+            self._edges = plant.step(demand if servoing else None, self.dac, SERVO_TICK_S)
+            divider = self.parameters["ENCODERPRESCALE"]
+            self.measured = self._count_origin + round_half_away((self._edges - self._edges_origin) / divider)
             consecutive = tick - self.last_tick == 1
             previous = self._last_demand if consecutive else self.demand_at(tick - 1)
             velocity = demand - previous

@@ -325,6 +325,7 @@ class Motion:
             axis.axiserror = 0
             axis.resync()
             axis.position_offset = axis.encoder_offset = float(axis.measured)
+            axis.count_from_here()  # ENCODERPRESCALE back to 1
             axis.parameters = dict(power_up(self.profile.controller))
             for reset in self.on_default:
                 reset(axis)
@@ -522,7 +523,7 @@ class Motion:
 
     def _encoder_velocity(self, channel: int | None) -> float:
         """ENCODERVEL: the encoder's speed in ENCODERSCALE's units per second (000:9774-9776), measured as VEL
-        is, over the last servo tick (AX-4)."""
+        is, over its 2 ms sample (AX-4)."""
         axis = self.watched(self.axis(channel), moving=True)
         return axis.velocity_counts() / axis.parameters["ENCODERSCALE"]
 

@@ -59,6 +59,7 @@ DEFAULTS: Mapping[str, float] = MappingProxyType(
         "DRIVEENABLEOUTPUT": -1.0,
         "ENCODERWRAP": 0.0,  # counts; 0 is no wrap (000:9024, 9825)
         "ENCODERSCALE": 1.0,  # counts per ENCODER unit (000:9023, 9735-9737)
+        "ENCODERPRESCALE": 1.0,  # encoder edges per count the controller sees (000:9022, 9682-9694)
     }
 )
 SCALED: frozenset[str] = frozenset(

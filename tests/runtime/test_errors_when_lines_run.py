@@ -83,8 +83,8 @@ def test_an_axis_named_twice_in_a_write_is_error_2018() -> None:
 
 
 def test_a_keyword_the_simulator_does_not_model_stops_only_the_run_that_reaches_it() -> None:
-    assert simulate('DIM a\nIF a DO\n  PRINT ENCODERPRESCALE.0\nENDIF\nPRINT "ran"\n').terminal == "ran\n"
-    stopped = simulate("PRINT ENCODERPRESCALE.0\n")
+    assert simulate('DIM a\nIF a DO\n  PRINT AUXENCODERSCALE.0\nENDIF\nPRINT "ran"\n').terminal == "ran\n"
+    stopped = simulate("PRINT AUXENCODERSCALE.0\n")
     assert (stopped.stop.reason, stopped.stop.line) == (StopReason.ERROR, 1)
     assert "not simulated" in stopped.stop.message
 

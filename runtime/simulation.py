@@ -169,6 +169,8 @@ class Simulator:
         keys = "keys that no scenario types (a [[key]] entry, or REM @sim key)"
         if self.c.terminal.keyboard is not None:
             keys += " and standard input, which has ended, did not give"
+        else:  # a terminal: what a user at one types is not read (keyboard.standard_input says why)
+            keys += " nor standard input gives, read from a pipe or a file only (printf '42\\n' | mint-run app.mnt)"
         if site is not None and site.kind == "Input":
             return f"{message}: INPUT waits for {keys}"
         if site is not None and site.kind == "Pause" and self.c.vm.awaits_keys:

@@ -21,6 +21,8 @@ def test_an_input_no_scenario_answers_is_a_deadlock_that_says_it_waits_for_keys(
     result = simulate(SOURCE)
     assert (result.stop.reason, result.stop.line) == (StopReason.DEADLOCK, 2)
     assert "INPUT waits for keys that no scenario types" in result.stop.message
+    # a user at a terminal, whose typing is not read, is told how to give keys: a pipe or a file
+    assert "nor standard input gives, read from a pipe or a file only" in result.stop.message
 
 
 def test_an_input_a_scenario_answers_reads_the_number() -> None:

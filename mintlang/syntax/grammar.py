@@ -24,7 +24,18 @@ from mintlang.package_data import read_bytes
 from mintlang.records import record
 from mintlang.syntax.build import LineBuilder, compile_line
 from mintlang.syntax.grammars import grammar_of, grammar_text
-from mintlang.syntax.lark_runtime import Lark, Lexer, LexerConf, Token, Tree, UnexpectedInput, UnexpectedToken
+from mintlang.syntax.lark_runtime import (
+    Lark,
+    Lexer,
+    LexerConf,
+    Reduce,
+    Rule,
+    Shift,
+    Token,
+    Tree,
+    UnexpectedInput,
+    UnexpectedToken,
+)
 from mintlang.syntax.lexer import MAX_TOKENS
 from mintlang.syntax.tokens import TokenKind
 
@@ -45,14 +56,47 @@ def shipped_tables(dialect: Dialect) -> dict[str, Any]:
     return marshal.loads(read_bytes("mintlang.syntax", f"lalr_{grammar_of(dialect).value}.bin"))
 
 
+class _StatesDecodedOnUse(dict[int, dict[str, tuple[Any, Any]]]):
+    """The parse table's states (state -> terminal or rule name -> action), each read from its marshalled
+    serialization (``tables.computed``) the first time the parser looks it up: the lines of a small
+    program visit a few dozen of the 359 states, and reading all of them was a third of loading the parser.
+
+    The runtime's parser only looks states up; what would iterate the table (``Lark.save``, lark's
+    contextual lexer) is never used here.
+    """
+
+    def __init__(self, encoded: dict[int, bytes], names: dict[int, str], rules: dict[int, Rule]) -> None:
+        super().__init__()
+        self._encoded, self._names, self._rules = encoded, names, rules
+
+    def __missing__(self, state: int) -> dict[str, tuple[Any, Any]]:
+        # As lark's ParseTableBase.deserialize: action 1 reduces by a rule (a reference into the memo), 0 shifts.
+        decoded = {
+            self._names[name]: (Reduce, self._rules[argument["@"]]) if action == 1 else (Shift, argument)
+            for name, (action, argument) in marshal.loads(self._encoded[state]).items()
+        }
+        self[state] = decoded
+        return decoded
+
+
 def load_parser(serialized: dict[str, Any]) -> Lark:
-    """The runtime's parser over lark's serialization of one, reading the tokens our lexer made."""
+    """The runtime's parser over lark's serialization of one, reading the tokens our lexer made; its
+    parse table's states are decoded when first used (``_StatesDecodedOnUse``)."""
     data = serialized["data"]
     # Without lark's propagation of positions: it wrapped every reduction in isinstance and getattr
     # calls, three quarters of a parse; ``_place`` gives the cached tree the same positions once.
     options = {**data["options"], "lexer": _PresetTokens, "propagate_positions": False}
-    parser = {**data["parser"], "lexer_conf": {**data["parser"]["lexer_conf"], "lexer_type": _PresetTokens}}
-    return Lark.load({"data": {**data, "options": options, "parser": parser}, "memo": serialized["memo"]})
+    table = data["parser"]["parser"]
+    parser = {
+        **data["parser"],
+        "lexer_conf": {**data["parser"]["lexer_conf"], "lexer_type": _PresetTokens},
+        "parser": {**table, "states": {}},
+    }
+    loaded = Lark.load({"data": {**data, "options": options, "parser": parser}, "memo": serialized["memo"]})
+    rules = {reference["@"]: rule for reference, rule in zip(data["rules"], loaded.rules, strict=True)}
+    # lark's LALR parser and the ParseConf of each parse read the states from this one table object.
+    loaded.parser.parser._parse_table.states = _StatesDecodedOnUse(table["states"], table["tokens"], rules)
+    return loaded
 
 
 @cache

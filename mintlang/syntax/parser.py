@@ -162,7 +162,7 @@ def _parsed_in(dialect: Dialect, controller: Controller | None) -> RecentCache[_
     """The parsed lines of one dialect and controller, by ``_ParseKey``."""
     cache = _parsed.get((dialect, controller))
     if cache is None:
-        cache = _parsed[dialect, controller] = RecentCache(LINES_KEPT)
+        cache = _parsed[dialect, controller] = RecentCache(LINES_KEPT, holds_contents=True)
     return cache
 
 

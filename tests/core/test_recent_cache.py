@@ -102,3 +102,32 @@ def test_forgetting_lines_apart_empties_the_blocks_caches_and_keeps_what_was_the
     assert cache.get("before") == 1
     with apart(shelf):
         assert cache.get("shelved") == 2
+
+
+def test_a_cache_apart_never_turns_over() -> None:
+    cache: RecentCache[int, int] = RecentCache(size=4)
+    with apart():
+        for key in range(10):  # a text longer than a generation: the block prunes its caches itself
+            cache.put(key, key)
+        assert len(cache) == 10
+        assert cache.get(0) == 0
+    for key in range(10):
+        cache.put(key, key)
+    assert len(cache) <= 8
+
+
+def test_what_was_used_about_a_line_still_parsed_outlives_a_re_read_that_did_not_ask() -> None:
+    parses: RecentCache[str, object] = RecentCache(size=100, holds_contents=True)
+    facts: RecentCache[object, str] = RecentCache(size=100)
+    kept, edited = object(), object()  # two lines' parses: the key of what later caches hold about them
+    with apart():
+        parses.put("a = 1", kept)
+        parses.put("b = 2", edited)
+        facts.put(kept, "facts of a = 1")
+        facts.put(edited, "facts of b = 2")
+        keeping_what_it_uses(lambda: parses.get("a = 1"))  # "b = 2" was edited away
+        assert (facts.get(kept), facts.get(edited)) == ("facts of a = 1", None)
+        keeping_what_it_uses(lambda: parses.get("a = 1"))  # used since the last re-read: kept
+        keeping_what_it_uses(lambda: parses.get("a = 1"))  # not asked for since: let go
+        assert facts.get(kept) is None
+        assert parses.get("a = 1") is kept

@@ -42,18 +42,26 @@ def carry_to_v4(document: Document, controller: Controller | None) -> None:
         raise ValueError(f"a Mint v3 reading is carried over, not a {document.dialect} one")
     words = _Words(document.context.controller, controller)
     lines = [line for _, line in document.physical]
-    alike = [words.lexes_alike(line) for line in lines]
-    for line, same in zip(lines, alike, strict=True):
-        if same:
-            lexer.remember(Dialect.V4, line)
     placed = document.placed
     # A logical line's physical lines run to the next one's first: those between hold no tokens.
     bounds = [line.number - 1 for line in placed]
     bounds.append(len(lines))
+    _carry_lexed(words, lines[: bounds[0]])
     for index, line in enumerate(placed):
-        first, end = bounds[index], bounds[index + 1]
-        if all(alike[first:end]) and _parses_alike([physical.kinds for physical in lines[first:end]]):
+        if parser.knows(line.syntax.text, Dialect.V4, controller):
+            continue  # parsed as v4 already (a line above, an earlier reading of the run), lexed with it
+        physical = lines[bounds[index] : bounds[index + 1]]
+        if _carry_lexed(words, physical) and _parses_alike([each.kinds for each in physical]):
             parser.remember(line, Dialect.V4, controller)
+
+
+def _carry_lexed(words: _Words, lines: list[LexedLine]) -> bool:
+    """Put those of ``lines`` that Mint v4 lexes alike into its lexer's cache: whether all of them are."""
+    alike = [words.lexes_alike(line) for line in lines]
+    for line, same in zip(lines, alike, strict=True):
+        if same:
+            lexer.remember(Dialect.V4, line)
+    return all(alike)
 
 
 def _parses_alike(lines: list[tuple[TokenKind, ...]]) -> bool:

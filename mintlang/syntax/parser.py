@@ -166,6 +166,12 @@ def _parsed_in(dialect: Dialect, controller: Controller | None) -> RecentCache[_
     return cache
 
 
+def knows(text: str, dialect: Dialect, controller: Controller | None) -> bool:
+    """Whether the parse of the logical line ``text`` as ``dialect`` on ``controller`` is cached (``remember``
+    would take no other)."""
+    return _parsed_in(dialect, controller).get(text) is not None
+
+
 def remember(line: n.PlacedLine, dialect: Dialect, controller: Controller | None) -> None:
     """Take the syntax of ``line`` for what parsing its text as ``dialect`` on ``controller`` gives,
     unless its own parse found something (diagnostics, macros defined or expanded) or the cache holds

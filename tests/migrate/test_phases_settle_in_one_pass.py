@@ -1,7 +1,8 @@
 """The phases the engine runs once (``engine.SETTLED_IN_ONE_PASS``) reach their fixed point in
 one pass: running them again on what they wrote asks for nothing, so skipping that confirming
 pass changes no migration. Checked on every v3 corpus program (alone and with its
-configuration file), the migration corpus, and every keyword of both dialects written bare,
+configuration file), the migration corpus (with and without the optional rules, which insert
+too), and every keyword of both dialects written bare,
 assigned (an AND and an OR), read, in a condition, with axes
 and called, for a four-axis NextMove PCI and a one-axis
 MintDrive."""
@@ -14,9 +15,11 @@ import pytest
 
 from mintlang.migrate import engine, migrate
 from mintlang.migrate.model import MigrationResult, Phase
+from mintlang.migrate.rules import RULES
 from tests.migrate.helpers import every_word
 
 CORPUS = Path(__file__).parents[1] / "corpus"
+OPTIONAL = tuple(rule.id for rule in RULES if rule.optional)
 
 
 def _corpus() -> list[tuple[str, str | None]]:
@@ -59,15 +62,17 @@ def _confirmed(monkeypatch: pytest.MonkeyPatch, source: str, **options: object) 
         return migrate(source, **options)  # type: ignore[arg-type]
 
 
-def test_the_one_pass_phases_are_the_word_rewriting_ones() -> None:
-    assert frozenset({Phase.ABBREVIATIONS, Phase.RENAMES}) == engine.SETTLED_IN_ONE_PASS
+def test_the_one_pass_phases_are_the_word_rewriting_and_inserting_ones() -> None:
+    assert frozenset({Phase.ABBREVIATIONS, Phase.RENAMES, Phase.INSERTIONS}) == engine.SETTLED_IN_ONE_PASS
 
 
+@pytest.mark.parametrize("opt_in", [(), OPTIONAL], ids=["default rules", "optional rules too"])
 @pytest.mark.parametrize(("program", "configuration"), _corpus())
 def test_a_confirming_pass_changes_no_corpus_migration(
-    monkeypatch: pytest.MonkeyPatch, program: str, configuration: str | None
+    monkeypatch: pytest.MonkeyPatch, program: str, configuration: str | None, opt_in: tuple[str, ...]
 ) -> None:
-    assert migrate(program, config=configuration) == _confirmed(monkeypatch, program, config=configuration)
+    once = migrate(program, config=configuration, opt_in=opt_in)
+    assert once == _confirmed(monkeypatch, program, config=configuration, opt_in=opt_in)
 
 
 @pytest.mark.parametrize("controller", ["nextmove-pci", "mintdrive"])

@@ -16,12 +16,9 @@ from mintlang.migrate.recognise import Evidence, may_show_v4_beyond_doubt, v4_ev
 from mintlang.migrate.rules import RULES, Replace, Rule
 from mintlang.records import record
 from mintlang.semantic.units import Unit
-from mintlang.syntax.tokens import end_of_file_mark
+from mintlang.syntax.tokens import BYTE_ORDER_MARK, end_of_file_mark
 
 DEFAULT_CONTROLLER = Controller.NEXTMOVE_PCI
-# A UTF-8 file may start with a byte-order mark. The rules migrate the text after it: a
-# prologue inserted at offset 0 would otherwise push the mark into the middle of the file.
-_BOM = "\ufeff"
 
 
 class UnknownRule(ValueError):
@@ -95,7 +92,9 @@ class _Marks:
 
 
 def _marks(text: str) -> _Marks:
-    start = _BOM if text.startswith(_BOM) else ""
+    """The marks around ``text``. The rules migrate the text inside them: a prologue inserted at offset 0
+    would otherwise push a byte-order mark into the middle of the file."""
+    start = BYTE_ORDER_MARK if text.startswith(BYTE_ORDER_MARK) else ""
     body = text.removeprefix(start)
     return _Marks(start, end_of_file_mark(body))
 

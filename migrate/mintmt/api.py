@@ -14,8 +14,7 @@ from mintlang.migrate.mintmt.apply import apply
 from mintlang.migrate.mintmt.source import Source
 from mintlang.migrate.mintmt.v3 import v3_uses
 from mintlang.migrate.model import MigrationFailed, MigrationResult
-
-_BOM = "\ufeff"
+from mintlang.syntax.tokens import BYTE_ORDER_MARK
 
 # One module per kind of rewrite, each with its ID, SUMMARY and find(source); the order is the report's.
 REWRITES: tuple[ModuleType, ...] = (comments, characters, addressing, blocks, events, names)
@@ -40,10 +39,10 @@ def to_mintmt(source: str, *, config: str | None = None) -> MigrationResult:
     visible: frozenset[str] = frozenset()
     migrated_configuration = None
     if config is not None:
-        configuration = Source(config.removeprefix(_BOM))
+        configuration = Source(config.removeprefix(BYTE_ORDER_MARK))
         migrated_configuration = _migrated(configuration, config)
         visible = configuration.macros  # a program sees its configuration file's macros
-    program = Source(source.removeprefix(_BOM), visible)
+    program = Source(source.removeprefix(BYTE_ORDER_MARK), visible)
     return _result(_migrated(program, source), migrated_configuration, already=False)
 
 
@@ -51,7 +50,7 @@ def _migrated(source: Source, written: str) -> engine.FileOutcome:
     """``source`` (the text ``written`` without its byte-order mark, as the v3 -> v4 migration takes it)
     migrated, with the mark put back in front: a marker above the first line goes below it."""
     outcome = apply(source, [action for rewrite in REWRITES for action in rewrite.find(source)])
-    mark = _BOM if written.startswith(_BOM) else ""
+    mark = BYTE_ORDER_MARK if written.startswith(BYTE_ORDER_MARK) else ""
     if not mark:
         return outcome
     changes = tuple(

@@ -34,13 +34,13 @@ from mintlang.dialect import Dialect
 from mintlang.records import record
 from mintlang.syntax.moved import MovedOffsets
 from mintlang.syntax.nodes import number_value
-from mintlang.syntax.tokens import Token, TokenKind, end_of_file_mark
+from mintlang.syntax.tokens import BYTE_ORDER_MARK, Token, TokenKind, end_of_file_mark
 from mintlang.syntax.vocabulary import Vocabulary, vocabulary
 
 _K = TokenKind
 T = TypeVar("T")
 
-_SPACE = " \t\f\v\u00a0\ufeff"
+_SPACE = " \t\f\v\u00a0" + BYTE_ORDER_MARK
 _TYPOGRAPHIC_QUOTES = "\u201c\u201d\u201e\u201f\u2033"
 _TYPOGRAPHIC_APOSTROPHES = "\u2018\u2019"
 _DOUBLE = '"' + _TYPOGRAPHIC_QUOTES

@@ -14,6 +14,8 @@ from typing import NamedTuple
 # DOS editors ended a file with Ctrl-Z, their end-of-file mark (the v3 guide has array files end with one,
 # 001:1799): a run of it ending a file is no character of the program, though a tool keeps its bytes.
 _END_OF_FILE = "\x1a"
+# A UTF-8 file may start with a byte-order mark: no character of the program either, though a tool keeps it.
+BYTE_ORDER_MARK = "\ufeff"
 
 
 def end_of_file_mark(text: str) -> str:

@@ -15,8 +15,7 @@ from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.traversal import Facts
 from mintlang.keyworddb import database
 from mintlang.semantic.units import Unit
-
-_BYTE_ORDER_MARK = "\ufeff"
+from mintlang.syntax.tokens import BYTE_ORDER_MARK
 
 
 def check(facts: Facts) -> Iterator[Finding]:
@@ -37,4 +36,4 @@ def check(facts: Facts) -> Iterator[Finding]:
 
 
 def _text_before(source: str, offset: int) -> bool:
-    return bool(source[:offset].lstrip(_BYTE_ORDER_MARK).strip())
+    return bool(source[:offset].lstrip(BYTE_ORDER_MARK).strip())

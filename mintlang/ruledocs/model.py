@@ -70,10 +70,11 @@ class RuleDoc:
 
     @property
     def severity(self) -> str:
-        """What the checker reports it as: the controller's errors are errors, save a RETURN it
-        only reaches by falling into a subroutine (2010), which may be a fragment's."""
+        """What the checker reports it as: the controller's errors are errors (a RETURN the main program only
+        reaches by falling into a subroutine, which may be a fragment's, is 2010 as a warning: its page says
+        so)."""
         if isinstance(self.key, int):
-            return "warning" if self.key == 2010 else "error"
+            return "error"
         return "warning" if self.key.startswith("W") else "info"
 
 

@@ -7,7 +7,9 @@
   closers, and nothing that a block opened before it needs.
 * Main program code that runs on into the first subroutine without END:
   its RETURN then fails with error 2010 (the manual's own example, 12.4).
-  Reported at that RETURN as a warning: the file may be a fragment.
+  Reported at that RETURN as a warning: the file may be a fragment. A RETURN
+  the main program itself reaches (ending it in place of END) is error 2010
+  when it runs.
 * A subroutine without RETURN that runs on into the next one (W107). A label
   that only GOTO reaches is a place in the code around it, not a subroutine.
 * GOTO out of an open IF block or loop (W113): the block is never closed, and
@@ -323,12 +325,20 @@ class _Flow:
         elif isinstance(statement, n.Jump) and statement.word == "GOTO":
             for loop in self.loops:
                 loop.left = True
-        elif self.falling_from_main and isinstance(statement, n.BlockWord) and statement.word == "RETURN":
+        elif isinstance(statement, n.BlockWord) and statement.word == "RETURN":
+            self._return(statement)
+
+    def _return(self, statement: n.BlockWord) -> None:
+        """A RETURN of the main program: no GOSUB called it (2010, 000:18965-18978)."""
+        span = self.line.span(statement.span)
+        if self.falling_from_main:
             into = self.subroutine.text if self.subroutine else ""
             detail = f"the main program has no END and runs on into #{into}, so this RETURN has no GOSUB to return to"
-            span = self.line.span(statement.span)
             self._report(mint_error(2010, span, detail, severity=Severity.WARNING))
             self.falling_from_main = False
+        elif self.subroutine is None and self.reachable and self.around is None:
+            detail = "this RETURN is in the main program, which no GOSUB called: end the main program with END"
+            self._report(mint_error(2010, span, detail))
 
     def _closes_main_loop(self, statement: n.Statement) -> bool:
         """A lone END or RETURN straight after an endless loop: the manual's program structure."""

@@ -80,16 +80,14 @@ GROUP = Group(
         ),
         RuleDoc(
             2010,
-            catches="A main program without END that runs on into the first subroutine: the RETURN at the "
-            "end of that subroutine is then reached with no GOSUB to return to. Reported as a warning at "
-            "that RETURN, since a file may be a fragment of a larger program.",
-            why="When the main program finishes, the controller runs the subroutine below it as if it "
-            "were called (an #ONERROR handler runs with no error), then stops with error 2010 at its RETURN.",
+            catches="A RETURN the main program reaches, with no GOSUB to return to: one written in the main "
+            "program in place of END (an error), or the one ending the first subroutine when a main program "
+            "without END runs on into it (a warning, since a file may be a fragment of a larger program).",
+            why="The controller stops with error 2010 at that RETURN. When the main program runs on, it first "
+            "runs the subroutine below it as if it were called (an #ONERROR handler runs with no error).",
             example=Example(
-                before='DIM running = 1\nWHILE running\n  running = IN.0\nENDW\nPRINT "stopped"\n'
-                "#ONERROR\n  PRINT ERR\nRETURN\n",
-                after='DIM running = 1\nWHILE running\n  running = IN.0\nENDW\nPRINT "stopped"\nEND\n'
-                "#ONERROR\n  PRINT ERR\nRETURN\n",
+                before='DIM running = 1\nWHILE running\n  running = IN.0\nENDW\nPRINT "stopped"\nRETURN\n',
+                after='DIM running = 1\nWHILE running\n  running = IN.0\nENDW\nPRINT "stopped"\nEND\n',
             ),
             manual=("v4:18965", "v4:1841"),
             fix="END belongs where the main program should stop.",

@@ -89,9 +89,27 @@ def _fail(message: str) -> NoReturn:
     sys.exit(_NOT_DONE)
 
 
+def _explain(context: click.Context, _parameter: click.Parameter, code: str | None) -> None:
+    """``--explain CODE``: what ``mint rule CODE`` prints, for a ruff user's hands, and nothing checked."""
+    if code is None or context.resilient_parsing:
+        return
+    from mintlang.cli.rule import rule  # noqa: PLC0415 - mint rule's command is loaded only when asked for
+
+    context.invoke(rule, codes=(code,), every=False, output_format="text")
+    context.exit()
+
+
 @click.command(context_settings=HELP_OPTIONS, epilog=EXIT_STATUS)
 @click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path))
 @version_option("mint check")
+@click.option(
+    "--explain",
+    metavar="CODE",
+    is_eager=True,
+    expose_value=False,
+    callback=_explain,
+    help="Explain a code (E2016, W103) as mint rule does, and check nothing.",
+)
 @click.option("--dialect", type=click.Choice([d.value for d in Dialect]), default="v4", show_default=True)
 @controller_option("The controller the programs run on.")
 @click.option(

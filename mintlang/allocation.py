@@ -82,15 +82,22 @@ def kept_without_collector(function: Callable[P, R]) -> Callable[P, R]:
 
     @wraps(function)
     def wrapper(*args: P.args, **kwargs: P.kwargs) -> R:
-        with collector_paused():
-            try:
-                return function(*args, **kwargs)
-            finally:
-                gc.freeze()
-                if not _Holding.frozen:
-                    gc.unfreeze()
+        with collector_paused_and_kept():
+            return function(*args, **kwargs)
 
     return wrapper
+
+
+@contextmanager
+def collector_paused_and_kept() -> Iterator[None]:
+    """The block form of ``kept_without_collector``: for imports, say, whose modules live as long as the process."""
+    with collector_paused():
+        try:
+            yield
+        finally:
+            gc.freeze()
+            if not _Holding.frozen:
+                gc.unfreeze()
 
 
 @cache  # once per process

@@ -14,7 +14,7 @@ from typing import Any
 
 import click
 
-from mintlang.allocation import no_collection_at_exit
+from mintlang.allocation import collector_paused_and_kept, no_collection_at_exit
 from mintlang.cli.options import HELP_OPTIONS, version_option
 
 _CORE_COMMANDS = {"check": "mintlang.cli.check", "rule": "mintlang.cli.rule"}
@@ -40,7 +40,8 @@ class _Commands(click.Group):
     def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
         module = _CORE_COMMANDS.get(cmd_name)
         if module is not None:
-            command: click.Command = getattr(import_module(module), cmd_name)
+            with collector_paused_and_kept():  # its modules live as long as the process: no collection walks them
+                command: click.Command = getattr(import_module(module), cmd_name)
             return command
         return self._tools().get(cmd_name)
 

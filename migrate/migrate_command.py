@@ -23,7 +23,7 @@ from mintlang.cli.terminal import console, destination, reader_may_leave, refuse
 from mintlang.diagnostics import split_lines
 from mintlang.migrate import leftovers, mintmt, verifying
 from mintlang.migrate.api import UnknownRule, rules, select
-from mintlang.migrate.applications import Migrated, UsageError, read
+from mintlang.migrate.applications import Application, Migrated, UsageError, read
 from mintlang.migrate.citations import cite
 from mintlang.migrate.report import render_text, report
 from mintlang.migrate.verification import Verdict
@@ -91,8 +91,8 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         select(only or None, skip, opt_in)
         found = read(paths, config)
         applications, unread = found.applications, found.unread
-        if mode == "stdout" and sum(len(application.paths()) for application in applications) > 1:
-            raise UsageError("--stdout prints one file: name one program or one configuration file")
+        if mode == "stdout":
+            _refuse_more_than_one(applications)
     except (UsageError, UnknownRule) as error:
         _fail(str(error))
     sources = [path for application in applications for path in application.paths()]
@@ -119,6 +119,19 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         click.echo(f"mint-migrate: {problem}", err=True)
     status = _status(items, mode, fail_on, problems)
     sys.exit(0 if status == GATE_FAILED and exit_zero else status)
+
+
+def _refuse_more_than_one(applications: list[Application]) -> None:
+    """``--stdout`` prints one file; a program named alone that pairs with a configuration file is two."""
+    if sum(len(application.paths()) for application in applications) <= 1:
+        return
+    if len(applications) == 1 and (pair := applications[0]).program is not None and pair.configuration is not None:
+        program, configuration = pair.program.path, pair.configuration.path
+        raise UsageError(
+            f"--stdout prints one file, and {program} is migrated together with its configuration file "
+            f"{configuration} (the controller runs them together): see both with --diff"
+        )
+    raise UsageError("--stdout prints one file: name one program or one configuration file")
 
 
 def _list_rewrites(console: Console) -> None:

@@ -16,8 +16,9 @@ is allowed for is what differs by design:
   a written position or a computed one is off by up to a 256th of a user unit
   (V3-2, X-NUM), which is SCALE/256 counts; the encoder reads whole counts.
 * **Velocity, 1% + 1000 counts/s.** ``VEL`` is measured from whole encoder
-  counts each 1 ms tick, so it moves in steps of 1000 counts/s; 1% covers rates
-  v3 held in 256ths.
+  counts over a 2 ms sample (AX-4), so it moves in steps of 500 counts/s, and
+  two runs a count apart at each end of the sample read up to 1000 apart; 1%
+  covers rates v3 held in 256ths.
 * **Printed numbers, 0.001 + 2/256 + 2^-23 of the value.** v3 prints three
   decimals cut, v4 four (V3-4, PR-1, X-PRINT); v3 rounds a written number to
   the nearest 256th and cuts a product or quotient to one (V3-2); v4 numbers are
@@ -34,7 +35,7 @@ TIME_MS = 2
 COUNTS = 1.0
 STEPS = 256  # v3 fraction resolution (V3-2)
 VELOCITY_SHARE = 0.01
-VELOCITY_COUNTS = 1000.0  # one count in one 1 ms tick
+VELOCITY_COUNTS = 1000.0  # a count at each end of VEL's 2 ms sample
 PRINTED_DECIMALS = 0.001
 PRINTED_STEPS = 2 / STEPS
 PRINTED_SHARE = 2.0**-23

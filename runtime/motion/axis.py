@@ -327,8 +327,8 @@ class Axis:
         """The next tick the simulator must process for this axis's sake (readers use ``next_event``).
 
         A move that ends with nothing triggered behind it can be completed at any later tick (its
-        end state is a function of time, and ``complete`` dates it back), and the settling tick after
-        it only changes what VEL and IDLE read: those ticks matter only to a program that reads the
+        end state is a function of time, and ``complete`` dates it back), and the settling ticks after
+        it (VEL's 2 ms sample) only change what VEL and IDLE read: those ticks matter only to a program that reads the
         axis, whose reads ask for them. Limits, error and stop inputs need the exact tick.
         """
         move = self.move

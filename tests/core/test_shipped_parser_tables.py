@@ -49,6 +49,16 @@ def test_the_shipped_parser_parses_the_corpus_as_lark_built_from_the_grammar(dia
         assert _outcome(shipped, kinds) == _outcome(built, kinds), kinds
 
 
+def test_the_shipped_parser_decodes_a_state_of_its_table_when_a_parse_first_visits_it() -> None:
+    shipped = grammar.shipped_tables(Dialect.V4)["parser"]
+    parser = grammar.load_parser(shipped)
+    states = parser.parser.parser._parse_table.states
+    assert dict(states) == {}
+    kinds = (TokenKind.KEYWORD, TokenKind.EQUAL, TokenKind.NUMBER)
+    assert _outcome(parser, kinds) == _outcome(build_parser(Dialect.V4), kinds)
+    assert 0 < len(states) < len(shipped["data"]["parser"]["parser"]["states"])
+
+
 def test_a_grammar_edited_since_the_tables_were_written_is_parsed_with_tables_computed_now(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:

@@ -146,7 +146,8 @@ def read(paths: tuple[Path, ...], config: Path | None) -> Found:
             raise UsageError(unread[0].line)
         return Found([_application(found.files[0] if found.files else None, config)], [])
     if not found.files:
-        raise UsageError(unread[0].line if unread else "no .mnt or .cfg files to migrate")
+        named = ", ".join(str(path) for path in paths)
+        raise UsageError(unread[0].line if unread else f"no .mnt or .cfg files to migrate in {named}")
     partners = _partners(found.files)
     claimed = {_identity(configuration) for configuration in partners.values()}
     applications = [

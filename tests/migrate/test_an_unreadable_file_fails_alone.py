@@ -141,3 +141,10 @@ def test_the_text_report_counts_a_missing_path_as_failed(tmp_path: Path) -> None
     result = run("--check", tmp_path / "a.mnt", tmp_path / "typo.mnt")
     assert result.exit_code == 2
     assert "2 files: 1 changed, 0 unchanged, 1 failed;" in result.stdout
+
+
+def test_a_folder_without_programs_is_named(tmp_path: Path) -> None:
+    (tmp_path / "notes.txt").write_text("not a program\n")
+    result = run(tmp_path)
+    assert result.exit_code == 2
+    assert problems(result) == [f"mint-migrate: no .mnt or .cfg files to migrate in {tmp_path}"]

@@ -15,8 +15,8 @@ lines that only look alike.
 
 A batch job that reads many versions of one text (a migration re-reads the program after each
 editing pass) keeps them from piling up with ``apart`` and ``keeping_what_it_uses``. Its caches do
-not turn over: it prunes them itself, and a turn in the middle of a text longer than a generation
-dropped the lines it had yet to read again (a rebuilt 57,000-line program parsed half its lines afresh).
+not turn over: it prunes them itself, and in a text of more distinct lines than a generation holds a
+turn in the middle of a re-read would drop the lines it had yet to read again.
 """
 
 from __future__ import annotations

@@ -33,6 +33,7 @@ OWN_CODES: dict[str, str] = {
     "W117": "Unused suppression",
     "W118": "USING digits beyond the controller's limit",
     "W119": "Reverse software limit not below the forward one",
+    "W120": "File not checked",
     "I201": "Faster dot syntax",
 }
 

@@ -20,6 +20,7 @@ from mintlang.diagnostics import LineIndex, Position
 from mintlang.records import record
 
 _ENCODINGS = ("utf-8", "cp1252", "latin-1")
+NOT_TEXT = "not Mint text (a NUL byte)"  # why a file with a NUL byte is not read as a program
 _MARKED = ("utf-8-sig", *_ENCODINGS)  # utf-8-sig drops the mark when it decodes and writes it when it encodes
 
 
@@ -38,7 +39,7 @@ class SourceFile:
         position = self.nul()
         if position is None:
             return None
-        return f"{self.path}:{position.line}:{position.column}: not Mint text (a NUL byte)"
+        return f"{self.path}:{position.line}:{position.column}: {NOT_TEXT}"
 
     def nul(self) -> Position | None:
         """Where the first NUL byte is, or None.

@@ -57,7 +57,7 @@ class Analysis:
     found: Found
 
 
-def _selected(code: str, select: Iterable[str] | None, ignore: Iterable[str]) -> bool:
+def code_selected(code: str, select: Iterable[str] | None, ignore: Iterable[str]) -> bool:
     """``--select``/``--ignore`` match a code or a prefix of it (E2, W1, E3001)."""
     if any(code.startswith(prefix) for prefix in ignore):
         return False
@@ -199,7 +199,7 @@ def analyse(
     ignore = tuple(ignore)
 
     def selected(code: str) -> bool:
-        return _selected(code, select, ignore)
+        return code_selected(code, select, ignore)
 
     per_unit: dict[Unit, Sequence[Diagnostic]] = {Unit.CONFIGURATION: ()}
     for unit, document in model.documents():

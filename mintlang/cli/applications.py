@@ -20,7 +20,7 @@ from pathlib import Path
 from mintlang import check_application
 from mintlang.analysis.suppression import UNUSED_SUPPRESSION
 from mintlang.cli.checking import Checked, CheckOptions, Job
-from mintlang.cli.files import cannot_read, is_configuration
+from mintlang.cli.files import Unchecked, is_configuration, not_text, unread
 from mintlang.cli.report import FileReport
 from mintlang.diagnostics import Diagnostic
 from mintlang.records import record
@@ -52,7 +52,7 @@ class Plan:
     """The jobs of a run, the configuration files their programs see, and the problems found planning them."""
 
     jobs: list[Job] = field(default_factory=list)
-    problems: list[str] = field(default_factory=list)
+    problems: list[Unchecked] = field(default_factory=list)
     hidden: set[int] = field(default_factory=set)  # jobs run for a configuration named alone: their report is not
     _configurations: dict[Path, _Configuration] = field(default_factory=dict)
     _failed: set[Path] = field(default_factory=set)
@@ -65,7 +65,8 @@ class Plan:
             return
         configuration = self._configuration(other, settings) if other is not None else None
         if other is not None and configuration is None:
-            self.problems.append(f"{path}: not checked, as its configuration file {other} could not be read")
+            reason = f"not checked, as its configuration file {other} could not be read"
+            self.problems.append(Unchecked(str(path), reason, f"{path}: {reason}"))
             return
         self.jobs.append(Job(path, options_of(settings), configuration.source.text if configuration else None, source))
         if configuration is not None:
@@ -102,13 +103,13 @@ class Plan:
             try:
                 source = read_source(path)
             except OSError as error:
-                return self._fail(key, cannot_read(error))
-            if (binary := source.binary()) is not None:
-                return self._fail(key, f"{binary}: not checked")
+                return self._fail(key, unread(error))
+            if (binary := not_text(source)) is not None:
+                return self._fail(key, binary)
             self._configurations[key] = _Configuration(source, options_of(settings), place=len(self.jobs))
         return self._configurations[key]
 
-    def _fail(self, key: Path, problem: str) -> None:
+    def _fail(self, key: Path, problem: Unchecked) -> None:
         self._failed.add(key)
         self.problems.append(problem)
 

@@ -3,7 +3,8 @@
 Files are checked on all cores (``-j``), and reported in the order they were
 found whatever the number of processes. A file that cannot be read (a link
 loop, a pipe, a file deleted meanwhile) is reported on standard error with its
-path, and the others are still checked and reported.
+path, and the others are still checked and reported; a machine-readable report
+also lists it as a finding (W120), as ruff lists E902.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ import click
 
 from mintlang.cli.applications import plan
 from mintlang.cli.checking import Checked, check_file
-from mintlang.cli.files import cannot_read, find, program_as_own_configuration
+from mintlang.cli.files import Unchecked, cannot_read, find, program_as_own_configuration, unread
 from mintlang.cli.fixing import Fixing, Outcome, apply, fix_options, fixable_summary, fixed_summary, marked
 from mintlang.cli.options import (
     HELP_OPTIONS,
@@ -43,8 +44,8 @@ from mintlang.cli.terminal import (
     refuse_overwriting,
     write_in_pieces,
 )
-from mintlang.codes import selector
-from mintlang.diagnostics import Severity
+from mintlang.codes import own, selector
+from mintlang.diagnostics import Severity, Span
 from mintlang.dialect import Dialect
 from mintlang.settings import Overrides, SettingsError, settings_for
 from mintlang.source import SourceFile, decode, read_source
@@ -53,6 +54,7 @@ _FOUND_ERRORS = 1
 _NOT_DONE = 2
 _INTERRUPTED = 130  # 128 + SIGINT, as a shell reports a command Ctrl-C ended
 _STDIN = Path("-")
+NOT_CHECKED = "W120"
 
 SELECT_HELP = (
     "Only these codes or code prefixes; comma-separated or repeated. Default: E,W (the hints need --select I)."
@@ -90,12 +92,13 @@ def _fail(message: str) -> NoReturn:
 
 
 def _explain(context: click.Context, _parameter: click.Parameter, code: str | None) -> None:
-    """``--explain CODE``: what ``mint rule CODE`` prints, for a ruff user's hands, and nothing checked."""
+    """``--explain CODE``: what ``mint rule CODE`` prints, for a ruff user's hands, and nothing checked; an
+    unknown code is an error of ``mint check``, the command the user ran."""
     if code is None or context.resilient_parsing:
         return
-    from mintlang.cli.rule import rule  # noqa: PLC0415 - mint rule's command is loaded only when asked for
+    from mintlang.cli.rule import explain  # noqa: PLC0415 - mint rule's command is loaded only when asked for
 
-    context.invoke(rule, codes=(code,), every=False, output_format="text")
+    explain(code, "mint check")
     context.exit()
 
 
@@ -219,7 +222,8 @@ def check(
     except KeyboardInterrupt:  # click would say 'Aborted!' and exit with 1, which means errors found
         click.echo("mint check: interrupted", err=True)
         sys.exit(_INTERRUPTED)
-    problems = [cannot_read(e) for e in found.unreadable] + planned.problems + [r.problem for r in results if r.problem]
+    unchecked = [unread(e) for e in found.unreadable] + planned.problems + [r.problem for r in results if r.problem]
+    problems = [item.said for item in unchecked]
     fixed = [result.fixed for result in results if result.fixed is not None]
     outcome = None
     if diff:  # the changes instead of the report, as ruff's --diff
@@ -231,9 +235,10 @@ def check(
         unwritten = outcome.unwritten  # a fix not written leaves the file's findings where they were
         results = [r.unfixed() if r.fixed and r.fixed.original.path in unwritten else r for r in results]
     reports = planned.reports(results)
-    if reports and not diff:
+    entries = _entries(unchecked, layer) if output_format != "text" else []
+    if (reports or entries) and not diff:
         with destination(output_file, _fail) as stream:
-            _write(reports, stream, output_format, statistics=statistics, quiet=quiet, color=color)
+            _write(reports + entries, stream, output_format, statistics=statistics, quiet=quiet, color=color)
             if output_format == "text" and not quiet and not statistics:
                 _write_fix_summary(reports, outcome, stream)
     if outcome is not None and not quiet:
@@ -256,6 +261,25 @@ def check(
     else:
         failed = any(d.severity is Severity.ERROR for report in reports for d in report.diagnostics)
     sys.exit(_NOT_DONE if problems else _FOUND_ERRORS if failed and not exit_zero else 0)
+
+
+def _entries(unchecked: list[Unchecked], layer: Overrides) -> list[FileReport]:
+    """The paths not checked, each a finding of its own (W120) for a machine-readable report, as ruff reports
+    E902: where the path's settings leave W120 out it is said on standard error only, as ruff then warns.
+    No suppression comment reaches it: the file was not read as a program."""
+    from mintlang.analysis.analyser import code_selected  # noqa: PLC0415 - only a run with a path not checked needs it
+
+    entries = []
+    for item in unchecked:
+        try:
+            settings = settings_for(Path(item.path), layer)
+        except SettingsError as error:
+            settings_failed("mint check", error)
+        if code_selected(NOT_CHECKED, settings.selected, settings.ignored):
+            source = "\n" * (item.line - 1) + " " * (item.column - 1)  # blank text placing the position
+            place = Span(len(source), len(source))
+            entries.append(FileReport(item.path, source, (own(NOT_CHECKED, place, item.reason),)))
+    return entries
 
 
 def _write_fix_summary(reports: list[FileReport], outcome: Outcome | None, stream: IO[str]) -> None:

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 from mintlang import check_application
 from mintlang.allocation import kept_without_collector
-from mintlang.cli.files import cannot_read, is_configuration
+from mintlang.cli.files import Unchecked, is_configuration, not_text, unread
 from mintlang.cli.report import FileReport
 from mintlang.detection import dialect_hint
 from mintlang.diagnostics import Diagnostic
@@ -81,7 +81,7 @@ class Checked:
 
     report: FileReport | None
     configuration: tuple[Diagnostic, ...] = field(default=())
-    problem: str | None = None
+    problem: Unchecked | None = None
     fixed: FileFixed | None = None  # the program as read and as fixed, when fixing
     as_read: FileReport | None = None  # when fixing: the report of the text as read, for a fix not written
     hint: str | None = None  # the program looks like MintMT, read as v4 by default (``dialect_hint``)
@@ -100,10 +100,9 @@ def check_file(job: Job) -> Checked:
     try:
         source = job.source or read_source(job.path)
     except OSError as error:
-        return Checked(None, problem=cannot_read(error))
-    binary = source.binary()
-    if binary is not None:
-        return Checked(None, problem=f"{binary}: not checked")
+        return Checked(None, problem=unread(error))
+    if (binary := not_text(source)) is not None:
+        return Checked(None, problem=binary)
     options = job.options
     arguments = {"dialect": options.dialect, "controller": options.controller, "ignore": options.ignore}
     if is_configuration(job.path):

@@ -13,6 +13,7 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from mintlang.records import record
+from mintlang.source import NOT_TEXT, SourceFile
 
 PROGRAM_SUFFIXES = frozenset({".mnt"})
 CONFIGURATION_SUFFIXES = frozenset({".cfg"})
@@ -70,6 +71,33 @@ def cannot_read(error: OSError) -> str:
     if isinstance(error, FileNotFoundError):
         return f"no such file or directory: {error.filename or error.args[0]}"
     return f"cannot read {error.filename}: {error.strerror or error}"
+
+
+@record
+class Unchecked:
+    """A path that was not checked, and why: said on standard error (``said``), and for ruff's E902 users an
+    entry of the machine-readable reports, at 1:1 or where the problem is (a NUL byte)."""
+
+    path: str
+    reason: str
+    said: str
+    line: int = 1
+    column: int = 1
+
+
+def unread(error: OSError) -> Unchecked:
+    """A path that could not be read (or looked at)."""
+    path = str(error.filename or error.args[0])
+    return Unchecked(path, error.strerror or str(error), cannot_read(error))
+
+
+def not_text(source: SourceFile) -> Unchecked | None:
+    """A file read but not Mint text (a NUL byte), placed at its first NUL byte; None for text."""
+    position = source.nul()
+    if position is None:
+        return None
+    said = f"{source.binary()}: not checked"
+    return Unchecked(str(source.path), NOT_TEXT, said, position.line, position.column)
 
 
 def is_configuration(path: Path) -> bool:

@@ -24,7 +24,8 @@ _USAGE_ERROR = 2
 # they cost a third of mint's start-up, which every other command would pay.
 
 
-def _documented(code: str) -> RuleDoc:
+def _documented(code: str, command: str) -> RuleDoc:
+    """The documentation of ``code``; an unknown code ends ``command`` (the one the user ran) with exit 2."""
     from mintlang.analysis.suggestions import closest, did_you_mean  # noqa: PLC0415 - see above
     from mintlang.ruledocs import find, rules  # noqa: PLC0415
 
@@ -33,7 +34,7 @@ def _documented(code: str) -> RuleDoc:
         return found
     meant = closest(code.strip().upper(), [rule.code for rule in rules()], likeness=0.6)
     hint = f" ({did_you_mean(meant)})" if meant is not None else " (mint rule --all lists them)"
-    click.echo(f"mint rule: '{code}' is not a code the checker reports{hint}", err=True)
+    click.echo(f"{command}: '{code}' is not a code the checker reports{hint}", err=True)
     sys.exit(_USAGE_ERROR)
 
 
@@ -47,15 +48,26 @@ def rule(codes: tuple[str, ...], every: bool, output_format: str) -> None:
     the guides' sections and its fix."""
     if not codes and not every:
         raise click.UsageError("name a code (mint rule E2016) or give --all")
-    from mintlang.ruledocs import group_of, rules  # noqa: PLC0415 - see above
+    from mintlang.ruledocs import rules  # noqa: PLC0415 - see above
+
+    chosen = rules() if every else tuple(_documented(code, "mint rule") for code in codes)
+    _show(chosen, output_format, single=len(chosen) == 1 and not every)
+
+
+def explain(code: str, command: str) -> None:
+    """What ``mint rule CODE`` prints, for another command (``mint check --explain``) that names itself in an error."""
+    _show((_documented(code, command),), "text", single=True)
+
+
+def _show(chosen: tuple[RuleDoc, ...], output_format: str, *, single: bool) -> None:
+    """The pages of ``chosen`` (Markdown, formatted on a terminal) or their JSON records; one alone unlisted."""
+    from mintlang.ruledocs import group_of  # noqa: PLC0415 - see above
     from mintlang.ruledocs.links import configured_base, rule_url  # noqa: PLC0415
     from mintlang.ruledocs.render import markdown, record  # noqa: PLC0415
 
-    chosen = rules() if every else tuple(_documented(code) for code in codes)
     if output_format == "json":
         base = configured_base()
         records = [record(rule, group_of(rule).name, rule_url(rule.code, base)) for rule in chosen]
-        single = len(records) == 1 and not every
         click.echo(json.dumps(records[0] if single else records, indent=2, ensure_ascii=False))
         return
     pages = [markdown(rule, group_of(rule).name) for rule in chosen]

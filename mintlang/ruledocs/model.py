@@ -46,13 +46,14 @@ class RuleDoc:
 
     ``key`` is the controller's error number (an int, however the code spells it) or the
     toolchain's own code (``"W103"``); ``manual`` cites the guides by line of the project's
-    text extractions (``"v4:18920"``), shown to readers as sections.
+    text extractions (``"v4:18920"``), shown to readers as sections. A code about a file rather
+    than its text (W120, a file not checked) has no example program and nothing in the guides.
     """
 
     key: int | str
     catches: str
     why: str
-    example: Example
+    example: Example | None
     manual: tuple[str, ...]
     fix: str
     safety: FixSafety

@@ -38,6 +38,20 @@ def _shown(text: str) -> str:
     return "\n".join([*head, f"⋮ ({len(lines) - len(head) - len(tail)} more lines like these)", *tail])
 
 
+def _example(example: Example | None, code: str) -> list[str]:
+    """The example section of a page: the text reported and the text not; none for a code about a file."""
+    if example is None:
+        return []
+    return [
+        "## Example",
+        *([context] if (context := _context(example)) else []),
+        f"Reported as {code}:",
+        f"```mint\n{_shown(example.before)}\n```",
+        "Not reported:",
+        f"```mint\n{_shown(example.after)}\n```",
+    ]
+
+
 def _context(example: Example) -> str:
     checked = []
     if example.controller is not None:
@@ -51,7 +65,7 @@ def _context(example: Example) -> str:
 
 def markdown(rule: RuleDoc, group: str) -> str:
     """The page of ``rule`` (in ``group``)."""
-    example = rule.example
+    cited = sections(rule)
     parts = [
         f"# {rule.code}: {rule.title}",
         f"*{rule.severity.capitalize()}* · {group}",
@@ -59,16 +73,10 @@ def markdown(rule: RuleDoc, group: str) -> str:
         rule.catches,
         "## Why it matters",
         rule.why,
-        "## Example",
-        *([context] if (context := _context(example)) else []),
-        f"Reported as {rule.code}:",
-        f"```mint\n{_shown(example.before)}\n```",
-        "Not reported:",
-        f"```mint\n{_shown(example.after)}\n```",
+        *_example(rule.example, rule.code),
         "## Fix",
         *([rule.fix, _SAFETY[rule.safety]] if rule.safety is not FixSafety.NONE else [f"No automatic fix. {rule.fix}"]),
-        "## In the manual",
-        "\n".join(f"- {where}" for where in sections(rule)),
+        *(["## In the manual", "\n".join(f"- {where}" for where in cited)] if cited else []),
     ]
     return "\n\n".join(parts) + "\n"
 
@@ -83,7 +91,9 @@ def record(rule: RuleDoc, group: str, url: str | None) -> dict[str, object]:
         "group": group,
         "catches": rule.catches,
         "why": rule.why,
-        "example": {
+        "example": None
+        if example is None
+        else {
             "before": example.before,
             "after": example.after,
             "controller": example.controller,

@@ -37,3 +37,8 @@ def test_an_unknown_code_is_a_usage_error_with_a_suggestion() -> None:
     explained = mint_check("--explain", "2010")
     assert explained.exit_code == 2
     assert "did you mean 'E2010'?" in explained.stderr
+
+
+def test_an_unknown_code_is_said_by_the_command_the_user_ran() -> None:
+    assert mint_check("--explain", "2010").stderr.startswith("mint check: '2010' is not a code")
+    assert CliRunner().invoke(main, ["rule", "2010"]).stderr.startswith("mint rule: '2010' is not a code")

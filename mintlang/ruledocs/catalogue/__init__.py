@@ -2,7 +2,17 @@
 
 from __future__ import annotations
 
-from mintlang.ruledocs.catalogue import addressing, arithmetic, flow, keywords, limits, names, suppression, syntax
+from mintlang.ruledocs.catalogue import (
+    addressing,
+    arithmetic,
+    files,
+    flow,
+    keywords,
+    limits,
+    names,
+    suppression,
+    syntax,
+)
 from mintlang.ruledocs.model import Group
 
 GROUPS: tuple[Group, ...] = (
@@ -14,4 +24,5 @@ GROUPS: tuple[Group, ...] = (
     arithmetic.GROUP,
     limits.GROUP,
     suppression.GROUP,
+    files.GROUP,
 )

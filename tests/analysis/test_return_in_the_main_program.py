@@ -47,3 +47,20 @@ def test_it_is_raised_when_the_line_runs_and_says_to_end_with_end() -> None:
 )
 def test_a_subroutines_return_is_fine(source: str) -> None:
     assert placed_codes(source) == []
+
+
+@pytest.mark.parametrize(
+    "source",
+    [
+        # a subroutine ends through a label after END: the RETURN there returns to its GOSUB
+        "GOSUB s\nEND\n#back\nPRINT 1\nRETURN\n#s\nPRINT 2\nGOTO back\n",
+        # a shared exit the error handler jumps to, after the main program's endless loop
+        "LOOP\nPRINT 1\nENDL\n#common\nPRINT 2\nRETURN\n#ONERROR\nGOTO common\n",
+    ],
+)
+def test_a_return_after_the_main_program_stopped_that_a_subroutine_jumps_to_is_fine(source: str) -> None:
+    assert placed_codes(source) == []
+
+
+def test_a_label_after_a_stop_that_the_main_program_jumps_to_is_still_the_main_program() -> None:
+    assert placed_codes("DIM a\nIF a THEN GOTO tail\nEND\n#tail\nRETURN\n") == [("E2010", 5, 1)]

@@ -200,6 +200,11 @@ class _Flow:
         self.after_endless_loop = False  # unreachable only because an endless loop just closed
         self.running = False  # some statement has run since the last entry point
         self.subroutine: n.Name | None = None  # None while in the main program
+        # Whether the code being followed is the main program's: after a stop, code that a GOTO's label reaches
+        # is the main program's only when the main program jumps there; reached from a subroutine or a handler
+        # (#ONERROR .. GOTO common), its RETURN is fine.
+        self.main_from_the_top = True
+        self.main_gotos: set[str] = set()  # the labels the main program jumps to
         self.falling_from_main = False
         self.loops: list[_Loop] = []
         self.ifs: list[_If] = []
@@ -240,6 +245,7 @@ class _Flow:
 
     def _entry(self, label: n.Name) -> None:
         if label.identity not in self.subroutines:  # a GOTO target: the same routine goes on
+            self.main_from_the_top = (self.main_from_the_top and self.reachable) or label.identity in self.main_gotos
             self.reachable, self.reported = True, False
             return
         if self.reachable and self.running:
@@ -325,6 +331,8 @@ class _Flow:
         elif isinstance(statement, n.Jump) and statement.word == "GOTO":
             for loop in self.loops:
                 loop.left = True
+            if self.subroutine is None and self.main_from_the_top:
+                self.main_gotos.add(statement.label.identity)
         elif isinstance(statement, n.BlockWord) and statement.word == "RETURN":
             self._return(statement)
 
@@ -336,7 +344,7 @@ class _Flow:
             detail = f"the main program has no END and runs on into #{into}, so this RETURN has no GOSUB to return to"
             self._report(mint_error(2010, span, detail, severity=Severity.WARNING))
             self.falling_from_main = False
-        elif self.subroutine is None and self.reachable and self.around is None:
+        elif self.subroutine is None and self.main_from_the_top and self.reachable and self.around is None:
             detail = "this RETURN is in the main program, which no GOSUB called: end the main program with END"
             self._report(mint_error(2010, span, detail))
 

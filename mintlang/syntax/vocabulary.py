@@ -53,8 +53,11 @@ class Vocabulary:
     def quoted(self, word: str) -> str:
         """``word`` quoted for a message that calls it Mint's own, saying which keyword an abbreviation
         stands for: a user who writes ``DIM spd`` has no reason to know that SPD is SPEEDDEMAND."""
-        name = self.canonical.get(word.upper())
-        return f"'{word}' (short for {name})" if name is not None and name != word.upper() else f"'{word}'"
+        upper = word.upper()
+        name = self.canonical.get(upper)
+        if name is None and (split := self.split_channel(upper)) is not None:
+            name = f"{split[0]}{split[1]}"  # OT2: output 2, OUT2
+        return f"'{word}' (short for {name})" if name is not None and name != upper else f"'{word}'"
 
     def keyword_name(self, word: str) -> str | None:
         """Full keyword name for a spelling, abbreviation or channel-suffixed form."""
@@ -98,24 +101,21 @@ def vocabulary(dialect: Dialect, controller: Controller | None = None) -> Vocabu
 
     indices: dict[str, int] = {}
     if dialect.modern:
-        keywords = db.keywords_of(dialect)
-        for keyword in keywords.values():
-            if keyword.kind is KeywordKind.EVENT:
-                continue
-            kind = _kind_of(keyword.name, keyword.kind, bool(keyword.parameters))
-            add(keyword.name, keyword.name, kind)
-            if keyword.channel_suffix:
-                suffixed.add(keyword.name)
-            if keyword.indices:
-                indices[keyword.name] = len(keyword.indices)
-        for keyword in keywords.values():
-            if keyword.kind is not KeywordKind.EVENT:
-                kind = _kind_of(keyword.name, keyword.kind, bool(keyword.parameters))
-                for abbreviation in keyword.abbreviations:
-                    if db.lookup(abbreviation, controller) is keyword:  # a shared one goes to one keyword
-                        add(abbreviation, keyword.name, kind)
-                        if keyword.channel_suffix:  # an abbreviation stands for the name: OT2 is OUT2
-                            suffixed.add(abbreviation.upper())
+        # Spellings, not keywords: building every keyword's record was a tenth of a one-line check.
+        spellings = [spelling for spelling in db.spellings_of(dialect) if spelling.kind is not KeywordKind.EVENT]
+        kinds = [_kind_of(spelling.name, spelling.kind, spelling.takes_arguments) for spelling in spellings]
+        for spelling, kind in zip(spellings, kinds, strict=True):
+            add(spelling.name, spelling.name, kind)
+            if spelling.channel_suffix:
+                suffixed.add(spelling.name)
+            if spelling.indices:
+                indices[spelling.name] = spelling.indices
+        for spelling, kind in zip(spellings, kinds, strict=True):
+            for abbreviation in spelling.abbreviations:
+                if db.owner(abbreviation, controller) == spelling.name:  # a shared one goes to one keyword
+                    add(abbreviation, spelling.name, kind)
+                    if spelling.channel_suffix:  # an abbreviation stands for the name: OT2 is OUT2
+                        suffixed.add(abbreviation.upper())
         constants = frozenset(db.constants_of(dialect))
         if dialect is Dialect.MINTMT:
             for word in _MINTMT_BLOCK_WORDS:

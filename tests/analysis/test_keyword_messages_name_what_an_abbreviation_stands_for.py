@@ -44,3 +44,17 @@ def test_a_macro_named_by_a_number_is_not_called_a_keyword() -> None:
     code, message = _message("DEFINE 100 = 3\n")
     assert code == "E3005"
     assert "keyword" not in message
+
+
+def test_an_abbreviated_keyword_with_its_channel_glued_on_names_the_channel_form() -> None:
+    # OUT is abbreviated OT (000:14879) and OUTx is a form of OUT (000:14896)
+    code, message = _message("DIM OT2\n")
+    assert code == "E2003"
+    assert "'OT2' (short for OUT2) is a keyword" in message
+
+
+def test_a_keyword_with_its_channel_glued_on_written_whole_is_named_once() -> None:
+    code, message = _message("DIM IN3\n")
+    assert code == "E2003"
+    assert "'IN3' is a keyword" in message
+    assert "short for" not in message

@@ -37,7 +37,7 @@ from mintlang.runtime.report import as_json
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import ScenarioFileError, all_held, expectations_pass, merge
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
-from mintlang.runtime.simulation import Interrupt, Limits
+from mintlang.runtime.simulation import KEYS_NONE_TYPES, Interrupt, Limits
 from mintlang.semantic.units import Unit
 from mintlang.settings import SettingsError, settings_for
 from mintlang.source import read_source
@@ -172,6 +172,9 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
                 errors.line(f"warning: {note}", "yellow")
         if not (quiet and result.stop.reason in (StopReason.END, StopReason.UNTIL)):
             _describe_stop(result, errors)
+        if keyboard is None and result.stop.reason is StopReason.DEADLOCK and KEYS_NONE_TYPES in result.stop.message:
+            # typing at a terminal is not read (keyboard.standard_input says why): a user there is told what works
+            errors.line("hint: keys can be piped to standard input: printf '42\\n' | mint-run PROGRAM", "yellow")
         if verbose:
             ratio = f" ({result.stop.time_ms / 1000 / wall_s:.1f}x real time)" if wall_s > 0 else ""
             errors.line(f"simulated {result.stop.time_ms} ms in {wall_s:.2f} s{ratio}")

@@ -26,6 +26,8 @@ from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.motion.idle_masters import master_waited_on
 
 WALL_CHECK_EVERY = 256  # processed ticks between looks at the wall clock
+# What a program blocked on INPUT or INKEY waits for, in its deadlock message (mint-run adds how to pipe keys in)
+KEYS_NONE_TYPES = "keys that no scenario types (a [[key]] entry, or REM @sim key)"
 
 
 class Interrupt(Exception):
@@ -166,11 +168,9 @@ class Simulator:
         on an input waits on the input, whatever a follower does."""
         message = "blocked, and nothing scheduled or moving can ever wake the program"
         site = self.c.vm.current_site()
-        keys = "keys that no scenario types (a [[key]] entry, or REM @sim key)"
+        keys = KEYS_NONE_TYPES
         if self.c.terminal.keyboard is not None:
             keys += " and standard input, which has ended, did not give"
-        else:  # a terminal: what a user at one types is not read (keyboard.standard_input says why)
-            keys += " nor standard input gives, read from a pipe or a file only (printf '42\\n' | mint-run app.mnt)"
         if site is not None and site.kind == "Input":
             return f"{message}: INPUT waits for {keys}"
         if site is not None and site.kind == "Pause" and self.c.vm.awaits_keys:

@@ -8,10 +8,13 @@ blocks for good (W-4); the message names the keys it waits for and where a scena
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.scenario import parse_directives
+from tests.runtime.invoking import mint_run, write
 from tests.runtime.running import simulate
 
 SOURCE = 'DIM q\nINPUT "qty? ", q\nPRINT q * 2\n'
@@ -21,8 +24,14 @@ def test_an_input_no_scenario_answers_is_a_deadlock_that_says_it_waits_for_keys(
     result = simulate(SOURCE)
     assert (result.stop.reason, result.stop.line) == (StopReason.DEADLOCK, 2)
     assert "INPUT waits for keys that no scenario types" in result.stop.message
-    # a user at a terminal, whose typing is not read, is told how to give keys: a pipe or a file
-    assert "nor standard input gives, read from a pipe or a file only" in result.stop.message
+    assert "mint-run" not in result.stop.message  # the editor's and the debugger's runs show it too
+
+
+def test_mint_run_tells_a_user_whose_typing_it_does_not_read_how_to_give_keys(tmp_path: Path) -> None:
+    # keys come from a scenario or a pipe; typing at a terminal is not read (nor is the test runner's input)
+    result = mint_run(write(tmp_path, "qty.mnt", SOURCE))
+    assert result.exit_code == 1
+    assert "hint: keys can be piped to standard input: printf '42\\n' | mint-run PROGRAM" in result.output
 
 
 def test_an_input_a_scenario_answers_reads_the_number() -> None:

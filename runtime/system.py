@@ -101,9 +101,10 @@ class System:
         return float(code)
 
     def _lasterr(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
-        """LASTERR as a statement displays the error message that last ended a program (000:13270-13282,
-        001:9632-9642). A run starts at power-up, so no program has ended on an error before it: there is no
-        message to display, and the program goes on."""
+        """LASTERR as a statement displays the error message that last ended a program (the v3 guide's words,
+        001:9632-9642; the v4 guide says only that it returns that error, 000:13270-13282). A run starts at
+        power-up, so no program has ended on an error before it: the choice is that there is no message to
+        display, and the program goes on (BEHAVIOUR.md)."""
         return False
 
     def _cls(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:

@@ -161,7 +161,7 @@ def read(paths: tuple[Path, ...], config: Path | None) -> Found:
 def _unlooked(error: OSError) -> Unlooked:
     path = str(error.filename)
     why = "no such file or directory" if isinstance(error, FileNotFoundError) else f"cannot be read ({error.strerror})"
-    role = "configuration" if is_configuration(Path(path)) else "program"
+    role = "folder" if Path(path).is_dir() else "configuration" if is_configuration(Path(path)) else "program"
     return Unlooked(cannot_read(error), Migrated(None, FileEntry(path, role, None, NotRead(why))))
 
 

@@ -28,7 +28,7 @@ class FileEntry:
     """A file of the run as the report names it: its migration, or why it has none."""
 
     path: str
-    role: str  # "program" or "configuration"
+    role: str  # "program" or "configuration"; "folder" for one that could not be listed
     result: MigrationResult | None
     failure: MigrationFailed | None = None
     written: bool = True  # False when ``--write`` could not replace the changed file

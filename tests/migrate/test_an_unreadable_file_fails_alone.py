@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import errno
 import json
+import os
 from pathlib import Path
 
 import pytest
@@ -148,3 +149,21 @@ def test_a_folder_without_programs_is_named(tmp_path: Path) -> None:
     result = run(tmp_path)
     assert result.exit_code == 2
     assert problems(result) == [f"mint-migrate: no .mnt or .cfg files to migrate in {tmp_path}"]
+
+
+def test_a_folder_that_cannot_be_listed_is_a_failed_folder_of_the_json_report(
+    folder: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    locked = folder / "locked"
+    locked.mkdir()
+    scandir = os.scandir
+
+    def denied(path: str | Path) -> object:
+        if Path(path) == locked:  # what mode 000 does to anyone without root's override
+            raise PermissionError(errno.EACCES, "Permission denied", str(path))
+        return scandir(path)
+
+    monkeypatch.setattr(os, "scandir", denied)
+    data = json.loads(run("--format", "json", folder).stdout)
+    (row,) = [row for row in data["files"] if row["path"] == str(locked)]
+    assert (row["role"], row["status"]) == ("folder", "failed")

@@ -140,7 +140,7 @@ def _verdict(
     """``found`` the differences no rule explains, ``expected`` those one does."""
     if not found:
         return Verdict.INCOMPLETE if short else Verdict.EXPLAINED if expected else Verdict.EQUIVALENT
-    expected = any(item.rule == _TIMING_RULE for _, item in flagged)
-    if expected and all(divergence.timing_only for divergence in found):
+    timing_flagged = any(item.rule == _TIMING_RULE for _, item in flagged)
+    if timing_flagged and all(divergence.timing_only for divergence in found):
         return Verdict.TIMING
     return Verdict.DIVERGES

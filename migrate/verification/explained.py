@@ -49,8 +49,10 @@ def applies(result: MigrationResult) -> bool:
 def split(found: list[Divergence], still: list[Divergence]) -> tuple[list[Divergence], list[Divergence]]:
     """``found`` (v4's own run against v3) as (divergences, explained differences), given what the what-if run
     ``still`` differs in: a channel it no longer differs in is explained; one it does is that run's difference,
-    or v4's own where the two agree."""
+    or v4's own where the two agree. A channel only the what-if run differs in is no difference of the
+    migration: v4's own run agrees with v3 there."""
     channels = {divergence.what for divergence in still}
     explained = [replace(d, explained_by=TRIGONOMETRY) for d in found if d.what not in channels]
-    diverging = [d if d in found else replace(d, what_if=WHAT_IF) for d in still]
+    differing = {divergence.what for divergence in found}
+    diverging = [d if d in found else replace(d, what_if=WHAT_IF) for d in still if d.what in differing]
     return diverging, explained

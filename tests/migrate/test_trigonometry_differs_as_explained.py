@@ -17,7 +17,8 @@ from click.testing import CliRunner
 
 from mintlang.migrate import migrate
 from mintlang.migrate.cli import migrate as command
-from mintlang.migrate.verification import Verdict, Verification, verify
+from mintlang.migrate.verification import Divergence, Verdict, Verification, verify
+from mintlang.migrate.verification.explained import WHAT_IF, split
 from mintlang.runtime.scenario import DrivesEnabled, Scenario
 
 DRIVES = Scenario(drives=(DrivesEnabled(),))
@@ -126,3 +127,16 @@ def test_verify_fails_on_a_real_divergence_beside_an_explained_one(tmp_path: Pat
     assert result.stdout.splitlines()[0].startswith(f"{path}: diverges at ")
     assert "also differs: terminal at 0 ms (v3 '866', v4 '866.02" in result.stdout
     assert "explained by M-TRIG)" in result.stdout
+
+
+def test_a_channel_only_the_what_if_run_differs_in_is_no_divergence() -> None:
+    # v4's own run differs from v3 on the terminal alone; given v3's values it differs there and on an axis,
+    # where v4's own run agrees with v3: only the terminal is the migration's difference
+    def difference(what: str, v4: str) -> Divergence:
+        return Divergence(10, what, "1", v4, None, None)
+
+    found = [difference("terminal", "'707.1067'")]
+    still = [difference("terminal", "'GO'"), difference("axis 0 position", "5")]
+    diverging, explained = split(found, still)
+    assert [(d.what, d.v4, d.what_if) for d in diverging] == [("terminal", "'GO'", WHAT_IF)]
+    assert explained == []

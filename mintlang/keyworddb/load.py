@@ -13,7 +13,7 @@ from __future__ import annotations
 import binascii
 import marshal
 import re
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import field
 from enum import StrEnum
 from functools import cache, cached_property
@@ -32,6 +32,7 @@ from mintlang.keyworddb.model import (
     KeywordKind,
     MigrationClass,
     Rename,
+    Spelling,
     V3Constant,
     V3Keyword,
     ValueRange,
@@ -151,6 +152,46 @@ def _keyword(raw: dict[str, Any]) -> Keyword:
     )
 
 
+def _spelling(raw: dict[str, Any]) -> Spelling:
+    return Spelling(
+        raw["name"],
+        tuple(raw["abbreviations"]),
+        _KINDS[raw["kind"]],
+        bool(raw["parameters"]),
+        raw["channel_suffix"],
+        len(raw.get("indices", ())),
+    )
+
+
+class _Built(Mapping[str, _Record]):
+    """Records by upper-case name, each made from its entry when first asked for and kept: building the
+    404 v4 keywords was half of loading the database, and a one-line check reads a few of them."""
+
+    __slots__ = ("_entries", "_made", "_make")
+
+    def __init__(self, entries: Mapping[str, dict[str, Any]], make: Callable[[dict[str, Any]], _Record]) -> None:
+        self._entries, self._make = entries, make
+        self._made: dict[str, _Record] = {}
+
+    def __getitem__(self, name: str) -> _Record:
+        made = self._made.get(name)
+        if made is None:
+            made = self._made[name] = self._make(self._entries[name])
+        return made
+
+    def get(self, name: str, default: Any = None) -> Any:
+        return self[name] if name in self._entries else default
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._entries
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._entries)
+
+    def __len__(self) -> int:
+        return len(self._entries)
+
+
 def _constant(raw: dict[str, Any]) -> Constant:
     return Constant(raw["name"], raw["value"], raw["keyword"], raw["line"])
 
@@ -193,15 +234,17 @@ def _index(
 class KeywordDatabase:
     """Everything the manuals say about keywords, constants and errors, indexed for lookup.
 
-    What a check of Mint v4 reads (its keywords and constants) is built when the database is loaded;
-    the rest (v3's keywords, constants and renames, MintMT's own words, the errors) from its documents
-    when first asked for, which a one-line v4 check never does.
+    What a check of Mint v4 reads is indexed when the database is loaded: v4's constants, and every v4
+    keyword's spellings, whose records are each built when first asked for (the lexer reads the spellings
+    through ``owner`` and ``spellings_of``). The rest (v3's keywords, constants and renames, MintMT's own
+    words, the errors) is built from its documents when first asked for, which a one-line v4 check never does.
     """
 
-    keywords: Mapping[str, Keyword]
+    keywords: Mapping[str, Keyword]  # each built when first asked for
     constants: Mapping[str, Constant]
-    _words: Mapping[str, Keyword] = field(repr=False)
-    _shared: Mapping[str, tuple[Keyword, ...]] = field(repr=False)  # abbreviation -> the keywords it is given to
+    _words: Mapping[str, str] = field(repr=False)  # spelling -> the name of the keyword it stands for
+    _shared: Mapping[str, tuple[str, ...]] = field(repr=False)  # abbreviation -> the keywords it is given to
+    _entries: Mapping[str, dict[str, Any]] = field(repr=False, compare=False)  # v4's keyword entries by name
     _later: Documents = field(repr=False, compare=False)  # the documents of what is built when first asked for
 
     @cached_property
@@ -247,7 +290,12 @@ class KeywordDatabase:
         return _index(self.renames, lambda r: (r.old,), lambda r: (r.old_abbreviation,) if r.old_abbreviation else ())
 
     def lookup(self, word: str, controller: Controller | None = None) -> Keyword | None:
-        """The v4 keyword ``word`` names or abbreviates, in any case.
+        """The v4 keyword ``word`` names or abbreviates, in any case: see ``owner``."""
+        name = self.owner(word, controller)
+        return None if name is None else self.keywords[name]
+
+    def owner(self, word: str, controller: Controller | None = None) -> str | None:
+        """The name of the v4 keyword ``word`` names or abbreviates, in any case.
 
         A channel glued to a keyword that allows it (``IN3``, ``#FASTIN2``)
         resolves to that keyword. An abbreviation the guide gives to two
@@ -257,15 +305,23 @@ class KeywordDatabase:
         """
         upper = word.upper()
         if controller is not None and (shared := self._shared.get(upper)) is not None:
-            available = [keyword for keyword in shared if controller in keyword.controllers]
+            # Read from the entries: the lexer asks of every abbreviation, and needs no record built.
+            available = [name for name in shared if controller in self._entries[name]["controllers"]]
             if len(available) == 1:
                 return available[0]
         if (found := self._words.get(upper)) is not None:
             return found
         match = _CHANNEL_GLUED.match(upper)
-        if match and (base := self._words.get(match["base"])) is not None and base.channel_suffix:
+        if match and (base := self._words.get(match["base"])) is not None and self.keywords[base].channel_suffix:
             return base
         return None
+
+    def spellings_of(self, dialect: Dialect) -> list[Spelling]:
+        """How each keyword of a v4-based dialect is written, in the order of ``keywords_of``."""
+        entries = self._entries
+        if dialect is Dialect.MINTMT:
+            entries = {**entries, **{raw["name"].upper(): raw for raw in self._later["keywords_mintmt.json"]}}
+        return [_spelling(raw) for raw in entries.values()]
 
     def keywords_of(self, dialect: Dialect) -> Mapping[str, Keyword]:
         """The keywords of a v4-based dialect by name: v4's, with MintMT's own over them in MintMT."""
@@ -300,17 +356,15 @@ def _abbreviation_conflicts(conflicts: list[dict[str, Any]]) -> list[dict[str, A
     return [conflict for conflict in conflicts if conflict["kind"] == "abbreviation"]
 
 
-def _abbreviation_choices(keywords: Mapping[str, Keyword], conflicts: list[dict[str, Any]]) -> dict[str, Keyword]:
+def _abbreviation_choices(conflicts: list[dict[str, Any]]) -> dict[str, str]:
     """The generator's resolution of abbreviations the guide gives to two keywords."""
-    return {conflict["subject"].upper(): keywords[conflict["resolved_to"]] for conflict in conflicts}
+    return {conflict["subject"].upper(): conflict["resolved_to"].upper() for conflict in conflicts}
 
 
-def _shared_abbreviations(
-    keywords: Mapping[str, Keyword], conflicts: list[dict[str, Any]]
-) -> Mapping[str, tuple[Keyword, ...]]:
+def _shared_abbreviations(conflicts: list[dict[str, Any]]) -> Mapping[str, tuple[str, ...]]:
     """Each abbreviation the guide gives to two keywords, with both."""
     return MappingProxyType(
-        {conflict["subject"].upper(): tuple(keywords[name] for name in conflict["keywords"]) for conflict in conflicts}
+        {conflict["subject"].upper(): tuple(name.upper() for name in conflict["keywords"]) for conflict in conflicts}
     )
 
 
@@ -318,18 +372,21 @@ def _shared_abbreviations(
 def database() -> KeywordDatabase:
     """The database shipped with the package, loaded once per process."""
     read = documents()
-    keywords = [_keyword(raw) for raw in read["keywords_v4.json"]]
+    entries = {raw["name"].upper(): raw for raw in read["keywords_v4.json"]}
     constants = [_constant(raw) for raw in read["constants_v4.json"]]
     conflicts = _abbreviation_conflicts(read["conflicts.json"])
-    by_name = _by_name(keywords, lambda k: k.name)
-    preferred = sorted(keywords, key=lambda k: (not k.documented, k.line))
+    preferred = sorted(entries, key=lambda name: (not entries[name]["documented"], entries[name]["line"]))
     return KeywordDatabase(
-        keywords=by_name,
+        keywords=_Built(entries, _keyword),
         constants=_by_name(constants, lambda c: c.name),
         _words=_index(
-            preferred, lambda k: (k.name,), lambda k: k.abbreviations, fixed=_abbreviation_choices(by_name, conflicts)
+            preferred,
+            lambda name: (name,),
+            lambda name: entries[name]["abbreviations"],
+            fixed=_abbreviation_choices(conflicts),
         ),
-        _shared=_shared_abbreviations(by_name, conflicts),
+        _shared=_shared_abbreviations(conflicts),
+        _entries=MappingProxyType(entries),
         _later={name: read[name] for name in _BUILT_WHEN_ASKED},
     )
 

@@ -129,6 +129,19 @@ class Keyword:
 
 
 @record
+class Spelling:
+    """How a keyword is written and what the lexer makes of it, read from its entry without building its
+    ``Keyword``: the lexer's vocabulary reads every keyword's spellings, a one-line check few records."""
+
+    name: str
+    abbreviations: tuple[str, ...]
+    kind: KeywordKind
+    takes_arguments: bool  # has bracketed parameters
+    channel_suffix: bool
+    indices: int  # how many items of its brackets follow the axes (MintMT)
+
+
+@record
 class Constant:
     """A predefined constant (``_TRUE``, ``_hmPOSITIVE_SWITCH`` ...)."""
 

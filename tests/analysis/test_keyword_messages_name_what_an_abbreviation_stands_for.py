@@ -27,10 +27,11 @@ def test_dim_of_an_abbreviation_names_the_controllers_keyword(controller: str, k
     assert f"'spd' (short for {keyword}) is a keyword" in message
 
 
-def test_dim_of_a_keyword_written_whole_names_it_once() -> None:
-    code, message = _message("DIM pos\n")
+@pytest.mark.parametrize("name", ["pos", "IN3"])  # IN3: input 3, IN with its channel glued on
+def test_dim_of_a_keyword_written_whole_names_it_once(name: str) -> None:
+    code, message = _message(f"DIM {name}\n")
     assert code == "E2003"
-    assert "'pos' is a keyword" in message
+    assert f"'{name}' is a keyword" in message
     assert "short for" not in message
 
 
@@ -51,10 +52,3 @@ def test_an_abbreviated_keyword_with_its_channel_glued_on_names_the_channel_form
     code, message = _message("DIM OT2\n")
     assert code == "E2003"
     assert "'OT2' (short for OUT2) is a keyword" in message
-
-
-def test_a_keyword_with_its_channel_glued_on_written_whole_is_named_once() -> None:
-    code, message = _message("DIM IN3\n")
-    assert code == "E2003"
-    assert "'IN3' is a keyword" in message
-    assert "short for" not in message

@@ -52,20 +52,10 @@ def verify(
     v3 = runnable.original(result)
     v4, disabled = runnable.migrated(result, target)
     left = record(v3, Dialect.V3, v3_controller, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
-    right = record(v4, Dialect.V4, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
+    run_v4 = partial(record, v4, Dialect.V4, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
+    right = run_v4()
     short = short_of(left, right, runnable.flagged_places(result))
-    what_if = None
-    if explained.applies(result):
-        what_if = partial(
-            record,
-            v4,
-            Dialect.V4,
-            target,
-            stimulus,
-            until_ms=until_ms,
-            max_wall_s=max_wall_s,
-            functions=explained.FUNCTIONS,
-        )
+    what_if = partial(run_v4, functions=explained.FUNCTIONS) if explained.applies(result) else None
     return conclude(left, right, result, short, controllers=(v3_controller, target), disabled=disabled, what_if=what_if)
 
 

@@ -312,7 +312,7 @@ class KeywordDatabase:
         if (found := self._words.get(upper)) is not None:
             return found
         match = _CHANNEL_GLUED.match(upper)
-        if match and (base := self._words.get(match["base"])) is not None and self.keywords[base].channel_suffix:
+        if match and (base := self._words.get(match["base"])) is not None and self._entries[base]["channel_suffix"]:
             return base
         return None
 

@@ -95,3 +95,10 @@ def test_v3_keywords_are_used_as_the_v3_guide_ticks_them() -> None:
     diagnostics = mintlang.check("FASTPOS.0 = 5\nSPEED.0 = 10\n", dialect="v3")
     assert [(d.code, d.span.start) for d in diagnostics] == [("E2000", 0)]
     assert "FASTPOS is read only in Mint v3" in diagnostics[0].message
+
+
+@pytest.mark.parametrize("source", ["a = CLS\n", "PRINT LASTERR\n"])
+def test_v3_reading_a_command_is_write_only(source: str) -> None:
+    # 001:13073-13081: "Write only" is the error of reading a write only variable or a command
+    (diagnostic,) = mintlang.check(source, dialect="v3")
+    assert diagnostic.code == "E2002" and "is a command in Mint v3 and gives no value" in diagnostic.message

@@ -2,7 +2,7 @@
 
 The v3 reading is what mint-migrate starts from: a write to a keyword the v3
 guide ticks as read only (``FASTPOS.0 = 5``, 001:7956) or a read of one it ticks
-as write only was already an error on the v3 controller (2000 / 2002, as v4
+as write only or as a command (``a = CLS``, "Write only", 001:13073-13081) was already an error on the v3 controller (2000 / 2002, as v4
 numbers them), so the migrator reports such a line as broken in v3 already
 rather than as something the migration broke.
 """
@@ -26,5 +26,10 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if use.use is Use.WRITE and not keyword.write:
             what = "a command" if keyword.command else "read only"
             yield Finding(use.unit, mint_error(2000, span, f"{name} is {what} in Mint v3 and cannot be given a value"))
-        elif use.use is Use.READ and not keyword.read and keyword.write:
-            yield Finding(use.unit, mint_error(2002, span, f"{name} can only be written in Mint v3, not read"))
+        elif use.use is Use.READ and not keyword.read:
+            what = (
+                "is a command in Mint v3 and gives no value"
+                if keyword.command
+                else "can only be written in Mint v3, not read"
+            )
+            yield Finding(use.unit, mint_error(2002, span, f"{name} {what}"))

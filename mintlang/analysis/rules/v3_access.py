@@ -2,9 +2,10 @@
 
 The v3 reading is what mint-migrate starts from: a write to a keyword the v3
 guide ticks as read only (``FASTPOS.0 = 5``, 001:7956) or a read of one it ticks
-as write only or as a command (``a = CLS``, "Write only", 001:13073-13081) was already an error on the v3 controller (2000 / 2002, as v4
-numbers them), so the migrator reports such a line as broken in v3 already
-rather than as something the migration broke.
+as write only or as a command (``a = CLS``, "Write only", 001:13073-13081) was
+already an error on the v3 controller (2000 / 2002, as v4 numbers them), so the
+migrator reports such a line as broken in v3 already rather than as something
+the migration broke.
 """
 
 from __future__ import annotations

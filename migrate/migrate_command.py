@@ -104,11 +104,14 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     _tidy(items, mode)
     if settings is not None:
         verified, failed = verifying.verify_all(migrated, settings)
+        problems += failed
         with destination(output_file, _fail) as stream:
-            verifying.output(verified, output_format, console(color, file=stream), quiet=quiet, to=to)
-        for problem in [*problems, *failed]:
+            verifying.output(
+                verified, output_format, console(color, file=stream), quiet=quiet, problems=problems, to=to
+            )
+        for problem in problems:
             click.echo(f"mint-migrate: {problem}", err=True)
-        status = _verify_status(verified, fail_on, [*problems, *failed])
+        status = _verify_status(verified, fail_on, problems)
         sys.exit(0 if status == GATE_FAILED and exit_zero else status)
     if mode == "write":
         written = write_changed(migrated)

@@ -128,11 +128,20 @@ def _whole(files: list[Migrated]) -> MigrationResult | None:
     return MigrationResult("", "", (), (), {}, configuration=configuration)
 
 
-def output(verified: list[Verified], output_format: str, console: Console, *, quiet: bool, to: str = "v4") -> None:
+def output(
+    verified: list[Verified],
+    output_format: str,
+    console: Console,
+    *,
+    quiet: bool,
+    problems: list[str],
+    to: str = "v4",
+) -> None:
     """The report on ``console`` (standard output or ``--output-file``); ``quiet`` leaves out what was not
-    verified and the totals."""
+    verified and the totals. The text report leaves ``problems`` to standard error, where the command
+    writes them whatever the format."""
     sides = verification_report.V4_TO_MINTMT if to == "mintmt" else verification_report.V3_TO_V4
-    data = verification_report.report(verified, sides)
+    data = verification_report.report(verified, sides, problems)
     if output_format == "json":
         console.file.write(json.dumps(data, indent=2, ensure_ascii=False) + "\n")
     else:

@@ -59,12 +59,17 @@ V3_TO_V4 = ("v3", "v4")
 V4_TO_MINTMT = ("v4", "mintmt")
 
 
-def report(verified: Iterable[Verified], sides: tuple[str, str] = V3_TO_V4) -> dict[str, Any]:
+def report(
+    verified: Iterable[Verified], sides: tuple[str, str] = V3_TO_V4, problems: Iterable[str] = ()
+) -> dict[str, Any]:
     """The report as plain data (what ``--verify --format json`` prints), each run's fields named after
-    its dialect (``sides``; a ``Verification``'s ``v3`` fields are the original's, ``v4`` the migration's)."""
+    its dialect (``sides``; a ``Verification``'s ``v3`` fields are the original's, ``v4`` the migration's).
+    ``problems`` are what kept an application from being verified (a path that cannot be read, a failed
+    migration), as standard error words them: a JSON reader sees them without parsing standard error."""
     rows = [_application(item, sides) for item in verified]
     verdicts = Counter(row["verdict"] for row in rows)
-    return {"applications": rows, "totals": {verdict.value: verdicts[verdict.value] for verdict in Verdict}}
+    totals = {verdict.value: verdicts[verdict.value] for verdict in Verdict}
+    return {"applications": rows, "problems": list(problems), "totals": totals}
 
 
 def _application(item: Verified, sides: tuple[str, str]) -> dict[str, Any]:

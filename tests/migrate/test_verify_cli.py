@@ -162,6 +162,19 @@ def test_a_rem_sim_line_that_cannot_be_read_names_its_program_and_the_others_are
     assert result.stdout.splitlines()[0] == f"{good}: equivalent over 602 ms"
 
 
+def test_the_json_report_names_what_kept_an_application_from_being_verified(tmp_path: Path) -> None:
+    good, missing = tmp_path / "good.mnt", tmp_path / "typo.mnt"
+    good.write_text(EQUIVALENT)
+    result = CliRunner().invoke(
+        migrate, ["--verify", "--drives", "enabled", "--format", "json", str(good), str(missing)]
+    )
+    data = json.loads(result.stdout)
+    assert result.exit_code == 2
+    assert [row["program"] for row in data["applications"]] == [str(good)]
+    assert data["problems"] == [f"no such file or directory: {missing}"]
+    assert result.stderr == f"mint-migrate: no such file or directory: {missing}\n"
+
+
 def test_an_incomplete_comparison_says_how_far_it_went(tmp_path: Path) -> None:
     # 40 assignments take the slices of 0 and 1 ms; v3 stops on COMMSON in the slice of 2 ms, part way
     # through it, so the runs are known up to 1 ms

@@ -1,8 +1,7 @@
 """Settings the simulator accepts and remembers but that change nothing it models.
 
 They configure hardware the simulation has no counterpart for: terminal
-channels and echo (the simulator has one merged terminal), keypads, ADC input
-ranges (the scenario gives ADC values in percent directly), DAC output modes
+channels and echo (the simulator has one merged terminal), keypads, DAC output modes
 and gearing compensation (the ideal plant has no lag to compensate, spec FG-7).
 A program that sets them runs on; reading one back gives what was written. The
 report lists the ones a run used, so nobody mistakes them for simulated.
@@ -20,7 +19,6 @@ INERT_SETTINGS: dict[str, float] = {
     "ECHO": 7.0,
     "PROTECT": 0.0,
     "KEYPADNODE": 0.0,
-    "ADCMODE": 0.0,
     "DACMODE": 0.0,
     "GEARING": 0.0,
     "GEARINGMODE": 0.0,

@@ -25,6 +25,7 @@ INVALID_INPUT = 7
 INVALID_OUTPUT = 8
 INVALID_CHANNEL = 4
 OUT_OF_RANGE = 3
+ADC_OFF = 4  # ADCMODE's _acOFF on every NextMove (000:6450, 6479)
 RELAY0 = 1000  # _RELAY0, the main card's relay as a drive enable output; _RELAY1 and _RELAY2 follow (000:9356-9368)
 
 
@@ -60,6 +61,8 @@ class DigitalIO:
         self.relay = 0  # a bit per bank's relay
         self.drive_enable_outputs: Callable[[], frozenset[int]] = frozenset  # outputs (or RELAY0) a drive owns
         self.adc = [0.0] * (self.adc_channels.high + 1)
+        self.adc_mode = [0.0] * (self.adc_channels.high + 1)  # ADCMODE: 0 at power-up (000:6412-6414)
+        self.adc_held: dict[int, float] = {}  # channels turned off, each with the value it read while still on
 
     def _input(self, channel: int) -> int:
         return _check(channel, self.inputs, INVALID_INPUT)
@@ -126,6 +129,8 @@ class DigitalIO:
         relay = ranged("RELAY", table.controller, self._write_relay)
         table.register("RELAY", read=self._read_relay, write=per_channel(relay))
         table.register("ADC", read=self._read_adc)
+        adc_mode = ranged("ADCMODE", table.controller, self._write_adc_mode)
+        table.register("ADCMODE", read=lambda channel: self.adc_mode[self._adc(channel)], write=per_channel(adc_mode))
 
     def _watch(self) -> None:
         self.clock.changes_at(self.next_input_change())
@@ -222,8 +227,24 @@ class DigitalIO:
         if RELAY0 + bank not in self.drive_enable_outputs():  # a drive's relay is not RELAY's to set (000:15477-15480)
             self.relay = with_bit(self.relay, bank, bool(value))
 
+    def _adc(self, channel: int | None) -> int:
+        """The analog input ``channel`` names (0 when none), or error 4; ADCMODE's channel is ADC's (000:6404, 5620)."""
+        return _check(0 if channel is None else channel, self.adc_channels, INVALID_CHANNEL)
+
     def _read_adc(self, channel: int | None) -> float:
-        if channel is None:
-            channel = 0
+        number = self._adc(channel)
         self._watch()
-        return self.adc[_check(channel, self.adc_channels, INVALID_CHANNEL)]
+        return self.adc_reading(number)
+
+    def adc_reading(self, number: int) -> float:
+        """What ``ADC`` reads on analog input ``number``: its level, or the value held while it is off."""
+        return self.adc_held.get(number, self.adc[number])
+
+    def _write_adc_mode(self, channel: int | None, mode: float) -> None:
+        """A channel turned off reads the last value it read while on, until it is turned on (000:6456-6457, 6495)."""
+        number = self._adc(channel)
+        if mode == ADC_OFF:
+            self.adc_held.setdefault(number, self.adc[number])
+        else:
+            self.adc_held.pop(number, None)
+        self.adc_mode[number] = mode

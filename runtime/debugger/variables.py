@@ -207,7 +207,8 @@ class InputsOutputs(_ReadOnly):
             Variable("OUT", _bits(io.out, io.outputs.high + 1), "OUT"),
             Variable("RELAY", str(io.relay), "RELAY"),
         ]
-        found.extend(Variable(f"ADC.{channel}", shown(value), f"ADC.{channel}") for channel, value in enumerate(io.adc))
+        for channel in range(len(io.adc)):  # what ADC reads: a channel turned off holds its value
+            found.append(Variable(f"ADC.{channel}", shown(io.adc_reading(channel)), f"ADC.{channel}"))
         return found
 
 

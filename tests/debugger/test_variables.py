@@ -46,6 +46,14 @@ def test_the_io_scope_shows_outputs_as_a_bank(debug: Debug) -> None:
     assert io["IN"].endswith("0 (0)")
 
 
+def test_the_io_scope_shows_an_analog_input_turned_off_at_the_value_adc_reads(debug: Debug) -> None:
+    # 000:6456-6457: a channel turned off (ADCMODE 4) reads the last value read while it was on
+    source = "REM @sim adc 0 50 at 10\nREM @sim adc 0 25 at 30\nWAIT = 20\nADCMODE.0 = 4\nWAIT = 20\nPRINT ADC.0\n"
+    client = debug(source, breakpoints=(6,))
+    client.stopped()
+    assert client.variables(client.scope("I/O"))["ADC.0"] == "50"
+
+
 def test_setting_an_element_and_a_comms_value_changes_what_the_program_reads(debug: Debug) -> None:
     client = debug("DIM t(3)\nDIM s\ns = t(2) + COMMS(5)\nPRINT s\n", breakpoints=(3,))
     client.stopped()

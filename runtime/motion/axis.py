@@ -374,8 +374,11 @@ class Axis:
         return self.demand_at(next_profiler_tick(self.clock.now)) if self.move is not None else self.hold
 
     def go(self) -> None:
+        """GO on a move that needs none (JOG, HOME, FOLLOW, TORQUE) is error 10 (000:11054-11056, 11117-11123)."""
         if self.move is not None and not self.move.buffered and not self.buffer and self.move.mode != MD_LINEAR:
             raise MintError(MOTION_IN_PROGRESS, self.number, "GO on an axis that is jogging, homing or following")
+        if self.torque is not None:
+            raise MintError(MOTION_IN_PROGRESS, self.number, "GO on an axis in torque mode")
         self.triggered = len(self.buffer)
 
     # ---------------------------------------------------------------- ticks

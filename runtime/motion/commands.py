@@ -214,6 +214,8 @@ class Motion:
             move = axis.move
             if move is not None and (move.mode not in (MD_JOG, MD_LINEAR) or len(move.axes) > 1):
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "JOG cannot blend from this move")
+            if axis.torque is not None:  # only TORQUE may follow TORQUE [000:16850-16851]
+                raise MintError(MOTION_IN_PROGRESS, axis.number, "in torque mode only TORQUE can be written")
             if self.profile.controller is Controller.MINTDRIVE and not _jogs_unblended(axis):
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "MintDrive jogs only an idle or jogging axis")
         start = next_profiler_tick(self.clock.now)

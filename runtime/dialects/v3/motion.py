@@ -203,8 +203,10 @@ class V3Motion:
 
     def _go(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         """GO starts the pending moves, then waits while a move runs or starts ahead of them: MINT is always one
-        step ahead (001:3404-3412, 8482)."""
-        self.v4.command("GO")(channels, arguments)
+        step ahead (001:3404-3412, 8482). An axis in torque mode (TORQUE, SERVOFF) is left out, where v4's GO is
+        error 10: v3's GO page names that error for a JOG only (001:8472-8504)."""
+        servoing = tuple(axis.number for axis in self.motion.addressed(channels) if axis.torque is None)
+        self.v4.command("GO")(servoing, arguments)
         clock = self.motion.clock
         waiting = False
         for axis in self.motion.addressed(channels):

@@ -468,6 +468,9 @@ class Motion:
             axis = self.axis(channel)
             if name == "SOFTLIMITMODE" and value == SMART_SOFT_LIMITS:
                 raise NotSimulated("SOFTLIMITMODE", "smart mode 4")
+            if name == "CONFIG":  # it calls DEFAULT for its axis; a value it refuses resets nothing (000:8481-8483)
+                check_range(name, value, axis.bounds[name], axis.number)
+                self.default((axis.number,), ())
             axis.set(name, value)
             if name in _PROFILE_RATES:
                 self.rates_changed(axis)

@@ -102,7 +102,7 @@ class V3Recovery:
         self._reset((axis.number,), ())
         for name in RATES:
             axis.parameters[name] = POWER_UP[name]  # in counts, whatever SCALE is
-        self.v4.write_one("CONFIG")(channel, value)
+        axis.set("CONFIG", value)  # not v4's CONFIG, which calls DEFAULT (000:8481-8483): v3 restores only the rates
 
     def _enable(self, _: int | None, value: float) -> None:
         if value not in (0, 1):

@@ -127,6 +127,10 @@ class Plan:
         reports.extend(report for rest in placed.values() for report in rest)
         return reports
 
+    def program_reports(self, results: Sequence[Checked]) -> list[FileReport]:
+        """The reports of the programs alone: what ``--fix`` fixes, as it leaves configuration files as they are."""
+        return [r.report for i, r in enumerate(results) if r.report is not None and i not in self.hidden]
+
 
 def _key(path: Path) -> Path:
     """One key for the names of one file (``cell.cfg`` named and found as ``CELL.CFG`` through a link)."""

@@ -240,7 +240,7 @@ def check(
         with destination(output_file, _fail) as stream:
             _write(reports + entries, stream, output_format, statistics=statistics, quiet=quiet, color=color)
             if output_format == "text" and not quiet and not statistics:
-                _write_fix_summary(reports, outcome, stream)
+                _write_fix_summary(planned.program_reports(results), outcome, stream)
     if outcome is not None and not quiet:
         notes = outcome.notes() + ([fixed_summary(outcome, diff=diff)] if diff or output_format != "text" else [])
         click.echo("".join(f"mint check: {note}\n" for note in notes), err=True, nl=False)
@@ -282,10 +282,10 @@ def _entries(unchecked: list[Unchecked], layer: Overrides) -> list[FileReport]:
     return entries
 
 
-def _write_fix_summary(reports: list[FileReport], outcome: Outcome | None, stream: IO[str]) -> None:
-    """What was fixed, and what ``--fix`` (or ``--unsafe-fixes``) would fix of what is left."""
+def _write_fix_summary(programs: list[FileReport], outcome: Outcome | None, stream: IO[str]) -> None:
+    """What was fixed, and what ``--fix`` (or ``--unsafe-fixes``) would fix of what is left in the programs."""
     lines = [fixed_summary(outcome, diff=False)] if outcome is not None else []
-    fixable = fixable_summary(reports)
+    fixable = fixable_summary(programs)
     stream.write("".join(f"{line}\n" for line in [*lines, *([fixable] if fixable else [])]))
 
 

@@ -148,7 +148,8 @@ def run_into_a_pipe(tmp_path: Path, module: str, program: str, *options: str) ->
 
 # What a run of one dialect does not use: the others' machines, the host port (--host-port), rich (colour,
 # the progress bar on a terminal, the table of expectations), the trace (--trace, --plot), the scenario files'
-# reader (--stimulus, --expect), the distribution's metadata (the plot's hint), logging (as for a check).
+# reader (--stimulus, --expect), what reads a program's own directives (it has none), the distribution's
+# metadata (the plot's hint), logging (as for a check).
 NOT_FOR_A_PLAIN_V4_RUN = (
     "rich",
     "logging",
@@ -158,6 +159,9 @@ NOT_FOR_A_PLAIN_V4_RUN = (
     "mintlang.runtime.scenario.outcome_table",
     "mintlang.runtime.trace",
     "mintlang.runtime.scenario.files",
+    "mintlang.runtime.scenario.directive_bodies",
+    "mintlang.runtime.scenario.builders",
+    "mintlang.runtime.scenario.phrase",
     "mintlang.extras",
     "socket",
     "importlib.metadata",

@@ -26,16 +26,23 @@ _DEFINE, _NAME = _K.DEFINE, _K.NAME  # module constants: read per line
 
 @record
 class MacroDefinition:
-    """A macro's name and body as significant tokens (kind, text)."""
+    """A macro's name and body as significant tokens (kind, text), each token's start counted from the body's."""
 
     name: str
     name_span: Span
     body: tuple[tuple[TokenKind, str], ...]
     body_span: Span | None
+    body_starts: tuple[int, ...]
 
     def shifted(self, offset: int) -> MacroDefinition:
         body_span = self.body_span.shifted(offset) if self.body_span is not None else None
-        return MacroDefinition(self.name, self.name_span.shifted(offset), self.body, body_span)
+        return MacroDefinition(self.name, self.name_span.shifted(offset), self.body, body_span, self.body_starts)
+
+    def token_span(self, index: int) -> Span:
+        """Where the body's ``index``-th token is written (the definition has a body)."""
+        assert self.body_span is not None, "only a body has tokens"
+        start = self.body_span.start + self.body_starts[index]
+        return Span(start, start + len(self.body[index][1]))
 
 
 @record
@@ -175,7 +182,8 @@ def take_macro_body(line: LogicalLine) -> list[MacroDefinition]:
         has_body = index + 2 < len(kinds) and kinds[index + 2] is _K.EQUAL and body_start < len(kinds)
         body = tuple(zip(kinds[body_start:], line.texts[body_start:], strict=True)) if has_body else ()
         body_span = Span(line.starts[body_start], line.ends[-1]) if has_body else None
-        definitions.append(MacroDefinition(line.texts[index + 1], name_span, body, body_span))
+        body_starts = tuple(start - line.starts[body_start] for start in line.starts[body_start:]) if has_body else ()
+        definitions.append(MacroDefinition(line.texts[index + 1], name_span, body, body_span, body_starts))
         if has_body and body_span is not None:
             text = " ".join(line.texts[body_start:])
             del kinds[body_start:], line.texts[body_start:], line.starts[body_start:], line.ends[body_start:]

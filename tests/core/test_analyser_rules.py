@@ -215,6 +215,9 @@ def test_a_macro_whose_text_uses_another_macro_is_a_syntax_error() -> None:
     # line 1549: "A macro cannot contain the reference to another macro"
     source = "DEFINE myMacro = 1\nDEFINE myMove = MOVEA.myMacro = 100 : GO.myMacro\n"
     assert ("E2003", ERROR, 2) in found(source)
+    (finding,) = (d for d in mintlang.check(source) if d.code == "E2003")
+    assert source[finding.span.start : finding.span.end] == "myMacro"  # the first use, in MOVEA.myMacro
+    assert finding.span.start == source.index("MOVEA.") + len("MOVEA.")
 
 
 # ----------------------------------------------------------- keyword usage

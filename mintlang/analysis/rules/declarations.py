@@ -399,9 +399,9 @@ def _same_ten(spelling: str, first: str) -> str:
 def _macro_in_macro(model: SemanticModel) -> Iterator[Finding]:
     for unit, document in model.documents():
         for definition in document.definitions:
-            for kind, text in definition.body:
-                if kind is TokenKind.NAME and n.identity(text) in model.symbols.macros and definition.body_span:
+            for index, (kind, text) in enumerate(definition.body):
+                if kind is TokenKind.NAME and n.identity(text) in model.symbols.macros:
                     detail = f"the text of macro '{definition.name}' uses macro '{text}', which Mint does not expand"
                     # 000:1549-1553: the syntax error comes when the macro is used, at run time
-                    yield Finding(unit, mint_error(2003, definition.body_span, detail, at_run_time=True))
+                    yield Finding(unit, mint_error(2003, definition.token_span(index), detail, at_run_time=True))
                     break

@@ -191,3 +191,9 @@ def test_mint_run_refuses_a_v4_controller_for_a_v3_program(tmp_path: Path) -> No
     result = mint_run("--dialect", "v3", "--controller", "nextmove-pci", program)
     assert result.exit_code == 2
     assert "not a controller of the Mint v3 guide" in result.output
+
+
+def test_mint_run_goes_on_after_lasterr_with_no_error_to_display(tmp_path: Path) -> None:
+    # 001:9632-9642: LASTERR displays the error that last ended a program; a run starts at power-up, so none has
+    result = mint_run("--dialect", "v3", write(tmp_path, "v3.mnt", 'LASTERR\nPRINT "on"\n'))
+    assert (result.exit_code, result.stdout) == (0, "on\n")

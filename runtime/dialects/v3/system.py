@@ -10,6 +10,7 @@
   guide gives no value.
 * ``DINT``/``EINT`` disable and enable #IN0..#IN7 and #FASTPOS (001:7365-7396, 7531-7545);
   ``PON``/``POFF`` switch the ``?`` of INPUT on and off (001:10791-10847).
+* ``LASTERR`` displays the message that last ended a program: v4's, none in a run from power-up.
 * ``LIMIT``, ``STOPSW`` and ``ERRORIN`` read the dedicated inputs (``controllers.py``);
   ``ERRORIN`` makes the error input active low (0) or high (1), or disables it (2, the
   default) (001:7841-7876).
@@ -66,6 +67,7 @@ class V3System:
         for name in ("OUT", "IMASK", "IPEND", "INKEY", "CLS", "BEEP", "BOL", "LOCATE", "LIMIT"):
             table.alias(name, self.v4.access(name))
         table.alias("STOPSW", self.v4.access("STOPSWITCH"))
+        table.register("LASTERR", command=self.v4.access("LASTERR").command)  # a command in v3 (001:9632-9642)
         table.register("IN", read=self._input)
         for number in range(USER_INPUTS):
             table.register(f"IN{number}", read=lambda _, bit=number: self._input(bit))

@@ -19,7 +19,7 @@ from typing import Any
 
 import click
 
-from mintlang.allocation import no_collection_at_exit
+from mintlang.allocation import collector_paused_and_kept, no_collection_at_exit
 from mintlang.cli.options import (
     HELP_OPTIONS,
     color_option,
@@ -124,7 +124,8 @@ Exit status:
 def migrate(**options: Any) -> None:
     """Migrate Mint v3 programs (.mnt) and configuration files (.cfg) to Mint v4, or v4 ones to MintMT
     (--to mintmt)."""
-    from mintlang.migrate.migrate_command import execute  # noqa: PLC0415 - the rules, for a migration only
+    with collector_paused_and_kept():  # its modules live as long as the process: no collection walks them
+        from mintlang.migrate.migrate_command import execute  # noqa: PLC0415 - the rules, for a migration only
 
     execute(**options)
 

@@ -20,7 +20,7 @@ from typing import Any
 
 import click
 
-from mintlang.allocation import no_collection_at_exit
+from mintlang.allocation import collector_paused_and_kept, no_collection_at_exit
 from mintlang.cli.options import (
     HELP_OPTIONS,
     color_option,
@@ -145,7 +145,8 @@ def run(**options: Any) -> None:
 
     Ctrl-C (exit 130) or SIGTERM (exit 143) stops the run where it is; the report and the trace are still written.
     """
-    from mintlang.runtime.run_command import execute  # noqa: PLC0415 - the simulator, for a run only
+    with collector_paused_and_kept():  # its modules live as long as the process: no collection walks them
+        from mintlang.runtime.run_command import execute  # noqa: PLC0415 - the simulator, for a run only
 
     execute(**options)
 

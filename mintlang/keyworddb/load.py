@@ -20,6 +20,7 @@ from functools import cache, cached_property
 from types import MappingProxyType
 from typing import Any, TypeVar
 
+from mintlang.allocation import kept_without_collector
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import (
     Addressing,
@@ -369,6 +370,7 @@ def _shared_abbreviations(conflicts: list[dict[str, Any]]) -> Mapping[str, tuple
 
 
 @cache
+@kept_without_collector  # nine collections of a tiny mint-run walked the documents as they were read
 def database() -> KeywordDatabase:
     """The database shipped with the package, loaded once per process."""
     read = documents()

@@ -20,10 +20,10 @@ MINT_TOML = "mint.toml"
 PYPROJECT = "pyproject.toml"
 _PYPROJECT_TABLE = ("tool", "mint")
 
-_TOML_POSITION = re.compile(r"\s*\(at line (\d+), column (\d+)\)$")
+# Patterns, compiled (and cached by ``re``) when a settings file is read: most runs have none.
+_TOML_POSITION = r"\s*\(at line (\d+), column (\d+)\)$"
 _KEY_PART = r'"(?:[^"\\]|\\.)*"|\'[^\']*\'|[A-Za-z0-9_-]+'
-_DOTTED = re.compile(rf"\s*({_KEY_PART})(?:\s*\.\s*({_KEY_PART}))*\s*")
-_PART = re.compile(_KEY_PART)
+_DOTTED = rf"\s*({_KEY_PART})(?:\s*\.\s*({_KEY_PART}))*\s*"
 
 
 class SettingsError(Exception):
@@ -85,7 +85,7 @@ def _unquoted(part: str) -> str:
 
 
 def _parts(dotted: str) -> tuple[str, ...]:
-    return tuple(_unquoted(part) for part in _PART.findall(dotted))
+    return tuple(_unquoted(part) for part in re.findall(_KEY_PART, dotted))
 
 
 def key_lines(text: str) -> dict[tuple[str, ...], int]:
@@ -101,7 +101,7 @@ def key_lines(text: str) -> dict[tuple[str, ...], int]:
                 lines.setdefault(table[:depth], number)
             continue
         left, equals, _ = line.partition("=")
-        if equals and _DOTTED.fullmatch(left):
+        if equals and re.fullmatch(_DOTTED, left):
             key = _parts(left)
             for depth in range(1, len(key) + 1):
                 lines.setdefault((*table, *key[:depth]), number)
@@ -143,9 +143,9 @@ def _parse(path: Path) -> Table | None:
         raise SettingsError(path, "not UTF-8 text, as TOML must be") from None
     except tomllib.TOMLDecodeError as error:
         message = str(error)
-        position = _TOML_POSITION.search(message)
+        position = re.search(_TOML_POSITION, message)
         line = int(position.group(1)) if position else None
-        raise SettingsError(path, f"not valid TOML: {_TOML_POSITION.sub('', message)}", line=line) from None
+        raise SettingsError(path, f"not valid TOML: {re.sub(_TOML_POSITION, '', message)}", line=line) from None
     if path.name != PYPROJECT:
         return Table(path, (), document, key_lines(text))
     table: object = document

@@ -6,7 +6,6 @@ Kept apart so that ``mint-migrate --help`` and ``--version`` load neither the ru
 from __future__ import annotations
 
 import difflib
-import json
 import sys
 from dataclasses import replace
 from functools import partial
@@ -204,6 +203,8 @@ def _output(items: list[Migrated], mode: str | None, output_format: str, control
                 if item.file is not None and item.entry.result is not None and item.entry.result.changed:
                     click.echo(_diff(item.file, item.entry.result.text), file=stream)
         if output_format == "json":
+            import json  # noqa: PLC0415 - the text report, the default, needs none
+
             write_in_pieces(stream, json.dumps(data, indent=2, ensure_ascii=False) + "\n")
         else:
             render_text(data, console(output.color, file=stream), quiet=output.quiet, verbose=output.verbose)

@@ -7,7 +7,6 @@ the migrated applications into the report ``verification.report`` prints.
 
 from __future__ import annotations
 
-import json
 from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
@@ -143,6 +142,8 @@ def output(
     sides = verification_report.V4_TO_MINTMT if to == "mintmt" else verification_report.V3_TO_V4
     data = verification_report.report(verified, sides, problems)
     if output_format == "json":
+        import json  # noqa: PLC0415 - a migration without --verify imports this module too
+
         console.file.write(json.dumps(data, indent=2, ensure_ascii=False) + "\n")
     else:
         verification_report.render_text(data, console, quiet=quiet, sides=sides)

@@ -6,7 +6,6 @@ Kept apart so that ``mint-run --help`` and ``--version`` load neither the simula
 from __future__ import annotations
 
 import io
-import json
 import signal
 import sys
 import time
@@ -303,6 +302,8 @@ def _trace_open(trace: Trace | None) -> Iterator[None]:
 def _report(result: RunResult, report_format: str | None, report_path: Path | None) -> None:
     if report_format is None and report_path is None:
         return
+    import json  # noqa: PLC0415 - only a run asked for its report writes JSON
+
     report = json.dumps(as_json(result), indent=2)
     if report_format == "json":
         if result.terminal and not result.terminal.endswith("\n"):

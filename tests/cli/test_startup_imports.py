@@ -149,9 +149,10 @@ def run_into_a_pipe(tmp_path: Path, module: str, program: str, *options: str) ->
 # What a run of one dialect does not use: the others' machines, the host port (--host-port), rich (colour,
 # the progress bar on a terminal, the table of expectations), the trace (--trace, --plot), the scenario files'
 # reader (--stimulus, --expect), what reads a program's own directives (it has none), the distribution's
-# metadata (the plot's hint), logging (as for a check).
+# metadata (the plot's hint), logging (as for a check), json (--report json, --report-file).
 NOT_FOR_A_PLAIN_V4_RUN = (
     "rich",
+    "json",
     "logging",
     "mintlang.runtime.dialects.v3.machine",
     "mintlang.runtime.dialects.mintmt",
@@ -185,9 +186,10 @@ def test_a_v3_run_loads_the_v3_machine_and_not_mintmts(tmp_path: Path) -> None:
 
 # What a migration from Mint v3 that flags nothing does not use: the simulator and the scenarios (--verify),
 # the MintMT rewrites (--to mintmt), the table of the guides' headings (a flag's citation). It does use rich:
-# its text summary is a rich table, into a pipe too. Nor logging, as for a check.
+# its text summary is a rich table, into a pipe too. Nor logging, as for a check, nor json (--format json).
 NOT_FOR_A_PLAIN_V3_MIGRATION = (
     "logging",
+    "json",
     "mintlang.runtime.interpreter",
     "mintlang.runtime.controller",
     "mintlang.runtime.motion",

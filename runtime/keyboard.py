@@ -2,9 +2,10 @@
 
 The manual's programs read the operator's terminal (000:12165-12171, 000:12202-12249); a
 simulator's operator is whoever feeds its standard input, as in ``printf '42\\n' | mint-run
-app.mnt``. Keys that are already there are taken as the program asks for them, without waiting,
-so an ``INKEY`` polling loop runs on; the simulator waits for more only when the program can go
-no further without them (a deadlock otherwise). Each byte is one key (Latin-1), so no byte is lost.
+app.mnt``, or types at the terminal it runs in. Keys that are already there are taken as the
+program asks for them, without waiting, so an ``INKEY`` polling loop runs on; the simulator waits
+for more only when the program can go no further without them (a deadlock otherwise). Each byte
+is one key (Latin-1), so no byte is lost.
 """
 
 from __future__ import annotations
@@ -12,18 +13,20 @@ from __future__ import annotations
 import os
 import select
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 
 _CHUNK = 65536
 
 
 class StandardInput:
-    """Keys read from a file descriptor that is not a terminal (a pipe or a file)."""
+    """Keys read from a file descriptor: a pipe, a file or a terminal (``at_terminal``)."""
 
-    def __init__(self, fd: int, before_wait: Callable[[], None] = lambda: None) -> None:
+    def __init__(self, fd: int, before_wait: Callable[[], None] = lambda: None, *, at_terminal: bool = False) -> None:
         """``before_wait`` runs before blocking for more keys: the prompt the reader answers must be out."""
         self._fd: int | None = fd
         self._before_wait = before_wait
+        self.at_terminal = at_terminal
 
     @property
     def ended(self) -> bool:
@@ -66,17 +69,37 @@ class StandardInput:
         return data.decode("latin-1")
 
 
-def standard_input(before_wait: Callable[[], None]) -> StandardInput | None:
-    """The process's standard input as keys when it is a pipe or a file; None for a terminal or none at all.
+def is_terminal() -> bool:
+    """Whether standard input is a terminal someone types at."""
+    try:
+        return os.isatty(sys.stdin.fileno())
+    except (AttributeError, ValueError, OSError):  # closed, or a stream of the caller's (click's CliRunner)
+        return False
 
-    A terminal is left alone: what it types arrives only after Enter, and the run's own output and
-    progress bar share the screen, so keys for a run at a terminal come from a scenario.
+
+@contextmanager
+def standard_input(before_wait: Callable[[], None]) -> Iterator[StandardInput | None]:
+    """The process's standard input as keys while the run lasts; None when there is none to read.
+
+    A terminal gives each key as it is typed and shows none of them itself (its mode while the run
+    lasts, restored after): the controller's terminal echoes what ``INPUT`` takes and nothing that
+    ``INKEY`` reads, and the simulated one does the same on standard output.
     """
     try:
-        fd = sys.stdin.fileno()  # none when closed, or replaced by a stream of the caller's (click's CliRunner)
-        if os.isatty(fd):
-            return None
+        fd = sys.stdin.fileno()
         os.fstat(fd)
     except (AttributeError, ValueError, OSError):
-        return None
-    return StandardInput(fd, before_wait)
+        yield None
+        return
+    if not os.isatty(fd):
+        yield StandardInput(fd, before_wait)
+        return
+    import termios  # noqa: PLC0415 - a run at a terminal only
+    import tty  # noqa: PLC0415
+
+    saved = termios.tcgetattr(fd)
+    tty.setcbreak(fd, termios.TCSANOW)  # keys typed ahead, before the run, are kept for it
+    try:
+        yield StandardInput(fd, before_wait, at_terminal=True)
+    finally:
+        termios.tcsetattr(fd, termios.TCSADRAIN, saved)

@@ -31,7 +31,7 @@ from mintlang.runtime.comms import PortUnavailable
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import StopReason
-from mintlang.runtime.keyboard import StandardInput, standard_input
+from mintlang.runtime.keyboard import StandardInput, is_terminal, standard_input
 from mintlang.runtime.report import as_json
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import ScenarioFileError, all_held, expectations_pass, merge
@@ -100,7 +100,8 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
 ) -> None:
     """Run the program as ``run`` was asked to (its docstring says what the run does)."""
     refuse_quiet_and_verbose(quiet, verbose)
-    progress = not quiet and sys.stderr.isatty()
+    typing = is_terminal()  # someone types the keys: no progress bar under them, each write shown at once
+    progress = not quiet and sys.stderr.isatty() and not typing
     errors = Messages(color, stderr=True, rich=progress)
     if config_path is not None and program_as_own_configuration([program], config_path):
         raise click.UsageError(f"--config {config_path} is the program {program} itself: name the configuration file")
@@ -145,8 +146,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     trace = _trace(axes, trace_path, plotting=plotting, chosen=chosen is not None) if tracing else None
     termination = _Termination()
     recorders = _Recorders(trace, termination, errors, until_ms, progress=progress)
-    stdout = _Stdout(live=realtime or host_port is not None)
-    keyboard = standard_input(before_wait=stdout.flush)
+    stdout = _Stdout(live=realtime or host_port is not None or typing)
     simulate = partial(
         run_source,
         source,
@@ -157,13 +157,12 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         limits=limits,
         echo=stdout.write,
         on_tick=recorders.on_tick,
-        on_start=partial(_attach_keyboard, keyboard),
         name=str(program),
     )
     with _on_sigterm(termination):
-        with _trace_open(trace), recorders.shown_progress():
+        with standard_input(before_wait=stdout.flush) as keyboard, _trace_open(trace), recorders.shown_progress():
             started = time.perf_counter()
-            result = _simulate(simulate, termination)
+            result = _simulate(partial(simulate, on_start=partial(_attach_keyboard, keyboard)), termination)
             wall_s = time.perf_counter() - started
         stdout.flush()
         if not quiet:
@@ -172,7 +171,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         if not (quiet and result.stop.reason in (StopReason.END, StopReason.UNTIL)):
             _describe_stop(result, errors)
         if keyboard is None and result.stop.reason is StopReason.DEADLOCK and KEYS_NONE_TYPES in result.stop.message:
-            # typing at a terminal is not read (keyboard.standard_input says why): a user there is told what works
+            # standard input closed or not there: a user is told what works
             errors.line("hint: keys can be piped to standard input: printf '42\\n' | mint-run PROGRAM", "yellow")
         if verbose:
             ratio = f" ({result.stop.time_ms / 1000 / wall_s:.1f}x real time)" if wall_s > 0 else ""

@@ -50,6 +50,11 @@ class Keyboard(Protocol):
     @property
     def ended(self) -> bool: ...
 
+    @property
+    def at_terminal(self) -> bool:
+        """Whether someone types the keys as the run goes: they see each key INPUT takes as it comes."""
+        ...
+
     def available(self) -> str: ...
 
     def wait(self, timeout: float | None) -> str: ...
@@ -65,6 +70,7 @@ class Terminal:
         self._echo = echo
         self._keys: deque[str] = deque()
         self._no_line_end = 0  # keys at the front of _keys known to hold no line end: each key is searched once
+        self._shown = 0  # keys at the front of _keys INPUT echoed as they were typed at a terminal
         self._after_cr = False  # INPUT took a CR that ended the keys: an LF typed next belongs to it (CR LF)
         self._watched: dict[str, str | None] = {}  # text -> the output that may begin it, None once printed
         self.column = 0
@@ -189,6 +195,7 @@ class Terminal:
         if self._keys:
             self._keys.popleft()
             self._no_line_end = max(self._no_line_end - 1, 0)
+            self._shown = max(self._shown - 1, 0)
         return code
 
     def peek_key(self) -> int:
@@ -202,7 +209,8 @@ class Terminal:
         """One line for ``INPUT``, or None until a CR or LF has been typed (the runtime retries next tick).
 
         CR LF counts as one line end. The typed line is echoed to the output, as a
-        terminal shows what the operator typed, so the log reads like the session.
+        terminal shows what the operator typed, so the log reads like the session; typed at a
+        terminal, each key is echoed as it comes, as the controller echoes it, not the line at Enter.
         """
         self._drop_lf_after_cr()
         end = self._line_end()
@@ -211,14 +219,22 @@ class Terminal:
             self._drop_lf_after_cr()
             end = self._line_end()
         if end is None:
+            self._show_typed()
             return None
         line = "".join(self._keys.popleft() for _ in range(end))
         self._no_line_end = 0
         self._after_cr = self._keys.popleft() == "\r"
         self._drop_lf_after_cr()
-        self.write(line)
+        self.write(line[self._shown :])
+        self._shown = 0
         self.newline()
         return line
+
+    def _show_typed(self) -> None:
+        """The keys of a line still being typed at a terminal, echoed as they come (none holds a line end)."""
+        if self.keyboard is not None and self.keyboard.at_terminal and len(self._keys) > self._shown:
+            self.write("".join(islice(self._keys, self._shown, None)))
+            self._shown = len(self._keys)
 
     def _line_end(self) -> int | None:
         """Where the first line end is in the keys; each key is looked at once however often INPUT asks, so

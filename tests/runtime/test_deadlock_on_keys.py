@@ -27,8 +27,8 @@ def test_an_input_no_scenario_answers_is_a_deadlock_that_says_it_waits_for_keys(
     assert "mint-run" not in result.stop.message  # the editor's and the debugger's runs show it too
 
 
-def test_mint_run_tells_a_user_whose_typing_it_does_not_read_how_to_give_keys(tmp_path: Path) -> None:
-    # keys come from a scenario or a pipe; typing at a terminal is not read (nor is the test runner's input)
+def test_mint_run_with_no_standard_input_to_read_tells_how_to_give_keys(tmp_path: Path) -> None:
+    # keys come from a scenario, a pipe or a terminal; the test runner's input is none of these
     result = mint_run(write(tmp_path, "qty.mnt", SOURCE))
     assert result.exit_code == 1
     assert "hint: keys can be piped to standard input: printf '42\\n' | mint-run PROGRAM" in result.output

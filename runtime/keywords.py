@@ -14,7 +14,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import replace
 
 from mintlang.dialect import Dialect
-from mintlang.keyworddb import database
+from mintlang.keyworddb import database, supplements
 from mintlang.keyworddb.model import Controller
 from mintlang.records import record
 from mintlang.runtime.errors import MintError
@@ -84,6 +84,15 @@ class KeywordTable:
         if record is not None and record.controllers and self.controller not in record.controllers:
             raise MintError(KEYWORD_NOT_SUPPORTED, detail=f"{name} is not available on this controller")
         return self._entries.get(name)
+
+    def refused_by_the_guide(self, name: str, *, write: bool) -> bool:
+        """Whether ``name``'s attributes on this controller forbid writing it (``write``) or reading it: the
+        controller's error 2000 or 2002 (000:18905-18918), whether or not the simulator has a handler for that use."""
+        keyword = database().keywords_of(self.dialect).get(name)
+        attributes = supplements.attributes_for(keyword, self.controller, self.dialect) if keyword is not None else None
+        if attributes is None:
+            return False
+        return not attributes.write if write else attributes.write and not attributes.read
 
     def names(self) -> Iterator[str]:
         return iter(sorted(self._entries))

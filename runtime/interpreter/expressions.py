@@ -167,7 +167,8 @@ class ExpressionCompiler:
     def keyword(self, reference: n.KeywordRef) -> Evaluate:
         access = self.table.in_program(reference.keyword)
         if access is None or access.read is None:
-            if access is not None and (access.write is not None or access.command is not None):
+            unreadable = access is not None and (access.write is not None or access.command is not None)
+            if unreadable or self.table.refused_by_the_guide(reference.keyword, write=False):  # a = WAIT
                 raise MintError(READ_OF_WRITE_ONLY, detail=reference.keyword)
             raise NotSimulated(reference.keyword, "read")
         read = access.read

@@ -208,7 +208,8 @@ class StatementCompiler:
             if access is None or access.write is None:
                 if access is not None and access.indexed_write is not None:  # MintMT's MOVEOUT(0) = 7: no bank
                     raise MintError(MISSING_PARAMETER, detail=f"{reference.keyword} needs its index after the axes")
-                if access is not None and (access.read is not None or access.command is not None):
+                unwritable = access is not None and (access.read is not None or access.command is not None)
+                if unwritable or self.table.refused_by_the_guide(reference.keyword, write=True):
                     raise MintError(WRITE_OF_READ_ONLY, detail=reference.keyword)  # read only, or a command (2000)
                 raise NotSimulated(reference.keyword, "write")
             _given_a_value(reference.keyword, statement.values)

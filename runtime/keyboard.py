@@ -13,8 +13,13 @@ from __future__ import annotations
 import os
 import select
 import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
+
+from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
+from mintlang.syntax.lexer import lex
+from mintlang.syntax.tokens import TokenKind
 
 _CHUNK = 65536
 
@@ -77,9 +82,21 @@ def is_terminal() -> bool:
         return False
 
 
+def reads_keys(sources: Iterable[str], dialect: Dialect) -> bool:
+    """Whether the program or its configuration asks for keys (``INPUT``, ``INKEY``): only then does a run
+    take the terminal's keys (and its mode), and give up the progress bar for them."""
+    inkey = {"INKEY", *database().keywords["INKEY"].abbreviations}
+    return any(
+        token.kind is TokenKind.INPUT or (token.kind is TokenKind.KEYWORD and token.text.upper() in inkey)
+        for source in sources
+        for token in lex(source, dialect).tokens
+    )
+
+
 @contextmanager
-def standard_input(before_wait: Callable[[], None]) -> Iterator[StandardInput | None]:
-    """The process's standard input as keys while the run lasts; None when there is none to read.
+def standard_input(before_wait: Callable[[], None], *, terminal: bool) -> Iterator[StandardInput | None]:
+    """The process's standard input as keys while the run lasts; None when there is none to read, or it is
+    a terminal and ``terminal`` is False (a program that asks for no key leaves the terminal as it is).
 
     A terminal gives each key as it is typed and shows none of them itself (its mode while the run
     lasts, restored after): the controller's terminal echoes what ``INPUT`` takes and nothing that
@@ -89,6 +106,9 @@ def standard_input(before_wait: Callable[[], None]) -> Iterator[StandardInput | 
         fd = sys.stdin.fileno()
         os.fstat(fd)
     except (AttributeError, ValueError, OSError):
+        yield None
+        return
+    if os.isatty(fd) and not terminal:
         yield None
         return
     if not os.isatty(fd):

@@ -31,7 +31,7 @@ from mintlang.runtime.comms import PortUnavailable
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import StopReason
-from mintlang.runtime.keyboard import StandardInput, is_terminal, standard_input
+from mintlang.runtime.keyboard import StandardInput, is_terminal, reads_keys, standard_input
 from mintlang.runtime.report import as_json
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario import ScenarioFileError, all_held, expectations_pass, merge
@@ -100,8 +100,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
 ) -> None:
     """Run the program as ``run`` was asked to (its docstring says what the run does)."""
     refuse_quiet_and_verbose(quiet, verbose)
-    typing = is_terminal()  # someone types the keys: no progress bar under them, each write shown at once
-    progress = not quiet and sys.stderr.isatty() and not typing
+    progress = not quiet and sys.stderr.isatty()
     errors = Messages(color, stderr=True, rich=progress)
     if config_path is not None and program_as_own_configuration([program], config_path):
         raise click.UsageError(f"--config {config_path} is the program {program} itself: name the configuration file")
@@ -126,6 +125,9 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
             click.echo(f"mint-run: {binary}: not run", err=True)
             sys.exit(_USAGE_ERROR)
     source, config = files[0].text, files[1].text if len(files) > 1 else None
+    # keys typed as the run goes: each write shows at once, and no progress bar holds back the prompt's line
+    typing = is_terminal() and reads_keys([file.text for file in files], Dialect(dialect))
+    progress = progress and not typing
     dialect_chosen = option_chosen(click.get_current_context(), "dialect")
     if not (quiet or dialect_chosen) and (hint := dialect_hint(str(program), source, Dialect(dialect))) is not None:
         click.echo(hint, err=True)
@@ -160,7 +162,11 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         name=str(program),
     )
     with _on_sigterm(termination):
-        with standard_input(before_wait=stdout.flush) as keyboard, _trace_open(trace), recorders.shown_progress():
+        with (
+            standard_input(stdout.flush, terminal=typing) as keyboard,
+            _trace_open(trace),
+            recorders.shown_progress(),
+        ):
             started = time.perf_counter()
             result = _simulate(partial(simulate, on_start=partial(_attach_keyboard, keyboard)), termination)
             wall_s = time.perf_counter() - started

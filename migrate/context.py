@@ -337,17 +337,29 @@ class Context:
         this context when the last pass changed nothing, and the copies the phase before it made
         held a fifth of the insertions' peak while its rules asked for other lines."""
         self._memo.clear()
+        self._forget_line_copies()
+
+    def _forget_line_copies(self) -> None:
         for file in self.files.values():
             for copies in ("_lines", "_uses"):
                 file.__dict__.pop(copies, None)
 
     def forget_model(self) -> None:
-        """Drop the semantic model and the run's per-line index it was built from (the lines' facts,
-        which the per-line cache would otherwise keep alive alone): a rule about to build something
-        as large beside them (a Mint v4 reading of the text) frees them first, once its own
-        questions are answered. A rule asking for the model later builds it again."""
+        """Drop the semantic model and what the run keeps of each line for the next pass: its facts
+        (the model's per-line index, which the per-line cache would otherwise keep alive alone), what
+        the pass's Mint v3 check found in it, and its tags, which this context has indexed already;
+        and the lines the pass copied (a slot for every line). A rule about to build something as
+        large beside them (a Mint v4 reading of the text) frees them first, once its own questions
+        are answered. A rule asking for the model or a line later builds it again, and a next pass
+        walks every line for its tags, facts and findings again: the last phase reads no tags and
+        checks no line as Mint v3, so only a pass of the same phase would (a line split)."""
+        from mintlang.analysis.analyser import clear_cache as forget_findings  # noqa: PLC0415 - loaded by the first check
+
         self.__dict__.pop("model", None)
+        self.tags.clear()  # those of this context's lines are indexed when it is first asked about one
         forget_facts()  # in a run (``apart``), the run's own lines; else the process's, which costs time only
+        forget_findings()
+        self._forget_line_copies()
 
     def memo(self, compute: Callable[..., T], *args: Hashable) -> T:
         """``compute(self, *args)``, worked out once per pass: rules ask some whole-application

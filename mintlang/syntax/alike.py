@@ -16,6 +16,7 @@ to a fresh v4 reading.
 from __future__ import annotations
 
 import re
+from operator import sub
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
@@ -88,7 +89,7 @@ class _Words:
         kinds = line.kinds  # searched by identity: hashing a kind costs a Python call
         if (_NOTEQUAL in kinds or _LESSEQUAL in kinds or _MOREEQUAL in kinds) and _spaced(line):
             return False
-        if line.content_end >= SHORTEST_TOO_LARGE and _long_number(line):
+        if len(line.text) >= SHORTEST_TOO_LARGE and _long_number(line):  # no token is longer than its line
             return False
         words = set(_WORD.findall(_code(line).upper()))
         if words <= self._same:
@@ -131,7 +132,12 @@ def _spaced(line: LexedLine) -> bool:
 
 
 def _long_number(line: LexedLine) -> bool:
-    """Whether a number on ``line`` is long enough for a v4 reading to check its size, which v3's does not."""
+    """Whether a number on ``line`` is long enough for a v4 reading to check its size, which v3's does not.
+
+    Most lines have no token that long at all: the lengths are worked out in C first, and the tokens
+    looked at one by one only beside a long one (a string, most often)."""
+    if max(map(sub, line.ends, line.starts), default=0) < SHORTEST_TOO_LARGE:
+        return False
     tokens = zip(line.kinds, line.starts, line.ends, strict=True)
     return any(kind is _NUMBER and end - start >= SHORTEST_TOO_LARGE for kind, start, end in tokens)
 

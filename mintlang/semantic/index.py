@@ -74,6 +74,9 @@ _new = tuple.__new__  # builds a named tuple without its Python-level constructo
 _READ, _READ_KEYWORD = NameUse.READ, Use.READ  # module constants: read per name and keyword written
 _CONSTANTS = frozenset({n.Number, n.CharConstant, n.ConstantRef, n.StringLiteral, type(None)})
 _DIVIDING = frozenset({"/", "MOD"})  # the parser reads % as MOD
+# Commands whose operand is a word of their own, neither a variable nor a keyword: PROTECT <password>
+# (000:5288) and VIEW <type>, VIEW VAR or VIEW CANBUSSTATE.2 (000:17184-17305).
+_WORD_OPERANDS = frozenset({"PROTECT", "VIEW"})
 
 
 class LineFacts(NamedTuple):
@@ -106,7 +109,7 @@ class _Walker:
             keyword = statement.keyword  # type: ignore[union-attr]
             use = Use.WRITE if statement.values is not None else Use.COMMAND  # type: ignore[union-attr]
             self.uses.append(KeywordUse(unit, statement, keyword, use))
-            if keyword.keyword != "PROTECT" or use is Use.WRITE:  # PROTECT <password>: not a variable
+            if keyword.keyword not in _WORD_OPERANDS or use is Use.WRITE:
                 self.expressions(unit, statement)
             else:  # though a call in it is still a call, and a division a division
                 self._calls_and_divisions(statement)

@@ -87,6 +87,11 @@ _SYMBOL_KINDS = {
 }
 
 
+def _begun(token: Token) -> bool:
+    """Whether ``token`` is a constant or name begun: ``_`` or ``__`` alone is no name yet (000:882-884)."""
+    return token.kind is TokenKind.INVALID and token.text.startswith("_")
+
+
 def _keyword_item(word: Keyword) -> types.CompletionItem:
     kind = types.CompletionItemKind.Function if word.kind is KeywordKind.FUNCTION else types.CompletionItemKind.Keyword
     detail = (
@@ -381,7 +386,7 @@ def complete(
         return []
     before = significant(tokens)
     partial: Token | None = None
-    if before and before[-1].end == len(prefix) and before[-1].kind in _PARTIAL_WORDS:
+    if before and before[-1].end == len(prefix) and (before[-1].kind in _PARTIAL_WORDS or _begun(before[-1])):
         partial = before.pop()  # the word being typed
     if partial is not None and partial.text.startswith("#"):
         return _events(snapshot, partial, cursor) if partial.kind is TokenKind.LABEL or not before else []

@@ -77,7 +77,7 @@ def _not_a_name(name: str, settings: Settings, kind: SymbolKind) -> str | None:
         what = f"the abbreviation of {full}" if full else f"the Mint keyword {name.upper()}"
         return f"'{name}' is {what}: {taken}"
     return (
-        f"'{name}' is not a valid Mint name: a name starts with a letter, or _ and a letter, "
+        f"'{name}' is not a valid Mint name: a name starts with a letter, or _ and a letter or digit, "
         "and goes on with letters, digits and _"
     )
 

@@ -206,6 +206,7 @@ MAX_TOKENS = 20_000
 _WS, _DOT, _NUMBER, _NAME, _COMMENT, _NEWLINE = _K.WS, _K.DOT, _K.NUMBER, _K.NAME, _K.COMMENT, _K.NEWLINE
 _INVALID, _STRING, _CHAR, _LABEL, _HASH = _K.INVALID, _K.STRING, _K.CHAR, _K.LABEL, _K.HASH
 _MINTMT, _V3 = Dialect.MINTMT, Dialect.V3  # read per line
+_UNDERSCORE = "an underscore that begins a name must be followed by a letter or a digit"
 
 
 # One tuple for each sequence of kinds, starts or ends that lines share: a program's lines
@@ -274,6 +275,8 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
                 comment_start = position
                 break
             kind = spellings.get(upper) or unlisted.get(upper) or _classified(words, upper)
+            if kind is _INVALID:
+                issues.append(_syntax_issue(position, len(text), f"{text!r} is not a valid name: {_UNDERSCORE}"))
             if mintmt and kind is _K.END and (closer := _mintmt_closer(line, found.end(), content_end)):  # type: ignore[union-attr]
                 kind, text = closer[0], line[position : closer[1]]
         elif text[0] == "." and (previous in _DOT_OWNERS or dot_number):

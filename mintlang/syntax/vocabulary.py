@@ -35,9 +35,14 @@ class Vocabulary:
     indices: Mapping[str, int]  # MintMT: how many of a keyword's bracketed items follow its axes
 
     def classify_unlisted(self, upper: str) -> TokenKind:
-        """The kind of an upper-case word that is no keyword spelling: constant, IN3-style or a name."""
+        """The kind of an upper-case word that is no keyword spelling: constant, IN3-style, a name, or
+        invalid (``_``, ``__x``)."""
         if upper[0] == "_":
-            return TokenKind.CONSTANT if upper in self.constants else TokenKind.NAME
+            if upper in self.constants:
+                return TokenKind.CONSTANT
+            # A name begins with _ only when a letter or digit follows it (000:882-884, 001:1342).
+            bad = (len(upper) == 1 or upper[1] == "_") and self.dialect is not Dialect.MINTMT
+            return TokenKind.INVALID if bad else TokenKind.NAME
         if upper[-1].isdigit() and self.split_channel(upper) is not None:
             return TokenKind.KEYWORD
         return TokenKind.NAME

@@ -51,7 +51,12 @@ async def test_rename_an_array_and_a_label(client, tmp_path):
 @SHARED
 @pytest.mark.parametrize(
     ("new_name", "reason"),
-    [("ypos", "same name as 'ypos'"), ("SPEED", "the Mint keyword SPEED"), ("two words", "not a valid")],
+    [
+        ("ypos", "same name as 'ypos'"),
+        ("SPEED", "the Mint keyword SPEED"),
+        ("two words", "not a valid"),
+        ("__pos", "not a valid"),  # _ begins a name only before a letter or digit (000:882-884)
+    ],
 )
 async def test_rename_refusals(shared_client, tmp_path, new_name, reason):
     uri = uri_of(tmp_path / "xy.mnt")

@@ -7,7 +7,8 @@ a v3 variable that can go unused (``FOR i = 0 TO 10`` counting moves is no
 unused ``i``, 001:5430-5436). Nor is a routine of nothing but DIMs: never
 calling it is the manual's way to keep variables non-volatile (3.2.5). A
 variable named in a statement that could not be parsed may be used there, and a
-DEFINE that cannot name a macro (3005) defines none: neither gets a second finding.
+DEFINE that cannot name a macro (3005), or could not be parsed (``DEFINE 05``),
+defines none: neither gets a second finding.
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.semantic.events import event_of
 from mintlang.semantic.model import SemanticModel
+from mintlang.semantic.symbols import Occurrence
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
@@ -46,8 +48,9 @@ def check(facts: Facts) -> Iterator[Finding]:
     }
     for symbol in symbols.macros.values():
         first = symbol.definitions[0] if symbol.definitions else None
-        if first is not None and not symbol.references and (first.unit, first.span) not in not_macros:
-            yield Finding(first.unit, own("W105", first.span, f"macro '{first.spelling}' is defined but never used"))
+        if first is None or symbol.references or (first.unit, first.span) in not_macros or _in_broken(facts, first):
+            continue
+        yield Finding(first.unit, own("W105", first.span, f"macro '{first.spelling}' is defined but never used"))
     dialect = model.program.dialect
     never_called = [
         (unit, identity, symbol)
@@ -75,6 +78,16 @@ def _declared_by_dim(facts: Facts) -> set[tuple[Unit, Span]]:
         for statement in indexed.statements
         if type(statement) is n.Dim
     }
+
+
+def _in_broken(facts: Facts, definition: Occurrence) -> bool:
+    """Whether ``definition`` is written in a statement that could not be parsed (``DEFINE 05 = 1``, a name
+    the lexer refuses): such a DEFINE defines no macro, as one whose name is no word (3005) defines none."""
+    for unit, line, statement in facts.statements(n.SyntaxError_):
+        span = line.span(statement.span)
+        if unit is definition.unit and span.start <= definition.span.start < span.end:
+            return True
+    return False
 
 
 def _names_in_broken_statements(facts: Facts) -> set[str]:

@@ -95,13 +95,18 @@ def _plural(count: int, word: str) -> str:
 
 
 def fixed_summary(outcome: Outcome, *, diff: bool) -> str:
-    """One line: what was fixed (or would be, with ``diff``) and in how many files, by code."""
+    """One line: what was fixed (or would be, with ``diff``) and in how many files, by code, and how many
+    files with fixes could not be written (standard error says why)."""
     total = sum(outcome.codes.values())
+    unwritten = (
+        f"{_plural(len(outcome.unwritten), 'file')} with fixes could not be written" if outcome.unwritten else ""
+    )
     if not total:
-        return "Nothing to fix."
+        return f"Nothing fixed: {unwritten}." if unwritten else "Nothing to fix."
     codes = ", ".join(f"{count} {code}" for code, count in sorted(outcome.codes.items()))
     verb = "Would fix" if diff else "Fixed"
-    return f"{verb} {_plural(total, 'finding')} in {_plural(outcome.files, 'file')} ({codes})."
+    fixed = f"{verb} {_plural(total, 'finding')} in {_plural(outcome.files, 'file')} ({codes})"
+    return f"{fixed}; {unwritten}." if unwritten else f"{fixed}."
 
 
 def fixable_summary(reports: Sequence[FileReport]) -> str | None:

@@ -88,6 +88,8 @@ def test_a_read_only_file_is_not_fixed_and_says_so(tmp_path: Path) -> None:
     assert f"mint check: cannot write {path}: the file is read-only; not fixed" in result.stderr
     assert path.read_text(encoding="utf-8") == PROGRAM
     assert "warning[W101]" in result.stdout  # the finding stays reported: the file still holds it
+    assert "\nNothing fixed: 1 file with fixes could not be written.\n" in result.stdout
+    assert "Nothing to fix" not in result.stdout
 
 
 def test_standard_input_is_shown_fixed_not_written(tmp_path: Path) -> None:

@@ -22,7 +22,6 @@ from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.semantic.events import event_of
 from mintlang.semantic.model import SemanticModel
-from mintlang.semantic.symbols import Occurrence
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
@@ -46,11 +45,16 @@ def check(facts: Facts) -> Iterator[Finding]:
         for unit, line, statement in facts.statements(n.Define)
         if not statement.name_is_word
     }
-    for symbol in symbols.macros.values():
-        first = symbol.definitions[0] if symbol.definitions else None
-        if first is None or symbol.references or (first.unit, first.span) in not_macros or _in_broken(facts, first):
-            continue
-        yield Finding(first.unit, own("W105", first.span, f"macro '{first.spelling}' is defined but never used"))
+    unused_macros = [
+        first
+        for symbol in symbols.macros.values()
+        if symbol.definitions and not symbol.references
+        if ((first := symbol.definitions[0]).unit, first.span) not in not_macros
+    ]
+    broken = _broken_statements(facts) if unused_macros else []
+    for first in unused_macros:
+        if not any(unit is first.unit and span.start <= first.span.start < span.end for unit, span in broken):
+            yield Finding(first.unit, own("W105", first.span, f"macro '{first.spelling}' is defined but never used"))
     dialect = model.program.dialect
     never_called = [
         (unit, identity, symbol)
@@ -80,14 +84,11 @@ def _declared_by_dim(facts: Facts) -> set[tuple[Unit, Span]]:
     }
 
 
-def _in_broken(facts: Facts, definition: Occurrence) -> bool:
-    """Whether ``definition`` is written in a statement that could not be parsed (``DEFINE 05 = 1``, a name
-    the lexer refuses): such a DEFINE defines no macro, as one whose name is no word (3005) defines none."""
-    for unit, line, statement in facts.statements(n.SyntaxError_):
-        span = line.span(statement.span)
-        if unit is definition.unit and span.start <= definition.span.start < span.end:
-            return True
-    return False
+def _broken_statements(facts: Facts) -> list[tuple[Unit, Span]]:
+    """Where the statements that could not be parsed are written: a DEFINE among them (``DEFINE 05 = 1``, a
+    name the lexer refuses) defines no macro, as one whose name is no word (3005) defines none. Found in
+    one pass over the lines, however many macros go unused."""
+    return [(unit, line.span(statement.span)) for unit, line, statement in facts.statements(n.SyntaxError_)]
 
 
 def _names_in_broken_statements(facts: Facts) -> set[str]:

@@ -108,11 +108,11 @@ def standard_input(before_wait: Callable[[], None], *, terminal: bool) -> Iterat
     except (AttributeError, ValueError, OSError):
         yield None
         return
-    if os.isatty(fd) and not terminal:
-        yield None
-        return
     if not os.isatty(fd):
         yield StandardInput(fd, before_wait)
+        return
+    if not terminal:
+        yield None
         return
     import termios  # noqa: PLC0415 - a run at a terminal only
     import tty  # noqa: PLC0415

@@ -213,6 +213,9 @@ def check(
     fixing = Fixing.asked(fix, unsafe_fixes, diff)
     work = marked(planned.jobs, planned.hidden, fixing) if fixing is not None else planned.jobs
     if planned.empty and not found.unreadable and not planned.problems:
+        if output_format != "text" and not diff:  # a tool reading the report still gets one, with nothing in it
+            with destination(output_file, _fail) as stream:
+                _write([], stream, output_format, statistics=statistics, quiet=quiet, color=color)
         _fail("no .mnt files found in " + ", ".join(str(p) for p in paths))
 
     workers = jobs or all_cores()
@@ -236,7 +239,7 @@ def check(
         results = [r.unfixed() if r.fixed and r.fixed.original.path in unwritten else r for r in results]
     reports = planned.reports(results)
     entries = _entries(unchecked, layer) if output_format != "text" else []
-    if (reports or entries) and not diff:
+    if (reports or entries or output_format != "text") and not diff:  # a machine format's empty report too
         with destination(output_file, _fail) as stream:
             _write(reports + entries, stream, output_format, statistics=statistics, quiet=quiet, color=color)
             if output_format == "text" and not quiet and not statistics:

@@ -480,6 +480,10 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
         return _error(2004, span, "there is a ')' too many")
     if opened > 0:
         return _error(2003, span, "a ')' is missing")
+    if at_end and not words.dialect.modern and segment[0] is _K.NAME and segment[-1] is _K.EQUAL:
+        # v3 names this one: "There is an assignment but no expression", avar = (001:12957-12964); a statement
+        # that cannot be parsed is refused by the compiler, as a syntax error is
+        return _error(2005, span, f"nothing after '=': give {line.texts[begin]} a value", at_run_time=False)
     if segment[0] is _K.IF and {"THEN", "DO"} <= expected and (at_end or kinds[index] not in _OPERATORS):
         return _error(2007, span, f"found {found}")
     if segment[0] is _K.FOR and "TO" in expected:

@@ -15,6 +15,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from dataclasses import field
 
+from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
 from mintlang.records import record
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError, NotSimulated
@@ -28,6 +30,7 @@ from mintlang.syntax import nodes as n
 
 Evaluate = Callable[[], float]
 
+READ_OF_COMMAND = 2000
 READ_OF_WRITE_ONLY = 2002
 INVALID_INDEX = 2016
 SYNTAX_ERROR = 2003
@@ -164,12 +167,22 @@ class ExpressionCompiler:
             raise NotSimulated(expression.name, "constant")
         return value
 
+    def read_refused(self, name: str) -> int:
+        """The error of reading ``name``, which gives no value: v3 calls reading a command "Read only or
+        Command" (``a = STOP``, 001:13083-13094) and keeps "Write only" for a write only keyword (``a = FLY``,
+        001:13073-13080); v4 names only the latter (000:18915-18918)."""
+        if self.semantics.dialect is Dialect.V3:
+            keyword = database().lookup_v3(name)
+            if keyword is not None and keyword.command and not keyword.write:
+                return READ_OF_COMMAND
+        return READ_OF_WRITE_ONLY
+
     def keyword(self, reference: n.KeywordRef) -> Evaluate:
         access = self.table.in_program(reference.keyword)
         if access is None or access.read is None:
             unreadable = access is not None and (access.write is not None or access.command is not None)
             if unreadable or self.table.refused_by_the_guide(reference.keyword, write=False):  # a = WAIT
-                raise MintError(READ_OF_WRITE_ONLY, detail=reference.keyword)
+                raise MintError(self.read_refused(reference.keyword), detail=reference.keyword)
             raise NotSimulated(reference.keyword, "read")
         read = access.read
         channels = self.channels(reference)

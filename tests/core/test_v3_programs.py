@@ -97,8 +97,20 @@ def test_v3_keywords_are_used_as_the_v3_guide_ticks_them() -> None:
     assert "FASTPOS is read only in Mint v3" in diagnostics[0].message
 
 
-@pytest.mark.parametrize("source", ["a = CLS\n", "PRINT LASTERR\n"])
-def test_v3_reading_a_command_is_write_only(source: str) -> None:
-    # 001:13073-13081: "Write only" is the error of reading a write only variable or a command
+@pytest.mark.parametrize("source", ["a = STOP\n", "a = CLS\n", "PRINT LASTERR\n"])
+def test_v3_reading_a_command_is_read_only_or_command(source: str) -> None:
+    # 001:13083-13094: "Read only or Command" is the error of a read of a command; its example is a = STOP
     (diagnostic,) = mintlang.check(source, dialect="v3")
-    assert diagnostic.code == "E2002" and "is a command in Mint v3 and gives no value" in diagnostic.message
+    assert diagnostic.code == "E2000" and "is a command in Mint v3 and gives no value" in diagnostic.message
+
+
+def test_v3_reading_a_write_only_keyword_is_write_only() -> None:
+    # 001:13073-13080: "Write only" is the error of a read of a write only keyword; its example is a = FLY
+    (diagnostic,) = mintlang.check("a = FLY\n", dialect="v3")
+    assert diagnostic.code == "E2002" and "FLY can only be written in Mint v3, not read" in diagnostic.message
+
+
+def test_v3_an_assignment_with_no_expression_is_no_expression() -> None:
+    # 001:12957-12964: "No expression" is an assignment with nothing after '='; its example is avar =
+    (diagnostic,) = mintlang.check("avar =\n", dialect="v3")
+    assert diagnostic.code == "E2005" and not diagnostic.at_run_time

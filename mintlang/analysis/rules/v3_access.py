@@ -1,11 +1,11 @@
 """Mint v3 keywords used the way the v3 guide's attribute ticks allow (read, write).
 
 The v3 reading is what mint-migrate starts from: a write to a keyword the v3
-guide ticks as read only (``FASTPOS.0 = 5``, 001:7956) or a read of one it ticks
-as write only or as a command (``a = CLS``, "Write only", 001:13073-13081) was
-already an error on the v3 controller (2000 / 2002, as v4 numbers them), so the
-migrator reports such a line as broken in v3 already rather than as something
-the migration broke.
+guide ticks as read only (``FASTPOS.0 = 5``, 001:7956), a read of one it ticks
+as write only (``a = FLY``, "Write only", 001:13073-13080) or a read of a command
+(``a = STOP``, "Read only or Command", 001:13083-13094) was already an error on
+the v3 controller (2000 / 2002, as v4 numbers them), so the migrator reports such
+a line as broken in v3 already rather than as something the migration broke.
 """
 
 from __future__ import annotations
@@ -28,9 +28,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             what = "a command" if keyword.command else "read only"
             yield Finding(use.unit, mint_error(2000, span, f"{name} is {what} in Mint v3 and cannot be given a value"))
         elif use.use is Use.READ and not keyword.read:
-            what = (
-                "is a command in Mint v3 and gives no value"
-                if keyword.command
-                else "can only be written in Mint v3, not read"
-            )
-            yield Finding(use.unit, mint_error(2002, span, f"{name} {what}"))
+            if keyword.command and not keyword.write:  # a = STOP (001:13083-13094)
+                yield Finding(use.unit, mint_error(2000, span, f"{name} is a command in Mint v3 and gives no value"))
+            else:  # a = FLY (001:13073-13080)
+                yield Finding(use.unit, mint_error(2002, span, f"{name} can only be written in Mint v3, not read"))

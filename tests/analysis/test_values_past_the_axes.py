@@ -7,13 +7,18 @@ second value after ``MOVEA.0`` has no axis to take it; a circle needs two axes, 
 named with the dot misses its second (2001, as ``CIRCLEA[0]`` does). Without a selector
 the values go to the default axes, which never outnumber the controller's axes
 (000:605-606): a thirteenth value on the twelve-axis NextMove PCI is 2017 whatever
-AXES says.
+AXES says, and a fourth on a one-axis MintDrive. The finding points at the first value
+written past the axes: in ``SPEED[0,1] = ,,,20`` the third and fourth places hold
+nothing, so it is the 20 (000:636-639: an empty place skips an axis).
+
+What the AXES list is (000:590-606) is checked in ``test_values_past_the_axes_list``.
 """
 
 from __future__ import annotations
 
 import pytest
 
+import mintlang
 from tests.analysis.placed import placed_codes
 
 
@@ -25,6 +30,7 @@ from tests.analysis.placed import placed_codes
         pytest.param("JOG.(1) = 3, 4\n", [("E2017", 1, 14)], id="axis-as-an-expression"),
         pytest.param("CIRCLEA.0 = 1, 2, 90\n", [("E2001", 1, 8)], id="circle-on-one-axis"),
         pytest.param("SCALE = " + ", ".join(["1"] * 13) + "\n", [("E2017", 1, 45)], id="more-than-any-axes"),
+        pytest.param("SPEED[0,1] = ,,,20\n", [("E2017", 1, 17)], id="past-the-list-after-empty-places"),
     ],
 )
 def test_values_past_the_addressed_axes_are_an_error(source: str, expected: list[tuple[str, int, int]]) -> None:
@@ -42,3 +48,13 @@ def test_values_past_the_addressed_axes_are_an_error(source: str, expected: list
 )
 def test_as_many_values_as_axes_is_clean(source: str) -> None:
     assert placed_codes(source) == []
+
+
+def test_a_fourth_value_on_a_one_axis_controller_is_an_error() -> None:
+    source = "SPEED = ,,,20\n"  # the 20 goes to axis 3; a MintDrive has axis 0 alone
+    [finding] = mintlang.check(source, controller="mintdrive")
+    assert (finding.code, source[finding.span.start : finding.span.end]) == ("E2017", "20")
+
+
+def test_a_fourth_value_on_a_four_axis_controller_is_clean() -> None:
+    assert mintlang.check("SPEED = ,,,20\n", controller="nextmove-bx") == []  # 000:606-608, AXES[0,1,2,3]

@@ -84,7 +84,8 @@ RULES: tuple[Rule, ...] = (
     ),
     Rule(
         "addressing",
-        each_line=addressing.each_line,
+        addressing.check,
+        addressing.each_line,
         dialects=_V4_ATTRIBUTES,
         looks_at=LineParts(frozenset({n.Axes}), keyword_uses=True),
     ),

@@ -13,10 +13,10 @@ node, 31 CAN bus, 35/36 terminal (Dot Parameters table, chapter 12.2).
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.traversal import KeywordUse, LineScope, Use
+from mintlang.analysis.traversal import Facts, KeywordUse, LineScope, Use
 from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
@@ -82,6 +82,81 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
     for statement in scope.facts.statements:
         if isinstance(statement, n.Axes):
             yield from _axes_statement(scope.unit, statement, scope)
+
+
+# A straight run of lines: statements that neither jump, branch, loop nor may be arrived at from elsewhere.
+_RUN_ON = frozenset({n.Assignment, n.KeywordStatement, n.Pause, n.Dim, n.Define, n.Print, n.Input, n.Axes})
+_AXES = frozenset({n.Axes})
+
+
+def check(facts: Facts) -> Iterator[Finding]:
+    """Writes to the default axes with more values than the AXES list set before them: 2017 when the line runs.
+
+    AXES sets the default axes at run time (000:590-606, 627-639), so its list is known only up to whatever could
+    change it unseen or be arrived at without it: a label (a GOTO or GOSUB may land there), a jump, a
+    block word, IF .. THEN, a statement that could not be read. More values than the controller's axes
+    the line rule reports; the values that fit it but not the list are reported here.
+    """
+    model = facts.model
+    if next(facts.lines.with_kinds(_AXES), None) is None:
+        return  # no program sets AXES: the default axes are the controller's
+    keywords = database().keywords_of(model.program.dialect)
+    controller = model.controller
+    for unit, _ in model.documents():
+        listed: tuple[int, int] | None = None  # how many axes the AXES in force lists, and its line
+        for line, line_facts in facts.lines.of(unit):
+            if line.syntax.label is not None:
+                listed = None
+            if listed is None and n.Axes not in line_facts.kinds:
+                continue
+            for statement in line.syntax.statements:
+                kind = type(statement)
+                if kind is n.Axes:
+                    listed = _listed(statement, line.number, controller)  # type: ignore[arg-type]
+                elif kind not in _RUN_ON:
+                    listed = None
+                elif listed is not None and kind is n.KeywordStatement:
+                    found = _beyond_the_list(statement, keywords, controller, listed)  # type: ignore[arg-type]
+                    if found is not None:
+                        yield Finding(unit, mint_error(2017, line.span(found[0]), found[1]))
+
+
+def _listed(statement: n.Axes, number: int, controller: ControllerProfile) -> tuple[int, int] | None:
+    """How many axes ``AXES[...]`` lists, and its line; None where it fails itself (2001, 2017, 2018)."""
+    axes = statement.selector.axes if statement.selector is not None else ()
+    if not axes or None in axes or len(axes) > controller.axis_count:
+        return None
+    constants = [constant_integer(item) for item in axes]
+    known = [axis for axis in constants if axis is not None]
+    return (len(axes), number) if len(set(known)) == len(known) else None
+
+
+def _beyond_the_list(
+    statement: n.KeywordStatement,
+    keywords: Mapping[str, Keyword],
+    controller: ControllerProfile,
+    listed: tuple[int, int],
+) -> tuple[Span, str] | None:
+    """Where a write to the default axes has more values than the AXES list in force, and what to say."""
+    ref = statement.keyword
+    keyword = keywords.get(ref.keyword)
+    if (
+        keyword is None
+        or keyword.addressing is not Addressing.AXIS
+        or keyword.name in CIRCLES
+        or (keyword.controllers and controller.controller not in keyword.controllers)
+        or ref.selector is not None
+        or ref.channel is not None
+        or statement.values is None
+        or len(statement.values) > controller.axis_count  # the line rule's finding
+    ):
+        return None
+    count, number = listed
+    span = _past(statement, count)
+    if span is None:
+        return None
+    axes = f"ax{'is' if count == 1 else 'es'}"
+    return span, f"{len(statement.values)} values for {count} {axes} (the AXES list of line {number})"
 
 
 def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
@@ -157,15 +232,19 @@ def _circle(use: KeywordUse, selector: n.Selector, name: str, listed: int) -> It
 def _too_many_values(use: KeywordUse, most: int, detail: Callable[[int], str]) -> Iterator[Finding]:
     """2017 at the first value past ``most`` in a write."""
     statement = use.statement
-    if (
-        use.use is Use.WRITE
-        and isinstance(statement, n.KeywordStatement)
-        and statement.values is not None
-        and len(statement.values) > most
-    ):
-        extra = statement.values[most]
-        span = extra.span if extra is not None else statement.span
-        yield Finding(use.unit, mint_error(2017, span, detail(len(statement.values))))
+    if use.use is Use.WRITE and isinstance(statement, n.KeywordStatement):
+        span = _past(statement, most)
+        if span is not None and statement.values is not None:
+            yield Finding(use.unit, mint_error(2017, span, detail(len(statement.values))))
+
+
+def _past(statement: n.KeywordStatement, most: int) -> Span | None:
+    """Where a write has more than ``most`` values: its first value written past them (in ``SPEED[0,1] = ,,,20``
+    the 20), or the statement where those are all left out; None if the values fit."""
+    values = statement.values
+    if values is None or len(values) <= most:
+        return None
+    return next((value.span for value in values[most:] if value is not None), statement.span)
 
 
 def _axis_list(unit: Unit, selector: n.Selector, scope: LineScope) -> Iterator[Finding]:

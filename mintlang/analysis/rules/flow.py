@@ -14,7 +14,8 @@
   that only GOTO reaches is a place in the code around it, not a subroutine.
 * GOTO out of an open IF block or loop (W113): the block is never closed, and
   done repeatedly this "will eventually" overflow the controller's stack (GOTO
-  in 10.3). The overflow happens at run time, so the analyser only warns.
+  in 10.3). The overflow happens at run time, so the analyser only warns, once
+  at the GOTO, naming every block it leaves open with its line.
 * EXIT outside any loop of its subroutine or handler: error 2003 when it runs.
 
 An endless loop (LOOP, WHILE 1, REPEAT .. UNTIL 0) that no EXIT or GOTO leaves
@@ -414,10 +415,19 @@ def _jumps_out_of_blocks(unit: Unit, document: Document, model: SemanticModel, f
         left = [block for block in blocks if _contains(block, line.number) and not _contains(block, target)]
         if left:
             detail = (
-                f"GOTO {statement.label.text} leaves the {left[-1].kind.value} block of line {left[-1].opener.line} "
-                "open; done repeatedly, this overflows the stack (error 2015)"
+                f"GOTO {statement.label.text} leaves {_blocks_named(left)} open; "
+                "done repeatedly, this overflows the stack (error 2015)"
             )
             yield Finding(unit, own("W113", line.span(statement.span), detail))
+
+
+def _blocks_named(blocks: list[Block]) -> str:
+    """Each block a jump leaves, outermost first, by its kind and line: each one is left on the stack."""
+    named = [
+        f"the {block.kind.value} block of line {block.opener.line}"
+        for block in sorted(blocks, key=lambda block: block.opener)
+    ]
+    return named[0] if len(named) == 1 else f"{', '.join(named[:-1])} and {named[-1]}"
 
 
 def _contains(block: Block, line: int) -> bool:

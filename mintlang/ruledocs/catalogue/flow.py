@@ -124,7 +124,8 @@ GROUP = Group(
         ),
         RuleDoc(
             "W113",
-            catches="GOTO from inside an IF block or a loop to a label outside it.",
+            catches="GOTO from inside an IF block or a loop to a label outside it. One warning at the GOTO "
+            "names every block it leaves, each with the line it opens on.",
             why="The block is never closed: the controller keeps it on its stack. Done repeatedly, as in a "
             "loop, this overflows the stack (error 2015) when the program runs.",
             example=Example(

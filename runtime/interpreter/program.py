@@ -44,6 +44,7 @@ class Linked:
     configuration_handlers: Mapping[str, int]  # the configuration file's
     names: Names
     event_block_ends: Mapping[int, int]  # a MintMT Event block's first statement -> its End Event, by pc
+    elses: Mapping[int, tuple[int, int]]  # an IF block's ELSE -> its IF .. DO and its ENDIF, by pc
 
 
 def link(
@@ -89,7 +90,12 @@ def link(
     if program_start == 0:  # no configuration file: the program runs first, from its entry
         vm.pc = entry
     event_block_ends = _event_block_ends(model.structures[Unit.PROGRAM].blocks, program_positions)
-    return Linked(handlers.get(Unit.PROGRAM, {}), handlers.get(Unit.CONFIGURATION, {}), names, event_block_ends)
+    elses = {
+        pc: ends
+        for (unit, _), (positions, *_) in zip(units, layouts, strict=True)
+        for pc, ends in _elses(model.structures[unit].blocks, positions).items()
+    }
+    return Linked(handlers.get(Unit.PROGRAM, {}), handlers.get(Unit.CONFIGURATION, {}), names, event_block_ends, elses)
 
 
 def _compiled(compiler: StatementCompiler, statement: n.Statement, place: Place, pc: int) -> Operation:
@@ -145,6 +151,16 @@ def _event_block_ends(blocks: tuple[Block, ...], positions: Mapping[Place, int])
         positions[block.opener] + 1: positions[block.closer]
         for block in blocks
         if block.kind is BlockKind.EVENT and block.closer is not None
+    }
+
+
+def _elses(blocks: tuple[Block, ...], positions: Mapping[Place, int]) -> dict[int, tuple[int, int]]:
+    """Each closed IF block's ELSE with its opener and ``ENDIF``: the ELSE is the jump that ends the true
+    branch, which coverage counts for the ENDIF (the block ended there) rather than for the ELSE."""
+    return {
+        positions[block.middle]: (positions[block.opener], positions[block.closer])
+        for block in blocks
+        if block.middle is not None and block.closer is not None
     }
 
 

@@ -131,12 +131,13 @@ class Recorder:
         if controller is None:  # the program never started
             return ()
         sites = controller.vm.sites
+        ran = self._ran_as_written(controller)
         found = []
         for unit, path in self.files.items():
             pcs = [pc for pc, site in enumerate(sites) if site.unit == unit and site.kind not in _DECLARATIONS]
             lines: dict[int, int] = {}
             for pc in pcs:
-                lines[sites[pc].line] = max(lines.get(sites[pc].line, 0), self.ran[pc])
+                lines[sites[pc].line] = max(lines.get(sites[pc].line, 0), ran[pc])
             branches = tuple(
                 Branch(sites[pc].line, sites[pc].kind, (self.outcomes[pc][0], self.outcomes[pc][1]))
                 for pc in pcs
@@ -145,6 +146,15 @@ class Recorder:
             handlers = self._handlers(unit, controller)
             found.append(FileCoverage(str(path), lines, branches, handlers))
         return tuple(found)
+
+    def _ran_as_written(self, controller: Controller) -> list[int]:
+        """How often each operation ran as a reader of the program counts it: an ELSE runs as the jump that
+        ends the true branch, but its line is the start of the false branch and the block ends at ENDIF."""
+        ran = list(self.ran)
+        for middle, (opener, closer) in controller.linked.elses.items():
+            ran[closer] += self.ran[middle]  # each true branch ended at the ENDIF it jumped past
+            ran[middle] = self.outcomes[opener][1]  # each time the IF was not taken, the ELSE branch began
+        return ran
 
     def _handlers(self, unit: str, controller: Controller) -> dict[str, tuple[int, int]]:
         linked = controller.linked

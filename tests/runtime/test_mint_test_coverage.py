@@ -112,3 +112,18 @@ def test_a_line_failing_into_onerror_ran_once(tmp_path: Path) -> None:
     program = "REM @expect n = 1\nDIM v\nDIM n\nv = POS.12\nEND\n#ONERROR\n  n = n + 1\nRETURN\n"
     lines = _records(tmp_path, program, ("DA:", "L"))
     assert lines == ["DA:2,1", "DA:3,1", "DA:4,1", "DA:5,1", "DA:7,1", "DA:8,1", "LF:6", "LH:6"]
+
+
+def test_an_else_line_counts_its_branch_and_the_endif_counts_every_branch_that_ended(tmp_path: Path) -> None:
+    # The first IF block runs its true branch for i = 1 and its ELSE branch for i = 2: the ELSE line (7) began
+    # a branch once and the ENDIF (9) ended one twice. The second block's IF is true: its ELSE line (13) and
+    # branch (14) never ran, its ENDIF (15) ended the true branch once.
+    program = (
+        "REM @expect a = 2\nDIM a\nDIM i\nFOR i = 1 TO 2\n  IF i = 1 DO\n    a = a + 1\n  ELSE\n    a = a + 1\n"
+        "  ENDIF\nNEXT\nIF a = 2 DO\n  a = a\nELSE\n  a = 0\nENDIF\nEND\n"
+    )
+    lines = _records(tmp_path, program, ("DA:", "L"))
+    assert lines == [
+        *("DA:2,1", "DA:3,1", "DA:4,1", "DA:5,2", "DA:6,1", "DA:7,1", "DA:8,1", "DA:9,2", "DA:10,2"),
+        *("DA:11,1", "DA:12,1", "DA:13,0", "DA:14,0", "DA:15,1", "DA:16,1", "LF:15", "LH:13"),
+    ]

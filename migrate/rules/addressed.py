@@ -110,7 +110,10 @@ def axis_list(axes: tuple[int, ...]) -> str:
 @per_pass
 def read_axes(context: Context, keywords: Collection[str]) -> tuple[int, ...] | None:
     """The sorted axes the application reads any of ``keywords`` (a tuple or frozenset) on; a
-    bracket-less read is the first default axis (v3:1127). None when one of them cannot be known."""
+    bracket-less read is the first default axis (v3:1127). None when one of them cannot be known.
+
+    A v4 keyword the v3 reader does not know is a user name when bare: ``IF HOMESWITCH THEN``, as
+    S-READ writes ``IF HOME THEN``, reads a name, and that read is the first default axis too."""
     found: set[int] = set()
     for file, line, statement, keyword in keyword_refs(context, *keywords):
         if written(statement, keyword):
@@ -123,4 +126,20 @@ def read_axes(context: Context, keywords: Collection[str]) -> tuple[int, ...] | 
         if axes is None:
             return None
         found.update(axes)
+    for file, start in _bare_name_reads(context, keywords):
+        default = default_axes(context, file, start)
+        if not default:
+            return None
+        found.add(default[0])
     return tuple(sorted(found))
+
+
+def _bare_name_reads(context: Context, names: Collection[str]) -> Iterator[tuple[FileView, int]]:
+    """Where a statement reads one of ``names`` as a user name: the file and where the statement starts."""
+    wanted = frozenset(map(n.identity, names))
+    for file, line in context.placed(*map(name_tag, names)):
+        for statement in n.flatten_statements(line.syntax.statements):
+            for root in n.expressions_of(statement):
+                for node in n.walk_expression(root):
+                    if isinstance(node, n.VariableRef) and node.name.identity in wanted:
+                        yield file, line.origin + statement.span.start

@@ -18,7 +18,7 @@ from collections.abc import Callable, Iterator
 from mintlang.dialect import Dialect
 from mintlang.migrate.context import LABEL, Context, per_pass
 from mintlang.migrate.model import Phase, RuleClass
-from mintlang.migrate.rules.addressed import MOVES, axis_list, moved_axes, on_target, writes_any
+from mintlang.migrate.rules.addressed import MOVES, axis_list, moved_axes, on_target, read_axes, writes_any
 from mintlang.migrate.rules.axes import default_axes, selector_axes
 from mintlang.migrate.rules.base import Action, Rule, keyword_refs
 from mintlang.migrate.rules.notes import prologue_notes
@@ -66,9 +66,11 @@ _LIMIT_WORDS = ("LIMIT", "LIMITFORWARD", "LIMITREVERSE", "DISLIMIT", "ENLIMIT")
 
 
 def _homing(context: Context) -> tuple[int, ...] | None:
-    """The axes HOME moves; all of them when the home switch is only read."""
-    axes = moved_axes(context, ("HOME",))
-    return None if axes == () and _mentions(context, frozenset({"HOME", "HOMESWITCH"})) else axes
+    """The axes HOME moves and those whose home switch is read (reading HOME gives the switch's state,
+    v3:3509, and S-READ writes it as HOMESWITCH; a bare read is the first default axis, v3:1127); all of
+    them when one cannot be known."""
+    moved, read = moved_axes(context, ("HOME",)), read_axes(context, ("HOME", "HOMESWITCH"))
+    return None if moved is None or read is None else tuple(sorted({*moved, *read}))
 
 
 def _stopping(context: Context) -> tuple[int, ...] | None:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import mintlang
 from mintlang.diagnostics import Severity
+from mintlang.migrate import migrate
 from tests.migrate.helpers import one_rule, rewritten
 
 
@@ -54,3 +55,23 @@ def test_the_notes_go_into_the_configuration_file() -> None:
 def test_limit_switches_read_without_moves_still_need_their_inputs() -> None:
     notes = rewritten("S-PROLOGUE", "AXES[0,1]\nPAUSE LIMIT.0 = 0 & LIMIT.1 = 0\n")
     assert "LIMITFORWARDINPUT[0,1] = <input>;" in notes and "LIMITREVERSEINPUT[0,1] = <input>;" in notes
+
+
+def _home_notes(source: str) -> list[str]:
+    """The HOMEINPUT note of a whole migration: S-READ writes a read of HOME as HOMESWITCH first."""
+    return [item.reason for item in migrate(source).manual if item.rule == "S-PROLOGUE" and "HOMEINPUT" in item.reason]
+
+
+def test_a_bare_home_read_needs_the_input_of_the_first_default_axis_only() -> None:
+    # reading HOME gives the home switch (v3:3509); without an axis it reads the first axis of AXES (v3:1127),
+    # which before any AXES statement is axis 0 (the power-up AXES starts at 0, v3:1029)
+    assert _home_notes('IF HOME THEN PRINT "homed"\n') == ["HOMEINPUT[0] = <input>; : REM v3 home input was dedicated"]
+    assert _home_notes("AXES[1,2]\nIF HOME THEN PRINT 1\n") == [
+        "HOMEINPUT[1] = <input>; : REM v3 home input was dedicated"
+    ]
+
+
+def test_a_home_switch_read_adds_its_axis_to_those_homed() -> None:
+    assert _home_notes("HOME.1 = 0\nIF HOME THEN PRINT 1\n") == [
+        "HOMEINPUT[0,1] = <input>; : REM v3 home input was dedicated"
+    ]

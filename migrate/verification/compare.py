@@ -6,10 +6,14 @@ long as that one runs. A run cut short (``--until-ms``, the wall clock, a
 keyword the simulator does not model) is known only up to its last sample, so
 the comparison stops there. How each run ended is compared too: a run over for
 good must be met by the other's end of the same kind (an error by an error,
-whose messages differ by dialect, X-PRINT) within ``TIME_MS``.
+whose messages differ by dialect, X-PRINT) within ``TIME_MS``, and an error by
+one the migrated run meets on a line made from the same statement (``origins``):
+a migration that fails on the next line has run the one the original failed on.
 """
 
 from __future__ import annotations
+
+from collections.abc import Mapping
 
 from mintlang.migrate.verification import printed, signals, tolerance
 from mintlang.migrate.verification.model import Divergence, Place, Stopped
@@ -34,10 +38,13 @@ def stopped(run: Recording) -> Stopped:
     return Stopped(stop.reason.value, stop.time_ms, line, stop.message)
 
 
-def differences(v3: Recording, v4: Recording) -> list[Divergence]:
-    """Every channel's first difference up to the horizon, the earliest first."""
+def differences(v3: Recording, v4: Recording, origins: Mapping[Place, frozenset[int]]) -> list[Divergence]:
+    """Every channel's first difference up to the horizon, the earliest first; ``origins`` gives the lines of
+    the original each line of the migration was made from (``runnable.origins``)."""
     until = horizon(v3, v4)
-    return in_order([*_stops(v3, v4, until), *printed.differences(v3, v4, until), *signals.differences(v3, v4, until)])
+    return in_order(
+        [*_stops(v3, v4, until, origins), *printed.differences(v3, v4, until), *signals.differences(v3, v4, until)]
+    )
 
 
 def in_order(found: list[Divergence]) -> list[Divergence]:
@@ -45,9 +52,10 @@ def in_order(found: list[Divergence]) -> list[Divergence]:
     return sorted(found, key=lambda found: (found.time_ms, _ORDER.index(found.what.split(" ")[0])))
 
 
-def _stops(v3: Recording, v4: Recording, until: int) -> list[Divergence]:
+def _stops(v3: Recording, v4: Recording, until: int, origins: Mapping[Place, frozenset[int]]) -> list[Divergence]:
     """How the runs ended, against each other: a run over for good while the other went on more than
-    ``TIME_MS`` past it, two that ended differently (an error against an end), or two errors far apart.
+    ``TIME_MS`` past it, two that ended differently (an error against an end), two errors on different
+    statements, or two errors far apart.
 
     The v4 program ending first is no difference by itself: v3's GO waits for the move ahead (V3-10), so
     its program runs on after v4's has ended, and what it does meanwhile shows in the other channels."""
@@ -62,9 +70,21 @@ def _stops(v3: Recording, v4: Recording, until: int) -> list[Divergence]:
     if first.stop.reason != second.stop.reason:
         time = first.time_ms if first.noticed(second.time_ms) else second.time_ms
         return [_divergence(runs, time, timing_only=False)]
-    if first.stop.reason == StopReason.ERROR.value and first.noticed(second.time_ms):
+    if first.stop.reason != StopReason.ERROR.value:
+        return []
+    if not _same_statement(stopped(v3).line, stopped(v4).line, origins):
+        return [_divergence(runs, second.time_ms, timing_only=False)]
+    if first.noticed(second.time_ms):
         return [_divergence(runs, first.time_ms, timing_only=True)]
     return []
+
+
+def _same_statement(v3: Place | None, v4: Place | None, origins: Mapping[Place, frozenset[int]]) -> bool:
+    """Whether the v4 run stopped on a line made from the v3 line its run stopped on; a line unknown, or one
+    the migrator added, may be: only two lines known apart are told apart."""
+    if v3 is None or v4 is None or v4 not in origins:
+        return True
+    return v3.unit == v4.unit and v3.line in origins[v4]
 
 
 @record

@@ -17,7 +17,9 @@ the v4 reader does not know.
 
 from __future__ import annotations
 
+import difflib
 import re
+from collections.abc import Mapping
 
 import mintlang
 from mintlang.diagnostics import split_lines
@@ -59,6 +61,23 @@ def migrated(result: MigrationResult, controller: str) -> tuple[Application, tup
 def flagged_places(result: MigrationResult) -> set[Place]:
     """The lines of the migrated files that a manual item marks (application notes mark none)."""
     return {Place(unit.value, item.line) for unit, part in _parts(result) for item in part.manual if not item.note}
+
+
+def origins(result: MigrationResult) -> Mapping[Place, frozenset[int]]:
+    """The lines of the original each line of the migrated files was made from: its own where a run of lines
+    is unchanged or rewritten line for line, every line of a run rewritten into more or fewer lines, none for
+    a line the migrator added. Disabling a line (``migrated``) keeps the numbers, so they hold for the v4 run."""
+    found: dict[Place, frozenset[int]] = {}
+    for unit, part in _parts(result):
+        old, new = split_lines(part.source), split_lines(part.text)
+        for tag, i1, i2, j1, j2 in difflib.SequenceMatcher(None, old, new, autojunk=False).get_opcodes():
+            if tag == "insert":
+                continue
+            whole = frozenset(range(i1 + 1, i2 + 1))
+            for j in range(j1, j2):
+                own = i2 - i1 == j2 - j1
+                found[Place(unit.value, j + 1)] = frozenset((i1 + j - j1 + 1,)) if own else whole
+    return found
 
 
 def _order(place: Place) -> tuple[bool, int]:

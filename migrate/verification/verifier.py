@@ -74,10 +74,11 @@ def conclude(
     migration. ``what_if`` records the migration with v3's trigonometry, to tell the differences M-TRIG
     explains (``explained``) from divergences when there are any."""
     comparable = not (original.refused or (migrated.refused and short))  # else one of them never ran
-    found = compare.differences(original, migrated) if comparable else []
+    origins = runnable.origins(result)
+    found = compare.differences(original, migrated, origins) if comparable else []
     expected: list[Divergence] = []
     if found and what_if is not None:
-        found, expected = explained.split(found, compare.differences(original, what_if()))
+        found, expected = explained.split(found, compare.differences(original, what_if(), origins))
     flagged = _flagged(result)
     return Verification(
         verdict=_verdict(found, expected, flagged, short),

@@ -271,3 +271,30 @@ def test_two_runs_that_both_fail_at_once_verify_nothing() -> None:
     assert found.verdict is Verdict.INCOMPLETE
     assert (found.v3_stop.reason, found.v4_stop.reason, found.compared_ms) == ("error", "error", 0)
     assert found.short is not None and found.short.startswith("both runs stopped on an error at 0 ms (")
+
+
+def test_two_errors_at_once_on_different_statements_diverge() -> None:
+    """v3's ACCEL takes 1000.0 to 8388607.0 (v3 guide 001:5649), so ``ACCEL = 100`` stops the v3 run at line 2
+    after the 10 ms WAIT; v4 takes 0.0 < x (000:6143-6167) and runs it, then its move on a drive never
+    enabled stops on error 40 (000:2711-2713) in the same millisecond. Two errors at once, on two statements:
+    the migration ran a line the original failed on (a new user's trial read "equivalent over 2 ms")."""
+    program = "WAIT = 10\nACCEL = 100\nMOVER.0 = 50 : GO.0\n"
+    result = migrate(program)
+    found = verify(result, until_ms=100)
+    assert found.verdict is Verdict.DIVERGES
+    assert (found.v3_stop.reason, found.v3_stop.time_ms, found.v3_stop.line) == ("error", 10, Place("program", 2))
+    assert (found.v4_stop.reason, found.v4_stop.time_ms) == ("error", 10)
+    divergence = found.divergence
+    assert divergence is not None
+    assert (divergence.time_ms, divergence.what, divergence.timing_only) == (10, "stop", False)
+    assert divergence.v3_line == Place("program", 2)
+    assert divergence.v4_line == Place("program", _line_of(result, "MOVER.0 = 50"))
+
+
+def test_two_errors_at_once_on_the_same_statement_agree() -> None:
+    """With ACCEL in both ranges, both runs stop on the move of line 3 after the WAIT: v3 on its servo left
+    off, v4 on error 40 (000:2711-2713); the messages differ by dialect (X-PRINT), the statement is one."""
+    found = verify(migrate("WAIT = 10\nACCEL = 1000\nMOVER.0 = 50 : GO.0\n"), until_ms=100)
+    assert found.verdict is Verdict.EQUIVALENT
+    assert found.v3_stop.line == Place("program", 3)
+    assert (found.v3_stop.time_ms, found.v4_stop.time_ms) == (10, 10)

@@ -33,6 +33,7 @@ Evaluate = Callable[[], float]
 READ_OF_COMMAND = 2000
 READ_OF_WRITE_ONLY = 2002
 INVALID_INDEX = 2016
+INVALID_AXIS = 2
 SYNTAX_ERROR = 2003
 
 
@@ -210,6 +211,8 @@ class ExpressionCompiler:
             return (lambda: glued,)
         selector = reference.selector
         if selector is not None:
+            if self.semantics.dialect is Dialect.V3 and not selector.dot:
+                _simple_axes(selector)
             return tuple(self.compile(item) if item is not None else _missing for item in selector.axes)
         return True if reference.keyword in self.semantics.axis_keywords else None
 
@@ -229,6 +232,14 @@ class ExpressionCompiler:
             raise NotSimulated(call.function, f"{len(arguments)} arguments")
         (index,) = arguments
         return lambda: read(int(index()))
+
+
+def _simple_axes(selector: n.Selector) -> None:
+    """Mint v3 takes only a number or a variable in an axis list: an expression or an array element there is
+    "Invalid axis" (``SF[a+1] = 1000``, 001:13173-13184; ``MOVER[a+1]``, 001:1009-1011)."""
+    for item in selector.axes:
+        if item is not None and not isinstance(item, n.Number | n.VariableRef | n.ConstantRef):
+            raise MintError(INVALID_AXIS, detail="an axis number in brackets must be a number or a variable")
 
 
 def _and_of_reads(read: Reader, channels: Iterable[int], clock: Clock) -> float:

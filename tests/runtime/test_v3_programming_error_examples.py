@@ -1,7 +1,8 @@
 """The v3 guide's examples of its programming errors end a v3 run with the message the guide files them under.
 
 Chapter 11 gives one or two lines for each message (001:12916-13186); a run of
-such a line stops on it with ``ERROR: Program: <message> at line <n>``.
+such a line stops on it with ``ERROR: Program: <message> at line <n>`` (and ``on axis <n>``
+when the error names one).
 """
 
 from __future__ import annotations
@@ -9,6 +10,10 @@ from __future__ import annotations
 import pytest
 
 from mintlang.runtime.run import run_source
+from mintlang.runtime.scenario import Scenario
+from mintlang.runtime.scenario.stimulus import DrivesEnabled
+
+ENABLED = Scenario(drives=(DrivesEnabled(),))
 
 
 @pytest.mark.parametrize(
@@ -29,3 +34,31 @@ def test_an_assignment_with_no_expression_is_refused_before_the_program_runs() -
     # the statement cannot be compiled, as a syntax error cannot: nothing before it runs
     result = run_source('PRINT "before"\nDIM t(3)\nt(2) =\n', dialect="v3")
     assert result.terminal == "ERROR: Program: No expression at line 3\n"
+
+
+@pytest.mark.parametrize(
+    ("lines", "message"),
+    [
+        pytest.param("a = 0\nSF[a+1] = 1000", "at line 2", id="001:13184 an expression as an axis number"),
+        pytest.param("a = 0\nMOVER[a+1] = 100", "at line 2", id="001:1009-1011 the multi-axis syntax's example"),
+        pytest.param("DIM t(2) = 1,1\nSF[t(1)] = 1000", "at line 2", id="001:13175 an array element"),
+        pytest.param("a = 0\nPRINT POS[a+1]", "at line 2", id="001:13175 read"),
+        pytest.param("VR[0] = 100", "at line 1 on axis 0", id="001:13183 a vector move on one axis"),
+        pytest.param("VECTORA.1 = 100", "at line 1 on axis 1", id="001:3257 vector moves need two axes"),
+    ],
+)
+def test_invalid_axis_examples_stop_the_run(lines: str, message: str) -> None:
+    result = run_source(f"{lines}\n", dialect="v3", scenario=ENABLED)
+    assert result.terminal == f"ERROR: Program: Invalid axis {message}\n"
+
+
+def test_invalid_axis_is_system_error_4_in_onerror() -> None:
+    # 001:4918-4925: "Invalid axis" is ERR 4, which #ONERROR traps; RETURN goes on after the line
+    program = 'a = 0\nSF[a+1] = 1000\nPRINT "next"\nEND\n#ONERROR\nPRINT "ERR ", ERR\nRETURN\n'
+    assert run_source(program, dialect="v3").terminal == "ERR 4\nnext\n"
+
+
+def test_a_number_or_a_variable_is_an_axis() -> None:
+    # 001:1005-1007: MOVER[a] = 100 is valid; a vector move on two axes runs
+    program = "a = 1\nSF[a] = 2\nVR[0,1] = 10,10 : GO[0,1]\nPAUSE IDLE[0,1]\nPRINT SF.1, POS.0\n"
+    assert run_source(program, dialect="v3", scenario=ENABLED).terminal == "210\n"

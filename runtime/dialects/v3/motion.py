@@ -91,7 +91,7 @@ class V3Motion:
         for name in ("MOVEA", "MOVER"):  # reading one gives the end of the move (001:3186)
             table.register(name, read=v4.read("POSTARGET"), write=self._servo_on(v4.write(name)))
         for name in ("VECTORA", "VECTORR"):
-            table.register(name, write=self._servo_on(v4.write(name)))
+            table.register(name, write=self._servo_on(self._vector(v4.write(name))))
         for name in ("CIRCLEA", "CIRCLER"):
             table.register(name, write=self._servo_on(self._circle(v4.write(name))))
         table.register("SPEED", read=v4.read("SPEED"), write=per_channel(self._checked("SPEED", self._speed)))
@@ -214,6 +214,19 @@ class V3Motion:
                 waiting = True
                 clock.changes_at(axis.move.end if axis.move is not None else next_profiler_tick(clock.now))
         return waiting
+
+    @staticmethod
+    def _vector(write: Writer) -> Writer:
+        """VECTORA/VECTORR on at least two axes (001:3257); on one, "Invalid axis" (``VR[0] = 100``,
+        001:13173-13183)."""
+
+        def vector(channels: Channels | None, values: Values) -> bool:
+            if channels is None or len(channels) < 2:
+                axis = channels[0] if channels else None
+                raise MintError(INVALID_AXIS, axis, "a vector move needs at least two axes")
+            return write(channels, values)
+
+        return vector
 
     @staticmethod
     def _circle(write: Writer) -> Writer:

@@ -386,6 +386,7 @@ def _closing_word(kinds: list[TokenKind]) -> str | None:
 
 
 _END_WHILE = [_K.END, _K.WHILE]  # other BASICs' closer of WHILE, which Mint writes ENDW (MintMT too: MT-23)
+_LABEL_AFTER_CODE = [_K.HASH, _K.NAME]  # a label written after a statement on its line
 
 
 def _segments(kinds: list[TokenKind], start: int) -> list[tuple[int, int]]:
@@ -480,6 +481,9 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
         return _error(2004, span, "there is a ')' too many")
     if opened > 0:
         return _error(2003, span, "a ')' is missing")
+    if index == begin and segment[:2] == _LABEL_AFTER_CODE:  # a = 10 : #label1 (000:1872-1876)
+        written = shared_span(line.starts[index], line.ends[index + 1])
+        return _error(2003, written, f"#{line.texts[index + 1]} follows code: a label must begin its line")
     if at_end and not words.dialect.modern and segment[0] is _K.NAME and segment[-1] is _K.EQUAL:
         # v3 names this one: "There is an assignment but no expression", avar = (001:12957-12964); a statement
         # that cannot be parsed is refused by the compiler, as a syntax error is

@@ -291,3 +291,19 @@ def test_v3_constants(db: KeywordDatabase) -> None:
 
 def _conflicts() -> list[dict[str, Any]]:
     return json.loads(resources.files("mintlang.keyworddb").joinpath("data", "conflicts.json").read_text("utf-8"))
+
+
+@pytest.mark.parametrize(
+    ("name", "default"),
+    [
+        ("HOMESPEED", "1000, 500 (step)"),  # 000:11607-11608: "1000" then "500 (step)" on the next line
+        ("ACCEL", "300,000, 3000 (step)"),  # 000:6164-6165
+        ("DECEL", "300,000, 3000 (step)"),  # 000:8884-8885
+        ("SPEED", "20,000, 1000 (stepper)"),  # the one the guide prints with its comma
+    ],
+)
+def test_a_default_per_axis_type_wrapped_onto_two_lines_keeps_the_two_apart(
+    db: KeywordDatabase, name: str, default: str
+) -> None:
+    row = db.keywords[name].attributes_for(Controller.NEXTMOVE_PCI)
+    assert row is not None and row.default == default

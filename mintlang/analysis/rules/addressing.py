@@ -13,7 +13,8 @@ node, 31 CAN bus, 35/36 terminal (Dot Parameters table, chapter 12.2).
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator, Mapping
+from bisect import bisect_left
+from collections.abc import Callable, Generator, Iterator, Mapping, Sequence
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import Facts, KeywordUse, LineScope, Use
@@ -23,6 +24,7 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import CIRCLES, Addressing, Keyword
 from mintlang.semantic.constants import constant_integer
+from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
 
@@ -98,27 +100,40 @@ def check(facts: Facts) -> Iterator[Finding]:
     the line rule reports; the values that fit it but not the list are reported here.
     """
     model = facts.model
-    if next(facts.lines.with_kinds(_AXES), None) is None:
-        return  # no program sets AXES: the default axes are the controller's
+    walked: dict[Unit, int] = {}  # per file, the index of the line after the last run followed
+    for unit, axes_line, _ in facts.lines.with_kinds(_AXES):  # only the runs from an AXES line are read
+        lines = model.document(unit).placed
+        start = bisect_left(lines, axes_line.origin, key=_origin)
+        if start >= walked.get(unit, 0):
+            walked[unit] = yield from _run(unit, lines, start, model)
+
+
+def _origin(line: n.PlacedLine) -> int:
+    return line.origin
+
+
+def _run(unit: Unit, lines: Sequence[n.PlacedLine], start: int, model: SemanticModel) -> Generator[Finding, None, int]:
+    """The findings of the straight run from the AXES line ``lines[start]``; returns where the run ends."""
     keywords = database().keywords_of(model.program.dialect)
     controller = model.controller
-    for unit, _ in model.documents():
-        listed: tuple[int, int] | None = None  # how many axes the AXES in force lists, and its line
-        for line, line_facts in facts.lines.of(unit):
-            if line.syntax.label is not None:
+    listed: tuple[int, int] | None = None  # how many axes the AXES in force lists, and its line
+    for index in range(start, len(lines)):
+        line = lines[index]
+        if line.syntax.label is not None:
+            listed = None
+        for statement in line.syntax.statements:
+            kind = type(statement)
+            if kind is n.Axes:
+                listed = _listed(statement, line.number, controller)  # type: ignore[arg-type]
+            elif kind not in _RUN_ON:
                 listed = None
-            if listed is None and n.Axes not in line_facts.kinds:
-                continue
-            for statement in line.syntax.statements:
-                kind = type(statement)
-                if kind is n.Axes:
-                    listed = _listed(statement, line.number, controller)  # type: ignore[arg-type]
-                elif kind not in _RUN_ON:
-                    listed = None
-                elif listed is not None and kind is n.KeywordStatement:
-                    found = _beyond_the_list(statement, keywords, controller, listed)  # type: ignore[arg-type]
-                    if found is not None:
-                        yield Finding(unit, mint_error(2017, line.span(found[0]), found[1]))
+            elif listed is not None and kind is n.KeywordStatement:
+                found = _beyond_the_list(statement, keywords, controller, listed)  # type: ignore[arg-type]
+                if found is not None:
+                    yield Finding(unit, mint_error(2017, line.span(found[0]), found[1]))
+        if listed is None:
+            return index + 1
+    return len(lines)
 
 
 def _listed(statement: n.Axes, number: int, controller: ControllerProfile) -> tuple[int, int] | None:

@@ -25,6 +25,9 @@ from tests.analysis.placed import placed_codes
         pytest.param("AXES[0]\nMOVER = 5, 5\n", ("E2017", 2, 12), id="one-axis-listed"),
         pytest.param("AXES[0,1] : MOVEA = 1, 2, 3\n", ("E2017", 1, 27), id="on-the-same-line"),
         pytest.param("AXES[0,1]\nDIM a\na = 1\nPRINT a\nSPEED = 1, 2, 3\n", ("E2017", 5, 15), id="past-plain-lines"),
+        pytest.param(
+            "AXES[0,1,2]\nGOSUB s\nAXES[0]\nMOVER = 5, 5\nEND\n#s\nRETURN\n", ("E2017", 4, 12), id="a-list-set-anew"
+        ),
     ],
 )
 def test_more_values_than_the_axes_listed_is_an_error(source: str, expected: tuple[str, int, int]) -> None:

@@ -27,7 +27,7 @@ OWN_CODES: dict[str, str] = {
     "W109": "Event handler not available on this controller",
     "W111": "Line too long",
     "W113": "GOTO out of a block",
-    "W114": "AUTO ignored",
+    "W114": "AUTO or PROTECT ignored",
     "W115": "Recursive GOSUB",
     "W116": "GOSUB nested too deep",
     "W117": "Unused suppression",

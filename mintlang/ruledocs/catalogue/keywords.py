@@ -69,19 +69,22 @@ GROUP = Group(
         ),
         RuleDoc(
             "W114",
-            catches="AUTO anywhere but as the very first command of the configuration file: after a REM, "
-            "after another statement, or in the program file.",
+            catches="AUTO anywhere but as the very first command of the configuration file (after a REM, "
+            "after another statement, or in the program file), and PROTECT with a password anywhere but as "
+            "the very first command of the program file.",
             why="AUTO makes the controller run the configuration and the program at power-up only from "
             "that first place; anywhere else it is silently ignored, and a machine meant to start on its "
-            "own waits at the prompt.",
+            "own waits at the prompt. PROTECT's place is the program's first line, as AUTO's is the "
+            "configuration's: elsewhere the buffers are left open to anyone at the command line. "
+            "Writing PROTECT (PROTECT = _on) may stand anywhere.",
             example=Example(
                 before="REM start-up\nAUTO\n",
                 after="AUTO\nREM start-up\n",
                 controller="mintdrive",
                 with_program="PRINT 1\n",
             ),
-            manual=("v4:6633",),
-            fix="Move AUTO to the first line of the configuration file.",
+            manual=("v4:6633", "v4:5280", "v4:15375"),
+            fix="Move AUTO to the first line of the configuration file, PROTECT to the first line of the program.",
             safety=FixSafety.NONE,
         ),
         RuleDoc(

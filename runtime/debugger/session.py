@@ -352,7 +352,7 @@ class Session:
         if arguments.get("context") == "repl" and typed is not None:
             keys = typed.group(1).replace("\\r", "\r").replace("\\n", "\n")
             execution.intervene(f"typed {text.strip()}", lambda controller: controller.terminal.type_keys(keys))
-            return {"result": f"typed {len(keys)} keys", "variablesReference": 0}
+            return {"result": f"typed {len(keys)} key{'' if len(keys) == 1 else 's'}", "variablesReference": 0}
         return {"result": shown(execution.evaluator.evaluate(text)), "variablesReference": 0}
 
     def cont(self, arguments: dict[str, Any]) -> dict[str, Any]:

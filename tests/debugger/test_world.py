@@ -67,6 +67,13 @@ def test_keys_typed_in_the_debug_console_are_what_inkey_reads_next(debug: Debug)
     assert client.values() == {"j": "66", "k": "65"}  # INKEY upper-cases a to z
 
 
+def test_one_key_typed_is_said_in_the_singular(debug: Debug) -> None:
+    client = debug("DIM k\nk = INKEY\nPRINT k\n", breakpoints=(2,))
+    client.stopped()
+    typed = client.body("evaluate", {"expression": '"Q"', "context": "repl", "frameId": 1})
+    assert typed["result"] == "typed 1 key"
+
+
 def test_a_quoted_string_in_a_watch_is_not_typed(debug: Debug) -> None:
     client = debug("DIM k\nk = INKEY\nPRINT k\n", breakpoints=(2,))
     client.stopped()

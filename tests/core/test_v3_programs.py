@@ -114,3 +114,23 @@ def test_v3_an_assignment_with_no_expression_is_no_expression() -> None:
     # 001:12957-12964: "No expression" is an assignment with nothing after '='; its example is avar =
     (diagnostic,) = mintlang.check("avar =\n", dialect="v3")
     assert diagnostic.code == "E2005" and not diagnostic.at_run_time
+
+
+@pytest.mark.parametrize(
+    ("source", "column"),
+    [
+        pytest.param("a = 0\nSF[a+1] = 1000\n", 9, id="001:13184 an expression as an axis number"),
+        pytest.param("DIM t(2)\nSF[t(1)] = 1000\n", 12, id="001:13175 an array element"),
+        pytest.param("VR[0] = 100\n", 2, id="001:13183 a vector move on one axis"),
+    ],
+)
+def test_v3_invalid_axis_examples_are_found_as_the_run_raises_them(source: str, column: int) -> None:
+    # 001:13173-13184: "Invalid axis", ERR 4 (001:4925), the run's error 2 (E0002)
+    (diagnostic,) = mintlang.check(source, dialect="v3")
+    assert diagnostic.code == "E0002" and "Invalid axis in Mint v3" in diagnostic.message
+    assert diagnostic.span.start == column
+
+
+def test_v3_numbers_and_variables_are_axes() -> None:
+    # 001:1005-1007: MOVER[a] = 100 is valid; a vector move on two axes too
+    assert mintlang.check("a = 1\nMOVER[a] = 100\nVR[0,1] = 10,10\n", dialect="v3") == []

@@ -6,6 +6,8 @@ as write only (``a = FLY``, "Write only", 001:13073-13080) or a read of a comman
 (``a = STOP``, "Read only or Command", 001:13083-13094) was already an error on
 the v3 controller (2000 / 2002, as v4 numbers them), so the migrator reports such
 a line as broken in v3 already rather than as something the migration broke.
+The v3 guide's axis rules are checked here too, for the same reason and so that
+mint check finds the "Invalid axis" mint-run raises (001:13173-13184).
 """
 
 from __future__ import annotations
@@ -13,13 +15,15 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.traversal import LineScope, Use
+from mintlang.analysis.traversal import KeywordUse, LineScope, Use
 from mintlang.keyworddb import database
+from mintlang.syntax import nodes as n
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
     db = database()
     for use in scope.facts.keyword_uses:
+        yield from _axes(use)
         keyword = db.lookup_v3(use.keyword.keyword)
         if keyword is None or not (keyword.read or keyword.write or keyword.command):
             continue  # no attribute ticks to go by
@@ -32,3 +36,22 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
                 yield Finding(use.unit, mint_error(2000, span, f"{name} is a command in Mint v3 and gives no value"))
             else:  # a = FLY (001:13073-13080)
                 yield Finding(use.unit, mint_error(2002, span, f"{name} can only be written in Mint v3, not read"))
+
+
+def _axes(use: KeywordUse) -> Iterator[Finding]:
+    """v3's "Invalid axis" (001:13173-13184), as mint-run raises it: an axis list takes only numbers and
+    variables (``SF[a+1] = 1000``), and a vector move names two axes or more (``VR[0] = 100``, 001:3257)."""
+    selector = use.keyword.selector
+    if selector is None:
+        return  # the default axes: AXES may have set any
+    if not selector.dot:
+        for item in selector.axes:
+            if item is not None and not isinstance(item, n.Number | n.VariableRef | n.ConstantRef):
+                detail = "Invalid axis in Mint v3: an axis number in brackets must be a number or a variable"
+                yield Finding(use.unit, mint_error(2, item.span, detail))
+    if use.keyword.keyword in _VECTORS and len(selector.axes) < 2:
+        detail = f"Invalid axis in Mint v3: {use.keyword.keyword} needs two axes or more"
+        yield Finding(use.unit, mint_error(2, selector.span, detail))
+
+
+_VECTORS = frozenset({"VECTORA", "VECTORR"})

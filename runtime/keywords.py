@@ -14,8 +14,9 @@ from collections.abc import Callable, Iterator
 from dataclasses import replace
 
 from mintlang.dialect import Dialect
-from mintlang.keyworddb import database, supplements
-from mintlang.keyworddb.model import Controller
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Controller, Use
+from mintlang.keyworddb.usage import refusal
 from mintlang.records import record
 from mintlang.runtime.errors import MintError
 
@@ -85,14 +86,15 @@ class KeywordTable:
             raise MintError(KEYWORD_NOT_SUPPORTED, detail=f"{name} is not available on this controller")
         return self._entries.get(name)
 
-    def refused_by_the_guide(self, name: str, *, write: bool) -> bool:
-        """Whether ``name``'s attributes on this controller forbid writing it (``write``) or reading it: the
-        controller's error 2000 or 2002 (000:18905-18918), whether or not the simulator has a handler for that use."""
+    def refused_by_the_guide(self, name: str, *, write: bool) -> int | None:
+        """The controller's error for writing ``name`` (``write``) or reading it, if its record forbids that use
+        (2000 for ``VER = 1``, 2002 for ``a = WAIT``), whether or not the simulator has a handler for that use:
+        the verdict ``mint check`` gives the line (``mintlang.keyworddb.usage``)."""
         keyword = database().keywords_of(self.dialect).get(name)
-        attributes = supplements.attributes_for(keyword, self.controller, self.dialect) if keyword is not None else None
-        if attributes is None:
-            return False
-        return not attributes.write if write else attributes.write and not attributes.read
+        if keyword is None:
+            return None
+        refused = refusal(keyword, self.controller, self.dialect, Use.WRITE if write else Use.READ)
+        return refused.code if refused is not None else None
 
     def names(self) -> Iterator[str]:
         return iter(sorted(self._entries))

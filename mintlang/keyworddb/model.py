@@ -37,6 +37,14 @@ CIRCLES = frozenset({"CIRCLEA", "CIRCLER"})
 """The axis keywords given more values than axes: a centre on each of two axes and an angle (000:8152, 8215)."""
 
 
+class Use(StrEnum):
+    """How a keyword is used where it is written."""
+
+    READ = "read"  # inside an expression
+    WRITE = "write"  # KW = value
+    COMMAND = "command"  # KW or KW args as a statement
+
+
 class KeywordKind(StrEnum):
     """How a keyword takes part in the grammar."""
 

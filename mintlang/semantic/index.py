@@ -20,18 +20,11 @@ from operator import attrgetter, not_
 from typing import NamedTuple, overload
 
 from mintlang.caching import LINES_KEPT, RecentCache
+from mintlang.keyworddb.model import Use
 from mintlang.records import record
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
-
-
-class Use(StrEnum):
-    """How a keyword is used where it is written."""
-
-    READ = "read"  # inside an expression
-    WRITE = "write"  # KW = value
-    COMMAND = "command"  # KW or KW args as a statement
 
 
 class KeywordUse(NamedTuple):

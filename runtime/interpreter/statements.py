@@ -208,9 +208,11 @@ class StatementCompiler:
             if access is None or access.write is None:
                 if access is not None and access.indexed_write is not None:  # MintMT's MOVEOUT(0) = 7: no bank
                     raise MintError(MISSING_PARAMETER, detail=f"{reference.keyword} needs its index after the axes")
-                unwritable = access is not None and (access.read is not None or access.command is not None)
-                if unwritable or self.table.refused_by_the_guide(reference.keyword, write=True):
-                    raise MintError(WRITE_OF_READ_ONLY, detail=reference.keyword)  # read only, or a command (2000)
+                refused = self.table.refused_by_the_guide(reference.keyword, write=True)  # VER = 1: 2000
+                if refused is None and access is not None and (access.read is not None or access.command is not None):
+                    refused = WRITE_OF_READ_ONLY  # the simulator reads it or runs it, and writes it not (2000)
+                if refused is not None:
+                    raise MintError(refused, detail=reference.keyword)
                 raise NotSimulated(reference.keyword, "write")
             _given_a_value(reference.keyword, statement.values)
             write = access.write

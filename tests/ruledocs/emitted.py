@@ -13,6 +13,7 @@ import ast
 from pathlib import Path
 
 from mintlang.analysis.rules import addressing, keyword_usage, limits
+from mintlang.keyworddb import usage
 from mintlang.semantic import blocks
 
 CORE = Path(blocks.__file__).parents[1]
@@ -35,6 +36,19 @@ def _function(module: object, name: str) -> ast.FunctionDef:
     return next(node for node in ast.walk(tree) if isinstance(node, ast.FunctionDef) and node.name == name)
 
 
+def _refusals() -> set[int]:
+    """The codes ``mintlang.keyworddb.usage`` refuses a use of a keyword with (``Refusal(2000, …)``), which the
+    keyword-usage rule reports."""
+    tree = ast.parse(Path(usage.__file__).read_text())
+    return {
+        call.args[0].value
+        for call in ast.walk(tree)
+        if isinstance(call, ast.Call)
+        and getattr(call.func, "id", "") == "Refusal"
+        and isinstance(call.args[0], ast.Constant)
+    }
+
+
 def _over_limits() -> set[int]:
     """The codes ``limits.check`` hands ``_over`` (its third argument)."""
     calls = ast.walk(_function(limits, "check"))
@@ -53,7 +67,8 @@ _TABLES = {
     ("semantic/blocks.py", "finish"): {code for _, code in blocks._CLOSING.values()},
     ("analysis/rules/addressing.py", "_channel"): {code for *_, code in addressing._CHANNEL_FAMILIES}
     | _literals_returned(_function(addressing, "_channel_family"), -1),
-    ("analysis/rules/keyword_usage.py", "each_line"): _literals_returned(_function(keyword_usage, "_verdict"), 0),
+    ("analysis/rules/keyword_usage.py", "each_line"): _literals_returned(_function(keyword_usage, "_verdict"), 0)
+    | _refusals(),
     ("analysis/rules/limits.py", "_over"): _over_limits(),
 }
 

@@ -7,8 +7,7 @@ that takes only axes are 2003 (``STOP following``, a comment missing its REM); e
 program are 2006 (``NEW``), but for RELEASE in a configuration file, where the
 manual recommends it, and for the buffer ``RUN`` names (``RUN PROG``, ``RUN CON``,
 000:15723-15733); a word that is no keyword of the target controller is 3007.
-Keywords the manual gives no attribute table are read only when every format
-of theirs reads them (``v = ERR``).
+The keyword's record decides the rest (``mintlang.keyworddb.usage``), as in ``mint-run``.
 """
 
 from __future__ import annotations
@@ -23,8 +22,9 @@ from mintlang.analysis.traversal import LineScope, Use
 from mintlang.controllers import profile
 from mintlang.diagnostics import Fix, Span
 from mintlang.dialect import Dialect
-from mintlang.keyworddb import database, supplements
-from mintlang.keyworddb.model import Controller, Keyword, KeywordKind
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Controller
+from mintlang.keyworddb.usage import refusal
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
@@ -76,51 +76,11 @@ def _spelling_fix(word: str, controller: Controller, span: Span, dialect: Dialec
 def _verdict(
     name: str, spelling: str, controller: Controller, use: Use, has_arguments: bool, *, dialect: Dialect
 ) -> tuple[int, str] | None:
-    """What is wrong with this use of a keyword, if anything (the same for every such use: cached)."""
-    db = database()
-    keyword = db.keywords_of(dialect).get(name)
+    """What is wrong with this use of a keyword, if anything (the same for every such use: cached): a word
+    that is no keyword here, else what the keyword's record says of the use, as ``mint-run`` says it too."""
+    keyword = database().keywords_of(dialect).get(name)
     if keyword is None:
         if dialect.modern and successor(spelling, profile(controller)) is not None:
             return None  # an old v3 keyword: the v3-keyword rule names its replacement
         return 3007, _not_a_keyword(spelling, controller, dialect)
-    if keyword.kind is KeywordKind.COMMAND_LINE:
-        return 2006, f"{keyword.name} is an editor command: it works only at the command line, not in a program"
-    if keyword.controllers and controller not in keyword.controllers:
-        return 17, f"{keyword.name} is not available on {profile(controller).title}"
-    attributes = supplements.attributes_for(keyword, controller, dialect)  # HOMEPOS's too, which prints none
-    if attributes is None:
-        return _verdict_from_formats(keyword, use)
-    if use is Use.WRITE and not attributes.write:
-        what = "a command" if attributes.command else "read only"
-        return 2000, f"{name} is {what} and cannot be given a value"
-    if use is Use.READ and not attributes.read:
-        if attributes.write:
-            return 2002, f"{name} can only be written, not read"
-        return 2003, f"{name} is a command and gives no value"
-    if use is Use.COMMAND and not attributes.command:
-        if not has_arguments:
-            return 2005, f"{name} must be read or given a value here (for example '{name} = …')"
-        if keyword.name == "WAIT":  # WAIT IDLE.0, as other languages wait on a condition (000:17314-17324)
-            return 2003, f"{name} waits a time in milliseconds ('{name} = 100'): to wait on a condition, use PAUSE"
-        return 2003, f"{name} takes a value with '=': '{name} = …'"
-    if use is Use.COMMAND and has_arguments and not keyword.takes_operands:
-        return 2003, f"{name} takes no operands, only its axes ('{keyword.formats[0]}')"
-    return None
-
-
-def _verdict_from_formats(keyword: Keyword, use: Use) -> tuple[int, str] | None:
-    """Error 2000 for a write to a keyword the manual gives no attribute table, judged by its
-    formats: read only when every format reads it (``v = ERR``), a command when none assigns it
-    (``BEEP``, ``CLS``, ``TRON``: 2000 is for a command given a value too, 000:18905-18908); and
-    2003 for reading such a command, as for ``PRINT GO``: no format gives it a value."""
-    if not keyword.formats:
-        return None
-    if use is Use.READ and keyword.kind is KeywordKind.COMMAND and not any("=" in text for text in keyword.formats):
-        return 2003, f"{keyword.name} is a command and gives no value"
-    if use is not Use.WRITE:
-        return None
-    if all(text.startswith("v =") for text in keyword.formats):
-        return 2000, f"{keyword.name} is read only and cannot be given a value"
-    if keyword.kind is KeywordKind.COMMAND and not any("=" in text for text in keyword.formats):
-        return 2000, f"{keyword.name} is a command and cannot be given a value"
-    return None
+    return refusal(keyword, controller, dialect, use, has_arguments=has_arguments)

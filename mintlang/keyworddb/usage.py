@@ -1,0 +1,78 @@
+"""The controller's error for a use of a keyword its record forbids, one answer for ``mint check`` and ``mint-run``.
+
+Writing a keyword that is read only or a command is error 2000 (``CAMINDEX = 4``); reading one that
+is write only is 2002 (``PRINT ACCELTIME``, 000:18905-18918); naming a parameter on its own as a
+statement is 2005 (``SPEED``); reading a command, or operands after a command that takes only axes,
+is 2003 (``STOP following``, a comment missing its REM); an editor command in a program is 2006
+(``NEW``); a keyword its controller lacks is 17. The attributes table decides; a keyword the guide
+gives none is judged by its formats. ``mint check`` reports the error where the line is written, and
+``mint-run`` raises it when the line runs, so the two cannot drift apart.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+from mintlang.controllers import profile
+from mintlang.dialect import Dialect
+from mintlang.keyworddb.model import Controller, Keyword, KeywordKind, Use
+from mintlang.keyworddb.supplements import attributes_for
+
+
+class Refusal(NamedTuple):
+    """The controller's error number and what, in the tools' words, is wrong with the use."""
+
+    code: int
+    detail: str
+
+
+def refusal(
+    keyword: Keyword, controller: Controller, dialect: Dialect, use: Use, *, has_arguments: bool = False
+) -> Refusal | None:
+    """The error of using ``keyword`` as ``use`` on ``controller`` (``has_arguments``: a command statement
+    with operands), or None when its record allows the use."""
+    name = keyword.name
+    if keyword.kind is KeywordKind.COMMAND_LINE:
+        return Refusal(2006, f"{name} is an editor command: it works only at the command line, not in a program")
+    if keyword.controllers and controller not in keyword.controllers:
+        return Refusal(17, f"{name} is not available on {profile(controller).title}")
+    attributes = attributes_for(keyword, controller, dialect)  # HOMEPOS's too, which prints none
+    if attributes is None:
+        return _refusal_from_formats(keyword, use)
+    if use is Use.WRITE and not attributes.write:
+        what = "a command" if attributes.command else "read only"
+        return Refusal(2000, f"{name} is {what} and cannot be given a value")
+    if use is Use.READ and not attributes.read:
+        if attributes.write:
+            return Refusal(2002, f"{name} can only be written, not read")
+        return Refusal(2003, f"{name} is a command and gives no value")
+    if use is Use.COMMAND and not attributes.command:
+        if not has_arguments:
+            return Refusal(2005, f"{name} must be read or given a value here (for example '{name} = …')")
+        if name == "WAIT":  # WAIT IDLE.0, as other languages wait on a condition (000:17314-17324)
+            return Refusal(
+                2003, f"{name} waits a time in milliseconds ('{name} = 100'): to wait on a condition, use PAUSE"
+            )
+        return Refusal(2003, f"{name} takes a value with '=': '{name} = …'")
+    if use is Use.COMMAND and has_arguments and not keyword.takes_operands:
+        return Refusal(2003, f"{name} takes no operands, only its axes ('{keyword.formats[0]}')")
+    return None
+
+
+def _refusal_from_formats(keyword: Keyword, use: Use) -> Refusal | None:
+    """Error 2000 for a write to a keyword the manual gives no attribute table, judged by its
+    formats: read only when every format reads it (``v = ERR``), a command when none assigns it
+    (``BEEP``, ``VER``, ``LINE``: 2000 is for a command given a value too, 000:18905-18908); and
+    2003 for reading such a command, as for ``PRINT GO``: no format gives it a value."""
+    if not keyword.formats:
+        return None
+    assigned = any("=" in text for text in keyword.formats)
+    if use is Use.READ and keyword.kind is KeywordKind.COMMAND and not assigned:
+        return Refusal(2003, f"{keyword.name} is a command and gives no value")
+    if use is not Use.WRITE:
+        return None
+    if all(text.startswith("v =") for text in keyword.formats):
+        return Refusal(2000, f"{keyword.name} is read only and cannot be given a value")
+    if keyword.kind is KeywordKind.COMMAND and not assigned:
+        return Refusal(2000, f"{keyword.name} is a command and cannot be given a value")
+    return None

@@ -8,7 +8,10 @@ unused ``i``, 001:5430-5436). Nor is a routine of nothing but DIMs: never
 calling it is the manual's way to keep variables non-volatile (3.2.5). A
 variable named in a statement that could not be parsed may be used there, and a
 DEFINE that cannot name a macro (3005), or could not be parsed (``DEFINE 05``),
-defines none: neither gets a second finding.
+defines none: neither gets a second finding. Nor does an array indexed in square
+brackets, as another language would (``arr[2] = 3``): Mint reads a keyword there
+(round brackets index, square ones list axes, 000:1065-1066), and error 3007 is
+the one finding to fix.
 """
 
 from __future__ import annotations
@@ -34,7 +37,7 @@ def check(facts: Facts) -> Iterator[Finding]:
     if unused and model.program.dialect is Dialect.V3:
         dimmed = _declared_by_dim(facts)
         unused = [symbol for symbol in unused if (symbol.definitions[0].unit, symbol.definitions[0].span) in dimmed]
-    broken = _names_in_broken_statements(facts) if unused else set()
+    broken = _names_in_broken_statements(facts) | _names_written_as_keywords(facts) if unused else set()
     for symbol in unused:
         if symbol.identity not in broken:
             first = symbol.definitions[0]
@@ -98,6 +101,12 @@ def _names_in_broken_statements(facts: Facts) -> set[str]:
         for unit, line, statement in facts.statements(n.SyntaxError_)
         for word in _WORD.findall(sources[unit], *line.span(statement.span))
     }
+
+
+def _names_written_as_keywords(facts: Facts) -> set[str]:
+    """The names written where Mint reads a keyword (``arr[2]``): no DIM declares a keyword, so such a
+    keyword is one the controller does not have, and the name is the user's."""
+    return {n.identity(use.keyword.spelling) for _, use in facts.keyword_uses()}
 
 
 def _declaring_routines(model: SemanticModel) -> set[tuple[Unit, str]]:

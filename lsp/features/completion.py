@@ -19,6 +19,7 @@ declared (DIM, DEFINE).
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from lsprotocol import types
@@ -36,6 +37,7 @@ from mintlang.lsp.workspace import Snapshot
 from mintlang.semantic.blocks import BlockKind
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import SymbolKind
+from mintlang.syntax.common import common_prefix, common_suffix
 from mintlang.syntax.lines import MacroDefinition
 from mintlang.syntax.tokens import Token, TokenKind
 
@@ -75,6 +77,11 @@ _INSIDE = {
 _OUTSIDE_EVERY_BLOCK = frozenset({TokenKind.EVENT, TokenKind.STARTUP})
 # NULL stands for no array where CAMTABLE takes its optional master distance table, its third operand (000:7958).
 _NULL_OPERANDS = {"CAMTABLE": 2}
+# A line that may open, go on with or close a block, in any dialect (v4 IF .. DO, MintMT If .. Then and End If):
+# once one changes, an older analysis no longer tells which blocks are open where.
+_BLOCK_WORD = re.compile(
+    r"\b(?:IF|THEN|DO|ELSE|ENDIF|FOR|NEXT|REPEAT|UNTIL|WHILE|ENDW|LOOP|ENDL|END|EVENT|STARTUP)\b", re.IGNORECASE
+)
 _UNARY = frozenset({"NOT", "~"})  # the operators that can start an operand
 _CONTINUATIONS = frozenset({"THEN", "DO", "TO", "STEP", "USING"})  # statement words that follow an operand
 _SINGLE_QUOTES = "'\u2018\u2019"
@@ -146,6 +153,46 @@ def _open_blocks(snapshot: Snapshot, line: int) -> frozenset[BlockKind]:
         for block in snapshot.model.structures[snapshot.unit].blocks
         if block.opener.line <= here and (block.closer is None or here <= block.closer.line)
     )
+
+
+def _open_blocks_now(snapshot: Snapshot, source: str, line: int) -> frozenset[BlockKind] | None:
+    """The kinds of the blocks open at ``line`` (0-based) of ``source``, the text now, from ``snapshot``, an
+    analysis of it that may be a few keystrokes old (completion does not wait for a new one, and the editor asks
+    right after each keystroke): while the lines changed since hold no block word, every block stands where it
+    stood, those below moved by the lines added. None when a changed line may hold one: not known."""
+    old = snapshot.document.source
+    if old.count("\r") != old.count("\r\n") or source.count("\r") != source.count("\r\n"):
+        return None  # a lone CR ends a line too: not worth counting for completion
+    start = common_prefix(old, source)
+    same_end = common_suffix(old, source, min(len(old), len(source)) - start)
+    if old[start - 1 : start] in ("", "\n") and all(
+        part == "" or part.endswith("\n")
+        for part in (old[start : len(old) - same_end], source[start : len(source) - same_end])
+    ):
+        end, new_stop = len(old) - same_end, len(source) - same_end  # whole lines added or removed
+    else:  # the changed lines, whole: from the start of the first to the end of the last
+        start = old.rfind("\n", 0, start) + 1
+        end, new_stop = _line_end(old, len(old) - same_end) + 1, _line_end(source, len(source) - same_end) + 1
+    old_lines, new_lines = old[start:end], source[start:new_stop]
+    if _BLOCK_WORD.search(old_lines) or _BLOCK_WORD.search(new_lines):
+        return None
+    first = old.count("\n", 0, start)
+    old_end, new_end = first + old_lines.count("\n"), first + new_lines.count("\n")
+    if line < first:
+        return _open_blocks(snapshot, line)
+    if line >= new_end:
+        return _open_blocks(snapshot, line - (new_end - old_end))
+    return frozenset(  # a changed line: inside the blocks around the change, opened above it and closed below
+        block.kind
+        for block in snapshot.model.structures[snapshot.unit].blocks
+        if block.opener.line <= first and (block.closer is None or block.closer.line > old_end)
+    )
+
+
+def _line_end(text: str, offset: int) -> int:
+    """Where the line holding ``offset`` ends: its line break, or the end of the text."""
+    end = text.find("\n", offset)
+    return len(text) if end < 0 else end
 
 
 def _in_its_block(name: str, blocks: frozenset[BlockKind] | None) -> bool:
@@ -445,8 +492,9 @@ def register(server: MintServer) -> None:
             return types.CompletionList(is_incomplete=False, items=[])
         snapshot, prefix = typing
         document = server.workspace.text_documents[params.text_document.uri]
-        current = snapshot.version == document.version  # an older analysis may place the blocks elsewhere
-        blocks = _open_blocks(snapshot, params.position.line) if current else None
+        line = params.position.line
+        current = snapshot.version == document.version
+        blocks = _open_blocks(snapshot, line) if current else _open_blocks_now(snapshot, document.source, line)
         items = complete(snapshot, prefix, params.position, blocks)
         return types.CompletionList(is_incomplete=False, items=items)
 

@@ -135,6 +135,49 @@ async def test_block_words_only_inside_their_blocks(shared_client, tmp_path, nee
     assert {"GO", "PRINT"} <= items
 
 
+# The editor asks for completion right after each keystroke, before the server has analysed the new text (the
+# pause is a minute here, so no analysis can come in between): the blocks of the last analysis still tell where
+# each block word fits while the lines changed since hold none. Lines 0-6 before the edit: a FOR block (1-3), a
+# WHILE block (4-6); the edit adds two PRINT lines inside the FOR, moving the WHILE's empty line 5 to 7.
+STALE = "DIM a\nFOR a = 1 TO 2\n  a = a\nNEXT\nWHILE a\n\nENDW\n"
+
+
+@pytest.mark.parametrize(
+    ("line", "words"),
+    [
+        (7, {"ENDW", "EXIT"}),  # below the change: the WHILE, moved down two lines
+        (3, {"NEXT", "EXIT"}),  # a changed line: the FOR around it
+        (0, set()),  # above the change: no block
+    ],
+)
+async def test_block_words_fit_the_text_typed_since_the_last_analysis(client, tmp_path, line, words):
+    client.workspace_did_change_configuration(
+        types.DidChangeConfigurationParams(settings={"mint": {"debounceMs": 60_000}})
+    )
+    uri = uri_of(tmp_path / "stale.mnt")
+    await open_document(client, uri, STALE)
+    change(client, uri, 2, ((2, 0), (2, 0)), "  PRINT a\n  PRINT a\n")
+    found = await client.text_document_completion_async(
+        types.CompletionParams(text_document=document(uri), position=types.Position(line=line, character=0))
+    )
+    assert {item.label for item in found.items} & BLOCK_WORDS == words
+
+
+async def test_a_block_word_typed_since_the_last_analysis_leaves_every_block_word_offered(client, tmp_path):
+    # An IF .. DO typed into the WHILE opens a block the last analysis never saw: ELSE and ENDIF fit on the
+    # line below it as ENDW and EXIT do, and what the new text holds is not known until it is analysed.
+    client.workspace_did_change_configuration(
+        types.DidChangeConfigurationParams(settings={"mint": {"debounceMs": 60_000}})
+    )
+    uri = uri_of(tmp_path / "opened.mnt")
+    await open_document(client, uri, STALE)
+    change(client, uri, 2, ((5, 0), (5, 0)), "  IF a DO\n")
+    found = await client.text_document_completion_async(
+        types.CompletionParams(text_document=document(uri), position=types.Position(line=6, character=0))
+    )
+    assert {"ELSE", "ENDIF", "ENDW", "EXIT"} <= {item.label for item in found.items}
+
+
 @SHARED
 @pytest.mark.parametrize(
     ("line", "reason"),

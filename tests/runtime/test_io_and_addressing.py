@@ -18,12 +18,12 @@ PRINT IN.2, INSTATE.2, IN.2
 
 
 def test_a_trigger_bit_of_an_input_not_edge_triggered_is_not_set() -> None:
-    # 000:12424-12425: setting it "will have no effect": it reads back 0 and INPUTMODE set later does not
-    # arm it, so the falling edge at 20 ms is not latched; INPUTMODE = 0x00F00F keeps inputs 0-3 and 12-15
+    # 000:12424-12425: setting it "will have no effect": the bits of inputs 0 and 1 read back 0 and INPUTMODE
+    # set later does not arm them, so the falling edge at 20 ms is not latched; INPUTMODE = 0x00F00F keeps
+    # inputs 0-3 and 12-15
     source = """REM @sim input 0 1 at 10
 REM @sim input 0 0 at 20
-INPUTNEGTRIGGER = 1
-INPUTNEGTRIGGER.1 = 1
+INPUTNEGTRIGGER = 3
 PRINT INPUTNEGTRIGGER
 INPUTMODE = 1
 WAIT = 50

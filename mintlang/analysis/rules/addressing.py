@@ -6,7 +6,8 @@ is 2018, and only constants or simple variables may stand in them (an
 expression is a syntax error, 2003). A circle moves the two axes of its
 brackets with three values, ``CIRCLEA[axis0,axis1] = <centre0>,<centre1>,<angle>``
 (000:8152, 000:8215): a third axis or a fourth value is 2017, a missing axis
-2001. Channel keywords take the dot only (``ADC[1]`` is invalid). Constant numbers out of the controller's range give
+2001. Channel keywords take the dot only (``ADC[1]`` is invalid), and a keyword whose formats show no
+axis or channel takes neither (``TIME.5``): both are 2003. Constant numbers out of the controller's range give
 the motion library's errors: 2 axis, 4 channel, 7 input, 8 output, 26 CAN
 node, 31 CAN bus, 35/36 terminal (Dot Parameters table, chapter 12.2).
 """
@@ -22,7 +23,7 @@ from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import CIRCLES, Addressing, Keyword
+from mintlang.keyworddb.model import CIRCLES, Addressing, Keyword, KeywordKind
 from mintlang.semantic.constants import constant_integer
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
@@ -193,6 +194,25 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
         yield from _indices(use, keyword)
     elif keyword.addressing is Addressing.CHANNEL or _channel_family(keyword.name):
         yield from _channel(use, scope)
+    elif scope.dialect.modern and keyword.documented and keyword.formats:
+        yield from _nothing_addressed(use, keyword)
+
+
+_ADDRESSED_KINDS = frozenset({KeywordKind.PARAMETER, KeywordKind.COMMAND})
+
+
+def _nothing_addressed(use: KeywordUse, keyword: Keyword) -> Iterator[Finding]:
+    """An axis or channel number on a keyword whose formats take none (``TIME.5``, ``a = TIME.2``) is 2003.
+
+    The guide names no error for it; it writes such a keyword only as its formats show it (``v = TIME``,
+    000:16737-16738), and an addressing its formats do not show is invalid as ``ADC[1]`` is (000:702-708),
+    which is a syntax error here too: the compiler stops the program before it runs."""
+    if keyword.kind not in _ADDRESSED_KINDS:
+        return
+    ref = use.keyword
+    span = ref.selector.span if ref.selector is not None else ref.spelling_span
+    shown = " or ".join(f"'{layout}'" for layout in keyword.formats)
+    yield Finding(use.unit, mint_error(2003, span, f"{keyword.name} takes no axis or channel number: {shown}"))
 
 
 def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:

@@ -13,8 +13,9 @@ GROUP = Group(
             2003,
             catches="A statement the grammar of Mint does not allow: a bracket opened and never closed, an "
             "operator with nothing after it, a command used where a value is needed, an expression where the "
-            "syntax takes only a number or a simple variable (an array's size, an axis in brackets), INPUT into "
-            "an array element, a string that is not closed before the end of the line, a function given more or "
+            "syntax takes only a number or a simple variable (an array's size, an axis in brackets), an axis or "
+            "channel number on a keyword whose formats take none (`TIME.5`), INPUT into an array element, a "
+            "string that is not closed before the end of the line, a function given more or "
             "fewer values than its format takes (`POW(2)`, `SIN(1, 2)`), a command given more or fewer operands "
             "than its format writes (`LOCATE 10`, `LINE 1`), or an EXIT outside any loop of its "
             "subroutine (raised when it runs: an EXIT never leaves a caller's loop).",
@@ -24,7 +25,7 @@ GROUP = Group(
                 before="DIM a = 1\nDIM b = 2\nIF (a > b THEN PRINT a\n",
                 after="DIM a = 1\nDIM b = 2\nIF (a > b) THEN PRINT a\n",
             ),
-            manual=("v4:18920", "v4:4611", "v4:9167", "v4:18430", "v4:10224", "v4:15152", "v4:13685"),
+            manual=("v4:18920", "v4:4611", "v4:9167", "v4:18430", "v4:10224", "v4:15152", "v4:13685", "v4:16737"),
             fix="The message says what was found where, and what to write depends on the intent.",
             safety=FixSafety.NONE,
         ),

@@ -142,6 +142,21 @@ async def test_block_words_only_inside_their_blocks(shared_client, tmp_path, nee
 STALE = "DIM a\nFOR a = 1 TO 2\n  a = a\nNEXT\nWHILE a\n\nENDW\n"
 
 
+async def typed_before_analysis(client, tmp_path, at: int, typed: str, line: int) -> set[str]:
+    """The labels offered at the start of ``line`` once ``typed`` is inserted at the start of line ``at`` of
+    ``STALE``, asked at once as an editor asks."""
+    client.workspace_did_change_configuration(
+        types.DidChangeConfigurationParams(settings={"mint": {"debounceMs": 60_000}})
+    )
+    uri = uri_of(tmp_path / "stale.mnt")
+    await open_document(client, uri, STALE)
+    change(client, uri, 2, ((at, 0), (at, 0)), typed)
+    found = await client.text_document_completion_async(
+        types.CompletionParams(text_document=document(uri), position=types.Position(line=line, character=0))
+    )
+    return {item.label for item in found.items}
+
+
 @pytest.mark.parametrize(
     ("line", "words"),
     [
@@ -151,31 +166,13 @@ STALE = "DIM a\nFOR a = 1 TO 2\n  a = a\nNEXT\nWHILE a\n\nENDW\n"
     ],
 )
 async def test_block_words_fit_the_text_typed_since_the_last_analysis(client, tmp_path, line, words):
-    client.workspace_did_change_configuration(
-        types.DidChangeConfigurationParams(settings={"mint": {"debounceMs": 60_000}})
-    )
-    uri = uri_of(tmp_path / "stale.mnt")
-    await open_document(client, uri, STALE)
-    change(client, uri, 2, ((2, 0), (2, 0)), "  PRINT a\n  PRINT a\n")
-    found = await client.text_document_completion_async(
-        types.CompletionParams(text_document=document(uri), position=types.Position(line=line, character=0))
-    )
-    assert {item.label for item in found.items} & BLOCK_WORDS == words
+    assert await typed_before_analysis(client, tmp_path, 2, "  PRINT a\n  PRINT a\n", line) & BLOCK_WORDS == words
 
 
 async def test_a_block_word_typed_since_the_last_analysis_leaves_every_block_word_offered(client, tmp_path):
     # An IF .. DO typed into the WHILE opens a block the last analysis never saw: ELSE and ENDIF fit on the
     # line below it as ENDW and EXIT do, and what the new text holds is not known until it is analysed.
-    client.workspace_did_change_configuration(
-        types.DidChangeConfigurationParams(settings={"mint": {"debounceMs": 60_000}})
-    )
-    uri = uri_of(tmp_path / "opened.mnt")
-    await open_document(client, uri, STALE)
-    change(client, uri, 2, ((5, 0), (5, 0)), "  IF a DO\n")
-    found = await client.text_document_completion_async(
-        types.CompletionParams(text_document=document(uri), position=types.Position(line=6, character=0))
-    )
-    assert {"ELSE", "ENDIF", "ENDW", "EXIT"} <= {item.label for item in found.items}
+    assert {"ELSE", "ENDIF", "ENDW", "EXIT"} <= await typed_before_analysis(client, tmp_path, 5, "  IF a DO\n", 6)
 
 
 @SHARED

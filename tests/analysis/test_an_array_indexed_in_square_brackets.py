@@ -37,3 +37,23 @@ def test_the_array_counts_as_used_and_an_untouched_variable_is_still_unused() ->
 
 def test_round_brackets_index_the_array() -> None:
     assert _found("DIM arr(5)\narr(2) = 3\nPRINT arr(2)\n") == []
+
+
+def _error_3007(source: str) -> mintlang.Diagnostic:
+    (error,) = [d for d in mintlang.check(source) if d.code == "E3007"]
+    return error
+
+
+@pytest.mark.parametrize("source", ["DIM arr(5)\narr[2] = 3\n", "DIM arr(5)\nPRINT arr.2\n"])
+def test_the_error_says_where_an_index_goes_and_offers_no_keyword_that_takes_no_axes(source: str) -> None:
+    """ARR is most like ERR, which is read alone (``v = ERR``): respelling ``arr[2] = 3`` as ``ERR[2] = 3``
+    would be no fix, so neither the message nor a fix offers it."""
+    error = _error_3007(source)
+    assert "round brackets" in error.message and "ERR" not in error.message
+    assert error.fixes == ()
+
+
+def test_a_misspelt_keyword_with_axes_is_still_offered_the_keyword() -> None:
+    error = _error_3007("SPEEED[0] = 1\n")
+    assert error.message.endswith("'SPEEED' is not a keyword (did you mean 'SPEED'?)")
+    assert [fix.title for fix in error.fixes] == ["Replace with SPEED"]

@@ -23,7 +23,7 @@ from mintlang.controllers import profile
 from mintlang.diagnostics import Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Controller
+from mintlang.keyworddb.model import Addressing, Controller
 from mintlang.keyworddb.usage import refusal
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -43,11 +43,20 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if ref.keyword in _BUFFERS and isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "RUN":
             continue
         has_arguments = isinstance(statement, n.KeywordStatement) and bool(statement.arguments)
-        verdict = _verdict(ref.keyword, ref.spelling.upper(), controller, use.use, has_arguments, dialect=scope.dialect)
+        addressed = ref.selector is not None and scope.dialect is not Dialect.MINTMT  # MintMT's (0,1) are axes too
+        verdict = _verdict(
+            ref.keyword,
+            ref.spelling.upper(),
+            controller,
+            use.use,
+            has_arguments,
+            addressed=addressed,
+            dialect=scope.dialect,
+        )
         if verdict is not None:
             code, detail = verdict
             fixes = (
-                _spelling_fix(ref.spelling.upper(), controller, ref.spelling_span, scope.dialect)
+                _spelling_fix(ref.spelling.upper(), controller, ref.spelling_span, scope.dialect, addressed=addressed)
                 if code == 3007
                 else ()
             )
@@ -61,20 +70,46 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             yield Finding(unit, mint_error(3007, statement.span, detail, fixes=fixes))
 
 
-def _not_a_keyword(word: str, controller: Controller, dialect: Dialect) -> str:
-    """Error 3007's detail, with the keyword ``word`` resembles if one does."""
-    return not_a_keyword(word, keyword_like(word.upper(), controller, dialect=dialect))
+def _not_a_keyword(word: str, controller: Controller, dialect: Dialect, *, addressed: bool = False) -> str:
+    """Error 3007's detail, with the keyword ``word`` resembles if one does; a word written with axes or a
+    channel (``arr[2]``, ``arr.2``) that resembles none that takes them is told where an index goes."""
+    meant = _meant(word, controller, dialect, addressed=addressed)
+    if meant is None and addressed:
+        return (
+            f"'{word}' is not a keyword (an array is indexed in round brackets, {word}(index); square brackets "
+            "and a dot address a keyword's axes or channel)"
+        )
+    return not_a_keyword(word, meant)
 
 
-def _spelling_fix(word: str, controller: Controller, span: Span, dialect: Dialect) -> tuple[Fix, ...]:
-    """Write the keyword ``word`` resembles, if one does."""
+def _meant(word: str, controller: Controller, dialect: Dialect, *, addressed: bool) -> str | None:
+    """The keyword ``word`` resembles; written with axes or a channel, only one that takes them
+    (000:1063-1066: ``arr[2]`` resembles ERR, which takes neither)."""
     meant = keyword_like(word.upper(), controller, dialect=dialect)
+    if meant is None or not addressed:
+        return meant
+    keyword = database().keywords_of(dialect).get(meant)
+    return meant if keyword is None or keyword.addressing is not Addressing.NONE else None
+
+
+def _spelling_fix(
+    word: str, controller: Controller, span: Span, dialect: Dialect, *, addressed: bool = False
+) -> tuple[Fix, ...]:
+    """Write the keyword ``word`` resembles, if one does."""
+    meant = _meant(word, controller, dialect, addressed=addressed)
     return (Fix.replace(span, meant),) if meant is not None else ()
 
 
 @cache
 def _verdict(
-    name: str, spelling: str, controller: Controller, use: Use, has_arguments: bool, *, dialect: Dialect
+    name: str,
+    spelling: str,
+    controller: Controller,
+    use: Use,
+    has_arguments: bool,
+    *,
+    addressed: bool,
+    dialect: Dialect,
 ) -> tuple[int, str] | None:
     """What is wrong with this use of a keyword, if anything (the same for every such use: cached): a word
     that is no keyword here, else what the keyword's record says of the use, as ``mint-run`` says it too."""
@@ -82,5 +117,5 @@ def _verdict(
     if keyword is None:
         if dialect.modern and successor(spelling, profile(controller)) is not None:
             return None  # an old v3 keyword: the v3-keyword rule names its replacement
-        return 3007, _not_a_keyword(spelling, controller, dialect)
+        return 3007, _not_a_keyword(spelling, controller, dialect, addressed=addressed)
     return refusal(keyword, controller, dialect, use, has_arguments=has_arguments)

@@ -33,6 +33,7 @@ NOISE = 1e-6  # counts: closed-form set-points are exact only to ~1e-9 counts; l
 MOTION_IN_PROGRESS = 10
 MOTION_ERROR = 12
 DRIVE_NOT_ENABLED = 40
+DISABLED_AT_POWER_UP = "a drive starts disabled: enable it with DRIVEENABLE or RESET, or run with --drives enabled"
 SERVO_TICK_S = 0.001
 VEL_SAMPLE_S = (
     0.002  # VEL's sampling period: its least non-zero reading is one count in it, 500 counts/s (000:17120-17123)
@@ -89,6 +90,7 @@ class Axis:
         self.plant: Plant = plant if plant is not None else IdealPlant()
         self.servo = ServoLoop()
         self.enabled = False  # drives start disabled (IO-7 RC)
+        self.disabled_hint = DISABLED_AT_POWER_UP  # error 40's hint; a v3 controller's says how v3 switches it on
         self.drive_signal: Callable[[bool], None] = _no_output  # drives the DRIVEENABLEOUTPUT (drive_enable.py)
         self.error_signal: Callable[[], None] = _no_error_output  # drops GLOBALERROROUTPUT (global_error_output.py)
         self.axiserror = 0  # latched (AXISERROR)
@@ -360,8 +362,7 @@ class Axis:
         if self.axiserror:
             raise MintError(MOTION_ERROR, self.number, "clear the axis error with CANCEL or RESET first")
         if not self.enabled:
-            detail = "a drive starts disabled: enable it with DRIVEENABLE or RESET, or run with --drives enabled"
-            raise MintError(DRIVE_NOT_ENABLED, self.number, detail)
+            raise MintError(DRIVE_NOT_ENABLED, self.number, self.disabled_hint)
 
     def buffer_free(self) -> int:
         running = 1 if self.move is not None and self.move.buffered else 0

@@ -186,6 +186,14 @@ def test_mint_run_reads_peek_but_has_no_option_card_to_read(tmp_path: Path) -> N
     assert "PEEK (function) is not simulated" in result.output and "Syntax error" not in result.output
 
 
+def test_a_move_on_amplifiers_never_enabled_says_how_v3_enables_them(tmp_path: Path) -> None:
+    # 001:11409-11411: the amplifiers stay disabled from power-up until RESET or CONFIG; ENABLE = 1 also switches
+    # them on (001:7547-7576). v3 has no DRIVEENABLE, the v4 hint's keyword.
+    result = mint_run("--dialect", "v3", write(tmp_path, "v3.mnt", "MOVEA.0 = 10 : GO.0\n"))
+    assert (result.exit_code, result.stdout) == (1, "ERROR: Program: Servo off at line 1 on axis 0\n")
+    assert "until RESET, CONFIG or ENABLE = 1 enables them" in result.output and "DRIVEENABLE" not in result.output
+
+
 def test_mint_run_refuses_a_v4_controller_for_a_v3_program(tmp_path: Path) -> None:
     program = write(tmp_path, "v3.mnt", "PRINT 1\n")
     result = mint_run("--dialect", "v3", "--controller", "nextmove-pci", program)

@@ -27,6 +27,9 @@ OUT_OF_RANGE = 3
 LIMITS_WATCHED, LIMITS_IGNORED = 1.0, 0.0  # LIMITMODE: crash stop (and the v3 abort), or ignore
 CONFIG_OFF, CONFIG_SERVO = 0, 1
 RATES = ("SPEED", "ACCEL", "DECEL", "ERRORDECEL", "HOMESPEED")  # what CONFIG restores (001:6931)
+_AMPLIFIERS_OFF = (  # they power up so (001:11409-11411), and a motion error or ENABLE = 0 switches them off
+    "the amplifiers are disabled until RESET, CONFIG or ENABLE = 1 enables them, or run with --drives enabled"
+)
 
 
 class V3Recovery:
@@ -36,6 +39,8 @@ class V3Recovery:
         self.motion = motion
         self.v4 = v4
         self.on_reset: list[Callable[[], None]] = []  # what RESET clears besides the axes (outputs, TIME, IMASK)
+        for axis in motion.axes:  # error 40's hint in v3's words: v3 has no DRIVEENABLE
+            axis.disabled_hint = _AMPLIFIERS_OFF
 
     def register(self, table: KeywordTable) -> None:
         table.register("CANCEL", command=self._cancel)

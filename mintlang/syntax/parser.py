@@ -471,7 +471,7 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
     if not at_end and kinds[index] is _K.INVALID:
         return None  # the lexer already reported it
     segment = kinds[begin:end]
-    opened = segment.count(_K.LPAR) - segment.count(_K.RPAR)
+    opened = segment.count(_K.LPAR) + segment.count(_K.ADDRESS) - segment.count(_K.RPAR)  # MintMT's POS(0) opens too
     expected = failure.expected
     found = "the end of the statement" if at_end else f"'{line.texts[index]}'"
     if not at_end and kinds[index] is _K.RPAR and index > begin and kinds[index - 1] is _K.LPAR:

@@ -164,21 +164,20 @@ class DigitalIO:
         return read
 
     def _bank_writer(self, attribute: str, *, edges_only: bool = False) -> Callable[[int | None, float], None]:
-        """A writer of one bit per input; ``edges_only``: the bit of an input INPUTMODE does not make edge
-        triggered is left as it is, since setting it "will have no effect" (000:12424-12425, 12478-12479).
+        """A writer of the bank's bit pattern, one bit per input; ``edges_only``: the bit of an input INPUTMODE
+        does not make edge triggered is left as it is, since setting it "will have no effect" (000:12424-12425,
+        12478-12479). The keywords take no channel (``INPUTMODE.1 = 1`` is refused before the program runs, and
+        the comms array writes none of them), so the channel is ignored, as IMASK's is.
 
         The tables print a range, not whole numbers (INPUTMODE 0 to 1048575, 000:12336): a fraction inside it
         is taken by its whole part, as IMASK and OUTPUTACTIVELEVEL take theirs, so ``INPUTMODE = 0.5`` sets no
         bit, and ``mint check``, which checks the printed range, passes it too."""
 
-        def write(channel: int | None, value: float) -> None:
+        def write(_: int | None, value: float) -> None:
             current = getattr(self, attribute)
-            if channel is None:
-                if not 0 <= value <= self.bank_inputs:
-                    raise MintError(OUT_OF_RANGE, detail=f"one bit per input: 0 to {self.bank_inputs}")
-                wanted = self.banks.with_inputs(current, int(value))
-            else:
-                wanted = with_bit(current, self._input(channel), bool(value))
+            if not 0 <= value <= self.bank_inputs:
+                raise MintError(OUT_OF_RANGE, detail=f"one bit per input: 0 to {self.bank_inputs}")
+            wanted = self.banks.with_inputs(current, int(value))
             settable = self.edge_mode if edges_only else self.all_inputs
             setattr(self, attribute, (current & ~settable) | (wanted & settable))
 

@@ -28,10 +28,10 @@ _HEADER = re.compile(r"^(Controller Read|Axis$|Scaled Default Range)")
 _STOP = re.compile(r"^(On |LOOPTIME|Figure |Keyword Reference|MN1262|[A-Z][a-z]+ [a-z]+ )")
 _RANGE_START = re.compile(rf"^(?:{_NUMBER}\s*(?:[<≤]|{_DASH}|to\b|\.\.|,|or\b)|[Ss]ee\b|{_NUMBER}$)")
 _WHOLE_INTERVAL = re.compile(rf"^{_NUMBER}\s*[<≤]")
+"""A range cell that starts the text at once: the Default cell was empty."""
 # A default per axis type wraps onto a second line, and the conversion loses the comma between the two that
 # SPEED keeps ("20,000, 1000 (stepper)"): HOMESPEED "1000" / "500 (step)" (000:11607-11608) is 1000, 500 (step).
 _TWO_DEFAULTS = re.compile(r"(\d) (?=\d)")
-"""A range cell that starts the text at once: the Default cell was empty."""
 _INTERVAL = re.compile(rf"^(?P<min>{_NUMBER})\s*(?P<low>[<≤])\s*x\s*(?P<high>[<≤])\s*(?P<max>{_NUMBER})\s*(?:ms)?$")
 _SPAN = re.compile(rf"^(?P<min>{_NUMBER})\s*(?:{_DASH}|to|\.\.)\s*(?P<max>{_NUMBER})$")
 _CHOICES = re.compile(rf"^{_NUMBER}(?:\s*(?:,|,? or)\s*{_NUMBER})*$")

@@ -26,6 +26,8 @@ _K = TokenKind
 _COMMS_EVENTS = range(1, 6)
 _EVENTS_SHOWN = "the notes show MintMT Event blocks only for MOVEBUFFERLOW and Comms1..Comms5"
 _STOPS = ((_K.END,), (_K.RETURN,))  # a line alone that the code above a handler may end with
+_OPENERS = (_K.LOOP, _K.FOR, _K.WHILE, _K.REPEAT)  # with a block IF, what a closer below ends
+_CLOSERS = (_K.ENDL, _K.NEXT, _K.ENDW, _K.UNTIL, _K.ENDIF)
 
 
 def find(source: Source) -> Iterator[Action]:
@@ -58,13 +60,17 @@ def _comms_handler(source: Source, position: int, number: int) -> Iterator[Actio
 
 def _return_line(lines: tuple[Line, ...], label: int) -> int | None:
     """The line of the handler's ``RETURN`` alone, when it is the handler's only ``RETURN`` and no
-    label comes before it."""
+    label comes before it. A ``RETURN`` inside one of the handler's blocks returns early: ``End Event``
+    there would close the event inside its ``If``."""
+    depth = 0
     for position in range(label + 1, len(lines)):
         kinds = lines[position].kinds
-        if kinds == (_K.RETURN,):
+        if kinds == (_K.RETURN,) and depth == 0:
             return position
         if _K.RETURN in kinds or (kinds and kinds[0] is _K.LABEL):
             return None
+        depth += sum(kinds.count(kind) for kind in _OPENERS) - sum(kinds.count(kind) for kind in _CLOSERS)
+        depth += _K.IF in kinds and _K.DO in kinds  # a block IF
     return None
 
 

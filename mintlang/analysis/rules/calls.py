@@ -18,6 +18,7 @@ from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.rules.flow import subroutines
 from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Span
+from mintlang.dialect import Dialect
 from mintlang.records import record
 from mintlang.semantic.events import event_of
 from mintlang.semantic.units import Unit
@@ -38,6 +39,7 @@ class _Graph:
     """Which routine calls which: the main program and every subroutine of one file."""
 
     calls: dict[str, list[_Call]] = field(default_factory=dict)
+    blocks: list[str] = field(default_factory=list)  # MintMT's Event and Startup blocks: routines of their own
     longest: dict[str, int] = field(default_factory=dict)  # levels of GOSUB a routine's calls can nest
     recursive: list[_Call] = field(default_factory=list)
 
@@ -64,8 +66,9 @@ def check(facts: Facts) -> Iterator[Finding]:
     limit = model.controller.nesting.gosub
     dialect = model.program.dialect
     for unit, _ in model.documents():
-        graph = _graph(unit, facts)
-        roots = [_MAIN, *(label for label in graph.calls if label and event_of(label, dialect) is not None)]
+        graph = _graph(unit, facts, blocks=dialect is Dialect.MINTMT)
+        events = (label for label in graph.calls if label and event_of(label, dialect) is not None)
+        roots = [_MAIN, *events, *graph.blocks]
         for root in roots:
             if graph.depth(root, []) > limit:
                 call = next(call for call in graph.calls[root] if _levels(graph, call) == graph.longest[root])
@@ -88,11 +91,13 @@ def _levels(graph: _Graph, call: _Call) -> int:
     return 1 + graph.longest.get(call.target, 0)
 
 
-def _graph(unit: Unit, facts: Facts) -> _Graph:
-    """The calls of each routine of one file: a routine runs from its label to the next subroutine's."""
+def _graph(unit: Unit, facts: Facts, *, blocks: bool) -> _Graph:
+    """The calls of each routine of one file: a routine runs from its label to the next subroutine's, and
+    a MintMT ``Event`` or ``Startup`` block is one of its own, up to its end, after which the routine
+    around it goes on (the block is stepped over, MT-7)."""
     entries = subroutines(unit, facts.model, facts)
     graph = _Graph({_MAIN: []})
-    routine = _MAIN
+    routine = around = _MAIN
     for file, line, indexed in facts.lines:
         if file is not unit:
             continue
@@ -100,8 +105,28 @@ def _graph(unit: Unit, facts: Facts) -> _Graph:
         if label is not None and label.identity in entries:
             routine = label.identity
             graph.calls.setdefault(routine, [])
+        for statement in line.syntax.statements if blocks else ():
+            opened = _block_opened(statement, line.number)
+            if opened is not None:
+                around, routine = routine, opened
+                graph.calls[routine] = []
+                graph.blocks.append(routine)
+            elif type(statement) is n.BlockWord and statement.word in _BLOCK_ENDS:
+                routine = around
         if n.Jump in indexed.kinds:
             for statement in indexed.statements:
                 if type(statement) is n.Jump and statement.word == "GOSUB":
                     graph.calls[routine].append(_Call(statement.label.identity, line, statement))
     return graph
+
+
+_BLOCK_ENDS = frozenset({"ENDEVENT", "ENDSTARTUP"})
+
+
+def _block_opened(statement: n.Statement, number: int) -> str | None:
+    """The routine a MintMT block opening on line ``number`` starts (no label can be spelt so), or None."""
+    if type(statement) is n.EventBlock:
+        return f"Event {statement.name.text} on line {number}"
+    if type(statement) is n.BlockWord and statement.word == "STARTUP":
+        return f"Startup on line {number}"
+    return None

@@ -289,9 +289,11 @@ def _axis_list(unit: Unit, selector: n.Selector, scope: LineScope) -> Iterator[F
         detail = f"{len(axes)} axes listed, {scope.controller.title} has {scope.controller.axis_count}"
         yield Finding(unit, mint_error(2017, selector.span, detail))
     seen: set[int] = set()
+    between = "an axis number is missing between the commas"
+    missing = "no axis number between the brackets" if len(axes) == 1 else between  # GO[] has no comma
     for item in axes:
         if item is None:
-            yield Finding(unit, mint_error(2001, selector.span, "an axis number is missing between the commas"))
+            yield Finding(unit, mint_error(2001, selector.span, missing))
             continue
         if not isinstance(item, n.Number | n.VariableRef | n.ConstantRef):
             detail = "an axis number in brackets must be a number or a simple variable (use the dot: KW.(a+1))"

@@ -89,12 +89,14 @@ class KeywordTable:
     def refused_by_the_guide(self, name: str, *, write: bool) -> int | None:
         """The controller's error for writing ``name`` (``write``) or reading it, if its record forbids that use
         (2000 for ``VER = 1``, 2002 for ``a = WAIT``), whether or not the simulator has a handler for that use:
-        the verdict ``mint check`` gives the line (``mintlang.keyworddb.usage``)."""
+        the verdict ``mint check`` gives the line (``mintlang.keyworddb.usage``). Whether the controller has the
+        keyword at all is ``in_program``'s to say: a v3 table has every v3 keyword on every v3 controller, where
+        the v4 record's controllers would make ``AUXDAC = 1`` error 17."""
         keyword = database().keywords_of(self.dialect).get(name)
         if keyword is None:
             return None
         refused = refusal(keyword, self.controller, self.dialect, Use.WRITE if write else Use.READ)
-        return refused.code if refused is not None else None
+        return refused.code if refused is not None and refused.code != KEYWORD_NOT_SUPPORTED else None
 
     def names(self) -> Iterator[str]:
         return iter(sorted(self._entries))

@@ -186,6 +186,14 @@ def test_mint_run_reads_peek_but_has_no_option_card_to_read(tmp_path: Path) -> N
     assert "PEEK (function) is not simulated" in result.output and "Syntax error" not in result.output
 
 
+def test_a_v3_keyword_is_on_every_v3_controller(tmp_path: Path) -> None:
+    # 001:5921: v3 reads and writes AUXDAC, which the v4 guide lists for fewer controllers than the simulated one;
+    # v3 has no error 17 for it: its write is simply not simulated
+    result = mint_run("--dialect", "v3", write(tmp_path, "v3.mnt", "PRINT 1\nAUXDAC = 1\n"))
+    assert (result.exit_code, result.stdout) == (1, "1\n")
+    assert "AUXDAC (write) is not simulated" in result.output and "error 17" not in result.output
+
+
 def test_a_move_on_amplifiers_never_enabled_says_how_v3_enables_them(tmp_path: Path) -> None:
     # 001:11409-11411: the amplifiers stay disabled from power-up until RESET or CONFIG; ENABLE = 1 also switches
     # them on (001:7547-7576). v3 has no DRIVEENABLE, the v4 hint's keyword.

@@ -27,6 +27,7 @@ from mintlang.runtime.keywords import KeywordTable, Reader
 from mintlang.runtime.numbers import bits24, f32, held
 from mintlang.runtime.semantics import Semantics
 from mintlang.syntax import nodes as n
+from mintlang.syntax.v3_axis_lists import NUMBER_OR_VARIABLE, refused_axes
 
 Evaluate = Callable[[], float]
 
@@ -211,8 +212,8 @@ class ExpressionCompiler:
             return (lambda: glued,)
         selector = reference.selector
         if selector is not None:
-            if self.semantics.dialect is Dialect.V3 and not selector.dot:
-                _simple_axes(selector)
+            if self.semantics.dialect is Dialect.V3 and next(refused_axes(selector), None) is not None:
+                raise MintError(INVALID_AXIS, detail=NUMBER_OR_VARIABLE)
             return tuple(self.compile(item) if item is not None else _missing for item in selector.axes)
         return True if reference.keyword in self.semantics.axis_keywords else None
 
@@ -232,14 +233,6 @@ class ExpressionCompiler:
             raise NotSimulated(call.function, f"{len(arguments)} arguments")
         (index,) = arguments
         return lambda: read(int(index()))
-
-
-def _simple_axes(selector: n.Selector) -> None:
-    """Mint v3 takes only a number or a variable in an axis list: an expression or an array element there is
-    "Invalid axis" (``SF[a+1] = 1000``, 001:13173-13184; ``MOVER[a+1]``, 001:1009-1011)."""
-    for item in selector.axes:
-        if item is not None and not isinstance(item, n.Number | n.VariableRef | n.ConstantRef):
-            raise MintError(INVALID_AXIS, detail="an axis number in brackets must be a number or a variable")
 
 
 def _and_of_reads(read: Reader, channels: Iterable[int], clock: Clock) -> float:

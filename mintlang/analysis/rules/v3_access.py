@@ -17,7 +17,7 @@ from collections.abc import Iterator
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import KeywordUse, LineScope, Use
 from mintlang.keyworddb import database
-from mintlang.syntax import nodes as n
+from mintlang.syntax.v3_axis_lists import NUMBER_OR_VARIABLE, refused_axes
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
@@ -44,11 +44,8 @@ def _axes(use: KeywordUse) -> Iterator[Finding]:
     selector = use.keyword.selector
     if selector is None:
         return  # the default axes: AXES may have set any
-    if not selector.dot:
-        for item in selector.axes:
-            if item is not None and not isinstance(item, n.Number | n.VariableRef | n.ConstantRef):
-                detail = "Invalid axis in Mint v3: an axis number in brackets must be a number or a variable"
-                yield Finding(use.unit, mint_error(2, item.span, detail))
+    for item in refused_axes(selector):
+        yield Finding(use.unit, mint_error(2, item.span, f"Invalid axis in Mint v3: {NUMBER_OR_VARIABLE}"))
     if use.keyword.keyword in _VECTORS and len(selector.axes) < 2:
         detail = f"Invalid axis in Mint v3: {use.keyword.keyword} needs two axes or more"
         yield Finding(use.unit, mint_error(2, selector.span, detail))

@@ -6,7 +6,8 @@ statement is 2005 (``SPEED``); reading a command, or operands after a command th
 is 2003 (``STOP following``, a comment missing its REM); an editor command in a program is 2006
 (``NEW``); a keyword its controller lacks is 17. The attributes table decides; a keyword the guide
 gives none is judged by its formats. ``mint check`` reports the error where the line is written, and
-``mint-run`` raises it when the line runs, so the two cannot drift apart.
+``mint-run`` gives the same number (2000 and 2002 when the line runs, the compiler's errors before the
+program starts), so the two cannot drift apart.
 """
 
 from __future__ import annotations

@@ -27,12 +27,17 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     has_auto = model.controller.controller in database().keywords["AUTO"].controllers
     configuration = model.configuration.source if model.configuration else ""
+    words = ("AUTO", "PROTECT") if has_auto else ("PROTECT",)
+    texts = (model.program.source.upper(), configuration.upper())
+    if not any(word in text for word in words for text in texts):
+        return  # a word in neither file, nor in a macro's text there: no keyword use to walk to (most checks)
     for line, use in facts.keyword_uses():
-        span = line.span(use.keyword.spelling_span)
         word = use.keyword.keyword
         if word == "AUTO" and has_auto:
+            span = line.span(use.keyword.spelling_span)
             detail = _misplaced("AUTO", use.unit, Unit.CONFIGURATION, configuration, span.start)
         elif word == "PROTECT" and _sets_a_password(use.statement):
+            span = line.span(use.keyword.spelling_span)
             detail = _misplaced("PROTECT <password>", use.unit, Unit.PROGRAM, model.program.source, span.start)
         else:
             continue

@@ -13,7 +13,7 @@ a migration that fails on the next line has run the one the original failed on.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 
 from mintlang.migrate.verification import printed, signals, tolerance
 from mintlang.migrate.verification.model import Divergence, Place, Stopped
@@ -38,9 +38,13 @@ def stopped(run: Recording) -> Stopped:
     return Stopped(stop.reason.value, stop.time_ms, line, stop.message)
 
 
-def differences(v3: Recording, v4: Recording, origins: Mapping[Place, frozenset[int]]) -> list[Divergence]:
-    """Every channel's first difference up to the horizon, the earliest first; ``origins`` gives the lines of
-    the original each line of the migration was made from (``runnable.origins``)."""
+Origins = Callable[[], Mapping[Place, frozenset[int]]]
+"""The lines of the original each line of the migration was made from (``runnable.origins``), worked out
+only when two errors are to be told apart: a diff of the files, most runs end without one."""
+
+
+def differences(v3: Recording, v4: Recording, origins: Origins) -> list[Divergence]:
+    """Every channel's first difference up to the horizon, the earliest first."""
     until = horizon(v3, v4)
     return in_order(
         [*_stops(v3, v4, until, origins), *printed.differences(v3, v4, until), *signals.differences(v3, v4, until)]
@@ -52,7 +56,7 @@ def in_order(found: list[Divergence]) -> list[Divergence]:
     return sorted(found, key=lambda found: (found.time_ms, _ORDER.index(found.what.split(" ")[0])))
 
 
-def _stops(v3: Recording, v4: Recording, until: int, origins: Mapping[Place, frozenset[int]]) -> list[Divergence]:
+def _stops(v3: Recording, v4: Recording, until: int, origins: Origins) -> list[Divergence]:
     """How the runs ended, against each other: a run over for good while the other went on more than
     ``TIME_MS`` past it, two that ended differently (an error against an end), two errors on different
     statements, or two errors far apart.
@@ -79,12 +83,13 @@ def _stops(v3: Recording, v4: Recording, until: int, origins: Mapping[Place, fro
     return []
 
 
-def _same_statement(v3: Place | None, v4: Place | None, origins: Mapping[Place, frozenset[int]]) -> bool:
+def _same_statement(v3: Place | None, v4: Place | None, origins: Origins) -> bool:
     """Whether the v4 run stopped on a line made from the v3 line its run stopped on; a line unknown, or one
     the migrator added, may be: only two lines known apart are told apart."""
-    if v3 is None or v4 is None or v4 not in origins:
+    if v3 is None or v4 is None:
         return True
-    return v3.unit == v4.unit and v3.line in origins[v4]
+    made_from = origins().get(v4)
+    return made_from is None or (v3.unit == v4.unit and v3.line in made_from)
 
 
 @record

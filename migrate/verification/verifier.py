@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import replace
-from functools import partial
+from functools import cache, partial
 from types import MappingProxyType
 
 from mintlang.dialect import Dialect
@@ -74,7 +74,7 @@ def conclude(
     migration. ``what_if`` records the migration with v3's trigonometry, to tell the differences M-TRIG
     explains (``explained``) from divergences when there are any."""
     comparable = not (original.refused or (migrated.refused and short))  # else one of them never ran
-    origins = runnable.origins(result)
+    origins = cache(partial(runnable.origins, result))
     found = compare.differences(original, migrated, origins) if comparable else []
     expected: list[Divergence] = []
     if found and what_if is not None:

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from bisect import bisect_left
 from collections.abc import Callable, Generator, Iterator, Mapping, Sequence
+from operator import attrgetter
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import Facts, KeywordUse, LineScope, Use
@@ -90,6 +91,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
 # A straight run of lines: statements that neither jump, branch, loop nor may be arrived at from elsewhere.
 _RUN_ON = frozenset({n.Assignment, n.KeywordStatement, n.Pause, n.Dim, n.Define, n.Print, n.Input, n.Axes})
 _AXES = frozenset({n.Axes})
+_ORIGIN = attrgetter("origin")  # where a placed line starts: the order of a file's lines
 
 
 def check(facts: Facts) -> Iterator[Finding]:
@@ -104,13 +106,9 @@ def check(facts: Facts) -> Iterator[Finding]:
     walked: dict[Unit, int] = {}  # per file, the index of the line after the last run followed
     for unit, axes_line, _ in facts.lines.with_kinds(_AXES):  # only the runs from an AXES line are read
         lines = model.document(unit).placed
-        start = bisect_left(lines, axes_line.origin, key=_origin)
+        start = bisect_left(lines, axes_line.origin, key=_ORIGIN)
         if start >= walked.get(unit, 0):
             walked[unit] = yield from _run(unit, lines, start, model)
-
-
-def _origin(line: n.PlacedLine) -> int:
-    return line.origin
 
 
 def _run(unit: Unit, lines: Sequence[n.PlacedLine], start: int, model: SemanticModel) -> Generator[Finding, None, int]:

@@ -58,6 +58,8 @@ def test_a_v3_keyword_used_twice_on_a_line_is_renamed_on_the_whole_line() -> Non
     [
         pytest.param("PAUSE IDL[0]\n", "IDL", "IDLE", id="read-in-a-statement"),
         pytest.param("SPED.0 = 10\n", "SPED", "SPEED", id="written-with-an-axis"),
+        # keywords are read in any case (000:5562-5564): the message quotes the word as the program spells it
+        pytest.param("Sped.0 = 10\n", "Sped", "SPEED", id="written-in-mixed-case"),
         pytest.param("STOPP\n", "STOPP", "STOP", id="a-statement-of-its-own"),
         # two letters swapped: difflib finds IDEL only 0.75 like IDLE, and 0.86 like the editor's DEL
         pytest.param("PAUSE IDEL.0\n", "IDEL", "IDLE", id="two-letters-swapped"),

@@ -46,7 +46,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         addressed = ref.selector is not None and scope.dialect is not Dialect.MINTMT  # MintMT's (0,1) are axes too
         verdict = _verdict(
             ref.keyword,
-            ref.spelling.upper(),
+            ref.spelling,
             controller,
             use.use,
             has_arguments,
@@ -56,7 +56,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if verdict is not None:
             code, detail = verdict
             fixes = (
-                _spelling_fix(ref.spelling.upper(), controller, ref.spelling_span, scope.dialect, addressed=addressed)
+                _spelling_fix(ref.spelling, controller, ref.spelling_span, scope.dialect, addressed=addressed)
                 if code == 3007
                 else ()
             )
@@ -115,7 +115,7 @@ def _verdict(
     that is no keyword here, else what the keyword's record says of the use, as ``mint-run`` says it too."""
     keyword = database().keywords_of(dialect).get(name)
     if keyword is None:
-        if dialect.modern and successor(spelling, profile(controller)) is not None:
+        if dialect.modern and successor(spelling.upper(), profile(controller)) is not None:
             return None  # an old v3 keyword: the v3-keyword rule names its replacement
         return 3007, _not_a_keyword(spelling, controller, dialect, addressed=addressed)
     return refusal(keyword, controller, dialect, use, has_arguments=has_arguments)

@@ -108,6 +108,7 @@ class _Open:
     span: Span  # of the opener, in its file: where its diagnostics go
     middle: Place | None = None
     reported: bool = False  # an error already tells of this block: its opener is broken, or a closer mismatched
+    over: str | None = None  # the nesting limit exceeded with this block open (``nesting_problem``)
 
 
 _OPENING_WORDS = {"REPEAT": BlockKind.REPEAT, "LOOP": BlockKind.LOOP, "STARTUP": BlockKind.STARTUP}
@@ -162,7 +163,9 @@ class _Matcher:
             self.stack.append(_Open(kind, place, line.span(statement.span), reported=broken))
             self.open[kind] += 1
             problem = nesting_problem(self.open, self.limits)
-            if problem is not None:
+            self.stack[-1].over = problem
+            # once where a limit is crossed, not again for each block nested deeper (the compiler stops there)
+            if problem is not None and (len(self.stack) < 2 or self.stack[-2].over != problem):
                 self.diagnostics.append(_error(2015, line.span(statement.span), problem))
         elif isinstance(statement, n.Until) or (isinstance(statement, n.SyntaxError_) and statement.closes == "UNTIL"):
             self.close(BlockKind.REPEAT, place, line.span(statement.span), 2013, "UNTIL without REPEAT")

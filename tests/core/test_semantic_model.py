@@ -190,6 +190,14 @@ def test_the_fifty_first_nested_for_loop_is_a_stack_overflow() -> None:
     assert codes_at(nested_for_loops(51)) == [("E2015", 52)]
 
 
+def test_a_nesting_limit_crossed_once_is_one_error_not_one_per_deeper_block() -> None:
+    # the controller's compiler stops at its first error (#2015, line 19033): the 52nd and 53rd
+    # loops inside the 51st are the same overflow; a second crossing after it closed is another
+    source = nested_for_loops(53) + "FOR i = 1 TO 2\n" * 51 + "NEXT\n" * 51
+    # lines: DIM, 53 FORs (2-54), 53 NEXTs (55-107), then 51 FORs from line 108: the 51st on 158
+    assert codes_at(source) == [("E2015", 52), ("E2015", 158)]
+
+
 def test_nextmove_pc_allows_twenty_nested_for_loops() -> None:
     # line 1962 (3.9): NextMove PC: FOR..NEXT blocks 20 levels
     assert codes_at(nested_for_loops(20), controller="nextmove-pc") == []

@@ -476,6 +476,8 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
     found = "the end of the statement" if at_end else f"'{line.texts[index]}'"
     if not at_end and kinds[index] is _K.RPAR and index > begin and kinds[index - 1] is _K.LPAR:
         return _empty_brackets(line, begin, index)
+    if (at_end or kinds[index] is _K.RPAR) and _innermost_open(kinds, begin, index) is _K.LSQB:
+        return _error(2003, span, "a ']' is missing")  # SPEED[0,1 = 4, SPEED[0,1) = 4: not a ')' too many
     # The manual's examples: a missing ")" is a syntax error (2003), one ")" too many is 2004.
     if opened < 0 or (not at_end and kinds[index] is _K.RPAR and opened <= 0):
         return _error(2004, span, "there is a ')' too many")
@@ -521,6 +523,17 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
     if line.expanded[index if not at_end else end - 1]:
         return _error(2003, span, f"unexpected {_unexpected(found)} in the text of a macro")
     return _error(2003, span, f"unexpected {_unexpected(found)}")
+
+
+def _innermost_open(kinds: list[TokenKind], begin: int, end: int) -> TokenKind | None:
+    """The innermost bracket still open before ``end`` in the statement from ``begin``: ``(`` or ``[``."""
+    open_: list[TokenKind] = []
+    for kind in kinds[begin:end]:
+        if kind is _K.LPAR or kind is _K.LSQB or kind is _K.ADDRESS:
+            open_.append(_K.LPAR if kind is _K.ADDRESS else kind)
+        elif (kind is _K.RPAR or kind is _K.RSQB) and open_:
+            open_.pop()
+    return open_[-1] if open_ else None
 
 
 def _empty_brackets(line: LogicalLine, begin: int, closing: int) -> Diagnostic:

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING
 from mintlang.codes import code_named, own
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.records import record
+from mintlang.syntax.tokens import TokenKind
 
 if TYPE_CHECKING:
     from mintlang.syntax.parser import Document
@@ -208,4 +209,9 @@ def suppression_fix(document: Document, offset: int, code: str, *, name_the_line
         return Fix(title, (Edit(Span(start, start + 3), f"{comment}"),), safe=True)
     content = lexed.text[: lexed.content_end].rstrip()
     end = line_offset + len(content)
-    return Fix(title, (Edit(Span(end, end), f" : {comment}" if content.strip() else comment),), safe=True)
+    if not content.strip():
+        return Fix(title, (Edit(Span(end, end), comment),), safe=True)
+    # After a trailing comma (a DIM list going on to the next line, guide 3.3) a colon would end the
+    # statement there; a REM needs no colon after code (REM in the keyword reference).
+    separator = " " if lexed.kinds and lexed.kinds[-1] is TokenKind.COMMA else " : "
+    return Fix(title, (Edit(Span(end, end), f"{separator}{comment}"),), safe=True)

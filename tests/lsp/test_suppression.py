@@ -98,3 +98,17 @@ async def test_two_diagnostics_of_one_code_on_a_line_are_ignored_by_one_action(c
         )
     )
     assert [a.title for a in found if a.title.startswith("Ignore")] == ["Ignore W103 on this line"]
+
+
+async def test_ignoring_a_finding_on_a_line_that_a_dim_list_continues_keeps_the_list_going(client, tmp_path):
+    """The guide's arrays (3.3, 000:1095-1097): a list of initial values goes on to the next line after a
+    trailing comma, so ``: REM`` there would end the DIM and leave ``3, 4`` a line of its own. A REM after
+    code needs no colon (the REM entry, 000:15510-15512): the comment goes straight after the comma."""
+    uri = uri_of(tmp_path / "table.mnt")
+    text = "DIM table(4) = 1, 2,\n  3, 4\n"
+    [unused] = await open_document(client, uri, text)
+    assert (unused.code, unused.range.start.line) == ("W103", 0)
+    [edit] = (await ignore_action(client, uri, unused)).edit.changes[uri]
+    ignored = applied(text, edit)
+    assert ignored == "DIM table(4) = 1, 2, REM mint: ignore[W103]\n  3, 4\n"
+    assert await open_document(client, uri_of(tmp_path / "ignored.mnt"), ignored) == []

@@ -87,7 +87,7 @@ RULES: tuple[Rule, ...] = (
         addressing.check,
         addressing.each_line,
         dialects=_V4_ATTRIBUTES,
-        looks_at=LineParts(frozenset({n.Axes}), keyword_uses=True),
+        looks_at=LineParts(frozenset({n.Axes, n.FunctionStatement}), keyword_uses=True),  # CAMTABLE(axis, ...)
     ),
     Rule("values", each_line=values.each_line, dialects=_V4_ATTRIBUTES, looks_at=LineParts(keyword_uses=True)),
     Rule(

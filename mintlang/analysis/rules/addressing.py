@@ -86,6 +86,8 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
     for statement in scope.facts.statements:
         if isinstance(statement, n.Axes):
             yield from _axes_statement(scope.unit, statement, scope)
+        elif type(statement) is n.FunctionStatement:
+            yield from _function_axis(statement.call, scope)
 
 
 # A straight run of lines: statements that neither jump, branch, loop nor may be arrived at from elsewhere.
@@ -211,6 +213,19 @@ def _nothing_addressed(use: KeywordUse, keyword: Keyword) -> Iterator[Finding]:
     span = ref.selector.span if ref.selector is not None else ref.spelling_span
     shown = " or ".join(f"'{layout}'" for layout in keyword.formats)
     yield Finding(use.unit, mint_error(2003, span, f"{keyword.name} takes no axis or channel number: {shown}"))
+
+
+def _function_axis(call: n.Call, scope: LineScope) -> Iterator[Finding]:
+    """A function loaded on an axis names it first, ``CAMTABLE ( axis, position array, ...)`` (000:7907-7910):
+    an axis the controller lacks is error 2 there as after a dot."""
+    keyword = database().keywords_of(scope.dialect).get(call.function)
+    if (
+        keyword is not None
+        and keyword.addressing is Addressing.AXIS
+        and call.arguments
+        and (not keyword.controllers or scope.controller.controller in keyword.controllers)
+    ):
+        yield from _axis_number(scope.unit, call.arguments[0], scope)
 
 
 def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:

@@ -42,6 +42,7 @@ class Callee:
     bracketed: bool  # the cursor is inside the brackets after a function's name
     in_expression: bool
     using: bool = False  # the cursor is in a USING clause (PRINT a USING 5, 2)
+    addressing: bool = False  # the cursor is in the axes or channels after the keyword (CIRCLEA[0,1])
 
 
 def _starts_statement(tokens: list[Token], index: int) -> bool:
@@ -61,6 +62,8 @@ def callee_at(tokens: list[Token], settings: Settings) -> Callee | None:
         elif token.kind in (TokenKind.LPAR, TokenKind.LSQB, TokenKind.ADDRESS):
             if depth == 0 and token.kind is TokenKind.LPAR and index > 0 and tokens[index - 1].kind is _FUNCTION:
                 return Callee(tokens[index - 1], commas, True, not _starts_statement(tokens, index - 1))
+            if depth == 0 and token.kind is not TokenKind.LPAR and index > 0 and _addressed(tokens, index - 1):
+                return Callee(tokens[index - 1], commas, False, False, addressing=True)
             depth = max(0, depth - 1)
         elif token.kind is TokenKind.COMMA and depth == 0:
             commas += 1
@@ -76,6 +79,11 @@ def callee_at(tokens: list[Token], settings: Settings) -> Callee | None:
             terminal = index + 1 < len(tokens) and tokens[index + 1].kind is TokenKind.HASH
             return Callee(token, commas - 1 if terminal and commas else commas, False, False)  # PRINT #1, ...
     return None
+
+
+def _addressed(tokens: list[Token], index: int) -> bool:
+    """A keyword starting a statement whose axes or channels open after it (``CIRCLEA[``, MintMT's ``MOVER(``)."""
+    return tokens[index].kind is TokenKind.KEYWORD and _starts_statement(tokens, index)
 
 
 def _items(label: str, start: int, end: int) -> list[tuple[int, int]]:
@@ -103,6 +111,10 @@ def _parameters(label: str, name: str, callee: Callee) -> list[tuple[int, int]]:
     clause = label.find("{" + _USING, after)  # PRINT, INPUT: {USING <int> {,<frac>}}, reached by its word
     if callee.using:
         return _items(label, clause + len(_USING) + 1, len(label)) if clause >= 0 else []
+    if callee.addressing:  # CIRCLEA[axis0,axis1] = ...: the operands in the brackets after the name
+        closer = _OPENERS.get(label[after : after + 1])
+        closing = label.find(closer, after) if closer else -1
+        return _items(label, after + 1, closing) if closing > after else []
     if callee.bracketed:
         opening = label.find("(", after)
         closing = label.rfind(")")

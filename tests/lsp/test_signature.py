@@ -64,6 +64,10 @@ INPUT = "INPUT {#<terminal>} {string,} variable {USING <int> {,<frac>}}"
         ("a = COMMS(1, ", "v = COMMS( {node, } element)", "element"),
         ("MOVEA.0 = 1, 2, ", "MOVEA[axes] = <expression> {,<expression ...}", "<expression ..."),
         ("CIRCLEA[0,1] = 1, 2, ", "CIRCLEA[axis0,axis1] = <centre0>,<centre1>,<angle>", "<angle>"),
+        # In the brackets after the keyword the operands are its axes (000:8152), not the values after '='
+        ("CIRCLEA[", "CIRCLEA[axis0,axis1] = <centre0>,<centre1>,<angle>", "axis0"),
+        ("CIRCLEA[0, ", "CIRCLEA[axis0,axis1] = <centre0>,<centre1>,<angle>", "axis1"),
+        ("MOVEA[0, 1, ", "MOVEA[axes] = <expression> {,<expression ...}", "axes"),
         ("PAUSE ", "PAUSE <condition>", "<condition>"),
         ("LOCATE #1, 5, ", "LOCATE {#<terminal>} <column>,<row>", "<row>"),
         ("CAMEND[0,1] = 1, 2, ", "CAMEND[axes] = <expression> {,<expression>}", "<expression>"),

@@ -90,7 +90,7 @@ class FileOutcome:
     changes: tuple[Change, ...]
     manual: tuple[ManualItem, ...]
     counts: Mapping[str, int]
-    errors: tuple[str, ...]  # what the v3 parser could not read in the original
+    errors: tuple[str, ...]  # what the original's reader (v3; v4 to MintMT) could not read
 
 
 @kept_without_collector  # acyclic and large: collections would walk the trees and the caches they fill

@@ -110,7 +110,7 @@ class MigrationResult:
     changes: tuple[Change, ...]
     manual: tuple[ManualItem, ...]
     rule_counts: Mapping[str, int]
-    errors: tuple[str, ...] = ()  # the errors `mint check --dialect v3` finds in the original: its unreadable lines
+    errors: tuple[str, ...] = ()  # what the original's reader (v3; v4 to MintMT) finds in error: its unreadable lines
     configuration: MigrationResult | None = field(default=None, repr=False)
     already_v4: bool = False  # recognised as Mint v4 and left as it was (see ``recognise``)
     already_mintmt: bool = False  # ``--to mintmt``: recognised as MintMT and left as it was

@@ -162,6 +162,7 @@ def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = Fals
 
     ``quiet`` leaves out all but the manual items and the unreadable lines; ``verbose`` adds every change.
     """
+    reader = "v4" if "to" in data else "v3"  # the dialect of the files migrated: to MintMT, Mint v4
     if not quiet:
         _files_table(data, console)
     for row in data["files"]:
@@ -169,7 +170,7 @@ def render_text(data: Mapping[str, Any], console: Console, *, quiet: bool = Fals
         for item in row["manual"]:
             console.print(f"{_place(path, item)}: [bold]{item['rule']}[/bold] {escape(item['reason'])}")
         for error in row["errors"]:
-            console.print(f"{path}: unreadable v3 {escape(error)}")
+            console.print(f"{path}: unreadable {reader} {escape(error)}")
         for line in () if quiet else _differing(path, row["changes"]):
             console.print(line)
         for change in row["changes"] if verbose else ():

@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import replace
 from types import ModuleType
 
 from mintlang.detection import detect_dialect
-from mintlang.diagnostics import Span
+from mintlang.diagnostics import Severity, Span
 from mintlang.dialect import Dialect
 from mintlang.migrate import engine
 from mintlang.migrate.mintmt import addressing, blocks, characters, comments, events, names
@@ -14,6 +15,8 @@ from mintlang.migrate.mintmt.apply import apply
 from mintlang.migrate.mintmt.source import Source
 from mintlang.migrate.mintmt.v3 import v3_uses
 from mintlang.migrate.model import MigrationFailed, MigrationResult
+from mintlang.syntax.lines import MacroDefinition
+from mintlang.syntax.parser import Document, parse
 from mintlang.syntax.tokens import BYTE_ORDER_MARK
 
 # One module per kind of rewrite, each with its ID, SUMMARY and find(source); the order is the report's.
@@ -38,18 +41,29 @@ def to_mintmt(source: str, *, config: str | None = None) -> MigrationResult:
         raise MigrationFailed(None, f"this is Mint v3 ({shown}): migrate it to v4 first (mint-migrate without --to)")
     visible: frozenset[str] = frozenset()
     migrated_configuration = None
+    macros: Mapping[str, MacroDefinition] | None = None
     if config is not None:
         configuration = Source(config.removeprefix(BYTE_ORDER_MARK))
-        migrated_configuration = _migrated(configuration, config)
-        visible = configuration.macros  # a program sees its configuration file's macros
+        read = parse(config)
+        migrated_configuration = _migrated(configuration, config, read)
+        visible, macros = configuration.macros, read.macros  # a program sees its configuration file's macros
     program = Source(source.removeprefix(BYTE_ORDER_MARK), visible)
-    return _result(_migrated(program, source), migrated_configuration, already=False)
+    return _result(_migrated(program, source, parse(source, macros=macros)), migrated_configuration, already=False)
 
 
-def _migrated(source: Source, written: str) -> engine.FileOutcome:
+def _migrated(source: Source, written: str, read: Document) -> engine.FileOutcome:
     """``source`` (the text ``written`` without its byte-order mark, as the v3 -> v4 migration takes it)
-    migrated, with the mark put back in front: a marker above the first line goes below it."""
+    migrated, with the mark put back in front: a marker above the first line goes below it. ``read`` is
+    ``written`` parsed as Mint v4: the lines it cannot read are the outcome's errors, as the v3 reader's are
+    for a migration to v4 (the rewrites read tokens, and would pass them by unreported)."""
     outcome = apply(source, [action for rewrite in REWRITES for action in rewrite.find(source)])
+    index = read.line_index
+    errors = tuple(
+        f"line {index.position(d.span.start).line}: {d.code} {d.message}"
+        for d in read.diagnostics
+        if d.severity is Severity.ERROR
+    )
+    outcome = replace(outcome, errors=errors)
     mark = BYTE_ORDER_MARK if written.startswith(BYTE_ORDER_MARK) else ""
     if not mark:
         return outcome
@@ -67,5 +81,11 @@ def _result(program: engine.FileOutcome, configuration: engine.FileOutcome | Non
 
 def _of(outcome: engine.FileOutcome, already: bool) -> MigrationResult:
     return MigrationResult(
-        outcome.source, outcome.text, outcome.changes, outcome.manual, outcome.counts, already_mintmt=already
+        outcome.source,
+        outcome.text,
+        outcome.changes,
+        outcome.manual,
+        outcome.counts,
+        outcome.errors,
+        already_mintmt=already,
     )

@@ -8,13 +8,17 @@ names, and no subroutine is renamed into one: the controller calls handlers
 by name. A symbol written with two spellings the controller takes for one
 (``thisIsAVariable1``, ``thisIsAVaraible2``) is written one way after the
 rename; the user is told so before anything changes: a change annotation that
-needs confirmation where the client supports them, else a question.
+needs confirmation where the client supports them, else a question. A variable
+or array is renamed in the program's ``REM @expect`` comments too: ``mint test``
+reads the value by that name, and would find none after the rename.
 """
 
 from __future__ import annotations
 
 import asyncio
 import logging
+import re
+from collections.abc import Iterator
 
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException
@@ -27,6 +31,7 @@ from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Settings, Snapshot
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, SymbolTable
+from mintlang.semantic.units import Unit
 from mintlang.syntax.lexer import lex
 from mintlang.syntax.nodes import identity
 from mintlang.syntax.tokens import TokenKind
@@ -117,6 +122,33 @@ def _check_name(snapshot: Snapshot, symbol: Symbol, name: str) -> None:
             raise RenameRefused(_clash(name, symbol, other))
 
 
+# What an expectation reads (runtime/scenario/README.md, "Directives in the program"): ``count = 3``,
+# ``no count``, ``table(2) >= 1``; ``terminal`` and ``stopped`` begin the other forms.
+_EXPECTED_NAME = re.compile(r"\s*(?:no\s+)?(?P<name>[A-Za-z_]\w*)", re.IGNORECASE)
+_OTHER_FORMS = frozenset({"TERMINAL", "STOPPED"})
+
+
+def _expected(snapshot: Snapshot, symbol: Symbol) -> Iterator[Span]:
+    """Where the program's ``REM @expect`` comments name the variable or array ``symbol``."""
+    if symbol.kind not in (SymbolKind.VARIABLE, SymbolKind.ARRAY):
+        return
+    from mintlang.runtime.scenario.directive_words import DIRECTIVE  # noqa: PLC0415 - the server starts without the runtime
+
+    for offset, line in snapshot.model.document(Unit.PROGRAM).physical:
+        if line.comment_start < 0:
+            continue
+        directive = DIRECTIVE.match(line.text, line.comment_start, line.content_end)
+        if directive is None or directive["word"].lower() != "expect":
+            continue
+        named = _EXPECTED_NAME.match(line.text, directive.start("body"), line.content_end)
+        if (
+            named is not None
+            and named["name"].upper() not in _OTHER_FORMS
+            and identity(named["name"]) == symbol.identity
+        ):
+            yield Span(offset + named.start("name"), offset + named.end("name"))
+
+
 MERGE = "mint.mergeSpellings"
 QUESTION_TIMEOUT_S = 120.0
 _GO_ON = "Rename all"
@@ -165,6 +197,11 @@ def register(server: MintServer) -> None:
             if file is not None:
                 edit = types.TextEdit(range=file.positions.range(_spelling(occurrence)), new_text=name)
                 changes.setdefault(file.uri, []).append(edit)
+        program = snapshot.files.get(Unit.PROGRAM)
+        if program is not None:
+            for span in _expected(snapshot, symbol):
+                edit = types.TextEdit(range=program.positions.range(span), new_text=name)
+                changes.setdefault(program.uri, []).append(edit)
         spellings = _spellings(occurrences)
         if len(spellings) < 2:
             return types.WorkspaceEdit(changes=changes)

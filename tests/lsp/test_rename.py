@@ -11,6 +11,7 @@ from pygls.exceptions import JsonRpcException
 from pygls.lsp.client import LanguageClient
 
 from tests.lsp.conftest import SHARED, corpus, document, open_document, position, uri_of
+from tests.lsp.test_formatting import apply
 
 pytestmark = pytest.mark.asyncio
 XY = corpus("ch01_l0144_xy_example.mnt")
@@ -170,6 +171,43 @@ async def test_a_label_a_macro_jumps_to_is_renamed_in_the_macros_body_too(client
     )
     places = sorted((e.range.start.line, e.range.start.character, e.range.end.character) for e in edit.changes[uri])
     assert places == [(0, 20, 26), (3, 1, 7)]
+
+
+EXPECTING = (
+    "REM @expect count = 3\n"
+    'REM @expect terminal contains "count"\n'
+    "DIM count = 3 : REM @expect COUNT >= 1 at end\n"
+    "DIM table(2) = 1, 2 : REM count stays a word here\n"
+    "REM @expect no spare\n"
+    "DIM spare\n"
+    'PRINT "count", count, table(2), spare\n'
+    "REM @expect table(2) = 2\n"
+)
+
+
+@pytest.mark.parametrize(
+    ("needle", "new_name", "renamed"),
+    [
+        # An expectation reads a variable or array element by name (runtime/scenario/README.md, "Directives in
+        # the program": count >= 3, table(3), no X); the terminal's text and other comments are no names.
+        (
+            "count = 3 :",
+            "total",
+            EXPECTING.replace("@expect count", "@expect total")
+            .replace("@expect COUNT", "@expect total")
+            .replace("DIM count", "DIM total")
+            .replace(", count,", ", total,"),
+        ),
+        ("table(2) =", "tbl", EXPECTING.replace("table(2)", "tbl(2)")),
+    ],
+)
+async def test_a_variable_or_array_is_renamed_in_the_programs_expectations(client, tmp_path, needle, new_name, renamed):
+    uri = uri_of(tmp_path / "expecting.mnt")
+    await open_document(client, uri, EXPECTING)
+    edit = await client.text_document_rename_async(
+        types.RenameParams(text_document=document(uri), position=position(EXPECTING, needle), new_name=new_name)
+    )
+    assert apply(EXPECTING, edit.changes[uri]) == renamed
 
 
 async def test_a_refused_rename_is_an_answer_not_a_logged_fault(tmp_path):

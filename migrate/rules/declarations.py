@@ -139,34 +139,49 @@ def _dimmed(context: Context) -> dict[Unit, set[str]]:
 
 
 class DefaultAxes(Rule):
-    """An application that never sets AXES gets ``AXES[0,1,2]``: v3 powered up with three
-    default axes, v4 with all the controller's axes, so bracket-less STOP, GO, RESET or
-    ``SPEED = …;`` would act on more axes. Not needed when the controller has at most three,
-    nor when no axis keyword is written without its axes (an empty file, ``OUT.2 = 1``):
-    then the default decides nothing, and a file already in v4 stays as it is.
+    """An application that uses the power-up default axes gets ``AXES[0,1,2]``: v3 powered up
+    with three default axes, v4 with all the controller's axes, so bracket-less STOP, GO, RESET
+    or ``SPEED = …;`` would act on more axes. That is so when an axis keyword is written without
+    its axes before any AXES statement (``JOG = 10;`` then ``AXES[0]``), not only when there is
+    none. Not needed when the controller has at most three, nor when no axis keyword is written
+    without its axes (an empty file, ``OUT.2 = 1``) or every one comes after an AXES: then the
+    default decides nothing, and a file already in v4 stays as it is.
     """
 
     id = "M-AXES"
     rule_class = RuleClass.MECHANICAL
     phase = Phase.INSERTIONS
-    summary = "an axis keyword without axes, no AXES -> 'AXES[0,1,2]' first in the configuration file (or program)"
+    summary = (
+        "an axis keyword without axes before any AXES -> 'AXES[0,1,2]' first in the configuration file (or program)"
+    )
     evidence = "spec M-AXES; v3:1029-1033; v4:605-608, v4:144-182"
 
     def apply(self, context: Context) -> Iterator[Action]:
         if context.controller.axis_count <= V3_DEFAULT_AXES:
             return
-        if next(context.placed(n.Axes), None) is not None or not _relies_on_default_axes(context):
+        if not _relies_on_default_axes(context):
             return
         axes = ",".join(str(axis) for axis in range(V3_DEFAULT_AXES))
         yield insert_lines(prologue_file(context), [f"AXES[{axes}]"])
 
 
 def _relies_on_default_axes(context: Context) -> bool:
-    """Whether an axis keyword is written anywhere without its axes (no ``[...]`` list, no ``.n``):
-    such a use acts on, or reads, the AXES default."""
+    """Whether an axis keyword is written without its axes (no ``[...]`` list, no ``.n``) before
+    the first AXES statement, in compile order: such a use acts on, or reads, the power-up default."""
     axis_keywords = context.mentioned(lambda name: axis_keyword(context, name))
-    uses = context.keyword_uses(*axis_keywords)
-    return any(use.keyword.selector is None and use.keyword.channel is None for _, use in uses)
+    uses = context.keyword_uses(*axis_keywords)  # in compile order: the first bracket-less one decides
+    bare = ((file, use.statement) for file, use in uses if use.keyword.selector is None and use.keyword.channel is None)
+    first_bare = next(bare, None)
+    if first_bare is None:
+        return False
+    axes = ((file, statement) for file, _, statement in context.statements(n.Axes) if isinstance(statement, n.Axes))
+    first_axes = next(axes, None)
+    return first_axes is None or _compile_place(*first_bare) < _compile_place(*first_axes)
+
+
+def _compile_place(file: FileView, statement: n.Statement) -> tuple[int, int]:
+    """Where a statement is in compile order: the configuration file before the program."""
+    return (0 if file.unit is Unit.CONFIGURATION else 1, statement.span.start)
 
 
 class InputEdges(Rule):

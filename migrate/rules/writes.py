@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from typing import ClassVar
 
 from mintlang.diagnostics import Span
@@ -26,7 +26,12 @@ class AccelAlsoDecel(Rule):
     write had no effect without that bit; in v4 the two are independent. So every ACCEL
     write gets ``: DECEL<axes> = <same values>`` after it (unless a DECEL of the same axes
     already follows it on the line), and any other DECEL write is flagged. A program that
-    touches AXISCON is left to the user."""
+    touches AXISCON is left to the user.
+
+    The copy must compute what the ACCEL write computed. Values that read ACCEL (or
+    ACCELTIME), as ``ACCEL = ACCEL * 2`` does, would read the new value after the write, so
+    their DECEL goes before it, ``DECEL = ACCEL * 2 : ACCEL = ACCEL * 2``; values that read
+    both ACCEL and DECEL fit neither order and are flagged."""
 
     id = "S-ACCEL"
     rule_class = RuleClass.SEMI
@@ -37,7 +42,7 @@ class AccelAlsoDecel(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         axiscon = next(iter(context.keyword_uses("AXISCON")), None) is not None
-        for file, _, statement, after in context.neighbours(*map(statement_tag, self.pairs)):
+        for file, before, statement, after in context.neighbours(*map(statement_tag, self.pairs)):
             accel = _accel(statement)
             if accel is None:
                 continue
@@ -45,33 +50,68 @@ class AccelAlsoDecel(Rule):
             if axiscon:
                 yield self.flag(file, accel.span, f"AXISCON is used: decide whether {decel} must follow this write")
                 continue
+            if _reads(accel, self.pairs) and _reads(accel, self.pairs.values()):
+                yield self.flag(
+                    file,
+                    accel.span,
+                    f"the value reads {accel.keyword.keyword} and {decel}: v4 needs "
+                    f"{decel} written too; compute the value into a variable first",
+                )
+                continue
+            if _reads(accel, self.pairs):  # after the write it would read the new value
+                if not self._companion(file, accel, before):
+                    yield self.replace(
+                        file, Span(accel.span.start, accel.span.start), f"{_decel_write(file, accel, decel)} : "
+                    )
+                continue
             if self._companion(file, accel, after):
                 continue
             yield self.replace(file, Span(accel.span.end, accel.span.end), f" : {_decel_write(file, accel, decel)}")
-        for file, before, statement, _ in context.neighbours(*map(statement_tag, self.pairs.values())):
+        for file, before, statement, after in context.neighbours(*map(statement_tag, self.pairs.values())):
             decel = _writes(statement, "DECEL") or _writes(statement, "DECELTIME")
             if decel is None or decel.values is None or axiscon:
                 continue
-            accel = _accel(before)
-            if accel is None or not self._companion(file, accel, decel):
-                yield self.flag(
-                    file, decel.span, f"v3 ignored {decel.keyword.keyword} unless AXISCON bit 0 was set; v4 obeys it"
-                )
+            if self._made_for(file, before, decel, after):
+                continue
+            yield self.flag(
+                file, decel.span, f"v3 ignored {decel.keyword.keyword} unless AXISCON bit 0 was set; v4 obeys it"
+            )
 
-    def _companion(self, file: FileView, accel: n.KeywordStatement, after: n.Statement | None) -> bool:
-        """Whether ``after``, the statement right after ``accel`` on its line, writes the same axes' DECEL.
+    def _made_for(
+        self, file: FileView, before: n.Statement | None, decel: n.KeywordStatement, after: n.Statement | None
+    ) -> bool:
+        """Whether ``decel`` is the write this rule makes for the ACCEL beside it: right after it,
+        or right before one whose values read ACCEL."""
+        accel = _accel(before)
+        if accel is not None and not _reads(accel, self.pairs) and self._companion(file, accel, decel):
+            return True
+        accel = _accel(after)
+        return accel is not None and _reads(accel, self.pairs) and self._companion(file, accel, decel)
+
+    def _companion(self, file: FileView, accel: n.KeywordStatement, beside: n.Statement | None) -> bool:
+        """Whether ``beside``, the statement right after (or before) ``accel`` on its line, writes the same axes' DECEL.
 
         DECELTIME is no v3 keyword, so the v3 reader takes the rule's own ``DECELTIME = 10`` for
         a variable and ``DECELTIME = 10,20`` for a syntax error: the statement also counts when
         its text is the write this rule makes (spacing and case aside), or the rule would add
         one more on every pass."""
-        if after is None:
+        if beside is None:
             return False
         decel = self.pairs[accel.keyword.keyword]
-        written = _writes(after, decel)
+        written = _writes(beside, decel)
         if written is not None and _same_axes(file, accel, written):
             return True
-        return _normal(file.slice(after.span)) == _normal(_decel_write(file, accel, decel))
+        return _normal(file.slice(beside.span)) == _normal(_decel_write(file, accel, decel))
+
+
+def _reads(accel: n.KeywordStatement, keywords: Iterable[str]) -> bool:
+    """Whether the values of ``accel`` read one of ``keywords``."""
+    wanted = frozenset(keywords)
+    return any(
+        isinstance(node, n.KeywordRef) and node.keyword in wanted
+        for value in accel.values or ()
+        for node in n.walk_expression(value)
+    )
 
 
 def _decel_write(file: FileView, accel: n.KeywordStatement, decel: str) -> str:

@@ -19,6 +19,7 @@ from itertools import islice
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.rules.flow import runs_off_the_end
+from mintlang.analysis.rules.functions import bracketed
 from mintlang.analysis.rules.v3_keywords import successor
 from mintlang.analysis.suggestions import closest, did_you_mean, keyword_like
 from mintlang.analysis.traversal import Facts, LineScope
@@ -207,9 +208,13 @@ def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span, place
     the file's first statement (its opening remarks stay first, and an AUTO or PROTECT that opens the
     file stays first too). A DIM list continued over lines stays whole either way. A name written with
     an index is an array, whose DIM needs its size: the largest index written as a number (the elements
-    count from 1); None when no index is a number, as the size is then the author's to choose.
+    count from 1); None when no index is a number, as the size is then the author's to choose, and None
+    for a name a function takes where its format writes an array (CAMTABLE's position array): a DIM
+    without a size would make a plain variable of it.
     """
     declared = symbol.name
+    if symbol.kind is not SymbolKind.ARRAY and _given_as_an_array(model, symbol):
+        return None
     if symbol.kind is SymbolKind.ARRAY:
         size = _largest_index(model, symbol)
         if size is None:
@@ -247,6 +252,28 @@ def _largest_index(model: SemanticModel, symbol: Symbol) -> int | None:
     ]
     whole = [int(number) for number in numbers if number == int(number) and number >= 1]
     return max(whole, default=None)
+
+
+def _given_as_an_array(model: SemanticModel, symbol: Symbol) -> bool:
+    """Whether a function is given the name where its format takes an array: ``CAMTABLE ( axis, position
+    array, {master increment array} )`` reads the cam's segments from arrays (000:7907, 7932-7934)."""
+    dialect = model.program.dialect
+    return any(
+        type(argument) is n.VariableRef
+        and argument.name.identity == symbol.identity
+        and at in _array_places(call.function, dialect)
+        for facts in model.lines.facts()
+        for call in facts.calls
+        for at, argument in enumerate(call.arguments)
+    )
+
+
+@cache
+def _array_places(function: str, dialect: Dialect) -> frozenset[int]:
+    """The places among a function's bracketed values where its format writes an array."""
+    found = bracketed(function, dialect)
+    items = found[0].replace("{", "").replace("}", "").split(",") if found is not None else []
+    return frozenset(at for at, item in enumerate(items) if "array" in item.lower())
 
 
 def _first_token(line: n.PlacedLine) -> int:

@@ -78,17 +78,26 @@ def _as_statement(scope: LineScope, statement: n.FunctionStatement) -> Iterator[
 
 
 @cache
-def _arity(name: str, dialect: Dialect) -> _Arity | None:
-    """The values ``name``'s first bracketed format takes, or None when no format brackets them."""
+def bracketed(name: str, dialect: Dialect) -> tuple[str, str] | None:
+    """What ``name``'s first bracketed format writes between its brackets, and that format; None without one."""
     keyword = database().keywords_of(dialect).get(name)
     for text in keyword.formats if keyword is not None else ():
         found = re.search(rf"\b{re.escape(name)}\s*\(([^)]*)\)", text)
         if found is not None:
-            inside = found[1]
-            optional = sum(len(_items(group)) for group in _OPTIONAL.findall(inside))
-            required = len(_items(_OPTIONAL.sub("", inside)))
-            return _Arity(required, required + optional, text.strip())
+            return found[1], text.strip()
     return None
+
+
+@cache
+def _arity(name: str, dialect: Dialect) -> _Arity | None:
+    """The values ``name``'s first bracketed format takes, or None when no format brackets them."""
+    found = bracketed(name, dialect)
+    if found is None:
+        return None
+    inside, text = found
+    optional = sum(len(_items(group)) for group in _OPTIONAL.findall(inside))
+    required = len(_items(_OPTIONAL.sub("", inside)))
+    return _Arity(required, required + optional, text)
 
 
 @cache

@@ -259,7 +259,10 @@ _TERM_CONSTANTS = {"_LCD": 1, "_SERIAL": 2, "_BOTH": 3}
 
 class Terminal(StatementRule):
     """``TERM = v`` becomes ``TERMINAL = <bits>``: v3 values 1 LCD, 2 serial, 3 both became
-    the bit constants _tmLCD1 (8) and _tmRS232 (1); +4 (VT52 mode) has no v4 equivalent."""
+    the bit constants _tmLCD1 (8) and _tmRS232 (1); +4 (VT52 mode) has no v4 equivalent.
+    The v3 LCD was the keypad/display on the controller's own bus; v4's _tmLCD1 is a CAN
+    keypadNode, which reaches no display until KEYPADNODE gives its node (v4:2073-2078), so
+    a TERMINAL naming it gets a manual item (X-KEYPAD)."""
 
     id = "S-TERM"
     rule_class = RuleClass.SEMI
@@ -268,15 +271,25 @@ class Terminal(StatementRule):
     keywords = frozenset({"TERM"})
 
     def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
-        value = statement.values[0] if statement.values and len(statement.values) == 1 else None
-        code = None
-        if isinstance(value, n.Number):
-            code = int(value.value) if value.value == int(value.value) else None
-        elif isinstance(value, n.ConstantRef):
-            code = _TERM_CONSTANTS.get(value.name)
+        code = _term_code(statement)
         if code not in _TERMINALS:
             return Refusal("TERM value is not 1, 2 or 3 (VT52 mode and computed values have no v4 equivalent)")
         return f"{like(statement.keyword.spelling, 'TERMINAL')} = {_TERMINALS[code]}"
+
+    def caveat(self, statement: n.KeywordStatement) -> str | None:
+        if _term_code(statement) in (1, 3):  # _lcd, _both
+            return "the v3 LCD is a CAN keypadNode in v4: give its node with KEYPADNODE._tmLCD1 = <node> (v4:2073-2078)"
+        return None
+
+
+def _term_code(statement: n.KeywordStatement) -> int | None:
+    """The v3 TERM value written, when it is a constant."""
+    value = statement.values[0] if statement.values and len(statement.values) == 1 else None
+    if isinstance(value, n.Number):
+        return int(value.value) if value.value == int(value.value) else None
+    if isinstance(value, n.ConstantRef):
+        return _TERM_CONSTANTS.get(value.name)
+    return None
 
 
 class OffsetNeedsGo(Rule):

@@ -71,12 +71,18 @@ def test_ramp_is_scaled_to_sramp_and_the_shape_is_left_to_check() -> None:
     assert rewritten("S-RAMP", "RAMP = 0;\n") == "SRAMP = 0;\n"  # no smoothing in either version
 
 
+_KEYPAD = (
+    "REM MIGRATE: S-TERM: the v3 LCD is a CAN keypadNode in v4: give its node with KEYPADNODE._tmLCD1 = <node>"
+    " (v4 guide section 3.9)\n"
+)
+
+
 @pytest.mark.parametrize(
     ("source", "expected"),
     [
-        ("TERM = 1\n", "TERMINAL = _tmLCD1\n"),
+        ("TERM = 1\n", f"{_KEYPAD}TERMINAL = _tmLCD1\n"),
         ("TERM = _serial\n", "TERMINAL = _tmRS232\n"),
-        ("TM = _both\n", "TERMINAL = _tmRS232 + _tmLCD1\n"),
+        ("TM = _both\n", f"{_KEYPAD}TERMINAL = _tmRS232 + _tmLCD1\n"),
     ],
 )
 def test_terminal_values_become_bits(source: str, expected: str) -> None:

@@ -131,13 +131,12 @@ class InputByte(Rule):
         handlers = _has_input_handlers(context)
         for file, _, statement in context.statements("IN"):
             for read in _keyword_refs(statement, "IN"):
-                if _masked(parent_of(statement, read), read):
-                    continue
-                if handlers:
+                if handlers:  # masked too: the bits of those inputs are latched edges, and the read clears them
                     reason = "IN reads all inputs and clears edge latches of #INn inputs in v4: mask with & 255"
                     yield self.flag(file, statement.span, reason)
                     break
-                yield self.replace(file, read.span, f"({file.slice(read.span)} & 255)")
+                if not _masked(parent_of(statement, read), read):
+                    yield self.replace(file, read.span, f"({file.slice(read.span)} & 255)")
 
 
 def _masked(parent: n.Expression | None, read: n.KeywordRef) -> bool:

@@ -9,7 +9,7 @@ report lists the ones a run used, so nobody mistakes them for simulated.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Collection, Mapping
 
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.ranges import ranged
@@ -32,11 +32,13 @@ class InertSettings:
         self.values: dict[tuple[str, int | None], float] = {}
         self.used: set[str] = set()
 
-    def register(self, table: KeywordTable) -> None:
-        """Each setting, range-checked as its attributes table says (``ECHO`` 0 to 7): inert is not lax."""
+    def register(self, table: KeywordTable, *, write_only: Collection[str] = ()) -> None:
+        """Each setting, range-checked as its attributes table says (``ECHO`` 0 to 7): inert is not lax.
+        One in ``write_only`` gets no reader, so reading it is the dialect's "Write only" error."""
         for name, default in self.settings.items():
             write = ranged(name, table.controller, self.writer(name))
-            table.register(name, read=self._reader(name, default), write=per_channel(write))
+            read = None if name in write_only else self._reader(name, default)
+            table.register(name, read=read, write=per_channel(write))
 
     def _reader(self, name: str, default: float) -> Callable[[int | None], float]:
         def read(channel: int | None) -> float:

@@ -27,6 +27,7 @@ def test_an_assignment_with_no_expression_is_refused_before_the_program_runs() -
     [
         pytest.param("avar =", "No expression at line 1", id="001:12957-12964 an assignment but no expression"),
         pytest.param("a = FLY", "Write only at line 1", id="001:13073-13080 a read of a write only keyword"),
+        pytest.param("a = EO", "Write only at line 1", id="001:7504 ECHO's table marks it written, not read"),
         pytest.param("a = STOP", "Read only or Command at line 1", id="001:13083-13094 a read of a command"),
         pytest.param("A1 = 10", "Read only or Command at line 1", id="001:13083-13091 a write to a read only one"),
         pytest.param("a = 0\nSF[a+1] = 1000", "Invalid axis at line 2", id="001:13184 an expression as an axis"),

@@ -11,6 +11,7 @@ number, a whole number of 256ths (V3-2).
 
 from __future__ import annotations
 
+from mintlang.keyworddb import database
 from mintlang.runtime.dialects.v3.numbers import fixed
 from mintlang.runtime.inert import InertSettings
 from mintlang.runtime.keywords import (
@@ -55,8 +56,11 @@ def _fixed(read: Reader) -> Reader:
 
 
 def inert_settings(table: V3KeywordTable) -> InertSettings:
-    """``ECHO`` and ``TERM`` are remembered and change nothing; so is ``BAUD`` (write only), the serial rate."""
+    """``ECHO`` and ``TERM`` are remembered and change nothing; so is ``BAUD`` (write only), the serial rate.
+    v3's ECHO is write only as well (its attributes table, 001:7504): ``a = ECHO`` stops as ``a = FLY`` does."""
     inert = InertSettings(INERT_SETTINGS)
-    inert.register(table)
+    records = database()
+    write_only = {name for name in INERT_SETTINGS if (v3 := records.lookup_v3(name)) is not None and not v3.read}
+    inert.register(table, write_only=write_only)
     table.register("BAUD", write=per_channel(inert.writer("BAUD")))
     return inert

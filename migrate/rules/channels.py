@@ -7,7 +7,7 @@ from types import MappingProxyType
 
 from mintlang.migrate.context import Context
 from mintlang.migrate.model import Phase, RuleClass
-from mintlang.migrate.rules.axes import selector_axes
+from mintlang.migrate.rules.axes import default_axes, selector_axes
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.migrate.rules.spelling import like
 from mintlang.migrate.rules.writes import per_channel
@@ -25,7 +25,9 @@ class Channels(Rule):
     """``ENCODER[1]`` becomes ``ENCODER.1``, ``ENCWRAP[0,1] = a,b`` becomes
     ``ENCODERWRAP.0 = a : ENCODERWRAP.1 = b`` (FASTENC and PRESCALE likewise): v4 channel
     keywords take dot syntax only and cannot address several channels. A read without
-    constant axes, or a PRESCALE that is not a power of two up to 128, is flagged."""
+    axes reads the first default axis, as in v3 (``ENCODER`` after ``AXES[1,2]`` is
+    ``ENCODER.1``). A read of several axes or of axes not constant, or a PRESCALE that
+    is not a power of two up to 128, is flagged."""
 
     id = "S-CHAN"
     rule_class = RuleClass.SEMI
@@ -42,6 +44,9 @@ class Channels(Rule):
                 continue
             if use.use is Use.READ:
                 axes = selector_axes(keyword)
+                if axes is None and keyword.selector is None:  # the first default axis (v3:1063-1071)
+                    default = default_axes(context, file, use.statement.span.start)
+                    axes = default[:1] if default else None
                 if axes is None or len(axes) != 1:
                     yield self.flag(file, keyword.span, f"{new} reads one channel: write {new}.<channel>")
                 elif new != keyword.keyword or not (keyword.selector and keyword.selector.dot):

@@ -235,7 +235,7 @@ def test_channel_keywords_take_one_channel_in_dot_syntax() -> None:
     ("source", "reason"),
     [
         ("PRESCALE.1 = 3\n", "ENCODERPRESCALE takes a power of two from 1 to 128 only"),
-        ("y = ENCODER\n", "ENCODER reads one channel: write ENCODER.<channel>"),
+        ("AXES[a]\ny = ENCODER\n", "ENCODER reads one channel: write ENCODER.<channel>"),
     ],
 )
 def test_channel_refusals(source: str, reason: str) -> None:

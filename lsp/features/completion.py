@@ -5,9 +5,10 @@ The cursor's line is lexed as typed; user names come from the last analysis.
 After GOSUB/GOTO: labels; after ``#`` at the start of a line: event handlers
 of the controller; after MintMT's ``Event``: the events its blocks handle;
 after ``_``: predefined constants; at the start of a statement: commands,
-writable parameters, variables, macros and block snippets (ELSE, ENDL,
-EXIT ... only inside their blocks; MintMT's End Loop, End If, End Event, End
-Startup too, and its Event and Startup only outside every block); inside an
+writable parameters, variables, macros and block snippets (ELSE, ENDL ...
+only where they close the innermost block, ELSE only before that IF's own ELSE,
+EXIT inside any loop; MintMT's End Loop, End If, End Event, End Startup too,
+and its Event and Startup only outside every block); inside an
 expression: readable keywords, functions, variables, arrays and macros; after
 a complete operand: the operators and the words that continue the statement
 being written (THEN in an IF, TO in a FOR ...); after a keyword's dot
@@ -34,7 +35,8 @@ from mintlang.lsp.features.signature import callee_at
 from mintlang.lsp.lookup import WORD_KINDS, prefix_tokens, significant
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
-from mintlang.semantic.blocks import BlockKind
+from mintlang.records import record
+from mintlang.semantic.blocks import Block, BlockKind
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import SymbolKind
 from mintlang.syntax.common import common_prefix, common_suffix
@@ -59,9 +61,11 @@ _NOTHING_AFTER = frozenset(
     | {TokenKind.ENDL, TokenKind.NEXT, TokenKind.LOOP, TokenKind.REPEAT}
 )
 _LOOPS = frozenset({BlockKind.FOR, BlockKind.LOOP, BlockKind.REPEAT, BlockKind.WHILE})
-# The words that close or go on with a block, valid only inside one of the kinds given: ELSE and ENDIF in an
-# IF .. DO (000:11797-11803), each loop's closer in its loop, EXIT in any of the four loops (000:10236-10243);
-# MintMT's End Loop and End If as v4's ENDL and ENDIF (004:102-125), End Event and End Startup in theirs.
+# The words that close or go on with a block, valid only where the innermost block open is of a kind given (a
+# closing word closes the level the last opening word opened, 000:1918-1921; the checker's E2009-E2014 name that
+# block): ELSE and ENDIF in an IF .. DO (000:11797-11803), each loop's closer in its loop; EXIT leaves any of the
+# four loops around it (000:10236-10243); MintMT's End Loop and End If as v4's ENDL and ENDIF (004:102-125), End
+# Event and End Startup in theirs.
 _INSIDE = {
     "ELSE": frozenset({BlockKind.IF}),
     "ENDIF": frozenset({BlockKind.IF}),
@@ -145,18 +149,40 @@ def _statement_words(snapshot: Snapshot, before: list[Token]) -> frozenset[str]:
     return frozenset({"USING"}) if formatted and TokenKind.USING not in written else frozenset()
 
 
-def _open_blocks(snapshot: Snapshot, line: int) -> frozenset[BlockKind]:
-    """The kinds of the blocks open at ``line`` (0-based): opened on it or above, closed on it, below or never."""
+@record
+class OpenBlocks:
+    """The blocks open at the cursor: the kinds of them all, the innermost's kind, and whether the innermost's
+    ELSE stands above the cursor (an IF .. DO takes one ELSE, 000:1593-1600)."""
+
+    kinds: frozenset[BlockKind]
+    innermost: BlockKind | None
+    after_else: bool
+
+
+def _around(blocks: list[Block], here: int) -> OpenBlocks:
+    """What ``blocks``, those open at line ``here`` (1-based), allow there: the innermost opened last."""
+    innermost = max(blocks, key=lambda block: block.opener, default=None)
+    if innermost is None:
+        return OpenBlocks(frozenset(), None, after_else=False)
+    after_else = innermost.middle is not None and innermost.middle.line < here
+    return OpenBlocks(frozenset(block.kind for block in blocks), innermost.kind, after_else)
+
+
+def _open_blocks(snapshot: Snapshot, line: int) -> OpenBlocks:
+    """The blocks open at ``line`` (0-based): opened on it or above, closed on it, below or never."""
     here = line + 1
-    return frozenset(
-        block.kind
-        for block in snapshot.model.structures[snapshot.unit].blocks
-        if block.opener.line <= here and (block.closer is None or here <= block.closer.line)
+    return _around(
+        [
+            block
+            for block in snapshot.model.structures[snapshot.unit].blocks
+            if block.opener.line <= here and (block.closer is None or here <= block.closer.line)
+        ],
+        here,
     )
 
 
-def _open_blocks_now(snapshot: Snapshot, source: str, line: int) -> frozenset[BlockKind] | None:
-    """The kinds of the blocks open at ``line`` (0-based) of ``source``, the text now, from ``snapshot``, an
+def _open_blocks_now(snapshot: Snapshot, source: str, line: int) -> OpenBlocks | None:
+    """The blocks open at ``line`` (0-based) of ``source``, the text now, from ``snapshot``, an
     analysis of it that may be a few keystrokes old (completion does not wait for a new one, and the editor asks
     right after each keystroke): while the lines changed since hold no block word, every block stands where it
     stood, those below moved by the lines added. None when a changed line may hold one: not known."""
@@ -182,10 +208,13 @@ def _open_blocks_now(snapshot: Snapshot, source: str, line: int) -> frozenset[Bl
         return _open_blocks(snapshot, line)
     if line >= new_end:
         return _open_blocks(snapshot, line - (new_end - old_end))
-    return frozenset(  # a changed line: inside the blocks around the change, opened above it and closed below
-        block.kind
-        for block in snapshot.model.structures[snapshot.unit].blocks
-        if block.opener.line <= first and (block.closer is None or block.closer.line > old_end)
+    return _around(  # a changed line: inside the blocks around the change, opened above it and closed below
+        [
+            block
+            for block in snapshot.model.structures[snapshot.unit].blocks
+            if block.opener.line <= first and (block.closer is None or block.closer.line > old_end)
+        ],
+        first + 1,
     )
 
 
@@ -195,14 +224,16 @@ def _line_end(text: str, offset: int) -> int:
     return len(text) if end < 0 else end
 
 
-def _in_its_block(name: str, blocks: frozenset[BlockKind] | None) -> bool:
+def _in_its_block(name: str, blocks: OpenBlocks | None) -> bool:
     """Whether a keyword can start a statement inside ``blocks`` (None: the blocks are not known)."""
-    return blocks is None or name not in _INSIDE or bool(_INSIDE[name] & blocks)
+    if blocks is None or name not in _INSIDE:
+        return True
+    if name == "EXIT":
+        return bool(_LOOPS & blocks.kinds)
+    return blocks.innermost in _INSIDE[name] and not (name == "ELSE" and blocks.after_else)
 
 
-def _keywords(
-    snapshot: Snapshot, statement: bool, blocks: frozenset[BlockKind] | None = None
-) -> Iterator[types.CompletionItem]:
+def _keywords(snapshot: Snapshot, statement: bool, blocks: OpenBlocks | None = None) -> Iterator[types.CompletionItem]:
     if snapshot.settings.dialect is Dialect.V3:
         for old in database().v3_keywords.values():
             if old.name[:1].isalpha() and (old.write or old.command if statement else old.read):
@@ -283,19 +314,19 @@ def _constants(dialect: Dialect) -> Iterator[types.CompletionItem]:
     """The dialect's own predefined constants: v3's are its own (001:1309-1336), none of them v4's."""
     db = database()
     records = db.v3_constants if dialect is Dialect.V3 else db.constants_of(dialect)
-    for name in (record.name for record in records.values()):
+    for name in (constant.name for constant in records.values()):
         detail = describe.constant_detail(name, dialect)
         yield types.CompletionItem(label=name, kind=types.CompletionItemKind.EnumMember, detail=detail)
 
 
-def _mintmt_block_word_fits(kind: TokenKind, blocks: frozenset[BlockKind] | None) -> bool:
+def _mintmt_block_word_fits(kind: TokenKind, blocks: OpenBlocks | None) -> bool:
     """Whether MintMT's block word of ``kind`` can start a statement inside ``blocks`` (None: not known)."""
     if kind in _OUTSIDE_EVERY_BLOCK:
-        return not blocks
+        return blocks is None or not blocks.kinds
     return _in_its_block(kind.value, blocks)
 
 
-def _mintmt_block_words(blocks: frozenset[BlockKind] | None) -> Iterator[types.CompletionItem]:
+def _mintmt_block_words(blocks: OpenBlocks | None) -> Iterator[types.CompletionItem]:
     for kind in mintmt_words.COMPLETED:
         if not _mintmt_block_word_fits(kind, blocks):
             continue
@@ -318,13 +349,13 @@ def _event_blocks() -> Iterator[types.CompletionItem]:
         )
 
 
-def _snippets(dialect: Dialect, blocks: frozenset[BlockKind] | None) -> Iterator[types.CompletionItem]:
+def _snippets(dialect: Dialect, blocks: OpenBlocks | None) -> Iterator[types.CompletionItem]:
     snippets = SNIPPETS
     if dialect is Dialect.MINTMT:  # MintMT's own spellings of the blocks it writes otherwise
         snippets = {label: body for label, body in SNIPPETS.items() if label not in _V4_SPELT} | {
             label: body
             for label, body in mintmt_words.SNIPPETS.items()
-            if not blocks or label not in mintmt_words.TOP_LEVEL_SNIPPETS
+            if blocks is None or not blocks.kinds or label not in mintmt_words.TOP_LEVEL_SNIPPETS
         }
     for label, body in snippets.items():
         yield types.CompletionItem(
@@ -424,10 +455,10 @@ def _macro_item(name: str, text: str, names: str, typed: types.Range) -> types.C
 
 
 def complete(
-    snapshot: Snapshot, prefix: str, cursor: types.Position, blocks: frozenset[BlockKind] | None = None
+    snapshot: Snapshot, prefix: str, cursor: types.Position, blocks: OpenBlocks | None = None
 ) -> list[types.CompletionItem]:
     """Items for the cursor at the end of ``prefix`` (its line so far); names come from ``snapshot``, and the
-    words that close a block only inside ``blocks``, the kinds open at the cursor (all, when None)."""
+    words that close a block only where ``blocks``, those open at the cursor, let them (all, when None)."""
     tokens = prefix_tokens(prefix, snapshot.settings.dialect)
     if tokens and _inside_text(tokens):
         return []

@@ -107,7 +107,9 @@ async def test_statement_start_offers_no_functions_operators_or_continuations(cl
 
 
 # ELSE and ENDIF belong in an IF .. DO (000:11797-11803), NEXT, ENDW, ENDL and UNTIL close their own loops, and
-# EXIT leaves any of the four (000:10236-10243): at the start of a statement each is offered only inside its block.
+# EXIT leaves any of the four (000:10236-10243): at the start of a statement each is offered only inside its block,
+# and a closing word only for the innermost block, the level the last opening word opened (000:1918-1921): ENDW
+# in a FOR inside a WHILE, or ENDIF in a REPEAT inside an IF, is the checker's E2012 or E2011.
 BLOCK_WORDS = {"ELSE", "ENDIF", "NEXT", "ENDW", "ENDL", "UNTIL", "EXIT"}
 
 
@@ -119,8 +121,8 @@ BLOCK_WORDS = {"ELSE", "ENDIF", "NEXT", "ENDW", "ENDL", "UNTIL", "EXIT"}
         ("\n\nENDL", {"ENDL", "EXIT"}),
         ("\n\nIF", set()),
         ("\n\nENDIF", {"ELSE", "ENDIF"}),
-        ("\n\nNEXT", {"NEXT", "EXIT", "ENDW"}),
-        ("\n\nUNTIL", {"UNTIL", "EXIT", "ELSE", "ENDIF"}),
+        ("\n\nNEXT", {"NEXT", "EXIT"}),
+        ("\n\nUNTIL", {"UNTIL", "EXIT"}),
     ],
 )
 async def test_block_words_only_inside_their_blocks(shared_client, tmp_path, needle, words):
@@ -133,6 +135,22 @@ async def test_block_words_only_inside_their_blocks(shared_client, tmp_path, nee
     items = set(await labels_at(shared_client, uri, text, needle, 1))
     assert items & BLOCK_WORDS == words
     assert {"GO", "PRINT"} <= items
+
+
+@SHARED
+@pytest.mark.parametrize(
+    ("needle", "shift", "words"),
+    [
+        ("\n\nELSE", 1, {"ELSE", "ENDIF"}),  # before the ELSE: it may come here
+        ("ELSE\n\nENDIF", 5, {"ENDIF"}),  # after it: an IF .. DO takes one ELSE (000:1593-1600)
+        ("  IF a DO\n\n  ENDIF", 10, {"ELSE", "ENDIF"}),  # an IF .. DO in the ELSE part has its own
+    ],
+)
+async def test_else_is_offered_only_before_its_ifs_else(shared_client, tmp_path, needle, shift, words):
+    text = "DIM a\nIF a DO\n\nELSE\n\nENDIF\nIF a DO\nELSE\n  IF a DO\n\n  ENDIF\nENDIF\n"
+    uri = uri_of(tmp_path / "else.mnt")
+    await open_document(shared_client, uri, text)
+    assert set(await labels_at(shared_client, uri, text, needle, shift)) & BLOCK_WORDS == words
 
 
 # The editor asks for completion right after each keystroke, before the server has analysed the new text (the

@@ -89,15 +89,16 @@ async def test_completion_offers_mintmt_block_words_and_snippets_not_v4_closers(
     await open_document(client, uri, text)
     items = await _labels(client, uri, text, "GO(0)\n    \n", 10)
     snippets = {"Loop … End Loop", "If … Then … End If"}
-    assert {"End Loop", "End If"} | snippets | {"WHILE", "EXIT", "WHILE … ENDW", "FOR … NEXT"} <= set(items)
+    assert {"End If"} | snippets | {"WHILE", "EXIT", "WHILE … ENDW", "FOR … NEXT"} <= set(items)
     assert "ENDW" not in items  # no While is open here
+    assert "End Loop" not in items  # the If inside the Loop is open: End Loop here is E2014, as ENDL in v4
     assert not {"ENDL", "ENDIF", "LOOP … ENDL", "IF … DO … ENDIF"} & set(items)
     assert items["Loop … End Loop"].insert_text == "Loop\n\t$0\nEnd Loop"
 
 
 # Where each of MintMT's block words may start a statement: a closer inside its own block (004:102-125 closes
 # the If with End If, the Loop with End Loop, 002:82-84 the Event with End Event, 004:129-133 Startup with End
-# Startup), Event and Startup in no other block (MT-13).
+# Startup) when it is the innermost open (as in v4, 000:1918-1921), Event and Startup in no other block (MT-13).
 BLOCK_WORDS = {"End Loop", "End If", "Event", "End Event", "Startup", "End Startup"}
 NESTED = (
     "DIM a\n"
@@ -121,7 +122,7 @@ NESTED = (
     ("line", "offered"),
     [
         (2, {"End Loop"}),
-        (4, {"End Loop", "End If"}),
+        (4, {"End If"}),
         (7, {"Event", "Startup", "Event … End Event", "Startup … End Startup"}),
         (9, {"End Event"}),
         (12, {"End Startup"}),

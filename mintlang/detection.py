@@ -9,7 +9,9 @@ for MintMT's own forms (``mintlang/MINTMT.md``):
 * a two-word closer: ``End Loop``, ``End If``, ``End Event``, ``End Startup``;
 * an ``Event NAME`` or ``Startup`` line (not ``event = ...``: a v4 program may
   have a variable called ``event``);
-* round-bracket addressing, ``MOVER(0) = 10``: a ``(`` right after a keyword.
+* round-bracket addressing, ``MOVER(0) = 10``: a ``(`` right after a keyword that takes
+  axes or channels. After one that takes neither, such as ``LOCATE (col + 1), 2`` in a
+  v3 or v4 program, the bracket only groups the first operand.
 
 One of them makes the text MintMT; without any it is Mint v4, the default
 dialect, so every v4 program reads as before. Mint v3 is not told apart here:
@@ -25,6 +27,8 @@ import re
 
 from mintlang.diagnostics import split_lines
 from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Addressing
 from mintlang.records import record
 from mintlang.syntax.common import common_prefix, common_suffix
 from mintlang.syntax.lexer import LexedLine, lex
@@ -105,8 +109,22 @@ def _form(line: LexedLine) -> str | None:
         return " ".join(two_words)
     if _block_opener(line):
         return " ".join(texts)
-    if TokenKind.ADDRESS in kinds:
-        return f"{texts[kinds.index(TokenKind.ADDRESS) - 1]}(…)"
+    if (addressed := _addressed(line)) is not None:
+        return f"{addressed}(…)"
+    return None
+
+
+def _addressed(line: LexedLine) -> str | None:
+    """The first keyword of ``line`` written with its axes or channels in round brackets; a keyword no
+    axis or channel addresses (LOCATE, LINE, WAIT) takes none, so its ``(`` opens an expression."""
+    kinds, texts = line.kinds, line.texts
+    keywords = database().keywords_of(Dialect.MINTMT)
+    for index, kind in enumerate(kinds):
+        if kind is TokenKind.ADDRESS and index > 0:
+            word = texts[index - 1]
+            keyword = keywords.get(database().owner(word) or word.upper())
+            if keyword is None or keyword.addressing is not Addressing.NONE:
+                return word
     return None
 
 

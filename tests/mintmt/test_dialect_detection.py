@@ -60,6 +60,9 @@ def test_a_form_only_mintmt_has_makes_the_text_mintmt(text: str) -> None:
         pytest.param("LOOP\nENDL\nIF a DO\nENDIF\n", id="v4 closers"),
         pytest.param("MOVER.0 = 10 : MOVER[1] = 5\n", id="dot and square-bracket addressing"),
         pytest.param("a = ABS(b) + (c)\n", id="function call and parentheses"),
+        # LOCATE x, y and LINE n, ... (000:13675, 000:13630) take no axes: the bracket groups an operand
+        pytest.param("LOCATE (col + 1), 2\n", id="a bracketed first operand of LOCATE"),
+        pytest.param('LINE (row), "speed"\n', id="a bracketed first operand of LINE"),
         pytest.param("END\n", id="END alone"),
     ],
 )

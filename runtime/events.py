@@ -235,8 +235,11 @@ class Events:
 
     def next_timer_event(self) -> int:
         """The tick at which the timer next calls #TIMER; NEVER without one to call, so a timer left running
-        (on MintDrive from power-up) wakes nothing and a program that waits on nothing else is deadlocked."""
-        return self.next_timer if self.has_handler(EventClass.TIMER) else NEVER
+        (on MintDrive from power-up) wakes nothing and a program that waits on nothing else is deadlocked. NEVER
+        too while its event is pending already (behind an INPUT, say): running out again changes nothing,
+        and ``tick`` catches the period up whenever the next tick is processed."""
+        timer = EventClass.TIMER
+        return self.next_timer if self.has_handler(timer) and not self._pending[timer] else NEVER
 
     # ------------------------------------------------------------- keywords
 

@@ -225,10 +225,10 @@ class Simulator:
         return self._next_change_besides_the_program(t, vm.wake_at)
 
     def _busy(self) -> bool:
-        """Whether something needs the next tick whatever the program does: an event to dispatch, an input
-        raising one on every tick, a host port."""
+        """Whether something needs the next tick whatever the program does: an event to dispatch (not while
+        the blocked statement holds it pending), an input raising one on every tick, a host port."""
         c = self.c
-        return bool(c.events.pending) or c.server is not None or c.io.raises_every_tick()
+        return bool(c.events.pending and not c.vm.holding) or c.server is not None or c.io.raises_every_tick()
 
     def _next_change_besides_the_program(self, t: int, soonest: int, axes: Iterable[Axis] | None = None) -> int:
         """The next tick the world, the timer, a monitor, an axis (of ``axes``, by default every one) or an

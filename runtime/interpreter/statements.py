@@ -716,11 +716,14 @@ class StatementCompiler:
             if entry is None:
                 clock.horizon = NEVER
                 vm.wake_at = NEVER  # only a keystroke (a scheduled world change) can wake it
+                vm.holding = True  # no event runs before the line is taken (000:4397-4399)
                 return True
             prompted.discard(key)
+            vm.holding = False
             value = entry.value if entry.value is None else accept(entry, current())
             if entry.retry or (entry.value is not None and value is None):  # ask again, at once if keys wait
                 vm.wake_at = clock.now + 1
+                vm.holding = True
                 return True
             if value is not None:
                 store(value)

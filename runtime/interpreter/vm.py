@@ -122,6 +122,9 @@ class Interpreter:
         self.wake_at = NEVER  # while blocked: the earliest tick the blocking statement may pass
         self.asleep = False  # while blocked: nothing but an event can let it pass before wake_at
         self.awaits_keys = False  # the last PAUSE to block reads INKEY: only a key can let it pass
+        # the blocked statement keeps events pending until it completes: only GO, PAUSE and WAIT let an
+        # event in before they end (000:4397-4399); INPUT waiting for its line does not
+        self.holding = False
         self.sleeps = True  # whether an asleep statement is left alone until wake_at (not when every tick is run)
         self.stopped: StopReason | None = None
         self.stop_site: Site | None = None
@@ -155,7 +158,7 @@ class Interpreter:
         self.blocked = False
         try:
             while budget > 0 and self.stopped is None:
-                if events is not None and events.pending:
+                if events is not None and events.pending and not self.holding:
                     self.executing = None
                     self._dispatch(events)
                 pc = self.pc

@@ -27,6 +27,14 @@ def test_an_input_no_scenario_answers_is_a_deadlock_that_says_it_waits_for_keys(
     assert "mint-run" not in result.stop.message  # the editor's and the debugger's runs show it too
 
 
+def test_an_input_no_scenario_answers_is_a_deadlock_with_a_timer_running_too() -> None:
+    # the #TIMER events that fall due while INPUT waits stay pending until it has its line (000:4397-4399),
+    # so the timer can change nothing the program waits on: the first one sets the flag, then it is blocked for good
+    result = simulate("DIM q\nDIM n\nTIMEREVENT = 100\nINPUT q\nEND\n#TIMER\nn = n + 1\nRETURN\n")
+    assert (result.stop.reason, result.stop.line, result.stop.time_ms) == (StopReason.DEADLOCK, 4, 100)
+    assert "INPUT waits for keys that no scenario types" in result.stop.message
+
+
 def test_mint_run_with_no_standard_input_to_read_tells_how_to_give_keys(tmp_path: Path) -> None:
     # keys come from a scenario, a pipe or a terminal; the test runner's input is none of these
     result = mint_run(write(tmp_path, "qty.mnt", SOURCE))

@@ -36,6 +36,9 @@ class Addressing(StrEnum):
 CIRCLES = frozenset({"CIRCLEA", "CIRCLER"})
 """The axis keywords given more values than axes: a centre on each of two axes and an angle (000:8152, 8215)."""
 
+VECTORS = frozenset({"VECTORA", "VECTORR"})
+"""The straight lines interpolated through two axes or more (000:16958, 17031: at least two must be given)."""
+
 
 class Use(StrEnum):
     """How a keyword is used where it is written."""

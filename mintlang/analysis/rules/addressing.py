@@ -6,7 +6,7 @@ is 2018, and only constants or simple variables may stand in them (an
 expression is a syntax error, 2003). A circle moves the two axes of its
 brackets with three values, ``CIRCLEA[axis0,axis1] = <centre0>,<centre1>,<angle>``
 (000:8152, 000:8215): a third axis or a fourth value is 2017, a missing axis
-2001. Channel keywords take the dot only (``ADC[1]`` is invalid), and a keyword whose formats show no
+2001; a vector move on one axis is 2001 too (000:16958, 17031). Channel keywords take the dot only (``ADC[1]`` is invalid), and a keyword whose formats show no
 axis or channel takes neither (``TIME.5``): both are 2003. Constant numbers out of the controller's range give
 the motion library's errors: 2 axis, 4 channel, 7 input, 8 output, 26 CAN
 node, 31 CAN bus, 35/36 terminal (Dot Parameters table, chapter 12.2).
@@ -24,7 +24,7 @@ from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import CIRCLES, Addressing, Keyword, KeywordKind
+from mintlang.keyworddb.model import CIRCLES, VECTORS, Addressing, Keyword, KeywordKind
 from mintlang.semantic.constants import constant_integer
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
@@ -35,6 +35,7 @@ _CAN_BUSES = ChannelRange(1, 2)
 _CAN_NODES = ChannelRange(0, 63)  # chapter 12, error 26
 _SERIAL_TERMINALS = frozenset({"_TMRS232", "_TMRS485"})
 _CIRCLE_AXES, _CIRCLE_VALUES = 2, 3  # centre, centre and angle on two axes
+_VECTOR_AXES = 2  # the fewest a vector move interpolates
 
 # Which range a channel keyword's number is checked against, and the error it gives.
 _Channels = Callable[[ControllerProfile], ChannelRange | None]
@@ -240,8 +241,11 @@ def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:
     listed = 1 if selector.dot else len(selector.axes)
     if name in CIRCLES:
         yield from _circle(use, selector, name, listed)
-    else:
-        yield from _values_for_axes(use, listed)
+        return
+    if name in VECTORS and 0 < listed < _VECTOR_AXES:  # an empty place is the axis list's own 2001
+        detail = f"{name} interpolates two axes or more, {listed} listed"
+        yield Finding(use.unit, mint_error(2001, selector.span, detail))
+    yield from _values_for_axes(use, listed)
 
 
 def _indices(use: KeywordUse, keyword: Keyword) -> Iterator[Finding]:

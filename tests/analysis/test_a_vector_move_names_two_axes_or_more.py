@@ -1,0 +1,39 @@
+"""VECTORA and VECTORR interpolate a straight line through two axes or more: their formats list
+``axis0,axis1 {,axis2}`` and the guide says at least two must be given (000:16958, 17031-17045).
+One axis is a parameter missing, 2001, as for a circle; four are valid (000:3221, VECTORR on four axes).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import mintlang
+
+
+def _errors(source: str, dialect: str = "v4") -> list[tuple[str, str]]:
+    found = mintlang.check_application(source, dialect=dialect).program
+    return [(d.code, source[d.span.start : d.span.end]) for d in found if d.code[0] == "E"]
+
+
+@pytest.mark.parametrize(
+    ("source", "dialect", "written"),
+    [
+        ("VECTORR[0] = 5\n", "v4", "[0]"),
+        ("VECTORA.1 = 5\n", "v4", ".1"),
+        ("VECTORA(0) = 5\n", "mintmt", "(0)"),
+    ],
+)
+def test_one_axis_is_a_missing_parameter(source: str, dialect: str, written: str) -> None:
+    assert _errors(source, dialect) == [("E2001", written)]
+
+
+@pytest.mark.parametrize(
+    "source", ["VECTORR[1,2] = 100,200\n", "VECTORA[0,1,2] = 1,2,3\n", "VECTORR[0,1,2,3] = 10,20,30,40\n"]
+)
+def test_two_axes_or_more_are_valid(source: str) -> None:
+    assert _errors(source) == []
+
+
+def test_the_message_says_what_is_missing() -> None:
+    (error,) = mintlang.check_application("VECTORR[0] = 5\n").program
+    assert error.message == "Missing parameter: VECTORR interpolates two axes or more, 1 listed"

@@ -79,6 +79,7 @@ class System:
         table.register("ERL", read=lambda _: vm.erl)
         table.register("ERRAXIS", read=lambda _: vm.erraxis)
         table.register("LASTERR", read=lambda _: NO_ERROR, command=self._lasterr)
+        table.register("AUTO", command=self._auto)
         table.register("INKEY", read=self._inkey)
         table.register("CLS", command=self._cls)
         table.register("BEEP", command=self._beep)
@@ -105,6 +106,11 @@ class System:
         001:9632-9642; the v4 guide says only that it returns that error, 000:13270-13282). A run starts at
         power-up, so no program has ended on an error before it: the choice is that there is no message to
         display, and the program goes on (BEHAVIOUR.md)."""
+        return False
+
+    def _auto(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        """AUTO as the configuration file's first command runs both files at power-up, as a run already starts;
+        anywhere else it is ignored (000:6645-6648): either way running it does nothing."""
         return False
 
     def _cls(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:

@@ -11,6 +11,7 @@ from bisect import bisect_right
 from collections.abc import Iterator
 
 from mintlang.analysis.rules.addressing import addressed
+from mintlang.diagnostics import Span
 from mintlang.lsp.workspace import Snapshot
 from mintlang.records import record
 from mintlang.semantic.constants import constant_integer
@@ -83,9 +84,15 @@ def settings(snapshot: Snapshot, name: str) -> Iterator[Setting]:
             if use.use is not Use.WRITE or use.keyword.keyword != name or type(statement) is not n.KeywordStatement:
                 continue
             values = statement.values or ()  # type: ignore[union-attr]
-            targets = numbers(use.keyword, snapshot) or [None]
+            targets = numbers(use.keyword, snapshot)
+            if targets is None:  # the default axes (AXES) take the values in turn (000:590-640): all of them
+                written = line.span(Span(use.keyword.span.end, statement.span.end))
+                value = source[written.start : written.end].strip().removeprefix("=").strip()
+                yield Setting(None, value, index.position(written.start).line)
+                continue
             for place, number in enumerate(targets):
-                value = values[min(place, len(values) - 1)] if values else None  # ";" fills with the last one
+                # An axis past the last value keeps its value unless a ";" fills the rest with it (000:578-580, 656-659)
+                value = values[place] if place < len(values) else values[-1] if values and statement.fill else None  # type: ignore[union-attr]
                 if value is not None:
                     span = line.span(value.span)
                     yield Setting(number, source[span.start : span.end], index.position(span.start).line)

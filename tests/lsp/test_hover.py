@@ -217,6 +217,26 @@ async def test_an_axis_parameter_says_its_axes_and_what_the_configuration_file_s
     assert (await hover_at(client, uri, PROGRAM, "OUT.3", 1)).endswith("- Here: output 3")
 
 
+async def test_what_the_configuration_file_sets_follows_the_values_written(client, tmp_path):
+    """The default axes take the values in turn (000:590-640), so all of them are shown; an axis past the last
+    value is not set (000:578-580) unless a ';' fills the rest with the last value (000:656-659)."""
+    (tmp_path / "axes.cfg").write_text("SPEED = 5, 6\nSPEED[0,1,2] = 8, 9\nSCALE[0,1,2] = 2, 3;\n", encoding="utf-8")
+    text = "SPEED.2 = 1\nSCALE.2 = 1\nSPEED.1 = 1\n"
+    uri = uri_of(tmp_path / "axes.mnt")
+    await open_document(client, uri, text)
+    assert (await hover_at(client, uri, text, "SPEED.2")).endswith(
+        "- Here: axis 2\n- The configuration file sets the default axes to `5, 6` (line 1)"
+    )
+    assert (await hover_at(client, uri, text, "SCALE.2")).endswith(
+        "- Here: axis 2\n- The configuration file sets axis 2 to `3` (line 3)"
+    )
+    assert (await hover_at(client, uri, text, "SPEED.1")).endswith(
+        "- Here: axis 1\n"
+        "- The configuration file sets the default axes to `5, 6` (line 1)\n"
+        "- The configuration file sets axis 1 to `9` (line 2)"
+    )
+
+
 async def test_a_label_shows_the_remarks_above_it(client, tmp_path):
     uri = uri_of(tmp_path / "cell.mnt")
     await open_document(client, uri, PROGRAM)

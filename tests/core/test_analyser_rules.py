@@ -562,6 +562,16 @@ def test_no_rename_is_offered_to_a_keyword_the_controller_lacks() -> None:
     assert [fix.title for fix in on_mintdrive.fixes] == ["Replace with CURRENTLIMIT"]
 
 
+def test_a_v3_keyword_whose_successor_the_controller_lacks_is_not_said_to_be_converted() -> None:
+    # GEARD became FOLLOWDENOM (v3 keyword table), which the v4 entry lists for MintDrive and ServoNode 51
+    # only; mint-migrate leaves it flagged on a NextMove, so "mint-migrate converts" would be wrong there
+    (on_pci,) = mintlang.check("GEARD.1 = 2\n")
+    assert "v4 has FOLLOWDENOM instead, which NextMove PCI lacks" in on_pci.message
+    assert "mint-migrate converts" not in on_pci.message
+    (on_mintdrive,) = mintlang.check("GEARD.1 = 2\n", controller="mintdrive")
+    assert "v4 has FOLLOWDENOM instead (mint-migrate converts)" in on_mintdrive.message
+
+
 def test_an_old_analog_input_is_not_renamed_alone_because_the_units_changed() -> None:
     (analogue,) = mintlang.check("DIM v\nv = ANALOGUE.1\n")
     assert analogue.code == "E3007" and analogue.fixes == () and "percent" in analogue.message

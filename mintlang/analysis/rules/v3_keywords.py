@@ -18,6 +18,7 @@ from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Keyword
 from mintlang.records import record
 from mintlang.semantic.events import EventKind, event_of
 from mintlang.syntax import nodes as n
@@ -73,6 +74,8 @@ def successor(word: str, controller: ControllerProfile) -> Successor | None:
         if not old.v4_names:
             return Successor(f"a {_V3} keyword with no v4 equivalent", None, True)
         instead = " or ".join(old.v4_names)
+        if not any(_on(db.keywords.get(name), controller) for name in old.v4_names):  # BOOSTON on a NextMove PCI
+            return Successor(f"a {_V3} keyword; v4 has {instead} instead, which {controller.title} lacks", None, True)
         return Successor(f"a {_V3} keyword; v4 has {instead} instead (mint-migrate converts)", None, True)
     constant = db.v3_constants.get(word.upper())
     if constant is not None and word.startswith("_"):
@@ -80,6 +83,11 @@ def successor(word: str, controller: ControllerProfile) -> Successor | None:
             return Successor(f"a {_V3} constant; v4 uses {constant.v4_name}", constant.v4_name, True)
         return Successor(f"a {_V3} constant with no v4 equivalent", None, True)
     return None
+
+
+def _on(keyword: Keyword | None, controller: ControllerProfile) -> bool:
+    """Whether a v4 keyword is one ``controller`` has (its "Controllers Supported" list)."""
+    return keyword is not None and (not keyword.controllers or controller.controller in keyword.controllers)
 
 
 def is_v3_word(word: str) -> bool:

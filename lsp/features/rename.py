@@ -9,8 +9,9 @@ by name. A symbol written with two spellings the controller takes for one
 (``thisIsAVariable1``, ``thisIsAVaraible2``) is written one way after the
 rename; the user is told so before anything changes: a change annotation that
 needs confirmation where the client supports them, else a question. A variable
-or array is renamed in the program's ``REM @expect`` comments too: ``mint test``
-reads the value by that name, and would find none after the rename.
+or array is renamed in the program's ``REM @expect`` comments too, and in the
+``what`` of its scenario file (``cell.scenario.toml`` beside ``cell.mnt``):
+``mint test`` reads the value by that name, and would find none after the rename.
 """
 
 from __future__ import annotations
@@ -19,9 +20,11 @@ import asyncio
 import logging
 import re
 from collections.abc import Iterator
+from pathlib import Path
 
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException
+from pygls.uris import from_fs_path, to_fs_path
 
 from mintlang.diagnostics import Span
 from mintlang.lsp import confirmation
@@ -29,6 +32,7 @@ from mintlang.lsp.lookup import abbreviated, token_at
 from mintlang.lsp.occurrences import symbol_at, written
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Settings, Snapshot
+from mintlang.pairing import listed_as, names_in
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, SymbolTable
 from mintlang.semantic.units import Unit
@@ -149,6 +153,35 @@ def _expected(snapshot: Snapshot, symbol: Symbol) -> Iterator[Span]:
             yield Span(offset + named.start("name"), offset + named.end("name"))
 
 
+# A scenario file's expectation names what it reads in its ``what`` key (runtime/scenario/README.md).
+_WHAT = re.compile(r"""^[ \t]*what[ \t]*=[ \t]*["'](?P<name>[A-Za-z_]\w*)""", re.MULTILINE)
+
+
+def _in_scenario(server: MintServer, program_uri: str, symbol: Symbol) -> tuple[str, list[types.Range]]:
+    """The scenario file beside the program, and where its expectations name the variable or array ``symbol``."""
+    if symbol.kind not in (SymbolKind.VARIABLE, SymbolKind.ARRAY):
+        return "", []
+    from mintlang.runtime.testing.discovery import SCENARIO_SUFFIX  # noqa: PLC0415 - as _expected
+
+    program = Path(to_fs_path(program_uri) or "")
+    name = listed_as(program.stem + SCENARIO_SUFFIX, names_in(program.parent))
+    if name is None:
+        return "", []
+    uri = from_fs_path(str(program.parent / name)) or ""
+    try:
+        text = server.workspace.get_text_document(uri).source  # the editor's text when it is open
+    except (OSError, UnicodeDecodeError):
+        return uri, []
+    found = []
+    for what in _WHAT.finditer(text):
+        if identity(what["name"]) == symbol.identity:
+            start = what.start("name")
+            line, column = text.count("\n", 0, start), start - (text.rfind("\n", 0, start) + 1)
+            end = types.Position(line=line, character=column + len(what["name"]))
+            found.append(types.Range(start=types.Position(line=line, character=column), end=end))
+    return uri, found
+
+
 MERGE = "mint.mergeSpellings"
 QUESTION_TIMEOUT_S = 120.0
 _GO_ON = "Rename all"
@@ -202,6 +235,9 @@ def register(server: MintServer) -> None:
             for span in _expected(snapshot, symbol):
                 edit = types.TextEdit(range=program.positions.range(span), new_text=name)
                 changes.setdefault(program.uri, []).append(edit)
+            scenario, places = _in_scenario(server, program.uri, symbol)
+            for place in places:
+                changes.setdefault(scenario, []).append(types.TextEdit(range=place, new_text=name))
         spellings = _spellings(occurrences)
         if len(spellings) < 2:
             return types.WorkspaceEdit(changes=changes)

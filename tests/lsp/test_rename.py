@@ -210,6 +210,28 @@ async def test_a_variable_or_array_is_renamed_in_the_programs_expectations(clien
     assert apply(EXPECTING, edit.changes[uri]) == renamed
 
 
+SCENARIO = (
+    '[[expect]]\nwhat = "count"\nequals = 3\n\n'
+    '[[expect]]\nwhat = "POS.0"\nequals = 0\n\n'
+    '[[expect]]\nterminal_contains = "count"\n'
+)
+
+
+async def test_a_variable_is_renamed_in_the_scenario_file_beside_the_program(client, tmp_path):
+    """``cell.scenario.toml`` beside ``cell.mnt`` is its test (README, mint test), any case; each expectation
+    names what it reads in ``what`` (runtime/scenario/README.md): a keyword or the terminal's text is no name."""
+    (tmp_path / "Cell.Scenario.toml").write_text(SCENARIO, encoding="utf-8")
+    text = "DIM count = 3\nPRINT count\n"
+    uri = uri_of(tmp_path / "cell.mnt")
+    await open_document(client, uri, text)
+    edit = await client.text_document_rename_async(
+        types.RenameParams(text_document=document(uri), position=position(text, "count"), new_name="total")
+    )
+    assert apply(text, edit.changes[uri]) == "DIM total = 3\nPRINT total\n"
+    scenario = edit.changes[uri_of(tmp_path / "Cell.Scenario.toml")]
+    assert apply(SCENARIO, scenario) == SCENARIO.replace('what = "count"', 'what = "total"')
+
+
 async def test_a_refused_rename_is_an_answer_not_a_logged_fault(tmp_path):
     log = tmp_path / "server.log"
     client = LanguageClient("refusals", "1")

@@ -3,6 +3,10 @@
 * Statements after END, RETURN, GOTO or EXIT that nothing can reach (W106).
   A lone END or RETURN right after an endless main loop is the manual's own
   program structure (line 279: "#main / LOOP .. ENDL / RETURN") and is not reported.
+  Nor is what the compiler does wherever it stands: a DEFINE (macros are substituted
+  at compile time, 000:18494), an array's DIM (arrays are made and filled at compile
+  time, "regardless of where they reside", 000:1104-1105) and a DIM that only declares
+  (000:967-970); a variable's DIM with a value gives it at run time (000:1027-1033).
   The fix removes the whole unreachable run, blocks opened in it with their
   closers, and nothing that a block opened before it needs.
 * Main program code that runs on into the first subroutine without END:
@@ -60,6 +64,12 @@ def _ends_flow(statement: n.Statement) -> bool:
     if kind is n.BlockWord:
         return statement.word in _TERMINATORS  # type: ignore[union-attr]
     return kind is n.Jump and statement.word == "GOTO"  # type: ignore[union-attr]
+
+
+def _compiled(statement: n.Statement) -> bool:
+    """A DEFINE, or a DIM with nothing to do at run time: the compiler acts on it wherever it stands."""
+    kind = type(statement)
+    return kind is n.Define or (kind is n.Dim and (statement.size is not None or not statement.values))  # type: ignore[union-attr]
 
 
 def _receives_flow(statement: n.Statement) -> bool:
@@ -291,6 +301,10 @@ class _Flow:
     def _statement(self, statement: n.Statement) -> None:
         kind = type(statement)
         if self.dialect is Dialect.MINTMT and self._separate_block(statement):
+            return
+        if not self.reachable and _compiled(statement):  # no dead code, and no part of a run to remove
+            self._end_dead_run()
+            self.reported = False
             return
         if kind not in _FLOW_STATEMENTS and self.reachable:  # runs, and changes nothing
             self._dead(statement)

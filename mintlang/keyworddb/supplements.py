@@ -61,6 +61,12 @@ ENCODERSCALE, which divides the counts into ENCODER's units as SCALE does into P
 factor of 0 leaves no unit to divide by."""
 
 
+ANY_VALUE = frozenset({"ACTIVERS485NODE"})
+"""Keywords whose entry says what a value outside the printed range does, so it is no error 3: ACTIVERS485NODE's
+table prints 0 - 15, the node numbers whose transmitter it can enable, and its restrictions say that 0 or a value
+above 15 disables the transmitter (000:6314-6320)."""
+
+
 def attributes_for(keyword: Keyword, controller: Controller, dialect: Dialect) -> Attributes | None:
     """``keyword``'s attributes on ``controller``: its table's row, or, for a Mint v4 or MintMT keyword whose
     entry prints no table, the row the tools take here."""

@@ -25,6 +25,8 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if use.use is not Use.WRITE or not isinstance(use.statement, n.KeywordStatement):
             continue
         keyword = db.keywords_of(dialect).get(use.keyword.keyword)
+        if use.keyword.keyword in supplements.ANY_VALUE:
+            continue
         # SRAMP's and FOLERRORMODE's too, which print none: the ranges mint-run takes
         attributes = supplements.attributes_for(keyword, controller, dialect) if keyword else None
         # a scale factor is positive whatever its table prints, or where it prints none (ServoNode 51's SCALE)

@@ -97,14 +97,15 @@ GROUP = Group(
             "W106",
             catches="Statements that nothing can reach: after END, RETURN, GOTO or EXIT, with no label "
             "before them. The guide's own layout, a lone END or RETURN after an endless main loop, is not "
-            "reported.",
+            "reported, nor what the compiler does wherever it stands: a DEFINE, an array's DIM, a DIM "
+            "without a value.",
             why="Code that never runs is usually a mistake: a label was forgotten, or an END placed too "
             "early. At best it misleads the reader about what the program does.",
             example=Example(
                 before='PRINT "ready"\nEND\nPRINT "done"\n',
                 after='PRINT "ready"\nPRINT "done"\nEND\n',
             ),
-            manual=("v4:262", "v4:9839"),
+            manual=("v4:262", "v4:9839", "v4:967", "v4:1104"),
             fix="Remove the unreachable statements, with any block opened among them and its closing word.",
             safety=FixSafety.UNSAFE,
         ),

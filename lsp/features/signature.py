@@ -122,6 +122,8 @@ def _parameters(label: str, name: str, callee: Callee) -> list[tuple[int, int]]:
     equals = label.find("=", after)
     if equals >= 0:
         return _items(label, equals + 1, len(label))
+    if label[after:].lstrip().startswith("("):  # CAMTABLE ( axis, ... ): all its operands are in the brackets closed
+        return []
     if label[after : after + 1] in _OPENERS:  # a command's axes: GO[axes], MintMT's GO(axes)
         after = label.find(_OPENERS[label[after]], after) + 1
     if label[after:].lstrip().startswith("{#"):  # the terminal (PRINT #1, ...) is no operand

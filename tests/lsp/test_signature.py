@@ -60,6 +60,8 @@ INPUT = "INPUT {#<terminal>} {string,} variable {USING <int> {,<frac>}}"
     ("line", "label", "parameter"),
     [
         ("CAMTABLE(0, arr, ", "CAMTABLE ( axis, position array, {master increment array} )", "master increment array"),
+        # its operands are all in its brackets (000:7907): none is left once they are closed
+        ("CAMTABLE(0, arr, NULL)", "CAMTABLE ( axis, position array, {master increment array} )", None),
         ("COMMS(1, ", "COMMS( {node, } element) = <expression>", "element"),
         ("a = COMMS(1, ", "v = COMMS( {node, } element)", "element"),
         ("MOVEA.0 = 1, 2, ", "MOVEA[axes] = <expression> {,<expression ...}", "<expression ..."),

@@ -44,6 +44,8 @@ class Name:
 
 @record
 class Number:
+    """A number literal: decimal, binary (a leading 0) or hexadecimal (0x), as ``number_value`` reads it."""
+
     span: Span
     text: str
     value: float
@@ -81,6 +83,8 @@ def character_code(text: str) -> int:
 
 @record
 class CharConstant:
+    """A character in single quotes (``'a'``): its character code, upper-cased (000:802-809)."""
+
     span: Span
     text: str
     value: int  # character_code(text): 'a' and 'A' are both 65
@@ -88,6 +92,8 @@ class CharConstant:
 
 @record
 class StringLiteral:
+    """A string in double quotes, printed (PRINT, LINE) or prompting (INPUT): Mint has no string variables (000:929)."""
+
     span: Span
     text: str  # with its quotes
     value: str  # without them
@@ -95,12 +101,16 @@ class StringLiteral:
 
 @record
 class ConstantRef:
+    """A Mint constant: ``_`` and its name (``_tmRS232``), the name upper-cased."""
+
     span: Span
     name: str
 
 
 @record
 class VariableRef:
+    """A variable, or an array named without an index, read or written."""
+
     span: Span
     name: Name
 
@@ -159,6 +169,8 @@ class Call:
 
 @record
 class Unary:
+    """An operator before its operand: sign, bitwise ``~`` or logical ``NOT``."""
+
     span: Span
     operator: str  # "-", "+", "~", "NOT"
     operand: Expression
@@ -166,6 +178,8 @@ class Unary:
 
 @record
 class Binary:
+    """An operator between two operands; the parser has already applied the precedence of the dialect."""
+
     span: Span
     operator: str  # "+", "-", "*", "/", "MOD", "=", "<>", "<", ">", "<=", ">=", "AND", "OR", "XOR"
     left: Expression
@@ -174,6 +188,8 @@ class Binary:
 
 @record
 class Parenthesised:
+    """An expression in round brackets, kept so that spans and re-printing show them."""
+
     span: Span
     expression: Expression
 
@@ -237,6 +253,8 @@ class BareName:
 
 @record
 class IfThen:
+    """``IF condition THEN statements``: the one-line IF, its statements after THEN on the same line."""
+
     span: Span
     condition: Expression
     body: tuple[Statement, ...]
@@ -244,12 +262,16 @@ class IfThen:
 
 @record
 class IfDo:
+    """``IF condition DO``: opens an IF block, closed by ENDIF (ELSE between)."""
+
     span: Span
     condition: Expression
 
 
 @record
 class For:
+    """``FOR variable = start TO end {STEP step}``: opens a loop closed by NEXT, which names no variable."""
+
     span: Span
     variable: Name
     start: Expression
@@ -259,12 +281,16 @@ class For:
 
 @record
 class Until:
+    """``UNTIL condition``: closes the REPEAT loop opened last."""
+
     span: Span
     condition: Expression
 
 
 @record
 class While:
+    """``WHILE condition``: opens a loop closed by ENDW."""
+
     span: Span
     condition: Expression
 
@@ -297,6 +323,8 @@ class Jump:
 
 @record
 class Pause:
+    """``PAUSE condition``: waits until the condition holds; None when none is written (error 2005)."""
+
     span: Span
     condition: Expression | None
 
@@ -325,6 +353,8 @@ class Define:
 
 @record
 class Axes:
+    """``AXES[list]``: sets the default axes that bracket-less axis keywords address."""
+
     span: Span
     selector: Selector | None
 
@@ -341,6 +371,8 @@ class PrintItem:
 
 @record
 class Print:
+    """``PRINT {#terminal} items {USING int {,frac}}`` (also ``?``); ``using`` holds USING's digit counts."""
+
     span: Span
     terminal: Expression | None
     items: tuple[PrintItem, ...]
@@ -349,6 +381,8 @@ class Print:
 
 @record
 class Input:
+    """``INPUT {#terminal} {prompt,} variable {USING int {,frac}}``: reads a number typed at a terminal."""
+
     span: Span
     terminal: Expression | None
     prompt: StringLiteral | None

@@ -128,7 +128,9 @@ class RenameEventLabels(Rule):
     """A user label that v4 would call as an event handler (``#TIMER``, ``#CAN1``,
     ``#COMMS3``, ``#FASTIN2`` ...) is renamed, with every GOSUB/GOTO to it.
 
-    ``#FASTIN`` itself is what M-FASTPOS writes, so it is taken as that handler.
+    ``#FASTIN`` itself is what M-FASTPOS writes, so it is taken as that handler. A label jumped
+    to but defined nowhere v3 reads (``a = 1 : #timer``, flagged X-COMMENTED) is left as written:
+    its jumps renamed alone would name a label the user never wrote.
     """
 
     id = "M-LABEL"
@@ -143,7 +145,7 @@ class RenameEventLabels(Rule):
         for labels in context.model.symbols.labels.values():
             taken = set(labels)
             for symbol in labels.values():
-                if _event_named(symbol.identity):
+                if _event_named(symbol.identity) and symbol.definitions:
                     yield from _rename_symbol(self, context.files, symbol, taken)
 
 

@@ -21,3 +21,11 @@ def test_the_line_is_kept_as_written_and_flagged() -> None:
     assert "not valid Mint v3 either (Syntax error: #lbl follows code: a label must begin its line)" in [
         item.reason for item in result.manual if item.line == 3
     ]
+
+
+def test_its_jumps_keep_its_name_when_it_is_named_like_a_v4_event() -> None:
+    # M-LABEL renames a label v4 would call as an event with its jumps (000:1884-1900); this one is defined
+    # nowhere v3 reads, and the jump renamed alone named a label the user never wrote (#comms1_u)
+    result = migrate("a = 1 : #comms1\nGOTO comms1\n", only=["M-LABEL", "X-COMMENTED"])
+    assert "GOTO comms1\n" in result.text
+    assert "label #comms1 is not in this file" in [item.reason for item in result.manual]

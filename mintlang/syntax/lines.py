@@ -166,6 +166,18 @@ def groups_from(lines: PhysicalLines, start: int) -> Iterator[tuple[LineGroup, i
         yield LineGroup(pending_number, pending[0][0], "".join(texts), tuple(pending)), len(lines)
 
 
+CONTINUED_LIST = "the line before ends DIM's values with a comma, so this line is read as more of them"
+"""Why a DIM list's later line is read as its values: a trailing comma continues the list (000:1093-1095)."""
+
+
+def continues_a_list(text: str, start: int) -> bool:
+    """Whether ``start``, in the text of a logical line, is the first word of a physical line after its first:
+    the line was taken into a DIM list by the comma ending the line before, left there by mistake if no value
+    can be read at its first word."""
+    before = max(text.rfind("\n", 0, start), text.rfind("\r", 0, start))
+    return before >= 0 and not text[before + 1 : start].strip()
+
+
 def take_macro_body(line: LogicalLine) -> list[MacroDefinition]:
     """Collapse each ``DEFINE name = ...`` body into one MACRO_BODY token; return the definitions."""
     definitions: list[MacroDefinition] = []

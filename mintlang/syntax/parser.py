@@ -18,7 +18,7 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_right
 from collections.abc import Hashable, Iterable, Mapping, Sequence
-from dataclasses import field
+from dataclasses import field, replace
 from functools import cached_property
 
 from mintlang.allocation import collector_paused, without_collector
@@ -37,10 +37,12 @@ from mintlang.syntax.grammar import clear_cache as clear_parse_cache
 from mintlang.syntax.lexer import PhysicalLines, TokenStream, lex
 from mintlang.syntax.lexer import clear_cache as clear_lex_cache
 from mintlang.syntax.lines import (
+    CONTINUED_LIST,
     Expansion,
     LineGroup,
     LogicalLine,
     MacroDefinition,
+    continues_a_list,
     expand_macros,
     logical_lines,
     register,
@@ -318,9 +320,19 @@ def _parse_group(
     else:
         label, statements = result(line, words)
     syntax = n.LineSyntax(group.text, line.span, label, statements)
+    if diagnostics and len(group.physical) > 1:  # a DIM list over several lines
+        diagnostics = [_in_a_continued_list(group.text, diagnostic) for diagnostic in diagnostics]
     if diagnostics or defined or expansions:
         return _ParsedLineAndMore(syntax, tuple(diagnostics), tuple(defined), tuple(expansions))
     return _ParsedLine(syntax)
+
+
+def _in_a_continued_list(text: str, diagnostic: Diagnostic) -> Diagnostic:
+    """A statement that cannot be read at the first word of a DIM list's later line: the comma ending the line
+    before took it into the list, which a reader should be told, whatever the word is read as."""
+    if not continues_a_list(text, diagnostic.span.start):
+        return diagnostic
+    return replace(diagnostic, message=f"{diagnostic.message} ({CONTINUED_LIST})")
 
 
 def _recover(  # noqa: PLR0917 - the line, its reading, and where the findings go

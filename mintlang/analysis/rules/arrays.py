@@ -22,6 +22,7 @@ from mintlang.dialect import Dialect
 from mintlang.semantic.constants import constant_integer, constant_value
 from mintlang.semantic.symbols import SymbolKind
 from mintlang.syntax import nodes as n
+from mintlang.syntax.lines import CONTINUED_LIST, continues_a_list
 
 _NUMBERS = (n.Number, n.CharConstant, n.ConstantRef)
 _COMMS_ELEMENTS = range(1, 256)
@@ -59,6 +60,8 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         for value in statement.values:
             if not _is_number(value):
                 detail = f"the values of {statement.name.text} must be numbers, not expressions"
+                if continues_a_list(scope.syntax.text, value.span.start):
+                    detail += f" ({CONTINUED_LIST})"
                 yield Finding(scope.unit, mint_error(2003, value.span, detail))
 
 

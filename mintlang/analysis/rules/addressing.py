@@ -6,7 +6,8 @@ is 2018, and only constants or simple variables may stand in them (an
 expression is a syntax error, 2003). A circle moves the two axes of its
 brackets with three values, ``CIRCLEA[axis0,axis1] = <centre0>,<centre1>,<angle>``
 (000:8152, 000:8215): a third axis or a fourth value is 2017, a missing axis
-2001; a vector move on one axis is 2001 too (000:16958, 17031). Channel keywords take the dot only (``ADC[1]`` is invalid), and a keyword whose formats show no
+2001; a vector move on one axis is 2001 too (000:16958, 17031). Channel keywords take
+the dot only (``ADC[1]`` is invalid), and a keyword whose formats show no
 axis or channel takes neither (``TIME.5``): both are 2003. Constant numbers out of the controller's range give
 the motion library's errors: 2 axis, 4 channel, 7 input, 8 output, 26 CAN
 node, 31 CAN bus, 35/36 terminal (Dot Parameters table, chapter 12.2).

@@ -187,14 +187,15 @@ class ExpressionCompiler:
                 raise MintError(self.read_refused(reference.keyword), detail=reference.keyword)
             raise NotSimulated(reference.keyword, "read")
         read = access.read
+        number = self.semantics.number  # a parameter kept in counts reads divided by SCALE: held as any value
         channels = self.channels(reference)
         if channels is None:
-            return lambda: read(None)
+            return lambda: number(read(None))
         if isinstance(channels, tuple):
             single = channels
             if len(single) == 1:
                 only = single[0]
-                return lambda: read(int(only()))
+                return lambda: number(read(int(only())))
 
             clock = self.vm.clock
             constant = _constants(reference)
@@ -203,7 +204,7 @@ class ExpressionCompiler:
             return lambda: _and_of_reads(read, [int(channel()) for channel in single], clock)
         default_axes = channels
         vm = self.vm
-        return lambda: read(vm.default_axes[0]) if default_axes else read(None)
+        return lambda: number(read(vm.default_axes[0]) if default_axes else read(None))
 
     def channels(self, reference: n.KeywordRef) -> tuple[Evaluate, ...] | bool | None:
         """The channel expressions; ``True`` for the default axes, ``None`` for no channel at all."""

@@ -3,8 +3,9 @@
 A controller calls #INx only for its own digital inputs, #FASTINx only for
 its fast latch inputs, #CAN1/#CAN2 and #COMMS1 .. #COMMS5 only; any other
 such label is an ordinary subroutine that nothing calls (3.8.1, 10.3).
-In MintMT an ``Event`` block handles an event too: a ``#`` label for the same
-event is a second handler, error 2003 as a second ``Event`` block is (MT-13).
+In MintMT an ``Event`` block handles an event as such a label does, so both are checked alike (and
+only a NextMove raises MOVEBUFFERLOW, 004:109); a ``#`` label for an event a block handles is a
+second handler, error 2003 as a second ``Event`` block is (MT-13).
 """
 
 from __future__ import annotations
@@ -14,7 +15,11 @@ from collections.abc import Iterator
 from mintlang.analysis.findings import Finding, mint_error, own
 from mintlang.analysis.traversal import Facts
 from mintlang.controllers import ControllerProfile
+from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Controller
+from mintlang.records import record
 from mintlang.semantic.events import Event, EventKind, event_of
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -23,39 +28,57 @@ _COMMS = range(1, 6)
 _CAN = range(1, 3)
 
 
+@record
+class _Handler:
+    """A ``#`` label or a MintMT ``Event`` block (``line`` > 0) for ``event``, named as written."""
+
+    unit: Unit
+    written: str
+    span: Span
+    event: Event
+    line: int = 0
+
+
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     dialect = model.program.dialect
-    blocks = _event_blocks(facts) if dialect is Dialect.MINTMT else {}
-    for unit, labels in model.symbols.labels.items():
-        handlers = [
-            (symbol, event)
-            for symbol in labels.values()
-            if symbol.definitions and (event := event_of(symbol.name, dialect)) is not None
-        ]
-        fast = [(symbol, event) for symbol, event in handlers if event.kind is EventKind.FASTIN]
-        if any(event.number is None for _, event in fast) and any(event.number is not None for _, event in fast):
-            later = max((symbol.definitions[0] for symbol, _ in fast), key=lambda occurrence: occurrence.span.start)
-            detail = "#FASTIN and #FASTINx handlers cannot both be defined"
-            yield Finding(unit, mint_error(3006, later.span, detail))
-        for symbol, event in handlers:
-            problem = _unavailable(event, model.controller)
-            if problem is not None:
-                yield Finding(unit, own("W109", symbol.definitions[0].span, f"#{symbol.name}: {problem}"))
-            block = blocks.get((unit, event))
-            if block is not None:
-                detail = f"#{symbol.name} handles the event of the Event block of line {block}: one handler per event"
-                yield Finding(unit, mint_error(2003, symbol.definitions[0].span, detail))
+    labels = [
+        _Handler(unit, f"#{symbol.name}", symbol.definitions[0].span, event)
+        for unit, symbols in model.symbols.labels.items()
+        for symbol in symbols.values()
+        if symbol.definitions and (event := event_of(symbol.name, dialect)) is not None
+    ]
+    blocks = _event_blocks(facts) if dialect is Dialect.MINTMT else []
+    handlers = labels + blocks
+    for unit in dict.fromkeys(handler.unit for handler in handlers):
+        fast = [h for h in handlers if h.unit == unit and h.event.kind is EventKind.FASTIN]
+        if any(h.event.number is None for h in fast) and any(h.event.number is not None for h in fast):
+            later = max(fast, key=lambda handler: handler.span.start)
+            yield Finding(unit, mint_error(3006, later.span, "#FASTIN and #FASTINx handlers cannot both be defined"))
+    for handler in handlers:
+        problem = _unavailable(handler.event, model.controller)
+        if problem is not None:
+            yield Finding(handler.unit, own("W109", handler.span, f"{handler.written}: {problem}"))
+    first_block: dict[tuple[Unit, Event], int] = {}
+    for block in blocks:
+        first_block.setdefault((block.unit, block.event), block.line)
+    for label in labels:
+        line = first_block.get((label.unit, label.event))
+        if line is not None:
+            detail = f"{label.written} handles the event of the Event block of line {line}: one handler per event"
+            yield Finding(label.unit, mint_error(2003, label.span, detail))
 
 
-def _event_blocks(facts: Facts) -> dict[tuple[Unit, Event], int]:
-    """The line of the first MintMT ``Event`` block of each event, in each file."""
-    found: dict[tuple[Unit, Event], int] = {}
+def _event_blocks(facts: Facts) -> list[_Handler]:
+    """The MintMT ``Event`` blocks that name an event, in each file's order (``Event Comms9`` names none:
+    the syntax error 2003 of ``semantic/blocks.py``)."""
+    found = []
     for unit, line, statement in facts.statements(n.EventBlock):
         assert isinstance(statement, n.EventBlock)
-        event = event_of(statement.name.text, Dialect.MINTMT)
-        if event is not None:
-            found.setdefault((unit, event), line.number)
+        name = statement.name
+        event = event_of(name.text, Dialect.MINTMT)
+        if event is not None and (event.kind is not EventKind.COMMS or event.number in _COMMS):
+            found.append(_Handler(unit, f"Event {name.text}", line.span(name.span), event, line.number))
     return found
 
 
@@ -70,4 +93,10 @@ def _unavailable(event: Event, controller: ControllerProfile) -> str | None:
         return "only comms locations 1 to 5 raise an event"
     if event.kind is EventKind.CAN and number not in _CAN:
         return "there are two CAN event handlers, #CAN1 and #CAN2"
+    if event.kind is EventKind.MOVEBUFFERLOW and controller.controller not in _movebufferlow_controllers():
+        return f"{controller.title} has no MOVEBUFFERLOW event: the note gives it to NextMove only"
     return None
+
+
+def _movebufferlow_controllers() -> frozenset[Controller]:
+    return frozenset(database().mintmt_keywords["MOVEBUFFERLOW"].controllers)

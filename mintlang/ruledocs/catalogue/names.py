@@ -159,7 +159,8 @@ GROUP = Group(
         RuleDoc(
             "W109",
             catches="An event handler the controller cannot call: #INx for an input it does not have, "
-            "#FASTINx for a latch input it lacks, #CAN, #COMMS handlers beyond the ones it has.",
+            "#FASTINx for a latch input it lacks, #CAN, #COMMS handlers beyond the ones it has; in MintMT an "
+            "Event block for such an event too, and Event MOVEBUFFERLOW on a controller but a NextMove.",
             why="Such a label is an ordinary subroutine that nothing calls: the event it was written for "
             "is never handled.",
             example=Example(

@@ -111,4 +111,5 @@ def _inexact(literal: n.Number) -> str | None:
     if held is None or round(held, _PLACES) == round(literal.value, _PLACES):
         return None
     shown = format_number(held)
-    return f"{literal.text} was {round(held * 256)}/256 in v3 (1/256 fixed point; PRINT shows {shown}), exact in v4"
+    v3 = f"{round(held * 256)}/256 in v3 (1/256 fixed point; PRINT shows {shown})"
+    return f"{literal.text} was {v3}, floating point in v4"

@@ -31,7 +31,7 @@ def test_the_value_v3_held(literal: float, held: float) -> None:
 def test_the_guide_s_1_002_is_reported_with_the_value_it_held_and_showed() -> None:
     # v3:1161-1171: PRINT 1.002 displays 1.003, the nearest part in 256 being 257/256
     assert flagged("X-NUM", "PRINT 1.002\n") == [
-        "1.002 was 257/256 in v3 (1/256 fixed point; PRINT shows 1.003), exact in v4"
+        "1.002 was 257/256 in v3 (1/256 fixed point; PRINT shows 1.003), floating point in v4"
     ]
 
 

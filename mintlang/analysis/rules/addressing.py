@@ -42,7 +42,7 @@ _VECTOR_AXES = 2  # the fewest a vector move interpolates
 _Channels = Callable[[ControllerProfile], ChannelRange | None]
 _CHANNEL_FAMILIES: tuple[tuple[frozenset[str], _Channels, int], ...] = (
     (frozenset({"IN", "INSTATE"}), lambda p: p.digital_inputs, 7),
-    (frozenset({"OUT"}), lambda p: p.digital_outputs, 8),
+    (frozenset({"OUT", "OUTX"}), lambda p: p.digital_outputs, 8),  # OUTX(channel): MintMT's OUT.channel (004:148)
     (frozenset({"ADC", "ADCMODE"}), lambda p: p.adc, 4),
     (frozenset({"AUXDAC"}), lambda p: p.auxiliary_dac, 4),
     (frozenset({"DAC", "DACLIMITMAX"}), lambda p: p.dac, 4),
@@ -193,7 +193,7 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
         yield from _terminal(use, scope)
     elif keyword.addressing is Addressing.AXIS:
         yield from _axes(use, scope, keyword.name)
-        yield from _indices(use, keyword)
+        yield from _indices(use, keyword, scope)
     elif keyword.addressing is Addressing.CHANNEL or _channel_family(keyword.name):
         yield from _channel(use, scope)
     elif scope.dialect.modern and keyword.documented and keyword.formats:
@@ -249,10 +249,11 @@ def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:
     yield from _values_for_axes(use, listed)
 
 
-def _indices(use: KeywordUse, keyword: Keyword) -> Iterator[Finding]:
+def _indices(use: KeywordUse, keyword: Keyword, scope: LineScope) -> Iterator[Finding]:
     """MintMT's items after the axes (``MOVEOUT(axis, bank)``, ``CONTOURPARAMETER(axes, index)``, 004:232, 295):
     one left out is 2001, as in ``MOVEOUT(0) = 7``, which would otherwise read as a bank-less write to axis 0;
-    an output move names one axis (its format's ``axis``), so a second one is 2017."""
+    an output move names one axis (its format's ``axis``), so a second one is 2017, and an output channel
+    the controller lacks (``MOVEOUTX(0, 99)``) is 8, as the run says when the line loads it (MT-22)."""
     selector = use.keyword.selector
     if not keyword.indices or selector is None:
         return
@@ -263,6 +264,14 @@ def _indices(use: KeywordUse, keyword: Keyword) -> Iterator[Finding]:
     elif layout.upper().startswith(f"{keyword.name}(AXIS,") and len(selector.axes) > 1:
         detail = f"{len(selector.axes)} axes listed: {layout} is loaded on one axis"
         yield Finding(use.unit, mint_error(2017, selector.span, detail))
+    if keyword.indices[-1] == "channel" and selector.indices == len(keyword.indices):
+        item = selector.items[-1]
+        number = constant_integer(item, scope.dialect)
+        outputs = scope.controller.digital_outputs
+        if item is not None and number is not None and (outputs is None or number not in outputs):
+            available = f"channels {outputs}" if outputs is not None else "none"
+            detail = f"{keyword.name} channel {number} does not exist on {scope.controller.title} ({available})"
+            yield Finding(use.unit, mint_error(8, item.span, detail))
 
 
 def _values_for_axes(use: KeywordUse, axes: int) -> Iterator[Finding]:

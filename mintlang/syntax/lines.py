@@ -140,7 +140,7 @@ def groups_from(lines: PhysicalLines, start: int) -> Iterator[tuple[LineGroup, i
     pending: list[PhysicalLine] = []  # the lines of a DIM list so far
     texts: list[str] = []  # and their texts, with those of the blank or comment lines between them
     pending_number = 0
-    comma, dim = _K.COMMA, _K.DIM
+    comma = _K.COMMA
     new = tuple.__new__  # builds the named tuple without its Python-level constructor
     offsets = lines.offsets
     for index in range(start, len(lines)):
@@ -151,7 +151,7 @@ def groups_from(lines: PhysicalLines, start: int) -> Iterator[tuple[LineGroup, i
                 texts.append(line.text)
             continue
         physical = (offsets[index], line)
-        continued = kinds[-1] is comma and (dim in kinds or any(dim in earlier.kinds for _, earlier in pending))
+        continued = kinds[-1] is comma and (_ends_in_a_dim(kinds) if not pending else _K.COLON not in kinds)
         if not pending and not continued:  # the common case: one physical line
             yield new(LineGroup, (index + 1, physical[0], line.text, (physical,))), index + 1
             continue
@@ -164,6 +164,18 @@ def groups_from(lines: PhysicalLines, start: int) -> Iterator[tuple[LineGroup, i
             pending, texts = [], []
     if pending:
         yield LineGroup(pending_number, pending[0][0], "".join(texts), tuple(pending)), len(lines)
+
+
+_STATEMENT_SEPARATORS = frozenset({_K.COLON, _K.THEN, _K.LABEL})
+
+
+def _ends_in_a_dim(kinds: list[TokenKind]) -> bool:
+    """Whether the line's last statement is a DIM: only its values go on after a trailing comma (000:1093-1095);
+    a PRINT's trailing comma (``DIM a : PRINT a,``) keeps the cursor on the line, and the next line is its own."""
+    start = len(kinds) - 1
+    while start > 0 and kinds[start - 1] not in _STATEMENT_SEPARATORS:
+        start -= 1
+    return kinds[start] is _K.DIM
 
 
 CONTINUED_LIST = "the line before ends DIM's values with a comma, so this line is read as more of them"

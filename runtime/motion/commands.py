@@ -132,9 +132,9 @@ class Motion:
             if interpolated:
                 if None in values:
                     raise MintError(MISSING_PARAMETER, detail="a vector needs a value for each of its axes")
-                if len(axes) < 2:  # VECTORR[0] = 5, or VECTORA = 5 after AXES[0] (000:16958, 17031)
-                    raise MintError(MISSING_PARAMETER, detail="a vector needs two axes or more")
                 axes = axes[: len(values)]  # VECTORA = 30,40 with AXES[0,1,2,3] interpolates axes 0 and 1
+                if len(axes) < 2:  # VECTORR[0] = 5, VECTORA[0,1] = 5 (000:16958, 17031; 578-580)
+                    raise MintError(MISSING_PARAMETER, detail="a vector needs two axes or more")
             pairs = [(axis, value) for axis, value in zip(axes, values, strict=False) if value is not None]
             self.check_values(keyword, pairs)
             for axis, _ in pairs:

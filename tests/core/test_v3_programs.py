@@ -122,6 +122,8 @@ def test_v3_an_assignment_with_no_expression_is_no_expression() -> None:
         pytest.param("a = 0\nSF[a+1] = 1000\n", 9, id="001:13184 an expression as an axis number"),
         pytest.param("DIM t(2)\nSF[t(1)] = 1000\n", 12, id="001:13175 an array element"),
         pytest.param("VR[0] = 100\n", 2, id="001:13183 a vector move on one axis"),
+        pytest.param("VR[0,1] = 100\n", 10, id="001:13175 one position: the other axis is left out"),
+        pytest.param("VA = 100\n", 5, id="001:13175 the default axes given one position"),
     ],
 )
 def test_v3_invalid_axis_examples_are_found_as_the_run_raises_them(source: str, column: int) -> None:

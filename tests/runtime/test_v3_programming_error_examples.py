@@ -36,6 +36,7 @@ def test_an_assignment_with_no_expression_is_refused_before_the_program_runs() -
         pytest.param("a = 0\nPRINT POS[a+1]", "Invalid axis at line 2", id="001:13175 read"),
         pytest.param("VR[0] = 100", "Invalid axis at line 1 on axis 0", id="001:13183 a vector move on one axis"),
         pytest.param("VECTORA.1 = 100", "Invalid axis at line 1 on axis 1", id="001:3257 vectors need two axes"),
+        pytest.param("VR[0,1] = 100", "Invalid axis at line 1 on axis 0", id="001:13175 one position moves one axis"),
     ],
 )
 def test_each_example_stops_the_run_with_its_message(lines: str, message: str) -> None:

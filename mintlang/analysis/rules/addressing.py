@@ -186,6 +186,8 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
         # (000:572, 605-606, #2017 at 19047); a circle's three values go to two of them.
         if keyword.addressing is Addressing.AXIS and keyword.name not in CIRCLES:
             yield from _values_for_axes(use, scope.controller.axis_count)
+        if keyword.name in VECTORS:
+            yield from _one_position(use, keyword.name)
         return
     if keyword.name.startswith("REMOTE"):
         yield from _can_address(use)
@@ -246,7 +248,25 @@ def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:
     if name in VECTORS and 0 < listed < _VECTOR_AXES:  # an empty place is the axis list's own 2001
         detail = f"{name} interpolates two axes or more, {listed} listed"
         yield Finding(use.unit, mint_error(2001, selector.span, detail))
+    elif name in VECTORS:
+        yield from _one_position(use, name)
     yield from _values_for_axes(use, listed)
+
+
+def _one_position(use: KeywordUse, name: str) -> Iterator[Finding]:
+    """A vector move written one position: the axes past the values are left out (000:578-580), which leaves
+    one, and a vector interpolates two or more (000:16958, 17031)."""
+    position = lone_position(use)
+    if position is not None:
+        detail = f"{name} interpolates two axes or more: one position given"
+        yield Finding(use.unit, mint_error(2001, position.span, detail))
+
+
+def lone_position(use: KeywordUse) -> n.Expression | None:
+    """The value of a write given one value and no place left empty (``VECTORA[0,1] = 5``), if it is one."""
+    statement = use.statement
+    written = statement.values if use.use is Use.WRITE and isinstance(statement, n.KeywordStatement) else None
+    return written[0] if written is not None and len(written) == 1 else None
 
 
 def _indices(use: KeywordUse, keyword: Keyword, scope: LineScope) -> Iterator[Finding]:

@@ -15,8 +15,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
+from mintlang.analysis.rules.addressing import lone_position
 from mintlang.analysis.traversal import KeywordUse, LineScope, Use
 from mintlang.keyworddb import database
+from mintlang.keyworddb.model import VECTORS
 from mintlang.syntax.v3_axis_lists import NUMBER_OR_VARIABLE, refused_axes
 
 
@@ -41,14 +43,12 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
 def _axes(use: KeywordUse) -> Iterator[Finding]:
     """v3's "Invalid axis" (001:13173-13184), as mint-run raises it: an axis list takes only numbers and
     variables (``SF[a+1] = 1000``), and a vector move names two axes or more (``VR[0] = 100``, 001:3257)."""
-    selector = use.keyword.selector
-    if selector is None:
-        return  # the default axes: AXES may have set any
-    for item in refused_axes(selector):
+    selector, name = use.keyword.selector, use.keyword.keyword
+    for item in refused_axes(selector) if selector is not None else ():  # None: the default axes, any AXES set
         yield Finding(use.unit, mint_error(2, item.span, f"Invalid axis in Mint v3: {NUMBER_OR_VARIABLE}"))
-    if use.keyword.keyword in _VECTORS and len(selector.axes) < 2:
-        detail = f"Invalid axis in Mint v3: {use.keyword.keyword} needs two axes or more"
-        yield Finding(use.unit, mint_error(2, selector.span, detail))
-
-
-_VECTORS = frozenset({"VECTORA", "VECTORR"})
+    if name in VECTORS:
+        detail = f"Invalid axis in Mint v3: {name} needs two axes or more"
+        if selector is not None and len(selector.axes) < 2:
+            yield Finding(use.unit, mint_error(2, selector.span, detail))
+        elif (position := lone_position(use)) is not None:  # VR[0,1] = 5 or VR = 5: one axis moves, as VR[0]
+            yield Finding(use.unit, mint_error(2, position.span, detail))

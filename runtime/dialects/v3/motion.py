@@ -221,7 +221,7 @@ class V3Motion:
         001:13173-13183)."""
 
         def vector(channels: Channels | None, values: Values) -> bool:
-            if channels is None or len(channels) < 2:
+            if channels is None or len(channels) < 2 or len(values) < 2:  # VR = 5 moves one axis too
                 axis = channels[0] if channels else None
                 raise MintError(INVALID_AXIS, axis, "a vector move needs at least two axes")
             return write(channels, values)

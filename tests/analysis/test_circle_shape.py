@@ -3,7 +3,9 @@
 CIRCLEA and CIRCLER print one format each, ``[axis0,axis1] = <centre0>,<centre1>,<angle>``
 (000:8152, 000:8215). A third axis is more than the keyword supports (#2017), an axis
 left out is a missing parameter in the brackets (#2001), and a fourth value has nothing
-to take it (#2017, as for values past the listed axes of any other keyword).
+to take it (#2017, as for values past the listed axes of any other keyword). A value left out
+is a missing parameter too: the format has no optional part, every example of the guide writes all
+three, and ``mint-run`` refuses a circle without its centre and angle.
 """
 
 from __future__ import annotations
@@ -20,6 +22,10 @@ from tests.analysis.placed import placed_codes
         pytest.param("CIRCLEA[0,1] = 10, 20, 90, 5\n", [("E2017", 1, 28)], id="fourth-value"),
         pytest.param("CIRCLER[0,1,2] = 1, 2, 3\n", [("E2017", 1, 8)], id="third-axis"),
         pytest.param("CIRCLEA[0] = 1, 2, 3\n", [("E2001", 1, 8)], id="one-axis"),
+        pytest.param("CIRCLEA[0,1] = 5, 6\n", [("E2001", 1, 1)], id="no-angle"),
+        pytest.param("CIRCLER[0,1] = 1,,90\n", [("E2001", 1, 1)], id="a-centre-left-out"),
+        pytest.param("AXES[0,1]\nCIRCLEA = 1, 2\n", [("E2001", 2, 1)], id="default-axes-no-angle"),
+        pytest.param("AXES[0,1]\nCIRCLEA = 1, 2, 3, 4\n", [("E2017", 2, 20)], id="default-axes-fourth-value"),
     ],
 )
 def test_a_circle_of_another_shape_is_an_error(source: str, expected: list[tuple[str, int, int]]) -> None:

@@ -188,6 +188,8 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
             yield from _values_for_axes(use, scope.controller.axis_count)
         if keyword.name in VECTORS:
             yield from _one_position(use, keyword.name)
+        elif keyword.name in CIRCLES:
+            yield from _circle_values(use, keyword.name)
         return
     if keyword.name.startswith("REMOTE"):
         yield from _can_address(use)
@@ -301,14 +303,29 @@ def _values_for_axes(use: KeywordUse, axes: int) -> Iterator[Finding]:
 
 
 def _circle(use: KeywordUse, selector: n.Selector, name: str, listed: int) -> Iterator[Finding]:
-    """Two axes addressed and at most three values (a value left out is not known to be wrong)."""
-    shape = f"{name}[axis0,axis1] = <centre0>,<centre1>,<angle>"
-    detail = f"{shape} moves two axes, {listed} listed"
+    """Two axes addressed and three values."""
+    detail = f"{_circle_shape(name)} moves two axes, {listed} listed"
     if listed > _CIRCLE_AXES:
         yield Finding(use.unit, mint_error(2017, selector.span, detail))
     elif listed < _CIRCLE_AXES:
         yield Finding(use.unit, mint_error(2001, selector.span, detail))
+    yield from _circle_values(use, name)
+
+
+def _circle_values(use: KeywordUse, name: str) -> Iterator[Finding]:
+    """A circle written takes its three values, each given: both centre coordinates and the angle are in its
+    format and in every example of the guide (000:8152, 8215), and ``mint-run`` refuses one without them."""
+    shape = _circle_shape(name)
     yield from _too_many_values(use, _CIRCLE_VALUES, lambda count: f"{count} values; {shape} takes three")
+    statement = use.statement
+    values = statement.values if use.use is Use.WRITE and isinstance(statement, n.KeywordStatement) else None
+    if values is not None and (len(values) < _CIRCLE_VALUES or None in values):
+        detail = f"{shape}: a centre on each axis and an angle are needed"
+        yield Finding(use.unit, mint_error(2001, statement.span, detail))
+
+
+def _circle_shape(name: str) -> str:
+    return f"{name}[axis0,axis1] = <centre0>,<centre1>,<angle>"
 
 
 def _too_many_values(use: KeywordUse, most: int, detail: Callable[[int], str]) -> Iterator[Finding]:

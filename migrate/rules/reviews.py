@@ -76,7 +76,7 @@ def _format_reason(statement: n.Statement) -> str | None:
     if isinstance(statement, n.Print | n.Input) and statement.using:
         return "USING layout: v4 prints numbers with up to 4 decimals; check what reads this output"
     if isinstance(statement, n.Input):
-        return "v3 INPUT printed ' ?' after its prompt, v4 does not; check what reads this output"
+        return "v3 INPUT printed ' ?' after its prompt (not after POFF), v4 does not; check what reads this output"
     if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "BINARY":
         return "BINARY output: v4 prints with PRINT BIN, without the 8-digit padding"
     if isinstance(statement, n.Print) and any(

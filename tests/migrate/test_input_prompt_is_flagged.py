@@ -11,7 +11,7 @@ from mintlang.migrate import migrate
 from mintlang.migrate.verification import Place, Verdict, verify
 from tests.migrate.helpers import flagged
 
-_PROMPT = "v3 INPUT printed ' ?' after its prompt, v4 does not; check what reads this output"
+_PROMPT = "v3 INPUT printed ' ?' after its prompt (not after POFF), v4 does not; check what reads this output"
 _USING = "USING layout: v4 prints numbers with up to 4 decimals; check what reads this output"
 
 

@@ -486,7 +486,7 @@ class Context:
     def supports(self, keyword: str) -> bool:
         """Whether the target controller has the v4 keyword (its "Controllers Supported" list)."""
         entry = self.db.keywords.get(keyword.upper())
-        return entry is not None and self.controller.controller in entry.controllers
+        return entry is not None and entry.available_on(self.controller.controller)
 
 
 def _line_place(found: tuple[FileView, n.Line, n.Statement]) -> tuple[Unit, int]:

@@ -82,7 +82,7 @@ class KeywordTable:
         MintMT's own keywords name their controllers in the move-buffer note (004:100, 286).
         """
         record = database().keywords_of(self.dialect).get(name)
-        if record is not None and record.controllers and self.controller not in record.controllers:
+        if record is not None and not record.available_on(self.controller):
             raise MintError(KEYWORD_NOT_SUPPORTED, detail=f"{name} is not available on this controller")
         return self._entries.get(name)
 

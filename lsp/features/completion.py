@@ -301,7 +301,7 @@ def event_names(snapshot: Snapshot) -> list[str]:
     }
     names: list[str] = []
     for word in database().keywords.values():
-        if word.kind is not KeywordKind.EVENT or snapshot.settings.controller not in word.controllers:
+        if word.kind is not KeywordKind.EVENT or not word.available_on(snapshot.settings.controller):
             continue
         base = word.name.lstrip("#")
         if event_of(base, snapshot.settings.dialect) is not None:

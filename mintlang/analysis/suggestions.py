@@ -55,7 +55,7 @@ def _keywords_of(controller: Controller | None, *, values: bool, dialect: Dialec
     for name, keyword in database().keywords_of(dialect).items():
         if keyword.kind is KeywordKind.COMMAND_LINE:
             continue
-        if controller is not None and keyword.controllers and controller not in keyword.controllers:
+        if controller is not None and not keyword.available_on(controller):
             continue
         if not values or _holds_a_value(keyword, controller):
             found.append(name)

@@ -131,6 +131,10 @@ class Keyword:
                 return True
         return False
 
+    def available_on(self, controller: Controller) -> bool:
+        """Whether ``controller`` has the keyword: its "Controllers Supported" list names it, or lists none."""
+        return not self.controllers or controller in self.controllers
+
     def attributes_for(self, controller: Controller) -> Attributes | None:
         """The attributes row that applies to ``controller``, if the manual gives one."""
         for row in self.attributes:

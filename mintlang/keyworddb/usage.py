@@ -35,7 +35,7 @@ def refusal(
     name = keyword.name
     if keyword.kind is KeywordKind.COMMAND_LINE:
         return Refusal(2006, f"{name} is an editor command: it works only at the command line, not in a program")
-    if keyword.controllers and controller not in keyword.controllers:
+    if not keyword.available_on(controller):
         return Refusal(17, f"{name} is not available on {profile(controller).title}")
     attributes = attributes_for(keyword, controller, dialect)  # HOMEPOS's too, which prints none
     if attributes is None:

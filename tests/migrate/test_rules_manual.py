@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import pytest
 
+import mintlang
 from mintlang.migrate import migrate
 from tests.migrate.helpers import flagged
 
@@ -116,3 +117,10 @@ def test_migrated_text_that_is_already_v4_is_not_flagged() -> None:
 def test_a_comment_missing_its_rem_after_a_command_is_reported() -> None:
     # "STOP following" in the v3 listings (v3:3727, v3:3790): STOP takes no operands in either version
     assert flagged("X-COMMENTED", "STOP.0 : STOP following\n") == ["STOP takes no operands (a comment missing REM?)"]
+
+
+def test_a_keyword_whose_entry_lists_no_controllers_is_not_a_platform_item() -> None:
+    # MOVESTATUS's entry defers to the Advanced guide and names no controllers (000:14634-14636): mint check
+    # takes it as every controller's, so X-PLATFORM must not say the target lacks it
+    assert migrate("a = MOVESTATUS.0\nPRINT a\n", only=["X-PLATFORM"]).manual == ()
+    assert [d.code for d in mintlang.check("DIM a\na = MOVESTATUS.0\nPRINT a\n")] == []

@@ -162,7 +162,7 @@ def _beyond_the_list(
         keyword is None
         or keyword.addressing is not Addressing.AXIS
         or keyword.name in CIRCLES
-        or (keyword.controllers and controller.controller not in keyword.controllers)
+        or not keyword.available_on(controller.controller)
         or ref.selector is not None
         or ref.channel is not None
         or statement.values is None
@@ -179,7 +179,7 @@ def _beyond_the_list(
 
 def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
     keyword = database().keywords_of(scope.dialect).get(use.keyword.keyword)
-    if keyword is None or (keyword.controllers and scope.controller.controller not in keyword.controllers):
+    if keyword is None or not keyword.available_on(scope.controller.controller):
         return  # not a keyword of this controller: 17 (keyword usage) says so, its channels are moot
     if use.keyword.selector is None and use.keyword.channel is None:
         # Nothing addressed: the default axes, whatever AXES made them, are at most the controller's
@@ -229,7 +229,7 @@ def _function_axis(call: n.Call, scope: LineScope) -> Iterator[Finding]:
         keyword is not None
         and keyword.addressing is Addressing.AXIS
         and call.arguments
-        and (not keyword.controllers or scope.controller.controller in keyword.controllers)
+        and keyword.available_on(scope.controller.controller)
     ):
         yield from _axis_number(scope.unit, call.arguments[0], scope)
 

@@ -87,7 +87,7 @@ def successor(word: str, controller: ControllerProfile) -> Successor | None:
 
 def _on(keyword: Keyword | None, controller: ControllerProfile) -> bool:
     """Whether a v4 keyword is one ``controller`` has (its "Controllers Supported" list)."""
-    return keyword is not None and (not keyword.controllers or controller.controller in keyword.controllers)
+    return keyword is not None and keyword.available_on(controller.controller)
 
 
 def is_v3_word(word: str) -> bool:

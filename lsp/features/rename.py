@@ -153,8 +153,9 @@ def _expected(snapshot: Snapshot, symbol: Symbol) -> Iterator[Span]:
             yield Span(offset + named.start("name"), offset + named.end("name"))
 
 
-# A scenario file's expectation names what it reads in its ``what`` key (runtime/scenario/README.md).
-_WHAT = re.compile(r"""^[ \t]*what[ \t]*=[ \t]*["'](?P<name>[A-Za-z_]\w*)""", re.MULTILINE)
+# A scenario file's expectation names what it reads in its ``what`` key (runtime/scenario/README.md), a key of
+# a table of its own (``[[expect]]``) or of an inline one (``expect = [{ what = "count", equals = 3 }]``).
+_WHAT = re.compile(r"""(?:^|[{,])[ \t]*what[ \t]*=[ \t]*["'](?P<name>[A-Za-z_]\w*)""", re.MULTILINE)
 
 
 def _in_scenario(server: MintServer, program_uri: str, symbol: Symbol) -> tuple[str, list[types.Range]]:

@@ -232,6 +232,20 @@ async def test_a_variable_is_renamed_in_the_scenario_file_beside_the_program(cli
     assert apply(SCENARIO, scenario) == SCENARIO.replace('what = "count"', 'what = "total"')
 
 
+async def test_a_variable_is_renamed_in_the_scenario_files_inline_tables_too(client, tmp_path):
+    """TOML writes the same expectations as inline tables; the terminal's text still names nothing."""
+    scenario = 'expect = [{ what = "count", equals = 3 }, { terminal_contains = "count", what = "POS.0" }]\n'
+    (tmp_path / "cell.scenario.toml").write_text(scenario, encoding="utf-8")
+    text = "DIM count = 3\nPRINT count\n"
+    uri = uri_of(tmp_path / "cell.mnt")
+    await open_document(client, uri, text)
+    edit = await client.text_document_rename_async(
+        types.RenameParams(text_document=document(uri), position=position(text, "count"), new_name="total")
+    )
+    changes = edit.changes[uri_of(tmp_path / "cell.scenario.toml")]
+    assert apply(scenario, changes) == scenario.replace('what = "count"', 'what = "total"')
+
+
 async def test_a_refused_rename_is_an_answer_not_a_logged_fault(tmp_path):
     log = tmp_path / "server.log"
     client = LanguageClient("refusals", "1")

@@ -74,6 +74,7 @@ def _undeclared_variables(model: SemanticModel, broken_dims: dict[str, tuple[Uni
     renames = database()
     declared = [symbol.name for symbol in model.symbols.variables.values() if symbol.definitions]
     places: dict[Unit, _DimPlaces] = {}  # found once per file, for the first name that needs a DIM
+    given_as_arrays = cache(partial(_given_as_arrays, model))  # walked once, for the first name that needs it
     for symbol in model.symbols.variables.values():
         undeclared = [
             occurrence
@@ -98,7 +99,7 @@ def _undeclared_variables(model: SemanticModel, broken_dims: dict[str, tuple[Uni
             first = min(undeclared, key=lambda use: (use.unit is Unit.PROGRAM, use.span.start))
             if first.unit not in places:
                 places[first.unit] = _dim_places(model, first.unit)
-            dim = _add_dim(model, symbol, first.unit, first.span, places[first.unit])
+            dim = _add_dim(model, symbol, first.unit, first.span, places[first.unit], given_as_arrays)
             declare = {first.unit: (dim,)} if dim is not None else {}
         for occurrence, same_line in _by_line(model, undeclared):
             fixes = declare.get(occurrence.unit, ())
@@ -201,7 +202,14 @@ def _written_at(model: SemanticModel, unit: Unit, span: Span) -> str:
     return model.document(unit).source[span.start : span.end]
 
 
-def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span, places: _DimPlaces) -> Fix | None:
+def _add_dim(  # noqa: PLR0917 - the name, where it is used, and what is known of the file
+    model: SemanticModel,
+    symbol: Symbol,
+    unit: Unit,
+    span: Span,
+    places: _DimPlaces,
+    given_as_arrays: Callable[[], frozenset[str]],
+) -> Fix | None:
     """Insert ``DIM name`` on its own line with the file's other DIMs, else at the top: never inside a loop.
 
     After the last DIM outside any block above the first use, with its indentation; without one, above
@@ -209,11 +217,11 @@ def _add_dim(model: SemanticModel, symbol: Symbol, unit: Unit, span: Span, place
     file stays first too). A DIM list continued over lines stays whole either way. A name written with
     an index is an array, whose DIM needs its size: the largest index written as a number (the elements
     count from 1); None when no index is a number, as the size is then the author's to choose, and None
-    for a name a function takes where its format writes an array (CAMTABLE's position array): a DIM
-    without a size would make a plain variable of it.
+    for a name a function takes where its format writes an array (CAMTABLE's position array,
+    ``given_as_arrays``): a DIM without a size would make a plain variable of it.
     """
     declared = symbol.name
-    if symbol.kind is not SymbolKind.ARRAY and _given_as_an_array(model, symbol):
+    if symbol.kind is not SymbolKind.ARRAY and symbol.identity in given_as_arrays():
         return None
     if symbol.kind is SymbolKind.ARRAY:
         size = _largest_index(model, symbol)
@@ -254,17 +262,16 @@ def _largest_index(model: SemanticModel, symbol: Symbol) -> int | None:
     return max(whole, default=None)
 
 
-def _given_as_an_array(model: SemanticModel, symbol: Symbol) -> bool:
-    """Whether a function is given the name where its format takes an array: ``CAMTABLE ( axis, position
-    array, {master increment array} )`` reads the cam's segments from arrays (000:7907, 7932-7934)."""
+def _given_as_arrays(model: SemanticModel) -> frozenset[str]:
+    """The names functions are given where their formats take an array: ``CAMTABLE ( axis, position array,
+    {master increment array} )`` reads the cam's segments from arrays (000:7907, 7932-7934)."""
     dialect = model.program.dialect
-    return any(
-        type(argument) is n.VariableRef
-        and argument.name.identity == symbol.identity
-        and at in _array_places(call.function, dialect)
+    return frozenset(
+        argument.name.identity
         for facts in model.lines.facts()
         for call in facts.calls
         for at, argument in enumerate(call.arguments)
+        if type(argument) is n.VariableRef and at in _array_places(call.function, dialect)
     )
 
 

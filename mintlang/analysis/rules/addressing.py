@@ -266,9 +266,14 @@ def _one_position(use: KeywordUse, name: str) -> Iterator[Finding]:
 
 def lone_position(use: KeywordUse) -> n.Expression | None:
     """The value of a write given one value and no place left empty (``VECTORA[0,1] = 5``), if it is one."""
+    values = _written(use)
+    return values[0] if values is not None and len(values) == 1 else None
+
+
+def _written(use: KeywordUse) -> tuple[n.Expression | None, ...] | None:
+    """The values a write gives its keyword (None in the places left empty); None for a read or a command."""
     statement = use.statement
-    written = statement.values if use.use is Use.WRITE and isinstance(statement, n.KeywordStatement) else None
-    return written[0] if written is not None and len(written) == 1 else None
+    return statement.values if use.use is Use.WRITE and isinstance(statement, n.KeywordStatement) else None
 
 
 def _indices(use: KeywordUse, keyword: Keyword, scope: LineScope) -> Iterator[Finding]:
@@ -317,11 +322,10 @@ def _circle_values(use: KeywordUse, name: str) -> Iterator[Finding]:
     format and in every example of the guide (000:8152, 8215), and ``mint-run`` refuses one without them."""
     shape = _circle_shape(name)
     yield from _too_many_values(use, _CIRCLE_VALUES, lambda count: f"{count} values; {shape} takes three")
-    statement = use.statement
-    values = statement.values if use.use is Use.WRITE and isinstance(statement, n.KeywordStatement) else None
+    values = _written(use)
     if values is not None and (len(values) < _CIRCLE_VALUES or None in values):
         detail = f"{shape}: a centre on each axis and an angle are needed"
-        yield Finding(use.unit, mint_error(2001, statement.span, detail))
+        yield Finding(use.unit, mint_error(2001, use.statement.span, detail))
 
 
 def _circle_shape(name: str) -> str:

@@ -122,8 +122,11 @@ class LogicalLine:
         return span(self.starts[index], self.ends[index])
 
 
+_STATEMENT_SEPARATORS = frozenset({_K.COLON, _K.LABEL, _K.THEN})
+
+
 def _is_statement_start(kinds: list[TokenKind], index: int) -> bool:
-    return index == 0 or kinds[index - 1] in (_K.COLON, _K.LABEL, _K.THEN)
+    return index == 0 or kinds[index - 1] in _STATEMENT_SEPARATORS
 
 
 def logical_lines(lexed: LexResult) -> Iterator[LineGroup]:
@@ -166,14 +169,11 @@ def groups_from(lines: PhysicalLines, start: int) -> Iterator[tuple[LineGroup, i
         yield LineGroup(pending_number, pending[0][0], "".join(texts), tuple(pending)), len(lines)
 
 
-_STATEMENT_SEPARATORS = frozenset({_K.COLON, _K.THEN, _K.LABEL})
-
-
 def _ends_in_a_dim(kinds: list[TokenKind]) -> bool:
     """Whether the line's last statement is a DIM: only its values go on after a trailing comma (000:1093-1095);
     a PRINT's trailing comma (``DIM a : PRINT a,``) keeps the cursor on the line, and the next line is its own."""
     start = len(kinds) - 1
-    while start > 0 and kinds[start - 1] not in _STATEMENT_SEPARATORS:
+    while not _is_statement_start(kinds, start):
         start -= 1
     return kinds[start] is _K.DIM
 

@@ -38,7 +38,7 @@ class GlobalErrorOutput:
 
 def install(table: KeywordTable, motion: Motion, io: DigitalIO) -> None:
     """On the controllers that have one (NextMove), every axis error drops the global error output."""
-    if table.controller not in database().keywords["GLOBALERROROUTPUT"].controllers:
+    if not database().keywords["GLOBALERROROUTPUT"].available_on(table.controller):
         return
     output = GlobalErrorOutput(motion, io)
     for axis in motion.axes:

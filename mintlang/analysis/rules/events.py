@@ -18,7 +18,6 @@ from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Controller
 from mintlang.records import record
 from mintlang.semantic.events import Event, EventKind, event_of
 from mintlang.semantic.units import Unit
@@ -93,10 +92,7 @@ def _unavailable(event: Event, controller: ControllerProfile) -> str | None:
         return "only comms locations 1 to 5 raise an event"
     if event.kind is EventKind.CAN and number not in _CAN:
         return "there are two CAN event handlers, #CAN1 and #CAN2"
-    if event.kind is EventKind.MOVEBUFFERLOW and controller.controller not in _movebufferlow_controllers():
+    buffer_low = database().mintmt_keywords["MOVEBUFFERLOW"]
+    if event.kind is EventKind.MOVEBUFFERLOW and not buffer_low.available_on(controller.controller):
         return f"{controller.title} has no MOVEBUFFERLOW event: the note gives it to NextMove only"
     return None
-
-
-def _movebufferlow_controllers() -> frozenset[Controller]:
-    return frozenset(database().mintmt_keywords["MOVEBUFFERLOW"].controllers)

@@ -25,7 +25,7 @@ from mintlang.syntax.tokens import BYTE_ORDER_MARK
 
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
-    has_auto = model.controller.controller in database().keywords["AUTO"].controllers
+    has_auto = database().keywords["AUTO"].available_on(model.controller.controller)
     configuration = model.configuration.source if model.configuration else ""
     words = ("AUTO", "PROTECT") if has_auto else ("PROTECT",)
     texts = (model.program.source.upper(), configuration.upper())

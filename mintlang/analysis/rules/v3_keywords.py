@@ -61,7 +61,7 @@ def successor(word: str, controller: ControllerProfile) -> Successor | None:
             return Successor(detail, None, whole)
         new = rename.new[0]
         replacement = db.keywords.get(new)
-        if replacement is not None and replacement.controllers and controller.controller not in replacement.controllers:
+        if replacement is not None and not replacement.available_on(controller.controller):
             lacking = f"{detail}, which {controller.title} lacks (mint-migrate knows the alternatives)"
             return Successor(lacking, None, whole)
         if rename.old in _OTHER_JOB:

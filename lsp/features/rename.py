@@ -30,6 +30,7 @@ from mintlang.diagnostics import Span
 from mintlang.lsp import confirmation
 from mintlang.lsp.lookup import abbreviated, token_at
 from mintlang.lsp.occurrences import symbol_at, written
+from mintlang.lsp.positions import Positions
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Settings, Snapshot
 from mintlang.pairing import listed_as, names_in
@@ -158,7 +159,7 @@ def _expected(snapshot: Snapshot, symbol: Symbol) -> Iterator[Span]:
 _WHAT = re.compile(r"""(?:^|[{,])[ \t]*what[ \t]*=[ \t]*["'](?P<name>[A-Za-z_]\w*)""", re.MULTILINE)
 
 
-def _in_scenario(server: MintServer, program_uri: str, symbol: Symbol) -> tuple[str, list[types.Range]]:
+def _in_scenario(server: MintServer, program_uri: str, symbol: Symbol, encoding: str) -> tuple[str, list[types.Range]]:
     """The scenario file beside the program, and where its expectations name the variable or array ``symbol``."""
     if symbol.kind not in (SymbolKind.VARIABLE, SymbolKind.ARRAY):
         return "", []
@@ -173,14 +174,12 @@ def _in_scenario(server: MintServer, program_uri: str, symbol: Symbol) -> tuple[
         text = server.workspace.get_text_document(uri).source  # the editor's text when it is open
     except (OSError, UnicodeDecodeError):
         return uri, []
-    found = []
-    for what in _WHAT.finditer(text):
-        if identity(what["name"]) == symbol.identity:
-            start = what.start("name")
-            line, column = text.count("\n", 0, start), start - (text.rfind("\n", 0, start) + 1)
-            end = types.Position(line=line, character=column + len(what["name"]))
-            found.append(types.Range(start=types.Position(line=line, character=column), end=end))
-    return uri, found
+    positions = Positions(text, encoding)
+    return uri, [
+        positions.range(Span(what.start("name"), what.end("name")))
+        for what in _WHAT.finditer(text)
+        if identity(what["name"]) == symbol.identity
+    ]
 
 
 MERGE = "mint.mergeSpellings"
@@ -236,7 +235,7 @@ def register(server: MintServer) -> None:
             for span in _expected(snapshot, symbol):
                 edit = types.TextEdit(range=program.positions.range(span), new_text=name)
                 changes.setdefault(program.uri, []).append(edit)
-            scenario, places = _in_scenario(server, program.uri, symbol)
+            scenario, places = _in_scenario(server, program.uri, symbol, program.positions.encoding)
             for place in places:
                 changes.setdefault(scenario, []).append(types.TextEdit(range=place, new_text=name))
         spellings = _spellings(occurrences)

@@ -246,6 +246,21 @@ async def test_a_variable_is_renamed_in_the_scenario_files_inline_tables_too(cli
     assert apply(scenario, changes) == scenario.replace('what = "count"', 'what = "total"')
 
 
+async def test_the_scenario_files_edit_counts_columns_as_the_client_does(client, tmp_path):
+    """LSP columns are UTF-16 code units by default: a character outside the BMP before the name is two."""
+    scenario = 'expect = [{ terminal_contains = "\U0001d465", what = "count", equals = 3 }]\n'
+    (tmp_path / "cell.scenario.toml").write_text(scenario, encoding="utf-8")
+    text = "DIM count = 3\nPRINT count\n"
+    uri = uri_of(tmp_path / "cell.mnt")
+    await open_document(client, uri, text)
+    edit = await client.text_document_rename_async(
+        types.RenameParams(text_document=document(uri), position=position(text, "count"), new_name="total")
+    )
+    (change,) = edit.changes[uri_of(tmp_path / "cell.scenario.toml")]
+    column = scenario.index('"count"') + 1 + 1  # past the quote, and the second unit of U+1D465
+    assert (change.range.start.character, change.range.end.character) == (column, column + len("count"))
+
+
 async def test_a_refused_rename_is_an_answer_not_a_logged_fault(tmp_path):
     log = tmp_path / "server.log"
     client = LanguageClient("refusals", "1")

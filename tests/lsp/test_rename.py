@@ -217,17 +217,24 @@ SCENARIO = (
 )
 
 
+COUNTED = "DIM count = 3\nPRINT count\n"
+
+
+async def _count_renamed_beside(client, tmp_path, scenario_name: str, scenario: str) -> types.WorkspaceEdit:
+    """``count`` of ``cell.mnt`` renamed to ``total``, with ``scenario`` written beside it as ``scenario_name``."""
+    (tmp_path / scenario_name).write_text(scenario, encoding="utf-8")
+    uri = uri_of(tmp_path / "cell.mnt")
+    await open_document(client, uri, COUNTED)
+    return await client.text_document_rename_async(
+        types.RenameParams(text_document=document(uri), position=position(COUNTED, "count"), new_name="total")
+    )
+
+
 async def test_a_variable_is_renamed_in_the_scenario_file_beside_the_program(client, tmp_path):
     """``cell.scenario.toml`` beside ``cell.mnt`` is its test (README, mint test), any case; each expectation
     names what it reads in ``what`` (runtime/scenario/README.md): a keyword or the terminal's text is no name."""
-    (tmp_path / "Cell.Scenario.toml").write_text(SCENARIO, encoding="utf-8")
-    text = "DIM count = 3\nPRINT count\n"
-    uri = uri_of(tmp_path / "cell.mnt")
-    await open_document(client, uri, text)
-    edit = await client.text_document_rename_async(
-        types.RenameParams(text_document=document(uri), position=position(text, "count"), new_name="total")
-    )
-    assert apply(text, edit.changes[uri]) == "DIM total = 3\nPRINT total\n"
+    edit = await _count_renamed_beside(client, tmp_path, "Cell.Scenario.toml", SCENARIO)
+    assert apply(COUNTED, edit.changes[uri_of(tmp_path / "cell.mnt")]) == "DIM total = 3\nPRINT total\n"
     scenario = edit.changes[uri_of(tmp_path / "Cell.Scenario.toml")]
     assert apply(SCENARIO, scenario) == SCENARIO.replace('what = "count"', 'what = "total"')
 
@@ -235,13 +242,7 @@ async def test_a_variable_is_renamed_in_the_scenario_file_beside_the_program(cli
 async def test_a_variable_is_renamed_in_the_scenario_files_inline_tables_too(client, tmp_path):
     """TOML writes the same expectations as inline tables; the terminal's text still names nothing."""
     scenario = 'expect = [{ what = "count", equals = 3 }, { terminal_contains = "count", what = "POS.0" }]\n'
-    (tmp_path / "cell.scenario.toml").write_text(scenario, encoding="utf-8")
-    text = "DIM count = 3\nPRINT count\n"
-    uri = uri_of(tmp_path / "cell.mnt")
-    await open_document(client, uri, text)
-    edit = await client.text_document_rename_async(
-        types.RenameParams(text_document=document(uri), position=position(text, "count"), new_name="total")
-    )
+    edit = await _count_renamed_beside(client, tmp_path, "cell.scenario.toml", scenario)
     changes = edit.changes[uri_of(tmp_path / "cell.scenario.toml")]
     assert apply(scenario, changes) == scenario.replace('what = "count"', 'what = "total"')
 
@@ -249,13 +250,7 @@ async def test_a_variable_is_renamed_in_the_scenario_files_inline_tables_too(cli
 async def test_the_scenario_files_edit_counts_columns_as_the_client_does(client, tmp_path):
     """LSP columns are UTF-16 code units by default: a character outside the BMP before the name is two."""
     scenario = 'expect = [{ terminal_contains = "\U0001d465", what = "count", equals = 3 }]\n'
-    (tmp_path / "cell.scenario.toml").write_text(scenario, encoding="utf-8")
-    text = "DIM count = 3\nPRINT count\n"
-    uri = uri_of(tmp_path / "cell.mnt")
-    await open_document(client, uri, text)
-    edit = await client.text_document_rename_async(
-        types.RenameParams(text_document=document(uri), position=position(text, "count"), new_name="total")
-    )
+    edit = await _count_renamed_beside(client, tmp_path, "cell.scenario.toml", scenario)
     (change,) = edit.changes[uri_of(tmp_path / "cell.scenario.toml")]
     column = scenario.index('"count"') + 1 + 1  # past the quote, and the second unit of U+1D465
     assert (change.range.start.character, change.range.end.character) == (column, column + len("count"))

@@ -34,7 +34,7 @@ from mintlang.migrate.citations import cite, in_file
 from mintlang.migrate.context import MARKER, Context, FileView, LineTags, Unreadable
 from mintlang.migrate.history import Edit, History
 from mintlang.migrate.markers import manual_items
-from mintlang.migrate.model import Change, ManualItem, MigrationFailed, Phase
+from mintlang.migrate.model import Change, ManualItem, MigrationFailed, Phase, unreadable
 from mintlang.migrate.rules.base import Flag, Replace, Rule
 from mintlang.migrate.rules.manual import v3_errors
 from mintlang.records import record
@@ -168,10 +168,7 @@ def _unreadable(context: Context) -> dict[Unit, tuple[str, ...]]:
         found = v3_errors(context)
     except Unreadable as error:  # the model, built for the check
         raise _unreadable_files(error.__cause__) from error.__cause__
-    return {
-        file.unit: tuple(f"line {file.line_number(d.span.start)}: {d.code} {d.message}" for d in errors)
-        for file, errors in found
-    }
+    return {file.unit: tuple(unreadable(file.line_number(d.span.start), d) for d in errors) for file, errors in found}
 
 
 def _asked(context: Context, rules: Sequence[Rule], states: dict[Unit, _FileState]) -> dict[Unit, list[Edit]]:

@@ -12,7 +12,7 @@ from collections.abc import Mapping
 from dataclasses import field
 from enum import StrEnum
 
-from mintlang.diagnostics import Edit, Position, Span, split_lines
+from mintlang.diagnostics import Diagnostic, Edit, Position, Span, split_lines
 from mintlang.records import record
 
 
@@ -99,6 +99,11 @@ class ManualItem:
     reason: str
     original_line: int | None
     note: bool = False
+
+
+def unreadable(line: int, diagnostic: Diagnostic) -> str:
+    """One of ``MigrationResult.errors``: ``line N: code message`` (the report reads the line back)."""
+    return f"line {line}: {diagnostic.code} {diagnostic.message}"
 
 
 @record

@@ -137,7 +137,7 @@ def _failure(failure: MigrationFailed) -> dict[str, Any]:
 
 
 def _line(error: str) -> int:
-    """The line of an error of the v3 reader, which ``engine`` writes as ``line N: code message``."""
+    """The line of an error of the original's reader, written by ``model.unreadable``."""
     return int(error.removeprefix("line ").partition(":")[0])
 
 

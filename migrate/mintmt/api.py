@@ -14,7 +14,7 @@ from mintlang.migrate.mintmt import addressing, blocks, characters, comments, ev
 from mintlang.migrate.mintmt.apply import apply
 from mintlang.migrate.mintmt.source import Source
 from mintlang.migrate.mintmt.v3 import v3_uses
-from mintlang.migrate.model import MigrationFailed, MigrationResult
+from mintlang.migrate.model import MigrationFailed, MigrationResult, unreadable
 from mintlang.syntax.lines import MacroDefinition
 from mintlang.syntax.parser import Document, parse
 from mintlang.syntax.tokens import BYTE_ORDER_MARK
@@ -59,9 +59,7 @@ def _migrated(source: Source, written: str, read: Document) -> engine.FileOutcom
     outcome = apply(source, [action for rewrite in REWRITES for action in rewrite.find(source)])
     index = read.line_index
     errors = tuple(
-        f"line {index.position(d.span.start).line}: {d.code} {d.message}"
-        for d in read.diagnostics
-        if d.severity is Severity.ERROR
+        unreadable(index.position(d.span.start).line, d) for d in read.diagnostics if d.severity is Severity.ERROR
     )
     outcome = replace(outcome, errors=errors)
     mark = BYTE_ORDER_MARK if written.startswith(BYTE_ORDER_MARK) else ""

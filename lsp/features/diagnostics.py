@@ -31,9 +31,7 @@ _UNNECESSARY = frozenset({"W103", "W104", "W105", "W106"})  # unused or unreacha
 
 
 def to_lsp(diagnostic: mintlang.Diagnostic, snapshot: Snapshot) -> types.Diagnostic:
-    message = diagnostic.message
-    if diagnostic.code in OWN_CODES and not message.startswith(OWN_CODES[diagnostic.code]):
-        message = f"{OWN_CODES[diagnostic.code]}: {message}"
+    message = _titled(diagnostic.code, diagnostic.message)
     return types.Diagnostic(
         range=snapshot.positions.range(diagnostic.span),
         message=message,
@@ -43,6 +41,17 @@ def to_lsp(diagnostic: mintlang.Diagnostic, snapshot: Snapshot) -> types.Diagnos
         tags=[types.DiagnosticTag.Unnecessary] if diagnostic.code in _UNNECESSARY else None,
         code_description=_page(diagnostic.code, snapshot.settings.rules_url),
     )
+
+
+def _titled(code: str, message: str) -> str:
+    """The message led by the toolchain's title of its code, once: a message that already opens with the
+    title in another letter case (W101's 'typographic quotes: ...') has it capitalised, not repeated."""
+    title = OWN_CODES.get(code)
+    if title is None:
+        return message
+    if message.casefold().startswith(title.casefold()):
+        return title + message[len(title) :]
+    return f"{title}: {message}"
 
 
 def _page(code: str, base: str | None) -> types.CodeDescription | None:

@@ -105,11 +105,14 @@ def _rivals(table: SymbolTable, symbol: Symbol) -> list[Symbol]:
 
 
 def _clash(name: str, symbol: Symbol, other: Symbol) -> str:
-    if SymbolKind.MACRO not in (symbol.kind, other.kind) or symbol.kind is other.kind:
-        return f"'{name}' would be the same name as '{other.name}' to the controller (first ten characters count)"
     written = f"#{other.name}" if other.kind is SymbolKind.LABEL else f"'{other.name}'"
+    alike = name.upper() == other.name.upper()
+    if SymbolKind.MACRO not in (symbol.kind, other.kind) or symbol.kind is other.kind:
+        if alike:
+            return f"'{name}' is already the name of the {other.kind} {written}"
+        return f"'{name}' would be the same name as '{other.name}' to the controller (first ten characters count)"
     replaced = symbol.kind if other.kind is SymbolKind.MACRO else other.kind
-    ten = "" if name.upper() == other.name.upper() else " (the first ten characters count)"
+    ten = "" if alike else " (the first ten characters count)"
     return (
         f"'{name}' is the name of the {other.kind} {written}{ten}: the controller would put the macro's text "
         f"in place of the {replaced}'s name"

@@ -53,7 +53,8 @@ async def test_rename_an_array_and_a_label(client, tmp_path):
 @pytest.mark.parametrize(
     ("new_name", "reason"),
     [
-        ("ypos", "same name as 'ypos'"),
+        ("ypos", "'ypos' is already the name of the array 'ypos'$"),
+        ("YPOS", "'YPOS' is already the name of the array 'ypos'$"),  # the controller reads names without case
         ("SPEED", "the Mint keyword SPEED"),
         ("two words", "not a valid"),
         ("__pos", "not a valid"),  # _ begins a name only before a letter or digit (000:882-884)
@@ -338,3 +339,13 @@ async def test_a_client_without_annotations_is_asked_first(tmp_path, answer, ren
         client.exit(None)
         await client.stop()
     assert len(questions) == 1 and "are one name to the controller" in questions[0]
+
+
+async def test_a_label_renamed_to_another_labels_name_names_that_label(client, tmp_path):
+    text = "GOSUB first\nGOSUB second\nEND\n#first\nRETURN\n#second\nRETURN\n"
+    uri = uri_of(tmp_path / "labels.mnt")
+    await open_document(client, uri, text)
+    with pytest.raises(JsonRpcException, match=r"^'Second' is already the name of the label #second$"):
+        await client.text_document_rename_async(
+            types.RenameParams(text_document=document(uri), position=position(text, "first"), new_name="Second")
+        )

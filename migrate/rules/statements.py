@@ -31,7 +31,11 @@ class StatementRule(Rule):
     def apply(self, context: Context) -> Iterator[Action]:
         for file, _, statement in context.statements(*map(statement_tag, self.keywords)):
             if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in self.keywords:
-                result = self.rewrite(context, file, statement)
+                word = statement.keyword.keyword
+                if statement.values is not None and _command_in_v3(context, word):  # ZERO = 5 (E2000 in v3)
+                    result: str | Refusal | None = Refusal(f"not valid Mint v3 either: {word} is a command, no value")
+                else:
+                    result = self.rewrite(context, file, statement)
                 if isinstance(result, Refusal):
                     yield self.flag(file, statement.span, result)
                 elif result is not None:
@@ -51,6 +55,13 @@ class StatementRule(Rule):
         if context.supports(keyword):
             return None
         return Refusal(f"{keyword} is not available on {context.controller.title}")
+
+
+def _command_in_v3(context: Context, keyword: str) -> bool:
+    """Whether the v3 guide ticks ``keyword`` as a command that takes no value (ZERO, SERVOC, PON):
+    given one, the statement was already an error on the v3 controller."""
+    entry = context.db.lookup_v3(keyword)
+    return entry is not None and entry.command and not entry.write
 
 
 def fill(selector: str) -> str:

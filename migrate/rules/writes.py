@@ -22,11 +22,12 @@ def _writes(statement: n.Statement | None, keyword: str) -> n.KeywordStatement |
 
 
 class AccelAlsoDecel(Rule):
-    """In v3 writing ACCEL (ACCELTIME) also set DECEL unless AXISCON bit 0 was set, and a DECEL
-    write had no effect without that bit; in v4 the two are independent. So every ACCEL
-    write gets ``: DECEL<axes> = <same values>`` after it (unless a DECEL of the same axes
-    already follows it on the line), and any other DECEL write is flagged. A program that
-    touches AXISCON is left to the user.
+    """In v3 writing ACCEL (ACCELTIME) also set DECEL unless AXISCON bit 0 was set; in v4 the two
+    are independent. So every ACCEL write gets ``: DECEL<axes> = <same values>`` after it
+    (unless a DECEL of the same axes already follows it on the line). A DECEL write is left as
+    it is: without the bit v3 used it until the next ACCEL write overwrote it (v3:7203,
+    v3:6027), which the DECEL written beside that ACCEL does in v4. A program that touches
+    AXISCON is left to the user.
 
     The copy must compute what the ACCEL write computed. Values that read ACCEL (or
     ACCELTIME), as ``ACCEL = ACCEL * 2`` does, would read the new value after the write, so
@@ -67,26 +68,6 @@ class AccelAlsoDecel(Rule):
             if self._companion(file, accel, after):
                 continue
             yield self.replace(file, Span(accel.span.end, accel.span.end), f" : {_decel_write(file, accel, decel)}")
-        for file, before, statement, after in context.neighbours(*map(statement_tag, self.pairs.values())):
-            decel = _writes(statement, "DECEL") or _writes(statement, "DECELTIME")
-            if decel is None or decel.values is None or axiscon:
-                continue
-            if self._made_for(file, before, decel, after):
-                continue
-            yield self.flag(
-                file, decel.span, f"v3 ignored {decel.keyword.keyword} unless AXISCON bit 0 was set; v4 obeys it"
-            )
-
-    def _made_for(
-        self, file: FileView, before: n.Statement | None, decel: n.KeywordStatement, after: n.Statement | None
-    ) -> bool:
-        """Whether ``decel`` is the write this rule makes for the ACCEL beside it: right after it,
-        or right before one whose values read ACCEL."""
-        accel = _accel(before)
-        if accel is not None and not _reads(accel, self.pairs) and self._companion(file, accel, decel):
-            return True
-        accel = _accel(after)
-        return accel is not None and _reads(accel, self.pairs) and self._companion(file, accel, decel)
 
     def _companion(self, file: FileView, accel: n.KeywordStatement, beside: n.Statement | None) -> bool:
         """Whether ``beside``, the statement right after (or before) ``accel`` on its line, writes the same axes' DECEL.

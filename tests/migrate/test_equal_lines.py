@@ -36,8 +36,6 @@ _REWRITES = [
 ]
 
 _FLAGS = [
-    pytest.param("S-ACCEL", "DECEL = 300\n", id="decel-alone"),
-    pytest.param("S-ACCEL", "SPEED = 5 : DECEL = 5\n", id="decel-after-another-write"),
     pytest.param("S-MODE", "x = MODE\n", id="mode-value"),
     pytest.param("X-ERR", "IF (ERR) >= 10 THEN x = 1\n", id="err-compared"),
 ]

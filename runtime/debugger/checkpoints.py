@@ -44,7 +44,7 @@ class Checkpoint:
     count: int  # points tried before it: the first point a run from it reaches
     ticks: int  # ticks processed before it
     writes: int  # the program's writes to the terminal before it
-    blocked: tuple[int, int] | None  # (pc, depth) of the statement that blocked last, if it did
+    blocked: tuple[int | None, ...]  # by frame depth: the statement waiting there, if one is
     hits: Mapping[tuple[object, ...], int]  # each breakpoint's hit count, by what makes it the same breakpoint
     state: Snapshot
     passed: set[int] = field(default_factory=set)  # the statements (pcs) tried in its stretch, not as retries

@@ -79,6 +79,13 @@ class _Abandoned(Interrupt):
     """Ends the run now: a re-run replaces it, or the session ends."""
 
 
+def _waiting(blocked: tuple[int | None, ...], depth: int, pc: int | None) -> tuple[int | None, ...]:
+    """``blocked`` once the statement at ``depth`` has run, ``pc`` if it blocked: the frames above it have
+    returned, the ones below it (a PAUSE an event handler interrupted) still wait where they were."""
+    below = blocked[:depth] + (None,) * (depth - len(blocked))
+    return (*below, pc)
+
+
 class Execution:
     """Runs ``application`` under ``breakpoints`` and reports to ``listener``."""
 
@@ -101,7 +108,9 @@ class Execution:
         self._count = 0
         self._writes = 0
         self._logged_from = 0
-        self._blocked: tuple[int, int] | None = None  # (pc, depth) of the statement that blocked last
+        # By frame depth (GOSUBs and handlers open): the statement blocked there, if one is. An event handler
+        # that runs while a PAUSE or WAIT waits must not make its next try a new pass over it.
+        self._blocked: tuple[int | None, ...] = ()
         self._recent: deque[_Recent] = deque(maxlen=RECENT)  # this run's last points where stepping may stop
         self._checkpoints: Checkpoints | None = Checkpoints()  # None once the state cannot be saved
         self._simulator: Simulator | None = None  # while a run goes, to take it back
@@ -209,7 +218,7 @@ class Execution:
         self._count = 0
         self._writes = 0
         self._logged_from = self.timeline.points_reached  # log messages at earlier points were shown before
-        self._blocked = None
+        self._blocked = ()
         self._recent.clear()
         self._ticks = 0
         self._serial = -1
@@ -322,7 +331,7 @@ class Execution:
                 if ERRORS in self.exception_filters and isinstance(self._plan, Forward):
                     self._stop(point, "exception", error.describe())
                 raise
-            self._blocked = (pc, point.depth) if blocked else None
+            self._blocked = _waiting(self._blocked, point.depth, pc if blocked else None)
             plan = self._plan
             if blocked and isinstance(plan, Forward) and plan.wake is not None:  # try it again when the plan ends
                 vm.wake_at = min(vm.wake_at, max(plan.wake, vm.clock.now + 1))
@@ -335,7 +344,8 @@ class Execution:
         controller = self.controller
         assert controller is not None and self.evaluator is not None
         depth = len(controller.vm.frames)
-        point = Point(self._count, pc, depth, self._blocked == (pc, depth), controller.clock.now)
+        resumed = depth < len(self._blocked) and self._blocked[depth] == pc
+        point = Point(self._count, pc, depth, resumed, controller.clock.now)
         self._count += 1
         self.timeline.reach(point.count)
         for intervention in self.timeline.due(point.count):

@@ -115,6 +115,8 @@ class Events:
         self.errors_latched: Callable[[], bool] = lambda: False
         self.on_fastin_return: Callable[[int], None] = lambda number: None
         self.disabled: frozenset[EventClass] = frozenset()  # EVENTDISABLE / HANDLERDISABLE
+        self.disabled_unmodelled = 0  # bits written to that mask for handlers not simulated (NextMove's serial event)
+        self.inputs_set_unhandled = 0  # IPEND bits written for inputs without an #INx: set until written clear
         self.imask = 0  # IMASK, one bit per input of the controller: those that may raise #INx
         self._pending: dict[EventClass, set[int]] = {kind: set() for kind in EventClass}
         self.pending = 0  # the pending mask (EVENTPENDING or HANDLERPENDING); non-zero when anything may be dispatched
@@ -255,14 +257,18 @@ class Events:
         table.register("IMASK", read=lambda _: float(self.banks.inputs(self.imask)), write=per_channel(mask))
         ipend = ranged("IPEND", controller, self._ipend)
         table.register(
-            "IPEND", read=lambda _: float(self.banks.inputs(self._pending_inputs())), write=per_channel(ipend)
+            "IPEND",
+            read=lambda _: float(self.banks.inputs(self._pending_inputs() | self.inputs_set_unhandled)),
+            write=per_channel(ipend),
         )
         timer = ranged("TIMEREVENT", controller, self._timer)
         table.register("TIMEREVENT", read=lambda _: float(self.timer_period), write=per_channel(timer))
         self.set_timer(table_default("TIMEREVENT", controller) or 0.0)  # at power-up: 10000 ms on MintDrive
 
     def _disabled_mask(self, dispatch: Dispatch) -> Callable[[int | None], float]:
-        return lambda _: float(sum(bit for kind, bit in dispatch.bits.items() if kind in self.disabled))
+        """The mask as written: a bit for a handler the run does not simulate reads back too (000:10137, 10140)."""
+        bits = dispatch.bits.items()
+        return lambda _: float(sum((bit for kind, bit in bits if kind in self.disabled), self.disabled_unmodelled))
 
     def _pending_mask(self, dispatch: Dispatch) -> Callable[[int | None], float]:
         return lambda _: float(sum(bit for kind, bit in dispatch.bits.items() if self._pending[kind]))
@@ -278,6 +284,7 @@ class Events:
         def write(_: int | None, value: float) -> None:
             bits = int(value)
             self.disabled = frozenset(kind for kind, bit in dispatch.bits.items() if bits & bit)
+            self.disabled_unmodelled = bits & ~sum(dispatch.bits.values())
 
         return write
 
@@ -303,8 +310,13 @@ class Events:
         return sum(1 << number for number in self._pending[EventClass.INPUT])
 
     def _ipend(self, _: int | None, value: float) -> None:
-        pending = self.banks.with_inputs(self._pending_inputs(), int(value))
-        self._pending[EventClass.INPUT] = {number for number in range(pending.bit_length()) if pending >> number & 1}
+        """Writing IPEND sets or clears each input's pending bit. A bit set for an input with no #INx handler
+        calls nothing and stays set until written clear (000:12621-12623); the others are events to dispatch."""
+        pending = self.banks.with_inputs(self._pending_inputs() | self.inputs_set_unhandled, int(value))
+        numbers = {number for number in range(pending.bit_length()) if pending >> number & 1}
+        handled = {number for number in numbers if self.has_handler(EventClass.INPUT, number)}
+        self._pending[EventClass.INPUT] = handled
+        self.inputs_set_unhandled = sum(1 << number for number in numbers - handled)
         self._refresh()
 
     def _timer(self, _: int | None, value: float) -> None:

@@ -9,6 +9,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from mintlang.comms_map import system_element
+from mintlang.controllers import ChannelRange, profile
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.comms.array import CommsArray
 from mintlang.runtime.errors import MintError
@@ -16,10 +17,11 @@ from mintlang.runtime.interpreter.line_trace import LineTrace
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.keywords import Channels, KeywordTable, per_channel
 from mintlang.runtime.motion.axis import Axis
+from mintlang.runtime.motion.commands import channel_range, check_channel
 from mintlang.runtime.ranges import check_range, ranged, table_bounds
 from mintlang.runtime.terminal import Terminal
 
-TIME_LIMIT = 16_777_216  # TIME wraps after 16777215 (T-7 RC)
+TIME_LIMIT = 16_777_216  # TIME wraps after 16777215 (T-7 RC), where its table gives no range
 DEFAULT_NODE = 2
 BUILD_NUMBER = 0.0  # COMMS(239): the simulator has no firmware build
 INVALID_CHANNEL = 4
@@ -59,9 +61,12 @@ class System:
         self.fast_auxiliary: list[float] = [0.0] * auxiliary_encoders  # FASTAUXENCODER
         self.auxiliary_bounds = table_bounds("AUXENCODER", table.controller)  # AUXENCODERSCALE is 1: counts
         self.fast_armed = True
+        # TIME counts to the top of its range and wraps: 16777215 on NextMove, 65535 on MintDrive (000:16746-16747)
+        top = table_bounds("TIME", table.controller).maximum
+        self.time_limit = int(top) + 1 if top is not None else TIME_LIMIT
 
     def time(self) -> int:
-        return (self.clock.now - self.time_origin) % TIME_LIMIT
+        return (self.clock.now - self.time_origin) % self.time_limit
 
     def register(self, table: KeywordTable) -> None:
         clock = self.clock
@@ -89,7 +94,8 @@ class System:
         table.register("NODE", read=lambda _: float(self.node), write=per_channel(self._write_node))
         table.register("COMMS", read=lambda channel: self.comms.read(channel or 0), write=self._write_comms)
         table.register("FASTPOS", read=self._fastpos)
-        table.register("FASTENCODER", read=self._fastencoder)
+        encoders = channel_range("FASTENCODER", profile(table.controller))
+        table.register("FASTENCODER", read=lambda ch: self._fastencoder(ch, encoders))
         table.register("AUXENCODER", read=self.auxiliary_encoder, write=per_channel(self._write_auxiliary))
         table.register("FASTAUXENCODER", read=lambda channel: self.fast_auxiliary[self._auxiliary(channel)])
 
@@ -175,8 +181,10 @@ class System:
         axis = self.axes[number]
         return self.fast_positions[number] / axis.scale
 
-    def _fastencoder(self, channel: int | None) -> float:
+    def _fastencoder(self, channel: int | None, encoders: ChannelRange | None) -> float:
         """The encoder latched, in the units ENCODERSCALE gives (000:10391-10392), as FASTPOS is in SCALE's."""
+        if encoders is not None:
+            check_channel("FASTENCODER", channel or 0, encoders)
         number = self._axis(channel)
         return self.fast_encoders[number] / self.axes[number].parameters["ENCODERSCALE"]
 

@@ -10,7 +10,8 @@ import math
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
-from mintlang.controllers import ControllerProfile
+from mintlang.analysis.rules.addressing import addressed
+from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.keyworddb.model import Controller
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.errors import MintError, NotSimulated
@@ -38,6 +39,7 @@ if TYPE_CHECKING:  # master.py builds on this module
     from mintlang.runtime.motion.master import MasterSettings
 
 INVALID_AXIS = 2
+INVALID_CHANNEL = 4
 WRONG_CONFIGURATION = 11
 SMART_SOFT_LIMITS = 4
 CONFIG_OFF = 0
@@ -55,6 +57,19 @@ _SWITCHES: dict[str, tuple[str, ...]] = {
 MISSING_PARAMETER = 2001
 TOO_MANY_VALUES = 2017
 SAME_AXIS_TWICE = 2018
+
+
+def channel_range(keyword: str, profile: ControllerProfile) -> ChannelRange | None:
+    """The channels ``keyword``'s dot numbers when they are an encoder's or a DAC's rather than an axis's."""
+    found = addressed(keyword, profile)
+    return found[1] if found is not None and found[0] == "channel" else None
+
+
+def check_channel(keyword: str, number: int, valid: ChannelRange) -> None:
+    """A channel the controller lacks is error 4 (000:18522-18525), as ``mint check`` says, even where an axis has
+    that number: a NextMove BX has 8 axes but encoder and DAC channels 0 to 3 (000:5613, 5621, 5624)."""
+    if number not in valid:
+        raise MintError(INVALID_CHANNEL, number, f"{keyword} channels: {valid}")
 
 
 class Motion:
@@ -87,6 +102,18 @@ class Motion:
         if not 0 <= number < len(self.axes):
             raise MintError(INVALID_AXIS, number, f"axes are 0 to {len(self.axes) - 1}")
         return self.axes[number]
+
+    def addressing(self, keyword: str) -> Callable[[int | None], Axis]:
+        """The axis ``keyword.n`` acts on: axis n, or for an encoder or DAC keyword the axis of channel n."""
+        valid = channel_range(keyword, self.profile)
+        if valid is None:
+            return self.axis
+
+        def channel_axis(channel: int | None) -> Axis:
+            check_channel(keyword, 0 if channel is None else channel, valid)
+            return self.axis(channel)
+
+        return channel_axis
 
     def _too_many(self, channels: Channels | None) -> None:
         """More axes than the controller has is 2017 (000:19047-19052: SPEED[0,1,3] on a single axis controller)."""
@@ -375,9 +402,12 @@ class Motion:
         enable = ranged("DRIVEENABLE", self.profile.controller, self._enable)
         table.register("DRIVEENABLE", read=lambda ch: float(self.axis(ch).enabled), write=per_channel(enable))
         table.register("POS", read=self._pos, write=per_channel(self._write_pos))
-        table.register("ENCODER", read=self._encoder, write=per_channel(self._write_encoder))
+        encoder = self.addressing("ENCODER")
+        write_encoder = per_channel(lambda channel, value: self._write_encoder(encoder(channel), value))
+        table.register("ENCODER", read=lambda ch: self._encoder(encoder(ch)), write=write_encoder)
         table.register("VEL", read=self._vel)
-        table.register("ENCODERVEL", read=self._encoder_velocity)
+        velocity = self.addressing("ENCODERVEL")
+        table.register("ENCODERVEL", read=lambda ch: self._encoder_velocity(velocity(ch)))
         table.register("FOLERROR", read=self._folerror)
         table.register("AXISMODE", read=lambda ch: float(self.watched(self.axis(ch)).axismode))
         table.register("AXISERROR", read=lambda ch: float(self.axis(ch).axiserror))
@@ -386,8 +416,9 @@ class Motion:
         table.register("POSTARGET", read=self._postarget)
         table.register("POSREMAINING", read=self._posremaining)
         table.register("MOVEBUFFERFREE", read=lambda ch: float(self.watched(self.axis(ch)).buffer_free()))
-        dac = per_channel(self._dac)
-        table.register("DAC", read=lambda ch: self.watched(self.axis(ch), moving=True).dac, write=dac)
+        dac_axis = self.addressing("DAC")
+        dac = per_channel(lambda channel, value: self._dac(dac_axis(channel), value))
+        table.register("DAC", read=lambda ch: self.watched(dac_axis(ch), moving=True).dac, write=dac)
 
     def _switch(self, inputs: tuple[str, ...]) -> Callable[[int | None], float]:
         """LIMIT, LIMITFORWARD, STOPSWITCH ...: whether an assigned input is active (0 when none is assigned)."""
@@ -423,9 +454,8 @@ class Motion:
         p = self.axis(channel).parameters
         return 1000.0 * p["SPEED"] / p["DECEL"]
 
-    def _dac(self, channel: int | None, value: float) -> None:
+    def _dac(self, axis: Axis, value: float) -> None:
         """DAC = v drives the output directly, only on an axis configured off (SL-11)."""
-        axis = self.axis(channel)
         if axis.parameters["CONFIG"] != CONFIG_OFF:
             raise MintError(WRONG_CONFIGURATION, axis.number, "DAC can be written only when CONFIG is _cfOFF")
         if not -100.0 <= value <= 100.0:
@@ -463,11 +493,14 @@ class Motion:
         return axis
 
     def _parameter_reader(self, name: str) -> Callable[[int | None], float]:
-        return lambda channel: self.axis(channel).get(name)
+        addressing = self.addressing(name)
+        return lambda channel: addressing(channel).get(name)
 
     def _parameter_writer(self, name: str) -> Callable[[int | None, float], None]:
+        addressing = self.addressing(name)
+
         def write(channel: int | None, value: float) -> None:
-            axis = self.axis(channel)
+            axis = addressing(channel)
             if name == "SOFTLIMITMODE" and value == SMART_SOFT_LIMITS:
                 raise NotSimulated("SOFTLIMITMODE", "smart mode 4")
             if name == "CONFIG":  # it calls DEFAULT for its axis; a value it refuses resets nothing (000:8481-8483)
@@ -512,26 +545,25 @@ class Motion:
             raise MintError(MOTION_IN_PROGRESS, axis.number, "POS can only be written on an idle axis")
         axis.position_offset = axis.measured - value * axis.scale
 
-    def _encoder(self, channel: int | None) -> float:
+    def _encoder(self, axis: Axis) -> float:
         """The encoder's count, within 0 to ENCODERWRAP - 1 when a wrap is set (000:9813-9826), in the units
         ENCODERSCALE gives (000:9731-9735); the wrap, which its table does not mark scaled, is in counts."""
-        axis = self.watched(self.axis(channel), moving=True)
+        self.watched(axis, moving=True)
         counts = axis.measured - axis.encoder_offset
         wrap = axis.parameters["ENCODERWRAP"]
         return (counts % wrap if wrap > 0 else counts) / axis.parameters["ENCODERSCALE"]
 
-    def _write_encoder(self, channel: int | None, value: float) -> None:
+    def _write_encoder(self, axis: Axis, value: float) -> None:
         """ENCODER = v in ENCODERSCALE's units; the range is for the counts it makes, as the scale factor
         affects the encoder's range (000:9626-9627)."""
-        axis = self.axis(channel)
         scale = axis.parameters["ENCODERSCALE"]
         check_range("ENCODER", value, table_bounds("ENCODER", self.profile.controller), axis.number, scale)
         axis.encoder_offset = axis.measured - value * scale
 
-    def _encoder_velocity(self, channel: int | None) -> float:
+    def _encoder_velocity(self, axis: Axis) -> float:
         """ENCODERVEL: the encoder's speed in ENCODERSCALE's units per second (000:9774-9776), measured as VEL
         is, over its 2 ms sample (AX-4)."""
-        axis = self.watched(self.axis(channel), moving=True)
+        self.watched(axis, moving=True)
         return axis.velocity_counts() / axis.parameters["ENCODERSCALE"]
 
     def _vel(self, channel: int | None) -> float:

@@ -69,6 +69,17 @@ async def test_an_undeclared_array_is_declared_with_as_many_elements_as_its_larg
     )
 
 
+async def test_an_array_also_indexed_by_a_computed_index_is_left_for_its_author_to_size(client, tmp_path):
+    # DIM vals(3) would hold vals(1) to vals(3) only (000:1068-1075): the loop's vals(4) would stop the run with
+    # 2016, Invalid index; so no size is guessed, as when no index is a number
+    text = "FOR i = 1 TO 5\n  vals(i) = i * 10\nNEXT\nPRINT vals(3)\n"
+    uri = uri_of(tmp_path / "loop.mnt")
+    diagnostics = await open_document(client, uri, text)
+    for line in (1, 3):
+        offered = await fixes(client, uri, diagnostics, line)
+        assert not [title for title in offered if title.startswith("Declare 'vals")]
+
+
 async def test_a_fix_shared_by_several_diagnostics_is_offered_once(client, tmp_path):
     # box is undeclared on three lines: one DIM declares it for all three
     text = "FOR box = 1 TO 4\n  MOVEA.0 = box * 250\n  PRINT box\nNEXT\n"

@@ -216,7 +216,7 @@ def _add_dim(  # noqa: PLR0917 - the name, where it is used, and what is known o
     the file's first statement (its opening remarks stay first, and an AUTO or PROTECT that opens the
     file stays first too). A DIM list continued over lines stays whole either way. A name written with
     an index is an array, whose DIM needs its size: the largest index written as a number (the elements
-    count from 1); None when no index is a number, as the size is then the author's to choose, and None
+    count from 1); None when an index is computed, as the size is then the author's to choose, and None
     for a name a function takes where its format writes an array (CAMTABLE's position array,
     ``given_as_arrays``): a DIM without a size would make a plain variable of it.
     """
@@ -251,13 +251,18 @@ def _add_dim(  # noqa: PLR0917 - the name, where it is used, and what is known o
 
 
 def _largest_index(model: SemanticModel, symbol: Symbol) -> int | None:
-    """The largest whole number an array is indexed with anywhere in the application (None: no number)."""
-    numbers = [
-        element.index.value
+    """The largest whole number an array is indexed with anywhere in the application; None when no index is
+    a number, and None when one is computed (``vals(i)`` in a FOR loop): a size read off the numbers alone
+    would be too small for it, and the fixed program would stop with 2016 (Invalid index) when it runs."""
+    indexes = [
+        element.index
         for facts in model.lines.facts()
         for element in facts.elements
-        if element.name.identity == symbol.identity and type(element.index) is n.Number
+        if element.name.identity == symbol.identity
     ]
+    numbers = [index.value for index in indexes if type(index) is n.Number]
+    if len(numbers) < len(indexes):
+        return None
     whole = [int(number) for number in numbers if number == int(number) and number >= 1]
     return max(whole, default=None)
 

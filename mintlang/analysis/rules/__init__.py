@@ -25,6 +25,7 @@ from mintlang.analysis.rules import (
     empty_values,
     events,
     flow,
+    function_domains,
     functions,
     hints,
     keyword_usage,
@@ -112,6 +113,12 @@ RULES: tuple[Rule, ...] = (
         each_line=functions.each_line,
         dialects=frozenset({Dialect.V4}),  # MintMT's MOVER(0) is no call
         looks_at=LineParts(calls=True),  # a function written as a statement is one of the line's calls
+    ),
+    Rule(
+        "function-domains",
+        each_line=function_domains.each_line,
+        dialects=frozenset({Dialect.V4, Dialect.MINTMT}),  # Mint v3 has none of these functions
+        looks_at=LineParts(calls=True),
     ),
     Rule(
         "v3-access",

@@ -41,14 +41,15 @@ GROUP = Group(
             "(`SCALE = -3`, `KPROP.0 = -1`), or a mode keyword's value its table does not list (`HOME.0 = 5`). "
             "For a scaled keyword the range applies after the scale factor, known only when the program runs; "
             "as the factor is always positive, only a sign no factor can mend is reported (`SPEED = -5`, "
-            "`ACCEL = 0`).",
+            "`ACCEL = 0`). Also a constant given to ACOS or ASIN outside -1 to 1, or to LOG that is not "
+            "above 0 (`ACOS(2)`, `LOG(0)`): those functions have no answer there.",
             why="The controller raises the error when the line runs and stops the program (or calls "
             "#ONERROR); the parameter keeps its old value.",
             example=Example(
                 before="KPROP.0 = -1\n",
                 after="KPROP.0 = 1\n",
             ),
-            manual=("v4:18518", "v4:4611", "v4:5586"),
+            manual=("v4:18518", "v4:4611", "v4:5586", "v4:6279", "v4:13723"),
             fix="The right value comes from the machine, not from the program.",
             safety=FixSafety.NONE,
         ),

@@ -267,7 +267,7 @@ class Events:
 
     def _disabled_mask(self, dispatch: Dispatch) -> Callable[[int | None], float]:
         """The mask as written: a bit for a handler the run does not simulate reads back too (000:10137, 10140)."""
-        bits = dispatch.bits.items()
+        bits = tuple(dispatch.bits.items())  # a dict view in a closure is no state a snapshot can save
         return lambda _: float(sum((bit for kind, bit in bits if kind in self.disabled), self.disabled_unmodelled))
 
     def _pending_mask(self, dispatch: Dispatch) -> Callable[[int | None], float]:

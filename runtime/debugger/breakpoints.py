@@ -2,8 +2,8 @@
 whether a point hits one.
 
 A breakpoint binds to the first statement of its line, or of the next line
-holding a statement (a comment, a label or a blank line runs nothing): it
-stops each time that first statement is about to run, so once per pass over
+holding a statement (a comment, a label, a blank line or a MintMT ``Event`` or
+``Startup`` line runs nothing): it stops each time that first statement is about to run, so once per pass over
 a line like ``a = 1 : b = 2``, and not again while a blocked statement waits. Its condition is a Mint
 expression (true when non-zero); its hit condition counts the times the
 condition held since it was set, and going back takes the count back with the
@@ -100,7 +100,8 @@ class Breakpoints:
         self.by_pc: dict[int, Breakpoint] = {}
         self.first_of_line: dict[tuple[str, int], int] = {}  # (unit, line) -> pc of its first statement
         for pc, site in enumerate(self.sites):
-            self.first_of_line.setdefault((site.unit, site.line), pc)
+            if not site.declares:
+                self.first_of_line.setdefault((site.unit, site.line), pc)
 
     def replace(self, unit: str, requests: Iterable[Mapping[str, Any]]) -> list[Breakpoint]:
         """The breakpoints of one file, as ``setBreakpoints`` gives them all at once."""

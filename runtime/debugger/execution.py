@@ -318,7 +318,10 @@ class Execution:
         self.evaluator = Evaluator(controller, self.application.dialect)
         self.breakpoints.start_run()
         vm = controller.vm
-        vm.operations[:] = [self._watched(pc, operation) for pc, operation in enumerate(vm.operations)]
+        vm.operations[:] = [  # the step over a MintMT Event or Startup block is no statement to stop at
+            operation if site.declares else self._watched(pc, operation)
+            for pc, (operation, site) in enumerate(zip(vm.operations, vm.sites, strict=True))
+        ]
 
     def _watched(self, pc: int, operation: Operation) -> Operation:
         vm = self.controller.vm  # type: ignore[union-attr]

@@ -82,7 +82,7 @@ def link(
                 statements.append(statement)
                 vm.pure.append(is_pure(statement, semantics.functions))
                 written = text[statement.span.start : statement.span.end].strip()
-                vm.sites.append(Site(unit.value, line.number, written, type(statement).__name__))
+                vm.sites.append(Site(unit.value, line.number, written, type(statement).__name__, _declares(statement)))
     vm.compiled_loops[:] = [None] * len(vm.operations)
     for (unit, _), (positions, *_) in zip(units, layouts, strict=True):
         endw_as_its_while(vm.pure, model.structures[unit].blocks, positions)
@@ -96,6 +96,11 @@ def link(
         for pc, ends in _elses(model.structures[unit].blocks, positions).items()
     }
     return Linked(handlers.get(Unit.PROGRAM, {}), handlers.get(Unit.CONFIGURATION, {}), names, event_block_ends, elses)
+
+
+def _declares(statement: n.Statement) -> bool:
+    """Whether ``statement`` opens a MintMT Event or Startup block (``Site.declares``)."""
+    return type(statement) is n.EventBlock or (type(statement) is n.BlockWord and statement.word == "STARTUP")
 
 
 def _compiled(compiler: StatementCompiler, statement: n.Statement, place: Place, pc: int) -> Operation:

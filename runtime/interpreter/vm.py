@@ -43,6 +43,9 @@ class Site:
     line: int
     text: str  # the statement as written
     kind: str = ""  # the statement's syntax node (IfDo, Pause …): coverage tells branches by it
+    # A MintMT Event or Startup line: the controller enters its block; the code around it only steps over it
+    # (MT-7), so it is no statement a reader sees run, stops at or covers, as a v4 label line holds none.
+    declares: bool = False
 
 
 @record(frozen=False)

@@ -33,11 +33,6 @@ OUTCOMES: Mapping[str, tuple[str, str]] = {
 }
 
 
-# Statements that declare rather than run: a MintMT Event line is entered by its event, never run itself
-# (the main flow only steps over it), as a v4 label line holds no statement to count.
-_DECLARATIONS = frozenset({"EventBlock"})
-
-
 @record
 class Branch:
     line: int
@@ -134,7 +129,7 @@ class Recorder:
         ran = self._ran_as_written(controller)
         found = []
         for unit, path in self.files.items():
-            pcs = [pc for pc, site in enumerate(sites) if site.unit == unit and site.kind not in _DECLARATIONS]
+            pcs = [pc for pc, site in enumerate(sites) if site.unit == unit and not site.declares]
             lines: dict[int, int] = {}
             for pc in pcs:
                 lines[sites[pc].line] = max(lines.get(sites[pc].line, 0), ran[pc])

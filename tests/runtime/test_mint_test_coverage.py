@@ -100,6 +100,14 @@ def test_a_mintmt_event_line_is_a_declaration_not_a_line_to_run(tmp_path: Path) 
     assert lines == ["DA:3,1", "DA:4,1", "DA:5,1", "DA:7,1", "DA:8,1", "LF:5", "LH:5"]
 
 
+def test_a_mintmt_startup_line_is_a_declaration_not_a_line_to_run(tmp_path: Path) -> None:
+    # The Startup block (lines 6-7) runs first, at power-up (004:128-133), then the program from line 2 to its
+    # End (line 4); the Startup line (5) is entered by the controller and never run, so it is no line to cover.
+    program = "' @expect OUT = 2\nDim n\nn = 1\nEnd\nStartup\n  OUTX(1) = 1\nEnd Startup\n"
+    lines = _records(tmp_path, program, ("DA:", "L"), "--dialect", "mintmt")
+    assert lines == ["DA:2,1", "DA:3,1", "DA:4,1", "DA:6,1", "DA:7,1", "LF:5", "LH:5"]
+
+
 def test_the_line_that_raises_the_error_ending_the_run_ran(tmp_path: Path) -> None:
     # Line 3 indexes outside a(3): the run stops there with R2016, so line 3 ran once and END (line 4) never.
     lines = _records(tmp_path, "REM @expect stopped error\nDIM a(3)\na(5) = 1\nEND\n", ("DA:", "L"))

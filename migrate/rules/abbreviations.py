@@ -18,14 +18,17 @@ from mintlang.migrate.context import Context
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.migrate.rules.spelling import like
-from mintlang.syntax.tokens import WORDS
+from mintlang.syntax.tokens import WORDS, TokenKind
 from mintlang.syntax.vocabulary import vocabulary
+
+_JUMPS = frozenset({TokenKind.GOSUB, TokenKind.GOTO})
 
 
 class ExpandAbbreviations(Rule):
     """A v3 abbreviation (``MA``, ``SP``, ``DE``, ``I3``, ``A1``) becomes the full v3 name.
 
-    Symbols (``?``, ``&``, ``|``, ``!``, ``%``) mean the same in v4 and stay.
+    Symbols (``?``, ``&``, ``|``, ``!``, ``%``) mean the same in v4 and stay. A word after GOSUB
+    or GOTO names a label (``GOSUB ma`` jumps to ``#ma``) and stays as written, as the label does.
     """
 
     id = "M-ABBR"
@@ -41,8 +44,10 @@ class ExpandAbbreviations(Rule):
         for file in context.files.values():
             for offset, line in file.document.physical:
                 line_text = line.text
+                before = None
                 for kind, start, end in zip(line.kinds, line.starts, line.ends, strict=True):
-                    if kind not in WORDS:
+                    jumped_to, before = before in _JUMPS, kind
+                    if kind not in WORDS or jumped_to:  # GOSUB ma names the label #ma, not MOVEA
                         continue
                     text = line_text[start:end]
                     if not text.isalnum():

@@ -30,6 +30,16 @@ def _wrapped(statement: n.Statement, node: n.Expression, operator: str, number: 
     )
 
 
+def _bracketed(statement: n.Statement, node: n.Expression, text: str) -> str:
+    """``(text)``, the rewrite of ``node``; the operand of a call written without brackets (``ABS SIN 200``)
+    gets a second pair: the call takes the first as its own (``ABS (SIN(200) * 1000)`` is read as ``ABS(...)``),
+    so ``_wrapped`` would not find the rewrite on the next pass and would multiply it again."""
+    parent = parent_of(statement, node)
+    if isinstance(parent, n.Call) and not parent.bracketed:
+        return f"(({text}))"
+    return f"({text})"
+
+
 def _expressions(context: Context, *wanted: object) -> Iterator[tuple[object, n.Statement, n.Expression]]:
     """Every expression of the lines with one of the ``wanted`` tags, with its statement."""
     for file, _, statement in context.statements(*wanted):
@@ -60,7 +70,7 @@ class Trigonometry(Rule):
             if not node.bracketed:
                 argument = node.arguments[0]
                 text = f"{node.spelling}({file.slice(argument.span)})"  # type: ignore[attr-defined]
-            yield self.replace(file, node.span, f"({text} * 1000)")  # type: ignore[arg-type]
+            yield self.replace(file, node.span, _bracketed(statement, node, f"{text} * 1000"))  # type: ignore[arg-type]
 
 
 class ByteToggle(Rule):
@@ -78,7 +88,8 @@ class ByteToggle(Rule):
             if not isinstance(node, n.Unary) or node.operator != "~":
                 continue
             if not _wrapped(statement, node, "AND", 255):
-                yield self.replace(file, node.span, f"({file.slice(node.span)} & 255)")  # type: ignore[attr-defined]
+                text = f"{file.slice(node.span)} & 255"  # type: ignore[attr-defined]
+                yield self.replace(file, node.span, _bracketed(statement, node, text))  # type: ignore[arg-type]
 
 
 class Precedence(Rule):

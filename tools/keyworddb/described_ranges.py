@@ -2,9 +2,12 @@
 
 Three shapes of text stand in for a printed range in the v4 guide:
 
-- a table of ranges per LOOPTIME (MintDrive DECEL, ERRORDECEL, HOMESPEED, JOG, SPEED;
-  000:8893-8897, 11616-11620): any row's range may be in force, so the row takes their
-  widest span (a scaled keyword is checked by sign only, which the rows agree on);
+- a table of ranges per LOOPTIME (ACCEL, DECEL, ERRORDECEL, HOMESPEED, JOG, SPEED;
+  000:6169-6175, 8893-8897, 11616-11620): any row's range may be in force, so it takes their
+  widest span (a scaled keyword is checked by sign only, which the rows agree on). The
+  sentence above the table names the controllers it holds for, "MintDrive and ServoNode 51",
+  whatever the rows say: ACCEL's one row is "All" with NextMove's range, and the others have a
+  MintDrive row and none for ServoNode 51;
 - a bit mask built from the entry's table of constants (TERMINAL, whose entry calls it a bit mask,
   000:16695-16706): every combination of the documented bits, and nothing above them;
 - a table of valid baud rates (SERIALBAUD, 000:15859-15863): the rates its rows list. The
@@ -18,13 +21,14 @@ import re
 from collections.abc import Iterable, Mapping
 from dataclasses import replace
 
-from mintlang.keyworddb.model import Attributes, Constant, Keyword, ValueRange
-from tools.keyworddb.attributes import parse_range
+from mintlang.keyworddb.model import Attributes, Constant, Controller, Keyword, ValueRange
+from tools.keyworddb.attributes import controllers_of_label, parse_range
 from tools.keyworddb.entries import Entry, EntryKind, v4_entries
 from tools.keyworddb.seeds import Seed
 from tools.keyworddb.v4_keywords import canonical_name
 
 _DEFERRED = re.compile(r"^see\b", re.IGNORECASE)
+_LOOPTIME_SENTENCE = re.compile(r"^On (?P<label>.+?) the range depends upon\b.*\bLOOPTIME\b")
 _LOOPTIME_ROW = re.compile(r"^(?:500|1000|2000) (?P<range>-?\d.*≤ x ≤ .+)$")
 _BAUD_HEADER = re.compile(r"^Baud Rate\b")
 _BAUD_ROW = re.compile(r"^(?P<rate>\d{4,6})\b")
@@ -42,6 +46,35 @@ def _looptime_range(entry: Entry, seed: Seed) -> ValueRange | None:
     high = max(row.maximum for row in rows if row.maximum is not None)
     text = f"{low:.15g} ≤ x ≤ {high:.15g} over the LOOPTIME settings"
     return ValueRange(text, low, high, fractional=any(row.fractional for row in rows))
+
+
+def _looptime_controllers(keyword: Keyword, entry: Entry, seed: Seed) -> tuple[Controller, ...]:
+    """The controllers the sentence introducing the LOOPTIME table names."""
+    for line in _lines(entry, seed):
+        if match := _LOOPTIME_SENTENCE.match(line):
+            return controllers_of_label(match["label"], keyword.controllers)
+    return ()
+
+
+def _looptime_rows(
+    rows: tuple[Attributes, ...], named: tuple[Controller, ...], described: ValueRange
+) -> list[Attributes]:
+    """The rows with the LOOPTIME range for the ``named`` controllers: a row naming others too is split,
+    and a named controller no row lists joins the first row given the range."""
+    result: list[Attributes] = []
+    for row in rows:
+        inside = tuple(c for c in row.controllers if c in named)
+        outside = tuple(c for c in row.controllers if c not in named)
+        if inside and outside:
+            result += [replace(row, controllers=outside), replace(row, controllers=inside, range=described)]
+        else:
+            result.append(replace(row, range=described) if inside or _defers(row) else row)
+    uncovered = tuple(c for c in named if not any(c in row.controllers for row in result))
+    first = next((index for index, row in enumerate(result) if row.range is described), None)
+    if uncovered and first is not None:
+        joined = tuple(c for c in Controller if c in result[first].controllers or c in uncovered)
+        result[first] = replace(result[first], controllers=joined)
+    return result
 
 
 def _bit_mask_range(keyword: Keyword, entry: Entry, seed: Seed, constants: Mapping[str, Constant]) -> ValueRange | None:
@@ -68,7 +101,7 @@ def _baud_range(entry: Entry, seed: Seed) -> ValueRange | None:
 
 
 def _described(keyword: Keyword, entry: Entry, seed: Seed, constants: Mapping[str, Constant]) -> ValueRange | None:
-    return _looptime_range(entry, seed) or _bit_mask_range(keyword, entry, seed, constants) or _baud_range(entry, seed)
+    return _bit_mask_range(keyword, entry, seed, constants) or _baud_range(entry, seed)
 
 
 def _defers(row: Attributes) -> bool:
@@ -87,9 +120,14 @@ def with_described_ranges(
     entries = {canonical_name(e): e for e in v4_entries(seed) if e.kind is EntryKind.FULL}
     result: dict[str, Keyword] = {}
     for name, keyword in keywords.items():
-        if not any(_defers(row) for row in keyword.attributes) or name not in entries:
+        entry = entries.get(name)
+        looptime = _looptime_range(entry, seed) if entry is not None else None
+        named = _looptime_controllers(keyword, entry, seed) if entry is not None and looptime is not None else ()
+        if looptime is not None and named:
+            result[name] = replace(keyword, attributes=tuple(_looptime_rows(keyword.attributes, named, looptime)))
+        elif entry is not None and any(_defers(row) for row in keyword.attributes):
+            described = looptime or _described(keyword, entry, seed, constants)
+            result[name] = replace(keyword, attributes=tuple(_row(row, described) for row in keyword.attributes))
+        else:
             result[name] = keyword
-            continue
-        described = _described(keyword, entries[name], seed, constants)
-        result[name] = replace(keyword, attributes=tuple(_row(row, described) for row in keyword.attributes))
     return result

@@ -5,7 +5,6 @@ Kept apart so that ``mint-migrate --help`` and ``--version`` load neither the ru
 
 from __future__ import annotations
 
-import difflib
 import sys
 from dataclasses import replace
 from functools import partial
@@ -16,10 +15,10 @@ import click
 from rich.console import Console
 from rich.markup import escape
 
+from mintlang.cli.diffs import unified
 from mintlang.cli.options import refuse_quiet_and_verbose
 from mintlang.cli.settings import typed
 from mintlang.cli.terminal import console, destination, reader_may_leave, refuse_overwriting, write_in_pieces
-from mintlang.diagnostics import split_lines
 from mintlang.migrate import leftovers, mintmt, verifying
 from mintlang.migrate.api import UnknownRule, rules, select
 from mintlang.migrate.applications import Application, Migrated, UsageError, read
@@ -36,9 +35,7 @@ NOT_DONE = 2
 
 
 def _diff(file: SourceFile, text: str) -> str:
-    path = file.path
-    lines = difflib.unified_diff(split_lines(file.text), split_lines(text), f"a/{path}", f"b/{path}", lineterm="")
-    return "\n".join(lines)
+    return unified(file.text, text, f"a/{file.path}", f"b/{file.path}")
 
 
 def _list_rules(console: Console) -> None:
@@ -201,7 +198,7 @@ def _output(items: list[Migrated], mode: str | None, output_format: str, control
         if mode is None and output_format == "text":
             for item in items:
                 if item.file is not None and item.entry.result is not None and item.entry.result.changed:
-                    click.echo(_diff(item.file, item.entry.result.text), file=stream)
+                    click.echo(_diff(item.file, item.entry.result.text), file=stream, nl=False)
         if output_format == "json":
             import json  # noqa: PLC0415 - the text report, the default, needs none
 

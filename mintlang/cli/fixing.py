@@ -19,6 +19,7 @@ import click
 
 from mintlang import atomic
 from mintlang.cli.checking import FileFixed, Fixing, Job
+from mintlang.cli.diffs import unified
 from mintlang.cli.report import FileReport
 from mintlang.fixes import MAX_ROUNDS, automatic_fix
 from mintlang.records import record
@@ -43,16 +44,8 @@ class Outcome:
 
 def unified_diff(file: FileFixed) -> str:
     """The change as ``diff -u`` shows it, the file's name on both sides."""
-    import difflib  # noqa: PLC0415 - imported for --diff alone
-
     name = str(file.original.path)
-    lines = difflib.unified_diff(
-        file.original.text.splitlines(keepends=True),
-        file.fixed.text.splitlines(keepends=True),
-        fromfile=name,
-        tofile=name,
-    )
-    return "".join(line if line.endswith(("\n", "\r")) else f"{line}\n\\ No newline at end of file\n" for line in lines)
+    return unified(file.original.text, file.fixed.text, name, name)
 
 
 def _write(file: FileFixed) -> str | None:

@@ -91,7 +91,11 @@ class System:
         table.register("BOL", command=self._bol)
         table.register("LOCATE", command=self._locate)
         LineTrace(vm, self.terminal).register(table)
-        table.register("NODE", read=lambda _: float(self.node), write=per_channel(self._write_node))
+        table.register(
+            "NODE",
+            read=lambda _: float(self.node),
+            write=per_channel(ranged("NODE", table.controller, self._write_node)),
+        )
         table.register("COMMS", read=lambda channel: self.comms.read(channel or 0), write=self._write_comms)
         table.register("FASTPOS", read=self._fastpos)
         encoders = channel_range("FASTENCODER", profile(table.controller))
@@ -138,8 +142,7 @@ class System:
         return False
 
     def _write_node(self, _: int | None, value: float) -> None:
-        if not 0 <= value <= 15:
-            raise MintError(3, detail="NODE takes 0 to 15 here")
+        """Any node the table gives (0 to 127, 000:14665); one above 15 has no ID character and hears no host packet."""
         self.node = int(value)
 
     def _write_comms(self, channels: Channels | None, values: tuple[float | None, ...]) -> bool:

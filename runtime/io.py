@@ -141,14 +141,15 @@ class DigitalIO:
             value = self.peek(None)
             self.latched = self.banks.with_inputs(self.latched, 0)
             return value
-        value = self.peek(self._input(channel))
+        value = self.peek(channel)
         self.latched &= ~(1 << channel)
         return value
 
     def peek(self, channel: int | None) -> float:
-        """What reading IN would return, without clearing any latch (for observers, not programs)."""
+        """What reading IN would return, without clearing any latch (for observers, not programs); an input the
+        controller lacks is error 7 here too."""
         value = self.active if self.levels_only else (self.active & ~self.edge_mode) | (self.latched & self.edge_mode)
-        return float(self.banks.inputs(value) if channel is None else value >> channel & 1)
+        return float(self.banks.inputs(value) if channel is None else value >> self._input(channel) & 1)
 
     def _read_instate(self, channel: int | None) -> float:
         self._watch()

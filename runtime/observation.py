@@ -67,10 +67,10 @@ class Observation:
         if found is None:
             return None
         name, channel, index = found["name"], found["channel"], found["index"]
-        if name in _CONSUMING:  # reading these changes the controller: look without touching
-            return _CONSUMING[name](self.c, int(channel) if channel is not None else None)
         access = self.c.table.get(name)
         try:
+            if name in _CONSUMING:  # reading these changes the controller: look without touching
+                return _CONSUMING[name](self.c, int(channel) if channel is not None else None)
             if access is not None and access.read is not None:
                 if index is not None:
                     return access.read(int(index))

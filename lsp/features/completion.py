@@ -438,6 +438,33 @@ def _after_address(snapshot: Snapshot, before: list[Token], typed: types.Range) 
     return items
 
 
+_AXIS_LIST_ENTRIES = frozenset({TokenKind.NUMBER, TokenKind.NAME, TokenKind.COMMA})
+
+
+def _in_axis_list(snapshot: Snapshot, before: list[Token], typed: types.Range) -> list[types.CompletionItem] | None:
+    """In an axis keyword's square brackets (``SPEED[0,``): the axes of the controller, the variables and the
+    macros that name one valid axis, since an axis there is a number or a simple variable and never an
+    expression (000:580-588: ``MOVER[a+1]`` is invalid, and so a keyword or function there is 2003); nothing
+    right after an axis, where only ``,`` or ``]`` can come. None when the cursor is in no such list."""
+    opened = next((at for at in range(len(before) - 1, -1, -1) if before[at].kind not in _AXIS_LIST_ENTRIES), None)
+    if opened is None or opened == 0 or before[opened].kind is not TokenKind.LSQB:
+        return None
+    keyword = before[opened - 1]
+    found = _addressed_by(keyword, snapshot) if keyword.kind is TokenKind.KEYWORD else None
+    if found is None or found[0] != "axis":
+        return None
+    if before[-1].kind is not TokenKind.LSQB and before[-1].kind is not TokenKind.COMMA:
+        return []
+    valid = found[1]
+    items = [_number_item("axis", number) for number in range(valid.low, valid.high + 1)]
+    items.extend(item for item in _symbols(snapshot) if item.detail == SymbolKind.VARIABLE.value)
+    for definition in snapshot.model.program.macros.values():
+        numbers = _macro_numbers(definition)
+        if numbers is not None and len(numbers) == 1 and numbers[0] in valid and definition.body[0][1] != "[":
+            items.append(_macro_item(definition.name, definition.name, f"axis {numbers[0]}", typed))
+    return items
+
+
 def _number_item(noun: str, number: int) -> types.CompletionItem:
     kind = types.CompletionItemKind.Value
     return types.CompletionItem(label=str(number), kind=kind, detail=f"{noun} {number}", sort_text=f"0{number:04d}")
@@ -474,6 +501,9 @@ def complete(
     dotted = _after_address(snapshot, before, typed)
     if dotted is not None:
         return dotted
+    listed = _in_axis_list(snapshot, before, typed)
+    if listed is not None:
+        return listed
     previous = before[-1] if before else None
     if previous is not None and previous.kind is TokenKind.EVENT:
         return list(_event_blocks())

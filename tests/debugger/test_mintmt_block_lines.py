@@ -5,52 +5,40 @@ statement, and stepping never stops on it."""
 from __future__ import annotations
 
 from tests.debugger.conftest import Debug
-
-# Three moves of 5 into a buffer of 4 leave one place free; the first move's end frees a second, which is
-# the level, so Event MOVEBUFFERLOW comes (004:109-134, MT-14) while the program waits on line 8.
-RESTOCKED = """\
-Dim lows
-MOVEBUFFERSIZE(0) = 4
-MOVEBUFFERLOW(0) = 2
-MOVER(0) = 5
-MOVER(0) = 5
-MOVER(0) = 5
-GO(0)
-Pause IDLE(0)
-lows = lows + 10
-Event MOVEBUFFERLOW
-  lows = lows + 1
-End Event
-"""
+from tests.debugger.test_breakpoints import RESTOCKED  # Event MOVEBUFFERLOW on line 10, its block lines 11-12
 
 
 def test_a_breakpoint_on_an_event_line_stops_when_the_event_comes(debug: Debug) -> None:
+    # The first move's end frees the second of four places, the level: the event comes (004:109-134, MT-14)
     client = debug(RESTOCKED, dialect="mintmt", drives="enabled", breakpoints=(10,))
     client.stopped()
     assert (client.line(), client.values()["lows"], client.evaluate("POS(0)")) == (11, "0", "5")
     assert [frame["name"] for frame in client.frames()] == ["#MOVEBUFFERLOW", "program"]
 
 
-def test_next_from_the_last_statement_before_an_event_block_runs_to_the_end(debug: Debug) -> None:
-    client = debug(RESTOCKED, dialect="mintmt", drives="enabled", breakpoints=(9,))
-    client.stopped()
-    client.body("next", {"threadId": 1})
-    # the main flow steps over the block and the program ends: there is no statement left to stop at
-    assert client.event_of("stopped", "terminated")["event"] == "terminated"
-
-
-# The Startup block runs when the controller powers up (004:128-133), before the program's first line.
-STARTED = """\
+# The Startup block runs when the controller powers up (004:128-133), before the program's first line; the
+# host's writes to comms location 1 call Event Comms1 (002:77-86). Neither block is entered from line 2.
+BLOCKS_AFTER = """\
 Dim n
 n = n + 1
-End
+Event Comms1
+  n = 0
+End Event
 Startup
   OUTX(1) = 1
 End Startup
 """
 
 
-def test_a_breakpoint_on_the_startup_line_stops_at_its_first_statement_before_the_program(debug: Debug) -> None:
-    client = debug(STARTED, dialect="mintmt", breakpoints=(4,))
+def test_next_from_the_last_statement_before_the_blocks_runs_to_the_end(debug: Debug) -> None:
+    client = debug(BLOCKS_AFTER, dialect="mintmt", breakpoints=(2,))
     client.stopped()
-    assert (client.line(), client.evaluate("OUT")) == (5, "0")
+    client.body("next", {"threadId": 1})
+    # the main flow steps over both blocks and the program ends: no statement is left to stop at
+    assert client.event_of("stopped", "terminated")["event"] == "terminated"
+
+
+def test_a_breakpoint_on_the_startup_line_stops_at_its_first_statement_before_the_program(debug: Debug) -> None:
+    client = debug(BLOCKS_AFTER, dialect="mintmt", breakpoints=(6,))
+    client.stopped()
+    assert (client.line(), client.evaluate("OUT")) == (7, "0")

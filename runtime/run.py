@@ -163,6 +163,16 @@ def run_source(
     return replace(result, read_leniently=lenient) if lenient else result
 
 
+def _ending_at_the_last_check(limits: Limits, expectations: tuple[Expectation, ...]) -> Limits:
+    """``limits``, ending at the last expectation's time when ``Limits.end_when_checked`` asks for it and every
+    expectation is timed (one at the end, a ``stopped`` one included, needs the run to end by itself)."""
+    times = [expectation.at_ms for expectation in expectations]
+    if not (limits.end_when_checked and limits.until_ms is None and times) or None in times:
+        return limits
+    last = max(at for at in times if at is not None)
+    return replace(limits, until_ms=last, until_message=f"every expectation was checked (the last at {last} ms)")
+
+
 def _read_leniently(analysis: mintlang.Analysis) -> tuple[str, ...]:
     """The lines whose typographic quotes (W101) were read as plain ones, one note each, in compile order.
 
@@ -204,7 +214,7 @@ def _simulate(
         return _not_run(str(missing), scenario)
     except MintError as error:
         return _not_run(error.describe(), scenario, error.code)
-    simulator = Simulator(built, limits)
+    simulator = Simulator(built, _ending_at_the_last_check(limits, scenario.expectations))
     built.vm.sleeps = not limits.every_tick  # stepping every tick tries every blocked statement, as a reference
     outcomes: list[Outcome] = []
     end_expectations = []

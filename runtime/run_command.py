@@ -138,7 +138,12 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     _check_outputs(trace_path, plot_path, report_path, inputs)
     tracing = trace_path is not None or plot_path is not None
     limits = Limits(
-        until_ms=until_ms, max_wall_s=max_wall_s, realtime=realtime, every_tick=tracing, host_port=host_port
+        until_ms=until_ms,
+        max_wall_s=max_wall_s,
+        realtime=realtime,
+        every_tick=tracing,
+        host_port=host_port,
+        end_when_checked=bool(expect_paths),
     )
     if trace_axes is not None and not tracing:
         raise click.UsageError("--trace-axes chooses the axes of --trace or --plot; give one of them")

@@ -57,6 +57,10 @@ class Limits:
     # debugger that shows the machine where the program stops turns this off, so every tick a statement
     # runs in is up to date.
     program_alone: bool = True
+    # With no ``until_ms`` and every expectation timed, end once the last is checked: a test of a program that
+    # never ends by itself (a machine's main loop) has nothing left to learn after it (``run.py``).
+    end_when_checked: bool = False
+    until_message: str | None = None  # the stop's message at ``until_ms`` when --until-ms did not set it
 
 
 @record
@@ -390,7 +394,7 @@ class Simulator:
                 if t < until:  # the state at the limit, as stepping every tick would leave it
                     self._step(until)
                 c.clock.now = until
-                vm.stop(StopReason.UNTIL, f"reached --until-ms {until}")
+                vm.stop(StopReason.UNTIL, limits.until_message or f"reached --until-ms {until}")
                 break
             processed += 1
             if limits.realtime:

@@ -107,7 +107,7 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
         controller=controller,
         dialect=dialect,
         scenario=scenario,
-        limits=Limits(until_ms=options.until_ms, max_wall_s=options.max_wall_s),
+        limits=Limits(until_ms=options.until_ms, max_wall_s=options.max_wall_s, end_when_checked=True),
         on_start=recorder.attach if recorder is not None else None,
         name=str(case.program),
     )

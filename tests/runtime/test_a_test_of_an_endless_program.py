@@ -1,0 +1,67 @@
+"""A test of a program that never ends by itself (a machine's main loop) ends at its last check.
+
+When every expectation is timed, nothing is left to check after the last one: ``mint test`` and
+``mint-run --expect`` end the run there, as ``until``, a normal stop. Before, such a run went on to
+the wall-clock limit and failed on it. An expectation at the end of the run (``stopped`` included)
+still needs the program to end by itself, and ``--until-ms`` given is kept.
+
+The program waits 250 ms per pass (WAIT takes milliseconds, 000:17336-17337), so by 1100 ms four passes
+are done and ``count`` is 4.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from click.testing import CliRunner, Result
+
+from mintlang.cli import main
+from tests.runtime.invoking import mint_run, write
+
+ENDLESS = "DIM count = 0\nLOOP\n  WAIT = 250\n  count = count + 1\nENDL\n"
+TIMED = "REM @expect count = 4 at 1100\n"
+
+
+def _mint_test(folder: Path, text: str, *options: str) -> Result:
+    program = write(folder, "machine.mnt", text)
+    arguments = ["test", "-j", "1", "--format", "json", "--max-wall-s", "2", *options, str(program)]
+    return CliRunner().invoke(main, arguments)
+
+
+def _only_test(result: Result) -> dict[str, object]:
+    (test,) = json.loads(result.output)["tests"]
+    return test
+
+
+def test_a_test_whose_expectations_are_all_timed_ends_at_the_last(tmp_path: Path) -> None:
+    result = _mint_test(tmp_path, TIMED + "REM @expect OUT.0 = 0 at 600\n" + ENDLESS)
+    test = _only_test(result)
+    assert (result.exit_code, test["verdict"], test["stopped"], test["simulated_ms"]) == (0, "passed", "until", 1100)
+
+
+def test_an_expectation_at_the_end_still_waits_for_the_program_to_end(tmp_path: Path) -> None:
+    result = _mint_test(tmp_path, TIMED + "REM @expect count >= 1\n" + ENDLESS)
+    test = _only_test(result)
+    assert (result.exit_code, test["verdict"], test["stopped"]) == (1, "failed", "wall-limit")
+
+
+def test_until_ms_given_is_kept(tmp_path: Path) -> None:
+    result = _mint_test(tmp_path, TIMED + ENDLESS, "--until-ms", "600")
+    test = _only_test(result)
+    assert (test["verdict"], test["stopped"], test["simulated_ms"]) == ("failed", "until", 600)
+
+
+def test_mint_run_expect_ends_at_the_last_check_and_says_so(tmp_path: Path) -> None:
+    program = write(tmp_path, "machine.mnt", ENDLESS)
+    scenario = write(tmp_path, "checks.toml", '[[expect]]\nwhat = "count"\nequals = 4\nat_ms = 1100\n')
+    result = mint_run(program, "--expect", scenario, "--max-wall-s", "2")
+    assert result.exit_code == 0
+    assert "every expectation was checked (the last at 1100 ms)" in result.output
+
+
+def test_mint_run_without_expect_runs_on(tmp_path: Path) -> None:
+    """A plain run is no test: the program's own timed checks do not end it."""
+    program = write(tmp_path, "machine.mnt", TIMED + ENDLESS)
+    result = mint_run(program, "--until-ms", "3000")
+    assert "until after 3000 ms at program line 4: WAIT = 250 — reached --until-ms 3000" in result.output

@@ -445,15 +445,16 @@ def _in_axis_list(snapshot: Snapshot, before: list[Token], typed: types.Range) -
     """In an axis keyword's square brackets (``SPEED[0,``): the axes of the controller, the variables and the
     macros that name one valid axis, since an axis there is a number or a simple variable and never an
     expression (000:580-588: ``MOVER[a+1]`` is invalid, and so a keyword or function there is 2003); nothing
-    right after an axis, where only ``,`` or ``]`` can come. None when the cursor is in no such list."""
+    right after an axis, where only ``,`` or ``]`` can come, and nothing in a channel keyword's brackets,
+    which take none (000:560: ``ADC.0``, never ``ADC[0]``). None when the cursor is in no such list."""
     opened = next((at for at in range(len(before) - 1, -1, -1) if before[at].kind not in _AXIS_LIST_ENTRIES), None)
     if opened is None or opened == 0 or before[opened].kind is not TokenKind.LSQB:
         return None
     keyword = before[opened - 1]
     found = _addressed_by(keyword, snapshot) if keyword.kind is TokenKind.KEYWORD else None
-    if found is None or found[0] != "axis":
+    if found is None:
         return None
-    if before[-1].kind is not TokenKind.LSQB and before[-1].kind is not TokenKind.COMMA:
+    if found[0] != "axis" or before[-1].kind not in (TokenKind.LSQB, TokenKind.COMMA):
         return []
     valid = found[1]
     items = [_number_item("axis", number) for number in range(valid.low, valid.high + 1)]

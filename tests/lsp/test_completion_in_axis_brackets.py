@@ -24,11 +24,19 @@ async def test_the_axes_the_variables_and_the_macros_for_one_axis(client, tmp_pa
     assert set(items) == NEXTMOVE_PCI_AXES | {"n", "xAxis"}
 
 
-async def test_nothing_right_after_an_axis(client, tmp_path):
-    text = DECLARED + "SPEED[0 \n"
-    uri = uri_of(tmp_path / "after.mnt")
+@pytest.mark.parametrize(
+    "written",
+    [
+        "SPEED[0 ",  # only "," or "]" can follow an axis
+        "a = ADC[",  # a channel is written after the dot only: ADC.0 (000:560)
+        "OUT[",
+    ],
+)
+async def test_nothing_where_no_axis_can_come(client, tmp_path, written):
+    text = DECLARED + written + "\n"
+    uri = uri_of(tmp_path / "nothing.mnt")
     await open_document(client, uri, text)
-    assert await labels_at(client, uri, text, "SPEED[0 ", 8) == {}
+    assert await labels_at(client, uri, text, written, len(written)) == {}
 
 
 async def test_the_values_after_the_brackets_are_expressions_again(client, tmp_path):

@@ -228,7 +228,7 @@ def expand_macros(line: LogicalLine, macros: Mapping[str, MacroDefinition], expa
         return
     index = 0
     while index < len(kinds):
-        if kinds[index] is _K.NAME and not _is_definition_or_target(kinds, index):
+        if kinds[index] is _K.NAME and not _is_definition(kinds, index):
             macro = macros.get(identity(line.texts[index]))
             if macro is not None and macro.body:
                 use = line.token_span(index)
@@ -244,9 +244,10 @@ def expand_macros(line: LogicalLine, macros: Mapping[str, MacroDefinition], expa
         index += 1
 
 
-def _is_definition_or_target(kinds: list[TokenKind], index: int) -> bool:
-    """The name after DEFINE, GOSUB or GOTO is not expanded."""
-    return index > 0 and kinds[index - 1] in (_K.DEFINE, _K.GOSUB, _K.GOTO)
+def _is_definition(kinds: list[TokenKind], index: int) -> bool:
+    """The name after DEFINE is the macro's own, not a use. After GOSUB or GOTO a macro is replaced as anywhere
+    else (000:9110-9111): ``DEFINE job = work`` makes ``GOSUB job`` a jump to ``#work``."""
+    return index > 0 and kinds[index - 1] is _K.DEFINE
 
 
 def register(macros: MutableMapping[str, MacroDefinition], definitions: list[MacroDefinition]) -> None:

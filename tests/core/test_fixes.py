@@ -103,7 +103,6 @@ def test_rounds_are_bounded_when_fixes_never_settle() -> None:
     [
         pytest.param("PRINT “hello”\n", 'PRINT "hello"\n', id="W101-plain-quotes"),
         pytest.param("PRINT 1 : REM mint: ignore[W103]\n", "PRINT 1\n", id="W117-unused-suppression"),
-        pytest.param("#FASTPOS\nRETURN\n", "#FASTIN\nRETURN\n", id="W102-v3-label"),
     ],
 )
 def test_safe_fixes_of_the_checker(source: str, after: str) -> None:
@@ -117,6 +116,7 @@ def test_safe_fixes_of_the_checker(source: str, after: str) -> None:
         pytest.param("PAUSE IDL[0]\n", id="E3007-respell"),
         pytest.param("HMSPEED = 2\n", id="E3007-v3-rename"),
         pytest.param("END\nPRINT 1\n", id="W106-remove-unreachable"),
+        pytest.param("GOSUB FASTPOS\nEND\n#FASTPOS\nRETURN\n", id="W102-v3-label-called-by-name"),
     ],
 )
 def test_unsafe_fixes_are_not_applied_by_default(source: str) -> None:

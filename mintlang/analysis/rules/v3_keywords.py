@@ -135,6 +135,8 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         event = event_of(label.text, Dialect.V3)
         if event is not None and event.kind is EventKind.FASTPOS:
             new = f"#FASTIN{event.number if event.number is not None else ''}"
-            fix = Fix(f"Rename to {new}", (Edit(label.span, new),), safe=True)  # v4 never calls the v3 name
+            # unsafe: the handler starts answering fast-latch events, and a GOSUB or GOTO naming it (which
+            # this line cannot see) would name no label
+            fix = Fix(f"Rename to {new}", (Edit(label.span, new),), safe=False)
             detail = f"#{label.text} is {_V3}: v4 uses {new}"
             yield Finding(scope.unit, own("W102", label.span, detail, fixes=(fix,), from_v3=True))

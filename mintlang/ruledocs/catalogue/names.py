@@ -182,8 +182,9 @@ GROUP = Group(
             ),
             manual=("v4:5910", "v4:1884"),
             fix="Rename the label to #FASTIN (with the same input number, if it has one); mint-migrate "
-            "converts the rest of a v3 program.",
-            safety=FixSafety.SAFE,
+            "converts the rest of a v3 program. The handler then runs on each fast latch, and a GOSUB or "
+            "GOTO that names it must be renamed too.",
+            safety=FixSafety.UNSAFE,
         ),
     ),
 )

@@ -15,7 +15,7 @@ import click
 from rich.console import Console
 from rich.markup import escape
 
-from mintlang.cli.diffs import unified
+from mintlang.cli.diffs import unified, write_diff
 from mintlang.cli.options import refuse_quiet_and_verbose
 from mintlang.cli.settings import typed
 from mintlang.cli.terminal import console, destination, reader_may_leave, refuse_overwriting, write_in_pieces
@@ -198,7 +198,7 @@ def _output(items: list[Migrated], mode: str | None, output_format: str, control
         if mode is None and output_format == "text":
             for item in items:
                 if item.file is not None and item.entry.result is not None and item.entry.result.changed:
-                    click.echo(_diff(item.file, item.entry.result.text), file=stream, nl=False)
+                    write_diff(stream, _diff(item.file, item.entry.result.text), item.file.encoding)
         if output_format == "json":
             import json  # noqa: PLC0415 - the text report, the default, needs none
 

@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+from typing import IO
+
 from mintlang.diagnostics import split_lines
+
+_AS_TEXT = ("utf-8", "utf-8-sig")  # what the stream writes anyway (a mark stays out of the diff's middle)
 
 
 def unified(before: str, after: str, fromfile: str, tofile: str) -> str:
@@ -23,3 +27,16 @@ def _ended(line: str) -> str:
     if line.endswith("\r"):
         return f"{line[:-1]}\n"
     return f"{line}\n\\ No newline at end of file\n"
+
+
+def write_diff(stream: IO[str], diff: str, encoding: str) -> None:
+    """``diff`` of a file read in ``encoding``, written to ``stream``. For ``patch`` (a file, a pipe) it goes in
+    that encoding: patch matches bytes, and a cp1252 program's diff written in UTF-8 does not apply to it. On a
+    terminal it is text, to be read."""
+    buffer = getattr(stream, "buffer", None)
+    if buffer is None or encoding in _AS_TEXT or stream.isatty():
+        stream.write(diff)
+        return
+    stream.flush()
+    buffer.write(diff.encode(encoding, errors="replace"))  # only a file name can hold what the encoding lacks
+    buffer.flush()

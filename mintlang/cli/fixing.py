@@ -19,7 +19,7 @@ import click
 
 from mintlang import atomic
 from mintlang.cli.checking import FileFixed, Fixing, Job
-from mintlang.cli.diffs import unified
+from mintlang.cli.diffs import unified, write_diff
 from mintlang.cli.report import FileReport
 from mintlang.fixes import MAX_ROUNDS, automatic_fix
 from mintlang.records import record
@@ -73,7 +73,7 @@ def apply(files: Sequence[FileFixed], *, diff: IO[str] | None) -> Outcome:
             continue
         problem = None if diff is not None else _write(file)
         if diff is not None:
-            diff.write(unified_diff(file))
+            write_diff(diff, unified_diff(file), file.original.encoding)
         if problem is not None:
             outcome.problems.append(problem)
             outcome.unwritten.add(file.original.path)

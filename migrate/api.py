@@ -12,7 +12,7 @@ from mintlang.keyworddb.model import Controller
 from mintlang.migrate import engine
 from mintlang.migrate.context import Context
 from mintlang.migrate.model import MigrationResult, RuleInfo
-from mintlang.migrate.recognise import Evidence, may_show_v4_beyond_doubt, v4_evidence, valid_v4
+from mintlang.migrate.recognise import Evidence, marked, may_show_v4_beyond_doubt, v4_evidence, valid_v4
 from mintlang.migrate.rules import RULES, Replace, Rule
 from mintlang.records import record
 from mintlang.semantic.units import Unit
@@ -110,9 +110,9 @@ def _already_v4(
     texts: Mapping[Unit, str], target: str, outcomes: Mapping[Unit, engine.FileOutcome], chosen: tuple[Rule, ...]
 ) -> bool:
     """Whether the application is Mint v4 already (see ``recognise``): the rules rewrite nothing in it
-    and it shows a v4 form, or it shows one beyond doubt and v4 finds no error in it."""
-    rewrite_free = _rewrite_free(outcomes)
-    if not rewrite_free and not may_show_v4_beyond_doubt(texts, target):
+    and it shows a v4 form, or it shows one beyond doubt or the migrator's markers and v4 finds no error in it."""
+    rewrite_free, migrated = _rewrite_free(outcomes), marked(texts)
+    if not (rewrite_free or migrated) and not may_show_v4_beyond_doubt(texts, target):
         return False  # most v3 programs: no v4 reading needed
     evidence = v4_evidence(texts, target)
     if (
@@ -122,7 +122,7 @@ def _already_v4(
         and (chosen == select() or _rewrite_free(engine.run(texts, select(), target)))
     ):
         return True
-    return evidence is Evidence.BEYOND_DOUBT and valid_v4(texts, target)
+    return (migrated or evidence is Evidence.BEYOND_DOUBT) and valid_v4(texts, target)
 
 
 def _rewrite_free(outcomes: Mapping[Unit, engine.FileOutcome]) -> bool:

@@ -19,12 +19,17 @@ Only one of these forms is also valid v3 with another meaning: a v4-only keyword
 is only ever assigned, as a plain name, is what a v3 user variable of that name looks
 like (``inputactivelevel = 1``). The others are beyond doubt.
 
-So an application is taken as Mint v4 when one of its files shows a form beyond doubt
-and Mint v4 finds no error in it (a program ported by hand whose ``SIN`` already returns
-the v4 fraction must not be scaled again), or when the rewrite rules find nothing to
-rewrite in it and one of its files shows any such form. A file that reads the same in
+So an application is taken as Mint v4 when one of its files shows a form beyond doubt, or the
+migrator's marker (``REM MIGRATE:``), and Mint v4 finds no error in it (a program ported by hand
+whose ``SIN`` already returns the v4 fraction must not be scaled again), or when the rewrite rules
+find nothing to rewrite in it and one of its files shows any such form. A file that reads the same in
 both versions (no variable, no v4-only keyword) cannot be told from a v3 original, and
 is migrated as one: the notes come back rather than being lost.
+
+A marker settles the one doubtful form: the migration renames every v3 variable named as a v4
+keyword (M-IDENT, ``kprop_u``), so in its output ``kprop = 10 : PRINT kprop`` (from v3's GAIN) is the
+keyword. It takes Mint v4's check too: a run of some rules only (``--only``) marks a file that still
+holds v3, which the next run migrates.
 """
 
 from __future__ import annotations
@@ -37,10 +42,12 @@ from enum import IntEnum
 import mintlang
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller
+from mintlang.migrate.context import MARKER
 from mintlang.semantic.index import KeywordUse, Use
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
+_MARKED = re.compile(rf"^[ \t]*{re.escape(MARKER)}", re.MULTILINE)
 _NOTE = re.compile(r"^[ \t]*REM\b.*\bby mint-migrate[ \t]*$", re.IGNORECASE | re.MULTILINE)
 _WORD = re.compile(r"#?[A-Za-z_]\w*")
 _DIM_NAMES = re.compile(r"\bDIM\b([^:=\n]*)", re.IGNORECASE)  # up to a DIM's initial values
@@ -53,6 +60,11 @@ class Evidence(IntEnum):
     NONE = 0
     SUGGESTED = 1  # a v4-only keyword only ever assigned, as a v3 user variable of that name would be
     BEYOND_DOUBT = 2
+
+
+def marked(texts: Mapping[Unit, str]) -> bool:
+    """Whether a file holds a line the migrator wrote for a person (``REM MIGRATE:``)."""
+    return any(_MARKED.search(text) for text in texts.values())
 
 
 def may_show_v4_beyond_doubt(texts: Mapping[Unit, str], controller: str) -> bool:

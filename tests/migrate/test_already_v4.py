@@ -108,3 +108,24 @@ def test_a_v3_program_with_nothing_to_rewrite_keeps_its_notes() -> None:
 def test_a_v4_form_beside_v3_code_does_not_stop_the_migration() -> None:
     result = migrate("DIM a\nHMSPEED = 10\n", controller="mintdrive")
     assert not result.already_v4 and "HOMESPEED = 10" in result.text
+
+
+def test_a_marked_file_whose_v4_keyword_looks_like_a_v3_variable_is_its_output() -> None:
+    """v3's GAIN is v4's KPROP (v4:10944-10945; its units changed: X-UNITS marks the line). Assigned and read as a
+    plain name, ``kprop`` is also what a v3 variable of that name looks like, but the migration renames
+    such a variable (M-IDENT): in a file it marked, the name is the keyword, and a second run keeps it."""
+    first = migrate("gain = 10 : PRINT gain\n")
+    assert first.text == (
+        "REM MIGRATE: X-UNITS: servo gains changed units and loop rate in v4: re-tune\nkprop = 10 : PRINT kprop\n"
+    )
+    second = migrate(first.text)
+    assert second.already_v4 and second.text == first.text
+
+
+def test_a_file_marked_by_some_rules_only_is_still_migrated() -> None:
+    """A run of some rules (``--only``) marks a file that still holds v3 (``GN``, v3's GAIN, is no v4
+    word): Mint v4's check finds it, and the full run renames the v3 variable ``kprop`` after all."""
+    staged = migrate("kprop = 5 : PRINT kprop\nGN = 10\n", only=["X-UNITS"])
+    full = migrate(staged.text)
+    assert not full.already_v4
+    assert "kprop_u = 5 : PRINT kprop_u\n" in full.text and "KPROP = 10\n" in full.text

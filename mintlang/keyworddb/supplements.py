@@ -55,6 +55,15 @@ SUPPLEMENTS: Mapping[str, Attributes] = MappingProxyType(
 )
 
 
+NARROWED: Mapping[str, ValueRange] = MappingProxyType(
+    {
+        # "Bit 1 cannot be set without bit 0" beside the table's 0 ≤ x ≤ 3 (000:8653-8654)
+        "CONTOURMODE": ValueRange("0, 1 or 3: bit 1 needs bit 0", None, None, False, allowed=(0.0, 1.0, 3.0)),
+    }
+)
+"""Ranges an entry's text narrows below what its table prints, which both tools take instead of the table's."""
+
+
 POSITIVE_ONLY = frozenset({"SCALE", "ENCODERSCALE"})
 """Scale factors the guide's text takes only positive where a table prints 0 ≤ x: SCALE (000:532-537), and
 ENCODERSCALE, which divides the counts into ENCODER's units as SCALE does into POS's (000:9731-9735): a

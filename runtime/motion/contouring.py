@@ -8,21 +8,21 @@ segments join (CONTOURANGLE, global and not buffered).
 
 from __future__ import annotations
 
+from mintlang.keyworddb.supplements import NARROWED
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.commands import Motion
-from mintlang.runtime.motion.paths import CONTOUR_ON, VECTOR_ANGLE_ON
-from mintlang.runtime.ranges import OUT_OF_RANGE
+from mintlang.runtime.ranges import OUT_OF_RANGE, bounds_of, check_range
 
 MAX_ANGLE = 180.0
 
 
 def register(table: KeywordTable, motion: Motion) -> None:
+    modes = bounds_of(NARROWED["CONTOURMODE"])
+
     def write_mode(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)
-        if value not in (0, CONTOUR_ON, CONTOUR_ON | VECTOR_ANGLE_ON):
-            raise MintError(OUT_OF_RANGE, axis.number, "CONTOURMODE is 0, 1 or 3 (bit 1 needs bit 0)")
-        axis.contour_mode = int(value)
+        axis.contour_mode = int(check_range("CONTOURMODE", value, modes, axis.number))
 
     def write_angle(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)

@@ -8,7 +8,9 @@ moves and GO never waits (v4:2938-2944, v4:11080-11089). Flagged: after a GO
 that follows an earlier GO on a shared axis with no PAUSE IDLE between them (in
 text order; a label starts afresh), the first statement with an effect outside
 the program (an output, the relay, a DAC, the terminal, the comms array, a
-subroutine) before the next move, GO or PAUSE; and ``PAUSE`` on TRIGGER. Setting
+subroutine) before the next move, GO or PAUSE; and ``PAUSE`` on TRIGGER. A loop's body runs
+again from the state its end leaves: ``LOOP : MOVER = 10 : GO : OUT1 = 1 : ENDL`` waits at each GO
+after the first, so OUT1 is flagged too (its body is read twice, a nested loop's once more). Setting
 up the next move (MASTERDISTANCE, SPEED …) is not flagged: it applies to the move
 loaded next in both versions (v4:3805-3816). Also flagged: a move loaded on an axis
 that is still homing (no PAUSE IDLE since its HOME), which v3's blocking GO
@@ -25,6 +27,7 @@ from mintlang.migrate.context import LABEL, Context, FileView
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import MOVES, addressed_axes
 from mintlang.migrate.rules.base import Action, Rule
+from mintlang.records import record
 from mintlang.syntax import nodes as n
 
 _DELAYED = "v3 ran this when the previous move ended (GO waited); v4 GO does not wait: use PAUSE or MOVEBUFFERFREE"
@@ -59,39 +62,77 @@ class GoTiming(Rule):
         """Only the lines that can change the state or show do: the others pass it on. They are
         read as parsed (``line.span`` places a statement): most of a program is timed."""
         outputs = context.mentioned(lambda name: name.startswith("OUT") and name[3:].isdigit())
-        timed = context.placed(LABEL, n.Pause, n.Print, n.Jump, "COMMS", "GO", *MOVES, *_EFFECTS, *outputs)
+        loop_words = (n.For, n.While, n.Until, n.BlockWord)
+        timed = context.placed(LABEL, n.Pause, n.Print, n.Jump, "COMMS", "GO", *MOVES, *_EFFECTS, *outputs, *loop_words)
         # read as they come, a file at a time: a list of them held most of a program's lines at once
         for file, lines in groupby(timed, key=itemgetter(0)):
             yield from self._file(context, file, (line for _, line in lines))
 
     def _file(self, context: Context, file: FileView, lines: Iterable[n.PlacedLine]) -> Iterator[Action]:
-        running, homing, delayed = _IDLE, _IDLE, False
+        state = _Timing()
+        loops: list[list[tuple[n.PlacedLine, n.Statement]]] = []  # the statements of each loop open, outermost first
         for line in lines:
             if line.syntax.label is not None:
-                running, homing, delayed = _IDLE, _IDLE, False
+                state = _Timing()
             for statement in n.walk_statements(line.syntax.statements):
-                start = line.origin + statement.span.start
-                if _moves(statement):
-                    delayed = False
-                elif delayed and _visible(statement):
-                    yield self.flag(file, line.span(statement.span), _DELAYED)
-                    delayed = False
-                if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in MOVES:
-                    axes = addressed_axes(context, file, statement, start)
-                    if statement.keyword.keyword == "HOME" and statement.values is not None:
-                        homing = _started(homing, axes)
-                    elif _overlaps(homing, axes):
-                        yield self.flag(file, line.span(statement.span), _HOMING)
-                        homing = _IDLE
-                if isinstance(statement, n.Pause):
-                    if _mentions(statement, "TRIGGER"):
-                        yield self.flag(file, line.span(statement.span), _TRIGGER)
-                    if _mentions(statement, "IDLE") or _mentions(statement, "HOME"):
-                        running, homing = _IDLE, _IDLE
-                elif isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "GO":
-                    axes = addressed_axes(context, file, statement, start)
-                    delayed = _overlaps(running, axes)
-                    running = _started(running, axes)
+                for body in loops:
+                    body.append((line, statement))
+                yield from self._statement(context, file, line, statement, state)
+                if _opens_loop(statement):
+                    loops.append([])
+                elif _closes_loop(statement) and loops:
+                    # the next pass round the loop, from the state this one ends in (the engine writes a marker once)
+                    for again, repeated in loops.pop():
+                        yield from self._statement(context, file, again, repeated, state)
+
+    def _statement(
+        self, context: Context, file: FileView, line: n.PlacedLine, statement: n.Statement, state: _Timing
+    ) -> Iterator[Action]:
+        start = line.origin + statement.span.start
+        if _moves(statement):
+            state.delayed = False
+        elif state.delayed and _visible(statement):
+            yield self.flag(file, line.span(statement.span), _DELAYED)
+            state.delayed = False
+        if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in MOVES:
+            axes = addressed_axes(context, file, statement, start)
+            if statement.keyword.keyword == "HOME" and statement.values is not None:
+                state.homing = _started(state.homing, axes)
+            elif _overlaps(state.homing, axes):
+                yield self.flag(file, line.span(statement.span), _HOMING)
+                state.homing = _IDLE
+        if isinstance(statement, n.Pause):
+            if _mentions(statement, "TRIGGER"):
+                yield self.flag(file, line.span(statement.span), _TRIGGER)
+            if _mentions(statement, "IDLE") or _mentions(statement, "HOME"):
+                state.running, state.homing = _IDLE, _IDLE
+        elif isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "GO":
+            axes = addressed_axes(context, file, statement, start)
+            state.delayed = _overlaps(state.running, axes)
+            state.running = _started(state.running, axes)
+
+
+@record(frozen=False)
+class _Timing:
+    """What the statements read so far leave: the axes moving and homing, and whether the last GO waited."""
+
+    running: Running = _IDLE
+    homing: Running = _IDLE
+    delayed: bool = False
+
+
+_LOOP_WORDS = frozenset({"LOOP", "REPEAT"})
+_LOOP_ENDS = frozenset({"ENDL", "NEXT", "ENDW"})
+
+
+def _opens_loop(statement: n.Statement) -> bool:
+    kind = type(statement)
+    return kind is n.For or kind is n.While or (kind is n.BlockWord and statement.word in _LOOP_WORDS)  # type: ignore[union-attr]
+
+
+def _closes_loop(statement: n.Statement) -> bool:
+    kind = type(statement)
+    return kind is n.Until or (kind is n.BlockWord and statement.word in _LOOP_ENDS)  # type: ignore[union-attr]
 
 
 def _moves(statement: n.Statement) -> bool:

@@ -31,6 +31,33 @@ def test_go_timing_stays_quiet_where_v3_did_not_wait(source: str) -> None:
     assert flagged("X-GO-TIMING", source) == []
 
 
+@pytest.mark.parametrize(
+    "source",
+    [
+        "LOOP\n  MOVER = 10 : GO\n  OUT1 = 1\nENDL\n",
+        "FOR i = 1 TO 3\n  MOVER = 10 : GO\n  OUT1 = 1\nNEXT\n",
+        "REPEAT\n  MOVER = 10 : GO\n  OUT1 = 1\nUNTIL IN2\n",
+        "WHILE IN2\n  MOVER = 10 : GO\n  OUT1 = 1\nENDW\n",
+        "LOOP\n  FOR i = 1 TO 2\n    PRINT i\n  NEXT\n  MOVER = 10 : GO\n  OUT1 = 1\nENDL\n",  # a loop in its body
+    ],
+)
+def test_the_statement_after_a_go_in_a_loop_is_flagged(source: str) -> None:
+    """From the second pass on, the GO waits for the move the pass before started (v3:3405-3412)."""
+    result = one_rule("X-GO-TIMING", source)
+    assert result.text == source.replace("  OUT1", f"  REM MIGRATE: X-GO-TIMING: {DELAYED}\n  OUT1")
+
+
+@pytest.mark.parametrize(
+    "source",
+    [
+        "LOOP\n  MOVER = 10 : GO\n  PAUSE IDLE\n  OUT1 = 1\nENDL\n",  # each pass waits for its move
+        "FOR i = 0 TO 1\n  MOVEA.0 = 5 : GO.0\n  PAUSE IDLE.0\nNEXT\nMOVEA.1 = 5 : GO.1\nOUT1 = 1\n",
+    ],
+)
+def test_a_loop_whose_moves_end_in_each_pass_stays_quiet(source: str) -> None:
+    assert flagged("X-GO-TIMING", source) == []
+
+
 def test_pause_on_trigger_is_flagged() -> None:
     assert flagged("X-GO-TIMING", "PAUSE !TRIGGER\nPAUSE IN1\n") == [
         "PAUSE on TRIGGER relied on v3's one-move buffer; v4 buffers more moves (MOVEBUFFERFREE)"

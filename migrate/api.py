@@ -110,24 +110,36 @@ def _already_v4(
     texts: Mapping[Unit, str], target: str, outcomes: Mapping[Unit, engine.FileOutcome], chosen: tuple[Rule, ...]
 ) -> bool:
     """Whether the application is Mint v4 already (see ``recognise``): the rules rewrite nothing in it
-    and it shows a v4 form, or it shows one beyond doubt or the migrator's markers and v4 finds no error in it."""
+    and it shows a v4 form; or it shows one beyond doubt, or it holds the migrator's markers and the rules
+    would only rename its v4 keywords as variables, and v4 finds no error in it."""
     rewrite_free, migrated = _rewrite_free(outcomes), marked(texts)
     if not (rewrite_free or migrated) and not may_show_v4_beyond_doubt(texts, target):
         return False  # most v3 programs: no v4 reading needed
     evidence = v4_evidence(texts, target)
-    if (
-        rewrite_free
-        and evidence is not Evidence.NONE
-        # whether a file is v4 does not depend on the rules asked for
-        and (chosen == select() or _rewrite_free(engine.run(texts, select(), target)))
-    ):
+
+    def all_rules() -> Mapping[Unit, engine.FileOutcome]:  # whether a file is v4 does not depend on the rules asked for
+        return outcomes if chosen == select() else engine.run(texts, select(), target)
+
+    if rewrite_free and evidence is not Evidence.NONE and _rewrite_free(all_rules()):
         return True
-    return (migrated or evidence is Evidence.BEYOND_DOUBT) and valid_v4(texts, target)
+    if migrated and _renames_only(all_rules()):
+        return valid_v4(texts, target)
+    return evidence is Evidence.BEYOND_DOUBT and valid_v4(texts, target)
 
 
 def _rewrite_free(outcomes: Mapping[Unit, engine.FileOutcome]) -> bool:
     """Whether the rules rewrote nothing (markers and notes are no rewrites)."""
     return not any(outcome.changes for outcome in outcomes.values())
+
+
+_RENAMING = frozenset({"M-IDENT", "M-DIM"})  # a v3 variable named as a v4 keyword renamed, and declared
+
+
+def _renames_only(outcomes: Mapping[Unit, engine.FileOutcome]) -> bool:
+    """Whether the rules' only rewrites rename names as v3 variables (``kprop`` to ``kprop_u``): what they make of
+    the migrator's own output, whose v4 keywords they read as v3 variables. Any other rewrite is v3 a run of some
+    rules only (``--skip M-TRIG``) left."""
+    return all(change.rule in _RENAMING for outcome in outcomes.values() for change in outcome.changes)
 
 
 def _result(outcome: engine.FileOutcome, marks: _Marks, *, v4: bool = False, mintmt: bool = False) -> MigrationResult:

@@ -19,17 +19,19 @@ Only one of these forms is also valid v3 with another meaning: a v4-only keyword
 is only ever assigned, as a plain name, is what a v3 user variable of that name looks
 like (``inputactivelevel = 1``). The others are beyond doubt.
 
-So an application is taken as Mint v4 when one of its files shows a form beyond doubt, or the
-migrator's marker (``REM MIGRATE:``), and Mint v4 finds no error in it (a program ported by hand
-whose ``SIN`` already returns the v4 fraction must not be scaled again), or when the rewrite rules
-find nothing to rewrite in it and one of its files shows any such form. A file that reads the same in
+So an application is taken as Mint v4 when one of its files shows a form beyond doubt and Mint
+v4 finds no error in it (a program ported by hand whose ``SIN`` already returns the v4 fraction
+must not be scaled again), or when the rewrite rules find nothing to rewrite in it and one of its
+files shows any such form. A file that reads the same in
 both versions (no variable, no v4-only keyword) cannot be told from a v3 original, and
 is migrated as one: the notes come back rather than being lost.
 
-A marker settles the one doubtful form: the migration renames every v3 variable named as a v4
-keyword (M-IDENT, ``kprop_u``), so in its output ``kprop = 10 : PRINT kprop`` (from v3's GAIN) is the
-keyword. It takes Mint v4's check too: a run of some rules only (``--only``) marks a file that still
-holds v3, which the next run migrates.
+The migrator's marker (``REM MIGRATE:``) settles the one doubtful form: the migration renames every
+v3 variable named as a v4 keyword (M-IDENT, ``kprop_u``), so in its output ``kprop = 10 : PRINT kprop``
+(from v3's GAIN) is the keyword. A marked file is taken as Mint v4 when those renames (and their
+DIMs) are all the rules would rewrite and Mint v4 finds no error in it: a run of some rules only
+(``--only``, ``--skip``) marks a file that still holds v3, which another rule rewrites or the
+check finds, and the next run migrates.
 """
 
 from __future__ import annotations

@@ -129,3 +129,11 @@ def test_a_file_marked_by_some_rules_only_is_still_migrated() -> None:
     full = migrate(staged.text)
     assert not full.already_v4
     assert "kprop_u = 5 : PRINT kprop_u\n" in full.text and "KPROP = 10\n" in full.text
+
+
+def test_a_file_marked_by_a_run_that_skipped_a_rule_is_still_migrated() -> None:
+    """``SIN(30)`` reads alike in both versions, but v3's is a thousand times v4's (v3:2063-2081): the full
+    run must scale it though the skipped run marked the file and Mint v4 finds no error in it."""
+    staged = migrate("gain = 10\nPRINT SIN(30)\n", skip=["M-TRIG"])
+    full = migrate(staged.text)
+    assert not full.already_v4 and "(SIN(30) * 1000)" in full.text

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import replace
+from functools import cache
 
 from mintlang.detection import detect_dialect
 from mintlang.diagnostics import Edit, Span
@@ -117,6 +118,7 @@ def _already_v4(
         return False  # most v3 programs: no v4 reading needed
     evidence = v4_evidence(texts, target)
 
+    @cache  # a second migration, when some rules only were asked for: run once at most
     def all_rules() -> Mapping[Unit, engine.FileOutcome]:  # whether a file is v4 does not depend on the rules asked for
         return outcomes if chosen == select() else engine.run(texts, select(), target)
 

@@ -11,6 +11,7 @@ from collections.abc import Callable
 
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, ValueRange
+from mintlang.keyworddb.supplements import narrowed
 from mintlang.records import record
 from mintlang.runtime.errors import MintError
 
@@ -30,12 +31,12 @@ UNBOUNDED = Bounds(None, None, False)
 
 
 def table_bounds(keyword: str, controller: Controller) -> Bounds:
-    """The range the keyword's attributes table gives for ``controller``; unbounded when it gives none."""
+    """The range the keyword's attributes table gives for ``controller``, as its entry's text may narrow it
+    (``supplements.narrowed``); unbounded when it gives none."""
     record = database().keywords.get(keyword)
     row = record.attributes_for(controller) if record is not None else None
-    if row is None or row.range is None:
-        return UNBOUNDED
-    return bounds_of(row.range)
+    found = narrowed(keyword, row.range if row is not None else None)
+    return UNBOUNDED if found is None else bounds_of(found)
 
 
 def bounds_of(found: ValueRange) -> Bounds:

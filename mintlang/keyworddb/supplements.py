@@ -64,6 +64,11 @@ NARROWED: Mapping[str, ValueRange] = MappingProxyType(
 """Ranges an entry's text narrows below what its table prints, which both tools take instead of the table's."""
 
 
+def narrowed(keyword: str, printed: ValueRange | None) -> ValueRange | None:
+    """The range ``mint check`` and ``mint-run`` hold ``keyword``'s values to where its table prints ``printed``."""
+    return NARROWED.get(keyword, printed) if printed is not None else None
+
+
 POSITIVE_ONLY = frozenset({"SCALE", "ENCODERSCALE"})
 """Scale factors the guide's text takes only positive where a table prints 0 ≤ x: SCALE (000:532-537), and
 ENCODERSCALE, which divides the counts into ENCODER's units as SCALE does into POS's (000:9731-9735): a

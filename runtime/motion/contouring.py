@@ -8,17 +8,16 @@ segments join (CONTOURANGLE, global and not buffered).
 
 from __future__ import annotations
 
-from mintlang.keyworddb.supplements import NARROWED
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.commands import Motion
-from mintlang.runtime.ranges import OUT_OF_RANGE, bounds_of, check_range
+from mintlang.runtime.ranges import OUT_OF_RANGE, check_range, table_bounds
 
 MAX_ANGLE = 180.0
 
 
 def register(table: KeywordTable, motion: Motion) -> None:
-    modes = bounds_of(NARROWED["CONTOURMODE"])
+    modes = table_bounds("CONTOURMODE", motion.profile.controller)
 
     def write_mode(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)

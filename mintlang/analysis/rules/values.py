@@ -31,8 +31,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         attributes = supplements.attributes_for(keyword, controller, dialect) if keyword else None
         # a scale factor is positive whatever its table prints, or where it prints none (ServoNode 51's SCALE)
         positive = use.keyword.keyword in supplements.POSITIVE_ONLY
-        limits = attributes.range if attributes is not None else None
-        limits = supplements.NARROWED.get(use.keyword.keyword, limits) if limits is not None else None
+        limits = supplements.narrowed(use.keyword.keyword, attributes.range if attributes is not None else None)
         if limits is not None and limits.allowed is None and (limits.minimum is None or limits.maximum is None):
             limits = None
         if limits is None and not positive:

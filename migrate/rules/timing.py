@@ -28,6 +28,7 @@ from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import MOVES, addressed_axes
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.records import record
+from mintlang.semantic.blocks import LOOPS, closer_kind, opener_kind
 from mintlang.syntax import nodes as n
 
 _DELAYED = "v3 ran this when the previous move ended (GO waited); v4 GO does not wait: use PAUSE or MOVEBUFFERFREE"
@@ -78,9 +79,9 @@ class GoTiming(Rule):
                 for body in loops:
                     body.append((line, statement))
                 yield from self._statement(context, file, line, statement, state)
-                if _opens_loop(statement):
+                if opener_kind(statement) in LOOPS:
                     loops.append([])
-                elif _closes_loop(statement) and loops:
+                elif closer_kind(statement) in LOOPS and loops:
                     # the next pass round the loop, from the state this one ends in (the engine writes a marker once)
                     for again, repeated in loops.pop():
                         yield from self._statement(context, file, again, repeated, state)
@@ -119,20 +120,6 @@ class _Timing:
     running: Running = _IDLE
     homing: Running = _IDLE
     delayed: bool = False
-
-
-_LOOP_WORDS = frozenset({"LOOP", "REPEAT"})
-_LOOP_ENDS = frozenset({"ENDL", "NEXT", "ENDW"})
-
-
-def _opens_loop(statement: n.Statement) -> bool:
-    kind = type(statement)
-    return kind is n.For or kind is n.While or (kind is n.BlockWord and statement.word in _LOOP_WORDS)  # type: ignore[union-attr]
-
-
-def _closes_loop(statement: n.Statement) -> bool:
-    kind = type(statement)
-    return kind is n.Until or (kind is n.BlockWord and statement.word in _LOOP_ENDS)  # type: ignore[union-attr]
 
 
 def _moves(statement: n.Statement) -> bool:

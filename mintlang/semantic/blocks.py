@@ -114,7 +114,8 @@ class _Open:
 _OPENING_WORDS = {"REPEAT": BlockKind.REPEAT, "LOOP": BlockKind.LOOP, "STARTUP": BlockKind.STARTUP}
 
 
-def _opener_kind(statement: n.Statement) -> BlockKind | None:
+def opener_kind(statement: n.Statement) -> BlockKind | None:
+    """The kind of block ``statement`` opens, if it opens one."""
     kind = type(statement)
     if kind is n.BlockWord:
         return _OPENING_WORDS.get(statement.word)  # type: ignore[union-attr]
@@ -129,6 +130,15 @@ def _opener_kind(statement: n.Statement) -> BlockKind | None:
     if kind is n.SyntaxError_ and statement.opens is not None:  # type: ignore[union-attr]
         return BlockKind(statement.opens)  # type: ignore[union-attr]
     return None
+
+
+def closer_kind(statement: n.Statement) -> BlockKind | None:
+    """The kind of block a well-formed ``statement`` closes, if it closes one."""
+    kind = type(statement)
+    if kind is n.Until:
+        return BlockKind.REPEAT
+    closed = _CLOSERS.get(statement.word) if kind is n.BlockWord else None  # type: ignore[union-attr]
+    return closed[0] if closed is not None else None
 
 
 _error = mint_error
@@ -150,7 +160,7 @@ class _Matcher:
 
     def statement(self, statement: n.Statement, line: n.PlacedLine, index: int) -> None:
         """One statement of ``BLOCK_STATEMENTS``, the ``index``-th of its line."""
-        kind = _opener_kind(statement)
+        kind = opener_kind(statement)
         place = Place(line.number, index)
         if type(statement) is n.IfThen:
             then = _then_written(statement, line.syntax) if not statement.body else None  # type: ignore[union-attr]

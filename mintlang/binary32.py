@@ -1,11 +1,13 @@
 """Mint v4's numbers: an 8-bit exponent and a 24-bit mantissa (000:714-716), IEEE binary32 as simulated.
 
 The checker works a value out as the controller holds it where that decides a finding: a divisor
-that rounds to zero, a literal too large to hold.
+that rounds to zero, a literal or a result too large to hold. mint-run's EXP and POW are these
+functions too, so both tools find the same results too large (error 3).
 """
 
 from __future__ import annotations
 
+import math
 import struct
 
 _FORMAT = struct.Struct("<f")
@@ -14,3 +16,14 @@ _FORMAT = struct.Struct("<f")
 def rounded(value: float) -> float:
     """``value`` rounded to the nearest binary32 number; OverflowError when it is too large for one."""
     return _FORMAT.unpack(_FORMAT.pack(value))[0]
+
+
+def exp(x: float) -> float:
+    """``EXP(x)`` as the controller holds it; OverflowError when it is too large for a number."""
+    return rounded(math.exp(x))
+
+
+def power(x: float, y: float) -> float:
+    """``POW(x, y)`` as the controller holds it; OverflowError when it is too large for a number,
+    ValueError when there is no real result (0 to a negative power, a negative to a fraction)."""
+    return rounded(math.pow(x, y))

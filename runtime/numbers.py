@@ -16,6 +16,7 @@ import struct
 from collections.abc import Callable, Mapping
 from types import MappingProxyType
 
+from mintlang import binary32
 from mintlang.runtime.errors import MintError
 
 OUT_OF_RANGE = 3
@@ -176,7 +177,7 @@ def _log(x: float) -> float:
 
 def _exp(x: float) -> float:
     try:
-        return f32(math.exp(x))
+        return binary32.exp(x)
     except OverflowError:
         raise MintError(OUT_OF_RANGE, detail="EXP too large") from None
 
@@ -184,7 +185,7 @@ def _exp(x: float) -> float:
 def _pow(x: float, y: float) -> float:
     """``POW(x, y)`` without NextMove's exponent restriction (NM-5 RC); 0 to a negative power is a divide by zero."""
     try:
-        return f32(math.pow(x, y))
+        return binary32.power(x, y)
     except ValueError:
         raise MintError(DIVIDE_BY_ZERO if x == 0 else OUT_OF_RANGE, detail="POW has no real result") from None
     except OverflowError:

@@ -1,9 +1,13 @@
-"""A constant value outside what ACOS, ASIN or LOG are defined for is error 3 in mint check and mint-run.
+"""A constant value outside what ACOS, ASIN or LOG are defined for, or an EXP or POW too large for a
+number, is error 3 in mint check and mint-run.
 
 ACOS and ASIN take a value "in the range of -1 to 1", LOG one "greater than 0" (000:6279, 000:6595,
 000:13723); #3 is "Data specified out of range" (000:18518-18521). Values are worked in the
 controller's binary32 numbers (000:714-716): 1.00000001 is held as 1, so ACOS of it is 0 and no
-error. A variable's value is known only when the line runs. Columns are counted by hand from 1.
+error. The largest of those numbers is (2 - 2^-23) * 2^127, about 3.40282e38: e^89 (about 4.49e38),
+10^39 and -2^129 are past it, e^88 (about 1.65e38), 10^38 and 2^127 (about 1.70e38) are not; an EXP
+or POW is reported at the call. A variable's value is known only when the line runs. Columns are
+counted by hand from 1.
 """
 
 from __future__ import annotations
@@ -21,6 +25,12 @@ _OUTSIDE = [
     pytest.param("PRINT LOG(-3)\n", 11, id="LOG of a negative"),
     pytest.param("PRINT LOG(1-1)\n", 11, id="LOG of a difference that is 0"),
     pytest.param("PRINT LOG 0\n", 11, id="LOG without brackets"),
+    pytest.param("PRINT EXP(100)\n", 7, id="EXP of 100"),
+    pytest.param("PRINT EXP(89)\n", 7, id="EXP just past the largest number"),
+    pytest.param("PRINT POW(10, 39)\n", 7, id="POW of 10 to 39"),
+    pytest.param("PRINT POW(10, 400)\n", 7, id="POW too large even for a double"),
+    pytest.param("PRINT POW(-2, 129)\n", 7, id="POW too large and negative"),
+    pytest.param("PRINT 1 + EXP 100\n", 11, id="EXP without brackets in a sum"),
 ]
 
 
@@ -40,7 +50,8 @@ def test_mint_run_stops_with_error_3_on_the_same_line(source: str, column: int) 
     [
         pytest.param("PRINT ACOS(1)\nPRINT ASIN(-1)\n", id="the ends of -1 to 1"),
         pytest.param("PRINT ACOS(1.00000001)\n", id="held as 1 in binary32"),
-        pytest.param("DIM a = 2\nPRINT LOG(a)\n", id="a variable"),
+        pytest.param("PRINT EXP(88)\nPRINT POW(10, 38)\nPRINT POW(2, 127)\n", id="results a number holds"),
+        pytest.param("DIM a = 2\nPRINT LOG(a)\nPRINT EXP(a * 50)\n", id="a variable"),
     ],
 )
 def test_values_inside_or_unknown_before_the_run_are_not_reported(source: str) -> None:

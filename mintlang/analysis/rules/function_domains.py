@@ -1,10 +1,12 @@
-"""Functions given a constant value outside the values they are defined for (error 3).
+"""Functions given constant values they have no result for in a Mint number (error 3).
 
 ACOS and ASIN take a value "in the range of -1 to 1", LOG one "greater than 0" (000:6279, 000:6595,
-000:13723). Outside it there is no answer, and mint-run stops the line with #3, "Data specified out of
-range" (000:18518-18521). The value is known to be outside when the constant folding the other rules use
-gives it, worked out in the controller's binary32 numbers (``held_value``): ``ACOS(2)``, ``LOG(0)``,
-``ASIN(-1.5)``, ``LOG(1-1)``. A variable or a keyword's reading is known only while the program runs.
+000:13723). A number has an 8-bit exponent and a 24-bit mantissa (000:714-716): EXP(100) or
+POW(10, 39) is larger than any. Either way there is no answer, and mint-run stops the line with #3,
+"Data specified out of range" (000:18518-18521). The values are known when the constant folding the
+other rules use gives them, worked out in the controller's binary32 numbers (``held_value``), and
+EXP and POW are worked out by the functions mint-run uses (``mintlang.binary32``): ``ACOS(2)``,
+``LOG(1-1)``, ``EXP(89)``. A variable or a keyword's reading is known only while the program runs.
 """
 
 from __future__ import annotations
@@ -12,9 +14,11 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator, Mapping
 from types import MappingProxyType
 
+from mintlang import binary32
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import LineScope
 from mintlang.semantic.constants import held_value
+from mintlang.syntax import nodes as n
 
 # Each function whose guide entry bounds its value: the test the value must pass, and what it says.
 _DOMAINS: Mapping[str, tuple[Callable[[float], bool], str]] = MappingProxyType(
@@ -25,15 +29,38 @@ _DOMAINS: Mapping[str, tuple[Callable[[float], bool], str]] = MappingProxyType(
     }
 )
 
+# The functions whose result can be too large for a number, by their argument count.
+_GROWING: Mapping[str, tuple[int, Callable[..., float]]] = MappingProxyType(
+    {"EXP": (1, binary32.exp), "POW": (2, binary32.power)}
+)
+
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
     for call in scope.facts.calls:
         domain = _DOMAINS.get(call.function)
-        if domain is None or len(call.arguments) != 1:
-            continue  # another count is the functions rule's error 2003
-        (argument,) = call.arguments
-        value = held_value(argument, scope.dialect)
-        holds, wanted = domain
-        if value is not None and not holds(value):
-            detail = f"{call.function} of {value:.15g}: its value must be {wanted}"
-            yield Finding(scope.unit, mint_error(3, argument.span, detail))
+        if domain is not None and len(call.arguments) == 1:  # another count is the functions rule's error 2003
+            (argument,) = call.arguments
+            value = held_value(argument, scope.dialect)
+            holds, wanted = domain
+            if value is not None and not holds(value):
+                detail = f"{call.function} of {value:.15g}: its value must be {wanted}"
+                yield Finding(scope.unit, mint_error(3, argument.span, detail))
+        elif call.function in _GROWING and _too_large(call, scope):
+            yield Finding(
+                scope.unit, mint_error(3, call.span, f"the result of {call.function} is too large for a Mint number")
+            )
+
+
+def _too_large(call: n.Call, scope: LineScope) -> bool:
+    """Whether ``call`` has constant arguments and a result larger than any number."""
+    count, function = _GROWING[call.function]
+    values = [held_value(argument, scope.dialect) for argument in call.arguments]
+    if len(values) != count or None in values:
+        return False
+    try:
+        function(*values)
+    except OverflowError:
+        return True
+    except ValueError:  # no real result: not a size
+        return False
+    return False

@@ -27,7 +27,7 @@ from mintlang.runtime.errors import ErrorStyle, MintError, NotSimulated
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.observation import AxisState, Observation, Refused, axis_state
-from mintlang.runtime.scenario import ScenarioFileError, merge, parse_directives
+from mintlang.runtime.scenario import ScenarioFileError, ignored_directives, merge, parse_directives
 from mintlang.runtime.scenario.expectations import Expectation, Outcome, TerminalExpectation, evaluate, not_reached
 from mintlang.runtime.scenario.stimulus import Scenario
 from mintlang.runtime.simulation import Limits, Simulator, Stop
@@ -50,6 +50,7 @@ class RunResult:
     terminal_dropped: int = 0  # characters printed before those ``terminal`` keeps
     refused: bool = False  # the controller's compiler rejected a file: the program never ran (``stop`` says why)
     read_leniently: tuple[str, ...] = ()  # what the controller would refuse, run as mint check's safe fix writes it
+    ignored_directives: tuple[str, ...] = ()  # REM @sim and @expect lines of the configuration file, not applied
 
 
 @record
@@ -125,6 +126,7 @@ def run_source(
     on_start: Callable[[Controller], None] | None = None,
     on_simulator: Callable[[Simulator], None] | None = None,
     name: str = "program",
+    config_name: str = "configuration",
     functions: Mapping[str, Callable[..., float]] | None = None,
 ) -> RunResult:
     """Run a program (and its configuration file) to the end or a limit; never raises for the program's faults.
@@ -133,7 +135,8 @@ def run_source(
     controllers: a controller of the other generation is a ``ValueError``). The
     program's own ``REM @sim`` directives are merged under ``scenario``; a
     directive that cannot be read raises ``ScenarioFileError`` before anything runs,
-    naming the program ``name`` (its path, on the command line). A file the
+    naming the program ``name`` (its path, on the command line); one in the
+    configuration ``config_name`` is not applied but noted (``ignored_directives``). A file the
     controller's compiler rejects does not run: when it is the program, the
     configuration still runs first, as on the controller.
 
@@ -160,7 +163,8 @@ def run_source(
     hooks = _Hooks(echo, on_tick, on_start, on_simulator, functions)
     result = _simulate(model, simulated, scenario, limits or Limits(), refused, hooks=hooks)
     lenient = _read_leniently(analysis)
-    return replace(result, read_leniently=lenient) if lenient else result
+    ignored = ignored_directives(config, config_name, dialect) if config is not None else ()
+    return replace(result, read_leniently=lenient, ignored_directives=ignored) if lenient or ignored else result
 
 
 def _ending_at_the_last_check(limits: Limits, expectations: tuple[Expectation, ...]) -> Limits:

@@ -165,6 +165,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         echo=stdout.write,
         on_tick=recorders.on_tick,
         name=str(program),
+        config_name=str(config_path),
     )
     with _on_sigterm(termination):
         with (
@@ -177,7 +178,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
             wall_s = time.perf_counter() - started
         stdout.flush()
         if not quiet:
-            for note in result.read_leniently:
+            for note in (*result.read_leniently, *result.ignored_directives):
                 errors.line(f"warning: {note}", "yellow")
         if not (quiet and result.stop.reason in (StopReason.END, StopReason.UNTIL)):
             _describe_stop(result, errors)

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 from mintlang.lazy import import_when_used
 
 if TYPE_CHECKING:
-    from mintlang.runtime.scenario.directives import parse_directives
+    from mintlang.runtime.scenario.directives import ignored_directives, parse_directives
     from mintlang.runtime.scenario.expectations import (
         STOP_REASONS,
         Comparison,
@@ -72,6 +72,7 @@ __all__ = [
     "evaluate",
     "expectations_at",
     "expectations_pass",
+    "ignored_directives",
     "load_scenario",
     "merge",
     "parse_directives",
@@ -84,7 +85,7 @@ __all__ = [
 import_when_used(
     __name__,
     {
-        "parse_directives": "mintlang.runtime.scenario.directives",
+        **dict.fromkeys(["ignored_directives", "parse_directives"], "mintlang.runtime.scenario.directives"),
         **dict.fromkeys(
             [
                 "STOP_REASONS",

@@ -7,6 +7,8 @@ counts and text inside a string never does.
 
 from __future__ import annotations
 
+import re
+from collections.abc import Iterator
 from functools import partial
 
 from mintlang.analysis.suggestions import did_you_mean
@@ -33,13 +35,7 @@ def parse_directives(
     """
     dialect = Dialect(dialect)
     collector = Collector(source, controller, dialect)
-    for number, (_, line) in enumerate(lex(source_text, dialect).lines, start=1):
-        if line.comment_start < 0:
-            continue
-        found = DIRECTIVE.match(line.text, line.comment_start, line.content_end)
-        kind = meant_kind(found["word"]) if found is not None else None
-        if found is None or kind is None:
-            continue
+    for number, found, kind in _directives(source_text, dialect):
         if kind != found["word"].lower():
             message = f"unknown directive '@{found['word']}'; {did_you_mean('@' + kind)}"
             collector.error(number, message, column=found.start("word"))  # the column of its @, from 1
@@ -53,3 +49,27 @@ def parse_directives(
         else:
             collector.add(number, partial(expectation, phrase, Origin(source, number), dialect))
     return collector.result()
+
+
+def ignored_directives(source_text: str, source: str, dialect: Dialect | str = Dialect.V4) -> tuple[str, ...]:
+    """A warning for each directive in a file they are not read from (a configuration file), at its ``@``.
+
+    Directives script the program's run, and are read from the program only: one written elsewhere would
+    otherwise do nothing in silence, and a check meant to fail the run would pass unnoticed.
+    """
+    return tuple(
+        f"{source}:{number}:{found.start('word')}: @{found['word']} is read only from the program, not from its"
+        " configuration file: this one is ignored"
+        for number, found, _ in _directives(source_text, Dialect(dialect))
+    )
+
+
+def _directives(source_text: str, dialect: Dialect) -> Iterator[tuple[int, re.Match[str], str]]:
+    """Each comment that is a directive, or one slip from one: its line from 1, its match and the kind meant."""
+    for number, (_, line) in enumerate(lex(source_text, dialect).lines, start=1):
+        if line.comment_start < 0:
+            continue
+        found = DIRECTIVE.match(line.text, line.comment_start, line.content_end)
+        kind = meant_kind(found["word"]) if found is not None else None
+        if found is not None and kind is not None:
+            yield number, found, kind

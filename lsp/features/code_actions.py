@@ -9,7 +9,7 @@ Mint v4" are ``migration``'s, resolved when picked.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 
 from lsprotocol import types
 
@@ -25,20 +25,32 @@ def _overlaps(span: mintlang.Span, start: int, end: int) -> bool:
     return span.start <= end and start <= span.end
 
 
+def _named(code: str, where: types.Range) -> tuple[str, int, int, int, int]:
+    """A diagnostic as a client names it back: its code and range (lsprotocol's ranges are unhashable)."""
+    return code, where.start.line, where.start.character, where.end.line, where.end.character
+
+
 def _edits(snapshot: Snapshot, edits: tuple[mintlang.Edit, ...]) -> types.WorkspaceEdit:
     positions = snapshot.positions
     changes = [types.TextEdit(range=positions.range(edit.span), new_text=edit.text) for edit in edits]
     return types.WorkspaceEdit(changes={snapshot.uri: changes})
 
 
-def quick_fixes(snapshot: Snapshot, selection: types.Range) -> Iterator[types.CodeAction]:
-    """The fixes of the diagnostics in ``selection``, each once: one DIM declares a name for all its uses, and
-    one "Ignore" comment silences a code for every diagnostic of it on its line."""
+def quick_fixes(
+    snapshot: Snapshot, selection: types.Range, named: Sequence[types.Diagnostic] = ()
+) -> Iterator[types.CodeAction]:
+    """The fixes of the diagnostics in ``selection``, or ``named`` by the client on its lines, each once: one DIM
+    declares a name for all its uses, and one "Ignore" comment silences a code for every diagnostic of it on its
+    line. Neovim asks at its cursor and names every diagnostic of the cursor's line, wherever it stands on it."""
     start, end = snapshot.positions.span(selection)
     several_lines = selection.start.line != selection.end.line
+    lines = range(selection.start.line, selection.end.line + 1)
+    wanted = {_named(str(d.code), d.range) for d in named if d.range.start.line in lines}
     offered: set[tuple[str, tuple[mintlang.Edit, ...]]] = set()
     for diagnostic in snapshot.diagnostics:
-        if not _overlaps(diagnostic.span, start, end):
+        if not _overlaps(diagnostic.span, start, end) and (
+            _named(diagnostic.code, snapshot.positions.range(diagnostic.span)) not in wanted
+        ):
             continue
         fixes: list[tuple[mintlang.Fix, bool | None]] = [(fix, len(diagnostic.fixes) == 1) for fix in diagnostic.fixes]
         if diagnostic.code != UNUSED_SUPPRESSION:  # its own fix removes the comment
@@ -76,7 +88,11 @@ def register(server: MintServer) -> None:
         if snapshot is None:
             return []
         only = [str(kind) for kind in params.context.only] if params.context.only else None
-        found = list(quick_fixes(snapshot, params.range)) if _wanted(types.CodeActionKind.QuickFix, only) else []
+        found = (
+            list(quick_fixes(snapshot, params.range, params.context.diagnostics))
+            if _wanted(types.CodeActionKind.QuickFix, only)
+            else []
+        )
         if _wanted(abbreviations.KIND, only):
             found.extend(abbreviations.actions(snapshot, params.range))
         found.extend(migration.actions(server, snapshot, [kind for kind in migration.KINDS if _wanted(kind, only)]))

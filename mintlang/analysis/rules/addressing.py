@@ -357,11 +357,9 @@ def _axis_list(unit: Unit, selector: n.Selector, scope: LineScope) -> Iterator[F
         detail = f"{len(axes)} axes listed, {scope.controller.title} has {scope.controller.axis_count}"
         yield Finding(unit, mint_error(2017, selector.span, detail))
     seen: set[int] = set()
-    between = "an axis number is missing between the commas"
-    missing = "no axis number between the brackets" if len(axes) == 1 else between  # GO[] has no comma
-    for item in axes:
+    for place, item in enumerate(axes):
         if item is None:
-            yield Finding(unit, mint_error(2001, selector.span, missing))
+            yield Finding(unit, mint_error(2001, selector.span, _missing_axis(place, len(axes))))
             continue
         if not isinstance(item, n.Number | n.VariableRef | n.ConstantRef):
             detail = "an axis number in brackets must be a number or a simple variable (use the dot: KW.(a+1))"
@@ -374,6 +372,17 @@ def _axis_list(unit: Unit, selector: n.Selector, scope: LineScope) -> Iterator[F
             seen.add(axis)
             if not too_many:  # 2017 already says the list does not fit
                 yield from _axis_number(unit, item, scope)
+
+
+def _missing_axis(place: int, count: int) -> str:
+    """Where the empty place of an axis list is, as the author fills it (000:18909-18914)."""
+    if count == 1:  # GO[] has no comma
+        return "no axis number between the brackets"
+    if place == count - 1:
+        return "an axis number is missing after the last comma"
+    if place == 0:
+        return "an axis number is missing before the first comma"
+    return "an axis number is missing between the commas"
 
 
 def _axis_number(unit: Unit, item: n.Expression | None, scope: LineScope) -> Iterator[Finding]:

@@ -71,12 +71,14 @@ def writes_any(context: Context, names: Collection[str]) -> bool:
 
 def _assigned(context: Context, names: frozenset[str]) -> Iterator[str]:
     """The names assigned as variables and the words unparsable statements write (``FOLERRORFATAL
-    = 2;``, a v4 fill the v3 reader cannot parse), on the lines that may write one of ``names``.
-    Read from the syntax as parsed: a statement's text starts at its line's origin plus its own start."""
+    = 2;``, a v4 fill the v3 reader cannot parse), on the lines that may write one of ``names``,
+    each in upper case as written: the v3 reader knows a variable by its first ten characters, but
+    ``DRIVEENABLE = 1`` is no write of ``DRIVEENABLEOUTPUT``. Read from the syntax as parsed: a
+    statement's text starts at its line's origin plus its own start."""
     for file, line in context.placed(n.SyntaxError_, *map(name_tag, names)):
         for statement in n.flatten_statements(line.syntax.statements):
             if isinstance(statement, n.Assignment):
-                yield statement.target.name.identity
+                yield statement.target.name.text.upper()
             elif type(statement) is n.SyntaxError_:
                 word = unparsed_write(file.text[line.origin + statement.span.start : line.origin + statement.span.end])
                 if word is not None:

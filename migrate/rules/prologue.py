@@ -24,6 +24,7 @@ from mintlang.migrate.rules.base import Action, Rule, keyword_refs
 from mintlang.migrate.rules.notes import prologue_notes
 from mintlang.records import record
 from mintlang.semantic.events import EventKind, event_of
+from mintlang.syntax.nodes import identity
 
 
 @record
@@ -87,10 +88,11 @@ def _stopping(context: Context) -> tuple[int, ...] | None:
 
 
 def _mentions(context: Context, names: frozenset[str]) -> bool:
-    """Any use of ``names``, as a v3 keyword or as a v4 keyword the v3 reader takes for a name."""
+    """Any use of ``names``, as a v3 keyword or as a v4 keyword the v3 reader takes for a name
+    (by its first ten characters: ``STOPINPUTMODE`` is the name ``STOPINPUTM``)."""
     if next(keyword_refs(context, *names), None) is not None:
         return True
-    return not names.isdisjoint(_user_names(context))
+    return not frozenset(map(identity, names)).isdisjoint(_user_names(context))
 
 
 @per_pass

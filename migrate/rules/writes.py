@@ -9,7 +9,7 @@ from mintlang.diagnostics import Span
 from mintlang.migrate.context import Context, FileView, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.axes import default_axes, selector_axes
-from mintlang.migrate.rules.base import Action, Rule, selector_text, values_text
+from mintlang.migrate.rules.base import Action, Rule, keyword_refs, selector_text, values_text, written
 from mintlang.migrate.rules.spelling import like
 from mintlang.migrate.rules.statements import Refusal, StatementRule
 from mintlang.syntax import nodes as n
@@ -26,8 +26,8 @@ class AccelAlsoDecel(Rule):
     are independent. So every ACCEL write gets ``: DECEL<axes> = <same values>`` after it
     (unless a DECEL of the same axes already follows it on the line). A DECEL write is left as
     it is: without the bit v3 used it until the next ACCEL write overwrote it (v3:7203,
-    v3:6027), which the DECEL written beside that ACCEL does in v4. A program that touches
-    AXISCON is left to the user.
+    v3:6027), which the DECEL written beside that ACCEL does in v4. A program that may set
+    AXISCON bit 0 (a value with it set, or one computed) is left to the user.
 
     The copy must compute what the ACCEL write computed. Values that read ACCEL (or
     ACCELTIME), as ``ACCEL = ACCEL * 2`` does, would read the new value after the write, so
@@ -42,7 +42,7 @@ class AccelAlsoDecel(Rule):
     pairs: ClassVar[dict[str, str]] = {"ACCEL": "DECEL", "ACCELTIME": "DECELTIME"}
 
     def apply(self, context: Context) -> Iterator[Action]:
-        axiscon = next(iter(context.keyword_uses("AXISCON")), None) is not None
+        axiscon = _decel_may_be_on(context)
         for file, before, statement, after in context.neighbours(*map(statement_tag, self.pairs)):
             accel = _accel(statement)
             if accel is None:
@@ -83,6 +83,18 @@ class AccelAlsoDecel(Rule):
         if written is not None and _same_axes(file, accel, written):
             return True
         return _normal(file.slice(beside.span)) == _normal(_decel_write(file, accel, decel))
+
+
+def _decel_may_be_on(context: Context) -> bool:
+    """Whether a write of AXISCON may set bit 0, which turns DECEL on (v3:6027): one whose values
+    are not all constants with the bit clear (``AXISCON.0 = AXISCON.0 | 01``, v3:7212)."""
+    return any(
+        not isinstance(value, n.Number) or int(value.value) & 1
+        for _, _, statement, keyword in keyword_refs(context, "AXISCON")
+        if written(statement, keyword)
+        for value in statement.values or ()
+        if value is not None
+    )
 
 
 def _reads(accel: n.KeywordStatement, keywords: Iterable[str]) -> bool:

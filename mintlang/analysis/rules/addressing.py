@@ -296,7 +296,7 @@ def _indices(use: KeywordUse, keyword: Keyword, scope: LineScope) -> Iterator[Fi
         number = constant_integer(item, scope.dialect)
         outputs = scope.controller.digital_outputs
         if item is not None and number is not None and (outputs is None or number not in outputs):
-            available = f"channels {outputs}" if outputs is not None else "none"
+            available = _held(outputs)
             detail = f"{keyword.name} channel {number} does not exist on {scope.controller.title} ({available})"
             yield Finding(use.unit, mint_error(8, item.span, detail))
 
@@ -374,6 +374,16 @@ def _axis_list(unit: Unit, selector: n.Selector, scope: LineScope) -> Iterator[F
                 yield from _axis_number(unit, item, scope)
 
 
+def _held(numbers: ChannelRange | None, noun: str = "channel", nouns: str = "channels") -> str:
+    """What a controller has of an axis or channel, read as a whole: "axis 0 only" where the Dot Parameters
+    table gives ``x = 0`` (000:5612-5621), "axes 0 to 7" for a span, "none" where it has none."""
+    if numbers is None:
+        return "none"
+    if numbers.low == numbers.high:
+        return f"{noun} {numbers} only"
+    return f"{nouns} {numbers}"
+
+
 def _missing_axis(place: int, count: int) -> str:
     """Where the empty place of an axis list is, as the author fills it (000:18909-18914)."""
     if count == 1:  # GO[] has no comma
@@ -388,7 +398,9 @@ def _missing_axis(place: int, count: int) -> str:
 def _axis_number(unit: Unit, item: n.Expression | None, scope: LineScope) -> Iterator[Finding]:
     axis = constant_integer(item, scope.dialect)
     if item is not None and axis is not None and axis not in scope.controller.axes:
-        detail = f"axis {axis} does not exist on {scope.controller.title} (axes {scope.controller.axes})"
+        detail = (
+            f"axis {axis} does not exist on {scope.controller.title} ({_held(scope.controller.axes, 'axis', 'axes')})"
+        )
         yield Finding(unit, mint_error(2, item.span, detail))
 
 
@@ -414,7 +426,7 @@ def _channel(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
         return
     valid = channels(scope.controller)
     if number is not None and (valid is None or number not in valid):
-        available = f"channels {valid}" if valid is not None else "none"
+        available = _held(valid)
         detail = f"{ref.keyword} channel {number} does not exist on {scope.controller.title} ({available})"
         yield Finding(use.unit, mint_error(code, span, detail))
 

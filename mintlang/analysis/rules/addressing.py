@@ -194,17 +194,39 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
     if keyword.name.startswith("REMOTE"):
         yield from _can_address(use)
     elif keyword.name in ("COMMSMODE", "SERIALBAUD"):
+        yield from _one_number_after_the_dot(use)
         yield from _terminal(use, scope)
     elif keyword.addressing is Addressing.AXIS:
+        yield from _one_number_after_the_dot(use)
         yield from _axes(use, scope, keyword.name)
         yield from _indices(use, keyword, scope)
     elif keyword.addressing is Addressing.CHANNEL or _channel_family(keyword.name):
+        yield from _one_number_after_the_dot(use)
         yield from _channel(use, scope)
     elif scope.dialect.modern and keyword.documented and keyword.formats:
         yield from _nothing_addressed(use, keyword)
 
 
 _ADDRESSED_KINDS = frozenset({KeywordKind.PARAMETER, KeywordKind.COMMAND})
+
+
+def _one_number_after_the_dot(use: KeywordUse) -> Iterator[Finding]:
+    """A dot names one axis or channel (000:678-679); several axes are listed in brackets (000:563-566), and a
+    channel keyword addresses one channel a call (000:548-549). A second number after the dot (``POS.1.5``), or
+    a dot after a channel glued to its keyword (``OUT1.2``), is an addressing no format shows: 2003, as
+    ``TIME.5`` is. Only the CAN keywords chain two, a bus and a node (``REMOTEIN.2.65``, 000:18607)."""
+    ref = use.keyword
+    selector = ref.selector
+    if selector is None or not selector.dot or not selector.items:
+        return
+    if ref.channel is not None:
+        span, detail = selector.span, f"{ref.spelling} already names channel {ref.channel}: no dot after it"
+    elif len(selector.items) > 1 and (first := selector.items[0]) is not None:
+        span = Span(first.span.end, selector.span.end)
+        detail = f"{ref.keyword} takes one axis or channel number after its dot (axes are listed in brackets)"
+    else:
+        return
+    yield Finding(use.unit, mint_error(2003, span, detail))
 
 
 def _nothing_addressed(use: KeywordUse, keyword: Keyword) -> Iterator[Finding]:

@@ -94,12 +94,16 @@ def unparsed_write(text: str) -> str | None:
     return found[1].upper() if found else None
 
 
+V3_AXES = 3  # "MINT only supports the control of 3 axes on one controller" (v3:782)
+
+
 def on_target(context: Context, axes: tuple[int, ...] | None) -> tuple[int, ...]:
     """``axes`` without those the target controller lacks, for the statements the migrator writes:
     one naming such an axis is error 2017 or 2 (v4:19047, v4:18514), and the lines using it are
-    flagged where they are (X-CHECK). Every axis of the target when ``axes`` is None (not known)
-    or names none it has: the moves flagged will have to run on one of those. ``()`` stays ``()``."""
-    every = tuple(range(context.controller.axis_count))
+    flagged where they are (X-CHECK). The axes of a v3 controller the target has when ``axes`` is
+    None (not known) or names none it has: a v3 program addressed no other, and the moves flagged
+    will have to run on one of those. ``()`` stays ``()``."""
+    every = tuple(range(min(V3_AXES, context.controller.axis_count)))
     if axes is None:
         return every
     return tuple(axis for axis in axes if axis in context.controller.axes) or (every if axes else ())

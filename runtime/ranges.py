@@ -8,10 +8,11 @@ example (000:4600-4606).
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, ValueRange
-from mintlang.keyworddb.supplements import narrowed
+from mintlang.keyworddb.supplements import narrowed, whole_only
 from mintlang.records import record
 from mintlang.runtime.errors import MintError
 
@@ -25,6 +26,7 @@ class Bounds:
     exclusive_minimum: bool  # ACCEL: 0.0 < x
     allowed: frozenset[float] | None = None  # a mode keyword's values, where they are not a range
     exclusive_maximum: bool = False  # OUT: x < 4096
+    whole: bool = False  # a mode keyword's: fractions select no mode (``supplements.whole_only``)
 
 
 UNBOUNDED = Bounds(None, None, False)
@@ -36,7 +38,8 @@ def table_bounds(keyword: str, controller: Controller) -> Bounds:
     record = database().keywords.get(keyword)
     row = record.attributes_for(controller) if record is not None else None
     found = narrowed(keyword, row.range if row is not None else None)
-    return UNBOUNDED if found is None else bounds_of(found)
+    bounds = UNBOUNDED if found is None else bounds_of(found)
+    return replace(bounds, whole=True) if whole_only(keyword) else bounds
 
 
 def bounds_of(found: ValueRange) -> Bounds:
@@ -75,7 +78,8 @@ def check_range(keyword: str, value: float, limits: Bounds, channel: int | None 
     """
     checked = value * scale
     low, high = limits.minimum, limits.maximum
-    refused = limits.allowed is not None and checked not in limits.allowed
+    fraction = limits.whole and value != int(value)  # a mode keyword's value selects no mode
+    refused = fraction or (limits.allowed is not None and checked not in limits.allowed)
     too_low = low is not None and (checked <= low if limits.exclusive_minimum else checked < low)
     too_high = high is not None and (checked >= high if limits.exclusive_maximum else checked > high)
     if refused or too_low or too_high:
@@ -92,7 +96,11 @@ def shown(value: float) -> str:
 
 
 def accepted(limits: Bounds) -> str:
-    """What ``limits`` accept, in words: ``2 to 16777215``, ``more than 0``, ``0, 1, 2, 3 or 5``."""
+    """What ``limits`` accept, in words: ``2 to 16777215``, ``more than 0``, ``0, 1, 2, 3 or 5``, ``whole numbers:
+    0 to 5``."""
+    if limits.whole and limits.allowed is None:
+        bounded = accepted(replace(limits, whole=False))
+        return f"whole numbers: {bounded}" if bounded else "whole numbers"
     if limits.allowed is not None:
         *others, last = (shown(value) for value in sorted(limits.allowed))
         return f"{', '.join(others)} or {last}" if others else last

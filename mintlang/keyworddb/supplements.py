@@ -11,9 +11,11 @@ only is error 2000 in both, a value outside the range error 3.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from functools import cache
 from types import MappingProxyType
 
 from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Attributes, Controller, Keyword, ValueRange
 
 _ALL = tuple(Controller)  # each row applies wherever the keyword itself exists (its own controllers)
@@ -67,6 +69,29 @@ NARROWED: Mapping[str, ValueRange] = MappingProxyType(
 def narrowed(keyword: str, printed: ValueRange | None) -> ValueRange | None:
     """The range ``mint check`` and ``mint-run`` hold ``keyword``'s values to where its table prints ``printed``."""
     return NARROWED.get(keyword, printed) if printed is not None else None
+
+
+_MODES_WITHOUT_CONSTANTS = frozenset({"BANK"})
+"""Keywords whose values are modes though the guide names none with a constant: BANK's are the cards, in
+its table of values (000:7345-7348)."""
+
+
+@cache
+def whole_only(keyword: str) -> bool:
+    """Whether ``mint check`` and ``mint-run`` hold ``keyword``'s values to whole numbers (error 3 for a fraction).
+
+    A keyword "will accept fractional values" where its range "specifies a decimal part (.0)"
+    (000:5647-5650). The guide does not keep to that for gains (its range 0 ≤ x ≤ 10000, KDERIV = 1.5 in
+    its example: 000:12755), so it is held only where the values are modes, which a fraction cannot
+    select: those the entry names with predefined constants (CONFIG's motor types, FOLLOWMODE's modes,
+    CAM's bits: 000:8431, 000:10846, 000:7595) and whose range prints no decimal part, and BANK's cards.
+    """
+    if keyword in _MODES_WITHOUT_CONSTANTS:
+        return True
+    record = database().keywords.get(keyword)
+    if record is None or not record.constants:
+        return False
+    return not any(row.range is not None and row.range.fractional for row in record.attributes)
 
 
 POSITIVE_ONLY = frozenset({"SCALE", "ENCODERSCALE"})

@@ -21,7 +21,7 @@ from mintlang.runtime.motion.flying import LockedMove, Step, StopRule
 from mintlang.runtime.motion.master import Link, SetPoints, link, master_distance
 from mintlang.runtime.motion.moves import PROFILER_TICK_MS, Move
 from mintlang.runtime.motion.superimposed import OffsetTrack
-from mintlang.runtime.ranges import OUT_OF_RANGE
+from mintlang.runtime.ranges import OUT_OF_RANGE, check_range, table_bounds
 
 NO_RAMP, RAMP, CLUTCH, CONTINUOUS_CLUTCH = 0, 1, 2, 3
 TICK_S = PROFILER_TICK_MS / 1000.0
@@ -197,10 +197,11 @@ def register(table: KeywordTable, motion: Motion) -> None:
             raise MintError(OUT_OF_RANGE, axis.number, f"FOLLOWDENOM = {value:g}")
         state[axis.number].denominator = value  # used by the next FOLLOW (FG-3)
 
+    modes = table_bounds("FOLLOWMODE", table.controller)  # its four modes: whole numbers 0 to 3 (000:10846)
+
     def follow_mode(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)
-        if value != int(value) or not NO_RAMP <= value <= CONTINUOUS_CLUTCH:
-            raise MintError(OUT_OF_RANGE, axis.number, f"FOLLOWMODE = {value:g}")
+        check_range("FOLLOWMODE", value, modes, axis.number)
         if _following(axis) is not None:
             raise MintError(MOTION_IN_PROGRESS, axis.number, "FOLLOWMODE cannot change while following")
         state[axis.number].mode = int(value)

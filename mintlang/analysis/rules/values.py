@@ -14,7 +14,7 @@ from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import LineScope, Use
 from mintlang.keyworddb import database, supplements
 from mintlang.keyworddb.model import ValueRange
-from mintlang.semantic.constants import constant_value
+from mintlang.semantic.constants import constant_value, held_value
 from mintlang.syntax import nodes as n
 
 
@@ -34,16 +34,21 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         limits = supplements.narrowed(use.keyword.keyword, attributes.range if attributes is not None else None)
         if limits is not None and limits.allowed is None and (limits.minimum is None or limits.maximum is None):
             limits = None
-        if limits is None and not positive:
+        whole = supplements.whole_only(use.keyword.keyword)
+        if limits is None and not (positive or whole):
             continue
         scaled = attributes is not None and attributes.scaled
         for value in use.statement.values or ():
             number = constant_value(value, dialect)
             if value is None or number is None:
                 continue
-            # Whole-number ranges are not enforced: the manual prints "0 ≤ x ≤ 10000" for KDERIV
-            # and then writes KDERIV = 1.5 in its example.
-            if positive and number <= 0:
+            # Whole-number ranges are enforced for modes only: the manual prints "0 ≤ x ≤ 10000" for
+            # KDERIV and then writes KDERIV = 1.5 in its example (supplements.whole_only).
+            held = held_value(value, dialect) if whole else None
+            if held is not None and not held.is_integer():
+                detail = f"{held:.7g} is not a whole number: {use.keyword.keyword} takes one of its modes"
+                yield Finding(use.unit, mint_error(3, value.span, detail))
+            elif positive and number <= 0:
                 yield Finding(use.unit, mint_error(3, value.span, f"{use.keyword.keyword} takes only a positive value"))
             elif limits is not None and not (_scaled_can_hold(limits, number) if scaled else limits.holds(number)):
                 detail = f"{number:.15g} is outside the range of {use.keyword.keyword} ({limits.text})"

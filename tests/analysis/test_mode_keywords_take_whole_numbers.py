@@ -1,0 +1,47 @@
+"""A fraction written to a keyword whose values are modes is error 3 in mint check and mint-run alike.
+
+A keyword "will accept fractional values" when its range "specifies a decimal part (.0)"
+(000:5647-5650); the ranges of CONFIG (0 - 5), FOLLOWMODE (0 ≤ x ≤ 3), CAM, BANK (0 ≤ x ≤ 2),
+STOPINPUTMODE and ADCMODE print none, and their entries list the values as modes, motor types,
+cards or bits (000:7345, 000:7595, 000:8431, 000:10846). A value "outside of the accepted range of
+values" is #3, "Data specified out of range" (000:18518-18521). A gain is no mode: KDERIV's range
+prints no decimal part either, yet its entry writes KDERIV = 1.5 (000:12755), so it is not held to
+whole numbers. Columns are those of the value, counted by hand from 1.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from mintlang.runtime.interpreter.vm import StopReason
+from tests.analysis.placed import placed_codes
+from tests.runtime.running import simulate
+
+_FRACTIONS = [
+    pytest.param("CONFIG.0 = 0.5\n", 12, id="CONFIG"),
+    pytest.param("FOLLOWMODE.0 = 0.5\n", 16, id="FOLLOWMODE"),
+    pytest.param("CAM.0 = 0.5\n", 9, id="CAM"),
+    pytest.param("BANK = 0.5\n", 8, id="BANK"),
+    pytest.param("STOPINPUTMODE.0 = 1.5\n", 19, id="STOPINPUTMODE"),
+    pytest.param("ADCMODE.0 = 0.5\n", 13, id="ADCMODE"),
+    pytest.param("CONFIG.0 = _cfSERVO / 2\n", 12, id="a constant expression"),
+]
+
+
+@pytest.mark.parametrize(("source", "column"), _FRACTIONS)
+def test_mint_check_reports_error_3_at_the_fraction_and_mint_run_stops_on_it(source: str, column: int) -> None:
+    assert placed_codes(source) == [("E0003", 1, column)]
+    result = simulate(source, controller="nextmove-pci")  # the controller mint check takes by default
+    assert (result.stop.reason, result.err, result.erl) == (StopReason.ERROR, 3, 1)
+
+
+@pytest.mark.parametrize(
+    "source",
+    [
+        pytest.param("CONFIG.0 = _cfSERVO\nFOLLOWMODE.0 = 1.0\nSTOPINPUTMODE.0 = 2\n", id="whole modes"),
+        pytest.param("KDERIV.0 = 1.5\n", id="a gain, as the guide writes it"),
+    ],
+)
+def test_whole_modes_and_fractional_gains_pass_both_tools(source: str) -> None:
+    assert placed_codes(source) == []
+    assert simulate(source, controller="nextmove-pci").stop.reason is StopReason.END

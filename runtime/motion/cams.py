@@ -21,7 +21,7 @@ from mintlang.runtime.motion.axis import MD_CAM, MOTION_IN_PROGRESS, Axis, Reque
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.master import Link, SetPoints, link, master_distance
 from mintlang.runtime.motion.moves import Move
-from mintlang.runtime.ranges import OUT_OF_RANGE
+from mintlang.runtime.ranges import OUT_OF_RANGE, check_range, table_bounds
 
 ABSOLUTE, TRUE_ABSOLUTE, CONTINUOUS, NO_INTERPOLATION, TRIGGER, RETRIGGER = 1, 2, 4, 8, 16, 32
 TABLE_ERROR = 13
@@ -207,6 +207,7 @@ class CamMove:
 
 def register(table: KeywordTable, motion: Motion) -> None:
     state = [CamSettings() for _ in motion.axes]
+    modes = table_bounds("CAM", table.controller)  # every bit the entry documents, past its table's 15
 
     def camtable(arguments: tuple[ArrayArgument, ...]) -> bool:
         """CAMTABLE(axis, positions, masters | NULL): select the tables, reset CAMSTART/CAMEND/CAMINDEX (FG-11)."""
@@ -227,8 +228,7 @@ def register(table: KeywordTable, motion: Motion) -> None:
         """CAM = mode: load a cam into the buffer of an idle axis; GO starts it (FG-12, FG-14)."""
         axis = motion.axis(channel)
         settings = state[axis.number]
-        if value != int(value) or not 0 <= value <= 15:
-            raise MintError(OUT_OF_RANGE, axis.number, f"CAM = {value:g}")
+        check_range("CAM", value, modes, axis.number)
         if int(value) & (TRIGGER | RETRIGGER):
             raise NotSimulated("CAM", "_cmTRIGGER/_cmRETRIGGER: the fast latch trigger")
         settings.range()

@@ -90,3 +90,14 @@ def test_a_bad_table_is_error_13_when_the_cam_is_loaded() -> None:
 def test_a_cam_needs_an_idle_axis() -> None:
     source = "DIM t(3) = 2, 1, 2\nCAMTABLE(1, t, NULL)\nJOG.1 = 10\nCAM.1 = 0\n"
     assert simulate(source, until_ms=100).err == 10
+
+
+def test_cam_takes_every_mode_bit_its_entry_documents_and_nothing_else() -> None:
+    """[000:7595-7620]: CAM's bits run up to 5 (_cmRETRIGGER, 32), past the 0 to 15 its table prints; the
+    project reads a bit mask as every documented bit (README, decisions), as mint check does. 48 is a mode
+    mint-run does not simulate (the fast latch), not error 3; 64 sets a bit CAM lacks, 1.5 selects no mode."""
+    selected = "DIM t(3) = 2, 1, 2\nCAMTABLE(1, t, NULL)\n"
+    triggered = simulate(selected + "CAM.1 = _cmTRIGGER + _cmRETRIGGER\n", until_ms=100)
+    assert triggered.err == -1 and "not simulated" in triggered.stop.message
+    assert simulate(selected + "CAM.1 = 64\n", until_ms=100).err == 3
+    assert simulate(selected + "CAM.1 = 1.5\n", until_ms=100).err == 3

@@ -2,7 +2,7 @@
 
 The checker works a value out as the controller holds it where that decides a finding: a divisor
 that rounds to zero, a literal or a result too large to hold. mint-run's EXP and POW are these
-functions too, so both tools find the same results too large (error 3).
+functions too, so both tools find the same results without a value.
 """
 
 from __future__ import annotations
@@ -25,5 +25,8 @@ def exp(x: float) -> float:
 
 def power(x: float, y: float) -> float:
     """``POW(x, y)`` as the controller holds it; OverflowError when it is too large for a number,
-    ValueError when there is no real result (0 to a negative power, a negative to a fraction)."""
+    ZeroDivisionError for 0 to a negative power (1 / 0 ** -y), ValueError for a negative number to a
+    fraction, which has no real value."""
+    if x == 0 and y < 0:
+        raise ZeroDivisionError("0 to a negative power")
     return rounded(math.pow(x, y))

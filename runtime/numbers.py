@@ -186,8 +186,10 @@ def _pow(x: float, y: float) -> float:
     """``POW(x, y)`` without NextMove's exponent restriction (NM-5 RC); 0 to a negative power is a divide by zero."""
     try:
         return binary32.power(x, y)
+    except ZeroDivisionError:
+        raise MintError(DIVIDE_BY_ZERO, detail="POW of 0 to a negative power") from None
     except ValueError:
-        raise MintError(DIVIDE_BY_ZERO if x == 0 else OUT_OF_RANGE, detail="POW has no real result") from None
+        raise MintError(OUT_OF_RANGE, detail="POW has no real result") from None
     except OverflowError:
         raise MintError(OUT_OF_RANGE, detail="POW too large") from None
 

@@ -56,3 +56,23 @@ def test_mint_run_stops_with_error_3_on_the_same_line(source: str, column: int) 
 )
 def test_values_inside_or_unknown_before_the_run_are_not_reported(source: str) -> None:
     assert placed_codes(source) == []
+
+
+@pytest.mark.parametrize(
+    ("source", "error", "column"),
+    [
+        pytest.param("PRINT POW(0, -1)\n", 2021, 7, id="0 to a negative power"),
+        pytest.param("PRINT POW(-8, 0.5)\n", 3, 7, id="a negative number to a fraction"),
+    ],
+)
+def test_a_pow_without_a_real_value_stops_both_tools_alike(source: str, error: int, column: int) -> None:
+    """POW(0, -1) is 1 / 0 (#2021, 000:19063-19070); the square root of -8 is no real number (#3), the
+    choices runtime/BEHAVIOUR.md records as NM-5."""
+    assert placed_codes(source) == [(f"E{error:04d}", 1, column)]
+    result = simulate(source)
+    assert (result.stop.reason, result.err, result.erl) == (StopReason.ERROR, error, 1)
+
+
+def test_a_pow_with_a_real_value_is_not_reported() -> None:
+    """0 to the power 0 is 1, and a negative number to a whole power is real: POW(-2, 3) is -8."""
+    assert placed_codes("PRINT POW(0, 0)\nPRINT POW(-2, 3)\n") == []

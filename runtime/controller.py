@@ -178,7 +178,7 @@ def build_controller(
     supervisor = Supervisor(motion, raise_axis_error, stop_inputs)
     motion.on_error = lambda axis, bit: supervisor.error(axis, bit, clock.now)
     vm.on_fatal = abort_all
-    vm.announce = terminal.announce
+    vm.announce = terminal.announce if layer is not None else _shown_while_echoed(terminal.announce, inert)
     events.errors_latched = lambda: any(axis.axiserror for axis in axes)
 
     events.on_fastin_return = lambda number: setattr(system, "fast_armed", True)
@@ -204,6 +204,16 @@ def build_controller(
         server,
         monitors,
     )
+
+
+def _shown_while_echoed(announce: Callable[[str], None], inert: InertSettings) -> Callable[[str], None]:
+    """The controller's error messages, shown on its terminal only while ECHO's bit 1 is set (000:9549)."""
+
+    def shown(message: str) -> None:
+        if inert.shows_errors():
+            announce(message)
+
+    return shown
 
 
 def _host_port(port: int) -> HostPortServer:

@@ -4,7 +4,9 @@ They configure hardware the simulation has no counterpart for: terminal
 channels and echo (the simulator has one merged terminal), keypads, DAC output modes
 and gearing compensation (the ideal plant has no lag to compensate, spec FG-7).
 A program that sets them runs on; reading one back gives what was written. The
-report lists the ones a run used, so nobody mistakes them for simulated.
+report lists the ones a run used, so nobody mistakes them for simulated. Of
+``ECHO`` only bit 1 is read, by the controller's error messages (``shows_errors``):
+its other bits are the command line's, which a run has not.
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ INERT_SETTINGS: dict[str, float] = {
     "GEARING": 0.0,
     "GEARINGMODE": 0.0,
 }
+_ECHO_ERROR_MESSAGES = 0b10
 
 
 class InertSettings:
@@ -39,6 +42,11 @@ class InertSettings:
             write = ranged(name, table.controller, self.writer(name))
             read = None if name in write_only else self._reader(name, default)
             table.register(name, read=read, write=per_channel(write))
+
+    def shows_errors(self) -> bool:
+        """Whether ECHO's bit 1, set at power-up (7, 000:9539), has the controller show its error messages on
+        the terminal (000:9549): ``ECHO = 0`` leaves only what the program prints (000:9560-9562)."""
+        return bool(int(self.values.get(("ECHO", None), self.settings["ECHO"])) & _ECHO_ERROR_MESSAGES)
 
     def _reader(self, name: str, default: float) -> Callable[[int | None], float]:
         def read(channel: int | None) -> float:

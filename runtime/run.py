@@ -249,7 +249,7 @@ def _simulate(
         stop = Stop(StopReason.ERROR, stop.time_ms, unit, refused.line, refused.statement, refused.message)
         if model.program.dialect is Dialect.V4:  # v3's ERR holds only what #ONERROR can see (001:4916)
             built.vm.record_error(refused.code, refused.line, None)
-        built.terminal.announce(refused.printed)
+        built.vm.announce(refused.printed)
     # a check the run never reached did not hold: dropping it would let a run that stops early pass
     outcomes.extend(not_reached(expectation, stop.time_ms) for expectation in unchecked.values())
     final = Observation(built, stop.reason.value)

@@ -376,13 +376,14 @@ class Simulator:
             following = self.next_change(t)
             if following >= NEVER:
                 following = self._moves_end(t)
-            typed = self._typed(t, self._wall_left(started)) if following >= NEVER else False
+            # at the limit nothing is waited for: the run stops there, as until, blocked or not
+            typed = self._typed(t, self._wall_left(started)) if following >= NEVER and t < until else False
             if typed is None:
                 vm.stop(StopReason.WALL_LIMIT, f"ran {limits.max_wall_s:.1f} s of wall time waiting for keys")
                 break
             if typed:
                 following = t + 1
-            elif following >= NEVER or (following == t + 1 and self._stalled_on_masters(t)):
+            elif t < until and (following >= NEVER or (following == t + 1 and self._stalled_on_masters(t))):
                 vm.stop(StopReason.DEADLOCK, self._deadlock(t))
                 break
             if limits.every_tick:

@@ -7,6 +7,12 @@ still needs the program to end by itself, and ``--until-ms`` given is kept.
 
 The program waits 250 ms per pass (WAIT takes milliseconds, 000:17336-17337), so by 1100 ms four passes
 are done and ``count`` is 4.
+
+A machine idle at its last check, waiting on an input for a part that never comes, is blocked for good
+once the last part has passed; it too ends at its last check, as ``until``: it stopped there as a
+deadlock and the test failed. Inputs are level from their ``at`` time on (the scenario README's stimulus
+table) and a digital input is level triggered by default, so ``PAUSE IN.1`` passes while it is high
+(000:4085-4086): two parts pass by 250 ms.
 """
 
 from __future__ import annotations
@@ -14,6 +20,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner, Result
 
 from mintlang.cli import main
@@ -21,6 +28,10 @@ from tests.runtime.invoking import mint_run, write
 
 ENDLESS = "DIM count = 0\nLOOP\n  WAIT = 250\n  count = count + 1\nENDL\n"
 TIMED = "REM @expect count = 4 at 1100\n"
+IDLE = (
+    "REM @sim input 1 1 at 100\nREM @sim input 1 0 at 150\nREM @sim input 1 1 at 200\nREM @sim input 1 0 at 250\n"
+    "DIM count = 0\nLOOP\n  PAUSE IN.1\n  count = count + 1\n  PAUSE IN.1 = 0\nENDL\n"
+)
 
 
 def _mint_test(folder: Path, text: str, *options: str) -> Result:
@@ -52,12 +63,27 @@ def test_until_ms_given_is_kept(tmp_path: Path) -> None:
     assert (test["verdict"], test["stopped"], test["simulated_ms"]) == ("failed", "until", 600)
 
 
-def test_mint_run_expect_ends_at_the_last_check_and_says_so(tmp_path: Path) -> None:
-    program = write(tmp_path, "machine.mnt", ENDLESS)
-    scenario = write(tmp_path, "checks.toml", '[[expect]]\nwhat = "count"\nequals = 4\nat_ms = 1100\n')
-    result = mint_run(program, "--expect", scenario, "--max-wall-s", "2")
+def test_a_test_of_a_machine_idle_at_its_last_check_ends_there(tmp_path: Path) -> None:
+    result = _mint_test(tmp_path, "REM @expect count = 1 at 120\nREM @expect count = 2 at 300\n" + IDLE)
+    test = _only_test(result)
+    assert (result.exit_code, test["verdict"], test["stopped"], test["simulated_ms"]) == (0, "passed", "until", 300)
+
+
+@pytest.mark.parametrize(("program", "count", "last"), [(ENDLESS, 4, 1100), (IDLE, 2, 300)])
+def test_mint_run_expect_ends_at_the_last_check_and_says_so(
+    tmp_path: Path, program: str, count: int, last: int
+) -> None:
+    machine = write(tmp_path, "machine.mnt", program)
+    scenario = write(tmp_path, "checks.toml", f'[[expect]]\nwhat = "count"\nequals = {count}\nat_ms = {last}\n')
+    result = mint_run(machine, "--expect", scenario, "--max-wall-s", "2")
     assert result.exit_code == 0
-    assert "every expectation was checked (the last at 1100 ms)" in result.output
+    assert f"every expectation was checked (the last at {last} ms)" in result.output
+
+
+def test_a_machine_blocked_before_the_until_time_is_a_deadlock(tmp_path: Path) -> None:
+    """--until-ms past the time it blocks for good: W-4 stops the run there (../shared/spec/runtime.md)."""
+    result = mint_run(write(tmp_path, "machine.mnt", IDLE), "--until-ms", "1000", "--max-wall-s", "2")
+    assert (result.exit_code, "deadlock after" in result.output) == (1, True)
 
 
 def test_mint_run_without_expect_runs_on(tmp_path: Path) -> None:

@@ -20,7 +20,7 @@ from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_PROFILES
 
 def machine(controller: Controller | str | None, dialect: Dialect | str = Dialect.V4) -> ControllerProfile:
     """The controller simulated for a program in ``dialect`` (by default the NextMove PCI for v4, the EuroServo
-    for v3); one of the other generation's guide is a ``ValueError`` naming those that fit."""
+    for v3); one of the other generation's guide, or of none, is a ``ValueError`` naming those that fit."""
     if Dialect(dialect) is Dialect.V3:
         name = str(controller or V3_DEFAULT)
         if name not in V3_PROFILES:
@@ -28,4 +28,8 @@ def machine(controller: Controller | str | None, dialect: Dialect | str = Dialec
         return V3_PROFILES[name]
     if controller in V3_PROFILES:
         raise ValueError(f"{controller} is a controller of the Mint v3 guide: run its programs with dialect v3")
-    return profile(controller or Controller.NEXTMOVE_PCI)
+    try:
+        return profile(controller or Controller.NEXTMOVE_PCI)
+    except ValueError:  # the enum's own message names neither the guide nor the controllers there are
+        names = ", ".join(member.value for member in Controller)
+        raise ValueError(f"{controller} is not a controller of the Mint v4 guide: use one of {names}") from None

@@ -12,6 +12,7 @@ as it is.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import field
 from pathlib import Path
@@ -36,6 +37,7 @@ from mintlang.settings import SettingsError, settings_for
 from mintlang.settings.model import FileSettings, Given
 from mintlang.source import read_source
 
+_THEN = re.compile(r"\bTHEN\b", re.IGNORECASE)  # ends a one-line IF's condition: its statements follow
 AUTO = "auto"  # the dialect the program's text shows (v4 or MintMT), as the editor's setting ``auto`` does
 
 
@@ -193,8 +195,15 @@ def _columns(application: Application, sites: tuple[Site, ...]) -> tuple[int, ..
         found = text.find(site.text, start) if site.text else -1
         columns.append(found + 1 if found >= 0 else 1)
         if found >= 0:
-            searched_from[(site.unit, site.line)] = found + len(site.text)
+            searched_from[(site.unit, site.line)] = found + _own_length(site)
     return tuple(columns)
+
+
+def _own_length(site: Site) -> int:
+    """How much of a statement's text is its own: an IF .. THEN's text goes on with the statements after THEN,
+    which are sites of their own, found next inside it."""
+    then = _THEN.search(site.text) if site.kind == "IfThen" else None
+    return then.end() if then is not None else len(site.text)
 
 
 def _path(value: object, name: str) -> Path | None:

@@ -2,7 +2,7 @@
 
 The same framing as the Language Server Protocol, but DAP has no JSON-RPC
 envelope and no maintained Python library outside debugpy (which debugs
-Python itself): these twenty lines are the whole of it.
+Python itself): these few lines are the whole of it.
 """
 
 from __future__ import annotations
@@ -11,6 +11,7 @@ import json
 from typing import Any, BinaryIO
 
 _LENGTH = b"content-length"
+_CHUNK = 1 << 16  # a body is read this much at a time
 
 
 class FramingError(Exception):
@@ -33,10 +34,12 @@ def read_message(stream: BinaryIO) -> dict[str, Any] | None:
                 length = int(value.strip())
             except ValueError:
                 raise FramingError(f"Content-Length is not a number: {value.strip()!r}") from None
-    if length is None or length < 0:
+            if length < 0:
+                raise FramingError(f"Content-Length is not a length in bytes: {value.strip()!r}")
+    if length is None:
         raise FramingError("a message without a Content-Length header")
-    body = stream.read(length)
-    if len(body) < length:
+    body = _body(stream, length)
+    if body is None:
         return None
     try:
         message = json.loads(body)
@@ -45,6 +48,19 @@ def read_message(stream: BinaryIO) -> dict[str, Any] | None:
     if not isinstance(message, dict):
         raise FramingError("the message body is not a JSON object")
     return message
+
+
+def _body(stream: BinaryIO, length: int) -> bytes | None:
+    """``length`` bytes, read as they come (None if the stream ends first): one read of the whole length
+    allocates it before any byte arrives, and a header claiming gigabytes was a MemoryError."""
+    parts = []
+    while length > 0:
+        part = stream.read(min(length, _CHUNK))
+        if not part:
+            return None
+        parts.append(part)
+        length -= len(part)
+    return b"".join(parts)
 
 
 def write_message(stream: BinaryIO, message: dict[str, Any]) -> None:

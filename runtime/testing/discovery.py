@@ -51,11 +51,13 @@ def discover(paths: Iterable[Path]) -> tuple[list[TestCase], list[Unreadable]]:
     problems = [Unreadable.at(Path(error.filename), _reason(error)) for error in found.unreadable]
     problems += _scenarios_without_program(paths)
     cases: dict[Path, TestCase] = {}
-    for program in found.files:
-        case = _case(program, problems)
+    for named in found.files:
+        program = _program_of(named, problems)
+        case = _case(program, problems) if program is not None else None
         if case is not None:
             cases.setdefault(program.resolve(), case)
-    return sorted(cases.values(), key=lambda case: str(case.program)), problems
+    # a scenario file with no program, named and also below a folder named, is reported once
+    return sorted(cases.values(), key=lambda case: str(case.program)), list(dict.fromkeys(problems))
 
 
 def _scenarios_without_program(paths: Iterable[Path]) -> list[Unreadable]:
@@ -66,12 +68,30 @@ def _scenarios_without_program(paths: Iterable[Path]) -> list[Unreadable]:
     for directory in (path for path in paths if path.is_dir()):
         for folder, _, names in os.walk(directory):
             for name in names:
-                if name.lower().endswith(SCENARIO_SUFFIX):
-                    program = name[: -len(SCENARIO_SUFFIX)] + ".mnt"
-                    if listed_as(program, names) is None:
-                        reason = f"no program {program} beside it, so it runs nothing"
-                        orphans.append(Unreadable.at(Path(folder, name), reason))
+                if name.lower().endswith(SCENARIO_SUFFIX) and listed_as(_program_name(name), names) is None:
+                    orphans.append(_orphan(Path(folder, name)))
     return sorted(orphans, key=lambda orphan: orphan.message)
+
+
+def _program_of(path: Path, problems: list[Unreadable]) -> Path | None:
+    """The program a file named or found stands for: itself, or for a scenario file named on the command line,
+    the program beside it whose test the file holds (None, reported, when there is none)."""
+    if not path.name.lower().endswith(SCENARIO_SUFFIX):
+        return path
+    name = listed_as(_program_name(path.name), names_in(path.parent))
+    if name is None:
+        problems.append(_orphan(path))
+        return None
+    return path.parent / name
+
+
+def _program_name(scenario_name: str) -> str:
+    return scenario_name[: -len(SCENARIO_SUFFIX)] + ".mnt"
+
+
+def _orphan(scenario: Path) -> Unreadable:
+    """A scenario file with no program of its name beside it."""
+    return Unreadable.at(scenario, f"no program {_program_name(scenario.name)} beside it, so it runs nothing")
 
 
 def _reason(error: OSError) -> str:

@@ -17,6 +17,7 @@ from mintlang.cli.options import refuse_quiet_and_verbose
 from mintlang.cli.parallel import all_cores, map_in_order
 from mintlang.cli.terminal import console, destination, reader_may_leave, refuse_overwriting, write_in_pieces
 from mintlang.dialect import Dialect
+from mintlang.runtime.outputs import OutputProblem, check_report
 from mintlang.runtime.testing import reports
 from mintlang.runtime.testing.coverage import lcov as tracefile
 from mintlang.runtime.testing.coverage import merge
@@ -65,8 +66,9 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         sys.exit(USAGE if unreadable else PASSED)
     enabled = drives == "enabled"
     inputs = [path for case in cases for path in (case.program, case.scenario) if path is not None]
-    refuse_overwriting(output_file, inputs, _fail)
-    refuse_overwriting(lcov if coverage else None, inputs, _fail)
+    for output in (output_file, lcov if coverage else None):
+        refuse_overwriting(output, inputs, _fail)
+        _writable(output)
     options = Options(controller, Dialect(dialect) if dialect else None, until_ms, max_wall_s, enabled, coverage)
     began = time.perf_counter()
     results = map_in_order(
@@ -105,6 +107,15 @@ def _coverage(results: list[TestResult], lcov: Path, table: Console | None) -> N
         lcov.write_text(tracefile(files), encoding="utf-8")
     except OSError as error:
         _fail(f"cannot write {lcov}: {error.strerror or error}")
+
+
+def _writable(output: Path | None) -> None:
+    """Refuse an output that cannot be written before any test runs: found after the run, its results were lost."""
+    if output is not None:
+        try:
+            check_report(output, {})
+        except OutputProblem as problem:
+            _fail(str(problem))
 
 
 def _fail(message: str) -> NoReturn:

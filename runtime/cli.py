@@ -14,7 +14,6 @@ long run's memory does not grow with its length.
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 from typing import Any
 
@@ -26,6 +25,7 @@ from mintlang.cli.options import (
     color_option,
     drives_option,
     exit_zero_option,
+    refuse_nan_seconds,
     verbosity_options,
     version_option,
 )
@@ -34,12 +34,6 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.runtime.dialects import SIMULATED
 from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_CONTROLLERS
-
-
-def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float) -> float:
-    if math.isnan(seconds):  # a limit no elapsed time exceeds: the run would never stop
-        raise click.BadParameter("give a number of seconds, or inf for no limit")
-    return seconds
 
 
 @click.command(
@@ -89,7 +83,7 @@ def _no_nan(_context: click.Context, _parameter: click.Parameter, seconds: float
 @click.option(
     "--max-wall-s",
     type=click.FloatRange(min=0),
-    callback=_no_nan,
+    callback=refuse_nan_seconds,
     default=60.0,
     show_default=True,
     help="Stop after this much real time (raise it for long --realtime runs; inf for no limit).",

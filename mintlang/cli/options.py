@@ -8,6 +8,7 @@ Nothing here imports more than click: ``--version`` and ``--help`` stay fast.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TypeVar
@@ -114,3 +115,11 @@ def refuse_quiet_and_verbose(quiet: bool, verbose: bool) -> None:
 def drives_option(help_text: str) -> Callable[[F], F]:
     """``--drives enabled``: the simulated drives start enabled (they start disabled, as at power-up)."""
     return click.option("--drives", type=click.Choice(["enabled"]), help=help_text)
+
+
+def refuse_nan_seconds(_context: click.Context, _parameter: click.Parameter, seconds: float) -> float:
+    """``--max-wall-s``'s callback: NaN passes a ``FloatRange`` (every comparison with it is false), and as a limit
+    no elapsed time exceeds it, so the run would never stop."""
+    if math.isnan(seconds):
+        raise click.BadParameter("give a number of seconds, or inf for no limit")
+    return seconds

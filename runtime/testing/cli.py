@@ -20,6 +20,7 @@ from mintlang.cli.options import (
     format_option,
     jobs_option,
     output_file_option,
+    refuse_nan_seconds,
     verbosity_options,
     version_option,
 )
@@ -38,6 +39,7 @@ from mintlang.runtime.dialects import SIMULATED
 @click.option(
     "--max-wall-s",
     type=click.FloatRange(min=0, min_open=True),
+    callback=refuse_nan_seconds,
     default=60.0,
     show_default=True,
     help="Stop a run that takes longer than this on the wall clock (it fails).",

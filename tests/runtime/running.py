@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.run import RunResult, run_source
 from mintlang.runtime.scenario.stimulus import Scenario
 from mintlang.runtime.simulation import Limits
@@ -37,3 +38,15 @@ def simulate(
 
 def observable(result: RunResult) -> tuple[object, ...]:
     return (result.stop, result.err, result.erl, result.outputs, result.relay, result.axes, result.terminal)
+
+
+def assert_syntax_error_before_it_runs(line: str) -> None:
+    """``line``, third in a program whose second prints "before", is a syntax error: the controller finds it
+    when it compiles the program, before running any of it (000:4563-4568), and prints it as a compile-time
+    error naming line 3 (000:4584-4588)."""
+    result = simulate(f'DIM a\nPRINT "before"\n{line}\n')
+    assert result.stop.reason is StopReason.ERROR
+    assert result.err == 2003
+    assert "before" not in result.terminal
+    assert result.terminal.startswith("C2003: PROGRAM Syntax error")
+    assert result.terminal.endswith("[line 3]\n")

@@ -10,16 +10,10 @@ from __future__ import annotations
 
 import pytest
 
-from mintlang.runtime.interpreter.vm import StopReason
-from tests.runtime.running import simulate
+from tests.runtime.running import assert_syntax_error_before_it_runs
 
 
 @pytest.mark.parametrize("line", ["a = TIME.2", "TIME.5"])
 def test_mint_run_stops_before_the_program_starts(line: str) -> None:
     # a compile error: nothing runs, so "before" is never printed, and the message names line 3
-    result = simulate(f'DIM a\nPRINT "before"\n{line}\n')
-    assert result.stop.reason is StopReason.ERROR
-    assert result.err == 2003
-    assert "before" not in result.terminal
-    assert result.terminal.startswith("C2003: PROGRAM Syntax error")
-    assert result.terminal.endswith("[line 3]\n")
+    assert_syntax_error_before_it_runs(line)

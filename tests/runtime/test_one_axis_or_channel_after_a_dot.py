@@ -15,9 +15,8 @@ from __future__ import annotations
 
 import pytest
 
-from mintlang.runtime.interpreter.vm import StopReason
 from tests.analysis.checking import ERROR, covered, found, only
-from tests.runtime.running import simulate
+from tests.runtime.running import assert_syntax_error_before_it_runs
 
 SECOND_NUMBERS = [
     pytest.param("a = POS.1.5", ".5", id="axis-read"),
@@ -39,12 +38,7 @@ def test_mint_check_reports_the_second_number(line: str, second: str) -> None:
 
 @pytest.mark.parametrize(("line", "second"), SECOND_NUMBERS)
 def test_mint_run_stops_before_the_program_starts(line: str, second: str) -> None:
-    result = simulate(f'DIM a\nPRINT "before"\n{line}\n')
-    assert result.stop.reason is StopReason.ERROR
-    assert result.err == 2003
-    assert "before" not in result.terminal
-    assert result.terminal.startswith("C2003: PROGRAM Syntax error")
-    assert result.terminal.endswith("[line 3]\n")
+    assert_syntax_error_before_it_runs(line)
 
 
 @pytest.mark.parametrize(

@@ -128,9 +128,10 @@ class RenameEventLabels(Rule):
     """A user label that v4 would call as an event handler (``#TIMER``, ``#CAN1``,
     ``#COMMS3``, ``#FASTIN2`` ...) is renamed, with every GOSUB/GOTO to it.
 
-    ``#FASTIN`` itself is what M-FASTPOS writes, so it is taken as that handler. A label jumped
-    to but defined nowhere v3 reads (``a = 1 : #timer``, flagged X-COMMENTED) is left as written:
-    its jumps renamed alone would name a label the user never wrote.
+    ``#FASTIN`` itself is what M-FASTPOS writes, so it is taken as that handler, unless the file
+    defines ``#FASTPOS``: then that handler becomes the #FASTIN and the label is a subroutine. A
+    label jumped to but defined nowhere v3 reads (``a = 1 : #timer``, flagged X-COMMENTED) is left
+    as written: its jumps renamed alone would name a label the user never wrote.
     """
 
     id = "M-LABEL"
@@ -140,12 +141,14 @@ class RenameEventLabels(Rule):
     evidence = "spec M-LABEL; v4:1884-1900"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        if not any(map(_event_named, _label_names(context))):
+        names = set(_label_names(context))
+        if not any(_event_named(name, fastpos="FASTPOS" in names) for name in names):
             return  # the usual case: the symbol table (the semantic model) is not needed
         for labels in context.model.symbols.labels.values():
             taken = set(labels)
+            fastpos = "FASTPOS" in labels and bool(labels["FASTPOS"].definitions)
             for symbol in labels.values():
-                if _event_named(symbol.identity) and symbol.definitions:
+                if _event_named(symbol.identity, fastpos=fastpos) and symbol.definitions:
                     yield from _rename_symbol(self, context.files, symbol, taken)
 
 
@@ -159,13 +162,13 @@ def _label_names(context: Context) -> Iterator[str]:
                 yield statement.label.identity
 
 
-def _event_named(label: str) -> bool:
+def _event_named(label: str, *, fastpos: bool) -> bool:
     """Whether a label (by identity) is named like a v4 event handler v3 did not have; ``#FASTIN``
-    alone is taken as the handler M-FASTPOS writes."""
+    alone is taken as the handler M-FASTPOS writes, unless ``fastpos``: the file's #FASTPOS is."""
     event = event_of(label, Dialect.V4)
     if event is None or event_of(label, Dialect.V3) is not None:
         return False
-    return not (event.kind is EventKind.FASTIN and event.number is None)
+    return fastpos or not (event.kind is EventKind.FASTIN and event.number is None)
 
 
 class RenameReservedNames(Rule):

@@ -108,11 +108,12 @@ def test_an_access_the_formats_show_but_the_table_lost_is_kept(db: KeywordDataba
 
 
 def test_scale_range_is_positive(db: KeywordDatabase) -> None:
-    nextmove, mintdrive = db.keywords["SCALE"].attributes  # v4:15783-15784
-    assert nextmove.range is not None and mintdrive.range is not None
+    scale = db.keywords["SCALE"]  # v4:15783-15784
+    nextmove, mintdrive = scale.attributes_for(Controller.NEXTMOVE_PC), scale.attributes_for(Controller.MINTDRIVE)
+    assert nextmove is not None and nextmove.range is not None
+    assert mintdrive is not None and mintdrive.range is not None
     assert (nextmove.range.minimum, nextmove.range.maximum, nextmove.range.fractional) == (0, 8388607, True)
     assert (mintdrive.range.minimum, mintdrive.range.maximum) == (1, 65535)
-    assert Controller.MINTDRIVE in mintdrive.controllers
 
 
 def test_parameters_of_bracketed_calls(db: KeywordDatabase) -> None:

@@ -20,6 +20,7 @@ from tools.keyworddb.errors import build_errors, shared_constants
 from tools.keyworddb.migration import build_v3_keywords
 from tools.keyworddb.renames import build_renames
 from tools.keyworddb.seeds import V3_GUIDE, V4_GUIDE, Seed, read_seed
+from tools.keyworddb.servonode import with_servonode_rows
 from tools.keyworddb.summaries import with_summaries
 from tools.keyworddb.v3_constants import build_v3_constants
 from tools.keyworddb.v3_keywords import v3_entries
@@ -68,6 +69,7 @@ def build(seeds: Path, spec: Path) -> dict[str, Any]:
     keywords, default_conflicts = with_default_ranges(keywords)
     keywords, format_conflicts = apply_format_access(keywords)
     keywords, access_conflicts = apply_access_examples(v4, errors, keywords)
+    keywords = with_servonode_rows(keywords)
     conflicts += (
         constant_conflicts
         + bit_conflicts

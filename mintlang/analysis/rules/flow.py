@@ -16,10 +16,11 @@
   when it runs.
 * A subroutine without RETURN that runs on into the next one (W107). A label
   that only GOTO reaches is a place in the code around it, not a subroutine.
-* GOTO out of an open IF block or loop (W113): the block is never closed, and
-  done repeatedly this "will eventually" overflow the controller's stack (GOTO
-  in 10.3). The overflow happens at run time, so the analyser only warns, once
-  at the GOTO, naming every block it leaves open with its line.
+* GOTO out of an event handler before its RETURN, or out of an open IF block or
+  loop (W113): the handler or block is never closed, and done repeatedly this
+  "will eventually" overflow the controller's stack (GOTO in 10.3). The overflow
+  happens at run time, so the analyser only warns, once at the GOTO, naming the
+  handler and every block it leaves open with its line.
 * EXIT outside any loop of its subroutine or handler: error 2003 when it runs.
 
 An endless loop (LOOP, WHILE 1, REPEAT .. UNTIL 0) that no EXIT or GOTO leaves
@@ -80,8 +81,9 @@ def _receives_flow(statement: n.Statement) -> bool:
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     for unit, document in model.documents():
-        yield from _Flow(unit, document, subroutines(unit, model, facts)).findings(facts.lines.of(unit))
-        yield from _jumps_out_of_blocks(unit, document, model, facts)
+        starts = subroutines(unit, model, facts)
+        yield from _Flow(unit, document, starts).findings(facts.lines.of(unit))
+        yield from _jumps_out_of_blocks(unit, document, model, facts, starts)
 
 
 def runs_off_the_end(unit: Unit, facts: Facts) -> bool:
@@ -414,34 +416,109 @@ class _Flow:
             self.falling_from_main = False
 
 
-def _jumps_out_of_blocks(unit: Unit, document: Document, model: SemanticModel, facts: Facts) -> Iterator[Finding]:
+class _Handler(NamedTuple):
+    """An event handler's lines, from its label to its RETURN."""
+
+    name: str
+    first: int
+    last: float
+
+
+def _says(line: n.PlacedLine, word: str) -> bool:
+    """Whether ``line`` has the one-word statement ``word`` of its own (not in an IF .. THEN)."""
+    return any(isinstance(statement, n.BlockWord) and statement.word == word for statement in line.syntax.statements)
+
+
+def _handlers(unit: Unit, document: Document, model: SemanticModel, starts: frozenset[str]) -> list[_Handler]:
+    """The event handlers of the file, each up to its first RETURN outside its blocks, or else up to the next
+    subroutine (a label only GOTO reaches before that RETURN is a place inside the handler)."""
     blocks = model.structures[unit].blocks
-    labels = {line.syntax.label.identity: line.number for line in document.placed if line.syntax.label is not None}
+    dialect = model.program.dialect
+    found: list[_Handler] = []
+    open_handler: _Handler | None = None
+    for line in document.placed:
+        label = line.syntax.label
+        if label is not None and label.identity in starts:
+            if open_handler is not None:
+                found.append(open_handler._replace(last=line.number - 1))
+            open_handler = _Handler(f"#{label.text}", line.number, math.inf) if event_of(label.text, dialect) else None
+        if (
+            open_handler is not None
+            and _says(line, "RETURN")
+            and not any(_contains(block, line.number) for block in blocks)
+        ):
+            found.append(open_handler._replace(last=line.number))
+            open_handler = None
+    return found if open_handler is None else [*found, open_handler]
+
+
+def _outcomes(unit: Unit, document: Document, model: SemanticModel, facts: Facts, starts: frozenset[str]) -> list[int]:
+    """The lines where code run from a label settles, each signed: +line where it reaches a RETURN, conditional
+    or not, or the next subroutine (which returns), -line where it reaches an END outside any block."""
+    blocks = model.structures[unit].blocks
+    returns = {
+        line.number
+        for file, line, statement in facts.statements(n.BlockWord)
+        if file is unit and statement.word == "RETURN"  # type: ignore[union-attr]
+    }
+    found: list[int] = []
+    for line in document.placed:
+        label = line.syntax.label
+        if line.number in returns or (label is not None and label.identity in starts):
+            found.append(line.number)
+        elif _says(line, "END") and not any(_contains(block, line.number) for block in blocks):
+            found.append(-line.number)
+    return found
+
+
+def _returns_from(target: int, outcomes: list[int]) -> bool:
+    """Whether the code at the label of line ``target`` returns (a handler's shared exit), rather than ending the
+    program or running on to the file's end as a main program does."""
+    settled = next((outcome for outcome in outcomes if abs(outcome) >= target), None)
+    return settled is not None and settled > 0
+
+
+def _jumps_out_of_blocks(
+    unit: Unit, document: Document, model: SemanticModel, facts: Facts, starts: frozenset[str]
+) -> Iterator[Finding]:
+    """W113: a GOTO out of an event handler, IF block or loop (000:11199-11215), each of which stays on the stack."""
     gotos = [
         (line, statement)
         for file, line, statement in facts.statements(n.Jump)
         if file is unit and statement.word == "GOTO"
     ]
+    if not gotos:
+        return
+    blocks = model.structures[unit].blocks
+    handlers = _handlers(unit, document, model, starts)
+    outcomes = _outcomes(unit, document, model, facts, starts) if handlers else []
+    labels = {line.syntax.label.identity: line.number for line in document.placed if line.syntax.label is not None}
     for line, statement in gotos:
         target = labels.get(statement.label.identity)
         if target is None:
             continue
-        left = [block for block in blocks if _contains(block, line.number) and not _contains(block, target)]
+        left = [
+            f"the event handler {handler.name} of line {handler.first}"
+            for handler in handlers
+            if handler.first <= line.number <= handler.last
+            and not handler.first <= target <= handler.last
+            and not _returns_from(target, outcomes)  # a shared exit: its RETURN ends the handler
+        ]
+        left += _blocks_named(
+            [block for block in blocks if _contains(block, line.number) and not _contains(block, target)]
+        )
         if left:
-            detail = (
-                f"GOTO {statement.label.text} leaves {_blocks_named(left)} open; "
-                "done repeatedly, this overflows the stack (error 2015)"
-            )
-            yield Finding(unit, own("W113", line.span(statement.span), detail))
+            named = left[0] if len(left) == 1 else f"{', '.join(left[:-1])} and {left[-1]}"
+            detail = f"GOTO {statement.label.text} leaves {named} open; done repeatedly, this overflows the stack"
+            yield Finding(unit, own("W113", line.span(statement.span), f"{detail} (error 2015)"))
 
 
-def _blocks_named(blocks: list[Block]) -> str:
+def _blocks_named(blocks: list[Block]) -> list[str]:
     """Each block a jump leaves, outermost first, by its kind and line: each one is left on the stack."""
-    named = [
+    return [
         f"the {block.kind.value} block of line {block.opener.line}"
         for block in sorted(blocks, key=lambda block: block.opener)
     ]
-    return named[0] if len(named) == 1 else f"{', '.join(named[:-1])} and {named[-1]}"
 
 
 def _contains(block: Block, line: int) -> bool:

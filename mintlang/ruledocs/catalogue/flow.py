@@ -125,10 +125,11 @@ GROUP = Group(
         ),
         RuleDoc(
             "W113",
-            catches="GOTO from inside an IF block or a loop to a label outside it. One warning at the GOTO "
-            "names every block it leaves, each with the line it opens on.",
-            why="The block is never closed: the controller keeps it on its stack. Done repeatedly, as in a "
-            "loop, this overflows the stack (error 2015) when the program runs.",
+            catches="GOTO from inside an event handler (before its RETURN), an IF block or a loop to a label "
+            "outside it. One warning at the GOTO names the handler and every block it leaves, each with the line "
+            "it opens on.",
+            why="The handler or block is never closed: the controller keeps it on its stack. Done repeatedly, as "
+            "in a loop, this overflows the stack (error 2015) when the program runs.",
             example=Example(
                 before="DIM i\nFOR i = 1 TO 10\n  IF IN.0 THEN GOTO done\nNEXT\n#done\nPRINT i\n",
                 after="DIM i\nFOR i = 1 TO 10\n  IF IN.0 THEN EXIT\nNEXT\nPRINT i\n",

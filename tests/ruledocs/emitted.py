@@ -12,7 +12,7 @@ from __future__ import annotations
 import ast
 from pathlib import Path
 
-from mintlang.analysis.rules import addressing, keyword_usage, limits
+from mintlang.analysis.rules import addressing, function_domains, keyword_usage, limits
 from mintlang.keyworddb import usage
 from mintlang.semantic import blocks
 
@@ -70,6 +70,9 @@ _TABLES = {
     ("analysis/rules/keyword_usage.py", "each_line"): _literals_returned(_function(keyword_usage, "_verdict"), 0)
     | _refusals(),
     ("analysis/rules/limits.py", "_over"): _over_limits(),
+    ("analysis/rules/function_domains.py", "each_line"): _literals_returned(
+        _function(function_domains, "_without_value"), 0
+    ),
 }
 
 

@@ -6,7 +6,9 @@ file. It names complete codes, comma-separated, in either spelling of an error
 (``E17`` or ``E0017``): a prefix would silence more than its author looked at.
 A named code that silenced nothing, or that is no code, is reported as
 ``UNUSED_SUPPRESSION`` (as ruff's RUF100), with a fix that removes it: safe,
-unless the code is one this run does not check.
+unless the code is one this run does not check. So is a comment that names no code
+(``ignore[]``) or whose list no ``]`` closes (``ignore[W103``): it silences nothing, which
+its author would not otherwise learn.
 """
 
 from __future__ import annotations
@@ -28,7 +30,7 @@ if TYPE_CHECKING:
 UNUSED_SUPPRESSION = "W117"
 
 # From the REM that starts the comment: the directive must be the comment's first words.
-_DIRECTIVE = re.compile(r"REM\s+mint:\s*ignore(?P<file>-file)?\[(?P<codes>[^\]]*)\]", re.IGNORECASE)
+_DIRECTIVE = re.compile(r"REM\s+mint:\s*ignore(?P<file>-file)?\[(?P<codes>[^\]]*)(?P<closed>\])?", re.IGNORECASE)
 _ENTRY = re.compile(r"[^,\s]+")
 _MENTION = "mint:"
 
@@ -48,9 +50,10 @@ class Directive:
 
     whole_file: bool
     entries: tuple[Entry, ...]
-    span: Span  # from REM to the closing bracket
+    span: Span  # from REM to the closing bracket (to the end of the line when none closes the list)
     line: Span
     statement_end: int  # where the statements before the comment end (its start on a line of its own)
+    closed: bool = True  # whether a ``]`` ends its list; one that does not names no code
 
     def names(self, code: str) -> bool:
         return any(entry.code == code for entry in self.entries)
@@ -63,6 +66,7 @@ class Directive:
             self.span.shifted(offset),
             self.line.shifted(offset),
             self.statement_end + offset,
+            self.closed,
         )
 
 
@@ -78,10 +82,11 @@ def directives(document: Document, start: int = 0, end: int | None = None) -> tu
         match = _DIRECTIVE.match(lexed.text, lexed.comment_start, lexed.content_end)
         if match is None:
             continue
-        codes_start = match.start("codes")
+        closed = match["closed"] is not None
         entries = tuple(
             Entry(entry[0], code_named(entry[0]), Span(offset + entry.start(), offset + entry.end()))
-            for entry in _ENTRY.finditer(lexed.text, codes_start, match.end("codes"))
+            for entry in _ENTRY.finditer(lexed.text, match.start("codes"), match.end("codes"))
+            if closed
         )
         before = lexed.text[: lexed.comment_start].rstrip()
         statement_end = offset + len(before.removesuffix(":").rstrip())
@@ -92,6 +97,7 @@ def directives(document: Document, start: int = 0, end: int | None = None) -> tu
                 span=Span(offset + match.start(), offset + match.end()),
                 line=Span(offset, offset + lexed.content_end),
                 statement_end=statement_end,
+                closed=closed,
             )
         )
     return tuple(found)
@@ -149,6 +155,7 @@ def suppress(
         for entry in directive.entries
         if entry.code != UNUSED_SUPPRESSION and (directive.span, entry.code) not in used
     ]
+    unused.extend(_naming_nothing(directive) for directive in found if not directive.entries)
     kept.extend(report for report in unused if selected(UNUSED_SUPPRESSION) and not silenced(report))
     return kept
 
@@ -165,6 +172,16 @@ def _unused(directive: Directive, entry: Entry, selected: Callable[[str], bool])
     # removal is left to the author.
     safe = entry.code is None or selected(entry.code)
     return own(UNUSED_SUPPRESSION, entry.span, detail, fixes=(_removal(directive, entry, safe=safe),))
+
+
+def _naming_nothing(directive: Directive) -> Diagnostic:
+    """A comment that silences nothing because it names nothing: an empty list goes (safe: it could not
+    silence anything), one left open is the author's to close."""
+    if not directive.closed:
+        detail = "unused suppression: no ']' closes its list of codes, so it names none"
+        return own(UNUSED_SUPPRESSION, directive.span, detail)
+    removal = Fix("Remove the suppression comment", (_without_comment(directive),), safe=True)
+    return own(UNUSED_SUPPRESSION, directive.span, "unused suppression: it names no code", fixes=(removal,))
 
 
 def _removal(directive: Directive, entry: Entry, *, safe: bool) -> Fix:
@@ -199,7 +216,7 @@ def suppression_fix(document: Document, offset: int, code: str, *, name_the_line
     title = f"Ignore {code} on {f'line {index + 1}' if name_the_line else 'this line'}"
     line_offset, lexed = document.physical[index]
     for directive in directives(document):
-        if not directive.whole_file and directive.line.start == line_offset:
+        if not directive.whole_file and directive.closed and directive.line.start == line_offset:
             end = directive.entries[-1].span.end if directive.entries else directive.span.end - 1
             separator = ", " if directive.entries else ""
             return Fix(title, (Edit(Span(end, end), f"{separator}{code}"),), safe=True)

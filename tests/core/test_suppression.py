@@ -66,6 +66,35 @@ def test_an_unused_suppression_says_why(source: str, message: str) -> None:
     assert diagnostic.fixes[0].safe is ("not checked" not in message)  # it may serve a wider selection
 
 
+def test_a_comment_naming_no_code_is_reported_with_its_removal() -> None:
+    """``ignore[]`` silences nothing (README, Suppression comments: a comment names codes): it goes."""
+    source = "DIM a : REM mint: ignore[]\nPRINT a\n"
+    [diagnostic] = [d for d in check(source) if d.code == "W117"]
+    assert diagnostic.message == "unused suppression: it names no code"
+    assert diagnostic.fixes[0].safe
+    assert fixed(source, diagnostic) == "DIM a\nPRINT a\n"
+
+
+def test_a_list_no_bracket_closes_silences_nothing_and_says_so() -> None:
+    """``ignore[W103`` names no code: W103 stays, and the comment is reported without a fix (only its
+    author knows where the list ends)."""
+    source = "DIM a : REM mint: ignore[W103 for the HMI\n"
+    assert sorted(found(source)) == [("W103", 1), ("W117", 1)]
+    [diagnostic] = [d for d in check(source) if d.code == "W117"]
+    assert diagnostic.message == "unused suppression: no ']' closes its list of codes, so it names none"
+    assert diagnostic.fixes == ()
+
+
+def test_the_editor_silences_a_code_on_a_line_with_a_list_left_open_by_a_comment_of_its_own() -> None:
+    """Added inside the open list, the code would silence nothing; the comment it opens is read first."""
+    source = "DIM a : REM mint: ignore[W111\n"
+    [diagnostic] = [d for d in check(source) if d.code == "W103"]
+    [edit] = suppression_fix(parse(source), diagnostic.span.start, diagnostic.code).edits
+    changed = source[: edit.span.start] + edit.text + source[edit.span.end :]
+    assert changed == "DIM a : REM mint: ignore[W103] mint: ignore[W111\n"
+    assert found(changed) == []
+
+
 def test_a_suppression_of_a_selected_hint_is_used() -> None:
     source = "SPEED[0] = 1 : REM mint: ignore[I201]\n"
     assert check_application(source, select=("E", "W", "I")).program == ()

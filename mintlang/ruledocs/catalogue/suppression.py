@@ -13,7 +13,8 @@ GROUP = Group(
         RuleDoc(
             "W117",
             catches="A code named in a suppression comment that silences nothing on its line (or, for "
-            "ignore-file, in its file): the finding is gone, the code is not checked, or it is no code.",
+            "ignore-file, in its file): the finding is gone, the code is not checked, or it is no code; and a "
+            "comment that names no code at all (`ignore[]`, or a list no `]` closes, `ignore[W103`).",
             why="A suppression outlives the finding it was written for; left in place, it would silence "
             "the next such finding on that line without anyone looking at it.",
             example=Example(
@@ -23,7 +24,7 @@ GROUP = Group(
             manual=("v4:15497",),
             fix="Remove the code from the comment, or the comment when it names no other code. For a code "
             "the run does not check (a hint, without --select I) the removal is unsafe: the comment may serve a "
-            "wider selection, such as the editor's.",
+            "wider selection, such as the editor's. A list left open has no fix: only its author knows where it ends.",
             safety=FixSafety.SAFE,
         ),
     ),

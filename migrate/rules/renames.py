@@ -73,19 +73,26 @@ class RenameKeywords(Rule):
 
 class RenameFastPos(Rule):
     """``#FASTPOS`` becomes ``#FASTIN``: v3 has one fast latch input, and v4 calls the
-    generic #FASTIN for any fast input (defining #FASTIN0 as well would be error 3006)."""
+    generic #FASTIN for any fast input (defining #FASTIN0 as well would be error 3006).
+    A GOSUB or GOTO to it in its file follows it (v3:2461), or it would name no label."""
 
     id = "M-FASTPOS"
     rule_class = RuleClass.MECHANICAL
     phase = Phase.RENAMES
-    summary = "#FASTPOS handler -> #FASTIN"
+    summary = "#FASTPOS handler -> #FASTIN, with the jumps to it"
     evidence = "spec M-FASTPOS; v4:5910, v4:4955, v4:19108"
 
     def apply(self, context: Context) -> Iterator[Action]:
+        defined: set[Unit] = set()
         for file, line in context.placed(LABEL):
             label = line.syntax.label
-            if label is not None and label.text.upper() == "FASTPOS":
+            if label is not None and label.identity == "FASTPOS":
+                defined.add(file.unit)
                 yield self.replace(file, line.span(_label_name_span(label)), like(label.text, "FASTIN"))
+        for file, line in context.placed(n.Jump):
+            for statement in n.flatten_statements(line.syntax.statements):
+                if isinstance(statement, n.Jump) and statement.label.identity == "FASTPOS" and file.unit in defined:
+                    yield self.replace(file, line.span(statement.label.span), like(statement.label.text, "FASTIN"))
 
 
 class RenameConstants(Rule):

@@ -11,7 +11,9 @@ for MintMT's own forms (``mintlang/MINTMT.md``):
   have a variable called ``event``);
 * round-bracket addressing, ``MOVER(0) = 10``: a ``(`` right after a keyword that takes
   axes or channels. After one that takes neither, such as ``LOCATE (col + 1), 2`` in a
-  v3 or v4 program, the bracket only groups the first operand.
+  v3 or v4 program, the bracket only groups the first operand; after a name the text
+  declares as an array (``DIM adc(4)``, legal in v3, where ``adc`` is no keyword), it
+  holds the element's index.
 
 One of them makes the text MintMT; without any it is Mint v4, the default
 dialect, so every v4 program reads as before. Mint v3 is not told apart here:
@@ -42,6 +44,7 @@ _CLOSERS = frozenset({TokenKind.ENDL, TokenKind.ENDIF, TokenKind.ENDEVENT, Token
 # the word of a closer or an opener. The other lines, most of a v3 or v4 program, are not lexed:
 # lexing every line cost most of a parse, which the migrator paid before reading anything.
 _MAY_SHOW = re.compile(f"[{_QUOTES}(]|end[ \\t]|event|startup", re.IGNORECASE)
+_DIM = re.compile(r"\bdim\s+\w+\s*\(", re.IGNORECASE)  # what a line declaring an array holds
 
 
 @record
@@ -64,9 +67,10 @@ def first_mintmt_form(text: str) -> MintMTForm | None:
     ]
     if not numbered:  # nothing to lex: the MintMT vocabulary would be built for nothing
         return None
-    lexed = lex("".join(line for _, line in numbered), Dialect.MINTMT).lines
-    for (number, _), (_, line) in zip(numbered, lexed, strict=False):  # the lexer may add an empty last line
-        if (what := _form(line)) is not None:
+    lexed = [line for _, line in lex("".join(line for _, line in numbered), Dialect.MINTMT).lines]
+    arrays = _arrays(lexed)
+    for (number, _), line in zip(numbered, lexed, strict=False):  # the lexer may add an empty last line
+        if (what := _form(line, arrays)) is not None:
             return MintMTForm(number, what)
     return None
 
@@ -90,17 +94,30 @@ def detect_dialect_after(previous: str, found: Dialect, text: str) -> Dialect:
     tail = previous[len(previous) - end :]
     breaks = [at for at in (tail.find("\n"), tail.find("\r")) if at >= 0]
     end = len(tail) - min(breaks) - 1 if breaks else 0
+    typed, removed = text[start : len(text) - end], previous[start : len(previous) - end]
+    # a form typed may be an array's element declared elsewhere, and a DIM typed or removed makes or unmakes one
     if found is Dialect.V4:
-        return Dialect.MINTMT if _shows_any(text[start : len(text) - end]) else Dialect.V4
-    return Dialect.MINTMT if not _shows_any(previous[start : len(previous) - end]) else detect_dialect(text)
+        return detect_dialect(text) if _shows_any(typed) or _DIM.search(removed) else Dialect.V4
+    return detect_dialect(text) if _shows_any(removed) or _DIM.search(typed) else Dialect.MINTMT
 
 
 def _shows_any(text: str) -> bool:
     return first_mintmt_form(text) is not None
 
 
-def _form(line: LexedLine) -> str | None:
-    """The MintMT form ``line`` shows, named as written (``End If``, ``MOVER(…)``); None for none."""
+def _arrays(lines: list[LexedLine]) -> frozenset[str]:
+    """The upper-case names ``lines`` declare as arrays, ``DIM name(``."""
+    return frozenset(
+        line.texts[index + 1].upper()
+        for line in lines
+        for index, kind in enumerate(line.kinds[:-2])
+        if kind is TokenKind.DIM and line.kinds[index + 2] is TokenKind.ADDRESS
+    )
+
+
+def _form(line: LexedLine, arrays: frozenset[str]) -> str | None:
+    """The MintMT form ``line`` shows, named as written (``End If``, ``MOVER(…)``), the ``(`` after a
+    name in ``arrays`` aside; None for none."""
     kinds, texts = line.kinds, line.texts
     if _quote_comment(line):
         return "a ' comment"
@@ -109,18 +126,19 @@ def _form(line: LexedLine) -> str | None:
         return " ".join(two_words)
     if _block_opener(line):
         return " ".join(texts)
-    if (addressed := _addressed(line)) is not None:
+    if (addressed := _addressed(line, arrays)) is not None:
         return f"{addressed}(…)"
     return None
 
 
-def _addressed(line: LexedLine) -> str | None:
+def _addressed(line: LexedLine, arrays: frozenset[str]) -> str | None:
     """The first keyword of ``line`` written with its axes or channels in round brackets; a keyword no
-    axis or channel addresses (LOCATE, LINE, WAIT) takes none, so its ``(`` opens an expression."""
+    axis or channel addresses (LOCATE, LINE, WAIT) takes none, so its ``(`` opens an expression, and
+    a word the text declares as an array is the array's name."""
     kinds, texts = line.kinds, line.texts
     keywords = database().keywords_of(Dialect.MINTMT)
     for index, kind in enumerate(kinds):
-        if kind is TokenKind.ADDRESS and index > 0:
+        if kind is TokenKind.ADDRESS and index > 0 and texts[index - 1].upper() not in arrays:
             word = texts[index - 1]
             keyword = keywords.get(database().owner(word) or word.upper())
             if keyword is None or keyword.addressing is not Addressing.NONE:

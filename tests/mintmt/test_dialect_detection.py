@@ -64,6 +64,8 @@ def test_a_form_only_mintmt_has_makes_the_text_mintmt(text: str) -> None:
         pytest.param("LOCATE (col + 1), 2\n", id="a bracketed first operand of LOCATE"),
         pytest.param('LINE (row), "speed"\n', id="a bracketed first operand of LINE"),
         pytest.param("END\n", id="END alone"),
+        # legal v3, where adc is no keyword: the array's elements (001:7303-7353)
+        pytest.param("DIM adc(4) = 1,2,3,4\n? adc(3)\n", id="an array named like a keyword"),
     ],
 )
 def test_without_such_a_form_the_text_is_v4(text: str) -> None:
@@ -71,7 +73,19 @@ def test_without_such_a_form_the_text_is_v4(text: str) -> None:
 
 
 _LINES = st.sampled_from(
-    ["PRINT 1", "Loop", "End Loop", "ENDL", "' a note", "REM note", "MOVER(0) = 10", "MOVER.0 = 10", "a = 'A'", ""]
+    [
+        "PRINT 1",
+        "Loop",
+        "End Loop",
+        "ENDL",
+        "' a note",
+        "REM note",
+        "MOVER(0) = 10",
+        "MOVER.0 = 10",
+        "a = 'A'",
+        "",
+        "DIM mover(2)",
+    ]
 )
 _TEXTS = st.lists(_LINES, max_size=8).map("\n".join)
 
@@ -91,3 +105,16 @@ def test_detecting_after_each_edit_from_the_last_text_is_detecting_afresh(
         found = detect_dialect_after(text, found, edited)
         assert found is detect_dialect(edited)
         text = edited
+
+
+@pytest.mark.parametrize(
+    ("previous", "edited"),
+    [
+        pytest.param("DIM mover(2)\nMOVER(0) = 10\n", "MOVER(0) = 10\n", id="the DIM removed"),
+        pytest.param("MOVER(0) = 10\n", "DIM mover(2)\nMOVER(0) = 10\n", id="a DIM typed above"),
+        pytest.param("DIM mover(2)\nPRINT 1\n", "DIM mover(2)\nMOVER(0) = 10\n", id="an element typed"),
+    ],
+)
+def test_an_edit_to_an_array_declaration_elsewhere_is_seen(previous: str, edited: str) -> None:
+    """Whether ``NAME(`` is MintMT's addressing depends on a ``DIM NAME(`` on another line."""
+    assert detect_dialect_after(previous, detect_dialect(previous), edited) is detect_dialect(edited)

@@ -264,7 +264,7 @@ def _in_logical_lines(
 def _in_text_lines(model: SemanticModel, document: Document, indices: range) -> Iterator[Diagnostic]:
     """What the rules that read the text as written find in physical lines ``indices`` of ``document``."""
     for rule in _rules_for(model.program.dialect)[2]:
-        yield from rule.each_text_line(document.physical, indices, model.controller)  # type: ignore[misc]
+        yield from rule.each_text_line(document.physical, indices, model.controller, model.program.dialect)  # type: ignore[misc]
 
 
 def _carried(model: SemanticModel, previous: Analysis) -> Found | None:

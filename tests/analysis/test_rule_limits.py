@@ -59,6 +59,14 @@ def test_a_line_longer_than_255_characters_is_a_warning() -> None:
     assert found("REM " + "y" * 251 + "\n") == []
 
 
+def test_a_mint_v3_line_longer_than_127_characters_is_a_warning() -> None:
+    """v3:5144: an off-line editor's lines are held to 127 characters; a longer one stops the v3 compiler
+    with "Line too long" (v3:12999-13001). A 128-character comment is one too many, 127 are not."""
+    codes = [(d.code, d.span.start) for d in mintlang.check("PRINT 1\nREM " + "y" * 124 + "\n", dialect="v3")]
+    assert codes == [("W111", 8 + 127)]
+    assert list(mintlang.check("REM " + "y" * 123 + "\n", dialect="v3")) == []
+
+
 def test_a_form_feed_does_not_end_a_line_for_its_length() -> None:
     # a page break of an old listing is a character of the line, as for the controller and editors
     assert found("REM " + "y" * 150 + "\x0c" + "z" * 150 + "\n") == [("W111", WARNING, 1)]

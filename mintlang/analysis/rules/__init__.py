@@ -58,7 +58,7 @@ class Rule:
     name: str
     check: Callable[[Facts], Iterator[Finding]] | None = None
     each_line: Callable[[LineScope], Iterator[Finding]] | None = None
-    each_text_line: Callable[[PhysicalLines, range, ControllerProfile], Iterator[Diagnostic]] | None = None
+    each_text_line: Callable[[PhysicalLines, range, ControllerProfile, Dialect], Iterator[Diagnostic]] | None = None
     dialects: frozenset[Dialect] = _ALL_DIALECTS
     reads: Meaning | None = None  # what a whole-application rule reads of a line, where less than all it means
     looks_at: LineParts | None = None  # what a line rule reads of a line: skipped on lines without any (None: all)

@@ -82,13 +82,14 @@ GROUP = Group(
         ),
         RuleDoc(
             "W111",
-            catches="A line longer than the controller's 255 characters, comments included.",
-            why="The controller does not accept a longer line when the program is downloaded.",
+            catches="A line longer than the controller's 255 characters, comments included (127 in Mint v3).",
+            why="The controller does not accept a longer line when the program is downloaded; a v3 "
+            "controller's compiler stops on it with 'Line too long'.",
             example=Example(
                 before="REM " + "calibration notes " * 14 + "\nPRINT 1\n",
                 after="REM " + "calibration notes " * 7 + "\nREM " + "calibration notes " * 7 + "\nPRINT 1\n",
             ),
-            manual=("v4:18455", "v4:255"),
+            manual=("v4:18455", "v4:255", "v3:5144", "v3:12999"),
             fix="Split the statement at a colon, or shorten names or comments.",
             safety=FixSafety.NONE,
         ),

@@ -26,6 +26,7 @@ is the line they print when such a file shows MintMT's forms.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 
 from mintlang.diagnostics import split_lines
 from mintlang.dialect import Dialect
@@ -44,7 +45,9 @@ _CLOSERS = frozenset({TokenKind.ENDL, TokenKind.ENDIF, TokenKind.ENDEVENT, Token
 # the word of a closer or an opener. The other lines, most of a v3 or v4 program, are not lexed:
 # lexing every line cost most of a parse, which the migrator paid before reading anything.
 _MAY_SHOW = re.compile(f"[{_QUOTES}(]|end[ \\t]|event|startup", re.IGNORECASE)
-_DIM = re.compile(r"\bdim\s+\w+\s*\(", re.IGNORECASE)  # what a line declaring an array holds
+# what a line declaring an array holds, DIM OFFLINE adc(4) too: a match only makes the editor read
+# the whole text again, so it may match more
+_DIM = re.compile(r"\bdim\b.*\(", re.IGNORECASE)
 
 
 @record
@@ -106,13 +109,21 @@ def _shows_any(text: str) -> bool:
 
 
 def _arrays(lines: list[LexedLine]) -> frozenset[str]:
-    """The upper-case names ``lines`` declare as arrays, ``DIM name(``."""
-    return frozenset(
-        line.texts[index + 1].upper()
-        for line in lines
-        for index, kind in enumerate(line.kinds[:-2])
-        if kind is TokenKind.DIM and line.kinds[index + 2] is TokenKind.ADDRESS
-    )
+    """The upper-case names ``lines`` declare as arrays: ``DIM name(``, or v3's ``DIM OFFLINE name(``
+    (an array kept on the memory card, 001:1588-1589)."""
+    return frozenset(name for line in lines for name in _declared(line))
+
+
+def _declared(line: LexedLine) -> Iterator[str]:
+    """The array names ``line``'s DIM statements declare with a ``(`` the lexer reads as an address."""
+    kinds, texts = line.kinds, line.texts
+    for index, kind in enumerate(kinds):
+        if kind is TokenKind.DIM:
+            name = index + 1
+            if name < len(texts) and texts[name].upper() == "OFFLINE":
+                name += 1
+            if name + 1 < len(kinds) and kinds[name + 1] is TokenKind.ADDRESS:
+                yield texts[name].upper()
 
 
 def _form(line: LexedLine, arrays: frozenset[str]) -> str | None:

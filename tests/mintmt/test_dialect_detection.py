@@ -66,6 +66,8 @@ def test_a_form_only_mintmt_has_makes_the_text_mintmt(text: str) -> None:
         pytest.param("END\n", id="END alone"),
         # legal v3, where adc is no keyword: the array's elements (001:7303-7353)
         pytest.param("DIM adc(4) = 1,2,3,4\n? adc(3)\n", id="an array named like a keyword"),
+        # v3 keeps an array on the memory card with DIM OFFLINE (001:1588-1589)
+        pytest.param("DIM OFFLINE adc(4)\nadc(1) = 5\n", id="an offline array named like a keyword"),
     ],
 )
 def test_without_such_a_form_the_text_is_v4(text: str) -> None:
@@ -113,6 +115,7 @@ def test_detecting_after_each_edit_from_the_last_text_is_detecting_afresh(
         pytest.param("DIM mover(2)\nMOVER(0) = 10\n", "MOVER(0) = 10\n", id="the DIM removed"),
         pytest.param("MOVER(0) = 10\n", "DIM mover(2)\nMOVER(0) = 10\n", id="a DIM typed above"),
         pytest.param("DIM mover(2)\nPRINT 1\n", "DIM mover(2)\nMOVER(0) = 10\n", id="an element typed"),
+        pytest.param("MOVER(0) = 10\n", "DIM OFFLINE mover(2)\nMOVER(0) = 10\n", id="a DIM OFFLINE typed above"),
     ],
 )
 def test_an_edit_to_an_array_declaration_elsewhere_is_seen(previous: str, edited: str) -> None:

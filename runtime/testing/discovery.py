@@ -49,18 +49,19 @@ def discover(paths: Iterable[Path]) -> tuple[list[TestCase], list[Unreadable]]:
     paths = list(paths)
     found = find(paths)
     problems = [Unreadable.at(Path(error.filename), _reason(error)) for error in found.unreadable]
-    problems += _scenarios_without_program(paths)
+    # each scenario file with no program once, by the file it is: named and below a folder named, or in two spellings
+    orphans = {orphan.resolve(): orphan for orphan in reversed(_scenarios_without_program(paths))}
     cases: dict[Path, TestCase] = {}
     for named in found.files:
-        program = _program_of(named, problems)
+        program = _program_of(named, orphans)
         case = _case(program, problems) if program is not None else None
         if case is not None:
             cases.setdefault(program.resolve(), case)
-    # a scenario file with no program, named and also below a folder named, is reported once
-    return sorted(cases.values(), key=lambda case: str(case.program)), list(dict.fromkeys(problems))
+    problems += sorted((_orphan(orphan) for orphan in orphans.values()), key=lambda orphan: orphan.message)
+    return sorted(cases.values(), key=lambda case: str(case.program)), problems
 
 
-def _scenarios_without_program(paths: Iterable[Path]) -> list[Unreadable]:
+def _scenarios_without_program(paths: Iterable[Path]) -> list[Path]:
     """Scenario files below the folders with no program of their name beside them: a misnamed program or
     scenario would otherwise leave its test unrun without a word (folders that cannot be listed ``find``
     reports)."""
@@ -69,18 +70,18 @@ def _scenarios_without_program(paths: Iterable[Path]) -> list[Unreadable]:
         for folder, _, names in os.walk(directory):
             for name in names:
                 if name.lower().endswith(SCENARIO_SUFFIX) and listed_as(_program_name(name), names) is None:
-                    orphans.append(_orphan(Path(folder, name)))
-    return sorted(orphans, key=lambda orphan: orphan.message)
+                    orphans.append(Path(folder, name))
+    return orphans
 
 
-def _program_of(path: Path, problems: list[Unreadable]) -> Path | None:
+def _program_of(path: Path, orphans: dict[Path, Path]) -> Path | None:
     """The program a file named or found stands for: itself, or for a scenario file named on the command line,
-    the program beside it whose test the file holds (None, reported, when there is none)."""
+    the program beside it whose test the file holds (None, and the file among ``orphans``, when there is none)."""
     if not path.name.lower().endswith(SCENARIO_SUFFIX):
         return path
     name = listed_as(_program_name(path.name), names_in(path.parent))
     if name is None:
-        problems.append(_orphan(path))
+        orphans.setdefault(path.resolve(), path)
         return None
     return path.parent / name
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner, Result
 
 from mintlang.cli import main
@@ -47,3 +48,14 @@ def test_a_scenario_file_with_no_program_named_and_in_a_folder_named_is_reported
     scenario = write(tmp_path, "conveyer.scenario.toml", EXPECTS_TWO)
     result = _mint_test(tmp_path, scenario)
     assert (result.exit_code, result.output.count("no program conveyer.mnt")) == (2, 1)
+
+
+def test_a_scenario_file_with_no_program_is_reported_once_however_its_paths_are_spelt(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The folder by its absolute path and the file relative to the working folder are one file."""
+    (tmp_path / "t").mkdir()
+    write(tmp_path / "t", "lone.scenario.toml", EXPECTS_TWO)
+    monkeypatch.chdir(tmp_path)
+    result = _mint_test(tmp_path / "t", Path("t", "lone.scenario.toml"))
+    assert (result.exit_code, result.output.count("no program lone.mnt")) == (2, 1)

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import pytest
 
+import mintlang
 from tests.analysis.checking import ERROR, covered, found, only
 from tests.runtime.running import assert_syntax_error_before_it_runs
 
@@ -47,3 +48,16 @@ def test_mint_run_stops_before_the_program_starts(line: str, second: str) -> Non
 )
 def test_one_number_after_the_dot_and_the_can_bus_and_node_pass(line: str) -> None:
     assert found(f"DIM a\n{line}\nPRINT a\n", controller="nextmove-bx") == []
+
+
+@pytest.mark.parametrize(
+    ("source", "says"),
+    [
+        pytest.param("a = POS.1.5\n", "POS takes one axis number after its dot (several axes are listed in brackets)"),
+        pytest.param("OUT.1.5 = 1\n", "OUT takes one channel number after its dot"),
+    ],
+)
+def test_the_message_names_what_the_dot_addresses(source: str, says: str) -> None:
+    """Axes may be listed in brackets (000:563-566); a channel keyword's channels may not (000:548-549)."""
+    [diagnostic] = [d for d in mintlang.check(source) if d.code == "E2003"]
+    assert diagnostic.message.endswith(says)

@@ -194,14 +194,14 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
     if keyword.name.startswith("REMOTE"):
         yield from _can_address(use)
     elif keyword.name in ("COMMSMODE", "SERIALBAUD"):
-        yield from _one_number_after_the_dot(use)
+        yield from _one_number_after_the_dot(use, "channel")
         yield from _terminal(use, scope)
     elif keyword.addressing is Addressing.AXIS:
-        yield from _one_number_after_the_dot(use)
+        yield from _one_number_after_the_dot(use, "axis")
         yield from _axes(use, scope, keyword.name)
         yield from _indices(use, keyword, scope)
     elif keyword.addressing is Addressing.CHANNEL or _channel_family(keyword.name):
-        yield from _one_number_after_the_dot(use)
+        yield from _one_number_after_the_dot(use, "channel")
         yield from _channel(use, scope)
     elif scope.dialect.modern and keyword.documented and keyword.formats:
         yield from _nothing_addressed(use, keyword)
@@ -210,7 +210,7 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
 _ADDRESSED_KINDS = frozenset({KeywordKind.PARAMETER, KeywordKind.COMMAND})
 
 
-def _one_number_after_the_dot(use: KeywordUse) -> Iterator[Finding]:
+def _one_number_after_the_dot(use: KeywordUse, addressed: str) -> Iterator[Finding]:
     """A dot names one axis or channel (000:678-679); several axes are listed in brackets (000:563-566), and a
     channel keyword addresses one channel a call (000:548-549). A second number after the dot (``POS.1.5``), or
     a dot after a channel glued to its keyword (``OUT1.2``), is an addressing no format shows: 2003, as
@@ -223,7 +223,9 @@ def _one_number_after_the_dot(use: KeywordUse) -> Iterator[Finding]:
         span, detail = selector.span, f"{ref.spelling} already names channel {ref.channel}: no dot after it"
     elif len(selector.items) > 1 and (first := selector.items[0]) is not None:
         span = Span(first.span.end, selector.span.end)
-        detail = f"{ref.keyword} takes one axis or channel number after its dot (axes are listed in brackets)"
+        detail = f"{ref.keyword} takes one {addressed} number after its dot"
+        if addressed == "axis":
+            detail += " (several axes are listed in brackets)"
     else:
         return
     yield Finding(use.unit, mint_error(2003, span, detail))

@@ -46,7 +46,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             # KDERIV and then writes KDERIV = 1.5 in its example (supplements.whole_only).
             held = held_value(value, dialect) if whole else None
             if held is not None and not held.is_integer():
-                detail = f"{held:.7g} is not a whole number: {use.keyword.keyword} takes one of its modes"
+                detail = f"{held:.7g} is not a whole number: {use.keyword.keyword} takes whole numbers only"
                 yield Finding(use.unit, mint_error(3, value.span, detail))
             elif positive and number <= 0:
                 yield Finding(use.unit, mint_error(3, value.span, f"{use.keyword.keyword} takes only a positive value"))

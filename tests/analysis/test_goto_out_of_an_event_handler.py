@@ -57,3 +57,19 @@ def test_a_shared_exit_whose_return_ends_the_handler_is_no_jump_out_of_it() -> N
     # the RETURN at #common returns from the handler that jumped there: nothing is left on the stack
     source = "LOOP\n  PRINT 1\nENDL\n#common\n  PRINT 2\nRETURN\n#ONERROR\n  GOTO common\n#STOP\n  GOTO common\n"
     assert _warnings(source) == []
+
+
+def test_a_goto_back_into_an_endless_main_loop_with_no_end_after_it_is_reported() -> None:
+    # the handler after the loop is not where the loop's code settles: nothing runs past an endless loop
+    source = "DIM n = 0\n#top\nLOOP\n  n = n + 1\nENDL\n#IN1\n  IF n > 5 THEN GOTO top\nRETURN\n"
+    assert [start for start, _ in _warnings(source)] == [source.index("GOTO top")]
+
+
+def test_a_goto_to_code_that_jumps_round_in_a_circle_is_reported() -> None:
+    source = "DIM n = 0\n#top\nn = n + 1\nGOTO top\n#IN1\n  GOTO top\nRETURN\n"
+    assert [start for start, _ in _warnings(source)] == [source.rindex("GOTO top")]
+
+
+def test_a_shared_exit_reached_through_another_goto_still_ends_the_handler() -> None:
+    source = "LOOP\nENDL\n#exit\n  GOTO common\n#common\n  PRINT 2\nRETURN\n#ONERROR\n  GOTO exit\n"
+    assert _warnings(source) == []

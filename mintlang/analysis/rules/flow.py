@@ -34,6 +34,7 @@ flow around it goes on after it as if it were not there.
 from __future__ import annotations
 
 import math
+from bisect import bisect_left
 from collections.abc import Iterable, Iterator
 from dataclasses import replace
 from typing import NamedTuple
@@ -82,8 +83,9 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     for unit, document in model.documents():
         starts = subroutines(unit, model, facts)
-        yield from _Flow(unit, document, starts).findings(facts.lines.of(unit))
-        yield from _jumps_out_of_blocks(unit, document, model, facts, starts)
+        flow = _Flow(unit, document, starts)
+        yield from flow.findings(facts.lines.of(unit))
+        yield from _jumps_out_of_blocks(unit, document, model, facts, flow)
 
 
 def runs_off_the_end(unit: Unit, facts: Facts) -> bool:
@@ -224,6 +226,8 @@ class _Flow:
         self.around: _State | None = None  # the flow outside the MintMT Event or Startup block being followed
         self.line = n.PlacedLine(0, 0, n.LineSyntax("", Span(0, 0), None, ()), "")  # the line being followed
         self.found: list[Finding] = []
+        self.run_into: set[int] = set()  # the lines of the subroutine labels the code above them runs into
+        self.endless: list[int] = []  # the lines closing an endless loop, past which nothing runs
 
     def findings(self, lines: Iterable[tuple[n.PlacedLine, LineFacts]]) -> list[Finding]:
         for line, facts in lines:
@@ -262,6 +266,7 @@ class _Flow:
             self.reachable, self.reported = True, False
             return
         if self.reachable and self.running:
+            self.run_into.add(self.line.number)
             if self.subroutine is None:
                 self.falling_from_main = True
             else:
@@ -411,6 +416,7 @@ class _Flow:
 
     def _close(self, loop: _Loop) -> None:
         if loop.endless and not loop.left:
+            self.endless.append(self.line.number)
             self.reachable = False
             self.after_endless_loop = True
             self.falling_from_main = False
@@ -452,34 +458,58 @@ def _handlers(unit: Unit, document: Document, model: SemanticModel, starts: froz
     return found if open_handler is None else [*found, open_handler]
 
 
-def _outcomes(unit: Unit, document: Document, model: SemanticModel, facts: Facts, starts: frozenset[str]) -> list[int]:
-    """The lines where code run from a label settles, each signed: +line where it reaches a RETURN, conditional
-    or not, or the next subroutine (which returns), -line where it reaches an END outside any block."""
+# Where code run from a label settles: it returns (True), stops for good (False), or jumps to a label (its identity).
+Outcome = bool | str
+
+
+def _outcomes(unit: Unit, document: Document, model: SemanticModel, facts: Facts, flow: _Flow) -> dict[int, Outcome]:
+    """The lines where code run from a label settles: a RETURN, conditional or not, or a subroutine the code above
+    runs into (which returns); an END outside any block, or the end of an endless loop, past which nothing runs;
+    a GOTO outside any block, which goes where its label is."""
     blocks = model.structures[unit].blocks
     returns = {
         line.number
         for file, line, statement in facts.statements(n.BlockWord)
         if file is unit and statement.word == "RETURN"  # type: ignore[union-attr]
     }
-    found: list[int] = []
+    found: dict[int, Outcome] = dict.fromkeys(flow.endless, False)
     for line in document.placed:
-        label = line.syntax.label
-        if line.number in returns or (label is not None and label.identity in starts):
-            found.append(line.number)
-        elif _says(line, "END") and not any(_contains(block, line.number) for block in blocks):
-            found.append(-line.number)
-    return found
+        number = line.number
+        if number in returns or number in flow.run_into:
+            found[number] = True
+        elif not any(_contains(block, number) for block in blocks):
+            if _says(line, "END"):
+                found[number] = False
+            elif (jump := next((s for s in line.syntax.statements if _is_goto(s)), None)) is not None:
+                found[number] = jump.label.identity  # type: ignore[union-attr]
+    return dict(sorted(found.items()))
 
 
-def _returns_from(target: int, outcomes: list[int]) -> bool:
+def _is_goto(statement: n.Statement) -> bool:
+    return type(statement) is n.Jump and statement.word == "GOTO"  # type: ignore[union-attr]
+
+
+def _returns_from(target: int, outcomes: dict[int, Outcome], labels: dict[str, int]) -> bool:
     """Whether the code at the label of line ``target`` returns (a handler's shared exit), rather than ending the
-    program or running on to the file's end as a main program does."""
-    settled = next((outcome for outcome in outcomes if abs(outcome) >= target), None)
-    return settled is not None and settled > 0
+    program, looping for good or running on to the file's end as a main program does; GOTOs are followed."""
+    lines = list(outcomes)
+    seen: set[int] = set()
+    while target not in seen:
+        seen.add(target)
+        place = bisect_left(lines, target)
+        if place == len(lines):
+            return False
+        outcome = outcomes[lines[place]]
+        if not isinstance(outcome, str):
+            return outcome
+        if outcome not in labels:
+            return False
+        target = labels[outcome]
+    return False  # jumps round in a circle
 
 
 def _jumps_out_of_blocks(
-    unit: Unit, document: Document, model: SemanticModel, facts: Facts, starts: frozenset[str]
+    unit: Unit, document: Document, model: SemanticModel, facts: Facts, flow: _Flow
 ) -> Iterator[Finding]:
     """W113: a GOTO out of an event handler, IF block or loop (000:11199-11215), each of which stays on the stack."""
     gotos = [
@@ -490,8 +520,8 @@ def _jumps_out_of_blocks(
     if not gotos:
         return
     blocks = model.structures[unit].blocks
-    handlers = _handlers(unit, document, model, starts)
-    outcomes = _outcomes(unit, document, model, facts, starts) if handlers else []
+    handlers = _handlers(unit, document, model, flow.subroutines)
+    outcomes = _outcomes(unit, document, model, facts, flow) if handlers else {}
     labels = {line.syntax.label.identity: line.number for line in document.placed if line.syntax.label is not None}
     for line, statement in gotos:
         target = labels.get(statement.label.identity)
@@ -502,7 +532,7 @@ def _jumps_out_of_blocks(
             for handler in handlers
             if handler.first <= line.number <= handler.last
             and not handler.first <= target <= handler.last
-            and not _returns_from(target, outcomes)  # a shared exit: its RETURN ends the handler
+            and not _returns_from(target, outcomes, labels)  # a shared exit: its RETURN ends the handler
         ]
         left += _blocks_named(
             [block for block in blocks if _contains(block, line.number) and not _contains(block, target)]

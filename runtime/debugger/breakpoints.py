@@ -5,7 +5,8 @@ A breakpoint binds to the first statement of its line, or of the next line
 holding a statement (a comment, a label, a blank line or a MintMT ``Event`` or
 ``Startup`` line runs nothing): it stops each time that first statement is about to run, so once per pass over
 a line like ``a = 1 : b = 2``, and not again while a blocked statement waits. Its condition is a Mint
-expression (true when non-zero); its hit condition counts the times the
+expression (true when non-zero), read as it is set (one that does not read leaves the breakpoint
+unverified, with why) and compiled against each run when first met; its hit condition counts the times the
 condition held since it was set, and going back takes the count back with the
 run: to what it was at the checkpoint the re-run starts from
 (``checkpoints.py``), 0 for a breakpoint set since: ``5`` or ``== 5`` stops at the
@@ -94,6 +95,7 @@ class Breakpoints:
     def __init__(self, layout: Layout) -> None:
         self.sites = layout.sites
         self.labels = layout.labels
+        self.expressions = layout.expressions
         self.next_id = 1
         self.generation = 0  # changes with every change of the breakpoints
         self.groups: dict[str, list[Breakpoint]] = {}  # a file's ("program", "configuration") or FUNCTIONS
@@ -139,13 +141,22 @@ class Breakpoints:
         breakpoint_.condition = request.get("condition") or None
         breakpoint_.hit_condition = request.get("hitCondition") or None
         breakpoint_.log_message = request.get("logMessage") or None
-        breakpoint_.problem = problem
-        if problem is None and breakpoint_.hit_condition is not None:
-            try:
-                hit_test(breakpoint_.hit_condition)
-            except ValueError as unreadable:
-                breakpoint_.problem = str(unreadable)
+        breakpoint_.problem = problem or self._unreadable(breakpoint_)
         return breakpoint_
+
+    def _unreadable(self, breakpoint_: Breakpoint) -> str | None:
+        """Why the breakpoint's condition or hit condition cannot be read, found as it is set rather than when
+        the run first reaches it; a condition that reads but fails to evaluate still stops there and says why."""
+        try:
+            if breakpoint_.condition is not None and self.expressions is not None:
+                self.expressions.read(breakpoint_.condition)
+            if breakpoint_.hit_condition is not None:
+                hit_test(breakpoint_.hit_condition)
+        except EvaluationError as unreadable:
+            return f"condition {breakpoint_.condition}: {unreadable}"
+        except ValueError as unreadable:
+            return str(unreadable)
+        return None
 
     def _replaced(self, group: str, placed: list[Breakpoint]) -> list[Breakpoint]:
         """``placed`` instead of the group's breakpoints; those sent again unchanged keep their hit count."""

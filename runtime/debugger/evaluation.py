@@ -35,36 +35,27 @@ class Compiled:
     evaluate: Evaluate
 
 
-class Evaluator:
-    """Compiles and evaluates expressions against one run of the program (a re-run needs a new one)."""
+@record
+class ExpressionReader:
+    """Reads typed text as an expression of the program without running anything: what a breakpoint's condition
+    is checked with when the editor sets it, before the run it will be evaluated in exists."""
 
-    def __init__(self, controller: Controller, dialect: Dialect) -> None:
-        self.controller = controller
-        self.dialect = dialect
-        names = controller.linked.names
-        self.names = names
-        self.compiler = ExpressionCompiler(controller.vm, controller.table, names, semantics(dialect))
+    dialect: Dialect
+    controller: str  # the controller's name: which keywords the parse knows
+    scalars: frozenset[str]  # the identities of the program's variables
 
-    def compile(self, text: str) -> Compiled:
-        """``text`` compiled; raises ``EvaluationError`` naming the column of a syntax error."""
-        expression = self.parse(text)
-        for node in n.walk_expression(expression):
-            if type(node) is n.VariableRef and node.name.identity not in self.names.scalars:  # type: ignore[union-attr]
-                raise EvaluationError(f"{node.name.text} is not a variable of the program")  # type: ignore[union-attr]
-        try:
-            return Compiled(text, self.compiler.compile(expression))
-        except MintError as error:
-            raise EvaluationError(error.describe()) from None
-        except NotSimulated as missing:
-            raise EvaluationError(str(missing)) from None
+    @classmethod
+    def of(cls, controller: Controller, dialect: Dialect) -> ExpressionReader:
+        return cls(dialect, controller.table.controller, frozenset(controller.linked.names.scalars))
 
-    def parse(self, text: str) -> n.Expression:
-        """The expression ``text`` spells, in the program's dialect."""
+    def read(self, text: str) -> n.Expression:
+        """The expression ``text`` spells, in the program's dialect; ``EvaluationError`` naming the column of a
+        syntax error, or a name the program does not declare."""
         if not text.strip():
             raise EvaluationError("an empty expression")
         if "\n" in text or "\r" in text:
             raise EvaluationError("an expression is one line")
-        document = parse(_HOST + text, self.dialect, controller=self.controller.table.controller)
+        document = parse(_HOST + text, self.dialect, controller=self.controller)
         if document.diagnostics:
             problem = document.diagnostics[0]
             column = max(problem.span.start - len(_HOST), 0) + 1
@@ -80,7 +71,28 @@ class Evaluator:
             raise EvaluationError(f"{text!r} is not one expression")
         if type(item.value) is n.StringLiteral:
             raise EvaluationError("a string is not a value the debugger can show: Mint's values are numbers")
+        for node in n.walk_expression(item.value):
+            if type(node) is n.VariableRef and node.name.identity not in self.scalars:  # type: ignore[union-attr]
+                raise EvaluationError(f"{node.name.text} is not a variable of the program")  # type: ignore[union-attr]
         return item.value  # type: ignore[return-value]
+
+
+class Evaluator:
+    """Compiles and evaluates expressions against one run of the program (a re-run needs a new one)."""
+
+    def __init__(self, controller: Controller, dialect: Dialect) -> None:
+        self.reader = ExpressionReader.of(controller, dialect)
+        self.compiler = ExpressionCompiler(controller.vm, controller.table, controller.linked.names, semantics(dialect))
+
+    def compile(self, text: str) -> Compiled:
+        """``text`` compiled; raises ``EvaluationError`` naming the column of a syntax error."""
+        expression = self.reader.read(text)
+        try:
+            return Compiled(text, self.compiler.compile(expression))
+        except MintError as error:
+            raise EvaluationError(error.describe()) from None
+        except NotSimulated as missing:
+            raise EvaluationError(str(missing)) from None
 
     def evaluate(self, text: str) -> float:
         return run(self.compile(text))

@@ -23,6 +23,7 @@ from mintlang.detection import detect_dialect
 from mintlang.dialect import Dialect
 from mintlang.records import record
 from mintlang.runtime.controller import Controller
+from mintlang.runtime.debugger.evaluation import ExpressionReader
 from mintlang.runtime.dialects import SIMULATED
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import Site
@@ -147,6 +148,7 @@ class Layout:
     labels: Mapping[str, int] = field(default_factory=dict)
     columns: tuple[int, ...] = ()  # each statement's 1-based column, so a stop shows which of a line's it is
     block_ends: Mapping[int, int] = field(default_factory=dict)  # a MintMT Event block's first statement -> its end
+    expressions: ExpressionReader | None = None  # checks a breakpoint's condition as it is set
 
     def column(self, pc: int) -> int:
         return self.columns[pc] if pc < len(self.columns) else 1
@@ -169,7 +171,9 @@ def layout(application: Application) -> Layout:
     def compiled(controller: Controller) -> None:
         sites = tuple(controller.vm.sites)
         labels = dict(controller.linked.handlers)
-        raise _Compiled(Layout(sites, labels, _columns(application, sites), controller.linked.event_block_ends))
+        columns = _columns(application, sites)
+        expressions = ExpressionReader.of(controller, application.dialect)
+        raise _Compiled(Layout(sites, labels, columns, controller.linked.event_block_ends, expressions))
 
     try:
         application.run(compiled)

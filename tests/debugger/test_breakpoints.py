@@ -81,11 +81,28 @@ def test_a_log_message_prints_its_values_and_does_not_stop(debug: Debug) -> None
     assert client.output().split() == ["1", "3", "6", "10"]
 
 
+UNREADABLE_CONDITIONS = [
+    pytest.param("i >", "column 4", id="an expression cut short"),
+    pytest.param("nosuch > 1", "nosuch is not a variable of the program", id="a name the program does not declare"),
+]
+
+
+@pytest.mark.parametrize(("condition", "why"), UNREADABLE_CONDITIONS)
+def test_a_condition_it_cannot_read_leaves_the_breakpoint_unverified_as_it_is_set(
+    debug: Debug, condition: str, why: str
+) -> None:
+    client = debug(PROGRAM)
+    (placed,) = client.set_breakpoints({"line": 6, "condition": condition})
+    assert not placed["verified"]
+    assert why in placed["message"]
+
+
 def test_a_condition_that_fails_to_evaluate_stops_and_says_why(debug: Debug) -> None:
-    client = debug(PROGRAM, breakpoints=({"line": 6, "condition": "nosuch > 1"},))
+    client = debug(PROGRAM, breakpoints=({"line": 6, "condition": "s / (i - 1) > 1"},))
     stop = client.stopped()
     assert stop["reason"] == "breakpoint"
-    assert "nosuch is not a variable of the program" in stop["description"]
+    assert client.values()["i"] == "1"
+    assert "2021" in stop["description"]  # division by zero (000:19063)
 
 
 def test_breakpoints_in_a_file_outside_the_application_are_refused(debug: Debug, tmp_path) -> None:

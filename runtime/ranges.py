@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import replace
 
+from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, ValueRange
 from mintlang.keyworddb.supplements import narrowed, whole_only
@@ -32,19 +33,20 @@ class Bounds:
 UNBOUNDED = Bounds(None, None, False)
 
 
-def table_bounds(keyword: str, controller: Controller) -> Bounds:
+def table_bounds(keyword: str, controller: Controller, dialect: Dialect = Dialect.V4) -> Bounds:
     """The range the keyword's attributes table gives for ``controller``, as its entry's text may narrow it
-    (``supplements.narrowed``); unbounded when it gives none."""
-    record = database().keywords.get(keyword)
+    (``supplements.narrowed``); unbounded when it gives none. A MintMT keyword's row is the one
+    ``mint check`` reads too, written from ``mintlang/MINTMT.md``'s decisions."""
+    record = database().keywords_of(dialect).get(keyword)
     row = record.attributes_for(controller) if record is not None else None
     found = narrowed(keyword, row.range if row is not None else None)
     bounds = UNBOUNDED if found is None else bounds_of(found)
-    return replace(bounds, whole=True) if whole_only(keyword) else bounds
+    return replace(bounds, whole=True) if whole_only(keyword, dialect) else bounds
 
 
 def bounds_of(found: ValueRange) -> Bounds:
     """The bounds a printed range gives."""
-    exclusive_minimum = found.text.replace(" ", "").startswith("0.0<x")
+    exclusive_minimum = not found.minimum_included
     allowed = frozenset(found.allowed) if found.allowed is not None else None  # a mode's values: "0 .. 4, 6"
     return Bounds(
         found.minimum, found.maximum, exclusive_minimum, allowed, exclusive_maximum=not found.maximum_included
@@ -64,10 +66,13 @@ def table_default(keyword: str, controller: Controller) -> float | None:
 
 
 def ranged(
-    keyword: str, controller: Controller, write_one: Callable[[int | None, float], None]
+    keyword: str,
+    controller: Controller,
+    write_one: Callable[[int | None, float], None],
+    dialect: Dialect = Dialect.V4,
 ) -> Callable[[int | None, float], None]:
     """``write_one`` for the values ``keyword``'s table accepts on ``controller``; error 3 for the others."""
-    limits = table_bounds(keyword, controller)
+    limits = table_bounds(keyword, controller, dialect)
     return lambda channel, value: write_one(channel, check_range(keyword, value, limits, channel))
 
 

@@ -77,7 +77,7 @@ its table of values (000:7345-7348)."""
 
 
 @cache
-def whole_only(keyword: str) -> bool:
+def whole_only(keyword: str, dialect: Dialect = Dialect.V4) -> bool:
     """Whether ``mint check`` and ``mint-run`` hold ``keyword``'s values to whole numbers (error 3 for a fraction).
 
     A keyword "will accept fractional values" where its range "specifies a decimal part (.0)"
@@ -85,10 +85,17 @@ def whole_only(keyword: str) -> bool:
     its example: 000:12755), so it is held only where the values are modes, which a fraction cannot
     select: those the entry names with predefined constants (CONFIG's motor types, FOLLOWMODE's modes,
     CAM's bits: 000:8431, 000:10846, 000:7595) and whose range prints no decimal part, and BANK's cards.
+    MintMT's own keywords have rows written by hand from the decisions of ``mintlang/MINTMT.md`` (the notes
+    print no tables), and there a range without a decimal part means what it says: a count of buffer places,
+    of milliseconds, a mode (MT-10, MT-14, MT-16, MT-22).
     """
+    db = database()
+    if dialect is Dialect.MINTMT and keyword in db.mintmt_keywords:
+        rows = db.mintmt_keywords[keyword].attributes
+        return any(row.range is not None and not row.range.fractional for row in rows)
     if keyword in _MODES_WITHOUT_CONSTANTS:
         return True
-    record = database().keywords.get(keyword)
+    record = db.keywords.get(keyword)
     if record is None or not record.constants:
         return False
     return not any(row.range is not None and row.range.fractional for row in record.attributes)

@@ -32,9 +32,9 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         # a scale factor is positive whatever its table prints, or where it prints none (ServoNode 51's SCALE)
         positive = use.keyword.keyword in supplements.POSITIVE_ONLY
         limits = supplements.narrowed(use.keyword.keyword, attributes.range if attributes is not None else None)
-        if limits is not None and limits.allowed is None and (limits.minimum is None or limits.maximum is None):
-            limits = None
-        whole = supplements.whole_only(use.keyword.keyword)
+        if limits is not None and limits.allowed is None and limits.minimum is None and limits.maximum is None:
+            limits = None  # TRIGGERMODE's "whole numbers": the whole test below is all there is
+        whole = supplements.whole_only(use.keyword.keyword, dialect)
         if limits is None and not (positive or whole):
             continue
         scaled = attributes is not None and attributes.scaled

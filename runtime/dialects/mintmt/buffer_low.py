@@ -11,11 +11,10 @@ The level 0, at power-up, is never reached from below: no event.
 from __future__ import annotations
 
 from mintlang.runtime.clock import NEVER
-from mintlang.runtime.errors import MintError
 from mintlang.runtime.events import EventClass, Events
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.commands import Motion
-from mintlang.runtime.ranges import OUT_OF_RANGE
+from mintlang.runtime.ranges import ranged
 
 
 class BufferLowEvent:
@@ -28,15 +27,14 @@ class BufferLowEvent:
         self._free_before: dict[int, int] = {}
 
     def register(self, table: KeywordTable) -> None:
-        table.register("MOVEBUFFERLOW", read=self._read, write=per_channel(self._write))
+        write = ranged("MOVEBUFFERLOW", table.controller, self._write, table.dialect)  # MT-14: whole, 0 or more
+        table.register("MOVEBUFFERLOW", read=self._read, write=per_channel(write))
 
     def _read(self, channel: int | None) -> float:
         return float(self.levels.get(self.motion.axis(channel).number, 0))
 
     def _write(self, channel: int | None, value: float) -> None:
         axis = self.motion.axis(channel)
-        if value != int(value) or value < 0:
-            raise MintError(OUT_OF_RANGE, axis.number, "MOVEBUFFERLOW is a number of free places: 0 or more")
         if value:
             self.levels[axis.number] = int(value)
         else:

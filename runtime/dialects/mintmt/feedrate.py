@@ -15,7 +15,7 @@ from __future__ import annotations
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.commands import Motion
-from mintlang.runtime.ranges import OUT_OF_RANGE
+from mintlang.runtime.ranges import OUT_OF_RANGE, ranged
 
 SPEED_MODE = 0
 FEEDRATE_MODE = 1  # _frFEEDRATE (MT-3)
@@ -42,10 +42,9 @@ def install(table: KeywordTable, motion: Motion) -> None:
 
     def write_override(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)
-        if not value > 0.0:
-            raise MintError(OUT_OF_RANGE, axis.number, "FEEDRATEOVERRIDE is a percentage above 0")
         axis.speed_override = value / 100.0
         motion.rates_changed(axis)
 
     table.register("FEEDRATEMODE", read=read_mode, write=per_channel(write_mode))
-    table.register("FEEDRATEOVERRIDE", read=read_override, write=per_channel(write_override))
+    override = ranged("FEEDRATEOVERRIDE", table.controller, write_override, table.dialect)  # MT-15: above 0
+    table.register("FEEDRATEOVERRIDE", read=read_override, write=per_channel(override))

@@ -21,7 +21,7 @@ from mintlang.runtime.io_banks import with_bit
 from mintlang.runtime.keywords import Channels, IndexedWriter, KeywordTable, Values
 from mintlang.runtime.motion.axis import Request
 from mintlang.runtime.motion.commands import MISSING_PARAMETER, TOO_MANY_VALUES, Motion
-from mintlang.runtime.ranges import OUT_OF_RANGE
+from mintlang.runtime.ranges import OUT_OF_RANGE, UNBOUNDED, check_range, table_bounds
 
 
 class OutputMoves:
@@ -32,10 +32,12 @@ class OutputMoves:
         self.io = io
         self.loaded = loaded  # TRIGGERMODE: starts what was just loaded where triggering is automatic
         self.pulse_ends: dict[int, int] = {}  # channel -> the tick its pulse ends
+        self.pulse_limits = UNBOUNDED  # MOVEPULSEOUTX's milliseconds: the controller's row, once registered
 
     def register(self, table: KeywordTable) -> None:
         table.register("MOVEOUT", indexed_write=self._loader(self._bank))
         table.register("MOVEOUTX", indexed_write=self._loader(self._channel))
+        self.pulse_limits = table_bounds("MOVEPULSEOUTX", table.controller, table.dialect)  # MT-22: whole ms, 1 on
         table.register("MOVEPULSEOUTX", indexed_write=self._loader(self._pulse))
 
     # ------------------------------------------------------------ loading
@@ -76,8 +78,7 @@ class OutputMoves:
 
     def _pulse(self, channel: int, milliseconds: float) -> Callable[[], None]:
         self._check(channel)
-        if milliseconds != int(milliseconds) or milliseconds < 1:
-            raise MintError(OUT_OF_RANGE, detail="MOVEPULSEOUTX takes a whole number of milliseconds, 1 or more")
+        check_range("MOVEPULSEOUTX", milliseconds, self.pulse_limits)
 
         def pulse() -> None:
             self._set(channel, on=True)

@@ -14,14 +14,14 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from mintlang.records import record
-from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.errors import NotSimulated
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.holding import hold, release
 from mintlang.runtime.motion.moves import Move, PlannedMove, next_profiler_tick
 from mintlang.runtime.motion.paths import Chain
-from mintlang.runtime.ranges import OUT_OF_RANGE
+from mintlang.runtime.ranges import ranged
 
 RUNNING, SUSPENDED = 0, 1
 
@@ -42,7 +42,8 @@ class Suspension:
         self.paused: list[_Paused] = []
 
     def register(self, table: KeywordTable) -> None:
-        table.register("SUSPEND", read=self._read, write=per_channel(self._write))
+        write = ranged("SUSPEND", table.controller, self._write, table.dialect)  # MT-16: whole, 0 or more
+        table.register("SUSPEND", read=self._read, write=per_channel(write))
 
     def _read(self, channel: int | None) -> float:
         return float(SUSPENDED if self.motion.axis(channel).number in self.suspended else RUNNING)
@@ -50,8 +51,6 @@ class Suspension:
     def _write(self, channel: int | None, value: float) -> None:
         axis = self.motion.axis(channel)
         if value not in (RUNNING, SUSPENDED):
-            if value != int(value) or value < 0:
-                raise MintError(OUT_OF_RANGE, axis.number, "SUSPEND is 0 (run) or 1 (suspend)")
             raise NotSimulated("SUSPEND", f"the value {value:g}: single stepping, whose values the notes do not give")
         if value == SUSPENDED:
             self._suspend(axis)

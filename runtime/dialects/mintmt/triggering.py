@@ -10,10 +10,9 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer
 from mintlang.runtime.motion.commands import Motion
-from mintlang.runtime.ranges import OUT_OF_RANGE
+from mintlang.runtime.ranges import check_range, table_bounds
 
 AUTOMATIC = 0.0
 WAIT_FOR_GO = 1.0  # the power-up value: any value but 0 (MT-10)
@@ -24,6 +23,7 @@ def install(table: KeywordTable, motion: Motion) -> Callable[[Channels | None], 
     """TRIGGERMODE, and every move-loading keyword of ``LOADING`` the table has, triggering where it is on;
     returns what starts the moves just loaded on the axes named, where triggering is automatic."""
     modes = dict.fromkeys(range(len(motion.axes)), WAIT_FOR_GO)
+    limits = table_bounds("TRIGGERMODE", table.controller, table.dialect)  # MT-10: whole numbers
 
     def read(channel: int | None) -> float:
         return modes[motion.axis(channel).number]
@@ -31,9 +31,7 @@ def install(table: KeywordTable, motion: Motion) -> Callable[[Channels | None], 
     def write(channels: Channels | None, values: Values) -> bool:
         for axis, value in zip(motion.addressed(channels), values, strict=False):
             if value is not None:
-                if value != int(value):
-                    raise MintError(OUT_OF_RANGE, axis.number, "TRIGGERMODE takes a whole number")
-                modes[axis.number] = value
+                modes[axis.number] = check_range("TRIGGERMODE", value, limits, axis.number)
         return False
 
     def loaded(channels: Channels | None) -> None:

@@ -1,0 +1,67 @@
+"""The values MintMT's own keywords take, the same in ``mint check`` and ``mint-run``.
+
+The notes print no attributes tables, so the ranges are ``mintlang/MINTMT.md``'s decisions, written once in
+the keyword rows both tools read: TRIGGERMODE takes whole numbers (MT-10), MOVEBUFFERLOW a whole number of
+free places, 0 or more (MT-14), FEEDRATEOVERRIDE a percentage above 0 (MT-15), SUSPEND a whole number 0 or
+more (MT-16) and MOVEPULSEOUTX a whole number of milliseconds, 1 or more (MT-22). Any other value is
+error 3, "Data specified out of range" (000:18518-18521).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import mintlang
+from mintlang.runtime.interpreter.vm import StopReason
+from mintlang.runtime.run import Limits, run_source
+from mintlang.runtime.scenario import DrivesEnabled, Scenario
+
+OUT_OF_RANGE = [
+    pytest.param("TRIGGERMODE(0) = 0.5", id="TRIGGERMODE a fraction"),
+    pytest.param("MOVEBUFFERLOW(0) = -1", id="MOVEBUFFERLOW below 0"),
+    pytest.param("MOVEBUFFERLOW(0) = 2.5", id="MOVEBUFFERLOW a fraction"),
+    pytest.param("FEEDRATEOVERRIDE(0) = 0", id="FEEDRATEOVERRIDE 0"),
+    pytest.param("FEEDRATEOVERRIDE(0) = -10", id="FEEDRATEOVERRIDE below 0"),
+    pytest.param("SUSPEND(0) = -1", id="SUSPEND below 0"),
+    pytest.param("SUSPEND(0) = 0.5", id="SUSPEND a fraction"),
+    pytest.param("MOVEPULSEOUTX(0,3) = 0", id="MOVEPULSEOUTX 0 ms"),
+    pytest.param("MOVEPULSEOUTX(0,3) = 2.5", id="MOVEPULSEOUTX a fraction of a ms"),
+]
+
+IN_RANGE = [
+    pytest.param("TRIGGERMODE(0) = -2", id="TRIGGERMODE any whole number"),
+    pytest.param("MOVEBUFFERLOW(0) = 0", id="MOVEBUFFERLOW 0"),
+    pytest.param("FEEDRATEOVERRIDE(0) = 50.5", id="FEEDRATEOVERRIDE a fraction of a percent"),
+    pytest.param("SUSPEND(0) = 1", id="SUSPEND 1"),
+    pytest.param("MOVEPULSEOUTX(0,3) = 1", id="MOVEPULSEOUTX 1 ms"),
+]
+
+
+def _program(statement: str) -> str:
+    return f"MOVEBUFFERSIZE(0) = 4\n{statement}\n"
+
+
+def _checked(statement: str) -> list[str]:
+    result = mintlang.check(_program(statement), dialect="mintmt", controller="nextmove-pci")
+    return [diagnostic.code for diagnostic in result]
+
+
+def _ran(statement: str) -> tuple[StopReason, int]:
+    limits = Limits(until_ms=100, max_wall_s=60.0)
+    enabled = Scenario(drives=(DrivesEnabled(),))  # an output move is loaded on an axis that can move
+    result = run_source(
+        _program(statement), dialect="mintmt", controller="nextmove-pci", scenario=enabled, limits=limits
+    )
+    return result.stop.reason, result.err
+
+
+@pytest.mark.parametrize("statement", OUT_OF_RANGE)
+def test_a_value_outside_the_range_is_error_3_in_the_check_and_the_run(statement: str) -> None:
+    assert _checked(statement) == ["E0003"]
+    assert _ran(statement) == (StopReason.ERROR, 3)
+
+
+@pytest.mark.parametrize("statement", IN_RANGE)
+def test_a_value_inside_the_range_passes_both(statement: str) -> None:
+    assert _checked(statement) == []
+    assert _ran(statement)[0] is not StopReason.ERROR

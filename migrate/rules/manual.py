@@ -227,6 +227,29 @@ class ChangedMeaning(ManualKeywords):
     reason = "use VIEW VAR / VIEW ARRAY at the command line"
 
 
+class Password(Rule):
+    """v3 reads the rest of PROTECT's line as the password, spaces, punctuation and a REM included
+    (v3:11089-11092); v4 reads one word of letters and digits (v4:15393-15394). A v3 password of more
+    than that reads in v4 as another password with statements after it, or not at all: a person
+    chooses the new one."""
+
+    id = "X-PROTECT"
+    rule_class = RuleClass.MANUAL
+    phase = Phase.MANUAL
+    summary = "PROTECT with spaces or punctuation in its password -> manual (v4: letters and digits)"
+    evidence = "v3:11089-11092; v4:15393-15394"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file, use in context.keyword_uses("PROTECT"):
+            statement = use.statement
+            if not isinstance(statement, n.KeywordStatement) or len(statement.arguments) != 1:
+                continue
+            word = statement.arguments[0]
+            if isinstance(word, n.VariableRef) and not word.name.text.isalnum():
+                reason = f"v4 reads the v3 password {word.name.text!r} otherwise: choose one word of letters and digits"
+                yield self.flag(file, statement.span, reason)
+
+
 class OnError(Rule):
     """Every #ONERROR needs review: v4 also calls it for interpreter errors (a ``RESET : RUN``
     handler can loop), the default error actions may have disabled the drive, and CANCEL

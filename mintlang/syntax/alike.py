@@ -91,6 +91,8 @@ class _Words:
             return False
         if len(line.text) >= SHORTEST_TOO_LARGE and _long_number(line):  # no token is longer than its line
             return False
+        if line.text.startswith("PROTECT") and not _one_word_password(line):
+            return False
         words = set(_WORD.findall(_code(line).upper()))
         if words <= self._same:
             return True
@@ -123,6 +125,14 @@ def _code(line: LexedLine) -> str:
             last = end
     pieces.append(text[last:])
     return " ".join(pieces)
+
+
+def _one_word_password(line: LexedLine) -> bool:
+    """Whether the password a v3 ``PROTECT`` line gives, the rest of its line (001:11089-11092), is one word,
+    as v4 reads it too: ``PROTECT my pass`` or ``PROTECT abc : REM x`` are other statements in v4."""
+    if len(line.kinds) != 2 or line.kinds[1] is not TokenKind.NAME:
+        return True  # no password read: the line was lexed as any other
+    return _WORD.fullmatch(line.text[line.starts[1] : line.ends[1]].upper()) is not None
 
 
 def _spaced(line: LexedLine) -> bool:

@@ -67,6 +67,9 @@ _LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)?")
 # v3 reads a two-character relation with blanks inside: PAUSE DEMAND > = 50 (v3 guide 3096)
 _SPACED_RELATION = re.compile(f"<[{_SPACE}]+[=>]|>[{_SPACE}]+=")
 _DIGITS_AFTER_DOT = re.compile(r"[0-9]+")
+# A v3 password is the rest of the line after an upper-case PROTECT opening it: letters, numbers, spaces and
+# punctuation, a REM included (001:11089-11092); the lines after it are read as any others.
+_V3_PASSWORD = re.compile(f"[{_SPACE}]+([^{_SPACE}](?:.*[^{_SPACE}])?)")
 
 _PUNCTUATION: dict[str, TokenKind] = {
     "<>": _K.NOTEQUAL,
@@ -275,9 +278,15 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
                 comment_start = position
                 break
             kind = spellings.get(upper) or unlisted.get(upper) or _classified(words, upper)
+            end = found.end()  # type: ignore[union-attr]
+            if v3 and not kinds and text == "PROTECT" and (password := _V3_PASSWORD.match(line, end, content_end)):
+                kinds += (kind, _NAME)
+                starts += (position, password.start(1))
+                ends += (end, password.end(1))
+                break
             if kind is _INVALID:
                 issues.append(_syntax_issue(position, len(text), f"{text!r} is not a valid name: {_UNDERSCORE}"))
-            if mintmt and kind is _K.END and (closer := _mintmt_closer(line, found.end(), content_end)):  # type: ignore[union-attr]
+            if mintmt and kind is _K.END and (closer := _mintmt_closer(line, end, content_end)):
                 kind, text = closer[0], line[position : closer[1]]
         elif text[0] == "." and (previous in _DOT_OWNERS or dot_number):
             kind, text = _DOT, "."

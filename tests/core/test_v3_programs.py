@@ -136,3 +136,21 @@ def test_v3_invalid_axis_examples_are_found_as_the_run_raises_them(source: str, 
 def test_v3_numbers_and_variables_are_axes() -> None:
     # 001:1005-1007: MOVER[a] = 100 is valid; a vector move on two axes too
     assert mintlang.check("a = 1\nMOVER[a] = 100\nVR[0,1] = 10,10\n", dialect="v3") == []
+
+
+@pytest.mark.parametrize(
+    ("line", "password"),
+    [
+        pytest.param("PROTECT abc", "abc", id="one word"),
+        pytest.param("PROTECT my pass, 1!", "my pass, 1!", id="spaces and punctuation"),
+        pytest.param("PROTECT pw : REM x  ", "pw : REM x", id="a REM is part of it, trailing blanks are not"),
+    ],
+)
+def test_v3_reads_the_rest_of_a_protect_line_as_its_password(line: str, password: str) -> None:
+    # letters, numbers, spaces and punctuation; a REM on the line becomes part of the password (v3:11089-11092)
+    source = f"{line}\nPRINT 1\n"
+    document = mintlang.parse(source, "v3")
+    assert document.diagnostics == ()
+    (statement,) = document.placed[0].syntax.statements
+    assert statement.arguments[0].name.text == password
+    assert mintlang.check(source, dialect="v3") == []

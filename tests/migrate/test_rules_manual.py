@@ -43,10 +43,6 @@ def test_a_flag_alone_after_auto_or_protect_breaks_only_the_separator() -> None:
     marker += "INPUTACTIVELEVEL"
     assert result.configuration.text == f"AUTO\r\n{marker}\r\nERRORIN = 1\r\nSCALE = 1\r\n"
     assert [(item.rule, item.line) for item in result.configuration.manual] == [("S-ERRORIN", 3)]
-    # PROTECT must be the first line of the program in the same way (v4:15393)
-    program = migrate("PROTECT pw : INCR = 5\n", only=["X-INCA"])
-    assert program.text.startswith("PROTECT pw\nREM MIGRATE: X-INCA: ")
-    assert program.text.endswith("\nINCR = 5\n") and [item.line for item in program.manual] == [3]
 
 
 @pytest.mark.parametrize(
@@ -64,6 +60,7 @@ def test_a_flag_alone_after_auto_or_protect_breaks_only_the_separator() -> None:
         ("X-ENABLE", "ENABLE = 1\n"),
         ("X-ERR", "IF ERR = 15 THEN x = 1\n"),
         ("X-CHANGED", "DISPLAY\n"),
+        ("X-PROTECT", "PROTECT my pass, 1!\n"),
         ("X-ONERROR", "#ONERROR\nRETURN\n"),
         ("X-FASTLATCH", "#FASTPOS\nRETURN\n"),
         ("X-COMMENTED", "RME Project\n"),
@@ -124,3 +121,12 @@ def test_a_keyword_whose_entry_lists_no_controllers_is_not_a_platform_item() -> 
     # takes it as every controller's, so X-PLATFORM must not say the target lacks it
     assert migrate("a = MOVESTATUS.0\nPRINT a\n", only=["X-PLATFORM"]).manual == ()
     assert [d.code for d in mintlang.check("DIM a\na = MOVESTATUS.0\nPRINT a\n")] == []
+
+
+def test_a_v3_password_is_the_rest_of_its_line_and_v4_reads_one_word() -> None:
+    # v3: the rest of line 1 is the password, a colon and keywords included (v3:11089-11092), so INCR
+    # here is no statement to flag; v4 would run it after a password of letters and digits (v4:15393)
+    program = migrate("PROTECT pw : INCR = 5\nx = 1\n")
+    assert [item.rule for item in program.manual] == ["X-PROTECT"]
+    assert "PROTECT pw : INCR = 5\n" in program.text
+    assert flagged("X-PROTECT", "PROTECT tincan\n") == []

@@ -72,7 +72,7 @@ class ValueExpectation:
 
     @property
     def what(self) -> str:
-        return self.target.text
+        return self.target.name
 
     @property
     def expected(self) -> str:

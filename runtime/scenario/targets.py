@@ -25,10 +25,16 @@ _GLUED_CHANNEL = re.compile(r"[0-9]+$")
 
 @record
 class Target:
-    """A canonical target; ``every_axis`` when an axis keyword was written without its axis."""
+    """A canonical target; ``every_axis`` when an axis keyword was written without its axis. ``shown`` is how
+    reports name it: a variable as the program spells it (``myCount``), a keyword by its full name."""
 
     text: str
     every_axis: bool
+    shown: str = ""
+
+    @property
+    def name(self) -> str:
+        return self.shown or self.text
 
     def on_axis(self, axis: int) -> str:
         return f"{self.text}.{axis}"
@@ -65,7 +71,7 @@ def target(written: str, dialect: Dialect = Dialect.V4) -> Target:
 def _variable(written: str, name: str, dot: str | None, suffix: str) -> Target:
     if dot is not None:
         raise Invalid(f"{written} is not a keyword, so it takes no .{dot}")
-    return Target(name + suffix, every_axis=False)
+    return Target(name + suffix, every_axis=False, shown=written + suffix)
 
 
 def _v3_target(written: str, name: str, dot: str | None, suffix: str) -> Target:

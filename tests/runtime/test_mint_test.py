@@ -56,7 +56,7 @@ def test_each_test_is_passed_failed_or_an_error_and_the_summary_counts_them(tmp_
     assert result.exit_code == 1
     assert lines[0] == f"PASSED {tmp_path / 'a_passes.mnt'}"
     assert lines[1] == f"FAILED {tmp_path / 'b_fails.mnt'}  1 of 1 expectations failed"
-    assert lines[2].startswith("    A at end: expected = 3, got 2 (off by -1) [")
+    assert lines[2].startswith("    a at end: expected = 3, got 2 (off by -1) [")
     assert lines[3].startswith(f"ERROR  {tmp_path / 'c_refused.mnt'}  ")
     assert lines[-1].startswith("1 passed, 1 failed, 1 error in ")
 
@@ -83,7 +83,7 @@ def test_json_counts_the_verdicts_and_keeps_each_check(tmp_path: Path) -> None:
     report = json.loads(_mint_test(tmp_path, "--format", "json").output)
     assert report["summary"] == {"passed": 1, "failed": 1, "error": 0}
     (check,) = report["tests"][1]["checks"]
-    assert (check["what"], check["expected"], check["actual"], check["held"]) == ("A", "= 3", "2", False)
+    assert (check["what"], check["expected"], check["actual"], check["held"]) == ("a", "= 3", "2", False)
 
 
 def test_a_scenario_file_gives_the_stimulus_and_the_expectations(tmp_path: Path) -> None:
@@ -186,7 +186,7 @@ def test_a_test_failing_an_expectation_and_stopped_by_an_error_reports_both(tmp_
     program = _write(tmp_path, "broken.mnt", STOPPED_BY_AN_ERROR)
     lines = _mint_test(program, "--color", "never").output.splitlines()
     assert lines[0] == f"FAILED {program}  1 of 1 expectations failed"
-    assert lines[1].startswith("    B at end: expected = 1, got 0 (off by -1) [")
+    assert lines[1].startswith("    b at end: expected = 1, got 0 (off by -1) [")
     assert lines[2] == f"    {INVALID_INDEX}"
     suite = ElementTree.fromstring(_mint_test(program, "--format", "junit").output).find("testsuite")
     assert suite is not None
@@ -201,7 +201,7 @@ def test_an_error_that_a_stopped_expectation_asks_for_is_not_reported_as_a_failu
     )
     lines = _mint_test(program, "--color", "never").output.splitlines()
     assert lines[0] == f"FAILED {program}  1 of 2 expectations failed"
-    assert lines[1].startswith("    B at end: expected = 1, got 0 (off by -1) [")
+    assert lines[1].startswith("    b at end: expected = 1, got 0 (off by -1) [")
     assert lines[2].startswith("1 failed in ")
 
 
@@ -212,7 +212,7 @@ def test_quiet_reports_only_the_tests_that_did_not_pass_and_no_count(tmp_path: P
     assert result.exit_code == 1
     assert result.output.splitlines() == [
         f"FAILED {tmp_path / 'b_fails.mnt'}  1 of 1 expectations failed",
-        f"    A at end: expected = 3, got 2 (off by -1) [{tmp_path / 'b_fails.mnt'}:1]",
+        f"    a at end: expected = 3, got 2 (off by -1) [{tmp_path / 'b_fails.mnt'}:1]",
     ]
     assert (tmp_path / "lcov.info").is_file()  # the tracefile is still written, only the table is left out
 
@@ -222,7 +222,7 @@ def test_verbose_shows_every_expectation_under_its_test(tmp_path: Path) -> None:
     lines = _mint_test(tmp_path, "--color", "never", "--verbose").output.splitlines()
     assert lines[:2] == [
         f"PASSED {tmp_path / 'a_passes.mnt'}",
-        f"    A at end: 2, as expected [{tmp_path / 'a_passes.mnt'}:1]",
+        f"    a at end: 2, as expected [{tmp_path / 'a_passes.mnt'}:1]",
     ]
     assert lines[2].startswith("1 passed in ")
 

@@ -95,9 +95,13 @@ def test_expectations_keep_the_order_written_with_the_line_of_their_table(every:
     assert every.expectations == (
         ValueExpectation(Target("POS.0", False), Comparison.EQUAL, 1000.0, 0.5, None, Origin(source, lines[0])),
         ValueExpectation(Target("AXISERROR", True), Comparison.EQUAL, 0.0, 0.0, None, Origin(source, lines[1])),
-        ValueExpectation(Target("COUNT", False), Comparison.AT_LEAST, 3.0, 0.0, 1500, Origin(source, lines[2])),
+        ValueExpectation(
+            Target("COUNT", False, "count"), Comparison.AT_LEAST, 3.0, 0.0, 1500, Origin(source, lines[2])
+        ),
         ValueExpectation(Target("OUT.2", False), Comparison.NOT_EQUAL, 1.0, 0.0, None, Origin(source, lines[3])),
-        ValueExpectation(Target("TABLE(3)", False), Comparison.AT_MOST, 10.0, 1.0, None, Origin(source, lines[4])),
+        ValueExpectation(
+            Target("TABLE(3)", False, "table(3)"), Comparison.AT_MOST, 10.0, 1.0, None, Origin(source, lines[4])
+        ),
         TerminalExpectation("Homed", 2000, Origin(source, lines[5])),
         StoppedExpectation("end", Origin(source, lines[6])),
     )

@@ -141,7 +141,7 @@ def test_an_error_v3_has_no_counterpart_of_is_not_simulated() -> None:
         ("IN3", Target("IN3", every_axis=False)),
         ("IN.3", Target("IN.3", every_axis=False)),
         ("OUT.2", Target("OUT.2", every_axis=False)),
-        ("count", Target("COUNT", every_axis=False)),
+        ("count", Target("COUNT", every_axis=False, shown="count")),
     ],
 )
 def test_a_v3_program_expects_its_own_keywords(written: str, canonical: Target) -> None:

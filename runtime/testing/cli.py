@@ -66,7 +66,8 @@ from mintlang.runtime.dialects import SIMULATED
 @version_option("mint test")
 def test(**options: Any) -> None:
     """Run the Mint programs under PATHS (default: the current folder) that have REM @expect lines or a
-    scenario file beside them (cell.scenario.toml for cell.mnt), and report which passed."""
+    scenario file beside them (cell.scenario.toml for cell.mnt), and report which passed. REM @sim and @expect
+    lines in a program's configuration file are not read: each is a warning."""
     from mintlang.runtime.testing.testing_command import execute  # noqa: PLC0415 - the simulator, for a run only
 
     execute(**options)

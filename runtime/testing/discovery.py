@@ -1,4 +1,8 @@
-"""Which files are tests: programs with ``REM @expect`` lines or a scenario file beside them."""
+"""Which files are tests: programs with ``REM @expect`` lines or a scenario file beside them.
+
+A program whose configuration file alone has them is a test too: they are not read from there, and its run
+says so (``ignored_directives``) rather than the program dropping out of the run without a word.
+"""
 
 from __future__ import annotations
 
@@ -10,6 +14,8 @@ from mintlang.cli.files import find
 from mintlang.pairing import listed_as, names_in
 from mintlang.records import record
 from mintlang.runtime.scenario.directive_words import DIRECTIVE, meant_kind
+from mintlang.semantic.units import Unit
+from mintlang.settings import FileSettings, SettingsError, settings_for
 from mintlang.source import read_source
 
 SCENARIO_SUFFIX = ".scenario.toml"
@@ -114,7 +120,23 @@ def _case(program: Path, problems: list[Unreadable]) -> TestCase | None:
     if (binary := source.binary()) is not None:
         problems.append(Unreadable(binary))
         return None
-    return TestCase(program, None) if _expects(source.text) else None
+    return TestCase(program, None) if _expects(source.text) or _expects_in_configuration(program) else None
+
+
+def configuration_of(program: Path, settings: FileSettings) -> Path | None:
+    """The configuration file that runs before ``program``; none for a configuration file run as a test."""
+    unit, partner = settings.partner(program)
+    return partner if unit is Unit.PROGRAM else None
+
+
+def _expects_in_configuration(program: Path) -> bool:
+    """Whether the configuration file of ``program`` has an ``@expect`` line; a settings or configuration file
+    that cannot be read is not looked into here (the run of a test reports it)."""
+    try:
+        configuration = configuration_of(program, settings_for(program))
+        return configuration is not None and _expects(read_source(configuration).text)
+    except (OSError, SettingsError, ValueError):
+        return False
 
 
 def _expects(text: str) -> bool:

@@ -87,8 +87,16 @@ def junit(results: Sequence[TestResult], seconds: float) -> str:
             failure.text = "\n".join(_check_lines(result, held_too=False))
         elif result.verdict is Verdict.ERROR:
             ElementTree.SubElement(case, "error", message=result.message, type="error")
+        if result.ignored_directives:
+            warned = "".join(f"warning: {note}\n" for note in result.ignored_directives)  # as on standard error
+            ElementTree.SubElement(case, "system-err").text = warned
     ElementTree.indent(suites)
     return ElementTree.tostring(suites, encoding="unicode", xml_declaration=True) + "\n"
+
+
+def warnings(results: Sequence[TestResult]) -> list[str]:
+    """What the runs warn of, each once: a configuration file shared by several programs is one warning."""
+    return list(dict.fromkeys(note for result in results for note in result.ignored_directives))
 
 
 def _check_lines(result: TestResult, *, held_too: bool) -> list[str]:
@@ -140,6 +148,7 @@ def as_json(results: Sequence[TestResult], seconds: float) -> str:
             "simulated_ms": result.simulated_ms,
             "seconds": round(result.seconds, 3),
             "checks": [asdict(check) for check in result.checks],
+            "ignored_directives": list(result.ignored_directives),
         }
         for result in results
     ]

@@ -21,8 +21,7 @@ from mintlang.runtime.scenario import (
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, merge
 from mintlang.runtime.simulation import Limits
 from mintlang.runtime.testing.coverage import FileCoverage, Recorder
-from mintlang.runtime.testing.discovery import TestCase
-from mintlang.semantic.units import Unit
+from mintlang.runtime.testing.discovery import TestCase, configuration_of
 from mintlang.settings import FileSettings, SettingsError, settings_for
 from mintlang.source import read_source
 
@@ -58,6 +57,7 @@ class TestResult:
     coverage: tuple[FileCoverage, ...] = ()  # with ``Options.coverage``
     stop_failed: bool = False  # the run stopped on an error, a deadlock … that no ``stopped`` expectation asked for
     hint: str | None = None  # the program looks like MintMT, run as v4 by default (``dialect_hint``)
+    ignored_directives: tuple[str, ...] = ()  # REM @sim and @expect lines of the configuration file, not applied
 
 
 @record
@@ -95,10 +95,10 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
         return _error(case, binary, began)
     chosen = options.dialect is not None or settings.dialect.chosen
     hint = None if chosen else dialect_hint(str(case.program), program.text, dialect)
-    unit, partner = settings.partner(case.program)
-    configuration = read_source(partner).text if unit is Unit.PROGRAM and partner is not None else None
+    partner = configuration_of(case.program, settings)
+    configuration = read_source(partner).text if partner is not None else None
     files = {"program": case.program}
-    if partner is not None and configuration is not None:
+    if partner is not None:
         files["configuration"] = partner
     recorder = Recorder(files, dialect) if options.coverage else None
     result = run_source(
@@ -110,20 +110,32 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
         limits=Limits(until_ms=options.until_ms, max_wall_s=options.max_wall_s, end_when_checked=True),
         on_start=recorder.attach if recorder is not None else None,
         name=str(case.program),
+        config_name=str(partner),
     )
     coverage = recorder.result() if recorder is not None else ()
     checks = tuple(_check(outcome) for outcome in result.outcomes)
     stopped = result.stop.reason.value
+    ignored = result.ignored_directives
     if result.refused:
-        return _error(case, result.stop.message, began, stopped=stopped, hint=hint)
+        return _error(case, result.stop.message, began, stopped=stopped, hint=hint, ignored=ignored)
     if not checks:
         missing = "no expectation to check: add REM @expect lines or [[expect]] to its scenario"
-        return _error(case, missing, began, hint=hint)
+        return _error(case, missing, began, hint=hint, ignored=ignored)
     verdict = Verdict.PASSED if expectations_pass(result.outcomes, stopped) else Verdict.FAILED
     elapsed = time.perf_counter() - began
     stop_failed = stop_fails(result.outcomes, stopped)
     return TestResult(
-        case, verdict, stopped, result.stop.message, checks, result.stop.time_ms, elapsed, coverage, stop_failed, hint
+        case,
+        verdict,
+        stopped,
+        result.stop.message,
+        checks,
+        result.stop.time_ms,
+        elapsed,
+        coverage,
+        stop_failed,
+        hint,
+        ignored,
     )
 
 
@@ -140,5 +152,14 @@ def _check(outcome: Outcome) -> Check:
     return Check(what, when, expected, outcome.actual, outcome.held, origin, outcome.detail)
 
 
-def _error(case: TestCase, message: str, began: float, *, stopped: str = "", hint: str | None = None) -> TestResult:
-    return TestResult(case, Verdict.ERROR, stopped, message, (), 0, time.perf_counter() - began, hint=hint)
+def _error(
+    case: TestCase,
+    message: str,
+    began: float,
+    *,
+    stopped: str = "",
+    hint: str | None = None,
+    ignored: tuple[str, ...] = (),
+) -> TestResult:
+    elapsed = time.perf_counter() - began
+    return TestResult(case, Verdict.ERROR, stopped, message, (), 0, elapsed, hint=hint, ignored_directives=ignored)

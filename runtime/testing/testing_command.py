@@ -90,6 +90,8 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     if coverage:
         _coverage(results, lcov, None if quiet else console(color, stderr=output_format != "text"))
     if not quiet:
+        for note in reports.warnings(results):
+            errors.print(f"warning: {note}", style="yellow", markup=False, highlight=False)
         click.echo("".join(f"{result.hint}\n" for result in results if result.hint is not None), err=True, nl=False)
     if unreadable:
         sys.exit(USAGE)

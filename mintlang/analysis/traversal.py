@@ -16,6 +16,7 @@ from typing import NamedTuple
 
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
 from mintlang.records import record
 from mintlang.semantic.index import IndexedLines, KeywordUse, LineFacts, Use
 from mintlang.semantic.model import SemanticModel
@@ -95,6 +96,18 @@ class Facts:
         """
         found = self.sought.get(kind)
         return found if found is not None else _each_statement(self.lines, kind)
+
+    def may_name(self, *keywords: str) -> bool:
+        """Whether the text of either file, a macro's included, holds the name or an abbreviation of one of
+        ``keywords``: False proves none is used, so a rule about rare keywords need not walk every keyword use
+        of every check (a name edit in the editor runs the whole-application rules again)."""
+        model = self.model
+        texts = [model.program.source.upper()]
+        if model.configuration is not None:
+            texts.append(model.configuration.source.upper())
+        known = database().keywords_of(model.program.dialect)
+        spellings = {spelling for name in keywords for spelling in (name, *known[name].abbreviations)}
+        return any(spelling in text for spelling in spellings for text in texts)
 
     def keyword_uses(self) -> Iterator[tuple[n.PlacedLine, KeywordUse]]:
         for _, line, facts in self.lines.where(_KEYWORD_USES):

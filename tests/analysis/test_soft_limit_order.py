@@ -34,6 +34,8 @@ def test_a_reverse_limit_below_the_forward_one_is_accepted(source: str) -> None:
         "SOFTLIMITFORWARD.0 = 100\nSOFTLIMITREVERSE.0 = 100\n",  # equal is not less
         "SOFTLIMITREVERSE[2] = 101\nSOFTLIMITFORWARD[2] = 100\n",
         "SOFTLIMITFORWARD[0,1] = 100, 5\nSOFTLIMITREVERSE[0,1] = -100, 6\n",
+        "slf.0 = 5\nslr.0 = 10\n",  # the abbreviations, in lower case (000:15957, 16098)
+        "DEFINE reverse_limit = SOFTLIMITREVERSE.0\nSLF.0 = 5\nreverse_limit = 10\n",  # through a macro
     ],
 )
 def test_a_reverse_limit_at_or_above_the_forward_one_is_w119(source: str) -> None:

@@ -41,6 +41,8 @@ def _axis_values(use: KeywordUse) -> list[tuple[int | None, n.Expression | None]
 
 
 def check(facts: Facts) -> Iterator[Finding]:
+    if not facts.may_name(_REVERSE):
+        return  # no reverse limit written (most programs): no keyword use to walk to
     limits: dict[tuple[str, int], list[_Limit]] = defaultdict(list)
     scale_writes = 0
     for line, use in facts.keyword_uses():

@@ -27,9 +27,7 @@ def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     has_auto = database().keywords["AUTO"].available_on(model.controller.controller)
     configuration = model.configuration.source if model.configuration else ""
-    words = ("AUTO", "PROTECT") if has_auto else ("PROTECT",)
-    texts = (model.program.source.upper(), configuration.upper())
-    if not any(word in text for word in words for text in texts):
+    if not facts.may_name(*(("AUTO", "PROTECT") if has_auto else ("PROTECT",))):
         return  # a word in neither file, nor in a macro's text there: no keyword use to walk to (most checks)
     for line, use in facts.keyword_uses():
         word = use.keyword.keyword

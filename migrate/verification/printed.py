@@ -77,7 +77,7 @@ def differences(v3: Recording, v4: Recording, until: int) -> list[Divergence]:
         b = right.tokens[index] if index < len(right.tokens) else None
         if a is None or b is None:
             lacking, extra = (v3, b) if a is None else (v4, a)
-            if extra is not None and not lacking.closed and extra.time > until - tolerance.TIME_MS:
+            if extra is not None and not _over(lacking, until) and extra.time > until - tolerance.TIME_MS:
                 return found  # the run cut off may print the same in the milliseconds after the horizon
             return [*found, _divergence(left, right, a, b, timing_only=False)]
         if not _same(a, b, loose):
@@ -86,6 +86,12 @@ def differences(v3: Recording, v4: Recording, until: int) -> list[Divergence]:
             found.append(_divergence(left, right, a, b, timing_only=True))
         loose = (loose or (a.kind == "number" and a.text != b.text)) and a.text not in _LINE_ENDS
     return found
+
+
+def _over(run: Recording, until: int) -> bool:
+    """Whether ``run`` ended by ``until``, so prints nothing more: one that ended after it (the other run cut
+    short there) may still print in the milliseconds past it what the other printed before."""
+    return run.closed and run.last <= until
 
 
 def _divergence(

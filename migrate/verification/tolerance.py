@@ -26,7 +26,7 @@ is allowed for is what differs by design:
 * **The horizon.** Runs cut off at ``--until-ms`` have no samples after it, so
   their last 2 ms have only half a tube: they are not held against the other
   run, and what one run printed in them may still be missing from the other.
-  A run that ended holds its last state and prints nothing more.
+  A run that ended by the horizon holds its last state and prints nothing more.
 """
 
 from __future__ import annotations

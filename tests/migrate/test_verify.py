@@ -216,6 +216,15 @@ def test_output_a_run_that_ended_never_printed_is_a_divergence_even_at_the_horiz
     assert (divergence.what, divergence.v3, divergence.v4) == ("terminal", "(nothing more)", "'b'")
 
 
+def test_output_a_run_that_ended_after_the_horizon_prints_late_is_no_divergence() -> None:
+    # A slice runs 20 statements a ms: v3 prints at 0 ms (statement 20) and is cut short at 1 ms by COMMSON,
+    # which the simulator does not model, so the horizon is 0 ms. The v4 text has DIM a in front, prints at
+    # 1 ms and ends there: a ms late, not missing, and the comparison is incomplete, not divergent.
+    found = verify(migrate("a = 1\n" * 19 + 'PRINT "b"\nCOMMSON\n'), until_ms=100)
+    assert (found.verdict, found.divergence) == (Verdict.INCOMPLETE, None)
+    assert found.short == "COMMSON (command) is not simulated by mint-run"
+
+
 def test_a_move_a_slice_earlier_cut_off_mid_move_at_any_horizon_is_equivalent() -> None:
     # A slice runs 20 statements a ms: without 20 of the v3 program's assignments the v4 move starts a
     # ms earlier, inside the 2 ms tube. Cut off while it cruises at 20 counts/ms, the runs' last samples

@@ -110,7 +110,7 @@ def position_input(channel: int, condition: Phrase) -> PositionInput:
         counts = condition.integer("a count")
         condition.end()
     except Invalid as problem:
-        raise Invalid(str(problem), key="when") from None
+        raise Invalid(str(problem), key="when", column=problem.column) from None
     return PositionInput(_channel(channel), axis, cast(EncoderOperator, operator), counts)
 
 

@@ -48,22 +48,25 @@ class Collector:
         line: int,
         build: Callable[[], WorldRecord | Expectation],
         line_of: Callable[[str], int] | None = None,
+        *,
+        column: int = 0,
     ) -> None:
         """Keep what ``build`` makes, or record why it could not: at the line of the key at fault when
-        ``line_of`` finds it (a file's table), else at ``line``."""
+        ``line_of`` finds it (a file's table), else at ``line``; at the column of the word at fault when
+        the phrase reader knows it, else at ``column`` (a directive's ``@``: the directive as a whole)."""
         try:
             record = build()
             if self.controller is not None:
                 check_reach(record, self.controller)
         except Invalid as problem:
             at_key = line_of(problem.key) if line_of is not None and problem.key is not None else None
-            self.error(problem.line or at_key or line, str(problem))
+            self.error(problem.line or at_key or line, str(problem), column=problem.column or column)
             return
         once = _once(record)
         if once is not None:
             key, what = (type(record), once[0]), once[1]
             if key in self._first:
-                self.error(line, f"{what} (line {self._first[key]})")
+                self.error(line, f"{what} (line {self._first[key]})", column=column)
                 return
             self._first[key] = line
         self.records.append(record)

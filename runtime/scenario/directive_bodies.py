@@ -12,8 +12,7 @@ from typing import cast
 from mintlang.dialect import Dialect
 from mintlang.runtime.scenario import builders
 from mintlang.runtime.scenario.expectations import Comparison, Expectation, Origin
-from mintlang.runtime.scenario.phrase import Phrase, to_number
-from mintlang.runtime.scenario.problems import Invalid
+from mintlang.runtime.scenario.phrase import Phrase
 from mintlang.runtime.scenario.stimulus import PlantModel, WorldRecord
 
 
@@ -33,9 +32,9 @@ def _plant(phrase: Phrase) -> WorldRecord:
         if phrase.accept("="):
             parameters[word.lower()] = phrase.number(f"the value of {word}")
         elif (name := next(bare, None)) is not None:
-            parameters[name] = to_number(word, f"the value of {name}")
+            parameters[name] = phrase.as_number(word, f"the value of {name}")
         else:
-            raise Invalid(f"unexpected {word!r}: give parameters as name=value")
+            raise phrase.mistake(f"unexpected {word!r}: give parameters as name=value")
     return builders.plant(axis, model, parameters)
 
 

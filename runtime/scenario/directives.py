@@ -43,11 +43,12 @@ def parse_directives(
         from mintlang.runtime.scenario.directive_bodies import expectation, world  # noqa: PLC0415 - its docstring
         from mintlang.runtime.scenario.phrase import Phrase  # noqa: PLC0415 - as directive_bodies
 
-        phrase = Phrase(found["body"])
+        phrase = Phrase(found["body"], column=found.start("body") + 1)
+        at = found.start("word")  # the column of its @, from 1
         if kind == "sim":
-            collector.add(number, partial(world, phrase))
+            collector.add(number, partial(world, phrase), column=at)
         else:
-            collector.add(number, partial(expectation, phrase, Origin(source, number), dialect))
+            collector.add(number, partial(expectation, phrase, Origin(source, number), dialect), column=at)
     return collector.result()
 
 

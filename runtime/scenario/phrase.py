@@ -40,17 +40,34 @@ def to_number(word: str, what: str) -> float:
 
 
 class Phrase:
-    """The words of one directive, taken from the left; each reader raises ``Invalid`` with what it expected."""
+    """The words of one directive, taken from the left; each reader raises ``Invalid`` with what it expected.
 
-    __slots__ = ("_next", "_words")
+    ``column`` is where ``text`` starts on its line, from 1 (a directive's words after its ``@sim`` or ``@expect``): a
+    mistake then carries the column of the word at fault, or of the end when a word is missing, as the
+    other diagnostics place theirs. 0 (a scenario file's ``when`` value) places none.
+    """
 
-    def __init__(self, text: str) -> None:
-        self._words = _WORD.findall(text)
+    __slots__ = ("_column", "_next", "_starts", "_words")
+
+    def __init__(self, text: str, column: int = 0) -> None:
+        found = list(_WORD.finditer(text))
+        self._words = [word[0] for word in found]
+        # where each word starts, then where the last one ends (the end's place), from 0
+        self._starts = [word.start() for word in found] + [found[-1].end() if found else 0]
+        self._column = column
         self._next = 0
+
+    def mistake(self, message: str) -> Invalid:
+        """``Invalid`` at the word last taken: that word was read but does not fit."""
+        return self._at(message, self._next - 1)
+
+    def _at(self, message: str, index: int) -> Invalid:
+        """``Invalid`` at word ``index`` (the end when past the last word)."""
+        return Invalid(message, column=self._column + self._starts[index] if self._column else 0)
 
     def word(self, what: str) -> str:
         if self._next == len(self._words):
-            raise Invalid(f"expected {what} at the end")
+            raise self._at(f"expected {what} at the end", self._next)
         self._next += 1
         return self._words[self._next - 1]
 
@@ -68,25 +85,32 @@ class Phrase:
         """Take the word ``word`` (any case), which must come next."""
         if not self.accept(word):
             found = self.peek()
-            raise Invalid(f"expected '{word}'" + (" at the end" if found is None else f", not {found!r}"))
+            raise self._at(f"expected '{word}'" + (" at the end" if found is None else f", not {found!r}"), self._next)
 
     def choice(self, what: str, choices: tuple[str, ...]) -> str:
         word = self.word(what).lower()
         if word not in choices:
             meant = closest(word, choices)
             hint = f"; {did_you_mean(meant)}" if meant is not None else ""
-            raise Invalid(f"expected {what} ({', '.join(choices)}), not {word!r}{hint}")
+            raise self.mistake(f"expected {what} ({', '.join(choices)}), not {word!r}{hint}")
         return word
 
     def number(self, what: str) -> float:
-        return to_number(self.word(what), what)
+        return self.as_number(self.word(what), what)
+
+    def as_number(self, word: str, what: str) -> float:
+        """``word``, the word last taken, as a number (``to_number``), placed at it when it is none."""
+        try:
+            return to_number(word, what)
+        except Invalid as problem:
+            raise self.mistake(str(problem)) from None
 
     def integer(self, what: str) -> int:
         word = self.word(what)
         try:
             return int(word)
         except ValueError:
-            raise Invalid(f"expected {what} as a whole number, not {word!r}") from None
+            raise self.mistake(f"expected {what} as a whole number, not {word!r}") from None
 
     def milliseconds(self) -> int:
         """``<ms>`` or ``<ms> ms``, after ``at``."""
@@ -97,9 +121,12 @@ class Phrase:
     def text(self, what: str) -> str:
         word = self.word(what)
         if len(word) < 2 or not word.startswith('"') or not word.endswith('"'):
-            raise Invalid(f"expected {what} in double quotes, not {word}")
-        return _unescape(word)
+            raise self.mistake(f"expected {what} in double quotes, not {word}")
+        try:
+            return _unescape(word)
+        except Invalid as problem:
+            raise self.mistake(str(problem)) from None
 
     def end(self) -> None:
         if self._next < len(self._words):
-            raise Invalid(f"unexpected {' '.join(self._words[self._next :])!r} at the end")
+            raise self._at(f"unexpected {' '.join(self._words[self._next :])!r} at the end", self._next)

@@ -40,10 +40,12 @@ class Invalid(ValueError):
     """A phrase or value that breaks the scenario grammar; the front end adds the position unless ``line`` is known.
 
     ``key`` names the value at fault as a scenario file's key does (``level``, ``at_ms``), so that the file
-    front end can blame the key's line rather than its table's header; a directive is one line anyway.
+    front end can blame the key's line rather than its table's header; a directive is one line anyway, and
+    ``column`` (from 1; 0 unknown) is that of its word at fault when the phrase reader knows it.
     """
 
-    def __init__(self, message: str, line: int | None = None, *, key: str | None = None) -> None:
+    def __init__(self, message: str, line: int | None = None, *, key: str | None = None, column: int = 0) -> None:
         super().__init__(message)
         self.line = line
         self.key = key
+        self.column = column

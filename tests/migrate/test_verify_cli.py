@@ -158,7 +158,7 @@ def test_a_rem_sim_line_that_cannot_be_read_names_its_program_and_the_others_are
     good.write_text(EQUIVALENT)
     result = CliRunner().invoke(migrate, ["--verify", "--drives", "enabled", str(bad), str(good)])
     assert result.exit_code == 2
-    assert result.stderr == f"mint-migrate: {bad}:1: expected an input channel as a whole number, not 'banana'\n"
+    assert result.stderr == f"mint-migrate: {bad}:1:16: expected an input channel as a whole number, not 'banana'\n"
     assert result.stdout.splitlines()[0] == f"{good}: equivalent over 602 ms"
 
 

@@ -287,4 +287,4 @@ def test_a_directive_of_the_program_is_reported_at_the_programs_path(tmp_path: P
     program = write(tmp_path, "press.mnt", "REM @sim plant 0 stalled\nREM @sim plant 0 ideal\nPRINT 1\n")
     result = mint_run(program)
     assert result.exit_code == 2
-    assert f"{program}:2: axis 0 already has a plant (line 1)" in result.stderr
+    assert f"{program}:2:5: axis 0 already has a plant (line 1)" in result.stderr  # at its @

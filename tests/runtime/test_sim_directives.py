@@ -209,56 +209,60 @@ def test_the_source_name_is_used_in_positions() -> None:
 
 
 @pytest.mark.parametrize(
-    ("directive", "message"),
+    ("directive", "column", "message"),
     [
-        ("bogus 1", "expected a directive (drives, plant, input, index, fastin, adc, key, host), not 'bogus'"),
-        ("plant 0 wobbly", "expected a plant model (ideal, stalled, velamp, torque), not 'wobbly'"),
-        ("plant 0 velamp", "plant velamp needs k"),
-        ("plant 0 ideal k=3", "plant ideal has no parameter k (it takes none)"),
-        ("plant 0 torque viscous=0", "plant torque: viscous must be positive"),
-        ("input 3 2 at 10", "an input level is 0 or 1, not 2"),
-        ("input 3 1", "expected 'at' at the end"),
-        ("input 3 1 at soon", "expected a time in ms as a whole number, not 'soon'"),
-        ("input 3 1 at -5", "a time in ms must be at least 0, not -5"),
-        ("input 5 when enc 0 => 500", "expected a comparison (<=, >=, <, >), not '='"),
-        ("input 5 when pos 0 >= 500", "expected 'enc', not 'pos'"),
-        ("index 0 every 0", "the counts between index pulses must be at least 1, not 0"),
-        ("index 0 every 10 width 10", "an index pulse 10 counts wide does not fit in every 10 counts"),
-        ("adc 0 150 at 0", "an ADC level is a percentage from -100 to 100, not 150"),
-        ("key 1 at 0", "expected the keys in double quotes, not 1"),
-        ('key "\\q" at 0', 'unknown escape \\q in "\\q" (known: \\r \\n \\t \\" \\\\)'),
-        ('host write 100 "1" at 0', "cannot build the host packet: comms address 100 does not fit two digits"),
-        ("host raw 0g at 0", "raw host bytes are pairs of hex digits such as '04 32 32', not '0g'"),
-        ("fastin 0 at 10 extra", "unexpected 'extra' at the end"),
+        ("bogus 1", 10, "expected a directive (drives, plant, input, index, fastin, adc, key, host), not 'bogus'"),
+        ("plant 0 wobbly", 18, "expected a plant model (ideal, stalled, velamp, torque), not 'wobbly'"),
+        ("plant 0 velamp", 5, "plant velamp needs k"),
+        ("plant 0 ideal k=3", 5, "plant ideal has no parameter k (it takes none)"),
+        ("plant 0 torque viscous=0", 5, "plant torque: viscous must be positive"),
+        ("input 3 2 at 10", 5, "an input level is 0 or 1, not 2"),
+        ("input 3 1", 19, "expected 'at' at the end"),
+        ("input 3 1 at soon", 23, "expected a time in ms as a whole number, not 'soon'"),
+        ("input 3 1 at -5", 5, "a time in ms must be at least 0, not -5"),
+        ("input 5 when enc 0 => 500", 29, "expected a comparison (<=, >=, <, >), not '='"),
+        ("input 5 when pos 0 >= 500", 23, "expected 'enc', not 'pos'"),
+        ("index 0 every 0", 5, "the counts between index pulses must be at least 1, not 0"),
+        ("index 0 every 10 width 10", 5, "an index pulse 10 counts wide does not fit in every 10 counts"),
+        ("adc 0 150 at 0", 5, "an ADC level is a percentage from -100 to 100, not 150"),
+        ("key 1 at 0", 14, "expected the keys in double quotes, not 1"),
+        ('key "\\q" at 0', 14, 'unknown escape \\q in "\\q" (known: \\r \\n \\t \\" \\\\)'),
+        ('host write 100 "1" at 0', 5, "cannot build the host packet: comms address 100 does not fit two digits"),
+        ("host raw 0g at 0", 5, "raw host bytes are pairs of hex digits such as '04 32 32', not '0g'"),
+        ("fastin 0 at 10 extra", 25, "unexpected 'extra' at the end"),
     ],
 )
-def test_a_bad_directive_is_an_error_at_its_line(directive: str, message: str) -> None:
-    assert errors(f"x = 1\nREM @sim {directive}\n") == [ScenarioError("program", 2, message)]
+def test_a_bad_directive_is_an_error_at_its_line_and_column(directive: str, column: int, message: str) -> None:
+    """At the word at fault, or where the one missing was due; a value wrong only with the others at the
+    ``@`` (the directive as a whole): columns from 1, with the ``@`` at 5 and the first word at 10."""
+    assert errors(f"x = 1\nREM @sim {directive}\n") == [ScenarioError("program", 2, message, column)]
 
 
 @pytest.mark.parametrize(
-    ("sentence", "message"),
+    ("sentence", "column", "message"),
     [
-        ("POS.0 == 3", "expected a value to compare with as a number, not '='"),
-        ("POS.0 =", "expected a value to compare with at the end"),
-        ("GO = 1", "GO is a command, not a value to expect"),
-        ("stopped somewhere", "a run stops for one of end, error, until, deadlock, wall-limit, not 'somewhere'"),
-        ("count = 1 ± -1", "a tolerance is not negative, not -1"),
-        ('terminal has "x"', "expected how the terminal is matched (contains, is), not 'has'"),
+        ("POS.0 == 3", 20, "expected a value to compare with as a number, not '='"),
+        ("POS.0 =", 20, "expected a value to compare with at the end"),
+        ("GO = 1", 5, "GO is a command, not a value to expect"),
+        ("stopped somewhere", 5, "a run stops for one of end, error, until, deadlock, wall-limit, not 'somewhere'"),
+        ("count = 1 ± -1", 5, "a tolerance is not negative, not -1"),
+        ('terminal has "x"', 22, "expected how the terminal is matched (contains, is), not 'has'"),
         (
             'terminal contians "x"',
+            22,
             "expected how the terminal is matched (contains, is), not 'contians'; did you mean 'contains'?",
         ),
     ],
 )
-def test_a_bad_expectation_is_an_error_at_its_line(sentence: str, message: str) -> None:
-    assert errors(f"REM @expect {sentence}\n") == [ScenarioError("program", 1, message)]
+def test_a_bad_expectation_is_an_error_at_its_line_and_column(sentence: str, column: int, message: str) -> None:
+    """As a bad directive: the first word of the sentence is at column 13, the ``@`` at 5."""
+    assert errors(f"REM @expect {sentence}\n") == [ScenarioError("program", 1, message, column)]
 
 
 def test_an_axis_given_two_plants_is_an_error_at_the_second() -> None:
     program = "REM @sim plant 0 ideal\nREM @sim plant 0 stalled\n"
     result, problems = parse_directives(program)
-    assert problems == [ScenarioError("program", 2, "axis 0 already has a plant (line 1)")]
+    assert problems == [ScenarioError("program", 2, "axis 0 already has a plant (line 1)", 5)]
     assert result.plants == (PlantChoice(0, "ideal"),)
 
 
@@ -266,7 +270,7 @@ def test_an_input_given_two_position_switches_is_an_error_at_the_second() -> Non
     # only one could decide the input's level: the second used to win silently
     program = "REM @sim input 9 when enc 0 <= -2000\nREM @sim input 9 when enc 0 >= -2100\n"
     _, problems = parse_directives(program)
-    assert problems == [ScenarioError("program", 2, "input 9 already follows a position (line 1)")]
+    assert problems == [ScenarioError("program", 2, "input 9 already follows a position (line 1)", 5)]
 
 
 def test_every_bad_line_is_reported_and_the_good_ones_are_kept() -> None:

@@ -1,0 +1,62 @@
+"""A ``REM @expect`` or ``REM @sim`` line that cannot be read is reported at its line and column.
+
+The column, from 1 as every other diagnostic of the project counts it (a misspelt ``@expext`` is placed
+at its ``@``), is that of the word at fault, or just after the last word when one is missing; each was
+counted by hand on the lines below. A scenario file's ``when`` value is not placed: its words have no
+column of their own in the file.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from mintlang.runtime.scenario import ScenarioError, load_scenario, parse_directives
+from mintlang.runtime.scenario.problems import ScenarioFileError
+from tests.runtime.test_mint_test import _mint_test
+from tests.runtime.test_run_command import mint_run, write
+
+
+@pytest.mark.parametrize(
+    ("line", "column", "message"),
+    [
+        pytest.param("REM @expect x >< 3", 15, "expected a comparison (=, <>, >=, <=), not '>'", id="two-operators"),
+        pytest.param("REM @expect x ~ 3", 15, "expected a comparison (=, <>, >=, <=), not '~'", id="unknown-operator"),
+        pytest.param("REM @expect x = ", 16, "expected a value to compare with at the end", id="no-value"),
+        pytest.param("REM @expect x", 14, "expected a comparison at the end", id="no-comparison"),
+        pytest.param("REM @expect", 12, "expected a keyword or variable at the end", id="nothing-expected"),
+        pytest.param("REM @expect x => 3", 16, "expected a value to compare with as a number, not '>'", id="=>"),
+        pytest.param("REM @expect x = 3 ± big", 21, "expected a tolerance as a number, not 'big'", id="tolerance"),
+        pytest.param("REM @expect x = 3 at soon", 22, "expected a time in ms as a whole number, not 'soon'", id="at"),
+        pytest.param("REM @expect x = 3 extra", 19, "unexpected 'extra' at the end", id="a-word-too-many"),
+        pytest.param("GO.0 : REM @expect x >< 3", 22, "expected a comparison (=, <>, >=, <=), not '>'", id="after-GO"),
+        pytest.param("REM @sim plant 0 velamp fast", 25, "expected the value of k as a number, not 'fast'", id="sim"),
+        pytest.param("REM @sim plant 0 ideal 3", 24, "unexpected '3': give parameters as name=value", id="sim-extra"),
+        pytest.param("REM @expect GO = 1", 5, "GO is a command, not a value to expect", id="at-the-@-otherwise"),
+    ],
+)
+def test_the_column_is_that_of_the_word_at_fault(line: str, column: int, message: str) -> None:
+    assert parse_directives(f"DIM x = 3\n{line}\n")[1] == [ScenarioError("program", 2, message, column)]
+
+
+def test_mintmt_s_quote_comment_is_counted_the_same() -> None:
+    _, problems = parse_directives("Dim x = 3\n' @expect x >< 3\n", dialect="mintmt")
+    assert [str(problem) for problem in problems] == ["program:2:13: expected a comparison (=, <>, >=, <=), not '>'"]
+
+
+def test_mint_run_and_mint_test_print_it_as_file_line_column(tmp_path: Path) -> None:
+    program = write(tmp_path, "t.mnt", "DIM x = 3\nREM @expect x = \n")
+    said = f"{program}:2:16: expected a value to compare with at the end"
+    run = mint_run(program)
+    assert (run.exit_code, run.stderr) == (2, f"mint-run: {said}\n")
+    assert _mint_test(program, "--color", "never").stdout.splitlines()[0] == f"ERROR  {program}  {said}"
+
+
+def test_a_scenario_file_s_when_is_placed_at_its_line_only(tmp_path: Path) -> None:
+    scenario = write(tmp_path, "t.scenario.toml", '[[input]]\nchannel = 5\nwhen = "enc 0 => 500"\n')
+    with pytest.raises(ScenarioFileError) as raised:
+        load_scenario(scenario)
+    assert [str(error) for error in raised.value.errors] == [
+        f"{scenario}:3: expected a comparison (<=, >=, <, >), not '='"
+    ]

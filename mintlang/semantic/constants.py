@@ -41,7 +41,7 @@ def constant_value(
         right = constant_value(expression.right, dialect, rounded=rounded)  # type: ignore[union-attr]
         if left is None or right is None:
             return None
-        value = _binary(expression.operator, left, right)  # type: ignore[union-attr]
+        value = binary_value(expression.operator, left, right)  # type: ignore[union-attr]
     else:
         return None
     return value if rounded is None or value is None else rounded(value)
@@ -60,7 +60,8 @@ def held_value(expression: n.Expression | None, dialect: Dialect = Dialect.V4) -
         return None
 
 
-def _binary(operator: str, a: float, b: float) -> float | None:
+def binary_value(operator: str, a: float, b: float) -> float | None:
+    """``a operator b`` in double precision; None where Mint gives no number (a zero divisor) or none is known."""
     match operator:
         case "+":
             return a + b

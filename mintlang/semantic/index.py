@@ -67,6 +67,7 @@ _new = tuple.__new__  # builds a named tuple without its Python-level constructo
 _READ, _READ_KEYWORD = NameUse.READ, Use.READ  # module constants: read per name and keyword written
 _CONSTANTS = frozenset({n.Number, n.CharConstant, n.ConstantRef, n.StringLiteral, type(None)})
 _DIVIDING = frozenset({"/", "MOD"})  # the parser reads % as MOD
+_ARITHMETIC = _DIVIDING | {"+", "-", "*"}
 # Commands whose operand is a word of their own, neither a variable nor a keyword: PROTECT <password>
 # (000:5288) and VIEW <type>, VIEW VAR or VIEW CANBUSSTATE.2 (000:17184-17305).
 _WORD_OPERANDS = frozenset({"PROTECT", "VIEW"})
@@ -86,6 +87,7 @@ class LineFacts(NamedTuple):
     kinds: frozenset[type]  # the types of its statements: passes that look for a few skip the other lines
     calls: tuple[n.Call, ...]  # as statements (``CAMTABLE(0, a, NULL)``) and in expressions, in source order
     divisions: tuple[n.Binary, ...]  # every ``/`` and ``MOD`` it works out, each statement's outermost first
+    arithmetic: tuple[n.Binary, ...]  # every ``+ - * /`` and ``MOD``, as ``divisions``: each may be too large
 
 
 class _Walker:
@@ -95,6 +97,7 @@ class _Walker:
         self.names: list[NameEvent] = []
         self.calls: list[n.Call] = []
         self.divisions: list[n.Binary] = []
+        self.arithmetic: list[n.Binary] = []
 
     def statement(self, unit: Unit, statement: n.Statement) -> None:
         kind = type(statement)  # exact-type dispatch: this runs for every statement of every check
@@ -104,8 +107,8 @@ class _Walker:
             self.uses.append(KeywordUse(unit, statement, keyword, use))
             if keyword.keyword not in _WORD_OPERANDS or use is Use.WRITE:
                 self.expressions(unit, statement)
-            else:  # though a call in it is still a call, and a division a division
-                self._calls_and_divisions(statement)
+            else:  # though its calls and operations are still indexed
+                self._calls_and_operations(statement)
         elif kind is n.Dim:
             self.expressions(unit, statement)
             size = statement.size  # type: ignore[union-attr]
@@ -127,17 +130,24 @@ class _Walker:
                 self.calls.append(statement.call)  # type: ignore[union-attr]
             self.expressions(unit, statement)
 
-    def _calls_and_divisions(self, statement: n.Statement) -> None:
+    def _calls_and_operations(self, statement: n.Statement) -> None:
         for expression in n.expressions_of(statement):
             for node in n.walk_expression(expression):
                 kind = type(node)
                 if kind is n.Call:
                     self.calls.append(node)  # type: ignore[arg-type]
-                elif kind is n.Binary and node.operator in _DIVIDING:  # type: ignore[union-attr]
-                    self.divisions.append(node)  # type: ignore[arg-type]
+                elif kind is n.Binary:
+                    self._operation(node)  # type: ignore[arg-type]
+
+    def _operation(self, node: n.Binary) -> None:
+        operator = node.operator
+        if operator in _ARITHMETIC:
+            self.arithmetic.append(node)
+            if operator in _DIVIDING:
+                self.divisions.append(node)
 
     def expressions(self, unit: Unit, statement: n.Statement) -> None:
-        names, uses, elements, calls, divisions = self.names, self.uses, self.elements, self.calls, self.divisions
+        names, uses, elements, calls, operation = self.names, self.uses, self.elements, self.calls, self._operation
         for expression in n.expressions_of(statement):
             if type(expression) in _CONSTANTS:
                 continue  # most values are plain numbers: no walk needed
@@ -152,8 +162,8 @@ class _Walker:
                     names.append(_new(NameEvent, (unit, node.name, _READ, True, None)))  # type: ignore[union-attr]
                 elif kind is n.Call:
                     calls.append(node)  # type: ignore[arg-type]
-                elif kind is n.Binary and node.operator in _DIVIDING:  # type: ignore[union-attr]
-                    divisions.append(node)  # type: ignore[arg-type]
+                elif kind is n.Binary:
+                    operation(node)  # type: ignore[arg-type]
 
 
 def index_syntax(documents: Iterable[tuple[Unit, Document]]) -> SyntaxIndex:
@@ -254,6 +264,7 @@ def line_facts(unit: Unit, line: n.PlacedLine) -> LineFacts:
     kinds = frozenset(map(type, statements))
     kinds = _kind_sets.setdefault(kinds, kinds)
     uses, names, calls = tuple(walker.uses), tuple(walker.names), tuple(walker.calls)
-    facts = _new(LineFacts, (statements, uses, elements, names, kinds, calls, tuple(walker.divisions)))
+    operations = tuple(walker.divisions), tuple(walker.arithmetic)
+    facts = _new(LineFacts, (statements, uses, elements, names, kinds, calls, *operations))
     cache.put(line.content, facts)
     return facts

@@ -35,6 +35,7 @@ from mintlang.analysis.rules import (
     print_format,
     soft_limits,
     startup,
+    too_large_results,
     unused,
     v3_access,
     v3_keywords,
@@ -138,6 +139,12 @@ RULES: tuple[Rule, ...] = (
         each_line=zero_divisors.each_line,
         dialects=frozenset({Dialect.V4, Dialect.MINTMT}),
         looks_at=LineParts(divisions=True),
+    ),
+    # every line: its operations are indexed (LineFacts.arithmetic), most lines have none to look at
+    Rule(
+        "too-large-results",
+        each_line=too_large_results.each_line,
+        dialects=frozenset({Dialect.V4, Dialect.MINTMT}),  # v3's numbers are not binary32 (the lexer's note)
     ),
     Rule("events", events.check, reads=control_meaning),
     Rule(

@@ -188,21 +188,41 @@ class InputEdges(Rule):
     """Each ``#INn`` handler's input is made negative-edge triggered, as v3 called #INn once
     per falling (active to inactive) edge; v4 inputs are level triggered by default and a
     level-triggered handler is called again and again while the input is active.
+
+    Several handlers are flagged at the first: v3 served inputs that came together from #IN7
+    down and let one input's handler interrupt another's (v3:2549); v4 serves #IN0 first and
+    one handler at a time (v4:5062-5064), so handlers sharing variables or outputs may end
+    otherwise.
     """
 
     id = "S-INEDGE"
     rule_class = RuleClass.SEMI
     phase = Phase.INSERTIONS
-    summary = "#INn handlers -> 'INPUTMODE = INPUTMODE | m' and 'INPUTNEGTRIGGER = INPUTNEGTRIGGER | m'"
-    evidence = "spec S-INEDGE; v3:2525; v4:4085-4088, v4:5024-5040, v4:12379-12421"
+    summary = (
+        "#INn handlers -> 'INPUTMODE = INPUTMODE | m' and 'INPUTNEGTRIGGER = INPUTNEGTRIGGER | m'; "
+        "several handlers -> manual item (priority reversed)"
+    )
+    evidence = "spec S-INEDGE; v3:2525, v3:2549; v4:4085-4088, v4:5024-5040, v4:5062-5064, v4:12379-12421"
 
     def apply(self, context: Context) -> Iterator[Action]:
         mask = 0
+        handlers: list[tuple[FileView, n.PlacedLine, n.Name]] = []
         for file, line in context.placed(LABEL):
             label = line.syntax.label
             event = event_of(label.text) if label is not None and file.unit is Unit.PROGRAM else None
             if event is not None and event.kind is EventKind.IN and event.number is not None:
+                assert label is not None
                 mask |= 1 << event.number
+                handlers.append((file, line, label))
+        if len(handlers) > 1:
+            file, line, label = handlers[0]
+            names = ", ".join(f"#{label.text}" for _, _, label in handlers)
+            yield self.flag(
+                file,
+                line.span(label.span),
+                f"{names}: v3 ran #IN7 first and let handlers interrupt each other, v4 runs #IN0 first and one "
+                "at a time (v3:2549, v4:5062-5064): check what they share",
+            )
         if not mask or _sets_input_mode(context):
             return
         yield insert_lines(

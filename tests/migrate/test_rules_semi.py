@@ -213,12 +213,37 @@ def test_error_13_has_no_bit() -> None:
 
 def test_input_handlers_get_negative_edges() -> None:
     source = "LOOP : ENDL\n#IN0\nRETURN\n#IN3\nRETURN\n"
-    assert rewritten("S-INEDGE", source) == (
+    text = rewritten("S-INEDGE", source)
+    assert "".join(line for line in text.splitlines(keepends=True) if "REM MIGRATE:" not in line) == (
         "INPUTMODE = INPUTMODE | 9\nINPUTNEGTRIGGER = INPUTNEGTRIGGER | 9\n" + source
     )
     result = one_rule("S-INEDGE", source, config="AUTO\n")
     assert result.configuration is not None
     assert result.configuration.text == "AUTO\nINPUTMODE = INPUTMODE | 9\nINPUTNEGTRIGGER = INPUTNEGTRIGGER | 9\n"
+
+
+PRIORITY = (
+    "v3 ran #IN7 first and let handlers interrupt each other, v4 runs #IN0 first and one at a time"
+    " (v3 guide section 5.3.2, v4 guide section 8.9): check what they share"
+)
+
+
+@pytest.mark.parametrize(
+    ("source", "reasons"),
+    [
+        pytest.param("LOOP : ENDL\n#IN5\nRETURN\n", [], id="one handler: no order to keep"),
+        # v3 serves simultaneous inputs from #IN7 down, one handler interruptible by another (v3:2549);
+        # v4 from #IN0 up, one at a time (v4:5062-5064): a counter that input 1 resets ends otherwise
+        pytest.param(
+            "LOOP : ENDL\n#IN5\n  n = n + 1\nRETURN\n#IN1\n  n = 0\nRETURN\n",
+            [f"#IN5, #IN1: {PRIORITY}"],
+            id="two handlers: flagged once, at the first",
+        ),
+    ],
+)
+def test_several_input_handlers_are_flagged_for_their_reversed_priority(source: str, reasons: list[str]) -> None:
+    result = one_rule("S-INEDGE", source)
+    assert [(item.reason, item.original_line) for item in result.manual] == [(reason, 2) for reason in reasons]
 
 
 def test_channel_keywords_take_one_channel_in_dot_syntax() -> None:

@@ -185,7 +185,7 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
         # Nothing addressed: the default axes, whatever AXES made them, are at most the controller's
         # (000:572, 605-606, #2017 at 19047); a circle's three values go to two of them.
         if keyword.addressing is Addressing.AXIS and keyword.name not in CIRCLES:
-            yield from _values_for_axes(use, scope.controller.axis_count)
+            yield from values_for_axes(use, scope.controller.axis_count)
         if keyword.name in VECTORS:
             yield from _one_position(use, keyword.name)
         elif keyword.name in CIRCLES:
@@ -276,7 +276,7 @@ def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:
         yield Finding(use.unit, mint_error(2001, selector.span, detail))
     elif name in VECTORS:
         yield from _one_position(use, name)
-    yield from _values_for_axes(use, listed)
+    yield from values_for_axes(use, listed)
 
 
 def _one_position(use: KeywordUse, name: str) -> Iterator[Finding]:
@@ -325,7 +325,7 @@ def _indices(use: KeywordUse, keyword: Keyword, scope: LineScope) -> Iterator[Fi
             yield Finding(use.unit, mint_error(8, item.span, detail))
 
 
-def _values_for_axes(use: KeywordUse, axes: int) -> Iterator[Finding]:
+def values_for_axes(use: KeywordUse, axes: int) -> Iterator[Finding]:
     """More values written than there are axes to take them: 2017 at the first one too many."""
     detail = f"ax{'is' if axes == 1 else 'es'}"
     yield from _too_many_values(use, axes, lambda count: f"{count} values for {axes} {detail}")

@@ -7,7 +7,8 @@ as write only (``a = FLY``, "Write only", 001:13073-13080) or a read of a comman
 the v3 controller (2000 / 2002, as v4 numbers them), so the migrator reports such
 a line as broken in v3 already rather than as something the migration broke.
 The v3 guide's axis rules are checked here too, for the same reason and so that
-mint check finds the "Invalid axis" mint-run raises (001:13173-13184).
+mint check finds the "Invalid axis" mint-run raises (001:13173-13184), and the "Missing parameter"
+of more values than the axes listed (001:990-992, 13097-13111).
 """
 
 from __future__ import annotations
@@ -15,18 +16,18 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.rules.addressing import lone_position
+from mintlang.analysis.rules.addressing import lone_position, values_for_axes
 from mintlang.analysis.traversal import KeywordUse, LineScope, Use
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import VECTORS
+from mintlang.keyworddb.model import CIRCLES, VECTORS, Addressing, V3Keyword
 from mintlang.syntax.v3_axis_lists import NUMBER_OR_VARIABLE, refused_axes
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
     db = database()
     for use in scope.facts.keyword_uses:
-        yield from _axes(use)
         keyword = db.lookup_v3(use.keyword.keyword)
+        yield from _axes(use, keyword)
         if keyword is None or not (keyword.read or keyword.write or keyword.command):
             continue  # no attribute ticks to go by
         name, span = keyword.name, use.keyword.spelling_span
@@ -40,10 +41,14 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
                 yield Finding(use.unit, mint_error(2002, span, f"{name} can only be written in Mint v3, not read"))
 
 
-def _axes(use: KeywordUse) -> Iterator[Finding]:
+def _axes(use: KeywordUse, keyword: V3Keyword | None) -> Iterator[Finding]:
     """v3's "Invalid axis" (001:13173-13184), as mint-run raises it: an axis list takes only numbers and
-    variables (``SF[a+1] = 1000``), and a vector move names two axes or more (``VR[0] = 100``, 001:3257)."""
+    variables (``SF[a+1] = 1000``), and a vector move names two axes or more (``VR[0] = 100``, 001:3257).
+    More values than the axes given is v3's "Missing parameter", v4's 2017 (``GAIN[1] = 10,20``,
+    001:990-992, 13097-13111), but for a circle's three values on two axes."""
     selector, name = use.keyword.selector, use.keyword.keyword
+    if selector is not None and keyword is not None and keyword.addressing is Addressing.AXIS and name not in CIRCLES:
+        yield from values_for_axes(use, 1 if selector.dot else len(selector.axes))
     for item in refused_axes(selector) if selector is not None else ():  # None: the default axes, any AXES set
         yield Finding(use.unit, mint_error(2, item.span, f"Invalid axis in Mint v3: {NUMBER_OR_VARIABLE}"))
     if name in VECTORS:

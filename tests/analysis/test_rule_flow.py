@@ -82,6 +82,20 @@ def test_a_lone_end_or_return_after_the_endless_main_loop_is_not_dead_code(last:
     assert found(f"LOOP\nGO\nENDL\n{last}\nPRINT 1\n") == [("W106", WARNING, 5)]
 
 
+@pytest.mark.parametrize(
+    ("handler", "expected"),
+    [
+        pytest.param("PRINT ERR\nEND\n\nRETURN\n", [], id="the-guide's-end-then-return"),
+        pytest.param("PRINT ERR\nEND\nRETURN\nPRINT 1\n", [("W106", WARNING, 7)], id="more-after-the-return"),
+        pytest.param("PRINT ERR\nEND\nPRINT 1\nRETURN\n", [("W106", WARNING, 6)], id="not-a-lone-return"),
+        pytest.param("IF ERR DO\nEND\nRETURN\nENDIF\nRETURN\n", [("W106", WARNING, 6)], id="end-inside-a-block"),
+    ],
+)
+def test_a_lone_return_after_a_handlers_own_end_is_not_dead_code(handler: str, expected: list) -> None:
+    # 000:4734-4736 and 000:4793-4795: the manual's #ONERROR handlers stop with END and close with RETURN
+    assert found("PRINT 1\nEND\n#ONERROR\n" + handler) == expected
+
+
 def test_an_if_whose_branches_both_return_does_not_run_on() -> None:
     subroutine = "DIM a\nGOSUB one\nGOSUB two\nEND\n#one\nIF a DO\nRETURN\nELSE\na = 2\nRETURN\nENDIF\n"
     assert found(subroutine + "#two\nRETURN\n") == []

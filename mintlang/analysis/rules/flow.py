@@ -2,7 +2,9 @@
 
 * Statements after END, RETURN, GOTO or EXIT that nothing can reach (W106).
   A lone END or RETURN right after an endless main loop is the manual's own
-  program structure (line 279: "#main / LOOP .. ENDL / RETURN") and is not reported.
+  program structure (line 279: "#main / LOOP .. ENDL / RETURN") and is not reported,
+  nor a lone RETURN right after a subroutine's own END, the layout of the manual's
+  #ONERROR handlers (000:4734-4736, 000:4793-4795: "END" then "RETURN").
   Nor is what the compiler does wherever it stands: a DEFINE (macros are substituted
   at compile time, 000:18494), an array's DIM (arrays are made and filled at compile
   time, "regardless of where they reside", 000:1104-1105) and a DIM that only declares
@@ -56,6 +58,8 @@ from mintlang.syntax.parser import Document
 _TERMINATORS = frozenset({"END", "RETURN", "EXIT"})
 _RECEIVERS = frozenset({"NEXT", "ENDW", "ENDL"})  # reached from elsewhere in their block
 _LAST_WORDS = frozenset({"END", "RETURN"})
+_RETURN_WORD = frozenset({"RETURN"})
+_NO_WORDS: frozenset[str] = frozenset()
 # What changes the flow; a line of other statements only runs, when it can be reached at all.
 _FLOW_STATEMENTS = frozenset({n.BlockWord, n.Jump, n.IfDo, n.IfThen, n.While, n.For, n.Until, n.EventBlock})
 _SEPARATE_BLOCKS = {"STARTUP": "ENDSTARTUP"}  # MintMT blocks besides Event .. End Event
@@ -196,7 +200,7 @@ class _State(NamedTuple):
     reachable: bool
     reported: bool
     running: bool
-    after_endless_loop: bool
+    closing: frozenset[str]
     subroutine: n.Name | None
     falling_from_main: bool
 
@@ -212,7 +216,7 @@ class _Flow:
         self.subroutines = subroutines
         self.reachable = True
         self.reported = False  # one W106 per unreachable run
-        self.after_endless_loop = False  # unreachable only because an endless loop just closed
+        self.closing = _NO_WORDS  # the lone words the manual's layout puts after what just stopped the flow
         self.running = False  # some statement has run since the last entry point
         self.subroutine: n.Name | None = None  # None while in the main program
         # Whether the code being followed is the main program's: after a stop, code that a GOTO's label reaches
@@ -237,7 +241,7 @@ class _Flow:
                 self._end_dead_run()
                 self._entry(syntax.label)
             if self.reachable and facts.kinds.isdisjoint(_FLOW_STATEMENTS) and self.dead is None:
-                self.reported, self.running, self.after_endless_loop = False, True, False  # ran, and goes on
+                self.reported, self.running, self.closing = False, True, _NO_WORDS  # ran, and goes on
                 continue
             for statement in syntax.statements:
                 self._statement(statement)
@@ -296,13 +300,13 @@ class _Flow:
             self.reachable,
             self.reported,
             self.running,
-            self.after_endless_loop,
+            self.closing,
             self.subroutine,
             self.falling_from_main,
         )
 
     def _restore(self, state: _State) -> None:
-        self.reachable, self.reported, self.running, self.after_endless_loop = state[:4]
+        self.reachable, self.reported, self.running, self.closing = state[:4]
         self.subroutine, self.falling_from_main = state.subroutine, state.falling_from_main
 
     def _statement(self, statement: n.Statement) -> None:
@@ -315,7 +319,7 @@ class _Flow:
             return
         if kind not in _FLOW_STATEMENTS and self.reachable:  # runs, and changes nothing
             self._dead(statement)
-            self.reported, self.running, self.after_endless_loop = False, True, False
+            self.reported, self.running, self.closing = False, True, _NO_WORDS
             return
         if_bound = self._if_bounds(statement)  # ELSE and ENDIF are never dead code themselves
         if _receives_flow(statement):
@@ -327,7 +331,7 @@ class _Flow:
             self.dead = _DeadRun(len(self.found) - 1, span.start, span.start)
             self.reported = True
         self._dead(statement)
-        self.after_endless_loop = False
+        self.closing = _NO_WORDS
         if self.reachable:
             self.reported, self.running = False, True
         if kind is n.IfThen:
@@ -339,6 +343,8 @@ class _Flow:
         if _ends_flow(statement):
             self.reachable = False
             self.falling_from_main = False
+            if self._ends_subroutine(statement):
+                self.closing = _RETURN_WORD
 
     def _jumps(self, statement: n.Statement) -> None:
         """EXIT, GOTO and RETURN, also inside IF .. THEN."""
@@ -371,8 +377,14 @@ class _Flow:
             self._report(mint_error(2010, span, detail))
 
     def _closes_main_loop(self, statement: n.Statement) -> bool:
-        """A lone END or RETURN straight after an endless loop: the manual's program structure."""
-        return self.after_endless_loop and type(statement) is n.BlockWord and statement.word in _LAST_WORDS  # type: ignore[union-attr]
+        """A lone END or RETURN straight after an endless loop, or RETURN after a subroutine's END: the manual's
+        program structure."""
+        return type(statement) is n.BlockWord and statement.word in self.closing  # type: ignore[union-attr]
+
+    def _ends_subroutine(self, statement: n.Statement) -> bool:
+        """An END at the top level of a subroutine or handler, which the manual closes with a RETURN all the same."""
+        top = not (self.loops or self.ifs)
+        return top and self.subroutine is not None and type(statement) is n.BlockWord and statement.word == "END"  # type: ignore[union-attr]
 
     def _if_bounds(self, statement: n.Statement) -> bool:
         """Follow IF .. DO, ELSE and ENDIF; True for ELSE and ENDIF, which are never dead code themselves."""
@@ -418,7 +430,7 @@ class _Flow:
         if loop.endless and not loop.left:
             self.endless.append(self.line.number)
             self.reachable = False
-            self.after_endless_loop = True
+            self.closing = _LAST_WORDS
             self.falling_from_main = False
 
 

@@ -96,8 +96,9 @@ GROUP = Group(
         RuleDoc(
             "W106",
             catches="Statements that nothing can reach: after END, RETURN, GOTO or EXIT, with no label "
-            "before them. The guide's own layout, a lone END or RETURN after an endless main loop, is not "
-            "reported, nor what the compiler does wherever it stands: a DEFINE, an array's DIM, a DIM "
+            "before them. The guide's own layouts, a lone END or RETURN after an endless main loop and a "
+            "lone RETURN after a handler's own END, are not reported, nor what the compiler does wherever "
+            "it stands: a DEFINE, an array's DIM, a DIM "
             "without a value.",
             why="Code that never runs is usually a mistake: a label was forgotten, or an END placed too "
             "early. At best it misleads the reader about what the program does.",

@@ -140,11 +140,11 @@ RULES: tuple[Rule, ...] = (
         dialects=frozenset({Dialect.V4, Dialect.MINTMT}),
         looks_at=LineParts(divisions=True),
     ),
-    # every line: its operations are indexed (LineFacts.arithmetic), most lines have none to look at
     Rule(
         "too-large-results",
         each_line=too_large_results.each_line,
         dialects=frozenset({Dialect.V4, Dialect.MINTMT}),  # v3's numbers are not binary32 (the lexer's note)
+        looks_at=LineParts(arithmetic=True),
     ),
     Rule("events", events.check, reads=control_meaning),
     Rule(

@@ -1,10 +1,12 @@
-"""Digital inputs and outputs, the relay and the analog inputs (spec §8).
+"""Digital inputs and outputs, the relay, the analog inputs and the auxiliary analog outputs (spec §8).
 
 Inputs are sampled once per servo tick from the world's electrical levels.
 ``INPUTACTIVELEVEL`` turns a level into an active state; edge-triggered inputs
 (``INPUTMODE``) latch the edges ``INPUTPOSTRIGGER``/``INPUTNEGTRIGGER`` select,
 and reading ``IN`` clears the latches it returns. Outputs and the relays only
 record what the program and the drive enables (``drive_enable.py``) drive, for the report and the trace.
+An auxiliary DAC (``AUXDAC``, MintDrive and ServoNode 51 only) drives nothing
+the simulation models either: it holds what was written, which reading it returns.
 A channel (``IN.21``) is numbered across the cards; a whole-card form (``IN``, ``OUT = 5``) addresses
 the bank BANK selects (``io_banks.py``).
 """
@@ -19,7 +21,7 @@ from mintlang.runtime.errors import MintError
 from mintlang.runtime.events import EventClass, Events
 from mintlang.runtime.io_banks import BankSelection, with_bit
 from mintlang.runtime.keywords import KeywordTable, per_channel
-from mintlang.runtime.ranges import ranged
+from mintlang.runtime.ranges import check_range, ranged, table_bounds, table_default
 
 INVALID_INPUT = 7
 INVALID_OUTPUT = 8
@@ -63,6 +65,9 @@ class DigitalIO:
         self.adc = [0.0] * (self.adc_channels.high + 1)
         self.adc_mode = [0.0] * (self.adc_channels.high + 1)  # ADCMODE: 0 at power-up (000:6412-6414)
         self.adc_held: dict[int, float] = {}  # channels turned off, each with the value it read while still on
+        self.auxiliary_dac_channels = profile.auxiliary_dac  # None on the NextMoves: AUXDAC is error 17 there
+        power_up = table_default("AUXDAC", profile.controller) or 0.0  # 0 (000:6680)
+        self.auxiliary_dac = [power_up] * (profile.auxiliary_dac.high + 1 if profile.auxiliary_dac else 0)
 
     def _input(self, channel: int) -> int:
         return _check(channel, self.inputs, INVALID_INPUT)
@@ -131,6 +136,8 @@ class DigitalIO:
         table.register("ADC", read=self._read_adc)
         adc_mode = ranged("ADCMODE", table.controller, self._write_adc_mode)
         table.register("ADCMODE", read=lambda channel: self.adc_mode[self._adc(channel)], write=per_channel(adc_mode))
+        if self.auxiliary_dac_channels is not None:
+            self._register_auxiliary_dac(table, self.auxiliary_dac_channels)
 
     def _watch(self) -> None:
         self.clock.changes_at(self.next_input_change())
@@ -239,6 +246,22 @@ class DigitalIO:
     def adc_reading(self, number: int) -> float:
         """What ``ADC`` reads on analog input ``number``: its level, or the value held while it is off."""
         return self.adc_held.get(number, self.adc[number])
+
+    def _register_auxiliary_dac(self, table: KeywordTable, channels: ChannelRange) -> None:
+        """AUXDAC.channel, in percent of +10 V, within its table's range (-100 to 100, 000:6673-6686); fractions
+        give finer steps (000:4198-4209). No channel is channel 0 (``AUXDAC = 25``, 000:4200). The channel is
+        checked before the value, as ``mint check`` reports a channel the controller lacks (#4) before the
+        value (#3)."""
+        limits = table_bounds("AUXDAC", table.controller, table.dialect)
+
+        def number(channel: int | None) -> int:
+            return _check(0 if channel is None else channel, channels, INVALID_CHANNEL)
+
+        def write(channel: int | None, value: float) -> None:
+            output = number(channel)
+            self.auxiliary_dac[output] = check_range("AUXDAC", value, limits, output)
+
+        table.register("AUXDAC", read=lambda channel: self.auxiliary_dac[number(channel)], write=per_channel(write))
 
     def _write_adc_mode(self, channel: int | None, mode: float) -> None:
         """A channel turned off reads the last value it read while on, until it is turned on (000:6456-6457, 6495)."""

@@ -525,6 +525,9 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
             return _error(2003, line.token_span(named), f"{word} is a keyword and cannot be declared as a variable")
         if index == begin + 2 and not at_end and line.texts[index].upper() == "AS":  # every number is one type
             return _error(2003, span, "DIM takes no type: every Mint variable holds a floating point number")
+    if not at_end and _K.USING in kinds[begin:index]:  # PRINT a USING 4,1, b: USING ends its statement
+        command = "PRINT" if line.texts[begin] == "?" else line.texts[begin].upper()
+        return _error(2003, span, f"nothing may follow USING and its digit counts: write the rest in another {command}")
     if not at_end and kinds[index] in _KEYWORD_KINDS and "NAME" in expected:
         word = line.texts[index]
         role = "a label" if index > begin and kinds[index - 1] in (_K.GOSUB, _K.GOTO) else "a variable"

@@ -377,6 +377,26 @@ def test_parse_errors_carry_the_controllers_error_numbers(source: str, expected:
     assert all(d.severity is Severity.ERROR for d in mintlang.parse(source).diagnostics)
 
 
+@pytest.mark.parametrize(
+    ("source", "column", "command"),
+    [
+        pytest.param('PRINT "X=", a USING 4,1, " Y=", b\n', 24, "PRINT", id="print"),
+        pytest.param("? a USING 4 ; b\n", 13, "PRINT", id="question-mark"),
+        pytest.param('INPUT "A = ", a USING -5,2, b\n', 27, "INPUT", id="input"),
+    ],
+)
+def test_anything_after_using_is_a_syntax_error_saying_using_ends_the_statement(
+    source: str, column: int, command: str
+) -> None:
+    # 000:15295-15296 and 000:12212: in the formats of PRINT and INPUT, USING and its digit counts come last
+    (diagnostic,) = mintlang.parse("DIM a\nDIM b\n" + source).diagnostics
+    assert (diagnostic.code, diagnostic.message) == (
+        "E2003",
+        f"Syntax error: nothing may follow USING and its digit counts: write the rest in another {command}",
+    )
+    assert diagnostic.span.start == len("DIM a\nDIM b\n") + column - 1
+
+
 def test_next_with_its_loop_variable_is_an_error_whose_safe_fix_removes_the_name() -> None:
     # v4 guide 3.7.1 and the v3 guide 5.2.1: unlike BASIC, NEXT takes no index name
     source = "DIM i\nFOR i = 1 TO 3\nNEXT i\n"

@@ -134,7 +134,12 @@ class DigitalIO:
         relay = ranged("RELAY", table.controller, self._write_relay)
         table.register("RELAY", read=self._read_relay, write=per_channel(relay))
         table.register("ADC", read=self._read_adc)
-        adc_mode = ranged("ADCMODE", table.controller, self._write_adc_mode)
+        adc_modes = table_bounds("ADCMODE", table.controller)
+
+        def adc_mode(channel: int | None, mode: float) -> None:  # the channel (#4) before the mode (#3), as mint check
+            number = self._adc(channel)
+            self._write_adc_mode(number, check_range("ADCMODE", mode, adc_modes, number))
+
         table.register("ADCMODE", read=lambda channel: self.adc_mode[self._adc(channel)], write=per_channel(adc_mode))
         if self.auxiliary_dac_channels is not None:
             self._register_auxiliary_dac(table, self.auxiliary_dac_channels)
@@ -263,9 +268,8 @@ class DigitalIO:
 
         table.register("AUXDAC", read=lambda channel: self.auxiliary_dac[number(channel)], write=per_channel(write))
 
-    def _write_adc_mode(self, channel: int | None, mode: float) -> None:
+    def _write_adc_mode(self, number: int, mode: float) -> None:
         """A channel turned off reads the last value it read while on, until it is turned on (000:6456-6457, 6495)."""
-        number = self._adc(channel)
         if mode == ADC_OFF:
             self.adc_held.setdefault(number, self.adc[number])
         else:

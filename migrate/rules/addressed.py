@@ -13,10 +13,13 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Iterator
 
+from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import CIRCLES
 from mintlang.migrate.context import Context, FileView, name_tag, per_pass
 from mintlang.migrate.rules.axes import default_axes, selector_axes
 from mintlang.migrate.rules.base import keyword_refs, written
+from mintlang.semantic.branches import Range, dead_ranges, never_runs
+from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
 POSITIONAL = frozenset({"MOVEA", "MOVER", "VECTORA", "VECTORR", *CIRCLES})  # profiled with SPEED
@@ -43,12 +46,13 @@ def addressed_axes(
 
 
 @per_pass
-def moved_axes(context: Context, keywords: Collection[str]) -> tuple[int, ...] | None:
+def moved_axes(context: Context, keywords: Collection[str], running: bool = False) -> tuple[int, ...] | None:
     """The sorted axes the application writes any of ``keywords`` (a tuple or frozenset) on
-    (``()`` when it never does), or None when one of those writes has axes that cannot be known."""
+    (``()`` when it never does), or None when one of those writes has axes that cannot be known.
+    ``running``: leave out writes a constant IF condition keeps from running (``IF 0 THEN SPEED = 4``)."""
     found: set[int] = set()
     for file, line, statement, keyword in keyword_refs(context, *keywords):
-        if not written(statement, keyword):
+        if not written(statement, keyword) or (running and _never_runs(context, file, line, statement)):
             continue
         assert isinstance(statement, n.KeywordStatement)  # written() holds only for keyword statements
         axes = addressed_axes(context, file, statement, line.origin + statement.span.start)
@@ -59,12 +63,13 @@ def moved_axes(context: Context, keywords: Collection[str]) -> tuple[int, ...] |
 
 
 @per_pass
-def writes_any(context: Context, names: Collection[str]) -> bool:
+def writes_any(context: Context, names: Collection[str], running: bool = False) -> bool:
     """Whether the application writes one of ``names`` (a tuple or frozenset): a keyword the v3
-    reader knows (``MFOLERR = 5``) or a v4-only keyword it reads as a variable (``HOMESPEED = 5``)."""
+    reader knows (``MFOLERR = 5``) or a v4-only keyword it reads as a variable (``HOMESPEED = 5``).
+    ``running`` as for ``moved_axes``."""
     wanted = frozenset(names)
-    for _, _, statement, keyword in keyword_refs(context, *wanted):
-        if written(statement, keyword):
+    for file, line, statement, keyword in keyword_refs(context, *wanted):
+        if written(statement, keyword) and not (running and _never_runs(context, file, line, statement)):
             return True
     return any(word in wanted for word in _assigned(context, wanted))
 
@@ -83,6 +88,18 @@ def _assigned(context: Context, names: frozenset[str]) -> Iterator[str]:
                 word = unparsed_write(file.text[line.origin + statement.span.start : line.origin + statement.span.end])
                 if word is not None:
                     yield word
+
+
+def _never_runs(context: Context, file: FileView, line: n.PlacedLine, statement: n.Statement) -> bool:
+    """Whether a constant IF condition keeps ``statement`` from ever running (v3:2009)."""
+    return never_runs(statement, line.number, line.syntax, _dead_ranges(context, file.unit), Dialect.V3)
+
+
+@per_pass
+def _dead_ranges(context: Context, unit: Unit) -> tuple[Range, ...]:
+    file = context.files[unit]
+    lines = {placed.number: placed.syntax for placed in file.document.placed}
+    return dead_ranges(context.model.structures[unit].blocks, lines, Dialect.V3)
 
 
 _WRITE = re.compile(r"\s*([A-Za-z_]\w*)\s*(?:[.\[]|=)")

@@ -119,9 +119,12 @@ def relied_on(context: Context) -> Iterator[tuple[Default, tuple[int, ...]]]:
 
 def _set_on(context: Context, default: Default) -> tuple[int, ...] | None:
     """The axes the application writes the parameter on, or None when a write's axes are not
-    known (computed, or a write the v3 reader takes for a variable's): then it may set it on all."""
-    axes = moved_axes(context, default.written_as)
-    if axes is None or (not axes and writes_any(context, default.written_as)):
+    known (computed, or a write the v3 reader takes for a variable's): then it may set it on all.
+    A write a constant IF condition keeps from running is none: the program never writes it (spec
+    S-DEFAULTS); one that depends on the run (``IF IN1 THEN``) counts, as the spec asks only about
+    programs that never write it."""
+    axes = moved_axes(context, default.written_as, True)
+    if axes is None or (not axes and writes_any(context, default.written_as, True)):
         return None
     return axes
 

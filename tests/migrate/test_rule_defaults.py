@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pytest
+
 from mintlang.migrate import migrate
 from tests.migrate.helpers import one_rule, rewritten
 
@@ -96,3 +98,24 @@ def test_both_are_idempotent_also_with_every_other_rule() -> None:
         assert migrate(once, only=rules).text == once
     full = migrate(MOVES, opt_in=["S-DEFAULTS-V3"]).text
     assert migrate(full, opt_in=["S-DEFAULTS-V3"]).text == full
+
+
+SPEED_NOTE = "SPEED[0] = <value>; : REM v3 default 40000 (80000 in the CONFIG table), v4 20000"
+
+
+@pytest.mark.parametrize(
+    ("write", "reported"),
+    [
+        # zero is false, any other value true (v3:2009); IF .. THEN runs its statements when true (v3:2101)
+        pytest.param("IF 1 THEN SPEED = 4\n", False, id="if-then-always-runs"),
+        pytest.param("IF 0 THEN SPEED = 4\n", True, id="if-then-never-runs"),
+        pytest.param("IF IN1 THEN SPEED = 4\n", False, id="if-then-on-an-input-may-run"),
+        # an IF block runs the part before ELSE when true, after it when false (v3:2134)
+        pytest.param("IF 0 DO\n  SPEED = 4\nENDIF\n", True, id="if-block-never-runs"),
+        pytest.param("IF 1 DO\n  x = 1\nELSE\n  SPEED = 4\nENDIF\n", True, id="else-of-a-true-block-never-runs"),
+        pytest.param("IF 0 DO\n  x = 1\nELSE\n  SPEED = 4\nENDIF\n", False, id="else-of-a-false-block-runs"),
+    ],
+)
+def test_a_write_that_never_runs_leaves_the_default_relied_on(write: str, reported: bool) -> None:
+    # S-DEFAULTS covers programs that never write the parameter (spec S-DEFAULTS)
+    assert (SPEED_NOTE in _notes(write + "MOVEA = 10 : GO\n")) is reported

@@ -13,7 +13,7 @@ from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.migrate.context import LABEL, Context, FileView, constant_tag
 from mintlang.migrate.model import Phase, RuleClass
-from mintlang.migrate.recognise import shows_v4
+from mintlang.migrate.recognise import Evidence, shows_v4, v4_evidence
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.migrate.rules.spelling import like
 from mintlang.migrate.rules.vocabulary import (
@@ -135,27 +135,30 @@ class RenameEventLabels(Rule):
     """A user label that v4 would call as an event handler (``#TIMER``, ``#CAN1``,
     ``#COMMS3``, ``#FASTIN2`` ...) is renamed, with every GOSUB/GOTO to it.
 
-    ``#FASTIN`` itself is what M-FASTPOS writes, so it is taken as that handler, unless the file
-    defines ``#FASTPOS``: then that handler becomes the #FASTIN and the label is a subroutine. A
-    label jumped to but defined nowhere v3 reads (``a = 1 : #timer``, flagged X-COMMENTED) is left
-    as written: its jumps renamed alone would name a label the user never wrote.
+    v3 calls no ``#FASTIN`` (its latch handler is #FASTPOS, v3:2585-2587), so a v3 ``#FASTIN`` is
+    a subroutine too. It runs with the abbreviations, before M-FASTPOS writes its ``#FASTIN``, and
+    keeps only the one a migration wrote, in a file with no ``#FASTPOS`` left to rename: one under
+    X-FASTLATCH's marker, which every fast-latch handler of the output gets, or in an application
+    showing Mint v4 beyond doubt (its markers dealt with and removed), so a second migration leaves
+    it. A label jumped to but defined nowhere v3 reads (``a = 1 : #timer``, flagged X-COMMENTED) is
+    left as written: its jumps renamed alone would name a label the user never wrote.
     """
 
     id = "M-LABEL"
     rule_class = RuleClass.MECHANICAL
-    phase = Phase.RENAMES
+    phase = Phase.ABBREVIATIONS
     summary = "user label named like a v4 event (#TIMER, #CANn, #COMMSn, #FASTINn) -> renamed with its jumps"
     evidence = "spec M-LABEL; v4:1884-1900"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        names = set(_label_names(context))
-        if not any(_event_named(name, fastpos="FASTPOS" in names) for name in names):
+        if not any(map(_event_named, _label_names(context))):
             return  # the usual case: the symbol table (the semantic model) is not needed
         for labels in context.model.symbols.labels.values():
             taken = set(labels)
             fastpos = "FASTPOS" in labels and bool(labels["FASTPOS"].definitions)
             for symbol in labels.values():
-                if _event_named(symbol.identity, fastpos=fastpos) and symbol.definitions:
+                kept = not fastpos and _migrated_fastin(context, symbol)
+                if _event_named(symbol.identity) and symbol.definitions and not kept:
                     yield from _rename_symbol(self, context.files, symbol, taken)
 
 
@@ -169,13 +172,21 @@ def _label_names(context: Context) -> Iterator[str]:
                 yield statement.label.identity
 
 
-def _event_named(label: str, *, fastpos: bool) -> bool:
-    """Whether a label (by identity) is named like a v4 event handler v3 did not have; ``#FASTIN``
-    alone is taken as the handler M-FASTPOS writes, unless ``fastpos``: the file's #FASTPOS is."""
-    event = event_of(label, Dialect.V4)
-    if event is None or event_of(label, Dialect.V3) is not None:
+def _event_named(label: str) -> bool:
+    """Whether a label (by identity) is named like a v4 event handler v3 did not have."""
+    return event_of(label, Dialect.V4) is not None and event_of(label, Dialect.V3) is None
+
+
+def _migrated_fastin(context: Context, symbol: Symbol) -> bool:
+    """Whether a label is the generic ``#FASTIN`` a migration wrote: marked by X-FASTLATCH, or in v4 text."""
+    event = event_of(symbol.identity, Dialect.V4)
+    if event is None or event.kind is not EventKind.FASTIN or event.number is not None:
         return False
-    return fastpos or not (event.kind is EventKind.FASTIN and event.number is None)
+    files = context.files
+    if all("X-FASTLATCH" in files[place.unit].markers_above(place.span.start) for place in symbol.definitions):
+        return True
+    texts = {unit: file.text for unit, file in files.items()}
+    return v4_evidence(texts, context.controller.controller) is Evidence.BEYOND_DOUBT
 
 
 class RenameReservedNames(Rule):

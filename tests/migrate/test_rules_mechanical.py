@@ -67,11 +67,38 @@ def test_constants_are_renamed_only_when_the_value_is_the_same(source: str, expe
     assert rewritten("M-CONST", source) == expected
 
 
-def test_user_labels_named_like_v4_events_are_renamed_with_their_jumps() -> None:
-    source = "GOSUB timer\nGOTO Can1\nEND\n#timer\nRETURN\n#Can1\nRETURN\n#fastin\nRETURN\n"
-    assert rewritten("M-LABEL", source) == (
-        "GOSUB timer_u\nGOTO Can1_u\nEND\n#timer_u\nRETURN\n#Can1_u\nRETURN\n#fastin\nRETURN\n"
-    )
+_LATCH_MARKER = "REM MIGRATE: X-FASTLATCH: v4 holds the latch until the handler returns; check FASTSELECT\n"
+
+
+# v4 calls #TIMER, #CANn, #COMMSn, #FASTIN and #FASTINn as event handlers (000:1884-1900); v3 reserves none of
+# them, its fast-latch handler being #FASTPOS (001:2585-2587), so each is a v3 subroutine (spec M-LABEL).
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        pytest.param(
+            "GOSUB timer\nGOTO Can1\nEND\n#timer\nRETURN\n#Can1\nRETURN\n",
+            "GOSUB timer_u\nGOTO Can1_u\nEND\n#timer_u\nRETURN\n#Can1_u\nRETURN\n",
+            id="timer-and-can",
+        ),
+        pytest.param(
+            "GOSUB fastin\nEND\n#fastin\nRETURN\n", "GOSUB fastin_u\nEND\n#fastin_u\nRETURN\n", id="v3-fastin"
+        ),
+        pytest.param(
+            "#FASTIN\n  a = FASTPOS.0\nRETURN\n", "#FASTIN_u\n  a = FASTPOS.0\nRETURN\n", id="v3-fastin-alone"
+        ),
+        pytest.param("#FASTIN2\nRETURN\n", "#FASTIN2_u\nRETURN\n", id="numbered-fastin"),
+        pytest.param(  # the handler a migration wrote from #FASTPOS, under X-FASTLATCH's marker
+            f"{_LATCH_MARKER}#FASTIN\nRETURN\n", f"{_LATCH_MARKER}#FASTIN\nRETURN\n", id="migrated-fastin-kept"
+        ),
+        pytest.param(  # a scalar DIM is v4 (v3 DIMs arrays only, 001:7299): the markers were dealt with
+            "DIM a\n#FASTIN\n  a = FASTPOS.0\nRETURN\n",
+            "DIM a\n#FASTIN\n  a = FASTPOS.0\nRETURN\n",
+            id="v4-fastin-kept",
+        ),
+    ],
+)
+def test_user_labels_named_like_v4_events_are_renamed_with_their_jumps(source: str, expected: str) -> None:
+    assert rewritten("M-LABEL", source) == expected
 
 
 def test_user_names_that_are_v4_keywords_are_renamed_everywhere() -> None:

@@ -141,7 +141,8 @@ def render_text(
     migrated = sides[1]
     for row in data["applications"]:
         name = escape(row["program"] or row["configuration"])
-        found = row["divergence"]
+        # an incomplete run's differences are all explained: each is listed below, none is its headline's
+        found = row["divergence"] if row["verdict"] != Verdict.INCOMPLETE else None
         detail = f" ({escape(found['detail'])})" if found is not None and found["detail"] else ""
         console.print(f"{name}: [bold]{escape(row['summary'])}[/bold]{detail}")
         for side in sides if found is not None else ():

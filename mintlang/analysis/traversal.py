@@ -40,14 +40,12 @@ class LineScope(NamedTuple):
 
 
 # What a line has that line rules look for: its statements' types, and whether it uses a keyword,
-# calls a function, divides, works out any arithmetic, and is labelled. Lines of one shape are many;
-# shapes are few.
-LineShape = tuple[frozenset[type], bool, bool, bool, bool, bool]
+# calls a function, works out any arithmetic, and is labelled. Lines of one shape are many; shapes are few.
+LineShape = tuple[frozenset[type], bool, bool, bool, bool]
 
 
 def line_shape(syntax: n.LineSyntax, facts: LineFacts) -> LineShape:
-    uses, calls, divisions, arithmetic = facts.keyword_uses, facts.calls, facts.divisions, facts.arithmetic
-    return (facts.kinds, bool(uses), bool(calls), bool(divisions), bool(arithmetic), syntax.label is not None)
+    return (facts.kinds, bool(facts.keyword_uses), bool(facts.calls), bool(facts.arithmetic), syntax.label is not None)
 
 
 @record
@@ -61,18 +59,16 @@ class LineParts:
     kinds: frozenset[type] = frozenset()  # the statement types it looks at (IF .. THEN bodies included)
     keyword_uses: bool = False
     calls: bool = False
-    divisions: bool = False
     arithmetic: bool = False  # a + - * / or MOD
     label: bool = False
 
     def found_in(self, shape: LineShape) -> bool:
         """Whether a line of ``shape`` has something this rule reads."""
-        kinds, keyword_uses, calls, divisions, arithmetic, label = shape
+        kinds, keyword_uses, calls, arithmetic, label = shape
         return (
             not self.kinds.isdisjoint(kinds)
             or (self.keyword_uses and keyword_uses)
             or (self.calls and calls)
-            or (self.divisions and divisions)
             or (self.arithmetic and arithmetic)
             or (self.label and label)
         )

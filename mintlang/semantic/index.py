@@ -66,8 +66,7 @@ class SyntaxIndex:
 _new = tuple.__new__  # builds a named tuple without its Python-level constructor
 _READ, _READ_KEYWORD = NameUse.READ, Use.READ  # module constants: read per name and keyword written
 _CONSTANTS = frozenset({n.Number, n.CharConstant, n.ConstantRef, n.StringLiteral, type(None)})
-_DIVIDING = frozenset({"/", "MOD"})  # the parser reads % as MOD
-_ARITHMETIC = _DIVIDING | {"+", "-", "*"}
+_ARITHMETIC = frozenset({"+", "-", "*", "/", "MOD"})  # the parser reads % as MOD
 # Commands whose operand is a word of their own, neither a variable nor a keyword: PROTECT <password>
 # (000:5288) and VIEW <type>, VIEW VAR or VIEW CANBUSSTATE.2 (000:17184-17305).
 _WORD_OPERANDS = frozenset({"PROTECT", "VIEW"})
@@ -86,8 +85,7 @@ class LineFacts(NamedTuple):
     names: tuple[NameEvent, ...]
     kinds: frozenset[type]  # the types of its statements: passes that look for a few skip the other lines
     calls: tuple[n.Call, ...]  # as statements (``CAMTABLE(0, a, NULL)``) and in expressions, in source order
-    divisions: tuple[n.Binary, ...]  # every ``/`` and ``MOD`` it works out, each statement's outermost first
-    arithmetic: tuple[n.Binary, ...]  # every ``+ - * /`` and ``MOD``, as ``divisions``: each may be too large
+    arithmetic: tuple[n.Binary, ...]  # every ``+ - * /`` and ``MOD`` it works out, each statement's outermost first
 
 
 class _Walker:
@@ -96,7 +94,6 @@ class _Walker:
         self.elements: list[tuple[Unit, n.ElementRef]] = []
         self.names: list[NameEvent] = []
         self.calls: list[n.Call] = []
-        self.divisions: list[n.Binary] = []
         self.arithmetic: list[n.Binary] = []
 
     def statement(self, unit: Unit, statement: n.Statement) -> None:
@@ -136,18 +133,11 @@ class _Walker:
                 kind = type(node)
                 if kind is n.Call:
                     self.calls.append(node)  # type: ignore[arg-type]
-                elif kind is n.Binary:
-                    self._operation(node)  # type: ignore[arg-type]
-
-    def _operation(self, node: n.Binary) -> None:
-        operator = node.operator
-        if operator in _ARITHMETIC:
-            self.arithmetic.append(node)
-            if operator in _DIVIDING:
-                self.divisions.append(node)
+                elif kind is n.Binary and node.operator in _ARITHMETIC:  # type: ignore[union-attr]
+                    self.arithmetic.append(node)  # type: ignore[arg-type]
 
     def expressions(self, unit: Unit, statement: n.Statement) -> None:
-        names, uses, elements, calls, operation = self.names, self.uses, self.elements, self.calls, self._operation
+        names, uses, elements, calls, arithmetic = self.names, self.uses, self.elements, self.calls, self.arithmetic
         for expression in n.expressions_of(statement):
             if type(expression) in _CONSTANTS:
                 continue  # most values are plain numbers: no walk needed
@@ -162,8 +152,8 @@ class _Walker:
                     names.append(_new(NameEvent, (unit, node.name, _READ, True, None)))  # type: ignore[union-attr]
                 elif kind is n.Call:
                     calls.append(node)  # type: ignore[arg-type]
-                elif kind is n.Binary:
-                    operation(node)  # type: ignore[arg-type]
+                elif kind is n.Binary and node.operator in _ARITHMETIC:  # type: ignore[union-attr]
+                    arithmetic.append(node)  # type: ignore[arg-type]
 
 
 def index_syntax(documents: Iterable[tuple[Unit, Document]]) -> SyntaxIndex:
@@ -264,7 +254,6 @@ def line_facts(unit: Unit, line: n.PlacedLine) -> LineFacts:
     kinds = frozenset(map(type, statements))
     kinds = _kind_sets.setdefault(kinds, kinds)
     uses, names, calls = tuple(walker.uses), tuple(walker.names), tuple(walker.calls)
-    operations = tuple(walker.divisions), tuple(walker.arithmetic)
-    facts = _new(LineFacts, (statements, uses, elements, names, kinds, calls, *operations))
+    facts = _new(LineFacts, (statements, uses, elements, names, kinds, calls, tuple(walker.arithmetic)))
     cache.put(line.content, facts)
     return facts

@@ -72,7 +72,7 @@ def test_each_skipping_rule_reads_something(rule: Rule) -> None:
 
 def test_a_line_of_a_kind_a_rule_reads_is_not_skipped() -> None:
     parts = LineParts(frozenset({n.Dim}), calls=True)
-    assert parts.found_in((frozenset({n.Dim, n.Print}), False, False, False, False, False))
-    assert parts.found_in((frozenset({n.Print}), False, True, False, False, False))
-    assert not parts.found_in((frozenset({n.Print}), True, False, True, True, True))
-    assert LineParts(arithmetic=True).found_in((frozenset({n.Print}), False, False, False, True, False))
+    assert parts.found_in((frozenset({n.Dim, n.Print}), False, False, False, False))
+    assert parts.found_in((frozenset({n.Print}), False, True, False, False))
+    assert not parts.found_in((frozenset({n.Print}), True, False, True, True))
+    assert LineParts(arithmetic=True).found_in((frozenset({n.Print}), False, False, True, False))

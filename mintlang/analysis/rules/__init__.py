@@ -138,7 +138,7 @@ RULES: tuple[Rule, ...] = (
         "zero-divisors",
         each_line=zero_divisors.each_line,
         dialects=frozenset({Dialect.V4, Dialect.MINTMT}),
-        looks_at=LineParts(divisions=True),
+        looks_at=LineParts(arithmetic=True),  # its divisions
     ),
     Rule(
         "too-large-results",

@@ -19,10 +19,12 @@ from mintlang.analysis.traversal import LineScope
 from mintlang.semantic.constants import held_value
 from mintlang.syntax import nodes as n
 
+_DIVIDING = frozenset({"/", "MOD"})  # the parser reads % as MOD
+
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
-    for division in scope.facts.divisions:  # gathered by the walk that indexes the line
-        if held_value(division.right, scope.dialect) == 0:
+    for division in scope.facts.arithmetic:  # gathered by the walk that indexes the line
+        if division.operator in _DIVIDING and held_value(division.right, scope.dialect) == 0:
             detail = _detail(scope.syntax.text, division)
             yield Finding(scope.unit, mint_error(2021, division.right.span, detail))
 

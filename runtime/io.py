@@ -21,7 +21,7 @@ from mintlang.runtime.errors import MintError
 from mintlang.runtime.events import EventClass, Events
 from mintlang.runtime.io_banks import BankSelection, with_bit
 from mintlang.runtime.keywords import KeywordTable, per_channel
-from mintlang.runtime.ranges import check_range, ranged, table_bounds, table_default
+from mintlang.runtime.ranges import ranged, table_default
 
 INVALID_INPUT = 7
 INVALID_OUTPUT = 8
@@ -134,12 +134,7 @@ class DigitalIO:
         relay = ranged("RELAY", table.controller, self._write_relay)
         table.register("RELAY", read=self._read_relay, write=per_channel(relay))
         table.register("ADC", read=self._read_adc)
-        adc_modes = table_bounds("ADCMODE", table.controller)
-
-        def adc_mode(channel: int | None, mode: float) -> None:  # the channel (#4) before the mode (#3), as mint check
-            number = self._adc(channel)
-            self._write_adc_mode(number, check_range("ADCMODE", mode, adc_modes, number))
-
+        adc_mode = ranged("ADCMODE", table.controller, self._write_adc_mode, channel=self._adc)
         table.register("ADCMODE", read=lambda channel: self.adc_mode[self._adc(channel)], write=per_channel(adc_mode))
         if self.auxiliary_dac_channels is not None:
             self._register_auxiliary_dac(table, self.auxiliary_dac_channels)
@@ -254,18 +249,16 @@ class DigitalIO:
 
     def _register_auxiliary_dac(self, table: KeywordTable, channels: ChannelRange) -> None:
         """AUXDAC.channel, in percent of +10 V, within its table's range (-100 to 100, 000:6673-6686); fractions
-        give finer steps (000:4198-4209). No channel is channel 0 (``AUXDAC = 25``, 000:4200). The channel is
-        checked before the value, as ``mint check`` reports a channel the controller lacks (#4) before the
-        value (#3)."""
-        limits = table_bounds("AUXDAC", table.controller, table.dialect)
+        give finer steps (000:4198-4209). No channel is channel 0 (``AUXDAC = 25``, 000:4200); a channel the
+        controller lacks is #4, before the value (``ranged``)."""
 
         def number(channel: int | None) -> int:
             return _check(0 if channel is None else channel, channels, INVALID_CHANNEL)
 
-        def write(channel: int | None, value: float) -> None:
-            output = number(channel)
-            self.auxiliary_dac[output] = check_range("AUXDAC", value, limits, output)
+        def hold(output: int, value: float) -> None:
+            self.auxiliary_dac[output] = value
 
+        write = ranged("AUXDAC", table.controller, hold, table.dialect, channel=number)
         table.register("AUXDAC", read=lambda channel: self.auxiliary_dac[number(channel)], write=per_channel(write))
 
     def _write_adc_mode(self, number: int, mode: float) -> None:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import replace
+from typing import TypeVar
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
@@ -18,6 +19,7 @@ from mintlang.records import record
 from mintlang.runtime.errors import MintError
 
 OUT_OF_RANGE = 3
+Number = TypeVar("Number", bound=int | None)  # the axis or channel a write names, as its resolver returns it
 
 
 @record
@@ -65,15 +67,33 @@ def table_default(keyword: str, controller: Controller) -> float | None:
         return None  # "20,000, 1000 (stepper)": a default per axis type
 
 
+def as_written(channel: int | None) -> int | None:
+    """The channel of a keyword whose writer checks none: one that takes no number (the compiler refuses
+    ``IMASK.3``) or ignores the one given."""
+    return channel
+
+
 def ranged(
     keyword: str,
     controller: Controller,
-    write_one: Callable[[int | None, float], None],
+    write_one: Callable[[Number, float], None],
     dialect: Dialect = Dialect.V4,
+    *,
+    channel: Callable[[int | None], Number] = as_written,  # type: ignore[assignment]
 ) -> Callable[[int | None, float], None]:
-    """``write_one`` for the values ``keyword``'s table accepts on ``controller``; error 3 for the others."""
+    """``write_one`` for the values ``keyword``'s table accepts on ``controller``; error 3 for the others.
+
+    ``channel`` finds the axis or channel a write names, raising its error (2, 4, 7, 8) when the controller
+    lacks it, before the value is looked at: ``mint check`` reports the number after the dot first, so
+    ``ADCMODE.12 = 77`` is error 4 on a NextMove PCI, not 3. ``write_one`` gets the number it returns.
+    """
     limits = table_bounds(keyword, controller, dialect)
-    return lambda channel, value: write_one(channel, check_range(keyword, value, limits, channel))
+
+    def write(written: int | None, value: float) -> None:
+        number = channel(written)
+        write_one(number, check_range(keyword, value, limits, number))
+
+    return write
 
 
 def check_range(keyword: str, value: float, limits: Bounds, channel: int | None = None, scale: float = 1.0) -> float:

@@ -103,6 +103,10 @@ class Motion:
             raise MintError(INVALID_AXIS, number, f"axes are 0 to {len(self.axes) - 1}")
         return self.axes[number]
 
+    def axis_number(self, number: int | None) -> int:
+        """The axis a write names, error 2 if the controller lacks it: ``ranged``'s check before the value."""
+        return self.axis(number).number
+
     def addressing(self, keyword: str) -> Callable[[int | None], Axis]:
         """The axis ``keyword.n`` acts on: axis n, or for an encoder or DAC keyword the axis of channel n."""
         valid = channel_range(keyword, self.profile)
@@ -395,11 +399,11 @@ class Motion:
             table.register(name, read=self._parameter_reader(name), write=write)
         for name, inputs in _SWITCHES.items():
             table.register(name, read=self._switch(inputs))
-        acceltime = ranged("ACCELTIME", self.profile.controller, self._ramp_time("ACCEL"))
-        deceltime = ranged("DECELTIME", self.profile.controller, self._ramp_time("DECEL"))
+        acceltime = ranged("ACCELTIME", self.profile.controller, self._ramp_time("ACCEL"), channel=self.axis_number)
+        deceltime = ranged("DECELTIME", self.profile.controller, self._ramp_time("DECEL"), channel=self.axis_number)
         table.register("ACCELTIME", write=per_channel(acceltime))  # write only (000:18915-18919)
         table.register("DECELTIME", read=self._decel_time, write=per_channel(deceltime))
-        enable = ranged("DRIVEENABLE", self.profile.controller, self._enable)
+        enable = ranged("DRIVEENABLE", self.profile.controller, self._enable, channel=self.axis_number)
         table.register("DRIVEENABLE", read=lambda ch: float(self.axis(ch).enabled), write=per_channel(enable))
         table.register("POS", read=self._pos, write=per_channel(self._write_pos))
         encoder = self.addressing("ENCODER")

@@ -42,7 +42,9 @@ class Suspension:
         self.paused: list[_Paused] = []
 
     def register(self, table: KeywordTable) -> None:
-        write = ranged("SUSPEND", table.controller, self._write, table.dialect)  # MT-16: whole, 0 or more
+        write = ranged(
+            "SUSPEND", table.controller, self._write, table.dialect, channel=self.motion.axis_number
+        )  # MT-16: whole, 0 or more
         table.register("SUSPEND", read=self._read, write=per_channel(write))
 
     def _read(self, channel: int | None) -> float:

@@ -266,11 +266,15 @@ class FileView:
     def slice(self, span: Span) -> str:
         return self.text[span.start : span.end]
 
-    def statement_alone(self, statement: n.Statement) -> bool:
-        """Whether ``statement`` is the only thing on its line apart from a trailing comment."""
-        before = self.text[self.line_start(statement.span.start) : statement.span.start]
+    def last_on_its_line(self, statement: n.Statement) -> bool:
+        """Whether ``statement`` can become a REM without commenting out other code: nothing but a
+        comment after it, and nothing or a ``:`` before it (``RESET : COMMSON``; not ``THEN COMMSON``,
+        whose IF would be left without a statement)."""
+        before = self.text[self.line_start(statement.span.start) : statement.span.start].strip()
         after = self.text[statement.span.end : self.line_end(statement.span.end)].strip()
-        return before.strip() == "" and (after == "" or after.upper().startswith(("REM", ": REM", ":REM")))
+        return (before == "" or before.endswith(":")) and (
+            after == "" or after.upper().startswith(("REM", ": REM", ":REM"))
+        )
 
 
 @record

@@ -122,7 +122,7 @@ def _denominators(
     context: Context, file: FileView, statement: n.KeywordStatement, proven: Proven, selector: str
 ) -> str | Refusal:
     if not context.supports("FOLLOWDENOM"):
-        if not file.statement_alone(statement):
+        if not file.last_on_its_line(statement):
             return Refusal(f"{context.controller.title} has no FOLLOWDENOM: FOLLOW takes n / d; delete this GEARD")
         return f"REM {file.slice(statement.span)}: folded into FOLLOW = n / d by mint-migrate"
     values = ", ".join(str(gear.denominator) if gear.keeps_denominator(context) else "1" for _, gear, _ in proven)

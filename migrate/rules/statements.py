@@ -106,8 +106,9 @@ class Boost(StatementRule):
 
 class NotAvailable(StatementRule):
     """COMMSON/COMMSOFF (v4 decodes comms packets by itself) and BEEPON/BEEPOFF (no keypad
-    key-click) have no v4 statement: the statement becomes a REM saying so. A statement that
-    shares its line with others is flagged instead, so that nothing after it is commented out."""
+    key-click) have no v4 statement: the statement becomes a REM saying so, also after other
+    code (``RESET : REM COMMSON ...``). One with code after it, or the body of a THEN, is
+    flagged instead, so that nothing else is commented out."""
 
     id = "M-NOTAVAIL"
     rule_class = RuleClass.MECHANICAL
@@ -119,7 +120,7 @@ class NotAvailable(StatementRule):
         word = statement.keyword.keyword
         entry = context.db.rename_of(word)  # the v4 guide's "removed" entry of the keyword
         where = in_file(cite(f"v4:{entry.line}")) if entry is not None else "v4 guide"
-        if not file.statement_alone(statement):
+        if not file.last_on_its_line(statement):
             return Refusal(f"{word} is not available in Mint v4 ({where}): delete it")
         return f"REM {file.slice(statement.span)}: not available in Mint v4 ({where}), removed by mint-migrate"
 

@@ -29,6 +29,7 @@ class Semantics:
     functions: Mapping[str, Callable[..., float]]
     constants: Mapping[str, float]  # predefined constants by upper-case name
     axis_keywords: frozenset[str]  # keywords addressed by axis: without a selector they take the default axes
+    one_value_keywords: frozenset[str]  # keywords a write gives one value (a channel's, ``Keyword.one_value_a_write``)
     format_number: Callable[[float], str]  # PRINT x
     format_using: Callable[[float, int, int | None], str]  # PRINT x USING int, frac
     printers: Mapping[str, Callable[[float], str]]  # keywords printing like PRINT, each number their way (BINARY)

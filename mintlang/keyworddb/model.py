@@ -131,6 +131,17 @@ class Keyword:
                 return True
         return False
 
+    @property
+    def one_value_a_write(self) -> bool:
+        """Whether a write gives the keyword one value: a channel keyword addresses one channel a call
+        (000:547-548), and its format writes one ``<expression>`` (``OUT.x = <expression>``). DAC, whose format
+        shows more and whose table ticks Multi-Axis, and DACLIMITMAX, whose table ticks it too, are left alone."""
+        return (
+            self.addressing is Addressing.CHANNEL
+            and not any(row.multi_axis for row in self.attributes)
+            and not any("{," in layout.replace(" ", "") for layout in self.formats)
+        )
+
     def available_on(self, controller: Controller) -> bool:
         """Whether ``controller`` has the keyword: its "Controllers Supported" list names it, or lists none."""
         return not self.controllers or controller in self.controllers

@@ -21,6 +21,7 @@ V4 = Semantics(
     axis_keywords=frozenset(
         name for name, record in database().keywords.items() if record.addressing is Addressing.AXIS
     ),
+    one_value_keywords=frozenset(name for name, record in database().keywords.items() if record.one_value_a_write),
     format_number=format_number,
     format_using=format_using,
     printers={},

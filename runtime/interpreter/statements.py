@@ -218,14 +218,16 @@ class StatementCompiler:
             write = access.write
             values = tuple(self.expressions.compile(value) if value is not None else None for value in statement.values)
             fill = statement.fill
-            one_per_axis = reference.keyword in self.expressions.semantics.axis_keywords and (
-                reference.keyword not in CIRCLES
-            )
+            semantics = self.expressions.semantics
+            one_per_axis = reference.keyword in semantics.axis_keywords and reference.keyword not in CIRCLES
+            one_value = reference.keyword in semantics.one_value_keywords
 
             def write_values() -> bool:
                 addressed = channels()
                 if one_per_axis:
                     _within_the_axes(len(values), addressed)
+                elif one_value:
+                    _one_value(len(values), reference.keyword)
                 evaluated = _evaluated(values, fill, addressed)
                 clock.horizon = NEVER
                 if write(addressed, evaluated):
@@ -777,6 +779,13 @@ def _within_the_axes(count: int, addressed: tuple[int, ...] | None) -> None:
     if addressed is not None and count > len(addressed):
         axes = f"{len(addressed)} ax{'is' if len(addressed) == 1 else 'es'}"
         raise MintError(TOO_MANY_VALUES, detail=f"{count} values for {axes}")
+
+
+def _one_value(count: int, keyword: str) -> None:
+    """A channel keyword takes one value a write, on one channel a call (000:547-548): more is #2017, before
+    anything is written, as for more values than axes (000:572-576, 19047)."""
+    if count > 1:
+        raise MintError(TOO_MANY_VALUES, detail=f"{count} values; {keyword} takes one")
 
 
 def _evaluated(values: tuple[Evaluate | None, ...], fill: bool, addressed: tuple[int, ...] | None) -> Values:

@@ -181,6 +181,8 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
     keyword = database().keywords_of(scope.dialect).get(use.keyword.keyword)
     if keyword is None or not keyword.available_on(scope.controller.controller):
         return  # not a keyword of this controller: 17 (keyword usage) says so, its channels are moot
+    if keyword.one_value_a_write:  # OUT.1 = 1,0: a channel keyword takes one value, with or without its channel
+        yield from _too_many_values(use, 1, lambda count: f"{count} values; {keyword.name} takes one")
     if use.keyword.selector is None and use.keyword.channel is None:
         # Nothing addressed: the default axes, whatever AXES made them, are at most the controller's
         # (000:572, 605-606, #2017 at 19047); a circle's three values go to two of them.

@@ -120,14 +120,15 @@ GROUP = Group(
             "more values than the addressed axes can take (`SPEED[0,1] = 10, 20, 30`, `MOVEA.0 = 10, 20`, "
             "more values than the controller has axes to the default axes, or more than the AXES list set just "
             "before gives them: `AXES[0,1]` then `SPEED = 10, 20, 30`), or a circle with more "
-            "than its two axes or three values (`CIRCLEA[0,1,2] = 10, 0, 90`, `CIRCLER[0,1] = 5, 5, 90, 1`).",
+            "than its two axes or three values (`CIRCLEA[0,1,2] = 10, 0, 90`, `CIRCLER[0,1] = 5, 5, 90, 1`), "
+            "or a second value for a channel keyword, which addresses one channel a call (`OUT.1 = 1, 0`).",
             why="The compiler rejects the statement; where the AXES list decides, the line fails when it runs. "
             "A value with no axis to go to usually means an axis was left out of the list.",
             example=Example(
                 before="SPEED[0,1] = 10, 20, 30\n",
                 after="SPEED[0,1,2] = 10, 20, 30\n",
             ),
-            manual=("v4:19047", "v4:572", "v4:590", "v4:677", "v4:8152"),
+            manual=("v4:19047", "v4:572", "v4:590", "v4:677", "v4:8152", "v4:547"),
             fix="Either an axis or a value is missing, and only the author knows which.",
             safety=FixSafety.NONE,
         ),

@@ -21,4 +21,5 @@ MINTMT = replace(
     dialect=Dialect.MINTMT,
     constants={name.upper(): float(record.value) for name, record in database().constants_of(Dialect.MINTMT).items()},
     axis_keywords=frozenset(name for name, record in _KEYWORDS.items() if record.addressing is Addressing.AXIS),
+    one_value_keywords=frozenset(name for name, record in _KEYWORDS.items() if record.one_value_a_write),
 )

@@ -255,6 +255,17 @@ class FileView:
             return self.line(index) if opens else None
         return None
 
+    @cached_property
+    def after_opening(self) -> Span | None:
+        """The separator (`` : ``) between the command that opens the file and a statement after
+        it on its line (``AUTO : a = 1``), or None: what must go below that command breaks the
+        line there, as a line end separates statements as ``:`` does."""
+        line = self.opening
+        if line is None or len(line.statements) < 2:
+            return None
+        command, following = line.statements[:2]
+        return Span(command.span.end, following.span.start)
+
     def markers_above(self, offset: int) -> Iterator[str]:
         """The rules of the ``REM MIGRATE:`` lines right above the line of ``offset``, nearest first."""
         for above in self.lines_above(offset):

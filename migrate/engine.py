@@ -264,13 +264,10 @@ def _marker(file: FileView, rule: str, flag: Flag, flagged: set[tuple[Unit, int,
 def _after_opening(file: FileView, offset: int) -> Span | None:
     """The separator (`` : ``) after the command that opens the file, when ``offset`` lies in a
     statement following that command on its line; None otherwise."""
-    line = file.opening
-    if line is None or len(line.statements) < 2:
+    split = file.after_opening
+    if split is None or not split.start <= offset < file.line_end(split.start):
         return None
-    command, following = line.statements[:2]
-    if not command.span.end <= offset < line.span.end:
-        return None
-    return Span(command.span.end, following.span.start)
+    return split
 
 
 def _non_overlapping(edits: list[Edit]) -> list[Edit]:

@@ -45,7 +45,12 @@ def _next_line(file: FileView, offset: int) -> int:
 
 
 def insert_lines(file: FileView, lines: list[str]) -> Replace:
-    """One insertion of whole lines at the top of ``file``, with its own newline."""
+    """One insertion of whole lines at the top of ``file``, with its own newline: between an
+    opening AUTO and the code after it on its line (``AUTO : a = 1``), whose line is broken there,
+    or else at ``top_of``."""
+    split = file.after_opening
+    if split is not None:
+        return Replace(file.unit, split, "".join(f"{file.newline}{line}" for line in lines) + file.newline)
     at = top_of(file)
     text = "".join(f"{line}{file.newline}" for line in lines)
     if at == len(file.text) and file.text and not file.text.endswith(("\n", "\r")):

@@ -15,7 +15,8 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_right
 from collections.abc import Iterable, Iterator, Sequence
-from itertools import accumulate, chain, islice
+from itertools import accumulate, chain, islice, repeat
+from operator import itemgetter
 from typing import Generic, TypeVar, overload
 
 from mintlang.records import record
@@ -24,6 +25,8 @@ from mintlang.syntax.packed import equal_items
 
 _MOST_PIECES = 16
 T = TypeVar("T")
+_new = tuple.__new__
+_ORIGIN, _NUMBER, _SYNTAX, _CONTENT = map(itemgetter, range(4))  # a ``PlacedLine``'s fields
 
 
 @record
@@ -52,8 +55,9 @@ class Moved(Sequence[T]):
         self._flat: Sequence[T] | None = None
 
     @staticmethod
-    def move(item: T, shift: int, line_shift: int) -> T:
-        """``item`` ``shift`` characters and ``line_shift`` lines further on."""
+    def moved(items: Iterable[T], shift: int, line_shift: int) -> Iterator[T]:
+        """Each of ``items`` ``shift`` characters and ``line_shift`` lines further on: a whole
+        piece at a time, as a file's lines below an edit are moved on every keystroke."""
         raise NotImplementedError
 
     @staticmethod
@@ -81,9 +85,7 @@ class Moved(Sequence[T]):
     @classmethod
     def _items(cls, piece: _Piece[T]) -> Iterator[T]:
         items = islice(piece.items, piece.start, piece.end)
-        if piece.still:
-            return items
-        return (cls.move(item, piece.shift, piece.line_shift) for item in items)
+        return items if piece.still else cls.moved(items, piece.shift, piece.line_shift)
 
     def __len__(self) -> int:
         return self._ends[-1] if self._ends else 0
@@ -107,7 +109,7 @@ class Moved(Sequence[T]):
         at = bisect_right(self._ends, index)
         piece = self._pieces[at]
         item = piece.items[piece.start + index - (self._ends[at - 1] if at else 0)]
-        return item if piece.still else self.move(item, piece.shift, piece.line_shift)
+        return item if piece.still else next(self.moved((item,), piece.shift, piece.line_shift))
 
     def __iter__(self) -> Iterator[T]:
         if self._flat is None:
@@ -135,8 +137,13 @@ class MovedLines(Moved[PlacedLine]):
     __slots__ = ()
 
     @staticmethod
-    def move(item: PlacedLine, shift: int, line_shift: int) -> PlacedLine:
-        return PlacedLine(item.origin + shift, item.number + line_shift, item.syntax, item.content)
+    def moved(items: Iterable[PlacedLine], shift: int, line_shift: int) -> Iterator[PlacedLine]:
+        # Column by column in C: a named tuple's constructor is a Python function, called per line.
+        lines = list(items)
+        origins = map(shift.__add__, map(_ORIGIN, lines))
+        numbers = map(line_shift.__add__, map(_NUMBER, lines))
+        fields = zip(origins, numbers, map(_SYNTAX, lines), map(_CONTENT, lines), strict=True)
+        return map(_new, repeat(PlacedLine), fields)
 
 
 class MovedOffsets(Moved[int]):
@@ -145,8 +152,8 @@ class MovedOffsets(Moved[int]):
     __slots__ = ()
 
     @staticmethod
-    def move(item: int, shift: int, line_shift: int) -> int:
-        return item + shift
+    def moved(items: Iterable[int], shift: int, line_shift: int) -> Iterator[int]:
+        return map(shift.__add__, items)
 
     @staticmethod
     def flat(items: Iterable[int]) -> Sequence[int]:

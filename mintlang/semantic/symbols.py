@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import field
 from enum import StrEnum
+from typing import NamedTuple
 
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
@@ -36,13 +37,13 @@ _BARE, _DECLARE, _WRITE = NameUse.BARE, NameUse.DECLARE, NameUse.WRITE
 _new = tuple.__new__  # builds Span without its Python-level constructor
 
 
-@record
-class Occurrence:
+class Occurrence(NamedTuple):
     """One place a name is written: ``relative`` is its span in the line that starts at ``origin``.
 
     A name written in a line keeps the span of its node, which equal spans share, and the
     line's offset: a span and two integers of its own per name written were a twentieth of
-    a check's memory. Made from a span in the file, ``origin`` is 0.
+    a check's memory. Made from a span in the file, ``origin`` is 0. A named tuple, made
+    by ``tuple.__new__`` where the table is built: every check makes one per name written.
     """
 
     unit: Unit
@@ -150,7 +151,7 @@ class _Collector:
             symbol.kind = SymbolKind.ARRAY
         if isinstance(size, n.Number) and size.value == int(size.value):
             symbol.array_size = int(size.value)
-        symbol.definitions.append(Occurrence(unit, name.span, name.text, declared, True, origin))
+        symbol.definitions.append(_new(Occurrence, (unit, name.span, name.text, declared, True, origin)))
 
     def uses(self, unit: Unit, line: n.PlacedLine, events: tuple[NameEvent, ...]) -> None:
         """What one line does with names: declarations and references, in order.
@@ -175,7 +176,8 @@ class _Collector:
                     continue
                 kind_of = SymbolKind.ARRAY if event.element else SymbolKind.VARIABLE
                 symbol = variables[identity] = Symbol(kind_of, identity, unit)
-            symbol.references.append(Occurrence(unit, name.span, name.text, bool(symbol.definitions), write, origin))
+            occurrence = (unit, name.span, name.text, bool(symbol.definitions), write, origin)
+            symbol.references.append(_new(Occurrence, occurrence))
 
 
 def build_symbols(

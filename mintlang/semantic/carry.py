@@ -79,11 +79,16 @@ def carry_model(
     pairs = _window_pairs(previous.program, program, change)
     structure = _carried_structure(previous.structures[Unit.PROGRAM], pairs, change)
     carried = Carried(change, pairs, _text_kept(previous.program, program, change, pairs))
+    configured = [(Unit.CONFIGURATION, configuration.placed)] if configuration is not None else []
+    files = [*configured, (Unit.PROGRAM, program.placed)]
+    previous_lines = previous.lines_if_made()
     if structure is not None:
         structures = {**previous.structures, Unit.PROGRAM: structure}
-        return SemanticModel(program, configuration, controller, structures, carried)
-    configured = [(Unit.CONFIGURATION, configuration.placed)] if configuration is not None else []
-    lines = IndexedLines([*configured, (Unit.PROGRAM, program.placed)])
+        if previous_lines is None:
+            return SemanticModel(program, configuration, controller, structures, carried)
+        lines = previous_lines.edited(files, change)
+        return SemanticModel.of(program, configuration, controller, structures, lines=lines, carried=carried)
+    lines = IndexedLines(files) if previous_lines is None else previous_lines.edited(files, change)
     structures = {
         **previous.structures,
         Unit.PROGRAM: match_blocks(lines.of(Unit.PROGRAM), controller, program.dialect),

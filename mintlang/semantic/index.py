@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Hashable, Iterable, Iterator, Sequence
 from enum import StrEnum
+from functools import partial
 from itertools import chain, compress, count, repeat
 from operator import attrgetter, not_
 from typing import NamedTuple, overload
@@ -24,6 +25,7 @@ from mintlang.keyworddb.model import Use
 from mintlang.records import record
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
+from mintlang.syntax.change import Change
 from mintlang.syntax.parser import Document
 
 
@@ -198,6 +200,21 @@ class IndexedLines(Sequence[IndexedLine]):
         self._files = tuple((unit, lines, tuple(line_facts(unit, line) for line in lines)) for unit, lines in files)
         self._length = sum(len(lines) for _, lines, _ in self._files)
 
+    def edited(self, files: Iterable[tuple[Unit, Sequence[n.PlacedLine]]], change: Change) -> IndexedLines:
+        """The index of ``files``, the same files after an edit to the program (``change``): a
+        keystroke looks up the index of the lines it re-read, not of every line of the file."""
+        first = change.first_line
+        old_end, new_end = first + change.old_lines, first + change.new_lines
+        edited = object.__new__(IndexedLines)
+        edited._files = tuple(
+            (unit, lines, (*facts[:first], *map(partial(line_facts, unit), lines[first:new_end]), *facts[old_end:]))
+            if unit is Unit.PROGRAM
+            else (unit, lines, facts)
+            for (unit, lines), (_, _, facts) in zip(files, self._files, strict=True)
+        )
+        edited._length = sum(len(facts) for _, _, facts in edited._files)
+        return edited
+
     def __len__(self) -> int:
         return self._length
 
@@ -226,6 +243,11 @@ class IndexedLines(Sequence[IndexedLine]):
         for unit, lines, facts in self._files:
             for index in compress(count(), selectors(facts)):
                 yield unit, lines[index], facts[index]
+
+    def places_with_kinds(self, unit: Unit, kinds: frozenset[type]) -> Iterator[int]:
+        """Where in ``unit``'s lines those with a statement of one of ``kinds`` are, as indices."""
+        facts = next((facts for file, _, facts in self._files if file is unit), ())
+        return compress(count(), map(not_, map(kinds.isdisjoint, map(_KINDS, facts))))
 
     def of(self, unit: Unit) -> Iterator[tuple[n.PlacedLine, LineFacts]]:
         """The lines of one file with their indexes."""

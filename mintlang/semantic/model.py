@@ -63,6 +63,10 @@ class SemanticModel:
         read, for a model carried over an edit (``carried``) that needs none to be checked."""
         return IndexedLines((unit, document.placed) for unit, document in self.documents())
 
+    def lines_if_made(self) -> IndexedLines | None:
+        """``lines`` where a pass read them already: the next version's are this one's, edited."""
+        return self.__dict__.get("lines")
+
     @cached_property
     def symbols(self) -> SymbolTable:
         """Made when first read: an edit carried over (``carried``) needs none to be checked."""

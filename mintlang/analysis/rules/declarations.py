@@ -301,10 +301,14 @@ class _DimPlaces:
     first_statements: list[int]  # those of its first two lines with a statement or a label
 
 
+_DIM = frozenset({n.Dim})
+
+
 def _dim_places(model: SemanticModel, unit: Unit) -> _DimPlaces:
     placed = model.document(unit).placed
     nested = _nested_ranges(model, unit)
-    dims = [at for at, line in enumerate(placed) if _declares(line) and not _inside(nested, line.number)]
+    with_dims = ((at, placed[at]) for at in model.lines.places_with_kinds(unit, _DIM))  # IF .. THEN bodies too
+    dims = [at for at, line in with_dims if _declares(line) and not _inside(nested, line.number)]
     statements = (at for at, line in enumerate(placed) if line.syntax.statements or line.syntax.label is not None)
     return _DimPlaces(dims, list(islice(statements, 2)))
 

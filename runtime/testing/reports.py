@@ -52,7 +52,7 @@ def text(
 
 def _why(result: TestResult) -> str:
     if result.verdict is Verdict.ERROR:
-        return result.message
+        return f"{result.place}: {result.message}" if result.place else result.message
     failed = sum(not check.held for check in result.checks)
     if failed:
         return f"{failed} of {len(result.checks)} expectations failed"
@@ -60,7 +60,8 @@ def _why(result: TestResult) -> str:
 
 
 def _stop(result: TestResult) -> str:
-    return f"stopped {result.stopped}" + (f": {result.message}" if result.message else "")
+    where = f" at {result.place}" if result.place else ""
+    return f"stopped {result.stopped}{where}" + (f": {result.message}" if result.message else "")
 
 
 def junit(results: Sequence[TestResult], seconds: float) -> str:
@@ -86,7 +87,7 @@ def junit(results: Sequence[TestResult], seconds: float) -> str:
             failure = ElementTree.SubElement(case, "failure", message=_why(result), type="expectation")
             failure.text = "\n".join(_check_lines(result, held_too=False))
         elif result.verdict is Verdict.ERROR:
-            ElementTree.SubElement(case, "error", message=result.message, type="error")
+            ElementTree.SubElement(case, "error", message=_why(result), type="error")
         if result.ignored_directives:
             warned = "".join(f"warning: {note}\n" for note in result.ignored_directives)  # as on standard error
             ElementTree.SubElement(case, "system-err").text = warned
@@ -145,6 +146,7 @@ def as_json(results: Sequence[TestResult], seconds: float) -> str:
             "verdict": result.verdict.value,
             "stopped": result.stopped,
             "message": result.message,
+            "place": result.place,
             "simulated_ms": result.simulated_ms,
             "seconds": round(result.seconds, 3),
             "checks": [asdict(check) for check in result.checks],

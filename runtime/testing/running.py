@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import time
+from collections.abc import Mapping
 from enum import StrEnum
+from pathlib import Path
 
 from mintlang.detection import dialect_hint
 from mintlang.dialect import Dialect
@@ -19,7 +21,7 @@ from mintlang.runtime.scenario import (
     stop_fails,
 )
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, merge
-from mintlang.runtime.simulation import Limits
+from mintlang.runtime.simulation import Limits, Stop, StopReason
 from mintlang.runtime.testing.coverage import FileCoverage, Recorder
 from mintlang.runtime.testing.discovery import TestCase, configuration_of
 from mintlang.settings import FileSettings, SettingsError, settings_for
@@ -58,6 +60,7 @@ class TestResult:
     stop_failed: bool = False  # the run stopped on an error, a deadlock … that no ``stopped`` expectation asked for
     hint: str | None = None  # the program looks like MintMT, run as v4 by default (``dialect_hint``)
     ignored_directives: tuple[str, ...] = ()  # REM @sim and @expect lines of the configuration file, not applied
+    place: str | None = None  # ``file:line`` of the statement a run that did not end by itself stopped at
 
 
 @record
@@ -97,7 +100,7 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
     hint = None if chosen else dialect_hint(str(case.program), program.text, dialect)
     partner = configuration_of(case.program, settings)
     configuration = read_source(partner).text if partner is not None else None
-    files = {"program": case.program}
+    files: dict[str, Path] = {"program": case.program}
     if partner is not None:
         files["configuration"] = partner
     recorder = Recorder(files, dialect) if options.coverage else None
@@ -116,8 +119,9 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
     checks = tuple(_check(outcome) for outcome in result.outcomes)
     stopped = result.stop.reason.value
     ignored = result.ignored_directives
+    place = _place(result.stop, files)
     if result.refused:
-        return _error(case, result.stop.message, began, stopped=stopped, hint=hint, ignored=ignored)
+        return _error(case, result.stop.message, began, stopped=stopped, hint=hint, ignored=ignored, place=place)
     if not checks:
         missing = "no expectation to check: add REM @expect lines or [[expect]] to its scenario"
         return _error(case, missing, began, hint=hint, ignored=ignored)
@@ -136,7 +140,17 @@ def _run(case: TestCase, options: Options, began: float) -> TestResult:
         stop_failed,
         hint,
         ignored,
+        place,
     )
+
+
+def _place(stop: Stop, files: Mapping[str, Path]) -> str | None:
+    """``file:line`` of the statement an error, a deadlock or a limit stopped the run at (the controller's message
+    says only ``PROGRAM`` or ``CONFIGURATION`` and the line), as each expectation names its own; none for a run
+    that ended by itself."""
+    if stop.reason in (StopReason.END, StopReason.UNTIL) or stop.line is None or stop.unit not in files:
+        return None
+    return f"{files[stop.unit]}:{stop.line}"
 
 
 def _configured_controller(settings: FileSettings, dialect: Dialect) -> str | None:
@@ -160,6 +174,9 @@ def _error(
     stopped: str = "",
     hint: str | None = None,
     ignored: tuple[str, ...] = (),
+    place: str | None = None,
 ) -> TestResult:
     elapsed = time.perf_counter() - began
-    return TestResult(case, Verdict.ERROR, stopped, message, (), 0, elapsed, hint=hint, ignored_directives=ignored)
+    return TestResult(
+        case, Verdict.ERROR, stopped, message, (), 0, elapsed, hint=hint, ignored_directives=ignored, place=place
+    )

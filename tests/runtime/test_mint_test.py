@@ -6,6 +6,7 @@ import json
 from pathlib import Path
 from xml.etree import ElementTree
 
+import pytest
 from click.testing import CliRunner, Result
 
 from mintlang.cli import main
@@ -179,7 +180,7 @@ def test_a_scenario_file_with_no_program_of_its_name_is_reported_and_the_other_t
 
 # Line 4 reads a(9) of a(3): R2016 ends the run there, before line 5 sets b, so the expectation fails too.
 STOPPED_BY_AN_ERROR = "REM @expect b = 1\nDIM a(3)\nDIM b\nb = a(9)\nb = 1\n"
-INVALID_INDEX = "stopped error: R2016: PROGRAM Invalid index (index 9 outside 1 to 3) [line 4]"
+INVALID_INDEX = "R2016: PROGRAM Invalid index (index 9 outside 1 to 3) [line 4]"
 
 
 def test_a_test_failing_an_expectation_and_stopped_by_an_error_reports_both(tmp_path: Path) -> None:
@@ -187,12 +188,80 @@ def test_a_test_failing_an_expectation_and_stopped_by_an_error_reports_both(tmp_
     lines = _mint_test(program, "--color", "never").output.splitlines()
     assert lines[0] == f"FAILED {program}  1 of 1 expectations failed"
     assert lines[1].startswith("    b at end: expected = 1, got 0 (off by -1) [")
-    assert lines[2] == f"    {INVALID_INDEX}"
+    assert lines[2] == f"    stopped error at {program}:4: {INVALID_INDEX}"
     suite = ElementTree.fromstring(_mint_test(program, "--format", "junit").output).find("testsuite")
     assert suite is not None
     failure = suite.find("testcase/failure")
     assert failure is not None and failure.text is not None
-    assert failure.text.splitlines()[1] == INVALID_INDEX
+    assert failure.text.splitlines()[1] == f"stopped error at {program}:4: {INVALID_INDEX}"
+
+
+@pytest.mark.parametrize(
+    ("program", "configuration", "at", "report"),
+    [
+        pytest.param(
+            "REM @expect a = 1\nDIM a\nDIM t(3)\na = 1\nt(5) = 2\n",
+            None,
+            "cell.mnt:5",
+            "FAILED {program}  stopped error at {place}: "
+            "R2016: PROGRAM Invalid index (index 5 outside 1 to 3) [line 5]",
+            id="a run-time error in the program: the program's line",
+        ),
+        pytest.param(
+            "REM @expect x = 0\nDIM x\n",
+            "DIM t2(2)\nt2(4) = 1\n",
+            "cell.cfg:2",
+            "FAILED {program}  stopped error at {place}: "
+            "R2016: CONFIGURATION Invalid index (index 4 outside 1 to 2) [line 2]",
+            id="a run-time error in the configuration file: that file's line, not the program's",
+        ),
+        pytest.param(
+            "REM @expect a = 1\nDIM a\nFOR a = 1 TO 2\n",
+            None,
+            "cell.mnt:3",
+            "ERROR  {program}  {place}: C2009: PROGRAM NEXT w/o FOR: this FOR block is never closed with NEXT [line 3]",
+            id="a program the compiler refuses: the line it refuses",
+        ),
+        pytest.param(
+            "REM @expect a = 1\nDIM a\n",
+            "DIM q\nq = (1\n",
+            "cell.cfg:2",
+            "ERROR  {program}  {place}: C2003: CONFIGURATION Syntax error: a ')' is missing [line 2]",
+            id="a configuration file the compiler refuses: its line",
+        ),
+        pytest.param(
+            "REM @expect a = 1\nDIM a\na = 1\nINPUT a\n",
+            None,
+            "cell.mnt:4",
+            "FAILED {program}  stopped deadlock at {place}: blocked, and nothing scheduled or moving can ever wake "
+            "the program: INPUT waits for keys that no scenario types (a [[key]] entry, or REM @sim key)",
+            id="a deadlock: the statement that waits for ever",
+        ),
+    ],
+)
+def test_a_run_stopped_short_is_reported_at_the_file_and_line_it_stopped(
+    tmp_path: Path, program: str, configuration: str | None, at: str, report: str
+) -> None:
+    """The controller's message names only PROGRAM or CONFIGURATION and a line; the report names the file, as each
+    expectation's [file:line] does, so a terminal, a CI server or an editor can go there."""
+    tested = _write(tmp_path, "cell.mnt", program)
+    if configuration is not None:
+        _write(tmp_path, "cell.cfg", configuration)
+    place = str(tmp_path / at)
+    text = _mint_test(tested, "--color", "never").output.splitlines()
+    assert text[0] == report.format(program=tested, place=place)
+    (test,) = json.loads(_mint_test(tested, "--format", "json").output)["tests"]
+    assert test["place"] == place
+    suite = ElementTree.fromstring(_mint_test(tested, "--format", "junit").output)
+    outcome = suite.find("testsuite/testcase/failure")
+    outcome = outcome if outcome is not None else suite.find("testsuite/testcase/error")
+    assert outcome is not None and place in (outcome.get("message") or "")
+
+
+def test_a_run_that_ends_by_itself_has_no_place_to_point_at(tmp_path: Path) -> None:
+    _write(tmp_path, "b_fails.mnt", FAILING)
+    (test,) = json.loads(_mint_test(tmp_path, "--format", "json").output)["tests"]
+    assert (test["stopped"], test["place"]) == ("end", None)
 
 
 def test_an_error_that_a_stopped_expectation_asks_for_is_not_reported_as_a_failure(tmp_path: Path) -> None:

@@ -87,10 +87,16 @@ export function parsePlace(origin: string): Place | undefined {
 
 const VERDICTS: readonly Verdict[] = ["passed", "failed", "error"];
 
+/** Where the run stopped short (an error, a deadlock, a program refused): `place`, absent from older reports. */
+function stopPlace(test: Record<string, unknown>): Place | undefined {
+  const place = test["place"];
+  return typeof place === "string" ? parsePlace(place) : undefined;
+}
+
 function failuresOf(test: Record<string, unknown>, verdict: Verdict): Failure[] {
   const message = text(test["message"], "message");
   if (verdict === "error") {
-    return [{ message, place: undefined }];
+    return [{ message, place: stopPlace(test) }];
   }
   const checks = Array.isArray(test["checks"]) ? (test["checks"] as Record<string, unknown>[]) : [];
   const failed = checks
@@ -103,7 +109,7 @@ function failuresOf(test: Record<string, unknown>, verdict: Verdict): Failure[] 
   if (verdict === "failed" && failed.length === 0) {
     // Every expectation held, but the run stopped otherwise than it should (an error, a deadlock).
     const stopped = text(test["stopped"], "stopped");
-    return [{ message: `stopped ${stopped}${message === "" ? "" : `: ${message}`}`, place: undefined }];
+    return [{ message: `stopped ${stopped}${message === "" ? "" : `: ${message}`}`, place: stopPlace(test) }];
   }
   return failed;
 }

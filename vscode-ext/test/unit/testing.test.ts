@@ -97,6 +97,29 @@ test("each outcome carries the expectations that did not hold, where they are wr
   ]);
 });
 
+test("a run stopped short or refused is shown where it stopped, in the program or its configuration file", () => {
+  const stopped = (verdict: string, message: string, place: string | null) => ({
+    program: "/w/cell.mnt",
+    verdict,
+    stopped: "error",
+    message,
+    place,
+    seconds: 0,
+    checks: [],
+  });
+  const report = {
+    tests: [
+      stopped("failed", "R2016: CONFIGURATION Invalid index [line 2]", "/w/cell.cfg:2"),
+      stopped("error", "C2009: PROGRAM NEXT w/o FOR [line 3]", "/w/cell.mnt:3"),
+      stopped("failed", "wall-clock limit", null),
+    ],
+  };
+  assert.deepEqual(
+    parseOutcomes(JSON.stringify(report)).map((outcome) => outcome.failures[0]?.place),
+    [{ file: "/w/cell.cfg", line: 2 }, { file: "/w/cell.mnt", line: 3 }, undefined],
+  );
+});
+
 test("an lcov tracefile gives each file's lines, branch outcomes and event handlers", () => {
   const tracefile = [
     "TN:",

@@ -36,6 +36,7 @@ READ_OF_WRITE_ONLY = 2002
 INVALID_INDEX = 2016
 INVALID_AXIS = 2
 SYNTAX_ERROR = 2003
+NESTING = 40  # operations nested in one generated function: at most two brackets each, of Python's 200
 
 
 @record(frozen=False)
@@ -80,11 +81,17 @@ class ExpressionCompiler:
         """A number as written, as the dialect holds it (``numbers.held``)."""
         return held(float(expression.value), self.semantics.number)
 
-    def source(self, expression: n.Expression, emitter: Emitter) -> Source:
-        """``expression`` as the text of a generated function (``generated.py``), its values named by ``emitter``."""
+    def source(self, expression: n.Expression, emitter: Emitter, depth: int = 0) -> Source:
+        """``expression`` as the text of a generated function (``generated.py``), its values named by ``emitter``.
+
+        ``depth`` counts the operations around it in that text: each nests a bracket or two, and Python
+        compiles no more than 200 (a 255-character line holds over a hundred ``+``), so an operand
+        ``NESTING`` deep becomes a generated function of its own that this text calls."""
         kind = type(expression)
         if kind is n.Parenthesised:
-            return self.source(expression.expression, emitter)  # type: ignore[union-attr]
+            return self.source(expression.expression, emitter, depth)  # type: ignore[union-attr]
+        if depth >= NESTING and (kind is n.Binary or kind is n.Unary or kind is n.Call):
+            return Source(emitter.call(self.compile(expression)))
         if kind is n.Number or kind is n.CharConstant:
             return Source(emitter.name(self.literal(expression)), binary32=self.semantics.number is f32)  # type: ignore[arg-type]
         if kind is n.VariableRef and expression.name.identity not in self.names.macros:  # type: ignore[union-attr]
@@ -92,14 +99,14 @@ class ExpressionCompiler:
         if kind is n.ConstantRef:
             return Source(emitter.name(self.constant_value(expression)))  # type: ignore[arg-type]
         if kind is n.Binary:
-            left = self.source(expression.left, emitter)  # type: ignore[union-attr]
-            right = self.source(expression.right, emitter)  # type: ignore[union-attr]
+            left = self.source(expression.left, emitter, depth + 1)  # type: ignore[union-attr]
+            right = self.source(expression.right, emitter, depth + 1)  # type: ignore[union-attr]
             return generated.binary(emitter, self.semantics.binary[expression.operator], left, right)  # type: ignore[union-attr]
         if kind is n.Unary:
-            operand = self.source(expression.operand, emitter)  # type: ignore[union-attr]
+            operand = self.source(expression.operand, emitter, depth + 1)  # type: ignore[union-attr]
             return generated.unary(emitter, self.semantics.unary[expression.operator], operand)  # type: ignore[union-attr]
         if kind is n.Call and expression.function in self.semantics.functions:  # type: ignore[union-attr]
-            arguments = (self.source(argument, emitter).text for argument in expression.arguments)  # type: ignore[union-attr]
+            arguments = (self.source(argument, emitter, depth + 1).text for argument in expression.arguments)  # type: ignore[union-attr]
             return Source(emitter.call(self.semantics.functions[expression.function], *arguments))  # type: ignore[union-attr]
         return Source(emitter.call(self.compile(expression)))
 

@@ -37,6 +37,7 @@ def _same(warm: mintlang.Analysis, cold: mintlang.Analysis) -> None:
     assert warm.configuration == cold.configuration
     assert warm.model.program.lines == cold.model.program.lines
     assert warm.model.structures[Unit.PROGRAM] == cold.model.structures[Unit.PROGRAM]
+    assert list(warm.model.lines.facts()) == list(cold.model.lines.facts())  # spliced after an edit
     occurrences = [(symbol.identity, list(symbol.occurrences())) for symbol in warm.model.symbols.all()]
     assert occurrences == [(symbol.identity, list(symbol.occurrences())) for symbol in cold.model.symbols.all()]
 

@@ -128,8 +128,14 @@ def _constant_facts(name: str, dialect: Dialect) -> tuple[str, int | float, str]
     record = database().constants_of(dialect).get(name.upper())
     if record is None:
         return None
-    what = f"predefined constant of {record.keyword}" if record.keyword else "predefined constant"
+    owners = database().listing(record.name, dialect) or ((record.keyword,) if record.keyword else ())
+    what = f"predefined constant of {_and(owners)}" if owners else "predefined constant"
     return record.name, _number(record.value), what
+
+
+def _and(names: tuple[str, ...]) -> str:
+    """``A``, ``A and B``, ``A, B and C``."""
+    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} and {names[-1]}"
 
 
 def constant(name: str, dialect: Dialect = Dialect.V4) -> str | None:

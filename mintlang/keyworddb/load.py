@@ -131,6 +131,15 @@ def _attributes(raw: dict[str, Any]) -> Attributes:
     )
 
 
+def _listings(keywords: Mapping[str, Keyword]) -> Mapping[str, tuple[str, ...]]:
+    """Each constant's name in upper case, and the keywords listing it, sorted."""
+    listed: dict[str, list[str]] = {}
+    for keyword in keywords.values():
+        for name in keyword.constants:
+            listed.setdefault(name.upper(), []).append(keyword.name)
+    return MappingProxyType({name: tuple(sorted(owners)) for name, owners in listed.items()})
+
+
 def _keyword(raw: dict[str, Any]) -> Keyword:
     return Keyword(
         name=raw["name"],
@@ -331,6 +340,21 @@ class KeywordDatabase:
     def constants_of(self, dialect: Dialect) -> Mapping[str, Constant]:
         """The predefined constants of a v4-based dialect by name."""
         return self._mintmt_all_constants if dialect is Dialect.MINTMT else self.constants
+
+    def listing(self, constant: str, dialect: Dialect) -> tuple[str, ...]:
+        """The keywords of a v4-based dialect whose entries list ``constant`` among their values, by name: one
+        constant may be the value of several (``_emCRASH_STOP`` of LIMITMODE, 000:13486, and of SOFTLIMITMODE,
+        000:16050), so its record's one ``keyword`` does not say all of them."""
+        listings = self._mintmt_listings if dialect is Dialect.MINTMT else self._v4_listings
+        return listings.get(constant.upper(), ())
+
+    @cached_property
+    def _v4_listings(self) -> Mapping[str, tuple[str, ...]]:
+        return _listings(self.keywords)
+
+    @cached_property
+    def _mintmt_listings(self) -> Mapping[str, tuple[str, ...]]:
+        return _listings(self._mintmt_all_keywords)
 
     @cached_property
     def _mintmt_all_keywords(self) -> Mapping[str, Keyword]:

@@ -147,6 +147,7 @@ def as_json(results: Sequence[TestResult], seconds: float) -> str:
             "stopped": result.stopped,
             "message": result.message,
             "place": result.place,
+            "stop_failed": result.stop_failed,
             "simulated_ms": result.simulated_ms,
             "seconds": round(result.seconds, 3),
             "checks": [asdict(check) for check in result.checks],

@@ -194,6 +194,8 @@ def test_a_test_failing_an_expectation_and_stopped_by_an_error_reports_both(tmp_
     failure = suite.find("testcase/failure")
     assert failure is not None and failure.text is not None
     assert failure.text.splitlines()[1] == f"stopped error at {program}:4: {INVALID_INDEX}"
+    (test,) = json.loads(_mint_test(program, "--format", "json").output)["tests"]
+    assert (test["place"], test["stop_failed"]) == (f"{program}:4", True)  # the editor's Testing view shows both
 
 
 @pytest.mark.parametrize(
@@ -261,7 +263,7 @@ def test_a_run_stopped_short_is_reported_at_the_file_and_line_it_stopped(
 def test_a_run_that_ends_by_itself_has_no_place_to_point_at(tmp_path: Path) -> None:
     _write(tmp_path, "b_fails.mnt", FAILING)
     (test,) = json.loads(_mint_test(tmp_path, "--format", "json").output)["tests"]
-    assert (test["stopped"], test["place"]) == ("end", None)
+    assert (test["stopped"], test["place"], test["stop_failed"]) == ("end", None, False)
 
 
 def test_an_error_that_a_stopped_expectation_asks_for_is_not_reported_as_a_failure(tmp_path: Path) -> None:

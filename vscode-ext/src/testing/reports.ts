@@ -106,10 +106,12 @@ function failuresOf(test: Record<string, unknown>, verdict: Verdict): Failure[] 
       const line = `${text(check["what"], "what")} at ${text(check["when"], "when")}: expected ${text(check["expected"], "expected")}, got ${text(check["actual"], "actual")}${detail}`;
       return { message: line, place: parsePlace(text(check["origin"], "origin")) };
     });
-  if (verdict === "failed" && failed.length === 0) {
-    // Every expectation held, but the run stopped otherwise than it should (an error, a deadlock).
+  // The run stopped otherwise than it should (an error, a deadlock): said by `stop_failed`, besides any
+  // expectation that failed; an older report without it says so only when every expectation held.
+  const stopFailed = typeof test["stop_failed"] === "boolean" ? test["stop_failed"] : failed.length === 0;
+  if (verdict === "failed" && stopFailed) {
     const stopped = text(test["stopped"], "stopped");
-    return [{ message: `stopped ${stopped}${message === "" ? "" : `: ${message}`}`, place: stopPlace(test) }];
+    return [...failed, { message: `stopped ${stopped}${message === "" ? "" : `: ${message}`}`, place: stopPlace(test) }];
   }
   return failed;
 }

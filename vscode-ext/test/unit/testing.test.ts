@@ -120,6 +120,27 @@ test("a run stopped short or refused is shown where it stopped, in the program o
   );
 });
 
+test("a run that failed an expectation and was stopped by an error shows both", () => {
+  const report = {
+    tests: [
+      {
+        program: "/w/cell.mnt",
+        verdict: "failed",
+        stopped: "error",
+        message: "R2016: PROGRAM Invalid index [line 4]",
+        place: "/w/cell.mnt:4",
+        stop_failed: true,
+        seconds: 0,
+        checks: [{ what: "b", when: "end", expected: "= 1", actual: "0", held: false, origin: "/w/cell.mnt:1", detail: "" }],
+      },
+    ],
+  };
+  assert.deepEqual(parseOutcomes(JSON.stringify(report))[0]?.failures, [
+    { message: "b at end: expected = 1, got 0", place: { file: "/w/cell.mnt", line: 1 } },
+    { message: "stopped error: R2016: PROGRAM Invalid index [line 4]", place: { file: "/w/cell.mnt", line: 4 } },
+  ]);
+});
+
 test("an lcov tracefile gives each file's lines, branch outcomes and event handlers", () => {
   const tracefile = [
     "TN:",

@@ -189,8 +189,8 @@ def _evaluate_value(expectation: ValueExpectation, observe: Observer) -> Outcome
     if not names:
         return Outcome(expectation, False, "no axes", "the controller has no axes to check")
     readings = {name: observe.value(name) for name in names}
-    missing = [name for name, value in readings.items() if value is None]
-    if missing:
+    missing = [name if target.every_axis else target.name for name, value in readings.items() if value is None]
+    if missing:  # named as the report names the target: a variable as the program spells it
         return Outcome(expectation, False, "missing", f"no such thing in this run: {', '.join(missing)}")
     values = {name: value for name, value in readings.items() if value is not None}
     failing = [

@@ -120,9 +120,18 @@ def test_targets_are_asked_for_in_one_spelling() -> None:
         assert check(f"{written} = 1", run).held, written
 
 
-def test_a_missing_target_fails_and_says_so() -> None:
-    outcome = check("count = 3", FakeRun())
-    assert (outcome.held, outcome.actual, outcome.detail) == (False, "missing", "no such thing in this run: COUNT")
+@pytest.mark.parametrize(
+    ("written", "named"),
+    [
+        pytest.param("count = 3", "count", id="a variable, as the program spells it"),
+        pytest.param("myTable(9) = 3", "myTable(9)", id="an array element, as the program spells it"),
+        pytest.param("ps.40 = 3", "POS.40", id="a keyword, by its full name"),
+    ],
+)
+def test_a_missing_target_fails_and_says_so_naming_it_as_the_report_does(written: str, named: str) -> None:
+    """The report's line names the target as written (357772e); its detail named it in upper case too."""
+    outcome = check(written, FakeRun())
+    assert (outcome.held, outcome.actual, outcome.detail) == (False, "missing", f"no such thing in this run: {named}")
 
 
 def test_a_missing_axis_fails_the_every_axis_expectation() -> None:

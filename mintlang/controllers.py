@@ -176,3 +176,57 @@ PROFILES: dict[Controller, ControllerProfile] = {
 def profile(controller: Controller | str) -> ControllerProfile:
     """The profile of a controller given by enum or id (``"nextmove-bx"``)."""
     return PROFILES[Controller(controller)]
+
+
+_CARD_IO = {Controller.NEXTMOVE_PCI: (20, 12)}  # inputs and outputs of one card (000:7340-7342)
+
+
+@record
+class IOBanks:
+    """``count`` banks of ``inputs`` digital inputs, ``outputs`` digital outputs and one relay each."""
+
+    count: int
+    inputs: int
+    outputs: int
+
+    def input_word(self, bits: int, bank: int) -> int:
+        """The inputs of ``bank`` among ``bits`` (one bit per input of the controller), as bits from 0."""
+        return _word(bits, bank, self.inputs)
+
+    def with_input_word(self, bits: int, bank: int, word: int) -> int:
+        """``bits`` with the inputs of ``bank`` replaced by ``word``."""
+        return _with_word(bits, bank, self.inputs, word)
+
+    def output_word(self, bits: int, bank: int) -> int:
+        return _word(bits, bank, self.outputs)
+
+    def with_output_word(self, bits: int, bank: int, word: int) -> int:
+        return _with_word(bits, bank, self.outputs, word)
+
+    @property
+    def output_words(self) -> int:
+        """How many words a bank's outputs make, one bit an output: a card's word is below this (``OUT``'s
+        0 ≤ x < 4096 on a NextMove PCI, 000:14908-14913), as is ``MOVEOUT``'s pattern (MT-22)."""
+        return 1 << self.outputs
+
+
+def io_banks(profile: ControllerProfile) -> IOBanks:
+    """The banks of ``profile``'s controller: one a card where its I/O is whole cards' worth, else one; the
+    simulator and ``mint check`` (MintMT's ``MOVEOUT``) read the same."""
+    inputs, outputs = profile.digital_inputs.high + 1, profile.digital_outputs.high + 1
+    card = _CARD_IO.get(profile.controller)
+    if card is not None:  # not a Mint v3 controller simulated on this one's machine (dialects/v3/controllers.py)
+        cards = inputs // card[0]
+        if (cards * card[0], cards * card[1]) == (inputs, outputs):
+            return IOBanks(cards, *card)
+    return IOBanks(1, inputs, outputs)
+
+
+def _word(bits: int, bank: int, width: int) -> int:
+    return bits >> (bank * width) & ((1 << width) - 1)
+
+
+def _with_word(bits: int, bank: int, width: int, word: int) -> int:
+    shift = bank * width
+    mask = ((1 << width) - 1) << shift
+    return bits & ~mask | (word << shift) & mask

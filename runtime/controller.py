@@ -15,7 +15,7 @@ from dataclasses import field, replace
 from types import MappingProxyType
 from typing import TYPE_CHECKING
 
-from mintlang.controllers import ControllerProfile
+from mintlang.controllers import ControllerProfile, io_banks
 from mintlang.controllers import profile as profile_of
 from mintlang.dialect import Dialect
 from mintlang.records import record
@@ -29,7 +29,7 @@ from mintlang.runtime.inert import InertSettings
 from mintlang.runtime.interpreter.program import Linked, link
 from mintlang.runtime.interpreter.vm import Interpreter, StopReason
 from mintlang.runtime.io import DigitalIO
-from mintlang.runtime.io_banks import BankSelection, io_banks
+from mintlang.runtime.io_banks import BankSelection
 from mintlang.runtime.keywords import KeywordTable
 from mintlang.runtime.monitors import Monitor
 from mintlang.runtime.motion.axis import ER_ABORT, Axis
@@ -127,7 +127,7 @@ def build_controller(
         part.register(table)
     for extend in EXTENSIONS:
         extend(table, motion)
-    drive_enable.install(table, axes, io)
+    drive_enable.install(table, motion, io)
     global_error_output.install(table, motion, io)
     monitors = dialect_machine(Dialect.MINTMT).install(table, motion, io, events) if mintmt else []
     motion.input_active = io.is_active

@@ -11,64 +11,17 @@ card hold for every bank: IMASK's default is 1048575, the card's 20 inputs (000:
 
 from __future__ import annotations
 
-from mintlang.controllers import ControllerProfile
-from mintlang.keyworddb.model import Controller
-from mintlang.records import record
+from mintlang.controllers import IOBanks
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
 
 OUT_OF_RANGE = 3
-_CARD_IO = {Controller.NEXTMOVE_PCI: (20, 12)}  # inputs and outputs of one card (000:7340-7342)
-
-
-@record
-class IOBanks:
-    """``count`` banks of ``inputs`` digital inputs, ``outputs`` digital outputs and one relay each."""
-
-    count: int
-    inputs: int
-    outputs: int
-
-    def input_word(self, bits: int, bank: int) -> int:
-        """The inputs of ``bank`` among ``bits`` (one bit per input of the controller), as bits from 0."""
-        return _word(bits, bank, self.inputs)
-
-    def with_input_word(self, bits: int, bank: int, word: int) -> int:
-        """``bits`` with the inputs of ``bank`` replaced by ``word``."""
-        return _with_word(bits, bank, self.inputs, word)
-
-    def output_word(self, bits: int, bank: int) -> int:
-        return _word(bits, bank, self.outputs)
-
-    def with_output_word(self, bits: int, bank: int, word: int) -> int:
-        return _with_word(bits, bank, self.outputs, word)
-
-
-def io_banks(profile: ControllerProfile) -> IOBanks:
-    """The banks of the simulated controller: one a card where its I/O is whole cards' worth, else one."""
-    inputs, outputs = profile.digital_inputs.high + 1, profile.digital_outputs.high + 1
-    card = _CARD_IO.get(profile.controller)
-    if card is not None:  # not a Mint v3 controller simulated on this one's machine (dialects/v3/controllers.py)
-        cards = inputs // card[0]
-        if (cards * card[0], cards * card[1]) == (inputs, outputs):
-            return IOBanks(cards, *card)
-    return IOBanks(1, inputs, outputs)
 
 
 def with_bit(bits: int, number: int, on: bool) -> int:
     """``bits`` with bit ``number`` set when ``on``, cleared when not: one input, output or relay."""
     bit = 1 << number
     return bits | bit if on else bits & ~bit
-
-
-def _word(bits: int, bank: int, width: int) -> int:
-    return bits >> (bank * width) & ((1 << width) - 1)
-
-
-def _with_word(bits: int, bank: int, width: int, word: int) -> int:
-    shift = bank * width
-    mask = ((1 << width) - 1) << shift
-    return bits & ~mask | (word << shift) & mask
 
 
 class BankSelection:

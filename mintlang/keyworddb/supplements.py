@@ -71,9 +71,11 @@ def narrowed(keyword: str, printed: ValueRange | None) -> ValueRange | None:
     return NARROWED.get(keyword, printed) if printed is not None else None
 
 
-_MODES_WITHOUT_CONSTANTS = frozenset({"BANK"})
-"""Keywords whose values are modes though the guide names none with a constant: BANK's are the cards, in
-its table of values (000:7345-7348)."""
+_WHOLE_WITHOUT_CONSTANTS = frozenset({"BANK", "CAMSTART", "CAMEND", "MASTERCHANNEL", "FOLLOWDENOM"})
+"""Keywords whose values no fraction can mean though the guide names none with a constant: BANK's are the
+cards, in its table of values (000:7345-7348); CAMSTART's and CAMEND's a cam segment (000:7807-7810),
+MASTERCHANNEL's the master's channel (000:13779); FOLLOWDENOM is the denominator that keeps a follow ratio
+free of fractions (000:10802-10804). None of their ranges prints a decimal part."""
 
 
 @cache
@@ -84,7 +86,8 @@ def whole_only(keyword: str, dialect: Dialect = Dialect.V4) -> bool:
     (000:5647-5650). The guide does not keep to that for gains (its range 0 ≤ x ≤ 10000, KDERIV = 1.5 in
     its example: 000:12755), so it is held only where the values are modes, which a fraction cannot
     select: those the entry names with predefined constants (CONFIG's motor types, FOLLOWMODE's modes,
-    CAM's bits: 000:8431, 000:10846, 000:7595) and whose range prints no decimal part, and BANK's cards.
+    CAM's bits: 000:8431, 000:10846, 000:7595) and whose range prints no decimal part, and the numbers of
+    ``_WHOLE_WITHOUT_CONSTANTS`` (BANK's cards, a cam segment, a master channel, a follow denominator).
     MintMT's own keywords have rows written by hand from the decisions of ``mintlang/MINTMT.md`` (the notes
     print no tables), and there a range without a decimal part means what it says: a count of buffer places,
     of milliseconds, a mode (MT-10, MT-14, MT-16, MT-22).
@@ -93,12 +96,17 @@ def whole_only(keyword: str, dialect: Dialect = Dialect.V4) -> bool:
     if dialect is Dialect.MINTMT and keyword in db.mintmt_keywords:
         rows = db.mintmt_keywords[keyword].attributes
         return any(row.range is not None and not row.range.fractional for row in rows)
-    if keyword in _MODES_WITHOUT_CONSTANTS:
+    if keyword in _WHOLE_WITHOUT_CONSTANTS:
         return True
     record = db.keywords.get(keyword)
     if record is None or not record.constants:
         return False
     return not any(row.range is not None and row.range.fractional for row in record.attributes)
+
+
+INDEXED_AS: Mapping[tuple[str, int], str] = MappingProxyType({("CONTOURPARAMETER", 0): "CONTOURANGLE"})
+"""The v4 keyword a MintMT keyword writes at an index, whose row then ranges the value: the note names
+CONTOURPARAMETER's index 0 alone, the inter-vector angle v4 calls CONTOURANGLE (004:223, 232; MT-11)."""
 
 
 POSITIVE_ONLY = frozenset({"SCALE", "ENCODERSCALE"})

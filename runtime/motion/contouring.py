@@ -8,26 +8,21 @@ segments join (CONTOURANGLE, global and not buffered).
 
 from __future__ import annotations
 
-from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.commands import Motion
-from mintlang.runtime.ranges import OUT_OF_RANGE, check_range, table_bounds
-
-MAX_ANGLE = 180.0
+from mintlang.runtime.ranges import ranged
 
 
 def register(table: KeywordTable, motion: Motion) -> None:
-    modes = table_bounds("CONTOURMODE", motion.profile.controller)
+    def write_mode(number: int, value: float) -> None:
+        motion.axis(number).contour_mode = int(value)
 
-    def write_mode(channel: int | None, value: float) -> None:
-        axis = motion.axis(channel)
-        axis.contour_mode = int(check_range("CONTOURMODE", value, modes, axis.number))
+    def write_angle(number: int, value: float) -> None:
+        motion.axis(number).contour_angle = value
 
-    def write_angle(channel: int | None, value: float) -> None:
-        axis = motion.axis(channel)
-        if not 0.0 <= value <= MAX_ANGLE:
-            raise MintError(OUT_OF_RANGE, axis.number, "CONTOURANGLE is 0 to 180 degrees")
-        axis.contour_angle = value
+    controller = motion.profile.controller
+    mode = ranged("CONTOURMODE", controller, write_mode, channel=motion.axis_number)  # 0, 1 or 3 (NARROWED)
+    angle = ranged("CONTOURANGLE", controller, write_angle, channel=motion.axis_number)  # 0 to 180 degrees
 
-    table.register("CONTOURMODE", read=lambda ch: float(motion.axis(ch).contour_mode), write=per_channel(write_mode))
-    table.register("CONTOURANGLE", read=lambda ch: motion.axis(ch).contour_angle, write=per_channel(write_angle))
+    table.register("CONTOURMODE", read=lambda ch: float(motion.axis(ch).contour_mode), write=per_channel(mode))
+    table.register("CONTOURANGLE", read=lambda ch: motion.axis(ch).contour_angle, write=per_channel(angle))

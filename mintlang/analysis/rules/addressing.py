@@ -21,7 +21,7 @@ from operator import attrgetter
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import Facts, KeywordUse, LineScope, Use
-from mintlang.controllers import ChannelRange, ControllerProfile
+from mintlang.controllers import ChannelRange, ControllerProfile, io_banks
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
@@ -305,8 +305,9 @@ def _written(use: KeywordUse) -> tuple[n.Expression | None, ...] | None:
 def _indices(use: KeywordUse, keyword: Keyword, scope: LineScope) -> Iterator[Finding]:
     """MintMT's items after the axes (``MOVEOUT(axis, bank)``, ``CONTOURPARAMETER(axes, index)``, 004:232, 295):
     one left out is 2001, as in ``MOVEOUT(0) = 7``, which would otherwise read as a bank-less write to axis 0;
-    an output move names one axis (its format's ``axis``), so a second one is 2017, and an output channel
-    the controller lacks (``MOVEOUTX(0, 99)``) is 8, as the run says when the line loads it (MT-22)."""
+    an output move names one axis (its format's ``axis``), so a second one is 2017, an output channel
+    the controller lacks (``MOVEOUTX(0, 99)``) is 8 and a bank it lacks (``MOVEOUT(0, 3)``) 3, as the run says
+    when the line loads it (MT-22): its banks are ``io_banks``', the run's."""
     selector = use.keyword.selector
     if not keyword.indices or selector is None:
         return
@@ -325,6 +326,14 @@ def _indices(use: KeywordUse, keyword: Keyword, scope: LineScope) -> Iterator[Fi
             available = _held(outputs)
             detail = f"{keyword.name} channel {number} does not exist on {scope.controller.title} ({available})"
             yield Finding(use.unit, mint_error(8, item.span, detail))
+    if keyword.indices[-1] == "bank" and selector.indices == len(keyword.indices):
+        item = selector.items[-1]
+        number = constant_integer(item, scope.dialect)
+        banks = ChannelRange(0, io_banks(scope.controller).count - 1)  # one a card
+        if item is not None and number is not None and number not in banks:
+            available = _held(banks, "bank", "banks")
+            detail = f"{keyword.name} bank {number} does not exist on {scope.controller.title} ({available})"
+            yield Finding(use.unit, mint_error(3, item.span, detail))
 
 
 def values_for_axes(use: KeywordUse, axes: int) -> Iterator[Finding]:

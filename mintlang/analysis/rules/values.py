@@ -11,10 +11,12 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.traversal import LineScope, Use
+from mintlang.analysis.traversal import KeywordUse, LineScope, Use
+from mintlang.controllers import io_banks
+from mintlang.dialect import Dialect
 from mintlang.keyworddb import database, supplements
-from mintlang.keyworddb.model import ValueRange
-from mintlang.semantic.constants import constant_value, held_value
+from mintlang.keyworddb.model import Keyword, ValueRange
+from mintlang.semantic.constants import constant_integer, constant_value, held_value
 from mintlang.syntax import nodes as n
 
 
@@ -24,17 +26,22 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
     for use in scope.facts.keyword_uses:
         if use.use is not Use.WRITE or not isinstance(use.statement, n.KeywordStatement):
             continue
-        keyword = db.keywords_of(dialect).get(use.keyword.keyword)
-        if use.keyword.keyword in supplements.ANY_VALUE:
+        written = db.keywords_of(dialect).get(use.keyword.keyword)
+        if written is not None and written.indices and written.indices[-1] == "bank":
+            yield from _output_word(use, scope)
+            continue
+        name, label = _ranged_as(use.keyword, written, dialect)
+        keyword = db.keywords_of(dialect).get(name)
+        if name in supplements.ANY_VALUE:
             continue
         # SRAMP's and FOLERRORMODE's too, which print none: the ranges mint-run takes
         attributes = supplements.attributes_for(keyword, controller, dialect) if keyword else None
         # a scale factor is positive whatever its table prints, or where it prints none (ServoNode 51's SCALE)
-        positive = use.keyword.keyword in supplements.POSITIVE_ONLY
-        limits = supplements.narrowed(use.keyword.keyword, attributes.range if attributes is not None else None)
+        positive = name in supplements.POSITIVE_ONLY
+        limits = supplements.narrowed(name, attributes.range if attributes is not None else None)
         if limits is not None and limits.allowed is None and limits.minimum is None and limits.maximum is None:
             limits = None  # TRIGGERMODE's "whole numbers": the whole test below is all there is
-        whole = supplements.whole_only(use.keyword.keyword, dialect)
+        whole = supplements.whole_only(name, dialect)
         if limits is None and not (positive or whole):
             continue
         scaled = attributes is not None and attributes.scaled
@@ -46,15 +53,38 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             # KDERIV and then writes KDERIV = 1.5 in its example (supplements.whole_only).
             held = held_value(value, dialect) if whole else None
             if held is not None and not held.is_integer():
-                detail = f"{held:.7g} is not a whole number: {use.keyword.keyword} takes whole numbers only"
+                detail = f"{held:.7g} is not a whole number: {label} takes whole numbers only"
                 yield Finding(use.unit, mint_error(3, value.span, detail))
             elif positive and number <= 0:
-                yield Finding(use.unit, mint_error(3, value.span, f"{use.keyword.keyword} takes only a positive value"))
+                yield Finding(use.unit, mint_error(3, value.span, f"{label} takes only a positive value"))
             elif limits is not None and not (_scaled_can_hold(limits, number) if scaled else limits.holds(number)):
-                detail = f"{number:.15g} is outside the range of {use.keyword.keyword} ({limits.text})"
+                detail = f"{number:.15g} is outside the range of {label} ({limits.text})"
                 if scaled:
                     detail += " whatever the scale factor"
                 yield Finding(use.unit, mint_error(3, value.span, detail))
+
+
+def _ranged_as(ref: n.KeywordRef, keyword: Keyword | None, dialect: Dialect) -> tuple[str, str]:
+    """The keyword whose range a write is held to, and how a message names it: its own, or for a MintMT keyword
+    whose index writes a v4 one (``CONTOURPARAMETER([0,1],0)``, CONTOURANGLE: ``supplements.INDEXED_AS``)
+    that one's, as the run does."""
+    selector = ref.selector
+    if keyword is None or not keyword.indices or selector is None or selector.indices != len(keyword.indices):
+        return ref.keyword, ref.keyword
+    index = constant_integer(selector.items[-1], dialect)
+    found = supplements.INDEXED_AS.get((ref.keyword, index)) if index is not None else None
+    return (found, f"{ref.keyword} index {index}, as {found}") if found is not None else (ref.keyword, ref.keyword)
+
+
+def _output_word(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
+    """A bank's outputs written at once (MintMT's ``MOVEOUT(axis, bank) = pattern``): a whole number, one bit an
+    output of the bank, below ``IOBanks.output_words`` as the run holds it (MT-22); else error 3."""
+    words = io_banks(scope.controller).output_words
+    for value in use.statement.values or ():  # type: ignore[union-attr]
+        number = constant_value(value, scope.dialect)
+        if value is not None and number is not None and not (number.is_integer() and 0 <= number < words):
+            detail = f"{number:.15g}: {use.keyword.keyword} takes a pattern of 0 to {words - 1}, one bit an output"
+            yield Finding(use.unit, mint_error(3, value.span, detail))
 
 
 def _scaled_can_hold(limits: ValueRange, value: float) -> bool:

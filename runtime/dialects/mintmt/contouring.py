@@ -7,20 +7,17 @@ writes that. Any other index is not simulated (mintlang/MINTMT.md).
 
 from __future__ import annotations
 
+from mintlang.keyworddb.supplements import INDEXED_AS
 from mintlang.runtime.errors import NotSimulated
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
 
-INTER_VECTOR_ANGLE = 0
-
 
 def install(table: KeywordTable) -> None:
-    angle = table.get("CONTOURANGLE")
-    assert angle is not None and angle.write is not None, "v4's contouring registers CONTOURANGLE"
-    write_angle = angle.write
-
     def write(channels: Channels | None, indices: tuple[int, ...], values: Values) -> bool:
-        if indices != (INTER_VECTOR_ANGLE,):
+        written = INDEXED_AS.get(("CONTOURPARAMETER", *indices))  # type: ignore[arg-type]
+        access = table.get(written) if written is not None else None
+        if access is None or access.write is None:
             raise NotSimulated("CONTOURPARAMETER", f"index {', '.join(map(str, indices))}")
-        return write_angle(channels, values)
+        return access.write(channels, values)  # v4's writer, its table's range (mint check reads it too)
 
     table.register("CONTOURPARAMETER", indexed_write=write)

@@ -67,9 +67,8 @@ class OutputMoves:
         banks = self.io.banks.banks
         if not 0 <= bank < banks.count:
             raise MintError(OUT_OF_RANGE, detail=f"MOVEOUT's bank is 0 to {banks.count - 1}, one per card")
-        limit = 1 << banks.outputs
-        if pattern != int(pattern) or not 0 <= pattern < limit:
-            raise MintError(OUT_OF_RANGE, detail=f"MOVEOUT takes a pattern of 0 to {limit - 1}")
+        if pattern != int(pattern) or not 0 <= pattern < banks.output_words:
+            raise MintError(OUT_OF_RANGE, detail=f"MOVEOUT takes a pattern of 0 to {banks.output_words - 1}")
         return lambda: self._set_bank(bank, int(pattern))
 
     def _channel(self, channel: int, state: float) -> Callable[[], None]:

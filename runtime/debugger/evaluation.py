@@ -13,7 +13,10 @@ from __future__ import annotations
 import math
 import struct
 
+from mintlang.analysis.rules.addressing import misaddressed
+from mintlang.codes import mint_error
 from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
 from mintlang.records import record
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.dialects import semantics
@@ -71,9 +74,15 @@ class ExpressionReader:
             raise EvaluationError(f"{text!r} is not one expression")
         if type(item.value) is n.StringLiteral:
             raise EvaluationError("a string is not a value the debugger can show: Mint's values are numbers")
+        keywords = database().keywords_of(self.dialect)
         for node in n.walk_expression(item.value):
             if type(node) is n.VariableRef and node.name.identity not in self.scalars:  # type: ignore[union-attr]
                 raise EvaluationError(f"{node.name.text} is not a variable of the program")  # type: ignore[union-attr]
+            keyword = keywords.get(node.keyword) if type(node) is n.KeywordRef else None  # type: ignore[union-attr]
+            found = misaddressed(node, keyword, self.dialect) if keyword is not None else None  # type: ignore[arg-type]
+            if found is not None:  # TIME.2: refused, as the compiler refuses it in a line (mint check's 2003)
+                span, detail = found
+                raise EvaluationError(f"column {span.start - len(_HOST) + 1}: {mint_error(2003, span, detail).message}")
         return item.value  # type: ignore[return-value]
 
 

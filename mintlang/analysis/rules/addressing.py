@@ -193,58 +193,60 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
         elif keyword.name in CIRCLES:
             yield from _circle_values(use, keyword.name)
         return
+    found = misaddressed(use.keyword, keyword, scope.dialect)
+    if found is not None:
+        yield Finding(use.unit, mint_error(2003, *found))
     if keyword.name.startswith("REMOTE"):
         yield from _can_address(use)
-    elif keyword.name in ("COMMSMODE", "SERIALBAUD"):
-        yield from _one_number_after_the_dot(use, "channel")
+    elif keyword.name in _TERMINAL_KEYWORDS:
         yield from _terminal(use, scope)
     elif keyword.addressing is Addressing.AXIS:
-        yield from _one_number_after_the_dot(use, "axis")
         yield from _axes(use, scope, keyword.name)
         yield from _indices(use, keyword, scope)
     elif keyword.addressing is Addressing.CHANNEL or _channel_family(keyword.name):
-        yield from _one_number_after_the_dot(use, "channel")
         yield from _channel(use, scope)
-    elif scope.dialect.modern and keyword.documented and keyword.formats:
-        yield from _nothing_addressed(use, keyword)
 
 
 _ADDRESSED_KINDS = frozenset({KeywordKind.PARAMETER, KeywordKind.COMMAND})
+_TERMINAL_KEYWORDS = frozenset({"COMMSMODE", "SERIALBAUD"})
 
 
-def _one_number_after_the_dot(use: KeywordUse, addressed: str) -> Iterator[Finding]:
-    """A dot names one axis or channel (000:678-679); several axes are listed in brackets (000:563-566), and a
+def misaddressed(ref: n.KeywordRef, keyword: Keyword, dialect: Dialect) -> tuple[Span, str] | None:
+    """Where and why ``ref`` addresses ``keyword`` as none of its formats do, a syntax error (2003) the compiler
+    stops the program on, and the debugger an expression typed at it (``TIME.2`` evaluates nothing).
+
+    A dot names one axis or channel (000:678-679); several axes are listed in brackets (000:563-566), and a
     channel keyword addresses one channel a call (000:548-549). A second number after the dot (``POS.1.5``), or
-    a dot after a channel glued to its keyword (``OUT1.2``), is an addressing no format shows: 2003, as
-    ``TIME.5`` is. Only the CAN keywords chain two, a bus and a node (``REMOTEIN.2.65``, 000:18607)."""
-    ref = use.keyword
+    a dot after a channel glued to its keyword (``OUT1.2``), is an addressing no format shows, as ``TIME.5`` is:
+    an axis or channel number on a keyword whose formats take none. The guide names no error for that; it
+    writes such a keyword only as its formats show it (``v = TIME``, 000:16737-16738), and an addressing its
+    formats do not show is invalid as ``ADC[1]`` is (000:702-708). Only the CAN keywords chain two numbers, a
+    bus and a node (``REMOTEIN.2.65``, 000:18607)."""
+    if (ref.selector is None and ref.channel is None) or keyword.name.startswith("REMOTE"):
+        return None
+    if keyword.name in _TERMINAL_KEYWORDS or keyword.addressing is Addressing.CHANNEL or _channel_family(keyword.name):
+        return _one_number_after_the_dot(ref, "channel")
+    if keyword.addressing is Addressing.AXIS:
+        return _one_number_after_the_dot(ref, "axis")
+    if dialect.modern and keyword.documented and keyword.formats and keyword.kind in _ADDRESSED_KINDS:
+        span = ref.selector.span if ref.selector is not None else ref.spelling_span
+        shown = " or ".join(f"'{layout}'" for layout in keyword.formats)
+        return span, f"{keyword.name} takes no axis or channel number: {shown}"
+    return None
+
+
+def _one_number_after_the_dot(ref: n.KeywordRef, addressed: str) -> tuple[Span, str] | None:
     selector = ref.selector
     if selector is None or not selector.dot or not selector.items:
-        return
+        return None
     if ref.channel is not None:
-        span, detail = selector.span, f"{ref.spelling} already names channel {ref.channel}: no dot after it"
-    elif len(selector.items) > 1 and (first := selector.items[0]) is not None:
-        span = Span(first.span.end, selector.span.end)
+        return selector.span, f"{ref.spelling} already names channel {ref.channel}: no dot after it"
+    if len(selector.items) > 1 and (first := selector.items[0]) is not None:
         detail = f"{ref.keyword} takes one {addressed} number after its dot"
         if addressed == "axis":
             detail += " (several axes are listed in brackets)"
-    else:
-        return
-    yield Finding(use.unit, mint_error(2003, span, detail))
-
-
-def _nothing_addressed(use: KeywordUse, keyword: Keyword) -> Iterator[Finding]:
-    """An axis or channel number on a keyword whose formats take none (``TIME.5``, ``a = TIME.2``) is 2003.
-
-    The guide names no error for it; it writes such a keyword only as its formats show it (``v = TIME``,
-    000:16737-16738), and an addressing its formats do not show is invalid as ``ADC[1]`` is (000:702-708),
-    which is a syntax error here too: the compiler stops the program before it runs."""
-    if keyword.kind not in _ADDRESSED_KINDS:
-        return
-    ref = use.keyword
-    span = ref.selector.span if ref.selector is not None else ref.spelling_span
-    shown = " or ".join(f"'{layout}'" for layout in keyword.formats)
-    yield Finding(use.unit, mint_error(2003, span, f"{keyword.name} takes no axis or channel number: {shown}"))
+        return Span(first.span.end, selector.span.end), detail
+    return None
 
 
 def _function_axis(call: n.Call, scope: LineScope) -> Iterator[Finding]:

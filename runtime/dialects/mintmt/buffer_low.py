@@ -27,9 +27,8 @@ class BufferLowEvent:
         self._free_before: dict[int, int] = {}
 
     def register(self, table: KeywordTable) -> None:
-        write = ranged(
-            "MOVEBUFFERLOW", table.controller, self._write, table.dialect, channel=self.motion.axis_number
-        )  # MT-14: whole, 0 or more
+        # MT-14: whole, 0 or more
+        write = ranged("MOVEBUFFERLOW", table.controller, self._write, table.dialect, channel=self.motion.axis_number)
         table.register("MOVEBUFFERLOW", read=self._read, write=per_channel(write))
 
     def _read(self, channel: int | None) -> float:

@@ -46,7 +46,6 @@ def install(table: KeywordTable, motion: Motion) -> None:
         motion.rates_changed(axis)
 
     table.register("FEEDRATEMODE", read=read_mode, write=per_channel(write_mode))
-    override = ranged(
-        "FEEDRATEOVERRIDE", table.controller, write_override, table.dialect, channel=motion.axis_number
-    )  # MT-15: above 0
+    # MT-15: above 0
+    override = ranged("FEEDRATEOVERRIDE", table.controller, write_override, table.dialect, channel=motion.axis_number)
     table.register("FEEDRATEOVERRIDE", read=read_override, write=per_channel(override))

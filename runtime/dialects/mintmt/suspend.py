@@ -42,9 +42,8 @@ class Suspension:
         self.paused: list[_Paused] = []
 
     def register(self, table: KeywordTable) -> None:
-        write = ranged(
-            "SUSPEND", table.controller, self._write, table.dialect, channel=self.motion.axis_number
-        )  # MT-16: whole, 0 or more
+        # MT-16: whole, 0 or more
+        write = ranged("SUSPEND", table.controller, self._write, table.dialect, channel=self.motion.axis_number)
         table.register("SUSPEND", read=self._read, write=per_channel(write))
 
     def _read(self, channel: int | None) -> float:

@@ -8,43 +8,47 @@ Assigning an output changes nothing by itself; the next change of the drive driv
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.io import RELAY0, DigitalIO
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer
 from mintlang.runtime.motion.axis import Axis
+from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.ranges import shown
 
 NO_OUTPUT = -1  # the drive's internal state alone (000:2703-2704)
 OUT_OF_RANGE = 3
 
 
-def install(table: KeywordTable, axes: Sequence[Axis], io: DigitalIO) -> None:
+def install(table: KeywordTable, motion: Motion, io: DigitalIO) -> None:
     """Each axis drives its assigned output; ``DRIVEENABLEOUTPUT`` accepts only what the controller has."""
 
     def assigned() -> frozenset[int]:
-        return frozenset(int(axis.parameters["DRIVEENABLEOUTPUT"]) for axis in axes) - {NO_OUTPUT}
+        return frozenset(int(axis.parameters["DRIVEENABLEOUTPUT"]) for axis in motion.axes) - {NO_OUTPUT}
 
     io.drive_enable_outputs = assigned
-    for axis in axes:
+    for axis in motion.axes:
         axis.drive_signal = _signal(axis, io)
     access = table.get("DRIVEENABLEOUTPUT")
     if access is not None and access.write is not None:
-        table.replace("DRIVEENABLEOUTPUT", write=_checked(access.write, io))
+        table.replace("DRIVEENABLEOUTPUT", write=_checked(access.write, io, motion.axis_number))
 
 
 def _signal(axis: Axis, io: DigitalIO) -> Callable[[bool], None]:
     return lambda enabled: io.drive_enable(int(axis.parameters["DRIVEENABLEOUTPUT"]), enabled)
 
 
-def _checked(write: Writer, io: DigitalIO) -> Writer:
-    """``write`` for values that each name an output (``check_output``), all checked before any is written."""
+def _checked(write: Writer, io: DigitalIO, axis_number: Callable[[int | None], int]) -> Writer:
+    """``write`` for values that each name an output (``check_output``), all checked before any is written; an
+    axis the controller lacks (error 2) before its value, as ``mint check`` reports them (``ranges.ranged``)."""
 
     def checked(channels: Channels | None, values: Values) -> bool:
         for place, value in enumerate(values):
             channel = channels[place] if channels is not None and place < len(channels) else None
             if value is not None:
+                if channel is not None:
+                    axis_number(channel)
                 check_output("DRIVEENABLEOUTPUT", value, io, channel)
         return write(channels, values)
 

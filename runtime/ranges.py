@@ -122,8 +122,9 @@ def shown(value: float) -> str:
 
 def accepted(limits: Bounds) -> str:
     """What ``limits`` accept, in words: ``2 to 16777215``, ``more than 0``, ``0, 1, 2, 3 or 5``, ``whole numbers:
-    0 to 5``."""
-    if limits.whole and limits.allowed is None:
+    0 to 5``; a range of one value is that value (MASTERCHANNEL on MintDrive: ``0``)."""
+    one_value = limits.minimum is not None and limits.minimum == limits.maximum
+    if limits.whole and limits.allowed is None and not one_value:
         bounded = accepted(replace(limits, whole=False))
         return f"whole numbers: {bounded}" if bounded else "whole numbers"
     if limits.allowed is not None:

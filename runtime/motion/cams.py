@@ -21,13 +21,12 @@ from mintlang.runtime.motion.axis import MD_CAM, MOTION_IN_PROGRESS, Axis, Reque
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.master import Link, SetPoints, link, master_distance
 from mintlang.runtime.motion.moves import Move
-from mintlang.runtime.ranges import OUT_OF_RANGE, check_range, table_bounds
+from mintlang.runtime.ranges import check_range, table_bounds
 
 ABSOLUTE, TRUE_ABSOLUTE, CONTINUOUS, NO_INTERPOLATION, TRIGGER, RETRIGGER = 1, 2, 4, 8, 16, 32
 TABLE_ERROR = 13
 ER_SLAVE_SYNC = 2048  # AXISERROR bit 11: asynchronous slave synchronisation error (FG-14)
 MAX_SKIPPED = 5  # segments that may pass within one profiler tick (FG-14)
-MAX_SEGMENT = 65535
 
 
 @record(frozen=False)
@@ -248,10 +247,12 @@ def register(table: KeywordTable, motion: Motion) -> None:
         axis.pending_mode = MD_CAM
 
     def segment_writer(end: bool) -> Callable[[int | None, float], None]:
+        keyword = "CAMEND" if end else "CAMSTART"
+        segments = table_bounds(keyword, table.controller)  # whole segment numbers (supplements.whole_only)
+
         def write(channel: int | None, value: float) -> None:
             axis = motion.axis(channel)
-            if value != int(value) or not 1 <= value <= MAX_SEGMENT:
-                raise MintError(OUT_OF_RANGE, axis.number, f"{'CAMEND' if end else 'CAMSTART'} = {value:g}")
+            check_range(keyword, value, segments, axis.number)
             if end:
                 state[axis.number].end = int(value)
             else:

@@ -26,7 +26,6 @@ from mintlang.runtime.ranges import OUT_OF_RANGE, check_range, table_bounds
 NO_RAMP, RAMP, CLUTCH, CONTINUOUS_CLUTCH = 0, 1, 2, 3
 TICK_S = PROFILER_TICK_MS / 1000.0
 RATIO_MIN, RATIO_MAX = -128.0, 127.0
-DENOM_MAX = 128.0
 
 
 def approach(velocity: float, target: float, up: float, down: float) -> float:
@@ -191,10 +190,11 @@ def register(table: KeywordTable, motion: Motion) -> None:
             takes_fly=mode == CONTINUOUS_CLUTCH,
         )
 
+    denominators = table_bounds("FOLLOWDENOM", table.controller)  # whole numbers 1 to 128 (000:10798)
+
     def denominator(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)
-        if value != int(value) or not 1.0 <= value <= DENOM_MAX:
-            raise MintError(OUT_OF_RANGE, axis.number, f"FOLLOWDENOM = {value:g}")
+        check_range("FOLLOWDENOM", value, denominators, axis.number)
         state[axis.number].denominator = value  # used by the next FOLLOW (FG-3)
 
     modes = table_bounds("FOLLOWMODE", table.controller)  # its four modes: whole numbers 0 to 3 (000:10846)

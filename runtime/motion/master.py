@@ -216,8 +216,6 @@ def register(table: KeywordTable, motion: Motion) -> None:
     def write_channel(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)
         check_range("MASTERCHANNEL", value, channels, axis.number)
-        if value != int(value):
-            raise MintError(OUT_OF_RANGE, axis.number, f"MASTERCHANNEL = {value:g}")
         motion.axis(int(value))
         settings(motion, axis).channel = int(value)
 

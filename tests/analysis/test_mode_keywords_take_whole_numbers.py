@@ -7,12 +7,18 @@ cards or bits (000:7345, 000:7595, 000:8431, 000:10846). A value "outside of the
 values" is #3, "Data specified out of range" (000:18518-18521). A gain is no mode: KDERIV's range
 prints no decimal part either, yet its entry writes KDERIV = 1.5 (000:12755), so it is not held to
 whole numbers. Columns are those of the value, counted by hand from 1.
+
+A number that names one thing is held the same way where its range prints no decimal part: CAMSTART and
+CAMEND name a cam segment (000:7807-7810, ranges 1 ≤ x ≤ 65535: 000:7778, 7889), MASTERCHANNEL the channel
+of the master (000:13779, 0 ≤ x ≤ 11: 000:13799), and FOLLOWDENOM is the denominator that keeps a follow ratio
+free of fractions (000:10802-10804, 1 ≤ x ≤ 128: 000:10798).
 """
 
 from __future__ import annotations
 
 import pytest
 
+import mintlang
 from mintlang.runtime.interpreter.vm import StopReason
 from tests.analysis.placed import placed_codes
 from tests.runtime.running import simulate
@@ -45,3 +51,22 @@ def test_mint_check_reports_error_3_at_the_fraction_and_mint_run_stops_on_it(sou
 def test_whole_modes_and_fractional_gains_pass_both_tools(source: str) -> None:
     assert placed_codes(source) == []
     assert simulate(source, controller="nextmove-pci").stop.reason is StopReason.END
+
+
+@pytest.mark.parametrize(
+    ("source", "controller", "column"),
+    [
+        pytest.param("CAMSTART.0 = 1.5\n", "nextmove-pci", 14, id="CAMSTART"),
+        pytest.param("CAMEND.0 = 2.5\n", "nextmove-pci", 12, id="CAMEND"),
+        pytest.param("MASTERCHANNEL.1 = 0.5\n", "nextmove-pci", 19, id="MASTERCHANNEL"),
+        pytest.param("FOLLOWDENOM.0 = 1.5\n", "mintdrive", 17, id="FOLLOWDENOM"),
+    ],
+)
+def test_a_fraction_naming_a_segment_channel_or_denominator_is_error_3_in_both_tools(
+    source: str, controller: str, column: int
+) -> None:
+    index = mintlang.LineIndex(source)
+    found = [(d.code, index.position(d.span.start).column) for d in mintlang.check(source, controller=controller)]
+    assert found == [("E0003", column)]
+    result = simulate(source, controller=controller)
+    assert (result.stop.reason, result.err, result.erl) == (StopReason.ERROR, 3, 1)

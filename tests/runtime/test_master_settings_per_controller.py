@@ -16,12 +16,13 @@ def test_the_master_source_at_power_up_is_the_controllers_default(controller: st
 
 
 @pytest.mark.parametrize(
-    ("controller", "channel", "accepted"), [("mintdrive", 1, "0"), ("nextmove-pci", 12, "0 to 11")]
+    ("controller", "channel", "accepted"), [("mintdrive", 1, "0"), ("nextmove-pci", 12, "whole numbers: 0 to 11")]
 )
 def test_a_master_channel_outside_the_controllers_range_is_error_3(
     controller: str, channel: int, accepted: str
 ) -> None:
-    # 000:13799-13803: NextMove takes channels 0 to 11, MintDrive and ServoNode 51 channel 0 alone
+    # 000:13799-13803: NextMove takes channels 0 to 11, MintDrive and ServoNode 51 channel 0 alone; a channel
+    # is a whole number (supplements.whole_only)
     result = simulate(f"MASTERCHANNEL.0 = {channel}\n", controller=controller)
     assert (result.err, result.erl) == (3, 1)
     assert result.stop.message.endswith(f"(MASTERCHANNEL = {channel}; it takes {accepted}) [line 1]")

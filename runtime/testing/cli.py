@@ -49,9 +49,7 @@ from mintlang.runtime.dialects import SIMULATED
 @click.option(
     "--lcov",
     type=click.Path(dir_okay=False, path_type=Path),
-    default=Path("lcov.info"),
-    show_default=True,
-    help="Where --coverage writes its lcov tracefile.",
+    help="Where --coverage writes its lcov tracefile.  [default: lcov.info]",
 )
 @jobs_option("Tests run at once, on as many processes.  [default: 0, every core]")
 @click.option("--collect-only", is_flag=True, help="List the tests found (text or json) and run none.")

@@ -39,7 +39,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     max_wall_s: float,
     drives: str | None,
     coverage: bool,
-    lcov: Path,
+    lcov: Path | None,
     jobs: int | None,
     collect_only: bool,
     output_format: str,
@@ -53,6 +53,9 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     refuse_quiet_and_verbose(quiet, verbose)
     if collect_only and output_format == "junit":
         raise click.UsageError("--collect-only lists the tests as text or json, not junit")
+    if lcov is not None and not coverage:  # else the run ends with no tracefile and no word of why
+        raise click.UsageError(f"--lcov {lcov} names the tracefile --coverage writes: add --coverage")
+    tracefile_path = lcov or Path("lcov.info")
     cases, unreadable = discover(paths or (Path(),))
     errors = console(color, stderr=True)
     for problem in unreadable:
@@ -66,7 +69,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         sys.exit(USAGE if unreadable else PASSED)
     enabled = drives == "enabled"
     inputs = [path for case in cases for path in (case.program, case.scenario) if path is not None]
-    for output in (output_file, lcov if coverage else None):
+    for output in (output_file, tracefile_path if coverage else None):
         refuse_overwriting(output, inputs, _fail)
         _writable(output)
     options = Options(controller, Dialect(dialect) if dialect else None, until_ms, max_wall_s, enabled, coverage)
@@ -88,7 +91,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
             shown = console(color if output_file is None else "never", file=stream)
             reports.text(results, seconds, shown, quiet=quiet, verbose=verbose)
     if coverage:
-        _coverage(results, lcov, None if quiet else console(color, stderr=output_format != "text"))
+        _coverage(results, tracefile_path, None if quiet else console(color, stderr=output_format != "text"))
     if not quiet:
         for note in reports.warnings(results):
             errors.print(f"warning: {note}", style="yellow", markup=False, highlight=False)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner
 
 from mintlang.cli import main
@@ -135,3 +136,26 @@ def test_an_else_line_counts_its_branch_and_the_endif_counts_every_branch_that_e
         *("DA:2,1", "DA:3,1", "DA:4,1", "DA:5,2", "DA:6,1", "DA:7,1", "DA:8,1", "DA:9,2", "DA:10,2"),
         *("DA:11,1", "DA:12,1", "DA:13,0", "DA:14,0", "DA:15,1", "DA:16,1", "LF:15", "LH:13"),
     ]
+
+
+def test_lcov_without_coverage_is_a_usage_error_before_any_test_runs(tmp_path: Path) -> None:
+    """--lcov only says where --coverage writes: alone, the run ended with no tracefile and no word of why."""
+    program = tmp_path / "cell.mnt"
+    program.write_text(PROGRAM, encoding="utf-8")
+    tracefile = tmp_path / "cov.info"
+    result = CliRunner().invoke(main, ["test", str(program), "--lcov", str(tracefile), "-j", "1"])
+    assert result.exit_code == 2
+    assert f"--lcov {tracefile} names the tracefile --coverage writes: add --coverage" in result.output
+    assert "PASSED" not in result.output
+    assert not tracefile.exists()
+
+
+def test_coverage_without_lcov_writes_lcov_info_in_the_working_folder(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    program = tmp_path / "cell.mnt"
+    program.write_text(PROGRAM, encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(main, ["test", str(program), "--coverage", "-j", "1"])
+    assert result.exit_code == 0, result.output
+    assert (tmp_path / "lcov.info").read_text(encoding="utf-8").startswith("TN:\nSF:")

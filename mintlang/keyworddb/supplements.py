@@ -14,6 +14,7 @@ from collections.abc import Mapping
 from functools import cache
 from types import MappingProxyType
 
+from mintlang.controllers import io_banks, profile
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Attributes, Controller, Keyword, ValueRange
@@ -107,6 +108,21 @@ def whole_only(keyword: str, dialect: Dialect = Dialect.V4) -> bool:
 INDEXED_AS: Mapping[tuple[str, int], str] = MappingProxyType({("CONTOURPARAMETER", 0): "CONTOURANGLE"})
 """The v4 keyword a MintMT keyword writes at an index, whose row then ranges the value: the note names
 CONTOURPARAMETER's index 0 alone, the inter-vector angle v4 calls CONTOURANGLE (004:223, 232; MT-11)."""
+
+
+INPUT_PATTERNS = frozenset({"INPUTMODE", "INPUTACTIVELEVEL", "INPUTPOSTRIGGER", "INPUTNEGTRIGGER"})
+"""Bitmaps of the digital inputs, one bit an input (000:12315-12316, 12293): each row of their tables prints the
+pattern of all the controller's inputs (NextMove PCI's 20 are 0 ≤ x ≤ 1048575: 000:11928, 12336)."""
+
+
+def input_pattern_range(keyword: str, controller: Controller) -> ValueRange | None:
+    """The range of an ``INPUT_PATTERNS`` keyword on a controller whose row prints none (ServoNode 51): the
+    pattern of a bank of its inputs, as the printed rows are, from the banks ``mint-run`` holds the writes to
+    (``controllers.io_banks``: 6 inputs, 0 to 63, 000:11932)."""
+    if keyword not in INPUT_PATTERNS:
+        return None
+    top = (1 << io_banks(profile(controller)).inputs) - 1
+    return ValueRange(f"0 ≤ x ≤ {top}", 0.0, float(top), fractional=False)
 
 
 POSITIVE_ONLY = frozenset({"SCALE", "ENCODERSCALE"})

@@ -100,7 +100,7 @@ def run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> di
     A pass that changed nothing leaves its context valid: the next phase starts from it
     instead of parsing the same text again. The tags of the lines last read are kept for the
     next pass: most lines come through a pass unchanged. The per-line caches are the run's own (``apart``), and
-    after each re-read they keep only what it used, and what the pass before used about its unchanged lines
+    after each re-read they keep only what it used, and what they hold about its unchanged lines
     (``keeping_what_it_uses``): the versions of lines the passes replaced piled up to a fifth of a run's memory,
     and each model and check walked every line again. The run's Mint v4 readings
     (X-COMMENTED's, when a line is in error in v3, then X-CHECK's of that text with its markers)

@@ -115,13 +115,15 @@ def forget_lines() -> None:
 
 def keeping_what_it_uses(action: Callable[[], T]) -> T:
     """``action()``, a re-read in an ``apart`` block, after which every per-line cache holds what it
-    looked up or added, and what was used since the last call about a line whose parse a cache still
-    holds (a key that is a value of a cache that ``holds_contents``: a ``PlacedLine.content``); the
-    rest is dropped. The index and the findings of a line no edit touched are so kept for the next
-    model and check, which the re-read, a parse, never asks for; a pass that asks for neither lets them go."""
+    looked up or added, and what it holds about a line whose parse a cache still holds (a key that is
+    a value of a cache that ``holds_contents``: a ``PlacedLine.content``); the rest is dropped. The
+    index and the findings of a line no edit touched are so kept for the next model and check, which
+    the re-read, a parse, never asks for, however many re-reads come first: a migration checks its
+    original as Mint v3 and again four re-reads later, and builds a model after three."""
     used: dict[RecentCache[object, object], dict[object, object]] = {}
     for cache in list(_every_cache):
-        used[cache] = cache._old = cache._young  # found there by ``action``, moved back to the young one
+        cache._old.update(cache._young)
+        used[cache] = cache._old  # found there by ``action``, moved back to the young one
         cache._young = {}
     try:
         return action()

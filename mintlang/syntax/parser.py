@@ -502,6 +502,8 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
         # v3 names this one: "There is an assignment but no expression", avar = (001:12957-12964); a statement
         # that cannot be parsed is refused by the compiler, as a syntax error is
         return _error(2005, span, f"nothing after '=': give {line.texts[begin]} a value", at_run_time=False)
+    if segment[0] is _K.IF and not at_end and kinds[index] is _K.ELSE and _K.THEN in kinds[begin:index]:
+        return _error(2003, span, "IF .. THEN has no ELSE: write an IF .. DO block with ELSE and ENDIF")  # 000:1586
     if segment[0] is _K.IF and {"THEN", "DO"} <= expected and (at_end or kinds[index] not in _OPERATORS):
         return _error(2007, span, f"found {found}")
     if segment[0] is _K.FOR and "TO" in expected:

@@ -397,6 +397,23 @@ def test_anything_after_using_is_a_syntax_error_saying_using_ends_the_statement(
     assert diagnostic.span.start == len("DIM a\nDIM b\n") + column - 1
 
 
+@pytest.mark.parametrize(
+    ("source", "column"),
+    [
+        pytest.param('IF a = 3 THEN PRINT "three" ELSE PRINT "other"\n', 29, id="after-a-print"),
+        pytest.param("IF a THEN b = 1 ELSE b = 2\n", 17, id="after-an-assignment"),
+    ],
+)
+def test_else_after_if_then_is_a_syntax_error_naming_the_if_block(source: str, column: int) -> None:
+    # 000:1586-1587: the simple IF .. THEN has no ELSE; the IF block (IF .. DO .. ELSE .. ENDIF) has one
+    (diagnostic,) = mintlang.parse("DIM a\nDIM b\n" + source).diagnostics
+    assert (diagnostic.code, diagnostic.message) == (
+        "E2003",
+        "Syntax error: IF .. THEN has no ELSE: write an IF .. DO block with ELSE and ENDIF",
+    )
+    assert diagnostic.span.start == len("DIM a\nDIM b\n") + column - 1
+
+
 def test_next_with_its_loop_variable_is_an_error_whose_safe_fix_removes_the_name() -> None:
     # v4 guide 3.7.1 and the v3 guide 5.2.1: unlike BASIC, NEXT takes no index name
     source = "DIM i\nFOR i = 1 TO 3\nNEXT i\n"

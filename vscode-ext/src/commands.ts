@@ -4,7 +4,7 @@
 import * as path from "node:path";
 import * as vscode from "vscode";
 
-import { currentHost, currentSettings, listFolder } from "./host";
+import { currentChoices, currentHost, currentSettings, listFolder } from "./host";
 import { LANGUAGE_ID } from "./language";
 import { planMigration, planReplacement, type Plan } from "./migration";
 import { showError } from "./notify";
@@ -44,7 +44,7 @@ async function runInSimulator(uri: unknown, output: vscode.OutputChannel): Promi
   if (!(await saveOpen(config === undefined ? [file] : [file, config]))) {
     return;
   }
-  const resolution = fileCommand(tool, file, settings, currentHost(), config);
+  const resolution = fileCommand(tool, file, settings, currentChoices(), currentHost(), config);
   if (!resolution.ok) {
     void showError(`${title}: ${resolution.message}`, output);
     return;

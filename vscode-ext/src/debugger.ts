@@ -3,21 +3,11 @@
 import * as vscode from "vscode";
 
 import { evaluatableAt } from "./evaluatable";
-import { currentHost, currentSettings, listFolder } from "./host";
+import { currentChoices, currentHost, currentSettings, listFolder } from "./host";
 import { LANGUAGE_ID } from "./language";
-import { completeLaunch, DEBUG_TYPE, launchFor, type Chosen } from "./launch";
+import { completeLaunch, DEBUG_TYPE, launchFor } from "./launch";
 import { showError } from "./notify";
 import { resolveTool } from "./resolve";
-
-/** The settings the user set (in any scope), not VS Code's defaults: unset, the project's mint.toml decides. */
-function chosen(): Chosen {
-  const section = vscode.workspace.getConfiguration("mint");
-  const set = (key: string): string | undefined => {
-    const found = section.inspect<string>(key);
-    return found?.workspaceFolderValue ?? found?.workspaceValue ?? found?.globalValue;
-  };
-  return { controller: set("controller"), dialect: set("dialect"), configPairing: currentSettings().configPairing };
-}
 
 function activeProgram(): string | undefined {
   const document = vscode.window.activeTextEditor?.document;
@@ -46,7 +36,7 @@ class Configurations implements vscode.DebugConfigurationProvider {
     _folder: vscode.WorkspaceFolder | undefined,
     given: vscode.DebugConfiguration,
   ): vscode.ProviderResult<vscode.DebugConfiguration> {
-    const completion = completeLaunch(given, activeProgram(), chosen(), listFolder);
+    const completion = completeLaunch(given, activeProgram(), currentChoices(), listFolder);
     if (!completion.ok) {
       void vscode.window.showErrorMessage(`Debug in simulator: ${completion.message}`);
       return undefined;

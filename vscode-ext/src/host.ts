@@ -2,11 +2,22 @@
 import * as fs from "node:fs";
 import * as vscode from "vscode";
 
+import type { Chosen } from "./launch";
 import type { Host } from "./resolve";
 import { readSettings, type MintSettings } from "./settings";
 
 export function currentSettings(): MintSettings {
   return readSettings(vscode.workspace.getConfiguration("mint"));
+}
+
+/** The settings the user set (in any scope), not VS Code's defaults: unset, the project's mint.toml decides. */
+export function currentChoices(): Chosen {
+  const section = vscode.workspace.getConfiguration("mint");
+  const set = (key: string): string | undefined => {
+    const found = section.inspect<string>(key);
+    return found?.workspaceFolderValue ?? found?.workspaceValue ?? found?.globalValue;
+  };
+  return { controller: set("controller"), dialect: set("dialect"), configPairing: currentSettings().configPairing };
 }
 
 /** The names in a folder; none when it cannot be read. */

@@ -3,7 +3,8 @@
 // is passed in, so the unit tests can describe any file system and platform.
 import * as path from "node:path";
 
-import type { Controller, MintSettings } from "./settings";
+import type { Chosen } from "./launch";
+import type { MintSettings } from "./settings";
 
 export type Tool = "mint-lsp" | "mint-run" | "mint-dap" | "mint";
 export type FileTool = Exclude<Tool, "mint-lsp" | "mint-dap" | "mint">;
@@ -133,22 +134,30 @@ export function resolveTool(tool: Tool, settings: ToolSettings, host: Host): Res
   };
 }
 
+/** The controller and dialect the user set, each undefined where they set none. */
+export type Choices = Pick<Chosen, "controller" | "dialect">;
+
 /**
  * The arguments a command-line tool takes for one file and, when it has one, the program's
- * configuration file (`config`), for the configured controller. A simulated run starts from the
- * configuration file, as the server's "Run in simulator" lens does, and is bounded in real time,
- * so a program that never ends cannot hang the editor.
+ * configuration file (`config`). The controller and dialect are passed only where the user chose them
+ * (`chosen`, as the debugger takes them): unset, the project's mint.toml decides, and a v3 project is
+ * not run on the v4 default controller. `auto` is not passed: mint-run then reads the settings file, else v4.
+ * A simulated run starts from the configuration file, as the server's "Run in simulator" lens does,
+ * and is bounded in real time, so a program that never ends cannot hang the editor.
  */
-export function toolArguments(_tool: FileTool, file: string, controller: Controller, config?: string): string[] {
+export function toolArguments(_tool: FileTool, file: string, chosen: Choices, config?: string): string[] {
   const configuration = config === undefined ? [] : ["--config", config];
-  return [...configuration, "--controller", controller, "--max-wall-s", "30", file];
+  const controller = chosen.controller === undefined ? [] : ["--controller", chosen.controller];
+  const dialect = chosen.dialect === undefined || chosen.dialect === "auto" ? [] : ["--dialect", chosen.dialect];
+  return [...configuration, ...controller, ...dialect, "--max-wall-s", "30", file];
 }
 
 /** The command line that runs `tool` on `file` (with its configuration file `config`), or why there is none. */
 export function fileCommand(
   tool: FileTool,
   file: string,
-  settings: ToolSettings & Pick<MintSettings, "controller">,
+  settings: ToolSettings,
+  chosen: Choices,
   host: Host,
   config?: string,
 ): Resolution {
@@ -157,7 +166,7 @@ export function fileCommand(
     return resolution;
   }
   const { command, args, source } = resolution.command;
-  return found(command, [...args, ...toolArguments(tool, file, settings.controller, config)], source);
+  return found(command, [...args, ...toolArguments(tool, file, chosen, config)], source);
 }
 
 /** What the Testing view asks `mint test` for: the tests under `paths`, listed or run (with coverage into `lcov`). */

@@ -1,6 +1,7 @@
 import assert from "node:assert/strict";
 import { spawnSync } from "node:child_process";
-import { existsSync } from "node:fs";
+import { existsSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
 import * as path from "node:path";
 import { test } from "node:test";
 
@@ -17,6 +18,8 @@ import {
 } from "../../src/resolve";
 
 const NONE = { serverPath: "", pythonPath: "", controller: "nextmove-pci" } as const;
+/** Neither mint.controller nor mint.dialect set by the user: the project's mint.toml decides. */
+const UNSET = { controller: undefined, dialect: undefined } as const;
 
 function posix(files: readonly string[], options: { folders?: readonly string[]; path?: string } = {}): Host {
   return {
@@ -128,10 +131,21 @@ test("Windows: Scripts folder, .exe names, ; in PATH", () => {
   assert.deepEqual(commandOf(resolveTool("mint-run", NONE, host)), ["C:\\Python312\\Scripts\\mint-run.exe"]);
 });
 
-test("a run simulates the file for the configured controller, bounded in real time", () => {
-  assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", "nextmove-bx"), [
+test("a run simulates the file for the controller and dialect the user set, bounded in real time", () => {
+  assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", { controller: "nextmove-bx", dialect: "mintmt" }), [
     "--controller",
     "nextmove-bx",
+    "--dialect",
+    "mintmt",
+    "--max-wall-s",
+    "30",
+    "/p/a.mnt",
+  ]);
+});
+
+test("a run leaves what the user did not set, and auto, to the project's mint.toml", () => {
+  assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", UNSET), ["--max-wall-s", "30", "/p/a.mnt"]);
+  assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", { controller: undefined, dialect: "auto" }), [
     "--max-wall-s",
     "30",
     "/p/a.mnt",
@@ -139,7 +153,7 @@ test("a run simulates the file for the configured controller, bounded in real ti
 });
 
 test("a run gets the program's configuration file before the program", () => {
-  assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", "mintdrive", "/p/a.cfg"), [
+  assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", { controller: "mintdrive", dialect: undefined }, "/p/a.cfg"), [
     "--config",
     "/p/a.cfg",
     "--controller",
@@ -149,7 +163,7 @@ test("a run gets the program's configuration file before the program", () => {
     "/p/a.mnt",
   ]);
   const host = posix(["/usr/bin/mint-run"]);
-  assert.deepEqual(commandOf(fileCommand("mint-run", "/p/a.mnt", NONE, host, "/p/a.cfg")).slice(0, 3), [
+  assert.deepEqual(commandOf(fileCommand("mint-run", "/p/a.mnt", NONE, UNSET, host, "/p/a.cfg")).slice(0, 3), [
     "/usr/bin/mint-run",
     "--config",
     "/p/a.cfg",
@@ -167,27 +181,39 @@ test("every mint.pythonPath command line starts its tool", { skip: !existsSync(C
   }
 });
 
+test(
+  "Run in simulator runs a Mint v3 project's program when the user set no controller",
+  { skip: !existsSync(CHECKOUT_PYTHON) && "no ../.venv" },
+  () => {
+    // mint.toml says v3; the v4 default controller (nextmove-pci) is not one of the v3 guide's.
+    const project = mkdtempSync(path.join(tmpdir(), "mint-v3-"));
+    writeFileSync(path.join(project, "mint.toml"), 'dialect = "v3"\n');
+    writeFileSync(path.join(project, "a.mnt"), 'PRINT "ready"\n');
+    const args = [...PYTHON_ARGUMENTS["mint-run"], ...toolArguments("mint-run", path.join(project, "a.mnt"), UNSET)];
+    const run = spawnSync(CHECKOUT_PYTHON, args, { cwd: project, encoding: "utf8", timeout: 60_000 });
+    rmSync(project, { recursive: true });
+    assert.equal(run.status, 0, run.stderr);
+    assert.match(run.stdout, /ready/);
+  },
+);
+
 test("file commands append the file arguments to the resolved command", () => {
   const host = posix(["/work/robot/.venv/bin/mint-run", "/usr/bin/python3"]);
-  assert.deepEqual(commandOf(fileCommand("mint-run", "/work/robot/a b.mnt", NONE, host)), [
+  assert.deepEqual(commandOf(fileCommand("mint-run", "/work/robot/a b.mnt", NONE, UNSET, host)), [
     "/work/robot/.venv/bin/mint-run",
-    "--controller",
-    "nextmove-pci",
     "--max-wall-s",
     "30",
     "/work/robot/a b.mnt",
   ]);
-  assert.deepEqual(commandOf(fileCommand("mint-run", "/work/robot/a.mnt", { ...NONE, pythonPath: "python3" }, host)), [
+  assert.deepEqual(commandOf(fileCommand("mint-run", "/work/robot/a.mnt", { ...NONE, pythonPath: "python3" }, UNSET, host)), [
     "/usr/bin/python3",
     "-m",
     "mintlang.runtime",
-    "--controller",
-    "nextmove-pci",
     "--max-wall-s",
     "30",
     "/work/robot/a.mnt",
   ]);
-  assert.equal(fileCommand("mint-run", "/work/robot/a.mnt", NONE, posix(["/usr/bin/python3"])).ok, false);
+  assert.equal(fileCommand("mint-run", "/work/robot/a.mnt", NONE, UNSET, posix(["/usr/bin/python3"])).ok, false);
 });
 
 test("a missing module is recognised in Python's message, and only the tool's own", () => {

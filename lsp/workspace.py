@@ -102,10 +102,10 @@ class Settings:
             ("controller", "controller", Controller),
             ("dialect", "dialect", Dialect),
             ("configPairing", "config_pairing", _pairing_pattern),
-            ("debounceMs", "debounce_ms", int),
+            ("debounceMs", "debounce_ms", _milliseconds),
             ("select", "select", _codes),
             ("ignore", "ignore", _codes),
-            ("rulesUrl", "rules_url", str),
+            ("rulesUrl", "rules_url", _text),
         ):
             if key not in options:
                 continue
@@ -189,9 +189,24 @@ def _codes(value: object) -> tuple[str, ...]:
     return tuple(selector(item) for item in items if item.strip())
 
 
+def _milliseconds(value: object) -> int:
+    """A whole number of milliseconds, 0 or more, as the extension's schema says: ``true`` or ``-5`` is refused,
+    not read as 1 ms or a negative wait, and ``1.5`` is not cut to 1."""
+    if isinstance(value, bool) or not isinstance(value, int | float) or value < 0 or not float(value).is_integer():
+        raise ValueError("a whole number of milliseconds")
+    return int(value)
+
+
+def _text(value: object) -> str:
+    """A string setting: a list or a number is refused rather than written out as ``['x']`` or ``5``."""
+    if not isinstance(value, str):
+        raise TypeError("a string")
+    return value
+
+
 def _pairing_pattern(value: object) -> str:
     """A configuration file name with ``<name>`` for the program's (see ``mintlang.pairing``)."""
-    pattern = str(value)
+    pattern = _text(value)
     Pairing.from_pattern(pattern)  # a ValueError for a folder keeps the setting as it was
     return pattern
 

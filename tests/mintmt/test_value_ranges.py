@@ -3,7 +3,8 @@
 The notes print no attributes tables, so the ranges are ``mintlang/MINTMT.md``'s decisions, written once in
 the keyword rows both tools read: TRIGGERMODE takes whole numbers (MT-10), MOVEBUFFERLOW a whole number of
 free places, 0 or more (MT-14), FEEDRATEOVERRIDE a percentage above 0 (MT-15), SUSPEND a whole number 0 or
-more (MT-16) and MOVEPULSEOUTX a whole number of milliseconds, 1 or more (MT-22). Any other value is
+more (MT-16), MOVEPULSEOUTX a whole number of milliseconds, 1 or more (MT-22), and MOVEBUFFERSIZE v4's 2 to
+100 moves (000:11053-11054), whole ones, as MintMT's rows are (MT-1). Any other value is
 error 3, "Data specified out of range" (000:18518-18521).
 """
 
@@ -26,6 +27,10 @@ OUT_OF_RANGE = [
     pytest.param("SUSPEND(0) = 0.5", id="SUSPEND a fraction"),
     pytest.param("MOVEPULSEOUTX(0,3) = 0", id="MOVEPULSEOUTX 0 ms"),
     pytest.param("MOVEPULSEOUTX(0,3) = 2.5", id="MOVEPULSEOUTX a fraction of a ms"),
+    pytest.param("MOVEBUFFERSIZE(0) = 0", id="MOVEBUFFERSIZE below 2 places (000:11053-11054)"),
+    pytest.param("MOVEBUFFERSIZE(0) = 101", id="MOVEBUFFERSIZE above 100 places (000:11053-11054)"),
+    pytest.param("MOVEBUFFERSIZE([0,1]) = 1;", id="MOVEBUFFERSIZE of two axes below 2 places"),
+    pytest.param("MOVEBUFFERSIZE(0) = 2.5", id="MOVEBUFFERSIZE a fraction of a place"),
 ]
 
 IN_RANGE = [
@@ -34,6 +39,8 @@ IN_RANGE = [
     pytest.param("FEEDRATEOVERRIDE(0) = 50.5", id="FEEDRATEOVERRIDE a fraction of a percent"),
     pytest.param("SUSPEND(0) = 1", id="SUSPEND 1"),
     pytest.param("MOVEPULSEOUTX(0,3) = 1", id="MOVEPULSEOUTX 1 ms"),
+    pytest.param("MOVEBUFFERSIZE(0) = 2", id="MOVEBUFFERSIZE 2 places"),
+    pytest.param("MOVEBUFFERSIZE([0,1]) = 100;", id="MOVEBUFFERSIZE of two axes 100 places"),
 ]
 
 

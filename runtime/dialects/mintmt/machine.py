@@ -8,7 +8,7 @@ monitors.
 
 from __future__ import annotations
 
-from mintlang.runtime.dialects.mintmt import contouring, feedrate, identifiers, outputs, triggering
+from mintlang.runtime.dialects.mintmt import buffer_size, contouring, feedrate, identifiers, outputs, triggering
 from mintlang.runtime.dialects.mintmt.buffer_low import BufferLowEvent
 from mintlang.runtime.dialects.mintmt.output_moves import OutputMoves
 from mintlang.runtime.dialects.mintmt.suspend import Suspension
@@ -21,6 +21,7 @@ from mintlang.runtime.motion.commands import Motion
 
 def install(table: KeywordTable, motion: Motion, io: DigitalIO, events: Events) -> list[Monitor]:
     """Register MintMT's keywords over the v4 ones in ``table``; returns the monitors the simulator must call."""
+    buffer_size.install(table, motion)
     trigger_loaded = triggering.install(table, motion)
     contouring.install(table)
     outputs.install(table)

@@ -89,3 +89,37 @@ test("plain quotes pair up; typographic ones are highlighted but not typed, as t
     assert.ok(!pairs.some((pair) => pair.includes(quote)), quote);
   }
 });
+
+// MintMT's blocks (004's examples): a multi-line If … Then ends at EndIf or End If, Loop at End Loop,
+// Event NAME at End Event, Startup at End Startup; an If … Then with statements after Then is one line.
+const MINTMT_OPENERS = [
+  "If (COMMS(1) = 1) And (MOVEBUFFERFREE(0) > 0) Then",
+  "  If (COMMS(1) = 1) Then",
+  "If key = 'A' Then ' the key typed",
+  "Event MOVEBUFFERLOW",
+  "event Comms1 ' a comment after it",
+  "Startup",
+];
+const MINTMT_ONE_LINERS = ["If x Then GO(0)", "If x Then y = 1 ' Then", "event = 1", "Eventual = 1", "Startup = 1"];
+const MINTMT_CLOSERS = ["End If", "  EndIf", "End Loop", "End Event", "end startup"];
+
+test("MintMT's block openers indent the next line and start a fold; a one-line If … Then does neither", () => {
+  for (const line of MINTMT_OPENERS) {
+    assert.match(line, increase, line);
+    assert.match(line, foldStart, line);
+  }
+  for (const line of MINTMT_ONE_LINERS) {
+    assert.doesNotMatch(line, increase, line);
+    assert.doesNotMatch(line, foldStart, line);
+  }
+});
+
+test("MintMT's End words outdent themselves and end a fold, and start none", () => {
+  for (const line of MINTMT_CLOSERS) {
+    assert.match(line, decrease, line);
+    assert.match(line, foldEnd, line);
+    assert.doesNotMatch(line, foldStart, line);
+    assert.doesNotMatch(line, increase, line);
+  }
+  assert.doesNotMatch("EndLoop = 1", foldEnd);
+});

@@ -45,8 +45,27 @@ C = TypeVar("C", bound=Callable[..., Any])
 
 _NEWLINE = re.compile(r"\r\n|\r|\n")
 MARKER = "REM MIGRATE:"
-# A manual item's line: ``REM MIGRATE: <rule>: <reason>``.
-MARKER_LINE = re.compile(rf"^[ \t]*{re.escape(MARKER)}[ \t]*(?P<rule>[A-Z]+-[A-Z0-9-]+):[ \t]*(?P<reason>.*?)[ \t]*$")
+# What a marker written below the line it marks says first: nothing may go above the PROTECT that opens
+# a program (v4:15393), a line inserted before it takes the protection away (v3:11092).
+LINE_ABOVE = "(line above)"
+# A manual item's line: ``REM MIGRATE: <rule>: <reason>``, or ``REM MIGRATE: <rule>: (line above) <reason>``.
+MARKER_LINE = re.compile(
+    rf"^[ \t]*{re.escape(MARKER)}[ \t]*(?P<rule>[A-Z]+-[A-Z0-9-]+):[ \t]*"
+    rf"(?P<above>{re.escape(LINE_ABOVE)}[ \t]*)?(?P<reason>.*?)[ \t]*$"
+)
+
+
+def marker_text(rule: str, reason: str, *, above: bool = False) -> str:
+    """A marker line without indentation or line end; ``above`` for one that marks the line above it."""
+    return f"{MARKER} {rule}: {LINE_ABOVE + ' ' if above else ''}{reason}"
+
+
+def marks_above(found: re.Match[str]) -> bool:
+    """Whether the marker ``MARKER_LINE`` found marks the nearest line above it that is not a marker;
+    any other marks the nearest such line below it. The one place that decides which line a marker
+    marks: the engine, X-CHECK, the report and ``--verify`` all ask it."""
+    return found["above"] is not None
+
 
 # Tags of a line besides its node types and names (see ``LineTags``): tuples, which no name equals.
 LABEL = ("label",)  # the line has a label
@@ -266,13 +285,34 @@ class FileView:
         command, following = line.statements[:2]
         return Span(command.span.end, following.span.start)
 
-    def markers_above(self, offset: int) -> Iterator[str]:
-        """The rules of the ``REM MIGRATE:`` lines right above the line of ``offset``, nearest first."""
-        for above in self.lines_above(offset):
-            found = MARKER_LINE.match(above)
-            if found is None:
-                return
-            yield found["rule"]
+    def lines_below(self, offset: int) -> Iterator[str]:
+        """The physical lines below the line of ``offset``, nearest first, stripped."""
+        end = self.line_end(offset)
+        while end < len(self.text):
+            start = end + (2 if self.text.startswith("\r\n", end) else 1)
+            end = self.line_end(start)
+            yield self.text[start:end].strip()
+
+    def markers_on(self, offset: int) -> Iterator[str]:
+        """The rules of the ``REM MIGRATE:`` lines that mark the line of ``offset`` (``marks_above``):
+        among the markers right above it and right below it, nearest first."""
+        for lines, above in ((self.lines_above(offset), False), (self.lines_below(offset), True)):
+            for line in lines:
+                found = MARKER_LINE.match(line)
+                if found is None:
+                    break
+                if marks_above(found) is above:
+                    yield found["rule"]
+
+    def opens_protected(self, offset: int) -> bool:
+        """Whether ``offset`` lies on the PROTECT line that opens a program: a marker for it goes below
+        it (``LINE_ABOVE``), as a line above takes the protection away (v3:11092, v4:15393)."""
+        line = self.opening
+        return (
+            line is not None
+            and self.unit is Unit.PROGRAM
+            and self.line_start(line.span.start) == self.line_start(offset)
+        )
 
     def slice(self, span: Span) -> str:
         return self.text[span.start : span.end]

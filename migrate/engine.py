@@ -7,7 +7,8 @@ nothing left to do but write the marker lines it asked for; a phase in
 ``SETTLED_IN_ONE_PASS`` is done after a pass whose edits all applied.
 Flags become ``REM MIGRATE:`` lines above the flagged line,
 with its indentation and the file's own newline (a statement after the AUTO or
-PROTECT that must open its file first gets a line of its own); a marker already
+PROTECT that must open its file first gets a line of its own, and the PROTECT line
+a marker below it that says so: ``marks_above``); a marker already
 there is not written twice, which is what makes a second migration a no-op.
 
 Text outside the edited spans is copied, never regenerated: comments, spacing,
@@ -31,7 +32,17 @@ from mintlang.allocation import kept_without_collector
 from mintlang.caching import Shelf, apart, forget_lines, keeping_what_it_uses
 from mintlang.diagnostics import LineIndex, Span, split_lines
 from mintlang.migrate.citations import cite, in_file
-from mintlang.migrate.context import MARKER, Context, FileView, LineTags, Unreadable
+from mintlang.migrate.context import (
+    LINE_ABOVE,
+    MARKER,
+    MARKER_LINE,
+    Context,
+    FileView,
+    LineTags,
+    Unreadable,
+    marker_text,
+    marks_above,
+)
 from mintlang.migrate.history import Edit, History
 from mintlang.migrate.markers import manual_items
 from mintlang.migrate.model import Change, ManualItem, MigrationFailed, Phase, unreadable
@@ -240,10 +251,13 @@ def _marker(file: FileView, rule: str, flag: Flag, flagged: set[tuple[Unit, int,
 
     Nothing may go above the command that must open the file (AUTO, PROTECT): a flag for a
     statement after it on its line breaks the line there instead (a line end separates
-    statements as ``:`` does), so the statement gets a line of its own with the marker above.
+    statements as ``:`` does), so the statement gets a line of its own with the marker above;
+    a flag for the PROTECT line itself gets a marker right below it that says it marks the line
+    above (``marks_above``).
     """
     reason = in_file(cite(" ".join(flag.reason.split())))
-    text = f"{MARKER} {rule}: {reason}"
+    below = file.opens_protected(flag.span.start)
+    text = marker_text(rule, reason, above=below)
     indentation = file.indentation(flag.span.start)
     split = _after_opening(file, flag.span.start)
     start = file.line_start(flag.span.start) if split is None else split.start
@@ -253,12 +267,18 @@ def _marker(file: FileView, rule: str, flag: Flag, flagged: set[tuple[Unit, int,
     flagged.add(key)
     if split is not None:
         return Edit(rule, split, f"{file.newline}{indentation}{text}{file.newline}{indentation}")
-    for above in file.lines_above(flag.span.start):
-        if not above.upper().startswith(MARKER):
+    for near in file.lines_below(start) if below else file.lines_above(start):
+        if not near.upper().startswith(MARKER):
             break
-        if above == text:
+        if near == text:
             return None
-    return Edit(rule, Span(start, start), f"{indentation}{text}{file.newline}")
+    if not below:
+        return Edit(rule, Span(start, start), f"{indentation}{text}{file.newline}")
+    end = file.line_end(start)
+    if end == len(file.text):  # PROTECT on a last line without a line break: the file ends as it did
+        return Edit(rule, Span(end, end), f"{file.newline}{indentation}{text}")
+    after = end + len(file.newline) if file.text.startswith(file.newline, end) else end + 1
+    return Edit(rule, Span(after, after), f"{indentation}{text}{file.newline}")
 
 
 def _after_opening(file: FileView, offset: int) -> Span | None:
@@ -273,7 +293,8 @@ def _after_opening(file: FileView, offset: int) -> Span | None:
 def _non_overlapping(edits: list[Edit]) -> list[Edit]:
     """The edits that touch no earlier-accepted edit (rule order decides), sorted by position.
 
-    Insertions at one point keep the order they were asked for, except that whole lines
+    Insertions at one point keep the order they were asked for, except that a marker of the
+    line above (``marks_above``) goes first, to stay right below that line, and whole lines
     (``DIM a``) go above the rest: a marker asked for there belongs to the line below
     it, and other text inserted there begins that line. An insertion may sit at either
     end of a replacement, never inside it. The accepted replacements
@@ -298,7 +319,15 @@ def _non_overlapping(edits: list[Edit]) -> list[Edit]:
                 continue
             insort(replacements, (start, end))
         accepted.append(edit)
-    return sorted(accepted, key=lambda edit: (edit.span.start, edit.span.end, not _inserts_lines_above(edit)))
+    return sorted(accepted, key=lambda edit: (edit.span.start, edit.span.end, _rank_at_a_point(edit)))
+
+
+def _rank_at_a_point(edit: Edit) -> int:
+    """Where ``edit`` goes among the insertions at its point: a marker of the line above, whole lines, the rest."""
+    found = MARKER_LINE.match(edit.text.strip("\r\n")) if LINE_ABOVE in edit.text else None
+    if found is not None and marks_above(found):
+        return 0
+    return 1 if _inserts_lines_above(edit) else 2
 
 
 def _apply(state: _FileState, edits: list[Edit]) -> None:

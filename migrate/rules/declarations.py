@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.diagnostics import Span, lines_of
-from mintlang.migrate.context import LABEL, MARKER, Context, FileView, name_tag, per_pass
+from mintlang.migrate.context import LABEL, MARKER, MARKER_LINE, Context, FileView, marks_above, name_tag, per_pass
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Replace, Rule
 from mintlang.migrate.rules.explicit_axes import axis_keyword
@@ -26,10 +26,17 @@ V3_DEFAULT_AXES = 3  # power-up AXES[0,1,2] (v3:1029-1033)
 
 def top_of(file: FileView) -> int:
     """Where declarations go: after a leading AUTO (configuration) or PROTECT (program)
-    statement, else after the comment lines the file starts with (a REM MIGRATE line
-    belongs to the line below it, so it ends the header)."""
+    statement and the markers below it that mark it (``marks_above``), else after the
+    comment lines the file starts with (a REM MIGRATE line belongs to the line below it,
+    so it ends the header)."""
     if file.opening is not None:
-        return _next_line(file, file.opening.span.end)
+        position = _next_line(file, file.opening.span.end)
+        for line in file.lines_below(file.opening.span.end):
+            found = MARKER_LINE.match(line)
+            if found is None or not marks_above(found):
+                break
+            position = _next_line(file, position)
+        return position
     position = 0
     for raw in lines_of(file.text):
         comment = raw.strip().upper()

@@ -516,4 +516,4 @@ _APPLICATION_NOTES = frozenset({IoPrologue.id, ReportDefaults.id})
 
 def _flagged(file: FileView, offset: int) -> bool:
     """Whether an earlier rule already put a manual item on the line of ``offset``."""
-    return any(rule not in _APPLICATION_NOTES for rule in file.markers_above(offset))
+    return any(rule not in _APPLICATION_NOTES for rule in file.markers_on(offset))

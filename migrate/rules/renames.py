@@ -183,7 +183,7 @@ def _migrated_fastin(context: Context, symbol: Symbol) -> bool:
     if event is None or event.kind is not EventKind.FASTIN or event.number is not None:
         return False
     files = context.files
-    if all("X-FASTLATCH" in files[place.unit].markers_above(place.span.start) for place in symbol.definitions):
+    if all("X-FASTLATCH" in files[place.unit].markers_on(place.span.start) for place in symbol.definitions):
         return True
     texts = {unit: file.text for unit, file in files.items()}
     return v4_evidence(texts, context.controller.controller) is Evidence.BEYOND_DOUBT

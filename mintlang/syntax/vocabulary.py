@@ -14,7 +14,7 @@ from functools import cache
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Controller, KeywordKind, V3Keyword
+from mintlang.keyworddb.model import Controller, KeywordKind, Spelling, V3Keyword
 from mintlang.records import record
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
 
@@ -91,6 +91,15 @@ def _v3_kind_of(keyword: V3Keyword) -> TokenKind:
 
 
 @cache
+def _spelled(dialect: Dialect) -> tuple[tuple[Spelling, TokenKind], ...]:
+    """How each keyword of a v4-based dialect is written, with its token kind: the same on every controller,
+    so read once for the lexer's vocabulary and the parser's (of the controller) alike."""
+    # Spellings, not keywords: building every keyword's record was a tenth of a one-line check.
+    spellings = (spelling for spelling in database().spellings_of(dialect) if spelling.kind is not KeywordKind.EVENT)
+    return tuple((spelling, _kind_of(spelling.name, spelling.kind, spelling.takes_arguments)) for spelling in spellings)
+
+
+@cache
 def vocabulary(dialect: Dialect, controller: Controller | None = None) -> Vocabulary:
     """The spelling tables of ``dialect`` on ``controller`` (any, when None), built once per process."""
     db = database()
@@ -106,16 +115,14 @@ def vocabulary(dialect: Dialect, controller: Controller | None = None) -> Vocabu
 
     indices: dict[str, int] = {}
     if dialect.modern:
-        # Spellings, not keywords: building every keyword's record was a tenth of a one-line check.
-        spellings = [spelling for spelling in db.spellings_of(dialect) if spelling.kind is not KeywordKind.EVENT]
-        kinds = [_kind_of(spelling.name, spelling.kind, spelling.takes_arguments) for spelling in spellings]
-        for spelling, kind in zip(spellings, kinds, strict=True):
+        spelled = _spelled(dialect)
+        for spelling, kind in spelled:
             add(spelling.name, spelling.name, kind)
             if spelling.channel_suffix:
                 suffixed.add(spelling.name)
             if spelling.indices:
                 indices[spelling.name] = spelling.indices
-        for spelling, kind in zip(spellings, kinds, strict=True):
+        for spelling, kind in spelled:
             for abbreviation in spelling.abbreviations:
                 if db.owner(abbreviation, controller) == spelling.name:  # a shared one goes to one keyword
                     add(abbreviation, spelling.name, kind)

@@ -4,7 +4,8 @@ The notes print no attributes tables, so the ranges are ``mintlang/MINTMT.md``'s
 the keyword rows both tools read: TRIGGERMODE takes whole numbers (MT-10), MOVEBUFFERLOW a whole number of
 free places, 0 or more (MT-14), FEEDRATEOVERRIDE a percentage above 0 (MT-15), SUSPEND a whole number 0 or
 more (MT-16), MOVEPULSEOUTX a whole number of milliseconds, 1 or more (MT-22), and MOVEBUFFERSIZE v4's 2 to
-100 moves (000:11053-11054), whole ones, as MintMT's rows are (MT-1). Any other value is
+100 moves (000:11053-11054), whole ones, as MintMT's rows are (MT-1), and FEEDRATE what SPEED takes, the one
+slew speed written either way (MT-15). Any other value is
 error 3, "Data specified out of range" (000:18518-18521).
 """
 
@@ -31,6 +32,7 @@ OUT_OF_RANGE = [
     pytest.param("MOVEBUFFERSIZE(0) = 101", id="MOVEBUFFERSIZE above 100 places (000:11053-11054)"),
     pytest.param("MOVEBUFFERSIZE([0,1]) = 1;", id="MOVEBUFFERSIZE of two axes below 2 places"),
     pytest.param("MOVEBUFFERSIZE(0) = 2.5", id="MOVEBUFFERSIZE a fraction of a place"),
+    pytest.param("FEEDRATE(0) = -5", id="FEEDRATE below SPEED's 1 (000:16186-16230)"),
 ]
 
 IN_RANGE = [
@@ -41,6 +43,8 @@ IN_RANGE = [
     pytest.param("MOVEPULSEOUTX(0,3) = 1", id="MOVEPULSEOUTX 1 ms"),
     pytest.param("MOVEBUFFERSIZE(0) = 2", id="MOVEBUFFERSIZE 2 places"),
     pytest.param("MOVEBUFFERSIZE([0,1]) = 100;", id="MOVEBUFFERSIZE of two axes 100 places"),
+    pytest.param("FEEDRATE([0,1]) = 20;", id="FEEDRATE the note's 20 units/s (004:259)"),
+    pytest.param("FEEDRATE(0) = 2.5", id="FEEDRATE a fraction, as SPEED takes"),
 ]
 
 

@@ -5,7 +5,7 @@ the keyword rows both tools read: TRIGGERMODE takes whole numbers (MT-10), MOVEB
 free places, 0 or more (MT-14), FEEDRATEOVERRIDE a percentage above 0 (MT-15), SUSPEND a whole number 0 or
 more (MT-16), MOVEPULSEOUTX a whole number of milliseconds, 1 or more (MT-22), and MOVEBUFFERSIZE v4's 2 to
 100 moves (000:11053-11054), whole ones, as MintMT's rows are (MT-1), and FEEDRATE what SPEED takes, the one
-slew speed written either way (MT-15). Any other value is
+slew speed written either way (MT-15), and CONTOURMODE v4's modes 0, 1 and 3 (000:8653-8654). Any other value is
 error 3, "Data specified out of range" (000:18518-18521).
 """
 
@@ -33,6 +33,9 @@ OUT_OF_RANGE = [
     pytest.param("MOVEBUFFERSIZE([0,1]) = 1;", id="MOVEBUFFERSIZE of two axes below 2 places"),
     pytest.param("MOVEBUFFERSIZE(0) = 2.5", id="MOVEBUFFERSIZE a fraction of a place"),
     pytest.param("FEEDRATE(0) = -5", id="FEEDRATE below SPEED's 1 (000:16186-16230)"),
+    pytest.param("CONTOURMODE(0) = 2", id="CONTOURMODE bit 1 without bit 0 (000:8653-8654)"),
+    pytest.param("CONTOURMODE(0) = 7", id="CONTOURMODE above v4's 3"),
+    pytest.param("CONTOURMODE(0) = 0.5", id="CONTOURMODE a fraction of a mode"),
 ]
 
 IN_RANGE = [
@@ -45,6 +48,10 @@ IN_RANGE = [
     pytest.param("MOVEBUFFERSIZE([0,1]) = 100;", id="MOVEBUFFERSIZE of two axes 100 places"),
     pytest.param("FEEDRATE([0,1]) = 20;", id="FEEDRATE the note's 20 units/s (004:259)"),
     pytest.param("FEEDRATE(0) = 2.5", id="FEEDRATE a fraction, as SPEED takes"),
+    pytest.param(
+        "CONTOURMODE([0,1]) = _ctmCONTOUR_ON + _ctmVECTOR_ANGLE_ON;",
+        id="CONTOURMODE the note's angle control (004:230)",
+    ),
 ]
 
 

@@ -14,6 +14,10 @@ from __future__ import annotations
 import pytest
 
 import mintlang
+from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
+from mintlang.keyworddb.model import Controller, ValueRange
+from mintlang.keyworddb.supplements import attributes_for
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.run import Limits, run_source
 from mintlang.runtime.scenario import DrivesEnabled, Scenario
@@ -83,3 +87,26 @@ def test_a_value_outside_the_range_is_error_3_in_the_check_and_the_run(statement
 def test_a_value_inside_the_range_passes_both(statement: str) -> None:
     assert _checked(statement) == []
     assert _ran(statement)[0] is not StopReason.ERROR
+
+
+def _v4_range(name: str, controller: Controller) -> ValueRange | None:
+    v4 = database().keywords.get(name)
+    row = attributes_for(v4, controller, Dialect.V4) if v4 is not None else None
+    return row.range if row is not None else None
+
+
+REPLACED_V4_RANGES = [
+    pytest.param(name, controller, id=f"{name} on {controller.value}")
+    for name, keyword in database().mintmt_keywords.items()
+    for row in keyword.attributes
+    for controller in row.controllers
+    if _v4_range(name, controller) is not None
+]
+
+
+@pytest.mark.parametrize(("name", "controller"), REPLACED_V4_RANGES)
+def test_a_mintmt_entry_keeps_the_range_of_the_v4_keyword_it_replaces(name: str, controller: Controller) -> None:
+    """MT-1: a MintMT entry written for the notes' brackets keeps v4's range, which mint-run still applies."""
+    row = database().mintmt_keywords[name].attributes_for(controller)
+    assert row is not None
+    assert row.range == _v4_range(name, controller)

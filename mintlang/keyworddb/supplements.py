@@ -72,11 +72,12 @@ def narrowed(keyword: str, printed: ValueRange | None) -> ValueRange | None:
     return NARROWED.get(keyword, printed) if printed is not None else None
 
 
-_WHOLE_WITHOUT_CONSTANTS = frozenset({"BANK", "CAMSTART", "CAMEND", "MASTERCHANNEL", "FOLLOWDENOM"})
+_WHOLE_WITHOUT_CONSTANTS = frozenset({"BANK", "CAMSTART", "CAMEND", "MASTERCHANNEL", "FOLLOWDENOM", "MOVEBUFFERSIZE"})
 """Keywords whose values no fraction can mean though the guide names none with a constant: BANK's are the
 cards, in its table of values (000:7345-7348); CAMSTART's and CAMEND's a cam segment (000:7807-7810),
 MASTERCHANNEL's the master's channel (000:13779); FOLLOWDENOM is the denominator that keeps a follow ratio
-free of fractions (000:10802-10804). None of their ranges prints a decimal part."""
+free of fractions (000:10802-10804); MOVEBUFFERSIZE counts the moves the buffer stores (000:11053-11054),
+as MintMT's row holds it. None of their ranges prints a decimal part."""
 
 
 @cache

@@ -15,7 +15,7 @@ from functools import cache
 from types import MappingProxyType
 
 from mintlang.keyworddb.model import Controller
-from mintlang.keyworddb.supplements import POSITIVE_ONLY, SUPPLEMENTS
+from mintlang.keyworddb.supplements import POSITIVE_ONLY, SUPPLEMENTS, whole_only
 from mintlang.runtime.ranges import Bounds, bounds_of, table_bounds, table_default
 
 # Servo-axis defaults from the DEFAULT table, in counts (SCALE 1). Where the keyword entry and the
@@ -107,7 +107,7 @@ def bounds(keyword: str, controller: Controller) -> Bounds:
     """
     known = _KNOWN_RANGES.get(keyword)
     if known is not None:
-        return known
+        return replace(known, whole=whole_only(keyword))  # MOVEBUFFERSIZE's count, as table_bounds holds it
     table = table_bounds(keyword, controller)
     if keyword in POSITIVE_ONLY and (table.minimum is None or table.minimum <= 0):
         return replace(table, minimum=0.0, exclusive_minimum=True)

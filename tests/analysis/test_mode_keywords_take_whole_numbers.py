@@ -11,7 +11,8 @@ whole numbers. Columns are those of the value, counted by hand from 1.
 A number that names one thing is held the same way where its range prints no decimal part: CAMSTART and
 CAMEND name a cam segment (000:7807-7810, ranges 1 ≤ x ≤ 65535: 000:7778, 7889), MASTERCHANNEL the channel
 of the master (000:13779, 0 ≤ x ≤ 11: 000:13799), and FOLLOWDENOM is the denominator that keeps a follow ratio
-free of fractions (000:10802-10804, 1 ≤ x ≤ 128: 000:10798).
+free of fractions (000:10802-10804, 1 ≤ x ≤ 128: 000:10798). MOVEBUFFERSIZE counts the moves the buffer
+stores, "between 2 and 100" (000:11053-11054), as MintMT's row holds it.
 """
 
 from __future__ import annotations
@@ -60,9 +61,10 @@ def test_whole_modes_and_fractional_gains_pass_both_tools(source: str) -> None:
         pytest.param("CAMEND.0 = 2.5\n", "nextmove-pci", 12, id="CAMEND"),
         pytest.param("MASTERCHANNEL.1 = 0.5\n", "nextmove-pci", 19, id="MASTERCHANNEL"),
         pytest.param("FOLLOWDENOM.0 = 1.5\n", "mintdrive", 17, id="FOLLOWDENOM"),
+        pytest.param("MOVEBUFFERSIZE.0 = 2.5\n", "nextmove-pci", 20, id="MOVEBUFFERSIZE"),
     ],
 )
-def test_a_fraction_naming_a_segment_channel_or_denominator_is_error_3_in_both_tools(
+def test_a_fraction_naming_a_segment_channel_denominator_or_count_is_error_3_in_both_tools(
     source: str, controller: str, column: int
 ) -> None:
     index = mintlang.LineIndex(source)

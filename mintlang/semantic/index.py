@@ -15,7 +15,6 @@ from __future__ import annotations
 
 from collections.abc import Callable, Hashable, Iterable, Iterator, Sequence
 from enum import StrEnum
-from functools import partial
 from itertools import chain, compress, count, repeat
 from operator import attrgetter, not_
 from typing import NamedTuple, overload
@@ -26,6 +25,7 @@ from mintlang.records import record
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.change import Change
+from mintlang.syntax.moved import Spliced
 from mintlang.syntax.parser import Document
 
 
@@ -205,13 +205,15 @@ class IndexedLines(Sequence[IndexedLine]):
         keystroke looks up the index of the lines it re-read, not of every line of the file."""
         first = change.first_line
         old_end, new_end = first + change.old_lines, first + change.new_lines
+        edited_files = []
+        for (unit, lines), (_, _, facts) in zip(files, self._files, strict=True):
+            if unit is not Unit.PROGRAM:
+                edited_files.append((unit, lines, facts))
+                continue
+            window = [line_facts(unit, line) for line in lines[first:new_end]]
+            edited_files.append((unit, lines, Spliced.spliced(facts, (first, old_end), window, 0, 0)))
         edited = object.__new__(IndexedLines)
-        edited._files = tuple(
-            (unit, lines, (*facts[:first], *map(partial(line_facts, unit), lines[first:new_end]), *facts[old_end:]))
-            if unit is Unit.PROGRAM
-            else (unit, lines, facts)
-            for (unit, lines), (_, _, facts) in zip(files, self._files, strict=True)
-        )
+        edited._files = tuple(edited_files)
         edited._length = sum(len(facts) for _, _, facts in edited._files)
         return edited
 
@@ -238,7 +240,7 @@ class IndexedLines(Sequence[IndexedLine]):
         """The lines with a statement of one of ``kinds`` (IF .. THEN bodies included)."""
         return self._selected(lambda facts: map(not_, map(kinds.isdisjoint, map(_KINDS, facts))))
 
-    def _selected(self, selectors: Callable[[tuple[LineFacts, ...]], Iterable[object]]) -> Iterator[IndexedLine]:
+    def _selected(self, selectors: Callable[[Sequence[LineFacts]], Iterable[object]]) -> Iterator[IndexedLine]:
         """The lines whose selector, one per index of a file's lines, is true."""
         for unit, lines, facts in self._files:
             for index in compress(count(), selectors(facts)):

@@ -7,7 +7,8 @@ moves an item when it is read. The first full iteration moves them all, once,
 and keeps them. A language server typing in one place keeps three pieces
 (above, the edited lines, below); edits in many places add pieces, and past
 ``_MOST_PIECES`` the items are moved into one sequence again. ``MovedLines``
-holds a document's logical lines, ``MovedOffsets`` where its physical lines start.
+holds a document's logical lines, ``MovedOffsets`` where its physical lines start, ``Spliced``
+what is kept per line without a place (the line index).
 """
 
 from __future__ import annotations
@@ -158,6 +159,17 @@ class MovedOffsets(Moved[int]):
     @staticmethod
     def flat(items: Iterable[int]) -> Sequence[int]:
         return array("q", items)
+
+
+class Spliced(Moved[T]):
+    """Items that name no place (each line's index), spliced around an edit: nothing in them moves, and a
+    keystroke that reads none of them (typing in a comment) copies none."""
+
+    __slots__ = ()
+
+    @staticmethod
+    def moved(items: Iterable[T], shift: int, line_shift: int) -> Iterator[T]:
+        return iter(items)
 
 
 def _pieces(items: Sequence[T], start: int, end: int, shift: int, line_shift: int) -> list[_Piece[T]]:

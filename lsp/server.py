@@ -69,7 +69,10 @@ class MintServer(LanguageServer):
         if document is None:
             return None
         snapshot = self.analyses.latest(uri) or self.analyses.snapshot(uri, document.source, document.version)
-        positions = Positions(document.source, self.analyses.encoding)
+        if snapshot.skipped is None and snapshot.document.source == document.source:
+            positions = snapshot.positions  # the text analysed is the text typed: its lines are known already
+        else:
+            positions = Positions(document.source, self.analyses.encoding)
         return snapshot, line_prefix(positions, document.source, position)
 
 

@@ -1,4 +1,5 @@
-"""The VS Code extension's launch attributes offer exactly the controllers and dialects mint-dap accepts."""
+"""The VS Code extension's launch attributes offer exactly the controllers and dialects mint-dap accepts,
+with the defaults it applies when an attribute is left out."""
 
 from __future__ import annotations
 
@@ -6,7 +7,7 @@ import json
 from pathlib import Path
 
 from mintlang.keyworddb.model import Controller
-from mintlang.runtime.debugger.launch import AUTO
+from mintlang.runtime.debugger.launch import AUTO, prepare
 from mintlang.runtime.dialects import SIMULATED
 from mintlang.runtime.dialects.v3.controllers import PROFILES
 
@@ -25,3 +26,9 @@ def test_the_controllers_offered_are_the_v4_guides_and_the_v3_guides() -> None:
 
 def test_the_dialects_offered_are_those_simulated_and_auto() -> None:
     assert _launch_properties()["dialect"]["enum"] == [*(dialect.value for dialect in SIMULATED), AUTO]
+
+
+def test_a_launch_without_stop_on_entry_does_what_the_schema_says(tmp_path: Path) -> None:
+    program = tmp_path / "p.mnt"
+    program.write_text("PRINT 1\n", encoding="utf-8")
+    assert prepare({"program": str(program)}).stop_on_entry is _launch_properties()["stopOnEntry"]["default"]

@@ -52,7 +52,8 @@ def text(
 
 def _why(result: TestResult) -> str:
     if result.verdict is Verdict.ERROR:
-        return f"{result.place}: {result.message}" if result.place else result.message
+        placed = result.place is None or result.message.startswith(result.place)  # a directive's names its line
+        return result.message if placed else f"{result.place}: {result.message}"
     failed = sum(not check.held for check in result.checks)
     if failed:
         return f"{failed} of {len(result.checks)} expectations failed"

@@ -60,7 +60,8 @@ class TestResult:
     stop_failed: bool = False  # the run stopped on an error, a deadlock … that no ``stopped`` expectation asked for
     hint: str | None = None  # the program looks like MintMT, run as v4 by default (``dialect_hint``)
     ignored_directives: tuple[str, ...] = ()  # REM @sim and @expect lines of the configuration file, not applied
-    place: str | None = None  # ``file:line`` of the statement a run that did not end by itself stopped at
+    place: str | None = None  # ``file:line`` of the statement a run that did not end by itself stopped at, or of the
+    # first directive or scenario line that could not be read
 
 
 @record
@@ -81,7 +82,10 @@ def run_case(case: TestCase, options: Options) -> TestResult:
     began = time.perf_counter()
     try:
         return _run(case, options, began)
-    except (OSError, ScenarioFileError, SettingsError, ValueError) as error:
+    except ScenarioFileError as error:  # a directive or scenario line: the Testing view points at its place
+        placed = next((f"{each.source}:{each.line}" for each in error.errors if each.line), None)
+        return _error(case, str(error), began, place=placed)
+    except (OSError, SettingsError, ValueError) as error:
         return _error(case, str(error), began)
 
 

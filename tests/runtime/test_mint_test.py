@@ -301,3 +301,23 @@ def test_verbose_shows_every_expectation_under_its_test(tmp_path: Path) -> None:
 def test_quiet_and_verbose_together_are_a_usage_error(tmp_path: Path) -> None:
     _write(tmp_path, "a_passes.mnt", PASSING)
     assert _mint_test(tmp_path, "-q", "-v").exit_code == 2
+
+
+@pytest.mark.parametrize(
+    ("program", "scenario", "at"),
+    [
+        pytest.param("PRINT 1\nREM @expect x >< 3\n", None, "cell.mnt:2", id="a directive that cannot be read"),
+        pytest.param("PRINT 1\n", '[[expect]]\nwhat = "terminal\n', "cell.scenario.toml:2", id="a line of bad TOML"),
+    ],
+)
+def test_a_test_whose_expectations_cannot_be_read_points_at_the_line(
+    tmp_path: Path, program: str, scenario: str | None, at: str
+) -> None:
+    """The error names the file and line in its message; the JSON report's place, which the editor's Testing
+    view follows, gives the same ``file:line``."""
+    tested = _write(tmp_path, "cell.mnt", program)
+    if scenario is not None:
+        _write(tmp_path, "cell.scenario.toml", scenario)
+    (test,) = json.loads(_mint_test(tested, "--format", "json").output)["tests"]
+    assert (test["verdict"], test["place"]) == ("error", str(tmp_path / at))
+    assert test["message"].startswith(str(tmp_path / at))

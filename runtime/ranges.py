@@ -14,7 +14,7 @@ from typing import TypeVar
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, ValueRange
-from mintlang.keyworddb.supplements import narrowed, whole_only
+from mintlang.keyworddb.supplements import attributes_for, narrowed, whole_only
 from mintlang.records import record
 from mintlang.runtime.errors import MintError
 
@@ -37,10 +37,12 @@ UNBOUNDED = Bounds(None, None, False)
 
 def table_bounds(keyword: str, controller: Controller, dialect: Dialect = Dialect.V4) -> Bounds:
     """The range the keyword's attributes table gives for ``controller``, as its entry's text may narrow it
-    (``supplements.narrowed``); unbounded when it gives none. A MintMT keyword's row is the one
-    ``mint check`` reads too, written from ``mintlang/MINTMT.md``'s decisions."""
+    (``supplements.narrowed``); unbounded when it gives none. The row is the one ``mint check`` reads
+    (``supplements.attributes_for``): a MintMT keyword's is written from ``mintlang/MINTMT.md``'s decisions,
+    and an entry that prints no table (an Advanced-guide keyword: MOVEBUFFERSIZE, KACCEL) takes the
+    supplement's."""
     record = database().keywords_of(dialect).get(keyword)
-    row = record.attributes_for(controller) if record is not None else None
+    row = attributes_for(record, controller, dialect) if record is not None else None
     found = narrowed(keyword, row.range if row is not None else None)
     bounds = UNBOUNDED if found is None else bounds_of(found)
     return replace(bounds, whole=True) if whole_only(keyword, dialect) else bounds

@@ -15,8 +15,8 @@ from functools import cache
 from types import MappingProxyType
 
 from mintlang.keyworddb.model import Controller
-from mintlang.keyworddb.supplements import POSITIVE_ONLY, SUPPLEMENTS, whole_only
-from mintlang.runtime.ranges import Bounds, bounds_of, table_bounds, table_default
+from mintlang.keyworddb.supplements import POSITIVE_ONLY
+from mintlang.runtime.ranges import Bounds, table_bounds, table_default
 
 # Servo-axis defaults from the DEFAULT table, in counts (SCALE 1). Where the keyword entry and the
 # table disagree the table wins (HOMESPEED 40000, HOMEINPUT -1, MASTERDISTANCE 1000: spec HM-2, FG-2).
@@ -81,13 +81,6 @@ GAINS: frozenset[str] = frozenset(
 )
 
 
-# Ranges the keyword database cannot give (Advanced-guide keywords): the rows ``mint check`` takes too, so both
-# tools refuse the same values; the profiler and the error checks rely on them.
-_KNOWN_RANGES: Mapping[str, Bounds] = MappingProxyType(
-    {name: bounds_of(row.range) for name, row in SUPPLEMENTS.items() if row.range is not None}
-)
-
-
 @cache
 def power_up(controller: Controller) -> Mapping[str, float]:
     """An axis's parameters at power-up (and after DEFAULT) on ``controller``: the DEFAULT table's, with
@@ -105,9 +98,6 @@ def bounds(keyword: str, controller: Controller) -> Bounds:
     the "0 to" a user would try next. ``ENCODERSCALE`` too (NextMove's table: 0.0 <= x, 000:9727):
     it divides the counts into ENCODER's units as SCALE divides them into POS's (000:9731-9735).
     """
-    known = _KNOWN_RANGES.get(keyword)
-    if known is not None:
-        return replace(known, whole=whole_only(keyword))  # MOVEBUFFERSIZE's count, as table_bounds holds it
     table = table_bounds(keyword, controller)
     if keyword in POSITIVE_ONLY and (table.minimum is None or table.minimum <= 0):
         return replace(table, minimum=0.0, exclusive_minimum=True)

@@ -82,17 +82,12 @@ def carry_model(
     configured = [(Unit.CONFIGURATION, configuration.placed)] if configuration is not None else []
     files = [*configured, (Unit.PROGRAM, program.placed)]
     previous_lines = previous.lines_if_made()
-    if structure is not None:
-        structures = {**previous.structures, Unit.PROGRAM: structure}
-        if previous_lines is None:
-            return SemanticModel(program, configuration, controller, structures, carried)
-        lines = previous_lines.edited(files, change)
-        return SemanticModel.of(program, configuration, controller, structures, lines=lines, carried=carried)
-    lines = IndexedLines(files) if previous_lines is None else previous_lines.edited(files, change)
-    structures = {
-        **previous.structures,
-        Unit.PROGRAM: match_blocks(lines.of(Unit.PROGRAM), controller, program.dialect),
-    }
+    lines = previous_lines.edited(files, change) if previous_lines is not None else None
+    if structure is None:  # the blocks are matched anew, from the lines
+        if lines is None:
+            lines = IndexedLines(files)
+        structure = match_blocks(lines.of(Unit.PROGRAM), controller, program.dialect)
+    structures = {**previous.structures, Unit.PROGRAM: structure}
     return SemanticModel.of(program, configuration, controller, structures, lines=lines, carried=carried)
 
 

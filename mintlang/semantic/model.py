@@ -49,12 +49,14 @@ class SemanticModel:
         controller: ControllerProfile,
         structures: Mapping[Unit, Structure],
         *,
-        lines: IndexedLines,
+        lines: IndexedLines | None,
         carried: Carried | None = None,
     ) -> SemanticModel:
-        """A model whose ``lines`` are known already (as matching the blocks needed them)."""
+        """A model whose ``lines`` are known already (as matching the blocks needed them); None: made when
+        first read."""
         model = cls(program, configuration, controller, structures, carried)
-        model.__dict__["lines"] = lines  # what ``cached_property`` would have kept
+        if lines is not None:
+            model.__dict__["lines"] = lines  # what ``cached_property`` would have kept
         return model
 
     @cached_property

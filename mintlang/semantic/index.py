@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Hashable, Iterable, Iterator, Sequence
 from enum import StrEnum
+from functools import partial
 from itertools import chain, compress, count, repeat
 from operator import attrgetter, not_
 from typing import NamedTuple, overload
@@ -238,7 +239,7 @@ class IndexedLines(Sequence[IndexedLine]):
 
     def with_kinds(self, kinds: frozenset[type]) -> Iterator[IndexedLine]:
         """The lines with a statement of one of ``kinds`` (IF .. THEN bodies included)."""
-        return self._selected(lambda facts: map(not_, map(kinds.isdisjoint, map(_KINDS, facts))))
+        return self._selected(partial(_having, kinds))
 
     def _selected(self, selectors: Callable[[Sequence[LineFacts]], Iterable[object]]) -> Iterator[IndexedLine]:
         """The lines whose selector, one per index of a file's lines, is true."""
@@ -249,7 +250,7 @@ class IndexedLines(Sequence[IndexedLine]):
     def places_with_kinds(self, unit: Unit, kinds: frozenset[type]) -> Iterator[int]:
         """Where in ``unit``'s lines those with a statement of one of ``kinds`` are, as indices."""
         facts = next((facts for file, _, facts in self._files if file is unit), ())
-        return compress(count(), map(not_, map(kinds.isdisjoint, map(_KINDS, facts))))
+        return compress(count(), _having(kinds, facts))
 
     def of(self, unit: Unit) -> Iterator[tuple[n.PlacedLine, LineFacts]]:
         """The lines of one file with their indexes."""
@@ -262,6 +263,11 @@ class IndexedLines(Sequence[IndexedLine]):
     def __getitem__(self, index: slice) -> Sequence[IndexedLine]: ...
     def __getitem__(self, index: int | slice) -> IndexedLine | Sequence[IndexedLine]:
         return tuple(self)[index]  # whole-file passes iterate; a place is read rarely
+
+
+def _having(kinds: frozenset[type], facts: Iterable[LineFacts]) -> Iterator[bool]:
+    """For each line's index, whether the line has a statement of one of ``kinds``: in C, for every line."""
+    return map(not_, map(kinds.isdisjoint, map(_KINDS, facts)))
 
 
 def line_facts(unit: Unit, line: n.PlacedLine) -> LineFacts:

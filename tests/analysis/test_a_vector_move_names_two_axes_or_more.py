@@ -9,11 +9,7 @@ from __future__ import annotations
 import pytest
 
 import mintlang
-
-
-def _errors(source: str, dialect: str = "v4") -> list[tuple[str, str]]:
-    found = mintlang.check_application(source, dialect=dialect).program
-    return [(d.code, source[d.span.start : d.span.end]) for d in found if d.code[0] == "E"]
+from tests.analysis.placed import placed
 
 
 @pytest.mark.parametrize(
@@ -25,14 +21,14 @@ def _errors(source: str, dialect: str = "v4") -> list[tuple[str, str]]:
     ],
 )
 def test_one_axis_is_a_missing_parameter(source: str, dialect: str, written: str) -> None:
-    assert _errors(source, dialect) == [("E2001", written)]
+    assert placed(source, "code", "text", codes="E", dialect=dialect) == [("E2001", written)]
 
 
 @pytest.mark.parametrize(
     "source", ["VECTORR[1,2] = 100,200\n", "VECTORA[0,1,2] = 1,2,3\n", "VECTORR[0,1,2,3] = 10,20,30,40\n"]
 )
 def test_two_axes_or_more_are_valid(source: str) -> None:
-    assert _errors(source) == []
+    assert placed(source, "code", "text", codes="E") == []
 
 
 def test_the_message_says_what_is_missing() -> None:
@@ -45,8 +41,8 @@ def test_the_message_says_what_is_missing() -> None:
     [("VECTORA[0,1] = 5\n", "5"), ("AXES[0,1]\nVECTORR = 7\n", "7")],
 )
 def test_one_position_is_a_missing_parameter(source: str, written: str) -> None:
-    assert _errors(source) == [("E2001", written)]
+    assert placed(source, "code", "text", codes="E") == [("E2001", written)]
 
 
 def test_fewer_positions_than_axes_but_two_are_valid() -> None:
-    assert _errors("VECTORA[0,1,2] = 1, 2\n") == []
+    assert placed("VECTORA[0,1,2] = 1, 2\n", "code", "text", codes="E") == []

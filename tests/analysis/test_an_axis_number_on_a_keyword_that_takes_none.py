@@ -17,17 +17,7 @@ from __future__ import annotations
 
 import pytest
 
-import mintlang
-
-
-def _errors(source: str) -> list[tuple[str, int, str]]:
-    """Each error's code, line and the text its span covers."""
-    index = mintlang.LineIndex(source)
-    return [
-        (d.code, index.position(d.span.start).line, source[d.span.start : d.span.end])
-        for d in mintlang.check(source, controller="nextmove-pci")
-        if d.code.startswith("E")
-    ]
+from tests.analysis.placed import placed
 
 
 @pytest.mark.parametrize(
@@ -44,15 +34,15 @@ def _errors(source: str) -> list[tuple[str, int, str]]:
     ],
 )
 def test_the_number_is_a_syntax_error_where_it_is_written(line: str, addressed: str) -> None:
-    assert _errors(f"DIM a\n{line}\nPRINT a\n") == [("E2003", 2, addressed)]
+    assert placed(f"DIM a\n{line}\nPRINT a\n", "code", "line", "text", codes="E") == [("E2003", 2, addressed)]
 
 
 def test_a_parameter_alone_with_a_number_is_also_given_no_value() -> None:
     # TIME.5 as a statement: the number is 2003, and a parameter alone is 2005 "No expression" (000:18930-18934)
-    assert sorted(_errors("TIME.5\n")) == [("E2003", 1, ".5"), ("E2005", 1, "TIME")]
+    assert sorted(placed("TIME.5\n", "code", "line", "text", codes="E")) == [("E2003", 1, ".5"), ("E2005", 1, "TIME")]
 
 
 @pytest.mark.parametrize("line", ["a = TIME", "TIME = 0", "a = INKEY.1", "a = POS.1", "a = ADC.1"])
 def test_a_keyword_that_takes_its_number_or_none_is_not_flagged(line: str) -> None:
     # INKEY takes a terminal channel by dot (000:2044-2047), POS an axis, ADC a channel (000:705)
-    assert _errors(f"DIM a\n{line}\nPRINT a\n") == []
+    assert placed(f"DIM a\n{line}\nPRINT a\n", "code", "line", "text", codes="E") == []

@@ -14,13 +14,7 @@ from __future__ import annotations
 import pytest
 
 import mintlang
-
-
-def _findings(source: str) -> list[tuple[str, str, int]]:
-    return [
-        (finding.code, source[finding.span.start : finding.span.end], len(finding.fixes))
-        for finding in mintlang.check(source)
-    ]
+from tests.analysis.placed import placed
 
 
 @pytest.mark.parametrize(
@@ -31,7 +25,7 @@ def _findings(source: str) -> list[tuple[str, str, int]]:
     ],
 )
 def test_an_array_camtable_takes_is_not_declared_by_a_bare_dim(source: str, name: str) -> None:
-    assert _findings(source) == [("E3001", name, 0)]
+    assert placed(source, "code", "text", "fixes") == [("E3001", name, 0)]
 
 
 def test_a_name_given_elsewhere_is_still_declared() -> None:

@@ -16,12 +16,9 @@ import pytest
 
 import mintlang
 from mintlang.fixes import fix_text
+from tests.analysis.placed import placed
 
 HANDLER = "#TIMER\nPRINT tbl(1), b, m\nRETURN\n"
-
-
-def _codes(source: str) -> list[tuple[str, str]]:
-    return [(finding.code, source[finding.span.start : finding.span.end]) for finding in mintlang.check(source)]
 
 
 @pytest.mark.parametrize(
@@ -33,16 +30,16 @@ def _codes(source: str) -> list[tuple[str, str]]:
 )
 def test_declarations_after_an_endless_loop_are_not_dead_code(compiled: str) -> None:
     source = "TIMEREVENT = 50\nLOOP\nENDL\n" + compiled + HANDLER
-    assert _codes(source) == []
+    assert placed(source, "code", "text") == []
 
 
 def test_the_fix_removes_the_dead_code_around_a_declaration_and_keeps_it() -> None:
     source = "TIMEREVENT = 50\nEND\nPRINT 1\nDIM tbl(3) = 10, 20, 30\nPRINT 2\nDIM b\nDEFINE m = 5\n" + HANDLER
-    assert _codes(source) == [("W106", "PRINT 1"), ("W106", "PRINT 2")]
+    assert placed(source, "code", "text") == [("W106", "PRINT 1"), ("W106", "PRINT 2")]
     fixed = fix_text(source, mintlang.check, unsafe=True)
     assert fixed.text == "TIMEREVENT = 50\nEND\nDIM tbl(3) = 10, 20, 30\nDIM b\nDEFINE m = 5\n" + HANDLER
 
 
 def test_a_variables_value_after_end_is_dead_code() -> None:
     source = "END\nDIM b = 10\n#TIMER\nPRINT b\nRETURN\n"
-    assert _codes(source) == [("W106", "DIM b = 10")]
+    assert placed(source, "code", "text") == [("W106", "DIM b = 10")]

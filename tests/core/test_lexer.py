@@ -15,6 +15,7 @@ from mintlang.keyworddb.model import Controller
 from mintlang.syntax import nodes as n
 from mintlang.syntax.tokens import TRIVIA, TokenKind
 from mintlang.syntax.vocabulary import vocabulary
+from tests.analysis.placed import placed
 
 K = TokenKind
 
@@ -34,12 +35,6 @@ def assigned_value(source: str) -> n.Expression:
     value = statement.values[0]
     assert value is not None
     return value
-
-
-def diagnostics(source: str) -> list[tuple[str, Severity, str]]:
-    """The lexer's and parser's diagnostics as (code, severity, the source text they cover)."""
-    document = mintlang.parse(source)
-    return [(d.code, d.severity, source[d.span.start : d.span.end]) for d in document.diagnostics]
 
 
 def apply(source: str, edits) -> str:
@@ -88,18 +83,23 @@ def test_a_leading_zero_number_with_other_digits_than_0_and_1_is_a_syntax_error(
     # line 756: "a = 05 ... is an invalid binary number and will generate a syntax error"
     source = "a = 05\n"
     assert (K.INVALID, "05") in significant(source)
-    assert diagnostics(source) == [("E2003", Severity.ERROR, "05")]
+    assert placed(source, "code", "severity", "text", found=mintlang.parse(source).diagnostics) == [
+        ("E2003", Severity.ERROR, "05")
+    ]
 
 
 def test_print_of_an_invalid_binary_number_is_a_syntax_error() -> None:
     # line 758: PRINT 05
-    assert diagnostics("PRINT 05\n") == [("E2003", Severity.ERROR, "05")]
+    source = "PRINT 05\n"
+    assert placed(source, "code", "severity", "text", found=mintlang.parse(source).diagnostics) == [
+        ("E2003", Severity.ERROR, "05")
+    ]
 
 
 @pytest.mark.parametrize("source", ["a = 0x\n", "a = 0xFG\n", "a = 1_000\n"])
 def test_malformed_numbers_are_syntax_errors(source: str) -> None:
     # "_" separates digits only in binary and hexadecimal numbers (line 778)
-    assert [code for code, _, _ in diagnostics(source)] == ["E2003"]
+    assert [d.code for d in mintlang.parse(source).diagnostics] == ["E2003"]
 
 
 # ------------------------------------------------------- character constants
@@ -115,7 +115,7 @@ def test_character_constants_have_the_upper_case_ascii_code(source: str) -> None
 
 
 def test_a_character_constant_of_two_characters_is_a_syntax_error() -> None:
-    assert {code for code, _, _ in diagnostics("a = 'AB'\n")} == {"E2003"}
+    assert {d.code for d in mintlang.parse("a = 'AB'\n").diagnostics} == {"E2003"}
 
 
 # ---------------------------------------------------------------- labels and #
@@ -142,7 +142,7 @@ def test_a_label_after_a_statement_is_not_a_label_and_is_a_syntax_error() -> Non
     source = "a = 10 : #label1\n"
     assert (K.LABEL, "#label1") not in significant(source)
     assert significant(source)[-2:] == [(K.HASH, "#"), (K.NAME, "label1")]
-    assert [code for code, _, _ in diagnostics(source)] == ["E2003"]
+    assert [d.code for d in mintlang.parse(source).diagnostics] == ["E2003"]
 
 
 # ---------------------------------------------------------- dots and numbers
@@ -183,7 +183,7 @@ def test_rem_comments_out_the_rest_of_the_line() -> None:
     tokens = [(t.kind, t.text) for t in mintlang.parse(source).tokens]
     assert (K.COMMENT, "REM This also prints a blank line") in tokens
     assert significant(source) == [(K.PRINT, "PRINT"), (K.KEYWORD, "SPEED"), (K.EQUAL, "="), (K.NUMBER, "1")]
-    assert diagnostics(source) == []
+    assert placed(source, "code", "severity", "text", found=mintlang.parse(source).diagnostics) == []
 
 
 @pytest.mark.parametrize("word", ["REMOTEIN", "REMOTEOUT"])
@@ -259,7 +259,9 @@ def test_typographic_single_quotes_are_accepted_with_a_warning_and_a_fix() -> No
 
 def test_an_unterminated_string_is_a_syntax_error_up_to_the_end_of_the_line() -> None:
     source = 'PRINT "abc\nPRINT "ok"\n'
-    assert diagnostics(source) == [("E2003", Severity.ERROR, '"abc')]
+    assert placed(source, "code", "severity", "text", found=mintlang.parse(source).diagnostics) == [
+        ("E2003", Severity.ERROR, '"abc')
+    ]
     assert significant(source)[-1] == (K.STRING, '"ok"')
 
 

@@ -11,6 +11,7 @@ import pytest
 import mintlang
 from mintlang import Severity
 from mintlang.syntax import nodes as n
+from tests.analysis.placed import placed
 
 
 def statements(source: str) -> list[n.Statement]:
@@ -50,12 +51,6 @@ def value_shape(expression_text: str) -> str:
     statement = only_statement(f"x = {expression_text}\n")
     assert isinstance(statement, n.Assignment)
     return shape(statement.value)
-
-
-def errors(source: str) -> list[tuple[str, str]]:
-    """Parse diagnostics as (code, the text their span covers)."""
-    document = mintlang.parse(source)
-    return [(d.code, source[d.span.start : d.span.end]) for d in document.diagnostics]
 
 
 def text_of(source: str, node) -> str:
@@ -373,8 +368,9 @@ def test_lines_after_a_syntax_error_are_parsed() -> None:
     ],
 )
 def test_parse_errors_carry_the_controllers_error_numbers(source: str, expected: list[tuple[str, str]]) -> None:
-    assert errors(source) == expected
-    assert all(d.severity is Severity.ERROR for d in mintlang.parse(source).diagnostics)
+    found = mintlang.parse(source).diagnostics
+    assert placed(source, "code", "text", found=found) == expected
+    assert all(d.severity is Severity.ERROR for d in found)
 
 
 @pytest.mark.parametrize(

@@ -11,18 +11,12 @@ from __future__ import annotations
 
 import pytest
 
-import mintlang
 from mintlang.runtime.run import Limits, run_source
 from mintlang.runtime.scenario import DrivesEnabled, Scenario
+from tests.analysis.placed import placed
 
 _ENABLED = Scenario(drives=(DrivesEnabled(),))
 _BUFFER = "MOVEBUFFERSIZE(0) = 4\n"
-
-
-def _found(line: str, controller: str) -> list[tuple[str, str]]:
-    source = _BUFFER + line + "\n"
-    found = mintlang.check(source, dialect="mintmt", controller=controller)
-    return [(d.code, source[d.span.start : d.span.end]) for d in found if d.code.startswith("E")]
 
 
 @pytest.mark.parametrize(
@@ -38,11 +32,10 @@ def _found(line: str, controller: str) -> list[tuple[str, str]]:
     ],
 )
 def test_a_value_the_run_refuses_is_error_3_in_the_check(controller: str, line: str, at: str) -> None:
-    assert _found(line, controller) == [("E0003", at)]
+    source = _BUFFER + line + "\n"
+    assert placed(source, "code", "text", codes="E", dialect="mintmt", controller=controller) == [("E0003", at)]
     limits = Limits(until_ms=1000, max_wall_s=60.0)
-    result = run_source(
-        _BUFFER + line + "\n", dialect="mintmt", controller=controller, scenario=_ENABLED, limits=limits
-    )
+    result = run_source(source, dialect="mintmt", controller=controller, scenario=_ENABLED, limits=limits)
     assert (result.err, result.erl) == (3, 2)
 
 
@@ -56,4 +49,5 @@ def test_a_value_the_run_refuses_is_error_3_in_the_check(controller: str, line: 
     ],
 )
 def test_a_value_in_range_is_clean(controller: str, line: str) -> None:
-    assert _found(line, controller) == []
+    source = _BUFFER + line + "\n"
+    assert placed(source, "code", "text", codes="E", dialect="mintmt", controller=controller) == []

@@ -13,14 +13,10 @@ from __future__ import annotations
 
 import pytest
 
-import mintlang
 from mintlang.runtime.run import run_source
+from tests.analysis.placed import placed
 
 HANDLER = 'END\n#ONERROR\nPRINT ERR, " ", OUT.1\nRETURN\n'
-
-
-def _found(source: str, dialect: str) -> list[tuple[str, str]]:
-    return [(d.code, source[d.span.start : d.span.end]) for d in mintlang.check(source, dialect=dialect)]
 
 
 @pytest.mark.parametrize(
@@ -36,7 +32,7 @@ def _found(source: str, dialect: str) -> list[tuple[str, str]]:
     ],
 )
 def test_a_second_value_is_too_many_parameters(dialect: str, line: str, second: str) -> None:
-    assert _found(line + "\n", dialect) == [("E2017", second)]
+    assert placed(line + "\n", "code", "text", dialect=dialect) == [("E2017", second)]
     result = run_source(f"{line}\n{HANDLER}", controller="nextmove-pci", dialect=dialect)
     assert result.terminal.startswith("2017 0\n")
 
@@ -50,4 +46,4 @@ def test_a_second_value_is_too_many_parameters(dialect: str, line: str, second: 
     ],
 )
 def test_what_the_formats_show_is_no_error(line: str) -> None:
-    assert [code for code, _ in _found(line + "\n", "v4") if code == "E2017"] == []
+    assert placed(line + "\n", "code", "text", codes="E2017") == []

@@ -16,7 +16,8 @@ changes: those it sends unchanged keep their count. A log message prints
 instead of stopping, each ``{expression}`` in it replaced by its value. A
 breakpoint on a label (the editor's function breakpoints: ``TIMER``,
 ``ONERROR``, ``IN3``, a subroutine) stops where the label's code starts, so at
-each event the handler serves.
+each event the handler serves. A breakpoint the request gets wrong (a line before
+1, a condition that is not text) is unverified with why, and the request's others are set.
 """
 
 from __future__ import annotations
@@ -43,6 +44,7 @@ _TESTS: Mapping[str, Callable[[int, int], bool]] = {
 }
 _PLACEHOLDER = re.compile(r"\{([^{}]*)\}")
 FUNCTIONS = "functions"  # the group of breakpoints on labels
+_TEXTS = ("condition", "hitCondition", "logMessage")  # a breakpoint's fields that are text
 
 
 def hit_test(text: str) -> Callable[[int], bool]:
@@ -110,7 +112,11 @@ class Breakpoints:
         lines = sorted(line for found_unit, line in self.first_of_line if found_unit == unit)
         placed = []
         for request in requests:
-            requested = int(request.get("line", 0))
+            requested = request.get("line")
+            if not isinstance(requested, int) or isinstance(requested, bool) or requested < 1:
+                why = f"a breakpoint's line is a whole number from 1, not {requested!r}"
+                placed.append(self._made(request, unit, 0, None, why))
+                continue
             line = next((line for line in lines if line >= requested), None)
             if line is None:
                 placed.append(self._made(request, unit, requested, None, f"no statement at or after line {requested}"))
@@ -138,10 +144,10 @@ class Breakpoints:
         line = self.sites[pc].line if pc is not None else None
         breakpoint_ = Breakpoint(self.next_id, unit, requested, line, pc)
         self.next_id += 1
-        breakpoint_.condition = request.get("condition") or None
-        breakpoint_.hit_condition = request.get("hitCondition") or None
-        breakpoint_.log_message = request.get("logMessage") or None
-        breakpoint_.problem = problem or self._unreadable(breakpoint_)
+        breakpoint_.condition = _text(request, "condition")
+        breakpoint_.hit_condition = _text(request, "hitCondition")
+        breakpoint_.log_message = _text(request, "logMessage")
+        breakpoint_.problem = problem or _not_text(request) or self._unreadable(breakpoint_)
         return breakpoint_
 
     def _unreadable(self, breakpoint_: Breakpoint) -> str | None:
@@ -209,6 +215,22 @@ class Breakpoints:
         if breakpoint_.log_message is not None and description is None:
             return Decision(stop=False, log=interpolate(breakpoint_.log_message, evaluator))
         return Decision(stop=True, description=description)
+
+
+def _text(request: Mapping[str, Any], name: str) -> str | None:
+    """A breakpoint's ``condition``, ``hitCondition`` or ``logMessage``; None when absent, empty or not text."""
+    value = request.get(name)
+    return value if isinstance(value, str) and value else None
+
+
+def _not_text(request: Mapping[str, Any]) -> str | None:
+    """Why one breakpoint of a request is not set as sent: a condition, hit condition or log message that is
+    not text leaves that breakpoint unverified, while the request's others are set."""
+    for name in _TEXTS:
+        value = request.get(name)
+        if value is not None and not isinstance(value, str):
+            return f"a breakpoint's {name!r} is text, not {value!r}"
+    return None
 
 
 def _key(breakpoint_: Breakpoint) -> tuple[int | None, str | None, str | None, str | None]:

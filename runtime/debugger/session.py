@@ -218,8 +218,6 @@ class Session:
         if requested is None:
             requested = [{"line": line} for line in _listed(arguments.get("lines", []), "lines")]
         requested = _objects(requested, "breakpoints")
-        for request in requested:
-            _whole(request.get("line"), "a breakpoint's 'line'")
         if unit is None:
             problem = "not part of the program being debugged"
             return {"breakpoints": [{"verified": False, "message": problem} for _ in requested]}

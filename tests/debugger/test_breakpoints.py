@@ -25,6 +25,31 @@ def test_a_breakpoint_on_a_line_without_a_statement_binds_to_the_next_that_has_o
     assert "no statement" in placed[2]["message"]
 
 
+MALFORMED = [
+    pytest.param({"line": -3}, "not -3", id="a line before the first"),
+    pytest.param({"line": 0}, "not 0", id="line 0, the client counting lines from 1"),
+    pytest.param({"line": "6"}, "not '6'", id="a line written as text"),
+    pytest.param({}, "not None", id="no line"),
+    pytest.param({"line": 6, "condition": 5}, "'condition' is text", id="a condition that is not text"),
+    pytest.param({"line": 6, "hitCondition": 3}, "'hitCondition' is text", id="a hit condition that is not text"),
+    pytest.param({"line": 6, "logMessage": 7}, "'logMessage' is text", id="a log message that is not text"),
+]
+
+
+@pytest.mark.parametrize(("malformed", "why"), MALFORMED)
+def test_a_breakpoint_it_cannot_set_is_unverified_and_the_requests_others_are_set(
+    debug: Debug, malformed: dict[str, object], why: str
+) -> None:
+    """The response has one breakpoint per one asked for, in their order: a bad one fails alone."""
+    client = debug(PROGRAM, stopOnEntry=True)
+    client.stopped()
+    bad, good = client.set_breakpoints(malformed, 6)
+    assert (bad["verified"], good["verified"], good["line"]) == (False, True, 6)
+    assert why in bad["message"]
+    assert client.step("continue")["reason"] == "breakpoint"
+    assert client.line() == 6
+
+
 def test_a_breakpoint_stops_once_per_pass_over_its_line(debug: Debug) -> None:
     client = debug(PROGRAM, breakpoints=(6,))
     hits = []

@@ -82,12 +82,21 @@ test("comments toggle as 'REM ': a bare REM would take REMOTEIN.1 = 5 for a comm
   assert.equal(configuration.comments.blockComment, undefined);
 });
 
-test("plain quotes pair up; typographic ones are highlighted but not typed, as the controller rejects them", () => {
+test("double quotes pair up; typographic ones are highlighted but not typed, as the controller rejects them", () => {
   const pairs = configuration.autoClosingPairs.map(({ open, close }) => open + close);
-  assert.deepEqual(pairs, ["()", "[]", "\"\"", "''"]);
+  assert.deepEqual(pairs, ["()", "[]", "\"\""]);
   for (const quote of ["\u201c", "\u2018"]) {
     assert.ok(!pairs.some((pair) => pair.includes(quote)), quote);
   }
+});
+
+test("a single quote neither closes nor surrounds: it starts a comment (004's ' Wait until …), not a pair", () => {
+  // A pair's notIn cannot help: as ' is typed to start a comment, the text before it is code, so
+  // x = 1 ' became x = 1 '' and every comment began with a stray quote.
+  const opens = configuration.autoClosingPairs.map(({ open }) => open);
+  const surrounds = configuration.surroundingPairs.map(([open]) => open);
+  assert.ok(!opens.includes("'"), "autoClosingPairs");
+  assert.ok(!surrounds.includes("'"), "surroundingPairs");
 });
 
 // MintMT's blocks (004's examples): a multi-line If … Then ends at EndIf or End If, Loop at End Loop,

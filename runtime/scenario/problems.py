@@ -22,9 +22,13 @@ class ScenarioError:
     message: str
     column: int = 0
 
+    @property
+    def place(self) -> str | None:
+        """``file:line``, as ``mint test`` places a stop; none for a mistake of the whole file."""
+        return f"{self.source}:{self.line}" if self.line else None
+
     def __str__(self) -> str:
-        where = f"{self.source}:{self.line}" if self.line else self.source
-        where += f":{self.column}" if self.line and self.column else ""
+        where = self.source if self.place is None else self.place + (f":{self.column}" if self.column else "")
         return f"{where}: {self.message}"
 
 

@@ -52,12 +52,19 @@ def text(
 
 def _why(result: TestResult) -> str:
     if result.verdict is Verdict.ERROR:
-        placed = result.place is None or result.message.startswith(result.place)  # a directive's names its line
-        return result.message if placed else f"{result.place}: {result.message}"
+        return _error(result)
     failed = sum(not check.held for check in result.checks)
     if failed:
         return f"{failed} of {len(result.checks)} expectations failed"
     return _stop(result)
+
+
+def _error(result: TestResult) -> str:
+    """Why a test is an error, where it is: each directive or scenario mistake at its own place (its column
+    too), or the message after the place the run stopped at."""
+    if result.problems:
+        return "\n".join(str(problem) for problem in result.problems)
+    return f"{result.place}: {result.message}" if result.place else result.message
 
 
 def _stop(result: TestResult) -> str:

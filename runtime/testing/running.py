@@ -15,6 +15,7 @@ from mintlang.runtime.run import run_source
 from mintlang.runtime.scenario import (
     Outcome,
     Scenario,
+    ScenarioError,
     ScenarioFileError,
     expectations_pass,
     load_scenario,
@@ -62,6 +63,7 @@ class TestResult:
     ignored_directives: tuple[str, ...] = ()  # REM @sim and @expect lines of the configuration file, not applied
     place: str | None = None  # ``file:line`` of the statement a run that did not end by itself stopped at, or of the
     # first directive or scenario line that could not be read
+    problems: tuple[ScenarioError, ...] = ()  # the directive and scenario mistakes ``message`` lists, each at its place
 
 
 @record
@@ -83,8 +85,8 @@ def run_case(case: TestCase, options: Options) -> TestResult:
     try:
         return _run(case, options, began)
     except ScenarioFileError as error:  # a directive or scenario line: the Testing view points at its place
-        placed = next((f"{each.source}:{each.line}" for each in error.errors if each.line), None)
-        return _error(case, str(error), began, place=placed)
+        place = next((each.place for each in error.errors if each.place), None)
+        return _error(case, str(error), began, place=place, problems=error.errors)
     except (OSError, SettingsError, ValueError) as error:
         return _error(case, str(error), began)
 
@@ -179,8 +181,19 @@ def _error(
     hint: str | None = None,
     ignored: tuple[str, ...] = (),
     place: str | None = None,
+    problems: tuple[ScenarioError, ...] = (),
 ) -> TestResult:
     elapsed = time.perf_counter() - began
     return TestResult(
-        case, Verdict.ERROR, stopped, message, (), 0, elapsed, hint=hint, ignored_directives=ignored, place=place
+        case,
+        Verdict.ERROR,
+        stopped,
+        message,
+        (),
+        0,
+        elapsed,
+        hint=hint,
+        ignored_directives=ignored,
+        place=place,
+        problems=problems,
     )

@@ -311,7 +311,8 @@ class Session:
         assert execution.evaluator is not None
         found = []
         for name, node, count in scopes(controller, execution.evaluator, self.spellings):
-            scope: dict[str, Any] = {"name": name, "variablesReference": self.references.add(node), "expensive": False}
+            reference = self.references.add(node, count > 0)
+            scope: dict[str, Any] = {"name": name, "variablesReference": reference, "expensive": False}
             if count:
                 scope["indexedVariables"] = count
             found.append(scope)
@@ -322,8 +323,11 @@ class Session:
         reference = _whole(arguments.get("variablesReference"), "'variablesReference'")
         count = arguments.get("count")
         count = None if count is None else _whole(count, "'count'")
+        kind = arguments.get("filter")
+        if kind not in (None, "named", "indexed"):
+            raise RequestError(f"'filter' is named or indexed, not {kind!r}")
         try:
-            listed = self.references.listed(reference, _whole(arguments.get("start"), "'start'"), count)
+            listed = self.references.listed(reference, _whole(arguments.get("start"), "'start'"), count, kind)
         except KeyError:
             raise RequestError(f"no variables under reference {reference} at this stop") from None
         return {"variables": listed}

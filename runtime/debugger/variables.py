@@ -276,24 +276,34 @@ class References:
 
     def __init__(self) -> None:
         self.nodes: dict[int, Node] = {}
+        self.indexed: set[int] = set()  # the references whose children are all indexed (elements), none named
 
     def clear(self) -> None:
         self.nodes.clear()
+        self.indexed.clear()
 
-    def add(self, node: Node) -> int:
+    def add(self, node: Node, indexed: bool = False) -> int:
         reference = len(self.nodes) + 1
         self.nodes[reference] = node
+        if indexed:
+            self.indexed.add(reference)
         return reference
 
-    def listed(self, reference: int, start: int, count: int | None) -> list[dict[str, Any]]:
-        """The ``variables`` response's list for ``reference``; ``KeyError`` for one this stop never gave."""
-        return [self.as_dap(variable) for variable in self.nodes[reference].children(start, count)]
+    def listed(self, reference: int, start: int, count: int | None, kind: str | None = None) -> list[dict[str, Any]]:
+        """The ``variables`` response's list for ``reference``; ``KeyError`` for one this stop never gave.
+
+        ``kind`` is the request's filter, ``named`` or ``indexed``: a node's children are all of one kind,
+        so the other kind lists none (a client that asks for an array's named children gets no elements)."""
+        node = self.nodes[reference]
+        if kind is not None and (kind == "indexed") != (reference in self.indexed):
+            return []
+        return [self.as_dap(variable) for variable in node.children(start, count)]
 
     def as_dap(self, variable: Variable) -> dict[str, Any]:
         body: dict[str, Any] = {
             "name": variable.name,
             "value": variable.value,
-            "variablesReference": self.add(variable.node) if variable.node is not None else 0,
+            "variablesReference": self.add(variable.node, variable.indexed > 0) if variable.node is not None else 0,
         }
         if variable.evaluate_name is not None:
             body["evaluateName"] = variable.evaluate_name

@@ -134,8 +134,8 @@ def test_a_launch_it_cannot_start_says_why(tmp_path: Path) -> None:
 
 
 def test_a_malformed_request_is_refused_with_what_it_should_have_been(debug: Debug) -> None:
-    # DAP: a stack trace's startFrame and levels are numbers; breakpoints a list (a bad line fails its breakpoint
-    # alone: test_breakpoints)
+    # DAP: a stack trace's startFrame and levels are numbers; breakpoints a list; a variables filter named or
+    # indexed (a bad line fails its breakpoint alone: test_breakpoints)
     client = debug("DIM x\nx = 1\n", stopOnEntry=True)
     client.stopped()
     source = {"path": str(client.program)}
@@ -144,6 +144,7 @@ def test_a_malformed_request_is_refused_with_what_it_should_have_been(debug: Deb
         "objects": client.request("setFunctionBreakpoints", {"breakpoints": ["TIMER"]}),
         "startFrame": client.request("stackTrace", {"threadId": 1, "startFrame": "x"}),
         "start": client.request("variables", {"variablesReference": 1, "start": "first"}),
+        "filter": client.request("variables", {"variablesReference": 1, "filter": "all"}),
         "reference": client.request("setVariable", {"variablesReference": "x", "name": "x", "value": "2"}),
     }
     assert {name: response["message"] for name, response in refused.items()} == {
@@ -151,6 +152,7 @@ def test_a_malformed_request_is_refused_with_what_it_should_have_been(debug: Deb
         "objects": "'breakpoints' is a list of objects",
         "startFrame": "'startFrame' is a whole number, 0 or more, not 'x'",
         "start": "'start' is a whole number, 0 or more, not 'first'",
+        "filter": "'filter' is named or indexed, not 'all'",
         "reference": "'variablesReference' is a whole number, 0 or more, not 'x'",
     }
     assert client.line() == 1

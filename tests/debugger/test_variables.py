@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pytest
+
 from tests.debugger.conftest import Debug
 
 MOVE = """\
@@ -36,6 +38,26 @@ def test_arrays_page_their_elements_from_one(debug: Debug) -> None:
         "(101)": "7",
         "(102)": "0",
     }
+
+
+FILTERS = [
+    pytest.param("indexed", ["(1)", "(2)", "(3)"], [], id="indexed: an array's elements, no variable"),
+    pytest.param("named", [], ["n"], id="named: no element of an array, each variable"),
+]
+
+
+@pytest.mark.parametrize(("kind", "elements", "variables"), FILTERS)
+def test_a_filter_lists_only_the_children_of_its_kind(
+    debug: Debug, kind: str, elements: list[str], variables: list[str]
+) -> None:
+    """DAP's ``variables`` filter: an array's children are indexed, a scope of variables' are named."""
+    client = debug(MOVE, breakpoints=(7,), drives="enabled")
+    client.stopped()
+    (table,) = client.body("variables", {"variablesReference": client.scope("Arrays")})["variables"]
+    listed = client.body("variables", {"variablesReference": table["variablesReference"], "filter": kind, "count": 3})
+    assert [variable["name"] for variable in listed["variables"]] == elements
+    scalars = client.body("variables", {"variablesReference": client.scope("Variables"), "filter": kind})
+    assert [variable["name"] for variable in scalars["variables"]] == variables
 
 
 def test_the_io_scope_shows_outputs_as_a_bank(debug: Debug) -> None:

@@ -45,8 +45,13 @@ C = TypeVar("C", bound=Callable[..., Any])
 
 _NEWLINE = re.compile(r"\r\n|\r|\n")
 MARKER = "REM MIGRATE:"
-# What a marker written below the line it marks says first: nothing may go above the PROTECT that opens
-# a program (v4:15393), a line inserted before it takes the protection away (v3:11092).
+# The commands that must be the first line of their file, before any REM: AUTO in the configuration file
+# (v4:6647-6648, v3:5838), PROTECT in the program (v4:15393, v3:11079). Nothing the migrator writes goes
+# above one that opens a file, in either file: it knows a file's role only from its name, and where the
+# controller ignores the command (AUTO in a program, v4:6648) keeping it first changes nothing.
+OPENING_COMMANDS = frozenset({"AUTO", "PROTECT"})
+# What a marker written below the line it marks says first: the line opening a file (``OPENING_COMMANDS``)
+# gets its markers below it, as a line inserted above AUTO or PROTECT undoes it (v4:6648, v3:11092).
 LINE_ABOVE = "(line above)"
 # A manual item's line: ``REM MIGRATE: <rule>: <reason>``, or ``REM MIGRATE: <rule>: (line above) <reason>``.
 MARKER_LINE = re.compile(
@@ -63,8 +68,69 @@ def marker_text(rule: str, reason: str, *, above: bool = False) -> str:
 def marks_above(found: re.Match[str]) -> bool:
     """Whether the marker ``MARKER_LINE`` found marks the nearest line above it that is not a marker;
     any other marks the nearest such line below it. The one place that decides which line a marker
-    marks: the engine, X-CHECK, the report and ``--verify`` all ask it."""
+    marks: both migrations, X-CHECK, the report and ``--verify`` all ask it."""
     return found["above"] is not None
+
+
+def marks_line_above(inserted: str) -> bool:
+    """Whether the text of an insertion is a marker of the line above it (``marks_above``): it goes first
+    among the insertions at its point, to stay right below that line."""
+    found = MARKER_LINE.match(inserted.strip("\r\n")) if LINE_ABOVE in inserted else None
+    return found is not None and marks_above(found)
+
+
+def marker_insertion(text: str, offset: int, marker: str, newline: str) -> tuple[int, str] | None:
+    """Where the marker line ``marker`` (``marker_text``) for the line of ``offset`` goes in ``text``, and what
+    is inserted there (with that line's indentation and ``newline``): right below the line when the marker
+    says so (``marks_above``: the line opening the file), else above it. None when the markers next to
+    the line already hold it: a second migration writes nothing twice."""
+    below = marks_line_above(marker)
+    start, end = line_start(text, offset), line_end(text, offset)
+    line = text[start:end]
+    indentation = line[: len(line) - len(line.lstrip(" \t"))]
+    for near in lines_below(text, end) if below else lines_above(text, start):
+        if not near.upper().startswith(MARKER):
+            break
+        if near == marker:
+            return None
+    if not below:
+        return start, f"{indentation}{marker}{newline}"
+    if end == len(text):  # a last line without a line break: the file ends as it did
+        return end, f"{newline}{indentation}{marker}"
+    return _next_line_start(text, end), f"{indentation}{marker}{newline}"
+
+
+def line_start(text: str, offset: int) -> int:
+    """Offset of the start of the line of ``offset`` in ``text``."""
+    return max(text.rfind("\n", 0, offset), text.rfind("\r", 0, offset)) + 1
+
+
+def line_end(text: str, offset: int) -> int:
+    """Offset of the line break ending the line of ``offset`` in ``text`` (or of the end of the text)."""
+    found = _NEWLINE.search(text, offset)
+    return found.start() if found else len(text)
+
+
+def lines_above(text: str, start: int) -> Iterator[str]:
+    """The lines of ``text`` above the line starting at ``start``, nearest first, stripped."""
+    while start > 0:
+        end = start - (2 if start >= 2 and text.startswith("\r\n", start - 2) else 1)
+        previous = line_start(text, end)
+        yield text[previous:end].strip()
+        start = previous
+
+
+def lines_below(text: str, end: int) -> Iterator[str]:
+    """The lines of ``text`` below the line whose line break is at ``end``, nearest first, stripped."""
+    while end < len(text):
+        start = _next_line_start(text, end)
+        end = line_end(text, start)
+        yield text[start:end].strip()
+
+
+def _next_line_start(text: str, end: int) -> int:
+    """Where the line after the line break at ``end`` starts."""
+    return end + (2 if text.startswith("\r\n", end) else 1)
 
 
 # Tags of a line besides its node types and names (see ``LineTags``): tuples, which no name equals.
@@ -240,8 +306,7 @@ class FileView:
 
     def line_end(self, offset: int) -> int:
         """Offset of the line break ending the line of ``offset`` (or of the end of the text)."""
-        found = _NEWLINE.search(self.text, offset)
-        return found.start() if found else len(self.text)
+        return line_end(self.text, offset)
 
     def indentation(self, offset: int) -> str:
         start = self.line_start(offset)
@@ -253,24 +318,18 @@ class FileView:
 
     def lines_above(self, offset: int) -> Iterator[str]:
         """The physical lines above the line of ``offset``, nearest first, stripped."""
-        start = self.line_start(offset)
-        while start > 0:
-            previous = self.line_start(start - 1)
-            yield self.text[previous:start].strip()
-            start = previous
+        return lines_above(self.text, self.line_start(offset))
 
     @cached_property
     def opening(self) -> n.Line | None:
-        """The line of the command that must stay the first of the file, REM lines included, or
-        None: AUTO in a configuration file (v4:6647-6649, v3:5838), PROTECT in a program
-        (v4:15393, v3:11079). Nothing the migrator writes may go above it."""
-        word = "AUTO" if self.unit is Unit.CONFIGURATION else "PROTECT"
+        """The line of the command that must stay the first of the file, REM lines included
+        (``OPENING_COMMANDS``), or None. Nothing the migrator writes may go above it."""
         for index, placed in enumerate(self.document.placed):
             syntax = placed.syntax
             if not syntax.statements and syntax.label is None:
                 continue
             first = syntax.statements[0] if syntax.statements else None
-            opens = isinstance(first, n.KeywordStatement) and first.keyword.keyword == word
+            opens = isinstance(first, n.KeywordStatement) and first.keyword.keyword in OPENING_COMMANDS
             return self.line(index) if opens else None
         return None
 
@@ -287,11 +346,7 @@ class FileView:
 
     def lines_below(self, offset: int) -> Iterator[str]:
         """The physical lines below the line of ``offset``, nearest first, stripped."""
-        end = self.line_end(offset)
-        while end < len(self.text):
-            start = end + (2 if self.text.startswith("\r\n", end) else 1)
-            end = self.line_end(start)
-            yield self.text[start:end].strip()
+        return lines_below(self.text, self.line_end(offset))
 
     def markers_on(self, offset: int) -> Iterator[str]:
         """The rules of the ``REM MIGRATE:`` lines that mark the line of ``offset`` (``marks_above``):
@@ -304,15 +359,14 @@ class FileView:
                 if marks_above(found) is above:
                     yield found["rule"]
 
-    def opens_protected(self, offset: int) -> bool:
-        """Whether ``offset`` lies on the PROTECT line that opens a program: a marker for it goes below
-        it (``LINE_ABOVE``), as a line above takes the protection away (v3:11092, v4:15393)."""
+    def in_opening_command(self, offset: int) -> bool:
+        """Whether ``offset`` lies in the command that opens the file (``opening``), not in a statement
+        after it on its line: a marker for it goes below it and says so (``LINE_ABOVE``)."""
         line = self.opening
-        return (
-            line is not None
-            and self.unit is Unit.PROGRAM
-            and self.line_start(line.span.start) == self.line_start(offset)
-        )
+        if line is None or self.line_start(line.span.start) != self.line_start(offset):
+            return False
+        split = self.after_opening
+        return split is None or offset < split.start
 
     def slice(self, span: Span) -> str:
         return self.text[span.start : span.end]

@@ -7,8 +7,8 @@ nothing left to do but write the marker lines it asked for; a phase in
 ``SETTLED_IN_ONE_PASS`` is done after a pass whose edits all applied.
 Flags become ``REM MIGRATE:`` lines above the flagged line,
 with its indentation and the file's own newline (a statement after the AUTO or
-PROTECT that must open its file first gets a line of its own, and the PROTECT line
-a marker below it that says so: ``marks_above``); a marker already
+PROTECT that must open its file first gets a line of its own, and the AUTO or PROTECT
+line a marker below it that says so: ``marks_above``); a marker already
 there is not written twice, which is what makes a second migration a no-op.
 
 Text outside the edited spans is copied, never regenerated: comments, spacing,
@@ -33,15 +33,14 @@ from mintlang.caching import Shelf, apart, forget_lines, keeping_what_it_uses
 from mintlang.diagnostics import LineIndex, Span, split_lines
 from mintlang.migrate.citations import cite, in_file
 from mintlang.migrate.context import (
-    LINE_ABOVE,
     MARKER,
-    MARKER_LINE,
     Context,
     FileView,
     LineTags,
     Unreadable,
+    marker_insertion,
     marker_text,
-    marks_above,
+    marks_line_above,
 )
 from mintlang.migrate.history import Edit, History
 from mintlang.migrate.markers import manual_items
@@ -249,36 +248,26 @@ def _is_marker(line: str) -> bool:
 def _marker(file: FileView, rule: str, flag: Flag, flagged: set[tuple[Unit, int, str]]) -> Edit | None:
     """The ``REM MIGRATE:`` line for a flag, unless that line already carries it.
 
-    Nothing may go above the command that must open the file (AUTO, PROTECT): a flag for a
-    statement after it on its line breaks the line there instead (a line end separates
-    statements as ``:`` does), so the statement gets a line of its own with the marker above;
-    a flag for the PROTECT line itself gets a marker right below it that says it marks the line
-    above (``marks_above``).
+    Nothing may go above the command that must open the file (AUTO, PROTECT): a flag for that
+    command gets a marker right below it that says it marks the line above (``marks_above``).
+    When a statement follows the command on its line, the line is broken there instead (a line
+    end separates statements as ``:`` does) and the marker goes between the two: below the
+    command for a flag of the command, above the statement for a flag of the statement.
     """
     reason = in_file(cite(" ".join(flag.reason.split())))
-    below = file.opens_protected(flag.span.start)
+    below = file.in_opening_command(flag.span.start)
     text = marker_text(rule, reason, above=below)
-    indentation = file.indentation(flag.span.start)
-    split = _after_opening(file, flag.span.start)
+    split = file.after_opening if below else _after_opening(file, flag.span.start)
     start = file.line_start(flag.span.start) if split is None else split.start
     key = (file.unit, start, text)
     if key in flagged:
         return None
     flagged.add(key)
     if split is not None:
+        indentation = file.indentation(flag.span.start)
         return Edit(rule, split, f"{file.newline}{indentation}{text}{file.newline}{indentation}")
-    for near in file.lines_below(start) if below else file.lines_above(start):
-        if not near.upper().startswith(MARKER):
-            break
-        if near == text:
-            return None
-    if not below:
-        return Edit(rule, Span(start, start), f"{indentation}{text}{file.newline}")
-    end = file.line_end(start)
-    if end == len(file.text):  # PROTECT on a last line without a line break: the file ends as it did
-        return Edit(rule, Span(end, end), f"{file.newline}{indentation}{text}")
-    after = end + len(file.newline) if file.text.startswith(file.newline, end) else end + 1
-    return Edit(rule, Span(after, after), f"{indentation}{text}{file.newline}")
+    placed = marker_insertion(file.text, start, text, file.newline)
+    return None if placed is None else Edit(rule, Span(placed[0], placed[0]), placed[1])
 
 
 def _after_opening(file: FileView, offset: int) -> Span | None:
@@ -324,8 +313,7 @@ def _non_overlapping(edits: list[Edit]) -> list[Edit]:
 
 def _rank_at_a_point(edit: Edit) -> int:
     """Where ``edit`` goes among the insertions at its point: a marker of the line above, whole lines, the rest."""
-    found = MARKER_LINE.match(edit.text.strip("\r\n")) if LINE_ABOVE in edit.text else None
-    if found is not None and marks_above(found):
+    if marks_line_above(edit.text):
         return 0
     return 1 if _inserts_lines_above(edit) else 2
 

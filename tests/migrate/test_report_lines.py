@@ -6,6 +6,7 @@ counts read "1 change", "2 changes"."""
 from __future__ import annotations
 
 import json
+from itertools import takewhile
 from pathlib import Path
 
 import pytest
@@ -13,6 +14,7 @@ from click.testing import CliRunner
 
 from mintlang.migrate import migrate
 from mintlang.migrate.cli import migrate as command
+from mintlang.migrate.context import MARKER_LINE, marks_line_above
 from tests.migrate.golden import GOLDEN
 
 SOURCE = "x = 1\nHMSPEED = 10\nLOAD 3\n"
@@ -123,8 +125,12 @@ def test_every_golden_item_points_at_its_lines(report: Path) -> None:
                 assert line.startswith(f"REM MIGRATE: {item['rule']}: "), item
                 continue
             assert "REM MIGRATE:" not in line, item
-            above = migrated[: item["migrated_line"] - 1]
-            block = []
-            while above and above[-1].lstrip().startswith("REM MIGRATE:"):
-                block.append(above.pop().strip())
-            assert any(marker.startswith(f"REM MIGRATE: {item['rule']}:") for marker in block), item
+            above = list(takewhile(_is_marker, reversed(migrated[: item["migrated_line"] - 1])))
+            below = list(takewhile(_is_marker, migrated[item["migrated_line"] :]))
+            # the markers above the line, and those below it that say they mark the line above (AUTO, PROTECT)
+            block = [m for m in above if not marks_line_above(m)] + [m for m in below if marks_line_above(m)]
+            assert any(marker.strip().startswith(f"REM MIGRATE: {item['rule']}:") for marker in block), item
+
+
+def _is_marker(line: str) -> bool:
+    return MARKER_LINE.match(line) is not None

@@ -3,9 +3,10 @@
 Everything outside an edited span is copied, never regenerated: line ends, case,
 spacing and comments' text survive byte for byte. A flag becomes the migrator's
 usual marker line above the flagged line, with its indentation and the file's own
-line break (``REM`` is MintMT too, MT-1), unless the lines above already carry it:
-that, and a MintMT text being left as it is (``api``), make a second migration
-change nothing. The manual items are read back from the markers, as the v3 → v4
+line break (``REM`` is MintMT too, MT-1), or right below the AUTO or PROTECT line
+that must open its file, saying it marks the line above (``marks_above``), unless
+the lines next to it already carry it: that, and a MintMT text being left as it is
+(``api``), make a second migration change nothing. The manual items are read back from the markers, as the v3 → v4
 migration does, so markers a person has not dealt with yet stay listed.
 """
 
@@ -16,7 +17,7 @@ from collections import Counter
 from collections.abc import Sequence
 
 from mintlang.diagnostics import LineIndex, Span
-from mintlang.migrate.context import MARKER
+from mintlang.migrate.context import MARKER, marker_insertion, marker_text, marks_line_above
 from mintlang.migrate.engine import FileOutcome
 from mintlang.migrate.history import Edit, History
 from mintlang.migrate.markers import manual_items
@@ -32,7 +33,9 @@ def apply(source: Source, actions: Sequence[Action]) -> FileOutcome:
     index = LineIndex(text)
     edits = [action for action in actions if isinstance(action, Rewrite)]
     markers = _markers(source, index, [action for action in actions if isinstance(action, Flag)])
-    ordered = sorted([*edits, *markers], key=lambda edit: (edit.span.start, edit.span.end))
+    ordered = sorted(
+        [*edits, *markers], key=lambda edit: (edit.span.start, edit.span.end, not marks_line_above(edit.text))
+    )
     history = History()
     history.record(ordered)
     new_text, changes = _edited(text, index, ordered)
@@ -43,34 +46,26 @@ def apply(source: Source, actions: Sequence[Action]) -> FileOutcome:
 
 
 def _markers(source: Source, index: LineIndex, flags: list[Flag]) -> list[Edit]:
-    """A marker line for each flag, above the line it flags, unless already written there."""
+    """A marker line for each flag, above the line it flags (below the line opening the file, where
+    ``marks_above`` reads it), unless already written there."""
     text = source.text
     newline = _NEWLINE.search(text)
     line_break = newline.group() if newline is not None else "\n"
+    opening = source.opening
     made: list[Edit] = []
     seen: set[tuple[int, str]] = set()
     for flag in flags:
         number = index.position(flag.at).line
+        above = opening is not None and number == opening.number
+        marker = marker_text(flag.rule, " ".join(flag.reason.split()), above=above)
         start = index.line_start(number)
-        line = source.lines[number - 1].lexed.text
-        indentation = line[: len(line) - len(line.lstrip(" \t"))]
-        marker = f"{MARKER} {flag.rule}: {' '.join(flag.reason.split())}"
-        if (start, marker) in seen or marker in _markers_above(source, number):
+        if (start, marker) in seen:
             continue
         seen.add((start, marker))
-        made.append(Edit(flag.rule, Span(start, start), f"{indentation}{marker}{line_break}"))
+        placed = marker_insertion(text, start, marker, line_break)
+        if placed is not None:
+            made.append(Edit(flag.rule, Span(placed[0], placed[0]), placed[1]))
     return made
-
-
-def _markers_above(source: Source, number: int) -> set[str]:
-    """The marker lines right above line ``number`` (from 1), stripped."""
-    found = set()
-    for line in reversed(source.lines[: number - 1]):
-        stripped = line.lexed.text.strip()
-        if not stripped.upper().startswith(MARKER):
-            break
-        found.add(stripped)
-    return found
 
 
 def _edited(text: str, index: LineIndex, edits: list[Edit]) -> tuple[str, list[Change]]:

@@ -13,6 +13,8 @@ from functools import cached_property
 
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
+from mintlang.keyworddb import database
+from mintlang.migrate.context import OPENING_COMMANDS
 from mintlang.migrate.history import Edit
 from mintlang.records import record
 from mintlang.syntax.lexer import LexedLine, lex
@@ -25,7 +27,8 @@ Rewrite = Edit
 
 @record
 class Flag:
-    """A manual item from ``rule``: the line holding offset ``at`` gets a marker above it."""
+    """A manual item from ``rule``: the line holding offset ``at`` gets a marker above it (below the
+    line opening the file, ``Source.opening``)."""
 
     rule: str
     at: int
@@ -83,6 +86,16 @@ class Source:
             Line(number, offset, lexed)
             for number, (offset, lexed) in enumerate(lex(self.text, Dialect.V4).lines, start=1)
         )
+
+    @cached_property
+    def opening(self) -> Line | None:
+        """The line of the command that must stay the first of the file, REM lines included
+        (``OPENING_COMMANDS``), or None: its markers go below it, as the v3 -> v4 migration's do."""
+        first = next((line for line in self.lines if not line.blank), None)
+        if first is None or first.kinds[0] is not TokenKind.KEYWORD:
+            return None
+        word = first.tokens[0].text
+        return first if (database().owner(word) or word.upper()) in OPENING_COMMANDS else None
 
     @cached_property
     def macros(self) -> frozenset[str]:

@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from mintlang.detection import detect_dialect, detect_dialect_after
+from mintlang.detection import MintMTForm, detect_dialect, detect_dialect_after, first_mintmt_form
 from mintlang.dialect import Dialect
 from tests.corpus_files import CorpusCase, cases
 
@@ -46,6 +46,24 @@ def test_every_example_of_the_v4_guide_reads_as_v4(case: CorpusCase) -> None:
 )
 def test_a_form_only_mintmt_has_makes_the_text_mintmt(text: str) -> None:
     assert detect_dialect(text) is Dialect.MINTMT
+
+
+@pytest.mark.parametrize(
+    ("text", "form"),
+    [
+        pytest.param("a = 1\r\nb = 2\r\nc = 3 ' note\r\n", MintMTForm(3, "a ' comment"), id="lines ended by CR LF"),
+        pytest.param("a = 1\rb = 2\rEnd If\r", MintMTForm(3, "End If"), id="lines ended by CR alone"),
+        pytest.param(
+            "x = 1\r\n\ry = 2\nStartup", MintMTForm(4, "Startup"), id="mixed line ends, the last line unended"
+        ),
+        pytest.param("REM (x)\n\nMOVER(0) = 1\n", MintMTForm(3, "MOVER(…)"), id="a bracket in a comment above"),
+        pytest.param(
+            "a = 'A' : b = ABS(c)\n\n\nEvent x\n", MintMTForm(4, "Event x"), id="no form on a line with a quote"
+        ),
+    ],
+)
+def test_the_first_form_is_named_with_its_line(text: str, form: MintMTForm) -> None:
+    assert first_mintmt_form(text) == form
 
 
 @pytest.mark.parametrize(

@@ -3,9 +3,10 @@
 Read as v4, a v3 program keeps its v3 keywords (``HMSPEED``, ``CONTON``, ``#FASTPOS``), and the
 MintMT rewrite would copy them into a file MintMT rejects on each of those lines. What shows v3 is
 what the v4 checker finds on such a word: a name v4 does not know (an undeclared variable, an
-unknown keyword, E3001/E3007) spelt as the full name of a v3 keyword v4 does not have, or a v3
-event (W102). An abbreviation is not enough (``ax`` is v3's AUX, and a likely v4 name), and a
-v4 program that declares a variable so named (``DIM conton``) gets no finding on it.
+unknown keyword, E3001/E3007) spelt as the full name of a v3 keyword v4 does not have or as a v3
+constant (``CONFIG = _servo``), or a v3 event (W102). An abbreviation is not enough (``ax`` is
+v3's AUX, and a likely v4 name), and a v4 program that declares a variable so named (``DIM conton``)
+gets no finding on it.
 """
 
 from __future__ import annotations
@@ -48,5 +49,10 @@ def v3_uses(source: str, config: str | None = None) -> V3Uses:
 
 
 def _v3_only(word: str) -> bool:
-    keyword = database().lookup_v3(word)
-    return keyword is not None and keyword.name == word.upper() and database().lookup(word) is None
+    """A name v4 does not know that is the full name of a v3 keyword v4 does not have, or a v3 constant
+    (``_servo``, v4's ``_cfSERVO``): no v4 name starts with ``_`` but a constant's."""
+    db = database()
+    if word.startswith("_"):
+        return word.upper() in db.v3_constants
+    keyword = db.lookup_v3(word)
+    return keyword is not None and keyword.name == word.upper() and db.lookup(word) is None

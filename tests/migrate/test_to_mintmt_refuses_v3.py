@@ -3,8 +3,8 @@ first"), exit status 2, and left as it was. Rewritten, it kept its v3 keywords a
 ``mint check --dialect mintmt`` on each of them, with no marker.
 
 What shows v3 is a word the v4 checker does not know that is a v3 keyword and not a v4 one
-(HMSPEED, GEARN, CONTON, DINT, EINT: the v3 guide's keywords the v4 guide replaced) or a v3
-event (#FASTPOS, v4's #FASTIN)."""
+(HMSPEED, GEARN, CONTON, DINT, EINT: the v3 guide's keywords the v4 guide replaced), a v3
+constant (_servo, v4's _cfSERVO) or a v3 event (#FASTPOS, v4's #FASTIN)."""
 
 from __future__ import annotations
 
@@ -25,6 +25,11 @@ V3_PROGRAM = "HMSPEED = 10\nSP = 5\nMA = 100\nGEARN = 1\nCONTON\nDINT\nEINT\nEND
 def test_the_v3_keywords_v4_does_not_know_are_named() -> None:
     # SP and MA are abbreviations v4 still reads (SPEED, MOVEA): they do not show v3.
     assert v3_uses(V3_PROGRAM).words == ("HMSPEED", "GEARN", "CONTON", "DINT", "EINT", "#FASTPOS")
+
+
+def test_a_v3_constant_shows_v3() -> None:
+    # the v3 guide's own configuration (001:828): v3's CONFIG constant _servo (001:1327) is v4's _cfSERVO (000:8438)
+    assert v3_uses("AXES[0,1]\nCONFIG = _servo, _servo\n").words == ("_SERVO",)
 
 
 def test_a_v4_variable_named_like_a_v3_keyword_does_not_show_v3() -> None:
@@ -58,6 +63,15 @@ def test_the_command_leaves_the_v3_file_as_it_was_and_exits_2(tmp_path: Path) ->
     assert outcome.exit_code == 2
     assert "this is Mint v3 (HMSPEED, GEARN, CONTON, DINT, EINT, #FASTPOS): migrate it to v4 first" in outcome.output
     assert program.read_text(encoding="utf-8") == V3_PROGRAM
+
+
+def test_the_command_refuses_a_v3_program_whose_only_v3_word_is_a_constant(tmp_path: Path) -> None:
+    program = tmp_path / "template.mnt"
+    program.write_text("CONFIG = _servo, _servo\nSPEED = 20\n", encoding="utf-8")
+    outcome = CliRunner().invoke(command, ["--to", "mintmt", "--format", "json", str(program)])
+    assert outcome.exit_code == 2
+    assert "this is Mint v3 (_SERVO): migrate it to v4 first" in outcome.output
+    assert program.read_text(encoding="utf-8") == "CONFIG = _servo, _servo\nSPEED = 20\n"
 
 
 # What mint-migrate leaves of v3 for a person: CARD, which v4 reads as NODE, assigned (v3 could only read it)

@@ -270,6 +270,21 @@ class KeywordDatabase:
         return _by_name(self._v3_records, lambda k: k.name)
 
     @cached_property
+    def v3_one_value_writes(self) -> frozenset[str]:
+        """The v3 keywords a write gives one value (``OUT.1 = 1, 0`` is "Missing parameter"): those addressed by
+        no axis whose v4 keyword is held to one (``Keyword.one_value_a_write``). Their v3 formats write one
+        ``<expr>`` (OUT 001:10519, OUT0..OUT7 10611-10618, AUXDAC 5929, BAUD 6100, ENABLE 7555), and a value
+        with no place to go is "Missing parameter" (001:990-992, 13097-13109), which the guide words for axes
+        only; XIO, whose format writes a list (001:12731), has no v4 keyword and is not among them."""
+        return frozenset(
+            name
+            for name, record in self.v3_keywords.items()
+            if record.write
+            and record.addressing is not Addressing.AXIS
+            and any((v4 := self.keywords.get(new)) is not None and v4.one_value_a_write for new in record.v4_names)
+        )
+
+    @cached_property
     def _v3_records(self) -> list[V3Keyword]:
         return [_v3_keyword(raw) for raw in self._later["keywords_v3.json"]]
 

@@ -182,7 +182,7 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
     if keyword is None or not keyword.available_on(scope.controller.controller):
         return  # not a keyword of this controller: 17 (keyword usage) says so, its channels are moot
     if keyword.one_value_a_write:  # OUT.1 = 1,0: a channel keyword takes one value, with or without its channel
-        yield from _too_many_values(use, 1, lambda count: f"{count} values; {keyword.name} takes one")
+        yield from one_value(use, keyword.name)
     if use.keyword.selector is None and use.keyword.channel is None:
         # Nothing addressed: the default axes, whatever AXES made them, are at most the controller's
         # (000:572, 605-606, #2017 at 19047); a circle's three values go to two of them.
@@ -190,8 +190,9 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
             yield from values_for_axes(use, scope.controller.axis_count)
         if keyword.name in VECTORS:
             yield from _one_position(use, keyword.name)
+            yield from vector_gap(use, keyword.name)
         elif keyword.name in CIRCLES:
-            yield from _circle_values(use, keyword.name)
+            yield from circle_values(use, keyword.name)
         return
     found = misaddressed(use.keyword, keyword, scope.dialect)
     if found is not None:
@@ -280,6 +281,7 @@ def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:
         yield Finding(use.unit, mint_error(2001, selector.span, detail))
     elif name in VECTORS:
         yield from _one_position(use, name)
+        yield from vector_gap(use, name)
     yield from values_for_axes(use, listed)
 
 
@@ -290,6 +292,21 @@ def _one_position(use: KeywordUse, name: str) -> Iterator[Finding]:
     if position is not None:
         detail = f"{name} interpolates two axes or more: one position given"
         yield Finding(use.unit, mint_error(2001, position.span, detail))
+
+
+def vector_gap(use: KeywordUse, name: str) -> Iterator[Finding]:
+    """A vector move with a place left empty (``VECTORR[0,1] = ,100``) is Missing parameter, 2001: a vector
+    interpolates every axis it is given a position for, from one start to one end (000:16958, 17031), and the
+    v3 guide gives this very line as its example of a missing parameter (001:13100-13109)."""
+    values = _written(use)
+    if values is not None and None in values:
+        detail = f"{name} needs a position on each axis it moves: a place is left empty"
+        yield Finding(use.unit, mint_error(2001, use.statement.span, detail))
+
+
+def one_value(use: KeywordUse, name: str) -> Iterator[Finding]:
+    """2017 at the second value written to a keyword whose write takes one (``OUT.1 = 1, 0``)."""
+    yield from _too_many_values(use, 1, lambda count: f"{count} values; {name} takes one")
 
 
 def lone_position(use: KeywordUse) -> n.Expression | None:
@@ -351,10 +368,10 @@ def _circle(use: KeywordUse, selector: n.Selector, name: str, listed: int) -> It
         yield Finding(use.unit, mint_error(2017, selector.span, detail))
     elif listed < _CIRCLE_AXES:
         yield Finding(use.unit, mint_error(2001, selector.span, detail))
-    yield from _circle_values(use, name)
+    yield from circle_values(use, name)
 
 
-def _circle_values(use: KeywordUse, name: str) -> Iterator[Finding]:
+def circle_values(use: KeywordUse, name: str) -> Iterator[Finding]:
     """A circle written takes its three values, each given: both centre coordinates and the angle are in its
     format and in every example of the guide (000:8152, 8215), and ``mint-run`` refuses one without them."""
     shape = _circle_shape(name)

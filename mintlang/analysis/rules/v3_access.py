@@ -8,7 +8,9 @@ the v3 controller (2000 / 2002, as v4 numbers them), so the migrator reports suc
 a line as broken in v3 already rather than as something the migration broke.
 The v3 guide's axis rules are checked here too, for the same reason and so that
 mint check finds the "Invalid axis" mint-run raises (001:13173-13184), and the "Missing parameter"
-of more values than the axes listed (001:990-992, 13097-13111).
+of more values than the axes listed (001:990-992, 13097-13111) or than the three a v3 controller
+has at most (001:972), of a vector with a place left empty (001:13100-13109), of a circle not
+given its centre and angle (001:6719), and of a second value to a keyword whose format writes one.
 """
 
 from __future__ import annotations
@@ -16,11 +18,13 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.rules.addressing import lone_position, values_for_axes
+from mintlang.analysis.rules.addressing import circle_values, lone_position, one_value, values_for_axes, vector_gap
 from mintlang.analysis.traversal import KeywordUse, LineScope, Use
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import CIRCLES, VECTORS, Addressing, V3Keyword
 from mintlang.syntax.v3_axis_lists import NUMBER_OR_VARIABLE, refused_axes
+
+_MOST_AXES = 3  # "MINT's multi-axis syntax supports up to 3 axes on one controller" (001:972)
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
@@ -28,6 +32,8 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
     for use in scope.facts.keyword_uses:
         keyword = db.lookup_v3(use.keyword.keyword)
         yield from _axes(use, keyword)
+        if keyword is not None and keyword.name in db.v3_one_value_writes:  # OUT.1 = 1, 0
+            yield from one_value(use, keyword.name)
         if keyword is None or not (keyword.read or keyword.write or keyword.command):
             continue  # no attribute ticks to go by
         name, span = keyword.name, use.keyword.spelling_span
@@ -45,10 +51,14 @@ def _axes(use: KeywordUse, keyword: V3Keyword | None) -> Iterator[Finding]:
     """v3's "Invalid axis" (001:13173-13184), as mint-run raises it: an axis list takes only numbers and
     variables (``SF[a+1] = 1000``), and a vector move names two axes or more (``VR[0] = 100``, 001:3257).
     More values than the axes given is v3's "Missing parameter", v4's 2017 (``GAIN[1] = 10,20``,
-    001:990-992, 13097-13111), but for a circle's three values on two axes."""
+    001:990-992, 13097-13111), but for a circle's three values on two axes; without brackets the
+    default axes are at most the controller's three (001:972)."""
     selector, name = use.keyword.selector, use.keyword.keyword
-    if selector is not None and keyword is not None and keyword.addressing is Addressing.AXIS and name not in CIRCLES:
-        yield from values_for_axes(use, 1 if selector.dot else len(selector.axes))
+    if keyword is not None and keyword.addressing is Addressing.AXIS and name not in CIRCLES:
+        listed = _MOST_AXES if selector is None else 1 if selector.dot else len(selector.axes)
+        yield from values_for_axes(use, listed)
+    if name in CIRCLES:
+        yield from circle_values(use, name)
     for item in refused_axes(selector) if selector is not None else ():  # None: the default axes, any AXES set
         yield Finding(use.unit, mint_error(2, item.span, f"Invalid axis in Mint v3: {NUMBER_OR_VARIABLE}"))
     if name in VECTORS:
@@ -57,3 +67,5 @@ def _axes(use: KeywordUse, keyword: V3Keyword | None) -> Iterator[Finding]:
             yield Finding(use.unit, mint_error(2, selector.span, detail))
         elif (position := lone_position(use)) is not None:  # VR[0,1] = 5 or VR = 5: one axis moves, as VR[0]
             yield Finding(use.unit, mint_error(2, position.span, detail))
+        else:
+            yield from vector_gap(use, name)

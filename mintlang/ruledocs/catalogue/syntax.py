@@ -87,15 +87,16 @@ GROUP = Group(
         ),
         RuleDoc(
             2001,
-            catches="An empty place in a list of axes in brackets (`SPEED[0,,2]`, `SPEED[0,1,]`), or a circle "
-            "given one of its two axes (`CIRCLEA[0] = 10, 0, 90`).",
+            catches="An empty place in a list of axes in brackets (`SPEED[0,,2]`, `SPEED[0,1,]`), a circle "
+            "given one of its two axes (`CIRCLEA[0] = 10, 0, 90`), or a vector move with one of its positions "
+            "left out (`VECTORR[0,1] = ,100`).",
             why="Each place in the brackets names an axis; an empty one leaves the controller without an "
             "axis to apply the value to.",
             example=Example(
                 before="SPEED[0,,2] = 1000\n",
                 after="SPEED[0,1,2] = 1000\n",
             ),
-            manual=("v4:18909", "v4:544", "v4:8152"),
+            manual=("v4:18909", "v4:544", "v4:8152", "v4:17031"),
             fix="Which axis was meant is not written anywhere.",
             safety=FixSafety.NONE,
         ),

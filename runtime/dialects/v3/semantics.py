@@ -33,7 +33,7 @@ V3 = Semantics(
     axis_keywords=frozenset(
         name for name, record in database().v3_keywords.items() if record.addressing is Addressing.AXIS
     ),
-    one_value_keywords=frozenset(),  # v4's one value a channel (000:547-548): not yet weighed against the v3 guide
+    one_value_keywords=database().v3_one_value_writes,
     format_number=format_number,
     format_using=format_using,
     printers=MappingProxyType({"BINARY": format_binary}),

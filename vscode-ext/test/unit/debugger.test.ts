@@ -99,3 +99,17 @@ test("hovering evaluates a name with its axis or element, not the bare name", ()
   assert.equal(hovered("MOVEA"), "MOVEA.0");
   assert.equal(evaluatableAt(line, line.indexOf("=")), undefined);
 });
+
+test("hovering takes a bracketed axis whole, and leaves an address it cannot take whole unevaluated", () => {
+  // POS[0] is the guide's own way of reading an axis (000:15305); the bare POS would read the default axis
+  const hovered = (line: string, at: string) => {
+    const found = evaluatableAt(line, line.indexOf(at));
+    return found && line.slice(found[0], found[1]);
+  };
+  assert.equal(hovered('PRINT "a = ",a," POS = ",POS[1]', "POS["), "POS[1]");
+  assert.equal(hovered("MOVEA(0) = POS(1) + 5", "POS"), "POS(1)");
+  const partial: [string, string][] = [["x = POS[0,1]", "POS"], ["x = POS.axis", "POS"], ["MOVER(k) = 2", "MOVER"], ["y = table(i)", "table"]];
+  for (const [line, at] of partial) {
+    assert.equal(evaluatableAt(line, line.indexOf(at)), undefined, line);
+  }
+});

@@ -15,6 +15,7 @@ Dyadic fractions (0.5, 0.25) are exact in both and are not flagged.
 from __future__ import annotations
 
 from collections.abc import Iterator
+from decimal import Decimal
 
 from mintlang.migrate.context import FRACTION, Context, operator_tag
 from mintlang.migrate.model import Phase, RuleClass
@@ -108,8 +109,11 @@ def _inexact(literal: n.Number) -> str | None:
     """What v3 made of a literal whose value shows differently at three decimals: the 256ths it held
     and what PRINT showed, cut to three places (v3:1161-1181); None for one v3 held as written."""
     held = v3_value(literal.value)
-    if held is None or round(held, _PLACES) == round(literal.value, _PLACES):
+    if held is None:
         return None
-    shown = format_number(held)
+    shown = format_number(held)  # cut, not rounded: 0.004 is held as 1/256 and shows 0.003
+    written = round(literal.value, _PLACES)
+    if round(held, _PLACES) == written and Decimal(shown) == Decimal(str(written)):
+        return None
     v3 = f"{round(held * 256)}/256 in v3 (1/256 fixed point; PRINT shows {shown})"
     return f"{literal.text} was {v3}, floating point in v4"

@@ -37,3 +37,10 @@ def test_the_guide_s_1_002_is_reported_with_the_value_it_held_and_showed() -> No
 
 def test_a_literal_beyond_v3_s_range_is_no_fixed_point_question() -> None:
     assert flagged("X-NUM", "a = 9000000.5\n") == []
+
+
+def test_a_literal_held_just_below_what_is_written_shows_one_thousandth_less() -> None:
+    # 0.004 is held as 1/256 = 0.00390625 and PRINT cuts it to three places (v3:1161-1170), as 1.003 for 1.002
+    assert flagged("X-NUM", "PRINT 0.004\n") == [
+        "0.004 was 1/256 in v3 (1/256 fixed point; PRINT shows 0.003), floating point in v4"
+    ]

@@ -66,7 +66,9 @@ def test_pause_on_trigger_is_flagged() -> None:
 
 def test_fixed_point_literals() -> None:
     assert flagged("X-NUM", "a = 0.15 * b\nc = 0.5 + 2.25\nd = .004\n") == [
-        "0.15 was 38/256 in v3 (1/256 fixed point; PRINT shows 0.148), floating point in v4"  # v3:1173-1181
+        "0.15 was 38/256 in v3 (1/256 fixed point; PRINT shows 0.148), floating point in v4",  # v3:1173-1181
+        # 1/256 = 0.0039..., cut to three places as 1.0039 shows 1.003 (v3:1161-1170)
+        ".004 was 1/256 in v3 (1/256 fixed point; PRINT shows 0.003), floating point in v4",
     ]
 
 

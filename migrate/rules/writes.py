@@ -8,8 +8,8 @@ from typing import ClassVar
 from mintlang.diagnostics import Span
 from mintlang.migrate.context import Context, FileView, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
-from mintlang.migrate.rules.axes import default_axes, selector_axes
-from mintlang.migrate.rules.base import Action, Rule, keyword_refs, selector_text, values_text, written
+from mintlang.migrate.rules.axes import axis_values, default_axes, selector_axes
+from mintlang.migrate.rules.base import Action, Rule, selector_text, values_text
 from mintlang.migrate.rules.spelling import like
 from mintlang.migrate.rules.statements import Refusal, StatementRule
 from mintlang.syntax import nodes as n
@@ -26,8 +26,10 @@ class AccelAlsoDecel(Rule):
     are independent. So every ACCEL write gets ``: DECEL<axes> = <same values>`` after it
     (unless a DECEL of the same axes already follows it on the line). A DECEL write is left as
     it is: without the bit v3 used it until the next ACCEL write overwrote it (v3:7203,
-    v3:6027), which the DECEL written beside that ACCEL does in v4. A program that may set
-    AXISCON bit 0 (a value with it set, or one computed) is left to the user.
+    v3:6027), which the DECEL written beside that ACCEL does in v4. AXISCON is set per axis
+    (``AXISCON.1 = 1`` turns DECEL on for axis 1, v3:6041), so an ACCEL write is left to the user
+    only where it may reach an axis whose bit 0 may be set (a value with it set, or one computed,
+    on axes named or unknown); ``ACCEL.0`` beside ``AXISCON.1 = 1`` is rewritten as without it.
 
     The copy must compute what the ACCEL write computed. Values that read ACCEL (or
     ACCELTIME), as ``ACCEL = ACCEL * 2`` does, would read the new value after the write, so
@@ -42,13 +44,13 @@ class AccelAlsoDecel(Rule):
     pairs: ClassVar[dict[str, str]] = {"ACCEL": "DECEL", "ACCELTIME": "DECELTIME"}
 
     def apply(self, context: Context) -> Iterator[Action]:
-        axiscon = _decel_may_be_on(context)
+        decel_on = _decel_may_be_on(context)
         for file, before, statement, after in context.neighbours(*map(statement_tag, self.pairs)):
             accel = _accel(statement)
             if accel is None:
                 continue
             decel = self.pairs[accel.keyword.keyword]
-            if axiscon:
+            if _may_reach(context, file, accel, decel_on):
                 yield self.flag(file, accel.span, f"AXISCON is used: decide whether {decel} must follow this write")
                 continue
             if _reads(accel, self.pairs) and _reads(accel, self.pairs.values()):
@@ -85,16 +87,35 @@ class AccelAlsoDecel(Rule):
         return _normal(file.slice(beside.span)) == _normal(_decel_write(file, accel, decel))
 
 
-def _decel_may_be_on(context: Context) -> bool:
-    """Whether a write of AXISCON may set bit 0, which turns DECEL on (v3:6027): one whose values
-    are not all constants with the bit clear (``AXISCON.0 = AXISCON.0 | 01``, v3:7212)."""
-    return any(
-        not isinstance(value, n.Number) or int(value.value) & 1
-        for _, _, statement, keyword in keyword_refs(context, "AXISCON")
-        if written(statement, keyword)
-        for value in statement.values or ()
-        if value is not None
-    )
+def _decel_may_be_on(context: Context) -> frozenset[int] | None:
+    """The axes on which a write of AXISCON may set bit 0, which turns DECEL on (v3:6027): one whose
+    values are not all constants with the bit clear (``AXISCON.0 = AXISCON.0 | 01``, v3:7212); None
+    when such a write's axes are not known (a variable axis, or default axes AXES leaves unknown)."""
+    axes: set[int] = set()
+    for file, _, statement in context.statements(statement_tag("AXISCON")):
+        write = _writes(statement, "AXISCON")
+        if write is None or write.values is None:
+            continue
+        pairs = axis_values(context, file, write)
+        if not pairs and any(_may_set_bit_0(value) for value in write.values if value is not None):
+            return None
+        axes.update(axis for axis, value in pairs if _may_set_bit_0(value))
+    return frozenset(axes)
+
+
+def _may_set_bit_0(value: n.Expression) -> bool:
+    return not isinstance(value, n.Number) or bool(int(value.value) & 1)
+
+
+def _may_reach(context: Context, file: FileView, accel: n.KeywordStatement, decel_on: frozenset[int] | None) -> bool:
+    """Whether ``accel`` may write an axis whose AXISCON bit 0 may be set: the axes it names, or the
+    default axes where it names none; any axis when either is unknown."""
+    if decel_on is not None and not decel_on:
+        return False
+    axes = selector_axes(accel.keyword)
+    if axes is None and accel.keyword.selector is None:
+        axes = default_axes(context, file, accel.span.start)
+    return decel_on is None or axes is None or not decel_on.isdisjoint(axes)
 
 
 def _reads(accel: n.KeywordStatement, keywords: Iterable[str]) -> bool:

@@ -10,6 +10,8 @@ the engineer decides.
 
 from __future__ import annotations
 
+import pytest
+
 from tests.migrate.helpers import flagged, rewritten
 
 DECIDE = "AXISCON is used: decide whether DECEL must follow this write"
@@ -27,3 +29,25 @@ def test_bit_0_set_leaves_the_decision_to_the_engineer() -> None:
 
 def test_a_computed_value_leaves_the_decision_to_the_engineer() -> None:
     assert flagged("S-ACCEL", "AXISCON.0 = AXISCON.0 | 01\nACCEL = 5000\n") == [DECIDE]
+
+
+def test_an_axis_whose_bit_0_is_never_set_keeps_accel_setting_decel() -> None:
+    # AXISCON.1 = 011 "turns on the DECEL keyword ... for axis 1" (001:6037-6041): on axis 0 ACCEL still
+    # overwrites DECEL (001:7203), so that write is rewritten as in a program without AXISCON
+    source = "AXISCON.1 = 011\nACCEL.0 = 5000\nAC[0,2] = 10,20\n"
+    assert rewritten("S-ACCEL", source) == (
+        "AXISCON.1 = 011\nACCEL.0 = 5000 : DECEL.0 = 5000\nAC[0,2] = 10,20 : DECEL[0,2] = 10,20\n"
+    )
+
+
+@pytest.mark.parametrize(
+    "source",
+    [
+        pytest.param("AXISCON.1 = 011\nACCEL.1 = 5000\n", id="the axis named"),
+        pytest.param("AXISCON.1 = 011\nACCEL = 5000;\n", id="the default axes include it"),
+        pytest.param("AXISCON[a] = 1\nACCEL.0 = 5000\n", id="an axis not known"),
+        pytest.param("AXISCON.1 = 1\na = 0\nACCEL[a] = 5000\n", id="an ACCEL axis not known"),
+    ],
+)
+def test_an_accel_write_that_may_reach_an_axis_with_bit_0_set_is_left_to_the_engineer(source: str) -> None:
+    assert flagged("S-ACCEL", source) == [DECIDE]

@@ -73,10 +73,10 @@ class OutputFormat(Rule):
 
 
 def _format_reason(statement: n.Statement) -> str | None:
-    if isinstance(statement, n.Print | n.Input) and statement.using:
-        return "USING layout: v4 prints numbers with up to 4 decimals; check what reads this output"
-    if isinstance(statement, n.Input):
+    if isinstance(statement, n.Input):  # with USING too: USING lays out what is typed, the prompt is the same
         return "v3 INPUT printed ' ?' after its prompt (not after POFF), v4 does not; check what reads this output"
+    if isinstance(statement, n.Print) and statement.using:
+        return "USING layout: v4 prints numbers with up to 4 decimals; check what reads this output"
     if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "BINARY":
         return "BINARY output: v4 prints with PRINT BIN, without the 8-digit padding"
     if isinstance(statement, n.Print) and any(

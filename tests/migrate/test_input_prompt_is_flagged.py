@@ -12,13 +12,21 @@ from mintlang.migrate.verification import Place, Verdict, verify
 from tests.migrate.helpers import flagged
 
 _PROMPT = "v3 INPUT printed ' ?' after its prompt (not after POFF), v4 does not; check what reads this output"
-_USING = "USING layout: v4 prints numbers with up to 4 decimals; check what reads this output"
 
 
-def test_every_input_is_flagged_once_with_the_reason_its_form_gives() -> None:
-    # v3:2769 (a prompt string), v3:2791 (USING), a bare INPUT after THEN as in v3:2986
+def test_every_input_is_flagged_once_for_its_query_mark() -> None:
+    # v3:2769 (a prompt string), v3:2791 (USING), a bare INPUT after THEN as in v3:2986: each prints the
+    # ' ?' (v3:2764-2775); USING lays out the number typed (v3:2777-2800), printing no number with 4 decimals
     source = 'INPUT "Enter a number",a\nINPUT a USING -5,2\nIF x THEN INPUT b : PRINT b\nPRINT a\n'
-    assert flagged("X-PRINT", source) == [_PROMPT, _USING, _PROMPT]
+    assert flagged("X-PRINT", source) == [_PROMPT, _PROMPT, _PROMPT]
+
+
+def test_the_query_mark_of_an_input_using_is_where_verify_finds_the_divergence() -> None:
+    # the v3 run prints 'Length ?' before the number typed, the v4 run 'Length': the item says why
+    result = migrate('INPUT "Length", len USING 4,1\n')
+    found = verify(result, until_ms=100)
+    assert found.divergence is not None and found.divergence.v3_line == Place("program", 1)
+    assert [item.reason for item in result.manual] == [_PROMPT]
 
 
 def test_the_v3_guide_example_marks_the_input_line() -> None:

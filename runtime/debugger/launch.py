@@ -61,6 +61,7 @@ class Application:
     until_ms: int | None
     stop_on_entry: bool
     plot: Path | None = None  # the image the run so far is drawn to at each stop
+    debugging: bool = True  # False for DAP's noDebug (VS Code's Run Without Debugging): the run stops nowhere
 
     def run(
         self,
@@ -121,6 +122,7 @@ def prepare(arguments: Mapping[str, Any]) -> Application:
             raise LaunchError(f"cannot read {path}: {error.strerror or error}") from None
     if _drives_enabled(arguments.get("drives")):
         scenario = merge(scenario, Scenario(drives=(DrivesEnabled(),)))
+    debugging = not _flag(arguments.get("noDebug", False), "noDebug")
     until_ms = arguments.get("untilMs")
     if until_ms is not None and (not isinstance(until_ms, int) or isinstance(until_ms, bool) or until_ms < 0):
         raise LaunchError("'untilMs' is a whole number of simulated milliseconds")
@@ -134,8 +136,9 @@ def prepare(arguments: Mapping[str, Any]) -> Application:
         profile,
         scenario,
         until_ms,
-        _flag(arguments.get("stopOnEntry", False), "stopOnEntry"),
+        debugging and _flag(arguments.get("stopOnEntry", False), "stopOnEntry"),
         _plot(arguments.get("plot"), program, configuration),
+        debugging,
     )
 
 

@@ -61,6 +61,9 @@ CAPABILITIES: dict[str, Any] = {
 }
 
 
+NOT_DEBUGGING = "the program runs without debugging (noDebug): it stops at no breakpoint"
+
+
 class RequestError(Exception):
     """A request that cannot be served; its message becomes the error response's."""
 
@@ -218,15 +221,18 @@ class Session:
         if requested is None:
             requested = [{"line": line} for line in _listed(arguments.get("lines", []), "lines")]
         requested = _objects(requested, "breakpoints")
-        if unit is None:
-            problem = "not part of the program being debugged"
+        if unit is None or not application.debugging:
+            problem = "not part of the program being debugged" if application.debugging else NOT_DEBUGGING
             return {"breakpoints": [{"verified": False, "message": problem} for _ in requested]}
         placed = breakpoints.replace(unit, requested)
         return {"breakpoints": [breakpoint_.as_dap(source) for breakpoint_ in placed]}
 
     def set_function_breakpoints(self, arguments: dict[str, Any]) -> dict[str, Any]:
         application, breakpoints = self._launched()
-        placed = breakpoints.replace_functions(_objects(arguments.get("breakpoints", []), "breakpoints"))
+        requested = _objects(arguments.get("breakpoints", []), "breakpoints")
+        if not application.debugging:
+            return {"breakpoints": [{"verified": False, "message": NOT_DEBUGGING} for _ in requested]}
+        placed = breakpoints.replace_functions(requested)
         return {
             "breakpoints": [
                 item.as_dap(_source(application, item.unit) if item.pc is not None else None) for item in placed
@@ -240,7 +246,7 @@ class Session:
             raise RequestError(f"no exception filter {', '.join(sorted(unknown))}: use {ERRORS} or {UNHANDLED}")
         self.exception_filters = filters
         if self.execution is not None:
-            self.execution.exception_filters = filters
+            self.execution.exception_filters = self._stopping_at(filters)
         return {"breakpoints": [{"verified": True} for _ in filters]}
 
     def configuration_done(self, arguments: dict[str, Any]) -> None:
@@ -248,7 +254,7 @@ class Session:
         if self.execution is not None:
             raise RequestError("the program is already running")
         self.execution = Execution(application, breakpoints, self)
-        self.execution.exception_filters = self.exception_filters
+        self.execution.exception_filters = self._stopping_at(self.exception_filters)
         self.execution.start(stepping.entry() if application.stop_on_entry else stepping.cont(-1))
 
     def threads(self, arguments: dict[str, Any]) -> dict[str, Any]:
@@ -407,6 +413,10 @@ class Session:
             self.execution.terminate()
 
     # ------------------------------------------------------------------- helpers
+
+    def _stopping_at(self, filters: frozenset[str]) -> frozenset[str]:
+        """The errors the run stops at: those the editor chose, none in a run without debugging."""
+        return filters if self.application is None or self.application.debugging else frozenset()
 
     def _launched(self) -> tuple[Application, Breakpoints]:
         if self.application is None or self.breakpoints is None:

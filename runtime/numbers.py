@@ -125,26 +125,20 @@ def greater_equal(a: float, b: float) -> float:
     return 1.0 if a >= b else 0.0
 
 
-BINARY_OPERATORS: Mapping[str, Callable[[float, float], float]] = MappingProxyType(
-    {
-        "+": add,
-        "-": subtract,
-        "*": multiply,
-        "/": divide,
-        "MOD": modulo,
-        "%": modulo,
-        "AND": bit_and,
-        "&": bit_and,
-        "OR": bit_or,
-        "|": bit_or,
-        "XOR": bit_xor,
-        "=": equal,
-        "<>": not_equal,
-        "<": less,
-        ">": greater,
-        "<=": less_equal,
-        ">=": greater_equal,
-    }
+_SYMBOLS = {"MOD": "%", "AND": "&", "OR": "|"}  # a word operator's symbol form
+
+
+def spelled(arithmetic: Mapping[str, Callable[[float, float], float]]) -> Mapping[str, Callable[[float, float], float]]:
+    """A dialect's binary operators by spelling (upper case): its ``arithmetic`` (``+ - * /`` and the words
+    ``MOD``, ``AND``, ``OR``, ``XOR``), each word under its symbol too, and the comparisons, 1 or 0 in every
+    dialect. One table of spellings, so that v3 and v4 cannot spell an operator differently."""
+    symbols = {_SYMBOLS[word]: operate for word, operate in arithmetic.items() if word in _SYMBOLS}
+    comparisons = {"=": equal, "<>": not_equal, "<": less, ">": greater, "<=": less_equal, ">=": greater_equal}
+    return MappingProxyType({**arithmetic, **symbols, **comparisons})
+
+
+BINARY_OPERATORS = spelled(
+    {"+": add, "-": subtract, "*": multiply, "/": divide, "MOD": modulo, "AND": bit_and, "OR": bit_or, "XOR": bit_xor}
 )
 """Binary operators by spelling (upper case); both the word and the symbol form are keys."""
 

@@ -19,6 +19,7 @@ from collections.abc import Callable, Mapping
 from types import MappingProxyType
 
 from mintlang.runtime.errors import NotSimulated
+from mintlang.runtime.numbers import logical_not, spelled
 
 STEPS = 256  # parts of one in a v3 number
 _LOWEST = -(1 << 31)
@@ -97,40 +98,15 @@ def toggle_byte(a: float) -> float:
     return float(int(a) ^ 0xFF)
 
 
-def logical_not(a: float) -> float:
-    """``NOT``/``!``: 1 for zero, otherwise 0; relational operators also give 1 or 0 (V3-2)."""
-    return 1.0 if a == 0 else 0.0
-
-
 def negate(a: float) -> float:
     return _checked(-raw(a), "-")
 
 
-def _compare(test: Callable[[float, float], bool]) -> Callable[[float, float], float]:
-    return lambda a, b: 1.0 if test(a, b) else 0.0
-
-
-BINARY_OPERATORS: Mapping[str, Callable[[float, float], float]] = MappingProxyType(
-    {
-        "+": add,
-        "-": subtract,
-        "*": multiply,
-        "/": divide,
-        "MOD": modulo,
-        "%": modulo,
-        "AND": bit_and,
-        "&": bit_and,
-        "OR": bit_or,
-        "|": bit_or,
-        "=": _compare(lambda a, b: a == b),
-        "<>": _compare(lambda a, b: a != b),
-        "<": _compare(lambda a, b: a < b),
-        ">": _compare(lambda a, b: a > b),
-        "<=": _compare(lambda a, b: a <= b),
-        ">=": _compare(lambda a, b: a >= b),
-    }
+BINARY_OPERATORS = spelled(
+    {"+": add, "-": subtract, "*": multiply, "/": divide, "MOD": modulo, "AND": bit_and, "OR": bit_or}
 )
-"""The v3 operators (001:1966-1984); v3 has no XOR."""
+"""The v3 operators (001:1966-1984); v3 has no XOR. ``NOT`` and the relational operators give 1 or 0 as in
+v4 (V3-2)."""
 
 UNARY_OPERATORS: Mapping[str, Callable[[float], float]] = MappingProxyType(
     {"-": negate, "+": fixed, "~": toggle_byte, "NOT": logical_not, "!": logical_not}

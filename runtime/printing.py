@@ -23,12 +23,13 @@ def truncated(value: float, places: int) -> tuple[bool, int, int]:
     return numerator < 0 and (whole > 0 or fraction > 0), whole, fraction
 
 
-def format_number(value: float) -> str:
-    """``PRINT x``: 4 places, truncated, trailing zeros and a bare point dropped (PR-1 RC); never prints ``-0``."""
+def format_number(value: float, places: int = DEFAULT_PLACES) -> str:
+    """``PRINT x``: 4 places (v3's 3), truncated, trailing zeros and a bare point dropped (PR-1 RC); never
+    prints ``-0``."""
     if value.is_integer():
         return str(int(value))
-    negative, whole, fraction = truncated(value, DEFAULT_PLACES)
-    digits = f"{fraction:0{DEFAULT_PLACES}d}".rstrip("0")
+    negative, whole, fraction = truncated(value, places)
+    digits = f"{fraction:0{places}d}".rstrip("0")
     text = f"{whole}.{digits}" if digits else str(whole)
     return "-" + text if negative else text
 

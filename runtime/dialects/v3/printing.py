@@ -12,20 +12,15 @@ from __future__ import annotations
 
 import math
 
+from mintlang.runtime import printing
 from mintlang.runtime.errors import NotSimulated
-from mintlang.runtime.printing import truncated
 
 PLACES = 3
 
 
 def format_number(value: float) -> str:
     """``PRINT x``: three places, cut toward zero, trailing zeros dropped; never ``-0``."""
-    if value.is_integer():
-        return str(int(value))
-    negative, whole, fraction = truncated(value, PLACES)
-    digits = f"{fraction:0{PLACES}d}".rstrip("0")
-    text = f"{whole}.{digits}" if digits else str(whole)
-    return "-" + text if negative else text
+    return printing.format_number(value, PLACES)
 
 
 def format_binary(value: float) -> str:

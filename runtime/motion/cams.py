@@ -19,7 +19,7 @@ from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import ArrayArgument, KeywordTable, per_channel
 from mintlang.runtime.motion.axis import MD_CAM, MOTION_IN_PROGRESS, Axis, Request
 from mintlang.runtime.motion.commands import Motion
-from mintlang.runtime.motion.master import Link, SetPoints, link, master_distance
+from mintlang.runtime.motion.master import Link, MasterDriven, SetPoints, link, master_distance
 from mintlang.runtime.motion.moves import Move
 from mintlang.runtime.ranges import check_range, table_bounds
 
@@ -69,7 +69,7 @@ class CamSettings:
         return int(count) if count == int(count) and 1 <= count < len(positions or ()) else 0
 
 
-class CamMove:
+class CamMove(MasterDriven):
     """A live move that steps the slave through the table as the master advances (FG-12)."""
 
     __slots__ = (
@@ -157,10 +157,9 @@ class CamMove:
         return self.first
 
     def profiler(self, tick: int) -> None:
-        master = self.link.master.sample()
+        master, first = self._sample_master(tick)
         points = self.points
-        if not points.started:
-            points.start(tick)
+        if first:
             self.base_master = master
             if not self._enter(self.first):
                 return
@@ -184,12 +183,6 @@ class CamMove:
                     self.fail()
                 return
         points.record(tick, self.from_position)
-
-    def demand(self, index: int, tick: int) -> float:
-        return self.points.at(tick, self.end != NEVER)
-
-    def velocity(self, index: int, tick: int) -> float:
-        return self.points.velocity(tick, tick >= self.end)
 
     def waits_on_master(self, now: int) -> bool:
         """Its segments are steps of master travel: it moves only when the master does."""

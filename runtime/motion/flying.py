@@ -20,7 +20,7 @@ from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
 from mintlang.runtime.motion.axis import MD_FLY, MD_OFFSET, MOTION_IN_PROGRESS, Axis, Request
 from mintlang.runtime.motion.commands import Motion
-from mintlang.runtime.motion.master import Link, SetPoints, link, master_distance
+from mintlang.runtime.motion.master import Link, MasterDriven, SetPoints, link, master_distance
 from mintlang.runtime.motion.moves import Move
 from mintlang.runtime.motion.superimposed import OffsetTrack
 from mintlang.runtime.ranges import OUT_OF_RANGE
@@ -72,7 +72,7 @@ class Step:
         return Shear(ratio, self.master, self.slave or 0.0)
 
 
-class LockedMove:
+class LockedMove(MasterDriven):
     """A live move whose demand is locked to master travel: queued segments, then a gear ratio or the end.
 
     FLY chains end (a crash stop at the last segment's end point) when no
@@ -214,10 +214,9 @@ class LockedMove:
                 self.end = tick
 
     def profiler(self, tick: int) -> None:
-        master = self.link.master.sample()
+        master, first = self._sample_master(tick)
         points = self.points
-        if not points.started:
-            points.start(tick)
+        if first:
             self.base_master = master
             if self.queue:
                 self._begin(self.queue.popleft(), 0.0)
@@ -230,12 +229,6 @@ class LockedMove:
         points.record(tick, position + self.offsets.total(tick))
         if self.offsets.running is None:
             self.mode &= ~MD_OFFSET
-
-    def demand(self, index: int, tick: int) -> float:
-        return self.points.at(tick, self.end != NEVER)
-
-    def velocity(self, index: int, tick: int) -> float:
-        return self.points.velocity(tick, tick >= self.end)
 
     def waits_on_master(self, now: int) -> bool:
         """A segment or gear with no command to take and no OFFSET running moves only with master travel."""

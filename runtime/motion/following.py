@@ -18,7 +18,7 @@ from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.axis import MD_FOLLOW, MD_OFFSET, MOTION_IN_PROGRESS, Axis
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.flying import LockedMove, Step, StopRule
-from mintlang.runtime.motion.master import Link, SetPoints, link, master_distance
+from mintlang.runtime.motion.master import Link, MasterDriven, SetPoints, link, master_distance
 from mintlang.runtime.motion.moves import PROFILER_TICK_MS, Move
 from mintlang.runtime.motion.superimposed import OffsetTrack
 from mintlang.runtime.ranges import OUT_OF_RANGE, check_range, table_bounds
@@ -39,7 +39,7 @@ def approach(velocity: float, target: float, up: float, down: float) -> float:
     return min(target, velocity + up) if target > velocity else max(target, velocity - up)
 
 
-class VelocityLockedMove:
+class VelocityLockedMove(MasterDriven):
     """FOLLOWMODE 1: slave velocity follows ratio x master velocity at the slave's ACCEL and DECEL (FG-4)."""
 
     __slots__ = (
@@ -76,10 +76,9 @@ class VelocityLockedMove:
         self.offsets = OffsetTrack()  # OFFSETs superimposed on it
 
     def profiler(self, tick: int) -> None:
-        master = self.link.master.sample()
+        master, first = self._sample_master(tick)
         points = self.points
-        if not points.started:
-            points.start(tick)
+        if first:
             self.master = master
         travel = master - self.master
         self.master = master
@@ -94,12 +93,6 @@ class VelocityLockedMove:
             self.mode &= ~MD_OFFSET
         if self.stopping and self.speed == 0.0:
             self.end = tick
-
-    def demand(self, index: int, tick: int) -> float:
-        return self.points.at(tick, self.end != NEVER)
-
-    def velocity(self, index: int, tick: int) -> float:
-        return self.points.velocity(tick, tick >= self.end)
 
     def waits_on_master(self, now: int) -> bool:
         """At rest with no OFFSET running, it moves only when the master does."""

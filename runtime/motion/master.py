@@ -175,6 +175,31 @@ class SetPoints:
         return 0.0 if ended or not self.started else (p1 - p0) * 1000.0 / (t1 - t0)
 
 
+class MasterDriven:
+    """A live move a master drives (a cam, FLY and FOLLOW): its demand and velocity are its ``points``, read
+    as the servo reads them, held at the last once the move has ``end``-ed."""
+
+    __slots__ = ()
+    link: Link
+    points: SetPoints
+    end: int
+
+    def _sample_master(self, tick: int) -> tuple[float, bool]:
+        """The master's position at this profiler tick, and whether it is the move's first (its set-points
+        start there)."""
+        master = self.link.master.sample()
+        first = not self.points.started
+        if first:
+            self.points.start(tick)
+        return master, first
+
+    def demand(self, index: int, tick: int) -> float:
+        return self.points.at(tick, self.end != NEVER)
+
+    def velocity(self, index: int, tick: int) -> float:
+        return self.points.velocity(tick, tick >= self.end)
+
+
 def link(motion: Motion, slave: Axis) -> Link:
     """The master of ``slave`` as its settings say; error 70 if it would follow itself."""
     chosen = settings(motion, slave)

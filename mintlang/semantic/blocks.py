@@ -72,6 +72,15 @@ _NAMED_EVENTS = ("MOVEBUFFERLOW", "ONERROR", "TIMER", "STOP", *(f"COMMS{number}"
 BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.IfThen, n.For, n.While, n.Until, n.SyntaxError_, n.EventBlock})
 
 
+class _BareThen(NamedTuple):
+    """An IF .. THEN with nothing after THEN, at ``depth`` blocks deep: the stray ELSE and ENDIF after it
+    are offered ``fix``, DO for its THEN, until the block DO would open has taken its ELSE and ENDIF."""
+
+    depth: int
+    fix: Fix
+    has_else: bool = False
+
+
 class Place(NamedTuple):
     """Where a statement stands in its file: the line it starts on and its index among that line's statements.
 
@@ -133,11 +142,20 @@ def opener_kind(statement: n.Statement) -> BlockKind | None:
 
 
 def closer_kind(statement: n.Statement) -> BlockKind | None:
-    """The kind of block a well-formed ``statement`` closes, if it closes one."""
+    """The kind of block ``statement`` closes, if it closes one: a broken closer (``NEXT a``) too, as the
+    matcher counts it, so a tool following the blocks sees the same ones as the compiler's stack."""
     kind = type(statement)
     if kind is n.Until:
         return BlockKind.REPEAT
-    closed = _CLOSERS.get(statement.word) if kind is n.BlockWord else None  # type: ignore[union-attr]
+    if kind is n.BlockWord:
+        word = statement.word  # type: ignore[union-attr]
+    elif kind is n.SyntaxError_ and statement.closes is not None:  # type: ignore[union-attr]
+        word = statement.closes  # type: ignore[union-attr]
+        if word == "UNTIL":
+            return BlockKind.REPEAT
+    else:
+        return None
+    closed = _CLOSERS.get(word)
     return closed[0] if closed is not None else None
 
 
@@ -156,7 +174,7 @@ class _Matcher:
         self.startup: int | None = None  # the line of the MintMT Startup block
         self.blocks: list[Block] = []
         self.diagnostics: list[Diagnostic] = []
-        self.bare_then: tuple[int, Fix] | None = None  # the last IF .. THEN with nothing after THEN: depth, fix
+        self.bare_then: _BareThen | None = None  # the last IF .. THEN with nothing after THEN
 
     def statement(self, statement: n.Statement, line: n.PlacedLine, index: int) -> None:
         """One statement of ``BLOCK_STATEMENTS``, the ``index``-th of its line."""
@@ -165,7 +183,7 @@ class _Matcher:
         if type(statement) is n.IfThen:
             then = _then_written(statement, line.syntax) if not statement.body else None  # type: ignore[union-attr]
             if then is not None:
-                self.bare_then = (len(self.stack), Fix("Change THEN to DO", (Edit(line.span(then), "DO"),)))
+                self.bare_then = _BareThen(len(self.stack), Fix("Change THEN to DO", (Edit(line.span(then), "DO"),)))
         elif kind is not None:
             if kind in _TOP_LEVEL:
                 self._top_level(statement, kind, line)
@@ -185,7 +203,7 @@ class _Matcher:
             top = self.stack[-1] if self.stack else None
             if top is None or top.kind is not BlockKind.IF or top.middle is not None:
                 self.diagnostics.append(
-                    _error(2011, line.span(statement.span), "ELSE without IF .. DO", fixes=self._do())
+                    _error(2011, line.span(statement.span), "ELSE without IF .. DO", fixes=self._do("ELSE"))
                 )
             else:
                 top.middle = place
@@ -234,9 +252,15 @@ class _Matcher:
             detail = f"a second Event {name.text} block: the event's handler is the block of line {first}"
             self.diagnostics.append(_error(2003, span, detail))
 
-    def _do(self) -> tuple[Fix, ...]:
-        """Writing DO for the THEN of the last bare IF .. THEN at the depth a stray ELSE or ENDIF stands at."""
-        return (self.bare_then[1],) if self.bare_then is not None and self.bare_then[0] == len(self.stack) else ()
+    def _do(self, word: str) -> tuple[Fix, ...]:
+        """Writing DO for the THEN of the last bare IF .. THEN at the depth a stray ELSE or ENDIF stands at, while
+        the block that DO would open could take it: its first ELSE and its first ENDIF, never a second ELSE
+        (000:18983-18999) nor an ENDIF after the one that would close it."""
+        bare = self.bare_then
+        if bare is None or bare.depth != len(self.stack) or (word == "ELSE" and bare.has_else):
+            return ()
+        self.bare_then = bare._replace(has_else=True) if word == "ELSE" else None
+        return (bare.fix,)
 
     def close(self, kind: BlockKind, closer: Place, span: Span, code: int, message: str) -> None:
         stack = self.stack
@@ -246,12 +270,14 @@ class _Matcher:
                 message += f" (the innermost open block is {inner} on line {stack[-1].opener.line})"
             for opened in stack:  # the compiler stops here: what it had open is not reported again
                 opened.reported = True
-            fixes = self._do() if kind is BlockKind.IF else ()
+            fixes = self._do("ENDIF") if kind is BlockKind.IF else ()
             self.diagnostics.append(_error(code, span, message, fixes=fixes))
             return
         top = stack.pop()
         self.open[kind] -= 1
         self.blocks.append(Block(kind, top.opener, top.middle, closer))
+        if self.bare_then is not None and self.bare_then.depth > len(stack):  # DO there reaches no later ELSE
+            self.bare_then = None
 
     def finish(self) -> Structure:
         for unclosed in self.stack:

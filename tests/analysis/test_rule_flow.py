@@ -58,6 +58,26 @@ def test_exit_inside_if_then_outside_a_loop_is_error_2003() -> None:
     assert found("IF IN1 THEN EXIT\n") == [("E2003", ERROR, 1)]
 
 
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        # 000:18939-18941: FOR loop = 1 TO 10 is error 2006 (LOOP is a keyword), yet its NEXT closes it, so
+        # the EXIT inside leaves that loop (000:10236-10245) and is no second error
+        pytest.param("FOR loop = 1 TO 10\n  IF IN1 THEN EXIT\nNEXT\nEND\n", [("E2006", ERROR, 1)], id="for-loop"),
+        # 000:1710-1711: NEXT with the index name after it is an error, yet it still closes its FOR, so an
+        # EXIT after it is outside any loop
+        pytest.param("DIM i\nFOR i = 1 TO 2\nNEXT i\nEXIT\n", [("E2003", ERROR, 3), ("E2003", ERROR, 4)], id="next-i"),
+        # 000:1752-1756: REPEAT .. UNTIL <condition>; an UNTIL whose condition is missing still ends the block,
+        # and, its condition unknown, is no endless loop: what follows can run, and an EXIT there is outside it
+        pytest.param(
+            "DIM i\nREPEAT\n  i = i + 1\nUNTIL\nPRINT i\nEXIT\n", [("E2003", ERROR, 4), ("E2003", ERROR, 6)], id="until"
+        ),
+    ],
+)
+def test_a_broken_loop_word_opens_or_closes_its_loop_for_the_flow(source: str, expected: list) -> None:
+    assert found(source) == expected
+
+
 def test_exit_never_leaves_a_callers_loop() -> None:
     # NM-8: a subroutine's EXIT with no loop of its own is an error even when its caller is in a loop
     source = "LOOP\n  GOSUB check\nENDL\n#check\nIF IN1 THEN EXIT\nRETURN\n"

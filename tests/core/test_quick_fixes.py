@@ -132,3 +132,25 @@ def test_then_used_as_a_block_becomes_do(source: str, expected: str) -> None:
 def test_a_then_with_a_statement_is_not_the_stray_endifs_block() -> None:
     (stray,) = [d for d in mintlang.check("DIM a\nIF a THEN PRINT 1\nENDIF\n") if d.code == "E2011"]
     assert stray.fixes == ()
+
+
+# 000:18983-18999: after an IF .. THEN block, a second ELSE, or an ENDIF after the one DO would pair with, is
+# E2011 however the THEN is written: DO would give it no block, so it is offered no DO.
+STRAYS_DO_CANNOT_PAIR = [
+    pytest.param(
+        "DIM a\nIF a THEN\n  PRINT 1\nENDIF\nIF a DO\n  PRINT 2\nELSE\n  PRINT 3\nELSE\n  PRINT 4\nENDIF\nENDIF\n",
+        {4: True, 9: False, 12: False},
+        id="the-guide's-second-else-after-a-then-block",
+    ),
+    pytest.param("DIM a\nIF a THEN\n  PRINT 1\nELSE\nELSE\nENDIF\n", {4: True, 5: False, 6: True}, id="second-else"),
+    pytest.param(
+        "DIM a\nFOR a = 1 TO 2\n  IF a THEN\nNEXT\nFOR a = 1 TO 2\n  ELSE\nNEXT\n", {6: False}, id="in-another-loop"
+    ),
+]
+
+
+@pytest.mark.parametrize(("source", "offered"), STRAYS_DO_CANNOT_PAIR)
+def test_do_is_offered_only_to_the_strays_its_block_would_take(source: str, offered: dict[int, bool]) -> None:
+    index = mintlang.LineIndex(source)
+    strays = {index.position(d.span.start).line: d for d in mintlang.check(source) if d.code == "E2011"}
+    assert {line: any(fix.title == "Change THEN to DO" for fix in d.fixes) for line, d in strays.items()} == offered

@@ -46,7 +46,7 @@ from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Severity, Span
 from mintlang.dialect import Dialect
 from mintlang.records import record
-from mintlang.semantic.blocks import Block
+from mintlang.semantic.blocks import LOOPS, Block, BlockKind, closer_kind, opener_kind
 from mintlang.semantic.constants import constant_value
 from mintlang.semantic.events import event_of
 from mintlang.semantic.index import LineFacts
@@ -56,12 +56,14 @@ from mintlang.syntax import nodes as n
 from mintlang.syntax.parser import Document
 
 _TERMINATORS = frozenset({"END", "RETURN", "EXIT"})
-_RECEIVERS = frozenset({"NEXT", "ENDW", "ENDL"})  # reached from elsewhere in their block
 _LAST_WORDS = frozenset({"END", "RETURN"})
 _RETURN_WORD = frozenset({"RETURN"})
 _NO_WORDS: frozenset[str] = frozenset()
-# What changes the flow; a line of other statements only runs, when it can be reached at all.
-_FLOW_STATEMENTS = frozenset({n.BlockWord, n.Jump, n.IfDo, n.IfThen, n.While, n.For, n.Until, n.EventBlock})
+# What changes the flow; a line of other statements only runs, when it can be reached at all. A statement
+# that does not parse may still open or close a block (``FOR loop = ..``, ``NEXT i``), as the matcher counts it.
+_FLOW_STATEMENTS = frozenset(
+    {n.BlockWord, n.Jump, n.IfDo, n.IfThen, n.While, n.For, n.Until, n.EventBlock, n.SyntaxError_}
+)
 _SEPARATE_BLOCKS = {"STARTUP": "ENDSTARTUP"}  # MintMT blocks besides Event .. End Event
 
 
@@ -79,8 +81,8 @@ def _compiled(statement: n.Statement) -> bool:
 
 
 def _receives_flow(statement: n.Statement) -> bool:
-    kind = type(statement)
-    return kind is n.Until or (kind is n.BlockWord and statement.word in _RECEIVERS)  # type: ignore[union-attr]
+    """A loop's closer, reached from elsewhere in its block (by EXIT, or the pass that ends it)."""
+    return closer_kind(statement) in LOOPS
 
 
 def check(facts: Facts) -> Iterator[Finding]:
@@ -388,17 +390,17 @@ class _Flow:
 
     def _if_bounds(self, statement: n.Statement) -> bool:
         """Follow IF .. DO, ELSE and ENDIF; True for ELSE and ENDIF, which are never dead code themselves."""
-        kind = type(statement)
-        if kind is n.IfDo:
+        if opener_kind(statement) is BlockKind.IF:
             self.ifs.append(_If(entered=self.reachable))
             return False
-        if kind is not n.BlockWord or statement.word not in ("ELSE", "ENDIF"):  # type: ignore[union-attr]
+        closes = closer_kind(statement) is BlockKind.IF
+        if not closes and not (type(statement) is n.BlockWord and statement.word == "ELSE"):  # type: ignore[union-attr]
             return False
         if not self.ifs:  # a closer without IF (2011): reached from nowhere the flow knows
             self.reachable = True
             return True
         block = self.ifs[-1]
-        if statement.word == "ELSE":  # type: ignore[union-attr]
+        if not closes:  # ELSE
             block.through_then = self.reachable
             self.reachable = block.entered  # the condition was false
         else:
@@ -408,22 +410,24 @@ class _Flow:
         return True
 
     def _loop_bounds(self, statement: n.Statement) -> None:
-        """Open and close loops; after an endless loop nothing that follows runs."""
+        """Open and close loops, broken ones as the matcher counts them (a condition that does not parse makes
+        no loop endless); after an endless loop nothing that follows runs."""
         dialect = self.dialect
         kind = type(statement)
-        if kind is n.BlockWord:
-            word = statement.word  # type: ignore[union-attr]
-            if word in ("LOOP", "REPEAT"):
-                self.loops.append(_Loop(endless=True))  # a REPEAT is endless only if UNTIL says so
-            elif word in ("ENDL", "ENDW", "NEXT") and self.loops:
-                self._close(self.loops.pop())
-        elif kind is n.While:
-            self.loops.append(_Loop(endless=bool(constant_value(statement.condition, dialect))))  # type: ignore[union-attr]
-        elif kind is n.For:
-            self.loops.append(_Loop(endless=False))
-        elif kind is n.Until and self.loops:
+        if opener_kind(statement) in LOOPS:
+            if kind is n.BlockWord:  # LOOP, or REPEAT: endless only if UNTIL says so
+                endless = True
+            elif kind is n.While:
+                endless = bool(constant_value(statement.condition, dialect))  # type: ignore[union-attr]
+            else:  # FOR, or a broken opener
+                endless = False
+            self.loops.append(_Loop(endless=endless))
+        elif closer_kind(statement) in LOOPS and self.loops:
             loop = self.loops.pop()
-            loop.endless = loop.endless and constant_value(statement.condition, dialect) == 0  # type: ignore[union-attr]
+            if kind is n.Until:
+                loop.endless = loop.endless and constant_value(statement.condition, dialect) == 0  # type: ignore[union-attr]
+            elif kind is n.SyntaxError_:
+                loop.endless = False
             self._close(loop)
 
     def _close(self, loop: _Loop) -> None:

@@ -57,6 +57,43 @@ def test_a_misspelt_variable_gets_the_declared_name_it_resembles() -> None:
     assert declare.title == "Declare 'targt' with DIM"
 
 
+@pytest.mark.parametrize(
+    ("source", "meant", "fixed"),
+    [
+        # 000:5563-5567: a keyword is written in any mix of cases; the checker matches names alike, so a
+        # misspelling in other letters resembles the declared name all the same
+        pytest.param("DIM layer\nPRINT LAYR\n", "layer", "DIM layer\nPRINT layer\n", id="in-capitals"),
+        # 000:843-844: every predefined constant begins with "_", whatever its case; HOME's own constants
+        # include _hmNEGATIVE_SWITCH (000:11412)
+        pytest.param(
+            "HOME = _hmNEGATIVE_SWTCH\n", "_hmNEGATIVE_SWITCH", "HOME = _hmNEGATIVE_SWITCH\n", id="a-constant"
+        ),
+        pytest.param("OUT1 = _of\n", "_OFF", "OUT1 = _OFF\n", id="a-general-constant-in-small-letters"),
+    ],
+)
+def test_an_undeclared_name_gets_the_name_or_constant_it_resembles(source: str, meant: str, fixed: str) -> None:
+    diagnostic = only(source, "E3001")
+    assert diagnostic.message.endswith(f"'{meant}'?")
+    replace, _declare = diagnostic.fixes
+    assert (replace.title, apply(source, replace.edits)) == (f"Replace with {meant}", fixed)
+
+
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        # 000:16353: STOP[axes] takes only its axes; the words after it, a comment whose REM is missing
+        # (000:15510-15515), are its one syntax error 2003, not undeclared variables as well
+        pytest.param("STOP following\n", [("E2003", ERROR, 1)], id="stop"),
+        pytest.param("GO.0 : STOP following\n", [("E2003", ERROR, 1)], id="after-a-colon"),
+        # 000:16157: SPEED takes its value after "="; the name written without it is meant as that value, and
+        # is undeclared all the same
+        pytest.param("SPEED later\n", [("E2003", ERROR, 1), ("E3001", ERROR, 1)], id="a-value-without-its-equals"),
+    ],
+)
+def test_words_after_a_command_that_takes_none_are_one_error_2003(source: str, expected: list) -> None:
+    assert found(source) == expected
+
+
 def test_a_misspelling_inside_a_macro_gets_no_replacement_of_the_macro_name() -> None:
     # the error points at the use of the macro; replacing that with 'counter' would drop the "+ 1"
     source = "DIM counter\nDEFINE inc = countr + 1\ncounter = inc\nPRINT counter\n"

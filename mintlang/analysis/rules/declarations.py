@@ -26,7 +26,8 @@ from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import KeywordKind
+from mintlang.keyworddb.model import KeywordKind, Use
+from mintlang.keyworddb.usage import refusal
 from mintlang.records import record
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, Unit
@@ -39,7 +40,7 @@ from mintlang.syntax.vocabulary import vocabulary
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
     if model.program.dialect.modern:
-        yield from _undeclared_variables(model, _broken_dims(facts))
+        yield from _undeclared_variables(model, _broken_dims(facts), _prose_after_commands(facts))
     else:
         yield from _v3_undefined_variables(model)
     yield from _labels(facts, _jump_words(facts))
@@ -62,6 +63,23 @@ def _broken_dims(facts: Facts) -> dict[str, tuple[Unit, int]]:
     return found
 
 
+def _prose_after_commands(facts: Facts) -> tuple[tuple[Unit, Span], ...]:
+    """Where the operands of a command that takes none start and end (``STOP following``, a comment missing its
+    REM): its error 2003 is the one diagnostic, not an error 3001 at each word of the comment as well."""
+    model = facts.model
+    controller, dialect = model.controller.controller, model.program.dialect
+    keywords = database().keywords_of(dialect)
+    found: list[tuple[Unit, Span]] = []
+    for unit, line, statement in facts.statements(n.KeywordStatement):
+        keyword = keywords.get(statement.keyword.keyword) if statement.arguments else None  # type: ignore[union-attr]
+        if keyword is None or refusal(keyword, controller, dialect, Use.COMMAND) is not None:
+            continue  # no operands, or the command itself is refused
+        if refusal(keyword, controller, dialect, Use.COMMAND, has_arguments=True) is not None:
+            arguments = statement.arguments  # type: ignore[union-attr]
+            found.append((unit, line.span(Span(arguments[0].span.start, arguments[-1].span.end))))
+    return tuple(found)
+
+
 def _after(occurrence: Occurrence, place: tuple[Unit, int]) -> bool:
     """Whether ``occurrence`` comes after ``place`` in compile order (the configuration file, then the program)."""
     unit, start = place
@@ -70,9 +88,12 @@ def _after(occurrence: Occurrence, place: tuple[Unit, int]) -> bool:
     return occurrence.span.start > start
 
 
-def _undeclared_variables(model: SemanticModel, broken_dims: dict[str, tuple[Unit, int]]) -> Iterator[Finding]:
+def _undeclared_variables(
+    model: SemanticModel, broken_dims: dict[str, tuple[Unit, int]], prose: tuple[tuple[Unit, Span], ...]
+) -> Iterator[Finding]:
     renames = database()
-    declared = [symbol.name for symbol in model.symbols.variables.values() if symbol.definitions]
+    # by their upper-case spellings, as the names are matched whatever their case (LAYR is like layer)
+    declared = {symbol.name.upper(): symbol.name for symbol in model.symbols.variables.values() if symbol.definitions}
     places: dict[Unit, _DimPlaces] = {}  # found once per file, for the first name that needs a DIM
     given_as_arrays = cache(partial(_given_as_arrays, model))  # walked once, for the first name that needs it
     for symbol in model.symbols.variables.values():
@@ -82,6 +103,9 @@ def _undeclared_variables(model: SemanticModel, broken_dims: dict[str, tuple[Uni
             if not occurrence.declared_before
             and not _macro_left_in_macro(model, symbol.name, occurrence)
             and not (symbol.identity in broken_dims and _after(occurrence, broken_dims[symbol.identity]))
+            and not any(
+                unit is occurrence.unit and span.start <= occurrence.span.start < span.end for unit, span in prose
+            )
         ]
         if not undeclared:
             continue
@@ -113,9 +137,12 @@ def _undeclared_variables(model: SemanticModel, broken_dims: dict[str, tuple[Uni
                 detail += f" (in Mint v3 it was the abbreviation of {old.name}; v4: {v4}, see mint-migrate)"
             elif symbol.definitions:
                 detail += " (its DIM comes later: declarations must come first)"
-            elif (close := closest(occurrence.spelling, declared)) is not None:
-                detail += f"; {did_you_mean(close)}"
-                fixes = (_replace_each(written, close), *fixes) if written else fixes
+            elif (close := closest(occurrence.spelling.upper(), declared)) is not None:
+                detail += f"; {did_you_mean(declared[close])}"
+                fixes = (_replace_each(written, declared[close]), *fixes) if written else fixes
+            elif (constant := _constant_like(occurrence.spelling, model.program.dialect)) is not None:
+                detail += f"; did you mean the constant '{constant}'?"  # _hmNEGATIVE_SWTCH
+                fixes = (_replace_each(written, constant), *fixes) if written else fixes
             elif (
                 not _only_a_variable(model, occurrence)
                 and (keyword := _keyword_holding_a_value(occurrence.spelling, model)) is not None
@@ -140,6 +167,16 @@ def _v3_undefined_variables(model: SemanticModel) -> Iterator[Finding]:
 
 
 _V3_TITLE = "Undefined Variables"  # the v3 guide's name for the error (001:12971)
+
+
+def _constant_like(spelling: str, dialect: Dialect) -> str | None:
+    """The predefined constant an undeclared name beginning with ``_`` is most likely a misspelling of: every
+    constant begins with it, and case does not matter (000:843-844)."""
+    if not spelling.startswith("_"):
+        return None
+    constants = database().constants_of(dialect)
+    meant = closest(spelling.upper(), constants)
+    return constants[meant].name if meant is not None else None
 
 
 def _keyword_holding_a_value(spelling: str, model: SemanticModel) -> str | None:

@@ -399,6 +399,7 @@ def _closing_word(kinds: list[TokenKind]) -> str | None:
 
 _END_WHILE = [_K.END, _K.WHILE]  # other BASICs' closer of WHILE, which Mint writes ENDW (MintMT too: MT-23)
 _LABEL_AFTER_CODE = [_K.HASH, _K.NAME]  # a label written after a statement on its line
+_JUMPS = (_K.GOSUB, _K.GOTO)
 
 
 def _segments(kinds: list[TokenKind], start: int) -> list[tuple[int, int]]:
@@ -513,6 +514,11 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
         fixes = (Fix.replace(words, "ENDW"),)
         written = f"{line.texts[begin]} {line.texts[begin + 1]}"
         return _error(2003, words, f"a WHILE loop ends with ENDW, not {written}", fixes=fixes)
+    if not at_end and index > begin and kinds[index - 1] in _JUMPS and kinds[index] is _K.HASH and end == index + 2:
+        # GOSUB #init: "the hash is not used in the GOSUB statement" (000:1870, 000:5754)
+        removal = Fix("Remove the '#'", (Edit(shared_span(line.starts[index], line.starts[index + 1]), ""),), safe=True)
+        jump, label = line.texts[index - 1].upper(), line.texts[index + 1]
+        return _error(2003, span, f"{jump} names its label without '#': {jump} {label}", fixes=(removal,))
     if segment[0] is _K.NEXT and index == begin + 1 and kinds[index] is _K.NAME:
         # "NEXT i" as in BASIC: Mint's NEXT takes no loop variable (000:1708-1710; 001:2238)
         removal = Fix(

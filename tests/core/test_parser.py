@@ -430,6 +430,28 @@ def test_next_with_two_loop_variables_has_no_fix_as_basic_closed_two_loops_with_
     assert diagnostic.message.endswith("NEXT takes no loop variable: write NEXT alone") and diagnostic.fixes == ()
 
 
+@pytest.mark.parametrize(
+    ("source", "message", "fixed"),
+    [
+        # 000:1870 and 000:5754: "the hash is not used in the GOSUB statement"
+        pytest.param("GOSUB #init\n", "GOSUB names its label without '#': GOSUB init", "GOSUB init\n", id="gosub"),
+        pytest.param("goto # done\n", "GOTO names its label without '#': GOTO done", "goto done\n", id="goto"),
+        pytest.param(
+            "IF IN1 THEN GOSUB #fault\n",
+            "GOSUB names its label without '#': GOSUB fault",
+            "IF IN1 THEN GOSUB fault\n",
+            id="after-then",
+        ),
+    ],
+)
+def test_a_label_written_with_its_hash_after_gosub_or_goto(source: str, message: str, fixed: str) -> None:
+    (diagnostic,) = mintlang.parse(source).diagnostics
+    assert (diagnostic.code, diagnostic.message) == ("E2003", f"Syntax error: {message}")
+    (fix,) = diagnostic.fixes
+    (edit,) = fix.edits
+    assert fix.safe and source[: edit.span.start] + edit.text + source[edit.span.end :] == fixed
+
+
 def test_a_keyword_after_gosub_is_refused_as_a_label() -> None:
     (diagnostic,) = mintlang.parse("GOSUB loop\n").diagnostics
     assert diagnostic.code == "E2006" and diagnostic.message.endswith("cannot be used as a label")

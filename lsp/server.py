@@ -17,7 +17,7 @@ from lsprotocol import types
 from pygls.lsp.server import LanguageServer
 from pygls.uris import to_fs_path
 
-from mintlang.lsp import __version__
+from mintlang import __version__
 from mintlang.lsp.collector import Collector
 from mintlang.lsp.disk import read_text
 from mintlang.lsp.lookup import line_prefix

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+__version__ = "0.1.0"  # the distribution's (pyproject.toml reads it here)
+
 from mintlang.allocation import without_collector
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller

@@ -27,10 +27,12 @@ from mintlang.runtime.debugger.launch import Application, LaunchError, Layout, l
 from mintlang.runtime.debugger.variables import NotSettable, References, scopes
 from mintlang.runtime.interpreter.vm import Site, StopReason
 from mintlang.runtime.run import RunResult
+from mintlang.syntax.lexer import lex
 from mintlang.syntax.nodes import identity
+from mintlang.syntax.tokens import TokenKind
 
 THREAD_ID = 1  # the program is one thread of control; event handlers run on it
-_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_NAMES = frozenset({TokenKind.NAME, TokenKind.LABEL})  # the tokens that write a user's name
 _QUOTED = re.compile(r'"([^"]*)"')  # keys typed in the debug console
 
 CAPABILITIES: dict[str, Any] = {
@@ -453,11 +455,15 @@ def _whole(value: object, name: str) -> int:
 
 
 def _spellings(application: Application) -> dict[str, str]:
-    """Each name's spelling as the source first writes it, by the identity the interpreter files it under."""
+    """Each name's spelling as the code first writes it, by the identity the interpreter files it under: a
+    comment's or a string's words are not names (``' the timer`` above ``Event TIMER`` is not its spelling)."""
     spellings: dict[str, str] = {}
     for text in (application.configuration_source or "", application.source):
-        for word in _WORD.findall(text):
-            spellings.setdefault(identity(word), word)
+        for _, line in lex(text, application.dialect).lines:
+            for kind, word in zip(line.kinds, line.texts, strict=True):
+                if kind in _NAMES:
+                    name = word.lstrip("#")
+                    spellings.setdefault(identity(name), name)
     return spellings
 
 

@@ -140,3 +140,26 @@ def test_each_axis_shows_its_move_running_and_those_loaded_behind_it(debug: Debu
     moves = client.variables(buffer["variablesReference"])
     assert list(moves) == ["running", "(1)", "(2)"]
     assert moves["(1)"].endswith("axes [0], to 20") and moves["(2)"].endswith("axes [0], to 5")
+
+
+SPELLED = [
+    pytest.param("REM the count of boxes\nDIM Count\nCount = 1\nPRINT Count\n", "v4", id="a REM comment before it"),
+    pytest.param('PRINT "count"\nDIM Count\nCount = 1\nPRINT Count\n', "v4", id="a string before it"),
+    pytest.param("' the count of boxes\nDim Count\nCount = 1\nPrint Count\n", "mintmt", id="a MintMT ' comment"),
+]
+
+
+@pytest.mark.parametrize(("source", "dialect"), SPELLED)
+def test_a_name_is_shown_as_the_code_spells_it_not_as_a_comment_or_string_does(
+    debug: Debug, source: str, dialect: str
+) -> None:
+    client = debug(source, breakpoints=(4,), dialect=dialect)
+    client.stopped()
+    assert client.values() == {"Count": "1"}
+
+
+def test_a_mintmt_events_frame_is_named_as_its_event_line_spells_it(debug: Debug) -> None:
+    source = "' the timer ticks\nDim ticks\nTIMEREVENT = 10\nPause ticks >= 1\n\nEvent TIMER\n  ticks = 1\nEnd Event\n"
+    client = debug(source, breakpoints=(7,), dialect="mintmt")
+    client.stopped()
+    assert [frame["name"] for frame in client.frames()] == ["#TIMER", "program"]

@@ -390,14 +390,19 @@ _CLOSING_WORDS = frozenset({_K.NEXT, _K.ENDIF, _K.ENDW, _K.ENDL, _K.UNTIL, _K.EN
 
 
 def _closing_word(kinds: list[TokenKind]) -> str | None:
-    """The closer a broken statement still is (``NEXT a``, ``End While`` for ENDW), so its block is not
-    reported unclosed as well."""
-    if kinds[:2] == _END_WHILE:
-        return _K.ENDW.value
+    """The closer a broken statement still is (``NEXT a``, ``End While`` for ENDW, ``END IF`` for ENDIF), so its
+    block is not reported unclosed as well."""
+    two_words = _TWO_WORD_CLOSERS.get(tuple(kinds[:2]))
+    if two_words is not None:
+        return two_words[0].value
     return kinds[0].value if kinds[0] in _CLOSING_WORDS else None
 
 
-_END_WHILE = [_K.END, _K.WHILE]  # other BASICs' closer of WHILE, which Mint writes ENDW (MintMT too: MT-23)
+# Other BASICs' closers in two words, which Mint writes as one (MintMT's End While too: MT-23), with the block
+_TWO_WORD_CLOSERS = {
+    (_K.END, _K.WHILE): (_K.ENDW, "a WHILE loop"),  # 000:1781
+    (_K.END, _K.IF): (_K.ENDIF, "an IF .. DO block"),  # 000:1589-1600
+}
 _LABEL_AFTER_CODE = [_K.HASH, _K.NAME]  # a label written after a statement on its line
 _JUMPS = (_K.GOSUB, _K.GOTO)
 
@@ -509,11 +514,11 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
         return _error(2007, span, f"found {found}")
     if segment[0] is _K.FOR and "TO" in expected:
         return _error(2008, span, f"found {found}")
-    if segment[:2] == _END_WHILE:
+    if (two_words := _TWO_WORD_CLOSERS.get(tuple(segment[:2]))) is not None:
+        closer, block = two_words[0].value, two_words[1]
         words = shared_span(line.starts[begin], line.ends[begin + 1])
-        fixes = (Fix.replace(words, "ENDW"),)
         written = f"{line.texts[begin]} {line.texts[begin + 1]}"
-        return _error(2003, words, f"a WHILE loop ends with ENDW, not {written}", fixes=fixes)
+        return _error(2003, words, f"{block} ends with {closer}, not {written}", fixes=(Fix.replace(words, closer),))
     if not at_end and index > begin and kinds[index - 1] in _JUMPS and kinds[index] is _K.HASH and end == index + 2:
         # GOSUB #init: "the hash is not used in the GOSUB statement" (000:1870, 000:5754)
         removal = Fix("Remove the '#'", (Edit(shared_span(line.starts[index], line.starts[index + 1]), ""),), safe=True)

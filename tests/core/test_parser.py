@@ -452,6 +452,29 @@ def test_a_label_written_with_its_hash_after_gosub_or_goto(source: str, message:
     assert fix.safe and source[: edit.span.start] + edit.text + source[edit.span.end :] == fixed
 
 
+@pytest.mark.parametrize(
+    ("source", "written", "closer"),
+    [
+        # 000:1589-1600: an IF .. DO block ends with ENDIF, one word; END IF as in other BASICs closes it all the
+        # same for the block stack, so it is one error with its fix, not also an IF never closed
+        pytest.param('DIM a\nIF a = 10 DO\n  PRINT "ten"\nEND IF\nEND\n', "END IF", "ENDIF", id="end-if"),
+        pytest.param(
+            "DIM a\nWHILE a < 3\n  a = a + 1\nEND WHILE\nEND\n", "END WHILE", "ENDW", id="end-while"
+        ),  # 000:1781
+    ],
+)
+def test_a_closer_written_in_two_words_is_one_error_with_the_word_as_fix(
+    source: str, written: str, closer: str
+) -> None:
+    (error,) = mintlang.check(source)
+    assert (error.code, source[error.span.start : error.span.end]) == ("E2003", written)
+    assert error.message.endswith(f"ends with {closer}, not {written}")
+    (fix,) = error.fixes
+    (edit,) = fix.edits
+    fixed = source[: edit.span.start] + edit.text + source[edit.span.end :]
+    assert (fixed, mintlang.check(fixed)) == (source.replace(written, closer), [])
+
+
 def test_a_keyword_after_gosub_is_refused_as_a_label() -> None:
     (diagnostic,) = mintlang.parse("GOSUB loop\n").diagnostics
     assert diagnostic.code == "E2006" and diagnostic.message.endswith("cannot be used as a label")

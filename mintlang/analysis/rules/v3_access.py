@@ -20,11 +20,16 @@ from collections.abc import Iterator
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.rules.addressing import circle_values, lone_position, one_value, values_for_axes, vector_gap
 from mintlang.analysis.traversal import KeywordUse, LineScope, Use
+from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import CIRCLES, VECTORS, Addressing, V3Keyword
+from mintlang.semantic.constants import constant_integer
+from mintlang.syntax import nodes as n
 from mintlang.syntax.v3_axis_lists import NUMBER_OR_VARIABLE, refused_axes
 
 _MOST_AXES = 3  # "MINT's multi-axis syntax supports up to 3 axes on one controller" (001:972)
+_BITS = range(8)  # IN.a and OUT.a: "Out of Range" outside 0 to 7 (001:8965, 10592)
+_BIT_WORDS = frozenset({"IN", "OUT"})
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
@@ -61,6 +66,8 @@ def _axes(use: KeywordUse, keyword: V3Keyword | None) -> Iterator[Finding]:
         yield from circle_values(use, name)
     for item in refused_axes(selector) if selector is not None else ():  # None: the default axes, any AXES set
         yield Finding(use.unit, mint_error(2, item.span, f"Invalid axis in Mint v3: {NUMBER_OR_VARIABLE}"))
+    if selector is not None and keyword is not None:
+        yield from _numbers(use, keyword, selector)
     if name in VECTORS:
         detail = f"Invalid axis in Mint v3: {name} needs two axes or more"
         if selector is not None and len(selector.axes) < 2:
@@ -69,3 +76,18 @@ def _axes(use: KeywordUse, keyword: V3Keyword | None) -> Iterator[Finding]:
             yield Finding(use.unit, mint_error(2, position.span, detail))
         else:
             yield from vector_gap(use, name)
+
+
+def _numbers(use: KeywordUse, keyword: V3Keyword, selector: n.Selector) -> Iterator[Finding]:
+    """Constant axis and bit numbers a v3 controller lacks, as the run reports them: an axis past the three
+    of 001:972 is "Invalid axis" (v4's 2), an input or output bit outside 0 to 7 "Out of range" (v4's 3)."""
+    for item in selector.items if keyword.addressing is Addressing.AXIS or keyword.name in _BIT_WORDS else ():
+        number = constant_integer(item, Dialect.V3)
+        if item is None or number is None:
+            continue
+        if keyword.addressing is Addressing.AXIS and number not in range(_MOST_AXES):
+            detail = f"Invalid axis in Mint v3: axis {number}, where a controller has axes 0 to {_MOST_AXES - 1}"
+            yield Finding(use.unit, mint_error(2, item.span, detail))
+        elif keyword.name in _BIT_WORDS and number not in _BITS:
+            detail = f"Out of range in Mint v3: {keyword.name}.{number}, where the bits are 0 to {_BITS[-1]}"
+            yield Finding(use.unit, mint_error(3, item.span, detail))

@@ -2,7 +2,8 @@
 
 * ``IN`` reads the levels of the 8 inputs, ``IN0``..``IN7`` one each (001:4284-4330); an
   input's interrupt comes on its falling edge, see ``events.py``.
-* ``OUT0``..``OUT7`` write one output and cannot be read (001:943-946, 10602-10647).
+* ``OUT0``..``OUT7`` write one output and cannot be read (001:943-946, 10602-10647); ``IN.x`` and
+  ``OUT.x`` outside 0..7 are "Out of Range" (001:8965, 10592).
 * ``ANALOGUE1``..``3`` read 0..1023 (001:5736-5770) from the scenario's percent of the
   ±10 V range: 0 V reads 512, the zero of the guide's joystick (V3-7).
 * ``TIME`` counts in steps of the 2 ms loop time and wraps after 65536 loops (001:12062-12071).
@@ -27,7 +28,7 @@ from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.events import EventClass, Events
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.io import DigitalIO
-from mintlang.runtime.keywords import Channels, KeywordTable, per_channel
+from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer, per_channel
 from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.system import System
 from mintlang.runtime.terminal import Terminal
@@ -39,6 +40,7 @@ ANALOG_COUNTS = 1024  # 10 bits (001:5760)
 INPUT_QUERY = "?"  # the INPUT prompt (001:2769-2775, 10833-10845)
 INTERRUPTS = frozenset({EventClass.INPUT, EventClass.FASTIN})  # what DINT disables (001:7375)
 BYTE = 255
+USER_OUTPUTS = 8  # OUT0..OUT7 (001:10602)
 
 
 class V3System:
@@ -64,8 +66,10 @@ class V3System:
         self.vm = vm
 
     def register(self, table: KeywordTable, terminal: Terminal) -> None:
-        for name in ("OUT", "IMASK", "IPEND", "INKEY", "CLS", "BEEP", "BOL", "LOCATE", "LIMIT"):
+        for name in ("IMASK", "IPEND", "INKEY", "CLS", "BEEP", "BOL", "LOCATE", "LIMIT"):
             table.alias(name, self.v4.access(name))
+        read_out, write_out = self.v4.read("OUT"), self.v4.write("OUT")
+        table.register("OUT", read=lambda channel: read_out(_output(channel)), write=_within_the_outputs(write_out))
         table.alias("STOPSW", self.v4.access("STOPSWITCH"))
         table.register("LASTERR", command=self.v4.access("LASTERR").command)  # a command in v3 (001:9632-9642)
         table.register("IN", read=self._input)
@@ -101,8 +105,8 @@ class V3System:
         read = self.v4.read("IN")
         if channel is None:
             return float(int(read(None)) & BYTE)
-        if not 0 <= channel < USER_INPUTS:
-            raise NotSimulated("IN", "an input beyond the 8 user inputs")
+        if not 0 <= channel < USER_INPUTS:  # "Out of Range" outside 0 to 7 (001:8965)
+            raise MintError(OUT_OF_RANGE, detail=f"IN.{channel}: the inputs are 0 to {USER_INPUTS - 1}")
         return read(channel)
 
     def _output(self, number: int) -> Callable[[int | None, float], None]:
@@ -164,3 +168,19 @@ class V3System:
             return False
 
         return command
+
+
+def _output(channel: int | None) -> int | None:
+    """``OUT.a`` with ``a`` outside 0 to 7 is "Out of Range" (001:10592), an error of no axis."""
+    if channel is not None and not 0 <= channel < USER_OUTPUTS:
+        raise MintError(OUT_OF_RANGE, detail=f"OUT.{channel}: the outputs are 0 to {USER_OUTPUTS - 1}")
+    return channel
+
+
+def _within_the_outputs(write: Writer) -> Writer:
+    def checked(channels: Channels | None, values: Values) -> bool:
+        for channel in channels or ():
+            _output(channel)
+        return write(channels, values)
+
+    return checked

@@ -43,7 +43,7 @@ def one_slip_apart(word: str, other: str) -> bool:
 
 
 # Block words of other BASICs, which Mint spells otherwise (3.7.3: a WHILE loop ends with ENDW).
-_OTHER_BASICS = {"WEND": "ENDW", "ENDWHILE": "ENDW"}
+OTHER_BASICS = {"WEND": "ENDW", "ENDWHILE": "ENDW"}
 
 
 @cache
@@ -77,7 +77,7 @@ def keyword_like(
 ) -> str | None:
     """The keyword of ``controller`` (any, when None) in ``dialect`` that ``word`` (upper case) is most likely a
     misspelling of; with ``values``, a keyword that holds a value, for a word used as a variable."""
-    return _OTHER_BASICS.get(word) or closest(word, _keywords_of(controller, values=values, dialect=dialect))
+    return OTHER_BASICS.get(word) or closest(word, _keywords_of(controller, values=values, dialect=dialect))
 
 
 def not_a_keyword(word: str, meant: str | None) -> str:

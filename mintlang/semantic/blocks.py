@@ -25,7 +25,7 @@ from collections.abc import Hashable, Iterable, Mapping
 from enum import StrEnum
 from typing import NamedTuple
 
-from mintlang.analysis.suggestions import closest, did_you_mean
+from mintlang.analysis.suggestions import OTHER_BASICS, closest, did_you_mean
 from mintlang.codes import mint_error
 from mintlang.controllers import ControllerProfile, NestingLimits
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
@@ -69,7 +69,9 @@ LOOPS = frozenset({BlockKind.FOR, BlockKind.REPEAT, BlockKind.WHILE, BlockKind.L
 _TOP_LEVEL = frozenset({BlockKind.EVENT, BlockKind.STARTUP})  # MintMT: never inside another block
 _COMMS_EVENTS = range(1, 6)  # the comms locations whose update raises an event (002:19, 77-79)
 _NAMED_EVENTS = ("MOVEBUFFERLOW", "ONERROR", "TIMER", "STOP", *(f"COMMS{number}" for number in _COMMS_EVENTS))
-BLOCK_STATEMENTS = frozenset({n.BlockWord, n.IfDo, n.IfThen, n.For, n.While, n.Until, n.SyntaxError_, n.EventBlock})
+BLOCK_STATEMENTS = frozenset(
+    {n.BlockWord, n.IfDo, n.IfThen, n.For, n.While, n.Until, n.SyntaxError_, n.EventBlock, n.BareName}
+)
 
 
 class _BareThen(NamedTuple):
@@ -142,13 +144,16 @@ def opener_kind(statement: n.Statement) -> BlockKind | None:
 
 
 def closer_kind(statement: n.Statement) -> BlockKind | None:
-    """The kind of block ``statement`` closes, if it closes one: a broken closer (``NEXT a``) too, as the
-    matcher counts it, so a tool following the blocks sees the same ones as the compiler's stack."""
+    """The kind of block ``statement`` closes, if it closes one: a broken closer (``NEXT a``) too, and another
+    BASIC's word for one (``WEND``), as the matcher counts them, so a tool following the blocks sees the same
+    ones as the compiler's stack."""
     kind = type(statement)
     if kind is n.Until:
         return BlockKind.REPEAT
     if kind is n.BlockWord:
         word = statement.word  # type: ignore[union-attr]
+    elif kind is n.BareName:
+        word = OTHER_BASICS.get(statement.name.text.upper(), "")  # type: ignore[union-attr]
     elif kind is n.SyntaxError_ and statement.closes is not None:  # type: ignore[union-attr]
         word = statement.closes  # type: ignore[union-attr]
         if word == "UNTIL":
@@ -184,6 +189,12 @@ class _Matcher:
             then = _then_written(statement, line.syntax) if not statement.body else None  # type: ignore[union-attr]
             if then is not None:
                 self.bare_then = _BareThen(len(self.stack), Fix("Change THEN to DO", (Edit(line.span(then), "DO"),)))
+        elif type(statement) is n.BareName:
+            # WEND, as other BASICs close WHILE: its error 3007 names ENDW and is the one error, so it closes the
+            # block on top if it is the one ENDW would close, and is no mismatch if it is not
+            closed = closer_kind(statement)
+            if closed is not None and self.stack and self.stack[-1].kind is closed:
+                self.close(closed, place, line.span(statement.span), 0, "")
         elif kind is not None:
             if kind in _TOP_LEVEL:
                 self._top_level(statement, kind, line)
@@ -312,6 +323,8 @@ def block_key(statement: n.Statement, line: n.LineSyntax) -> Hashable:
         return kind, statement.opens, statement.closes  # type: ignore[union-attr]
     if kind is n.EventBlock:
         return kind, statement.name  # type: ignore[union-attr]
+    if kind is n.BareName:
+        return kind, closer_kind(statement)
     return kind
 
 

@@ -167,6 +167,21 @@ def test_a_block_never_closed_is_its_constructs_mismatch_error_at_its_opener(ope
     assert codes_at(f"DIM i\nPRINT 1\n{opener}\nPRINT i\n") == [(code, 3)]
 
 
+@pytest.mark.parametrize(
+    ("source", "expected"),
+    [
+        # 000:1781: a WHILE loop ends with ENDW; WEND, as other BASICs write it, is its one error 3007 (naming
+        # ENDW), not also a WHILE never closed
+        pytest.param("DIM a\nWHILE a < 3\n  a = a + 1\nWEND\nEND\n", [("E3007", 4)], id="wend"),
+        pytest.param("DIM a\nWHILE a < 3\n  a = a + 1\nENDWHILE\nEND\n", [("E3007", 4)], id="endwhile"),
+        # it closes only the WHILE that ENDW would close: a REPEAT on top stays open (000:19011)
+        pytest.param("DIM a\nREPEAT\n  a = a + 1\nWEND\nEND\n", [("E2013", 2), ("E3007", 4)], id="not-a-repeat"),
+    ],
+)
+def test_another_basics_word_for_endw_closes_its_while(source: str, expected: list[tuple[str, int]]) -> None:
+    assert codes_at(source) == expected
+
+
 def test_matched_blocks_are_recorded_with_their_lines() -> None:
     source = "DIM a\nIF a DO\nGO\nELSE\nSTOP\nENDIF\nLOOP\nENDL\n"
     blocks = model(source).structures[Unit.PROGRAM].blocks

@@ -60,9 +60,10 @@ _LAST_WORDS = frozenset({"END", "RETURN"})
 _RETURN_WORD = frozenset({"RETURN"})
 _NO_WORDS: frozenset[str] = frozenset()
 # What changes the flow; a line of other statements only runs, when it can be reached at all. A statement
-# that does not parse may still open or close a block (``FOR loop = ..``, ``NEXT i``), as the matcher counts it.
+# that does not parse may still open or close a block (``FOR loop = ..``, ``NEXT i``, ``WEND``), as the
+# matcher counts it.
 _FLOW_STATEMENTS = frozenset(
-    {n.BlockWord, n.Jump, n.IfDo, n.IfThen, n.While, n.For, n.Until, n.EventBlock, n.SyntaxError_}
+    {n.BlockWord, n.Jump, n.IfDo, n.IfThen, n.While, n.For, n.Until, n.EventBlock, n.SyntaxError_, n.BareName}
 )
 _SEPARATE_BLOCKS = {"STARTUP": "ENDSTARTUP"}  # MintMT blocks besides Event .. End Event
 

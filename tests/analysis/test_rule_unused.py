@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import pytest
 
+import mintlang
 from tests.analysis.checking import WARNING, found
 
 
@@ -38,3 +39,15 @@ def test_variables_named_in_a_statement_that_does_not_parse_are_not_called_unuse
 
 def test_event_handlers_are_never_unused() -> None:
     assert found("END\n#ONERROR\nRETURN\n#TIMER\nRETURN\n#IN1\nRETURN\n") == []
+
+
+def test_a_v3_routine_that_assigns_its_variables_and_is_never_called_keeps_them_non_volatile() -> None:
+    # the v3 guide's NONVOL1 listing (001:1430-1450): in v3 an assignment declares (001:1352), and the
+    # routine is never called, which is what keeps the variables (001:1408)
+    source = (
+        "GOSUB init\nGOSUB main\nEND\n#non_volatile\n    my_var1 = 0\n    my_var2 = 0\nRETURN\n"
+        "#init\nRETURN\n#main\nRETURN\n"
+    )
+    assert [d.code for d in mintlang.check(source, dialect="v3")] == []
+    called = source.replace("    my_var2 = 0\n", "    my_var2 = 0\n    GOSUB init\n")
+    assert [d.code for d in mintlang.check(called, dialect="v3")] == ["W104"]

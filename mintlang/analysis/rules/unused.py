@@ -5,7 +5,9 @@ v3 any assignment, FOR or INPUT declares a variable (001:1348-1360): that first
 write is a use as well, as the write after a v4 DIM is, so only a DIM declares
 a v3 variable that can go unused (``FOR i = 0 TO 10`` counting moves is no
 unused ``i``, 001:5430-5436). Nor is a routine of nothing but DIMs: never
-calling it is the manual's way to keep variables non-volatile (3.2.5). A
+calling it is the manual's way to keep variables non-volatile (3.2.5); in v3 the
+routine declares them by assigning them (``#non_volatile`` / ``my_var1 = 0`` /
+``RETURN``, the guide's NONVOL1, 001:1408-1450). A
 variable named in a statement that could not be parsed may be used there, and a
 DEFINE that cannot name a macro (3005), or could not be parsed (``DEFINE 05``),
 defines none: neither gets a second finding. Nor does an array indexed in square
@@ -65,7 +67,7 @@ def check(facts: Facts) -> Iterator[Finding]:
         for identity, symbol in table.items()
         if symbol.definitions and not symbol.references and event_of(symbol.name, dialect) is None
     ]
-    declaring = _declaring_routines(model) if never_called else set()
+    declaring = _declaring_routines(model, dialect) if never_called else set()
     for unit, identity, symbol in never_called:
         if (unit, identity) not in declaring:
             first = symbol.definitions[0]
@@ -109,12 +111,16 @@ def _names_written_as_keywords(facts: Facts) -> set[str]:
     return {n.identity(use.keyword.spelling) for _, use in facts.keyword_uses()}
 
 
-def _declaring_routines(model: SemanticModel) -> set[tuple[Unit, str]]:
-    """Labels whose routine only DIMs variables, then returns."""
-    return {(unit, label.identity) for unit, document in model.documents() for label in _only_dims(document)}
+def _declaring_routines(model: SemanticModel, dialect: Dialect) -> set[tuple[Unit, str]]:
+    """Labels whose routine only declares variables, then returns."""
+    return {
+        (unit, label.identity)
+        for unit, document in model.documents()
+        for label in _only_declarations(document, dialect)
+    }
 
 
-def _only_dims(document: Document) -> Iterator[n.Name]:
+def _only_declarations(document: Document, dialect: Dialect) -> Iterator[n.Name]:
     routines: list[tuple[n.Name, list[n.Statement]]] = []
     for line in document.placed:
         syntax = line.syntax
@@ -123,8 +129,16 @@ def _only_dims(document: Document) -> Iterator[n.Name]:
         if routines:
             routines[-1][1].extend(syntax.statements)
     for label, body in routines:
-        if any(type(s) is n.Dim for s in body) and all(type(s) is n.Dim or _is_return(s) for s in body):
+        declares = [s for s in body if not _is_return(s)]
+        if declares and all(_declares(s, dialect) for s in declares):
             yield label
+
+
+def _declares(statement: n.Statement, dialect: Dialect) -> bool:
+    """A DIM, or in v3 an assignment to a variable: "A variable declaration is any valid assignment" (001:1352)."""
+    if type(statement) is n.Dim:
+        return True
+    return dialect is Dialect.V3 and type(statement) is n.Assignment and type(statement.target) is n.VariableRef
 
 
 def _is_return(statement: n.Statement) -> bool:

@@ -19,9 +19,11 @@ class BinaryOutput(Rule):
     keyword becomes PRINT and ``BIN`` goes before each item that is not a string; the items,
     separators and a ``#n`` terminal stay as written.
 
-    The digits are the same but v3 padded to 8 digits with leading zeros and stripped the
-    fraction; v4 documents neither (``PRINT BIN 0x1A`` shows ``11010``), so each rewritten
-    statement also gets a manual item about the layout. ``BINARY ... USING`` is refused.
+    The digits are the same but v3 padded to 8 digits with leading zeros, printed "up to 8
+    bits" and stripped the fraction (v3:6219, v3:6233); v4 documents neither padding nor stripping
+    (``PRINT BIN 0x1A`` shows ``11010``) and shows a 24-bit value in full (``PRINT BIN
+    ~01100101``, v4:1338-1342: a negative prints 24 digits), so each rewritten statement also
+    gets a manual item about the layout. ``BINARY ... USING`` is refused.
     """
 
     id = "S-BINARY"
@@ -46,7 +48,8 @@ class BinaryOutput(Rule):
             yield self.flag(
                 file,
                 statement.span,
-                "v4 PRINT BIN has no 8-digit zero padding (v3 00001100, v4 1100); v3 also dropped fractions",
+                "v4 PRINT BIN has no 8-digit zero padding (v3 00001100, v4 1100) and prints a negative in 24 bits;"
+                " v3 printed 8 bits at most and dropped fractions",
             )
 
 

@@ -321,11 +321,11 @@ def test_input_byte_with_input_handlers_is_flagged() -> None:
 def test_binary_becomes_print_bin_before_each_number() -> None:
     result = one_rule("S-BINARY", 'BINARY "12 in binary is : ",12\nBINARY a, " ", b\n')
     assert result.text == (
-        "REM MIGRATE: S-BINARY: v4 PRINT BIN has no 8-digit zero padding (v3 00001100, v4 1100);"
-        " v3 also dropped fractions\n"
+        "REM MIGRATE: S-BINARY: v4 PRINT BIN has no 8-digit zero padding (v3 00001100, v4 1100) and prints"
+        " a negative in 24 bits; v3 printed 8 bits at most and dropped fractions\n"
         'PRINT "12 in binary is : ",BIN 12\n'
-        "REM MIGRATE: S-BINARY: v4 PRINT BIN has no 8-digit zero padding (v3 00001100, v4 1100);"
-        " v3 also dropped fractions\n"
+        "REM MIGRATE: S-BINARY: v4 PRINT BIN has no 8-digit zero padding (v3 00001100, v4 1100) and prints"
+        " a negative in 24 bits; v3 printed 8 bits at most and dropped fractions\n"
         'PRINT BIN a, " ", BIN b\n'
     )
     assert migrate("binary in\n", only=["S-IN", "S-BINARY"]).text.endswith("print bin (in & 255)\n")

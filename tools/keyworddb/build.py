@@ -9,6 +9,7 @@ from typing import Any
 from mintlang.keyworddb.model import Constant, ErrorCode, Keyword
 from tools.keyworddb.abbreviations import shared_abbreviations
 from tools.keyworddb.access import apply_access_examples, apply_format_access
+from tools.keyworddb.advanced_axes import with_advanced_axes
 from tools.keyworddb.bit_ranges import with_bit_ranges
 from tools.keyworddb.conflicts import Conflict, sort_key
 from tools.keyworddb.constant_ranges import with_constant_ranges
@@ -60,6 +61,7 @@ def build(seeds: Path, spec: Path) -> dict[str, Any]:
     v4 = read_seed(seeds / V4_GUIDE)
     v3 = read_seed(seeds / V3_GUIDE)
     keywords, conflicts = build_keywords(v4)
+    keywords = with_advanced_axes(keywords)
     conflicts += shared_abbreviations(keywords, chapter10_abbreviations(v4))
     errors = build_errors(v4)
     constants, constant_conflicts, keywords = _constants(v4, keywords, errors)

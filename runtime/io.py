@@ -211,10 +211,10 @@ class DigitalIO:
         return float(self.out >> self._output(channel) & 1)
 
     def _write_out(self, channel: int | None, value: float) -> None:
+        limit = 1 << self.banks.banks.outputs  # the table's one range, for OUT and OUT.x alike (000:14887-14913)
+        if not 0 <= value < limit:
+            raise MintError(OUT_OF_RANGE, detail=f"OUT takes 0 to {limit - 1}")
         if channel is None:
-            limit = 1 << self.banks.banks.outputs
-            if not 0 <= value < limit:
-                raise MintError(OUT_OF_RANGE, detail=f"OUT takes 0 to {limit - 1}")
             driven = self._driven_bits()  # a drive's output is not the program's to set (spec IO-3 RC)
             self.out = self.banks.with_outputs(self.out, int(value)) & ~driven | self.out & driven
             return

@@ -24,7 +24,8 @@ from collections import defaultdict
 from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import field
 from functools import cached_property, partial, wraps
-from itertools import groupby
+from itertools import chain, groupby
+from operator import attrgetter, itemgetter
 from typing import Any, TypeVar, cast
 
 import mintlang
@@ -38,7 +39,10 @@ from mintlang.semantic.index import KeywordUse, Use, index_syntax, line_facts
 from mintlang.semantic.index import clear_cache as forget_facts
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
+from mintlang.syntax.lines import MacroDefinition
+from mintlang.syntax.packed import PackedLines
 from mintlang.syntax.parser import Document
+from mintlang.syntax.reread import Replaced, reread
 
 T = TypeVar("T")
 C = TypeVar("C", bound=Callable[..., Any])
@@ -416,11 +420,24 @@ class Context:
     ) -> Context:
         """The context of ``texts``; ``tags`` are those of earlier passes of the run, whose
         unchanged lines need not be walked again, and ``v4_shelf`` holds its Mint v4 readings' lines."""
+        return cls.reading(texts, controller, tags, v4_shelf, {})
+
+    @classmethod
+    def reading(
+        cls,
+        texts: Mapping[Unit, str],
+        controller: str,
+        tags: LineTags | None,
+        v4_shelf: Shelf | None,
+        earlier: Mapping[Unit, Earlier],
+    ) -> Context:
+        """``build``, where ``earlier`` holds for some files the reading of an earlier text and the edits
+        that made the text of ``texts`` from it: only the lines those touched are read again (``reread``)."""
         configuration = None
         if Unit.CONFIGURATION in texts:
-            configuration = mintlang.parse(texts[Unit.CONFIGURATION], "v3")
-        program = mintlang.parse(
-            texts[Unit.PROGRAM], "v3", macros=configuration.macros if configuration is not None else None
+            configuration = _read(texts[Unit.CONFIGURATION], earlier.get(Unit.CONFIGURATION), None)
+        program = _read(
+            texts[Unit.PROGRAM], earlier.get(Unit.PROGRAM), configuration.macros if configuration is not None else None
         )
         documents = {Unit.PROGRAM: program}
         if configuration is not None:
@@ -428,6 +445,21 @@ class Context:
         files = {unit: FileView(unit, texts[unit], documents[unit]) for unit in texts}
         tags = tags if tags is not None else LineTags()
         return cls(files, profile(controller), tags, v4_shelf if v4_shelf is not None else Shelf())
+
+    def lines_read(self) -> Iterable[Hashable]:
+        """What the per-line caches hold of this context's lines: each logical line's content and text
+        (the parser's key), each physical line's text (the lexer's). A re-read that took most lines over
+        from an earlier reading looked none of them up (``mintlang.caching.keeping_what_it_uses``)."""
+        found: list[Iterable[Hashable]] = []
+        for file in self.files.values():
+            placed = file.document.placed
+            if isinstance(placed, PackedLines):
+                _, _, syntaxes, contents = placed.columns()
+                found += (contents, map(_TEXT, syntaxes))
+            else:
+                found += (map(_CONTENT, placed), map(_SYNTAX_TEXT, placed))
+            found.append(map(_TEXT, map(_LEXED, file.document.physical)))
+        return chain.from_iterable(found)
 
     @cached_property
     def model(self) -> mintlang.SemanticModel:
@@ -596,6 +628,22 @@ class Context:
         """Whether the target controller has the v4 keyword (its "Controllers Supported" list)."""
         entry = self.db.keywords.get(keyword.upper())
         return entry is not None and entry.available_on(self.controller.controller)
+
+
+# A file's reading of an earlier text, and the edits since: each replaced ``start:end`` of that text
+# with so many characters (``mintlang.syntax.reread``).
+Earlier = tuple[Document, Sequence[Replaced]]
+_CONTENT, _SYNTAX_TEXT, _TEXT = attrgetter("content"), attrgetter("syntax.text"), attrgetter("text")
+_LEXED = itemgetter(1)
+
+
+def _read(text: str, earlier: Earlier | None, macros: Mapping[str, MacroDefinition] | None) -> Document:
+    """``text`` read as Mint v3: its earlier reading's lines taken over where ``reread`` can."""
+    if earlier is not None and not macros:
+        document = reread(earlier[0], text, earlier[1])
+        if document is not None:
+            return document
+    return mintlang.parse(text, "v3", macros=macros)
 
 
 def _line_place(found: tuple[FileView, n.Line, n.Statement]) -> tuple[Unit, int]:

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from bisect import bisect_left, bisect_right, insort
 from collections import Counter
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import field, replace
 from functools import partial
 
@@ -49,6 +49,8 @@ from mintlang.migrate.rules.base import Flag, Replace, Rule
 from mintlang.migrate.rules.manual import v3_errors
 from mintlang.records import record
 from mintlang.semantic.units import Unit
+from mintlang.syntax.parser import Document
+from mintlang.syntax.reread import Replaced
 
 MAX_PASSES = 6  # a phase that still edits after this many passes has a rule that is not idempotent
 
@@ -91,6 +93,10 @@ class _FileState:
     history: History = field(default_factory=History)
     applied: list[_Applied] = field(default_factory=list)
     counts: Counter[str] = field(default_factory=Counter)
+    # The reading of the text before the last pass's edits, and those edits (``Replaced``): what the
+    # next context takes over of it (``Context.reading``); None once read, or where there is none.
+    read: Document | None = None
+    since: list[Replaced] = field(default_factory=list)
 
 
 @record
@@ -132,8 +138,8 @@ def _run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> d
         editing: set[str] = set()
         for _ in range(MAX_PASSES):
             if context is None:
-                current = {unit: state.text for unit, state in states.items()}
-                context = keeping_what_it_uses(partial(_build, current, controller, tags, v4_shelf))
+                reading = partial(_reread, states, controller, tags, v4_shelf)
+                context = keeping_what_it_uses(reading, Context.lines_read)
             if phase is _LAST:
                 tags.clear()
                 forget_lines()
@@ -141,7 +147,9 @@ def _run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> d
             if any(wanted.values()):
                 # stale, and applying the edits needs none of it: dropped before they make a second text
                 # (a run's peak was there, the model beside the old and new text), and before the next
-                # parse, so two trees are never alive at once
+                # parse, so two trees are never alive at once; its readings are kept, which the lines no
+                # edit touches are taken over from (the trees of those lines are the next reading's)
+                _keep_readings(context, states)
                 context = None
             editing, settled = _apply_pass(wanted, states, one_pass=phase in SETTLED_IN_ONE_PASS)
             if settled:
@@ -156,10 +164,31 @@ def _run(texts: Mapping[Unit, str], rules: Sequence[Rule], controller: str) -> d
 
 
 def _build(texts: Mapping[Unit, str], controller: str, tags: LineTags, v4_shelf: Shelf) -> Context:
+    return _read_or_fail(partial(Context.build, texts, controller, tags, v4_shelf))
+
+
+def _reread(states: Mapping[Unit, _FileState], controller: str, tags: LineTags, v4_shelf: Shelf) -> Context:
+    """The context of the files' current texts, from the readings ``_keep_readings`` kept, which it lets go."""
+    texts = {unit: state.text for unit, state in states.items()}
+    earlier = {unit: (state.read, state.since) for unit, state in states.items() if state.read is not None}
+    for state in states.values():
+        state.read, state.since = None, []
+    return _read_or_fail(partial(Context.reading, texts, controller, tags, v4_shelf, earlier))
+
+
+def _read_or_fail(read: Callable[[], Context]) -> Context:
     try:
-        return Context.build(texts, controller, tags, v4_shelf)
+        return read()
     except Exception as error:  # a parser bug must not take the other files of a run with it
         raise _unreadable_files(error) from error
+
+
+def _keep_readings(context: Context, states: Mapping[Unit, _FileState]) -> None:
+    """Keep each file's reading in ``context`` for the next one, with none of the lines it copied with
+    file offsets (``Document.lines``, when something asked for them)."""
+    for unit, file in context.files.items():
+        file.document.__dict__.pop("lines", None)
+        states[unit].read, states[unit].since = file.document, []
 
 
 def _unreadable_files(error: BaseException | None) -> MigrationFailed:
@@ -336,6 +365,9 @@ def _apply(state: _FileState, edits: list[Edit]) -> None:
             state.counts[edit.rule] += 1
         written += len(edit.text)
     parts.append(state.text[position:])
+    if state.since:  # a second batch since the reading: the text is read afresh
+        state.read = None
+    state.since = [(edit.span.start, edit.span.end, len(edit.text)) for edit in edits]
     state.history.record(edits)
     state.text = "".join(parts)
 

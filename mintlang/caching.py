@@ -21,7 +21,7 @@ turn in the middle of a re-read would drop the lines it had yet to read again.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Hashable, Iterable, Iterator
 from contextlib import contextmanager
 from typing import Generic, TypeVar
 from weakref import WeakKeyDictionary, WeakSet
@@ -113,23 +113,31 @@ def forget_lines() -> None:
         cache.clear()
 
 
-def keeping_what_it_uses(action: Callable[[], T]) -> T:
+def keeping_what_it_uses(action: Callable[[], T], holding: Callable[[T], Iterable[Hashable]] | None = None) -> T:
     """``action()``, a re-read in an ``apart`` block, after which every per-line cache holds what it
     looked up or added, and what it holds about a line whose parse a cache still holds (a key that is
     a value of a cache that ``holds_contents``: a ``PlacedLine.content``); the rest is dropped. The
     index and the findings of a line no edit touched are so kept for the next model and check, which
     the re-read, a parse, never asks for, however many re-reads come first: a migration checks its
-    original as Mint v3 and again four re-reads later, and builds a model after three."""
+    original as Mint v3 and again four re-reads later, and builds a model after three. ``holding``
+    names the keys the result holds besides what it looked up: a re-read that takes the lines no edit
+    touched over from the earlier reading looks none of them up."""
     used: dict[RecentCache[object, object], dict[object, object]] = {}
     for cache in list(_every_cache):
         cache._old.update(cache._young)
         used[cache] = cache._old  # found there by ``action``, moved back to the young one
         cache._young = {}
+    done: list[T] = []
     try:
-        return action()
+        done.append(action())
+        return done[0]
     finally:
         caches = list(_every_cache)
         held = {content for cache in caches if cache.holds_contents for content in cache._young.values()}
+        if holding is not None and done:
+            held.update(holding(done[0]))
         for cache in caches:
-            if cache._old is used.get(cache):
-                cache._old = {key: value for key, value in cache._old.items() if key in held}
+            old = cache._old
+            if old is used.get(cache):
+                for key in old.keys() - held:  # the keys kept are most of them after a re-read taking lines over
+                    del old[key]

@@ -13,7 +13,6 @@ setting for the document class: its ``Workspace`` makes documents in
 
 from __future__ import annotations
 
-from bisect import bisect_right
 from collections.abc import Generator, Sequence
 from typing import Any
 
@@ -23,7 +22,7 @@ from pygls.workspace import TextDocument, Workspace
 
 from mintlang.diagnostics import LineIndex, line_starts, split_lines
 from mintlang.lsp.positions import Positions
-from mintlang.syntax.moved import MovedOffsets
+from mintlang.syntax.moved import MovedOffsets, bisect_right
 
 
 class LspTextDocument(TextDocument):

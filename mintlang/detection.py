@@ -32,7 +32,7 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Addressing
 from mintlang.records import record
-from mintlang.syntax.common import common_prefix, common_suffix
+from mintlang.syntax.common import shared_ends
 from mintlang.syntax.lexer import LexedLine, lex
 from mintlang.syntax.tokens import TokenKind
 
@@ -89,8 +89,7 @@ def detect_dialect_after(previous: str, found: Dialect, text: str) -> Dialect:
     """``detect_dialect(text)``, knowing that of ``previous`` was ``found``: an editor asks after
     every keystroke, and reading the whole file costs time in proportion to it. Only the lines
     that changed are read, unless they held what made ``previous`` MintMT."""
-    start = common_prefix(previous, text)
-    end = common_suffix(previous, text, min(len(previous), len(text)) - start)
+    start, end = shared_ends(previous, text)
     start = max(previous.rfind("\n", 0, start), previous.rfind("\r", 0, start)) + 1  # whole lines
     tail = previous[len(previous) - end :]
     breaks = [at for at in (tail.find("\n"), tail.find("\r")) if at >= 0]

@@ -39,7 +39,7 @@ from mintlang.records import record
 from mintlang.semantic.blocks import Block, BlockKind
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import SymbolKind
-from mintlang.syntax.common import common_prefix, common_suffix
+from mintlang.syntax.common import shared_ends
 from mintlang.syntax.lines import MacroDefinition
 from mintlang.syntax.tokens import Token, TokenKind
 
@@ -189,8 +189,7 @@ def _open_blocks_now(snapshot: Snapshot, source: str, line: int) -> OpenBlocks |
     old = snapshot.document.source
     if old.count("\r") != old.count("\r\n") or source.count("\r") != source.count("\r\n"):
         return None  # a lone CR ends a line too: not worth counting for completion
-    start = common_prefix(old, source)
-    same_end = common_suffix(old, source, min(len(old), len(source)) - start)
+    start, same_end = shared_ends(old, source)
     if old[start - 1 : start] in ("", "\n") and all(
         part == "" or part.endswith("\n")
         for part in (old[start : len(old) - same_end], source[start : len(source) - same_end])

@@ -12,7 +12,6 @@ checked again against the memory (``rules.memory``).
 from __future__ import annotations
 
 from array import array
-from bisect import bisect_left
 from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping, Sequence
 from functools import cache
 from itertools import chain, repeat
@@ -34,6 +33,7 @@ from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.change import Change
+from mintlang.syntax.moved import bisect_left
 from mintlang.syntax.packed import PlacedDiagnostics
 from mintlang.syntax.parser import Document
 

@@ -14,7 +14,6 @@ its author would not otherwise learn.
 from __future__ import annotations
 
 import re
-from bisect import bisect_left, bisect_right
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING
@@ -22,6 +21,7 @@ from typing import TYPE_CHECKING
 from mintlang.codes import code_named, own
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.records import record
+from mintlang.syntax.moved import bisect_left, bisect_right
 from mintlang.syntax.tokens import TokenKind
 
 if TYPE_CHECKING:

@@ -14,11 +14,12 @@ what is kept per line without a place (the line index).
 from __future__ import annotations
 
 from array import array
-from bisect import bisect_right
-from collections.abc import Iterable, Iterator, Sequence
+from bisect import bisect_left as _bisect_left
+from bisect import bisect_right as _bisect_right
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from itertools import accumulate, chain, islice, repeat
 from operator import itemgetter
-from typing import Generic, TypeVar, overload
+from typing import Any, Generic, TypeVar, overload
 
 from mintlang.records import record
 from mintlang.syntax.nodes import PlacedLine
@@ -28,6 +29,8 @@ _MOST_PIECES = 16
 T = TypeVar("T")
 _new = tuple.__new__
 _ORIGIN, _NUMBER, _SYNTAX, _CONTENT = map(itemgetter, range(4))  # a ``PlacedLine``'s fields
+LINE_NUMBER = _NUMBER  # the key that finds a logical line by its number (``bisect_left(lines, n, key=LINE_NUMBER)``)
+Search = Callable[..., int]  # ``bisect.bisect_left`` or ``bisect.bisect_right``
 
 
 @record
@@ -107,10 +110,31 @@ class Moved(Sequence[T]):
             index += len(self)
         if not 0 <= index < len(self):
             raise IndexError("index out of range")
-        at = bisect_right(self._ends, index)
+        at = _bisect_right(self._ends, index)
         piece = self._pieces[at]
         item = piece.items[piece.start + index - (self._ends[at - 1] if at else 0)]
         return item if piece.still else next(self.moved((item,), piece.shift, piece.line_shift))
+
+    def bisect(self, value: Any, key: Callable[[T], Any] | None, search: Search) -> int:
+        """``search`` for ``value`` piece by piece, each in C on the piece's own items: through
+        ``__getitem__`` every probe would be a call in Python."""
+        if self._flat is not None:
+            return search(self._flat, value, key=key)
+        base = 0
+        for piece, end in zip(self._pieces, self._ends, strict=True):
+            unmoved = self._unmoved(value, key, piece)
+            if unmoved is None:  # a key these items cannot be searched by before they move
+                return search(self, value, key=key)
+            found = search(piece.items, unmoved, piece.start, piece.end, key=key)
+            if found < piece.end:
+                return base + found - piece.start
+            base = end
+        return base
+
+    @staticmethod
+    def _unmoved(value: Any, key: Callable[[T], Any] | None, piece: _Piece[T]) -> Any:
+        """What ``value`` was among ``piece``'s items before they moved; None when ``key`` does not say."""
+        return None
 
     def __iter__(self) -> Iterator[T]:
         if self._flat is None:
@@ -146,6 +170,10 @@ class MovedLines(Moved[PlacedLine]):
         fields = zip(origins, numbers, map(_SYNTAX, lines), map(_CONTENT, lines), strict=True)
         return map(_new, repeat(PlacedLine), fields)
 
+    @staticmethod
+    def _unmoved(value: Any, key: Callable[[PlacedLine], Any] | None, piece: _Piece[PlacedLine]) -> Any:
+        return value - piece.line_shift if key is _NUMBER else None
+
 
 class MovedOffsets(Moved[int]):
     """Where a document's physical lines start (``PhysicalLines.offsets``): machine integers once flat."""
@@ -155,6 +183,10 @@ class MovedOffsets(Moved[int]):
     @staticmethod
     def moved(items: Iterable[int], shift: int, line_shift: int) -> Iterator[int]:
         return map(shift.__add__, items)
+
+    @staticmethod
+    def _unmoved(value: Any, key: Callable[[int], Any] | None, piece: _Piece[int]) -> Any:
+        return value - piece.shift if key is None else None
 
     @staticmethod
     def flat(items: Iterable[int]) -> Sequence[int]:
@@ -170,6 +202,16 @@ class Spliced(Moved[T]):
     @staticmethod
     def moved(items: Iterable[T], shift: int, line_shift: int) -> Iterator[T]:
         return iter(items)
+
+
+def bisect_left(items: Sequence[T], value: Any, key: Callable[[T], Any] | None = None) -> int:
+    """``bisect.bisect_left``, in C on each piece of a ``Moved``."""
+    return items.bisect(value, key, _bisect_left) if isinstance(items, Moved) else _bisect_left(items, value, key=key)
+
+
+def bisect_right(items: Sequence[T], value: Any, key: Callable[[T], Any] | None = None) -> int:
+    """``bisect.bisect_right``, in C on each piece of a ``Moved``."""
+    return items.bisect(value, key, _bisect_right) if isinstance(items, Moved) else _bisect_right(items, value, key=key)
 
 
 def _pieces(items: Sequence[T], start: int, end: int, shift: int, line_shift: int) -> list[_Piece[T]]:

@@ -14,9 +14,7 @@ holds it to that); where the edit could change how lines further away read (a
 from __future__ import annotations
 
 from array import array
-from bisect import bisect_left, bisect_right
 from collections.abc import Mapping, Sequence
-from operator import attrgetter
 
 from mintlang.allocation import without_collector
 from mintlang.diagnostics import Diagnostic, LineIndex, LinesAndEnd
@@ -25,10 +23,10 @@ from mintlang.keyworddb.model import Controller
 from mintlang.records import record
 from mintlang.syntax import nodes as n
 from mintlang.syntax.change import Change, Window
-from mintlang.syntax.common import common_prefix, common_suffix
+from mintlang.syntax.common import shared_ends
 from mintlang.syntax.lexer import LexedLine, PhysicalLines, TokenStream, lex_lines
 from mintlang.syntax.lines import LineGroup, MacroDefinition, groups_from, register
-from mintlang.syntax.moved import MovedLines
+from mintlang.syntax.moved import LINE_NUMBER, MovedLines, bisect_left, bisect_right
 from mintlang.syntax.parser import Document, ParseContext, PlacedLines, parse
 from mintlang.syntax.tokens import TokenKind
 
@@ -83,8 +81,7 @@ class _Reparse:
     def window(self) -> _Lines:
         """The fewest whole physical lines of the previous text that hold every changed character."""
         old, new = self.previous.source, self.source
-        same_start = common_prefix(old, new)
-        same_end = common_suffix(old, new, min(len(old), len(new)) - same_start)
+        same_start, same_end = shared_ends(old, new)
         offsets = self.offsets
         first = max(0, bisect_right(offsets, same_start) - 1)
         end = bisect_left(offsets, len(old) - same_end)
@@ -110,13 +107,13 @@ class _Reparse:
         physical = previous.physical.spliced(lines_read.first, lines_read.end, offsets, lexed, shift)
         line_shift = len(lexed) - (lines_read.end - lines_read.first)
         placed = previous.placed
-        first_line = bisect_left(placed, lines_read.first + 1, key=_NUMBER)  # the first logical line in the window
+        first_line = bisect_left(placed, lines_read.first + 1, key=LINE_NUMBER)  # the first logical line in the window
         if first_line and self._runs_into(placed[first_line - 1], lines_read.first):
             first_line -= 1  # a DIM list continued over the window's first line, or waiting to be
         restart = placed[first_line].number - 1 if first_line < len(placed) else len(physical)
         restart = min(restart, lines_read.first)
         groups, resume, old_resume = self._regroup(physical, restart, lines_read.first + len(lexed), line_shift)
-        old_end_line = bisect_left(placed, old_resume + 1, key=_NUMBER)
+        old_end_line = bisect_left(placed, old_resume + 1, key=LINE_NUMBER)
         regroup_start = physical.offsets[restart] if restart < len(physical) else len(source)
         old_regroup_end = self._line_start(old_resume)
         new_regroup_end = physical.offsets[resume] if resume < len(physical) else len(source)
@@ -186,9 +183,6 @@ class _Reparse:
         return visible
 
 
-_NUMBER = attrgetter("number")
-
-
 def _last_physical(line: n.PlacedLine, offsets: Sequence[int]) -> int:
     """The index of the last physical line of logical line ``line`` (a DIM list may take several)."""
     return bisect_right(offsets, line.origin + max(line.syntax.span.end - 1, 0)) - 1
@@ -203,5 +197,5 @@ class _GroupEnds:
 
     def __contains__(self, boundary: object) -> bool:
         assert isinstance(boundary, int)
-        before = bisect_left(self._placed, boundary + 1, key=_NUMBER) - 1  # the last logical line starting above
+        before = bisect_left(self._placed, boundary + 1, key=LINE_NUMBER) - 1  # the last logical line starting above
         return before < 0 or _last_physical(self._placed[before], self._offsets) < boundary

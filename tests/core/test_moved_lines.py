@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
+import bisect
 from array import array
 
 from hypothesis import given
 from hypothesis import strategies as st
 
-from mintlang.syntax.moved import MovedLines, MovedOffsets
+from mintlang.syntax.moved import LINE_NUMBER, MovedLines, MovedOffsets, bisect_left, bisect_right
 
 OFFSETS = (0, 10, 25, 31, 40, 52)
 
@@ -71,3 +72,31 @@ def test_any_run_of_splices_reads_as_the_same_splices_of_a_list(
         moved = MovedOffsets.spliced(moved, (first, end), tuple(replacement), shift, 0)  # type: ignore[arg-type]
         assert [moved[index] for index in range(len(expected))] == expected  # type: ignore[index]
     assert list(moved) == expected  # type: ignore[call-overload]
+
+
+@given(
+    st.lists(st.integers(0, 1000), min_size=1, max_size=30).map(sorted),
+    st.lists(st.tuples(st.integers(0, 30), st.integers(0, 3), st.integers(0, 5)), max_size=30),
+    st.integers(-5, 1200),
+)
+def test_searching_moved_items_finds_what_searching_them_made_again_finds(
+    start: list[int], splices: list[tuple[int, int, int]], value: int
+) -> None:
+    expected = list(start)
+    moved: object = tuple(start)
+    for at, count, shift in splices:  # moving the items after the replaced ones further on keeps them sorted
+        first = min(at, len(expected))
+        end = min(first + count, len(expected))
+        expected = expected[:first] + expected[first:end] + [item + shift for item in expected[end:]]
+        moved = MovedOffsets.spliced(moved, (first, end), tuple(expected[first:end]), shift, 0)  # type: ignore[arg-type]
+        assert bisect_left(moved, value) == bisect.bisect_left(expected, value)  # type: ignore[arg-type]
+        assert bisect_right(moved, value) == bisect.bisect_right(expected, value)  # type: ignore[arg-type]
+
+
+def test_moved_lines_are_searched_by_their_moved_numbers() -> None:
+    import mintlang  # noqa: PLC0415 - the parser, for real lines
+
+    lines = mintlang.parse("a = 1\nb = 2\nc = 3\n").placed  # lines 1, 2, 3
+    moved = MovedLines.spliced(lines, (0, 1), lines[:1], 3, 2)  # lines 1, 4, 5
+    assert [bisect_left(moved, number, key=LINE_NUMBER) for number in range(1, 7)] == [0, 1, 1, 1, 2, 3]
+    assert [bisect_right(moved, number, key=LINE_NUMBER) for number in range(1, 7)] == [1, 1, 1, 2, 3, 3]

@@ -1,0 +1,38 @@
+"""Where an edit changed a text: what the version before and the one after share at each end."""
+
+from __future__ import annotations
+
+from hypothesis import given
+from hypothesis import strategies as st
+
+from mintlang.syntax.common import shared_ends
+
+TEXTS = st.text(alphabet="ab\r\né", max_size=40)
+
+
+def _shared_by_characters(old: str, new: str) -> tuple[int, int]:
+    """Counted one character at a time: the definition."""
+    start = 0
+    while start < min(len(old), len(new)) and old[start] == new[start]:
+        start += 1
+    end = 0
+    while end < min(len(old), len(new)) - start and old[-1 - end] == new[-1 - end]:
+        end += 1
+    return start, end
+
+
+def test_a_character_typed_in_the_middle_leaves_both_sides_shared() -> None:
+    assert shared_ends("PRINT 1\nGO\n", "PRINT 12\nGO\n") == (7, 4)
+
+
+def test_the_end_shared_never_overlaps_the_start_shared() -> None:
+    assert shared_ends("aaa", "aaaa") == (3, 0)
+    assert shared_ends("abab", "ab") == (2, 0)
+
+
+@given(TEXTS, TEXTS, TEXTS, TEXTS)
+def test_any_two_versions_share_what_comparing_characters_finds(before: str, old: str, new: str, after: str) -> None:
+    first, second = before + old + after, before + new + after
+    assert shared_ends(first, second) == _shared_by_characters(first, second)
+    assert shared_ends(first, second) == _shared_by_characters(first, second)  # asked again: remembered
+    assert shared_ends(second, first) == _shared_by_characters(second, first)

@@ -22,6 +22,7 @@ from pygls.workspace import TextDocument, Workspace
 
 from mintlang.diagnostics import LineIndex, line_starts, split_lines
 from mintlang.lsp.positions import Positions
+from mintlang.syntax.common import edited
 from mintlang.syntax.moved import MovedOffsets, bisect_right
 
 
@@ -51,6 +52,7 @@ class LspTextDocument(TextDocument):
         start, end = positions.offset(change.range.start), positions.offset(change.range.end)
         self._source = source[:start] + change.text + source[end:]
         self._starts = (self._source, _moved_starts(source, index, start, end, change.text))
+        edited(source, self._source, start, end)  # the analysis need not compare the two texts to find the change
 
 
 def _moved_starts(source: str, index: LineIndex, start: int, end: int, text: str) -> Sequence[int] | None:

@@ -1,50 +1,79 @@
 """What two versions of a text share at their start and at their end.
 
-Found by halves, comparing whole slices: strings compare at the speed of memory,
-so finding where a keystroke changed a file of a megabyte takes a few
-comparisons, not a loop over its characters. The language server asks for the
-same two versions more than once per keystroke (the dialect's detection, the
-re-parse), so ``shared_ends`` remembers its last answer.
+Found by comparing whole slices: strings compare at the speed of memory, so
+finding where a keystroke changed a file of a megabyte takes a few comparisons,
+not a loop over its characters. Where part of the answer is known — the editor
+said which range it replaced (``edited``) — the search starts from there in
+doubling steps, so it costs the distance to the first difference, not the file.
+The language server asks for the same two versions more than once per keystroke
+(the dialect's detection, the re-parse), so the last answer is remembered.
 """
 
 from __future__ import annotations
 
-# The last two texts ``shared_ends`` compared, kept alive so that identity names them, with its answer:
-# one tuple, replaced whole, so that a reader on another thread never sees one pair with another's answer.
+from collections.abc import Callable
+
+_FIRST_STEP = 64  # characters compared first from what is known shared; each step after compares twice as many
+
+# The last two texts compared, kept alive so that identity names them, with what they share: one
+# tuple, replaced whole, so that a reader on another thread never sees one pair with another's answer.
 _last: tuple[str, str, tuple[int, int]] = ("", "", (0, 0))
 
 
 def shared_ends(old: str, new: str) -> tuple[int, int]:
     """How many characters ``old`` and ``new`` share at the start, then at the end after that start."""
-    global _last  # noqa: PLW0603 - a one-pair memory of the module's own
     last_old, last_new, ends = _last
     if old is last_old and new is last_new:
         return ends
-    start = _common_prefix(old, new)
-    ends = (start, _common_suffix(old, new, min(len(old), len(new)) - start))
+    return _remember(old, new, 0, 0)
+
+
+def edited(old: str, new: str, start: int, end: int) -> None:
+    """Remember that ``new`` is ``old`` with ``old[start:end]`` replaced, as an editor's change says, so
+    that ``shared_ends`` of the two, or of the text before ``old`` and ``new``, need not compare the files."""
+    before, last_new, (same_start, same_end) = _last
+    shared_at_end = len(old) - end
+    if last_new is old:  # a second change before anyone asked about the first: what all three share
+        _remember(before, new, min(same_start, start), min(same_end, shared_at_end))
+    else:
+        _remember(old, new, start, shared_at_end)
+
+
+def _remember(old: str, new: str, known_start: int, known_end: int) -> tuple[int, int]:
+    global _last  # noqa: PLW0603 - a one-pair memory of the module's own
+    start = _common_prefix(old, new, known_start)
+    most = min(len(old), len(new)) - start
+    ends = (start, _common_suffix(old, new, min(known_end, most), most))
     _last = (old, new, ends)
     return ends
 
 
-def _common_prefix(old: str, new: str) -> int:
-    """How many characters ``old`` and ``new`` share at the start: compares halves, not characters."""
-    low, high = 0, min(len(old), len(new))
-    while low < high:
-        middle = (low + high + 1) // 2
-        if new.startswith(old[low:middle], low):
-            low = middle
-        else:
-            high = middle - 1
-    return low
+def _common_prefix(old: str, new: str, low: int) -> int:
+    """How many characters ``old`` and ``new`` share at the start, ``low`` of them known shared."""
+    return _extent(lambda low, middle: new.startswith(old[low:middle], low), low, min(len(old), len(new)))
 
 
-def _common_suffix(old: str, new: str, most: int) -> int:
-    """How many characters (at most ``most``) ``old`` and ``new`` share at the end."""
-    low, high = 0, most
+def _common_suffix(old: str, new: str, low: int, most: int) -> int:
+    """How many characters (at most ``most``) ``old`` and ``new`` share at the end, ``low`` of them known shared."""
     old_length, new_length = len(old), len(new)
+    return _extent(
+        lambda low, middle: new.endswith(old[old_length - middle : old_length - low], 0, new_length - low), low, most
+    )
+
+
+def _extent(shared: Callable[[int, int], bool], low: int, high: int) -> int:
+    """The most characters, ``low`` to ``high``, shared from the first on: ``shared(low, middle)`` says whether
+    those from ``low`` up to ``middle`` are, and is asked of doubling stretches, then of halves."""
+    step = _FIRST_STEP
+    while low < high:
+        middle = min(low + step, high)
+        if not shared(low, middle):
+            high = middle - 1
+            break
+        low, step = middle, step * 2
     while low < high:
         middle = (low + high + 1) // 2
-        if new.endswith(old[old_length - middle : old_length - low], 0, new_length - low):
+        if shared(low, middle):
             low = middle
         else:
             high = middle - 1

@@ -5,7 +5,7 @@ from __future__ import annotations
 from hypothesis import given
 from hypothesis import strategies as st
 
-from mintlang.syntax.common import shared_ends
+from mintlang.syntax.common import edited, shared_ends
 
 TEXTS = st.text(alphabet="ab\r\né", max_size=40)
 
@@ -36,3 +36,34 @@ def test_any_two_versions_share_what_comparing_characters_finds(before: str, old
     assert shared_ends(first, second) == _shared_by_characters(first, second)
     assert shared_ends(first, second) == _shared_by_characters(first, second)  # asked again: remembered
     assert shared_ends(second, first) == _shared_by_characters(second, first)
+
+
+EDITS = st.tuples(st.integers(0, 100), st.integers(0, 100), TEXTS)
+
+
+def _apply(text: str, change: tuple[int, int, str]) -> tuple[str, int, int]:
+    """``text`` with a range replaced, as an editor's change makes it, and the range."""
+    start, length, typed = change
+    start = min(start, len(text))
+    end = min(start + length, len(text))
+    return text[:start] + typed + text[end:], start, end
+
+
+@given(TEXTS, EDITS)
+def test_what_an_edit_is_said_to_have_changed_gives_what_comparing_characters_finds(
+    old: str, change: tuple[int, int, str]
+) -> None:
+    new, start, end = _apply(old, change)
+    edited(old, new, start, end)
+    assert shared_ends(old, new) == _shared_by_characters(old, new)
+
+
+@given(TEXTS, EDITS, EDITS)
+def test_two_edits_before_anyone_asks_give_what_comparing_the_first_and_last_finds(
+    first: str, change: tuple[int, int, str], next_change: tuple[int, int, str]
+) -> None:
+    second, start, end = _apply(first, change)
+    edited(first, second, start, end)
+    third, start, end = _apply(second, next_change)
+    edited(second, third, start, end)
+    assert shared_ends(first, third) == _shared_by_characters(first, third)

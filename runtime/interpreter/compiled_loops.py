@@ -21,6 +21,9 @@ and it changes nothing a run shows:
   unrun: the variables and the program counter are as the statements before it
   left them, and the interpreter runs it again, to fail there itself (pure
   statements change nothing when they fail);
+- it leaves in ``Interpreter.ran`` the last statement it ran (the closer of its
+  last pass, or the EXIT or closer that left the loop): a program that ends
+  there names it;
 - when any of its operations has been replaced (coverage, the debugger, a
   benchmark's counter wrap them), it steps aside.
 """
@@ -245,7 +248,7 @@ class _Writer:
         return [
             f"def _mint(budget, loop, {parameters}_binary32, _big, _vm, _at, _fails):",
             f"    _f = _binary32(); {load}{self.setup}",
-            f"    n = 0; passes = 0; whole = budget // {self.longest}; pc = {entry}",
+            f"    n = 0; passes = 0; whole = budget // {self.longest}; pc = {entry}; ran = {self.closer}",
             "    try:",
             f"        {loop}",
         ]
@@ -264,7 +267,7 @@ class _Writer:
             f"        n += {'' if self.varying else f'passes * {self.longest} + '}pending; {store}_vm.pc = pc",
             "        if isinstance(error, _fails): return n",
             "        raise",
-            f"    {store}_vm.pc = pc",
+            f"    {store}_vm.pc = pc; _vm.ran = ran",
             "    return n",
         ]
 
@@ -345,7 +348,7 @@ class _Writer:
 
     def _leave(self, counted: int, pc: int, pending: int, depth: int) -> None:
         """Count ``counted`` statements, leave the loop and go on after its closer."""
-        self.lines.add(depth, f"n += {counted}; {self.leave}; pc = {self.closer + 1}; break", pc, pending)
+        self.lines.add(depth, f"n += {counted}; {self.leave}; ran = {pc}; pc = {self.closer + 1}; break", pc, pending)
 
     def _closer(self, pending: int, depth: int) -> None:
         """The closer's test of another pass, at the end of each pass."""

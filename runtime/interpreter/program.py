@@ -82,7 +82,9 @@ def link(
                 statements.append(statement)
                 vm.pure.append(is_pure(statement, semantics.functions))
                 written = text[statement.span.start : statement.span.end].strip()
-                vm.sites.append(Site(unit.value, line.number, written, type(statement).__name__, _declares(statement)))
+                declares = _declares(statement)
+                vm.sites.append(Site(unit.value, line.number, written, type(statement).__name__, declares))
+                vm.steps_over.append(declares)
     vm.compiled_loops[:] = [None] * len(vm.operations)
     for (unit, _), (positions, *_) in zip(units, layouts, strict=True):
         endw_as_its_while(vm.pure, model.structures[unit].blocks, positions)

@@ -108,6 +108,7 @@ class Interpreter:
         self.operations: list[Operation] = []
         self.sites: list[Site] = []
         self.pure = bytearray()  # per operation: 1 if it acts on the interpreter alone (``purity.py``)
+        self.steps_over = bytearray()  # per operation: 1 if it steps over a MintMT block (``Site.declares``)
         # per operation: the generated passes of the loop whose first statement it is (``compiled_loops.py``)
         self.compiled_loops: list[Callable[[int], int] | None] = []
         self.ahead = 0  # statements of the current tick already run by ``run_ahead``
@@ -116,6 +117,7 @@ class Interpreter:
         self.scalars: list[float] = []
         self.arrays: list[list[float]] = []
         self.pc = 0
+        self.ran: int | None = None  # the last statement run: where a program that runs off its end ended
         self.frames: list[Frame] = []
         self.loops: list[Loop] = []
         self.default_axes: tuple[int, ...] = (0,)
@@ -155,10 +157,11 @@ class Interpreter:
             self.progressed = False
             return
         self.asleep = False
-        operations, compiled_loops = self.operations, self.compiled_loops
+        operations, compiled_loops, steps_over = self.operations, self.compiled_loops, self.steps_over
         count = len(operations)
         budget = self.slice_statements - self.ahead
         self.blocked = False
+        last = self.ran
         try:
             while budget > 0 and self.stopped is None:
                 if events is not None and events.pending and not self.holding:
@@ -167,6 +170,7 @@ class Interpreter:
                 pc = self.pc
                 if pc >= count:
                     self.executing = None
+                    self.ran = last
                     self._finish()
                     return
                 passes = compiled_loops[pc]  # pure statements: no event becomes pending while they run
@@ -174,9 +178,12 @@ class Interpreter:
                     ran = passes(budget)
                     if ran:
                         budget -= ran
+                        last = self.ran
                         continue
                 self.pc = pc + 1
                 self.executing = pc
+                if not steps_over[pc]:
+                    last = pc
                 try:
                     if operations[pc]():
                         self.pc = pc
@@ -190,6 +197,7 @@ class Interpreter:
                 budget -= 1  # a statement completed, or failed into ERR and #ONERROR
         finally:
             self.executing = None
+            self.ran = last
             self.progressed = budget < self.slice_statements
             self.ahead = 0
 
@@ -198,12 +206,14 @@ class Interpreter:
 
         Stops before the first statement that is not pure, or that fails (it has changed nothing, and runs
         again in the tick processed whole); returns how many ran, every slice's statements when none stopped
-        it. A loop compiled whole runs its passes in one call (``compiled_loops.py``).
+        it. A loop compiled whole runs its passes in one call (``compiled_loops.py``). No step over a MintMT
+        block is pure: each statement run here is one a reader sees run.
         """
         operations, pure, compiled_loops = self.operations, self.pure, self.compiled_loops
         count = len(operations)
         done = 0
         budget = self.slice_statements * ticks
+        last = self.ran
         try:
             while done < budget:
                 pc = self.pc
@@ -214,6 +224,7 @@ class Interpreter:
                     ran = passes(budget - done)
                     if ran:
                         done += ran
+                        last = self.ran
                         continue
                 self.pc = pc + 1
                 self.executing = pc
@@ -222,17 +233,22 @@ class Interpreter:
                 except (MintError, NotSimulated):
                     self.pc = pc
                     break
+                last = pc
                 done += 1
         finally:
             self.executing = None
+            self.ran = last
             self.ahead = done % self.slice_statements if done < budget else 0
         return done
 
     def current_site(self) -> Site | None:
-        """The statement running now, or between slices the one the program continues with."""
+        """The statement running now, or between slices the one the program continues with; once the program
+        has run off its end, the last statement it ran (a MintMT block stepped over is none: MT-7)."""
         sites = self.sites
         pc = self.executing if self.executing is not None else self.pc
-        return sites[pc] if pc < len(sites) else (sites[-1] if sites else None)
+        if pc < len(sites):
+            return sites[pc]
+        return sites[self.ran] if self.ran is not None else None
 
     def stop(self, reason: StopReason, message: str = "", site: Site | None = None) -> None:
         """End the run, at ``site`` (by default the statement running now)."""

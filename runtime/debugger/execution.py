@@ -16,6 +16,7 @@ from __future__ import annotations
 import threading
 from collections import deque
 from collections.abc import Callable, Iterator
+from contextlib import suppress
 from functools import partial
 from typing import NoReturn, Protocol
 
@@ -29,7 +30,7 @@ from mintlang.runtime.debugger.evaluation import Evaluator
 from mintlang.runtime.debugger.history import Intervention, Timeline
 from mintlang.runtime.debugger.launch import Application
 from mintlang.runtime.debugger.stepping import Forward, Point, Scan, cont, reach
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter.vm import Operation, StopReason
 from mintlang.runtime.run import RunResult
 from mintlang.runtime.scenario import ScenarioFileError
@@ -332,6 +333,8 @@ class Execution:
                 blocked = operation()
             except MintError as error:
                 if ERRORS in self.exception_filters and isinstance(self._plan, Forward):
+                    with suppress(NotSimulated):  # an error the dialect does not number: it ends the run, ERR unset
+                        vm.occurred(error, pc)  # ERR and ERL read at the stop as #ONERROR will read them
                     self._stop(point, "exception", error.describe())
                 raise
             self._blocked = _waiting(self._blocked, point.depth, pc if blocked else None)

@@ -372,7 +372,7 @@ class Interpreter:
         """A run-time error at ``pc``: record it, then call ``#ONERROR`` or end the run."""
         site = self.sites[pc] if pc < len(self.sites) else None
         try:
-            number = self.errors.number(error)
+            number = self.occurred(error, pc)
         except NotSimulated as missing:
             self.pc = pc
             self.not_simulated(missing)
@@ -381,7 +381,6 @@ class Interpreter:
             self.pc = pc
             self.halt(error, site)
             return
-        self.record_error(number, site.line if site else 0, error.axis)
         handler = self.events.error_handler() if self.events is not None else None
         inside_handler = any(frame.rank == 0 for frame in self.frames)
         if handler is not None and not inside_handler:
@@ -389,6 +388,17 @@ class Interpreter:
             return
         self.pc = pc
         self.halt(error, site)
+
+    def occurred(self, error: MintError, pc: int) -> int | None:
+        """Set ``ERR``, ``ERL`` and ``ERRAXIS`` for ``error`` at ``pc``: they name the last error that occurred
+        (000:9884-9886, 9904, 9923), from the moment it does, before ``#ONERROR`` runs. Returns the error's
+        number, None for one no handler may take (nothing is set); raises ``NotSimulated`` for an error the
+        dialect does not number here."""
+        number = self.errors.number(error)
+        if number is not None:
+            site = self.sites[pc] if pc < len(self.sites) else None
+            self.record_error(number, site.line if site else 0, error.axis)
+        return number
 
     def _call_onerror(self, handler: int, error: MintError, pc: int) -> None:
         """Call ``#ONERROR`` for ``error`` at ``pc``: its RETURN resumes after the failing statement (EV-19 RC),

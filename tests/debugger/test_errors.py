@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from tests.debugger.client import DapClient
 from tests.debugger.conftest import Debug
 
@@ -58,6 +60,25 @@ def test_with_every_error_chosen_an_error_onerror_handles_stops_before_the_handl
     client.step("next")  # axis 12 is invalid: the system error 2, after which the program goes on (000:4616-4618)
     assert client.line() == 4
     assert client.values()["x"] == "2"
+
+
+@pytest.mark.parametrize(
+    ("failing", "err"),
+    [
+        pytest.param("POS.12", "2", id="invalid-axis"),  # 000:9953-9956: an axis the controller lacks is error 2
+        pytest.param("t(5)", "2016", id="index-past-the-array"),
+    ],
+)
+def test_at_the_stop_on_an_error_err_and_erl_already_name_it(debug: Debug, failing: str, err: str) -> None:
+    # ERR is the last error that occurred and ERL its line (000:9884-9886, 9904, 9923): at the stop the error
+    # has occurred, though #ONERROR has not run yet
+    client = debug(HANDLED.replace("POS.12", failing).replace("DIM y", "DIM t(2)"), stopOnEntry=True)
+    client.stopped()
+    assert (client.evaluate("ERR"), client.evaluate("ERL")) == ("-1", "0")  # no error yet (000:18510)
+    client.body("setExceptionBreakpoints", {"filters": ["errors"]})
+    client.body("continue", {"threadId": 1})
+    assert (client.stopped()["reason"], client.line()) == ("exception", 3)
+    assert (client.evaluate("ERR"), client.evaluate("ERL"), client.values()["x"]) == (err, "3", "0")
 
 
 def test_an_interpreter_error_stops_again_where_it_ends_the_run_once_onerror_returns(debug: Debug) -> None:

@@ -77,8 +77,15 @@ class Scalars:
         return [Variable(name, shown(scalars[slot]), name) for name, slot in named]
 
     def _slots(self) -> dict[str, int]:
-        names = self.controller.linked.names
-        return {identity: slot for identity, slot in names.scalars.items() if identity not in names.arrays}
+        """Every variable's slot; an array's name has one too, a variable of its own when the program uses it as
+        one (000:1086-1087)."""
+        linked = self.controller.linked
+        names = linked.names
+        return {
+            identity: slot
+            for identity, slot in names.scalars.items()
+            if identity not in names.arrays or identity in linked.plain
+        }
 
     def assignment(self, name: str, value: float) -> tuple[str, Apply]:
         slot = self._slots().get(name[:10].upper())

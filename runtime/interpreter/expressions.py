@@ -54,6 +54,7 @@ class ExpressionCompiler:
         self.table = table
         self.names = names
         self.semantics = semantics
+        self.plain: set[str] = set()  # the names compiled as plain variables, arrays' names among them (000:1086)
 
     def compile(self, expression: n.Expression) -> Evaluate:
         kind = type(expression)
@@ -130,6 +131,7 @@ class ExpressionCompiler:
 
     def scalar_slot(self, name: n.Name) -> int:
         """Where the scalar variable ``name`` is kept in ``vm.scalars``."""
+        self.plain.add(name.identity)
         slot = self.names.scalars.get(name.identity)
         if slot is None:  # an array name used as a scalar without ever being one: its own scalar slot
             slot = self.names.scalars[name.identity] = len(self.vm.scalars)

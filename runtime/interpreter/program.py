@@ -43,6 +43,7 @@ class Linked:
     handlers: Mapping[str, int]  # the program's labels by identity (ONERROR, IN3, TIMER ...) -> pc
     configuration_handlers: Mapping[str, int]  # the configuration file's
     names: Names
+    plain: frozenset[str]  # the names the program uses as plain variables, an array's name too (000:1086-1087)
     event_block_ends: Mapping[int, int]  # a MintMT Event block's first statement -> its End Event, by pc
     elses: Mapping[int, tuple[int, int]]  # an IF block's ELSE -> its IF .. DO and its ENDIF, by pc
 
@@ -97,7 +98,14 @@ def link(
         for (unit, _), (positions, *_) in zip(units, layouts, strict=True)
         for pc, ends in _elses(model.structures[unit].blocks, positions).items()
     }
-    return Linked(handlers.get(Unit.PROGRAM, {}), handlers.get(Unit.CONFIGURATION, {}), names, event_block_ends, elses)
+    return Linked(
+        handlers.get(Unit.PROGRAM, {}),
+        handlers.get(Unit.CONFIGURATION, {}),
+        names,
+        frozenset(expressions.plain),
+        event_block_ends,
+        elses,
+    )
 
 
 def _declares(statement: n.Statement) -> bool:

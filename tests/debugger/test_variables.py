@@ -163,3 +163,25 @@ def test_a_mintmt_events_frame_is_named_as_its_event_line_spells_it(debug: Debug
     client = debug(source, breakpoints=(7,), dialect="mintmt")
     client.stopped()
     assert [frame["name"] for frame in client.frames()] == ["#TIMER", "program"]
+
+
+BOTH = """\
+DIM t(3) = 1,2,3
+DIM u(2)
+DIM k
+t = 5
+k = t + t(2)
+PRINT k
+"""
+
+
+def test_an_arrays_name_the_program_uses_as_a_variable_is_a_variable_too(debug: Debug) -> None:
+    # 000:1086-1087: an array's name is also a variable of its own; u is never used as one
+    client = debug(BOTH, breakpoints=(5,))
+    client.stopped()
+    assert client.values() == {"k": "0", "t": "5"}
+    (t, _) = client.body("variables", {"variablesReference": client.scope("Arrays")})["variables"]
+    assert client.variables(t["variablesReference"]) == {"(1)": "1", "(2)": "2", "(3)": "3"}
+    client.body("setVariable", {"variablesReference": client.scope("Variables"), "name": "t", "value": "10"})
+    client.step("next")
+    assert client.values() == {"k": "12", "t": "10"}

@@ -6,46 +6,65 @@ not a loop over its characters. Where part of the answer is known — the editor
 said which range it replaced (``edited``) — the search starts from there in
 doubling steps, so it costs the distance to the first difference, not the file.
 The language server asks for the same two versions more than once per keystroke
-(the dialect's detection, the re-parse), so the last answer is remembered.
+(the dialect's detection, the re-parse), so the latest answers are remembered.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import NamedTuple
 
 _FIRST_STEP = 64  # characters compared first from what is known shared; each step after compares twice as many
+_MOST_PAIRS = 4  # an editor may send several changes before an analysis asks; each pair keeps its texts alive
 
-# The last two texts compared, kept alive so that identity names them, with what they share: one
-# tuple, replaced whole, so that a reader on another thread never sees one pair with another's answer.
-_last: tuple[str, str, tuple[int, int]] = ("", "", (0, 0))
+
+class _Pair(NamedTuple):
+    """Two texts, kept alive so that identity names them, with ``start`` and ``end`` characters known shared
+    at each end: all there are when ``exact``, else as many as the editor's changes tell."""
+
+    old: str
+    new: str
+    start: int
+    end: int
+    exact: bool
+
+
+# The latest first, replaced whole, so that a reader on another thread sees one list or the other.
+_pairs: tuple[_Pair, ...] = ()
 
 
 def shared_ends(old: str, new: str) -> tuple[int, int]:
     """How many characters ``old`` and ``new`` share at the start, then at the end after that start."""
-    last_old, last_new, ends = _last
-    if old is last_old and new is last_new:
-        return ends
+    for pair in _pairs:
+        if pair.old is old and pair.new is new:
+            return (pair.start, pair.end) if pair.exact else _remember(old, new, pair.start, pair.end)
     return _remember(old, new, 0, 0)
 
 
 def edited(old: str, new: str, start: int, end: int) -> None:
-    """Remember that ``new`` is ``old`` with ``old[start:end]`` replaced, as an editor's change says, so
-    that ``shared_ends`` of the two, or of the text before ``old`` and ``new``, need not compare the files."""
-    before, last_new, (same_start, same_end) = _last
+    """Remember that ``new`` is ``old`` with ``old[start:end]`` replaced, as an editor's change says, so that
+    ``shared_ends`` of the two, or of a version before ``old`` and ``new``, need not compare the files."""
     shared_at_end = len(old) - end
-    if last_new is old:  # a second change before anyone asked about the first: what all three share
-        _remember(before, new, min(same_start, start), min(same_end, shared_at_end))
-    else:
-        _remember(old, new, start, shared_at_end)
+    through = (  # what a version before ``old`` shares with ``new``: what it shared with ``old``, and the change kept
+        _Pair(pair.old, new, min(pair.start, start), min(pair.end, shared_at_end), False)
+        for pair in _pairs
+        if pair.new is old and pair.old is not old
+    )
+    _keep((_Pair(old, new, start, shared_at_end, False), *through))
 
 
 def _remember(old: str, new: str, known_start: int, known_end: int) -> tuple[int, int]:
-    global _last  # noqa: PLW0603 - a one-pair memory of the module's own
     start = _common_prefix(old, new, known_start)
     most = min(len(old), len(new)) - start
     ends = (start, _common_suffix(old, new, min(known_end, most), most))
-    _last = (old, new, ends)
+    others = (pair for pair in _pairs if not (pair.old is old and pair.new is new))
+    _keep((_Pair(old, new, *ends, True), *others))
     return ends
+
+
+def _keep(pairs: tuple[_Pair, ...]) -> None:
+    global _pairs  # noqa: PLW0603 - the module's own memory of the latest pairs
+    _pairs = pairs[:_MOST_PAIRS]
 
 
 def _common_prefix(old: str, new: str, low: int) -> int:

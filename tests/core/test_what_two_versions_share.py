@@ -67,3 +67,18 @@ def test_two_edits_before_anyone_asks_give_what_comparing_the_first_and_last_fin
     third, start, end = _apply(second, next_change)
     edited(second, third, start, end)
     assert shared_ends(first, third) == _shared_by_characters(first, third)
+
+
+@given(TEXTS, st.lists(st.tuples(EDITS, st.booleans()), max_size=8))
+def test_edits_asked_about_or_not_give_what_comparing_any_two_versions_finds(
+    first: str, changes: list[tuple[tuple[int, int, str], bool]]
+) -> None:
+    versions = [first]
+    for change, asked in changes:
+        new, start, end = _apply(versions[-1], change)
+        edited(versions[-1], new, start, end)
+        if asked:  # as the language server's analysis asks after a keystroke
+            assert shared_ends(versions[-1], new) == _shared_by_characters(versions[-1], new)
+        versions.append(new)
+    for old in versions:
+        assert shared_ends(old, versions[-1]) == _shared_by_characters(old, versions[-1])

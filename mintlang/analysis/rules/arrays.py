@@ -8,7 +8,8 @@ defines (000:8287-8293): 99 general elements, and 100 to 255 mapped onto the
 controller's parameters (000:2566-2584); an element outside 1 to 255, on this node
 or another (``COMMS(5,10)``, 000:2556-2559), is an invalid index too. Most of the
 mapped locations can only be read (000:2586-2650): a v4 write to one is run-time error
-45 (000:18676-18678).
+45 (000:18676-18678); the rest are reserved (000:2610, 2621, 2624, 2664-2667), and
+reading or writing one is error 46 (000:18679-18680).
 """
 
 from __future__ import annotations
@@ -26,6 +27,8 @@ from mintlang.syntax.lines import CONTINUED_LIST, continues_a_list
 
 _NUMBERS = (n.Number, n.CharConstant, n.ConstantRef)
 _COMMS_ELEMENTS = range(1, 256)
+# The map's printed rows: the I/O table stops at offset 34 (000:2667), so 255 is left to the run
+_PRINTED_SYSTEM_ELEMENTS = range(100, 255)
 # What the v4 map's elements hold that no keyword names, as a message tells it
 _UNNAMED = {
     "EXECUTION_STATUS": "the execution status",
@@ -45,6 +48,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
     """Sizes and values of DIM written as expressions; INPUT into an element; COMMS elements."""
     yield from _comms_elements(scope)
     yield from _comms_read_only(scope)
+    yield from _comms_reserved(scope)
     for statement in scope.facts.statements:
         if isinstance(statement, n.Input) and isinstance(statement.target, n.ElementRef):
             name = statement.target.name.text
@@ -86,6 +90,17 @@ def _comms_read_only(scope: LineScope) -> Iterator[Finding]:
         if element is not None and held is not None:
             detail = f"COMMS element {element[1]} is {held}, which can only be read"
             yield Finding(scope.unit, mint_error(45, element[0].span, detail))
+
+
+def _comms_reserved(scope: LineScope) -> Iterator[Finding]:
+    """``COMMS(element)`` read or written where v4's map reserves the element; MintMT keeps the map (MT-1)."""
+    if scope.dialect is Dialect.V3:
+        return
+    for call in scope.facts.calls:
+        element = _comms_element(call, scope)
+        if element is not None and element[1] in _PRINTED_SYSTEM_ELEMENTS and system_element(element[1]) is None:
+            detail = f"COMMS element {element[1]} is reserved: it holds nothing to read or write"
+            yield Finding(scope.unit, mint_error(46, element[0].span, detail))
 
 
 def _comms_element(call: n.Call, scope: LineScope) -> tuple[n.Expression, int] | None:

@@ -105,6 +105,20 @@ GROUP = Group(
             safety=FixSafety.NONE,
         ),
         RuleDoc(
+            46,
+            catches="A read or a write of a COMMS element that the controller's extended map reserves: offsets "
+            "8 to 14 of each axis's 15 elements (`COMMS(108)` to `COMMS(114)` for axis 0), and offsets 1, 3 and "
+            "18 to 34 of the I/O block that starts at `COMMS(220)`.",
+            why="Those elements hold nothing for a program or a host; the access fails when the line runs.",
+            example=Example(
+                before="PRINT COMMS(108)\n",
+                after="PRINT COMMS(107)\n",
+            ),
+            manual=("v4:2566", "v4:18679"),
+            fix="Use one of the 99 general elements, or an element the map gives a parameter.",
+            safety=FixSafety.NONE,
+        ),
+        RuleDoc(
             "W103",
             catches="A variable declared with DIM and never used. A routine made only of DIMs is the "
             "guide's way to keep variables between runs, and is not reported.",

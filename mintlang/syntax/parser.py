@@ -16,7 +16,6 @@ THEN or DO expected, 2008 TO expected.
 from __future__ import annotations
 
 from array import array
-from bisect import bisect_right
 from collections.abc import Hashable, Iterable, Mapping, Sequence
 from dataclasses import field, replace
 from functools import cached_property
@@ -48,6 +47,7 @@ from mintlang.syntax.lines import (
     register,
     take_macro_body,
 )
+from mintlang.syntax.moved import bisect_right
 from mintlang.syntax.nodes import identity
 from mintlang.syntax.packed import PackedLines, PlacedDiagnostics
 from mintlang.syntax.spans import span as shared_span

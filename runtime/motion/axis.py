@@ -403,6 +403,13 @@ class Axis:
             if not head.instant or (self.buffer and self.buffer[0] is head):
                 break  # a move started, or the head waits for the other axes of its group
 
+    def leaving(self) -> Move | Request | None:
+        """The move a JOG or TORQUE written now would blend from: the one running, or else the one GO has
+        triggered to start at the next profiler tick, which AXISMODE already shows (000:3033-3035)."""
+        if self.move is not None:
+            return self.move
+        return self.buffer[0] if self.triggered and self.buffer else None
+
     def started(self, request: Request) -> Request:
         """``request`` leaves the buffer to run: its ident is now the last one started."""
         self.last_ident = request.ident

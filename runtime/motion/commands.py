@@ -244,7 +244,7 @@ class Motion:
         self.check_values("JOG", pairs)
         for axis, _ in pairs:
             axis.require_ready()
-            move = axis.move
+            move = axis.leaving()
             if move is not None and (move.mode not in (MD_JOG, MD_LINEAR) or len(move.axes) > 1):
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "JOG cannot blend from this move")
             if axis.torque is not None:  # only TORQUE may follow TORQUE [000:16850-16851]
@@ -280,7 +280,7 @@ class Motion:
         self.check_values("TORQUE", pairs, scaled=False)
         for axis, _ in pairs:
             axis.require_ready()
-            move = axis.move
+            move = axis.leaving()
             homing = axis.pending_mode == MD_HOMING or (move is not None and move.mode == MD_HOMING)
             if homing or (move is not None and (move.mode == MD_CIRCULAR or len(move.axes) > 1)):
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "TORQUE cannot blend from this move")

@@ -410,6 +410,13 @@ class Axis:
             return self.move
         return self.buffer[0] if self.triggered and self.buffer else None
 
+    def refuses_blend(self) -> bool:
+        """JOG and TORQUE blend from any move but a homing cycle, a vector or a circle (000:3945-3948)."""
+        move = self.leaving()
+        if self.pending_mode == MD_HOMING:
+            return True
+        return move is not None and (move.mode in (MD_HOMING, MD_CIRCULAR) or len(move.axes) > 1)
+
     def started(self, request: Request) -> Request:
         """``request`` leaves the buffer to run: its ident is now the last one started."""
         self.last_ident = request.ident

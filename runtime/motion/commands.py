@@ -18,8 +18,6 @@ from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer, per_channel
 from mintlang.runtime.motion.axis import (
     ER_ABORT,
-    MD_CIRCULAR,
-    MD_HOMING,
     MD_JOG,
     MD_LINEAR,
     MD_TORQUE,
@@ -244,8 +242,7 @@ class Motion:
         self.check_values("JOG", pairs)
         for axis, _ in pairs:
             axis.require_ready()
-            move = axis.leaving()
-            if move is not None and (move.mode not in (MD_JOG, MD_LINEAR) or len(move.axes) > 1):
+            if axis.refuses_blend():
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "JOG cannot blend from this move")
             if axis.torque is not None:  # only TORQUE may follow TORQUE [000:16850-16851]
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "in torque mode only TORQUE can be written")
@@ -280,9 +277,7 @@ class Motion:
         self.check_values("TORQUE", pairs, scaled=False)
         for axis, _ in pairs:
             axis.require_ready()
-            move = axis.leaving()
-            homing = axis.pending_mode == MD_HOMING or (move is not None and move.mode == MD_HOMING)
-            if homing or (move is not None and (move.mode == MD_CIRCULAR or len(move.axes) > 1)):
+            if axis.refuses_blend():
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "TORQUE cannot blend from this move")
         for axis, value in pairs:
             if axis.move is not None or axis.buffer:

@@ -250,10 +250,21 @@ def _from_project(path: Path, project: ProjectSettings) -> FileSettings:
 
 def _matches(glob: str, path: Path, folder: Path) -> bool:
     """A ``per-file-ignores`` glob against the path relative to the settings file's folder, or the file's name;
-    without regard to case, as Mint's file names are compared. ``*`` matches across folders."""
-    pattern = glob.lower()
+    without regard to case, as Mint's file names are compared. ``*`` matches across folders, and a leading
+    ``./`` names the settings file's folder, as in ruff's globs."""
+    patterns = _spellings(glob.lower().removeprefix("./"))
     try:
         relative = path.absolute().relative_to(folder.absolute()).as_posix().lower()
     except ValueError:
         relative = None
-    return fnmatchcase(path.name.lower(), pattern) or (relative is not None and fnmatchcase(relative, pattern))
+    names = (path.name.lower(), *([relative] if relative is not None else []))
+    return any(fnmatchcase(name, pattern) for name in names for pattern in patterns)
+
+
+def _spellings(pattern: str) -> list[str]:
+    """The glob as fnmatch reads it, and with each ``**/`` left out: in a glob ``**/`` is zero or more folders
+    (``legacy/**/*.mnt`` matches ``legacy/old.mnt``), where fnmatch's needs at least one."""
+    head, recursive, tail = pattern.partition("**/")
+    if not recursive:
+        return [pattern]
+    return [head + spelt for rest in _spellings(tail) for spelt in (recursive + rest, rest)]

@@ -93,6 +93,22 @@ def test_per_file_ignores_apply_to_the_files_their_glob_matches(tmp_path: Path) 
     assert findings(old, new, scratch) == [("new.mnt", "W103")]
 
 
+@pytest.mark.parametrize(
+    "glob",
+    [
+        pytest.param("**/legacy/*.mnt", id="a leading **/ matches no folder too"),
+        pytest.param("legacy/**/*.mnt", id="an inner **/ matches no folder too"),
+        pytest.param("**/legacy/**/*.mnt", id="each **/ matches no folder too"),
+        pytest.param("./legacy/*.mnt", id="./ is the settings file's folder"),
+    ],
+)
+def test_per_file_ignores_read_globs_as_ruff_does(tmp_path: Path, glob: str) -> None:
+    write(tmp_path / "mint.toml", f'[per-file-ignores]\n"{glob}" = ["W103"]\n')
+    old, deeper = write(tmp_path / "legacy" / "old.mnt", SPARE), write(tmp_path / "legacy" / "v2" / "old.mnt", SPARE)
+    new = write(tmp_path / "new.mnt", SPARE)
+    assert findings(old, deeper, new) == [("new.mnt", "W103")]
+
+
 # ------------------------------------------------------------------ --show-settings
 
 

@@ -230,6 +230,11 @@ def resolve(path: Path, project: ProjectSettings | None, overrides: Overrides) -
     }
     if overrides.select is not None and overrides.extend_select is None:
         changes["extend_select"] = Given((), overrides.select.origin)  # the command line's select is the whole set
+    if overrides.select is None and overrides.extend_select is not None:  # besides the file's, as ruff adds it
+        changes["extend_select"] = Given(
+            (*settings.extend_select.value, *overrides.extend_select.value),
+            _joined(settings.extend_select, overrides.extend_select),
+        )
     if overrides.ignore is not None:
         changes["ignore"] = Given(
             (*settings.ignore.value, *overrides.ignore.value), _joined(settings.ignore, overrides.ignore)

@@ -86,6 +86,19 @@ def test_select_on_the_command_line_replaces_the_files_but_its_ignore_still_appl
     assert findings("--select", "W", "--extend-select", "W103", program) == [("p.mnt", "W111")]
 
 
+@pytest.mark.parametrize(
+    ("options", "expected"),
+    [
+        pytest.param(("--extend-select", "I201"), ["W103", "I201"], id="--extend-select adds to the file's"),
+        pytest.param(("--select", "E", "--extend-select", "I201"), ["I201"], id="--select replaces the file's"),
+    ],
+)
+def test_extend_select_on_the_command_line(tmp_path: Path, options: tuple[str, ...], expected: list[str]) -> None:
+    program = write(tmp_path / "p.mnt", SPARE + "DIM b\nb = POS[1]\n")  # W103, I201 (POS.1)
+    write(tmp_path / "mint.toml", 'select = ["E"]\nextend-select = ["W103"]\n')
+    assert [code for _, code in findings(*options, program)] == expected
+
+
 def test_per_file_ignores_apply_to_the_files_their_glob_matches(tmp_path: Path) -> None:
     write(tmp_path / "mint.toml", '[per-file-ignores]\n"legacy/*.mnt" = ["W103"]\n"scratch.MNT" = ["W"]\n')
     old, new = write(tmp_path / "legacy" / "old.mnt", SPARE), write(tmp_path / "new.mnt", SPARE)

@@ -61,7 +61,7 @@ class Plan:
         """Plan the file ``path`` (``source``: its text, for standard input)."""
         unit, other = settings.partner(path)
         if unit is Unit.CONFIGURATION:
-            self._add_configuration(path, settings, program=other)
+            self._add_configuration(path, settings, program=other, source=source)
             return
         configuration = self._configuration(other, settings) if other is not None else None
         if other is not None and configuration is None:
@@ -82,10 +82,12 @@ class Plan:
         key = _key(path)
         return key in self._configurations and bool(self._configurations[key].jobs)
 
-    def _add_configuration(self, path: Path, settings: FileSettings, program: Path | None) -> None:
+    def _add_configuration(
+        self, path: Path, settings: FileSettings, program: Path | None, source: SourceFile | None = None
+    ) -> None:
         if self.configured(path):
             return  # reported with its programs
-        configuration = self._configuration(path, settings)
+        configuration = self._configuration(path, settings, source)
         if configuration is None:
             return
         configuration.place = len(self.jobs)
@@ -94,14 +96,17 @@ class Plan:
             configuration.jobs.append(len(self.jobs))
             self.jobs.append(Job(program, options_of(settings), configuration.source.text))
 
-    def _configuration(self, path: Path, settings: FileSettings) -> _Configuration | None:
-        """The configuration file ``path``, read once for the run; None (and a problem) if it cannot be."""
+    def _configuration(
+        self, path: Path, settings: FileSettings, source: SourceFile | None = None
+    ) -> _Configuration | None:
+        """The configuration file ``path``, read once for the run (``source``: the text standard input gave under its
+        name, not the file on disk); None (and a problem) if it cannot be read."""
         key = _key(path)
         if key in self._failed:
             return None
         if key not in self._configurations:
             try:
-                source = read_source(path)
+                source = source if source is not None else read_source(path)
             except OSError as error:
                 return self._fail(key, unread(error))
             if (binary := not_text(source)) is not None:

@@ -121,6 +121,24 @@ def test_a_program_read_from_stdin_is_reported_under_its_stdin_filename(tmp_path
     assert [(r["path"], r["line"], r["column"]) for r in json.loads(result.stdout)] == [("cell.mnt", 3, 7)]
 
 
+@pytest.mark.parametrize(
+    "on_disk",
+    [
+        pytest.param(None, id="no such file on disk"),
+        pytest.param(CLEAN, id="another text on disk"),
+    ],
+)
+def test_a_configuration_file_read_from_stdin_is_checked_as_given(tmp_path: Path, on_disk: str | None) -> None:
+    name = tmp_path / "cell.cfg"
+    if on_disk is not None:
+        write(tmp_path, name.name, on_disk)
+    result = mint_check("-", "--stdin-filename", name, "--format", "json", stdin=UNDECLARED)
+    assert result.exit_code == 1, result.output
+    assert [(r["path"], r["code"], r["line"], r["column"]) for r in json.loads(result.stdout)] == [
+        (str(name), "E3001", 3, 7)
+    ]
+
+
 def test_stdin_without_a_name_is_called_dash() -> None:
     result = mint_check("-", stdin=CLEAN)
     assert result.exit_code == 0

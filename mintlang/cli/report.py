@@ -5,7 +5,9 @@ from __future__ import annotations
 import re
 from collections import Counter
 from collections.abc import Iterator, Sequence
+from pathlib import PurePath
 from typing import IO, TYPE_CHECKING
+from urllib.parse import quote
 
 from mintlang import keyworddb
 from mintlang.cli.terminal import Palette
@@ -226,9 +228,10 @@ def as_sarif(reports: Sequence[FileReport]) -> str:
     codes: set[str] = set()
     for report in reports:
         index = LineIndex(report.source)
+        uri = quote(PurePath(report.path).as_posix())  # a URI reference: "my cell.mnt" is my%20cell.mnt
         for diagnostic in report.diagnostics:
             codes.add(diagnostic.code)
-            location = {"artifactLocation": {"uri": report.path}, "region": _sarif_region(index, diagnostic.span)}
+            location = {"artifactLocation": {"uri": uri}, "region": _sarif_region(index, diagnostic.span)}
             result = {
                 "ruleId": diagnostic.code,
                 "level": _SARIF_LEVEL[diagnostic.severity],
@@ -236,7 +239,7 @@ def as_sarif(reports: Sequence[FileReport]) -> str:
                 "locations": [{"physicalLocation": location}],
             }
             if diagnostic.fixes:
-                result["fixes"] = [_sarif_fix(fix, index, report.path) for fix in diagnostic.fixes]
+                result["fixes"] = [_sarif_fix(fix, index, uri) for fix in diagnostic.fixes]
             results.append(result)
     rules = [_sarif_rule(code, configured_base()) for code in sorted(codes)]
     document = {

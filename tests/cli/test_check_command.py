@@ -140,6 +140,26 @@ def test_sarif_output_is_sarif_2_1_0(tmp_path: Path) -> None:
     assert location["physicalLocation"]["region"] == {"startLine": 3, "startColumn": 7, "endLine": 3, "endColumn": 8}
 
 
+@pytest.mark.parametrize(
+    ("name", "uri"),
+    [
+        pytest.param("my cell.mnt", "my%20cell.mnt", id="a space"),
+        pytest.param("50%.mnt", "50%25.mnt", id="a percent sign"),
+        pytest.param("café.mnt", "caf%C3%A9.mnt", id="a letter beyond ASCII, in UTF-8"),
+        pytest.param("line 2/a.mnt", "line%202/a.mnt", id="a folder, its slash kept"),
+    ],
+)
+def test_sarif_names_each_file_by_a_valid_uri_reference(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, name: str, uri: str
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    write(tmp_path, name, "DIM spare\nPRINT “x”\n")  # W103, and W101 with its fix
+    document = json.loads(mint_check("--format", "sarif", name).stdout)
+    (spare, quotes) = document["runs"][0]["results"]
+    assert spare["locations"][0]["physicalLocation"]["artifactLocation"]["uri"] == uri
+    assert quotes["fixes"][0]["artifactChanges"][0]["artifactLocation"]["uri"] == uri
+
+
 def test_sarif_levels_for_warnings_and_hints(tmp_path: Path) -> None:
     path = write(tmp_path, "soft.mnt", "DIM spare\nDIM b\nb = POS[1]\n")
     document = json.loads(mint_check("--format", "sarif", "--select", "W,I", path).stdout)

@@ -17,6 +17,7 @@ from mintlang.cli.files import (
     PROGRAM_SUFFIXES,
     cannot_read,
     find,
+    identity,
     is_configuration,
     program_as_own_configuration,
 )
@@ -149,11 +150,11 @@ def read(paths: tuple[Path, ...], config: Path | None) -> Found:
         named = ", ".join(str(path) for path in paths)
         raise UsageError(unread[0].line if unread else f"no .mnt or .cfg files to migrate in {named}")
     partners = _partners(found.files)
-    claimed = {_identity(configuration) for configuration in partners.values()}
+    claimed = {identity(configuration) for configuration in partners.values()}
     applications = [
         _application(None, path) if is_configuration(path) else _application(path, partners.get(path))
         for path in found.files
-        if not (is_configuration(path) and _identity(path) in claimed)
+        if not (is_configuration(path) and identity(path) in claimed)
     ]
     return Found(applications, unread)
 
@@ -176,22 +177,11 @@ def _partners(found: list[Path]) -> dict[Path, Path]:
             unit, partner = settings_for(program).partner(program)
         except SettingsError as error:
             raise UsageError(str(error)) from None
-        if unit is not Unit.PROGRAM or partner is None or _identity(partner) in taken:
+        if unit is not Unit.PROGRAM or partner is None or identity(partner) in taken:
             continue
         partners[program] = partner
-        taken.add(_identity(partner))
+        taken.add(identity(partner))
     return partners
-
-
-def _identity(path: Path) -> object:
-    """What names one file however it is spelt or linked (its device and inode); where it would be, if missing.
-
-    One stat per file keeps pairing a folder of many programs linear, where comparing each pair was not."""
-    try:
-        status = path.stat()
-    except OSError:
-        return path.resolve()
-    return status.st_dev, status.st_ino
 
 
 def _application(program: Path | None, configuration: Path | None) -> Application:

@@ -47,8 +47,8 @@ def _programs_below(directory: Path, unreadable: list[OSError], suffixes: frozen
 
 
 def find(paths: Iterable[Path], suffixes: frozenset[str] = PROGRAM_SUFFIXES) -> Found:
-    """Files named directly, and the ``.mnt`` files (``suffixes``) below named directories, sorted; and what
-    failed.
+    """Files named directly, and the ``.mnt`` files (``suffixes``) below named directories, sorted, each once
+    under the name it was first found by; and what failed.
 
     A named ``.cfg`` file is checked as a configuration file on its own. A path that
     does not exist, a link loop or a folder that cannot be listed is an OSError
@@ -63,7 +63,21 @@ def find(paths: Iterable[Path], suffixes: frozenset[str] = PROGRAM_SUFFIXES) -> 
             unreadable.append(error)
             continue
         files.extend(_programs_below(path, unreadable, suffixes) if path.is_dir() else [path])
-    return Found(list(dict.fromkeys(files)), unreadable)
+    once: dict[object, Path] = {}  # a file named twice (a.mnt, ../src/a.mnt) would be fixed twice, the second refused
+    for file in files:
+        once.setdefault(identity(file), file)
+    return Found(list(once.values()), unreadable)
+
+
+def identity(path: Path) -> object:
+    """What names one file however it is spelt or linked (its device and inode); where it would be, if missing.
+
+    One stat per file keeps pairing a folder of many programs linear, where comparing each pair was not."""
+    try:
+        status = path.stat()
+    except OSError:
+        return path.resolve()
+    return status.st_dev, status.st_ino
 
 
 def cannot_read(error: OSError) -> str:

@@ -112,6 +112,26 @@ def test_verbose_says_how_many_files_on_how_many_processes(tmp_path: Path) -> No
     assert result.stderr.startswith("mint check: 3 of 3 files checked on 2 processes in ")
 
 
+@pytest.mark.parametrize(
+    "other_name",
+    [
+        pytest.param("../here/a.mnt", id="through the parent folder"),
+        pytest.param("{folder}/a.mnt", id="absolute"),
+        pytest.param(".", id="in the folder named"),
+    ],
+)
+def test_a_file_named_twice_is_checked_and_fixed_once(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, other_name: str
+) -> None:
+    folder = tmp_path / "here"
+    program = write(folder, "a.mnt", "PRINT \u201cx\u201d\n")  # W101: typographic quotes, a safe fix
+    monkeypatch.chdir(folder)
+    result = mint_check("--fix", "a.mnt", other_name.format(folder=folder))
+    assert (result.exit_code, result.stderr) == (0, "")
+    assert result.stdout.startswith("1 file checked: 0 errors, 0 warnings")
+    assert program.read_text(encoding="utf-8") == 'PRINT "x"\n'
+
+
 # ------------------------------------------------------------------ stdin
 
 

@@ -29,6 +29,7 @@ from mintlang.cli.options import (
     format_option,
     list_option,
     output_file_option,
+    refuse_settings_file,
     verbosity_options,
     version_option,
 )
@@ -73,6 +74,7 @@ Exit status:
     "config",
     type=click.Path(path_type=Path),
     help="Configuration file migrated together with the program (its variables are visible there).",
+    callback=refuse_settings_file,
 )
 @click.option(
     "--to",

@@ -26,6 +26,7 @@ from mintlang.cli.options import (
     drives_option,
     exit_zero_option,
     refuse_nan_seconds,
+    refuse_settings_file,
     verbosity_options,
     version_option,
 )
@@ -49,6 +50,7 @@ from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_CONTROLLERS
     "config_path",
     type=click.Path(path_type=Path),
     help="Configuration file run before the program (by default the one beside it: <name>.cfg, any case).",
+    callback=refuse_settings_file,
 )
 @click.option("--no-config", is_flag=True, help="Run the program without a configuration file.")
 @click.option(

@@ -30,6 +30,7 @@ from mintlang.cli.options import (
     list_option,
     output_file_option,
     refuse_quiet_and_verbose,
+    refuse_settings_file,
     verbosity_options,
     version_option,
 )
@@ -120,6 +121,7 @@ def _explain(context: click.Context, _parameter: click.Parameter, code: str | No
     "config_path",
     type=click.Path(path_type=Path),
     help="Configuration file whose variables and macros the programs see (instead of each program's paired one).",
+    callback=refuse_settings_file,
 )
 @click.option(
     "--no-config",

@@ -125,3 +125,14 @@ def refuse_nan_seconds(_context: click.Context, _parameter: click.Parameter, sec
     if math.isnan(seconds):
         raise click.BadParameter("give a number of seconds, or inf for no limit")
     return seconds
+
+
+def refuse_settings_file(_context: click.Context, _parameter: click.Parameter, path: Path | None) -> Path | None:
+    """``--config``'s callback: it names the Mint configuration file a program sees, where ruff's names the
+    settings file; a ``mint.toml`` read as Mint would be nothing but syntax errors."""
+    if path is not None and path.suffix.lower() == ".toml":
+        raise click.BadParameter(
+            f"{path} is a settings file, found above each program without being named; "
+            "--config names the Mint configuration file (.cfg) the programs see"
+        )
+    return path

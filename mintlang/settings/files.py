@@ -20,6 +20,8 @@ MINT_TOML = "mint.toml"
 PYPROJECT = "pyproject.toml"
 _PYPROJECT_TABLE = ("tool", "mint")
 
+_TOML_END = " (at end of document)"  # where tomllib places an error it found only at the end: no line
+
 # Patterns, compiled (and cached by ``re``) when a settings file is read: most runs have none.
 _TOML_POSITION = r"\s*\(at line (\d+), column (\d+)\)$"
 _KEY_PART = r'"(?:[^"\\]|\\.)*"|\'[^\']*\'|[A-Za-z0-9_-]+'
@@ -145,6 +147,8 @@ def _parse(path: Path) -> Table | None:
         message = str(error)
         position = re.search(_TOML_POSITION, message)
         line = int(position.group(1)) if position else None
+        if message.endswith(_TOML_END):  # something left open: the last line, as the message has no line
+            message, line = message.removesuffix(_TOML_END) + " (at the end of the file)", text.count("\n") + 1
         raise SettingsError(path, f"not valid TOML: {re.sub(_TOML_POSITION, '', message)}", line=line) from None
     if path.name != PYPROJECT:
         return Table(path, (), document, key_lines(text))

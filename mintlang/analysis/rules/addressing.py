@@ -226,7 +226,7 @@ def misaddressed(ref: n.KeywordRef, keyword: Keyword, dialect: Dialect) -> tuple
     if (ref.selector is None and ref.channel is None) or keyword.name.startswith("REMOTE"):
         return None
     if keyword.name in _TERMINAL_KEYWORDS or keyword.addressing is Addressing.CHANNEL or _channel_family(keyword.name):
-        return _one_number_after_the_dot(ref, "channel")
+        return _one_number_after_the_dot(ref, "channel", brackets=dialect is Dialect.MINTMT)
     if keyword.addressing is Addressing.AXIS:
         return _one_number_after_the_dot(ref, "axis")
     if dialect.modern and keyword.documented and keyword.formats and keyword.kind in _ADDRESSED_KINDS:
@@ -236,14 +236,20 @@ def misaddressed(ref: n.KeywordRef, keyword: Keyword, dialect: Dialect) -> tuple
     return None
 
 
-def _one_number_after_the_dot(ref: n.KeywordRef, addressed: str) -> tuple[Span, str] | None:
+def _one_number_after_the_dot(ref: n.KeywordRef, addressed: str, *, brackets: bool = False) -> tuple[Span, str] | None:
+    """``brackets``: MintMT's round brackets name a channel keyword's channel as v4's dot does (``OUTX(0)``,
+    004:148), so they hold one number too."""
     selector = ref.selector
-    if selector is None or not selector.dot or not selector.items:
+    if selector is None or not (selector.dot or brackets) or not selector.items:
         return None
     if ref.channel is not None:
-        return selector.span, f"{ref.spelling} already names channel {ref.channel}: no dot after it"
+        return (
+            selector.span,
+            f"{ref.spelling} already names channel {ref.channel}: no {'dot' if selector.dot else 'brackets'} after it",
+        )
+    where = "after its dot" if selector.dot else "between its brackets"
     if len(selector.items) > 1 and (first := selector.items[0]) is not None:
-        detail = f"{ref.keyword} takes one {addressed} number after its dot"
+        detail = f"{ref.keyword} takes one {addressed} number {where}"
         if addressed == "axis":
             detail += " (several axes are listed in brackets)"
         return Span(first.span.end, selector.span.end), detail

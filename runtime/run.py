@@ -247,7 +247,7 @@ def _simulate(
     if refused is not None and stop.reason is StopReason.END:
         unit = refused.unit.value
         stop = Stop(StopReason.ERROR, stop.time_ms, unit, refused.line, refused.statement, refused.message)
-        if model.program.dialect is Dialect.V4:  # v3's ERR holds only what #ONERROR can see (001:4916)
+        if model.program.dialect.modern:  # v3's ERR holds only what #ONERROR can see (001:4916)
             built.vm.record_error(refused.code, refused.line, None)
         built.vm.announce(refused.printed)
     # a check the run never reached did not hold: dropping it would let a run that stops early pass

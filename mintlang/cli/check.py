@@ -257,7 +257,7 @@ def check(
         elapsed = time.perf_counter() - started
         processes = min(workers, len(work)) or 1
         click.echo(
-            f"mint check: {len(reports)} of {len(work) + len(found.unreadable)} files checked "
+            f"mint check: {len(reports)} of {len(reports) + len(unchecked)} files checked "
             f"on {processes} process{'es' if processes != 1 else ''} in {elapsed:.2f} s",
             err=True,
         )

@@ -104,12 +104,20 @@ def test_the_report_is_the_same_whatever_the_number_of_processes(tmp_path: Path)
     assert len(paths) == 6
 
 
-def test_verbose_says_how_many_files_on_how_many_processes(tmp_path: Path) -> None:
-    for name in ("a.mnt", "b.mnt", "c.mnt"):
-        write(tmp_path, name, CLEAN)
+@pytest.mark.parametrize(
+    ("files", "said"),
+    [
+        pytest.param({"a.mnt": CLEAN, "b.mnt": CLEAN, "c.mnt": CLEAN}, "3 of 3", id="three programs"),
+        pytest.param({"a.mnt": CLEAN, "a.cfg": "", "b.mnt": CLEAN}, "3 of 3", id="a configuration file counts"),
+        pytest.param({"a.mnt": CLEAN, "blob.mnt": "PRINT 1\n\0"}, "1 of 2", id="a file not checked counts"),
+    ],
+)
+def test_verbose_says_how_many_files_on_how_many_processes(tmp_path: Path, files: dict[str, str], said: str) -> None:
+    """The closing line counts a configuration file as a file checked: -v counts the same files."""
+    for name, text in files.items():
+        write(tmp_path, name, text)
     result = mint_check("-v", "-j", "2", tmp_path)
-    assert result.exit_code == 0
-    assert result.stderr.startswith("mint check: 3 of 3 files checked on 2 processes in ")
+    assert result.stderr.splitlines()[-1].startswith(f"mint check: {said} files checked on 2 processes in ")
 
 
 @pytest.mark.parametrize(

@@ -9,7 +9,9 @@ controller's parameters (000:2566-2584); an element outside 1 to 255, on this no
 or another (``COMMS(5,10)``, 000:2556-2559), is an invalid index too. Most of the
 mapped locations can only be read (000:2586-2650): a v4 write to one is run-time error
 45 (000:18676-18678); the rest are reserved (000:2610, 2621, 2624, 2664-2667), and
-reading or writing one is error 46 (000:18679-18680).
+reading or writing one is error 46 (000:18679-18680). ``COMMS(i) = a, b`` writes
+``b`` to element i + 1, as a host's list fills consecutive elements (002:115), so
+every value of the list is judged at the element it lands on.
 """
 
 from __future__ import annotations
@@ -70,9 +72,8 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
 
 
 def _comms_elements(scope: LineScope) -> Iterator[Finding]:
-    for call in scope.facts.calls:
-        element = _comms_element(call, scope)
-        if element is not None and element[1] not in _COMMS_ELEMENTS:
+    for element in _comms_accesses(scope):
+        if element[1] not in _COMMS_ELEMENTS:
             detail = f"COMMS element {element[1]} does not exist: the Comms array's elements are 1 to 255"
             yield Finding(scope.unit, mint_error(2016, element[0].span, detail))
 
@@ -82,12 +83,9 @@ def _comms_read_only(scope: LineScope) -> Iterator[Finding]:
     v4's map (MT-1: its note gives only the 99 general elements, 002:19) and its run raises error 45 too."""
     if scope.dialect is Dialect.V3:
         return
-    for statement in scope.facts.statements:
-        if type(statement) is not n.FunctionStatement or statement.values is None:
-            continue
-        element = _comms_element(statement.call, scope)
-        held = _read_only_parameter(element[1]) if element is not None else None
-        if element is not None and held is not None:
+    for element in _comms_writes(scope):
+        held = _read_only_parameter(element[1])
+        if held is not None:
             detail = f"COMMS element {element[1]} is {held}, which can only be read"
             yield Finding(scope.unit, mint_error(45, element[0].span, detail))
 
@@ -96,11 +94,45 @@ def _comms_reserved(scope: LineScope) -> Iterator[Finding]:
     """``COMMS(element)`` read or written where v4's map reserves the element; MintMT keeps the map (MT-1)."""
     if scope.dialect is Dialect.V3:
         return
-    for call in scope.facts.calls:
-        element = _comms_element(call, scope)
-        if element is not None and element[1] in _PRINTED_SYSTEM_ELEMENTS and system_element(element[1]) is None:
+    for element in _comms_accesses(scope):
+        if element[1] in _PRINTED_SYSTEM_ELEMENTS and system_element(element[1]) is None:
             detail = f"COMMS element {element[1]} is reserved: it holds nothing to read or write"
             yield Finding(scope.unit, mint_error(46, element[0].span, detail))
+
+
+def _comms_accesses(scope: LineScope) -> Iterator[tuple[n.Expression, int]]:
+    """Every known COMMS element the line reads or writes: each call's, then each further value of a list."""
+    for call in scope.facts.calls:
+        element = _comms_element(call, scope)
+        if element is not None:
+            yield element
+    for statement, element in _comms_assignments(scope):
+        yield from _further_writes(statement, element)
+
+
+def _comms_writes(scope: LineScope) -> Iterator[tuple[n.Expression, int]]:
+    """Every known COMMS element the line writes, at its element for the first value and at the value after."""
+    for statement, element in _comms_assignments(scope):
+        yield element
+        yield from _further_writes(statement, element)
+
+
+def _comms_assignments(scope: LineScope) -> Iterator[tuple[n.FunctionStatement, tuple[n.Expression, int]]]:
+    for statement in scope.facts.statements:
+        if type(statement) is n.FunctionStatement and statement.values is not None:
+            element = _comms_element(statement.call, scope)
+            if element is not None:
+                yield statement, element
+
+
+def _further_writes(
+    statement: n.FunctionStatement, first: tuple[n.Expression, int]
+) -> Iterator[tuple[n.Expression, int]]:
+    """The second value of ``COMMS(i) = a, b`` lands on element i + 1, and so on; a skipped place writes nothing."""
+    assert statement.values is not None
+    for offset, value in enumerate(statement.values[1:], start=1):
+        if value is not None:
+            yield value, first[1] + offset
 
 
 def _comms_element(call: n.Call, scope: LineScope) -> tuple[n.Expression, int] | None:

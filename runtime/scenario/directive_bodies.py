@@ -13,6 +13,7 @@ from mintlang.dialect import Dialect
 from mintlang.runtime.scenario import builders
 from mintlang.runtime.scenario.expectations import Comparison, Expectation, Origin
 from mintlang.runtime.scenario.phrase import Phrase
+from mintlang.runtime.scenario.problems import Invalid
 from mintlang.runtime.scenario.stimulus import PlantModel, WorldRecord
 
 
@@ -110,35 +111,50 @@ def world(phrase: Phrase) -> WorldRecord:
     return record
 
 
-def _when(phrase: Phrase) -> int | None:
+def _when(phrase: Phrase, words: dict[str, int]) -> int | None:
     """``at end``, ``at <ms>`` or nothing (the end)."""
     if not phrase.accept("at") or phrase.accept("end"):
         return None
+    words["at_ms"] = phrase.taken() + 1
     return phrase.milliseconds()
 
 
 def expectation(phrase: Phrase, origin: Origin, dialect: Dialect) -> Expectation:
     """``<target> <op> <value> [± <tol>] [at ...]``, ``no <target>``, ``terminal contains|is "..."``,
-    ``stopped <why>``."""
-    expectation: Expectation
-    if phrase.accept("stopped"):
-        expectation = builders.stopped_expectation(phrase.word("why the run stopped").lower(), origin)
-    elif phrase.accept("terminal"):
-        exact = phrase.choice("how the terminal is matched", ("contains", "is")) == "is"
-        text = phrase.text("the text")
-        expectation = builders.terminal_expectation(text, _when(phrase), origin, exact=exact)
-    elif phrase.accept("no"):
-        what = phrase.word("a keyword or variable")
-        expectation = builders.value_expectation(
-            what, Comparison.EQUAL, 0.0, tolerance=0.0, at_ms=_when(phrase), origin=origin, dialect=dialect
-        )
-    else:
-        what = phrase.word("a keyword or variable")
-        comparison = Comparison(phrase.choice("a comparison", tuple(Comparison)))
-        value = phrase.number("a value to compare with")
-        tolerance = phrase.number("a tolerance") if phrase.accept("±") or phrase.accept("+-") else 0.0
-        expectation = builders.value_expectation(
-            what, comparison, value, tolerance=tolerance, at_ms=_when(phrase), origin=origin, dialect=dialect
-        )
+    ``stopped <why>``; a value the builders refuse is placed at its word, as the reader places its own."""
+    words: dict[str, int] = {}  # the builders' key of each value -> the word it was read from
+    try:
+        expectation = _expectation(phrase, origin, dialect, words)
+    except Invalid as problem:
+        if problem.column or problem.key not in words:
+            raise
+        raise phrase.placed(problem, words[problem.key]) from None
     phrase.end()
     return expectation
+
+
+def _expectation(phrase: Phrase, origin: Origin, dialect: Dialect, words: dict[str, int]) -> Expectation:
+    if phrase.accept("stopped"):
+        why = phrase.word("why the run stopped").lower()
+        words["stopped"] = phrase.taken()
+        return builders.stopped_expectation(why, origin)
+    if phrase.accept("terminal"):
+        exact = phrase.choice("how the terminal is matched", ("contains", "is")) == "is"
+        text = phrase.text("the text")
+        words["terminal_contains"] = phrase.taken()
+        return builders.terminal_expectation(text, _when(phrase, words), origin, exact=exact)
+    if phrase.accept("no"):
+        what = phrase.word("a keyword or variable")
+        words["what"] = phrase.taken()
+        return builders.value_expectation(
+            what, Comparison.EQUAL, 0.0, tolerance=0.0, at_ms=_when(phrase, words), origin=origin, dialect=dialect
+        )
+    what = phrase.word("a keyword or variable")
+    words["what"] = phrase.taken()
+    comparison = Comparison(phrase.choice("a comparison", tuple(Comparison)))
+    value = phrase.number("a value to compare with")
+    tolerance = phrase.number("a tolerance") if phrase.accept("±") or phrase.accept("+-") else 0.0
+    words["tolerance"] = phrase.taken()
+    return builders.value_expectation(
+        what, comparison, value, tolerance=tolerance, at_ms=_when(phrase, words), origin=origin, dialect=dialect
+    )

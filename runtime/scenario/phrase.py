@@ -61,6 +61,14 @@ class Phrase:
         """``Invalid`` at the word last taken: that word was read but does not fit."""
         return self._at(message, self._next - 1)
 
+    def taken(self) -> int:
+        """Which word was taken last, for ``placed`` to blame once what the words make turns out wrong."""
+        return self._next - 1
+
+    def placed(self, problem: Invalid, index: int) -> Invalid:
+        """``problem``, found in what the words make rather than while reading them, at word ``index``."""
+        return self._at(str(problem), index)
+
     def _at(self, message: str, index: int) -> Invalid:
         """``Invalid`` at word ``index`` (the end when past the last word)."""
         return Invalid(message, column=self._column + self._starts[index] if self._column else 0)

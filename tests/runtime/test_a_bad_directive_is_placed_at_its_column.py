@@ -2,8 +2,9 @@
 
 The column, from 1 as every other diagnostic of the project counts it (a misspelt ``@expext`` is placed
 at its ``@``), is that of the word at fault, or just after the last word when one is missing; each was
-counted by hand on the lines below. A scenario file's ``when`` value is not placed: its words have no
-column of their own in the file.
+counted by hand on the lines below. A value read whole but refused by what it builds (a command as the
+target, a negative tolerance) is placed at that value too, not at the ``@``. A scenario file's ``when``
+value is not placed: its words have no column of their own in the file.
 """
 
 from __future__ import annotations
@@ -33,7 +34,16 @@ from tests.runtime.test_run_command import mint_run, write
         pytest.param("GO.0 : REM @expect x >< 3", 22, "expected a comparison (=, <>, >=, <=), not '>'", id="after-GO"),
         pytest.param("REM @sim plant 0 velamp fast", 25, "expected the value of k as a number, not 'fast'", id="sim"),
         pytest.param("REM @sim plant 0 ideal 3", 24, "unexpected '3': give parameters as name=value", id="sim-extra"),
-        pytest.param("REM @expect GO = 1", 5, "GO is a command, not a value to expect", id="at-the-@-otherwise"),
+        pytest.param("REM @expect GO = 1", 13, "GO is a command, not a value to expect", id="target"),
+        pytest.param("REM @expect x = 3 ± -1", 21, "a tolerance is not negative, not -1", id="negative-tolerance"),
+        pytest.param("REM @expect x = 3 at -5", 22, "a time in ms must be at least 0, not -5", id="negative-time"),
+        pytest.param(
+            "REM @expect stopped bogus",
+            21,
+            "a run stops for one of end, error, until, deadlock, wall-limit, not 'bogus'",
+            id="stop-reason",
+        ),
+        pytest.param('REM @expect terminal contains ""', 31, "the terminal text to look for is empty", id="empty-text"),
     ],
 )
 def test_the_column_is_that_of_the_word_at_fault(line: str, column: int, message: str) -> None:

@@ -243,9 +243,9 @@ def test_a_bad_directive_is_an_error_at_its_line_and_column(directive: str, colu
     [
         ("POS.0 == 3", 20, "expected a value to compare with as a number, not '='"),
         ("POS.0 =", 20, "expected a value to compare with at the end"),
-        ("GO = 1", 5, "GO is a command, not a value to expect"),
-        ("stopped somewhere", 5, "a run stops for one of end, error, until, deadlock, wall-limit, not 'somewhere'"),
-        ("count = 1 ± -1", 5, "a tolerance is not negative, not -1"),
+        ("GO = 1", 13, "GO is a command, not a value to expect"),
+        ("stopped somewhere", 21, "a run stops for one of end, error, until, deadlock, wall-limit, not 'somewhere'"),
+        ("count = 1 ± -1", 25, "a tolerance is not negative, not -1"),
         ('terminal has "x"', 22, "expected how the terminal is matched (contains, is), not 'has'"),
         (
             'terminal contians "x"',
@@ -255,7 +255,7 @@ def test_a_bad_directive_is_an_error_at_its_line_and_column(directive: str, colu
     ],
 )
 def test_a_bad_expectation_is_an_error_at_its_line_and_column(sentence: str, column: int, message: str) -> None:
-    """As a bad directive: the first word of the sentence is at column 13, the ``@`` at 5."""
+    """At the word at fault, a value refused whole too: the first word of the sentence is at column 13."""
     assert errors(f"REM @expect {sentence}\n") == [ScenarioError("program", 1, message, column)]
 
 

@@ -26,7 +26,10 @@ def main(argv: list[str] | None = None) -> int:
     if args.compact:
         write_compact(DATA)
         return 0
-    outputs = build(args.seeds, args.spec)
+    try:
+        outputs = build(args.seeds, args.spec)
+    except OSError as error:  # a checkout not beside ../shared: say which file, not a traceback
+        parser.error(f"cannot read {error.filename}: {error.strerror} (give --seeds DIR and --spec DIR)")
     if args.check:
         stale = differing(outputs, DATA)
         for name in stale:

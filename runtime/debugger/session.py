@@ -137,6 +137,9 @@ class Session:
                 raise RequestError(f"{command!r} is not supported by mint-dap")
             if not isinstance(arguments, dict):
                 raise RequestError("the request's arguments are not an object")
+            thread = arguments.get("threadId", THREAD_ID)
+            if type(thread) is not int or thread != THREAD_ID:  # DAP: a request for an unknown thread fails
+                raise RequestError(f"there is no thread {thread!r}: the program is thread {THREAD_ID}")
             body = handler(arguments)
         except (RequestError, LaunchError, EvaluationError, NotSettable) as error:
             self.respond(request, None, str(error))

@@ -95,6 +95,8 @@ def main() -> None:
     options.add_argument("--repeat", type=int, default=11)
     options.add_argument("--names", type=int, default=500, help="variables and arrays of both programs")
     arguments = options.parse_args()
+    if arguments.lines < 2 * arguments.names + 12:  # the declarations would push the loop's header past the cut
+        options.error(f"--lines {arguments.lines} leaves no room for the loop after --names {arguments.names}")
     mint = mint_program(arguments.lines, names=arguments.names)
     texts = {
         _REFERENCE: python_program(arguments.lines, names=arguments.names),

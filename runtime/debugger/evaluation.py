@@ -85,6 +85,17 @@ class ExpressionReader:
                 raise EvaluationError(f"column {span.start - len(_HOST) + 1}: {mint_error(2003, span, detail).message}")
         return item.value  # type: ignore[return-value]
 
+    def assigns(self, text: str) -> bool:
+        """Whether ``text`` read as a line of the program is an assignment (``n = 5``, ``SPEED.0 = 10``),
+        whose ``=`` an expression would read as a comparison."""
+        document = parse(text, self.dialect, controller=self.controller)
+        statements = document.placed[0].syntax.statements if document.placed and not document.diagnostics else ()
+        if len(statements) != 1:
+            return False
+        statement = statements[0]
+        writes = isinstance(statement, n.KeywordStatement | n.FunctionStatement) and statement.values is not None
+        return writes or isinstance(statement, n.Assignment)
+
 
 class Evaluator:
     """Compiles and evaluates expressions against one run of the program (a re-run needs a new one)."""

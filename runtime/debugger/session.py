@@ -366,6 +366,11 @@ class Session:
             keys = typed.group(1).replace("\\r", "\r").replace("\\n", "\n")
             execution.intervene(f"typed {text.strip()}", lambda controller: controller.terminal.type_keys(keys))
             return {"result": f"typed {len(keys)} key{'' if len(keys) == 1 else 's'}", "variablesReference": 0}
+        if arguments.get("context") == "repl" and execution.evaluator.reader.assigns(text):
+            raise EvaluationError(
+                f"{text.strip()} is an assignment, which the debug console does not run: it evaluates expressions; "
+                "set a variable in the Variables view (setVariable)"
+            )
         return {"result": shown(execution.evaluator.evaluate(text)), "variablesReference": 0}
 
     def cont(self, arguments: dict[str, Any]) -> dict[str, Any]:

@@ -168,3 +168,15 @@ class ParseErrorsInOneLine(logging.Filter):
             record.msg, record.args = "unreadable message: %s", (record.exc_info[1],)
             record.exc_info, record.exc_text = None, None
         return True
+
+
+class DecodeErrorsInOneLine(logging.Filter):
+    """pygls logs params it cannot decode with its converter's traceback before the request is answered
+    with ``InvalidParams``; the error is the client's, and the exception's own line says what was wrong."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        if record.msg == "Unable to deserialize message\n%s" and record.args:
+            lines = [line.strip(" |") for line in str(record.args[0]).splitlines()]
+            said = [line for line in lines if ": " in line and line.split(":")[0].endswith(("Error", "Exception"))]
+            record.msg, record.args = "undecodable message: %s", (said[-1] if said else lines[-1],)
+        return True

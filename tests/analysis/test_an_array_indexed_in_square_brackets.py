@@ -44,7 +44,7 @@ def _error_3007(source: str) -> mintlang.Diagnostic:
     return error
 
 
-@pytest.mark.parametrize("source", ["DIM arr(5)\narr[2] = 3\n", "DIM arr(5)\nPRINT arr.2\n"])
+@pytest.mark.parametrize("source", ["DIM arr(5)\narr[2] = 3\n", "DIM arr(5)\nPRINT arr[2]\n"])
 def test_the_error_says_where_an_index_goes_and_offers_no_keyword_that_takes_no_axes(source: str) -> None:
     """ARR is most like ERR, which is read alone (``v = ERR``): respelling ``arr[2] = 3`` as ``ERR[2] = 3``
     would be no fix, so neither the message nor a fix offers it."""

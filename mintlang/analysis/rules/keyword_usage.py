@@ -51,6 +51,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             use.use,
             has_arguments,
             addressed=addressed,
+            dot=addressed and ref.selector is not None and ref.selector.dot,
             dialect=scope.dialect,
         )
         if verdict is not None:
@@ -70,10 +71,18 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             yield Finding(unit, mint_error(3007, statement.span, detail, fixes=fixes))
 
 
-def _not_a_keyword(word: str, controller: Controller, dialect: Dialect, *, addressed: bool = False) -> str:
-    """Error 3007's detail, with the keyword ``word`` resembles if one does; a word written with axes or a
-    channel (``arr[2]``, ``arr.2``) that resembles none that takes them is told where an index goes."""
+def _not_a_keyword(
+    word: str, controller: Controller, dialect: Dialect, *, addressed: bool = False, dot: bool = False
+) -> str:
+    """Error 3007's detail, with the keyword ``word`` resembles if one does; a word written with axes
+    (``arr[2]``) that resembles none that takes them is told where an index goes. A dot is how a keyword
+    names a channel (``ADC.1``, 000:701-705), not an index: ``ANALOGIN.3`` is told that, not of arrays."""
     meant = _meant(word, controller, dialect, addressed=addressed)
+    if meant is None and dot:
+        return (
+            f"'{word}' is not a keyword, so its dot addresses no channel or axis (a dot follows a keyword: "
+            "ADC.1 reads analog input 1)"
+        )
     if meant is None and addressed:
         return (
             f"'{word}' is not a keyword (an array is indexed in round brackets, {word}(index); square brackets "
@@ -109,6 +118,7 @@ def _verdict(
     has_arguments: bool,
     *,
     addressed: bool,
+    dot: bool,
     dialect: Dialect,
 ) -> tuple[int, str] | None:
     """What is wrong with this use of a keyword, if anything (the same for every such use: cached): a word
@@ -117,5 +127,5 @@ def _verdict(
     if keyword is None:
         if dialect.modern and successor(spelling.upper(), profile(controller)) is not None:
             return None  # an old v3 keyword: the v3-keyword rule names its replacement
-        return 3007, _not_a_keyword(spelling, controller, dialect, addressed=addressed)
+        return 3007, _not_a_keyword(spelling, controller, dialect, addressed=addressed, dot=dot)
     return refusal(keyword, controller, dialect, use, has_arguments=has_arguments)

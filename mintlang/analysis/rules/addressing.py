@@ -184,6 +184,9 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
     if keyword.one_value_a_write:  # OUT.1 = 1,0: a channel keyword takes one value, with or without its channel
         yield from one_value(use, keyword.name)
     if use.keyword.selector is None and use.keyword.channel is None:
+        if missing := _unaddressed(keyword):
+            yield Finding(use.unit, mint_error(2001, use.keyword.span, f"{missing} is missing: {_layout(keyword)}"))
+            return
         # Nothing addressed: the default axes, whatever AXES made them, are at most the controller's
         # (000:572, 605-606, #2017 at 19047); a circle's three values go to two of them.
         if keyword.addressing is Addressing.AXIS and keyword.name not in CIRCLES:
@@ -336,7 +339,7 @@ def _indices(use: KeywordUse, keyword: Keyword, scope: LineScope) -> Iterator[Fi
     selector = use.keyword.selector
     if not keyword.indices or selector is None:
         return
-    layout = keyword.formats[0].split("=")[0].strip() if keyword.formats else keyword.name
+    layout = _layout(keyword)
     if selector.indices < len(keyword.indices):
         missing = " and ".join(keyword.indices[selector.indices :])
         yield Finding(use.unit, mint_error(2001, selector.span, f"the {missing} after the axes is missing: {layout}"))
@@ -359,6 +362,22 @@ def _indices(use: KeywordUse, keyword: Keyword, scope: LineScope) -> Iterator[Fi
             available = _held(banks, "bank", "banks")
             detail = f"{keyword.name} bank {number} does not exist on {scope.controller.title} ({available})"
             yield Finding(use.unit, mint_error(3, item.span, detail))
+
+
+def _layout(keyword: Keyword) -> str:
+    """The keyword as its first format addresses it: ``MOVEOUT(axis, bank)``."""
+    return keyword.formats[0].split("=")[0].strip() if keyword.formats else keyword.name
+
+
+def _unaddressed(keyword: Keyword) -> str:
+    """What a MintMT keyword written bare leaves out, which no default stands for ("" when nothing): the
+    indices after its axes (``MOVEOUT = 7``, MT-22) or, where every format names it, its one channel
+    (``OUTX = 1``: OUTX is one output, 004:148, never v4's bank ``OUT``)."""
+    if keyword.indices:
+        return f"the {' and '.join(keyword.indices)} after the axes"
+    if keyword.formats and all(f"{keyword.name}(channel)" in layout for layout in keyword.formats):
+        return "the channel"
+    return ""
 
 
 def values_for_axes(use: KeywordUse, axes: int) -> Iterator[Finding]:

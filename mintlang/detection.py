@@ -45,8 +45,9 @@ _CLOSERS = frozenset({TokenKind.ENDL, TokenKind.ENDIF, TokenKind.ENDEVENT, Token
 # lexing every line cost most of a parse, which the migrator paid before reading anything.
 _MAY_SHOW = re.compile(f"[{_QUOTES}(]|end[ \\t]|event|startup", re.IGNORECASE)
 # what a line declaring an array holds, DIM OFFLINE adc(4) too: a match only makes the editor read
-# the whole text again, so it may match more
-_DIM = re.compile(r"\bdim\b.*\(", re.IGNORECASE)
+# the whole text again, so it may match more; no word boundary, as the lexer reads ``MOVER.0DIM a(2)``
+# as a number before the DIM
+_DIM = re.compile(r"dim.*\(", re.IGNORECASE)
 _LINE_END = re.compile(r"\r\n|\r|\n")  # as ``split_lines`` ends a line
 
 

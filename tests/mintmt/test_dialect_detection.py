@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 
 from mintlang.detection import MintMTForm, detect_dialect, detect_dialect_after, first_mintmt_form
@@ -113,6 +113,10 @@ _TEXTS = st.lists(_LINES, max_size=8).map("\n".join)
 @given(
     first=_TEXTS,
     edits=st.lists(st.tuples(st.floats(0, 1), st.integers(0, 12), _LINES | st.sampled_from(["\n", "\r", "'", "("]))),
+)
+@example(  # a DIM typed straight after a number: the lexer reads it, a word boundary would not
+    first="PRINT 1\nPRINT 1\nPRINT 1\nPRINT 1\nPRINT 1\nMOVER(0) = 10",
+    edits=[(0.0, 2, "MOVER.0 = 10"), (0.125, 0, "DIM mover(2)")],
 )
 def test_detecting_after_each_edit_from_the_last_text_is_detecting_afresh(
     first: str, edits: list[tuple[float, int, str]]

@@ -104,7 +104,7 @@ def _explain(context: click.Context, _parameter: click.Parameter, code: str | No
 
 
 @click.command(context_settings=HELP_OPTIONS, epilog=EXIT_STATUS)
-@click.argument("paths", nargs=-1, required=True, type=click.Path(path_type=Path))
+@click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
 @version_option("mint check")
 @click.option(
     "--explain",
@@ -179,11 +179,13 @@ def check(
 ) -> None:
     """Check Mint programs for the errors the controller finds, and more.
 
-    PATHS are programs (.mnt), configuration files (.cfg) and directories, searched for programs; - reads the
-    program from standard input. Each program is checked with the configuration file beside it, and each file
-    under the nearest mint.toml or pyproject.toml [tool.mint] above it; the options here win over that file.
+    PATHS are programs (.mnt), configuration files (.cfg) and directories, searched for programs (the current
+    directory if none is given); - reads the program from standard input. Each program is checked with the
+    configuration file beside it, and each file under the nearest mint.toml or pyproject.toml [tool.mint] above
+    it; the options here win over that file.
     """
     started = time.perf_counter()
+    paths = paths or (Path(),)  # as ruff and mint test do
     refuse_quiet_and_verbose(quiet, verbose)
     if statistics and output_format not in ("text", "json"):
         raise click.UsageError(f"--statistics is written as text or json, not {output_format}")

@@ -92,9 +92,12 @@ def selector(text: str) -> str:
     E2000 to E2021, ``E00`` the run-time errors below 100. The short spelling of an
     error is its alias only where it begins no code (``E17`` is E0017, ``E108``
     E0108); so ``E2``, ``E3``, ``E20`` and ``E30`` stay prefixes (write ``E0002``).
+    ``ALL`` is every code, as in ruff: the empty prefix.
     Raises ValueError for an entry that selects nothing: a typo would hide findings.
     """
     code = text.strip().upper()
+    if code == "ALL":
+        return ""
     if any(name.startswith(code) for name in known_codes()):
         return code
     alias = _short_form(code)

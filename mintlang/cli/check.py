@@ -61,7 +61,7 @@ SELECT_HELP = (
     "Only these codes or code prefixes; comma-separated or repeated. Default: E,W (the hints need --select I)."
     " Errors have four digits, as the controller prints them: a prefix selects by them (E2 is E2000-E2021, E00"
     " the errors below 100). The manual's short spelling names one error where it begins no code (E17 is E0017);"
-    " E2, E3, E20 and E30 are prefixes: write E0002."
+    " E2, E3, E20 and E30 are prefixes: write E0002. ALL is every code."
 )
 
 EXIT_STATUS = """\b

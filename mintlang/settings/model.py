@@ -200,7 +200,8 @@ class FileSettings:
 
 
 def _listed(codes: tuple[str, ...] | None, default: tuple[str, ...] = ()) -> str:
-    return ", ".join(codes if codes is not None else default) or "none"
+    """The selectors as written: ``ALL`` for the empty prefix ``--select ALL`` makes."""
+    return ", ".join(code or "ALL" for code in (codes if codes is not None else default)) or "none"
 
 
 def _pairing_shown(pattern: str | None) -> str:

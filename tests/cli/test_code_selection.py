@@ -68,3 +68,30 @@ def test_the_help_says_how_prefixes_and_short_spellings_combine() -> None:
     help_text = " ".join(CliRunner().invoke(main, ["check", "--help"]).output.split())
     assert "E2 is E2000-E2021" in help_text
     assert "E17 is E0017" in help_text
+
+
+@pytest.mark.parametrize(
+    ("options", "codes"),
+    [
+        ((), []),  # I201 is not among the codes checked by default (README, "Selecting codes")
+        (("--select", "ALL"), ["I201"]),  # every code, as ruff's ALL
+        (("--select", "all"), ["I201"]),
+        (("--select", "ALL", "--ignore", "I"), []),
+    ],
+)
+def test_select_all_checks_every_code(tmp_path: Path, options: tuple[str, ...], codes: list[str]) -> None:
+    path = tmp_path / "hint.mnt"
+    path.write_text("PRINT POS[1]\n", encoding="utf-8")
+    result = CliRunner().invoke(main, ["check", "--format", "json", *options, str(path)])
+    assert result.exit_code == 0, result.output
+    assert [record["code"] for record in json.loads(result.stdout)] == codes
+
+
+def test_show_settings_names_all_as_written(tmp_path: Path) -> None:
+    path = tmp_path / "hint.mnt"
+    path.write_text("PRINT 1\n", encoding="utf-8")
+    result = CliRunner().invoke(main, ["check", "--select", "ALL", "--show-settings", str(path)])
+    assert result.exit_code == 0, result.output
+    assert [line.split()[:2] for line in result.stdout.splitlines() if line.split()[:1] == ["select"]] == [
+        ["select", "ALL"]
+    ]

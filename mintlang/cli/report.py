@@ -41,6 +41,7 @@ class FileReport:
 
 
 _STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.INFO: "bold cyan"}
+_FIX_KIND = {True: "fix", False: "unsafe fix"}  # as ``--fix`` takes it: unasked, or with ``--unsafe-fixes``
 _CONTEXT = 60  # characters shown either side of the marked text on a long line (and twice that marked)
 # Control characters of the source are shown as their pictures (one cell each), never sent to the terminal.
 _VISIBLE = {code: chr(0x2400 + code) for code in range(0x20)} | {0x7F: "\u2421", ord("\t"): " "}
@@ -119,7 +120,9 @@ def render_text(
                 f"  {palette.paint('blue', f'{line} |')} {shown}\n"
                 f"  {gutter} {bar} {' ' * before}{palette.paint(style, '^' * max(1, marked))}\n"
             )
-            frames.extend(f"  {gutter} {equals} fix: {_visible(fix.title)}\n" for fix in diagnostic.fixes)
+            frames.extend(
+                f"  {gutter} {equals} {_FIX_KIND[fix.safe]}: {_visible(fix.title)}\n" for fix in diagnostic.fixes
+            )
             frames.append("\n")
             if len(frames) >= _FRAMES_WRITTEN_AT_ONCE:
                 stream.write("".join(frames))

@@ -68,6 +68,9 @@ class Dispatch:
     highest_input_first: bool = False  # Mint v3: #IN7 before #IN0 (001:2574-2583)
     inputs_interrupt_inputs: bool = False  # Mint v3: another input's handler pre-empts a running #INx (001:2548-2549)
     onerror_repeats: bool = True  # #ONERROR runs again while an axis error stays latched (AX-7); v3: once per error
+    # an input without a handler is pending in IPEND and, enabled, holds back the events below it (000:5057-5059,
+    # 12625-12630); the v3 guide says neither, and its triggered moves use inputs without handlers (001:4211-4225)
+    unhandled_inputs_pend: bool = True
 
 
 NEXTMOVE = Dispatch(
@@ -131,6 +134,14 @@ class Events:
         self._pending[kind].add(number)
         self.pending |= self.dispatch.bits[kind]
 
+    def raise_input(self, number: int) -> None:
+        """Input ``number``'s event: pending for its ``#INx``; without one, its IPEND bit is set until written
+        clear (000:12621-12623) and, while IMASK enables it, holds back every lower event (000:5057-5059)."""
+        if self.has_handler(EventClass.INPUT, number):
+            self.raise_event(EventClass.INPUT, number)
+        elif self.dispatch.unhandled_inputs_pend:
+            self.inputs_set_unhandled |= 1 << number
+
     def is_pending(self, kind: EventClass) -> bool:
         return bool(self._pending[kind])
 
@@ -168,15 +179,18 @@ class Events:
     def take(self, running_rank: int | None) -> tuple[int, int] | None:
         """The (rank, handler pc) to call now, given the rank of the handler running (None: the program)."""
         dispatch = self.dispatch
+        holding = self._input_holding_back()
         for rank, kind in enumerate(dispatch.order):
             numbers = self._pending[kind]
-            if not numbers or kind in self.disabled:
+            if kind in self.disabled or not (numbers or (kind is EventClass.INPUT and holding is not None)):
                 continue
             nested = rank == running_rank and kind is EventClass.INPUT and dispatch.inputs_interrupt_inputs
             if running_rank is not None and not nested and (rank >= running_rank or (not dispatch.preemptive and rank)):
                 return None  # wait for the running handler (only #ONERROR interrupts without pre-emption)
             running = self._running_numbers.get(rank, []) if nested else []
-            for number in sorted(numbers, reverse=kind is EventClass.INPUT and dispatch.highest_input_first):
+            for number in sorted(numbers, key=self._input_priority if kind is EventClass.INPUT else None):
+                if kind is EventClass.INPUT and holding is not None and self._input_priority(number) > holding:
+                    break  # below the enabled input without a handler
                 if (kind is EventClass.INPUT and not self.imask >> number & 1) or number in running:
                     continue  # masked, or its own handler runs: it waits for the RETURN
                 numbers.discard(number)
@@ -188,9 +202,21 @@ class Events:
                         self._onerror_entries += 1
                     return rank, handler
             self._refresh()
-            if nested:
+            if nested or (kind is EventClass.INPUT and holding is not None):
                 return None
         return None
+
+    def _input_priority(self, number: int) -> int:
+        """Where input ``number``'s event ranks among the inputs', 0 highest: ``#IN0`` first (v3: the highest)."""
+        return -number if self.dispatch.highest_input_first else number
+
+    def _input_holding_back(self) -> int | None:
+        """The priority of the highest input IMASK enables that is pending without a handler, which holds back
+        the events below it (000:5057-5059); None when there is none, or while input events are disabled."""
+        enabled = self.inputs_set_unhandled & self.imask
+        if not enabled or EventClass.INPUT in self.disabled:
+            return None
+        return min(self._input_priority(number) for number in range(enabled.bit_length()) if enabled >> number & 1)
 
     def handler_returned(self, rank: int) -> None:
         kind = self.dispatch.order[rank]

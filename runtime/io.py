@@ -91,8 +91,8 @@ class DigitalIO:
         raising = edges | (active & ~self.edge_mode)  # level inputs raise #INx every tick they are active
         number = 0
         while raising:
-            if raising & 1 and events.has_handler(EventClass.INPUT, number):
-                events.raise_event(EventClass.INPUT, number)
+            if raising & 1:
+                events.raise_input(number)
             raising >>= 1
             number += 1
 

@@ -29,6 +29,7 @@ DISPATCH = Dispatch(
     highest_input_first=True,
     inputs_interrupt_inputs=True,
     onerror_repeats=False,
+    unhandled_inputs_pend=False,
 )
 _RESERVED = {"ONERROR": "ONERROR", "STOP": "STOP", "FASTPOS": "FASTIN"} | {f"IN{n}": f"IN{n}" for n in range(8)}
 

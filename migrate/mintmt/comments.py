@@ -1,9 +1,8 @@
 """``REM text`` becomes ``' text``: MintMT's comment, at the start of a line or after code (004, 002).
 
 Only the word ``REM`` is replaced, so the comment's text and the spacing after it
-stay as they were. Two kinds of comment keep their ``REM``, because a tool reads
-them by that word: ``REM mint: ignore[...]`` (the checker's suppressions) and the
-migrator's own ``REM MIGRATE:`` markers (MT-19).
+stay as they were; the checker reads its suppressions after either (``' mint: ignore[...]``).
+The migrator's own ``REM MIGRATE:`` markers keep their ``REM``: it reads them by that word (MT-19).
 """
 
 from __future__ import annotations
@@ -17,7 +16,7 @@ from mintlang.migrate.mintmt.source import Action, Rewrite, Source
 ID = "MT-COMMENT"
 SUMMARY = "REM comments become ' comments"
 
-_KEPT = re.compile(r"REM\s+(?:mint:|MIGRATE:)", re.IGNORECASE)
+_KEPT = re.compile(r"REM\s+MIGRATE:", re.IGNORECASE)
 
 
 def find(source: Source) -> Iterator[Action]:

@@ -1,5 +1,7 @@
 """Suppression comments: ``REM mint: ignore[W103]`` on a line, ``REM mint: ignore-file[W103]`` in a file.
 
+MintMT's ``'`` opens a comment as ``REM`` does, and carries a directive too (``' mint: ignore[W103]``).
+
 A comment silences the codes it names on its own line (after a statement,
 ``DIM x : REM mint: ignore[W103]``) or, with ``ignore-file``, anywhere in its
 file. It names complete codes, comma-separated, in either spelling of an error
@@ -29,8 +31,10 @@ if TYPE_CHECKING:
 
 UNUSED_SUPPRESSION = "W117"
 
-# From the REM that starts the comment: the directive must be the comment's first words.
-_DIRECTIVE = re.compile(r"REM\s+mint:\s*ignore(?P<file>-file)?\[(?P<codes>[^\]]*)(?P<closed>\])?", re.IGNORECASE)
+# From the REM (MintMT: or the ') that starts the comment: the directive must be the comment's first words.
+_DIRECTIVE = re.compile(
+    r"(?P<opener>REM\s+|')\s*mint:\s*ignore(?P<file>-file)?\[(?P<codes>[^\]]*)(?P<closed>\])?", re.IGNORECASE
+)
 _ENTRY = re.compile(r"[^,\s]+")
 _MENTION = "mint:"
 
@@ -54,6 +58,7 @@ class Directive:
     line: Span
     statement_end: int  # where the statements before the comment end (its start on a line of its own)
     closed: bool = True  # whether a ``]`` ends its list; one that does not names no code
+    opener: str = "REM"  # what opens the comment: REM, or MintMT's '
 
     def names(self, code: str) -> bool:
         return any(entry.code == code for entry in self.entries)
@@ -67,6 +72,7 @@ class Directive:
             self.line.shifted(offset),
             self.statement_end + offset,
             self.closed,
+            self.opener,
         )
 
 
@@ -98,6 +104,7 @@ def directives(document: Document, start: int = 0, end: int | None = None) -> tu
                 line=Span(offset, offset + lexed.content_end),
                 statement_end=statement_end,
                 closed=closed,
+                opener=match["opener"].rstrip(),
             )
         )
     return tuple(found)
@@ -201,7 +208,7 @@ def _without_comment(directive: Directive) -> Edit:
     """The directive's removal: with the ``:`` and space before it after a statement; any text after it stays."""
     rest_of_line = directive.span.end < directive.line.end
     if rest_of_line:
-        return Edit(directive.span, "REM")  # REM mint: ignore[W103] because ... -> REM because ...
+        return Edit(directive.span, directive.opener)  # REM mint: ignore[W103] because ... -> REM because ...
     return Edit(Span(directive.statement_end, directive.span.end), "")
 
 
@@ -221,9 +228,10 @@ def suppression_fix(document: Document, offset: int, code: str, *, name_the_line
             separator = ", " if directive.entries else ""
             return Fix(title, (Edit(Span(end, end), f"{separator}{code}"),), safe=True)
     comment = f"REM mint: ignore[{code}]"
-    if lexed.comment_start >= 0:
+    if lexed.comment_start >= 0:  # the directive becomes the comment's first words, after its REM or '
         start = line_offset + lexed.comment_start
-        return Fix(title, (Edit(Span(start, start + 3), f"{comment}"),), safe=True)
+        opener = "'" if lexed.text.startswith("'", lexed.comment_start) else "REM"
+        return Fix(title, (Edit(Span(start, start + len(opener)), f"{opener} mint: ignore[{code}]"),), safe=True)
     content = lexed.text[: lexed.content_end].rstrip()
     end = line_offset + len(content)
     if not content.strip():

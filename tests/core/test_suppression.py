@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 
 from mintlang import check, check_application, parse
@@ -170,3 +172,31 @@ def test_after_an_edit_the_comments_above_and_below_it_silence_what_they_did() -
     assert unused_after(source.replace("notes", "longer notes")) == [("W103", 4)]  # c only
     assert unused_after(source.replace("DIM c", "DIM c : REM mint: ignore[W103]")) == []
     assert unused_after(source.replace("DIM b : REM mint: ignore[W103]", "DIM b")) == [("W103", 3), ("W103", 4)]
+
+
+# MintMT writes a comment with ' as well as REM (004's listings; mintlang/MINTMT.md MT-19): a directive
+# after either is read, and the fixes keep the comment's own opening.
+@pytest.mark.parametrize(
+    ("source", "left"),
+    [
+        pytest.param("Dim a ' mint: ignore[W103]\nDim b\n", [("W103", 2)], id="after-a-statement"),
+        pytest.param("Dim a 'mint: ignore[W103]\n", [], id="no-space"),
+        pytest.param("Dim a\nDim b\n' mint: ignore-file[W103]\n", [], id="whole-file"),
+        pytest.param("Dim a ' note mint: ignore[W103]\n", [("W103", 1)], id="not-the-first-words"),
+    ],
+)
+def test_a_mintmt_quote_comment_silences_as_rem_does(source: str, left: list[tuple[str, int]]) -> None:
+    assert sorted(found(source, dialect="mintmt")) == sorted(left)
+
+
+def test_the_removal_of_a_mintmt_quote_directive_keeps_the_quote_before_words_after_it() -> None:
+    source = "Print 1 ' mint: ignore[W103] why\n"
+    [diagnostic] = [d for d in check(source, dialect="mintmt") if d.code == "W117"]
+    assert fixed(source, diagnostic) == "Print 1 ' why\n"
+
+
+def test_ignoring_a_finding_on_a_line_with_a_quote_comment_keeps_the_comment() -> None:
+    source = "Dim total ' running sum\n"
+    [diagnostic] = check(source, dialect="mintmt")
+    fix = suppression_fix(parse(source, dialect="mintmt"), diagnostic.span.start, diagnostic.code)
+    assert fixed(source, replace(diagnostic, fixes=(fix,))) == "Dim total ' mint: ignore[W103] running sum\n"

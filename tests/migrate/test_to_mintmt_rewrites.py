@@ -15,6 +15,7 @@ COMMENTS = [
     pytest.param("REM\n", "'\n", id="empty"),
     pytest.param("REM a\r\nREM b\r\n", "' a\r\n' b\r\n", id="crlf"),
     pytest.param('REM @expect terminal is "1"\n', '\' @expect terminal is "1"\n', id="simulator-directive"),
+    pytest.param("DIM a REM mint: ignore[W103]\n", "DIM a ' mint: ignore[W103]\n", id="suppression-comment"),
 ]
 
 CHARACTERS = [
@@ -70,7 +71,6 @@ EVENTS = [
 
 UNCHANGED = [
     pytest.param("REMARK = 1\n", id="a-name-starting-with-rem"),
-    pytest.param("REM mint: ignore[W103]\n", id="suppression-comment-read-by-rem"),
     pytest.param('PRINT "REM, [0] and .0 in a string"\n', id="string"),
     pytest.param("DIM a\nSPEED.(a+1) = 5\n", id="dot-expression-round-brackets-take-no-expression"),
     pytest.param("DIM x\nx = REMOTEIN.2.65\n", id="two-dot-values"),

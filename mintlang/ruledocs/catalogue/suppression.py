@@ -7,7 +7,8 @@ from mintlang.ruledocs.model import Example, FixSafety, Group, RuleDoc
 GROUP = Group(
     "Suppression comments",
     "A REM comment can silence codes the author has looked at: `REM mint: ignore[W103]` on its line, "
-    "`REM mint: ignore-file[W103]` in its file. A suppression that silences nothing hides the next real "
+    "`REM mint: ignore-file[W103]` in its file (in MintMT, `' mint: ignore[W103]` too). A suppression that "
+    "silences nothing hides the next real "
     "finding, so it is reported.",
     (
         RuleDoc(

@@ -23,6 +23,7 @@ from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.events import EventClass
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.motion.axis import Axis
+from mintlang.runtime.motion.homing import still_homing
 from mintlang.runtime.motion.idle_masters import master_waited_on
 
 WALL_CHECK_EVERY = 256  # processed ticks between looks at the wall clock
@@ -405,7 +406,8 @@ class Simulator:
                 wall_check = processed + WALL_CHECK_EVERY
                 elapsed = time.perf_counter() - started
                 if limits.max_wall_s is not None and elapsed > limits.max_wall_s:
-                    vm.stop(StopReason.WALL_LIMIT, f"ran {elapsed:.1f} s of wall time")
+                    homing = "".join(f"; {axis}" for axis in still_homing(c.motion))
+                    vm.stop(StopReason.WALL_LIMIT, f"ran {elapsed:.1f} s of wall time{homing}")
                     break
             t = following
         return ended

@@ -89,6 +89,7 @@ class HomingMove:
         "creep_direction",
         "datum",
         "end",
+        "home_input",
         "index_active",
         "live",
         "mode",
@@ -109,11 +110,13 @@ class HomingMove:
         home: int,
         start: int,
         *,
+        home_input: int,
         switch_active: Callable[[], bool],
         index_active: Callable[[], bool],
         on_datum: Callable[[float], None],
     ) -> None:
         self.mode = MD_HOMING
+        self.home_input = home_input  # HOMEINPUT when HOME was written: the switch the cycle watches
         self.axes = (axis.number,)
         self.buffered = False
         self.live = True
@@ -140,6 +143,19 @@ class HomingMove:
     @property
     def phase(self) -> int:
         return PHASES[self.stage]
+
+    def waiting_for(self, has_index_pulse: bool) -> str | None:
+        """What the cycle still waits to see, for a run stopped while it searches; None past the searches."""
+        if self.stage is Stage.SEEK:
+            return f"seeks its home switch, input {self.home_input}, which has not turned active"
+        if self.stage is Stage.BACK_OFF:
+            return f"backs off its home switch, input {self.home_input}, which has not turned inactive"
+        if self.stage is not Stage.SEARCH_Z:
+            return None
+        if has_index_pulse:
+            return "searches for its encoder's index pulse"
+        axis = self.axis.number
+        return f"searches for its encoder's index pulse, which no scenario gives it (REM @sim index {axis} every N)"
 
     # ------------------------------------------------------------- Move protocol
 
@@ -273,6 +289,7 @@ class Homing:
                 axis,
                 int(value),
                 start,
+                home_input=channel,
                 switch_active=lambda channel=channel: motion.input_active(channel),
                 index_active=lambda axis=axis: motion.index_active(axis),
                 on_datum=lambda counts, number=axis.number: self.homepos.__setitem__(number, counts),
@@ -301,6 +318,19 @@ class Homing:
         self.motion.clock.changes_next_tick()
         home_input = int(axis.parameters["HOMEINPUT"])
         return float(home_input >= 0 and self.motion.input_active(home_input))
+
+
+def still_homing(motion: Motion) -> tuple[str, ...]:
+    """Each axis whose cycle is still searching, with what it waits for: why a run that hit a limit while
+    a PAUSE waits for the cycle to end may never have ended (a switch or an index no scenario gives)."""
+    found = []
+    for axis in motion.axes:
+        move = axis.move
+        if isinstance(move, HomingMove):
+            waiting = move.waiting_for(axis.number in motion.index_pulses)
+            if waiting is not None:
+                found.append(f"axis {axis.number} is still homing: it {waiting}")
+    return tuple(found)
 
 
 def register(table: KeywordTable, motion: Motion) -> None:

@@ -71,7 +71,15 @@ def writes_any(context: Context, names: Collection[str], running: bool = False) 
     for file, line, statement, keyword in keyword_refs(context, *wanted):
         if written(statement, keyword) and not (running and _never_runs(context, file, line, statement)):
             return True
-    return any(word in wanted for word in _assigned(context, wanted))
+    return writes_unplaced(context, wanted)
+
+
+@per_pass
+def writes_unplaced(context: Context, names: frozenset[str]) -> bool:
+    """Whether the application writes one of ``names`` where the v3 reader cannot tell the axes:
+    a v4-only keyword it reads as a variable (``HOMESPEED = 5``) or a statement it cannot parse
+    (``FOLERRORFATAL = 2;``, the M-REN rename of a fill over every default axis)."""
+    return any(word in names for word in _assigned(context, names))
 
 
 def _assigned(context: Context, names: frozenset[str]) -> Iterator[str]:

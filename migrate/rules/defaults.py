@@ -35,7 +35,7 @@ from mintlang.migrate.rules.addressed import (
     moved_axes,
     on_target,
     read_axes,
-    writes_any,
+    writes_unplaced,
 )
 from mintlang.migrate.rules.base import Action, Rule, keyword_refs, written
 from mintlang.migrate.rules.notes import after_configuration, prologue_notes
@@ -119,12 +119,13 @@ def relied_on(context: Context) -> Iterator[tuple[Default, tuple[int, ...]]]:
 
 def _set_on(context: Context, default: Default) -> tuple[int, ...] | None:
     """The axes the application writes the parameter on, or None when a write's axes are not
-    known (computed, or a write the v3 reader takes for a variable's): then it may set it on all.
+    known (computed, a write the v3 reader takes for a variable's or cannot parse, as the M-REN
+    rename of a fill: ``MFOLERR = 5;`` read as ``FOLERRORFATAL = 5;``): then it may set it on all.
     A write a constant IF condition keeps from running is none: the program never writes it (spec
     S-DEFAULTS); one that depends on the run (``IF IN1 THEN``) counts, as the spec asks only about
     programs that never write it."""
     axes = moved_axes(context, default.written_as, True)
-    if axes is None or (not axes and writes_any(context, default.written_as, True)):
+    if axes is None or writes_unplaced(context, default.written_as):
         return None
     return axes
 

@@ -119,3 +119,20 @@ SPEED_NOTE = "SPEED[0] = <value>; : REM v3 default 40000 (80000 in the CONFIG ta
 def test_a_write_that_never_runs_leaves_the_default_relied_on(write: str, reported: bool) -> None:
     # S-DEFAULTS covers programs that never write the parameter (spec S-DEFAULTS)
     assert (SPEED_NOTE in _notes(write + "MOVEA = 10 : GO\n")) is reported
+
+
+@pytest.mark.parametrize(
+    ("source", "keyword"),
+    [
+        pytest.param("MFOLERR = 100;\nMFOLERR.1 = 50\nMOVEA = 1,1 : GO\n", "FOLERRORFATAL", id="mfolerr"),
+        pytest.param("HMSPEED = 10;\nHMSPEED.1 = 20\nHOME = 0,0\n", "HOMESPEED", id="hmspeed"),
+        pytest.param("HS = 10;\nHS.1 = 20\nHOME = 0,0\n", "HOMESPEED", id="hs-abbreviation"),
+    ],
+)
+def test_a_renamed_fill_beside_a_write_on_one_axis_still_sets_every_axis(source: str, keyword: str) -> None:
+    # 'MFOLERR = 100;' sets every default axis (the ';' fill, v3:1109), axes 0 and 1 of AXES[0,1,2]
+    # (v3:1029-1033) that MOVEA = 1,1 and HOME = 0,0 use; once renamed, the v3 reader cannot place the
+    # fill on its axes, but the write on axis 1 beside it must not make axis 0 look unset
+    result = migrate(source, opt_in=["S-DEFAULTS-V3"])
+    assert not any(item.reason.startswith(keyword) for item in result.manual if item.rule == "S-DEFAULTS")
+    assert f"{keyword}[0] = 16000;" not in result.text

@@ -4,20 +4,27 @@ Read as v4, a v3 program keeps its v3 keywords (``HMSPEED``, ``CONTON``, ``#FAST
 MintMT rewrite would copy them into a file MintMT rejects on each of those lines. What shows v3 is
 what the v4 checker finds on such a word: a name v4 does not know (an undeclared variable, an
 unknown keyword, E3001/E3007) spelt as the full name of a v3 keyword v4 does not have or as a v3
-constant (``CONFIG = _servo``), or a v3 event (W102). An abbreviation is not enough (``ax`` is
-v3's AUX, and a likely v4 name), and a v4 program that declares a variable so named (``DIM conton``)
-gets no finding on it.
+constant (``CONFIG = _servo``), or a v3 event (W102); and such a name written with v3's ``;`` fill
+(``HMSPEED = 10;``), where the check stops on the ``;`` before it names the variable. An abbreviation
+is not enough (``ax`` is v3's AUX, and a likely v4 name), and a v4 program that declares a variable so
+named (``DIM conton``) gets no finding on it.
 """
 
 from __future__ import annotations
+
+from collections.abc import Collection
 
 import mintlang
 from mintlang.diagnostics import LineIndex, split_lines
 from mintlang.keyworddb import database
 from mintlang.migrate.context import MARKER_LINE
+from mintlang.migrate.rules.addressed import unparsed_write
 from mintlang.records import record
+from mintlang.syntax import nodes as n
 
 _UNKNOWN_NAME = frozenset({"E3001", "E3007"})
+_SYNTAX = "E2003"
+_NAMED = _UNKNOWN_NAME | {_SYNTAX}
 _V3_EVENT = "W102"
 
 
@@ -41,11 +48,22 @@ def v3_uses(source: str, config: str | None = None) -> V3Uses:
         lines = split_lines(text)
         for diagnostic in diagnostics:
             word = text[diagnostic.span.start : diagnostic.span.end]
-            if diagnostic.code == _V3_EVENT or (diagnostic.code in _UNKNOWN_NAME and _v3_only(word)):
+            if diagnostic.code == _SYNTAX:
+                word = _filled(index, text, diagnostic.span.start, analysis.model.symbols.variables.keys())
+            if diagnostic.code == _V3_EVENT or (diagnostic.code in _NAMED and _v3_only(word)):
                 above = index.position(diagnostic.span.start).line - 2  # the line above, counted from 0
                 found.append((word.upper(), above >= 0 and MARKER_LINE.match(lines[above]) is not None))
     words = tuple(dict.fromkeys(word for word, _ in found))
     return V3Uses(words, bool(found) and all(marked for _, marked in found))
+
+
+def _filled(index: LineIndex, text: str, error: int, declared: Collection[str]) -> str:
+    """The undeclared name a statement the check stopped in writes (``HMSPEED = 10;``: v4 takes the
+    name for a variable, which no ``;`` fill follows), or nothing."""
+    line = index.position(error).line
+    statement = text[index.line_start(line) : error].rsplit(":", 1)[-1]
+    word = unparsed_write(statement)
+    return "" if word is None or n.identity(word) in declared else word
 
 
 def _v3_only(word: str) -> bool:

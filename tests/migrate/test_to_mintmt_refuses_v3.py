@@ -32,6 +32,21 @@ def test_a_v3_constant_shows_v3() -> None:
     assert v3_uses("AXES[0,1]\nCONFIG = _servo, _servo\n").words == ("_SERVO",)
 
 
+@pytest.mark.parametrize(
+    ("source", "words"),
+    [
+        # the ';' fill of every default axis (001:633 'ACCEL = 500;', 001:1109): v4 reads a name the v4
+        # guide does not know as a variable, and a variable takes no fill, so the check stops at the ';'
+        pytest.param("HMSPEED = 10;\n", ("HMSPEED",), id="fill"),
+        pytest.param("x = 1 : GAIN = 2; : REM gains\n", ("GAIN",), id="fill-after-a-statement"),
+        pytest.param("DIM hmspeed\nhmspeed = 10;\n", (), id="a-declared-v4-variable-is-v4-s-own-mistake"),
+        pytest.param("DIM x\nx = 10;\n", (), id="a-v4-name"),
+    ],
+)
+def test_a_v3_keyword_written_with_a_fill_shows_v3(source: str, words: tuple[str, ...]) -> None:
+    assert v3_uses(source).words == words
+
+
 def test_a_v4_variable_named_like_a_v3_keyword_does_not_show_v3() -> None:
     assert v3_uses("DIM conton\nconton = 1\nPRINT conton\n").words == ()
 

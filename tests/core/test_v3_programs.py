@@ -154,3 +154,17 @@ def test_v3_reads_the_rest_of_a_protect_line_as_its_password(line: str, password
     (statement,) = document.placed[0].syntax.statements
     assert statement.arguments[0].name.text == password
     assert mintlang.check(source, dialect="v3") == []
+
+
+@pytest.mark.parametrize("source", ["JOG 5\n", "JOG\n", "SPEED\n", "MA 5\n"])
+def test_v3_a_parameter_written_as_a_command_is_found_as_the_run_stops_on_it(source: str) -> None:
+    # v3's formats give a parameter its value with '=' (JOG[.axis] = <expr>, 001:9326); a line that names it
+    # as a command stops mint-run --dialect v3 with "No expression", and the checker says so where it is written
+    (diagnostic,) = mintlang.check(source, dialect="v3")
+    assert (diagnostic.code, diagnostic.span.start) == ("E2005", 0)
+    assert "is no command in Mint v3" in diagnostic.message
+
+
+@pytest.mark.parametrize("source", ["GO\n", "STOP\n", "CANCEL.0\n", "HOME.0 = 0\n"])
+def test_v3_commands_and_assignments_stand_as_statements(source: str) -> None:
+    assert mintlang.check(source, dialect="v3") == []

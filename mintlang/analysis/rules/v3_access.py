@@ -4,7 +4,9 @@ The v3 reading is what mint-migrate starts from: a write to a keyword the v3
 guide ticks as read only (``FASTPOS.0 = 5``, 001:7956), a read of one it ticks
 as write only (``a = FLY``, "Write only", 001:13073-13080) or a read of a command
 (``a = STOP``, "Read only or Command", 001:13083-13094) was already an error on
-the v3 controller (2000 / 2002, as v4 numbers them), so the migrator reports such
+the v3 controller (2000 / 2002, as v4 numbers them), and so was a parameter written as a
+command (``JOG 5``, ``SPEED``): the run stops on it with "No expression" (2005), the v3
+guide naming no error of its own for it, so the migrator reports such
 a line as broken in v3 already rather than as something the migration broke.
 The v3 guide's axis rules are checked here too, for the same reason and so that
 mint check finds the "Invalid axis" mint-run raises (001:13173-13184), and the "Missing parameter"
@@ -50,6 +52,9 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
                 yield Finding(use.unit, mint_error(2000, span, f"{name} is a command in Mint v3 and gives no value"))
             else:  # a = FLY (001:13073-13080)
                 yield Finding(use.unit, mint_error(2002, span, f"{name} can only be written in Mint v3, not read"))
+        elif use.use is Use.COMMAND and not keyword.command:  # JOG 5, SPEED: a parameter is given a value with =
+            detail = f"{name} is no command in Mint v3: give it a value with '=' ('{name} = …')"
+            yield Finding(use.unit, mint_error(2005, span, detail))
 
 
 def _axes(use: KeywordUse, keyword: V3Keyword | None) -> Iterator[Finding]:

@@ -108,6 +108,7 @@ from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_CONTROLLERS
 )
 @click.option(
     "--format",
+    "--output-format",
     "--report",
     "report_format",
     type=click.Choice(["json"]),

@@ -59,9 +59,11 @@ def list_option(*names: str, absent: tuple[str, ...] | None = (), **settings: ob
 
 
 def format_option(choices: Sequence[str], help_text: str = "How to write the report.") -> Callable[[F], F]:
-    """``--format``: the one spelling of an output format on every tool; the first choice is the default."""
+    """``--format``: the one spelling of an output format on every tool; the first choice is the default.
+    ``--output-format`` is ruff's name for it, accepted alike."""
     return click.option(
         "--format",
+        "--output-format",
         "output_format",
         type=click.Choice(list(choices)),
         default=choices[0],

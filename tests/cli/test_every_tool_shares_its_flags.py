@@ -154,6 +154,16 @@ def test_output_file_takes_the_report_of_every_tool(tmp_path: Path) -> None:
     assert json.loads((tmp_path / "run.json").read_text())["stopped"] == "end"
 
 
+@pytest.mark.parametrize("tool", ["mint check", "mint-migrate", "mint-run"])
+def test_output_format_is_ruffs_name_for_format(tool: str, tmp_path: Path) -> None:
+    program = write(
+        tmp_path, "v3.mnt" if tool == "mint-migrate" else "b.mnt", V3 if tool == "mint-migrate" else UNDECLARED
+    )
+    spelled = run(TOOLS[tool], program, "--output-format", "json")
+    assert spelled.stdout == run(TOOLS[tool], program, "--format", "json").stdout
+    assert spelled.returncode != 2 and "{" in spelled.stdout
+
+
 def test_an_output_file_that_cannot_be_written_is_one_line_and_2(tmp_path: Path) -> None:
     bad = write(tmp_path, "b.mnt", UNDECLARED)
     result = run(TOOLS["mint check"], bad, "--output-file", tmp_path / "no" / "such" / "dir.txt")

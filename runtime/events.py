@@ -214,7 +214,7 @@ class Events:
         """The priority of the highest input IMASK enables that is pending without a handler, which holds back
         the events below it (000:5057-5059); None when there is none, or while input events are disabled."""
         enabled = self.inputs_set_unhandled & self.imask
-        if not enabled or EventClass.INPUT in self.disabled:
+        if not enabled or EventClass.INPUT in self.disabled or not self.dispatch.unhandled_inputs_pend:
             return None
         return min(self._input_priority(number) for number in range(enabled.bit_length()) if enabled >> number & 1)
 

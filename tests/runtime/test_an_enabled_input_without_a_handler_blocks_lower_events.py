@@ -12,7 +12,9 @@ from __future__ import annotations
 import pytest
 
 from mintlang.runtime.comms.packets import encode_write
+from mintlang.runtime.run import run_source
 from mintlang.runtime.scenario.stimulus import HostPacket, Scenario
+from mintlang.runtime.simulation import Limits
 from tests.runtime.running import simulate
 
 # Input 1 turns active at 100 ms (a level input, as INPUTMODE leaves it) and has no handler;
@@ -94,3 +96,20 @@ calls = calls + 1
 RETURN
 """
     assert simulate(source).terminal == "0 10\n1 0\n"
+
+
+def test_mint_v3_holds_nothing_back_for_a_bit_ipend_sets() -> None:
+    # the v3 guide says nothing of it (runtime/BEHAVIOUR.md): IPEND = 128 sets #IN7's bit, the highest in v3
+    # (001:2574-2583), with no #IN7; input 3's falling edge at 150 ms still calls #IN3, and the bit stays (128)
+    source = """REM @sim input 3 1 at 100
+REM @sim input 3 0 at 150
+IPEND = 128
+WAIT = 300
+PRINT IPEND
+END
+#IN3
+PRINT "in3"
+RETURN
+"""
+    result = run_source(source, dialect="v3", limits=Limits(until_ms=60_000, max_wall_s=60.0))
+    assert result.terminal == "in3\n128\n"

@@ -3,7 +3,8 @@
 * A motion error on one axis aborts the others (``ERROR`` 1 there) and switches the
   common amplifier enable off (001:4995-5006, 5591, 7567) (V3-6).
 * ``CANCEL`` clears the errors and the moves, keeps the positions and ends contouring
-  (001:6577-6584); ``RESET`` also zeroes the positions, watches the limits again and
+  (001:6577-6584), but not a limit error whose switch is still open while the limits are
+  watched (001:6582: ``DISLIMIT`` clears that one); ``RESET`` also zeroes the positions, watches the limits again and
   clears the outputs, ``TIME`` and ``IMASK`` (001:2506, 11409-11444); ``DISLIMIT`` ignores
   the limits and cancels, ``ENLIMIT`` watches them again (001:7433-7470). Each switches
   the enable on again, so a handler can ``CANCEL : RETURN`` and move on (001:5037-5066).
@@ -20,11 +21,12 @@ from mintlang.runtime.dialects.v3.handlers import V4Handlers
 from mintlang.runtime.dialects.v3.parameters import POWER_UP, power_up
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import Channels, Command, KeywordTable, per_channel
-from mintlang.runtime.motion.axis import ER_ABORT, Axis
+from mintlang.runtime.motion.axis import ER_ABORT, ER_FWD_HARD, ER_REV_HARD, Axis
 from mintlang.runtime.motion.commands import Motion
 
 OUT_OF_RANGE = 3
 LIMITS_WATCHED, LIMITS_IGNORED = 1.0, 0.0  # LIMITMODE: crash stop (and the v3 abort), or ignore
+LIMIT_ERRORS = ER_FWD_HARD | ER_REV_HARD
 CONFIG_OFF, CONFIG_SERVO = 0, 1
 RATES = ("SPEED", "ACCEL", "DECEL", "ERRORDECEL", "HOMESPEED")  # what CONFIG restores (001:6931)
 _AMPLIFIERS_OFF = (  # they power up so (001:11409-11411), and a motion error or ENABLE = 0 switches them off
@@ -69,9 +71,22 @@ class V3Recovery:
             axis.enable()
 
     def _cancel(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        kept = [axis for axis in self.motion.addressed(channels) if self._on_its_limit(axis)]
         self.v4.command("CANCEL")(channels, arguments)
+        for axis in kept:  # one switch for both directions (V3-8): an axis at rest on it would trip the other one
+            axis.axiserror |= LIMIT_ERRORS
         self._recovered()
         return False
+
+    def _on_its_limit(self, axis: Axis) -> bool:
+        """A limit error whose switch is still open and watched, which CANCEL does not clear (001:6582)."""
+        p = axis.parameters
+        switches = (int(p["LIMITFORWARDINPUT"]), int(p["LIMITREVERSEINPUT"]))
+        return (
+            bool(axis.axiserror & LIMIT_ERRORS)
+            and p["LIMITMODE"] != LIMITS_IGNORED
+            and any(channel >= 0 and self.motion.input_active(channel) for channel in switches)
+        )
 
     def _reset(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         self.v4.command("RESET")(channels, arguments)

@@ -4,8 +4,9 @@
   common amplifier enable off (001:4995-5006, 5591, 7567) (V3-6).
 * ``CANCEL`` clears the errors and the moves, keeps the positions and ends contouring
   (001:6577-6584), but not a limit error whose switch is still open while the limits are
-  watched (001:6582: ``DISLIMIT`` clears that one); ``RESET`` also zeroes the positions, watches the limits again and
-  clears the outputs, ``TIME`` and ``IMASK`` (001:2506, 11409-11444); ``DISLIMIT`` ignores
+  watched (001:6582: ``DISLIMIT`` clears that one); ``RESET`` also zeroes the positions
+  and the encoders, watches the limits again and clears the outputs, ``TIME`` and
+  ``IMASK`` (001:2506, 11409-11444); ``DISLIMIT`` ignores
   the limits and cancels, ``ENLIMIT`` watches them again (001:7433-7470). Each switches
   the enable on again, so a handler can ``CANCEL : RETURN`` and move on (001:5037-5066).
 * ``CONFIG = _servo`` or ``_off`` issues a ``RESET`` and restores the rates (001:6931-6939);
@@ -90,6 +91,8 @@ class V3Recovery:
 
     def _reset(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         self.v4.command("RESET")(channels, arguments)
+        for axis in self.motion.addressed(channels):  # v3's RESET zeroes ENCODER with POS (001:11433, 11441)
+            axis.encoder_offset = float(axis.measured)
         self._limits(LIMITS_WATCHED)(channels, ())
         self._recovered()
         for reset in self.on_reset:

@@ -179,7 +179,7 @@ def build_controller(
     motion.on_error = lambda axis, bit: supervisor.error(axis, bit, clock.now)
     vm.on_fatal = abort_all
     vm.announce = terminal.announce if layer is not None else _shown_while_echoed(terminal.announce, inert)
-    events.errors_latched = lambda: any(axis.axiserror for axis in axes)
+    events.errors_latched = lambda: any(axis.axiserror & ~supervisor.smart.waiting(axis) for axis in axes)
 
     events.on_fastin_return = lambda number: setattr(system, "fast_armed", True)
     wired = profile.fast_inputs if profile.fast_inputs_are_digital_inputs else frozenset()

@@ -39,7 +39,9 @@ if TYPE_CHECKING:  # master.py builds on this module
 INVALID_AXIS = 2
 INVALID_CHANNEL = 4
 WRONG_CONFIGURATION = 11
-SMART_SOFT_LIMITS = 4
+SMART_SOFT_LIMITS = 4  # SOFTLIMITMODE's smart mode, NextMove only (000:16057-16069)
+NEXTMOVES = frozenset({Controller.NEXTMOVE_PCI, Controller.NEXTMOVE_PC, Controller.NEXTMOVE_BX})
+_SOFT_LIMITS = frozenset({"SOFTLIMITFORWARD", "SOFTLIMITREVERSE", "SOFTLIMITMODE"})
 CONFIG_OFF = 0
 _PROFILE_RATES = frozenset({"SPEED", "ACCEL", "DECEL"})
 # DECELTIME = 0: a change of speed in no time, as the largest rate a Mint number holds (binary32), so every ramp
@@ -86,6 +88,7 @@ class Motion:
         # whether an axis's live move stands still until its idle master moves (idle_masters.py): what is read of
         # it changes only after an event or the program moves that master, so its readers need no tick before
         self.stands_still: Callable[[Axis, int], bool] = lambda axis, now: False
+        self.soft_limits_changed: Callable[[Axis], None] = lambda axis: None  # a move held on a limit may go on
 
     def index_active(self, axis: Axis) -> bool:
         """The Z pulse of ``axis`` at its current physical count (active high, HM-8 RC)."""
@@ -500,14 +503,16 @@ class Motion:
 
         def write(channel: int | None, value: float) -> None:
             axis = addressing(channel)
-            if name == "SOFTLIMITMODE" and value == SMART_SOFT_LIMITS:
-                raise NotSimulated("SOFTLIMITMODE", "smart mode 4")
+            if name == "SOFTLIMITMODE" and value == SMART_SOFT_LIMITS and self.profile.controller not in NEXTMOVES:
+                raise NotSimulated("SOFTLIMITMODE", "smart mode 4 off a NextMove, which the guide does not describe")
             if name == "CONFIG":  # it calls DEFAULT for its axis; a value it refuses resets nothing (000:8481-8483)
                 check_range(name, value, axis.bounds[name], axis.number)
                 self.default((axis.number,), ())
             axis.set(name, value)
             if name in _PROFILE_RATES:
                 self.rates_changed(axis)
+            elif name in _SOFT_LIMITS:
+                self.soft_limits_changed(axis)
 
         return write
 

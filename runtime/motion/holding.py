@@ -26,7 +26,12 @@ class Held:
 
 def hold(motion: Motion, move: PlannedMove, tick: int, decel: float) -> Held:
     """Ramp ``move`` down at ``decel`` from ``tick`` on every axis running it, and keep it to resume."""
-    ramp = replace(move.stop(tick, decel), buffered=move.buffered, holds=move)
+    return hold_on(motion, move, move.stop(tick, decel))
+
+
+def hold_on(motion: Motion, move: PlannedMove, ramp: PlannedMove) -> Held:
+    """Run ``ramp``, a way to rest along ``move``'s path, on every axis running ``move``, and keep it to resume."""
+    ramp = replace(ramp, buffered=move.buffered, holds=move)
     for number in move.axes:
         axis = motion.axes[number]
         if axis.move is move:

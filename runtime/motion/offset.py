@@ -12,18 +12,15 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from mintlang.keyworddb.model import Controller
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
 from mintlang.runtime.motion.axis import MD_FOLLOW, MD_OFFSET, MOTION_IN_PROGRESS, Axis, Request
-from mintlang.runtime.motion.commands import Motion
+from mintlang.runtime.motion.commands import NEXTMOVES, Motion
 from mintlang.runtime.motion.flying import LockedMove
 from mintlang.runtime.motion.following import VelocityLockedMove
 from mintlang.runtime.motion.moves import Geometry, PlannedMove
 from mintlang.runtime.motion.profile import plan_move
 from mintlang.runtime.motion.superimposed import Offset
-
-NEXTMOVES = frozenset({Controller.NEXTMOVE_PCI, Controller.NEXTMOVE_PC, Controller.NEXTMOVE_BX})
 
 
 def offset(motion: Motion) -> Callable[[Channels | None, Values], bool]:

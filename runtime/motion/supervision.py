@@ -5,6 +5,8 @@ latched in ``AXISERROR``, the mode's default action runs at once and
 ``#ONERROR`` becomes pending. The modes share one table (``LIMITMODE``'s, as
 the spec recommends for the Advanced-only ones): 0 ignore, 1 crash stop and
 disable, 2 crash stop, 3 ramp down at ``ERRORDECEL``, 5 only call the handler.
+``SOFTLIMITMODE`` 4 stops a move on the limit before it is passed
+(``smart_limits.py``); what it cannot stop so is crash-stopped.
 """
 
 from __future__ import annotations
@@ -23,8 +25,9 @@ from mintlang.runtime.motion.axis import (
     Axis,
     wrap,
 )
-from mintlang.runtime.motion.commands import Motion
+from mintlang.runtime.motion.commands import SMART_SOFT_LIMITS, Motion
 from mintlang.runtime.motion.moves import next_profiler_tick
+from mintlang.runtime.motion.smart_limits import SmartLimits
 from mintlang.runtime.motion.stop_input import StopInputs
 
 IGNORE, CRASH_STOP_DISABLE, CRASH_STOP, ERROR_DECEL, CALL_HANDLER = 0, 1, 2, 3, 5
@@ -47,6 +50,8 @@ class Supervisor:
         self.raise_error = raise_error  # #ONERROR pending (or the end of the run without a handler)
         self.stop_inputs = stop_inputs
         self.stopping: list[Axis] = []  # ramping down at ERRORDECEL: #ONERROR waits until they are at rest
+        self.smart = SmartLimits(motion, raise_error)
+        motion.soft_limits_changed = self.smart.limits_changed
 
     def at_rest(self) -> None:
         """Make #ONERROR pending for error ramps that have ended (mode 3 calls it at rest, AX-13, AX-15)."""
@@ -64,6 +69,7 @@ class Supervisor:
                 self.error(axis, ER_FOLLOWING, tick)
             return
         status = ER_FOLLOWING if following else 0
+        smart = self.smart.check(axis, tick)
         forward = int(p["LIMITFORWARDINPUT"])
         reverse = int(p["LIMITREVERSEINPUT"])
         position = wrap(axis.demand - axis.position_offset)
@@ -89,7 +95,7 @@ class Supervisor:
                 status |= ER_STOP_INPUT
             self.stop_inputs.update(axis, active, tick)
         axis.status = status
-        fresh = status & ~axis.axiserror & ~ER_STOP_INPUT
+        fresh = status & ~axis.axiserror & ~ER_STOP_INPUT & ~(ER_FWD_SOFT | ER_REV_SOFT if smart else 0)
         if not fresh or not axis.enabled:  # a disabled axis shows its switches but latches nothing
             return
         bit = 1
@@ -105,7 +111,7 @@ class Supervisor:
         if mode == IGNORE:
             return
         axis.latch(bit)
-        if mode in (CRASH_STOP_DISABLE, CRASH_STOP) or (mode == ERROR_DECEL and axis.move is None):
+        if mode in (CRASH_STOP_DISABLE, CRASH_STOP, SMART_SOFT_LIMITS) or (mode == ERROR_DECEL and axis.move is None):
             self.motion.crash_group(axis)
             if mode == CRASH_STOP_DISABLE:
                 axis.disable()

@@ -30,6 +30,8 @@ class Comparison(StrEnum):
     NOT_EQUAL = "<>"
     AT_LEAST = ">="
     AT_MOST = "<="
+    ABOVE = ">"
+    BELOW = "<"
 
     def holds(self, actual: float, expected: float, tolerance: float) -> bool:
         match self:
@@ -41,6 +43,10 @@ class Comparison(StrEnum):
                 return actual >= expected - tolerance
             case Comparison.AT_MOST:
                 return actual <= expected + tolerance
+            case Comparison.ABOVE:
+                return actual > expected - tolerance
+            case Comparison.BELOW:
+                return actual < expected + tolerance
 
 
 @record

@@ -30,6 +30,8 @@ _COMPARISONS = {
     "not_equal": Comparison.NOT_EQUAL,
     "at_least": Comparison.AT_LEAST,
     "at_most": Comparison.AT_MOST,
+    "above": Comparison.ABOVE,
+    "below": Comparison.BELOW,
 }
 
 

@@ -18,12 +18,14 @@ from mintlang.runtime.scenario.problems import ScenarioFileError
 from tests.runtime.test_mint_test import _mint_test
 from tests.runtime.test_run_command import mint_run, write
 
+NOT_A_COMPARISON = "expected a comparison (=, <>, >=, <=, >, <), not '~'"
+
 
 @pytest.mark.parametrize(
     ("line", "column", "message"),
     [
-        pytest.param("REM @expect x >< 3", 15, "expected a comparison (=, <>, >=, <=), not '>'", id="two-operators"),
-        pytest.param("REM @expect x ~ 3", 15, "expected a comparison (=, <>, >=, <=), not '~'", id="unknown-operator"),
+        pytest.param("REM @expect x >< 3", 16, "expected a value to compare with as a number, not '<'", id="two-ops"),
+        pytest.param("REM @expect x ~ 3", 15, NOT_A_COMPARISON, id="unknown-operator"),
         pytest.param("REM @expect x = ", 16, "expected a value to compare with at the end", id="no-value"),
         pytest.param("REM @expect x", 14, "expected a comparison at the end", id="no-comparison"),
         pytest.param("REM @expect", 12, "expected a keyword or variable at the end", id="nothing-expected"),
@@ -31,7 +33,7 @@ from tests.runtime.test_run_command import mint_run, write
         pytest.param("REM @expect x = 3 ± big", 21, "expected a tolerance as a number, not 'big'", id="tolerance"),
         pytest.param("REM @expect x = 3 at soon", 22, "expected a time in ms as a whole number, not 'soon'", id="at"),
         pytest.param("REM @expect x = 3 extra", 19, "unexpected 'extra' at the end", id="a-word-too-many"),
-        pytest.param("GO.0 : REM @expect x >< 3", 22, "expected a comparison (=, <>, >=, <=), not '>'", id="after-GO"),
+        pytest.param("GO.0 : REM @expect x ~ 3", 22, NOT_A_COMPARISON, id="after-GO"),
         pytest.param("REM @sim plant 0 velamp fast", 25, "expected the value of k as a number, not 'fast'", id="sim"),
         pytest.param("REM @sim plant 0 ideal 3", 24, "unexpected '3': give parameters as name=value", id="sim-extra"),
         pytest.param("REM @expect GO = 1", 13, "GO is a command, not a value to expect", id="target"),
@@ -51,8 +53,8 @@ def test_the_column_is_that_of_the_word_at_fault(line: str, column: int, message
 
 
 def test_mintmt_s_quote_comment_is_counted_the_same() -> None:
-    _, problems = parse_directives("Dim x = 3\n' @expect x >< 3\n", dialect="mintmt")
-    assert [str(problem) for problem in problems] == ["program:2:13: expected a comparison (=, <>, >=, <=), not '>'"]
+    _, problems = parse_directives("Dim x = 3\n' @expect x ~ 3\n", dialect="mintmt")
+    assert [str(problem) for problem in problems] == [f"program:2:13: {NOT_A_COMPARISON}"]
 
 
 def test_mint_run_and_mint_test_print_it_as_file_line_column(tmp_path: Path) -> None:

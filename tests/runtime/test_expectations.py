@@ -85,6 +85,12 @@ def test_equality_without_tolerance_is_exact() -> None:
         ("count >= 4 ± 1", True),
         ("count <= 3", True),
         ("count <= 2", False),
+        ("count > 2", True),
+        ("count > 3", False),
+        ("count > 4 ± 1.5", True),
+        ("count < 4", True),
+        ("count < 3", False),
+        ("count < 2 ± 1.5", True),
     ],
 )
 def test_comparisons(sentence: str, held: bool) -> None:

@@ -147,6 +147,12 @@ def test_merge_puts_the_program_expectations_first() -> None:
 # ---------------------------------------------------------------- mistakes, with their lines
 
 
+def test_above_and_below_are_the_strict_comparisons(tmp_path: Path) -> None:
+    text = '[[expect]]\nwhat = "count"\nabove = 2\n\n[[expect]]\nwhat = "count"\nbelow = 9\n'
+    comparisons = [(e.comparison, e.value) for e in load_scenario(write(tmp_path, text)).expectations]
+    assert comparisons == [(Comparison.ABOVE, 2.0), (Comparison.BELOW, 9.0)]
+
+
 def test_an_empty_file_is_an_empty_scenario(tmp_path: Path) -> None:
     assert load_scenario(write(tmp_path, "# nothing yet\n")) == Scenario()
 
@@ -242,7 +248,7 @@ def test_a_misspelt_key_or_entry_is_named_with_the_word_meant(tmp_path: Path) ->
         (
             "[[expect]]\nwhat = 'POS.0'",
             2,
-            "[[expect]] needs one of equals, not_equal, at_least, at_most (it has 'what')",
+            "[[expect]] needs one of equals, not_equal, at_least, at_most, above, below (it has 'what')",
         ),
         (
             "[[expect]]\nwhat = 'POS.0'\nequals = 1\nat = 'start'",

@@ -172,6 +172,8 @@ def test_expect_compares_a_value_within_a_tolerance_at_the_end() -> None:
         ("count <> 3", Comparison.NOT_EQUAL, 0.0, None),
         ("count >= 3 at 1500", Comparison.AT_LEAST, 0.0, 1500),
         ("count <= 3 +- 1 at 20 ms", Comparison.AT_MOST, 1.0, 20),
+        ("count > 3 at 1500", Comparison.ABOVE, 0.0, 1500),
+        ("count < 3", Comparison.BELOW, 0.0, None),
     ],
 )
 def test_expect_comparisons(sentence: str, comparison: Comparison, tolerance: float, at_ms: int | None) -> None:

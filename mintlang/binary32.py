@@ -18,6 +18,14 @@ def rounded(value: float) -> float:
     return _FORMAT.unpack(_FORMAT.pack(value))[0]
 
 
+def holds(value: float) -> bool:
+    """Whether ``value`` is a number the controller can hold: finite, and within binary32's range once rounded."""
+    try:
+        return math.isfinite(rounded(value))
+    except OverflowError:
+        return False
+
+
 def exp(x: float) -> float:
     """``EXP(x)`` as the controller holds it; OverflowError when it is too large for a number."""
     return rounded(math.exp(x))

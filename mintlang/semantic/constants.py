@@ -91,8 +91,9 @@ def _bitwise(operator: str, a: float, b: float) -> float | None:
 
 
 def constant_integer(expression: n.Expression | None, dialect: Dialect = Dialect.V4) -> int | None:
-    """The value of a constant expression when it is a whole number."""
+    """The value of a constant expression when it is a whole number, and one the controller can hold: a literal
+    beyond a Mint number is error 3 already, and a rule naming the number it rounds to would misquote it."""
     value = constant_value(expression, dialect)
-    if value is None or value != int(value):
+    if value is None or not binary32.holds(value) or value != int(value):
         return None
     return int(value)

@@ -34,3 +34,10 @@ def test_an_element_outside_1_to_255_is_error_2016_at_the_element(
     source: str, expected: list[tuple[str, int, int]]
 ) -> None:
     assert placed_codes(source) == expected
+
+
+def test_an_element_too_large_for_a_mint_number_is_error_3_alone() -> None:
+    """The literal is beyond binary32 (000:714-716), error 3 where it is written; no element is named, for
+    the number the checker would name is its double-precision rounding, which the user never wrote."""
+    element = "1" + "0" * 39
+    assert placed_codes(f"DIM a\na = COMMS({element})\n") == [("E0003", 2, 11)]

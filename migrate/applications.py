@@ -146,7 +146,7 @@ def read(paths: tuple[Path, ...], config: Path | None) -> Found:
         if unread:  # the program named with --config: nothing else to migrate
             raise UsageError(unread[0].line)
         return Found([_application(found.files[0] if found.files else None, config)], [])
-    if not found.files:
+    if not found.files and not found.excluded:  # a path force-exclude leaves out is nothing to migrate, no error
         named = ", ".join(str(path) for path in paths)
         raise UsageError(unread[0].line if unread else f"no .mnt or .cfg files to migrate in {named}")
     partners = _partners(found.files)

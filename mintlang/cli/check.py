@@ -138,6 +138,21 @@ def _explain(context: click.Context, _parameter: click.Parameter, code: str | No
 @list_option("--select", absent=None, help=SELECT_HELP)
 @list_option("--extend-select", absent=None, help="Also these codes or code prefixes, besides those selected.")
 @list_option("--ignore", absent=None, help="Leave out these codes or code prefixes; comma-separated or repeated.")
+@list_option(
+    "--exclude",
+    absent=None,
+    metavar="GLOBS",
+    help="Leave these files and folders out of the folders searched, instead of the settings' exclude (by default"
+    " .git, .venv, build, dist, node_modules and other tools' folders); comma-separated or repeated.",
+)
+@list_option(
+    "--extend-exclude", absent=None, metavar="GLOBS", help="Leave these files and folders out too, besides exclude."
+)
+@click.option(
+    "--force-exclude/--no-force-exclude",
+    default=None,
+    help="Leave out the excluded paths even when named (as pre-commit names the files it checks).",
+)
 @click.option(
     "--statistics", is_flag=True, help="Count the findings of each code instead of showing each (text, json)."
 )
@@ -166,6 +181,9 @@ def check(
     select: tuple[str, ...] | None,
     extend_select: tuple[str, ...] | None,
     ignore: tuple[str, ...] | None,
+    exclude: tuple[str, ...] | None,
+    extend_exclude: tuple[str, ...] | None,
+    force_exclude: bool | None,
     statistics: bool,
     exit_zero: bool,
     stdin_filename: str | None,
@@ -197,8 +215,11 @@ def check(
         ignore=_codes(ignore, "--ignore"),
         config_path=config_path,
         no_config=no_config,
+        exclude=exclude,
+        extend_exclude=extend_exclude,
+        force_exclude=force_exclude,
     )
-    found = find(path for path in paths if path != _STDIN)
+    found = find((path for path in paths if path != _STDIN), overrides=layer)
     _configuration(config_path)  # a --config that cannot be read ends the command before any check
     if config_path is not None and (itself := program_as_own_configuration(found.files, config_path)) is not None:
         _fail(f"--config {config_path} is the program {itself} itself: name the configuration file")
@@ -220,6 +241,13 @@ def check(
         if output_format != "text" and not diff:  # a tool reading the report still gets one, with nothing in it
             with destination(output_file, _fail) as stream:
                 _write([], stream, output_format, statistics=statistics, quiet=quiet, color=color)
+        if found.excluded:  # pre-commit names files the project excludes: nothing to check, no failure (ruff's)
+            if not quiet:
+                click.echo(
+                    "mint check: nothing to check: force-exclude leaves out " + ", ".join(map(str, found.excluded)),
+                    err=True,
+                )
+            sys.exit(0)
         _fail("no .mnt files found in " + ", ".join(str(p) for p in paths))
 
     workers = jobs or all_cores()

@@ -4,15 +4,20 @@ No problem is skipped: a directory that cannot be read, a dangling link or a
 link loop below a named directory would otherwise leave programs unchecked (or
 unmigrated) without a word. ``find`` keeps each one to be reported while the
 other files are checked (or migrated).
+
+What the settings exclude (``exclude``, ``extend-exclude``) is left out of a
+walk, an excluded folder not entered; a path named is looked at unless
+``force-exclude`` is set, as ruff finds its files.
 """
 
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 
 from mintlang.records import record
+from mintlang.settings import Overrides, folder_settings, force_excluded
 from mintlang.source import NOT_TEXT, SourceFile
 
 PROGRAM_SUFFIXES = frozenset({".mnt"})
@@ -21,52 +26,80 @@ CONFIGURATION_SUFFIXES = frozenset({".cfg"})
 
 @record
 class Found:
-    """The files to look at, and the paths that could not be looked at (each error names its path)."""
+    """The files to look at, the paths that could not be looked at (each error names its path), and the paths
+    named that ``force-exclude`` left out."""
 
     files: list[Path]
     unreadable: list[OSError]
+    excluded: list[Path]
 
 
-def _programs_below(directory: Path, unreadable: list[OSError], suffixes: frozenset[str]) -> list[Path]:
+def walk(
+    directory: Path,
+    wanted: Callable[[str], bool],
+    overrides: Overrides | None = None,
+    onerror: Callable[[OSError], object] | None = None,
+) -> Iterator[tuple[str, list[str]]]:
+    """Each folder below ``directory`` (as ``os.walk`` lists it) with the names of its ``wanted`` files, less
+    what the settings of the folder exclude; an excluded folder is not entered."""
+    for folder, folders, names in os.walk(directory, onerror=onerror):
+        settings = folder_settings(Path(folder), overrides)
+        folders[:] = [name for name in folders if not settings.excludes(Path(folder, name))]
+        yield folder, [name for name in names if wanted(name) and not settings.excludes(Path(folder, name))]
+
+
+def _programs_below(
+    directory: Path, unreadable: list[OSError], suffixes: frozenset[str], overrides: Overrides | None
+) -> list[Path]:
     """The files below ``directory`` named with ``suffixes``, sorted; what could not be read is added to
     ``unreadable`` sorted by path as well, so the problems are reported in the order of the files."""
     found: list[Path] = []
     failed: list[OSError] = []
-    for folder, _, names in os.walk(directory, onerror=failed.append):
+
+    def wanted(name: str) -> bool:
+        return os.path.splitext(name)[1].lower() in suffixes
+
+    for folder, names in walk(directory, wanted, overrides, failed.append):
         for name in names:
             path = Path(folder, name)
-            if path.suffix.lower() in suffixes:
-                try:
-                    path.stat()  # a dangling link or a loop raises here
-                except OSError as error:
-                    failed.append(error)
-                    continue
-                found.append(path)
+            try:
+                path.stat()  # a dangling link or a loop raises here
+            except OSError as error:
+                failed.append(error)
+                continue
+            found.append(path)
     unreadable.extend(sorted(failed, key=lambda error: Path(str(error.filename))))
     return sorted(found)
 
 
-def find(paths: Iterable[Path], suffixes: frozenset[str] = PROGRAM_SUFFIXES) -> Found:
+def find(
+    paths: Iterable[Path], suffixes: frozenset[str] = PROGRAM_SUFFIXES, overrides: Overrides | None = None
+) -> Found:
     """Files named directly, and the ``.mnt`` files (``suffixes``) below named directories, sorted, each once
-    under the name it was first found by; and what failed.
+    under the name it was first found by, less what the settings (under ``overrides``) exclude; and what failed.
 
     A named ``.cfg`` file is checked as a configuration file on its own. A path that
     does not exist, a link loop or a folder that cannot be listed is an OSError
-    (FileNotFoundError for a missing path) naming the path, kept to be reported.
+    (FileNotFoundError for a missing path) naming the path, kept to be reported; a
+    path ``force-exclude`` leaves out is not looked at, as ruff does not.
     """
     files: list[Path] = []
     unreadable: list[OSError] = []
+    excluded: list[Path] = []
     for path in paths:
+        if force_excluded(path, overrides):
+            excluded.append(path)
+            continue
         try:
             path.stat()  # ELOOP, ENOTDIR and ENOENT say what is wrong; Path.exists() would hide them
         except OSError as error:
             unreadable.append(error)
             continue
-        files.extend(_programs_below(path, unreadable, suffixes) if path.is_dir() else [path])
+        files.extend(_programs_below(path, unreadable, suffixes, overrides) if path.is_dir() else [path])
     once: dict[object, Path] = {}  # a file named twice (a.mnt, ../src/a.mnt) would be fixed twice, the second refused
     for file in files:
         once.setdefault(identity(file), file)
-    return Found(list(once.values()), unreadable)
+    return Found(list(once.values()), unreadable, excluded)
 
 
 def identity(path: Path) -> object:

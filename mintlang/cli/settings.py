@@ -20,7 +20,16 @@ from click.core import ParameterSource
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
-from mintlang.settings import FileSettings, Given, Overrides, ProjectSettings, SettingsError, Table, project_for
+from mintlang.settings import (
+    FileSettings,
+    Given,
+    Overrides,
+    ProjectSettings,
+    SettingsError,
+    Table,
+    project_for,
+    relative_globs,
+)
 
 _SETTINGS_ERROR = 2
 _TYPED = (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)
@@ -46,8 +55,12 @@ def overrides(
     ignore: tuple[str, ...] | None,
     config_path: Path | None,
     no_config: bool,
+    exclude: tuple[str, ...] | None = None,
+    extend_exclude: tuple[str, ...] | None = None,
+    force_exclude: bool | None = None,
 ) -> Overrides:
-    """The options of ``mint check`` the user gave, as the layer above the settings file."""
+    """The options of ``mint check`` the user gave, as the layer above the settings file; the globs of
+    ``--exclude`` and ``--extend-exclude`` are relative to the current folder, as ruff reads them."""
     if no_config and config_path is not None:
         raise click.UsageError("--config names the configuration file and --no-config pairs none: give one")
     params = context.params
@@ -64,6 +77,13 @@ def overrides(
         ignore=Given(ignore, "--ignore") if ignore is not None else None,
         config_pairing=Given(None, "--no-config") if no_config else None,
         config=config,
+        exclude=Given(relative_globs(exclude, Path.cwd()), "--exclude") if exclude is not None else None,
+        extend_exclude=Given(relative_globs(extend_exclude, Path.cwd()), "--extend-exclude")
+        if extend_exclude is not None
+        else None,
+        force_exclude=Given(force_exclude, "--force-exclude" if force_exclude else "--no-force-exclude")
+        if force_exclude is not None
+        else None,
     )
 
 

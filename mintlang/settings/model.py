@@ -7,13 +7,19 @@ command line's replaces the file's, and the file's ``extend-select`` with it),
 ``extend-select`` adds to it, and every ``ignore`` applies, the file's and
 the command line's, as do the ``per-file-ignores`` whose glob matches the
 file: an ignore written in the project stays ignored whatever is selected.
+Folders are walked as ruff walks them: ``exclude`` (the tool folders by
+default; ``--exclude`` replaces it) and every ``extend-exclude`` leave out the
+files and folders their globs match, and ``force-exclude`` the paths named too.
 """
 
 from __future__ import annotations
 
+import os
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import field, replace
-from fnmatch import fnmatchcase
+from fnmatch import translate
+from functools import cache
 from pathlib import Path
 from typing import Generic, TypeVar
 
@@ -28,6 +34,7 @@ from mintlang.settings.files import Table
 T = TypeVar("T")
 DEFAULT = "default"
 TOOL_TABLES = ("run", "migrate")  # each tool's own options, read by the tool
+EXCLUDE_KEYS = ("exclude", "extend-exclude")
 
 
 @record
@@ -74,6 +81,18 @@ def _pairing(value: object) -> str | None:
     return value
 
 
+def _globs(value: object) -> tuple[str, ...]:
+    if not isinstance(value, list) or not all(isinstance(item, str) and item for item in value):
+        raise TypeError('must be a list of globs, such as ["legacy", "vendor/*.mnt"]')
+    return tuple(value)
+
+
+def _flag(value: object) -> bool:
+    if not isinstance(value, bool):
+        raise TypeError("must be true or false")
+    return value
+
+
 def _path(value: object) -> str:
     if not isinstance(value, str) or not value:
         raise TypeError("must be the path of a configuration file")
@@ -88,6 +107,9 @@ _CONVERTERS: dict[str, Callable[[object], object]] = {
     "ignore": selectors,
     "config-pairing": _pairing,
     "config": _path,
+    "exclude": _globs,
+    "extend-exclude": _globs,
+    "force-exclude": _flag,
 }
 KNOWN_KEYS = (*_CONVERTERS, "per-file-ignores", *TOOL_TABLES)
 
@@ -114,6 +136,9 @@ class ProjectSettings:
         values = {key: Given(_converted(table, key, convert), table.origin(key)) for key, convert in _converts(table)}
         if "config" in values:
             values["config"] = Given(table.path.parent / str(values["config"].value), values["config"].origin)
+        for key in EXCLUDE_KEYS:
+            if key in values:
+                values[key] = Given(relative_globs(values[key].value, table.path.parent), values[key].origin)
         for name in TOOL_TABLES:
             table.table(name)  # each tool checks its own keys; this checks that it is a table
         ignores = table.table("per-file-ignores")
@@ -139,6 +164,30 @@ def _converted(table: Table, key: str, convert: Callable[[object], object]) -> o
 
 
 @record
+class Glob:
+    """An ``exclude`` glob and the folder a path is taken relative to when it is matched: the settings file's,
+    or the current folder for the command line's, as ruff reads them."""
+
+    pattern: str
+    folder: Path
+
+
+def relative_globs(patterns: tuple[str, ...], folder: Path) -> tuple[Glob, ...]:
+    return tuple(Glob(pattern, folder) for pattern in patterns)
+
+
+# ruff's default ``exclude`` less its Python-only folders (.eggs, __pypackages__ ...), and __pycache__: folders
+# of tools and copies, where a .mnt file is a build's or a package's, not the project's own
+DEFAULT_EXCLUDE = relative_globs(
+    (
+        ".bzr", ".direnv", ".git", ".hg", ".mypy_cache", ".nox", ".pytest_cache", ".ruff_cache", ".svn", ".tox",
+        ".venv", ".vscode", "__pycache__", "_build", "build", "dist", "node_modules", "site-packages", "venv",
+    ),
+    Path(),
+)  # fmt: skip
+
+
+@record
 class FileSettings:
     """What applies to one file, each value with its origin."""
 
@@ -150,6 +199,9 @@ class FileSettings:
     per_file_ignores: tuple[tuple[str, Given[tuple[str, ...]]], ...] = ()  # the globs that match the file
     config_pairing: Given[str | None] = Given(DEFAULT_PATTERN)
     config: Given[Path | None] = Given(None)
+    exclude: Given[tuple[Glob, ...]] = Given(DEFAULT_EXCLUDE)
+    extend_exclude: Given[tuple[Glob, ...]] = Given(())
+    force_exclude: Given[bool] = Given(False)
     project: ProjectSettings | None = field(default=None, compare=False)
 
     @property
@@ -162,6 +214,13 @@ class FileSettings:
     @property
     def ignored(self) -> tuple[str, ...]:
         return (*self.ignore.value, *(code for _, given in self.per_file_ignores for code in given.value))
+
+    def excludes(self, path: Path) -> bool:
+        """Whether ``exclude`` or ``extend-exclude`` leaves ``path`` (a file or a folder) out of a folder walk."""
+        return any(
+            _matches_any(patterns, path, folder)
+            for folder, patterns in _by_folder((*self.exclude.value, *self.extend_exclude.value))
+        )
 
     @property
     def pairing(self) -> str | None:
@@ -219,16 +278,18 @@ class Overrides:
     ignore: Given[tuple[str, ...]] | None = None
     config_pairing: Given[str | None] | None = None
     config: Given[Path | None] | None = None
+    exclude: Given[tuple[Glob, ...]] | None = None
+    extend_exclude: Given[tuple[Glob, ...]] | None = None
+    force_exclude: Given[bool] | None = None
+
+
+_REPLACED = ("controller", "dialect", "select", "extend_select", "config_pairing", "config", "exclude", "force_exclude")
 
 
 def resolve(path: Path, project: ProjectSettings | None, overrides: Overrides) -> FileSettings:
     """The settings for ``path``: the defaults, then ``project`` (its settings file), then ``overrides``."""
     settings = FileSettings() if project is None else _from_project(path, project)
-    changes: dict[str, object] = {
-        name: given
-        for name in ("controller", "dialect", "select", "extend_select", "config_pairing", "config")
-        if (given := getattr(overrides, name)) is not None
-    }
+    changes: dict[str, object] = {name: given for name in _REPLACED if (given := getattr(overrides, name)) is not None}
     if overrides.select is not None and overrides.extend_select is None:
         changes["extend_select"] = Given((), overrides.select.origin)  # the command line's select is the whole set
     if overrides.select is None and overrides.extend_select is not None:  # besides the file's, as ruff adds it
@@ -240,10 +301,15 @@ def resolve(path: Path, project: ProjectSettings | None, overrides: Overrides) -
         changes["ignore"] = Given(
             (*settings.ignore.value, *overrides.ignore.value), _joined(settings.ignore, overrides.ignore)
         )
+    if overrides.extend_exclude is not None:
+        changes["extend_exclude"] = Given(
+            (*settings.extend_exclude.value, *overrides.extend_exclude.value),
+            _joined(settings.extend_exclude, overrides.extend_exclude),
+        )
     return replace(settings, **changes)
 
 
-def _joined(first: Given[tuple[str, ...]], second: Given[tuple[str, ...]]) -> str:
+def _joined(first: Given[tuple[object, ...]], second: Given[tuple[object, ...]]) -> str:
     return second.origin if not first.value else f"{first.origin}, {second.origin}"
 
 
@@ -255,16 +321,34 @@ def _from_project(path: Path, project: ProjectSettings) -> FileSettings:
 
 
 def _matches(glob: str, path: Path, folder: Path) -> bool:
-    """A ``per-file-ignores`` glob against the path relative to the settings file's folder, or the file's name;
-    without regard to case, as Mint's file names are compared. ``*`` matches across folders, and a leading
-    ``./`` names the settings file's folder, as in ruff's globs."""
-    patterns = _spellings(glob.lower().removeprefix("./"))
-    try:
-        relative = path.absolute().relative_to(folder.absolute()).as_posix().lower()
-    except ValueError:
-        relative = None
-    names = (path.name.lower(), *([relative] if relative is not None else []))
-    return any(fnmatchcase(name, pattern) for name in names for pattern in patterns)
+    """A ``per-file-ignores`` glob against the path relative to the settings file's folder, or the file's name."""
+    return _matches_any((glob,), path, folder)
+
+
+def _matches_any(globs: tuple[str, ...], path: Path, folder: Path) -> bool:
+    """Whether one of ``globs`` matches the path relative to ``folder``, or its name; without regard to case, as
+    Mint's file names are compared. ``*`` matches across folders, and a leading ``./`` names ``folder``, as in
+    ruff's globs. The globs are one expression, and the path's two names made once: a walk asks of every file."""
+    absolute, top = os.path.abspath(path), os.path.join(os.path.abspath(folder), "")  # a third of pathlib's cost
+    names = [path.name.lower()]
+    if absolute.startswith(top) or absolute + os.sep == top:
+        names.append(absolute[len(top) :].replace(os.sep, "/").lower() or ".")
+    expression = _expression(globs)
+    return any(expression.match(name) for name in names)
+
+
+@cache
+def _expression(globs: tuple[str, ...]) -> re.Pattern[str]:
+    """The globs as fnmatch reads each of their ``_spellings`` (its ``fnmatchcase`` is this match), in one."""
+    spellings = (spelling for glob in globs for spelling in _spellings(glob.lower().removeprefix("./")))
+    return re.compile("|".join(translate(spelling) for spelling in spellings))
+
+
+@cache
+def _by_folder(globs: tuple[Glob, ...]) -> tuple[tuple[Path, tuple[str, ...]], ...]:
+    """The patterns of ``globs`` for each folder they are relative to."""
+    folders = dict.fromkeys(glob.folder for glob in globs)
+    return tuple((folder, tuple(glob.pattern for glob in globs if glob.folder == folder)) for folder in folders)
 
 
 def _spellings(pattern: str) -> list[str]:

@@ -6,11 +6,10 @@ says so (``ignored_directives``) rather than the program dropping out of the run
 
 from __future__ import annotations
 
-import os
 from collections.abc import Iterable
 from pathlib import Path
 
-from mintlang.cli.files import find
+from mintlang.cli.files import find, walk
 from mintlang.pairing import listed_as, names_in
 from mintlang.records import record
 from mintlang.runtime.scenario.directive_words import DIRECTIVE, meant_kind
@@ -70,13 +69,12 @@ def discover(paths: Iterable[Path]) -> tuple[list[TestCase], list[Unreadable]]:
 def _scenarios_without_program(paths: Iterable[Path]) -> list[Path]:
     """Scenario files below the folders with no program of their name beside them: a misnamed program or
     scenario would otherwise leave its test unrun without a word (folders that cannot be listed ``find``
-    reports)."""
+    reports; what the settings exclude ``find`` leaves out, and so does this)."""
     orphans = []
     for directory in (path for path in paths if path.is_dir()):
-        for folder, _, names in os.walk(directory):
-            for name in names:
-                if name.lower().endswith(SCENARIO_SUFFIX) and listed_as(_program_name(name), names) is None:
-                    orphans.append(Path(folder, name))
+        for folder, names in walk(directory, lambda name: name.lower().endswith(SCENARIO_SUFFIX)):
+            listing = names_in(Path(folder))
+            orphans += [Path(folder, name) for name in names if listed_as(_program_name(name), listing) is None]
     return orphans
 
 

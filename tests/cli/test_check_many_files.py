@@ -68,8 +68,8 @@ def test_a_file_deleted_after_it_was_found_is_reported_and_the_rest_is_checked(
 
     found = files.find
 
-    def find_then_delete(paths: object) -> files.Found:
-        result = found(paths)  # type: ignore[arg-type]
+    def find_then_delete(paths: object, **options: object) -> files.Found:
+        result = found(paths, **options)  # type: ignore[arg-type]
         doomed.unlink()
         return result
 

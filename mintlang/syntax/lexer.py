@@ -332,7 +332,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
                 kind, text = _HASH, "#"
         else:
             kind = _INVALID
-            issues.append(_syntax_issue(position, len(text), f"unexpected character {text[0]!r}"))
+            issues.append(_syntax_issue(position, len(text), f"unexpected character {_shown(text[0])}"))
         kinds.append(kind)
         starts.append(position)
         position += len(text)
@@ -376,6 +376,11 @@ def _too_large(text: str) -> bool:
     except OverflowError:
         return True
     return False
+
+
+def _shown(character: str) -> str:
+    """A character in quotes as typed (repr would double a backslash); one that would not show, escaped."""
+    return f"'{character}'" if character.isprintable() else repr(character)
 
 
 def _syntax_issue(start: int, length: int, message: str) -> Diagnostic:

@@ -265,6 +265,20 @@ def test_an_unterminated_string_is_a_syntax_error_up_to_the_end_of_the_line() ->
     assert significant(source)[-1] == (K.STRING, '"ok"')
 
 
+@pytest.mark.parametrize(
+    ("source", "message"),
+    [
+        pytest.param("PRINT 7 \\ 2\n", "Syntax error: unexpected character '\\'", id="backslash-as-typed"),
+        pytest.param("PRINT 1 $ 2\n", "Syntax error: unexpected character '$'", id="dollar"),
+        pytest.param("PRINT 1 \x01 2\n", "Syntax error: unexpected character '\\x01'", id="control-escaped"),
+    ],
+)
+def test_an_unexpected_character_is_named_as_typed_and_an_invisible_one_escaped(source: str, message: str) -> None:
+    """The message quotes the character the user typed, not Python's escaped spelling of it; only a
+    character that would not show is written as an escape."""
+    assert [d.message for d in mintlang.parse(source).diagnostics] == [message]
+
+
 # ------------------------------------------------------------- losslessness
 
 

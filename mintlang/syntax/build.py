@@ -202,10 +202,10 @@ def _keyword_statement(tree: Tree) -> Make[n.Statement]:
     keyword = _keyword_ref(tree.children[0], selector_tree)  # type: ignore[arg-type]
     terminal = _optional(parts.get("terminal"), _terminal)
     values, fill = _values(parts["values"]) if "values" in parts else (_constant(None), False)
-    arguments, using, formats, trailing = (
+    arguments, using, formats, trailing, semicolons = (
         _command_arguments(parts["command_arguments"])
         if "command_arguments" in parts
-        else (_constant(()), _constant(()), (), False)
+        else (_constant(()), _constant(()), (), False, ())
     )
     span = _tree_span(tree)
 
@@ -220,25 +220,35 @@ def _keyword_statement(tree: Tree) -> Make[n.Statement]:
             using(line, words),
             formats,
             trailing,
+            semicolons,
         )
 
     return make
 
 
 _CommandArguments = tuple[
-    Make[tuple[n.Expression | n.StringLiteral, ...]], Make[tuple[n.Expression, ...]], tuple[str | None, ...], bool
+    Make[tuple[n.Expression | n.StringLiteral, ...]],
+    Make[tuple[n.Expression, ...]],
+    tuple[str | None, ...],
+    bool,
+    tuple[int, ...],
 ]
 
 
 def _command_arguments(tree: Tree) -> _CommandArguments:
-    """The operands, the USING, how each operand prints (HEX, DEC, BIN) and whether a comma ends them."""
+    """The operands, the USING, how each operand prints (HEX, DEC, BIN), whether a separator ends them, and
+    which of them a semicolon follows."""
     arguments: list[Make[n.Expression | n.StringLiteral]] = []
     formats: list[str | None] = []
+    semicolons: list[int] = []
     using: Make[tuple[n.Expression, ...]] = _constant(())
     trailing = False
     for child in tree.children:
-        trailing = _is_token(child, "COMMA")
-        if isinstance(child, Tree) and child.data == "using":
+        trailing = isinstance(child, Tree) and child.data == "separator"
+        if trailing:
+            if _is_token(child.children[0], "SEMICOLON"):  # type: ignore[union-attr]
+                semicolons.append(len(arguments) - 1)
+        elif isinstance(child, Tree) and child.data == "using":
             using = _using(child)
         elif isinstance(child, Tree) and child.data == "modified_argument":
             arguments.append(_expression(child.children[1]))
@@ -246,10 +256,10 @@ def _command_arguments(tree: Tree) -> _CommandArguments:
         elif _is_token(child, "STRING"):
             arguments.append(_string(child))
             formats.append(None)
-        elif not trailing:
+        else:
             arguments.append(_expression(child))
             formats.append(None)
-    return _sequence(arguments), using, tuple(formats) if any(formats) else (), trailing
+    return _sequence(arguments), using, tuple(formats) if any(formats) else (), trailing, tuple(semicolons)
 
 
 def _function_statement(tree: Tree) -> Make[n.Statement]:

@@ -218,8 +218,9 @@ class KeywordStatement:
     ``values`` is set for a write (``SPEED[0,1] = 10,20;``, ``None`` marks a
     skipped place as in ``SPEED = ,10``; ``fill`` is the trailing ``;``);
     ``arguments`` for a command with operands (``LOCATE 1,1``); a terminal
-    command that prints (``LINE 2, HEX a,``) keeps how each argument is
-    printed in ``formats`` and whether a comma ends the line in ``trailing``.
+    command that prints (``LINE 2, HEX a;``) keeps how each argument is
+    printed in ``formats``, whether a separator ends the line in ``trailing``,
+    and which arguments a ``;`` follows rather than a comma in ``semicolons``.
     """
 
     span: Span
@@ -231,6 +232,7 @@ class KeywordStatement:
     using: tuple[Expression, ...] = ()
     formats: tuple[str | None, ...] = ()  # HEX, DEC or BIN per argument; empty when none is written
     trailing: bool = False
+    semicolons: tuple[int, ...] = ()  # the indices of the arguments a ";" follows (PRINT's tab, 000:15300-15302)
 
 
 @record

@@ -657,19 +657,23 @@ class StatementCompiler:
         return (lambda: format_number(number())), item.separator
 
     @staticmethod
-    def _items(
-        arguments: tuple[n.Expression | n.StringLiteral, ...], formats: tuple[str | None, ...], trailing: bool
-    ) -> list[n.PrintItem]:
-        """A terminal command's arguments as PRINT items, joined by commas (a trailing one keeps the line open)."""
+    def _items(statement: n.KeywordStatement, first: int = 0) -> list[n.PrintItem]:
+        """A terminal command's arguments from ``first`` on as PRINT items, each with the separator written after
+        it (a trailing one keeps the line open)."""
+        arguments = statement.arguments
+        formats = statement.formats or (None,) * len(arguments)
         last = len(arguments) - 1
-        return [
-            n.PrintItem(value.span, value, format, "," if index < last or trailing else None)
-            for index, (value, format) in enumerate(zip(arguments, formats or (None,) * len(arguments), strict=True))
-        ]
+
+        def separator(index: int) -> str | None:
+            if index == last and not statement.trailing:
+                return None
+            return ";" if index in statement.semicolons else ","
+
+        return [n.PrintItem(arguments[i].span, arguments[i], formats[i], separator(i)) for i in range(first, last + 1)]
 
     def _printing_keyword(self, statement: n.KeywordStatement, render: Callable[[float], str]) -> Operation:
         """``BINARY "12 is ", 12``: PRINT with every number in the keyword's own format (001:6209-6239)."""
-        items = self._items(statement.arguments, statement.formats, statement.trailing)
+        items = self._items(statement)
         parts = tuple(self._print_item(item, (), render) for item in items)
         terminal = self.terminal
 
@@ -687,7 +691,7 @@ class StatementCompiler:
         if not statement.arguments:
             raise MintError(NO_EXPRESSION, detail="LINE needs a line number and what to print")
         using = tuple(self.expressions.compile(value) for value in statement.using)
-        items = self._items(statement.arguments[1:], statement.formats[1:], statement.trailing)
+        items = self._items(statement, first=1)
         parts = tuple(self._print_item(item, using) for item in items)
         terminal = self.terminal
 

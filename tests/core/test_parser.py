@@ -283,6 +283,23 @@ def test_print_modifiers_dec_hex_and_bin_each_mark_the_value_after_them() -> Non
     assert mintlang.check("DIM a\nLINE 1, DEC a, HEX a, BIN a\n") == []
 
 
+@pytest.mark.parametrize(
+    ("source", "semicolons", "trailing"),
+    [
+        pytest.param('LINE 1, "a = "; a\n', (1,), False, id="between-items"),
+        pytest.param('LINE 1, "a = ", a;\n', (2,), True, id="ending-the-line"),
+        pytest.param('LINE 1, "a"; a; "b", a USING 3\n', (1, 2), False, id="before-using"),
+        pytest.param('LINE 1, "a", a\n', (), False, id="commas-only"),
+    ],
+)
+def test_line_separates_what_it_prints_as_print_does(source: str, semicolons: tuple[int, ...], trailing: bool) -> None:
+    # lines 13658-13660: LINE takes any expression PRINT takes; lines 15300-15302: "," or ";" between them
+    statement = statements("DIM a\n" + source)[1]
+    assert isinstance(statement, n.KeywordStatement)
+    assert (statement.semicolons, statement.trailing) == (semicolons, trailing)
+    assert mintlang.parse("DIM a\n" + source).diagnostics == ()
+
+
 def test_a_macro_use_on_a_later_line_is_replaced_by_its_text() -> None:
     # line 1456: DEFINE mac = ? "OK" - where mac is found, ? "OK" is executed
     source = 'DEFINE mac = ? "OK"\nmac\n'

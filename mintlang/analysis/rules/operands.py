@@ -16,6 +16,7 @@ from functools import cache
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import LineScope
+from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import KeywordKind
@@ -55,6 +56,19 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if operands is not None and not operands.holds(given):
             detail = f"{statement.keyword.spelling} takes {operands.expected()} ({operands.format}), not {given}"
             yield Finding(scope.unit, mint_error(2003, statement.span, detail))
+        elif operands is not None and statement.semicolons:
+            yield from _semicolons(scope, statement, operands)
+
+
+def _semicolons(scope: LineScope, statement: n.KeywordStatement, operands: _Operands) -> Iterator[Finding]:
+    """A ``;`` is PRINT's separator: it may stand only between what a command prints (its open-ended last
+    operand, ``LINE 2, "A = "; a``), not between its other operands (``LOCATE 1; 2``, ``LINE 2; a``)."""
+    printed_from = operands.least - 1 if operands.most is None else len(statement.arguments)
+    for index in statement.semicolons:
+        if index < printed_from:
+            at = scope.syntax.text.index(";", statement.arguments[index].span.end)
+            detail = f"{statement.keyword.spelling} separates its operands with commas ({operands.format})"
+            yield Finding(scope.unit, mint_error(2003, Span(at, at + 1), detail))
 
 
 @cache

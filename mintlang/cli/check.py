@@ -48,7 +48,7 @@ from mintlang.cli.terminal import (
 from mintlang.codes import own, selector
 from mintlang.diagnostics import Severity, Span
 from mintlang.dialect import Dialect
-from mintlang.settings import Overrides, SettingsError, settings_for
+from mintlang.settings import Overrides, SettingsError, force_excluded, settings_for
 from mintlang.source import SourceFile, decode, read_source
 
 _FOUND_ERRORS = 1
@@ -227,11 +227,15 @@ def check(
         raise click.UsageError("--fix writes files, and standard input is none: use --diff to see the fixes")
     if _STDIN not in paths and stdin_filename is not None:
         raise click.UsageError("--stdin-filename names the program read from standard input: give - as a path")
+    excluded = found.excluded
     try:
         if show_settings:
             named = [*([Path(stdin_filename or "-")] if _STDIN in paths else []), *found.files]
             _show_settings(named, layer, [cannot_read(error) for error in found.unreadable])
-        planned = plan(found.files, layer, _read_stdin(stdin_filename) if _STDIN in paths else None)
+        reading = _STDIN in paths
+        if reading and stdin_filename is not None and force_excluded(Path(stdin_filename), layer):
+            reading, excluded = False, [*excluded, Path(stdin_filename)]  # an editor's buffer of an excluded file
+        planned = plan(found.files, layer, _read_stdin(stdin_filename) if reading else None)
     except SettingsError as error:
         settings_failed("mint check", error)
     refuse_overwriting(output_file, found.files, _fail)
@@ -241,10 +245,10 @@ def check(
         if output_format != "text" and not diff:  # a tool reading the report still gets one, with nothing in it
             with destination(output_file, _fail) as stream:
                 _write([], stream, output_format, statistics=statistics, quiet=quiet, color=color)
-        if found.excluded:  # pre-commit names files the project excludes: nothing to check, no failure (ruff's)
+        if excluded:  # pre-commit names files the project excludes: nothing to check, no failure (ruff's)
             if not quiet:
                 click.echo(
-                    "mint check: nothing to check: force-exclude leaves out " + ", ".join(map(str, found.excluded)),
+                    "mint check: nothing to check: force-exclude leaves out " + ", ".join(map(str, excluded)),
                     err=True,
                 )
             sys.exit(0)

@@ -252,10 +252,20 @@ class FileSettings:
             ),
             ("config-pairing", _pairing_shown(self.config_pairing.value), self.config_pairing.origin),
             ("config", str(self.config.value) if self.config.value else "none", self.config.origin),
+            ("exclude", _globs_shown(self.exclude.value), self.exclude.origin),
+            ("extend-exclude", _globs_shown(self.extend_exclude.value), self.extend_exclude.origin),
+            ("force-exclude", "true" if self.force_exclude.value else "false", self.force_exclude.origin),
         ]
         if selected != self.select.value:
             rows.insert(5, ("codes checked", _listed(selected), "select + extend-select"))
         return rows
+
+
+def _globs_shown(globs: tuple[Glob, ...]) -> str:
+    """The globs as written; ruff's list of tools' folders by its name, which is too long for a row."""
+    if globs == DEFAULT_EXCLUDE:
+        return f"{len(globs)} tools' folders (.git, build ...)"
+    return ", ".join(glob.pattern for glob in globs) or "none"
 
 
 def _listed(codes: tuple[str, ...] | None, default: tuple[str, ...] = ()) -> str:

@@ -12,7 +12,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from click.testing import CliRunner
 
+from mintlang.cli import main
 from tests.cli.invoking import mint_check, records, write
 
 SPARE = "DIM spare\n"  # W103 in every file checked
@@ -231,6 +233,23 @@ def test_nothing_left_to_check_by_force_exclude_is_no_failure(tmp_path: Path) ->
     assert (
         result.stderr == f"mint check: nothing to check: force-exclude leaves out {tmp_path / 'build' / 'copy.mnt'}\n"
     )
+
+
+def test_standard_input_named_as_an_excluded_file_is_left_out_with_force_exclude(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """An editor pipes its buffer with --stdin-filename: under force-exclude an excluded name is not checked,
+    as ruff does; without it the buffer is checked as a file named directly is."""
+    write(tmp_path / "mint.toml", "")
+    monkeypatch.chdir(tmp_path)
+    named = ("-", "--stdin-filename", "build/copy.mnt")
+    runner = CliRunner()
+    left_out = runner.invoke(main, ["check", "--force-exclude", *named], input=SPARE)
+    assert (left_out.exit_code, left_out.stdout) == (0, "")
+    assert left_out.stderr == "mint check: nothing to check: force-exclude leaves out build/copy.mnt\n"
+    checked_anyway = runner.invoke(main, ["check", *named], input=SPARE)
+    assert checked_anyway.exit_code == 0
+    assert "W103" in checked_anyway.stdout
 
 
 def test_nothing_found_that_nothing_excluded_is_still_a_failure(tmp_path: Path) -> None:

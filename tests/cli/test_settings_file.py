@@ -3,6 +3,7 @@ the command line's options; ``--show-settings`` says what applies and why; a bad
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -143,8 +144,20 @@ def test_show_settings_says_what_applies_and_where_it_came_from(tmp_path: Path) 
 
 def test_show_settings_without_a_settings_file_shows_the_defaults(tmp_path: Path) -> None:
     result = mint_check("--show-settings", write(tmp_path / "a.mnt", "PRINT 1\n"))
-    assert "settings file       none" in result.stdout
-    assert "controller          nextmove-pci  default" in result.stdout
+    rows = dict(re.split(r"\s{2,}", line.strip())[:2] for line in result.stdout.splitlines()[1:])
+    assert rows["settings file"] == "none"
+    assert rows["controller"] == "nextmove-pci"
+    assert rows["exclude"] == "19 tools' folders (.git, build ...)"
+    assert (rows["extend-exclude"], rows["force-exclude"]) == ("none", "false")
+
+
+def test_show_settings_lists_what_is_excluded_and_where_it_was_set(tmp_path: Path) -> None:
+    settings = write(tmp_path / "mint.toml", 'extend-exclude = ["old/*.mnt", "tmp"]\nforce-exclude = true\n')
+    result = mint_check("--show-settings", "--exclude", "x,y", write(tmp_path / "a.mnt", "PRINT 1\n"))
+    rows = {line.split()[0]: line.split()[1:] for line in result.stdout.splitlines()[1:]}
+    assert rows["exclude"] == ["x,", "y", "--exclude"]
+    assert rows["extend-exclude"] == ["old/*.mnt,", "tmp", f"{settings.absolute()}:1"]
+    assert rows["force-exclude"] == ["true", f"{settings.absolute()}:2"]
 
 
 def test_show_settings_of_a_path_that_is_not_there_says_so(tmp_path: Path) -> None:

@@ -87,7 +87,7 @@ class SmartLimits:
     def waiting(self, axis: Axis) -> int:
         """The AXISERROR bits of ``axis`` that wait on its limits rather than on ``#ONERROR``: a handler that
         returns with only these latched is not called again (AX-7), for the move may yet go on."""
-        return sum(stop.bit for stop in self.stops if stop.axis == axis.number and stop.reported)
+        return sum(stop.bit for stop in self.stops if stop.axis == axis.number and stop.reported and self._holds(stop))
 
     def limits_changed(self, axis: Axis) -> None:
         """A limit or the mode of ``axis`` was written: a move held on a limit now further out goes on."""
@@ -95,7 +95,9 @@ class SmartLimits:
         for stop in [stop for stop in self.stops if stop.axis == axis.number]:
             written = axis.parameters[_LIMITS[stop.bit]]
             further = written > stop.limit if stop.bit == ER_FWD_SOFT else written < stop.limit
-            if further or not smart:
+            if not self._holds(stop):  # a CANCEL ended the move: nothing is left to go on
+                self.stops.remove(stop)
+            elif further or not smart:
                 self.stops.remove(stop)
                 release(self.motion, stop.held)
 
@@ -103,13 +105,17 @@ class SmartLimits:
         """Latch the limit and make #ONERROR pending for each held move that has come to rest; forget the
         ones a STOP, a CANCEL or an error took over."""
         for stop in list(self.stops):
-            axis = self.motion.axes[stop.axis]
-            if axis.move is not stop.held.ramp:
+            if not self._holds(stop):
                 self.stops.remove(stop)
             elif not stop.reported and tick >= stop.held.ramp.end:
                 stop.reported = True
+                axis = self.motion.axes[stop.axis]
                 axis.latch(stop.bit)
                 self.raise_error(axis)
+
+    def _holds(self, stop: _Stop) -> bool:
+        """Whether ``stop``'s ramp still drives its axis: a STOP, a CANCEL or an error ends it."""
+        return self.motion.axes[stop.axis].move is stop.held.ramp
 
     def _limits(self, move: PlannedMove) -> tuple[float, ...]:
         """What a crossing depends on besides the move: each axis's limits, mode and position origin."""

@@ -47,3 +47,18 @@ def test_smart_mode_off_a_nextmove_stops_the_run_as_not_simulated() -> None:
     assert result.stop.reason is StopReason.ERROR
     assert "SOFTLIMITMODE" in result.stop.message
     assert "not simulated" in result.stop.message.lower()
+
+
+def test_a_move_cancelled_on_its_limit_is_gone_for_good() -> None:
+    """CANCEL ends the held move (000:16066-16067) and clears AXISERROR: leaving mode 4 afterwards starts
+    nothing, and a later error in mode 2 calls #ONERROR again while it stays latched (AX-7), so the run
+    stops after 100 re-entries. The axis rests on 100 from the smart stop to the end."""
+    source = (
+        "DIM n\nSOFTLIMITFORWARD.0 = 100 : SOFTLIMITMODE.0 = 4\nMOVEA.0 = 200 : GO.0\nPAUSE n = 1\n"
+        'CANCEL.0\nSOFTLIMITMODE.0 = 2\nWAIT = 100\nPRINT POS.0, " ", IDLE.0\nSOFTLIMITFORWARD.0 = 50\n'
+        "MOVEA.0 = 300 : GO.0\nPAUSE n > 1\nWAIT = 50\nEND\n#ONERROR\nn = n + 1\nRETURN\n"
+    )
+    result = simulate(source)
+    assert result.terminal.startswith("100 1\n")
+    assert result.stop.reason is StopReason.ERROR
+    assert "#ONERROR returned 100 times" in result.stop.message

@@ -165,6 +165,22 @@ def test_v3_a_parameter_written_as_a_command_is_found_as_the_run_stops_on_it(sou
     assert "is no command in Mint v3" in diagnostic.message
 
 
-@pytest.mark.parametrize("source", ["GO\n", "STOP\n", "CANCEL.0\n", "HOME.0 = 0\n"])
+@pytest.mark.parametrize(
+    "source",
+    [
+        "GO\n",
+        "STOP\n",
+        "CANCEL.0\n",
+        "HOME.0 = 0\n",
+        "? POS; : BOL\n",  # 001:3553
+        "LOOP : ? POS[0]; : BOL : ENDL\n",  # BOL's own entry, 001:6256
+    ],
+)
 def test_v3_commands_and_assignments_stand_as_statements(source: str) -> None:
     assert mintlang.check(source, dialect="v3") == []
+
+
+def test_v3_bol_moves_the_cursor_and_gives_no_value() -> None:
+    # "Return the cursor to the Beginning Of Line" (001:6249-6251) is a command, not a value to read
+    (diagnostic,) = mintlang.check("DIM a\na = BOL\n", dialect="v3")
+    assert (diagnostic.code, "is a command in Mint v3" in diagnostic.message) == ("E2000", True)

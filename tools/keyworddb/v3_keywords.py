@@ -109,9 +109,16 @@ def _returns_value(seed: Seed, start: int, end: int) -> bool:
         text = seed.stripped(number)
         if text.startswith("Purpose"):
             text = seed.stripped(seed.next_nonblank(number))
-        if text.startswith(("To return", "To read", "Return the", "Returns the")):
+        if text.startswith(("To return", "To read", "Return the", "Returns the")) and not text.startswith(
+            _MOVES_THE_CURSOR
+        ):
             return True
     return False
+
+
+# BOL's "Return the cursor to the Beginning Of Line" (001:6249-6251) moves the cursor: a command, as its
+# examples use it (``? POS; : BOL``, 001:2289, 6256), not a keyword that returns a value
+_MOVES_THE_CURSOR = "Return the cursor"
 
 
 def _format_lines(seed: Seed, start: int, end: int) -> tuple[str, ...]:

@@ -132,8 +132,9 @@ class Found:
     unread: list[Unlooked]
 
 
-def read(paths: tuple[Path, ...], config: Path | None) -> Found:
-    """The applications the command line names: each program alone, or one with ``config``."""
+def read(paths: tuple[Path, ...], config: Path | None, *, paired: bool = True) -> Found:
+    """The applications the command line names: each program with the configuration file paired with it
+    (none unless ``paired``), or one with ``config``."""
     # a folder's configuration files too: one that no program claims is migrated alone, not left in v3
     found = find(paths, PROGRAM_SUFFIXES if config is not None else PROGRAM_SUFFIXES | CONFIGURATION_SUFFIXES)
     unread = [_unlooked(error) for error in found.unreadable]
@@ -149,7 +150,7 @@ def read(paths: tuple[Path, ...], config: Path | None) -> Found:
     if not found.files and not found.excluded:  # a path force-exclude leaves out is nothing to migrate, no error
         named = ", ".join(str(path) for path in paths)
         raise UsageError(unread[0].line if unread else f"no .mnt or .cfg files to migrate in {named}")
-    partners = _partners(found.files)
+    partners = _partners(found.files) if paired else {}
     claimed = {identity(configuration) for configuration in partners.values()}
     applications = [
         _application(None, path) if is_configuration(path) else _application(path, partners.get(path))

@@ -77,6 +77,11 @@ Exit status:
     callback=refuse_settings_file,
 )
 @click.option(
+    "--no-config",
+    is_flag=True,
+    help="Pair no configuration file with the programs: each file is migrated (and verified) alone.",
+)
+@click.option(
     "--to",
     "to",
     type=click.Choice(["v4", "mintmt"]),

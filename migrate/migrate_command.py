@@ -53,6 +53,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     check: bool,
     to_stdout: bool,
     config: Path | None,
+    no_config: bool,
     to: str,
     controller: str,
     output_format: str,
@@ -85,7 +86,9 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         context = click.get_current_context()
         settings = options.settings(controller, to) if mode == "verify" else options.refuse(partial(typed, context))
         select(only or None, skip, opt_in)
-        found = read(paths, config)
+        if no_config and config is not None:
+            raise UsageError("--config names the configuration file and --no-config pairs none: give one")
+        found = read(paths, config, paired=not no_config)
         applications, unread = found.applications, found.unread
         if mode == "stdout":
             _refuse_more_than_one(applications)

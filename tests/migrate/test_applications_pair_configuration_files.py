@@ -33,3 +33,24 @@ def test_a_program_and_its_configuration_named_together_are_one_application(tmp_
     result = CliRunner().invoke(migrate, ["--format", "json", str(folder / "cell.mnt"), str(folder / "CELL.CFG")])
     files = [entry["path"] for entry in json.loads(result.stdout)["files"]]
     assert files == [str(folder / "CELL.CFG"), str(folder / "cell.mnt")]  # the configuration first, once
+
+
+def test_no_config_migrates_a_program_alone_as_mint_run_no_config_runs_it(tmp_path: Path) -> None:
+    """The program reads ``a``, which its configuration file's assignment declares in Mint v3. Paired, M-DIM
+    declares it once in the configuration file, which runs first; alone (--no-config), the program declares
+    it itself and the configuration file is neither read nor written."""
+    (tmp_path / "cell.mnt").write_text("PRINT a\n", encoding="utf-8")
+    (tmp_path / "CELL.CFG").write_text("a = 5\n", encoding="utf-8")
+    runner = CliRunner()
+    assert runner.invoke(migrate, ["--write", "--no-config", str(tmp_path / "cell.mnt")]).exit_code == 0
+    assert (tmp_path / "cell.mnt").read_text(encoding="utf-8") == "DIM a\nPRINT a\n"
+    assert (tmp_path / "CELL.CFG").read_text(encoding="utf-8") == "a = 5\n"
+
+
+def test_no_config_and_config_together_are_a_usage_error(tmp_path: Path) -> None:
+    folder = _folder(tmp_path)
+    result = CliRunner().invoke(
+        migrate, ["--no-config", "--config", str(folder / "CELL.CFG"), str(folder / "cell.mnt")]
+    )
+    assert result.exit_code == 2
+    assert "--no-config pairs none" in result.stderr

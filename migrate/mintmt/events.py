@@ -3,7 +3,8 @@
 The comms note shows the correspondence for the comms locations 1 to 5 that raise
 an event (002:19, MT-13). A handler is rewritten only when the block says the
 same thing: its label alone on its line, one ``RETURN`` alone on its line ending
-it, no other label or ``RETURN`` between, no jump naming it, and code above it that
+it, no other label, ``RETURN`` or ``GOTO`` between (a ``GOTO`` leaves the handler,
+whose ``RETURN`` is then the label's it went to), no jump naming it, and code above it that
 cannot run into it (v4 would run into the handler, a MintMT ``Event`` is stepped
 over, MT-7). Any other handler is kept and flagged, as are the other event handlers
 (``#IN0``, ``#ONERROR``, ``#TIMER`` …: the notes show no MintMT form of them) and
@@ -82,6 +83,8 @@ def _why_not(source: Source, label: int, end: int | None) -> str | None:
         return "a statement follows its label on the line"
     if end is None:
         return "it does not end with one RETURN alone on its line before the next label"
+    if any(_K.GOTO in source.lines[position].kinds for position in range(label + 1, end)):
+        return "a GOTO leaves it for a label whose RETURN ends it in v4; an Event block ends only at End Event"
     if name in _jump_targets(source):
         return "the program names it in a GOSUB or GOTO"
     if _runs_into(source.lines, label):

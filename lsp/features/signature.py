@@ -76,9 +76,15 @@ def callee_at(tokens: list[Token], settings: Settings) -> Callee | None:
                 return Callee(token, using, False, False, using=True)
             if token.kind is TokenKind.PRINT or settings.words.keyword_name(token.text) == "LINE":
                 commas += semicolons  # their values are separated by ';' as by ',' (000:15298-15299, 13657)
-            terminal = index + 1 < len(tokens) and tokens[index + 1].kind is TokenKind.HASH
-            return Callee(token, commas - 1 if terminal and commas else commas, False, False)  # PRINT #1, ...
+            return Callee(token, commas - _terminal_commas(tokens, index), False, False)
     return None
+
+
+def _terminal_commas(tokens: list[Token], index: int) -> int:
+    """1 where a comma follows the terminal after the keyword at ``index`` (``PRINT #1, a``), else 0: the
+    guide writes the terminal without one (``LOCATE #3 10,10``, ``LINE #3 2, ...``: 000:13693, 13660)."""
+    after = tokens[index + 1 : index + 4]
+    return int(len(after) == 3 and after[0].kind is TokenKind.HASH and after[2].kind is TokenKind.COMMA)
 
 
 def _addressed(tokens: list[Token], index: int) -> bool:

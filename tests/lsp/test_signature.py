@@ -72,6 +72,10 @@ INPUT = "INPUT {#<terminal>} {string,} variable {USING <int> {,<frac>}}"
         ("MOVEA[0, 1, ", "MOVEA[axes] = <expression> {,<expression ...}", "axes"),
         ("PAUSE ", "PAUSE <condition>", "<condition>"),
         ("LOCATE #1, 5, ", "LOCATE {#<terminal>} <column>,<row>", "<row>"),
+        # the guide writes the terminal with no comma after it (000:13693, 13660, 15307)
+        ("LOCATE #3 10,", "LOCATE {#<terminal>} <column>,<row>", "<row>"),
+        ("LINE #3 2, ", "LINE {#<terminal>} <line number>, <expression>", "<expression>"),
+        ('PRINT #3 "Pos: ", a, ', PRINT, "modifier argument"),
         ("CAMEND[0,1] = 1, 2, ", "CAMEND[axes] = <expression> {,<expression>}", "<expression>"),
         # PRINT {#<terminal>} argument, {argument}, {modifier argument} {USING <int> {,<frac>}} (000:15295-15296):
         # values separated by commas or semicolons (000:15298-15299), the USING clause reached by its word.

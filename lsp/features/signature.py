@@ -5,7 +5,8 @@ the brackets after a function's name, or after the ``=`` of a keyword written
 to (braces, the manual's optional parts, are trimmed off). A repeated last
 item (``{,<expression> ...}``, or a value per axis) stays active for every
 further value; a terminal (``PRINT #1, ...``) is not counted as an operand. The
-values of PRINT and LINE are separated by commas or semicolons; after USING
+values of PRINT and LINE, as many as the line holds, are separated by commas or
+semicolons, their last item staying active for every further value; after USING
 (PRINT, INPUT) the operands are the USING clause's own, ``<int>`` and ``<frac>``. In an
 expression the read form (``v = ...``) comes first, at the start of a
 statement the written one.
@@ -43,6 +44,7 @@ class Callee:
     in_expression: bool
     using: bool = False  # the cursor is in a USING clause (PRINT a USING 5, 2)
     addressing: bool = False  # the cursor is in the axes or channels after the keyword (CIRCLEA[0,1])
+    printed: bool = False  # PRINT's or LINE's values: as many as the line holds, the last format item repeated
 
 
 def _starts_statement(tokens: list[Token], index: int) -> bool:
@@ -74,9 +76,10 @@ def callee_at(tokens: list[Token], settings: Settings) -> Callee | None:
         elif token.kind in _KEYWORDS and depth == 0 and _starts_statement(tokens, index):
             if using is not None:
                 return Callee(token, using, False, False, using=True)
-            if token.kind is TokenKind.PRINT or settings.words.keyword_name(token.text) == "LINE":
+            printed = token.kind is TokenKind.PRINT or settings.words.keyword_name(token.text) == "LINE"
+            if printed:
                 commas += semicolons  # their values are separated by ';' as by ',' (000:15298-15299, 13657)
-            return Callee(token, commas - _terminal_commas(tokens, index), False, False)
+            return Callee(token, commas - _terminal_commas(tokens, index), False, False, printed=printed)
     return None
 
 
@@ -147,7 +150,8 @@ def _round_brackets(label: str, name: str) -> str:
 def _signature(word: Keyword, label: str, callee: Callee) -> types.SignatureInformation:
     parameters = _parameters(label, word.name, callee)
     active = callee.operand
-    repeated = "..." in label[slice(*parameters[-1])] or "[axes]" in label or "(axes)" in label if parameters else False
+    last = label[slice(*parameters[-1])] if parameters else ""
+    repeated = callee.printed or "..." in last or "[axes]" in label or "(axes)" in label
     if repeated and active >= len(parameters):
         active = len(parameters) - 1  # a repeated last operand, or one value per axis
     return types.SignatureInformation(

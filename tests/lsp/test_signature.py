@@ -76,6 +76,10 @@ INPUT = "INPUT {#<terminal>} {string,} variable {USING <int> {,<frac>}}"
         ("LOCATE #3 10,", "LOCATE {#<terminal>} <column>,<row>", "<row>"),
         ("LINE #3 2, ", "LINE {#<terminal>} <line number>, <expression>", "<expression>"),
         ('PRINT #3 "Pos: ", a, ', PRINT, "modifier argument"),
+        # as many values as the line holds (000:15305), LINE taking all PRINT's (000:13657-13660, 15353)
+        ('PRINT "a = ",a," POS = ",', PRINT, "modifier argument"),
+        ('LINE #3 2, "A = ", ', "LINE {#<terminal>} <line number>, <expression>", "<expression>"),
+        ('LINE 2, "a"; a; ', "LINE {#<terminal>} <line number>, <expression>", "<expression>"),
         ("CAMEND[0,1] = 1, 2, ", "CAMEND[axes] = <expression> {,<expression>}", "<expression>"),
         # PRINT {#<terminal>} argument, {argument}, {modifier argument} {USING <int> {,<frac>}} (000:15295-15296):
         # values separated by commas or semicolons (000:15298-15299), the USING clause reached by its word.

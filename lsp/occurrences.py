@@ -22,6 +22,8 @@ from mintlang.syntax.parser import Document
 from mintlang.syntax.tokens import TRIVIA, TokenKind
 
 _JUMPS = frozenset({TokenKind.GOSUB, TokenKind.GOTO})
+# what GOSUB and GOTO take for a label's name (label_ref, grammar.lark): #home is a label as #worker is
+_LABEL_REFERENCES = frozenset({TokenKind.NAME, TokenKind.KEYWORD, TokenKind.FUNCTION, TokenKind.NUMBER})
 
 
 def _documents(snapshot: Snapshot) -> Iterator[tuple[Unit, Document]]:
@@ -55,9 +57,11 @@ def _mentions(unit: Unit, document: Document, offset: int | None = None) -> Iter
         previous: TokenKind | None = None
         while index < len(tokens) and tokens[index].start < body.end:
             token = tokens[index]
-            if token.kind is TokenKind.NAME and token.start >= body.start:
+            label = previous in _JUMPS
+            named = token.kind in _LABEL_REFERENCES if label else token.kind is TokenKind.NAME
+            if named and token.start >= body.start:
                 occurrence = Occurrence(unit, Span(token.start, token.end), token.text, True)
-                yield _Mention(occurrence, previous in _JUMPS)
+                yield _Mention(occurrence, label)
             if token.kind not in TRIVIA:
                 previous = token.kind
             index += 1

@@ -371,11 +371,7 @@ _SHORTEST_TOO_LARGE_DECIMAL, SHORTEST_TOO_LARGE = 39, 34
 
 def _too_large(text: str) -> bool:
     """Whether the valid literal ``text`` is beyond the controller's numbers: mint-run stops on it with error 3."""
-    try:
-        binary32.rounded(number_value(text))
-    except OverflowError:
-        return True
-    return False
+    return not binary32.holds(number_value(text))
 
 
 def _shown(character: str) -> str:

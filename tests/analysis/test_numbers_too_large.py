@@ -46,3 +46,12 @@ def test_mint_run_stops_with_error_3_on_the_same_line(source: str, line: int, co
 def test_the_largest_numbers_the_controller_holds_are_not_reported(source: str) -> None:
     assert placed_codes(source) == []
     assert simulate(source).stop.reason is StopReason.END
+
+
+def test_a_decimal_literal_beyond_a_double_is_error_3_too() -> None:
+    """320 digits: past even a double's range, where Python reads it as infinity, which binary32 does not
+    refuse; the controller holds it no more than the 45 digits above. The line is also past 255 characters."""
+    source = "PRINT " + "1" * 320 + "\n"
+    assert placed_codes(source) == [("E0003", 1, 7), ("W111", 1, 256)]
+    result = simulate(source)
+    assert (result.stop.reason, result.err, result.erl) == (StopReason.ERROR, 3, 1)

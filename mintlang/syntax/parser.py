@@ -524,6 +524,11 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
         removal = Fix("Remove the '#'", (Edit(shared_span(line.starts[index], line.starts[index + 1]), ""),), safe=True)
         jump, label = line.texts[index - 1].upper(), line.texts[index + 1]
         return _error(2003, span, f"{jump} names its label without '#': {jump} {label}", fixes=(removal,))
+    if not at_end and kinds[index] is _K.COMMA and index - 2 > begin and kinds[index - 2] is _K.HASH:
+        # LOCATE #1, 5, 5 as other BASICs write it: Mint puts no ',' after the terminal (LOCATE #3 10,10, 000:13693)
+        removal = Fix("Remove the ','", (Edit(shared_span(line.ends[index - 1], line.ends[index]), ""),), safe=True)
+        terminal, command = f"#{line.texts[index - 1]}", line.texts[begin].upper()
+        return _error(2003, span, f"{command} takes no ',' after its terminal {terminal}", fixes=(removal,))
     if segment[0] is _K.NEXT and index == begin + 1 and kinds[index] is _K.NAME:
         # "NEXT i" as in BASIC: Mint's NEXT takes no loop variable (000:1708-1710; 001:2238)
         removal = Fix(

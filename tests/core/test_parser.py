@@ -442,6 +442,31 @@ def test_next_with_its_loop_variable_is_an_error_whose_safe_fix_removes_the_name
     )
 
 
+@pytest.mark.parametrize(
+    ("source", "fixed", "command"),
+    [
+        pytest.param("LOCATE #1, 5, 5\n", "LOCATE #1 5, 5\n", "LOCATE", id="locate"),
+        pytest.param('LINE #3, 2, "A"\n', 'LINE #3 2, "A"\n', "LINE", id="line"),
+        pytest.param('INPUT #1, "A = ", a\n', 'INPUT #1 "A = ", a\n', "INPUT", id="input"),
+        pytest.param("CLS #3,\n", "CLS #3\n", "CLS", id="cls"),
+    ],
+)
+def test_a_comma_after_the_terminal_is_an_error_whose_fix_removes_it(source: str, fixed: str, command: str) -> None:
+    # the formats write {#<terminal>} then the operands, and the examples no comma: LOCATE #3 10,10 (000:13693),
+    # LINE #3 2, "A = ", a (000:13660), CLS #3 (000:8269)
+    (diagnostic,) = mintlang.parse("DIM a\n" + source).diagnostics
+    terminal = source.split(",", maxsplit=1)[0].split()[1]
+    assert (diagnostic.code, diagnostic.message) == (
+        "E2003",
+        f"Syntax error: {command} takes no ',' after its terminal {terminal}",
+    )
+    assert diagnostic.span.start == len("DIM a\n") + source.index(",")
+    (fix,) = diagnostic.fixes
+    (edit,) = fix.edits
+    text = "DIM a\n" + source
+    assert fix.safe and text[: edit.span.start] + edit.text + text[edit.span.end :] == "DIM a\n" + fixed
+
+
 def test_next_with_two_loop_variables_has_no_fix_as_basic_closed_two_loops_with_it() -> None:
     (diagnostic,) = mintlang.parse("DIM i\nDIM j\nFOR i = 1 TO 3\nFOR j = 1 TO 3\nNEXT j, i\n").diagnostics
     assert diagnostic.message.endswith("NEXT takes no loop variable: write NEXT alone") and diagnostic.fixes == ()

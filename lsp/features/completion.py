@@ -2,8 +2,9 @@
 
 The cursor's line is lexed as typed; user names come from the last analysis.
 
-After GOSUB/GOTO: labels; after ``#`` at the start of a line: event handlers
-of the controller; after MintMT's ``Event``: the events its blocks handle;
+After GOSUB/GOTO: labels; after ``#`` at the start of a line: the event handlers
+of the controller the program does not have yet; after INPUT: the variables
+and arrays it can fill; after MintMT's ``Event``: the events its blocks handle;
 after ``_``: predefined constants; at the start of a statement: commands,
 writable parameters, variables, macros and block snippets (ELSE, ENDL ...
 only where they close the innermost block, ELSE only before that IF's own ELSE,
@@ -147,6 +148,17 @@ def _statement_words(snapshot: Snapshot, before: list[Token]) -> frozenset[str]:
         first.kind is TokenKind.KEYWORD and snapshot.settings.words.keyword_name(first.text) == "LINE"
     )
     return frozenset({"USING"}) if formatted and TokenKind.USING not in written else frozenset()
+
+
+def _at_input_target(before: list[Token]) -> bool:
+    """Whether the cursor is where INPUT takes the variable it fills, after ``INPUT``, its terminal or its
+    prompt and comma (INPUT {#<terminal>} {string,} variable, 000:12212): a name, never a value read."""
+    starts = [index for index, token in enumerate(before) if token.kind in _STATEMENT_STARTERS]
+    kinds = [token.kind for token in before[starts[-1] + 1 :]] if starts else [token.kind for token in before]
+    if kinds[:1] != [TokenKind.INPUT]:
+        return False
+    rest = kinds[3:] if kinds[1:2] == [TokenKind.HASH] else kinds[1:]
+    return rest in ([], [TokenKind.STRING, TokenKind.COMMA])
 
 
 @record
@@ -377,9 +389,22 @@ def _inside_text(tokens: list[Token]) -> bool:
     return bool(quoted) and (len(quoted[-1].text) < 2 or quoted[-1].text[-1] not in _SINGLE_QUOTES)
 
 
+def _handled_elsewhere(snapshot: Snapshot, line: int) -> set[object]:
+    """The events whose handler the program already has, on a line other than ``line`` (0-based): a second
+    handler of one event is a label defined twice (E1001), and the one on the cursor's line is being typed."""
+    positions, dialect = snapshot.positions, snapshot.settings.dialect
+    return {
+        event_of(label.name, dialect)
+        for label in snapshot.model.symbols.labels[snapshot.unit].values()
+        if any(positions.position(definition.span.start).line != line for definition in label.definitions)
+    }
+
+
 def _events(snapshot: Snapshot, hash_: Token, cursor: types.Position) -> list[types.CompletionItem]:
-    """Handler names replacing the ``#...`` typed so far, whichever characters the client counts as a word."""
+    """Handler names replacing the ``#...`` typed so far, whichever characters the client counts as a word;
+    not those of the events the program handles already."""
     typed = types.Range(start=types.Position(cursor.line, cursor.character - len(hash_.text)), end=cursor)
+    handled = _handled_elsewhere(snapshot, cursor.line)
     return [
         types.CompletionItem(
             label=f"#{name}",
@@ -388,6 +413,7 @@ def _events(snapshot: Snapshot, hash_: Token, cursor: types.Position) -> list[ty
             text_edit=types.TextEdit(range=typed, new_text=f"#{name}"),
         )
         for name in event_names(snapshot)
+        if event_of(name, snapshot.settings.dialect) not in handled
     ]
 
 
@@ -513,6 +539,8 @@ def complete(
         return list(_constants(snapshot.settings.dialect))
     if previous is not None and previous.kind in (TokenKind.GOSUB, TokenKind.GOTO):
         return list(_labels(snapshot))
+    if _at_input_target(before):
+        return list(_symbols(snapshot))
     statement = previous is None or previous.kind in _STATEMENT_STARTERS
     if previous is not None and previous.kind is TokenKind.KEYWORD:
         # A keyword that starts the statement is a command or a parameter (GO, SPEED): what follows is

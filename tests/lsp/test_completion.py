@@ -90,6 +90,16 @@ async def test_event_handlers_after_hash_at_line_start(client, tmp_path):
     assert (typed.new_text, typed.range.start.character, typed.range.end.character) == ("#ONERROR", 0, 1)
 
 
+async def test_handlers_the_program_has_are_not_offered_again(client, tmp_path):
+    # a second #ONERROR is a label defined twice, "Invalid label" (000:1843-1844, E3004); the one typed is offered
+    text = "END\n#ONERROR\nRETURN\n#in1\nRETURN\n#IN2\n"
+    uri = uri_of(tmp_path / "handled.mnt")
+    await open_document(client, uri, text)
+    items = await labels_at(client, uri, text, "#IN2", 4)
+    assert {"#IN2", "#IN0", "#STOP"} <= set(items)
+    assert not {"#ONERROR", "#IN1"} & set(items)
+
+
 async def test_a_terminal_number_after_print_hash_gets_no_handler_names(client, tmp_path):
     text = "PRINT #\n"
     uri = uri_of(tmp_path / "terminal.mnt")
@@ -254,6 +264,25 @@ async def test_after_an_operand_only_the_words_of_the_statement_being_written(sh
     items = set(await labels_at(shared_client, uri, text, line, len(line)))
     assert {"AND", "OR", "MOD"} <= items
     assert items & STATEMENT_WORDS == words
+
+
+@SHARED
+@pytest.mark.parametrize(
+    "line",
+    [
+        pytest.param("INPUT ", id="input"),
+        pytest.param('INPUT "Count? ", ', id="after-the-prompt"),
+        pytest.param("INPUT #1 ", id="after-the-terminal"),
+        pytest.param('INPUT #3 "Count? ", ', id="after-terminal-and-prompt"),
+        pytest.param("IF a THEN INPUT ", id="after-then"),
+    ],
+)
+async def test_input_is_offered_the_variables_it_can_fill_only(shared_client, tmp_path, line):
+    # INPUT {#<terminal>} {string,} variable (000:12212): a name to fill, neither a function nor a keyword read
+    text = f"DIM a\nDIM table(4)\n{line}\n"
+    uri = uri_of(tmp_path / "input.mnt")
+    await open_document(shared_client, uri, text)
+    assert set(await labels_at(shared_client, uri, text, line, len(line))) == {"a", "table"}
 
 
 async def test_symbol_details_are_plain_text_and_the_description_is_markdown(client, tmp_path):

@@ -172,7 +172,8 @@ class Events:
         """The number of the class's lowest-numbered handler (0 when there is none): what a forced event runs."""
         label = _LABELS[kind]
         numbers = (name[len(label) :] for name in self._running_handlers() if name.startswith(label))
-        return min((int(number) for number in numbers if number.isdigit()), default=0)
+        # #IN01 is a plain label, not input 1's handler (mintlang.semantic.events): numbers as _handler spells them
+        return min((int(number) for number in numbers if number.isdigit() and str(int(number)) == number), default=0)
 
     # ------------------------------------------------------------ dispatching
 

@@ -2,12 +2,11 @@
 
 The comms note shows the correspondence for the comms locations 1 to 5 that raise
 an event (002:19, MT-13). A handler is rewritten only when the block says the
-same thing: its label alone on its line and written as the guide and the notes write
-it (``#COMMS01`` is not: neither says whether a leading zero names the event), one
-``RETURN`` alone on its line ending it, no other label, ``RETURN`` or ``GOTO`` between
-(a ``GOTO`` leaves the handler, whose ``RETURN`` is then the label's it went to), no
-jump naming it, and code above it that
-cannot run into it (v4 would run into the handler, a MintMT ``Event`` is stepped
+same thing: its label alone on its line (``#COMMS01`` is a plain label, see
+``mintlang.semantic.events``), one ``RETURN`` alone on its line ending it, no other
+label, ``RETURN`` or ``GOTO`` between (a ``GOTO`` leaves the handler, whose
+``RETURN`` is then the label's it went to), no jump naming it, and code above it
+that cannot run into it (v4 would run into the handler, a MintMT ``Event`` is stepped
 over, MT-7). Any other handler is kept and flagged, as are the other event handlers
 (``#IN0``, ``#ONERROR``, ``#TIMER`` …: the notes show no MintMT form of them) and
 every other label (the notes show no MintMT subroutine): MintMT reads them as v4
@@ -52,7 +51,7 @@ def _comms_handler(source: Source, position: int, number: int) -> Iterator[Actio
     lines = source.lines
     label = lines[position].tokens[0]
     end = _return_line(lines, position)
-    why = _why_not(source, position, end, number)
+    why = _why_not(source, position, end)
     if why is not None or end is None:
         yield Flag(ID, label.start, f"{label.text} is kept as a v4 handler: {why}")
         return
@@ -77,12 +76,10 @@ def _return_line(lines: tuple[Line, ...], label: int) -> int | None:
     return None
 
 
-def _why_not(source: Source, label: int, end: int | None, number: int) -> str | None:
-    """Why the handler of comms location ``number`` at line index ``label`` cannot be an ``Event`` block, or None."""
+def _why_not(source: Source, label: int, end: int | None) -> str | None:
+    """Why the comms handler at line index ``label`` cannot be an ``Event`` block, or None."""
     line = source.lines[label]
     name = line.tokens[0].text[1:].upper()
-    if name != f"COMMS{number}":
-        return f"the v4 guide and the notes write COMMS{number}, and say nothing of a leading zero"
     if len(line.tokens) > 1:
         return "a statement follows its label on the line"
     if end is None:

@@ -27,7 +27,11 @@ class Event:
     number: int | None
 
 
-_PATTERN = re.compile(r"(ONERROR|STOP|TIMER|CAN|COMMS|IN|FASTIN|FASTPOS|MOVEBUFFERLOW)([0-9]*)")
+# A number written with a leading zero is no event number: the guide writes none (#IN1, #COMMS1, 000:1889-1898),
+# and a Mint number with one is binary (000:744-760), so #COMMS01 is a plain label, as mint-run reads it.
+_KINDS = "ONERROR|STOP|TIMER|CAN|COMMS|IN|FASTIN|FASTPOS|MOVEBUFFERLOW"
+_PATTERN = re.compile(rf"({_KINDS})(0|[1-9][0-9]*)?")
+_ZERO_LED = re.compile(rf"({_KINDS})0+([0-9]+)")
 _EVENTS = {
     Dialect.V4: frozenset(EventKind) - {EventKind.FASTPOS, EventKind.MOVEBUFFERLOW},
     Dialect.MINTMT: frozenset(EventKind) - {EventKind.FASTPOS},
@@ -55,3 +59,13 @@ def event_of(label: str, dialect: Dialect = Dialect.V4) -> Event | None:
     if kind in _NUMBER_REQUIRED and number is None:
         return None
     return Event(kind, number)
+
+
+def handler_meant(label: str, dialect: Dialect = Dialect.V4) -> str | None:
+    """The handler's name a plain label seems meant to be, written with leading zeros (``COMMS01``: ``COMMS1``),
+    or None."""
+    found = _ZERO_LED.fullmatch(label.upper())
+    if found is None:
+        return None
+    name = f"{found.group(1)}{int(found.group(2))}"
+    return name if event_of(name, dialect) is not None else None

@@ -41,6 +41,21 @@ def test_event_handlers_are_never_unused() -> None:
     assert found("END\n#ONERROR\nRETURN\n#TIMER\nRETURN\n#IN1\nRETURN\n") == []
 
 
+@pytest.mark.parametrize(
+    ("label", "meant"),
+    [pytest.param("COMMS01", "COMMS1", id="comms01"), pytest.param("in007", "IN7", id="in007")],
+)
+def test_a_handler_written_with_a_leading_zero_is_a_subroutine_never_called_naming_the_handler(
+    label: str, meant: str
+) -> None:
+    # the handlers are #INx and #COMMS1 .. #COMMS5 (000:1888-1898): #COMMS01 is a plain label, called by nothing
+    (diagnostic,) = mintlang.check(f"END\n#{label}\nRETURN\n")
+    assert (diagnostic.code, diagnostic.message) == (
+        "W104",
+        f"subroutine #{label} is never called by GOSUB or GOTO: the event handler is #{meant}, with no leading zero",
+    )
+
+
 def test_a_v3_routine_that_assigns_its_variables_and_is_never_called_keeps_them_non_volatile() -> None:
     # the v3 guide's NONVOL1 listing (001:1430-1450): in v3 an assignment declares (001:1352), and the
     # routine is never called, which is what keeps the variables (001:1408)

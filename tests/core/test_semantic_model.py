@@ -243,13 +243,16 @@ def test_while_loop_and_repeat_share_one_nesting_limit() -> None:
         ("COMMS1", Event(EventKind.COMMS, 1)),
         ("CAN2", Event(EventKind.CAN, 2)),
         ("STOP", Event(EventKind.STOP, None)),
+        ("IN0", Event(EventKind.IN, 0)),
+        ("IN10", Event(EventKind.IN, 10)),
     ],
 )
 def test_reserved_labels_are_event_handlers(label: str, event: Event) -> None:
     assert event_of(label) == event
 
 
-@pytest.mark.parametrize("label", ["main", "IN", "COMMS", "TIMER2", "ONERROR1", "INPUT3"])
+# the guide writes no handler with a leading zero (000:1888-1898), and a number with one is binary (000:744-760)
+@pytest.mark.parametrize("label", ["main", "IN", "COMMS", "TIMER2", "ONERROR1", "INPUT3", "COMMS01", "IN00", "CAN02"])
 def test_other_labels_are_plain_subroutines(label: str) -> None:
     assert event_of(label) is None
 

@@ -81,6 +81,12 @@ RETURN
     assert simulate(source).terminal == "pending 128\nhandled\nafter 0\n"
 
 
+def test_a_forced_input_event_runs_the_lowest_handler_not_a_label_with_a_leading_zero() -> None:
+    # #IN01 is a plain label (the guide's handlers are #INx, 000:1894); forced, the input event runs #IN5
+    source = 'EVENTPENDING = 128\nWAIT = 5\nEND\n#IN01\nPRINT "plain"\nRETURN\n#IN5\nPRINT "in5"\nRETURN\n'
+    assert simulate(source).terminal == "in5\n"
+
+
 def test_an_error_handler_preempts_a_lower_handler() -> None:
     source = """REM @sim input 0 1 at 10
 REM @sim input 0 0 at 12

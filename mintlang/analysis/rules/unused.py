@@ -25,7 +25,7 @@ from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.traversal import Facts
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
-from mintlang.semantic.events import event_of
+from mintlang.semantic.events import event_of, handler_meant
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -72,6 +72,8 @@ def check(facts: Facts) -> Iterator[Finding]:
         if (unit, identity) not in declaring:
             first = symbol.definitions[0]
             detail = f"subroutine #{first.spelling} is never called by GOSUB or GOTO"
+            if (meant := handler_meant(first.spelling, dialect)) is not None:
+                detail += f": the event handler is #{meant}, with no leading zero"
             yield Finding(first.unit, own("W104", first.span, detail))
 
 

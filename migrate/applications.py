@@ -88,7 +88,7 @@ class Application:
         program = self.program.text if self.program is not None else ""
         try:
             if to == "mintmt":
-                result = mintmt.to_mintmt(program, config=config)
+                result = mintmt.to_mintmt(program, config=config, controller=controller)
             else:
                 result = migrate(program, config=config, controller=controller, only=only, skip=skip, opt_in=opt_in)
         except MigrationFailed as failure:

@@ -137,7 +137,7 @@ def _refuse_more_than_one(applications: list[Application]) -> None:
 
 
 def _list_rewrites(console: Console) -> None:
-    for rewrite in mintmt.REWRITES:
+    for rewrite in (*mintmt.REWRITES, *mintmt.CHECKS):
         console.print(f"[bold]{rewrite.ID:<14}[/bold] {escape(rewrite.SUMMARY)}", highlight=False)
 
 

@@ -20,9 +20,9 @@ from typing import TYPE_CHECKING
 from mintlang.lazy import import_when_used
 
 if TYPE_CHECKING:
-    from mintlang.migrate.mintmt.api import REWRITES, to_mintmt
+    from mintlang.migrate.mintmt.api import CHECKS, REWRITES, to_mintmt
 
-__all__ = ["REWRITES", "to_mintmt"]
+__all__ = ["CHECKS", "REWRITES", "to_mintmt"]
 
 # Imported when first used: a migration from Mint v3 (mint-migrate's default) does not load the rewrites.
 import_when_used(__name__, dict.fromkeys(__all__, "mintlang.migrate.mintmt.api"))

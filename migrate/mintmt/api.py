@@ -9,8 +9,9 @@ from types import ModuleType
 from mintlang.detection import detect_dialect
 from mintlang.diagnostics import Severity, Span
 from mintlang.dialect import Dialect
+from mintlang.keyworddb.model import Controller
 from mintlang.migrate import engine
-from mintlang.migrate.mintmt import addressing, blocks, characters, comments, events, names
+from mintlang.migrate.mintmt import addressing, blocks, characters, comments, events, lengths, names
 from mintlang.migrate.mintmt.apply import apply
 from mintlang.migrate.mintmt.source import Source
 from mintlang.migrate.mintmt.v3 import v3_uses
@@ -21,11 +22,16 @@ from mintlang.syntax.tokens import BYTE_ORDER_MARK
 
 # One module per kind of rewrite, each with its ID, SUMMARY and find(source); the order is the report's.
 REWRITES: tuple[ModuleType, ...] = (comments, characters, addressing, blocks, events, names)
+# Then the checks of what the rewrites make, each with its ID, SUMMARY and find(source, actions, controller).
+CHECKS: tuple[ModuleType, ...] = (lengths,)
 
 
-def to_mintmt(source: str, *, config: str | None = None) -> MigrationResult:
+def to_mintmt(
+    source: str, *, config: str | None = None, controller: Controller | str = Controller.NEXTMOVE_PCI
+) -> MigrationResult:
     """Rewrite a Mint v4 program (and its configuration file, whose result is ``.configuration``) in
-    MintMT's syntax where the notes show it, flagging what they do not. An application that already
+    MintMT's syntax where the notes show it, flagging what they do not and the lines made too long for
+    ``controller``. An application that already
     shows a form only MintMT has (``mintlang.detection``) comes back as it was, ``already_mintmt`` set.
     Raises ``MigrationFailed`` on a Mint v3 application (``v3``): it is migrated to v4 first."""
     texts = [text for text in (source, config) if text is not None]
@@ -45,18 +51,21 @@ def to_mintmt(source: str, *, config: str | None = None) -> MigrationResult:
     if config is not None:
         configuration = Source(config.removeprefix(BYTE_ORDER_MARK))
         read = parse(config)
-        migrated_configuration = _migrated(configuration, config, read)
+        migrated_configuration = _migrated(configuration, config, read, controller)
         visible, macros = configuration.macros, read.macros  # a program sees its configuration file's macros
     program = Source(source.removeprefix(BYTE_ORDER_MARK), visible)
-    return _result(_migrated(program, source, parse(source, macros=macros)), migrated_configuration, already=False)
+    migrated = _migrated(program, source, parse(source, macros=macros), controller)
+    return _result(migrated, migrated_configuration, already=False)
 
 
-def _migrated(source: Source, written: str, read: Document) -> engine.FileOutcome:
+def _migrated(source: Source, written: str, read: Document, controller: Controller | str) -> engine.FileOutcome:
     """``source`` (the text ``written`` without its byte-order mark, as the v3 -> v4 migration takes it)
     migrated, with the mark put back in front: a marker above the first line goes below it. ``read`` is
     ``written`` parsed as Mint v4: the lines it cannot read are the outcome's errors, as the v3 reader's are
     for a migration to v4 (the rewrites read tokens, and would pass them by unreported)."""
-    outcome = apply(source, [action for rewrite in REWRITES for action in rewrite.find(source)])
+    actions = [action for rewrite in REWRITES for action in rewrite.find(source)]
+    actions += [flag for check in CHECKS for flag in check.find(source, actions, controller)]
+    outcome = apply(source, actions)
     index = read.line_index
     errors = tuple(
         unreadable(index.position(d.span.start).line, d) for d in read.diagnostics if d.severity is Severity.ERROR

@@ -65,7 +65,7 @@ def test_check_exits_1_until_the_file_is_migrated(program: Path) -> None:
     assert run("--check", str(program))[0] == 0
 
 
-def test_list_rules_lists_the_mintmt_rewrites() -> None:
+def test_list_rules_lists_the_mintmt_rewrites_and_checks() -> None:
     code, output = run("--list-rules")
     assert code == 0
     assert [line.split()[0] for line in output.splitlines()] == [
@@ -75,6 +75,7 @@ def test_list_rules_lists_the_mintmt_rewrites() -> None:
         "MT-BLOCK",
         "MT-EVENT",
         "MT-NAME",
+        "MT-LENGTH",
     ]
 
 

@@ -27,7 +27,7 @@ from mintlang.migrate.model import MigrationFailed, NotRead
 from mintlang.migrate.report import FileEntry
 from mintlang.records import record
 from mintlang.semantic.units import Unit
-from mintlang.settings import SettingsError, settings_for
+from mintlang.settings import Overrides, SettingsError, settings_for
 from mintlang.source import SourceFile, read_source
 
 
@@ -132,11 +132,15 @@ class Found:
     unread: list[Unlooked]
 
 
-def read(paths: tuple[Path, ...], config: Path | None, *, paired: bool = True) -> Found:
+def read(
+    paths: tuple[Path, ...], config: Path | None, *, paired: bool = True, overrides: Overrides | None = None
+) -> Found:
     """The applications the command line names: each program with the configuration file paired with it
-    (none unless ``paired``), or one with ``config``."""
+    (none unless ``paired``), or one with ``config``; the folders searched leave out what the settings, under
+    ``overrides``, exclude."""
     # a folder's configuration files too: one that no program claims is migrated alone, not left in v3
-    found = find(paths, PROGRAM_SUFFIXES if config is not None else PROGRAM_SUFFIXES | CONFIGURATION_SUFFIXES)
+    suffixes = PROGRAM_SUFFIXES if config is not None else PROGRAM_SUFFIXES | CONFIGURATION_SUFFIXES
+    found = find(paths, suffixes, overrides)
     unread = [_unlooked(error) for error in found.unreadable]
     if config is not None:
         if len(found.files) > 1 or any(is_configuration(path) for path in found.files):

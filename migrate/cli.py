@@ -25,6 +25,7 @@ from mintlang.cli.options import (
     color_option,
     controller_option,
     drives_option,
+    exclude_options,
     exit_zero_option,
     format_option,
     list_option,
@@ -94,6 +95,7 @@ Exit status:
 @output_file_option("Write the diff and the report to this file instead of standard output.")
 @click.option("--fail-on", "fail_on", type=click.Choice(["manual"]), help="Exit 1 when manual items are left.")
 @exit_zero_option("Exit with 0 when the gate fails (--check, --verify, --fail-on); 2 still means not done.")
+@exclude_options()
 @list_option("--only", metavar="RULES", help="Run only these rules (comma-separated or repeated).")
 @list_option("--skip", metavar="RULES", help="Do not run these rules (comma-separated or repeated).")
 @list_option("--with", "opt_in", metavar="RULES", help="Also run these optional rules (comma-separated or repeated).")

@@ -17,7 +17,7 @@ from rich.markup import escape
 
 from mintlang.cli.diffs import unified, write_diff
 from mintlang.cli.options import refuse_quiet_and_verbose
-from mintlang.cli.settings import typed
+from mintlang.cli.settings import exclusions, typed
 from mintlang.cli.terminal import console, destination, reader_may_leave, refuse_overwriting, write_in_pieces
 from mintlang.migrate import leftovers, mintmt, verifying
 from mintlang.migrate.api import UnknownRule, rules, select
@@ -60,6 +60,9 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     output_file: Path | None,
     fail_on: str | None,
     exit_zero: bool,
+    exclude: tuple[str, ...] | None,
+    extend_exclude: tuple[str, ...] | None,
+    force_exclude: bool | None,
     only: tuple[str, ...],
     skip: tuple[str, ...],
     opt_in: tuple[str, ...],
@@ -88,7 +91,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         select(only or None, skip, opt_in)
         if no_config and config is not None:
             raise UsageError("--config names the configuration file and --no-config pairs none: give one")
-        found = read(paths, config, paired=not no_config)
+        found = read(paths, config, paired=not no_config, overrides=exclusions(exclude, extend_exclude, force_exclude))
         applications, unread = found.applications, found.unread
         if mode == "stdout":
             _refuse_more_than_one(applications)

@@ -24,6 +24,7 @@ from mintlang.cli.options import (
     HELP_OPTIONS,
     color_option,
     controller_option,
+    exclude_options,
     exit_zero_option,
     format_option,
     jobs_option,
@@ -138,21 +139,7 @@ def _explain(context: click.Context, _parameter: click.Parameter, code: str | No
 @list_option("--select", absent=None, help=SELECT_HELP)
 @list_option("--extend-select", absent=None, help="Also these codes or code prefixes, besides those selected.")
 @list_option("--ignore", absent=None, help="Leave out these codes or code prefixes; comma-separated or repeated.")
-@list_option(
-    "--exclude",
-    absent=None,
-    metavar="GLOBS",
-    help="Leave these files and folders out of the folders searched, instead of the settings' exclude (by default"
-    " .git, .venv, build, dist, node_modules and other tools' folders); comma-separated or repeated.",
-)
-@list_option(
-    "--extend-exclude", absent=None, metavar="GLOBS", help="Leave these files and folders out too, besides exclude."
-)
-@click.option(
-    "--force-exclude/--no-force-exclude",
-    default=None,
-    help="Leave out the excluded paths even when named (as pre-commit names the files it checks).",
-)
+@exclude_options()
 @click.option(
     "--statistics", is_flag=True, help="Count the findings of each code instead of showing each (text, json)."
 )

@@ -111,6 +111,31 @@ def verbosity_options(quiet: str, verbose: str) -> Callable[[F], F]:
     return decorate
 
 
+def exclude_options() -> Callable[[F], F]:
+    """ruff's ``--exclude``, ``--extend-exclude`` and ``--force-exclude``: what the folders searched leave out,
+    over the settings of the same names (``cli.settings.exclusions`` reads them)."""
+    exclude = list_option(
+        "--exclude",
+        absent=None,
+        metavar="GLOBS",
+        help="Leave these files and folders out of the folders searched, instead of the settings' exclude (by"
+        " default .git, .venv, build, dist, node_modules and other tools' folders); comma-separated or repeated.",
+    )
+    extend_exclude = list_option(
+        "--extend-exclude", absent=None, metavar="GLOBS", help="Leave these files and folders out too, besides exclude."
+    )
+    force_exclude = click.option(
+        "--force-exclude/--no-force-exclude",
+        default=None,
+        help="Leave out the excluded paths even when named (as pre-commit names the files it checks).",
+    )
+
+    def decorate(function: F) -> F:
+        return exclude(extend_exclude(force_exclude(function)))
+
+    return decorate
+
+
 def refuse_quiet_and_verbose(quiet: bool, verbose: bool) -> None:
     if quiet and verbose:
         raise click.UsageError("--quiet and --verbose: choose one")

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Callable, Mapping
+from dataclasses import replace
 from pathlib import Path
 from typing import Any, NoReturn
 
@@ -35,6 +36,7 @@ _SETTINGS_ERROR = 2
 _TYPED = (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)
 _SHARED = ("controller", "dialect")  # top-level settings every tool's options of the same name default to
 _FROM_SETTINGS = "mint.from_settings"  # the context's meta key: the options the settings file gave
+_TOP_LEVEL_ONLY = frozenset({"exclude", "extend-exclude", "force-exclude"})  # options no tool's own table gives
 
 
 def typed(context: click.Context, name: str) -> bool:
@@ -59,8 +61,7 @@ def overrides(
     extend_exclude: tuple[str, ...] | None = None,
     force_exclude: bool | None = None,
 ) -> Overrides:
-    """The options of ``mint check`` the user gave, as the layer above the settings file; the globs of
-    ``--exclude`` and ``--extend-exclude`` are relative to the current folder, as ruff reads them."""
+    """The options of ``mint check`` the user gave, as the layer above the settings file."""
     if no_config and config_path is not None:
         raise click.UsageError("--config names the configuration file and --no-config pairs none: give one")
     params = context.params
@@ -69,7 +70,8 @@ def overrides(
         config = Given(None, "--no-config")
     elif config_path is not None:
         config = Given(config_path, "--config")
-    return Overrides(
+    return replace(
+        exclusions(exclude, extend_exclude, force_exclude),
         controller=Given(Controller(params["controller"]), "--controller") if typed(context, "controller") else None,
         dialect=Given(Dialect(params["dialect"]), "--dialect") if typed(context, "dialect") else None,
         select=Given(select, "--select") if select is not None else None,
@@ -77,6 +79,15 @@ def overrides(
         ignore=Given(ignore, "--ignore") if ignore is not None else None,
         config_pairing=Given(None, "--no-config") if no_config else None,
         config=config,
+    )
+
+
+def exclusions(
+    exclude: tuple[str, ...] | None, extend_exclude: tuple[str, ...] | None, force_exclude: bool | None
+) -> Overrides:
+    """``options.exclude_options`` as given (None: not given), as the layer above the settings file; their globs
+    are relative to the current folder, as ruff reads them."""
+    return Overrides(
         exclude=Given(relative_globs(exclude, Path.cwd()), "--exclude") if exclude is not None else None,
         extend_exclude=Given(relative_globs(extend_exclude, Path.cwd()), "--extend-exclude")
         if extend_exclude is not None
@@ -156,6 +167,8 @@ class ProjectCommand(click.Command):
             if key in options and key in project.values:
                 values[options[key].name or key] = str(project.values[key].value)
         for key, value in table.values.items():
+            if key in _TOP_LEVEL_ONLY:  # its globs are the settings file's, not a tool's: one list for every tool
+                raise table.error("a setting of every tool: write it beside select, not in a tool's table", key)
             param = options.get(key)
             if param is None or param.name is None:
                 raise table.error(f"unknown key (known: {', '.join(sorted(options))})", key)

@@ -99,6 +99,22 @@ def test_a_function_without_brackets_takes_only_the_next_operand() -> None:
     assert value_shape("SIN 90 + a") == "(SIN<90> + a)"
 
 
+@pytest.mark.parametrize(
+    ("expression", "expected"),
+    [
+        # lines 1417-1420: ABS, INT, SIN ... sit at the level of unary minus, whose operand may be a call
+        pytest.param("ABS SIN(a)", "ABS<SIN(a)>", id="abs-of-a-call"),
+        pytest.param("INT SQRT(a) + 1", "(INT<SQRT(a)> + 1)", id="binds-tighter-than-plus"),
+        pytest.param("ABS POW(2, 3) * 2", "(ABS<POW(2, 3)> * 2)", id="two-argument-call"),
+        pytest.param("ABS INT SQRT(a)", "ABS<INT<SQRT(a)>>", id="two-bare-functions"),
+        pytest.param("-SIN(a)", "(- SIN(a))", id="as-unary-minus-does"),
+        pytest.param("ABS (a) + 1", "(ABS(a) + 1)", id="own-bracket-is-still-its-call"),
+    ],
+)
+def test_a_function_without_brackets_takes_a_call_as_its_operand(expression: str, expected: str) -> None:
+    assert value_shape(expression) == expected
+
+
 def test_a_function_with_brackets_takes_the_whole_bracketed_expression() -> None:
     # line 1398: SIN(90 + a)
     assert value_shape("SIN(90 + a)") == "SIN((90 + a))"

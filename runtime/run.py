@@ -178,21 +178,33 @@ def _ending_at_the_last_check(limits: Limits, expectations: tuple[Expectation, .
 
 
 def _read_leniently(analysis: mintlang.Analysis) -> tuple[str, ...]:
-    """The lines whose typographic quotes (W101) were read as plain ones, one note each, in compile order.
+    """What the controller would refuse and the simulator runs all the same, one note a line, in compile order.
 
     The controller knows only plain quotes, but text copied from the guide (or a word processor) carries
-    curly ones where plain ones were meant; the simulator runs the program as ``mint check --fix`` would
-    write it, and says so, so that neither tool passes such a program in silence (BEHAVIOUR.md)."""
+    curly ones where plain ones were meant (W101): the simulator runs the program as ``mint check --fix``
+    would write it. A line longer than the controller takes (W111) keeps the program from downloading
+    (000:18454-18456); the simulator runs it as written. Either way it says so, so that neither tool passes
+    such a program in silence (BEHAVIOUR.md)."""
     notes: list[str] = []
     for unit, document in analysis.model.documents():
         diagnostics = analysis.configuration if unit is Unit.CONFIGURATION else analysis.program
-        lines = sorted({document.line_index.position(d.span.start).line for d in diagnostics if d.code == "W101"})
-        notes.extend(
-            f"{unit.value} line {line}: typographic quotes read as plain ones; the controller accepts only plain"
-            " quotes (mint check --fix writes them)"
-            for line in lines
-        )
+        found = {(document.line_index.position(d.span.start).line, d.code): d.message for d in diagnostics}
+        for (line, code), message in sorted(found.items()):
+            if (note := _lenient_note(code, message)) is not None:
+                notes.append(f"{unit.value} line {line}: {note}")
     return tuple(notes)
+
+
+def _lenient_note(code: str, message: str) -> str | None:
+    """The note for a diagnostic of ``code`` the controller would refuse and the simulator runs past; else None."""
+    if code == "W101":
+        return (
+            "typographic quotes read as plain ones; the controller accepts only plain quotes (mint check --fix"
+            " writes them)"
+        )
+    if code == "W111":
+        return f"{message}, and would not download the program (000:18454-18456); run here as written"
+    return None
 
 
 def _simulate(

@@ -3,19 +3,22 @@
 For a scaled keyword the printed range applies to the value times the scale
 factor (10.2, Attributes), which is not known before run time; but a scale factor is
 never negative or zero (000:536-537), so the value's sign is the sign of what the range sees:
-``SPEED = -5`` or ``ACCEL = 0`` is out of range whatever the scale.
+``SPEED = -5`` or ``ACCEL = 0`` is out of range whatever the scale. Where every scale factor's table
+prints a least value (MintDrive's 1 ≤ x ≤ 65535), a value past the range's far end at that scale is
+out of range too: ``SPEED.0 = 8000001`` on MintDrive.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator
+from functools import cache
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import KeywordUse, LineScope, Use
 from mintlang.controllers import io_banks
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database, supplements
-from mintlang.keyworddb.model import Keyword, ValueRange
+from mintlang.keyworddb.model import Controller, Keyword, ValueRange
 from mintlang.semantic.constants import constant_integer, constant_value, held_value
 from mintlang.syntax import nodes as n
 
@@ -47,6 +50,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if limits is None and not (positive or whole):
             continue
         scaled = attributes is not None and attributes.scaled
+        least = _least_scale(controller, dialect) if scaled else 0.0
         for value in use.statement.values or ():
             number = constant_value(value, dialect)
             if value is None or number is None:
@@ -59,10 +63,12 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
                 yield Finding(use.unit, mint_error(3, value.span, detail))
             elif positive and number <= 0:
                 yield Finding(use.unit, mint_error(3, value.span, f"{label} takes only a positive value"))
-            elif limits is not None and not (_scaled_can_hold(limits, number) if scaled else limits.holds(number)):
+            elif limits is not None and not (
+                _scaled_can_hold(limits, number, least) if scaled else limits.holds(number)
+            ):
                 detail = f"{number:.15g} is outside the range of {label} ({limits.text})"
                 if scaled:
-                    detail += " whatever the scale factor"
+                    detail += " whatever the scale factor" + (f" (at least {least:g})" if least else "")
                 yield Finding(use.unit, mint_error(3, value.span, detail))
 
 
@@ -89,10 +95,37 @@ def _output_word(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
             yield Finding(use.unit, mint_error(3, value.span, detail))
 
 
-def _scaled_can_hold(limits: ValueRange, value: float) -> bool:
-    """Whether ``value`` times some positive scale factor lies in ``limits``: only its sign is known."""
-    if value > 0:
-        return limits.maximum is None or limits.maximum > 0
+SCALE_FACTORS = ("SCALE", "ENCODERSCALE", "AUXENCODERSCALE")
+"""The factors a scaled keyword's value is multiplied by: an axis's, an encoder's, an auxiliary encoder's."""
+
+
+@cache
+def _least_scale(controller: Controller, dialect: Dialect) -> float:
+    """The least scale factor ``controller`` accepts: the smallest printed minimum of ``SCALE_FACTORS``
+    (1 on MintDrive: 000:15784, 000:9728, 000:6761); 0 where one prints none or leaves it out (0 < x),
+    so that only a factor's sign is known."""
+    keywords = database().keywords_of(dialect)
+    minima = []
+    for name in SCALE_FACTORS:
+        keyword = keywords.get(name)
+        row = supplements.attributes_for(keyword, controller, dialect) if keyword is not None else None
+        found = supplements.narrowed(name, row.range if row is not None else None)
+        if found is None or found.minimum is None or not found.minimum_included:
+            return 0.0
+        minima.append(found.minimum)
+    return max(0.0, min(minima))
+
+
+def _scaled_can_hold(limits: ValueRange, value: float, least: float) -> bool:
+    """Whether ``value`` times some scale factor of at least ``least`` (any positive one when it is 0) lies in
+    ``limits``: a larger factor only takes the product further from zero."""
     if value == 0:
         return limits.holds(0.0)
-    return limits.minimum is None or limits.minimum < 0
+    nearest = value * least  # the product nearest zero
+    if value > 0:
+        if limits.maximum is None:
+            return True
+        return limits.maximum > nearest or (least > 0 and limits.maximum_included and limits.maximum == nearest)
+    if limits.minimum is None:
+        return True
+    return limits.minimum < nearest or (least > 0 and limits.minimum_included and limits.minimum == nearest)

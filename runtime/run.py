@@ -80,6 +80,27 @@ _ORDER = {Unit.CONFIGURATION: 0, Unit.PROGRAM: 1}  # compile order of the files
 _LINE_END = re.compile(r"[\r\n]|$")
 
 
+def compile_refusal(
+    source: str,
+    *,
+    config: str | None = None,
+    controller: ControllerName | str | None = None,
+    dialect: Dialect | str = Dialect.V4,
+) -> str | None:
+    """The message with which the controller's compiler refuses the program or its configuration (as
+    ``run_source`` stops on it), or None: a debugger binds no breakpoint in a program that never starts."""
+    refused = _compiled(source, config, dialect, machine(controller, dialect))[1]
+    return refused.message if refused is not None else None
+
+
+def _compiled(
+    source: str, config: str | None, dialect: Dialect | str, simulated: ControllerProfile
+) -> tuple[mintlang.Analysis, _CompileError | None]:
+    """The application as checked on the machine simulated, and the first error its compiler stops on."""
+    analysis = mintlang.check_application(source, dialect=dialect, controller=simulated.controller, config=config)
+    return analysis, _compile_error(analysis, semantics(dialect).errors(lambda axis: 0))
+
+
 def _compile_error(analysis: mintlang.Analysis, errors: ErrorStyle) -> _CompileError | None:
     """The first error the compiler finds: the configuration is compiled (and run) first, then the program
     (000:269-271)."""
@@ -154,8 +175,7 @@ def run_source(
         raise ScenarioFileError(problems)
     scenario = merge(directives, scenario) if scenario is not None else directives
     base = simulated.controller  # the v4 machine a v3 controller is simulated on
-    analysis = mintlang.check_application(source, dialect=dialect, controller=base, config=config)
-    refused = _compile_error(analysis, semantics(dialect).errors(lambda axis: 0))
+    analysis, refused = _compiled(source, config, dialect, simulated)
     model = analysis.model
     if refused is not None:  # what runs before the compiler stops: the configuration, if the program is at fault
         runs_first = config if refused.unit is Unit.PROGRAM else None

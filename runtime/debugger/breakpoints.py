@@ -98,6 +98,7 @@ class Breakpoints:
         self.sites = layout.sites
         self.labels = layout.labels
         self.expressions = layout.expressions
+        self.refused = layout.refused
         self.next_id = 1
         self.generation = 0  # changes with every change of the breakpoints
         self.groups: dict[str, list[Breakpoint]] = {}  # a file's ("program", "configuration") or FUNCTIONS
@@ -119,7 +120,11 @@ class Breakpoints:
                 continue
             line = next((line for line in lines if line >= requested), None)
             if line is None:
-                placed.append(self._made(request, unit, requested, None, f"no statement at or after line {requested}"))
+                placed.append(
+                    self._made(
+                        request, unit, requested, None, self._absent(f"no statement at or after line {requested}")
+                    )
+                )
             else:
                 placed.append(self._made(request, unit, requested, self.first_of_line[(unit, line)]))
         return self._replaced(unit, placed)
@@ -133,10 +138,16 @@ class Breakpoints:
             name = str(request.get("name", "")).strip().lstrip("#")
             pc = self.labels.get(name.upper(), self.labels.get(identity(name)))
             if pc is None or pc >= len(self.sites):
-                placed.append(self._made(request, "program", 0, None, f"the program has no label #{name}"))
+                placed.append(
+                    self._made(request, "program", 0, None, self._absent(f"the program has no label #{name}"))
+                )
             else:
                 placed.append(self._made(request, self.sites[pc].unit, self.sites[pc].line, pc))
         return self._replaced(FUNCTIONS, placed)
+
+    def _absent(self, why: str) -> str:
+        """Why a line or label is not found: in a program its compiler refuses, none is, whatever the text holds."""
+        return f"does not compile: {self.refused}" if self.refused is not None else why
 
     def _made(
         self, request: Mapping[str, Any], unit: str, requested: int, pc: int | None, problem: str | None = None

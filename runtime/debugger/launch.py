@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Mapping
-from dataclasses import field
+from dataclasses import field, replace
 from pathlib import Path
 from typing import Any
 
@@ -28,7 +28,7 @@ from mintlang.runtime.dialects import SIMULATED
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import Site
 from mintlang.runtime.outputs import OutputProblem, check_plot
-from mintlang.runtime.run import RunResult, run_source
+from mintlang.runtime.run import RunResult, compile_refusal, run_source
 from mintlang.runtime.scenario import ScenarioFileError, load_scenario, merge
 from mintlang.runtime.scenario.stimulus import DrivesEnabled, Scenario
 from mintlang.runtime.simulation import Limits, Simulator
@@ -85,6 +85,12 @@ class Application:
             on_start=on_start,
             on_simulator=on_simulator,
             name=str(self.program),
+        )
+
+    def refusal(self) -> str | None:
+        """The compiler's message if it refuses the program or its configuration, as the run will stop on it."""
+        return compile_refusal(
+            self.source, config=self.configuration_source, controller=self.controller, dialect=self.dialect
         )
 
     def path_of(self, unit: str) -> Path | None:
@@ -152,6 +158,7 @@ class Layout:
     columns: tuple[int, ...] = ()  # each statement's 1-based column, so a stop shows which of a line's it is
     block_ends: Mapping[int, int] = field(default_factory=dict)  # a MintMT Event block's first statement -> its end
     expressions: ExpressionReader | None = None  # checks a breakpoint's condition as it is set
+    refused: str | None = None  # the compiler's message, when it refuses the program or its configuration
 
     def column(self, pc: int) -> int:
         return self.columns[pc] if pc < len(self.columns) else 1
@@ -181,7 +188,9 @@ def layout(application: Application) -> Layout:
     try:
         application.run(compiled)
     except _Compiled as done:
-        return done.layout
+        if any(site.unit == Unit.PROGRAM.value for site in done.layout.sites):
+            return done.layout  # the program's statements are there: its compiler took it
+        return replace(done.layout, refused=application.refusal())
     except ScenarioFileError as error:  # a REM @sim directive the scenario cannot read
         raise LaunchError(str(error)) from None
     return Layout()

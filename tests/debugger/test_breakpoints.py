@@ -208,3 +208,26 @@ def test_a_label_the_program_lacks_is_an_unverified_breakpoint(debug: Debug) -> 
     client = debug(TIMED)
     (placed,) = client.body("setFunctionBreakpoints", {"breakpoints": [{"name": "IN3"}]})["breakpoints"]
     assert not placed["verified"] and "no label #IN3" in placed["message"]
+
+
+REFUSED = """\
+DIM x
+x = 1
+x = (x +
+END
+#TIMER
+RETURN
+"""
+
+
+def test_breakpoints_in_a_program_the_compiler_refuses_say_so(debug: Debug) -> None:
+    """Nothing runs where the controller's compiler refuses the file (C2003 for the missing ')'): each
+    breakpoint names that error, not "no statement" on a line that has one or "no label" for one it has."""
+    client = debug(REFUSED)
+    placed = client.set_breakpoints(2)
+    functions = client.body("setFunctionBreakpoints", {"breakpoints": [{"name": "TIMER"}]})["breakpoints"]
+    for unverified in (*placed, *functions):
+        assert not unverified["verified"]
+        assert unverified["message"].startswith("does not compile: C2003: PROGRAM")
+        assert "[line 3]" in unverified["message"]
+    assert client.stopped()["reason"] == "exception"

@@ -32,9 +32,8 @@ from mintlang.cli.options import (
 )
 from mintlang.cli.settings import ProjectCommand
 from mintlang.dialect import Dialect
-from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.runtime.dialects import SIMULATED
-from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_CONTROLLERS
+from mintlang.runtime.hardware import CONTROLLERS
 
 
 @click.command(
@@ -62,7 +61,7 @@ from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_CONTROLLERS
 )
 @click.option(
     "--controller",
-    type=click.Choice([controller.value for controller in ControllerName] + list(V3_CONTROLLERS)),
+    type=click.Choice(CONTROLLERS),
     help="The controller to simulate: one of the v4 guide's for v4 (default nextmove-pci), "
     "one of the v3 guide's for v3 (default euroservo).",
 )

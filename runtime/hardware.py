@@ -17,6 +17,9 @@ from mintlang.keyworddb.model import Controller
 from mintlang.runtime.dialects.v3.controllers import DEFAULT as V3_DEFAULT
 from mintlang.runtime.dialects.v3.controllers import PROFILES as V3_PROFILES
 
+CONTROLLERS = (*(member.value for member in Controller), *V3_PROFILES)
+"""Every ``--controller`` the simulator takes: the v4 guide's (for v4 and MintMT), then the v3 guide's."""
+
 
 def machine(controller: Controller | str | None, dialect: Dialect | str = Dialect.V4) -> ControllerProfile:
     """The controller simulated for a program in ``dialect`` (by default the NextMove PCI for v4, the EuroServo

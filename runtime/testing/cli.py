@@ -25,11 +25,16 @@ from mintlang.cli.options import (
     version_option,
 )
 from mintlang.runtime.dialects import SIMULATED
+from mintlang.runtime.hardware import CONTROLLERS
 
 
 @click.command("test", context_settings=HELP_OPTIONS)
 @click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
-@click.option("--controller", help="The controller to simulate (default: the settings file's, else the dialect's).")
+@click.option(
+    "--controller",
+    type=click.Choice(CONTROLLERS),
+    help="The controller to simulate (default: the settings file's, else the dialect's).",
+)
 @click.option(
     "--dialect",
     type=click.Choice([dialect.value for dialect in SIMULATED]),

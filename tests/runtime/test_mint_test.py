@@ -107,6 +107,20 @@ def test_no_test_found_exits_5_and_a_missing_path_exits_2(tmp_path: Path) -> Non
     assert f"mint test: {tmp_path / 'absent'}: no such file or folder" in missing.output
 
 
+@pytest.mark.parametrize("controller", ["foo", "nextmove"], ids=["no controller", "a family, not a model"])
+def test_an_unknown_controller_is_a_usage_error_as_for_mint_run(tmp_path: Path, controller: str) -> None:
+    """The README's exit status 2 for a usage problem: not an error of every test found, then exit 1."""
+    _write(tmp_path, "a_passes.mnt", PASSING)
+    result = _mint_test(tmp_path, "--controller", controller)
+    assert result.exit_code == 2
+    assert f"Invalid value for '--controller': '{controller}' is not one of 'nextmove-pci'" in result.output
+
+
+def test_a_controller_of_the_v3_guide_is_taken_with_dialect_v3(tmp_path: Path) -> None:
+    _write(tmp_path, "a_passes.mnt", "REM @expect x = 1\nx = 1\nEND\n")  # v3 declares by assigning
+    assert _mint_test(tmp_path, "--controller", "euroservo", "--dialect", "v3").exit_code == 0
+
+
 def test_the_dialect_comes_from_the_settings_file_unless_given(tmp_path: Path) -> None:
     _write(tmp_path, "mint.toml", 'dialect = "mintmt"\n')
     _write(tmp_path, "blocks.mnt", 'REM @expect terminal is "a\\n"\nPrint "a"  \' MintMT\'s comment\n')

@@ -70,12 +70,14 @@ def check_application(
     config: str | None = None,
     select: tuple[str, ...] | None = None,
     ignore: tuple[str, ...] = (),
+    config_ignore: tuple[str, ...] | None = None,
     previous: Analysis | None = None,
 ) -> Analysis:
     """Parse and analyse a program with its optional configuration file; diagnostics per file.
 
     ``select`` and ``ignore`` take codes or their prefixes; without ``select`` the errors and
-    warnings are reported and the hints (I…) are not. ``previous`` is the analysis of an
+    warnings are reported and the hints (I…) are not. ``config_ignore`` is the configuration
+    file's own ``ignore`` (None: the program's). ``previous`` is the analysis of an
     earlier version of the same application (the language server's, before a keystroke):
     what the edit did not change is read from it, and the result is the same as without it."""
     from mintlang.analysis.analyser import analyse  # noqa: PLC0415 - see import_when_used
@@ -97,8 +99,8 @@ def check_application(
     program = read(source, before.program if before else None, configuration.macros if configuration else None)
     model = carry_model(before, program, configuration, profile(controller)) if before is not None else None
     if model is None:
-        return analyse(build_model(program, configuration, controller), select=select, ignore=ignore)
-    return analyse(model, select=select, ignore=ignore, previous=previous)
+        model, previous = build_model(program, configuration, controller), None
+    return analyse(model, select=select, ignore=ignore, config_ignore=config_ignore, previous=previous)
 
 
 def check(

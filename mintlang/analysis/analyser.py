@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from array import array
 from collections.abc import Callable, Hashable, Iterable, Iterator, Mapping, Sequence
-from functools import cache
+from functools import cache, partial
 from itertools import chain, repeat
 from operator import attrgetter
 
@@ -55,6 +55,10 @@ class Analysis:
     program: Sequence[Diagnostic]  # ``PlacedDiagnostics``: each made when read
     configuration: Sequence[Diagnostic]
     found: Found
+
+
+def _selected(code: str, *, select: tuple[str, ...] | None, ignore: tuple[str, ...]) -> bool:
+    return code_selected(code, select, ignore)
 
 
 def code_selected(code: str, select: Iterable[str] | None, ignore: Iterable[str]) -> bool:
@@ -188,9 +192,13 @@ def analyse(
     *,
     select: Iterable[str] | None = None,
     ignore: Iterable[str] = (),
+    config_ignore: Iterable[str] | None = None,
     previous: Analysis | None = None,
 ) -> Analysis:
     """All diagnostics of an application, per file, sorted by position.
+
+    ``config_ignore`` is what the configuration file ignores, when a ``per-file-ignores`` glob
+    matches it and not the program, or the other way round; None: ``ignore``.
 
     ``previous`` is the analysis of the version ``model`` was carried over from
     (``mintlang.semantic.carry``): what its edit did not touch is carried over too.
@@ -199,13 +207,11 @@ def analyse(
     if found is None:
         found = _find(model)
     select = tuple(select) if select is not None else None
-    ignore = tuple(ignore)
-
-    def selected(code: str) -> bool:
-        return code_selected(code, select, ignore)
-
+    ignores = {Unit.PROGRAM: tuple(ignore)}
+    ignores[Unit.CONFIGURATION] = ignores[Unit.PROGRAM] if config_ignore is None else tuple(config_ignore)
     per_unit: dict[Unit, Sequence[Diagnostic]] = {Unit.CONFIGURATION: ()}
     for unit, document in model.documents():
+        selected = partial(_selected, select=select, ignore=ignores[unit])
         placed = chain(
             document.lexer_issues,
             model.structures[unit].diagnostics,

@@ -46,11 +46,17 @@ class _Configuration:
     jobs: list[int] = field(default_factory=list)
     place: int = 0  # the index of the first job whose report follows it
 
+    def job(self, program: Path, options: CheckOptions, source: SourceFile | None = None) -> Job:
+        """The check of ``program`` with this file, whose findings its own settings' ``ignore`` and
+        ``per-file-ignores`` leave out, not the program's."""
+        return Job(program, options, self.source.text, source, configuration_ignore=self.options.ignore)
+
 
 @record(frozen=False, slots=False)
 class Plan:
     """The jobs of a run, the configuration files their programs see, and the problems found planning them."""
 
+    overrides: Overrides  # the command line's settings, for each configuration file's own
     jobs: list[Job] = field(default_factory=list)
     problems: list[Unchecked] = field(default_factory=list)
     hidden: set[int] = field(default_factory=set)  # jobs run for a configuration named alone: their report is not
@@ -63,14 +69,16 @@ class Plan:
         if unit is Unit.CONFIGURATION:
             self._add_configuration(path, settings, program=other, source=source)
             return
-        configuration = self._configuration(other, settings) if other is not None else None
+        configuration = self._configuration(other) if other is not None else None
         if other is not None and configuration is None:
             reason = f"not checked, as its configuration file {other} could not be read"
             self.problems.append(Unchecked(str(path), reason, f"{path}: {reason}"))
             return
-        self.jobs.append(Job(path, options_of(settings), configuration.source.text if configuration else None, source))
-        if configuration is not None:
-            configuration.jobs.append(len(self.jobs) - 1)
+        if configuration is None:
+            self.jobs.append(Job(path, options_of(settings), source=source))
+            return
+        configuration.jobs.append(len(self.jobs))
+        self.jobs.append(configuration.job(path, options_of(settings), source))
 
     @property
     def empty(self) -> bool:
@@ -87,18 +95,16 @@ class Plan:
     ) -> None:
         if self.configured(path):
             return  # reported with its programs
-        configuration = self._configuration(path, settings, source)
+        configuration = self._configuration(path, source)
         if configuration is None:
             return
         configuration.place = len(self.jobs)
         if program is not None:  # checked as the editor checks it: with its program, which is not reported
             self.hidden.add(len(self.jobs))
             configuration.jobs.append(len(self.jobs))
-            self.jobs.append(Job(program, options_of(settings), configuration.source.text))
+            self.jobs.append(configuration.job(program, options_of(settings)))
 
-    def _configuration(
-        self, path: Path, settings: FileSettings, source: SourceFile | None = None
-    ) -> _Configuration | None:
+    def _configuration(self, path: Path, source: SourceFile | None = None) -> _Configuration | None:
         """The configuration file ``path``, read once for the run (``source``: the text standard input gave under its
         name, not the file on disk); None (and a problem) if it cannot be read."""
         key = _key(path)
@@ -111,7 +117,8 @@ class Plan:
                 return self._fail(key, unread(error))
             if (binary := not_text(source)) is not None:
                 return self._fail(key, binary)
-            self._configurations[key] = _Configuration(source, options_of(settings), place=len(self.jobs))
+            options = options_of(settings_for(path, self.overrides))
+            self._configurations[key] = _Configuration(source, options, place=len(self.jobs))
         return self._configurations[key]
 
     def _fail(self, key: Path, problem: Unchecked) -> None:
@@ -148,7 +155,7 @@ def _key(path: Path) -> Path:
 def plan(files: Sequence[Path], overrides: Overrides, stdin: SourceFile | None = None) -> Plan:
     """The jobs of a run: standard input's program first, then the programs, then the configuration files named
     on their own. Raises SettingsError for a settings file that cannot be used."""
-    planned = Plan()
+    planned = Plan(overrides)
     if stdin is not None:
         planned.add(stdin.path, settings_for(stdin.path, overrides), stdin)
     for path in files:

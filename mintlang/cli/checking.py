@@ -60,6 +60,7 @@ class Job:
     options: CheckOptions
     configuration: str | None = None  # the text of the configuration file the program sees
     source: SourceFile | None = None
+    configuration_ignore: tuple[str, ...] | None = None  # the configuration file's own; None: the program's
     fixing: Fixing | None = None  # fix the program (--fix), and with which fixes
 
 
@@ -104,7 +105,12 @@ def check_file(job: Job) -> Checked:
     if (binary := not_text(source)) is not None:
         return Checked(None, problem=binary)
     options = job.options
-    arguments = {"dialect": options.dialect, "controller": options.controller, "ignore": options.ignore}
+    arguments = {
+        "dialect": options.dialect,
+        "controller": options.controller,
+        "ignore": options.ignore,
+        "config_ignore": job.configuration_ignore,
+    }
     if is_configuration(job.path):
         analysis = check_application("", config=source.text, select=options.select, **arguments)
         return Checked(FileReport(str(source.path), source.text, analysis.configuration))

@@ -123,6 +123,25 @@ def test_per_file_ignores_read_globs_as_ruff_does(tmp_path: Path, glob: str) -> 
     assert findings(old, deeper, new) == [("new.mnt", "W103")]
 
 
+@pytest.mark.parametrize(
+    ("glob", "expected"),
+    [
+        pytest.param("*.cfg", [("cell.mnt", "W103")], id="the configuration file's glob leaves out its finding"),
+        pytest.param("*.mnt", [("cell.cfg", "W103")], id="the program's glob leaves the configuration's in"),
+    ],
+)
+def test_per_file_ignores_follow_the_file_a_finding_is_in(
+    tmp_path: Path, glob: str, expected: list[tuple[str, str]]
+) -> None:
+    """A configuration file is reported with its program, yet under its own settings, as ruff matches a
+    per-file-ignores glob against the file a finding is in; whether found by a walk or named."""
+    write(tmp_path / "mint.toml", f'[per-file-ignores]\n"{glob}" = ["W103"]\n')
+    write(tmp_path / "cell.cfg", SPARE)
+    write(tmp_path / "cell.mnt", "DIM other\n")
+    assert findings(tmp_path) == expected
+    assert findings(tmp_path / "cell.mnt", tmp_path / "cell.cfg") == expected
+
+
 # ------------------------------------------------------------------ --show-settings
 
 

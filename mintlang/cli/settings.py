@@ -65,21 +65,24 @@ def overrides(
     if no_config and config_path is not None:
         raise click.UsageError("--config names the configuration file and --no-config pairs none: give one")
     params = context.params
-    config: Given[Path | None] | None = None
+    layer = exclusions(exclude, extend_exclude, force_exclude)
     if no_config:
-        config = Given(None, "--no-config")
+        layer = without_configuration(layer)
     elif config_path is not None:
-        config = Given(config_path, "--config")
+        layer = replace(layer, config=Given(config_path, "--config"))
     return replace(
-        exclusions(exclude, extend_exclude, force_exclude),
+        layer,
         controller=Given(Controller(params["controller"]), "--controller") if typed(context, "controller") else None,
         dialect=Given(Dialect(params["dialect"]), "--dialect") if typed(context, "dialect") else None,
         select=Given(select, "--select") if select is not None else None,
         extend_select=Given(extend_select, "--extend-select") if extend_select is not None else None,
         ignore=Given(ignore, "--ignore") if ignore is not None else None,
-        config_pairing=Given(None, "--no-config") if no_config else None,
-        config=config,
     )
+
+
+def without_configuration(layer: Overrides) -> Overrides:
+    """``layer`` with ``--no-config``: each program alone, no configuration file paired with it."""
+    return replace(layer, config_pairing=Given(None, "--no-config"), config=Given(None, "--no-config"))
 
 
 def exclusions(

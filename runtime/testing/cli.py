@@ -16,6 +16,7 @@ from mintlang.cli.options import (
     HELP_OPTIONS,
     color_option,
     drives_option,
+    exclude_options,
     exit_zero_option,
     format_option,
     jobs_option,
@@ -56,6 +57,8 @@ from mintlang.runtime.hardware import CONTROLLERS
     type=click.Path(dir_okay=False, path_type=Path),
     help="Where --coverage writes its lcov tracefile.  [default: lcov.info]",
 )
+@click.option("--no-config", is_flag=True, help="Run each program alone, without the configuration file beside it.")
+@exclude_options()
 @jobs_option("Tests run at once, on as many processes.  [default: 0, every core]")
 @click.option("--collect-only", is_flag=True, help="List the tests found (text or json) and run none.")
 @format_option(["text", "junit", "json"])

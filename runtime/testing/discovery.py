@@ -14,7 +14,7 @@ from mintlang.pairing import listed_as, names_in
 from mintlang.records import record
 from mintlang.runtime.scenario.directive_words import DIRECTIVE, meant_kind
 from mintlang.semantic.units import Unit
-from mintlang.settings import FileSettings, SettingsError, settings_for
+from mintlang.settings import FileSettings, Overrides, SettingsError, settings_for
 from mintlang.source import read_source
 
 SCENARIO_SUFFIX = ".scenario.toml"
@@ -48,31 +48,31 @@ class Unreadable:
         return cls(f"{path}: {reason}")
 
 
-def discover(paths: Iterable[Path]) -> tuple[list[TestCase], list[Unreadable]]:
-    """The tests under ``paths`` (files or folders, searched recursively as ``mint check`` searches them), in
-    path order, each once."""
+def discover(paths: Iterable[Path], overrides: Overrides | None = None) -> tuple[list[TestCase], list[Unreadable]]:
+    """The tests under ``paths`` (files or folders, searched recursively as ``mint check`` searches them, less
+    what the settings under ``overrides`` exclude), in path order, each once."""
     paths = list(paths)
-    found = find(paths)
+    found = find(paths, overrides=overrides)
     problems = [Unreadable.at(Path(error.filename), _reason(error)) for error in found.unreadable]
     # each scenario file with no program once, by the file it is: named and below a folder named, or in two spellings
-    orphans = {orphan.resolve(): orphan for orphan in reversed(_scenarios_without_program(paths))}
+    orphans = {orphan.resolve(): orphan for orphan in reversed(_scenarios_without_program(paths, overrides))}
     cases: dict[Path, TestCase] = {}
     for named in found.files:
         program = _program_of(named, orphans)
-        case = _case(program, problems) if program is not None else None
+        case = _case(program, problems, overrides) if program is not None else None
         if case is not None:
             cases.setdefault(program.resolve(), case)
     problems += sorted((_orphan(orphan) for orphan in orphans.values()), key=lambda orphan: orphan.message)
     return sorted(cases.values(), key=lambda case: str(case.program)), problems
 
 
-def _scenarios_without_program(paths: Iterable[Path]) -> list[Path]:
+def _scenarios_without_program(paths: Iterable[Path], overrides: Overrides | None) -> list[Path]:
     """Scenario files below the folders with no program of their name beside them: a misnamed program or
     scenario would otherwise leave its test unrun without a word (folders that cannot be listed ``find``
     reports; what the settings exclude ``find`` leaves out, and so does this)."""
     orphans = []
     for directory in (path for path in paths if path.is_dir()):
-        for folder, names in walk(directory, lambda name: name.lower().endswith(SCENARIO_SUFFIX)):
+        for folder, names in walk(directory, lambda name: name.lower().endswith(SCENARIO_SUFFIX), overrides):
             listing = names_in(Path(folder))
             orphans += [Path(folder, name) for name in names if listed_as(_program_name(name), listing) is None]
     return orphans
@@ -106,7 +106,7 @@ def _reason(error: OSError) -> str:
     return error.strerror or str(error)
 
 
-def _case(program: Path, problems: list[Unreadable]) -> TestCase | None:
+def _case(program: Path, problems: list[Unreadable], overrides: Overrides | None) -> TestCase | None:
     scenario_name = listed_as(program.stem + SCENARIO_SUFFIX, names_in(program.parent))
     if scenario_name is not None:
         return TestCase(program, program.parent / scenario_name)
@@ -118,7 +118,8 @@ def _case(program: Path, problems: list[Unreadable]) -> TestCase | None:
     if (binary := source.binary()) is not None:
         problems.append(Unreadable(binary))
         return None
-    return TestCase(program, None) if _expects(source.text) or _expects_in_configuration(program) else None
+    with_expectations = _expects(source.text) or _expects_in_configuration(program, overrides)
+    return TestCase(program, None) if with_expectations else None
 
 
 def configuration_of(program: Path, settings: FileSettings) -> Path | None:
@@ -127,11 +128,11 @@ def configuration_of(program: Path, settings: FileSettings) -> Path | None:
     return partner if unit is Unit.PROGRAM else None
 
 
-def _expects_in_configuration(program: Path) -> bool:
+def _expects_in_configuration(program: Path, overrides: Overrides | None) -> bool:
     """Whether the configuration file of ``program`` has an ``@expect`` line; a settings or configuration file
     that cannot be read is not looked into here (the run of a test reports it)."""
     try:
-        configuration = configuration_of(program, settings_for(program))
+        configuration = configuration_of(program, settings_for(program, overrides))
         return configuration is not None and _expects(read_source(configuration).text)
     except (OSError, SettingsError, ValueError):
         return False

@@ -25,7 +25,7 @@ from mintlang.runtime.scenario.stimulus import DrivesEnabled, merge
 from mintlang.runtime.simulation import Limits, Stop, StopReason
 from mintlang.runtime.testing.coverage import FileCoverage, Recorder
 from mintlang.runtime.testing.discovery import TestCase, configuration_of
-from mintlang.settings import FileSettings, SettingsError, settings_for
+from mintlang.settings import FileSettings, Overrides, SettingsError, settings_for
 from mintlang.source import read_source
 
 
@@ -77,6 +77,7 @@ class Options:
     max_wall_s: float | None = 60.0
     drives_enabled: bool = False
     coverage: bool = False
+    overrides: Overrides = Overrides()  # the command line's layer above the settings file (--no-config)
 
 
 def run_case(case: TestCase, options: Options) -> TestResult:
@@ -92,7 +93,7 @@ def run_case(case: TestCase, options: Options) -> TestResult:
 
 
 def _run(case: TestCase, options: Options, began: float) -> TestResult:
-    settings = settings_for(case.program)
+    settings = settings_for(case.program, options.overrides)
     dialect = options.dialect or settings.dialect.value
     controller = options.controller or _configured_controller(settings, dialect)
     simulated = machine(controller, dialect)

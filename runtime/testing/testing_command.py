@@ -15,6 +15,7 @@ import click
 
 from mintlang.cli.options import refuse_quiet_and_verbose
 from mintlang.cli.parallel import all_cores, map_in_order
+from mintlang.cli.settings import exclusions, without_configuration
 from mintlang.cli.terminal import console, destination, reader_may_leave, refuse_overwriting, write_in_pieces
 from mintlang.dialect import Dialect
 from mintlang.runtime.outputs import OutputProblem, check_report
@@ -40,6 +41,10 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     drives: str | None,
     coverage: bool,
     lcov: Path | None,
+    no_config: bool,
+    exclude: tuple[str, ...] | None,
+    extend_exclude: tuple[str, ...] | None,
+    force_exclude: bool | None,
     jobs: int | None,
     collect_only: bool,
     output_format: str,
@@ -56,7 +61,9 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     if lcov is not None and not coverage:  # else the run ends with no tracefile and no word of why
         raise click.UsageError(f"--lcov {lcov} names the tracefile --coverage writes: add --coverage")
     tracefile_path = lcov or Path("lcov.info")
-    cases, unreadable = discover(paths or (Path(),))
+    layer = exclusions(exclude, extend_exclude, force_exclude)
+    layer = without_configuration(layer) if no_config else layer
+    cases, unreadable = discover(paths or (Path(),), layer)
     errors = console(color, stderr=True)
     for problem in unreadable:
         errors.print(f"mint test: {problem.message}", markup=False)
@@ -72,7 +79,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     for output in (output_file, tracefile_path if coverage else None):
         refuse_overwriting(output, inputs, _fail)
         _writable(output)
-    options = Options(controller, Dialect(dialect) if dialect else None, until_ms, max_wall_s, enabled, coverage)
+    options = Options(controller, Dialect(dialect) if dialect else None, until_ms, max_wall_s, enabled, coverage, layer)
     began = time.perf_counter()
     results = map_in_order(
         partial(run_case, options=options),

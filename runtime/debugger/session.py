@@ -320,6 +320,9 @@ class Session:
     def scopes(self, arguments: dict[str, Any]) -> dict[str, Any]:
         execution, controller = self._paused()
         assert execution.evaluator is not None
+        frame = _whole(arguments.get("frameId"), "'frameId'")
+        if not 1 <= frame <= len(controller.vm.frames) + 1:  # stackTrace's ids: 1, the top, to the program's
+            raise RequestError(f"no frame {frame} at this stop")  # Mint's variables are global: one set for all
         found = []
         for name, node, count in scopes(controller, execution.evaluator, self.spellings):
             reference = self.references.add(node, count > 0)

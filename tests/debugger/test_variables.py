@@ -28,6 +28,15 @@ def test_each_axis_shows_what_the_program_would_read_of_it(debug: Debug) -> None
     assert client.evaluate("POS.0 * 2") == "20"
 
 
+@pytest.mark.parametrize("frame", [pytest.param(0, id="zero"), pytest.param(2, id="past-the-program")])
+def test_scopes_of_a_frame_the_stop_does_not_have_fail(debug: Debug, frame: int) -> None:
+    # stopped in the program with no call open, the stack holds one frame, id 1 (DAP: a frameId from stackTrace)
+    client = debug(MOVE, breakpoints=(7,), drives="enabled")
+    client.stopped()
+    response = client.request("scopes", {"frameId": frame})
+    assert (response["success"], response["message"]) == (False, f"no frame {frame} at this stop")
+
+
 def test_arrays_page_their_elements_from_one(debug: Debug) -> None:
     client = debug(MOVE, breakpoints=(7,), drives="enabled")
     client.stopped()

@@ -84,6 +84,7 @@ class Session:
         self.spellings: dict[str, str] = {}
         self.layout = Layout()
         self.first_column = 1  # the client's number for a line's first column
+        self.initialized = False  # an initialize answered: a client whose initialize failed would count lines wrongly
         self._handlers: dict[str, Callable[[dict[str, Any]], dict[str, Any] | None]] = {
             "initialize": self.initialize,
             "launch": self.launch,
@@ -207,9 +208,12 @@ class Session:
         if not arguments.get("linesStartAt1", True):
             raise RequestError("mint-dap counts lines from 1, as Mint does: the client must too")
         self.first_column = 1 if arguments.get("columnsStartAt1", True) else 0
+        self.initialized = True
         return CAPABILITIES
 
     def launch(self, arguments: dict[str, Any]) -> None:
+        if not self.initialized:  # DAP: initialize comes first; a refused one (lines from 0) is not an answer
+            raise RequestError("no initialize has succeeded: send initialize, counting lines from 1, first")
         if self.application is not None:
             raise RequestError("this session has already launched a program")
         application = prepare(arguments)

@@ -123,6 +123,21 @@ def test_an_unknown_request_and_one_before_launch_get_error_responses() -> None:
     assert "Traceback" not in client.close()
 
 
+def test_a_launch_after_an_initialize_counting_lines_from_0_is_refused(tmp_path: Path) -> None:
+    # mint-dap counts lines from 1, as the guide numbers them (ERL): a client counting from 0 would be one off
+    program = tmp_path / "p.mnt"
+    program.write_text("DIM x\n", encoding="utf-8")
+    client = DapClient()
+    refused = client.request("initialize", {"adapterID": "mint", "linesStartAt1": False})
+    assert not refused["success"]
+    launch = client.request("launch", {"program": str(program)})
+    assert (launch["success"], launch["message"]) == (
+        False,
+        "no initialize has succeeded: send initialize, counting lines from 1, first",
+    )
+    assert "Traceback" not in client.close()
+
+
 def test_a_launch_it_cannot_start_says_why(tmp_path: Path) -> None:
     program = tmp_path / "p.mnt"
     program.write_text("DIM x\n", encoding="utf-8")

@@ -8,6 +8,7 @@ from mintlang.records import record
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.motion.axis import Axis
+from mintlang.runtime.scenario.expectations import NO_SUCH_THING
 
 
 @record
@@ -63,31 +64,42 @@ class Observation:
         return tuple(range(len(self.c.axes)))
 
     def value(self, target: str) -> float | None:
+        try:
+            return self._read(target)
+        except (MintError, NotSimulated):  # no value to give (a Mint v3 ERR before any error)
+            return None
+
+    def why_unread(self, target: str) -> str:
+        try:
+            self._read(target)
+        except (MintError, NotSimulated) as error:
+            return str(error)
+        return NO_SUCH_THING
+
+    def _read(self, target: str) -> float | None:
+        """The value of ``target``, None when the run has no such thing; raises what reading it raises."""
         found = _TARGET.fullmatch(target)
         if found is None:
             return None
         name, channel, index = found["name"], found["channel"], found["index"]
         access = self.c.table.get(name)
-        try:
-            if name in _CONSUMING:  # reading these changes the controller: look without touching
-                return _CONSUMING[name](self.c, int(channel) if channel is not None else None)
-            if access is not None and access.read is not None:
-                if index is not None:
-                    return access.read(int(index))
-                return access.read(int(channel) if channel is not None else None)
-            names = self.c.linked.names
-            identity = name[:10]
+        if name in _CONSUMING:  # reading these changes the controller: look without touching
+            return _CONSUMING[name](self.c, int(channel) if channel is not None else None)
+        if access is not None and access.read is not None:
             if index is not None:
-                slot = names.arrays.get(identity)
-                if slot is None:
-                    return None
-                values = self.c.vm.arrays[slot]
-                position = int(index)
-                return values[position - 1] if 1 <= position <= len(values) else None
-            slot = names.scalars.get(identity)
-            return self.c.vm.scalars[slot] if slot is not None else None
-        except (MintError, NotSimulated):  # no value to give (a Mint v3 ERR before any error)
-            return None
+                return access.read(int(index))
+            return access.read(int(channel) if channel is not None else None)
+        names = self.c.linked.names
+        identity = name[:10]
+        if index is not None:
+            slot = names.arrays.get(identity)
+            if slot is None:
+                return None
+            values = self.c.vm.arrays[slot]
+            position = int(index)
+            return values[position - 1] if 1 <= position <= len(values) else None
+        slot = names.scalars.get(identity)
+        return self.c.vm.scalars[slot] if slot is not None else None
 
 
 @record
@@ -106,6 +118,9 @@ class Refused:
 
     def value(self, target: str) -> float | None:
         return {"ERR": self.err, "ERL": self.erl}.get(target)
+
+    def why_unread(self, target: str) -> str:
+        return NO_SUCH_THING
 
 
 def _inputs(controller: Controller, channel: int | None) -> float:

@@ -127,6 +127,9 @@ class StoppedExpectation:
 Expectation = ValueExpectation | TerminalExpectation | StoppedExpectation
 
 
+NO_SUCH_THING = "no such thing in this run"  # a target the run does not have: no variable, keyword or axis of it
+
+
 class Observer(Protocol):
     """The simulator's view of the controller at the moment expectations are checked."""
 
@@ -155,7 +158,11 @@ class Observer(Protocol):
         ...
 
     def value(self, target: str) -> float | None:
-        """The value of a canonical target (``POS.0``, ``OUT``, ``COMMS(5)``, ``COUNT``); None if it does not exist."""
+        """The value of a canonical target (``POS.0``, ``OUT``, ``COMMS(5)``, ``COUNT``); None if it has none."""
+        ...
+
+    def why_unread(self, target: str) -> str:
+        """Why ``value`` gives no value for ``target``: ``NO_SUCH_THING``, or why the simulator has none to give."""
         ...
 
 
@@ -195,9 +202,13 @@ def _evaluate_value(expectation: ValueExpectation, observe: Observer) -> Outcome
     if not names:
         return Outcome(expectation, False, "no axes", "the controller has no axes to check")
     readings = {name: observe.value(name) for name in names}
-    missing = [name if target.every_axis else target.name for name, value in readings.items() if value is None]
+    missing = [name for name, value in readings.items() if value is None]
     if missing:  # named as the report names the target: a variable as the program spells it
-        return Outcome(expectation, False, "missing", f"no such thing in this run: {', '.join(missing)}")
+        reasons = {(name if target.every_axis else target.name): observe.why_unread(name) for name in missing}
+        if set(reasons.values()) == {NO_SUCH_THING}:
+            return Outcome(expectation, False, "missing", f"{NO_SUCH_THING}: {', '.join(reasons)}")
+        detail = "; ".join(why if len(reasons) == 1 else f"{name}: {why}" for name, why in reasons.items())
+        return Outcome(expectation, False, "missing", detail)  # NotSimulated's message names the keyword
     values = {name: value for name, value in readings.items() if value is not None}
     failing = [
         name

@@ -19,6 +19,7 @@ from mintlang.runtime.scenario import (
     parse_directives,
     render_outcomes,
 )
+from mintlang.runtime.scenario.expectations import NO_SUCH_THING
 
 
 @dataclass(frozen=True, slots=True)
@@ -39,6 +40,9 @@ class FakeRun:
 
     def value(self, target: str) -> float | None:
         return self.values.get(target)
+
+    def why_unread(self, target: str) -> str:
+        return NO_SUCH_THING
 
 
 def expect(sentence: str) -> Expectation:

@@ -335,3 +335,13 @@ def test_a_test_whose_expectations_cannot_be_read_points_at_the_line(
     (test,) = json.loads(_mint_test(tested, "--format", "json").output)["tests"]
     assert (test["verdict"], test["place"]) == ("error", str(tmp_path / at))
     assert test["message"].startswith(str(tmp_path / at))
+
+
+def test_a_target_the_simulator_has_no_value_for_says_why_not_that_it_is_missing(tmp_path: Path) -> None:
+    # Mint v3's ERR before any error: the v3 guide gives it no value, and the simulator stops on reading it
+    _write(tmp_path, "early.mnt", "REM @expect ERR = 0\nA = 1\n")
+    result = _mint_test("--dialect", "v3", tmp_path)
+    assert result.exit_code == 1
+    reason = "ERR (read before any error, or after one on no axis: the guide gives no value) is not simulated"
+    assert f"got missing ({reason} by mint-run)" in result.stdout
+    assert "no such thing" not in result.stdout

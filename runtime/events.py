@@ -22,6 +22,7 @@ from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.io_banks import BankSelection
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.ranges import ranged, table_default
+from mintlang.semantic.events import event_of
 
 ONERROR_REENTRY_LIMIT = 100  # consecutive re-entries of #ONERROR with an error still latched (AX-7 RC)
 
@@ -171,9 +172,8 @@ class Events:
     def _lowest_handled(self, kind: EventClass) -> int:
         """The number of the class's lowest-numbered handler (0 when there is none): what a forced event runs."""
         label = _LABELS[kind]
-        numbers = (name[len(label) :] for name in self._running_handlers() if name.startswith(label))
-        # #IN01 is a plain label, not input 1's handler (mintlang.semantic.events): numbers as _handler spells them
-        return min((int(number) for number in numbers if number.isdigit() and str(int(number)) == number), default=0)
+        events = (event_of(name) for name in self._running_handlers())  # #IN01 is a plain label, no handler's
+        return min((e.number for e in events if e is not None and e.kind == label and e.number is not None), default=0)
 
     # ------------------------------------------------------------ dispatching
 

@@ -128,12 +128,17 @@ def _continuations(words: frozenset[str]) -> Iterator[types.CompletionItem]:
             yield _keyword_item(word)
 
 
+def _current_statement(before: list[Token]) -> list[Token]:
+    """The tokens of the statement the cursor is in: those after the last word or colon that starts one."""
+    starts = [index for index, token in enumerate(before) if token.kind in _STATEMENT_STARTERS]
+    return before[starts[-1] + 1 :] if starts else before
+
+
 def _statement_words(snapshot: Snapshot, before: list[Token]) -> frozenset[str]:
     """The words that may go on with the statement the cursor is in, after an operand: THEN or DO in an IF
     (000:11797, 11853), TO once a FOR has its '=' and then STEP (000:10887), USING once in a PRINT, INPUT or
     LINE (000:15295, 12212, 13657); none in any other statement."""
-    starts = [index for index, token in enumerate(before) if token.kind in _STATEMENT_STARTERS]
-    statement = before[starts[-1] + 1 :] if starts else before
+    statement = _current_statement(before)
     if not statement:
         return frozenset()
     written = {token.kind for token in statement[1:]}
@@ -153,8 +158,7 @@ def _statement_words(snapshot: Snapshot, before: list[Token]) -> frozenset[str]:
 def _at_input_target(before: list[Token]) -> bool:
     """Whether the cursor is where INPUT takes the variable it fills, after ``INPUT``, its terminal or its
     prompt and comma (INPUT {#<terminal>} {string,} variable, 000:12212): a name, never a value read."""
-    starts = [index for index, token in enumerate(before) if token.kind in _STATEMENT_STARTERS]
-    kinds = [token.kind for token in before[starts[-1] + 1 :]] if starts else [token.kind for token in before]
+    kinds = [token.kind for token in _current_statement(before)]
     if kinds[:1] != [TokenKind.INPUT]:
         return False
     rest = kinds[3:] if kinds[1:2] == [TokenKind.HASH] else kinds[1:]
@@ -391,7 +395,7 @@ def _inside_text(tokens: list[Token]) -> bool:
 
 def _handled_elsewhere(snapshot: Snapshot, line: int) -> set[object]:
     """The events whose handler the program already has, on a line other than ``line`` (0-based): a second
-    handler of one event is a label defined twice (E1001), and the one on the cursor's line is being typed."""
+    handler of one event is a label defined twice (E3004), and the one on the cursor's line is being typed."""
     positions, dialect = snapshot.positions, snapshot.settings.dialect
     return {
         event_of(label.name, dialect)

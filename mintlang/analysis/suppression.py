@@ -56,7 +56,8 @@ class Directive:
     entries: tuple[Entry, ...]
     span: Span  # from REM to the closing bracket (to the end of the line when none closes the list)
     line: Span
-    statement_end: int  # where the statements before the comment end (its start on a line of its own)
+    statement_end: int  # where the statements before the comment end (its line's start on a line of its own)
+    next_line: int  # where the next physical line starts (the file's end after the last)
     closed: bool = True  # whether a ``]`` ends its list; one that does not names no code
     opener: str = "REM"  # what opens the comment: REM, or MintMT's '
 
@@ -71,6 +72,7 @@ class Directive:
             self.span.shifted(offset),
             self.line.shifted(offset),
             self.statement_end + offset,
+            self.next_line + offset,
             self.closed,
             self.opener,
         )
@@ -103,6 +105,7 @@ def directives(document: Document, start: int = 0, end: int | None = None) -> tu
                 span=Span(offset + match.start(), offset + match.end()),
                 line=Span(offset, offset + lexed.content_end),
                 statement_end=statement_end,
+                next_line=offsets[index + 1] if index + 1 < len(offsets) else len(document.source),
                 closed=closed,
                 opener=match["opener"].rstrip(),
             )
@@ -205,10 +208,13 @@ def _removal(directive: Directive, entry: Entry, *, safe: bool) -> Fix:
 
 
 def _without_comment(directive: Directive) -> Edit:
-    """The directive's removal: with the ``:`` and space before it after a statement; any text after it stays."""
+    """The directive's removal: with the ``:`` and space before it after a statement, with its whole line
+    (line break included) when it is alone there; any text after it stays."""
     rest_of_line = directive.span.end < directive.line.end
     if rest_of_line:
         return Edit(directive.span, directive.opener)  # REM mint: ignore[W103] because ... -> REM because ...
+    if directive.statement_end == directive.line.start:
+        return Edit(Span(directive.line.start, directive.next_line), "")
     return Edit(Span(directive.statement_end, directive.span.end), "")
 
 

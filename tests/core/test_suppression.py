@@ -110,7 +110,9 @@ def test_an_unused_suppression_can_itself_be_silenced() -> None:
     ("source", "after"),
     [
         pytest.param("DIM a : REM mint: ignore[W103]\nPRINT a\n", "DIM a\nPRINT a\n", id="after-a-statement"),
-        pytest.param("  REM mint: ignore[W103]\nPRINT 1\n", "\nPRINT 1\n", id="own-line"),
+        pytest.param("  REM mint: ignore[W103]\nPRINT 1\n", "PRINT 1\n", id="own-line-goes-with-it"),
+        pytest.param("PRINT 1\r\nREM mint: ignore[W103]\r\nPRINT 2\r\n", "PRINT 1\r\nPRINT 2\r\n", id="crlf"),
+        pytest.param("PRINT 1\nREM mint: ignore-file[W103]", "PRINT 1\n", id="last-line-unended"),
         pytest.param("PRINT 1 : REM mint: ignore[W103] why\n", "PRINT 1 : REM why\n", id="words-stay"),
     ],
 )

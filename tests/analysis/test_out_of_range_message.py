@@ -25,6 +25,13 @@ def test_the_message_shows_the_value_in_full(controller: str, value: str, shown:
     assert diagnostic.code == "E0003" and shown in diagnostic.message
 
 
+def test_a_constant_is_named_beside_its_value() -> None:
+    # MintDrive's DRIVEENABLEOUTPUT takes -1, 0, 1, 2 or 4 (000:9338), no relay: _RELAY0 is 1000 (000:9362)
+    (diagnostic,) = mintlang.check("DRIVEENABLEOUTPUT.0 = _RELAY0\n", controller="mintdrive")
+    assert diagnostic.code == "E0003"
+    assert diagnostic.message.endswith("_RELAY0 (1000) is outside the range of DRIVEENABLEOUTPUT (-1, 0, 1, 2, or 4)")
+
+
 def test_the_error_points_at_the_value() -> None:
     assert placed_codes("TIME = 0\nTIME = 16777216\n") == [("E0003", 2, 8)]
 

@@ -66,10 +66,16 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             elif limits is not None and not (
                 _scaled_can_hold(limits, number, least) if scaled else limits.holds(number)
             ):
-                detail = f"{number:.15g} is outside the range of {label} ({limits.text})"
+                detail = f"{_as_written(value, number)} is outside the range of {label} ({limits.text})"
                 if scaled:
                     detail += " whatever the scale factor" + (f" (at least {least:g})" if least else "")
                 yield Finding(use.unit, mint_error(3, value.span, detail))
+
+
+def _as_written(value: n.Expression, number: float) -> str:
+    """The value as a message shows it: a constant by its name too (``_RELAY0 (1000)``), as the line reads it."""
+    shown = f"{number:.15g}"
+    return f"{value.name} ({shown})" if isinstance(value, n.ConstantRef) else shown
 
 
 def _ranged_as(ref: n.KeywordRef, keyword: Keyword | None, dialect: Dialect) -> tuple[str, str]:

@@ -166,8 +166,11 @@ class AxisValues(_ReadOnly):
             for keyword in AXIS_KEYWORDS
         ]
         loaded = len(self.axis.buffer)
-        running = "a move running" if self.axis.move is not None else "no move running"
-        found.append(Variable("move buffer", f"{running}, {loaded} loaded", None, MoveBuffer(self.axis, self.axes)))
+        running = self.axis.move is not None
+        summary = f"{'a move' if running else 'no move'} running, {loaded} loaded"
+        # an empty buffer has nothing to show: the editor offers no arrow to expand it
+        contents = MoveBuffer(self.axis, self.axes) if running or loaded else None
+        found.append(Variable("move buffer", summary, None, contents))
         return found
 
 

@@ -151,6 +151,13 @@ def test_each_axis_shows_its_move_running_and_those_loaded_behind_it(debug: Debu
     assert moves["(1)"].endswith("axes [0], to 20") and moves["(2)"].endswith("axes [0], to 5")
 
 
+def test_an_empty_move_buffer_offers_nothing_to_expand(debug: Debug) -> None:
+    client = debug("DIM x\nx = 1\n", breakpoints=(2,))
+    client.stopped()
+    buffer = _move_buffer(client)
+    assert buffer["value"] == "no move running, 0 loaded" and buffer["variablesReference"] == 0
+
+
 SPELLED = [
     pytest.param("REM the count of boxes\nDIM Count\nCount = 1\nPRINT Count\n", "v4", id="a REM comment before it"),
     pytest.param('PRINT "count"\nDIM Count\nCount = 1\nPRINT Count\n', "v4", id="a string before it"),

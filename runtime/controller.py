@@ -179,7 +179,21 @@ def build_controller(
     motion.on_error = lambda axis, bit: supervisor.error(axis, bit, clock.now)
     vm.on_fatal = abort_all
     vm.announce = terminal.announce if layer is not None else _shown_while_echoed(terminal.announce, inert)
-    events.errors_latched = lambda: any(axis.axiserror & ~supervisor.smart.waiting(axis) for axis in axes)
+
+    def in_error(axis: Axis) -> bool:
+        return bool(axis.axiserror & ~supervisor.smart.waiting(axis))
+
+    def onerror_again(number: int) -> None:
+        """#ONERROR is called again because an axis is still in error: ERRAXIS names an axis that is
+        (000:9933-9936), the one it named if it still is, and ERR its motion error; ERL is left as it was."""
+        named = int(vm.erraxis)
+        if not (0 <= named < len(axes) and in_error(axes[named])):
+            named = number
+        error = vm.errors.motion_error(named, axes[named].axiserror)
+        vm.record_error(vm.errors.number(error) or 0, int(vm.erl), named)
+
+    events.axis_in_error = lambda: next((axis.number for axis in axes if in_error(axis)), None)
+    events.on_onerror_again = onerror_again
 
     events.on_fastin_return = lambda number: setattr(system, "fast_armed", True)
     wired = profile.fast_inputs if profile.fast_inputs_are_digital_inputs else frozenset()

@@ -116,7 +116,8 @@ class Events:
         self.configuration_handlers: Mapping[str, int] = {}
         self.in_configuration: Callable[[], bool] = lambda: False  # whether the configuration file is running
         self.on_runaway = on_runaway
-        self.errors_latched: Callable[[], bool] = lambda: False
+        self.axis_in_error: Callable[[], int | None] = lambda: None  # the lowest-numbered axis with an error latched
+        self.on_onerror_again: Callable[[int], None] = lambda axis: None  # ERR and ERRAXIS for a call made again
         self.on_fastin_return: Callable[[int], None] = lambda number: None
         self.disabled: frozenset[EventClass] = frozenset()  # EVENTDISABLE / HANDLERDISABLE
         self.disabled_unmodelled = 0  # bits written to that mask for handlers not simulated (NextMove's serial event)
@@ -227,7 +228,8 @@ class Events:
             self.on_fastin_return(number)
         if kind is not EventClass.ERROR:
             return
-        if not self.dispatch.onerror_repeats or not self.errors_latched():
+        axis = self.axis_in_error() if self.dispatch.onerror_repeats else None
+        if axis is None:
             self._onerror_entries = 0
             return
         if self._onerror_entries >= ONERROR_REENTRY_LIMIT:
@@ -236,6 +238,7 @@ class Events:
                 " (clear it with CANCEL or RESET)"
             )
             return
+        self.on_onerror_again(axis)
         self.raise_event(EventClass.ERROR)
 
     def _refresh(self) -> None:

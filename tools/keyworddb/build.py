@@ -65,7 +65,7 @@ def build(seeds: Path, spec: Path) -> dict[str, Any]:
     conflicts += shared_abbreviations(keywords, chapter10_abbreviations(v4))
     errors = build_errors(v4)
     constants, constant_conflicts, keywords = _constants(v4, keywords, errors)
-    keywords = with_constant_ranges(keywords, constants)
+    keywords = with_constant_ranges(keywords, constants, v4)
     keywords = with_described_ranges(keywords, constants, v4)
     keywords, bit_conflicts = with_bit_ranges(keywords, constants, v4)
     keywords, default_conflicts = with_default_ranges(keywords)

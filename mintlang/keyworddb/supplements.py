@@ -115,14 +115,24 @@ INPUT_PATTERNS = frozenset({"INPUTMODE", "INPUTACTIVELEVEL", "INPUTPOSTRIGGER", 
 """Bitmaps of the digital inputs, one bit an input (000:12315-12316, 12293): each row of their tables prints the
 pattern of all the controller's inputs (NextMove PCI's 20 are 0 ≤ x ≤ 1048575: 000:11928, 12336)."""
 
+OUTPUT_PATTERNS = frozenset({"OUT"})
+"""Bitmaps of the digital outputs, one bit an output (OUT = 266 sets outputs 1, 3 and 8, 000:14922-14924): each row
+of OUT's table prints the pattern of all the controller's outputs (NextMove BX's 8 are 0 ≤ x < 256, 000:14911)."""
 
-def input_pattern_range(keyword: str, controller: Controller) -> ValueRange | None:
-    """The range of an ``INPUT_PATTERNS`` keyword on a controller whose row prints none (ServoNode 51): the
-    pattern of a bank of its inputs, as the printed rows are, from the banks ``mint-run`` holds the writes to
-    (``controllers.io_banks``: 6 inputs, 0 to 63, 000:11932)."""
-    if keyword not in INPUT_PATTERNS:
+
+def pattern_range(keyword: str, controller: Controller) -> ValueRange | None:
+    """The range of an ``INPUT_PATTERNS`` or ``OUTPUT_PATTERNS`` keyword on a controller whose row prints none
+    (ServoNode 51): the pattern of a bank of its inputs or outputs, as the printed rows are, from the banks
+    ``mint-run`` holds the writes to (``controllers.io_banks``: 6 inputs, 0 to 63, and 3 outputs, 0 to 7,
+    000:4048)."""
+    banks = io_banks(profile(controller))
+    if keyword in INPUT_PATTERNS:
+        bits = banks.inputs
+    elif keyword in OUTPUT_PATTERNS:
+        bits = banks.outputs
+    else:
         return None
-    top = (1 << io_banks(profile(controller)).inputs) - 1
+    top = (1 << bits) - 1
     return ValueRange(f"0 ≤ x ≤ {top}", 0.0, float(top), fractional=False)
 
 

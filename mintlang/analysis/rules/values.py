@@ -43,7 +43,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         positive = name in supplements.POSITIVE_ONLY
         limits = supplements.narrowed(name, attributes.range if attributes is not None else None)
         if limits is None and attributes is not None and dialect.modern:
-            limits = supplements.input_pattern_range(name, controller)  # ServoNode 51's rows print none
+            limits = supplements.pattern_range(name, controller)  # ServoNode 51's rows print none
         if limits is not None and limits.allowed is None and limits.minimum is None and limits.maximum is None:
             limits = None  # TRIGGERMODE's "whole numbers": the whole test below is all there is
         whole = supplements.whole_only(name, dialect)

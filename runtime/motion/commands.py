@@ -266,7 +266,10 @@ class Motion:
                 axis.hold = origin
             else:
                 axis.begin(
-                    PlannedMove(MD_JOG, (axis.number,), Geometry((origin,), (1.0,)), ramp, start, buffered=False), 0
+                    PlannedMove(
+                        MD_JOG, (axis.number,), Geometry((origin,), (1.0,)), ramp, start, buffered=False, jog=True
+                    ),
+                    0,
                 )
             axis.jog_speed = speed
             axis.pending_mode = MD_JOG if speed else 0

@@ -60,6 +60,6 @@ def release(motion: Motion, held: Held) -> None:
         )
     else:
         profile = plan_velocity(velocity, move.profile.final_velocity, p["ACCEL"], p["DECEL"])
-        resumed = PlannedMove(move.mode, move.axes, move.geometry, profile, tick, s, buffered=False)
+        resumed = PlannedMove(move.mode, move.axes, move.geometry, profile, tick, s, buffered=False, jog=move.jog)
     for index, member in enumerate(members):
         member.begin(resumed, index)

@@ -103,6 +103,7 @@ class PlannedMove:
     live: bool = False
     feedrate: float | None = None  # the slew speed it keeps (FEEDRATEMODE), counts/s; None: the master's in force
     holds: PlannedMove | None = None  # the positional move this ramp holds at rest to resume (AX-18 mode 1, MT-16)
+    jog: bool = False  # a JOG ramp, JOG = 0 included: rates written on the fly re-plan it (000:3103-3104)
     end: int = field(default=NEVER)
 
     def __post_init__(self) -> None:
@@ -150,10 +151,10 @@ class PlannedMove:
             return self
         s, velocity = self.path(tick)
         if self.length is None:
-            if self.profile.final_velocity == 0.0:
-                return self  # a stopping ramp keeps its rate
+            if not self.jog:
+                return self  # a ramp of STOP, an error or a limit keeps the rate it began with
             ramp = plan_velocity(velocity, self.profile.final_velocity, accel, decel)
-            return PlannedMove(self.mode, self.axes, self.geometry, ramp, tick, s, buffered=False)
+            return PlannedMove(self.mode, self.axes, self.geometry, ramp, tick, s, buffered=False, jog=True)
         slew = speed if self.feedrate is None else self.feedrate
         profile = plan_move(self.length - s, slew, accel, decel, velocity, sramp=sramp)
         return PlannedMove(

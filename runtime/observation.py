@@ -31,7 +31,7 @@ def axis_state(axis: Axis) -> AxisState:
         folerror=(axis.demand - axis.measured) / axis.scale,
         axismode=axis.axismode,
         axiserror=axis.axiserror,
-        axisstatus=axis.status | axis.axiserror,
+        axisstatus=axis.axisstatus,
         dac=axis.dac,
         idle=axis.idle(),
         enabled=axis.enabled,

@@ -27,6 +27,9 @@ MD_LINEAR, MD_JOG, MD_CIRCULAR, MD_TORQUE, MD_HOMING = 2, 4, 8, 16, 32
 MD_OFFSET, MD_FOLLOW, MD_FLY, MD_CAM, MD_INCREMENT = 64, 128, 512, 1024, 16384
 ER_ABORT, ER_FWD_HARD, ER_REV_HARD, ER_FWD_SOFT, ER_REV_SOFT, ER_FOLLOWING = 1, 2, 4, 8, 16, 32
 ER_STOP_INPUT, ER_ERROR_INPUT = 64, 128
+# the AXISSTATUS bits a condition of the last tick sets, and which clear with it (000:7275-7276); any other error
+# latched (ABORT, a cam's synchronisation error) has no condition to watch and shows until cleared (000:6085)
+CONDITIONS = ER_FWD_HARD | ER_REV_HARD | ER_FWD_SOFT | ER_REV_SOFT | ER_FOLLOWING | ER_STOP_INPUT | ER_ERROR_INPUT
 
 POSITION_HALF_SPAN = float(1 << 23)  # the position counter wraps modulo 2^24 counts into [-2^23, 2^23) (MP-5 RC)
 NOISE = 1e-6  # counts: closed-form set-points are exact only to ~1e-9 counts; limit tests ignore less than this
@@ -190,6 +193,11 @@ class Axis:
         a move loaded now starts: an absolute move after a wrap moves by the difference from what POS reads."""
         reference = self.reference() - self.position_offset
         return counts + self.position_offset + reference - wrap(reference)
+
+    @property
+    def axisstatus(self) -> int:
+        """AXISSTATUS: the conditions as they are now (AX-6), and the latched errors that have none."""
+        return self.status | self.axiserror & ~CONDITIONS
 
     @property
     def axismode(self) -> int:

@@ -416,7 +416,7 @@ class Motion:
         table.register("FOLERROR", read=self._folerror)
         table.register("AXISMODE", read=lambda ch: float(self.watched(self.axis(ch)).axismode))
         table.register("AXISERROR", read=lambda ch: float(self.axis(ch).axiserror))
-        table.register("AXISSTATUS", read=lambda ch: float(self.axis(ch).status | self.axis(ch).axiserror))
+        table.register("AXISSTATUS", read=lambda ch: float(self.axis(ch).axisstatus))
         table.register("IDLE", read=self._idle)
         table.register("POSTARGET", read=self._postarget)
         table.register("POSREMAINING", read=self._posremaining)

@@ -4,7 +4,8 @@ A condition first shows in ``AXISSTATUS``; unless its mode is "ignore" it is
 latched in ``AXISERROR``, the mode's default action runs at once and
 ``#ONERROR`` becomes pending. The modes share one table (``LIMITMODE``'s, as
 the spec recommends for the Advanced-only ones): 0 ignore, 1 crash stop and
-disable, 2 crash stop, 3 ramp down at ``ERRORDECEL``, 5 only call the handler.
+disable, 2 crash stop, 3 ramp down at ``ERRORDECEL`` (a crash stop when idle or
+in torque, follow, fly or cam mode), 5 only call the handler.
 ``SOFTLIMITMODE`` 4 stops a move on the limit before it is passed
 (``smart_limits.py``); what it cannot stop so is crash-stopped.
 """
@@ -21,6 +22,10 @@ from mintlang.runtime.motion.axis import (
     ER_REV_HARD,
     ER_REV_SOFT,
     ER_STOP_INPUT,
+    MD_CAM,
+    MD_FLY,
+    MD_FOLLOW,
+    MD_TORQUE,
     NOISE,
     Axis,
     wrap,
@@ -39,6 +44,8 @@ MODE_OF_ERROR = {
     ER_REV_SOFT: "SOFTLIMITMODE",
     ER_ERROR_INPUT: "ERRORINPUTMODE",
 }
+# in these modes an error in mode 3 crash-stops the axis, as mode 2, instead of ramping (000:13515-13517, 16091-16093)
+NOT_RAMPED = MD_TORQUE | MD_FOLLOW | MD_FLY | MD_CAM
 
 
 class Supervisor:
@@ -111,11 +118,12 @@ class Supervisor:
         if mode == IGNORE:
             return
         axis.latch(bit)
-        if mode in (CRASH_STOP_DISABLE, CRASH_STOP, SMART_SOFT_LIMITS) or (mode == ERROR_DECEL and axis.move is None):
+        ramped = mode == ERROR_DECEL and axis.move is not None and not axis.axismode & NOT_RAMPED
+        if mode in (CRASH_STOP_DISABLE, CRASH_STOP, SMART_SOFT_LIMITS) or (mode == ERROR_DECEL and not ramped):
             self.motion.crash_group(axis)
             if mode == CRASH_STOP_DISABLE:
                 axis.disable()
-        elif mode == ERROR_DECEL:
+        elif ramped:
             self.motion.stop_group(axis, next_profiler_tick(tick), axis.parameters["ERRORDECEL"])
             if axis.move is not None:
                 if axis not in self.stopping:

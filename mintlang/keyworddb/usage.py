@@ -4,10 +4,10 @@ Writing a keyword that is read only or a command is error 2000 (``CAMINDEX = 4``
 is write only is 2002 (``PRINT ACCELTIME``, 000:18905-18918); naming a parameter on its own as a
 statement is 2005 (``SPEED``); reading a command, or operands after a command that takes only axes,
 is 2003 (``STOP following``, a comment missing its REM); an editor command in a program is 2006
-(``NEW``); a keyword its controller lacks is 17. The attributes table decides; a keyword the guide
-gives none is judged by its formats. ``mint check`` reports the error where the line is written, and
-``mint-run`` gives the same number (2000 and 2002 when the line runs, the compiler's errors before the
-program starts), so the two cannot drift apart.
+(``NEW``); a keyword its controller lacks is 17, whose detail names the controllers that have it. The
+attributes table decides; a keyword the guide gives none is judged by its formats. ``mint check`` reports
+the error where the line is written, and ``mint-run`` gives the same number (2000 and 2002 when the line
+runs, the compiler's errors before the program starts), so the two cannot drift apart.
 """
 
 from __future__ import annotations
@@ -36,7 +36,9 @@ def refusal(
     if keyword.kind is KeywordKind.COMMAND_LINE:
         return Refusal(2006, f"{name} is an editor command: it works only at the command line, not in a program")
     if not keyword.available_on(controller):
-        return Refusal(17, f"{name} is not available on {profile(controller).title}")
+        having = [profile(other).title for other in keyword.controllers]
+        listed = having[0] if len(having) == 1 else f"{', '.join(having[:-1])} and {having[-1]}"
+        return Refusal(17, f"{name} is not available on {profile(controller).title}, only on {listed}")
     attributes = attributes_for(keyword, controller, dialect)  # HOMEPOS's too, which prints none
     if attributes is None:
         return _refusal_from_formats(keyword, use)

@@ -377,8 +377,9 @@ class Axis:
         return int(self.parameters["MOVEBUFFERSIZE"]) - len(self.buffer) - running
 
     def reference(self) -> float:
-        """Where a relative move starts from: the last loaded target, or the demand (MP-12 RC)."""
-        if self.buffer or (self.move is not None and self.move.buffered):
+        """Where a relative move starts from: the last loaded target, the end of a STOP's ramp
+        (a move loaded behind it starts there), or the demand (MP-12 RC)."""
+        if self.buffer or (self.move is not None and (self.move.buffered or self.move.end < NEVER)):
             return self.target
         return self.demand_at(next_profiler_tick(self.clock.now)) if self.move is not None else self.hold
 
@@ -513,9 +514,13 @@ class Axis:
         if stopped is None:
             self.crash_stop()
             return None
+        self.ramp_down(stopped)
+        return stopped
+
+    def ramp_down(self, stopped: Move) -> None:
+        """Run ``stopped``, the ramp a controlled stop gives its move: where it ends is the target (MP-12)."""
         self.move = stopped
         self.target = stopped.demand(self.index_in_move, stopped.end) if stopped.end < NEVER else self.target
-        return stopped
 
     def crash_stop(self) -> None:
         """Demand velocity to 0 at once; the demand stays where it is (MP-24 RC)."""

@@ -324,7 +324,7 @@ class Motion:
                 if stopped is None:
                     other.crash_stop()
                 else:
-                    other.move = stopped
+                    other.ramp_down(stopped)
 
     def crash_group(self, axis: Axis) -> None:
         """A crash stop of ``axis`` and of every axis interpolating with it."""

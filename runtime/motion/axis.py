@@ -557,8 +557,10 @@ class Axis:
         self.drive_signal(True)
 
     def disable(self) -> None:
-        """Drive off; a disabled axis has no following error, so AXISSTATUS stops showing one."""
+        """Drive off; a disabled axis has no following error, so AXISSTATUS stops showing one. A DAC written
+        open loop stays as written, as on the ticks after (SL-11): ABORT, which disables every drive, does not
+        stop motion controlled through DAC (000:6105)."""
         self.enabled = False
         self.drive_signal(False)
-        self.dac = 0.0
+        self.dac = self.open_loop_dac if self.open_loop_dac is not None else 0.0
         self.status &= ~ER_FOLLOWING

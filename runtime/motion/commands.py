@@ -312,6 +312,10 @@ class Motion:
         move = axis.move
         return self.axes[move.axes[0]] if move is not None and move.axes else axis
 
+    def error_decel(self, axis: Axis) -> float:
+        """The rate an error or a stop input ramps ``axis`` down at: along a path, the master's (000:10008)."""
+        return self.path_master(axis).parameters["ERRORDECEL"]
+
     def stop_group(self, axis: Axis, tick: int, decel: float) -> None:
         """A controlled stop of ``axis`` and of every axis interpolating with it (they share one move)."""
         moving = axis.move

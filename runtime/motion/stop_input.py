@@ -52,12 +52,12 @@ class StopInputs:
         ramped = type(move) is PlannedMove and axis.torque is None
         if mode == IGNORE or (mode == NORMAL and not ramped):
             self.raise_stop()
-        elif mode == CANCEL or not ramped or axis.parameters["ERRORDECEL"] == 0.0:  # no rate to ramp down at
+        elif mode == CANCEL or not ramped or self.motion.error_decel(axis) == 0.0:  # no rate to ramp down at
             self.motion.crash_group(axis)
             self.raise_stop()
         else:
             if mode == STOP:
-                self.motion.stop_group(axis, next_profiler_tick(tick), axis.parameters["ERRORDECEL"])
+                self.motion.stop_group(axis, next_profiler_tick(tick), self.motion.error_decel(axis))
             else:
                 self._hold(axis, move, next_profiler_tick(tick))  # type: ignore[arg-type]
             if self.at_edge:
@@ -71,7 +71,7 @@ class StopInputs:
         The ramp does not complete while the axis is held, so AXISMODE keeps showing the move and
         IDLE stays 0: the program waiting for the move waits for the input to clear.
         """
-        self.held[axis.number] = hold(self.motion, move, tick, axis.parameters["ERRORDECEL"])
+        self.held[axis.number] = hold(self.motion, move, tick, self.motion.error_decel(axis))
 
     def _cleared(self, axis: Axis) -> None:
         held = self.held.pop(axis.number, None)

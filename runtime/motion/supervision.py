@@ -124,7 +124,7 @@ class Supervisor:
             if mode == CRASH_STOP_DISABLE:
                 axis.disable()
         elif ramped:
-            self.motion.stop_group(axis, next_profiler_tick(tick), axis.parameters["ERRORDECEL"])
+            self.motion.stop_group(axis, next_profiler_tick(tick), self.motion.error_decel(axis))
             if axis.move is not None:
                 if axis not in self.stopping:
                     self.stopping.append(axis)

@@ -19,6 +19,7 @@ from mintlang.keyworddb.model import Controller, Use
 from mintlang.keyworddb.usage import refusal
 from mintlang.records import record
 from mintlang.runtime.errors import MintError
+from mintlang.runtime.ranges import Bounds, table_bounds
 
 AXIS_SET_TWICE = 2018
 KEYWORD_NOT_SUPPORTED = 17
@@ -97,6 +98,10 @@ class KeywordTable:
             return None
         refused = refusal(keyword, self.controller, self.dialect, Use.WRITE if write else Use.READ)
         return refused.code if refused is not None and refused.code != KEYWORD_NOT_SUPPORTED else None
+
+    def bounds(self, name: str) -> Bounds:
+        """The values ``name`` takes where no axis parameter holds them (``WAIT``): its attributes table's."""
+        return table_bounds(name, self.controller, self.dialect)
 
     def names(self) -> Iterator[str]:
         return iter(sorted(self._entries))

@@ -23,7 +23,7 @@ from mintlang.runtime.interpreter.release import release
 from mintlang.runtime.interpreter.vm import Interpreter, Loop, Operation, Recovery
 from mintlang.runtime.keywords import ArrayArgument, ArrayCommand, KeywordAccess, KeywordTable, Values
 from mintlang.runtime.printing import format_bin, format_chr, format_hex
-from mintlang.runtime.ranges import check_range, table_bounds
+from mintlang.runtime.ranges import check_range
 from mintlang.runtime.terminal import NumberEntry, Terminal
 from mintlang.semantic.blocks import Block, BlockKind, Place
 from mintlang.syntax import nodes as n
@@ -279,7 +279,7 @@ class StatementCompiler:
         if not statement.values or statement.values[0] is None:
             raise MintError(NO_EXPRESSION, detail="WAIT needs a time in milliseconds")
         duration = self.expressions.compile(statement.values[0])
-        limits = table_bounds("WAIT", self.table.controller)  # 2 ms at least on NextMove (000:17314-17333)
+        limits = self.table.bounds("WAIT")  # 2 ms at least on NextMove (000:17314-17333)
         vm = self.vm
         clock = vm.clock
         waits = vm.waits

@@ -194,6 +194,15 @@ def test_a_v3_keyword_is_on_every_v3_controller(tmp_path: Path) -> None:
     assert "AUXDAC (write) is not simulated" in result.output and "error 17" not in result.output
 
 
+@pytest.mark.parametrize("keyword", ["INCA", "INCR"])
+def test_reading_a_keyword_v3_reads_is_no_programming_error(tmp_path: Path, keyword: str) -> None:
+    # 001:9049, 9104: reading INCA or INCR tells whether the new end point was set up (v4's are write only);
+    # the read is not simulated, and "Write only" would call the v3 program wrong
+    result = mint_run("--dialect", "v3", write(tmp_path, "v3.mnt", f"PRINT 1\na = {keyword}.0\n"))
+    assert (result.exit_code, result.stdout) == (1, "1\n")
+    assert f"{keyword} (read) is not simulated" in result.output and "Write only" not in result.output
+
+
 def test_a_move_on_amplifiers_never_enabled_says_how_v3_enables_them(tmp_path: Path) -> None:
     # 001:11409-11411: the amplifiers stay disabled from power-up until RESET or CONFIG; ENABLE = 1 also switches
     # them on (001:7547-7576). v3 has no DRIVEENABLE, the v4 hint's keyword.

@@ -11,20 +11,36 @@ number, a whole number of 256ths (V3-2).
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+from types import MappingProxyType
+
 from mintlang.keyworddb import database
 from mintlang.runtime.dialects.v3.numbers import fixed
 from mintlang.runtime.inert import InertSettings
 from mintlang.runtime.keywords import (
     ArrayCommand,
+    Channels,
     Command,
     KeywordAccess,
     KeywordTable,
     Reader,
+    Values,
     Writer,
     per_channel,
 )
+from mintlang.runtime.ranges import Bounds, check_range
 
 INERT_SETTINGS = {"ECHO": 3.0, "TERM": 3.0}  # the terminal: one merged log here (001:7504, 11989-12032)
+
+RANGES: Mapping[str, Bounds] = MappingProxyType(
+    {
+        "IMASK": Bounds(0.0, 255.0, False),  # 001:8884: #IN0..#IN7, one bit each
+        "IPEND": Bounds(0.0, 255.0, False),  # 001:9301
+        "WAIT": Bounds(2.0, 65535.0, False),  # 001:12540
+    }
+)
+"""The chapter 10 ranges of the controller-wide keywords whose v4 ranges are wider (the axis parameters' are in
+``parameters.py``); a value outside is "Out of range" (001:13136-13138)."""
 
 
 class V3KeywordTable(KeywordTable):
@@ -40,6 +56,8 @@ class V3KeywordTable(KeywordTable):
         array_command: ArrayCommand | None = None,
     ) -> None:
         read = _fixed(read) if read is not None else None
+        if write is not None and name in RANGES:
+            write = _within(name, RANGES[name], write)
         super().register(name, read=read, write=write, command=command, array_command=array_command)
 
     def alias(self, name: str, access: KeywordAccess) -> None:
@@ -50,9 +68,30 @@ class V3KeywordTable(KeywordTable):
         """The v3 guide's keywords are on every simulated v3 controller; none is error 17."""
         return self.get(name)
 
+    def bounds(self, name: str) -> Bounds:
+        return RANGES.get(name) or super().bounds(name)
+
+    def refused_by_the_guide(self, name: str, *, write: bool) -> int | None:
+        """A read v3's entry allows is no programming error, whatever v4's says: reading ``INCA`` or ``INCR``
+        tells whether the new end point was set up (001:9049, 9104), where v4's are write only."""
+        v3 = database().lookup_v3(name)
+        if not write and v3 is not None and v3.read:
+            return None
+        return super().refused_by_the_guide(name, write=write)
+
 
 def _fixed(read: Reader) -> Reader:
     return lambda channel: fixed(read(channel))
+
+
+def _within(name: str, limits: Bounds, write: Writer) -> Writer:
+    def checked(channels: Channels | None, values: Values) -> bool:
+        for value in values:
+            if value is not None:
+                check_range(name, value, limits)
+        return write(channels, values)
+
+    return checked
 
 
 def inert_settings(table: V3KeywordTable) -> InertSettings:

@@ -18,6 +18,18 @@ from mintlang.lsp.workspace import Snapshot
 KIND = types.CodeActionKind.RefactorRewrite
 
 
+def _spaced(source: str, start: int, end: int, name: str) -> str:
+    """``name`` with a space on each side a word touches: ``?`` needs none before the word it prints
+    (``?FASTPOS.2``, 000:10452), but ``PRINTFASTPOS`` would be one name."""
+    before = " " if start > 0 and _wordy(source[start - 1]) else ""
+    after = " " if end < len(source) and _wordy(source[end]) else ""
+    return f"{before}{name}{after}"
+
+
+def _wordy(character: str) -> bool:
+    return character.isalnum() or character == "_"
+
+
 def edits(snapshot: Snapshot, span: Span) -> list[types.TextEdit]:
     """One edit per abbreviation that touches ``span``."""
     document, words, positions = snapshot.document, snapshot.settings.words, snapshot.positions
@@ -28,7 +40,8 @@ def edits(snapshot: Snapshot, span: Span) -> list[types.TextEdit]:
             break
         name = abbreviated(token, words) if token.end >= span.start else None
         if name is not None:
-            found.append(types.TextEdit(range=positions.range(Span(token.start, token.end)), new_text=name))
+            new_text = _spaced(document.source, token.start, token.end, name)
+            found.append(types.TextEdit(range=positions.range(Span(token.start, token.end)), new_text=new_text))
     return found
 
 
@@ -41,7 +54,7 @@ def actions(snapshot: Snapshot, selection: types.Range) -> list[types.CodeAction
         return []
     if len(found) == 1:
         old = snapshot.document.source[slice(*snapshot.positions.span(found[0].range))]
-        title = f"Expand {old} to {found[0].new_text}"
+        title = f"Expand {old} to {found[0].new_text.strip()}"
     else:
         title = f"Expand {len(found)} abbreviations"
     return [types.CodeAction(title=title, kind=KIND, edit=types.WorkspaceEdit(changes={snapshot.uri: found}))]

@@ -54,3 +54,23 @@ async def test_nothing_to_expand_offers_nothing(client, tmp_path):
     uri = uri_of(tmp_path / "short.mnt")
     await open_document(client, uri, TEXT)
     assert not await rewrites(client, uri, (3, 0), (3, 7))  # "a = IN3"
+
+
+@pytest.mark.parametrize(
+    ("line", "expanded"),
+    [
+        pytest.param("?FASTPOS.2;FASTPOS.3", "PRINT FASTPOS.2;FASTPOS.3", id="glued-to-the-keyword-it-prints"),
+        pytest.param("?a", "PRINT a", id="glued-to-a-variable"),
+        pytest.param('?"x"', 'PRINT"x"', id="before-a-string-nothing-to-part"),
+        pytest.param("IF a THEN?a", "IF a THEN PRINT a", id="glued-on-both-sides"),
+    ],
+)
+async def test_a_question_mark_glued_to_a_word_expands_to_print_and_a_space(client, tmp_path, line, expanded):
+    """PRINT may be written ``?`` (000:15302), glued to what it prints (``?FASTPOS.2``, 000:10452); written out
+    in full, ``PRINTFASTPOS`` would be one name, not the keyword and its argument."""
+    text = f"DIM a\n{line}\n"
+    uri = uri_of(tmp_path / "short.mnt")
+    await open_document(client, uri, text)
+    [action] = await rewrites(client, uri, (1, 0), (2, 0))
+    assert action.title == "Expand ? to PRINT"
+    assert applied(text, action, uri) == f"DIM a\n{expanded}\n"

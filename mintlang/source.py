@@ -63,12 +63,17 @@ def decode(data: bytes) -> tuple[str, str]:
     raise AssertionError("latin-1 decodes every byte string")  # pragma: no cover
 
 
-def read_source(path: Path) -> SourceFile:
-    """Read a source file; raises OSError when it cannot be read or is not a regular file.
+def read_regular(path: Path) -> bytes:
+    """The bytes of a file; raises OSError when it cannot be read or is not a regular file.
 
-    A pipe would block a check forever and a device such as /dev/zero never ends.
+    A pipe would block a tool forever and a device such as /dev/zero never ends.
     """
     if not stat.S_ISREG(path.stat().st_mode):
         raise OSError(errno.EINVAL, "not a regular file", str(path))
-    text, encoding = decode(path.read_bytes())
+    return path.read_bytes()
+
+
+def read_source(path: Path) -> SourceFile:
+    """Read a source file; raises OSError when it cannot be read or is not a regular file."""
+    text, encoding = decode(read_regular(path))
     return SourceFile(path, text, encoding)

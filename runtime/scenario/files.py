@@ -23,6 +23,7 @@ from mintlang.runtime.scenario.phrase import Phrase
 from mintlang.runtime.scenario.problems import Invalid, ScenarioError, ScenarioFileError
 from mintlang.runtime.scenario.stimulus import Scenario, WorldRecord
 from mintlang.runtime.scenario.toml_layout import Layout, Section
+from mintlang.source import read_regular
 
 _TOML_LINE = re.compile(r"at line (\d+)")
 _COMPARISONS = {
@@ -266,7 +267,7 @@ def _read(document: Mapping[str, object], layout: Layout, collector: Collector) 
 def _document(path: Path) -> tuple[str, dict[str, object]]:
     source = str(path)
     try:
-        text = path.read_text(encoding="utf-8")
+        text = read_regular(path).decode("utf-8")
     except OSError as problem:
         raise ScenarioFileError([ScenarioError(source, 0, f"cannot read the file: {problem.strerror}")]) from None
     except UnicodeDecodeError:

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import os
 import re
+from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 from types import MappingProxyType
@@ -163,10 +165,22 @@ def test_a_toml_syntax_error_keeps_tomllib_line_and_column(tmp_path: Path) -> No
     assert message.startswith("not valid TOML: ") and "(at line 2, column" in message
 
 
-def test_a_missing_file_is_a_scenario_error(tmp_path: Path) -> None:
+@pytest.mark.parametrize(
+    ("make", "why"),
+    [
+        pytest.param(lambda path: None, "No such file or directory", id="missing"),
+        pytest.param(os.mkfifo, "not a regular file", id="a-pipe-is-not-waited-on"),
+        pytest.param(os.mkdir, "not a regular file", id="a-folder"),
+    ],
+)
+def test_a_file_that_cannot_be_read_is_a_scenario_error(
+    tmp_path: Path, make: Callable[[Path], None], why: str
+) -> None:
+    path = tmp_path / "scenario.toml"
+    make(path)
     with pytest.raises(ScenarioFileError) as raised:
-        load_scenario(tmp_path / "absent.toml")
-    assert str(raised.value) == f"{tmp_path / 'absent.toml'}: cannot read the file: No such file or directory"
+        load_scenario(path)
+    assert str(raised.value) == f"{path}: cannot read the file: {why}"
 
 
 def test_unknown_tables_and_keys_are_named(tmp_path: Path) -> None:

@@ -189,12 +189,8 @@ def _converted(context: click.Context, param: click.Parameter, table: Table, key
     items = value if isinstance(value, list) and param.multiple else [value]
     if not all(isinstance(item, str | int | float) and not isinstance(item, bool) for item in items):
         raise table.error("must be a string or a number" + (", or a list of them" if param.multiple else ""), key)
-    texts = [_relative(table, item) if isinstance(param.type, click.Path) else str(item) for item in items]
+    texts = [str(table.relative(key, str(item))) if isinstance(param.type, click.Path) else str(item) for item in items]
     try:
         return param.process_value(context, texts if param.multiple else texts[0])
     except click.BadParameter as error:
         raise table.error(error.message, key) from None
-
-
-def _relative(table: Table, value: object) -> str:
-    return str(table.path.parent / str(value))

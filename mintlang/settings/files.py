@@ -67,6 +67,12 @@ class Table:
     def error(self, message: str, *keys: str) -> SettingsError:
         return SettingsError(self.path, message, line=self.line(*keys), key=self.name(*keys))
 
+    def relative(self, key: str, value: str) -> Path:
+        """The path ``value`` of ``key``, relative to the file's folder; no file name holds a NUL character."""
+        if "\0" in value:
+            raise self.error("a path cannot hold a NUL character", key)
+        return self.path.parent / value
+
     def table(self, name: str) -> Table:
         """The sub-table ``name`` (empty when absent); a value that is no table is an error."""
         value = self.values.get(name, {})

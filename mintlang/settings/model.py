@@ -135,7 +135,7 @@ class ProjectSettings:
             raise table.error(f"unknown key (known: {', '.join(KNOWN_KEYS)})", unknown[0])
         values = {key: Given(_converted(table, key, convert), table.origin(key)) for key, convert in _converts(table)}
         if "config" in values:
-            values["config"] = Given(table.path.parent / str(values["config"].value), values["config"].origin)
+            values["config"] = Given(table.relative("config", str(values["config"].value)), values["config"].origin)
         for key in EXCLUDE_KEYS:
             if key in values:
                 values[key] = Given(relative_globs(values[key].value, table.path.parent), values[key].origin)

@@ -199,6 +199,7 @@ def test_show_settings_of_a_path_that_is_not_there_says_so(tmp_path: Path) -> No
         ('config-pairing = "setup.cfg"\n', 1, "config-pairing: 'setup.cfg' has no <name>: write false"),
         ('[per-file-ignores]\n"*.mnt" = ["Q1"]\n', 2, "per-file-ignores.\"*.mnt\": 'Q1' is no code"),
         ("per-file-ignores = 3\n", 1, "per-file-ignores: must be a table"),
+        ('config = "cell\\u0000.cfg"\n', 1, "config: a path cannot hold a NUL character"),
         ('controller = "mintdrive"\nselect = [E]\n', 2, "not valid TOML: Invalid value"),
         ('controller = "mintdrive"\nselect = [\n', 3, "not valid TOML: Invalid value (at the end of the file)"),
     ],

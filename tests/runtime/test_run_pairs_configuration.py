@@ -7,6 +7,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner, Result
 
 from mintlang.cli import main
@@ -83,14 +84,25 @@ def test_a_path_in_the_run_table_is_relative_to_the_settings_file(tmp_path: Path
     assert (result.exit_code, result.stdout) == (0, "started\n"), result.stderr
 
 
-def test_a_bad_run_table_is_one_line_with_its_place(tmp_path: Path) -> None:
-    settings = write(tmp_path / "mint.toml", '[run]\nuntil-ms = "soon"\n')
+@pytest.mark.parametrize(
+    ("text", "problem"),
+    [
+        pytest.param(
+            '[run]\nuntil-ms = "soon"\n', "2: run.until-ms: 'soon' is not a valid integer range.", id="number"
+        ),
+        pytest.param("[run]\nrealtime = 1\nspeed = 2\n", "2: run.realtime: must be true or false", id="flag"),
+        pytest.param(
+            '[run]\nstimulus = ["a\\u0000.toml"]\n',
+            "2: run.stimulus: a path cannot hold a NUL character",
+            id="nul-path",
+        ),
+    ],
+)
+def test_a_bad_run_table_is_one_line_with_its_place(tmp_path: Path, text: str, problem: str) -> None:
+    settings = write(tmp_path / "mint.toml", text)
     result = mint_run(write(tmp_path / "a.mnt", "PRINT 1\n"))
     assert result.exit_code == 2
-    assert result.stderr == f"mint-run: {settings.absolute()}:2: run.until-ms: 'soon' is not a valid integer range.\n"
-    settings = write(tmp_path / "mint.toml", "[run]\nrealtime = 1\nspeed = 2\n")
-    result = mint_run(write(tmp_path / "a.mnt", "PRINT 1\n"))
-    assert result.stderr.startswith(f"mint-run: {settings.absolute()}:2: run.realtime: must be true or false")
+    assert result.stderr == f"mint-run: {settings.absolute()}:{problem}\n"
 
 
 def test_the_real_command_runs_the_paired_configuration(tmp_path: Path) -> None:

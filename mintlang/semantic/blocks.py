@@ -207,9 +207,15 @@ class _Matcher:
             if problem is not None and (len(self.stack) < 2 or self.stack[-2].over != problem):
                 self.diagnostics.append(_error(2015, line.span(statement.span), problem))
         elif isinstance(statement, n.Until) or (isinstance(statement, n.SyntaxError_) and statement.closes == "UNTIL"):
-            self.close(BlockKind.REPEAT, place, line.span(statement.span), 2013, "UNTIL without REPEAT")
+            self.close(
+                BlockKind.REPEAT,
+                place,
+                line.span(_first_word(statement.span, line.syntax)),
+                2013,
+                "UNTIL without REPEAT",
+            )
         elif isinstance(statement, n.SyntaxError_) and statement.closes in _CLOSERS:
-            self._closer(statement.closes, place, line.span(statement.span))  # type: ignore[arg-type]
+            self._closer(statement.closes, place, line.span(_first_word(statement.span, line.syntax)))  # type: ignore[arg-type]
         elif isinstance(statement, n.BlockWord) and statement.word == "ELSE":
             top = self.stack[-1] if self.stack else None
             if top is None or top.kind is not BlockKind.IF or top.middle is not None:
@@ -300,6 +306,16 @@ class _Matcher:
             self.diagnostics.append(_error(code, unclosed.span, detail))
         self.blocks.sort(key=lambda block: block.opener)
         return Structure(tuple(self.blocks), tuple(self.diagnostics))
+
+
+def _first_word(span: Span, line: n.LineSyntax) -> Span:
+    """The word ``span`` begins with: a closer's error is about its word, not the condition or variable after
+    it (``UNTIL a > 1``, ``NEXT i``)."""
+    text = line.text
+    end, stop = span.start, min(span.end, len(text))
+    while end < stop and (text[end].isalnum() or text[end] == "_"):
+        end += 1
+    return Span(span.start, end) if end > span.start else span
 
 
 def _then_written(statement: n.IfThen, line: n.LineSyntax) -> Span | None:

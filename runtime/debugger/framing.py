@@ -45,6 +45,8 @@ def read_message(stream: BinaryIO) -> dict[str, Any] | None:
         message = json.loads(body)
     except (UnicodeDecodeError, json.JSONDecodeError) as error:
         raise FramingError(f"the message body is not JSON: {error}") from None
+    except RecursionError:  # the decoder recurses once a level: [[[[...]]]] thousands deep
+        raise FramingError("the message body is nested too deeply to read") from None
     if not isinstance(message, dict):
         raise FramingError("the message body is not a JSON object")
     return message

@@ -227,6 +227,8 @@ def _path(value: object, name: str) -> Path | None:
         return None
     if not isinstance(value, str) or not value:
         raise LaunchError(f"'{name}' is the path of a file")
+    if "\0" in value:  # no file name holds one: os.stat would raise ValueError
+        raise LaunchError(f"'{name}' {value!r} holds a NUL character: it is no file's path")
     return Path(value)
 
 

@@ -225,6 +225,8 @@ class Session:
     def set_breakpoints(self, arguments: dict[str, Any]) -> dict[str, Any]:
         application, breakpoints = self._launched()
         source = arguments.get("source") or {}
+        if not isinstance(source, dict):
+            raise RequestError('\'source\' is an object, such as {"path": "cell.mnt"}')
         unit = _unit_of(application, source.get("path"))
         requested = arguments.get("breakpoints")
         if requested is None:
@@ -249,7 +251,10 @@ class Session:
         }
 
     def set_exception_breakpoints(self, arguments: dict[str, Any]) -> dict[str, Any]:
-        filters = frozenset(arguments.get("filters", []))
+        names = _listed(arguments.get("filters", []), "filters")
+        if not all(isinstance(name, str) for name in names):
+            raise RequestError(f"'filters' is a list of names: {ERRORS}, {UNHANDLED}")
+        filters = frozenset(names)
         unknown = filters - {ERRORS, UNHANDLED}
         if unknown:
             raise RequestError(f"no exception filter {', '.join(sorted(unknown))}: use {ERRORS} or {UNHANDLED}")
@@ -488,7 +493,7 @@ def _source(application: Application, unit: str) -> dict[str, Any] | None:
 
 
 def _unit_of(application: Application, path: object) -> str | None:
-    if not isinstance(path, str):
+    if not isinstance(path, str) or "\0" in path:  # a NUL character: no file's path, and os.stat would raise
         return None
     for unit in ("program", "configuration"):
         known = application.path_of(unit)

@@ -153,6 +153,7 @@ def test_a_launch_it_cannot_start_says_why(tmp_path: Path) -> None:
         "drives": client.request("launch", {"program": str(program), "drives": True}),
         "stopOnEntry": client.request("launch", {"program": str(program), "stopOnEntry": "false"}),
         "noConfig": client.request("launch", {"program": str(program), "noConfig": "yes"}),
+        "nul": client.request("launch", {"program": str(program), "stimulus": ["a\0.toml"]}),
     }
     assert not any(response["success"] for response in problems.values())
     assert "'program'" in problems["no program"]["message"]
@@ -166,6 +167,7 @@ def test_a_launch_it_cannot_start_says_why(tmp_path: Path) -> None:
     )
     assert problems["stopOnEntry"]["message"] == "'stopOnEntry' is true or false, not 'false'"
     assert problems["noConfig"]["message"] == "'noConfig' is true or false, not 'yes'"
+    assert problems["nul"]["message"] == "'stimulus' 'a\\x00.toml' holds a NUL character: it is no file's path"
     assert "Traceback" not in client.close()
 
 
@@ -177,6 +179,10 @@ def test_a_malformed_request_is_refused_with_what_it_should_have_been(debug: Deb
     source = {"path": str(client.program)}
     refused = {
         "list": client.request("setBreakpoints", {"source": source, "breakpoints": "2"}),
+        "source": client.request("setBreakpoints", {"source": "p.mnt", "breakpoints": []}),
+        "filters": client.request("setExceptionBreakpoints", {"filters": "errors"}),
+        "filter names": client.request("setExceptionBreakpoints", {"filters": [["errors"]]}),
+        "filter name": client.request("setExceptionBreakpoints", {"filters": ["all"]}),
         "objects": client.request("setFunctionBreakpoints", {"breakpoints": ["TIMER"]}),
         "startFrame": client.request("stackTrace", {"threadId": 1, "startFrame": "x"}),
         "start": client.request("variables", {"variablesReference": 1, "start": "first"}),
@@ -185,6 +191,10 @@ def test_a_malformed_request_is_refused_with_what_it_should_have_been(debug: Deb
     }
     assert {name: response["message"] for name, response in refused.items()} == {
         "list": "'breakpoints' is a list",
+        "source": '\'source\' is an object, such as {"path": "cell.mnt"}',
+        "filters": "'filters' is a list",
+        "filter names": "'filters' is a list of names: errors, unhandled",
+        "filter name": "no exception filter all: use errors or unhandled",
         "objects": "'breakpoints' is a list of objects",
         "startFrame": "'startFrame' is a whole number, 0 or more, not 'x'",
         "start": "'start' is a whole number, 0 or more, not 'first'",
@@ -194,12 +204,19 @@ def test_a_malformed_request_is_refused_with_what_it_should_have_been(debug: Deb
     assert client.line() == 1
 
 
-def test_a_message_that_is_not_dap_is_reported_and_the_session_goes_on() -> None:
+@pytest.mark.parametrize(
+    ("body", "report"),
+    [
+        pytest.param(b"hello", "the message body is not JSON", id="not-json"),
+        pytest.param(b"[" * 100_000 + b"]" * 100_000, "the message body is nested too deeply to read", id="deep"),
+    ],
+)
+def test_a_message_that_is_not_dap_is_reported_and_the_session_goes_on(body: bytes, report: str) -> None:
     client = DapClient()
     assert client.process.stdin is not None
-    client.process.stdin.write(b"Content-Length: 5\r\n\r\nhello")
+    client.process.stdin.write(b"Content-Length: %d\r\n\r\n%s" % (len(body), body))
     client.process.stdin.flush()
-    assert "not JSON" in client.event("output")["body"]["output"]
+    assert report in client.event("output")["body"]["output"]
     assert client.body("initialize", {"adapterID": "mint"})["supportsStepBack"]
     assert "Traceback" not in client.close()
 

@@ -172,7 +172,9 @@ class Motion:
             for axis, _ in pairs:
                 axis.require_ready()
                 if (axis.move is not None and axis.move.mode not in PATH_MODES) or axis.pending_mode:
-                    raise MintError(MOTION_IN_PROGRESS, axis.number)
+                    # 000:14541-14542 and the remedy of error 10's entry (000:18545-18547)
+                    busy = f"{keyword} loads only on an idle axis or behind a linear move: check AXISMODE, PAUSE IDLE"
+                    raise MintError(MOTION_IN_PROGRESS, axis.number, busy)
             if any(axis.buffer_free() <= 0 for axis, _ in pairs):
                 for axis, _ in pairs:
                     self._watch_buffer(axis)

@@ -80,9 +80,12 @@ def keyword_like(
     return OTHER_BASICS.get(word) or closest(word, _keywords_of(controller, values=values, dialect=dialect))
 
 
-def not_a_keyword(word: str, meant: str | None) -> str:
-    """Error 3007's detail for ``word``, with the keyword ``meant`` if it resembles one."""
+def not_a_keyword(word: str, meant: str | None, *, alone: bool = False) -> str:
+    """Error 3007's detail for ``word``, with the keyword ``meant`` if it resembles one. A word ``alone`` as a
+    statement that resembles none may be a variable its author meant to give a value (000:877-879)."""
     hint = did_you_mean(meant) if meant is not None else "check the spelling and the abbreviation"
+    if alone and meant is None:
+        hint += f"; a variable alone is no statement: give it a value, {word} = …"
     return f"'{word}' is not a keyword ({hint})"
 
 

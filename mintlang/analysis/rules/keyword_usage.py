@@ -67,12 +67,18 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if isinstance(statement, n.BareName) and db.rename_of(statement.name.text) is None:  # else: v3_keywords
             word = statement.name.text
             fixes = _spelling_fix(word, controller, statement.name.span, scope.dialect)
-            detail = _not_a_keyword(word, controller, scope.dialect)
+            detail = _not_a_keyword(word, controller, scope.dialect, alone=True)
             yield Finding(unit, mint_error(3007, statement.span, detail, fixes=fixes))
 
 
 def _not_a_keyword(
-    word: str, controller: Controller, dialect: Dialect, *, addressed: bool = False, dot: bool = False
+    word: str,
+    controller: Controller,
+    dialect: Dialect,
+    *,
+    addressed: bool = False,
+    dot: bool = False,
+    alone: bool = False,
 ) -> str:
     """Error 3007's detail, with the keyword ``word`` resembles if one does; a word written with axes
     (``arr[2]``) that resembles none that takes them is told where an index goes. A dot is how a keyword
@@ -88,7 +94,7 @@ def _not_a_keyword(
             f"'{word}' is not a keyword (an array is indexed in round brackets, {word}(index); square brackets "
             "and a dot address a keyword's axes or channel)"
         )
-    return not_a_keyword(word, meant)
+    return not_a_keyword(word, meant, alone=alone)
 
 
 def _meant(word: str, controller: Controller, dialect: Dialect, *, addressed: bool) -> str | None:

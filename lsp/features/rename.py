@@ -1,7 +1,7 @@
 """Rename variables, arrays, labels and macros; keywords and colliding names are refused.
 
 A new name must lex as a user name of the dialect (not a keyword, constant or
-abbreviation) and must not equal another symbol in its first ten characters,
+abbreviation; a label's may be digits alone) and must not equal another symbol in its first ten characters,
 which the controller would take for the same name; nor may a label and a macro
 share a name, as the macro's text would replace the label's name. Event handlers keep their
 names, and no subroutine is renamed into one: the controller calls handlers
@@ -77,11 +77,14 @@ def _not_a_name(name: str, settings: Settings, kind: SymbolKind) -> str | None:
     tokens = [token for token in lex(name, settings.dialect).tokens if token.kind is not TokenKind.NEWLINE]
     single = len(tokens) == 1 and tokens[0].text == name
     found = tokens[0].kind if single else None
-    if found is TokenKind.NAME:
+    digits = found is TokenKind.NUMBER and name.isascii() and name.isdigit()
+    if found is TokenKind.NAME or (digits and kind is SymbolKind.LABEL):  # a label is alphanumeric (000:1843)
         return None
     taken = f"the {kind} cannot take its name"
     if found is TokenKind.CONSTANT:
         return f"'{name}' is the Mint constant {name.upper()}: {taken}"
+    if digits:
+        return f"'{name}' is a number: {taken}"
     if single and name.isalnum() and found is not TokenKind.INVALID:  # a keyword, REM and abbreviations included
         full = abbreviated(tokens[0], settings.words)
         what = f"the abbreviation of {full}" if full else f"the Mint keyword {name.upper()}"

@@ -111,6 +111,7 @@ MACRO_AND_LABEL = "DEFINE fast = SPEED.0 = 100\nGOSUB init\nEND\n#init\nfast\nRE
         ("DEFINE fast", "NULL", "'NULL' is the Mint constant NULL: the macro cannot take its name"),
         ("GOSUB init", "_true", "'_true' is the Mint constant _TRUE: the label cannot take its name"),
         ("GOSUB init", "9lives", "'9lives' is not a valid Mint name: a name starts with a letter"),
+        ("DEFINE fast", "123", "'123' is a number: the macro cannot take its name"),  # not "the keyword 123"
     ],
 )
 async def test_a_label_or_macro_does_not_take_a_macros_a_labels_or_a_keywords_name(
@@ -362,3 +363,16 @@ async def test_a_label_renamed_to_another_labels_name_names_that_label(client, t
         await client.text_document_rename_async(
             types.RenameParams(text_document=document(uri), position=position(text, "first"), new_name="Second")
         )
+
+
+async def test_a_label_may_be_named_by_digits(client, tmp_path):
+    """A label is any combination of alphanumeric characters (000:1843): ``#123``, called by ``GOSUB 123``."""
+    uri = uri_of(tmp_path / "digits.mnt")
+    await open_document(client, uri, MACRO_AND_LABEL)
+    where = position(MACRO_AND_LABEL, "GOSUB init", len("GOSUB i"))
+    edit = await client.text_document_rename_async(
+        types.RenameParams(text_document=document(uri), position=where, new_name="123")
+    )
+    assert (
+        apply(MACRO_AND_LABEL, edit.changes[uri]) == "DEFINE fast = SPEED.0 = 100\nGOSUB 123\nEND\n#123\nfast\nRETURN\n"
+    )

@@ -16,9 +16,13 @@ pygls 2.1 leaves a client waiting, or the server growing, in four places:
 - a ``$/cancelRequest`` of a request a built-in handler hands on (a command of
   ``workspace/executeCommand``) answers it as cancelled but leaves the
   command running: a simulation went on for its full 20 s;
-- a body that is not JSON, or JSON that is no message (``[]``, ``5``), is logged
-  with a traceback and shown to the user as a server error, but never answered;
-  JSON-RPC wants ``ParseError`` or ``InvalidRequest`` with a null id.
+- a body that is not JSON (or nested too deeply for ``json``), or JSON that is
+  no message (``[]``, ``5``), is logged with a traceback and shown to the user
+  as a server error, but never answered; JSON-RPC wants ``ParseError`` or
+  ``InvalidRequest`` with a null id;
+- a notification whose params do not fit the method is logged with a
+  traceback and shown to the user as a server error: the client's mistake,
+  which no answer can tell it, is dropped with one line in the log.
 """
 
 from __future__ import annotations
@@ -47,7 +51,8 @@ from mintlang.lsp.documents import LspProtocol
 log = logging.getLogger(__name__)
 
 _ANSWERED = object()  # a request refused while it was decoded: its error response has gone out
-UNREADABLE = (json.JSONDecodeError, UnicodeDecodeError)  # what json.loads raises for a body that is not JSON
+# what json.loads raises for a body that is not JSON, or one nested thousands deep (it recurses once a level)
+UNREADABLE = (json.JSONDecodeError, UnicodeDecodeError, RecursionError)
 
 
 def _why(error: JsonRpcException) -> str:
@@ -78,8 +83,11 @@ class MintProtocol(LspProtocol):
         try:
             return super().structure_message(data)
         except JsonRpcException as error:
-            if "method" not in data or "id" not in data:
-                raise  # a notification has nobody to answer: pygls logs and shows it
+            if "method" not in data:
+                raise  # a response: pygls logs and shows it
+            if "id" not in data:  # a notification has nobody to answer
+                log.warning("dropped %s: %s", data["method"], _why(error))
+                return _ANSWERED
             message = f"{JsonRpcInvalidParams.MESSAGE} for {data['method']}: {_why(error)}"
             self._send_response(data["id"], error=JsonRpcInvalidParams(message).to_response_error())
             return _ANSWERED

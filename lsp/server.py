@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from lsprotocol import types
+from pygls.exceptions import JsonRpcException
 from pygls.lsp.server import LanguageServer
 from pygls.uris import to_fs_path
 
@@ -38,8 +39,9 @@ class MintServer(LanguageServer):
         self.when_settings_changed: list[Callable[[], Awaitable[None]]] = []  # and once the settings changed
 
     def report_server_error(self, error: Exception, source: Any) -> None:
-        """A body that is not JSON is answered with ``ParseError``; anything else is pygls' to show."""
-        if isinstance(error, UNREADABLE) and isinstance(self.protocol, MintProtocol):
+        """A body the message loop (``source``) cannot read is answered with ``ParseError``; anything else is
+        pygls' to show."""
+        if source is JsonRpcException and isinstance(error, UNREADABLE) and isinstance(self.protocol, MintProtocol):
             self.protocol.refuse_unreadable(error)
             return
         super().report_server_error(error, source)

@@ -50,3 +50,20 @@ def test_what_cannot_be_read_is_answered_and_the_server_goes_on() -> None:
     ]
     assert shut_down == {"jsonrpc": "2.0", "id": 2, "result": None}
     assert "Traceback" not in log
+
+
+def test_a_body_nested_too_deeply_to_read_is_a_parse_error() -> None:
+    answers, log = _answers(b"[" * 100_000 + b"]" * 100_000)
+    _, refused, shut_down = answers
+    assert (refused["id"], refused["error"]["code"]) == (None, PARSE_ERROR)
+    assert shut_down["id"] == 2
+    assert "Traceback" not in log
+
+
+def test_a_notification_with_params_that_do_not_fit_is_dropped_with_one_line_in_the_log() -> None:
+    # nobody to answer (JSON-RPC); pygls logged a traceback and showed the user "Error in server: Invalid Params"
+    opened = {"textDocument": {"uri": "file:///tmp/a.mnt", "languageId": "mint", "version": 1}}  # no text
+    answers, log = _answers(_message(method="textDocument/didOpen", params=opened).split(b"\r\n\r\n", 1)[1])
+    assert [answer.get("id") for answer in answers] == [1, 2]
+    assert "dropped textDocument/didOpen: " in log
+    assert "Traceback" not in log

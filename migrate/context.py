@@ -64,9 +64,16 @@ MARKER_LINE = re.compile(
 )
 
 
+MARKER_LENGTH = 255  # the longest line a controller downloads, comments included (000:18455)
+CUT = "..."  # the end of a marker cut to MARKER_LENGTH: ASCII, as the file's encoding may have no ellipsis
+
+
 def marker_text(rule: str, reason: str, *, above: bool = False) -> str:
-    """A marker line without indentation or line end; ``above`` for one that marks the line above it."""
-    return f"{MARKER} {rule}: {LINE_ABOVE + ' ' if above else ''}{reason}"
+    """A marker line without indentation or line end; ``above`` for one that marks the line above it.
+
+    A reason quoting a long line (a number of 5,000 digits) is cut: the marker would stop the download."""
+    text = f"{MARKER} {rule}: {LINE_ABOVE + ' ' if above else ''}{reason}"
+    return text if len(text) <= MARKER_LENGTH else text[: MARKER_LENGTH - len(CUT)] + CUT
 
 
 def marks_above(found: re.Match[str]) -> bool:

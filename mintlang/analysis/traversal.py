@@ -15,6 +15,7 @@ from operator import attrgetter
 from typing import NamedTuple
 
 from mintlang.controllers import ControllerProfile
+from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.records import record
@@ -37,6 +38,11 @@ class LineScope(NamedTuple):
     facts: LineFacts
     controller: ControllerProfile
     dialect: Dialect  # the program's
+
+    def writes(self, span: Span, word: str) -> bool:
+        """Whether ``word`` is written at ``span`` of the line, not brought there by the macro whose name is:
+        a fix that rewrites the word must not rewrite the macro's use (the macro's text would be lost)."""
+        return self.syntax.text[span.start : span.end] == word
 
 
 # What a line has that line rules look for: its statements' types, and whether it uses a keyword,

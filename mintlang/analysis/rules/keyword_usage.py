@@ -58,7 +58,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             code, detail = verdict
             fixes = (
                 _spelling_fix(ref.spelling, controller, ref.spelling_span, scope.dialect, addressed=addressed)
-                if code == 3007
+                if code == 3007 and scope.writes(ref.spelling_span, ref.spelling)
                 else ()
             )
             yield Finding(unit, mint_error(code, ref.spelling_span, detail, fixes=fixes))
@@ -66,7 +66,8 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
     for statement in scope.facts.statements:
         if isinstance(statement, n.BareName) and db.rename_of(statement.name.text) is None:  # else: v3_keywords
             word = statement.name.text
-            fixes = _spelling_fix(word, controller, statement.name.span, scope.dialect)
+            written = scope.writes(statement.name.span, word)
+            fixes = _spelling_fix(word, controller, statement.name.span, scope.dialect) if written else ()
             detail = _not_a_keyword(word, controller, scope.dialect, alone=True)
             yield Finding(unit, mint_error(3007, statement.span, detail, fixes=fixes))
 

@@ -99,12 +99,14 @@ def is_v3_word(word: str) -> bool:
 
 def _old_word(word: str, span: Span, scope: LineScope, *, command: bool) -> Finding | None:
     """Error 3007 for a v3 word, with the rename when renaming keeps the statement valid: a v3 command
-    whose replacement takes a value (``CONTON``: ``CONTOURMODE = 1``) is left to mint-migrate."""
+    whose replacement takes a value (``CONTON``: ``CONTOURMODE = 1``) is left to mint-migrate, and a word
+    from a macro's text, reported at the macro's use, is renamed in the macro's text by hand."""
     found = successor(word, scope.controller)
     if found is None:
         return None
     detail = f"'{word}' is not a Mint v4 keyword: it is {found.detail}"
-    fixes = found.fixes(span) if not command or _is_command(found.rename, scope.controller) else ()
+    renamed = scope.writes(span, word) and (not command or _is_command(found.rename, scope.controller))
+    fixes = found.fixes(span) if renamed else ()
     return Finding(scope.unit, mint_error(3007, span, detail, fixes=fixes, from_v3=True))
 
 

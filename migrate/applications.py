@@ -205,4 +205,4 @@ def _read(path: Path | None) -> SourceFile | NotRead | None:
     except OSError as error:
         return NotRead(f"cannot be read ({error.strerror or error})")
     position = file.nul()
-    return file if position is None else NotRead("not Mint text (a NUL byte)", position)
+    return file if position is None else NotRead(file.not_text(), position)

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import errno
 import stat
-from codecs import BOM_UTF8
+from codecs import BOM_UTF8, BOM_UTF16_BE, BOM_UTF16_LE
 from pathlib import Path
 
 from mintlang.diagnostics import LineIndex, Position
@@ -39,7 +39,22 @@ class SourceFile:
         position = self.nul()
         if position is None:
             return None
-        return f"{self.path}:{position.line}:{position.column}: {NOT_TEXT}"
+        return f"{self.path}:{position.line}:{position.column}: {self.not_text()}"
+
+    def not_text(self) -> str:
+        """Why a file with a NUL byte is not read. Windows editors save "Unicode" as UTF-16, a NUL byte after
+        each ASCII character: its author is told what to save it as, not only that it is binary."""
+        return f"{NOT_TEXT}: UTF-16 text; save it as UTF-8" if self._utf16() else NOT_TEXT
+
+    def _utf16(self) -> bool:
+        data = self.encode()
+        if not data.startswith((BOM_UTF16_LE, BOM_UTF16_BE)):
+            return False
+        try:
+            data.decode("utf-16")  # the mark says which byte order
+        except UnicodeDecodeError:  # binary data that happens to start so (an odd length, a lone surrogate)
+            return False
+        return True
 
     def nul(self) -> Position | None:
         """Where the first NUL byte is, or None.

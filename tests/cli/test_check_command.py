@@ -250,12 +250,29 @@ def test_a_configuration_named_as_config_and_as_a_path_is_reported_once(tmp_path
     assert [r["code"] for r in once if r["path"] == str(config)] == ["W103", "E3001"]
 
 
-def test_a_binary_file_is_refused_with_where_its_nul_byte_is(tmp_path: Path) -> None:
+@pytest.mark.parametrize(
+    ("data", "why"),
+    [
+        pytest.param(b"PRINT 1\n\x89PNG\x00\x1a\n" * 50, "2:5: not Mint text (a NUL byte)", id="binary"),
+        # a byte order mark FF FE, then P 00 R 00 ...: the first NUL byte is the 4th, read as the 4th character
+        pytest.param(
+            "PRINT 1\r\n".encode("utf-16-le").join([b"\xff\xfe", b""]),
+            "1:4: not Mint text (a NUL byte): UTF-16 text; save it as UTF-8",
+            id="utf-16-little-endian",
+        ),
+        pytest.param(
+            "PRINT 1\r\n".encode("utf-16-be").join([b"\xfe\xff", b""]),
+            "1:3: not Mint text (a NUL byte): UTF-16 text; save it as UTF-8",
+            id="utf-16-big-endian",
+        ),
+    ],
+)
+def test_a_binary_file_is_refused_with_where_its_nul_byte_is(tmp_path: Path, data: bytes, why: str) -> None:
     binary = tmp_path / "image.mnt"
-    binary.write_bytes(b"PRINT 1\n\x89PNG\x00\x1a\n" * 50)
+    binary.write_bytes(data)
     result = mint_check(binary)
     assert result.exit_code == 2
-    assert result.stderr == f"mint check: {binary}:2:5: not Mint text (a NUL byte): not checked\n"
+    assert result.stderr == f"mint check: {binary}:{why}: not checked\n"
     assert mint_check("--config", binary, write(tmp_path, "app.mnt", CLEAN)).exit_code == 2
 
 

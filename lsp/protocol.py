@@ -39,6 +39,7 @@ import cattrs
 from lsprotocol import types
 from pygls.exceptions import (
     JsonRpcException,
+    JsonRpcInternalError,
     JsonRpcInvalidParams,
     JsonRpcInvalidRequest,
     JsonRpcParseError,
@@ -174,6 +175,20 @@ class ParseErrorsInOneLine(logging.Filter):
     def filter(self, record: logging.LogRecord) -> bool:
         if record.exc_info is not None and isinstance(record.exc_info[1], UNREADABLE):
             record.msg, record.args = "unreadable message: %s", (record.exc_info[1],)
+            record.exc_info, record.exc_text = None, None
+        return True
+
+
+class RefusalsInOneLine(logging.Filter):
+    """pygls logs a request its handler refused on purpose (``JsonRpcException``: a command no server has, a
+    name no rename takes) with a traceback, though it answers it with the error; the client's mistake is one
+    line. An internal error keeps its traceback: that one is ours."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        refused = record.exc_info[1] if record.exc_info is not None else None
+        if isinstance(refused, JsonRpcException) and not isinstance(refused, JsonRpcInternalError):
+            said = record.args if isinstance(record.args, tuple) else ()  # the message id
+            record.msg, record.args = "refused request %s: %s", (*said[:1], refused.message)
             record.exc_info, record.exc_text = None, None
         return True
 

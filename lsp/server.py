@@ -23,7 +23,13 @@ from mintlang.lsp.collector import Collector
 from mintlang.lsp.disk import read_text
 from mintlang.lsp.lookup import line_prefix
 from mintlang.lsp.positions import Positions
-from mintlang.lsp.protocol import UNREADABLE, DecodeErrorsInOneLine, MintProtocol, ParseErrorsInOneLine
+from mintlang.lsp.protocol import (
+    UNREADABLE,
+    DecodeErrorsInOneLine,
+    MintProtocol,
+    ParseErrorsInOneLine,
+    RefusalsInOneLine,
+)
 from mintlang.lsp.workspace import MAX_CHARACTERS, Analyses, Snapshot
 
 log = logging.getLogger(__name__)
@@ -34,6 +40,7 @@ class MintServer(LanguageServer):
         super().__init__("mint-lsp", __version__, protocol_cls=MintProtocol)  # LSP line ends, every request answered
         logging.getLogger("pygls.server").addFilter(ParseErrorsInOneLine())  # its message loop logs them
         logging.getLogger("pygls.protocol.json_rpc").addFilter(DecodeErrorsInOneLine())  # and its decoder these
+        logging.getLogger("pygls.protocol.json_rpc").addFilter(RefusalsInOneLine())  # and its handlers' refusals
         self.analyses = Analyses(read=self.read_text, opened=self.opened, collector=Collector())
         self.when_initialized: list[Callable[[], Awaitable[None]]] = []  # features' work once the client is ready
         self.when_settings_changed: list[Callable[[], Awaitable[None]]] = []  # and once the settings changed

@@ -67,3 +67,13 @@ def test_a_notification_with_params_that_do_not_fit_is_dropped_with_one_line_in_
     assert [answer.get("id") for answer in answers] == [1, 2]
     assert "dropped textDocument/didOpen: " in log
     assert "Traceback" not in log
+
+
+def test_a_request_refused_on_purpose_is_answered_with_one_line_in_the_log() -> None:
+    # pygls answered an unknown command with InvalidParams but logged the client's mistake with a traceback
+    command = _message(id=3, method="workspace/executeCommand", params={"command": "nope", "arguments": []})
+    answers, log = _answers(command.split(b"\r\n\r\n", 1)[1])
+    refused = next(answer for answer in answers if answer.get("id") == 3)
+    assert refused["error"]["code"] == -32602  # InvalidParams
+    assert "refused request 3: Invalid Params: Command name 'nope' is not defined" in log
+    assert "Traceback" not in log

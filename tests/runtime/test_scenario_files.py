@@ -173,9 +173,7 @@ def test_a_toml_syntax_error_keeps_tomllib_line_and_column(tmp_path: Path) -> No
         pytest.param(os.mkdir, "not a regular file", id="a-folder"),
     ],
 )
-def test_a_file_that_cannot_be_read_is_a_scenario_error(
-    tmp_path: Path, make: Callable[[Path], None], why: str
-) -> None:
+def test_a_file_that_cannot_be_read_is_a_scenario_error(tmp_path: Path, make: Callable[[Path], None], why: str) -> None:
     path = tmp_path / "scenario.toml"
     make(path)
     with pytest.raises(ScenarioFileError) as raised:

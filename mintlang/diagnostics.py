@@ -38,6 +38,18 @@ def lines_of(text: str) -> Iterator[str]:
     return (found.group() for found in _LINE.finditer(text))
 
 
+_QUOTED_AT_MOST = 40  # characters of source a message quotes whole
+
+
+def quoted(source: str) -> str:
+    """A piece of source as a message names it: whole, or its two ends and its length when it is long
+    (a literal of thousands of digits would make a message nobody reads; the code frame shows the place)."""
+    if len(source) <= _QUOTED_AT_MOST:
+        return source
+    end = _QUOTED_AT_MOST // 2
+    return f"{source[:end]}…{source[-end:]} ({len(source)} characters)"
+
+
 class Severity(StrEnum):
     ERROR = "error"
     WARNING = "warning"

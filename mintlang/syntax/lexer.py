@@ -29,7 +29,7 @@ from typing import TypeVar, overload
 from mintlang import binary32
 from mintlang.caching import LINES_KEPT, RecentCache
 from mintlang.codes import mint_error, own
-from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
+from mintlang.diagnostics import Diagnostic, Edit, Fix, Span, quoted
 from mintlang.dialect import Dialect
 from mintlang.records import record
 from mintlang.syntax.moved import MovedOffsets, Spliced
@@ -309,7 +309,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
                 if problem is not None:
                     issues.append(_syntax_issue(position, len(text), problem))
                 elif len(text) >= SHORTEST_TOO_LARGE and dialect.modern and _too_large(text):
-                    detail = f"{text} is too large for a Mint number"
+                    detail = f"{quoted(text)} is too large for a Mint number"
                     issues.append(mint_error(3, Span(position, position + len(text)), detail))
         elif group == "string":
             kind = _STRING

@@ -16,6 +16,7 @@ from collections.abc import Iterator
 from mintlang import binary32
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import LineScope
+from mintlang.diagnostics import quoted
 from mintlang.semantic.constants import binary_value, held_value
 
 
@@ -32,5 +33,5 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             binary32.rounded(value)
         except OverflowError:
             span = operation.span
-            detail = f"{scope.syntax.text[span.start : span.end]} is too large for a Mint number"
+            detail = f"{quoted(scope.syntax.text[span.start : span.end])} is too large for a Mint number"
             yield Finding(scope.unit, mint_error(3, span, detail))

@@ -34,13 +34,16 @@ INERT_SETTINGS = {"ECHO": 3.0, "TERM": 3.0}  # the terminal: one merged log here
 
 RANGES: Mapping[str, Bounds] = MappingProxyType(
     {
+        "BAUD": Bounds(300.0, 19200.0, False),  # 001:6103
+        "ECHO": Bounds(0.0, 3.0, False),  # 001:7504
         "IMASK": Bounds(0.0, 255.0, False),  # 001:8884: #IN0..#IN7, one bit each
         "IPEND": Bounds(0.0, 255.0, False),  # 001:9301
+        "TERM": Bounds(1.0, 7.0, False),  # 001:12000
         "WAIT": Bounds(2.0, 65535.0, False),  # 001:12540
     }
 )
-"""The chapter 10 ranges of the controller-wide keywords whose v4 ranges are wider (the axis parameters' are in
-``parameters.py``); a value outside is "Out of range" (001:13136-13138)."""
+"""The chapter 10 ranges of the controller-wide keywords v4 bounds more widely or not at all (the axis
+parameters' are in ``parameters.py``); a value outside is "Out of range" (001:13136-13138)."""
 
 
 class V3KeywordTable(KeywordTable):

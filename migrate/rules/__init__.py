@@ -64,7 +64,7 @@ from mintlang.migrate.rules.statements import (
     ServoOn,
     Zero,
 )
-from mintlang.migrate.rules.terminal import Baud, BinaryOutput
+from mintlang.migrate.rules.terminal import Baud, BinaryOutput, PauseForKey
 from mintlang.migrate.rules.timing import GoTiming
 from mintlang.migrate.rules.writes import (
     AccelAlsoDecel,
@@ -113,6 +113,7 @@ RULES: tuple[Rule, ...] = (
     InputByte(),
     BinaryOutput(),
     Baud(),
+    PauseForKey(),
     NodeNumber(),
     LoopTime(),
     DacUnits(),

@@ -1,4 +1,4 @@
-"""Terminal and serial-port keywords: BINARY output and the BAUD rate."""
+"""Terminal and serial-port keywords: BINARY output, the BAUD rate, and PAUSE waiting for a key."""
 
 from __future__ import annotations
 
@@ -51,6 +51,25 @@ class BinaryOutput(Rule):
                 "v4 PRINT BIN has no 8-digit zero padding (v3 00001100, v4 1100) and prints a negative in 24 bits;"
                 " v3 printed 8 bits at most and dropped fractions",
             )
+
+
+class PauseForKey(Rule):
+    """v3's ``PAUSE`` with no condition waits until a key is pressed at the terminal (v3:2211); v4's PAUSE
+    needs one (no expression is error 2005, v4:15013). ``PAUSE INKEY`` waits for any key in both (v3:2217-2223,
+    v4:1680-1693), and the simulator runs v3's bare PAUSE as it, the key read (``runtime/BEHAVIOUR.md``)."""
+
+    id = "M-PAUSEKEY"
+    rule_class = RuleClass.MECHANICAL
+    phase = Phase.CONTEXT
+    summary = "PAUSE (no condition: wait for a key) -> PAUSE INKEY"
+    evidence = "v3:2211-2223; v4:15013, v4:1680-1693"
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        for file, _, statement in context.statements(n.Pause):
+            if type(statement) is n.Pause and statement.condition is None:
+                start, end = statement.span
+                written = file.text[start : start + len("PAUSE")]  # INKEY in the same case: pause inkey
+                yield self.replace(file, Span(end, end), " " + like(written, "INKEY"))
 
 
 class Baud(StatementRule):

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping, Sequence
 
+from mintlang.diagnostics import Span
 from mintlang.keyworddb.model import CIRCLES
 from mintlang.records import record
 from mintlang.runtime.clock import NEVER
@@ -592,13 +593,16 @@ class StatementCompiler:
         return goto
 
     def pause(self, statement: n.Pause, pc: int) -> Operation:
-        if statement.condition is None:
+        waited_for = statement.condition
+        if waited_for is None and not self.expressions.semantics.dialect.modern:
+            # v3's PAUSE alone waits until a key is pressed (001:2211), as its PAUSE INKEY does, which reads it
+            end = statement.span.end
+            waited_for = n.KeywordRef(Span(end, end), "INKEY", "INKEY", Span(end, end), None, None)
+        if waited_for is None:
             raise MintError(NO_EXPRESSION, detail="PAUSE needs a condition")
-        condition = self.expressions.compile(statement.condition)
-        complete = self.expressions.complete_horizon(statement.condition)
-        keys = any(
-            type(part) is n.KeywordRef and part.keyword == "INKEY" for part in n.walk_expression(statement.condition)
-        )
+        condition = self.expressions.compile(waited_for)
+        complete = self.expressions.complete_horizon(waited_for)
+        keys = any(type(part) is n.KeywordRef and part.keyword == "INKEY" for part in n.walk_expression(waited_for))
         vm = self.vm
         clock = vm.clock
 

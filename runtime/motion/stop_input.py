@@ -50,28 +50,29 @@ class StopInputs:
         mode = int(axis.parameters["STOPINPUTMODE"])
         move = axis.move
         ramped = type(move) is PlannedMove and axis.torque is None
+        decel = self.motion.error_decel(axis)
         if mode == IGNORE or (mode == NORMAL and not ramped):
             self.raise_stop()
-        elif mode == CANCEL or not ramped or self.motion.error_decel(axis) == 0.0:  # no rate to ramp down at
+        elif mode == CANCEL or not ramped or decel == 0.0:  # no rate to ramp down at
             self.motion.crash_group(axis)
             self.raise_stop()
         else:
             if mode == STOP:
-                self.motion.stop_group(axis, next_profiler_tick(tick), self.motion.error_decel(axis))
+                self.motion.stop_group(axis, next_profiler_tick(tick), decel)
             else:
-                self._hold(axis, move, next_profiler_tick(tick))  # type: ignore[arg-type]
+                self._hold(axis, move, next_profiler_tick(tick), decel)  # type: ignore[arg-type]
             if self.at_edge:
                 self.raise_stop()
             else:
                 self.await_rest.add(axis.number)
 
-    def _hold(self, axis: Axis, move: PlannedMove, tick: int) -> None:
-        """Ramp the move down at ERRORDECEL but keep it, and what is buffered behind it, to resume.
+    def _hold(self, axis: Axis, move: PlannedMove, tick: int, decel: float) -> None:
+        """Ramp the move down at ``decel`` (ERRORDECEL) but keep it, and what is buffered behind it, to resume.
 
         The ramp does not complete while the axis is held, so AXISMODE keeps showing the move and
         IDLE stays 0: the program waiting for the move waits for the input to clear.
         """
-        self.held[axis.number] = hold(self.motion, move, tick, self.motion.error_decel(axis))
+        self.held[axis.number] = hold(self.motion, move, tick, decel)
 
     def _cleared(self, axis: Axis) -> None:
         held = self.held.pop(axis.number, None)

@@ -19,7 +19,7 @@ from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, SymbolTabl
 from mintlang.semantic.units import Unit
 from mintlang.syntax.nodes import identity
 from mintlang.syntax.parser import Document
-from mintlang.syntax.tokens import TRIVIA, TokenKind
+from mintlang.syntax.tokens import TRIVIA, TokenKind, in_a_word
 
 _JUMPS = frozenset({TokenKind.GOSUB, TokenKind.GOTO})
 # what GOSUB and GOTO take for a label's name (label_ref, grammar.lark): #home is a label as #worker is
@@ -130,9 +130,9 @@ def symbol_at(snapshot: Snapshot, offset: int) -> tuple[Symbol, Occurrence] | No
 def _word_at(text: str, offset: int) -> str:
     """The name written at ``offset`` (or ending there), empty where none is."""
     start = end = offset
-    while start > 0 and (text[start - 1].isalnum() or text[start - 1] == "_"):
+    while start > 0 and in_a_word(text[start - 1]):
         start -= 1
-    while end < len(text) and (text[end].isalnum() or text[end] == "_"):
+    while end < len(text) and in_a_word(text[end]):
         end += 1
     return text[start:end]
 

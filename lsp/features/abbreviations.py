@@ -14,6 +14,7 @@ from lsprotocol import types
 from mintlang.diagnostics import Span
 from mintlang.lsp.lookup import abbreviated, token_index
 from mintlang.lsp.workspace import Snapshot
+from mintlang.syntax.tokens import in_a_word
 
 KIND = types.CodeActionKind.RefactorRewrite
 
@@ -21,13 +22,9 @@ KIND = types.CodeActionKind.RefactorRewrite
 def _spaced(source: str, start: int, end: int, name: str) -> str:
     """``name`` with a space on each side a word touches: ``?`` needs none before the word it prints
     (``?FASTPOS.2``, 000:10452), but ``PRINTFASTPOS`` would be one name."""
-    before = " " if start > 0 and _wordy(source[start - 1]) else ""
-    after = " " if end < len(source) and _wordy(source[end]) else ""
+    before = " " if start > 0 and in_a_word(source[start - 1]) else ""
+    after = " " if end < len(source) and in_a_word(source[end]) else ""
     return f"{before}{name}{after}"
-
-
-def _wordy(character: str) -> bool:
-    return character.isalnum() or character == "_"
 
 
 def edits(snapshot: Snapshot, span: Span) -> list[types.TextEdit]:

@@ -34,6 +34,7 @@ from mintlang.records import record
 from mintlang.semantic.events import Event, EventKind, event_of
 from mintlang.semantic.index import LineFacts
 from mintlang.syntax import nodes as n
+from mintlang.syntax.tokens import in_a_word
 
 
 class BlockKind(StrEnum):
@@ -313,7 +314,7 @@ def _first_word(span: Span, line: n.LineSyntax) -> Span:
     it (``UNTIL a > 1``, ``NEXT i``)."""
     text = line.text
     end, stop = span.start, min(span.end, len(text))
-    while end < stop and (text[end].isalnum() or text[end] == "_"):
+    while end < stop and in_a_word(text[end]):
         end += 1
     return Span(span.start, end) if end > span.start else span
 

@@ -23,6 +23,12 @@ def end_of_file_mark(text: str) -> str:
     return text[len(text.rstrip(_END_OF_FILE)) :]
 
 
+def in_a_word(character: str) -> bool:
+    """Whether ``character`` can be part of a name, keyword or number (a letter, a digit or ``_``): where a word
+    written in the text begins and ends, for tools that look at text rather than tokens."""
+    return character.isalnum() or character == "_"
+
+
 class TokenKind(StrEnum):
     """Lexical categories. Significant kinds double as the grammar's terminal names."""
 

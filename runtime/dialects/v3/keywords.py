@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from types import MappingProxyType
 
-from mintlang.keyworddb import database
+from mintlang.keyworddb import database, v3_ranges
 from mintlang.runtime.dialects.v3.numbers import fixed
 from mintlang.runtime.inert import InertSettings
 from mintlang.runtime.keywords import (
@@ -33,17 +33,9 @@ from mintlang.runtime.ranges import Bounds, check_range
 INERT_SETTINGS = {"ECHO": 3.0, "TERM": 3.0}  # the terminal: one merged log here (001:7504, 11989-12032)
 
 RANGES: Mapping[str, Bounds] = MappingProxyType(
-    {
-        "BAUD": Bounds(300.0, 19200.0, False),  # 001:6103
-        "ECHO": Bounds(0.0, 3.0, False),  # 001:7504
-        "IMASK": Bounds(0.0, 255.0, False),  # 001:8884: #IN0..#IN7, one bit each
-        "IPEND": Bounds(0.0, 255.0, False),  # 001:9301
-        "TERM": Bounds(1.0, 7.0, False),  # 001:12000
-        "WAIT": Bounds(2.0, 65535.0, False),  # 001:12540
-    }
+    {name: Bounds(row.lowest, row.highest, False) for name, row in v3_ranges.SETTINGS.items()}
 )
-"""The chapter 10 ranges of the controller-wide keywords v4 bounds more widely or not at all (the axis
-parameters' are in ``parameters.py``); a value outside is "Out of range" (001:13136-13138)."""
+"""The controller-wide keywords' v3 ranges (the axis parameters' are in ``parameters.py``)."""
 
 
 class V3KeywordTable(KeywordTable):

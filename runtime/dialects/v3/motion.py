@@ -17,8 +17,9 @@ import math
 from collections.abc import Callable, Mapping
 from types import MappingProxyType
 
+from mintlang.keyworddb.v3_ranges import AXIS_PARAMETERS
 from mintlang.runtime.dialects.v3.handlers import V4Handlers
-from mintlang.runtime.dialects.v3.parameters import CHECKED_IN_V3, RANGES, RENAMED, power_up
+from mintlang.runtime.dialects.v3.parameters import CHECKED_IN_V3, RENAMED, power_up
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer, per_channel
 from mintlang.runtime.motion.axis import (
@@ -115,13 +116,13 @@ class V3Motion:
         self, name: str, write_one: Callable[[int | None, float], None]
     ) -> Callable[[int | None, float], None]:
         """``write_one`` for values in the v3 range of ``name``, if the tables give one (V3-5)."""
-        if name not in RANGES:
+        row = AXIS_PARAMETERS.get(name)
+        if row is None:
             return write_one
-        low, high, scaled = RANGES[name]
 
         def write(channel: int | None, value: float) -> None:
-            counts = value * self.motion.axis(channel).scale if scaled else value
-            if not low <= counts <= high:
+            counts = value * self.motion.axis(channel).scale if row.scaled else value
+            if not row.lowest <= counts <= row.highest:
                 raise MintError(OUT_OF_RANGE, channel, f"{name} = {value:g}")
             write_one(channel, value)
 

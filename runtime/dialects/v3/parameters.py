@@ -1,10 +1,12 @@
-"""Mint v3 axis parameters: their v3 names, power-up values and ranges, over the v4 axis's parameters."""
+"""Mint v3 axis parameters: their v3 names and power-up values, over the v4 axis's parameters (their ranges:
+``mintlang.keyworddb.v3_ranges``)."""
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from types import MappingProxyType
 
+from mintlang.keyworddb.v3_ranges import AXIS_PARAMETERS
 from mintlang.runtime.dialects.v3.controllers import HOME_INPUT, LIMIT_INPUT, STOP_INPUT
 from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.motion.parameters import DEFAULTS
@@ -38,30 +40,7 @@ RENAMED: Mapping[str, str] = MappingProxyType(
 )
 """v3 names of v4 axis parameters (001 chapter 10; spec M-REN); IDLE only when written (001:8762-8770)."""
 
-RANGES: Mapping[str, tuple[float, float, bool]] = MappingProxyType(
-    {
-        "ACCEL": (1000.0, 8_388_607.0, True),
-        "DECEL": (1000.0, 8_388_607.0, True),
-        "SPEED": (0.0, 5_300_000.0, True),
-        "HMSPEED": (2.0, 5_300_000.0, True),
-        "JOG": (-5_300_000.0, 5_300_000.0, True),
-        "MFOLERR": (0.0, 32_767.0, True),
-        "IDLE": (0.0, 16_000.0, True),
-        "BACKOFF": (1.0, 100.0, False),
-        "CURRLIMIT": (1.0, 100.0, False),
-        "GAIN": (0.0, 255.0, False),
-        "KINT": (0.0, 255.0, False),
-        "KINTRANGE": (0.0, 255.0, False),
-        "KVEL": (0.0, 255.0, False),
-        "KVELFF": (0.0, 255.0, False),
-        "TORQUE": (-100.0, 100.0, False),
-        "ACCELTIME": (2.0, 32_000.0, False),
-    }
-)
-"""v3 name -> (lowest, highest, scaled): the chapter 10 ranges, given for SCALE 1, so a scaled one in counts
-(001:13136-13138)."""
-
-CHECKED_IN_V3 = frozenset(RENAMED.get(name, name) for name in RANGES) & DEFAULTS.keys()
+CHECKED_IN_V3 = frozenset(RENAMED.get(name, name) for name in AXIS_PARAMETERS) & DEFAULTS.keys()
 """The v4 parameters whose v3 range replaces the v4 machine's."""
 
 

@@ -13,6 +13,9 @@ mint check finds the "Invalid axis" mint-run raises (001:13173-13184), and the "
 of more values than the axes listed (001:990-992, 13097-13111) or than the three a v3 controller
 has at most (001:972), of a vector with a place left empty (001:13100-13109), of a circle not
 given its centre and angle (001:6719), and of a second value to a keyword whose format writes one.
+A constant written outside the range v3's table prints (``WAIT = 1``, ``GAIN = 300``) is "Out of range"
+on the controller, v4's 3 (001:13136-13138), as in mint-run; a scaled one only where no scale factor
+brings it in (``SPEED = -5``, ``ACCEL = 0``), SCALE being at least 1 (001:11592).
 """
 
 from __future__ import annotations
@@ -21,11 +24,13 @@ from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.rules.addressing import circle_values, lone_position, one_value, values_for_axes, vector_gap
+from mintlang.analysis.rules.values import scaled_can_hold
 from mintlang.analysis.traversal import KeywordUse, LineScope, Use
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import CIRCLES, VECTORS, Addressing, V3Keyword
-from mintlang.semantic.constants import constant_integer
+from mintlang.keyworddb.model import CIRCLES, VECTORS, Addressing, V3Keyword, ValueRange
+from mintlang.keyworddb.v3_ranges import AXIS_PARAMETERS, SETTINGS
+from mintlang.semantic.constants import constant_integer, constant_value
 from mintlang.syntax import nodes as n
 from mintlang.syntax.v3_axis_lists import NUMBER_OR_VARIABLE, refused_axes
 
@@ -41,6 +46,8 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         yield from _axes(use, keyword)
         if keyword is not None and keyword.name in db.v3_one_value_writes:  # OUT.1 = 1, 0
             yield from one_value(use, keyword.name)
+        if keyword is not None and use.use is Use.WRITE:
+            yield from _out_of_range(use, keyword.name)
         if keyword is None or not (keyword.read or keyword.write or keyword.command):
             continue  # no attribute ticks to go by
         name, span = keyword.name, use.keyword.spelling_span
@@ -96,3 +103,19 @@ def _numbers(use: KeywordUse, keyword: V3Keyword, selector: n.Selector) -> Itera
         elif keyword.name in _BIT_WORDS and number not in _BITS:
             detail = f"Out of range in Mint v3: {keyword.name}.{number}, where the bits are 0 to {_BITS[-1]}"
             yield Finding(use.unit, mint_error(3, item.span, detail))
+
+
+def _out_of_range(use: KeywordUse, name: str) -> Iterator[Finding]:
+    """Constants written outside the range v3's table prints for ``name``, if it prints one (``v3_ranges``)."""
+    row = SETTINGS.get(name) or AXIS_PARAMETERS.get(name)
+    if row is None or not isinstance(use.statement, n.KeywordStatement):
+        return
+    limits = ValueRange(f"{row.lowest:.15g} to {row.highest:.15g}", row.lowest, row.highest, True)
+    for value in use.statement.values or ():
+        number = constant_value(value, Dialect.V3)
+        if value is None or number is None:
+            continue
+        if not (scaled_can_hold(limits, number, 1.0) if row.scaled else limits.holds(number)):
+            detail = f"{number:.15g} is outside the range of {name} in Mint v3 ({limits.text})"
+            detail += " whatever the scale factor" if row.scaled else ""
+            yield Finding(use.unit, mint_error(3, value.span, detail))

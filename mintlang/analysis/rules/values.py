@@ -64,7 +64,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             elif positive and number <= 0:
                 yield Finding(use.unit, mint_error(3, value.span, f"{label} takes only a positive value"))
             elif limits is not None and not (
-                _scaled_can_hold(limits, number, least) if scaled else limits.holds(number)
+                scaled_can_hold(limits, number, least) if scaled else limits.holds(number)
             ):
                 detail = f"{_as_written(value, number)} is outside the range of {label} ({limits.text})"
                 if scaled:
@@ -122,7 +122,7 @@ def _least_scale(controller: Controller, dialect: Dialect) -> float:
     return max(0.0, min(minima))
 
 
-def _scaled_can_hold(limits: ValueRange, value: float, least: float) -> bool:
+def scaled_can_hold(limits: ValueRange, value: float, least: float) -> bool:
     """Whether ``value`` times some scale factor of at least ``least`` (any positive one when it is 0) lies in
     ``limits``: a larger factor only takes the product further from zero."""
     if value == 0:

@@ -42,14 +42,15 @@ GROUP = Group(
             "For a scaled keyword the range applies after the scale factor, known only when the program runs; "
             "as the factor is always positive, only a sign no factor can mend is reported (`SPEED = -5`, "
             "`ACCEL = 0`). Also a constant given to ACOS or ASIN outside -1 to 1, or to LOG that is not "
-            "above 0 (`ACOS(2)`, `LOG(0)`): those functions have no answer there.",
+            "above 0 (`ACOS(2)`, `LOG(0)`): those functions have no answer there. In Mint v3 (`--dialect v3`) "
+            "the ranges are the v3 guide's, given at SCALE 1 (`WAIT = 1`, `GAIN = 300`), v3's \"Out of range\".",
             why="The controller raises the error when the line runs and stops the program (or calls "
             "#ONERROR); the parameter keeps its old value.",
             example=Example(
                 before="KPROP.0 = -1\n",
                 after="KPROP.0 = 1\n",
             ),
-            manual=("v4:18518", "v4:4611", "v4:5586", "v4:6279", "v4:13723"),
+            manual=("v4:18518", "v4:4611", "v4:5586", "v4:6279", "v4:13723", "v3:13136"),
             fix="The right value comes from the machine, not from the program.",
             safety=FixSafety.NONE,
         ),

@@ -3,7 +3,8 @@
 The comms note shows the correspondence for the comms locations 1 to 5 that raise
 an event (002:19, MT-13). A handler is rewritten only when the block says the
 same thing: its label alone on its line (``#COMMS01`` is a plain label, see
-``mintlang.semantic.events``), one ``RETURN`` alone on its line ending it, no other
+``mintlang.semantic.events``), one ``RETURN`` alone on its line ending it (a ``:`` before a
+comment is no statement, ``Line.statement_kinds``), no other
 label, ``RETURN`` or ``GOTO`` between (a ``GOTO`` leaves the handler, whose
 ``RETURN`` is then the label's it went to), no jump naming it, and code above it
 that cannot run into it (v4 would run into the handler, a MintMT ``Event`` is stepped
@@ -67,7 +68,7 @@ def _return_line(lines: tuple[Line, ...], label: int) -> int | None:
     depth = 0
     for position in range(label + 1, len(lines)):
         kinds = lines[position].kinds
-        if kinds == (_K.RETURN,) and depth == 0:
+        if lines[position].statement_kinds == (_K.RETURN,) and depth == 0:
             return position
         if _K.RETURN in kinds or (kinds and kinds[0] is _K.LABEL):
             return None
@@ -80,7 +81,7 @@ def _why_not(source: Source, label: int, end: int | None) -> str | None:
     """Why the comms handler at line index ``label`` cannot be an ``Event`` block, or None."""
     line = source.lines[label]
     name = line.tokens[0].text[1:].upper()
-    if len(line.tokens) > 1:
+    if len(line.statement_kinds) > 1:
         return "a statement follows its label on the line"
     if end is None:
         return "it does not end with one RETURN alone on its line before the next label"
@@ -105,10 +106,10 @@ def _jump_targets(source: Source) -> set[str]:
 def _runs_into(lines: tuple[Line, ...], label: int) -> bool:
     """Whether the code above line index ``label`` can go on into it: it does not end with ``END``,
     ``RETURN``, ``GOTO`` or a ``LOOP`` with no ``EXIT``."""
-    above = next((position for position in range(label - 1, -1, -1) if not lines[position].blank), None)
+    above = next((position for position in range(label - 1, -1, -1) if lines[position].statement_kinds), None)
     if above is None:
         return True  # the program starts with it
-    kinds = lines[above].kinds
+    kinds = lines[above].statement_kinds
     if kinds in _STOPS or (kinds[0] is _K.GOTO and len(kinds) == 2):
         return False
     return not (kinds == (_K.ENDL,) and _endless(lines, above))

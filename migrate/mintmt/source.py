@@ -60,6 +60,16 @@ class Line:
         return self.lexed.kinds
 
     @property
+    def statement_kinds(self) -> tuple[TokenKind, ...]:
+        """``kinds`` without the ``:`` that end the line: before a comment (``RETURN : REM c``, as the v4
+        guide advises writing a comment after code, 000:15510-15512) they separate no statement."""
+        kinds = self.lexed.kinds
+        end = len(kinds)
+        while end and kinds[end - 1] is TokenKind.COLON:
+            end -= 1
+        return kinds[:end]
+
+    @property
     def comment(self) -> Span | None:
         """Where the line's comment is, without the line break."""
         if self.lexed.comment_start < 0:

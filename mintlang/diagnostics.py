@@ -81,6 +81,13 @@ class Edit:
         return Edit(self.span.shifted(offset), self.text)
 
 
+def with_edits(text: str, edits: Sequence[Edit]) -> str:
+    """``text`` with ``edits``, which do not overlap, made; two insertions at one place in their order."""
+    for _, edit in sorted(enumerate(edits), key=lambda pair: (pair[1].span.start, pair[0]), reverse=True):
+        text = text[: edit.span.start] + edit.text + text[edit.span.end :]  # the last first: offsets hold
+    return text
+
+
 @record
 class Fix:
     """A named set of edits that resolves a diagnostic.

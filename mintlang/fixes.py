@@ -17,7 +17,7 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Callable, Collection, Iterable, Sequence
 
-from mintlang.diagnostics import Diagnostic, Edit, Fix
+from mintlang.diagnostics import Diagnostic, Edit, Fix, with_edits
 from mintlang.records import record
 
 MAX_ROUNDS = 10
@@ -73,9 +73,7 @@ def apply_once(
             continue
         taken.extend(fix.edits)
         fixed.append(diagnostic)
-    for _, edit in sorted(enumerate(taken), key=lambda pair: (pair[1].span.start, pair[0]), reverse=True):
-        text = text[: edit.span.start] + edit.text + text[edit.span.end :]  # the last first: offsets hold
-    return text, fixed
+    return with_edits(text, taken), fixed
 
 
 def fix_text(text: str, check: Callable[[str], Sequence[Diagnostic]], *, unsafe: bool) -> Fixed:

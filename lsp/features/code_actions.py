@@ -57,7 +57,8 @@ def quick_fixes(
             # Over several lines, "on this line" would not say which: ruff's "Disable for this line" leaves such
             # titles alike, and an editor lists the actions without their lines.
             start_offset, code = diagnostic.span.start, diagnostic.code
-            fixes.append((suppression_fix(snapshot.document, start_offset, code, name_the_line=several_lines), None))
+            ignoring = suppression_fix(snapshot.document, start_offset, code, name_the_line=several_lines)
+            fixes += [(ignoring, None)] if ignoring is not None else []
         for fix, preferred in fixes:
             if (fix.title, fix.edits) in offered:
                 continue

@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING
 
 from mintlang.codes import code_named, own
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
+from mintlang.dialect import Dialect
 from mintlang.records import record
 from mintlang.syntax.moved import bisect_left, bisect_right
 from mintlang.syntax.tokens import TokenKind
@@ -30,6 +31,9 @@ if TYPE_CHECKING:
     from mintlang.syntax.parser import Document
 
 UNUSED_SUPPRESSION = "W117"
+# A line's last token whose statement goes on after it: a list's comma, a block's DO (MintMT's block
+# ``If .. Then`` is read as DO only while Then ends its line)
+_GOES_ON = (TokenKind.COMMA, TokenKind.DO)
 
 # From the REM (MintMT: or the ') that starts the comment: the directive must be the comment's first words.
 _DIRECTIVE = re.compile(
@@ -218,8 +222,9 @@ def _without_comment(directive: Directive) -> Edit:
     return Edit(Span(directive.statement_end, directive.span.end), "")
 
 
-def suppression_fix(document: Document, offset: int, code: str, *, name_the_line: bool = False) -> Fix:
-    """Silence ``code`` on the line holding ``offset``: the line's directive extended, or one added.
+def suppression_fix(document: Document, offset: int, code: str, *, name_the_line: bool = False) -> Fix | None:
+    """Silence ``code`` on the line holding ``offset``: the line's directive extended, or one added; None where
+    no comment can go (v3's ``PROTECT abc``, whose password is the rest of its line, 001:11089-11092).
 
     A comment already on the line keeps its words after the directive; a line with
     statements gets ``: REM mint: ignore[...]`` after them, as the manual writes comments.
@@ -228,6 +233,8 @@ def suppression_fix(document: Document, offset: int, code: str, *, name_the_line
     index = document.physical_between(offset, offset)[0]
     title = f"Ignore {code} on {f'line {index + 1}' if name_the_line else 'this line'}"
     line_offset, lexed = document.physical[index]
+    if document.dialect is Dialect.V3 and lexed.text.startswith("PROTECT") and lexed.kinds[1:] == (TokenKind.NAME,):
+        return None
     for directive in directives(document):
         if not directive.whole_file and directive.closed and directive.line.start == line_offset:
             end = directive.entries[-1].span.end if directive.entries else directive.span.end - 1
@@ -243,6 +250,7 @@ def suppression_fix(document: Document, offset: int, code: str, *, name_the_line
     if not content.strip():
         return Fix(title, (Edit(Span(end, end), comment),), safe=True)
     # After a trailing comma (a DIM list going on to the next line, guide 3.3) a colon would end the
-    # statement there; a REM needs no colon after code (REM in the keyword reference).
-    separator = " " if lexed.kinds and lexed.kinds[-1] is TokenKind.COMMA else " : "
+    # statement there, and after MintMT's block ``If .. Then`` give it an empty one, making the If one line
+    # long; a REM needs no colon after code (REM in the keyword reference).
+    separator = " " if lexed.kinds and lexed.kinds[-1] in _GOES_ON else " : "
     return Fix(title, (Edit(Span(end, end), f"{separator}{comment}"),), safe=True)

@@ -20,11 +20,16 @@ from mintlang.syntax.lexer import PhysicalLines
 V3_LINE_LENGTH = 127
 
 
+def longest_line(controller: ControllerProfile, dialect: Dialect) -> int:
+    """How many characters a line may have in ``dialect`` on ``controller``."""
+    return V3_LINE_LENGTH if dialect is Dialect.V3 else controller.max_line_length
+
+
 def each_text_line(
     lines: PhysicalLines, indices: range, controller: ControllerProfile, dialect: Dialect
 ) -> Iterator[Diagnostic]:
     """What lines ``indices`` of ``lines`` get, at offsets into their file."""
-    limit = V3_LINE_LENGTH if dialect is Dialect.V3 else controller.max_line_length
+    limit = longest_line(controller, dialect)
     offsets = lines.offsets
     for index in indices:
         length = lines.lexed(index).content_end

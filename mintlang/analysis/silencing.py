@@ -1,0 +1,56 @@
+"""Silencing every finding of a text with suppression comments: ``mint check --add-ignore``, ruff's ``--add-noqa``.
+
+A program that has run on its machines for years is adopted by the checker as it stands: each line's findings
+get one ``REM mint: ignore[...]`` comment (``suppression_fix``, the editor's "Ignore" quick fix, with every code
+of the line), so that only new findings are reported from then on. The comment never makes a line longer than
+the controller reads (``longest_line``), nor goes where it would not be a comment (v3's ``PROTECT abc``): such a
+line keeps its findings. Unused suppressions (W117) are not
+silenced but removed by their own fix.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from mintlang.analysis.suppression import UNUSED_SUPPRESSION, suppression_fix
+from mintlang.diagnostics import Diagnostic, Edit, with_edits
+from mintlang.records import record
+from mintlang.syntax.parser import Document
+
+
+@record
+class Silenced:
+    """A text with the comments added; the findings they silence, and those left where none could go."""
+
+    text: str
+    silenced: tuple[Diagnostic, ...]
+    left: tuple[Diagnostic, ...]
+
+
+def silence(document: Document, diagnostics: Sequence[Diagnostic], longest_line: int) -> Silenced:
+    """``document``'s text with each line holding ``diagnostics`` given a comment naming their codes, in order."""
+    by_line: dict[int, list[Diagnostic]] = {}
+    left: list[Diagnostic] = []
+    for diagnostic in diagnostics:
+        if diagnostic.code == UNUSED_SUPPRESSION:
+            left.append(diagnostic)
+        else:
+            by_line.setdefault(document.physical_between(diagnostic.span.start, diagnostic.span.start)[0], []).append(
+                diagnostic
+            )
+    edits, silenced = [], []
+    for index, found in by_line.items():
+        codes = ", ".join(sorted({diagnostic.code for diagnostic in found}))
+        fix = suppression_fix(document, found[0].span.start, codes)
+        if fix is None or _longer(document, index, fix.edits) > longest_line:
+            left.extend(found)
+        else:
+            edits.extend(fix.edits)
+            silenced.extend(found)
+    return Silenced(with_edits(document.source, edits), tuple(silenced), tuple(left))
+
+
+def _longer(document: Document, index: int, edits: Sequence[Edit]) -> int:
+    """How long line ``index`` is once ``edits`` are made on it."""
+    grown = sum(len(edit.text) - (edit.span.end - edit.span.start) for edit in edits)
+    return document.physical.lexed(index).content_end + grown

@@ -181,6 +181,7 @@ def check(
     fix: bool,
     unsafe_fixes: bool,
     diff: bool,
+    add_ignore: bool,
 ) -> None:
     """Check Mint programs for the errors the controller finds, and more.
 
@@ -212,6 +213,8 @@ def check(
         _fail(f"--config {config_path} is the program {itself} itself: name the configuration file")
     if fix and not diff and _STDIN in paths:
         raise click.UsageError("--fix writes files, and standard input is none: use --diff to see the fixes")
+    if add_ignore and (fix or diff or unsafe_fixes or _STDIN in paths):
+        raise click.UsageError("--add-ignore writes comments into the programs: give files, without --fix or --diff")
     if _STDIN not in paths and stdin_filename is not None:
         raise click.UsageError("--stdin-filename names the program read from standard input: give - as a path")
     excluded = found.excluded
@@ -226,7 +229,7 @@ def check(
     except SettingsError as error:
         settings_failed("mint check", error)
     refuse_overwriting(output_file, found.files, _fail)
-    fixing = Fixing.asked(fix, unsafe_fixes, diff)
+    fixing = Fixing.asked(fix, unsafe_fixes, diff, add_ignore=add_ignore)
     work = marked(planned.jobs, planned.hidden, fixing) if fixing is not None else planned.jobs
     if planned.empty and not found.unreadable and not planned.problems:
         if output_format != "text" and not diff:  # a tool reading the report still gets one, with nothing in it
@@ -266,9 +269,10 @@ def check(
         with destination(output_file, _fail) as stream:
             _write(reports + entries, stream, output_format, statistics=statistics, quiet=quiet, color=color)
             if output_format == "text" and not quiet and not statistics:
-                _write_fix_summary(planned.program_reports(results), outcome, stream)
+                _write_fix_summary(planned.program_reports(results), outcome, stream, silencing=add_ignore)
     if outcome is not None and not quiet:
-        notes = outcome.notes() + ([fixed_summary(outcome, diff=diff)] if diff or output_format != "text" else [])
+        summary = fixed_summary(outcome, diff=diff, silencing=add_ignore)
+        notes = outcome.notes() + ([summary] if diff or output_format != "text" else [])
         click.echo("".join(f"mint check: {note}\n" for note in notes), err=True, nl=False)
     if not quiet:
         click.echo("".join(f"{hint}\n" for hint in _hints(results, planned.hidden)), err=True, nl=False)
@@ -308,9 +312,12 @@ def _entries(unchecked: list[Unchecked], layer: Overrides) -> list[FileReport]:
     return entries
 
 
-def _write_fix_summary(programs: list[FileReport], outcome: Outcome | None, stream: IO[str]) -> None:
-    """What was fixed, and what ``--fix`` (or ``--unsafe-fixes``) would fix of what is left in the programs."""
-    lines = [fixed_summary(outcome, diff=False)] if outcome is not None else []
+def _write_fix_summary(
+    programs: list[FileReport], outcome: Outcome | None, stream: IO[str], *, silencing: bool
+) -> None:
+    """What was fixed (or silenced), and what ``--fix`` (or ``--unsafe-fixes``) would fix of what is left in the
+    programs."""
+    lines = [fixed_summary(outcome, diff=False, silencing=silencing)] if outcome is not None else []
     fixable = fixable_summary(programs)
     stream.write("".join(f"{line}\n" for line in [*lines, *([fixable] if fixable else [])]))
 

@@ -39,14 +39,17 @@ class CheckOptions:
 
 
 class Fixing(StrEnum):
-    """Which fixes a run applies."""
+    """Which fixes a run applies; ``SILENCE``: none, each finding silenced by a comment instead (--add-ignore)."""
 
     SAFE = "safe"
     UNSAFE = "unsafe"
+    SILENCE = "silence"
 
     @classmethod
-    def asked(cls, fix: bool, unsafe_fixes: bool, diff: bool) -> Fixing | None:
-        """What ``--fix``, ``--unsafe-fixes`` and ``--diff`` ask; None: report only."""
+    def asked(cls, fix: bool, unsafe_fixes: bool, diff: bool, *, add_ignore: bool = False) -> Fixing | None:
+        """What ``--fix``, ``--unsafe-fixes``, ``--diff`` and ``--add-ignore`` ask; None: report only."""
+        if add_ignore:
+            return cls.SILENCE
         if not (fix or diff):
             return None
         return cls.UNSAFE if unsafe_fixes else cls.SAFE
@@ -115,6 +118,8 @@ def check_file(job: Job) -> Checked:
         analysis = check_application("", config=source.text, select=options.select, **arguments)
         return Checked(FileReport(str(source.path), source.text, analysis.configuration))
     hint = None if options.dialect_chosen else dialect_hint(str(source.path), source.text, Dialect(options.dialect))
+    if job.fixing is Fixing.SILENCE:
+        return replace(_silence_program(job, source, arguments), hint=hint)
     if job.fixing is not None:
         return replace(_fix_program(job, source, arguments), hint=hint)
     analysis = check_application(source.text, config=job.configuration, select=options.select, **arguments)
@@ -133,3 +138,24 @@ def _fix_program(job: Job, source: SourceFile, arguments: dict[str, object]) -> 
     report = FileReport(str(source.path), fixed.text, fixed.remaining)
     as_read = FileReport(str(source.path), source.text, analyses[0].program)
     return Checked(report, analyses[-1].configuration, fixed=FileFixed(source, fixed), as_read=as_read)
+
+
+def _silence_program(job: Job, source: SourceFile, arguments: dict[str, object]) -> Checked:
+    """Silence each finding of the program with a comment on its line; its report is what the new text has."""
+    from mintlang.analysis.rules.line_length import longest_line  # noqa: PLC0415 - --add-ignore alone needs them
+    from mintlang.analysis.silencing import silence  # noqa: PLC0415
+    from mintlang.controllers import profile  # noqa: PLC0415
+
+    options = job.options
+
+    def analysed(text: str) -> Analysis:
+        return check_application(text, config=job.configuration, select=options.select, **arguments)
+
+    before = analysed(source.text)
+    limit = longest_line(profile(options.controller), Dialect(options.dialect))
+    silenced = silence(before.model.program, before.program, limit)
+    after = analysed(silenced.text)
+    fixed = Fixed(silenced.text, silenced.silenced, tuple(after.program), converged=True)
+    report = FileReport(str(source.path), silenced.text, fixed.remaining)
+    as_read = FileReport(str(source.path), source.text, before.program)
+    return Checked(report, after.configuration, fixed=FileFixed(source, fixed), as_read=as_read)

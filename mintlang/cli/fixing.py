@@ -1,7 +1,9 @@
-"""``mint check --fix``, ``--unsafe-fixes`` and ``--diff``: fixing the checked programs, as ruff does.
+"""``mint check --fix``, ``--unsafe-fixes``, ``--diff`` and ``--add-ignore``: fixing the checked programs, as ruff
+does, or silencing their findings.
 
-Each worker fixes its program round after round (``mintlang.fixes``) and
-reports what the fixed text still has; here the fixed texts are written, each
+Each worker fixes its program round after round (``mintlang.fixes``), or
+silences its findings (``mintlang.analysis.silencing``), and reports what the
+new text still has; here the new texts are written, each
 atomically and only if the file still holds what was read (``mintlang.atomic``),
 or shown as unified diffs without writing. A configuration file is reported but
 not fixed: its findings depend on every program that sees it.
@@ -87,17 +89,18 @@ def _plural(count: int, word: str) -> str:
     return f"{count} {word}{'s' if count != 1 else ''}"
 
 
-def fixed_summary(outcome: Outcome, *, diff: bool) -> str:
-    """One line: what was fixed (or would be, with ``diff``) and in how many files, by code, and how many
-    files with fixes could not be written (standard error says why)."""
+def fixed_summary(outcome: Outcome, *, diff: bool, silencing: bool = False) -> str:
+    """One line: what was fixed (or would be, with ``diff``; or silenced by comments) and in how many files, by
+    code, and how many files with fixes could not be written (standard error says why)."""
     total = sum(outcome.codes.values())
     unwritten = (
         f"{_plural(len(outcome.unwritten), 'file')} with fixes could not be written" if outcome.unwritten else ""
     )
     if not total:
-        return f"Nothing fixed: {unwritten}." if unwritten else "Nothing to fix."
+        done, to_do = ("silenced", "silence") if silencing else ("fixed", "fix")
+        return f"Nothing {done}: {unwritten}." if unwritten else f"Nothing to {to_do}."
     codes = ", ".join(f"{count} {code}" for code, count in sorted(outcome.codes.items()))
-    verb = "Would fix" if diff else "Fixed"
+    verb = "Would fix" if diff else "Silenced" if silencing else "Fixed"
     fixed = f"{verb} {_plural(total, 'finding')} in {_plural(outcome.files, 'file')} ({codes})"
     return f"{fixed}; {unwritten}." if unwritten else f"{fixed}."
 
@@ -118,7 +121,7 @@ def fixable_summary(reports: Sequence[FileReport]) -> str | None:
 
 
 def fix_options() -> Callable[[F], F]:
-    """``--fix``, ``--unsafe-fixes`` and ``--diff``, as ruff spells them."""
+    """``--fix``, ``--unsafe-fixes``, ``--diff`` and ``--add-ignore``, as ruff spells them (``--add-noqa``)."""
     options = [
         click.option("--fix", is_flag=True, help="Apply the safe fixes to the programs, and report what is left."),
         click.option(
@@ -130,6 +133,14 @@ def fix_options() -> Callable[[F], F]:
             "--diff",
             is_flag=True,
             help="Show the fixes as a unified diff instead of writing them (exit 1 if there are any).",
+        ),
+        click.option(
+            "--add-ignore",
+            "--add-noqa",
+            "add_ignore",
+            is_flag=True,
+            help="Silence every finding of the programs with a 'REM mint: ignore[...]' comment on its line, to "
+            "adopt the checker on programs as they stand (ruff's --add-noqa).",
         ),
     ]
 

@@ -41,7 +41,7 @@ def refusal(
         return Refusal(17, f"{name} is not available on {profile(controller).title}, only on {listed}")
     attributes = attributes_for(keyword, controller, dialect)  # HOMEPOS's too, which prints none
     if attributes is None:
-        return _refusal_from_formats(keyword, use)
+        return _refusal_from_formats(keyword, use, has_arguments=has_arguments)
     if use is Use.WRITE and not attributes.write:
         what = "a command" if attributes.command else "read only"
         return Refusal(2000, f"{name} is {what} and cannot be given a value")
@@ -50,25 +50,32 @@ def refusal(
             return Refusal(2002, f"{name} can only be written, not read")
         return Refusal(2003, f"{name} is a command and gives no value")
     if use is Use.COMMAND and not attributes.command:
-        if not has_arguments:
-            return Refusal(2005, f"{name} must be read or given a value here (for example '{name} = …')")
-        if name == "WAIT":  # WAIT IDLE.0, as other languages wait on a condition (000:17314-17324)
-            return Refusal(
-                2003, f"{name} waits a time in milliseconds ('{name} = 100'): to wait on a condition, use PAUSE"
-            )
-        return Refusal(2003, f"{name} takes a value with '=': '{name} = …'")
+        return _not_a_command(name, has_arguments=has_arguments)
     if use is Use.COMMAND and has_arguments and not keyword.takes_operands:
         return Refusal(2003, f"{name} takes no operands, only its axes ('{keyword.formats[0]}')")
     return None
 
 
-def _refusal_from_formats(keyword: Keyword, use: Use) -> Refusal | None:
+def _not_a_command(name: str, *, has_arguments: bool) -> Refusal:
+    """The error of a keyword that is no command written as a statement: 2005 named alone, as ``SPEED``
+    (000:18930-18933); 2003 given operands without '='."""
+    if not has_arguments:
+        return Refusal(2005, f"{name} must be read or given a value here (for example '{name} = …')")
+    if name == "WAIT":  # WAIT IDLE.0, as other languages wait on a condition (000:17314-17324)
+        return Refusal(2003, f"{name} waits a time in milliseconds ('{name} = 100'): to wait on a condition, use PAUSE")
+    return Refusal(2003, f"{name} takes a value with '=': '{name} = …'")
+
+
+def _refusal_from_formats(keyword: Keyword, use: Use, *, has_arguments: bool) -> Refusal | None:
     """Error 2000 for a write to a keyword the manual gives no attribute table, judged by its
     formats: read only when every format reads it (``v = ERR``), a command when none assigns it
     (``BEEP``, ``VER``, ``LINE``: 2000 is for a command given a value too, 000:18905-18908); and
-    2003 for reading such a command, as for ``PRINT GO``: no format gives it a value."""
+    2003 for reading such a command, as for ``PRINT GO``: no format gives it a value. A parameter
+    every format reads or assigns is no command, as one whose table says so (``ERR`` alone: 2005)."""
     if not keyword.formats:
         return None
+    if use is Use.COMMAND and keyword.kind is KeywordKind.PARAMETER and all("=" in text for text in keyword.formats):
+        return _not_a_command(keyword.name, has_arguments=has_arguments)
     assigned = any("=" in text for text in keyword.formats)
     if use is Use.READ and keyword.kind is KeywordKind.COMMAND and not assigned:
         return Refusal(2003, f"{keyword.name} is a command and gives no value")

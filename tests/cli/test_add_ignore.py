@@ -9,23 +9,18 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from click.testing import CliRunner, Result
+from click.testing import CliRunner
 
 from mintlang.cli import main
+from tests.cli.invoking import mint_check, write
 
 # Line 1: W103 (never used). Line 3: E3001 (x undeclared) and W101 (typographic quotes).
 PROGRAM = "DIM spare\nDIM a\nx = a : PRINT “a”\nPRINT a\n"
 SILENCED = "DIM spare : REM mint: ignore[W103]\nDIM a\nx = a : PRINT “a” : REM mint: ignore[E3001, W101]\nPRINT a\n"
 
 
-def mint_check(*arguments: str | Path) -> Result:
-    return CliRunner().invoke(main, ["check", *(str(argument) for argument in arguments)])
-
-
-def program(folder: Path, text: str = PROGRAM, name: str = "cell.mnt") -> Path:
-    path = folder / name
-    path.write_text(text, encoding="utf-8")
-    return path
+def program(folder: Path, text: str = PROGRAM) -> Path:
+    return write(folder / "cell.mnt", text)
 
 
 def test_every_finding_is_silenced_on_its_line_and_the_next_check_is_clean(tmp_path: Path) -> None:

@@ -36,7 +36,15 @@ from mintlang.cli.options import (
     version_option,
 )
 from mintlang.cli.parallel import all_cores, map_in_order
-from mintlang.cli.report import FileReport, as_github, as_json, as_sarif, as_statistics, render_text
+from mintlang.cli.report import (
+    FileReport,
+    as_github,
+    as_json,
+    as_sarif,
+    as_statistics,
+    render_concise,
+    render_text,
+)
 from mintlang.cli.settings import describe, overrides, settings_failed
 from mintlang.cli.terminal import (
     colour_console,
@@ -56,6 +64,7 @@ _FOUND_ERRORS = 1
 _NOT_DONE = 2
 _INTERRUPTED = 130  # 128 + SIGINT, as a shell reports a command Ctrl-C ended
 _STDIN = Path("-")
+_FOR_PEOPLE = ("text", "concise")  # the formats with a closing count and fix summary, and no W120 entries
 NOT_CHECKED = "W120"
 
 SELECT_HELP = (
@@ -134,7 +143,7 @@ def _explain(context: click.Context, _parameter: click.Parameter, code: str | No
     is_flag=True,
     help="Print the settings that apply to each file (and where each comes from), and check nothing.",
 )
-@format_option(["text", "json", "sarif", "github"])
+@format_option([*_FOR_PEOPLE, "json", "sarif", "github"])
 @output_file_option()
 @list_option("--select", absent=None, help=SELECT_HELP)
 @list_option("--extend-select", absent=None, help="Also these codes or code prefixes, besides those selected.")
@@ -193,7 +202,7 @@ def check(
     started = time.perf_counter()
     paths = paths or (Path(),)  # as ruff and mint test do
     refuse_quiet_and_verbose(quiet, verbose)
-    if statistics and output_format not in ("text", "json"):
+    if statistics and output_format not in (*_FOR_PEOPLE, "json"):
         raise click.UsageError(f"--statistics is written as text or json, not {output_format}")
     context = click.get_current_context()
     layer = overrides(
@@ -232,7 +241,7 @@ def check(
     fixing = Fixing.asked(fix, unsafe_fixes, diff, add_ignore=add_ignore)
     work = marked(planned.jobs, planned.hidden, fixing) if fixing is not None else planned.jobs
     if planned.empty and not found.unreadable and not planned.problems:
-        if output_format != "text" and not diff:  # a tool reading the report still gets one, with nothing in it
+        if output_format not in _FOR_PEOPLE and not diff:  # a tool reading the report still gets one, empty
             with destination(output_file, _fail) as stream:
                 _write([], stream, output_format, statistics=statistics, quiet=quiet, color=color)
         if excluded:  # pre-commit names files the project excludes: nothing to check, no failure (ruff's)
@@ -264,15 +273,15 @@ def check(
         unwritten = outcome.unwritten  # a fix not written leaves the file's findings where they were
         results = [r.unfixed() if r.fixed and r.fixed.original.path in unwritten else r for r in results]
     reports = planned.reports(results)
-    entries = _entries(unchecked, layer) if output_format != "text" else []
-    if (reports or entries or output_format != "text") and not diff:  # a machine format's empty report too
+    entries = _entries(unchecked, layer) if output_format not in _FOR_PEOPLE else []
+    if (reports or entries or output_format not in _FOR_PEOPLE) and not diff:  # a machine format's empty report too
         with destination(output_file, _fail) as stream:
             _write(reports + entries, stream, output_format, statistics=statistics, quiet=quiet, color=color)
-            if output_format == "text" and not quiet and not statistics:
+            if output_format in _FOR_PEOPLE and not quiet and not statistics:
                 _write_fix_summary(planned.program_reports(results), outcome, stream, silencing=add_ignore)
     if outcome is not None and not quiet:
         summary = fixed_summary(outcome, diff=diff, silencing=add_ignore)
-        notes = outcome.notes() + ([summary] if diff or output_format != "text" else [])
+        notes = outcome.notes() + ([summary] if diff or output_format not in _FOR_PEOPLE else [])
         click.echo("".join(f"mint check: {note}\n" for note in notes), err=True, nl=False)
     if not quiet:
         click.echo("".join(f"{hint}\n" for hint in _hints(results, planned.hidden)), err=True, nl=False)
@@ -367,7 +376,8 @@ def _write(
     elif output_format == "github":
         text = as_github(reports)
     else:
-        render_text(reports, stream, colour_console(color, stream), summary=not quiet)
+        render = render_concise if output_format == "concise" else render_text
+        render(reports, stream, colour_console(color, stream), summary=not quiet)
         return
     if text:
         write_in_pieces(stream, f"{text}\n")

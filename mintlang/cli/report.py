@@ -129,10 +129,35 @@ def render_text(
                 frames.clear()
         stream.write("".join(frames))
     if summary:
-        total = ", ".join(f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity)
-        checked = palette.paint("bold", f"{len(reports)} file{'s' if len(reports) != 1 else ''} checked:")
-        stream.write(f"{checked} {total}\n")
+        stream.write(_checked(len(reports), counts, palette))
     stream.flush()
+
+
+def render_concise(
+    reports: Sequence[FileReport], stream: IO[str], console: Console | None = None, *, summary: bool = True
+) -> None:
+    """One line a finding, ``path:line:column: CODE message`` (ruff's concise format, what an editor's
+    quickfix list and a compiler-output parser read), and with ``summary`` the closing count."""
+    palette = Palette.for_console(console, {*_STYLE.values(), "bold"}) if console is not None else Palette({})
+    counts = dict.fromkeys(Severity, 0)
+    for report in reports:
+        path = _visible(report.path)
+        lines = []
+        for diagnostic, line, column, _, _ in report.located():
+            counts[diagnostic.severity] += 1
+            code = palette.paint(_STYLE[diagnostic.severity], diagnostic.code)
+            lines.append(f"{path}:{line}:{column}: {code} {_visible(diagnostic.message)}\n")
+        stream.write("".join(lines))
+    if summary:
+        stream.write(_checked(len(reports), counts, palette))
+    stream.flush()
+
+
+def _checked(files: int, counts: dict[Severity, int], palette: Palette) -> str:
+    """The closing line: how many files were checked, and the findings of each severity."""
+    total = ", ".join(f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity)
+    noun = "file" if files == 1 else "files"
+    return f"{palette.paint('bold', f'{files} {noun} checked:')} {total}\n"
 
 
 def _region(index: LineIndex, span: Span) -> tuple[int, int, int, int]:

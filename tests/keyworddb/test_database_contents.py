@@ -277,11 +277,21 @@ def test_a_range_knows_which_bounds_it_includes(db: KeywordDatabase) -> None:
     assert out.range.holds(0) and out.range.holds(4095) and not out.range.holds(4096)
 
 
-def test_a_range_printed_on_two_lines_keeps_them_apart(db: KeywordDatabase) -> None:
-    # 000:11961-11962: IN reads the whole word (0 ≤ x ≤ 1048575 on NextMove PCI) or one channel (0 or 1)
-    row = db.keywords["IN"].attributes_for(Controller.NEXTMOVE_PCI)
+@pytest.mark.parametrize(
+    ("name", "controller", "text"),
+    [
+        # 000:11961-11962: IN reads the whole word (0 ≤ x ≤ 1048575 on NextMove PCI) or one channel (0 or 1)
+        pytest.param("IN", Controller.NEXTMOVE_PCI, "0 ≤ x ≤ 1048575; one channel: 0 or 1", id="word-then-channel"),
+        # 000:14110-14111: "0 – Forward" and "1 – Reverse", one mode a line
+        pytest.param("MOTORDIRECTION", Controller.MINTDRIVE, "0 – Forward; 1 – Reverse", id="mode-a-line"),
+    ],
+)
+def test_a_range_printed_on_two_lines_keeps_them_apart(
+    db: KeywordDatabase, name: str, controller: Controller, text: str
+) -> None:
+    row = db.keywords[name].attributes_for(controller)
     assert row is not None and row.range is not None
-    assert row.range.text == "0 ≤ x ≤ 1048575; one channel: 0 or 1"
+    assert row.range.text == text
 
 
 def test_v3_constants(db: KeywordDatabase) -> None:

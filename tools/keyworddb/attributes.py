@@ -190,9 +190,10 @@ def parse_range(text: str) -> ValueRange:
         low, high, one = (int(match[part]) for part in ("low", "high", "one"))
         allowed = tuple(float(value) for value in sorted({*range(low, high + 1), one}))
         return ValueRange(compact, None, None, fractional, allowed=allowed)
-    if _NAMED_VALUES.match(compact):
-        allowed = tuple(sorted(float(value) for value in re.findall(_NAMED_VALUE, compact)))
-        return ValueRange(compact, None, None, fractional, allowed=allowed)
+    if _NAMED_VALUES.match(compact):  # one mode a printed line: kept apart once the lines are joined
+        modes = list(re.finditer(_NAMED_VALUE, compact))
+        allowed = tuple(sorted(float(mode[1]) for mode in modes))
+        return ValueRange("; ".join(mode[0] for mode in modes), None, None, fractional, allowed=allowed)
     bounds: tuple[float, float] | None = None
     if match := _SPAN.match(compact):
         bounds = _number(match["min"]), _number(match["max"])

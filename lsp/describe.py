@@ -35,7 +35,11 @@ def keyword(word: Keyword, controller: Controller, spelling: str = "") -> str:
         lines += ["```mint", *word.formats, "```", ""]
     if word.summary:
         lines += [word.summary, ""]
-    row = word.attributes_for(controller) or (word.attributes[0] if word.attributes else None)
+    own = word.attributes_for(controller)
+    row = own or (word.attributes[0] if word.attributes else None)
+    if row is not None and own is None:  # HOMEINPUT on NextMove PCI: another controller's row, said so
+        mine = profile(controller).title
+        lines.append(f"- Attributes: the guide's row for {_titles(row.controllers)} (it prints none for {mine})")
     if row is not None:
         lines.append(f"- Access: {_access(row.read, row.write, row.command)}")
     if word.addressing is not Addressing.NONE:
@@ -47,10 +51,15 @@ def keyword(word: Keyword, controller: Controller, spelling: str = "") -> str:
         lines.append(f"- Default: {row.default}")
     if row is not None and row.range is not None:
         lines.append(f"- Range: {row.range.text}")
-    lines.append(f"- Controllers: {', '.join(profile(c).title for c in word.controllers)}")
-    if controller not in word.controllers:
+    lines.append(f"- Controllers: {_titles(word.controllers) or 'not listed in the guide'}")
+    if not word.available_on(controller):
         lines.append(f"- **Not available on {profile(controller).title}**")
     return "\n".join(lines)
+
+
+def _titles(controllers: tuple[Controller, ...]) -> str:
+    """The controllers as the guide names them, "" for none (an advanced stub's quick-reference row)."""
+    return ", ".join(profile(c).title for c in controllers)
 
 
 _MIGRATION = {

@@ -30,12 +30,12 @@ from mintlang.analysis.rules.addressing import addressed
 from mintlang.controllers import ChannelRange
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Attributes, Keyword, KeywordKind
+from mintlang.keyworddb.model import Attributes, Controller, Keyword, KeywordKind
 from mintlang.lsp import describe, mintmt_words
 from mintlang.lsp.features.signature import callee_at
 from mintlang.lsp.lookup import WORD_KINDS, prefix_tokens, significant
 from mintlang.lsp.server import MintServer
-from mintlang.lsp.workspace import Snapshot
+from mintlang.lsp.workspace import Settings, Snapshot
 from mintlang.records import record
 from mintlang.semantic.blocks import Block, BlockKind
 from mintlang.semantic.events import event_of
@@ -104,12 +104,15 @@ def _begun(token: Token) -> bool:
     return token.kind is TokenKind.INVALID and token.text.startswith("_")
 
 
-def _keyword_item(word: Keyword) -> types.CompletionItem:
+def _keyword_item(word: Keyword, settings: Settings) -> types.CompletionItem:
+    """An item naming the dialect and controller it was offered for: its documentation, written when the
+    editor resolves it, describes the record of that dialect (MintMT's CONTOURMODE, not v4's) on that one."""
     kind = types.CompletionItemKind.Function if word.kind is KeywordKind.FUNCTION else types.CompletionItemKind.Keyword
     detail = (
         f"{word.kind.value}, abbreviation {', '.join(word.abbreviations)}" if word.abbreviations else word.kind.value
     )
-    return types.CompletionItem(label=word.name, kind=kind, detail=detail, data={"keyword": word.name})
+    data = {"keyword": word.name, "dialect": settings.dialect.value, "controller": settings.controller.value}
+    return types.CompletionItem(label=word.name, kind=kind, detail=detail, data=data)
 
 
 def _starts_statement(word: Keyword, row: Attributes | None) -> bool:
@@ -120,12 +123,12 @@ def _starts_statement(word: Keyword, row: Attributes | None) -> bool:
     )
 
 
-def _continuations(words: frozenset[str]) -> Iterator[types.CompletionItem]:
+def _continuations(words: frozenset[str], settings: Settings) -> Iterator[types.CompletionItem]:
     """After a complete operand: operators, and ``words``, those that go on with the statement."""
     for word in database().keywords.values():
         binary = word.kind is KeywordKind.OPERATOR and word.name.isalpha() and word.name not in _UNARY
         if binary or word.name in words:
-            yield _keyword_item(word)
+            yield _keyword_item(word, settings)
 
 
 def _current_statement(before: list[Token]) -> list[Token]:
@@ -275,7 +278,7 @@ def _keywords(snapshot: Snapshot, statement: bool, blocks: OpenBlocks | None = N
                 or (row.read if row else word.kind is KeywordKind.PARAMETER)
             )
         if valid:
-            yield _keyword_item(word)
+            yield _keyword_item(word, snapshot.settings)
 
 
 def _symbols(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
@@ -550,9 +553,9 @@ def complete(
         # A keyword that starts the statement is a command or a parameter (GO, SPEED): what follows is
         # its axes or "=", nothing to complete; anywhere else it is a value read (IF IN3 ...).
         starts = len(before) == 1 or before[-2].kind in _STATEMENT_STARTERS
-        return [] if starts else list(_continuations(_statement_words(snapshot, before)))
+        return [] if starts else list(_continuations(_statement_words(snapshot, before), snapshot.settings))
     if not statement and previous is not None and previous.kind in _OPERAND_ENDS:
-        return list(_continuations(_statement_words(snapshot, before)))
+        return list(_continuations(_statement_words(snapshot, before), snapshot.settings))
     items = [*_keywords(snapshot, statement, blocks), *_symbols(snapshot)]
     if statement:
         return items + list(_snippets(snapshot.settings.dialect, blocks))
@@ -598,14 +601,19 @@ def register(server: MintServer) -> None:
             snapshot = server.analyses.latest(str(data.get("uri")))
             text = _symbol_description(snapshot, data) if snapshot is not None else None
         else:
-            text = _keyword_description(data.get("keyword"), server)
+            text = _keyword_description(data, server.analyses.settings)
         if text is not None:
             item.documentation = types.MarkupContent(kind=types.MarkupKind.Markdown, value=text)
         return item
 
 
-def _keyword_description(name: object, server: MintServer) -> str | None:
+def _keyword_description(data: dict[str, object], settings: Settings) -> str | None:
+    """The keyword of an item in the dialect and on the controller it was offered for (``settings``' for an
+    item that does not say)."""
+    name, dialect, controller = data.get("keyword"), data.get("dialect"), data.get("controller")
     if not isinstance(name, str):
         return None
-    word = database().lookup(name) or database().mintmt_keywords.get(name.upper())
-    return describe.keyword(word, server.analyses.settings.controller) if word is not None else None
+    offered = Dialect(dialect) if dialect in set(Dialect) else settings.dialect
+    on = Controller(controller) if controller in set(Controller) else settings.controller
+    word = database().keywords_of(offered).get(name.upper()) or database().lookup(name)
+    return describe.keyword(word, on) if word is not None else None

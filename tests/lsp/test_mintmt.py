@@ -136,6 +136,23 @@ async def test_mintmt_keywords_are_completed(client: LanguageClient) -> None:
     assert "TRIGGERMODE" in {item.label for item in items}
 
 
+async def test_a_completed_keyword_is_documented_as_mintmt_writes_it(client: LanguageClient) -> None:
+    # The move buffer note writes CONTOURMODE(0) (004:181), v4 CONTOURMODE[axes] (000:8544): under auto the
+    # item resolved must describe the program's dialect, not the editor's setting
+    uri = "file:///work/contour.mnt"
+    text = "Loop\n  CONTOURM\nEnd Loop\n"
+    await open_document(client, uri, text)
+    answer = await client.text_document_completion_async(
+        types.CompletionParams(text_document=document(uri), position=types.Position(line=1, character=10))
+    )
+    items = answer.items if isinstance(answer, types.CompletionList) else answer or []
+    offered = next(item for item in items if item.label == "CONTOURMODE")
+    resolved = await client.completion_item_resolve_async(offered)
+    assert isinstance(resolved.documentation, types.MarkupContent)
+    assert "CONTOURMODE(axes) = <expression>" in resolved.documentation.value
+    assert "CONTOURMODE[axes]" not in resolved.documentation.value
+
+
 async def test_block_words_are_keywords_and_quote_comments_comments(client: LanguageClient) -> None:
     uri, text = _listing("an00117_l0114_movebufferlow_event.mnt")
     await open_document(client, uri, text)

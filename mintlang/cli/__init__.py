@@ -1,6 +1,6 @@
 """The ``mint`` command.
 
-``mint check`` lives in the core. The tools add their own subcommands
+``mint check``, ``mint format`` and ``mint rule`` live in the core. The tools add their own subcommands
 (``mint migrate``, ``mint run``, ``mint lsp``) through the ``mintlang.commands`` entry-point
 group, so the core never imports them; they are loaded only when ``mint``
 runs, so importing this package imports no tool. The core's own commands are
@@ -17,8 +17,12 @@ import click
 from mintlang.allocation import collector_paused_and_kept, no_collection_at_exit
 from mintlang.cli.options import HELP_OPTIONS, version_option
 
-_CORE_COMMANDS = {"check": "mintlang.cli.check", "rule": "mintlang.cli.rule"}
-"""Each core command, and the module that defines it under that name."""
+_CORE_COMMANDS = {
+    "check": ("mintlang.cli.check", "check"),
+    "format": ("mintlang.cli.formatter", "format_command"),
+    "rule": ("mintlang.cli.rule", "rule"),
+}
+"""Each core command: the module that defines it, and its name there."""
 
 
 class _Commands(click.Group):
@@ -38,10 +42,11 @@ class _Commands(click.Group):
         return super().main(*args, **kwargs)
 
     def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
-        module = _CORE_COMMANDS.get(cmd_name)
-        if module is not None:
+        defined = _CORE_COMMANDS.get(cmd_name)
+        if defined is not None:
+            module, name = defined
             with collector_paused_and_kept():  # its modules live as long as the process: no collection walks them
-                command: click.Command = getattr(import_module(module), cmd_name)
+                command: click.Command = getattr(import_module(module), name)
             return command
         return self._tools().get(cmd_name)
 

@@ -1,0 +1,126 @@
+"""``mint format``: the house style (``mintlang.formatting``) written into the files, as ``ruff format`` does.
+
+The files are found as ``mint check`` finds them (its exclusions and settings files), configuration files
+included; each is written atomically and only if it still holds what was read (``cli.fixing.apply``).
+``--check`` and ``--diff`` write nothing and exit 1 when a file would change, for a CI gate or a hook.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import replace
+from pathlib import Path
+
+import click
+
+from mintlang.cli.checking import FileFixed
+from mintlang.cli.files import CONFIGURATION_SUFFIXES, PROGRAM_SUFFIXES, cannot_read, find, is_configuration
+from mintlang.cli.fixing import apply
+from mintlang.cli.options import (
+    HELP_OPTIONS,
+    exclude_options,
+    refuse_quiet_and_verbose,
+    verbosity_options,
+    version_option,
+)
+from mintlang.cli.settings import exclusions, settings_failed
+from mintlang.dialect import Dialect
+from mintlang.fixes import Fixed
+from mintlang.settings import Given, SettingsError, settings_for
+from mintlang.source import read_source
+
+_CHANGES = 1
+_NOT_DONE = 2
+
+EXIT_STATUS = """\b
+Exit status:
+  0  the files are formatted (or were written so)
+  1  with --check or --diff: a file would be reformatted
+  2  a usage error, or a file that could not be read or written"""
+
+
+@click.command("format", context_settings=HELP_OPTIONS, epilog=EXIT_STATUS)
+@click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
+@version_option("mint format")
+@click.option("--check", is_flag=True, help="Write nothing: name the files that would be reformatted (exit 1).")
+@click.option("--diff", is_flag=True, help="Show the changes as a unified diff instead of writing them (exit 1).")
+@click.option("--dialect", type=click.Choice([d.value for d in Dialect]), help="[default: the settings', or v4]")
+@click.option("--indent-width", type=click.IntRange(1, 16), default=2, show_default=True, help="Spaces a level.")
+@click.option("--indent-style", type=click.Choice(["space", "tab"]), default="space", show_default=True)
+@exclude_options()
+@verbosity_options(quiet="Say nothing but errors.", verbose="Name every file reformatted.")
+def format_command(
+    paths: tuple[Path, ...],
+    check: bool,
+    diff: bool,
+    dialect: str | None,
+    indent_width: int,
+    indent_style: str,
+    exclude: tuple[str, ...] | None,
+    extend_exclude: tuple[str, ...] | None,
+    force_exclude: bool | None,
+    quiet: bool,
+    verbose: bool,
+) -> None:
+    """Format Mint programs and configuration files: upper-case keywords, blocks indented, labels at the margin.
+
+    PATHS are files and directories (the current directory if none is given); directories are searched for
+    .mnt and .cfg files as mint check searches them. Only whitespace and letter case change (MintMT keeps its
+    words' case).
+    """
+    from mintlang.formatting import format_text  # noqa: PLC0415 - the parser: not for mint --help or --version
+
+    refuse_quiet_and_verbose(quiet, verbose)
+    layer = exclusions(exclude, extend_exclude, force_exclude)
+    if dialect is not None:
+        layer = replace(layer, dialect=Given(Dialect(dialect), "--dialect"))
+    found = find(paths or (Path(),), PROGRAM_SUFFIXES | CONFIGURATION_SUFFIXES, overrides=layer)
+    problems = [cannot_read(error) for error in found.unreadable]
+    indentation = "\t" if indent_style == "tab" else " " * indent_width
+    changes: list[FileFixed] = []
+    unchanged = 0
+    for path in found.files:
+        try:
+            source = read_source(path)
+            read_as = settings_for(path, layer).dialect.value
+        except OSError as error:
+            problems.append(cannot_read(error))
+            continue
+        except SettingsError as error:
+            settings_failed("mint format", error)
+        if (binary := source.binary()) is not None:
+            problems.append(f"{binary}: not formatted")
+            continue
+        text = format_text(source.text, indentation, read_as, configuration=is_configuration(path))
+        if text == source.text:
+            unchanged += 1
+        else:
+            changes.append(FileFixed(source, Fixed(text, (), (), converged=True)))
+    if check or diff:
+        _report_only(changes, unchanged, diff=diff, quiet=quiet)
+        written = changes
+    else:
+        outcome = apply(changes, diff=None)
+        problems += outcome.problems
+        written = [change for change in changes if change.original.path not in outcome.unwritten]
+        if verbose:
+            click.echo("".join(f"reformatted {change.original.path}\n" for change in written), nl=False)
+        if not quiet:
+            click.echo(f"{_files(len(written))} reformatted, {_files(unchanged)} left unchanged")
+    for problem in problems:
+        click.echo(f"mint format: {problem}", err=True)
+    sys.exit(_NOT_DONE if problems else _CHANGES if (check or diff) and written else 0)
+
+
+def _report_only(changes: list[FileFixed], unchanged: int, *, diff: bool, quiet: bool) -> None:
+    """``--diff``'s diffs, or ``--check``'s names, and what would be done."""
+    if diff:
+        apply(changes, diff=sys.stdout)
+    elif not quiet:
+        click.echo("".join(f"Would reformat: {change.original.path}\n" for change in changes), nl=False)
+    if not quiet:
+        click.echo(f"{_files(len(changes))} would be reformatted, {_files(unchanged)} already formatted", err=diff)
+
+
+def _files(count: int) -> str:
+    return f"{count} file{'s' if count != 1 else ''}"

@@ -1,0 +1,78 @@
+"""``mint format``: the house style written into the files, as ``ruff format`` writes Python's.
+
+The style is the formatter's (``mintlang/formatting.py``): keywords in upper case, a level of indentation per
+enclosing block with ELSE beside its IF, a label at the margin with its subroutine's body under it, no blanks at
+a line's end; nothing else changes, line ends included. ``--check`` and ``--diff`` write nothing and exit 1 when
+a file would change.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from click.testing import CliRunner, Result
+
+from mintlang.cli import main
+from tests.cli.invoking import write
+
+MESSY = "dim a\nif a > 1 do\nprint a   \n  else\n      a = 2\nendif\nEND\n  #sub\n    return\n"
+FORMATTED = "DIM a\nIF a > 1 DO\n  PRINT a\nELSE\n  a = 2\nENDIF\nEND\n#sub\nRETURN\n"
+
+
+def mint_format(*arguments: str | Path) -> Result:
+    return CliRunner().invoke(main, ["format", *(str(argument) for argument in arguments)])
+
+
+def test_a_program_is_written_in_the_house_style(tmp_path: Path) -> None:
+    path = write(tmp_path / "cell.mnt", MESSY)
+    result = mint_format(tmp_path)
+    assert (result.exit_code, path.read_text(encoding="utf-8")) == (0, FORMATTED)
+    assert result.stdout == "1 file reformatted, 0 files left unchanged\n"
+    assert mint_format(tmp_path).stdout == "0 files reformatted, 1 file left unchanged\n"
+
+
+def test_check_names_what_would_change_and_writes_nothing(tmp_path: Path) -> None:
+    messy, tidy = write(tmp_path / "a.mnt", MESSY), write(tmp_path / "b.mnt", FORMATTED)
+    result = mint_format("--check", tmp_path)
+    assert result.exit_code == 1
+    assert result.stdout == f"Would reformat: {messy}\n1 file would be reformatted, 1 file already formatted\n"
+    assert messy.read_text(encoding="utf-8") == MESSY
+    assert mint_format("--check", tidy).exit_code == 0
+
+
+def test_diff_shows_the_change_and_writes_nothing(tmp_path: Path) -> None:
+    path = write(tmp_path / "cell.mnt", "if 1 do\nprint 2\nendif\n")
+    result = mint_format("--diff", path)
+    assert result.exit_code == 1
+    hunk = "@@ -1,3 +1,3 @@\n-if 1 do\n-print 2\n-endif\n+IF 1 DO\n+  PRINT 2\n+ENDIF\n"
+    assert result.stdout == f"--- {path}\n+++ {path}\n{hunk}"
+    assert path.read_text(encoding="utf-8") == "if 1 do\nprint 2\nendif\n"
+
+
+def test_the_indentation_is_a_tab_or_so_many_spaces(tmp_path: Path) -> None:
+    path = write(tmp_path / "cell.mnt", "LOOP\nPRINT 1\nENDL\n")
+    mint_format("--indent-style", "tab", path)
+    assert path.read_text(encoding="utf-8") == "LOOP\n\tPRINT 1\nENDL\n"
+    mint_format("--indent-width", "4", path)
+    assert path.read_text(encoding="utf-8") == "LOOP\n    PRINT 1\nENDL\n"
+
+
+def test_configuration_files_are_formatted_too_and_line_ends_kept(tmp_path: Path) -> None:
+    path = tmp_path / "cell.cfg"
+    path.write_bytes(b"scale = 1000\r\nspeed = 10  \r\n")
+    assert mint_format(tmp_path).exit_code == 0
+    assert path.read_bytes() == b"SCALE = 1000\r\nSPEED = 10\r\n"
+
+
+def test_mintmt_keeps_its_words_case(tmp_path: Path) -> None:
+    path = write(tmp_path / "cell.mnt", "Loop\nPrint 1\nEnd Loop\n")
+    mint_format("--dialect", "mintmt", path)
+    assert path.read_text(encoding="utf-8") == "Loop\n  Print 1\nEnd Loop\n"
+
+
+def test_a_file_that_is_not_text_is_named_and_the_others_are_formatted(tmp_path: Path) -> None:
+    (tmp_path / "bad.mnt").write_bytes(b"PRINT 1\x00\n")
+    good = write(tmp_path / "good.mnt", "print 1\n")
+    result = mint_format(tmp_path)
+    assert result.exit_code == 2 and "not formatted" in result.stderr
+    assert good.read_text(encoding="utf-8") == "PRINT 1\n"

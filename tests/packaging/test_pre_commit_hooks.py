@@ -20,6 +20,7 @@ ROOT = Path(__file__).resolve().parents[2]
 PRE_COMMIT = Path(sys.executable).parent / "pre-commit"
 CLEAN = "DIM homeRate = 10\nAXES[0]\nHOMESPEED.0 = homeRate\nPRINT homeRate\n"  # Mint v4, nothing to report
 UNDECLARED = "AXES[0]\nPRINT target\n"  # an error: 'target' is not declared (E3001)
+UNFORMATTED = "loop\nprint 1\nendl\n"  # mint format writes LOOP, an indented PRINT and ENDL
 V3 = "HMSPEED.0 = 10\n"  # Mint v3: HMSPEED became HOMESPEED
 
 pytestmark = pytest.mark.skipif(
@@ -61,16 +62,19 @@ def hook_lines(output: str) -> dict[str, str]:
     return {line.split(".")[0]: line.rsplit(".", 1)[1] for line in output.splitlines() if "....." in line}
 
 
-def test_both_hooks_pass_a_clean_repository_and_fail_one_with_findings(tmp_path: Path) -> None:
+def test_the_hooks_pass_a_clean_repository_and_fail_one_with_findings(tmp_path: Path) -> None:
     if shutil.which("git") is None:
         pytest.skip("needs git")
     home = tmp_path / "pre-commit-home"  # the hook's environment is installed once, for both runs
     clean = try_repo(sample(tmp_path / "clean", {"cell.mnt": CLEAN, "notes.txt": "PRINT nothing\n"}), home)
     assert clean.returncode == 0, clean.stdout + clean.stderr
-    assert hook_lines(clean.stdout) == {"mint check": "Passed", "mint-migrate --check": "Passed"}
+    hooks = ("mint check", "mint format", "mint-migrate --check")
+    assert hook_lines(clean.stdout) == dict.fromkeys(hooks, "Passed")
 
-    findings = try_repo(sample(tmp_path / "findings", {"cell.mnt": UNDECLARED, "OLD.MNT": V3}), home)
+    files = {"cell.mnt": UNDECLARED, "OLD.MNT": V3, "loop.mnt": UNFORMATTED}
+    findings = try_repo(sample(tmp_path / "findings", files), home)
     assert findings.returncode == 1
-    assert hook_lines(findings.stdout) == {"mint check": "Failed", "mint-migrate --check": "Failed"}
+    assert hook_lines(findings.stdout) == dict.fromkeys(hooks, "Failed")
+    assert (tmp_path / "findings" / "loop.mnt").read_text(encoding="utf-8") == "LOOP\n  PRINT 1\nENDL\n"
     assert "cell.mnt:2:7" in findings.stdout  # mint check's report
     assert "OLD.MNT" in findings.stdout  # the v3 file, found whatever the case of its suffix

@@ -31,11 +31,13 @@ def to_mintmt(
 ) -> MigrationResult:
     """Rewrite a Mint v4 program (and its configuration file, whose result is ``.configuration``) in
     MintMT's syntax where the notes show it, flagging what they do not and the lines made too long for
-    ``controller``. An application that already
-    shows a form only MintMT has (``mintlang.detection``) comes back as it was, ``already_mintmt`` set.
+    ``controller``. A file that already shows a form only MintMT has (``mintlang.detection``) comes back
+    as it was, ``already_mintmt`` set; the other file of its application is migrated all the same (a
+    program migrated alone leaves its configuration file in v4).
     Raises ``MigrationFailed`` on a Mint v3 application (``v3``): it is migrated to v4 first."""
-    texts = [text for text in (source, config) if text is not None]
-    if any(detect_dialect(text) is Dialect.MINTMT for text in texts):
+    program_done = detect_dialect(source) is Dialect.MINTMT
+    configuration_done = config is not None and detect_dialect(config) is Dialect.MINTMT
+    if program_done and (config is None or configuration_done):
         configuration_as_it_was = engine.untouched(config) if config is not None else None
         return _result(engine.untouched(source), configuration_as_it_was, already=True)
     v3 = v3_uses(source, config)
@@ -46,16 +48,21 @@ def to_mintmt(
             raise MigrationFailed(None, reason)
         raise MigrationFailed(None, f"this is Mint v3 ({shown}): migrate it to v4 first (mint-migrate without --to)")
     visible: frozenset[str] = frozenset()
-    migrated_configuration = None
+    configuration: MigrationResult | None = None
     macros: Mapping[str, MacroDefinition] | None = None
     if config is not None:
-        configuration = Source(config.removeprefix(BYTE_ORDER_MARK))
-        read = parse(config)
-        migrated_configuration = _migrated(configuration, config, read, controller)
-        visible, macros = configuration.macros, read.macros  # a program sees its configuration file's macros
-    program = Source(source.removeprefix(BYTE_ORDER_MARK), visible)
-    migrated = _migrated(program, source, parse(source, macros=macros), controller)
-    return _result(migrated, migrated_configuration, already=False)
+        read = parse(config, Dialect.MINTMT if configuration_done else Dialect.V4)
+        lexed = Source(config.removeprefix(BYTE_ORDER_MARK))
+        configuration = _one(lexed, config, read, controller, done=configuration_done)
+        visible, macros = lexed.macros, read.macros  # a program sees its configuration file's macros
+    lexed = Source(source.removeprefix(BYTE_ORDER_MARK), visible)
+    program = _one(lexed, source, parse(source, macros=macros), controller, done=program_done)
+    return replace(program, configuration=configuration) if configuration is not None else program
+
+
+def _one(source: Source, written: str, read: Document, controller: Controller | str, *, done: bool) -> MigrationResult:
+    """One file of the application migrated, or as it was when it shows a MintMT form already (``done``)."""
+    return _of(engine.untouched(written) if done else _migrated(source, written, read, controller), done)
 
 
 def _migrated(source: Source, written: str, read: Document, controller: Controller | str) -> engine.FileOutcome:

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import errno
 import stat
+import sys
 from codecs import BOM_UTF8, BOM_UTF16_BE, BOM_UTF16_LE
 from pathlib import Path
 
@@ -86,6 +87,12 @@ def read_regular(path: Path) -> bytes:
     if not stat.S_ISREG(path.stat().st_mode):
         raise OSError(errno.EINVAL, "not a regular file", str(path))
     return path.read_bytes()
+
+
+def read_stdin(name: str | None) -> SourceFile:
+    """Standard input as a source file, named ``name`` (an editor's ``--stdin-filename``) or ``-``."""
+    text, encoding = decode(sys.stdin.buffer.read())
+    return SourceFile(Path(name or "-"), text, encoding)
 
 
 def read_source(path: Path) -> SourceFile:

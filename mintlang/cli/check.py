@@ -58,7 +58,7 @@ from mintlang.codes import own, selector
 from mintlang.diagnostics import Severity, Span
 from mintlang.dialect import Dialect
 from mintlang.settings import Overrides, SettingsError, force_excluded, settings_for
-from mintlang.source import SourceFile, decode, read_source
+from mintlang.source import SourceFile, read_source, read_stdin
 
 _FOUND_ERRORS = 1
 _NOT_DONE = 2
@@ -234,7 +234,7 @@ def check(
         reading = _STDIN in paths
         if reading and stdin_filename is not None and force_excluded(Path(stdin_filename), layer):
             reading, excluded = False, [*excluded, Path(stdin_filename)]  # an editor's buffer of an excluded file
-        planned = plan(found.files, layer, _read_stdin(stdin_filename) if reading else None)
+        planned = plan(found.files, layer, read_stdin(stdin_filename) if reading else None)
     except SettingsError as error:
         settings_failed("mint check", error)
     refuse_overwriting(output_file, found.files, _fail)
@@ -357,11 +357,6 @@ def _show_settings(paths: list[Path], layer: Overrides, problems: list[str]) -> 
     for problem in problems or ([] if paths else ["no .mnt files found"]):
         click.echo(f"mint check: {problem}", err=True)
     sys.exit(_NOT_DONE if problems or not paths else 0)
-
-
-def _read_stdin(name: str | None) -> SourceFile:
-    text, encoding = decode(sys.stdin.buffer.read())
-    return SourceFile(Path(name or "-"), text, encoding)
 
 
 def _write(

@@ -10,10 +10,12 @@ from __future__ import annotations
 import sys
 from dataclasses import replace
 from pathlib import Path
+from typing import NoReturn
 
 import click
 
 from mintlang.cli.checking import FileFixed
+from mintlang.cli.diffs import unified, write_diff
 from mintlang.cli.files import CONFIGURATION_SUFFIXES, PROGRAM_SUFFIXES, cannot_read, find, is_configuration
 from mintlang.cli.fixing import apply
 from mintlang.cli.options import (
@@ -26,11 +28,12 @@ from mintlang.cli.options import (
 from mintlang.cli.settings import exclusions, settings_failed
 from mintlang.dialect import Dialect
 from mintlang.fixes import Fixed
-from mintlang.settings import Given, SettingsError, settings_for
-from mintlang.source import read_source
+from mintlang.settings import Given, Overrides, SettingsError, settings_for
+from mintlang.source import read_source, read_stdin
 
 _CHANGES = 1
 _NOT_DONE = 2
+_STDIN = Path("-")
 
 EXIT_STATUS = """\b
 Exit status:
@@ -47,6 +50,7 @@ Exit status:
 @click.option("--dialect", type=click.Choice([d.value for d in Dialect]), help="[default: the settings', or v4]")
 @click.option("--indent-width", type=click.IntRange(1, 16), default=2, show_default=True, help="Spaces a level.")
 @click.option("--indent-style", type=click.Choice(["space", "tab"]), default="space", show_default=True)
+@click.option("--stdin-filename", help="The name under which the text read from standard input (the path -) is read.")
 @exclude_options()
 @verbosity_options(quiet="Say nothing but errors.", verbose="Name every file reformatted.")
 def format_command(
@@ -56,6 +60,7 @@ def format_command(
     dialect: str | None,
     indent_width: int,
     indent_style: str,
+    stdin_filename: str | None,
     exclude: tuple[str, ...] | None,
     extend_exclude: tuple[str, ...] | None,
     force_exclude: bool | None,
@@ -65,8 +70,9 @@ def format_command(
     """Format Mint programs and configuration files: upper-case keywords, blocks indented, labels at the margin.
 
     PATHS are files and directories (the current directory if none is given); directories are searched for
-    .mnt and .cfg files as mint check searches them. Only whitespace and letter case change (MintMT keeps its
-    words' case).
+    .mnt and .cfg files as mint check searches them; - formats standard input to standard output, as an
+    editor's formatter hook pipes a buffer. Only whitespace and letter case change (MintMT keeps its words'
+    case).
     """
     from mintlang.formatting import format_text  # noqa: PLC0415 - the parser: not for mint --help or --version
 
@@ -74,9 +80,15 @@ def format_command(
     layer = exclusions(exclude, extend_exclude, force_exclude)
     if dialect is not None:
         layer = replace(layer, dialect=Given(Dialect(dialect), "--dialect"))
+    indentation = "\t" if indent_style == "tab" else " " * indent_width
+    if _STDIN in paths:
+        if len(paths) > 1:
+            raise click.UsageError("- formats standard input alone: give no other path")
+        _format_stdin(stdin_filename, layer, indentation, check=check, diff=diff)
+    if stdin_filename is not None:
+        raise click.UsageError("--stdin-filename names the text read from standard input: give - as the path")
     found = find(paths or (Path(),), PROGRAM_SUFFIXES | CONFIGURATION_SUFFIXES, overrides=layer)
     problems = [cannot_read(error) for error in found.unreadable]
-    indentation = "\t" if indent_style == "tab" else " " * indent_width
     changes: list[FileFixed] = []
     unchanged = 0
     for path in found.files:
@@ -110,6 +122,27 @@ def format_command(
     for problem in problems:
         click.echo(f"mint format: {problem}", err=True)
     sys.exit(_NOT_DONE if problems else _CHANGES if (check or diff) and written else 0)
+
+
+def _format_stdin(name: str | None, layer: Overrides, indentation: str, *, check: bool, diff: bool) -> NoReturn:
+    """Standard input formatted to standard output; with ``check`` or ``diff`` only what would change."""
+    from mintlang.formatting import format_text  # noqa: PLC0415 - see format_command
+
+    source = read_stdin(name)
+    try:
+        dialect = settings_for(source.path, layer).dialect.value
+    except SettingsError as error:
+        settings_failed("mint format", error)
+    text = format_text(source.text, indentation, dialect, configuration=is_configuration(source.path))
+    changed = text != source.text
+    if diff:
+        write_diff(sys.stdout, unified(source.text, text, str(source.path), str(source.path)), source.encoding)
+    elif check:
+        click.echo(f"Would reformat: {source.path}" if changed else "", nl=changed)
+    else:
+        sys.stdout.buffer.write(source.encode(text))
+        sys.stdout.buffer.flush()
+    sys.exit(_CHANGES if changed and (check or diff) else 0)
 
 
 def _report_only(changes: list[FileFixed], unchanged: int, *, diff: bool, quiet: bool) -> None:

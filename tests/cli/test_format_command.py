@@ -76,3 +76,12 @@ def test_a_file_that_is_not_text_is_named_and_the_others_are_formatted(tmp_path:
     result = mint_format(tmp_path)
     assert result.exit_code == 2 and "not formatted" in result.stderr
     assert good.read_text(encoding="utf-8") == "PRINT 1\n"
+
+
+def test_standard_input_is_formatted_to_standard_output(tmp_path: Path) -> None:
+    result = CliRunner().invoke(main, ["format", "-"], input="loop\nprint 1\nendl\n")
+    assert (result.exit_code, result.stdout) == (0, "LOOP\n  PRINT 1\nENDL\n")
+    check = CliRunner().invoke(main, ["format", "--check", "--stdin-filename", "cell.mnt", "-"], input="print 1\n")
+    assert (check.exit_code, check.stdout) == (1, "Would reformat: cell.mnt\n")
+    alone = CliRunner().invoke(main, ["format", "-", str(tmp_path)], input="")
+    assert alone.exit_code == 2

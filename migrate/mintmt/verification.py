@@ -43,8 +43,20 @@ def verify(
         application = Application(program or "", configuration)
         runs.append(record(application, dialect, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s))
     original, migrated = runs
-    short = short_of(original, migrated, flagged_places(result), names=("v4", "MintMT"))
+    short = (
+        _ALREADY if _in_mintmt(result) else short_of(original, migrated, flagged_places(result), names=("v4", "MintMT"))
+    )
     return conclude(original, migrated, result, short, controllers=(target, target))
+
+
+_ALREADY = "already MintMT: there is no Mint v4 original to run (verify the v4 files before --write)"
+
+
+def _in_mintmt(result: MigrationResult) -> bool:
+    """Whether a file of the application was MintMT already: run as Mint v4 it would not compile, and that
+    error, the first MintMT form it meets, would be reported as the v4 original's."""
+    configuration = result.configuration
+    return result.already_mintmt or (configuration is not None and configuration.already_mintmt)
 
 
 def _originals(result: MigrationResult) -> tuple[str, str | None]:

@@ -33,6 +33,11 @@ from mintlang.lsp.describe import constant
             "**_erABORT** = `1` — predefined constant of AXISERROR and AXISSTATUS",
             id="bit 0 of AXISERROR's table (000:6980) and of AXISSTATUS's (000:7221)",
         ),
+        pytest.param(
+            "_tmRS232",
+            "**_tmRS232** = `1` — predefined constant of INKEY, SERIALBAUD and TERMINAL",
+            id="a port: INKEY's table (000:12155), SERIALBAUD's, constant first (000:15851), TERMINAL's (000:16695)",
+        ),
     ],
 )
 @pytest.mark.parametrize("dialect", [Dialect.V4, Dialect.MINTMT], ids=str)

@@ -19,6 +19,8 @@ from tools.keyworddb.seeds import Seed
 _NAME = r"_[a-z]{0,3}[A-Z][A-Z0-9_]*"
 """``_hmPOSITIVE_SWITCH``, ``_RELAY0``: optional lower-case family prefix, then capitals."""
 _ROW = re.compile(rf"^(?P<value>0x[0-9A-Fa-f]+|-?\d+)\s+(?P<name>{_NAME})(?P<rest>.*)$")
+_NAME_FIRST = re.compile(rf"^(?P<name>{_NAME})\s+\S.*?\s(?P<value>0x[0-9A-Fa-f]+|-?\d+)$")
+"""SERIALBAUD's table prints the constant first and its value last: "_tmRS232 RS232 serial port 1" (000:15851)."""
 _BARE = re.compile(rf"^{_NAME}$")
 _TABLE_HEADER = re.compile(r"^(?P<word>Bit|Value|Mode|Phase)\b")
 _IMPLIED_ZERO = re.compile(rf"\bzero \(i\.e\.\s*(?P<name>{_NAME})\)")
@@ -45,6 +47,9 @@ def _table_rows(entry: Entry, seed: Seed) -> Iterable[tuple[str, int, int]]:
     (``0 _ctmCONTOUR_OFF`` / ``_ctmCONTOUR_ON``): cleared is 0, set is the mask.
     """
     for number in range(entry.line, entry.end + 1):
+        if named := _NAME_FIRST.match(seed.stripped(number)):
+            yield named["name"], _value(named["value"]), number
+            continue
         match = _ROW.match(seed.stripped(number))
         if not match or match["rest"].strip().startswith("+"):  # "3 _acDIFFERENTIAL + _acBIPOLAR"
             continue

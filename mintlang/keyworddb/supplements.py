@@ -23,9 +23,11 @@ _ALL = tuple(Controller)  # each row applies wherever the keyword itself exists 
 _ERROR_MODES = ValueRange("0 ≤ x ≤ 3, 5", None, None, False, allowed=(0.0, 1.0, 2.0, 3.0, 5.0))
 
 
-def _read_only() -> Attributes:
+def _unranged(*, write: bool) -> Attributes:
+    """A parameter the guide gives no range: read only, or a setting it only ever assigns (read back as the run
+    remembers it)."""
     return Attributes(
-        _ALL, read=True, write=False, command=False, multi_axis=False, scaled=False, default=None, range=None
+        _ALL, read=True, write=write, command=False, multi_axis=False, scaled=False, default=None, range=None
     )
 
 
@@ -38,9 +40,15 @@ def _setting(limits: ValueRange, *, scaled: bool = False) -> Attributes:
 SUPPLEMENTS: Mapping[str, Attributes] = MappingProxyType(
     {
         # Read only: the quick reference's purpose reads them, and nothing in the guide writes them.
-        "EVENTACTIVE": _read_only(),  # "read which events are active" (000:18061; 4392, 4470)
-        "HOMEPOS": _read_only(),  # "can be read" (000:3438, 11401-11402; 17640)
-        "MOVEBUFFERFREE": _read_only(),  # "read free space in move buffer" (000:17689; 2978)
+        "EVENTACTIVE": _unranged(write=False),  # "read which events are active" (000:18061; 4392, 4470)
+        "HOMEPOS": _unranged(write=False),  # "can be read" (000:3438, 11401-11402; 17640)
+        "MOVEBUFFERFREE": _unranged(write=False),  # "read free space in move buffer" (000:17689; 2978)
+        # Settings: the guide's examples assign them and its quick reference's purpose sets them; so no command,
+        # and one named alone is #2005, as SPEED is (000:18930-18933).
+        "DACMODE": _unranged(write=True),  # DACMODE.1 = 1 (000:4188); "configures DAC output" (000:17836)
+        "GEARING": _unranged(write=True),  # GEARING.0 = 100.0 (000:3746); "gearing compensation %" (000:17625)
+        "GEARINGMODE": _unranged(write=True),  # GEARINGMODE.0 = 1 (000:3747); "gearing compensation mode" (000:17627)
+        "KEYPADNODE": _unranged(write=True),  # KEYPADNODE._tmLCD1 = 14 (000:2077); "sets the node id" (000:18266)
         # A command that also gives a value: "To return the last known error condition" (000:13270-13282)
         "LASTERR": Attributes(_ALL, True, False, True, multi_axis=False, scaled=False, default=None, range=None),
         # Ranges of the runtime specification (the runtime's BEHAVIOUR.md, "Parameter ranges").

@@ -7,7 +7,9 @@ read in the quick reference (000:18061, 17689), so a write is error 2000 ("Read 
 000:18905-18908). FOLERRORMODE takes the modes of LIMITMODE's table, 0 to 3 and 5 (000:13479-13493; the
 runtime specification's AX-10): 4, smart mode, anticipates a software limit only (000:16057). A bit pattern
 takes a fraction inside its printed range (INPUTMODE 0 to 1048575, 000:12336) by its whole part, as the
-checker, which checks the printed range, lets it through.
+checker, which checks the printed range, lets it through. DACMODE, GEARING, GEARINGMODE and KEYPADNODE are
+settings: the guide's examples only assign them (000:4188, 3746-3747, 2077), so one named alone is neither
+read nor assigned, error 2005 (000:18930-18933), and given an operand without '=' a syntax error.
 """
 
 from __future__ import annotations
@@ -40,6 +42,21 @@ def test_both_tools_give_the_same_error(line: str, code: int) -> None:
     assert _checked(line) == [f"E{code:04d}"]
     result = simulate(f'{line}\nPRINT "after"\n' + HANDLER, controller="nextmove-pci")
     assert result.terminal.startswith(f"ERR {code} ERL 1\n")
+
+
+@pytest.mark.parametrize(
+    ("line", "code"),
+    [
+        pytest.param("DACMODE.1", 2005, id="DACMODE"),
+        pytest.param("GEARING.0", 2005, id="GEARING"),
+        pytest.param("GEARINGMODE", 2005, id="GEARINGMODE"),
+        pytest.param("KEYPADNODE._tmLCD1", 2005, id="KEYPADNODE"),
+        pytest.param("GEARINGMODE.0 1", 2003, id="GEARINGMODE-given-an-operand"),
+    ],
+)
+def test_a_setting_named_alone_is_the_same_error_in_both_tools(line: str, code: int) -> None:
+    assert _checked(line) == [f"E{code:04d}"]
+    assert simulate(f"{line}\n", controller="nextmove-pci").err == code
 
 
 @pytest.mark.parametrize("line", ["FOLERRORMODE.0 = 5", "FOLERRORMODE.0 = 0", "INPUTMODE = 0.5", "PRINT HOMEPOS.0"])

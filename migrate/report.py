@@ -199,8 +199,10 @@ def _differing(path: str, changes: Iterable[Mapping[str, Any]]) -> list[str]:
 def _files_table(data: Mapping[str, Any], console: Console) -> None:
     target = f"to {data['to']}" if "to" in data else data["controller"]
     files = Table(title=f"mint-migrate ({target})", show_edge=False)
-    for column in ("file", "role", "status", "changes", "manual items", "unreadable lines"):
-        files.add_column(column)
+    # a path cut short with an ellipsis names no file in a CI log: the path takes what the counts leave, folded
+    files.add_column("file", overflow="fold", ratio=1)
+    for column in ("role", "status", "changes", "manual", "unreadable"):  # counts: items, lines (the summary's)
+        files.add_column(column, no_wrap=True)
     for row in data["files"]:
         counts = (len(row["changes"]), len(row["manual"]), _unreadable_lines(row["errors"]))
         files.add_row(Text(row["path"]), row["role"], row["status"], *(str(count) for count in counts))

@@ -13,9 +13,9 @@ mint check finds the "Invalid axis" mint-run raises (001:13173-13184), and the "
 of more values than the axes listed (001:990-992, 13097-13111) or than the three a v3 controller
 has at most (001:972), of a vector with a place left empty (001:13100-13109), of a circle not
 given its centre and angle (001:6719), and of a second value to a keyword whose format writes one.
-A constant written outside the range v3's table prints (``WAIT = 1``, ``GAIN = 300``) is "Out of range"
-on the controller, v4's 3 (001:13136-13138), as in mint-run; a scaled one only where no scale factor
-brings it in (``SPEED = -5``, ``ACCEL = 0``), SCALE being at least 1 (001:11592).
+A constant written outside the range v3's table prints (``WAIT = 1``, ``GAIN = 300``, ``STOPMODE = 1.5``)
+is "Out of range" on the controller, v4's 3 (001:13136-13138), as in mint-run; a scaled one only where no
+scale factor brings it in (``SPEED = -5``, ``ACCEL = 0``), SCALE being at least 1 (001:11592).
 """
 
 from __future__ import annotations
@@ -110,12 +110,12 @@ def _out_of_range(use: KeywordUse, name: str) -> Iterator[Finding]:
     row = SETTINGS.get(name) or AXIS_PARAMETERS.get(name)
     if row is None or not isinstance(use.statement, n.KeywordStatement):
         return
-    limits = ValueRange(f"{row.lowest:.15g} to {row.highest:.15g}", row.lowest, row.highest, True)
+    limits = ValueRange(f"{row.lowest:.15g} to {row.highest:.15g}", row.lowest, row.highest, not row.whole)
     for value in use.statement.values or ():
         number = constant_value(value, Dialect.V3)
         if value is None or number is None:
             continue
-        if not (scaled_can_hold(limits, number, 1.0) if row.scaled else limits.holds(number)):
+        if not (scaled_can_hold(limits, number, 1.0) if row.scaled else row.holds(number)):
             detail = f"{number:.15g} is outside the range of {name} in Mint v3 ({limits.text})"
             detail += " whatever the scale factor" if row.scaled else ""
             yield Finding(use.unit, mint_error(3, value.span, detail))

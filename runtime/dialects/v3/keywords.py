@@ -33,7 +33,7 @@ from mintlang.runtime.ranges import Bounds, check_range
 INERT_SETTINGS = {"ECHO": 3.0, "TERM": 3.0}  # the terminal: one merged log here (001:7504, 11989-12032)
 
 RANGES: Mapping[str, Bounds] = MappingProxyType(
-    {name: Bounds(row.lowest, row.highest, False) for name, row in v3_ranges.SETTINGS.items()}
+    {name: Bounds(row.lowest, row.highest, False, whole=row.whole) for name, row in v3_ranges.SETTINGS.items()}
 )
 """The controller-wide keywords' v3 ranges (the axis parameters' are in ``parameters.py``)."""
 

@@ -45,7 +45,6 @@ OUT_OF_RANGE = 3
 INVALID_AXIS = 2
 SERVO_OFF = 40  # the v4 error for a drive that is off, which v3 reports as "Servo off"
 DECEL_ENABLED = 1  # AXISCON bit 0 (001:6024)
-SCALE_LIMIT = 32000.0  # CONFLICT: 65000 (001:960), 32000 (001:97), 3200 (001:11592, a dropped 0)
 SERVOFF_MODE = 1.0  # _servoff (001:10040)
 
 _MODES: Mapping[int, float] = MappingProxyType(
@@ -99,8 +98,8 @@ class V3Motion:
         table.register("ACCEL", read=v4.read("ACCEL"), write=per_channel(self._checked("ACCEL", self._accel)))
         table.register("DECEL", read=v4.read("DECEL"), write=per_channel(self._checked("DECEL", self._decel)))
         table.register("ACCELTIME", write=per_channel(self._checked("ACCELTIME", self._acceltime)))
-        table.register("AXISCON", read=self._read_axiscon, write=per_channel(self._axiscon))
-        table.register("SCALE", read=v4.read("SCALE"), write=per_channel(self._scale))
+        table.register("AXISCON", read=self._read_axiscon, write=per_channel(self._checked("AXISCON", self._axiscon)))
+        table.register("SCALE", read=v4.read("SCALE"), write=per_channel(self._checked("SCALE", self._scale)))
         table.register("RAMP", read=lambda _: 0.0, write=per_channel(self._ramp))
         table.register("MODE", read=self._mode)
         table.register("ERROR", read=self._error)
@@ -122,7 +121,7 @@ class V3Motion:
 
         def write(channel: int | None, value: float) -> None:
             counts = value * self.motion.axis(channel).scale if row.scaled else value
-            if not row.lowest <= counts <= row.highest:
+            if not row.holds(counts):
                 raise MintError(OUT_OF_RANGE, channel, f"{name} = {value:g}")
             write_one(channel, value)
 
@@ -162,18 +161,13 @@ class V3Motion:
 
     def _axiscon(self, channel: int | None, value: float) -> None:
         axis = self.motion.axis(channel)
-        if value != int(value) or not 0 <= value <= 255:
-            raise MintError(OUT_OF_RANGE, axis.number, f"AXISCON = {value:g}")
         if int(value) & ~DECEL_ENABLED:
             raise NotSimulated("AXISCON", "bits 1 to 7 (the encoder board, following error off, MOVER's target)")
         self.axiscon[axis.number] = int(value)
 
     def _scale(self, channel: int | None, value: float) -> None:
-        """SCALE takes whole numbers: a fraction is rounded down (001:11610), then 1 to 32000."""
-        whole = float(math.floor(value))
-        if not 1 <= whole <= SCALE_LIMIT:
-            raise MintError(OUT_OF_RANGE, channel, f"SCALE = {value:g}")
-        self.v4.write_one("SCALE")(channel, whole)
+        """SCALE takes whole numbers: a fraction is rounded down (001:11610)."""
+        self.v4.write_one("SCALE")(channel, float(math.floor(value)))
 
     @staticmethod
     def _ramp(channel: int | None, value: float) -> None:

@@ -20,12 +20,11 @@ from collections.abc import Callable
 
 from mintlang.runtime.dialects.v3.handlers import V4Handlers
 from mintlang.runtime.dialects.v3.parameters import POWER_UP, power_up
-from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.errors import NotSimulated
 from mintlang.runtime.keywords import Channels, Command, KeywordTable, per_channel
 from mintlang.runtime.motion.axis import ER_ABORT, ER_FWD_HARD, ER_REV_HARD, Axis
 from mintlang.runtime.motion.commands import Motion
 
-OUT_OF_RANGE = 3
 LIMITS_WATCHED, LIMITS_IGNORED = 1.0, 0.0  # LIMITMODE: crash stop (and the v3 abort), or ignore
 LIMIT_ERRORS = ER_FWD_HARD | ER_REV_HARD
 CONFIG_OFF, CONFIG_SERVO = 0, 1
@@ -128,8 +127,7 @@ class V3Recovery:
         axis.set("CONFIG", value)  # not v4's CONFIG, which calls DEFAULT (000:8481-8483): v3 restores only the rates
 
     def _enable(self, _: int | None, value: float) -> None:
-        if value not in (0, 1):
-            raise MintError(OUT_OF_RANGE, detail=f"ENABLE = {value:g}")
+        """0 or 1, as the table holds it (``v3_ranges``)."""
         for axis in self.motion.axes:
             if value:
                 axis.enable()

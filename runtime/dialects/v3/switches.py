@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from types import MappingProxyType
 
+from mintlang.keyworddb.v3_ranges import AXIS_PARAMETERS
 from mintlang.runtime.dialects.v3.handlers import V4Handlers
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, per_channel
@@ -42,6 +43,6 @@ class V3Switches:
         return self.motion.axis(channel).parameters["STOPINPUTMODE"]
 
     def _write_stopmode(self, channel: int | None, value: float) -> None:
-        if value not in STOPMODES:
+        if not AXIS_PARAMETERS["STOPMODE"].holds(value):
             raise MintError(OUT_OF_RANGE, channel, f"STOPMODE = {value:g}")
         self.v4.write_one("STOPINPUTMODE")(channel, STOPMODES[value])

@@ -99,6 +99,11 @@ class KeywordTable:
         refused = refusal(keyword, self.controller, self.dialect, Use.WRITE if write else Use.READ)
         return refused.code if refused is not None and refused.code != KEYWORD_NOT_SUPPORTED else None
 
+    def decides(self, name: str) -> bool:
+        """Whether the guide's record of ``name`` alone says which of its uses are errors, so that one the simulator
+        has no handler for is not simulated rather than refused; in v4 a handler for another use marks it refused."""
+        return False
+
     def bounds(self, name: str) -> Bounds:
         """The values ``name`` takes where no axis parameter holds them (``WAIT``): its attributes table's."""
         return table_bounds(name, self.controller, self.dialect)

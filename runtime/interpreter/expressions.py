@@ -191,7 +191,8 @@ class ExpressionCompiler:
     def keyword(self, reference: n.KeywordRef) -> Evaluate:
         access = self.table.in_program(reference.keyword)
         if access is None or access.read is None:
-            unreadable = access is not None and (access.write is not None or access.command is not None)
+            handled = access is not None and (access.write is not None or access.command is not None)
+            unreadable = handled and not self.table.decides(reference.keyword)
             if unreadable or self.table.refused_by_the_guide(reference.keyword, write=False):  # a = WAIT
                 raise MintError(self.read_refused(reference.keyword), detail=reference.keyword)
             raise NotSimulated(reference.keyword, "read")

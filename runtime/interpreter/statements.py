@@ -210,7 +210,8 @@ class StatementCompiler:
                 if access is not None and access.indexed_write is not None:  # MintMT's MOVEOUT(0) = 7: no bank
                     raise MintError(MISSING_PARAMETER, detail=f"{reference.keyword} needs its index after the axes")
                 refused = self.table.refused_by_the_guide(reference.keyword, write=True)  # VER = 1: 2000
-                if refused is None and access is not None and (access.read is not None or access.command is not None):
+                handled = access is not None and (access.read is not None or access.command is not None)
+                if refused is None and handled and not self.table.decides(reference.keyword):
                     refused = WRITE_OF_READ_ONLY  # the simulator reads it or runs it, and writes it not (2000)
                 if refused is not None:
                     raise MintError(refused, detail=reference.keyword)

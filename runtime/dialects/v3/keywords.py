@@ -30,6 +30,7 @@ from mintlang.runtime.keywords import (
 )
 from mintlang.runtime.ranges import Bounds, check_range
 
+READ_ONLY_OR_COMMAND, WRITE_ONLY = 2000, 2002
 INERT_SETTINGS = {"ECHO": 3.0, "TERM": 3.0}  # the terminal: one merged log here (001:7504, 11989-12032)
 
 RANGES: Mapping[str, Bounds] = MappingProxyType(
@@ -66,13 +67,22 @@ class V3KeywordTable(KeywordTable):
     def bounds(self, name: str) -> Bounds:
         return RANGES.get(name) or super().bounds(name)
 
-    def refused_by_the_guide(self, name: str, *, write: bool) -> int | None:
-        """A read v3's entry allows is no programming error, whatever v4's says: reading ``INCA`` or ``INCR``
-        tells whether the new end point was set up (001:9049, 9104), where v4's are write only."""
+    def decides(self, name: str) -> bool:
+        """v3's attribute ticks, where its entry has any, as ``mint check`` reads them (``v3_access``)."""
         v3 = database().lookup_v3(name)
-        if not write and v3 is not None and v3.read:
+        return v3 is not None and (v3.read or v3.write or v3.command)
+
+    def refused_by_the_guide(self, name: str, *, write: bool) -> int | None:
+        """A use v3's entry ticks is no programming error, whatever v4's says: reading ``INCA`` or ``INCR`` tells
+        whether the new end point was set up (001:9049, 9104), where v4's are write only, and writing ``VEL`` sets
+        the idle velocity (001:12480), where v4's is read only. One it does not tick is "Read only or Command"
+        (2000: a write, or the read of a command, 001:13083-13094) or "Write only" (2002, 001:13073-13080)."""
+        v3 = database().lookup_v3(name)
+        if v3 is None or not self.decides(name):
+            return super().refused_by_the_guide(name, write=write)
+        if v3.write if write else v3.read:
             return None
-        return super().refused_by_the_guide(name, write=write)
+        return READ_ONLY_OR_COMMAND if write or (v3.command and not v3.write) else WRITE_ONLY
 
 
 def _fixed(read: Reader) -> Reader:

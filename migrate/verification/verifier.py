@@ -31,6 +31,8 @@ from mintlang.runtime.scenario.stimulus import Scenario
 COUNTERPART = MappingProxyType(dict.fromkeys(V3_CONTROLLERS, Controller.NEXTMOVE_PCI))
 
 _TIMING_RULE = "X-GO-TIMING"
+# run as v3, a v4 application would be compared with itself, or stop on its first v4 form
+_ALREADY_V4 = "already Mint v4: there is no Mint v3 original to run (verify the v3 files before --write)"
 
 
 def verify(
@@ -54,7 +56,7 @@ def verify(
     left = record(v3, Dialect.V3, v3_controller, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
     run_v4 = partial(record, v4, Dialect.V4, target, stimulus, until_ms=until_ms, max_wall_s=max_wall_s)
     right = run_v4()
-    short = short_of(left, right, runnable.flagged_places(result))
+    short = _ALREADY_V4 if result.already_v4 else short_of(left, right, runnable.flagged_places(result))
     what_if = partial(run_v4, functions=explained.FUNCTIONS) if explained.applies(result) else None
     return conclude(left, right, result, short, controllers=(v3_controller, target), disabled=disabled, what_if=what_if)
 

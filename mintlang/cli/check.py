@@ -45,7 +45,7 @@ from mintlang.cli.report import (
     render_concise,
     render_text,
 )
-from mintlang.cli.settings import describe, overrides, settings_failed
+from mintlang.cli.settings import describe, overrides, settings_failed, typed
 from mintlang.cli.terminal import (
     colour_console,
     console,
@@ -205,6 +205,11 @@ def check(
     if statistics and output_format not in (*_FOR_PEOPLE, "json"):
         raise click.UsageError(f"--statistics is written as text or json, not {output_format}")
     context = click.get_current_context()
+    if dialect == Dialect.V3 and typed(context, "dialect") and typed(context, "controller"):
+        raise click.UsageError(
+            f"--controller {controller} is a Mint v4 controller: Mint v3 is checked against the v3 guide's"
+            " controllers (at most three axes, 8 inputs and outputs); leave --controller out"
+        )
     layer = overrides(
         context,
         select=_codes(select, "--select"),

@@ -294,6 +294,33 @@ def test_a_range_printed_on_two_lines_keeps_them_apart(
     assert row.range.text == text
 
 
+@pytest.mark.parametrize(
+    ("name", "text", "bounds"),
+    [
+        pytest.param(  # 000:6169-6175
+            "ACCEL",
+            "15625 ≤ x ≤ 8388607 at LOOPTIME 500; 3907 ≤ x ≤ 8388607 at LOOPTIME 1000; "
+            "977 ≤ x ≤ 8388607 at LOOPTIME 2000",
+            (977, 8388607),
+            id="accel",
+        ),
+        pytest.param(  # 000:11614-11620
+            "HOMESPEED",
+            "16 ≤ x ≤ 8,000,000 at LOOPTIME 500; 8 ≤ x ≤ 4,000,000 at LOOPTIME 1000; "
+            "4 ≤ x ≤ 2,000,000 at LOOPTIME 2000",
+            (4, 8000000),
+            id="homespeed",
+        ),
+    ],
+)
+def test_a_range_per_looptime_shows_each_and_bounds_their_span(
+    db: KeywordDatabase, name: str, text: str, bounds: tuple[float, float]
+) -> None:
+    row = db.keywords[name].attributes_for(Controller.MINTDRIVE)
+    assert row is not None and row.range is not None
+    assert (row.range.text, (row.range.minimum, row.range.maximum)) == (text, bounds)
+
+
 def test_v3_constants(db: KeywordDatabase) -> None:
     posindex = db.v3_constants["_POSINDEX"]  # v3:1333
     assert posindex.value == 3 and posindex.v4_name == "_hmPOSITIVE_SWITCH_INDEX"

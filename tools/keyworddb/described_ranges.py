@@ -29,7 +29,7 @@ from tools.keyworddb.v4_keywords import canonical_name
 
 _DEFERRED = re.compile(r"^see\b", re.IGNORECASE)
 _LOOPTIME_SENTENCE = re.compile(r"^On (?P<label>.+?) the range depends upon\b.*\bLOOPTIME\b")
-_LOOPTIME_ROW = re.compile(r"^(?:500|1000|2000) (?P<range>-?\d.*≤ x ≤ .+)$")
+_LOOPTIME_ROW = re.compile(r"^(?P<looptime>500|1000|2000) (?P<range>-?\d.*≤ x ≤ .+)$")
 _BAUD_HEADER = re.compile(r"^Baud Rate\b")
 _BAUD_ROW = re.compile(r"^(?P<rate>\d{4,6})\b")
 
@@ -39,12 +39,14 @@ def _lines(entry: Entry, seed: Seed) -> Iterable[str]:
 
 
 def _looptime_range(entry: Entry, seed: Seed) -> ValueRange | None:
-    rows = [parse_range(match["range"]) for line in _lines(entry, seed) if (match := _LOOPTIME_ROW.match(line))]
+    matches = [match for line in _lines(entry, seed) if (match := _LOOPTIME_ROW.match(line))]
+    rows = [parse_range(match["range"]) for match in matches]
     if not rows or any(row.minimum is None or row.maximum is None for row in rows):
         return None
     low = min(row.minimum for row in rows if row.minimum is not None)
     high = max(row.maximum for row in rows if row.maximum is not None)
-    text = f"{low:.15g} ≤ x ≤ {high:.15g} over the LOOPTIME settings"
+    # each row as printed, for the reader: the bounds checked are their widest span
+    text = "; ".join(f"{row.text} at LOOPTIME {match['looptime']}" for row, match in zip(rows, matches, strict=True))
     return ValueRange(text, low, high, fractional=any(row.fractional for row in rows))
 
 

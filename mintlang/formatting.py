@@ -13,6 +13,9 @@
   body is not a block and stays at the margin under its label, as in the
   manual's examples.
 * Spaces and tabs at the end of a line go; a line of blanks becomes empty.
+* A line the indentation would take past what the controller reads (W111) keeps its own indentation.
+* Mint v3's ``PROTECT`` keeps its case: only an upper-case one makes the rest of its line a password, the
+  controller ignores any other spelling (001:11089, 001:11091).
 * Everything else is left byte for byte: comments but for their REM, strings,
   user names, the spacing inside a line, line ends, and the continuation lines
   of a DIM list, which keep their indentation.
@@ -24,6 +27,7 @@ language server's formatting both take their edits from here.
 
 from __future__ import annotations
 
+from mintlang.analysis.rules.line_length import longest_line
 from mintlang.diagnostics import Edit, Span, with_edits
 from mintlang.dialect import Dialect
 from mintlang.semantic.model import SemanticModel, build_model
@@ -34,6 +38,7 @@ from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
 _UPPER_CASED = GRAMMAR_KEYWORDS | {TokenKind.KEYWORD, TokenKind.FUNCTION}
 _JUMPS = frozenset({TokenKind.GOSUB, TokenKind.GOTO})  # the word after one is a label, however it is spelt
 _REM = len("REM")  # a comment token starts with its keyword
+_V3_PROTECT = "PROTECT"  # its case is read: upper case protects the program, any other is ignored (001:11089)
 
 
 def line_count(document: Document) -> int:
@@ -49,12 +54,15 @@ def formatting_edits(model: SemanticModel, unit: Unit, indentation: str, lines: 
     source, index = document.source, document.line_index
     indentations = _indentations(model, unit, indentation, lines)
     keywords = _keywords(document, lines)
+    limit = longest_line(model.controller, document.dialect)
     edits = []
     for line in lines:
         start = index.line_start(line + 1)
         end = _content_end(source, start)
         old = source[start:end]
         new = _formatted(source, start, end, indentations.get(line), keywords.get(line, []))
+        if len(new) > max(limit, len(old)):  # the controller would not read it whole: its own indentation
+            new = _formatted(source, start, end, None, keywords.get(line, []))
         if new != old:
             head, tail = _shared(old, new)
             edits.append(Edit(Span(start + head, end - tail), new[head : len(new) - tail]))
@@ -109,12 +117,13 @@ def _keywords(document: Document, lines: range) -> dict[int, list[Span]]:
     none in MintMT, whose words keep their case."""
     if document.dialect is Dialect.MINTMT:
         return {}
+    v3 = document.dialect is Dialect.V3
     index = document.line_index
     found: dict[int, list[Span]] = {}
     previous = None
     for token in document.tokens:
         after_jump, previous = previous in _JUMPS, previous if token.kind is TokenKind.WS else token.kind
-        if token.kind in _UPPER_CASED and not after_jump:
+        if token.kind in _UPPER_CASED and not after_jump and not (v3 and token.text.upper() == _V3_PROTECT):
             span = Span(token.start, token.end)
         elif token.kind is TokenKind.COMMENT:
             span = Span(token.start, token.start + _REM)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner, Result
 
 from mintlang.cli import main
@@ -85,3 +86,36 @@ def test_standard_input_is_formatted_to_standard_output(tmp_path: Path) -> None:
     assert (check.exit_code, check.stdout) == (1, "Would reformat: cell.mnt\n")
     alone = CliRunner().invoke(main, ["format", "-", str(tmp_path)], input="")
     assert alone.exit_code == 2
+
+
+NEAR_THE_LIMIT = 'PRINT "' + "x" * 244 + '"'  # 252 characters: two levels of 2 spaces would make it 256
+NEAR_THE_V3_LIMIT = 'PRINT "' + "x" * 118 + '"'  # 126 characters: a level would make it 128
+
+
+@pytest.mark.parametrize(
+    ("dialect", "messy", "formatted"),
+    [
+        pytest.param(
+            "v3",
+            "protect abc : print 2\nend\n",
+            "protect abc : PRINT 2\nEND\n",
+            id="v3-ignores-a-protect-not-in-upper-case-so-its-case-stays",  # 001:11089; upper case: all a password
+        ),
+        pytest.param(
+            "v4",
+            f"loop\nloop\n{NEAR_THE_LIMIT}\nendl\nendl\n",
+            f"LOOP\n  LOOP\n{NEAR_THE_LIMIT}\n  ENDL\nENDL\n",
+            id="a-line-indentation-would-take-past-255-characters-keeps-its-own",  # 000:255
+        ),
+        pytest.param(
+            "v3",
+            f"loop\n{NEAR_THE_V3_LIMIT}\nendl\n",
+            f"LOOP\n{NEAR_THE_V3_LIMIT}\nENDL\n",
+            id="in-v3-past-127-characters",  # 001:5144
+        ),
+    ],
+)
+def test_formatting_changes_nothing_the_controller_reads(tmp_path: Path, dialect: str, messy: str, formatted: str):
+    path = write(tmp_path / "cell.mnt", messy)
+    mint_format("--dialect", dialect, path)
+    assert path.read_text(encoding="utf-8") == formatted

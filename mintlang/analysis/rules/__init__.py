@@ -100,7 +100,7 @@ RULES: tuple[Rule, ...] = (
     Rule(
         "operands",
         each_line=operands.each_line,
-        dialects=frozenset({Dialect.V4}),
+        dialects=_V4_ATTRIBUTES,
         looks_at=LineParts(frozenset({n.KeywordStatement})),
     ),
     Rule(
@@ -112,7 +112,7 @@ RULES: tuple[Rule, ...] = (
     Rule(
         "functions",
         each_line=functions.each_line,
-        dialects=frozenset({Dialect.V4}),  # MintMT's MOVER(0) is no call
+        dialects=_V4_ATTRIBUTES,  # MintMT's MOVER(0) is a keyword's axis, no call
         looks_at=LineParts(calls=True),  # a function written as a statement is one of the line's calls
     ),
     Rule(

@@ -72,6 +72,7 @@ def check_application(
     ignore: tuple[str, ...] = (),
     config_ignore: tuple[str, ...] | None = None,
     previous: Analysis | None = None,
+    suppressions: bool = True,
 ) -> Analysis:
     """Parse and analyse a program with its optional configuration file; diagnostics per file.
 
@@ -79,7 +80,8 @@ def check_application(
     warnings are reported and the hints (I…) are not. ``config_ignore`` is the configuration
     file's own ``ignore`` (None: the program's). ``previous`` is the analysis of an
     earlier version of the same application (the language server's, before a keystroke):
-    what the edit did not change is read from it, and the result is the same as without it."""
+    what the edit did not change is read from it, and the result is the same as without it.
+    ``suppressions`` False leaves the ``mint: ignore`` comments unread, as the controller's compiler does."""
     from mintlang.analysis.analyser import analyse  # noqa: PLC0415 - see import_when_used
     from mintlang.controllers import profile  # noqa: PLC0415
     from mintlang.semantic.carry import carry_model  # noqa: PLC0415
@@ -100,7 +102,9 @@ def check_application(
     model = carry_model(before, program, configuration, profile(controller)) if before is not None else None
     if model is None:
         model, previous = build_model(program, configuration, controller), None
-    return analyse(model, select=select, ignore=ignore, config_ignore=config_ignore, previous=previous)
+    return analyse(
+        model, select=select, ignore=ignore, config_ignore=config_ignore, previous=previous, suppressions=suppressions
+    )
 
 
 def check(

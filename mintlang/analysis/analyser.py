@@ -194,6 +194,7 @@ def analyse(
     ignore: Iterable[str] = (),
     config_ignore: Iterable[str] | None = None,
     previous: Analysis | None = None,
+    suppressions: bool = True,
 ) -> Analysis:
     """All diagnostics of an application, per file, sorted by position.
 
@@ -202,6 +203,9 @@ def analyse(
 
     ``previous`` is the analysis of the version ``model`` was carried over from
     (``mintlang.semantic.carry``): what its edit did not touch is carried over too.
+
+    ``suppressions`` False reports what the suppression comments silence: a comment is the checker's, and
+    the controller's compiler stops on an error whatever it says.
     """
     found = _carried(model, previous) if previous is not None else None
     if found is None:
@@ -221,7 +225,7 @@ def analyse(
         )
         everything = chain(_with_origins(document.parse_issues), zip(placed, repeat(0)))
         distinct = _first_of_each(pair for pair in everything if selected(pair[0].code))
-        kept = suppress(distinct, found.directives[unit], selected)
+        kept = suppress(distinct, found.directives[unit], selected) if suppressions else distinct
         per_unit[unit] = distinct if kept is distinct else tuple(_in_position_order(kept))
     return Analysis(model, per_unit[Unit.PROGRAM], per_unit[Unit.CONFIGURATION], found)
 

@@ -3,6 +3,8 @@
 The files are found as ``mint check`` finds them (its exclusions and settings files), configuration files
 included; each is written atomically and only if it still holds what was read (``cli.fixing.apply``).
 ``--check`` and ``--diff`` write nothing and exit 1 when a file would change, for a CI gate or a hook.
+A file read as Mint v4 by default that shows MintMT's forms is left as it is: v4 would take its ``'`` comments
+for code and write their words in upper case.
 """
 
 from __future__ import annotations
@@ -26,10 +28,11 @@ from mintlang.cli.options import (
     version_option,
 )
 from mintlang.cli.settings import exclusions, settings_failed
+from mintlang.detection import first_mintmt_form
 from mintlang.dialect import Dialect
 from mintlang.fixes import Fixed
 from mintlang.settings import Given, Overrides, SettingsError, settings_for
-from mintlang.source import read_source, read_stdin
+from mintlang.source import SourceFile, read_source, read_stdin
 
 _CHANGES = 1
 _NOT_DONE = 2
@@ -94,15 +97,16 @@ def format_command(
     for path in found.files:
         try:
             source = read_source(path)
-            read_as = settings_for(path, layer).dialect.value
+            given = settings_for(path, layer).dialect
         except OSError as error:
             problems.append(cannot_read(error))
             continue
         except SettingsError as error:
             settings_failed("mint format", error)
-        if (binary := source.binary()) is not None:
-            problems.append(f"{binary}: not formatted")
+        if (problem := _not_formatted(source, given)) is not None:
+            problems.append(problem)
             continue
+        read_as = given.value
         text = format_text(source.text, indentation, read_as, configuration=is_configuration(path))
         if text == source.text:
             unchanged += 1
@@ -130,10 +134,13 @@ def _format_stdin(name: str | None, layer: Overrides, indentation: str, *, check
 
     source = read_stdin(name)
     try:
-        dialect = settings_for(source.path, layer).dialect.value
+        given = settings_for(source.path, layer).dialect
     except SettingsError as error:
         settings_failed("mint format", error)
-    text = format_text(source.text, indentation, dialect, configuration=is_configuration(source.path))
+    if (problem := _not_formatted(source, given)) is not None:
+        click.echo(f"mint format: {problem}", err=True)
+        sys.exit(_NOT_DONE)
+    text = format_text(source.text, indentation, given.value, configuration=is_configuration(source.path))
     changed = text != source.text
     if diff:
         write_diff(sys.stdout, unified(source.text, text, str(source.path), str(source.path)), source.encoding)
@@ -143,6 +150,17 @@ def _format_stdin(name: str | None, layer: Overrides, indentation: str, *, check
         sys.stdout.buffer.write(source.encode(text))
         sys.stdout.buffer.flush()
     sys.exit(_CHANGES if changed and (check or diff) else 0)
+
+
+def _not_formatted(source: SourceFile, dialect: Given[Dialect]) -> str | None:
+    """Why ``source`` is left as it is, or None: it is not text, or it shows MintMT's forms but no one chose its
+    dialect (v4 would upper-case the words of its ``'`` comments, which it reads as code)."""
+    if (binary := source.binary()) is not None:
+        return f"{binary}: not formatted"
+    if dialect.chosen or dialect.value is not Dialect.V4 or (form := first_mintmt_form(source.text)) is None:
+        return None
+    seen = f"{form.what} on line {form.line}"
+    return f"{source.path}: looks like MintMT ({seen}) but would be read as Mint v4: not formatted (--dialect mintmt)"
 
 
 def _report_only(changes: list[FileFixed], unchanged: int, *, diff: bool, quiet: bool) -> None:

@@ -119,3 +119,17 @@ def test_formatting_changes_nothing_the_controller_reads(tmp_path: Path, dialect
     path = write(tmp_path / "cell.mnt", messy)
     mint_format("--dialect", dialect, path)
     assert path.read_text(encoding="utf-8") == formatted
+
+
+MINTMT = "MOVER(0) = 10      ' Load a relative move of 10 units\nGO(0)\n"  # 004:32, a ' comment: MintMT's
+
+
+def test_a_mintmt_program_read_as_v4_by_default_is_left_as_it_is(tmp_path: Path) -> None:
+    # read as v4, the ' comment would be code: its "of" written OF
+    path = write(tmp_path / "buffer.mnt", MINTMT)
+    result = mint_format(path)
+    assert (result.exit_code, path.read_text(encoding="utf-8")) == (2, MINTMT)
+    assert f"{path}: looks like MintMT (a ' comment on line 1)" in result.stderr
+    piped = CliRunner().invoke(main, ["format", "-"], input=MINTMT)
+    assert (piped.exit_code, piped.stdout) == (2, "")
+    assert mint_format("--dialect", "v4", path).exit_code == 0  # chosen: the user's word

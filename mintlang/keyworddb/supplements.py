@@ -119,6 +119,11 @@ INDEXED_AS: Mapping[tuple[str, int], str] = MappingProxyType({("CONTOURPARAMETER
 CONTOURPARAMETER's index 0 alone, the inter-vector angle v4 calls CONTOURANGLE (004:223, 232; MT-11)."""
 
 
+WRITTEN_AS: Mapping[str, str] = MappingProxyType({"OUTX": "OUT"})
+"""The v4 keyword a MintMT keyword writes, whose row then ranges the value: ``OUTX(channel)`` is v4's
+``OUT.channel`` (004:148; MINTMT.md), so ``OUTX(1) = -1`` is out of range as ``OUT.1 = -1`` is."""
+
+
 INPUT_PATTERNS = frozenset({"INPUTMODE", "INPUTACTIVELEVEL", "INPUTPOSTRIGGER", "INPUTNEGTRIGGER"})
 """Bitmaps of the digital inputs, one bit an input (000:12315-12316, 12293): each row of their tables prints the
 pattern of all the controller's inputs (NextMove PCI's 20 are 0 ≤ x ≤ 1048575: 000:11928, 12336)."""

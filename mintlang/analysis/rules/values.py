@@ -81,7 +81,9 @@ def _as_written(value: n.Expression, number: float) -> str:
 def _ranged_as(ref: n.KeywordRef, keyword: Keyword | None, dialect: Dialect) -> tuple[str, str]:
     """The keyword whose range a write is held to, and how a message names it: its own, or for a MintMT keyword
     whose index writes a v4 one (``CONTOURPARAMETER([0,1],0)``, CONTOURANGLE: ``supplements.INDEXED_AS``)
-    that one's, as the run does."""
+    that one's, as the run does; or the v4 keyword it writes (``OUTX``, ``supplements.WRITTEN_AS``)."""
+    if (written := supplements.WRITTEN_AS.get(ref.keyword)) is not None and dialect is Dialect.MINTMT:
+        return written, f"{ref.keyword}, as {written}"
     selector = ref.selector
     if keyword is None or not keyword.indices or selector is None or selector.indices != len(keyword.indices):
         return ref.keyword, ref.keyword

@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
+from mintlang.keyworddb.supplements import WRITTEN_AS
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
 from mintlang.runtime.motion.commands import MISSING_PARAMETER
 
 
 def install(table: KeywordTable) -> None:
-    out = table.get("OUT")
+    out = table.get(WRITTEN_AS["OUTX"])  # its writer holds the value to OUT's range, as mint check does
     assert out is not None and out.read is not None and out.write is not None, "v4's I/O registers OUT"
     read_out, write_out = out.read, out.write
 

@@ -118,10 +118,8 @@ def check_file(job: Job) -> Checked:
         analysis = check_application("", config=source.text, select=options.select, **arguments)
         return Checked(FileReport(str(source.path), source.text, analysis.configuration))
     hint = None if options.dialect_chosen else dialect_hint(str(source.path), source.text, Dialect(options.dialect))
-    if job.fixing is Fixing.SILENCE:
-        return replace(_silence_program(job, source, arguments), hint=hint)
-    if job.fixing is not None:
-        return replace(_fix_program(job, source, arguments), hint=hint)
+    if job.fixing is not None and hint is None:  # a MintMT program read as v4 is not written as v4: the hint says why
+        return (_silence_program if job.fixing is Fixing.SILENCE else _fix_program)(job, source, arguments)
     analysis = check_application(source.text, config=job.configuration, select=options.select, **arguments)
     return Checked(FileReport(str(source.path), source.text, analysis.program), analysis.configuration, hint=hint)
 

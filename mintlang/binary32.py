@@ -38,3 +38,19 @@ def power(x: float, y: float) -> float:
     if x == 0 and y < 0:
         raise ZeroDivisionError("0 to a negative power")
     return rounded(math.pow(x, y))
+
+
+def shortest(value: float) -> str:
+    """``value`` as a person reads it: the shortest decimal that reads back as the same value, rounded to binary32
+    where it is one (0.1, not 0.100000001), whole numbers without a point, every digit kept (8388607.5, not
+    8388608; 16777216, not 1.67772e+07)."""
+    if not math.isfinite(value):
+        return str(value)
+    if value.is_integer() and abs(value) < 1e15:
+        return str(int(value))
+    single = abs(value) < 3.4e38 and rounded(value) == value
+    for digits in range(1, 18):
+        text = f"{value:.{digits}g}"
+        if float(text) == value or (single and rounded(float(text)) == value):
+            return text
+    return repr(value)

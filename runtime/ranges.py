@@ -11,6 +11,7 @@ from collections.abc import Callable
 from dataclasses import replace
 from typing import TypeVar
 
+from mintlang import binary32
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, ValueRange
@@ -118,8 +119,9 @@ def check_range(keyword: str, value: float, limits: Bounds, channel: int | None 
 
 
 def shown(value: float) -> str:
-    """A value as the program wrote it: every digit of a whole number (16777216, not 1.67772e+07)."""
-    return str(int(value)) if value.is_integer() else f"{value:.7g}"
+    """A value as the program wrote it (``binary32.shortest``): 8388607.5 past a range's end of 8388607 is not
+    shown as 8388608."""
+    return binary32.shortest(value)
 
 
 def accepted(limits: Bounds) -> str:

@@ -10,9 +10,7 @@ than given a fresh slot, so evaluating never grows the program's storage.
 
 from __future__ import annotations
 
-import math
-import struct
-
+from mintlang import binary32
 from mintlang.analysis.rules.addressing import misaddressed
 from mintlang.codes import mint_error
 from mintlang.dialect import Dialect
@@ -129,19 +127,5 @@ def run(compiled: Compiled) -> float:
 
 
 def shown(value: float) -> str:
-    """A value as the editor shows it: the shortest decimal that reads back as the same value, rounded to
-    binary32 as the controller holds it (0.1, not 0.100000001), and whole numbers without a point."""
-    if not math.isfinite(value):
-        return str(value)
-    if value.is_integer() and abs(value) < 1e15:
-        return str(int(value))
-    single = _single(value) == value
-    for digits in range(1, 18):
-        text = f"{value:.{digits}g}"
-        if float(text) == value or (single and _single(float(text)) == value):
-            return text
-    return repr(value)
-
-
-def _single(value: float) -> float:
-    return struct.unpack("<f", struct.pack("<f", value))[0] if abs(value) < 3.4e38 else value
+    """A value as the editor shows it (``binary32.shortest``)."""
+    return binary32.shortest(value)

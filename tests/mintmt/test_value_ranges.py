@@ -1,13 +1,14 @@
 """The values MintMT's own keywords take, the same in ``mint check`` and ``mint-run``.
 
-The notes print no attributes tables, so the ranges are ``mintlang/MINTMT.md``'s decisions, written once in
-the keyword rows both tools read: TRIGGERMODE takes whole numbers (MT-10), MOVEBUFFERLOW a whole number of
-free places, 0 or more (MT-14), FEEDRATEOVERRIDE a percentage above 0 (MT-15), SUSPEND a whole number 0 or
-more (MT-16), MOVEPULSEOUTX a whole number of milliseconds, 1 or more (MT-22), and MOVEBUFFERSIZE v4's 2 to
-100 moves (000:11053-11054), whole ones, as MintMT's rows are (MT-1), and FEEDRATE what SPEED takes, the one
-slew speed written either way (MT-15), and CONTOURMODE v4's modes 0, 1 and 3 (000:8653-8654), and OUTX(channel)
-what v4's OUT.channel takes (0 ≤ x < 4096 on NextMove PCI, 000:14911), being that output (004:148). Any other
-value is error 3, "Data specified out of range" (000:18518-18521).
+The notes print no attributes tables, so the ranges are ``mintlang/MINTMT.md``'s decisions, written once in the
+keyword rows both tools read: TRIGGERMODE takes whole numbers (MT-10), MOVEBUFFERLOW a whole number of free places,
+0 or more (MT-14), FEEDRATEOVERRIDE a percentage above 0 (MT-15), SUSPEND a whole number 0 or more (MT-16),
+FEEDRATEMODE, a set of bits (004:278), a whole number 0 or more (MT-15), MOVEPULSEOUTX a whole number of
+milliseconds, 1 or more (MT-22), and MOVEBUFFERSIZE v4's 2 to 100 moves (000:11053-11054), whole ones, as MintMT's
+rows are (MT-1), and FEEDRATE what SPEED takes, the one slew speed written either way (MT-15), and CONTOURMODE v4's
+modes 0, 1 and 3 (000:8653-8654), and OUTX(channel) what v4's OUT.channel takes (0 ≤ x < 4096 on NextMove PCI,
+000:14911), being that output (004:148). Any other value is error 3, "Data specified out of range"
+(000:18518-18521).
 """
 
 from __future__ import annotations
@@ -43,6 +44,8 @@ OUT_OF_RANGE = [
     pytest.param("CONTOURMODE(0) = 0.5", id="CONTOURMODE a fraction of a mode"),
     pytest.param("OUTX(1) = -1", id="OUTX below OUT's 0 (000:14911)"),
     pytest.param("OUTX(1) = 4096", id="OUTX at OUT's 4096 (000:14911)"),
+    pytest.param("FEEDRATEMODE(0) = -1", id="FEEDRATEMODE below 0"),
+    pytest.param("FEEDRATEMODE(0) = 0.5", id="FEEDRATEMODE a fraction of a bit"),
 ]
 
 IN_RANGE = [
@@ -60,6 +63,7 @@ IN_RANGE = [
         id="CONTOURMODE the note's angle control (004:230)",
     ),
     pytest.param("OUTX(0) = _ON", id="OUTX the note's output on (004:148)"),
+    pytest.param("FEEDRATEMODE([0,1]) = _frFEEDRATE;", id="FEEDRATEMODE the note's feedrate bit (004:258)"),
 ]
 
 

@@ -12,10 +12,10 @@ without their values: they are not simulated.
 
 from __future__ import annotations
 
-from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.errors import NotSimulated
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.commands import Motion
-from mintlang.runtime.ranges import OUT_OF_RANGE, ranged
+from mintlang.runtime.ranges import ranged
 
 SPEED_MODE = 0
 FEEDRATE_MODE = 1  # _frFEEDRATE (MT-3)
@@ -32,8 +32,6 @@ def install(table: KeywordTable, motion: Motion) -> None:
     def write_mode(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)
         if value not in (SPEED_MODE, FEEDRATE_MODE):
-            if value != int(value) or value < 0:
-                raise MintError(OUT_OF_RANGE, axis.number, "FEEDRATEMODE is a set of bits: a whole number")
             raise NotSimulated("FEEDRATEMODE", "bits but _frFEEDRATE, whose values the notes do not give")
         axis.store_feedrate = value == FEEDRATE_MODE
 
@@ -45,7 +43,9 @@ def install(table: KeywordTable, motion: Motion) -> None:
         axis.speed_override = value / 100.0
         motion.rates_changed(axis)
 
-    table.register("FEEDRATEMODE", read=read_mode, write=per_channel(write_mode))
+    # a set of bits: a whole number, 0 or more, as its row says (004:278)
+    mode = ranged("FEEDRATEMODE", table.controller, write_mode, table.dialect, channel=motion.axis_number)
+    table.register("FEEDRATEMODE", read=read_mode, write=per_channel(mode))
     # MT-15: above 0
     override = ranged("FEEDRATEOVERRIDE", table.controller, write_override, table.dialect, channel=motion.axis_number)
     table.register("FEEDRATEOVERRIDE", read=read_override, write=per_channel(override))

@@ -125,7 +125,7 @@ RULES: tuple[Rule, ...] = (
         "v3-access",
         each_line=v3_access.each_line,
         dialects=frozenset({Dialect.V3}),
-        looks_at=LineParts(keyword_uses=True),
+        looks_at=LineParts(frozenset({n.Axes}), keyword_uses=True),
     ),
     Rule(
         "arrays",

@@ -549,7 +549,14 @@ def _terminal(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
 
 def _axes_statement(unit: Unit, statement: n.Axes, scope: LineScope) -> Iterator[Finding]:
     if statement.selector is None:
-        detail = "AXES without an axis list only reports the axes at the command line; in a program it fails"
-        yield Finding(unit, mint_error(2005, statement.span, detail))
+        yield from axes_alone(unit, statement)
         return
     yield from _axis_list(unit, statement.selector, scope)
+
+
+def axes_alone(unit: Unit, statement: n.Axes) -> Iterator[Finding]:
+    """``AXES`` without its list, which reports the axes at the command line and fails in a program (v3's
+    run time error too, 001:1027): 2005, as the run stops on it."""
+    if statement.selector is None:
+        detail = "AXES without an axis list only reports the axes at the command line; in a program it fails"
+        yield Finding(unit, mint_error(2005, statement.span, detail))

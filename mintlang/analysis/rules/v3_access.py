@@ -23,7 +23,14 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error
-from mintlang.analysis.rules.addressing import circle_values, lone_position, one_value, values_for_axes, vector_gap
+from mintlang.analysis.rules.addressing import (
+    axes_alone,
+    circle_values,
+    lone_position,
+    one_value,
+    values_for_axes,
+    vector_gap,
+)
 from mintlang.analysis.rules.values import scaled_can_hold
 from mintlang.analysis.traversal import KeywordUse, LineScope, Use
 from mintlang.dialect import Dialect
@@ -41,6 +48,9 @@ _BIT_WORDS = frozenset({"IN", "OUT"})
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
     db = database()
+    for statement in scope.facts.statements:
+        if isinstance(statement, n.Axes):
+            yield from axes_alone(scope.unit, statement)
     for use in scope.facts.keyword_uses:
         keyword = db.lookup_v3(use.keyword.keyword)
         yield from _axes(use, keyword)

@@ -262,11 +262,7 @@ def _keywords(snapshot: Snapshot, statement: bool, blocks: OpenBlocks | None = N
     if mintmt and statement:
         yield from _mintmt_block_words(blocks)
     for word in database().keywords_of(snapshot.settings.dialect).values():
-        if (
-            word.kind in _HIDDEN
-            or controller not in word.controllers
-            or (mintmt and word.name in mintmt_words.REPLACED)
-        ):
+        if word.kind in _HIDDEN or not word.available_on(controller) or (mintmt and word.name in mintmt_words.REPLACED):
             continue
         row = word.attributes_for(controller)
         if statement:

@@ -38,6 +38,16 @@ async def test_expression_offers_readable_words_only(client, tmp_path):
     assert "GO" not in items and "FOR … NEXT" not in items  # commands and blocks are statements
 
 
+async def test_a_keyword_whose_entry_lists_no_controller_is_offered_as_mint_check_accepts_it(client, tmp_path):
+    # the quick reference ticks no controller for MOVESTATUS (000:17704): hover and mint check take it as
+    # available on every controller, and completion offers it likewise
+    text = "DIM a\na = \n"
+    uri = uri_of(tmp_path / "unlisted.mnt")
+    await open_document(client, uri, text)
+    items = await labels_at(client, uri, text, "a = ", 4)
+    assert {"MOVESTATUS", "AUXENCODERSPEED"} <= set(items)
+
+
 async def test_labels_after_gosub(client, tmp_path):
     text = corpus("ch03_l0815_main_menu_inkey.mnt") + "GOSUB \n"
     uri = uri_of(tmp_path / "menu.mnt")

@@ -1,7 +1,8 @@
 """``mint format``: the house style (``mintlang.formatting``) written into the files, as ``ruff format`` does.
 
 The files are found as ``mint check`` finds them (its exclusions and settings files), configuration files
-included; each is written atomically and only if it still holds what was read (``cli.fixing.apply``).
+included; the settings file's ``[format]`` table gives the options' defaults (``indent-width = 4``). Each
+file is written atomically and only if it still holds what was read (``cli.fixing.apply``).
 ``--check`` and ``--diff`` write nothing and exit 1 when a file would change, for a CI gate or a hook.
 A file read as Mint v4 by default that shows MintMT's forms is left as it is: v4 would take its ``'`` comments
 for code and write their words in upper case.
@@ -27,7 +28,7 @@ from mintlang.cli.options import (
     verbosity_options,
     version_option,
 )
-from mintlang.cli.settings import exclusions, settings_failed
+from mintlang.cli.settings import ProjectCommand, exclusions, settings_failed
 from mintlang.detection import first_mintmt_form
 from mintlang.dialect import Dialect
 from mintlang.fixes import Fixed
@@ -45,7 +46,15 @@ Exit status:
   2  a usage error, or a file that could not be read or written"""
 
 
-@click.command("format", context_settings=HELP_OPTIONS, epilog=EXIT_STATUS)
+@click.command(
+    "format",
+    cls=ProjectCommand,
+    tool="mint format",
+    table="format",  # [tool.mint.format]: indent-width, indent-style, ...
+    start=lambda params: _settings_start(params["paths"], params["stdin_filename"]),
+    context_settings=HELP_OPTIONS,
+    epilog=EXIT_STATUS,
+)
 @click.argument("paths", nargs=-1, type=click.Path(path_type=Path))
 @version_option("mint format")
 @click.option("--check", is_flag=True, help="Write nothing: name the files that would be reformatted (exit 1).")
@@ -126,6 +135,13 @@ def format_command(
     for problem in problems:
         click.echo(f"mint format: {problem}", err=True)
     sys.exit(_NOT_DONE if problems else _CHANGES if (check or diff) and written else 0)
+
+
+def _settings_start(paths: tuple[Path, ...], stdin_filename: str | None) -> Path:
+    """Where the settings file is looked for: above the first path, or standard input's name."""
+    if _STDIN in paths:
+        return Path(stdin_filename or "-")
+    return next(iter(paths), Path())
 
 
 def _format_stdin(name: str | None, layer: Overrides, indentation: str, *, check: bool, diff: bool) -> NoReturn:

@@ -33,7 +33,7 @@ from mintlang.settings.files import Table
 
 T = TypeVar("T")
 DEFAULT = "default"
-TOOL_TABLES = ("run", "migrate")  # each tool's own options, read by the tool
+TOOL_TABLES = ("run", "migrate", "format")  # each tool's own options, read by the tool
 EXCLUDE_KEYS = ("exclude", "extend-exclude")
 
 

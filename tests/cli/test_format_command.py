@@ -133,3 +133,15 @@ def test_a_mintmt_program_read_as_v4_by_default_is_left_as_it_is(tmp_path: Path)
     piped = CliRunner().invoke(main, ["format", "-"], input=MINTMT)
     assert (piped.exit_code, piped.stdout) == (2, "")
     assert mint_format("--dialect", "v4", path).exit_code == 0  # chosen: the user's word
+
+
+def test_the_settings_files_format_table_gives_the_defaults(tmp_path: Path) -> None:
+    write(tmp_path / "mint.toml", '[format]\nindent-style = "tab"\n')
+    path = write(tmp_path / "cell.mnt", "LOOP\nPRINT 1\nENDL\n")
+    assert mint_format(path).exit_code == 0
+    assert path.read_text(encoding="utf-8") == "LOOP\n\tPRINT 1\nENDL\n"
+    mint_format("--indent-style", "space", "--indent-width", "3", path)  # the command line wins
+    assert path.read_text(encoding="utf-8") == "LOOP\n   PRINT 1\nENDL\n"
+    write(tmp_path / "mint.toml", "[format]\nindent = 4\n")
+    result = mint_format(path)
+    assert result.exit_code == 2 and "unknown key" in result.stderr

@@ -27,18 +27,40 @@ language server's formatting both take their edits from here.
 
 from __future__ import annotations
 
-from mintlang.analysis.rules.line_length import longest_line
+from collections.abc import Mapping
+from typing import TYPE_CHECKING
+
 from mintlang.diagnostics import Edit, Span, with_edits
 from mintlang.dialect import Dialect
-from mintlang.semantic.model import SemanticModel, build_model
 from mintlang.semantic.units import Unit
-from mintlang.syntax.parser import Document, parse
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
 
+if TYPE_CHECKING:  # the parser and the model are imported by format_text: mint format --help needs neither
+    from mintlang.semantic.model import SemanticModel
+    from mintlang.syntax.parser import Document
+
+INDENT_WIDTH = 2  # spaces a level unless a project or the command line says otherwise, as the manual indents
+INDENT_STYLES = ("space", "tab")
 _UPPER_CASED = GRAMMAR_KEYWORDS | {TokenKind.KEYWORD, TokenKind.FUNCTION}
 _JUMPS = frozenset({TokenKind.GOSUB, TokenKind.GOTO})  # the word after one is a label, however it is spelt
 _REM = len("REM")  # a comment token starts with its keyword
 _V3_PROTECT = "PROTECT"  # its case is read: upper case protects the program, any other is ignored (001:11089)
+
+
+def indent_unit(style: str, width: int) -> str:
+    """One level's indentation: a tab, or ``width`` spaces."""
+    return "\t" if style == "tab" else " " * width
+
+
+def project_indent_unit(table: Mapping[str, object]) -> str | None:
+    """The indentation a settings file's ``[format]`` table sets, as ``mint format`` reads it (the other key at its
+    default); None where it sets neither, or not as the command line takes them."""
+    width, style = table.get("indent-width", INDENT_WIDTH), table.get("indent-style", "space")
+    if "indent-width" not in table and "indent-style" not in table:
+        return None
+    if not (isinstance(width, int) and not isinstance(width, bool) and 1 <= width <= 16) or style not in INDENT_STYLES:
+        return None
+    return indent_unit(str(style), width)
 
 
 def line_count(document: Document) -> int:
@@ -49,6 +71,8 @@ def line_count(document: Document) -> int:
 def formatting_edits(model: SemanticModel, unit: Unit, indentation: str, lines: range | None = None) -> list[Edit]:
     """One edit per changed line of ``unit``'s text among 0-based ``lines`` (all by default), from its first to
     its last change, so edits never overlap; ``indentation`` is one level's (a tab, or spaces)."""
+    from mintlang.analysis.rules.line_length import longest_line  # noqa: PLC0415 - the rules: see the imports
+
     document = model.document(unit)
     lines = range(line_count(document)) if lines is None else lines
     source, index = document.source, document.line_index
@@ -171,6 +195,9 @@ def _formatted(source: str, start: int, end: int, indentation: str | None, keywo
 
 def format_text(text: str, indentation: str, dialect: Dialect, *, configuration: bool = False) -> str:
     """``text``, a program (or with ``configuration`` a configuration file) of ``dialect``, in the house style."""
+    from mintlang.semantic.model import build_model  # noqa: PLC0415 - see the imports
+    from mintlang.syntax.parser import parse  # noqa: PLC0415
+
     document = parse(text, dialect)
     model = build_model(parse("", dialect), document) if configuration else build_model(document)
     unit = Unit.CONFIGURATION if configuration else Unit.PROGRAM

@@ -1,22 +1,38 @@
-"""Formatting and range formatting: the core's house style (``mintlang.formatting``), one level of indentation
-the editor's tab or spaces."""
+"""Formatting and range formatting: the core's house style (``mintlang.formatting``). One level of indentation
+is the project's where its settings file's ``[format]`` table sets one, so that the editor writes what
+``mint format --check`` accepts in CI; else the editor's tab or spaces."""
 
 from __future__ import annotations
 
-from lsprotocol import types
+from pathlib import Path
 
-from mintlang.formatting import formatting_edits
+from lsprotocol import types
+from pygls.uris import to_fs_path
+
+from mintlang.formatting import formatting_edits, project_indent_unit
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
+from mintlang.settings import SettingsError, project_for
 
 
 def format_lines(snapshot: Snapshot, options: types.FormattingOptions, lines: range) -> list[types.TextEdit]:
     """One edit per changed line among 0-based ``lines``, so edits never overlap."""
     if snapshot.skipped is not None:
         return []
-    indentation = " " * options.tab_size if options.insert_spaces else "\t"
+    indentation = _project_indentation(snapshot.uri) or (" " * options.tab_size if options.insert_spaces else "\t")
     edits = formatting_edits(snapshot.model, snapshot.unit, indentation, lines)
     return [types.TextEdit(range=snapshot.positions.range(edit.span), new_text=edit.text) for edit in edits]
+
+
+def _project_indentation(uri: str) -> str | None:
+    """The indentation the settings file above the document sets, if any (a bad settings file sets none: the
+    diagnostics say what is wrong with it)."""
+    path = to_fs_path(uri) if uri.startswith("file:") else None
+    try:
+        project = project_for(Path(path)) if path is not None else None
+    except SettingsError:
+        return None
+    return project_indent_unit(project.tool("format").values) if project is not None else None
 
 
 def register(server: MintServer) -> None:

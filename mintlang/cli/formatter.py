@@ -32,6 +32,7 @@ from mintlang.cli.settings import ProjectCommand, exclusions, settings_failed
 from mintlang.detection import first_mintmt_form
 from mintlang.dialect import Dialect
 from mintlang.fixes import Fixed
+from mintlang.formatting import INDENT_STYLES, INDENT_WIDTH, format_text, indent_unit
 from mintlang.settings import Given, Overrides, SettingsError, settings_for
 from mintlang.source import SourceFile, read_source, read_stdin
 
@@ -60,8 +61,10 @@ Exit status:
 @click.option("--check", is_flag=True, help="Write nothing: name the files that would be reformatted (exit 1).")
 @click.option("--diff", is_flag=True, help="Show the changes as a unified diff instead of writing them (exit 1).")
 @click.option("--dialect", type=click.Choice([d.value for d in Dialect]), help="[default: the settings', or v4]")
-@click.option("--indent-width", type=click.IntRange(1, 16), default=2, show_default=True, help="Spaces a level.")
-@click.option("--indent-style", type=click.Choice(["space", "tab"]), default="space", show_default=True)
+@click.option(
+    "--indent-width", type=click.IntRange(1, 16), default=INDENT_WIDTH, show_default=True, help="Spaces a level."
+)
+@click.option("--indent-style", type=click.Choice(INDENT_STYLES), default="space", show_default=True)
 @click.option("--stdin-filename", help="The name under which the text read from standard input (the path -) is read.")
 @exclude_options()
 @verbosity_options(quiet="Say nothing but errors.", verbose="Name every file reformatted.")
@@ -86,17 +89,15 @@ def format_command(
     editor's formatter hook pipes a buffer. Only whitespace and letter case change (MintMT keeps its words'
     case).
     """
-    from mintlang.formatting import format_text  # noqa: PLC0415 - the parser: not for mint --help or --version
-
     refuse_quiet_and_verbose(quiet, verbose)
     layer = exclusions(exclude, extend_exclude, force_exclude)
     if dialect is not None:
         layer = replace(layer, dialect=Given(Dialect(dialect), "--dialect"))
-    indentation = "\t" if indent_style == "tab" else " " * indent_width
+    level = indent_unit(indent_style, indent_width)
     if _STDIN in paths:
         if len(paths) > 1:
             raise click.UsageError("- formats standard input alone: give no other path")
-        _format_stdin(stdin_filename, layer, indentation, check=check, diff=diff)
+        _format_stdin(stdin_filename, layer, level, check=check, diff=diff)
     if stdin_filename is not None:
         raise click.UsageError("--stdin-filename names the text read from standard input: give - as the path")
     found = find(paths or (Path(),), PROGRAM_SUFFIXES | CONFIGURATION_SUFFIXES, overrides=layer)
@@ -116,7 +117,7 @@ def format_command(
             problems.append(problem)
             continue
         read_as = given.value
-        text = format_text(source.text, indentation, read_as, configuration=is_configuration(path))
+        text = format_text(source.text, level, read_as, configuration=is_configuration(path))
         if text == source.text:
             unchanged += 1
         else:
@@ -144,10 +145,8 @@ def _settings_start(paths: tuple[Path, ...], stdin_filename: str | None) -> Path
     return next(iter(paths), Path())
 
 
-def _format_stdin(name: str | None, layer: Overrides, indentation: str, *, check: bool, diff: bool) -> NoReturn:
+def _format_stdin(name: str | None, layer: Overrides, level: str, *, check: bool, diff: bool) -> NoReturn:
     """Standard input formatted to standard output; with ``check`` or ``diff`` only what would change."""
-    from mintlang.formatting import format_text  # noqa: PLC0415 - see format_command
-
     source = read_stdin(name)
     try:
         given = settings_for(source.path, layer).dialect
@@ -156,7 +155,7 @@ def _format_stdin(name: str | None, layer: Overrides, indentation: str, *, check
     if (problem := _not_formatted(source, given)) is not None:
         click.echo(f"mint format: {problem}", err=True)
         sys.exit(_NOT_DONE)
-    text = format_text(source.text, indentation, given.value, configuration=is_configuration(source.path))
+    text = format_text(source.text, level, given.value, configuration=is_configuration(source.path))
     changed = text != source.text
     if diff:
         write_diff(sys.stdout, unified(source.text, text, str(source.path), str(source.path)), source.encoding)

@@ -14,6 +14,7 @@ import pytest
 from click.testing import CliRunner, Result
 
 from mintlang.cli import main
+from mintlang.formatting import project_indent_unit
 from tests.cli.invoking import write
 
 MESSY = "dim a\nif a > 1 do\nprint a   \n  else\n      a = 2\nendif\nEND\n  #sub\n    return\n"
@@ -145,3 +146,11 @@ def test_the_settings_files_format_table_gives_the_defaults(tmp_path: Path) -> N
     write(tmp_path / "mint.toml", "[format]\nindent = 4\n")
     result = mint_format(path)
     assert result.exit_code == 2 and "unknown key" in result.stderr
+
+
+def test_a_format_table_gives_the_indentation_the_editor_uses_too() -> None:
+    assert project_indent_unit({}) is None  # the editor's own tab or spaces
+    assert project_indent_unit({"indent-width": 4}) == "    "
+    assert project_indent_unit({"indent-style": "tab"}) == "\t"
+    assert project_indent_unit({"indent-style": "space"}) == "  "  # mint format's default width
+    assert project_indent_unit({"indent-width": "wide"}) is None  # mint format refuses it: the editor's

@@ -71,6 +71,18 @@ async def test_formatted_text_is_stable(client, tmp_path):
     assert not edits
 
 
+async def test_the_projects_format_table_wins_over_the_editors_indentation(client, tmp_path):
+    # the editor writes what mint format --check accepts in CI: [format] indent-style = "tab" in mint.toml
+    (tmp_path / "mint.toml").write_text('[format]\nindent-style = "tab"\n', encoding="utf-8")
+    uri = uri_of(tmp_path / "project.mnt")
+    text = "LOOP\nPRINT 1\nENDL\n"
+    await open_document(client, uri, text)
+    edits = await client.text_document_formatting_async(
+        types.DocumentFormattingParams(text_document=document(uri), options=SPACES)
+    )
+    assert apply(text, edits) == "LOOP\n\tPRINT 1\nENDL\n"
+
+
 async def test_range_formats_only_those_lines(client, tmp_path):
     uri = uri_of(tmp_path / "part.mnt")
     await open_document(client, uri, SOURCE)

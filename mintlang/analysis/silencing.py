@@ -4,17 +4,18 @@ A program that has run on its machines for years is adopted by the checker as it
 get one ``REM mint: ignore[...]`` comment (``suppression_fix``, the editor's "Ignore" quick fix, with every code
 of the line), so that only new findings are reported from then on. The comment never makes a line longer than
 the controller reads (``longest_line``), nor goes where it would not be a comment (v3's ``PROTECT abc``): such a
-line keeps its findings. Unused suppressions (W117) are not
-silenced but removed by their own fix.
+line keeps its findings. Unused suppressions (W117) are not silenced but removed by their own fix.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 
+from mintlang.analysis.rules.line_length import longest_line
 from mintlang.analysis.suppression import UNUSED_SUPPRESSION, suppression_fix
 from mintlang.diagnostics import Diagnostic, Edit, with_edits
 from mintlang.records import record
+from mintlang.semantic.model import SemanticModel
 from mintlang.syntax.parser import Document
 
 
@@ -27,8 +28,11 @@ class Silenced:
     left: tuple[Diagnostic, ...]
 
 
-def silence(document: Document, diagnostics: Sequence[Diagnostic], longest_line: int) -> Silenced:
-    """``document``'s text with each line holding ``diagnostics`` given a comment naming their codes, in order."""
+def silence(model: SemanticModel, diagnostics: Sequence[Diagnostic]) -> Silenced:
+    """The program's text with each line holding ``diagnostics`` (the program's) given a comment naming their
+    codes, in order."""
+    document = model.program
+    limit = longest_line(model.controller, document.dialect)
     by_line: dict[int, list[Diagnostic]] = {}
     left: list[Diagnostic] = []
     for diagnostic in diagnostics:
@@ -42,7 +46,7 @@ def silence(document: Document, diagnostics: Sequence[Diagnostic], longest_line:
     for index, found in by_line.items():
         codes = ", ".join(sorted({diagnostic.code for diagnostic in found}))
         fix = suppression_fix(document, found[0].span.start, codes)
-        if fix is None or _longer(document, index, fix.edits) > longest_line:
+        if fix is None or _longer(document, index, fix.edits) > limit:
             left.extend(found)
         else:
             edits.extend(fix.edits)

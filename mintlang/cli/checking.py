@@ -140,18 +140,13 @@ def _fix_program(job: Job, source: SourceFile, arguments: dict[str, object]) -> 
 
 def _silence_program(job: Job, source: SourceFile, arguments: dict[str, object]) -> Checked:
     """Silence each finding of the program with a comment on its line; its report is what the new text has."""
-    from mintlang.analysis.rules.line_length import longest_line  # noqa: PLC0415 - --add-ignore alone needs them
-    from mintlang.analysis.silencing import silence  # noqa: PLC0415
-    from mintlang.controllers import profile  # noqa: PLC0415
-
-    options = job.options
+    from mintlang.analysis.silencing import silence  # noqa: PLC0415 - --add-ignore alone needs it
 
     def analysed(text: str) -> Analysis:
-        return check_application(text, config=job.configuration, select=options.select, **arguments)
+        return check_application(text, config=job.configuration, select=job.options.select, **arguments)
 
     before = analysed(source.text)
-    limit = longest_line(profile(options.controller), Dialect(options.dialect))
-    silenced = silence(before.model.program, before.program, limit)
+    silenced = silence(before.model, before.program)
     after = analysed(silenced.text)
     fixed = Fixed(silenced.text, silenced.silenced, tuple(after.program), converged=True)
     report = FileReport(str(source.path), silenced.text, fixed.remaining)

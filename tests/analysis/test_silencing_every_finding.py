@@ -22,9 +22,9 @@ _DIRECTIVE = r"mint: ignore\[[^\]]*\]"
 _ADDED = re.compile(rf"( :)? REM {_DIRECTIVE}$|(?<=REM ){_DIRECTIVE} |(?<=' ){_DIRECTIVE} ")  # what silencing adds
 
 
-def _silenced(source: str, *, dialect: str = "v4", controller: str = "nextmove-pci", limit: int = 255) -> str:
+def _silenced(source: str, *, dialect: str = "v4", controller: str = "nextmove-pci") -> str:
     analysis = mintlang.check_application(source, dialect=dialect, controller=controller)
-    return silence(analysis.model.program, analysis.program, limit).text
+    return silence(analysis.model, analysis.program).text
 
 
 @pytest.mark.parametrize(
@@ -64,7 +64,7 @@ def test_no_comment_goes_on_a_v3_protect_line_whose_password_it_would_join() -> 
     # "Additional keywords such as REM cannot be placed on this line" (001:11089-11092): neither tool writes one
     source = "REM program 1\nPROTECT abc\n"
     analysis = mintlang.check_application(source, dialect="v3")
-    result = silence(analysis.model.program, analysis.program, 127)
+    result = silence(analysis.model, analysis.program)
     assert (result.text, [d.code for d in result.left]) == (source, ["W114"])
     assert suppression_fix(analysis.model.program, source.index("PROTECT"), "W114") is None
 
@@ -72,7 +72,7 @@ def test_no_comment_goes_on_a_v3_protect_line_whose_password_it_would_join() -> 
 def test_a_line_the_comment_would_make_too_long_keeps_its_findings() -> None:
     line = f"PRINT “{'a' * 240}”"  # 248 characters: the comment would take it past 255
     analysis = mintlang.check_application(line + "\n")
-    result = silence(analysis.model.program, analysis.program, 255)
+    result = silence(analysis.model, analysis.program)
     assert result.text == line + "\n"
     assert [d.code for d in result.left] == ["W101"] and result.silenced == ()
 
@@ -100,11 +100,10 @@ def test_a_silenced_corpus_program_checks_clean_and_only_gains_comments(case: Co
     analysis = mintlang.check_application(
         case.source, dialect=case.dialect, controller=case.controller, config=case.configuration
     )
-    limit = 127 if case.dialect == "v3" else 255
-    result = silence(analysis.model.program, analysis.program, limit)
+    result = silence(analysis.model, analysis.program)
     assert [(d.code, d.message) for d in _findings(case, result.text)] == [(d.code, d.message) for d in result.left]
     assert [_ADDED.sub("", line) for line in result.text.split("\n")] == case.source.split("\n")
     again = mintlang.check_application(
         result.text, dialect=case.dialect, controller=case.controller, config=case.configuration
     )
-    assert silence(again.model.program, again.program, limit).text == result.text  # nothing more to silence
+    assert silence(again.model, again.program).text == result.text  # nothing more to silence

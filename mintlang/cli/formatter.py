@@ -107,18 +107,13 @@ def format_command(
     for path in found.files:
         try:
             source = read_source(path)
-            given = settings_for(path, layer).dialect
         except OSError as error:
             problems.append(cannot_read(error))
             continue
-        except SettingsError as error:
-            settings_failed("mint format", error)
-        if (problem := _not_formatted(source, given)) is not None:
+        text, problem = _formatted(source, layer, level)
+        if problem is not None:
             problems.append(problem)
-            continue
-        read_as = given.value
-        text = format_text(source.text, level, read_as, configuration=is_configuration(path))
-        if text == source.text:
+        elif text == source.text:
             unchanged += 1
         else:
             changes.append(FileFixed(source, Fixed(text, (), (), converged=True)))
@@ -148,14 +143,10 @@ def _settings_start(paths: tuple[Path, ...], stdin_filename: str | None) -> Path
 def _format_stdin(name: str | None, layer: Overrides, level: str, *, check: bool, diff: bool) -> NoReturn:
     """Standard input formatted to standard output; with ``check`` or ``diff`` only what would change."""
     source = read_stdin(name)
-    try:
-        given = settings_for(source.path, layer).dialect
-    except SettingsError as error:
-        settings_failed("mint format", error)
-    if (problem := _not_formatted(source, given)) is not None:
+    text, problem = _formatted(source, layer, level)
+    if problem is not None:
         click.echo(f"mint format: {problem}", err=True)
         sys.exit(_NOT_DONE)
-    text = format_text(source.text, level, given.value, configuration=is_configuration(source.path))
     changed = text != source.text
     if diff:
         write_diff(sys.stdout, unified(source.text, text, str(source.path), str(source.path)), source.encoding)
@@ -165,6 +156,18 @@ def _format_stdin(name: str | None, layer: Overrides, level: str, *, check: bool
         sys.stdout.buffer.write(source.encode(text))
         sys.stdout.buffer.flush()
     sys.exit(_CHANGES if changed and (check or diff) else 0)
+
+
+def _formatted(source: SourceFile, layer: Overrides, level: str) -> tuple[str, str | None]:
+    """``source``'s text in the house style, read as its settings say, and None; or its own text and why it is left
+    as it is. A settings file that cannot be used ends the command."""
+    try:
+        given = settings_for(source.path, layer).dialect
+    except SettingsError as error:
+        settings_failed("mint format", error)
+    if (problem := _not_formatted(source, given)) is not None:
+        return source.text, problem
+    return format_text(source.text, level, given.value, configuration=is_configuration(source.path)), None
 
 
 def _not_formatted(source: SourceFile, dialect: Given[Dialect]) -> str | None:

@@ -214,6 +214,12 @@ class V3Keyword:
     migration: MigrationClass
     line: int  # line of the entry in the v3 guide
 
+    @property
+    def ticked(self) -> bool:
+        """Whether the attributes table ticks any of read, write and command: an entry that ticks none says
+        nothing of how the keyword may be used."""
+        return self.read or self.write or self.command
+
 
 @record
 class Rename:

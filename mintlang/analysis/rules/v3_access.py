@@ -58,7 +58,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             yield from one_value(use, keyword.name)
         if keyword is not None and use.use is Use.WRITE:
             yield from _out_of_range(use, keyword.name)
-        if keyword is None or not (keyword.read or keyword.write or keyword.command):
+        if keyword is None or not keyword.ticked:
             continue  # no attribute ticks to go by
         name, span = keyword.name, use.keyword.spelling_span
         if use.use is Use.WRITE and not keyword.write:

@@ -15,6 +15,7 @@ from collections.abc import Mapping
 from types import MappingProxyType
 
 from mintlang.keyworddb import database, v3_ranges
+from mintlang.keyworddb.model import V3Keyword
 from mintlang.runtime.dialects.v3.numbers import fixed
 from mintlang.runtime.inert import InertSettings
 from mintlang.runtime.keywords import (
@@ -69,20 +70,25 @@ class V3KeywordTable(KeywordTable):
 
     def decides(self, name: str) -> bool:
         """v3's attribute ticks, where its entry has any, as ``mint check`` reads them (``v3_access``)."""
-        v3 = database().lookup_v3(name)
-        return v3 is not None and (v3.read or v3.write or v3.command)
+        return _ticked(name) is not None
 
     def refused_by_the_guide(self, name: str, *, write: bool) -> int | None:
         """A use v3's entry ticks is no programming error, whatever v4's says: reading ``INCA`` or ``INCR`` tells
         whether the new end point was set up (001:9049, 9104), where v4's are write only, and writing ``VEL`` sets
         the idle velocity (001:12480), where v4's is read only. One it does not tick is "Read only or Command"
         (2000: a write, or the read of a command, 001:13083-13094) or "Write only" (2002, 001:13073-13080)."""
-        v3 = database().lookup_v3(name)
-        if v3 is None or not self.decides(name):
+        v3 = _ticked(name)
+        if v3 is None:
             return super().refused_by_the_guide(name, write=write)
         if v3.write if write else v3.read:
             return None
         return READ_ONLY_OR_COMMAND if write or (v3.command and not v3.write) else WRITE_ONLY
+
+
+def _ticked(name: str) -> V3Keyword | None:
+    """The v3 guide's entry for ``name``, where it ticks how the keyword may be used."""
+    v3 = database().lookup_v3(name)
+    return v3 if v3 is not None and v3.ticked else None
 
 
 def _fixed(read: Reader) -> Reader:

@@ -36,6 +36,7 @@ NOISE = 1e-6  # counts: closed-form set-points are exact only to ~1e-9 counts; l
 MOTION_IN_PROGRESS = 10
 MOTION_ERROR = 12
 DRIVE_NOT_ENABLED = 40
+DRIVE_ENABLED = 90  # _erDRIVE_ENABLED: what the drive must be disabled for, such as CONFIG (000:8481, 18821-18823)
 DISABLED_AT_POWER_UP = "a drive starts disabled: enable it with DRIVEENABLE or RESET, or run with --drives enabled"
 SERVO_TICK_S = 0.001
 VEL_SAMPLE_S = (

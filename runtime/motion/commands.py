@@ -17,6 +17,7 @@ from mintlang.runtime.clock import Clock
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer, per_channel
 from mintlang.runtime.motion.axis import (
+    DRIVE_ENABLED,
     ER_ABORT,
     MD_JOG,
     MD_LINEAR,
@@ -516,6 +517,8 @@ class Motion:
                 raise NotSimulated("SOFTLIMITMODE", "smart mode 4 off a NextMove, which the guide does not describe")
             if name == "CONFIG":  # it calls DEFAULT for its axis; a value it refuses resets nothing (000:8481-8483)
                 check_range(name, value, axis.bounds[name], axis.number)
+                if axis.enabled:
+                    raise MintError(DRIVE_ENABLED, axis.number, "disable the drive (DRIVEENABLE = 0) before CONFIG")
                 self.default((axis.number,), ())
             axis.set(name, value)
             if name in _PROFILE_RATES:

@@ -128,7 +128,7 @@ PRINT POS.0, " ", POS.1
 
 
 def test_dac_is_written_directly_only_on_an_axis_configured_off() -> None:
-    assert simulate("CONFIG.2 = _cfOFF\nDAC.2 = 25\nWAIT = 5\nPRINT DAC.2\n").terminal == "25\n"
+    assert simulate("DRIVEENABLE.2 = 0 : CONFIG.2 = _cfOFF\nDAC.2 = 25\nWAIT = 5\nPRINT DAC.2\n").terminal == "25\n"
     assert simulate("DAC.2 = 25\n").err == 11
 
 

@@ -29,6 +29,7 @@ from tests.runtime.running import simulate
 
 TICK = 0.001  # the NM-REF servo tick, spec T-1
 FOLERRORFATAL = 1000  # its default, spec AX-9
+_OPEN_LOOP = "DRIVEENABLE.0 = 0 : CONFIG.0 = _cfOFF : DRIVEENABLE.0 = 1\n"  # CONFIG needs the drive off (000:8481)
 
 
 @pytest.mark.parametrize(
@@ -113,21 +114,22 @@ class TestStalledAxisServoes:
         assert simulate(source).terminal == "0 0\n"
 
     def test_a_dac_written_on_an_axis_configured_off_holds(self) -> None:
-        source = self.STALLED + "KPROP.0 = 1\nCONFIG.0 = _cfOFF\nDAC.0 = 25\nMOVER.0 = 500 : GO.0\nWAIT = 50\n"
+        source = self.STALLED + "KPROP.0 = 1\n" + _OPEN_LOOP + "DAC.0 = 25\nMOVER.0 = 500 : GO.0\nWAIT = 50\n"
         assert simulate(source).axes[0].dac == 25.0
 
 
 class TestDacWrittenOnAnAxisConfiguredOff:
     """000:8756-8762: DAC.0 = -50 on an axis configured off is -5 V out, and DAC reads back what the
-    output is on any axis (SL-11), on the default ideal plant and drive, with or without ticks between."""
+    output is on any axis (SL-11), on the default ideal plant and drive, with or without ticks between. As in the
+    guide's example, the drive is as at power-up: disabled, as CONFIG needs it (000:8481)."""
 
     def test_reads_back_at_once(self) -> None:
-        result = simulate("CONFIG.0 = _cfOFF : DAC.0 = -50 : PRINT DAC.0\n")
+        result = simulate("CONFIG.0 = _cfOFF : DAC.0 = -50 : PRINT DAC.0\n", enable=False)
         assert result.terminal == "-50\n"
         assert result.axes[0].dac == -50.0
 
     def test_holds_while_the_program_waits(self) -> None:
-        assert simulate("CONFIG.0 = _cfOFF : DAC.0 = -50\nWAIT = 5\nPRINT DAC.0\n").terminal == "-50\n"
+        assert simulate("CONFIG.0 = _cfOFF : DAC.0 = -50\nWAIT = 5\nPRINT DAC.0\n", enable=False).terminal == "-50\n"
 
 
 def test_velocity_plant_turns_at_k_counts_per_second_per_percent() -> None:
@@ -141,7 +143,7 @@ def test_velocity_plant_turns_at_k_counts_per_second_per_percent() -> None:
 
 def test_a_dac_written_on_an_axis_configured_off_drives_a_velocity_amplifier() -> None:
     # SL-11: the program's DAC, not the servo law, drives the amplifier: 10 % at 1000 counts/s per %.
-    source = "REM @sim plant 0 velamp 1000\nKPROP.0 = 1\nCONFIG.0 = _cfOFF\nDAC.0 = 10\nWAIT = 100\n"
+    source = "REM @sim plant 0 velamp 1000\nKPROP.0 = 1\n" + _OPEN_LOOP + "DAC.0 = 10\nWAIT = 100\n"
     axis = simulate(source).axes[0]
     assert (axis.dac, axis.vel) == (10.0, 10_000.0)
     assert axis.pos > 900

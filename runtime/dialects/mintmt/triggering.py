@@ -16,7 +16,8 @@ from mintlang.runtime.ranges import check_range, table_bounds
 
 AUTOMATIC = 0.0
 WAIT_FOR_GO = 1.0  # the power-up value: any value but 0 (MT-10)
-LOADING = ("MOVEA", "MOVER", "VECTORA", "VECTORR", "CIRCLEA", "CIRCLER", "INCA", "INCR", "OFFSET")
+# the moves GO starts (000:11052-11070) that the simulator loads: HTA and SPLINE stop the run as not simulated
+LOADING = ("CAM", "CIRCLEA", "CIRCLER", "FLY", "INCA", "INCR", "MOVEA", "MOVER", "OFFSET", "VECTORA", "VECTORR")
 
 
 def install(table: KeywordTable, motion: Motion) -> Callable[[Channels | None], None]:

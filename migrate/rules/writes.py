@@ -12,6 +12,7 @@ from mintlang.migrate.rules.axes import axis_values, default_axes, selector_axes
 from mintlang.migrate.rules.base import Action, Rule, selector_text, values_text
 from mintlang.migrate.rules.spelling import like
 from mintlang.migrate.rules.statements import Refusal, StatementRule
+from mintlang.semantic.v3_declarations import COMMS
 from mintlang.syntax import nodes as n
 
 
@@ -31,10 +32,14 @@ class AccelAlsoDecel(Rule):
     only where it may reach an axis whose bit 0 may be set (a value with it set, or one computed,
     on axes named or unknown); ``ACCEL.0`` beside ``AXISCON.1 = 1`` is rewritten as without it.
 
-    The copy must compute what the ACCEL write computed. Values that read ACCEL (or
-    ACCELTIME), as ``ACCEL = ACCEL * 2`` does, would read the new value after the write, so
-    their DECEL goes before it, ``DECEL = ACCEL * 2 : ACCEL = ACCEL * 2``; values that read
-    both ACCEL and DECEL fit neither order and are flagged."""
+    The copy must compute what the ACCEL write computed. A value that reads what the controller
+    or the host changes between two statements (a key, an input, a position, TIME, COMMS: any
+    keyword but the pair, v3:9136-9160) would give DECEL another value, so DECEL reads back what
+    the write set, axis by axis: ``ACCEL[0,1] = POS.0, 5 : DECEL[0,1] = ACCEL.0,ACCEL.1``
+    (v4:6150-6153). Values that read ACCEL (or ACCELTIME), as ``ACCEL = ACCEL * 2`` does, would
+    read the new value after the write, so their DECEL goes before it,
+    ``DECEL = ACCEL * 2 : ACCEL = ACCEL * 2``; values that read both ACCEL and DECEL fit neither
+    order and are flagged."""
 
     id = "S-ACCEL"
     rule_class = RuleClass.SEMI
@@ -52,6 +57,20 @@ class AccelAlsoDecel(Rule):
             decel = self.pairs[accel.keyword.keyword]
             if _may_reach(context, file, accel, decel_on):
                 yield self.flag(file, accel.span, f"AXISCON is used: decide whether {decel} must follow this write")
+                continue
+            if _changes_between_reads(accel, self.pairs):
+                if self._companion(file, accel, after):
+                    continue
+                read_back = _read_back(context, file, accel, decel)
+                if read_back is None:
+                    yield self.flag(
+                        file,
+                        accel.span,
+                        "the value may change between two reads and the axes are computed: "
+                        f"write {decel} from a variable holding the value",
+                    )
+                else:
+                    yield self.replace(file, Span(accel.span.end, accel.span.end), f" : {read_back}")
                 continue
             if _reads(accel, self.pairs) and _reads(accel, self.pairs.values()):
                 yield self.flag(
@@ -126,6 +145,38 @@ def _reads(accel: n.KeywordStatement, keywords: Iterable[str]) -> bool:
         for value in accel.values or ()
         for node in n.walk_expression(value)
     )
+
+
+def _changes_between_reads(accel: n.KeywordStatement, pairs: dict[str, str]) -> bool:
+    """Whether the values of ``accel`` read a keyword other than the ACCEL/DECEL pairs, or the
+    COMMS array, either of which may give another value when read again a statement later."""
+    own = frozenset(pairs) | frozenset(pairs.values())
+    return any(
+        (isinstance(node, n.KeywordRef) and node.keyword not in own)
+        or (isinstance(node, n.ElementRef) and node.name.text.upper() == COMMS)
+        for value in accel.values or ()
+        for node in n.walk_expression(value)
+    )
+
+
+def _read_back(context: Context, file: FileView, accel: n.KeywordStatement, decel: str) -> str | None:
+    """``decel`` written with the axes of ``accel`` and, for each value it set, a read of that
+    axis' new ACCEL; None when several axes, or the places of the values, are not known."""
+    source = like(accel.keyword.spelling, accel.keyword.keyword)
+    selector = selector_text(file, accel.keyword)
+    target = like(accel.keyword.spelling, decel)
+    pairs = axis_values(context, file, accel)
+    if pairs:
+        places = selector_axes(accel.keyword) or default_axes(context, file, accel.span.start) or ()
+        read = dict(pairs)
+        reads = [f"{source}.{axis}" if axis in read else "" for axis in places]
+        while not reads[-1]:
+            reads.pop()
+        return f"{target}{selector} = {','.join(reads)}"
+    items = accel.keyword.selector.items if accel.keyword.selector is not None else ()
+    if len(items) == 1 and len(accel.values or ()) == 1:  # one computed axis: ACCEL[ax] = v
+        return f"{target}{selector} = {source}{selector}"
+    return None
 
 
 def _decel_write(file: FileView, accel: n.KeywordStatement, decel: str) -> str:

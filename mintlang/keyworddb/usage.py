@@ -52,8 +52,16 @@ def refusal(
     if use is Use.COMMAND and not attributes.command:
         return _not_a_command(name, has_arguments=has_arguments)
     if use is Use.COMMAND and has_arguments and not keyword.takes_operands:
-        return Refusal(2003, f"{name} takes no operands, only its axes ('{keyword.formats[0]}')")
+        return _no_operands(keyword)
     return None
+
+
+def _no_operands(keyword: Keyword) -> Refusal:
+    """Error 2003 of operands after a command whose format writes none: only its axes (``STOP[axes]``), a
+    terminal (``CLS {#<terminal>}``) or nothing (``BEEP``, ``ABORT``) may follow its name."""
+    layout = keyword.formats[0]
+    axes = ", only its axes" if "[" in layout else ""
+    return Refusal(2003, f"{keyword.name} takes no operands{axes} ('{layout}')")
 
 
 def _not_a_command(name: str, *, has_arguments: bool) -> Refusal:
@@ -70,12 +78,15 @@ def _refusal_from_formats(keyword: Keyword, use: Use, *, has_arguments: bool) ->
     """Error 2000 for a write to a keyword the manual gives no attribute table, judged by its
     formats: read only when every format reads it (``v = ERR``), a command when none assigns it
     (``BEEP``, ``VER``, ``LINE``: 2000 is for a command given a value too, 000:18905-18908); and
-    2003 for reading such a command, as for ``PRINT GO``: no format gives it a value. A parameter
-    every format reads or assigns is no command, as one whose table says so (``ERR`` alone: 2005)."""
+    2003 for reading such a command, as for ``PRINT GO``: no format gives it a value, and for operands
+    after one whose formats write none (``BEEP 3``). A parameter every format reads or assigns is no
+    command, as one whose table says so (``ERR`` alone: 2005)."""
     if not keyword.formats:
         return None
     if use is Use.COMMAND and keyword.kind is KeywordKind.PARAMETER and all("=" in text for text in keyword.formats):
         return _not_a_command(keyword.name, has_arguments=has_arguments)
+    if use is Use.COMMAND and has_arguments and not keyword.takes_operands:
+        return _no_operands(keyword)
     assigned = any("=" in text for text in keyword.formats)
     if use is Use.READ and keyword.kind is KeywordKind.COMMAND and not assigned:
         return Refusal(2003, f"{keyword.name} is a command and gives no value")

@@ -16,22 +16,24 @@ from mintlang.analysis.suppression import UNUSED_SUPPRESSION, suppression_fix
 from mintlang.diagnostics import Diagnostic, Edit, with_edits
 from mintlang.records import record
 from mintlang.semantic.model import SemanticModel
+from mintlang.semantic.units import Unit
 from mintlang.syntax.parser import Document
 
 
 @record
 class Silenced:
-    """A text with the comments added; the findings they silence, and those left where none could go."""
+    """A text with the comments added; the findings they silence, and those left where none could go, placed in the
+    new text."""
 
     text: str
     silenced: tuple[Diagnostic, ...]
     left: tuple[Diagnostic, ...]
 
 
-def silence(model: SemanticModel, diagnostics: Sequence[Diagnostic]) -> Silenced:
-    """The program's text with each line holding ``diagnostics`` (the program's) given a comment naming their
-    codes, in order."""
-    document = model.program
+def silence(model: SemanticModel, diagnostics: Sequence[Diagnostic], unit: Unit = Unit.PROGRAM) -> Silenced:
+    """The text of ``unit`` (the program, or the configuration file) with each line holding ``diagnostics`` (that
+    file's) given a comment naming their codes, in order."""
+    document = model.document(unit)
     limit = longest_line(model.controller, document.dialect)
     by_line: dict[int, list[Diagnostic]] = {}
     left: list[Diagnostic] = []
@@ -51,7 +53,21 @@ def silence(model: SemanticModel, diagnostics: Sequence[Diagnostic]) -> Silenced
         else:
             edits.extend(fix.edits)
             silenced.extend(found)
-    return Silenced(with_edits(document.source, edits), tuple(silenced), tuple(left))
+    return Silenced(with_edits(document.source, edits), tuple(silenced), tuple(_placed(left, edits)))
+
+
+def _placed(diagnostics: Sequence[Diagnostic], edits: Sequence[Edit]) -> list[Diagnostic]:
+    """``diagnostics`` moved on by what the comments added before them grew the text."""
+    return [
+        diagnostic.shifted(
+            sum(
+                len(edit.text) - (edit.span.end - edit.span.start)
+                for edit in edits
+                if edit.span.end <= diagnostic.span.start
+            )
+        )
+        for diagnostic in diagnostics
+    ]
 
 
 def _longer(document: Document, index: int, edits: Sequence[Edit]) -> int:

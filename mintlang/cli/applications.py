@@ -19,10 +19,11 @@ from pathlib import Path
 
 from mintlang import check_application
 from mintlang.analysis.suppression import UNUSED_SUPPRESSION
-from mintlang.cli.checking import Checked, CheckOptions, Job
+from mintlang.cli.checking import Checked, CheckOptions, FileFixed, Job
 from mintlang.cli.files import Unchecked, is_configuration, not_text, unread
 from mintlang.cli.report import FileReport
 from mintlang.diagnostics import Diagnostic
+from mintlang.fixes import Fixed
 from mintlang.records import record
 from mintlang.semantic.units import Unit
 from mintlang.settings import FileSettings, Overrides, settings_for
@@ -125,12 +126,19 @@ class Plan:
         self._failed.add(key)
         self.problems.append(problem)
 
-    def reports(self, results: Sequence[Checked]) -> list[FileReport]:
-        """The reports in the order the files were planned, each configuration's before its first program's."""
+    def reports(self, results: Sequence[Checked], silenced: Sequence[FileFixed] = ()) -> list[FileReport]:
+        """The reports in the order the files were planned, each configuration's before its first program's (or,
+        for one ``silenced`` wrote, what its new text has left)."""
         placed: dict[int, list[FileReport]] = {}
-        for configuration in self._configurations.values():
-            seen = [results[i].configuration for i in configuration.jobs if results[i].report is not None]
-            placed.setdefault(configuration.place, []).append(_configuration_report(configuration, seen))
+        written = {_key(file.original.path): file for file in silenced}
+        for key, configuration in self._configurations.items():
+            file = written.get(key)
+            report = (
+                FileReport(str(configuration.source.path), file.fixed.text, file.fixed.remaining)
+                if file is not None
+                else self._configuration_report(configuration, results)
+            )
+            placed.setdefault(configuration.place, []).append(report)
         reports: list[FileReport] = []
         for index, result in enumerate(results):
             reports.extend(placed.pop(index, []))
@@ -138,6 +146,27 @@ class Plan:
                 reports.append(result.report)
         reports.extend(report for rest in placed.values() for report in rest)
         return reports
+
+    def silenced_configurations(self, results: Sequence[Checked]) -> list[FileFixed]:
+        """``--add-ignore`` for the configuration files: each one's findings, as its programs saw them, silenced by
+        comments on their lines (not a MintMT file read as v4, whose comments are not REM)."""
+        from mintlang.analysis.silencing import silence  # noqa: PLC0415 - --add-ignore alone needs it
+
+        silenced = []
+        for configuration in self._configurations.values():
+            report = self._configuration_report(configuration, results)
+            source, options = configuration.source, configuration.options
+            if not report.diagnostics or options.hint(source) is not None:
+                continue
+            analysis = check_application("", config=source.text, dialect=options.dialect, controller=options.controller)
+            done = silence(analysis.model, report.diagnostics, Unit.CONFIGURATION)
+            silenced.append(FileFixed(source, Fixed(done.text, done.silenced, done.left, converged=True)))
+        return silenced
+
+    @staticmethod
+    def _configuration_report(configuration: _Configuration, results: Sequence[Checked]) -> FileReport:
+        seen = [results[i].configuration for i in configuration.jobs if results[i].report is not None]
+        return _configuration_report(configuration, seen)
 
     def program_reports(self, results: Sequence[Checked]) -> list[FileReport]:
         """The reports of the programs alone: what ``--fix`` fixes, as it leaves configuration files as they are."""

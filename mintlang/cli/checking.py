@@ -37,6 +37,10 @@ class CheckOptions:
     ignore: tuple[str, ...]
     dialect_chosen: bool  # False: v4 by default, so a program that looks like MintMT gets a hint
 
+    def hint(self, source: SourceFile) -> str | None:
+        """What to say of a file that looks like MintMT but is read as v4 by default; None if nothing."""
+        return None if self.dialect_chosen else dialect_hint(str(source.path), source.text, Dialect(self.dialect))
+
 
 class Fixing(StrEnum):
     """Which fixes a run applies; ``SILENCE``: none, each finding silenced by a comment instead (--add-ignore)."""
@@ -117,7 +121,7 @@ def check_file(job: Job) -> Checked:
     if is_configuration(job.path):
         analysis = check_application("", config=source.text, select=options.select, **arguments)
         return Checked(FileReport(str(source.path), source.text, analysis.configuration))
-    hint = None if options.dialect_chosen else dialect_hint(str(source.path), source.text, Dialect(options.dialect))
+    hint = options.hint(source)
     if job.fixing is not None and hint is None:  # a MintMT program read as v4 is not written as v4: the hint says why
         return (_silence_program if job.fixing is Fixing.SILENCE else _fix_program)(job, source, arguments)
     analysis = check_application(source.text, config=job.configuration, select=options.select, **arguments)

@@ -6,7 +6,9 @@ silences its findings (``mintlang.analysis.silencing``), and reports what the
 new text still has; here the new texts are written, each
 atomically and only if the file still holds what was read (``mintlang.atomic``),
 or shown as unified diffs without writing. A configuration file is reported but
-not fixed: its findings depend on every program that sees it.
+not fixed: its findings depend on every program that sees it. ``--add-ignore``
+silences them too, as the run's programs see them (``Plan.silenced_configurations``):
+a comment changes nothing any program runs.
 """
 
 from __future__ import annotations

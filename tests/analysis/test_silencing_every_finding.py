@@ -77,6 +77,15 @@ def test_a_line_the_comment_would_make_too_long_keeps_its_findings() -> None:
     assert [d.code for d in result.left] == ["W101"] and result.silenced == ()
 
 
+def test_a_finding_left_is_placed_in_the_new_text() -> None:
+    line = f"PRINT “{'a' * 240}”"
+    analysis = mintlang.check_application(f"PRINT b\n{line}\n")
+    result = silence(analysis.model, analysis.program)
+    assert result.text == f"PRINT b : REM mint: ignore[E3001]\n{line}\n"
+    (left,) = result.left
+    assert left.code == "W101" and result.text[left.span.start : left.span.end] == line.removeprefix("PRINT ")
+
+
 def test_an_unused_suppression_is_left_to_its_own_fix() -> None:
     assert _silenced("DIM a : REM mint: ignore[W101]\na = 1\nPRINT a\n") == (
         "DIM a : REM mint: ignore[W101]\na = 1\nPRINT a\n"
@@ -101,7 +110,9 @@ def test_a_silenced_corpus_program_checks_clean_and_only_gains_comments(case: Co
         case.source, dialect=case.dialect, controller=case.controller, config=case.configuration
     )
     result = silence(analysis.model, analysis.program)
-    assert [(d.code, d.message) for d in _findings(case, result.text)] == [(d.code, d.message) for d in result.left]
+    assert [(d.code, d.span, d.message) for d in _findings(case, result.text)] == [
+        (d.code, d.span, d.message) for d in result.left
+    ]
     assert [_ADDED.sub("", line) for line in result.text.split("\n")] == case.source.split("\n")
     again = mintlang.check_application(
         result.text, dialect=case.dialect, controller=case.controller, config=case.configuration

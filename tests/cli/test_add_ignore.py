@@ -1,8 +1,8 @@
 """``mint check --add-ignore`` (ruff's ``--add-noqa``): silence what a program has today, report only what is new.
 
 Each line with findings gets a ``REM mint: ignore[...]`` comment naming its codes (README, "Suppression
-comments"); the files are written as ``--fix`` writes them; a configuration file is not changed; the codes
-silenced are those the run selects.
+comments"); the files are written as ``--fix`` writes them; a configuration file's findings are silenced as its
+programs see them; the codes silenced are those the run selects.
 """
 
 from __future__ import annotations
@@ -64,12 +64,22 @@ def test_what_cannot_be_silenced_is_still_reported(tmp_path: Path) -> None:
     assert result.exit_code == 0 and "W101" in result.stdout and "Nothing to silence." in result.stdout
 
 
-def test_a_configuration_file_is_left_as_it_is(tmp_path: Path) -> None:
-    configuration = tmp_path / "cell.cfg"
-    configuration.write_text("DIM unused_setting\n", encoding="utf-8")
-    program(tmp_path, "PRINT 1\n")
-    mint_check("--add-ignore", tmp_path)
-    assert configuration.read_text(encoding="utf-8") == "DIM unused_setting\n"
+def test_a_configuration_file_is_silenced_as_its_programs_see_it(tmp_path: Path) -> None:
+    # the configuration's undeclared name is E3001 for the program that sees it; its setting, used by the
+    # program, is no W103 (a name is unused only if no program uses it)
+    configuration = write(tmp_path / "cell.cfg", "DIM speed_setting\nspare = 1\n")
+    program(tmp_path, "PRINT speed_setting\n")
+    result = mint_check("--add-ignore", tmp_path)
+    assert configuration.read_text(encoding="utf-8") == "DIM speed_setting\nspare = 1 : REM mint: ignore[E3001]\n"
+    assert "Silenced 1 finding in 1 file (1 E3001)." in result.stdout
+    assert mint_check(tmp_path).stdout == "2 files checked: 0 errors, 0 warnings, 0 infos\n"
+
+
+def test_a_configuration_file_named_alone_is_silenced(tmp_path: Path) -> None:
+    configuration = write(tmp_path / "axes.cfg", "spare = 1\n")
+    result = mint_check("--add-ignore", configuration)
+    assert configuration.read_text(encoding="utf-8") == "spare = 1 : REM mint: ignore[E3001]\n"
+    assert result.stdout == "1 file checked: 0 errors, 0 warnings, 0 infos\nSilenced 1 finding in 1 file (1 E3001).\n"
 
 
 def test_it_goes_with_neither_fixes_nor_standard_input(tmp_path: Path) -> None:

@@ -49,7 +49,8 @@ WORDS: dict[TokenKind, BlockWord] = {
         "Event",
         _EVENT,
         "The block the controller runs when the event NAME happens: Comms1 to Comms5 when a host writes that"
-        " comms location, MOVEBUFFERLOW when the move buffer's free places reach their level. The program"
+        " comms location, MOVEBUFFERLOW when the move buffer's free places reach their level, or one of v4's"
+        " events (ONERROR, TIMER, STOP, INx, FASTINx, CANx). The program"
         " never runs into it from the line above.",
     ),
     TokenKind.ENDEVENT: BlockWord(
@@ -91,8 +92,18 @@ def describe(word: BlockWord) -> str:
 
 
 # The events an Event block can name (MT-13): a host's write to comms locations 1 to 5 (002:19) and the move
-# buffer running low (004:114), spelt as the notes spell them.
+# buffer running low (004:114), spelt as the notes spell them; v4's handlers' events besides (``event_name``).
 EVENT_BLOCK_NAMES = (*(f"Comms{location}" for location in range(1, 6)), "MOVEBUFFERLOW")
+
+# What calls the block of each of v4's events, a number standing for the input or channel (000:1889-1898, chapter 8).
+_V4_EVENTS = {
+    EventKind.ONERROR: "an error happens (v4's #ONERROR)",
+    EventKind.TIMER: "the periodic timer ticks, at the interval TIMEREVENT sets",
+    EventKind.STOP: "an axis's stop input becomes active",
+    EventKind.IN: "digital input {number} raises its event",
+    EventKind.FASTIN: "fast position latch input {number} latches",
+    EventKind.CAN: "CAN channel {number} raises an event",
+}
 
 
 def event_name(name: str) -> str | None:
@@ -101,16 +112,16 @@ def event_name(name: str) -> str | None:
     if event is None:
         return None
     if event.kind is EventKind.COMMS and event.number is not None and 1 <= event.number <= 5:
-        return (
-            f"**{name}** — MintMT event: the controller runs this Event block when a host writes comms"
-            f" location {event.number} (COMMS({event.number}))"
-        )
-    if event.kind is EventKind.MOVEBUFFERLOW:
-        return (
-            f"**{name}** — MintMT event: the controller runs this Event block when the free places of an"
-            " axis's move buffer come up to the level MOVEBUFFERLOW sets"
-        )
-    return None
+        when = f"a host writes comms location {event.number} (COMMS({event.number}))"
+    elif event.kind is EventKind.MOVEBUFFERLOW:
+        when = "the free places of an axis's move buffer come up to the level MOVEBUFFERLOW sets"
+    elif event.kind is EventKind.FASTIN and event.number is None:
+        when = "a fast position latch input latches"
+    elif event.kind in _V4_EVENTS:
+        when = _V4_EVENTS[event.kind].format(number=event.number)
+    else:
+        return None
+    return f"**{name}** — MintMT event: the controller runs this Event block when {when}"
 
 
 def hover(document: Document, token: Token) -> str | None:

@@ -353,9 +353,12 @@ def _mintmt_block_words(blocks: OpenBlocks | None) -> Iterator[types.CompletionI
         )
 
 
-def _event_blocks() -> Iterator[types.CompletionItem]:
-    """After MintMT's ``Event``: the events a block can handle."""
-    for name in mintmt_words.EVENT_BLOCK_NAMES:
+def _event_blocks(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
+    """After MintMT's ``Event``: the events a block can handle, the notes' spelt as they spell them, then v4's
+    handlers' the controller calls (MT-13)."""
+    spelt = {event_of(name, Dialect.MINTMT) for name in mintmt_words.EVENT_BLOCK_NAMES}
+    v4 = [name for name in event_names(snapshot) if event_of(name, Dialect.MINTMT) not in spelt]
+    for name in (*mintmt_words.EVENT_BLOCK_NAMES, *v4):
         yield types.CompletionItem(
             label=name,
             kind=types.CompletionItemKind.Event,
@@ -535,7 +538,7 @@ def complete(
         return listed
     previous = before[-1] if before else None
     if previous is not None and previous.kind is TokenKind.EVENT:
-        return list(_event_blocks())
+        return list(_event_blocks(snapshot))
     if previous is not None and (previous.kind in _NOTHING_AFTER or previous.text.endswith(".")):
         return []  # a new name, a complete statement, or the decimals of a number
     if partial is not None and partial.text.startswith("_"):

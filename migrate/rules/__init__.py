@@ -56,6 +56,7 @@ from mintlang.migrate.rules.reviews import ChangedUnits, ConfigurationArrays, Ou
 from mintlang.migrate.rules.statements import (
     Boost,
     Contouring,
+    ContouringCancelled,
     DropOffline,
     Interrupts,
     Limits,
@@ -100,6 +101,7 @@ RULES: tuple[Rule, ...] = (
     ServoOff(),
     ServoOn(),
     Limits(),
+    ContouringCancelled(),
     Interrupts(),
     IdleWindow(),
     CurrentLimit(),

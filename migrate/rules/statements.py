@@ -15,6 +15,7 @@ from mintlang.migrate.context import Context, FileView, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule, selector_text
 from mintlang.migrate.rules.spelling import like
+from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
 
@@ -140,6 +141,47 @@ class Contouring(StatementRule):
         selector = selector_text(file, statement.keyword) or "[0,1,2]"
         keyword = like(statement.keyword.spelling, "CONTOURMODE")
         return self.unsupported(context, "CONTOURMODE") or f"{keyword}{selector} = {value}{fill(selector)}"
+
+
+class ContouringCancelled(Rule):
+    """v3 CANCEL, DISLIMIT and RESET also switched contouring off (v3:6584, v3:7469,
+    v3:11427-11446); v4 CANCEL and RESET leave CONTOURMODE as it is (v4:7985-8016,
+    v4:15624-15629). In an application that turns contouring on, each of them gets what S-CONT
+    writes for CONTOFF after it, unless it is in the configuration file before the first CONTON,
+    where contouring is still off as at power-up. DISLIMIT's own S-LIMIT rewrite ends in the
+    CANCEL, so the CONTOURMODE goes after the whole of it."""
+
+    id = "S-CONT-OFF"
+    rule_class = RuleClass.SEMI
+    phase = Phase.CONTEXT
+    summary = "CANCEL, DISLIMIT, RESET after a CONTON -> ... : CONTOURMODE[0,1,2] = 0; (v3 turned contouring off)"
+    evidence = "v3:6584, v3:7469, v3:11427-11446; v4:7985-8016, v4:15624-15629, v4:8571-8575"
+    keywords: ClassVar[frozenset[str]] = frozenset({"CANCEL", "DISLIMIT", "RESET"})
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        first = next(iter(context.keyword_uses("CONTON")), None)
+        if first is None or not context.supports("CONTOURMODE"):
+            return  # S-CONT flags the CONTON of a controller without CONTOURMODE
+        _, conton = first
+        contoured_from = (_ORDER[conton.unit], conton.statement.span.start)
+        off = "CONTOURMODE[0,1,2] = 0;"
+        for file, line in context.lines(*map(statement_tag, self.keywords)):
+            statements = n.flatten_statements(line.statements)
+            for position, statement in enumerate(statements):
+                if not (isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in self.keywords):
+                    continue
+                if file.unit is Unit.CONFIGURATION and (_ORDER[file.unit], statement.span.start) < contoured_from:
+                    continue  # the configuration file, before contouring was first turned on
+                if any(_normal(file.slice(later.span)) == _normal(off) for later in statements[position + 1 :]):
+                    continue  # written already (a second migration)
+                yield self.replace(file, Span(statement.span.end, statement.span.end), f" : {off}")
+
+
+_ORDER = {Unit.CONFIGURATION: 0, Unit.PROGRAM: 1}  # compile order: the configuration file runs first
+
+
+def _normal(text: str) -> str:
+    return "".join(text.split()).upper()
 
 
 class ServoOff(StatementRule):

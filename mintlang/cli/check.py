@@ -158,6 +158,12 @@ def _explain(context: click.Context, _parameter: click.Parameter, code: str | No
     help="The name under which the program read from standard input (the path -) is reported.",
 )
 @jobs_option("Check this many files at once, each in a process of its own.  [default: 0, all cores]")
+@click.option(
+    "-w",
+    "--watch",
+    is_flag=True,
+    help="Check again whenever a program, configuration or settings file changes, until Ctrl-C (as ruff's).",
+)
 @verbosity_options(
     quiet="Only the findings: no closing count, no progress bar.",
     verbose="Say on standard error how many files were checked, on how many processes, in how long.",
@@ -184,6 +190,7 @@ def check(
     exit_zero: bool,
     stdin_filename: str | None,
     jobs: int,
+    watch: bool,
     quiet: bool,
     verbose: bool,
     color: str,
@@ -231,6 +238,9 @@ def check(
         raise click.UsageError("--add-ignore writes comments into the programs: give files, without --fix or --diff")
     if _STDIN not in paths and stdin_filename is not None:
         raise click.UsageError("--stdin-filename names the program read from standard input: give - as a path")
+    if watch:
+        _watch(context, paths, layer, add_ignore=add_ignore, show_settings=show_settings)
+        return
     excluded = found.excluded
     try:
         if show_settings:
@@ -306,6 +316,35 @@ def check(
     else:
         failed = any(d.severity is Severity.ERROR for report in reports for d in report.diagnostics)
     sys.exit(_NOT_DONE if problems else _FOUND_ERRORS if failed and not exit_zero else 0)
+
+
+def _watch(
+    context: click.Context, paths: tuple[Path, ...], layer: Overrides, *, add_ignore: bool, show_settings: bool
+) -> None:
+    """The check of ``paths`` again each time one of their files changes (``--watch``)."""
+    from mintlang.cli.watching import seen, watch  # noqa: PLC0415 - --watch alone needs it
+
+    for asked, option in (
+        (_STDIN in paths, "standard input"),
+        (add_ignore, "--add-ignore"),
+        (show_settings, "--show-settings"),
+    ):
+        if asked:
+            raise click.UsageError(f"--watch checks files as they change: not with {option}")
+
+    def check_once() -> int:
+        try:
+            context.invoke(check, **{**context.params, "watch": False})
+        except SystemExit as done:
+            if done.code == _INTERRUPTED:  # Ctrl-C while it checked: the watch ends
+                raise KeyboardInterrupt from None
+            return done.code if isinstance(done.code, int) else 1
+        except click.ClickException as error:  # a settings file saved half-written: said, and watched on
+            error.show()
+            return error.exit_code
+        return 0
+
+    watch(check_once, lambda: seen(paths, layer), clear=sys.stdout.isatty())
 
 
 def _entries(unchecked: list[Unchecked], layer: Overrides) -> list[FileReport]:

@@ -141,7 +141,7 @@ def fix_options() -> Callable[[F], F]:
             "--add-noqa",
             "add_ignore",
             is_flag=True,
-            help="Silence every finding of the programs with a 'REM mint: ignore[...]' comment on its line, to "
+            help="Silence every finding of the files with a 'REM mint: ignore[...]' comment on its line, to "
             "adopt the checker on programs as they stand (ruff's --add-noqa).",
         ),
     ]

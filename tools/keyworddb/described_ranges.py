@@ -10,9 +10,9 @@ Three shapes of text stand in for a printed range in the v4 guide:
   MintDrive row and none for ServoNode 51;
 - a bit mask built from the entry's table of constants (TERMINAL, whose entry calls it a bit mask,
   000:16695-16706): every combination of the documented bits, and nothing above them;
-- a table of valid baud rates (SERIALBAUD, 000:15859-15863): the rates its rows list. The
-  table's ticks per controller and port are garbled in the text, so the rates any controller
-  accepts on any port are allowed.
+- a table of valid baud rates (SERIALBAUD, 000:15859-15863): the rates each controller's ports
+  take, as far as the garbled ticks tell them apart (``baud_rates``); a row is split where its
+  controllers take different rates.
 """
 
 from __future__ import annotations
@@ -23,6 +23,7 @@ from dataclasses import replace
 
 from mintlang.keyworddb.model import Attributes, Constant, Controller, Keyword, ValueRange
 from tools.keyworddb.attributes import controllers_of_label, parse_range
+from tools.keyworddb.baud_rates import baud_rates
 from tools.keyworddb.entries import Entry, EntryKind, v4_entries
 from tools.keyworddb.seeds import Seed
 from tools.keyworddb.v4_keywords import canonical_name
@@ -30,8 +31,6 @@ from tools.keyworddb.v4_keywords import canonical_name
 _DEFERRED = re.compile(r"^see\b", re.IGNORECASE)
 _LOOPTIME_SENTENCE = re.compile(r"^On (?P<label>.+?) the range depends upon\b.*\bLOOPTIME\b")
 _LOOPTIME_ROW = re.compile(r"^(?P<looptime>500|1000|2000) (?P<range>-?\d.*≤ x ≤ .+)$")
-_BAUD_HEADER = re.compile(r"^Baud Rate\b")
-_BAUD_ROW = re.compile(r"^(?P<rate>\d{4,6})\b")
 
 
 def _lines(entry: Entry, seed: Seed) -> Iterable[str]:
@@ -91,19 +90,24 @@ def _bit_mask_range(keyword: Keyword, entry: Entry, seed: Seed, constants: Mappi
     return ValueRange(f"0 ≤ x ≤ {mask}, any mask of the bits {hex(mask)}", 0.0, float(mask), fractional=False)
 
 
-def _baud_range(entry: Entry, seed: Seed) -> ValueRange | None:
-    lines = list(_lines(entry, seed))
-    header = next((index for index, line in enumerate(lines) if _BAUD_HEADER.match(line)), None)
-    if header is None:
-        return None
-    rates = sorted({float(match["rate"]) for line in lines[header + 1 :] if (match := _BAUD_ROW.match(line))})
-    if not rates:
-        return None
-    return ValueRange(", ".join(f"{rate:.15g}" for rate in rates), None, None, False, allowed=tuple(rates))
+def _listed(rates: tuple[float, ...]) -> ValueRange:
+    return ValueRange(", ".join(f"{rate:.15g}" for rate in rates), None, None, False, allowed=rates)
 
 
-def _described(keyword: Keyword, entry: Entry, seed: Seed, constants: Mapping[str, Constant]) -> ValueRange | None:
-    return _bit_mask_range(keyword, entry, seed, constants) or _baud_range(entry, seed)
+def _baud_rows(rows: tuple[Attributes, ...], rates: Mapping[Controller, tuple[float, ...]]) -> list[Attributes]:
+    """The rows with each controller's baud rates: a row deferring to the table is split by the rates (a
+    controller the table's labels do not name takes every rate it lists)."""
+    every = tuple(sorted({rate for listed in rates.values() for rate in listed}))
+    result: list[Attributes] = []
+    for row in rows:
+        if not _defers(row):
+            result.append(row)
+            continue
+        taken = {controller: rates.get(controller, every) for controller in row.controllers}
+        for listed in dict.fromkeys(taken.values()):
+            controllers = tuple(c for c in row.controllers if taken[c] == listed)
+            result.append(replace(row, controllers=controllers, range=_listed(listed)))
+    return result
 
 
 def _defers(row: Attributes) -> bool:
@@ -127,8 +131,10 @@ def with_described_ranges(
         named = _looptime_controllers(keyword, entry, seed) if entry is not None and looptime is not None else ()
         if looptime is not None and named:
             result[name] = replace(keyword, attributes=tuple(_looptime_rows(keyword.attributes, named, looptime)))
+        elif entry is not None and (rates := baud_rates(list(_lines(entry, seed)), keyword.controllers)):
+            result[name] = replace(keyword, attributes=tuple(_baud_rows(keyword.attributes, rates)))
         elif entry is not None and any(_defers(row) for row in keyword.attributes):
-            described = looptime or _described(keyword, entry, seed, constants)
+            described = looptime or _bit_mask_range(keyword, entry, seed, constants)
             result[name] = replace(keyword, attributes=tuple(_row(row, described) for row in keyword.attributes))
         else:
             result[name] = keyword

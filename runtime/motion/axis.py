@@ -373,6 +373,10 @@ class Axis:
         if not self.enabled:
             raise MintError(DRIVE_NOT_ENABLED, self.number, self.disabled_hint)
 
+    def stands_at(self, target: float) -> bool:
+        """At rest on ``target`` with nothing loaded: a move there would go nowhere."""
+        return self.move is None and not self.buffer and self.hold == target
+
     def buffer_free(self) -> int:
         running = 1 if self.move is not None and self.move.buffered else 0
         return int(self.parameters["MOVEBUFFERSIZE"]) - len(self.buffer) - running

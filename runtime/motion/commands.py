@@ -188,7 +188,8 @@ class Motion:
                 self._load_line(axes[0], tuple(axes), tuple(targets), MD_LINEAR)
             else:
                 for (axis, _), target in zip(pairs, targets, strict=True):
-                    self._load_line(axis, (axis,), (target,), MD_LINEAR)
+                    if relative or not axis.stands_at(target):  # MOVEA where it stands: no move (000:14524-14525)
+                        self._load_line(axis, (axis,), (target,), MD_LINEAR)
             return False
 
         return write

@@ -158,10 +158,13 @@ def _statement_words(snapshot: Snapshot, before: list[Token]) -> frozenset[str]:
     return frozenset({"USING"}) if formatted and TokenKind.USING not in written else frozenset()
 
 
-def _at_input_target(before: list[Token]) -> bool:
-    """Whether the cursor is where INPUT takes the variable it fills, after ``INPUT``, its terminal or its
-    prompt and comma (INPUT {#<terminal>} {string,} variable, 000:12212): a name, never a value read."""
+def _at_a_name_filled(before: list[Token]) -> bool:
+    """Whether the cursor is where the statement takes a name it writes, never a value read: FOR's counter
+    (FOR <variable> = ..., 000:10889), and INPUT's variable, after INPUT, its terminal or its prompt and comma
+    (INPUT {#<terminal>} {string,} variable, 000:12212)."""
     kinds = [token.kind for token in _current_statement(before)]
+    if kinds == [TokenKind.FOR]:
+        return True
     if kinds[:1] != [TokenKind.INPUT]:
         return False
     rest = kinds[3:] if kinds[1:2] == [TokenKind.HASH] else kinds[1:]
@@ -289,6 +292,16 @@ def _symbols(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
                 detail=symbol.kind.value,
                 data={"symbol": symbol.identity, "macro": symbol.kind is SymbolKind.MACRO, "uri": snapshot.uri},
             )
+
+
+def _names_filled(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
+    """The variables and arrays, and the macros whose text is a name: the controller reads a macro's text in
+    its place (000:9110), and a number where a name is filled is a syntax error (2003)."""
+    macros = snapshot.model.program.macros
+    for item in _symbols(snapshot):
+        definition = macros.get(item.data["symbol"]) if item.data["macro"] else None
+        if definition is None or [kind for kind, _ in definition.body] == [TokenKind.NAME]:
+            yield item
 
 
 def _symbol_description(snapshot: Snapshot, data: dict[str, object]) -> str | None:
@@ -545,8 +558,8 @@ def complete(
         return list(_constants(snapshot.settings.dialect))
     if previous is not None and previous.kind in (TokenKind.GOSUB, TokenKind.GOTO):
         return list(_labels(snapshot))
-    if _at_input_target(before):
-        return list(_symbols(snapshot))
+    if _at_a_name_filled(before):
+        return list(_names_filled(snapshot))
     statement = previous is None or previous.kind in _STATEMENT_STARTERS
     if previous is not None and previous.kind is TokenKind.KEYWORD:
         # A keyword that starts the statement is a command or a parameter (GO, SPEED): what follows is

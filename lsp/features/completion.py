@@ -3,8 +3,9 @@
 The cursor's line is lexed as typed; user names come from the last analysis.
 
 After GOSUB/GOTO: labels; after ``#`` at the start of a line: the event handlers
-of the controller the program does not have yet; after INPUT: the variables
-and arrays it can fill; after MintMT's ``Event``: the events its blocks handle;
+of the controller the program does not have yet; after FOR and INPUT: the
+variables, arrays and macros naming one that they can fill; after MintMT's
+``Event``: the events its blocks handle;
 after ``_``: predefined constants; at the start of a statement: commands,
 writable parameters, variables, macros and block snippets (ELSE, ENDL ...
 only where they close the innermost block, ELSE only before that IF's own ELSE,

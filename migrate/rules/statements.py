@@ -143,38 +143,72 @@ class Contouring(StatementRule):
         return self.unsupported(context, "CONTOURMODE") or f"{keyword}{selector} = {value}{fill(selector)}"
 
 
-class ContouringCancelled(Rule):
-    """v3 CANCEL, DISLIMIT and RESET also switched contouring off (v3:6584, v3:7469,
-    v3:11427-11446); v4 CANCEL and RESET leave CONTOURMODE as it is (v4:7985-8016,
-    v4:15624-15629). In an application that turns contouring on, each of them gets what S-CONT
-    writes for CONTOFF after it, unless it is in the configuration file before the first CONTON,
-    where contouring is still off as at power-up. DISLIMIT's own S-LIMIT rewrite ends in the
-    CANCEL, so the CONTOURMODE goes after the whole of it."""
+class ResetAlsoRestored(Rule):
+    """A v3 statement of the reset family (CANCEL, DISLIMIT, RESET) also undid what another
+    statement had set (v3:11427-11446), which the v4 statement of the same name leaves as it
+    is: in an application that uses ``changed_by``, each of them that can run after it gets the
+    v4 write that undoes it, ``restore``. One in the configuration file before the first
+    ``changed_by`` runs while the setting is still as at power-up and is left as it is."""
 
-    id = "S-CONT-OFF"
     rule_class = RuleClass.SEMI
     phase = Phase.CONTEXT
-    summary = "CANCEL, DISLIMIT, RESET after a CONTON -> ... : CONTOURMODE[0,1,2] = 0; (v3 turned contouring off)"
-    evidence = "v3:6584, v3:7469, v3:11427-11446; v4:7985-8016, v4:15624-15629, v4:8571-8575"
-    keywords: ClassVar[frozenset[str]] = frozenset({"CANCEL", "DISLIMIT", "RESET"})
+    keywords: ClassVar[frozenset[str]]
+    changed_by: ClassVar[str]  # the v3 keyword whose effect the reset undid
+    needs: ClassVar[str]  # the v4 keyword of the restore, which the target must have
 
     def apply(self, context: Context) -> Iterator[Action]:
-        first = next(iter(context.keyword_uses("CONTON")), None)
-        if first is None or not context.supports("CONTOURMODE"):
-            return  # S-CONT flags the CONTON of a controller without CONTOURMODE
-        _, conton = first
-        contoured_from = (_ORDER[conton.unit], conton.statement.span.start)
-        off = "CONTOURMODE[0,1,2] = 0;"
+        first = next(iter(context.keyword_uses(self.changed_by)), None)
+        if first is None or not context.supports(self.needs):
+            return  # a target without it has the changing statement flagged already
+        _, change = first
+        changed_from = (_ORDER[change.unit], change.statement.span.start)
         for file, line in context.lines(*map(statement_tag, self.keywords)):
             statements = n.flatten_statements(line.statements)
             for position, statement in enumerate(statements):
                 if not (isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in self.keywords):
                     continue
-                if file.unit is Unit.CONFIGURATION and (_ORDER[file.unit], statement.span.start) < contoured_from:
-                    continue  # the configuration file, before contouring was first turned on
-                if any(_normal(file.slice(later.span)) == _normal(off) for later in statements[position + 1 :]):
+                if file.unit is Unit.CONFIGURATION and (_ORDER[file.unit], statement.span.start) < changed_from:
+                    continue
+                restore = self.restore(file, statement)
+                if any(_normal(file.slice(later.span)) == _normal(restore) for later in statements[position + 1 :]):
                     continue  # written already (a second migration)
-                yield self.replace(file, Span(statement.span.end, statement.span.end), f" : {off}")
+                yield self.replace(file, Span(statement.span.end, statement.span.end), f" : {restore}")
+
+    def restore(self, file: FileView, statement: n.KeywordStatement) -> str:
+        raise NotImplementedError
+
+
+class ContouringCancelled(ResetAlsoRestored):
+    """v3 CANCEL, DISLIMIT and RESET also switched contouring off (v3:6584, v3:7469,
+    v3:11427-11446); v4 CANCEL and RESET leave CONTOURMODE as it is (v4:7985-8016,
+    v4:15624-15629): after a CONTON each gets what S-CONT writes for CONTOFF. DISLIMIT's own
+    S-LIMIT rewrite ends in the CANCEL, so the CONTOURMODE goes after the whole of it."""
+
+    id = "S-CONT-OFF"
+    summary = "CANCEL, DISLIMIT, RESET after a CONTON -> ... : CONTOURMODE[0,1,2] = 0; (v3 turned contouring off)"
+    evidence = "v3:6584, v3:7469, v3:11427-11446; v4:7985-8016, v4:15624-15629, v4:8571-8575"
+    keywords: ClassVar[frozenset[str]] = frozenset({"CANCEL", "DISLIMIT", "RESET"})
+    changed_by = "CONTON"
+    needs = "CONTOURMODE"
+
+    def restore(self, file: FileView, statement: n.KeywordStatement) -> str:
+        return "CONTOURMODE[0,1,2] = 0;"
+
+
+class LimitsReset(ResetAlsoRestored):
+    """v3 RESET enabled the limits again after a DISLIMIT (v3:7471, v3:11427-11446), CANCEL did
+    not; v4 RESET leaves LIMITMODE as it is (v4:15624-15629): after a DISLIMIT each RESET gets
+    what S-LIMIT writes for ENLIMIT, on the axes the RESET names."""
+
+    id = "S-LIMIT-RESET"
+    summary = "RESET after a DISLIMIT -> RESET[axes] : LIMITMODE[axes] = 1; (v3 RESET enabled the limits)"
+    evidence = "v3:7471, v3:11427-11446; v4:15624-15629, v4:13446-13497"
+    keywords: ClassVar[frozenset[str]] = frozenset({"RESET"})
+    changed_by = "DISLIMIT"
+    needs = "LIMITMODE"
+
+    def restore(self, file: FileView, statement: n.KeywordStatement) -> str:
+        return write(file, statement, "LIMITMODE", "1")
 
 
 _ORDER = {Unit.CONFIGURATION: 0, Unit.PROGRAM: 1}  # compile order: the configuration file runs first

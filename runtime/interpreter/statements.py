@@ -744,10 +744,11 @@ class StatementCompiler:
 
     def _entry_format(self, using: tuple[n.Expression, ...]) -> Callable[[NumberEntry, float], float | None]:
         """``INPUT .. USING int, frac`` (000:12223-12230, 12247-12249): a sign only with a negative ``int``, or
-        when the variable already holds a negative value, no more integer digits than ``|int|`` (at most 15)
-        or than the value already held has, and no more than ``frac`` decimals (at most 3), the rest
-        truncated; None for an entry to refuse. The field editor's keys (space, backspace, '-' toggling the
-        sign) are not modelled: keys arrive as a line, and a line the field cannot hold is asked for again."""
+        when the variable already holds a negative value, as the field without one ignores the '-' key
+        (000:12239); no more integer digits than ``|int|`` (at most 15) or than the value already held has,
+        and no more than ``frac`` decimals (at most 3), the rest truncated; None for an entry to refuse. The
+        field editor's cursor keys (space, backspace) are not modelled: keys arrive as a line, and a line
+        the field cannot hold is asked for again."""
         if not using:
             return lambda entry, _: entry.value
         places = self.expressions.compile(using[0])
@@ -755,12 +756,11 @@ class StatementCompiler:
         number = self.number
 
         def accept(entry: NumberEntry, existing: float) -> float | None:
-            negative = entry.typed.startswith("-") and entry.value != 0.0
+            integer = places()
+            signed = integer < 0 or existing < 0
+            negative = signed and entry.typed.startswith("-") and entry.value != 0.0
             whole, _, decimals = entry.typed.lstrip("+-").partition(".")
             whole = whole.lstrip("0")
-            integer = places()
-            if negative and integer >= 0 and existing >= 0:
-                return None
             if len(whole) > max(min(abs(math.trunc(integer)), MAX_INPUT_INTEGER_DIGITS), _whole_digits(existing)):
                 return None
             kept = min(max(int(fraction()), 0), MAX_INPUT_FRACTION_DIGITS)

@@ -246,6 +246,7 @@ RETURN
 
 
 def test_input_using_truncates_the_decimals_and_takes_a_sign_only_with_a_negative_width() -> None:
-    # 000:12223-12229: <frac> places, the rest truncated; signed numbers only when <int> is negative
-    source = 'REM @sim key "12.345\\r-3\\r4\\r" at 5\nDIM a\nDIM b\nINPUT a USING -5,2\nINPUT b USING 5,1\n'
-    assert printed(source + 'PRINT a, " ", b\n') == "12.345\n-3\n4\n12.34 4\n"
+    # 000:12223-12229: <frac> places, the rest truncated; signed numbers only when <int> is negative,
+    # the '-' key ignored otherwise (000:12239): -3 typed into USING 5,1 is 3
+    source = 'REM @sim key "12.345\\r-3\\r" at 5\nDIM a\nDIM b\nINPUT a USING -5,2\nINPUT b USING 5,1\n'
+    assert printed(source + 'PRINT a, " ", b\n') == "12.345\n-3\n12.34 3\n"

@@ -15,13 +15,14 @@ from fractions import Fraction
 
 from mintlang.migrate.context import Context, FileView, name_tag, per_pass, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
-from mintlang.migrate.rules.axes import axis_values, default_axes, selector_for
+from mintlang.migrate.rules.axes import axis_values, default_axes, selector_axes, selector_for
 from mintlang.migrate.rules.base import Action, Rule
 from mintlang.migrate.rules.literals import integer_literal
 from mintlang.migrate.rules.spelling import like
 from mintlang.migrate.rules.statements import Refusal
 from mintlang.records import record
 from mintlang.semantic.index import Use
+from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
 
 DENOMINATORS = range(1, 129)  # FOLLOWDENOM (v4:10798)
@@ -64,7 +65,9 @@ class Gearing(Rule):
       and down again on STOP, which is v4's clutch mode (v4:10857-10861, v3:3780-3801).
 
     The denominator at a GEARN is proven when every GEARD of that axis writes one literal
-    (v3 refuses GEARN before GEARD, v3:8377). Manual items: computed values or axes, two
+    (v3 refuses GEARN before GEARD, v3:8377) and no CANCEL, DISLIMIT or RESET can set it back
+    to 1 (v3:6584; v4's leave FOLLOW and FOLLOWDENOM as they are, v4:7985-8016): one in the
+    program, or in the configuration file after a GEARD. Manual items: computed values or axes, two
     GEARD values for one axis, a ratio outside FOLLOW's range, a MASTERINC of 1 (v3: no
     clutch, v3:3801) or a computed one, reads, and a GEARD sharing its line on NextMove.
     ``MODE = 18`` (gearbox) is S-MODE's ``_mdFOLLOW``.
@@ -151,16 +154,38 @@ def _gears(context: Context) -> dict[int, Gear | Refusal]:
     """Per axis with a GEARD or GEARN write: what is proven about its gearbox, or why not."""
     denominators: dict[int, set[int | None]] = {}
     numerators: dict[int, set[int | None]] = {}
-    for file, _, statement in context.statements(statement_tag("GEARD"), statement_tag("GEARN")):
-        if isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in ("GEARD", "GEARN"):
-            found = denominators if statement.keyword.keyword == "GEARD" else numerators
+    reset: set[int] | None = set()  # axes whose GEARD a reset can set back to 1 (None: every axis)
+    for file, _, statement in context.statements(*map(statement_tag, ("GEARD", "GEARN", *_RESETS))):
+        if not isinstance(statement, n.KeywordStatement):
+            continue
+        word = statement.keyword.keyword
+        if word in ("GEARD", "GEARN"):
+            found = denominators if word == "GEARD" else numerators
             for axis, value in axis_values(context, file, statement):
                 found.setdefault(axis, set()).add(integer_literal(value))
+        elif word in _RESETS and reset is not None:
+            axes = selector_axes(statement.keyword)
+            if axes is None and statement.keyword.selector is None:
+                axes = default_axes(context, file, statement.span.start)
+            if file.unit is Unit.PROGRAM:
+                reset = None if axes is None else reset | set(axes)
+            else:  # the configuration file runs first: it resets only a gearbox it set up before
+                reset |= denominators.keys() if axes is None else denominators.keys() & set(axes)
     increments = master_increments(context)
     gears: dict[int, Gear | Refusal] = {}
     for axis in denominators.keys() | numerators.keys():
-        gears[axis] = _gear(axis, denominators.get(axis, set()), numerators.get(axis, set()), increments)
+        gear = _gear(axis, denominators.get(axis, set()), numerators.get(axis, set()), increments)
+        if isinstance(gear, Gear) and gear.denominator != 1 and (reset is None or axis in reset):
+            gear = Refusal(
+                f"a CANCEL, DISLIMIT or RESET of axis {axis} sets its GEARD back to 1 in v3: "
+                "write FOLLOW = n / d by hand"
+            )
+        gears[axis] = gear
     return gears
+
+
+# v3 CANCEL, DISLIMIT and RESET set GEARN and GEARD back to 0 and 1 (v3:6584, v3:7469, v3:11427-11446)
+_RESETS = ("CANCEL", "DISLIMIT", "RESET")
 
 
 def _gear(

@@ -23,6 +23,9 @@ is allowed for is what differs by design:
   decimals cut, v4 four (V3-4, PR-1, X-PRINT); v3 rounds a written number to
   the nearest 256th and cuts a product or quotient to one (V3-2); v4 numbers are
   binary32, 24 significant bits (NM-1). Text around the numbers must be equal.
+  A run of digits beyond the largest v3 number, 8388607.996 (v3:1157), is no one
+  number but several printed side by side (``PRINT a, b``, v3:10980): its digits
+  must be equal.
 * **The horizon.** Runs cut off at ``--until-ms`` have no samples after it, so
   their last 2 ms have only half a tube: they are not held against the other
   run, and what one run printed in them may still be missing from the other.
@@ -39,6 +42,7 @@ VELOCITY_COUNTS = 1000.0  # a count at each end of VEL's 2 ms sample
 PRINTED_DECIMALS = 0.001
 PRINTED_STEPS = 2 / STEPS
 PRINTED_SHARE = 2.0**-23
+V3_LARGEST = 8388607.996  # v3:1157
 
 
 def position(scale: float) -> float:
@@ -52,5 +56,8 @@ def velocity(v3: float, v4: float, scale: float) -> float:
 
 
 def printed(v3: float, v4: float) -> float:
-    """The largest difference between two printed numbers."""
-    return PRINTED_DECIMALS + PRINTED_STEPS + PRINTED_SHARE * max(abs(v3), abs(v4))
+    """The largest difference between two printed numbers (none for numbers printed side by side)."""
+    largest = max(abs(v3), abs(v4))
+    if largest > V3_LARGEST:
+        return 0.0
+    return PRINTED_DECIMALS + PRINTED_STEPS + PRINTED_SHARE * largest

@@ -6,6 +6,7 @@ Kept apart so that ``mint-run --help`` and ``--version`` load neither the simula
 from __future__ import annotations
 
 import io
+import os
 import signal
 import sys
 import time
@@ -14,7 +15,7 @@ from contextlib import AbstractContextManager, contextmanager, nullcontext
 from functools import partial
 from pathlib import Path
 from types import FrameType
-from typing import TYPE_CHECKING, NoReturn
+from typing import IO, TYPE_CHECKING, NoReturn
 
 import click
 
@@ -177,6 +178,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
             result = _simulate(partial(simulate, on_start=partial(_attach_keyboard, keyboard)), termination)
             wall_s = time.perf_counter() - started
         stdout.flush()
+        stdout.end_line_for_errors()
         if not quiet:
             for note in (*result.read_leniently, *result.ignored_directives):
                 errors.line(f"warning: {note}", "yellow")
@@ -355,12 +357,15 @@ class _Stdout:
     def __init__(self, *, live: bool) -> None:
         self.closed = False
         self.live = live
+        self.open_line = False  # the last text written left the cursor after it (PRINT "a",)
         if isinstance(sys.stdout, io.TextIOWrapper):
             # a character the output's encoding lacks (PRINT CHR(129) to cp1252, CHR(233) to ASCII) shows as '?',
             # as on a terminal without the glyph, instead of ending the run with a traceback
             sys.stdout.reconfigure(errors="replace")
 
     def write(self, text: str) -> None:
+        if text:
+            self.open_line = not text.endswith(("\n", "\r"))
         try:
             sys.stdout.write(text)
             if self.live:
@@ -375,10 +380,26 @@ class _Stdout:
         except BrokenPipeError:
             self.close()
 
+    def end_line_for_errors(self) -> None:
+        """Where standard error goes where this output goes (one terminal, log or pipe), a line the program left
+        open is ended there, so that the tool's own lines start on lines of their own; the output alone is left
+        as the program wrote it."""
+        if self.open_line and not self.closed and _same_stream(sys.stdout, sys.stderr):
+            sys.stderr.write("\n")
+            self.open_line = False
+
     def close(self) -> None:
         """Send what is still to come (buffered output, the JSON report) nowhere, without another error at exit."""
         self.closed = True
         discard_standard_output()
+
+
+def _same_stream(first: IO[str], second: IO[str]) -> bool:
+    """Whether two streams reach the same terminal, file or pipe."""
+    try:
+        return os.path.samestat(os.fstat(first.fileno()), os.fstat(second.fileno()))
+    except (OSError, ValueError, io.UnsupportedOperation):  # not a file: a test's capture, a closed stream
+        return False
 
 
 def _scenario(paths: tuple[Path, ...], controller: ControllerProfile, dialect: Dialect) -> Scenario:

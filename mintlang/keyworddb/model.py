@@ -15,6 +15,11 @@ from mintlang.records import record
 _ADDRESSING = re.compile(r"\[[^\]]*\]|\{#<terminal>\}|\{?\.<[^>]*>\}?")  # [axes], {#<terminal>}, .<channel>
 
 
+def _writes(layout: str, name: str) -> bool:
+    """Whether a format gives ``name`` a value (``WAIT = <expression>``), rather than reading it (``v = WAIT``)."""
+    return layout.strip().upper().startswith(name) and "=" in layout
+
+
 class Controller(StrEnum):
     """Controllers the Mint v4 reference guide documents."""
 
@@ -134,13 +139,14 @@ class Keyword:
     @property
     def one_value_a_write(self) -> bool:
         """Whether a write gives the keyword one value: a channel keyword addresses one channel a call
-        (000:547-548), and its format writes one ``<expression>`` (``OUT.x = <expression>``). DAC, whose format
-        shows more and whose table ticks Multi-Axis, and DACLIMITMAX, whose table ticks it too, are left alone."""
-        return (
-            self.addressing is Addressing.CHANNEL
-            and not any(row.multi_axis for row in self.attributes)
-            and not any("{," in layout.replace(" ", "") for layout in self.formats)
-        )
+        (000:547-548), and its format writes one ``<expression>`` (``OUT.x = <expression>``); so does a parameter
+        that addresses nothing (``TIMEREVENT = <expr>``, 000:16777). DAC, whose format shows more and whose
+        table ticks Multi-Axis, and DACLIMITMAX, whose table ticks it too, are left alone."""
+        if any(row.multi_axis for row in self.attributes) or any("{," in f.replace(" ", "") for f in self.formats):
+            return False
+        if self.addressing is Addressing.NONE:
+            return self.kind is KeywordKind.PARAMETER and any(_writes(layout, self.name) for layout in self.formats)
+        return self.addressing is Addressing.CHANNEL
 
     def available_on(self, controller: Controller) -> bool:
         """Whether ``controller`` has the keyword: its "Controllers Supported" list names it, or lists none."""

@@ -278,6 +278,7 @@ class StatementCompiler:
         return write_indexed
 
     def _wait(self, statement: n.KeywordStatement, pc: int) -> Operation:
+        _one_value(len(statement.values or ()), "WAIT")  # WAIT = <expression> (000:17324), as any one-value write
         if not statement.values or statement.values[0] is None:
             raise MintError(NO_EXPRESSION, detail="WAIT needs a time in milliseconds")
         duration = self.expressions.compile(statement.values[0])
@@ -791,8 +792,9 @@ def _within_the_axes(count: int, addressed: tuple[int, ...] | None) -> None:
 
 
 def _one_value(count: int, keyword: str) -> None:
-    """A channel keyword takes one value a write, on one channel a call (000:547-548): more is #2017, before
-    anything is written, as for more values than axes (000:572-576, 19047)."""
+    """A channel keyword takes one value a write, on one channel a call (000:547-548), and so does one that
+    addresses nothing: more is #2017, before anything is written, as for more values than axes (000:572-576,
+    19047)."""
     if count > 1:
         raise MintError(TOO_MANY_VALUES, detail=f"{count} values; {keyword} takes one")
 

@@ -121,7 +121,8 @@ GROUP = Group(
             "more values than the controller has axes to the default axes, or more than the AXES list set just "
             "before gives them: `AXES[0,1]` then `SPEED = 10, 20, 30`), or a circle with more "
             "than its two axes or three values (`CIRCLEA[0,1,2] = 10, 0, 90`, `CIRCLER[0,1] = 5, 5, 90, 1`), "
-            "or a second value for a channel keyword, which addresses one channel a call (`OUT.1 = 1, 0`).",
+            "or a second value for a channel keyword, which addresses one channel a call (`OUT.1 = 1, 0`), "
+            "or for a keyword that addresses nothing (`TIMEREVENT = 100, 200`).",
             why="The compiler rejects the statement; where the AXES list decides, the line fails when it runs. "
             "A value with no axis to go to usually means an axis was left out of the list.",
             example=Example(

@@ -9,9 +9,10 @@ program it ends the run.
 
 MintMT's blocks are entered by the controller, never by the code around them
 (mintlang/MINTMT.md, MT-7): the program starts with its ``Startup`` block, if
-it has one, and goes on at its first line, stepping over the ``Startup`` and
-``Event`` blocks it meets; ``Event Comms1`` is the handler of that event, as
-``#COMMS1`` is in v4, and ``End Event`` returns from it.
+it has one, however the configuration before it ends, and goes on at its
+first line, stepping over the ``Startup`` and ``Event`` blocks it meets;
+``Event Comms1`` is the handler of that event, as ``#COMMS1`` is in v4, and
+``End Event`` returns from it.
 """
 
 from __future__ import annotations
@@ -59,13 +60,16 @@ def link(
     handlers: dict[Unit, Mapping[str, int]] = {}
     units = list(model.documents())
     layouts: list[tuple[dict[Place, int], dict[str, int], int, int]] = []  # positions, labels, start, end
+    startup = next((block for block in model.structures[Unit.PROGRAM].blocks if block.kind is BlockKind.STARTUP), None)
     start = 0
-    for _, document in units:
+    for unit, document in units:
         positions, labels, size = _layout(document, start)
+        if unit is not Unit.PROGRAM and startup is not None:
+            size += 1  # where the configuration runs off its end: the step into the program's Startup block
         layouts.append((positions, labels, start, start + size))
         start += size
     program_positions, _, program_start, _ = layouts[-1]
-    entry = _entry(model.structures[Unit.PROGRAM].blocks, program_positions, program_start)
+    entry = program_positions[startup.opener] + 1 if startup is not None else program_start
     statements: list[n.Statement] = []  # of each operation
     for (unit, document), (positions, labels, start, end_of_unit) in zip(units, layouts, strict=True):
         blocks = _blocks_by_place(model.structures[unit].blocks)
@@ -86,6 +90,8 @@ def link(
                 declares = _declares(statement)
                 vm.sites.append(Site(unit.value, line.number, written, type(statement).__name__, declares))
                 vm.steps_over.append(declares)
+        if unit is not Unit.PROGRAM and startup is not None:
+            _enter_startup(vm, statements, units[-1][1], startup.opener, entry)
     vm.compiled_loops[:] = [None] * len(vm.operations)
     for (unit, _), (positions, *_) in zip(units, layouts, strict=True):
         endw_as_its_while(vm.pure, model.structures[unit].blocks, positions)
@@ -153,10 +159,20 @@ def _layout(document: Document, start: int) -> tuple[dict[Place, int], dict[str,
     return positions, labels, pc - start
 
 
-def _entry(blocks: tuple[Block, ...], positions: Mapping[Place, int], program_start: int) -> int:
-    """Where the program begins: inside its MintMT ``Startup`` block if it has one, else at its first line."""
-    startup = next((block for block in blocks if block.kind is BlockKind.STARTUP), None)
-    return positions[startup.opener] + 1 if startup is not None else program_start
+def _enter_startup(
+    vm: Interpreter, statements: list[n.Statement], program: Document, opener: Place, entry: int
+) -> None:
+    """The operation after the configuration's last one, where it runs off its end or jumps past its last line:
+    the program begins inside its MintMT ``Startup`` block (MT-7), as END in the configuration begins it. It is
+    the ``Startup`` line's step into its block, which no reader sees run, as the controller alone enters it."""
+    line = next(line for line in program.placed if line.number == opener.line)
+    statement = n.flatten_statements(line.syntax.statements)[opener.index]
+    vm.operations.append(_continue_with_program(vm, entry))
+    statements.append(statement)
+    vm.pure.append(False)
+    written = line.syntax.text[statement.span.start : statement.span.end].strip()
+    vm.sites.append(Site(Unit.PROGRAM.value, line.number, written, type(statement).__name__, True))
+    vm.steps_over.append(True)
 
 
 def _event_block_ends(blocks: tuple[Block, ...], positions: Mapping[Place, int]) -> dict[int, int]:

@@ -147,12 +147,16 @@ def _round_brackets(label: str, name: str) -> str:
     return addressed.sub(lambda found: f"{found[1]}({found[2] or found[3]})", label)
 
 
-def _signature(word: Keyword, label: str, callee: Callee) -> types.SignatureInformation:
+def _signature(word: Keyword, label: str, callee: Callee) -> types.SignatureInformation | None:
+    """The format ``label`` with the operand under the cursor active; None when the format takes no such
+    operand: an active parameter past the last means the first to the client (LSP 3.17, SignatureHelp)."""
     parameters = _parameters(label, word.name, callee)
     active = callee.operand
     last = label[slice(*parameters[-1])] if parameters else ""
     repeated = callee.printed or "..." in last or "[axes]" in label or "(axes)" in label
-    if repeated and active >= len(parameters):
+    if active >= len(parameters) and parameters:
+        if not repeated:
+            return None
         active = len(parameters) - 1  # a repeated last operand, or one value per axis
     return types.SignatureInformation(
         label=label,
@@ -174,7 +178,9 @@ def signature_help(prefix: str, settings: Settings) -> types.SignatureHelp | Non
     if settings.dialect is Dialect.MINTMT:
         formats = [_round_brackets(label, word.name) for label in formats]
     formats.sort(key=lambda label: label.startswith("v =") != callee.in_expression)  # the form in use first
-    signatures = [_signature(word, label, callee) for label in formats]
+    signatures = [found for label in formats if (found := _signature(word, label, callee)) is not None]
+    if not signatures:
+        return None
     return types.SignatureHelp(
         signatures=signatures, active_signature=0, active_parameter=signatures[0].active_parameter
     )

@@ -4,10 +4,11 @@ The parameters are read from each format itself: the comma-separated items in
 the brackets after a function's name, or after the ``=`` of a keyword written
 to (braces, the manual's optional parts, are trimmed off). A repeated last
 item (``{,<expression> ...}``, or a value per axis) stays active for every
-further value; a terminal (``PRINT #1, ...``) is not counted as an operand. The
-values of PRINT and LINE, as many as the line holds, are separated by commas or
-semicolons, their last item staying active for every further value; after USING
-(PRINT, INPUT) the operands are the USING clause's own, ``<int>`` and ``<frac>``. In an
+further value, and a format whose operands are all written is not offered; a
+terminal (``PRINT #1, ...``) is not counted as an operand. The values of PRINT
+and LINE, as many as the line holds, are separated by commas or semicolons,
+their last item staying active for every further value; after USING (PRINT,
+INPUT) the operands are the USING clause's own, ``<int>`` and ``<frac>``. In an
 expression the read form (``v = ...``) comes first, at the start of a
 statement the written one.
 """

@@ -270,9 +270,12 @@ class StatementCompiler:
         indices = tuple(self.expressions.compile(item) for item in selector.items[-selector.indices :] if item)
         values = tuple(self.expressions.compile(value) if value is not None else None for value in statement.values)
         fill = statement.fill
+        one_per_axis = reference.keyword in self.expressions.semantics.axis_keywords
 
         def write_indexed() -> bool:
             addressed = channels()
+            if one_per_axis:
+                _within_the_axes(len(values), addressed)  # the indices are no values (000:572-576)
             return write(addressed, tuple(int(index()) for index in indices), _evaluated(values, fill, addressed))
 
         return write_indexed

@@ -25,14 +25,25 @@ def _access(read: bool, write: bool, command: bool) -> str:
     return ", ".join(word for word, flag in (("read", read), ("write", write), ("command", command)) if flag) or "—"
 
 
-def keyword(word: Keyword, controller: Controller, spelling: str = "") -> str:
-    """Full name, formats, access, addressing, default, range, controllers and summary."""
+def round_brackets(label: str, name: str) -> str:
+    """A v4 format as MintMT writes it (MT-18): the axes or channel after the keyword in round brackets,
+    ``MOVER[axes] = …`` as ``MOVER(axes) = …`` and ``ADC.channel`` as ``ADC(channel)``."""
+    addressed = re.compile(rf"\b({re.escape(name)})(?:\[([^\]]*)\]|\.(\w+))", re.IGNORECASE)
+    return addressed.sub(lambda found: f"{found[1]}({found[2] or found[3]})", label)
+
+
+def keyword(word: Keyword, controller: Controller, spelling: str = "", dialect: Dialect = Dialect.V4) -> str:
+    """Full name, formats (as the dialect writes them), access, addressing, default, range, controllers and
+    summary."""
     title = f"**{word.name}**"
     if word.abbreviations:
         title += f" (abbreviation {', '.join(word.abbreviations)})"
     lines = [f"{title} — {word.kind.value.replace('_', ' ')}", ""]  # command_line reads "command line"
     if word.formats:
-        lines += ["```mint", *word.formats, "```", ""]
+        formats = word.formats
+        if dialect is Dialect.MINTMT:
+            formats = tuple(round_brackets(label, word.name) for label in formats)
+        lines += ["```mint", *formats, "```", ""]
     if word.summary:
         lines += [word.summary, ""]
     own = word.attributes_for(controller)

@@ -629,4 +629,4 @@ def _keyword_description(data: dict[str, object], settings: Settings) -> str | N
     offered = Dialect(dialect) if dialect in set(Dialect) else settings.dialect
     on = Controller(controller) if controller in set(Controller) else settings.controller
     word = database().keywords_of(offered).get(name.upper()) or database().lookup(name)
-    return describe.keyword(word, on) if word is not None else None
+    return describe.keyword(word, on, dialect=offered) if word is not None else None

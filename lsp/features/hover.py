@@ -66,8 +66,9 @@ def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
         word = database().lookup_v3(token.text)
         text = describe.v3_keyword(word) if word is not None else None
     else:
-        word = snapshot.settings.keyword(token.text)
-        text = describe.keyword(word, snapshot.settings.controller, token.text) if word is not None else None
+        settings = snapshot.settings
+        word = settings.keyword(token.text)
+        text = describe.keyword(word, settings.controller, token.text, settings.dialect) if word is not None else None
         here = addressed.hover_lines(snapshot, offset) if text is not None else []
         text = "\n".join([text, *here]) if text is not None else None
     return (text, token.start, token.end) if text is not None else None

@@ -15,12 +15,11 @@ statement the written one.
 
 from __future__ import annotations
 
-import re
-
 from lsprotocol import types
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Keyword
+from mintlang.lsp.describe import round_brackets
 from mintlang.lsp.lookup import prefix_tokens, significant
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Settings
@@ -141,13 +140,6 @@ def _parameters(label: str, name: str, callee: Callee) -> list[tuple[int, int]]:
     return _items(label, after, clause if clause >= 0 else len(label))
 
 
-def _round_brackets(label: str, name: str) -> str:
-    """A v4 format as MintMT writes it (MT-18): the axes or channel after the keyword in round brackets,
-    ``MOVER[axes] = …`` as ``MOVER(axes) = …`` and ``ADC.channel`` as ``ADC(channel)``."""
-    addressed = re.compile(rf"\b({re.escape(name)})(?:\[([^\]]*)\]|\.(\w+))", re.IGNORECASE)
-    return addressed.sub(lambda found: f"{found[1]}({found[2] or found[3]})", label)
-
-
 def _signature(word: Keyword, label: str, callee: Callee) -> types.SignatureInformation | None:
     """The format ``label`` with the operand under the cursor active; None when the format takes no such
     operand: an active parameter past the last means the first to the client (LSP 3.17, SignatureHelp)."""
@@ -177,7 +169,7 @@ def signature_help(prefix: str, settings: Settings) -> types.SignatureHelp | Non
     if word is None or not formats:
         return None
     if settings.dialect is Dialect.MINTMT:
-        formats = [_round_brackets(label, word.name) for label in formats]
+        formats = [round_brackets(label, word.name) for label in formats]
     formats.sort(key=lambda label: label.startswith("v =") != callee.in_expression)  # the form in use first
     signatures = [found for label in formats if (found := _signature(word, label, callee)) is not None]
     if not signatures:

@@ -319,9 +319,11 @@ def one_value(use: KeywordUse, name: str) -> Iterator[Finding]:
 
 
 def lone_position(use: KeywordUse) -> n.Expression | None:
-    """The value of a write given one value and no place left empty (``VECTORA[0,1] = 5``), if it is one."""
+    """The value of a write given one value and no place left empty (``VECTORA[0,1] = 5``), if it is one; a
+    semicolon after it gives it to every axis (``VECTORA[0,1] = 5;``, 000:654-659), which makes it no lone one."""
     values = _written(use)
-    return values[0] if values is not None and len(values) == 1 else None
+    fills = isinstance(use.statement, n.KeywordStatement) and use.statement.fill
+    return values[0] if values is not None and len(values) == 1 and not fills else None
 
 
 def _written(use: KeywordUse) -> tuple[n.Expression | None, ...] | None:

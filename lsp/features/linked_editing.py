@@ -18,7 +18,8 @@ from mintlang.lsp.workspace import Snapshot
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import SymbolKind
 
-WORD = r"[A-Za-z_][A-Za-z0-9_]*"  # a Mint name
+# A label's name: a Mint name, or digits alone (any combination of alphanumeric characters, 000:1843; ``#123``)
+WORD = r"[A-Za-z_][A-Za-z0-9_]*|[0-9]+"
 
 
 def linked(snapshot: Snapshot, offset: int) -> list[Span] | None:

@@ -23,7 +23,7 @@ from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.interpreter import generated
 from mintlang.runtime.interpreter.generated import Emitter, Source
 from mintlang.runtime.interpreter.vm import Interpreter
-from mintlang.runtime.keywords import KeywordTable, Reader
+from mintlang.runtime.keywords import AXIS_SET_TWICE, KeywordTable, Reader
 from mintlang.runtime.numbers import bits24, f32, held
 from mintlang.runtime.semantics import Semantics
 from mintlang.syntax import nodes as n
@@ -209,9 +209,9 @@ class ExpressionCompiler:
 
             clock = self.vm.clock
             constant = _constants(reference)
-            if constant is not None:  # IDLE[0,1,2,3] in a PAUSE is read every tick: no channel to evaluate
-                return lambda: _and_of_reads(read, constant, clock)
-            return lambda: _and_of_reads(read, [int(channel()) for channel in single], clock)
+            if constant is not None and len(set(constant)) == len(constant):
+                return lambda: _and_of_reads(read, constant, clock)  # IDLE[0,1] in a PAUSE: no channel to evaluate
+            return lambda: _and_of_reads(read, _distinct([int(channel()) for channel in single]), clock)
         default_axes = channels
         vm = self.vm
         return lambda: number(read(vm.default_axes[0]) if default_axes else read(None))
@@ -270,6 +270,13 @@ def _and_of_reads(read: Reader, channels: Iterable[int], clock: Clock) -> float:
     valid = latest_zero if flags and result == 0 else soonest
     clock.horizon = min(outer, valid)
     return float(result)
+
+
+def _distinct(channels: list[int]) -> list[int]:
+    """The axes of a bracket list read, each named once: the same one twice is error 2018 (000:19053-19055)."""
+    if len(set(channels)) != len(channels):
+        raise MintError(AXIS_SET_TWICE, detail="an axis is named twice")
+    return channels
 
 
 def _constants(reference: n.KeywordRef) -> tuple[int, ...] | None:

@@ -7,8 +7,9 @@ error 40 (v4:2704-2713). Which pin is which is wiring, so nothing is guessed:
 the spec's ``= ?`` placeholders would stop the file compiling, so instead each
 missing assignment becomes a ``REM MIGRATE:`` line at the top of the application
 carrying the exact v4 statement with an ``<input>``/``<output>`` to fill in. Only
-what the program needs is listed: moves need the drive enable and the limits,
-HOME needs HOMEINPUT, a #STOP handler or the stop switch needs STOPINPUT.
+what the program needs is listed: moves need the drive enable, the limits and the stop
+input (v3's halted all motion, v3:4544), HOME needs HOMEINPUT, and a #STOP handler or the
+stop switch needs STOPINPUT even without a move.
 """
 
 from __future__ import annotations
@@ -75,8 +76,12 @@ def _homing(context: Context) -> tuple[int, ...] | None:
 
 
 def _stopping(context: Context) -> tuple[int, ...] | None:
-    """The moved axes (all when none is known) if the program has a #STOP handler, reads the
+    """The moved axes: v3's stop input halted all motion whatever the program said (v3:751-758,
+    v3:4544-4546); and all axes, when none moves, if the program has a #STOP handler, reads the
     stop switch or sets its mode."""
+    moved = _moving(context)
+    if moved != ():
+        return moved
     handler = any(
         event is not None and event.kind is EventKind.STOP
         for _, line in context.placed(LABEL)
@@ -84,7 +89,7 @@ def _stopping(context: Context) -> tuple[int, ...] | None:
     )
     if not handler and not _mentions(context, frozenset({"STOPSW", "STOPSWITCH", "STOPMODE", "STOPINPUTMODE"})):
         return ()
-    return _moving(context) or None
+    return None
 
 
 def _mentions(context: Context, names: frozenset[str]) -> bool:

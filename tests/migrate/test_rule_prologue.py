@@ -12,12 +12,13 @@ def _notes(source: str, **options: str) -> list[str]:
     return [item.reason for item in one_rule("S-PROLOGUE", source, **options).manual if item.rule == "S-PROLOGUE"]
 
 
-def test_moves_need_the_drive_enable_and_the_limits() -> None:
+def test_moves_need_the_drive_enable_the_limits_and_the_stop_input() -> None:
     assert _notes("AXES[0,1]\nMOVEA = 1,2 : GO\n") == [
         "DRIVEENABLEOUTPUT[0,1] = <output>; : REM v3 amplifier enable was dedicated; -1 if none is wired",
         "DRIVEENABLE[0,1] = 1; : REM before the first move (after CONFIG); v4 error 40 otherwise",
         "LIMITFORWARDINPUT[0,1] = <input>; : REM v3 had one limit input per axis for both directions",
         "LIMITREVERSEINPUT[0,1] = <input>; : REM the same input as forward if wired as in v3",
+        "STOPINPUT[0,1] = <input>; : REM v3 had a stop input",
     ]
 
 

@@ -44,7 +44,7 @@ def test_a_divergence_fails_with_its_time_lines_and_values(tmp_path: Path) -> No
     assert code == 1
     assert lines[0].startswith(f"{path}: diverges at ") and lines[0].endswith(" ms: axis 0 velocity")
     assert lines[1].startswith("  v3: ") and lines[1].endswith(f"at {path}:1")
-    assert lines[2] == f"  v4: 20000  at migrated {path}:9"  # below the 8 notes (no AXES: every axis is named)
+    assert lines[2] == f"  v4: 20000  at migrated {path}:10"  # below the 9 notes (no AXES: every axis is named)
     assert "not verified: " in output and "S-DEFAULTS SPEED[0] = <value>;" in output
 
 
@@ -61,7 +61,7 @@ def test_the_json_report_carries_the_verdict_the_first_divergence_and_what_was_n
     assert divergence["v3"]["line"] == 1 and divergence["v4"] == {
         "value": "20000",
         "file": str(tmp_path / "demo.mnt"),
-        "line": 9,
+        "line": 10,
     }
     assert application["stopped"]["v3"]["reason"] == "until"
     speed = [item for item in application["not_verified"] if item["rule"] == "S-DEFAULTS" and "SPEED" in item["reason"]]

@@ -167,13 +167,16 @@ class _NameTypes(dict[str, int]):
 
 def _coloured(line: LexedLine, name_types: dict[str, int]) -> list[_Coloured]:
     """The tokens of ``line`` that get a colour, in order: trivia never do, but a REM comment does. The word
-    after GOSUB or GOTO is a label, even where it is spelt like a keyword (``GOSUB home``) or a variable."""
+    after GOSUB or GOTO is a label, even where it is spelt like a keyword (``GOSUB home``) or a variable; the
+    word after MintMT's Event names the event its block handles, coloured as a v4 handler's label (MT-13)."""
     found = []
     by_kind = _BY_KIND.get
     previous = None
     for kind, text, start in zip(line.kinds, line.texts, line.starts, strict=True):
         kind_type = name_types[text] if kind is _NAME else by_kind(kind)
         if previous in _JUMPS and (kind in _KEYWORD_WORDS or kind_type == _TYPE["variable"]):
+            kind_type = _TYPE["function"]
+        elif previous is TokenKind.EVENT and (kind is _NAME or kind in _KEYWORD_WORDS):
             kind_type = _TYPE["function"]
         previous = kind
         if kind_type is not None:

@@ -174,9 +174,8 @@ def _coloured(line: LexedLine, name_types: dict[str, int]) -> list[_Coloured]:
     previous = None
     for kind, text, start in zip(line.kinds, line.texts, line.starts, strict=True):
         kind_type = name_types[text] if kind is _NAME else by_kind(kind)
-        if previous in _JUMPS and (kind in _KEYWORD_WORDS or kind_type == _TYPE["variable"]):
-            kind_type = _TYPE["function"]
-        elif previous is TokenKind.EVENT and (kind is _NAME or kind in _KEYWORD_WORDS):
+        jumped_to = previous in _JUMPS and (kind in _KEYWORD_WORDS or kind_type == _TYPE["variable"])
+        if jumped_to or (previous is TokenKind.EVENT and (kind is _NAME or kind in _KEYWORD_WORDS)):
             kind_type = _TYPE["function"]
         previous = kind
         if kind_type is not None:

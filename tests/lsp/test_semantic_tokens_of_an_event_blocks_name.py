@@ -14,7 +14,9 @@ client = test_mintmt.client  # the server reading each file's dialect from its t
 
 
 async def test_an_event_blocks_name_is_coloured_as_a_handlers_label(client):
-    text = "Loop\nEnd Loop\nEvent Comms1\n  Print 1\nEnd Event\nEvent TIMER\nEnd Event\nEvent MOVEBUFFERLOW\nEnd Event\n"
+    text = (
+        "Loop\nEnd Loop\nEvent Comms1\n  Print 1\nEnd Event\nEvent TIMER\nEnd Event\nEvent MOVEBUFFERLOW\nEnd Event\n"
+    )
     uri = "file:///work/event_colours.mnt"
     await open_document(client, uri, text)
     decoded = [(word, kind) for _, word, kind, _ in await coloured(client, uri, text)]

@@ -50,7 +50,7 @@ def refusal(
             return Refusal(2002, f"{name} can only be written, not read")
         return Refusal(2003, f"{name} is a command and gives no value")
     if use is Use.COMMAND and not attributes.command:
-        return _not_a_command(name, has_arguments=has_arguments)
+        return _not_a_command(name, has_arguments=has_arguments, read=attributes.read, write=attributes.write)
     if use is Use.COMMAND and has_arguments and not keyword.takes_operands:
         return _no_operands(keyword)
     return None
@@ -64,11 +64,18 @@ def _no_operands(keyword: Keyword) -> Refusal:
     return Refusal(2003, f"{keyword.name} takes no operands{axes} ('{layout}')")
 
 
-def _not_a_command(name: str, *, has_arguments: bool) -> Refusal:
+def _not_a_command(name: str, *, has_arguments: bool, read: bool = True, write: bool = True) -> Refusal:
     """The error of a keyword that is no command written as a statement: 2005 named alone, as ``SPEED``
-    (000:18930-18933); 2003 given operands without '='."""
+    (000:18930-18933); 2003 given operands without '='. The message offers only the uses its access allows:
+    a read-only keyword is never shown given a value, which is error 2000."""
     if not has_arguments:
+        if not write:
+            return Refusal(2005, f"{name} is read only: read it here (for example 'PRINT {name}')")
+        if not read:
+            return Refusal(2005, f"{name} is write only: give it a value here (for example '{name} = …')")
         return Refusal(2005, f"{name} must be read or given a value here (for example '{name} = …')")
+    if not write:
+        return Refusal(2003, f"{name} is read only and takes no value")
     if name == "WAIT":  # WAIT IDLE.0, as other languages wait on a condition (000:17314-17324)
         return Refusal(2003, f"{name} waits a time in milliseconds ('{name} = 100'): to wait on a condition, use PAUSE")
     return Refusal(2003, f"{name} takes a value with '=': '{name} = …'")
@@ -84,7 +91,8 @@ def _refusal_from_formats(keyword: Keyword, use: Use, *, has_arguments: bool) ->
     if not keyword.formats:
         return None
     if use is Use.COMMAND and keyword.kind is KeywordKind.PARAMETER and all("=" in text for text in keyword.formats):
-        return _not_a_command(keyword.name, has_arguments=has_arguments)
+        assigned = [text.strip().upper().startswith(keyword.name) for text in keyword.formats]
+        return _not_a_command(keyword.name, has_arguments=has_arguments, read=not all(assigned), write=any(assigned))
     if use is Use.COMMAND and has_arguments and not keyword.takes_operands:
         return _no_operands(keyword)
     assigned = any("=" in text for text in keyword.formats)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import OUT_OF_RANGE, MintError
 from mintlang.runtime.io import RELAY0, DigitalIO
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer
 from mintlang.runtime.motion.axis import Axis
@@ -18,7 +18,6 @@ from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.ranges import shown
 
 NO_OUTPUT = -1  # the drive's internal state alone (000:2703-2704)
-OUT_OF_RANGE = 3
 
 
 def install(table: KeywordTable, motion: Motion, io: DigitalIO) -> None:

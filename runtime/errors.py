@@ -13,6 +13,14 @@ from typing import Protocol
 from mintlang.keyworddb import database
 
 AXIS_ERROR_PRESENT = 500  # ERR in #ONERROR for an asynchronous motion error (EV-17 RC)
+# Errors raised for a program's mistakes in many places, with their constants in the guide's list (000:18509-18960)
+INVALID_AXIS = 2  # _erINVALID_AXIS
+OUT_OF_RANGE = 3  # _erVALUE_OUT_OF_RANGE
+INVALID_CHANNEL = 4  # _erINVALID_CHANNEL
+MISSING_PARAMETER = 2001
+SYNTAX_ERROR = 2003
+INVALID_INDEX = 2016
+TOO_MANY_VALUES = 2017
 # The interpreter errors, mistakes in the source met when their line runs: the 2000s of section 12.4, as
 # "Syntax error" (2003) and "NEXT w/o FOR" (2009), the ERR entry's examples (000:9912-9913, 18891-18892).
 # The compiler errors are the 3000s (its examples: 3002, 3003), the system (motion library) errors below 500.

@@ -17,7 +17,7 @@ from collections.abc import Callable
 
 from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.runtime.clock import Clock
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import INVALID_CHANNEL, OUT_OF_RANGE, MintError
 from mintlang.runtime.events import EventClass, Events
 from mintlang.runtime.io_banks import BankSelection, with_bit
 from mintlang.runtime.keywords import KeywordTable, per_channel
@@ -25,8 +25,6 @@ from mintlang.runtime.ranges import ranged, table_default
 
 INVALID_INPUT = 7
 INVALID_OUTPUT = 8
-INVALID_CHANNEL = 4
-OUT_OF_RANGE = 3
 ADC_OFF = 4  # ADCMODE's _acOFF on every NextMove (000:6450, 6479)
 RELAY0 = 1000  # _RELAY0, the main card's relay as a drive enable output; _RELAY1 and _RELAY2 follow (000:9356-9368)
 

@@ -12,10 +12,8 @@ card hold for every bank: IMASK's default is 1048575, the card's 20 inputs (000:
 from __future__ import annotations
 
 from mintlang.controllers import IOBanks
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import OUT_OF_RANGE, MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
-
-OUT_OF_RANGE = 3
 
 
 def with_bit(bits: int, number: int, on: bool) -> int:

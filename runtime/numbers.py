@@ -17,9 +17,8 @@ from collections.abc import Callable, Mapping
 from types import MappingProxyType
 
 from mintlang import binary32
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import OUT_OF_RANGE, MintError
 
-OUT_OF_RANGE = 3
 DIVIDE_BY_ZERO = 2021
 MASK24 = 0xFFFFFF
 

@@ -17,9 +17,8 @@ from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, ValueRange
 from mintlang.keyworddb.supplements import attributes_for, narrowed, whole_only
 from mintlang.records import record
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import OUT_OF_RANGE, MintError
 
-OUT_OF_RANGE = 3
 Number = TypeVar("Number", bound=int | None)  # the axis or channel a write names, as its resolver returns it
 
 

@@ -12,7 +12,7 @@ from mintlang.comms_map import system_element
 from mintlang.controllers import ChannelRange, profile
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.comms.array import CommsArray
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import INVALID_CHANNEL, MintError
 from mintlang.runtime.interpreter.line_trace import LineTrace
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.keywords import Channels, KeywordTable, per_channel
@@ -24,7 +24,6 @@ from mintlang.runtime.terminal import Terminal
 TIME_LIMIT = 16_777_216  # TIME wraps after 16777215 (T-7 RC), where its table gives no range
 DEFAULT_NODE = 2
 BUILD_NUMBER = 0.0  # COMMS(239): the simulator has no firmware build
-INVALID_CHANNEL = 4
 # LASTERR: a run starts at power-up and ends when its program is terminated, so no program has been terminated
 # by an error before it; -1 is the error list's "Success", what ERR reads before any error (000:18508-18510).
 NO_ERROR = -1.0

@@ -9,12 +9,9 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import INVALID_INDEX, SYNTAX_ERROR, MintError
 from mintlang.runtime.numbers import held
 from mintlang.syntax import nodes as n
-
-INVALID_INDEX = 2016
-SYNTAX_ERROR = 2003
 
 
 def array_problem(statement: n.Dim, number: Callable[[float], float]) -> MintError | None:

@@ -19,7 +19,7 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.records import record
 from mintlang.runtime.clock import NEVER, Clock
-from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.errors import INVALID_AXIS, INVALID_INDEX, SYNTAX_ERROR, MintError, NotSimulated
 from mintlang.runtime.interpreter import generated
 from mintlang.runtime.interpreter.generated import Emitter, Source
 from mintlang.runtime.interpreter.vm import Interpreter
@@ -33,9 +33,6 @@ Evaluate = Callable[[], float]
 
 READ_OF_COMMAND = 2000
 READ_OF_WRITE_ONLY = 2002
-INVALID_INDEX = 2016
-INVALID_AXIS = 2
-SYNTAX_ERROR = 2003
 NESTING = 40  # operations nested in one generated function: at most two brackets each, of Python's 200
 
 

@@ -15,7 +15,7 @@ from mintlang.diagnostics import Span
 from mintlang.keyworddb.model import CIRCLES
 from mintlang.records import record
 from mintlang.runtime.clock import NEVER
-from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.errors import MISSING_PARAMETER, SYNTAX_ERROR, TOO_MANY_VALUES, MintError, NotSimulated
 from mintlang.runtime.interpreter import generated
 from mintlang.runtime.interpreter.arrays import array_problem
 from mintlang.runtime.interpreter.expressions import Evaluate, ExpressionCompiler
@@ -31,10 +31,7 @@ from mintlang.syntax import nodes as n
 
 WRITE_OF_READ_ONLY = 2000
 NO_EXPRESSION = 2005
-MISSING_PARAMETER = 2001
 UNDEFINED_KEYWORD = 3007
-SYNTAX_ERROR = 2003
-TOO_MANY_VALUES = 2017
 MAX_INPUT_INTEGER_DIGITS = 15  # INPUT .. USING: <int> is at most 15 characters, the sign excluded (000:12247)
 MAX_INPUT_FRACTION_DIGITS = 3  # and <frac> at most 3 (000:12249)
 

@@ -12,10 +12,10 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import MISSING_PARAMETER, TOO_MANY_VALUES, MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
 from mintlang.runtime.motion.axis import MD_CIRCULAR, MOTION_IN_PROGRESS, Request
-from mintlang.runtime.motion.commands import MISSING_PARAMETER, TOO_MANY_VALUES, Motion
+from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.paths import PATH_MODES, Arc, PathSegment
 
 CIRCLE_AXES = 2

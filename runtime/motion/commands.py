@@ -14,7 +14,14 @@ from mintlang.analysis.rules.addressing import addressed
 from mintlang.controllers import ChannelRange, ControllerProfile
 from mintlang.keyworddb.model import Controller
 from mintlang.runtime.clock import Clock
-from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.errors import (
+    INVALID_AXIS,
+    INVALID_CHANNEL,
+    MISSING_PARAMETER,
+    TOO_MANY_VALUES,
+    MintError,
+    NotSimulated,
+)
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer, per_channel
 from mintlang.runtime.motion.axis import (
     DRIVE_ENABLED,
@@ -37,8 +44,6 @@ from mintlang.runtime.scenario.stimulus import IndexPulse
 if TYPE_CHECKING:  # master.py builds on this module
     from mintlang.runtime.motion.master import MasterSettings
 
-INVALID_AXIS = 2
-INVALID_CHANNEL = 4
 WRONG_CONFIGURATION = 11
 SMART_SOFT_LIMITS = 4  # SOFTLIMITMODE's smart mode, NextMove only (000:16057-16069)
 NEXTMOVES = frozenset({Controller.NEXTMOVE_PCI, Controller.NEXTMOVE_PC, Controller.NEXTMOVE_BX})
@@ -55,8 +60,6 @@ _SWITCHES: dict[str, tuple[str, ...]] = {
     "STOPSWITCH": ("STOPINPUT",),
     "ERRORSWITCH": ("ERRORINPUT",),
 }
-MISSING_PARAMETER = 2001
-TOO_MANY_VALUES = 2017
 SAME_AXIS_TWICE = 2018
 
 

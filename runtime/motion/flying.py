@@ -16,14 +16,13 @@ from enum import Enum
 
 from mintlang.records import record
 from mintlang.runtime.clock import NEVER
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import OUT_OF_RANGE, MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
 from mintlang.runtime.motion.axis import MD_FLY, MD_OFFSET, MOTION_IN_PROGRESS, Axis, Request
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.master import Link, MasterDriven, SetPoints, link, master_distance
 from mintlang.runtime.motion.moves import Move
 from mintlang.runtime.motion.superimposed import OffsetTrack
-from mintlang.runtime.ranges import OUT_OF_RANGE
 
 MAX_FLY = 8_388_607.0
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from mintlang.records import record
 from mintlang.runtime.clock import NEVER
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import OUT_OF_RANGE, MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.axis import MD_FOLLOW, MD_OFFSET, MOTION_IN_PROGRESS, Axis
 from mintlang.runtime.motion.commands import Motion
@@ -21,7 +21,7 @@ from mintlang.runtime.motion.flying import LockedMove, Step, StopRule
 from mintlang.runtime.motion.master import Link, MasterDriven, SetPoints, link, master_distance
 from mintlang.runtime.motion.moves import PROFILER_TICK_MS, Move
 from mintlang.runtime.motion.superimposed import OffsetTrack
-from mintlang.runtime.ranges import OUT_OF_RANGE, check_range, table_bounds
+from mintlang.runtime.ranges import check_range, table_bounds
 
 NO_RAMP, RAMP, CLUTCH, CONTINUOUS_CLUTCH = 0, 1, 2, 3
 TICK_S = PROFILER_TICK_MS / 1000.0

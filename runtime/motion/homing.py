@@ -21,13 +21,12 @@ from enum import Enum
 
 from mintlang.records import record
 from mintlang.runtime.clock import NEVER
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import OUT_OF_RANGE, MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
 from mintlang.runtime.motion.axis import MD_HOMING, MOTION_IN_PROGRESS, Axis, wrap
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.moves import Geometry, PlannedMove, completion_tick, next_profiler_tick
 from mintlang.runtime.motion.profile import Profile, plan_velocity
-from mintlang.runtime.ranges import OUT_OF_RANGE
 
 NO_INPUT_SPECIFIED = 5  # _erNO_INPUT_SPECIFIED: a switch mode without HOMEINPUT [000:18526-18528]
 CREEP_SPEED = 500.0  # counts/s onto the index edge (HM-4 RC: the keyword entry, not "one count per tick")

@@ -18,12 +18,12 @@ from collections.abc import Callable
 from mintlang.keyworddb.model import Controller
 from mintlang.records import record
 from mintlang.runtime.clock import NEVER
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import OUT_OF_RANGE, MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.moves import PROFILER_TICK_MS
-from mintlang.runtime.ranges import OUT_OF_RANGE, check_range, table_bounds, table_default
+from mintlang.runtime.ranges import check_range, table_bounds, table_default
 
 MS_POS, MS_ENCODER, MS_AUXENCODER, MS_SPEED, MS_DEMAND = 0, 1, 2, 3, 4
 INVALID_MASTER_CHANNEL = 70

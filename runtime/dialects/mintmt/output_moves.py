@@ -15,13 +15,13 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from mintlang.runtime.clock import NEVER
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import MISSING_PARAMETER, OUT_OF_RANGE, TOO_MANY_VALUES, MintError
 from mintlang.runtime.io import INVALID_OUTPUT, DigitalIO
 from mintlang.runtime.io_banks import with_bit
 from mintlang.runtime.keywords import Channels, IndexedWriter, KeywordTable, Values
 from mintlang.runtime.motion.axis import Request
-from mintlang.runtime.motion.commands import MISSING_PARAMETER, TOO_MANY_VALUES, Motion
-from mintlang.runtime.ranges import OUT_OF_RANGE, UNBOUNDED, check_range, table_bounds
+from mintlang.runtime.motion.commands import Motion
+from mintlang.runtime.ranges import UNBOUNDED, check_range, table_bounds
 
 
 class OutputMoves:

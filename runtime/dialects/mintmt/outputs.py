@@ -3,9 +3,8 @@
 from __future__ import annotations
 
 from mintlang.keyworddb.supplements import WRITTEN_AS
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import MISSING_PARAMETER, MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
-from mintlang.runtime.motion.commands import MISSING_PARAMETER
 
 
 def install(table: KeywordTable) -> None:

@@ -20,7 +20,7 @@ from types import MappingProxyType
 from mintlang.keyworddb.v3_ranges import AXIS_PARAMETERS
 from mintlang.runtime.dialects.v3.handlers import V4Handlers
 from mintlang.runtime.dialects.v3.parameters import CHECKED_IN_V3, RENAMED, power_up
-from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.errors import INVALID_AXIS, OUT_OF_RANGE, MintError, NotSimulated
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer, per_channel
 from mintlang.runtime.motion.axis import (
     ER_ABORT,
@@ -41,8 +41,6 @@ from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.moves import next_profiler_tick
 from mintlang.runtime.ranges import UNBOUNDED
 
-OUT_OF_RANGE = 3
-INVALID_AXIS = 2
 SERVO_OFF = 40  # the v4 error for a drive that is off, which v3 reports as "Servo off"
 DECEL_ENABLED = 1  # AXISCON bit 0 (001:6024)
 SERVOFF_MODE = 1.0  # _servoff (001:10040)

@@ -13,11 +13,10 @@ from types import MappingProxyType
 
 from mintlang.keyworddb.v3_ranges import AXIS_PARAMETERS
 from mintlang.runtime.dialects.v3.handlers import V4Handlers
-from mintlang.runtime.errors import MintError
+from mintlang.runtime.errors import OUT_OF_RANGE, MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, per_channel
 from mintlang.runtime.motion.commands import Motion
 
-OUT_OF_RANGE = 3
 STOPMODES: Mapping[float, float] = MappingProxyType({1.0: 1.0, 2.0: 2.0})  # STOPMODE -> STOPINPUTMODE
 
 

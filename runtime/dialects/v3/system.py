@@ -24,7 +24,7 @@ from collections.abc import Callable, Sequence
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.dialects.v3.controllers import ERROR_INPUT, USER_INPUTS
 from mintlang.runtime.dialects.v3.handlers import V4Handlers
-from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.errors import OUT_OF_RANGE, MintError, NotSimulated
 from mintlang.runtime.events import EventClass, Events
 from mintlang.runtime.interpreter.vm import Interpreter
 from mintlang.runtime.io import DigitalIO
@@ -33,7 +33,6 @@ from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.system import System
 from mintlang.runtime.terminal import Terminal
 
-OUT_OF_RANGE = 3
 LOOP_MS = 2  # LOOPTIME 2, the default (001:9906-9912)
 TIME_WRAP_MS = 65536 * LOOP_MS
 ANALOG_COUNTS = 1024  # 10 bits (001:5760)

@@ -320,7 +320,11 @@ def _labels(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
 
 
 def event_names(snapshot: Snapshot) -> list[str]:
-    """The handlers the configured controller calls: #ONERROR, #IN0 .. #INx, #FASTINx ..."""
+    """The handlers the configured controller calls: #ONERROR, #IN0 .. #INx, #FASTINx ...; in a v3 program the
+    v3 guide's: #ONERROR, #STOP, #IN0 .. #IN7 and #FASTPOS (001:414-417, 2523-2525)."""
+    if snapshot.settings.dialect is Dialect.V3:
+        handlers = (name.removeprefix("#") for name in database().v3_keywords if name.startswith("#"))
+        return [name for name in handlers if event_of(name, Dialect.V3) is not None]
     target = snapshot.model.controller
     numbered = {
         "IN": range(target.digital_inputs.low, target.digital_inputs.high + 1),

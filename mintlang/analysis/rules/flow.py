@@ -293,7 +293,8 @@ class _Flow:
             return True
         if word in ("ENDEVENT", *_SEPARATE_BLOCKS.values()) and self.around is not None:
             self._end_dead_run()
-            self._restore(self.around)
+            # dead code after the block is a run of its own: the block between is live, and no fix removes it
+            self._restore(self.around._replace(reported=False))
             self.around = None
             return True
         return False

@@ -231,6 +231,7 @@ class _Flow:
         self.loops: list[_Loop] = []
         self.ifs: list[_If] = []
         self.around: _State | None = None  # the flow outside the MintMT Event or Startup block being followed
+        self.startup = False  # in a MintMT Startup block: run at power-up, which no GOSUB called
         self.line = n.PlacedLine(0, 0, n.LineSyntax("", Span(0, 0), None, ()), "")  # the line being followed
         self.found: list[Finding] = []
         self.run_into: set[int] = set()  # the lines of the subroutine labels the code above them runs into
@@ -289,13 +290,14 @@ class _Flow:
         if type(statement) is n.EventBlock or word in _SEPARATE_BLOCKS:
             self._end_dead_run()
             self.around = self._state()
+            self.startup = word in _SEPARATE_BLOCKS
             self._restore(_State(True, False, False, False, None, False))
             return True
         if word in ("ENDEVENT", *_SEPARATE_BLOCKS.values()) and self.around is not None:
             self._end_dead_run()
             # dead code after the block is a run of its own: the block between is live, and no fix removes it
             self._restore(self.around._replace(reported=False))
-            self.around = None
+            self.around, self.startup = None, False
             return True
         return False
 
@@ -369,13 +371,16 @@ class _Flow:
             self._return(statement)
 
     def _return(self, statement: n.BlockWord) -> None:
-        """A RETURN of the main program: no GOSUB called it (2010, 000:18965-18978)."""
+        """A RETURN of the main program, or of a MintMT Startup block: no GOSUB called it (2010, 000:18965-18978)."""
         span = self.line.span(statement.span)
         if self.falling_from_main:
             into = self.subroutine.text if self.subroutine else ""
             detail = f"the main program has no END and runs on into #{into}, so this RETURN has no GOSUB to return to"
             self._report(mint_error(2010, span, detail, severity=Severity.WARNING))
             self.falling_from_main = False
+        elif self.subroutine is None and self.reachable and self.startup:
+            detail = "this RETURN is in the Startup block, which the controller runs at power-up and no GOSUB called"
+            self._report(mint_error(2010, span, detail))
         elif self.subroutine is None and self.main_from_the_top and self.reachable and self.around is None:
             detail = "this RETURN is in the main program, which no GOSUB called: end the main program with END"
             self._report(mint_error(2010, span, detail))

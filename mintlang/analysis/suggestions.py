@@ -45,6 +45,13 @@ def one_slip_apart(word: str, other: str) -> bool:
 # Block words of other BASICs, which Mint spells otherwise (3.7.3: a WHILE loop ends with ENDW).
 OTHER_BASICS = {"WEND": "ENDW", "ENDWHILE": "ENDW"}
 
+# Block words of other BASICs that no Mint word replaces, with how Mint writes what they do: an IF block has
+# one ELSE, alone on its line, and an IF nested in it has its own ENDIF (000:1589-1600, 1633-1654).
+OTHER_BASICS_WRITTEN = {
+    "ELSEIF": "an IF block has no ELSEIF: write ELSE on its own line, then an IF block of its own inside it, "
+    "closed before the outer one",
+}
+
 
 @cache
 def _keywords_of(controller: Controller | None, *, values: bool, dialect: Dialect) -> tuple[str, ...]:
@@ -77,12 +84,16 @@ def keyword_like(
 ) -> str | None:
     """The keyword of ``controller`` (any, when None) in ``dialect`` that ``word`` (upper case) is most likely a
     misspelling of; with ``values``, a keyword that holds a value, for a word used as a variable."""
+    if word in OTHER_BASICS_WRITTEN:
+        return None
     return OTHER_BASICS.get(word) or closest(word, _keywords_of(controller, values=values, dialect=dialect))
 
 
 def not_a_keyword(word: str, meant: str | None, *, alone: bool = False) -> str:
     """Error 3007's detail for ``word``, with the keyword ``meant`` if it resembles one. A word ``alone`` as a
     statement that resembles none may be a variable its author meant to give a value (000:877-879)."""
+    if (written := OTHER_BASICS_WRITTEN.get(word.upper())) is not None:
+        return f"'{word}' is not a keyword ({written})"
     hint = did_you_mean(meant) if meant is not None else "check the spelling and the abbreviation"
     if alone and meant is None:
         hint += f"; a variable alone is no statement: give it a value, {word} = …"

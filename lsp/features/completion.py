@@ -39,8 +39,9 @@ from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Settings, Snapshot
 from mintlang.records import record
 from mintlang.semantic.blocks import Block, BlockKind
-from mintlang.semantic.events import event_of
+from mintlang.semantic.events import Event, event_of
 from mintlang.semantic.symbols import SymbolKind
+from mintlang.syntax import nodes as n
 from mintlang.syntax.common import shared_ends
 from mintlang.syntax.lines import MacroDefinition
 from mintlang.syntax.tokens import Token, TokenKind
@@ -371,12 +372,29 @@ def _mintmt_block_words(blocks: OpenBlocks | None) -> Iterator[types.CompletionI
         )
 
 
-def _event_blocks(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
-    """After MintMT's ``Event``: the events a block can handle, the notes' spelt as they spell them, then v4's
-    handlers' the controller calls (MT-13)."""
+def _event_blocks_elsewhere(snapshot: Snapshot, line: int) -> set[Event | None]:
+    """The events MintMT's Event blocks handle, but for one on ``line`` (0-based), being typed."""
+    placed = {found.number: found for found in snapshot.document.placed}  # by 1-based line, as blocks are
+    handled: set[Event | None] = set()
+    for block in snapshot.model.structures[snapshot.unit].blocks:
+        if block.kind is not BlockKind.EVENT or block.opener.line == line + 1 or block.opener.line not in placed:
+            continue
+        opener = n.flatten_statements(placed[block.opener.line].syntax.statements)[block.opener.index]
+        if isinstance(opener, n.EventBlock):
+            handled.add(event_of(opener.name.text, Dialect.MINTMT))
+    return handled
+
+
+def _event_blocks(snapshot: Snapshot, line: int) -> Iterator[types.CompletionItem]:
+    """After MintMT's ``Event`` on ``line``: the events a block can handle, the notes' spelt as they spell them,
+    then v4's handlers' the controller calls; not those the program handles already, by an Event block or a
+    label, as a second handler of an event is an error (MT-13)."""
     spelt = {event_of(name, Dialect.MINTMT) for name in mintmt_words.EVENT_BLOCK_NAMES}
     v4 = [name for name in event_names(snapshot) if event_of(name, Dialect.MINTMT) not in spelt]
+    handled = _handled_elsewhere(snapshot, line) | _event_blocks_elsewhere(snapshot, line)
     for name in (*mintmt_words.EVENT_BLOCK_NAMES, *v4):
+        if event_of(name, Dialect.MINTMT) in handled:
+            continue
         yield types.CompletionItem(
             label=name,
             kind=types.CompletionItemKind.Event,
@@ -556,7 +574,7 @@ def complete(
         return listed
     previous = before[-1] if before else None
     if previous is not None and previous.kind is TokenKind.EVENT:
-        return list(_event_blocks(snapshot))
+        return list(_event_blocks(snapshot, cursor.line))
     if previous is not None and (previous.kind in _NOTHING_AFTER or previous.text.endswith(".")):
         return []  # a new name, a complete statement, or the decimals of a number
     if partial is not None and partial.text.startswith("_"):

@@ -57,3 +57,17 @@ async def test_after_event_the_v4_events_are_offered_too(client: LanguageClient)
     assert {"Comms1", "MOVEBUFFERLOW", "ONERROR", "TIMER", "STOP", "IN0", "FASTIN0", "CAN1"} <= set(labels)
     assert "COMMS1" not in labels  # the notes spell it Comms1 (002:82), offered once
     assert all(item.documentation is not None for item in items)
+
+
+async def test_after_event_an_event_already_handled_is_not_offered(client: LanguageClient) -> None:
+    # a second block for an event already handled, by an Event block or by v4's label, is error 2003 (MT-13),
+    # as a second handler label is after '#' (E3004)
+    uri = "file:///work/event_handled.mnt"
+    text = "Loop\nEnd Loop\nEvent Comms1\nEnd Event\n#TIMER\nReturn\nEvent \n"
+    await open_document(client, uri, text)
+    found = await client.text_document_completion_async(
+        types.CompletionParams(text_document=document(uri), position=position(text, "Event \n", 6))
+    )
+    labels = {item.label for item in (found.items if isinstance(found, types.CompletionList) else found or [])}
+    assert {"Comms2", "MOVEBUFFERLOW", "ONERROR"} <= labels
+    assert not {"Comms1", "TIMER"} & labels

@@ -444,9 +444,9 @@ def _handled_elsewhere(snapshot: Snapshot, line: int) -> set[object]:
 
 def _events(snapshot: Snapshot, hash_: Token, cursor: types.Position) -> list[types.CompletionItem]:
     """Handler names replacing the ``#...`` typed so far, whichever characters the client counts as a word;
-    not those of the events the program handles already."""
+    not those of the events the program handles already, by a label or by MintMT's Event block (MT-13)."""
     typed = types.Range(start=types.Position(cursor.line, cursor.character - len(hash_.text)), end=cursor)
-    handled = _handled_elsewhere(snapshot, cursor.line)
+    handled = _handled_elsewhere(snapshot, cursor.line) | _event_blocks_elsewhere(snapshot, cursor.line)
     return [
         types.CompletionItem(
             label=f"#{name}",

@@ -71,3 +71,16 @@ async def test_after_event_an_event_already_handled_is_not_offered(client: Langu
     labels = {item.label for item in (found.items if isinstance(found, types.CompletionList) else found or [])}
     assert {"Comms2", "MOVEBUFFERLOW", "ONERROR"} <= labels
     assert not {"Comms1", "TIMER"} & labels
+
+
+async def test_after_hash_an_event_an_event_block_handles_is_not_offered(client: LanguageClient) -> None:
+    # MT-13: a v4 label for an event an Event block handles (#COMMS1 beside Event Comms1) is error 2003
+    uri = "file:///work/hash_handled.mnt"
+    text = "Loop\nEnd Loop\nEvent Comms1\nEnd Event\n#\n"
+    await open_document(client, uri, text)
+    found = await client.text_document_completion_async(
+        types.CompletionParams(text_document=document(uri), position=position(text, "#\n", 1))
+    )
+    labels = {item.label for item in (found.items if isinstance(found, types.CompletionList) else found or [])}
+    assert {"#COMMS2", "#TIMER"} <= labels
+    assert "#COMMS1" not in labels

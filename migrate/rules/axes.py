@@ -5,13 +5,16 @@ once, in straight-line code, so the default at a statement is taken from the
 last ``AXES[...]`` with constant axes written before it, in compile order
 (configuration, then program). An AXES inside a block or with a computed list
 makes the default unknown, and the rules that need it fall back to a manual item.
+So does an AXES in a subroutine (below a label) for the lines above it in its file
+and for the files after it: a GOSUB runs it before them (``GOSUB init`` first,
+v3:873-901); below it, as the guide's ``#init`` then ``#main``, its default holds.
 """
 
 from __future__ import annotations
 
 from bisect import bisect_left
 
-from mintlang.migrate.context import Context, FileView
+from mintlang.migrate.context import LABEL, Context, FileView
 from mintlang.records import record
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -50,7 +53,13 @@ class _Timeline:
     @classmethod
     def build(cls, context: Context) -> _Timeline:
         changes: dict[Unit, tuple[list[int], list[Axes]]] = {}
+        first_label: dict[Unit, int] = {}  # where each file's first label line starts
+        for file, line in context.placed(LABEL):
+            first_label.setdefault(file.unit, line.origin)
+        in_subroutine: set[Unit] = set()  # the files with an AXES below a label
         for file, line in context.placed(n.Axes):
+            if file.unit in first_label and line.origin > first_label[file.unit]:
+                in_subroutine.add(file.unit)
             starts, defaults = changes.setdefault(file.unit, ([], []))
             latest = -1  # the greatest start so far on the line: a body is read after its IF
             for statement in n.flatten_statements(line.syntax.statements):
@@ -62,8 +71,10 @@ class _Timeline:
         entering: dict[Unit, Axes] = {}
         last: dict[Unit, int] = {}
         for file in context.compiled:
-            entering[file.unit] = axes
+            entering[file.unit] = None if file.unit in in_subroutine else axes
             axes = changes[file.unit][1][-1] if file.unit in changes else axes
+            if file.unit in in_subroutine:
+                axes = None  # whether and when the subroutine ran is not known
             final = _last_start(file.document.placed)
             if final is not None:
                 last[file.unit] = final

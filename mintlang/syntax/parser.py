@@ -546,6 +546,10 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
     if not at_end and _K.USING in kinds[begin:index]:  # PRINT a USING 4,1, b: USING ends its statement
         command = "PRINT" if line.texts[begin] == "?" else line.texts[begin].upper()
         return _error(2003, span, f"nothing may follow USING and its digit counts: write the rest in another {command}")
+    if segment[0] is _K.IF and not at_end and kinds[index] is _K.DO and kinds[index - 1] is _K.THEN:
+        # IF a THEN DO: IF .. THEN runs its line, IF .. DO opens a block (000:1573-1578, 1594-1600)
+        detail = "THEN and DO both follow the condition: IF .. DO opens a block closed by ENDIF, "
+        return _error(2006, span, detail + "IF .. THEN runs the rest of its line")
     if not at_end and kinds[index] in _KEYWORD_KINDS and "NAME" in expected:
         word = line.texts[index]
         role = "a label" if index > begin and kinds[index - 1] in (_K.GOSUB, _K.GOTO) else "a variable"

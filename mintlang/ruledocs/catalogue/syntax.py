@@ -103,7 +103,8 @@ GROUP = Group(
         RuleDoc(
             2006,
             catches="An editor command (NEW, EDIT, LIST ...) written in a program, or a reserved keyword used "
-            "as a variable or label name (`FOR loop = 1 TO 10`, `INPUT x, SPEED`).",
+            "as a variable or label name (`FOR loop = 1 TO 10`, `INPUT x, SPEED`), as DO is after THEN "
+            "(`IF a THEN DO`: the two forms of IF written together).",
             why="Editor commands work only at the controller's command line. Keywords are reserved: a "
             "variable called LOOP or SPEED cannot be declared, so the statement is rejected. RELEASE in a "
             "configuration file and RUN PROG / RUN CON are allowed, as the guide uses them.",
@@ -111,8 +112,9 @@ GROUP = Group(
                 before="DIM count\nFOR loop = 1 TO 10\n  count = count + 1\nNEXT\n",
                 after="DIM count\nDIM i\nFOR i = 1 TO 10\n  count = count + 1\nNEXT\n",
             ),
-            manual=("v4:18935", "v4:5509"),
-            fix="Renaming a variable means choosing a new name for every use.",
+            manual=("v4:18935", "v4:5509", "v4:1573", "v4:1594"),
+            fix="Renaming a variable means choosing a new name for every use; after IF, which of THEN and DO "
+            "was meant depends on the lines that follow.",
             safety=FixSafety.NONE,
         ),
         RuleDoc(

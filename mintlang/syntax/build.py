@@ -452,15 +452,24 @@ def _selector(tree: Tree, keyword: Child) -> Make[n.Selector]:
         items, dot = _axis_items(items_tree), False
     else:
         items, dot = _sequence([_dot_value(child) for child in _trees(tree) if child.data == "dot_value"]), True
+    index = _index(keyword)
 
     def make(line: LogicalLine, words: Vocabulary) -> n.Selector:
         at, found = span(line, words), items(line, words)
+        indices = _dot_indices(line, words, index, found) if dot and len(found) > 1 else 0
         if any(type(item) is not n.Number for item in found):  # an expression: ``.(a+1)``
-            return n.Selector(at, dot, found)
-        key = (at, dot, *map(id, found))
-        return _selectors.get(key) or _kept(_selectors, key, n.Selector(at, dot, found))
+            return n.Selector(at, dot, found, indices)
+        key = (at, dot, indices, *map(id, found))
+        return _selectors.get(key) or _kept(_selectors, key, n.Selector(at, dot, found, indices))
 
     return make
+
+
+def _dot_indices(line: LogicalLine, words: Vocabulary, index: int, found: tuple[n.Expression | None, ...]) -> int:
+    """How many values after the axis's are a MintMT keyword's indices in v4's dot form: the move buffer note
+    writes the inter-vector angle ``CONTOURPARAMETER.axis.0`` (004:223), as ``CONTOURPARAMETER(axis, 0)``."""
+    upper = line.texts[index].upper()
+    return min(words.indices.get(words.canonical.get(upper, upper), 0), len(found) - 1)
 
 
 def _axis_items(tree: Tree) -> Make[tuple[n.Expression | None, ...]]:

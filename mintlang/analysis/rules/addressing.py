@@ -251,7 +251,7 @@ def _one_number_after_the_dot(ref: n.KeywordRef, addressed: str, *, brackets: bo
             f"{ref.spelling} already names channel {ref.channel}: no {'dot' if selector.dot else 'brackets'} after it",
         )
     where = "after its dot" if selector.dot else "between its brackets"
-    if len(selector.items) > 1 and (first := selector.items[0]) is not None:
+    if len(selector.axes) > 1 and (first := selector.items[0]) is not None:
         detail = f"{ref.keyword} takes one {addressed} number {where}"
         if addressed == "axis":
             detail += " (several axes are listed in brackets)"

@@ -66,7 +66,7 @@ class AccelAlsoDecel(Rule):
                     yield self.flag(
                         file,
                         accel.span,
-                        "the value may change between two reads and the axes are computed: "
+                        "the value may change between two reads and the axes are not known: "
                         f"write {decel} from a variable holding the value",
                     )
                 else:
@@ -161,7 +161,7 @@ def _changes_between_reads(accel: n.KeywordStatement, pairs: dict[str, str]) -> 
 
 def _read_back(context: Context, file: FileView, accel: n.KeywordStatement, decel: str) -> str | None:
     """``decel`` written with the axes of ``accel`` and, for each value it set, a read of that
-    axis' new ACCEL; None when several axes, or the places of the values, are not known."""
+    axis' new ACCEL; None when the places of several values are not known."""
     source = like(accel.keyword.spelling, accel.keyword.keyword)
     selector = selector_text(file, accel.keyword)
     target = like(accel.keyword.spelling, decel)
@@ -173,8 +173,11 @@ def _read_back(context: Context, file: FileView, accel: n.KeywordStatement, dece
         while not reads[-1]:
             reads.pop()
         return f"{target}{selector} = {','.join(reads)}"
-    items = accel.keyword.selector.items if accel.keyword.selector is not None else ()
-    if len(items) == 1 and len(accel.values or ()) == 1:  # one computed axis: ACCEL[ax] = v
+    if len(accel.values or ()) != 1:
+        return None
+    if accel.keyword.selector is None:  # the first default axis, or all of them alike with ``;`` (v3:1052-1109)
+        return f"{target} = {source}{';' if accel.fill else ''}"
+    if len(accel.keyword.selector.items) == 1:  # one computed axis: ACCEL[ax] = v
         return f"{target}{selector} = {source}{selector}"
     return None
 

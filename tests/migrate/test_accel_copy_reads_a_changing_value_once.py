@@ -6,7 +6,8 @@ as ``: DECEL = INKEY * 1000`` the v4 program would read a second key (000:12135-
 another rate. The same holds for an input, an analogue reading, a position, TIME or the COMMS array,
 which the controller or the host changes between two statements. v4 reads ACCEL back
 (``v = ACCEL[axis]``, 000:6150-6152), so the DECEL write reads the value the ACCEL write set, axis
-by axis in the order the ACCEL write gave them (001:1052-1109).
+by axis in the order the ACCEL write gave them (001:1052-1109); where the default axes are not known,
+a bare ``DECEL = ACCEL`` reads and writes the first of them, and ``;`` fills the rest alike.
 """
 
 from __future__ import annotations
@@ -29,6 +30,14 @@ CASES = [
     pytest.param("AXES[0,1]\nACCEL = ,TIME\n", "AXES[0,1]\nACCEL = ,TIME : DECEL = ,ACCEL.1\n", id="a place skipped"),
     pytest.param("ACCEL[ax] = IN * 100\n", "ACCEL[ax] = IN * 100 : DECEL[ax] = ACCEL[ax]\n", id="a computed axis"),
     pytest.param("ACCELTIME.1 = INKEY\n", "ACCELTIME.1 = INKEY : DECELTIME.1 = ACCELTIME.1\n", id="ACCELTIME"),
+    pytest.param(
+        "IF a THEN AXES[0,1]\nACCEL = IN;\n",
+        "IF a THEN AXES[0,1]\nACCEL = IN; : DECEL = ACCEL;\n",
+        id="default axes not known, filled alike",
+    ),
+    pytest.param(
+        "IF a THEN AXES[0,1]\nACCEL = IN\n", "IF a THEN AXES[0,1]\nACCEL = IN : DECEL = ACCEL\n", id="its first axis"
+    ),
 ]
 
 
@@ -51,8 +60,9 @@ def test_a_value_of_plain_numbers_and_variables_is_still_copied() -> None:
     )
 
 
-def test_several_computed_axes_are_left_for_a_person() -> None:
-    assert flagged("S-ACCEL", "ACCEL[a,b] = INKEY, 5\n") == [
-        "the value may change between two reads and the axes are computed: "
+@pytest.mark.parametrize("source", ["ACCEL[a,b] = INKEY, 5\n", "IF a THEN AXES[0,1]\nACCEL = INKEY, 5\n"])
+def test_several_values_on_axes_not_known_are_left_for_a_person(source: str) -> None:
+    assert flagged("S-ACCEL", source) == [
+        "the value may change between two reads and the axes are not known: "
         "write DECEL from a variable holding the value"
     ]

@@ -1,12 +1,14 @@
 """Call hierarchy: who jumps to a subroutine, and where a subroutine or the main program jumps to.
 
 The parts of a file call one another: the main program (from the top to the
-first label) and each labelled section (from its label to the next, as in the
-outline). A GOSUB or a GOTO is a call from the part it stands in to the label
-it names; one written in a macro's text calls from where the macro is used,
-where it runs. Event handlers have no caller in the program: the controller
-calls them, which their detail says. Labels are per file, so the hierarchy
-stays in the file it starts from.
+first label), each labelled section (from its label to the next, as in the
+outline) and each of MintMT's Event and Startup blocks, which the program never
+runs into (MT-7): a jump in one is the block's, wherever it stands. A GOSUB or
+a GOTO is a call from the part it stands in to the label it names; one written
+in a macro's text calls from where the macro is used, where it runs. Event
+handlers have no caller in the program: the controller calls them, which their
+detail says. Labels are per file, so the hierarchy stays in the file it starts
+from.
 """
 
 from __future__ import annotations
@@ -16,7 +18,7 @@ from collections.abc import Iterator
 from lsprotocol import types
 
 from mintlang.diagnostics import Span
-from mintlang.lsp.features.symbols import sections
+from mintlang.lsp.features.symbols import MintmtBlock, mintmt_blocks, sections
 from mintlang.lsp.occurrences import symbol_at
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
@@ -30,15 +32,19 @@ MAIN = "main program"
 
 @record
 class Part:
-    """The main program (``label`` None) or a labelled section: offsets from its first line to the next part's."""
+    """The main program (``label`` and ``block`` None), a labelled section (offsets from its first line to the
+    next part's) or a MintMT block (its own span)."""
 
     label: Symbol | None
     start: int
     end: int
+    block: MintmtBlock | None = None
 
     @property
     def key(self) -> str | None:
-        """What names the part in an item's data: its label's identity."""
+        """What names the part in an item's data: its label's identity, or the block's outline name."""
+        if self.block is not None:
+            return self.block.name
         return self.label.identity if self.label is not None else None
 
 
@@ -51,14 +57,16 @@ class Jump:
 
 
 def parts(snapshot: Snapshot) -> list[Part]:
-    """The parts of the snapshot's file in order; the main program only when something comes before a label."""
+    """The MintMT blocks, first, since the main program's or a section's offsets may hold one; then the parts of
+    the snapshot's file in order, the main program only when something comes before a label."""
     positions = snapshot.positions
+    blocks = [Part(None, block.span.start, block.span.end, block) for block in mintmt_blocks(snapshot)]
     labelled = sections(snapshot)
     starts = [positions.line_start(section.first_line) for section in labelled]
     ends = [*starts[1:], len(snapshot.document.source)] if starts else []
     found = [Part(section.symbol, start, end) for section, start, end in zip(labelled, starts, ends, strict=True)]
     top = starts[0] if starts else len(snapshot.document.source)
-    return [Part(None, 0, top), *found] if top > 0 or not found else found
+    return [*blocks, Part(None, 0, top), *found] if top > 0 or not found else [*blocks, *found]
 
 
 def jumps(snapshot: Snapshot) -> Iterator[Jump]:
@@ -78,6 +86,12 @@ def item(snapshot: Snapshot, part: Part) -> types.CallHierarchyItem:
     positions = snapshot.positions
     whole = positions.range(Span(part.start, part.end))
     data = {"uri": snapshot.uri, "label": part.key}
+    if part.block is not None:
+        event = part.block.is_event
+        kind = types.SymbolKind.Event if event else types.SymbolKind.Constructor
+        detail = "event handler: the controller calls it" if event else "power-up code: the controller runs it"
+        selection = positions.range(part.block.selection)
+        return types.CallHierarchyItem(part.block.name, kind, snapshot.uri, whole, selection, detail=detail, data=data)
     if part.label is None:
         top = positions.range(Span(0, 0))
         return types.CallHierarchyItem(MAIN, types.SymbolKind.Module, snapshot.uri, whole, top, data=data)
@@ -110,7 +124,7 @@ def incoming(snapshot: Snapshot, key: str | None) -> list[types.CallHierarchyInc
             callers.setdefault(found.index(caller), []).append(snapshot.positions.range(jump.span))
     return [
         types.CallHierarchyIncomingCall(from_=item(snapshot, found[index]), from_ranges=ranges)
-        for index, ranges in sorted(callers.items())
+        for index, ranges in sorted(callers.items(), key=lambda called: found[called[0]].start)
     ]
 
 
@@ -121,7 +135,7 @@ def outgoing(snapshot: Snapshot, key: str | None) -> list[types.CallHierarchyOut
     targets = {candidate.key: candidate for candidate in found if candidate.label is not None}
     called: dict[str, list[types.Range]] = {}
     for jump in jumps(snapshot):
-        if part is not None and part.start <= jump.span.start < part.end and jump.target in targets:
+        if part is not None and _containing(found, jump.span.start) is part and jump.target in targets:
             called.setdefault(jump.target, []).append(snapshot.positions.range(jump.span))
     return [
         types.CallHierarchyOutgoingCall(to=item(snapshot, targets[target]), from_ranges=ranges)

@@ -112,30 +112,50 @@ def _mintmt_blocks_of(snapshot: Snapshot) -> list[Block]:
     ]
 
 
-def _mintmt_blocks(snapshot: Snapshot) -> Iterator[types.DocumentSymbol]:
-    """MintMT's ``Event NAME`` and ``Startup`` blocks, from the opener to the end of the closer's line (or of
-    the file, when never closed), selected at the event's name or the word ``Startup``."""
+@record
+class MintmtBlock:
+    """One of MintMT's ``Event NAME`` and ``Startup`` blocks: its outline name, its span from the opener to the
+    end of the closer's line (or of the file, when never closed), and the span of the event's name or of the
+    word ``Startup``."""
+
+    name: str
+    span: Span
+    selection: Span
+    is_event: bool
+
+
+def mintmt_blocks(snapshot: Snapshot) -> list[MintmtBlock]:
+    """The file's Event and Startup blocks, in order."""
     blocks = _mintmt_blocks_of(snapshot)
     if not blocks:
-        return
-    positions = snapshot.positions
+        return []
     lines = {line.number: line for line in snapshot.document.placed}
 
     def span_of(place: Place) -> Span:
         line = lines[place.line]
         return line.span(n.flatten_statements(line.syntax.statements)[place.index].span)
 
+    found = []
     for block in blocks:
         line = lines[block.opener.line]
         opener = n.flatten_statements(line.syntax.statements)[block.opener.index]
         event = opener.name if isinstance(opener, n.EventBlock) else None
         end = span_of(block.closer).end if block.closer is not None else len(snapshot.document.source)
+        name = "Startup" if event is None else f"Event {event.text}"
+        whole = Span(span_of(block.opener).start, end)
+        found.append(MintmtBlock(name, whole, line.span((event or opener).span), event is not None))
+    return found
+
+
+def _mintmt_blocks(snapshot: Snapshot) -> Iterator[types.DocumentSymbol]:
+    positions = snapshot.positions
+    for block in mintmt_blocks(snapshot):
         yield types.DocumentSymbol(
-            name="Startup" if event is None else f"Event {event.text}",
-            kind=types.SymbolKind.Constructor if event is None else types.SymbolKind.Event,
-            detail="power-up code" if event is None else "event handler",
-            range=positions.range(Span(span_of(block.opener).start, end)),
-            selection_range=positions.range(line.span((event or opener).span)),
+            name=block.name,
+            kind=types.SymbolKind.Event if block.is_event else types.SymbolKind.Constructor,
+            detail="event handler" if block.is_event else "power-up code",
+            range=positions.range(block.span),
+            selection_range=positions.range(block.selection),
         )
 
 

@@ -169,8 +169,11 @@ class Plan:
         return _configuration_report(configuration, seen)
 
     def program_reports(self, results: Sequence[Checked]) -> list[FileReport]:
-        """The reports of the programs alone: what ``--fix`` fixes, as it leaves configuration files as they are."""
-        return [r.report for i, r in enumerate(results) if r.report is not None and i not in self.hidden]
+        """The reports of the programs alone: what ``--fix`` fixes, as it leaves configuration files as they are,
+        and a program that looks like MintMT but is read as v4 (``Checked.hint``)."""
+        return [
+            r.report for i, r in enumerate(results) if r.report is not None and r.hint is None and i not in self.hidden
+        ]
 
 
 def _key(path: Path) -> Path:

@@ -39,3 +39,14 @@ def test_the_program_s_fixes_are_counted_beside_it(tmp_path: Path) -> None:
     assert program.read_text(encoding="utf-8") == "PRINT g\nEND\n"
     assert (tmp_path / "cell.cfg").read_text(encoding="utf-8") == CONFIGURATION
     assert fixed.stdout.endswith("Fixed 1 finding in 1 file (1 W117).\n")
+
+
+def test_a_program_that_looks_like_mintmt_is_not_counted(tmp_path: Path) -> None:
+    # Read as v4 by default, a MintMT program is left as it is by --fix (README, mint check): its findings,
+    # here the typographic quotes of W101 (a safe fix), are reported and not promised to --fix
+    program = tmp_path / "buffer.mnt"
+    program.write_text("PRINT \u201cx\u201d\nIf 1 Then\nEnd If\n", encoding="utf-8")
+    result = mint_check(program)
+    assert "warning[W101]" in result.stdout and "looks like MintMT" in result.stderr
+    assert "fixable with --fix" not in result.stdout
+    assert mint_check("--fix", program).stdout.endswith("Nothing to fix.\n")

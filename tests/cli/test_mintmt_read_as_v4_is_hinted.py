@@ -1,7 +1,8 @@
 """A MintMT program given to a tool without ``--dialect`` is read as Mint v4, and its v4 errors never name
 the option it needs: ``mint check``, ``mint-run`` and ``mint test`` say it once, on standard error, when the
 dialect was chosen by no one (not the command line, not the settings file) and the text shows MintMT's forms.
-The hint changes nothing else: the report, on standard output, and the exit status are those of v4.
+The hint changes nothing else: the report, on standard output, and the exit status are those of v4, but for
+mint check's count of what ``--fix`` would fix, as ``--fix`` leaves such a program as it is.
 """
 
 from __future__ import annotations
@@ -69,7 +70,8 @@ def test_the_hint_leaves_the_report_and_the_exit_status_as_an_explicit_v4_gives_
     assert hints(hinted) and not hints(explicit)
     assert hinted.exit_code == explicit.exit_code != 0
     if tool != "mint test":  # its report times the run
-        assert hinted.stdout == explicit.stdout
+        promised = [line for line in explicit.stdout.splitlines(keepends=True) if "fixable with --fix" in line]
+        assert hinted.stdout == explicit.stdout.replace("".join(promised), "")
 
 
 @pytest.mark.parametrize("tool", TOOLS)

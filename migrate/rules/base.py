@@ -94,6 +94,11 @@ def values_text(file: FileView, statement: n.KeywordStatement) -> str:
     return text.split("=", 1)[1].strip() if "=" in text else ""
 
 
+def same_text(first: str, second: str) -> bool:
+    """Whether two statements are written alike but for spacing and case (a rule's own earlier output)."""
+    return "".join(first.split()).upper() == "".join(second.split()).upper()
+
+
 def keyword_refs(
     context: Context, *keywords: str
 ) -> Iterator[tuple[FileView, n.PlacedLine, n.Statement, n.KeywordRef]]:

@@ -13,7 +13,7 @@ from mintlang.diagnostics import Span
 from mintlang.migrate.citations import cite, in_file
 from mintlang.migrate.context import Context, FileView, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
-from mintlang.migrate.rules.base import Action, Rule, selector_text
+from mintlang.migrate.rules.base import Action, Rule, same_text, selector_text
 from mintlang.migrate.rules.spelling import like
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -170,7 +170,7 @@ class ResetAlsoRestored(Rule):
                 if file.unit is Unit.CONFIGURATION and (_ORDER[file.unit], statement.span.start) < changed_from:
                     continue
                 restore = self.restore(file, statement)
-                if any(_normal(file.slice(later.span)) == _normal(restore) for later in statements[position + 1 :]):
+                if any(same_text(file.slice(later.span), restore) for later in statements[position + 1 :]):
                     continue  # written already (a second migration)
                 yield self.replace(file, Span(statement.span.end, statement.span.end), f" : {restore}")
 
@@ -212,10 +212,6 @@ class LimitsReset(ResetAlsoRestored):
 
 
 _ORDER = {Unit.CONFIGURATION: 0, Unit.PROGRAM: 1}  # compile order: the configuration file runs first
-
-
-def _normal(text: str) -> str:
-    return "".join(text.split()).upper()
 
 
 class ServoOff(StatementRule):

@@ -9,7 +9,7 @@ from mintlang.diagnostics import Span
 from mintlang.migrate.context import Context, FileView, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.axes import axis_values, default_axes, selector_axes
-from mintlang.migrate.rules.base import Action, Rule, selector_text, values_text
+from mintlang.migrate.rules.base import Action, Rule, same_text, selector_text, values_text
 from mintlang.migrate.rules.spelling import like
 from mintlang.migrate.rules.statements import Refusal, StatementRule
 from mintlang.semantic.v3_declarations import COMMS
@@ -103,7 +103,7 @@ class AccelAlsoDecel(Rule):
         written = _writes(beside, decel)
         if written is not None and _same_axes(file, accel, written):
             return True
-        return _normal(file.slice(beside.span)) == _normal(_decel_write(file, accel, decel))
+        return same_text(file.slice(beside.span), _decel_write(file, accel, decel))
 
 
 def _decel_may_be_on(context: Context) -> frozenset[int] | None:
@@ -185,10 +185,6 @@ def _read_back(context: Context, file: FileView, accel: n.KeywordStatement, dece
 def _decel_write(file: FileView, accel: n.KeywordStatement, decel: str) -> str:
     """``decel`` written with the axes and values of ``accel``, in its spelling's case."""
     return f"{like(accel.keyword.spelling, decel)}{selector_text(file, accel.keyword)} = {values_text(file, accel)}"
-
-
-def _normal(text: str) -> str:
-    return "".join(text.split()).upper()
 
 
 def _accel(statement: n.Statement | None) -> n.KeywordStatement | None:

@@ -50,3 +50,19 @@ def test_without_automatic_triggering_the_cam_waits_for_go() -> None:
         "CAM(0) = _cmABSOLUTE\n" + _MASTER_MOVES.format(distance=200) + "Print POS(0)\n"
     )
     assert _terminal(source) == "0\n"
+
+
+def test_a_fly_segment_a_clutch_takes_without_go_is_no_move_to_trigger() -> None:
+    """In FOLLOWMODE 3 a FLY changes the ratio of the FOLLOW in progress, which needs no GO (000:3628-3645,
+    3664-3667): automatic triggering has nothing to start there. The clutch takes the slave to ratio 1 over the
+    master's first 1000 (500) and the next 1000 at 1 make 1500; FLY 2000 over 1000 from ratio 1 ends at ratio 3,
+    the slave following 2000 over the segment and 3 x 1000 after it: 6500."""
+    source = (
+        "MASTERSOURCE(0) = _msPOS\nMASTERCHANNEL(0) = 1\nFOLLOWMODE(0) = 3\nMASTERDISTANCE(0) = 1000\n"
+        "TRIGGERMODE(0) = 0\nFOLLOW(0) = 1\n"
+        + _MASTER_MOVES.format(distance=2000)
+        + "Print POS(0)\nFLY(0) = 2000\n"
+        + _MASTER_MOVES.format(distance=2000)
+        + "Print POS(0)\n"
+    )
+    assert _terminal(source) == "1500\n6500\n"

@@ -36,7 +36,11 @@ def install(table: KeywordTable, motion: Motion) -> Callable[[Channels | None], 
         return False
 
     def loaded(channels: Channels | None) -> None:
-        automatic = [axis.number for axis in motion.addressed(channels) if modes[axis.number] == AUTOMATIC]
+        # only what went into a buffer: a FLY a FOLLOWMODE 3 clutch takes, or a MOVEA to where the axis stands,
+        # leaves nothing there to start, and GO on a following axis would be error 10
+        automatic = [
+            axis.number for axis in motion.addressed(channels) if modes[axis.number] == AUTOMATIC and axis.buffer
+        ]
         if automatic:
             motion.go(tuple(automatic), ())
 

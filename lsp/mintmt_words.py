@@ -129,7 +129,10 @@ def hover(document: Document, token: Token) -> str | None:
     word = _THEN if token.kind is TokenKind.DO and token.text.upper() == "THEN" else WORDS.get(token.kind)
     if word is not None:
         return describe(word)
+    return event_name(token.text) if names_an_event_block(document, token) else None
+
+
+def names_an_event_block(document: Document, token: Token) -> bool:
+    """Whether ``token`` is the name an ``Event`` block handles, the word after ``Event``."""
     before = significant([found for found in document.tokens_in(token.start, token.start) if found.end <= token.start])
-    if before and before[-1].kind is TokenKind.EVENT:
-        return event_name(token.text)
-    return None
+    return bool(before) and before[-1].kind is TokenKind.EVENT

@@ -29,6 +29,7 @@ from pygls.uris import from_fs_path, to_fs_path
 from mintlang.diagnostics import Span
 from mintlang.lsp import confirmation
 from mintlang.lsp.lookup import abbreviated, token_at
+from mintlang.lsp.mintmt_words import names_an_event_block
 from mintlang.lsp.occurrences import symbol_at, written
 from mintlang.lsp.positions import Positions
 from mintlang.lsp.server import MintServer
@@ -67,6 +68,8 @@ def _target(snapshot: Snapshot, offset: int) -> tuple[Symbol, Occurrence]:
             raise RenameRefused(f"#{occurrence.spelling} is an event handler: the controller calls it by this name")
         return found
     token = token_at(snapshot.document, offset)
+    if token is not None and names_an_event_block(snapshot.document, token):
+        raise RenameRefused(f"{token.text} is the event this block handles: the controller calls it by this name")
     if token is not None and token.kind not in (TokenKind.NAME, TokenKind.LABEL):
         raise RenameRefused(f"{token.text} is a Mint keyword or constant: only user names can be renamed")
     raise RenameRefused("There is no variable, array, label or macro here")

@@ -543,6 +543,8 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
             return _error(2003, line.token_span(named), f"{word} is a keyword and cannot be declared as a variable")
         if index == begin + 2 and not at_end and line.texts[index].upper() == "AS":  # every number is one type
             return _error(2003, span, "DIM takes no type: every Mint variable holds a floating point number")
+        if index == begin + 2 and not at_end and kinds[index] is _K.LSQB:  # DIM a[10]: DIM a(10) (000:9167)
+            return _square_dimension(line, begin, index, end)
     if not at_end and _K.USING in kinds[begin:index]:  # PRINT a USING 4,1, b: USING ends its statement
         command = "PRINT" if line.texts[begin] == "?" else line.texts[begin].upper()
         return _error(2003, span, f"nothing may follow USING and its digit counts: write the rest in another {command}")
@@ -560,6 +562,18 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
     if line.expanded[index if not at_end else end - 1]:
         return _error(2003, span, f"unexpected {_unexpected(found)} in the text of a macro")
     return _error(2003, span, f"unexpected {_unexpected(found)}")
+
+
+def _square_dimension(line: LogicalLine, begin: int, opening: int, end: int) -> Diagnostic:
+    """``DIM a[10]``: an array's elements are given in round brackets, and square ones address axes; the fix
+    writes ``DIM a(10)`` when a ``]`` closes the ``[``."""
+    name, span = line.texts[begin + 1], line.token_span(opening)
+    message = f"an array's size is given in round brackets: DIM {name}(...)"
+    closing = next((i for i in range(opening + 1, end) if line.kinds[i] is _K.RSQB), None)
+    if closing is None:
+        return _error(2003, span, message)
+    rounded = (Edit(line.token_span(opening), "("), Edit(line.token_span(closing), ")"))
+    return _error(2003, span, message, fixes=(Fix("Use round brackets", rounded, safe=True),))
 
 
 def _innermost_open(kinds: list[TokenKind], begin: int, end: int) -> TokenKind | None:

@@ -43,3 +43,13 @@ def test_a_use_before_the_broken_dim_is_still_undeclared() -> None:
 
 def test_another_undeclared_name_is_still_reported() -> None:
     assert [code for code, _ in _found("DIM x AS INTEGER\ny = x\n")] == ["E2003", "E3001"]
+
+
+def test_an_array_sized_in_square_brackets_is_told_the_round_ones_and_fixed() -> None:
+    # DIM array_name(<no_of_elements>) (000:9167); square brackets address axes
+    source = "DIM table[10]\ntable(1) = 5\n"
+    (error,) = mintlang.check(source)
+    assert (error.code, error.span.start) == ("E2003", len("DIM table"))
+    assert "round brackets: DIM table(...)" in error.message
+    (fix,) = error.fixes
+    assert fix.safe and mintlang.diagnostics.with_edits(source, fix.edits) == "DIM table(10)\ntable(1) = 5\n"

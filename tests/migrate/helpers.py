@@ -16,6 +16,14 @@ def rewritten(rule: str, source: str, **options: str) -> str:
     return one_rule(rule, source, **options).text
 
 
+def migrated_twice(rule: str, source: str) -> tuple[object, ...]:
+    """What ``rule`` alone makes of ``source`` and then of its own output: each text and its manual items; a rule
+    that settles gives ``(text, (), text, ())``."""
+    migrated = migrate(source, only=[rule])
+    again = migrate(migrated.text, only=[rule])
+    return (migrated.text, migrated.manual, again.text, again.manual)
+
+
 def flagged(rule: str, source: str, **options: str) -> list[str]:
     """The reasons of the manual items ``rule`` left (the text must otherwise be unchanged)."""
     result = one_rule(rule, source, **options)

@@ -49,6 +49,7 @@ from mintlang.syntax.lines import (
 )
 from mintlang.syntax.moved import bisect_right
 from mintlang.syntax.nodes import identity
+from mintlang.syntax.other_languages import other_languages_habit
 from mintlang.syntax.packed import PackedLines, PlacedDiagnostics
 from mintlang.syntax.spans import span as shared_span
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, Token, TokenKind
@@ -365,7 +366,11 @@ def _recover(  # noqa: PLR0917 - the line, its reading, and where the findings g
         span = shared_span(line.starts[begin], line.ends[end - 1])
         broken = kinds[begin:end]
         statements.append(n.SyntaxError_(span, _opened_block(broken), _closing_word(broken)))
-        issue = _misspelt_keyword(line, begin, result, words, controller) or _describe(line, begin, end, result, words)
+        issue = (
+            other_languages_habit(line, begin, end, result)
+            or _misspelt_keyword(line, begin, result, words, controller)
+            or _describe(line, begin, end, result, words)
+        )
         if issue is not None:
             diagnostics.append(issue)
     if not statements and failure.index < len(kinds) and kinds[failure.index] is _K.LABEL:

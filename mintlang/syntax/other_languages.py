@@ -1,0 +1,68 @@
+"""Statements written as C or another BASIC writes them, told how Mint writes them (a syntax error, 2003).
+
+Mint assigns with ``=`` alone and knows only ``+ - * /`` and MOD as arithmetic (000:1274-1282), so
+``count += 1`` is told ``count = count + 1``, with that as a safe fix: the target and the operator
+are both written out, and a right-hand side of more than one token is bracketed, as ``*=`` binds it.
+"""
+
+from __future__ import annotations
+
+from mintlang.codes import mint_error
+from mintlang.diagnostics import Diagnostic, Edit, Fix
+from mintlang.syntax.grammar import ParseFailure
+from mintlang.syntax.lines import LogicalLine
+from mintlang.syntax.spans import span as shared_span
+from mintlang.syntax.tokens import TokenKind
+
+_K = TokenKind
+_ARITHMETIC = frozenset({_K.PLUS, _K.MINUS, _K.STAR, _K.SLASH})
+_BRACKETS = {_K.LPAR: 1, _K.LSQB: 1, _K.RPAR: -1, _K.RSQB: -1}
+
+
+def other_languages_habit(line: LogicalLine, begin: int, end: int, failure: ParseFailure) -> Diagnostic | None:
+    """The diagnostic for the statement from ``begin`` to ``end`` if it fails where another language's way of
+    writing it shows."""
+    return _compound_assignment(line, begin, end, begin + failure.index)
+
+
+def _compound_assignment(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
+    """``count += 1``: an operator joined to the ``=`` of an assignment, the grammar failing at one of the two."""
+    kinds = line.kinds
+    operator = _first_at_the_top(kinds, begin, end, _K.EQUAL) - 1
+    if (
+        operator <= begin
+        or failed not in (operator, operator + 1)
+        or kinds[operator] not in _ARITHMETIC
+        or line.ends[operator] != line.starts[operator + 1]
+        or operator + 2 >= end
+        or any(line.expanded[begin:end])  # a macro's text: its tokens are not where the fix would write
+    ):
+        return None
+    target = _written(line, begin, operator)
+    written = line.texts[operator]
+    value = _written(line, operator + 2, end)
+    value = value if end - operator - 2 == 1 else f"({value})"
+    joined = shared_span(line.starts[operator], line.ends[operator + 1])
+    rewrite = Edit(shared_span(line.starts[operator], line.ends[end - 1]), f"= {target} {written} {value}")
+    fix = Fix(f"Write {target} = {target} {written} {value}", (rewrite,), safe=True)
+    message = f"Mint has no '{written}=': write {target} = {target} {written} {value}"
+    return mint_error(2003, joined, message, fixes=(fix,))
+
+
+def _written(line: LogicalLine, first: int, end: int) -> str:
+    """The tokens from ``first`` to ``end`` as written, a space where they were apart."""
+    texts = [line.texts[first]]
+    for index in range(first + 1, end):
+        texts.append(f" {line.texts[index]}" if line.starts[index] > line.ends[index - 1] else line.texts[index])
+    return "".join(texts)
+
+
+def _first_at_the_top(kinds: list[TokenKind], begin: int, end: int, wanted: TokenKind) -> int:
+    """The index of the first ``wanted`` outside brackets from ``begin`` (``end`` if none)."""
+    depth = 0
+    for index in range(begin, end):
+        kind = kinds[index]
+        if kind is wanted and depth == 0:
+            return index
+        depth = max(0, depth + _BRACKETS.get(kind, 0))
+    return end

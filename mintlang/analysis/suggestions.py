@@ -7,7 +7,7 @@ from functools import cache
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Controller, Keyword, KeywordKind
+from mintlang.keyworddb.model import Addressing, Controller, Keyword, KeywordKind
 
 NAME_LIKENESS = 0.8  # difflib's ratio: 'IDL' is 0.86 like 'IDLE', 'pos' 0.67 like 'post'
 _ONE_SLIP_FROM = 3  # words this long or longer are matched one slip of the finger away whatever the ratio
@@ -53,16 +53,24 @@ OTHER_BASICS_WRITTEN = {
 }
 
 
+# The jumps, which name a label (GOSUB, GOTO: 000:11146, 11187-11188): a word alone on its statement is none.
+_NAMING_A_LABEL = frozenset({"GOSUB", "GOTO"})
+
+
 @cache
-def _keywords_of(controller: Controller | None, *, values: bool, dialect: Dialect) -> tuple[str, ...]:
+def _keywords_of(
+    controller: Controller | None, *, values: bool, dialect: Dialect, axes: bool = False, alone: bool = False
+) -> tuple[str, ...]:
     """The keywords a program for ``controller`` (any, when None) in ``dialect`` can use, by their full names
     (not the editor's commands); with ``values``, only those read or written (SPEED, POS), not commands or block
-    words."""
+    words; with ``axes``, only those that take an axis or channel; ``alone``, none that names a label."""
     found = []
     for name, keyword in database().keywords_of(dialect).items():
         if keyword.kind is KeywordKind.COMMAND_LINE:
             continue
         if controller is not None and not keyword.available_on(controller):
+            continue
+        if (axes and keyword.addressing is Addressing.NONE) or (alone and name in _NAMING_A_LABEL):
             continue
         if not values or _holds_a_value(keyword, controller):
             found.append(name)
@@ -80,13 +88,21 @@ def _holds_a_value(keyword: Keyword, controller: Controller | None) -> bool:
 
 @cache
 def keyword_like(
-    word: str, controller: Controller | None, *, values: bool = False, dialect: Dialect = Dialect.V4
+    word: str,
+    controller: Controller | None,
+    *,
+    values: bool = False,
+    dialect: Dialect = Dialect.V4,
+    axes: bool = False,
+    alone: bool = False,
 ) -> str | None:
     """The keyword of ``controller`` (any, when None) in ``dialect`` that ``word`` (upper case) is most likely a
-    misspelling of; with ``values``, a keyword that holds a value, for a word used as a variable."""
+    misspelling of; with ``values``, a keyword that holds a value, for a word used as a variable; with ``axes``,
+    one that takes the axes or channel the word is given; ``alone``, one that can be a statement by itself."""
     if word in OTHER_BASICS_WRITTEN:
         return None
-    return OTHER_BASICS.get(word) or closest(word, _keywords_of(controller, values=values, dialect=dialect))
+    known = _keywords_of(controller, values=values, dialect=dialect, axes=axes, alone=alone)
+    return OTHER_BASICS.get(word) or closest(word, known)
 
 
 def not_a_keyword(word: str, meant: str | None, *, alone: bool = False) -> str:

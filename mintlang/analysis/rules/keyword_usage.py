@@ -23,7 +23,7 @@ from mintlang.controllers import profile
 from mintlang.diagnostics import Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Addressing, Controller
+from mintlang.keyworddb.model import Controller
 from mintlang.keyworddb.usage import refusal
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -67,7 +67,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if isinstance(statement, n.BareName) and db.rename_of(statement.name.text) is None:  # else: v3_keywords
             word = statement.name.text
             written = scope.writes(statement.name.span, word)
-            fixes = _spelling_fix(word, controller, statement.name.span, scope.dialect) if written else ()
+            fixes = _spelling_fix(word, controller, statement.name.span, scope.dialect, alone=True) if written else ()
             detail = _not_a_keyword(word, controller, scope.dialect, alone=True)
             yield Finding(unit, mint_error(3007, statement.span, detail, fixes=fixes))
 
@@ -84,7 +84,7 @@ def _not_a_keyword(
     """Error 3007's detail, with the keyword ``word`` resembles if one does; a word written with axes
     (``arr[2]``) that resembles none that takes them is told where an index goes. A dot is how a keyword
     names a channel (``ADC.1``, 000:701-705), not an index: ``ANALOGIN.3`` is told that, not of arrays."""
-    meant = _meant(word, controller, dialect, addressed=addressed)
+    meant = _meant(word, controller, dialect, addressed=addressed, alone=alone)
     if meant is None and dot:
         return (
             f"'{word}' is not a keyword, so its dot addresses no channel or axis (a dot follows a keyword: "
@@ -98,21 +98,17 @@ def _not_a_keyword(
     return not_a_keyword(word, meant, alone=alone)
 
 
-def _meant(word: str, controller: Controller, dialect: Dialect, *, addressed: bool) -> str | None:
+def _meant(word: str, controller: Controller, dialect: Dialect, *, addressed: bool, alone: bool = False) -> str | None:
     """The keyword ``word`` resembles; written with axes or a channel, only one that takes them
-    (000:1063-1066: ``arr[2]`` resembles ERR, which takes neither)."""
-    meant = keyword_like(word.upper(), controller, dialect=dialect)
-    if meant is None or not addressed:
-        return meant
-    keyword = database().keywords_of(dialect).get(meant)
-    return meant if keyword is None or keyword.addressing is not Addressing.NONE else None
+    (000:1063-1066: ``arr[2]`` resembles ERR, which takes neither; ``GOO.0`` is GO, not GOTO)."""
+    return keyword_like(word.upper(), controller, dialect=dialect, axes=addressed, alone=alone)
 
 
 def _spelling_fix(
-    word: str, controller: Controller, span: Span, dialect: Dialect, *, addressed: bool = False
+    word: str, controller: Controller, span: Span, dialect: Dialect, *, addressed: bool = False, alone: bool = False
 ) -> tuple[Fix, ...]:
     """Write the keyword ``word`` resembles, if one does."""
-    meant = _meant(word, controller, dialect, addressed=addressed)
+    meant = _meant(word, controller, dialect, addressed=addressed, alone=alone)
     return (Fix.replace(span, meant),) if meant is not None else ()
 
 

@@ -4,9 +4,10 @@ A branch is a statement with two outcomes (``mint test --coverage``): an ``IF``
 (its block or line taken or not), a ``WHILE`` or ``FOR`` (its body entered or
 skipped), an ``UNTIL`` (the loop left or repeated) and a ``PAUSE`` (passed at
 once or waited). Each operation of the compiled program is wrapped to count
-how often it ran (completed, or failed into ``ERR``: the line that raised an
-error ran) and where control went next; a run without coverage runs the
-operations unwrapped.
+how often it ran (completed, failed into ``ERR``: the line that raised an
+error ran, or blocked: a PAUSE the run stopped in was reached, and waited)
+and where control went next; a run without coverage runs the operations
+unwrapped.
 """
 
 from __future__ import annotations
@@ -77,8 +78,9 @@ class Recorder:
         self.files = files  # "program" / "configuration" -> the file
         self.dialect = dialect  # which labels are event handlers
         self.controller: Controller | None = None
-        self.ran: list[int] = []  # per operation: how often it completed or failed
+        self.ran: list[int] = []  # per operation: how often it completed, failed or began to wait
         self.outcomes: list[list[int]] = []
+        self.waiting = bytearray()  # per operation: blocked, and already counted as run (and as having waited)
 
     def attach(self, controller: Controller) -> None:
         self.controller = controller
@@ -86,36 +88,47 @@ class Recorder:
         size = len(vm.operations)
         self.ran = [0] * size
         self.outcomes = [[0, 0] for _ in range(size)]
+        self.waiting = bytearray(size)
         pairs = enumerate(zip(vm.operations, vm.sites, strict=True))
         vm.operations[:] = [self._counting(pc, operation, site.kind == "Pause") for pc, (operation, site) in pairs]
         vm.fail = self._counting_failures(vm.fail)
 
     def _counting_failures(self, fail: Callable[[MintError, int], None]) -> Callable[[MintError, int], None]:
         """The VM's ``fail``, counting the failed statement as run: it is called once per failure, where the
-        operation itself may be tried again after failing (a pure statement run ahead of its tick)."""
-        ran = self.ran
+        operation itself may be tried again after failing (a pure statement run ahead of its tick). A statement
+        that fails after waiting was counted when it began to wait."""
+        ran, waiting = self.ran, self.waiting
 
         def counted(error: MintError, pc: int) -> None:
-            ran[pc] += 1
+            if waiting[pc]:
+                waiting[pc] = 0
+            else:
+                ran[pc] += 1
             fail(error, pc)
 
         return counted
 
     def _counting(self, pc: int, operation: Callable[[], bool | None], pausing: bool) -> Callable[[], bool]:
         vm = self.controller.vm  # type: ignore[union-attr]
-        ran, outcome = self.ran, self.outcomes[pc]
-        waited = False
+        ran, outcome, waiting = self.ran, self.outcomes[pc], self.waiting
 
         def counted() -> bool:
-            nonlocal waited
             if operation():
-                waited = True
+                # counted as it begins to wait: the run may stop before it completes (at the last timed check,
+                # or an event handler's END), and the program was there all the same
+                if not waiting[pc]:
+                    waiting[pc] = 1
+                    ran[pc] += 1
+                    if pausing:
+                        outcome[1] += 1
                 return True
-            ran[pc] += 1
-            if pausing:
-                outcome[1 if waited else 0] += 1
-                waited = False
+            if waiting[pc]:
+                waiting[pc] = 0
             else:
+                ran[pc] += 1
+                if pausing:
+                    outcome[0] += 1
+            if not pausing:
                 outcome[0 if vm.pc == pc + 1 else 1] += 1
             return False
 

@@ -191,7 +191,8 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
             ratio = f" ({result.stop.time_ms / 1000 / wall_s:.1f}x real time)" if wall_s > 0 else ""
             errors.line(f"simulated {result.stop.time_ms} ms in {wall_s:.2f} s{ratio}")
         if result.outcomes:
-            scenarios.render_outcomes(result.outcomes, errors.console)  # the lazy name: rich, for expectations only
+            # the lazy name: rich, for expectations only
+            scenarios.render_outcomes(result.outcomes, errors.console, result.stop.reason.value)
         _report(result, report_format, report_path)
         title = f"{program.name} on {simulated.title}, {result.stop.reason.value} after {result.stop.time_ms} ms"
         _outputs(trace, plot_path, title)  # after the report, so an output that fails does not take the results with it

@@ -11,15 +11,16 @@ from rich.console import Console
 from rich.table import Column, Table
 from rich.text import Text
 
-from mintlang.runtime.scenario.expectations import Outcome
+from mintlang.runtime.scenario.expectations import Outcome, stop_fails
 
 
 def _expectations(count: int) -> str:
     return "1 expectation" if count == 1 else f"{count} expectations"
 
 
-def render_outcomes(outcomes: Iterable[Outcome], console: Console) -> None:
-    """A table of every expectation with what was seen, then a one-line verdict."""
+def render_outcomes(outcomes: Iterable[Outcome], console: Console, stopped: str | None = None) -> None:
+    """A table of every expectation with what was seen, then a one-line verdict: with ``stopped``, why the run
+    stopped, the verdict also says a stop no ``stopped`` expectation asks for fails the run (``stop_fails``)."""
     outcomes = tuple(outcomes)
     # The origin (file:line) is kept whole where it fits in a third of the width, ahead of the other columns,
     # which wrap at words; a longer one folds onto more lines rather than lose its line number.
@@ -41,5 +42,8 @@ def render_outcomes(outcomes: Iterable[Outcome], console: Console) -> None:
     if failed:
         console.print(Text(f"{failed} of {_expectations(len(outcomes))} failed.", style="bold red"))
     else:
-        held = "The expectation held." if len(outcomes) == 1 else f"All {len(outcomes)} expectations held."
-        console.print(Text(held, style="green"))
+        held = "The expectation held" if len(outcomes) == 1 else f"All {len(outcomes)} expectations held"
+        if stopped is not None and stop_fails(outcomes, stopped):  # else "held" over an exit status of 1
+            console.print(Text(f"{held}, but the run fails: it stopped on {stopped}.", style="bold red"))
+        else:
+            console.print(Text(f"{held}.", style="green"))

@@ -62,9 +62,10 @@ def map_in_order(
 ) -> list[Out]:
     """``function`` of each item, in order, on up to ``workers`` processes (a top-level function: it is pickled).
 
-    With a ``progress`` console that is a terminal, a transient bar counts the items done.
+    With a ``progress`` console that writes to a terminal, a transient bar counts the items done; one only
+    coloured as a terminal (``--color always``, ``FORCE_COLOR``) writing to a pipe or a log gets no bar.
     """
-    if progress is None or not progress.is_terminal:
+    if progress is None or not progress.file.isatty():
         return list(_results(function, items, workers))
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn  # noqa: PLC0415
 

@@ -28,7 +28,14 @@ from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import StopReason
 from mintlang.runtime.observation import AxisState, Observation, Refused, axis_state
 from mintlang.runtime.scenario import ScenarioFileError, ignored_directives, merge, parse_directives
-from mintlang.runtime.scenario.expectations import Expectation, Outcome, TerminalExpectation, evaluate, not_reached
+from mintlang.runtime.scenario.expectations import (
+    Expectation,
+    Outcome,
+    StoppedExpectation,
+    TerminalExpectation,
+    evaluate,
+    not_reached,
+)
 from mintlang.runtime.scenario.stimulus import Scenario
 from mintlang.runtime.simulation import Limits, Simulator, Stop
 from mintlang.semantic.model import SemanticModel
@@ -199,6 +206,16 @@ def _ending_at_the_last_check(limits: Limits, expectations: tuple[Expectation, .
     return replace(limits, until_ms=last, until_message=f"every expectation was checked (the last at {last} ms)")
 
 
+def _waiting_for_the_end(stop: Stop, at_end: list[Expectation]) -> Stop:
+    """``stop`` at the wall-clock limit, saying which expectation kept the run going when one checked at the end
+    (other than how it stops) waited for a program that never ended, as a machine's main loop does not."""
+    waiting = next((each for each in at_end if not isinstance(each, StoppedExpectation)), None)
+    if waiting is None:
+        return stop
+    hint = f"the program has not ended, and the expectation at {waiting.origin} is checked at its end"
+    return replace(stop, message=f"{stop.message}; {hint}: give it a time, or set --until-ms")
+
+
 def _read_leniently(analysis: mintlang.Analysis) -> tuple[str, ...]:
     """What the controller would refuse and the simulator runs all the same, one note a line, in compile order.
 
@@ -284,6 +301,8 @@ def _simulate(
         if model.program.dialect.modern:  # v3's ERR holds only what #ONERROR can see (001:4916)
             built.vm.record_error(refused.code, refused.line, None)
         built.vm.announce(refused.printed)
+    if stop.reason is StopReason.WALL_LIMIT and limits.until_ms is None:
+        stop = _waiting_for_the_end(stop, end_expectations)
     # a check the run never reached did not hold: dropping it would let a run that stops early pass
     outcomes.extend(not_reached(expectation, stop.time_ms) for expectation in unchecked.values())
     final = Observation(built, stop.reason.value)

@@ -57,6 +57,16 @@ def test_an_expectation_at_the_end_still_waits_for_the_program_to_end(tmp_path: 
     assert (result.exit_code, test["verdict"], test["stopped"]) == (1, "failed", "wall-limit")
 
 
+def test_a_run_an_expectation_at_the_end_kept_going_says_which_and_what_ends_it(tmp_path: Path) -> None:
+    """The wall-clock limit alone (60 s by default, each test) told nothing of why the program ran so long."""
+    result = _mint_test(tmp_path, TIMED + "REM @expect count >= 1\n" + ENDLESS)
+    test = _only_test(result)
+    assert str(test["message"]).endswith(
+        f" s of wall time; the program has not ended, and the expectation at {tmp_path / 'machine.mnt'}:2"
+        " is checked at its end: give it a time, or set --until-ms"
+    )
+
+
 def test_until_ms_given_is_kept(tmp_path: Path) -> None:
     result = _mint_test(tmp_path, TIMED + ENDLESS, "--until-ms", "600")
     test = _only_test(result)

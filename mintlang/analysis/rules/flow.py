@@ -24,6 +24,9 @@
   happens at run time, so the analyser only warns, once at the GOTO, naming the
   handler and every block it leaves open with its line.
 * EXIT outside any loop of its subroutine or handler: error 2003 when it runs.
+* GOTO from the main program into a subroutine or event handler (a MintMT Event block), when the code it
+  reaches returns: that RETURN (End Event) has no GOSUB to return to, error 2010 when it runs; reported
+  at the GOTO, which is what is wrong.
 
 An endless loop (LOOP, WHILE 1, REPEAT .. UNTIL 0) that no EXIT or GOTO leaves
 never falls through: a main program ending in one needs no END.
@@ -93,6 +96,7 @@ def check(facts: Facts) -> Iterator[Finding]:
         flow = _Flow(unit, document, starts)
         yield from flow.findings(facts.lines.of(unit))
         yield from _jumps_out_of_blocks(unit, document, model, facts, flow)
+        yield from _jumps_into_routines(unit, document, model, facts, flow)
 
 
 def runs_off_the_end(unit: Unit, facts: Facts) -> bool:
@@ -227,6 +231,7 @@ class _Flow:
         # (#ONERROR .. GOTO common), its RETURN is fine.
         self.main_from_the_top = True
         self.main_gotos: set[str] = set()  # the labels the main program jumps to
+        self.main_jumps: list[tuple[n.PlacedLine, n.Jump]] = []  # its GOTOs, outside any MintMT block
         self.falling_from_main = False
         self.loops: list[_Loop] = []
         self.ifs: list[_If] = []
@@ -367,6 +372,8 @@ class _Flow:
                 loop.left = True
             if self.subroutine is None and self.main_from_the_top:
                 self.main_gotos.add(statement.label.identity)
+                if self.around is None:
+                    self.main_jumps.append((self.line, statement))
         elif isinstance(statement, n.BlockWord) and statement.word == "RETURN":
             self._return(statement)
 
@@ -446,11 +453,12 @@ class _Flow:
 
 
 class _Handler(NamedTuple):
-    """An event handler's lines, from its label to its RETURN."""
+    """An event handler's lines (or a subroutine's, or a MintMT Event block's), from its label to its RETURN."""
 
-    name: str
+    named: str  # "the event handler #IN1", "the subroutine #work", "the Event block"
     first: int
     last: float
+    ending: str = "RETURN"  # the word that returns from it
 
 
 def _says(line: n.PlacedLine, word: str) -> bool:
@@ -458,9 +466,12 @@ def _says(line: n.PlacedLine, word: str) -> bool:
     return any(isinstance(statement, n.BlockWord) and statement.word == word for statement in line.syntax.statements)
 
 
-def _handlers(unit: Unit, document: Document, model: SemanticModel, starts: frozenset[str]) -> list[_Handler]:
-    """The event handlers of the file, each up to its first RETURN outside its blocks, or else up to the next
-    subroutine (a label only GOTO reaches before that RETURN is a place inside the handler)."""
+def _handlers(
+    unit: Unit, document: Document, model: SemanticModel, starts: frozenset[str], *, subroutines: bool = False
+) -> list[_Handler]:
+    """The event handlers of the file (with ``subroutines``, every subroutine too), each up to its first RETURN
+    outside its blocks, or else up to the next subroutine (a label only GOTO reaches before that RETURN is a
+    place inside the handler)."""
     blocks = model.structures[unit].blocks
     dialect = model.program.dialect
     found: list[_Handler] = []
@@ -470,7 +481,9 @@ def _handlers(unit: Unit, document: Document, model: SemanticModel, starts: froz
         if label is not None and label.identity in starts:
             if open_handler is not None:
                 found.append(open_handler._replace(last=line.number - 1))
-            open_handler = _Handler(f"#{label.text}", line.number, math.inf) if event_of(label.text, dialect) else None
+            event = event_of(label.text, dialect) is not None
+            named = f"the event handler #{label.text}" if event else f"the subroutine #{label.text}"
+            open_handler = _Handler(named, line.number, math.inf) if event or subroutines else None
         if (
             open_handler is not None
             and _says(line, "RETURN")
@@ -481,6 +494,11 @@ def _handlers(unit: Unit, document: Document, model: SemanticModel, starts: froz
     return found if open_handler is None else [*found, open_handler]
 
 
+# MintMT's blocks the controller enters, whose code is a routine's own, not a block's inside it (MT-7)
+_ENTRY_BLOCKS = frozenset({BlockKind.EVENT, BlockKind.STARTUP})
+_RETURNING = frozenset({"RETURN", "ENDEVENT"})  # End Event returns from its block, as RETURN from a handler
+
+
 # Where code run from a label settles: it returns (True), stops for good (False), or jumps to a label (its identity).
 Outcome = bool | str
 
@@ -489,11 +507,11 @@ def _outcomes(unit: Unit, document: Document, model: SemanticModel, facts: Facts
     """The lines where code run from a label settles: a RETURN, conditional or not, or a subroutine the code above
     runs into (which returns); an END outside any block, or the end of an endless loop, past which nothing runs;
     a GOTO outside any block, which goes where its label is."""
-    blocks = model.structures[unit].blocks
+    blocks = [block for block in model.structures[unit].blocks if block.kind not in _ENTRY_BLOCKS]
     returns = {
         line.number
         for file, line, statement in facts.statements(n.BlockWord)
-        if file is unit and statement.word == "RETURN"  # type: ignore[union-attr]
+        if file is unit and statement.word in _RETURNING  # type: ignore[union-attr]
     }
     found: dict[int, Outcome] = dict.fromkeys(flow.endless, False)
     for line in document.placed:
@@ -551,7 +569,7 @@ def _jumps_out_of_blocks(
         if target is None:
             continue
         left = [
-            f"the event handler {handler.name} of line {handler.first}"
+            f"{handler.named} of line {handler.first}"
             for handler in handlers
             if handler.first <= line.number <= handler.last
             and not handler.first <= target <= handler.last
@@ -577,3 +595,44 @@ def _blocks_named(blocks: list[Block]) -> list[str]:
 def _contains(block: Block, line: int) -> bool:
     end = block.closer.line if block.closer is not None else math.inf
     return block.opener.line <= line <= end
+
+
+def _jumps_into_routines(
+    unit: Unit, document: Document, model: SemanticModel, facts: Facts, flow: _Flow
+) -> Iterator[Finding]:
+    """2010: a GOTO of the main program into a subroutine, an event handler or a MintMT Event block, whose
+    RETURN (End Event) the code reaches with no GOSUB to return to (000:18965-18967)."""
+    if not flow.main_jumps:
+        return
+    routines = _handlers(unit, document, model, flow.subroutines, subroutines=True) + [
+        _Handler("the Event block", block.opener.line, _last_line(block), "End Event")
+        for block in model.structures[unit].blocks
+        if block.kind is BlockKind.EVENT
+    ]
+    outcomes = _outcomes(unit, document, model, facts, flow)
+    labels = {line.syntax.label.identity: line.number for line in document.placed if line.syntax.label is not None}
+    for line, statement in flow.main_jumps:
+        target = labels.get(statement.label.identity)
+        entered = next(
+            (
+                routine
+                for routine in routines
+                if target is not None
+                and routine.first <= target <= routine.last
+                and not routine.first <= line.number <= routine.last
+            ),
+            None,
+        )
+        if entered is None or not _returns_from(target, outcomes, labels):  # type: ignore[arg-type]
+            continue
+        span = line.span(statement.span)
+        jump = document.source[span.start : span.end].split()[0]  # GOTO, or MintMT's Goto, as written
+        detail = (
+            f"{jump} {statement.label.text} jumps from the main program into {entered.named} of line "
+            f"{entered.first}, whose {entered.ending} then has no GOSUB to return to"
+        )
+        yield Finding(unit, mint_error(2010, span, detail))
+
+
+def _last_line(block: Block) -> float:
+    return block.closer.line if block.closer is not None else math.inf

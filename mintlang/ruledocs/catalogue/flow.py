@@ -82,9 +82,12 @@ GROUP = Group(
             2010,
             catches="A RETURN the main program reaches, with no GOSUB to return to: one written in the main "
             "program in place of END (an error), or the one ending the first subroutine when a main program "
-            "without END runs on into it (a warning, since a file may be a fragment of a larger program).",
-            why="The controller stops with error 2010 at that RETURN. When the main program runs on, it first "
-            "runs the subroutine below it as if it were called (an #ONERROR handler runs with no error).",
+            "without END runs on into it (a warning, since a file may be a fragment of a larger program); "
+            "and a GOTO of the main program into a subroutine or event handler (a MintMT Event block) whose "
+            "code returns, reported at the GOTO.",
+            why="The controller stops with error 2010 at that RETURN (End Event). When the main program runs "
+            "on, it first runs the subroutine below it as if it were called (an #ONERROR handler runs with no "
+            "error).",
             example=Example(
                 before='DIM running = 1\nWHILE running\n  running = IN.0\nENDW\nPRINT "stopped"\nRETURN\n',
                 after='DIM running = 1\nWHILE running\n  running = IN.0\nENDW\nPRINT "stopped"\nEND\n',

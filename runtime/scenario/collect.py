@@ -50,17 +50,21 @@ class Collector:
         line_of: Callable[[str], int] | None = None,
         *,
         column: int = 0,
+        column_of: Callable[[str], int] | None = None,
     ) -> None:
         """Keep what ``build`` makes, or record why it could not: at the line of the key at fault when
         ``line_of`` finds it (a file's table), else at ``line``; at the column of the word at fault when
-        the phrase reader knows it, else at ``column`` (a directive's ``@``: the directive as a whole)."""
+        the phrase reader knows it, or ``column_of`` (a directive's words) finds the word the value at fault
+        came from, else at ``column`` (a directive's ``@``: the directive as a whole)."""
         try:
             record = build()
             if self.controller is not None:
                 check_reach(record, self.controller)
         except Invalid as problem:
-            at_key = line_of(problem.key) if line_of is not None and problem.key is not None else None
-            self.error(problem.line or at_key or line, str(problem), column=problem.column or column)
+            key = problem.key
+            at_key = line_of(key) if line_of is not None and key is not None else None
+            word = column_of(key) if column_of is not None and key is not None else 0
+            self.error(problem.line or at_key or line, str(problem), column=problem.column or word or column)
             return
         once = _once(record)
         if once is not None:

@@ -13,7 +13,6 @@ from mintlang.dialect import Dialect
 from mintlang.runtime.scenario import builders
 from mintlang.runtime.scenario.expectations import Comparison, Expectation, Origin
 from mintlang.runtime.scenario.phrase import Phrase
-from mintlang.runtime.scenario.problems import Invalid
 from mintlang.runtime.scenario.stimulus import PlantModel, WorldRecord
 
 
@@ -24,7 +23,7 @@ def _at(phrase: Phrase) -> int:
 
 def _plant(phrase: Phrase) -> WorldRecord:
     """``plant <axis> <model>`` then the model's values, bare in order (``velamp 40``) or named (``k=40``)."""
-    axis = phrase.integer("an axis")
+    axis = phrase.integer("an axis", "axis")
     model = cast(PlantModel, phrase.choice("a plant model", tuple(builders.PLANTS)))
     bare = iter(builders.PLANTS[model].names)
     parameters: dict[str, float] = {}
@@ -40,34 +39,35 @@ def _plant(phrase: Phrase) -> WorldRecord:
 
 
 def _input(phrase: Phrase) -> WorldRecord:
-    channel = phrase.integer("an input channel")
+    channel = phrase.integer("an input channel", "channel")
     if phrase.accept("when"):
+        phrase.mark("when")
         return builders.position_input(channel, phrase)
-    level = phrase.integer("a level (0 or 1) or 'when'")
+    level = phrase.integer("a level (0 or 1) or 'when'", "level")
     return builders.input_level(_at(phrase), channel, level)
 
 
 def _index(phrase: Phrase) -> WorldRecord:
-    axis = phrase.integer("an axis")
+    axis = phrase.integer("an axis", "axis")
     phrase.keyword("every")
-    every = phrase.integer("the counts between pulses")
-    width = phrase.integer("a width in counts") if phrase.accept("width") else 1
+    every = phrase.integer("the counts between pulses", "every")
+    width = phrase.integer("a width in counts", "width") if phrase.accept("width") else 1
     return builders.index_pulse(axis, every, width)
 
 
 def _fastin(phrase: Phrase) -> WorldRecord:
-    channel = phrase.integer("a fast input channel")
+    channel = phrase.integer("a fast input channel", "channel")
     return builders.fast_input(_at(phrase), channel)
 
 
 def _adc(phrase: Phrase) -> WorldRecord:
-    channel = phrase.integer("an ADC channel")
-    percent = phrase.number("a level in percent")
+    channel = phrase.integer("an ADC channel", "channel")
+    percent = phrase.number("a level in percent", "percent")
     return builders.adc_level(_at(phrase), channel, percent)
 
 
 def _key(phrase: Phrase) -> WorldRecord:
-    text = phrase.text("the keys")
+    text = phrase.text("the keys", "text")
     return builders.keys(_at(phrase), text)
 
 
@@ -111,50 +111,38 @@ def world(phrase: Phrase) -> WorldRecord:
     return record
 
 
-def _when(phrase: Phrase, words: dict[str, int]) -> int | None:
+def _when(phrase: Phrase) -> int | None:
     """``at end``, ``at <ms>`` or nothing (the end)."""
     if not phrase.accept("at") or phrase.accept("end"):
         return None
-    words["at_ms"] = phrase.taken() + 1
     return phrase.milliseconds()
 
 
 def expectation(phrase: Phrase, origin: Origin, dialect: Dialect) -> Expectation:
     """``<target> <op> <value> [± <tol>] [at ...]``, ``no <target>``, ``terminal contains|is "..."``,
-    ``stopped <why>``; a value the builders refuse is placed at its word, as the reader places its own."""
-    words: dict[str, int] = {}  # the builders' key of each value -> the word it was read from
-    try:
-        expectation = _expectation(phrase, origin, dialect, words)
-    except Invalid as problem:
-        if problem.column or problem.key not in words:
-            raise
-        raise phrase.placed(problem, words[problem.key]) from None
+    ``stopped <why>``."""
+    expectation = _expectation(phrase, origin, dialect)
     phrase.end()
     return expectation
 
 
-def _expectation(phrase: Phrase, origin: Origin, dialect: Dialect, words: dict[str, int]) -> Expectation:
+def _expectation(phrase: Phrase, origin: Origin, dialect: Dialect) -> Expectation:
     if phrase.accept("stopped"):
-        why = phrase.word("why the run stopped").lower()
-        words["stopped"] = phrase.taken()
+        why = phrase.word("why the run stopped", "stopped").lower()
         return builders.stopped_expectation(why, origin)
     if phrase.accept("terminal"):
         exact = phrase.choice("how the terminal is matched", ("contains", "is")) == "is"
-        text = phrase.text("the text")
-        words["terminal_contains"] = phrase.taken()
-        return builders.terminal_expectation(text, _when(phrase, words), origin, exact=exact)
+        text = phrase.text("the text", "terminal_contains")
+        return builders.terminal_expectation(text, _when(phrase), origin, exact=exact)
     if phrase.accept("no"):
-        what = phrase.word("a keyword or variable")
-        words["what"] = phrase.taken()
+        what = phrase.word("a keyword or variable", "what")
         return builders.value_expectation(
-            what, Comparison.EQUAL, 0.0, tolerance=0.0, at_ms=_when(phrase, words), origin=origin, dialect=dialect
+            what, Comparison.EQUAL, 0.0, tolerance=0.0, at_ms=_when(phrase), origin=origin, dialect=dialect
         )
-    what = phrase.word("a keyword or variable")
-    words["what"] = phrase.taken()
+    what = phrase.word("a keyword or variable", "what")
     comparison = Comparison(phrase.choice("a comparison", tuple(Comparison)))
     value = phrase.number("a value to compare with")
-    tolerance = phrase.number("a tolerance") if phrase.accept("±") or phrase.accept("+-") else 0.0
-    words["tolerance"] = phrase.taken()
+    tolerance = phrase.number("a tolerance", "tolerance") if phrase.accept("±") or phrase.accept("+-") else 0.0
     return builders.value_expectation(
-        what, comparison, value, tolerance=tolerance, at_ms=_when(phrase, words), origin=origin, dialect=dialect
+        what, comparison, value, tolerance=tolerance, at_ms=_when(phrase), origin=origin, dialect=dialect
     )

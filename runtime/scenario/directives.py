@@ -45,10 +45,10 @@ def parse_directives(
 
         phrase = Phrase(found["body"], column=found.start("body") + 1)
         at = found.start("word")  # the column of its @, from 1
-        if kind == "sim":
-            collector.add(number, partial(world, phrase), column=at)
-        else:
-            collector.add(number, partial(expectation, phrase, Origin(source, number), dialect), column=at)
+        build = (
+            partial(world, phrase) if kind == "sim" else partial(expectation, phrase, Origin(source, number), dialect)
+        )
+        collector.add(number, build, column=at, column_of=phrase.column_of)
     return collector.result()
 
 

@@ -47,7 +47,7 @@ class Phrase:
     other diagnostics place theirs. 0 (a scenario file's ``when`` value) places none.
     """
 
-    __slots__ = ("_column", "_next", "_starts", "_words")
+    __slots__ = ("_column", "_keys", "_next", "_starts", "_words")
 
     def __init__(self, text: str, column: int = 0) -> None:
         found = list(_WORD.finditer(text))
@@ -56,27 +56,38 @@ class Phrase:
         self._starts = [word.start() for word in found] + [found[-1].end() if found else 0]
         self._column = column
         self._next = 0
+        self._keys: dict[
+            str, int
+        ] = {}  # a scenario file's key for a value (level, at_ms …) -> the word it was read from
 
     def mistake(self, message: str) -> Invalid:
         """``Invalid`` at the word last taken: that word was read but does not fit."""
         return self._at(message, self._next - 1)
 
-    def taken(self) -> int:
-        """Which word was taken last, for ``placed`` to blame once what the words make turns out wrong."""
-        return self._next - 1
+    def mark(self, key: str) -> None:
+        """The word last taken holds the value a scenario file gives as ``key``."""
+        self._keys[key] = self._next - 1
 
-    def placed(self, problem: Invalid, index: int) -> Invalid:
-        """``problem``, found in what the words make rather than while reading them, at word ``index``."""
-        return self._at(str(problem), index)
+    def column_of(self, key: str) -> int:
+        """The column of the word marked as ``key``, for a value found wrong once what the words make is built
+        (an input level, a channel the controller lacks); 0 when none is."""
+        index = self._keys.get(key)
+        return self._column_at(index) if index is not None else 0
+
+    def _column_at(self, index: int) -> int:
+        return self._column + self._starts[index] if self._column else 0
 
     def _at(self, message: str, index: int) -> Invalid:
         """``Invalid`` at word ``index`` (the end when past the last word)."""
-        return Invalid(message, column=self._column + self._starts[index] if self._column else 0)
+        return Invalid(message, column=self._column_at(index))
 
-    def word(self, what: str) -> str:
+    def word(self, what: str, key: str | None = None) -> str:
+        """The next word; with ``key``, marked as that key's value (``mark``)."""
         if self._next == len(self._words):
             raise self._at(f"expected {what} at the end", self._next)
         self._next += 1
+        if key is not None:
+            self.mark(key)
         return self._words[self._next - 1]
 
     def peek(self) -> str | None:
@@ -103,8 +114,8 @@ class Phrase:
             raise self.mistake(f"expected {what} ({', '.join(choices)}), not {word!r}{hint}")
         return word
 
-    def number(self, what: str) -> float:
-        return self.as_number(self.word(what), what)
+    def number(self, what: str, key: str | None = None) -> float:
+        return self.as_number(self.word(what, key), what)
 
     def as_number(self, word: str, what: str) -> float:
         """``word``, the word last taken, as a number (``to_number``), placed at it when it is none."""
@@ -113,8 +124,8 @@ class Phrase:
         except Invalid as problem:
             raise self.mistake(str(problem)) from None
 
-    def integer(self, what: str) -> int:
-        word = self.word(what)
+    def integer(self, what: str, key: str | None = None) -> int:
+        word = self.word(what, key)
         try:
             return int(word)
         except ValueError:
@@ -122,12 +133,12 @@ class Phrase:
 
     def milliseconds(self) -> int:
         """``<ms>`` or ``<ms> ms``, after ``at``."""
-        value = self.integer("a time in ms")
+        value = self.integer("a time in ms", "at_ms")
         self.accept("ms")
         return value
 
-    def text(self, what: str) -> str:
-        word = self.word(what)
+    def text(self, what: str, key: str | None = None) -> str:
+        word = self.word(what, key)
         if len(word) < 2 or not word.startswith('"') or not word.endswith('"'):
             raise self.mistake(f"expected {what} in double quotes, not {word}")
         try:

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import pytest
 
+from mintlang.runtime.hardware import machine
 from mintlang.runtime.scenario import ScenarioError, load_scenario, parse_directives
 from mintlang.runtime.scenario.problems import ScenarioFileError
 from tests.runtime.test_mint_test import _mint_test
@@ -50,6 +51,34 @@ NOT_A_COMPARISON = "expected a comparison (=, <>, >=, <=, >, <), not '~'"
 )
 def test_the_column_is_that_of_the_word_at_fault(line: str, column: int, message: str) -> None:
     assert parse_directives(f"DIM x = 3\n{line}\n")[1] == [ScenarioError("program", 2, message, column)]
+
+
+@pytest.mark.parametrize(
+    ("line", "column", "message"),
+    [
+        pytest.param("REM @sim input 3 2 at 10", 18, "an input level is 0 or 1, not 2", id="level"),
+        pytest.param(
+            "REM @sim input 99 1 at 10", 16, "the NextMove BX has no input 99 (it has inputs 0 to 15)", id="input"
+        ),
+        pytest.param("REM @sim plant 9 ideal", 16, "the NextMove BX has no axis 9 (it has axes 0 to 7)", id="plant"),
+        pytest.param(
+            "REM @sim input 5 when enc 9 >= 5", 18, "the NextMove BX has no axis 9 (it has axes 0 to 7)", id="when"
+        ),
+        pytest.param(
+            "REM @sim adc 0 150 at 10", 16, "an ADC level is a percentage from -100 to 100, not 150", id="percent"
+        ),
+        pytest.param(
+            "REM @sim index 0 every 0", 24, "the counts between index pulses must be at least 1, not 0", id="every"
+        ),
+        pytest.param('REM @sim key "1" at -3', 21, "a time in ms must be at least 0, not -3", id="time"),
+    ],
+)
+def test_a_sim_value_the_world_or_the_controller_refuses_is_placed_at_its_word(
+    line: str, column: int, message: str
+) -> None:
+    """The NextMove BX has inputs 0 to 15 and axes 0 to 7 (runtime/scenario/README.md)."""
+    _, problems = parse_directives(f"DIM x = 3\n{line}\n", controller=machine("nextmove-bx", "v4"))
+    assert problems == [ScenarioError("program", 2, message, column)]
 
 
 def test_mintmt_s_quote_comment_is_counted_the_same() -> None:

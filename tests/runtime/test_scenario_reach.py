@@ -51,5 +51,5 @@ def test_a_file_entry_beyond_the_controller_names_the_line_of_its_channel_or_axi
 
 
 def test_a_run_refuses_a_position_input_on_a_missing_axis_before_it_starts() -> None:
-    with pytest.raises(ScenarioFileError, match="program:1:5: the NextMove BX has no axis 99"):
+    with pytest.raises(ScenarioFileError, match="program:1:18: the NextMove BX has no axis 99"):
         run_source("REM @sim input 5 when enc 99 >= 5\nWAIT = 10\n", controller="nextmove-bx")

@@ -218,15 +218,15 @@ def test_the_source_name_is_used_in_positions() -> None:
         ("plant 0 velamp", 5, "plant velamp needs k"),
         ("plant 0 ideal k=3", 5, "plant ideal has no parameter k (it takes none)"),
         ("plant 0 torque viscous=0", 5, "plant torque: viscous must be positive"),
-        ("input 3 2 at 10", 5, "an input level is 0 or 1, not 2"),
+        ("input 3 2 at 10", 18, "an input level is 0 or 1, not 2"),
         ("input 3 1", 19, "expected 'at' at the end"),
         ("input 3 1 at soon", 23, "expected a time in ms as a whole number, not 'soon'"),
-        ("input 3 1 at -5", 5, "a time in ms must be at least 0, not -5"),
+        ("input 3 1 at -5", 23, "a time in ms must be at least 0, not -5"),
         ("input 5 when enc 0 => 500", 29, "expected a comparison (<=, >=, <, >), not '='"),
         ("input 5 when pos 0 >= 500", 23, "expected 'enc', not 'pos'"),
-        ("index 0 every 0", 5, "the counts between index pulses must be at least 1, not 0"),
-        ("index 0 every 10 width 10", 5, "an index pulse 10 counts wide does not fit in every 10 counts"),
-        ("adc 0 150 at 0", 5, "an ADC level is a percentage from -100 to 100, not 150"),
+        ("index 0 every 0", 24, "the counts between index pulses must be at least 1, not 0"),
+        ("index 0 every 10 width 10", 33, "an index pulse 10 counts wide does not fit in every 10 counts"),
+        ("adc 0 150 at 0", 16, "an ADC level is a percentage from -100 to 100, not 150"),
         ("key 1 at 0", 14, "expected the keys in double quotes, not 1"),
         ('key "\\q" at 0', 14, 'unknown escape \\q in "\\q" (known: \\r \\n \\t \\" \\\\)'),
         ('host write 100 "1" at 0', 5, "cannot build the host packet: comms address 100 does not fit two digits"),
@@ -235,8 +235,9 @@ def test_the_source_name_is_used_in_positions() -> None:
     ],
 )
 def test_a_bad_directive_is_an_error_at_its_line_and_column(directive: str, column: int, message: str) -> None:
-    """At the word at fault, or where the one missing was due; a value wrong only with the others at the
-    ``@`` (the directive as a whole): columns from 1, with the ``@`` at 5 and the first word at 10."""
+    """At the word at fault (a value the world refuses once read too, at the word of the key a scenario file
+    blames), or where the one missing was due; a plant's parameters or a host packet, wrong only together, at
+    the ``@`` (the directive as a whole): columns from 1, with the ``@`` at 5 and the first word at 10."""
     assert errors(f"x = 1\nREM @sim {directive}\n") == [ScenarioError("program", 2, message, column)]
 
 

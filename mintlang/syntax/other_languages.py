@@ -3,9 +3,12 @@
 Mint assigns with ``=`` alone and knows only ``+ - * /`` and MOD as arithmetic (000:1274-1282), so
 ``count += 1`` is told ``count = count + 1``, with that as a safe fix: the target and the operator
 are both written out, and a right-hand side of more than one token is bracketed, as ``*=`` binds it.
+C's ``!=`` and ``==`` are told Mint's ``<>`` and ``=`` (000:1256-1263), and ``&&`` and ``||`` its AND and OR.
 """
 
 from __future__ import annotations
+
+from typing import NamedTuple
 
 from mintlang.codes import mint_error
 from mintlang.diagnostics import Diagnostic, Edit, Fix
@@ -22,7 +25,26 @@ _BRACKETS = {_K.LPAR: 1, _K.LSQB: 1, _K.RPAR: -1, _K.RSQB: -1}
 def other_languages_habit(line: LogicalLine, begin: int, end: int, failure: ParseFailure) -> Diagnostic | None:
     """The diagnostic for the statement from ``begin`` to ``end`` if it fails where another language's way of
     writing it shows."""
-    return _compound_assignment(line, begin, end, begin + failure.index)
+    failed = begin + failure.index
+    return _compound_assignment(line, begin, end, failed) or _c_operator(line, begin, end, failed)
+
+
+class _Operator(NamedTuple):
+    """How Mint writes one of C's operators, and whether writing it so keeps its meaning."""
+
+    message: str
+    replacement: str
+    safe: bool
+
+
+# C's operators, by their two signs, each lexed as one of Mint's: '!' is Mint's logical NOT (000:1419), and
+# AND/& and OR/| work bit by bit (000:1286-1289, 1306-1307), so 5 & 6 is 4 where C's 5 && 6 is true.
+_C_OPERATORS = {
+    "!=": _Operator("Mint writes 'not equal to' as <>", "<>", safe=True),  # 000:1262
+    "==": _Operator("Mint compares with one '='", "=", safe=True),  # 000:1258
+    "&&": _Operator("Mint has no '&&': write AND, which works bit by bit", "AND", safe=False),
+    "||": _Operator("Mint has no '||': write OR, which works bit by bit", "OR", safe=False),
+}
 
 
 def _compound_assignment(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
@@ -47,6 +69,30 @@ def _compound_assignment(line: LogicalLine, begin: int, end: int, failed: int) -
     fix = Fix(f"Write {target} = {target} {written} {value}", (rewrite,), safe=True)
     message = f"Mint has no '{written}=': write {target} = {target} {written} {value}"
     return mint_error(2003, joined, message, fixes=(fix,))
+
+
+def _c_operator(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
+    """``a != 2``, ``a == 2``, ``a && b``: two signs written together, the grammar failing at one of them."""
+    for first in (failed - 1, failed):
+        if not (begin <= first and first + 1 < end) or line.ends[first] != line.starts[first + 1]:
+            continue
+        operator = _C_OPERATORS.get(line.texts[first] + line.texts[first + 1])
+        if operator is not None and not line.expanded[first]:
+            joined = shared_span(line.starts[first], line.ends[first + 1])
+            written = _apart(line, first, first + 2, operator.replacement)
+            fix = Fix(f"Write {operator.replacement}", (Edit(joined, written),), safe=operator.safe)
+            return mint_error(2003, joined, operator.message, fixes=(fix,))
+    return None
+
+
+def _apart(line: LogicalLine, first: int, end: int, word: str) -> str:
+    """``word`` in place of the tokens from ``first`` to ``end``, a space on each side that touches a token
+    when it is a word (``a=1&&b=2`` becomes ``a=1 AND b=2``, not ``a=1ANDb=2``)."""
+    if not word.isalpha():
+        return word
+    before = " " if first > 0 and line.ends[first - 1] == line.starts[first] else ""
+    after = " " if end < len(line.kinds) and line.ends[end - 1] == line.starts[end] else ""
+    return f"{before}{word}{after}"
 
 
 def _written(line: LogicalLine, first: int, end: int) -> str:

@@ -6,7 +6,7 @@ import re
 
 from mintlang.records import record
 from mintlang.runtime.controller import Controller
-from mintlang.runtime.errors import MintError, NotSimulated
+from mintlang.runtime.errors import INVALID_INDEX, MintError, NotSimulated
 from mintlang.runtime.motion.axis import Axis
 from mintlang.runtime.scenario.expectations import NO_SUCH_THING
 
@@ -97,7 +97,9 @@ class Observation:
                 return None
             values = self.c.vm.arrays[slot]
             position = int(index)
-            return values[position - 1] if 1 <= position <= len(values) else None
+            if not 1 <= position <= len(values):  # the array is there: the index is what the program would be told
+                raise MintError(INVALID_INDEX, detail=f"index {position} outside 1 to {len(values)}")
+            return values[position - 1]
         slot = names.scalars.get(identity)
         return self.c.vm.scalars[slot] if slot is not None else None
 

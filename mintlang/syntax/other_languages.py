@@ -3,7 +3,8 @@
 Mint assigns with ``=`` alone and knows only ``+ - * /`` and MOD as arithmetic (000:1274-1282), so
 ``count += 1`` is told ``count = count + 1``, with that as a safe fix: the target and the operator
 are both written out, and a right-hand side of more than one token is bracketed, as ``*=`` binds it.
-C's ``!=`` and ``==`` are told Mint's ``<>`` and ``=`` (000:1256-1263), and ``&&`` and ``||`` its AND and OR.
+C's ``!=`` and ``==`` are told Mint's ``<>`` and ``=`` (000:1256-1263), and ``&&`` and ``||`` its AND and OR;
+Visual Basic's ``DO .. LOOP UNTIL`` Mint's loops (000:1707, 1747, 1778, 1797).
 """
 
 from __future__ import annotations
@@ -26,7 +27,11 @@ def other_languages_habit(line: LogicalLine, begin: int, end: int, failure: Pars
     """The diagnostic for the statement from ``begin`` to ``end`` if it fails where another language's way of
     writing it shows."""
     failed = begin + failure.index
-    return _compound_assignment(line, begin, end, failed) or _c_operator(line, begin, end, failed)
+    return (
+        _compound_assignment(line, begin, end, failed)
+        or _c_operator(line, begin, end, failed)
+        or _basic_loop(line, begin, end, failed)
+    )
 
 
 class _Operator(NamedTuple):
@@ -82,6 +87,19 @@ def _c_operator(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnos
             written = _apart(line, first, first + 2, operator.replacement)
             fix = Fix(f"Write {operator.replacement}", (Edit(joined, written),), safe=operator.safe)
             return mint_error(2003, joined, operator.message, fixes=(fix,))
+    return None
+
+
+def _basic_loop(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
+    """Visual Basic's ``DO`` and ``LOOP UNTIL``: DO only follows an IF's condition (000:1594-1600), and LOOP
+    .. ENDL takes no condition (000:1797-1799)."""
+    kinds = line.kinds
+    if kinds[begin] is _K.DO and failed == begin:
+        loops = "write REPEAT .. UNTIL, WHILE .. ENDW or LOOP .. ENDL"  # 000:1707-1797
+        return mint_error(2003, line.token_span(begin), f"Mint has no DO loop: {loops}")
+    if kinds[begin] is _K.LOOP and failed == begin + 1 < end and kinds[failed] in (_K.UNTIL, _K.WHILE):
+        detail = "LOOP .. ENDL loops for ever and takes no condition: a loop tested at its end is REPEAT .. UNTIL"
+        return mint_error(2003, line.token_span(failed), detail)
     return None
 
 

@@ -6,6 +6,7 @@ mistakes of a file are gathered before one ``ScenarioFileError`` is raised.
 
 from __future__ import annotations
 
+import datetime
 import math
 import re
 import tomllib
@@ -79,7 +80,7 @@ class _Entry:
         return self._values[key]
 
     def _wrong(self, key: str, kind: str) -> Invalid:
-        return Invalid(f"{key} must be {kind}, not {self._values[key]!r}", self.line_of(key))
+        return Invalid(f"{key} must be {kind}, not {_as_written(self._values[key])}", self.line_of(key))
 
     def integer(self, key: str, default: int | None = None) -> int:
         if default is not None and key not in self:
@@ -102,6 +103,21 @@ class _Entry:
         if isinstance(value, str):
             return value
         raise self._wrong(key, "text in quotes")
+
+
+def _as_written(value: object) -> str:
+    """``value`` as TOML writes it (``true``, ``2026-11-29``, ``[1, 2]``), for a message quoting the file."""
+    match value:
+        case bool():
+            return "true" if value else "false"
+        case datetime.date() | datetime.time():
+            return value.isoformat()
+        case list():
+            return f"[{', '.join(map(_as_written, value))}]"
+        case dict():
+            return "{ " + ", ".join(f"{key} = {_as_written(item)}" for key, item in value.items()) + " }"
+        case _:
+            return repr(value)
 
 
 def _misspelt(written: list[str], known: tuple[str, ...]) -> tuple[str, str] | None:
@@ -181,7 +197,7 @@ def _when(entry: _Entry) -> int | None:
     if "at" in entry and "at_ms" in entry:
         raise Invalid(f"{entry.name} has both at and at_ms", entry.line_of("at_ms"))
     if "at" in entry and entry.value("at") != "end":
-        message = f'at is "end"; for a time write at_ms = <ms>, not at = {entry.value("at")!r}'
+        message = f'at is "end"; for a time write at_ms = <ms>, not at = {_as_written(entry.value("at"))}'
         raise Invalid(message, entry.line_of("at"))
     return entry.integer("at_ms") if "at_ms" in entry else None
 
@@ -225,7 +241,7 @@ _ARRAYS: dict[str, Callable[[_Entry], WorldRecord | Expectation]] = {
 def _drives(value: object) -> WorldRecord:
     """``drives = "enabled"``: without it the drives start disabled, as at power-up."""
     if value != "enabled":
-        raise Invalid(f'drives is "enabled" (without it they start disabled, as at power-up), not {value!r}')
+        raise Invalid(f'drives is "enabled" (without it they start disabled, as at power-up), not {_as_written(value)}')
     return builders.drives_enabled()
 
 

@@ -210,7 +210,7 @@ def test_a_misspelt_key_or_entry_is_named_with_the_word_meant(tmp_path: Path) ->
     ("entry", "line", "message"),
     [
         ("[[input]]\nchannel = 3\nlevel = 1", 2, "[[input]] needs at_ms"),
-        ("[[input]]\nchannel = 3\nlevel = true\nat_ms = 0", 4, "level must be a whole number, not True"),
+        ("[[input]]\nchannel = 3\nlevel = true\nat_ms = 0", 4, "level must be a whole number, not true"),
         ("[[input]]\nchannel = 3\nlevel = 2\nat_ms = 0", 4, "an input level is 0 or 1, not 2"),
         ("[[input]]\nchannel = -1\nlevel = 1\nat_ms = 0", 3, "a channel must be at least 0, not -1"),
         ("[[input]]\nchannel = 3\nlevel = 1\nat_ms = -5", 5, "a time in ms must be at least 0, not -5"),

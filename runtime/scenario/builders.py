@@ -179,7 +179,7 @@ def value_expectation(
 ) -> ValueExpectation:
     """``what`` is named in the program's ``dialect``."""
     if tolerance < 0:
-        raise Invalid(f"a tolerance is not negative, not {tolerance:g}", key="tolerance")
+        raise Invalid(f"a tolerance must be at least 0, not {tolerance:g}", key="tolerance")
     try:
         read = target(what, dialect)
     except Invalid as problem:

@@ -43,7 +43,10 @@ def _input(phrase: Phrase) -> WorldRecord:
     if phrase.accept("when"):
         phrase.mark("when")
         return builders.position_input(channel, phrase)
-    level = phrase.integer("a level (0 or 1) or 'when'", "level")
+    word = phrase.word("a level (0 or 1) or 'when'", "level")
+    if not word.isdecimal():  # a whole number out of range is the builder's to name
+        raise phrase.mistake(f"expected a level (0 or 1) or 'when', not {word!r}")
+    level = int(word)
     return builders.input_level(_at(phrase), channel, level)
 
 

@@ -38,7 +38,7 @@ NOT_A_COMPARISON = "expected a comparison (=, <>, >=, <=, >, <), not '~'"
         pytest.param("REM @sim plant 0 velamp fast", 25, "expected the value of k as a number, not 'fast'", id="sim"),
         pytest.param("REM @sim plant 0 ideal 3", 24, "unexpected '3': give parameters as name=value", id="sim-extra"),
         pytest.param("REM @expect GO = 1", 13, "GO is a command, not a value to expect", id="target"),
-        pytest.param("REM @expect x = 3 ± -1", 21, "a tolerance is not negative, not -1", id="negative-tolerance"),
+        pytest.param("REM @expect x = 3 ± -1", 21, "a tolerance must be at least 0, not -1", id="negative-tolerance"),
         pytest.param("REM @expect x = 3 at -5", 22, "a time in ms must be at least 0, not -5", id="negative-time"),
         pytest.param(
             "REM @expect stopped bogus",

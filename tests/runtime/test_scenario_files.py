@@ -249,7 +249,7 @@ def test_a_misspelt_key_or_entry_is_named_with_the_word_meant(tmp_path: Path) ->
             2,
             "[[expect]] needs one of what, terminal_contains, terminal_is, stopped (it has 'value', 'equals')",
         ),
-        ("[[expect]]\nwhat = 'POS.0'\nequals = 1\ntolerance = -1", 5, "a tolerance is not negative, not -1"),
+        ("[[expect]]\nwhat = 'POS.0'\nequals = 1\ntolerance = -1", 5, "a tolerance must be at least 0, not -1"),
         ("[[expect]]\nwhat = 'POS.0'\nequals = 1\nat_ms = -1", 5, "a time in ms must be at least 0, not -1"),
         ("[[expect]]\nterminal_contains = ''", 3, "the terminal text to look for is empty"),
         (

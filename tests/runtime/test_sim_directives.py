@@ -219,6 +219,8 @@ def test_the_source_name_is_used_in_positions() -> None:
         ("plant 0 ideal k=3", 5, "plant ideal has no parameter k (it takes none)"),
         ("plant 0 torque viscous=0", 5, "plant torque: viscous must be positive"),
         ("input 3 2 at 10", 18, "an input level is 0 or 1, not 2"),
+        ("input 3 high at 10", 18, "expected a level (0 or 1) or 'when', not 'high'"),
+        ("input 3 1.0 at 10", 18, "expected a level (0 or 1) or 'when', not '1.0'"),
         ("input 3 1", 19, "expected 'at' at the end"),
         ("input 3 1 at soon", 23, "expected a time in ms as a whole number, not 'soon'"),
         ("input 3 1 at -5", 23, "a time in ms must be at least 0, not -5"),
@@ -248,7 +250,7 @@ def test_a_bad_directive_is_an_error_at_its_line_and_column(directive: str, colu
         ("POS.0 =", 20, "expected a value to compare with at the end"),
         ("GO = 1", 13, "GO is a command, not a value to expect"),
         ("stopped somewhere", 21, "a run stops for one of end, error, until, deadlock, wall-limit, not 'somewhere'"),
-        ("count = 1 ± -1", 25, "a tolerance is not negative, not -1"),
+        ("count = 1 ± -1", 25, "a tolerance must be at least 0, not -1"),
         ('terminal has "x"', 22, "expected how the terminal is matched (contains, is), not 'has'"),
         (
             'terminal contians "x"',

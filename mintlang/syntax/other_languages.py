@@ -4,7 +4,8 @@ Mint assigns with ``=`` alone and knows only ``+ - * /`` and MOD as arithmetic (
 ``count += 1`` is told ``count = count + 1``, with that as a safe fix: the target and the operator
 are both written out, and a right-hand side of more than one token is bracketed, as ``*=`` binds it.
 C's ``!=`` and ``==`` are told Mint's ``<>`` and ``=`` (000:1256-1263), and ``&&`` and ``||`` its AND and OR;
-Visual Basic's ``DO .. LOOP UNTIL`` Mint's loops (000:1707, 1747, 1778, 1797).
+Visual Basic's ``DO .. LOOP UNTIL`` Mint's loops (000:1707, 1747, 1778, 1797); strings joined with ``+``
+PRINT's comma.
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ def other_languages_habit(line: LogicalLine, begin: int, end: int, failure: Pars
         _compound_assignment(line, begin, end, failed)
         or _c_operator(line, begin, end, failed)
         or _basic_loop(line, begin, end, failed)
+        or _joined_strings(line, begin, end, failed)
     )
 
 
@@ -101,6 +103,22 @@ def _basic_loop(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnos
         detail = "LOOP .. ENDL loops for ever and takes no condition: a loop tested at its end is REPEAT .. UNTIL"
         return mint_error(2003, line.token_span(failed), detail)
     return None
+
+
+def _joined_strings(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
+    """``PRINT "a" + b``: PRINT's items follow one another after a comma (000:15299-15302), and a string is no
+    value to add. Between two strings the comma is plainly meant; after one, ``+`` may have summed what follows."""
+    kinds = line.kinds
+    if kinds[begin] is not _K.PRINT and line.texts[begin].upper() != "LINE":  # LINE takes PRINT's items: 000:15353
+        return None
+    plus = failed if failed < end and kinds[failed] is _K.PLUS else failed - 1
+    if not (begin < plus < end - 1 and kinds[plus] is _K.PLUS and _K.STRING in (kinds[plus - 1], kinds[plus + 1])):
+        return None
+    safe = kinds[plus - 1] is kinds[plus + 1] is _K.STRING
+    span = line.token_span(plus)
+    fix = Fix("Separate the items with ','", (Edit(shared_span(line.ends[plus - 1], span.end), ","),), safe=safe)
+    detail = "Mint does not join strings with '+': separate the items with ',', which prints each directly after "
+    return mint_error(2003, span, detail + "the one before", fixes=(fix,))
 
 
 def _apart(line: LogicalLine, first: int, end: int, word: str) -> str:

@@ -17,6 +17,7 @@ from mintlang.runtime.scenario.problems import Invalid, ScenarioError
 from mintlang.runtime.scenario.reach import check_reach
 from mintlang.runtime.scenario.stimulus import (
     IndexPulse,
+    InputLevel,
     PlantChoice,
     PositionInput,
     Scenario,
@@ -28,7 +29,7 @@ from mintlang.runtime.scenario.stimulus import (
 class Collector:
     """The records and errors of one source (a file path or ``"program"``)."""
 
-    __slots__ = ("_first", "controller", "dialect", "errors", "records", "source")
+    __slots__ = ("_driven", "_first", "controller", "dialect", "errors", "records", "source")
 
     def __init__(self, source: str, controller: ControllerProfile | None = None, dialect: Dialect = Dialect.V4) -> None:
         """With ``controller``, a record that drives an axis or channel it lacks is a mistake too; keywords
@@ -39,6 +40,7 @@ class Collector:
         self.records: list[WorldRecord | Expectation] = []
         self.errors: list[ScenarioError] = []
         self._first: dict[tuple[type, int], int] = {}  # (record kind, axis or channel) -> line first given
+        self._driven: dict[int, tuple[type, int]] = {}  # input -> what first drives it (level or position), its line
 
     def error(self, line: int, message: str, *, column: int = 0) -> None:
         self.errors.append(ScenarioError(self.source, line, message, column))
@@ -73,10 +75,23 @@ class Collector:
                 self.error(line, f"{what} (line {self._first[key]})", column=column)
                 return
             self._first[key] = line
+        if isinstance(record, InputLevel | PositionInput):
+            kind, first = self._driven.setdefault(record.channel, (type(record), line))
+            if kind is not type(record):
+                self.error(line, _driven_both_ways(record, first), column=column)
+                return
         self.records.append(record)
 
     def result(self) -> tuple[Scenario, list[ScenarioError]]:
         return scenario_of(self.records), self.errors
+
+
+def _driven_both_ways(record: InputLevel | PositionInput, first: int) -> str:
+    """What an input given a level at a time and a position to follow is told: the position decides its level
+    every tick, so the levels would never show."""
+    if isinstance(record, InputLevel):
+        return f"input {record.channel} follows a position (line {first}): a level set at a time would never show"
+    return f"input {record.channel} is set at a time (line {first}), so it cannot also follow a position"
 
 
 def _once(record: WorldRecord | Expectation) -> tuple[int, str] | None:

@@ -9,7 +9,7 @@ from mintlang.analysis.rules.v3_keywords import successor
 from mintlang.controllers import ControllerProfile, profile
 from mintlang.diagnostics import split_lines
 from mintlang.dialect import Dialect
-from mintlang.keyworddb import database
+from mintlang.keyworddb import database, supplements
 from mintlang.keyworddb.model import Addressing, Controller, Keyword, MigrationClass, V3Keyword
 from mintlang.lsp.addressed import placed_line
 from mintlang.lsp.workspace import Snapshot
@@ -60,8 +60,9 @@ def keyword(word: Keyword, controller: Controller, spelling: str = "", dialect: 
         lines.append(f"- Written here for channel {int(channel)}")
     if row is not None and row.default:
         lines.append(f"- Default: {row.default}")
-    if row is not None and row.range is not None:
-        lines.append(f"- Range: {row.range.text}")
+    held = supplements.narrowed(word.name, row.range) if row is not None else None  # as both tools hold values
+    if held is not None:
+        lines.append(f"- Range: {held.text}")
     lines.append(f"- Controllers: {_titles(word.controllers) or 'not listed in the guide'}")
     if not word.available_on(controller):
         lines.append(f"- **Not available on {profile(controller).title}**")

@@ -5,7 +5,7 @@ Mint assigns with ``=`` alone and knows only ``+ - * /`` and MOD as arithmetic (
 are both written out, and a right-hand side of more than one token is bracketed, as ``*=`` binds it.
 C's ``!=`` and ``==`` are told Mint's ``<>`` and ``=`` (000:1256-1263), and ``&&`` and ``||`` its AND and OR;
 Visual Basic's ``DO .. LOOP UNTIL`` Mint's loops (000:1707, 1747, 1778, 1797); strings joined with ``+``
-PRINT's comma.
+PRINT's comma; ``a ^ 2`` POW(a, 2).
 """
 
 from __future__ import annotations
@@ -33,6 +33,7 @@ def other_languages_habit(line: LogicalLine, begin: int, end: int, failure: Pars
         or _c_operator(line, begin, end, failed)
         or _basic_loop(line, begin, end, failed)
         or _joined_strings(line, begin, end, failed)
+        or _power(line, begin, end, failed)
     )
 
 
@@ -119,6 +120,27 @@ def _joined_strings(line: LogicalLine, begin: int, end: int, failed: int) -> Dia
     fix = Fix("Separate the items with ','", (Edit(shared_span(line.ends[plus - 1], span.end), ","),), safe=safe)
     detail = "Mint does not join strings with '+': separate the items with ',', which prints each directly after "
     return mint_error(2003, span, detail + "the one before", fixes=(fix,))
+
+
+_OPERANDS = frozenset({_K.NAME, _K.NUMBER, _K.KEYWORD})
+
+
+def _power(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
+    """``a ^ 2``: the power is the function POW(x, y) (000:1410); a function is evaluated before any operator
+    around it (000:1418-1420), so one token on each side of the caret goes into its brackets as written."""
+    kinds = line.kinds
+    caret = failed if failed < end and kinds[failed] is _K.CIRCUMFLEX else failed - 1
+    if not (begin < caret < end and kinds[caret] is _K.CIRCUMFLEX):
+        return None
+    span = line.token_span(caret)
+    base, exponent = caret - 1, caret + 1
+    single = exponent < end and kinds[base] in _OPERANDS and kinds[exponent] in _OPERANDS
+    single = single and (base == begin or kinds[base - 1] is not _K.DOT) and not line.expanded[base]
+    if not single or (exponent + 1 < end and kinds[exponent + 1] in (_K.DOT, _K.LPAR, _K.LSQB)):
+        return mint_error(2003, span, "Mint has no '^': write POW(x, y) for x to the power y")
+    written = f"POW({line.texts[base]}, {line.texts[exponent]})"
+    fix = Fix(f"Write {written}", (Edit(shared_span(line.starts[base], line.ends[exponent]), written),), safe=True)
+    return mint_error(2003, span, f"Mint has no '^': write {written}", fixes=(fix,))
 
 
 def _apart(line: LogicalLine, first: int, end: int, word: str) -> str:

@@ -126,16 +126,23 @@ class Phrase:
 
     def integer(self, what: str, key: str | None = None) -> int:
         word = self.word(what, key)
-        try:
-            return int(word)
-        except ValueError:
-            raise self.mistake(f"expected {what} as a whole number, not {word!r}") from None
+        return self._whole(word, word, what)
 
     def milliseconds(self) -> int:
-        """``<ms>`` or ``<ms> ms``, after ``at``."""
-        value = self.integer("a time in ms", "at_ms")
-        self.accept("ms")
+        """``<ms>``, ``<ms> ms`` or ``<ms>ms``, after ``at``."""
+        word = self.word("a time in ms", "at_ms")
+        unit_on = len(word) > 2 and word.lower().endswith("ms")
+        value = self._whole(word[:-2] if unit_on else word, word, "a time in ms")
+        if not unit_on:
+            self.accept("ms")
         return value
+
+    def _whole(self, digits: str, word: str, what: str) -> int:
+        """``digits``, of ``word`` (the word last taken), as a whole number, placed at the word when it is none."""
+        try:
+            return int(digits)
+        except ValueError:
+            raise self.mistake(f"expected {what} as a whole number, not {word!r}") from None
 
     def text(self, what: str, key: str | None = None) -> str:
         word = self.word(what, key)

@@ -115,6 +115,13 @@ def test_input_sets_an_electrical_level_from_a_time() -> None:
     assert scenario(program).inputs == (InputLevel(1500, 3, 1), InputLevel(1600, 3, 0))
 
 
+def test_a_time_may_carry_its_unit_with_or_without_a_space() -> None:
+    """README: a time may be followed by ms; written on, as "at 50ms", it was refused as no whole number."""
+    program = 'REM @sim input 3 1 at 50ms\nREM @sim key "1" at 60MS\nREM @expect IN.3 = 1 at 70ms\n'
+    found = scenario(program)
+    assert (found.inputs[0].time_ms, found.keys[0].time_ms, found.expectations[0].at_ms) == (50, 60, 70)
+
+
 @pytest.mark.parametrize("operator", ["<=", ">=", "<", ">"])
 def test_input_when_follows_the_physical_encoder_count(operator: str) -> None:
     program = f"REM @sim input 5 when enc 0 {operator} -500\n"
@@ -223,6 +230,8 @@ def test_the_source_name_is_used_in_positions() -> None:
         ("input 3 1.0 at 10", 18, "expected a level (0 or 1) or 'when', not '1.0'"),
         ("input 3 1", 19, "expected 'at' at the end"),
         ("input 3 1 at soon", 23, "expected a time in ms as a whole number, not 'soon'"),
+        ("input 3 1 at 5s", 23, "expected a time in ms as a whole number, not '5s'"),
+        ("input 3 1 at -5ms", 23, "a time in ms must be at least 0, not -5"),
         ("input 3 1 at -5", 23, "a time in ms must be at least 0, not -5"),
         ("input 5 when enc 0 => 500", 29, "expected a comparison (<=, >=, <, >), not '='"),
         ("input 5 when pos 0 >= 500", 23, "expected 'enc', not 'pos'"),

@@ -515,8 +515,9 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
         return _error(2005, span, f"nothing after '=': give {line.texts[begin]} a value", at_run_time=False)
     if segment[0] is _K.IF and not at_end and kinds[index] is _K.ELSE and _K.THEN in kinds[begin:index]:
         return _error(2003, span, "IF .. THEN has no ELSE: write an IF .. DO block with ELSE and ENDIF")  # 000:1586
+    split = _split_by_a_macro(line, begin, end)
     if segment[0] is _K.IF and {"THEN", "DO"} <= expected and (at_end or kinds[index] not in _OPERATORS):
-        return _error(2007, span, f"found {found}")
+        return _error(2007, span, f"found {found}{split}")
     if segment[0] is _K.FOR and "TO" in expected:
         return _error(2008, span, f"found {found}")
     if (two_words := _TWO_WORD_CLOSERS.get(tuple(segment[:2]))) is not None:
@@ -565,8 +566,23 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
             return _error(2003, span, f"{word.upper()} is a command and gives no value")  # PRINT AXES, as PRINT GO
         return _error(2006, span, f"{words.quoted(word)} is a reserved keyword and cannot be used as {role}")
     if line.expanded[index if not at_end else end - 1]:
-        return _error(2003, span, f"unexpected {_unexpected(found)} in the text of a macro")
-    return _error(2003, span, f"unexpected {_unexpected(found)}")
+        return _error(2003, span, f"unexpected {_unexpected(found)} in the text of a macro{split}")
+    return _error(2003, span, f"unexpected {_unexpected(found)}{split}")
+
+
+def _split_by_a_macro(line: LogicalLine, begin: int, end: int) -> str:
+    """What to add when a ':' that came from a macro's text ends or begins the statement: ``DEFINE fast = 5000 :
+    REM mm/s`` keeps the ':' in the macro (a macro may hold several statements, 000:1560; only what follows REM is
+    left out, 000:15510-15511), so ``SPEED[0,1] = fast, slow`` is cut after ``5000``."""
+    kinds, expanded = line.kinds, line.expanded
+    before = begin > 0 and kinds[begin - 1] is _K.COLON and expanded[begin - 1]
+    after = end < len(kinds) and kinds[end] is _K.COLON and expanded[end]
+    if not (before or after):
+        return ""
+    return (
+        "; a ':' from a macro's text ends the statement before it: a REM after a DEFINE's value goes without"
+        " the ':', which stays in the macro"
+    )
 
 
 def _square_dimension(line: LogicalLine, begin: int, opening: int, end: int) -> Diagnostic:

@@ -45,11 +45,12 @@ def one_slip_apart(word: str, other: str) -> bool:
 # Block words of other BASICs, which Mint spells otherwise (3.7.3: a WHILE loop ends with ENDW).
 OTHER_BASICS = {"WEND": "ENDW", "ENDWHILE": "ENDW"}
 
-# Block words of other BASICs that no Mint word replaces, with how Mint writes what they do: an IF block has
+# Words of other BASICs that no Mint word replaces, with how Mint writes what they do: an IF block has
 # one ELSE, alone on its line, and an IF nested in it has its own ENDIF (000:1589-1600, 1633-1654).
 OTHER_BASICS_WRITTEN = {
     "ELSEIF": "an IF block has no ELSEIF: write ELSE on its own line, then an IF block of its own inside it, "
     "closed before the outer one",
+    "LET": "Mint assigns without LET: leave it out",  # newPos = 2 (000:917-922)
 }
 
 

@@ -3,7 +3,7 @@
 Mint assigns with ``=`` alone and knows only ``+ - * /`` and MOD as arithmetic (000:1274-1282), so
 ``count += 1`` is told ``count = count + 1``, with that as a safe fix: the target and the operator
 are both written out, and a right-hand side of more than one token is bracketed, as ``*=`` binds it.
-C's ``!=`` and ``==`` are told Mint's ``<>`` and ``=`` (000:1256-1263), and ``&&`` and ``||`` its AND and OR;
+C's ``!=`` and ``==`` are told Mint's ``<>`` and ``=`` (000:1256-1263), ``&&`` and ``||`` its AND and OR, ``//`` REM;
 Visual Basic's ``DO .. LOOP UNTIL`` Mint's loops (000:1707, 1747, 1778, 1797); strings joined with ``+``
 PRINT's comma; ``a ^ 2`` POW(a, 2).
 """
@@ -45,13 +45,14 @@ class _Operator(NamedTuple):
     safe: bool
 
 
-# C's operators, by their two signs, each lexed as one of Mint's: '!' is Mint's logical NOT (000:1419), and
-# AND/& and OR/| work bit by bit (000:1286-1289, 1306-1307), so 5 & 6 is 4 where C's 5 && 6 is true.
+# C's operators (and its comment), by their two signs, each lexed as one of Mint's: '!' is Mint's logical NOT
+# (000:1419), and AND/& and OR/| work bit by bit (000:1286-1289, 1306-1307), so 5 & 6 is 4 where 5 && 6 is true.
 _C_OPERATORS = {
     "!=": _Operator("Mint writes 'not equal to' as <>", "<>", safe=True),  # 000:1262
     "==": _Operator("Mint compares with one '='", "=", safe=True),  # 000:1258
     "&&": _Operator("Mint has no '&&': write AND, which works bit by bit", "AND", safe=False),
     "||": _Operator("Mint has no '||': write OR, which works bit by bit", "OR", safe=False),
+    "//": _Operator("Mint's comments begin with REM", "REM", safe=True),  # 000:15506-15515
 }
 
 

@@ -1,7 +1,7 @@
 """Statements written as C or another BASIC writes them, told how Mint writes them (a syntax error, 2003).
 
 Mint assigns with ``=`` alone and knows only ``+ - * /`` and MOD as arithmetic (000:1274-1282), so
-``count += 1`` is told ``count = count + 1``, with that as a safe fix: the target and the operator
+``count += 1`` (and ``count++``) is told ``count = count + 1``, with that as a safe fix: the target and the operator
 are both written out, and a right-hand side of more than one token is bracketed, as ``*=`` binds it.
 C's ``!=`` and ``==`` are told Mint's ``<>`` and ``=`` (000:1256-1263), ``&&`` and ``||`` its AND and OR, ``//`` REM;
 Visual Basic's ``DO .. LOOP UNTIL`` Mint's loops (000:1707, 1747, 1778, 1797); strings joined with ``+``
@@ -30,6 +30,7 @@ def other_languages_habit(line: LogicalLine, begin: int, end: int, failure: Pars
     failed = begin + failure.index
     return (
         _compound_assignment(line, begin, end, failed)
+        or _increment(line, begin, end, failed)
         or _c_operator(line, begin, end, failed)
         or _basic_loop(line, begin, end, failed)
         or _joined_strings(line, begin, end, failed)
@@ -62,10 +63,11 @@ def _compound_assignment(line: LogicalLine, begin: int, end: int, failed: int) -
     operator = _first_at_the_top(kinds, begin, end, _K.EQUAL) - 1
     if (
         operator <= begin
+        or operator + 2 >= end  # no '=' (first_at_the_top gave the end), or nothing after it
         or failed not in (operator, operator + 1)
         or kinds[operator] not in _ARITHMETIC
+        or not _assignable(kinds, begin, operator)
         or line.ends[operator] != line.starts[operator + 1]
-        or operator + 2 >= end
         or any(line.expanded[begin:end])  # a macro's text: its tokens are not where the fix would write
     ):
         return None
@@ -78,6 +80,31 @@ def _compound_assignment(line: LogicalLine, begin: int, end: int, failed: int) -
     fix = Fix(f"Write {target} = {target} {written} {value}", (rewrite,), safe=True)
     message = f"Mint has no '{written}=': write {target} = {target} {written} {value}"
     return mint_error(2003, joined, message, fixes=(fix,))
+
+
+def _increment(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
+    """``count++``: a statement ending in two joined signs, ``+`` or ``-``, after what it changes."""
+    kinds = line.kinds
+    last = end - 1
+    signs = kinds[last - 1 : end]
+    if (
+        last - 1 <= begin
+        or signs not in ([_K.PLUS, _K.PLUS], [_K.MINUS, _K.MINUS])
+        or line.ends[last - 1] != line.starts[last]
+        or failed < last - 1
+        or not _assignable(kinds, begin, last - 1)
+        or any(line.expanded[begin:end])
+    ):
+        return None
+    target, sign = _written(line, begin, last - 1), line.texts[last]
+    joined = shared_span(line.starts[last - 1], line.ends[last])
+    written = f"{target} = {target} {sign} 1"
+    fix = Fix(
+        f"Write {written}",
+        (Edit(shared_span(line.ends[last - 2], line.ends[last]), written[len(target) :]),),
+        safe=True,
+    )
+    return mint_error(2003, joined, f"Mint has no '{sign}{sign}': write {written}", fixes=(fix,))
 
 
 def _c_operator(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
@@ -152,6 +179,14 @@ def _apart(line: LogicalLine, first: int, end: int, word: str) -> str:
     before = " " if first > 0 and line.ends[first - 1] == line.starts[first] else ""
     after = " " if end < len(line.kinds) and line.ends[end - 1] == line.starts[end] else ""
     return f"{before}{word}{after}"
+
+
+def _assignable(kinds: list[TokenKind], begin: int, end: int) -> bool:
+    """Whether the tokens from ``begin`` to ``end`` can be what an assignment sets: a variable, an array's element
+    or a keyword with its axes (``count``, ``a(2)``, ``SPEED.0``), not a command and its operands (``PRINT a``)."""
+    if kinds[begin] not in (_K.NAME, _K.KEYWORD):
+        return False
+    return end == begin + 1 or kinds[begin + 1] in (_K.LPAR, _K.LSQB, _K.DOT)
 
 
 def _written(line: LogicalLine, first: int, end: int) -> str:

@@ -65,3 +65,24 @@ def test_an_array_element_and_a_keyword_are_targets_too() -> None:
 def test_an_operator_apart_from_the_equals_sign_is_not_told_so() -> None:
     _, diagnostic = _only("count + = 1")
     assert "Mint has no" not in diagnostic.message
+
+
+def test_an_increment_is_told_the_assignment_too() -> None:
+    source, diagnostic = _only("count++")
+    assert (diagnostic.code, covered(source, diagnostic)) == ("E2003", "++")
+    assert diagnostic.message.endswith("Mint has no '++': write count = count + 1")
+    assert apply(source, diagnostic.fixes[0].edits) == DECLARED + "count = count + 1\n"
+    _, diagnostic = _only("count--")
+    assert diagnostic.message.endswith("Mint has no '--': write count = count - 1")
+
+
+def test_an_array_element_is_incremented_too() -> None:
+    source = "DIM a(3)\na(1)++\n"
+    (diagnostic,) = mintlang.check(source)
+    assert diagnostic.message.endswith("Mint has no '++': write a(1) = a(1) + 1")
+
+
+def test_a_command_and_its_operand_are_no_target() -> None:
+    for line in ("PRINT count += 1", "PRINT count++"):
+        _, diagnostic = _only(line)
+        assert "Mint has no" not in diagnostic.message

@@ -196,7 +196,7 @@ def _address_digits(address: int) -> bytes:
 
 def _header(node: int) -> bytes:
     if not 0 <= node < len(_NODE_CHARACTERS):
-        raise ValueError(f"node {node} has no ID character")
+        raise ValueError(f"node {node} has no ID character (0-9 and A-F are nodes 0 to 15)")
     return bytes([EOT, _NODE_CHARACTERS[node], _NODE_CHARACTERS[node]])
 
 

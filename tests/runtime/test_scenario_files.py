@@ -232,7 +232,11 @@ def test_a_misspelt_key_or_entry_is_named_with_the_word_meant(tmp_path: Path) ->
         ("[[key]]\ntext = 1\nat_ms = 0", 3, "text must be text in quotes, not 1"),
         ("[[host]]\nat_ms = 0", 2, "[[host]] needs one of write, read, raw (it has 'at_ms')"),
         ("[[host]]\nread = 1\nraw = '05'\nat_ms = 0", 4, "[[host]] has both read and raw"),
-        ("[[host]]\nread = 1\nnode = 16\nat_ms = 0", 2, "cannot build the host packet: node 16 has no ID character"),
+        (  # a packet's card ID is one character, 0-9 or A-F, so nodes 0 to 15 (000:2148-2149, 2479)
+            "[[host]]\nread = 1\nnode = 16\nat_ms = 0",
+            2,
+            "cannot build the host packet: node 16 has no ID character (0-9 and A-F are nodes 0 to 15)",
+        ),
         (
             '[[host]]\nwrite = 1\ndata = "1é"\nat_ms = 0',
             2,

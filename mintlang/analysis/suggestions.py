@@ -42,8 +42,11 @@ def one_slip_apart(word: str, other: str) -> bool:
     return longer[start + 1 :] == shorter[start:]
 
 
-# Block words of other BASICs, which Mint spells otherwise (3.7.3: a WHILE loop ends with ENDW).
-OTHER_BASICS = {"WEND": "ENDW", "ENDWHILE": "ENDW"}
+# Words of other BASICs, which Mint spells otherwise (3.7.3: a WHILE loop ends with ENDW; 3.8, 000:1841-1842:
+# a subroutine is called with GOSUB).
+OTHER_BASICS = {"WEND": "ENDW", "ENDWHILE": "ENDW", "CALL": "GOSUB"}
+
+_WAIT = "a wait of a time is WAIT = milliseconds"  # WAIT = <expression> (000:17324, 17343)
 
 # Words of other BASICs that no Mint word replaces, with how Mint writes what they do: an IF block has
 # one ELSE, alone on its line, and an IF nested in it has its own ENDIF (000:1589-1600, 1633-1654).
@@ -51,6 +54,9 @@ OTHER_BASICS_WRITTEN = {
     "ELSEIF": "an IF block has no ELSEIF: write ELSE on its own line, then an IF block of its own inside it, "
     "closed before the outer one",
     "LET": "Mint assigns without LET: leave it out",  # newPos = 2 (000:917-922)
+    "SUB": "a subroutine begins with its label, #name, ends with RETURN and is called by GOSUB name",  # 000:1841-1850
+    "DELAY": _WAIT,
+    "SLEEP": _WAIT,
 }
 
 

@@ -5,7 +5,7 @@ Mint assigns with ``=`` alone and knows only ``+ - * /`` and MOD as arithmetic (
 are both written out, and a right-hand side of more than one token is bracketed, as ``*=`` binds it.
 C's ``!=`` and ``==`` are told Mint's ``<>`` and ``=`` (000:1256-1263), ``&&`` and ``||`` its AND and OR, ``//`` REM;
 Visual Basic's ``DO .. LOOP UNTIL`` Mint's loops (000:1707, 1747, 1778, 1797); strings joined with ``+``
-PRINT's comma; ``a ^ 2`` POW(a, 2).
+PRINT's comma; ``a ^ 2`` POW(a, 2); ``END SUB`` RETURN.
 """
 
 from __future__ import annotations
@@ -33,6 +33,7 @@ def other_languages_habit(line: LogicalLine, begin: int, end: int, failure: Pars
         or _increment(line, begin, end, failed)
         or _c_operator(line, begin, end, failed)
         or _basic_loop(line, begin, end, failed)
+        or _end_sub(line, begin, end, failed)
         or _joined_strings(line, begin, end, failed)
         or _power(line, begin, end, failed)
     )
@@ -132,6 +133,15 @@ def _basic_loop(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnos
         detail = "LOOP .. ENDL loops for ever and takes no condition: a loop tested at its end is REPEAT .. UNTIL"
         return mint_error(2003, line.token_span(failed), detail)
     return None
+
+
+def _end_sub(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
+    """``END SUB``: a subroutine is a label and what follows it up to its RETURN (000:1841-1850)."""
+    if not (line.kinds[begin] is _K.END and failed == begin + 1 == end - 1 and line.texts[failed].upper() == "SUB"):
+        return None
+    words = shared_span(line.starts[begin], line.ends[failed])
+    fix = Fix("Write RETURN", (Edit(words, "RETURN"),), safe=True)
+    return mint_error(2003, words, "a subroutine ends with RETURN, not END SUB", fixes=(fix,))
 
 
 def _joined_strings(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:

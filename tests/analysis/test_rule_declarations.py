@@ -69,6 +69,10 @@ def test_a_misspelt_variable_gets_the_declared_name_it_resembles() -> None:
             "HOME = _hmNEGATIVE_SWTCH\n", "_hmNEGATIVE_SWITCH", "HOME = _hmNEGATIVE_SWITCH\n", id="a-constant"
         ),
         pytest.param("OUT1 = _of\n", "_OFF", "OUT1 = _OFF\n", id="a-general-constant-in-small-letters"),
+        # other BASICs' TRUE is Mint's _true (000:1003, 1017), not the keyword TORQUE it resembles
+        pytest.param(
+            "DIM a\na = TRUE\n", "_TRUE", "DIM a\na = _TRUE\n", id="a-constant-written-without-its-underscore"
+        ),
     ],
 )
 def test_an_undeclared_name_gets_the_name_or_constant_it_resembles(source: str, meant: str, fixed: str) -> None:

@@ -170,11 +170,13 @@ _V3_TITLE = "Undefined Variables"  # the v3 guide's name for the error (001:1297
 
 
 def _constant_like(spelling: str, dialect: Dialect) -> str | None:
-    """The predefined constant an undeclared name beginning with ``_`` is most likely a misspelling of: every
-    constant begins with it, and case does not matter (000:843-844)."""
-    if not spelling.startswith("_"):
-        return None
+    """The predefined constant an undeclared name is most likely a misspelling of: every constant begins with
+    ``_``, and case does not matter (000:843-844); a name without it is one only with it put back (``TRUE`` for
+    ``_true``, 000:1003)."""
     constants = database().constants_of(dialect)
+    if not spelling.startswith("_"):
+        constant = constants.get(f"_{spelling.upper()}")
+        return constant.name if constant is not None else None
     meant = closest(spelling.upper(), constants)
     return constants[meant].name if meant is not None else None
 

@@ -13,7 +13,7 @@ program.
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import field
 from pathlib import Path
 
@@ -126,19 +126,12 @@ class Plan:
         self._failed.add(key)
         self.problems.append(problem)
 
-    def reports(self, results: Sequence[Checked], silenced: Sequence[FileFixed] = ()) -> list[FileReport]:
-        """The reports in the order the files were planned, each configuration's before its first program's (or,
-        for one ``silenced`` wrote, what its new text has left)."""
+    def reports(self, results: Sequence[Checked], configurations: Mapping[Path, FileReport]) -> list[FileReport]:
+        """The reports in the order the files were planned, each configuration's (from ``configurations``, by the
+        file's key: ``configuration_reports``, or what ``--add-ignore`` left) before its first program's."""
         placed: dict[int, list[FileReport]] = {}
-        written = {_key(file.original.path): file for file in silenced}
         for key, configuration in self._configurations.items():
-            file = written.get(key)
-            report = (
-                FileReport(str(configuration.source.path), file.fixed.text, file.fixed.remaining)
-                if file is not None
-                else self._configuration_report(configuration, results)
-            )
-            placed.setdefault(configuration.place, []).append(report)
+            placed.setdefault(configuration.place, []).append(configurations[key])
         reports: list[FileReport] = []
         for index, result in enumerate(results):
             reports.extend(placed.pop(index, []))
@@ -147,26 +140,29 @@ class Plan:
         reports.extend(report for rest in placed.values() for report in rest)
         return reports
 
-    def silenced_configurations(self, results: Sequence[Checked]) -> list[FileFixed]:
-        """``--add-ignore`` for the configuration files: each one's findings, as its programs saw them, silenced by
-        comments on their lines (not a MintMT file read as v4, whose comments are not REM)."""
+    def configuration_reports(self, results: Sequence[Checked]) -> dict[Path, FileReport]:
+        """Each configuration file's report, by its key: as its programs saw it, or checked on its own."""
+        return {
+            key: _configuration_report(
+                configuration, [results[i].configuration for i in configuration.jobs if results[i].report is not None]
+            )
+            for key, configuration in self._configurations.items()
+        }
+
+    def silenced_configurations(self, reports: Mapping[Path, FileReport]) -> dict[Path, FileFixed]:
+        """``--add-ignore`` for the configuration files: each one's findings (``reports``, by the file's key)
+        silenced by comments on their lines (not a MintMT file read as v4, whose comments are not REM)."""
         from mintlang.analysis.silencing import silence  # noqa: PLC0415 - --add-ignore alone needs it
 
-        silenced = []
-        for configuration in self._configurations.values():
-            report = self._configuration_report(configuration, results)
-            source, options = configuration.source, configuration.options
-            if not report.diagnostics or options.hint(source) is not None:
+        silenced = {}
+        for key, configuration in self._configurations.items():
+            source, options, found = configuration.source, configuration.options, reports[key].diagnostics
+            if not found or options.hint(source) is not None:
                 continue
             analysis = check_application("", config=source.text, dialect=options.dialect, controller=options.controller)
-            done = silence(analysis.model, report.diagnostics, Unit.CONFIGURATION)
-            silenced.append(FileFixed(source, Fixed(done.text, done.silenced, done.left, converged=True)))
+            done = silence(analysis.model, found, Unit.CONFIGURATION)
+            silenced[key] = FileFixed(source, Fixed(done.text, done.silenced, done.left, converged=True))
         return silenced
-
-    @staticmethod
-    def _configuration_report(configuration: _Configuration, results: Sequence[Checked]) -> FileReport:
-        seen = [results[i].configuration for i in configuration.jobs if results[i].report is not None]
-        return _configuration_report(configuration, seen)
 
     def program_reports(self, results: Sequence[Checked]) -> list[FileReport]:
         """The reports of the programs alone: what ``--fix`` fixes, as it leaves configuration files as they are,

@@ -277,8 +277,9 @@ def check(
         sys.exit(_INTERRUPTED)
     unchecked = [unread(e) for e in found.unreadable] + planned.problems + [r.problem for r in results if r.problem]
     problems = [item.said for item in unchecked]
-    configurations = planned.silenced_configurations(results) if fixing is Fixing.SILENCE else []
-    fixed = [result.fixed for result in results if result.fixed is not None] + configurations
+    configurations = planned.configuration_reports(results)
+    silenced = planned.silenced_configurations(configurations) if fixing is Fixing.SILENCE else {}
+    fixed = [result.fixed for result in results if result.fixed is not None] + list(silenced.values())
     outcome, unwritten = None, set[Path]()
     if diff:  # the changes instead of the report, as ruff's --diff
         with destination(output_file, _fail) as stream:
@@ -288,7 +289,10 @@ def check(
         problems += outcome.problems
         unwritten = outcome.unwritten  # a fix not written leaves the file's findings where they were
         results = [r.unfixed() if r.fixed and r.fixed.original.path in unwritten else r for r in results]
-    reports = planned.reports(results, [file for file in configurations if file.original.path not in unwritten])
+    for key, file in silenced.items():  # a configuration file written reports what its new text has left
+        if file.original.path not in unwritten:
+            configurations[key] = FileReport(str(file.original.path), file.fixed.text, file.fixed.remaining)
+    reports = planned.reports(results, configurations)
     entries = _entries(unchecked, layer) if output_format not in _FOR_PEOPLE else []
     if (reports or entries or output_format not in _FOR_PEOPLE) and not diff:  # a machine format's empty report too
         with destination(output_file, _fail) as stream:

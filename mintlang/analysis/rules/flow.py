@@ -593,8 +593,7 @@ def _blocks_named(blocks: list[Block]) -> list[str]:
 
 
 def _contains(block: Block, line: int) -> bool:
-    end = block.closer.line if block.closer is not None else math.inf
-    return block.opener.line <= line <= end
+    return block.opener.line <= line <= _last_line(block)
 
 
 def _jumps_into_routines(

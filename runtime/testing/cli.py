@@ -2,7 +2,7 @@
 
 Exit status: 0 when every test passed, 1 when one failed or could not be
 judged, 2 for a usage problem or a path that cannot be read (the other tests
-still run), 5 when no test was found (as pytest does).
+still run), 5 when no test was found or ``-k`` selected none (as pytest does).
 """
 
 from __future__ import annotations
@@ -60,6 +60,13 @@ from mintlang.runtime.hardware import CONTROLLERS
 @click.option("--no-config", is_flag=True, help="Run each program alone, without the configuration file beside it.")
 @exclude_options()
 @jobs_option("Tests run at once, on as many processes.  [default: 0, every core]")
+@click.option(
+    "-k",
+    "keyword",
+    metavar="EXPRESSION",
+    help="Run only the tests whose path contains these words (any case), joined with and, or, not and brackets, "
+    "as pytest's -k: -k 'conveyor and not slow'.",
+)
 @click.option("--collect-only", is_flag=True, help="List the tests found (text or json) and run none.")
 @format_option(["text", "junit", "json"])
 @output_file_option()

@@ -20,10 +20,12 @@ from mintlang.runtime.testing.running import Check, TestResult, Verdict
 _STYLE = {Verdict.PASSED: "green", Verdict.FAILED: "bold red", Verdict.ERROR: "bold yellow"}
 
 
-def summary(results: Sequence[TestResult], seconds: float) -> str:
-    """``3 passed, 1 failed, 1 error in 2.41 s``, the verdicts in a fixed order, only those that occur."""
+def summary(results: Sequence[TestResult], seconds: float, deselected: int = 0) -> str:
+    """``3 passed, 1 failed, 1 error, 2 deselected in 2.41 s``, the verdicts in a fixed order, only those that
+    occur, then the tests ``-k`` left out, as pytest counts them."""
     counts = Counter(result.verdict for result in results)
     parts = [f"{counts[verdict]} {_word(verdict, counts[verdict])}" for verdict in Verdict if counts[verdict]]
+    parts += [f"{deselected} deselected"] if deselected else []
     return f"{', '.join(parts) or 'no tests ran'} in {seconds:.2f} s"
 
 
@@ -32,10 +34,17 @@ def _word(verdict: Verdict, count: int) -> str:
 
 
 def text(
-    results: Sequence[TestResult], seconds: float, console: Console, *, quiet: bool = False, verbose: bool = False
+    results: Sequence[TestResult],
+    seconds: float,
+    console: Console,
+    *,
+    deselected: int = 0,
+    quiet: bool = False,
+    verbose: bool = False,
 ) -> None:
     """A line per test, and under it what failed; ``quiet``: the tests that did not pass alone, and no
-    closing count; ``verbose``: every expectation under its test, held or not."""
+    closing count; ``verbose``: every expectation under its test, held or not; ``deselected``: the tests
+    ``-k`` left out, counted in the closing line."""
     for result in results:
         if quiet and result.verdict is Verdict.PASSED:
             continue
@@ -47,7 +56,7 @@ def text(
         for detail in _details(result, verbose=verbose):
             console.print(f"    {detail}", highlight=False, markup=False)
     if not quiet:
-        console.print(Text(summary(results, seconds), style="bold"), highlight=False)
+        console.print(Text(summary(results, seconds, deselected), style="bold"), highlight=False)
 
 
 def _why(result: TestResult) -> str:

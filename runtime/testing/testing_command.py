@@ -5,6 +5,7 @@ Kept apart so that ``mint test --help`` (and ``mint --help``, which lists it) lo
 
 from __future__ import annotations
 
+import shlex
 import sys
 import time
 from functools import partial
@@ -28,6 +29,8 @@ from mintlang.runtime.testing.running import Options, TestResult, Verdict, run_c
 if TYPE_CHECKING:
     from rich.console import Console
 
+    from mintlang.runtime.testing.selection import Selector
+
 PASSED, FAILED, USAGE, NO_TESTS = 0, 1, 2, 5
 
 
@@ -46,6 +49,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     extend_exclude: tuple[str, ...] | None,
     force_exclude: bool | None,
     jobs: int | None,
+    keyword: str | None,
     collect_only: bool,
     output_format: str,
     output_file: Path | None,
@@ -61,6 +65,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
     if lcov is not None and not coverage:  # else the run ends with no tracefile and no word of why
         raise click.UsageError(f"--lcov {lcov} names the tracefile --coverage writes: add --coverage")
     tracefile_path = lcov or Path("lcov.info")
+    selected = _selector(keyword)
     layer = exclusions(exclude, extend_exclude, force_exclude)
     layer = without_configuration(layer) if no_config else layer
     cases, unreadable = discover(paths or (Path(),), layer)
@@ -69,6 +74,12 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         errors.print(f"mint test: {problem.message}", markup=False)
     if not cases:
         errors.print("mint test: no tests found (programs with REM @expect lines or a .scenario.toml beside them)")
+        sys.exit(USAGE if unreadable else NO_TESTS)
+    found = len(cases)
+    cases = [case for case in cases if selected(case.name)]
+    if not cases:
+        none = f"mint test: -k {shlex.quote(keyword or '')} selected none of the {found} tests found"
+        errors.print(none, markup=False)
         sys.exit(USAGE if unreadable else NO_TESTS)
     if collect_only:
         with destination(output_file, _fail) as stream:
@@ -96,7 +107,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
             write_in_pieces(stream, reports.as_json(results, seconds))
         else:
             shown = console(color if output_file is None else "never", file=stream)
-            reports.text(results, seconds, shown, quiet=quiet, verbose=verbose)
+            reports.text(results, seconds, shown, deselected=found - len(cases), quiet=quiet, verbose=verbose)
     if coverage:
         _coverage(results, tracefile_path, None if quiet else console(color, stderr=output_format != "text"))
     if not quiet:
@@ -107,6 +118,18 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         sys.exit(USAGE)
     passed = all(result.verdict is Verdict.PASSED for result in results)
     sys.exit(PASSED if passed or exit_zero else FAILED)
+
+
+def _selector(keyword: str | None) -> Selector:
+    """The tests ``-k`` selects, every one without it; an expression that cannot be read is a usage error."""
+    if keyword is None:
+        return lambda _path: True
+    from mintlang.runtime.testing.selection import KeywordError, selector  # noqa: PLC0415 - lark, for a -k only
+
+    try:
+        return selector(keyword)
+    except KeywordError as error:
+        raise click.UsageError(f"-k {shlex.quote(keyword)}: {error}") from None
 
 
 def _coverage(results: list[TestResult], lcov: Path, table: Console | None) -> None:

@@ -33,6 +33,7 @@ ArrayArgument = float | list[float]  # an array named bare arrives as its storag
 ArrayCommand = Callable[[tuple[ArrayArgument, ...]], bool]  # a function-style command taking arrays (CAMTABLE)
 # A MintMT keyword with indices after its axes, CONTOURPARAMETER([0,1],0) = 10: channels, indices, values.
 IndexedWriter = Callable[[Channels | None, tuple[int, ...], Values], bool]
+IndexedReader = Callable[[int | None, tuple[int, ...]], float]  # PRINT CONTOURPARAMETER(0,0): channel, indices
 
 
 @record
@@ -42,6 +43,7 @@ class KeywordAccess:
     command: Command | None = None
     array_command: ArrayCommand | None = None
     indexed_write: IndexedWriter | None = None
+    indexed_read: IndexedReader | None = None
     # The reader lowers ``clock.horizon`` to the first tick at which anything (the world, an axis, time) may
     # change what it returns, not only time: a PAUSE reading nothing else sleeps until then (``vm.run_slice``).
     complete_horizon: bool = False
@@ -64,11 +66,14 @@ class KeywordTable:
         command: Command | None = None,
         array_command: ArrayCommand | None = None,
         indexed_write: IndexedWriter | None = None,
+        indexed_read: IndexedReader | None = None,
         complete_horizon: bool = False,
     ) -> None:
         if name in self._entries:
             raise ValueError(f"keyword {name} registered twice")
-        self._entries[name] = KeywordAccess(read, write, command, array_command, indexed_write, complete_horizon)
+        self._entries[name] = KeywordAccess(
+            read, write, command, array_command, indexed_write, indexed_read, complete_horizon
+        )
 
     def replace(self, name: str, *, write: Writer) -> None:
         """Give a registered keyword another writer: a dialect's layer wrapping the v4 one."""

@@ -19,7 +19,14 @@ from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.records import record
 from mintlang.runtime.clock import NEVER, Clock
-from mintlang.runtime.errors import INVALID_AXIS, INVALID_INDEX, SYNTAX_ERROR, MintError, NotSimulated
+from mintlang.runtime.errors import (
+    INVALID_AXIS,
+    INVALID_INDEX,
+    MISSING_PARAMETER,
+    SYNTAX_ERROR,
+    MintError,
+    NotSimulated,
+)
 from mintlang.runtime.interpreter import generated
 from mintlang.runtime.interpreter.generated import Emitter, Source
 from mintlang.runtime.interpreter.vm import Interpreter
@@ -186,14 +193,7 @@ class ExpressionCompiler:
         return READ_OF_WRITE_ONLY
 
     def keyword(self, reference: n.KeywordRef) -> Evaluate:
-        access = self.table.in_program(reference.keyword)
-        if access is None or access.read is None:
-            handled = access is not None and (access.write is not None or access.command is not None)
-            unreadable = handled and not self.table.decides(reference.keyword)
-            if unreadable or self.table.refused_by_the_guide(reference.keyword, write=False):  # a = WAIT
-                raise MintError(self.read_refused(reference.keyword), detail=reference.keyword)
-            raise NotSimulated(reference.keyword, "read")
-        read = access.read
+        read = self.reader(reference)
         number = self.semantics.number  # a parameter kept in counts reads divided by SCALE: held as any value
         channels = self.channels(reference)
         if channels is None:
@@ -212,6 +212,25 @@ class ExpressionCompiler:
         default_axes = channels
         vm = self.vm
         return lambda: number(read(vm.default_axes[0]) if default_axes else read(None))
+
+    def reader(self, reference: n.KeywordRef) -> Reader:
+        """The keyword's reader of one channel; MintMT's indices after the axes (``CONTOURPARAMETER(0,0)``) are
+        evaluated with each read and go to the keyword with the channel, and leaving them out is error 2001."""
+        access = self.table.in_program(reference.keyword)
+        if access is not None and access.indexed_read is not None:
+            selector = reference.selector
+            if selector is None or not selector.indices:
+                raise MintError(MISSING_PARAMETER, detail=f"{reference.keyword} needs its index after the axes")
+            indexed = access.indexed_read
+            indices = tuple(self.compile(item) for item in selector.items[-selector.indices :] if item)
+            return lambda channel: indexed(channel, tuple(int(index()) for index in indices))
+        if access is None or access.read is None:
+            handled = access is not None and (access.write is not None or access.command is not None)
+            unreadable = handled and not self.table.decides(reference.keyword)
+            if unreadable or self.table.refused_by_the_guide(reference.keyword, write=False):  # a = WAIT
+                raise MintError(self.read_refused(reference.keyword), detail=reference.keyword)
+            raise NotSimulated(reference.keyword, "read")
+        return access.read
 
     def channels(self, reference: n.KeywordRef) -> tuple[Evaluate, ...] | bool | None:
         """The channel expressions; ``True`` for the default axes, ``None`` for no channel at all."""

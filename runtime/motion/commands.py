@@ -256,7 +256,7 @@ class Motion:
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "JOG cannot blend from this move")
             if axis.torque is not None:  # only TORQUE may follow TORQUE [000:16850-16851]
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "in torque mode only TORQUE can be written")
-            if self.profile.controller is Controller.MINTDRIVE and not _jogs_unblended(axis):
+            if self._blends_on_mintdrive(axis, continuing=axis.move is not None and axis.move.mode == MD_JOG):
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "MintDrive jogs only an idle or jogging axis")
         start = next_profiler_tick(self.clock.now)
         for axis, value in pairs:
@@ -292,6 +292,10 @@ class Motion:
             axis.require_ready()
             if axis.refuses_blend():
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "TORQUE cannot blend from this move")
+            if self._blends_on_mintdrive(axis, continuing=axis.torque is not None):
+                raise MintError(
+                    MOTION_IN_PROGRESS, axis.number, "MintDrive sets TORQUE only on an idle axis or in torque mode"
+                )
         for axis, value in pairs:
             if axis.move is not None or axis.buffer:
                 self.crash_group(axis)
@@ -301,6 +305,13 @@ class Motion:
             if axis.open_loop_dac is None:
                 axis.dac = value  # the output changes at once, before the next servo tick
         return False
+
+    def _blends_on_mintdrive(self, axis: Axis, *, continuing: bool) -> bool:
+        """Whether a JOG or TORQUE would blend on MintDrive, which has none: the axis must be idle or already in
+        that mode (``continuing``), with no move loaded behind (000:12709-12712, 16886-16889)."""
+        if self.profile.controller is not Controller.MINTDRIVE:
+            return False
+        return bool(axis.buffer) or (not continuing and axis.busy())
 
     # -------------------------------------------------------------- stopping
 
@@ -622,11 +633,3 @@ class Motion:
             if len(request.axes) > 1 and request.targets is not None:
                 return math.dist(request.targets, [self.axes[number].demand for number in request.axes])
         return axis.remaining()
-
-
-def _jogs_unblended(axis: Axis) -> bool:
-    """Whether a JOG starts without blending: MintDrive has no blended moves, so the axis must be idle or
-    jogging, with no move loaded behind (000:12709-12712)."""
-    move = axis.move
-    jogging = move is not None and move.mode == MD_JOG
-    return not axis.buffer and (jogging or not axis.busy())

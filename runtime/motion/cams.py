@@ -203,10 +203,9 @@ def register(table: KeywordTable, motion: Motion) -> None:
 
     def camtable(arguments: tuple[ArrayArgument, ...]) -> bool:
         """CAMTABLE(axis, positions, masters | NULL): select the tables, reset CAMSTART/CAMEND/CAMINDEX (FG-11)."""
-        if len(arguments) not in (2, 3):
+        if len(arguments) != 3:  # NULL stands for no master table (000:7957-7958)
             raise MintError(TABLE_ERROR, detail="CAMTABLE(axis, positions, masters or NULL)")
-        number, positions = arguments[0], arguments[1]
-        masters = arguments[2] if len(arguments) == 3 else 0.0
+        number, positions, masters = arguments
         if isinstance(number, list):
             raise MintError(TABLE_ERROR, detail="the first argument of CAMTABLE is an axis")
         axis = motion.axis(int(number))

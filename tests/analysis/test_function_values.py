@@ -3,7 +3,7 @@
 Counts worked out from the v4 guide's formats: POW(x, y) two (000:15152), SIN(<angle>),
 INT(<expression>), ABS (<expression>) one each (000:15944 ...), COMMS( {node, } element) one
 or two (braces are optional items, 000:5578-5579), CAMTABLE ( axis, position array, {master
-increment array} ) two or three.
+increment array} ) three, NULL written for a master array left out (000:7957-7958).
 """
 
 from __future__ import annotations

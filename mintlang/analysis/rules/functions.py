@@ -9,14 +9,17 @@ SIN(<angle>)``) is no statement: alone it is a keyword neither read nor given a
 value (#2005, 000:18930-18934), given a value it is read only (#2000,
 000:18905-18908); ``COMMS(1) = 5`` and ``CAMTABLE(0, a, NULL)`` are statements as
 their formats write them. Everything comes from the keyword database's formats,
-so a keyword without a bracketed format is not checked.
+so a keyword without a bracketed format is not checked, save one word: CAMTABLE's braced
+master increment array is written NULL when there is none (000:7957-7958), so its call
+always has three values.
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from functools import cache
+from types import MappingProxyType
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import LineScope
@@ -26,6 +29,8 @@ from mintlang.records import record
 from mintlang.syntax import nodes as n
 
 _OPTIONAL = re.compile(r"\{([^}]*)\}")
+# Functions whose braced values an entry says must then be written as a stand-in, and the stand-in.
+_STAND_INS: Mapping[str, str] = MappingProxyType({"CAMTABLE": "NULL"})  # 000:7957-7958
 
 
 @record
@@ -35,13 +40,15 @@ class _Arity:
     least: int
     most: int
     format: str
+    stand_in: str | None  # written for a braced value left out, which is then still counted
 
     def holds(self, count: int) -> bool:
         return self.least <= count <= self.most
 
     def expected(self) -> str:
         counted = str(self.least) if self.least == self.most else f"{self.least} or {self.most}"
-        return f"{counted} value{'' if self.most == 1 else 's'}"
+        told = f" ({self.format}; {self.stand_in} for one left out)" if self.stand_in else f" ({self.format})"
+        return f"{counted} value{'' if self.most == 1 else 's'}{told}"
 
 
 @record
@@ -57,7 +64,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         arity = _arity(call.function, scope.dialect)
         if arity is not None and not arity.holds(len(call.arguments)):
             given = len(call.arguments)
-            detail = f"{call.function} takes {arity.expected()} ({arity.format}), not {given}"
+            detail = f"{call.function} takes {arity.expected()}, not {given}"
             yield Finding(scope.unit, mint_error(2003, call.span, detail))
     for statement in scope.facts.statements:
         if type(statement) is n.FunctionStatement:
@@ -97,7 +104,9 @@ def _arity(name: str, dialect: Dialect) -> _Arity | None:
     inside, text = found
     optional = sum(len(_items(group)) for group in _OPTIONAL.findall(inside))
     required = len(_items(_OPTIONAL.sub("", inside)))
-    return _Arity(required, required + optional, text)
+    stand_in = _STAND_INS.get(name)
+    least = required + optional if stand_in is not None else required
+    return _Arity(least, required + optional, text, stand_in)
 
 
 @cache

@@ -41,6 +41,9 @@ class Addressing(StrEnum):
 CIRCLES = frozenset({"CIRCLEA", "CIRCLER"})
 """The axis keywords given more values than axes: a centre on each of two axes and an angle (000:8152, 8215)."""
 
+CIRCLE_AXES = 2
+"""The axes a circle moves, ``CIRCLEA[axis0,axis1]`` (000:8152, 8215): one listed is too few, three too many."""
+
 VECTORS = frozenset({"VECTORA", "VECTORR"})
 """The straight lines interpolated through two axes or more (000:16958, 17031: at least two must be given)."""
 

@@ -12,7 +12,7 @@ import math
 from collections.abc import Callable, Mapping, Sequence
 
 from mintlang.diagnostics import Span
-from mintlang.keyworddb.model import CIRCLES
+from mintlang.keyworddb.model import CIRCLE_AXES, CIRCLES
 from mintlang.records import record
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import MISSING_PARAMETER, SYNTAX_ERROR, TOO_MANY_VALUES, MintError, NotSimulated
@@ -197,6 +197,8 @@ class StatementCompiler:
         if printer is not None and statement.values is None:
             return self._printing_keyword(statement, printer)
         access = self.table.in_program(reference.keyword)
+        if reference.keyword in CIRCLES:
+            _a_circles_axes(reference.selector)
         if reference.selector is not None and reference.selector.indices:
             return self._indexed_write(statement, access)
         channels = self._channels(reference)
@@ -789,6 +791,13 @@ def _within_the_axes(count: int, addressed: tuple[int, ...] | None) -> None:
     if addressed is not None and count > len(addressed):
         axes = f"{len(addressed)} ax{'is' if len(addressed) == 1 else 'es'}"
         raise MintError(TOO_MANY_VALUES, detail=f"{count} values for {axes}")
+
+
+def _a_circles_axes(selector: n.Selector | None) -> None:
+    """A circle listing more than its two axes is #2017 when its line runs, where ``mint check`` reports it
+    (000:8152, 19047); the default axes (AXES) may be more, and the first two carry the circle."""
+    if selector is not None and not selector.dot and len(selector.axes) > CIRCLE_AXES:
+        raise MintError(TOO_MANY_VALUES, detail=f"a circle moves two axes, {len(selector.axes)} listed")
 
 
 def _one_value(count: int, keyword: str) -> None:

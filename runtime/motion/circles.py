@@ -12,13 +12,12 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from mintlang.keyworddb.model import CIRCLE_AXES
 from mintlang.runtime.errors import MISSING_PARAMETER, TOO_MANY_VALUES, MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
 from mintlang.runtime.motion.axis import MD_CIRCULAR, MOTION_IN_PROGRESS, Request
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.paths import PATH_MODES, Arc, PathSegment
-
-CIRCLE_AXES = 2
 
 
 def circle(motion: Motion, *, relative: bool) -> Callable[[Channels | None, Values], bool]:

@@ -25,7 +25,7 @@ from mintlang.controllers import ChannelRange, ControllerProfile, io_banks
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import CIRCLES, VECTORS, Addressing, Keyword, KeywordKind
+from mintlang.keyworddb.model import CIRCLE_AXES, CIRCLES, VECTORS, Addressing, Keyword, KeywordKind
 from mintlang.semantic.constants import constant_integer
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
@@ -35,7 +35,7 @@ _CAPTURE_CHANNELS = ChannelRange(0, 5)  # the same on every controller
 _CAN_BUSES = ChannelRange(1, 2)
 _CAN_NODES = ChannelRange(0, 63)  # chapter 12, error 26
 _SERIAL_TERMINALS = frozenset({"_TMRS232", "_TMRS485"})
-_CIRCLE_AXES, _CIRCLE_VALUES = 2, 3  # centre, centre and angle on two axes
+_CIRCLE_VALUES = 3  # centre, centre and angle on two axes
 _VECTOR_AXES = 2  # the fewest a vector move interpolates
 
 # Which range a channel keyword's number is checked against, and the error it gives.
@@ -391,9 +391,9 @@ def values_for_axes(use: KeywordUse, axes: int) -> Iterator[Finding]:
 def _circle(use: KeywordUse, selector: n.Selector, name: str, listed: int) -> Iterator[Finding]:
     """Two axes addressed and three values."""
     detail = f"{_circle_shape(name)} moves two axes, {listed} listed"
-    if listed > _CIRCLE_AXES:
+    if listed > CIRCLE_AXES:
         yield Finding(use.unit, mint_error(2017, selector.span, detail))
-    elif listed < _CIRCLE_AXES:
+    elif listed < CIRCLE_AXES:
         yield Finding(use.unit, mint_error(2001, selector.span, detail))
     yield from circle_values(use, name)
 

@@ -48,11 +48,13 @@ OTHER_BASICS = {"WEND": "ENDW", "ENDWHILE": "ENDW", "CALL": "GOSUB"}
 
 _WAIT = "a wait of a time is WAIT = milliseconds"  # WAIT = <expression> (000:17324, 17343)
 
-# Words of other BASICs that no Mint word replaces, with how Mint writes what they do: an IF block has
-# one ELSE, alone on its line, and an IF nested in it has its own ENDIF (000:1589-1600, 1633-1654).
+# An IF block has one ELSE, alone on its line, and an IF nested in it has its own ENDIF (000:1589-1600, 1633-1654):
+# how Mint writes other BASICs' ELSEIF and ELSE IF.
+NESTED_IF = "write ELSE on its own line, then an IF block of its own inside it, closed before the outer one"
+
+# Words of other BASICs that no Mint word replaces, with how Mint writes what they do.
 OTHER_BASICS_WRITTEN = {
-    "ELSEIF": "an IF block has no ELSEIF: write ELSE on its own line, then an IF block of its own inside it, "
-    "closed before the outer one",
+    "ELSEIF": f"an IF block has no ELSEIF: {NESTED_IF}",
     "LET": "Mint assigns without LET: leave it out",  # newPos = 2 (000:917-922)
     "SUB": "a subroutine begins with its label, #name, ends with RETURN and is called by GOSUB name",  # 000:1841-1850
     "DELAY": _WAIT,

@@ -4,16 +4,18 @@ Mint assigns with ``=`` alone and knows only ``+ - * /`` and MOD as arithmetic (
 ``count += 1`` (and ``count++``) is told ``count = count + 1``, with that as a safe fix: the target and the operator
 are both written out, and a right-hand side of more than one token is bracketed, as ``*=`` binds it.
 C's ``!=`` and ``==`` are told Mint's ``<>`` and ``=`` (000:1256-1263), ``&&`` and ``||`` its AND and OR, ``//`` REM;
-Visual Basic's ``DO .. LOOP UNTIL`` Mint's loops (000:1707, 1747, 1778, 1797); strings joined with ``+``
-PRINT's comma; ``a ^ 2`` POW(a, 2); ``END SUB`` RETURN.
+Visual Basic's ``DO .. LOOP UNTIL`` Mint's loops (000:1707, 1747, 1778, 1797) and ``ELSE IF`` a nested IF block;
+strings joined with ``+`` or ``&`` PRINT's comma; ``a ^ 2`` POW(a, 2); ``END SUB`` RETURN; ``&H1F`` 0x1F.
 """
 
 from __future__ import annotations
 
 from typing import NamedTuple
 
+from mintlang.analysis.suggestions import NESTED_IF
 from mintlang.codes import mint_error
 from mintlang.diagnostics import Diagnostic, Edit, Fix
+from mintlang.dialect import Dialect
 from mintlang.syntax.grammar import ParseFailure
 from mintlang.syntax.lines import LogicalLine
 from mintlang.syntax.spans import span as shared_span
@@ -24,7 +26,9 @@ _ARITHMETIC = frozenset({_K.PLUS, _K.MINUS, _K.STAR, _K.SLASH})
 _BRACKETS = {_K.LPAR: 1, _K.LSQB: 1, _K.RPAR: -1, _K.RSQB: -1}
 
 
-def other_languages_habit(line: LogicalLine, begin: int, end: int, failure: ParseFailure) -> Diagnostic | None:
+def other_languages_habit(
+    line: LogicalLine, begin: int, end: int, failure: ParseFailure, dialect: Dialect
+) -> Diagnostic | None:
     """The diagnostic for the statement from ``begin`` to ``end`` if it fails where another language's way of
     writing it shows."""
     failed = begin + failure.index
@@ -33,7 +37,9 @@ def other_languages_habit(line: LogicalLine, begin: int, end: int, failure: Pars
         or _increment(line, begin, end, failed)
         or _c_operator(line, begin, end, failed)
         or _basic_loop(line, begin, end, failed)
+        or _else_if(line, begin, end, failed)
         or _end_sub(line, begin, end, failed)
+        or _radix_number(line, end, failed, dialect)
         or _joined_strings(line, begin, end, failed)
         or _power(line, begin, end, failed)
     )
@@ -135,6 +141,13 @@ def _basic_loop(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnos
     return None
 
 
+def _else_if(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
+    """``ELSE IF``: an IF after the ELSE on its line, the grammar failing at the IF."""
+    if not (line.kinds[begin] is _K.ELSE and failed == begin + 1 < end and line.kinds[failed] is _K.IF):
+        return None
+    return mint_error(2003, shared_span(line.starts[begin], line.ends[failed]), f"Mint has no ELSE IF: {NESTED_IF}")
+
+
 def _end_sub(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
     """``END SUB``: a subroutine is a label and what follows it up to its RETURN (000:1841-1850)."""
     if not (line.kinds[begin] is _K.END and failed == begin + 1 == end - 1 and line.texts[failed].upper() == "SUB"):
@@ -144,20 +157,66 @@ def _end_sub(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic
     return mint_error(2003, words, "a subroutine ends with RETURN, not END SUB", fixes=(fix,))
 
 
+class _Radix(NamedTuple):
+    """How Mint writes the numbers of one of other BASICs' radix prefixes."""
+
+    base: int
+    name: str
+    prefix: str | None  # what Mint writes before the digits; None: Mint has no such numbers
+    told: str = ""  # the prefix as the message names it
+
+
+# Other BASICs' radix prefixes, each lexed as '&' (Mint's AND) and a word: Mint v4 writes hexadecimal with 0x
+# (000:769-770), binary with a leading zero (000:743-745, 001:1185), and has no octal.
+_RADICES = {
+    "H": _Radix(16, "hexadecimal", "0x", "0x"),
+    "B": _Radix(2, "binary", "0", "a leading 0"),
+    "O": _Radix(8, "octal", None),
+}
+
+
+def _radix_number(line: LogicalLine, end: int, failed: int, dialect: Dialect) -> Diagnostic | None:
+    """``&H1F``, ``&B101``, ``&O17``: an '&' the grammar fails at, joined to a prefix letter and its digits. The
+    number is written as Mint writes it, or in decimal where Mint has no such numbers (v3 has no hexadecimal)."""
+    if not (failed + 1 < end and line.texts[failed] == "&" and line.ends[failed] == line.starts[failed + 1]):
+        return None
+    word = line.texts[failed + 1]
+    radix, digits = _RADICES.get(word[:1].upper()), word[1:]
+    if radix is None or not digits.replace("_", "").isalnum() or any(line.expanded[failed : failed + 2]):
+        return None
+    try:
+        value = int(digits, radix.base)
+    except ValueError:
+        return None
+    if radix.prefix is None or (radix.base == 16 and dialect is Dialect.V3):
+        written = str(value)
+        message = f"Mint{' v3' if radix.prefix else ''} has no {radix.name} numbers: write {written}"
+    else:
+        written = radix.prefix + digits
+        message = f"Mint writes a {radix.name} number with {radix.told}: {written}"
+    span = shared_span(line.starts[failed], line.ends[failed + 1])
+    return mint_error(2003, span, message, fixes=(Fix(f"Write {written}", (Edit(span, written),), safe=True),))
+
+
+# What other BASICs join strings with, and what Mint makes of it where it is no PRINT item separator.
+_JOINS = {"+": "", "&": ", its bitwise AND"}  # 000:1286-1289
+
+
 def _joined_strings(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
-    """``PRINT "a" + b``: PRINT's items follow one another after a comma (000:15299-15302), and a string is no
-    value to add. Between two strings the comma is plainly meant; after one, ``+`` may have summed what follows."""
-    kinds = line.kinds
-    if kinds[begin] is not _K.PRINT and line.texts[begin].upper() != "LINE":  # LINE takes PRINT's items: 000:15353
+    """``PRINT "a" + b``, ``PRINT "a" & b``: PRINT's items follow one another after a comma (000:15299-15302), and
+    a string is no value to add or AND. Between two strings the comma is plainly meant; after one, ``+`` may have
+    summed what follows, and of ``"a" & b & c`` the second '&' would be left as an AND."""
+    kinds, texts = line.kinds, line.texts
+    if kinds[begin] is not _K.PRINT and texts[begin].upper() != "LINE":  # LINE takes PRINT's items: 000:15353
         return None
-    plus = failed if failed < end and kinds[failed] is _K.PLUS else failed - 1
-    if not (begin < plus < end - 1 and kinds[plus] is _K.PLUS and _K.STRING in (kinds[plus - 1], kinds[plus + 1])):
+    join = failed if failed < end and texts[failed] in _JOINS else failed - 1
+    if not (begin < join < end - 1 and texts[join] in _JOINS and _K.STRING in (kinds[join - 1], kinds[join + 1])):
         return None
-    safe = kinds[plus - 1] is kinds[plus + 1] is _K.STRING
-    span = line.token_span(plus)
-    fix = Fix("Separate the items with ','", (Edit(shared_span(line.ends[plus - 1], span.end), ","),), safe=safe)
-    detail = "Mint does not join strings with '+': separate the items with ',', which prints each directly after "
-    return mint_error(2003, span, detail + "the one before", fixes=(fix,))
+    safe = kinds[join - 1] is kinds[join + 1] is _K.STRING
+    span = line.token_span(join)
+    fix = Fix("Separate the items with ','", (Edit(shared_span(line.ends[join - 1], span.end), ","),), safe=safe)
+    detail = f"Mint does not join strings with '{texts[join]}'{_JOINS[texts[join]]}: separate the items with ',', "
+    return mint_error(2003, span, detail + "which prints each directly after the one before", fixes=(fix,))
 
 
 _OPERANDS = frozenset({_K.NAME, _K.NUMBER, _K.KEYWORD})

@@ -367,7 +367,7 @@ def _recover(  # noqa: PLR0917 - the line, its reading, and where the findings g
         broken = kinds[begin:end]
         statements.append(n.SyntaxError_(span, _opened_block(broken), _closing_word(broken)))
         issue = (
-            other_languages_habit(line, begin, end, result)
+            other_languages_habit(line, begin, end, result, dialect)
             or _misspelt_keyword(line, begin, result, words, controller)
             or _describe(line, begin, end, result, words)
         )

@@ -3,7 +3,9 @@
 Users write ``pos.0``, ``PS.0`` or ``OUT3``; the simulator should answer one
 spelling only, so every target is made canonical here: upper case, the
 keyword's full name, an axis or channel as ``.n`` and indexes as ``(i,j)``.
-A Mint v3 program's targets are its own keywords (``MODE.0``, ``GN.1``, ``IN3``).
+A Mint v3 program's targets are its own keywords (``MODE.0``, ``GN.1``, ``IN3``). An axis may also be given
+in square brackets, as programs give it (``IDLE[0]`` is ``IDLE.0``: 000:196-210, 556-557; 001:649-667);
+a channel takes only the dot (000:560) and an array's index round brackets (000:1063-1066).
 """
 
 from __future__ import annotations
@@ -12,13 +14,14 @@ import re
 
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Addressing, KeywordKind, V3Keyword
+from mintlang.keyworddb.model import Addressing, Keyword, KeywordKind, V3Keyword
 from mintlang.records import record
 from mintlang.runtime.scenario.problems import Invalid
 
 _TARGET = re.compile(
     r"(?P<name>[A-Za-z_][A-Za-z0-9_]*)"
-    r"(?:\.(?P<dot>[0-9]+)|\((?P<indexes>\s*-?[0-9]+\s*(?:,\s*-?[0-9]+\s*)*)\))?"
+    r"(?:\.(?P<dot>[0-9]+)|\((?P<indexes>\s*-?[0-9]+\s*(?:,\s*-?[0-9]+\s*)*)\)"
+    r"|\[(?P<axes>\s*[0-9]+\s*(?:,\s*[0-9]+\s*)*)\])?"
 )
 _GLUED_CHANNEL = re.compile(r"[0-9]+$")
 
@@ -46,12 +49,14 @@ def target(written: str, dialect: Dialect = Dialect.V4) -> Target:
     found = _TARGET.fullmatch(written.strip())
     if found is None:
         raise Invalid(f"{written!r} is not a keyword, variable or array element (e.g. POS.0, count, table(3))")
-    name, dot, indexes = found["name"].upper(), found["dot"], found["indexes"]
+    name, indexes = found["name"].upper(), found["indexes"]
     suffix = "" if indexes is None else "(" + ",".join(str(int(i)) for i in indexes.split(",")) + ")"
     if dialect is Dialect.V3:
-        return _v3_target(found["name"], name, dot, suffix)
+        v3_keyword = database().lookup_v3(name)
+        return _v3_target(found["name"], name, _dot(found, v3_keyword), suffix)
     db = database()
     keyword = (db.mintmt_keywords.get(name) if dialect is Dialect.MINTMT else None) or db.lookup(name)
+    dot = _dot(found, keyword)
     if keyword is None:
         return _variable(found["name"], name, dot, suffix)
     if keyword.kind is not KeywordKind.PARAMETER:
@@ -66,6 +71,30 @@ def target(written: str, dialect: Dialect = Dialect.V4) -> Target:
         return Target(f"{keyword.name}.{int(dot)}{suffix}", every_axis=False)
     every_axis = keyword.addressing is Addressing.AXIS and not suffix
     return Target(keyword.name + suffix, every_axis)
+
+
+def _dot(found: re.Match[str], keyword: Keyword | V3Keyword | None) -> str | None:
+    """The axis or channel written after a dot, or the one axis in square brackets (``IDLE[0]``); why not, for
+    brackets that give no one axis of an axis keyword."""
+    if found["axes"] is None:
+        return found["dot"]
+    written, axes = found["name"], [int(axis) for axis in found["axes"].split(",")]
+    listed = ",".join(map(str, axes))
+    if keyword is None:
+        raise Invalid(f"{written}[{listed}]: an array's element is written {written}({listed}), in round brackets")
+    if keyword.addressing is Addressing.CHANNEL or (isinstance(keyword, V3Keyword) and _has_bits(keyword)):
+        raise Invalid(f"{keyword.name} takes its channel after a dot, {keyword.name}.{axes[0]}, not in brackets")
+    if keyword.addressing is Addressing.NONE:
+        indexed = isinstance(keyword, Keyword) and keyword.parameters  # COMMS(5): an element, in round brackets
+        instead = f": write {keyword.name}({listed})" if indexed else ""
+        raise Invalid(f"{keyword.name} has no axis or channel, so it takes no [{listed}]{instead}")
+    if len(axes) > 1:
+        each = ", ".join(f"{keyword.name}.{axis}" for axis in axes)
+        raise Invalid(
+            f"{keyword.name}[{listed}] reads its axes as one value: expect each axis on its own ({each}), "
+            f"or {keyword.name} alone for every axis"
+        )
+    return str(axes[0])
 
 
 def _variable(written: str, name: str, dot: str | None, suffix: str) -> Target:

@@ -11,7 +11,7 @@ from mintlang.diagnostics import Severity, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.migrate import engine
-from mintlang.migrate.mintmt import addressing, blocks, characters, comments, events, lengths, names
+from mintlang.migrate.mintmt import addressing, blocks, characters, comments, events, lengths, names, platforms
 from mintlang.migrate.mintmt.apply import apply
 from mintlang.migrate.mintmt.source import Source
 from mintlang.migrate.mintmt.v3 import v3_uses
@@ -22,8 +22,9 @@ from mintlang.syntax.tokens import BYTE_ORDER_MARK
 
 # One module per kind of rewrite, each with its ID, SUMMARY and find(source); the order is the report's.
 REWRITES: tuple[ModuleType, ...] = (comments, characters, addressing, blocks, events, names)
-# Then the checks of what the rewrites make, each with its ID, SUMMARY and find(source, actions, controller).
-CHECKS: tuple[ModuleType, ...] = (lengths,)
+# Then the checks of what the migration makes on the controller, each with its ID, SUMMARY and
+# find(source, actions, controller).
+CHECKS: tuple[ModuleType, ...] = (lengths, platforms)
 
 
 def to_mintmt(

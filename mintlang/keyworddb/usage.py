@@ -35,10 +35,9 @@ def refusal(
     name = keyword.name
     if keyword.kind is KeywordKind.COMMAND_LINE:
         return Refusal(2006, f"{name} is an editor command: it works only at the command line, not in a program")
-    if not keyword.available_on(controller):
-        having = [profile(other).title for other in keyword.controllers]
-        listed = having[0] if len(having) == 1 else f"{', '.join(having[:-1])} and {having[-1]}"
-        return Refusal(17, f"{name} is not available on {profile(controller).title}, only on {listed}")
+    missing = unavailable(keyword, controller)
+    if missing is not None:
+        return Refusal(17, missing)
     attributes = attributes_for(keyword, controller, dialect)  # HOMEPOS's too, which prints none
     if attributes is None:
         return _refusal_from_formats(keyword, use, has_arguments=has_arguments)
@@ -54,6 +53,15 @@ def refusal(
     if use is Use.COMMAND and has_arguments and not keyword.takes_operands:
         return _no_operands(keyword)
     return None
+
+
+def unavailable(keyword: Keyword, controller: Controller) -> str | None:
+    """Why ``controller`` lacks ``keyword``, naming the controllers that have it (error 17); None if it has it."""
+    if keyword.available_on(controller):
+        return None
+    having = [profile(other).title for other in keyword.controllers]
+    listed = having[0] if len(having) == 1 else f"{', '.join(having[:-1])} and {having[-1]}"
+    return f"{keyword.name} is not available on {profile(controller).title}, only on {listed}"
 
 
 def _no_operands(keyword: Keyword) -> Refusal:

@@ -76,6 +76,7 @@ def test_list_rules_lists_the_mintmt_rewrites_and_checks() -> None:
         "MT-EVENT",
         "MT-NAME",
         "MT-LENGTH",
+        "MT-PLATFORM",
     ]
 
 

@@ -34,6 +34,7 @@ OWN_CODES: dict[str, str] = {
     "W118": "USING digits beyond the controller's limit",
     "W119": "Reverse software limit not below the forward one",
     "W120": "File not checked",
+    "W121": "POW index from 0 to 1 on NextMove",
     "I201": "Faster dot syntax",
 }
 

@@ -32,6 +32,7 @@ from mintlang.analysis.rules import (
     limits,
     line_length,
     operands,
+    pow_index,
     print_format,
     soft_limits,
     startup,
@@ -119,6 +120,12 @@ RULES: tuple[Rule, ...] = (
         "function-domains",
         each_line=function_domains.each_line,
         dialects=frozenset({Dialect.V4, Dialect.MINTMT}),  # Mint v3 has none of these functions
+        looks_at=LineParts(calls=True),
+    ),
+    Rule(
+        "pow-index",
+        each_line=pow_index.each_line,
+        dialects=frozenset({Dialect.V4, Dialect.MINTMT}),  # Mint v3 has no POW
         looks_at=LineParts(calls=True),
     ),
     Rule(

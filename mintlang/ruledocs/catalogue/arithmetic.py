@@ -1,4 +1,4 @@
-"""Arithmetic the controller cannot do: a division whose divisor is always zero."""
+"""Arithmetic the controller cannot do: a division whose divisor is always zero, a power NextMove does not take."""
 
 from __future__ import annotations
 
@@ -25,6 +25,24 @@ GROUP = Group(
             ),
             manual=("v4:19063", "v4:1276", "v4:14019"),
             fix="Divide by the value that was meant, or test the divisor before dividing.",
+            safety=FixSafety.NONE,
+        ),
+        RuleDoc(
+            "W121",
+            catches="POW on a NextMove controller (PCI, PC or BX) with an index from 0 to 1, `0` and `1` "
+            "included, where the index is a number or works out to one before the program runs "
+            "(`POW(x, 0.5)`, `POW(x, 1 / 3)`, a macro defined as 0.5). An index read from a variable is "
+            "not reported.",
+            why="On NextMove the index of POW must be below 0 or above 1; MintDrive and ServoNode 51 take "
+            "any index. The guide names no error for one in between, so what the controller answers is "
+            "not known; mint-run works the power out as the other controllers do.",
+            example=Example(
+                before="DIM area = 2\nPRINT POW(area, 0.5)\n",
+                after="DIM area = 2\nPRINT SQRT(area)\n",
+            ),
+            manual=("v4:15163", "v4:15151", "v4:16303"),
+            fix="Write a square root with SQRT, leave out an index of 1, and write 1 for an index of 0; "
+            "for another fraction, find the power another way.",
             safety=FixSafety.NONE,
         ),
     ),

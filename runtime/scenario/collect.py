@@ -2,13 +2,15 @@
 
 Both front ends build each record through a ``Collector``: a bad record
 becomes a ``ScenarioError`` at its line and the rest are still read, and an
-axis given two plants or two index pulses, or an input given two position
-switches (only one could decide its level), is caught the same way in both.
+axis given two plants or two index pulses, an input given two position
+switches (only one could decide its level) or two levels at one millisecond
+(the inputs are polled once a servo tick, 000:11995: the first would never show), is
+caught the same way in both.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Hashable
 
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
@@ -39,7 +41,7 @@ class Collector:
         self.dialect = dialect
         self.records: list[WorldRecord | Expectation] = []
         self.errors: list[ScenarioError] = []
-        self._first: dict[tuple[type, int], int] = {}  # (record kind, axis or channel) -> line first given
+        self._first: dict[tuple[type, Hashable], int] = {}  # (record kind, axis, channel, or channel and time) -> line
         self._driven: dict[int, tuple[type, int]] = {}  # input -> what first drives it (level or position), its line
 
     def error(self, line: int, message: str, *, column: int = 0) -> None:
@@ -70,9 +72,9 @@ class Collector:
             return
         once = _once(record)
         if once is not None:
-            key, what = (type(record), once[0]), once[1]
+            key, what, why = (type(record), once[0]), once[1], once[2]
             if key in self._first:
-                self.error(line, f"{what} (line {self._first[key]})", column=column)
+                self.error(line, f"{what} (line {self._first[key]}){why}", column=column)
                 return
             self._first[key] = line
         if isinstance(record, InputLevel | PositionInput):
@@ -94,12 +96,16 @@ def _driven_both_ways(record: InputLevel | PositionInput, first: int) -> str:
     return f"input {record.channel} is set at a time (line {first}), so it cannot also follow a position"
 
 
-def _once(record: WorldRecord | Expectation) -> tuple[int, str] | None:
-    """For a record that may be given once per axis or channel: that number, and what a second one is told."""
+def _once(record: WorldRecord | Expectation) -> tuple[Hashable, str, str] | None:
+    """For a record that may be given once per axis, channel, or channel and time: that key, and what a second
+    one is told, before and after the line of the first."""
     if isinstance(record, PlantChoice):
-        return record.axis, f"axis {record.axis} already has a plant"
+        return record.axis, f"axis {record.axis} already has a plant", ""
     if isinstance(record, IndexPulse):
-        return record.axis, f"axis {record.axis} already has an index pulse"
+        return record.axis, f"axis {record.axis} already has an index pulse", ""
     if isinstance(record, PositionInput):
-        return record.channel, f"input {record.channel} already follows a position"
+        return record.channel, f"input {record.channel} already follows a position", ""
+    if isinstance(record, InputLevel):
+        why = ": inputs are read once a servo tick, so the first of the two levels would never show"
+        return (record.channel, record.time_ms), f"input {record.channel} is already set at {record.time_ms} ms", why
     return None

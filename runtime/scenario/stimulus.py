@@ -143,7 +143,8 @@ class Scenario:
 
 
 def scenario_of(records: Iterable[WorldRecord | Expectation]) -> Scenario:
-    """Sort records, given in the order written, into a ``Scenario``; a later plant or index of an axis wins."""
+    """Sort records, given in the order written, into a ``Scenario``; a later plant or index of an axis, or
+    position of an input, wins."""
     records = tuple(records)
 
     def kind(cls: type[_R]) -> list[_R]:
@@ -152,7 +153,7 @@ def scenario_of(records: Iterable[WorldRecord | Expectation]) -> Scenario:
     return Scenario(
         plants=tuple(sorted({p.axis: p for p in kind(PlantChoice)}.values(), key=lambda p: p.axis)),
         inputs=_in_time_order(kind(InputLevel)),
-        position_inputs=tuple(kind(PositionInput)),
+        position_inputs=tuple({p.channel: p for p in kind(PositionInput)}.values()),
         index_pulses=tuple(sorted({p.axis: p for p in kind(IndexPulse)}.values(), key=lambda p: p.axis)),
         fast_inputs=_in_time_order(kind(FastInput)),
         adc=_in_time_order(kind(AdcLevel)),
@@ -164,5 +165,17 @@ def scenario_of(records: Iterable[WorldRecord | Expectation]) -> Scenario:
 
 
 def merge(program: Scenario, file: Scenario) -> Scenario:
-    """The program's directives overlaid by a scenario file: the file's plant and index choices win per axis."""
-    return scenario_of((*program.records(), *file.records()))
+    """The program's directives overlaid by a scenario file: the file's plant and index choices win per axis, and
+    its way of driving an input (levels at times, or a position to follow) per input; levels of an input both
+    set at times are all kept, the file's applied after the program's at the same millisecond."""
+    driven = {record.channel: type(record) for record in (*file.inputs, *file.position_inputs)}
+    kept = (record for record in program.records() if not _driven_otherwise(record, driven))
+    return scenario_of((*kept, *file.records()))
+
+
+def _driven_otherwise(record: WorldRecord | Expectation, driven: Mapping[int, type]) -> bool:
+    """Whether ``record`` drives an input that ``driven`` drives the other way: its levels would never show, or
+    the position would not be followed."""
+    if not isinstance(record, InputLevel | PositionInput):
+        return False
+    return driven.get(record.channel, type(record)) is not type(record)

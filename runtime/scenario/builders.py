@@ -11,6 +11,7 @@ from collections.abc import Callable, Mapping
 from types import MappingProxyType
 from typing import cast, get_args
 
+from mintlang.comms_map import SYSTEM_ELEMENTS
 from mintlang.dialect import Dialect
 from mintlang.records import record
 from mintlang.runtime.comms.packets import encode_read, encode_write
@@ -148,12 +149,22 @@ def _packet(time_ms: int, encode: Callable[[], bytes]) -> HostPacket:
 
 def host_write(time_ms: int, address: int, data: str, node: int = DEFAULT_NODE) -> HostPacket:
     """The packet of CM-4 writing ``data`` verbatim (so a test can also send bad data) from ``address`` on."""
+    _addressable(address, "write")
     return _packet(time_ms, lambda: encode_write(node, address, data))
 
 
 def host_read(time_ms: int, address: int, node: int = DEFAULT_NODE) -> HostPacket:
     """The packet of CM-5 reading ``address``."""
+    _addressable(address, "read")
     return _packet(time_ms, lambda: encode_read(node, address))
+
+
+def _addressable(address: int, key: str) -> None:
+    """Refuse a system element (100..255, 000:2566-2570) as an address: a packet gives two digits (000:2485-2487),
+    and what the element shows is read by an expectation of it instead."""
+    if address in SYSTEM_ELEMENTS:
+        reach = f"a host packet's address has two digits (0 to 99), so it cannot reach comms element {address}"
+        raise Invalid(f"{reach}: to check that system element, expect COMMS({address})", key=key)
 
 
 def host_raw(time_ms: int, hex_bytes: str) -> HostPacket:

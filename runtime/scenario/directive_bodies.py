@@ -77,11 +77,11 @@ def _key(phrase: Phrase) -> WorldRecord:
 def _host(phrase: Phrase) -> WorldRecord:
     match phrase.choice("a host action", ("write", "read", "raw")):
         case "write":
-            address = phrase.integer("a comms address")
+            address = phrase.integer("a comms address", "write")
             data = phrase.text("the data")
             return builders.host_write(_at(phrase), address, data)
         case "read":
-            address = phrase.integer("a comms address")
+            address = phrase.integer("a comms address", "read")
             return builders.host_read(_at(phrase), address)
         case _:
             hex_words = []

@@ -240,7 +240,7 @@ def test_the_source_name_is_used_in_positions() -> None:
         ("adc 0 150 at 0", 16, "an ADC level is a percentage from -100 to 100, not 150"),
         ("key 1 at 0", 14, "expected the keys in double quotes, not 1"),
         ('key "\\q" at 0', 14, 'unknown escape \\q in "\\q" (known: \\r \\n \\t \\" \\\\)'),
-        ('host write 100 "1" at 0', 5, "cannot build the host packet: comms address 100 does not fit two digits"),
+        ('host write 256 "1" at 0', 5, "cannot build the host packet: comms address 256 does not fit two digits"),
         ("host raw 0g at 0", 5, "raw host bytes are pairs of hex digits such as '04 32 32', not '0g'"),
         ("fastin 0 at 10 extra", 25, "unexpected 'extra' at the end"),
     ],

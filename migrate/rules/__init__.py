@@ -55,6 +55,7 @@ from mintlang.migrate.rules.reset import ResetSideEffects
 from mintlang.migrate.rules.reviews import ChangedUnits, ConfigurationArrays, OutputFormat
 from mintlang.migrate.rules.statements import (
     Boost,
+    CancelEnables,
     Contouring,
     ContouringCancelled,
     DropOffline,
@@ -101,6 +102,7 @@ RULES: tuple[Rule, ...] = (
     Contouring(),
     ServoOff(),
     ServoOn(),
+    CancelEnables(),
     Limits(),
     ContouringCancelled(),
     LimitsReset(),

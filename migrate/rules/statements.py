@@ -143,39 +143,69 @@ class Contouring(StatementRule):
         return self.unsupported(context, "CONTOURMODE") or f"{keyword}{selector} = {value}{fill(selector)}"
 
 
-class ResetAlsoRestored(Rule):
-    """A v3 statement of the reset family (CANCEL, DISLIMIT, RESET) also undid what another
-    statement had set (v3:11427-11446), which the v4 statement of the same name leaves as it
-    is: in an application that uses ``changed_by``, each of them that can run after it gets the
-    v4 write that undoes it, ``restore``. One in the configuration file before the first
-    ``changed_by`` runs while the setting is still as at power-up and is left as it is."""
+class DoneBesides(Rule):
+    """A v3 statement that did more than the v4 statement of its name gets, after it, the v4 write
+    that does the rest, ``restore``, unless the line has it there already (a second migration)."""
 
     rule_class = RuleClass.SEMI
     phase = Phase.CONTEXT
     keywords: ClassVar[frozenset[str]]
-    changed_by: ClassVar[str]  # the v3 keyword whose effect the reset undid
-    needs: ClassVar[str]  # the v4 keyword of the restore, which the target must have
 
     def apply(self, context: Context) -> Iterator[Action]:
-        first = next(iter(context.keyword_uses(self.changed_by)), None)
-        if first is None or not context.supports(self.needs):
-            return  # a target without it has the changing statement flagged already
-        _, change = first
-        changed_from = (_ORDER[change.unit], change.statement.span.start)
         for file, line in context.lines(*map(statement_tag, self.keywords)):
             statements = n.flatten_statements(line.statements)
             for position, statement in enumerate(statements):
                 if not (isinstance(statement, n.KeywordStatement) and statement.keyword.keyword in self.keywords):
                     continue
-                if file.unit is Unit.CONFIGURATION and (_ORDER[file.unit], statement.span.start) < changed_from:
+                if not self.relied_on(context, file, statement):
                     continue
                 restore = self.restore(file, statement)
                 if any(same_text(file.slice(later.span), restore) for later in statements[position + 1 :]):
                     continue  # written already (a second migration)
                 yield self.replace(file, Span(statement.span.end, statement.span.end), f" : {restore}")
 
+    def relied_on(self, context: Context, file: FileView, statement: n.KeywordStatement) -> bool:
+        """Whether the rest matters after this statement: always, unless a subclass knows better."""
+        return True
+
     def restore(self, file: FileView, statement: n.KeywordStatement) -> str:
         raise NotImplementedError
+
+
+class CancelEnables(DoneBesides):
+    """``CANCEL[axes]`` is followed by ``DRIVEENABLE[axes] = 1;``. v3 CANCEL recovered the system a
+    motion error shut down, amplifiers on (v3:5005, v3:5030, v3:5591-5597); v4 CANCEL leaves the drive
+    its error disabled off, and the guide clears an error keeping the position with "CANCEL followed
+    by DRIVEENABLE" (v4:4743-4744, v4:8016, v4:15628). Enabling a drive that is on changes nothing."""
+
+    id = "S-CANCEL"
+    summary = "CANCEL[axes] -> CANCEL[axes] : DRIVEENABLE[axes] = 1; (v3 CANCEL switched the amplifiers on)"
+    evidence = "v3:5005, v3:5030, v3:5048, v3:5591-5597; v4:4743-4744, v4:8016, v4:10675-10677, v4:15628"
+    keywords: ClassVar[frozenset[str]] = frozenset({"CANCEL"})
+
+    def restore(self, file: FileView, statement: n.KeywordStatement) -> str:
+        return write(file, statement, "DRIVEENABLE", "1")
+
+
+class ResetAlsoRestored(DoneBesides):
+    """A v3 statement of the reset family (CANCEL, DISLIMIT, RESET) also undid what another
+    statement had set (v3:11427-11446), which the v4 statement of the same name leaves as it
+    is: in an application that uses ``changed_by``, each of them that can run after it gets the
+    v4 write that undoes it, ``restore``. One in the configuration file before the first
+    ``changed_by`` runs while the setting is still as at power-up and is left as it is."""
+
+    changed_by: ClassVar[str]  # the v3 keyword whose effect the reset undid
+    needs: ClassVar[str]  # the v4 keyword of the restore, which the target must have
+
+    def apply(self, context: Context) -> Iterator[Action]:
+        if next(iter(context.keyword_uses(self.changed_by)), None) is None or not context.supports(self.needs):
+            return  # a target without it has the changing statement flagged already
+        yield from super().apply(context)
+
+    def relied_on(self, context: Context, file: FileView, statement: n.KeywordStatement) -> bool:
+        _, change = next(iter(context.keyword_uses(self.changed_by)))
+        changed_from = (_ORDER[change.unit], change.statement.span.start)
+        return file.unit is not Unit.CONFIGURATION or (_ORDER[file.unit], statement.span.start) >= changed_from
 
 
 class ContouringCancelled(ResetAlsoRestored):

@@ -61,6 +61,7 @@ def target(written: str, dialect: Dialect = Dialect.V4) -> Target:
         return _variable(found["name"], name, dot, suffix)
     if keyword.kind is not KeywordKind.PARAMETER:
         raise Invalid(f"{keyword.name} is a {keyword.kind.value}, not a value to expect")
+    _on_this_node(keyword, indexes)
     spellings = {keyword.name.upper(), *(abbreviation.upper() for abbreviation in keyword.abbreviations)}
     glued = _GLUED_CHANNEL.search(name) if name not in spellings else None
     if glued is not None:
@@ -71,6 +72,16 @@ def target(written: str, dialect: Dialect = Dialect.V4) -> Target:
         return Target(f"{keyword.name}.{int(dot)}{suffix}", every_axis=False)
     every_axis = keyword.addressing is Addressing.AXIS and not suffix
     return Target(keyword.name + suffix, every_axis)
+
+
+def _on_this_node(keyword: Keyword, indexes: str | None) -> None:
+    """Refuse a network node before the index, ``COMMS(4,130)`` (000:2553-2559, 2670-2672): a run simulates one controller,
+    whose own element is written without one."""
+    values = [int(index) for index in indexes.split(",")] if indexes is not None else []
+    if keyword.parameters[:1] == ("node?",) and len(values) == len(keyword.parameters):
+        node, local = values[0], ",".join(map(str, values[1:]))
+        remote = f"{keyword.name}({node},{local}) reads node {node} over the network"
+        raise Invalid(f"{remote}, and a run simulates one controller: expect {keyword.name}({local})")
 
 
 def _dot(found: re.Match[str], keyword: Keyword | V3Keyword | None) -> str | None:

@@ -44,3 +44,11 @@ def test_the_expectation_it_is_told_of_reads_the_element(tmp_path: Path) -> None
     )
     result = mint_run(program)
     assert result.exit_code == 0, result.output
+
+
+def test_an_expectation_of_another_node_s_element_is_told_the_element_of_this_one() -> None:
+    """``COMMS(node, index)`` reaches another node over CANopen (000:2553-2559), as the guide's ``comms(4,130)``
+    (000:2670-2672); a run has one controller, and that spelling was told only that the run had no such thing."""
+    _, problems = parse_directives("REM @expect COMMS(4,130) = 0\n")
+    message = "COMMS(4,130) reads node 4 over the network, and a run simulates one controller: expect COMMS(130)"
+    assert problems == [ScenarioError("program", 1, message, 13)]

@@ -62,6 +62,8 @@ def target(written: str, dialect: Dialect = Dialect.V4) -> Target:
     if keyword.kind is not KeywordKind.PARAMETER:
         raise Invalid(f"{keyword.name} is a {keyword.kind.value}, not a value to expect")
     _on_this_node(keyword, indexes)
+    if suffix and dialect is Dialect.V4 and not keyword.parameters:
+        raise Invalid(_round_brackets_refused(keyword, suffix))
     spellings = {keyword.name.upper(), *(abbreviation.upper() for abbreviation in keyword.abbreviations)}
     glued = _GLUED_CHANNEL.search(name) if name not in spellings else None
     if glued is not None:
@@ -75,13 +77,26 @@ def target(written: str, dialect: Dialect = Dialect.V4) -> Target:
 
 
 def _on_this_node(keyword: Keyword, indexes: str | None) -> None:
-    """Refuse a network node before the index, ``COMMS(4,130)`` (000:2553-2559, 2670-2672): a run simulates one controller,
-    whose own element is written without one."""
+    """Refuse a network node before the index, ``COMMS(4,130)`` (000:2553-2559, 2670-2672): a run simulates one
+    controller, whose own element is written without one."""
     values = [int(index) for index in indexes.split(",")] if indexes is not None else []
     if keyword.parameters[:1] == ("node?",) and len(values) == len(keyword.parameters):
         node, local = values[0], ",".join(map(str, values[1:]))
         remote = f"{keyword.name}({node},{local}) reads node {node} over the network"
         raise Invalid(f"{remote}, and a run simulates one controller: expect {keyword.name}({local})")
+
+
+def _round_brackets_refused(keyword: Keyword, suffix: str) -> str:
+    """What a v4 keyword that takes no index is told of ``IDLE(0)``: round brackets give an array's index
+    (000:1063-1066), so the value read would not be the axis or channel meant (``IN(3)`` read the whole bank)."""
+    first = suffix[1:-1].split(",", maxsplit=1)[0]
+    if keyword.addressing is Addressing.AXIS:
+        instead = f"its axis goes after a dot or in square brackets, {keyword.name}.{first} or {keyword.name}[{first}]"
+    elif keyword.addressing is Addressing.CHANNEL:
+        instead = f"its channel goes after a dot, {keyword.name}.{first}"
+    else:
+        return f"{keyword.name} has no axis, channel or index, so it takes no {suffix}"
+    return f"{keyword.name}{suffix}: {instead}; round brackets give an array's index"
 
 
 def _dot(found: re.Match[str], keyword: Keyword | V3Keyword | None) -> str | None:

@@ -69,3 +69,25 @@ def test_mint_test_checks_the_axis_in_brackets(tmp_path: Path) -> None:
     result = CliRunner().invoke(main, ["test", "-j", "1", "--color", "never", "-v", str(program)])
     assert result.exit_code == 0, result.output
     assert "IDLE.1 at 50 ms: 0, as expected" in result.output
+
+
+@pytest.mark.parametrize(
+    ("written", "message"),
+    [
+        ("IDLE(0)", "IDLE(0): its axis goes after a dot or in square brackets, IDLE.0 or IDLE[0]; "),
+        ("IN(3)", "IN(3): its channel goes after a dot, IN.3; "),  # it read the whole bank of inputs
+        ("ADC(1)", "ADC(1): its channel goes after a dot, ADC.1; "),
+    ],
+)
+def test_round_brackets_on_a_v4_axis_or_channel_say_what_to_write(written: str, message: str) -> None:
+    """In v4 round brackets give an array's index, not an axis (000:1063-1066): ``mint check`` refuses ``IDLE(0)``."""
+    with pytest.raises(Invalid) as refused:
+        target(written)
+    assert str(refused.value) == message + "round brackets give an array's index"
+
+
+def test_round_brackets_still_give_an_element_of_comms_or_of_an_array() -> None:
+    assert (target("COMMS(5)"), target("table(3)")) == (
+        Target("COMMS(5)", every_axis=False),
+        Target("TABLE(3)", every_axis=False, shown="table(3)"),
+    )

@@ -20,7 +20,7 @@ from mintlang.analysis.rules.v3_keywords import successor
 from mintlang.analysis.suggestions import keyword_like, not_a_keyword
 from mintlang.analysis.traversal import LineScope, Use
 from mintlang.controllers import profile
-from mintlang.diagnostics import Fix, Span
+from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller
@@ -67,9 +67,32 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if isinstance(statement, n.BareName) and db.rename_of(statement.name.text) is None:  # else: v3_keywords
             word = statement.name.text
             written = scope.writes(statement.name.span, word)
-            fixes = _spelling_fix(word, controller, statement.name.span, scope.dialect, alone=True) if written else ()
-            detail = _not_a_keyword(word, controller, scope.dialect, alone=True)
+            label = _label_written_with_a_colon(scope.syntax.text, statement.name.span) if written else None
+            if label is not None:
+                detail = f"'{word}' is not a keyword (a label is written #{word}, first on its line)"
+                fixes: tuple[Fix, ...] = (label,)
+            else:
+                fixes = (
+                    _spelling_fix(word, controller, statement.name.span, scope.dialect, alone=True) if written else ()
+                )
+                detail = _not_a_keyword(word, controller, scope.dialect, alone=True)
             yield Finding(unit, mint_error(3007, statement.span, detail, fixes=fixes))
+
+
+def _label_written_with_a_colon(text: str, name: Span) -> Fix | None:
+    """The fix that writes other BASICs' label ``Init:``, a name first on its line before a colon, as Mint's
+    ``#Init`` (000:1843-1844, 1871-1872); safe where only a comment follows, the colon going with the hash."""
+    if text[: name.start].strip() or not text[name.end :].lstrip(" \t").startswith(":"):
+        return None
+    colon = text.index(":", name.end)
+    rest = text[colon + 1 :].strip()
+    if not rest or rest.upper().startswith("REM"):
+        return Fix(
+            "Write the label with a hash",
+            (Edit(Span(name.start, colon + 1), f"#{text[name.start : name.end]}"),),
+            safe=True,
+        )
+    return Fix("Write the label with a hash", (Edit(name, f"#{text[name.start : name.end]}"),))
 
 
 def _not_a_keyword(

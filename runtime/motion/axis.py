@@ -36,6 +36,8 @@ NOISE = 1e-6  # counts: closed-form set-points are exact only to ~1e-9 counts; l
 MOTION_IN_PROGRESS = 10
 MOTION_ERROR = 12
 DRIVE_NOT_ENABLED = 40
+CONFIG_OFF = 0  # _cfOFF: the axis turned off, its encoder still read (000:8437, 8454-8455)
+NEXTMOVES = frozenset({Controller.NEXTMOVE_PCI, Controller.NEXTMOVE_PC, Controller.NEXTMOVE_BX})
 DRIVE_ENABLED = 90  # _erDRIVE_ENABLED: what the drive must be disabled for, such as CONFIG (000:8481, 18821-18823)
 DISABLED_AT_POWER_UP = "a drive starts disabled: enable it with DRIVEENABLE or RESET, or run with --drives enabled"
 SERVO_TICK_S = 0.001
@@ -91,6 +93,9 @@ class Axis:
         self.clock = clock
         self.parameters: dict[str, float] = dict(power_up(controller))
         self.bounds = {name: bounds(name, controller) for name in DEFAULTS}  # what each parameter accepts
+        # a NextMove axis turned off stops counting POS (000:15126-15127, 9629-9630); MintDrive's axes, off
+        # at power-up (000:8421-8424), move and count as the guide's MintDrive pages show
+        self.counts_while_off = controller not in NEXTMOVES
         self.plant: Plant = plant if plant is not None else IdealPlant()
         self.servo = ServoLoop()
         self.enabled = False  # drives start disabled (IO-7 RC)
@@ -149,7 +154,7 @@ class Axis:
     def set(self, name: str, value: float) -> None:
         scale = self.scale if name in SCALED else 1.0
         check_range(name, value, self.bounds[name], self.number, scale)
-        if name == "CONFIG" and value != 0:
+        if name == "CONFIG" and value != CONFIG_OFF:
             self.open_loop_dac = None  # back to servo (or stepper) control: the loop drives the DAC again
         if name == "SCALE" and self.busy():
             raise MintError(MOTION_IN_PROGRESS, self.number, "SCALE can only change on an idle axis")
@@ -449,6 +454,7 @@ class Axis:
         """
         plant = self.plant
         servoing = self.enabled and self.torque is None
+        counted = self.measured
         gap = tick - self.last_tick
         # after skipped ticks, the demands the encoder read on the two ticks before (None: the tick was processed)
         earlier: float | None = None
@@ -486,6 +492,8 @@ class Axis:
                 self.dac = self.servo.step(demand, velocity, acceleration, self.measured, moved)
             else:
                 self._unservoed_dac()
+        if not self.counts_while_off and self.parameters["CONFIG"] == CONFIG_OFF:
+            self.position_offset += self.measured - counted
         self.last_tick = tick
 
     def _unservoed_dac(self) -> None:

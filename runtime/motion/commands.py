@@ -24,6 +24,7 @@ from mintlang.runtime.errors import (
 )
 from mintlang.runtime.keywords import Channels, KeywordTable, Values, Writer, per_channel
 from mintlang.runtime.motion.axis import (
+    CONFIG_OFF,
     DRIVE_ENABLED,
     ER_ABORT,
     MD_JOG,
@@ -31,6 +32,7 @@ from mintlang.runtime.motion.axis import (
     MD_TORQUE,
     MOTION_ERROR,
     MOTION_IN_PROGRESS,
+    NEXTMOVES,
     Axis,
     Request,
 )
@@ -46,9 +48,7 @@ if TYPE_CHECKING:  # master.py builds on this module
 
 WRONG_CONFIGURATION = 11
 SMART_SOFT_LIMITS = 4  # SOFTLIMITMODE's smart mode, NextMove only (000:16057-16069)
-NEXTMOVES = frozenset({Controller.NEXTMOVE_PCI, Controller.NEXTMOVE_PC, Controller.NEXTMOVE_BX})
 _SOFT_LIMITS = frozenset({"SOFTLIMITFORWARD", "SOFTLIMITREVERSE", "SOFTLIMITMODE"})
-CONFIG_OFF = 0
 _PROFILE_RATES = frozenset({"SPEED", "ACCEL", "DECEL"})
 # DECELTIME = 0: a change of speed in no time, as the largest rate a Mint number holds (binary32), so every ramp
 # planned at it lasts far less than a servo tick and reading DECEL gives a value, meaningless as the guide warns

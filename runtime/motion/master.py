@@ -20,14 +20,13 @@ from mintlang.records import record
 from mintlang.runtime.clock import NEVER
 from mintlang.runtime.errors import OUT_OF_RANGE, MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
-from mintlang.runtime.motion.axis import Axis
+from mintlang.runtime.motion.axis import CONFIG_OFF, Axis
 from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.moves import PROFILER_TICK_MS
 from mintlang.runtime.ranges import check_range, table_bounds, table_default
 
 MS_POS, MS_ENCODER, MS_AUXENCODER, MS_SPEED, MS_DEMAND = 0, 1, 2, 3, 4
 INVALID_MASTER_CHANNEL = 70
-CONFIG_OFF = 0
 DEFAULT_MASTER_DISTANCE = 1000.0  # FG-2 RC: the DEFAULT table's value
 MAX_DISTANCE = 8_388_607.0
 AUXILIARY_SCALE = 1.0  # counts per user unit of an auxiliary encoder: AUXENCODERSCALE is not simulated

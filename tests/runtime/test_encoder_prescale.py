@@ -25,10 +25,10 @@ def test_a_divider_other_than_a_power_of_two_up_to_128_is_error_3() -> None:
 
 
 def test_the_counts_seen_go_on_from_what_was_counted_at_the_new_rate() -> None:
-    # open loop (CONFIG 0), 10 % of DAC on a velamp of 100 counts/s per %: 1000 of the encoder's counts a second.
+    # open loop (TORQUE), 10 % of DAC on a velamp of 100 counts/s per %: 1000 of the encoder's counts a second.
     # 500 ms undivided: 500 counts; then divided by 2: 500 counts/s, 250 more in 500 ms, and VEL reads 500
     source = (
-        "REM @sim plant 0 velamp 100\nDRIVEENABLE.0 = 0 : CONFIG.0 = 0 : DRIVEENABLE.0 = 1\nDAC.0 = 10\nWAIT = 500\n"
+        "REM @sim plant 0 velamp 100\nTORQUE.0 = 10\nWAIT = 500\n"
         'PRINT ENCODER.0, " ", POS.0\nENCODERPRESCALE.0 = 2\nWAIT = 500\n'
         'PRINT ENCODER.0, " ", POS.0, " ", VEL.0, " ", ENCODERVEL.0\n'
     )

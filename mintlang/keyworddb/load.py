@@ -300,7 +300,18 @@ class KeywordDatabase:
     @cached_property
     def mintmt_keywords(self) -> Mapping[str, Keyword]:
         """MintMT's own keywords, and v4 ones MintMT addresses otherwise."""
-        return _by_name((_keyword(raw) for raw in self._later["keywords_mintmt.json"]), lambda k: k.name)
+        return MappingProxyType({name: _keyword(raw) for name, raw in self._mintmt_entries.items()})
+
+    @cached_property
+    def _mintmt_entries(self) -> Mapping[str, dict[str, Any]]:
+        """MintMT's keyword entries by name. One that replaces a v4 keyword keeps that keyword's abbreviations:
+        the notes write none, and what they do not show is v4's (mintlang/MINTMT.md, MT-1)."""
+        made: dict[str, dict[str, Any]] = {}
+        for raw in self._later["keywords_mintmt.json"]:
+            name = raw["name"].upper()
+            v4 = self._entries.get(name)
+            made[name] = {**raw, "abbreviations": v4["abbreviations"]} if v4 and not raw["abbreviations"] else raw
+        return MappingProxyType(made)
 
     @cached_property
     def mintmt_constants(self) -> Mapping[str, Constant]:
@@ -345,7 +356,7 @@ class KeywordDatabase:
         """How each keyword of a v4-based dialect is written, in the order of ``keywords_of``."""
         entries = self._entries
         if dialect is Dialect.MINTMT:
-            entries = {**entries, **{raw["name"].upper(): raw for raw in self._later["keywords_mintmt.json"]}}
+            entries = {**entries, **self._mintmt_entries}
         return [_spelling(raw) for raw in entries.values()]
 
     def keywords_of(self, dialect: Dialect) -> Mapping[str, Keyword]:

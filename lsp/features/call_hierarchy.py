@@ -18,14 +18,13 @@ from collections.abc import Iterator
 from lsprotocol import types
 
 from mintlang.diagnostics import Span
-from mintlang.lsp.features.symbols import MintmtBlock, mintmt_blocks, sections
+from mintlang.lsp.features.symbols import MintmtBlock, jump_statements, mintmt_blocks, sections
 from mintlang.lsp.occurrences import symbol_at
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.records import record
 from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import Symbol, SymbolKind
-from mintlang.syntax import nodes as n
 
 MAIN = "main program"
 
@@ -71,11 +70,8 @@ def parts(snapshot: Snapshot) -> list[Part]:
 
 def jumps(snapshot: Snapshot) -> Iterator[Jump]:
     """Every GOSUB and GOTO of the snapshot's file, in order."""
-    for unit, line, facts in snapshot.model.lines:
-        if unit is snapshot.unit and n.Jump in facts.kinds:
-            for statement in facts.statements:
-                if type(statement) is n.Jump:
-                    yield Jump(statement.label.identity, line.span(statement.label.span))
+    for line, statement in jump_statements(snapshot):
+        yield Jump(statement.label.identity, line.span(statement.label.span))
 
 
 def _containing(found: list[Part], offset: int) -> Part | None:

@@ -1,8 +1,15 @@
-"""Document outline (subroutines, event handlers, MintMT's Event and Startup blocks, variables, macros) and
-workspace symbols."""
+"""Document outline (subroutines, event handlers, the labels inside them or the main program, MintMT's Event
+and Startup blocks, variables, macros) and workspace symbols.
+
+A label is an event handler when the controller calls it (000:10987) and a subroutine when a GOSUB names it
+(000:1841-1850) or nothing jumps to it yet (the guide shows subroutines alone, 000:961), as ``mint check``'s flow
+reads them; one only a GOTO names is a place in the code (000:11187-11188): a plain label, nested in the routine it
+stands in before the RETURN that ends that routine outside any block.
+"""
 
 from __future__ import annotations
 
+from bisect import bisect_left, bisect_right
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -38,6 +45,22 @@ class Section:
     first_line: int
     last_line: int
     is_event: bool
+    is_subroutine: bool  # a GOSUB of the file names it, or no jump at all (a subroutine not called yet)
+
+    @property
+    def is_routine(self) -> bool:
+        """Whether it is entered by a call, a GOSUB's or the controller's, and returns: not a plain label."""
+        return self.is_event or self.is_subroutine
+
+
+def jump_statements(snapshot: Snapshot) -> Iterator[tuple[n.PlacedLine, n.Jump]]:
+    """Every GOSUB and GOTO of the snapshot's file with its line, in order; one in a macro's text on the line
+    that uses the macro, where it runs."""
+    for unit, line, facts in snapshot.model.lines:
+        if unit is snapshot.unit and n.Jump in facts.kinds:
+            for statement in facts.statements:
+                if type(statement) is n.Jump:
+                    yield line, statement
 
 
 def sections(snapshot: Snapshot) -> list[Section]:
@@ -55,8 +78,15 @@ def sections(snapshot: Snapshot) -> list[Section]:
         for first, end in zip(lines, ends, strict=True)
     ]
     dialect = snapshot.settings.dialect
+    called = {jump.label.identity for _, jump in jump_statements(snapshot) if jump.word == "GOSUB"}
     return [
-        Section(label, first, _last_written(snapshot, first, last), event_of(label.name, dialect) is not None)
+        Section(
+            label,
+            first,
+            _last_written(snapshot, first, last),
+            event_of(label.name, dialect) is not None,
+            label.identity in called or not label.references,
+        )
         for label, first, last in zip(labels, lines, ends, strict=True)
     ]
 
@@ -74,22 +104,90 @@ def _last_written(snapshot: Snapshot, first: int, last: int) -> int:
     return last
 
 
+def _returning_lines(snapshot: Snapshot) -> list[int]:
+    """The lines (0-based, in order) with a RETURN of their own outside every block: where a routine ends, not a
+    RETURN taken only when a condition holds (in an IF .. DO, or an IF .. THEN's statement)."""
+    blocks = snapshot.model.structures[snapshot.unit].blocks
+    return [
+        line.number - 1
+        for line in snapshot.document.placed
+        if any(type(statement) is n.BlockWord and statement.word == "RETURN" for statement in line.syntax.statements)
+        and not any(
+            block.opener.line <= line.number and (block.closer is None or line.number <= block.closer.line)
+            for block in blocks
+        )
+    ]
+
+
+def _any_between(lines: list[int], first: int, last: int) -> bool:
+    """Whether one of ``lines`` (in order) is from ``first`` to ``last``."""
+    return bisect_left(lines, first) < bisect_right(lines, last)
+
+
+def _routines(snapshot: Snapshot) -> Iterator[tuple[Section | None, list[Section]]]:
+    """The sections in order, each plain label inside a routine with that routine: a routine with the labels it
+    holds, or a plain label outside any (None) alone. A routine holds the labels after it up to its RETURN; a
+    MintMT block (which the program never runs into) or the next routine ends it too."""
+    returning = _returning_lines(snapshot)
+    blocks = [block.opener.line - 1 for block in _mintmt_blocks_of(snapshot)]  # in order, as the file has them
+    routine: Section | None = None
+    held: list[Section] = []
+    for section in sections(snapshot):
+        if routine is not None and (section.is_routine or _any_between(blocks, routine.first_line, section.first_line)):
+            yield routine, held
+            routine, held = None, []
+        if section.is_routine:
+            routine = section
+        elif routine is not None:
+            held.append(section)
+        else:
+            yield None, [section]
+        if routine is not None and _any_between(returning, section.first_line, section.last_line):
+            yield routine, held
+            routine, held = None, []
+    if routine is not None:
+        yield routine, held
+
+
+# A label's symbol kind and detail by (is_event, is_subroutine): LSP has no kind for a label, a key names a place.
+_LABEL_KINDS = {
+    (True, True): (types.SymbolKind.Event, "event handler"),
+    (True, False): (types.SymbolKind.Event, "event handler"),
+    (False, True): (types.SymbolKind.Function, "subroutine"),
+    (False, False): (types.SymbolKind.Key, "label"),
+}
+
+
+def _label_symbol(
+    snapshot: Snapshot, section: Section, last_line: int, children: list[types.DocumentSymbol]
+) -> types.DocumentSymbol:
+    """The outline's entry of a label, spanning its lines to ``last_line`` (0-based) and holding ``children``."""
+    positions = snapshot.positions
+    definition = section.symbol.definitions[0]
+    end = positions.line_start(last_line + 1) if last_line + 1 < positions.line_count else None
+    whole = types.Range(
+        start=types.Position(line=section.first_line, character=0),
+        end=positions.position(end) if end is not None else positions.position(len(snapshot.document.source)),
+    )
+    kind, detail = _LABEL_KINDS[section.is_event, section.is_subroutine]
+    return types.DocumentSymbol(
+        name=f"#{section.symbol.name}",
+        kind=kind,
+        detail=detail,
+        range=whole if whole.end.line >= whole.start.line else positions.range(definition.span),
+        selection_range=positions.range(definition.span),
+        children=children or None,
+    )
+
+
 def _document_symbols(snapshot: Snapshot) -> Iterator[types.DocumentSymbol]:
     positions = snapshot.positions
-    for section in sections(snapshot):
-        definition = section.symbol.definitions[0]
-        end = positions.line_start(section.last_line + 1) if section.last_line + 1 < positions.line_count else None
-        whole = types.Range(
-            start=types.Position(line=section.first_line, character=0),
-            end=positions.position(end) if end is not None else positions.position(len(snapshot.document.source)),
-        )
-        yield types.DocumentSymbol(
-            name=f"#{section.symbol.name}",
-            kind=types.SymbolKind.Event if section.is_event else types.SymbolKind.Function,
-            detail="event handler" if section.is_event else "subroutine",
-            range=whole if whole.end.line >= whole.start.line else positions.range(definition.span),
-            selection_range=positions.range(definition.span),
-        )
+    for routine, held in _routines(snapshot):
+        children = [_label_symbol(snapshot, label, label.last_line, []) for label in held]
+        if routine is None:
+            yield from children
+        else:
+            yield _label_symbol(snapshot, routine, held[-1].last_line if held else routine.last_line, children)
     yield from _mintmt_blocks(snapshot)
     table = snapshot.model.symbols
     for symbol in (*table.variables.values(), *table.macros.values()):

@@ -93,9 +93,8 @@ class Axis:
         self.clock = clock
         self.parameters: dict[str, float] = dict(power_up(controller))
         self.bounds = {name: bounds(name, controller) for name in DEFAULTS}  # what each parameter accepts
-        # a NextMove axis turned off stops counting POS (000:15126-15127, 9629-9630); MintDrive's axes, off
-        # at power-up (000:8421-8424), move and count as the guide's MintDrive pages show
-        self.counts_while_off = controller not in NEXTMOVES
+        # MintDrive's axes, off at power-up (000:8421-8424), move, count and wait as its pages show: see turned_off
+        self.off_runs_as_servo = controller not in NEXTMOVES
         self.plant: Plant = plant if plant is not None else IdealPlant()
         self.servo = ServoLoop()
         self.enabled = False  # drives start disabled (IO-7 RC)
@@ -245,9 +244,13 @@ class Axis:
         """Demand velocity in counts/s (its sign decides which limits apply, AX-14 RC)."""
         return self.move.velocity(self.index_in_move, tick) if self.move is not None else 0.0
 
+    def turned_off(self) -> bool:
+        """A NextMove axis configured off: its POS no longer counts and it is idle (000:15126-15127, 11750)."""
+        return not self.off_runs_as_servo and self.parameters["CONFIG"] == CONFIG_OFF
+
     def idle(self) -> bool:
-        """IDLE (AX-3): no move, none triggered, within IDLEPOS and IDLEVEL; a disabled axis is idle."""
-        if not self.enabled:
+        """IDLE (AX-3): no move, none triggered, within IDLEPOS and IDLEVEL; a disabled or turned off axis is idle."""
+        if not self.enabled or self.turned_off():
             return True
         if self.move is not None or self.pending_mode or self.triggered:
             return False
@@ -492,7 +495,7 @@ class Axis:
                 self.dac = self.servo.step(demand, velocity, acceleration, self.measured, moved)
             else:
                 self._unservoed_dac()
-        if not self.counts_while_off and self.parameters["CONFIG"] == CONFIG_OFF:
+        if self.turned_off():
             self.position_offset += self.measured - counted
         self.last_tick = tick
 

@@ -197,7 +197,7 @@ class StatementCompiler:
         if printer is not None and statement.values is None:
             return self._printing_keyword(statement, printer)
         access = self.table.in_program(reference.keyword)
-        if reference.keyword in CIRCLES:
+        if reference.keyword in CIRCLES and self.expressions.semantics.dialect.modern:
             _a_circles_axes(reference.selector)
         if reference.selector is not None and reference.selector.indices:
             return self._indexed_write(statement, access)
@@ -794,8 +794,8 @@ def _within_the_axes(count: int, addressed: tuple[int, ...] | None) -> None:
 
 
 def _a_circles_axes(selector: n.Selector | None) -> None:
-    """A circle listing more than its two axes is #2017 when its line runs, where ``mint check`` reports it
-    (000:8152, 19047); the default axes (AXES) may be more, and the first two carry the circle."""
+    """A circle listing more than its two axes is #2017 in v4 and MintMT when its line runs, where ``mint check``
+    reports it (000:8152, 19047); the default axes (AXES) may be more, and the first two carry the circle."""
     if selector is not None and not selector.dot and len(selector.axes) > CIRCLE_AXES:
         raise MintError(TOO_MANY_VALUES, detail=f"a circle moves two axes, {len(selector.axes)} listed")
 

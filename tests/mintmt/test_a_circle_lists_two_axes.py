@@ -37,3 +37,12 @@ def test_two_axes_listed_make_the_circle() -> None:
     result = run_source("CIRCLEA(0,1) = 10, 0, 90\nGO(0,1)\nPause IDLE(0)\n", dialect="mintmt", scenario=_ENABLED)
     assert result.err == -1
     assert [round(axis.pos, 6) for axis in result.axes[:2]] == [10, -10]
+
+
+def test_mint_v3_is_left_as_its_checker_reads_it() -> None:
+    """The v3 guide asks a circle for at least two axes (001:3257) and says nothing of a third: v3's checker
+    reports none, and its run does not stop on one."""
+    source = "CIRCLEA[0,1,2] = 10,0,90 : GO\nPAUSE IDLE.0\n"
+    assert placed(source, "code", codes="E", dialect="v3") == []
+    result = run_source(source, dialect="v3", controller="euroservo", scenario=_ENABLED)
+    assert (result.err, result.stop.reason.value) == (-1, "end")

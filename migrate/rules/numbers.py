@@ -17,6 +17,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from decimal import Decimal
 
+from mintlang.keyworddb import database
 from mintlang.migrate.context import FRACTION, Context, operator_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
@@ -93,16 +94,37 @@ def _rounds_a_sign(statement: n.Statement, nodes: list[n.Expression]) -> bool:
 
 
 def _unsigned(expression: n.Expression) -> bool:
-    """Whether ``expression`` cannot be negative: a number (-2.5 is a unary minus), ABS, or a sum,
-    product or quotient of such (INT(12.4 + 3.2))."""
+    """Whether ``expression`` cannot be negative."""
+    lowest = _lowest(expression)
+    return lowest is not None and lowest >= 0
+
+
+def _lowest(expression: n.Expression) -> float | None:
+    """The least value ``expression`` can take, where its parts tell: a number (-2.5 is a unary minus),
+    ABS, a keyword read by the bottom of its range (S-ANALOG's ``ADC.0 + 100``, ADC from -100,
+    v4:6358), a sum of such, and a product or quotient of values that cannot be negative."""
     match expression:
-        case n.Number() | n.Call(function="ABS"):
-            return True
+        case n.Number(value=value):
+            return value
+        case n.Call(function="ABS"):
+            return 0.0
         case n.Parenthesised(expression=inner):
-            return _unsigned(inner)
-        case n.Binary(operator="+" | "*" | "/", left=left, right=right):
-            return _unsigned(left) and _unsigned(right)
-    return False
+            return _lowest(inner)
+        case n.KeywordRef(keyword=keyword):
+            return _range_bottom(keyword)
+        case n.Binary(operator="+", left=left, right=right):
+            parts = (_lowest(left), _lowest(right))
+            return None if None in parts else sum(part for part in parts if part is not None)
+        case n.Binary(operator="*" | "/", left=left, right=right):
+            return 0.0 if _unsigned(left) and _unsigned(right) else None
+    return None
+
+
+def _range_bottom(keyword: str) -> float | None:
+    """The lowest value of the keyword's range on any controller, None where one is not known."""
+    entry = database().lookup(keyword)
+    bottoms = [part.range.minimum if part.range else None for part in entry.attributes] if entry else [None]
+    return None if not bottoms or None in bottoms else min(bottom for bottom in bottoms if bottom is not None)
 
 
 def _inexact(literal: n.Number) -> str | None:

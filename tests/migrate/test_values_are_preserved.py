@@ -35,6 +35,8 @@ def _evaluate(expression: n.Expression, dialect: str, names: dict[str, float]) -
                 return float(not value(operand))
             case n.Parenthesised(expression=inner):
                 return value(inner)
+            case n.Call(function="INT", arguments=(argument,)):  # the whole part (v4:12565)
+                return float(math.trunc(value(argument)))
             case n.Call(function=function, arguments=(argument,)):
                 result = {"SIN": math.sin, "COS": math.cos, "TAN": math.tan}[function](math.radians(value(argument)))
                 return result * 1000 if dialect == "v3" else result
@@ -123,7 +125,7 @@ def test_mode_and_error_bits_name_the_same_state() -> None:
 
 
 def test_analogue_formula_maps_the_v3_range() -> None:
-    """(ADC + 100) * 1024 / 200 maps v4's -100..100 % onto v3's counts (+-10 V): one part in 1024
+    """INT((ADC + 100) * 1024 / 200) maps v4's -100..100 % onto v3's counts (+-10 V): one part in 1024
     (v3:4368), 0 V reads 512 ("0V input produces zero speed" from A1 - 512, v3:4376), and
     ANALOGUE1-512 spans -512 to 512 (v3:5768)."""
     migrated = migrate("x = A1 - 512\n", only=["S-ANALOG"]).text.splitlines()[-1]

@@ -199,21 +199,36 @@ def run_source(
 def _ending_at_the_last_check(limits: Limits, expectations: tuple[Expectation, ...]) -> Limits:
     """``limits``, ending at the last expectation's time when ``Limits.end_when_checked`` asks for it and every
     expectation is timed (one at the end, a ``stopped`` one included, needs the run to end by itself)."""
-    times = [expectation.at_ms for expectation in expectations]
-    if not (limits.end_when_checked and limits.until_ms is None and times) or None in times:
+    last = _last_check(expectations)
+    if not limits.end_when_checked or limits.until_ms is not None or last is None:
         return limits
-    last = max(at for at in times if at is not None)
     return replace(limits, until_ms=last, until_message=f"every expectation was checked (the last at {last} ms)")
 
 
-def _waiting_for_the_end(stop: Stop, at_end: list[Expectation]) -> Stop:
+def _last_check(expectations: tuple[Expectation, ...]) -> int | None:
+    """The time of the last of ``expectations`` when there are some and every one is timed, else None."""
+    times = [expectation.at_ms for expectation in expectations]
+    if not times or None in times:
+        return None
+    return max(at for at in times if at is not None)
+
+
+def _waiting_for_the_end(stop: Stop, expectations: tuple[Expectation, ...], at_end: list[Expectation]) -> Stop:
     """``stop`` at the wall-clock limit, saying which expectation kept the run going when one checked at the end
-    (other than how it stops) waited for a program that never ended, as a machine's main loop does not."""
+    (other than how it stops) waited for a program that never ended, as a machine's main loop does not; or, in a
+    plain run whose checks were all timed, that they were done long before and what ends such a run there."""
     waiting = next((each for each in at_end if not isinstance(each, StoppedExpectation)), None)
-    if waiting is None:
+    if waiting is not None:
+        hint = f"the program has not ended, and the expectation at {waiting.origin} is checked at its end"
+        return replace(stop, message=f"{stop.message}; {hint}: give it a time, or set --until-ms")
+    last = _last_check(expectations)  # None when one is checked at the end
+    if last is None or stop.time_ms < last:
         return stop
-    hint = f"the program has not ended, and the expectation at {waiting.origin} is checked at its end"
-    return replace(stop, message=f"{stop.message}; {hint}: give it a time, or set --until-ms")
+    hint = (
+        f"every expectation was checked by {last} ms, and a plain run goes on until the program ends: "
+        f"set --until-ms {last}, or run it as a test (mint test), which ends at the last check"
+    )
+    return replace(stop, message=f"{stop.message}; {hint}")
 
 
 def _read_leniently(analysis: mintlang.Analysis) -> tuple[str, ...]:
@@ -302,7 +317,7 @@ def _simulate(
             built.vm.record_error(refused.code, refused.line, None)
         built.vm.announce(refused.printed)
     if stop.reason is StopReason.WALL_LIMIT and limits.until_ms is None:
-        stop = _waiting_for_the_end(stop, end_expectations)
+        stop = _waiting_for_the_end(stop, scenario.expectations, end_expectations)
     # a check the run never reached did not hold: dropping it would let a run that stops early pass
     outcomes.extend(not_reached(expectation, stop.time_ms) for expectation in unchecked.values())
     final = Observation(built, stop.reason.value)

@@ -101,3 +101,22 @@ def test_mint_run_without_expect_runs_on(tmp_path: Path) -> None:
     program = write(tmp_path, "machine.mnt", TIMED + ENDLESS)
     result = mint_run(program, "--until-ms", "3000")
     assert "until after 3000 ms at program line 4: WAIT = 250 — reached --until-ms 3000" in result.output
+
+
+def test_a_plain_run_past_its_last_check_says_what_ends_it(tmp_path: Path) -> None:
+    """A plain run of a machine's main loop goes on to the wall-clock limit, its checks all done long before:
+    the message says so, and what ends such a run there."""
+    program = write(tmp_path, "machine.mnt", TIMED + ENDLESS)
+    result = mint_run(program, "--max-wall-s", "0.5")
+    assert result.exit_code == 1
+    assert (
+        "of wall time; every expectation was checked by 1100 ms, and a plain run goes on until the program "
+        "ends: set --until-ms 1100, or run it as a test (mint test), which ends at the last check"
+        in " ".join(result.output.split())
+    )
+
+
+def test_a_plain_run_stopped_before_its_last_check_says_nothing_of_it(tmp_path: Path) -> None:
+    program = write(tmp_path, "machine.mnt", "REM @expect count = 4 at 100000000\n" + ENDLESS)
+    result = mint_run(program, "--max-wall-s", "0.5")
+    assert (result.exit_code, "every expectation was checked" in result.output) == (1, False)

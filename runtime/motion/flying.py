@@ -24,8 +24,6 @@ from mintlang.runtime.motion.master import Link, MasterDriven, SetPoints, link, 
 from mintlang.runtime.motion.moves import Move
 from mintlang.runtime.motion.superimposed import OffsetTrack
 
-MAX_FLY = 8_388_607.0
-
 
 class StopRule(Enum):
     CRASH = "crash"
@@ -297,10 +295,9 @@ def register(table: KeywordTable, motion: Motion) -> None:
     def fly(channels: Channels | None, values: Values) -> bool:
         """FLY: a segment into the buffer (needs GO), or straight into a FOLLOWMODE 3 move (FG-8, FG-4)."""
         pairs = motion._pairs(channels, values)
+        motion.check_values("FLY", pairs)  # the controller's range, after SCALE (000:10500-10510, 5647-5648)
         loads: list[tuple[Axis, Step]] = []
         for axis, value in pairs:
-            if abs(value) > MAX_FLY:
-                raise MintError(OUT_OF_RANGE, axis.number, f"FLY = {value:g}")
             axis.require_ready()
             link(motion, axis)
             distance = master_distance(motion, axis)

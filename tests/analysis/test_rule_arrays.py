@@ -31,6 +31,16 @@ def test_a_constant_index_outside_the_array_is_error_2016() -> None:
     assert found(source) == [("E2016", ERROR, 2), ("E2016", ERROR, 3), ("E2016", ERROR, 6)]
 
 
+def test_a_constant_fractional_index_is_judged_as_the_run_takes_it() -> None:
+    # the guide does not say what a fractional index does (000:1063-1066, 19038-19046); mint-run cuts it to its
+    # whole part (runtime/BEHAVIOUR.md), so a(0.5) is a(0), outside 1 to 3, and a(3.5) is a(3)
+    source = "DIM a(3)\nPRINT a(0.5)\nPRINT a(3.5)\nPRINT a(-0.5)\nPRINT a(4.2)\n"
+    assert found(source) == [("E2016", ERROR, 2), ("E2016", ERROR, 4), ("E2016", ERROR, 5)]
+    assert only("DIM a(3)\nPRINT a(0.5)\n", "E2016").message.endswith(
+        "a(0.5) is outside 1 to 3: a fractional index is cut to its whole part, 0"
+    )
+
+
 def test_an_element_of_a_plain_variable_is_error_2016() -> None:
     # 3.3: an array is declared with its size, DIM name(n); a plain variable has no elements
     assert found("DIM y\ny(2) = 1\n") == [("E2016", ERROR, 2)]

@@ -1,5 +1,6 @@
-"""Arrays: indices known at compile time must lie in 1 .. size, and only arrays
-have elements (error 2016, "Invalid index", 12.4); an array's size and initial
+"""Arrays: indices known at compile time must lie in 1 .. size (a fraction cut to
+its whole part, as mint-run takes it), and only arrays have elements (error 2016,
+"Invalid index", 12.4); an array's size and initial
 values are numbers written in its DIM, not expressions (DIM, 000:9167-9171),
 because the compiler reserves and fills the array (2003 otherwise). INPUT reads
 into a variable, never an array element (the FAQ, 000:18430-18435): a syntax
@@ -18,6 +19,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from mintlang import binary32
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.comms_map import system_element
@@ -183,7 +185,11 @@ def check(facts: Facts) -> Iterator[Finding]:
             continue
         if symbol.array_size is None or symbol.array_size < 1:
             continue  # no size, or one its DIM is reported for
-        index = constant_integer(element.index, dialect)
-        if index is not None and not 1 <= index <= symbol.array_size:
-            detail = f"{element.name.text}({index}) is outside 1 to {symbol.array_size}"
-            yield Finding(unit, mint_error(2016, line.span(element.index.span), detail))
+        index = constant_value(element.index, dialect)
+        if index is None or not binary32.holds(index) or 1 <= int(index) <= symbol.array_size:
+            continue
+        whole = int(index)  # as mint-run takes a fraction: the guide says nothing of one
+        detail = f"{element.name.text}({whole if whole == index else index}) is outside 1 to {symbol.array_size}"
+        if whole != index:
+            detail += f": a fractional index is cut to its whole part, {whole}"
+        yield Finding(unit, mint_error(2016, line.span(element.index.span), detail))

@@ -18,12 +18,11 @@ from collections.abc import Iterator
 from lsprotocol import types
 
 from mintlang.diagnostics import Span
-from mintlang.lsp.features.symbols import MintmtBlock, jump_statements, mintmt_blocks, sections
+from mintlang.lsp.features.symbols import MintmtBlock, Section, jump_statements, label_kind, mintmt_blocks, sections
 from mintlang.lsp.occurrences import symbol_at
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.records import record
-from mintlang.semantic.events import event_of
 from mintlang.semantic.symbols import Symbol, SymbolKind
 
 MAIN = "main program"
@@ -31,13 +30,14 @@ MAIN = "main program"
 
 @record
 class Part:
-    """The main program (``label`` and ``block`` None), a labelled section (offsets from its first line to the
-    next part's) or a MintMT block (its own span)."""
+    """The main program (``label``, ``block`` and ``section`` None), a labelled section (offsets from its first
+    line to the next part's) or a MintMT block (its own span)."""
 
     label: Symbol | None
     start: int
     end: int
     block: MintmtBlock | None = None
+    section: Section | None = None  # the labelled section's, for how the outline names it
 
     @property
     def key(self) -> str | None:
@@ -63,7 +63,10 @@ def parts(snapshot: Snapshot) -> list[Part]:
     labelled = sections(snapshot)
     starts = [positions.line_start(section.first_line) for section in labelled]
     ends = [*starts[1:], len(snapshot.document.source)] if starts else []
-    found = [Part(section.symbol, start, end) for section, start, end in zip(labelled, starts, ends, strict=True)]
+    found = [
+        Part(section.symbol, start, end, section=section)
+        for section, start, end in zip(labelled, starts, ends, strict=True)
+    ]
     top = starts[0] if starts else len(snapshot.document.source)
     return [*blocks, Part(None, 0, top), *found] if top > 0 or not found else [*blocks, *found]
 
@@ -88,14 +91,14 @@ def item(snapshot: Snapshot, part: Part) -> types.CallHierarchyItem:
         detail = "event handler: the controller calls it" if event else "power-up code: the controller runs it"
         selection = positions.range(part.block.selection)
         return types.CallHierarchyItem(part.block.name, kind, snapshot.uri, whole, selection, detail=detail, data=data)
-    if part.label is None:
+    section = part.section
+    if section is None:
         top = positions.range(Span(0, 0))
         return types.CallHierarchyItem(MAIN, types.SymbolKind.Module, snapshot.uri, whole, top, data=data)
-    event = event_of(part.label.name, snapshot.settings.dialect)
-    kind = types.SymbolKind.Event if event is not None else types.SymbolKind.Function
-    detail = "event handler: the controller calls it" if event is not None else "subroutine"
-    selection = positions.range(part.label.definitions[0].span)
-    name = f"#{part.label.name}"
+    kind, detail = label_kind(section)
+    detail = "event handler: the controller calls it" if section.is_event else detail
+    selection = positions.range(section.symbol.definitions[0].span)
+    name = f"#{section.symbol.name}"
     return types.CallHierarchyItem(name, kind, snapshot.uri, whole, selection, detail=detail, data=data)
 
 

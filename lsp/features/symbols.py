@@ -149,13 +149,13 @@ def _routines(snapshot: Snapshot) -> Iterator[tuple[Section | None, list[Section
         yield routine, held
 
 
-# A label's symbol kind and detail by (is_event, is_subroutine): LSP has no kind for a label, a key names a place.
-_LABEL_KINDS = {
-    (True, True): (types.SymbolKind.Event, "event handler"),
-    (True, False): (types.SymbolKind.Event, "event handler"),
-    (False, True): (types.SymbolKind.Function, "subroutine"),
-    (False, False): (types.SymbolKind.Key, "label"),
-}
+def label_kind(section: Section) -> tuple[types.SymbolKind, str]:
+    """The symbol kind and detail of a label's section; LSP has no kind for a label: a key names a place."""
+    if section.is_event:
+        return types.SymbolKind.Event, "event handler"
+    if section.is_subroutine:
+        return types.SymbolKind.Function, "subroutine"
+    return types.SymbolKind.Key, "label"
 
 
 def _label_symbol(
@@ -169,7 +169,7 @@ def _label_symbol(
         start=types.Position(line=section.first_line, character=0),
         end=positions.position(end) if end is not None else positions.position(len(snapshot.document.source)),
     )
-    kind, detail = _LABEL_KINDS[section.is_event, section.is_subroutine]
+    kind, detail = label_kind(section)
     return types.DocumentSymbol(
         name=f"#{section.symbol.name}",
         kind=kind,

@@ -91,6 +91,8 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         select(only or None, skip, opt_in)
         if no_config and config is not None:
             raise UsageError("--config names the configuration file and --no-config pairs none: give one")
+        if not paths and config is None:  # the current folder, as mint check, mint format and mint test search it
+            paths = (Path(),)
         found = read(paths, config, paired=not no_config, overrides=exclusions(exclude, extend_exclude, force_exclude))
         applications, unread = found.applications, found.unread
         if mode == "stdout":

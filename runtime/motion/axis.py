@@ -386,8 +386,9 @@ class Axis:
         return self.move is None and not self.buffer and self.hold == target
 
     def buffer_free(self) -> int:
+        """The free places of the move buffer: none, not fewer, once MOVEBUFFERSIZE is set below what it holds."""
         running = 1 if self.move is not None and self.move.buffered else 0
-        return int(self.parameters["MOVEBUFFERSIZE"]) - len(self.buffer) - running
+        return max(0, int(self.parameters["MOVEBUFFERSIZE"]) - len(self.buffer) - running)
 
     def reference(self) -> float:
         """Where a relative move starts from: the last loaded target, the end of a STOP's ramp

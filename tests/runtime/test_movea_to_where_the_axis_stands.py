@@ -38,3 +38,11 @@ def test_mintmt_reads_it_so_too() -> None:
     source = "MOVEBUFFERSIZE(0) = 2\nMOVEA(0) = 0\nPrint MOVEBUFFERFREE(0)\n"
     result = run_source(source, dialect="mintmt", config="RESETALL\n", limits=Limits(until_ms=1000))
     assert result.terminal == "2\n"
+
+
+def test_a_buffer_made_smaller_than_what_it_holds_has_no_free_place() -> None:
+    # MOVEBUFFERFREE is the number of free places (000:2978-2983): none, not a negative count, once
+    # MOVEBUFFERSIZE is set below the moves loaded (the guide says nothing more of shrinking a buffer)
+    source = "MOVEBUFFERSIZE.0 = 4\nMOVER.0 = 10\nMOVER.0 = 10\nMOVER.0 = 10\nMOVEBUFFERSIZE.0 = 2\n"
+    source += "PRINT MOVEBUFFERFREE.0\n"
+    assert simulate(source).terminal == "0\n"

@@ -208,18 +208,20 @@ class DigitalIO:
             return float(self.banks.outputs(self.out))
         return float(self.out >> self._output(channel) & 1)
 
+    def set_outputs(self, out: int) -> None:
+        """The outputs as the program sets them (OUT, MintMT's output moves), but those a drive enable is assigned
+        to: the drive's, which keep their state (000:14935-14939, spec IO-3 RC)."""
+        driven = self._driven_bits()
+        self.out = out & ~driven | self.out & driven
+
     def _write_out(self, channel: int | None, value: float) -> None:
         limit = 1 << self.banks.banks.outputs  # the table's one range, for OUT and OUT.x alike (000:14887-14913)
         if not 0 <= value < limit:
             raise MintError(OUT_OF_RANGE, detail=f"OUT takes 0 to {limit - 1}")
         if channel is None:
-            driven = self._driven_bits()  # a drive's output is not the program's to set (spec IO-3 RC)
-            self.out = self.banks.with_outputs(self.out, int(value)) & ~driven | self.out & driven
-            return
-        output = self._output(channel)
-        if self._driven_bits() >> output & 1:
-            return
-        self.out = with_bit(self.out, output, bool(value))
+            self.set_outputs(self.banks.with_outputs(self.out, int(value)))
+        else:
+            self.set_outputs(with_bit(self.out, self._output(channel), bool(value)))
 
     def _write_oal(self, _: int | None, value: float) -> None:
         self.output_active_level = self.banks.with_outputs(self.output_active_level, int(value))

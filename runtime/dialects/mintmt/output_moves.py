@@ -7,7 +7,8 @@ behind the moves loaded before them, and are triggered like them (``GO``,
 starts in the same tick: MOVEOUT sets the whole bank to the pattern (the other
 outputs of the bank off), MOVEOUTX one channel, and MOVEPULSEOUTX turns a
 channel on and, that many milliseconds later, off again. The simulated
-controller has the one bank of v4's ``OUT``: bank 0.
+controller has the one bank of v4's ``OUT``: bank 0. Like OUT, they leave an
+output a drive enable is assigned to (``DigitalIO.set_outputs``).
 """
 
 from __future__ import annotations
@@ -92,10 +93,10 @@ class OutputMoves:
     # ------------------------------------------------------------ acting
 
     def _set_bank(self, bank: int, pattern: int) -> None:
-        self.io.out = self.io.banks.banks.with_output_word(self.io.out, bank, pattern)
+        self.io.set_outputs(self.io.banks.banks.with_output_word(self.io.out, bank, pattern))
 
     def _set(self, channel: int, *, on: bool) -> None:
-        self.io.out = with_bit(self.io.out, channel, on)
+        self.io.set_outputs(with_bit(self.io.out, channel, on))
 
     # ------------------------------------------------------------ Monitor
 

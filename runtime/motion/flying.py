@@ -139,6 +139,10 @@ class LockedMove(MasterDriven):
 
     # ------------------------------------------------------------ commands
 
+    def changing_ratio(self) -> bool:
+        """A clutch or FLY segment runs or waits, or the move ramps to rest: no OFFSET may start (000:14791-14797)."""
+        return self.shear is not None or bool(self.queue) or self.stopping
+
     def set_gear(self, gear: tuple[float, float]) -> None:
         """An instant ratio change (FOLLOWMODE 0 and 2): the queue is dropped."""
         self.incoming.append(lambda master, slave: self._rebase(master, slave, (), gear))

@@ -156,6 +156,8 @@ def register(table: KeywordTable, motion: Motion) -> None:
             running.ratio = gear[0] / gear[1]
         elif running is not None:
             if settings.mode == CONTINUOUS_CLUTCH:
+                if running.offsets.running is not None:  # no ratio change while an OFFSET runs (000:14796-14797)
+                    raise MintError(MOTION_IN_PROGRESS, axis.number, "the ratio cannot change during an OFFSET")
                 running.append(Step(master_distance(motion, axis), gear=gear))
             else:
                 running.set_gear(gear)

@@ -4,7 +4,7 @@ On NextMove an idle axis takes an OFFSET like a MOVER that needs GO: it
 ramps at ACCEL to SPEED above its (zero) base velocity and back down at
 DECEL. On a FOLLOW move the same profile runs on top of the master's speed
 (``superimposed.py``), also from GO. Only one OFFSET may be loaded or running
-at a time, and none while a clutch ramps (FLY). MintDrive, which starts OFFSET
+at a time, and none while a clutch changes the ratio. MintDrive, which starts OFFSET
 without GO and only on FOLLOW, is not simulated.
 """
 
@@ -36,6 +36,8 @@ def offset(motion: Motion) -> Callable[[Channels | None, Values], bool]:
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "OFFSET needs an idle or following axis")
             if following is not None and (following.offsets.running is not None or axis.buffer):
                 raise MintError(MOTION_IN_PROGRESS, axis.number, "one OFFSET at a time")
+            if isinstance(following, LockedMove) and following.changing_ratio():
+                raise MintError(MOTION_IN_PROGRESS, axis.number, "no OFFSET while a clutch changes the ratio")
         for axis, value in pairs:
             following = _following(axis)
             if following is None:
@@ -64,7 +66,7 @@ def _starter(axis: Axis, distance: float) -> Callable[[int], PlannedMove | None]
 
 
 def _following(axis: Axis) -> LockedMove | VelocityLockedMove | None:
-    """The FOLLOW move an OFFSET would run on; not during a clutch ramp, when the axis reads FLY (000:14797)."""
+    """The FOLLOW move an OFFSET would run on."""
     move = axis.move
     if isinstance(move, (LockedMove, VelocityLockedMove)) and move.mode & MD_FOLLOW:
         return move

@@ -31,7 +31,6 @@ from mintlang.semantic.units import Unit
 from mintlang.semantic.v3_declarations import UNDEFINED_VARIABLE
 from mintlang.syntax import nodes as n
 from mintlang.syntax.alike import carry_to_v4
-from mintlang.syntax.parents import ancestors
 
 
 def keyword_nodes(
@@ -186,33 +185,17 @@ class EnableOutput(ManualKeywords):
     reason = "RELAY.0 if the relay is the enable signal, else DRIVEENABLE[axes]"
 
 
-class ErrorCodes(Rule):
+class ErrorCodes(ManualKeywords):
     """v3 ERR codes 0..15 have no 1:1 v4 counterpart (motion errors are ERR = 500 plus
-    AXISERROR bits): each comparison of ERR with a value is flagged. Reading ERR otherwise
-    (``PRINT ERR``, ``IF ERR``: is there an error at all) means the same in v4."""
+    AXISERROR bits): every read of ERR is flagged, a test of it and a printed or stored code
+    alike, which shows another number (a following error is 11 in v3, 500 in v4); even
+    ``IF ERR`` tests another thing, v3's ERR 0 being Out of range."""
 
     id = "X-ERR"
-    rule_class = RuleClass.MANUAL
-    phase = Phase.MANUAL
-    summary = "ERR tests -> manual (v4: ERR = 500 for motion errors, AXISERROR bits)"
+    summary = "ERR -> manual (v4: ERR = 500 for motion errors, AXISERROR bits)"
     evidence = "spec X-ERR; v3:4918-4937; v4:18503-18893"
-
-    def apply(self, context: Context) -> Iterator[Action]:
-        for file, statement, _, node in keyword_nodes(context, "ERR".__eq__):
-            if _compared(statement, node):
-                reason = "v3 error numbers differ: motion errors are ERR = 500 with AXISERROR bits in v4"
-                yield self.flag(file, statement.span, f"ERR: {reason}")
-
-
-_COMPARISONS = frozenset({"=", "<>", "<", ">", "<=", ">="})
-
-
-def _compared(statement: n.Statement, node: n.KeywordRef | n.Call) -> bool:
-    """Whether ``node`` is a side of a comparison in ``statement`` (brackets around it included)."""
-    for enclosing in ancestors(statement, node):
-        if type(enclosing) is not n.Parenthesised:
-            return type(enclosing) is n.Binary and enclosing.operator in _COMPARISONS  # type: ignore[union-attr]
-    return False
+    keywords = frozenset({"ERR"})
+    reason = "v3 error numbers differ: motion errors are ERR = 500 with AXISERROR bits in v4"
 
 
 class ChangedMeaning(ManualKeywords):

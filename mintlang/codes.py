@@ -48,9 +48,8 @@ DEFAULT_SELECT = ("E", "W")
 # 2004, 2006-2008), mismatched blocks (2009, 2011-2014) and nesting beyond the stack (2015), labels
 # (3000, 3004), variables (3001, 3002), memory (3003), macros (3005, 3006) and keywords (3007). Every
 # other error is raised by the line that causes it, when it runs, and #ONERROR sees it (000:4616-4619).
-COMPILE_ERRORS = frozenset(
-    {2003, 2004, 2006, 2007, 2008, 2009, 2011, 2012, 2013, 2014, 2015, 3000, 3001, 3002, 3003, 3004, 3005, 3006, 3007}
-)
+SYNTAX_ERRORS = frozenset({2003, 2004, 2006, 2007, 2008})  # a statement not written as the compiler reads it
+COMPILE_ERRORS = SYNTAX_ERRORS | {2009, 2011, 2012, 2013, 2014, 2015, 3000, 3001, 3002, 3003, 3004, 3005, 3006, 3007}
 
 
 @cache  # one string per code, whatever the number of diagnostics that carry it

@@ -9,7 +9,10 @@ nothing more applies or ``MAX_ROUNDS`` have run (a fix that undoes another
 would otherwise loop for ever). A round after which a fixed finding is still
 there (the same code and message as often as before) is undone and tried again
 without that fix: a declaration that cannot declare its name is not written at
-all, rather than once a round.
+all, rather than once a round. So is a round after which the text has more
+syntax errors than before, as ruff reverts a fix that introduces one: it is tried
+again without the fixes that add one on their own (all of the round's when only
+together they do), so a guess never leaves the program unreadable to the compiler.
 """
 
 from __future__ import annotations
@@ -17,6 +20,7 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Callable, Collection, Iterable, Sequence
 
+from mintlang.codes import SYNTAX_ERRORS
 from mintlang.diagnostics import Diagnostic, Edit, Fix, with_edits
 from mintlang.records import record
 
@@ -87,6 +91,8 @@ def fix_text(text: str, check: Callable[[str], Sequence[Diagnostic]], *, unsafe:
             return Fixed(text, tuple(fixed), tuple(diagnostics), converged=True)
         found = check(changed)
         still_there = _not_fixed(diagnostics, applied, found)
+        if not still_there and _syntax_errors(found) > _syntax_errors(diagnostics):
+            still_there = _breaking(text, applied, check, _syntax_errors(diagnostics))
         if still_there:
             failed |= still_there  # undo the round; try it again without them
             continue
@@ -102,3 +108,16 @@ def _not_fixed(before: Sequence[Diagnostic], applied: Sequence[Diagnostic], afte
     expected.subtract(map(_key, applied))
     found = Counter(map(_key, after))
     return {key for key in map(_key, applied) if found[key] > expected[key]}
+
+
+def _syntax_errors(diagnostics: Iterable[Diagnostic]) -> int:
+    return sum(diagnostic.mint_error in SYNTAX_ERRORS for diagnostic in diagnostics)
+
+
+def _breaking(
+    text: str, applied: Sequence[Diagnostic], check: Callable[[str], Sequence[Diagnostic]], errors: int
+) -> set[_Key]:
+    """The applied findings whose fix alone leaves ``text`` with more than ``errors`` syntax errors; every one
+    of them when none does alone."""
+    alone = {_key(d) for d in applied if _syntax_errors(check(with_edits(text, d.fixes[0].edits))) > errors}
+    return alone or set(map(_key, applied))

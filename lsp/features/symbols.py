@@ -273,10 +273,15 @@ def register(server: MintServer) -> None:
             snapshot = server.snapshot(uri) or _from_disk(server, uri)
             if snapshot is None:
                 continue
+            label_kinds: dict[str, types.SymbolKind] | None = None  # worked out at the first label asked for
             for symbol in snapshot.model.symbols.all():
                 if not symbol.definitions or query not in symbol.name.upper():
                     continue
                 kind = _KINDS.get(symbol.kind, types.SymbolKind.Function)
+                if symbol.kind is SymbolKind.LABEL:
+                    if label_kinds is None:
+                        label_kinds = {section.symbol.name: label_kind(section)[0] for section in sections(snapshot)}
+                    kind = label_kinds.get(symbol.name, kind)  # as the outline names it
                 name = f"#{symbol.name}" if symbol.kind is SymbolKind.LABEL else symbol.name
                 for location in locations(snapshot, symbol.definitions[:1]):
                     key = (location.uri, location.range.start.line, location.range.start.character)

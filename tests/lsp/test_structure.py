@@ -61,6 +61,20 @@ async def test_workspace_symbols_span_open_documents(client, tmp_path):
     }
 
 
+async def test_workspace_symbols_name_labels_as_the_outline_does(client, tmp_path):
+    # a GOSUB's label is a subroutine, an event handler's an event (000:1878-1880), and a label only a GOTO names is
+    # a place to jump to, not a routine
+    text = "GOSUB setUp\nGOTO again\n#again\nPRINT 1\nEND\n#setUp\nRETURN\n#ONERROR\nRETURN\n"
+    await open_document(client, uri_of(tmp_path / "kinds.mnt"), text)
+    found = await client.workspace_symbol_async(types.WorkspaceSymbolParams(query=""))
+    kinds = {s.name: s.kind for s in found if s.location.uri.endswith("kinds.mnt")}
+    assert kinds == {
+        "#setUp": types.SymbolKind.Function,
+        "#again": types.SymbolKind.Key,
+        "#ONERROR": types.SymbolKind.Event,
+    }
+
+
 async def test_folding_blocks_and_subroutines(client, tmp_path):
     text = "IF IN1 DO\n  OUT1 = 1\nELSE\n  OUT1 = 0\nENDIF\n" + XY
     uri = uri_of(tmp_path / "fold.mnt")

@@ -22,7 +22,9 @@
 
 Formatting twice gives what formatting once gives, and a formatted program parses
 to what it parsed to, whitespace and letter case aside. ``mint format`` and the
-language server's formatting both take their edits from here.
+language server's formatting both take their edits from here; ``mint format`` leaves
+a text with a syntax error as it is (``format_text``), as ruff's formatter does: what
+the compiler cannot read may be words meant as text (a C comment's), not keywords.
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
+from mintlang.codes import SYNTAX_ERRORS
 from mintlang.diagnostics import Edit, Span, with_edits
 from mintlang.dialect import Dialect
 from mintlang.semantic.units import Unit
@@ -193,12 +196,21 @@ def _formatted(source: str, start: int, end: int, indentation: str | None, keywo
     return "".join(pieces).rstrip(" \t")
 
 
+class Unparsable(ValueError):
+    """A text with a syntax error, left as it is; the message is ``line:column: CODE message`` of its first."""
+
+
 def format_text(text: str, indentation: str, dialect: Dialect, *, configuration: bool = False) -> str:
-    """``text``, a program (or with ``configuration`` a configuration file) of ``dialect``, in the house style."""
+    """``text``, a program (or with ``configuration`` a configuration file) of ``dialect``, in the house style;
+    ``Unparsable`` if it has a syntax error."""
     from mintlang.semantic.model import build_model  # noqa: PLC0415 - see the imports
     from mintlang.syntax.parser import parse  # noqa: PLC0415
 
     document = parse(text, dialect)
+    error = next((found for found in document.diagnostics if found.mint_error in SYNTAX_ERRORS), None)
+    if error is not None:
+        place = document.line_index.position(error.span.start)
+        raise Unparsable(f"{place.line}:{place.column}: {error.code} {error.message}")
     model = build_model(parse("", dialect), document) if configuration else build_model(document)
     unit = Unit.CONFIGURATION if configuration else Unit.PROGRAM
     return with_edits(text, formatting_edits(model, unit, indentation))

@@ -5,7 +5,8 @@ included; the settings file's ``[format]`` table gives the options' defaults (``
 file is written atomically and only if it still holds what was read (``cli.fixing.apply``).
 ``--check`` and ``--diff`` write nothing and exit 1 when a file would change, for a CI gate or a hook.
 A file read as Mint v4 by default that shows MintMT's forms is left as it is: v4 would take its ``'`` comments
-for code and write their words in upper case.
+for code and write their words in upper case. So is a file with a syntax error, named at its place, as ruff
+names a file it cannot parse.
 """
 
 from __future__ import annotations
@@ -32,7 +33,7 @@ from mintlang.cli.settings import ProjectCommand, exclusions, settings_failed
 from mintlang.detection import first_mintmt_form
 from mintlang.dialect import Dialect
 from mintlang.fixes import Fixed
-from mintlang.formatting import INDENT_STYLES, INDENT_WIDTH, format_text, indent_unit
+from mintlang.formatting import INDENT_STYLES, INDENT_WIDTH, Unparsable, format_text, indent_unit
 from mintlang.settings import Given, Overrides, SettingsError, settings_for
 from mintlang.source import SourceFile, read_source, read_stdin
 
@@ -167,7 +168,10 @@ def _formatted(source: SourceFile, layer: Overrides, level: str) -> tuple[str, s
         settings_failed("mint format", error)
     if (problem := _not_formatted(source, given)) is not None:
         return source.text, problem
-    return format_text(source.text, level, given.value, configuration=is_configuration(source.path)), None
+    try:
+        return format_text(source.text, level, given.value, configuration=is_configuration(source.path)), None
+    except Unparsable as error:
+        return source.text, f"{source.path}:{error}: not formatted"
 
 
 def _not_formatted(source: SourceFile, dialect: Given[Dialect]) -> str | None:

@@ -133,7 +133,9 @@ def test_a_mintmt_program_read_as_v4_by_default_is_left_as_it_is(tmp_path: Path)
     assert f"{path}: looks like MintMT (a ' comment on line 1)" in result.stderr
     piped = CliRunner().invoke(main, ["format", "-"], input=MINTMT)
     assert (piped.exit_code, piped.stdout) == (2, "")
-    assert mint_format("--dialect", "v4", path).exit_code == 0  # chosen: the user's word
+    chosen = mint_format("--dialect", "v4", path)  # the user's word: read as v4, the ' opens a character constant
+    assert (chosen.exit_code, path.read_text(encoding="utf-8")) == (2, MINTMT)  # never closed: a syntax error
+    assert f"{path}:1:20: E2003 " in chosen.stderr
 
 
 def test_the_settings_files_format_table_gives_the_defaults(tmp_path: Path) -> None:

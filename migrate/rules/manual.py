@@ -198,6 +198,22 @@ class ErrorCodes(ManualKeywords):
     reason = "v3 error numbers differ: motion errors are ERR = 500 with AXISERROR bits in v4"
 
 
+class PowerUpAgain(ManualKeywords):
+    """v3 DEFAULT put back v3's power-up values (v3:7247-7251) and left the dedicated limit, home,
+    stop and error inputs and the amplifier enable as the hardware had them; v4 DEFAULT puts back
+    v4's values and unassigns the inputs and the drive enable output the prologue asks for
+    (v4:9004-9059), which nothing here can write for the user."""
+
+    id = "X-DEFAULT"
+    summary = "DEFAULT -> manual (v4 DEFAULT unassigns the inputs and the drive enable output, sets v4's values)"
+    evidence = "v3:7247-7251, v3:9989, v3:8741, v3:11797; v4:9004-9059"
+    keywords = frozenset({"DEFAULT"})
+    reason = (
+        "v4 DEFAULT also unassigns the limit, home, stop and error inputs and the drive enable output "
+        "and sets v4's defaults (FOLERRORFATAL 1000, IDLEPOS 1000, SPEED 20000): write them again after it"
+    )
+
+
 class ChangedMeaning(ManualKeywords):
     """Keywords whose v4 form needs context this migrator does not compute yet (the spec's
     M-DISPLAY): each use is flagged with the v4 form to write. CAM/CAMA, GEARN/GEARD and

@@ -200,13 +200,16 @@ class Unparsable(ValueError):
     """A text with a syntax error, left as it is; the message is ``line:column: CODE message`` of its first."""
 
 
-def format_text(text: str, indentation: str, dialect: Dialect, *, configuration: bool = False) -> str:
+def format_text(
+    text: str, indentation: str, dialect: Dialect, *, configuration: bool = False, seen: str | None = None
+) -> str:
     """``text``, a program (or with ``configuration`` a configuration file) of ``dialect``, in the house style;
-    ``Unparsable`` if it has a syntax error."""
+    ``Unparsable`` if it has a syntax error. ``seen`` is the configuration file a program sees, whose macros
+    are the program's (000:1540-1541)."""
     from mintlang.semantic.model import build_model  # noqa: PLC0415 - see the imports
     from mintlang.syntax.parser import parse  # noqa: PLC0415
 
-    document = parse(text, dialect)
+    document = parse(text, dialect, macros=None if seen is None else parse(seen, dialect).macros)
     error = next((found for found in document.diagnostics if found.mint_error in SYNTAX_ERRORS), None)
     if error is not None:
         place = document.line_index.position(error.span.start)

@@ -34,7 +34,7 @@ from mintlang.detection import first_mintmt_form
 from mintlang.dialect import Dialect
 from mintlang.fixes import Fixed
 from mintlang.formatting import INDENT_STYLES, INDENT_WIDTH, Unparsable, format_text, indent_unit
-from mintlang.settings import Given, Overrides, SettingsError, settings_for
+from mintlang.settings import FileSettings, Given, Overrides, SettingsError, settings_for
 from mintlang.source import SourceFile, read_source, read_stdin
 
 _CHANGES = 1
@@ -163,15 +163,30 @@ def _formatted(source: SourceFile, layer: Overrides, level: str) -> tuple[str, s
     """``source``'s text in the house style, read as its settings say, and None; or its own text and why it is left
     as it is. A settings file that cannot be used ends the command."""
     try:
-        given = settings_for(source.path, layer).dialect
+        settings = settings_for(source.path, layer)
     except SettingsError as error:
         settings_failed("mint format", error)
-    if (problem := _not_formatted(source, given)) is not None:
+    if (problem := _not_formatted(source, settings.dialect)) is not None:
         return source.text, problem
+    configuration = is_configuration(source.path)
+    seen = None if configuration else _configuration_text(source.path, settings)
     try:
-        return format_text(source.text, level, given.value, configuration=is_configuration(source.path)), None
+        return format_text(source.text, level, settings.dialect.value, configuration=configuration, seen=seen), None
     except Unparsable as error:
         return source.text, f"{source.path}:{error}: not formatted"
+
+
+def _configuration_text(program: Path, settings: FileSettings) -> str | None:
+    """The text of the configuration file ``program`` sees, as ``mint check`` pairs them (its macros are the
+    program's); None when it has none, or one that cannot be read (``mint check`` says why)."""
+    _, other = settings.partner(program)
+    if other is None:
+        return None
+    try:
+        configuration = read_source(other)
+    except OSError:
+        return None
+    return configuration.text if configuration.binary() is None else None
 
 
 def _not_formatted(source: SourceFile, dialect: Given[Dialect]) -> str | None:

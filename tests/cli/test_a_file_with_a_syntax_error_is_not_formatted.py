@@ -53,3 +53,15 @@ def test_standard_input_is_not_written_back_changed(tmp_path: Path) -> None:
     result = mint_format("--stdin-filename", str(tmp_path / "cell.mnt"), "-", given=C_COMMENT)
     assert (result.exit_code, result.stdout) == (2, "")
     assert f"{tmp_path / 'cell.mnt'}:2:1: E2003 " in result.stderr
+
+
+def test_a_macro_of_the_configuration_file_is_read_as_the_program_sees_it(tmp_path: Path) -> None:
+    # the configuration file's macros are the program's too (000:1540-1541): 'twice' completes the expression
+    write(tmp_path / "cell.cfg", "DEFINE twice = * 2\nDIM g = 1\n")
+    program = write(tmp_path / "cell.mnt", "loop\nprint g twice\nendl\n")
+    result = mint_format(program)
+    assert (result.exit_code, program.read_text(encoding="utf-8")) == (0, "LOOP\n  PRINT g twice\nENDL\n")
+    named = write(tmp_path / "other.mnt", "print g twice\n")
+    assert mint_format("--diff", named).exit_code == 2  # no configuration file beside it: an error
+    write(tmp_path / "mint.toml", 'config = "cell.cfg"\n')  # one for every program
+    assert mint_format(named).exit_code == 0

@@ -32,6 +32,13 @@ def split_lines(text: str, *, keepends: bool = False) -> list[str]:
     return lines if keepends else [line.rstrip("\r\n") for line in lines]
 
 
+def line_break(text: str) -> str:
+    """The line break a line added to ``text`` ends with: its first (\\r\\n, \\r or \\n), as ruff reads a file's,
+    so a fix keeps a file's line ends; \\n in a text of one line."""
+    found = _LINE_BREAK.search(text)
+    return "\n" if found is None else found[0]
+
+
 def lines_of(text: str) -> Iterator[str]:
     """The lines of ``split_lines(text, keepends=True)`` one at a time, for a reader that may stop
     early or keeps few: the list of a large file's lines is several times its size."""

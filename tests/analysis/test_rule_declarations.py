@@ -40,9 +40,11 @@ def test_applying_the_3001_fix_removes_the_error(source: str) -> None:
     assert [code for code, _, _ in found(fixed) if code.startswith("E")] == []
 
 
-def test_the_3001_fix_keeps_the_files_line_breaks() -> None:
-    (edit,) = next(d for d in mintlang.check("a = 1\r\nPRINT a\r\n") if d.code == "E3001").fixes[0].edits
-    assert edit.text == "DIM a\r\n"
+@pytest.mark.parametrize("newline", ["\r\n", "\r", "\n"], ids=["crlf", "cr", "lf"])
+def test_the_3001_fix_keeps_the_files_line_breaks(newline: str) -> None:
+    source = f"a = 1{newline}PRINT a{newline}"
+    (edit,) = next(d for d in mintlang.check(source) if d.code == "E3001").fixes[0].edits
+    assert edit.text == f"DIM a{newline}"
 
 
 def test_a_misspelt_variable_gets_the_declared_name_it_resembles() -> None:

@@ -97,6 +97,9 @@ MISSING_LABELS = [
     pytest.param(  # the main program would run on into it (000:18968-18978): END first
         "GOSUB init\nPRINT 1", "Create subroutine #init", "GOSUB init\nPRINT 1\nEND\n\n#init\nRETURN\n", id="end-first"
     ),
+    pytest.param(  # the file's line breaks, a lone carriage return as a terminal sends it
+        "GOSUB init\rEND\r", "Create subroutine #init", "GOSUB init\rEND\r\r#init\rRETURN\r", id="cr-line-breaks"
+    ),
 ]
 
 

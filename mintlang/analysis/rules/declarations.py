@@ -23,7 +23,7 @@ from mintlang.analysis.rules.functions import bracketed
 from mintlang.analysis.rules.v3_keywords import successor
 from mintlang.analysis.suggestions import closest, did_you_mean, keyword_like
 from mintlang.analysis.traversal import Facts, LineScope
-from mintlang.diagnostics import Edit, Fix, Span
+from mintlang.diagnostics import Edit, Fix, Span, line_break
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import KeywordKind, Use
@@ -284,7 +284,7 @@ def _add_dim(  # noqa: PLR0917 - the name, where it is used, and what is known o
     indent_start = indent_end = index.line_start(indented)
     while indent_end < len(text) and text[indent_end] in " \t":
         indent_end += 1
-    newline = "\r\n" if "\r\n" in text else "\n"
+    newline = line_break(text)
     declaration = f"{text[indent_start:indent_end]}DIM {declared}{newline}"
     return Fix(f"Declare '{declared}' with DIM", (Edit(Span(start, start), declaration),))
 
@@ -434,7 +434,7 @@ def _label_fixes(
     if close is not None and _written_at(model, unit, reference.span) == reference.spelling:
         fixes.append(Fix(f"Change to #{by_case[close]}", (Edit(reference.span, by_case[close]),)))
     text = model.document(unit).source
-    newline = "\r\n" if "\r\n" in text else "\n"
+    newline = line_break(text)
     finish_last_line = newline if text and not text.endswith(("\n", "\r")) else ""
     stop = f"END{newline}" if word == "GOSUB" and runs_on(unit) else ""
     body = f"{newline}RETURN" if word == "GOSUB" else ""

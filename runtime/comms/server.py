@@ -29,7 +29,11 @@ _INBOX_LIMIT = 1 << 16
 
 @dataclass(slots=True, eq=False)
 class _Connection:
-    """One client; ``decoder`` belongs to the simulation thread, the rest is shared under the server's lock."""
+    """One client; ``decoder`` belongs to the simulation thread, the rest is shared under the server's lock.
+
+    ``ended``: the client has finished sending (a half close), but may still be reading its replies.
+    ``answered``: every byte of an ended client has been serviced, so it is closed once its replies are sent.
+    """
 
     sock: socket.socket
     decoder: PacketDecoder = field(default_factory=PacketDecoder)
@@ -37,6 +41,8 @@ class _Connection:
     outbox: bytearray = field(default_factory=bytearray)
     watched: int = 0
     open: bool = True
+    ended: bool = False
+    answered: bool = False
 
 
 class HostPortServer:
@@ -44,7 +50,8 @@ class HostPortServer:
 
     Threading contract: create, ``service`` and ``close`` from the simulation thread; ``port`` from
     anywhere. Client misbehaviour (garbage, half packets, resets) never raises here: a closed
-    connection's received bytes are still serviced once, and its replies are dropped.
+    connection's received bytes are still serviced once, and its replies are dropped. A client that
+    only ends its sending side still gets the replies to what it sent, then the connection closes.
     """
 
     def __init__(self, port: int = 0) -> None:
@@ -74,20 +81,25 @@ class HostPortServer:
     def service(self, endpoint: HostEndpoint) -> None:
         """Decode the bytes received since the last call, apply them through ``endpoint`` and queue the replies."""
         with self._lock:
-            batch = [(connection, bytes(connection.inbox)) for connection in self._connections if connection.inbox]
-            for connection, _ in batch:
+            batch = [
+                (connection, bytes(connection.inbox), connection.ended)
+                for connection in self._connections
+                if connection.inbox or (connection.ended and not connection.answered)
+            ]
+            for connection, _, _ in batch:
                 connection.inbox.clear()
             self._connections = [connection for connection in self._connections if connection.open]
         if not batch:
             return
         replies = [
-            (connection, b"".join(endpoint.answer(request) for request in connection.decoder.feed(data)))
-            for connection, data in batch
+            (connection, b"".join(endpoint.answer(request) for request in connection.decoder.feed(data)), ended)
+            for connection, data, ended in batch
         ]
         with self._lock:
-            for connection, reply in replies:
+            for connection, reply, ended in replies:
                 if connection.open:
                     connection.outbox += reply
+                connection.answered = ended
         self._wake()
 
     def close(self) -> None:
@@ -147,18 +159,22 @@ class HostPortServer:
                         self._send(connection)
 
     def _update_watches(self) -> None:
-        """Read while the inbox has room, write while replies wait; a connection wanting neither is unregistered."""
+        """Read while the client sends and the inbox has room, write while replies wait; a connection wanting
+        neither is unregistered, and closed once an ended client has had all its replies."""
         with self._lock:
             wanted = [
                 (
                     connection,
-                    (selectors.EVENT_READ if len(connection.inbox) < _INBOX_LIMIT else 0)
+                    (selectors.EVENT_READ if not connection.ended and len(connection.inbox) < _INBOX_LIMIT else 0)
                     | (selectors.EVENT_WRITE if connection.outbox else 0),
                 )
                 for connection in self._connections
                 if connection.open
             ]
         for connection, events in wanted:
+            if connection.answered and not events:
+                self._drop(connection)
+                continue
             if events == connection.watched:
                 continue
             if not connection.watched:
@@ -184,13 +200,14 @@ class HostPortServer:
             data = connection.sock.recv(_RECEIVE_SIZE)
         except BlockingIOError:
             return
-        except OSError:
-            data = b""
-        if not data:
+        except OSError:  # a reset: nothing more will be read or delivered
             self._drop(connection)
             return
         with self._lock:
-            connection.inbox += data
+            if data:
+                connection.inbox += data
+            else:  # the client finished sending; it may still read the replies to what it sent
+                connection.ended = True
 
     def _send(self, connection: _Connection) -> None:
         with self._lock:
@@ -206,7 +223,7 @@ class HostPortServer:
             del connection.outbox[:sent]
 
     def _drop(self, connection: _Connection) -> None:
-        """Close a finished client; its unserviced bytes stay for one last ``service``."""
+        """Close a client that was reset or has had its replies; its unserviced bytes stay for one last ``service``."""
         if connection.watched:
             self._selector.unregister(connection.sock)
             connection.watched = 0

@@ -6,8 +6,9 @@ what the v4 checker finds on such a word: a name v4 does not know (an undeclared
 unknown keyword, E3001/E3007) spelt as the full name of a v3 keyword v4 does not have or as a v3
 constant (``CONFIG = _servo``), or a v3 event (W102); and such a name written with v3's ``;`` fill
 (``HMSPEED = 10;``), where the check stops on the ``;`` before it names the variable. An abbreviation
-is not enough (``ax`` is v3's AUX, and a likely v4 name), and a v4 program that declares a variable so
-named (``DIM conton``) gets no finding on it.
+read as a variable is not enough (``ax`` is v3's AUX, and a likely v4 name), and a v4 program that
+declares a variable so named (``DIM conton``) gets no finding on it; one written as a keyword, with an
+axis (``BA.2 = 5``) or alone as a command (``DL``), is no v4 name: the check says it is v3's (E3007).
 """
 
 from __future__ import annotations
@@ -15,14 +16,15 @@ from __future__ import annotations
 from collections.abc import Collection
 
 import mintlang
-from mintlang.diagnostics import LineIndex, split_lines
+from mintlang.diagnostics import Diagnostic, LineIndex, split_lines
 from mintlang.keyworddb import database
 from mintlang.migrate.context import MARKER_LINE
 from mintlang.migrate.rules.addressed import unparsed_write
 from mintlang.records import record
 from mintlang.syntax import nodes as n
 
-_UNKNOWN_NAME = frozenset({"E3001", "E3007"})
+_UNKNOWN_KEYWORD = "E3007"
+_UNKNOWN_NAME = frozenset({"E3001", _UNKNOWN_KEYWORD})
 _SYNTAX = "E2003"
 _NAMED = _UNKNOWN_NAME | {_SYNTAX}
 _V3_EVENT = "W102"
@@ -50,11 +52,19 @@ def v3_uses(source: str, config: str | None = None) -> V3Uses:
             word = text[diagnostic.span.start : diagnostic.span.end]
             if diagnostic.code == _SYNTAX:
                 word = _filled(index, text, diagnostic.span.start, analysis.model.symbols.variables.keys())
-            if diagnostic.code == _V3_EVENT or (diagnostic.code in _NAMED and _v3_only(word)):
+            if _shows_v3(diagnostic, word):
                 above = index.position(diagnostic.span.start).line - 2  # the line above, counted from 0
                 found.append((word.upper(), above >= 0 and MARKER_LINE.match(lines[above]) is not None))
     words = tuple(dict.fromkeys(word for word, _ in found))
     return V3Uses(words, bool(found) and all(marked for _, marked in found))
+
+
+def _shows_v3(diagnostic: Diagnostic, word: str) -> bool:
+    """Whether the v4 check's ``diagnostic`` on ``word`` shows v3: a v3 event, a v3 keyword written as a keyword
+    (its abbreviation too), or a v3 keyword's full name or a v3 constant v4 reads as a variable."""
+    if diagnostic.code == _V3_EVENT or (diagnostic.code == _UNKNOWN_KEYWORD and diagnostic.from_v3):
+        return True
+    return diagnostic.code in _NAMED and _v3_only(word)
 
 
 def _filled(index: LineIndex, text: str, error: int, declared: Collection[str]) -> str:

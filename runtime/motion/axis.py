@@ -37,6 +37,7 @@ MOTION_IN_PROGRESS = 10
 MOTION_ERROR = 12
 DRIVE_NOT_ENABLED = 40
 CONFIG_OFF = 0  # _cfOFF: the axis turned off, its encoder still read (000:8437, 8454-8455)
+CONFIG_VIRTUAL = 5  # _cfVIRTUAL: moves without physical output, the position simulated (000:8442, 8456-8458)
 NEXTMOVES = frozenset({Controller.NEXTMOVE_PCI, Controller.NEXTMOVE_PC, Controller.NEXTMOVE_BX})
 DRIVE_ENABLED = 90  # _erDRIVE_ENABLED: what the drive must be disabled for, such as CONFIG (000:8481, 18821-18823)
 DISABLED_AT_POWER_UP = "a drive starts disabled: enable it with DRIVEENABLE or RESET, or run with --drives enabled"
@@ -96,6 +97,7 @@ class Axis:
         # MintDrive's axes, off at power-up (000:8421-8424), move, count and wait as its pages show: see turned_off
         self.off_runs_as_servo = controller not in NEXTMOVES
         self.plant: Plant = plant if plant is not None else IdealPlant()
+        self._physical: Plant | None = None  # the motor's plant, set aside while the axis is virtual
         self.servo = ServoLoop()
         self.enabled = False  # drives start disabled (IO-7 RC)
         self.disabled_hint = DISABLED_AT_POWER_UP  # error 40's hint; a v3 controller's says how v3 switches it on
@@ -160,6 +162,8 @@ class Axis:
         if name == "ENCODERPRESCALE":
             self.count_from_here()
         self.parameters[name] = value * scale
+        if name == "CONFIG":
+            self.configured()
         if name in GUARDS:
             self.guarded = self._guarded()
         if name in GAINS:
@@ -243,6 +247,20 @@ class Axis:
     def velocity_demand(self, tick: int) -> float:
         """Demand velocity in counts/s (its sign decides which limits apply, AX-14 RC)."""
         return self.move.velocity(self.index_in_move, tick) if self.move is not None else 0.0
+
+    def configured(self) -> None:
+        """CONFIG was written, or DEFAULT restored it: a virtual axis follows its demand on an ideal plant and drives
+        no output (000:8456-8458), the motor's plant set aside; back from virtual, the motor is counted on from the
+        simulated position, so POS and ENCODER do not jump."""
+        virtual = self.parameters["CONFIG"] == CONFIG_VIRTUAL
+        if virtual and self._physical is None:
+            self._physical, self.plant = self.plant, IdealPlant(round_half_away(self.measured))
+        elif not virtual and self._physical is not None:
+            self.plant, self._physical = self._physical, None
+            if isinstance(self.plant, IdealPlant):
+                self.plant.position = round_half_away(self.measured)
+            else:
+                self.count_from_here()
 
     def turned_off(self) -> bool:
         """A NextMove axis configured off: its POS no longer counts and it is idle (000:15126-15127, 11750)."""

@@ -385,6 +385,7 @@ class Motion:
             axis.position_offset = axis.encoder_offset = float(axis.measured)
             axis.count_from_here()  # ENCODERPRESCALE back to 1
             axis.parameters = dict(power_up(self.profile.controller))
+            axis.configured()
             for reset in self.on_default:
                 reset(axis)
         return False

@@ -28,7 +28,7 @@ from mintlang.controllers import ControllerProfile
 from mintlang.detection import dialect_hint
 from mintlang.dialect import Dialect
 from mintlang.runtime import scenario as scenarios
-from mintlang.runtime.comms import PortUnavailable
+from mintlang.runtime.comms import V3_READS_NO_HOST, PortUnavailable
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.hardware import machine
 from mintlang.runtime.interpreter.vm import StopReason
@@ -110,6 +110,8 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         simulated = machine(controller, dialect)
     except ValueError as problem:
         raise click.UsageError(str(problem)) from None
+    if host_port is not None and Dialect(dialect) is Dialect.V3:
+        raise click.UsageError(f"--host-port: {V3_READS_NO_HOST}")
     try:
         files = [read_source(path) for path in (program, config_path) if path is not None]
         scenario = _scenario((*stimulus_paths, *expect_paths), simulated, Dialect(dialect))

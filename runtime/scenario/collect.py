@@ -14,10 +14,12 @@ from collections.abc import Callable, Hashable
 
 from mintlang.controllers import ControllerProfile
 from mintlang.dialect import Dialect
+from mintlang.runtime.comms import V3_READS_NO_HOST
 from mintlang.runtime.scenario.expectations import Expectation
 from mintlang.runtime.scenario.problems import Invalid, ScenarioError
 from mintlang.runtime.scenario.reach import check_reach
 from mintlang.runtime.scenario.stimulus import (
+    HostPacket,
     IndexPulse,
     InputLevel,
     PlantChoice,
@@ -64,6 +66,8 @@ class Collector:
             record = build()
             if self.controller is not None:
                 check_reach(record, self.controller)
+            if self.dialect is Dialect.V3 and isinstance(record, HostPacket):
+                raise Invalid(V3_READS_NO_HOST)
         except Invalid as problem:
             key = problem.key
             at_key = line_of(key) if line_of is not None and key is not None else None

@@ -104,3 +104,12 @@ def test_next_with_its_index_name_is_a_syntax_error_that_still_closes_the_for() 
 
 def test_v3_keywords_are_not_reported_in_v3_code() -> None:
     assert mintlang.check("HMSPEED = 10\n", dialect="v3") == []
+
+
+def test_an_abbreviated_bit_keyword_is_said_to_be_the_bit_v4_still_writes() -> None:
+    # O4 and I2 are v3's OUT4 and IN2 (001:10602, 8975); v4 writes OUTx and INx as v3 did (000:14889-14897,
+    # 000:11951), so those are the words to write: OUT or IN alone reads or sets every bit at once
+    source = "DIM a\nIF I2 THEN O4 = 1\n"
+    in2, out4 = [d for d in mintlang.check(source) if d.code == "E3001"]
+    assert "abbreviation of IN2; v4: IN2," in in2.message
+    assert "abbreviation of OUT4; v4: OUT4," in out4.message

@@ -26,7 +26,7 @@ from mintlang.analysis.traversal import Facts, LineScope
 from mintlang.diagnostics import Edit, Fix, Span, line_break
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import KeywordKind, Use
+from mintlang.keyworddb.model import KeywordKind, Use, V3Keyword
 from mintlang.keyworddb.usage import refusal
 from mintlang.records import record
 from mintlang.semantic.model import SemanticModel
@@ -133,8 +133,7 @@ def _undeclared_variables(
                 detail += f": it is {was.detail}"
                 fixes = (_replace_each(written, was.rename), *fixes) if was.rename and written else fixes
             elif old is not None:  # an abbreviation: a whole v3 keyword has a successor
-                v4 = ", ".join(old.v4_names) if old.v4_names else "nothing"
-                detail += f" (in Mint v3 it was the abbreviation of {old.name}; v4: {v4}, see mint-migrate)"
+                detail += f" (in Mint v3 it was the abbreviation of {old.name}; v4: {_v4_words(old)}, see mint-migrate)"
             elif symbol.definitions:
                 detail += " (its DIM comes later: declarations must come first)"
             elif (close := closest(occurrence.spelling.upper(), declared)) is not None:
@@ -152,6 +151,14 @@ def _undeclared_variables(
                 fixes = (_replace_each(written, keyword), *fixes) if written else fixes
             error = mint_error(3001, occurrence.span, detail, fixes=fixes, from_v3=was is not None or was_keyword)
             yield Finding(occurrence.unit, error)
+
+
+def _v4_words(old: V3Keyword) -> str:
+    """What v4 writes for the v3 keyword ``old``: its own name where v4 reads it still, as the bit keywords
+    ``OUT4`` and ``IN2`` (000:14889-14897, 11951), where their successor alone (OUT, IN) is every bit at once."""
+    if database().lookup(old.name) is not None:
+        return old.name
+    return ", ".join(old.v4_names) if old.v4_names else "nothing"
 
 
 def _v3_undefined_variables(model: SemanticModel) -> Iterator[Finding]:

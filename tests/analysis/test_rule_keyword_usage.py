@@ -107,6 +107,13 @@ def test_relay_is_read_and_written_as_its_formats_show() -> None:
     assert [code for code, _, _ in found("IDLE.0 = 1\n")] == ["E2000"]
 
 
+def test_a_value_written_to_a_read_only_keyword_is_not_also_out_of_its_range() -> None:
+    # IDLE returns 0 or 1 (000:11742) and cannot be written: the write is error 2000 alone, where "10 is
+    # outside the range of IDLE (0 or 1)" said that 1 could be written. A Mint v3 idle window read as v4
+    # (IDLE.0 = 10, 001:8772-8778) writes it so.
+    assert found("IDLE.0 = 10\n") == [("E2000", ERROR, 1)]
+
+
 def test_an_abbreviation_two_keywords_share_means_the_one_the_controller_has() -> None:
     # HP is HOMEPOS on a NextMove (v4:11581) and HANDLERPENDING on a MintDrive (v4:11314)
     assert found("DIM a\na = HP.1\n", controller="nextmove-pci") == []

@@ -19,6 +19,7 @@ from mintlang.controllers import io_banks
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database, supplements
 from mintlang.keyworddb.model import Controller, Keyword, ValueRange
+from mintlang.keyworddb.usage import refusal
 from mintlang.semantic.constants import constant_integer, constant_value, held_value
 from mintlang.syntax import nodes as n
 
@@ -30,6 +31,8 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if use.use is not Use.WRITE or not isinstance(use.statement, n.KeywordStatement):
             continue
         written = db.keywords_of(dialect).get(use.keyword.keyword)
+        if written is not None and refusal(written, controller, dialect, Use.WRITE) is not None:
+            continue  # not written at all (IDLE, 2000): no value of it is in range, nor out
         if written is not None and written.indices and written.indices[-1] == "bank":
             yield from _output_word(use, scope)
             continue

@@ -7,6 +7,7 @@ v3 (v3:5748-5760, v3:4368-4376): ANALOGUEn reads one part in 1024 of +-10 V, 512
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 
 import pytest
@@ -27,6 +28,8 @@ def _value(node: n.Expression, inputs: dict[str, float]) -> float:
             return _value(inner, inputs)
         case n.Unary(operator="-", operand=operand):
             return -_value(operand, inputs)
+        case n.Call(function="INT", arguments=(argument,)):  # the whole part (v4:12565)
+            return float(math.trunc(_value(argument, inputs)))
         case n.Binary(operator=operator, left=left, right=right):
             a, b = _value(left, inputs), _value(right, inputs)
             return {"+": a + b, "-": a - b, "*": a * b, "/": a / b if b else 0.0}[operator]
@@ -43,7 +46,7 @@ def _assigned(text: str, dialect: str) -> n.Expression:
 def test_analogue_counts_are_kept_for_a_ten_volt_input(volts: float) -> None:
     source = "x = A2 - 512\n"
     migrated = migrate(source, only=["S-ANALOG"]).text.splitlines()[-1] + "\n"
-    counts = (volts + 10) / 20 * 1024  # v3: one part in 1024 over -10..+10 V, 512 at 0 V (v3:4368-4376)
+    counts = math.floor((volts + 10) / 20 * 1024)  # v3: whole 1024ths of -10..+10 V, 512 at 0 V (v3:4368-4376, 5760)
     v3 = _value(_assigned(source, "v3"), {"ANALOGUE2": counts})
     v4 = _value(_assigned(migrated, "v4"), {"ADC.1": volts * 10})
     assert v4 == pytest.approx(v3, abs=1e-9)

@@ -26,6 +26,13 @@ HANDLER = 'PRINT "next"\nEND\n#ONERROR\nPRINT "ERR ", ERR\nRETURN\n'
         pytest.param("x = IN.8", "E0003", "8", 0, id="001:8965 input bit 8"),
         pytest.param("SPEED.3 = 10", "E0002", "3", 4, id="001:972 a fourth axis"),
         pytest.param("x = POS[0,5]", "E0002", "5", 4, id="001:972 in brackets"),
+        # every axis listed counts, whether or not it is given a value or the keyword is a command
+        pytest.param("SPEED[0,1,2,3] = 5", "E0002", "3", 4, id="001:990-998 an axis given no value"),
+        pytest.param("GO[0,1,2,3]", "E0002", "3", 4, id="001:8460 GO[axes]"),
+        pytest.param("STOP[0,1,2,3]", "E0002", "3", 4, id="001:11841 STOP[axes]"),
+        pytest.param("RESET[0,1,2,3]", "E0002", "3", 4, id="001:11395 RESET[axes]"),
+        pytest.param("AXES[0,1,2,3]", "E0002", "3", 4, id="001:5967 AXES[axis list]"),
+        pytest.param("AXES[3]", "E0002", "3", 4, id="001:5967 AXES of one axis"),
     ],
 )
 def test_the_check_finds_what_the_run_reports(line: str, code: str, where: str, err: int) -> None:
@@ -44,3 +51,10 @@ def test_a_bit_in_a_variable_is_out_of_range_when_the_line_runs() -> None:
 @pytest.mark.parametrize("line", ["OUT.7 = 1", "x = IN.0", "SPEED.2 = 10", "x = POS[0,1,2]"])
 def test_the_bits_and_axes_a_controller_has_are_no_error(line: str) -> None:
     assert mintlang.check(f"{line}\n", dialect="v3") == []
+
+
+@pytest.mark.parametrize("line", ["AXES[0,1]", "GO[0,1]", "STOP[0,1]", "SPEED[0,1] = 5"])
+def test_an_axis_past_those_of_a_smaller_controller_is_invalid_axis(line: str) -> None:
+    # a SmartMove/1 has one axis (001:178): axis 1 is one it lacks, as axis 3 is on a three-axis one
+    result = run_source(f"{line}\n{HANDLER}", dialect="v3", controller="smartmove-1")
+    assert result.terminal == "ERR 4\nnext\n"

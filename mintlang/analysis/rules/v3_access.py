@@ -38,6 +38,7 @@ from mintlang.keyworddb import database
 from mintlang.keyworddb.model import CIRCLES, VECTORS, Addressing, V3Keyword, ValueRange
 from mintlang.keyworddb.v3_ranges import AXIS_PARAMETERS, SETTINGS
 from mintlang.semantic.constants import constant_integer, constant_value
+from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
 from mintlang.syntax.v3_axis_lists import NUMBER_OR_VARIABLE, refused_axes
 
@@ -51,6 +52,8 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
     for statement in scope.facts.statements:
         if isinstance(statement, n.Axes):
             yield from axes_alone(scope.unit, statement)
+            if statement.selector is not None:  # AXES[axis list] (001:5967) names axes as the keywords do
+                yield from _axis_numbers(scope.unit, statement.selector.items)
     for use in scope.facts.keyword_uses:
         keyword = db.lookup_v3(use.keyword.keyword)
         yield from _axes(use, keyword)
@@ -103,16 +106,22 @@ def _axes(use: KeywordUse, keyword: V3Keyword | None) -> Iterator[Finding]:
 def _numbers(use: KeywordUse, keyword: V3Keyword, selector: n.Selector) -> Iterator[Finding]:
     """Constant axis and bit numbers a v3 controller lacks, as the run reports them: an axis past the three
     of 001:972 is "Invalid axis" (v4's 2), an input or output bit outside 0 to 7 "Out of range" (v4's 3)."""
-    for item in selector.items if keyword.addressing is Addressing.AXIS or keyword.name in _BIT_WORDS else ():
+    if keyword.addressing is Addressing.AXIS:
+        yield from _axis_numbers(use.unit, selector.items)
+    for item in selector.items if keyword.name in _BIT_WORDS else ():
         number = constant_integer(item, Dialect.V3)
-        if item is None or number is None:
-            continue
-        if keyword.addressing is Addressing.AXIS and number not in range(_MOST_AXES):
-            detail = f"Invalid axis in Mint v3: axis {number}, where a controller has axes 0 to {_MOST_AXES - 1}"
-            yield Finding(use.unit, mint_error(2, item.span, detail))
-        elif keyword.name in _BIT_WORDS and number not in _BITS:
+        if item is not None and number is not None and number not in _BITS:
             detail = f"Out of range in Mint v3: {keyword.name}.{number}, where the bits are 0 to {_BITS[-1]}"
             yield Finding(use.unit, mint_error(3, item.span, detail))
+
+
+def _axis_numbers(unit: Unit, items: tuple[n.Expression | None, ...]) -> Iterator[Finding]:
+    """Constant axis numbers past the three of 001:972: "Invalid axis" (v4's 2), as the run reports them."""
+    for item in items:
+        number = constant_integer(item, Dialect.V3)
+        if item is not None and number is not None and number not in range(_MOST_AXES):
+            detail = f"Invalid axis in Mint v3: axis {number}, where a controller has axes 0 to {_MOST_AXES - 1}"
+            yield Finding(unit, mint_error(2, item.span, detail))
 
 
 def _out_of_range(use: KeywordUse, name: str) -> Iterator[Finding]:

@@ -11,12 +11,14 @@ number, a whole number of 256ths (V3-2).
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from types import MappingProxyType
+from typing import TypeVar
 
 from mintlang.keyworddb import database, v3_ranges
-from mintlang.keyworddb.model import V3Keyword
+from mintlang.keyworddb.model import Addressing, Controller, V3Keyword
 from mintlang.runtime.dialects.v3.numbers import fixed
+from mintlang.runtime.errors import INVALID_AXIS, MintError
 from mintlang.runtime.inert import InertSettings
 from mintlang.runtime.keywords import (
     ArrayCommand,
@@ -32,6 +34,7 @@ from mintlang.runtime.keywords import (
 from mintlang.runtime.ranges import Bounds, check_range
 
 READ_ONLY_OR_COMMAND, WRITE_ONLY = 2000, 2002
+Given = TypeVar("Given")  # what a writer or a command is given besides its axes: the values, the arguments
 INERT_SETTINGS = {"ECHO": 3.0, "TERM": 3.0}  # the terminal: one merged log here (001:7504, 11989-12032)
 
 RANGES: Mapping[str, Bounds] = MappingProxyType(
@@ -41,7 +44,12 @@ RANGES: Mapping[str, Bounds] = MappingProxyType(
 
 
 class V3KeywordTable(KeywordTable):
-    """Handlers by v3 keyword name; every value read is rounded to a v3 number."""
+    """Handlers by v3 keyword name; every value read is rounded to a v3 number, and an axis keyword's list names
+    only axes the controller has."""
+
+    def __init__(self, controller: Controller, axes: int) -> None:
+        super().__init__(controller)
+        self.axes = axes
 
     def register(
         self,
@@ -55,6 +63,9 @@ class V3KeywordTable(KeywordTable):
         read = _fixed(read) if read is not None else None
         if write is not None and name in RANGES:
             write = _within(name, RANGES[name], write)
+        if _addresses_axes(name):
+            write = _on_axes(self.axes, write) if write is not None else None
+            command = _on_axes(self.axes, command) if command is not None else None
         super().register(name, read=read, write=write, command=command, array_command=array_command)
 
     def alias(self, name: str, access: KeywordAccess) -> None:
@@ -89,6 +100,25 @@ def _ticked(name: str) -> V3Keyword | None:
     """The v3 guide's entry for ``name``, where it ticks how the keyword may be used."""
     v3 = database().lookup_v3(name)
     return v3 if v3 is not None and v3.ticked else None
+
+
+def _addresses_axes(name: str) -> bool:
+    v3 = database().lookup_v3(name)
+    return v3 is not None and v3.addressing is Addressing.AXIS
+
+
+def _on_axes(axes: int, run: Callable[[Channels | None, Given], bool]) -> Callable[[Channels | None, Given], bool]:
+    """``run`` once every axis listed is one of the controller's ``axes``: one past them is "Invalid axis" before
+    anything is done, whether the keyword gives it a value or is a command (``GO[0,1,2,3]``), as ``mint check``
+    reports it; the guide names no error of its own for it (001:972-974, 13173-13182)."""
+
+    def checked(channels: Channels | None, given: Given) -> bool:
+        for channel in channels or ():
+            if not 0 <= channel < axes:
+                raise MintError(INVALID_AXIS, channel, f"axes are 0 to {axes - 1}")
+        return run(channels, given)
+
+    return checked
 
 
 def _fixed(read: Reader) -> Reader:

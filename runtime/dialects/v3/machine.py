@@ -48,7 +48,7 @@ def install(
     terminal: Terminal,
 ) -> V3Controller:
     """The v3 keyword table over the v4 handlers in ``v4``, with the v3 power-up state of the parts."""
-    table = V3KeywordTable(v4.controller)
+    table = V3KeywordTable(v4.controller, len(motion.axes))
     handlers = V4Handlers(v4)
     recovery = V3Recovery(motion, handlers)
     controller_wide = V3System(handlers, clock=clock, axes=motion.axes, io=io, events=events_, system=system, vm=vm)

@@ -50,6 +50,12 @@ const alternation = (words) =>
 
 const wordRule = (words, name) => ({ match: `(?i)\\b(?:${alternation(words)})\\b`, name });
 
+// The numbers of the numbered event handlers (000:1889-1900): #FASTIN alone or #FASTINx, #INx, and only
+// #COMMS1 .. #COMMS5; written as the guide writes them, without a leading zero (#IN01 is a plain label: a
+// number led by a zero is binary, 000:744-760).
+const NUMBER = "(?:0|[1-9][0-9]*)";
+const EVENT_NUMBERS = { "#FASTIN": `${NUMBER}?`, "#IN": NUMBER, "#COMMS": "[1-5]" };
+
 // CAMTABLE's "no table" argument (000:7958): a reserved word the database lists neither as keyword nor constant.
 const RESERVED_CONSTANTS = ["NULL"];
 
@@ -65,7 +71,9 @@ export function generateGrammar(keywords, constants) {
   const symbols = []; // abbreviations that are not words, of keywords that are not operators: ?
   for (const keyword of keywords) {
     if (keyword.kind === "event") {
-      events.push(escape(keyword.name.slice(1)) + (keyword.channel_suffix ? "[0-9]*" : ""));
+      const numbers = keyword.channel_suffix ? EVENT_NUMBERS[keyword.name] : "";
+      if (numbers === undefined) throw new Error(`keyword database: no numbers known for the event ${keyword.name}`);
+      events.push(escape(keyword.name.slice(1)) + numbers);
       continue;
     }
     for (const spelling of [keyword.name, ...keyword.abbreviations]) {

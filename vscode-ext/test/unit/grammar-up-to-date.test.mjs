@@ -34,6 +34,11 @@ test("the predefined constants of the database and NULL are constants; other nam
   assert.ok(!rule.test("_myVar2"));
 });
 
+test("the generator rejects a numbered event whose numbers it does not know", () => {
+  const unknown = [{ name: "#GADGET", abbreviations: [], kind: "event", channel_suffix: true }];
+  assert.throws(() => generateGrammar(unknown, []), /no numbers known for the event #GADGET/);
+});
+
 test("the generator rejects a keyword kind it has no colour for", () => {
   const unknown = [{ name: "FOO", abbreviations: [], kind: "gadget", channel_suffix: false }];
   assert.throws(() => generateGrammar(unknown, []), /unknown kind 'gadget'/);

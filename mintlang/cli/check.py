@@ -22,6 +22,7 @@ from mintlang.cli.files import Unchecked, cannot_read, find, program_as_own_conf
 from mintlang.cli.fixing import Fixing, Outcome, apply, fix_options, fixable_summary, fixed_summary, marked
 from mintlang.cli.options import (
     HELP_OPTIONS,
+    V3_CHECKED,
     color_option,
     controller_option,
     exclude_options,
@@ -214,8 +215,7 @@ def check(
     context = click.get_current_context()
     if dialect == Dialect.V3 and typed(context, "dialect") and typed(context, "controller"):
         raise click.UsageError(
-            f"--controller {controller} is a Mint v4 controller: Mint v3 is checked against the v3 guide's"
-            " controllers (at most three axes, 8 inputs and outputs); leave --controller out"
+            f"--controller {controller} is a Mint v4 controller: mint check --dialect v3 {V3_CHECKED}"
         )
     layer = overrides(
         context,

@@ -25,11 +25,32 @@ HELP_OPTIONS = {"help_option_names": ["-h", "--help"]}
 """The context settings of every command: ``-h`` is ``--help``."""
 
 
+V3_CHECKED = (
+    "checks against the v3 guide's controllers (at most three axes, 8 inputs and outputs); leave --controller out"
+)
+"""How ``mint check --dialect v3`` treats ``--controller``: there is none to choose."""
+
+
+class _Controllers(click.Choice):
+    """The v4 guide's controllers; one of the v3 guide's (as ``mint-run --dialect v3`` takes) is told how v3 is
+    checked, where a list of the v4 ones would send the user to one that ``--dialect v3`` refuses."""
+
+    def convert(self, value: object, param: click.Parameter | None, ctx: click.Context | None) -> object:
+        try:
+            return super().convert(value, param, ctx)
+        except click.BadParameter:
+            from mintlang.runtime.dialects.v3.controllers import PROFILES  # noqa: PLC0415 - only on this mistake
+
+            if value in PROFILES:
+                self.fail(f"{value} is a controller of the Mint v3 guide: mint check --dialect v3 {V3_CHECKED}")
+            raise
+
+
 def controller_option(help_text: str) -> Callable[[F], F]:
     """``--controller``: one of the controllers of the v4 guide, NextMove PCI by default."""
     return click.option(
         "--controller",
-        type=click.Choice([controller.value for controller in Controller]),
+        type=_Controllers([controller.value for controller in Controller]),
         default=Controller.NEXTMOVE_PCI.value,
         show_default=True,
         help=help_text,

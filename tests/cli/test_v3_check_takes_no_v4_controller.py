@@ -23,3 +23,13 @@ def test_v3_alone_and_a_controller_alone_are_checked(tmp_path: Path) -> None:
     path = write(tmp_path / "cell.mnt", "SPEED.2 = 10\n")
     assert mint_check("--dialect", "v3", path).exit_code == 0
     assert mint_check("--controller", "nextmove-bx", path).exit_code == 0
+
+
+def test_a_controller_of_the_v3_guide_is_told_how_v3_is_checked(tmp_path: Path) -> None:
+    # mint-run and mint test take --controller euroservo with --dialect v3; mint check said it is "not one of
+    # 'nextmove-pci', …", and a v4 one is refused beside --dialect v3 (above): the user went round in a circle
+    path = write(tmp_path / "cell.mnt", "SPEED.2 = 10\n")
+    result = mint_check("--dialect", "v3", "--controller", "euroservo", path)
+    assert result.exit_code == 2
+    assert "euroservo is a controller of the Mint v3 guide: mint check --dialect v3 checks" in result.output
+    assert "leave --controller out" in result.output

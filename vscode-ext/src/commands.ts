@@ -8,7 +8,7 @@ import { currentChoices, currentHost, currentSettings, listFolder } from "./host
 import { LANGUAGE_ID } from "./language";
 import { planMigration, planReplacement, type Plan } from "./migration";
 import { showError } from "./notify";
-import { configurationOf } from "./pairing";
+import { chosenConfiguration } from "./pairing";
 import { execute, type Finished } from "./process";
 import { displayCommand, fileCommand, isMissingModule, MODULES } from "./resolve";
 
@@ -21,10 +21,10 @@ async function targetDocument(uri: unknown): Promise<vscode.TextDocument | undef
   return document?.languageId === LANGUAGE_ID ? document : undefined;
 }
 
-/** Saves those of `files` open with unsaved changes: mint-run reads the program and its configuration from disk. */
-async function saveOpen(files: readonly string[]): Promise<boolean> {
+/** Saves the files open with unsaved changes that `wanted` names: mint-run reads the program and its configuration from disk. */
+async function saveOpen(wanted: (file: string) => boolean): Promise<boolean> {
   const unsaved = vscode.workspace.textDocuments.filter(
-    (document) => document.uri.scheme === "file" && document.isDirty && files.includes(document.uri.fsPath),
+    (document) => document.uri.scheme === "file" && document.isDirty && wanted(document.uri.fsPath),
   );
   return (await Promise.all(unsaved.map((document) => document.save()))).every((saved) => saved);
 }
@@ -38,13 +38,17 @@ async function runInSimulator(uri: unknown, output: vscode.OutputChannel): Promi
     return;
   }
   const settings = currentSettings();
+  const chosen = currentChoices();
   const file = document.uri.fsPath;
-  const config = configurationOf(file, listFolder, settings.configPairing);
+  const config = chosenConfiguration(file, chosen.configPairing, listFolder);
   const label = path.basename(file);
-  if (!(await saveOpen(config === undefined ? [file] : [file, config]))) {
+  // The configuration file the user's pairing names; where mint-run pairs the program itself, any one.
+  const read = (name: string) =>
+    name === file || (config === undefined ? name.toLowerCase().endsWith(".cfg") : "config" in config && name === config.config);
+  if (!(await saveOpen(read))) {
     return;
   }
-  const resolution = fileCommand(tool, file, settings, currentChoices(), currentHost(), config);
+  const resolution = fileCommand(tool, file, settings, chosen, currentHost(), config);
   if (!resolution.ok) {
     void showError(`${title}: ${resolution.message}`, output);
     return;

@@ -17,7 +17,7 @@ export function currentChoices(): Chosen {
     const found = section.inspect<string>(key);
     return found?.workspaceFolderValue ?? found?.workspaceValue ?? found?.globalValue;
   };
-  return { controller: set("controller"), dialect: set("dialect"), configPairing: currentSettings().configPairing };
+  return { controller: set("controller"), dialect: set("dialect"), configPairing: set("configPairing")?.trim() };
 }
 
 /** The names in a folder; none when it cannot be read. */

@@ -1,9 +1,9 @@
 // The debugger's launch configurations: what F5 debugs without a launch.json, and what the editor
-// adds to one it is given (the configuration file as mint.configPairing pairs it, the controller and
-// dialect the user chose). No vscode import: the unit tests run under plain node.
+// adds to one it is given (the configuration file as the user's mint.configPairing pairs it, the
+// controller and dialect the user chose). No vscode import: the unit tests run under plain node.
 import * as path from "node:path";
 
-import { configurationOf } from "./pairing";
+import { chosenConfiguration } from "./pairing";
 
 /** The debug type the extension contributes; mint-dap serves it. */
 export const DEBUG_TYPE = "mint";
@@ -28,7 +28,7 @@ export interface MintLaunch {
 export interface Chosen {
   readonly controller: string | undefined;
   readonly dialect: string | undefined;
-  readonly configPairing: string;
+  readonly configPairing: string | undefined;
 }
 
 export type Completion = { readonly ok: true; readonly launch: MintLaunch } | { readonly ok: false; readonly message: string };
@@ -40,8 +40,8 @@ export function launchFor(program: string): MintLaunch {
 
 /**
  * `given` made whole: a configuration with no program debugs `activeFile`; the controller and dialect the
- * settings choose, and the configuration file mint.configPairing pairs with the program, are added where
- * `given` says nothing of them.
+ * settings choose, and the configuration file the user's mint.configPairing pairs with the program (or
+ * `noConfig` when it pairs none), are added where `given` says nothing of them.
  */
 export function completeLaunch(
   given: Readonly<Record<string, unknown>>,
@@ -57,10 +57,7 @@ export function completeLaunch(
   const base = empty ? launchFor(program) : { ...given, type: DEBUG_TYPE, request: "launch", program };
   const launch: Record<string, unknown> = { name: `Debug ${path.basename(program)}`, ...base };
   if (launch["config"] === undefined && launch["noConfig"] !== true) {
-    const config = configurationOf(program, listFolder, chosen.configPairing);
-    if (config !== undefined) {
-      launch["config"] = config;
-    }
+    Object.assign(launch, chosenConfiguration(program, chosen.configPairing, listFolder));
   }
   if (launch["controller"] === undefined && chosen.controller !== undefined) {
     launch["controller"] = chosen.controller;

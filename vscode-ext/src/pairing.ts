@@ -88,3 +88,25 @@ export function configurationOf(
   const wanted = `${parts.prefix}${path.basename(programFile, extension)}${parts.suffix}`;
   return isProgram(wanted) ? undefined : sibling(path.dirname(programFile), wanted, listFolder);
 }
+
+/** What a tool is told of a program's configuration file: a file, or none. */
+export type ConfigurationChoice = { readonly config: string } | { readonly noConfig: true };
+
+/**
+ * What a tool run on `programFile` (mint-run, mint-dap) is told of its configuration file: the file the
+ * user's own mint.configPairing (`pairing`) pairs with it, or none when that pairs none (the setting empty,
+ * or no such file). Undefined when the user set no pairing: the tool then pairs the program itself, by the
+ * project's settings file (mint.toml's config-pairing or config) or `<name>.cfg`, as the server does; the
+ * setting's own default must not override the project.
+ */
+export function chosenConfiguration(
+  programFile: string,
+  pairing: string | undefined,
+  listFolder: (folder: string) => readonly string[],
+): ConfigurationChoice | undefined {
+  if (pairing === undefined) {
+    return undefined;
+  }
+  const config = configurationOf(programFile, listFolder, pairing);
+  return config === undefined ? { noConfig: true } : { config };
+}

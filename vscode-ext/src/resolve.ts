@@ -4,6 +4,7 @@
 import * as path from "node:path";
 
 import type { Chosen } from "./launch";
+import type { ConfigurationChoice } from "./pairing";
 import type { MintSettings } from "./settings";
 
 export type Tool = "mint-lsp" | "mint-run" | "mint-dap" | "mint";
@@ -138,28 +139,28 @@ export function resolveTool(tool: Tool, settings: ToolSettings, host: Host): Res
 export type Choices = Pick<Chosen, "controller" | "dialect">;
 
 /**
- * The arguments a command-line tool takes for one file and, when it has one, the program's
- * configuration file (`config`). The controller and dialect are passed only where the user chose them
+ * The arguments a command-line tool takes for one file, and what it is told of the program's
+ * configuration file (`config`: undefined leaves the pairing to the tool and the project). The controller and dialect are passed only where the user chose them
  * (`chosen`, as the debugger takes them): unset, the project's mint.toml decides, and a v3 project is
  * not run on the v4 default controller. `auto` is not passed: mint-run then reads the settings file, else v4.
  * A simulated run starts from the configuration file, as the server's "Run in simulator" lens does,
  * and is bounded in real time, so a program that never ends cannot hang the editor.
  */
-export function toolArguments(_tool: FileTool, file: string, chosen: Choices, config?: string): string[] {
-  const configuration = config === undefined ? [] : ["--config", config];
+export function toolArguments(_tool: FileTool, file: string, chosen: Choices, config?: ConfigurationChoice): string[] {
+  const configuration = config === undefined ? [] : "config" in config ? ["--config", config.config] : ["--no-config"];
   const controller = chosen.controller === undefined ? [] : ["--controller", chosen.controller];
   const dialect = chosen.dialect === undefined || chosen.dialect === "auto" ? [] : ["--dialect", chosen.dialect];
   return [...configuration, ...controller, ...dialect, "--max-wall-s", "30", file];
 }
 
-/** The command line that runs `tool` on `file` (with its configuration file `config`), or why there is none. */
+/** The command line that runs `tool` on `file` (told of its configuration file by `config`), or why there is none. */
 export function fileCommand(
   tool: FileTool,
   file: string,
   settings: ToolSettings,
   chosen: Choices,
   host: Host,
-  config?: string,
+  config?: ConfigurationChoice,
 ): Resolution {
   const resolution = resolveTool(tool, settings, host);
   if (!resolution.ok) {

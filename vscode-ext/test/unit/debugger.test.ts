@@ -23,7 +23,7 @@ const manifest = JSON.parse(readFileSync(path.join(EXTENSION, "package.json"), "
   contributes: { debuggers: Debugger[]; breakpoints: { language: string }[] };
 };
 
-const NONE: Chosen = { controller: undefined, dialect: undefined, configPairing: "<name>.cfg" };
+const NONE: Chosen = { controller: undefined, dialect: undefined, configPairing: undefined };
 const folder = (names: readonly string[]) => (dir: string) => (dir === "/work/robot" ? names : []);
 
 test("the extension contributes one debugger, for Mint programs, where breakpoints can be set", () => {
@@ -57,10 +57,26 @@ test("mint-dap starts from mint.pythonPath as a module", () => {
   assert.deepEqual(PYTHON_ARGUMENTS["mint-dap"], ["-m", "mintlang.runtime.debugger"]);
 });
 
-test("F5 with no launch.json debugs the program in the editor, stopped on entry, with its paired configuration file", () => {
-  const completion = completeLaunch({}, "/work/robot/conveyor.mnt", NONE, folder(["conveyor.mnt", "CONVEYOR.CFG"]));
+test("F5 with no launch.json debugs the program in the editor, stopped on entry, with the configuration file the user's pairing names", () => {
+  const files = folder(["conveyor.mnt", "CONVEYOR.CFG"]);
+  const chosen = (configPairing: string): Chosen => ({ ...NONE, configPairing });
+  const launch = (configPairing: string) => {
+    const completion = completeLaunch({}, "/work/robot/conveyor.mnt", chosen(configPairing), files);
+    assert.ok(completion.ok);
+    return completion.launch;
+  };
+  assert.deepEqual(launch("<name>.cfg"), { ...launchFor("/work/robot/conveyor.mnt"), config: "/work/robot/CONVEYOR.CFG" });
+  // Empty: programs have no configuration file; a pairing that names no file pairs none either.
+  assert.deepEqual(launch(""), { ...launchFor("/work/robot/conveyor.mnt"), noConfig: true });
+  assert.deepEqual(launch("setup_<name>.cfg"), { ...launchFor("/work/robot/conveyor.mnt"), noConfig: true });
+});
+
+test("with no mint.configPairing set, mint-dap pairs the program as the project's mint.toml says, not by the setting's default", () => {
+  const completion = completeLaunch({}, "/work/robot/conveyor.mnt", NONE, folder(["conveyor.mnt", "conveyor.cfg"]));
   assert.ok(completion.ok);
-  assert.deepEqual(completion.launch, { ...launchFor("/work/robot/conveyor.mnt"), config: "/work/robot/CONVEYOR.CFG" });
+  assert.deepEqual(completion.launch, launchFor("/work/robot/conveyor.mnt"));
+  const launch = readFileSync(path.join(CHECKOUT, "runtime", "debugger", "launch.py"), "utf8");
+  assert.match(launch, /settings\.partner\(program\)/, "mint-dap pairs an unpaired program by its settings");
 });
 
 test("a launch.json entry keeps what it says and gains only the settings the user chose", () => {

@@ -1,10 +1,11 @@
 import assert from "node:assert/strict";
 import { spawnSync } from "node:child_process";
-import { existsSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
+import { existsSync, mkdtempSync, readdirSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import * as path from "node:path";
 import { test } from "node:test";
 
+import { chosenConfiguration } from "../../src/pairing";
 import {
   displayCommand,
   fileCommand,
@@ -152,8 +153,8 @@ test("a run leaves what the user did not set, and auto, to the project's mint.to
   ]);
 });
 
-test("a run gets the program's configuration file before the program", () => {
-  assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", { controller: "mintdrive", dialect: undefined }, "/p/a.cfg"), [
+test("a run gets the program's configuration file before the program, or is told it has none", () => {
+  assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", { controller: "mintdrive", dialect: undefined }, { config: "/p/a.cfg" }), [
     "--config",
     "/p/a.cfg",
     "--controller",
@@ -163,11 +164,12 @@ test("a run gets the program's configuration file before the program", () => {
     "/p/a.mnt",
   ]);
   const host = posix(["/usr/bin/mint-run"]);
-  assert.deepEqual(commandOf(fileCommand("mint-run", "/p/a.mnt", NONE, UNSET, host, "/p/a.cfg")).slice(0, 3), [
+  assert.deepEqual(commandOf(fileCommand("mint-run", "/p/a.mnt", NONE, UNSET, host, { config: "/p/a.cfg" })).slice(0, 3), [
     "/usr/bin/mint-run",
     "--config",
     "/p/a.cfg",
   ]);
+  assert.deepEqual(toolArguments("mint-run", "/p/a.mnt", UNSET, { noConfig: true }), ["--no-config", "--max-wall-s", "30", "/p/a.mnt"]);
 });
 
 // The Python of the mintlang checkout this extension lives in, when it has been set up.
@@ -194,6 +196,34 @@ test(
     rmSync(project, { recursive: true });
     assert.equal(run.status, 0, run.stderr);
     assert.match(run.stdout, /ready/);
+  },
+);
+
+test(
+  "Run in simulator pairs the program as the project's mint.toml does when the user set no mint.configPairing, and as the user's setting does otherwise",
+  { skip: !existsSync(CHECKOUT_PYTHON) && "no ../.venv" },
+  () => {
+    const project = mkdtempSync(path.join(tmpdir(), "mint-pairing-"));
+    writeFileSync(path.join(project, "mint.toml"), 'config-pairing = "setup_<name>.cfg"\n');
+    writeFileSync(path.join(project, "a.mnt"), 'PRINT "program"\n');
+    writeFileSync(path.join(project, "a.cfg"), 'PRINT "a.cfg"\n');
+    writeFileSync(path.join(project, "setup_a.cfg"), 'PRINT "setup_a.cfg"\n');
+    const program = path.join(project, "a.mnt");
+    const run = (pairing: string | undefined) => {
+      const config = chosenConfiguration(program, pairing, readdirSync);
+      const args = [...PYTHON_ARGUMENTS["mint-run"], ...toolArguments("mint-run", program, UNSET, config)];
+      const ran = spawnSync(CHECKOUT_PYTHON, args, { cwd: project, encoding: "utf8", timeout: 60_000 });
+      assert.equal(ran.status, 0, ran.stderr);
+      return ran.stdout.split("\n").slice(0, 2);
+    };
+    try {
+      assert.deepEqual(run(undefined), ["setup_a.cfg", "program"]);
+      assert.deepEqual(run("<name>.cfg"), ["a.cfg", "program"]);
+      assert.deepEqual(run(""), ["program", ""]);
+      assert.deepEqual(run("<name>.ini"), ["program", ""]);
+    } finally {
+      rmSync(project, { recursive: true });
+    }
   },
 );
 

@@ -237,25 +237,28 @@ def _read_leniently(analysis: mintlang.Analysis) -> tuple[str, ...]:
     The controller knows only plain quotes, but text copied from the guide (or a word processor) carries
     curly ones where plain ones were meant (W101): the simulator runs the program as ``mint check --fix``
     would write it. A line longer than the controller takes (W111) keeps the program from downloading
-    (000:18454-18456); the simulator runs it as written. Either way it says so, so that neither tool passes
-    such a program in silence (BEHAVIOUR.md)."""
+    (000:18454-18456), or a Mint v3 one from compiling (001:12999-13001); the simulator runs it as written.
+    Either way it says so, so that neither tool passes such a program in silence (BEHAVIOUR.md)."""
     notes: list[str] = []
     for unit, document in analysis.model.documents():
         diagnostics = analysis.configuration if unit is Unit.CONFIGURATION else analysis.program
         found = {(document.line_index.position(d.span.start).line, d.code): d.message for d in diagnostics}
         for (line, code), message in sorted(found.items()):
-            if (note := _lenient_note(code, message)) is not None:
+            if (note := _lenient_note(code, message, analysis.model.program.dialect)) is not None:
                 notes.append(f"{unit.value} line {line}: {note}")
     return tuple(notes)
 
 
-def _lenient_note(code: str, message: str) -> str | None:
-    """The note for a diagnostic of ``code`` the controller would refuse and the simulator runs past; else None."""
+def _lenient_note(code: str, message: str, dialect: Dialect) -> str | None:
+    """The note for a diagnostic of ``code`` the controller of ``dialect`` would refuse and the simulator runs
+    past; else None."""
     if code == "W101":
         return (
             "typographic quotes read as plain ones; the controller accepts only plain quotes (mint check --fix"
             " writes them)"
         )
+    if code == "W111" and dialect is Dialect.V3:
+        return f'{message}, and would stop compiling with "Line too long" (001:12999-13001); run here as written'
     if code == "W111":
         return f"{message}, and would not download the program (000:18454-18456); run here as written"
     return None

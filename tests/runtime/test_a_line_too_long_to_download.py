@@ -7,6 +7,7 @@ the line as written and notes it on stderr and in the JSON report, as it notes w
 
 from __future__ import annotations
 
+from mintlang.runtime.run import run_source
 from tests.runtime.running import simulate
 
 # "a = 1" (5 characters), 250 blanks and ": PRINT a" (9): 264 characters
@@ -24,3 +25,14 @@ def test_the_line_runs_and_is_noted_with_its_length() -> None:
 
 def test_a_line_of_255_characters_is_not_noted() -> None:
     assert simulate(f"DIM a\na = 1{' ' * 241}: PRINT a\n").read_leniently == ()  # 5 + 241 + 9 = 255
+
+
+def test_a_mint_v3_line_past_127_characters_is_noted_as_the_v3_guide_says() -> None:
+    # Mint v3 takes 127 characters and stops compiling a longer line with "Line too long" (001:12999-13001):
+    # the v4 guide's download of 255 characters is not what a v3 controller does
+    result = run_source(f"a = 1{' ' * 120}: PRINT a\n", dialect="v3")  # 5 + 120 + 9 = 134
+    assert result.terminal == "1\n"
+    assert result.read_leniently == (
+        "program line 1: line has 134 characters; the controller accepts 127, and would stop compiling with"
+        ' "Line too long" (001:12999-13001); run here as written',
+    )

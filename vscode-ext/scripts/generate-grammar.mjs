@@ -116,8 +116,9 @@ export function generateGrammar(keywords, constants) {
       captures: { 1: { name: "keyword.control.mint-motion" } },
     },
     {
-      // The word after GOSUB and GOTO names a label, even when it spells a keyword (GOSUB home).
-      match: "(?i)\\b(GOSUB|GOTO)[ \\t]+([A-Za-z_][A-Za-z0-9_]*)",
+      // The word after GOSUB and GOTO names a label, even when it spells a keyword (GOSUB home), and so does
+      // a whole number: a label is any run of letters and digits (#10, GOSUB 10; 000:1843-1844).
+      match: "(?i)\\b(GOSUB|GOTO)[ \\t]+([A-Za-z_][A-Za-z0-9_]*|[0-9]+\\b(?!\\.))",
       captures: {
         1: { name: "keyword.control.mint-motion" },
         2: { name: "entity.name.function.label.mint-motion" },

@@ -141,5 +141,9 @@ test("the commands are titled 'Mint: …' and offered only where they apply", ()
 });
 
 test("the extension activates for Mint files, for workspaces that hold them, and to start its debugger", () => {
-  assert.deepEqual(manifest.activationEvents, ["onLanguage:mint-motion", "workspaceContains:**/*.mnt", "onDebugResolve:mint"]);
+  // workspaceContains globs are case-sensitive off Windows: a folder of DOS-era CONVEYOR.MNT programs
+  // must start the extension (its Testing view) too, as the Testing view's watcher already sees them.
+  assert.deepEqual(manifest.activationEvents, ["onLanguage:mint-motion", "workspaceContains:**/*.{mnt,MNT}", "onDebugResolve:mint"]);
+  const controller = readFileSync(path.join(EXTENSION, "src", "testing", "controller.ts"), "utf8");
+  assert.match(controller, /createFileSystemWatcher\("\*\*\/\*\.\{mnt,MNT,toml\}"\)/);
 });

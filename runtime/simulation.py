@@ -168,9 +168,9 @@ class Simulator:
 
     def _deadlock(self, t: int) -> str:
         """Why nothing can wake the program, with the likeliest cause: what it waits on when that is keys (an
-        INPUT) or inputs and variables (a PAUSE asleep), else moves waiting on masters nothing moves, or a full
-        move buffer. A move stalled on its master is named only when the program may be waiting on it: a PAUSE
-        on an input waits on the input, whatever a follower does."""
+        INPUT) or inputs and variables (a PAUSE asleep), else moves waiting on masters nothing moves, a full
+        move buffer, or a jog nothing will stop. A move stalled on its master is named only when the program
+        may be waiting on it: a PAUSE on an input waits on the input, whatever a follower does."""
         message = "blocked, and nothing scheduled or moving can ever wake the program"
         site = self.c.vm.current_site()
         keys = KEYS_NONE_TYPES
@@ -193,6 +193,15 @@ class Simulator:
             if axis.move is None and axis.buffer and axis.buffer_free() <= 0:
                 size = int(axis.parameters["MOVEBUFFERSIZE"])
                 return f"{message}: the move buffer of axis {axis.number} is full ({size} moves) and no GO started them"
+        jogging = [
+            axis.number for axis in self.c.axes if axis.move is not None and axis.move.jog and axis.move.end == NEVER
+        ]
+        if jogging:  # a jog has no end of its own (000:12671-12673): "nothing moving" would mislead
+            axes = " and ".join(f"axis {number}" for number in jogging)
+            verb = "jogs" if len(jogging) == 1 else "jog"
+            return (
+                f"blocked: {axes} {verb} until JOG = 0, STOP or an error stops it, and nothing left to run can give one"
+            )
         return message
 
     def _pace(self, t: int, following: int, started: float) -> bool:

@@ -48,6 +48,20 @@ def test_the_check_finds_what_the_run_stops_on(line: str, code: str, where: str)
     assert result.terminal == "ERROR: Program: Missing parameter at line 1\n"
 
 
+@pytest.mark.parametrize(
+    ("line", "detail"),
+    [
+        pytest.param("GAIN[1] = 10,20", "2 values for 1 axis", id="001:13104"),
+        pytest.param("OUT = 2, 0", "2 values; OUT takes one", id="001:10519"),
+    ],
+)
+def test_the_check_names_the_message_the_v3_controller_prints(line: str, detail: str) -> None:
+    # numbered as v4's 2017, "Too many parameters" (000:19047), which the v3 guide calls "Missing parameter"
+    # (001:13097-13104): the message names v3's, as "Invalid axis in Mint v3" does beside v4's error 2
+    (finding,) = mintlang.check(f"{line}\n", dialect="v3")
+    assert finding.message == f"Too many parameters: Missing parameter in Mint v3: {detail}"
+
+
 def test_nothing_is_written_before_the_error() -> None:
     # the line fails as a whole, as GAIN[1] = 10,20 does: output 1 stays off, where OUT.1 = 1 sets it (001:4358)
     outputs = [run_source(line, dialect="v3").outputs for line in ("OUT.1 = 1, 0\n", "OUT.1 = 1\n")]

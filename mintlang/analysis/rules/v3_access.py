@@ -21,6 +21,7 @@ scale factor brings it in (``SPEED = -5``, ``ACCEL = 0``), SCALE being at least 
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import replace
 
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.rules.addressing import (
@@ -45,9 +46,21 @@ from mintlang.syntax.v3_axis_lists import NUMBER_OR_VARIABLE, refused_axes
 _MOST_AXES = 3  # "MINT's multi-axis syntax supports up to 3 axes on one controller" (001:972)
 _BITS = range(8)  # IN.a and OUT.a: "Out of Range" outside 0 to 7 (001:8965, 10592)
 _BIT_WORDS = frozenset({"IN", "OUT"})
+_TOO_MANY_VALUES = 2017  # v3's "Missing parameter" for a value no axis takes (001:13097-13104)
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
+    for finding in _findings(scope):
+        diagnostic = finding.diagnostic
+        if diagnostic.mint_error != _TOO_MANY_VALUES:
+            yield finding
+            continue
+        title, _, detail = diagnostic.message.partition(": ")  # v4's title, then the message v3 prints
+        message = f"{title}: Missing parameter in Mint v3: {detail}"
+        yield replace(finding, diagnostic=replace(diagnostic, message=message))
+
+
+def _findings(scope: LineScope) -> Iterator[Finding]:
     db = database()
     for statement in scope.facts.statements:
         if isinstance(statement, n.Axes):

@@ -89,8 +89,11 @@ class Edit:
 
 
 def with_edits(text: str, edits: Sequence[Edit]) -> str:
-    """``text`` with ``edits``, which do not overlap, made; two insertions at one place in their order."""
-    for _, edit in sorted(enumerate(edits), key=lambda pair: (pair[1].span.start, pair[0]), reverse=True):
+    """``text`` with ``edits``, which do not overlap, made; two insertions at one place in their order, an
+    insertion before the text an edit replaces from the same place."""
+    for _, edit in sorted(
+        enumerate(edits), key=lambda pair: (pair[1].span.start, pair[1].span.end, pair[0]), reverse=True
+    ):
         text = text[: edit.span.start] + edit.text + text[edit.span.end :]  # the last first: offsets hold
     return text
 

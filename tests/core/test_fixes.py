@@ -7,7 +7,7 @@ from collections import Counter
 import pytest
 
 from mintlang import check, check_application
-from mintlang.diagnostics import Diagnostic, Edit, Fix, Severity, Span
+from mintlang.diagnostics import Diagnostic, Edit, Fix, Severity, Span, with_edits
 from mintlang.fixes import MAX_ROUNDS, apply_once, automatic_fix, fix_text
 from tests.corpus_files import CorpusCase, cases
 
@@ -61,6 +61,15 @@ def test_different_insertions_at_one_place_are_made_in_the_order_of_their_findin
         finding(8, 9, replacing(0, 0, "DIM b\n", safe=True)),
     )
     assert apply_once("PRINT a, b\n", [second, first], unsafe=False)[0] == "DIM a\nDIM b\nPRINT a, b\n"
+
+
+def test_an_insertion_goes_before_a_replacement_that_starts_at_its_place() -> None:
+    """A DIM above the first statement and that statement's own fix, in one round: the DIM is inserted before
+    the replaced text, which is replaced whole (#FASTPOS, Mint v3's, is v4's #FASTIN; 'a' is declared)."""
+    insertion, replacement = Edit(Span(0, 0), "DIM a\n"), Edit(Span(0, 8), "#FASTIN")
+    assert with_edits("#FASTPOS\na = 1\n", [replacement, insertion]) == "DIM a\n#FASTIN\na = 1\n"
+    assert with_edits("#FASTPOS\na = 1\n", [insertion, replacement]) == "DIM a\n#FASTIN\na = 1\n"
+    assert fix_text("#FASTPOS\na = 1\n", check, unsafe=True).text == "DIM a\n#FASTIN\na = 1\n"
 
 
 def test_a_fix_that_leaves_its_finding_is_undone() -> None:

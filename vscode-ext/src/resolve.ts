@@ -140,9 +140,10 @@ export type Choices = Pick<Chosen, "controller" | "dialect">;
 
 /**
  * The arguments a command-line tool takes for one file, and what it is told of the program's
- * configuration file (`config`: undefined leaves the pairing to the tool and the project). The controller and dialect are passed only where the user chose them
- * (`chosen`, as the debugger takes them): unset, the project's mint.toml decides, and a v3 project is
- * not run on the v4 default controller. `auto` is not passed: mint-run then reads the settings file, else v4.
+ * configuration file (`config`: undefined leaves the pairing to the tool and the project). The
+ * controller and dialect are passed only where the user chose them (`chosen`, as the debugger takes
+ * them): unset, the project's mint.toml decides, and a v3 project is not run on the v4 default
+ * controller. `auto` is not passed: mint-run then reads the settings file, else v4.
  * A simulated run starts from the configuration file, as the server's "Run in simulator" lens does,
  * and is bounded in real time, so a program that never ends cannot hang the editor.
  */

@@ -57,7 +57,7 @@ test("mint-dap starts from mint.pythonPath as a module", () => {
   assert.deepEqual(PYTHON_ARGUMENTS["mint-dap"], ["-m", "mintlang.runtime.debugger"]);
 });
 
-test("F5 with no launch.json debugs the program in the editor, stopped on entry, with the configuration file the user's pairing names", () => {
+test("F5 with no launch.json debugs the program in the editor, stopped on entry, with the file the user's pairing names", () => {
   const files = folder(["conveyor.mnt", "CONVEYOR.CFG"]);
   const chosen = (configPairing: string): Chosen => ({ ...NONE, configPairing });
   const launch = (configPairing: string) => {

@@ -200,7 +200,7 @@ test(
 );
 
 test(
-  "Run in simulator pairs the program as the project's mint.toml does when the user set no mint.configPairing, and as the user's setting does otherwise",
+  "Run in simulator pairs the program as the project's mint.toml does, unless the user set mint.configPairing",
   { skip: !existsSync(CHECKOUT_PYTHON) && "no ../.venv" },
   () => {
     const project = mkdtempSync(path.join(tmpdir(), "mint-pairing-"));

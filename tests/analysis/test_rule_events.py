@@ -3,6 +3,7 @@ program gets, as (code, severity, line); line numbers in comments refer to the M
 
 from __future__ import annotations
 
+import mintlang
 from tests.analysis.checking import ERROR, WARNING, found
 
 
@@ -15,6 +16,13 @@ def test_an_input_handler_for_an_input_the_controller_lacks_is_a_warning() -> No
     # NextMove BX has digital inputs 0 to 15 (line 5613)
     assert found("END\n#IN20\nRETURN\n", controller="nextmove-bx") == [("W109", WARNING, 2)]
     assert found("END\n#IN15\nRETURN\n", controller="nextmove-bx") == []
+
+
+def test_a_mint_v3_input_handler_past_input_7_is_a_warning() -> None:
+    # Mint v3 has an interrupt routine for each of the 8 user inputs, #IN0 to #IN7 (001:2523-2527): #IN8 is a
+    # plain label nothing calls, on any controller of the v3 guide (mint-run --dialect v3 never calls it)
+    v3 = [(d.code, d.message) for d in mintlang.check("END\n#IN8\nRETURN\n#in7\nRETURN\n", dialect="v3")]
+    assert v3 == [("W109", "#IN8: Mint v3 calls #IN0 to #IN7 only, one for each user input, so this is never called")]
 
 
 def test_only_comms_locations_one_to_five_raise_an_event() -> None:

@@ -1,6 +1,6 @@
 """Event handlers: #FASTIN with #FASTINx (error 3006), handlers the controller lacks, two for one event.
 
-A controller calls #INx only for its own digital inputs, #FASTINx only for
+A controller calls #INx only for its own digital inputs (Mint v3's for its 8 user inputs), #FASTINx only for
 its fast latch inputs, #CAN1/#CAN2 and #COMMS1 .. #COMMS5 only; any other
 such label is an ordinary subroutine that nothing calls (3.8.1, 10.3).
 In MintMT an ``Event`` block handles an event as such a label does, so both are checked alike (and
@@ -25,6 +25,8 @@ from mintlang.syntax import nodes as n
 
 _COMMS = range(1, 6)
 _CAN = range(1, 3)
+_V3_INPUTS = range(8)  # Mint v3: #IN0 .. #IN7, one for each of the 8 user inputs (001:2523-2527)
+_NOT_V3_INPUT = "Mint v3 calls #IN0 to #IN7 only, one for each user input, so this is never called"
 
 
 @record
@@ -55,7 +57,7 @@ def check(facts: Facts) -> Iterator[Finding]:
             later = max(fast, key=lambda handler: handler.span.start)
             yield Finding(unit, mint_error(3006, later.span, "#FASTIN and #FASTINx handlers cannot both be defined"))
     for handler in handlers:
-        problem = _unavailable(handler.event, model.controller)
+        problem = _unavailable(handler.event, model.controller, dialect)
         if problem is not None:
             yield Finding(handler.unit, own("W109", handler.span, f"{handler.written}: {problem}"))
     first_block: dict[tuple[Unit, Event], int] = {}
@@ -81,8 +83,10 @@ def _event_blocks(facts: Facts) -> list[_Handler]:
     return found
 
 
-def _unavailable(event: Event, controller: ControllerProfile) -> str | None:
+def _unavailable(event: Event, controller: ControllerProfile, dialect: Dialect) -> str | None:
     number = event.number
+    if event.kind is EventKind.IN and dialect is Dialect.V3:
+        return None if number in _V3_INPUTS else _NOT_V3_INPUT
     if event.kind is EventKind.IN and number not in controller.digital_inputs:
         return f"{controller.title} has digital inputs {controller.digital_inputs}, so this handler is never called"
     if event.kind is EventKind.FASTIN and number is not None and number not in controller.fast_inputs:

@@ -46,6 +46,10 @@ def one_slip_apart(word: str, other: str) -> bool:
 # a subroutine is called with GOSUB).
 OTHER_BASICS = {"WEND": "ENDW", "ENDWHILE": "ENDW", "CALL": "GOSUB"}
 
+# Move types the guide's See-also lists and AXISMODE table name as if they were keywords, with the keyword that
+# starts the move (000:6209, 7157; HTA 000:11676).
+MOVE_TYPES = {"HOLDTOANALOG": "HTA"}
+
 _WAIT = "a wait of a time is WAIT = milliseconds"  # WAIT = <expression> (000:17324, 17343)
 
 # An IF block has one ELSE, alone on its line, and an IF nested in it has its own ENDIF (000:1589-1600, 1633-1654):
@@ -107,10 +111,14 @@ def keyword_like(
 ) -> str | None:
     """The keyword of ``controller`` (any, when None) in ``dialect`` that ``word`` (upper case) is most likely a
     misspelling of; with ``values``, a keyword that holds a value, for a word used as a variable; with ``axes``,
-    one that takes the axes or channel the word is given; ``alone``, one that can be a statement by itself."""
+    one that takes the axes or channel the word is given; ``alone``, one that can be a statement by itself. A move
+    type the guide names as a keyword is the keyword that starts the move, on a controller that has it."""
     if word in OTHER_BASICS_WRITTEN:
         return None
     known = _keywords_of(controller, values=values, dialect=dialect, axes=axes, alone=alone)
+    started_by = MOVE_TYPES.get(word)
+    if started_by in _keywords_of(controller, values=False, dialect=dialect):  # a controller with the move
+        return started_by
     return OTHER_BASICS.get(word) or closest(word, known)
 
 

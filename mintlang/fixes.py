@@ -13,6 +13,9 @@ all, rather than once a round. So is a round after which the text has more
 syntax errors than before, as ruff reverts a fix that introduces one: it is tried
 again without the fixes that add one on their own (all of the round's when only
 together they do), so a guess never leaves the program unreadable to the compiler.
+Once the text has moved on without them, the fixes set aside are tried again: what
+was left may have been another finding like it that the round's other fixes
+revealed (END SUB made RETURN makes the line after it unreachable).
 """
 
 from __future__ import annotations
@@ -85,8 +88,12 @@ def fix_text(text: str, check: Callable[[str], Sequence[Diagnostic]], *, unsafe:
     diagnostics = check(text)
     fixed: list[Diagnostic] = []
     failed: set[_Key] = set()
+    failed_on = text  # the text the fixes in ``failed`` were set aside on
     for _ in range(MAX_ROUNDS):
         changed, applied = apply_once(text, diagnostics, unsafe=unsafe, failed=failed)
+        if not applied and failed and failed_on != text:  # the text has moved on: they may fix what is left now
+            failed = set()
+            changed, applied = apply_once(text, diagnostics, unsafe=unsafe)
         if not applied:
             return Fixed(text, tuple(fixed), tuple(diagnostics), converged=True)
         found = check(changed)
@@ -95,6 +102,7 @@ def fix_text(text: str, check: Callable[[str], Sequence[Diagnostic]], *, unsafe:
             still_there = _breaking(text, applied, check, _syntax_errors(diagnostics))
         if still_there:
             failed |= still_there  # undo the round; try it again without them
+            failed_on = text
             continue
         text, diagnostics = changed, found
         fixed.extend(applied)

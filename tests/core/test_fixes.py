@@ -5,11 +5,14 @@ from __future__ import annotations
 from collections import Counter
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from mintlang import check, check_application
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Severity, Span, with_edits
 from mintlang.fixes import MAX_ROUNDS, apply_once, automatic_fix, fix_text
 from tests.corpus_files import CorpusCase, cases
+from tests.fuzzing import examples
 
 
 def finding(start: int, end: int, *fixes: Fix) -> Diagnostic:
@@ -80,6 +83,16 @@ def test_a_fix_that_leaves_its_finding_is_undone() -> None:
 
     result = fix_text("a = 1\n", unmoved, unsafe=False)
     assert (result.text, result.fixed, result.converged) == ("a = 1\n", (), True)
+
+
+def test_a_fix_set_aside_is_tried_again_once_the_text_has_moved_on() -> None:
+    """END SUB becomes RETURN (000:1841-1850) in the round that removes the line END leaves unreachable; the
+    line after the new RETURN is then unreachable too, a finding like the one fixed, and the removal was set
+    aside for good: a second --fix removed both lines. It is tried again after the round without it."""
+    source = "GOSUB s\nEND\nPRINT 1\n#s\nEND SUB\nPRINT 2\n"
+    once = fix_text(source, check, unsafe=True)
+    assert (once.text, once.converged) == ("GOSUB s\nEND\n#s\nRETURN\n", True)
+    assert fix_text(once.text, check, unsafe=True).text == once.text
 
 
 def test_fixing_goes_on_until_the_text_has_nothing_more_to_fix() -> None:
@@ -153,3 +166,20 @@ def test_on_the_corpus_fixing_twice_is_fixing_once_and_safe_fixes_add_no_error(u
             before = Counter(d.code for d in findings(case.source) if d.severity is Severity.ERROR)
             after = Counter(d.code for d in once.remaining if d.severity is Severity.ERROR)
             assert after <= before, case.name
+
+
+# Lines a newcomer writes, each offered a fix or making another's: other BASICs' habits, v3 words, typos.
+WRITTEN = [
+    "a = 1", "PRINT a", "GOSUB init", "GOTO done", "END", "PRINT “x”", "IF a THEN", "ENDIF", "#init", "RETURN",
+    "PRINT 1 : REM mint: ignore[W103]", "PAUSE idl[0]", "count++", "// note", "LET b = 2", "PRINT POS[1]", "ELSE",
+    "loop", "endl", "prnt a", "DIM a", "b += 2", "PRINT a ^ 2", "CALL init", "END SUB", "DELAY 10", "#FASTPOS",
+    "HMSPEED = 2", "WHILE a", "ENDW", "PRINT \"a\" + b", "a = a + 1 // more", "",
+]  # fmt: skip
+
+
+@settings(max_examples=examples(150))
+@given(st.lists(st.sampled_from(WRITTEN), min_size=1, max_size=10), st.booleans())
+def test_fixing_twice_is_fixing_once(lines: list[str], unsafe: bool) -> None:
+    once = fix_text("\n".join(lines) + "\n", check, unsafe=unsafe)
+    assert once.converged
+    assert fix_text(once.text, check, unsafe=unsafe).text == once.text

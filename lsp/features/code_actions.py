@@ -3,8 +3,9 @@
 Quick fixes come from the ``fixes`` of the core's diagnostics (declare with
 DIM, replace a v3 keyword, plain quotes, dot syntax), and each diagnostic can
 be silenced on its line ("Ignore W103 on this line": a ``REM mint: ignore``
-comment added or extended). "Replace v3 keywords" and "Migrate this file to
-Mint v4" are ``migration``'s, resolved when picked.
+comment added or extended). "Fix all" is ``fix_all``'s: the safe fixes, as
+``mint check --fix`` makes them. "Replace v3 keywords" and "Migrate this file
+to Mint v4" are ``migration``'s, resolved when picked.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ from lsprotocol import types
 
 import mintlang
 from mintlang.analysis.suppression import UNUSED_SUPPRESSION, suppression_fix
-from mintlang.lsp.features import abbreviations, migration
+from mintlang.lsp.features import abbreviations, fix_all, migration
 from mintlang.lsp.features.diagnostics import to_lsp
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
@@ -80,7 +81,7 @@ def register(server: MintServer) -> None:
     @server.feature(
         types.TEXT_DOCUMENT_CODE_ACTION,
         types.CodeActionOptions(
-            code_action_kinds=[types.CodeActionKind.QuickFix, abbreviations.KIND, *migration.KINDS],
+            code_action_kinds=[types.CodeActionKind.QuickFix, abbreviations.KIND, fix_all.KIND, *migration.KINDS],
             resolve_provider=True,
         ),
     )
@@ -96,6 +97,8 @@ def register(server: MintServer) -> None:
         )
         if _wanted(abbreviations.KIND, only):
             found.extend(abbreviations.actions(snapshot, params.range))
+        if _wanted(fix_all.KIND, only):
+            found.extend(fix_all.actions(snapshot))
         found.extend(migration.actions(server, snapshot, [kind for kind in migration.KINDS if _wanted(kind, only)]))
         return found
 

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import pytest
 
+from mintlang.dialect import Dialect
+from mintlang.formatting import INDENT_WIDTH, format_text
 from mintlang.ruledocs import FixSafety, RuleDoc, rules
 from mintlang.ruledocs.render import sections
 
@@ -32,6 +34,15 @@ def test_the_example_before_reports_the_code(rule: RuleDoc) -> None:
 def test_the_example_after_is_clean_of_the_code(rule: RuleDoc) -> None:
     example = rule.example
     assert example.diagnostics(example.after, (rule.code,)) == ()
+
+
+@RULES
+def test_the_example_after_is_written_in_the_house_style(rule: RuleDoc) -> None:
+    """What a reader copies passes ``mint format --check``: a subroutine's body at the margin under its label, as
+    in the manual's examples (000:1855-1866), and no blanks at a line's end."""
+    example = rule.example
+    configuration = example.with_program is not None
+    assert format_text(example.after, " " * INDENT_WIDTH, Dialect.V4, configuration=configuration) == example.after
 
 
 @RULES

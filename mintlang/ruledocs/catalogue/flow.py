@@ -120,8 +120,8 @@ GROUP = Group(
             why="The first subroutine silently runs the second one's code too, and that RETURN then ends "
             "both: rarely what the author meant.",
             example=Example(
-                before="GOSUB first\nGOSUB second\nEND\n#first\n  PRINT 1\n#second\n  PRINT 2\nRETURN\n",
-                after="GOSUB first\nGOSUB second\nEND\n#first\n  PRINT 1\nRETURN\n#second\n  PRINT 2\nRETURN\n",
+                before="GOSUB first\nGOSUB second\nEND\n#first\nPRINT 1\n#second\nPRINT 2\nRETURN\n",
+                after="GOSUB first\nGOSUB second\nEND\n#first\nPRINT 1\nRETURN\n#second\nPRINT 2\nRETURN\n",
             ),
             manual=("v4:1841",),
             fix="A RETURN may be missing, or the fall-through may be meant.",
@@ -149,8 +149,8 @@ GROUP = Group(
             "every call, and the controller stops with a stack overflow (2015) at its limit of 100 levels "
             "(50 on NextMove PC). A warning, since the call may be conditional.",
             example=Example(
-                before="DIM n = 5\nGOSUB count\nEND\n#count\n  n = n - 1\n  IF n > 0 THEN GOSUB count\nRETURN\n",
-                after="DIM n = 5\nGOSUB count\nEND\n#count\n  WHILE n > 0\n    n = n - 1\n  ENDW\nRETURN\n",
+                before="DIM n = 5\nGOSUB count\nEND\n#count\nn = n - 1\nIF n > 0 THEN GOSUB count\nRETURN\n",
+                after="DIM n = 5\nGOSUB count\nEND\n#count\nWHILE n > 0\n  n = n - 1\nENDW\nRETURN\n",
             ),
             manual=("v4:1904", "v4:11134"),
             fix="Turning a recursion into a loop is a rewrite.",

@@ -14,7 +14,7 @@ def _numbered(template: str, count: int) -> str:
 
 def _chain(depth: int) -> str:
     """A main program calling a chain of ``depth`` subroutines, each calling the next."""
-    return "GOSUB s1\nEND\n" + _numbered("#s{n}\n  GOSUB s{next}\nRETURN\n", depth - 1) + f"#s{depth}\nRETURN\n"
+    return "GOSUB s1\nEND\n" + _numbered("#s{n}\nGOSUB s{next}\nRETURN\n", depth - 1) + f"#s{depth}\nRETURN\n"
 
 
 GROUP = Group(
@@ -87,7 +87,7 @@ GROUP = Group(
             "controller's compiler stops on it with 'Line too long'.",
             example=Example(
                 before="REM " + "calibration notes " * 14 + "\nPRINT 1\n",
-                after="REM " + "calibration notes " * 7 + "\nREM " + "calibration notes " * 7 + "\nPRINT 1\n",
+                after="REM" + " calibration notes" * 7 + "\nREM" + " calibration notes" * 7 + "\nPRINT 1\n",
             ),
             manual=("v4:18455", "v4:255", "v3:5144", "v3:12999"),
             fix="Split the statement at a colon, or shorten names or comments.",

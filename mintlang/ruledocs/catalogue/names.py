@@ -40,8 +40,8 @@ GROUP = Group(
             "that file only: a GOSUB in the program does not reach a subroutine of the configuration file, "
             "and the message then says where the label is.",
             example=Example(
-                before="GOSUB homing\nEND\n#home\n  HOME.0 = 1\nRETURN\n",
-                after="GOSUB homing\nEND\n#homing\n  HOME.0 = 1\nRETURN\n",
+                before="GOSUB homing\nEND\n#home\nHOME.0 = 1\nRETURN\n",
+                after="GOSUB homing\nEND\n#homing\nHOME.0 = 1\nRETURN\n",
             ),
             manual=("v4:19099", "v4:1841", "v4:11134"),
             fix="Change the jump to the label it resembles, or create the missing subroutine (a label and "
@@ -68,8 +68,8 @@ GROUP = Group(
             why="#FASTIN handles every fast input and #FASTINx one of them; the controller cannot route a "
             "latch to both, and rejects the program.",
             example=Example(
-                before="PRINT 1\nEND\n#FASTIN\n  PRINT 1\nRETURN\n#FASTIN0\n  PRINT 2\nRETURN\n",
-                after="PRINT 1\nEND\n#FASTIN0\n  PRINT 2\nRETURN\n",
+                before="PRINT 1\nEND\n#FASTIN\nPRINT 1\nRETURN\n#FASTIN0\nPRINT 2\nRETURN\n",
+                after="PRINT 1\nEND\n#FASTIN0\nPRINT 2\nRETURN\n",
             ),
             manual=("v4:19108", "v4:1884"),
             fix="Keep one kind of handler.",
@@ -137,8 +137,8 @@ GROUP = Group(
             "the controller and are never reported.",
             why=_NEVER_USED,
             example=Example(
-                before="GOSUB setup\nEND\n#setup\n  PRINT 1\nRETURN\n#unused\n  PRINT 2\nRETURN\n",
-                after="GOSUB setup\nEND\n#setup\n  PRINT 1\nRETURN\n",
+                before="GOSUB setup\nEND\n#setup\nPRINT 1\nRETURN\n#unused\nPRINT 2\nRETURN\n",
+                after="GOSUB setup\nEND\n#setup\nPRINT 1\nRETURN\n",
             ),
             manual=("v4:1841", "v4:1904"),
             fix="Remove the subroutine, or call it where it was meant to run.",
@@ -178,8 +178,8 @@ GROUP = Group(
             why="Such a label is an ordinary subroutine that nothing calls: the event it was written for "
             "is never handled.",
             example=Example(
-                before="PRINT 1\nEND\n#IN99\n  PRINT 2\nRETURN\n",
-                after="PRINT 1\nEND\n#IN9\n  PRINT 2\nRETURN\n",
+                before="PRINT 1\nEND\n#IN99\nPRINT 2\nRETURN\n",
+                after="PRINT 1\nEND\n#IN9\nPRINT 2\nRETURN\n",
             ),
             manual=("v4:1884",),
             fix="The input to handle depends on the wiring.",
@@ -191,8 +191,8 @@ GROUP = Group(
             why="v4 compiles it as an ordinary label that no event calls: the fast position latch is "
             "silently never handled.",
             example=Example(
-                before="PRINT 1\nEND\n#FASTPOS\n  PRINT 2\nRETURN\n",
-                after="PRINT 1\nEND\n#FASTIN\n  PRINT 2\nRETURN\n",
+                before="PRINT 1\nEND\n#FASTPOS\nPRINT 2\nRETURN\n",
+                after="PRINT 1\nEND\n#FASTIN\nPRINT 2\nRETURN\n",
             ),
             manual=("v4:5910", "v4:1884"),
             fix="Rename the label to #FASTIN (with the same input number, if it has one); mint-migrate "

@@ -9,6 +9,7 @@ character line limit (line 255).
 
 from __future__ import annotations
 
+from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller
 from mintlang.records import record
 
@@ -34,6 +35,17 @@ class NestingLimits:
     gosub: int
     other_loops: int  # WHILE, LOOP and REPEAT combined
     loops_and_ifs: int  # the three loop kinds plus IF blocks
+
+
+V3_NESTING = NestingLimits(if_blocks=30, for_loops=8, gosub=20, other_loops=30, loops_and_ifs=30)
+"""Mint v3's: GOSUB 20, IF .. DO 30, FOR 8, LOOP/REPEAT/WHILE 10 each, 30 combined (001:2381-2409): the
+per-kind 10 is not enforced (the v4 model counts WHILE, LOOP and REPEAT together), so other_loops holds
+the combined 30."""
+
+
+def nesting_of(controller: ControllerProfile, dialect: Dialect) -> NestingLimits:
+    """The nesting limits a program in ``dialect`` is held to on ``controller``: a Mint v3 controller's own."""
+    return V3_NESTING if dialect is Dialect.V3 else controller.nesting
 
 
 @record

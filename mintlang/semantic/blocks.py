@@ -27,7 +27,7 @@ from typing import NamedTuple
 
 from mintlang.analysis.suggestions import OTHER_BASICS, closest, did_you_mean
 from mintlang.codes import mint_error
-from mintlang.controllers import ControllerProfile, NestingLimits
+from mintlang.controllers import ControllerProfile, NestingLimits, nesting_of
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Span
 from mintlang.dialect import Dialect
 from mintlang.records import record
@@ -173,6 +173,8 @@ class _Matcher:
 
     def __init__(self, limits: NestingLimits, dialect: Dialect) -> None:
         self.limits = limits
+        # a Mint v3 controller stops on the block one too deep when it runs it (V3-14), v4's compiler before
+        self.deep_when_run = True if dialect is Dialect.V3 else None
         self.words = _MINTMT_WORDS if dialect is Dialect.MINTMT else {}
         self.stack: list[_Open] = []
         self.open = dict.fromkeys(BlockKind, 0)
@@ -206,7 +208,9 @@ class _Matcher:
             self.stack[-1].over = problem
             # once where a limit is crossed, not again for each block nested deeper (the compiler stops there)
             if problem is not None and (len(self.stack) < 2 or self.stack[-2].over != problem):
-                self.diagnostics.append(_error(2015, line.span(statement.span), problem))
+                self.diagnostics.append(
+                    _error(2015, line.span(statement.span), problem, at_run_time=self.deep_when_run)
+                )
         elif isinstance(statement, n.Until) or (isinstance(statement, n.SyntaxError_) and statement.closes == "UNTIL"):
             self.close(
                 BlockKind.REPEAT,
@@ -349,7 +353,7 @@ def match_blocks(
     lines: Iterable[tuple[n.PlacedLine, LineFacts]], controller: ControllerProfile, dialect: Dialect = Dialect.V4
 ) -> Structure:
     """Match the blocks of one file and check the nesting limits; errors name blocks as ``dialect`` writes them."""
-    matcher = _Matcher(controller.nesting, dialect)
+    matcher = _Matcher(nesting_of(controller, dialect), dialect)
     for line, facts in lines:
         if not facts.kinds.isdisjoint(BLOCK_STATEMENTS):  # most lines open and close nothing
             for index, statement in enumerate(facts.statements):

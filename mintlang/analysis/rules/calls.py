@@ -17,6 +17,7 @@ from dataclasses import field
 from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.rules.flow import subroutines
 from mintlang.analysis.traversal import Facts
+from mintlang.controllers import nesting_of
 from mintlang.diagnostics import Span
 from mintlang.dialect import Dialect
 from mintlang.records import record
@@ -63,8 +64,9 @@ class _Graph:
 
 def check(facts: Facts) -> Iterator[Finding]:
     model = facts.model
-    limit = model.controller.nesting.gosub
     dialect = model.program.dialect
+    limit = nesting_of(model.controller, dialect).gosub
+    allowing = "Mint v3" if dialect is Dialect.V3 else model.controller.title
     for unit, _ in model.documents():
         graph = _graph(unit, facts, blocks=dialect is Dialect.MINTMT)
         events = (label for label in graph.calls if label and event_of(label, dialect) is not None)
@@ -74,7 +76,7 @@ def check(facts: Facts) -> Iterator[Finding]:
                 call = next(call for call in graph.calls[root] if _levels(graph, call) == graph.longest[root])
                 detail = (
                     f"GOSUB {call.statement.label.text} starts calls nested {graph.longest[root]} levels deep; "
-                    f"{model.controller.title} allows {limit} (error 2015 when it runs)"
+                    f"{allowing} allows {limit} (error 2015 when it runs)"
                 )
                 yield Finding(unit, own("W116", call.line.span(call.statement.span), detail))
         reported: set[tuple[int, Span]] = set()

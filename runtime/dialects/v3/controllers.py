@@ -27,17 +27,13 @@ from __future__ import annotations
 from dataclasses import replace
 from types import MappingProxyType
 
-from mintlang.controllers import ChannelRange, ControllerProfile, NestingLimits, profile
+from mintlang.controllers import V3_NESTING, ChannelRange, ControllerProfile, profile
 from mintlang.keyworddb.model import Controller
 
 BASE_MACHINE = Controller.NEXTMOVE_PCI  # the v4 machine whose keyword ranges and timing a v3 controller runs on
 DEFAULT = "euroservo"
 USER_INPUTS = 8
 HOME_INPUT, LIMIT_INPUT, STOP_INPUT, ERROR_INPUT = 8, 11, 14, 15  # the dedicated inputs' channels (axis 0's)
-
-# GOSUB 20, IF .. DO 30, FOR 8, LOOP/REPEAT/WHILE 10 each, 30 combined: the per-kind 10 is not enforced
-# (the v4 model counts WHILE, LOOP and REPEAT together), so other_loops holds the combined 30.
-_NESTING = NestingLimits(if_blocks=30, for_loops=8, gosub=20, other_loops=30, loops_and_ifs=30)
 
 
 def _servo_controller(title: str, axes: int) -> ControllerProfile:
@@ -55,7 +51,7 @@ def _servo_controller(title: str, axes: int) -> ControllerProfile:
         fast_inputs=frozenset({0}),
         max_variables=50,
         max_labels=40,
-        nesting=_NESTING,
+        nesting=V3_NESTING,
     )
 
 

@@ -13,6 +13,7 @@ import pytest
 
 import mintlang
 from mintlang.diagnostics import Diagnostic
+from mintlang.fixes import fix_text
 
 _LABEL = "Keyword not defined: 'Init' is not a keyword (a label is written #Init, first on its line)"
 
@@ -55,3 +56,11 @@ def test_a_label_followed_by_statements_is_fixed_only_as_an_unsafe_fix() -> None
 def test_a_name_alone_after_another_statement_is_no_label() -> None:
     (found,) = _not_defined("DIM a\na = 1 : Init : a = 2\n")
     assert "label" not in found.message
+
+
+def test_every_fix_made_writes_the_label_once() -> None:
+    # the jump's 3004 took 'Create label #Init' at the end of the file, a second #Init once the hash was written
+    source = "Init: PRINT 1\nGOTO Init\n"
+    fixed = fix_text(source, lambda text: mintlang.check_application(text).program, unsafe=True)
+    assert fixed.text == "#Init: PRINT 1\nGOTO Init\n"
+    assert not fixed.remaining

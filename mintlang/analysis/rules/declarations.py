@@ -20,6 +20,7 @@ from itertools import islice
 from mintlang.analysis.findings import Finding, mint_error
 from mintlang.analysis.rules.flow import runs_off_the_end
 from mintlang.analysis.rules.functions import bracketed
+from mintlang.analysis.rules.keyword_usage import label_written_with_a_colon
 from mintlang.analysis.rules.v3_keywords import successor
 from mintlang.analysis.suggestions import closest, did_you_mean, keyword_like
 from mintlang.analysis.traversal import Facts, LineScope
@@ -405,6 +406,7 @@ def _jump_words(facts: Facts) -> dict[tuple[Unit, Span], str]:
 def _labels(facts: Facts, jumps: dict[tuple[Unit, Span], str]) -> Iterator[Finding]:
     model = facts.model
     runs_on = cache(partial(runs_off_the_end, facts=facts))  # the flow followed once per file, if at all
+    colons = cache(partial(_labels_written_with_a_colon, facts))  # read once per file, if a label is missing
     for unit, table in model.symbols.labels.items():
         defined = [symbol.name for symbol in table.values() if symbol.definitions]
         for symbol in table.values():
@@ -414,11 +416,30 @@ def _labels(facts: Facts, jumps: dict[tuple[Unit, Span], str]) -> Iterator[Findi
                 yield Finding(unit, mint_error(3004, duplicate.span, detail))
             if not symbol.definitions:
                 for reference in symbol.references:
-                    elsewhere = _defined_in_other_file(model, unit, symbol)
-                    detail = f"no label #{reference.spelling} in this file" + elsewhere
-                    word = jumps.get((unit, reference.span))
-                    fixes = _label_fixes(model, unit, reference, defined, word, runs_on=runs_on)
+                    detail = f"no label #{reference.spelling} in this file"
+                    colon = colons(unit).get(reference.spelling.upper())
+                    if colon is not None:  # its hash makes the label: creating one would make two
+                        number, written, fix = colon
+                        detail += f": '{written}:' on line {number} is not one (a label is written #{written})"
+                        fixes: tuple[Fix, ...] = (fix,)
+                    else:
+                        detail += _defined_in_other_file(model, unit, symbol)
+                        word = jumps.get((unit, reference.span))
+                        fixes = _label_fixes(model, unit, reference, defined, word, runs_on=runs_on)
                     yield Finding(unit, mint_error(3004, reference.span, detail, fixes=fixes))
+
+
+def _labels_written_with_a_colon(facts: Facts, unit: Unit) -> dict[str, tuple[int, str, Fix]]:
+    """Other BASICs' labels in ``unit`` (``Init:`` first on its line), by their names upper-cased: the line,
+    the name as written and the fix that writes it as Mint's label, placed in the file."""
+    found: dict[str, tuple[int, str, Fix]] = {}
+    for where, line, statement in facts.statements(n.BareName):
+        name, text = statement.name, line.syntax.text
+        fix = label_written_with_a_colon(text, name.span) if where is unit else None
+        if fix is not None and text[name.span.start : name.span.end] == name.text:
+            placed = tuple(Edit(line.span(edit.span), edit.text) for edit in fix.edits)
+            found.setdefault(name.text.upper(), (line.number, name.text, replace(fix, edits=placed)))
+    return found
 
 
 def _label_fixes(

@@ -67,7 +67,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         if isinstance(statement, n.BareName) and db.rename_of(statement.name.text) is None:  # else: v3_keywords
             word = statement.name.text
             written = scope.writes(statement.name.span, word)
-            label = _label_written_with_a_colon(scope.syntax.text, statement.name.span) if written else None
+            label = label_written_with_a_colon(scope.syntax.text, statement.name.span) if written else None
             if label is not None:
                 detail = f"'{word}' is not a keyword (a label is written #{word}, first on its line)"
                 fixes: tuple[Fix, ...] = (label,)
@@ -79,7 +79,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             yield Finding(unit, mint_error(3007, statement.span, detail, fixes=fixes))
 
 
-def _label_written_with_a_colon(text: str, name: Span) -> Fix | None:
+def label_written_with_a_colon(text: str, name: Span) -> Fix | None:
     """The fix that writes other BASICs' label ``Init:``, a name first on its line before a colon, as Mint's
     ``#Init`` (000:1843-1844, 1871-1872); safe where only a comment follows, the colon going with the hash."""
     if text[: name.start].strip() or not text[name.end :].lstrip(" \t").startswith(":"):

@@ -210,7 +210,8 @@ def format_text(
     from mintlang.syntax.parser import parse  # noqa: PLC0415
 
     document = parse(text, dialect, macros=None if seen is None else parse(seen, dialect).macros)
-    error = next((found for found in document.diagnostics if found.mint_error in SYNTAX_ERRORS), None)
+    errors = (found for found in document.diagnostics if found.mint_error in SYNTAX_ERRORS)
+    error = min(errors, key=lambda found: found.span.start, default=None)  # the lexer's come before the parser's
     if error is not None:
         place = document.line_index.position(error.span.start)
         raise Unparsable(f"{place.line}:{place.column}: {error.code} {error.message}")

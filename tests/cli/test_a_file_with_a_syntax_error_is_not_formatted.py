@@ -26,6 +26,7 @@ def mint_format(*arguments: str | Path, given: str | None = None) -> Result:
     [
         pytest.param(C_COMMENT, "2:1", id="a-c-comment"),
         pytest.param("loop\nprint 1\nendl\n\x1athis is the end of it\n", "4:1", id="text-after-the-end-of-file-mark"),
+        pytest.param("loop\nprint (1\nendl\n\x1athe end\n", "2:9", id="the-first-of-two-errors"),
     ],
 )
 @pytest.mark.parametrize("options", [(), ("--check",), ("--diff",)], ids=["write", "check", "diff"])

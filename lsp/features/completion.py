@@ -2,8 +2,9 @@
 
 The cursor's line is lexed as typed; user names come from the last analysis.
 
-After GOSUB/GOTO: labels; after ``#`` at the start of a line: the event handlers
-of the controller the program does not have yet; after FOR and INPUT: the
+After GOSUB/GOTO: labels; after ``#`` at the start of a line: the labels jumped
+to and not yet written, and the event handlers of the controller the program
+does not have yet; after DIM: the names used and not declared; after FOR and INPUT: the
 variables, arrays and macros naming one that they can fill; after MintMT's
 ``Event``: the events its blocks handle;
 after ``_``: predefined constants; at the start of a statement: commands,
@@ -17,7 +18,7 @@ being written (THEN in an IF, TO in a FOR ...); after a keyword's dot
 (``SPEED.``, ``IN.``): the axes or channels it addresses on the controller and
 the macros that name them. Nothing inside comments, strings and character
 constants, after a number's decimal point, or where a new name is being
-declared (DIM, DEFINE).
+declared (DEFINE).
 """
 
 from __future__ import annotations
@@ -442,21 +443,42 @@ def _handled_elsewhere(snapshot: Snapshot, line: int) -> set[object]:
     }
 
 
-def _events(snapshot: Snapshot, hash_: Token, cursor: types.Position) -> list[types.CompletionItem]:
-    """Handler names replacing the ``#...`` typed so far, whichever characters the client counts as a word;
-    not those of the events the program handles already, by a label or by MintMT's Event block (MT-13)."""
+def _after_hash(snapshot: Snapshot, hash_: Token, cursor: types.Position) -> list[types.CompletionItem]:
+    """Label names replacing the ``#...`` typed so far, whichever characters the client counts as a word: the
+    labels jumped to that no other line defines, then the handlers of the events the program does not handle
+    already, by a label or by MintMT's Event block (MT-13)."""
     typed = types.Range(start=types.Position(cursor.line, cursor.character - len(hash_.text)), end=cursor)
     handled = _handled_elsewhere(snapshot, cursor.line) | _event_blocks_elsewhere(snapshot, cursor.line)
+    events = [name for name in event_names(snapshot) if event_of(name, snapshot.settings.dialect) not in handled]
+    kinds = dict.fromkeys(_labels_to_write(snapshot, cursor.line), types.CompletionItemKind.Function)
+    kinds.update(dict.fromkeys(events, types.CompletionItemKind.Event))
     return [
         types.CompletionItem(
             label=f"#{name}",
-            kind=types.CompletionItemKind.Event,
+            kind=kind,
             filter_text=f"#{name}",
             text_edit=types.TextEdit(range=typed, new_text=f"#{name}"),
         )
-        for name in event_names(snapshot)
-        if event_of(name, snapshot.settings.dialect) not in handled
+        for name, kind in kinds.items()
     ]
+
+
+def _labels_to_write(snapshot: Snapshot, line: int) -> list[str]:
+    """The labels a jump names that no line but ``line`` (0-based, the one being typed) defines, as first named."""
+    positions = snapshot.positions
+    return [
+        label.references[0].spelling
+        for label in snapshot.model.symbols.labels[snapshot.unit].values()
+        if label.references
+        and all(positions.position(definition.span.start).line == line for definition in label.definitions)
+    ]
+
+
+def _undeclared(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
+    """The names the program uses that no DIM declares (each an error 3001), as first written."""
+    for symbol in snapshot.model.symbols.variables.values():
+        if symbol.references and not symbol.definitions:
+            yield types.CompletionItem(label=symbol.references[0].spelling, kind=types.CompletionItemKind.Variable)
 
 
 def _macro_numbers(definition: MacroDefinition) -> list[int] | None:
@@ -562,7 +584,7 @@ def complete(
     if before and before[-1].end == len(prefix) and (before[-1].kind in _PARTIAL_WORDS or _begun(before[-1])):
         partial = before.pop()  # the word being typed
     if partial is not None and partial.text.startswith("#"):
-        return _events(snapshot, partial, cursor) if partial.kind is TokenKind.LABEL or not before else []
+        return _after_hash(snapshot, partial, cursor) if partial.kind is TokenKind.LABEL or not before else []
     typed = types.Range(
         start=types.Position(cursor.line, cursor.character - (len(partial.text) if partial else 0)), end=cursor
     )
@@ -575,6 +597,8 @@ def complete(
     previous = before[-1] if before else None
     if previous is not None and previous.kind is TokenKind.EVENT:
         return list(_event_blocks(snapshot, cursor.line))
+    if previous is not None and previous.kind is TokenKind.DIM:
+        return list(_undeclared(snapshot))
     if previous is not None and (previous.kind in _NOTHING_AFTER or previous.text.endswith(".")):
         return []  # a new name, a complete statement, or the decimals of a number
     if partial is not None and partial.text.startswith("_"):

@@ -25,6 +25,13 @@ def test_a_mint_v3_input_handler_past_input_7_is_a_warning() -> None:
     assert v3 == [("W109", "#IN8: Mint v3 calls #IN0 to #IN7 only, one for each user input, so this is never called")]
 
 
+def test_a_mint_v3_fast_interrupt_handler_with_a_number_is_a_warning() -> None:
+    # Mint v3 has one fast interrupt and calls #FASTPOS on it (001:2585-2587): #FASTPOS1 is a plain label
+    v3 = [(d.code, d.message) for d in mintlang.check("END\n#FASTPOS1\nRETURN\n#fastpos\nRETURN\n", dialect="v3")]
+    never = "Mint v3 calls #FASTPOS alone, on its one fast interrupt, so this is never called"
+    assert v3 == [("W109", f"#FASTPOS1: {never}")]
+
+
 def test_only_comms_locations_one_to_five_raise_an_event() -> None:
     # line 1898: #COMMS1 .. #COMMS5
     assert found("END\n#COMMS6\nRETURN\n") == [("W109", WARNING, 2)]

@@ -27,6 +27,7 @@ _COMMS = range(1, 6)
 _CAN = range(1, 3)
 _V3_INPUTS = range(8)  # Mint v3: #IN0 .. #IN7, one for each of the 8 user inputs (001:2523-2527)
 _NOT_V3_INPUT = "Mint v3 calls #IN0 to #IN7 only, one for each user input, so this is never called"
+_NOT_V3_FASTPOS = "Mint v3 calls #FASTPOS alone, on its one fast interrupt, so this is never called"  # 001:2585
 
 
 @record
@@ -87,6 +88,8 @@ def _unavailable(event: Event, controller: ControllerProfile, dialect: Dialect) 
     number = event.number
     if event.kind is EventKind.IN and dialect is Dialect.V3:
         return None if number in _V3_INPUTS else _NOT_V3_INPUT
+    if event.kind is EventKind.FASTPOS and number is not None:
+        return _NOT_V3_FASTPOS
     if event.kind is EventKind.IN and number not in controller.digital_inputs:
         return f"{controller.title} has digital inputs {controller.digital_inputs}, so this handler is never called"
     if event.kind is EventKind.FASTIN and number is not None and number not in controller.fast_inputs:

@@ -4,6 +4,7 @@ program gets, as (code, severity, line); line numbers in comments refer to the M
 from __future__ import annotations
 
 import mintlang
+from mintlang.fixes import fix_text
 from tests.analysis.checking import ERROR, apply, covered, found, only
 
 
@@ -113,3 +114,13 @@ def test_an_abbreviated_bit_keyword_is_said_to_be_the_bit_v4_still_writes() -> N
     in2, out4 = [d for d in mintlang.check(source) if d.code == "E3001"]
     assert "abbreviation of IN2; v4: IN2," in in2.message
     assert "abbreviation of OUT4; v4: OUT4," in out4.message
+
+
+def test_renaming_a_v3_fast_latch_label_renames_the_jumps_that_name_it() -> None:
+    # v4's handler is #FASTIN (000:1884-1893); a GOSUB still naming FASTPOS would name no label (3004), and --fix
+    # --unsafe-fixes created #FASTPOS again, renamed it again, round after round, writing one #FASTIN a round
+    source = "GOSUB FASTPOS\nIF IN1 THEN GOTO fastpos\nEND\n#FASTPOS\nRETURN\n"
+    (rename,) = only(source, "W102").fixes
+    assert apply(source, rename.edits) == "GOSUB FASTIN\nIF IN1 THEN GOTO FASTIN\nEND\n#FASTIN\nRETURN\n"
+    fixed = fix_text("GOSUB FASTPOS\n", mintlang.check, unsafe=True)
+    assert (fixed.text, fixed.converged) == ("GOSUB FASTIN\nEND\n\n#FASTIN\nRETURN\n", True)

@@ -156,8 +156,9 @@ RULES: tuple[Rule, ...] = (
     Rule("events", events.check, reads=control_meaning),
     Rule(
         "v3-keywords",
-        each_line=v3_keywords.each_line,
-        looks_at=LineParts(frozenset({n.BareName}), keyword_uses=True, label=True),
+        v3_keywords.check,
+        v3_keywords.each_line,
+        looks_at=LineParts(frozenset({n.BareName}), keyword_uses=True),
     ),
     Rule("flow", flow.check, reads=control_meaning),
     Rule("calls", calls.check, reads=control_meaning),

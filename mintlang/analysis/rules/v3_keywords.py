@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, mint_error, own
-from mintlang.analysis.traversal import LineScope, Use
+from mintlang.analysis.traversal import Facts, LineScope, Use
 from mintlang.controllers import ControllerProfile
 from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.dialect import Dialect
@@ -21,6 +21,7 @@ from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Keyword
 from mintlang.records import record
 from mintlang.semantic.events import EventKind, event_of
+from mintlang.semantic.symbols import Occurrence
 from mintlang.syntax import nodes as n
 
 _V3 = "Mint v3"
@@ -132,13 +133,30 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             finding = _old_word(statement.name.text, statement.name.span, scope, command=True)
             if finding is not None:
                 yield finding
-    label = scope.syntax.label
-    if label is not None:
-        event = event_of(label.text, Dialect.V3)
-        if event is not None and event.kind is EventKind.FASTPOS:
-            new = f"#FASTIN{event.number if event.number is not None else ''}"
-            # unsafe: the handler starts answering fast-latch events, and a GOSUB or GOTO naming it (which
-            # this line cannot see) would name no label
-            fix = Fix(f"Rename to {new}", (Edit(label.span, new),), safe=False)
-            detail = f"#{label.text} is {_V3}: v4 uses {new}"
-            yield Finding(scope.unit, own("W102", label.span, detail, fixes=(fix,), from_v3=True))
+
+
+def check(facts: Facts) -> Iterator[Finding]:
+    """W102, a v3 fast-latch label: its rename renames the GOSUBs and GOTOs that name it (those written out,
+    not brought by a macro), which would otherwise name no label (3004)."""
+    model = facts.model
+    if not model.program.dialect.modern:
+        return
+    for unit, labels in model.symbols.labels.items():
+        for symbol in labels.values():
+            event = event_of(symbol.name, Dialect.V3) if symbol.definitions else None
+            if event is None or event.kind is not EventKind.FASTPOS:
+                continue
+            source = model.document(unit).source
+            new = f"FASTIN{event.number if event.number is not None else ''}"
+            jumps = [Edit(jump.span, new) for jump in symbol.references if _written(source, jump)]
+            for label in symbol.definitions:
+                # unsafe: the handler starts answering fast-latch events
+                fix = Fix(f"Rename to #{new}", (Edit(label.span, f"#{new}"), *jumps), safe=False)
+                detail = f"#{label.spelling} is {_V3}: v4 uses #{new}"
+                yield Finding(unit, own("W102", label.span, detail, fixes=(fix,), from_v3=True))
+
+
+def _written(source: str, occurrence: Occurrence) -> bool:
+    """Whether the name is written where it occurs, not brought there by a macro."""
+    span = occurrence.span
+    return source[span.start : span.end] == occurrence.spelling

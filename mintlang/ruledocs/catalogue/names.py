@@ -195,9 +195,9 @@ GROUP = Group(
                 after="PRINT 1\nEND\n#FASTIN\nPRINT 2\nRETURN\n",
             ),
             manual=("v4:5910", "v4:1884"),
-            fix="Rename the label to #FASTIN (with the same input number, if it has one); mint-migrate "
-            "converts the rest of a v3 program. The handler then runs on each fast latch, and a GOSUB or "
-            "GOTO that names it must be renamed too.",
+            fix="Rename the label to #FASTIN (with the same input number, if it has one), and the GOSUBs and "
+            "GOTOs that name it with it; mint-migrate converts the rest of a v3 program. The handler then runs "
+            "on each fast latch.",
             safety=FixSafety.UNSAFE,
         ),
     ),

@@ -31,6 +31,9 @@ UNREACHABLE = [
     ),
     pytest.param("PRINT 1\nEND : PRINT 2\n", "PRINT 1\nEND\n", id="after-a-colon"),
     pytest.param("END : PRINT 2 : REM kept\n", "END : REM kept\n", id="a-comment-stays"),
+    pytest.param(  # a REM may follow a statement without a colon (000:15509-15515)
+        "END\r\nPRINT 2 REM kept\r\n", "END\r\nREM kept\r\n", id="a-comment-without-a-colon-stays-on-its-line"
+    ),
     pytest.param(
         "DIM a\nIF a DO\n  RETURN\n  PRINT 1\nELSE\n  PRINT 2\nENDIF\nEND\n",
         "DIM a\nIF a DO\n  RETURN\nELSE\n  PRINT 2\nENDIF\nEND\n",

@@ -97,7 +97,7 @@ def register(server: MintServer) -> None:
         )
         if _wanted(abbreviations.KIND, only):
             found.extend(abbreviations.actions(snapshot, params.range))
-        if _wanted(fix_all.KIND, only):
+        if only is not None and _wanted(fix_all.KIND, only):  # never for a lightbulb: it checks the text again
             found.extend(fix_all.actions(snapshot))
         found.extend(migration.actions(server, snapshot, [kind for kind in migration.KINDS if _wanted(kind, only)]))
         return found

@@ -38,6 +38,18 @@ async def test_the_safe_fixes_are_made_and_the_unsafe_one_is_left(client, tmp_pa
     )
 
 
+async def test_a_request_naming_no_kind_is_not_given_it(client, tmp_path):
+    # a lightbulb's request, sent at every cursor move: fixing every finding is not what it shows
+    text = "DIM count = 0\ncount += 1\n"
+    uri = uri_of(tmp_path / "cell.mnt")
+    await open_document(client, uri, text)
+    context = types.CodeActionContext(diagnostics=[])
+    found = await client.text_document_code_action_async(
+        types.CodeActionParams(text_document=document(uri), range=WHOLE, context=context)
+    )
+    assert not [action for action in found if str(action.kind).startswith(types.CodeActionKind.SourceFixAll)]
+
+
 async def test_nothing_is_offered_where_only_unsafe_fixes_are(client, tmp_path):
     text = 'DIM b = 2\nPRINT "b is " & b\n'
     uri = uri_of(tmp_path / "cell.mnt")

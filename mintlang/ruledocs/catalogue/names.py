@@ -45,7 +45,9 @@ GROUP = Group(
             ),
             manual=("v4:19099", "v4:1841", "v4:11134"),
             fix="Change the jump to the label it resembles, or create the missing subroutine (a label and "
-            "RETURN for a GOSUB) at the end of the file, after an END when the code above would run on into it.",
+            "RETURN for a GOSUB) at the end of the file, after an END when the code above would run on into it. "
+            "Where the label is written as other BASICs write it (`Init:` first on its line), write it `#Init`: "
+            "safe when nothing but a comment follows the colon.",
             safety=FixSafety.UNSAFE,
         ),
         RuleDoc(

@@ -9,6 +9,7 @@ defines yet come with the event handlers; after ``DIM``, the names used that no 
 from __future__ import annotations
 
 import pytest
+from lsprotocol import types
 
 from tests.lsp.conftest import open_document, uri_of
 from tests.lsp.test_completion import labels_at
@@ -41,3 +42,12 @@ async def test_dim_offers_the_names_used_and_not_declared(client, tmp_path):
     await open_document(client, uri, text)
     items = await labels_at(client, uri, text, "DIM \n", 4)
     assert set(items) == {"count", "rate"}
+
+
+async def test_dim_in_a_v3_program_offers_no_name_in_use(client, tmp_path):
+    # v3 variables need no DIM, which makes arrays (001:1525-1528): a name already used is no array to make
+    client.workspace_did_change_configuration(types.DidChangeConfigurationParams(settings={"mint": {"dialect": "v3"}}))
+    text = "DIM \nLOOP\n  count = count + 1\nENDL\n"
+    uri = uri_of(tmp_path / "old.mnt")
+    await open_document(client, uri, text)
+    assert await labels_at(client, uri, text, "DIM \n", 4) == {}

@@ -358,6 +358,14 @@ def _content_end(line: str) -> int:
     return len(line) - (2 if line.endswith("\r\n") else 1 if line.endswith(("\n", "\r")) else 0)
 
 
+def comment_at(text: str, at: int) -> bool:
+    """Whether a comment starts at ``at``: a REM as a word of its own (``remainder`` is a name) or MintMT's ``'``."""
+    if text.startswith("'", at):
+        return True
+    follows = text[at + 3 : at + 4]
+    return text[at : at + 3].upper() == "REM" and not (follows.isalnum() or follows == "_")
+
+
 def _code_end(line: str, content_end: int) -> int:
     """Where the code of ``line`` ends: before the Ctrl-Z run that ends the file, when it is the file's last
     line (the only one with no line break), which is blanks to its end rather than unexpected characters."""

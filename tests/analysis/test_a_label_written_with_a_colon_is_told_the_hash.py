@@ -53,6 +53,14 @@ def test_a_label_followed_by_statements_is_fixed_only_as_an_unsafe_fix() -> None
     assert _fixed(source, found) == "GOSUB Init\nEND\n#Init: PRINT 1\nRETURN\n"
 
 
+def test_a_statement_whose_name_begins_with_rem_is_no_comment() -> None:
+    # REM comments only as a word of its own: 'remainder' is a variable (000:884-893), so a statement follows
+    source = "DIM remainder\nGOSUB Init\nEND\nInit: remainder = 5\nRETURN\n"
+    (found,) = _not_defined(source)
+    assert not found.fixes[0].safe
+    assert _fixed(source, found) == "DIM remainder\nGOSUB Init\nEND\n#Init: remainder = 5\nRETURN\n"
+
+
 def test_a_name_alone_after_another_statement_is_no_label() -> None:
     (found,) = _not_defined("DIM a\na = 1 : Init : a = 2\n")
     assert "label" not in found.message

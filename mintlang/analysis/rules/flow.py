@@ -56,6 +56,7 @@ from mintlang.semantic.index import LineFacts
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
+from mintlang.syntax.lexer import comment_at
 from mintlang.syntax.parser import Document
 
 _TERMINATORS = frozenset({"END", "RETURN", "EXIT"})
@@ -181,20 +182,12 @@ def _removal(source: str, start: int, end: int) -> Edit:
     if not source[line_start:start].strip(_BLANKS) and source[after : after + 1] in ("", "\r", "\n"):
         line_end = after + (2 if source.startswith("\r\n", after) else 1 if after < len(source) else 0)
         return Edit(Span(line_start, line_end), "")  # whole lines, with their line breaks
-    if _comment_at(source, after):  # a comment ends the line (a REM needs no colon): it stays on its line
+    if comment_at(source, after):  # a comment ends the line (a REM needs no colon): it stays on its line
         return Edit(Span(start, after), "")
     if source[after : after + 1] == ":":  # statements kept after it: the separator goes with the run
         return Edit(Span(start, len(source) - len(source[after + 1 :].lstrip(_BLANKS))), "")
     before = len(source[:start].rstrip(_BLANKS))  # statements kept before it, then ":"
     return Edit(Span(len(source[: before - 1].rstrip(_BLANKS)), end), "")
-
-
-def _comment_at(source: str, at: int) -> bool:
-    """Whether a comment starts at ``at``: a REM (not a name that begins with it) or MintMT's ``'``."""
-    if source.startswith("'", at):
-        return True
-    follows = source[at + 3 : at + 4]
-    return source[at : at + 3].upper() == "REM" and not (follows.isalnum() or follows == "_")
 
 
 @record(frozen=False)

@@ -27,6 +27,7 @@ from mintlang.keyworddb.model import Controller
 from mintlang.keyworddb.usage import refusal
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
+from mintlang.syntax.lexer import comment_at
 
 _CONFIGURATION_COMMANDS = frozenset({"RELEASE"})  # clears the variables before each run (000:935-939)
 _BUFFERS = frozenset({"PROG", "CON"})  # what RUN runs; at the command line they are editor commands
@@ -86,7 +87,7 @@ def label_written_with_a_colon(text: str, name: Span) -> Fix | None:
         return None
     colon = text.index(":", name.end)
     rest = text[colon + 1 :].strip()
-    if not rest or rest.upper().startswith("REM"):
+    if not rest or comment_at(rest, 0):
         return Fix(
             "Write the label with a hash",
             (Edit(Span(name.start, colon + 1), f"#{text[name.start : name.end]}"),),

@@ -30,6 +30,10 @@ class Controller(StrEnum):
     SERVONODE51 = "servonode51"
 
 
+NEXTMOVES = frozenset({Controller.NEXTMOVE_PCI, Controller.NEXTMOVE_PC, Controller.NEXTMOVE_BX})
+"""The NextMove cards, which share restrictions MintDrive and ServoNode 51 do not have."""
+
+
 class Addressing(StrEnum):
     """What the dot parameter or bracket list of a keyword selects."""
 

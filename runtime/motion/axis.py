@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Callable
 
-from mintlang.keyworddb.model import Controller
+from mintlang.keyworddb.model import NEXTMOVES, Controller
 from mintlang.records import record
 from mintlang.runtime.clock import NEVER, Clock
 from mintlang.runtime.errors import MintError
@@ -38,7 +38,6 @@ MOTION_ERROR = 12
 DRIVE_NOT_ENABLED = 40
 CONFIG_OFF = 0  # _cfOFF: the axis turned off, its encoder still read (000:8437, 8454-8455)
 CONFIG_VIRTUAL = 5  # _cfVIRTUAL: moves without physical output, the position simulated (000:8442, 8456-8458)
-NEXTMOVES = frozenset({Controller.NEXTMOVE_PCI, Controller.NEXTMOVE_PC, Controller.NEXTMOVE_BX})
 DRIVE_ENABLED = 90  # _erDRIVE_ENABLED: what the drive must be disabled for, such as CONFIG (000:8481, 18821-18823)
 DISABLED_AT_POWER_UP = "a drive starts disabled: enable it with DRIVEENABLE or RESET, or run with --drives enabled"
 SERVO_TICK_S = 0.001

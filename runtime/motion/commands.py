@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 from mintlang.analysis.rules.addressing import addressed
 from mintlang.controllers import ChannelRange, ControllerProfile
-from mintlang.keyworddb.model import Controller
+from mintlang.keyworddb.model import NEXTMOVES, Controller
 from mintlang.runtime.clock import Clock
 from mintlang.runtime.errors import (
     INVALID_AXIS,
@@ -32,7 +32,6 @@ from mintlang.runtime.motion.axis import (
     MD_TORQUE,
     MOTION_ERROR,
     MOTION_IN_PROGRESS,
-    NEXTMOVES,
     Axis,
     Request,
 )

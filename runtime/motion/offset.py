@@ -12,10 +12,11 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from mintlang.keyworddb.model import NEXTMOVES
 from mintlang.runtime.errors import MintError, NotSimulated
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
 from mintlang.runtime.motion.axis import MD_FOLLOW, MD_OFFSET, MOTION_IN_PROGRESS, Axis, Request
-from mintlang.runtime.motion.commands import NEXTMOVES, Motion
+from mintlang.runtime.motion.commands import Motion
 from mintlang.runtime.motion.flying import LockedMove
 from mintlang.runtime.motion.following import VelocityLockedMove
 from mintlang.runtime.motion.moves import Geometry, PlannedMove

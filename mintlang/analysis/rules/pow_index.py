@@ -13,10 +13,8 @@ from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.traversal import LineScope
-from mintlang.keyworddb.model import Controller
+from mintlang.keyworddb.model import NEXTMOVES
 from mintlang.semantic.constants import held_value
-
-NEXTMOVES = frozenset({Controller.NEXTMOVE_PCI, Controller.NEXTMOVE_PC, Controller.NEXTMOVE_BX})
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:

@@ -30,14 +30,18 @@ MAIN = "main program"
 
 @record
 class Part:
-    """The main program (``label``, ``block`` and ``section`` None), a labelled section (offsets from its first
-    line to the next part's) or a MintMT block (its own span)."""
+    """The main program (``block`` and ``section`` None), a labelled section (offsets from its first line to the
+    next part's) or a MintMT block (its own span)."""
 
-    label: Symbol | None
     start: int
     end: int
     block: MintmtBlock | None = None
-    section: Section | None = None  # the labelled section's, for how the outline names it
+    section: Section | None = None
+
+    @property
+    def label(self) -> Symbol | None:
+        """The labelled section's label."""
+        return self.section.symbol if self.section is not None else None
 
     @property
     def key(self) -> str | None:
@@ -59,16 +63,13 @@ def parts(snapshot: Snapshot) -> list[Part]:
     """The MintMT blocks, first, since the main program's or a section's offsets may hold one; then the parts of
     the snapshot's file in order, the main program only when something comes before a label."""
     positions = snapshot.positions
-    blocks = [Part(None, block.span.start, block.span.end, block) for block in mintmt_blocks(snapshot)]
+    blocks = [Part(block.span.start, block.span.end, block) for block in mintmt_blocks(snapshot)]
     labelled = sections(snapshot)
     starts = [positions.line_start(section.first_line) for section in labelled]
     ends = [*starts[1:], len(snapshot.document.source)] if starts else []
-    found = [
-        Part(section.symbol, start, end, section=section)
-        for section, start, end in zip(labelled, starts, ends, strict=True)
-    ]
+    found = [Part(start, end, section=section) for section, start, end in zip(labelled, starts, ends, strict=True)]
     top = starts[0] if starts else len(snapshot.document.source)
-    return [*blocks, Part(None, 0, top), *found] if top > 0 or not found else [*blocks, *found]
+    return [*blocks, Part(0, top), *found] if top > 0 or not found else [*blocks, *found]
 
 
 def jumps(snapshot: Snapshot) -> Iterator[Jump]:

@@ -176,7 +176,7 @@ _BLANKS = " \t"
 
 def _removal(source: str, start: int, end: int) -> Edit:
     """Remove ``source[start:end]``: whole lines when nothing else is on them, else with the ``:`` that
-    separates it from the statements kept."""
+    separates it from the statements kept; a comment after it stays on its line."""
     line_start = max(source.rfind("\n", 0, start), source.rfind("\r", 0, start)) + 1
     after = len(source) - len(source[end:].lstrip(_BLANKS))  # what follows on the last line
     if not source[line_start:start].strip(_BLANKS) and source[after : after + 1] in ("", "\r", "\n"):

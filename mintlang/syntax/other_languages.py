@@ -205,18 +205,35 @@ _JOINS = {"+": "", "&": ", its bitwise AND"}  # 000:1286-1289
 def _joined_strings(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
     """``PRINT "a" + b``, ``PRINT "a" & b``: PRINT's items follow one another after a comma (000:15299-15302), and
     a string is no value to add or AND. Between two strings the comma is plainly meant; after one, ``+`` may have
-    summed what follows, and of ``"a" & b & c`` the second '&' would be left as an AND."""
+    summed what follows, and of ``"a" & b & c`` the second '&' would be left as an AND. One fix makes every join
+    beside a string a comma: made one at a time, the next would be this finding again, which --fix takes for a
+    fix that failed."""
     kinds, texts = line.kinds, line.texts
     if kinds[begin] is not _K.PRINT and texts[begin].upper() != "LINE":  # LINE takes PRINT's items: 000:15353
         return None
     join = failed if failed < end and texts[failed] in _JOINS else failed - 1
     if not (begin < join < end - 1 and texts[join] in _JOINS and _K.STRING in (kinds[join - 1], kinds[join + 1])):
         return None
-    safe = kinds[join - 1] is kinds[join + 1] is _K.STRING
+    joins = _joins_beside_strings(line, join, end)
+    safe = all(kinds[at - 1] is kinds[at + 1] is _K.STRING for at in joins)
+    edits = tuple(Edit(shared_span(line.ends[at - 1], line.ends[at]), ",") for at in joins)
     span = line.token_span(join)
-    fix = Fix("Separate the items with ','", (Edit(shared_span(line.ends[join - 1], span.end), ","),), safe=safe)
+    fix = Fix("Separate the items with ','", edits, safe=safe)
     detail = f"Mint does not join strings with '{texts[join]}'{_JOINS[texts[join]]}: separate the items with ',', "
     return mint_error(2003, span, detail + "which prints each directly after the one before", fixes=(fix,))
+
+
+def _joins_beside_strings(line: LogicalLine, join: int, end: int) -> list[int]:
+    """The joins from ``join`` on, at its depth of brackets, that stand beside a string."""
+    found: list[int] = []
+    depth = 0
+    for at in range(join, end - 1):
+        depth += _BRACKETS.get(line.kinds[at], 0)
+        if depth < 0:  # the bracket around ``join`` closes
+            break
+        if depth == 0 and line.texts[at] in _JOINS and _K.STRING in (line.kinds[at - 1], line.kinds[at + 1]):
+            found.append(at)
+    return found
 
 
 _OPERANDS = frozenset({_K.NAME, _K.NUMBER, _K.KEYWORD})

@@ -10,6 +10,7 @@ unsafe, since the next ``&`` of ``"a" & b & c`` would be left as an AND of b and
 from __future__ import annotations
 
 import mintlang
+from mintlang.fixes import fix_text
 from tests.analysis.checking import apply, covered
 
 DECLARED = "DIM a = 1\n"
@@ -40,6 +41,14 @@ def test_a_string_and_a_value_are_told_the_comma_with_an_unsafe_fix() -> None:
         (fix,) = diagnostic.fixes
         assert not fix.safe
         assert apply(source, fix.edits) == DECLARED + fixed + "\n"
+
+
+def test_a_chain_of_strings_is_fixed_at_once_and_an_and_of_two_values_stays() -> None:
+    # one '&' at a time, the next was the same finding again, so --fix undid the round and fixed nothing
+    chained = DECLARED + 'PRINT "a" & "b" & "c"\n'
+    assert fix_text(chained, mintlang.check, unsafe=False).text == DECLARED + 'PRINT "a", "b", "c"\n'
+    anded = DECLARED + 'PRINT "bits " & a & 3\n'  # a & 3 is an AND (000:1286-1289)
+    assert fix_text(anded, mintlang.check, unsafe=True).text == DECLARED + 'PRINT "bits ", a & 3\n'
 
 
 def test_and_written_as_a_word_is_not_told_of_joining() -> None:

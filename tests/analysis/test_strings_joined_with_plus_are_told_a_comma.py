@@ -10,6 +10,7 @@ meant as the sum of what follows (``"Total " + a + b``), so the fix is offered a
 from __future__ import annotations
 
 import mintlang
+from mintlang.fixes import fix_text
 from tests.analysis.checking import apply, covered
 
 DECLARED = "DIM a = 1\n"
@@ -40,6 +41,19 @@ def test_a_string_and_a_value_are_told_the_comma_with_an_unsafe_fix() -> None:
         (fix,) = diagnostic.fixes
         assert not fix.safe
         assert apply(source, fix.edits) == DECLARED + fixed + "\n"
+
+
+def test_every_join_beside_a_string_is_a_comma_in_one_fix() -> None:
+    # fixed one '+' at a time, the next one was the same finding again, so --fix undid the round and fixed nothing;
+    # a '+' between two values may be a sum (000:15299-15302 joins items, not values) and stays
+    for line, fixed, safe in (
+        ('PRINT "a" + "b" + "c"', 'PRINT "a", "b", "c"', True),
+        ('PRINT "Speed " + a + " mm/s"', 'PRINT "Speed ", a, " mm/s"', False),
+        ('PRINT "Total " + a + a', 'PRINT "Total ", a + a', False),
+    ):
+        source = DECLARED + line + "\n"
+        assert fix_text(source, mintlang.check, unsafe=not safe).text == DECLARED + fixed + "\n"
+        assert fix_text(source, mintlang.check, unsafe=False).text == (DECLARED + fixed + "\n" if safe else source)
 
 
 def test_line_is_told_it_too() -> None:

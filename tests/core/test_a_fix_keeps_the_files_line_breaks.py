@@ -11,16 +11,12 @@ from hypothesis import strategies as st
 
 from mintlang import check
 from mintlang.fixes import fix_text
+from tests.core.test_fixes import WRITTEN
 from tests.fuzzing import examples
-
-STATEMENTS = [
-    "a = 1", "PRINT a", "GOSUB init", "GOTO done", "END", "PRINT “x”", "IF a THEN", "ENDIF", "#init", "RETURN",
-    "PRINT 1 : REM mint: ignore[W103]", "PAUSE idl[0]", "count++", "// note", "LET b = 2", "PRINT POS[1]", "ELSE",
-]  # fmt: skip
 
 
 @settings(max_examples=examples(200))
-@given(st.lists(st.sampled_from(STATEMENTS), min_size=2, max_size=8), st.sampled_from(["\r\n", "\r", "\n"]))
+@given(st.lists(st.sampled_from(WRITTEN), min_size=2, max_size=8), st.sampled_from(["\r\n", "\r", "\n"]))
 def test_every_line_a_fix_adds_ends_as_the_files_lines_end(lines: list[str], newline: str) -> None:
     fixed = fix_text(newline.join(lines) + newline, check, unsafe=True).text
     assert set(re.findall(r"\r\n|\r|\n", fixed)) == {newline}

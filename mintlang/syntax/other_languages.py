@@ -122,10 +122,34 @@ def _c_operator(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnos
         operator = _C_OPERATORS.get(line.texts[first] + line.texts[first + 1])
         if operator is not None and not line.expanded[first]:
             joined = shared_span(line.starts[first], line.ends[first + 1])
-            written = _apart(line, first, first + 2, operator.replacement)
-            fix = Fix(f"Write {operator.replacement}", (Edit(joined, written),), safe=operator.safe)
+            # every one in the statement: fixed one at a time, the next would be this finding again, which --fix
+            # takes for a fix that failed; what follows a // is its comment
+            places = [first] if operator.replacement == "REM" else _joined_again(line, first, end)
+            edits = tuple(
+                Edit(shared_span(line.starts[at], line.ends[at + 1]), _apart(line, at, at + 2, operator.replacement))
+                for at in places
+            )
+            fix = Fix(f"Write {operator.replacement}", edits, safe=operator.safe)
             return mint_error(2003, joined, operator.message, fixes=(fix,))
     return None
+
+
+def _joined_again(line: LogicalLine, first: int, end: int) -> list[int]:
+    """Where the two signs joined at ``first`` are written joined again, from ``first`` up to ``end``."""
+    signs = line.texts[first] + line.texts[first + 1]
+    found: list[int] = []
+    at = first
+    while at + 1 < end:
+        if (
+            line.texts[at] + line.texts[at + 1] == signs
+            and line.ends[at] == line.starts[at + 1]
+            and not line.expanded[at]
+        ):
+            found.append(at)
+            at += 2
+        else:
+            at += 1
+    return found
 
 
 def _basic_loop(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:

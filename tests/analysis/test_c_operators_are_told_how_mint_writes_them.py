@@ -14,6 +14,7 @@ from __future__ import annotations
 import pytest
 
 import mintlang
+from mintlang.fixes import fix_text
 from tests.analysis.checking import apply, covered
 
 DECLARED = "DIM a = 1\nDIM b = 2\n"
@@ -73,6 +74,20 @@ def test_an_operator_in_an_assignment_is_told_too() -> None:
 def test_and_written_between_tokens_is_kept_apart_from_them() -> None:
     source, diagnostic = _only("IF a=1&&b=2 THEN PRINT a")
     assert apply(source, diagnostic.fixes[0].edits) == DECLARED + "IF a=1 AND b=2 THEN PRINT a\n"
+
+
+@pytest.mark.parametrize(
+    ("line", "fixed"),
+    [
+        ("IF a != 1 OR b != 2 THEN PRINT a", "IF a <> 1 OR b <> 2 THEN PRINT a"),
+        ("IF a == 1 OR b == 2 THEN PRINT a", "IF a = 1 OR b = 2 THEN PRINT a"),
+        ("IF a = 1 && b = 2 && a = b THEN PRINT a", "IF a = 1 AND b = 2 AND a = b THEN PRINT a"),
+    ],
+)
+def test_an_operator_written_twice_in_a_statement_is_fixed_at_once(line: str, fixed: str) -> None:
+    # one at a time, the second was the same finding again, which --fix took for a fix that failed: it fixed nothing
+    source = DECLARED + line + "\n"
+    assert fix_text(source, mintlang.check, unsafe=True).text == DECLARED + fixed + "\n"
 
 
 def test_two_signs_apart_are_not_taken_for_one_operator() -> None:

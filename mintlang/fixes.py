@@ -7,7 +7,8 @@ author's. Fixes whose edits overlap are applied one per round, first in the
 text first; the text is checked again after each round and fixed again, until
 nothing more applies or ``MAX_ROUNDS`` have run (a fix that undoes another
 would otherwise loop for ever). A round after which a fixed finding is still
-there (the same code and message as often as before) is undone and tried again
+there (the same code and message as often as before, up to where the last one
+fixed was: one further on is a new one the round revealed) is undone and tried again
 without that fix: a declaration that cannot declare its name is not written at
 all, rather than once a round. So is a round after which the text has more
 syntax errors than before, as ruff reverts a fix that introduces one: it is tried
@@ -111,11 +112,23 @@ def fix_text(text: str, check: Callable[[str], Sequence[Diagnostic]], *, unsafe:
 
 
 def _not_fixed(before: Sequence[Diagnostic], applied: Sequence[Diagnostic], after: Sequence[Diagnostic]) -> set[_Key]:
-    """The findings whose fix left them as often as they were, less those fixed."""
-    expected = Counter(map(_key, before))
+    """The findings whose fix left them as often as they were, less those fixed, counted up to the end of the last
+    fixed finding like them: one found past it is a new one the round revealed (the parse reaches the second
+    ``&HFF`` of a line once the first is mended), not one left where it was."""
+    edits = [edit for finding in applied for edit in finding.fixes[0].edits]  # each applied finding's one fix
+    reach: dict[_Key, int] = {}  # per kind, the end of the last finding fixed
+    for finding in applied:
+        reach[_key(finding)] = max(reach.get(_key(finding), 0), finding.span.end)
+    expected = Counter(_key(finding) for finding in before if finding.span.start <= reach.get(_key(finding), -1))
     expected.subtract(map(_key, applied))
-    found = Counter(map(_key, after))
-    return {key for key in map(_key, applied) if found[key] > expected[key]}
+    carried = {key: _carried(end, edits) for key, end in reach.items()}
+    found = Counter(_key(finding) for finding in after if finding.span.start <= carried.get(_key(finding), -1))
+    return {key for key in reach if found[key] > expected[key]}
+
+
+def _carried(offset: int, edits: Iterable[Edit]) -> int:
+    """Where ``offset`` of a text is once ``edits`` (which do not overlap) are made: moved by those before it."""
+    return offset + sum(len(edit.text) - (edit.span.end - edit.span.start) for edit in edits if edit.span.end <= offset)
 
 
 def _syntax_errors(diagnostics: Iterable[Diagnostic]) -> int:

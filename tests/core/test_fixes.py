@@ -95,6 +95,20 @@ def test_a_fix_set_aside_is_tried_again_once_the_text_has_moved_on() -> None:
     assert fix_text(once.text, check, unsafe=True).text == once.text
 
 
+@pytest.mark.parametrize(
+    ("source", "after"),
+    [
+        # the parse stops at the first &HFF (000:769-770): the second is reported only once the first is mended,
+        # with the same message, a new finding further on, not the one fixed still there
+        pytest.param("PRINT &HFF, &HFF\n", "PRINT 0xFF, 0xFF\n", id="two-hex-literals"),
+        pytest.param("DIM a\nDIM b\na = b ^ 2 + b ^ 2\n", "DIM a\nDIM b\na = POW(b, 2) + POW(b, 2)\n", id="two-powers"),
+    ],
+)
+def test_a_finding_like_the_one_fixed_further_on_is_fixed_too(source: str, after: str) -> None:
+    result = fix_text(source, check, unsafe=False)
+    assert (result.text, result.converged) == (after, True)
+
+
 def test_fixing_goes_on_until_the_text_has_nothing_more_to_fix() -> None:
     """IDL is respelt IDLE (unsafe: a guess); the next round turns IDLE[0] into IDLE.0 (the hint's safe fix)."""
     source = "PAUSE IDL[0]\n"

@@ -22,8 +22,8 @@
 
 Formatting twice gives what formatting once gives, and a formatted program parses
 to what it parsed to, whitespace and letter case aside. ``mint format`` and the
-language server's formatting both take their edits from here; ``mint format`` leaves
-a text with a syntax error as it is (``format_text``), as ruff's formatter does: what
+language server's formatting both take their edits from here, and both leave a text
+with a syntax error as it is (``first_syntax_error``), as ruff's formatter does: what
 the compiler cannot read may be words meant as text (a C comment's), not keywords.
 """
 
@@ -33,7 +33,7 @@ from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 from mintlang.codes import SYNTAX_ERRORS
-from mintlang.diagnostics import Edit, Span, with_edits
+from mintlang.diagnostics import Diagnostic, Edit, Span, with_edits
 from mintlang.dialect import Dialect
 from mintlang.semantic.units import Unit
 from mintlang.syntax.tokens import GRAMMAR_KEYWORDS, TokenKind
@@ -196,6 +196,12 @@ def _formatted(source: str, start: int, end: int, indentation: str | None, keywo
     return "".join(pieces).rstrip(" \t")
 
 
+def first_syntax_error(document: Document) -> Diagnostic | None:
+    """The first syntax error of ``document`` in the text, if it has one: such a text is not formatted."""
+    errors = (found for found in document.diagnostics if found.mint_error in SYNTAX_ERRORS)
+    return min(errors, key=lambda found: found.span.start, default=None)  # the lexer's come before the parser's
+
+
 class Unparsable(ValueError):
     """A text with a syntax error, left as it is; the message is ``line:column: CODE message`` of its first."""
 
@@ -210,8 +216,7 @@ def format_text(
     from mintlang.syntax.parser import parse  # noqa: PLC0415
 
     document = parse(text, dialect, macros=None if seen is None else parse(seen, dialect).macros)
-    errors = (found for found in document.diagnostics if found.mint_error in SYNTAX_ERRORS)
-    error = min(errors, key=lambda found: found.span.start, default=None)  # the lexer's come before the parser's
+    error = first_syntax_error(document)
     if error is not None:
         place = document.line_index.position(error.span.start)
         raise Unparsable(f"{place.line}:{place.column}: {error.code} {error.message}")

@@ -9,15 +9,16 @@ from pathlib import Path
 from lsprotocol import types
 from pygls.uris import to_fs_path
 
-from mintlang.formatting import formatting_edits, project_indent_unit
+from mintlang.formatting import first_syntax_error, formatting_edits, project_indent_unit
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
 from mintlang.settings import SettingsError, project_for
 
 
 def format_lines(snapshot: Snapshot, options: types.FormattingOptions, lines: range) -> list[types.TextEdit]:
-    """One edit per changed line among 0-based ``lines``, so edits never overlap."""
-    if snapshot.skipped is not None:
+    """One edit per changed line among 0-based ``lines``, so edits never overlap; none in a text with a syntax
+    error, as ``mint format`` leaves it."""
+    if snapshot.skipped is not None or first_syntax_error(snapshot.document) is not None:
         return []
     indentation = _project_indentation(snapshot.uri) or (" " * options.tab_size if options.insert_spaces else "\t")
     edits = formatting_edits(snapshot.model, snapshot.unit, indentation, lines)

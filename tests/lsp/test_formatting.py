@@ -71,6 +71,22 @@ async def test_formatted_text_is_stable(client, tmp_path):
     assert not edits
 
 
+async def test_a_document_with_a_syntax_error_is_left_as_it_is(client, tmp_path):
+    # as mint format leaves it: what the compiler cannot read may be words meant as text, a C comment's
+    # (Mint's comments begin with REM, 000:15506-15510), which upper case would change
+    text = "// for the next part\nfor i = 1 to 2\nnext\n"
+    uri = uri_of(tmp_path / "unreadable.mnt")
+    await open_document(client, uri, text)
+    whole = await client.text_document_formatting_async(
+        types.DocumentFormattingParams(text_document=document(uri), options=SPACES)
+    )
+    selection = types.Range(start=types.Position(line=1, character=0), end=types.Position(line=2, character=0))
+    part = await client.text_document_range_formatting_async(
+        types.DocumentRangeFormattingParams(text_document=document(uri), range=selection, options=SPACES)
+    )
+    assert (list(whole or []), list(part or [])) == ([], [])
+
+
 async def test_the_projects_format_table_wins_over_the_editors_indentation(client, tmp_path):
     # the editor writes what mint format --check accepts in CI: [format] indent-style = "tab" in mint.toml
     (tmp_path / "mint.toml").write_text('[format]\nindent-style = "tab"\n', encoding="utf-8")
@@ -130,13 +146,13 @@ async def test_keywords_in_the_text_of_a_macro_are_upper_cased_too(client, tmp_p
 
 async def test_an_indented_label_goes_to_the_margin_with_its_body_and_trailing_blanks_go(client, tmp_path):
     # the case: the body went to column 0 and its label stayed indented, trailing spaces kept
-    text = "DIM a \nGOSUB init\nEND\n  #init  \n  a = 10\t\n  loop : #inner\n   \n  endl\n  return   \n"
+    text = "DIM a \nGOSUB init\nEND\n  #init  \n  a = 10\t\n  loop : a = 1\n   \n  endl\n  return   \n"
     uri = uri_of(tmp_path / "labels.mnt")
     await open_document(client, uri, text)
     edits = await client.text_document_formatting_async(
         types.DocumentFormattingParams(text_document=document(uri), options=SPACES)
     )
-    assert apply(text, edits) == "DIM a\nGOSUB init\nEND\n#init\na = 10\nLOOP : #inner\n\nENDL\nRETURN\n"
+    assert apply(text, edits) == "DIM a\nGOSUB init\nEND\n#init\na = 10\nLOOP : a = 1\n\nENDL\nRETURN\n"
     assert all(edit.range.start.line == edit.range.end.line for edit in edits)  # one edit per changed line
 
 

@@ -59,6 +59,12 @@ class Occurrence(NamedTuple):
         relative, origin = self.relative, self.origin
         return _new(Span, (relative.start + origin, relative.end + origin)) if origin else relative
 
+    def written_in(self, source: str) -> bool:
+        """Whether the name is written where it occurs in its file's ``source``, not brought there by a macro
+        (whose name is written there instead): a fix that rewrites it must not rewrite the macro's use."""
+        span = self.span
+        return source[span.start : span.end] == self.spelling
+
 
 @record(frozen=False)
 class Symbol:

@@ -129,7 +129,7 @@ def _undeclared_variables(
         for occurrence, same_line in _by_line(model, undeclared):
             fixes = declare.get(occurrence.unit, ())
             detail = f"'{occurrence.spelling}' is not declared"
-            written = [use.span for use in same_line if _written_at(model, use.unit, use.span) == use.spelling]
+            written = [use.span for use in same_line if use.written_in(model.document(use.unit).source)]
             if was is not None:
                 detail += f": it is {was.detail}"
                 fixes = (_replace_each(written, was.rename), *fixes) if was.rename and written else fixes
@@ -459,7 +459,7 @@ def _label_fixes(
     fixes: list[Fix] = []
     by_case = {name.upper(): name for name in defined}
     close = closest(reference.spelling.upper(), by_case, likeness=0.7)
-    if close is not None and _written_at(model, unit, reference.span) == reference.spelling:
+    if close is not None and reference.written_in(model.document(unit).source):
         fixes.append(Fix(f"Change to #{by_case[close]}", (Edit(reference.span, by_case[close]),)))
     text = model.document(unit).source
     newline = line_break(text)

@@ -21,7 +21,6 @@ from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Keyword
 from mintlang.records import record
 from mintlang.semantic.events import EventKind, event_of
-from mintlang.semantic.symbols import Occurrence
 from mintlang.syntax import nodes as n
 
 _V3 = "Mint v3"
@@ -148,15 +147,9 @@ def check(facts: Facts) -> Iterator[Finding]:
                 continue
             source = model.document(unit).source
             new = f"FASTIN{event.number if event.number is not None else ''}"
-            jumps = [Edit(jump.span, new) for jump in symbol.references if _written(source, jump)]
+            jumps = [Edit(jump.span, new) for jump in symbol.references if jump.written_in(source)]
             for label in symbol.definitions:
                 # unsafe: the handler starts answering fast-latch events
                 fix = Fix(f"Rename to #{new}", (Edit(label.span, f"#{new}"), *jumps), safe=False)
                 detail = f"#{label.spelling} is {_V3}: v4 uses #{new}"
                 yield Finding(unit, own("W102", label.span, detail, fixes=(fix,), from_v3=True))
-
-
-def _written(source: str, occurrence: Occurrence) -> bool:
-    """Whether the name is written where it occurs, not brought there by a macro."""
-    span = occurrence.span
-    return source[span.start : span.end] == occurrence.spelling

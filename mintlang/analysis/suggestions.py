@@ -115,11 +115,12 @@ def keyword_like(
     type the guide names as a keyword is the keyword that starts the move, on a controller that has it."""
     if word in OTHER_BASICS_WRITTEN:
         return None
-    known = _keywords_of(controller, values=values, dialect=dialect, axes=axes, alone=alone)
     started_by = MOVE_TYPES.get(word)
-    if started_by in _keywords_of(controller, values=False, dialect=dialect):  # a controller with the move
-        return started_by
-    return OTHER_BASICS.get(word) or closest(word, known)
+    if started_by is not None and started_by in _keywords_of(controller, values=False, dialect=dialect):
+        return started_by  # on a controller that has the move
+    return OTHER_BASICS.get(word) or closest(
+        word, _keywords_of(controller, values=values, dialect=dialect, axes=axes, alone=alone)
+    )
 
 
 def not_a_keyword(word: str, meant: str | None, *, alone: bool = False) -> str:

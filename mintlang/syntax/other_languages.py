@@ -122,8 +122,8 @@ def _c_operator(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnos
         operator = _C_OPERATORS.get(line.texts[first] + line.texts[first + 1])
         if operator is not None and not line.expanded[first]:
             joined = shared_span(line.starts[first], line.ends[first + 1])
-            # every one in the statement: fixed one at a time, the next would be this finding again, which --fix
-            # takes for a fix that failed; what follows a // is its comment
+            # every one in the statement: the parse stops at the first, so the others would each be met only once
+            # the one before is mended; what follows a // is its comment
             places = [first] if operator.replacement == "REM" else _joined_again(line, first, end)
             edits = tuple(
                 Edit(shared_span(line.starts[at], line.ends[at + 1]), _apart(line, at, at + 2, operator.replacement))
@@ -230,8 +230,7 @@ def _joined_strings(line: LogicalLine, begin: int, end: int, failed: int) -> Dia
     """``PRINT "a" + b``, ``PRINT "a" & b``: PRINT's items follow one another after a comma (000:15299-15302), and
     a string is no value to add or AND. Between two strings the comma is plainly meant; after one, ``+`` may have
     summed what follows, and of ``"a" & b & c`` the second '&' would be left as an AND. One fix makes every join
-    beside a string a comma: made one at a time, the next would be this finding again, which --fix takes for a
-    fix that failed."""
+    beside a string a comma, and is safe only when each stands between two strings."""
     kinds, texts = line.kinds, line.texts
     if kinds[begin] is not _K.PRINT and texts[begin].upper() != "LINE":  # LINE takes PRINT's items: 000:15353
         return None

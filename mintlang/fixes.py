@@ -8,15 +8,15 @@ text first; the text is checked again after each round and fixed again, until
 nothing more applies or ``MAX_ROUNDS`` have run (a fix that undoes another
 would otherwise loop for ever). A round after which a fixed finding is still
 there (the same code and message as often as before, up to where the last one
-fixed was: one further on is a new one the round revealed) is undone and tried again
+fixed was) is undone and tried again
 without that fix: a declaration that cannot declare its name is not written at
 all, rather than once a round. So is a round after which the text has more
 syntax errors than before, as ruff reverts a fix that introduces one: it is tried
 again without the fixes that add one on their own (all of the round's when only
 together they do), so a guess never leaves the program unreadable to the compiler.
-Once the text has moved on without them, the fixes set aside are tried again: what
-was left may have been another finding like it that the round's other fixes
-revealed (END SUB made RETURN makes the line after it unreachable).
+A finding like a fixed one but further on is not the fixed one left in place: the
+round revealed it (the second &HFF of a line the parse reaches once the first is
+mended; the line after an END SUB made RETURN, unreachable too).
 """
 
 from __future__ import annotations
@@ -89,12 +89,8 @@ def fix_text(text: str, check: Callable[[str], Sequence[Diagnostic]], *, unsafe:
     diagnostics = check(text)
     fixed: list[Diagnostic] = []
     failed: set[_Key] = set()
-    failed_on = text  # the text the fixes in ``failed`` were set aside on
     for _ in range(MAX_ROUNDS):
         changed, applied = apply_once(text, diagnostics, unsafe=unsafe, failed=failed)
-        if not applied and failed and failed_on != text:  # the text has moved on: they may fix what is left now
-            failed = set()
-            changed, applied = apply_once(text, diagnostics, unsafe=unsafe)
         if not applied:
             return Fixed(text, tuple(fixed), tuple(diagnostics), converged=True)
         found = check(changed)
@@ -103,7 +99,6 @@ def fix_text(text: str, check: Callable[[str], Sequence[Diagnostic]], *, unsafe:
             still_there = _breaking(text, applied, check, _syntax_errors(diagnostics))
         if still_there:
             failed |= still_there  # undo the round; try it again without them
-            failed_on = text
             continue
         text, diagnostics = changed, found
         fixed.extend(applied)

@@ -85,10 +85,11 @@ def test_a_fix_that_leaves_its_finding_is_undone() -> None:
     assert (result.text, result.fixed, result.converged) == ("a = 1\n", (), True)
 
 
-def test_a_fix_set_aside_is_tried_again_once_the_text_has_moved_on() -> None:
+def test_a_finding_a_round_reveals_like_the_one_it_fixed_is_fixed_in_the_same_run() -> None:
     """END SUB becomes RETURN (000:1841-1850) in the round that removes the line END leaves unreachable; the
     line after the new RETURN is then unreachable too, a finding like the one fixed, and the removal was set
-    aside for good: a second --fix removed both lines. It is tried again after the round without it."""
+    aside for good: a second --fix removed both lines. The new one is further on, so it is not taken for the
+    fixed one left in place."""
     source = "GOSUB s\nEND\nPRINT 1\n#s\nEND SUB\nPRINT 2\n"
     once = fix_text(source, check, unsafe=True)
     assert (once.text, once.converged) == ("GOSUB s\nEND\n#s\nRETURN\n", True)

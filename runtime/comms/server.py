@@ -25,6 +25,10 @@ _RECEIVE_SIZE = 4096
 _FLUSH_SECONDS = 1.0
 _INBOX_LIMIT = 1 << 16
 """Bytes held per connection before reading pauses: a flooding client is slowed by TCP, not by memory."""
+_OUTBOX_LIMIT = 1 << 16
+"""Unsent reply bytes per connection before reading pauses: a client that never reads its replies is
+slowed by TCP as it would be by a serial line's flow control, and the queue of replies stays bounded. Each
+socket's send buffer gets the same size: left to grow, the kernel's share alone reaches megabytes."""
 
 
 @dataclass(slots=True, eq=False)
@@ -159,13 +163,13 @@ class HostPortServer:
                         self._send(connection)
 
     def _update_watches(self) -> None:
-        """Read while the client sends and the inbox has room, write while replies wait; a connection wanting
-        neither is unregistered, and closed once an ended client has had all its replies."""
+        """Read while the client sends and both the inbox and the unsent replies have room, write while replies
+        wait; a connection wanting neither is unregistered, and closed once an ended client has had all its replies."""
         with self._lock:
             wanted = [
                 (
                     connection,
-                    (selectors.EVENT_READ if not connection.ended and len(connection.inbox) < _INBOX_LIMIT else 0)
+                    (selectors.EVENT_READ if not connection.ended and self._has_room(connection) else 0)
                     | (selectors.EVENT_WRITE if connection.outbox else 0),
                 )
                 for connection in self._connections
@@ -185,6 +189,11 @@ class HostPortServer:
                 self._selector.modify(connection.sock, events, connection)
             connection.watched = events
 
+    @staticmethod
+    def _has_room(connection: _Connection) -> bool:
+        """Whether more requests may be read: the inbox is not full and the client is reading its replies."""
+        return len(connection.inbox) < _INBOX_LIMIT and len(connection.outbox) < _OUTBOX_LIMIT
+
     def _accept(self) -> None:
         try:
             sock, _ = self._listener.accept()
@@ -192,6 +201,7 @@ class HostPortServer:
             return
         sock.setblocking(False)
         sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+        sock.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, _OUTBOX_LIMIT)
         with self._lock:
             self._connections.append(_Connection(sock))
 

@@ -61,6 +61,7 @@ OTHER_BASICS_WRITTEN = {
     "ELSEIF": f"an IF block has no ELSEIF: {NESTED_IF}",
     "LET": "Mint assigns without LET: leave it out",  # newPos = 2 (000:917-922)
     "SUB": "a subroutine begins with its label, #name, ends with RETURN and is called by GOSUB name",  # 000:1841-1850
+    "CONST": "a named constant is a macro: DEFINE name = value",  # 000:1460-1462
     "DELAY": _WAIT,
     "SLEEP": _WAIT,
 }

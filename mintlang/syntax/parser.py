@@ -547,6 +547,10 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
         if named > begin and kinds[named] in _KEYWORD_KINDS:
             word = words.quoted(line.texts[named])
             return _error(2003, line.token_span(named), f"{word} is a keyword and cannot be declared as a variable")
+        if index == begin + 2 and not at_end and kinds[index] is _K.COMMA:  # DIM a, b: one name per DIM
+            listed = _dim_list(line, begin, end)
+            if listed is not None:
+                return listed
         if index == begin + 2 and not at_end and line.texts[index].upper() == "AS":  # every number is one type
             return _error(2003, span, "DIM takes no type: every Mint variable holds a floating point number")
         if index == begin + 2 and not at_end and kinds[index] is _K.LSQB:  # DIM a[10]: DIM a(10) (000:9167)
@@ -583,6 +587,22 @@ def _split_by_a_macro(line: LogicalLine, begin: int, end: int) -> str:
         "; a ':' from a macro's text ends the statement before it: a REM after a DEFINE's value goes without"
         " the ':', which stays in the macro"
     )
+
+
+def _dim_list(line: LogicalLine, begin: int, end: int) -> Diagnostic | None:
+    """``DIM a, b, c`` as other BASICs write it: each name has its DIM (000:911-913), and the fix writes them as
+    statements of their own on the line, separated by ':' (000:5687), so no line moves."""
+    kinds = line.kinds
+    names = range(begin + 1, end, 2)
+    commas = range(begin + 2, end, 2)
+    if (end - begin) % 2 or any(kinds[at] is not _K.NAME for at in names) or any(line.expanded[begin:end]):
+        return None
+    if any(kinds[at] is not _K.COMMA for at in commas):
+        return None
+    written = " : ".join(f"DIM {line.texts[at]}" for at in names)
+    edits = tuple(Edit(shared_span(line.ends[at - 1], line.starts[at + 1]), " : DIM ") for at in commas)
+    fix = Fix("Give each name its own DIM", edits, safe=True)
+    return _error(2003, line.token_span(begin + 2), f"one variable per DIM: {written}", fixes=(fix,))
 
 
 def _square_dimension(line: LogicalLine, begin: int, opening: int, end: int) -> Diagnostic:

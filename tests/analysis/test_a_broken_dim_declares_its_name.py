@@ -53,3 +53,25 @@ def test_an_array_sized_in_square_brackets_is_told_the_round_ones_and_fixed() ->
     assert "round brackets: DIM table(...)" in error.message
     (fix,) = error.fixes
     assert fix.safe and mintlang.diagnostics.with_edits(source, fix.edits) == "DIM table(10)\ntable(1) = 5\n"
+
+
+def test_no_name_of_a_dim_list_cascades() -> None:
+    # each of the names a list meant to declare is the one syntax error's, not an error 3001 at each use
+    source = "DIM layer, row, col\nrow = 1\ncol = row\n"
+    assert [code for code, _ in _found(source)] == ["E2003"]
+
+
+def test_a_dim_list_is_told_one_name_per_dim_and_fixed() -> None:
+    # one name per DIM (000:911-913); ':' separates statements on a line (000:1560), so the lines stay as they are
+    source = "DIM layer, row,col\nlayer = row + col\n"
+    (error,) = mintlang.check(source)
+    assert (error.code, error.span.start) == ("E2003", len("DIM layer"))
+    assert "one variable per DIM: DIM layer : DIM row : DIM col" in error.message
+    (fix,) = error.fixes
+    assert fix.safe
+    assert mintlang.diagnostics.with_edits(source, fix.edits) == "DIM layer : DIM row : DIM col\nlayer = row + col\n"
+
+
+def test_a_list_of_values_after_an_equals_is_no_list_of_names() -> None:
+    (error,) = mintlang.check("DIM a = 1, 2\n")
+    assert "one variable per DIM" not in error.message

@@ -48,19 +48,19 @@ def check(facts: Facts) -> Iterator[Finding]:
     yield from _macros(model)
 
 
-_BROKEN_DIM = re.compile(r"\s*DIM\s+([A-Za-z_][A-Za-z0-9_]*)", re.IGNORECASE)
+_BROKEN_DIM = re.compile(r"\s*DIM\s+([A-Za-z_][A-Za-z0-9_]*(?:\s*,\s*[A-Za-z_][A-Za-z0-9_]*)*)", re.IGNORECASE)
 
 
 def _broken_dims(facts: Facts) -> dict[str, tuple[Unit, int]]:
-    """The names a DIM with a syntax error meant to declare (``DIM x As Integer``), each with where its first such
-    DIM starts: its syntax error is the one diagnostic, not an error 3001 at every later use of the name."""
+    """The names a DIM with a syntax error meant to declare (``DIM x As Integer``, ``DIM a, b``), each with where
+    its first such DIM starts: its syntax error is the one diagnostic, not an error 3001 at every later use."""
     sources = {unit: document.source for unit, document in facts.model.documents()}
     found: dict[str, tuple[Unit, int]] = {}
     for unit, line, statement in facts.statements(n.SyntaxError_):
         start, end = line.span(statement.span)
         meant = _BROKEN_DIM.match(sources[unit], start, end)
-        if meant is not None:
-            found.setdefault(n.identity(meant.group(1)), (unit, start))
+        for name in meant.group(1).split(",") if meant is not None else ():
+            found.setdefault(n.identity(name.strip()), (unit, start))
     return found
 
 

@@ -167,10 +167,11 @@ class BitTest(Rule):
 
 class ModeTest(BitTest):
     """v3 MODE returned one mode number; v4 AXISMODE is a bit pattern, so ``MODE = _jog``
-    becomes ``(AXISMODE & _mdJOG) <> 0``, or ``(AXISMODE & _mdJOG)`` as a condition. Mode 18
-    (gearing, clutch finished) becomes ``AXISMODE = _mdFOLLOW``: during a v4 clutch the FLY bit is
-    set too (v4:14791-14793), so only the exact pattern says the clutch is over. Modes with no v4
-    bit (5 pulse following, 11, 17), order comparisons and arithmetic on MODE are flagged."""
+    becomes ``(AXISMODE & _mdJOG) <> 0``, or ``(AXISMODE & _mdJOG)`` as a condition. Modes 9 and 18
+    (following, gearing) become ``AXISMODE = _mdFOLLOW``: v3 MODE read 8 during an OFFSET on the follow
+    and 15 during a clutch (v3:3704-3709, v3:3736), where v4 keeps the FOLLOW bit and adds OFFSET or FLY
+    (v4:7119-7120, v4:14791-14793), so only the exact pattern says the offset or the clutch is over.
+    Modes with no v4 bit (5 pulse following, 11, 17), order comparisons and arithmetic on MODE are flagged."""
 
     id = "S-MODE"
     summary = (
@@ -181,7 +182,7 @@ class ModeTest(BitTest):
     keyword = "MODE"
     target = "AXISMODE"
     bits = MODE_BITS
-    exact = frozenset({18})
+    exact = frozenset({9, 18})
 
     def _special(
         self, context: Context, file: FileView, statement: n.Statement, parent: n.Expression | None, value: int | None

@@ -4,6 +4,7 @@ Mint assigns with ``=`` alone and knows only ``+ - * /`` and MOD as arithmetic (
 ``count += 1`` (and ``count++``) is told ``count = count + 1``, with that as a safe fix: the target and the operator
 are both written out, and a right-hand side of more than one token is bracketed, as ``*=`` binds it.
 C's ``!=`` and ``==`` are told Mint's ``<>`` and ``=`` (000:1256-1263), ``&&`` and ``||`` its AND and OR, ``//`` REM;
+``A NOT = B`` is told ``<>`` (000:14724-14729);
 Visual Basic's ``DO .. LOOP UNTIL`` Mint's loops (000:1707, 1747, 1778, 1797) and ``ELSE IF`` a nested IF block;
 strings joined with ``+`` or ``&`` PRINT's comma; ``a ^ 2`` POW(a, 2); ``END SUB`` RETURN; ``&H1F`` 0x1F.
 """
@@ -36,6 +37,7 @@ def other_languages_habit(
         _compound_assignment(line, begin, end, failed)
         or _increment(line, begin, end, failed)
         or _c_operator(line, begin, end, failed)
+        or _not_equals(line, end, failed)
         or _basic_loop(line, begin, end, failed)
         or _else_if(line, begin, end, failed)
         or _end_sub(line, begin, end, failed)
@@ -132,6 +134,19 @@ def _c_operator(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnos
             fix = Fix(f"Write {operator.replacement}", edits, safe=operator.safe)
             return mint_error(2003, joined, operator.message, fixes=(fix,))
     return None
+
+
+def _not_equals(line: LogicalLine, end: int, failed: int) -> Diagnostic | None:
+    """``IF A NOT = B``: NOT (or ``!`` apart from the ``=``; joined, it is C's ``!=``, told above) before the ``=``
+    of a comparison, the grammar failing at the NOT (000:14724-14729)."""
+    kinds = line.kinds
+    if not (failed + 1 < end and kinds[failed] is _K.NOT and kinds[failed + 1] is _K.EQUAL):
+        return None
+    if line.expanded[failed] or line.expanded[failed + 1]:
+        return None  # a macro's text is not where the fix would write
+    words = shared_span(line.starts[failed], line.ends[failed + 1])
+    fix = Fix("Write <>", (Edit(words, "<>"),), safe=True)
+    return mint_error(2003, words, "Mint writes 'not equal to' as <>, with no NOT before the '='", fixes=(fix,))
 
 
 def _joined_again(line: LogicalLine, first: int, end: int) -> list[int]:

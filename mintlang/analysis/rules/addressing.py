@@ -280,7 +280,7 @@ def _axes(use: KeywordUse, scope: LineScope, name: str) -> Iterator[Finding]:
         for item in selector.items[:1]:
             yield from _axis_number(use.unit, item, scope)
     else:
-        yield from _axis_list(use.unit, selector, scope)
+        yield from _axis_list(use.unit, selector, scope, use.keyword.spelling)
     listed = 1 if selector.dot else len(selector.axes)
     if name in CIRCLES:
         yield from _circle(use, selector, name, listed)
@@ -431,7 +431,8 @@ def _past(statement: n.KeywordStatement, most: int) -> Span | None:
     return next((value.span for value in values[most:] if value is not None), statement.span)
 
 
-def _axis_list(unit: Unit, selector: n.Selector, scope: LineScope) -> Iterator[Finding]:
+def _axis_list(unit: Unit, selector: n.Selector, scope: LineScope, keyword: str | None) -> Iterator[Finding]:
+    """The axes listed in brackets after ``keyword`` as written (None: AXES, whose list has no dot form)."""
     axes = selector.axes
     too_many = len(axes) > scope.controller.axis_count
     if too_many:
@@ -443,7 +444,11 @@ def _axis_list(unit: Unit, selector: n.Selector, scope: LineScope) -> Iterator[F
             yield Finding(unit, mint_error(2001, selector.span, _missing_axis(place, len(axes))))
             continue
         if not isinstance(item, n.Number | n.VariableRef | n.ConstantRef):
-            detail = "an axis number in brackets must be a number or a simple variable (use the dot: KW.(a+1))"
+            written = scope.syntax.text[item.span.start : item.span.end]
+            advice = f"give {written} to a variable first"  # 000:584-589
+            if keyword is not None and len(axes) == 1:  # one axis: the dot takes an expression (000:694-700)
+                advice = f"write {keyword}.({written}), or {advice}"
+            detail = f"an axis number in brackets must be a number or a simple variable: {advice}"
             yield Finding(unit, mint_error(2003, item.span, detail))
             continue
         axis = constant_integer(item, scope.dialect)
@@ -553,7 +558,7 @@ def _axes_statement(unit: Unit, statement: n.Axes, scope: LineScope) -> Iterator
     if statement.selector is None:
         yield from axes_alone(unit, statement)
         return
-    yield from _axis_list(unit, statement.selector, scope)
+    yield from _axis_list(unit, statement.selector, scope, None)
 
 
 def axes_alone(unit: Unit, statement: n.Axes) -> Iterator[Finding]:

@@ -68,6 +68,8 @@ class NotSimulated(Exception):
 class ErrorStyle(Protocol):
     """How a dialect numbers errors for ``ERR`` and words the messages the controller prints."""
 
+    stops_compiling: frozenset[str]  # the toolchain's own checks (W…) whose finding the compiler also stops on
+
     def number(self, error: MintError) -> int | None:
         """What ``ERR`` reads after ``error``; None when ``#ONERROR`` cannot take it and the run ends.
 
@@ -84,9 +86,10 @@ class ErrorStyle(Protocol):
         """The message of a run-time error at ``line`` of ``unit`` (``"program"`` or ``"configuration"``)."""
         ...
 
-    def compiled(self, code: int, unit: str, line: int, explanation: str | None = None) -> str:
-        """The message of compile error ``code``, which stops ``unit`` before it runs (``explanation``: the
-        checker's own words, for the report; without it the message is as the controller prints it)."""
+    def compiled(self, code: int | str, unit: str, line: int, explanation: str | None = None) -> str:
+        """The message of compile error ``code`` (an error number, or one of ``stops_compiling``), which stops
+        ``unit`` before it runs (``explanation``: the checker's own words, for the report; without it the
+        message is as the controller prints it)."""
         ...
 
     def motion_error(self, axis: int, bits: int) -> MintError:
@@ -96,6 +99,8 @@ class ErrorStyle(Protocol):
 
 class V4Errors:
     """Mint v4: ``ERR`` is the error's own number; ``R0003: PROGRAM Data specified out of range [line 20]``."""
+
+    stops_compiling: frozenset[str] = frozenset()  # a line too long does not download, no error (000:18454-18456)
 
     def number(self, error: MintError) -> int | None:
         return error.code

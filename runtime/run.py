@@ -17,7 +17,7 @@ from functools import partial
 
 import mintlang
 from mintlang.controllers import ControllerProfile
-from mintlang.diagnostics import Span
+from mintlang.diagnostics import Diagnostic, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.records import record
@@ -64,7 +64,7 @@ class RunResult:
 class _CompileError:
     """The first error the controller's compiler finds, which stops the run before the file it is in starts."""
 
-    code: int
+    code: int | str  # the error's number, or the code of a check the dialect's compiler stops on (W111 in v3)
     unit: Unit
     line: int
     statement: str
@@ -114,12 +114,13 @@ def _compile_error(analysis: mintlang.Analysis, errors: ErrorStyle) -> _CompileE
     """The first error the compiler finds: the configuration is compiled (and run) first, then the program
     (000:269-271)."""
     model = analysis.model
-    found: list[tuple[int, int, int, Unit, Span, str]] = []  # (file order, offset, code, unit, span, explanation)
+    found: list[tuple[int, int, int | str, Unit, Span, str]] = []  # (file order, offset, code, unit, span, explanation)
     for unit, _ in model.documents():
         diagnostics = analysis.configuration if unit is Unit.CONFIGURATION else analysis.program
-        first = next((d for d in diagnostics if d.mint_error is not None and not d.at_run_time), None)
-        if first is not None and first.mint_error is not None:
-            found.append((_ORDER[unit], first.span.start, first.mint_error, unit, first.span, first.message))
+        first = next((d for d in diagnostics if _stops_compiling(d, errors)), None)
+        if first is not None:
+            code = first.mint_error if first.mint_error is not None else first.code
+            found.append((_ORDER[unit], first.span.start, code, unit, first.span, first.message))
     if not found:
         return None
     _, _, code, unit, span, explanation = min(found, key=lambda problem: problem[:2])
@@ -130,6 +131,14 @@ def _compile_error(analysis: mintlang.Analysis, errors: ErrorStyle) -> _CompileE
     text = document.source[start : _LINE_END.search(document.source, start).start()].strip()
     message = errors.compiled(code, unit.value, line, explanation)
     return _CompileError(code, unit, line, text, message, errors.compiled(code, unit.value, line))
+
+
+def _stops_compiling(diagnostic: Diagnostic, errors: ErrorStyle) -> bool:
+    """Whether the compiler stops on what ``diagnostic`` reports: an error it raises before the program runs, or a
+    check of the toolchain's that the dialect's compiler makes too (a v3 line past 127 characters)."""
+    if diagnostic.mint_error is not None:
+        return not diagnostic.at_run_time
+    return diagnostic.code in errors.stops_compiling
 
 
 def _not_run(message: str, scenario: Scenario, code: int | None = None) -> RunResult:
@@ -237,28 +246,27 @@ def _read_leniently(analysis: mintlang.Analysis) -> tuple[str, ...]:
     The controller knows only plain quotes, but text copied from the guide (or a word processor) carries
     curly ones where plain ones were meant (W101): the simulator runs the program as ``mint check --fix``
     would write it. A line longer than the controller takes (W111) keeps the program from downloading
-    (000:18454-18456), or a Mint v3 one from compiling (001:12999-13001); the simulator runs it as written.
-    Either way it says so, so that neither tool passes such a program in silence (BEHAVIOUR.md)."""
+    (000:18454-18456); the simulator runs it as written. Either way it says so, so that neither tool passes
+    such a program in silence (BEHAVIOUR.md). A Mint v3 compiler stops on that line (001:12999-13001), and so
+    does the run: what the dialect's compiler stops on is no note."""
+    stops_compiling = semantics(analysis.model.program.dialect).errors(lambda axis: 0).stops_compiling
     notes: list[str] = []
     for unit, document in analysis.model.documents():
         diagnostics = analysis.configuration if unit is Unit.CONFIGURATION else analysis.program
         found = {(document.line_index.position(d.span.start).line, d.code): d.message for d in diagnostics}
         for (line, code), message in sorted(found.items()):
-            if (note := _lenient_note(code, message, analysis.model.program.dialect)) is not None:
+            if code not in stops_compiling and (note := _lenient_note(code, message)) is not None:
                 notes.append(f"{unit.value} line {line}: {note}")
     return tuple(notes)
 
 
-def _lenient_note(code: str, message: str, dialect: Dialect) -> str | None:
-    """The note for a diagnostic of ``code`` the controller of ``dialect`` would refuse and the simulator runs
-    past; else None."""
+def _lenient_note(code: str, message: str) -> str | None:
+    """The note for a diagnostic of ``code`` the controller would refuse and the simulator runs past; else None."""
     if code == "W101":
         return (
             "typographic quotes read as plain ones; the controller accepts only plain quotes (mint check --fix"
             " writes them)"
         )
-    if code == "W111" and dialect is Dialect.V3:
-        return f'{message}, and would stop compiling with "Line too long" (001:12999-13001); run here as written'
     if code == "W111":
         return f"{message}, and would not download the program (000:18454-18456); run here as written"
     return None

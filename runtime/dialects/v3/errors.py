@@ -55,6 +55,8 @@ _PROGRAMMING: Mapping[int, str] = MappingProxyType(
         3007: "Invalid Command",
     }
 )
+# the toolchain's checks the v3 compiler stops on -> chapter 11's message: a line past 127 characters (001:12999-13001)
+_COMPILER_CHECKS: Mapping[str, str] = MappingProxyType({"W111": "Line too long"})
 # AXISERROR bits -> (ERR, message), the first that is latched (ascending ERR)
 _MOTION: tuple[tuple[int, int, str], ...] = (
     (ER_FOLLOWING, 11, "Following Error"),
@@ -67,6 +69,8 @@ _UNITS = {"program": "Program", "configuration": "Config"}
 
 class V3Errors:
     """The v3 style; ``latched`` reads the errors latched on an axis (its ``AXISERROR`` bits)."""
+
+    stops_compiling = frozenset(_COMPILER_CHECKS)
 
     def __init__(self, latched: Callable[[int], int]) -> None:
         self.latched = latched
@@ -105,8 +109,8 @@ class V3Errors:
             text += f" ({error.detail})"
         return text
 
-    def compiled(self, code: int, unit: str, line: int, explanation: str | None = None) -> str:
-        title = _PROGRAMMING.get(code) or error_title(code)
+    def compiled(self, code: int | str, unit: str, line: int, explanation: str | None = None) -> str:
+        title = _COMPILER_CHECKS[code] if isinstance(code, str) else _PROGRAMMING.get(code) or error_title(code)
         text = f"ERROR: {_UNITS[unit]}: {title} at line {line}"
         return f"{text} ({explanation})" if explanation else text
 

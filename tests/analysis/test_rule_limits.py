@@ -11,16 +11,18 @@ def declarations(count: int) -> str:
     return "".join(f"DIM v{i}\n" for i in range(count)) + "".join(f"PRINT v{i}\n" for i in range(count))
 
 
-def test_the_256th_variable_is_error_3002_on_nextmove_pci() -> None:
-    # line 1909 (3.9): 255 variables; line 19085: #3002 Too many variables
-    assert found(declarations(255)) == []
-    assert found(declarations(256)) == [("E3002", ERROR, 256)]
+def test_the_254th_variable_is_error_3002_on_nextmove_pci() -> None:
+    # lines 866-868 and 1907-1913: the variable stack holds 255 variables; lines 18465-18466: COMMS and
+    # GROUPCOMMS are always on it, one place each (line 1058-1059: an array takes one); 255 - 2 = 253
+    # for the program; line 19085: #3002 Too many variables
+    assert found(declarations(253)) == []
+    assert found(declarations(254)) == [("E3002", ERROR, 254)]
 
 
-def test_the_101st_variable_is_error_3002_on_nextmove_pc() -> None:
-    # line 1909 (3.9): NextMove PC 100 variables
-    assert found(declarations(100), controller="nextmove-pc") == []
-    assert found(declarations(101), controller="nextmove-pc") == [("E3002", ERROR, 101)]
+def test_the_99th_variable_is_error_3002_on_nextmove_pc() -> None:
+    # line 1913 (3.9): NextMove PC 100 variables, two of them COMMS and GROUPCOMMS (18465-18466)
+    assert found(declarations(98), controller="nextmove-pc") == []
+    assert found(declarations(99), controller="nextmove-pc") == [("E3002", ERROR, 99)]
 
 
 def test_the_256th_macro_is_a_stack_overflow() -> None:

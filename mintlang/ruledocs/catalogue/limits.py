@@ -53,15 +53,16 @@ GROUP = Group(
         ),
         RuleDoc(
             3002,
-            catches="More variables than the controller holds (255; 100 on NextMove PC), counting the "
-            "configuration file's and the program's together. An array counts as one variable.",
+            catches="More variables than the controller's table leaves a program (253 of its 255; 98 of 100 on "
+            "NextMove PC: COMMS and GROUPCOMMS always take two), counting the configuration file's and the "
+            "program's together. An array counts as one variable.",
             why="Variables live in a table of a fixed size; the compiler rejects the program when it is full.",
             example=Example(
-                before=_numbered("DIM v{n}\n", 101),
-                after="DIM v(101)\n",
+                before=_numbered("DIM v{n}\n", 99),
+                after="DIM v(99)\n",
                 controller=_PC,
             ),
-            manual=("v4:19085", "v4:1904"),
+            manual=("v4:19085", "v4:1904", "v4:18465"),
             fix="Gather related values in an array.",
             safety=FixSafety.NONE,
         ),

@@ -12,7 +12,9 @@ subroutine) before the next move, GO or PAUSE; and ``PAUSE`` on TRIGGER. A loop'
 again from the state its end leaves: ``LOOP : MOVER = 10 : GO : OUT1 = 1 : ENDL`` waits at each GO
 after the first, so OUT1 is flagged too (its body is read twice, a nested loop's once more). Setting
 up the next move (MASTERDISTANCE, SPEED …) is not flagged: it applies to the move
-loaded next in both versions (v4:3805-3816). Also flagged: a move loaded on an axis
+loaded next in both versions (v4:3805-3816). The GO right after an OFFSET or a CAM on its line
+is not v3's: those started without one (v3:10402, v3:3893-3897) and S-OFFSET and S-CAM write the
+GO v4 needs (v4:14780, v4:3872), at which no v3 run waited. Also flagged: a move loaded on an axis
 that is still homing (no PAUSE IDLE since its HOME), which v3's blocking GO
 sequenced and v4 refuses with error 10 (v4:11473-11475).
 """
@@ -90,6 +92,9 @@ class GoTiming(Rule):
         self, context: Context, file: FileView, line: n.PlacedLine, statement: n.Statement, state: _Timing
     ) -> Iterator[Action]:
         start = line.origin + statement.span.start
+        loaded, state.loaded = state.loaded, line if _started_without_go(statement) else None
+        if loaded is line and _is_go(statement):
+            return  # the GO the migration added: v3 ran on at once
         if _moves(statement):
             state.delayed = False
         elif state.delayed and _visible(statement):
@@ -107,7 +112,7 @@ class GoTiming(Rule):
                 yield self.flag(file, line.span(statement.span), _TRIGGER)
             if _mentions(statement, "IDLE") or _mentions(statement, "HOME"):
                 state.running, state.homing = _IDLE, _IDLE
-        elif isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "GO":
+        elif _is_go(statement):
             axes = addressed_axes(context, file, statement, start)
             state.delayed = _overlaps(state.running, axes)
             state.running = _started(state.running, axes)
@@ -120,6 +125,20 @@ class _Timing:
     running: Running = _IDLE
     homing: Running = _IDLE
     delayed: bool = False
+    loaded: n.PlacedLine | None = None  # the line whose last statement read started a move v3 ran without GO
+
+
+def _is_go(statement: n.Statement) -> bool:
+    return isinstance(statement, n.KeywordStatement) and statement.keyword.keyword == "GO"
+
+
+def _started_without_go(statement: n.Statement) -> bool:
+    """An OFFSET or a cam written: v3 started it at once (v3:10402, v3:3893-3897)."""
+    return (
+        isinstance(statement, n.KeywordStatement)
+        and statement.keyword.keyword in {"OFFSET", "CAM", "CAMA"}
+        and statement.values is not None
+    )
 
 
 def _moves(statement: n.Statement) -> bool:

@@ -35,6 +35,7 @@ OWN_CODES: dict[str, str] = {
     "W119": "Reverse software limit not below the forward one",
     "W120": "File not checked",
     "W121": "POW index from 0 to 1 on NextMove",
+    "W122": "Fewer values than axes listed",
     "I201": "Faster dot syntax",
 }
 

@@ -31,6 +31,7 @@ from mintlang.analysis.rules import (
     keyword_usage,
     limits,
     line_length,
+    missing_axis_values,
     operands,
     pow_index,
     print_format,
@@ -97,6 +98,12 @@ RULES: tuple[Rule, ...] = (
         "empty-values",
         each_line=empty_values.each_line,
         looks_at=LineParts(frozenset({n.Pause, n.KeywordStatement, n.FunctionStatement})),
+    ),
+    Rule(
+        "missing-axis-values",
+        each_line=missing_axis_values.each_line,
+        dialects=frozenset({Dialect.V3, Dialect.V4}),  # MintMT's guide does not say how its (0,1) shares values
+        looks_at=LineParts(frozenset({n.KeywordStatement})),
     ),
     Rule(
         "operands",

@@ -120,5 +120,22 @@ GROUP = Group(
             fix="Swap the two values, or correct the one that was mistyped.",
             safety=FixSafety.NONE,
         ),
+        RuleDoc(
+            "W122",
+            catches="One value after the '=' of a keyword whose brackets list two axes or more, with no ';' "
+            "after it (`DRIVEENABLE[0,1,2] = 1`). Two values or more are not reported: the guide's own "
+            "`MOVEA[0,1,2] = 10,20` moves the first two axes only, on purpose.",
+            why="The values go to the listed axes in order, so the one value sets the first axis only and the "
+            "others keep what they had; a ';' after the last value is what gives it to every axis left. A "
+            "drive left disabled or a speed left at its old value is found only when the machine runs.",
+            example=Example(
+                before="DRIVEENABLE[0,1,2] = 1\n",
+                after="DRIVEENABLE[0,1,2] = 1;\n",
+            ),
+            manual=("v4:630", "v4:656", "v4:578", "v3:1109"),
+            fix="Write ';' after the value to give it to every axis listed, or list only the axis meant. The "
+            "fix writes the ';': it changes what the line does, so it is unsafe.",
+            safety=FixSafety.UNSAFE,
+        ),
     ),
 )

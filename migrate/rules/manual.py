@@ -202,15 +202,17 @@ class PowerUpAgain(ManualKeywords):
     """v3 DEFAULT put back v3's power-up values (v3:7247-7251) and left the dedicated limit, home,
     stop and error inputs and the amplifier enable as the hardware had them; v4 DEFAULT puts back
     v4's values and unassigns the inputs and the drive enable output the prologue asks for
-    (v4:9004-9059), which nothing here can write for the user."""
+    (v4:9004-9059), which nothing here can write for the user. v3 DEFAULT also reset what RESET
+    resets, the guide telling them apart only by the parameters RESET leaves (v3:7244-7251): the
+    outputs, TIME and IMASK (v3:11438-11442), which v4 DEFAULT leaves."""
 
     id = "X-DEFAULT"
     summary = "DEFAULT -> manual (v4 DEFAULT unassigns the inputs and the drive enable output, sets v4's values)"
-    evidence = "v3:7247-7251, v3:9989, v3:8741, v3:11797; v4:9004-9059"
+    evidence = "v3:7244-7251, v3:9989, v3:8741, v3:11797, v3:11438-11442; v4:9004-9059"
     keywords = frozenset({"DEFAULT"})
     reason = (
-        "v4 DEFAULT also unassigns the limit, home, stop and error inputs and the drive enable output "
-        "and sets v4's defaults (FOLERRORFATAL 1000, IDLEPOS 1000, SPEED 20000): write them again after it"
+        "v4 DEFAULT unassigns the limit, home, stop, error inputs and drive enable output, sets v4's values "
+        "(FOLERRORFATAL 1000, IDLEPOS 1000, SPEED 20000), keeps OUT, TIME, IMASK (v3 cleared them): redo them after it"
     )
 
 

@@ -6,7 +6,9 @@ limit, home, stop and error inputs and the amplifier enable are the controller's
 HOMEINPUT, LIMITFORWARDINPUT, LIMITREVERSEINPUT and STOPINPUT to -1, none, and FOLERRORFATAL,
 IDLEPOS and SPEED to 1000, 1000 and 20000 (000:9004-9059), where v3's power-up values are 16000,
 16000 and 40000 (001:9989, 8741, 11797). After a migrated DEFAULT the axis runs without the limit
-switches the prologue assigned, and at v4's speed.
+switches the prologue assigned, and at v4's speed. v3 DEFAULT also reset what RESET resets, the guide
+telling the two apart only by the parameters RESET leaves (001:7244-7251): the outputs cleared, TIME 0
+and IMASK 255 (001:11438-11442), which v4 DEFAULT does not list (000:9004-9059).
 """
 
 from __future__ import annotations
@@ -15,8 +17,8 @@ from mintlang.migrate import migrate
 from tests.migrate.helpers import flagged
 
 REASON = (
-    "DEFAULT: v4 DEFAULT also unassigns the limit, home, stop and error inputs and the drive enable output "
-    "and sets v4's defaults (FOLERRORFATAL 1000, IDLEPOS 1000, SPEED 20000): write them again after it"
+    "DEFAULT: v4 DEFAULT unassigns the limit, home, stop, error inputs and drive enable output, sets v4's values "
+    "(FOLERRORFATAL 1000, IDLEPOS 1000, SPEED 20000), keeps OUT, TIME, IMASK (v3 cleared them): redo them after it"
 )
 
 

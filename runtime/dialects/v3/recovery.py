@@ -10,7 +10,7 @@
   the limits and cancels, ``ENLIMIT`` watches them again (001:7433-7470). Each switches
   the enable on again, so a handler can ``CANCEL : RETURN`` and move on (001:5037-5066).
 * ``CONFIG = _servo`` or ``_off`` issues a ``RESET`` and restores the rates (001:6931-6939);
-  ``DEFAULT`` restores every v3 power-up value (001:7227-7258); ``ENABLE`` switches the
+  ``DEFAULT`` restores every v3 power-up value and resets what ``RESET`` does (001:7227-7258); ``ENABLE`` switches the
   enable (001:7547-7576); ``CONTON``/``CONTOFF`` contour on the whole card (001:6995-7033).
 """
 
@@ -111,9 +111,14 @@ class V3Recovery:
         return command
 
     def _default(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
-        self.v4.command("DEFAULT")(channels, arguments)
+        """The power-up values, and what RESET resets besides the axes: the guide tells DEFAULT from RESET only
+        by the parameters RESET leaves (001:7244-7251). The enable is left as it is (001:7244 against 11411)."""
+        self.v4.command("DEFAULT")(channels, arguments)  # the move, the errors, POS, ENCODER, the limits watched
         for axis in self.motion.addressed(channels):
             power_up(axis)
+        self._contouring(0.0)(None, ())
+        for reset in self.on_reset:
+            reset()
         return False
 
     def _config(self, channel: int | None, value: float) -> None:

@@ -43,7 +43,7 @@ def table_bounds(keyword: str, controller: Controller, dialect: Dialect = Dialec
     supplement's."""
     record = database().keywords_of(dialect).get(keyword)
     row = attributes_for(record, controller, dialect) if record is not None else None
-    found = narrowed(keyword, row.range if row is not None else None)
+    found = narrowed(keyword, row.range if row is not None else None, controller)
     bounds = UNBOUNDED if found is None else bounds_of(found)
     return replace(bounds, whole=True) if whole_only(keyword, dialect) else bounds
 

@@ -75,9 +75,29 @@ NARROWED: Mapping[str, ValueRange] = MappingProxyType(
 """Ranges an entry's text narrows below what its table prints, which both tools take instead of the table's."""
 
 
-def narrowed(keyword: str, printed: ValueRange | None) -> ValueRange | None:
-    """The range ``mint check`` and ``mint-run`` hold ``keyword``'s values to where its table prints ``printed``."""
-    return NARROWED.get(keyword, printed) if printed is not None else None
+def _motor_types(*values: float) -> ValueRange:
+    return ValueRange(", ".join(f"{value:g}" for value in values), None, None, False, allowed=values)
+
+
+NARROWED_ON: Mapping[tuple[str, Controller], ValueRange] = MappingProxyType(
+    {
+        # CONFIG's motor types ticked for each NextMove (000:8431-8443), within the row's "0 - 5" for all three
+        # (000:8420): stepper on PCI and PC, PWM on PC alone (its PWMONTIME, 000:17742), virtual on all three,
+        # 4 "Reserved" on none. NextMove BX has no stepper outputs (000:4050-4052).
+        ("CONFIG", Controller.NEXTMOVE_PCI): _motor_types(0.0, 1.0, 2.0, 5.0),
+        ("CONFIG", Controller.NEXTMOVE_PC): _motor_types(0.0, 1.0, 2.0, 3.0, 5.0),
+        ("CONFIG", Controller.NEXTMOVE_BX): _motor_types(0.0, 1.0, 5.0),
+    }
+)
+"""Ranges an entry's text narrows for one controller below the row its table prints for several."""
+
+
+def narrowed(keyword: str, printed: ValueRange | None, controller: Controller) -> ValueRange | None:
+    """The range ``mint check`` and ``mint-run`` hold ``keyword``'s values to on ``controller`` where its table
+    prints ``printed``."""
+    if printed is None:
+        return None
+    return NARROWED_ON.get((keyword, controller), NARROWED.get(keyword, printed))
 
 
 _WHOLE_WITHOUT_CONSTANTS = frozenset({"BANK", "CAMSTART", "CAMEND", "MASTERCHANNEL", "FOLLOWDENOM", "MOVEBUFFERSIZE"})

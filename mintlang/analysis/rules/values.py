@@ -44,7 +44,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         attributes = supplements.attributes_for(keyword, controller, dialect) if keyword else None
         # a scale factor is positive whatever its table prints, or where it prints none (ServoNode 51's SCALE)
         positive = name in supplements.POSITIVE_ONLY
-        limits = supplements.narrowed(name, attributes.range if attributes is not None else None)
+        limits = supplements.narrowed(name, attributes.range if attributes is not None else None, controller)
         if limits is None and attributes is not None and dialect.modern:
             limits = supplements.pattern_range(name, controller)  # ServoNode 51's rows print none
         if limits is not None and limits.allowed is None and limits.minimum is None and limits.maximum is None:
@@ -120,7 +120,7 @@ def _least_scale(controller: Controller, dialect: Dialect) -> float:
     for name in SCALE_FACTORS:
         keyword = keywords.get(name)
         row = supplements.attributes_for(keyword, controller, dialect) if keyword is not None else None
-        found = supplements.narrowed(name, row.range if row is not None else None)
+        found = supplements.narrowed(name, row.range if row is not None else None, controller)
         if found is None or found.minimum is None or not found.minimum_included:
             return 0.0
         minima.append(found.minimum)

@@ -35,13 +35,14 @@ from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Attributes, Controller, Keyword, KeywordKind
 from mintlang.lsp import describe, mintmt_words
 from mintlang.lsp.features.signature import callee_at
+from mintlang.lsp.features.symbols import gosub_targets, label_kind, sections
 from mintlang.lsp.lookup import WORD_KINDS, prefix_tokens, significant
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Settings, Snapshot
 from mintlang.records import record
 from mintlang.semantic.blocks import Block, BlockKind
 from mintlang.semantic.events import Event, event_of
-from mintlang.semantic.symbols import SymbolKind
+from mintlang.semantic.symbols import Symbol, SymbolKind
 from mintlang.syntax import nodes as n
 from mintlang.syntax.common import shared_ends
 from mintlang.syntax.lines import MacroDefinition
@@ -95,6 +96,9 @@ _CONTINUATIONS = frozenset({"THEN", "DO", "TO", "STEP", "USING"})  # statement w
 _SINGLE_QUOTES = "'\u2018\u2019"
 _PARTIAL_WORDS = WORD_KINDS | {TokenKind.HASH}
 _HIDDEN = frozenset({KeywordKind.EVENT, KeywordKind.COMMAND_LINE})
+# A label as the outline names it (symbols.label_kind); completion has no kind for a key, a place in the code.
+_SUBROUTINE, _PLACE = types.CompletionItemKind.Function, types.CompletionItemKind.Reference
+_LABEL_KINDS = {types.SymbolKind.Function: _SUBROUTINE, types.SymbolKind.Key: _PLACE}
 _SYMBOL_KINDS = {
     SymbolKind.VARIABLE: types.CompletionItemKind.Variable,
     SymbolKind.ARRAY: types.CompletionItemKind.Variable,
@@ -316,9 +320,12 @@ def _symbol_description(snapshot: Snapshot, data: dict[str, object]) -> str | No
 
 
 def _labels(snapshot: Snapshot) -> Iterator[types.CompletionItem]:
-    for label in snapshot.model.symbols.labels[snapshot.unit].values():
-        if label.definitions and event_of(label.name, snapshot.settings.dialect) is None:
-            yield types.CompletionItem(label=label.name, kind=types.CompletionItemKind.Function)
+    """The labels a jump may name, but the event handlers, which the controller calls: each named as the outline
+    names it (``label_kind``), a subroutine or a place in the code."""
+    for section in sections(snapshot):
+        if not section.is_event:
+            kind, detail = label_kind(section)
+            yield types.CompletionItem(label=section.symbol.name, kind=_LABEL_KINDS[kind], detail=detail)
 
 
 def event_names(snapshot: Snapshot) -> list[str]:
@@ -450,7 +457,11 @@ def _after_hash(snapshot: Snapshot, hash_: Token, cursor: types.Position) -> lis
     typed = types.Range(start=types.Position(cursor.line, cursor.character - len(hash_.text)), end=cursor)
     handled = _handled_elsewhere(snapshot, cursor.line) | _event_blocks_elsewhere(snapshot, cursor.line)
     events = [name for name in event_names(snapshot) if event_of(name, snapshot.settings.dialect) not in handled]
-    kinds = dict.fromkeys(_labels_to_write(snapshot, cursor.line), types.CompletionItemKind.Function)
+    called = gosub_targets(snapshot)
+    kinds = {
+        label.references[0].spelling: _SUBROUTINE if label.identity in called else _PLACE
+        for label in _labels_to_write(snapshot, cursor.line)
+    }
     kinds.update(dict.fromkeys(events, types.CompletionItemKind.Event))
     return [
         types.CompletionItem(
@@ -463,11 +474,11 @@ def _after_hash(snapshot: Snapshot, hash_: Token, cursor: types.Position) -> lis
     ]
 
 
-def _labels_to_write(snapshot: Snapshot, line: int) -> list[str]:
+def _labels_to_write(snapshot: Snapshot, line: int) -> list[Symbol]:
     """The labels a jump names that no line but ``line`` (0-based, the one being typed) defines, as first named."""
     positions = snapshot.positions
     return [
-        label.references[0].spelling
+        label
         for label in snapshot.model.symbols.labels[snapshot.unit].values()
         if label.references
         and all(positions.position(definition.span.start).line == line for definition in label.definitions)

@@ -63,6 +63,11 @@ def jump_statements(snapshot: Snapshot) -> Iterator[tuple[n.PlacedLine, n.Jump]]
                     yield line, statement
 
 
+def gosub_targets(snapshot: Snapshot) -> set[str]:
+    """The identities of the labels a GOSUB of the file names: subroutines, whether written yet or not."""
+    return {jump.label.identity for _, jump in jump_statements(snapshot) if jump.word == "GOSUB"}
+
+
 def sections(snapshot: Snapshot) -> list[Section]:
     """Each label's section, ending before the next label or the next of MintMT's Event and Startup blocks
     (which the program never runs into, MT-7)."""
@@ -78,7 +83,7 @@ def sections(snapshot: Snapshot) -> list[Section]:
         for first, end in zip(lines, ends, strict=True)
     ]
     dialect = snapshot.settings.dialect
-    called = {jump.label.identity for _, jump in jump_statements(snapshot) if jump.word == "GOSUB"}
+    called = gosub_targets(snapshot)
     return [
         Section(
             label,

@@ -16,6 +16,7 @@ finds the index edge to the count.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from enum import Enum
 
@@ -25,8 +26,9 @@ from mintlang.runtime.errors import OUT_OF_RANGE, MintError
 from mintlang.runtime.keywords import Channels, KeywordTable, Values
 from mintlang.runtime.motion.axis import MD_HOMING, MOTION_IN_PROGRESS, Axis, wrap
 from mintlang.runtime.motion.commands import Motion
-from mintlang.runtime.motion.moves import Geometry, PlannedMove, completion_tick, next_profiler_tick
+from mintlang.runtime.motion.moves import PROFILER_TICK_MS, Geometry, PlannedMove, completion_tick, next_profiler_tick
 from mintlang.runtime.motion.profile import Profile, plan_velocity
+from mintlang.runtime.scenario.stimulus import IndexPulse
 
 NO_INPUT_SPECIFIED = 5  # _erNO_INPUT_SPECIFIED: a switch mode without HOMEINPUT [000:18526-18528]
 CREEP_SPEED = 500.0  # counts/s onto the index edge (HM-4 RC: the keyword entry, not "one count per tick")
@@ -143,7 +145,7 @@ class HomingMove:
     def phase(self) -> int:
         return PHASES[self.stage]
 
-    def waiting_for(self, has_index_pulse: bool) -> str | None:
+    def waiting_for(self, pulse: IndexPulse | None) -> str | None:
         """What the cycle still waits to see, for a run stopped while it searches; None past the searches."""
         if self.stage is Stage.SEEK:
             return f"seeks its home switch, input {self.home_input}, which has not turned active"
@@ -151,10 +153,19 @@ class HomingMove:
             return f"backs off its home switch, input {self.home_input}, which has not turned inactive"
         if self.stage is not Stage.SEARCH_Z:
             return None
-        if has_index_pulse:
-            return "searches for its encoder's index pulse"
         axis = self.axis.number
-        return f"searches for its encoder's index pulse, which no scenario gives it (REM @sim index {axis} every N)"
+        if pulse is None:
+            return f"searches for its encoder's index pulse, which no scenario gives it (REM @sim index {axis} every N)"
+        speed = self._backoff_speed()
+        travel = math.ceil(speed * PROFILER_TICK_MS / 1000.0)  # counts between two polls of the index
+        if pulse.width_counts >= travel:
+            return "searches for its encoder's index pulse"
+        count = "count" if pulse.width_counts == 1 else "counts"
+        return (
+            f"searches for its encoder's index pulse, {pulse.width_counts} {count} wide, which it passes between two"
+            f" polls at {speed:g} counts/s ({travel} counts every {PROFILER_TICK_MS} ms): make it at least {travel}"
+            f" counts wide (REM @sim index {axis} every {pulse.every_counts} width {travel})"
+        )
 
     # ------------------------------------------------------------- Move protocol
 
@@ -326,7 +337,7 @@ def still_homing(motion: Motion) -> tuple[str, ...]:
     for axis in motion.axes:
         move = axis.move
         if isinstance(move, HomingMove):
-            waiting = move.waiting_for(axis.number in motion.index_pulses)
+            waiting = move.waiting_for(motion.index_pulses.get(axis.number))
             if waiting is not None:
                 found.append(f"axis {axis.number} is still homing: it {waiting}")
     return tuple(found)

@@ -16,7 +16,10 @@ again without the fixes that add one on their own (all of the round's when only
 together they do), so a guess never leaves the program unreadable to the compiler.
 A finding like a fixed one but further on is not the fixed one left in place: the
 round revealed it (the second &HFF of a line the parse reaches once the first is
-mended; the line after an END SUB made RETURN, unreachable too).
+mended; the line after an END SUB made RETURN, unreachable too). One that starts
+before it is taken for it, and may still be a new one (the GOTO before the line
+removed, unreachable once END SUB is RETURN): once the text has moved on without
+them, the fixes set aside are tried again.
 """
 
 from __future__ import annotations
@@ -89,8 +92,12 @@ def fix_text(text: str, check: Callable[[str], Sequence[Diagnostic]], *, unsafe:
     diagnostics = check(text)
     fixed: list[Diagnostic] = []
     failed: set[_Key] = set()
+    failed_on = text  # the text the fixes in ``failed`` were set aside on
     for _ in range(MAX_ROUNDS):
         changed, applied = apply_once(text, diagnostics, unsafe=unsafe, failed=failed)
+        if not applied and failed and failed_on != text:  # the text has moved on: they may fix what is left now
+            failed = set()
+            changed, applied = apply_once(text, diagnostics, unsafe=unsafe)
         if not applied:
             return Fixed(text, tuple(fixed), tuple(diagnostics), converged=True)
         found = check(changed)
@@ -99,6 +106,7 @@ def fix_text(text: str, check: Callable[[str], Sequence[Diagnostic]], *, unsafe:
             still_there = _breaking(text, applied, check, _syntax_errors(diagnostics))
         if still_there:
             failed |= still_there  # undo the round; try it again without them
+            failed_on = text
             continue
         text, diagnostics = changed, found
         fixed.extend(applied)

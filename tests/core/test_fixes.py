@@ -85,6 +85,15 @@ def test_a_fix_that_leaves_its_finding_is_undone() -> None:
     assert (result.text, result.fixed, result.converged) == ("a = 1\n", (), True)
 
 
+def test_a_fix_set_aside_is_tried_again_once_the_text_has_moved_on() -> None:
+    """END SUB becomes RETURN (000:1841-1850) in the round that removes the line a GOTO leaves unreachable; the
+    GOTO after the new RETURN is then unreachable too, and the finding, now spanning both lines, starts before
+    the one fixed: the round is undone, and the removal set aside. Once the text has moved on (RETURN written,
+    the label and the DIM added), the removal is tried again, so a second --fix finds nothing more."""
+    once = fix_text("END SUB\nGOTO done\na = 1\n", check, unsafe=True)
+    assert (once.text, once.converged) == ("DIM a\nRETURN\n\n#done\n", True)
+
+
 def test_a_finding_a_round_reveals_like_the_one_it_fixed_is_fixed_in_the_same_run() -> None:
     """END SUB becomes RETURN (000:1841-1850) in the round that removes the line END leaves unreachable; the
     line after the new RETURN is then unreachable too, a finding like the one fixed, and the removal was set

@@ -6,11 +6,13 @@ are both written out, and a right-hand side of more than one token is bracketed,
 C's ``!=`` and ``==`` are told Mint's ``<>`` and ``=`` (000:1256-1263), ``&&`` and ``||`` its AND and OR, ``//`` REM;
 ``A NOT = B`` is told ``<>`` (000:14724-14729);
 Visual Basic's ``DO .. LOOP UNTIL`` Mint's loops (000:1707, 1747, 1778, 1797) and ``ELSE IF`` a nested IF block;
-strings joined with ``+`` or ``&`` PRINT's comma; ``a ^ 2`` POW(a, 2); ``END SUB`` RETURN; ``&H1F`` 0x1F.
+strings joined with ``+`` or ``&`` PRINT's comma; ``a ^ 2`` POW(a, 2); ``END SUB`` RETURN; ``&H1F`` 0x1F;
+``PRINT USING "##.#"; x`` PRINT x USING 2, 1.
 """
 
 from __future__ import annotations
 
+import re
 from typing import NamedTuple
 
 from mintlang.analysis.suggestions import NESTED_IF
@@ -44,6 +46,7 @@ def other_languages_habit(
         or _radix_number(line, end, failed, dialect)
         or _joined_strings(line, begin, end, failed)
         or _power(line, begin, end, failed)
+        or _using_picture(line, begin, end, failed)
     )
 
 
@@ -293,6 +296,35 @@ def _power(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic |
     written = f"POW({line.texts[base]}, {line.texts[exponent]})"
     fix = Fix(f"Write {written}", (Edit(shared_span(line.starts[base], line.ends[exponent]), written),), safe=True)
     return mint_error(2003, span, f"Mint has no '^': write {written}", fixes=(fix,))
+
+
+_PICTURE = re.compile(r'"(#+)(?:\.(#*))?"')  # other BASICs' number picture: digits before and after the point
+
+
+def _using_picture(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
+    """``PRINT USING "###.##"; x``: Mint writes the items first, then USING with the number of integer and
+    fractional digits (000:15295-15296, 15313-15315). The integer part is padded with zeroes (000:15330-15332)
+    where a picture pads it with spaces, so the rewrite, offered for one item and a picture of '#'s, is unsafe."""
+    kinds = line.kinds
+    picture = begin + 2
+    if not (kinds[begin] is _K.PRINT and kinds[begin + 1] is _K.USING and failed == picture < end):
+        return None
+    if kinds[picture] is not _K.STRING:
+        return None
+    command = line.texts[begin] if line.texts[begin] == "?" else line.texts[begin].upper()
+    counts = _PICTURE.fullmatch(line.texts[picture])
+    item = picture + 2
+    separated = item < end and kinds[picture + 1] in (_K.SEMICOLON, _K.COMMA)
+    one_item = separated and all(_first_at_the_top(kinds, item, end, sign) == end for sign in (_K.COMMA, _K.SEMICOLON))
+    if counts is None or not one_item or any(line.expanded[begin:end]):
+        written, fixes = f"{command} <items> USING <integer digits>, <fraction digits>", ()
+    else:
+        digits = str(len(counts[1])) + (f", {len(counts[2])}" if counts[2] else "")
+        written = f"{command} {_written(line, item, end)} USING {digits}"
+        rewrite = Edit(shared_span(line.starts[begin + 1], line.ends[end - 1]), written[len(command) + 1 :])
+        fixes = (Fix(f"Write {written}", (rewrite,), safe=False),)
+    message = f"Mint's USING follows the items it formats and counts the digits, it takes no picture: {written}"
+    return mint_error(2003, line.token_span(picture), message, fixes=fixes)
 
 
 def _apart(line: LogicalLine, first: int, end: int, word: str) -> str:

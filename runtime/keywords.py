@@ -16,7 +16,7 @@ from dataclasses import replace
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
 from mintlang.keyworddb.model import Controller, Use
-from mintlang.keyworddb.usage import refusal
+from mintlang.keyworddb.usage import refusal, unavailable
 from mintlang.records import record
 from mintlang.runtime.errors import MintError
 from mintlang.runtime.ranges import Bounds, table_bounds
@@ -88,8 +88,9 @@ class KeywordTable:
         MintMT's own keywords name their controllers in the move-buffer note (004:100, 286).
         """
         record = database().keywords_of(self.dialect).get(name)
-        if record is not None and not record.available_on(self.controller):
-            raise MintError(KEYWORD_NOT_SUPPORTED, detail=f"{name} is not available on this controller")
+        missing = unavailable(record, self.controller) if record is not None else None
+        if missing is not None:  # naming the controllers that have it, as mint check does
+            raise MintError(KEYWORD_NOT_SUPPORTED, detail=missing)
         return self._entries.get(name)
 
     def refused_by_the_guide(self, name: str, *, write: bool) -> int | None:

@@ -1,8 +1,10 @@
 """Settings the simulator accepts and remembers but that change nothing it models.
 
 They configure hardware the simulation has no counterpart for: terminal
-channels and echo (the simulator has one merged terminal), keypads, DAC output modes
-and gearing compensation (the ideal plant has no lag to compensate, spec FG-7).
+channels and echo (the simulator has one merged terminal), keypads, DAC output modes,
+gearing compensation (the ideal plant has no lag to compensate, spec FG-7) and the
+network a remote comms access goes over (COMMSMODE, 000:2376-2379: remote access is
+not simulated; the controller's own comms array is the same in either mode).
 A program that sets them runs on; reading one back gives what was written. The
 report lists the ones a run used, so nobody mistakes them for simulated. Of
 ``ECHO`` only bit 1 is read, by the controller's error messages (``shows_errors``):
@@ -13,8 +15,10 @@ from __future__ import annotations
 
 from collections.abc import Callable, Collection, Mapping
 
+from mintlang.runtime.errors import MintError
 from mintlang.runtime.keywords import KeywordTable, per_channel
 from mintlang.runtime.ranges import ranged
+from mintlang.terminals import SERIAL_PORT_KEYWORDS, serial_port_error
 
 INERT_SETTINGS: dict[str, float] = {
     "TERMINAL": 123.0,
@@ -24,6 +28,7 @@ INERT_SETTINGS: dict[str, float] = {
     "DACMODE": 0.0,
     "GEARING": 0.0,
     "GEARINGMODE": 0.0,
+    "COMMSMODE": 0.0,  # CANopen (000:8360, 8367)
 }
 _ECHO_ERROR_MESSAGES = 0b10
 
@@ -58,6 +63,9 @@ class InertSettings:
         """Remember what is written to ``name``, and that the run used it."""
 
         def write(channel: int | None, value: float) -> None:
+            found = serial_port_error(name, channel) if name in SERIAL_PORT_KEYWORDS and channel is not None else None
+            if found is not None:
+                raise MintError(found[0], detail=found[1])
             self.used.add(name)
             self.values[(name, channel)] = value
 

@@ -30,11 +30,11 @@ from mintlang.semantic.constants import constant_integer
 from mintlang.semantic.model import SemanticModel
 from mintlang.semantic.symbols import Unit
 from mintlang.syntax import nodes as n
+from mintlang.terminals import SERIAL_PORT_KEYWORDS, serial_port_error
 
 _CAPTURE_CHANNELS = ChannelRange(0, 5)  # the same on every controller
 _CAN_BUSES = ChannelRange(1, 2)
 _CAN_NODES = ChannelRange(0, 63)  # chapter 12, error 26
-_SERIAL_TERMINALS = frozenset({"_TMRS232", "_TMRS485"})
 _CIRCLE_VALUES = 3  # centre, centre and angle on two axes
 _VECTOR_AXES = 2  # the fewest a vector move interpolates
 
@@ -202,7 +202,7 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
         yield Finding(use.unit, mint_error(2003, *found))
     if keyword.name.startswith("REMOTE"):
         yield from _can_address(use)
-    elif keyword.name in _TERMINAL_KEYWORDS:
+    elif keyword.name in SERIAL_PORT_KEYWORDS:
         yield from _terminal(use, scope)
     elif keyword.addressing is Addressing.AXIS:
         yield from _axes(use, scope, keyword.name)
@@ -212,7 +212,6 @@ def _keyword(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
 
 
 _ADDRESSED_KINDS = frozenset({KeywordKind.PARAMETER, KeywordKind.COMMAND})
-_TERMINAL_KEYWORDS = frozenset({"COMMSMODE", "SERIALBAUD"})
 
 
 def misaddressed(ref: n.KeywordRef, keyword: Keyword, dialect: Dialect) -> tuple[Span, str] | None:
@@ -228,7 +227,11 @@ def misaddressed(ref: n.KeywordRef, keyword: Keyword, dialect: Dialect) -> tuple
     bus and a node (``REMOTEIN.2.65``, 000:18607)."""
     if (ref.selector is None and ref.channel is None) or keyword.name.startswith("REMOTE"):
         return None
-    if keyword.name in _TERMINAL_KEYWORDS or keyword.addressing is Addressing.CHANNEL or _channel_family(keyword.name):
+    if (
+        keyword.name in SERIAL_PORT_KEYWORDS
+        or keyword.addressing is Addressing.CHANNEL
+        or _channel_family(keyword.name)
+    ):
         return _one_number_after_the_dot(ref, "channel", brackets=dialect is Dialect.MINTMT)
     if keyword.addressing is Addressing.AXIS:
         return _one_number_after_the_dot(ref, "axis")
@@ -543,15 +546,9 @@ def _terminal(use: KeywordUse, scope: LineScope) -> Iterator[Finding]:
     value = constant_integer(item, scope.dialect)
     if value is None or item is None:
         return
-    terminals = {name: int(record.value) for name, record in database().constants.items() if name.startswith("_TM")}
-    serial = {terminals[name] for name in _SERIAL_TERMINALS if name in terminals}
-    if value in serial:
-        return
-    if value in terminals.values():
-        detail = f"{use.keyword.keyword} applies to the serial terminals (_tmRS232, _tmRS485) only"
-        yield Finding(use.unit, mint_error(36, item.span, detail))
-    else:
-        yield Finding(use.unit, mint_error(35, item.span, f"there is no terminal {value}"))
+    found = serial_port_error(use.keyword.keyword, value)
+    if found is not None:
+        yield Finding(use.unit, mint_error(found[0], item.span, found[1]))
 
 
 def _axes_statement(unit: Unit, statement: n.Axes, scope: LineScope) -> Iterator[Finding]:

@@ -25,6 +25,7 @@ def as_json(result: RunResult) -> dict[str, Any]:
         "inert_settings": list(result.inert_settings),
         "read_leniently": list(result.read_leniently),
         "ignored_directives": list(result.ignored_directives),
+        "not_run": list(result.not_run),
         "host_replies": [{"time_ms": time_ms, "bytes": data.hex(" ")} for time_ms, data in result.host_replies],
         "expectations": [
             {

@@ -21,6 +21,7 @@ from mintlang.diagnostics import Diagnostic, Span
 from mintlang.dialect import Dialect
 from mintlang.keyworddb.model import Controller as ControllerName
 from mintlang.records import record
+from mintlang.runtime.configuration_only import configuration_only
 from mintlang.runtime.controller import Controller, build_controller
 from mintlang.runtime.dialects import semantics
 from mintlang.runtime.errors import ErrorStyle, MintError, NotSimulated
@@ -58,6 +59,7 @@ class RunResult:
     refused: bool = False  # the controller's compiler rejected a file: the program never ran (``stop`` says why)
     read_leniently: tuple[str, ...] = ()  # what the controller would refuse, run as mint check's safe fix writes it
     ignored_directives: tuple[str, ...] = ()  # REM @sim and @expect lines of the configuration file, not applied
+    not_run: tuple[str, ...] = ()  # what the configuration file holds and the run never runs (configuration_only)
 
 
 @record
@@ -202,7 +204,10 @@ def run_source(
     result = _simulate(model, simulated, scenario, limits or Limits(), refused, hooks=hooks)
     lenient = _read_leniently(analysis)
     ignored = ignored_directives(config, config_name, dialect) if config is not None else ()
-    return replace(result, read_leniently=lenient, ignored_directives=ignored) if lenient or ignored else result
+    not_run = configuration_only(analysis.model, config_name)
+    if lenient or ignored or not_run:
+        return replace(result, read_leniently=lenient, ignored_directives=ignored, not_run=not_run)
+    return result
 
 
 def _ending_at_the_last_check(limits: Limits, expectations: tuple[Expectation, ...]) -> Limits:

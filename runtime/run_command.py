@@ -182,7 +182,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         stdout.flush()
         stdout.end_line_for_errors()
         if not quiet:
-            for note in (*result.read_leniently, *result.ignored_directives):
+            for note in (*result.read_leniently, *result.ignored_directives, *result.not_run):
                 errors.line(f"warning: {note}", "yellow")
         if not (quiet and result.stop.reason in (StopReason.END, StopReason.UNTIL)):
             _describe_stop(result, errors)

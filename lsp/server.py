@@ -8,6 +8,7 @@ an error response and logs it, so no handler can stop the server.
 
 from __future__ import annotations
 
+import asyncio
 import logging
 from collections.abc import Awaitable, Callable, Collection
 from pathlib import Path
@@ -44,6 +45,7 @@ class MintServer(LanguageServer):
         self.analyses = Analyses(read=self.read_text, opened=self.opened, collector=Collector())
         self.when_initialized: list[Callable[[], Awaitable[None]]] = []  # features' work once the client is ready
         self.when_settings_changed: list[Callable[[], Awaitable[None]]] = []  # and once the settings changed
+        self.settings_pull: asyncio.Future[None] | None = None  # the editor's settings being asked for, if they are
 
     def report_server_error(self, error: Exception, source: Any) -> None:
         """A body the message loop (``source``) cannot read is answered with ``ParseError``; anything else is

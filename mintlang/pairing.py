@@ -5,7 +5,8 @@ by a pattern (``<name>.cfg`` by default, ``<name>`` standing for the program's
 name). Names match without regard to case (``APP.MNT`` with ``app.cfg``), as on
 the Windows PCs Mint programs come from; of several names differing only in
 case, the one written as the pattern writes it wins. The VS Code extension
-mirrors this rule (``vscode-ext/src/pairing.ts``).
+asks the language server (its ``mint.applicationFiles`` command) rather than
+pairing files itself.
 """
 
 from __future__ import annotations

@@ -1,6 +1,7 @@
 """One module per LSP feature; each exposes ``register(server)``."""
 
 from mintlang.lsp.features import (
+    application,
     call_hierarchy,
     code_actions,
     completion,
@@ -38,6 +39,7 @@ FEATURES = (
     code_actions,
     inlay_hints,
     simulator,
+    application,
     call_hierarchy,
     reference_lenses,
     selection_ranges,

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import asyncio
 import logging
 
 from lsprotocol import types
@@ -20,7 +21,7 @@ def register(server: MintServer) -> None:
 
     @server.feature(types.INITIALIZED)
     async def initialized(_: types.InitializedParams) -> None:
-        await _pull(server)
+        await pull(server)
         for hook in server.when_initialized:
             await hook()
 
@@ -28,12 +29,25 @@ def register(server: MintServer) -> None:
     async def changed(params: types.DidChangeConfigurationParams) -> None:
         if params.settings:
             server.analyses.settings = Settings.from_options(params.settings, server.analyses.settings)
-        await _pull(server)
+        await pull(server)
         from mintlang.lsp.features.diagnostics import refresh_all  # noqa: PLC0415  (a sibling feature)
 
         refresh_all(server)
         for hook in server.when_settings_changed:
             await hook()
+
+
+async def pull(server: MintServer) -> None:
+    """Ask for the editor's settings, the asking kept as ``settings_pull`` for the answers that wait for it."""
+    server.settings_pull = asyncio.ensure_future(_pull(server))
+    await server.settings_pull
+
+
+async def settled(server: MintServer) -> None:
+    """Once the editor's settings asked for, if they are, have come: an answer sent right after the editor
+    said they changed (the pairing of a file, for one) follows the new settings, not the old."""
+    if server.settings_pull is not None:
+        await asyncio.shield(server.settings_pull)
 
 
 async def _pull(server: MintServer) -> None:

@@ -4,13 +4,13 @@
 import * as path from "node:path";
 import * as vscode from "vscode";
 
-import { currentChoices, currentHost, currentSettings, listFolder } from "./host";
+import { currentChoices, currentHost, currentSettings } from "./host";
 import { LANGUAGE_ID } from "./language";
 import { planMigration, planReplacement, type Plan } from "./migration";
 import { showError } from "./notify";
-import { chosenConfiguration } from "./pairing";
 import { execute, type Finished } from "./process";
 import { displayCommand, fileCommand, isMissingModule, MODULES } from "./resolve";
+import { configurationFor, type Server } from "./server";
 
 /** The Mint document a command acts on: the one clicked in the explorer, else the active editor's. */
 async function targetDocument(uri: unknown): Promise<vscode.TextDocument | undefined> {
@@ -29,7 +29,7 @@ async function saveOpen(wanted: (file: string) => boolean): Promise<boolean> {
   return (await Promise.all(unsaved.map((document) => document.save()))).every((saved) => saved);
 }
 
-async function runInSimulator(uri: unknown, output: vscode.OutputChannel): Promise<void> {
+async function runInSimulator(uri: unknown, output: vscode.OutputChannel, server: Server): Promise<void> {
   const tool = "mint-run";
   const title = "Run in simulator";
   const document = await targetDocument(uri);
@@ -40,9 +40,9 @@ async function runInSimulator(uri: unknown, output: vscode.OutputChannel): Promi
   const settings = currentSettings();
   const chosen = currentChoices();
   const file = document.uri.fsPath;
-  const config = chosenConfiguration(file, chosen.configPairing, listFolder);
+  const config = await configurationFor(server, document.uri);
   const label = path.basename(file);
-  // The configuration file the user's pairing names; where mint-run pairs the program itself, any one.
+  // The configuration file the server pairs with the program; where mint-run pairs it itself, any one.
   const read = (name: string) =>
     name === file || (config === undefined ? name.toLowerCase().endsWith(".cfg") : "config" in config && name === config.config);
   if (!(await saveOpen(read))) {
@@ -55,6 +55,9 @@ async function runInSimulator(uri: unknown, output: vscode.OutputChannel): Promi
   }
   const command = resolution.command;
   output.show(true);
+  if (config === undefined) {
+    output.appendLine("(mint-lsp gave no pairing: mint-run pairs the configuration file by mint.toml, not mint.configPairing)");
+  }
   output.appendLine(`$ ${displayCommand(command)}`);
   const progress = { location: vscode.ProgressLocation.Notification, title: `${title}: ${label}`, cancellable: true };
   let outcome: Finished;
@@ -125,12 +128,12 @@ async function sourceAction(planner: Planner, title: string, uri: unknown): Prom
   await carryOut(document, plan, title);
 }
 
-export function registerCommands(output: vscode.OutputChannel): vscode.Disposable[] {
+export function registerCommands(output: vscode.OutputChannel, server: Server): vscode.Disposable[] {
   return [
     vscode.commands.registerCommand("mint.migrateFile", (uri: unknown) => sourceAction(planMigration, "Migrate file to v4", uri)),
     vscode.commands.registerCommand("mint.replaceV3Keywords", (uri: unknown) =>
       sourceAction(planReplacement, "Replace v3 keywords", uri),
     ),
-    vscode.commands.registerCommand("mint.runInSimulator", (uri: unknown) => runInSimulator(uri, output)),
+    vscode.commands.registerCommand("mint.runInSimulator", (uri: unknown) => runInSimulator(uri, output, server)),
   ];
 }

@@ -3,11 +3,12 @@
 import * as vscode from "vscode";
 
 import { evaluatableAt } from "./evaluatable";
-import { currentChoices, currentHost, currentSettings, listFolder } from "./host";
+import { currentChoices, currentHost, currentSettings } from "./host";
 import { LANGUAGE_ID } from "./language";
 import { completeLaunch, DEBUG_TYPE, launchFor } from "./launch";
 import { showError } from "./notify";
 import { resolveTool } from "./resolve";
+import { configurationFor, type Server } from "./server";
 
 function activeProgram(): string | undefined {
   const document = vscode.window.activeTextEditor?.document;
@@ -28,15 +29,18 @@ class Adapter implements vscode.DebugAdapterDescriptorFactory {
 }
 
 class Configurations implements vscode.DebugConfigurationProvider {
+  constructor(private readonly server: Server) {}
+
   provideDebugConfigurations(): vscode.ProviderResult<vscode.DebugConfiguration[]> {
     return [{ ...launchFor("${file}"), name: "Debug the program in the editor" }];
   }
 
-  resolveDebugConfigurationWithSubstitutedVariables(
+  async resolveDebugConfigurationWithSubstitutedVariables(
     _folder: vscode.WorkspaceFolder | undefined,
     given: vscode.DebugConfiguration,
-  ): vscode.ProviderResult<vscode.DebugConfiguration> {
-    const completion = completeLaunch(given, activeProgram(), currentChoices(), listFolder);
+  ): Promise<vscode.DebugConfiguration | undefined> {
+    const pairing = (program: string) => configurationFor(this.server, vscode.Uri.file(program));
+    const completion = await completeLaunch(given, activeProgram(), currentChoices(), pairing);
     if (!completion.ok) {
       void vscode.window.showErrorMessage(`Debug in simulator: ${completion.message}`);
       return undefined;
@@ -76,10 +80,10 @@ async function runFor(): Promise<void> {
   }
 }
 
-export function registerDebugger(output: vscode.OutputChannel): vscode.Disposable[] {
+export function registerDebugger(output: vscode.OutputChannel, server: Server): vscode.Disposable[] {
   return [
     vscode.debug.registerDebugAdapterDescriptorFactory(DEBUG_TYPE, new Adapter(output)),
-    vscode.debug.registerDebugConfigurationProvider(DEBUG_TYPE, new Configurations()),
+    vscode.debug.registerDebugConfigurationProvider(DEBUG_TYPE, new Configurations(server)),
     vscode.commands.registerCommand("mint.debugInSimulator", debugInSimulator),
     vscode.commands.registerCommand("mint.runFor", runFor),
     vscode.languages.registerEvaluatableExpressionProvider(LANGUAGE_ID, {

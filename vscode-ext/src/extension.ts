@@ -3,24 +3,23 @@ import * as vscode from "vscode";
 
 import { registerCommands } from "./commands";
 import { registerDebugger } from "./debugger";
-import { currentSettings, listFolder } from "./host";
+import { currentSettings } from "./host";
 import { LANGUAGE_ID } from "./language";
-import { isPairedConfig } from "./pairing";
+import { isConfigurationFile } from "./pairing";
 import { mintServer, type Server } from "./server";
 import { SERVER_SETTINGS } from "./settings";
 import { MintTests } from "./testing/controller";
 
 let server: Server | undefined;
 
-/** Opens conveyor.cfg as Mint when conveyor.mnt is beside it (mint.configPairing; see src/pairing.ts). */
-function pairConfig(document: vscode.TextDocument): void {
-  const settings = currentSettings();
-  if (
-    document.uri.scheme === "file" &&
-    document.languageId !== LANGUAGE_ID &&
-    settings.pairConfigFiles &&
-    isPairedConfig(document.uri.fsPath, listFolder, settings.configPairing)
-  ) {
+/** Opens a program's configuration file as Mint, conveyor.cfg beside conveyor.mnt, as the server pairs them (src/pairing.ts). */
+async function pairConfig(running: Server, document: vscode.TextDocument): Promise<void> {
+  const uri = document.uri;
+  if (uri.scheme !== "file" || document.languageId === LANGUAGE_ID || !currentSettings().pairConfigFiles) {
+    return;
+  }
+  const files = await running.applicationFiles(uri);
+  if (isConfigurationFile(uri.toString(), files) && !document.isClosed && document.languageId !== LANGUAGE_ID) {
     void vscode.languages.setTextDocumentLanguage(document, LANGUAGE_ID);
   }
 }
@@ -29,25 +28,26 @@ export function activate(context: vscode.ExtensionContext): void {
   const output = vscode.window.createOutputChannel("Mint");
   server = mintServer(output);
   const running = server;
+  const pairAll = () => vscode.workspace.textDocuments.forEach((document) => void pairConfig(running, document));
   context.subscriptions.push(
     output,
-    ...registerCommands(output),
-    ...registerDebugger(output),
+    ...registerCommands(output, running),
+    ...registerDebugger(output, running),
     new MintTests(output),
-    vscode.workspace.onDidOpenTextDocument(pairConfig),
+    vscode.workspace.onDidOpenTextDocument((document) => void pairConfig(running, document)),
     vscode.workspace.onDidChangeConfiguration((event) => {
       if (SERVER_SETTINGS.some((setting) => event.affectsConfiguration(setting))) {
         void running.restart();
       }
       if (event.affectsConfiguration("mint.pairConfigFiles") || event.affectsConfiguration("mint.configPairing")) {
-        vscode.workspace.textDocuments.forEach(pairConfig);
+        pairAll();
       }
     }),
     // The workspace's .venv is only looked at in a trusted workspace.
     vscode.workspace.onDidGrantWorkspaceTrust(() => void running.restart()),
   );
-  vscode.workspace.textDocuments.forEach(pairConfig);
   void running.restart();
+  pairAll();
 }
 
 export function deactivate(): Promise<void> | undefined {

@@ -17,16 +17,7 @@ export function currentChoices(): Chosen {
     const found = section.inspect<string>(key);
     return found?.workspaceFolderValue ?? found?.workspaceValue ?? found?.globalValue;
   };
-  return { controller: set("controller"), dialect: set("dialect"), configPairing: set("configPairing")?.trim() };
-}
-
-/** The names in a folder; none when it cannot be read. */
-export function listFolder(folder: string): string[] {
-  try {
-    return fs.readdirSync(folder);
-  } catch {
-    return [];
-  }
+  return { controller: set("controller"), dialect: set("dialect") };
 }
 
 function isExecutable(file: string): boolean {

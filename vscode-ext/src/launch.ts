@@ -1,9 +1,9 @@
 // The debugger's launch configurations: what F5 debugs without a launch.json, and what the editor
-// adds to one it is given (the configuration file as the user's mint.configPairing pairs it, the
+// adds to one it is given (the configuration file the language server pairs with the program, the
 // controller and dialect the user chose). No vscode import: the unit tests run under plain node.
 import * as path from "node:path";
 
-import { chosenConfiguration } from "./pairing";
+import type { ConfigurationChoice } from "./pairing";
 
 /** The debug type the extension contributes; mint-dap serves it. */
 export const DEBUG_TYPE = "mint";
@@ -28,7 +28,6 @@ export interface MintLaunch {
 export interface Chosen {
   readonly controller: string | undefined;
   readonly dialect: string | undefined;
-  readonly configPairing: string | undefined;
 }
 
 export type Completion = { readonly ok: true; readonly launch: MintLaunch } | { readonly ok: false; readonly message: string };
@@ -40,15 +39,15 @@ export function launchFor(program: string): MintLaunch {
 
 /**
  * `given` made whole: a configuration with no program debugs `activeFile`; the controller and dialect the
- * settings choose, and the configuration file the user's mint.configPairing pairs with the program (or
- * `noConfig` when it pairs none), are added where `given` says nothing of them.
+ * settings choose, and the configuration file `pairing` gives for the program (the language server's, or
+ * `noConfig` when it pairs none; undefined leaves it to mint-dap), are added where `given` says nothing of them.
  */
-export function completeLaunch(
+export async function completeLaunch(
   given: Readonly<Record<string, unknown>>,
   activeFile: string | undefined,
   chosen: Chosen,
-  listFolder: (folder: string) => readonly string[],
-): Completion {
+  pairing: (program: string) => Promise<ConfigurationChoice | undefined>,
+): Promise<Completion> {
   const empty = given["type"] === undefined && given["request"] === undefined && given["program"] === undefined;
   const program = typeof given["program"] === "string" && given["program"] !== "" ? given["program"] : activeFile;
   if (program === undefined || (empty && path.extname(program).toLowerCase() !== ".mnt")) {
@@ -57,7 +56,7 @@ export function completeLaunch(
   const base = empty ? launchFor(program) : { ...given, type: DEBUG_TYPE, request: "launch", program };
   const launch: Record<string, unknown> = { name: `Debug ${path.basename(program)}`, ...base };
   if (launch["config"] === undefined && launch["noConfig"] !== true) {
-    Object.assign(launch, chosenConfiguration(program, chosen.configPairing, listFolder));
+    Object.assign(launch, await pairing(program));
   }
   if (launch["controller"] === undefined && chosen.controller !== undefined) {
     launch["controller"] = chosen.controller;

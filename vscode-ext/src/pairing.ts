@@ -1,112 +1,53 @@
-// Which files are a program's configuration. `.cfg` is too common an extension to claim for
-// every file, but a configuration file named like a program beside it (conveyor.cfg next to
-// conveyor.mnt) is the controller's configuration for that program. The name follows the
-// mint.configPairing setting, read the way the language server reads it (lsp/workspace.py,
-// partner()), so the editor and the server agree on which file is paired with which; as there,
-// the pair is found whatever the case of the names (APP.MNT with app.cfg), as on the Windows PCs
-// Mint programs come from. No vscode import: unit-tested under plain node.
-import * as path from "node:path";
+// Which configuration file goes with which program, as the language server pairs them for its checks:
+// its mint.applicationFiles command answers from the user's mint.configPairing over the project's
+// mint.toml (config-pairing, config), by the rule mint check and mint-run follow (mintlang/pairing.py).
+// The editor asks it rather than pairing files by a rule of its own, so that Run in simulator, the
+// debugger and the .cfg files opened as Mint agree with what the server checks and mint-run runs.
+// No vscode import: unit-tested under plain node.
 
-export const DEFAULT_PAIRING = "<name>.cfg";
-const PROGRAM_SUFFIX = ".mnt";
+/** The server's command that answers which program and configuration file a file goes with. */
+export const APPLICATION_FILES = "mint.applicationFiles";
 
-/** The text before and after `<name>` in a pairing pattern, or undefined when it has no `<name>`. */
-function splitPattern(pattern: string): { prefix: string; suffix: string } | undefined {
-  const at = pattern.indexOf("<name>");
-  return at < 0 ? undefined : { prefix: pattern.slice(0, at), suffix: pattern.slice(at + "<name>".length) };
+/** A program and its configuration file, as file URIs written as the editor wrote the one it asked about; null: none. */
+export interface ApplicationFiles {
+  readonly program: string | null;
+  readonly configuration: string | null;
 }
 
-/** Whether `name` is a program's: a program is never a configuration file, whatever the pattern says. */
-const isProgram = (name: string): boolean => name.toLowerCase().endsWith(PROGRAM_SUFFIX);
+/** Sends a request to the language server; vscode-languageclient's LanguageClient.sendRequest is one. */
+export type SendRequest = (method: string, params: unknown) => Promise<unknown>;
 
-/**
- * `name` in `folder` as it is listed there: that exact name, else one differing only in case (as
- * the server's _sibling()), so the path handed to a tool names a file that exists.
- */
-function sibling(folder: string, name: string, listFolder: (folder: string) => readonly string[]): string | undefined {
-  const names = listFolder(folder);
-  const listed = names.includes(name) ? name : names.find((other) => other.toLowerCase() === name.toLowerCase());
-  return listed === undefined ? undefined : path.join(folder, listed);
-}
+const uriOrNull = (value: unknown): value is string | null => value === null || typeof value === "string";
 
-/**
- * The program name `fileName` would be the configuration of under `pattern` ("conveyor" for
- * conveyor.cfg under "<name>.cfg"), or undefined. As in the server, the prefix compares with
- * case and the suffix without.
- */
-function programStem(fileName: string, pattern: string): string | undefined {
-  const parts = splitPattern(pattern);
-  const name = path.basename(fileName);
-  if (parts === undefined || parts.suffix === "" || isProgram(name)) {
+/** The files the server says `uri` goes with; undefined when its answer is not one. */
+export async function askApplicationFiles(send: SendRequest, uri: string): Promise<ApplicationFiles | undefined> {
+  const answer = await send("workspace/executeCommand", { command: APPLICATION_FILES, arguments: [uri] });
+  if (typeof answer !== "object" || answer === null) {
     return undefined;
   }
-  const { prefix, suffix } = parts;
-  if (!name.startsWith(prefix) || !name.toLowerCase().endsWith(suffix.toLowerCase())) {
-    return undefined;
-  }
-  const stem = name.slice(prefix.length, name.length - suffix.length);
-  return stem === "" ? undefined : stem;
-}
-
-/**
- * The program whose configuration file `fileName` is under `pattern` (mint.configPairing), if it
- * is in the same folder. `listFolder` is only called for names that fit the pattern.
- */
-export function programOf(
-  fileName: string,
-  listFolder: (folder: string) => readonly string[],
-  pattern: string = DEFAULT_PAIRING,
-): string | undefined {
-  const stem = programStem(fileName, pattern);
-  return stem === undefined ? undefined : sibling(path.dirname(fileName), `${stem}${PROGRAM_SUFFIX}`, listFolder);
-}
-
-/** Whether `fileName` is the configuration file of a program in its folder under `pattern` (mint.configPairing). */
-export function isPairedConfig(
-  fileName: string,
-  listFolder: (folder: string) => readonly string[],
-  pattern: string = DEFAULT_PAIRING,
-): boolean {
-  return programOf(fileName, listFolder, pattern) !== undefined;
-}
-
-/**
- * The configuration file of the program `programFile` under `pattern`, if it is in the program's
- * folder: what the tools get with `--config` (conveyor.mnt -> conveyor.cfg), as the server pairs
- * them for its checks, its "Run in simulator" lens and its migration.
- */
-export function configurationOf(
-  programFile: string,
-  listFolder: (folder: string) => readonly string[],
-  pattern: string = DEFAULT_PAIRING,
-): string | undefined {
-  const parts = splitPattern(pattern);
-  const extension = path.extname(programFile);
-  if (parts === undefined || parts.suffix === "" || extension.toLowerCase() !== PROGRAM_SUFFIX) {
-    return undefined;
-  }
-  const wanted = `${parts.prefix}${path.basename(programFile, extension)}${parts.suffix}`;
-  return isProgram(wanted) ? undefined : sibling(path.dirname(programFile), wanted, listFolder);
+  const { program, configuration } = answer as Record<string, unknown>;
+  return uriOrNull(program) && uriOrNull(configuration) ? { program, configuration } : undefined;
 }
 
 /** What a tool is told of a program's configuration file: a file, or none. */
 export type ConfigurationChoice = { readonly config: string } | { readonly noConfig: true };
 
 /**
- * What a tool run on `programFile` (mint-run, mint-dap) is told of its configuration file: the file the
- * user's own mint.configPairing (`pairing`) pairs with it, or none when that pairs none (the setting empty,
- * or no such file). Undefined when the user set no pairing: the tool then pairs the program itself, by the
- * project's settings file (mint.toml's config-pairing or config) or `<name>.cfg`, as the server does; the
- * setting's own default must not override the project.
+ * What a tool run on a program (mint-run, mint-dap) is told of its configuration file, from the server's
+ * answer for the program (`toPath` turns its URI into the path the tool takes). Undefined without an
+ * answer: the tool then pairs the program itself, by the project's settings, which lack only the
+ * editor's mint.configPairing.
  */
-export function chosenConfiguration(
-  programFile: string,
-  pairing: string | undefined,
-  listFolder: (folder: string) => readonly string[],
+export function configurationChoice(
+  files: ApplicationFiles | undefined,
+  toPath: (uri: string) => string,
 ): ConfigurationChoice | undefined {
-  if (pairing === undefined) {
+  if (files === undefined) {
     return undefined;
   }
-  const config = configurationOf(programFile, listFolder, pairing);
-  return config === undefined ? { noConfig: true } : { config };
+  return files.configuration === null ? { noConfig: true } : { config: toPath(files.configuration) };
 }
+
+/** Whether the file the server was asked about, `uri`, is a program's configuration file by its answer `files`. */
+export const isConfigurationFile = (uri: string, files: ApplicationFiles | undefined): boolean =>
+  files !== undefined && files.configuration === uri && files.program !== uri;

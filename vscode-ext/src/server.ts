@@ -5,6 +5,7 @@ import { LanguageClient, type LanguageClientOptions } from "vscode-languageclien
 import { currentHost, currentSettings } from "./host";
 import { LANGUAGE_ID } from "./language";
 import { showError } from "./notify";
+import { askApplicationFiles, configurationChoice, type ApplicationFiles, type ConfigurationChoice } from "./pairing";
 import { resolveTool, type Command } from "./resolve";
 import { serverSettings } from "./settings";
 
@@ -18,6 +19,16 @@ export interface Server {
   /** Stops the running server, if any, and starts one from the current settings. */
   restart(): Promise<void>;
   stop(): Promise<void>;
+  /**
+   * The program and configuration file `uri` goes with, as the server pairs them (see ./pairing), once
+   * it has started; undefined when none runs or it cannot say (a mintlang without the command).
+   */
+  applicationFiles(uri: vscode.Uri): Promise<ApplicationFiles | undefined>;
+}
+
+/** What mint-run or mint-dap is told of `program`'s configuration file: the server's pairing; undefined without one. */
+export async function configurationFor(server: Server, program: vscode.Uri): Promise<ConfigurationChoice | undefined> {
+  return configurationChoice(await server.applicationFiles(program), (uri) => vscode.Uri.parse(uri).fsPath);
 }
 
 function createClient({ command, args }: Command, output: vscode.OutputChannel): LanguageClient {
@@ -88,6 +99,17 @@ export function mintServer(output: vscode.OutputChannel): Server {
     }
   };
 
+  const applicationFiles = async (uri: vscode.Uri): Promise<ApplicationFiles | undefined> => {
+    await queue;
+    const running = client;
+    if (running?.isRunning() !== true) {
+      return undefined;
+    }
+    const send = (method: string, params: unknown) => running.sendRequest(method, params);
+    // As the client writes the URIs of documents (it has no uriConverters), and as the answer echoes it.
+    return askApplicationFiles(send, uri.toString()).catch(() => undefined);
+  };
+
   const enqueue = (step: () => Promise<void>): Promise<void> => (queue = queue.then(step));
-  return { restart: () => enqueue(restartNow), stop: () => enqueue(stopNow) };
+  return { restart: () => enqueue(restartNow), stop: () => enqueue(stopNow), applicationFiles };
 }

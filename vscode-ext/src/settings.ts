@@ -15,8 +15,6 @@ export interface MintSettings {
   readonly controller: Controller;
   readonly dialect: DialectChoice;
   readonly pairConfigFiles: boolean;
-  /** The configuration file of `<name>.mnt`; without `<name>`, programs have none (as in the server). */
-  readonly configPairing: string;
   readonly debounceMs: number;
 }
 
@@ -59,7 +57,6 @@ const text = (value: unknown): string => (typeof value === "string" ? value.trim
 /** Reads the settings; a value of the wrong type (a hand-edited settings.json) falls back to the default. */
 export function readSettings(section: Section): MintSettings {
   const pair = section.get("pairConfigFiles");
-  const pairing = section.get("configPairing");
   const debounce = section.get("debounceMs");
   return {
     serverPath: text(section.get("serverPath")),
@@ -67,7 +64,6 @@ export function readSettings(section: Section): MintSettings {
     controller: oneOf(CONTROLLERS, section.get("controller"), "nextmove-pci"),
     dialect: oneOf(DIALECT_CHOICES, section.get("dialect"), "v4"),
     pairConfigFiles: typeof pair === "boolean" ? pair : true,
-    configPairing: typeof pairing === "string" ? pairing.trim() : "<name>.cfg",
     debounceMs: typeof debounce === "number" && Number.isInteger(debounce) && debounce >= 0 ? debounce : 150,
   };
 }

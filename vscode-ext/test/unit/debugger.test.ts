@@ -7,6 +7,7 @@ import { test } from "node:test";
 
 import { evaluatableAt } from "../../src/evaluatable";
 import { completeLaunch, DEBUG_TYPE, launchFor, type Chosen } from "../../src/launch";
+import type { ConfigurationChoice } from "../../src/pairing";
 import { PYTHON_ARGUMENTS } from "../../src/resolve";
 
 const EXTENSION = path.resolve(__dirname, "..", "..", "..");
@@ -23,8 +24,13 @@ const manifest = JSON.parse(readFileSync(path.join(EXTENSION, "package.json"), "
   contributes: { debuggers: Debugger[]; breakpoints: { language: string }[] };
 };
 
-const NONE: Chosen = { controller: undefined, dialect: undefined, configPairing: undefined };
-const folder = (names: readonly string[]) => (dir: string) => (dir === "/work/robot" ? names : []);
+const NONE: Chosen = { controller: undefined, dialect: undefined };
+/** The language server's pairing, as `configurationFor` gives it: `choice` for /work/robot/conveyor.mnt. */
+const pairing = (choice: ConfigurationChoice | undefined) => async (program: string) => {
+  assert.equal(program, "/work/robot/conveyor.mnt");
+  return choice;
+};
+const unasked = async (): Promise<ConfigurationChoice | undefined> => assert.fail("a launch that names its configuration is not paired");
 
 test("the extension contributes one debugger, for Mint programs, where breakpoints can be set", () => {
   const [debuggerEntry, ...others] = manifest.contributes.debuggers;
@@ -57,39 +63,35 @@ test("mint-dap starts from mint.pythonPath as a module", () => {
   assert.deepEqual(PYTHON_ARGUMENTS["mint-dap"], ["-m", "mintlang.runtime.debugger"]);
 });
 
-test("F5 with no launch.json debugs the program in the editor, stopped on entry, with the file the user's pairing names", () => {
-  const files = folder(["conveyor.mnt", "CONVEYOR.CFG"]);
-  const chosen = (configPairing: string): Chosen => ({ ...NONE, configPairing });
-  const launch = (configPairing: string) => {
-    const completion = completeLaunch({}, "/work/robot/conveyor.mnt", chosen(configPairing), files);
+test("F5 with no launch.json debugs the program in the editor, stopped on entry, with the file the server pairs", async () => {
+  const launch = async (choice: ConfigurationChoice | undefined) => {
+    const completion = await completeLaunch({}, "/work/robot/conveyor.mnt", NONE, pairing(choice));
     assert.ok(completion.ok);
     return completion.launch;
   };
-  assert.deepEqual(launch("<name>.cfg"), { ...launchFor("/work/robot/conveyor.mnt"), config: "/work/robot/CONVEYOR.CFG" });
-  // Empty: programs have no configuration file; a pairing that names no file pairs none either.
-  assert.deepEqual(launch(""), { ...launchFor("/work/robot/conveyor.mnt"), noConfig: true });
-  assert.deepEqual(launch("setup_<name>.cfg"), { ...launchFor("/work/robot/conveyor.mnt"), noConfig: true });
+  const program = launchFor("/work/robot/conveyor.mnt");
+  const config = "/work/robot/setup_conveyor.cfg";
+  assert.deepEqual(await launch({ config }), { ...program, config });
+  assert.deepEqual(await launch({ noConfig: true }), { ...program, noConfig: true });
+  // No server to ask: mint-dap pairs the program by the project's settings itself.
+  assert.deepEqual(await launch(undefined), program);
+  const dap = readFileSync(path.join(CHECKOUT, "runtime", "debugger", "launch.py"), "utf8");
+  assert.match(dap, /settings\.partner\(program\)/, "mint-dap pairs an unpaired program by its settings");
 });
 
-test("with no mint.configPairing set, mint-dap pairs the program as the project's mint.toml says, not by the setting's default", () => {
-  const completion = completeLaunch({}, "/work/robot/conveyor.mnt", NONE, folder(["conveyor.mnt", "conveyor.cfg"]));
-  assert.ok(completion.ok);
-  assert.deepEqual(completion.launch, launchFor("/work/robot/conveyor.mnt"));
-  const launch = readFileSync(path.join(CHECKOUT, "runtime", "debugger", "launch.py"), "utf8");
-  assert.match(launch, /settings\.partner\(program\)/, "mint-dap pairs an unpaired program by its settings");
-});
-
-test("a launch.json entry keeps what it says and gains only the settings the user chose", () => {
+test("a launch.json entry keeps what it says and gains only the settings the user chose", async () => {
   const given = { type: "mint", request: "launch", name: "mine", program: "/work/robot/a.mnt", noConfig: true, dialect: "v3" };
-  const chosen: Chosen = { controller: "euroservo", dialect: "mintmt", configPairing: "<name>.cfg" };
-  const completion = completeLaunch(given, undefined, chosen, folder(["a.mnt", "a.cfg"]));
+  const chosen: Chosen = { controller: "euroservo", dialect: "mintmt" };
+  const completion = await completeLaunch(given, undefined, chosen, unasked);
   assert.ok(completion.ok);
   assert.deepEqual(completion.launch, { ...given, controller: "euroservo" });
+  const named = { type: "mint", request: "launch", name: "line", program: "/work/robot/a.mnt", config: "/work/robot/line.cfg" };
+  assert.deepEqual(await completeLaunch(named, undefined, NONE, unasked), { ok: true, launch: named });
 });
 
-test("with nothing to debug the completion says what to open", () => {
-  assert.equal(completeLaunch({}, undefined, NONE, folder([])).ok, false);
-  assert.equal(completeLaunch({}, "/work/robot/notes.txt", NONE, folder([])).ok, false);
+test("with nothing to debug the completion says what to open", async () => {
+  assert.equal((await completeLaunch({}, undefined, NONE, unasked)).ok, false);
+  assert.equal((await completeLaunch({}, "/work/robot/notes.txt", NONE, unasked)).ok, false);
 });
 
 test("'Run on for a simulated time' is offered while a Mint debug session is stopped, and mint-dap serves its request", () => {

@@ -1,81 +1,159 @@
+// Which configuration file goes with which program: the editor asks the language server, whose pairing
+// follows the user's mint.configPairing over the project's mint.toml, and tells mint-run and mint-dap
+// what it answers. The last tests run the real mint-lsp and mint-run of the checkout.
 import assert from "node:assert/strict";
+import { spawn, spawnSync } from "node:child_process";
+import { existsSync, mkdtempSync, realpathSync, rmSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
+import * as path from "node:path";
 import { test } from "node:test";
+import { fileURLToPath, pathToFileURL } from "node:url";
+import { createMessageConnection, StreamMessageReader, StreamMessageWriter } from "vscode-jsonrpc/node";
 
-import { configurationOf, isPairedConfig, programOf } from "../../src/pairing";
+import {
+  APPLICATION_FILES,
+  askApplicationFiles,
+  configurationChoice,
+  isConfigurationFile,
+  type ApplicationFiles,
+  type SendRequest,
+} from "../../src/pairing";
+import { PYTHON_ARGUMENTS, toolArguments } from "../../src/resolve";
 
-const folder = (names: readonly string[]) => (dir: string) => {
-  assert.equal(dir, "/project");
-  return names;
-};
+const answering =
+  (answer: unknown): SendRequest =>
+  async (method, params) => {
+    assert.equal(method, "workspace/executeCommand");
+    assert.deepEqual(params, { command: APPLICATION_FILES, arguments: ["file:///p/a.mnt"] });
+    return answer;
+  };
 
-test("a .cfg beside a .mnt of the same name is Mint", () => {
-  assert.equal(isPairedConfig("/project/conveyor.cfg", folder(["conveyor.mnt", "conveyor.cfg"])), true);
+test("the server is asked with the file's URI, and an answer that is not two URIs or nulls is no answer", async () => {
+  const files = { program: "file:///p/a.mnt", configuration: "file:///p/a.cfg" };
+  assert.deepEqual(await askApplicationFiles(answering(files), "file:///p/a.mnt"), files);
+  assert.deepEqual(await askApplicationFiles(answering({ program: "file:///p/a.mnt", configuration: null }), "file:///p/a.mnt"), {
+    program: "file:///p/a.mnt",
+    configuration: null,
+  });
+  for (const bad of [null, "file:///p/a.cfg", {}, { program: 1, configuration: null }, { program: null }]) {
+    assert.equal(await askApplicationFiles(answering(bad), "file:///p/a.mnt"), undefined, JSON.stringify(bad));
+  }
 });
 
-test("names and extensions compare without case", () => {
-  assert.equal(isPairedConfig("/project/CONVEYOR.CFG", folder(["Conveyor.MNT"])), true);
+test("a tool is told the server's configuration file or that there is none; with no answer it pairs the program", () => {
+  const toPath = (uri: string) => fileURLToPath(uri);
+  assert.deepEqual(configurationChoice({ program: "file:///p/a.mnt", configuration: "file:///p/setup_a.cfg" }, toPath), {
+    config: "/p/setup_a.cfg",
+  });
+  assert.deepEqual(configurationChoice({ program: "file:///p/a.mnt", configuration: null }, toPath), { noConfig: true });
+  assert.equal(configurationChoice(undefined, toPath), undefined);
 });
 
-test("a .cfg without its program is left alone", () => {
-  assert.equal(isPairedConfig("/project/conveyor.cfg", folder(["other.mnt", "conveyor.cfg", "conveyor.mnt.bak"])), false);
+test("a file opens as Mint when the server says it is a program's configuration file", () => {
+  const cfg = "file:///p/a.cfg";
+  assert.equal(isConfigurationFile(cfg, { program: "file:///p/a.mnt", configuration: cfg }), true);
+  assert.equal(isConfigurationFile(cfg, { program: null, configuration: cfg }), true); // mint.toml's config, every program's
+  assert.equal(isConfigurationFile(cfg, { program: null, configuration: null }), false);
+  assert.equal(isConfigurationFile(cfg, undefined), false);
+  // Asked about a program, the answer names its configuration file, which is not the file asked about.
+  assert.equal(isConfigurationFile("file:///p/a.mnt", { program: "file:///p/a.mnt", configuration: cfg }), false);
 });
 
-test("only .cfg files are paired, and the folder is not read for others", () => {
-  const unread = () => assert.fail("the folder must not be listed");
-  assert.equal(isPairedConfig("/project/conveyor.ini", unread), false);
-  assert.equal(isPairedConfig("/project/conveyor.mnt", unread), false);
-  assert.equal(isPairedConfig("/project/cfg", unread), false);
-});
+// The Python of the mintlang checkout this extension lives in, when it has been set up.
+const CHECKOUT_PYTHON = path.resolve(__dirname, "..", "..", "..", "..", ".venv", "bin", "python");
 
-test("mint.configPairing decides which files are configurations, as in the server", () => {
-  const names = folder(["conveyor.mnt", "setup_conveyor.cfg", "conveyor.cfg", "conveyor.ini"]);
-  assert.equal(isPairedConfig("/project/setup_conveyor.cfg", names, "setup_<name>.cfg"), true);
-  assert.equal(isPairedConfig("/project/conveyor.cfg", names, "setup_<name>.cfg"), false);
-  assert.equal(isPairedConfig("/project/conveyor.ini", names, "<name>.ini"), true);
-  // The prefix compares with case, the suffix without (lsp/workspace.py, partner()).
-  assert.equal(isPairedConfig("/project/SETUP_conveyor.cfg", names, "setup_<name>.cfg"), false);
-  assert.equal(isPairedConfig("/project/setup_conveyor.CFG", names, "setup_<name>.cfg"), true);
-});
+/** A project whose mint.toml pairs setup_<name>.cfg, with a.cfg beside too: each file prints its name. */
+function project(): { folder: string; program: string; setup: string; plain: string } {
+  const folder = realpathSync(mkdtempSync(path.join(tmpdir(), "mint-pairing-")));
+  writeFileSync(path.join(folder, "mint.toml"), 'config-pairing = "setup_<name>.cfg"\n');
+  const file = (name: string, text: string) => {
+    writeFileSync(path.join(folder, name), text);
+    return path.join(folder, name);
+  };
+  return {
+    folder,
+    program: file("a.mnt", 'PRINT "program"\n'),
+    setup: file("setup_a.cfg", 'PRINT "setup_a.cfg"\n'),
+    plain: file("a.cfg", 'PRINT "a.cfg"\n'),
+  };
+}
 
-test("a pattern without <name> or without a suffix pairs nothing, and a program is never a configuration", () => {
-  const unread = () => assert.fail("the folder must not be listed");
-  assert.equal(isPairedConfig("/project/conveyor.cfg", unread, ""), false);
-  assert.equal(isPairedConfig("/project/conveyor.cfg", unread, "config.cfg"), false);
-  assert.equal(isPairedConfig("/project/conveyor", unread, "<name>"), false);
-  assert.equal(isPairedConfig("/project/a.mnt", unread, "<name>.mnt"), false);
-});
+/** The checkout's mint-lsp over stdio, started as VS Code starts it with the user's `mint` settings (null: unset). */
+async function languageServer(mint: Record<string, unknown>) {
+  const child = spawn(CHECKOUT_PYTHON, [...PYTHON_ARGUMENTS["mint-lsp"]], { stdio: ["pipe", "pipe", "ignore"] });
+  const connection = createMessageConnection(new StreamMessageReader(child.stdout), new StreamMessageWriter(child.stdin));
+  connection.listen();
+  const initialize = { processId: process.pid, rootUri: null, capabilities: {}, initializationOptions: mint };
+  await connection.sendRequest("initialize", initialize);
+  await connection.sendNotification("initialized", {});
+  const send: SendRequest = (method, params) => connection.sendRequest(method, params);
+  return {
+    files: (file: string): Promise<ApplicationFiles | undefined> => askApplicationFiles(send, pathToFileURL(file).href),
+    change: (settings: Record<string, unknown>) =>
+      connection.sendNotification("workspace/didChangeConfiguration", { settings: { mint: settings } }),
+    stop: async () => {
+      await connection.sendRequest("shutdown");
+      await connection.sendNotification("exit");
+      connection.dispose();
+      child.kill();
+    },
+  };
+}
 
-test("a program's configuration file is the name the pattern gives, as it is listed, when it exists", () => {
-  const names = folder(["conveyor.mnt", "conveyor.cfg", "setup_conveyor.cfg", "OTHER.MNT", "other.CFG"]);
-  assert.equal(configurationOf("/project/conveyor.mnt", names), "/project/conveyor.cfg");
-  assert.equal(configurationOf("/project/conveyor.mnt", names, "setup_<name>.cfg"), "/project/setup_conveyor.cfg");
-  // Whatever the case of the names, as in the server (lsp/workspace.py, _sibling()).
-  assert.equal(configurationOf("/project/OTHER.MNT", names), "/project/other.CFG");
-  assert.equal(configurationOf("/project/missing.mnt", names), undefined);
-  const unread = () => assert.fail("the folder must not be listed");
-  assert.equal(configurationOf("/project/conveyor.mnt", unread, ""), undefined);
-  assert.equal(configurationOf("/project/conveyor.cfg", unread), undefined);
-});
+/** What mint-run prints first, run as Run in simulator runs it: told of the configuration file as `files` say. */
+function runFirstLine(program: string, files: ApplicationFiles | undefined): string | undefined {
+  const config = configurationChoice(files, (uri) => fileURLToPath(uri));
+  const unset = { controller: undefined, dialect: undefined };
+  const args = [...PYTHON_ARGUMENTS["mint-run"], ...toolArguments("mint-run", program, unset, config)];
+  const ran = spawnSync(CHECKOUT_PYTHON, args, { cwd: path.dirname(program), encoding: "utf8", timeout: 60_000 });
+  assert.equal(ran.status, 0, ran.stderr);
+  return ran.stdout.split("\n")[0];
+}
 
-test("the exact name wins over one differing only in case", () => {
-  const names = folder(["APP.CFG", "app.cfg", "app.mnt", "APP.mnt"]);
-  assert.equal(configurationOf("/project/app.mnt", names), "/project/app.cfg");
-  assert.equal(programOf("/project/APP.CFG", names), "/project/APP.mnt");
-});
+test(
+  "Run in simulator runs the configuration file the server checks: mint.toml's, under the user's mint.configPairing",
+  { skip: !existsSync(CHECKOUT_PYTHON) && "no ../.venv" },
+  async () => {
+    const { folder, program } = project();
+    const server = await languageServer({ mint: { configPairing: null } });
+    try {
+      // Unset in the editor: the project's setup_<name>.cfg, as mint-run pairs it on the command line.
+      const cli = spawnSync(CHECKOUT_PYTHON, [...PYTHON_ARGUMENTS["mint-run"], "-q", program], { cwd: folder, encoding: "utf8" });
+      assert.equal(cli.stdout.split("\n")[0], "setup_a.cfg");
+      assert.equal(runFirstLine(program, await server.files(program)), "setup_a.cfg");
+      await server.change({ configPairing: "<name>.cfg" });
+      assert.equal(runFirstLine(program, await server.files(program)), "a.cfg");
+      await server.change({ configPairing: "" }); // programs have no configuration file
+      assert.equal(runFirstLine(program, await server.files(program)), "program");
+      await server.change({ configPairing: "<name>.ini" }); // names no file: none
+      assert.equal(runFirstLine(program, await server.files(program)), "program");
+      await server.change({ configPairing: null });
+      assert.equal(runFirstLine(program, await server.files(program)), "setup_a.cfg");
+      // The server without an answer (not running): mint-run pairs the program by the project itself.
+      assert.equal(runFirstLine(program, undefined), "setup_a.cfg");
+    } finally {
+      await server.stop();
+      rmSync(folder, { recursive: true });
+    }
+  },
+);
 
-test("a program is never its own configuration file, whatever the pattern says", () => {
-  const names = folder(["conveyor.mnt", "conveyor_setup.mnt"]);
-  assert.equal(configurationOf("/project/conveyor.mnt", names, "<name>.mnt"), undefined);
-  assert.equal(configurationOf("/project/conveyor.mnt", names, "<name>_setup.MNT"), undefined);
-});
-
-test("a configuration file's program is found beside it, as it is listed", () => {
-  const names = folder(["conveyor.mnt", "conveyor.cfg", "setup_conveyor.cfg", "Other.Mnt", "other.cfg", "lone.cfg"]);
-  assert.equal(programOf("/project/conveyor.cfg", names), "/project/conveyor.mnt");
-  assert.equal(programOf("/project/setup_conveyor.cfg", names, "setup_<name>.cfg"), "/project/conveyor.mnt");
-  assert.equal(programOf("/project/other.cfg", names), "/project/Other.Mnt");
-  assert.equal(programOf("/project/lone.cfg", names), undefined);
-  const unread = () => assert.fail("the folder must not be listed");
-  assert.equal(programOf("/project/conveyor.mnt", unread), undefined);
-  assert.equal(programOf("/project/conveyor.cfg", unread, ""), undefined);
-});
+test(
+  "the .cfg that opens as Mint is the one the server pairs: mint.toml's, under the user's mint.configPairing",
+  { skip: !existsSync(CHECKOUT_PYTHON) && "no ../.venv" },
+  async () => {
+    const { folder, setup, plain } = project();
+    const server = await languageServer({ mint: { configPairing: null } });
+    const opensAsMint = async (file: string) => isConfigurationFile(pathToFileURL(file).href, await server.files(file));
+    try {
+      assert.equal(await opensAsMint(setup), true);
+      assert.equal(await opensAsMint(plain), false);
+      await server.change({ configPairing: "<name>.cfg" });
+      assert.equal(await opensAsMint(setup), false);
+      assert.equal(await opensAsMint(plain), true);
+    } finally {
+      await server.stop();
+      rmSync(folder, { recursive: true });
+    }
+  },
+);

@@ -1,11 +1,10 @@
 import assert from "node:assert/strict";
 import { spawnSync } from "node:child_process";
-import { existsSync, mkdtempSync, readdirSync, rmSync, writeFileSync } from "node:fs";
+import { existsSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import * as path from "node:path";
 import { test } from "node:test";
 
-import { chosenConfiguration } from "../../src/pairing";
 import {
   displayCommand,
   fileCommand,
@@ -196,34 +195,6 @@ test(
     rmSync(project, { recursive: true });
     assert.equal(run.status, 0, run.stderr);
     assert.match(run.stdout, /ready/);
-  },
-);
-
-test(
-  "Run in simulator pairs the program as the project's mint.toml does, unless the user set mint.configPairing",
-  { skip: !existsSync(CHECKOUT_PYTHON) && "no ../.venv" },
-  () => {
-    const project = mkdtempSync(path.join(tmpdir(), "mint-pairing-"));
-    writeFileSync(path.join(project, "mint.toml"), 'config-pairing = "setup_<name>.cfg"\n');
-    writeFileSync(path.join(project, "a.mnt"), 'PRINT "program"\n');
-    writeFileSync(path.join(project, "a.cfg"), 'PRINT "a.cfg"\n');
-    writeFileSync(path.join(project, "setup_a.cfg"), 'PRINT "setup_a.cfg"\n');
-    const program = path.join(project, "a.mnt");
-    const run = (pairing: string | undefined) => {
-      const config = chosenConfiguration(program, pairing, readdirSync);
-      const args = [...PYTHON_ARGUMENTS["mint-run"], ...toolArguments("mint-run", program, UNSET, config)];
-      const ran = spawnSync(CHECKOUT_PYTHON, args, { cwd: project, encoding: "utf8", timeout: 60_000 });
-      assert.equal(ran.status, 0, ran.stderr);
-      return ran.stdout.split("\n").slice(0, 2);
-    };
-    try {
-      assert.deepEqual(run(undefined), ["setup_a.cfg", "program"]);
-      assert.deepEqual(run("<name>.cfg"), ["a.cfg", "program"]);
-      assert.deepEqual(run(""), ["program", ""]);
-      assert.deepEqual(run("<name>.ini"), ["program", ""]);
-    } finally {
-      rmSync(project, { recursive: true });
-    }
   },
 );
 

@@ -12,7 +12,6 @@ test("an empty configuration gives the defaults", () => {
     controller: "nextmove-pci",
     dialect: "v4",
     pairConfigFiles: true,
-    configPairing: "<name>.cfg",
     debounceMs: 150,
   });
 });
@@ -37,11 +36,7 @@ test("values of the wrong type or outside the enums fall back to the defaults", 
 });
 
 test("the server's own settings are read, bad ones fall back to its defaults", () => {
-  const settings = readSettings(section({ configPairing: " setup_<name>.cfg ", debounceMs: 400 }));
-  assert.equal(settings.configPairing, "setup_<name>.cfg");
-  assert.equal(settings.debounceMs, 400);
-  // An empty pattern is kept: the server then pairs no configuration file.
-  assert.equal(readSettings(section({ configPairing: "" })).configPairing, "");
+  assert.equal(readSettings(section({ debounceMs: 400 })).debounceMs, 400);
   for (const debounceMs of [-1, 1.5, "200", null]) {
     assert.equal(readSettings(section({ debounceMs })).debounceMs, 150, String(debounceMs));
   }

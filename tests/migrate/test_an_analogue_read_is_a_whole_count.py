@@ -18,11 +18,12 @@ from tests.migrate.helpers import rewritten
 
 
 def test_the_count_is_the_whole_part() -> None:
-    assert rewritten("S-ANALOG", "x = A1\n").splitlines()[-1] == "x = INT((ADC.0 + 100) * 1024 / 200)"
+    assert rewritten("S-ANALOG", "x = A1\n").splitlines()[-1] == "x = INT((ADC.0 + 100) * 1024 / 200) - (ADC.0 >= 100)"
 
 
 def test_the_joystick_keeps_its_subtraction() -> None:  # 001:4375
-    assert rewritten("S-ANALOG", "JOG = A1 - 512\n").splitlines()[-1] == "JOG = INT((ADC.0 + 100) * 1024 / 200) - 512"
+    migrated = rewritten("S-ANALOG", "JOG = A1 - 512\n").splitlines()[-1]
+    assert migrated == "JOG = (INT((ADC.0 + 100) * 1024 / 200) - (ADC.0 >= 100)) - 512"
 
 
 def test_the_whole_part_is_no_int_of_a_sign() -> None:
@@ -33,5 +34,14 @@ def test_a_comparison_with_a_count_holds_as_in_v3() -> None:
     # 0.1 % reads 512 (512.512 -> 512) and 50.1 % reads 768 (150.1 * 1024 / 200 = 768.512 -> 768)
     program = 'WAIT = 2\nIF A1 = 512 THEN PRINT "centre"\nIF A2 = 768 THEN PRINT "three quarters"\n'
     levels = Scenario(adc=(AdcLevel(time_ms=0, channel=0, percent=0.1), AdcLevel(time_ms=0, channel=1, percent=50.1)))
+    found = verify(migrate(program), scenario=levels, until_ms=100)
+    assert found.verdict is Verdict.EQUIVALENT, found.divergence
+
+
+def test_the_full_scale_reads_the_top_count_as_in_v3() -> None:
+    # 10 bits read 0 to 1023 (001:5748-5750): at +10 V (ADC 100 %, 000:6358) v3 reads 1023, where 200 * 1024 / 200
+    # is 1024, a count v3 never read
+    program = 'WAIT = 2\nIF A1 = 1023 THEN PRINT "full scale"\nPRINT A1 - 512\n'
+    levels = Scenario(adc=(AdcLevel(time_ms=0, channel=0, percent=100.0),))
     found = verify(migrate(program), scenario=levels, until_ms=100)
     assert found.verdict is Verdict.EQUIVALENT, found.divergence

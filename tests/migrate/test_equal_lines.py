@@ -54,7 +54,7 @@ def test_each_of_two_equal_lines_gets_its_manual_item(rule: str, source: str) ->
 
 def test_each_of_two_equal_analogue_reads_is_converted_and_flagged() -> None:
     result = one_rule("S-ANALOG", "y = 2 * (A1)\ny = 2 * (A1)\n")
-    assert result.text.count("y = 2 * (INT((ADC.0 + 100) * 1024 / 200))\n") == 2
+    assert result.text.count("y = 2 * (INT((ADC.0 + 100) * 1024 / 200) - (ADC.0 >= 100))\n") == 2
     assert [item.line for item in result.manual] == [2, 4]
 
 

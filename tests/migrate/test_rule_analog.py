@@ -17,15 +17,16 @@ def test_reads_are_converted_and_each_gets_a_manual_item() -> None:
     result = one_rule("S-ANALOG", "JOG = A1 - 512, analogue2 - 512 : REM joystick\nx = ANALOGUE3\n")
     assert result.text == (
         f"REM MIGRATE: S-ANALOG: {_note(0)}\nREM MIGRATE: S-ANALOG: {_note(1)}\n"
-        "JOG = INT((ADC.0 + 100) * 1024 / 200) - 512, int((adc.1 + 100) * 1024 / 200) - 512 : REM joystick\n"
-        f"REM MIGRATE: S-ANALOG: {_note(2)}\nx = INT((ADC.2 + 100) * 1024 / 200)\n"
+        "JOG = (INT((ADC.0 + 100) * 1024 / 200) - (ADC.0 >= 100)) - 512, "
+        "(int((adc.1 + 100) * 1024 / 200) - (adc.1 >= 100)) - 512 : REM joystick\n"
+        f"REM MIGRATE: S-ANALOG: {_note(2)}\nx = INT((ADC.2 + 100) * 1024 / 200) - (ADC.2 >= 100)\n"
     )
     assert [item.line for item in result.manual] == [3, 3, 5]
 
 
-def test_a_read_inside_an_expression_needs_no_brackets_of_its_own() -> None:
-    assert "y = 2 * (INT((ADC.0 + 100) * 1024 / 200))\n" in rewritten("S-ANALOG", "y = 2 * (A1)\n")
-    assert "y = INT((ADC.0 + 100) * 1024 / 200) * 2\n" in rewritten("S-ANALOG", "y = A1 * 2\n")
+def test_a_read_inside_an_expression_is_bracketed_once() -> None:
+    assert "y = 2 * (INT((ADC.0 + 100) * 1024 / 200) - (ADC.0 >= 100))\n" in rewritten("S-ANALOG", "y = 2 * (A1)\n")
+    assert "y = (INT((ADC.0 + 100) * 1024 / 200) - (ADC.0 >= 100)) * 2\n" in rewritten("S-ANALOG", "y = A1 * 2\n")
 
 
 def test_missing_channel_is_manual() -> None:
@@ -41,4 +42,4 @@ def test_second_run_changes_nothing() -> None:
 
 def test_untouched_bytes_survive() -> None:
     text = rewritten("S-ANALOG", "\tx=A1*2\t:rem  KEEP\r\n")
-    assert text.endswith("\tx=INT((ADC.0 + 100) * 1024 / 200)*2\t:rem  KEEP\r\n")
+    assert text.endswith("\tx=(INT((ADC.0 + 100) * 1024 / 200) - (ADC.0 >= 100))*2\t:rem  KEEP\r\n")

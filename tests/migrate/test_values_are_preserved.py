@@ -51,6 +51,7 @@ def _evaluate(expression: n.Expression, dialect: str, names: dict[str, float]) -
                     "/": lambda: a / b,
                     "=": lambda: float(a == b),
                     "<>": lambda: float(a != b),
+                    ">=": lambda: float(a >= b),
                     "AND": lambda: float(int(a) & int(b)),
                     "OR": lambda: float(int(a) | int(b)),
                 }[operator]()
@@ -125,14 +126,14 @@ def test_mode_and_error_bits_name_the_same_state() -> None:
 
 
 def test_analogue_formula_maps_the_v3_range() -> None:
-    """INT((ADC + 100) * 1024 / 200) maps v4's -100..100 % onto v3's counts (+-10 V): one part in 1024
-    (v3:4368), 0 V reads 512 ("0V input produces zero speed" from A1 - 512, v3:4376), and
-    ANALOGUE1-512 spans -512 to 512 (v3:5768)."""
+    """INT((ADC + 100) * 1024 / 200) - (ADC >= 100) maps v4's -100..100 % onto v3's counts (+-10 V): one
+    part in 1024 (v3:4368), 0 V reads 512 ("0V input produces zero speed" from A1 - 512, v3:4376), and
+    the 10 bits read 0 to 1023 (v3:5748-5750), so ANALOGUE1-512 spans -512 to 511 (v3:5768 says 512)."""
     migrated = migrate("x = A1 - 512\n", only=["S-ANALOG"]).text.splitlines()[-1]
     statement = mintlang.parse(migrated + "\n", "v4").lines[0].statements[0]
     assert isinstance(statement, n.Assignment)
     spans = [_evaluate(statement.value, "v4", {"ADC.0": percent}) for percent in (-100, 0, 100)]
-    assert spans == [-512, 0, 512]
+    assert spans == [-512, 0, 511]
 
 
 @pytest.mark.parametrize("mask", ["0", "15", "000001111", "0101", "255"])

@@ -32,7 +32,8 @@ def _value(node: n.Expression, inputs: dict[str, float]) -> float:
             return float(math.trunc(_value(argument, inputs)))
         case n.Binary(operator=operator, left=left, right=right):
             a, b = _value(left, inputs), _value(right, inputs)
-            return {"+": a + b, "-": a - b, "*": a * b, "/": a / b if b else 0.0}[operator]
+            relation = float(a >= b)  # 1 when true, 0 when false (v4:1266)
+            return {"+": a + b, "-": a - b, "*": a * b, "/": a / b if b else 0.0, ">=": relation}[operator]
     raise AssertionError(f"cannot evaluate {node}")
 
 
@@ -46,7 +47,8 @@ def _assigned(text: str, dialect: str) -> n.Expression:
 def test_analogue_counts_are_kept_for_a_ten_volt_input(volts: float) -> None:
     source = "x = A2 - 512\n"
     migrated = migrate(source, only=["S-ANALOG"]).text.splitlines()[-1] + "\n"
-    counts = math.floor((volts + 10) / 20 * 1024)  # v3: whole 1024ths of -10..+10 V, 512 at 0 V (v3:4368-4376, 5760)
+    # v3: whole 1024ths of -10..+10 V, 512 at 0 V (v3:4368-4376, 5760), 10 bits reading 0 to 1023 (v3:5748-5750)
+    counts = min(math.floor((volts + 10) / 20 * 1024), 1023)
     v3 = _value(_assigned(source, "v3"), {"ANALOGUE2": counts})
     v4 = _value(_assigned(migrated, "v4"), {"ADC.1": volts * 10})
     assert v4 == pytest.approx(v3, abs=1e-9)

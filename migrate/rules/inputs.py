@@ -15,6 +15,8 @@ from mintlang.keyworddb.model import Controller
 from mintlang.migrate.context import LABEL, Context, FileView
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule
+from mintlang.migrate.rules.literals import integer_literal
+from mintlang.migrate.rules.spelling import like
 from mintlang.semantic.events import EventKind, event_of
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -28,6 +30,9 @@ IMASK_ALL_ONES = {
     Controller.NEXTMOVE_BX: 65535,
     Controller.MINTDRIVE: 262143,
 }
+
+
+_INPUT_BITS = {f"IN{bit}": bit for bit in range(8)}  # v3's one-input keywords IN0..IN7 (v3:8975-8992)
 
 
 def _byte(node: n.Expression | None) -> bool:
@@ -114,29 +119,51 @@ class InputByte(Rule):
     ``IN & k`` / ``IN AND k`` with a literal k of 0..255 already masks and is kept; ``INx``
     and ``IN.x`` read one input and are unchanged (M-BIT).
 
-    v4 reading IN also clears the latch of an edge-triggered input (v4:11976-11978), and
-    S-INEDGE makes the inputs of #INn handlers edge triggered: in a program with #INn
-    handlers a read of IN is therefore a manual item.
+    Beside #INn handlers the inputs are read with INSTATE. v3 IN, INx and IN.x read the inputs'
+    state (v3:4288-4317); S-INEDGE makes each handler's input edge triggered, and v4 IN reads
+    such an input's latched edge and clears it (v4:11976-11978, v4:11985-11988), where INSTATE
+    reads the state of every input and clears no latch (v4:12487-12536). So ``IN`` becomes
+    ``(INSTATE & 255)``, ``IN & k`` ``INSTATE & k``, and a read of a handler's input, or of
+    ``IN.x`` whose input is not known, ``INSTATE.n``.
     """
 
     id = "S-IN"
     rule_class = RuleClass.SEMI
     phase = Phase.CONTEXT
-    summary = "IN read as a byte -> (IN & 255) (IN & k with k <= 255 kept; manual with #INn handlers)"
-    evidence = "spec S-IN; v3:8927-8947, v3:2336; v4:11951-11978, v4:1802"
+    summary = "IN read as a byte -> (IN & 255) (IN & k with k <= 255 kept); beside #INn handlers IN -> INSTATE"
+    evidence = "spec S-IN; v3:8927-8947, v3:2336, v3:4288-4317; v4:11951-11996, v4:1802, v4:12487-12536"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        if context.controller.digital_inputs.high <= 7:
-            return  # no input above 7: IN reads the same byte
-        handlers = _has_input_handlers(context)
-        for file, _, statement in context.statements("IN"):
-            for read in _keyword_refs(statement, "IN"):
-                if handlers:  # masked too: the bits of those inputs are latched edges, and the read clears them
-                    reason = "IN reads all inputs and clears edge latches of #INn inputs in v4: mask with & 255"
-                    yield self.flag(file, statement.span, reason)
-                    break
-                if not _masked(parent_of(statement, read), read):
-                    yield self.replace(file, read.span, f"({file.slice(read.span)} & 255)")
+        edged = _handler_inputs(context)
+        wide = context.controller.digital_inputs.high > 7  # else IN reads the same byte
+        if not (edged or wide):
+            return
+        for file, _, statement in context.statements("IN", *_INPUT_BITS):
+            for root in n.expressions_of(statement):
+                for read in n.walk_expression(root):
+                    if isinstance(read, n.KeywordRef) and (read.keyword == "IN" or read.keyword in _INPUT_BITS):
+                        yield from self._read(file, statement, read, edged, wide=wide)
+
+    def _read(
+        self, file: FileView, statement: n.Statement, read: n.KeywordRef, edged: int, *, wide: bool
+    ) -> Iterator[Action]:
+        state = like(read.spelling, "INSTATE")
+        bit = _INPUT_BITS.get(read.keyword, read.channel)
+        if bit is not None:  # INx
+            if edged >> bit & 1:
+                yield self.replace(file, read.span, f"{state}.{bit}")
+            return
+        if read.selector is not None:  # IN.x
+            channel = read.selector.items[0] if len(read.selector.items) == 1 else None
+            number = integer_literal(channel) if channel is not None else None
+            if edged and (number is None or edged >> number & 1):
+                yield self.replace(file, read.spelling_span, state)
+            return
+        masked = _masked(parent_of(statement, read), read)
+        if edged:
+            yield self.replace(file, read.span, state if masked else f"({state} & 255)")
+        elif wide and not masked:
+            yield self.replace(file, read.span, f"({file.slice(read.span)} & 255)")
 
 
 def _masked(parent: n.Expression | None, read: n.KeywordRef) -> bool:
@@ -159,10 +186,12 @@ def _widened(value: n.Expression | None, high: int) -> bool:
     )
 
 
-def _has_input_handlers(context: Context) -> bool:
+def _handler_inputs(context: Context) -> int:
+    """The inputs of the program's #INn handlers as a bit pattern: those S-INEDGE makes edge triggered."""
+    inputs = 0
     for file, line in context.placed(LABEL):
         label = line.syntax.label
         event = event_of(label.text) if label is not None and file.unit is Unit.PROGRAM else None
-        if event is not None and event.kind is EventKind.IN:
-            return True
-    return False
+        if event is not None and event.kind is EventKind.IN and event.number is not None:
+            inputs |= 1 << event.number
+    return inputs

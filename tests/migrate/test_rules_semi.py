@@ -312,10 +312,8 @@ def test_input_byte_is_masked_to_the_v3_inputs() -> None:
     assert rewritten("S-IN", "JOG = IN\n", controller="servonode51") == "JOG = IN\n"
 
 
-def test_input_byte_with_input_handlers_is_flagged() -> None:
-    assert flagged("S-IN", "JOG = IN\n#IN1\nRETURN\n") == [
-        "IN reads all inputs and clears edge latches of #INn inputs in v4: mask with & 255"
-    ]
+def test_input_byte_with_input_handlers_reads_the_input_states() -> None:
+    assert rewritten("S-IN", "JOG = IN\n#IN1\nRETURN\n") == "JOG = (INSTATE & 255)\n#IN1\nRETURN\n"
 
 
 def test_binary_becomes_print_bin_before_each_number() -> None:

@@ -25,11 +25,11 @@ _WRITTEN = frozenset(
 # v3's predefined comms array is v4's COMMS keyword (v3:13204, v4:8289): never a user name.
 _V3_PREDEFINED = frozenset({"COMMS"})
 
-# v4 keywords the rules write only where a value is read (S-CARD writes NODE for CARD). The
+# v4 keywords the rules write only where a value is read (S-CARD writes NODE for CARD, S-IN INSTATE for IN). The
 # v3 reader takes them for user names as well, but these can be told apart: v3 declares a
 # variable by its first assignment (or FOR, INPUT, DIM) and rejects reading one not declared
 # before (v3:1352-1367, v3:1425-1429), so a name that is never written is the migrator's keyword.
-_READ_ONLY_WRITTEN = frozenset({"NODE"})
+_READ_ONLY_WRITTEN = frozenset({"NODE", "INSTATE"})
 
 
 def is_migrator_read(symbol: Symbol) -> bool:

@@ -20,18 +20,24 @@ mended; the line after an END SUB made RETURN, unreachable too). One that starts
 before it is taken for it, and may still be a new one (the GOTO before the line
 removed, unreachable once END SUB is RETURN): once the text has moved on without
 them, the fixes set aside are tried again.
+
+What the rounds leave out is kept with why (``Fixed.left_out``), and ``left_out``
+finds it for a text before any fixing, as the first round would: a count of what
+``--fix`` would fix counts only what it applies, and says why it leaves the rest.
 """
 
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Callable, Collection, Iterable, Sequence
+from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 
 from mintlang.codes import SYNTAX_ERRORS
 from mintlang.diagnostics import Diagnostic, Edit, Fix, with_edits
 from mintlang.records import record
 
 MAX_ROUNDS = 10
+ADDS_SYNTAX_ERROR = "the fix would add a syntax error"
+STAYS = "the finding stays after the fix"
 
 
 @record
@@ -42,6 +48,7 @@ class Fixed:
     fixed: tuple[Diagnostic, ...]
     remaining: tuple[Diagnostic, ...]
     converged: bool  # False: fixes still applied after MAX_ROUNDS rounds
+    left_out: tuple[tuple[_Key, str], ...] = ()  # the findings whose fix the rounds set aside for good, and why
 
 
 def automatic_fix(diagnostic: Diagnostic, *, unsafe: bool) -> Fix | None:
@@ -72,6 +79,11 @@ def _key(diagnostic: Diagnostic) -> _Key:
     return diagnostic.code, diagnostic.message
 
 
+def why_left_out(reasons: Mapping[_Key, str], diagnostic: Diagnostic) -> str | None:
+    """Why the rounds set ``diagnostic``'s fix aside (``reasons``: ``left_out``'s), if they did."""
+    return reasons.get(_key(diagnostic))
+
+
 def apply_once(
     text: str, diagnostics: Sequence[Diagnostic], *, unsafe: bool, failed: Collection[_Key] = ()
 ) -> tuple[str, list[Diagnostic]]:
@@ -91,27 +103,54 @@ def fix_text(text: str, check: Callable[[str], Sequence[Diagnostic]], *, unsafe:
     """Fix ``text`` round after round, ``check`` finding what is left after each."""
     diagnostics = check(text)
     fixed: list[Diagnostic] = []
-    failed: set[_Key] = set()
+    failed: dict[_Key, str] = {}  # each finding set aside, with why
     failed_on = text  # the text the fixes in ``failed`` were set aside on
     for _ in range(MAX_ROUNDS):
         changed, applied = apply_once(text, diagnostics, unsafe=unsafe, failed=failed)
         if not applied and failed and failed_on != text:  # the text has moved on: they may fix what is left now
-            failed = set()
+            failed = {}
             changed, applied = apply_once(text, diagnostics, unsafe=unsafe)
         if not applied:
-            return Fixed(text, tuple(fixed), tuple(diagnostics), converged=True)
+            return Fixed(text, tuple(fixed), tuple(diagnostics), converged=True, left_out=tuple(failed.items()))
         found = check(changed)
-        still_there = _not_fixed(diagnostics, applied, found)
-        if not still_there and _syntax_errors(found) > _syntax_errors(diagnostics):
-            still_there = _breaking(text, applied, check, _syntax_errors(diagnostics))
-        if still_there:
-            failed |= still_there  # undo the round; try it again without them
+        if undone := _undone(text, diagnostics, applied, found, check):
+            failed |= undone  # undo the round; try it again without them
             failed_on = text
             continue
         text, diagnostics = changed, found
         fixed.extend(applied)
     still = any(automatic_fix(d, unsafe=unsafe) is not None and _key(d) not in failed for d in diagnostics)
-    return Fixed(text, tuple(fixed), tuple(diagnostics), converged=not still)
+    return Fixed(text, tuple(fixed), tuple(diagnostics), converged=not still, left_out=tuple(failed.items()))
+
+
+def left_out(
+    text: str,
+    diagnostics: Sequence[Diagnostic],
+    check: Callable[[str], Sequence[Diagnostic]],
+    known: Mapping[_Key, str] | None = None,
+) -> dict[_Key, str]:
+    """``known`` (the findings set aside already, with why), and the findings of ``text`` (``check`` found
+    ``diagnostics``) whose fix ``--fix --unsafe-fixes`` sets aside in its first round, each with why: what a
+    count of the fixable findings leaves out. No check is made when every fix is known set aside."""
+    known = dict(known or {})
+    changed, applied = apply_once(text, diagnostics, unsafe=True, failed=known)
+    return known | _undone(text, diagnostics, applied, check(changed), check) if applied else known
+
+
+def _undone(
+    text: str,
+    before: Sequence[Diagnostic],
+    applied: Sequence[Diagnostic],
+    after: Sequence[Diagnostic],
+    check: Callable[[str], Sequence[Diagnostic]],
+) -> dict[_Key, str]:
+    """The findings whose fix a round that applied ``applied`` to ``text`` must set aside, each with why: the
+    finding is still there after it (``after``), or, none being so, the round added a syntax error."""
+    if stays := _not_fixed(before, applied, after):
+        return dict.fromkeys(stays, STAYS)
+    if (errors := _syntax_errors(before)) < _syntax_errors(after):
+        return dict.fromkeys(_breaking(text, applied, check, errors), ADDS_SYNTAX_ERROR)
+    return {}
 
 
 def _not_fixed(before: Sequence[Diagnostic], applied: Sequence[Diagnostic], after: Sequence[Diagnostic]) -> set[_Key]:
@@ -142,6 +181,18 @@ def _breaking(
     text: str, applied: Sequence[Diagnostic], check: Callable[[str], Sequence[Diagnostic]], errors: int
 ) -> set[_Key]:
     """The applied findings whose fix alone leaves ``text`` with more than ``errors`` syntax errors; every one
-    of them when none does alone."""
-    alone = {_key(d) for d in applied if _syntax_errors(check(with_edits(text, d.fixes[0].edits))) > errors}
-    return alone or set(map(_key, applied))
+    of them when none does alone. Found by halving: the fixes of a group are tried together, and a group that
+    adds none is cleared, so one bad fix among a thousand costs some twenty checks, not a thousand."""
+
+    def adds(group: Sequence[Diagnostic]) -> bool:
+        edits = [edit for finding in group for edit in finding.fixes[0].edits]
+        return _syntax_errors(check(with_edits(text, edits))) > errors
+
+    def culprits(group: Sequence[Diagnostic]) -> list[Diagnostic]:
+        """Those of ``group``, whose fixes together add a syntax error, whose fix adds one alone."""
+        if len(group) == 1:
+            return list(group)
+        halves = (group[: len(group) // 2], group[len(group) // 2 :])
+        return [found for half in halves if adds(half) for found in culprits(half)]
+
+    return set(map(_key, culprits(applied))) or set(map(_key, applied))

@@ -376,8 +376,7 @@ def _write_fix_summary(
     """What was fixed (or silenced), and what ``--fix`` (or ``--unsafe-fixes``) would fix of what is left in the
     programs."""
     lines = [fixed_summary(outcome, diff=False, silencing=silencing)] if outcome is not None else []
-    fixable = fixable_summary(programs)
-    stream.write("".join(f"{line}\n" for line in [*lines, *([fixable] if fixable else [])]))
+    stream.write("".join(f"{line}\n" for line in [*lines, *fixable_summary(programs)]))
 
 
 def _hints(results: list[Checked], hidden: set[int]) -> list[str]:

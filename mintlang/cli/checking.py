@@ -19,11 +19,13 @@ from mintlang.cli.report import FileReport
 from mintlang.detection import dialect_hint
 from mintlang.diagnostics import Diagnostic
 from mintlang.dialect import Dialect
-from mintlang.fixes import Fixed, fix_text
+from mintlang.fixes import Fixed, fix_text, left_out
 from mintlang.records import record
 from mintlang.source import SourceFile, read_source
 
 if TYPE_CHECKING:
+    from collections.abc import Callable
+
     from mintlang.analysis.analyser import Analysis
 
 
@@ -124,20 +126,32 @@ def check_file(job: Job) -> Checked:
     hint = options.hint(source)
     if job.fixing is not None and hint is None:  # a MintMT program read as v4 is not written as v4: the hint says why
         return (_silence_program if job.fixing is Fixing.SILENCE else _fix_program)(job, source, arguments)
-    analysis = check_application(source.text, config=job.configuration, select=options.select, **arguments)
-    return Checked(FileReport(str(source.path), source.text, analysis.program), analysis.configuration, hint=hint)
+    analysed = _analyser(job, arguments)
+    analysis = analysed(source.text)
+    found = analysis.program
+    unfixed = left_out(source.text, found, lambda text: analysed(text).program) if hint is None else {}
+    report = FileReport(str(source.path), source.text, found, left_out=tuple(unfixed.items()))
+    return Checked(report, analysis.configuration, hint=hint)
+
+
+def _analyser(job: Job, arguments: dict[str, object]) -> Callable[[str], Analysis]:
+    """The check of a text of the job's program, with its configuration file."""
+    return lambda text: check_application(text, config=job.configuration, select=job.options.select, **arguments)
 
 
 def _fix_program(job: Job, source: SourceFile, arguments: dict[str, object]) -> Checked:
     """Fix the program round after round; its report is that of the fixed text."""
     analyses: list[Analysis] = []
+    analysed = _analyser(job, arguments)
 
     def program_findings(text: str) -> tuple[Diagnostic, ...]:
-        analyses.append(check_application(text, config=job.configuration, select=job.options.select, **arguments))
+        analyses.append(analysed(text))
         return analyses[-1].program
 
     fixed = fix_text(source.text, program_findings, unsafe=job.fixing is Fixing.UNSAFE)
-    report = FileReport(str(source.path), fixed.text, fixed.remaining)
+    # what is left to --unsafe-fixes after the safe fixes, or to a second --fix, is counted as the report's is
+    unfixed = left_out(fixed.text, fixed.remaining, lambda text: analysed(text).program, dict(fixed.left_out))
+    report = FileReport(str(source.path), fixed.text, fixed.remaining, left_out=tuple(unfixed.items()))
     as_read = FileReport(str(source.path), source.text, analyses[0].program)
     return Checked(report, analyses[-1].configuration, fixed=FileFixed(source, fixed), as_read=as_read)
 
@@ -146,9 +160,7 @@ def _silence_program(job: Job, source: SourceFile, arguments: dict[str, object])
     """Silence each finding of the program with a comment on its line; its report is what the new text has."""
     from mintlang.analysis.silencing import silence  # noqa: PLC0415 - --add-ignore alone needs it
 
-    def analysed(text: str) -> Analysis:
-        return check_application(text, config=job.configuration, select=job.options.select, **arguments)
-
+    analysed = _analyser(job, arguments)
     before = analysed(source.text)
     silenced = silence(before.model, before.program)
     after = analysed(silenced.text)

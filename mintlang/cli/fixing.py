@@ -25,7 +25,8 @@ from mintlang import atomic
 from mintlang.cli.checking import FileFixed, Fixing, Job
 from mintlang.cli.diffs import unified, write_diff
 from mintlang.cli.report import FileReport
-from mintlang.fixes import MAX_ROUNDS, automatic_fix
+from mintlang.diagnostics import LineIndex
+from mintlang.fixes import MAX_ROUNDS, automatic_fix, why_left_out
 from mintlang.records import record
 
 F = TypeVar("F", bound=Callable[..., object])
@@ -107,19 +108,30 @@ def fixed_summary(outcome: Outcome, *, diff: bool, silencing: bool = False) -> s
     return f"{fixed}; {unwritten}." if unwritten else f"{fixed}."
 
 
-def fixable_summary(reports: Sequence[FileReport]) -> str | None:
-    """How many of the findings ``--fix`` would fix, and how many more ``--unsafe-fixes``; None if none."""
+def fixable_summary(reports: Sequence[FileReport]) -> list[str]:
+    """How many of the findings ``--fix`` would fix, and how many more ``--unsafe-fixes``; then, for each reason,
+    where the fixes it sets aside are (``FileReport.left_out``): they are not counted, as it does not apply them."""
     safe = unsafe = 0  # counted in one pass: a report's diagnostics are made as they are read
-    for diagnostic in (diagnostic for report in reports for diagnostic in report.diagnostics):
-        safe += automatic_fix(diagnostic, unsafe=False) is not None
-        unsafe += automatic_fix(diagnostic, unsafe=True) is not None
-    unsafe -= safe
-    if not safe and not unsafe:
-        return None
+    set_aside: dict[str, list[str]] = {}  # why -> where
+    for report in reports:
+        reasons = dict(report.left_out)
+        index = LineIndex(report.source) if reasons else None
+        for diagnostic in report.diagnostics:
+            fix = automatic_fix(diagnostic, unsafe=True)
+            why = why_left_out(reasons, diagnostic) if fix is not None and index is not None else None
+            if why is not None and index is not None:
+                at = index.position(diagnostic.span.start)
+                set_aside.setdefault(why, []).append(f"{report.path}:{at.line}:{at.column} {diagnostic.code}")
+            elif fix is not None:
+                safe += fix.safe
+                unsafe += not fix.safe
+    lines = [f"Set aside by --fix, as {why}: {', '.join(where)}." for why, where in set_aside.items()]
     more = f" ({unsafe} more with --unsafe-fixes)" if unsafe else ""
-    if not safe:
-        return f"{_plural(unsafe, 'finding')} fixable with --fix --unsafe-fixes."
-    return f"{_plural(safe, 'finding')} fixable with --fix{more}."
+    if safe:
+        return [f"{_plural(safe, 'finding')} fixable with --fix{more}.", *lines]
+    if unsafe:
+        return [f"{_plural(unsafe, 'finding')} fixable with --fix --unsafe-fixes.", *lines]
+    return lines
 
 
 def fix_options() -> Callable[[F], F]:

@@ -29,6 +29,7 @@ class FileReport:
     path: str
     source: str
     diagnostics: tuple[Diagnostic, ...]
+    left_out: tuple[tuple[tuple[str, str], str], ...] = ()  # findings whose fix --fix sets aside, and why (fixes)
 
     def located(self, index: LineIndex | None = None) -> Iterator[tuple[Diagnostic, int, int, int, int]]:
         """Each diagnostic with 1-based start line/column and end line/column (end exclusive), made as

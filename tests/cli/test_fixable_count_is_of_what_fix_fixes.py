@@ -50,3 +50,41 @@ def test_a_program_that_looks_like_mintmt_is_not_counted(tmp_path: Path) -> None
     assert "warning[W101]" in result.stdout and "looks like MintMT" in result.stderr
     assert "fixable with --fix" not in result.stdout
     assert mint_check("--fix", program).stdout.endswith("Nothing to fix.\n")
+
+
+# 'the' is offered THEN, which only follows an IF's condition (000:1570-1577): --fix sets that fix aside rather
+# than write a syntax error (000:18920-18923); the typographic quotes' fix (W101, safe) it applies.
+SET_ASIDE = "DIM a\nthe a = 1\nPRINT \u201cx\u201d, a\n"
+
+
+def test_a_fix_that_would_add_a_syntax_error_is_not_counted_and_is_named_at_its_finding(tmp_path: Path) -> None:
+    program = tmp_path / "cell.mnt"
+    program.write_text(SET_ASIDE, encoding="utf-8")
+    assert mint_check(program).stdout.endswith(
+        "1 finding fixable with --fix.\n"
+        f"Set aside by --fix, as the fix would add a syntax error: {program}:2:1 E3007.\n"
+    )
+
+
+def test_what_fix_fixes_is_what_was_counted_and_it_says_what_it_set_aside(tmp_path: Path) -> None:
+    program = tmp_path / "cell.mnt"
+    program.write_text(SET_ASIDE, encoding="utf-8")
+    fixed = mint_check("--fix", "--unsafe-fixes", program)
+    assert program.read_text(encoding="utf-8") == 'DIM a\nthe a = 1\nPRINT "x", a\n'
+    assert fixed.stdout.endswith(
+        "Fixed 1 finding in 1 file (1 W101).\n"
+        f"Set aside by --fix, as the fix would add a syntax error: {program}:2:1 E3007.\n"
+    )
+    again = mint_check("--fix", "--unsafe-fixes", program)
+    assert "Nothing to fix.\n" in again.stdout and "fixable with" not in again.stdout
+
+
+def test_after_the_safe_fixes_a_fix_left_to_unsafe_fixes_is_counted_as_it_would_apply(tmp_path: Path) -> None:
+    program = tmp_path / "cell.mnt"
+    program.write_text(SET_ASIDE + "prnt a\n", encoding="utf-8")  # 'prnt' respelt PRINT: unsafe, and sound
+    fixed = mint_check("--fix", program)
+    assert fixed.stdout.endswith(
+        "Fixed 1 finding in 1 file (1 W101).\n"
+        "1 finding fixable with --fix --unsafe-fixes.\n"
+        f"Set aside by --fix, as the fix would add a syntax error: {program}:2:1 E3007.\n"
+    )

@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from mintlang import check
 from mintlang.codes import SYNTAX_ERRORS
 from mintlang.diagnostics import Diagnostic, Edit, Fix, Severity, Span
-from mintlang.fixes import fix_text
+from mintlang.fixes import ADDS_SYNTAX_ERROR, fix_text, left_out
 from tests.fuzzing import examples
 
 
@@ -49,3 +49,35 @@ WORDS = ["the", "prnt", "lop", "endl", "nxt", "a", "=", "1", "to", "fr", "gosb",
 def test_fixing_adds_no_syntax_error(lines: list[str]) -> None:
     source = "DIM a\n" + "".join(f"{line}\n" for line in lines)
     assert syntax_errors(fix_text(source, check, unsafe=True).text) <= syntax_errors(source)
+
+
+def test_the_fix_set_aside_is_kept_with_why() -> None:
+    # what --fix leaves out is said, not counted as fixable: 'the' respelt THEN fits no statement (000:1570-1577)
+    result = fix_text("DIM a\nthe a = 1\nprnt a\n", check, unsafe=True)
+    assert [(code, why) for (code, _), why in result.left_out] == [("E3007", ADDS_SYNTAX_ERROR)]
+
+
+def test_before_any_fixing_the_fixes_the_first_round_sets_aside_are_found_as_fixing_finds_them() -> None:
+    source = "DIM a\nthe a = 1\nprnt a\n"
+    assert left_out(source, check(source), check) == dict(fix_text(source, check, unsafe=True).left_out)
+    assert left_out("DIM a\nprnt a\n", check("DIM a\nprnt a\n"), check) == {}  # PRINT a: nothing set aside
+
+
+def test_the_fix_that_adds_a_syntax_error_is_found_in_few_checks() -> None:
+    # 64 fixes that are sound and one that writes '(': each fix tried alone took a check per fix, 65 more
+    checks: list[str] = []
+
+    def findings(text: str) -> tuple[Diagnostic, ...]:
+        checks.append(text)
+        found = [diagnostic for diagnostic in check(text) if diagnostic.mint_error in SYNTAX_ERRORS]
+        for at, word in enumerate(text):
+            if word in "xy":
+                new = "1" if word == "x" else "("
+                fix = Fix(f"write {new}", (Edit(Span(at, at + 1), new),), safe=True)
+                found.append(Diagnostic("W101", Severity.WARNING, Span(at, at + 1), word, fixes=(fix,)))
+        return tuple(found)
+
+    source = "DIM a\n" + "a = x\n" * 32 + "a = y\n" + "a = x\n" * 32
+    result = fix_text(source, findings, unsafe=False)
+    assert result.text == source.replace("x", "1")
+    assert len(checks) <= 20  # the round, and about two checks per halving (log2 65 < 7) to find the one

@@ -31,15 +31,19 @@ _DOTTED = rf"\s*({_KEY_PART})(?:\s*\.\s*({_KEY_PART}))*\s*"
 class SettingsError(Exception):
     """A settings file that cannot be used, said in one line with its place: ``mint.toml:4: select: ...``."""
 
-    def __init__(self, path: Path, message: str, *, line: int | None = None, key: str | None = None) -> None:
+    def __init__(
+        self, path: Path, message: str, *, line: int | None = None, column: int | None = None, key: str | None = None
+    ) -> None:
         super().__init__(message)
         self.path = path
         self.line = line
+        self.column = column  # from 1, where TOML's reader stopped; a key's error names the key instead
         self.key = key
         self.message = message
 
     def __str__(self) -> str:
         place = str(self.path) if self.line is None else f"{self.path}:{self.line}"
+        place += f":{self.column}" if self.line is not None and self.column is not None else ""
         return f"{place}: {self.key}: {self.message}" if self.key else f"{place}: {self.message}"
 
 
@@ -152,10 +156,12 @@ def _parse(path: Path) -> Table | None:
     except tomllib.TOMLDecodeError as error:
         message = str(error)
         position = re.search(_TOML_POSITION, message)
-        line = int(position.group(1)) if position else None
+        line, column = (int(position.group(1)), int(position.group(2))) if position else (None, None)
         if message.endswith(_TOML_END):  # something left open: the last line, as the message has no line
-            message, line = message.removesuffix(_TOML_END) + " (at the end of the file)", text.count("\n") + 1
-        raise SettingsError(path, f"not valid TOML: {re.sub(_TOML_POSITION, '', message)}", line=line) from None
+            message = message.removesuffix(_TOML_END) + " (at the end of the file)"
+            line, column = text.count("\n") + 1, len(text) - text.rfind("\n")
+        message = f"not valid TOML: {re.sub(_TOML_POSITION, '', message)}"
+        raise SettingsError(path, message, line=line, column=column) from None
     if path.name != PYPROJECT:
         return Table(path, (), document, key_lines(text))
     table: object = document

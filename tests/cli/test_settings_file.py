@@ -200,13 +200,14 @@ def test_show_settings_of_a_path_that_is_not_there_says_so(tmp_path: Path) -> No
         ('[per-file-ignores]\n"*.mnt" = ["Q1"]\n', 2, "per-file-ignores.\"*.mnt\": 'Q1' is no code"),
         ("per-file-ignores = 3\n", 1, "per-file-ignores: must be a table"),
         ('config = "cell\\u0000.cfg"\n', 1, "config: a path cannot hold a NUL character"),
-        ('controller = "mintdrive"\nselect = [E]\n', 2, "not valid TOML: Invalid value"),
-        ('controller = "mintdrive"\nselect = [\n', 3, "not valid TOML: Invalid value (at the end of the file)"),
+        ('controller = "mintdrive"\nselect = [E]\n', "2:11", "not valid TOML: Invalid value"),  # at the E
+        ('controller = "mintdrive"\nselect = [\n', "3:1", "not valid TOML: Invalid value (at the end of the file)"),
     ],
 )
 def test_a_bad_settings_file_is_one_line_naming_file_line_and_key(
-    tmp_path: Path, text: str, line: int, message: str
+    tmp_path: Path, text: str, line: int | str, message: str
 ) -> None:
+    """A key at fault is named; TOML that cannot be read is placed at the column where its reading stopped."""
     settings = write(tmp_path / "mint.toml", text)
     result = mint_check(write(tmp_path / "a.mnt", "PRINT 1\n"))
     assert result.exit_code == 2

@@ -1,6 +1,7 @@
 """``mint.applicationFiles``: the program and configuration file a file goes with, as the server pairs them for its
 checks, so that an editor runs, debugs and opens files as Mint by the server's pairing rather than one of its own:
-the project's settings file (``config-pairing``, ``config``) under the editor's ``mint.configPairing``."""
+the project's settings file (``config-pairing``, ``config``) under the editor's ``mint.configPairing``; and the
+dialect the server reads the program in, which the editor runs it in."""
 
 from __future__ import annotations
 
@@ -14,7 +15,7 @@ from tests.lsp.conftest import open_document, uri_of
 
 pytestmark = pytest.mark.asyncio
 
-NONE = {"program": None, "configuration": None}
+NONE = {"program": None, "configuration": None, "dialect": None}
 
 
 async def application(client: LanguageClient, path: Path) -> dict:
@@ -29,10 +30,12 @@ def files(tmp_path: Path, *names: str) -> list[Path]:
     return [tmp_path / name for name in names]
 
 
-def pair(program: Path | None, configuration: Path | None) -> dict:
+def pair(program: Path | None, configuration: Path | None, dialect: str = "v4") -> dict:
+    """The answer for a file of this application; the dialect is the program's (none without one)."""
     return {
         "program": uri_of(program) if program else None,
         "configuration": uri_of(configuration) if configuration else None,
+        "dialect": dialect if program else None,
     }
 
 
@@ -114,3 +117,26 @@ async def test_the_answer_after_a_settings_change_follows_the_new_settings(clien
     client.set_configuration({"configPairing": "setup_<name>.cfg"}, section="mint")
     client.workspace_did_change_configuration(types.DidChangeConfigurationParams(settings=None))
     assert await application(client, setup) == pair(program, setup)
+
+
+MINTMT = "' a comment only MintMT has\nDim x\nx = 5\nPrint x\n"  # README, mint.dialect: a ' comment shows MintMT
+
+
+async def test_the_dialect_is_the_one_the_server_reads_the_program_in(client, tmp_path):
+    program, configuration = tmp_path / "mt.mnt", tmp_path / "mt.cfg"
+    program.write_text(MINTMT, encoding="utf-8")
+    configuration.write_text("DIM y\n", encoding="utf-8")
+    (v4,) = files(tmp_path, "v4.mnt")
+    assert await application(client, program) == pair(program, configuration, "v4")  # the default reads v4
+    client.workspace_did_change_configuration(
+        types.DidChangeConfigurationParams(settings={"mint": {"dialect": "auto"}})
+    )
+    assert await application(client, program) == pair(program, configuration, "mintmt")  # the text shows MintMT
+    assert await application(client, configuration) == pair(program, configuration, "mintmt")  # its program's
+    assert await application(client, v4) == pair(v4, None, "v4")
+
+
+async def test_the_settings_files_dialect_applies_where_the_editor_sets_none(client, tmp_path):
+    (tmp_path / "mint.toml").write_text('dialect = "mintmt"\n', encoding="utf-8")
+    (program,) = files(tmp_path, "a.mnt")
+    assert await application(client, program) == pair(program, None, "mintmt")

@@ -10,7 +10,8 @@ import { planMigration, planReplacement, type Plan } from "./migration";
 import { showError } from "./notify";
 import { execute, type Finished } from "./process";
 import { displayCommand, fileCommand, isMissingModule, MODULES } from "./resolve";
-import { configurationFor, type Server } from "./server";
+import { configurationChoice, runDialect } from "./pairing";
+import { pathOf, type Server } from "./server";
 
 /** The Mint document a command acts on: the one clicked in the explorer, else the active editor's. */
 async function targetDocument(uri: unknown): Promise<vscode.TextDocument | undefined> {
@@ -40,7 +41,8 @@ async function runInSimulator(uri: unknown, output: vscode.OutputChannel, server
   const settings = currentSettings();
   const chosen = currentChoices();
   const file = document.uri.fsPath;
-  const config = await configurationFor(server, document.uri);
+  const files = await server.applicationFiles(document.uri);
+  const config = configurationChoice(files, pathOf);
   const label = path.basename(file);
   // The configuration file the server pairs with the program; where mint-run pairs it itself, any one.
   const read = (name: string) =>
@@ -48,7 +50,8 @@ async function runInSimulator(uri: unknown, output: vscode.OutputChannel, server
   if (!(await saveOpen(read))) {
     return;
   }
-  const resolution = fileCommand(tool, file, settings, chosen, currentHost(), config);
+  const choices = { controller: chosen.controller, dialect: runDialect(chosen.dialect, files) };
+  const resolution = fileCommand(tool, file, settings, choices, currentHost(), config);
   if (!resolution.ok) {
     void showError(`${title}: ${resolution.message}`, output);
     return;
@@ -56,7 +59,7 @@ async function runInSimulator(uri: unknown, output: vscode.OutputChannel, server
   const command = resolution.command;
   output.show(true);
   if (config === undefined) {
-    output.appendLine("(mint-lsp gave no pairing: mint-run pairs the configuration file by mint.toml, not mint.configPairing)");
+    output.appendLine("(no answer from mint-lsp: mint-run pairs the configuration file and picks the dialect by mint.toml)");
   }
   output.appendLine(`$ ${displayCommand(command)}`);
   const progress = { location: vscode.ProgressLocation.Notification, title: `${title}: ${label}`, cancellable: true };

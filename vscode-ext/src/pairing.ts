@@ -8,10 +8,14 @@
 /** The server's command that answers which program and configuration file a file goes with. */
 export const APPLICATION_FILES = "mint.applicationFiles";
 
-/** A program and its configuration file, as file URIs written as the editor wrote the one it asked about; null: none. */
+/**
+ * A program and its configuration file, as file URIs written as the editor wrote the one it asked about
+ * (null: none), and the dialect the server reads the program in (null without a program).
+ */
 export interface ApplicationFiles {
   readonly program: string | null;
   readonly configuration: string | null;
+  readonly dialect: string | null;
 }
 
 /** Sends a request to the language server; vscode-languageclient's LanguageClient.sendRequest is one. */
@@ -25,8 +29,11 @@ export async function askApplicationFiles(send: SendRequest, uri: string): Promi
   if (typeof answer !== "object" || answer === null) {
     return undefined;
   }
-  const { program, configuration } = answer as Record<string, unknown>;
-  return uriOrNull(program) && uriOrNull(configuration) ? { program, configuration } : undefined;
+  const { program, configuration, dialect } = answer as Record<string, unknown>;
+  if (!uriOrNull(program) || !uriOrNull(configuration)) {
+    return undefined;
+  }
+  return { program, configuration, dialect: typeof dialect === "string" ? dialect : null };
 }
 
 /** What a tool is told of a program's configuration file: a file, or none. */
@@ -51,3 +58,11 @@ export function configurationChoice(
 /** Whether the file the server was asked about, `uri`, is a program's configuration file by its answer `files`. */
 export const isConfigurationFile = (uri: string, files: ApplicationFiles | undefined): boolean =>
   files !== undefined && files.configuration === uri && files.program !== uri;
+
+/**
+ * The dialect a run of the program is told: the user's mint.dialect, `auto` made the one the server reads
+ * the program in (its text shows it; undefined without an answer, which leaves it to the tool and mint.toml).
+ */
+export function runDialect(chosen: string | undefined, files: ApplicationFiles | undefined): string | undefined {
+  return chosen === "auto" ? (files?.dialect ?? undefined) : chosen;
+}

@@ -143,7 +143,8 @@ export type Choices = Pick<Chosen, "controller" | "dialect">;
  * configuration file (`config`: undefined leaves the pairing to the tool and the project). The
  * controller and dialect are passed only where the user chose them (`chosen`, as the debugger takes
  * them): unset, the project's mint.toml decides, and a v3 project is not run on the v4 default
- * controller. `auto` is not passed: mint-run then reads the settings file, else v4.
+ * controller. `auto`, which mint-run does not take, is not passed (Run in simulator makes it the dialect
+ * the server reads the program in first: runDialect in ./pairing).
  * A simulated run starts from the configuration file, as the server's "Run in simulator" lens does,
  * and is bounded in real time, so a program that never ends cannot hang the editor.
  */

@@ -26,9 +26,12 @@ export interface Server {
   applicationFiles(uri: vscode.Uri): Promise<ApplicationFiles | undefined>;
 }
 
+/** The path of a file URI in the server's answers. */
+export const pathOf = (uri: string): string => vscode.Uri.parse(uri).fsPath;
+
 /** What mint-run or mint-dap is told of `program`'s configuration file: the server's pairing; undefined without one. */
 export async function configurationFor(server: Server, program: vscode.Uri): Promise<ConfigurationChoice | undefined> {
-  return configurationChoice(await server.applicationFiles(program), (uri) => vscode.Uri.parse(uri).fsPath);
+  return configurationChoice(await server.applicationFiles(program), pathOf);
 }
 
 function createClient({ command, args }: Command, output: vscode.OutputChannel): LanguageClient {

@@ -15,6 +15,7 @@ import {
   askApplicationFiles,
   configurationChoice,
   isConfigurationFile,
+  runDialect,
   type ApplicationFiles,
   type SendRequest,
 } from "../../src/pairing";
@@ -29,11 +30,12 @@ const answering =
   };
 
 test("the server is asked with the file's URI, and an answer that is not two URIs or nulls is no answer", async () => {
-  const files = { program: "file:///p/a.mnt", configuration: "file:///p/a.cfg" };
+  const files = { program: "file:///p/a.mnt", configuration: "file:///p/a.cfg", dialect: "mintmt" };
   assert.deepEqual(await askApplicationFiles(answering(files), "file:///p/a.mnt"), files);
   assert.deepEqual(await askApplicationFiles(answering({ program: "file:///p/a.mnt", configuration: null }), "file:///p/a.mnt"), {
     program: "file:///p/a.mnt",
     configuration: null,
+    dialect: null,
   });
   for (const bad of [null, "file:///p/a.cfg", {}, { program: 1, configuration: null }, { program: null }]) {
     assert.equal(await askApplicationFiles(answering(bad), "file:///p/a.mnt"), undefined, JSON.stringify(bad));
@@ -42,21 +44,31 @@ test("the server is asked with the file's URI, and an answer that is not two URI
 
 test("a tool is told the server's configuration file or that there is none; with no answer it pairs the program", () => {
   const toPath = (uri: string) => fileURLToPath(uri);
-  assert.deepEqual(configurationChoice({ program: "file:///p/a.mnt", configuration: "file:///p/setup_a.cfg" }, toPath), {
-    config: "/p/setup_a.cfg",
-  });
-  assert.deepEqual(configurationChoice({ program: "file:///p/a.mnt", configuration: null }, toPath), { noConfig: true });
+  const program = { program: "file:///p/a.mnt", dialect: "v4" };
+  assert.deepEqual(configurationChoice({ ...program, configuration: "file:///p/setup_a.cfg" }, toPath), { config: "/p/setup_a.cfg" });
+  assert.deepEqual(configurationChoice({ ...program, configuration: null }, toPath), { noConfig: true });
   assert.equal(configurationChoice(undefined, toPath), undefined);
 });
 
 test("a file opens as Mint when the server says it is a program's configuration file", () => {
   const cfg = "file:///p/a.cfg";
-  assert.equal(isConfigurationFile(cfg, { program: "file:///p/a.mnt", configuration: cfg }), true);
-  assert.equal(isConfigurationFile(cfg, { program: null, configuration: cfg }), true); // mint.toml's config, every program's
-  assert.equal(isConfigurationFile(cfg, { program: null, configuration: null }), false);
+  const program = { program: "file:///p/a.mnt", dialect: "v4" };
+  assert.equal(isConfigurationFile(cfg, { ...program, configuration: cfg }), true);
+  const none = { program: null, dialect: null };
+  assert.equal(isConfigurationFile(cfg, { ...none, configuration: cfg }), true); // mint.toml's config, every program's
+  assert.equal(isConfigurationFile(cfg, { ...none, configuration: null }), false);
   assert.equal(isConfigurationFile(cfg, undefined), false);
   // Asked about a program, the answer names its configuration file, which is not the file asked about.
-  assert.equal(isConfigurationFile("file:///p/a.mnt", { program: "file:///p/a.mnt", configuration: cfg }), false);
+  assert.equal(isConfigurationFile("file:///p/a.mnt", { ...program, configuration: cfg }), false);
+});
+
+test("a run is told the user's mint.dialect, auto made the dialect the server reads the program in", () => {
+  const files = { program: "file:///p/a.mnt", configuration: null, dialect: "mintmt" };
+  assert.equal(runDialect("auto", files), "mintmt");
+  assert.equal(runDialect("v3", files), "v3");
+  assert.equal(runDialect(undefined, files), undefined); // unset: mint-run reads mint.toml itself
+  assert.equal(runDialect("auto", undefined), undefined);
+  assert.equal(runDialect("auto", { ...files, program: null, dialect: null }), undefined);
 });
 
 // The Python of the mintlang checkout this extension lives in, when it has been set up.
@@ -100,11 +112,14 @@ async function languageServer(mint: Record<string, unknown>) {
   };
 }
 
-/** What mint-run prints first, run as Run in simulator runs it: told of the configuration file as `files` say. */
-function runFirstLine(program: string, files: ApplicationFiles | undefined): string | undefined {
+/**
+ * What mint-run prints first, run as Run in simulator runs it: told of the configuration file as `files`
+ * say, and of the dialect as the user's mint.dialect (`dialect`) and `files` say.
+ */
+function runFirstLine(program: string, files: ApplicationFiles | undefined, dialect?: string): string | undefined {
   const config = configurationChoice(files, (uri) => fileURLToPath(uri));
-  const unset = { controller: undefined, dialect: undefined };
-  const args = [...PYTHON_ARGUMENTS["mint-run"], ...toolArguments("mint-run", program, unset, config)];
+  const chosen = { controller: undefined, dialect: runDialect(dialect, files) };
+  const args = [...PYTHON_ARGUMENTS["mint-run"], ...toolArguments("mint-run", program, chosen, config)];
   const ran = spawnSync(CHECKOUT_PYTHON, args, { cwd: path.dirname(program), encoding: "utf8", timeout: 60_000 });
   assert.equal(ran.status, 0, ran.stderr);
   return ran.stdout.split("\n")[0];
@@ -151,6 +166,24 @@ test(
       await server.change({ configPairing: "<name>.cfg" });
       assert.equal(await opensAsMint(setup), false);
       assert.equal(await opensAsMint(plain), true);
+    } finally {
+      await server.stop();
+      rmSync(folder, { recursive: true });
+    }
+  },
+);
+
+test(
+  "with mint.dialect auto, Run in simulator runs a MintMT program as MintMT, as the server reads it",
+  { skip: !existsSync(CHECKOUT_PYTHON) && "no ../.venv" },
+  async () => {
+    const folder = realpathSync(mkdtempSync(path.join(tmpdir(), "mint-auto-")));
+    const program = path.join(folder, "mt.mnt");
+    // A ' comment is a form only MintMT has (the README's mint.dialect auto); v4 refuses it (C2003).
+    writeFileSync(program, "' counts to five\nDim x\nx = 5\nPrint x\n");
+    const server = await languageServer({ mint: { dialect: "auto" } });
+    try {
+      assert.equal(runFirstLine(program, await server.files(program), "auto"), "5");
     } finally {
       await server.stop();
       rmSync(folder, { recursive: true });

@@ -9,6 +9,7 @@ from mintlang.keyworddb.model import ValueRange
 from mintlang.migrate.context import Context, FileView, per_pass, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import addressed_axes, writes_any
+from mintlang.migrate.rules.axes import default_axes, selector_axes
 from mintlang.migrate.rules.base import Action, Rule, keyword_refs, selector_text, values_text, written
 from mintlang.migrate.rules.gearing import master_increments
 from mintlang.migrate.rules.literals import integer_literal
@@ -30,10 +31,14 @@ class MasterSource(StatementRule):
     * every m = -1 (follow the SPEED demand) -> ``MASTERSOURCE<axes> = _msSPEED;`` whose
       default channel is the axis itself (v4:13967).
 
+    The ``;`` stands where FOLLOWAXIS sets every axis it addresses; a write that sets fewer gets
+    the source once per value instead (``FOLLOWAXIS = 1`` -> ``MASTERSOURCE = _msPOS``).
+
     Refused (manual item): -2, the pulse timer input (X-PULSE); 3..5, the v3 encoder
     board, which is AUXENCODER hardware in v4 (X-IO-EXP); mixed or computed values; a
     master axis position where the application configures an axis off (v4 then wants
-    _msENCODER, v4:13938); MintDrive and ServoNode 51, whose MASTERSOURCE takes 2 and 3
+    _msENCODER, v4:13938, and the item gives both statements: changing MASTERSOURCE resets
+    MASTERCHANNEL, v4:13947); MintDrive and ServoNode 51, whose MASTERSOURCE takes 2 and 3
     only (v4:13926-13928); and an application that writes SCALE: v3 scaled MASTERINC by the
     master axis' SCALE (v3:3771-3777), v4 scales the master into the slave's user units
     (v4:13972-13977), so unscaled counts (SCALE never written, or written as 1) are the
@@ -61,18 +66,35 @@ class MasterSource(StatementRule):
             return Refusal("FOLLOWAXIS values are not all constant axes 0..2 (or all -1): set MASTERSOURCE by hand")
         if not speed and context.controller.controller in ("mintdrive", "servonode51"):
             return Refusal(f"{context.controller.title} cannot follow an axis position (MASTERSOURCE 2 or 3 only)")
+        selector = selector_text(file, statement.keyword)
+        source = f"{like(statement.keyword.spelling, 'MASTERSOURCE')}{selector}"
+        channel = f"{like(statement.keyword.spelling, 'MASTERCHANNEL')}{selector} = {values_text(file, statement)}"
         if not speed and _configures_off(context):
+            encoder = f"{source} = {_places(context, file, statement, '_msENCODER')} : {channel}"  # v4:13936-13947
             return Refusal(
-                "an axis is configured off: follow its encoder with MASTERSOURCE = _msENCODER if it is the master"
+                f"an axis is configured off: if it is the master, write {encoder} "
+                "(in this order: MASTERSOURCE resets MASTERCHANNEL)"
             )
         if scale_is_set(context):
             return Refusal("SCALE is set: v4 scales the master into the slave's user units, v3 by the master's SCALE")
-        selector = selector_text(file, statement.keyword)
-        source = f"{like(statement.keyword.spelling, 'MASTERSOURCE')}{selector}"
         if speed:
-            return f"{source} = _msSPEED{fill(selector)}"
-        channel = f"{like(statement.keyword.spelling, 'MASTERCHANNEL')}{selector} = {values_text(file, statement)}"
-        return f"{source} = _msPOS{fill(selector)} : {channel}"
+            return f"{source} = {_places(context, file, statement, '_msSPEED')}"
+        return f"{source} = {_places(context, file, statement, '_msPOS')} : {channel}"
+
+
+def _places(context: Context, file: FileView, statement: n.KeywordStatement, constant: str) -> str:
+    """``constant`` for each axis FOLLOWAXIS sets: ``;`` where it sets every axis it names (or fills them
+    itself), else once per value with its skipped places, since a v3 write sets the first axes of the
+    list one value each (v3:1029-1066) and MASTERSOURCE resets the MASTERCHANNEL of every axis it is
+    written on (v4:13947)."""
+    selector = selector_text(file, statement.keyword)
+    values = statement.values or ()
+    axes = selector_axes(statement.keyword)
+    if axes is None and statement.keyword.selector is None:
+        axes = default_axes(context, file, statement.span.start)
+    if statement.fill or (axes is not None and len(values) >= len(axes) and None not in values):
+        return f"{constant}{fill(selector)}"
+    return ", ".join(constant if value is not None else "" for value in values)
 
 
 @per_pass

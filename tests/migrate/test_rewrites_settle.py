@@ -20,7 +20,7 @@ _SETTLE = [
     pytest.param("acceltime.1 = 5\n", "acceltime.1 = 5 : deceltime.1 = 5\n", id="acceltime-lower-case"),
     pytest.param("ACCELTIME = 10;\n", "ACCELTIME = 10; : DECELTIME = 10;\n", id="acceltime-fill"),
     # S-MASTER: v3 FOLLOWAXIS named the master axis; v4 wants a source and a channel (v4:10773)
-    pytest.param("FOLLOWAXIS = 1\n", "MASTERSOURCE = _msPOS; : MASTERCHANNEL = 1\n", id="followaxis"),
+    pytest.param("FOLLOWAXIS = 1\n", "MASTERSOURCE = _msPOS : MASTERCHANNEL = 1\n", id="followaxis"),
 ]
 
 

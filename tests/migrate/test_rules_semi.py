@@ -445,7 +445,8 @@ def test_followaxis_becomes_master_source_and_channel(source: str, expected: str
         ),
         (
             "CONFIG.1 = _off\nFOLLOWAXIS = 1\n",
-            "an axis is configured off: follow its encoder with MASTERSOURCE = _msENCODER if it is the master",
+            "an axis is configured off: if it is the master, write MASTERSOURCE = _msENCODER : MASTERCHANNEL = 1 "
+            "(in this order: MASTERSOURCE resets MASTERCHANNEL)",
             "",
         ),
         ("FOLLOWAXIS = 1\n", "MintDrive cannot follow an axis position (MASTERSOURCE 2 or 3 only)", "mintdrive"),
@@ -456,7 +457,7 @@ def test_followaxis_refusals(source: str, reason: str, controller: str) -> None:
 
 
 def test_followaxis_speed_on_mintdrive() -> None:
-    assert rewritten("S-MASTER", "FOLLOWAXIS = -1\n", controller="mintdrive") == "MASTERSOURCE = _msSPEED;\n"
+    assert rewritten("S-MASTER", "FOLLOWAXIS = -1\n", controller="mintdrive") == "MASTERSOURCE = _msSPEED\n"
 
 
 @pytest.mark.parametrize("controller", ["nextmove-pci", "nextmove-bx", "mintdrive"])

@@ -298,7 +298,9 @@ def check(
         with destination(output_file, _fail) as stream:
             _write(reports + entries, stream, output_format, statistics=statistics, quiet=quiet, color=color)
             if output_format in _FOR_PEOPLE and not quiet and not statistics:
-                _write_fix_summary(planned.program_reports(results), outcome, stream, silencing=add_ignore)
+                _write_fix_summary(
+                    planned.program_reports(results), outcome, stream, silencing=add_ignore, unsafe_fixes=unsafe_fixes
+                )
     if outcome is not None and not quiet:
         summary = fixed_summary(outcome, diff=diff, silencing=add_ignore)
         notes = outcome.notes() + ([summary] if diff or output_format not in _FOR_PEOPLE else [])
@@ -371,12 +373,12 @@ def _entries(unchecked: list[Unchecked], layer: Overrides) -> list[FileReport]:
 
 
 def _write_fix_summary(
-    programs: list[FileReport], outcome: Outcome | None, stream: IO[str], *, silencing: bool
+    programs: list[FileReport], outcome: Outcome | None, stream: IO[str], *, silencing: bool, unsafe_fixes: bool
 ) -> None:
     """What was fixed (or silenced), and what ``--fix`` (or ``--unsafe-fixes``) would fix of what is left in the
     programs."""
     lines = [fixed_summary(outcome, diff=False, silencing=silencing)] if outcome is not None else []
-    stream.write("".join(f"{line}\n" for line in [*lines, *fixable_summary(programs)]))
+    stream.write("".join(f"{line}\n" for line in [*lines, *fixable_summary(programs, unsafe_fixes=unsafe_fixes)]))
 
 
 def _hints(results: list[Checked], hidden: set[int]) -> list[str]:

@@ -108,9 +108,10 @@ def fixed_summary(outcome: Outcome, *, diff: bool, silencing: bool = False) -> s
     return f"{fixed}; {unwritten}." if unwritten else f"{fixed}."
 
 
-def fixable_summary(reports: Sequence[FileReport]) -> list[str]:
-    """How many of the findings ``--fix`` would fix, and how many more ``--unsafe-fixes``; then, for each reason,
-    where the fixes it sets aside are (``FileReport.left_out``): they are not counted, as it does not apply them."""
+def fixable_summary(reports: Sequence[FileReport], *, unsafe_fixes: bool = False) -> list[str]:
+    """How many of the findings ``--fix`` would fix, and how many more ``--unsafe-fixes`` (given, it opts in as
+    ruff's does: all are counted together); then, for each reason, where the fixes it sets aside are
+    (``FileReport.left_out``): they are not counted, as it does not apply them."""
     safe = unsafe = 0  # counted in one pass: a report's diagnostics are made as they are read
     set_aside: dict[str, list[str]] = {}  # why -> where
     for report in reports:
@@ -126,6 +127,8 @@ def fixable_summary(reports: Sequence[FileReport]) -> list[str]:
                 safe += fix.safe
                 unsafe += not fix.safe
     lines = [f"Set aside by --fix, as {why}: {', '.join(where)}." for why, where in set_aside.items()]
+    if unsafe_fixes:  # the user opted in: every fix counted is one that --fix --unsafe-fixes makes
+        safe, unsafe = 0, safe + unsafe
     more = f" ({unsafe} more with --unsafe-fixes)" if unsafe else ""
     if safe:
         return [f"{_plural(safe, 'finding')} fixable with --fix{more}.", *lines]
@@ -141,7 +144,8 @@ def fix_options() -> Callable[[F], F]:
         click.option(
             "--unsafe-fixes",
             is_flag=True,
-            help="With --fix or --diff, apply the unsafe fixes too (guesses at the intent: review them).",
+            help="With --fix or --diff, apply the unsafe fixes too (guesses at the intent: review them); alone, count"
+            " them as fixable.",
         ),
         click.option(
             "--diff",

@@ -95,3 +95,12 @@ def test_show_settings_names_all_as_written(tmp_path: Path) -> None:
     assert [line.split()[:2] for line in result.stdout.splitlines() if line.split()[:1] == ["select"]] == [
         ["select", "ALL"]
     ]
+
+
+@pytest.mark.parametrize(
+    "options",
+    [("--ignore", "E", "--select", "E0017"), ("--select", "ALL", "--ignore", "E", "--extend-select", "E17")],
+)
+def test_an_ignored_code_stays_ignored_however_narrowly_selected(options: tuple[str, ...], tmp_path: Path) -> None:
+    """Unlike ruff, where the longer prefix wins (README, Selecting codes): every ignore applies."""
+    assert codes_found(tmp_path, *options) == []

@@ -9,7 +9,7 @@ from mintlang.keyworddb.model import ValueRange
 from mintlang.migrate.context import Context, FileView, per_pass, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.addressed import addressed_axes, writes_any
-from mintlang.migrate.rules.axes import default_axes, selector_axes
+from mintlang.migrate.rules.axes import default_axes, selector_axes, selector_for
 from mintlang.migrate.rules.base import Action, Rule, keyword_refs, selector_text, values_text, written
 from mintlang.migrate.rules.gearing import master_increments
 from mintlang.migrate.rules.literals import integer_literal
@@ -213,6 +213,8 @@ class Clutch(StatementRule):
             return None
         if any(None in values or 1 in values for values in written):
             return Refusal("a MASTERINC here may be 1 (v3: no clutch): choose FOLLOWMODE by hand")
-        selector = selector_text(file, statement.keyword)
+        # only the axes that ramped: v3 locked the others at once (v3:3700), and v4 refuses FOLLOWMODE
+        # on an axis already following (v4:3546)
+        selector = selector_for(tuple(axis for axis, values in zip(axes, written, strict=True) if values))
         mode = f"{like(statement.keyword.spelling, 'FOLLOWMODE')}{selector} = _fmCLUTCH{fill(selector)}"
         return f"{mode} : {file.slice(statement.span)}"

@@ -27,7 +27,7 @@ from mintlang.codes import mint_error
 from mintlang.diagnostics import Diagnostic, Edit, Fix, LineIndex, LinesAndEnd
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Controller
+from mintlang.keyworddb.model import Controller, KeywordKind
 from mintlang.records import record
 from mintlang.syntax import nodes as n
 from mintlang.syntax.change import Change
@@ -410,6 +410,14 @@ _TWO_WORD_CLOSERS = {
 }
 _LABEL_AFTER_CODE = [_K.HASH, _K.NAME]  # a label written after a statement on its line
 _JUMPS = (_K.GOSUB, _K.GOTO)
+# What a value PRINT prints may begin with, a modifier included (PRINT HEX 255, 000:15354-15363)
+_VALUE_STARTS = frozenset({
+    _K.NAME, _K.KEYWORD, _K.FUNCTION, _K.CONSTANT, _K.NUMBER, _K.CHAR, _K.STRING,
+    _K.NOT, _K.TILDE, _K.HEX, _K.DEC, _K.BIN,
+})  # fmt: skip
+_PRINT_SEPARATORS = (
+    "PRINT's values are separated by ',' (the next printed directly after) or ';' (at the next tab stop)"
+)
 
 
 def _segments(kinds: list[TokenKind], start: int) -> list[tuple[int, int]]:
@@ -558,6 +566,10 @@ def _describe(line: LogicalLine, begin: int, end: int, failure: ParseFailure, wo
     if not at_end and _K.USING in kinds[begin:index]:  # PRINT a USING 4,1, b: USING ends its statement
         command = "PRINT" if line.texts[begin] == "?" else line.texts[begin].upper()
         return _error(2003, span, f"nothing may follow USING and its digit counts: write the rest in another {command}")
+    separator_due = "SEMICOLON" in expected and words.dialect.modern
+    if segment[0] is _K.PRINT and separator_due and _a_value_begins(line, index, end):
+        # PRINT a b: a value begins where a separator or the end was due (000:15299-15302)
+        return _error(2003, span, _PRINT_SEPARATORS)
     if segment[0] is _K.IF and not at_end and kinds[index] is _K.DO and kinds[index - 1] is _K.THEN:
         # IF a THEN DO: IF .. THEN runs its line, IF .. DO opens a block (000:1573-1578, 1594-1600)
         detail = "THEN and DO both follow the condition: IF .. DO opens a block closed by ENDIF, "
@@ -634,6 +646,15 @@ def _empty_brackets(line: LogicalLine, begin: int, closing: int) -> Diagnostic:
     called = closing - 2 >= begin and line.kinds[closing - 2] in (_K.FUNCTION, _K.NAME)  # ABS(), an array's t()
     named = f" of {line.texts[closing - 2]}" if called else ""
     return _error(2003, span, f"nothing between the brackets{named}")
+
+
+def _a_value_begins(line: LogicalLine, index: int, end: int) -> bool:
+    """Whether the token at ``index`` begins a value PRINT could print: not a command such as BEEP, which a
+    ':' would have made a statement of its own."""
+    if index >= end or line.kinds[index] not in _VALUE_STARTS:
+        return False
+    keyword = database().lookup(line.texts[index]) if line.kinds[index] is _K.KEYWORD else None
+    return keyword is None or keyword.kind is not KeywordKind.COMMAND
 
 
 def _only_a_command(word: str) -> bool:

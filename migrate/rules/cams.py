@@ -57,7 +57,8 @@ class Cams(Rule):
     Manual items: computed axes or values, an axis other than 0 and 1, no ``DIM cam<n>``,
     fast-interrupt and started modes in one statement, a program using CAMSTART or CAMEND
     (CAMTABLE resets them, v4:7960), a minc table while SCALE is set (v3 minc is counts,
-    v4 master tables are the master's user units, v3:3888, v4:7953), and a cam
+    v4 master tables are the master's user units, v3:3888, v4:7953: the item gives the
+    statement to write once the table is converted), and a cam
     written while an earlier continuous cam may run: v3 queued it ("stop at the end of the
     cycle", v3:3916-3936), v4 loads no move during a cam (v4:7726-7727) and stops at the
     end with STOP (v4:3892-3898). Reading CAM is S-READ's manual item.
@@ -122,28 +123,37 @@ class Cams(Rule):
         if len(triggered) > 1:
             return Refusal("fast-interrupt and started cams in one statement: GO only the started axes")
         tables = []
+        in_counts = []  # master tables to convert by hand
         for axis, _ in pairs:
             table = _tables(context, axis)
             if isinstance(table, Refusal):
                 return table
-            tables.append(f"{like(statement.keyword.spelling, 'CAMTABLE')}({axis}, {table})")
+            positions, masters = table
+            if masters is not None and scale_is_set(context):
+                in_counts.append(masters)
+            tables.append(f"{like(statement.keyword.spelling, 'CAMTABLE')}({axis}, {positions}, {masters or 'NULL'})")
         selector = selector_for(tuple(axis for axis, _ in pairs))
         cam = f"{like(statement.keyword.spelling, 'CAM')}{selector} = {', '.join(str(bit) for bit in bits)}"
         go = [] if triggered == {True} else [f"{like(statement.keyword.spelling, 'GO')}{selector}"]
-        return " : ".join([*tables, cam, *go])
+        written = " : ".join([*tables, cam, *go])
+        if in_counts:
+            names = " and ".join(in_counts)
+            verb = "is" if len(in_counts) == 1 else "are"
+            return Refusal(
+                f"{names} {verb} in counts, a v4 master table in the master's user units: SCALE is set; "
+                f"once {names} {verb} in those units, write {written}"
+            )
+        return written
 
 
-def _tables(context: Context, axis: int) -> str | Refusal:
-    """``cam<n>, minc<n>`` (or ``NULL``) as the program spells them, or why not."""
+def _tables(context: Context, axis: int) -> tuple[str, str | None] | Refusal:
+    """``cam<n>`` and ``minc<n>`` (None if not declared) as the program spells them, or why not."""
     if axis not in _CAM_AXES:
         return Refusal(f"v3 runs cams on axes 0 and 1 only, not on axis {axis}")
     positions = _array(context, f"cam{axis}")
     if positions is None:
         return Refusal(f"no DIM cam{axis}: v3 took axis {axis}'s cam table from cam{axis}")
-    masters = _array(context, f"minc{axis}")
-    if masters is not None and scale_is_set(context):
-        return Refusal(f"minc{axis} is in counts, a v4 master table in the master's user units: SCALE is set")
-    return f"{positions}, {masters or 'NULL'}"
+    return positions, _array(context, f"minc{axis}")
 
 
 def _array(context: Context, name: str) -> str | None:

@@ -66,7 +66,8 @@ def test_one_shot_triggered_cam_notes_the_v3_restart() -> None:
         ),
         (
             "SCALE = 4\n" + TABLES + "CAM.0 = 0\n",
-            "minc0 is in counts, a v4 master table in the master's user units: SCALE is set",
+            "minc0 is in counts, a v4 master table in the master's user units: SCALE is set; "
+            "once minc0 is in those units, write CAMTABLE(0, cam0, minc0) : CAM.0 = 0 : GO.0",
         ),
     ],
 )

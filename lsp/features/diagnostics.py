@@ -1,4 +1,4 @@
-"""Diagnostics, pulled by clients that can, pushed to the others (debounced while typing).
+"""Diagnostics, pulled by clients that can, pushed to the others (debounced while typing, both ways).
 
 Never both: a client that pulls keeps pulled and pushed diagnostics in separate
 collections, so VS Code would list every problem twice. Codes are the
@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import asyncio
 import logging
+import math
 import time
 from collections.abc import Iterable
 
@@ -116,11 +117,22 @@ def publish(server: MintServer, uri: str) -> None:
 
 
 class _Debouncer:
-    """Publishes a document's diagnostics once typing pauses for ``debounce_ms``."""
+    """Publishes a document's diagnostics once typing pauses for ``debounce_ms``, and holds a pull of them till then:
+    a client that pulls at each change (VS Code) would otherwise see every keystroke's check."""
 
     def __init__(self, server: MintServer) -> None:
         self.server = server
         self.pending: dict[str, asyncio.Task[None]] = {}
+        self.typed: dict[str, float] = {}  # when each document being typed in last changed (the loop's clock)
+
+    async def paused(self, uri: str) -> None:
+        """Once typing in ``uri`` has paused for ``debounce_ms``; at once for a document not typed in since."""
+        loop = asyncio.get_running_loop()
+        while (wait := self.typed.get(uri, -math.inf) + self._delay() - loop.time()) > 0:
+            await asyncio.sleep(wait)
+
+    def _delay(self) -> float:
+        return self.server.analyses.settings.debounce_ms / 1000
 
     def now(self, uri: str) -> None:
         self.cancel(uri)
@@ -130,13 +142,15 @@ class _Debouncer:
 
     def later(self, uri: str) -> None:
         self.cancel(uri)
-        delay = self.server.analyses.settings.debounce_ms / 1000
+        delay = self._delay()
+        self.typed[uri] = asyncio.get_running_loop().time()
         if delay <= 0:
             self.now(uri)
         else:
             self.pending[uri] = asyncio.get_running_loop().create_task(self._after(uri, delay))
 
     def cancel(self, uri: str) -> None:
+        self.typed.pop(uri, None)
         task = self.pending.pop(uri, None)
         if task is not None:
             task.cancel()
@@ -188,7 +202,8 @@ def register(server: MintServer) -> None:
         types.TEXT_DOCUMENT_DIAGNOSTIC,
         types.DiagnosticOptions(identifier="mint", inter_file_dependencies=True, workspace_diagnostics=False),
     )
-    def pull(params: types.DocumentDiagnosticParams) -> types.RelatedFullDocumentDiagnosticReport:
+    async def pull(params: types.DocumentDiagnosticParams) -> types.RelatedFullDocumentDiagnosticReport:
+        await debouncer.paused(params.text_document.uri)
         snapshot = server.snapshot(params.text_document.uri)
         items = lsp_diagnostics(snapshot) if snapshot is not None else []
         return types.RelatedFullDocumentDiagnosticReport(items=items)

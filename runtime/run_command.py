@@ -118,8 +118,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         if drives == "enabled":
             scenario = merge(scenario, Scenario(drives=(DrivesEnabled(),)))
     except ScenarioFileError as error:
-        click.echo(f"mint-run: {error}", err=True)
-        sys.exit(_USAGE_ERROR)
+        _scenario_problems(error)
     except OSError as error:
         click.echo(f"mint-run: cannot read {error.filename}: {error.strerror or error}", err=True)
         sys.exit(_USAGE_ERROR)
@@ -223,6 +222,13 @@ def _configuration(program: Path, config_path: Path | None, *, no_config: bool) 
     return other if unit is Unit.PROGRAM else None
 
 
+def _scenario_problems(error: ScenarioFileError) -> NoReturn:
+    """Every mistake of the scenario, each on a line of its own that names the tool; a usage error."""
+    for problem in error.errors:
+        click.echo(f"mint-run: {problem}", err=True)
+    sys.exit(_USAGE_ERROR)
+
+
 def _simulate(simulate: Callable[[], RunResult], termination: _Termination) -> RunResult:
     """The run's result; a problem found as it starts (a directive, the host port) is a usage error.
 
@@ -230,7 +236,9 @@ def _simulate(simulate: Callable[[], RunResult], termination: _Termination) -> R
     """
     try:
         return simulate()
-    except (ScenarioFileError, PortUnavailable) as error:
+    except ScenarioFileError as error:
+        _scenario_problems(error)
+    except PortUnavailable as error:
         click.echo(f"mint-run: {error}", err=True)
         sys.exit(_USAGE_ERROR)
     except _Terminated:  # SIGTERM after the simulator stopped, before the result came back: no result to report

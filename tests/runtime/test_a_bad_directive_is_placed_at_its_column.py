@@ -94,6 +94,17 @@ def test_mint_run_and_mint_test_print_it_as_file_line_column(tmp_path: Path) -> 
     assert _mint_test(program, "--color", "never").stdout.splitlines()[0] == f"ERROR  {program}  {said}"
 
 
+def test_mint_run_names_itself_on_each_line_of_several_problems(tmp_path: Path) -> None:
+    # every mistake is reported at once (runtime/scenario/README.md), each a line of its own, as a compiler's are
+    program = write(tmp_path, "t.mnt", "REM @sim input 3 2 at 10\nREM @expect x = \nDIM x\n")
+    run = mint_run(program)
+    assert run.exit_code == 2
+    assert run.stderr == (
+        f"mint-run: {program}:1:18: an input level is 0 or 1, not 2\n"
+        f"mint-run: {program}:2:16: expected a value to compare with at the end\n"
+    )
+
+
 def test_a_scenario_file_s_when_is_placed_at_its_line_only(tmp_path: Path) -> None:
     scenario = write(tmp_path, "t.scenario.toml", '[[input]]\nchannel = 5\nwhen = "enc 0 => 500"\n')
     with pytest.raises(ScenarioFileError) as raised:

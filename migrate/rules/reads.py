@@ -65,6 +65,18 @@ MODE_BITS: Mapping[int, str] = MappingProxyType(
 ERROR_BITS: Mapping[int, str] = MappingProxyType(
     {1: "_erABORT", 2: "_erFOLLOWING_ERROR", 3: "(_erFWD_HARD_LIMIT | _erREV_HARD_LIMIT)", 11: "_erERROR_INPUT"}
 )
+_BY_HAND = "rewrite this test by hand"
+# v3 values no v4 bit stands for: what they meant, and what to do instead (v3:5003, v3:10046-10058).
+MODE_WITHOUT_BIT: Mapping[int, tuple[str, str]] = MappingProxyType(
+    {
+        PULSE: ("pulse following", "once X-PULSE makes it a FOLLOW, test _mdFOLLOW"),
+        11: ("MOVECAM cam segment", _BY_HAND),
+        17: ("joystick, MINT/3.28 only", _BY_HAND),
+    }
+)
+ERROR_WITHOUT_BIT: Mapping[int, tuple[str, str]] = MappingProxyType(
+    {13: ("digital output fault, SmartMove only", _BY_HAND)}
+)
 
 
 # The statements whose condition is only tested for zero or not (v3:2009, v3:13999, v4:1439-1440).
@@ -108,6 +120,7 @@ class BitTest(Rule):
     keyword: str
     target: str
     bits: Mapping[int, str]
+    without_bit: Mapping[int, tuple[str, str]]  # v3 values with no v4 bit: their meaning, the advice
     exact: frozenset[int] = frozenset()  # values that mean "this bit and no other"
 
     def apply(self, context: Context) -> Iterator[Action]:
@@ -118,6 +131,11 @@ class BitTest(Rule):
             if special is not None:
                 assert isinstance(parent, n.Binary)
                 yield self.replace(file, parent.span, special)
+                continue
+            if value in self.without_bit:
+                meaning, advice = self.without_bit[value]
+                reason = f"v3 {self.keyword} {value} ({meaning}) has no {self.target} bit: {advice}"
+                yield self.flag(file, use.keyword.span, reason)
                 continue
             if value is None or (value != 0 and value not in self.bits):
                 yield self.flag(file, use.keyword.span, self.refusal)
@@ -182,6 +200,7 @@ class ModeTest(BitTest):
     keyword = "MODE"
     target = "AXISMODE"
     bits = MODE_BITS
+    without_bit = MODE_WITHOUT_BIT
     exact = frozenset({9, 18})
 
     def _special(
@@ -211,3 +230,4 @@ class ErrorTest(BitTest):
     keyword = "ERROR"
     target = "AXISERROR"
     bits = ERROR_BITS
+    without_bit = ERROR_WITHOUT_BIT

@@ -10,6 +10,7 @@ tool's options, under their long names (``until-ms = 500`` for
 
 from __future__ import annotations
 
+import importlib
 import sys
 from collections.abc import Callable, Mapping
 from dataclasses import replace
@@ -37,6 +38,12 @@ _TYPED = (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)
 _SHARED = ("controller", "dialect")  # top-level settings every tool's options of the same name default to
 _FROM_SETTINGS = "mint.from_settings"  # the context's meta key: the options the settings file gave
 _TOP_LEVEL_ONLY = frozenset({"exclude", "extend-exclude", "force-exclude"})  # options no tool's own table gives
+_COMMANDS = {  # each tool's table and its command, by module and name: the command's options are the table's keys
+    "run": ("mintlang.runtime.cli", "run"),
+    "migrate": ("mintlang.migrate.cli", "migrate"),
+    "format": ("mintlang.cli.formatter", "format_command"),
+}
+_tables_checked: dict[Path, ProjectSettings] = {}  # a settings file whose every table was checked, as it was then
 
 
 def typed(context: click.Context, name: str) -> bool:
@@ -150,6 +157,7 @@ class ProjectCommand(click.Command):
             project = project_for(self.start(ctx.params))
             if project is not None:
                 defaults = self._defaults(ctx, project)
+                check_tool_tables(project)
                 ctx.params.update(defaults)
                 ctx.meta[_FROM_SETTINGS] = frozenset(defaults)
         except SettingsError as error:
@@ -157,40 +165,74 @@ class ProjectCommand(click.Command):
         return super().invoke(ctx)
 
     def _defaults(self, context: click.Context, project: ProjectSettings) -> dict[str, Any]:
-        options = {  # an eager option (--version) does its work as it is parsed: no setting can give it
-            name.removeprefix("--"): param
-            for param in self.params
-            if not param.is_eager
-            for name in param.opts
-            if name.startswith("--")
-        }
+        options = _options(self)
         table = project.tool(self.table)
         values: dict[str, Any] = {}
         for key in _SHARED:
             if key in options and key in project.values:
                 values[options[key].name or key] = str(project.values[key].value)
         for key, value in table.values.items():
-            if key in _TOP_LEVEL_ONLY:  # its globs are the settings file's, not a tool's: one list for every tool
-                raise table.error("a setting of every tool: write it beside select, not in a tool's table", key)
-            param = options.get(key)
-            if param is None or param.name is None:
-                raise table.error(f"unknown key (known: {', '.join(sorted(options))})", key)
-            values[param.name] = _converted(context, param, table, key, value)
+            param = _option(table, key, options)
+            values[param.name or key] = _converted(context, param, table, key, value)
         return {name: value for name, value in values.items() if not typed(context, name)}
 
 
-def _converted(context: click.Context, param: click.Parameter, table: Table, key: str, value: object) -> Any:
-    """A table value as the option takes it typed (a flag: true or false; a repeatable option: a list); a path is
-    relative to the settings file's folder."""
+def check_tool_tables(project: ProjectSettings | None) -> None:
+    """Check every tool's table of the settings file, as ruff checks its whole file whatever command runs: a key
+    that no option of the tool has, or a value of the wrong kind, stops each tool, not only the one that reads
+    the table. What a value means (a scenario file to read) is left to the tool. Raises SettingsError."""
+    if project is None or _tables_checked.get(project.table.path) is project:
+        return
+    for name, (module, command) in _COMMANDS.items():
+        table = project.tool(name)
+        if table.values:  # the command is imported only for a table the file has
+            options = _options(getattr(importlib.import_module(module), command))
+            for key, value in table.values.items():
+                _shaped(_option(table, key, options), table, key, value)
+    _tables_checked[project.table.path] = project
+
+
+def _options(command: click.Command) -> dict[str, click.Parameter]:
+    """A command's options by their long names, the keys of its table; an eager option (--version) does its work
+    as it is parsed: no setting can give it."""
+    return {
+        name.removeprefix("--"): param
+        for param in command.params
+        if not param.is_eager
+        for name in param.opts
+        if name.startswith("--")
+    }
+
+
+def _option(table: Table, key: str, options: Mapping[str, click.Parameter]) -> click.Parameter:
+    """The option a table's key gives."""
+    if key in _TOP_LEVEL_ONLY:  # its globs are the settings file's, not a tool's: one list for every tool
+        raise table.error("a setting of every tool: write it beside select, not in a tool's table", key)
+    param = options.get(key)
+    if param is None or param.name is None:
+        raise table.error(f"unknown key (known: {', '.join(sorted(options))})", key)
+    return param
+
+
+def _shaped(param: click.Parameter, table: Table, key: str, value: object) -> bool | list[str]:
+    """A table value as the option takes it typed: a flag true or false, otherwise a string or a number (a list
+    of them for a repeatable option), as text; a path is relative to the settings file's folder."""
     if isinstance(param.type, click.types.BoolParamType):
         if not isinstance(value, bool):
             raise table.error("must be true or false", key)
-        return param.process_value(context, value)
+        return value
     items = value if isinstance(value, list) and param.multiple else [value]
     if not all(isinstance(item, str | int | float) and not isinstance(item, bool) for item in items):
         raise table.error("must be a string or a number" + (", or a list of them" if param.multiple else ""), key)
-    texts = [str(table.relative(key, str(item))) if isinstance(param.type, click.Path) else str(item) for item in items]
+    return [str(table.relative(key, str(item))) if isinstance(param.type, click.Path) else str(item) for item in items]
+
+
+def _converted(context: click.Context, param: click.Parameter, table: Table, key: str, value: object) -> Any:
+    """A table value as the option's own type converts it."""
+    shaped = _shaped(param, table, key, value)
     try:
-        return param.process_value(context, texts if param.multiple else texts[0])
+        if isinstance(shaped, bool) or param.multiple:
+            return param.process_value(context, shaped)
+        return param.process_value(context, shaped[0])
     except click.BadParameter as error:
         raise table.error(error.message, key) from None

@@ -140,7 +140,7 @@ class ProjectSettings:
             if key in values:
                 values[key] = Given(relative_globs(values[key].value, table.path.parent), values[key].origin)
         for name in TOOL_TABLES:
-            table.table(name)  # each tool checks its own keys; this checks that it is a table
+            table.table(name)  # its keys are its tool's options (mintlang.cli.settings); this checks it is a table
         ignores = table.table("per-file-ignores")
         globs = tuple(
             (glob, Given(_converted(ignores, glob, selectors), ignores.origin(glob))) for glob in ignores.values

@@ -156,17 +156,11 @@ class Layout:
     sites: tuple[Site, ...] = ()
     labels: Mapping[str, int] = field(default_factory=dict)
     columns: tuple[int, ...] = ()  # each statement's 1-based column, so a stop shows which of a line's it is
-    block_ends: Mapping[int, int] = field(default_factory=dict)  # a MintMT Event block's first statement -> its end
     expressions: ExpressionReader | None = None  # checks a breakpoint's condition as it is set
     refused: str | None = None  # the compiler's message, when it refuses the program or its configuration
 
     def column(self, pc: int) -> int:
         return self.columns[pc] if pc < len(self.columns) else 1
-
-    def holds(self, start: int, pc: int) -> bool:
-        """Whether the code of the label at ``start`` holds ``pc``: a v4 label's runs on to the next label, a
-        MintMT Event block's stops at its End Event (the code after it is the program's again, MT-7)."""
-        return start <= pc <= self.block_ends.get(start, pc)
 
 
 class _Compiled(Exception):
@@ -183,7 +177,7 @@ def layout(application: Application) -> Layout:
         labels = dict(controller.linked.handlers)
         columns = _columns(application, sites)
         expressions = ExpressionReader.of(controller, application.dialect)
-        raise _Compiled(Layout(sites, labels, columns, controller.linked.event_block_ends, expressions))
+        raise _Compiled(Layout(sites, labels, columns, expressions))
 
     try:
         application.run(compiled)

@@ -25,7 +25,7 @@ from mintlang.runtime.debugger.execution import ERRORS, UNHANDLED, Execution
 from mintlang.runtime.debugger.framing import FramingError, read_message, write_message
 from mintlang.runtime.debugger.launch import Application, LaunchError, Layout, layout, prepare
 from mintlang.runtime.debugger.variables import NotSettable, References, scopes
-from mintlang.runtime.interpreter.vm import Site, StopReason
+from mintlang.runtime.interpreter.vm import Frame, Site, StopReason
 from mintlang.runtime.run import RunResult
 from mintlang.syntax.lexer import lex
 from mintlang.syntax.nodes import identity
@@ -282,7 +282,7 @@ class Session:
         frames = []
         pc = execution.point.pc
         for depth, frame in enumerate([*reversed(vm.frames), None]):
-            frames.append(self._frame(depth, self._site(pc, execution), pc, controller))
+            frames.append(self._frame(depth, self._site(pc, execution), pc, frame, controller))
             if frame is None:
                 break
             pc = frame.entered_at  # the GOSUB, the statement #ONERROR's error came from, where an event broke in
@@ -302,9 +302,11 @@ class Session:
             return Site(ending.unit, ending.line, ending.statement or "")
         return sites[-1] if sites else None
 
-    def _frame(self, depth: int, site: Site | None, pc: int, controller: Controller) -> dict[str, Any]:
+    def _frame(
+        self, depth: int, site: Site | None, pc: int, opened: Frame | None, controller: Controller
+    ) -> dict[str, Any]:
         assert self.application is not None
-        name = self._routine(pc, site, controller)
+        name = self._routine(site, opened, controller)
         column = self.layout.column(pc) if site is not None and pc < len(self.layout.sites) else 1
         column += self.first_column - 1
         frame: dict[str, Any] = {"id": depth + 1, "name": name, "line": site.line if site else 0, "column": column}
@@ -313,17 +315,20 @@ class Session:
             frame["source"] = source
         return frame
 
-    def _routine(self, pc: int, site: Site | None, controller: Controller) -> str:
-        """The name of the subroutine or handler holding ``pc``: the nearest label at or before it in its file
-        whose code holds it."""
+    def _routine(self, site: Site | None, opened: Frame | None, controller: Controller) -> str:
+        """The name of a frame: the subroutine or handler its call ``opened``, by the label its code starts at (a
+        label a GOTO jumps to opens none); the outermost frame is its file's."""
         if site is None:
             return "program"
-        linked = controller.linked
-        labels = linked.handlers if site.unit == "program" else linked.configuration_handlers
-        before = [(start, label) for label, start in labels.items() if self.layout.holds(start, pc)]
-        if not before:
+        if opened is None:
             return site.unit
-        _, label = max(before)
+        linked = controller.linked
+        unit = controller.vm.sites[opened.target].unit if opened.target < len(controller.vm.sites) else site.unit
+        labels = linked.handlers if unit == "program" else linked.configuration_handlers
+        called = [label for label, start in labels.items() if start == opened.target]
+        if not called:
+            return site.unit
+        label = called[-1]  # of labels on lines in a row, the one nearest the code
         return "#" + self.spellings.get(label, label)
 
     def scopes(self, arguments: dict[str, Any]) -> dict[str, Any]:

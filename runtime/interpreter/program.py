@@ -45,7 +45,6 @@ class Linked:
     configuration_handlers: Mapping[str, int]  # the configuration file's
     names: Names
     plain: frozenset[str]  # the names the program uses as plain variables, an array's name too (000:1086-1087)
-    event_block_ends: Mapping[int, int]  # a MintMT Event block's first statement -> its End Event, by pc
     elses: Mapping[int, tuple[int, int]]  # an IF block's ELSE -> its IF .. DO and its ENDIF, by pc
 
 
@@ -98,7 +97,6 @@ def link(
         compiled_loops.attach(vm, statements, model.structures[unit].blocks, positions, expressions)
     if program_start == 0:  # no configuration file: the program runs first, from its entry
         vm.pc = entry
-    event_block_ends = _event_block_ends(model.structures[Unit.PROGRAM].blocks, program_positions)
     elses = {
         pc: ends
         for (unit, _), (positions, *_) in zip(units, layouts, strict=True)
@@ -109,7 +107,6 @@ def link(
         handlers.get(Unit.CONFIGURATION, {}),
         names,
         frozenset(expressions.plain),
-        event_block_ends,
         elses,
     )
 
@@ -173,16 +170,6 @@ def _enter_startup(
     written = line.syntax.text[statement.span.start : statement.span.end].strip()
     vm.sites.append(Site(Unit.PROGRAM.value, line.number, written, type(statement).__name__, True))
     vm.steps_over.append(True)
-
-
-def _event_block_ends(blocks: tuple[Block, ...], positions: Mapping[Place, int]) -> dict[int, int]:
-    """Each closed MintMT Event block's first statement and its ``End Event``, as the block analysis matched
-    them (the code after the block is the program's again, MT-7)."""
-    return {
-        positions[block.opener] + 1: positions[block.closer]
-        for block in blocks
-        if block.kind is BlockKind.EVENT and block.closer is not None
-    }
 
 
 def _elses(blocks: tuple[Block, ...], positions: Mapping[Place, int]) -> dict[int, tuple[int, int]]:

@@ -79,6 +79,7 @@ class Frame:
     loops: int  # loop stack depth at the call: loops left open inside a subroutine end with it
     rank: int | None  # the event class rank of a handler frame, None for GOSUB
     entered_at: int  # the statement a call stack shows for the caller: the GOSUB, the failing one for #ONERROR
+    target: int  # the code called, a subroutine's or handler's first statement: what a call stack names the frame by
     ending: MintError | None = None  # #ONERROR called for an error that ends the run when it returns
 
 
@@ -279,7 +280,7 @@ class Interpreter:
         """``call`` past the check of the GOSUB stack's depth."""
         back = self.pc if return_pc is None else return_pc
         shown = at if at is not None else back if rank is not None else self.pc - 1
-        self.frames.append(Frame(back, len(self.loops), rank, shown))
+        self.frames.append(Frame(back, len(self.loops), rank, shown, target))
         self.pc = target
 
     def return_(self) -> None:

@@ -26,7 +26,8 @@ def dead_ranges(blocks: Iterable[Block], opener: dict[int, n.LineSyntax], dialec
         if block.kind is not BlockKind.IF:
             continue
         statement = n.flatten_statements(opener[block.opener.line].statements)[block.opener.index]
-        assert isinstance(statement, n.IfDo)
+        if not isinstance(statement, n.IfDo):
+            continue  # an IF line in error still opens its block, with no condition to read
         value = constant_value(statement.condition, dialect)
         if value == 0:
             found.append((block.opener, block.middle or block.closer))

@@ -331,7 +331,10 @@ def _from_project(path: Path, project: ProjectSettings) -> FileSettings:
 
 
 def _matches(glob: str, path: Path, folder: Path) -> bool:
-    """A ``per-file-ignores`` glob against the path relative to the settings file's folder, or the file's name."""
+    """A ``per-file-ignores`` glob against the path relative to the settings file's folder, or the file's name;
+    one that starts with ``!`` matches the files the rest does not, as ruff's does."""
+    if glob.startswith("!"):
+        return not _matches_any((glob[1:],), path, folder)
     return _matches_any((glob,), path, folder)
 
 

@@ -2,6 +2,10 @@
 
 The guide gives no error number, so it is a warning, and only a certain case is reported:
 each limit written once on the axis, with a constant, on a constant axis.
+
+A write without axes is made on the AXES default, every axis at power-up, its values taken in order and a
+trailing ';' giving the last to the axes left (000:605-608, 617-639, 656-660): ``SOFTLIMITFORWARD = 100`` sets axis 0.
+That default is certain while the program and its configuration write no AXES.
 """
 
 from __future__ import annotations
@@ -60,3 +64,28 @@ def test_the_warning_points_at_the_reverse_value_and_names_the_forward_line() ->
 )
 def test_what_is_not_certain_is_not_reported(source: str) -> None:
     assert "W119" not in _codes(source)
+
+
+@pytest.mark.parametrize(
+    ("source", "axis"),
+    [
+        ("SOFTLIMITFORWARD = -10\nSOFTLIMITREVERSE = 0\n", 0),
+        ("SOFTLIMITFORWARD = 100;\nSOFTLIMITREVERSE = ,,200\n", 2),
+        ("SOFTLIMITFORWARD.1 = 50\nSOFTLIMITREVERSE = -5, 60\n", 1),
+    ],
+)
+def test_a_write_without_axes_is_on_the_default_axes(source: str, axis: int) -> None:
+    (diagnostic,) = mintlang.check(source)
+    assert diagnostic.code == "W119"
+    assert f"reverse software limit of axis {axis} " in diagnostic.message
+
+
+@pytest.mark.parametrize(
+    "source",
+    [
+        "SOFTLIMITFORWARD = -10\nSOFTLIMITREVERSE.1 = 0\n",  # the forward limit is axis 0's
+        "AXES[1]\nSOFTLIMITFORWARD = -10\nSOFTLIMITREVERSE.0 = 0\n",  # AXES changed the default
+    ],
+)
+def test_a_write_without_axes_is_not_taken_for_another_axis(source: str) -> None:
+    assert _codes(source) == []

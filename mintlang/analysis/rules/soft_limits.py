@@ -3,9 +3,10 @@
 SOFTLIMITREVERSE's restriction is that it be less than SOFTLIMITFORWARD (000:16000);
 the guide gives no error number for breaking it, so the toolchain warns. Only what is
 certain is reported: each keyword written once on the axis, with a constant on a constant
-axis. Both limits are scaled by the same factor, which is always positive (000:536-537),
-so their order in user units is their order in counts unless SCALE changes between them:
-a program that writes SCALE more than once is not checked.
+axis, or on the AXES default while nothing writes AXES. Both limits are scaled by the same
+factor, which is always positive (000:536-537), so their order in user units is their order
+in counts unless SCALE changes between them: a program that writes SCALE more than once is
+not checked.
 """
 
 from __future__ import annotations
@@ -32,12 +33,28 @@ class _Limit:
     number: float | None
 
 
-def _axis_values(use: KeywordUse) -> list[tuple[int | None, n.Expression | None]] | None:
-    """(axis, value) for each value the write gives; None when the axes are the default ones."""
-    selector, values = use.keyword.selector, use.statement.values or ()
-    if selector is None:
+def _axis_values(
+    use: KeywordUse, statement: n.KeywordStatement, default: range | None
+) -> list[tuple[int | None, n.Expression | None]] | None:
+    """(axis, value) for each axis the write gives a value, a trailing ';' giving the last to the axes left
+    (000:656-660); the axes are the ``default`` ones when none are written (000:617-639), None if unknown."""
+    selector, values = use.keyword.selector, statement.values or ()
+    if selector is not None:
+        axes: list[int | None] = [constant_integer(axis) for axis in selector.axes]
+    elif default is not None:
+        axes = list(default)
+    else:
         return None
-    return [(constant_integer(axis), value) for axis, value in zip(selector.axes, values, strict=False)]
+    if statement.fill and values:
+        values = (*values, *[values[-1]] * (len(axes) - len(values)))
+    return list(zip(axes, values, strict=False))
+
+
+def _default_axes(facts: Facts) -> range | None:
+    """The AXES default while the program and its configuration write no AXES: every axis (000:605-608)."""
+    if any(True for _ in facts.statements(n.Axes)):
+        return None
+    return range(facts.model.controller.axis_count)
 
 
 def check(facts: Facts) -> Iterator[Finding]:
@@ -45,6 +62,7 @@ def check(facts: Facts) -> Iterator[Finding]:
         return  # no reverse limit written (most programs): no keyword use to walk to
     limits: dict[tuple[str, int], list[_Limit]] = defaultdict(list)
     scale_writes = 0
+    default = _default_axes(facts)
     for line, use in facts.keyword_uses():
         if use.use is not Use.WRITE or not isinstance(use.statement, n.KeywordStatement):
             continue
@@ -52,7 +70,7 @@ def check(facts: Facts) -> Iterator[Finding]:
         scale_writes += name == "SCALE"
         if name not in (_FORWARD, _REVERSE):
             continue
-        written = _axis_values(use)
+        written = _axis_values(use, use.statement, default)
         if written is None or any(axis is None for axis, _ in written):
             return  # an axis not known before the program runs may be any of them
         for axis, value in written:

@@ -108,7 +108,8 @@ GROUP = Group(
         RuleDoc(
             "W119",
             catches="SOFTLIMITREVERSE set at or above SOFTLIMITFORWARD on the same axis, when the program "
-            "writes each of them once on that axis with a constant.",
+            "writes each of them once on that axis with a constant. A write without axes is on the AXES "
+            "default, every axis from 0, while neither file writes AXES.",
             why="The reverse software limit must be less than the forward one; with the two crossed, "
             "no position is inside both limits, so the soft limits do not guard the travel the program "
             "means them to. The guide gives no error number for it, so the controller's reaction is not known.",

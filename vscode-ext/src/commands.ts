@@ -41,8 +41,9 @@ async function runInSimulator(uri: unknown, output: vscode.OutputChannel, server
   const settings = currentSettings();
   const chosen = currentChoices();
   const file = document.uri.fsPath;
-  const files = await server.applicationFiles(document.uri);
-  const config = configurationChoice(files, pathOf);
+  const asks = chosen.configPairing || chosen.dialect === "auto";
+  const files = asks ? await server.applicationFiles(document.uri) : undefined;
+  const config = configurationChoice(files, chosen.configPairing, pathOf);
   const label = path.basename(file);
   // The configuration file the server pairs with the program; where mint-run pairs it itself, any one.
   const read = (name: string) =>
@@ -58,7 +59,7 @@ async function runInSimulator(uri: unknown, output: vscode.OutputChannel, server
   }
   const command = resolution.command;
   output.show(true);
-  if (config === undefined) {
+  if (asks && files === undefined) {
     output.appendLine("(no answer from mint-lsp: mint-run pairs the configuration file and picks the dialect by mint.toml)");
   }
   output.appendLine(`$ ${displayCommand(command)}`);

@@ -39,8 +39,9 @@ class Configurations implements vscode.DebugConfigurationProvider {
     _folder: vscode.WorkspaceFolder | undefined,
     given: vscode.DebugConfiguration,
   ): Promise<vscode.DebugConfiguration | undefined> {
-    const pairing = (program: string) => configurationFor(this.server, vscode.Uri.file(program));
-    const completion = await completeLaunch(given, activeProgram(), currentChoices(), pairing);
+    const chosen = currentChoices();
+    const pairing = (program: string) => configurationFor(this.server, vscode.Uri.file(program), chosen.configPairing);
+    const completion = await completeLaunch(given, activeProgram(), chosen, pairing);
     if (!completion.ok) {
       void vscode.window.showErrorMessage(`Debug in simulator: ${completion.message}`);
       return undefined;

@@ -17,7 +17,7 @@ export function currentChoices(): Chosen {
     const found = section.inspect<string>(key);
     return found?.workspaceFolderValue ?? found?.workspaceValue ?? found?.globalValue;
   };
-  return { controller: set("controller"), dialect: set("dialect") };
+  return { controller: set("controller"), dialect: set("dialect"), configPairing: set("configPairing") !== undefined };
 }
 
 function isExecutable(file: string): boolean {

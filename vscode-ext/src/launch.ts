@@ -28,6 +28,8 @@ export interface MintLaunch {
 export interface Chosen {
   readonly controller: string | undefined;
   readonly dialect: string | undefined;
+  /** Whether the user set mint.configPairing (to anything, empty included). */
+  readonly configPairing: boolean;
 }
 
 export type Completion = { readonly ok: true; readonly launch: MintLaunch } | { readonly ok: false; readonly message: string };
@@ -39,8 +41,8 @@ export function launchFor(program: string): MintLaunch {
 
 /**
  * `given` made whole: a configuration with no program debugs `activeFile`; the controller and dialect the
- * settings choose, and the configuration file `pairing` gives for the program (the language server's, or
- * `noConfig` when it pairs none; undefined leaves it to mint-dap), are added where `given` says nothing of them.
+ * settings choose, and the configuration file `pairing` gives for the program (see configurationChoice in
+ * ./pairing; undefined leaves it to mint-dap), are added where `given` says nothing of them.
  */
 export async function completeLaunch(
   given: Readonly<Record<string, unknown>>,

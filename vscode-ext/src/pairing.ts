@@ -41,15 +41,18 @@ export type ConfigurationChoice = { readonly config: string } | { readonly noCon
 
 /**
  * What a tool run on a program (mint-run, mint-dap) is told of its configuration file, from the server's
- * answer for the program (`toPath` turns its URI into the path the tool takes). Undefined without an
- * answer: the tool then pairs the program itself, by the project's settings, which lack only the
- * editor's mint.configPairing.
+ * answer for the program (`toPath` turns its URI into the path the tool takes), where the user set
+ * mint.configPairing (`userPairs`): the editor's setting then wins over the project's mint.toml, as in
+ * the server. Otherwise undefined, as without an answer: the tool pairs the program itself by the
+ * project's settings, as the server does without the setting, and as mint-run does on the command line
+ * (its own table's config or no-config, [tool.mint.run], included).
  */
 export function configurationChoice(
   files: ApplicationFiles | undefined,
+  userPairs: boolean,
   toPath: (uri: string) => string,
 ): ConfigurationChoice | undefined {
-  if (files === undefined) {
+  if (!userPairs || files === undefined) {
     return undefined;
   }
   return files.configuration === null ? { noConfig: true } : { config: toPath(files.configuration) };

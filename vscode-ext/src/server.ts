@@ -29,9 +29,13 @@ export interface Server {
 /** The path of a file URI in the server's answers. */
 export const pathOf = (uri: string): string => vscode.Uri.parse(uri).fsPath;
 
-/** What mint-run or mint-dap is told of `program`'s configuration file: the server's pairing; undefined without one. */
-export async function configurationFor(server: Server, program: vscode.Uri): Promise<ConfigurationChoice | undefined> {
-  return configurationChoice(await server.applicationFiles(program), pathOf);
+/** What mint-run or mint-dap is told of `program`'s configuration file (see configurationChoice in ./pairing). */
+export async function configurationFor(
+  server: Server,
+  program: vscode.Uri,
+  userPairs: boolean,
+): Promise<ConfigurationChoice | undefined> {
+  return configurationChoice(await server.applicationFiles(program), userPairs, pathOf);
 }
 
 function createClient({ command, args }: Command, output: vscode.OutputChannel): LanguageClient {

@@ -24,7 +24,7 @@ const manifest = JSON.parse(readFileSync(path.join(EXTENSION, "package.json"), "
   contributes: { debuggers: Debugger[]; breakpoints: { language: string }[] };
 };
 
-const NONE: Chosen = { controller: undefined, dialect: undefined };
+const NONE: Chosen = { controller: undefined, dialect: undefined, configPairing: false };
 /** The language server's pairing, as `configurationFor` gives it: `choice` for /work/robot/conveyor.mnt. */
 const pairing = (choice: ConfigurationChoice | undefined) => async (program: string) => {
   assert.equal(program, "/work/robot/conveyor.mnt");
@@ -81,7 +81,7 @@ test("F5 with no launch.json debugs the program in the editor, stopped on entry,
 
 test("a launch.json entry keeps what it says and gains only the settings the user chose", async () => {
   const given = { type: "mint", request: "launch", name: "mine", program: "/work/robot/a.mnt", noConfig: true, dialect: "v3" };
-  const chosen: Chosen = { controller: "euroservo", dialect: "mintmt" };
+  const chosen: Chosen = { controller: "euroservo", dialect: "mintmt", configPairing: true };
   const completion = await completeLaunch(given, undefined, chosen, unasked);
   assert.ok(completion.ok);
   assert.deepEqual(completion.launch, { ...given, controller: "euroservo" });

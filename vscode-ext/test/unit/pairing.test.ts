@@ -42,12 +42,14 @@ test("the server is asked with the file's URI, and an answer that is not two URI
   }
 });
 
-test("a tool is told the server's configuration file or that there is none; with no answer it pairs the program", () => {
+test("where the user set mint.configPairing a tool is told the server's configuration file, or that there is none", () => {
   const toPath = (uri: string) => fileURLToPath(uri);
-  const program = { program: "file:///p/a.mnt", dialect: "v4" };
-  assert.deepEqual(configurationChoice({ ...program, configuration: "file:///p/setup_a.cfg" }, toPath), { config: "/p/setup_a.cfg" });
-  assert.deepEqual(configurationChoice({ ...program, configuration: null }, toPath), { noConfig: true });
-  assert.equal(configurationChoice(undefined, toPath), undefined);
+  const paired = { program: "file:///p/a.mnt", dialect: "v4", configuration: "file:///p/setup_a.cfg" };
+  assert.deepEqual(configurationChoice(paired, true, toPath), { config: "/p/setup_a.cfg" });
+  assert.deepEqual(configurationChoice({ ...paired, configuration: null }, true, toPath), { noConfig: true });
+  // With no answer, or without the setting, the tool pairs the program by the project's settings itself.
+  assert.equal(configurationChoice(undefined, true, toPath), undefined);
+  assert.equal(configurationChoice(paired, false, toPath), undefined);
 });
 
 test("a file opens as Mint when the server says it is a program's configuration file", () => {
@@ -113,11 +115,11 @@ async function languageServer(mint: Record<string, unknown>) {
 }
 
 /**
- * What mint-run prints first, run as Run in simulator runs it: told of the configuration file as `files`
- * say, and of the dialect as the user's mint.dialect (`dialect`) and `files` say.
+ * What mint-run prints first, run as Run in simulator runs it: told of the configuration file and the dialect
+ * as the server's answer `files` and the user's settings say (`userPairs`: mint.configPairing set; `dialect`).
  */
-function runFirstLine(program: string, files: ApplicationFiles | undefined, dialect?: string): string | undefined {
-  const config = configurationChoice(files, (uri) => fileURLToPath(uri));
+function runFirstLine(program: string, files: ApplicationFiles | undefined, userPairs: boolean, dialect?: string) {
+  const config = configurationChoice(files, userPairs, (uri) => fileURLToPath(uri));
   const chosen = { controller: undefined, dialect: runDialect(dialect, files) };
   const args = [...PYTHON_ARGUMENTS["mint-run"], ...toolArguments("mint-run", program, chosen, config)];
   const ran = spawnSync(CHECKOUT_PYTHON, args, { cwd: path.dirname(program), encoding: "utf8", timeout: 60_000 });
@@ -135,17 +137,37 @@ test(
       // Unset in the editor: the project's setup_<name>.cfg, as mint-run pairs it on the command line.
       const cli = spawnSync(CHECKOUT_PYTHON, [...PYTHON_ARGUMENTS["mint-run"], "-q", program], { cwd: folder, encoding: "utf8" });
       assert.equal(cli.stdout.split("\n")[0], "setup_a.cfg");
-      assert.equal(runFirstLine(program, await server.files(program)), "setup_a.cfg");
+      assert.equal(runFirstLine(program, await server.files(program), false), "setup_a.cfg");
       await server.change({ configPairing: "<name>.cfg" });
-      assert.equal(runFirstLine(program, await server.files(program)), "a.cfg");
+      assert.equal(runFirstLine(program, await server.files(program), true), "a.cfg");
       await server.change({ configPairing: "" }); // programs have no configuration file
-      assert.equal(runFirstLine(program, await server.files(program)), "program");
+      assert.equal(runFirstLine(program, await server.files(program), true), "program");
       await server.change({ configPairing: "<name>.ini" }); // names no file: none
-      assert.equal(runFirstLine(program, await server.files(program)), "program");
-      await server.change({ configPairing: null });
-      assert.equal(runFirstLine(program, await server.files(program)), "setup_a.cfg");
+      assert.equal(runFirstLine(program, await server.files(program), true), "program");
       // The server without an answer (not running): mint-run pairs the program by the project itself.
-      assert.equal(runFirstLine(program, undefined), "setup_a.cfg");
+      assert.equal(runFirstLine(program, undefined, true), "setup_a.cfg");
+    } finally {
+      await server.stop();
+      rmSync(folder, { recursive: true });
+    }
+  },
+);
+
+test(
+  "with mint.configPairing unset, Run in simulator runs what mint-run runs on the command line, its own table's config too",
+  { skip: !existsSync(CHECKOUT_PYTHON) && "no ../.venv" },
+  async () => {
+    const { folder, program } = project();
+    writeFileSync(path.join(folder, "mint.toml"), '[run]\nconfig = "bench.cfg"\n'); // mint-run's option, not the server's
+    writeFileSync(path.join(folder, "bench.cfg"), 'PRINT "bench.cfg"\n');
+    const server = await languageServer({ mint: { configPairing: null } });
+    try {
+      const cli = spawnSync(CHECKOUT_PYTHON, [...PYTHON_ARGUMENTS["mint-run"], "-q", program], { cwd: folder, encoding: "utf8" });
+      assert.equal(cli.stdout.split("\n")[0], "bench.cfg");
+      assert.equal(runFirstLine(program, await server.files(program), false), "bench.cfg");
+      // The user's own pairing wins over the project's, as --config on the command line would.
+      await server.change({ configPairing: "<name>.cfg" });
+      assert.equal(runFirstLine(program, await server.files(program), true), "a.cfg");
     } finally {
       await server.stop();
       rmSync(folder, { recursive: true });
@@ -183,7 +205,7 @@ test(
     writeFileSync(program, "' counts to five\nDim x\nx = 5\nPrint x\n");
     const server = await languageServer({ mint: { dialect: "auto" } });
     try {
-      assert.equal(runFirstLine(program, await server.files(program), "auto"), "5");
+      assert.equal(runFirstLine(program, await server.files(program), false, "auto"), "5");
     } finally {
       await server.stop();
       rmSync(folder, { recursive: true });

@@ -7,7 +7,7 @@ C's ``!=`` and ``==`` are told Mint's ``<>`` and ``=`` (000:1256-1263), ``&&`` a
 ``A NOT = B`` is told ``<>`` (000:14724-14729);
 Visual Basic's ``DO .. LOOP UNTIL`` Mint's loops (000:1707, 1747, 1778, 1797) and ``ELSE IF`` a nested IF block;
 strings joined with ``+`` or ``&`` PRINT's comma; ``a ^ 2`` POW(a, 2); ``END SUB`` RETURN; ``&H1F`` 0x1F;
-``PRINT USING "##.#"; x`` PRINT x USING 2, 1.
+``PRINT USING "##.#"; x`` PRINT x USING 2, 1; ``a = "y"`` that Mint's values are numbers (000:929).
 """
 
 from __future__ import annotations
@@ -45,6 +45,7 @@ def other_languages_habit(
         or _end_sub(line, begin, end, failed)
         or _radix_number(line, end, failed, dialect)
         or _joined_strings(line, begin, end, failed)
+        or _string_value(line, begin, end, failed)
         or _power(line, begin, end, failed)
         or _using_picture(line, begin, end, failed)
     )
@@ -262,6 +263,28 @@ def _joined_strings(line: LogicalLine, begin: int, end: int, failed: int) -> Dia
     fix = Fix("Separate the items with ','", edits, safe=safe)
     detail = f"Mint does not join strings with '{texts[join]}'{_JOINS[texts[join]]}: separate the items with ',', "
     return mint_error(2003, span, detail + "which prints each directly after the one before", fixes=(fix,))
+
+
+_COMPARED = frozenset({_K.EQUAL, _K.NOTEQUAL, _K.LESSTHAN, _K.MORETHAN, _K.LESSEQUAL, _K.MOREEQUAL})
+
+
+def _string_value(line: LogicalLine, begin: int, end: int, failed: int) -> Diagnostic | None:
+    """``a = "y"``, ``IF key = "Y"``: a string assigned or compared, where Mint's values are numbers (000:929). One
+    character is told its character constant, a number (000:801-806); the fix is unsafe, the quotes saying the
+    author thought of text."""
+    kinds = line.kinds
+    if not (begin < failed < end and kinds[failed] is _K.STRING and kinds[failed - 1] in _COMPARED):
+        return None
+    if line.expanded[failed]:
+        return None  # a macro's text: not where the fix would write
+    message = "Mint's values are numbers: a string can only be printed, or be INPUT's prompt"
+    character = line.texts[failed][1:-1]
+    if len(character) != 1 or character == "'":
+        return mint_error(2003, line.token_span(failed), message)
+    constant = f"'{character}'"
+    fix = Fix(f"Write {constant}", (Edit(line.token_span(failed), constant),), safe=False)
+    detail = f"{message}; a character in single quotes, {constant}, is its ASCII code"
+    return mint_error(2003, line.token_span(failed), detail, fixes=(fix,))
 
 
 def _joins_beside_strings(line: LogicalLine, join: int, end: int) -> list[int]:

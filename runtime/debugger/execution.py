@@ -349,9 +349,10 @@ class Execution:
         """Decide, before the statement at ``pc`` runs, whether to stop there; raises to end the run."""
         controller = self.controller
         assert controller is not None and self.evaluator is not None
-        depth = len(controller.vm.frames)
+        frames = controller.vm.frames
+        depth = len(frames)
         resumed = depth < len(self._blocked) and self._blocked[depth] == pc
-        point = Point(self._count, pc, depth, resumed, controller.clock.now)
+        point = Point(self._count, pc, depth, resumed, controller.clock.now, frames[-1] if frames else None)
         self._count += 1
         self.timeline.reach(point.count)
         for intervention in self.timeline.due(point.count):
@@ -421,7 +422,8 @@ class Execution:
         vm = controller.vm
         site = vm.stop_site
         pc = vm.sites.index(site) if site is not None and site in vm.sites else len(vm.sites)
-        point = Point(self._count, pc, len(vm.frames), resumed=False, tick=controller.clock.now)
+        frame = vm.frames[-1] if vm.frames else None
+        point = Point(self._count, pc, len(vm.frames), resumed=False, tick=controller.clock.now, frame=frame)
         self.ending = stop
         try:
             self._stop(point, "exception", stop.message)

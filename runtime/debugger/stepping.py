@@ -23,6 +23,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from mintlang.records import record
+from mintlang.runtime.interpreter.vm import Frame
 
 
 @record
@@ -32,6 +33,9 @@ class Point:
     depth: int  # GOSUB and event-handler frames open
     resumed: bool  # a blocked statement tried again (not a stop for stepping or breakpoints)
     tick: int = 0  # the simulated time, in servo ticks (ms)
+    # The innermost GOSUB or handler open, None in the program's frame: a handler called again at the same depth
+    # is another frame. Compared by identity, within one run.
+    frame: Frame | None = field(default=None, compare=False, repr=False)
 
 
 @record
@@ -75,8 +79,14 @@ def step_in(at: Point) -> Forward:
 
 
 def step_over(at: Point) -> Forward:
-    """``next``: the next statement in this frame or a caller's; GOSUBs and event handlers run through."""
-    return Forward(at.count, lambda point: not point.resumed and point.depth <= at.depth)
+    """``next``: the next statement in this frame or a caller's; GOSUBs and event handlers run through, and so
+    does a handler called again at this depth once this frame has returned (while the caller's PAUSE waits)."""
+
+    def accepts(point: Point) -> bool:
+        in_this_frame = point.depth == at.depth and point.frame is at.frame
+        return not point.resumed and (point.depth < at.depth or in_this_frame)
+
+    return Forward(at.count, accepts)
 
 
 def step_out(at: Point) -> Forward:

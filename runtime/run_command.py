@@ -184,7 +184,7 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
             for note in (*result.read_leniently, *result.ignored_directives, *result.not_run):
                 errors.line(f"warning: {note}", "yellow")
         if not (quiet and result.stop.reason in (StopReason.END, StopReason.UNTIL)):
-            _describe_stop(result, errors)
+            _describe_stop(result, errors, config_path)
         if keyboard is None and result.stop.reason is StopReason.DEADLOCK and KEYS_NONE_TYPES in result.stop.message:
             # standard input closed or not there: a user is told what works
             errors.line("hint: keys can be piped to standard input: printf '42\\n' | mint-run PROGRAM", "yellow")
@@ -496,13 +496,15 @@ def _check_outputs(
         sys.exit(_USAGE_ERROR)
 
 
-def _describe_stop(result: RunResult, errors: Messages) -> None:
-    """The stop line; the statement and message are the program's text, so they are never read as markup."""
+def _describe_stop(result: RunResult, errors: Messages, config_path: Path | None) -> None:
+    """The stop line; the statement and message are the program's text, so they are never read as markup. A stop
+    in the configuration names its file, which may be the one paired with the program rather than one named."""
     stop = result.stop
     style = "green" if stop.reason in (StopReason.END, StopReason.UNTIL) else "bold red"
     line = f"{stop.reason.value} after {stop.time_ms} ms"
     if stop.line is not None:
-        line += f" at {stop.unit} line {stop.line}: {shortened(stop.statement or '')}"
+        file = f" ({config_path})" if stop.unit == Unit.CONFIGURATION and config_path is not None else ""
+        line += f" at {stop.unit} line {stop.line}{file}: {shortened(stop.statement or '')}"
     if stop.message:
         line += f" — {stop.message}"
     errors.line(line, style)

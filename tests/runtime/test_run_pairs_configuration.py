@@ -33,6 +33,14 @@ def test_the_pair_is_found_whatever_the_case_of_the_names(tmp_path: Path) -> Non
     assert (result.exit_code, result.stdout) == (0, "10\n")
 
 
+def test_a_stop_in_the_configuration_names_the_file_paired(tmp_path: Path) -> None:
+    # SCALE = -3 is invalid (000:4600-4602): the paired file, not the one named, stopped the run
+    configuration = write(tmp_path / "Cell.CFG", "RESETALL\nSCALE = -3\n")
+    result = mint_run(write(tmp_path / "cell.mnt", PROGRAM))
+    assert result.exit_code == 1
+    assert f"at configuration line 2 ({configuration}): SCALE = -3 — R0003" in result.stderr
+
+
 def test_no_config_runs_the_program_alone(tmp_path: Path) -> None:
     write(tmp_path / "cell.cfg", CONFIGURATION)
     result = mint_run("--no-config", write(tmp_path / "cell.mnt", PROGRAM))

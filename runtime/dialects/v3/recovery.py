@@ -8,7 +8,8 @@
   and the encoders, watches the limits again and clears the outputs, ``TIME`` and
   ``IMASK`` (001:2506, 11409-11444); ``DISLIMIT`` ignores
   the limits and cancels, ``ENLIMIT`` watches them again (001:7433-7470). Each switches
-  the enable on again, so a handler can ``CANCEL : RETURN`` and move on (001:5037-5066).
+  the enable on again, so a handler can ``CANCEL : RETURN`` and move on (001:5037-5066), though
+  ``CANCEL`` and ``DISLIMIT`` not before ``RESET``, ``CONFIG`` or ``ENABLE = 1`` did (001:11409-11411).
 * ``CONFIG = _servo`` or ``_off`` issues a ``RESET`` and restores the rates (001:6931-6939);
   ``DEFAULT`` restores every v3 power-up value and resets what ``RESET`` does (001:7227-7258); ``ENABLE`` switches the
   enable (001:7547-7576); ``CONTON``/``CONTOFF`` contour on the whole card (001:6995-7033).
@@ -41,6 +42,9 @@ class V3Recovery:
         self.motion = motion
         self.v4 = v4
         self.on_reset: list[Callable[[], None]] = []  # what RESET clears besides the axes (outputs, TIME, IMASK)
+        # whether the enable was switched on since power-up, before which CANCEL leaves it off (001:11409-11411);
+        # drives enabled when the run starts stand for a configuration that did
+        self.switched_on = any(axis.enabled for axis in motion.axes)
         for axis in motion.axes:  # error 40's hint in v3's words: v3 has no DRIVEENABLE
             axis.disabled_hint = _AMPLIFIERS_OFF
 
@@ -65,10 +69,12 @@ class V3Recovery:
             axis.disable()
 
     def _recovered(self) -> None:
-        """Contouring off, and the amplifier enable, one output for every axis, on (001:6584, 7567-7576, 11411)."""
+        """Contouring off, and the amplifier enable, one output for every axis, on (001:6584, 7567-7576), unless it
+        has been off since power-up: only RESET, CONFIG or ENABLE = 1 switches it on then (001:11409-11411)."""
         self._contouring(0.0)(None, ())
-        for axis in self.motion.axes:
-            axis.enable()
+        if self.switched_on:
+            for axis in self.motion.axes:
+                axis.enable()
 
     def _cancel(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
         kept = [axis for axis in self.motion.addressed(channels) if self._on_its_limit(axis)]
@@ -89,6 +95,7 @@ class V3Recovery:
         )
 
     def _reset(self, channels: Channels | None, arguments: tuple[float, ...]) -> bool:
+        self.switched_on = True
         self.v4.command("RESET")(channels, arguments)
         for axis in self.motion.addressed(channels):  # v3's RESET zeroes ENCODER with POS (001:11433, 11441)
             axis.encoder_offset = float(axis.measured)
@@ -133,6 +140,7 @@ class V3Recovery:
 
     def _enable(self, _: int | None, value: float) -> None:
         """0 or 1, as the table holds it (``v3_ranges``)."""
+        self.switched_on = self.switched_on or bool(value)
         for axis in self.motion.axes:
             if value:
                 axis.enable()

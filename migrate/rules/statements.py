@@ -14,6 +14,7 @@ from mintlang.migrate.citations import cite, in_file
 from mintlang.migrate.context import Context, FileView, statement_tag
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Rule, same_text, selector_text
+from mintlang.migrate.rules.power_up import before_switch_on
 from mintlang.migrate.rules.spelling import like
 from mintlang.semantic.units import Unit
 from mintlang.syntax import nodes as n
@@ -176,12 +177,19 @@ class CancelEnables(DoneBesides):
     """``CANCEL[axes]`` is followed by ``DRIVEENABLE[axes] = 1;``. v3 CANCEL recovered the system a
     motion error shut down, amplifiers on (v3:5005, v3:5030, v3:5591-5597); v4 CANCEL leaves the drive
     its error disabled off, and the guide clears an error keeping the position with "CANCEL followed
-    by DRIVEENABLE" (v4:4743-4744, v4:8016, v4:15628). Enabling a drive that is on changes nothing."""
+    by DRIVEENABLE" (v4:4743-4744, v4:8016, v4:15628). Enabling a drive that is on changes nothing.
+    A CANCEL that runs at power-up, before anything switched the amplifiers on, left them off
+    (v3:11409-11411), and gets nothing."""
 
     id = "S-CANCEL"
     summary = "CANCEL[axes] -> CANCEL[axes] : DRIVEENABLE[axes] = 1; (v3 CANCEL switched the amplifiers on)"
-    evidence = "v3:5005, v3:5030, v3:5048, v3:5591-5597; v4:4743-4744, v4:8016, v4:10675-10677, v4:15628"
+    evidence = (
+        "v3:5005, v3:5030, v3:5048, v3:5591-5597, v3:11409-11411; v4:4743-4744, v4:8016, v4:10675-10677, v4:15628"
+    )
     keywords: ClassVar[frozenset[str]] = frozenset({"CANCEL"})
+
+    def relied_on(self, context: Context, file: FileView, statement: n.KeywordStatement) -> bool:
+        return not before_switch_on(context, file, statement.span.start)
 
     def restore(self, file: FileView, statement: n.KeywordStatement) -> str:
         return write(file, statement, "DRIVEENABLE", "1")

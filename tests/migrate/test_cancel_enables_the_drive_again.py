@@ -35,11 +35,13 @@ from tests.migrate.helpers import migrated_twice, rewritten
     ],
 )
 def test_cancel_enables_the_drive_after_it(source: str, expected: str) -> None:
-    assert migrate(source, only=["M-ABBR", "S-CANCEL"]).text == expected
+    # after the RESET that enables the amplifiers at power-up (001:11409-11411): one before it gets nothing
+    # (test_cancel_at_power_up_enables_no_drive)
+    assert migrate(f"RESET\n{source}", only=["M-ABBR", "S-CANCEL"]).text == f"RESET\n{expected}"
 
 
 def test_the_rewrite_settles() -> None:
-    text, manual, again, manual_again = migrated_twice("S-CANCEL", "CANCEL[0,1]\n")
+    text, manual, again, manual_again = migrated_twice("S-CANCEL", "RESET\nCANCEL[0,1]\n")
     assert (manual, again, manual_again) == ((), text, ())
 
 

@@ -8,9 +8,10 @@ import { currentChoices, currentHost, currentSettings } from "./host";
 import { LANGUAGE_ID } from "./language";
 import { planMigration, planReplacement, type Plan } from "./migration";
 import { showError } from "./notify";
+import { configurationChoice, runDialect, savedBeforeRun } from "./pairing";
 import { execute, type Finished } from "./process";
 import { displayCommand, fileCommand, isMissingModule, MODULES } from "./resolve";
-import { configurationChoice, runDialect } from "./pairing";
+import { saveOpen } from "./saving";
 import { pathOf, type Server } from "./server";
 
 /** The Mint document a command acts on: the one clicked in the explorer, else the active editor's. */
@@ -20,14 +21,6 @@ async function targetDocument(uri: unknown): Promise<vscode.TextDocument | undef
   }
   const document = vscode.window.activeTextEditor?.document;
   return document?.languageId === LANGUAGE_ID ? document : undefined;
-}
-
-/** Saves the files open with unsaved changes that `wanted` names: mint-run reads the program and its configuration from disk. */
-async function saveOpen(wanted: (file: string) => boolean): Promise<boolean> {
-  const unsaved = vscode.workspace.textDocuments.filter(
-    (document) => document.uri.scheme === "file" && document.isDirty && wanted(document.uri.fsPath),
-  );
-  return (await Promise.all(unsaved.map((document) => document.save()))).every((saved) => saved);
 }
 
 async function runInSimulator(uri: unknown, output: vscode.OutputChannel, server: Server): Promise<void> {
@@ -45,10 +38,7 @@ async function runInSimulator(uri: unknown, output: vscode.OutputChannel, server
   const files = asks ? await server.applicationFiles(document.uri) : undefined;
   const config = configurationChoice(files, chosen.configPairing, pathOf);
   const label = path.basename(file);
-  // The configuration file the server pairs with the program; where mint-run pairs it itself, any one.
-  const read = (name: string) =>
-    name === file || (config === undefined ? name.toLowerCase().endsWith(".cfg") : "config" in config && name === config.config);
-  if (!(await saveOpen(read))) {
+  if (!(await saveOpen(savedBeforeRun(file, config)))) {
     return;
   }
   const choices = { controller: chosen.controller, dialect: runDialect(chosen.dialect, files) };

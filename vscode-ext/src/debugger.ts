@@ -5,9 +5,11 @@ import * as vscode from "vscode";
 import { evaluatableAt } from "./evaluatable";
 import { currentChoices, currentHost, currentSettings } from "./host";
 import { LANGUAGE_ID } from "./language";
-import { completeLaunch, DEBUG_TYPE, launchFor } from "./launch";
+import { completeLaunch, DEBUG_TYPE, launchConfiguration, launchFor } from "./launch";
 import { showError } from "./notify";
+import { savedBeforeRun } from "./pairing";
 import { resolveTool } from "./resolve";
+import { saveOpen } from "./saving";
 import { configurationFor, type Server } from "./server";
 
 function activeProgram(): string | undefined {
@@ -46,7 +48,10 @@ class Configurations implements vscode.DebugConfigurationProvider {
       void vscode.window.showErrorMessage(`Debug in simulator: ${completion.message}`);
       return undefined;
     }
-    return completion.launch as vscode.DebugConfiguration;
+    const launch = completion.launch;
+    // mint-dap reads the program and its configuration file from disk, wherever they are open.
+    const saved = await saveOpen(savedBeforeRun(launch.program, launchConfiguration(launch)));
+    return saved ? (launch as vscode.DebugConfiguration) : undefined;
   }
 }
 
@@ -54,10 +59,6 @@ async function debugInSimulator(uri: unknown): Promise<void> {
   const file = uri instanceof vscode.Uri ? uri.fsPath : activeProgram();
   if (file === undefined) {
     void vscode.window.showErrorMessage("Debug in simulator: open a Mint (.mnt) file saved on disk first.");
-    return;
-  }
-  const document = vscode.workspace.textDocuments.find((open) => open.uri.fsPath === file);
-  if (document?.isDirty && !(await document.save())) {
     return;
   }
   const folder = vscode.workspace.getWorkspaceFolder(vscode.Uri.file(file));

@@ -68,3 +68,7 @@ export async function completeLaunch(
   }
   return { ok: true, launch: launch as unknown as MintLaunch };
 }
+
+/** What `launch` tells mint-dap of the configuration file; undefined where mint-dap pairs the program itself. */
+export const launchConfiguration = (launch: MintLaunch): ConfigurationChoice | undefined =>
+  launch.config !== undefined ? { config: launch.config } : launch.noConfig === true ? { noConfig: true } : undefined;

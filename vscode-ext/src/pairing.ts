@@ -69,3 +69,17 @@ export const isConfigurationFile = (uri: string, files: ApplicationFiles | undef
 export function runDialect(chosen: string | undefined, files: ApplicationFiles | undefined): string | undefined {
   return chosen === "auto" ? (files?.dialect ?? undefined) : chosen;
 }
+
+/**
+ * Whether a file open with unsaved changes is saved before `program` runs, mint-run and mint-dap reading
+ * files from disk: the program and its configuration file, the one `config` names, or any .cfg where the
+ * tool pairs the program itself.
+ */
+export const savedBeforeRun =
+  (program: string, config: ConfigurationChoice | undefined) =>
+  (file: string): boolean => {
+    if (config === undefined) {
+      return file === program || file.toLowerCase().endsWith(".cfg");
+    }
+    return file === program || ("config" in config && file === config.config);
+  };

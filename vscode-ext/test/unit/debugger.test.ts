@@ -6,7 +6,7 @@ import * as path from "node:path";
 import { test } from "node:test";
 
 import { evaluatableAt } from "../../src/evaluatable";
-import { completeLaunch, DEBUG_TYPE, launchFor, type Chosen } from "../../src/launch";
+import { completeLaunch, DEBUG_TYPE, launchConfiguration, launchFor, type Chosen } from "../../src/launch";
 import type { ConfigurationChoice } from "../../src/pairing";
 import { PYTHON_ARGUMENTS } from "../../src/resolve";
 
@@ -87,6 +87,13 @@ test("a launch.json entry keeps what it says and gains only the settings the use
   assert.deepEqual(completion.launch, { ...given, controller: "euroservo" });
   const named = { type: "mint", request: "launch", name: "line", program: "/work/robot/a.mnt", config: "/work/robot/line.cfg" };
   assert.deepEqual(await completeLaunch(named, undefined, NONE, unasked), { ok: true, launch: named });
+});
+
+test("the configuration file a launch tells mint-dap of is saved before it starts; none named, mint-dap pairs it", () => {
+  const program = launchFor("/work/robot/a.mnt");
+  assert.deepEqual(launchConfiguration({ ...program, config: "/work/robot/line.cfg" }), { config: "/work/robot/line.cfg" });
+  assert.deepEqual(launchConfiguration({ ...program, noConfig: true }), { noConfig: true });
+  assert.equal(launchConfiguration(program), undefined);
 });
 
 test("with nothing to debug the completion says what to open", async () => {

@@ -16,6 +16,7 @@ import {
   configurationChoice,
   isConfigurationFile,
   runDialect,
+  savedBeforeRun,
   type ApplicationFiles,
   type SendRequest,
 } from "../../src/pairing";
@@ -62,6 +63,16 @@ test("a file opens as Mint when the server says it is a program's configuration 
   assert.equal(isConfigurationFile(cfg, undefined), false);
   // Asked about a program, the answer names its configuration file, which is not the file asked about.
   assert.equal(isConfigurationFile("file:///p/a.mnt", { ...program, configuration: cfg }), false);
+});
+
+test("before a run the program and its configuration file are saved: the one named, else any .cfg", () => {
+  const named = savedBeforeRun("/p/a.mnt", { config: "/p/setup_a.cfg" });
+  assert.deepEqual(["/p/a.mnt", "/p/setup_a.cfg", "/p/a.cfg", "/p/b.mnt"].map(named), [true, true, false, false]);
+  const none = savedBeforeRun("/p/a.mnt", { noConfig: true });
+  assert.deepEqual(["/p/a.mnt", "/p/a.cfg"].map(none), [true, false]);
+  // Where the tool pairs the program itself (mint.toml's config-pairing or config): any configuration file.
+  const itself = savedBeforeRun("/p/a.mnt", undefined);
+  assert.deepEqual(["/p/a.mnt", "/p/shared/line.CFG", "/p/notes.txt", "/p/b.mnt"].map(itself), [true, true, false, false]);
 });
 
 test("a run is told the user's mint.dialect, auto made the dialect the server reads the program in", () => {

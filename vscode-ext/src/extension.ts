@@ -26,8 +26,9 @@ async function pairConfig(running: Server, document: vscode.TextDocument): Promi
 
 export function activate(context: vscode.ExtensionContext): void {
   const output = vscode.window.createOutputChannel("Mint");
-  server = mintServer(output);
-  const running = server;
+  // Once the server has the settings (at start and after each change), the configuration files it pairs open as Mint.
+  const running = mintServer(output, () => pairAll());
+  server = running;
   const pairAll = () => vscode.workspace.textDocuments.forEach((document) => void pairConfig(running, document));
   context.subscriptions.push(
     output,
@@ -39,15 +40,11 @@ export function activate(context: vscode.ExtensionContext): void {
       if (SERVER_SETTINGS.some((setting) => event.affectsConfiguration(setting))) {
         void running.restart();
       }
-      if (event.affectsConfiguration("mint.pairConfigFiles") || event.affectsConfiguration("mint.configPairing")) {
-        pairAll();
-      }
     }),
     // The workspace's .venv is only looked at in a trusted workspace.
     vscode.workspace.onDidGrantWorkspaceTrust(() => void running.restart()),
   );
   void running.restart();
-  pairAll();
 }
 
 export function deactivate(): Promise<void> | undefined {

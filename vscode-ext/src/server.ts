@@ -38,7 +38,7 @@ export async function configurationFor(
   return configurationChoice(await server.applicationFiles(program), userPairs, pathOf);
 }
 
-function createClient({ command, args }: Command, output: vscode.OutputChannel): LanguageClient {
+function createClient({ command, args }: Command, output: vscode.OutputChannel, onAsked: () => void): LanguageClient {
   const clientOptions: LanguageClientOptions = {
     documentSelector: [
       { scheme: "file", language: LANGUAGE_ID },
@@ -55,9 +55,12 @@ function createClient({ command, args }: Command, output: vscode.OutputChannel):
         // server asks for the section (workspace/configuration) on this notification, answered below.
         didChangeConfiguration: (_sections, next) => next(undefined),
         // The `mint` section as the user set it, so that a project's mint.toml is not overridden.
+        // The server asks once it has started and whenever the settings change; what depends on them
+        // is asked again after that (onAsked), the server answering once it has them.
         configuration: async (params, token, next) => {
           const answers = await next(params, token);
           if (!Array.isArray(answers)) return answers;
+          setTimeout(onAsked);
           return params.items.map((item, index) =>
             item.section === SECTION ? userSettings(item.scopeUri) : answers[index],
           );
@@ -70,7 +73,8 @@ function createClient({ command, args }: Command, output: vscode.OutputChannel):
   return new LanguageClient("mint", "Mint Language Server", { command, args: [...args] }, clientOptions);
 }
 
-export function mintServer(output: vscode.OutputChannel): Server {
+/** The mint-lsp client; `onAsked` is called each time the server has asked for the `mint` settings. */
+export function mintServer(output: vscode.OutputChannel, onAsked: () => void): Server {
   let client: LanguageClient | undefined;
   // Settings can change twice in quick succession: each restart waits for the one before.
   let queue: Promise<void> = Promise.resolve();
@@ -97,7 +101,7 @@ export function mintServer(output: vscode.OutputChannel): Server {
     }
     const { command, source } = resolution.command;
     output.appendLine(`Starting ${command} (from ${source})`);
-    client = createClient(resolution.command, output);
+    client = createClient(resolution.command, output, onAsked);
     try {
       await client.start();
     } catch (error) {

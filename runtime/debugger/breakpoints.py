@@ -3,7 +3,8 @@ whether a point hits one.
 
 A breakpoint binds to the first statement of its line, or of the next line
 holding a statement (a comment, a label, a blank line or a MintMT ``Event`` or
-``Startup`` line runs nothing): it stops each time that first statement is about to run, so once per pass over
+``Startup`` line runs nothing; an ELSE's jump, which ends the true branch, is on
+its ENDIF's line): it stops each time that first statement is about to run, so once per pass over
 a line like ``a = 1 : b = 2``, and not again while a blocked statement waits. Its condition is a Mint
 expression (true when non-zero), read as it is set (one that does not read leaves the breakpoint
 unverified, with why) and compiled against each run when first met; its hit condition counts the times the
@@ -97,6 +98,7 @@ class Breakpoints:
     def __init__(self, layout: Layout) -> None:
         self.sites = layout.sites
         self.labels = layout.labels
+        self.elses = {closer: pc for pc, closer in layout.endings.items()}  # an ENDIF -> the ELSE shown on its line
         self.expressions = layout.expressions
         self.refused = layout.refused
         self.next_id = 1
@@ -105,7 +107,7 @@ class Breakpoints:
         self.by_pc: dict[int, Breakpoint] = {}
         self.first_of_line: dict[tuple[str, int], int] = {}  # (unit, line) -> pc of its first statement
         for pc, site in enumerate(self.sites):
-            if not site.declares:
+            if not site.declares and pc not in layout.endings:
                 self.first_of_line.setdefault((site.unit, site.line), pc)
 
     def replace(self, unit: str, requests: Iterable[Mapping[str, Any]]) -> list[Breakpoint]:
@@ -187,6 +189,8 @@ class Breakpoints:
             for breakpoint_ in group_placed:
                 if breakpoint_.problem is None and breakpoint_.pc is not None:
                     self.by_pc.setdefault(breakpoint_.pc, breakpoint_)
+                    if breakpoint_.pc in self.elses:  # on an ENDIF: the true branch leaves the block at its ELSE
+                        self.by_pc.setdefault(self.elses[breakpoint_.pc], breakpoint_)
         return placed
 
     def start_run(self) -> None:

@@ -156,11 +156,18 @@ class Layout:
     sites: tuple[Site, ...] = ()
     labels: Mapping[str, int] = field(default_factory=dict)
     columns: tuple[int, ...] = ()  # each statement's 1-based column, so a stop shows which of a line's it is
+    # Each IF block's ELSE -> its ENDIF, by pc: the ELSE is the jump that ends the true branch (000:1601-1603),
+    # where the block is left, so it is shown and broken at on the ENDIF's line; its own line starts the false branch
+    endings: Mapping[int, int] = field(default_factory=dict)
     expressions: ExpressionReader | None = None  # checks a breakpoint's condition as it is set
     refused: str | None = None  # the compiler's message, when it refuses the program or its configuration
 
     def column(self, pc: int) -> int:
         return self.columns[pc] if pc < len(self.columns) else 1
+
+    def shown(self, pc: int) -> int:
+        """The statement a stop before ``pc`` is shown at: the ENDIF for an ELSE, else ``pc`` itself."""
+        return self.endings.get(pc, pc)
 
 
 class _Compiled(Exception):
@@ -177,7 +184,8 @@ def layout(application: Application) -> Layout:
         labels = dict(controller.linked.handlers)
         columns = _columns(application, sites)
         expressions = ExpressionReader.of(controller, application.dialect)
-        raise _Compiled(Layout(sites, labels, columns, expressions))
+        endings = {pc: closer for pc, (_, closer) in controller.linked.elses.items()}
+        raise _Compiled(Layout(sites, labels, columns, endings, expressions))
 
     try:
         application.run(compiled)

@@ -282,6 +282,7 @@ class Session:
         frames = []
         pc = execution.point.pc
         for depth, frame in enumerate([*reversed(vm.frames), None]):
+            pc = self.layout.shown(pc)
             frames.append(self._frame(depth, self._site(pc, execution), pc, frame, controller))
             if frame is None:
                 break

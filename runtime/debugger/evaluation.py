@@ -44,10 +44,12 @@ class ExpressionReader:
     dialect: Dialect
     controller: str  # the controller's name: which keywords the parse knows
     scalars: frozenset[str]  # the identities of the program's variables
+    arrays: frozenset[str]  # and of its arrays
 
     @classmethod
     def of(cls, controller: Controller, dialect: Dialect) -> ExpressionReader:
-        return cls(dialect, controller.table.controller, frozenset(controller.linked.names.scalars))
+        names = controller.linked.names
+        return cls(dialect, controller.table.controller, frozenset(names.scalars), frozenset(names.arrays))
 
     def read(self, text: str) -> n.Expression:
         """The expression ``text`` spells, in the program's dialect; ``EvaluationError`` naming the column of a
@@ -76,6 +78,8 @@ class ExpressionReader:
         for node in n.walk_expression(item.value):
             if type(node) is n.VariableRef and node.name.identity not in self.scalars:  # type: ignore[union-attr]
                 raise EvaluationError(f"{node.name.text} is not a variable of the program")  # type: ignore[union-attr]
+            if type(node) is n.ElementRef and node.name.identity not in self.arrays:  # type: ignore[union-attr]
+                raise EvaluationError(f"{node.name.text} is not an array of the program")  # type: ignore[union-attr]
             keyword = keywords.get(node.keyword) if type(node) is n.KeywordRef else None  # type: ignore[union-attr]
             found = misaddressed(node, keyword, self.dialect) if keyword is not None else None  # type: ignore[arg-type]
             if found is not None:  # TIME.2: refused, as the compiler refuses it in a line (mint check's 2003)

@@ -60,7 +60,8 @@ def keyword(word: Keyword, controller: Controller, spelling: str = "", dialect: 
         lines.append(f"- Written here for channel {int(channel)}")
     if row is not None and row.default:
         lines.append(f"- Default: {row.default}")
-    held = supplements.narrowed(word.name, row.range) if row is not None else None  # as both tools hold values
+    # the range as both tools hold values, on this controller
+    held = supplements.narrowed(word.name, row.range, controller) if row is not None else None
     if held is not None:
         lines.append(f"- Range: {held.text}")
     lines.append(f"- Controllers: {_titles(word.controllers) or 'not listed in the guide'}")

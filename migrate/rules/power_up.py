@@ -1,10 +1,11 @@
 """Where a v3 application still runs with the amplifiers off from power-up.
 
 The amplifier enable keeps the amplifiers disabled from power-up until a RESET or CONFIG
-(v3:11409-11411), or ENABLE = 1 (v3:7567-7576). The first lines of the file that runs first (the
-configuration file, else the program) run once, before any of those, as long as nothing can take
-the run back above them after one: no label (a subroutine or a jump's target), jump or loop before
-them, no RUN in the application and no event handler in that file, which can run at any time.
+(v3:11409-11411), or ENABLE = 1 (v3:7567-7576); ENABLE = 0 leaves them so. The first lines of
+the file that runs first (the configuration file, else the program) run once, before any of
+those, as long as nothing can take the run back above them after one: no label (a subroutine or
+a jump's target), jump or loop before them, no RUN in the application and no event handler in
+that file, which can run at any time.
 """
 
 from __future__ import annotations
@@ -50,6 +51,14 @@ def _ends_power_up(statement: n.Statement) -> bool:
             return True
         case n.BlockWord(word=word):
             return word in _LOOPS
-        case n.KeywordStatement(keyword=keyword):
-            return keyword.keyword in _SWITCHING_ON
+        case n.KeywordStatement(keyword=keyword, values=values):
+            return keyword.keyword in _SWITCHING_ON and not (keyword.keyword == "ENABLE" and _off(values))
+    return False
+
+
+def _off(values: tuple[n.Expression | None, ...] | None) -> bool:
+    """``ENABLE = 0`` or ``ENABLE = _off``: the enable switched off, which switches nothing on (v3:7567-7576)."""
+    match values:
+        case (n.Number(value=0.0),) | (n.ConstantRef(name="_OFF"),):
+            return True
     return False

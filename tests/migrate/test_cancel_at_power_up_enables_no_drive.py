@@ -26,6 +26,7 @@ def _cancel_rewritten(source: str, config: str | None = None) -> str:
     [
         pytest.param("CANCEL\nMOVEA.0 = 10 : GO.0\n", id="the program's first line"),
         pytest.param("PRINT 1 : CANCEL[0,1]\nIF IN1 THEN CANCEL\n", id="before any RESET, CONFIG or ENABLE"),
+        pytest.param("ENABLE = _off\nCANCEL\nENABLE = 0 : CANCEL\n", id="after ENABLE switched them off"),
     ],
 )
 def test_a_cancel_at_power_up_enables_no_drive(source: str) -> None:

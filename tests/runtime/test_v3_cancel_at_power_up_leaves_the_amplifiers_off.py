@@ -15,6 +15,11 @@ def test_cancel_at_power_up_leaves_the_amplifiers_disabled() -> None:
     assert result.terminal == "ERROR: Program: Servo off at line 2 on axis 0\n"
 
 
+def test_enable_0_at_power_up_switches_nothing_on_for_cancel() -> None:
+    result = run_source("ENABLE = 0\nCANCEL\nMOVEA.0 = 10 : GO.0\n", dialect="v3")
+    assert result.terminal == "ERROR: Program: Servo off at line 3 on axis 0\n"
+
+
 def test_dislimit_at_power_up_leaves_them_disabled_too() -> None:
     # DISLIMIT issues a CANCEL (001:5070)
     result = run_source("DISLIMIT\nMOVEA.0 = 10 : GO.0\n", dialect="v3")

@@ -490,18 +490,41 @@ class StillInvalid(Rule):
 
     def apply(self, context: Context) -> Iterator[Action]:
         title = context.controller.title
+        invalid: list[tuple[FileView, Span, list[Diagnostic]]] = []
         flagged: set[tuple[Unit, int]] = set()
         for file, errors in v4_errors(context):
             for span, diagnostics in by_statement(file, errors).items():
                 if not _flagged(file, span.start):
                     flagged.add((file.unit, file.line_start(span.start)))
-                    yield self.flag(file, span, f"not valid Mint v4 on {title}: {_messages(diagnostics, codes=True)}")
+                    invalid.append((file, span, diagnostics))
         limit = context.controller.max_line_length
+        long: list[tuple[FileView, Span]] = []
         for file in context.files.values():
             for line in _longer_than(limit).finditer(file.text):
                 if (file.unit, line.start()) not in flagged and not _flagged(file, line.start()):
-                    reason = f"line of {len(line[0])} characters: {title} takes {limit}; split it"
-                    yield self.flag(file, Span(line.start(), line.end()), reason)
+                    long.append((file, Span(line.start(), line.end())))
+        marked = [(file, span.start) for file, span, _ in invalid] + [(file, span.start) for file, span in long]
+        for file, span, diagnostics in invalid:
+            message = _in_migrated_lines(_messages(diagnostics, codes=True), file, marked)
+            yield self.flag(file, span, f"not valid Mint v4 on {title}: {message}")
+        for file, span in long:
+            reason = f"line of {span.end - span.start} characters: {title} takes {limit}; split it"
+            yield self.flag(file, span, reason)
+
+
+_LINE_NUMBER = re.compile(r"\bline (\d+)")
+
+
+def _in_migrated_lines(message: str, file: FileView, marked: Iterable[tuple[FileView, int]]) -> str:
+    """``message`` with each line it names numbered as in the migrated file: the checker numbered the text
+    before this rule's markers, and each marker above a line moves it down one (one below the command that
+    opens the file moves only the lines after it)."""
+    moved = sorted(
+        place.line_number(offset) + (1 if place.in_opening_command(offset) else 0)
+        for place, offset in marked
+        if place is file
+    )
+    return _LINE_NUMBER.sub(lambda found: f"line {int(found[1]) + bisect_right(moved, int(found[1]))}", message)
 
 
 @cache

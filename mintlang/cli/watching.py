@@ -57,7 +57,8 @@ def watch(check: Callable[[], int | None], state: Callable[[], Seen], *, clear: 
                 click.clear()
             code = check()
             before = state()  # after the check: what --fix wrote is no change to check again
-            outcome = "no findings" if not code else "findings" if code == 1 else "the check failed"
+            # as the exit status says it: a warning left passes, and --exit-zero passes with errors
+            outcome = "passed" if not code else "failed" if code == 1 else "could not check everything"
             click.echo(f"[{time.strftime('%H:%M:%S')}] {outcome}; watching for changes (Ctrl-C to stop)", err=True)
             while state() == before:
                 time.sleep(POLL_SECONDS)

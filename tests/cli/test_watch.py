@@ -89,14 +89,20 @@ def _line_with(stream: object, text: str, deadline: float) -> str:
 
 
 def test_watching_a_folder_as_a_user_does(tmp_path: Path) -> None:
+    """Each check ends with a line saying when it ran and whether it passed, as its exit status would say: a
+    warning left does not fail it (README, Exit status), and it is no claim that nothing was found."""
     program = write(tmp_path / "cell.mnt", "PRINT bar\n")
     command = [sys.executable, "-m", "mintlang", "check", "--watch", str(tmp_path)]
     with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True) as watcher:
-        deadline = time.monotonic() + 60
-        assert "findings; watching for changes" in _line_with(watcher.stderr, "watching", deadline)
-        _saved(program, "DIM bar\nPRINT bar\n")
-        assert "no findings; watching for changes" in _line_with(watcher.stderr, "watching", deadline)
-        watcher.send_signal(signal.SIGINT)
-        output, errors = watcher.communicate(timeout=60)
+        try:  # the watch is ended whatever is read: a line not as expected must not leave the test waiting on it
+            deadline = time.monotonic() + 60
+            first = _line_with(watcher.stderr, "watching", deadline)
+            _saved(program, "DIM bar\nDIM spare\nPRINT bar\n")  # an unused variable: a warning
+            second = _line_with(watcher.stderr, "watching", deadline)
+        finally:
+            watcher.send_signal(signal.SIGINT)
+            output, errors = watcher.communicate(timeout=60)
+    assert "] failed; watching for changes" in first
+    assert "] passed; watching for changes" in second
     assert watcher.returncode == 0 and "Traceback" not in errors
-    assert "error[E3001]" in output and output.endswith("1 file checked: 0 errors, 0 warnings, 0 infos\n")
+    assert "error[E3001]" in output and output.endswith("1 file checked: 0 errors, 1 warning, 0 infos\n")

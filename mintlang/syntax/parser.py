@@ -653,6 +653,8 @@ def _a_value_begins(line: LogicalLine, index: int, end: int) -> bool:
     ':' would have made a statement of its own."""
     if index >= end or line.kinds[index] not in _VALUE_STARTS:
         return False
+    if line.kinds[index - 1] is _K.NUMBER and line.ends[index - 1] == line.starts[index]:
+        return False  # 2.5e2, 2.5mm: one word the lexer read as a number and a name, no second value
     keyword = database().lookup(line.texts[index]) if line.kinds[index] is _K.KEYWORD else None
     return keyword is None or keyword.kind is not KeywordKind.COMMAND
 

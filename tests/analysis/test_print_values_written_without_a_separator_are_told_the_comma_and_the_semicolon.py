@@ -43,5 +43,12 @@ def test_a_command_after_a_value_is_not_taken_for_a_value() -> None:
     assert diagnostic.message != TOLD
 
 
+@pytest.mark.parametrize("line", ["PRINT 2.5e2", "PRINT 2.5mm"])
+def test_a_word_joined_to_a_number_is_not_taken_for_a_second_value(line: str) -> None:
+    (diagnostic,) = mintlang.check(line + "\n")
+    assert diagnostic.code == "E2003"
+    assert diagnostic.message != TOLD
+
+
 def test_values_with_their_separators_are_read() -> None:
     assert mintlang.check(DECLARED + 'PRINT a, b; "mm"; HEX b\n') == []

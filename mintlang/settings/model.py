@@ -57,7 +57,9 @@ def selectors(items: object) -> tuple[str, ...]:
     """
     if not isinstance(items, list | tuple) or not all(isinstance(item, str) for item in items):
         raise TypeError('must be a list of codes or code prefixes, such as ["E2", "W103"]')
-    return tuple(selector(item) for item in items if item.strip())
+    if not all(item.strip() for item in items):  # not ALL, nor no entry: --select "" is refused too
+        raise ValueError("a blank entry selects no code: remove it, or write ALL for every code")
+    return tuple(selector(item) for item in items)
 
 
 def _choice(kind: type[Controller] | type[Dialect]) -> Callable[[object], Controller | Dialect]:

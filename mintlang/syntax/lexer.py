@@ -175,6 +175,17 @@ def _mintmt_closer(line: str, end: int, content_end: int) -> tuple[TokenKind, in
     return (kind, found.end()) if kind is not None else None
 
 
+_EXPONENT = re.compile(r"([0-9]+)[eE]([0-9]+)")
+_LARGEST_WHOLE = 16777215  # the largest integer a Mint number holds exactly (000:717-718)
+
+
+def _with_an_exponent(text: str, mantissa: int, exponent: int) -> str:
+    """``1E3``: Mint has no exponent notation (000:799-800); the number written out, where Mint holds it whole."""
+    told = f"'{text}' is not a valid number: Mint numbers have no exponent"
+    value = mantissa * 10**exponent if exponent <= len(str(_LARGEST_WHOLE)) else None
+    return told if value is None or value > _LARGEST_WHOLE else f"{told}, write {value}"
+
+
 def _number_issue(text: str, dialect: Dialect) -> str | None:
     """Why a number lexeme is not a valid Mint number, or None when it is."""
     if text[:2] in ("0x", "0X"):
@@ -185,6 +196,8 @@ def _number_issue(text: str, dialect: Dialect) -> str | None:
             return f"'{text}' is not a valid hexadecimal number"
         return None
     integer, _, fraction = text.partition(".")
+    if (exponent := _EXPONENT.fullmatch(integer)) is not None:  # numbers are decimal, binary or hexadecimal
+        return _with_an_exponent(text, int(exponent[1]), int(exponent[2]))
     if not integer.replace("_", "").isdigit() and integer:
         return f"'{text}' is not a valid number"
     if not fraction.isdigit() and fraction:

@@ -56,8 +56,15 @@ def _chapter10_controllers(entry: Entry) -> tuple[Controller, ...] | None:
 
 
 def _see_also(entry: Entry) -> tuple[str, ...]:
-    text = " ".join(entry.text("see_also"))
-    items = [item.strip().rstrip(".") for item in text.split(",")]
+    """The names of the See-also list. It ends at its first blank line, below which a footnote may be printed
+    (000:5956-5959); a printed line ends a name whether or not a comma follows it (000:6732-6733)."""
+    lines: list[str] = []
+    for _, raw in entry.sections.get("see_also", []):
+        if raw.strip():
+            lines.append(raw)
+        elif lines:
+            break
+    items = [item.strip().rstrip(".") for line in lines for item in line.split(",")]
     return tuple(dict.fromkeys(item for item in items if item))
 
 

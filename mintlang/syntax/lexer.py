@@ -345,7 +345,7 @@ def _lex_line(line: str, dialect: Dialect, words: Vocabulary) -> LexedLine:
                 kind, text = _HASH, "#"
         else:
             kind = _INVALID
-            issues.append(_syntax_issue(position, len(text), f"unexpected character {_shown(text[0])}"))
+            issues.append(_syntax_issue(position, len(text), _unexpected(text, previous)))
         kinds.append(kind)
         starts.append(position)
         position += len(text)
@@ -393,6 +393,14 @@ _SHORTEST_TOO_LARGE_DECIMAL, SHORTEST_TOO_LARGE = 39, 34
 def _too_large(text: str) -> bool:
     """Whether the valid literal ``text`` is beyond the controller's numbers: mint-run stops on it with error 3."""
     return not binary32.holds(number_value(text))
+
+
+def _unexpected(text: str, previous: TokenKind) -> str:
+    """Why characters Mint has no use for are an error: other BASICs' string variable, ``a$`` (``previous``, the
+    kind just before, blanks included, is the name's), told that Mint has none (000:929)."""
+    if text[0] == "$" and previous is _NAME:
+        return "'$' after a name: Mint has no string variables, a variable holds a number"
+    return f"unexpected character {_shown(text[0])}"
 
 
 def _shown(character: str) -> str:

@@ -207,10 +207,12 @@ def _options(command: click.Command) -> dict[str, click.Parameter]:
 def _option(table: Table, key: str, options: Mapping[str, click.Parameter]) -> click.Parameter:
     """The option a table's key gives."""
     if key in _TOP_LEVEL_ONLY:  # its globs are the settings file's, not a tool's: one list for every tool
-        raise table.error("a setting of every tool: write it beside select, not in a tool's table", key)
+        raise table.error(
+            "a setting of every tool: write it beside select, not in a tool's table", key, key_at_fault=True
+        )
     param = options.get(key)
     if param is None or param.name is None:
-        raise table.error(f"unknown key (known: {', '.join(sorted(options))})", key)
+        raise table.error(f"unknown key (known: {', '.join(sorted(options))})", key, key_at_fault=True)
     return param
 
 

@@ -3,8 +3,9 @@
 The file that applies to a Mint file is the nearest one in its folder or a
 folder above it, as ruff finds its own: in one folder ``mint.toml`` wins over
 ``pyproject.toml``, and a ``pyproject.toml`` without a ``[tool.mint]`` table is
-passed over. ``tomllib`` gives no positions, so the line of each key is found
-by a scan of the text; a message names the line where the scan finds it.
+passed over. ``tomllib`` gives no positions, so the place of each key is found
+by a scan of the text; a message names the line and column where the scan finds
+the key at fault, or its value.
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ _DOTTED = rf"\s*({_KEY_PART})(?:\s*\.\s*({_KEY_PART}))*\s*"
 
 
 class SettingsError(Exception):
-    """A settings file that cannot be used, said in one line with its place: ``mint.toml:4: select: ...``."""
+    """A settings file that cannot be used, said in one line with its place: ``mint.toml:4:10: select: ...``."""
 
     def __init__(
         self, path: Path, message: str, *, line: int | None = None, column: int | None = None, key: str | None = None
@@ -37,7 +38,7 @@ class SettingsError(Exception):
         super().__init__(message)
         self.path = path
         self.line = line
-        self.column = column  # from 1, where TOML's reader stopped; a key's error names the key instead
+        self.column = column  # from 1: of the key or value at fault, or where TOML's reader stopped
         self.key = key
         self.message = message
 
@@ -48,28 +49,43 @@ class SettingsError(Exception):
 
 
 @record
+class Place:
+    """Where a key is first written: its line, its column, and its value's column (all from 1)."""
+
+    line: int
+    column: int
+    value_column: int
+
+
+@record
 class Table:
-    """One table of a settings file, with the line each of its keys is on."""
+    """One table of a settings file, with the place of each of its keys."""
 
     path: Path
     keys: tuple[str, ...]  # where the table is in the file: () in mint.toml, ("tool", "mint") in pyproject.toml
     values: Mapping[str, object]
-    lines: Mapping[tuple[str, ...], int]  # full key path -> line of its first mention
+    places: Mapping[tuple[str, ...], Place]  # full key path -> where it is first written
 
     def name(self, *keys: str) -> str:
         """The dotted name a user reads in the file (``tool.mint.run.until-ms``, ``select``)."""
         return ".".join(_quoted(key) for key in (*self.keys, *keys))
 
     def line(self, *keys: str) -> int | None:
-        return self.lines.get((*self.keys, *keys))
+        place = self.places.get((*self.keys, *keys))
+        return None if place is None else place.line
 
     def origin(self, *keys: str) -> str:
         """Where a value was written: ``path:line``."""
         line = self.line(*keys)
         return str(self.path) if line is None else f"{self.path}:{line}"
 
-    def error(self, message: str, *keys: str) -> SettingsError:
-        return SettingsError(self.path, message, line=self.line(*keys), key=self.name(*keys))
+    def error(self, message: str, *keys: str, key_at_fault: bool = False) -> SettingsError:
+        """The error of the value of ``keys``, placed at the value; ``key_at_fault``: at the key itself."""
+        place = self.places.get((*self.keys, *keys))
+        if place is None:
+            return SettingsError(self.path, message, key=self.name(*keys))
+        column = place.column if key_at_fault else place.value_column
+        return SettingsError(self.path, message, line=place.line, column=column, key=self.name(*keys))
 
     def relative(self, key: str, value: str) -> Path:
         """The path ``value`` of ``key``, relative to the file's folder; no file name holds a NUL character."""
@@ -82,7 +98,7 @@ class Table:
         value = self.values.get(name, {})
         if not isinstance(value, Mapping):
             raise self.error("must be a table", name)
-        return Table(self.path, (*self.keys, name), value, self.lines)
+        return Table(self.path, (*self.keys, name), value, self.places)
 
 
 def _quoted(key: str) -> str:
@@ -100,24 +116,32 @@ def _parts(dotted: str) -> tuple[str, ...]:
     return tuple(_unquoted(part) for part in re.findall(_KEY_PART, dotted))
 
 
-def key_lines(text: str) -> dict[tuple[str, ...], int]:
-    """The line (from 1) where each key path is first written, by a scan of table headers and ``key =`` lines."""
-    lines: dict[tuple[str, ...], int] = {}
+def _columns(dotted: str, offset: int) -> list[int]:
+    """The column (from 1) of each part of a dotted key that starts at ``offset`` (from 0) in its line."""
+    return [offset + part.start() + 1 for part in re.finditer(_KEY_PART, dotted)]
+
+
+def key_places(text: str) -> dict[tuple[str, ...], Place]:
+    """Where each key path is first written, by a scan of table headers and ``key =`` lines; a table's value is
+    placed at its name."""
+    places: dict[tuple[str, ...], Place] = {}
     table: tuple[str, ...] = ()
     for number, line in enumerate(text.splitlines(), start=1):
         stripped = line.strip()
         header = re.fullmatch(r"\[\[?([^\[\]]*)\]\]?\s*(#.*)?", stripped)
         if header is not None:
             table = _parts(header.group(1))
-            for depth in range(1, len(table) + 1):
-                lines.setdefault(table[:depth], number)
+            columns = _columns(header.group(1), len(line) - len(line.lstrip()) + header.start(1))
+            for depth, column in enumerate(columns, start=1):
+                places.setdefault(table[:depth], Place(number, column, column))
             continue
-        left, equals, _ = line.partition("=")
+        left, equals, right = line.partition("=")
         if equals and re.fullmatch(_DOTTED, left):
             key = _parts(left)
-            for depth in range(1, len(key) + 1):
-                lines.setdefault((*table, *key[:depth]), number)
-    return lines
+            value = len(left) + len(equals) + len(right) - len(right.lstrip()) + 1
+            for depth, column in enumerate(_columns(left, 0), start=1):
+                places.setdefault((*table, *key[:depth]), Place(number, column, value if depth == len(key) else column))
+    return places
 
 
 _read: dict[Path, tuple[tuple[int, int], Table | None]] = {}  # a file's table while its size and time stay
@@ -163,16 +187,16 @@ def _parse(path: Path) -> Table | None:
         message = f"not valid TOML: {re.sub(_TOML_POSITION, '', message)}"
         raise SettingsError(path, message, line=line, column=column) from None
     if path.name != PYPROJECT:
-        return Table(path, (), document, key_lines(text))
+        return Table(path, (), document, key_places(text))
     table: object = document
     for key in _PYPROJECT_TABLE:
         if not isinstance(table, Mapping) or key not in table:
             return None
         table = table[key]
-    lines = key_lines(text)
+    places = key_places(text)
     if not isinstance(table, Mapping):
-        raise SettingsError(path, "must be a table", line=lines.get(_PYPROJECT_TABLE), key="tool.mint")
-    return Table(path, _PYPROJECT_TABLE, table, lines)
+        raise Table(path, (), document, places).error("must be a table", *_PYPROJECT_TABLE)
+    return Table(path, _PYPROJECT_TABLE, table, places)
 
 
 def find_settings(start: Path) -> Table | None:

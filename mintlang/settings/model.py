@@ -134,7 +134,7 @@ class ProjectSettings:
         """Raises SettingsError at the first key that is unknown or has a bad value."""
         unknown = [key for key in table.values if key not in KNOWN_KEYS]
         if unknown:
-            raise table.error(f"unknown key (known: {', '.join(KNOWN_KEYS)})", unknown[0])
+            raise table.error(f"unknown key (known: {', '.join(KNOWN_KEYS)})", unknown[0], key_at_fault=True)
         values = {key: Given(_converted(table, key, convert), table.origin(key)) for key, convert in _converts(table)}
         if "config" in values:
             values["config"] = Given(table.relative("config", str(values["config"].value)), values["config"].origin)

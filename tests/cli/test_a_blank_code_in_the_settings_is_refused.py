@@ -17,13 +17,13 @@ PROGRAM = "PRINT b\n"  # error 3001: b is not declared
 @pytest.mark.parametrize(
     ("text", "line", "key"),
     [
-        ('select = [""]\n', 1, "select"),
-        ('extend-select = ["W103", " "]\n', 1, "extend-select"),
-        ('controller = "mintdrive"\nignore = [""]\n', 2, "ignore"),
-        ('[per-file-ignores]\n"*.mnt" = [""]\n', 2, 'per-file-ignores."*.mnt"'),
+        ('select = [""]\n', "1:10", "select"),
+        ('extend-select = ["W103", " "]\n', "1:17", "extend-select"),
+        ('controller = "mintdrive"\nignore = [""]\n', "2:10", "ignore"),
+        ('[per-file-ignores]\n"*.mnt" = [""]\n', "2:11", 'per-file-ignores."*.mnt"'),
     ],
 )
-def test_a_blank_entry_stops_the_check_at_its_line(tmp_path: Path, text: str, line: int, key: str) -> None:
+def test_a_blank_entry_stops_the_check_at_its_line(tmp_path: Path, text: str, line: str, key: str) -> None:
     settings = write(tmp_path / "mint.toml", text)
     result = mint_check(write(tmp_path / "a.mnt", PROGRAM))
     assert (result.exit_code, result.stdout) == (2, "")

@@ -39,11 +39,11 @@ def invoke(*arguments: str | Path) -> Result:
 @pytest.mark.parametrize(
     ("table", "problem"),
     [
-        ("[run]\nuntl-ms = 3\n", "2: run.untl-ms: unknown key (known: "),
-        ("[migrate]\nformt = 'json'\n", "2: migrate.formt: unknown key (known: "),
-        ("[format]\nindnt-width = 4\n", "2: format.indnt-width: unknown key (known: "),
-        ("[run]\nrealtime = 1\n", "2: run.realtime: must be true or false"),
-        ("[migrate]\nexclude = ['old']\n", "2: migrate.exclude: a setting of every tool: write it beside select"),
+        ("[run]\nuntl-ms = 3\n", "2:1: run.untl-ms: unknown key (known: "),
+        ("[migrate]\nformt = 'json'\n", "2:1: migrate.formt: unknown key (known: "),
+        ("[format]\nindnt-width = 4\n", "2:1: format.indnt-width: unknown key (known: "),
+        ("[run]\nrealtime = 1\n", "2:12: run.realtime: must be true or false"),
+        ("[migrate]\nexclude = ['old']\n", "2:1: migrate.exclude: a setting of every tool: write it beside select"),
     ],
 )
 def test_mint_check_stops_at_a_bad_key_of_another_tools_table(tmp_path: Path, table: str, problem: str) -> None:
@@ -57,9 +57,9 @@ def test_mint_check_stops_at_a_bad_key_of_another_tools_table(tmp_path: Path, ta
 @pytest.mark.parametrize(
     ("tool", "table", "problem"),
     [
-        ("format", "[run]\nuntl-ms = 3\n", "mint format: {settings}:2: run.untl-ms: unknown key"),
-        ("run", "[format]\nindnt-width = 4\n", "mint-run: {settings}:2: format.indnt-width: unknown key"),
-        ("migrate", "[run]\nuntl-ms = 3\n", "mint-migrate: {settings}:2: run.untl-ms: unknown key"),
+        ("format", "[run]\nuntl-ms = 3\n", "mint format: {settings}:2:1: run.untl-ms: unknown key"),
+        ("run", "[format]\nindnt-width = 4\n", "mint-run: {settings}:2:1: format.indnt-width: unknown key"),
+        ("migrate", "[run]\nuntl-ms = 3\n", "mint-migrate: {settings}:2:1: run.untl-ms: unknown key"),
     ],
 )
 def test_each_tool_stops_at_a_bad_key_of_another_tools_table(

@@ -263,18 +263,20 @@ def test_nothing_found_that_nothing_excluded_is_still_a_failure(tmp_path: Path) 
 
 
 @pytest.mark.parametrize(
-    ("text", "message"),
+    ("text", "column", "message"),
     [
-        ('exclude = "legacy"\n', 'exclude: must be a list of globs, such as ["legacy", "vendor/*.mnt"]'),
+        ('exclude = "legacy"\n', 11, 'exclude: must be a list of globs, such as ["legacy", "vendor/*.mnt"]'),
         (
             'extend-exclude = ["legacy", 3]\n',
+            18,
             'extend-exclude: must be a list of globs, such as ["legacy", "vendor/*.mnt"]',
         ),
-        ('force-exclude = "yes"\n', "force-exclude: must be true or false"),
+        ('force-exclude = "yes"\n', 17, "force-exclude: must be true or false"),
     ],
 )
-def test_a_bad_value_is_one_line_naming_the_key(tmp_path: Path, text: str, message: str) -> None:
+def test_a_bad_value_is_one_line_naming_the_key(tmp_path: Path, text: str, column: int, message: str) -> None:
+    """Placed at the value, its line and column."""
     settings = write(tmp_path / "mint.toml", text)
     result = mint_check(write(tmp_path / "a.mnt", SPARE))
     assert result.exit_code == 2
-    assert result.stderr == f"mint check: {settings.absolute()}:1: {message}\n"
+    assert result.stderr == f"mint check: {settings.absolute()}:1:{column}: {message}\n"

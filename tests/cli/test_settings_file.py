@@ -191,23 +191,24 @@ def test_show_settings_of_a_path_that_is_not_there_says_so(tmp_path: Path) -> No
 @pytest.mark.parametrize(
     ("text", "line", "message"),
     [
-        ('controller = "mintdrive"\ncolour = "red"\n', 2, "colour: unknown key (known: controller, dialect,"),
-        ('\n\ncontroller = "nextmove-xyz"\n', 3, "controller: 'nextmove-xyz' is not one of nextmove-pci,"),
-        ('select = ["E2", "X9"]\n', 1, "select: 'X9' is no code and begins none"),
-        ('ignore = "W103"\n', 1, "ignore: must be a list of codes or code prefixes"),
-        ('config-pairing = "cfg/<name>.cfg"\n', 1, "config-pairing: the configuration file is beside its program"),
-        ('config-pairing = "setup.cfg"\n', 1, "config-pairing: 'setup.cfg' has no <name>: write false"),
-        ('[per-file-ignores]\n"*.mnt" = ["Q1"]\n', 2, "per-file-ignores.\"*.mnt\": 'Q1' is no code"),
-        ("per-file-ignores = 3\n", 1, "per-file-ignores: must be a table"),
-        ('config = "cell\\u0000.cfg"\n', 1, "config: a path cannot hold a NUL character"),
+        ('controller = "mintdrive"\ncolour = "red"\n', "2:1", "colour: unknown key (known: controller, dialect,"),
+        ('\n\ncontroller = "nextmove-xyz"\n', "3:14", "controller: 'nextmove-xyz' is not one of nextmove-pci,"),
+        ('select = ["E2", "X9"]\n', "1:10", "select: 'X9' is no code and begins none"),
+        ('ignore = "W103"\n', "1:10", "ignore: must be a list of codes or code prefixes"),
+        ('config-pairing = "cfg/<name>.cfg"\n', "1:18", "config-pairing: the configuration file is beside its program"),
+        ('config-pairing = "setup.cfg"\n', "1:18", "config-pairing: 'setup.cfg' has no <name>: write false"),
+        ('[per-file-ignores]\n"*.mnt" = ["Q1"]\n', "2:11", "per-file-ignores.\"*.mnt\": 'Q1' is no code"),
+        ("per-file-ignores = 3\n", "1:20", "per-file-ignores: must be a table"),
+        ('config = "cell\\u0000.cfg"\n', "1:10", "config: a path cannot hold a NUL character"),
         ('controller = "mintdrive"\nselect = [E]\n', "2:11", "not valid TOML: Invalid value"),  # at the E
         ('controller = "mintdrive"\nselect = [\n', "3:1", "not valid TOML: Invalid value (at the end of the file)"),
     ],
 )
 def test_a_bad_settings_file_is_one_line_naming_file_line_and_key(
-    tmp_path: Path, text: str, line: int | str, message: str
+    tmp_path: Path, text: str, line: str, message: str
 ) -> None:
-    """A key at fault is named; TOML that cannot be read is placed at the column where its reading stopped."""
+    """Placed at its line and column: an unknown key at the key, a bad value at the value, TOML that cannot be
+    read where its reading stopped."""
     settings = write(tmp_path / "mint.toml", text)
     result = mint_check(write(tmp_path / "a.mnt", "PRINT 1\n"))
     assert result.exit_code == 2
@@ -220,7 +221,7 @@ def test_a_bad_key_in_pyproject_is_named_with_its_table(tmp_path: Path) -> None:
     settings = write(tmp_path / "pyproject.toml", '[project]\nname = "x"\n\n[tool.mint]\nselct = ["E"]\n')
     result = mint_check(write(tmp_path / "a.mnt", "PRINT 1\n"))
     assert result.exit_code == 2
-    assert result.stderr.startswith(f"mint check: {settings.absolute()}:5: tool.mint.selct: unknown key")
+    assert result.stderr.startswith(f"mint check: {settings.absolute()}:5:1: tool.mint.selct: unknown key")
 
 
 def test_a_broken_settings_file_is_never_passed_over_for_one_further_up(tmp_path: Path) -> None:
@@ -239,7 +240,7 @@ def test_the_real_command_reads_the_settings_of_the_files_folder(tmp_path: Path)
     bad = write(tmp_path / "line" / "mint.toml", "controller = 1\n")
     run = subprocess.run([mint, "check", "line"], cwd=tmp_path, capture_output=True, text=True, check=False)
     assert (run.returncode, run.stdout) == (2, "")
-    assert run.stderr == f"mint check: {bad.absolute()}:1: controller: 1 is not one of {_v4_controllers()}\n"
+    assert run.stderr == f"mint check: {bad.absolute()}:1:14: controller: 1 is not one of {_v4_controllers()}\n"
     assert "Traceback" not in run.stderr
 
 

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from mintlang.settings import SettingsError, settings_for
-from mintlang.settings.files import find_settings, key_lines
+from mintlang.settings.files import find_settings, key_places
 
 
 def write(path: Path, text: str) -> Path:
@@ -17,7 +17,9 @@ def write(path: Path, text: str) -> Path:
     return path
 
 
-def test_key_lines_follow_tables_dotted_and_quoted_keys() -> None:
+def test_key_places_follow_tables_dotted_and_quoted_keys() -> None:
+    """Each key's line, its column and its value's column: a message places an unknown key at the key and a bad
+    value at the value; a table, at its name."""
     text = (
         "# settings\n"  # 1
         'controller = "mintdrive"\n'  # 2
@@ -31,15 +33,17 @@ def test_key_lines_follow_tables_dotted_and_quoted_keys() -> None:
         "[[tool.other]]\n"  # 10
         "x = 1\n"  # 11
     )
-    lines = key_lines(text)
-    assert lines[("controller",)] == 2
-    assert lines[("tool", "mint")] == 3
-    assert lines[("tool", "mint", "select")] == 4
-    assert lines[("tool", "mint", "run", "until-ms")] == 6
-    assert lines[("tool", "mint", "per-file-ignores", "legacy/*.mnt")] == 8
-    assert lines[("tool", "mint", "per-file-ignores", "raw.mnt")] == 9
-    assert lines[("tool", "other", "x")] == 11
-    assert ("W",) not in lines  # an array's continuation is no key
+    places = {key: (place.line, place.column, place.value_column) for key, place in key_places(text).items()}
+    assert places[("controller",)] == (2, 1, 14)
+    assert places[("tool",)] == (3, 3, 3)
+    assert places[("tool", "mint")] == (3, 10, 10)
+    assert places[("tool", "mint", "select")] == (4, 1, 10)
+    assert places[("tool", "mint", "run")] == (6, 1, 1)
+    assert places[("tool", "mint", "run", "until-ms")] == (6, 5, 16)
+    assert places[("tool", "mint", "per-file-ignores", "legacy/*.mnt")] == (8, 1, 18)
+    assert places[("tool", "mint", "per-file-ignores", "raw.mnt")] == (9, 1, 13)
+    assert places[("tool", "other", "x")] == (11, 1, 5)
+    assert ("W",) not in places  # an array's continuation is no key
 
 
 def test_the_nearest_folder_with_settings_wins(tmp_path: Path) -> None:
@@ -77,7 +81,7 @@ def test_tool_mint_that_is_no_table_is_an_error(tmp_path: Path) -> None:
     settings = write(tmp_path / "pyproject.toml", '[tool]\nmint = "yes"\n')
     with pytest.raises(SettingsError) as raised:
         settings_for(tmp_path / "a.mnt")
-    assert str(raised.value) == f"{settings.absolute()}:2: tool.mint: must be a table"
+    assert str(raised.value) == f"{settings.absolute()}:2:8: tool.mint: must be a table"
 
 
 def test_config_is_relative_to_the_settings_file_and_origins_name_the_line(tmp_path: Path) -> None:

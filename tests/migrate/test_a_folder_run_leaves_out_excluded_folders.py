@@ -75,4 +75,4 @@ def test_a_tools_table_cannot_exclude(tmp_path: Path) -> None:
     result = CliRunner().invoke(command, [str(tmp_path)])
     assert result.exit_code == 2
     message = "migrate.exclude: a setting of every tool: write it beside select, not in a tool's table"
-    assert result.stderr == f"mint-migrate: {tmp_path / 'mint.toml'}:2: {message}\n"
+    assert result.stderr == f"mint-migrate: {tmp_path / 'mint.toml'}:2:1: {message}\n"

@@ -53,12 +53,12 @@ def test_a_flag_in_the_table_is_true_or_false(tmp_path: Path) -> None:
     settings = write(tmp_path / "mint.toml", "[migrate]\nwrite = 1\n")
     result = mint_migrate(program)
     assert (result.exit_code, result.stdout) == (2, "")
-    assert result.stderr == f"mint-migrate: {settings.absolute()}:2: migrate.write: must be true or false\n"
+    assert result.stderr == f"mint-migrate: {settings.absolute()}:2:9: migrate.write: must be true or false\n"
 
 
 def test_an_unknown_key_names_the_options_there_are(tmp_path: Path) -> None:
     settings = write(tmp_path / "mint.toml", "[migrate]\n\nwirte = true\n")
     result = mint_migrate(write(tmp_path / "demo.mnt", V3))
     assert result.exit_code == 2
-    assert result.stderr.startswith(f"mint-migrate: {settings.absolute()}:3: migrate.wirte: unknown key (known: ")
+    assert result.stderr.startswith(f"mint-migrate: {settings.absolute()}:3:1: migrate.wirte: unknown key (known: ")
     assert "write" in result.stderr and "version" not in result.stderr

@@ -96,12 +96,12 @@ def test_a_path_in_the_run_table_is_relative_to_the_settings_file(tmp_path: Path
     ("text", "problem"),
     [
         pytest.param(
-            '[run]\nuntil-ms = "soon"\n', "2: run.until-ms: 'soon' is not a valid integer range.", id="number"
+            '[run]\nuntil-ms = "soon"\n', "2:12: run.until-ms: 'soon' is not a valid integer range.", id="number"
         ),
-        pytest.param("[run]\nrealtime = 1\nspeed = 2\n", "2: run.realtime: must be true or false", id="flag"),
+        pytest.param("[run]\nrealtime = 1\nspeed = 2\n", "2:12: run.realtime: must be true or false", id="flag"),
         pytest.param(
             '[run]\nstimulus = ["a\\u0000.toml"]\n',
-            "2: run.stimulus: a path cannot hold a NUL character",
+            "2:12: run.stimulus: a path cannot hold a NUL character",
             id="nul-path",
         ),
     ],

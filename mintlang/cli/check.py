@@ -304,6 +304,8 @@ def check(
     if outcome is not None and not quiet:
         summary = fixed_summary(outcome, diff=diff, silencing=add_ignore)
         notes = outcome.notes() + ([summary] if diff or output_format not in _FOR_PEOPLE else [])
+        if diff:  # what the diff leaves, as the text report tells it after --fix
+            notes += fixable_summary(planned.program_reports(results), unsafe_fixes=unsafe_fixes)
         click.echo("".join(f"mint check: {note}\n" for note in notes), err=True, nl=False)
     if not quiet:
         click.echo("".join(f"{hint}\n" for hint in _hints(results, planned.hidden)), err=True, nl=False)

@@ -470,6 +470,11 @@ def _misspelt_keyword(
     if not (command or bracketed or _given_a_list(kinds, begin, begin + failure.index)):
         return None
     written = line.texts[begin]
+    if begin > 0 and kinds[begin - 1] is _K.LABEL and line.texts[begin - 1][1:].upper() == "REM":
+        # #REM Main loop (000:1027): a label named REM, the comment's words read as a statement
+        label = line.texts[begin - 1]
+        detail = f"{label} is a label named REM, and a statement follows it: a comment is written REM, without '#'"
+        return _error(3007, line.token_span(begin), f"'{written}' is not a keyword ({detail})")
     if words.dialect.modern:
         meant = keyword_like(written.upper(), controller, dialect=words.dialect)
     else:  # Mint v3 has keywords of its own

@@ -7,6 +7,7 @@ from collections.abc import Mapping
 from enum import StrEnum
 from pathlib import Path
 
+from mintlang.cli.settings import check_tool_tables
 from mintlang.detection import dialect_hint
 from mintlang.dialect import Dialect
 from mintlang.records import record
@@ -94,6 +95,7 @@ def run_case(case: TestCase, options: Options) -> TestResult:
 
 def _run(case: TestCase, options: Options, began: float) -> TestResult:
     settings = settings_for(case.program, options.overrides)
+    check_tool_tables(settings.project)  # the whole file, as every tool checks it
     dialect = options.dialect or settings.dialect.value
     controller = options.controller or _configured_controller(settings, dialect)
     simulated = machine(controller, dialect)

@@ -75,3 +75,12 @@ def test_the_readme_example_is_a_good_settings_file_for_mint_check(tmp_path: Pat
     write(tmp_path / "mint.toml", README_EXAMPLE)  # its scenario file is not written: mint-run would say so
     result = invoke("check", write(tmp_path / "cell.mnt", "PRINT 1\n"))
     assert (result.exit_code, result.stderr) == (0, "")
+
+
+def test_mint_test_reports_it_as_an_error_of_each_test(tmp_path: Path) -> None:
+    """As it reports a settings file that cannot be used (README, Configuration), and runs no test under it."""
+    settings = write(tmp_path / "mint.toml", "[run]\nuntl-ms = 3\n")
+    write(tmp_path / "cell.mnt", "REM @expect a = 2\nDIM a\na = 1 + 1\n")
+    result = invoke("test", "-j", "1", tmp_path)
+    assert result.exit_code == 1
+    assert f"ERROR  {tmp_path / 'cell.mnt'}  {settings.absolute()}:2:1: run.untl-ms: unknown key" in result.stdout

@@ -130,7 +130,7 @@ EXPECTED: dict[str, Expected] = {
     "template.mnt": Expected(Verdict.INCOMPLETE, V3_REFUSES + "ERROR: Config: Out of range at line 18"),
     # Incomplete: the migration compiles once a person deals with a flagged line kept for the v4 run
     # (disabling it would break its block): DIR has no v4 keyword, XENCODER no expansion board.
-    "l04404_joystick.mnt": Expected(Verdict.INCOMPLETE, "the v4 program does not compile until program line 47"),
+    "l04404_joystick.mnt": Expected(Verdict.INCOMPLETE, "the v4 program does not compile until program line 48"),
     "l12707_xencoder.mnt": Expected(Verdict.INCOMPLETE, "the v4 program does not compile until program line 19"),
     # Incomplete: the v3 original stops on a keyword the simulator does not model (BEHAVIOUR.md,
     # "Not simulated in v3"), before anything differs.

@@ -15,6 +15,7 @@ from mintlang.migrate.context import LABEL, MARKER, MARKER_LINE, Context, FileVi
 from mintlang.migrate.model import Phase, RuleClass
 from mintlang.migrate.rules.base import Action, Replace, Rule
 from mintlang.migrate.rules.explicit_axes import axis_keyword
+from mintlang.migrate.rules.inputs import imask_all_ones, inputs_holding_back_handlers
 from mintlang.migrate.rules.remarks import missing_rem_spans
 from mintlang.semantic.events import EventKind, event_of
 from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind
@@ -205,6 +206,9 @@ class InputEdges(Rule):
     down and let one input's handler interrupt another's (v3:2549); v4 serves #IN0 first and
     one handler at a time (v4:5062-5064), so handlers sharing variables or outputs may end
     otherwise.
+
+    The inputs that would hold back a handler in v4 (``inputs_holding_back_handlers``) are masked off
+    with IMASK.
     """
 
     id = "S-INEDGE"
@@ -237,10 +241,11 @@ class InputEdges(Rule):
             )
         if not mask or _sets_input_mode(context):
             return
-        yield insert_lines(
-            prologue_file(context),
-            [f"INPUTMODE = INPUTMODE | {mask}", f"INPUTNEGTRIGGER = INPUTNEGTRIGGER | {mask}"],
-        )
+        lines = [f"INPUTMODE = INPUTMODE | {mask}", f"INPUTNEGTRIGGER = INPUTNEGTRIGGER | {mask}"]
+        holding = inputs_holding_back_handlers(context)
+        if holding:
+            lines.append(f"IMASK = IMASK & 0x{imask_all_ones(context) & ~holding:X}")
+        yield insert_lines(prologue_file(context), lines)
 
 
 def _sets_input_mode(context: Context) -> bool:

@@ -35,6 +35,21 @@ IMASK_ALL_ONES = {
 _INPUT_BITS = {f"IN{bit}": bit for bit in range(8)}  # v3's one-input keywords IN0..IN7 (v3:8975-8992)
 
 
+def imask_all_ones(context: Context) -> int:
+    """IMASK with every input of the target enabled, its default (v4:11896-11900; ServoNode 51, not in
+    that table, by its inputs)."""
+    inputs = context.controller.digital_inputs.high + 1
+    return IMASK_ALL_ONES.get(context.controller.controller, (1 << inputs) - 1)
+
+
+def inputs_holding_back_handlers(context: Context) -> int:
+    """The inputs v4 serves before a handler's input that have no handler, as a bit pattern: enabled in IMASK,
+    such an input holds back every event of a lower priority (v4:5055-5057, #IN0 first: v4:5062-5064), where
+    v3's IMASK only masked handlers off (v3:8894-8902)."""
+    handled = _handler_inputs(context)
+    return ((1 << handled.bit_length()) - 1) & ~handled
+
+
 def _byte(node: n.Expression | None) -> bool:
     """An integer literal 0..255: a value v3 IMASK or IN could hold."""
     return isinstance(node, n.Number) and node.value == int(node.value) and 0 <= node.value <= 255
@@ -59,7 +74,8 @@ class InputMask(Rule):
     handlers of inputs 8 and up. Bit set = handler enabled in both (v3:8894-8902,
     v4:11915-11916). The rewrites:
 
-    * ``IMASK = k`` (k a literal 0..255) -> ``IMASK = k | <all ones above bit 7>``;
+    * ``IMASK = k`` (k a literal 0..255) -> ``IMASK = k | <all ones above bit 7>``, with k's bits of
+      inputs that would hold back a handler cleared (``inputs_holding_back_handlers``);
     * ``IMASK = IMASK AND k`` -> ``IMASK = IMASK AND (k | <all ones above bit 7>)``;
     * ``IMASK = IMASK OR e`` is kept (it only sets bits);
     * a read of IMASK anywhere else -> ``(IMASK & 255)``, the v3 value.
@@ -75,28 +91,31 @@ class InputMask(Rule):
     evidence = "spec S-IMASK; v3:8884-8902; v4:11877-11925 (default per controller v4:11896-11900)"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        ones = IMASK_ALL_ONES.get(context.controller.controller)
-        if ones is None:
+        if context.controller.controller not in IMASK_ALL_ONES:
             return  # ServoNode 51: no input above 7, v3 values mean the same
-        high = ones & ~255
+        high = imask_all_ones(context) & ~255
+        holding = inputs_holding_back_handlers(context)
         for file, _, statement in context.statements("IMASK"):  # written or read
             if (
                 isinstance(statement, n.KeywordStatement)
                 and statement.keyword.keyword == "IMASK"
                 and statement.values is not None
             ):
-                yield from self._write(file, statement, high)
+                yield from self._write(file, statement, high, holding)
                 continue
             for read in _keyword_refs(statement, "IMASK"):
                 if not _masked(parent_of(statement, read), read):
                     yield self.replace(file, read.span, f"({file.slice(read.span)} & 255)")
 
-    def _write(self, file: FileView, statement: n.KeywordStatement, high: int) -> Iterator[Action]:
+    def _write(self, file: FileView, statement: n.KeywordStatement, high: int, holding: int) -> Iterator[Action]:
         values = statement.values or ()
         value = values[0] if len(values) == 1 and statement.keyword.selector is None else None
         if _byte(value):
-            assert value is not None
-            yield self.replace(file, value.span, f"{file.slice(value.span)} | 0x{high:X}")
+            assert isinstance(value, n.Number)
+            written = file.slice(value.span)
+            if int(value.value) & holding:  # brackets: v4's | binds before & (v4:1427-1428)
+                written = f"({written} & 0x{255 & ~holding:X})"
+            yield self.replace(file, value.span, f"{written} | 0x{high:X}")
             return
         if _widened(value, high):
             return
@@ -104,7 +123,7 @@ class InputMask(Rule):
             own, other = (value.left, value.right) if _plain(value.left, "IMASK") else (value.right, value.left)
             if _plain(own, "IMASK") and value.operator == "OR":
                 return
-            if _plain(own, "IMASK") and _widened(other, high):
+            if _plain(own, "IMASK") and (_widened(other, high) or _keeps(other, high)):
                 return
             if _plain(own, "IMASK") and _byte(other):
                 yield self.replace(file, other.span, f"({file.slice(other.span)} | 0x{high:X})")
@@ -184,6 +203,11 @@ def _widened(value: n.Expression | None, high: int) -> bool:
         and isinstance(value.right, n.Number)
         and value.right.value == high
     )
+
+
+def _keeps(value: n.Expression | None, high: int) -> bool:
+    """A literal ANDed into IMASK that keeps the bits above 7 set (S-INEDGE's ``IMASK = IMASK & 0xFFFF8``)."""
+    return isinstance(value, n.Number) and value.value == int(value.value) and int(value.value) & high == high
 
 
 def _handler_inputs(context: Context) -> int:

@@ -212,12 +212,12 @@ def test_error_13_has_no_bit() -> None:
 def test_input_handlers_get_negative_edges() -> None:
     source = "LOOP : ENDL\n#IN0\nRETURN\n#IN3\nRETURN\n"
     text = rewritten("S-INEDGE", source)
-    assert "".join(line for line in text.splitlines(keepends=True) if "REM MIGRATE:" not in line) == (
-        "INPUTMODE = INPUTMODE | 9\nINPUTNEGTRIGGER = INPUTNEGTRIGGER | 9\n" + source
-    )
+    # inputs 1 and 2 have no handler and come before #IN3: masked off (000:5055-5057)
+    prologue = "INPUTMODE = INPUTMODE | 9\nINPUTNEGTRIGGER = INPUTNEGTRIGGER | 9\nIMASK = IMASK & 0xFFFF9\n"
+    assert "".join(line for line in text.splitlines(keepends=True) if "REM MIGRATE:" not in line) == (prologue + source)
     result = one_rule("S-INEDGE", source, config="AUTO\n")
     assert result.configuration is not None
-    assert result.configuration.text == "AUTO\nINPUTMODE = INPUTMODE | 9\nINPUTNEGTRIGGER = INPUTNEGTRIGGER | 9\n"
+    assert result.configuration.text == "AUTO\n" + prologue
 
 
 PRIORITY = (

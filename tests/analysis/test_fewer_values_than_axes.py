@@ -49,6 +49,7 @@ def test_one_value_for_two_axes_names_the_one_left() -> None:
         "SPEED.1 = 10",
         "SPEED = 10",  # the AXES list's first axis, as the guide writes it (000:630-634)
         "PRINT POS[0,1]",
+        "VECTORA[0,1] = 100",  # one position of a vector: its own error 2001 (000:16958), not a missing ';'
     ],
 )
 def test_lines_that_give_each_listed_axis_what_is_meant_are_not_reported(line: str) -> None:

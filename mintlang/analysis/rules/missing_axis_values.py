@@ -14,7 +14,11 @@ from collections.abc import Iterator
 from mintlang.analysis.findings import Finding, own
 from mintlang.analysis.traversal import LineScope
 from mintlang.diagnostics import Edit, Fix, Span
+from mintlang.keyworddb.model import CIRCLES, VECTORS
 from mintlang.syntax import nodes as n
+
+# Moves whose values are one position of all their axes together, one value being the addressing rule's error 2001
+_ONE_POSITION = CIRCLES | VECTORS
 
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
@@ -25,6 +29,8 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         keyword, values = statement.keyword, statement.values  # type: ignore[union-attr]
         selector = keyword.selector
         if values is None or len(values) != 1 or values[0] is None or selector is None or selector.dot:
+            continue
+        if keyword.keyword in _ONE_POSITION:
             continue
         first, *others = (text[axis.span.start : axis.span.end] for axis in selector.axes if axis is not None)
         if not others or len(others) + 1 != len(selector.axes):

@@ -33,8 +33,8 @@ def round_brackets(label: str, name: str) -> str:
 
 
 def keyword(word: Keyword, controller: Controller, spelling: str = "", dialect: Dialect = Dialect.V4) -> str:
-    """Full name, formats (as the dialect writes them), access, addressing, default, range, controllers and
-    summary."""
+    """Full name, formats (as the dialect writes them), access, addressing, default, range, controllers,
+    summary and the entry's See-also list."""
     title = f"**{word.name}**"
     if word.abbreviations:
         title += f" (abbreviation {', '.join(word.abbreviations)})"
@@ -67,6 +67,8 @@ def keyword(word: Keyword, controller: Controller, spelling: str = "", dialect: 
     lines.append(f"- Controllers: {_titles(word.controllers) or 'not listed in the guide'}")
     if not word.available_on(controller):
         lines.append(f"- **Not available on {profile(controller).title}**")
+    if word.see_also:
+        lines.append(f"- See also: {', '.join(word.see_also)}")
     return "\n".join(lines)
 
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 import ast
 from pathlib import Path
 
+from mintlang import terminals
 from mintlang.analysis.rules import addressing, function_domains, keyword_usage, limits
 from mintlang.keyworddb import usage
 from mintlang.semantic import blocks
@@ -67,6 +68,7 @@ _TABLES = {
     ("semantic/blocks.py", "finish"): {code for _, code in blocks._CLOSING.values()},
     ("analysis/rules/addressing.py", "_channel"): {code for *_, code in addressing._CHANNEL_FAMILIES}
     | _literals_returned(_function(addressing, "_channel_family"), -1),
+    ("analysis/rules/addressing.py", "_terminal"): _literals_returned(_function(terminals, "serial_port_error"), 0),
     ("analysis/rules/keyword_usage.py", "each_line"): _literals_returned(_function(keyword_usage, "_verdict"), 0)
     | _refusals(),
     ("analysis/rules/limits.py", "_over"): _over_limits(),

@@ -32,7 +32,7 @@ from collections import Counter
 from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 
 from mintlang.codes import SYNTAX_ERRORS
-from mintlang.diagnostics import Diagnostic, Edit, Fix, with_edits
+from mintlang.diagnostics import Diagnostic, Edit, Fix, LineIndex, with_edits
 from mintlang.records import record
 
 MAX_ROUNDS = 10
@@ -145,12 +145,10 @@ def _undone(
     check: Callable[[str], Sequence[Diagnostic]],
 ) -> dict[_Key, str]:
     """The findings whose fix a round that applied ``applied`` to ``text`` must set aside, each with why: the
-    finding is still there after it (``after``), or, none being so, the round added a syntax error."""
+    finding is still there after it (``after``), or, none being so, the round added a syntax error to a line."""
     if stays := _not_fixed(before, applied, after):
         return dict.fromkeys(stays, STAYS)
-    if (errors := _syntax_errors(before)) < _syntax_errors(after):
-        return dict.fromkeys(_breaking(text, applied, check, errors), ADDS_SYNTAX_ERROR)
-    return {}
+    return dict.fromkeys(_breaking(text, before, applied, after, check), ADDS_SYNTAX_ERROR)
 
 
 def _not_fixed(before: Sequence[Diagnostic], applied: Sequence[Diagnostic], after: Sequence[Diagnostic]) -> set[_Key]:
@@ -173,20 +171,64 @@ def _carried(offset: int, edits: Iterable[Edit]) -> int:
     return offset + sum(len(edit.text) - (edit.span.end - edit.span.start) for edit in edits if edit.span.end <= offset)
 
 
-def _syntax_errors(diagnostics: Iterable[Diagnostic]) -> int:
-    return sum(diagnostic.mint_error in SYNTAX_ERRORS for diagnostic in diagnostics)
+def _rising(
+    text: str, before: Sequence[Diagnostic], applied: Sequence[Diagnostic], after: Sequence[Diagnostic]
+) -> set[int]:
+    """The lines of ``text`` (from 1) with more syntax errors once ``applied``'s fixes are made (``after``) than
+    before: a line's own count, so that a syntax error a fix mends elsewhere does not hide one another adds."""
+    edits = sorted((edit for finding in applied for edit in finding.fixes[0].edits), key=lambda e: e.span.start)
+    index = LineIndex(text)
+
+    def lines(found: Iterable[Diagnostic], where: Callable[[int], int]) -> Counter[int]:
+        return Counter(index.position(where(d.span.start)).line for d in found if d.mint_error in SYNTAX_ERRORS)
+
+    was = lines(before, lambda offset: offset)
+    return {line for line, count in lines(after, lambda offset: _origin(offset, edits)).items() if count > was[line]}
+
+
+def _origin(offset: int, edits: Sequence[Edit]) -> int:
+    """Where ``offset`` of a text made by ``edits`` (in order, not overlapping) was before them: a place in an
+    edit's new text was where that edit starts."""
+    shift = 0
+    for edit in edits:
+        start = edit.span.start + shift
+        if offset < start:
+            break
+        if offset < start + len(edit.text):
+            return edit.span.start
+        shift += len(edit.text) - (edit.span.end - edit.span.start)
+    return offset - shift
 
 
 def _breaking(
-    text: str, applied: Sequence[Diagnostic], check: Callable[[str], Sequence[Diagnostic]], errors: int
+    text: str,
+    before: Sequence[Diagnostic],
+    applied: Sequence[Diagnostic],
+    after: Sequence[Diagnostic],
+    check: Callable[[str], Sequence[Diagnostic]],
 ) -> set[_Key]:
-    """The applied findings whose fix alone leaves ``text`` with more than ``errors`` syntax errors; every one
-    of them when none does alone. Found by halving: the fixes of a group are tried together, and a group that
-    adds none is cleared, so one bad fix among a thousand costs some twenty checks, not a thousand."""
+    """The applied findings whose fix adds a syntax error to a line of ``text`` (the round's check found
+    ``after``); every one of them when none does alone. A line that has more, changed by one fix only, names
+    it without another check; otherwise the fixes are halved: a group's fixes are made together and a group
+    that adds none is cleared, so one bad fix among a thousand costs some twenty checks, not a thousand."""
+    rising = _rising(text, before, applied, after)
+    if not rising:
+        return set()
+    index = LineIndex(text)
+    touched = {
+        id(finding): {
+            index.position(at).line for edit in finding.fixes[0].edits for at in (edit.span.start, edit.span.end)
+        }
+        for finding in applied
+    }
+    named = [finding for finding in applied if touched[id(finding)] & rising]
+    fixes_on = Counter(line for finding in named for line in touched[id(finding)] & rising)
+    if all(fixes_on[line] == 1 for line in rising):
+        return set(map(_key, named))
 
     def adds(group: Sequence[Diagnostic]) -> bool:
         edits = [edit for finding in group for edit in finding.fixes[0].edits]
-        return _syntax_errors(check(with_edits(text, edits))) > errors
+        return bool(_rising(text, before, group, check(with_edits(text, edits))))
 
     def culprits(group: Sequence[Diagnostic]) -> list[Diagnostic]:
         """Those of ``group``, whose fixes together add a syntax error, whose fix adds one alone."""

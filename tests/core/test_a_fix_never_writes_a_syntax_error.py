@@ -64,7 +64,8 @@ def test_before_any_fixing_the_fixes_the_first_round_sets_aside_are_found_as_fix
 
 
 def test_the_fix_that_adds_a_syntax_error_is_found_in_few_checks() -> None:
-    # 64 fixes that are sound and one that writes '(': each fix tried alone took a check per fix, 65 more
+    # 64 fixes that are sound and one that writes "(": each fix tried alone took a check per fix, 65 more; the
+    # line that has a syntax error more names the one fix that changed it
     checks: list[str] = []
 
     def findings(text: str) -> tuple[Diagnostic, ...]:
@@ -80,4 +81,36 @@ def test_the_fix_that_adds_a_syntax_error_is_found_in_few_checks() -> None:
     source = "DIM a\n" + "a = x\n" * 32 + "a = y\n" + "a = x\n" * 32
     result = fix_text(source, findings, unsafe=False)
     assert result.text == source.replace("x", "1")
-    assert len(checks) <= 20  # the round, and about two checks per halving (log2 65 < 7) to find the one
+    assert len(checks) <= 4  # the text, the round, the round again without it, and the text found fixed
+
+
+def test_a_syntax_error_one_fix_mends_does_not_hide_one_another_adds() -> None:
+    def findings(text: str) -> tuple[Diagnostic, ...]:
+        """'a = ((' (a syntax error, 000:18920-18923) is fixed as 'a = 1'; 'PRINT 2' as '(', one."""
+        found = [diagnostic for diagnostic in check(text) if diagnostic.mint_error in SYNTAX_ERRORS]
+        for old, new in (("a = ((", "a = 1"), ("PRINT 2", "(")):
+            if (at := text.find(old)) >= 0:
+                fix = Fix(f"write {new}", (Edit(Span(at, at + len(old)), new),), safe=True)
+                found.append(Diagnostic("W101", Severity.WARNING, Span(at, at + len(old)), old, fixes=(fix,)))
+        return tuple(found)
+
+    # the round's text has as many syntax errors as before, one mended and one added: the one added is not kept
+    assert fix_text("DIM a\na = ((\nPRINT 2\n", findings, unsafe=False).text == "DIM a\na = 1\nPRINT 2\n"
+
+
+def test_a_syntax_error_on_a_line_no_fix_changed_is_traced_to_its_fix_by_halving() -> None:
+    checks: list[str] = []
+
+    def findings(text: str) -> tuple[Diagnostic, ...]:
+        """'x' is fixed as '1', 'y' as 'Y'; a 'Y' anywhere makes the first line a syntax error."""
+        checks.append(text)
+        found = [Diagnostic("E2003", Severity.ERROR, Span(0, 1), "syntax", mint_error=2003)] if "Y" in text else []
+        for at, word in enumerate(text):
+            if word in "xy":
+                fix = Fix("write", (Edit(Span(at, at + 1), "1" if word == "x" else "Y"),), safe=True)
+                found.append(Diagnostic("W101", Severity.WARNING, Span(at, at + 1), word, fixes=(fix,)))
+        return tuple(found)
+
+    source = "DIM a\n" + "a = x\n" * 32 + "a = y\n" + "a = x\n" * 32
+    assert fix_text(source, findings, unsafe=False).text == source.replace("x", "1")
+    assert len(checks) <= 20  # the round, and about two checks a halving (log2 65 < 7) to find the one

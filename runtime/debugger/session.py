@@ -20,7 +20,7 @@ from mintlang.cli.report import shortened
 from mintlang.runtime.controller import Controller
 from mintlang.runtime.debugger import stepping
 from mintlang.runtime.debugger.breakpoints import Breakpoints
-from mintlang.runtime.debugger.evaluation import EvaluationError, shown
+from mintlang.runtime.debugger.evaluation import EvaluationError, Evaluator, shown
 from mintlang.runtime.debugger.execution import ERRORS, UNHANDLED, Execution
 from mintlang.runtime.debugger.framing import FramingError, read_message, write_message
 from mintlang.runtime.debugger.launch import Application, LaunchError, Layout, layout, prepare
@@ -368,7 +368,7 @@ class Session:
         node = self.references.nodes.get(reference)
         if node is None:
             raise RequestError(f"no variables under reference {reference} at this stop")
-        value = execution.evaluator.evaluate(str(arguments.get("value", "")))
+        value = self._value(execution.evaluator, str(arguments.get("value", "")))
         description, apply = node.assignment(str(arguments.get("name", "")), value)
         execution.intervene(description, apply)
         return {"value": shown(value)}
@@ -389,7 +389,18 @@ class Session:
                 f"{text.strip()} is an assignment, which the debug console does not run: it evaluates expressions; "
                 "set a variable in the Variables view (setVariable)"
             )
-        return {"result": shown(execution.evaluator.evaluate(text)), "variablesReference": 0}
+        return {"result": shown(self._value(execution.evaluator, text)), "variablesReference": 0}
+
+    def _value(self, evaluator: Evaluator, text: str) -> float:
+        """``text``'s value; where the compiler refused the program, a failure says so: none of its names exist."""
+        try:
+            return evaluator.evaluate(text)
+        except EvaluationError as error:
+            if self.layout.refused is None:
+                raise
+            raise EvaluationError(
+                f"{error}: the program does not compile, so none of its variables exist: {self.layout.refused}"
+            ) from None
 
     def cont(self, arguments: dict[str, Any]) -> dict[str, Any]:
         execution, _ = self._paused()

@@ -22,7 +22,7 @@ from mintlang.analysis.suppression import UNUSED_SUPPRESSION
 from mintlang.cli.checking import Checked, CheckOptions, FileFixed, Job
 from mintlang.cli.files import Unchecked, is_configuration, not_text, unread
 from mintlang.cli.report import FileReport
-from mintlang.cli.settings import check_tool_tables
+from mintlang.cli.settings import whole_settings
 from mintlang.diagnostics import Diagnostic
 from mintlang.fixes import Fixed
 from mintlang.records import record
@@ -186,21 +186,14 @@ def plan(files: Sequence[Path], overrides: Overrides, stdin: SourceFile | None =
     on their own. Raises SettingsError for a settings file that cannot be used."""
     planned = Plan(overrides)
     if stdin is not None:
-        planned.add(stdin.path, _settings(stdin.path, overrides), stdin)
+        planned.add(stdin.path, whole_settings(stdin.path, overrides), stdin)
     for path in files:
         if not is_configuration(path):
-            planned.add(path, _settings(path, overrides))
+            planned.add(path, whole_settings(path, overrides))
     for path in files:
         if is_configuration(path):
-            planned.add(path, _settings(path, overrides))
+            planned.add(path, whole_settings(path, overrides))
     return planned
-
-
-def _settings(path: Path, overrides: Overrides) -> FileSettings:
-    """What applies to ``path``; its settings file is checked whole, the other tools' tables too."""
-    settings = settings_for(path, overrides)
-    check_tool_tables(settings.project)
-    return settings
 
 
 def _configuration_with_programs(seen_by_programs: list[tuple[Diagnostic, ...]]) -> tuple[Diagnostic, ...]:

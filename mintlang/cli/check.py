@@ -46,7 +46,7 @@ from mintlang.cli.report import (
     render_concise,
     render_text,
 )
-from mintlang.cli.settings import describe, overrides, settings_failed, typed
+from mintlang.cli.settings import describe, overrides, settings_failed, typed, whole_settings
 from mintlang.cli.terminal import (
     colour_console,
     console,
@@ -405,7 +405,7 @@ def _configuration(path: Path | None) -> SourceFile | None:
 def _show_settings(paths: list[Path], layer: Overrides, problems: list[str]) -> NoReturn:
     """``--show-settings``: each file's settings; a path that could not be looked at is said as a check says it."""
     if paths:
-        click.echo("\n\n".join("\n".join(describe(path, settings_for(path, layer))) for path in paths))
+        click.echo("\n\n".join("\n".join(describe(path, whole_settings(path, layer))) for path in paths))
     for problem in problems or ([] if paths else ["no .mnt files found"]):
         click.echo(f"mint check: {problem}", err=True)
     sys.exit(_NOT_DONE if problems or not paths else 0)

@@ -31,6 +31,7 @@ from mintlang.settings import (
     Table,
     project_for,
     relative_globs,
+    settings_for,
 )
 
 _SETTINGS_ERROR = 2
@@ -175,6 +176,13 @@ class ProjectCommand(click.Command):
             param = _option(table, key, options)
             values[param.name or key] = _converted(context, param, table, key, value)
         return {name: value for name, value in values.items() if not typed(context, name)}
+
+
+def whole_settings(path: Path, overrides: Overrides) -> FileSettings:
+    """What applies to ``path`` (``settings_for``), its settings file checked whole, every tool's table too."""
+    settings = settings_for(path, overrides)
+    check_tool_tables(settings.project)
+    return settings
 
 
 def check_tool_tables(project: ProjectSettings | None) -> None:

@@ -7,7 +7,7 @@ from collections.abc import Mapping
 from enum import StrEnum
 from pathlib import Path
 
-from mintlang.cli.settings import check_tool_tables
+from mintlang.cli.settings import whole_settings
 from mintlang.detection import dialect_hint
 from mintlang.dialect import Dialect
 from mintlang.records import record
@@ -26,7 +26,7 @@ from mintlang.runtime.scenario.stimulus import DrivesEnabled, merge
 from mintlang.runtime.simulation import Limits, Stop, StopReason
 from mintlang.runtime.testing.coverage import FileCoverage, Recorder
 from mintlang.runtime.testing.discovery import TestCase, configuration_of
-from mintlang.settings import FileSettings, Overrides, SettingsError, settings_for
+from mintlang.settings import FileSettings, Overrides, SettingsError
 from mintlang.source import read_source
 
 
@@ -94,8 +94,7 @@ def run_case(case: TestCase, options: Options) -> TestResult:
 
 
 def _run(case: TestCase, options: Options, began: float) -> TestResult:
-    settings = settings_for(case.program, options.overrides)
-    check_tool_tables(settings.project)  # the whole file, as every tool checks it
+    settings = whole_settings(case.program, options.overrides)
     dialect = options.dialect or settings.dialect.value
     controller = options.controller or _configured_controller(settings, dialect)
     simulated = machine(controller, dialect)

@@ -84,3 +84,10 @@ def test_mint_test_reports_it_as_an_error_of_each_test(tmp_path: Path) -> None:
     result = invoke("test", "-j", "1", tmp_path)
     assert result.exit_code == 1
     assert f"ERROR  {tmp_path / 'cell.mnt'}  {settings.absolute()}:2:1: run.untl-ms: unknown key" in result.stdout
+
+
+def test_show_settings_stops_at_it_as_the_check_does(tmp_path: Path) -> None:
+    settings = write(tmp_path / "mint.toml", "[run]\nuntl-ms = 3\n")
+    result = invoke("check", "--show-settings", write(tmp_path / "cell.mnt", "PRINT 1\n"))
+    assert (result.exit_code, result.stdout) == (2, "")
+    assert result.stderr.startswith(f"mint check: {settings.absolute()}:2:1: run.untl-ms: unknown key")

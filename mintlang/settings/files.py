@@ -80,8 +80,12 @@ class Table:
         return str(self.path) if line is None else f"{self.path}:{line}"
 
     def error(self, message: str, *keys: str, key_at_fault: bool = False) -> SettingsError:
-        """The error of the value of ``keys``, placed at the value; ``key_at_fault``: at the key itself."""
-        place = self.places.get((*self.keys, *keys))
+        """The error of the value of ``keys``, placed at the value; ``key_at_fault``: at the key itself. A key the
+        scan did not place (inside an inline table's braces) is placed at its table."""
+        path = (*self.keys, *keys)
+        while path and path not in self.places:
+            path = path[:-1]
+        place = self.places.get(path)
         if place is None:
             return SettingsError(self.path, message, key=self.name(*keys))
         column = place.column if key_at_fault else place.value_column

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from mintlang.cli.settings import check_tool_tables
 from mintlang.settings import SettingsError, settings_for
 from mintlang.settings.files import find_settings, key_places
 
@@ -89,3 +90,18 @@ def test_config_is_relative_to_the_settings_file_and_origins_name_the_line(tmp_p
     applied = settings_for(tmp_path / "cells" / "a.mnt")
     assert applied.config.value == tmp_path.absolute() / "shared" / "line.cfg"
     assert applied.config.origin == f"{settings.absolute()}:2"
+
+
+@pytest.mark.parametrize(
+    ("text", "place", "key"),
+    [
+        ('per-file-ignores = { "a.mnt" = ["Q1"] }\n', "1:20", 'per-file-ignores."a.mnt"'),  # at the table's value
+        ("\nrun = { untl-ms = 3 }\n", "2:1", "run.untl-ms"),  # an unknown key: at the table's key
+    ],
+)
+def test_a_key_of_an_inline_table_is_placed_at_its_table(tmp_path: Path, text: str, place: str, key: str) -> None:
+    """The scan finds no line for a key written inside ``{ }``: the error is placed where its table is."""
+    settings = write(tmp_path / "mint.toml", text)
+    with pytest.raises(SettingsError) as raised:
+        check_tool_tables(settings_for(tmp_path / "a.mnt").project)
+    assert str(raised.value).startswith(f"{settings.absolute()}:{place}: {key}: ")

@@ -70,8 +70,16 @@ class Table:
         """The dotted name a user reads in the file (``tool.mint.run.until-ms``, ``select``)."""
         return ".".join(_quoted(key) for key in (*self.keys, *keys))
 
+    def place(self, *keys: str) -> Place | None:
+        """Where ``keys`` is written; a key the scan did not place (inside an inline table's braces), where its
+        table is."""
+        path = (*self.keys, *keys)
+        while path and path not in self.places:
+            path = path[:-1]
+        return self.places.get(path)
+
     def line(self, *keys: str) -> int | None:
-        place = self.places.get((*self.keys, *keys))
+        place = self.place(*keys)
         return None if place is None else place.line
 
     def origin(self, *keys: str) -> str:
@@ -80,12 +88,8 @@ class Table:
         return str(self.path) if line is None else f"{self.path}:{line}"
 
     def error(self, message: str, *keys: str, key_at_fault: bool = False) -> SettingsError:
-        """The error of the value of ``keys``, placed at the value; ``key_at_fault``: at the key itself. A key the
-        scan did not place (inside an inline table's braces) is placed at its table."""
-        path = (*self.keys, *keys)
-        while path and path not in self.places:
-            path = path[:-1]
-        place = self.places.get(path)
+        """The error of the value of ``keys``, placed at the value; ``key_at_fault``: at the key itself."""
+        place = self.place(*keys)
         if place is None:
             return SettingsError(self.path, message, key=self.name(*keys))
         column = place.column if key_at_fault else place.value_column

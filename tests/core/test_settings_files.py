@@ -105,3 +105,10 @@ def test_a_key_of_an_inline_table_is_placed_at_its_table(tmp_path: Path, text: s
     with pytest.raises(SettingsError) as raised:
         check_tool_tables(settings_for(tmp_path / "a.mnt").project)
     assert str(raised.value).startswith(f"{settings.absolute()}:{place}: {key}: ")
+
+
+def test_a_value_in_an_inline_table_names_its_tables_line_as_its_origin(tmp_path: Path) -> None:
+    """--show-settings says where each value came from: inside braces, the line the table is written on."""
+    settings = write(tmp_path / "mint.toml", 'controller = "mintdrive"\nper-file-ignores = { "*.mnt" = ["W103"] }\n')
+    [(glob, given)] = settings_for(tmp_path / "a.mnt").per_file_ignores
+    assert (glob, given.origin) == ("*.mnt", f"{settings.absolute()}:2")

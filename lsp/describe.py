@@ -46,11 +46,13 @@ def keyword(word: Keyword, controller: Controller, spelling: str = "", dialect: 
         lines += ["```mint", *formats, "```", ""]
     if word.summary:
         lines += [word.summary, ""]
-    own = word.attributes_for(controller)
+    own = supplements.attributes_for(word, controller, dialect)
     row = own or (word.attributes[0] if word.attributes else None)
     if row is not None and own is None:  # HOMEINPUT on NextMove PCI: another controller's row, said so
         mine = profile(controller).title
         lines.append(f"- Attributes: the guide's row for {_titles(row.controllers)} (it prints none for {mine})")
+    elif own is not None and not word.attributes:  # MOVEBUFFERSIZE, an Advanced-guide entry: the tools' row
+        lines.append("- Attributes: the guide prints no table: the row mint check and mint-run take")
     if row is not None:
         lines.append(f"- Access: {_access(row.read, row.write, row.command)}")
     if word.addressing is not Addressing.NONE:
@@ -62,6 +64,8 @@ def keyword(word: Keyword, controller: Controller, spelling: str = "", dialect: 
         lines.append(f"- Default: {row.default}")
     # the range as both tools hold values, on this controller
     held = supplements.narrowed(word.name, row.range, controller) if row is not None else None
+    if held is None and own is not None and dialect.modern:
+        held = supplements.pattern_range(word.name, controller)  # ServoNode 51's rows print none
     if held is not None:
         lines.append(f"- Range: {held.text}")
     lines.append(f"- Controllers: {_titles(word.controllers) or 'not listed in the guide'}")

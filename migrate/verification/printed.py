@@ -7,8 +7,9 @@ of numbers, runs of spaces and other text: the other text must be equal, two
 numbers within ``tolerance.printed``, and once two numbers of a line are
 printed differently the spaces after them on that line (a ``;`` tab stop moved
 by the wider number) may differ in length. Everything else is a divergence:
-``PRINT USING`` layouts, ``BINARY``'s padding lost under ``PRINT BIN`` (its
-digits still compare, as numbers), and error messages are not normalised.
+``PRINT USING`` layouts, ``BINARY``'s padding lost under ``PRINT BIN`` (the
+zeros before two numbers' digits must be as many), and error messages are not
+normalised.
 """
 
 from __future__ import annotations
@@ -60,10 +61,17 @@ class _Printed:
 def _same(v3: _Token, v4: _Token, loose: bool) -> bool:
     if v3.kind == "number" and v4.kind == "number":
         a, b = float(v3.text), float(v4.text)
-        return abs(a - b) <= tolerance.printed(a, b)
+        return abs(a - b) <= tolerance.printed(a, b) and _padding(v3.text) == _padding(v4.text)
     if v3.kind == "spaces" and v4.kind == "spaces":
         return loose or v3.text == v4.text
     return v3.text == v4.text
+
+
+def _padding(number: str) -> int:
+    """How many zeros are printed before a number's first significant digit: a layout (``BINARY``'s 8 digits,
+    ``USING``'s places), which two numbers equal in value must share (``00110011`` is not ``110011``)."""
+    digits = number.lstrip("-").split(".")[0]
+    return len(digits) - len(digits.lstrip("0")) if len(digits) > 1 else 0
 
 
 def differences(v3: Recording, v4: Recording, until: int) -> list[Divergence]:

@@ -28,6 +28,7 @@ finds it for a text before any fixing, as the first round would: a count of what
 
 from __future__ import annotations
 
+from bisect import bisect_right
 from collections import Counter
 from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 
@@ -176,28 +177,40 @@ def _rising(
 ) -> set[int]:
     """The lines of ``text`` (from 1) with more syntax errors once ``applied``'s fixes are made (``after``) than
     before: a line's own count, so that a syntax error a fix mends elsewhere does not hide one another adds."""
-    edits = sorted((edit for finding in applied for edit in finding.fixes[0].edits), key=lambda e: e.span.start)
     index = LineIndex(text)
+    origin = _origins(sorted((edit for finding in applied for edit in finding.fixes[0].edits), key=_start))
 
     def lines(found: Iterable[Diagnostic], where: Callable[[int], int]) -> Counter[int]:
         return Counter(index.position(where(d.span.start)).line for d in found if d.mint_error in SYNTAX_ERRORS)
 
     was = lines(before, lambda offset: offset)
-    return {line for line, count in lines(after, lambda offset: _origin(offset, edits)).items() if count > was[line]}
+    return {line for line, count in lines(after, origin).items() if count > was[line]}
 
 
-def _origin(offset: int, edits: Sequence[Edit]) -> int:
-    """Where ``offset`` of a text made by ``edits`` (in order, not overlapping) was before them: a place in an
+def _start(edit: Edit) -> int:
+    return edit.span.start
+
+
+def _origins(edits: Sequence[Edit]) -> Callable[[int], int]:
+    """Where an offset of the text ``edits`` (in order, not overlapping) made was before them; a place in an
     edit's new text was where that edit starts."""
+    starts: list[int] = []  # where each edit's new text starts in the new text
+    shifts: list[int] = []  # how far the text after each edit moved
     shift = 0
     for edit in edits:
-        start = edit.span.start + shift
-        if offset < start:
-            break
-        if offset < start + len(edit.text):
-            return edit.span.start
+        starts.append(edit.span.start + shift)
         shift += len(edit.text) - (edit.span.end - edit.span.start)
-    return offset - shift
+        shifts.append(shift)
+
+    def origin(offset: int) -> int:
+        at = bisect_right(starts, offset) - 1
+        if at < 0:
+            return offset
+        if offset < starts[at] + len(edits[at].text):
+            return edits[at].span.start
+        return offset - shifts[at]
+
+    return origin
 
 
 def _breaking(

@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 from urllib.parse import unquote
 
+from mintlang.analysis.rules.events import unavailable
 from mintlang.analysis.rules.v3_keywords import successor
 from mintlang.controllers import ControllerProfile, profile
 from mintlang.diagnostics import split_lines
@@ -263,8 +264,11 @@ def symbol(snapshot: Snapshot, found: Symbol) -> str:
         body = macro_body(snapshot, found.identity)
         value = f"\n\n```mint\nDEFINE {found.name} = {body}\n```" if body is not None else ""
         return f"**{found.name}** — macro, {where.replace('declared', 'defined')}{value}"
-    event = event_of(found.name, snapshot.settings.dialect)
-    kind = f"event handler ({event.kind.value})" if event else "label"
+    dialect = snapshot.settings.dialect
+    event = event_of(found.name, dialect)
+    never = unavailable(event, snapshot.model.controller, dialect) if event else None  # #IN7 on ServoNode 51
+    kind = f"event handler ({event.kind.value})" if event and never is None else "label"
     where = f"at {_where(snapshot, definition.unit, definition.span.start)}" if definition else "never defined"
     remarks = _remarks(snapshot, definition) if definition else ""
-    return f"**#{found.name}** — {kind}, {where}{remarks}"
+    note = f"\n\nNot an event handler here: {never}" if never is not None else ""
+    return f"**#{found.name}** — {kind}, {where}{note}{remarks}"

@@ -58,7 +58,7 @@ def check(facts: Facts) -> Iterator[Finding]:
             later = max(fast, key=lambda handler: handler.span.start)
             yield Finding(unit, mint_error(3006, later.span, "#FASTIN and #FASTINx handlers cannot both be defined"))
     for handler in handlers:
-        problem = _unavailable(handler.event, model.controller, dialect)
+        problem = unavailable(handler.event, model.controller, dialect)
         if problem is not None:
             yield Finding(handler.unit, own("W109", handler.span, f"{handler.written}: {problem}"))
     first_block: dict[tuple[Unit, Event], int] = {}
@@ -84,7 +84,8 @@ def _event_blocks(facts: Facts) -> list[_Handler]:
     return found
 
 
-def _unavailable(event: Event, controller: ControllerProfile, dialect: Dialect) -> str | None:
+def unavailable(event: Event, controller: ControllerProfile, dialect: Dialect) -> str | None:
+    """Why ``controller`` never calls the handler of ``event`` (the language server's hover says it too), or None."""
     number = event.number
     if event.kind is EventKind.IN and dialect is Dialect.V3:
         return None if number in _V3_INPUTS else _NOT_V3_INPUT

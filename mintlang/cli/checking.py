@@ -16,15 +16,16 @@ from mintlang import check_application
 from mintlang.allocation import kept_without_collector
 from mintlang.cli.files import Unchecked, is_configuration, not_text, unread
 from mintlang.cli.report import FileReport
+from mintlang.codes import DEFAULT_SELECT, SYNTAX_ERRORS
 from mintlang.detection import dialect_hint
 from mintlang.diagnostics import Diagnostic
 from mintlang.dialect import Dialect
-from mintlang.fixes import Fixed, fix_text, left_out
+from mintlang.fixes import Fixed, automatic_fix, fix_text, left_out
 from mintlang.records import record
 from mintlang.source import SourceFile, read_source
 
 if TYPE_CHECKING:
-    from collections.abc import Callable
+    from collections.abc import Callable, Sequence
 
     from mintlang.analysis.analyser import Analysis
 
@@ -126,10 +127,12 @@ def check_file(job: Job) -> Checked:
     hint = options.hint(source)
     if job.fixing is not None and hint is None:  # a MintMT program read as v4 is not written as v4: the hint says why
         return (_silence_program if job.fixing is Fixing.SILENCE else _fix_program)(job, source, arguments)
-    analysed = _analyser(job, arguments)
-    analysis = analysed(source.text)
+    analysis = _analyser(job, arguments)(source.text)
     found = analysis.program
-    unfixed = left_out(source.text, found, lambda text: analysed(text).program) if hint is None else {}
+    unfixed: dict[tuple[str, str], str] = {}
+    if hint is None and any(automatic_fix(diagnostic, unsafe=True) is not None for diagnostic in found):
+        seen = _FixingCheck(job, arguments, [])
+        unfixed = left_out(source.text, seen(source.text) if seen.wider else found, seen)
     report = FileReport(str(source.path), source.text, found, left_out=tuple(unfixed.items()))
     return Checked(report, analysis.configuration, hint=hint)
 
@@ -139,20 +142,61 @@ def _analyser(job: Job, arguments: dict[str, object]) -> Callable[[str], Analysi
     return lambda text: check_application(text, config=job.configuration, select=job.options.select, **arguments)
 
 
+_SYNTAX_CODES = tuple(f"E{number}" for number in sorted(SYNTAX_ERRORS))
+
+
+@record
+class _FixingCheck:
+    """The findings the rounds of fixes see in a text: those selected, and every syntax error, selected or not,
+    without its fixes, so that no fix writes one a narrower selection hides (``--select E3007`` hid the 2006 of
+    'the' respelt THEN, and --fix wrote it). ``reported`` keeps the selected ones of them."""
+
+    job: Job
+    arguments: dict[str, object]
+    analyses: list[Analysis]  # each check made, in order
+
+    @property
+    def wider(self) -> bool:
+        """Whether the selection leaves out a syntax error, so that the rounds' checks select more."""
+        return not all(map(self._selected_code, _SYNTAX_CODES))
+
+    def __call__(self, text: str) -> tuple[Diagnostic, ...]:
+        options = self.job.options
+        if not self.wider:
+            self.analyses.append(_analyser(self.job, self.arguments)(text))
+            return self.analyses[-1].program
+        ignore = tuple(prefix for prefix in options.ignore if not any(c.startswith(prefix) for c in _SYNTAX_CODES))
+        select = (*(DEFAULT_SELECT if options.select is None else options.select), *_SYNTAX_CODES)
+        arguments = {**self.arguments, "ignore": ignore}
+        self.analyses.append(check_application(text, config=self.job.configuration, select=select, **arguments))
+        return tuple(
+            diagnostic if self._selected(diagnostic) else replace(diagnostic, fixes=())
+            for diagnostic in self.analyses[-1].program
+            if self._selected(diagnostic) or diagnostic.mint_error in SYNTAX_ERRORS
+        )
+
+    def _selected(self, diagnostic: Diagnostic) -> bool:
+        return self._selected_code(diagnostic.code)
+
+    def _selected_code(self, code: str) -> bool:
+        from mintlang.analysis.analyser import code_selected  # noqa: PLC0415 - as check_application imports it
+
+        return code_selected(code, self.job.options.select, self.job.options.ignore)
+
+    def reported(self, found: Sequence[Diagnostic]) -> tuple[Diagnostic, ...]:
+        return tuple(filter(self._selected, found)) if self.wider else tuple(found)
+
+
 def _fix_program(job: Job, source: SourceFile, arguments: dict[str, object]) -> Checked:
     """Fix the program round after round; its report is that of the fixed text."""
     analyses: list[Analysis] = []
-    analysed = _analyser(job, arguments)
-
-    def program_findings(text: str) -> tuple[Diagnostic, ...]:
-        analyses.append(analysed(text))
-        return analyses[-1].program
-
-    fixed = fix_text(source.text, program_findings, unsafe=job.fixing is Fixing.UNSAFE)
+    seen = _FixingCheck(job, arguments, analyses)
+    fixed = fix_text(source.text, seen, unsafe=job.fixing is Fixing.UNSAFE)
     # what is left to --unsafe-fixes after the safe fixes, or to a second --fix, is counted as the report's is
-    unfixed = left_out(fixed.text, fixed.remaining, lambda text: analysed(text).program, dict(fixed.left_out))
+    unfixed = left_out(fixed.text, fixed.remaining, seen, dict(fixed.left_out))
+    fixed = replace(fixed, remaining=seen.reported(fixed.remaining))
     report = FileReport(str(source.path), fixed.text, fixed.remaining, left_out=tuple(unfixed.items()))
-    as_read = FileReport(str(source.path), source.text, analyses[0].program)
+    as_read = FileReport(str(source.path), source.text, seen.reported(analyses[0].program))
     return Checked(report, analyses[-1].configuration, fixed=FileFixed(source, fixed), as_read=as_read)
 
 

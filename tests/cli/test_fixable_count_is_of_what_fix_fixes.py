@@ -88,3 +88,15 @@ def test_after_the_safe_fixes_a_fix_left_to_unsafe_fixes_is_counted_as_it_would_
         "1 finding fixable with --fix --unsafe-fixes.\n"
         f"Set aside by --fix, as the fix would add a syntax error: {program}:2:1 E3007.\n"
     )
+
+
+def test_a_selection_without_the_syntax_errors_does_not_let_fix_write_one(tmp_path: Path) -> None:
+    # --select E3007 reports no 2006, but THEN written for 'the' is one all the same (000:1570-1577): --fix sets
+    # it aside as it does with every code selected, and reports only what was selected
+    program = tmp_path / "cell.mnt"
+    program.write_text(SET_ASIDE, encoding="utf-8")
+    for selection in (["--select", "E3007"], ["--ignore", "E2"]):
+        fixed = mint_check(*selection, "--fix", "--unsafe-fixes", program)
+        assert program.read_text(encoding="utf-8").startswith("DIM a\nthe a = 1\n")
+        assert f"Set aside by --fix, as the fix would add a syntax error: {program}:2:1 E3007.\n" in fixed.stdout
+        assert "E2006" not in fixed.stdout

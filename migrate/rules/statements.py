@@ -42,13 +42,13 @@ class StatementRule(Rule):
                     yield self.flag(file, statement.span, result)
                 elif result is not None:
                     yield self.replace(file, statement.span, result)
-                    if (caveat := self.caveat(statement)) is not None:
+                    if (caveat := self.caveat(context, statement)) is not None:
                         yield self.flag(file, statement.span, caveat)
 
     def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
         raise NotImplementedError
 
-    def caveat(self, statement: n.KeywordStatement) -> str | None:
+    def caveat(self, context: Context, statement: n.KeywordStatement) -> str | None:
         """What the user must still check about a rewrite, reported as a manual item beside it."""
         return None
 
@@ -266,7 +266,7 @@ class ServoOff(StatementRule):
     def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
         return self.unsupported(context, "TORQUE") or write(file, statement, "TORQUE", "0")
 
-    def caveat(self, statement: n.KeywordStatement) -> str | None:
+    def caveat(self, context: Context, statement: n.KeywordStatement) -> str | None:
         return "TORQUE = 0 suits a current (torque) amplifier; a velocity drive needs DRIVEENABLE = 0 instead"
 
 

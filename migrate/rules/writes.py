@@ -226,7 +226,7 @@ class CurrentLimit(StatementRule):
     evidence = "spec S-CURR; v4:8712, v4:444-445, v4:9015-9016"
     keywords = frozenset({"CURRLIMIT"})
 
-    def caveat(self, statement: n.KeywordStatement) -> str | None:
+    def caveat(self, context: Context, statement: n.KeywordStatement) -> str | None:
         if any(isinstance(value, n.Number) and value.value < 1 for value in statement.values or ()):
             return "CURRLIMIT below v3's 1..100: the v4 limit 0 holds the output at 0 V"  # v3:7073, v4:8815
         return None
@@ -269,7 +269,7 @@ class Ramp(StatementRule):
     evidence = "spec S-RAMP; v3:11212; v4:15444, v4:2837-2839"
     keywords = frozenset({"RAMP"})
 
-    def caveat(self, statement: n.KeywordStatement) -> str | None:
+    def caveat(self, context: Context, statement: n.KeywordStatement) -> str | None:
         if all(isinstance(value, n.Number) and value.value == 0 for value in statement.values or ()):
             return None  # no smoothing in either version
         return "SRAMP shapes the ramps differently from v3 RAMP: check the motion"  # spec S-RAMP
@@ -326,7 +326,9 @@ class Terminal(StatementRule):
     the bit constants _tmLCD1 (8) and _tmRS232 (1); +4 (VT52 mode) has no v4 equivalent.
     The v3 LCD was the keypad/display on the controller's own bus; v4's _tmLCD1 is a CAN
     keypadNode, which reaches no display until KEYPADNODE gives its node (v4:2073-2078), so
-    a TERMINAL naming it gets a manual item (X-KEYPAD)."""
+    a TERMINAL naming it gets a manual item (X-KEYPAD). So does _tmRS232 on a controller without a
+    serial port (the NextMove PC cards, whose host terminal is the dual port RAM, v4:16693-16697):
+    v4 ignores a channel the controller lacks (v4:2028-2029)."""
 
     id = "S-TERM"
     rule_class = RuleClass.SEMI
@@ -340,10 +342,19 @@ class Terminal(StatementRule):
             return Refusal("TERM value is not 1, 2 or 3 (VT52 mode and computed values have no v4 equivalent)")
         return f"{like(statement.keyword.spelling, 'TERMINAL')} = {_TERMINALS[code]}"
 
-    def caveat(self, statement: n.KeywordStatement) -> str | None:
-        if _term_code(statement) in (1, 3):  # _lcd, _both
-            return "the v3 LCD is a CAN keypadNode in v4: give its node with KEYPADNODE._tmLCD1 = <node> (v4:2073-2078)"
-        return None
+    def caveat(self, context: Context, statement: n.KeywordStatement) -> str | None:
+        code = _term_code(statement)
+        caveats = []
+        if code in (1, 3):  # _lcd, _both
+            caveats.append(
+                "the v3 LCD is a CAN keypadNode in v4: give its node with KEYPADNODE._tmLCD1 = <node> (v4:2073-2078)"
+            )
+        if code in (2, 3) and not context.supports("SERIALBAUD"):  # the PC cards: no serial port (v4:15817-15822)
+            caveats.append(
+                f"{context.controller.title} has no RS232 port and v4 ignores a channel the controller lacks "
+                "(v4:2028-2029): its host terminal is the dual port RAM, _tmDPR (v4:16693-16697)"
+            )
+        return "; ".join(caveats) or None
 
 
 def _term_code(statement: n.KeywordStatement) -> int | None:

@@ -86,7 +86,7 @@ _KEYPAD = (
     ],
 )
 def test_terminal_values_become_bits(source: str, expected: str) -> None:
-    assert rewritten("S-TERM", source) == expected
+    assert rewritten("S-TERM", source, controller="nextmove-bx") == expected  # an RS232 port and CAN keypads
 
 
 def test_terminal_vt52_is_flagged() -> None:

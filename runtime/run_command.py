@@ -114,25 +114,28 @@ def execute(  # noqa: PLR0917 - click passes every option as an argument
         raise click.UsageError(f"--host-port: {V3_READS_NO_HOST}")
     try:
         files = [read_source(path) for path in (program, config_path) if path is not None]
+    except OSError as error:
+        _unreadable(error)
+    for file in files:
+        if (binary := file.binary()) is not None:
+            click.echo(f"mint-run: {binary}: not run", err=True)
+            sys.exit(_USAGE_ERROR)
+    source, config = files[0].text, files[1].text if len(files) > 1 else None
+    dialect_chosen = option_chosen(click.get_current_context(), "dialect")
+    # before the scenario is read: an expectation v4 refuses (SUSPEND(0), a MintMT reading) is why the hint is needed
+    if not (quiet or dialect_chosen) and (hint := dialect_hint(str(program), source, Dialect(dialect))) is not None:
+        click.echo(hint, err=True)
+    try:
         scenario = _scenario((*stimulus_paths, *expect_paths), simulated, Dialect(dialect))
         if drives == "enabled":
             scenario = merge(scenario, Scenario(drives=(DrivesEnabled(),)))
     except ScenarioFileError as error:
         _scenario_problems(error)
     except OSError as error:
-        click.echo(f"mint-run: cannot read {error.filename}: {error.strerror or error}", err=True)
-        sys.exit(_USAGE_ERROR)
-    for file in files:
-        if (binary := file.binary()) is not None:
-            click.echo(f"mint-run: {binary}: not run", err=True)
-            sys.exit(_USAGE_ERROR)
-    source, config = files[0].text, files[1].text if len(files) > 1 else None
+        _unreadable(error)
     # keys typed as the run goes: each write shows at once, and no progress bar holds back the prompt's line
     typing = is_terminal() and reads_keys([file.text for file in files], Dialect(dialect))
     progress = progress and not typing
-    dialect_chosen = option_chosen(click.get_current_context(), "dialect")
-    if not (quiet or dialect_chosen) and (hint := dialect_hint(str(program), source, Dialect(dialect))) is not None:
-        click.echo(hint, err=True)
     inputs = dict.fromkeys((*stimulus_paths, *expect_paths), "a scenario file")
     if config_path is not None:
         inputs[config_path] = "the configuration"
@@ -220,6 +223,12 @@ def _configuration(program: Path, config_path: Path | None, *, no_config: bool) 
     except SettingsError as error:
         settings_failed("mint-run", error)
     return other if unit is Unit.PROGRAM else None
+
+
+def _unreadable(error: OSError) -> NoReturn:
+    """A file the run needs (the program, its configuration, a scenario) cannot be read: a usage error."""
+    click.echo(f"mint-run: cannot read {error.filename}: {error.strerror or error}", err=True)
+    sys.exit(_USAGE_ERROR)
 
 
 def _scenario_problems(error: ScenarioFileError) -> NoReturn:

@@ -27,7 +27,7 @@ from mintlang.runtime.simulation import Limits, Stop, StopReason
 from mintlang.runtime.testing.coverage import FileCoverage, Recorder
 from mintlang.runtime.testing.discovery import TestCase, configuration_of
 from mintlang.settings import FileSettings, Overrides, SettingsError
-from mintlang.source import read_source
+from mintlang.source import SourceFile, read_source
 
 
 class Verdict(StrEnum):
@@ -81,31 +81,52 @@ class Options:
     overrides: Overrides = Overrides()  # the command line's layer above the settings file (--no-config)
 
 
+@record
+class _Read:
+    """What a test runs from, read before its scenario: an expectation v4 refuses (a MintMT reading such as
+    ``SUSPEND(0)``) is one reason a program needs its hint, so the hint goes with whatever stops the test after."""
+
+    settings: FileSettings
+    dialect: Dialect
+    program: SourceFile
+    hint: str | None  # the program looks like MintMT, run as v4 by default (``dialect_hint``)
+
+
 def run_case(case: TestCase, options: Options) -> TestResult:
     """Run ``case``; every problem becomes its result, never an exception (it runs in a worker process)."""
     began = time.perf_counter()
     try:
-        return _run(case, options, began)
-    except ScenarioFileError as error:  # a directive or scenario line: the Testing view points at its place
-        place = next((each.place for each in error.errors if each.place), None)
-        return _error(case, str(error), began, place=place, problems=error.errors)
+        read = _read(case, options)
     except (OSError, SettingsError, ValueError) as error:
         return _error(case, str(error), began)
+    if (binary := read.program.binary()) is not None:
+        return _error(case, binary, began)
+    try:
+        return _run(case, options, began, read)
+    except ScenarioFileError as error:  # a directive or scenario line: the Testing view points at its place
+        place = next((each.place for each in error.errors if each.place), None)
+        return _error(case, str(error), began, place=place, problems=error.errors, hint=read.hint)
+    except (OSError, SettingsError, ValueError) as error:
+        return _error(case, str(error), began, hint=read.hint)
 
 
-def _run(case: TestCase, options: Options, began: float) -> TestResult:
+def _read(case: TestCase, options: Options) -> _Read:
+    """The settings, dialect and program of ``case``; a binary program has no text to hint about."""
     settings = whole_settings(case.program, options.overrides)
     dialect = options.dialect or settings.dialect.value
+    program = read_source(case.program)
+    chosen = options.dialect is not None or settings.dialect.chosen
+    hint = None if chosen or program.binary() is not None else dialect_hint(str(case.program), program.text, dialect)
+    return _Read(settings, dialect, program, hint)
+
+
+def _run(case: TestCase, options: Options, began: float, read: _Read) -> TestResult:
+    settings, dialect, program, hint = read.settings, read.dialect, read.program, read.hint
     controller = options.controller or _configured_controller(settings, dialect)
     simulated = machine(controller, dialect)
     scenario = load_scenario(case.scenario, simulated, dialect) if case.scenario else Scenario()
     if options.drives_enabled:
         scenario = merge(scenario, Scenario(drives=(DrivesEnabled(),)))
-    program = read_source(case.program)
-    if (binary := program.binary()) is not None:
-        return _error(case, binary, began)
-    chosen = options.dialect is not None or settings.dialect.chosen
-    hint = None if chosen else dialect_hint(str(case.program), program.text, dialect)
     partner = configuration_of(case.program, settings)
     configuration = read_source(partner).text if partner is not None else None
     files: dict[str, Path] = {"program": case.program}

@@ -74,6 +74,30 @@ def test_the_hint_leaves_the_report_and_the_exit_status_as_an_explicit_v4_gives_
         assert hinted.stdout == explicit.stdout.replace("".join(promised), "")
 
 
+# SUSPEND reads back in MintMT (MT-16); in v4 it is a command (000:17775), so the expectation is refused
+SUSPENDED_EXPECTED = "' cell controller\nDim count\n"
+DIRECTIVE = "REM @expect SUSPEND(0) = 0\n"
+SCENARIO = '[[expect]]\nwhat = "SUSPEND(0)"\nequals = 0\n'
+
+
+@pytest.mark.parametrize("tool", ["mint-run", "mint test"])
+@pytest.mark.parametrize("written", ["in the program", "in a scenario file"])
+def test_an_expectation_v4_refuses_still_gets_the_hint(tool: str, written: str, tmp_path: Path):
+    if written == "in the program":
+        path, arguments = program(tmp_path, SUSPENDED_EXPECTED + DIRECTIVE), ()
+    else:
+        path = program(tmp_path, SUSPENDED_EXPECTED)
+        scenario = tmp_path / "cell.scenario.toml"  # mint test's scenario beside the program; mint-run's --expect
+        scenario.write_text(SCENARIO, encoding="utf-8")
+        arguments = ("--expect", scenario) if tool == "mint-run" else ()
+    result = invoke(tool, path, *arguments)
+    assert "SUSPEND is a command" in result.output
+    assert result.exit_code != 0
+    assert hints(result) == [
+        f"hint: {path} looks like MintMT (a ' comment on line 1) but was read as Mint v4: run with --dialect mintmt"
+    ]
+
+
 @pytest.mark.parametrize("tool", TOOLS)
 def test_a_v4_program_gets_no_hint(tool: str, tmp_path: Path):
     result = invoke(tool, program(tmp_path, V4))

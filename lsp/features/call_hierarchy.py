@@ -1,14 +1,15 @@
 """Call hierarchy: who jumps to a subroutine, and where a subroutine or the main program jumps to.
 
 The parts of a file call one another: the main program (from the top to the
-first label), each labelled section (from its label to the next, as in the
-outline) and each of MintMT's Event and Startup blocks, which the program never
-runs into (MT-7): a jump in one is the block's, wherever it stands. A GOSUB or
-a GOTO is a call from the part it stands in to the label it names; one written
-in a macro's text calls from where the macro is used, where it runs. Event
-handlers have no caller in the program: the controller calls them, which their
-detail says. Labels are per file, so the hierarchy stays in the file it starts
-from.
+first label), each labelled section (from its label to the next) and each of
+MintMT's Event and Startup blocks, which the program never runs into (MT-7): a
+jump in one is the block's, wherever it stands. An item spans its part's
+written lines, as the outline does: not the blank lines after it, nor the REM
+lines that introduce the next label. A GOSUB or a GOTO is a call from the part
+it stands in to the label it names; one written in a macro's text calls from
+where the macro is used, where it runs. Event handlers have no caller in the
+program: the controller calls them, which their detail says. Labels are per
+file, so the hierarchy stays in the file it starts from.
 """
 
 from __future__ import annotations
@@ -18,7 +19,16 @@ from collections.abc import Iterator
 from lsprotocol import types
 
 from mintlang.diagnostics import Span
-from mintlang.lsp.features.symbols import MintmtBlock, Section, jump_statements, label_kind, mintmt_blocks, sections
+from mintlang.lsp.features.symbols import (
+    MintmtBlock,
+    Section,
+    after_line,
+    jump_statements,
+    label_kind,
+    last_written,
+    mintmt_blocks,
+    sections,
+)
 from mintlang.lsp.occurrences import symbol_at
 from mintlang.lsp.server import MintServer
 from mintlang.lsp.workspace import Snapshot
@@ -31,10 +41,12 @@ MAIN = "main program"
 @record
 class Part:
     """The main program (``block`` and ``section`` None), a labelled section (offsets from its first line to the
-    next part's) or a MintMT block (its own span)."""
+    next part's) or a MintMT block (its own span). ``written`` is where its last written line ends: blank and
+    comment lines up to the next part are in it (a cursor there is in it) but not shown as its own."""
 
     start: int
     end: int
+    written: int
     block: MintmtBlock | None = None
     section: Section | None = None
 
@@ -63,13 +75,17 @@ def parts(snapshot: Snapshot) -> list[Part]:
     """The MintMT blocks, first, since the main program's or a section's offsets may hold one; then the parts of
     the snapshot's file in order, the main program only when something comes before a label."""
     positions = snapshot.positions
-    blocks = [Part(block.span.start, block.span.end, block) for block in mintmt_blocks(snapshot)]
+    blocks = [Part(block.span.start, block.span.end, block.span.end, block) for block in mintmt_blocks(snapshot)]
     labelled = sections(snapshot)
     starts = [positions.line_start(section.first_line) for section in labelled]
     ends = [*starts[1:], len(snapshot.document.source)] if starts else []
-    found = [Part(start, end, section=section) for section, start, end in zip(labelled, starts, ends, strict=True)]
+    found = [
+        Part(start, end, after_line(snapshot, section.last_line), section=section)
+        for section, start, end in zip(labelled, starts, ends, strict=True)
+    ]
     top = starts[0] if starts else len(snapshot.document.source)
-    return [*blocks, Part(0, top), *found] if top > 0 or not found else [*blocks, *found]
+    main = Part(0, top, after_line(snapshot, last_written(snapshot, 0, positions.position(top).line - 1)))
+    return [*blocks, main, *found] if top > 0 or not found else [*blocks, *found]
 
 
 def jumps(snapshot: Snapshot) -> Iterator[Jump]:
@@ -84,7 +100,7 @@ def _containing(found: list[Part], offset: int) -> Part | None:
 
 def item(snapshot: Snapshot, part: Part) -> types.CallHierarchyItem:
     positions = snapshot.positions
-    whole = positions.range(Span(part.start, part.end))
+    whole = positions.range(Span(part.start, part.written))
     data = {"uri": snapshot.uri, "label": part.key}
     if part.block is not None:
         event = part.block.is_event

@@ -3,8 +3,8 @@
 A word, then each expression around it, the statement, the logical line (a
 DIM list continued over lines is one), each block that encloses the line (its
 opener to its closer), the labelled part it is in (the main program or a
-subroutine, as in the outline), and the whole file. Equal ranges are given
-once, so every step grows the selection.
+subroutine, to its last written line, as in the outline), and the whole file.
+Equal ranges are given once, so every step grows the selection.
 """
 
 from __future__ import annotations
@@ -75,7 +75,7 @@ def spans(snapshot: Snapshot, offset: int) -> list[Span]:
         found += _within_line(line, offset)
         found.append(_line_content(snapshot, line))
         found += _blocks(snapshot, line.number)
-    found += [Span(part.start, part.end) for part in parts(snapshot) if part.start <= offset < part.end]
+    found += [Span(part.start, part.written) for part in parts(snapshot) if part.start <= offset <= part.written]
     found.append(Span(0, len(snapshot.document.source)))
     nested: list[Span] = []
     for span in found:

@@ -88,7 +88,7 @@ def sections(snapshot: Snapshot) -> list[Section]:
         Section(
             label,
             first,
-            _last_written(snapshot, first, last),
+            last_written(snapshot, first, last),
             event_of(label.name, dialect) is not None,
             label.identity in called or not label.references,
         )
@@ -96,7 +96,7 @@ def sections(snapshot: Snapshot) -> list[Section]:
     ]
 
 
-def _last_written(snapshot: Snapshot, first: int, last: int) -> int:
+def last_written(snapshot: Snapshot, first: int, last: int) -> int:
     """``last`` moved up over blank and comment-only lines (REM, and MintMT's ``'``): the gap before the next
     section, and the comment that introduces it, are not part of this one."""
     positions, end = snapshot.positions, len(snapshot.document.source)
@@ -107,6 +107,12 @@ def _last_written(snapshot: Snapshot, first: int, last: int) -> int:
             break
         last -= 1
     return last
+
+
+def after_line(snapshot: Snapshot, line: int) -> int:
+    """The offset just after the 0-based ``line`` and its line break (the end of the text after the last line)."""
+    positions = snapshot.positions
+    return positions.line_start(line + 1) if line + 1 < positions.line_count else len(snapshot.document.source)
 
 
 def _returning_lines(snapshot: Snapshot) -> list[int]:
@@ -169,10 +175,9 @@ def _label_symbol(
     """The outline's entry of a label, spanning its lines to ``last_line`` (0-based) and holding ``children``."""
     positions = snapshot.positions
     definition = section.symbol.definitions[0]
-    end = positions.line_start(last_line + 1) if last_line + 1 < positions.line_count else None
     whole = types.Range(
         start=types.Position(line=section.first_line, character=0),
-        end=positions.position(end) if end is not None else positions.position(len(snapshot.document.source)),
+        end=positions.position(after_line(snapshot, last_line)),
     )
     kind, detail = label_kind(section)
     return types.DocumentSymbol(

@@ -65,9 +65,11 @@ class PauseForKey(Rule):
     evidence = "v3:2211-2223; v4:15013, v4:1680-1693"
 
     def apply(self, context: Context) -> Iterator[Action]:
-        for file, _, statement in context.statements(n.Pause):
-            if type(statement) is n.Pause and statement.condition is None:
-                start, end = statement.span
+        for file, line in context.placed(n.Pause):  # as parsed: most PAUSEs have a condition, none needs a copy
+            for statement in n.flatten_statements(line.syntax.statements):
+                if type(statement) is not n.Pause or statement.condition is not None:
+                    continue
+                start, end = line.span(statement.span)
                 written = file.text[start : start + len("PAUSE")]  # INKEY in the same case: pause inkey
                 yield self.replace(file, Span(end, end), " " + like(written, "INKEY"))
 
@@ -77,7 +79,8 @@ class Baud(StatementRule):
     sets it with ``SERIALBAUD.<terminal>`` from a short list of rates (v4:15817-15866). 9600
     is the only rate the v4 table marks for the RS232 port of every controller, so only
     ``BAUD = 9600`` is rewritten (to the RS232 port, as the v4 example does); any other
-    rate, and a computed one, is a manual item. v4 keeps the rate in EEPROM."""
+    rate, and a computed one, is a manual item. v4 keeps the rate in EEPROM. The NextMove PC cards
+    have no serial port: the item says to remove the BAUD."""
 
     id = "S-BAUD"
     rule_class = RuleClass.SEMI
@@ -88,9 +91,11 @@ class Baud(StatementRule):
     def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
         values = statement.values or ()
         value = values[0] if len(values) == 1 else None
-        unsupported = self.unsupported(context, "SERIALBAUD")
-        if unsupported is not None:
-            return unsupported
+        if not context.supports("SERIALBAUD"):  # the PC cards (v4:15817-15822)
+            return Refusal(
+                f"{context.controller.title} has no serial port (SERIALBAUD is not on it): remove the BAUD; "
+                "its host terminal is the dual port RAM, _tmDPR (v4:16693-16697)"
+            )
         if not (isinstance(value, n.Number) and value.value == 9600):
             return Refusal("use SERIALBAUD._tmRS232 = <rate> with a rate the v4:15856-15863 table lists")
         return f"{like(statement.keyword.spelling, 'SERIALBAUD')}._tmRS232 = {file.slice(value.span)}"

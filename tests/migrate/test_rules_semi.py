@@ -341,7 +341,10 @@ def test_baud_9600_is_the_rate_every_serial_controller_has() -> None:
     assert flagged("S-BAUD", "BAUD = b\n", controller="servonode51") == [
         "use SERIALBAUD._tmRS232 = <rate> with a rate the v4 guide section 10.3 SERIALBAUD table lists"
     ]
-    assert flagged("S-BAUD", "BAUD = 9600\n") == ["SERIALBAUD is not available on NextMove PCI"]
+    assert flagged("S-BAUD", "BAUD = 9600\n") == [
+        "NextMove PCI has no serial port (SERIALBAUD is not on it): remove the BAUD; "
+        "its host terminal is the dual port RAM, _tmDPR (v4 guide section 10.3 TERMINAL)"
+    ]
 
 
 def test_dac_counts_become_percent_one_channel_per_write() -> None:

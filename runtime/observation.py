@@ -85,6 +85,8 @@ class Observation:
         access = self.c.table.get(name)
         if name in _CONSUMING:  # reading these changes the controller: look without touching
             return _CONSUMING[name](self.c, int(channel) if channel is not None else None)
+        if access is not None and access.indexed_read is not None and index is not None:  # CONTOURPARAMETER.0(0)
+            return access.indexed_read(int(channel) if channel is not None else None, (int(index),))
         if access is not None and access.read is not None:
             if index is not None:
                 return access.read(int(index))

@@ -20,10 +20,11 @@ from mintlang.runtime.scenario.problems import Invalid
 
 _TARGET = re.compile(
     r"(?P<name>[A-Za-z_][A-Za-z0-9_]*)"
-    r"(?:\.(?P<dot>[0-9]+)|\((?P<indexes>\s*-?[0-9]+\s*(?:,\s*-?[0-9]+\s*)*)\)"
+    r"(?:\.(?P<dot>[0-9]+)(?:\.(?P<index>[0-9]+))?|\((?P<indexes>\s*-?[0-9]+\s*(?:,\s*-?[0-9]+\s*)*)\)"
     r"|\[(?P<axes>\s*[0-9]+\s*(?:,\s*[0-9]+\s*)*)\])?"
 )
 _GLUED_CHANNEL = re.compile(r"[0-9]+$")
+_NOT_A_TARGET = "{written!r} is not a keyword, variable or array element (e.g. POS.0, count, table(3))"
 
 
 @record
@@ -48,7 +49,7 @@ def target(written: str, dialect: Dialect = Dialect.V4) -> Target:
     nothing readable."""
     found = _TARGET.fullmatch(written.strip())
     if found is None:
-        raise Invalid(f"{written!r} is not a keyword, variable or array element (e.g. POS.0, count, table(3))")
+        raise Invalid(_NOT_A_TARGET.format(written=written))
     name, indexes = found["name"].upper(), found["indexes"]
     suffix = "" if indexes is None else "(" + ",".join(str(int(i)) for i in indexes.split(",")) + ")"
     if dialect is Dialect.V3:
@@ -56,6 +57,10 @@ def target(written: str, dialect: Dialect = Dialect.V4) -> Target:
         return _v3_target(found["name"], name, _dot(found, v3_keyword), suffix)
     db = database()
     keyword = (db.mintmt_keywords.get(name) if dialect is Dialect.MINTMT else None) or db.lookup(name)
+    if keyword is not None and keyword.indices:
+        return _indexed(keyword, found)
+    if found["index"] is not None:  # a second dot is a MintMT keyword's index (CONTOURPARAMETER.0.0) only
+        raise Invalid(_NOT_A_TARGET.format(written=written))
     dot = _dot(found, keyword)
     if keyword is None:
         return _variable(found["name"], name, dot, suffix)
@@ -74,6 +79,22 @@ def target(written: str, dialect: Dialect = Dialect.V4) -> Target:
         return Target(f"{keyword.name}.{int(dot)}{suffix}", every_axis=False)
     every_axis = keyword.addressing is Addressing.AXIS and not suffix
     return Target(keyword.name + suffix, every_axis)
+
+
+def _indexed(keyword: Keyword, found: re.Match[str]) -> Target:
+    """A MintMT keyword whose brackets give its axis and then its indices, read as the program reads it: one axis
+    and every index, ``CONTOURPARAMETER(0,0)`` or the note's ``CONTOURPARAMETER.0.0`` (004:223; MT-11)."""
+    form = f"{keyword.name}(axis, {', '.join(keyword.indices)})"
+    if not any(row.read for row in keyword.attributes):
+        raise Invalid(f"{keyword.name} is only written, so it is not a value to expect")
+    if found["dot"] is not None:
+        values = [found["dot"]] if found["index"] is None else [found["dot"], found["index"]]
+    else:
+        values = found["indexes"].split(",") if found["indexes"] is not None else []
+    if len(values) != 1 + len(keyword.indices):
+        raise Invalid(f"{keyword.name} reads one axis and its {', '.join(keyword.indices)}: write {form}")
+    axis, *indices = (int(value) for value in values)
+    return Target(f"{keyword.name}.{axis}({','.join(map(str, indices))})", every_axis=False)
 
 
 def _on_this_node(keyword: Keyword, indexes: str | None) -> None:

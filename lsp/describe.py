@@ -167,18 +167,42 @@ def _and(names: tuple[str, ...]) -> str:
     return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} and {names[-1]}"
 
 
-def constant(name: str, dialect: Dialect = Dialect.V4) -> str | None:
-    """Markdown for hover: a reserved word's use, or a constant's value and what it is."""
+def _refused(name: str, dialect: Dialect, controller: Controller | None) -> str | None:
+    """Where the keyword whose entry defines the constant refuses it on ``controller``, as both tools hold a write
+    of it there (``_cfSTEPPER``: CONFIG takes 0, 1, 5 on NextMove BX, 000:8431-8443); None where it takes it."""
+    if controller is None or not dialect.modern:
+        return None
+    record = database().constants_of(dialect).get(name.upper())
+    word = database().keywords_of(dialect).get(record.keyword) if record is not None and record.keyword else None
+    row = supplements.attributes_for(word, controller, dialect) if word is not None else None
+    if record is None or word is None or row is None or not row.write:
+        return None
+    held = supplements.narrowed(word.name, row.range, controller)
+    if held is None or held.holds(record.value):
+        return None
+    return f"not a value {word.name} accepts on {profile(controller).title} ({held.text})"
+
+
+def constant(name: str, dialect: Dialect = Dialect.V4, controller: Controller | None = None) -> str | None:
+    """Markdown for hover: a reserved word's use, or a constant's value and what it is (and where its keyword
+    refuses it on ``controller``)."""
     if name.upper() in _RESERVED:
         return f"**{name.upper()}** — {_RESERVED[name.upper()]}"
     facts = _constant_facts(name, dialect)
-    return f"**{facts[0]}** = `{facts[1]}` — {facts[2]}" if facts is not None else None
+    if facts is None:
+        return None
+    refused = _refused(name, dialect, controller)
+    note = f"\n\n{refused[0].upper()}{refused[1:]}" if refused is not None else ""
+    return f"**{facts[0]}** = `{facts[1]}` — {facts[2]}{note}"
 
 
-def constant_detail(name: str, dialect: Dialect) -> str | None:
+def constant_detail(name: str, dialect: Dialect, controller: Controller | None = None) -> str | None:
     """Plain text beside a constant offered by completion (an item's detail is not Markdown)."""
     facts = _constant_facts(name, dialect)
-    return f"= {facts[1]} — {facts[2]}" if facts is not None else None
+    if facts is None:
+        return None
+    refused = _refused(name, dialect, controller)
+    return f"= {facts[1]} — {facts[2]}" + (f"; {refused}" if refused is not None else "")
 
 
 def _where(snapshot: Snapshot, unit: Unit, offset: int) -> str:

@@ -351,12 +351,13 @@ def event_names(snapshot: Snapshot) -> list[str]:
     return names
 
 
-def _constants(dialect: Dialect) -> Iterator[types.CompletionItem]:
-    """The dialect's own predefined constants: v3's are its own (001:1309-1336), none of them v4's."""
+def _constants(dialect: Dialect, controller: Controller) -> Iterator[types.CompletionItem]:
+    """The dialect's own predefined constants: v3's are its own (001:1309-1336), none of them v4's; each detail
+    says where its keyword refuses it on ``controller``."""
     db = database()
     records = db.v3_constants if dialect is Dialect.V3 else db.constants_of(dialect)
     for name in (constant.name for constant in records.values()):
-        detail = describe.constant_detail(name, dialect)
+        detail = describe.constant_detail(name, dialect, controller)
         yield types.CompletionItem(label=name, kind=types.CompletionItemKind.EnumMember, detail=detail)
 
 
@@ -616,7 +617,7 @@ def complete(
     if previous is not None and (previous.kind in _NOTHING_AFTER or previous.text.endswith(".")):
         return []  # a new name, a complete statement, or the decimals of a number
     if partial is not None and partial.text.startswith("_"):
-        return list(_constants(snapshot.settings.dialect))
+        return list(_constants(snapshot.settings.dialect, snapshot.settings.controller))
     if previous is not None and previous.kind in (TokenKind.GOSUB, TokenKind.GOTO):
         return list(_labels(snapshot))
     if _at_a_name_filled(before):

@@ -59,7 +59,7 @@ def hover_text(snapshot: Snapshot, offset: int) -> tuple[str, int, int] | None:
     if snapshot.settings.dialect is Dialect.MINTMT and (block := mintmt_words.hover(snapshot.document, token)):
         text = block
     elif token.kind is TokenKind.CONSTANT:
-        text = describe.constant(token.text, snapshot.settings.dialect)
+        text = describe.constant(token.text, snapshot.settings.dialect, snapshot.settings.controller)
     elif token.kind in (TokenKind.NAME, TokenKind.LABEL):
         text = None
     elif snapshot.settings.dialect is Dialect.V3:

@@ -58,3 +58,10 @@ def test_lines_that_give_each_listed_axis_what_is_meant_are_not_reported(line: s
 
 def test_v3_gives_its_values_the_same_way() -> None:
     assert len(_warnings("SPEED[0,1] = 10\n", Dialect.V3)) == 1
+
+
+def test_the_axes_of_a_macro_for_an_axis_list_are_named_by_number() -> None:
+    # A macro for an axis list stands for the list where it is written (000:1486-1498, ``SF.g1 = 10;``):
+    # the axes it gives are 0, 1 and 2, not three times the macro's name.
+    (warning,) = _warnings("DEFINE allAxes = [0,1,2]\nDRIVEENABLE.allAxes = 1\n")
+    assert "DRIVEENABLE.allAxes = 1 sets axis 0 only, and axes 1 and 2 keep theirs;" in warning.message

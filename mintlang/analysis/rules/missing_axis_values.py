@@ -21,6 +21,12 @@ from mintlang.syntax import nodes as n
 _ONE_POSITION = CIRCLES | VECTORS
 
 
+def _named(text: str, axis: n.Expression) -> str:
+    """An axis as the message names it: a number by its digits, which a macro for an axis list (``SF.g1``,
+    000:1486-1489) gives where the text has only the macro's name, once for every axis."""
+    return axis.text if type(axis) is n.Number else text[axis.span.start : axis.span.end]
+
+
 def each_line(scope: LineScope) -> Iterator[Finding]:
     text = scope.syntax.text
     for statement in scope.facts.statements:
@@ -32,7 +38,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
             continue
         if keyword.keyword in _ONE_POSITION:
             continue
-        first, *others = (text[axis.span.start : axis.span.end] for axis in selector.axes if axis is not None)
+        first, *others = (_named(text, axis) for axis in selector.axes if axis is not None)
         if not others or len(others) + 1 != len(selector.axes):
             continue
         value = values[0]

@@ -77,7 +77,8 @@ class InputMask(Rule):
     * ``IMASK = k`` (k a literal 0..255) -> ``IMASK = k | <all ones above bit 7>``, with k's bits of
       inputs that would hold back a handler cleared (``inputs_holding_back_handlers``);
     * ``IMASK = IMASK AND k`` -> ``IMASK = IMASK AND (k | <all ones above bit 7>)``;
-    * ``IMASK = IMASK OR e`` is kept (it only sets bits);
+    * ``IMASK = IMASK OR e`` is kept (it only sets bits), but for the bits of inputs that would
+      hold back a handler, cleared from a literal e;
     * a read of IMASK anywhere else -> ``(IMASK & 255)``, the v3 value.
 
     The ones above bit 7 come from the v4 range table of the target controller; any other
@@ -122,6 +123,8 @@ class InputMask(Rule):
         if isinstance(value, n.Binary) and value.operator in ("AND", "OR"):
             own, other = (value.left, value.right) if _plain(value.left, "IMASK") else (value.right, value.left)
             if _plain(own, "IMASK") and value.operator == "OR":
+                if isinstance(other, n.Number) and _byte(other) and int(other.value) & holding:
+                    yield self.replace(file, other.span, f"({file.slice(other.span)} & 0x{255 & ~holding:X})")
                 return
             if _plain(own, "IMASK") and (_widened(other, high) or _keeps(other, high)):
                 return

@@ -47,3 +47,9 @@ def test_an_imask_the_program_writes_leaves_those_inputs_off() -> None:
     # v3's IMASK = 000001111 kept #IN0..#IN3 on (001:8896-8902); only #IN3 exists, so inputs 0..2 stay off
     result = migrate("IMASK = 000001111\n" + PROGRAM, only=["S-IMASK"])
     assert result.text.startswith("IMASK = (000001111 & 0xF8) | 0xFFF00\n")
+
+
+def test_an_imask_the_program_ors_in_leaves_those_inputs_off() -> None:
+    # the v3 guide enables an input with IMASK = IMASK OR 0100 (001:4222); input 2 has no handler here
+    result = migrate("IMASK = IMASK OR 0100\n" + PROGRAM, only=["S-IMASK"])
+    assert result.text.startswith("IMASK = IMASK OR (0100 & 0xF8)\n")

@@ -94,7 +94,8 @@ def _indexed(keyword: Keyword, found: re.Match[str]) -> Target:
     if len(values) != 1 + len(keyword.indices):
         raise Invalid(f"{keyword.name} reads one axis and its {', '.join(keyword.indices)}: write {form}")
     axis, *indices = (int(value) for value in values)
-    return Target(f"{keyword.name}.{axis}({','.join(map(str, indices))})", every_axis=False)
+    listed = ",".join(map(str, indices))
+    return Target(f"{keyword.name}.{axis}({listed})", every_axis=False, shown=f"{keyword.name}({axis},{listed})")
 
 
 def _on_this_node(keyword: Keyword, indexes: str | None) -> None:

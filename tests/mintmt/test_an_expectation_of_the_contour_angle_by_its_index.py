@@ -28,7 +28,8 @@ def test_the_program_s_expectations_read_the_angle_of_each_axis() -> None:
 
 @pytest.mark.parametrize("written", ["CONTOURPARAMETER(1,0)", "contourparameter.1.0", "CONTOURPARAMETER( 1 , 0 )"])
 def test_the_axis_then_the_index_however_written(written: str) -> None:
-    assert target(written, Dialect.MINTMT) == Target("CONTOURPARAMETER.1(0)", every_axis=False)
+    named = target(written, Dialect.MINTMT)
+    assert named == Target("CONTOURPARAMETER.1(0)", every_axis=False, shown="CONTOURPARAMETER(1,0)")
 
 
 @pytest.mark.parametrize(

@@ -15,10 +15,11 @@ from mintlang.diagnostics import Span
 from mintlang.lsp.lookup import token_index
 from mintlang.lsp.workspace import Snapshot
 from mintlang.records import record
+from mintlang.semantic.index import NameUse, line_facts
 from mintlang.semantic.symbols import Occurrence, Symbol, SymbolKind, SymbolTable
 from mintlang.semantic.units import Unit
 from mintlang.syntax.nodes import identity
-from mintlang.syntax.parser import Document
+from mintlang.syntax.parser import Document, parse
 from mintlang.syntax.tokens import TRIVIA, TokenKind, in_a_word
 
 _JUMPS = frozenset({TokenKind.GOSUB, TokenKind.GOTO})
@@ -46,12 +47,25 @@ class _Mention:
     label: bool  # the target of a GOSUB or GOTO, else a variable, array or macro
 
 
+def _writes_in(document: Document, body: Span) -> frozenset[int]:
+    """Where the names a macro's text writes start (assigned, a FOR's counter, an INPUT's target): the text
+    read as a line of its own, as it runs where the macro is used (000:1452-1459)."""
+    alone = parse(document.source[body.start : body.end], document.dialect, controller=document.context.controller)
+    return frozenset(
+        body.start + line.span(event.name.span).start
+        for line in alone.placed
+        for event in line_facts(Unit.PROGRAM, line).names
+        if event.use is NameUse.WRITE
+    )
+
+
 def _mentions(unit: Unit, document: Document, offset: int | None = None) -> Iterator[_Mention]:
     """The user names written inside the bodies of this file's macros (of the body at ``offset``, if given)."""
     for definition in document.definitions:
         body = definition.body_span
         if body is None or (offset is not None and not body.start <= offset <= body.end):
             continue
+        writes = _writes_in(document, body)
         tokens = document.tokens_in(body.start, body.end)
         index = max(token_index(tokens, body.start), 0)
         previous: TokenKind | None = None
@@ -60,7 +74,7 @@ def _mentions(unit: Unit, document: Document, offset: int | None = None) -> Iter
             label = previous in _JUMPS
             named = token.kind in _LABEL_REFERENCES if label else token.kind is TokenKind.NAME
             if named and token.start >= body.start:
-                occurrence = Occurrence(unit, Span(token.start, token.end), token.text, True)
+                occurrence = Occurrence(unit, Span(token.start, token.end), token.text, True, token.start in writes)
                 yield _Mention(occurrence, label)
             if token.kind not in TRIVIA:
                 previous = token.kind

@@ -126,7 +126,7 @@ def _format_lines(seed: Seed, start: int, end: int) -> tuple[str, ...]:
     inside = False
     for number in range(start, end):
         text = _LATEX.sub(r"\1", seed.stripped(number)).strip("`$ ").replace("*", "")
-        if text.startswith("Format:"):
+        if text.startswith("Format:") or text == "Format":  # RAMP's heading has no colon (001:11204)
             inside = True
         elif inside and (_TABLE_HEADER.match(text) or text.startswith(("Example", "See also"))):
             break

@@ -1,4 +1,4 @@
-"""The motion keywords beyond lines and jogs (homing, circles, following, cams), each in its own module.
+"""The motion keywords beyond lines and jogs (homing, circles, following, cams, feedrates), each in its own module.
 
 Each entry registers its keywords on the table and drives the axes through
 ``Motion``; the simulator calls every entry once when it builds a controller.
@@ -13,6 +13,7 @@ from mintlang.runtime.motion import (
     cams,
     circles,
     contouring,
+    feedrate,
     flying,
     following,
     homing,
@@ -31,6 +32,7 @@ EXTENSIONS: tuple[Extension, ...] = (
     incremental.register,
     offset.register,
     contouring.register,
+    feedrate.register,
     master.register,
     following.register,
     flying.register,

@@ -8,7 +8,7 @@ monitors.
 
 from __future__ import annotations
 
-from mintlang.runtime.dialects.mintmt import buffer_size, contouring, feedrate, identifiers, outputs, triggering
+from mintlang.runtime.dialects.mintmt import buffer_size, contouring, identifiers, outputs, triggering
 from mintlang.runtime.dialects.mintmt.buffer_low import BufferLowEvent
 from mintlang.runtime.dialects.mintmt.output_moves import OutputMoves
 from mintlang.runtime.dialects.mintmt.suspend import Suspension
@@ -26,7 +26,6 @@ def install(table: KeywordTable, motion: Motion, io: DigitalIO, events: Events) 
     contouring.install(table)
     outputs.install(table)
     identifiers.install(table, motion)
-    feedrate.install(table, motion)
     Suspension(motion).register(table)
     buffer_low = BufferLowEvent(motion, events)
     buffer_low.register(table)

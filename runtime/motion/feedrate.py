@@ -1,13 +1,15 @@
-"""FEEDRATE, FEEDRATEMODE and FEEDRATEOVERRIDE: a slew speed kept with each move (004:250-280, MT-15).
+"""FEEDRATE, FEEDRATEMODE and FEEDRATEOVERRIDE: a slew speed kept with each move, on the NextMoves.
 
-The v4 guide gives the model (000:16186-16230): SPEED and FEEDRATE are one
-slew speed written two ways. In speed mode (``FEEDRATEMODE`` 0, at power-up)
-every move runs at the master's SPEED in force, and a change reaches the move
-in progress; in feedrate mode (``_frFEEDRATE``) each MOVE, VECTOR or CIRCLE
-keeps the speed in force when it was loaded. ``FEEDRATEOVERRIDE`` is a
-percentage of SPEED for the moves that keep none. The other bits of
-``FEEDRATEMODE`` (accelerations, jerks, fast traverse) are named by the note
-without their values: they are not simulated.
+The v4 guide gives the model (000:16186-16230, 3300-3305; the keywords are
+NextMove's, 000:17611-17613), MintMT's notes the same (004:250-280, MT-15):
+SPEED and FEEDRATE are one slew speed written two ways. In speed mode
+(``FEEDRATEMODE`` 0, at power-up) every move runs at the master's SPEED in
+force, and a change reaches the move in progress; in feedrate mode (1,
+MintMT's ``_frFEEDRATE``, MT-3) each MOVE, VECTOR or CIRCLE keeps the speed
+in force when it was loaded. ``FEEDRATEOVERRIDE`` is a percentage of SPEED
+for the moves that keep none. The other bits of ``FEEDRATEMODE``
+(accelerations, jerks, fast traverse) are named by the MintMT note without
+their values, and by the v4 guide not at all: they are not simulated.
 """
 
 from __future__ import annotations
@@ -21,7 +23,7 @@ SPEED_MODE = 0
 FEEDRATE_MODE = 1  # _frFEEDRATE (MT-3)
 
 
-def install(table: KeywordTable, motion: Motion) -> None:
+def register(table: KeywordTable, motion: Motion) -> None:
     speed = table.get("SPEED")
     assert speed is not None and speed.read is not None and speed.write is not None, "the motion registers SPEED"
     table.register("FEEDRATE", read=speed.read, write=speed.write)
@@ -32,7 +34,7 @@ def install(table: KeywordTable, motion: Motion) -> None:
     def write_mode(channel: int | None, value: float) -> None:
         axis = motion.axis(channel)
         if value not in (SPEED_MODE, FEEDRATE_MODE):
-            raise NotSimulated("FEEDRATEMODE", "bits but _frFEEDRATE, whose values the notes do not give")
+            raise NotSimulated("FEEDRATEMODE", "bits but _frFEEDRATE, whose values the guides do not give")
         axis.store_feedrate = value == FEEDRATE_MODE
 
     def read_override(channel: int | None) -> float:

@@ -10,10 +10,11 @@ would otherwise loop for ever). A round after which a fixed finding is still
 there (the same code and message as often as before, up to where the last one
 fixed was) is undone and tried again
 without that fix: a declaration that cannot declare its name is not written at
-all, rather than once a round. So is a round after which the text has more
-syntax errors than before, as ruff reverts a fix that introduces one: it is tried
-again without the fixes that add one on their own (all of the round's when only
-together they do), so a guess never leaves the program unreadable to the compiler.
+all, rather than once a round. So is a round after which a line has more syntax
+errors than before, as ruff reverts a fix that introduces one (a syntax error the
+round mends elsewhere does not make up for it): it is tried again without the
+fixes that add one on their own (all of the round's when only together they do),
+so a guess never leaves the program unreadable to the compiler.
 A finding like a fixed one but further on is not the fixed one left in place: the
 round revealed it (the second &HFF of a line the parse reaches once the first is
 mended; the line after an END SUB made RETURN, unreachable too). One that starts

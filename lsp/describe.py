@@ -96,6 +96,8 @@ def v3_keyword(word: V3Keyword) -> str:
     if word.abbreviations:
         title += f" (abbreviation {', '.join(word.abbreviations)})"
     lines = [f"{title} — Mint v3 keyword", ""]
+    if word.formats:
+        lines += ["```mint", *word.formats, "```", ""]
     lines.append(f"- Access: {_access(word.read, word.write, word.command)}")
     if word.addressing is not Addressing.NONE:
         lines.append(f"- Addressing: by {word.addressing.value}")

@@ -1,4 +1,5 @@
-"""Signature help: the manual's formats of the keyword whose operands the cursor is in.
+"""Signature help: the manual's formats of the keyword whose operands the cursor is in (in a v3 file, the v3
+guide's).
 
 The parameters are read from each format itself: the comma-separated items in
 the brackets after a function's name, or after the ``=`` of a keyword written
@@ -18,7 +19,7 @@ from __future__ import annotations
 from lsprotocol import types
 
 from mintlang.dialect import Dialect
-from mintlang.keyworddb.model import Keyword
+from mintlang.keyworddb import database
 from mintlang.lsp.describe import round_brackets
 from mintlang.lsp.lookup import prefix_tokens, significant
 from mintlang.lsp.server import MintServer
@@ -140,7 +141,26 @@ def _parameters(label: str, name: str, callee: Callee) -> list[tuple[int, int]]:
     return _items(label, after, clause if clause >= 0 else len(label))
 
 
-def _signature(word: Keyword, label: str, callee: Callee) -> types.SignatureInformation | None:
+@record
+class _Entry:
+    """A keyword's name, formats and summary as the dialect's guide gives them."""
+
+    name: str
+    formats: tuple[str, ...]
+    summary: str
+
+
+def _entry(spelling: str, settings: Settings) -> _Entry | None:
+    """The entry of the keyword ``spelling`` names: in a v3 file the v3 guide's (v3's AUXDAC is one output,
+    ``AUXDAC = <expr>``: 001:5929, where v4's addresses a channel), else the dialect's own."""
+    if settings.dialect is Dialect.V3:
+        old = database().lookup_v3(spelling)
+        return _Entry(old.name, old.formats, "") if old is not None else None
+    word = settings.keyword(spelling)
+    return _Entry(word.name, word.formats, word.summary) if word is not None else None
+
+
+def _signature(word: _Entry, label: str, callee: Callee) -> types.SignatureInformation | None:
     """The format ``label`` with the operand under the cursor active; None when the format takes no such
     operand: an active parameter past the last means the first to the client (LSP 3.17, SignatureHelp)."""
     parameters = _parameters(label, word.name, callee)
@@ -164,7 +184,7 @@ def signature_help(prefix: str, settings: Settings) -> types.SignatureHelp | Non
     callee = callee_at(significant(prefix_tokens(prefix, settings.dialect)), settings)
     if callee is None:
         return None
-    word = settings.keyword(callee.keyword.text)
+    word = _entry(callee.keyword.text, settings)
     formats = [label for label in word.formats if word.name in label.upper()] if word is not None else []
     if word is None or not formats:
         return None

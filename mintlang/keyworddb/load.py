@@ -219,6 +219,7 @@ def _v3_keyword(raw: dict[str, Any]) -> V3Keyword:
         status=raw["status"],
         migration=_MIGRATIONS[raw["migration"]],
         line=raw["line"],
+        formats=tuple(raw["formats"]),
     )
 
 

@@ -226,6 +226,7 @@ class V3Keyword:
     status: str  # "same", "renamed", "replaced", "removed", "changed"
     migration: MigrationClass
     line: int  # line of the entry in the v3 guide
+    formats: tuple[str, ...] = ()  # as its entry's Format section prints them (v3 and v4 differ: AUXDAC)
 
     @property
     def ticked(self) -> bool:

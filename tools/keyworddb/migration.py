@@ -106,6 +106,7 @@ def build_v3_keywords(
                 status=status,
                 migration=migration,
                 line=entry.line,
+                formats=entry.formats,
             )
         )
     return records

@@ -37,6 +37,7 @@ class V3Entry:
     addressing: Addressing
     line: int
     function: bool = False  # called with its argument in brackets: v = PEEK(<expression>)
+    formats: tuple[str, ...] = ()  # as its Format section prints them
 
 
 def _split_name(token: str) -> tuple[str, str | None]:
@@ -121,16 +122,31 @@ def _returns_value(seed: Seed, start: int, end: int) -> bool:
 _MOVES_THE_CURSOR = "Return the cursor"
 
 
+_PROSE = re.compile(r"(?:\S+\s+){7,}\S*\.(?:\s|$)")
+"""A sentence: the description the guide prints under a format without its heading (AUTO, 001:5833)."""
+
+
 def _format_lines(seed: Seed, start: int, end: int) -> tuple[str, ...]:
+    """The Format section's lines: up to the table, the example, a sentence, or the end of its fenced block
+    (WHILE's description follows the fence, 001:12570-12575)."""
     lines: list[str] = []
-    inside = False
+    inside = fenced = closed = False
     for number in range(start, end):
-        text = _LATEX.sub(r"\1", seed.stripped(number)).strip("`$ ").replace("*", "")
+        raw = seed.stripped(number)
+        text = _LATEX.sub(r"\1", raw).strip("` ").replace("*", "")
+        if len(text) > 1 and text[0] == text[-1] == "$":  # LaTeX's $v = XOUT[bank]$ (001:12795), not $<card>
+            text = text[1:-1].strip()
         if text.startswith("Format:") or text == "Format":  # RAMP's heading has no colon (001:11204)
             inside = True
-        elif inside and (_TABLE_HEADER.match(text) or text.startswith(("Example", "See also"))):
+        elif not inside or not raw:
+            continue
+        elif _TABLE_HEADER.match(text) or text.startswith(("Example", "See also")) or _PROSE.search(text):
             break
-        elif inside and text and not text.startswith("```"):
+        elif raw.startswith("```"):
+            fenced, closed = not fenced, fenced
+        elif closed:
+            break
+        elif text:
             lines.append(text)
     return fmt.clean_formats(lines)
 
@@ -167,7 +183,7 @@ def _entry_records(seed: Seed, line: int, end: int, heading: str) -> list[V3Entr
         flags = (read, write, not (read or write))
     addressing = fmt.addressing(names, formats, [])
     function = _called_with_brackets(names, formats)
-    return [V3Entry(name, abbreviation, *flags, addressing, line, function) for name, abbreviation in keywords]
+    return [V3Entry(name, abbreviation, *flags, addressing, line, function, formats) for name, abbreviation in keywords]
 
 
 def _called_with_brackets(names: tuple[str, ...], formats: tuple[str, ...]) -> bool:

@@ -12,6 +12,14 @@ from mintlang.migrate.rules.spelling import like
 from mintlang.migrate.rules.statements import Refusal, StatementRule
 from mintlang.syntax import nodes as n
 
+DPR_HOST_TERMINAL = "its host terminal is the dual port RAM, _tmDPR (v4:16693-16697)"
+
+
+def has_serial_port(context: Context) -> bool:
+    """Whether the target has a serial port: not the NextMove PC cards, which have no SERIALBAUD
+    (v4:15817-15822) and talk to their host through the dual port RAM (``DPR_HOST_TERMINAL``)."""
+    return context.supports("SERIALBAUD")
+
 
 class BinaryOutput(Rule):
     """v3 ``BINARY`` has PRINT's syntax but prints numbers in binary (v3:6209-6239); v4 has no
@@ -91,11 +99,9 @@ class Baud(StatementRule):
     def rewrite(self, context: Context, file: FileView, statement: n.KeywordStatement) -> str | Refusal | None:
         values = statement.values or ()
         value = values[0] if len(values) == 1 else None
-        if not context.supports("SERIALBAUD"):  # the PC cards (v4:15817-15822)
-            return Refusal(
-                f"{context.controller.title} has no serial port (SERIALBAUD is not on it): remove the BAUD; "
-                "its host terminal is the dual port RAM, _tmDPR (v4:16693-16697)"
-            )
+        if not has_serial_port(context):
+            missing = f"{context.controller.title} has no serial port (SERIALBAUD is not on it)"
+            return Refusal(f"{missing}: remove the BAUD; {DPR_HOST_TERMINAL}")
         if not (isinstance(value, n.Number) and value.value == 9600):
             return Refusal("use SERIALBAUD._tmRS232 = <rate> with a rate the v4:15856-15863 table lists")
         return f"{like(statement.keyword.spelling, 'SERIALBAUD')}._tmRS232 = {file.slice(value.span)}"

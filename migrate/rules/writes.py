@@ -12,6 +12,7 @@ from mintlang.migrate.rules.axes import axis_values, default_axes, selector_axes
 from mintlang.migrate.rules.base import Action, Rule, same_text, selector_text, values_text
 from mintlang.migrate.rules.spelling import like
 from mintlang.migrate.rules.statements import Refusal, StatementRule
+from mintlang.migrate.rules.terminal import DPR_HOST_TERMINAL, has_serial_port
 from mintlang.semantic.v3_declarations import COMMS
 from mintlang.syntax import nodes as n
 
@@ -349,10 +350,10 @@ class Terminal(StatementRule):
             caveats.append(
                 "the v3 LCD is a CAN keypadNode in v4: give its node with KEYPADNODE._tmLCD1 = <node> (v4:2073-2078)"
             )
-        if code in (2, 3) and not context.supports("SERIALBAUD"):  # the PC cards: no serial port (v4:15817-15822)
+        if code in (2, 3) and not has_serial_port(context):  # the PC cards
             caveats.append(
                 f"{context.controller.title} has no RS232 port and v4 ignores a channel the controller lacks "
-                "(v4:2028-2029): its host terminal is the dual port RAM, _tmDPR (v4:16693-16697)"
+                f"(v4:2028-2029): {DPR_HOST_TERMINAL}"
             )
         return "; ".join(caveats) or None
 

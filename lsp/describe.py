@@ -67,8 +67,8 @@ def keyword(word: Keyword, controller: Controller, spelling: str = "", dialect: 
     held = supplements.narrowed(word.name, row.range, controller) if row is not None else None
     if held is None and own is not None and dialect.modern:
         held = supplements.pattern_range(word.name, controller)  # ServoNode 51's rows print none
-    if held is not None:
-        lines.append(f"- Range: {held.text}")
+    if held is not None:  # a Scaled row's range is the value's times its scale factor (000:5647-5649)
+        lines.append(f"- Range: {held.text}" + (", of the value times its scale factor" if row.scaled else ""))
     lines.append(f"- Controllers: {_titles(word.controllers) or 'not listed in the guide'}")
     if not word.available_on(controller):
         lines.append(f"- **Not available on {profile(controller).title}**")

@@ -30,7 +30,7 @@ def confirmed(
     """``changes`` under one annotation, each document at the version it has in the editor (none if closed)."""
     documents = []
     for uri, edits in changes.items():
-        opened = server.workspace.text_documents.get(uri)
+        opened = server.document(uri)
         identifier = types.OptionalVersionedTextDocumentIdentifier(
             uri=uri, version=opened.version if opened is not None else None
         )

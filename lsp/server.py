@@ -13,11 +13,13 @@ import logging
 from collections.abc import Awaitable, Callable, Collection
 from pathlib import Path
 from typing import Any
+from urllib.parse import unquote
 
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException
 from pygls.lsp.server import LanguageServer
 from pygls.uris import to_fs_path
+from pygls.workspace import TextDocument
 
 from mintlang import __version__
 from mintlang.lsp.collector import Collector
@@ -56,12 +58,17 @@ class MintServer(LanguageServer):
         super().report_server_error(error, source)
 
     def opened(self) -> Collection[str]:
-        """The URIs of the documents open in the editor."""
-        return self.workspace.text_documents.keys()
+        """The URIs of the documents open in the editor, as the editor writes them."""
+        return dict.fromkeys(document.uri for document in self.workspace.text_documents.values()).keys()
+
+    def document(self, uri: str) -> TextDocument | None:
+        """The editor's copy of the document ``uri`` names, None when it is not open. pygls keeps them by the
+        unescaped URI; the editor's is escaped (``Press%201``, and ``file:///c%3A/`` from VS Code on Windows)."""
+        return self.workspace.text_documents.get(unquote(uri))
 
     def read_text(self, uri: str) -> str | None:
         """The text of an open document, else of the file on disk; None when there is none."""
-        document = self.workspace.text_documents.get(uri)
+        document = self.document(uri)
         if document is not None:
             return document.source
         path = to_fs_path(uri)
@@ -69,7 +76,7 @@ class MintServer(LanguageServer):
 
     def snapshot(self, uri: str) -> Snapshot | None:
         """The analysis of an open document; None for documents the client never opened."""
-        document = self.workspace.text_documents.get(uri)
+        document = self.document(uri)
         if document is None:
             return None
         return self.analyses.snapshot(uri, document.source, document.version)
@@ -77,7 +84,7 @@ class MintServer(LanguageServer):
     def typing(self, uri: str, position: types.Position) -> tuple[Snapshot, str] | None:
         """The last analysis of a document (maybe a few keystrokes old) and its current line up to
         ``position``: enough for completion and signature help, which must not wait for a new check."""
-        document = self.workspace.text_documents.get(uri)
+        document = self.document(uri)
         if document is None:
             return None
         snapshot = self.analyses.latest(uri) or self.analyses.snapshot(uri, document.source, document.version)

@@ -661,7 +661,8 @@ def register(server: MintServer) -> None:
         if typing is None:
             return types.CompletionList(is_incomplete=False, items=[])
         snapshot, prefix = typing
-        document = server.workspace.text_documents[params.text_document.uri]
+        document = server.document(params.text_document.uri)
+        assert document is not None  # ``typing`` answers only for an open document
         line = params.position.line
         current = snapshot.version == document.version
         blocks = _open_blocks(snapshot, line) if current else _open_blocks_now(snapshot, document.source, line)

@@ -92,7 +92,7 @@ def refresh_all(server: MintServer) -> None:
     if _pulls(server):
         _refresh_pulled(server)
         return
-    for uri in list(server.workspace.text_documents):
+    for uri in list(server.opened()):
         publish(server, uri)
 
 
@@ -158,7 +158,7 @@ class _Debouncer:
     def partner(self, uri: str) -> None:
         """The other file of the application is analysed with this one: refresh it too."""
         _, other = partner(uri, self.server.analyses.settings_for(uri), self.server.opened())
-        if other is None or other not in self.server.workspace.text_documents:
+        if other is None or other not in self.server.opened():
             return
         if _pulls(self.server):
             _refresh_pulled(self.server)

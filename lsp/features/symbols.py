@@ -279,7 +279,7 @@ def register(server: MintServer) -> None:
     def workspace_symbols(params: types.WorkspaceSymbolParams) -> list[types.WorkspaceSymbol]:
         query = params.query.upper()
         found: dict[tuple[str, int, int], types.WorkspaceSymbol] = {}
-        for uri in dict.fromkeys([*server.workspace.text_documents, *_workspace_programs(server)]):
+        for uri in dict.fromkeys([*server.opened(), *_workspace_programs(server)]):
             snapshot = server.snapshot(uri) or _from_disk(server, uri)
             if snapshot is None:
                 continue

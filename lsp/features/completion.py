@@ -32,7 +32,8 @@ from mintlang.analysis.rules.addressing import addressed
 from mintlang.controllers import ChannelRange
 from mintlang.dialect import Dialect
 from mintlang.keyworddb import database
-from mintlang.keyworddb.model import Attributes, Controller, Keyword, KeywordKind
+from mintlang.keyworddb.model import Controller, Keyword, KeywordKind, Use
+from mintlang.keyworddb.usage import refusal
 from mintlang.lsp import describe, mintmt_words
 from mintlang.lsp.features.signature import callee_at
 from mintlang.lsp.features.symbols import gosub_targets, label_kind, sections
@@ -122,11 +123,16 @@ def _keyword_item(word: Keyword, settings: Settings) -> types.CompletionItem:
     return types.CompletionItem(label=word.name, kind=kind, detail=detail, data=data)
 
 
-def _starts_statement(word: Keyword, row: Attributes | None) -> bool:
+def _starts_statement(word: Keyword, settings: Settings) -> bool:
+    """Whether ``word`` may start a statement: a command, or a parameter given a value, as ``mint check`` judges
+    it (``usage.refusal``: ERR, whose every format reads it, is no statement though the guide gives it no table)."""
     if word.kind is KeywordKind.STATEMENT:
         return word.name[:1].isalpha() and word.name not in _CONTINUATIONS
-    return word.kind is KeywordKind.COMMAND or (
-        word.kind is KeywordKind.PARAMETER and (row is None or row.write or row.command)
+    if word.kind is KeywordKind.COMMAND:
+        return True
+    uses = (Use.WRITE, Use.COMMAND)
+    return word.kind is KeywordKind.PARAMETER and any(
+        refusal(word, settings.controller, settings.dialect, use) is None for use in uses
     )
 
 
@@ -276,7 +282,7 @@ def _keywords(snapshot: Snapshot, statement: bool, blocks: OpenBlocks | None = N
             continue
         row = word.attributes_for(controller)
         if statement:
-            valid = _starts_statement(word, row) and _in_its_block(word.name, blocks)
+            valid = _starts_statement(word, snapshot.settings) and _in_its_block(word.name, blocks)
         else:
             valid = (
                 word.kind is KeywordKind.FUNCTION

@@ -125,7 +125,8 @@ GROUP = Group(
             "W122",
             catches="One value after the '=' of a keyword whose brackets list two axes or more, with no ';' "
             "after it (`DRIVEENABLE[0,1,2] = 1`). Two values or more are not reported: the guide's own "
-            "`MOVEA[0,1,2] = 10,20` moves the first two axes only, on purpose.",
+            "`MOVEA[0,1,2] = 10,20` moves the first two axes only, on purpose. Nor are vector and circle moves, "
+            "whose values are one position of all their axes: one value there is error 2001.",
             why="The values go to the listed axes in order, so the one value sets the first axis only and the "
             "others keep what they had; a ';' after the last value is what gives it to every axis left. A "
             "drive left disabled or a speed left at its old value is found only when the machine runs.",

@@ -74,6 +74,26 @@ def test_the_check_runs_again_after_each_change_and_ctrl_c_ends_it(monkeypatch: 
     assert checks == [0, 1]
 
 
+def test_each_check_ends_with_what_its_exit_status_says(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # README, Watching: 0 passed (warnings alone), 1 failed, 2 a file or setting that could not be checked
+    codes = iter([2, 1, 0])
+    states = iter(["first", "second", "second", "third", "third", "third"])
+
+    def sleep(_: float) -> None:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(watching.time, "sleep", sleep)
+    watching.watch(lambda: next(codes), lambda: next(states), clear=False)
+    endings = [line.split("] ", 1)[1] for line in capsys.readouterr().err.splitlines() if "] " in line]
+    assert endings == [
+        "could not check everything; watching for changes (Ctrl-C to stop)",
+        "failed; watching for changes (Ctrl-C to stop)",
+        "passed; watching for changes (Ctrl-C to stop)",
+    ]
+
+
 @pytest.mark.parametrize("extra", [["-"], ["--add-ignore"], ["--show-settings"]])
 def test_it_watches_files_only(tmp_path: Path, extra: list[str]) -> None:
     result = mint_check("--watch", write(tmp_path / "cell.mnt", "PRINT 1\n"), *extra)

@@ -63,10 +63,7 @@ def keyword(word: Keyword, controller: Controller, spelling: str = "", dialect: 
         lines.append(f"- Written here for channel {int(channel)}")
     if row is not None and row.default:
         lines.append(f"- Default: {row.default}")
-    # the range as both tools hold values, on this controller
-    held = supplements.narrowed(word.name, row.range, controller) if row is not None else None
-    if held is None and own is not None and dialect.modern:
-        held = supplements.pattern_range(word.name, controller)  # ServoNode 51's rows print none
+    held = supplements.held_range(word.name, row, controller, dialect)  # as both tools hold values, on this controller
     if held is not None:  # a Scaled row's range is the value's times its scale factor (000:5647-5649)
         lines.append(f"- Range: {held.text}" + (", of the value times its scale factor" if row.scaled else ""))
     lines.append(f"- Controllers: {_titles(word.controllers) or 'not listed in the guide'}")

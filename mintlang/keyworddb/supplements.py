@@ -100,6 +100,16 @@ def narrowed(keyword: str, printed: ValueRange | None, controller: Controller) -
     return NARROWED_ON.get((keyword, controller), NARROWED.get(keyword, printed))
 
 
+def held_range(keyword: str, row: Attributes | None, controller: Controller, dialect: Dialect) -> ValueRange | None:
+    """The range ``mint check``, ``mint-run`` and hover hold ``keyword``'s values to on ``controller``, whose row
+    is ``row``: the row's as ``narrowed`` gives it, or, where the row prints none (ServoNode 51's), the bank of
+    inputs or outputs a pattern keyword covers (``pattern_range``)."""
+    found = narrowed(keyword, row.range if row is not None else None, controller)
+    if found is None and row is not None and dialect.modern:
+        return pattern_range(keyword, controller)
+    return found
+
+
 _WHOLE_WITHOUT_CONSTANTS = frozenset({"BANK", "CAMSTART", "CAMEND", "MASTERCHANNEL", "FOLLOWDENOM", "MOVEBUFFERSIZE"})
 """Keywords whose values no fraction can mean though the guide names none with a constant: BANK's are the
 cards, in its table of values (000:7345-7348); CAMSTART's and CAMEND's a cam segment (000:7807-7810),

@@ -44,9 +44,7 @@ def each_line(scope: LineScope) -> Iterator[Finding]:
         attributes = supplements.attributes_for(keyword, controller, dialect) if keyword else None
         # a scale factor is positive whatever its table prints, or where it prints none (ServoNode 51's SCALE)
         positive = name in supplements.POSITIVE_ONLY
-        limits = supplements.narrowed(name, attributes.range if attributes is not None else None, controller)
-        if limits is None and attributes is not None and dialect.modern:
-            limits = supplements.pattern_range(name, controller)  # ServoNode 51's rows print none
+        limits = supplements.held_range(name, attributes, controller, dialect)
         if limits is not None and limits.allowed is None and limits.minimum is None and limits.maximum is None:
             limits = None  # TRIGGERMODE's "whole numbers": the whole test below is all there is
         whole = supplements.whole_only(name, dialect)

@@ -11,7 +11,8 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner, Result
 
-from mintlang.cli import main
+from mintlang.cli import main, settings
+from mintlang.settings.model import TOOL_TABLES
 from tests.cli.invoking import write
 
 # The README's example settings file (Configuration): every key is one of its tool's options.
@@ -91,3 +92,8 @@ def test_show_settings_stops_at_it_as_the_check_does(tmp_path: Path) -> None:
     result = invoke("check", "--show-settings", write(tmp_path / "cell.mnt", "PRINT 1\n"))
     assert (result.exit_code, result.stdout) == (2, "")
     assert result.stderr.startswith(f"mint check: {settings.absolute()}:2:1: run.untl-ms: unknown key")
+
+
+def test_every_tools_table_is_checked_by_its_commands_options() -> None:
+    # a table the settings know (TOOL_TABLES) with no command to check it by would pass unchecked
+    assert set(settings._COMMANDS) == set(TOOL_TABLES)

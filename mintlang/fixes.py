@@ -214,6 +214,11 @@ def _origins(edits: Sequence[Edit]) -> Callable[[int], int]:
     return origin
 
 
+def _lines_changed(index: LineIndex, finding: Diagnostic) -> set[int]:
+    """The lines (from 1) where the edits of ``finding``'s fix start or end."""
+    return {index.position(at).line for edit in finding.fixes[0].edits for at in (edit.span.start, edit.span.end)}
+
+
 def _breaking(
     text: str,
     before: Sequence[Diagnostic],
@@ -229,16 +234,10 @@ def _breaking(
     if not rising:
         return set()
     index = LineIndex(text)
-    touched = {
-        id(finding): {
-            index.position(at).line for edit in finding.fixes[0].edits for at in (edit.span.start, edit.span.end)
-        }
-        for finding in applied
-    }
-    named = [finding for finding in applied if touched[id(finding)] & rising]
-    fixes_on = Counter(line for finding in named for line in touched[id(finding)] & rising)
+    named = [(finding, lines) for finding in applied if (lines := rising & _lines_changed(index, finding))]
+    fixes_on = Counter(line for _, lines in named for line in lines)
     if all(fixes_on[line] == 1 for line in rising):
-        return set(map(_key, named))
+        return {_key(finding) for finding, _ in named}
 
     def adds(group: Sequence[Diagnostic]) -> bool:
         edits = [edit for finding in group for edit in finding.fixes[0].edits]

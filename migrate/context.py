@@ -485,9 +485,11 @@ class Context:
         this context when the last pass changed nothing, and the copies the phase before it made
         held a fifth of the insertions' peak while its rules asked for other lines."""
         self._memo.clear()
-        self._forget_line_copies()
+        self.forget_line_copies()
 
-    def _forget_line_copies(self) -> None:
+    def forget_line_copies(self) -> None:
+        """Forget the lines a rule copied and their keyword uses: the engine calls it after each rule,
+        as the next asks for lines of its own, and a pass's copies kept to its end were a run's peak."""
         for file in self.files.values():
             for copies in ("_lines", "_uses"):
                 file.__dict__.pop(copies, None)
@@ -507,7 +509,7 @@ class Context:
         self.tags.clear()  # those of this context's lines are indexed when it is first asked about one
         forget_facts()  # in a run (``apart``), the run's own lines; else the process's, which costs time only
         forget_findings()
-        self._forget_line_copies()
+        self.forget_line_copies()
 
     def memo(self, compute: Callable[..., T], *args: Hashable) -> T:
         """``compute(self, *args)``, worked out once per pass: rules ask some whole-application

@@ -211,7 +211,7 @@ def _unreadable(context: Context) -> dict[Unit, tuple[str, ...]]:
 
 
 def _asked(context: Context, rules: Sequence[Rule], states: dict[Unit, _FileState]) -> dict[Unit, list[Edit]]:
-    """The edits ``rules`` ask for in one pass, per file, in rule order."""
+    """The edits ``rules`` ask for in one pass, per file, in rule order; the lines each rule copied go with it."""
     wanted: dict[Unit, list[Edit]] = {unit: [] for unit in states}
     flagged: set[tuple[Unit, int, str]] = set()
     for rule in rules:
@@ -228,6 +228,7 @@ def _asked(context: Context, rules: Sequence[Rule], states: dict[Unit, _FileStat
             raise _unreadable_files(error.__cause__) from error.__cause__
         except Exception as error:  # a bug in one rule: reported with its id, the run goes on
             raise MigrationFailed(rule.id, _described(error)) from error
+        context.forget_line_copies()
     return wanted
 
 

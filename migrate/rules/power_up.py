@@ -29,19 +29,20 @@ def _power_up_end(context: Context) -> int:
     """The offset in the first file where the lines that run at power-up end: the first line that
     switches the amplifiers on or can take the run back above it; 0 when none run so."""
     first = context.compiled[0]
-    if next(context.lines(statement_tag("RUN")), None) is not None:
+    if next(context.placed(statement_tag("RUN")), None) is not None:
         return 0
     ends = [len(first.text)]
     wanted = (LABEL, n.Jump, n.For, n.While, n.BlockWord, *map(statement_tag, _SWITCHING_ON))
-    for file, line in context.lines(*wanted):
+    for file, line in context.placed(*wanted):  # as parsed: most lines of a program have one, none needs a copy
         if file.unit is not first.unit:
             continue
-        if line.label is not None and event_of(line.label.text, Dialect.V3) is not None:
+        label = line.syntax.label
+        if label is not None and event_of(label.text, Dialect.V3) is not None:
             return 0
-        if line.label is not None or any(
-            _ends_power_up(statement) for statement in n.flatten_statements(line.statements)
+        if label is not None or any(
+            _ends_power_up(statement) for statement in n.flatten_statements(line.syntax.statements)
         ):
-            ends.append(line.span.start)
+            ends.append(line.origin + line.syntax.span.start)
     return min(ends)
 
 

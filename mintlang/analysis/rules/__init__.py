@@ -103,7 +103,7 @@ RULES: tuple[Rule, ...] = (
         "missing-axis-values",
         each_line=missing_axis_values.each_line,
         dialects=frozenset({Dialect.V3, Dialect.V4}),  # MintMT's guide does not say how its (0,1) shares values
-        looks_at=LineParts(frozenset({n.KeywordStatement})),
+        looks_at=LineParts(keyword_uses=True),
     ),
     Rule(
         "operands",

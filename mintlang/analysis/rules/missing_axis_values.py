@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from mintlang.analysis.findings import Finding, own
+from mintlang.analysis.rules.addressing import lone_position
 from mintlang.analysis.traversal import LineScope
 from mintlang.diagnostics import Edit, Fix, Span
 from mintlang.keyworddb.model import CIRCLES, VECTORS
@@ -29,19 +30,16 @@ def _named(text: str, axis: n.Expression) -> str:
 
 def each_line(scope: LineScope) -> Iterator[Finding]:
     text = scope.syntax.text
-    for statement in scope.facts.statements:
-        if type(statement) is not n.KeywordStatement or statement.fill:
+    for use in scope.facts.keyword_uses:
+        keyword, selector = use.keyword, use.keyword.selector
+        if selector is None or selector.dot or keyword.keyword in _ONE_POSITION:
             continue
-        keyword, values = statement.keyword, statement.values  # type: ignore[union-attr]
-        selector = keyword.selector
-        if values is None or len(values) != 1 or values[0] is None or selector is None or selector.dot:
-            continue
-        if keyword.keyword in _ONE_POSITION:
+        value = lone_position(use)  # one value, no ';' after it
+        if value is None:
             continue
         first, *others = (_named(text, axis) for axis in selector.axes if axis is not None)
         if not others or len(others) + 1 != len(selector.axes):
             continue
-        value = values[0]
         if text[value.span.end :].lstrip().startswith(","):
             continue  # a macro's ':' cut the list after its first value: a syntax error of its own (2003)
         left = (

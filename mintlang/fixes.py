@@ -157,7 +157,7 @@ def _not_fixed(before: Sequence[Diagnostic], applied: Sequence[Diagnostic], afte
     """The findings whose fix left them as often as they were, less those fixed, counted up to the end of the last
     fixed finding like them: one found past it is a new one the round revealed (the parse reaches the second
     ``&HFF`` of a line once the first is mended), not one left where it was."""
-    edits = [edit for finding in applied for edit in finding.fixes[0].edits]  # each applied finding's one fix
+    edits = _fix_edits(applied)
     reach: dict[_Key, int] = {}  # per kind, the end of the last finding fixed
     for finding in applied:
         reach[_key(finding)] = max(reach.get(_key(finding), 0), finding.span.end)
@@ -166,6 +166,11 @@ def _not_fixed(before: Sequence[Diagnostic], applied: Sequence[Diagnostic], afte
     carried = {key: _carried(end, edits) for key, end in reach.items()}
     found = Counter(_key(finding) for finding in after if finding.span.start <= carried.get(_key(finding), -1))
     return {key for key in reach if found[key] > expected[key]}
+
+
+def _fix_edits(applied: Iterable[Diagnostic]) -> list[Edit]:
+    """The edits of the fixes applied, each finding's one (``automatic_fix``'s)."""
+    return [edit for finding in applied for edit in finding.fixes[0].edits]
 
 
 def _carried(offset: int, edits: Iterable[Edit]) -> int:
@@ -179,7 +184,7 @@ def _rising(
     """The lines of ``text`` (from 1) with more syntax errors once ``applied``'s fixes are made (``after``) than
     before: a line's own count, so that a syntax error a fix mends elsewhere does not hide one another adds."""
     index = LineIndex(text)
-    origin = _origins(sorted((edit for finding in applied for edit in finding.fixes[0].edits), key=_start))
+    origin = _origins(sorted(_fix_edits(applied), key=_start))
 
     def lines(found: Iterable[Diagnostic], where: Callable[[int], int]) -> Counter[int]:
         return Counter(index.position(where(d.span.start)).line for d in found if d.mint_error in SYNTAX_ERRORS)
@@ -240,8 +245,7 @@ def _breaking(
         return {_key(finding) for finding, _ in named}
 
     def adds(group: Sequence[Diagnostic]) -> bool:
-        edits = [edit for finding in group for edit in finding.fixes[0].edits]
-        return bool(_rising(text, before, group, check(with_edits(text, edits))))
+        return bool(_rising(text, before, group, check(with_edits(text, _fix_edits(group)))))
 
     def culprits(group: Sequence[Diagnostic]) -> list[Diagnostic]:
         """Those of ``group``, whose fixes together add a syntax error, whose fix adds one alone."""

@@ -119,8 +119,8 @@ def fixable_summary(reports: Sequence[FileReport], *, unsafe_fixes: bool = False
         index = LineIndex(report.source) if reasons else None
         for diagnostic in report.diagnostics:
             fix = automatic_fix(diagnostic, unsafe=True)
-            why = why_left_out(reasons, diagnostic) if fix is not None and index is not None else None
-            if why is not None and index is not None:
+            why = why_left_out(reasons, diagnostic) if fix is not None else None
+            if why is not None and index is not None:  # a reason is only given where there are some
                 at = index.position(diagnostic.span.start)
                 set_aside.setdefault(why, []).append(f"{report.path}:{at.line}:{at.column} {diagnostic.code}")
             elif fix is not None:

@@ -73,6 +73,19 @@ class Settings:
         name = self.words.keyword_name(spelling) or spelling
         return database().keywords_of(self.dialect).get(name.upper()) or database().lookup(name)
 
+    def check(self, program: str, config: str | None, previous: mintlang.Analysis | None = None) -> mintlang.Analysis:
+        """The check of a program (and its configuration file) under these settings; ``previous``, the analysis
+        of an earlier version, re-reads only what changed."""
+        return mintlang.check_application(
+            program,
+            dialect=self.dialect,
+            controller=self.controller,
+            config=config,
+            select=self.select,
+            ignore=self.ignore,
+            previous=previous,
+        )
+
     @classmethod
     def from_options(cls, options: object, base: Settings | None = None) -> Settings:
         """Settings from ``initializationOptions`` or a configuration answer over ``base``: a setting left out
@@ -339,15 +352,8 @@ class Analyses:
         else:
             program, config = mine, other_text
         before = self._cache.get(uri)
-        analysis = mintlang.check_application(
-            program,
-            dialect=settings.dialect,
-            controller=settings.controller,
-            config=config,
-            select=settings.select,
-            ignore=settings.ignore,
-            previous=before[1].analysis if before is not None else None,  # a keystroke re-reads what it touched
-        )
+        # a keystroke re-reads what it touched
+        analysis = settings.check(program, config, before[1].analysis if before is not None else None)
         analysed = analysis.model.document(unit) if not skipped else None
         files = {unit: File(uri, Positions(text, self.encoding, analysed.line_index if analysed else None))}
         if other is not None and other_text is not None:

@@ -46,15 +46,7 @@ def _checker(snapshot: Snapshot) -> Callable[[str], tuple[mintlang.Diagnostic, .
     last = [snapshot.analysis]
 
     def findings(text: str) -> tuple[mintlang.Diagnostic, ...]:
-        last[0] = mintlang.check_application(
-            text,
-            dialect=settings.dialect,
-            controller=settings.controller,
-            config=configuration.source if configuration is not None else None,
-            select=settings.select,
-            ignore=settings.ignore,
-            previous=last[0],
-        )
+        last[0] = settings.check(text, configuration.source if configuration is not None else None, last[0])
         return last[0].program
 
     return findings
